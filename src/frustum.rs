@@ -1,0 +1,358 @@
+//! Validated inputs: the view frustum, the warp parameter n′, resolutions and light angles.
+//!
+//! # Conventions
+//!
+//! Eye space is right-handed with the camera at the origin looking down −Z and Y up
+//! (glam's `look_at_rh`). The *depth* of an eye-space point `p` is `z = −p.z`, the distance
+//! along the view direction; the papers' `z` is this depth. Angles are in radians.
+
+use crate::error::{fmt_num, in_open, positive, Error, Result};
+use glam::DVec3;
+
+/// A symmetric view frustum: near and far plane depths, half of the vertical field of view,
+/// and the aspect ratio (width / height) of the image.
+///
+/// Domain: `0 < near < far`, both finite; `0 < half_fov < π/2`; `aspect > 0`. The papers'
+/// analysis assumes a square image (`aspect = 1`, the default of [`ViewFrustum::new`]).
+///
+/// | crate | Lloyd 2005 | Lloyd 2006 | Barroso & Celes | Zhang et al. |
+/// |---|---|---|---|---|
+/// | `near`, `far` | 1, α | n, f | n, f | n, f |
+/// | `half_fov` | θ | θ | φ_y | φ |
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ViewFrustum {
+    near: f64,
+    far: f64,
+    half_fov: f64,
+    aspect: f64,
+}
+
+impl ViewFrustum {
+    /// A square-image frustum.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `near`, `far` or `half_fov` when a value is not finite,
+    /// `near ≤ 0`, `far ≤ near`, or `half_fov ∉ (0, π/2)`.
+    ///
+    /// ```
+    /// # use shadow_aliasing::ViewFrustum;
+    /// let v = ViewFrustum::new(1.0, 100.0, 30f64.to_radians())?;
+    /// assert_eq!(v.alpha(), 100.0);
+    /// assert!(ViewFrustum::new(2.0, 1.0, 0.5).is_err());
+    /// # Ok::<(), shadow_aliasing::Error>(())
+    /// ```
+    pub fn new(near: f64, far: f64, half_fov: f64) -> Result<Self> {
+        Self::with_aspect(near, far, half_fov, 1.0)
+    }
+
+    /// A frustum with the given aspect ratio (width / height); `half_fov` is vertical.
+    ///
+    /// # Errors
+    /// As [`ViewFrustum::new`], and `aspect` when it is not finite and positive.
+    pub fn with_aspect(near: f64, far: f64, half_fov: f64, aspect: f64) -> Result<Self> {
+        let near = positive("near", near)?;
+        let far = positive("far", far)?;
+        if far <= near {
+            return Err(Error::invalid(
+                "far",
+                format!(
+                    "must be greater than near (got near={}, far={})",
+                    fmt_num(near),
+                    fmt_num(far)
+                ),
+            ));
+        }
+        let half_fov = in_open("half_fov", half_fov, 0.0, std::f64::consts::FRAC_PI_2)?;
+        let aspect = positive("aspect", aspect)?;
+        Ok(Self {
+            near,
+            far,
+            half_fov,
+            aspect,
+        })
+    }
+
+    /// Near plane depth n.
+    #[inline]
+    #[must_use]
+    pub fn near(&self) -> f64 {
+        self.near
+    }
+    /// Far plane depth f.
+    #[inline]
+    #[must_use]
+    pub fn far(&self) -> f64 {
+        self.far
+    }
+    /// Half of the vertical field of view θ, radians.
+    #[inline]
+    #[must_use]
+    pub fn half_fov(&self) -> f64 {
+        self.half_fov
+    }
+    /// Aspect ratio, width / height.
+    #[inline]
+    #[must_use]
+    pub fn aspect(&self) -> f64 {
+        self.aspect
+    }
+    /// The depth ratio α = f/n.
+    #[inline]
+    #[must_use]
+    pub fn alpha(&self) -> f64 {
+        self.far / self.near
+    }
+    /// tan θ.
+    #[inline]
+    #[must_use]
+    pub fn tan_half_fov(&self) -> f64 {
+        self.half_fov.tan()
+    }
+    /// LiSPSM's warp parameter for the light overhead, n′ = n + √(f n) (Lloyd 2006 §4.1,
+    /// Wimmer et al. 2004).
+    #[inline]
+    #[must_use]
+    pub fn n_prime_lispsm(&self) -> f64 {
+        self.near + (self.far * self.near).sqrt()
+    }
+
+    /// The same frustum cut to the depth range `[near, far]` (a z-partition).
+    ///
+    /// # Errors
+    /// As [`ViewFrustum::new`].
+    pub fn with_depth_range(&self, near: f64, far: f64) -> Result<Self> {
+        Self::with_aspect(near, far, self.half_fov, self.aspect)
+    }
+
+    /// The eight corners in eye space: near plane first (−x−y, +x−y, +x+y, −x+y), then far.
+    #[must_use]
+    pub fn corners(&self) -> [DVec3; 8] {
+        let t = self.tan_half_fov();
+        let mut out = [DVec3::ZERO; 8];
+        for (k, d) in [self.near, self.far].into_iter().enumerate() {
+            let h = d * t;
+            let w = h * self.aspect;
+            out[4 * k] = DVec3::new(-w, -h, -d);
+            out[4 * k + 1] = DVec3::new(w, -h, -d);
+            out[4 * k + 2] = DVec3::new(w, h, -d);
+            out[4 * k + 3] = DVec3::new(-w, h, -d);
+        }
+        out
+    }
+
+    /// Whether an eye-space point lies inside the frustum, with a relative tolerance `tol`.
+    #[must_use]
+    pub fn contains(&self, p: DVec3, tol: f64) -> bool {
+        let z = -p.z;
+        let h = z * self.tan_half_fov();
+        let w = h * self.aspect;
+        let slack = tol * self.far;
+        z >= self.near - slack
+            && z <= self.far + slack
+            && p.y.abs() <= h + slack
+            && p.x.abs() <= w + slack
+    }
+}
+
+/// The warp parameter n′: the distance from the warping frustum's centre of projection to the
+/// plane where the warping frustum starts (Lloyd 2006 Fig 3; Lloyd 2005's n with near = 1;
+/// Zhang's λ). [`NPrime::Unwarped`] is the orthographic (unwarped) map, n′ = ∞, represented
+/// explicitly so that no function returns an infinite `f64`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum NPrime {
+    /// A finite, positive n′.
+    Finite(f64),
+    /// n′ = ∞: an orthographic, unwarped shadow map.
+    Unwarped,
+}
+
+impl NPrime {
+    /// Validates a finite n′ > 0, or maps `f64::INFINITY` to [`NPrime::Unwarped`].
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `n_prime` for NaN, −∞ or n′ ≤ 0.
+    pub fn new(n_prime: f64) -> Result<Self> {
+        if n_prime == f64::INFINITY {
+            Ok(NPrime::Unwarped)
+        } else {
+            positive("n_prime", n_prime).map(NPrime::Finite)
+        }
+    }
+
+    /// n′ as an `f64`, `f64::INFINITY` for [`NPrime::Unwarped`].
+    #[inline]
+    #[must_use]
+    pub fn value(self) -> f64 {
+        match self {
+            NPrime::Finite(v) => v,
+            NPrime::Unwarped => f64::INFINITY,
+        }
+    }
+
+    /// Whether this is the unwarped (orthographic) map.
+    #[inline]
+    #[must_use]
+    pub fn is_unwarped(self) -> bool {
+        matches!(self, NPrime::Unwarped)
+    }
+
+    /// Checks Lloyd's light-overhead domain n′ ≥ near.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `n_prime` when n′ < near.
+    pub fn at_least_near(self, view: &ViewFrustum) -> Result<Self> {
+        match self {
+            NPrime::Finite(v) if v < view.near() => Err(Error::invalid(
+                "n_prime",
+                format!(
+                    "must be at least near for a light overhead (got n_prime={}, near={})",
+                    fmt_num(v),
+                    fmt_num(view.near())
+                ),
+            )),
+            other => Ok(other),
+        }
+    }
+}
+
+/// Image and shadow-map resolutions: `image` pixels across a square image, and a shadow map of
+/// `s × t` texels. Each is a positive, finite number (resolutions enter the formulas only as
+/// ratios, so fractional values are allowed). [`Resolutions::default`] is all ones, the papers'
+/// normalisation for the storage factor.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Resolutions {
+    image: f64,
+    s: f64,
+    t: f64,
+}
+
+impl Default for Resolutions {
+    fn default() -> Self {
+        Self {
+            image: 1.0,
+            s: 1.0,
+            t: 1.0,
+        }
+    }
+}
+
+impl Resolutions {
+    /// Validated resolutions.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `res_image`, `res_s` or `res_t` unless finite and positive.
+    pub fn new(image: f64, s: f64, t: f64) -> Result<Self> {
+        Ok(Self {
+            image: positive("res_image", image)?,
+            s: positive("res_s", s)?,
+            t: positive("res_t", t)?,
+        })
+    }
+    /// Image resolution res_i (pixels across).
+    #[inline]
+    #[must_use]
+    pub fn image(&self) -> f64 {
+        self.image
+    }
+    /// Shadow-map resolution along s (texels).
+    #[inline]
+    #[must_use]
+    pub fn s(&self) -> f64 {
+        self.s
+    }
+    /// Shadow-map resolution along t (texels).
+    #[inline]
+    #[must_use]
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+}
+
+/// The angle between the light direction and the view direction, folded into `[0, π/2]`
+/// (Barroso's γ, Zhang's θ): π/2 is the light overhead, 0 light and view parallel.
+#[derive(Debug, Clone, Copy, PartialEq, PartialOrd)]
+pub struct LightAngle(f64);
+
+impl LightAngle {
+    /// Validates γ ∈ [0, π/2].
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `light_angle` outside `[0, π/2]` or not finite.
+    pub fn new(gamma: f64) -> Result<Self> {
+        crate::error::in_closed("light_angle", gamma, 0.0, std::f64::consts::FRAC_PI_2).map(Self)
+    }
+    /// The folded angle between an eye-space light direction (the direction light travels)
+    /// and the view direction −Z.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector.
+    pub fn from_light_dir(light_dir: DVec3) -> Result<Self> {
+        let l = unit_light_dir(light_dir)?;
+        // |cos| of the angle between the line of the light and the view axis.
+        let c = l.z.abs().min(1.0);
+        Ok(Self(c.acos()))
+    }
+    /// γ in radians.
+    #[inline]
+    #[must_use]
+    pub fn radians(self) -> f64 {
+        self.0
+    }
+}
+
+/// Normalises an eye-space light direction.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `light_dir` for a zero, tiny or non-finite vector.
+pub fn unit_light_dir(light_dir: DVec3) -> Result<DVec3> {
+    if !light_dir.is_finite() {
+        return Err(Error::invalid(
+            "light_dir",
+            format!("must be finite (got {light_dir})"),
+        ));
+    }
+    let len = light_dir.length();
+    if len <= 1e-300 || !len.is_finite() {
+        return Err(Error::invalid(
+            "light_dir",
+            format!("must be a non-zero vector (got {light_dir})"),
+        ));
+    }
+    Ok(light_dir / len)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frustum_validation() {
+        assert!(ViewFrustum::new(1.0, 1.0, 0.5).is_err());
+        assert!(ViewFrustum::new(0.0, 1.0, 0.5).is_err());
+        assert!(ViewFrustum::new(1.0, f64::INFINITY, 0.5).is_err());
+        assert!(ViewFrustum::new(1.0, 2.0, std::f64::consts::FRAC_PI_2).is_err());
+        assert_eq!(
+            ViewFrustum::new(2.0, 1.0, 0.5).unwrap_err().to_string(),
+            "far must be greater than near (got near=2, far=1)"
+        );
+        let v = ViewFrustum::new(1.0, 4.0, 0.5).unwrap();
+        assert_eq!(v.n_prime_lispsm(), 3.0);
+        for c in v.corners() {
+            assert!(v.contains(c, 1e-12));
+        }
+    }
+
+    #[test]
+    fn n_prime_and_angles() {
+        assert_eq!(NPrime::new(f64::INFINITY), Ok(NPrime::Unwarped));
+        assert!(NPrime::new(f64::NAN).is_err());
+        assert!(NPrime::new(0.0).is_err());
+        let v = ViewFrustum::new(1.0, 4.0, 0.5).unwrap();
+        assert!(NPrime::Finite(0.5).at_least_near(&v).is_err());
+        let g = LightAngle::from_light_dir(DVec3::new(0.0, -1.0, 0.0)).unwrap();
+        assert!((g.radians() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        let g = LightAngle::from_light_dir(DVec3::new(0.0, 0.0, 1.0)).unwrap();
+        assert_eq!(g.radians(), 0.0);
+        assert!(LightAngle::from_light_dir(DVec3::ZERO).is_err());
+    }
+}

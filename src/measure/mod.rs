@@ -1,0 +1,289 @@
+//! The ground truth: the perspective aliasing error of any shadow matrix, measured from the
+//! exact derivatives of the projective maps.
+//!
+//! # What is measured
+//!
+//! A shadow matrix `M` maps an eye-space point `p` (homogeneous `(p, 1)`) to light clip space
+//! `h = M (p, 1)`; the shadow-map coordinates are `s = (h.x/h.w + 1)/2`, `t = (h.y/h.w + 1)/2`,
+//! both in `[0, 1]` over the map (OpenGL clip x, y; the depth row is not used). The map is for a
+//! directional light travelling along `L`, so `s` and `t` are constant along light rays.
+//!
+//! The derivative of a projective map is closed form: `∇(h.x/h.w) = (M₀ − (h.x/h.w) M₃)/h.w`
+//! with `M₀`, `M₃` the first three entries of rows 0 and 3. No finite differences are used.
+//!
+//! In the plane Π ⊥ L the texel footprint is a parallelogram. Following Lloyd 2006 §4.4 (Eqs 2–4)
+//! generalised to any matrix:
+//!
+//! - image beam width `w_i = 2 z tan θ / res_i`, with `z = −p.z` the depth (Lloyd 2006 Eq 2);
+//! - light beam width along s, `w_ls`: the length of the texel edge along which s advances while
+//!   t stays fixed, `|∇_Π t| / (|det A| res_s)` with `A = ∂(s, t)/∂Π`;
+//! - light beam width along t, `w_lt`: the distance between neighbouring t-isolines,
+//!   `1 / (|∇_Π t| res_t)`;
+//! - `m_x = w_ls / w_i`, `m_z = w_lt / w_i`.
+//!
+//! For the papers' warps (t depends only on the light-space z) these are exactly Lloyd's
+//! `w_lx = (1/res_s) dx/ds` and `w_lz = (1/res_t) dz/dt`, and `w_ls · w_lt` is the texel's area.
+//! Zhang et al.'s perspective aliasing uses screen coordinates in `[−1, 1]` and texture
+//! coordinates in `[0, 1]`, so `E_q^pers = 2 m_x`, `E_p^pers = 2 m_z` with unit resolutions.
+
+use crate::error::{Error, Result};
+use crate::frustum::{unit_light_dir, Resolutions, ViewFrustum};
+use glam::{DMat4, DVec3, DVec4};
+
+/// Relative tolerance for "s and t are constant along light rays".
+pub const LIGHT_RAY_TOLERANCE: f64 = 1e-7;
+
+/// A shadow matrix to measure: the matrix (eye space → light clip space, OpenGL x, y) and the
+/// eye-space direction the light travels.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShadowMap {
+    /// Eye space → light clip space.
+    pub matrix: DMat4,
+    /// Unit eye-space direction the light travels.
+    pub light_dir: DVec3,
+}
+
+impl ShadowMap {
+    /// Validates the light direction (normalised here) and the matrix (finite entries).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `light_dir` or `matrix`.
+    pub fn new(matrix: DMat4, light_dir: DVec3) -> Result<Self> {
+        if !matrix.is_finite() {
+            return Err(Error::invalid("matrix", "must have finite entries"));
+        }
+        Ok(Self {
+            matrix,
+            light_dir: unit_light_dir(light_dir)?,
+        })
+    }
+}
+
+/// The perspective aliasing error at one point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PointError {
+    /// Lloyd's m_x: light beam width along s over image beam width.
+    pub mx: f64,
+    /// Lloyd's m_z: light beam width along t over image beam width.
+    pub mz: f64,
+    /// Light beam width along s, world units (resolution included).
+    pub w_ls: f64,
+    /// Light beam width along t, world units (resolution included).
+    pub w_lt: f64,
+    /// Image beam width at the point, world units.
+    pub w_i: f64,
+    /// Shadow-map coordinates (s, t) of the point, `[0, 1]` over the map.
+    pub st: (f64, f64),
+}
+
+impl PointError {
+    /// Zhang et al.'s perspective aliasing E_q^pers (screen in `[−1, 1]`, texture in `[0, 1]`):
+    /// `2 m_x` when all resolutions are 1.
+    #[must_use]
+    pub fn zhang_eq(&self) -> f64 {
+        2.0 * self.mx
+    }
+    /// Zhang et al.'s perspective aliasing E_p^pers: `2 m_z` when all resolutions are 1.
+    #[must_use]
+    pub fn zhang_ep(&self) -> f64 {
+        2.0 * self.mz
+    }
+}
+
+/// Exact gradients of the shadow-map coordinates at `p`: `(s, t, ∇s, ∇t, h.w)`.
+///
+/// # Errors
+/// [`Error::Degenerate`] when `h.w ≤ 0` (the point is behind the map's centre of projection).
+pub fn st_gradients(matrix: &DMat4, p: DVec3) -> Result<(f64, f64, DVec3, DVec3, f64)> {
+    let h = *matrix * DVec4::new(p.x, p.y, p.z, 1.0);
+    if !(h.w > 0.0) || !h.is_finite() {
+        return Err(Error::Degenerate(format!(
+            "the point {p} maps to w = {} (behind the shadow map's centre of projection)",
+            h.w
+        )));
+    }
+    let r0 = matrix.row(0).truncate();
+    let r1 = matrix.row(1).truncate();
+    let r3 = matrix.row(3).truncate();
+    let x = h.x / h.w;
+    let y = h.y / h.w;
+    let gs = (r0 - x * r3) / (2.0 * h.w);
+    let gt = (r1 - y * r3) / (2.0 * h.w);
+    Ok((0.5 * (x + 1.0), 0.5 * (y + 1.0), gs, gt, h.w))
+}
+
+/// The perspective aliasing error of `shadow` at the eye-space point `p` of `view`.
+///
+/// `p` need not lie inside the frustum, but its depth `−p.z` must be positive.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `point` for a non-finite point or depth ≤ 0, or `matrix` when
+/// s or t vary along light rays (not a directional-light shadow map for `light_dir`);
+/// [`Error::Degenerate`] when the point is behind the map's centre of projection or the map is
+/// singular there.
+pub fn point_error(
+    view: &ViewFrustum,
+    shadow: &ShadowMap,
+    p: DVec3,
+    res: Resolutions,
+) -> Result<PointError> {
+    if !p.is_finite() {
+        return Err(Error::invalid("point", format!("must be finite (got {p})")));
+    }
+    let z = -p.z;
+    if !(z > 0.0) {
+        return Err(Error::invalid(
+            "point",
+            format!("must be in front of the camera, depth −p.z > 0 (got {p})"),
+        ));
+    }
+    let (s, t, gs, gt, _) = st_gradients(&shadow.matrix, p)?;
+    let l = shadow.light_dir;
+    let along_s = gs.dot(l);
+    let along_t = gt.dot(l);
+    if along_s.abs() > LIGHT_RAY_TOLERANCE * gs.length()
+        || along_t.abs() > LIGHT_RAY_TOLERANCE * gt.length()
+    {
+        return Err(Error::invalid(
+            "matrix",
+            "does not map light rays to constant texels: s or t varies along light_dir",
+        ));
+    }
+    // Project the gradients onto the plane perpendicular to the light.
+    let gs_p = gs - along_s * l;
+    let gt_p = gt - along_t * l;
+    let grad_t = gt_p.length();
+    // |det A| for an orthonormal basis of Π is |∇_Π s × ∇_Π t|.
+    let det = gs_p.cross(gt_p).length();
+    if !(grad_t > 0.0) || !(det > 0.0) || !det.is_finite() {
+        return Err(Error::Degenerate(format!(
+            "the shadow map is singular at {p}: texels have no finite extent there"
+        )));
+    }
+    let w_i = 2.0 * z * view.tan_half_fov() / res.image();
+    let w_ls = grad_t / (det * res.s());
+    let w_lt = 1.0 / (grad_t * res.t());
+    Ok(PointError {
+        mx: w_ls / w_i,
+        mz: w_lt / w_i,
+        w_ls,
+        w_lt,
+        w_i,
+        st: (s, t),
+    })
+}
+
+/// The maximum error of a shadow map over a view frustum.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrustumError {
+    /// M_x, the maximum of m_x.
+    pub max_mx: f64,
+    /// M_z, the maximum of m_z.
+    pub max_mz: f64,
+    /// The storage factor S̄ = M_x M_z with unit resolutions (Lloyd 2006 Eq 12, §4.4).
+    pub storage_factor: f64,
+}
+
+/// M_x, M_z and S̄ of `shadow` over `view`, taken at the eight vertices of the frustum
+/// (Lloyd 2006 §4.4: the beam widths are monotonic over the convex frustum, so the maxima lie at
+/// vertices; [`frustum_max_sampled`] checks the claim).
+///
+/// # Errors
+/// As [`point_error`], for any vertex.
+pub fn frustum_max(view: &ViewFrustum, shadow: &ShadowMap) -> Result<FrustumError> {
+    max_over(view, shadow, view.corners().into_iter())
+}
+
+/// As [`frustum_max`], but over a dense `n × n × n` grid of the frustum (in depth, and in the
+/// image's normalised coordinates), to check that the vertices suffice.
+///
+/// # Errors
+/// As [`point_error`]; [`Error::InvalidArgument`] naming `n` when `n < 2`.
+pub fn frustum_max_sampled(
+    view: &ViewFrustum,
+    shadow: &ShadowMap,
+    n: usize,
+) -> Result<FrustumError> {
+    if n < 2 {
+        return Err(Error::invalid("n", format!("must be at least 2 (got {n})")));
+    }
+    let t = view.tan_half_fov();
+    let step = 1.0 / (n - 1) as f64;
+    let points = (0..n).flat_map(move |i| {
+        let z = view.near() + (view.far() - view.near()) * i as f64 * step;
+        (0..n).flat_map(move |j| {
+            (0..n).map(move |k| {
+                let u = -1.0 + 2.0 * j as f64 * step;
+                let v = -1.0 + 2.0 * k as f64 * step;
+                DVec3::new(u * z * t * view.aspect(), v * z * t, -z)
+            })
+        })
+    });
+    max_over(view, shadow, points)
+}
+
+fn max_over(
+    view: &ViewFrustum,
+    shadow: &ShadowMap,
+    points: impl Iterator<Item = DVec3>,
+) -> Result<FrustumError> {
+    let (mut mx, mut mz) = (0.0f64, 0.0f64);
+    for p in points {
+        let e = point_error(view, shadow, p, Resolutions::default())?;
+        mx = mx.max(e.mx);
+        mz = mz.max(e.mz);
+    }
+    Ok(FrustumError {
+        max_mx: mx,
+        max_mz: mz,
+        storage_factor: mx * mz,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DMat4;
+
+    /// An orthographic map, light straight down (−Y), fitted by hand to the frustum's footprint
+    /// seen from above: x ∈ [−f tanθ, f tanθ], depth ∈ [n, f]. Lloyd 2006 Eq 12 with n′ = ∞ gives
+    /// S̄ = (f/n − 1) f / (2 n tan θ); M_x = f/n, M_z = (f − n)/(2 n tan θ) by hand.
+    #[test]
+    fn orthographic_overhead_matches_hand_calculation() {
+        let (n, f, th) = (1.0, 20.0, 0.4f64);
+        let v = ViewFrustum::new(n, f, th).unwrap();
+        let half = f * th.tan();
+        // s from x; t from depth z = −p.z: t = (z − n)/(f − n).
+        // clip x = x/half; clip y = 2t − 1 = 2(−p.z − n)/(f − n) − 1.
+        let m = DMat4::from_cols_array(&[
+            1.0 / half,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            -2.0 / (f - n),
+            1.0,
+            0.0,
+            0.0,
+            -2.0 * n / (f - n) - 1.0,
+            0.0,
+            1.0,
+        ]);
+        let sm = ShadowMap::new(m, DVec3::new(0.0, -1.0, 0.0)).unwrap();
+        let e = frustum_max(&v, &sm).unwrap();
+        let tan = th.tan();
+        assert!((e.max_mx - f / n).abs() < 1e-12 * f);
+        assert!((e.max_mz - (f - n) / (2.0 * n * tan)).abs() < 1e-12 * f);
+        let sbar = (f / n - 1.0) * f / (2.0 * n * tan);
+        assert!((e.storage_factor - sbar).abs() < 1e-12 * sbar);
+        let dense = frustum_max_sampled(&v, &sm, 9).unwrap();
+        assert!((dense.storage_factor - sbar).abs() < 1e-12 * sbar);
+        // A matrix that is not constant along the light is refused.
+        let bad = ShadowMap::new(DMat4::IDENTITY, DVec3::new(0.0, -1.0, 0.0)).unwrap();
+        assert!(point_error(&v, &bad, DVec3::new(0.0, 0.0, -2.0), Resolutions::default()).is_err());
+    }
+}
