@@ -26,6 +26,10 @@
 //! Zhang et al.'s perspective aliasing uses screen coordinates in `[−1, 1]` and texture
 //! coordinates in `[0, 1]`, so `E_q^pers = 2 m_x`, `E_p^pers = 2 m_z` with unit resolutions.
 
+pub mod sweep;
+pub mod tilted_twin;
+pub mod twin;
+
 use crate::error::{Error, Result};
 use crate::frustum::{unit_light_dir, Resolutions, ViewFrustum};
 use glam::{DMat4, DVec3, DVec4};

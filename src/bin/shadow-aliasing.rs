@@ -1,0 +1,2 @@
+//! The `shadow-aliasing` command line (being written).
+fn main() {}

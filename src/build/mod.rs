@@ -1,0 +1,5 @@
+//! Renderer-facing shadow matrices.
+
+pub mod atlas;
+pub mod cascades;
+pub mod faces;
