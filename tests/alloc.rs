@@ -1,0 +1,154 @@
+//! No heap allocation in the per-frame builders (issue 5): a counting global allocator wraps the
+//! system allocator and counts, per thread, every `alloc`, `alloc_zeroed` and `realloc`. Each
+//! builder is called once to warm up (so lazily initialised state, if any, is not counted), then
+//! on many cameras and lights, including the light parallel, antiparallel and perpendicular to the
+//! view and the near-parallel fallback, and the count over those calls must be zero.
+//!
+//! The count is per thread (a `const`-initialised thread-local `Cell`, which itself never
+//! allocates), so the test harness running other tests on other threads does not disturb it.
+//! `allocations_are_counted` checks that the counter sees a real allocation, so a zero count
+//! cannot come from a counter that never counts.
+#![allow(unsafe_code)]
+
+use glam::DVec3;
+use shadow_aliasing::build::minimax::minimax_n_prime;
+use shadow_aliasing::build::{warp, ShadowMatrix, WarpRule};
+use shadow_aliasing::measure::frustum_max;
+use shadow_aliasing::ViewFrustum;
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+use std::hint::black_box;
+
+struct Counting;
+
+thread_local! {
+    static COUNT: Cell<usize> = const { Cell::new(0) };
+}
+
+fn bump() {
+    // `try_with` so an allocation during thread teardown (after the slot is destroyed) is not a
+    // panic inside the allocator.
+    let _ = COUNT.try_with(|c| c.set(c.get() + 1));
+}
+
+// SAFETY: every method forwards to `System` with the caller's arguments unchanged, so `Counting`
+// upholds exactly the contract `System` does; the counter is a thread-local `Cell<usize>` with a
+// `const` initialiser and no destructor, whose access neither allocates nor re-enters the
+// allocator.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        bump();
+        // SAFETY: forwarded unchanged (see above).
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        bump();
+        // SAFETY: forwarded unchanged.
+        unsafe { System.alloc_zeroed(layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        bump();
+        // SAFETY: forwarded unchanged.
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: forwarded unchanged.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+/// Heap allocations made on this thread while `f` runs.
+fn allocations<R>(f: impl FnOnce() -> R) -> (usize, R) {
+    let before = COUNT.with(Cell::get);
+    let r = f();
+    let after = COUNT.with(Cell::get);
+    (after - before, r)
+}
+
+/// Cameras from f/n = 1.01 to 10⁶ and half fields of view from 1° to 80°, with an aspect ≠ 1.
+fn views() -> Vec<ViewFrustum> {
+    vec![
+        ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap(),
+        ViewFrustum::new(0.1, 0.101, 1f64.to_radians()).unwrap(),
+        ViewFrustum::new(0.01, 1e4, 80f64.to_radians()).unwrap(),
+        ViewFrustum::with_aspect(0.5, 200.0, 35f64.to_radians(), 16.0 / 9.0).unwrap(),
+    ]
+}
+
+/// Tilted, overhead, behind, in front, exactly parallel to the view, and 1e−13 off parallel (below
+/// the light-space fallback threshold).
+fn lights() -> Vec<DVec3> {
+    vec![
+        DVec3::new(0.3, -0.8, -0.4),
+        DVec3::new(0.0, -1.0, 0.0),
+        DVec3::new(0.0, 0.0, -1.0),
+        DVec3::new(0.0, 0.0, 1.0),
+        DVec3::new(1e-13, 0.0, -1.0),
+        DVec3::new(-0.7, -0.1, 0.7),
+        DVec3::new(0.2, 0.9, 0.1),
+    ]
+}
+
+/// Asserts that `build` never allocates, over every camera and light above, after one warm-up call.
+fn assert_no_allocation(name: &str, build: impl Fn(&ViewFrustum, DVec3)) {
+    let views = views();
+    let lights = lights();
+    build(&views[0], lights[0]);
+    for v in &views {
+        for &l in &lights {
+            let (n, ()) = allocations(|| build(black_box(v), black_box(l)));
+            assert_eq!(
+                n,
+                0,
+                "{name} allocated {n} times for near={}, far={}, half_fov={}, light={l}",
+                v.near(),
+                v.far(),
+                v.half_fov()
+            );
+        }
+    }
+}
+
+fn single(rule: WarpRule) -> impl Fn(&ViewFrustum, DVec3) {
+    move |v, l| {
+        let s: ShadowMatrix = warp(v, l, rule).unwrap();
+        black_box(s);
+    }
+}
+
+#[test]
+fn allocations_are_counted() {
+    let (n, v) = allocations(|| black_box(vec![1u8; 64]));
+    assert!(n >= 1, "the counter saw {n} allocations for a Vec");
+    drop(v);
+}
+
+#[test]
+fn uniform_builder_does_not_allocate() {
+    assert_no_allocation("warp(Uniform)", single(WarpRule::Uniform));
+}
+
+#[test]
+fn lispsm_builder_does_not_allocate() {
+    assert_no_allocation("warp(Lispsm)", single(WarpRule::Lispsm));
+    assert_no_allocation("warp(LispsmSin)", single(WarpRule::LispsmSin));
+}
+
+#[test]
+fn minimax_builder_does_not_allocate() {
+    assert_no_allocation("warp(Minimax)", single(WarpRule::Minimax));
+    assert_no_allocation("minimax_n_prime", |v, l| {
+        black_box(minimax_n_prime(v, l).unwrap());
+    });
+}
+
+#[test]
+fn frustum_max_does_not_allocate() {
+    assert_no_allocation("frustum_max", |v, l| {
+        let s = warp(v, l, WarpRule::Lispsm).unwrap();
+        black_box(frustum_max(v, &s.shadow_map()).unwrap());
+    });
+}
