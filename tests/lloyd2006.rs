@@ -181,7 +181,7 @@ proptest! {
 fn n_prime_special_values() {
     for (n, f) in [(1.0, 100.0), (0.3, 7.0), (2.0, 2000.0)] {
         let l = n_prime_lispsm(n, f).unwrap();
-        assert_eq!(l, n + (f * n as f64).sqrt());
+        assert_eq!(l, n + (f * n).sqrt());
         match n_prime_from_eta(n, f, 0.0).unwrap() {
             NPrime::Finite(v) => assert!(close(v, l, 1e-15)),
             NPrime::Unwarped => panic!("η = 0 is finite"),
@@ -249,12 +249,10 @@ fn errata_eq2_pixel_width_has_no_over_n() {
     let printed = p.w_ls / (2.0 * v.tan_half_fov() * 2.0 / 2.0);
     assert!(close(p.mx, eq7, REL));
     assert!(close(printed, 2.0 * eq7, REL)); // n = 2 times too large
-                                             // Numbers for the errata page: n = 2, f = 100, θ = 30°, n′ = n′_LSPSM = 16.142…
-    assert!(close(
-        eq7,
-        100.0 * 16.142135623730951 / (2.0 * (16.142135623730951 + 98.0)),
-        1e-12
-    ));
+                                             // Numbers for the errata page: n = 2, f = 100, θ = 30°, n′ = n′_LSPSM = 16.142…: Eq 7
+                                             // gives 7.071 at z = n, the transcribed width 14.142.
+    let l = 2.0 + 200f64.sqrt();
+    assert!(close(eq7, 100.0 * l / (2.0 * (l + 98.0)), 1e-12));
 }
 
 /// Eq 5, 6 as transcribed: s = x/(z′ tan θ′) + ½, tan θ′ = (f′/f) tan θ and
