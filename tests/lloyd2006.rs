@@ -306,3 +306,28 @@ fn errata_eq9_eq10_factor_n() {
     // Numbers: M_x printed 14.142…, measured 7.071…; M_z printed 16.97…, measured 8.487…
     assert!(close(m.max_mx, 50f64.sqrt(), 1e-12));
 }
+
+/// App. C gives the optimal map's errors as m_x = 1/res_s and m_z = (1/res_t) ln(f/n)/(2 tan θ),
+/// dropping res_i (right only for res_i = 1). Its x map is PSM's (n′ = n), whose measured m_x is
+/// res_i/res_s everywhere: 1 at res_i = res_s = 1024, where the printed form gives 1/1024.
+#[test]
+fn errata_app_c_drops_res_i() {
+    let v = ViewFrustum::new(1.0, 1000.0, 0.5).unwrap();
+    let map = overhead_map(&v, NPrime::Finite(1.0)).unwrap();
+    let r = Resolutions::new(1024.0, 1024.0, 1024.0).unwrap();
+    for z in [1.0, 30.0, 1000.0] {
+        let p = point_error(
+            &v,
+            &map,
+            glam::DVec3::new(0.3 * z * 0.5f64.tan(), 0.0, -z),
+            r,
+        )
+        .unwrap();
+        assert!(close(p.mx, 1.0, REL), "m_x = {}", p.mx);
+    }
+    assert!(close(
+        max_mx(1.0, 1000.0, NPrime::Finite(1.0), r).unwrap(),
+        1.0,
+        1e-15
+    ));
+}

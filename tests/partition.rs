@@ -180,6 +180,35 @@ proptest! {
     }
 }
 
+/// §5.2 "Seams": in a self-similar ZP+W cascade with LiSPSM's n′ per partition, the measured
+/// m_z does not change across a seam, while m_x jumps from 1 to √a (a = (f/n)^{1/k}); with
+/// n′ = n (PSM) m_x does not change and m_z jumps by the factor a.
+#[test]
+fn seams_of_self_similar_cascades() {
+    use shadow_aliasing::measure::point_error;
+    use shadow_aliasing::Resolutions;
+    let v = ViewFrustum::new(0.5, 500.0, 0.6).unwrap();
+    let k = 3;
+    let a = 1000f64.powf(1.0 / 3.0);
+    let sp = z_splits(0.5, 500.0, k, SplitScheme::SelfSimilar).unwrap();
+    for (warp, jump_x, jump_z) in [
+        (TwinWarp::Lispsm, a.sqrt(), 1.0),
+        (TwinWarp::Eta(1.0), 1.0, a),
+    ] {
+        let c = overhead_cascade(&v, &sp, warp).unwrap();
+        for i in 1..k {
+            let z = sp.planes()[i];
+            let p = glam::DVec3::new(0.0, 0.0, -z);
+            let (v0, m0) = c.get(i - 1).unwrap();
+            let (v1, m1) = c.get(i).unwrap();
+            let before = point_error(&v0, &m0, p, Resolutions::default()).unwrap();
+            let after = point_error(&v1, &m1, p, Resolutions::default()).unwrap();
+            assert!(close(after.mx / before.mx, jump_x, REL), "{warp:?} x");
+            assert!(close(before.mz / after.mz, jump_z, REL), "{warp:?} z");
+        }
+    }
+}
+
 /// Eq 20 with k = 1: the measured uniform map with the light behind gives (f/n)².
 #[test]
 fn measured_uniform_map_behind_is_alpha_squared() {
