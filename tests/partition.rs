@@ -167,7 +167,7 @@ proptest! {
     /// Eq 18 → App. C: k((f/n)^{1/k} − 1)/(2 tan θ) decreases in k towards ln(f/n)/(2 tan θ).
     #[test]
     fn zp_w_decreases_towards_the_optimum(v in frustum()) {
-        let opt = optimal_storage_factor(&v);
+        let opt = optimal_storage_factor(&v).unwrap();
         prop_assert!(close(opt, scheme_storage_factor(Scheme::Optimal, SchemeLight::Overhead, &v, 1).unwrap(), 0.0));
         let mut prev = f64::INFINITY;
         for k in 1..=64 {
@@ -252,7 +252,11 @@ fn hand_values_fig12() {
         2.0 * 4.0 * (a - 1.0) + 1.0,
         1e-14
     ));
-    assert!(close(optimal_storage_factor(&v), 1000f64.ln() / t2, 1e-15));
+    assert!(close(
+        optimal_storage_factor(&v).unwrap(),
+        1000f64.ln() / t2,
+        1e-15
+    ));
     assert_eq!(
         shadow_map_count(Scheme::FpZpW, SchemeLight::Behind, 4).unwrap(),
         17
@@ -335,6 +339,44 @@ fn errata_eq22_eq23_drop_constant_factors() {
             let printed22 = jf * alpha.powf(2.0 / jf);
             let printed23 = jf * alpha.powf(4.0 / jf);
             assert!((printed22 - 252.9822).abs() < 1e-3 && printed23 == 8000.0);
+        }
+    }
+}
+
+fn any_f64() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        prop::num::f64::ANY,
+        (-300.0f64..300.0).prop_map(|e| 10f64.powf(e)),
+        Just(f64::INFINITY),
+        Just(1.0),
+    ]
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// No input makes the splits or the scheme storage factors panic or return NaN or ±∞.
+    #[test]
+    fn never_nan_or_infinite(n in any_f64(), f in any_f64(), p in any_f64(), q in any_f64(), k in 0usize..40) {
+        for s in [
+            SplitScheme::Uniform,
+            SplitScheme::SelfSimilar,
+            SplitScheme::Practical { lambda: p },
+            SplitScheme::Exponent { exponent: p },
+            SplitScheme::Adaptive { light_angle: p, ratio: q },
+        ] {
+            if let Ok(sp) = z_splits(n, f, k, s) {
+                prop_assert!(sp.planes().iter().all(|z| z.is_finite() && *z > 0.0));
+            }
+        }
+        if let Ok(v) = ViewFrustum::new(n, f, p) {
+            for sc in [Scheme::Zp, Scheme::ZpW, Scheme::FpZpW, Scheme::Optimal] {
+                for l in [SchemeLight::Overhead, SchemeLight::Behind] {
+                    prop_assert!(scheme_storage_factor(sc, l, &v, k).map_or(true, f64::is_finite));
+                }
+            }
+            prop_assert!(zp_overhead_asymptotic(&v, k).map_or(true, f64::is_finite));
+            prop_assert!(fp_zp_w_overhead_asymptotic(&v, k).map_or(true, f64::is_finite));
         }
     }
 }
