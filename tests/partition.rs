@@ -209,6 +209,35 @@ fn seams_of_self_similar_cascades() {
     }
 }
 
+proptest! {
+    #![proptest_config(config())]
+
+    /// §5.3 (Fig 12): with j shadow maps, ZP overhead (j partitions) beats FP+ZP+W overhead (j/4
+    /// z-partitions); behind, ZP's k (f/n)^{2/k} is least near k = 2 ln(f/n) and then grows,
+    /// while FP+ZP+W keeps falling towards 2 ln(f/n) + 1, so it eventually wins.
+    #[test]
+    fn fig12_claims(v in frustum()) {
+        for j in (4..=64).step_by(4) {
+            let zp = scheme_storage_factor(Scheme::Zp, SchemeLight::Overhead, &v, j).unwrap();
+            let fp = scheme_storage_factor(Scheme::FpZpW, SchemeLight::Overhead, &v, j / 4).unwrap();
+            prop_assert!(zp < fp, "j = {j}: ZP {zp} FP+ZP+W {fp}");
+        }
+        let ln = v.alpha().ln();
+        let behind = |k| scheme_storage_factor(Scheme::Zp, SchemeLight::Behind, &v, k).unwrap();
+        let kmin = (2.0 * ln).ceil().max(1.0) as usize;
+        prop_assert!(behind(kmin + 1) < behind(kmin + 2));
+        let fp_limit = 2.0 * ln + 1.0;
+        let fp_big = scheme_storage_factor(Scheme::FpZpW, SchemeLight::Behind, &v, 1 << 20).unwrap();
+        prop_assert!(close(fp_big, fp_limit, 1e-5));
+        // min_k k (f/n)^{2/k} ≥ 2 e ln(f/n) > 2 ln(f/n) + 1 once ln(f/n) > 1/(2(e − 1)).
+        if ln > 0.5 / (std::f64::consts::E - 1.0) {
+            for k in 1..=kmin + 2 {
+                prop_assert!(fp_limit < behind(k));
+            }
+        }
+    }
+}
+
 /// Eq 20 with k = 1: the measured uniform map with the light behind gives (f/n)².
 #[test]
 fn measured_uniform_map_behind_is_alpha_squared() {
