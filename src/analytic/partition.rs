@@ -203,7 +203,15 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
     let alpha = f / n;
     let mut p = [0.0; MAX_PARTITIONS + 1];
     let uniform = |i: usize| n + (f - n) * (i as f64 / kf);
-    let logarithmic = |i: usize| n * alpha.powf(i as f64 / kf);
+    // Self-similar planes n r^i, r = (f/n)^{1/k}: one powf, then products (error ≤ k ulps).
+    let r = alpha.powf(1.0 / kf);
+    let mut logarithmic = [0.0; MAX_PARTITIONS + 1];
+    let mut zl = n;
+    for l in logarithmic.iter_mut().take(k + 1) {
+        *l = zl;
+        zl *= r;
+    }
+    let logarithmic = |i: usize| logarithmic[i];
     match scheme {
         SplitScheme::Uniform => {
             for (i, z) in p.iter_mut().enumerate().take(k + 1) {
