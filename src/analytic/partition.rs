@@ -172,7 +172,10 @@ pub enum SplitScheme {
 /// planes are exactly `near` and `far`.
 ///
 /// Barroso's Eq 19 prints the far ratio as "α_i" and says "f_1 = f_2"; the crate reads a single
-/// α and f_1 = n_2 (partitions are contiguous), which is what makes γ = π/2 equal Eq 5.
+/// α (his text: every partition but the first gets "a small value α"; with α^i the ratios at
+/// γ = 0 would be α^k, …, α², not α) and f_1 = n_2 (partitions are contiguous; f_1 = f_2 would
+/// make the first partition cover the second). At γ = π/2 the α term vanishes and the planes are
+/// Eq 5's self-similar ones, as he states.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far, finite), `k`
