@@ -437,4 +437,18 @@ fn eq13_is_not_always_the_minimax() {
         "{}",
         max_at(g, NPrime::Unwarped)
     );
+    // Marginally on the n′₁ branch too, for a wide field of view: n = 1, f = 2, φ = 1.2,
+    // γ = 1.25: 0.50535 at n′₁ = 1.480, 0.50519 at n′* = 1.559.
+    let wide = ViewFrustum::new(1.0, 2.0, 1.2).unwrap();
+    let g = LightAngle::new(1.25).unwrap();
+    let m = |np: NPrime| {
+        let r = Resolutions::default();
+        tilted_mz(&wide, np, g, 1.0, r)
+            .unwrap()
+            .max(tilted_mz(&wide, np, g, 2.0, r).unwrap())
+    };
+    let (n1, opt) = (n_prime_1(&wide, g), n_prime_axis_minimax(&wide, g));
+    assert!((n1 - 1.480).abs() < 1e-3 && (opt.value() - 1.559).abs() < 1e-3);
+    assert!((m(NPrime::Finite(n1)) - 0.50535).abs() < 1e-5);
+    assert!((m(opt) - 0.50519).abs() < 1e-5);
 }

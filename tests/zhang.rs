@@ -591,6 +591,9 @@ fn theta_zero_is_finite() {
     let m = measured(&view, &twin(&view, 0.0, NPrime::Finite(3.0)), 0.0, 1.0, 7.0);
     let eq = zhang_eq(&view, NPrime::Finite(3.0), th, 1.0, 7.0).unwrap();
     assert!(rel(eq, 2.0 * m.mx) < 1e-12);
+    // By hand: tan φ_w / tan φ = f/λ, z_w = f tan φ − y + λ, E_q = 2 (f/λ) z_w / z = 568.90.
+    let by_hand = 2.0 * (100.0 / 3.0) * (100.0 * FRAC_PI_6.tan() - 1.0 + 3.0) / 7.0;
+    assert!(rel(eq, by_hand) < 1e-12 && (eq - 568.90).abs() < 1e-2);
 }
 
 #[test]

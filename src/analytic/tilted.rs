@@ -266,8 +266,13 @@ pub fn tilted_mz_perpendicular(
 #[inline]
 #[must_use]
 pub fn n_prime_1(view: &ViewFrustum, gamma: LightAngle) -> f64 {
+    n_prime_1_at(view, gamma.radians())
+}
+
+#[inline]
+fn n_prime_1_at(view: &ViewFrustum, gamma: f64) -> f64 {
     let (a, _) = half_heights(view);
-    let (s, c) = gamma.radians().sin_cos();
+    let (s, c) = gamma.sin_cos();
     (view.near() + (view.far() * view.near()).sqrt()) * s - a * c
 }
 
@@ -439,8 +444,7 @@ pub fn generalized_n_prime(view: &ViewFrustum, gamma: LightAngle, falloff: Fallo
     if g >= gl {
         return NPrime::Finite(n_prime_1(view, gamma));
     }
-    // γ_lim ∈ (φ_y, π/2), so it is a valid light angle.
-    let at_lim = LightAngle::new(gl).map_or(f64::NAN, |l| n_prime_1(view, l));
+    let at_lim = n_prime_1_at(view, gl);
     let r = falloff_r(falloff, g, gl);
     let v = at_lim / r;
     if v.is_finite() && v > 0.0 {
