@@ -42,7 +42,7 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::error::{fmt_num, in_closed, positive, Error, Result};
+use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};
 
 /// The half heights `(a, b) = (n tan φ_y, f tan φ_y)` of the near and far planes.
@@ -112,7 +112,7 @@ pub fn warp_depth_range(view: &ViewFrustum, gamma: LightAngle) -> f64 {
 pub fn tilted_psi(view: &ViewFrustum, n_prime: f64, gamma: LightAngle, z: f64) -> Result<f64> {
     let np = positive("n_prime", n_prime)?;
     let z = depth_in_view(view, z)?;
-    Ok(np + psi_offset(view, gamma, z))
+    finite_result("psi", np + psi_offset(view, gamma, z))
 }
 
 /// ψ − n′: the point's warp depth from the frustum's nearest extent.
@@ -147,7 +147,10 @@ pub fn tilted_xi(
     let np = positive("n_prime", n_prime)?;
     let s = positive_sin(gamma)?;
     let mu = warp_depth_range(view, gamma);
-    Ok(res.image() / res.t() / (2.0 * view.tan_half_fov()) * mu / (np * (np + mu)) / s)
+    finite_result(
+        "xi",
+        res.image() / res.t() / (2.0 * view.tan_half_fov()) * mu / (np * (np + mu)) / s,
+    )
 }
 
 fn positive_sin(gamma: LightAngle) -> Result<f64> {
@@ -224,7 +227,7 @@ pub fn tilted_mz(
     let np = finite_n_prime("n_prime", n_prime)?;
     let s = positive_sin(gamma)?;
     let z = depth_in_view(view, z)?;
-    Ok(mz_perp_unchecked(view, np, gamma, z, res) / s)
+    finite_result("m_z", mz_perp_unchecked(view, np, gamma, z, res) / s)
 }
 
 /// The tilted-light m_z measured perpendicular to the light, as the crate measures every map
@@ -249,7 +252,7 @@ pub fn tilted_mz_perpendicular(
 ) -> Result<f64> {
     let np = finite_n_prime("n_prime", n_prime)?;
     let z = depth_in_view(view, z)?;
-    Ok(mz_perp_unchecked(view, np, gamma, z, res))
+    finite_result("m_z", mz_perp_unchecked(view, np, gamma, z, res))
 }
 
 /// Barroso's n′₁(γ) (Eq 13, first branch): the n′ that makes m_z equal on the near and far
@@ -263,8 +266,13 @@ pub fn tilted_mz_perpendicular(
 #[inline]
 #[must_use]
 pub fn n_prime_1(view: &ViewFrustum, gamma: LightAngle) -> f64 {
+    n_prime_1_at(view, gamma.radians())
+}
+
+#[inline]
+fn n_prime_1_at(view: &ViewFrustum, gamma: f64) -> f64 {
     let (a, _) = half_heights(view);
-    let (s, c) = gamma.radians().sin_cos();
+    let (s, c) = gamma.sin_cos();
     (view.near() + (view.far() * view.near()).sqrt()) * s - a * c
 }
 
@@ -307,6 +315,54 @@ pub fn n_prime_equal_error(view: &ViewFrustum, gamma: LightAngle) -> Result<NPri
     }
 }
 
+/// The n′ that minimises the maximum of the tilted m_z over the view axis, `max(m_z(n), m_z(f))`
+/// (the quantity Barroso's Eq 13 sets out to minimise), for every γ ∈ [0, π/2]:
+///
+/// `n′_opt = max(n′_eq, n′*)`, `n′* = d μ / (μ − 2 d)`,
+///
+/// with n′_eq Barroso's equal-error n′ (n′₁ or n′₂ of Eq 13, [`n_prime_equal_error`]; ignored
+/// where it is not positive), μ the frustum's extent along the warp axis ([`warp_depth_range`])
+/// and `d = ψ(n) − n′` the near point's warp depth from the nearest extent (`a cos γ` for
+/// γ ≥ φ_y, `b cos γ − (f − n) sin γ` below). Reason: m_z(f) decreases in n′ everywhere, while
+/// m_z(n) ∝ (n′ + d)²/(n′(n′ + μ)) decreases up to its stationary point n′* and increases after
+/// it; m_z(n) > m_z(f) exactly for n′ > n′_eq. So the equal-error n′ is the optimum only when
+/// n′* ≤ n′_eq; otherwise the optimum is n′*, with m_z(n) > m_z(f) there. At γ = 0, n′* = ∞
+/// ([`NPrime::Unwarped`]). Overhead, n′_opt = n + √(f n) (LiSPSM).
+///
+/// Unit: eye-space distance. Inputs are validated types, so this cannot fail.
+///
+/// ```
+/// # use shadow_aliasing::{analytic::tilted::{n_prime_axis_minimax, n_prime_2}, LightAngle, ViewFrustum};
+/// let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6)?;
+/// let g = LightAngle::new(28f64.to_radians())?;
+/// // Barroso's n′₂ = 0.665 equalises the errors, but n′ = 4.935 has a lower maximum.
+/// assert!((n_prime_2(&view, g) - 0.66487).abs() < 1e-4);
+/// assert!((n_prime_axis_minimax(&view, g).value() - 4.9349).abs() < 1e-4);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+#[must_use]
+pub fn n_prime_axis_minimax(view: &ViewFrustum, gamma: LightAngle) -> NPrime {
+    let mu = warp_depth_range(view, gamma);
+    let d = psi_offset(view, gamma, view.near()).max(0.0);
+    let den = mu - 2.0 * d;
+    let star = if den > 0.0 {
+        d * mu / den
+    } else {
+        f64::INFINITY
+    };
+    let eq = if gamma.radians() >= view.half_fov() {
+        n_prime_1(view, gamma)
+    } else {
+        n_prime_2(view, gamma)
+    };
+    let v = star.max(eq);
+    if v.is_finite() && v > 0.0 {
+        NPrime::Finite(v)
+    } else {
+        NPrime::Unwarped
+    }
+}
+
 /// Barroso's limit angle (Eq 15), where the near and far faces of the view frustum begin to
 /// overlap in the light's view:
 ///
@@ -327,6 +383,25 @@ pub enum Falloff {
     Zhang,
     /// Barroso's faster `r(γ) = [1 + sin((γ/γ_lim − 1) · π/2)]²` (Eq 18).
     Barroso,
+}
+
+impl std::str::FromStr for Falloff {
+    type Err = Error;
+
+    /// Parses the eval contract's names, `"zhang"` (Eq 17) and `"barroso"` (Eq 18).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `falloff` for any other string.
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "zhang" => Ok(Falloff::Zhang),
+            "barroso" => Ok(Falloff::Barroso),
+            other => Err(Error::invalid(
+                "falloff",
+                format!("must be \"barroso\" or \"zhang\" (got \"{other}\")"),
+            )),
+        }
+    }
 }
 
 /// r(γ) for γ ∈ [0, γ_lim] (Barroso Eq 17, 18): 1 at γ_lim, 0 at γ = 0, increasing between.
@@ -369,8 +444,7 @@ pub fn generalized_n_prime(view: &ViewFrustum, gamma: LightAngle, falloff: Fallo
     if g >= gl {
         return NPrime::Finite(n_prime_1(view, gamma));
     }
-    // γ_lim ∈ (φ_y, π/2), so it is a valid light angle.
-    let at_lim = LightAngle::new(gl).map_or(f64::NAN, |l| n_prime_1(view, l));
+    let at_lim = n_prime_1_at(view, gl);
     let r = falloff_r(falloff, g, gl);
     let v = at_lim / r;
     if v.is_finite() && v > 0.0 {
@@ -397,6 +471,16 @@ mod tests {
             tilted_psi(&view, 3.0, below, 7.0).unwrap(),
         );
         assert!((p1 - p2).abs() < 1e-9);
+    }
+
+    #[test]
+    fn falloff_names() {
+        assert_eq!("zhang".parse::<Falloff>(), Ok(Falloff::Zhang));
+        assert_eq!("barroso".parse::<Falloff>(), Ok(Falloff::Barroso));
+        assert_eq!(
+            "lloyd".parse::<Falloff>().unwrap_err().to_string(),
+            "falloff must be \"barroso\" or \"zhang\" (got \"lloyd\")"
+        );
     }
 
     #[test]
