@@ -523,7 +523,7 @@ fn hull_area(pts: &mut [DVec2]) -> f64 {
     if n < 3 {
         return 0.0;
     }
-    pts.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    pts.sort_unstable_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
     let mut hull = [DVec2::ZERO; 130];
     let mut k = 0usize;
     for &p in pts.iter() {

@@ -429,6 +429,11 @@ pub use crate::analytic::tsm::EIGHTY_PERCENT_LINE as TSM_80_PERCENT_LINE;
 /// where the builders use the bounding rectangle, the limit η → ∞.
 #[inline]
 pub(crate) fn tsm_eta(lambda: f64, delta_p: f64, xi: f64) -> Option<f64> {
+    // The closed form's domain, checked first so that the per-frame path never builds (and
+    // allocates) an error message: δ′ ∈ (0, λ) and a positive denominator λ(1 − ξ) − 2δ′.
+    if !(delta_p > 0.0 && delta_p < lambda && lambda * (1.0 - xi) - 2.0 * delta_p > 0.0) {
+        return None;
+    }
     match crate::analytic::tsm::tsm_eta(lambda, delta_p, xi) {
         Ok(NPrime::Finite(eta)) => Some(eta),
         _ => None,
