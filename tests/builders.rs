@@ -467,3 +467,70 @@ fn per_frame_builders_do_not_allocate() {
     let (_, n) = no_alloc::allocations(|| vec![1u8; 16]);
     assert!(n >= 1);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 128, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// A light tilted by γ in the view's vertical plane (from behind or in front): the measured
+    /// m_z of the built warp on the view axis equals Barroso & Celes Eq 12 measured perpendicular
+    /// to the light (`tilted_mz_perpendicular`), and 2 m_z, 2 m_x equal Zhang et al.'s global
+    /// E_p, E_q (Eq 13, 14), for any n′ and for Barroso's own n′.
+    #[test]
+    fn tilted_matches_barroso_and_zhang(
+        n in 0.05f64..5.0,
+        ratio in 1.5f64..1e4,
+        fov_deg in 5.0f64..75.0,
+        gamma in 0.01f64..std::f64::consts::FRAC_PI_2,
+        behind in proptest::bool::ANY,
+        log_np in -2.0f64..3.0,
+        zf in 0.0f64..1.0,
+        barroso_rule in proptest::bool::ANY,
+    ) {
+        use shadow_aliasing::analytic::global::{zhang_ep, zhang_eq};
+        use shadow_aliasing::analytic::tilted::tilted_mz_perpendicular;
+        use shadow_aliasing::LightAngle;
+        let f = n * ratio;
+        let view = ViewFrustum::new(n, f, fov_deg.to_radians()).unwrap();
+        let (s, c) = gamma.sin_cos();
+        let l = if behind { DVec3::new(0.0, -s, -c) } else { DVec3::new(0.0, -s, c) };
+        let sm = if barroso_rule {
+            warp(&view, l, WarpRule::Barroso(Falloff::Barroso)).unwrap()
+        } else {
+            let ls = light_space(l, DVec3::NEG_Z).unwrap();
+            let np = NPrime::Finite(n * 10f64.powf(log_np));
+            let m = fit_warp(&view.corners(), &ls, np).unwrap();
+            shadow_aliasing::build::ShadowMatrix { matrix: m, light_dir: l, n_prime: np, near: n, far: f }
+        };
+        let z = n + zf * (f - n);
+        let g = LightAngle::new(gamma).unwrap();
+        let e = point_error(&view, &sm.shadow_map(), DVec3::new(0.0, 0.0, -z), Resolutions::default()).unwrap();
+        let b = tilted_mz_perpendicular(&view, sm.n_prime, g, z, Resolutions::default()).unwrap();
+        prop_assert!((e.mz - b).abs() <= 1e-9 * b, "m_z {} vs Barroso {}", e.mz, b);
+        let ep = zhang_ep(&view, sm.n_prime, g, 0.0, z).unwrap();
+        let eq = zhang_eq(&view, sm.n_prime, g, 0.0, z).unwrap();
+        prop_assert!((2.0 * e.mz - ep).abs() <= 1e-9 * ep, "2 m_z {} vs Zhang E_p {}", 2.0 * e.mz, ep);
+        prop_assert!((2.0 * e.mx - eq).abs() <= 1e-9 * eq, "2 m_x {} vs Zhang E_q {}", 2.0 * e.mx, eq);
+    }
+}
+
+/// Sweeping through the view axis along a diagonal plane: the two sides agree and S̄ is
+/// continuous up to the axis, but the limit (the bounding rectangle turned 45°, S̄ = 2 (f/n)² for
+/// a square image) differs from the value exactly on the axis ((f/n)², the rectangle aligned
+/// with the image): the warp axis has no continuous extension there (docs/builders.md).
+#[test]
+fn diagonal_sweep_through_parallel() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let diag = DVec3::new(1.0, 1.0, 0.0).normalize();
+    for rule in [WarpRule::Uniform, WarpRule::Minimax, WarpRule::LispsmSin] {
+        let at = |t: f64| {
+            let s = warp(&view, DVec3::NEG_Z + t * diag, rule).unwrap();
+            frustum_max(&view, &s.shadow_map()).unwrap().storage_factor
+        };
+        let s6 = at(1e-6);
+        for t in [-1e-6, 1e-9, -1e-9, 1e-11, -1e-11] {
+            assert!((at(t) - s6).abs() <= 1e-4 * s6, "{rule:?} at {t}: {} vs {s6}", at(t));
+        }
+        assert!((s6 - 2e4).abs() <= 1e-3 * 2e4, "{rule:?}: {s6}");
+        assert!((at(0.0) - 1e4).abs() <= 1e-6 * 1e4);
+    }
+}
