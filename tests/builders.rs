@@ -528,9 +528,59 @@ fn diagonal_sweep_through_parallel() {
         };
         let s6 = at(1e-6);
         for t in [-1e-6, 1e-9, -1e-9, 1e-11, -1e-11] {
-            assert!((at(t) - s6).abs() <= 1e-4 * s6, "{rule:?} at {t}: {} vs {s6}", at(t));
+            assert!(
+                (at(t) - s6).abs() <= 1e-4 * s6,
+                "{rule:?} at {t}: {} vs {s6}",
+                at(t)
+            );
         }
         assert!((s6 - 2e4).abs() <= 1e-3 * 2e4, "{rule:?}: {s6}");
         assert!((at(0.0) - 1e4).abs() <= 1e-6 * 1e4);
     }
+}
+
+/// Engine rules as shipped: Filament switches to the orthographic map below sin γ = 0.02, a jump
+/// from S̄ = 15 068 (its warp, 1.51× the uniform map) to 9 998 (n = 1, f = 100, θ = 30°, light
+/// from behind); OGRE's ramp never reaches the uniform map: on the axis its n′ = 2.1 (n + √(f n))
+/// gives S̄ = 72 976, 7.3× the uniform map's 10 000.
+#[test]
+fn engine_rules_near_parallel() {
+    let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
+    let sbar = |l: DVec3, r: WarpRule| {
+        frustum_max(&view, &warp(&view, l, r).unwrap().shadow_map())
+            .unwrap()
+            .storage_factor
+    };
+    let at = |s: f64| DVec3::new(0.0, -s, -(1.0 - s * s).sqrt());
+    let below = sbar(at(0.0199999), WarpRule::Filament);
+    let above = sbar(at(0.0200001), WarpRule::Filament);
+    assert_eq!(
+        n_prime_for(&view, at(0.0199999), WarpRule::Filament).unwrap(),
+        NPrime::Unwarped
+    );
+    assert!((below - 9997.9998).abs() < 1e-3, "{below}");
+    assert!((above - 15067.996).abs() < 1e-2, "{above}");
+    let ogre = n_prime_for(&view, DVec3::NEG_Z, WarpRule::Ogre)
+        .unwrap()
+        .value();
+    assert!((ogre - 2.1 * 11.0).abs() < 1e-12);
+    let s = sbar(DVec3::NEG_Z, WarpRule::Ogre);
+    assert!((s - 72975.648).abs() < 1e-2, "{s}");
+    // The reference code's general n′ = Δ/(√(z₁/z₀) − 1) is Wimmer's "old" (n + √(n(n + Δ sin γ)))/sin γ
+    // with d = Δ: check the identity at a tilted light.
+    let l = DVec3::new(0.3, -0.5, -0.8);
+    let fl_delta = {
+        let ls = light_space(l, DVec3::NEG_Z).unwrap();
+        let z: Vec<f64> = view.corners().iter().map(|c| ls.z.dot(*c)).collect();
+        z.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+            - z.iter().cloned().fold(f64::INFINITY, f64::min)
+    };
+    let sg = l.normalize().cross(DVec3::NEG_Z).length();
+    let old = (1.0 + (1.0 * (1.0 + fl_delta * sg)).sqrt()) / sg;
+    let r = n_prime_for(&view, l, WarpRule::LispsmReference)
+        .unwrap()
+        .value();
+    assert!((r - old).abs() <= 1e-12 * old, "{r} vs {old}");
+    let by_def = fl_delta / (((1.0 + fl_delta * sg) / 1.0).sqrt() - 1.0);
+    assert!((r - by_def).abs() <= 1e-9 * by_def);
 }
