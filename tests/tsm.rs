@@ -372,3 +372,28 @@ fn tsm_80_percent_rule_jumps_at_the_square_fallback() {
     let su = frustum_max(&view, &u.shadow_map()).unwrap().storage_factor;
     assert!((off / su - 3.9824).abs() < 1e-3);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 96, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// The fast iterative search (ternary search over the line index) finds the same trapezoid as
+    /// the exhaustive one of the paper: the focus area is unimodal in the line index.
+    #[test]
+    fn fast_iterative_equals_exhaustive(
+        near in 0.05f64..5.0,
+        log_ratio in (1.05f64).ln()..(1e4f64).ln(),
+        fov_deg in 5.0f64..75.0,
+        aspect in 0.5f64..2.0,
+        elev in -std::f64::consts::FRAC_PI_2..std::f64::consts::FRAC_PI_2,
+        azim in 0.0f64..std::f64::consts::TAU,
+        focus_frac in 0.01f64..1.0,
+        lines in 32u32..2049,
+    ) {
+        let view = ViewFrustum::with_aspect(near, near * log_ratio.exp(), fov_deg.to_radians(), aspect).unwrap();
+        let l = light_from_angles(elev, azim);
+        let focus = focus_frac * (view.far() - view.near());
+        let fast = tsm(&view, l, TsmOptions { focus, search: TsmSearch::Iterative { map_lines: lines } }).unwrap();
+        let slow = tsm(&view, l, TsmOptions { focus, search: TsmSearch::IterativeExhaustive { map_lines: lines } }).unwrap();
+        prop_assert!(fast.focus_area >= slow.focus_area * (1.0 - 1e-9), "fast {} vs exhaustive {} (ξ {} vs {})", fast.focus_area, slow.focus_area, fast.xi, slow.xi);
+    }
+}
