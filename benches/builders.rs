@@ -1,5 +1,6 @@
 //! The per-frame builders (`builders/NAME`): what a renderer calls every frame for every shadowed
-//! light. Configuration: n = 1, f = 1000, half field of view 30°, square image, a light tilted
+//! light. TSM's focus region is the first 30 % of the depth range, its iterative search over a
+//! 1024-line map. Configuration: n = 1, f = 1000, half field of view 30°, square image, a light tilted
 //! 53° from the view direction and off the view's vertical plane, `(0.3, −0.8, −0.4)`.
 //!
 //! ```text
@@ -8,7 +9,7 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use glam::DVec3;
-use shadow_aliasing::build::{warp, WarpRule};
+use shadow_aliasing::build::{tsm, warp, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::ViewFrustum;
 use std::hint::black_box as bb;
 
@@ -27,6 +28,22 @@ fn builders(c: &mut Criterion) {
     });
     g.bench_function("minimax", |b| {
         b.iter(|| warp(bb(&view), bb(light), bb(WarpRule::Minimax)))
+    });
+    // Martin & Tan: the focus region is the first 30 % of the frustum's depth range.
+    let focus = 0.3 * (view.far() - view.near());
+    g.bench_function("tsm", |b| {
+        let opts = TsmOptions {
+            focus,
+            search: TsmSearch::EightyPercent,
+        };
+        b.iter(|| tsm(bb(&view), bb(light), bb(opts)))
+    });
+    g.bench_function("tsm_iterative", |b| {
+        let opts = TsmOptions {
+            focus,
+            search: TsmSearch::Iterative { map_lines: 1024 },
+        };
+        b.iter(|| tsm(bb(&view), bb(light), bb(opts)))
     });
     g.finish();
 }

@@ -12,7 +12,7 @@
 
 use glam::DVec3;
 use shadow_aliasing::build::minimax::minimax_n_prime;
-use shadow_aliasing::build::{warp, ShadowMatrix, WarpRule};
+use shadow_aliasing::build::{tsm, warp, ShadowMatrix, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::measure::frustum_max;
 use shadow_aliasing::ViewFrustum;
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -151,4 +151,20 @@ fn frustum_max_does_not_allocate() {
         let s = warp(v, l, WarpRule::Lispsm).unwrap();
         black_box(frustum_max(v, &s.shadow_map()).unwrap());
     });
+}
+
+#[test]
+fn tsm_builder_does_not_allocate() {
+    for search in [
+        TsmSearch::EightyPercent,
+        TsmSearch::Iterative { map_lines: 1024 },
+    ] {
+        assert_no_allocation("tsm", |v, l| {
+            let opts = TsmOptions {
+                focus: 0.3 * (v.far() - v.near()),
+                search,
+            };
+            black_box(tsm(v, l, opts).unwrap());
+        });
+    }
 }
