@@ -105,9 +105,18 @@ fn layout_by_hand() {
     let a = layout(1000, 500, &entries).unwrap();
     let v = a.viewports();
     assert_eq!((v[1].x, v[1].y, v[1].width, v[1].height), (0, 0, 250, 100));
-    assert_eq!((v[2].x, v[2].y, v[2].width, v[2].height), (0, 100, 250, 200));
-    assert_eq!((v[3].x, v[3].y, v[3].width, v[3].height), (0, 300, 250, 200));
-    assert_eq!((v[0].x, v[0].y, v[0].width, v[0].height), (250, 0, 750, 500));
+    assert_eq!(
+        (v[2].x, v[2].y, v[2].width, v[2].height),
+        (0, 100, 250, 200)
+    );
+    assert_eq!(
+        (v[3].x, v[3].y, v[3].width, v[3].height),
+        (0, 300, 250, 200)
+    );
+    assert_eq!(
+        (v[0].x, v[0].y, v[0].width, v[0].height),
+        (250, 0, 750, 500)
+    );
     assert_eq!(a.width(), 1000);
     assert_eq!(a.height(), 500);
     // The viewport matrix maps the clip square onto the rectangle: (−1, −1) → (2·250/1000 − 1,
@@ -189,7 +198,10 @@ fn composed_matrices_map_into_their_viewports() {
             for q in p.vertices {
                 let c = clip(&m, q);
                 let own = clip(&p.shadow.matrix, q);
-                assert!(c.x >= x0 - 1e-9 && c.x <= x1 + 1e-9, "{c} not in [{x0}, {x1}]");
+                assert!(
+                    c.x >= x0 - 1e-9 && c.x <= x1 + 1e-9,
+                    "{c} not in [{x0}, {x1}]"
+                );
                 assert!(c.y >= y0 - 1e-9 && c.y <= y1 + 1e-9);
                 assert!((c.z - own.z).abs() < 1e-12, "depth unchanged");
             }

@@ -13,7 +13,8 @@ use shadow_aliasing::build::{Falloff, WarpRule};
 use shadow_aliasing::measure::{frustum_max, frustum_max_sampled};
 use shadow_aliasing::ViewFrustum;
 
-const RULES: [WarpRule; 10] = [
+const RULES: [WarpRule; 11] = [
+    WarpRule::MinimaxMz,
     WarpRule::Uniform,
     WarpRule::Psm,
     WarpRule::Lispsm,
@@ -147,7 +148,7 @@ proptest! {
             (WarpRule::Lispsm, zpw),
             (WarpRule::LispsmSin, zpw),
             (WarpRule::Psm, zpw),
-            (WarpRule::Minimax, zpw),
+            (WarpRule::MinimaxMz, zpw),
         ] {
             let c = cascades(&view, l, &splits, rule, 0.0).unwrap();
             let mut measured = 0.0;
@@ -252,7 +253,14 @@ fn vertex_maxima_agree_with_dense_sampling() {
 fn overlap_extends_each_partition_by_its_fraction() {
     let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
     let splits = z_splits(1.0, 100.0, 2, SplitScheme::SelfSimilar).unwrap();
-    let c = cascades(&view, DVec3::new(0.2, -1.0, 0.1), &splits, WarpRule::Lispsm, 0.25).unwrap();
+    let c = cascades(
+        &view,
+        DVec3::new(0.2, -1.0, 0.1),
+        &splits,
+        WarpRule::Lispsm,
+        0.25,
+    )
+    .unwrap();
     let p0 = c.get(0).unwrap();
     let p1 = c.get(1).unwrap();
     assert_eq!((p0.split_near, p0.split_far), (1.0, 10.0));
@@ -306,7 +314,11 @@ fn bounding_sphere_is_minimal() {
         let (c, r) = bounding_sphere(&view, n, f).unwrap();
         let center = DVec3::new(0.0, 0.0, -c);
         let sub = view.with_depth_range(n, f).unwrap();
-        let d: Vec<f64> = sub.corners().iter().map(|p| (*p - center).length()).collect();
+        let d: Vec<f64> = sub
+            .corners()
+            .iter()
+            .map(|p| (*p - center).length())
+            .collect();
         let far_on = (d[4] - r).abs() < 1e-12 * r;
         assert!(d.iter().all(|&x| x <= r * (1.0 + 1e-12)));
         assert!(far_on, "far corners on the sphere");
@@ -386,7 +398,15 @@ fn stable_cascades_snap_to_whole_texels() {
     }
     let w2e = DMat4::IDENTITY;
     assert!(stable_cascade(&view, w2e, light_world, 1.0, 2.0, 2).is_err());
-    assert!(stable_cascade(&view, DMat4::from_scale(DVec3::splat(2.0)), light_world, 1.0, 2.0, 64).is_err());
+    assert!(stable_cascade(
+        &view,
+        DMat4::from_scale(DVec3::splat(2.0)),
+        light_world,
+        1.0,
+        2.0,
+        64
+    )
+    .is_err());
     assert!(stable_cascade(&view, w2e, DVec3::ZERO, 1.0, 2.0, 64).is_err());
     assert!(stable_cascade(&view, w2e, light_world, 2.0, 1.0, 64).is_err());
 }

@@ -186,9 +186,7 @@ fn bisector_axes() {
     assert!((unit(face_axis(&view, Face::Top, behind).unwrap()) - DVec3::Y).length() < 1e-15);
     assert!((unit(face_axis(&view, Face::Right, behind).unwrap()) - DVec3::X).length() < 1e-15);
     let over = DVec3::NEG_Y;
-    assert!(
-        (unit(face_axis(&view, Face::Bottom, over).unwrap()) - DVec3::NEG_Z).length() < 1e-15
-    );
+    assert!((unit(face_axis(&view, Face::Bottom, over).unwrap()) - DVec3::NEG_Z).length() < 1e-15);
     // A light along a side edge makes that edge's projection vanish.
     let edge = DVec3::new(view.tan_half_fov(), view.tan_half_fov(), -1.0);
     assert!(face_axis(&view, Face::Top, edge).is_err());
@@ -313,7 +311,11 @@ fn face_maxima_at_vertices() {
                     assert!(e.mx <= p.error.max_mx * (1.0 + 1e-9));
                     assert!(e.mz <= p.error.max_mz * (1.0 + 1e-9));
                     // Deeper along the light ray (inside the frustum): smaller error.
-                    let inward = if visible_faces(&view, l).unwrap().front { 1.0 } else { -1.0 };
+                    let inward = if visible_faces(&view, l).unwrap().front {
+                        1.0
+                    } else {
+                        -1.0
+                    };
                     let deeper = q + inward * 0.05 * view.far() * l;
                     if view.contains(deeper, 0.0) && deeper.z < q.z {
                         let e2 = point_error(&view, &sm, deeper, Resolutions::default()).unwrap();

@@ -33,7 +33,11 @@ fn grid_ends_and_directions() {
     let d = light_dir_from_angles(0.3, 2.0);
     assert!(close(
         -d,
-        DVec3::new(0.3f64.cos() * 2.0f64.sin(), 0.3f64.sin(), 0.3f64.cos() * 2.0f64.cos())
+        DVec3::new(
+            0.3f64.cos() * 2.0f64.sin(),
+            0.3f64.sin(),
+            0.3f64.cos() * 2.0f64.cos()
+        )
     ));
 }
 
@@ -48,8 +52,8 @@ fn vertex_max_is_point_error() {
     ] {
         for rule in [WarpRule::Lispsm, WarpRule::Uniform, WarpRule::Psm] {
             let s = warp(&view, l, rule).unwrap();
-            let fast = vertex_max(&s.matrix, s.light_dir, view.tan_half_fov(), &view.corners())
-                .unwrap();
+            let fast =
+                vertex_max(&s.matrix, s.light_dir, view.tan_half_fov(), &view.corners()).unwrap();
             let truth = frustum_max(&view, &s.shadow_map()).unwrap();
             assert!((fast.max_mx - truth.max_mx).abs() <= 1e-12 * truth.max_mx);
             assert!((fast.max_mz - truth.max_mz).abs() <= 1e-12 * truth.max_mz);
@@ -63,8 +67,13 @@ fn vertex_max_is_point_error() {
     }
     // Behind the centre of projection, or at depth ≤ 0: None, not NaN.
     let s = warp(&view, DVec3::NEG_Y, WarpRule::Psm).unwrap();
-    assert!(vertex_max(&s.matrix, s.light_dir, 0.9f64.tan(), &[DVec3::new(0.0, 0.0, 1.0)])
-        .is_none());
+    assert!(vertex_max(
+        &s.matrix,
+        s.light_dir,
+        0.9f64.tan(),
+        &[DVec3::new(0.0, 0.0, 1.0)]
+    )
+    .is_none());
 }
 
 /// Every sweep value is the scheme's storage factor at that direction, and for a single map the
@@ -83,7 +92,9 @@ fn sweep_values_are_the_measurement() {
         for (n, (el, az, v)) in s.rows().enumerate() {
             assert_eq!((el, az), (grid.elevation(n / 12), grid.azimuth(n % 12)));
             let l = light_dir_from_angles(el, az);
-            let direct = scheme(&view, l, rule, partition, k).unwrap().storage_factor();
+            let direct = scheme(&view, l, rule, partition, k)
+                .unwrap()
+                .storage_factor();
             assert_eq!(v, direct);
             if partition == Partition::Single {
                 let m = warp(&view, l, rule).unwrap();
@@ -111,10 +122,26 @@ fn overhead_and_behind_closed_forms() {
     assert!((behind - 1e6).abs() <= 1e-9 * 1e6, "behind {behind}");
     // Into a caller's buffer, and its length checked.
     let mut buf = vec![0.0; grid.len()];
-    sweep_into(&view, WarpRule::LispsmSin, Partition::Single, 1, grid, &mut buf).unwrap();
+    sweep_into(
+        &view,
+        WarpRule::LispsmSin,
+        Partition::Single,
+        1,
+        grid,
+        &mut buf,
+    )
+    .unwrap();
     assert_eq!(buf, s.storage_factor);
     let mut short = vec![0.0; 3];
-    assert!(sweep_into(&view, WarpRule::LispsmSin, Partition::Single, 1, grid, &mut short).is_err());
+    assert!(sweep_into(
+        &view,
+        WarpRule::LispsmSin,
+        Partition::Single,
+        1,
+        grid,
+        &mut short
+    )
+    .is_err());
     assert!(sweep(&view, WarpRule::Uniform, Partition::Log, 0, grid).is_err());
     assert!(s.max() >= behind);
 }

@@ -83,7 +83,10 @@ pub fn allocate_texels(errors: &[f64], total: u32, out: &mut [u32]) -> Result<()
         if !(e.is_finite() && e > 0.0) {
             return Err(Error::invalid(
                 "errors",
-                format!("must be finite and positive (got {} at index {i})", fmt_num(e)),
+                format!(
+                    "must be finite and positive (got {} at index {i})",
+                    fmt_num(e)
+                ),
             ));
         }
         sum += e;

@@ -6,7 +6,7 @@
 //! [`cascades`] takes the split planes `near = z₀ < z₁ < … < z_k = far` of a
 //! [`Splits`] (any [`SplitScheme`]: uniform, self-similar, practical λ, Barroso's adaptive,
 //! Unreal's exponent; or explicit depths, [`Splits::from_planes`]; or fractions of the depth range,
-//! [`splits_from_fractions`]) and fits one map per partition with [`warp`] and a [`WarpRule`]:
+//! [`splits_from_fractions`]) and fits one map per partition with [`warp()`] and a [`WarpRule`]:
 //! the rule sees the partition as its own view frustum `[z_i, z_{i+1}]`, so `WarpRule::Lispsm`
 //! is `n′ = z_i + √(z_i z_{i+1})` per partition, as Lloyd 2006 §5.2 fits "a warping frustum to each
 //! partition separately". With the light overhead and self-similar planes this gives Lloyd 2006
@@ -151,7 +151,7 @@ pub fn splits_from_fractions(view: &ViewFrustum, fractions: &[f64]) -> Result<Sp
     Splits::from_planes(&planes[..fractions.len() + 2])
 }
 
-/// One map per z-partition of `splits`, each fitted by [`warp`] with `rule` to its own
+/// One map per z-partition of `splits`, each fitted by [`warp()`] with `rule` to its own
 /// sub-frustum (extended by `overlap`, see the module docs), and each measured at the eight
 /// corners of that sub-frustum with [`vertex_max`]. No heap allocation.
 ///
@@ -231,14 +231,14 @@ pub(crate) fn visit_cascades(
             corners[j] = *d * a;
             corners[j + 4] = *d * end;
         }
-        let error = vertex_max(&shadow.matrix, shadow.light_dir, tan, &corners)
-        .ok_or_else(|| {
-            Error::Degenerate(format!(
+        let error =
+            vertex_max(&shadow.matrix, shadow.light_dir, tan, &corners).ok_or_else(|| {
+                Error::Degenerate(format!(
                 "the map of partition {i} ([{}, {}]) puts a corner behind its centre of projection",
                 fmt_num(a),
                 fmt_num(end)
             ))
-        })?;
+            })?;
         visit(&Cascade {
             shadow,
             split_near: a,

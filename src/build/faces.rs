@@ -198,7 +198,11 @@ impl Face {
         match self.edges_with(t, ta) {
             Some([e0, e1]) => [e0 * near, e1 * near, e1 * far, e0 * far],
             None => {
-                let d = if self == Face::Near { view.near() } else { view.far() };
+                let d = if self == Face::Near {
+                    view.near()
+                } else {
+                    view.far()
+                };
                 // c₀, c₁ (bottom edges) then c₂, c₃ (top edges): the corners' order.
                 let c = Face::Bottom
                     .edges_with(t, ta)

@@ -233,14 +233,16 @@ fn fill(
             let tan = view.tan_half_fov();
             let ta = tan * view.aspect();
             let mut corners = [DVec3::ZERO; 8];
-            for (j, d) in [(-ta, -tan), (ta, -tan), (ta, tan), (-ta, tan)].iter().enumerate() {
+            for (j, d) in [(-ta, -tan), (ta, -tan), (ta, tan), (-ta, tan)]
+                .iter()
+                .enumerate()
+            {
                 corners[j] = DVec3::new(d.0 * view.near(), d.1 * view.near(), -view.near());
                 corners[j + 4] = DVec3::new(d.0 * view.far(), d.1 * view.far(), -view.far());
             }
-            let e = vertex_max(&s.matrix, s.light_dir, tan, &corners)
-                .ok_or_else(|| {
-                    Error::Degenerate("the map is singular at a frustum corner".into())
-                })?;
+            let e = vertex_max(&s.matrix, s.light_dir, tan, &corners).ok_or_else(|| {
+                Error::Degenerate("the map is singular at a frustum corner".into())
+            })?;
             out.push(PartitionResult {
                 matrix: s.matrix,
                 n_prime: s.n_prime,
@@ -407,12 +409,12 @@ pub fn seams(view: &ViewFrustum, result: &SchemeResult) -> Result<Seams> {
         for b in (a + 1)..parts.len() {
             let (pa, pb) = (&parts[a], &parts[b]);
             match (pa.region, pb.region) {
-                (Region::Frustum, Region::Frustum) => {
-                    if same(pa.far, pb.near) && pa.near < pb.near {
-                        let z = pb.near;
-                        let c = view.with_depth_range(z, z + view.far())?.corners();
-                        out.push(jump(a, b, &c[..4])?);
-                    }
+                (Region::Frustum, Region::Frustum)
+                    if same(pa.far, pb.near) && pa.near < pb.near =>
+                {
+                    let z = pb.near;
+                    let c = view.with_depth_range(z, z + view.far())?.corners();
+                    out.push(jump(a, b, &c[..4])?);
                 }
                 (Region::Face(fa), Region::Face(fb)) => {
                     let ea = fa.side_edges(view);

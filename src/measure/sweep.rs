@@ -42,9 +42,12 @@
 //! ```
 
 use crate::build::scheme::{scheme_into, Partition, SchemeResult};
+/// The jump of error across each seam between neighbouring partitions of a scheme (defined with
+/// the scheme, re-exported here beside the other measurements of partitions).
+pub use crate::build::scheme::{seams, Seam, Seams};
+use crate::build::WarpRule;
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::ViewFrustum;
-use crate::build::WarpRule;
 use glam::{DMat4, DVec3, DVec4};
 
 /// M_x and M_z of one matrix over a set of points (unit resolutions), from [`vertex_max`].
@@ -102,7 +105,8 @@ pub fn vertex_max(
     for &p in points {
         let h = *matrix * DVec4::new(p.x, p.y, p.z, 1.0);
         let z = -p.z;
-        if !(h.w > 0.0) || !(z > 0.0) {
+        // `w > 0` and `z > 0`, NaN refused.
+        if h.w.is_nan() || h.w <= 0.0 || z.is_nan() || z <= 0.0 {
             return None;
         }
         let gs = h.w * r0 - h.x * r3;
@@ -294,11 +298,7 @@ pub fn sweep_into(
     if out.len() != grid.len() {
         return Err(Error::invalid(
             "out",
-            format!(
-                "must hold {} values (got {})",
-                grid.len(),
-                out.len()
-            ),
+            format!("must hold {} values (got {})", grid.len(), out.len()),
         ));
     }
     // Validate the scheme once, at the zenith, so argument errors are reported as such.
