@@ -352,3 +352,164 @@ fn face_seams() {
         }
     }
 }
+
+/// S̄ of a uniform map fitted to the far face, measured over the whole frustum with the ground
+/// truth (each light ray crosses the far face and the near plane, so every corner is covered).
+fn far_face_storage(view: &ViewFrustum, l: DVec3) -> f64 {
+    use shadow_aliasing::build::{fit_warp, light_space};
+    use shadow_aliasing::NPrime;
+    let ls = light_space(l, DVec3::Y).unwrap();
+    let far = Face::Far.vertices(view, view.near(), view.far());
+    let mut pts = far.to_vec();
+    for v in far {
+        pts.push(v + 3.0 * view.far() * l);
+        pts.push(v - 3.0 * view.far() * l);
+    }
+    let m = fit_warp(&pts, &ls, NPrime::Unwarped).unwrap();
+    let sm = ShadowMap::new(m, l).unwrap();
+    let (mut mx, mut mz) = (0.0f64, 0.0f64);
+    for c in view.corners() {
+        let e = point_error(view, &sm, c, Resolutions::default()).unwrap();
+        mx = mx.max(e.mx);
+        mz = mz.max(e.mz);
+    }
+    mx * mz
+}
+
+/// Errata (docs/errata.md, Lloyd 2006 §5.1 and Lloyd 2005 §4.1): which faces. With y toward the
+/// light, v·y < 0 is the light travelling along the view; the front faces (four sides and the
+/// near face) give Eq 21; reading y as the direction light travels swaps the choice to the back
+/// faces, the far face alone, whose uniform map has S̄ = (f/n)². Lloyd 2005's "4 sides and the
+/// near (or far) plane" likewise: the far plane is never the right face, from the front the back
+/// faces (sides and near) give the same S̄ as from behind.
+#[test]
+fn errata_face_choice_never_the_far_face() {
+    let view = ViewFrustum::new(1.0, 1000.0, std::f64::consts::FRAC_PI_4).unwrap();
+    let eq21 = 4.0 * 999.0 / 2.0 + 1.0;
+    for l in [DVec3::NEG_Z, DVec3::Z] {
+        let crate_choice = face_partitions(&view, l, FaceWarp::Lispsm, 1)
+            .unwrap()
+            .storage_factor();
+        assert!((crate_choice - eq21).abs() < 1e-9 * eq21, "{crate_choice}");
+        let far = far_face_storage(&view, l);
+        assert!((far - 1e6).abs() < 1e-6 * 1e6, "far face {far}");
+    }
+}
+
+/// Σ S̄ of face partitions (k = 1, LiSPSM n′ per face) with each side face's warp axis either the
+/// angle bisector ê′₀ + ê′₁ (the crate) or the printed e′₀ + e′₁ of the projected far-corner
+/// vectors. `None` when the axis leaves a face vertex at or behind the projected eye (d_n ≤ 0), so
+/// that no warp centred on the eye can be fitted.
+fn faces_with_axis(view: &ViewFrustum, l: DVec3, unit: bool) -> Option<f64> {
+    use shadow_aliasing::build::{fit_warp, light_space};
+    use shadow_aliasing::measure::sweep::vertex_max;
+    use shadow_aliasing::NPrime;
+    let t = view.tan_half_fov();
+    let mut total = 0.0;
+    for &f in visible_faces(view, l).unwrap().faces() {
+        let v = f.vertices(view, view.near(), view.far());
+        let Some(_) = f.side_edges(view) else {
+            let parts = face_partitions(view, l, FaceWarp::Lispsm, 1).unwrap();
+            total += parts
+                .iter()
+                .find(|p| p.face == Face::Near)
+                .unwrap()
+                .storage_factor();
+            continue;
+        };
+        // The vectors from the viewpoint through the side edges, to the far plane.
+        let (e0, e1) = (v[3], v[2]);
+        let p0 = e0 - e0.dot(l) * l;
+        let p1 = e1 - e1.dot(l) * l;
+        let axis = if unit {
+            p0.normalize() + p1.normalize()
+        } else {
+            p0 + p1
+        };
+        let ls = light_space(l, axis).unwrap();
+        let (mut dn, mut df) = (f64::INFINITY, f64::NEG_INFINITY);
+        for q in v {
+            dn = dn.min(ls.z.dot(q));
+            df = df.max(ls.z.dot(q));
+        }
+        if dn <= 0.0 {
+            return None;
+        }
+        let mut pts = v.to_vec();
+        for q in v {
+            pts.push(q + 3.0 * view.far() * l);
+            pts.push(q - 3.0 * view.far() * l);
+        }
+        let m = fit_warp(&pts, &ls, NPrime::Finite(dn + (dn * df).sqrt())).unwrap();
+        total += vertex_max(&m, l, t, &v).unwrap().storage_factor();
+    }
+    Some(total)
+}
+
+/// Errata (docs/errata.md, Lloyd 2006 §5.1): "the bisector of the projected edge vectors
+/// e′₀ + e′₁". The projected edges differ in length once the light is tilted sideways, and their
+/// sum is then not the bisector: at f/n = 100, θ = 30°, light at elevation 15°, azimuth 165°
+/// the sum gives Σ S̄ = 2359.6 and the unit-vector bisector 287.05; at elevation 3°, azimuth 25°
+/// the sum leaves a vertex of a face behind the projected eye and no warp fits at all. The crate's
+/// `face_partitions` uses ê′₀ + ê′₁ and is the unit-vector value.
+#[test]
+fn errata_s5_1_bisector_of_unit_vectors() {
+    use shadow_aliasing::measure::sweep::light_dir_from_angles;
+    let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
+    let l = light_dir_from_angles(15f64.to_radians(), 165f64.to_radians());
+    let unit = faces_with_axis(&view, l, true).unwrap();
+    let raw = faces_with_axis(&view, l, false).unwrap();
+    let built = face_partitions(&view, l, FaceWarp::Lispsm, 1)
+        .unwrap()
+        .storage_factor();
+    assert!((unit - built).abs() < 1e-9 * built);
+    assert!((unit - 287.05).abs() < 1e-2, "{unit}");
+    assert!((raw - 2359.6).abs() < 0.1, "{raw}");
+    let l = light_dir_from_angles(3f64.to_radians(), 25f64.to_radians());
+    assert!(faces_with_axis(&view, l, false).is_none());
+    assert!(faces_with_axis(&view, l, true).is_some());
+}
+
+/// Errata (docs/errata.md, Lloyd 2006 §5.1, item 13): the face's n′. From behind at θ = 30°,
+/// f/n = 1000, warping each side face with the view frustum's own n′ = n + √(f n) = 32.62 instead
+/// of the face's d_n + √(d_n d_f) = tan θ (n + √(f n)) = 18.83 puts it above the face's minimal
+/// range: by Eq 12 for the face (an overhead frustum with half field of view 45°, near n tan θ,
+/// far f tan θ) each face then costs 499.5 · n′² d_f/(d_n (n′ + d_f − d_n)²) = 1431.5 instead of
+/// 499.5, Σ S̄ = 5727 instead of 1999.
+#[test]
+fn errata_s5_1_face_n_prime_is_the_faces_own() {
+    use shadow_aliasing::build::{fit_warp, light_space};
+    use shadow_aliasing::measure::sweep::vertex_max;
+    use shadow_aliasing::NPrime;
+    let (n, f, th) = (1.0f64, 1000.0f64, 30f64.to_radians());
+    let view = ViewFrustum::new(n, f, th).unwrap();
+    let l = DVec3::NEG_Z;
+    let t = th.tan();
+    let (dn, df) = (n * t, f * t);
+    let n_view = n + (f * n).sqrt();
+    let per_face = (f / n - 1.0) / 2.0 * n_view * n_view * df / (dn * (n_view + df - dn).powi(2));
+    assert!((per_face - 1431.5).abs() < 0.1, "{per_face}");
+    let mut total = 1.0; // the near face
+    for face in [Face::Bottom, Face::Right, Face::Top, Face::Left] {
+        let v = face.vertices(&view, n, f);
+        let ls = light_space(l, face_axis(&view, face, l).unwrap()).unwrap();
+        let mut pts = v.to_vec();
+        for q in v {
+            pts.push(q + 3.0 * f * l);
+            pts.push(q - 3.0 * f * l);
+        }
+        let m = fit_warp(&pts, &ls, NPrime::Finite(n_view)).unwrap();
+        let e = vertex_max(&m, l, t, &v).unwrap().storage_factor();
+        assert!(
+            (e - per_face).abs() < 1e-9 * per_face,
+            "{face:?}: {e} vs {per_face}"
+        );
+        total += e;
+    }
+    assert!((total - (4.0 * per_face + 1.0)).abs() < 1e-6 * total);
+    assert!((total - 5727.0).abs() < 1.0, "{total}");
+    let crate_choice = face_partitions(&view, l, FaceWarp::Lispsm, 1)
+        .unwrap()
+        .storage_factor();
+    assert!((crate_choice - 1999.0).abs() < 1e-9 * 1999.0);
+}
