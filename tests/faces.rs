@@ -70,7 +70,7 @@ fn ray_hits_face(view: &ViewFrustum, face: Face, p: DVec3, l: DVec3) -> Option<D
 }
 
 proptest! {
-    #![proptest_config(config(192))]
+    #![proptest_config(config(1024))]
 
     /// Every face partition maps its face part's vertices, swept along the light through the
     /// frustum, into the clip volume; the partitions cover the frustum: a random point inside it
