@@ -27,10 +27,6 @@ const RULES: [WarpRule; 11] = [
     WarpRule::Minimax,
 ];
 
-fn config() -> ProptestConfig {
-    config_cases(256)
-}
-
 fn config_cases(cases: u32) -> ProptestConfig {
     ProptestConfig {
         cases,
