@@ -336,3 +336,39 @@ fn invalid_options() {
     .unwrap_err();
     assert!(e.to_string().starts_with("map_lines "), "{e}");
 }
+
+/// Martin & Tan's rule near the dueling-frusta configuration: 0.1° from straight behind the 80 %
+/// trapezoid has 3.98 times the storage factor of the bounding rectangle that §6.1's special
+/// case uses on the axis (n = 1, f = 100, θ = 30°, focus 20): the switch is a jump, and the rule
+/// is worse than no warping there (docs/errata.md, Martin & Tan).
+#[test]
+fn tsm_80_percent_rule_jumps_at_the_square_fallback() {
+    let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
+    let opts = TsmOptions {
+        focus: 20.0,
+        search: TsmSearch::EightyPercent,
+    };
+    let sbar = |deg: f64| {
+        let e = deg.to_radians();
+        let t = tsm(&view, DVec3::new(0.0, -e.sin(), -e.cos()), opts).unwrap();
+        frustum_max(&view, &t.shadow.shadow_map())
+            .unwrap()
+            .storage_factor
+    };
+    let on_axis = sbar(0.0);
+    let inside_tolerance = sbar(0.05);
+    let off = sbar(0.1);
+    assert!((on_axis - 1e4).abs() < 1e-6);
+    assert!((inside_tolerance / on_axis - 1.0).abs() < 1e-6);
+    assert!((off / on_axis - 3.9824).abs() < 1e-3, "{}", off / on_axis);
+    // The uniform map 0.1° off the axis is the rectangle: TSM loses 3.98× to it.
+    let e = 0.1f64.to_radians();
+    let u = warp(
+        &view,
+        DVec3::new(0.0, -e.sin(), -e.cos()),
+        WarpRule::Uniform,
+    )
+    .unwrap();
+    let su = frustum_max(&view, &u.shadow_map()).unwrap().storage_factor;
+    assert!((off / su - 3.9824).abs() < 1e-3);
+}
