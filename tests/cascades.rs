@@ -480,3 +480,43 @@ fn stable_cascade_loss_by_hand() {
     let stable = (r_map / t).powi(2);
     assert!((s.storage_loss() - stable / tight).abs() < 1e-9 * stable / tight);
 }
+
+/// Both clip-depth conventions: [0, 1] depth is (z + w)/2 of the OpenGL one, x, y, w unchanged;
+/// the single-precision matrix agrees to f32 rounding.
+#[test]
+fn clip_depth_conventions() {
+    use shadow_aliasing::build::ClipDepth;
+    let view = ViewFrustum::new(0.5, 80.0, 0.7).unwrap();
+    let r = scheme(
+        &view,
+        DVec3::new(0.4, -0.7, -0.3),
+        WarpRule::Lispsm,
+        Partition::Faces,
+        2,
+    )
+    .unwrap();
+    for p in r.partitions() {
+        let gl = p.matrix_with_clip_depth(ClipDepth::NegOneToOne);
+        let zo = p.matrix_with_clip_depth(ClipDepth::ZeroToOne);
+        assert_eq!(gl, p.matrix);
+        let f32m = p.to_mat4(ClipDepth::ZeroToOne);
+        let pts: Vec<DVec3> = match p.region {
+            Region::Frustum => view
+                .with_depth_range(p.near, p.far)
+                .unwrap()
+                .corners()
+                .to_vec(),
+            Region::Face(f) => f.vertices(&view, p.near, p.far).to_vec(),
+        };
+        for q in pts {
+            let a = gl * DVec4::new(q.x, q.y, q.z, 1.0);
+            let b = zo * DVec4::new(q.x, q.y, q.z, 1.0);
+            assert!((b.z - 0.5 * (a.z + a.w)).abs() < 1e-12 * a.w.abs().max(1.0));
+            assert_eq!((a.x, a.y, a.w), (b.x, b.y, b.w));
+            let d = b.z / b.w;
+            assert!((-1e-9..=1.0 + 1e-9).contains(&d), "depth {d}");
+            let c = f32m * glam::Vec4::new(q.x as f32, q.y as f32, q.z as f32, 1.0);
+            assert!(((c.z / c.w) as f64 - d).abs() < 1e-4);
+        }
+    }
+}

@@ -41,7 +41,7 @@ use crate::build::{warp, ClipDepth, WarpRule};
 use crate::error::{Error, Result};
 use crate::frustum::{unit_light_dir, LightAngle, NPrime, ViewFrustum};
 use crate::measure::sweep::vertex_max;
-use glam::{DMat4, DVec3};
+use glam::{DMat4, DVec3, Mat4};
 
 /// Barroso & Celes' far-partition ratio α for [`Partition::Adaptive`]: 2, the value of their
 /// Fig 9 ("the proposed adaptive scheme with α = 2").
@@ -125,6 +125,12 @@ impl PartitionResult {
                 t.transpose()
             }
         }
+    }
+
+    /// The matrix in single precision for the GPU, in the requested clip-depth convention.
+    #[must_use]
+    pub fn to_mat4(&self, depth: ClipDepth) -> Mat4 {
+        self.matrix_with_clip_depth(depth).as_mat4()
     }
 }
 
