@@ -513,3 +513,33 @@ fn errata_s5_1_face_n_prime_is_the_faces_own() {
         .storage_factor();
     assert!((crate_choice - 1999.0).abs() < 1e-9 * 1999.0);
 }
+
+/// A light along a side edge of the frustum (from behind, along the ray through the +x+y corner):
+/// the two faces sharing that edge are edge-on and skipped, the others cover the frustum.
+#[test]
+fn light_along_a_side_edge() {
+    let view = ViewFrustum::new(0.5, 50.0, 0.6).unwrap();
+    let t = view.tan_half_fov();
+    let l = DVec3::new(t, t, -1.0).normalize();
+    let vis = visible_faces(&view, l).unwrap();
+    assert_eq!(vis.faces(), &[Face::Bottom, Face::Left, Face::Near]);
+    let parts = face_partitions(&view, l, FaceWarp::Lispsm, 3).unwrap();
+    assert_eq!(parts.len(), 2 * 3 + 1);
+    for (i, (a, b, c)) in [
+        (0.1, 0.9, 0.95),
+        (0.5, -0.3, 0.2),
+        (0.99, 0.99, 0.99),
+        (0.0, -0.9, 0.9),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let z: f64 = 0.5 * 100f64.powf(a);
+        let p = DVec3::new(b * z * t, c * z * t, -z);
+        let inside = parts.iter().any(|part| {
+            clip(&part.shadow.matrix, p).is_some_and(|q| q.abs().max_element() <= 1.0 + 1e-9)
+        });
+        assert!(inside, "point {i} {p}");
+    }
+    assert!(parts.storage_factor().is_finite());
+}
