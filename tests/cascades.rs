@@ -520,3 +520,46 @@ fn clip_depth_conventions() {
         }
     }
 }
+
+proptest! {
+    #![proptest_config(config_cases(128))]
+
+    /// Any split planes (uniform, practical, Unreal's exponent), light overhead: the measured S̄ of
+    /// the cascades is Eq 12 summed over the partitions (`analytic::partition::splits_storage_factor`),
+    /// uniform maps and maps warped with n′ ≤ n′_LSPSM of each partition; light behind, (f_i/n_i)²
+    /// summed (Eq 20 per partition). And the scheme layer against Lloyd 2006 Eq 17–21 as the
+    /// analytic module states them (`scheme_storage_factor`).
+    #[test]
+    fn measured_schemes_equal_the_closed_forms(
+        n in 0.05f64..5.0,
+        lr in (2f64).ln()..(1e4f64).ln(),
+        th in 10f64.to_radians()..70f64.to_radians(),
+        k in 1usize..=6,
+        sch in split_scheme(),
+    ) {
+        use shadow_aliasing::analytic::partition::{
+            scheme_storage_factor, splits_storage_factor, Scheme, SchemeLight,
+        };
+        let view = ViewFrustum::new(n, n * lr.exp(), th).unwrap();
+        let splits = match z_splits(view.near(), view.far(), k, sch) {
+            Ok(s) => s,
+            Err(_) => return Ok(()),
+        };
+        for (light, l) in [(SchemeLight::Overhead, DVec3::NEG_Y), (SchemeLight::Behind, DVec3::NEG_Z)] {
+            for (rule, warped) in [(WarpRule::Uniform, false), (WarpRule::LispsmSin, true)] {
+                let got = cascades(&view, l, &splits, rule, 0.0).unwrap().storage_factor();
+                let want = splits_storage_factor(&splits, th, light, warped).unwrap();
+                prop_assert!((got - want).abs() <= 1e-9 * want, "{light:?} {rule:?}: {got} vs {want}");
+            }
+            for (scheme_, rule, partition) in [
+                (Scheme::Zp, WarpRule::Uniform, Partition::Log),
+                (Scheme::ZpW, WarpRule::LispsmSin, Partition::Log),
+                (Scheme::FpZpW, WarpRule::Lispsm, Partition::Faces),
+            ] {
+                let got = scheme(&view, l, rule, partition, k).unwrap().storage_factor();
+                let want = scheme_storage_factor(scheme_, light, &view, k).unwrap();
+                prop_assert!((got - want).abs() <= 1e-9 * want, "{scheme_:?} {light:?}: {got} vs {want}");
+            }
+        }
+    }
+}
