@@ -160,3 +160,127 @@ fn parallel_equals_serial() {
     let all = sweep(&view, WarpRule::Lispsm, Partition::Log, 3, grid).unwrap();
     assert_eq!(one, all);
 }
+
+mod no_alloc {
+    //! A counting allocator, per thread (tests run in parallel threads), around the calls.
+    #![allow(unsafe_code)]
+    use std::alloc::{GlobalAlloc, Layout, System};
+    use std::cell::Cell;
+
+    thread_local! {
+        static COUNT: Cell<usize> = const { Cell::new(0) };
+    }
+
+    pub struct Counting;
+
+    // SAFETY: forwards to the system allocator; only counts.
+    unsafe impl GlobalAlloc for Counting {
+        unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+            let _ = COUNT.try_with(|c| c.set(c.get() + 1));
+            // SAFETY: same contract as the caller's.
+            unsafe { System.alloc(layout) }
+        }
+        unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+            // SAFETY: same contract as the caller's.
+            unsafe { System.dealloc(ptr, layout) }
+        }
+    }
+
+    #[global_allocator]
+    static GLOBAL: Counting = Counting;
+
+    pub fn allocations<T>(f: impl FnOnce() -> T) -> (T, usize) {
+        let before = COUNT.with(Cell::get);
+        let out = f();
+        (out, COUNT.with(Cell::get) - before)
+    }
+}
+
+/// The per-frame partition builders allocate nothing: schemes of every partitioning (into a
+/// reused result), cascades, face partitions, stable cascades, the atlas and the seams; and the
+/// serial sweep allocates nothing per direction (nothing at all into a caller's buffer).
+#[test]
+fn per_frame_partition_builders_do_not_allocate() {
+    use glam::DMat4;
+    use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
+    use shadow_aliasing::build::atlas::{layout, AtlasEntry};
+    use shadow_aliasing::build::cascades::{cascades, stable_cascade};
+    use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
+    use shadow_aliasing::build::scheme::{scheme_into, seams, SchemeResult};
+    let view = ViewFrustum::new(0.3, 500.0, 0.7).unwrap();
+    let l = DVec3::new(0.3, -0.8, -0.4);
+    let mut out = SchemeResult::default();
+    // Warm up anything lazily initialised.
+    scheme_into(&view, l, WarpRule::Minimax, Partition::Faces, 3, &mut out).unwrap();
+    for partition in [
+        Partition::Single,
+        Partition::Uniform,
+        Partition::Log,
+        Partition::Practical(0.6),
+        Partition::Adaptive,
+        Partition::Faces,
+    ] {
+        for rule in [
+            WarpRule::Lispsm,
+            WarpRule::LispsmSin,
+            WarpRule::Minimax,
+            WarpRule::Uniform,
+        ] {
+            let (r, n) =
+                no_alloc::allocations(|| scheme_into(&view, l, rule, partition, 4, &mut out));
+            assert!(r.is_ok());
+            assert_eq!(n, 0, "{partition:?} {rule:?} allocated {n} times");
+            let (s, n) = no_alloc::allocations(|| seams(&view, &out));
+            assert!(s.is_ok());
+            assert_eq!(n, 0, "seams of {partition:?} allocated");
+        }
+    }
+    let splits = z_splits(0.3, 500.0, 4, SplitScheme::SelfSimilar).unwrap();
+    let (c, n) = no_alloc::allocations(|| cascades(&view, l, &splits, WarpRule::Lispsm, 0.1));
+    assert!(c.is_ok());
+    assert_eq!(n, 0);
+    let (f, n) = no_alloc::allocations(|| face_partitions(&view, l, FaceWarp::Lispsm, 4));
+    assert!(f.is_ok());
+    assert_eq!(n, 0);
+    let (s, n) =
+        no_alloc::allocations(|| stable_cascade(&view, DMat4::IDENTITY, l, 0.3, 5.0, 2048));
+    assert!(s.is_ok());
+    assert_eq!(n, 0);
+    let entries = [
+        AtlasEntry {
+            group: 0,
+            max_mx: 1.0,
+            max_mz: 2.0,
+        },
+        AtlasEntry {
+            group: 1,
+            max_mx: 3.0,
+            max_mz: 2.0,
+        },
+        AtlasEntry {
+            group: 1,
+            max_mx: 2.0,
+            max_mz: 1.0,
+        },
+    ];
+    let (a, n) = no_alloc::allocations(|| layout(4096, 2048, &entries));
+    assert!(a.is_ok());
+    assert_eq!(n, 0);
+    #[cfg(not(feature = "parallel"))]
+    {
+        let grid = SweepGrid::new(6, 10).unwrap();
+        let mut buf = vec![0.0; grid.len()];
+        let (r, n) = no_alloc::allocations(|| {
+            sweep_into(
+                &view,
+                WarpRule::LispsmSin,
+                Partition::Log,
+                3,
+                grid,
+                &mut buf,
+            )
+        });
+        assert!(r.is_ok());
+        assert_eq!(n, 0, "the serial sweep allocated {n} times");
+    }
+}
