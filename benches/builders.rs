@@ -1,6 +1,7 @@
 //! The per-frame builders (`builders/NAME`): what a renderer calls every frame for every shadowed
 //! light. TSM's focus region is the first 30 % of the depth range, its iterative search over a
-//! 1024-line map. Configuration: n = 1, f = 1000, half field of view 30°, square image, a light tilted
+//! 1024-line map; the cascades are four self-similar z-partitions; the face partitions are
+//! unsubdivided (k = 1), and the atlas packs them. Configuration: n = 1, f = 1000, half field of view 30°, square image, a light tilted
 //! 53° from the view direction and off the view's vertical plane, `(0.3, −0.8, −0.4)`.
 //!
 //! ```text
@@ -9,6 +10,10 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use glam::DVec3;
+use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
+use shadow_aliasing::build::atlas::{layout, AtlasEntry};
+use shadow_aliasing::build::cascades::cascades;
+use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
 use shadow_aliasing::build::{tsm, warp, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::ViewFrustum;
 use std::hint::black_box as bb;
@@ -44,6 +49,40 @@ fn builders(c: &mut Criterion) {
             search: TsmSearch::Iterative { map_lines: 1024 },
         };
         b.iter(|| tsm(bb(&view), bb(light), bb(opts)))
+    });
+    // Four self-similar z-partitions (Lloyd 2006 Eq 15, 16), each with its own LiSPSM map and its
+    // measured M_x, M_z: the splits are computed in the timed call, as a renderer whose near and
+    // far change each frame does.
+    g.bench_function("cascades4_lispsm", |b| {
+        b.iter(|| {
+            let splits = z_splits(bb(1.0), bb(1000.0), bb(4), SplitScheme::SelfSimilar)?;
+            cascades(bb(&view), bb(light), &splits, bb(WarpRule::Lispsm), bb(0.0))
+        })
+    });
+    // Face partitions (Lloyd 2006 §5.1), one map per visible face, warped (n′ = d_n + √(d_n d_f)).
+    g.bench_function("faces", |b| {
+        b.iter(|| face_partitions(bb(&view), bb(light), bb(FaceWarp::Lispsm), bb(1)))
+    });
+    // The atlas layout of those face partitions in a 4096² texture (Lloyd 2005 Eq 6, x then z),
+    // two partitions per column.
+    let faces = face_partitions(&view, light, FaceWarp::Lispsm, 1).unwrap();
+    let mut entries = [AtlasEntry {
+        group: 0,
+        max_mx: 1.0,
+        max_mz: 1.0,
+    }; 8];
+    let mut n = 0;
+    for p in faces.iter() {
+        entries[n] = AtlasEntry {
+            group: n / 2,
+            max_mx: p.error.max_mx,
+            max_mz: p.error.max_mz,
+        };
+        n += 1;
+    }
+    let entries = &entries[..n];
+    g.bench_function("atlas", |b| {
+        b.iter(|| layout(bb(4096), bb(4096), bb(entries)))
     });
     g.finish();
 }

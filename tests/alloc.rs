@@ -11,6 +11,10 @@
 #![allow(unsafe_code)]
 
 use glam::DVec3;
+use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
+use shadow_aliasing::build::atlas::{layout, AtlasEntry};
+use shadow_aliasing::build::cascades::cascades;
+use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
 use shadow_aliasing::build::minimax::minimax_n_prime;
 use shadow_aliasing::build::{tsm, warp, ShadowMatrix, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::measure::frustum_max;
@@ -167,4 +171,50 @@ fn tsm_builder_does_not_allocate() {
             black_box(tsm(v, l, opts).unwrap());
         });
     }
+}
+
+#[test]
+fn cascades_do_not_allocate() {
+    for rule in [WarpRule::Lispsm, WarpRule::Uniform, WarpRule::Minimax] {
+        assert_no_allocation("cascades", |v, l| {
+            let splits = z_splits(v.near(), v.far(), 4, SplitScheme::SelfSimilar).unwrap();
+            black_box(cascades(v, l, &splits, rule, 0.1).unwrap());
+        });
+    }
+}
+
+#[test]
+fn face_partitions_do_not_allocate() {
+    for (warp, k) in [
+        (FaceWarp::Lispsm, 1),
+        (FaceWarp::Lispsm, 3),
+        (FaceWarp::Uniform, 2),
+    ] {
+        assert_no_allocation("face_partitions", |v, l| {
+            black_box(face_partitions(v, l, warp, k).unwrap());
+        });
+    }
+}
+
+#[test]
+fn atlas_layout_does_not_allocate() {
+    assert_no_allocation("face partitions + atlas layout", |v, l| {
+        let faces = face_partitions(v, l, FaceWarp::Lispsm, 2).unwrap();
+        let mut entries = [AtlasEntry {
+            group: 0,
+            max_mx: 1.0,
+            max_mz: 1.0,
+        }; 16];
+        let mut n = 0;
+        for p in faces.iter() {
+            entries[n] = AtlasEntry {
+                group: n / 2,
+                max_mx: p.error.max_mx,
+                max_mz: p.error.max_mz,
+            };
+            n += 1;
+        }
+        let atlas = layout(4096, 4096, &entries[..n]).unwrap();
+        black_box(atlas.compose(0, &faces.iter().next().unwrap().shadow.matrix));
+    });
 }
