@@ -23,7 +23,9 @@ Usage:
     python3 benches/reference/sweep_numpy.py --csv 90 360    # print the CSV the CLI prints
 
 Timing: median of repeated runs of the whole vectorised sweep (directions to S̄), in-process,
-after one warm-up run, single process (NumPy's element-wise operations use one core).
+after one warm-up run, single process (NumPy's element-wise operations use one core). The
+directions are processed in blocks of --chunk (4096 by default) so that the (chunk, 8)
+temporaries stay in cache: on this machine that is 1.5–2× faster at 360 × 1440 than one block.
 """
 import argparse
 import sys
@@ -150,18 +152,19 @@ def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--csv", nargs=2, type=int, metavar=("ELEVATIONS", "AZIMUTHS"))
     p.add_argument("--repeats", type=int, default=21)
+    p.add_argument("--chunk", type=int, default=4096, help="directions per vectorised block")
     args = p.parse_args()
     if args.csv:
         el, az = grid(*args.csv)
-        s = sweep(el, az)
+        s = sweep_chunked(el, az, args.chunk)
         out = sys.stdout
         out.write("elevation,azimuth,storage_factor\n")
         for e, a, v in zip(el, az, s):
             out.write(f"{float(e)!r},{float(a)!r},{float(v)!r}\n")
         return
-    print(f"numpy {np.__version__}, f/n = {FAR / NEAR:g}, half fov 30°, lispsm-sin")
+    print(f"numpy {np.__version__}, f/n = {FAR / NEAR:g}, half fov 30°, lispsm-sin, chunk {args.chunk}")
     for e, a, r in [(90, 360, args.repeats), (360, 1440, max(3, args.repeats // 4))]:
-        med, best = time_it(e, a, r)
+        med, best = time_it(e, a, r, args.chunk)
         print(f"{e} x {a}: median {med * 1e3:.2f} ms, best {best * 1e3:.2f} ms ({r} runs)")
 
 
