@@ -635,7 +635,7 @@ proptest! {
     fn any_input_never_nan(
         log_near in -300.0f64..300.0,
         log_ratio in 1e-9f64..600.0,
-        fov in 1e-6f64..1.5707963,
+        fov in 1e-6f64..std::f64::consts::FRAC_PI_2,
         log_aspect in -6.0f64..6.0,
         lx in prop_oneof![Just(0.0), Just(f64::NAN), -1e3f64..1e3, Just(1e-300), Just(1e300)],
         ly in prop_oneof![Just(0.0), -1e3f64..1e3, Just(-1e-300), Just(-1e300)],
