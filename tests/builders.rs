@@ -665,3 +665,73 @@ proptest! {
         }
     }
 }
+
+/// The condition number of a 4 × 4 matrix (ratio of extreme singular values).
+fn cond(m: &DMat4) -> f64 {
+    let n = nalgebra::Matrix4::from_column_slice(&m.to_cols_array());
+    let sv = n.singular_values();
+    sv.max() / sv.min()
+}
+
+/// Through parallel (light from behind, tilted up by t in the eye's vertical plane): the rules
+/// that tend to the uniform map give matrices converging entry by entry to the uniform map's on
+/// the axis, with the same condition number: no blow-up, no ill-conditioning.
+#[test]
+fn matrices_converge_and_stay_conditioned_through_parallel() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let on_axis = warp(&view, DVec3::NEG_Z, WarpRule::Uniform).unwrap().matrix;
+    let c0 = cond(&on_axis);
+    assert!(c0.is_finite() && c0 < 1e6, "{c0}");
+    for rule in [
+        WarpRule::LispsmSin,
+        WarpRule::LispsmReference,
+        WarpRule::Barroso(Falloff::Barroso),
+        WarpRule::Barroso(Falloff::Zhang),
+        WarpRule::Uniform,
+    ] {
+        let mut prev = f64::INFINITY;
+        for t in [1e-3, 1e-5, 1e-7, 1e-9, 1e-11] {
+            let m = warp(&view, DVec3::new(0.0, -t, -1.0), rule).unwrap().matrix;
+            let diff = (m - on_axis)
+                .to_cols_array()
+                .iter()
+                .fold(0.0f64, |a, d| a.max(d.abs()));
+            let scale = on_axis
+                .to_cols_array()
+                .iter()
+                .fold(0.0f64, |a, d| a.max(d.abs()));
+            assert!(
+                diff <= prev * 1.0001 + 1e-12,
+                "{rule:?} t = {t}: {diff} after {prev}"
+            );
+            prev = diff;
+            let c = cond(&m);
+            assert!(
+                c <= 2.0 * c0 && c >= 0.5 * c0,
+                "{rule:?} t = {t}: cond {c} vs {c0}"
+            );
+            if t <= 1e-9 {
+                assert!(diff <= 1e-6 * scale, "{rule:?} t = {t}: {diff}");
+            }
+        }
+    }
+}
+
+/// η's ends (Lloyd 2006 Eq 11): η = −1 is the uniform map (n′ = ∞: M_x = f/n,
+/// M_z = (f − n)/(2 n tan θ) by hand), η = 1 is PSM (n′ = n: M_x = 1, S̄ = (f/n − 1)/(2 tan θ)).
+#[test]
+fn eta_ends_are_uniform_and_psm() {
+    let (n, f, th) = (2.0, 300.0, 0.6f64);
+    let view = ViewFrustum::new(n, f, th).unwrap();
+    let u = warp(&view, DVec3::NEG_Y, WarpRule::Eta(-1.0)).unwrap();
+    assert!(u.n_prime.is_unwarped());
+    let e = frustum_max(&view, &u.shadow_map()).unwrap();
+    assert!((e.max_mx - f / n).abs() <= 1e-12 * f / n);
+    assert!((e.max_mz - (f - n) / (2.0 * n * th.tan())).abs() <= 1e-12 * e.max_mz);
+    let p = warp(&view, DVec3::NEG_Y, WarpRule::Eta(1.0)).unwrap();
+    assert_eq!(p.n_prime, NPrime::Finite(n));
+    let e = frustum_max(&view, &p.shadow_map()).unwrap();
+    assert!((e.max_mx - 1.0).abs() <= 1e-12);
+    let sbar = (f / n - 1.0) / (2.0 * th.tan());
+    assert!((e.storage_factor - sbar).abs() <= 1e-12 * sbar);
+}
