@@ -144,7 +144,7 @@ impl FrustumInLight {
             depth,
             z0,
             delta: z1 - z0,
-            sin_gamma: l.x.hypot(l.y).min(1.0),
+            sin_gamma: (l.x * l.x + l.y * l.y).sqrt().min(1.0),
         })
     }
 }
@@ -361,9 +361,15 @@ pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4>
         }
     };
     let mut r = Ranges::new();
-    for q in &fl.q {
-        let w = 1.0 + rho * (q.z - fl.z0);
-        r.add(q.x / w, q.y / w);
+    if rho == 0.0 {
+        for q in &fl.q {
+            r.add(q.x, q.y);
+        }
+    } else {
+        for q in &fl.q {
+            let iw = 1.0 / (1.0 + rho * (q.z - fl.z0));
+            r.add(q.x * iw, q.y * iw);
+        }
     }
     let extent =
         fl.q.iter()
