@@ -69,7 +69,8 @@ pub enum WarpRule {
         /// Focus distance δ beyond the near plane, world units, `0 < focus ≤ f − n`.
         focus: f64,
     },
-    /// The LiSPSM reference code (Wimmer, `LispSM::calcNoptGeneral`):
+    /// The LiSPSM reference implementation (D. Scherzer, TU Vienna 2005, for Wimmer et al. 2004;
+    /// `LispSM<REAL>::calcNoptGeneral` with `getNearCameraPointE` and `getZ0_ls`):
     /// n′ = Δ/(√(z₁/z₀) − 1) with z₀ = n, z₁ = n + Δ sin γ the eye depths at the near and far ends
     /// of the warp axis, computed as Δ(√(1 + x) + 1)/x, x = Δ sin γ/n; n′ = ∞ at γ = 0.
     LispsmReference,
