@@ -47,7 +47,13 @@
 //! iteration, p_L is mapped to an entry one line before that of the last iteration … we adopt the
 //! trapezoid … that transforms the focus region to cover the largest area." With `map_lines` = x
 //! lines numbered from the top, line k is ξ_k = 1 − 2k/x; the search runs k from round(0.8 x) down
-//! to 1 and keeps the first trapezoid of largest focus area.
+//! to 1 ("one line before": towards the top) and keeps the first trapezoid of largest focus area,
+//! the area of the image of the focus region (the frustum truncated δ beyond the near plane) in the
+//! unit square. Lines above the focus point's unwarped line have no centre of projection beyond
+//! the top line (see `analytic::tsm::tsm_eta`) and give the bounding rectangle. The area is not
+//! unimodal in k (it can fall and rise again), so [`TsmSearch::IterativeExhaustive`] tries every
+//! line as printed, and [`TsmSearch::Iterative`] samples 33 lines, then refines between the best
+//! one's neighbours; tests check they agree.
 //!
 //! # The general case (§6.4)
 //!
