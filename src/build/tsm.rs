@@ -135,6 +135,9 @@ pub struct TsmMap {
     /// Light-space depth kept out of N_T (§4): `dot(light_depth, (p, 1))` ∈ [−1, 1] over the
     /// frustum, −1 nearest the light, for an eye-space point p.
     pub light_depth: DVec4,
+    /// The focus point p (eye space): `focus` beyond the near plane on the centre line (for
+    /// [`tsm_general`], beyond the pushed near plane on the line from the eye through I's centroid).
+    pub focus_point: DVec3,
     /// The line y = ξ the focus point maps to.
     pub xi: f64,
     /// Fraction of the map's area covered by the focus region.
@@ -563,6 +566,7 @@ impl Core<'_> {
             },
             n_t: h,
             light_depth,
+            focus_point: self.focus_point,
             xi: if eta.is_some() {
                 xi
             } else {
