@@ -53,7 +53,9 @@ pub enum WarpRule {
     /// Lloyd 2006 Eq 11: n′(η) = n(√α + 1 − η(α − 1))/(η + 1) for −1 ≤ η ≤ 0 (η = −1 is
     /// n′ = ∞) and n(√α + 1)/(η√α + 1) for 0 < η ≤ 1, α = f/n. η = 0 is LiSPSM, η = 1 PSM.
     Eta(f64),
-    /// PSM's n′ = n (Lloyd 2006 §4.1).
+    /// PSM's n′ = n (Lloyd 2006 §4.1). This is PSM exactly only with the light overhead; for
+    /// other directions a perspective shadow map is not a one-point perspective in light space
+    /// (Lloyd 2006 §4.4), and this rule is the light-space warp with PSM's parameter.
     Psm,
     /// LiSPSM's overhead optimum n′ = n + √(f n) (Wimmer et al. 2004; Lloyd 2006 §4.1), for every
     /// light direction.
