@@ -503,6 +503,31 @@ fn per_frame_builders_do_not_allocate() {
         assert!(t.is_ok());
         assert_eq!(n, 0, "TSM {search:?} allocated {n} times");
     }
+    {
+        use shadow_aliasing::build::tsm::{tsm_general, ConvexBound};
+        use shadow_aliasing::build::uniform::{with_casters, CasterDepth};
+        let bound = ConvexBound::from_aabb(
+            DVec3::new(-100.0, -5.0, -300.0),
+            DVec3::new(100.0, 50.0, 0.0),
+            DMat4::IDENTITY,
+        )
+        .unwrap();
+        let opts = TsmOptions {
+            focus: 50.0,
+            search: TsmSearch::Iterative { map_lines: 1024 },
+        };
+        let (t, n) = no_alloc::allocations(|| tsm_general(&view, l, &bound, opts));
+        assert!(t.is_ok());
+        assert_eq!(n, 0, "tsm_general allocated {n} times");
+        let casters = [DVec3::new(0.0, 80.0, -30.0), DVec3::new(10.0, 60.0, -90.0)];
+        for depth in [CasterDepth::Clamp, CasterDepth::Enclose] {
+            let (s, n) = no_alloc::allocations(|| {
+                with_casters(&view, l, WarpRule::Minimax, &casters, depth)
+            });
+            assert!(s.is_ok());
+            assert_eq!(n, 0, "with_casters {depth:?} allocated {n} times");
+        }
+    }
     // The counter counts: a Vec allocates.
     let (_, n) = no_alloc::allocations(|| vec![1u8; 16]);
     assert!(n >= 1);
