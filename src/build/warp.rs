@@ -30,21 +30,14 @@
 //! `p = {lsCameraPosition.x, n − nopt, 0}`) and OGRE (`LiSPSMShadowCameraSetup::calculateLiSPSM`)
 //! place it; TSM's q on the centre line l is the same point (see the trapezoidal builder).
 
-use crate::build::lightspace::{light_space, sin_to_axis, LightSpace};
+use crate::build::lightspace::{light_space, LightSpace};
 use crate::build::matrix::ShadowMatrix;
 use crate::build::minimax;
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{LightAngle, NPrime, ViewFrustum};
-use glam::{DMat4, DVec3, DVec4};
+use glam::{DMat4, DVec3};
 
-/// Barroso & Celes' fall-off r(γ) below γ_lim (their Eq 17 and 18).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Falloff {
-    /// r(γ) = [1 + sin((γ/γ_lim − 1) π/2)]², Barroso & Celes Eq 18 (their choice for LiSPSM).
-    Barroso,
-    /// r(γ) = sin(γ/γ_lim · π/2), Zhang et al.'s fall-off for PSM, Barroso & Celes Eq 17.
-    Zhang,
-}
+pub use crate::analytic::tilted::Falloff;
 
 /// How the warp parameter n′ is chosen. Each rule names its source; the engines' rules reproduce
 /// the shipped code's arithmetic for a frustum-only focus body (no scene bound), so that their
@@ -60,7 +53,9 @@ pub enum WarpRule {
     /// Lloyd 2006 Eq 11: n′(η) = n(√α + 1 − η(α − 1))/(η + 1) for −1 ≤ η ≤ 0 (η = −1 is
     /// n′ = ∞) and n(√α + 1)/(η√α + 1) for 0 < η ≤ 1, α = f/n. η = 0 is LiSPSM, η = 1 PSM.
     Eta(f64),
-    /// PSM's n′ = n (Lloyd 2006 §4.1).
+    /// PSM's n′ = n (Lloyd 2006 §4.1). This is PSM exactly only with the light overhead; for
+    /// other directions a perspective shadow map is not a one-point perspective in light space
+    /// (Lloyd 2006 §4.4), and this rule is the light-space warp with PSM's parameter.
     Psm,
     /// LiSPSM's overhead optimum n′ = n + √(f n) (Wimmer et al. 2004; Lloyd 2006 §4.1), for every
     /// light direction.
@@ -76,7 +71,8 @@ pub enum WarpRule {
         /// Focus distance δ beyond the near plane, world units, `0 < focus ≤ f − n`.
         focus: f64,
     },
-    /// The LiSPSM reference code (Wimmer, `LispSM::calcNoptGeneral`):
+    /// The LiSPSM reference implementation (D. Scherzer, TU Vienna 2005, for Wimmer et al. 2004;
+    /// `LispSM<REAL>::calcNoptGeneral` with `getNearCameraPointE` and `getZ0_ls`):
     /// n′ = Δ/(√(z₁/z₀) − 1) with z₀ = n, z₁ = n + Δ sin γ the eye depths at the near and far ends
     /// of the warp axis, computed as Δ(√(1 + x) + 1)/x, x = Δ sin γ/n; n′ = ∞ at γ = 0.
     LispsmReference,
@@ -97,19 +93,26 @@ pub enum WarpRule {
     /// else 1 (`getShadowCamera`'s ramp, `mCosCamLightDirThreshold = 0.9`). It does not tend to
     /// the uniform map as the light turns parallel (k ≤ 21).
     Ogre,
-    /// The crate's minimax: the n′ ∈ (0, ∞] that minimises the frustum's maximum z error M_z,
-    /// found exactly ([`crate::build::minimax`]). The default.
+    /// The crate's minimax, the default: the n′ ∈ (0, ∞] that minimises the storage factor
+    /// S̄ = M_x M_z of the fitted map, the product of the frustum's maximum errors, which is the
+    /// texel count a map needs for a given maximum error (Lloyd 2006 §4.2)
+    /// ([`crate::build::minimax::minimax_n_prime`]). n′ = ∞ is a candidate, so it is never worse
+    /// than [`WarpRule::Uniform`].
     #[default]
     Minimax,
-    /// The n′ ∈ (0, ∞] that minimises the storage factor S̄ = M_x M_z of this matrix
-    /// ([`crate::build::minimax::min_storage_n_prime`]).
-    MinStorage,
+    /// The n′ ∈ (0, ∞] that minimises the maximum z error M_z alone, found exactly
+    /// ([`crate::build::minimax::minimax_mz_n_prime`]). With the light overhead it is
+    /// n + √(f n); for grazing lights it can lose up to ≈ 19 % of S̄ against the uniform map,
+    /// which is why [`WarpRule::Minimax`] minimises S̄ instead.
+    MinimaxMz,
 }
 
 /// The view frustum's corners in light space with what the rules need: no allocation.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct FrustumInLight {
     pub ls: LightSpace,
+    /// The eight corners, eye space.
+    pub corners: [DVec3; 8],
     /// Light-space coordinates of the eight corners.
     pub q: [DVec3; 8],
     /// Eye depth −p.z of each corner.
@@ -135,13 +138,16 @@ impl FrustumInLight {
             z0 = z0.min(q[i].z);
             z1 = z1.max(q[i].z);
         }
+        // sin γ = |l × (0, 0, −1)| = √(l.x² + l.y²) for the unit light direction l: accurate near 0.
+        let l = ls.light_dir();
         Ok(Self {
             ls,
+            corners,
             q,
             depth,
             z0,
             delta: z1 - z0,
-            sin_gamma: sin_to_axis(light_dir, DVec3::NEG_Z),
+            sin_gamma: (l.x * l.x + l.y * l.y).sqrt().min(1.0),
         })
     }
 }
@@ -158,7 +164,9 @@ impl FrustumInLight {
 /// # Errors
 /// [`Error::InvalidArgument`] naming `points` when empty or not finite, `n_prime` when a
 /// [`NPrime::Finite`] value is not finite and positive; [`Error::Degenerate`] when the points have
-/// no extent along `ls.x` or `ls.z`.
+/// no extent along `ls.x` or `ls.z`, or when rounding would put a point outside the clip volume
+/// by more than 10⁻⁶ (depth ratios far beyond 10⁶ with a strong warp: the result is checked, never
+/// returned wrong).
 ///
 /// ```
 /// # use shadow_aliasing::build::{fit_warp, light_space};
@@ -210,7 +218,32 @@ pub fn fit_warp(points: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DM
         let w = 1.0 + rho * (q.z - z0);
         range.add(q.x / w, q.y / w);
     }
-    warp_matrix(ls, z0, delta, rho, &range, extent)
+    let m = warp_matrix(ls, z0, delta, rho, &range, extent)?;
+    verify_clip(&m, points.iter())?;
+    Ok(m)
+}
+
+/// Checks what the construction guarantees in exact arithmetic: every point has w ≥ 1 and clip
+/// coordinates in [−1, 1]. With rounding the extreme points land within about 10⁻⁹ of the faces
+/// for f/n up to 10⁶; a point at w < ½ or more than 10⁻⁶ outside the clip volume means the
+/// frustum's depth ratio is beyond what f64 can warp (for the LiSPSM warp the error of w at the far
+/// end is about √(f/n) · 10⁻¹⁶, for PSM's n′ = n about (f/n) · 10⁻¹⁶), and the matrix is refused.
+pub(crate) fn verify_clip<'a>(m: &DMat4, points: impl Iterator<Item = &'a DVec3>) -> Result<()> {
+    const SLACK: f64 = 1.0 + 1e-6;
+    for p in points {
+        let h = *m * p.extend(1.0);
+        let ok = h.w >= 0.5
+            && h.x.abs() <= SLACK * h.w
+            && h.y.abs() <= SLACK * h.w
+            && h.z.abs() <= SLACK * h.w;
+        if !ok {
+            return Err(Error::Degenerate(format!(
+                "the map cannot be represented in f64 for this frustum (a point maps to {h}): \
+                 reduce far/near or use z-partitions"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// Running min/max of u = x/w and v = y/w.
@@ -263,13 +296,14 @@ pub(crate) fn warp_matrix(
     let v_m = 0.5 * (r.v.1 + r.v.0);
     let a = 1.0 - rho * z0; // w = rho z + a
     let k = 2.0 / delta + rho;
-    let w_ls = DMat4::from_cols(
-        DVec4::new(1.0 / u_h, 0.0, 0.0, 0.0),
-        DVec4::new(0.0, 0.0, -1.0 / v_h, 0.0),
-        DVec4::new(-u_m * rho / u_h, k, v_m * rho / v_h, rho),
-        DVec4::new(-u_m * a / u_h, -1.0 - k * z0, v_m * a / v_h, a),
-    );
-    let m = w_ls * ls.rotation();
+    // Rows in light space, composed with the rotation (rows x, y, z of eye space) directly:
+    // row · (x·p, y·p, z·p, 1) = (row.x x + row.y y + row.z z) · p + row.w.
+    let (ex, ey, ez) = (ls.x, ls.y, ls.z);
+    let row0 = ((ex - u_m * rho * ez) / u_h).extend(-u_m * a / u_h);
+    let row1 = (k * ez).extend(-1.0 - k * z0);
+    let row2 = ((v_m * rho * ez - ey) / v_h).extend(v_m * a / v_h);
+    let row3 = (rho * ez).extend(a);
+    let m = DMat4::from_cols(row0, row1, row2, row3).transpose();
     if !m.is_finite() {
         return Err(Error::Degenerate(
             "the fitted warp is not finite for these points".into(),
@@ -285,7 +319,9 @@ pub(crate) fn warp_matrix(
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector, or the rule's
-/// parameter (`eta`, `focus`, `near_hint`, `far_hint`) outside its domain.
+/// parameter (`eta`, `focus`, `near_hint`, `far_hint`) outside its domain; [`Error::Degenerate`]
+/// when the frustum's depth ratio is beyond what f64 can warp with this n′ (every corner is checked
+/// to land in the clip volume; in practice from f/n ≈ 10¹⁵ for PSM, ≈ 10³⁰ for LiSPSM).
 ///
 /// ```
 /// # use shadow_aliasing::build::{warp, WarpRule};
@@ -303,7 +339,7 @@ pub(crate) fn warp_matrix(
 pub fn warp(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<ShadowMatrix> {
     let fl = FrustumInLight::new(view, light_dir)?;
     let n_prime = rule_n_prime(view, &fl, rule)?;
-    let matrix = fit_frustum(view, &fl, n_prime)?;
+    let matrix = fit_frustum(&fl, n_prime)?;
     Ok(ShadowMatrix {
         matrix,
         light_dir: fl.ls.light_dir(),
@@ -314,11 +350,7 @@ pub fn warp(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<Shad
 }
 
 /// [`fit_warp`] on the frustum already in light space.
-pub(crate) fn fit_frustum(
-    view: &ViewFrustum,
-    fl: &FrustumInLight,
-    n_prime: NPrime,
-) -> Result<DMat4> {
+pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4> {
     let rho = match n_prime {
         NPrime::Unwarped => 0.0,
         NPrime::Finite(v) => {
@@ -332,12 +364,22 @@ pub(crate) fn fit_frustum(
         }
     };
     let mut r = Ranges::new();
-    for q in &fl.q {
-        let w = 1.0 + rho * (q.z - fl.z0);
-        r.add(q.x / w, q.y / w);
+    if rho == 0.0 {
+        for q in &fl.q {
+            r.add(q.x, q.y);
+        }
+    } else {
+        for q in &fl.q {
+            let iw = 1.0 / (1.0 + rho * (q.z - fl.z0));
+            r.add(q.x * iw, q.y * iw);
+        }
     }
-    let extent = view.far() * (1.0 + view.tan_half_fov() * (1.0 + view.aspect()));
-    warp_matrix(&fl.ls, fl.z0, fl.delta, rho, &r, extent)
+    let extent =
+        fl.q.iter()
+            .fold(0.0f64, |m, q| m.max(q.abs().max_element()));
+    let m = warp_matrix(&fl.ls, fl.z0, fl.delta, rho, &r, extent)?;
+    verify_clip(&m, fl.corners.iter())?;
+    Ok(m)
 }
 
 /// The n′ that `rule` chooses for the whole view frustum and this light (see [`WarpRule`]).
@@ -352,8 +394,8 @@ pub(crate) fn fit_frustum(
 /// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;
 /// let overhead = DVec3::new(0.0, -1.0, 0.0);
 /// assert_eq!(n_prime_for(&view, overhead, WarpRule::Lispsm)?, NPrime::Finite(11.0));
-/// // The minimax n′ overhead is LiSPSM's (M_z equal on the near and far planes).
-/// let m = n_prime_for(&view, overhead, WarpRule::Minimax)?.value();
+/// // The M_z minimax n′ overhead is LiSPSM's (M_z equal on the near and far planes).
+/// let m = n_prime_for(&view, overhead, WarpRule::MinimaxMz)?.value();
 /// assert!((m - 11.0).abs() < 1e-9);
 /// // Light from behind: every generalised rule falls back to the uniform map.
 /// assert_eq!(n_prime_for(&view, DVec3::NEG_Z, WarpRule::LispsmSin)?, NPrime::Unwarped);
@@ -381,7 +423,7 @@ pub(crate) fn rule_n_prime(
     let sin_g = fl.sin_gamma;
     Ok(match rule {
         WarpRule::Uniform => NPrime::Unwarped,
-        WarpRule::Eta(eta) => n_prime_from_eta(n, f, eta)?,
+        WarpRule::Eta(eta) => crate::warp::n_prime_from_eta(n, f, eta)?,
         WarpRule::Psm => NPrime::Finite(n),
         WarpRule::Lispsm => NPrime::Finite(view.n_prime_lispsm()),
         WarpRule::LispsmSin => {
@@ -392,8 +434,8 @@ pub(crate) fn rule_n_prime(
             }
         }
         WarpRule::Barroso(falloff) => {
-            let gamma = LightAngle::from_light_dir(fl.ls.light_dir())?.radians();
-            barroso_n_prime(view, gamma, falloff)
+            let gamma = LightAngle::from_light_dir(fl.ls.light_dir())?;
+            crate::analytic::tilted::generalized_n_prime(view, gamma, falloff)
         }
         WarpRule::Tsm { focus } => tsm_rule(view, fl, focus)?,
         WarpRule::LispsmReference => {
@@ -418,64 +460,27 @@ pub(crate) fn rule_n_prime(
             };
             NPrime::Finite((n + (n * f).sqrt()) * 0.1 * tweak)
         }
-        WarpRule::Minimax => minimax::minimax_mz(view, fl).n_prime,
-        WarpRule::MinStorage => minimax::min_storage(view, fl)?.n_prime,
+        WarpRule::Minimax => minimax::min_storage(view, fl).n_prime,
+        WarpRule::MinimaxMz => minimax::minimax_mz(view, fl).n_prime,
     })
 }
 
-/// Lloyd 2006 Eq 11 (private until the overhead closed forms are shared).
-fn n_prime_from_eta(n: f64, f: f64, eta: f64) -> Result<NPrime> {
-    let eta = crate::error::in_closed("eta", eta, -1.0, 1.0)?;
-    let a = f / n;
-    let sa = a.sqrt();
-    Ok(if eta <= -1.0 {
-        NPrime::Unwarped
-    } else if eta <= 0.0 {
-        NPrime::Finite(n * (sa + 1.0 - eta * (a - 1.0)) / (eta + 1.0))
-    } else {
-        NPrime::Finite(n * (sa + 1.0) / (eta * sa + 1.0))
-    })
-}
+pub use crate::analytic::tsm::EIGHTY_PERCENT_LINE as TSM_80_PERCENT_LINE;
 
-/// Barroso & Celes Eq 13, 15–18 (private until the tilted closed forms are shared).
-fn barroso_n_prime(view: &ViewFrustum, gamma: f64, falloff: Falloff) -> NPrime {
-    use std::f64::consts::FRAC_PI_2;
-    let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
-    let (a, b) = (n * t, f * t);
-    let g_lim = ((a + b) / (f - n)).atan();
-    let n1 = |g: f64| (n + (f * n).sqrt()) * g.sin() - a * g.cos();
-    if gamma >= g_lim {
-        return NPrime::Finite(n1(gamma));
-    }
-    let r = match falloff {
-        Falloff::Zhang => (gamma / g_lim * FRAC_PI_2).sin(),
-        Falloff::Barroso => {
-            let s = 1.0 + ((gamma / g_lim - 1.0) * FRAC_PI_2).sin();
-            s * s
-        }
-    };
-    if r > 0.0 {
-        finite_or_unwarped(n1(g_lim) / r)
-    } else {
-        NPrime::Unwarped
-    }
-}
-
-/// The target line of Martin & Tan's 80 % rule: y = ξ = −0.6 in trapezoid space (top line +1).
-pub const TSM_80_PERCENT_LINE: f64 = -0.6;
-
-/// Martin & Tan §6.2: η = λδ′(1 + ξ)/(λ − 2δ′ − λξ), the distance of q from the top line that
-/// maps a point δ′ below the top line to y = ξ (top → +1, base → −1); `None` when no centre of
-/// projection beyond the top line can (the denominator is not positive, or δ′ = 0).
+/// Martin & Tan's η (§6.2, [`crate::analytic::tsm::tsm_eta`]) as the builders use it: `None`
+/// when no centre of projection beyond the top line maps the focus point to the line ξ (the
+/// closed form's `NoSolution`, its unwarped boundary, or a focus point on the top or base line),
+/// where the builders use the bounding rectangle, the limit η → ∞.
 #[inline]
 pub(crate) fn tsm_eta(lambda: f64, delta_p: f64, xi: f64) -> Option<f64> {
-    let den = lambda - 2.0 * delta_p - lambda * xi;
-    let num = lambda * delta_p * (1.0 + xi);
-    if den > 0.0 && num > 0.0 {
-        let eta = num / den;
-        eta.is_finite().then_some(eta)
-    } else {
-        None
+    // The closed form's domain, checked first so that the per-frame path never builds (and
+    // allocates) an error message: δ′ ∈ (0, λ) and a positive denominator λ(1 − ξ) − 2δ′.
+    if !(delta_p > 0.0 && delta_p < lambda && lambda * (1.0 - xi) - 2.0 * delta_p > 0.0) {
+        return None;
+    }
+    match crate::analytic::tsm::tsm_eta(lambda, delta_p, xi) {
+        Ok(NPrime::Finite(eta)) => Some(eta),
+        _ => None,
     }
 }
 
