@@ -126,7 +126,7 @@ fn check_svg(path: &Path, name: &str) {
         }
     }
     assert!(stack.is_empty(), "{name}: unclosed {stack:?}");
-    assert!(elements > 150, "{name}: only {elements} SVG elements");
+    assert!(elements > 60, "{name}: only {elements} SVG elements");
     assert!(
         text.contains(citation(name)),
         "{name}: the caption does not cite {}",

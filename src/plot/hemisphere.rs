@@ -1,7 +1,7 @@
 //! Lloyd et al. 2006 Fig 7: the storage factor S̄ over the hemisphere of light directions, from
 //! the crate's measurement of each scheme's own matrices ([`crate::measure::sweep::sweep`]).
 
-use super::chart::{draw_colour_bar, draw_hemisphere, extent, frame, Axis, ColourScale, PolarGrid};
+use super::chart::{draw_colour_bar, draw_hemisphere, frame, Axis, ColourScale, PolarGrid};
 use super::{Fail, Figure};
 use crate::build::scheme::Partition;
 use crate::build::WarpRule;
@@ -130,4 +130,14 @@ impl Figure for Fig7 {
         draw_colour_bar(&bar, &self.scale)?;
         Ok(())
     }
+}
+
+/// The minimum and maximum of positive finite values.
+fn extent(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    values
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .fold(None, |acc, v| match acc {
+            None => Some((v, v)),
+            Some((lo, hi)) => Some((f64::min(lo, v), f64::max(hi, v))),
+        })
 }
