@@ -101,6 +101,12 @@ fn eighty_percent_line_by_hand() {
     assert!((a + b / 1.2 - 1.0).abs() < 1e-12);
     assert!((a + b / 4.2 + 0.6).abs() < 1e-12);
     assert!((a + b / 11.2 + 1.0).abs() < 1e-12);
+    // The printed matrix applied to (δ′ + η, 1) = (4.2, 1) gives the homogeneous (ξ̃, ω) =
+    // (−2.52, 4.2), not (ξ, ω): the first component must be divided by ω = 4.2 to give −0.6.
+    let m = tsm_projection(10.0, 1.2);
+    let (xt, w) = (m[0][0] * 4.2 + m[0][1], m[1][0] * 4.2 + m[1][1]);
+    assert!((xt + 2.52).abs() < 1e-12 && (w - 4.2).abs() < 1e-12);
+    assert!((xt / w - EIGHTY_PERCENT_LINE).abs() < 1e-12);
 }
 
 /// Erratum (domain): the printed η is a centre above the top line only for δ′ < λ(1 − ξ)/2

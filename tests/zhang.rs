@@ -177,6 +177,17 @@ proptest! {
         prop_assert!(rel(zhang_ep_local(&c.view, ln, z).unwrap(), 2.0 * lloyd_mz) < 1e-12);
     }
 
+    /// §3.1: E_q, E_p (and so E_p×q) increase as y decreases, at every depth and light angle
+    /// (measured on the twin).
+    #[test]
+    fn errors_increase_as_y_decreases(c in config(), u in 0.0f64..1.0) {
+        let l = NPrime::Finite(c.lambda);
+        let w = twin(&c.view, c.theta, l);
+        let y2 = c.y + u * (c.z * c.view.tan_half_fov() - c.y);
+        let (a, b) = (measured(&c.view, &w, c.x, c.y, c.z), measured(&c.view, &w, c.x, y2, c.z));
+        prop_assert!(a.mx >= b.mx * (1.0 - 1e-12) && a.mz >= b.mz * (1.0 - 1e-12));
+    }
+
     /// The light behind the viewer is the mirror image y → −y of Zhang's light in front.
     #[test]
     fn behind_is_the_mirror_image(c in config()) {
@@ -427,6 +438,36 @@ fn section_3_1_minimum_of_e_p_is_not_at_the_far_plane() {
     for z in [5.0, 9.0, 11.0, 20.0] {
         assert!(at(z) > mid);
     }
+    // E_p×q along the top edge is smallest at z = 2√(fn) = 20: 17.39 there, 34.29 at z = f.
+    let pq = |z: f64| {
+        let m = measured(&view, &w, 0.0, z * phi.tan(), z);
+        4.0 * m.mx * m.mz
+    };
+    assert!((pq(20.0) - 17.39).abs() < 1e-2, "{}", pq(20.0));
+    assert!((pq(100.0) - 34.29).abs() < 1e-2, "{}", pq(100.0));
+    assert!(pq(19.0) > pq(20.0) && pq(21.0) > pq(20.0));
+}
+
+/// §2.4 says θ can be replaced by π − θ for a light behind the viewer; that holds only with y
+/// replaced by −y too (the light behind is the mirror image of the light in front). At n = 1,
+/// f = 100, φ = 30°, λ = 11, light behind at 120° from the view (folded θ = 60°), point
+/// (y, z) = (5, 10): measured E_p = 2 m_z = 6.694; Eq 14 with θ = 60° and y = 5 gives 3.952, with
+/// y = −5 gives 6.694.
+#[test]
+fn light_behind_needs_y_mirrored() {
+    let (n, f, phi, lambda) = (1.0, 100.0, FRAC_PI_6, 11.0);
+    let view = ViewFrustum::new(n, f, phi).unwrap();
+    let th = LightAngle::new(60f64.to_radians()).unwrap();
+    let w = tilted_warp(&view, th, TiltSide::Behind, NPrime::Finite(lambda)).unwrap();
+    let m = measured(&view, &w, 0.0, 5.0, 10.0);
+    let l = NPrime::Finite(lambda);
+    let (same, mirrored) = (
+        zhang_ep(&view, l, th, 5.0, 10.0).unwrap(),
+        zhang_ep(&view, l, th, -5.0, 10.0).unwrap(),
+    );
+    assert!((2.0 * m.mz - 6.694).abs() < 1e-3, "{}", 2.0 * m.mz);
+    assert!((same - 3.952).abs() < 1e-3, "{same}");
+    assert!(rel(mirrored, 2.0 * m.mz) < 1e-12);
 }
 
 /// §3.1 claims the maximum of E_q is at (z = n, y = −n tan φ) "regardless of the λ selection".

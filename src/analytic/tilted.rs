@@ -377,6 +377,25 @@ pub enum Falloff {
     Barroso,
 }
 
+impl std::str::FromStr for Falloff {
+    type Err = Error;
+
+    /// Parses the eval contract's names, `"zhang"` (Eq 17) and `"barroso"` (Eq 18).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `falloff` for any other string.
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "zhang" => Ok(Falloff::Zhang),
+            "barroso" => Ok(Falloff::Barroso),
+            other => Err(Error::invalid(
+                "falloff",
+                format!("must be \"barroso\" or \"zhang\" (got \"{other}\")"),
+            )),
+        }
+    }
+}
+
 /// r(γ) for γ ∈ [0, γ_lim] (Barroso Eq 17, 18): 1 at γ_lim, 0 at γ = 0, increasing between.
 ///
 /// Eq 18 is evaluated as `4 sin⁴(γ π / (4 γ_lim))`, the same function
@@ -445,6 +464,16 @@ mod tests {
             tilted_psi(&view, 3.0, below, 7.0).unwrap(),
         );
         assert!((p1 - p2).abs() < 1e-9);
+    }
+
+    #[test]
+    fn falloff_names() {
+        assert_eq!("zhang".parse::<Falloff>(), Ok(Falloff::Zhang));
+        assert_eq!("barroso".parse::<Falloff>(), Ok(Falloff::Barroso));
+        assert_eq!(
+            "lloyd".parse::<Falloff>().unwrap_err().to_string(),
+            "falloff must be \"barroso\" or \"zhang\" (got \"lloyd\")"
+        );
     }
 
     #[test]
