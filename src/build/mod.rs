@@ -31,6 +31,7 @@ pub mod faces;
 pub mod lightspace;
 pub mod matrix;
 pub mod minimax;
+pub mod scheme;
 pub mod tsm;
 pub mod uniform;
 pub mod warp;
