@@ -796,8 +796,9 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
     };
     let n_el = grid.elev_edges.len() - 1;
     let n_az = grid.az_edges.len() - 1;
+    const OVERLAP: f64 = 0.25 * std::f64::consts::PI / 180.0;
     let arc = |el: f64, a0: f64, a1: f64, reverse: bool| -> Vec<(i32, i32)> {
-        let steps = (((a1 - a0).abs() / 3f64.to_radians()).ceil() as usize).max(1);
+        let steps = (((a1 - a0).abs() / 4f64.to_radians()).ceil() as usize).max(1);
         let mut v: Vec<(i32, i32)> = (0..=steps)
             .map(|k| {
                 let a = a0 + (a1 - a0) * k as f64 / steps as f64;
@@ -823,9 +824,16 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
             {
                 j += 1;
             }
-            let (a0, a1) = (grid.az_edges[start], grid.az_edges[j + 1]);
-            let mut poly = arc(e0, a0, a1, false);
-            poly.extend(arc(e1, a0, a1, true));
+            // A hair of overlap (0.25°) so that neighbouring polygons leave no unfilled pixels.
+            let (a0, a1) = (
+                grid.az_edges[start] - OVERLAP,
+                grid.az_edges[j + 1] + OVERLAP,
+            );
+            let lo = (e0 - OVERLAP).max(0.0);
+            let hi = (e1 + OVERLAP).min(std::f64::consts::FRAC_PI_2);
+            let mut poly = arc(lo, a0, a1, false);
+            poly.extend(arc(hi, a0, a1, true));
+            poly.dedup();
             area.draw(&Polygon::new(poly, scale.level_colour(level).filled()))?;
             j += 1;
         }
@@ -856,16 +864,8 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
             TextStyle::from((FONT, 12).into_font()).pos(pos),
         ))
     };
-    label(
-        "← behind",
-        (-1.0 - pad, 1.0 + pad),
-        Pos::new(HPos::Left, VPos::Top),
-    )?;
-    label(
-        "in front →",
-        (1.0 + pad, 1.0 + pad),
-        Pos::new(HPos::Right, VPos::Top),
-    )?;
+    label("← behind", (-1.0, 0.97), Pos::new(HPos::Left, VPos::Top))?;
+    label("in front →", (1.0, 0.97), Pos::new(HPos::Right, VPos::Top))?;
     label(
         "viewer's right",
         (0.0, -1.02),

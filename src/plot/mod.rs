@@ -33,6 +33,7 @@
 
 mod barroso;
 mod chart;
+mod hemisphere;
 mod lloyd2005;
 mod lloyd2006;
 mod martin_tan;
@@ -100,6 +101,7 @@ pub const FIGURES: &[&str] = &[
     "lloyd2005-fig7",
     "lloyd2006-fig5",
     "lloyd2006-fig6",
+    "lloyd2006-fig7",
     "lloyd2006-fig10",
     "lloyd2006-fig12",
     "lloyd2006-fig13",
@@ -255,6 +257,7 @@ fn dispatch(name: &'static str, out_dir: &Path, format: Format) -> Result<Vec<Pa
         "lloyd2005-fig7" => emit(name, &lloyd2005::fig7().map_err(data)?, out_dir, format),
         "lloyd2006-fig5" => emit(name, &lloyd2006::fig5().map_err(data)?, out_dir, format),
         "lloyd2006-fig6" => emit(name, &lloyd2006::fig6().map_err(data)?, out_dir, format),
+        "lloyd2006-fig7" => emit(name, &hemisphere::fig7().map_err(data)?, out_dir, format),
         "lloyd2006-fig10" => emit(name, &lloyd2006::fig10().map_err(data)?, out_dir, format),
         "lloyd2006-fig12" => emit(name, &lloyd2006::fig12().map_err(data)?, out_dir, format),
         "lloyd2006-fig13" => emit(name, &lloyd2006::fig13().map_err(data)?, out_dir, format),
