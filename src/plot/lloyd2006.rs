@@ -211,10 +211,15 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
             }
             let s = Series::line(format!("{name}, light {light_name}"), pts, PALETTE[colour])
                 .with_markers();
-            c.series.push(match light {
+            let mut s = match light {
                 SchemeLight::Overhead => s,
                 SchemeLight::Behind => s.dashed(),
-            });
+            };
+            if light == SchemeLight::Behind && scheme == Scheme::Zp {
+                // ZP+W equals ZP behind and is drawn over it: keep ZP visible around it.
+                s.width = 5;
+            }
+            c.series.push(s);
         }
     }
     Ok(Charts {
