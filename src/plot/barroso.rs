@@ -109,3 +109,22 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         charts: vec![c],
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// With the light overhead (γ = 90°) every rule is LiSPSM's n + √(fn) = 1 + 10 = 11; both
+    /// fall-offs meet n′₁(γ_lim) at γ_lim; at γ = 0 no finite n′ is plotted.
+    #[test]
+    fn fig7_curves_meet_lispsm_overhead() {
+        let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
+        let s = &fig.charts[0].series;
+        for curve in &s[..4] {
+            let (d, v) = *curve.points.last().unwrap();
+            assert_eq!(d, 90.0);
+            assert!((v - 11.0).abs() < 1e-6, "{v}");
+        }
+        assert!(s[0].points[0].0 > 0.0 && s[1].points[0].0 > 0.0);
+    }
+}
