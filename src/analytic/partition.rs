@@ -172,7 +172,10 @@ pub enum SplitScheme {
 /// planes are exactly `near` and `far`.
 ///
 /// Barroso's Eq 19 prints the far ratio as "α_i" and says "f_1 = f_2"; the crate reads a single
-/// α and f_1 = n_2 (partitions are contiguous), which is what makes γ = π/2 equal Eq 5.
+/// α (his text: every partition but the first gets "a small value α"; with α^i the ratios at
+/// γ = 0 would be α^k, …, α², not α) and f_1 = n_2 (partitions are contiguous; f_1 = f_2 would
+/// make the first partition cover the second). At γ = π/2 the α term vanishes and the planes are
+/// Eq 5's self-similar ones, as he states.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far, finite), `k`
@@ -203,7 +206,15 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
     let alpha = f / n;
     let mut p = [0.0; MAX_PARTITIONS + 1];
     let uniform = |i: usize| n + (f - n) * (i as f64 / kf);
-    let logarithmic = |i: usize| n * alpha.powf(i as f64 / kf);
+    // Self-similar planes n r^i, r = (f/n)^{1/k}: one powf, then products (error ≤ k ulps).
+    let r = alpha.powf(1.0 / kf);
+    let mut logarithmic = [0.0; MAX_PARTITIONS + 1];
+    let mut zl = n;
+    for l in logarithmic.iter_mut().take(k + 1) {
+        *l = zl;
+        zl *= r;
+    }
+    let logarithmic = |i: usize| logarithmic[i];
     match scheme {
         SplitScheme::Uniform => {
             for (i, z) in p.iter_mut().enumerate().take(k + 1) {
