@@ -66,10 +66,13 @@ proptest! {
         match tsm_eta(lambda, delta, xi) {
             Ok(NPrime::Finite(eta)) => {
                 prop_assert!(xi < unwarped);
-                prop_assume!(unwarped - xi > 1e-6 && xi > -1.0 + 1e-6);
-                let e2 = eta_by_bisection(lambda, delta, xi);
-                prop_assert!(rel(eta, e2) < 1e-9, "{eta} vs {e2}");
                 prop_assert!((focus_image(lambda, eta, delta) - xi).abs() < 1e-9);
+                // Near the unwarped line the image is flat in η (dξ/dη ∝ 1/η²), so the
+                // bisection cannot resolve η to 1e-9 there; compare η where it can.
+                if unwarped - xi > 1e-3 && xi > -1.0 + 1e-3 {
+                    let e2 = eta_by_bisection(lambda, delta, xi);
+                    prop_assert!(rel(eta, e2) < 1e-9, "{eta} vs {e2}");
+                }
                 let (a, b) = solve_map(lambda, eta);
                 let m = tsm_projection(lambda, eta);
                 prop_assert!(rel(m[0][0], a) < 1e-9 && rel(m[0][1], b) < 1e-9);
@@ -85,6 +88,27 @@ proptest! {
                 prop_assert!(focus_image(lambda, 1e9 * lambda, delta) < xi);
             }
             Err(e) => prop_assert!(false, "{e}"),
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(cases())]
+
+    /// No input makes tsm_eta or tsm_focus_line panic or return a non-finite number.
+    #[test]
+    fn any_input_is_an_error_or_finite(
+        l in proptest::num::f64::ANY, d in proptest::num::f64::ANY, x in proptest::num::f64::ANY,
+    ) {
+        for (lambda, delta, xi) in [(l, d, x), (1.0, d, x), (1.0, 0.3, x), (l, 0.3, -0.6), (1.0, d, -0.6)] {
+            if let Ok(NPrime::Finite(v)) = tsm_eta(lambda, delta, xi) {
+                prop_assert!(v.is_finite() && v > 0.0);
+            }
+            for eta in [NPrime::Finite(x), NPrime::Finite(l), NPrime::Unwarped] {
+                if let Ok(v) = tsm_focus_line(lambda, eta, delta) {
+                    prop_assert!(v.is_finite());
+                }
+            }
         }
     }
 }
