@@ -63,6 +63,39 @@ fn light_from_angles(elev: f64, azim: f64) -> DVec3 {
 }
 
 fn check_all_rules(view: &ViewFrustum, l: DVec3) {
+    use shadow_aliasing::build::tsm::{tsm, TsmOptions, TsmSearch};
+    use shadow_aliasing::build::uniform::{with_casters, CasterDepth};
+    // A caster box reaching from the camera to twice the far plane and far up.
+    let f = view.far();
+    let casters: [DVec3; 8] = std::array::from_fn(|i| {
+        DVec3::new(
+            if i & 1 == 0 { -f } else { f },
+            if i & 2 == 0 { -0.5 * f } else { 3.0 * f },
+            if i & 4 == 0 { -2.0 * f } else { 0.0 },
+        )
+    });
+    for search in [
+        TsmSearch::EightyPercent,
+        TsmSearch::Iterative { map_lines: 128 },
+    ] {
+        let t = tsm(
+            view,
+            l,
+            TsmOptions {
+                focus: 0.25 * (f - view.near()),
+                search,
+            },
+        )
+        .unwrap_or_else(|e| panic!("TSM {l}: {e}"));
+        for c in view.corners() {
+            assert_in_clip(
+                &t.shadow.matrix,
+                c,
+                -1.0,
+                &format!("TSM {search:?} light {l}"),
+            );
+        }
+    }
     for r in ALL_RULES {
         let r = rule_for(view, r);
         let s = warp(view, l, r).unwrap_or_else(|e| panic!("{r:?} {l}: {e}"));
@@ -74,22 +107,29 @@ fn check_all_rules(view: &ViewFrustum, l: DVec3) {
         }
         let e = frustum_max(view, &s.shadow_map()).unwrap();
         assert!(e.storage_factor.is_finite() && e.storage_factor > 0.0);
+        let enc = with_casters(view, l, r, &casters, CasterDepth::Enclose)
+            .unwrap_or_else(|e| panic!("{r:?} casters {l}: {e}"));
+        for c in view.corners().iter().chain(casters.iter()) {
+            assert_in_clip(&enc.matrix, *c, -1.0, &format!("{r:?} enclose light {l}"));
+        }
     }
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 1024, failure_persistence: None, ..ProptestConfig::default() })]
 
     /// Random cameras (f/n from 1.01 to 10⁶, half fov 1° to 80°, aspect 0.5 to 2.5) and random
-    /// lights over the whole sphere: every rule maps the eight corners into the clip volume.
+    /// lights over the whole sphere: every rule maps the eight corners into the clip volume, in
+    /// both depth conventions, and every corner and caster point when fitted around a caster box;
+    /// TSM (80 % and iterative) too. 1024 cameras × 14 rules.
     #[test]
     fn corners_in_clip_volume(
         log_ratio in (1.01f64).ln()..(1e6f64).ln(),
         near in 0.01f64..10.0,
         fov_deg in 1.0f64..80.0,
         aspect in 0.5f64..2.5,
-        elev in -1.5707963f64..1.5707963,
-        azim in 0.0f64..6.2831853,
+        elev in -std::f64::consts::FRAC_PI_2..std::f64::consts::FRAC_PI_2,
+        azim in 0.0f64..std::f64::consts::TAU,
     ) {
         let view = ViewFrustum::with_aspect(near, near * log_ratio.exp(), fov_deg.to_radians(), aspect).unwrap();
         check_all_rules(&view, light_from_angles(elev, azim));
@@ -336,4 +376,362 @@ fn invalid_inputs_are_errors() {
     // All points on one light ray: no extent across the map.
     let p = [DVec3::new(0.0, 1.0, -2.0), DVec3::new(0.0, 3.0, -2.0)];
     assert!(fit_warp(&p, &ls, NPrime::Unwarped).is_err());
+}
+
+/// Caster bound, Lloyd 2006 §6.4: with `Clamp` the map is the frustum's and casters nearer the
+/// light than the frustum get clip depth below −1 (clamped to depth 0 by the renderer) while
+/// keeping their texel; with `Enclose` every caster point lands in the clip volume. Clamping
+/// never costs storage: S̄ of the clamped map is at most that of the enclosing one.
+#[test]
+fn caster_bound_clamp_and_enclose() {
+    use shadow_aliasing::build::uniform::{with_casters, CasterDepth};
+    let view = ViewFrustum::with_aspect(0.5, 60.0, 0.6, 1.5).unwrap();
+    // A scene box in eye space, 100 wide, reaching 80 above the camera.
+    let (lo, hi) = (DVec3::new(-50.0, -3.0, -70.0), DVec3::new(50.0, 80.0, 5.0));
+    let casters: [DVec3; 8] = std::array::from_fn(|i| {
+        DVec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        )
+    });
+    for l in [
+        DVec3::new(0.2, -1.0, 0.1),
+        DVec3::new(-0.6, -0.5, -0.3),
+        DVec3::NEG_Y,
+    ] {
+        for rule in [WarpRule::Uniform, WarpRule::Lispsm, WarpRule::Minimax] {
+            let c = with_casters(&view, l, rule, &casters, CasterDepth::Clamp).unwrap();
+            let e = with_casters(&view, l, rule, &casters, CasterDepth::Enclose).unwrap();
+            assert_eq!(c, warp(&view, l, rule).unwrap());
+            for p in view.corners() {
+                assert_in_clip(&c.matrix, p, -1.0, "clamp");
+                assert_in_clip(&e.matrix, p, -1.0, "enclose");
+            }
+            for p in casters {
+                assert_in_clip(&e.matrix, p, -1.0, "enclose caster");
+            }
+            // A caster straight up the light ray from a frustum point, far toward the light: same
+            // texel as that point, depth below the near end.
+            let inside = DVec3::new(1.0, -2.0, -20.0);
+            let up = inside - 500.0 * l.normalize();
+            let (a, b) = (clip(&c.matrix, inside), clip(&c.matrix, up));
+            assert!((a.x - b.x).abs() < 1e-9 && (a.y - b.y).abs() < 1e-9);
+            assert!(b.z < -1.0, "{rule:?} {l}: {b}");
+            let sc = frustum_max(&view, &c.shadow_map()).unwrap().storage_factor;
+            let se = frustum_max(&view, &e.shadow_map()).unwrap().storage_factor;
+            assert!(
+                sc <= se * (1.0 + 1e-9),
+                "{rule:?} {l}: clamp {sc} > enclose {se}"
+            );
+        }
+    }
+    let bad = [DVec3::new(f64::NAN, 0.0, 0.0)];
+    assert!(with_casters(
+        &view,
+        DVec3::NEG_Y,
+        WarpRule::Uniform,
+        &bad,
+        CasterDepth::Clamp
+    )
+    .is_err());
+}
+
+mod no_alloc {
+    //! The per-frame builders allocate nothing: a counting allocator, per thread (tests run in
+    //! parallel threads), around the calls.
+    #![allow(unsafe_code)]
+    use std::alloc::{GlobalAlloc, Layout, System};
+    use std::cell::Cell;
+
+    thread_local! {
+        static COUNT: Cell<usize> = const { Cell::new(0) };
+    }
+
+    pub struct Counting;
+
+    // SAFETY: forwards to the system allocator; only counts.
+    unsafe impl GlobalAlloc for Counting {
+        unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+            let _ = COUNT.try_with(|c| c.set(c.get() + 1));
+            // SAFETY: same contract as the caller's.
+            unsafe { System.alloc(layout) }
+        }
+        unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+            // SAFETY: same contract as the caller's.
+            unsafe { System.dealloc(ptr, layout) }
+        }
+    }
+
+    #[global_allocator]
+    static GLOBAL: Counting = Counting;
+
+    pub fn allocations<T>(f: impl FnOnce() -> T) -> (T, usize) {
+        let before = COUNT.with(Cell::get);
+        let out = f();
+        (out, COUNT.with(Cell::get) - before)
+    }
+}
+
+#[test]
+fn per_frame_builders_do_not_allocate() {
+    use shadow_aliasing::build::tsm::{tsm, TsmOptions, TsmSearch};
+    let view = ViewFrustum::new(0.3, 500.0, 0.7).unwrap();
+    let l = DVec3::new(0.3, -0.8, -0.4);
+    // Warm up anything lazily initialised.
+    let _ = warp(&view, l, WarpRule::Minimax).unwrap();
+    for rule in ALL_RULES {
+        let rule = rule_for(&view, rule);
+        let (s, n) = no_alloc::allocations(|| warp(&view, l, rule));
+        assert!(s.is_ok());
+        assert_eq!(n, 0, "{rule:?} allocated {n} times");
+    }
+    for search in [
+        TsmSearch::EightyPercent,
+        TsmSearch::Iterative { map_lines: 512 },
+    ] {
+        let (t, n) = no_alloc::allocations(|| {
+            tsm(
+                &view,
+                l,
+                TsmOptions {
+                    focus: 50.0,
+                    search,
+                },
+            )
+        });
+        assert!(t.is_ok());
+        assert_eq!(n, 0, "TSM {search:?} allocated {n} times");
+    }
+    // The counter counts: a Vec allocates.
+    let (_, n) = no_alloc::allocations(|| vec![1u8; 16]);
+    assert!(n >= 1);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 128, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// A light tilted by γ in the view's vertical plane (from behind or in front): the measured
+    /// m_z of the built warp on the view axis equals Barroso & Celes Eq 12 measured perpendicular
+    /// to the light (`tilted_mz_perpendicular`), and 2 m_z, 2 m_x equal Zhang et al.'s global
+    /// E_p, E_q (Eq 13, 14), for any n′ and for Barroso's own n′.
+    #[test]
+    fn tilted_matches_barroso_and_zhang(
+        n in 0.05f64..5.0,
+        ratio in 1.5f64..1e4,
+        fov_deg in 5.0f64..75.0,
+        gamma in 0.01f64..std::f64::consts::FRAC_PI_2,
+        behind in proptest::bool::ANY,
+        log_np in -2.0f64..3.0,
+        zf in 0.0f64..1.0,
+        barroso_rule in proptest::bool::ANY,
+    ) {
+        use shadow_aliasing::analytic::global::{zhang_ep, zhang_eq};
+        use shadow_aliasing::analytic::tilted::tilted_mz_perpendicular;
+        use shadow_aliasing::LightAngle;
+        let f = n * ratio;
+        let view = ViewFrustum::new(n, f, fov_deg.to_radians()).unwrap();
+        let (s, c) = gamma.sin_cos();
+        let l = if behind { DVec3::new(0.0, -s, -c) } else { DVec3::new(0.0, -s, c) };
+        let sm = if barroso_rule {
+            warp(&view, l, WarpRule::Barroso(Falloff::Barroso)).unwrap()
+        } else {
+            let ls = light_space(l, DVec3::NEG_Z).unwrap();
+            let np = NPrime::Finite(n * 10f64.powf(log_np));
+            let m = fit_warp(&view.corners(), &ls, np).unwrap();
+            shadow_aliasing::build::ShadowMatrix { matrix: m, light_dir: l, n_prime: np, near: n, far: f }
+        };
+        let z = n + zf * (f - n);
+        let g = LightAngle::new(gamma).unwrap();
+        let e = point_error(&view, &sm.shadow_map(), DVec3::new(0.0, 0.0, -z), Resolutions::default()).unwrap();
+        let b = tilted_mz_perpendicular(&view, sm.n_prime, g, z, Resolutions::default()).unwrap();
+        prop_assert!((e.mz - b).abs() <= 1e-9 * b, "m_z {} vs Barroso {}", e.mz, b);
+        let ep = zhang_ep(&view, sm.n_prime, g, 0.0, z).unwrap();
+        let eq = zhang_eq(&view, sm.n_prime, g, 0.0, z).unwrap();
+        prop_assert!((2.0 * e.mz - ep).abs() <= 1e-9 * ep, "2 m_z {} vs Zhang E_p {}", 2.0 * e.mz, ep);
+        prop_assert!((2.0 * e.mx - eq).abs() <= 1e-9 * eq, "2 m_x {} vs Zhang E_q {}", 2.0 * e.mx, eq);
+    }
+}
+
+/// Sweeping through the view axis along a diagonal plane: the two sides agree and S̄ is
+/// continuous up to the axis, but the limit (the bounding rectangle turned 45°, S̄ = 2 (f/n)² for
+/// a square image) differs from the value exactly on the axis ((f/n)², the rectangle aligned
+/// with the image): the warp axis has no continuous extension there (docs/builders.md).
+#[test]
+fn diagonal_sweep_through_parallel() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let diag = DVec3::new(1.0, 1.0, 0.0).normalize();
+    for rule in [WarpRule::Uniform, WarpRule::Minimax, WarpRule::LispsmSin] {
+        let at = |t: f64| {
+            let s = warp(&view, DVec3::NEG_Z + t * diag, rule).unwrap();
+            frustum_max(&view, &s.shadow_map()).unwrap().storage_factor
+        };
+        let s6 = at(1e-6);
+        for t in [-1e-6, 1e-9, -1e-9, 1e-11, -1e-11] {
+            assert!(
+                (at(t) - s6).abs() <= 1e-4 * s6,
+                "{rule:?} at {t}: {} vs {s6}",
+                at(t)
+            );
+        }
+        assert!((s6 - 2e4).abs() <= 1e-3 * 2e4, "{rule:?}: {s6}");
+        assert!((at(0.0) - 1e4).abs() <= 1e-6 * 1e4);
+    }
+}
+
+/// Engine rules as shipped: Filament switches to the orthographic map below sin γ = 0.02, a jump
+/// from S̄ = 15 068 (its warp, 1.51× the uniform map) to 9 998 (n = 1, f = 100, θ = 30°, light
+/// from behind); OGRE's ramp never reaches the uniform map: on the axis its n′ = 2.1 (n + √(f n))
+/// gives S̄ = 72 976, 7.3× the uniform map's 10 000.
+#[test]
+fn engine_rules_near_parallel() {
+    let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
+    let sbar = |l: DVec3, r: WarpRule| {
+        frustum_max(&view, &warp(&view, l, r).unwrap().shadow_map())
+            .unwrap()
+            .storage_factor
+    };
+    let at = |s: f64| DVec3::new(0.0, -s, -(1.0 - s * s).sqrt());
+    let below = sbar(at(0.0199999), WarpRule::Filament);
+    let above = sbar(at(0.0200001), WarpRule::Filament);
+    assert_eq!(
+        n_prime_for(&view, at(0.0199999), WarpRule::Filament).unwrap(),
+        NPrime::Unwarped
+    );
+    assert!((below - 9997.9998).abs() < 1e-3, "{below}");
+    assert!((above - 15067.996).abs() < 1e-2, "{above}");
+    let ogre = n_prime_for(&view, DVec3::NEG_Z, WarpRule::Ogre)
+        .unwrap()
+        .value();
+    assert!((ogre - 2.1 * 11.0).abs() < 1e-12);
+    let s = sbar(DVec3::NEG_Z, WarpRule::Ogre);
+    assert!((s - 72975.648).abs() < 1e-2, "{s}");
+    // The reference code's general n′ = Δ/(√(z₁/z₀) − 1) is Wimmer's "old" (n + √(n(n + Δ sin γ)))/sin γ
+    // with d = Δ: check the identity at a tilted light.
+    let l = DVec3::new(0.3, -0.5, -0.8);
+    let fl_delta = {
+        let ls = light_space(l, DVec3::NEG_Z).unwrap();
+        let z: Vec<f64> = view.corners().iter().map(|c| ls.z.dot(*c)).collect();
+        z.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+            - z.iter().cloned().fold(f64::INFINITY, f64::min)
+    };
+    let sg = l.normalize().cross(DVec3::NEG_Z).length();
+    let old = (1.0 + (1.0 * (1.0 + fl_delta * sg)).sqrt()) / sg;
+    let r = n_prime_for(&view, l, WarpRule::LispsmReference)
+        .unwrap()
+        .value();
+    assert!((r - old).abs() <= 1e-12 * old, "{r} vs {old}");
+    let by_def = fl_delta / (((1.0 + fl_delta * sg) / 1.0).sqrt() - 1.0);
+    assert!((r - by_def).abs() <= 1e-9 * by_def);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 512, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// Any valid frustum, however extreme (near from 10⁻³⁰⁰ to 10³⁰⁰, f/n up to 10⁶⁰⁰), any light
+    /// (components from 10⁻³⁰⁰ to 10³⁰⁰, zeros, NaN): every builder answers a finite matrix whose
+    /// corners are in the clip volume, or a typed error; never a panic, never NaN.
+    #[test]
+    fn any_input_never_nan(
+        log_near in -300.0f64..300.0,
+        log_ratio in 1e-9f64..600.0,
+        fov in 1e-6f64..std::f64::consts::FRAC_PI_2,
+        log_aspect in -6.0f64..6.0,
+        lx in prop_oneof![Just(0.0), Just(f64::NAN), -1e3f64..1e3, Just(1e-300), Just(1e300)],
+        ly in prop_oneof![Just(0.0), -1e3f64..1e3, Just(-1e-300), Just(-1e300)],
+        lz in prop_oneof![Just(0.0), -1e3f64..1e3, Just(1e-300), Just(f64::INFINITY)],
+        rule_ix in 0usize..14,
+    ) {
+        use shadow_aliasing::build::tsm::{tsm, TsmOptions, TsmSearch};
+        let near = 10f64.powf(log_near);
+        let far = near * 10f64.powf(log_ratio);
+        let Ok(view) = ViewFrustum::with_aspect(near, far, fov, 10f64.powf(log_aspect)) else { return Ok(()); };
+        let l = DVec3::new(lx, ly, lz);
+        let rule = rule_for(&view, ALL_RULES[rule_ix]);
+        if let Ok(s) = warp(&view, l, rule) {
+            prop_assert!(s.matrix.is_finite());
+            prop_assert!(s.n_prime.value() > 0.0 && !s.n_prime.value().is_nan());
+            for c in view.corners() {
+                let h = s.matrix * DVec4::new(c.x, c.y, c.z, 1.0);
+                prop_assert!(h.is_finite() && h.w > 0.0, "{rule:?}: {c} → {h}");
+                prop_assert!((h.truncate() / h.w).abs().max_element() <= 1.0 + 1e-6, "{rule:?}: {c} → {}", h.truncate() / h.w);
+            }
+        }
+        let focus = 0.3 * (far - near);
+        if focus.is_finite() && focus > 0.0 {
+            if let Ok(t) = tsm(&view, l, TsmOptions { focus, search: TsmSearch::Iterative { map_lines: 64 } }) {
+                prop_assert!(t.shadow.matrix.is_finite() && t.light_depth.is_finite() && t.focus_area.is_finite());
+            }
+        }
+    }
+}
+
+/// The condition number of a 4 × 4 matrix (ratio of extreme singular values).
+fn cond(m: &DMat4) -> f64 {
+    let n = nalgebra::Matrix4::from_column_slice(&m.to_cols_array());
+    let sv = n.singular_values();
+    sv.max() / sv.min()
+}
+
+/// Through parallel (light from behind, tilted up by t in the eye's vertical plane): the rules
+/// that tend to the uniform map give matrices converging entry by entry to the uniform map's on
+/// the axis, with the same condition number: no blow-up, no ill-conditioning.
+#[test]
+fn matrices_converge_and_stay_conditioned_through_parallel() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let on_axis = warp(&view, DVec3::NEG_Z, WarpRule::Uniform).unwrap().matrix;
+    let c0 = cond(&on_axis);
+    assert!(c0.is_finite() && c0 < 1e6, "{c0}");
+    for rule in [
+        WarpRule::LispsmSin,
+        WarpRule::LispsmReference,
+        WarpRule::Barroso(Falloff::Barroso),
+        WarpRule::Barroso(Falloff::Zhang),
+        WarpRule::Uniform,
+    ] {
+        let mut prev = f64::INFINITY;
+        for t in [1e-3, 1e-5, 1e-7, 1e-9, 1e-11] {
+            let m = warp(&view, DVec3::new(0.0, -t, -1.0), rule).unwrap().matrix;
+            let diff = (m - on_axis)
+                .to_cols_array()
+                .iter()
+                .fold(0.0f64, |a, d| a.max(d.abs()));
+            let scale = on_axis
+                .to_cols_array()
+                .iter()
+                .fold(0.0f64, |a, d| a.max(d.abs()));
+            assert!(
+                diff <= prev * 1.0001 + 1e-12,
+                "{rule:?} t = {t}: {diff} after {prev}"
+            );
+            prev = diff;
+            let c = cond(&m);
+            assert!(
+                c <= 2.0 * c0 && c >= 0.5 * c0,
+                "{rule:?} t = {t}: cond {c} vs {c0}"
+            );
+            if t <= 1e-9 {
+                assert!(diff <= 1e-6 * scale, "{rule:?} t = {t}: {diff}");
+            }
+        }
+    }
+}
+
+/// η's ends (Lloyd 2006 Eq 11): η = −1 is the uniform map (n′ = ∞: M_x = f/n,
+/// M_z = (f − n)/(2 n tan θ) by hand), η = 1 is PSM (n′ = n: M_x = 1, S̄ = (f/n − 1)/(2 tan θ)).
+#[test]
+fn eta_ends_are_uniform_and_psm() {
+    let (n, f, th) = (2.0, 300.0, 0.6f64);
+    let view = ViewFrustum::new(n, f, th).unwrap();
+    let u = warp(&view, DVec3::NEG_Y, WarpRule::Eta(-1.0)).unwrap();
+    assert!(u.n_prime.is_unwarped());
+    let e = frustum_max(&view, &u.shadow_map()).unwrap();
+    assert!((e.max_mx - f / n).abs() <= 1e-12 * f / n);
+    assert!((e.max_mz - (f - n) / (2.0 * n * th.tan())).abs() <= 1e-12 * e.max_mz);
+    let p = warp(&view, DVec3::NEG_Y, WarpRule::Eta(1.0)).unwrap();
+    assert_eq!(p.n_prime, NPrime::Finite(n));
+    let e = frustum_max(&view, &p.shadow_map()).unwrap();
+    assert!((e.max_mx - 1.0).abs() <= 1e-12);
+    let sbar = (f / n - 1.0) / (2.0 * th.tan());
+    assert!((e.storage_factor - sbar).abs() <= 1e-12 * sbar);
 }
