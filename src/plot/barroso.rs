@@ -1,6 +1,7 @@
 //! Barroso & Celes 2007 Fig 7: the generalised LiSPSM parameter n′ against the angle γ between
 //! the light and view directions (n = 1, f = 100, φ_y = π/6), with both fall-offs r(γ), the
-//! branches of their Eq 13, LiSPSM's 1/sin γ rule and the crate's minimax n′.
+//! branches of their Eq 13, LiSPSM's 1/sin γ rule and the crate's n′ that minimises M_z over the
+//! whole frustum (`WarpRule::MinimaxMz`, the frustum-wide version of Barroso's objective).
 
 use super::chart::{linspace, Axis, Charts, LineChart, Note, Series, PALETTE};
 use super::Fail;
@@ -41,7 +42,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         if let Some(v) = finite(n_prime_for(&view, light_at(g), WarpRule::LispsmSin)?) {
             lispsm.push((d, v));
         }
-        if let Some(v) = finite(n_prime_for(&view, light_at(g), WarpRule::Minimax)?) {
+        if let Some(v) = finite(n_prime_for(&view, light_at(g), WarpRule::MinimaxMz)?) {
             minimax.push((d, v));
         }
         // Eq 13's branches where they are positive (the plot is logarithmic).
@@ -104,7 +105,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![
             "Barroso & Celes 2007, Fig. 7 (n = 1, f = 100, φ_y = π/6), from analytic::tilted::generalized_n_prime, n_prime_1, n_prime_2, gamma_lim;".into(),
-            "LiSPSM's 1/sin γ rule and the minimax n′ from build::n_prime_for. Logarithmic n′ axis: every rule tends to n′ = ∞ (no warp) as γ → 0.".into(),
+            "LiSPSM's 1/sin γ rule and the M_z-minimising n′ (WarpRule::MinimaxMz) from build::n_prime_for. Logarithmic n′ axis: every rule tends to n′ = ∞ (no warp) as γ → 0.".into(),
         ],
         charts: vec![c],
     })
