@@ -74,7 +74,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         .push(Series::line("LiSPSM: n′ = (n + √(fn))/sin γ", lispsm, PALETTE[2]).dashed());
     c.series.push(
         Series::line(
-            "minimax n′ of the 3D frustum (this crate)",
+            "n′ minimising M_z over the 3D frustum (this crate)",
             minimax,
             PALETTE[3],
         )
