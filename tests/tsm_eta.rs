@@ -74,7 +74,7 @@ proptest! {
                     prop_assert!(rel(eta, e2) < 1e-9, "{eta} vs {e2}");
                 }
                 let (a, b) = solve_map(lambda, eta);
-                let m = tsm_projection(lambda, eta);
+                let m = tsm_projection(lambda, eta).unwrap();
                 prop_assert!(rel(m[0][0], a) < 1e-9 && rel(m[0][1], b) < 1e-9);
                 prop_assert_eq!(m[1], [1.0, 0.0]);
                 let back = tsm_focus_line(lambda, NPrime::Finite(eta), delta).unwrap();
@@ -127,7 +127,7 @@ fn eighty_percent_line_by_hand() {
     assert!((a + b / 11.2 + 1.0).abs() < 1e-12);
     // The printed matrix applied to (δ′ + η, 1) = (4.2, 1) gives the homogeneous (ξ̃, ω) =
     // (−2.52, 4.2), not (ξ, ω): the first component must be divided by ω = 4.2 to give −0.6.
-    let m = tsm_projection(10.0, 1.2);
+    let m = tsm_projection(10.0, 1.2).unwrap();
     let (xt, w) = (m[0][0] * 4.2 + m[0][1], m[1][0] * 4.2 + m[1][1]);
     assert!((xt + 2.52).abs() < 1e-12 && (w - 4.2).abs() < 1e-12);
     assert!((xt / w - EIGHTY_PERCENT_LINE).abs() < 1e-12);

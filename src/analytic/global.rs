@@ -55,9 +55,11 @@ use crate::frustum::{LightAngle, NPrime, ViewFrustum};
 ///
 /// The printed μ agrees with the fitted warping frustum (checked against the twin). This is
 /// [`crate::analytic::tilted::warp_depth_range`]. Unit: eye-space distance.
+///
+/// # Errors
+/// [`Error::Degenerate`] when μ overflows an `f64` (f tan φ beyond about 1e308).
 #[inline]
-#[must_use]
-pub fn zhang_mu(view: &ViewFrustum, theta: LightAngle) -> f64 {
+pub fn zhang_mu(view: &ViewFrustum, theta: LightAngle) -> Result<f64> {
     warp_depth_range(view, theta)
 }
 
@@ -192,7 +194,7 @@ pub fn zhang_f_q(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> Result<f
 #[inline]
 pub fn zhang_f_p(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> Result<f64> {
     let lambda = positive("lambda", lambda)?;
-    let mu = zhang_mu(view, theta);
+    let mu = zhang_mu(view, theta)?;
     let s = theta.radians().sin();
     finite_result(
         "F_p",
@@ -292,7 +294,7 @@ pub fn zhang_ep(
     let lambda = finite_n_prime("lambda", lambda)?;
     let (y, z) = point_in_view(view, y, z)?;
     let t = view.tan_half_fov();
-    let mu = zhang_mu(view, theta);
+    let mu = zhang_mu(view, theta)?;
     finite_result(
         "E_p",
         match lambda {
@@ -411,7 +413,8 @@ impl Factorisation {
 /// # Errors
 /// [`Error::InvalidArgument`] naming `lambda`, `x`, `y`, `z` or `slope` (non-finite slopes) outside
 /// the domain; [`Error::Degenerate`] when a denominator vanishes (the surface contains the light
-/// direction: projection aliasing is infinite).
+/// direction: projection aliasing is infinite), or when a factor or the products E_q, E_p
+/// overflow an `f64`.
 pub fn zhang_factorisation(
     view: &ViewFrustum,
     lambda: f64,
@@ -446,10 +449,13 @@ pub fn zhang_factorisation(
     }
     let eq_pers = zhang_eq(view, NPrime::Finite(l), theta, y, z)?;
     let ep_pers = zhang_ep(view, NPrime::Finite(l), theta, y, z)?;
-    Ok(Factorisation {
+    let f = Factorisation {
         eq_pers,
         eq_proj: finite_result("E_q^proj", ((kx - x / z) / den_q).abs())?,
         ep_pers,
         ep_proj: finite_result("E_p^proj", ((ky - y / z) / dzw).abs())?,
-    })
+    };
+    finite_result("E_q", f.e_q())?;
+    finite_result("E_p", f.e_p())?;
+    Ok(f)
 }

@@ -26,17 +26,12 @@
 
 use crate::error::{finite_result, fmt_num, positive, Error, Result};
 use crate::frustum::{NPrime, Resolutions, ViewFrustum};
-use crate::warp::{n_prime_at_least, near_far};
+use crate::warp::{n_prime_at_least, near_far, sqrt_fn};
 
 /// n′_LSPSM = n + √f √n (without overflow of f n).
 #[inline]
 fn lispsm(view: &ViewFrustum) -> f64 {
-    let fn_ = view.far() * view.near();
-    if fn_.is_finite() && fn_ > 0.0 {
-        view.near() + fn_.sqrt()
-    } else {
-        view.near() + view.far().sqrt() * view.near().sqrt()
-    }
+    view.near() + sqrt_fn(view.near(), view.far())
 }
 
 /// Checks n ≤ z ≤ f.
