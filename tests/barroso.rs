@@ -462,3 +462,29 @@ fn eq13_is_not_always_the_minimax() {
     assert!((m(NPrime::Finite(n1)) - 0.50535).abs() < 1e-5);
     assert!((m(opt) - 0.50519).abs() < 1e-5);
 }
+
+/// Erratum (notation, Eq 14 and 16): the constraints of Eq 14 and the second branch of Eq 16
+/// call the fall-off warp parameter n′₂, the name Eq 13 gives to the equal-error solution for
+/// γ < φ_y, a different function. At n = 1, f = 100, φ_y = 30°, γ = 20°: Eq 13's n′₂ = −16.63
+/// (no warp equalises the errors), Eq 16's "n′₂" = n′₁(γ_lim)/r(γ) = 5.931 (Eq 17) or 21.60
+/// (Eq 18), with γ_lim = 30.50° and n′₁(γ_lim) = 5.085. The crate keeps `n_prime_2` for Eq 13 and
+/// calls Eq 16 `generalized_n_prime`.
+#[test]
+fn eq16_reuses_the_name_n_prime_2() {
+    let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
+    let g = LightAngle::new(20f64.to_radians()).unwrap();
+    let eq13 = n_prime_2(&view, g).unwrap();
+    assert!((eq13 + 16.631).abs() < 1e-3);
+    let gl = gamma_lim(&view);
+    assert!((gl.to_degrees() - 30.4987).abs() < 1e-4);
+    let at_lim = n_prime_1(&view, LightAngle::new(gl).unwrap()).unwrap();
+    assert!((at_lim - 5.0852).abs() < 1e-4);
+    let zhang = generalized_n_prime(&view, g, Falloff::Zhang).value();
+    let barroso = generalized_n_prime(&view, g, Falloff::Barroso).value();
+    // By hand: n′₁(γ_lim) / sin((γ/γ_lim)·π/2) and n′₁(γ_lim) / [1 + sin((γ/γ_lim − 1)·π/2)]².
+    let u = 20f64.to_radians() / gl;
+    assert!(rel(zhang, at_lim / (u * FRAC_PI_2).sin()) < 1e-12 && (zhang - 5.9314).abs() < 1e-4);
+    let r18 = (1.0 + ((u - 1.0) * FRAC_PI_2).sin()).powi(2);
+    assert!(rel(barroso, at_lim / r18) < 1e-12 && (barroso - 21.597).abs() < 1e-3);
+    assert!(eq13 < 0.0 && zhang > 0.0 && barroso > 0.0);
+}

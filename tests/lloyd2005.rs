@@ -341,3 +341,40 @@ proptest! {
         }
     }
 }
+
+/// Checked, right (docs/errata.md, Lloyd 2005 "Eq 4, 5 at ξ = 0"): both branches of Eq 4 give
+/// n_opt = 1 + √α at ξ = 0 and meet continuously; both branches of §3.2's ξ(n) vanish at n_opt;
+/// Eq 5 is continuous there with m_max = (r_p/r_s)(α − 1)/(2 tan θ)/√α, the measured maximum of
+/// the LiSPSM warp on both planes. At α = 100, θ = 45°: n(0) = 11, n(±1e-9) = 11 ∓ 9.9e-7 … and
+/// m_max(0) = 4.95.
+#[test]
+fn eq4_eq5_are_continuous_at_xi_zero() {
+    let a = 100.0;
+    let q = std::f64::consts::FRAC_PI_4;
+    assert_eq!(n_from_xi(a, 0.0).unwrap(), NPrime::Finite(11.0));
+    let left = n_from_xi(a, -1e-9).unwrap().value();
+    let right = n_from_xi(a, 1e-9).unwrap().value();
+    // dn/dξ = −(√α + 1 + α − 1) = −110 on the left, −√α(√α + 1) = −110 on the right.
+    assert!((left - (11.0 + 110e-9)).abs() < 1e-12, "{left}");
+    assert!((right - (11.0 - 110e-9)).abs() < 1e-12, "{right}");
+    assert_eq!(xi_from_n(a, NPrime::Finite(11.0)).unwrap(), 0.0);
+    let (m0, ml, mr) = (
+        max_error(a, q, 0.0, 1.0, 1.0).unwrap(),
+        max_error(a, q, -1e-9, 1.0, 1.0).unwrap(),
+        max_error(a, q, 1e-9, 1.0, 1.0).unwrap(),
+    );
+    assert!((m0 - 4.95).abs() < 1e-12 && (ml - m0).abs() < 1e-6 && (mr - m0).abs() < 1e-6);
+    // The measured warp at n = 11 has that maximum on both planes.
+    let v = ViewFrustum::new(1.0, a, q).unwrap();
+    let m = overhead_map(&v, NPrime::Finite(11.0)).unwrap();
+    for z in [1.0, a] {
+        let e = point_error(
+            &v,
+            &m,
+            glam::DVec3::new(0.0, 0.0, -z),
+            Resolutions::default(),
+        )
+        .unwrap();
+        assert!((e.mz - 4.95).abs() < 1e-9, "{}", e.mz);
+    }
+}

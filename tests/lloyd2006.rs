@@ -371,3 +371,25 @@ proptest! {
         }
     }
 }
+
+/// Eq 13, 14 by hand (checked, right; docs/errata.md): n = 1, f = 100, θ = 45°, n′ = 11,
+/// res_i = 1024, S₀ = 2048². M_x = 10, M_z = 4.95 (unit resolutions), so res*_s/res*_t = 10/4.95
+/// whatever res_i, res_s = 2048 √(10/4.95) = 2910.9, res_t = 1440.9, and both measured maxima
+/// are res_i √(S̄/S₀) = 1024 √49.5 / 2048 = 3.5178: the error is split equally, as the text says.
+#[test]
+fn eq13_eq14_by_hand() {
+    let v = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_4).unwrap();
+    let l = NPrime::Finite(11.0);
+    let s0 = 2048.0 * 2048.0;
+    let b = budget_resolution(&v, l, s0).unwrap();
+    assert!((b.res_s - 2910.9004).abs() < 1e-3 && (b.res_t - 1440.8957).abs() < 1e-3);
+    let r = Resolutions::new(1024.0, b.res_s, b.res_t).unwrap();
+    let m = frustum_max(&v, &overhead_map(&v, l).unwrap()).unwrap();
+    // The twin measures with unit resolutions: scale by res_i / res_s and res_i / res_t.
+    let (mx, mz) = (m.max_mx * r.image() / r.s(), m.max_mz * r.image() / r.t());
+    assert!(
+        (mx - 3.5178).abs() < 1e-4 && (mz - 3.5178).abs() < 1e-4,
+        "{mx} {mz}"
+    );
+    assert!((budget_error(&v, l, s0, 1024.0).unwrap() - 3.5178).abs() < 1e-4);
+}
