@@ -184,6 +184,36 @@ proptest! {
         prop_assert_eq!(whole[..k].iter().map(|&w| u64::from(w)).sum::<u64>(), u64::from(total as u32));
     }
 
+    /// Eq 6 with a different ξ_i in each subdivision (§4 assumes one ξ; §4.1 uses one): the
+    /// allocation still equalises the measured maximum errors, and the common maximum is
+    /// Σ_i m_max(α_i, ξ_i) (Eq 5 per subdivision, r_s texels each) divided by the total — Eq 7
+    /// is the special case α_i = α^{1/k}, ξ_i = ξ. "More texels to larger subdivisions" then no
+    /// longer follows: α = (100, 50) with ξ = (0, 1) gives the smaller one 49/(9.9 + 49) = 83 %.
+    #[test]
+    fn eq6_equalises_measured_errors_with_a_xi_per_subdivision(
+        parts in proptest::collection::vec((1.5f64..500.0, xi()), 1..6), th in half_fov(),
+        total in 16.0f64..4096.0,
+    ) {
+        let k = parts.len();
+        let mut errs = [0.0; 6];
+        for (e, &(a, x)) in errs.iter_mut().zip(&parts) {
+            *e = max_error(a, th, x, 1.0, 1.0).unwrap();
+        }
+        let mut out = [0.0; 6];
+        allocate_texels(&errs[..k], total, &mut out[..k]).unwrap();
+        let all: f64 = errs[..k].iter().sum::<f64>() / total;
+        for (i, &(a, x)) in parts.iter().enumerate() {
+            let v = ViewFrustum::new(1.0, a, th).unwrap();
+            let map = overhead_map(&v, n_from_xi(a, x).unwrap()).unwrap();
+            let r = Resolutions::new(1.0, 1.0, out[i]).unwrap();
+            let mut m = 0.0f64;
+            for c in v.corners() {
+                m = m.max(point_error(&v, &map, c, r).unwrap().mz);
+            }
+            prop_assert!(close(m, all, REL), "subdivision {i}: {m} vs {all}");
+        }
+    }
+
     /// Eq 7 decreases with k for every ξ and tends to (r_p/r_s) ln α / (2 tan θ).
     #[test]
     fn eq7_decreases_in_k(a in 1.5f64..1e4, th in half_fov(), x in xi()) {
@@ -377,4 +407,20 @@ fn eq4_eq5_are_continuous_at_xi_zero() {
         .unwrap();
         assert!((e.mz - 4.95).abs() < 1e-9, "{}", e.mz);
     }
+}
+
+/// Eq 6 with ξ per subdivision, by hand: α = (100, 50), ξ = (0, 1), θ = 45°: Eq 5 gives
+/// 99/2 · 0.1 = 4.95 and 49/2 · 1 = 24.5, so the smaller subdivision gets 24.5/29.45 = 83.2 % of
+/// the texels, and both end at the error 29.45 (in units of one whole map).
+#[test]
+fn eq6_with_different_xi_by_hand() {
+    let q = std::f64::consts::FRAC_PI_4;
+    let e = [
+        max_error(100.0, q, 0.0, 1.0, 1.0).unwrap(),
+        max_error(50.0, q, 1.0, 1.0, 1.0).unwrap(),
+    ];
+    assert!((e[0] - 4.95).abs() < 1e-12 && (e[1] - 24.5).abs() < 1e-12);
+    let mut out = [0.0; 2];
+    allocate_texels(&e, 1.0, &mut out).unwrap();
+    assert!((out[1] - 24.5 / 29.45).abs() < 1e-12 && out[1] > 0.83);
 }
