@@ -186,7 +186,7 @@ proptest! {
 
     /// Eq 6 with a different ξ_i in each subdivision (§4 assumes one ξ; §4.1 uses one): the
     /// allocation still equalises the measured maximum errors, and the common maximum is
-    /// Σ_i m_max(α_i, ξ_i) (Eq 5 per subdivision, r_s texels each) divided by the total — Eq 7
+    /// Σ_i m_max(α_i, ξ_i) (Eq 5 per subdivision, each with all the texels) — Eq 7
     /// is the special case α_i = α^{1/k}, ξ_i = ξ. "More texels to larger subdivisions" then no
     /// longer follows: α = (100, 50) with ξ = (0, 1) gives the smaller one 49/(9.9 + 49) = 83 %.
     #[test]
