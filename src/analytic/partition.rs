@@ -398,8 +398,9 @@ pub fn scheme_storage_factor(
     finite_result("storage factor", v)
 }
 
-/// The number of shadow maps a scheme uses with k z-partitions: k, or 4k + 1 for FP+ZP+W with
-/// the light behind (four side faces and the near face; overhead the light sees one face).
+/// The number of shadow maps a scheme uses with k z-partitions (Lloyd 2006 §5.3, the x axis of
+/// Fig 12): k, or 4k + 1 for FP+ZP+W with the light behind (four side faces and the near face;
+/// overhead the light sees one face).
 /// `Optimal` counts as one (continuous) map.
 ///
 /// # Errors

@@ -85,11 +85,11 @@ pub(crate) fn depth_in_view(view: &ViewFrustum, z: f64) -> Result<f64> {
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
 #[inline]
-pub fn warp_depth_range(view: &ViewFrustum, gamma: LightAngle) -> Result<f64> {
+pub fn warp_depth_range(view: &ViewFrustum, light_angle: LightAngle) -> Result<f64> {
     let (n, f) = (view.near(), view.far());
-    let (s, c) = gamma.radians().sin_cos();
+    let (s, c) = light_angle.radians().sin_cos();
     let tc = view.tan_half_fov() * c;
-    let mu = if gamma.radians() >= view.half_fov() {
+    let mu = if light_angle.radians() >= view.half_fov() {
         f * ((1.0 + n / f) * tc) + (f - n) * s
     } else {
         f * (2.0 * tc)
@@ -110,18 +110,23 @@ pub fn warp_depth_range(view: &ViewFrustum, gamma: LightAngle) -> Result<f64> {
 /// [`Error::InvalidArgument`] naming `n_prime` (not finite and positive) or `z` (outside
 /// `[near, far]`).
 #[inline]
-pub fn tilted_psi(view: &ViewFrustum, n_prime: f64, gamma: LightAngle, z: f64) -> Result<f64> {
+pub fn tilted_psi(
+    view: &ViewFrustum,
+    n_prime: f64,
+    light_angle: LightAngle,
+    z: f64,
+) -> Result<f64> {
     let np = positive("n_prime", n_prime)?;
     let z = depth_in_view(view, z)?;
-    finite_result("psi", np + psi_offset(view, gamma, z))
+    finite_result("psi", np + psi_offset(view, light_angle, z))
 }
 
 /// ψ − n′: the point's warp depth from the frustum's nearest extent.
 #[inline]
-fn psi_offset(view: &ViewFrustum, gamma: LightAngle, z: f64) -> f64 {
-    let (s, c) = gamma.radians().sin_cos();
+fn psi_offset(view: &ViewFrustum, light_angle: LightAngle, z: f64) -> f64 {
+    let (s, c) = light_angle.radians().sin_cos();
     let tc = view.tan_half_fov() * c;
-    if gamma.radians() >= view.half_fov() {
+    if light_angle.radians() >= view.half_fov() {
         view.near() * tc + (z - view.near()) * s
     } else {
         view.far() * tc + (z - view.far()) * s
@@ -143,20 +148,20 @@ fn psi_offset(view: &ViewFrustum, gamma: LightAngle, z: f64) -> f64 {
 pub fn tilted_xi(
     view: &ViewFrustum,
     n_prime: f64,
-    gamma: LightAngle,
+    light_angle: LightAngle,
     res: Resolutions,
 ) -> Result<f64> {
     let np = positive("n_prime", n_prime)?;
-    let s = positive_sin(gamma)?;
-    let mu = warp_depth_range(view, gamma)?;
+    let s = positive_sin(light_angle)?;
+    let mu = warp_depth_range(view, light_angle)?;
     finite_result(
         "xi",
         res.image() / res.t() / (2.0 * view.tan_half_fov()) * mu / (np * (np + mu)) / s,
     )
 }
 
-fn positive_sin(gamma: LightAngle) -> Result<f64> {
-    let s = gamma.radians().sin();
+fn positive_sin(light_angle: LightAngle) -> Result<f64> {
+    let s = light_angle.radians().sin();
     if s > 0.0 {
         Ok(s)
     } else {
@@ -164,7 +169,7 @@ fn positive_sin(gamma: LightAngle) -> Result<f64> {
             "light_angle",
             format!(
                 "must be greater than 0 for Barroso's m_z, which measures texels along the view axis and is infinite when light and view are parallel (got {})",
-                fmt_num(gamma.radians())
+                fmt_num(light_angle.radians())
             ),
         ))
     }
@@ -176,15 +181,15 @@ fn positive_sin(gamma: LightAngle) -> Result<f64> {
 fn mz_perp_unchecked(
     view: &ViewFrustum,
     n_prime: Option<f64>,
-    gamma: LightAngle,
+    light_angle: LightAngle,
     z: f64,
     res: Resolutions,
 ) -> Result<f64> {
-    let mu = warp_depth_range(view, gamma)?;
+    let mu = warp_depth_range(view, light_angle)?;
     let k = res.image() / res.t() / (2.0 * view.tan_half_fov()) * mu / z;
     match n_prime {
         Some(np) => {
-            let psi = np + psi_offset(view, gamma, z);
+            let psi = np + psi_offset(view, light_angle, z);
             // ψ²/(n′(n′ + μ)), written so that it stays accurate for large n′.
             Ok(k * (psi / np) * (psi / (np + mu)))
         }
@@ -223,14 +228,14 @@ fn mz_perp_unchecked(
 pub fn tilted_mz(
     view: &ViewFrustum,
     n_prime: NPrime,
-    gamma: LightAngle,
+    light_angle: LightAngle,
     z: f64,
     res: Resolutions,
 ) -> Result<f64> {
     let np = finite_n_prime("n_prime", n_prime)?;
-    let s = positive_sin(gamma)?;
+    let s = positive_sin(light_angle)?;
     let z = depth_in_view(view, z)?;
-    finite_result("m_z", mz_perp_unchecked(view, np, gamma, z, res)? / s)
+    finite_result("m_z", mz_perp_unchecked(view, np, light_angle, z, res)? / s)
 }
 
 /// The tilted-light m_z measured perpendicular to the light, as the crate measures every map
@@ -249,13 +254,13 @@ pub fn tilted_mz(
 pub fn tilted_mz_perpendicular(
     view: &ViewFrustum,
     n_prime: NPrime,
-    gamma: LightAngle,
+    light_angle: LightAngle,
     z: f64,
     res: Resolutions,
 ) -> Result<f64> {
     let np = finite_n_prime("n_prime", n_prime)?;
     let z = depth_in_view(view, z)?;
-    finite_result("m_z", mz_perp_unchecked(view, np, gamma, z, res)?)
+    finite_result("m_z", mz_perp_unchecked(view, np, light_angle, z, res)?)
 }
 
 /// Barroso's n′₁(γ) (Eq 13, first branch): the n′ that makes m_z equal on the near and far
@@ -271,9 +276,9 @@ pub fn tilted_mz_perpendicular(
 /// [`Error::Degenerate`] when the value overflows an `f64` (n tan φ_y or n + √(f n) beyond
 /// about 1e308).
 #[inline]
-pub fn n_prime_1(view: &ViewFrustum, gamma: LightAngle) -> Result<f64> {
+pub fn n_prime_1(view: &ViewFrustum, light_angle: LightAngle) -> Result<f64> {
     let (n, f) = (view.near(), view.far());
-    let (s, c) = gamma.radians().sin_cos();
+    let (s, c) = light_angle.radians().sin_cos();
     finite_result(
         "n_prime",
         (n + sqrt_fn(n, f)) * s - n * (view.tan_half_fov() * c),
@@ -303,9 +308,9 @@ fn n_prime_1_at_lim(view: &ViewFrustum) -> f64 {
 /// [`Error::Degenerate`] when the value overflows an `f64` (f tan φ_y or f + √(f n) beyond
 /// about 1e308).
 #[inline]
-pub fn n_prime_2(view: &ViewFrustum, gamma: LightAngle) -> Result<f64> {
+pub fn n_prime_2(view: &ViewFrustum, light_angle: LightAngle) -> Result<f64> {
     let (n, f) = (view.near(), view.far());
-    let (s, c) = gamma.radians().sin_cos();
+    let (s, c) = light_angle.radians().sin_cos();
     finite_result(
         "n_prime",
         (f + sqrt_fn(n, f)) * s - f * (view.tan_half_fov() * c),
@@ -319,18 +324,18 @@ pub fn n_prime_2(view: &ViewFrustum, gamma: LightAngle) -> Result<f64> {
 /// # Errors
 /// [`Error::NoSolution`] where that n′ is not positive (light near parallel to the view): no
 /// warp equalises the errors there; [`Error::Degenerate`] when it overflows.
-pub fn n_prime_equal_error(view: &ViewFrustum, gamma: LightAngle) -> Result<NPrime> {
-    let v = if gamma.radians() >= view.half_fov() {
-        n_prime_1(view, gamma)?
+pub fn n_prime_equal_error(view: &ViewFrustum, light_angle: LightAngle) -> Result<NPrime> {
+    let v = if light_angle.radians() >= view.half_fov() {
+        n_prime_1(view, light_angle)?
     } else {
-        n_prime_2(view, gamma)?
+        n_prime_2(view, light_angle)?
     };
     if v > 0.0 {
         Ok(NPrime::Finite(v))
     } else {
         Err(Error::NoSolution(format!(
             "no warp makes m_z equal on the near and far planes at light_angle={}: Barroso's Eq 13 gives n_prime={} ≤ 0",
-            fmt_num(gamma.radians()),
+            fmt_num(light_angle.radians()),
             fmt_num(v)
         )))
     }
@@ -364,21 +369,21 @@ pub fn n_prime_equal_error(view: &ViewFrustum, gamma: LightAngle) -> Result<NPri
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
 #[must_use]
-pub fn n_prime_axis_minimax(view: &ViewFrustum, gamma: LightAngle) -> NPrime {
-    let Ok(mu) = warp_depth_range(view, gamma) else {
+pub fn n_prime_axis_minimax(view: &ViewFrustum, light_angle: LightAngle) -> NPrime {
+    let Ok(mu) = warp_depth_range(view, light_angle) else {
         return NPrime::Unwarped;
     };
-    let d = psi_offset(view, gamma, view.near()).max(0.0);
+    let d = psi_offset(view, light_angle, view.near()).max(0.0);
     let den = mu - 2.0 * d;
     let star = if den > 0.0 {
         d * (mu / den)
     } else {
         f64::INFINITY
     };
-    let eq = if gamma.radians() >= view.half_fov() {
-        n_prime_1(view, gamma)
+    let eq = if light_angle.radians() >= view.half_fov() {
+        n_prime_1(view, light_angle)
     } else {
-        n_prime_2(view, gamma)
+        n_prime_2(view, light_angle)
     };
     // An overflowing n′_eq is larger than any finite n′*.
     let v = star.max(eq.unwrap_or(f64::INFINITY));
@@ -436,12 +441,14 @@ impl std::str::FromStr for Falloff {
 ///
 /// Eq 18 is evaluated as `4 sin⁴(γ π / (4 γ_lim))`, the same function
 /// (`1 + sin(x − π/2) = 1 − cos x = 2 sin²(x/2)`) without cancellation near γ = 0.
-/// Arguments outside `[0, γ_lim]` are clamped into it.
+/// γ = `light_angle` and γ_lim = `gamma_lim` in radians. Arguments outside `[0, γ_lim]` are
+/// clamped into it (NaN counts as 0); a γ_lim that is not positive gives r = 1. Total: the result
+/// lies in [0, 1] for every input.
 #[inline]
 #[must_use]
-pub fn falloff_r(falloff: Falloff, gamma: f64, gamma_lim: f64) -> f64 {
+pub fn falloff_r(falloff: Falloff, light_angle: f64, gamma_lim: f64) -> f64 {
     let u = if gamma_lim > 0.0 {
-        (gamma / gamma_lim).clamp(0.0, 1.0)
+        (light_angle / gamma_lim).clamp(0.0, 1.0)
     } else {
         1.0
     };
@@ -469,11 +476,15 @@ pub fn falloff_r(falloff: Falloff, gamma: f64, gamma_lim: f64) -> f64 {
 /// All inputs are validated types, so this cannot fail; where n′ overflows an `f64` (frusta
 /// beyond about 1e308) the answer is [`NPrime::Unwarped`], the limit n′ → ∞.
 #[must_use]
-pub fn generalized_n_prime(view: &ViewFrustum, gamma: LightAngle, falloff: Falloff) -> NPrime {
+pub fn generalized_n_prime(
+    view: &ViewFrustum,
+    light_angle: LightAngle,
+    falloff: Falloff,
+) -> NPrime {
     let gl = gamma_lim(view);
-    let g = gamma.radians();
+    let g = light_angle.radians();
     if g >= gl {
-        return match n_prime_1(view, gamma) {
+        return match n_prime_1(view, light_angle) {
             Ok(v) if v > 0.0 => NPrime::Finite(v),
             _ => NPrime::Unwarped,
         };
