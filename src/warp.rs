@@ -102,6 +102,8 @@ pub fn n_prime_lispsm(near: f64, far: f64) -> Result<f64> {
 /// PSM's warp parameter: n′ = n, the warping frustum's centre of projection at the eye
 /// (Stamminger & Drettakis 2002; Lloyd 2006 §4.1). η = +1.
 ///
+/// n′ in the unit of `near`.
+///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `near` or `far` unless 0 < near < far, both finite.
 #[inline]
@@ -153,6 +155,8 @@ pub fn n_prime_from_eta(near: f64, far: f64, eta: f64) -> Result<NPrime> {
 /// η = (√α + 1 − ν) / (ν √α)        for 1 ≤ ν < 1 + √α
 /// ν = n′/n, α = f/n;   η = −1 for n′ = ∞
 /// ```
+///
+/// η is dimensionless.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far) or `n_prime` (n′ ≥ near).

@@ -410,6 +410,8 @@ impl Factorisation {
 /// shaft ([`crate::measure::tilted_twin::aliasing_functions`]). x is the point's horizontal
 /// eye coordinate, `|x| ≤ z tan φ`.
 ///
+/// All four factors are dimensionless.
+///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `lambda`, `x`, `y`, `z` or `slope` (non-finite slopes) outside
 /// the domain; [`Error::Degenerate`] when a denominator vanishes (the surface contains the light

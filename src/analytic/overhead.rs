@@ -119,6 +119,8 @@ pub fn mz(view: &ViewFrustum, n_prime: NPrime, z: f64, res: Resolutions) -> Resu
 /// Symbols as in [`mx`]. m_x ∝ (n′ + z − n)/z = 1 + (n′ − n)/z decreases in z for n′ ≥ n, so
 /// the maximum is on the near plane.
 ///
+/// Dimensionless.
+///
 /// # Errors
 /// As [`mx`] without `z`.
 #[inline]
@@ -137,6 +139,8 @@ pub fn max_mx(near: f64, far: f64, n_prime: NPrime, res: Resolutions) -> Result<
 ///
 /// Symbols as in [`mz`]. (n′ + z − n)²/z is convex in z, so the maximum is on the near or far
 /// plane; they are equal exactly at n′ = n′_LSPSM.
+///
+/// Dimensionless.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `n_prime` (n′ ≥ near).

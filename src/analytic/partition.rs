@@ -449,6 +449,8 @@ pub fn optimal_storage_factor(view: &ViewFrustum) -> Result<f64> {
 ///
 /// The ratio to Eq 17 tends to 1 as f/n → ∞ for fixed j.
 ///
+/// Dimensionless.
+///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `shadow_maps` (≥ 1).
 pub fn zp_overhead_asymptotic(view: &ViewFrustum, shadow_maps: usize) -> Result<f64> {
@@ -470,6 +472,8 @@ pub fn zp_overhead_asymptotic(view: &ViewFrustum, shadow_maps: usize) -> Result<
 /// ```
 ///
 /// It is Eq 18 with k = j/4 for large f/n.
+///
+/// Dimensionless.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `shadow_maps` (≥ 1).

@@ -102,6 +102,8 @@ pub fn n_opt(alpha: f64) -> Result<f64> {
 /// The least maximum of g over the frustum, g₀ = min_n max_z g = 1/√α, reached at n = n_opt
 /// (Lloyd 2005 §3.1).
 ///
+/// Dimensionless.
+///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `alpha` unless α > 1, finite.
 #[inline]
@@ -205,6 +207,8 @@ pub fn n_from_xi(alpha: f64, xi: f64) -> Result<NPrime> {
 /// ξ ≤ 0 (n ≥ n_opt), the far plane z = α for ξ > 0 (both at ξ = 0).
 ///
 /// Lloyd 2005 §3.2 prints the two the other way round (see docs/errata.md); Eq 5 is right.
+///
+/// The depth is normalised (a multiple of the near distance, in [1, α]).
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `alpha` or `xi`.
@@ -359,6 +363,8 @@ pub fn allocate_texels_whole(errors: &[f64], total: u32, out: &mut [u32]) -> Res
 /// The k face-subdivision planes z_i = α^{i/k}, i = 0..k, over the normalised frustum [1, α]
 /// (Lloyd 2005 §4, "Face subdivision"; the same self-similar planes as Lloyd 2006 Eq 15, 16).
 ///
+/// Depths normalised to near = 1 (multiply by the near distance for eye-space units).
+///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `alpha` (> 1) or `k` (1 ≤ k ≤ 16).
 pub fn face_subdivision_planes(alpha: f64, k: usize) -> Result<Splits> {
@@ -437,6 +443,8 @@ pub fn mx(alpha: f64, n_warp: NPrime, z: f64, res_image: f64, res_x: f64) -> Res
 ///
 /// Symbols as in [`mx`] and [`max_error`]. It is smallest, r_p/r_t, at ξ = +1 (PSM, n = 1), and
 /// largest, (r_p/r_t) α, at ξ = −1 (unwarped).
+///
+/// Dimensionless.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `alpha`, `xi`, `res_image` or `res_x`.

@@ -321,6 +321,8 @@ pub fn n_prime_2(view: &ViewFrustum, light_angle: LightAngle) -> Result<f64> {
 /// the tilted m_z on the view axis is equal on the near and far planes, which minimises its
 /// maximum over `[near, far]` (m_z ∝ ψ²/z has a single minimum).
 ///
+/// Unit: eye-space distance.
+///
 /// # Errors
 /// [`Error::NoSolution`] where that n′ is not positive (light near parallel to the view): no
 /// warp equalises the errors there; [`Error::Degenerate`] when it overflows.
