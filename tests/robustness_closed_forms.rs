@@ -149,11 +149,26 @@ fn view() -> impl Strategy<Value = (f64, f64, f64)> {
     })
 }
 
-/// Ok values finite, errors typed (any variant of the non-exhaustive [`Error`] with a message).
+/// Errors are typed: one of the crate's variants, an invalid argument naming the argument, a
+/// message that is not empty.
+fn typed(what: &str, e: &Error) -> Result<(), TestCaseError> {
+    match e {
+        Error::InvalidArgument { name, reason } => {
+            prop_assert!(!name.is_empty() && !reason.is_empty(), "{what}: {e:?}");
+        }
+        Error::NoSolution(m) | Error::NoClosedForm(m) | Error::Degenerate(m) => {
+            prop_assert!(!m.is_empty(), "{what}: {e:?}");
+        }
+        other => prop_assert!(false, "{what}: unexpected error {other:?}"),
+    }
+    Ok(())
+}
+
+/// Ok values finite, errors typed.
 fn ok_finite(what: &str, r: Result<f64, Error>) -> Result<(), TestCaseError> {
     match r {
         Ok(v) => prop_assert!(v.is_finite(), "{what} returned {v}"),
-        Err(e) => prop_assert!(!e.to_string().is_empty(), "{what}: empty error"),
+        Err(e) => typed(what, &e)?,
     }
     Ok(())
 }
@@ -169,10 +184,10 @@ fn n_prime_ok(what: &str, n: NPrime) -> Result<(), TestCaseError> {
 }
 
 fn n_prime_result_ok(what: &str, r: Result<NPrime, Error>) -> Result<(), TestCaseError> {
-    if let Ok(n) = r {
-        n_prime_ok(what, n)?;
+    match r {
+        Ok(n) => n_prime_ok(what, n),
+        Err(e) => typed(what, &e),
     }
-    Ok(())
 }
 
 fn n_primes(v: f64) -> [NPrime; 3] {
