@@ -397,7 +397,13 @@ proptest! {
         r in (any_f64(), any_f64(), any_f64()),
         u in any_f64(),
         ul in any_f64(),
+        name in ".{0,12}",
     ) {
+        for name in [name.as_str(), "zhang", "barroso", "", "Zhang"] {
+            if let Err(e) = name.parse::<Falloff>() {
+                typed("Falloff::from_str", &e)?;
+            }
+        }
         for fo in [Falloff::Zhang, Falloff::Barroso] {
             let v = falloff_r(fo, u, ul);
             prop_assert!(v.is_finite() && (0.0..=1.0).contains(&v), "falloff_r = {}", v);
@@ -552,6 +558,12 @@ proptest! {
                 for w in [TwinWarp::Unwarped, TwinWarp::Lispsm, TwinWarp::Eta(0.5)] {
                     if let Ok(c) = overhead_cascade(&v, &sp, w) {
                         ok_finite("measured_storage_factor", c.measured_storage_factor())?;
+                        prop_assert_eq!(c.k(), k);
+                        for i in 0..=k {
+                            if let Some((pv, pm)) = c.get(i) {
+                                prop_assert!(pv.near() < pv.far() && pm.matrix.is_finite());
+                            }
+                        }
                     }
                     ok_finite("measured_fp_zp_w_behind", measured_fp_zp_w_behind(&v, &sp, w))?;
                 }
