@@ -212,11 +212,51 @@ pub fn scheme_into(
     k: usize,
     out: &mut SchemeResult,
 ) -> Result<()> {
+    let l = unit_light_dir(light_dir)?;
+    scheme_into_prepared(&Prepared::new(view), l, rule, partition, k, out)
+}
+
+/// What a scheme needs of the view that does not depend on the light: computed once per sweep.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Prepared {
+    view: ViewFrustum,
+    tan: f64,
+    corners: [DVec3; 8],
+}
+
+impl Prepared {
+    pub(crate) fn new(view: &ViewFrustum) -> Self {
+        let tan = view.tan_half_fov();
+        let ta = tan * view.aspect();
+        let mut corners = [DVec3::ZERO; 8];
+        for (j, d) in [(-ta, -tan), (ta, -tan), (ta, tan), (-ta, tan)]
+            .iter()
+            .enumerate()
+        {
+            corners[j] = DVec3::new(d.0 * view.near(), d.1 * view.near(), -view.near());
+            corners[j + 4] = DVec3::new(d.0 * view.far(), d.1 * view.far(), -view.far());
+        }
+        Self {
+            view: *view,
+            tan,
+            corners,
+        }
+    }
+}
+
+/// [`scheme_into`] with the view prepared and `l` already a unit vector.
+pub(crate) fn scheme_into_prepared(
+    prep: &Prepared,
+    l: DVec3,
+    rule: WarpRule,
+    partition: Partition,
+    k: usize,
+    out: &mut SchemeResult,
+) -> Result<()> {
     out.len = 0;
     out.storage_factor = 0.0;
-    let l = unit_light_dir(light_dir)?;
     out.light_dir = l;
-    let r = fill(view, l, rule, partition, k, out);
+    let r = fill(prep, l, rule, partition, k, out);
     if r.is_err() {
         out.len = 0;
         out.storage_factor = 0.0;
@@ -225,30 +265,22 @@ pub fn scheme_into(
 }
 
 fn fill(
-    view: &ViewFrustum,
+    prep: &Prepared,
     l: DVec3,
     rule: WarpRule,
     partition: Partition,
     k: usize,
     out: &mut SchemeResult,
 ) -> Result<()> {
+    let view = &prep.view;
     let splits = |scheme: SplitScheme| z_splits(view.near(), view.far(), k, scheme);
     let planes: Splits = match partition {
         Partition::Single => {
             let s = warp(view, l, rule)?;
-            let tan = view.tan_half_fov();
-            let ta = tan * view.aspect();
-            let mut corners = [DVec3::ZERO; 8];
-            for (j, d) in [(-ta, -tan), (ta, -tan), (ta, tan), (-ta, tan)]
-                .iter()
-                .enumerate()
-            {
-                corners[j] = DVec3::new(d.0 * view.near(), d.1 * view.near(), -view.near());
-                corners[j + 4] = DVec3::new(d.0 * view.far(), d.1 * view.far(), -view.far());
-            }
-            let e = vertex_max(&s.matrix, s.light_dir, tan, &corners).ok_or_else(|| {
-                Error::Degenerate("the map is singular at a frustum corner".into())
-            })?;
+            let e =
+                vertex_max(&s.matrix, s.light_dir, prep.tan, &prep.corners).ok_or_else(|| {
+                    Error::Degenerate("the map is singular at a frustum corner".into())
+                })?;
             out.push(PartitionResult {
                 matrix: s.matrix,
                 n_prime: s.n_prime,
