@@ -30,12 +30,12 @@
 //! `p = {lsCameraPosition.x, n − nopt, 0}`) and OGRE (`LiSPSMShadowCameraSetup::calculateLiSPSM`)
 //! place it; TSM's q on the centre line l is the same point (see the trapezoidal builder).
 
-use crate::build::lightspace::{light_space, sin_to_axis, LightSpace};
+use crate::build::lightspace::{light_space, LightSpace};
 use crate::build::matrix::ShadowMatrix;
 use crate::build::minimax;
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{LightAngle, NPrime, ViewFrustum};
-use glam::{DMat4, DVec3, DVec4};
+use glam::{DMat4, DVec3};
 
 pub use crate::analytic::tilted::Falloff;
 
@@ -53,7 +53,9 @@ pub enum WarpRule {
     /// Lloyd 2006 Eq 11: n′(η) = n(√α + 1 − η(α − 1))/(η + 1) for −1 ≤ η ≤ 0 (η = −1 is
     /// n′ = ∞) and n(√α + 1)/(η√α + 1) for 0 < η ≤ 1, α = f/n. η = 0 is LiSPSM, η = 1 PSM.
     Eta(f64),
-    /// PSM's n′ = n (Lloyd 2006 §4.1).
+    /// PSM's n′ = n (Lloyd 2006 §4.1). This is PSM exactly only with the light overhead; for
+    /// other directions a perspective shadow map is not a one-point perspective in light space
+    /// (Lloyd 2006 §4.4), and this rule is the light-space warp with PSM's parameter.
     Psm,
     /// LiSPSM's overhead optimum n′ = n + √(f n) (Wimmer et al. 2004; Lloyd 2006 §4.1), for every
     /// light direction.
@@ -69,7 +71,8 @@ pub enum WarpRule {
         /// Focus distance δ beyond the near plane, world units, `0 < focus ≤ f − n`.
         focus: f64,
     },
-    /// The LiSPSM reference code (Wimmer, `LispSM::calcNoptGeneral`):
+    /// The LiSPSM reference implementation (D. Scherzer, TU Vienna 2005, for Wimmer et al. 2004;
+    /// `LispSM<REAL>::calcNoptGeneral` with `getNearCameraPointE` and `getZ0_ls`):
     /// n′ = Δ/(√(z₁/z₀) − 1) with z₀ = n, z₁ = n + Δ sin γ the eye depths at the near and far ends
     /// of the warp axis, computed as Δ(√(1 + x) + 1)/x, x = Δ sin γ/n; n′ = ∞ at γ = 0.
     LispsmReference,
@@ -108,6 +111,8 @@ pub enum WarpRule {
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct FrustumInLight {
     pub ls: LightSpace,
+    /// The eight corners, eye space.
+    pub corners: [DVec3; 8],
     /// Light-space coordinates of the eight corners.
     pub q: [DVec3; 8],
     /// Eye depth −p.z of each corner.
@@ -133,13 +138,16 @@ impl FrustumInLight {
             z0 = z0.min(q[i].z);
             z1 = z1.max(q[i].z);
         }
+        // sin γ = |l × (0, 0, −1)| = √(l.x² + l.y²) for the unit light direction l: accurate near 0.
+        let l = ls.light_dir();
         Ok(Self {
             ls,
+            corners,
             q,
             depth,
             z0,
             delta: z1 - z0,
-            sin_gamma: sin_to_axis(light_dir, DVec3::NEG_Z),
+            sin_gamma: (l.x * l.x + l.y * l.y).sqrt().min(1.0),
         })
     }
 }
@@ -156,7 +164,9 @@ impl FrustumInLight {
 /// # Errors
 /// [`Error::InvalidArgument`] naming `points` when empty or not finite, `n_prime` when a
 /// [`NPrime::Finite`] value is not finite and positive; [`Error::Degenerate`] when the points have
-/// no extent along `ls.x` or `ls.z`.
+/// no extent along `ls.x` or `ls.z`, or when rounding would put a point outside the clip volume
+/// by more than 10⁻⁶ (depth ratios far beyond 10⁶ with a strong warp: the result is checked, never
+/// returned wrong).
 ///
 /// ```
 /// # use shadow_aliasing::build::{fit_warp, light_space};
@@ -208,7 +218,32 @@ pub fn fit_warp(points: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DM
         let w = 1.0 + rho * (q.z - z0);
         range.add(q.x / w, q.y / w);
     }
-    warp_matrix(ls, z0, delta, rho, &range, extent)
+    let m = warp_matrix(ls, z0, delta, rho, &range, extent)?;
+    verify_clip(&m, points.iter())?;
+    Ok(m)
+}
+
+/// Checks what the construction guarantees in exact arithmetic: every point has w ≥ 1 and clip
+/// coordinates in [−1, 1]. With rounding the extreme points land within about 10⁻⁹ of the faces
+/// for f/n up to 10⁶; a point at w < ½ or more than 10⁻⁶ outside the clip volume means the
+/// frustum's depth ratio is beyond what f64 can warp (for the LiSPSM warp the error of w at the far
+/// end is about √(f/n) · 10⁻¹⁶, for PSM's n′ = n about (f/n) · 10⁻¹⁶), and the matrix is refused.
+pub(crate) fn verify_clip<'a>(m: &DMat4, points: impl Iterator<Item = &'a DVec3>) -> Result<()> {
+    const SLACK: f64 = 1.0 + 1e-6;
+    for p in points {
+        let h = *m * p.extend(1.0);
+        let ok = h.w >= 0.5
+            && h.x.abs() <= SLACK * h.w
+            && h.y.abs() <= SLACK * h.w
+            && h.z.abs() <= SLACK * h.w;
+        if !ok {
+            return Err(Error::Degenerate(format!(
+                "the map cannot be represented in f64 for this frustum (a point maps to {h}): \
+                 reduce far/near or use z-partitions"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// Running min/max of u = x/w and v = y/w.
@@ -261,13 +296,14 @@ pub(crate) fn warp_matrix(
     let v_m = 0.5 * (r.v.1 + r.v.0);
     let a = 1.0 - rho * z0; // w = rho z + a
     let k = 2.0 / delta + rho;
-    let w_ls = DMat4::from_cols(
-        DVec4::new(1.0 / u_h, 0.0, 0.0, 0.0),
-        DVec4::new(0.0, 0.0, -1.0 / v_h, 0.0),
-        DVec4::new(-u_m * rho / u_h, k, v_m * rho / v_h, rho),
-        DVec4::new(-u_m * a / u_h, -1.0 - k * z0, v_m * a / v_h, a),
-    );
-    let m = w_ls * ls.rotation();
+    // Rows in light space, composed with the rotation (rows x, y, z of eye space) directly:
+    // row · (x·p, y·p, z·p, 1) = (row.x x + row.y y + row.z z) · p + row.w.
+    let (ex, ey, ez) = (ls.x, ls.y, ls.z);
+    let row0 = ((ex - u_m * rho * ez) / u_h).extend(-u_m * a / u_h);
+    let row1 = (k * ez).extend(-1.0 - k * z0);
+    let row2 = ((v_m * rho * ez - ey) / v_h).extend(v_m * a / v_h);
+    let row3 = (rho * ez).extend(a);
+    let m = DMat4::from_cols(row0, row1, row2, row3).transpose();
     if !m.is_finite() {
         return Err(Error::Degenerate(
             "the fitted warp is not finite for these points".into(),
@@ -283,7 +319,9 @@ pub(crate) fn warp_matrix(
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector, or the rule's
-/// parameter (`eta`, `focus`, `near_hint`, `far_hint`) outside its domain.
+/// parameter (`eta`, `focus`, `near_hint`, `far_hint`) outside its domain; [`Error::Degenerate`]
+/// when the frustum's depth ratio is beyond what f64 can warp with this n′ (every corner is checked
+/// to land in the clip volume; in practice from f/n ≈ 10¹⁵ for PSM, ≈ 10³⁰ for LiSPSM).
 ///
 /// ```
 /// # use shadow_aliasing::build::{warp, WarpRule};
@@ -301,7 +339,7 @@ pub(crate) fn warp_matrix(
 pub fn warp(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<ShadowMatrix> {
     let fl = FrustumInLight::new(view, light_dir)?;
     let n_prime = rule_n_prime(view, &fl, rule)?;
-    let matrix = fit_frustum(view, &fl, n_prime)?;
+    let matrix = fit_frustum(&fl, n_prime)?;
     Ok(ShadowMatrix {
         matrix,
         light_dir: fl.ls.light_dir(),
@@ -312,11 +350,7 @@ pub fn warp(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<Shad
 }
 
 /// [`fit_warp`] on the frustum already in light space.
-pub(crate) fn fit_frustum(
-    view: &ViewFrustum,
-    fl: &FrustumInLight,
-    n_prime: NPrime,
-) -> Result<DMat4> {
+pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4> {
     let rho = match n_prime {
         NPrime::Unwarped => 0.0,
         NPrime::Finite(v) => {
@@ -330,12 +364,22 @@ pub(crate) fn fit_frustum(
         }
     };
     let mut r = Ranges::new();
-    for q in &fl.q {
-        let w = 1.0 + rho * (q.z - fl.z0);
-        r.add(q.x / w, q.y / w);
+    if rho == 0.0 {
+        for q in &fl.q {
+            r.add(q.x, q.y);
+        }
+    } else {
+        for q in &fl.q {
+            let iw = 1.0 / (1.0 + rho * (q.z - fl.z0));
+            r.add(q.x * iw, q.y * iw);
+        }
     }
-    let extent = view.far() * (1.0 + view.tan_half_fov() * (1.0 + view.aspect()));
-    warp_matrix(&fl.ls, fl.z0, fl.delta, rho, &r, extent)
+    let extent =
+        fl.q.iter()
+            .fold(0.0f64, |m, q| m.max(q.abs().max_element()));
+    let m = warp_matrix(&fl.ls, fl.z0, fl.delta, rho, &r, extent)?;
+    verify_clip(&m, fl.corners.iter())?;
+    Ok(m)
 }
 
 /// The n′ that `rule` chooses for the whole view frustum and this light (see [`WarpRule`]).
