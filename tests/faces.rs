@@ -470,9 +470,9 @@ fn errata_s5_1_bisector_of_unit_vectors() {
     assert!(faces_with_axis(&view, l, true).is_some());
 }
 
-/// Errata (docs/errata.md, Lloyd 2006 §5.1, "the face's n′ is not stated"): the face's n′. From behind at θ = 30°,
-/// f/n = 1000, warping each side face with the view frustum's own n′ = n + √(f n) = 32.62 instead
-/// of the face's d_n + √(d_n d_f) = tan θ (n + √(f n)) = 18.83 puts it above the face's minimal
+/// Errata (docs/errata.md, Lloyd 2006 §5.1, "the face's n′ is not stated"). From behind at
+/// θ = 30°, f/n = 1000, warping each side face with the view frustum's own n′ = n + √(f n) =
+/// 32.62 instead of the face's d_n + √(d_n d_f) = tan θ (n + √(f n)) = 18.83 puts it above the face's minimal
 /// range: by Eq 12 for the face (an overhead frustum with half field of view 45°, near n tan θ,
 /// far f tan θ) each face then costs 499.5 · n′² d_f/(d_n (n′ + d_f − d_n)²) = 1431.5 instead of
 /// 499.5, Σ S̄ = 5727 instead of 1999.
