@@ -21,7 +21,7 @@
 //!
 //! # Stable cascades
 //!
-//! Engines (Unity, Unreal, Filament's and Bevy's stable mode, the "stable CSM" of ShaderX6) trade
+//! Engines (Unity's "Stable Fit", the stabilised cascades of Valient's ShaderX6 chapter) trade
 //! storage for stability under camera motion: each partition is enclosed in its minimal bounding
 //! sphere, which does not turn with the camera, and an orthographic map of side `2R` is aligned
 //! with a light space fixed in the world, its centre snapped to whole texels of the world-fixed
