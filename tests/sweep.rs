@@ -284,3 +284,41 @@ fn per_frame_partition_builders_do_not_allocate() {
         assert_eq!(n, 0, "the serial sweep allocated {n} times");
     }
 }
+
+/// Every scheme sweeps the whole hemisphere without an error and without a non-finite value on
+/// extreme views (f/n from 1.01 to 10⁶, half fov 1° to 80°, aspect 0.5 and 2), the grid including
+/// the horizon, the zenith, straight behind and straight in front.
+#[test]
+fn sweeps_are_finite_on_extreme_views() {
+    use shadow_aliasing::build::Falloff;
+    let grid = SweepGrid::new(7, 16).unwrap();
+    for view in [
+        ViewFrustum::with_aspect(1.0, 1.01, 1f64.to_radians(), 2.0).unwrap(),
+        ViewFrustum::with_aspect(0.01, 1e4, 80f64.to_radians(), 0.5).unwrap(),
+        ViewFrustum::new(1.0, 1e6, 30f64.to_radians()).unwrap(),
+    ] {
+        for partition in [
+            Partition::Single,
+            Partition::Uniform,
+            Partition::Log,
+            Partition::Practical(0.5),
+            Partition::Faces,
+        ] {
+            for rule in [
+                WarpRule::Uniform,
+                WarpRule::Lispsm,
+                WarpRule::LispsmSin,
+                WarpRule::Barroso(Falloff::Barroso),
+                WarpRule::Filament,
+                WarpRule::Minimax,
+            ] {
+                let s = sweep(&view, rule, partition, 3, grid)
+                    .unwrap_or_else(|e| panic!("{view:?} {partition:?} {rule:?}: {e}"));
+                assert!(
+                    s.storage_factor.iter().all(|v| v.is_finite() && *v > 0.0),
+                    "{partition:?} {rule:?}"
+                );
+            }
+        }
+    }
+}
