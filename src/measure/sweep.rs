@@ -271,9 +271,10 @@ impl Sweep {
 /// set its size with `RAYON_NUM_THREADS` or a `rayon::ThreadPool::install`), serial without.
 ///
 /// # Errors
-/// The first error of [`crate::build::scheme::scheme`] in grid order, with the direction
-/// that caused it ([`Error::Degenerate`] wrapping the builder's message); validation errors of
-/// `partition` or `k` as the scheme reports them.
+/// An error of [`crate::build::scheme::scheme`] at some direction, with the direction that
+/// caused it ([`Error::Degenerate`] wrapping the builder's message): serially the first in grid
+/// order, in parallel the first any row reports. Validation errors of the rule, `partition` or
+/// `k` are found first, at the zenith, and reported as the scheme reports them.
 ///
 /// ```
 /// use shadow_aliasing::build::scheme::Partition;
