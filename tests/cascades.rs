@@ -607,3 +607,29 @@ fn adaptive_partitions_by_hand() {
         Err(shadow_aliasing::Error::NoSolution(_))
     ));
 }
+
+/// Stable cascades for all partitions: one per partition, each no better than its tight fit,
+/// the sums the sums; planes outside the view refused.
+#[test]
+fn stable_cascades_for_all_partitions() {
+    use shadow_aliasing::build::cascades::stable_cascades;
+    let view = ViewFrustum::new(0.5, 200.0, 0.6).unwrap();
+    let splits = z_splits(0.5, 200.0, 5, SplitScheme::SelfSimilar).unwrap();
+    let camera =
+        glam::dcamera::rh::view::look_at_mat4(DVec3::new(3.0, 2.0, 5.0), DVec3::ZERO, DVec3::Y);
+    let light = DVec3::new(0.3, -1.0, 0.2);
+    let c = stable_cascades(&view, camera, light, &splits, 1024).unwrap();
+    assert_eq!(c.k(), 5);
+    let mut sum = 0.0;
+    for (i, s) in c.iter().enumerate() {
+        let (a, b) = splits.range(i);
+        let one = stable_cascade(&view, camera, light, a, b, 1024).unwrap();
+        assert_eq!(*s, one);
+        assert!(s.storage_loss() >= 1.0);
+        sum += s.storage_factor;
+    }
+    assert!((c.storage_factor() - sum).abs() <= 1e-12 * sum);
+    assert!(c.storage_factor() >= c.tight_storage_factor());
+    let wide = z_splits(0.25, 200.0, 2, SplitScheme::Uniform).unwrap();
+    assert!(stable_cascades(&view, camera, light, &wide, 1024).is_err());
+}
