@@ -233,6 +233,9 @@ fn per_frame_partition_builders_do_not_allocate() {
             let (s, n) = no_alloc::allocations(|| seams(&view, &out));
             assert!(s.is_ok());
             assert_eq!(n, 0, "seams of {partition:?} allocated");
+            let (a, n) = no_alloc::allocations(|| out.atlas(4096, 4096));
+            assert!(a.is_ok());
+            assert_eq!(n, 0, "the atlas of {partition:?} allocated");
         }
     }
     let splits = z_splits(0.3, 500.0, 4, SplitScheme::SelfSimilar).unwrap();
