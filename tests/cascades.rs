@@ -563,3 +563,73 @@ proptest! {
         }
     }
 }
+
+/// Barroso & Celes Eq 19 through the scheme layer: with the light overhead (γ = π/2) the adaptive
+/// planes are the self-similar ones, so S̄ is Eq 18's; with the light behind (γ = 0) they are
+/// f, f/α, f/α², … (α = 2), and S̄ is Eq 20 per partition, Σ (f_i/n_i)²: at n = 1, f = 100, k = 3
+/// the planes are 1, 25, 50, 100 and S̄ = 25² + 2² + 2² = 633.
+#[test]
+fn adaptive_partitions_by_hand() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let over = DVec3::NEG_Y;
+    let a = scheme(&view, over, WarpRule::Lispsm, Partition::Adaptive, 3).unwrap();
+    let l = scheme(&view, over, WarpRule::Lispsm, Partition::Log, 3).unwrap();
+    assert!((a.storage_factor() - l.storage_factor()).abs() < 1e-9 * l.storage_factor());
+    let eq18 = 3.0 * (100f64.powf(1.0 / 3.0) - 1.0) / (2.0 * 0.5f64.tan());
+    assert!((a.storage_factor() - eq18).abs() < 1e-9 * eq18);
+    let behind = scheme(
+        &view,
+        DVec3::NEG_Z,
+        WarpRule::LispsmSin,
+        Partition::Adaptive,
+        3,
+    )
+    .unwrap();
+    let planes: Vec<(f64, f64)> = behind
+        .partitions()
+        .iter()
+        .map(|p| (p.near, p.far))
+        .collect();
+    assert_eq!(planes, vec![(1.0, 25.0), (25.0, 50.0), (50.0, 100.0)]);
+    assert!((behind.storage_factor() - 633.0).abs() < 1e-9 * 633.0);
+    // f/n = 10 cannot hold five partitions, four of ratio 2 behind the first (10, 5, 2.5, 1.25,
+    // 0.625 < near):
+    // a typed error.
+    let short = ViewFrustum::new(1.0, 10.0, 0.5).unwrap();
+    assert!(matches!(
+        scheme(
+            &short,
+            DVec3::NEG_Z,
+            WarpRule::Lispsm,
+            Partition::Adaptive,
+            5
+        ),
+        Err(shadow_aliasing::Error::NoSolution(_))
+    ));
+}
+
+/// Stable cascades for all partitions: one per partition, each no better than its tight fit,
+/// the sums the sums; planes outside the view refused.
+#[test]
+fn stable_cascades_for_all_partitions() {
+    use shadow_aliasing::build::cascades::stable_cascades;
+    let view = ViewFrustum::new(0.5, 200.0, 0.6).unwrap();
+    let splits = z_splits(0.5, 200.0, 5, SplitScheme::SelfSimilar).unwrap();
+    let camera =
+        glam::dcamera::rh::view::look_at_mat4(DVec3::new(3.0, 2.0, 5.0), DVec3::ZERO, DVec3::Y);
+    let light = DVec3::new(0.3, -1.0, 0.2);
+    let c = stable_cascades(&view, camera, light, &splits, 1024).unwrap();
+    assert_eq!(c.k(), 5);
+    let mut sum = 0.0;
+    for (i, s) in c.iter().enumerate() {
+        let (a, b) = splits.range(i);
+        let one = stable_cascade(&view, camera, light, a, b, 1024).unwrap();
+        assert_eq!(*s, one);
+        assert!(s.storage_loss() >= 1.0);
+        sum += s.storage_factor;
+    }
+    assert!((c.storage_factor() - sum).abs() <= 1e-12 * sum);
+    assert!(c.storage_factor() >= c.tight_storage_factor());
+    let wide = z_splits(0.25, 200.0, 2, SplitScheme::Uniform).unwrap();
+    assert!(stable_cascades(&view, camera, light, &wide, 1024).is_err());
+}

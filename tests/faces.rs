@@ -470,9 +470,9 @@ fn errata_s5_1_bisector_of_unit_vectors() {
     assert!(faces_with_axis(&view, l, true).is_some());
 }
 
-/// Errata (docs/errata.md, Lloyd 2006 §5.1, item 13): the face's n′. From behind at θ = 30°,
-/// f/n = 1000, warping each side face with the view frustum's own n′ = n + √(f n) = 32.62 instead
-/// of the face's d_n + √(d_n d_f) = tan θ (n + √(f n)) = 18.83 puts it above the face's minimal
+/// Errata (docs/errata.md, Lloyd 2006 §5.1, "the face's n′ is not stated"). From behind at
+/// θ = 30°, f/n = 1000, warping each side face with the view frustum's own n′ = n + √(f n) =
+/// 32.62 instead of the face's d_n + √(d_n d_f) = tan θ (n + √(f n)) = 18.83 puts it above the face's minimal
 /// range: by Eq 12 for the face (an overhead frustum with half field of view 45°, near n tan θ,
 /// far f tan θ) each face then costs 499.5 · n′² d_f/(d_n (n′ + d_f − d_n)²) = 1431.5 instead of
 /// 499.5, Σ S̄ = 5727 instead of 1999.
@@ -542,4 +542,33 @@ fn light_along_a_side_edge() {
         assert!(inside, "point {i} {p}");
     }
     assert!(parts.storage_factor().is_finite());
+}
+
+/// No jump where the choice switches between front and back faces (v·y = 0, the light
+/// perpendicular to the view) nor where faces appear edge-on: Σ S̄ is continuous and, by the
+/// frustum's symmetry, even in the tilt (f/n = 100, θ = 0.5, k = 2: 16.4744 overhead).
+#[test]
+fn storage_is_continuous_through_the_face_switch() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let s = |l: DVec3| {
+        face_partitions(&view, l, FaceWarp::Lispsm, 2)
+            .unwrap()
+            .storage_factor()
+    };
+    let at0 = s(DVec3::NEG_Y);
+    for e in [1e-8, 1e-6, 2e-6, 1e-5] {
+        let behind = s(DVec3::new(0.0, -1.0, -e));
+        let front = s(DVec3::new(0.0, -1.0, e));
+        assert!(
+            (behind - front).abs() < 1e-9 * at0,
+            "{e}: {behind} vs {front}"
+        );
+        assert!(
+            (behind - at0).abs() < 10.0 * e * at0,
+            "{e}: {behind} vs {at0}"
+        );
+        let left = s(DVec3::new(-e, -1.0, -0.3));
+        let right = s(DVec3::new(e, -1.0, -0.3));
+        assert!((left - right).abs() < 1e-9 * left);
+    }
 }
