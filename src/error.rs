@@ -60,77 +60,119 @@ pub(crate) fn fmt_num(v: f64) -> String {
 }
 
 /// `v` must be finite.
+///
+/// The validators are `#[inline]` with their error paths in `#[cold]`, never-inlined functions, so
+/// that a closed form's hot path is a few compares and its caller can inline it (the `format!`
+/// of a message costs nothing until a value is actually refused).
+#[inline]
 pub(crate) fn finite(name: &'static str, v: f64) -> Result<f64> {
     if v.is_finite() {
         Ok(v)
     } else {
-        Err(Error::invalid(
-            name,
-            format!("must be a finite number (got {})", fmt_num(v)),
-        ))
+        Err(not_finite(name, v))
     }
+}
+
+#[cold]
+#[inline(never)]
+fn not_finite(name: &'static str, v: f64) -> Error {
+    Error::invalid(
+        name,
+        format!("must be a finite number (got {})", fmt_num(v)),
+    )
 }
 
 /// `v` must be finite and strictly positive.
+#[inline]
 pub(crate) fn positive(name: &'static str, v: f64) -> Result<f64> {
-    finite(name, v)?;
-    if v > 0.0 {
+    if v.is_finite() && v > 0.0 {
         Ok(v)
     } else {
-        Err(Error::invalid(
-            name,
-            format!("must be greater than 0 (got {})", fmt_num(v)),
-        ))
+        Err(not_positive(name, v))
     }
+}
+
+#[cold]
+#[inline(never)]
+fn not_positive(name: &'static str, v: f64) -> Error {
+    if !v.is_finite() {
+        return not_finite(name, v);
+    }
+    Error::invalid(name, format!("must be greater than 0 (got {})", fmt_num(v)))
 }
 
 /// `v` must be finite and lie in the closed interval `[lo, hi]`.
+#[inline]
 pub(crate) fn in_closed(name: &'static str, v: f64, lo: f64, hi: f64) -> Result<f64> {
-    finite(name, v)?;
-    if (lo..=hi).contains(&v) {
+    if v.is_finite() && (lo..=hi).contains(&v) {
         Ok(v)
     } else {
-        Err(Error::invalid(
-            name,
-            format!(
-                "must lie in [{}, {}] (got {})",
-                fmt_num(lo),
-                fmt_num(hi),
-                fmt_num(v)
-            ),
-        ))
+        Err(not_in_closed(name, v, lo, hi))
     }
 }
 
+#[cold]
+#[inline(never)]
+fn not_in_closed(name: &'static str, v: f64, lo: f64, hi: f64) -> Error {
+    if !v.is_finite() {
+        return not_finite(name, v);
+    }
+    Error::invalid(
+        name,
+        format!(
+            "must lie in [{}, {}] (got {})",
+            fmt_num(lo),
+            fmt_num(hi),
+            fmt_num(v)
+        ),
+    )
+}
+
 /// `v` must be finite and lie in the open interval `(lo, hi)`.
+#[inline]
 pub(crate) fn in_open(name: &'static str, v: f64, lo: f64, hi: f64) -> Result<f64> {
-    finite(name, v)?;
-    if v > lo && v < hi {
+    if v.is_finite() && v > lo && v < hi {
         Ok(v)
     } else {
-        Err(Error::invalid(
-            name,
-            format!(
-                "must lie in ({}, {}) (got {})",
-                fmt_num(lo),
-                fmt_num(hi),
-                fmt_num(v)
-            ),
-        ))
+        Err(not_in_open(name, v, lo, hi))
     }
+}
+
+#[cold]
+#[inline(never)]
+fn not_in_open(name: &'static str, v: f64, lo: f64, hi: f64) -> Error {
+    if !v.is_finite() {
+        return not_finite(name, v);
+    }
+    Error::invalid(
+        name,
+        format!(
+            "must lie in ({}, {}) (got {})",
+            fmt_num(lo),
+            fmt_num(hi),
+            fmt_num(v)
+        ),
+    )
 }
 
 /// Checks that a computed value is finite; a non-finite result is reported, never returned.
 #[allow(dead_code)]
+#[inline]
 pub(crate) fn finite_result(what: &str, v: f64) -> Result<f64> {
     if v.is_finite() {
         Ok(v)
     } else {
-        Err(Error::Degenerate(format!(
-            "{what} is not finite ({}) for these inputs",
-            fmt_num(v)
-        )))
+        Err(not_finite_result(what, v))
     }
+}
+
+#[cold]
+#[inline(never)]
+fn not_finite_result(what: &str, v: f64) -> Error {
+    Error::Degenerate(format!(
+        "{what} is not finite ({}) for these inputs",
+        fmt_num(v)
+    ))
 }
 
 #[cfg(test)]

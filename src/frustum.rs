@@ -25,6 +25,8 @@ pub struct ViewFrustum {
     far: f64,
     half_fov: f64,
     aspect: f64,
+    /// tan θ, computed once here: every builder and most closed forms need it.
+    tan_half_fov: f64,
 }
 
 impl ViewFrustum {
@@ -50,18 +52,7 @@ impl ViewFrustum {
     /// # Errors
     /// As [`ViewFrustum::new`], and `aspect` when it is not finite and positive.
     pub fn with_aspect(near: f64, far: f64, half_fov: f64, aspect: f64) -> Result<Self> {
-        let near = positive("near", near)?;
-        let far = positive("far", far)?;
-        if far <= near {
-            return Err(Error::invalid(
-                "far",
-                format!(
-                    "must be greater than near (got near={}, far={})",
-                    fmt_num(near),
-                    fmt_num(far)
-                ),
-            ));
-        }
+        let (near, far) = depths(near, far)?;
         let half_fov = in_open("half_fov", half_fov, 0.0, std::f64::consts::FRAC_PI_2)?;
         let aspect = positive("aspect", aspect)?;
         Ok(Self {
@@ -69,6 +60,7 @@ impl ViewFrustum {
             far,
             half_fov,
             aspect,
+            tan_half_fov: half_fov.tan(),
         })
     }
 
@@ -106,7 +98,7 @@ impl ViewFrustum {
     #[inline]
     #[must_use]
     pub fn tan_half_fov(&self) -> f64 {
-        self.half_fov.tan()
+        self.tan_half_fov
     }
     /// LiSPSM's warp parameter for the light overhead, n′ = n + √(f n) (Lloyd 2006 §4.1,
     /// Wimmer et al. 2004).
@@ -120,8 +112,10 @@ impl ViewFrustum {
     ///
     /// # Errors
     /// As [`ViewFrustum::new`].
+    #[inline]
     pub fn with_depth_range(&self, near: f64, far: f64) -> Result<Self> {
-        Self::with_aspect(near, far, self.half_fov, self.aspect)
+        let (near, far) = depths(near, far)?;
+        Ok(Self { near, far, ..*self })
     }
 
     /// The eight corners in eye space: near plane first (−x−y, +x−y, +x+y, −x+y), then far.
@@ -152,6 +146,30 @@ impl ViewFrustum {
             && p.y.abs() <= h + slack
             && p.x.abs() <= w + slack
     }
+}
+
+/// `0 < near < far`, both finite (the checks of [`ViewFrustum::with_aspect`], in its order).
+#[inline]
+fn depths(near: f64, far: f64) -> Result<(f64, f64)> {
+    let near = positive("near", near)?;
+    let far = positive("far", far)?;
+    if far <= near {
+        return Err(far_not_beyond_near(near, far));
+    }
+    Ok((near, far))
+}
+
+#[cold]
+#[inline(never)]
+fn far_not_beyond_near(near: f64, far: f64) -> Error {
+    Error::invalid(
+        "far",
+        format!(
+            "must be greater than near (got near={}, far={})",
+            fmt_num(near),
+            fmt_num(far)
+        ),
+    )
 }
 
 /// The warp parameter n′: the distance from the warping frustum's centre of projection to the
@@ -304,21 +322,27 @@ impl LightAngle {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir` for a zero, tiny or non-finite vector.
+#[inline]
 pub fn unit_light_dir(light_dir: DVec3) -> Result<DVec3> {
-    if !light_dir.is_finite() {
-        return Err(Error::invalid(
-            "light_dir",
-            format!("must be finite (got {light_dir})"),
-        ));
-    }
     let len = light_dir.length();
-    if len <= 1e-300 || !len.is_finite() {
-        return Err(Error::invalid(
+    if light_dir.is_finite() && len > 1e-300 && len.is_finite() {
+        Ok(light_dir / len)
+    } else {
+        Err(bad_light_dir(light_dir))
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn bad_light_dir(light_dir: DVec3) -> Error {
+    if !light_dir.is_finite() {
+        Error::invalid("light_dir", format!("must be finite (got {light_dir})"))
+    } else {
+        Error::invalid(
             "light_dir",
             format!("must be a non-zero vector (got {light_dir})"),
-        ));
+        )
     }
-    Ok(light_dir / len)
 }
 
 #[cfg(test)]
