@@ -96,19 +96,29 @@ impl LightSpace {
 pub fn light_space(light_dir: DVec3, axis: DVec3) -> Result<LightSpace> {
     let l = unit_light_dir(light_dir)?;
     let a = unit_axis(axis)?;
+    Ok(light_space_unit(l, a))
+}
+
+/// [`light_space`] for a unit light direction `l` and a unit axis `a`, already validated.
+#[inline]
+pub(crate) fn light_space_unit(l: DVec3, a: DVec3) -> LightSpace {
     let y = -l;
     let mut z = a - a.dot(y) * y;
-    if z.length() < PARALLEL_TOLERANCE {
+    let mut len = z.length();
+    if len < PARALLEL_TOLERANCE {
         z = DVec3::Y - y.y * y;
-        if z.length() < 0.5 {
+        len = z.length();
+        if len < 0.5 {
             z = DVec3::X - y.x * y;
+            len = z.length();
         }
     }
-    let z = z.normalize();
+    // `z.normalize()` without its second square root (the same arithmetic: z · (1/|z|)).
+    let z = z * (1.0 / len);
     let x = y.cross(z).normalize();
     // Re-orthogonalise so the frame is orthonormal to rounding.
     let z = x.cross(y);
-    Ok(LightSpace { x, y, z })
+    LightSpace { x, y, z }
 }
 
 fn unit_axis(axis: DVec3) -> Result<DVec3> {
