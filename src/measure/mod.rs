@@ -195,7 +195,77 @@ pub struct FrustumError {
 /// # Errors
 /// As [`point_error`], for any vertex.
 pub fn frustum_max(view: &ViewFrustum, shadow: &ShadowMap) -> Result<FrustumError> {
-    max_over(view, shadow, view.corners().into_iter())
+    let corners = view.corners();
+    match vertex_max_fast(view, shadow, &corners) {
+        Some(e) => Ok(e),
+        // Anything the fast pass is not sure of (an error, or a value near a tolerance) is
+        // measured point by point, which reports the same error `point_error` does.
+        None => max_over(view, shadow, corners.into_iter()),
+    }
+}
+
+/// [`max_over`] at the frustum's eight corners without a division or square root per gradient:
+/// `None` whenever [`point_error`] could fail at a corner (or the light direction is not unit
+/// length), so the caller falls back to it. With `h = M (p, 1)`, `G_s = h.w M₀ − h.x M₃`,
+/// `G_t = h.w M₁ − h.y M₃` (rows of M, first three entries; `∇s = G_s/(2 h.w²)`,
+/// `∇t = G_t/(2 h.w²)`), `D = (G_s × G_t)·L` and `g = |G_t − (G_t·L) L|`, the widths of the module
+/// docs give, with unit resolutions,
+///
+/// ```text
+/// m_x = h.w² g / (|D| z tan θ),   m_z = h.w² |D| / (|D| g z tan θ)     (z = −p.z)
+/// ```
+///
+/// one square root and one division per corner. The light-ray test `|∇s·L| ≤ 10⁻⁷ |∇s|` is
+/// scale-free, so it is made on `G_s`, `G_t` in squares, with a 10⁻⁹ relative margin inside
+/// which the point-by-point path decides.
+#[inline]
+fn vertex_max_fast(
+    view: &ViewFrustum,
+    shadow: &ShadowMap,
+    corners: &[DVec3; 8],
+) -> Option<FrustumError> {
+    let l = shadow.light_dir;
+    let unit = (l.length_squared() - 1.0).abs() <= 1e-12;
+    if !unit {
+        return None;
+    }
+    let m = &shadow.matrix;
+    let r0 = m.row(0).truncate();
+    let r1 = m.row(1).truncate();
+    let r3 = m.row(3).truncate();
+    let tol2 = LIGHT_RAY_TOLERANCE * LIGHT_RAY_TOLERANCE * (1.0 - 1e-9);
+    let t = view.tan_half_fov();
+    let (mut mx, mut mz) = (0.0f64, 0.0f64);
+    let mut ok = true;
+    for p in corners {
+        let h = *m * p.extend(1.0);
+        let z = -p.z;
+        let gs = h.w * r0 - h.x * r3;
+        let gt = h.w * r1 - h.y * r3;
+        let (gsl, gtl) = (gs.dot(l), gt.dot(l));
+        let gt2 = gt.length_squared();
+        let g = (gt2 - gtl * gtl).max(0.0).sqrt();
+        let d = gs.cross(gt).dot(l).abs();
+        let w2 = h.w * h.w;
+        let inv = 1.0 / (d * g * z * t);
+        let (px, pz) = (w2 * g * g * inv, w2 * d * inv);
+        ok &= h.is_finite()
+            && h.w > 0.0
+            && z > 0.0
+            && gsl * gsl <= tol2 * gs.length_squared()
+            && gtl * gtl <= tol2 * gt2
+            && px.is_finite()
+            && pz.is_finite()
+            && px > 0.0
+            && pz > 0.0;
+        mx = mx.max(px);
+        mz = mz.max(pz);
+    }
+    ok.then_some(FrustumError {
+        max_mx: mx,
+        max_mz: mz,
+        storage_factor: mx * mz,
+    })
 }
 
 /// As [`frustum_max`], but over a dense `n × n × n` grid of the frustum (in depth, and in the
