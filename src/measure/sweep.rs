@@ -324,22 +324,25 @@ pub fn sweep_into(
     let mut probe = SchemeResult::default();
     scheme_into(view, DVec3::NEG_Y, rule, partition, k, &mut probe)?;
     let prep = Prepared::new(view);
+    // The azimuths' sines and cosines, once for the whole sweep rather than once per direction
+    // (the same values: the same `sin_cos` of the same azimuth).
+    let azimuths: Vec<(f64, f64)> = (0..grid.azimuths)
+        .map(|j| grid.azimuth(j).sin_cos())
+        .collect();
     let row = |i: usize, values: &mut [f64]| -> Result<()> {
         let el = grid.elevation(i);
         let (se, ce) = el.sin_cos();
         let mut buf = SchemeResult::default();
-        for (j, v) in values.iter_mut().enumerate() {
-            let az = grid.azimuth(j);
+        for ((j, v), &(sa, ca)) in values.iter_mut().enumerate().zip(&azimuths) {
             // light_dir_from_angles(el, az), with el's sine and cosine taken once per row,
             // normalised as `scheme` normalises it (so the value is bit for bit `scheme`'s).
-            let (sa, ca) = az.sin_cos();
             let l = -DVec3::new(ce * sa, se, ce * ca);
             let l = l / l.length();
             scheme_into_prepared(&prep, l, rule, partition, k, &mut buf).map_err(|e| {
                 Error::Degenerate(format!(
                     "at elevation={}, azimuth={}: {e}",
                     fmt_num(el),
-                    fmt_num(az)
+                    fmt_num(grid.azimuth(j))
                 ))
             })?;
             *v = buf.storage_factor();
