@@ -324,42 +324,72 @@ pub fn sweep_into(
     let mut probe = SchemeResult::default();
     scheme_into(view, DVec3::NEG_Y, rule, partition, k, &mut probe)?;
     let prep = Prepared::new(view);
-    // The azimuths' sines and cosines, once for the whole sweep rather than once per direction
-    // (the same values: the same `sin_cos` of the same azimuth).
-    let azimuths: Vec<(f64, f64)> = (0..grid.azimuths)
-        .map(|j| grid.azimuth(j).sin_cos())
-        .collect();
-    let row = |i: usize, values: &mut [f64]| -> Result<()> {
+    // S̄ of one direction: light_dir_from_angles(el, az) from the angles' sines and cosines,
+    // normalised as `scheme` normalises it (so the value is bit for bit `scheme`'s).
+    let one = |(se, ce): (f64, f64), (sa, ca): (f64, f64), buf: &mut SchemeResult| {
+        let l = -DVec3::new(ce * sa, se, ce * ca);
+        let l = l / l.length();
+        scheme_into_prepared(&prep, l, rule, partition, k, buf).map(|()| buf.storage_factor())
+    };
+    // The azimuths' sines and cosines are taken once per block of columns for all rows, not once
+    // per direction (the same values: the same `sin_cos` of the same azimuth), in a stack table.
+    const BLOCK: usize = 512;
+    let mut table = [(0.0, 0.0); BLOCK];
+    let a = grid.azimuths;
+    let mut ok = true;
+    for first in (0..a).step_by(BLOCK) {
+        let n = BLOCK.min(a - first);
+        for (j, t) in table[..n].iter_mut().enumerate() {
+            *t = grid.azimuth(first + j).sin_cos();
+        }
+        let table = &table[..n];
+        let row = |i: usize, values: &mut [f64]| -> bool {
+            let el = grid.elevation(i).sin_cos();
+            let mut buf = SchemeResult::default();
+            for (v, &az) in values[first..first + n].iter_mut().zip(table) {
+                match one(el, az, &mut buf) {
+                    Ok(s) => *v = s,
+                    Err(_) => return false,
+                }
+            }
+            true
+        };
+        #[cfg(feature = "parallel")]
+        {
+            use rayon::prelude::*;
+            ok = out
+                .par_chunks_mut(a)
+                .enumerate()
+                .all(|(i, values)| row(i, values));
+        }
+        #[cfg(not(feature = "parallel"))]
+        {
+            ok = out
+                .chunks_mut(a)
+                .enumerate()
+                .all(|(i, values)| row(i, values));
+        }
+        if !ok {
+            break;
+        }
+    }
+    if ok {
+        return Ok(());
+    }
+    // Some direction failed: find the first in grid order, serially, and report it.
+    let mut buf = SchemeResult::default();
+    for i in 0..grid.elevations {
         let el = grid.elevation(i);
-        let (se, ce) = el.sin_cos();
-        let mut buf = SchemeResult::default();
-        for ((j, v), &(sa, ca)) in values.iter_mut().enumerate().zip(&azimuths) {
-            // light_dir_from_angles(el, az), with el's sine and cosine taken once per row,
-            // normalised as `scheme` normalises it (so the value is bit for bit `scheme`'s).
-            let l = -DVec3::new(ce * sa, se, ce * ca);
-            let l = l / l.length();
-            scheme_into_prepared(&prep, l, rule, partition, k, &mut buf).map_err(|e| {
+        for j in 0..a {
+            let az = grid.azimuth(j);
+            one(el.sin_cos(), az.sin_cos(), &mut buf).map_err(|e| {
                 Error::Degenerate(format!(
                     "at elevation={}, azimuth={}: {e}",
                     fmt_num(el),
-                    fmt_num(grid.azimuth(j))
+                    fmt_num(az)
                 ))
             })?;
-            *v = buf.storage_factor();
         }
-        Ok(())
-    };
-    #[cfg(feature = "parallel")]
-    {
-        use rayon::prelude::*;
-        out.par_chunks_mut(grid.azimuths)
-            .enumerate()
-            .try_for_each(|(i, values)| row(i, values))
     }
-    #[cfg(not(feature = "parallel"))]
-    {
-        out.chunks_mut(grid.azimuths)
-            .enumerate()
-            .try_for_each(|(i, values)| row(i, values))
-    }
+    Ok(())
 }
