@@ -158,8 +158,8 @@ impl FrustumInLight {
             for (j, qj) in c.into_iter().enumerate() {
                 q[4 * k + j] = qj;
                 depth[4 * k + j] = d;
-                z0 = z0.min(qj.z);
-                z1 = z1.max(qj.z);
+                z0 = fmin(z0, qj.z);
+                z1 = fmax(z1, qj.z);
             }
         }
         // sin γ = |l × (0, 0, −1)| = √(l.x² + l.y²) for the unit light direction l: accurate near 0.
@@ -266,6 +266,29 @@ pub(crate) fn verify_clip<'a>(m: &DMat4, points: impl Iterator<Item = &'a DVec3>
     Ok(())
 }
 
+/// `min(a, b)` for values that are never NaN (finite corner coordinates): one `minsd`, where
+/// `f64::min`'s NaN handling costs three more instructions on x86-64, in loops that run 8 to 40
+/// times per map. Equal to `a.min(b)` whenever neither is NaN (a NaN `b` is returned, so it is not
+/// silently dropped either).
+#[inline(always)]
+pub(crate) fn fmin(a: f64, b: f64) -> f64 {
+    if a < b {
+        a
+    } else {
+        b
+    }
+}
+
+/// `max(a, b)` for values that are never NaN; see [`fmin`].
+#[inline(always)]
+pub(crate) fn fmax(a: f64, b: f64) -> f64 {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
+
 /// Running min/max of u = x/w and v = y/w.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Ranges {
@@ -282,8 +305,8 @@ impl Ranges {
     }
     #[inline]
     pub(crate) fn add(&mut self, u: f64, v: f64) {
-        self.u = (self.u.0.min(u), self.u.1.max(u));
-        self.v = (self.v.0.min(v), self.v.1.max(v));
+        self.u = (fmin(self.u.0, u), fmax(self.u.1, u));
+        self.v = (fmin(self.v.0, v), fmax(self.v.1, v));
     }
 }
 
@@ -409,9 +432,10 @@ pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4>
             r.add(q.x * iw, q.y * iw);
         }
     }
-    let extent =
-        fl.q.iter()
-            .fold(0.0f64, |m, q| m.max(q.abs().max_element()));
+    let extent = fl.q.iter().fold(0.0f64, |m, q| {
+        let a = q.abs();
+        fmax(m, fmax(fmax(a.x, a.y), a.z))
+    });
     let m = warp_matrix(&fl.ls, fl.z0, fl.delta, rho, &r, extent)?;
     if clip_ok_at_corners(&m, &fl.corners) {
         Ok(m)

@@ -258,8 +258,9 @@ fn vertex_max_fast(
             && pz.is_finite()
             && px > 0.0
             && pz > 0.0;
-        mx = mx.max(px);
-        mz = mz.max(pz);
+        // A NaN here fails `ok`, so the one-instruction max is `f64::max` for every kept value.
+        mx = crate::build::warp::fmax(mx, px);
+        mz = crate::build::warp::fmax(mz, pz);
     }
     ok.then_some(FrustumError {
         max_mx: mx,

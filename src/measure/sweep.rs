@@ -45,6 +45,7 @@ use crate::build::scheme::{scheme_into, scheme_into_prepared, Partition, Prepare
 /// The jump of error across each seam between neighbouring partitions of a scheme (defined with
 /// the scheme, re-exported here beside the other measurements of partitions).
 pub use crate::build::scheme::{seams, Seam, Seams};
+use crate::build::warp::fmax;
 use crate::build::WarpRule;
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::ViewFrustum;
@@ -139,8 +140,10 @@ pub fn vertex_max(
         if !(inv.is_finite() && gtp2 > 0.0) {
             return None;
         }
-        mx2 = mx2.max(w4 * gtp2 * gtp2 * inv);
-        mz2 = mz2.max(w4 * d2 * inv);
+        // `fmax`: one instruction; the values are finite here (checked above, and the result
+        // below), so it is `f64::max`.
+        mx2 = fmax(mx2, w4 * gtp2 * gtp2 * inv);
+        mz2 = fmax(mz2, w4 * d2 * inv);
     }
     let t2 = tan_half_fov * tan_half_fov;
     let (mx, mz) = ((mx2 / t2).sqrt(), (mz2 / t2).sqrt());
