@@ -45,6 +45,7 @@
 //! ```
 
 pub use crate::analytic::partition::{SplitScheme, Splits, MAX_PARTITIONS};
+use crate::build::warp::{warp_prepared, PreparedLight};
 use crate::build::{light_space, warp, ShadowMatrix, WarpRule};
 use crate::error::{fmt_num, in_closed, Error, Result};
 use crate::frustum::{unit_light_dir, NPrime, ViewFrustum};
@@ -208,6 +209,8 @@ pub(crate) fn visit_cascades(
         ));
     }
     let k = splits.k();
+    // `warp(&sub, light_dir, rule)` for every partition, with the light space computed once.
+    let light = PreparedLight::new(light_dir)?;
     let tan = view.tan_half_fov();
     let ta = tan * view.aspect();
     // Corner directions at unit depth, near-plane order of `ViewFrustum::corners`.
@@ -225,7 +228,7 @@ pub(crate) fn visit_cascades(
             b
         };
         let sub = view.with_depth_range(a, end)?;
-        let shadow = warp(&sub, light_dir, rule)?;
+        let shadow = warp_prepared(&sub, &light, rule)?;
         let mut corners = [DVec3::ZERO; 8];
         for (j, d) in dirs.iter().enumerate() {
             corners[j] = *d * a;

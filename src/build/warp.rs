@@ -132,7 +132,17 @@ impl FrustumInLight {
     pub(crate) fn new(view: &ViewFrustum, light_dir: DVec3) -> Result<Self> {
         let l = unit_light_dir(light_dir)?;
         // The validated −Z axis is −Z exactly.
-        let ls = light_space_unit(l, DVec3::NEG_Z);
+        Ok(Self::in_light_space(
+            view,
+            l,
+            light_space_unit(l, DVec3::NEG_Z),
+        ))
+    }
+
+    /// As [`FrustumInLight::new`] with `l = unit_light_dir(light_dir)` and
+    /// `ls = light_space_unit(l, −Z)` already computed (shared by a light's cascades).
+    #[inline(always)]
+    pub(crate) fn in_light_space(view: &ViewFrustum, l: DVec3, ls: LightSpace) -> Self {
         let corners = view.corners();
         // The corners are (±w, ±h, −d) at d = near, far; their light-space coordinates
         // `e·c = (e.x c.x + e.y c.y) + e.z c.z` for e = x, y, z share the products e.x w, e.y h,
@@ -163,7 +173,7 @@ impl FrustumInLight {
             }
         }
         // sin γ = |l × (0, 0, −1)| = √(l.x² + l.y²) for the unit light direction l: accurate near 0.
-        Ok(Self {
+        Self {
             ls,
             corners,
             q,
@@ -171,7 +181,7 @@ impl FrustumInLight {
             z0,
             delta: z1 - z0,
             sin_gamma: (l.x * l.x + l.y * l.y).sqrt().min(1.0),
-        })
+        }
     }
 }
 
@@ -398,8 +408,45 @@ fn bad_n_prime(v: f64) -> Error {
 /// ```
 pub fn warp(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<ShadowMatrix> {
     let fl = FrustumInLight::new(view, light_dir)?;
-    let n_prime = rule_n_prime(view, &fl, rule)?;
-    let matrix = fit_frustum(&fl, n_prime)?;
+    warp_in(view, &fl, rule)
+}
+
+/// A light's view-axis light space, computed once for several (sub)frusta: `warp_prepared`
+/// with it is [`warp()`] bit for bit.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PreparedLight {
+    l: DVec3,
+    ls: LightSpace,
+}
+
+impl PreparedLight {
+    /// # Errors
+    /// As [`unit_light_dir`].
+    #[inline]
+    pub(crate) fn new(light_dir: DVec3) -> Result<Self> {
+        let l = unit_light_dir(light_dir)?;
+        Ok(Self {
+            l,
+            ls: light_space_unit(l, DVec3::NEG_Z),
+        })
+    }
+}
+
+/// [`warp()`] for a prepared light.
+#[inline]
+pub(crate) fn warp_prepared(
+    view: &ViewFrustum,
+    light: &PreparedLight,
+    rule: WarpRule,
+) -> Result<ShadowMatrix> {
+    let fl = FrustumInLight::in_light_space(view, light.l, light.ls);
+    warp_in(view, &fl, rule)
+}
+
+#[inline(always)]
+fn warp_in(view: &ViewFrustum, fl: &FrustumInLight, rule: WarpRule) -> Result<ShadowMatrix> {
+    let n_prime = rule_n_prime(view, fl, rule)?;
+    let matrix = fit_frustum(fl, n_prime)?;
     Ok(ShadowMatrix {
         matrix,
         light_dir: fl.ls.light_dir(),
