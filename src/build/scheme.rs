@@ -38,7 +38,8 @@ use crate::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
 use crate::build::atlas::{layout, Atlas, AtlasEntry, MAX_ATLAS_ENTRIES};
 use crate::build::cascades::visit_cascades;
 use crate::build::faces::{visit_face_partitions, Face, FaceWarp, MAX_FACE_PARTITIONS};
-use crate::build::{warp, ClipDepth, WarpRule};
+use crate::build::warp::{warp_prepared, PreparedLight};
+use crate::build::{ClipDepth, WarpRule};
 use crate::error::{Error, Result};
 use crate::frustum::{unit_light_dir, LightAngle, NPrime, ViewFrustum};
 use crate::measure::sweep::vertex_max;
@@ -319,7 +320,8 @@ fn fill(
     let splits = |scheme: SplitScheme| z_splits(view.near(), view.far(), k, scheme);
     let planes: Splits = match partition {
         Partition::Single => {
-            let s = warp(view, l, rule)?;
+            // `warp(view, l, rule)`, inlined here.
+            let s = warp_prepared(view, &PreparedLight::new(l)?, rule)?;
             let e =
                 vertex_max(&s.matrix, s.light_dir, prep.tan, &prep.corners).ok_or_else(|| {
                     Error::Degenerate("the map is singular at a frustum corner".into())
