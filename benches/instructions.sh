@@ -16,7 +16,7 @@ out=$(mktemp -d)
 # Line tables so callgrind attributes inlined code to files; a separate target dir so the
 # ordinary bench build is not invalidated.
 export CARGO_PROFILE_BENCH_DEBUG=line-tables-only CARGO_TARGET_DIR=target/prof
-exe=$(cargo bench --bench "$bench" --no-run --message-format=json 2>/dev/null |
+exe=$(cargo bench --bench "$bench" ${FEATURES:+--features "$FEATURES"} --no-run --message-format=json 2>/dev/null |
   python3 -c 'import json,sys
 for l in sys.stdin:
     m=json.loads(l)
