@@ -231,22 +231,30 @@ pub fn fit_warp(points: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DM
     let mut extent = 0.0f64;
     for p in points {
         if !p.is_finite() {
-            return Err(Error::invalid(
-                "points",
-                format!("must be finite (got {p})"),
-            ));
+            return Err(not_finite_point(*p));
         }
+        // Finite values: the one-instruction min/max are `f64::min`/`max`.
         let z = ls.z.dot(*p);
-        z0 = z0.min(z);
-        z1 = z1.max(z);
-        extent = extent.max(p.abs().max_element());
+        z0 = fmin(z0, z);
+        z1 = fmax(z1, z);
+        let a = p.abs();
+        extent = fmax(extent, fmax(fmax(a.x, a.y), a.z));
     }
     let delta = z1 - z0;
     let mut range = Ranges::new();
-    for p in points {
-        let q = ls.to_light(*p);
-        let w = 1.0 + rho * (q.z - z0);
-        range.add(q.x / w, q.y / w);
+    if rho == 0.0 {
+        // w = 1 exactly.
+        for p in points {
+            let q = ls.to_light(*p);
+            range.add(q.x, q.y);
+        }
+    } else {
+        // One division per point, as `fit_frustum` (within an ulp of x/w and y/w).
+        for p in points {
+            let q = ls.to_light(*p);
+            let iw = 1.0 / (1.0 + rho * (q.z - z0));
+            range.add(q.x * iw, q.y * iw);
+        }
     }
     let m = warp_matrix(ls, z0, delta, rho, &range, extent)?;
     verify_clip(&m, points.iter())?;
@@ -365,6 +373,12 @@ fn no_extent(dir: &str, v: f64) -> Error {
         "the points have no extent {dir} the warp axis (extent {})",
         fmt_num(v)
     ))
+}
+
+#[cold]
+#[inline(never)]
+fn not_finite_point(p: DVec3) -> Error {
+    Error::invalid("points", format!("must be finite (got {p})"))
 }
 
 #[cold]
