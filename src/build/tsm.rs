@@ -439,15 +439,17 @@ impl Core<'_> {
                 tsm_eta(lambda, delta_p, xi)
             }
         };
-        let fast = FastArea::new(xz, hull, z0, lambda);
-        let area_at = |xi: f64| match eta_for(xi) {
-            Some(e) => fast.area(e),
-            None => focus_area(&Analytic::new(xz, z0, lambda, None), hull),
-        };
+
         let (eta, xi) = match search {
             TsmSearch::EightyPercent => (eta_for(TSM_80_PERCENT_LINE), TSM_80_PERCENT_LINE),
             TsmSearch::Line(xi) => (eta_for(xi), xi),
             TsmSearch::Iterative { map_lines } | TsmSearch::IterativeExhaustive { map_lines } => {
+                // Built only for the line searches (7 KB of tables the fixed-line rules skip).
+                let fast = FastArea::new(xz, hull, z0, lambda);
+                let area_at = |xi: f64| match eta_for(xi) {
+                    Some(e) => fast.area(e),
+                    None => focus_area(&Analytic::new(xz, z0, lambda, None), hull),
+                };
                 let x = f64::from(map_lines);
                 let line = |k: u32| 1.0 - 2.0 * f64::from(k) / x;
                 let k0 = ((0.8 * x).round() as u32).max(1);
