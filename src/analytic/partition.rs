@@ -1,1 +1,341 @@
-//! (being written)
+//! z-partitions (cascades): where to split the view frustum along its depth, and what each
+//! scheme costs in shadow-map storage.
+//!
+//! # Split planes
+//!
+//! [`z_splits`] returns the `k + 1` plane depths `near = z₀ < z₁ < … < z_k = far` of a
+//! [`SplitScheme`]: the papers' self-similar (logarithmic) scheme (Lloyd 2006 Eq 15, 16;
+//! Lloyd 2005 §4 with near = 1, far = α), the uniform one, the practical λ-blend of the two
+//! that engines use, Barroso & Celes' adaptive scheme (Eq 19) and Unreal's exponent
+//! distribution. All of it lives in a fixed-size [`Splits`] (no heap allocation), so a
+//! renderer may call it every frame.
+//!
+//! ```
+//! use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
+//! let s = z_splits(1.0, 1000.0, 3, SplitScheme::SelfSimilar)?;
+//! let p = s.planes();
+//! assert_eq!(p.len(), 4);
+//! assert!((p[1] - 10.0).abs() < 1e-12 && (p[2] - 100.0).abs() < 1e-12);
+//! assert_eq!(s.range(0), (1.0, p[1]));
+//! # Ok::<(), shadow_aliasing::Error>(())
+//! ```
+
+use crate::error::{fmt_num, in_closed, positive, Error, Result};
+
+/// The largest number of z-partitions a [`Splits`] holds.
+pub const MAX_PARTITIONS: usize = 16;
+
+/// The depths of the planes that cut `[near, far]` into `k` z-partitions, near to far.
+///
+/// Invariant: `1 ≤ k ≤ MAX_PARTITIONS`, and `planes()` holds `k + 1` finite, positive,
+/// strictly increasing depths. Stored in a fixed array: no heap allocation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Splits {
+    planes: [f64; MAX_PARTITIONS + 1],
+    k: usize,
+}
+
+impl Splits {
+    /// Splits from explicit plane depths, near to far (for instance a renderer's own fractions
+    /// scaled to its depth range).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `planes` unless there are 2 to `MAX_PARTITIONS + 1`
+    /// values, each finite and positive, strictly increasing.
+    ///
+    /// ```
+    /// # use shadow_aliasing::analytic::partition::Splits;
+    /// let s = Splits::from_planes(&[1.0, 5.0, 20.0])?;
+    /// assert_eq!(s.k(), 2);
+    /// assert!(Splits::from_planes(&[1.0, 1.0]).is_err());
+    /// # Ok::<(), shadow_aliasing::Error>(())
+    /// ```
+    pub fn from_planes(planes: &[f64]) -> Result<Splits> {
+        if planes.len() < 2 || planes.len() > MAX_PARTITIONS + 1 {
+            return Err(Error::invalid(
+                "planes",
+                format!(
+                    "must hold 2 to {} depths (got {})",
+                    MAX_PARTITIONS + 1,
+                    planes.len()
+                ),
+            ));
+        }
+        let mut out = [0.0; MAX_PARTITIONS + 1];
+        for (i, &z) in planes.iter().enumerate() {
+            if !(z.is_finite() && z > 0.0) {
+                return Err(Error::invalid(
+                    "planes",
+                    format!(
+                        "must be finite and positive (got {} at index {i})",
+                        fmt_num(z)
+                    ),
+                ));
+            }
+            if i > 0 && z <= planes[i - 1] {
+                return Err(Error::invalid(
+                    "planes",
+                    format!(
+                        "must be strictly increasing (got {} after {} at index {i})",
+                        fmt_num(z),
+                        fmt_num(planes[i - 1])
+                    ),
+                ));
+            }
+            out[i] = z;
+        }
+        Ok(Splits {
+            planes: out,
+            k: planes.len() - 1,
+        })
+    }
+
+    /// The number of partitions k.
+    #[inline]
+    #[must_use]
+    pub fn k(&self) -> usize {
+        self.k
+    }
+
+    /// The `k + 1` plane depths, near to far.
+    #[inline]
+    #[must_use]
+    pub fn planes(&self) -> &[f64] {
+        &self.planes[..=self.k]
+    }
+
+    /// The depth range `(z_i, z_{i+1})` of partition `i ∈ 0..k` (0 nearest the viewer).
+    ///
+    /// Never panics: an index `i ≥ k` is clamped to the last partition `k − 1`.
+    #[inline]
+    #[must_use]
+    pub fn range(&self, i: usize) -> (f64, f64) {
+        let i = i.min(self.k - 1);
+        (self.planes[i], self.planes[i + 1])
+    }
+
+    /// The depth ratios `z_{i+1}/z_i` of the partitions, as a fixed array (entries `k..` are 0).
+    #[must_use]
+    pub fn ratios(&self) -> [f64; MAX_PARTITIONS] {
+        let mut r = [0.0; MAX_PARTITIONS];
+        for (i, ri) in r.iter_mut().enumerate().take(self.k) {
+            *ri = self.planes[i + 1] / self.planes[i];
+        }
+        r
+    }
+}
+
+/// How to place the split planes of [`z_splits`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SplitScheme {
+    /// Equal depth intervals: z_i = n + (f − n) i/k.
+    Uniform,
+    /// Equal depth ratios (logarithmic): z_i = n (f/n)^{i/k} (Lloyd 2006 Eq 15, 16; Lloyd 2005 §4
+    /// z_i = α^{i/k} with n = 1, f = α). It minimises the largest per-partition ratio f_i/n_i.
+    SelfSimilar,
+    /// The "practical" split engines use: z_i = λ n (f/n)^{i/k} + (1 − λ)(n + (f − n) i/k),
+    /// λ ∈ [0, 1] (0 uniform, 1 self-similar).
+    Practical {
+        /// Blend weight λ ∈ [0, 1].
+        lambda: f64,
+    },
+    /// Barroso & Celes 2007 Eq 19, computed backwards from z_k = f:
+    /// z_{i−1} = λ n (z_i/n)^{(i−1)/i} + (1 − λ) z_i/α for i = k, …, 2, with λ = γ/(π/2) and
+    /// z₀ = n. γ = π/2 gives the self-similar planes; γ = 0 gives partitions 2..k of ratio α.
+    Adaptive {
+        /// γ ∈ [0, π/2], the angle between light and view directions (radians).
+        light_angle: f64,
+        /// α > 1, the depth ratio f_i/n_i of the far partitions when the light is parallel.
+        ratio: f64,
+    },
+    /// Unreal Engine's cascade distribution exponent e > 0:
+    /// z_i = n + (f − n)(e^i − 1)/(e^k − 1), uniform at e = 1 (each partition e times as deep
+    /// as the one before it).
+    Exponent {
+        /// The exponent e > 0 (Unreal clamps it to [1, 4]).
+        exponent: f64,
+    },
+}
+
+/// The `k + 1` split-plane depths of `[near, far]` for `scheme`.
+///
+/// | scheme | z_i, i = 0..k |
+/// |---|---|
+/// | `Uniform` | n + (f − n) i/k |
+/// | `SelfSimilar` | n (f/n)^{i/k} (Lloyd 2006 Eq 15, 16) |
+/// | `Practical { λ }` | λ n (f/n)^{i/k} + (1 − λ)(n + (f − n) i/k) |
+/// | `Adaptive { γ, α }` | Barroso & Celes 2007 Eq 19 (see [`SplitScheme::Adaptive`]) |
+/// | `Exponent { e }` | n + (f − n)(e^i − 1)/(e^k − 1) |
+///
+/// n = `near`, f = `far` (eye-space depths, any length unit), k partitions. The first and last
+/// planes are exactly `near` and `far`.
+///
+/// Barroso's Eq 19 prints the far ratio as "α_i" and says "f_1 = f_2"; the crate reads a single
+/// α and f_1 = n_2 (partitions are contiguous), which is what makes γ = π/2 equal Eq 5.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far, finite), `k`
+/// (1 ≤ k ≤ [`MAX_PARTITIONS`]), `lambda` (∈ [0, 1]), `light_angle` (∈ [0, π/2]), `ratio`
+/// (finite, > 1) or `exponent` (finite, > 0); [`Error::NoSolution`] when the adaptive planes are
+/// not strictly increasing (α^{k−1} too large for f/n at this γ), [`Error::Degenerate`] when
+/// f/n is so close to 1 that adjacent planes round to the same `f64`.
+pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Splits> {
+    let n = positive("near", near)?;
+    let f = positive("far", far)?;
+    if f <= n {
+        return Err(Error::invalid(
+            "far",
+            format!(
+                "must be greater than near (got near={}, far={})",
+                fmt_num(n),
+                fmt_num(f)
+            ),
+        ));
+    }
+    if k == 0 || k > MAX_PARTITIONS {
+        return Err(Error::invalid(
+            "k",
+            format!("must lie in [1, {MAX_PARTITIONS}] (got {k})"),
+        ));
+    }
+    let kf = k as f64;
+    let alpha = f / n;
+    let mut p = [0.0; MAX_PARTITIONS + 1];
+    let uniform = |i: usize| n + (f - n) * (i as f64 / kf);
+    let logarithmic = |i: usize| n * alpha.powf(i as f64 / kf);
+    match scheme {
+        SplitScheme::Uniform => {
+            for (i, z) in p.iter_mut().enumerate().take(k + 1) {
+                *z = uniform(i);
+            }
+        }
+        SplitScheme::SelfSimilar => {
+            for (i, z) in p.iter_mut().enumerate().take(k + 1) {
+                *z = logarithmic(i);
+            }
+        }
+        SplitScheme::Practical { lambda } => {
+            let l = in_closed("lambda", lambda, 0.0, 1.0)?;
+            for (i, z) in p.iter_mut().enumerate().take(k + 1) {
+                *z = l * logarithmic(i) + (1.0 - l) * uniform(i);
+            }
+        }
+        SplitScheme::Adaptive { light_angle, ratio } => {
+            let g = in_closed("light_angle", light_angle, 0.0, std::f64::consts::FRAC_PI_2)?;
+            let a = positive("ratio", ratio)?;
+            if a <= 1.0 {
+                return Err(Error::invalid(
+                    "ratio",
+                    format!("must be greater than 1 (got {})", fmt_num(a)),
+                ));
+            }
+            let l = g / std::f64::consts::FRAC_PI_2;
+            p[k] = f;
+            for i in (2..=k).rev() {
+                let fi = p[i];
+                let e = (i - 1) as f64 / i as f64;
+                p[i - 1] = l * n * (fi / n).powf(e) + (1.0 - l) * fi / a;
+            }
+            p[0] = n;
+            for i in 1..=k {
+                if !p[i].is_finite() || p[i] <= p[i - 1] {
+                    return Err(Error::NoSolution(format!(
+                        "adaptive z-partitioning (Barroso & Celes Eq 19) with ratio={}, \
+                         light_angle={}, k={k} puts plane {i} at {} but plane {} at {} over \
+                         near={}, far={}: lower the ratio or k",
+                        fmt_num(a),
+                        fmt_num(g),
+                        fmt_num(p[i]),
+                        i - 1,
+                        fmt_num(p[i - 1]),
+                        fmt_num(n),
+                        fmt_num(f)
+                    )));
+                }
+            }
+        }
+        SplitScheme::Exponent { exponent } => {
+            let e = positive("exponent", exponent)?;
+            let ln_e = e.ln();
+            let denom = (kf * ln_e).exp_m1();
+            for (i, z) in p.iter_mut().enumerate().take(k + 1) {
+                let frac = if ln_e == 0.0 || denom == 0.0 {
+                    i as f64 / kf
+                } else if !denom.is_finite() {
+                    // e^k overflows: e^{i−k} is the fraction up to e^{−k} corrections.
+                    ((i as f64 - kf) * ln_e).exp()
+                } else {
+                    (i as f64 * ln_e).exp_m1() / denom
+                };
+                *z = n + (f - n) * frac;
+            }
+        }
+    }
+    p[0] = n;
+    p[k] = f;
+    for i in 1..=k {
+        if !p[i].is_finite() || p[i] <= p[i - 1] {
+            return Err(Error::Degenerate(format!(
+                "split planes {} and {i} coincide ({} and {}): far/near={} is too close to 1 for k={k}",
+                i - 1,
+                fmt_num(p[i - 1]),
+                fmt_num(p[i]),
+                fmt_num(alpha)
+            )));
+        }
+    }
+    Ok(Splits { planes: p, k })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hand_values() {
+        let s = z_splits(1.0, 100.0, 2, SplitScheme::SelfSimilar).unwrap();
+        assert_eq!(s.planes(), &[1.0, 10.0, 100.0]);
+        let u = z_splits(1.0, 101.0, 4, SplitScheme::Uniform).unwrap();
+        assert_eq!(u.planes(), &[1.0, 26.0, 51.0, 76.0, 101.0]);
+        // Practical λ = 0.5, k = 2 over [1, 100]: (10 + 50.5)/2 = 30.25.
+        let p = z_splits(1.0, 100.0, 2, SplitScheme::Practical { lambda: 0.5 }).unwrap();
+        assert!((p.planes()[1] - 30.25).abs() < 1e-12);
+        // Exponent e = 2, k = 3 over [0, 7] shifted to [1, 8]: fractions 1/7, 3/7.
+        let e = z_splits(1.0, 8.0, 3, SplitScheme::Exponent { exponent: 2.0 }).unwrap();
+        assert!((e.planes()[1] - 2.0).abs() < 1e-12);
+        assert!((e.planes()[2] - 4.0).abs() < 1e-12);
+        // Adaptive γ = 0, α = 2, k = 3 over [1, 100]: 100, 50, 25.
+        let a = z_splits(
+            1.0,
+            100.0,
+            3,
+            SplitScheme::Adaptive {
+                light_angle: 0.0,
+                ratio: 2.0,
+            },
+        )
+        .unwrap();
+        assert_eq!(a.planes(), &[1.0, 25.0, 50.0, 100.0]);
+        assert_eq!(a.range(7), (50.0, 100.0));
+    }
+
+    #[test]
+    fn bad_inputs() {
+        assert!(z_splits(1.0, 100.0, 0, SplitScheme::Uniform).is_err());
+        assert!(z_splits(1.0, 100.0, 17, SplitScheme::Uniform).is_err());
+        assert!(z_splits(2.0, 1.0, 2, SplitScheme::Uniform).is_err());
+        assert!(z_splits(1.0, 100.0, 2, SplitScheme::Practical { lambda: 1.5 }).is_err());
+        assert!(z_splits(1.0, 100.0, 2, SplitScheme::Exponent { exponent: 0.0 }).is_err());
+        let too_deep = SplitScheme::Adaptive {
+            light_angle: 0.0,
+            ratio: 4.0,
+        };
+        assert!(matches!(
+            z_splits(1.0, 10.0, 4, too_deep),
+            Err(Error::NoSolution(_))
+        ));
+        assert!(Splits::from_planes(&[1.0]).is_err());
+        assert!(Splits::from_planes(&[1.0, f64::NAN]).is_err());
+        assert!(Splits::from_planes(&[0.0, 1.0]).is_err());
+    }
+}
