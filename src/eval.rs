@@ -832,8 +832,49 @@ mod wire {
     pub(super) fn allocate_texels(_a: &Args) -> Result<Output> {
         pending("allocate_texels")
     }
-    pub(super) fn z_partition(_a: &Args) -> Result<Output> {
-        pending("z_partition")
+    pub(super) fn z_partition(a: &Args) -> Result<Output> {
+        use crate::analytic::partition::{z_splits, SplitScheme};
+        let scheme = a.choice("scheme")?;
+        // Each optional argument belongs to one scheme: present with another is a mistake.
+        let owner = |arg: &'static str| match arg {
+            "lambda" => "practical",
+            _ => "adaptive",
+        };
+        for arg in ["lambda", "light_angle", "ratio"] {
+            let needed = owner(arg) == scheme;
+            match (a.opt_num(arg).is_some(), needed) {
+                (true, false) => {
+                    return Err(Error::invalid(
+                        arg,
+                        format!(
+                            "is not an argument of z_partition with scheme \"{scheme}\" \
+                             (only of scheme \"{}\")",
+                            owner(arg)
+                        ),
+                    ))
+                }
+                (false, true) => {
+                    return Err(Error::invalid(
+                        arg,
+                        format!("is missing (scheme \"{scheme}\" needs it)"),
+                    ))
+                }
+                _ => {}
+            }
+        }
+        let scheme = match scheme {
+            "self_similar" => SplitScheme::SelfSimilar,
+            "uniform" => SplitScheme::Uniform,
+            "practical" => SplitScheme::Practical {
+                lambda: a.num("lambda")?,
+            },
+            _ => SplitScheme::Adaptive {
+                light_angle: a.num("light_angle")?,
+                ratio: a.num("ratio")?,
+            },
+        };
+        let splits = z_splits(a.num("near")?, a.num("far")?, a.count("k")?, scheme)?;
+        Ok(Output::Numbers(splits.planes().to_vec()))
     }
     pub(super) fn scheme_storage_factor(_a: &Args) -> Result<Output> {
         pending("scheme_storage_factor")

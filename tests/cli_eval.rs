@@ -1,0 +1,497 @@
+//! `shadow-aliasing eval`: the real binary on valid requests, on every kind of bad request and on
+//! malformed JSON, and `eval_json` in-process on random JSON and garbage (never a panic, always
+//! the contract's shape).
+#![cfg(feature = "cli")]
+
+use proptest::prelude::*;
+use proptest::test_runner::Config as ProptestConfig;
+use serde_json::{json, Value};
+use shadow_aliasing::eval::{eval_json, ArgKind, Presence, QUANTITIES};
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+/// Runs the binary with `args`, feeding `stdin`; returns (exit code, stdout, stderr).
+fn run(args: &[&str], stdin: &str) -> (i32, String, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary starts");
+    // The binary may exit before reading everything (for instance on a bad argument).
+    let _ = child
+        .stdin
+        .take()
+        .expect("stdin is piped")
+        .write_all(stdin.as_bytes());
+    let out = child.wait_with_output().expect("the binary finishes");
+    (
+        out.status.code().expect("exited normally, not by a signal"),
+        String::from_utf8(out.stdout).expect("stdout is UTF-8"),
+        String::from_utf8(out.stderr).expect("stderr is UTF-8"),
+    )
+}
+
+fn eval_stdin(input: &str) -> (i32, Value, String) {
+    let (code, out, err) = run(&["eval"], input);
+    let v = serde_json::from_str(&out).unwrap_or_else(|e| panic!("stdout {out:?} is JSON: {e}"));
+    (code, v, err)
+}
+
+fn error_of(v: &Value) -> &str {
+    v["error"]
+        .as_str()
+        .unwrap_or_else(|| panic!("{v} has an error"))
+}
+
+fn value_of(v: &Value) -> f64 {
+    v["value"]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{v} has a value"))
+}
+
+#[test]
+fn one_object_in_one_object_out() {
+    // n + √(f n) = 1 + √100 = 11.
+    let (code, v, err) = eval_stdin(r#"{"quantity": "n_prime_lispsm", "near": 1, "far": 100}"#);
+    assert_eq!(code, 0);
+    assert!(err.is_empty());
+    assert_eq!(v, json!({"quantity": "n_prime_lispsm", "value": 11.0}));
+}
+
+#[test]
+fn array_in_array_out_same_order_and_exit_1_on_any_error() {
+    let input = r#"[
+        {"quantity": "n_prime_lispsm", "near": 4, "far": 9},
+        {"quantity": "n_prime_lispsm", "near": 2, "far": 1},
+        {"quantity": "n_prime_lispsm", "near": 1, "far": 4}
+    ]"#;
+    let (code, v, err) = eval_stdin(input);
+    assert_eq!(code, 1);
+    assert!(err.is_empty(), "{err}");
+    let a = v.as_array().expect("an array");
+    assert_eq!(a.len(), 3);
+    // 4 + √36 = 10; 1 + √4 = 3.
+    assert_eq!(value_of(&a[0]), 10.0);
+    assert_eq!(
+        error_of(&a[1]),
+        "far must be greater than near (got near=2, far=1)"
+    );
+    assert_eq!(value_of(&a[2]), 3.0);
+    for x in a {
+        assert_eq!(x["quantity"], "n_prime_lispsm");
+    }
+}
+
+#[test]
+fn file_argument_and_dash_for_stdin() {
+    let dir = std::env::temp_dir().join(format!("sa-cli-eval-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("req.json");
+    std::fs::write(
+        &file,
+        r#"{"quantity": "n_prime_lispsm", "near": 1, "far": 9}"#,
+    )
+    .unwrap();
+    let (code, out, _) = run(&["eval", file.to_str().unwrap()], "");
+    assert_eq!(code, 0);
+    assert_eq!(out.trim(), r#"{"quantity":"n_prime_lispsm","value":4.0}"#);
+    let (code, out, _) = run(
+        &["eval", "-"],
+        r#"{"quantity": "n_prime_lispsm", "near": 1, "far": 9}"#,
+    );
+    assert_eq!(code, 0);
+    assert_eq!(out.trim(), r#"{"quantity":"n_prime_lispsm","value":4.0}"#);
+    let (code, out, err) = run(&["eval", dir.join("missing.json").to_str().unwrap()], "");
+    assert_eq!(code, 2);
+    assert!(out.is_empty());
+    assert!(err.starts_with("error: cannot read"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Hand-calculated values of each wired quantity (relative 1e-12).
+#[test]
+fn values_match_hand_calculations() {
+    let cases: &[(&str, &[f64])] = &[
+        // 1 + √100.
+        (
+            r#"{"quantity": "n_prime_lispsm", "near": 1, "far": 100}"#,
+            &[11.0],
+        ),
+        // n (f/n)^{i/k}: 1, 10, 100, 1000.
+        (
+            r#"{"quantity": "z_partition", "near": 1, "far": 1000, "k": 3, "scheme": "self_similar"}"#,
+            &[1.0, 10.0, 100.0, 1000.0],
+        ),
+        // n + (f − n) i/k: 1, 334, 667, 1000.
+        (
+            r#"{"quantity": "z_partition", "near": 1, "far": 1000, "k": 3, "scheme": "uniform"}"#,
+            &[1.0, 334.0, 667.0, 1000.0],
+        ),
+        // The mean of the two above at λ = 0.5.
+        (
+            r#"{"quantity": "z_partition", "near": 1, "far": 1000, "k": 3, "scheme": "practical", "lambda": 0.5}"#,
+            &[1.0, 172.0, 383.5, 1000.0],
+        ),
+        // γ = π/2: Barroso's adaptive planes are the self-similar ones.
+        (
+            r#"{"quantity": "z_partition", "near": 2, "far": 32, "k": 4, "scheme": "adaptive", "light_angle": 1.5707963267948966, "ratio": 3}"#,
+            &[2.0, 4.0, 8.0, 16.0, 32.0],
+        ),
+        // γ = 0: the last partitions have ratio α = 2 (32 → 16 → 8), the first takes the rest.
+        (
+            r#"{"quantity": "z_partition", "near": 1, "far": 32, "k": 3, "scheme": "adaptive", "light_angle": 0, "ratio": 2}"#,
+            &[1.0, 8.0, 16.0, 32.0],
+        ),
+    ];
+    let input = Value::Array(
+        cases
+            .iter()
+            .map(|(req, _)| serde_json::from_str(req).unwrap())
+            .collect(),
+    );
+    let (code, v, err) = eval_stdin(&input.to_string());
+    let answers = v.as_array().unwrap();
+    for ((req, want), got) in cases.iter().zip(answers) {
+        let values: Vec<f64> = match &got["value"] {
+            Value::Array(xs) => xs.iter().map(|x| x.as_f64().unwrap()).collect(),
+            Value::Number(n) => vec![n.as_f64().unwrap()],
+            other => panic!("{req}: no value ({other}): {got}"),
+        };
+        assert_eq!(values.len(), want.len(), "{req}: {got}");
+        for (g, w) in values.iter().zip(*want) {
+            assert!(
+                (g - w).abs() <= 1e-12 * w.abs().max(1.0),
+                "{req}: got {g}, want {w}"
+            );
+        }
+    }
+    assert_eq!(code, 0, "{err}");
+}
+
+#[test]
+fn every_kind_of_bad_request_is_an_error_naming_the_argument() {
+    let cases: &[(&str, &str)] = &[
+        (
+            r#"{"quantity": "n_prime_lipsm", "near": 1, "far": 2}"#,
+            "quantity \"n_prime_lipsm\" is unknown (did you mean n_prime_lispsm?",
+        ),
+        (r#"{"near": 1, "far": 2}"#, "quantity is missing"),
+        (r#"{"quantity": 3}"#, "quantity must be a string"),
+        (
+            r#"{"quantity": "n_prime_lispsm", "near": 1}"#,
+            "far is missing (n_prime_lispsm takes near, far)",
+        ),
+        (
+            r#"{"quantity": "n_prime_lispsm", "near": 1, "far": 2, "fov": 1}"#,
+            "fov is not an argument of n_prime_lispsm",
+        ),
+        (
+            r#"{"quantity": "n_prime_lispsm", "near": "1", "far": 2}"#,
+            "near must be a number (got string \"1\"",
+        ),
+        (
+            r#"{"quantity": "n_prime_lispsm", "near": [1], "far": 2}"#,
+            "near must be a number (got array [1])",
+        ),
+        (
+            r#"{"quantity": "n_prime_lispsm", "near": null, "far": 2}"#,
+            "near must be a number (got null)",
+        ),
+        (
+            r#"{"quantity": "n_prime_lispsm", "near": "NaN", "far": 2}"#,
+            "near must be a finite number (got NaN)",
+        ),
+        (
+            r#"{"quantity": "n_prime_lispsm", "near": 1, "far": "inf"}"#,
+            "far must be a finite number (got inf)",
+        ),
+        (
+            r#"{"quantity": "n_prime_lispsm", "near": -1, "far": 2}"#,
+            "near must be greater than 0 (got -1)",
+        ),
+        (
+            r#"{"quantity": "n_prime_lispsm", "near": 2, "far": 2}"#,
+            "far must be greater than near (got near=2, far=2)",
+        ),
+        (
+            r#"{"quantity": "storage_factor", "near": 1, "far": 100, "half_fov": 0.5, "n_prime": "-inf"}"#,
+            "n_prime must be a number greater than 0 or the string \"inf\" (got -inf)",
+        ),
+        (
+            r#"{"quantity": "storage_factor", "near": 1, "far": 100, "half_fov": 0.5, "n_prime": 0}"#,
+            "n_prime must be a number greater than 0 or the string \"inf\" (got 0)",
+        ),
+        (
+            r#"{"quantity": "z_partition", "near": 1, "far": 100, "k": 2.5, "scheme": "uniform"}"#,
+            "k must be a whole number of at least 1 (got 2.5)",
+        ),
+        (
+            r#"{"quantity": "z_partition", "near": 1, "far": 100, "k": 2, "scheme": "log"}"#,
+            "scheme must be one of \"self_similar\", \"uniform\", \"practical\", \"adaptive\" (got string \"log\")",
+        ),
+        (
+            r#"{"quantity": "z_partition", "near": 1, "far": 100, "k": 2, "scheme": "practical"}"#,
+            "lambda is missing (scheme \"practical\" needs it)",
+        ),
+        (
+            r#"{"quantity": "z_partition", "near": 1, "far": 100, "k": 2, "scheme": "uniform", "ratio": 2}"#,
+            "ratio is not an argument of z_partition with scheme \"uniform\"",
+        ),
+        (
+            r#"{"quantity": "z_partition", "near": 1, "far": 100, "k": 2, "scheme": "practical", "lambda": 1.5}"#,
+            "lambda must lie in [0, 1] (got 1.5)",
+        ),
+        (
+            r#"{"quantity": "allocate_texels", "errors": [1, "x"], "total": 10}"#,
+            "errors must be an array of numbers (errors[1] is string \"x\")",
+        ),
+        (
+            r#"{"quantity": "allocate_texels", "errors": 1, "total": 10}"#,
+            "errors must be an array of numbers (got number 1)",
+        ),
+    ];
+    let input = Value::Array(
+        cases
+            .iter()
+            .map(|(req, _)| serde_json::from_str(req).unwrap())
+            .collect(),
+    );
+    let (code, v, err) = eval_stdin(&input.to_string());
+    assert_eq!(code, 1);
+    assert!(err.is_empty(), "{err}");
+    let answers = v.as_array().unwrap();
+    assert_eq!(answers.len(), cases.len());
+    for ((req, want), got) in cases.iter().zip(answers) {
+        let msg = error_of(got);
+        assert!(
+            msg.starts_with(want),
+            "{req}\n  got:  {msg}\n  want: {want}…"
+        );
+        assert!(got.get("value").is_none());
+    }
+}
+
+#[test]
+fn malformed_input_exits_2_with_one_line_and_no_stdout() {
+    for input in [
+        "",
+        "   ",
+        "{",
+        "{\"quantity\": \"mx\",}",
+        "[1, 2",
+        "3",
+        "\"mx\"",
+        "null",
+        "true",
+        "NaN",
+        "{\"near\": 1e400}",
+        "{} {}",
+    ] {
+        let (code, out, err) = run(&["eval"], input);
+        assert_eq!(code, 2, "{input:?}: {out}");
+        assert!(out.is_empty(), "{input:?}: {out}");
+        assert_eq!(err.lines().count(), 1, "{input:?}: {err}");
+        assert!(err.starts_with("error: "), "{input:?}: {err}");
+    }
+}
+
+#[test]
+fn numbers_round_trip_through_the_binary() {
+    // n + √(f n) with f = 2: 1 + √2, whose shortest form has 17 digits.
+    let (_, v, _) = eval_stdin(r#"{"quantity": "n_prime_lispsm", "near": 1, "far": 2}"#);
+    assert_eq!(value_of(&v).to_bits(), (1.0 + 2f64.sqrt()).to_bits());
+    let (_, out, _) = run(
+        &["eval"],
+        r#"{"quantity": "n_prime_lispsm", "near": 1e-300, "far": 4e-300}"#,
+    );
+    // 1e-300 + 2e-300 = 3e-300, printed with an exponent.
+    let v: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(value_of(&v), 1e-300 + (4e-300f64 * 1e-300).sqrt());
+    assert!(out.contains("e-300"), "{out}");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Never a panic: random JSON, random requests, garbage text.
+
+fn finite_number() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        -10.0..200.0f64,
+        0.0..2.0f64,
+        (1u32..20).prop_map(f64::from),
+        Just(0.0),
+        Just(-0.0),
+        Just(1.0),
+        Just(std::f64::consts::FRAC_PI_2),
+        Just(1e-300),
+        Just(1e300),
+        Just(-1e300),
+        Just(f64::MAX),
+        Just(f64::MIN_POSITIVE),
+        any::<f64>().prop_filter("finite", |x| x.is_finite()),
+    ]
+}
+
+fn json_number(x: f64) -> Value {
+    serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number)
+}
+
+fn leaf() -> impl Strategy<Value = Value> {
+    prop_oneof![
+        Just(Value::Null),
+        any::<bool>().prop_map(Value::Bool),
+        finite_number().prop_map(json_number),
+        any::<i64>().prop_map(Value::from),
+        any::<u64>().prop_map(Value::from),
+        "[a-z_]{0,14}".prop_map(Value::String),
+        prop_oneof![
+            Just("inf"),
+            Just("-inf"),
+            Just("nan"),
+            Just("Infinity"),
+            Just("1")
+        ]
+        .prop_map(|s| Value::String(s.into())),
+        any::<String>().prop_map(Value::String),
+    ]
+}
+
+fn arb_json() -> impl Strategy<Value = Value> {
+    leaf().prop_recursive(4, 48, 6, |inner| {
+        let key = prop_oneof![
+            "[a-z_]{0,12}",
+            Just("quantity".to_string()),
+            Just("near".to_string())
+        ];
+        prop_oneof![
+            prop::collection::vec(inner.clone(), 0..6).prop_map(Value::Array),
+            prop::collection::vec((key, inner), 0..6)
+                .prop_map(|kv| Value::Object(kv.into_iter().collect())),
+        ]
+    })
+}
+
+/// A request for a real quantity whose arguments are mostly of the right type and mostly in a
+/// plausible range, sometimes wrong, missing or extra: it reaches the closed forms.
+fn arb_request() -> impl Strategy<Value = Value> {
+    let n = QUANTITIES.len();
+    (
+        0..n,
+        prop::collection::vec((0u8..10, finite_number(), leaf(), 0usize..8), 8),
+        prop::option::weighted(0.1, ("[a-z_]{1,8}", leaf())),
+    )
+        .prop_map(|(qi, picks, extra)| {
+            let q = &QUANTITIES[qi];
+            let mut m = serde_json::Map::new();
+            m.insert("quantity".into(), Value::from(q.name));
+            for (spec, (mode, x, junk, pick)) in q.args.iter().zip(picks) {
+                let optional = spec.presence != Presence::Required;
+                let v = match mode {
+                    0 => continue,
+                    1 if optional => continue,
+                    1 | 2 => junk,
+                    _ => match spec.kind {
+                        ArgKind::Number | ArgKind::Count => json_number(x),
+                        ArgKind::NPrime => {
+                            if pick == 0 {
+                                Value::from("inf")
+                            } else {
+                                json_number(x)
+                            }
+                        }
+                        ArgKind::Choice(options) => Value::from(options[pick % options.len()]),
+                        ArgKind::Numbers => Value::Array(
+                            (0..pick).map(|i| json_number(x * (i + 1) as f64)).collect(),
+                        ),
+                    },
+                };
+                m.insert(spec.name.into(), v);
+            }
+            if let Some((k, v)) = extra {
+                m.insert(k, v);
+            }
+            Value::Object(m)
+        })
+}
+
+/// The contract's shape: exit 2 with nothing on stdout and one line on stderr, or the answers.
+fn check_shape(input: &str, parsed: Option<&Value>) {
+    let out = eval_json(input);
+    match out.exit_code {
+        2 => {
+            assert!(out.stdout.is_empty());
+            assert_eq!(out.stderr.lines().count(), 1, "{}", out.stderr);
+            if let Some(v) = parsed {
+                assert!(!v.is_object() && !v.is_array(), "{input}");
+            }
+        }
+        0 | 1 => {
+            assert!(out.stderr.is_empty());
+            let got: Value = serde_json::from_str(&out.stdout)
+                .unwrap_or_else(|e| panic!("{input}\n→ {}\nnot JSON: {e}", out.stdout));
+            let answers: Vec<&Value> = match (&got, parsed) {
+                (Value::Array(a), Some(Value::Array(req))) => {
+                    assert_eq!(a.len(), req.len());
+                    a.iter().collect()
+                }
+                (Value::Object(_), Some(Value::Object(_))) => vec![&got],
+                (g, p) => panic!("shape mismatch: {p:?} → {g}"),
+            };
+            let mut any_error = false;
+            for a in answers {
+                let o = a.as_object().expect("each answer is an object");
+                assert_eq!(o.len(), 2, "{a}");
+                assert!(o["quantity"].is_string() || o["quantity"].is_null());
+                match (o.get("value"), o.get("error")) {
+                    (Some(v), None) => match v {
+                        Value::Number(n) => assert!(n.as_f64().unwrap().is_finite()),
+                        Value::String(s) => assert_eq!(s, "inf"),
+                        Value::Array(xs) => assert!(xs.iter().all(|x| x.is_number())),
+                        _ => panic!("bad value {v}"),
+                    },
+                    (None, Some(Value::String(e))) => {
+                        assert!(!e.is_empty());
+                        any_error = true;
+                    }
+                    _ => panic!("neither value nor error: {a}"),
+                }
+            }
+            assert_eq!(out.exit_code, i32::from(any_error));
+        }
+        c => panic!("exit code {c}"),
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+
+    #[test]
+    fn random_json_never_panics(v in arb_json()) {
+        check_shape(&v.to_string(), Some(&v));
+    }
+
+    #[test]
+    fn random_requests_never_panic(reqs in prop::collection::vec(arb_request(), 1..6), single in any::<bool>()) {
+        let v = if single { reqs[0].clone() } else { Value::Array(reqs) };
+        check_shape(&v.to_string(), Some(&v));
+    }
+
+    #[test]
+    fn garbage_text_never_panics(s in any::<String>()) {
+        let parsed = serde_json::from_str::<Value>(&s).ok();
+        check_shape(&s, parsed.as_ref());
+    }
+
+    #[test]
+    fn mangled_valid_requests_never_panic(cut in 0usize..200, byte in any::<u8>()) {
+        let text = r#"[{"quantity": "storage_factor", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": "inf"}]"#;
+        let mut b = text.as_bytes().to_vec();
+        let i = cut % b.len();
+        b[i] = byte;
+        if let Ok(s) = String::from_utf8(b) {
+            let parsed = serde_json::from_str::<Value>(&s).ok();
+            check_shape(&s, parsed.as_ref());
+        }
+    }
+}
