@@ -1,1 +1,438 @@
-//! (being written)
+//! A light tilted in the view's vertical plane: Barroso & Celes 2007 §3.1, the generalised
+//! LiSPSM error m_z(z, n′, γ) (Eq 10–12), the warp parameters that equalise it on the near and
+//! far planes (Eq 13), the limit angle γ_lim (Eq 15) and the generalised n′ (Eq 16–18).
+//!
+//! # Geometry and notation
+//!
+//! The view frustum has near and far depths n, f and half field of view φ_y (the crate's
+//! `half_fov`; square image); `a = n tan φ_y`, `b = f tan φ_y` are the half heights of its near
+//! and far planes. The light lies in the view's vertical plane at the angle γ ∈ [0, π/2] from the
+//! view axis (`light_angle`; π/2 overhead). The warping frustum looks along the view direction
+//! projected perpendicular to the light, z′ is the warp depth of a point measured from the
+//! warp's centre of projection c, and n′ the distance from c to the frustum's nearest extent
+//! (Barroso Fig 6; [`crate::measure::tilted_twin`] builds it as a matrix).
+//!
+//! # Which m_z
+//!
+//! Barroso measures the texel width **along the view axis** (his Eq 6, `(dt/dz)⁻¹` with z the
+//! position on the view axis); the crate's measurement [`crate::measure::point_error`] and Lloyd
+//! 2006 §4.4 measure it **perpendicular to the light** (the distance between t-isolines). Along
+//! the view axis, `dz′/dz = sin γ`, so
+//!
+//! `m_z(Barroso) = m_z(perpendicular) / sin γ`.
+//!
+//! [`tilted_mz`] is Barroso's (the eval contract's `tilted_mz`), [`tilted_mz_perpendicular`] the
+//! perpendicular one; they agree overhead. The factor does not change where the error is largest
+//! nor the n′ that equalises it (Eq 13), but it is a projection factor (Barroso's own Eq 3 calls
+//! `cos θ_c / cos θ_L` projection aliasing and excludes it), and it makes Barroso's m_z infinite as
+//! γ → 0 where the perpendicular error stays finite. See docs/errata.md.
+//!
+//! ```
+//! use shadow_aliasing::analytic::tilted::{generalized_n_prime, tilted_mz, Falloff, gamma_lim};
+//! use shadow_aliasing::{LightAngle, NPrime, Resolutions, ViewFrustum};
+//! let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6)?;
+//! // Overhead, the generalised n′ is LiSPSM's n + √(f n) = 11.
+//! let overhead = LightAngle::new(std::f64::consts::FRAC_PI_2)?;
+//! assert!((generalized_n_prime(&view, overhead, Falloff::Barroso).value() - 11.0).abs() < 1e-12);
+//! // Below γ_lim it grows, and it is unwarped when light and view are parallel.
+//! assert_eq!(generalized_n_prime(&view, LightAngle::new(0.0)?, Falloff::Zhang), NPrime::Unwarped);
+//! assert!(gamma_lim(&view) > view.half_fov());
+//! let m = tilted_mz(&view, NPrime::Finite(11.0), overhead, 1.0, Resolutions::default())?;
+//! assert!(m > 0.0);
+//! # Ok::<(), shadow_aliasing::Error>(())
+//! ```
+
+use crate::error::{fmt_num, in_closed, positive, Error, Result};
+use crate::frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};
+
+/// The half heights `(a, b) = (n tan φ_y, f tan φ_y)` of the near and far planes.
+#[inline]
+fn half_heights(view: &ViewFrustum) -> (f64, f64) {
+    let t = view.tan_half_fov();
+    (view.near() * t, view.far() * t)
+}
+
+/// Validates a finite n′ > 0 (`name` is the argument's name in messages).
+#[inline]
+pub(crate) fn finite_n_prime(name: &'static str, n_prime: NPrime) -> Result<Option<f64>> {
+    match n_prime {
+        NPrime::Finite(v) => positive(name, v).map(Some),
+        NPrime::Unwarped => Ok(None),
+    }
+}
+
+/// Validates a depth on the view axis, `near ≤ z ≤ far`.
+#[inline]
+pub(crate) fn depth_in_view(view: &ViewFrustum, z: f64) -> Result<f64> {
+    in_closed("z", z, view.near(), view.far())
+}
+
+/// μ = f′ − n′, the extent of the view frustum along the warp axis for a light at γ from the
+/// view axis (Barroso Eq 11 minus n′; Zhang et al. 2009 Appendix, μ):
+///
+/// `μ = (a + b) cos γ + (f − n) sin γ` for φ_y ≤ γ ≤ π/2, `μ = 2 b cos γ` for 0 ≤ γ < φ_y,
+///
+/// with n, f the near and far depths, φ_y the half field of view, `a = n tan φ_y`,
+/// `b = f tan φ_y` (all in eye-space units). μ > 0 for every valid input; the two branches agree
+/// at γ = φ_y (both are 2 f sin φ_y), so μ is continuous. Unit: eye-space distance.
+///
+/// ```
+/// # use shadow_aliasing::{analytic::tilted::warp_depth_range, LightAngle, ViewFrustum};
+/// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;
+/// // Overhead the extent is the frustum's depth range f − n.
+/// let mu = warp_depth_range(&view, LightAngle::new(std::f64::consts::FRAC_PI_2)?);
+/// assert!((mu - 99.0).abs() < 1e-12);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+#[inline]
+#[must_use]
+pub fn warp_depth_range(view: &ViewFrustum, gamma: LightAngle) -> f64 {
+    let (a, b) = half_heights(view);
+    let (s, c) = gamma.radians().sin_cos();
+    if gamma.radians() >= view.half_fov() {
+        (a + b) * c + (view.far() - view.near()) * s
+    } else {
+        2.0 * b * c
+    }
+}
+
+/// ψ(z, n′, γ) = z′, the warp depth of the point at depth z on the view axis (Barroso Eq 10 and
+/// the ψ of Eq 12):
+///
+/// `ψ = n′ + a cos γ + (z − n) sin γ` for φ_y ≤ γ ≤ π/2,
+/// `ψ = n′ + b cos γ + (z − f) sin γ` for 0 ≤ γ < φ_y,
+///
+/// with `a = n tan φ_y`, `b = f tan φ_y`, n′ the warp parameter (eye-space units, any n′ > 0).
+/// Unit: eye-space distance.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `n_prime` (not finite and positive) or `z` (outside
+/// `[near, far]`).
+#[inline]
+pub fn tilted_psi(view: &ViewFrustum, n_prime: f64, gamma: LightAngle, z: f64) -> Result<f64> {
+    let np = positive("n_prime", n_prime)?;
+    let z = depth_in_view(view, z)?;
+    Ok(np + psi_offset(view, gamma, z))
+}
+
+/// ψ − n′: the point's warp depth from the frustum's nearest extent.
+#[inline]
+fn psi_offset(view: &ViewFrustum, gamma: LightAngle, z: f64) -> f64 {
+    let (a, b) = half_heights(view);
+    let (s, c) = gamma.radians().sin_cos();
+    if gamma.radians() >= view.half_fov() {
+        a * c + (z - view.near()) * s
+    } else {
+        b * c + (z - view.far()) * s
+    }
+}
+
+/// ξ(n′, γ), the factor of Barroso's m_z (Eq 12):
+///
+/// `ξ = (res_i / res_t) · 1/(2 tan φ_y) · (f′ − n′)/(n′ f′) · 1/sin γ`, with `f′ − n′ = μ`
+/// ([`warp_depth_range`], Eq 11) and `f′ = n′ + μ`.
+///
+/// Domain: n′ > 0, 0 < γ ≤ π/2. Unit: 1 / eye-space distance.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `n_prime` (not finite and positive) or `light_angle`
+/// (γ = 0, where ξ is infinite: t does not change along the view axis).
+#[inline]
+pub fn tilted_xi(
+    view: &ViewFrustum,
+    n_prime: f64,
+    gamma: LightAngle,
+    res: Resolutions,
+) -> Result<f64> {
+    let np = positive("n_prime", n_prime)?;
+    let s = positive_sin(gamma)?;
+    let mu = warp_depth_range(view, gamma);
+    Ok(res.image() / res.t() / (2.0 * view.tan_half_fov()) * mu / (np * (np + mu)) / s)
+}
+
+fn positive_sin(gamma: LightAngle) -> Result<f64> {
+    let s = gamma.radians().sin();
+    if s > 0.0 {
+        Ok(s)
+    } else {
+        Err(Error::invalid(
+            "light_angle",
+            format!(
+                "must be greater than 0 for Barroso's m_z, which measures texels along the view axis and is infinite when light and view are parallel (got {})",
+                fmt_num(gamma.radians())
+            ),
+        ))
+    }
+}
+
+/// Perpendicular m_z without validation: `res_i/res_t · μ ψ² / (2 tan φ_y · n′ (n′ + μ) · z)`,
+/// and `res_i/res_t · μ / (2 tan φ_y z)` unwarped.
+#[inline]
+fn mz_perp_unchecked(
+    view: &ViewFrustum,
+    n_prime: Option<f64>,
+    gamma: LightAngle,
+    z: f64,
+    res: Resolutions,
+) -> f64 {
+    let mu = warp_depth_range(view, gamma);
+    let k = res.image() / res.t() / (2.0 * view.tan_half_fov()) * mu / z;
+    match n_prime {
+        Some(np) => {
+            let psi = np + psi_offset(view, gamma, z);
+            // ψ²/(n′(n′ + μ)), written so that it stays accurate for large n′.
+            k * (psi / np) * (psi / (np + mu))
+        }
+        None => k,
+    }
+}
+
+/// Barroso & Celes's generalised error in the z direction for a tilted light (Eq 12), the texel
+/// width measured along the view axis (Eq 6) over the pixel width, at depth z on the view axis:
+///
+/// `m_z(z, n′, γ) = ξ(n′, γ) ψ(z, n′, γ)² / z`
+/// `= (res_i/res_t) · (f′ − n′) ψ² / (2 tan φ_y · n′ f′ · z · sin γ)`,
+///
+/// with ψ the warp depth ([`tilted_psi`], Eq 10), `f′ − n′ = μ` ([`warp_depth_range`], Eq 11),
+/// φ_y the half field of view, res_i the image and res_t the shadow map's t resolution. For the
+/// unwarped map (n′ = ∞) the limit `(res_i/res_t) μ / (2 tan φ_y z sin γ)`.
+/// At γ = π/2 this is Lloyd 2006 Eq 8. It equals [`tilted_mz_perpendicular`] / sin γ (module docs).
+///
+/// Domain: `0 < γ ≤ π/2`, `near ≤ z ≤ far`, any n′ > 0 or unwarped. Dimensionless.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `n_prime` (finite but not positive), `light_angle` (γ = 0,
+/// where this along-axis width is infinite) or `z` (outside `[near, far]`).
+///
+/// ```
+/// # use shadow_aliasing::{analytic::tilted::tilted_mz, LightAngle, NPrime, Resolutions, ViewFrustum};
+/// let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_4)?;
+/// let up = LightAngle::new(std::f64::consts::FRAC_PI_2)?;
+/// // Overhead with n′ = n (PSM): m_z = (f − n) z / (2 tan θ · f n) = 99·50/200 at z = 50.
+/// let m = tilted_mz(&view, NPrime::Finite(1.0), up, 50.0, Resolutions::default())?;
+/// assert!((m - 99.0 * 50.0 / 200.0).abs() < 1e-12);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+#[inline]
+pub fn tilted_mz(
+    view: &ViewFrustum,
+    n_prime: NPrime,
+    gamma: LightAngle,
+    z: f64,
+    res: Resolutions,
+) -> Result<f64> {
+    let np = finite_n_prime("n_prime", n_prime)?;
+    let s = positive_sin(gamma)?;
+    let z = depth_in_view(view, z)?;
+    Ok(mz_perp_unchecked(view, np, gamma, z, res) / s)
+}
+
+/// The tilted-light m_z measured perpendicular to the light, as the crate measures every map
+/// ([`crate::measure::point_error`], Lloyd 2006 §4.4): Barroso's Eq 12 times sin γ,
+///
+/// `m_z⊥(z, n′, γ) = (res_i/res_t) · μ ψ² / (2 tan φ_y · n′ (n′ + μ) · z)`,
+///
+/// on the view axis at depth z (symbols as in [`tilted_mz`]); unwarped,
+/// `(res_i/res_t) μ / (2 tan φ_y z)`. Zhang et al.'s E_p^pers at y = 0 is twice this with unit
+/// resolutions. Defined for every γ ∈ [0, π/2].
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `n_prime` (finite but not positive) or `z` (outside
+/// `[near, far]`).
+#[inline]
+pub fn tilted_mz_perpendicular(
+    view: &ViewFrustum,
+    n_prime: NPrime,
+    gamma: LightAngle,
+    z: f64,
+    res: Resolutions,
+) -> Result<f64> {
+    let np = finite_n_prime("n_prime", n_prime)?;
+    let z = depth_in_view(view, z)?;
+    Ok(mz_perp_unchecked(view, np, gamma, z, res))
+}
+
+/// Barroso's n′₁(γ) (Eq 13, first branch): the n′ that makes m_z equal on the near and far
+/// planes when the near-bottom corner is the frustum's nearest point to the warp's centre of
+/// projection (φ_y ≤ γ ≤ π/2):
+///
+/// `n′₁(γ) = (n + √(f n)) sin γ − a cos γ`, `a = n tan φ_y`.
+///
+/// At γ = π/2 this is LiSPSM's n + √(f n). The formula is evaluated for any γ ∈ [0, π/2]; it is
+/// negative for small γ, where no warp satisfies the constraint. Unit: eye-space distance.
+#[inline]
+#[must_use]
+pub fn n_prime_1(view: &ViewFrustum, gamma: LightAngle) -> f64 {
+    let (a, _) = half_heights(view);
+    let (s, c) = gamma.radians().sin_cos();
+    (view.near() + (view.far() * view.near()).sqrt()) * s - a * c
+}
+
+/// Barroso's n′₂(γ) (Eq 13, second branch), for 0 < γ < φ_y, where the far-bottom corner is
+/// nearest the centre of projection:
+///
+/// `n′₂(γ) = (f + √(f n)) sin γ − b cos γ`, `b = f tan φ_y`.
+///
+/// Negative for light near parallel to the view (Barroso's remark after Eq 13), and for every
+/// γ below `atan(b / (f + √(fn)))`. Unit: eye-space distance.
+#[inline]
+#[must_use]
+pub fn n_prime_2(view: &ViewFrustum, gamma: LightAngle) -> f64 {
+    let (_, b) = half_heights(view);
+    let (s, c) = gamma.radians().sin_cos();
+    (view.far() + (view.far() * view.near()).sqrt()) * s - b * c
+}
+
+/// The n′ of Barroso Eq 13: n′₁ for φ_y ≤ γ ≤ π/2, n′₂ for γ < φ_y; the warp parameter for which
+/// the tilted m_z on the view axis is equal on the near and far planes, which minimises its
+/// maximum over `[near, far]` (m_z ∝ ψ²/z has a single minimum).
+///
+/// # Errors
+/// [`Error::NoSolution`] where that n′ is not positive (light near parallel to the view): no
+/// warp equalises the errors there.
+pub fn n_prime_equal_error(view: &ViewFrustum, gamma: LightAngle) -> Result<NPrime> {
+    let v = if gamma.radians() >= view.half_fov() {
+        n_prime_1(view, gamma)
+    } else {
+        n_prime_2(view, gamma)
+    };
+    if v > 0.0 {
+        Ok(NPrime::Finite(v))
+    } else {
+        Err(Error::NoSolution(format!(
+            "no warp makes m_z equal on the near and far planes at light_angle={}: Barroso's Eq 13 gives n_prime={} ≤ 0",
+            fmt_num(gamma.radians()),
+            fmt_num(v)
+        )))
+    }
+}
+
+/// Barroso's limit angle (Eq 15), where the near and far faces of the view frustum begin to
+/// overlap in the light's view:
+///
+/// `γ_lim = atan((a + b)/(f − n)) = atan((f + n) tan φ_y / (f − n))`, radians.
+///
+/// Always in (φ_y, π/2): the limit lies above the half field of view, as Barroso requires.
+#[inline]
+#[must_use]
+pub fn gamma_lim(view: &ViewFrustum) -> f64 {
+    let (a, b) = half_heights(view);
+    ((a + b) / (view.far() - view.near())).atan()
+}
+
+/// The fall-off r(γ) of Barroso's generalised n′ below γ_lim (Eq 16–18).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Falloff {
+    /// Zhang et al.'s `r(γ) = sin((γ/γ_lim) · π/2)` (Barroso Eq 17).
+    Zhang,
+    /// Barroso's faster `r(γ) = [1 + sin((γ/γ_lim − 1) · π/2)]²` (Eq 18).
+    Barroso,
+}
+
+/// r(γ) for γ ∈ [0, γ_lim] (Barroso Eq 17, 18): 1 at γ_lim, 0 at γ = 0, increasing between.
+///
+/// Eq 18 is evaluated as `4 sin⁴(γ π / (4 γ_lim))`, the same function
+/// (`1 + sin(x − π/2) = 1 − cos x = 2 sin²(x/2)`) without cancellation near γ = 0.
+/// Arguments outside `[0, γ_lim]` are clamped into it.
+#[inline]
+#[must_use]
+pub fn falloff_r(falloff: Falloff, gamma: f64, gamma_lim: f64) -> f64 {
+    let u = if gamma_lim > 0.0 {
+        (gamma / gamma_lim).clamp(0.0, 1.0)
+    } else {
+        1.0
+    };
+    let u = if u.is_nan() { 0.0 } else { u };
+    match falloff {
+        Falloff::Zhang => (u * std::f64::consts::FRAC_PI_2).sin(),
+        Falloff::Barroso => {
+            let h = (u * std::f64::consts::FRAC_PI_4).sin();
+            4.0 * h * h * h * h
+        }
+    }
+}
+
+/// Barroso & Celes's generalised LiSPSM parameter (Eq 16):
+///
+/// `n′ = n′₁(γ) = (n + √(f n)) sin γ − a cos γ` for γ_lim ≤ γ ≤ π/2,
+/// `n′ = n′₁(γ_lim) / r(γ)` for 0 ≤ γ < γ_lim,
+///
+/// with γ_lim from [`gamma_lim`] (Eq 15), r from [`falloff_r`] (Eq 17 or 18), `a = n tan φ_y`.
+/// Continuous at γ_lim (r = 1); at γ = 0 (r = 0) it is [`NPrime::Unwarped`], and wherever the
+/// quotient overflows. Unit: eye-space distance. n′₁(γ_lim) > 0 always, so n′ > 0.
+///
+/// All inputs are validated types, so this cannot fail.
+#[must_use]
+pub fn generalized_n_prime(view: &ViewFrustum, gamma: LightAngle, falloff: Falloff) -> NPrime {
+    let gl = gamma_lim(view);
+    let g = gamma.radians();
+    if g >= gl {
+        return NPrime::Finite(n_prime_1(view, gamma));
+    }
+    // γ_lim ∈ (φ_y, π/2), so it is a valid light angle.
+    let at_lim = LightAngle::new(gl).map_or(f64::NAN, |l| n_prime_1(view, l));
+    let r = falloff_r(falloff, g, gl);
+    let v = at_lim / r;
+    if v.is_finite() && v > 0.0 {
+        NPrime::Finite(v)
+    } else {
+        NPrime::Unwarped
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn branches_meet_at_half_fov() {
+        let view = ViewFrustum::new(2.0, 30.0, 0.4).unwrap();
+        let at = LightAngle::new(0.4).unwrap();
+        let below = LightAngle::new(0.4 - 1e-13).unwrap();
+        let (m1, m2) = (warp_depth_range(&view, at), warp_depth_range(&view, below));
+        assert!((m1 - 2.0 * 30.0 * 0.4f64.sin()).abs() < 1e-9);
+        assert!((m1 - m2).abs() < 1e-9);
+        let (p1, p2) = (
+            tilted_psi(&view, 3.0, at, 7.0).unwrap(),
+            tilted_psi(&view, 3.0, below, 7.0).unwrap(),
+        );
+        assert!((p1 - p2).abs() < 1e-9);
+    }
+
+    #[test]
+    fn falloffs_end_points() {
+        for f in [Falloff::Zhang, Falloff::Barroso] {
+            assert!((falloff_r(f, 0.7, 0.7) - 1.0).abs() < 1e-15);
+            assert_eq!(falloff_r(f, 0.0, 0.7), 0.0);
+        }
+        // Eq 18 as printed, at a middle angle.
+        let (g, gl) = (0.3f64, 0.7f64);
+        let printed = (1.0 + ((g / gl - 1.0) * std::f64::consts::FRAC_PI_2).sin()).powi(2);
+        assert!((falloff_r(Falloff::Barroso, g, gl) - printed).abs() < 1e-15);
+    }
+
+    #[test]
+    fn domain_errors() {
+        let view = ViewFrustum::new(1.0, 10.0, 0.5).unwrap();
+        let g0 = LightAngle::new(0.0).unwrap();
+        let e = tilted_mz(&view, NPrime::Finite(2.0), g0, 2.0, Resolutions::default());
+        assert!(matches!(
+            e,
+            Err(Error::InvalidArgument {
+                name: "light_angle",
+                ..
+            })
+        ));
+        let g = LightAngle::new(1.0).unwrap();
+        assert!(tilted_mz(&view, NPrime::Finite(-1.0), g, 2.0, Resolutions::default()).is_err());
+        assert!(tilted_mz(&view, NPrime::Finite(1.0), g, 11.0, Resolutions::default()).is_err());
+        assert!(
+            tilted_mz_perpendicular(&view, NPrime::Unwarped, g0, 2.0, Resolutions::default())
+                .is_ok()
+        );
+        assert!(matches!(
+            n_prime_equal_error(&view, LightAngle::new(0.01).unwrap()),
+            Err(Error::NoSolution(_))
+        ));
+    }
+}
