@@ -1,0 +1,171 @@
+//! Light space: the orthonormal frame every warp is built in (Lloyd 2006 §4, Fig 3; Wimmer et
+//! al. 2004's LiSPSM light space with s and t swapped as Lloyd does).
+//!
+//! - `y` points toward the light (against the direction light travels);
+//! - `z` is the warp axis: a chosen axis (the view direction for a single map, a face bisector
+//!   for a face partition) projected perpendicular to `y`;
+//! - `x = y × z`, so that (x, y, z) is right-handed.
+//!
+//! The shadow map's s runs along `x`, t along `z`, and depth along `−y`.
+//!
+//! # When the axis is parallel to the light
+//!
+//! The projection of the axis vanishes and its direction is undefined. No choice can be continuous
+//! over every way of approaching that configuration (the projected axis turns by 180° as the light
+//! passes through the axis, and by any angle depending on the side it approaches from: a tangent
+//! field on the sphere must vanish somewhere). The crate's choice: when the projected axis is
+//! shorter than [`PARALLEL_TOLERANCE`] (sine of the angle between axis and light), `z` is the
+//! eye-space up vector +Y projected perpendicular to the light, or +X if that is parallel too.
+//! For the view direction −Z this is the limit of the light sweeping through the view axis in the
+//! eye's vertical plane, and it gives the same orthographic storage factor as the limit in the
+//! horizontal plane (the frustum's cross-section is an axis-aligned rectangle). All the crate's
+//! n′ rules go to [`crate::NPrime::Unwarped`] there, so the map is the orthographic fit.
+
+use crate::error::{Error, Result};
+use crate::frustum::unit_light_dir;
+use glam::{DMat4, DVec3, DVec4};
+
+/// Below this length of the axis projected perpendicular to the light (the sine of the angle
+/// between them), the projection is treated as zero and the fallback axis is used. 1e−12 is far
+/// below any angle a renderer distinguishes (2·10⁻¹⁰ degrees) and far above the rounding error of
+/// a unit vector's components (≈ 10⁻¹⁶), so the normalised projection is accurate to ≈ 10⁻⁴ in the
+/// worst case just above the threshold and exact far from it.
+pub const PARALLEL_TOLERANCE: f64 = 1e-12;
+
+/// An orthonormal, right-handed light-space frame in eye space (see the module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LightSpace {
+    /// s direction of the shadow map, `y × z`.
+    pub x: DVec3,
+    /// Toward the light: `−light_dir`.
+    pub y: DVec3,
+    /// The warp axis (t direction), perpendicular to `y`.
+    pub z: DVec3,
+}
+
+impl LightSpace {
+    /// Light-space coordinates `(x·p, y·p, z·p)` of an eye-space point (the frame shares the eye's
+    /// origin).
+    #[inline]
+    #[must_use]
+    pub fn to_light(&self, p: DVec3) -> DVec3 {
+        DVec3::new(self.x.dot(p), self.y.dot(p), self.z.dot(p))
+    }
+
+    /// The rotation eye space → light space as a matrix (rows x, y, z).
+    #[must_use]
+    pub fn rotation(&self) -> DMat4 {
+        DMat4::from_cols(
+            self.x.extend(0.0),
+            self.y.extend(0.0),
+            self.z.extend(0.0),
+            DVec4::W,
+        )
+        .transpose()
+    }
+
+    /// The direction light travels, `−y`.
+    #[inline]
+    #[must_use]
+    pub fn light_dir(&self) -> DVec3 {
+        -self.y
+    }
+}
+
+/// Builds light space for a directional light travelling along `light_dir` (eye space, any
+/// length) with warp axis `axis` (eye space, any length; the view direction `(0, 0, −1)` for a
+/// single map).
+///
+/// `y = −light_dir/|light_dir|`, `z = (a − (a·y) y)/|a − (a·y) y|` with `a = axis/|axis|`,
+/// `x = y × z`. When `|a − (a·y) y| <` [`PARALLEL_TOLERANCE`] the fallback of the module docs is
+/// used. The result is continuous in `light_dir` and `axis` everywhere except exactly there.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `light_dir` or `axis` for a zero or non-finite vector.
+///
+/// ```
+/// # use shadow_aliasing::build::light_space;
+/// # use glam::DVec3;
+/// // Light straight down, view along −Z: z is the view direction, y is up.
+/// let ls = light_space(DVec3::new(0.0, -1.0, 0.0), DVec3::new(0.0, 0.0, -1.0))?;
+/// assert!((ls.z - DVec3::new(0.0, 0.0, -1.0)).length() < 1e-15);
+/// assert!((ls.y - DVec3::Y).length() < 1e-15);
+/// assert!((ls.x.cross(ls.y) - ls.z).length() < 1e-15);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn light_space(light_dir: DVec3, axis: DVec3) -> Result<LightSpace> {
+    let l = unit_light_dir(light_dir)?;
+    let a = unit_axis(axis)?;
+    let y = -l;
+    let mut z = a - a.dot(y) * y;
+    if z.length() < PARALLEL_TOLERANCE {
+        z = DVec3::Y - y.y * y;
+        if z.length() < 0.5 {
+            z = DVec3::X - y.x * y;
+        }
+    }
+    let z = z.normalize();
+    let x = y.cross(z).normalize();
+    // Re-orthogonalise so the frame is orthonormal to rounding.
+    let z = x.cross(y);
+    Ok(LightSpace { x, y, z })
+}
+
+fn unit_axis(axis: DVec3) -> Result<DVec3> {
+    if !axis.is_finite() {
+        return Err(Error::invalid(
+            "axis",
+            format!("must be finite (got {axis})"),
+        ));
+    }
+    let len = axis.length();
+    if len.is_nan() || len <= 1e-300 || !len.is_finite() {
+        return Err(Error::invalid(
+            "axis",
+            format!("must be a non-zero vector (got {axis})"),
+        ));
+    }
+    Ok(axis / len)
+}
+
+/// sin γ: the sine of the angle between the light and the axis, `|a − (a·y) y|` computed as
+/// `|a × y|` (accurate near 0, unlike `√(1 − cos²)`).
+#[inline]
+#[must_use]
+pub(crate) fn sin_to_axis(light_dir: DVec3, axis: DVec3) -> f64 {
+    let l = light_dir.normalize();
+    let a = axis.normalize();
+    a.cross(l).length().min(1.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frame_is_orthonormal_and_right_handed() {
+        for l in [
+            DVec3::new(0.3, -1.0, 0.2),
+            DVec3::new(0.0, 0.0, -1.0),
+            DVec3::new(0.0, 0.0, 1.0),
+            DVec3::new(1e-14, 0.0, 1.0),
+            DVec3::new(0.0, 1.0, 0.0),
+        ] {
+            let ls = light_space(l, DVec3::NEG_Z).unwrap();
+            for v in [ls.x, ls.y, ls.z] {
+                assert!((v.length() - 1.0).abs() < 1e-14);
+            }
+            assert!(ls.x.dot(ls.y).abs() < 1e-14);
+            assert!(ls.x.dot(ls.z).abs() < 1e-14);
+            assert!(ls.y.dot(ls.z).abs() < 1e-14);
+            assert!((ls.x.cross(ls.y) - ls.z).length() < 1e-14);
+            assert!((ls.light_dir() - l.normalize()).length() < 1e-14);
+        }
+        // Parallel: the fallback is eye up projected, the limit from a light tilted toward −Y.
+        let ls = light_space(DVec3::new(0.0, 0.0, -1.0), DVec3::NEG_Z).unwrap();
+        let near = light_space(DVec3::new(0.0, -1e-6, -1.0), DVec3::NEG_Z).unwrap();
+        assert!((ls.z - near.z).length() < 1e-5);
+        assert!(light_space(DVec3::ZERO, DVec3::NEG_Z).is_err());
+        assert!(light_space(DVec3::Y, DVec3::new(f64::NAN, 0.0, 0.0)).is_err());
+    }
+}

@@ -1,0 +1,116 @@
+//! The builders' result: a shadow matrix with what a renderer and the measurement need.
+//!
+//! # Conventions
+//!
+//! | space | convention |
+//! |---|---|
+//! | eye space (input) | right-handed, camera at the origin looking down −Z, Y up (glam `dcamera::rh::view::look_at_mat4`) |
+//! | light clip space (output) | x, y ∈ [−1, 1] span the map after the divide by w; s = (x/w + 1)/2 along light-space x, t = (y/w + 1)/2 along the warp axis |
+//! | clip depth, [`ClipDepth::NegOneToOne`] | z/w ∈ [−1, 1], −1 nearest the light (OpenGL) |
+//! | clip depth, [`ClipDepth::ZeroToOne`] | z/w ∈ [0, 1], 0 nearest the light (Vulkan, wgpu, Direct3D, Metal) |
+//!
+//! The stored matrix is always the OpenGL one; [`ShadowMatrix::with_clip_depth`] converts, by
+//! `z₀₁ = (z + w)/2` (row 2 becomes (row 2 + row 3)/2), which leaves x, y and w, hence the texel
+//! a point lands in, unchanged.
+
+use crate::measure::ShadowMap;
+use crate::NPrime;
+use glam::{DMat4, DVec3, DVec4, Mat4};
+
+/// The depth range of light clip space after the perspective divide.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum ClipDepth {
+    /// z/w ∈ [−1, 1] (OpenGL). The crate's internal convention.
+    #[default]
+    NegOneToOne,
+    /// z/w ∈ [0, 1] (Vulkan, wgpu, Direct3D, Metal).
+    ZeroToOne,
+}
+
+/// A shadow matrix for one directional light and one view (sub)frustum.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShadowMatrix {
+    /// Eye space → light clip space, OpenGL depth [−1, 1]; x, y span the map.
+    pub matrix: DMat4,
+    /// Unit eye-space direction the light travels.
+    pub light_dir: DVec3,
+    /// The warp parameter used ([`NPrime::Unwarped`] for an orthographic map).
+    pub n_prime: NPrime,
+    /// Near end of the view-depth range the map covers.
+    pub near: f64,
+    /// Far end of the view-depth range the map covers.
+    pub far: f64,
+}
+
+impl ShadowMatrix {
+    /// The matrix in the requested clip-depth convention (eye space → light clip space).
+    ///
+    /// ```
+    /// # use shadow_aliasing::build::{warp, ClipDepth, WarpRule};
+    /// # use shadow_aliasing::ViewFrustum;
+    /// # use glam::{DVec3, DVec4};
+    /// let view = ViewFrustum::new(1.0, 50.0, 0.6)?;
+    /// let s = warp(&view, DVec3::new(0.2, -1.0, 0.1), WarpRule::Lispsm)?;
+    /// let m = s.with_clip_depth(ClipDepth::ZeroToOne);
+    /// for c in view.corners() {
+    ///     let h = m * DVec4::new(c.x, c.y, c.z, 1.0);
+    ///     assert!(h.z >= -1e-9 * h.w && h.z <= h.w * (1.0 + 1e-9));
+    /// }
+    /// # Ok::<(), shadow_aliasing::Error>(())
+    /// ```
+    #[must_use]
+    pub fn with_clip_depth(&self, depth: ClipDepth) -> DMat4 {
+        match depth {
+            ClipDepth::NegOneToOne => self.matrix,
+            ClipDepth::ZeroToOne => {
+                let r2 = self.matrix.row(2);
+                let r3 = self.matrix.row(3);
+                let z = 0.5 * (r2 + r3);
+                let mut t = self.matrix.transpose();
+                t.z_axis = z;
+                t.transpose()
+            }
+        }
+    }
+
+    /// The matrix in single precision for the GPU.
+    #[must_use]
+    pub fn to_mat4(&self, depth: ClipDepth) -> Mat4 {
+        self.with_clip_depth(depth).as_mat4()
+    }
+
+    /// World space → light clip space for a renderer: `S · view`, where `view` is the camera's
+    /// world → eye matrix (glam `dcamera::rh::view::look_at_mat4`).
+    #[must_use]
+    pub fn world_to_clip(&self, view: DMat4, depth: ClipDepth) -> DMat4 {
+        self.with_clip_depth(depth) * view
+    }
+
+    /// The map in the form [`crate::measure::point_error`] and [`crate::measure::frustum_max`]
+    /// take.
+    #[must_use]
+    pub fn shadow_map(&self) -> ShadowMap {
+        ShadowMap {
+            matrix: self.matrix,
+            light_dir: self.light_dir,
+        }
+    }
+
+    /// Light clip coordinates `(x/w, y/w, z/w)` of an eye-space point, OpenGL depth, or `None`
+    /// when `w ≤ 0` (the point is behind the warp's centre of projection).
+    #[must_use]
+    pub fn project(&self, p: DVec3) -> Option<DVec3> {
+        project(&self.matrix, p)
+    }
+}
+
+/// `(x/w, y/w, z/w)` of `m (p, 1)`, or `None` when `w` is not positive and finite.
+#[must_use]
+pub(crate) fn project(m: &DMat4, p: DVec3) -> Option<DVec3> {
+    let h = *m * DVec4::new(p.x, p.y, p.z, 1.0);
+    if h.w > 0.0 && h.is_finite() {
+        Some(h.truncate() / h.w)
+    } else {
+        None
+    }
+}

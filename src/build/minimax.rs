@@ -1,0 +1,239 @@
+//! The crate's own warp parameters: the n′ that minimises the frustum's maximum error, found from
+//! the error's exact form in n′ rather than from the light-overhead closed form.
+//!
+//! # M_z as a function of n′
+//!
+//! For the warp of [`crate::build::fit_warp`] the t coordinate depends only on `δ = z − z₀`, the
+//! light-space distance along the warp axis from where the warping frustum starts, and with unit
+//! resolutions the z error at a frustum vertex i (eye depth zᵢ, offset δᵢ, frustum extent Δ along
+//! the axis, half field of view θ) is
+//!
+//! ```text
+//! m_z,i(n′) = Kᵢ (n′ + δᵢ)² / (n′ (n′ + Δ)),   Kᵢ = Δ / (2 zᵢ tan θ)
+//! ```
+//!
+//! (Lloyd 2006 Eq 8 with `z − n` replaced by δᵢ and `f − n` by Δ; Barroso & Celes Eq 12 written in
+//! the warp frame). All vertices share the denominator, so
+//! `M_z(n′) = G(n′)² / (n′(n′ + Δ))` with `G(n′) = maxᵢ √Kᵢ (n′ + δᵢ)`, the upper envelope of
+//! eight lines. On a piece where line i is the maximum, `√Kᵢ (n′ + δᵢ)/√(n′(n′ + Δ))` is stationary
+//! only at `n′ = δᵢ Δ/(Δ − 2δᵢ)` (when `0 < δᵢ < Δ/2`, a minimum), and tends to `√Kᵢ` as n′ → ∞.
+//! So the minimum of M_z over n′ ∈ (0, ∞] lies at a crossing of two lines, at one of these
+//! stationary points, or at n′ = ∞: 28 + 8 + 1 candidates, each evaluated exactly. With the light
+//! overhead the optimum is the crossing of the near and far lines, `n + √(f n)` (Lloyd 2006 §4.1).
+//!
+//! # S̄ as a function of n′
+//!
+//! The x error at vertex i is `m_x,i = u_h(n′) (1 + δᵢ/n′) / (zᵢ tan θ)`, `u_h` half the range of
+//! `xᵢ/(1 + δᵢ/n′)`, so `S̄ = M_x M_z` is a product of piecewise rational functions whose pieces
+//! change where the arg-max vertices change. [`min_storage_n_prime`] minimises it by a 64-point scan of
+//! `u = ρΔ/(1 + ρΔ) ∈ [0, 1)` (ρ = 1/n′; u = 0 is the uniform map) refined by golden-section search
+//! between the neighbours of the best sample; ties within 10⁻⁹ go to the larger n′ (the least
+//! warp: with the light overhead S̄ is flat for n′ ≤ n + √(f n) and this picks n + √(f n)).
+
+use crate::build::warp::{FrustumInLight, Ranges};
+use crate::error::Result;
+use crate::frustum::{NPrime, ViewFrustum};
+use glam::DVec3;
+
+/// A chosen n′ and the frustum maximum it achieves.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Optimum {
+    /// The n′ chosen.
+    pub n_prime: NPrime,
+    /// The maximum z error M_z of the fitted map (unit resolutions).
+    pub max_mz: f64,
+    /// The maximum x error M_x of the fitted map (unit resolutions).
+    pub max_mx: f64,
+}
+
+impl Optimum {
+    /// S̄ = M_x M_z.
+    #[must_use]
+    pub fn storage_factor(&self) -> f64 {
+        self.max_mx * self.max_mz
+    }
+}
+
+/// `(M_x, M_z)` of the warp with ρ = 1/n′ fitted to the frustum, from the closed forms above.
+pub(crate) fn maxima(view: &ViewFrustum, fl: &FrustumInLight, rho: f64) -> (f64, f64) {
+    let t = view.tan_half_fov();
+    let d = fl.delta;
+    let mut r = Ranges::new();
+    let mut gx = 0.0f64;
+    let mut mz = 0.0f64;
+    let den = 1.0 + rho * d;
+    for i in 0..8 {
+        let q: DVec3 = fl.q[i];
+        let w = 1.0 + rho * (q.z - fl.z0);
+        r.add(q.x / w, 0.0);
+        gx = gx.max(w / fl.depth[i]);
+        mz = mz.max(d * w * w / (den * 2.0 * fl.depth[i] * t));
+    }
+    let u_h = 0.5 * (r.u.1 - r.u.0);
+    (u_h * gx / t, mz)
+}
+
+fn rho_of(n: NPrime) -> f64 {
+    match n {
+        NPrime::Unwarped => 0.0,
+        NPrime::Finite(v) => 1.0 / v,
+    }
+}
+
+fn optimum(view: &ViewFrustum, fl: &FrustumInLight, n_prime: NPrime) -> Optimum {
+    let (max_mx, max_mz) = maxima(view, fl, rho_of(n_prime));
+    Optimum {
+        n_prime,
+        max_mz,
+        max_mx,
+    }
+}
+
+/// The n′ ∈ (0, ∞] minimising M_z of the frustum's fitted warp, exactly (module docs).
+pub(crate) fn minimax_mz(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
+    let d = fl.delta;
+    let t = view.tan_half_fov();
+    let mut a = [0.0f64; 8];
+    let mut b = [0.0f64; 8];
+    for i in 0..8 {
+        let k = (d / (2.0 * fl.depth[i] * t)).sqrt();
+        a[i] = k;
+        b[i] = k * (fl.q[i].z - fl.z0);
+    }
+    let mz_at = |n: f64| -> f64 {
+        let g = (0..8).fold(0.0f64, |m, i| m.max(a[i] * n + b[i]));
+        g * g / (n * (n + d))
+    };
+    // n′ = ∞: M_z = max Kᵢ.
+    let mut best_n = f64::INFINITY;
+    let mut best = a.iter().fold(0.0f64, |m, &k| m.max(k * k));
+    let mut consider = |n: f64| {
+        if n.is_finite() && n > 0.0 {
+            let v = mz_at(n);
+            if v.is_finite() && (v < best * (1.0 - 1e-12) || (v <= best && n > best_n)) {
+                best = v;
+                best_n = n;
+            }
+        }
+    };
+    for i in 0..8 {
+        let di = fl.q[i].z - fl.z0;
+        if di > 0.0 && 2.0 * di < d {
+            consider(di * d / (d - 2.0 * di));
+        }
+        for j in (i + 1)..8 {
+            let da = a[i] - a[j];
+            if da != 0.0 {
+                consider((b[j] - b[i]) / da);
+            }
+        }
+    }
+    let n_prime = if best_n.is_finite() {
+        NPrime::Finite(best_n)
+    } else {
+        NPrime::Unwarped
+    };
+    optimum(view, fl, n_prime)
+}
+
+/// The n′ ∈ (0, ∞] minimising S̄ = M_x M_z of the frustum's fitted warp (module docs).
+pub(crate) fn min_storage(view: &ViewFrustum, fl: &FrustumInLight) -> Result<Optimum> {
+    let d = fl.delta;
+    // u ∈ [0, 1) ↦ ρ = u / ((1 − u) Δ).
+    let rho = |u: f64| u / ((1.0 - u) * d);
+    let sbar = |u: f64| {
+        let (mx, mz) = maxima(view, fl, rho(u));
+        mx * mz
+    };
+    const N: usize = 64;
+    let step = 1.0 / N as f64;
+    let mut best_k = 0usize;
+    let mut best = sbar(0.0);
+    for k in 1..N {
+        let v = sbar(k as f64 * step);
+        if v < best * (1.0 - 1e-12) {
+            best = v;
+            best_k = k;
+        }
+    }
+    // Golden-section refinement on [u_{k−1}, u_{k+1}] (clamped to [0, 1 − step/2]).
+    let mut lo = (best_k as f64 - 1.0).max(0.0) * step;
+    let mut hi = ((best_k as f64 + 1.0) * step).min(1.0 - 0.5 * step);
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let mut x1 = hi - g * (hi - lo);
+    let mut x2 = lo + g * (hi - lo);
+    let (mut f1, mut f2) = (sbar(x1), sbar(x2));
+    for _ in 0..80 {
+        if f1 <= f2 {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - g * (hi - lo);
+            f1 = sbar(x1);
+        } else {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + g * (hi - lo);
+            f2 = sbar(x2);
+        }
+    }
+    let mut u_best = best_k as f64 * step;
+    let um = 0.5 * (lo + hi);
+    let fm = sbar(um);
+    if fm < best {
+        best = fm;
+        u_best = um;
+    }
+    // Ties go to the least warp (smallest u) whose S̄ is within 1e−9 of the best: bisect on
+    // [0, u_best] for the smallest such u when S̄(0) is not already within it.
+    let tol = best * (1.0 + 1e-9);
+    let u_final = if sbar(0.0) <= tol {
+        0.0
+    } else {
+        let (mut a, mut b) = (0.0, u_best);
+        for _ in 0..60 {
+            let m = 0.5 * (a + b);
+            if sbar(m) <= tol {
+                b = m;
+            } else {
+                a = m;
+            }
+        }
+        b
+    };
+    let n_prime = if u_final <= 0.0 {
+        NPrime::Unwarped
+    } else {
+        NPrime::Finite(1.0 / rho(u_final))
+    };
+    Ok(optimum(view, fl, n_prime))
+}
+
+/// The minimax n′ of the module docs for a view frustum and light, with the maxima it achieves.
+///
+/// # Errors
+/// [`crate::Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector.
+///
+/// ```
+/// # use shadow_aliasing::build::minimax::minimax_n_prime;
+/// # use shadow_aliasing::{NPrime, ViewFrustum};
+/// # use glam::DVec3;
+/// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;
+/// let o = minimax_n_prime(&view, DVec3::new(0.0, -1.0, 0.0))?;
+/// assert!((o.n_prime.value() - 11.0).abs() < 1e-9); // n + √(f n)
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn minimax_n_prime(view: &ViewFrustum, light_dir: DVec3) -> Result<Optimum> {
+    let fl = FrustumInLight::new(view, light_dir)?;
+    Ok(minimax_mz(view, &fl))
+}
+
+/// The n′ minimising the storage factor S̄ (module docs), with the maxima it achieves.
+///
+/// # Errors
+/// [`crate::Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector.
+pub fn min_storage_n_prime(view: &ViewFrustum, light_dir: DVec3) -> Result<Optimum> {
+    let fl = FrustumInLight::new(view, light_dir)?;
+    min_storage(view, &fl)
+}

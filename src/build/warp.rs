@@ -1,0 +1,524 @@
+//! The perspective warp in light space (Lloyd 2006 §4, Fig 3) fitted around a point set, and the
+//! named rules that choose its parameter n′.
+//!
+//! # The construction
+//!
+//! In light space ([`LightSpace`]: x along s, y toward the light, z the warp axis) let the points
+//! span `z ∈ [z₀, z₀ + Δ]`. The warping frustum's centre of projection `c` lies on the warp axis
+//! through the eye, at `z = z₀ − n′`: n′ is the distance from `c` to the plane where the warping
+//! frustum starts (Lloyd 2006 Fig 3; in the light-overhead case `z₀ = n` and this is Lloyd's n′
+//! exactly; for a tilted light it is Barroso & Celes' n′, their Eq 10, and the reference LiSPSM
+//! code's `C = C_start + n·ẑ`). With `ρ = 1/n′` (0 for [`NPrime::Unwarped`]) and
+//! `δ = z − z₀ ∈ [0, Δ]`, the homogeneous map is, in light space,
+//!
+//! ```text
+//! w   = 1 + ρ δ                                  (distance from c over n′)
+//! x_c = (x − u_m w) / u_h                         s: u = x/w fitted to [−1, 1]
+//! y_c = −1 + 2 δ/Δ + ρ δ                          t: δ = 0 → −1, δ = Δ → +1
+//! z_c = −(y − v_m w) / v_h                        depth: v = y/w fitted to [−1, 1], −1 nearest the light
+//! ```
+//!
+//! where `u_m ± u_h` and `v_m ± v_h` are the ranges of `x/w` and `y/w` over the points. After the
+//! divide, `y_c/w = −1 + 2 (δ/Δ) (n′ + Δ)/(n′ + δ)`: Lloyd's t(z) (his Eq 8's parameterisation,
+//! OpenGL's perspective depth along the warp axis). The form in ρ is exact for every n′ and tends,
+//! entry by entry, to the orthographic fit as n′ → ∞ (ρ → 0), so a rule whose n′ grows without
+//! bound as the light turns parallel to the view degrades continuously to the uniform map, with a
+//! matrix whose entries stay of the size of the frustum's extent (no `1/n′ · n′` cancellation).
+//!
+//! s is the tight fit of `x/w` with the centre of projection on the eye's light-space x, as the
+//! LiSPSM reference code (`C_start = (e.x, e.y, z_max)`), Filament (`ShadowMap::applyLISPSM`,
+//! `p = {lsCameraPosition.x, n − nopt, 0}`) and OGRE (`LiSPSMShadowCameraSetup::calculateLiSPSM`)
+//! place it; TSM's q on the centre line l is the same point (see the trapezoidal builder).
+
+use crate::build::lightspace::{light_space, sin_to_axis, LightSpace};
+use crate::build::matrix::ShadowMatrix;
+use crate::build::minimax;
+use crate::error::{fmt_num, Error, Result};
+use crate::frustum::{LightAngle, NPrime, ViewFrustum};
+use glam::{DMat4, DVec3, DVec4};
+
+/// Barroso & Celes' fall-off r(γ) below γ_lim (their Eq 17 and 18).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Falloff {
+    /// r(γ) = [1 + sin((γ/γ_lim − 1) π/2)]², Barroso & Celes Eq 18 (their choice for LiSPSM).
+    Barroso,
+    /// r(γ) = sin(γ/γ_lim · π/2), Zhang et al.'s fall-off for PSM, Barroso & Celes Eq 17.
+    Zhang,
+}
+
+/// How the warp parameter n′ is chosen. Each rule names its source; the engines' rules reproduce
+/// the shipped code's arithmetic for a frustum-only focus body (no scene bound), so that their
+/// matrices can be measured against the papers.
+///
+/// γ below is the angle between the light and the view direction folded into [0, π/2]; n and f the
+/// view frustum's near and far depths; Δ the extent of the view frustum along the warp axis in
+/// light space (the reference code's and Filament's `d`).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum WarpRule {
+    /// n′ = ∞: the orthographic map fitted tightly to the frustum.
+    Uniform,
+    /// Lloyd 2006 Eq 11: n′(η) = n(√α + 1 − η(α − 1))/(η + 1) for −1 ≤ η ≤ 0 (η = −1 is
+    /// n′ = ∞) and n(√α + 1)/(η√α + 1) for 0 < η ≤ 1, α = f/n. η = 0 is LiSPSM, η = 1 PSM.
+    Eta(f64),
+    /// PSM's n′ = n (Lloyd 2006 §4.1).
+    Psm,
+    /// LiSPSM's overhead optimum n′ = n + √(f n) (Wimmer et al. 2004; Lloyd 2006 §4.1), for every
+    /// light direction.
+    Lispsm,
+    /// The 1/sin γ generalisation n′ = (n + √(f n))/sin γ (Wimmer et al. 2004 §5; the rule behind
+    /// Lloyd 2006 Fig 7's warped panel); n′ = ∞ at γ = 0.
+    LispsmSin,
+    /// Barroso & Celes' generalised n′ (their Eq 13, 15, 16 with the fall-off of Eq 17 or 18).
+    Barroso(Falloff),
+    /// Martin & Tan's 80 % rule (TSM §6.2): the n′ that maps the point `focus` beyond the near
+    /// plane on the view axis to the 80 % line; n′ = ∞ when no finite centre of projection can.
+    Tsm {
+        /// Focus distance δ beyond the near plane, world units, `0 < focus ≤ f − n`.
+        focus: f64,
+    },
+    /// The LiSPSM reference code (Wimmer, `LispSM::calcNoptGeneral`):
+    /// n′ = Δ/(√(z₁/z₀) − 1) with z₀ = n, z₁ = n + Δ sin γ the eye depths at the near and far ends
+    /// of the warp axis, computed as Δ(√(1 + x) + 1)/x, x = Δ sin γ/n; n′ = ∞ at γ = 0.
+    LispsmReference,
+    /// Filament's `ShadowMap::applyLISPSM` with its default hints (near 1, far 100 world units).
+    Filament,
+    /// Filament's rule with explicit hints: n′ = max((z₀ + √(v₀ v₁))/sin γ, dzn/(2 − 3 dzn/(f − n)))
+    /// with dzn = max(0, near_hint − n), dzf = max(0, f − far_hint), z₀ = n, z₁ = n + Δ sin γ,
+    /// v₀ = n + dzn, v₁ = min(f − dzf, z₁); orthographic when sin γ ≤ 0.02 or 3 dzn/(f − n) ≥ 2.
+    FilamentHints {
+        /// `ShadowOptions::shadowNearHint`.
+        near_hint: f64,
+        /// `ShadowOptions::shadowFarHint`.
+        far_hint: f64,
+    },
+    /// OGRE's default (`LiSPSMShadowCameraSetup::calculateNOptSimple`, `mUseSimpleNOpt = true`):
+    /// n′ = (|e_z| + √(n f)) · 0.1 · k, e_z the near camera point's eye depth (n for the frustum),
+    /// 0.1 the default `mOptAdjustFactor`, and k = 1 + 20 (|cos γ| − 0.9)/0.1 when |cos γ| ≥ 0.9,
+    /// else 1 (`getShadowCamera`'s ramp, `mCosCamLightDirThreshold = 0.9`). It does not tend to
+    /// the uniform map as the light turns parallel (k ≤ 21).
+    Ogre,
+    /// The crate's minimax: the n′ ∈ (0, ∞] that minimises the frustum's maximum z error M_z,
+    /// found exactly ([`crate::build::minimax`]). The default.
+    #[default]
+    Minimax,
+    /// The n′ ∈ (0, ∞] that minimises the storage factor S̄ = M_x M_z of this matrix
+    /// ([`crate::build::minimax::min_storage_n_prime`]).
+    MinStorage,
+}
+
+/// The view frustum's corners in light space with what the rules need: no allocation.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct FrustumInLight {
+    pub ls: LightSpace,
+    /// Light-space coordinates of the eight corners.
+    pub q: [DVec3; 8],
+    /// Eye depth −p.z of each corner.
+    pub depth: [f64; 8],
+    /// Smallest light-space z of the corners.
+    pub z0: f64,
+    /// Extent of the corners along the warp axis.
+    pub delta: f64,
+    /// sin γ between light and view direction.
+    pub sin_gamma: f64,
+}
+
+impl FrustumInLight {
+    pub(crate) fn new(view: &ViewFrustum, light_dir: DVec3) -> Result<Self> {
+        let ls = light_space(light_dir, DVec3::NEG_Z)?;
+        let corners = view.corners();
+        let mut q = [DVec3::ZERO; 8];
+        let mut depth = [0.0; 8];
+        let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
+        for i in 0..8 {
+            q[i] = ls.to_light(corners[i]);
+            depth[i] = -corners[i].z;
+            z0 = z0.min(q[i].z);
+            z1 = z1.max(q[i].z);
+        }
+        Ok(Self {
+            ls,
+            q,
+            depth,
+            z0,
+            delta: z1 - z0,
+            sin_gamma: sin_to_axis(light_dir, DVec3::NEG_Z),
+        })
+    }
+}
+
+/// The perspective warp of the module docs along `ls.z` with parameter `n_prime`, fitted tightly
+/// around `points` (eye space); orthographic for [`NPrime::Unwarped`]. s runs along `ls.x`, t along
+/// `ls.z` (t = 0 at the points' smallest z), depth along `−ls.y`. Every point maps into the clip
+/// volume `[−1, 1]³` with `w ≥ 1`; the extreme points land on its faces.
+///
+/// When the points' range of `y/w` (their depth range) is zero, it is widened to 10⁻⁹ of their
+/// largest extent so that the matrix stays invertible; a zero range of `x/w` or of `z` cannot be
+/// mapped and is an error.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `points` when empty or not finite, `n_prime` when a
+/// [`NPrime::Finite`] value is not finite and positive; [`Error::Degenerate`] when the points have
+/// no extent along `ls.x` or `ls.z`.
+///
+/// ```
+/// # use shadow_aliasing::build::{fit_warp, light_space};
+/// # use shadow_aliasing::{NPrime, ViewFrustum};
+/// # use glam::{DVec3, DVec4};
+/// let view = ViewFrustum::new(1.0, 20.0, 0.5)?;
+/// let ls = light_space(DVec3::new(0.0, -1.0, 0.0), DVec3::NEG_Z)?;
+/// let m = fit_warp(&view.corners(), &ls, NPrime::Finite(view.n_prime_lispsm()))?;
+/// for c in view.corners() {
+///     let h = m * DVec4::new(c.x, c.y, c.z, 1.0);
+///     assert!(h.w > 0.0 && (h.truncate() / h.w).abs().max_element() <= 1.0 + 1e-12);
+/// }
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn fit_warp(points: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DMat4> {
+    if points.is_empty() {
+        return Err(Error::invalid("points", "must not be empty"));
+    }
+    let rho = match n_prime {
+        NPrime::Unwarped => 0.0,
+        NPrime::Finite(v) => {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(Error::invalid(
+                    "n_prime",
+                    format!("must be finite and greater than 0 (got {})", fmt_num(v)),
+                ));
+            }
+            1.0 / v
+        }
+    };
+    let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
+    let mut extent = 0.0f64;
+    for p in points {
+        if !p.is_finite() {
+            return Err(Error::invalid(
+                "points",
+                format!("must be finite (got {p})"),
+            ));
+        }
+        let z = ls.z.dot(*p);
+        z0 = z0.min(z);
+        z1 = z1.max(z);
+        extent = extent.max(p.abs().max_element());
+    }
+    let delta = z1 - z0;
+    let mut range = Ranges::new();
+    for p in points {
+        let q = ls.to_light(*p);
+        let w = 1.0 + rho * (q.z - z0);
+        range.add(q.x / w, q.y / w);
+    }
+    warp_matrix(ls, z0, delta, rho, &range, extent)
+}
+
+/// Running min/max of u = x/w and v = y/w.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Ranges {
+    pub u: (f64, f64),
+    pub v: (f64, f64),
+}
+
+impl Ranges {
+    pub(crate) fn new() -> Self {
+        Self {
+            u: (f64::INFINITY, f64::NEG_INFINITY),
+            v: (f64::INFINITY, f64::NEG_INFINITY),
+        }
+    }
+    #[inline]
+    pub(crate) fn add(&mut self, u: f64, v: f64) {
+        self.u = (self.u.0.min(u), self.u.1.max(u));
+        self.v = (self.v.0.min(v), self.v.1.max(v));
+    }
+}
+
+/// Assembles the matrix of the module docs. `extent` is the points' largest coordinate magnitude
+/// (scale for the degeneracy tests).
+pub(crate) fn warp_matrix(
+    ls: &LightSpace,
+    z0: f64,
+    delta: f64,
+    rho: f64,
+    r: &Ranges,
+    extent: f64,
+) -> Result<DMat4> {
+    let tiny = 1e-12 * extent.max(f64::MIN_POSITIVE);
+    if delta.is_nan() || delta <= tiny {
+        return Err(Error::Degenerate(format!(
+            "the points have no extent along the warp axis (extent {})",
+            fmt_num(delta)
+        )));
+    }
+    let u_h = 0.5 * (r.u.1 - r.u.0);
+    let u_m = 0.5 * (r.u.1 + r.u.0);
+    if u_h.is_nan() || u_h <= tiny {
+        return Err(Error::Degenerate(format!(
+            "the points have no extent across the warp axis (extent {})",
+            fmt_num(2.0 * u_h)
+        )));
+    }
+    let v_h = (0.5 * (r.v.1 - r.v.0)).max(1e-9 * extent.max(f64::MIN_POSITIVE));
+    let v_m = 0.5 * (r.v.1 + r.v.0);
+    let a = 1.0 - rho * z0; // w = rho z + a
+    let k = 2.0 / delta + rho;
+    let w_ls = DMat4::from_cols(
+        DVec4::new(1.0 / u_h, 0.0, 0.0, 0.0),
+        DVec4::new(0.0, 0.0, -1.0 / v_h, 0.0),
+        DVec4::new(-u_m * rho / u_h, k, v_m * rho / v_h, rho),
+        DVec4::new(-u_m * a / u_h, -1.0 - k * z0, v_m * a / v_h, a),
+    );
+    let m = w_ls * ls.rotation();
+    if !m.is_finite() {
+        return Err(Error::Degenerate(
+            "the fitted warp is not finite for these points".into(),
+        ));
+    }
+    Ok(m)
+}
+
+/// The shadow matrix of `rule` for the whole view frustum and a light travelling along
+/// `light_dir` (eye space): the light space of [`light_space`] with the view direction as axis,
+/// n′ from [`n_prime_for`], the warp fitted to the eight corners by [`fit_warp`]. No heap
+/// allocation.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector, or the rule's
+/// parameter (`eta`, `focus`, `near_hint`, `far_hint`) outside its domain.
+///
+/// ```
+/// # use shadow_aliasing::build::{warp, WarpRule};
+/// # use shadow_aliasing::measure::frustum_max;
+/// # use shadow_aliasing::ViewFrustum;
+/// # use glam::DVec3;
+/// let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians())?;
+/// let s = warp(&view, DVec3::new(0.0, -1.0, 0.0), WarpRule::Lispsm)?;
+/// // Light overhead: S̄ = (f/n − 1)/(2 tan θ) (Lloyd 2006 Eq 12).
+/// let e = frustum_max(&view, &s.shadow_map())?;
+/// let expect = 99.0 / (2.0 * 30f64.to_radians().tan());
+/// assert!((e.storage_factor - expect).abs() < 1e-9 * expect);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn warp(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<ShadowMatrix> {
+    let fl = FrustumInLight::new(view, light_dir)?;
+    let n_prime = rule_n_prime(view, &fl, rule)?;
+    let matrix = fit_frustum(view, &fl, n_prime)?;
+    Ok(ShadowMatrix {
+        matrix,
+        light_dir: fl.ls.light_dir(),
+        n_prime,
+        near: view.near(),
+        far: view.far(),
+    })
+}
+
+/// [`fit_warp`] on the frustum already in light space.
+pub(crate) fn fit_frustum(
+    view: &ViewFrustum,
+    fl: &FrustumInLight,
+    n_prime: NPrime,
+) -> Result<DMat4> {
+    let rho = match n_prime {
+        NPrime::Unwarped => 0.0,
+        NPrime::Finite(v) => {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(Error::invalid(
+                    "n_prime",
+                    format!("must be finite and greater than 0 (got {})", fmt_num(v)),
+                ));
+            }
+            1.0 / v
+        }
+    };
+    let mut r = Ranges::new();
+    for q in &fl.q {
+        let w = 1.0 + rho * (q.z - fl.z0);
+        r.add(q.x / w, q.y / w);
+    }
+    let extent = view.far() * (1.0 + view.tan_half_fov() * (1.0 + view.aspect()));
+    warp_matrix(&fl.ls, fl.z0, fl.delta, rho, &r, extent)
+}
+
+/// The n′ that `rule` chooses for the whole view frustum and this light (see [`WarpRule`]).
+///
+/// # Errors
+/// As [`warp`].
+///
+/// ```
+/// # use shadow_aliasing::build::{n_prime_for, WarpRule};
+/// # use shadow_aliasing::{NPrime, ViewFrustum};
+/// # use glam::DVec3;
+/// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;
+/// let overhead = DVec3::new(0.0, -1.0, 0.0);
+/// assert_eq!(n_prime_for(&view, overhead, WarpRule::Lispsm)?, NPrime::Finite(11.0));
+/// // The minimax n′ overhead is LiSPSM's (M_z equal on the near and far planes).
+/// let m = n_prime_for(&view, overhead, WarpRule::Minimax)?.value();
+/// assert!((m - 11.0).abs() < 1e-9);
+/// // Light from behind: every generalised rule falls back to the uniform map.
+/// assert_eq!(n_prime_for(&view, DVec3::NEG_Z, WarpRule::LispsmSin)?, NPrime::Unwarped);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn n_prime_for(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<NPrime> {
+    let fl = FrustumInLight::new(view, light_dir)?;
+    rule_n_prime(view, &fl, rule)
+}
+
+fn finite_or_unwarped(v: f64) -> NPrime {
+    if v.is_finite() && v > 0.0 {
+        NPrime::Finite(v)
+    } else {
+        NPrime::Unwarped
+    }
+}
+
+pub(crate) fn rule_n_prime(
+    view: &ViewFrustum,
+    fl: &FrustumInLight,
+    rule: WarpRule,
+) -> Result<NPrime> {
+    let (n, f) = (view.near(), view.far());
+    let sin_g = fl.sin_gamma;
+    Ok(match rule {
+        WarpRule::Uniform => NPrime::Unwarped,
+        WarpRule::Eta(eta) => n_prime_from_eta(n, f, eta)?,
+        WarpRule::Psm => NPrime::Finite(n),
+        WarpRule::Lispsm => NPrime::Finite(view.n_prime_lispsm()),
+        WarpRule::LispsmSin => {
+            if sin_g > 0.0 {
+                finite_or_unwarped(view.n_prime_lispsm() / sin_g)
+            } else {
+                NPrime::Unwarped
+            }
+        }
+        WarpRule::Barroso(falloff) => {
+            let gamma = LightAngle::from_light_dir(fl.ls.light_dir())?.radians();
+            barroso_n_prime(view, gamma, falloff)
+        }
+        WarpRule::Tsm { focus } => tsm_rule(view, fl, focus)?,
+        WarpRule::LispsmReference => {
+            let x = fl.delta * sin_g / n;
+            if x > 0.0 {
+                finite_or_unwarped(fl.delta * ((1.0 + x).sqrt() + 1.0) / x)
+            } else {
+                NPrime::Unwarped
+            }
+        }
+        WarpRule::Filament => filament_n_prime(view, fl, 1.0, 100.0)?,
+        WarpRule::FilamentHints {
+            near_hint,
+            far_hint,
+        } => filament_n_prime(view, fl, near_hint, far_hint)?,
+        WarpRule::Ogre => {
+            let cos_g = fl.ls.light_dir().z.abs().min(1.0);
+            let tweak = if cos_g >= 0.9 {
+                1.0 + 20.0 * ((cos_g - 0.9) / (1.0 - 0.9))
+            } else {
+                1.0
+            };
+            NPrime::Finite((n + (n * f).sqrt()) * 0.1 * tweak)
+        }
+        WarpRule::Minimax => minimax::minimax_mz(view, fl).n_prime,
+        WarpRule::MinStorage => minimax::min_storage(view, fl)?.n_prime,
+    })
+}
+
+/// Lloyd 2006 Eq 11 (private until the overhead closed forms are shared).
+fn n_prime_from_eta(n: f64, f: f64, eta: f64) -> Result<NPrime> {
+    let eta = crate::error::in_closed("eta", eta, -1.0, 1.0)?;
+    let a = f / n;
+    let sa = a.sqrt();
+    Ok(if eta <= -1.0 {
+        NPrime::Unwarped
+    } else if eta <= 0.0 {
+        NPrime::Finite(n * (sa + 1.0 - eta * (a - 1.0)) / (eta + 1.0))
+    } else {
+        NPrime::Finite(n * (sa + 1.0) / (eta * sa + 1.0))
+    })
+}
+
+/// Barroso & Celes Eq 13, 15–18 (private until the tilted closed forms are shared).
+fn barroso_n_prime(view: &ViewFrustum, gamma: f64, falloff: Falloff) -> NPrime {
+    use std::f64::consts::FRAC_PI_2;
+    let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
+    let (a, b) = (n * t, f * t);
+    let g_lim = ((a + b) / (f - n)).atan();
+    let n1 = |g: f64| (n + (f * n).sqrt()) * g.sin() - a * g.cos();
+    if gamma >= g_lim {
+        return NPrime::Finite(n1(gamma));
+    }
+    let r = match falloff {
+        Falloff::Zhang => (gamma / g_lim * FRAC_PI_2).sin(),
+        Falloff::Barroso => {
+            let s = 1.0 + ((gamma / g_lim - 1.0) * FRAC_PI_2).sin();
+            s * s
+        }
+    };
+    if r > 0.0 {
+        finite_or_unwarped(n1(g_lim) / r)
+    } else {
+        NPrime::Unwarped
+    }
+}
+
+/// The target line of Martin & Tan's 80 % rule: y = ξ = −0.6 in trapezoid space (top line +1).
+pub const TSM_80_PERCENT_LINE: f64 = -0.6;
+
+/// Martin & Tan §6.2: η = λδ′(1 + ξ)/(λ − 2δ′ − λξ), the distance of q from the top line that
+/// maps a point δ′ below the top line to y = ξ (top → +1, base → −1); `None` when no centre of
+/// projection beyond the top line can (the denominator is not positive, or δ′ = 0).
+#[inline]
+pub(crate) fn tsm_eta(lambda: f64, delta_p: f64, xi: f64) -> Option<f64> {
+    let den = lambda - 2.0 * delta_p - lambda * xi;
+    let num = lambda * delta_p * (1.0 + xi);
+    if den > 0.0 && num > 0.0 {
+        let eta = num / den;
+        eta.is_finite().then_some(eta)
+    } else {
+        None
+    }
+}
+
+fn tsm_rule(view: &ViewFrustum, fl: &FrustumInLight, focus: f64) -> Result<NPrime> {
+    let focus = crate::error::positive("focus", focus)?;
+    if focus > view.far() - view.near() {
+        return Err(Error::invalid(
+            "focus",
+            format!(
+                "must be at most far − near = {} (got {})",
+                fmt_num(view.far() - view.near()),
+                fmt_num(focus)
+            ),
+        ));
+    }
+    let p = fl.ls.to_light(DVec3::new(0.0, 0.0, -(view.near() + focus)));
+    Ok(match tsm_eta(fl.delta, p.z - fl.z0, TSM_80_PERCENT_LINE) {
+        Some(eta) => NPrime::Finite(eta),
+        None => NPrime::Unwarped,
+    })
+}
+
+fn filament_n_prime(
+    view: &ViewFrustum,
+    fl: &FrustumInLight,
+    near_hint: f64,
+    far_hint: f64,
+) -> Result<NPrime> {
+    let near_hint = crate::error::finite("near_hint", near_hint)?;
+    let far_hint = crate::error::finite("far_hint", far_hint)?;
+    let (zn, zf) = (view.near(), view.far());
+    let sin_lv = fl.sin_gamma;
+    let dzn = (near_hint - zn).max(0.0);
+    let dzf = (zf - far_hint).max(0.0);
+    let z0 = zn;
+    let z1 = z0 + fl.delta * sin_lv;
+    const EPSILON: f64 = 0.02;
+    if !(sin_lv > EPSILON && 3.0 * (dzn / (zf - zn)) < 2.0) {
+        return Ok(NPrime::Unwarped);
+    }
+    let vz0 = zn.max(zn + dzn).max(z0).max(0.0);
+    let vz1 = zf.min(zf - dzf).min(z1).max(0.0);
+    let nopt0 = (z0 + (vz0 * vz1).sqrt()) / sin_lv;
+    let nopt1 = dzn / (2.0 - 3.0 * (dzn / (zf - zn)));
+    Ok(finite_or_unwarped(nopt0.max(nopt1)))
+}

@@ -1,0 +1,337 @@
+//! Behaviour of the single-map builders: every frustum corner in the clip volume for random
+//! cameras and lights, Lloyd 2006's closed forms reproduced by the measurement of the built
+//! matrices with the light overhead and behind, continuity through the parallel configuration.
+
+use glam::{DMat4, DVec3, DVec4};
+use proptest::prelude::*;
+use shadow_aliasing::build::{
+    fit_warp, light_space, n_prime_for, warp, ClipDepth, Falloff, WarpRule,
+};
+use shadow_aliasing::measure::{frustum_max, frustum_max_sampled, point_error};
+use shadow_aliasing::{NPrime, Resolutions, ViewFrustum};
+
+const ALL_RULES: [WarpRule; 14] = [
+    WarpRule::Uniform,
+    WarpRule::Eta(0.5),
+    WarpRule::Psm,
+    WarpRule::Lispsm,
+    WarpRule::LispsmSin,
+    WarpRule::Barroso(Falloff::Barroso),
+    WarpRule::Barroso(Falloff::Zhang),
+    WarpRule::Tsm { focus: 0.0 }, // replaced by a valid focus per frustum
+    WarpRule::LispsmReference,
+    WarpRule::Filament,
+    WarpRule::Ogre,
+    WarpRule::Minimax,
+    WarpRule::MinStorage,
+    WarpRule::Eta(-0.5),
+];
+
+fn rule_for(view: &ViewFrustum, r: WarpRule) -> WarpRule {
+    match r {
+        WarpRule::Tsm { .. } => WarpRule::Tsm {
+            focus: 0.3 * (view.far() - view.near()),
+        },
+        other => other,
+    }
+}
+
+/// Light clip coordinates of p, asserting w > 0.
+fn clip(m: &DMat4, p: DVec3) -> DVec3 {
+    let h = *m * DVec4::new(p.x, p.y, p.z, 1.0);
+    assert!(h.w > 0.0, "w = {} at {p}", h.w);
+    h.truncate() / h.w
+}
+
+fn assert_in_clip(m: &DMat4, p: DVec3, lo_z: f64, ctx: &str) {
+    let c = clip(m, p);
+    let tol = 1e-9;
+    assert!(
+        c.x.abs() <= 1.0 + tol && c.y.abs() <= 1.0 + tol && c.z >= lo_z - tol && c.z <= 1.0 + tol,
+        "{ctx}: {p} maps to {c}"
+    );
+    assert!(c.is_finite());
+}
+
+fn light_from_angles(elev: f64, azim: f64) -> DVec3 {
+    // Elevation 0 at the horizon, π/2 overhead; azimuth 0 behind the viewer (light travelling
+    // along −Z, the view direction), π in front.
+    let (se, ce) = elev.sin_cos();
+    DVec3::new(ce * azim.sin(), -se, -ce * azim.cos())
+}
+
+fn check_all_rules(view: &ViewFrustum, l: DVec3) {
+    for r in ALL_RULES {
+        let r = rule_for(view, r);
+        let s = warp(view, l, r).unwrap_or_else(|e| panic!("{r:?} {l}: {e}"));
+        assert!(s.matrix.is_finite(), "{r:?}");
+        for c in view.corners() {
+            assert_in_clip(&s.matrix, c, -1.0, &format!("{r:?} light {l}"));
+            let z01 = s.with_clip_depth(ClipDepth::ZeroToOne);
+            assert_in_clip(&z01, c, 0.0, &format!("{r:?} [0,1] light {l}"));
+        }
+        let e = frustum_max(view, &s.shadow_map()).unwrap();
+        assert!(e.storage_factor.is_finite() && e.storage_factor > 0.0);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// Random cameras (f/n from 1.01 to 10⁶, half fov 1° to 80°, aspect 0.5 to 2.5) and random
+    /// lights over the whole sphere: every rule maps the eight corners into the clip volume.
+    #[test]
+    fn corners_in_clip_volume(
+        log_ratio in (1.01f64).ln()..(1e6f64).ln(),
+        near in 0.01f64..10.0,
+        fov_deg in 1.0f64..80.0,
+        aspect in 0.5f64..2.5,
+        elev in -1.5707963f64..1.5707963,
+        azim in 0.0f64..6.2831853,
+    ) {
+        let view = ViewFrustum::with_aspect(near, near * log_ratio.exp(), fov_deg.to_radians(), aspect).unwrap();
+        check_all_rules(&view, light_from_angles(elev, azim));
+    }
+}
+
+/// The special directions: parallel, antiparallel, perpendicular, and tiny tilts off parallel.
+#[test]
+fn corners_in_clip_volume_special_directions() {
+    for (n, f, fov) in [
+        (1.0, 1.01, 1.0f64),
+        (0.1, 1e5, 80.0),
+        (1.0, 1e6, 30.0),
+        (2.0, 50.0, 45.0),
+    ] {
+        let view = ViewFrustum::new(n, f, fov.to_radians()).unwrap();
+        for l in [
+            DVec3::NEG_Z,
+            DVec3::Z,
+            DVec3::NEG_Y,
+            DVec3::Y,
+            DVec3::X,
+            DVec3::new(1e-13, 0.0, -1.0),
+            DVec3::new(0.0, 1e-9, 1.0),
+            DVec3::new(1e-7, -1e-7, -1.0),
+            DVec3::new(0.02, 0.0, -1.0),
+        ] {
+            check_all_rules(&view, l);
+        }
+    }
+}
+
+/// Lloyd 2006 Eq 7 and 8 (light overhead), written out here independently of the crate.
+fn lloyd_mx(n: f64, f: f64, np: f64, z: f64) -> f64 {
+    f * (np + z - n) / (z * (np + f - n))
+}
+fn lloyd_mz(n: f64, f: f64, th: f64, np: f64, z: f64) -> f64 {
+    (f - n) / (2.0 * th.tan()) * (np + z - n).powi(2) / (z * np * (np + f - n))
+}
+/// Lloyd 2006 Eq 11.
+fn lloyd_n_prime(n: f64, f: f64, eta: f64) -> f64 {
+    let a = f / n;
+    if eta <= 0.0 {
+        n * (a.sqrt() + 1.0 - eta * (a - 1.0)) / (eta + 1.0)
+    } else {
+        n * (a.sqrt() + 1.0) / (eta * a.sqrt() + 1.0)
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 128, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// Light overhead: the measured m_x, m_z of the built warp on the view axis equal Lloyd 2006
+    /// Eq 7, 8 for n′ from η ∈ (−1, 1] (Eq 11), and the measured S̄ equals Eq 12.
+    #[test]
+    fn overhead_matches_lloyd_eq_7_8_12(
+        n in 0.05f64..5.0,
+        ratio in 1.5f64..1e4,
+        fov_deg in 5.0f64..75.0,
+        eta in -0.999f64..1.0,
+        zf in 0.0f64..1.0,
+    ) {
+        let f = n * ratio;
+        let th = fov_deg.to_radians();
+        let view = ViewFrustum::new(n, f, th).unwrap();
+        let s = warp(&view, DVec3::NEG_Y, WarpRule::Eta(eta)).unwrap();
+        let np = lloyd_n_prime(n, f, eta);
+        prop_assert!((s.n_prime.value() - np).abs() <= 1e-12 * np);
+        let z = n + zf * (f - n);
+        let e = point_error(&view, &s.shadow_map(), DVec3::new(0.0, 0.0, -z), Resolutions::default()).unwrap();
+        let (mx, mz) = (lloyd_mx(n, f, np, z), lloyd_mz(n, f, th, np, z));
+        prop_assert!((e.mx - mx).abs() <= 1e-9 * mx, "m_x {} vs Eq 7 {}", e.mx, mx);
+        prop_assert!((e.mz - mz).abs() <= 1e-9 * mz, "m_z {} vs Eq 8 {}", e.mz, mz);
+        let fm = frustum_max(&view, &s.shadow_map()).unwrap();
+        let n_lsp = n + (f * n).sqrt();
+        let sbar = (f / n - 1.0) / (2.0 * th.tan())
+            * if np <= n_lsp { 1.0 } else { np * np * f / (n * (np + f - n).powi(2)) };
+        prop_assert!((fm.storage_factor - sbar).abs() <= 1e-9 * sbar, "S̄ {} vs Eq 12 {}", fm.storage_factor, sbar);
+        // Eq 9, 10.
+        prop_assert!((fm.max_mx - lloyd_mx(n, f, np, n)).abs() <= 1e-9 * fm.max_mx);
+        let mz_max = if np <= n_lsp { lloyd_mz(n, f, th, np, f) } else { lloyd_mz(n, f, th, np, n) };
+        prop_assert!((fm.max_mz - mz_max).abs() <= 1e-9 * mz_max);
+    }
+
+    /// Light behind the viewer: the uniform map's S̄ is (f/n)² (Lloyd 2006 Eq 20 with k = 1).
+    #[test]
+    fn behind_uniform_is_alpha_squared(n in 0.05f64..5.0, ratio in 1.01f64..1e5, fov_deg in 1.0f64..80.0) {
+        let view = ViewFrustum::new(n, n * ratio, fov_deg.to_radians()).unwrap();
+        let s = warp(&view, DVec3::NEG_Z, WarpRule::Uniform).unwrap();
+        let e = frustum_max(&view, &s.shadow_map()).unwrap();
+        prop_assert!((e.storage_factor - ratio * ratio).abs() <= 1e-9 * ratio * ratio);
+    }
+}
+
+/// The vertices carry the maximum: a dense 9³ sample never exceeds them (Lloyd 2006 §4.4).
+#[test]
+fn vertex_maxima_hold_for_tilted_lights() {
+    let view = ViewFrustum::with_aspect(0.5, 80.0, 0.6, 1.6).unwrap();
+    for l in [
+        DVec3::new(0.3, -0.7, 0.2),
+        DVec3::new(-0.5, -0.3, -0.8),
+        DVec3::new(0.1, -0.2, 0.9),
+    ] {
+        for r in [
+            WarpRule::Lispsm,
+            WarpRule::Minimax,
+            WarpRule::Uniform,
+            WarpRule::Psm,
+        ] {
+            let s = warp(&view, l, r).unwrap();
+            let v = frustum_max(&view, &s.shadow_map()).unwrap();
+            let d = frustum_max_sampled(&view, &s.shadow_map(), 9).unwrap();
+            assert!(d.max_mx <= v.max_mx * (1.0 + 1e-9), "{r:?} {l}");
+            assert!(d.max_mz <= v.max_mz * (1.0 + 1e-9), "{r:?} {l}");
+        }
+    }
+}
+
+/// fit_warp with n′ → ∞ tends to the orthographic fit entry by entry.
+#[test]
+fn warp_tends_to_uniform_as_n_prime_grows() {
+    let view = ViewFrustum::new(1.0, 30.0, 0.5).unwrap();
+    let ls = light_space(DVec3::new(0.2, -0.5, -0.6), DVec3::NEG_Z).unwrap();
+    let ortho = fit_warp(&view.corners(), &ls, NPrime::Unwarped).unwrap();
+    let mut prev = f64::INFINITY;
+    for k in 2..12 {
+        let np = 10f64.powi(k);
+        let m = fit_warp(&view.corners(), &ls, NPrime::Finite(np)).unwrap();
+        let diff = (m - ortho)
+            .to_cols_array()
+            .iter()
+            .fold(0.0f64, |a, b| a.max(b.abs()));
+        assert!(diff < prev, "n′ = {np}: {diff}");
+        assert!(diff < 1e3 / np, "n′ = {np}: {diff}");
+        prev = diff;
+    }
+}
+
+/// S̄ is continuous as the light sweeps through the view axis in the eye's vertical and
+/// horizontal planes, for the rules that tend to the uniform map there.
+#[test]
+fn storage_factor_continuous_through_parallel() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    for rule in [
+        WarpRule::Uniform,
+        WarpRule::LispsmSin,
+        WarpRule::Barroso(Falloff::Barroso),
+        WarpRule::LispsmReference,
+        WarpRule::Minimax,
+        WarpRule::MinStorage,
+    ] {
+        for plane in [DVec3::Y, DVec3::X] {
+            for dir in [DVec3::NEG_Z, DVec3::Z] {
+                let at = |t: f64| {
+                    let l = dir + t * plane;
+                    let s = warp(&view, l, rule).unwrap();
+                    frustum_max(&view, &s.shadow_map()).unwrap().storage_factor
+                };
+                let s0 = at(0.0);
+                for t in [1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6] {
+                    let s = at(t);
+                    assert!(
+                        (s - s0).abs() <= 1e-3 * s0,
+                        "{rule:?} {plane} {dir}: S̄({t}) = {s} vs S̄(0) = {s0}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// The minimax n′ with the light overhead is n + √(f n), and for every light its M_z is no
+/// larger than that of any other rule's n′ for the same light (it is the minimum over n′).
+#[test]
+fn minimax_minimises_mz() {
+    let view = ViewFrustum::new(0.5, 300.0, 0.7).unwrap();
+    let m = n_prime_for(&view, DVec3::NEG_Y, WarpRule::Minimax).unwrap();
+    assert!((m.value() - view.n_prime_lispsm()).abs() < 1e-9 * view.n_prime_lispsm());
+    for l in [
+        DVec3::new(0.3, -0.7, 0.2),
+        DVec3::new(-0.5, -0.3, -0.8),
+        DVec3::new(0.1, -0.2, 0.9),
+        DVec3::new(0.0, -0.05, -1.0),
+    ] {
+        let best = warp(&view, l, WarpRule::Minimax).unwrap();
+        let best_mz = frustum_max(&view, &best.shadow_map()).unwrap().max_mz;
+        for k in -40..=40 {
+            let np = NPrime::Finite(view.near() * 10f64.powf(k as f64 / 8.0));
+            let ls = light_space(l, DVec3::NEG_Z).unwrap();
+            let m = fit_warp(&view.corners(), &ls, np).unwrap();
+            let sm = shadow_aliasing::measure::ShadowMap::new(m, l).unwrap();
+            let mz = frustum_max(&view, &sm).unwrap().max_mz;
+            assert!(
+                best_mz <= mz * (1.0 + 1e-9),
+                "{l}: minimax {best_mz} > {mz} at {np:?}"
+            );
+        }
+    }
+}
+
+/// Renderer conventions: [0, 1] depth keeps the texel and maps depth by (z + 1)/2; world_to_clip
+/// is S · View.
+#[test]
+fn clip_depth_conventions() {
+    let view = ViewFrustum::new(1.0, 40.0, 0.6).unwrap();
+    let s = warp(&view, DVec3::new(0.4, -1.0, 0.3), WarpRule::Lispsm).unwrap();
+    let gl = s.with_clip_depth(ClipDepth::NegOneToOne);
+    let vk = s.with_clip_depth(ClipDepth::ZeroToOne);
+    for c in view.corners() {
+        let a = clip(&gl, c);
+        let b = clip(&vk, c);
+        assert!((a.x - b.x).abs() < 1e-12 && (a.y - b.y).abs() < 1e-12);
+        assert!((b.z - 0.5 * (a.z + 1.0)).abs() < 1e-12);
+    }
+    let cam = glam::dcamera::rh::view::look_at_mat4(
+        DVec3::new(3.0, 2.0, 1.0),
+        DVec3::new(0.0, 0.0, -5.0),
+        DVec3::Y,
+    );
+    let world = DVec3::new(1.0, 0.5, -7.0);
+    let eye = cam.project_point3(world);
+    let w2c = s.world_to_clip(cam, ClipDepth::NegOneToOne);
+    assert!((clip(&w2c, world) - clip(&gl, eye)).length() < 1e-12);
+    let f32m = s.to_mat4(ClipDepth::ZeroToOne);
+    assert!((f32m.as_dmat4() - vk)
+        .to_cols_array()
+        .iter()
+        .all(|d| d.abs() < 1e-5 * 1e3));
+}
+
+/// Invalid inputs are typed errors naming the argument.
+#[test]
+fn invalid_inputs_are_errors() {
+    let view = ViewFrustum::new(1.0, 40.0, 0.6).unwrap();
+    assert!(warp(&view, DVec3::ZERO, WarpRule::Lispsm).is_err());
+    assert!(warp(&view, DVec3::new(f64::NAN, 1.0, 0.0), WarpRule::Lispsm).is_err());
+    let e = warp(&view, DVec3::NEG_Y, WarpRule::Eta(1.5)).unwrap_err();
+    assert!(e.to_string().starts_with("eta "), "{e}");
+    let e = warp(&view, DVec3::NEG_Y, WarpRule::Tsm { focus: 100.0 }).unwrap_err();
+    assert!(e.to_string().starts_with("focus "), "{e}");
+    let ls = light_space(DVec3::NEG_Y, DVec3::NEG_Z).unwrap();
+    assert!(fit_warp(&[], &ls, NPrime::Unwarped).is_err());
+    assert!(fit_warp(&view.corners(), &ls, NPrime::Finite(-1.0)).is_err());
+    // All points on one light ray: no extent across the map.
+    let p = [DVec3::new(0.0, 1.0, -2.0), DVec3::new(0.0, 3.0, -2.0)];
+    assert!(fit_warp(&p, &ls, NPrime::Unwarped).is_err());
+}
