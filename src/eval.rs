@@ -35,7 +35,7 @@
 //! ```
 
 use crate::error::{fmt_num, Error, Result};
-use crate::frustum::{NPrime, ViewFrustum};
+use crate::frustum::{NPrime, Resolutions, ViewFrustum};
 use serde_json::{Map, Value};
 
 /// What `shadow-aliasing eval` prints and how it exits.
@@ -305,6 +305,14 @@ impl Args {
             Some(Parsed::Numbers(v)) => Ok(v),
             _ => Err(Self::missing(name)),
         }
+    }
+    /// Resolutions with `res_t` given (`res_s` unused, 1).
+    fn res_t(&self) -> Result<Resolutions> {
+        Resolutions::new(self.num("res_image")?, 1.0, self.num("res_t")?)
+    }
+    /// Resolutions with `res_s` given (`res_t` unused, 1).
+    fn res_s(&self) -> Result<Resolutions> {
+        Resolutions::new(self.num("res_image")?, self.num("res_s")?, 1.0)
     }
     /// The view frustum of `near`, `far`, `half_fov`.
     fn view(&self) -> Result<ViewFrustum> {
@@ -725,7 +733,7 @@ pub const QUANTITIES: &[Quantity] = &[
     Quantity {
         name: "tsm_eta",
         args: &[req("lambda", Num), req("delta_prime", Num), req("xi", Num)],
-        value: ValueKind::Number,
+        value: ValueKind::NPrime,
         source: "Martin–Tan §6.2",
         compute: wire::tsm_eta,
     },
@@ -784,8 +792,9 @@ pub fn quantity(name: &str) -> Option<&'static Quantity> {
 /// The wiring of each quantity to the crate's closed forms.
 mod wire {
     use super::{Args, Output};
+    use crate::analytic::{global, tilted, tsm};
     use crate::error::{Error, Result};
-    use crate::frustum::ViewFrustum;
+    use crate::frustum::{LightAngle, ViewFrustum};
 
     fn pending(what: &str) -> Result<Output> {
         Err(Error::NoClosedForm(format!(
@@ -879,29 +888,62 @@ mod wire {
     pub(super) fn scheme_storage_factor(_a: &Args) -> Result<Output> {
         pending("scheme_storage_factor")
     }
-    pub(super) fn tilted_mz(_a: &Args) -> Result<Output> {
-        pending("tilted_mz")
+    pub(super) fn tilted_mz(a: &Args) -> Result<Output> {
+        let v = tilted::tilted_mz(
+            &a.view()?,
+            a.n_prime("n_prime")?,
+            LightAngle::new(a.num("light_angle")?)?,
+            a.num("z")?,
+            a.res_t()?,
+        )?;
+        Ok(Output::Number(v))
     }
-    pub(super) fn generalized_n_prime(_a: &Args) -> Result<Output> {
-        pending("generalized_n_prime")
+    pub(super) fn generalized_n_prime(a: &Args) -> Result<Output> {
+        let falloff = match a.choice("falloff")? {
+            "barroso" => tilted::Falloff::Barroso,
+            _ => tilted::Falloff::Zhang,
+        };
+        let gamma = LightAngle::new(a.num("light_angle")?)?;
+        Ok(Output::NPrime(tilted::generalized_n_prime(
+            &a.view()?,
+            gamma,
+            falloff,
+        )))
     }
-    pub(super) fn gamma_lim(_a: &Args) -> Result<Output> {
-        pending("gamma_lim")
+    pub(super) fn gamma_lim(a: &Args) -> Result<Output> {
+        Ok(Output::Number(tilted::gamma_lim(&a.view()?)))
     }
-    pub(super) fn tsm_eta(_a: &Args) -> Result<Output> {
-        pending("tsm_eta")
+    pub(super) fn tsm_eta(a: &Args) -> Result<Output> {
+        let eta = tsm::tsm_eta(a.num("lambda")?, a.num("delta_prime")?, a.num("xi")?)?;
+        Ok(Output::NPrime(eta))
     }
-    pub(super) fn zhang_eq(_a: &Args) -> Result<Output> {
-        pending("zhang_eq")
+    pub(super) fn zhang_eq(a: &Args) -> Result<Output> {
+        let v = global::zhang_eq(
+            &a.view()?,
+            a.n_prime("lambda")?,
+            LightAngle::new(a.num("light_angle")?)?,
+            a.num("y")?,
+            a.num("z")?,
+        )?;
+        Ok(Output::Number(v))
     }
-    pub(super) fn zhang_ep(_a: &Args) -> Result<Output> {
-        pending("zhang_ep")
+    pub(super) fn zhang_ep(a: &Args) -> Result<Output> {
+        let v = global::zhang_ep(
+            &a.view()?,
+            a.n_prime("lambda")?,
+            LightAngle::new(a.num("light_angle")?)?,
+            a.num("y")?,
+            a.num("z")?,
+        )?;
+        Ok(Output::Number(v))
     }
-    pub(super) fn zhang_eq_local(_a: &Args) -> Result<Output> {
-        pending("zhang_eq_local")
+    pub(super) fn zhang_eq_local(a: &Args) -> Result<Output> {
+        let v = global::zhang_eq_local(&a.view()?, a.n_prime("lambda")?, a.num("z")?)?;
+        Ok(Output::Number(v))
     }
-    pub(super) fn zhang_ep_local(_a: &Args) -> Result<Output> {
-        pending("zhang_ep_local")
+    pub(super) fn zhang_ep_local(a: &Args) -> Result<Output> {
+        let v = global::zhang_ep_local(&a.view()?, a.n_prime("lambda")?, a.num("z")?)?;
+        Ok(Output::Number(v))
     }
 }
 

@@ -110,10 +110,83 @@ fn file_argument_and_dash_for_stdin() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// Barroso & Celes' Eq 10–12 for φ_y ≤ γ ≤ π/2, written out from the paper (unit resolutions).
+fn barroso_mz(n: f64, f: f64, phi: f64, np: f64, g: f64, z: f64) -> f64 {
+    let (a, b) = (n * phi.tan(), f * phi.tan());
+    let fp = np + (a + b) * g.cos() + (f - n) * g.sin();
+    let xi = 1.0 / (2.0 * phi.tan()) * (fp - np) / (np * fp) / g.sin();
+    let psi = np + a * g.cos() + (z - n) * g.sin();
+    xi * psi * psi / z
+}
+
 /// Hand-calculated values of each wired quantity (relative 1e-12).
 #[test]
 fn values_match_hand_calculations() {
-    let cases: &[(&str, &[f64])] = &[
+    let phi = 0.5236f64;
+    let t = phi.tan();
+    let (a, b) = (t, 100.0 * t);
+    let gamma_lim = ((a + b) / 99.0).atan();
+    let owned: Vec<(String, Vec<f64>)> = vec![
+        // Barroso Eq 12 at γ = 1.2, n′ = 11, z = 10.
+        (
+            r#"{"quantity": "tilted_mz", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 11, "light_angle": 1.2, "z": 10}"#.into(),
+            vec![barroso_mz(1.0, 100.0, phi, 11.0, 1.2, 10.0)],
+        ),
+        // res_t = 2 res_image halves it.
+        (
+            r#"{"quantity": "tilted_mz", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 11, "light_angle": 1.2, "z": 10, "res_image": 512, "res_t": 1024}"#.into(),
+            vec![0.5 * barroso_mz(1.0, 100.0, phi, 11.0, 1.2, 10.0)],
+        ),
+        // Eq 15: γ_lim = atan((a + b)/(f − n)), a, b the half heights of near and far planes.
+        (
+            r#"{"quantity": "gamma_lim", "near": 1, "far": 100, "half_fov": 0.5236}"#.into(),
+            vec![gamma_lim],
+        ),
+        // Eq 16 above γ_lim: n′₁ = (n + √(fn)) sin γ − a cos γ.
+        (
+            r#"{"quantity": "generalized_n_prime", "near": 1, "far": 100, "half_fov": 0.5236, "light_angle": 1.2, "falloff": "barroso"}"#.into(),
+            vec![11.0 * 1.2f64.sin() - a * 1.2f64.cos()],
+        ),
+        // Below γ_lim: n′₁(γ_lim)/r(γ), Zhang's r = sin(γ/γ_lim · π/2) (Eq 17).
+        (
+            r#"{"quantity": "generalized_n_prime", "near": 1, "far": 100, "half_fov": 0.5236, "light_angle": 0.3, "falloff": "zhang"}"#.into(),
+            vec![(11.0 * gamma_lim.sin() - a * gamma_lim.cos()) / (0.3 / gamma_lim * std::f64::consts::FRAC_PI_2).sin()],
+        ),
+        // Martin & Tan §6.2: η = λδ′(1 + ξ)/(λ(1 − ξ) − 2δ′) = 0.08/1.2.
+        (
+            r#"{"quantity": "tsm_eta", "lambda": 1, "delta_prime": 0.2, "xi": -0.6}"#.into(),
+            vec![0.08 / 1.2],
+        ),
+        // Zhang Eq 8 with λ ≥ n: 2 f (z − n + λ)/((f − n + λ) z) = 2·100·20/(110·10).
+        (
+            r#"{"quantity": "zhang_eq_local", "near": 1, "far": 100, "half_fov": 0.5236, "lambda": 11, "z": 10}"#.into(),
+            vec![4000.0 / 1100.0],
+        ),
+        // Zhang Eq 9: (f − n)(z − n + λ)²/((f − n + λ) λ tan φ z) = 99·400/(110·11·t·10).
+        (
+            r#"{"quantity": "zhang_ep_local", "near": 1, "far": 100, "half_fov": 0.5236, "lambda": 11, "z": 10}"#.into(),
+            vec![99.0 * 400.0 / (110.0 * 11.0 * t * 10.0)],
+        ),
+        // λ = ∞ (orthographic): (f − n)/(tan φ z).
+        (
+            r#"{"quantity": "zhang_ep_local", "near": 1, "far": 100, "half_fov": 0.5236, "lambda": "inf", "z": 10}"#.into(),
+            vec![99.0 / (t * 10.0)],
+        ),
+        // The global representation at light angle π/2 on the view axis is the local one.
+        (
+            r#"{"quantity": "zhang_eq", "near": 1, "far": 100, "half_fov": 0.5236, "lambda": 11, "light_angle": 1.5707963267948966, "y": 0, "z": 10}"#.into(),
+            vec![4000.0 / 1100.0],
+        ),
+        (
+            r#"{"quantity": "zhang_ep", "near": 1, "far": 100, "half_fov": 0.5236, "lambda": 11, "light_angle": 1.5707963267948966, "y": 0, "z": 10}"#.into(),
+            vec![99.0 * 400.0 / (110.0 * 11.0 * t * 10.0)],
+        ),
+    ];
+    let mut cases: Vec<(&str, &[f64])> = owned
+        .iter()
+        .map(|(r, v)| (r.as_str(), v.as_slice()))
+        .collect();
+    cases.extend_from_slice(&[
         // 1 + √100.
         (
             r#"{"quantity": "n_prime_lispsm", "near": 1, "far": 100}"#,
@@ -144,7 +217,7 @@ fn values_match_hand_calculations() {
             r#"{"quantity": "z_partition", "near": 1, "far": 32, "k": 3, "scheme": "adaptive", "light_angle": 0, "ratio": 2}"#,
             &[1.0, 8.0, 16.0, 32.0],
         ),
-    ];
+    ]);
     let input = Value::Array(
         cases
             .iter()
@@ -242,6 +315,22 @@ fn every_kind_of_bad_request_is_an_error_naming_the_argument() {
         (
             r#"{"quantity": "z_partition", "near": 1, "far": 100, "k": 2, "scheme": "practical", "lambda": 1.5}"#,
             "lambda must lie in [0, 1] (got 1.5)",
+        ),
+        (
+            r#"{"quantity": "tilted_mz", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 11, "light_angle": 2, "z": 10}"#,
+            "light_angle must lie in [0, 1.5707963267948966] (got 2)",
+        ),
+        (
+            r#"{"quantity": "tsm_eta", "lambda": 1, "delta_prime": 0.2, "xi": 0.9}"#,
+            "no solution: ",
+        ),
+        (
+            r#"{"quantity": "generalized_n_prime", "near": 1, "far": 100, "half_fov": 0.5, "light_angle": 1, "falloff": "wimmer"}"#,
+            "falloff must be one of \"barroso\", \"zhang\" (got string \"wimmer\")",
+        ),
+        (
+            r#"{"quantity": "zhang_eq_local", "near": 1, "far": 100, "half_fov": 0.5, "lambda": 11, "z": 200}"#,
+            "z must ",
         ),
         (
             r#"{"quantity": "allocate_texels", "errors": [1, "x"], "total": 10}"#,
