@@ -8,6 +8,10 @@
 mod args;
 #[path = "shadow-aliasing/commands.rs"]
 mod commands;
+#[path = "shadow-aliasing/output.rs"]
+mod output;
+#[path = "shadow-aliasing/scheme.rs"]
+mod scheme;
 
 use clap::Parser;
 use std::process::ExitCode;

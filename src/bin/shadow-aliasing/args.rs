@@ -81,13 +81,17 @@ pub struct EvalArgs {
 #[derive(Debug, Clone, clap::Args)]
 pub struct CameraArgs {
     /// Near plane depth (> 0).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub near: f64,
     /// Far plane depth (> near).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub far: f64,
     /// Half of the vertical field of view, radians (0 < half_fov < π/2).
-    #[arg(long = "half-fov", value_name = "RADIANS")]
+    #[arg(
+        long = "half-fov",
+        value_name = "RADIANS",
+        allow_negative_numbers = true
+    )]
     pub half_fov: f64,
 }
 
@@ -100,6 +104,24 @@ pub struct SchemeArgs {
     /// η ∈ [−1, 1] for `--warp eta` (−1 unwarped, 0 LiSPSM, 1 PSM).
     #[arg(long, allow_negative_numbers = true)]
     pub eta: Option<f64>,
+    /// TSM's focus distance δ beyond the near plane of each (sub)frustum, as a fraction of its
+    /// depth range (0 < focus ≤ 1).
+    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
+    pub focus: f64,
+    /// Filament's near hint (`ShadowOptions::shadowNearHint`), with `--warp filament`.
+    #[arg(
+        long = "near-hint",
+        requires = "far_hint",
+        allow_negative_numbers = true
+    )]
+    pub near_hint: Option<f64>,
+    /// Filament's far hint (`ShadowOptions::shadowFarHint`), with `--warp filament`.
+    #[arg(
+        long = "far-hint",
+        requires = "near_hint",
+        allow_negative_numbers = true
+    )]
+    pub far_hint: Option<f64>,
     /// How the view frustum is partitioned.
     #[arg(long, value_enum, default_value_t = PartitionName::Single)]
     pub partition: PartitionName,
@@ -107,8 +129,11 @@ pub struct SchemeArgs {
     #[arg(long, default_value_t = 1)]
     pub k: usize,
     /// Blend of `practical` partitions: 0 uniform, 1 logarithmic.
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
     pub lambda: f64,
+    /// Depth ratio α of the far partitions of `adaptive` when the light is parallel (Barroso Eq 19).
+    #[arg(long, default_value_t = 2.0, allow_negative_numbers = true)]
+    pub ratio: f64,
 }
 
 /// Warp rules by name.
@@ -130,11 +155,13 @@ pub enum WarpName {
     BarrosoZhang,
     /// The n′ that minimises the measured maximum error M_z (this crate).
     Minimax,
+    /// The n′ that minimises the storage factor S̄ = M_x M_z (this crate).
+    MinStorage,
     /// Trapezoidal shadow map with the 80% rule (Martin & Tan).
     Tsm,
     /// The LiSPSM reference code's d/(√(z1/z0) − 1).
     LispsmReference,
-    /// Filament's rule.
+    /// Filament's rule (default hints, or `--near-hint` and `--far-hint`).
     Filament,
     /// OGRE's default rule.
     Ogre,

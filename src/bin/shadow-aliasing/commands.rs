@@ -1,6 +1,11 @@
 //! What each subcommand does.
 
-use crate::args::{Cli, Command, EvalArgs};
+use crate::args::{Cli, Command, EvalArgs, WarpArgs};
+use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
+use crate::scheme::{partitions, PartitionReport};
+use glam::DVec3;
+use shadow_aliasing::{LightAngle, ViewFrustum};
+use std::fmt::Write as _;
 use std::io::{Read, Write};
 use std::process::ExitCode;
 
@@ -8,7 +13,7 @@ use std::process::ExitCode;
 pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
         Command::Eval(a) => eval(&a),
-        Command::Warp(_) => fail("warp is not available in this build yet"),
+        Command::Warp(a) => warp(&a),
         Command::Sweep(_) => fail("sweep is not available in this build yet"),
         Command::Figures(_) => fail("figures is not available in this build yet"),
     }
@@ -51,4 +56,141 @@ fn eval(a: &EvalArgs) -> ExitCode {
     }
     eprint!("{}", out.stderr);
     ExitCode::from(u8::try_from(out.exit_code).unwrap_or(2))
+}
+
+/// Writes `text` to standard output; a closed pipe is not an error worth a message.
+fn print(text: &str) -> ExitCode {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(e) => fail(format!("cannot write to standard output: {e}")),
+    }
+}
+
+fn warp(a: &WarpArgs) -> ExitCode {
+    let c = &a.camera;
+    let view = match ViewFrustum::new(c.near, c.far, c.half_fov) {
+        Ok(v) => v,
+        Err(e) => return fail(e),
+    };
+    let light = DVec3::from_array(a.light_dir);
+    let parts = match partitions(&view, light, &a.scheme) {
+        Ok(p) => p,
+        Err(e) => return fail(e),
+    };
+    let total: f64 = parts.iter().map(|p| p.storage_factor).sum();
+    let text = if a.json {
+        warp_json(total, &parts)
+    } else {
+        let gamma = LightAngle::from_light_dir(light)
+            .map(LightAngle::radians)
+            .unwrap_or(f64::NAN);
+        warp_text(a, gamma, total, &parts)
+    };
+    print(&text)
+}
+
+/// The JSON of issue 3: `storage_factor` summed, and one object per partition.
+fn warp_json(total: f64, parts: &[PartitionReport]) -> String {
+    let mut s = format!(
+        "{{\n  \"storage_factor\": {},\n  \"partitions\": [\n",
+        json_num(total)
+    );
+    for (i, p) in parts.iter().enumerate() {
+        let m: Vec<String> = p
+            .matrix
+            .to_cols_array()
+            .iter()
+            .map(|v| json_num(*v))
+            .collect();
+        let _ = writeln!(
+            s,
+            "    {{\"near\": {}, \"far\": {}, \"n_prime\": {}, \"max_mx\": {}, \"max_mz\": {}, \"storage_factor\": {}, \"matrix\": [{}]}}{}",
+            json_num(p.near),
+            json_num(p.far),
+            json_n_prime(p.n_prime),
+            json_num(p.max_mx),
+            json_num(p.max_mz),
+            json_num(p.storage_factor),
+            m.join(", "),
+            if i + 1 < parts.len() { "," } else { "" }
+        );
+    }
+    s.push_str("  ]\n}\n");
+    s
+}
+
+fn warp_text(a: &WarpArgs, gamma: f64, total: f64, parts: &[PartitionReport]) -> String {
+    let c = &a.camera;
+    let sch = &a.scheme;
+    let [lx, ly, lz] = a.light_dir;
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "camera: near {}, far {}, half_fov {} rad; light travels along ({}, {}, {}) in eye space, {}° from the view direction",
+        sig(c.near),
+        sig(c.far),
+        sig(c.half_fov),
+        sig(lx),
+        sig(ly),
+        sig(lz),
+        sig(gamma.to_degrees())
+    );
+    let _ = writeln!(
+        s,
+        "scheme: warp {}, partition {}, k {}",
+        value_name(&sch.warp),
+        value_name(&sch.partition),
+        sch.k
+    );
+    let _ = writeln!(
+        s,
+        "storage factor S̄ = {} (summed over {} partition{}, unit resolutions)",
+        sig(total),
+        parts.len(),
+        if parts.len() == 1 { "" } else { "s" }
+    );
+    for (i, p) in parts.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "\npartition {} of {}: depth [{}, {}], n′ = {}",
+            i + 1,
+            parts.len(),
+            sig(p.near),
+            sig(p.far),
+            sig_n_prime(p.n_prime)
+        );
+        let _ = writeln!(
+            s,
+            "  M_x = {}   M_z = {}   S̄ = {}",
+            sig(p.max_mx),
+            sig(p.max_mz),
+            sig(p.storage_factor)
+        );
+        let _ = writeln!(
+            s,
+            "  matrix (eye space → light clip space, OpenGL depth [-1, 1]), by rows:"
+        );
+        let cells: Vec<Vec<String>> = (0..4)
+            .map(|r| p.matrix.row(r).to_array().iter().map(|v| sig(*v)).collect())
+            .collect();
+        let width = cells
+            .iter()
+            .flatten()
+            .map(|c| c.chars().count())
+            .max()
+            .unwrap_or(1);
+        for row in cells {
+            let padded: Vec<String> = row.iter().map(|c| format!("{c:>width$}")).collect();
+            let _ = writeln!(s, "    [ {} ]", padded.join("  "));
+        }
+    }
+    s
+}
+
+/// The command-line spelling of a value (`lispsm-sin`).
+fn value_name<T: clap::ValueEnum>(v: &T) -> String {
+    v.to_possible_value()
+        .map_or_else(|| "?".to_string(), |p| p.get_name().to_string())
 }
