@@ -1,1 +1,179 @@
-//! (being written)
+//! The warp parameter n′ of a perspective shadow-map warp with the light overhead, and its
+//! normalised form η ∈ [−1, 1].
+//!
+//! n′ is the distance from the warping frustum's centre of projection to the view frustum's
+//! near plane (Lloyd 2006 Fig 3; Lloyd 2005's n with near = 1). η re-parameterises the
+//! semi-infinite range n′ ∈ [n, ∞] onto [−1, 1] by the maximum z error M_z (Lloyd 2006 App. B,
+//! Lloyd 2005 §3.2):
+//!
+//! | η | n′ | map |
+//! |---|---|---|
+//! | −1 | ∞ ([`NPrime::Unwarped`]) | orthographic, M_z largest, on the near plane |
+//! | 0 | n + √(f n) | LiSPSM: M_z smallest, equal on near and far planes |
+//! | +1 | n | PSM: M_z largest again, on the far plane |
+//!
+//! ```
+//! use shadow_aliasing::warp::{eta_from_n_prime, n_prime_from_eta};
+//! use shadow_aliasing::NPrime;
+//! let n0 = n_prime_from_eta(1.0, 100.0, 0.0)?;
+//! assert_eq!(n0, NPrime::Finite(11.0)); // n + √(f n)
+//! assert_eq!(n_prime_from_eta(1.0, 100.0, -1.0)?, NPrime::Unwarped);
+//! assert!((eta_from_n_prime(1.0, 100.0, n0)? - 0.0).abs() < 1e-15);
+//! # Ok::<(), shadow_aliasing::Error>(())
+//! ```
+
+use crate::error::{fmt_num, in_closed, positive, Error, Result};
+use crate::frustum::NPrime;
+
+/// Validates a depth range `0 < near < far`, both finite.
+pub(crate) fn near_far(near: f64, far: f64) -> Result<(f64, f64)> {
+    let n = positive("near", near)?;
+    let f = positive("far", far)?;
+    if f <= n {
+        return Err(Error::invalid(
+            "far",
+            format!(
+                "must be greater than near (got near={}, far={})",
+                fmt_num(n),
+                fmt_num(f)
+            ),
+        ));
+    }
+    Ok((n, f))
+}
+
+/// Validates Lloyd's light-overhead domain n′ ≥ near; returns n′ or `None` for n′ = ∞.
+pub(crate) fn n_prime_at_least(n_prime: NPrime, near: f64) -> Result<Option<f64>> {
+    match n_prime {
+        NPrime::Unwarped => Ok(None),
+        NPrime::Finite(v) => {
+            let v = positive("n_prime", v)?;
+            if v < near {
+                Err(Error::invalid(
+                    "n_prime",
+                    format!(
+                        "must be at least near for a light overhead (got n_prime={}, near={})",
+                        fmt_num(v),
+                        fmt_num(near)
+                    ),
+                ))
+            } else {
+                Ok(Some(v))
+            }
+        }
+    }
+}
+
+/// LiSPSM's warp parameter for the light overhead: n′ = n + √(f n).
+///
+/// n = `near`, f = `far` (eye-space depths, any length unit); n′ in the same unit. It minimises
+/// the maximum z error M_z, which it makes equal on the near and far planes (Wimmer et al. 2004;
+/// Lloyd 2006 §4.1; Lloyd 2005 §3.1 n_opt = 1 + √α with near = 1).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `near` or `far` unless 0 < near < far, both finite.
+#[inline]
+pub fn n_prime_lispsm(near: f64, far: f64) -> Result<f64> {
+    let (n, f) = near_far(near, far)?;
+    Ok(n + (f * n).sqrt())
+}
+
+/// PSM's warp parameter: n′ = n, the warping frustum's centre of projection at the eye
+/// (Stamminger & Drettakis 2002; Lloyd 2006 §4.1). η = +1.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `near` or `far` unless 0 < near < far, both finite.
+#[inline]
+pub fn n_prime_psm(near: f64, far: f64) -> Result<f64> {
+    near_far(near, far).map(|(n, _)| n)
+}
+
+/// n′ from the normalised warp parameter η (Lloyd 2006 Eq 11; Lloyd 2005 Eq 4 times n).
+///
+/// ```text
+/// n′(η) = n (√α + 1 − η (α − 1)) / (η + 1)   for −1 ≤ η ≤ 0
+/// n′(η) = n (√α + 1) / (η √α + 1)             for  0 < η ≤ 1
+/// α = f/n
+/// ```
+///
+/// n = `near`, f = `far` (eye-space depths), η dimensionless. η = −1 gives n′ = ∞, returned as
+/// [`NPrime::Unwarped`]; so does an η so close to −1 that n′ overflows.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far) or `eta` (∈ [−1, 1]).
+pub fn n_prime_from_eta(near: f64, far: f64, eta: f64) -> Result<NPrime> {
+    let (n, f) = near_far(near, far)?;
+    let eta = in_closed("eta", eta, -1.0, 1.0)?;
+    let alpha = f / n;
+    let ra = alpha.sqrt();
+    if eta <= 0.0 {
+        if eta == -1.0 {
+            return Ok(NPrime::Unwarped);
+        }
+        let v = n * ((ra + 1.0 - eta * (alpha - 1.0)) / (eta + 1.0));
+        if v.is_finite() {
+            Ok(NPrime::Finite(v))
+        } else {
+            Ok(NPrime::Unwarped)
+        }
+    } else {
+        Ok(NPrime::Finite(n * ((ra + 1.0) / (eta * ra + 1.0))))
+    }
+}
+
+/// η from n′, the inverse of [`n_prime_from_eta`] (Lloyd 2006 App. B; Lloyd 2005 §3.2 ξ with
+/// n = n′/near).
+///
+/// App. B defines η by interpolating the maximum z error M_z (Eq 10) linearly between its
+/// value at n′ = ∞ (η = −1), at n′_LSPSM = n + √(f n) (η = 0) and at n′ = n (η = 1). Solved:
+///
+/// ```text
+/// η = (√α + 1 − ν) / (ν + α − 1)   for ν ≥ 1 + √α   (n′ ≥ n′_LSPSM)
+/// η = (√α + 1 − ν) / (ν √α)        for 1 ≤ ν < 1 + √α
+/// ν = n′/n, α = f/n;   η = −1 for n′ = ∞
+/// ```
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far) or `n_prime` (n′ ≥ near).
+pub fn eta_from_n_prime(near: f64, far: f64, n_prime: NPrime) -> Result<f64> {
+    let (n, f) = near_far(near, far)?;
+    let Some(np) = n_prime_at_least(n_prime, n)? else {
+        return Ok(-1.0);
+    };
+    let alpha = f / n;
+    let ra = alpha.sqrt();
+    let nu = np / n;
+    let eta = if nu >= 1.0 + ra {
+        (ra + 1.0 - nu) / (nu + alpha - 1.0)
+    } else {
+        (ra + 1.0 - nu) / (nu * ra)
+    };
+    Ok(eta.clamp(-1.0, 1.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hand_values() {
+        // α = 100: n′(0) = 11, n′(1) = 1, n′(−0.5) = (11 + 49.5)/0.5 = 121, n′(0.5) = 11/6.
+        assert_eq!(n_prime_from_eta(1.0, 100.0, 0.0), Ok(NPrime::Finite(11.0)));
+        assert_eq!(n_prime_from_eta(1.0, 100.0, 1.0), Ok(NPrime::Finite(1.0)));
+        assert_eq!(
+            n_prime_from_eta(1.0, 100.0, -0.5),
+            Ok(NPrime::Finite(121.0))
+        );
+        let h = n_prime_from_eta(2.0, 200.0, 0.5).unwrap().value();
+        assert!((h - 2.0 * 11.0 / 6.0).abs() < 1e-14);
+        assert_eq!(
+            eta_from_n_prime(1.0, 100.0, NPrime::Finite(121.0)),
+            Ok(-0.5)
+        );
+        assert_eq!(eta_from_n_prime(1.0, 100.0, NPrime::Unwarped), Ok(-1.0));
+        assert!(eta_from_n_prime(1.0, 100.0, NPrime::Finite(0.5)).is_err());
+        assert!(n_prime_from_eta(1.0, 100.0, 1.5).is_err());
+        assert_eq!(n_prime_lispsm(1.0, 100.0), Ok(11.0));
+        assert_eq!(n_prime_psm(3.0, 100.0), Ok(3.0));
+    }
+}

@@ -1,1 +1,280 @@
-//! (being written)
+//! The light overhead (light ⟂ view direction): Lloyd et al. 2006 §4.1–4.2.
+//!
+//! A directional light travels perpendicular to the view direction; the shadow map is warped by
+//! a perspective "warping frustum" along the view direction whose centre of projection lies n′
+//! in front of the near plane ([`crate::warp`]). Along the view direction at depth z
+//! (n ≤ z ≤ f) the image beam has width w_i = 2 z tan θ / res_i, and the light beams have widths
+//! w_lx (along the map's s, the eye's x) and w_lz (along t, the view direction). The errors
+//! m_x = w_lx / w_i and m_z = w_lz / w_i, their maxima M_x, M_z over the frustum, and the storage
+//! factor S̄ = M_x M_z (unit resolutions) are closed forms of n, f, θ and n′.
+//!
+//! Notation: n = near, f = far, θ = half_fov (half the vertical field of view, square image),
+//! n′ = `n_prime`, res_i, res_s, res_t = [`Resolutions`]. The numeric twin of every function
+//! here is [`crate::measure::twin::overhead_map`] measured by [`crate::measure::point_error`].
+//!
+//! ```
+//! use shadow_aliasing::analytic::overhead::{max_mx, max_mz, storage_factor};
+//! use shadow_aliasing::{NPrime, Resolutions, ViewFrustum};
+//! let v = ViewFrustum::new(1.0, 100.0, 45f64.to_radians())?;
+//! let lispsm = NPrime::Finite(v.n_prime_lispsm());
+//! let r = Resolutions::default();
+//! let s = max_mx(1.0, 100.0, lispsm, r)? * max_mz(&v, lispsm, r)?;
+//! assert!((s - storage_factor(&v, lispsm)?).abs() < 1e-12 * s);
+//! assert!((storage_factor(&v, lispsm)? - 49.5).abs() < 1e-12); // (f/n − 1)/(2 tan θ)
+//! # Ok::<(), shadow_aliasing::Error>(())
+//! ```
+
+use crate::error::{fmt_num, positive, Error, Result};
+use crate::frustum::{NPrime, Resolutions, ViewFrustum};
+use crate::warp::{n_prime_at_least, near_far};
+
+/// Checks n ≤ z ≤ f.
+fn depth_in(z: f64, n: f64, f: f64) -> Result<f64> {
+    let z = crate::error::finite("z", z)?;
+    if z < n || z > f {
+        return Err(Error::invalid(
+            "z",
+            format!(
+                "must lie in [near, far] = [{}, {}] (got {})",
+                fmt_num(n),
+                fmt_num(f),
+                fmt_num(z)
+            ),
+        ));
+    }
+    Ok(z)
+}
+
+/// The x error at depth z (Lloyd 2006 Eq 7; Lloyd 2005 Eq 8 with n = 1, f = α).
+///
+/// ```text
+/// m_x(z, n′) = (res_i / res_s) · f (n′ + z − n) / (z (n′ + f − n))
+/// m_x(z, ∞)  = (res_i / res_s) · f / z
+/// ```
+///
+/// n = `near`, f = `far`, z = depth (eye-space distance along the view direction, same unit);
+/// n′ = `n_prime`; res_i = `res.image()` pixels across the image, res_s = `res.s()` texels along
+/// the map's s (the eye's x). Dimensionless. It comes from w_lx = (1/res_s) dx/ds with
+/// s = x / (2 z′ tan θ′) + ½, z′ = n′ + z − n, tan θ′ = (f / f′) tan θ, f′ = n′ + f − n.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far), `n_prime` (n′ ≥ near) or
+/// `z` (near ≤ z ≤ far).
+#[inline]
+pub fn mx(near: f64, far: f64, n_prime: NPrime, z: f64, res: Resolutions) -> Result<f64> {
+    let (n, f) = near_far(near, far)?;
+    let np = n_prime_at_least(n_prime, n)?;
+    let z = depth_in(z, n, f)?;
+    let shape = match np {
+        None => f / z,
+        Some(np) => f * (np + z - n) / (z * (np + f - n)),
+    };
+    Ok(res.image() / res.s() * shape)
+}
+
+/// The z error at depth z (Lloyd 2006 Eq 8; Lloyd 2005 Eq 2, 3 with n = 1, f = α).
+///
+/// ```text
+/// m_z(z, n′) = (res_i / res_t) · (f − n) / (2 tan θ) · (n′ + z − n)² / (z n′ (n′ + f − n))
+/// m_z(z, ∞)  = (res_i / res_t) · (f − n) / (2 tan θ) · 1 / z
+/// ```
+///
+/// Symbols as in [`mx`]; θ = `view.half_fov()`, res_t = `res.t()` texels along t (the view
+/// direction). Dimensionless. It comes from w_lz = (1/res_t) dz/dt with
+/// t(z′) = (f′ + n′)/(2 (f′ − n′)) − f′ n′ / (z′ (f′ − n′)) + ½.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `n_prime` (n′ ≥ near) or `z` (near ≤ z ≤ far).
+#[inline]
+pub fn mz(view: &ViewFrustum, n_prime: NPrime, z: f64, res: Resolutions) -> Result<f64> {
+    let (n, f) = (view.near(), view.far());
+    let np = n_prime_at_least(n_prime, n)?;
+    let z = depth_in(z, n, f)?;
+    let shape = match np {
+        None => 1.0 / z,
+        Some(np) => {
+            let zp = np + z - n;
+            // (n′ + z − n)² / (z n′ (n′ + f − n)), arranged to avoid overflow at large n′.
+            (zp / z) * (zp / np) / (np + f - n)
+        }
+    };
+    Ok(res.image() / res.t() * (f - n) / (2.0 * view.tan_half_fov()) * shape)
+}
+
+/// The maximum x error over the view frustum, at z = n (Lloyd 2006 Eq 9; Lloyd 2005 Eq 9).
+///
+/// ```text
+/// M_x(n′) = (res_i / res_s) · f n′ / (n (n′ + f − n)),    M_x(∞) = (res_i / res_s) · f / n
+/// ```
+///
+/// Symbols as in [`mx`]. m_x ∝ (n′ + z − n)/z = 1 + (n′ − n)/z decreases in z for n′ ≥ n, so
+/// the maximum is on the near plane.
+///
+/// # Errors
+/// As [`mx`] without `z`.
+#[inline]
+pub fn max_mx(near: f64, far: f64, n_prime: NPrime, res: Resolutions) -> Result<f64> {
+    mx(near, far, n_prime, near, res)
+}
+
+/// The maximum z error over the view frustum (Lloyd 2006 Eq 10).
+///
+/// ```text
+/// M_z(n′) = (res_i/res_t) (f − n)/(2 tan θ) · (n′ + f − n) / (f n′)       n′ ≤ n′_LSPSM  (far plane)
+/// M_z(n′) = (res_i/res_t) (f − n)/(2 tan θ) · n′ / (n (n′ + f − n))       n′ > n′_LSPSM  (near plane)
+/// M_z(∞)  = (res_i/res_t) (f − n)/(2 tan θ) · 1 / n
+/// n′_LSPSM = n + √(f n)
+/// ```
+///
+/// Symbols as in [`mz`]. (n′ + z − n)²/z is convex in z, so the maximum is on the near or far
+/// plane; they are equal exactly at n′ = n′_LSPSM.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `n_prime` (n′ ≥ near).
+#[inline]
+pub fn max_mz(view: &ViewFrustum, n_prime: NPrime, res: Resolutions) -> Result<f64> {
+    let (n, f) = (view.near(), view.far());
+    let np = n_prime_at_least(n_prime, n)?;
+    let shape = match np {
+        None => 1.0 / n,
+        Some(np) if np <= view.n_prime_lispsm() => (np + f - n) / (f * np),
+        Some(np) => np / (n * (np + f - n)),
+    };
+    Ok(res.image() / res.t() * (f - n) / (2.0 * view.tan_half_fov()) * shape)
+}
+
+/// The storage factor S̄ = M_x M_z with unit resolutions (Lloyd 2006 Eq 12): how many times
+/// more texels than image pixels a shadow map needs so that no perspective aliasing remains.
+///
+/// ```text
+/// S̄ = (f/n − 1) / (2 tan θ)                                   n ≤ n′ ≤ n′_LSPSM
+/// S̄ = (f/n − 1) / (2 tan θ) · n′² f / (n (n′ + f − n)²)       n′ > n′_LSPSM
+/// S̄ = (f/n − 1) / (2 tan θ) · f / n                           n′ = ∞
+/// ```
+///
+/// n = near, f = far, θ = half_fov, n′ = `n_prime`, n′_LSPSM = n + √(f n). Dimensionless.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `n_prime` (n′ ≥ near).
+#[inline]
+pub fn storage_factor(view: &ViewFrustum, n_prime: NPrime) -> Result<f64> {
+    let (n, f) = (view.near(), view.far());
+    let np = n_prime_at_least(n_prime, n)?;
+    let base = (f / n - 1.0) / (2.0 * view.tan_half_fov());
+    let factor = match np {
+        None => f / n,
+        Some(np) if np <= view.n_prime_lispsm() => 1.0,
+        Some(np) => {
+            let r = np / (np + f - n);
+            r * r * f / n
+        }
+    };
+    Ok(base * factor)
+}
+
+/// A shadow-map resolution pair, texels along s (the eye's x) and t (the view direction).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MapResolution {
+    /// Texels along s.
+    pub res_s: f64,
+    /// Texels along t.
+    pub res_t: f64,
+}
+
+/// The critical resolution res*_s × res*_t: the smallest shadow map with M_x = M_z = 1
+/// (Lloyd 2006 §4.2).
+///
+/// ```text
+/// res*_s = res_i · M_x(n′)|res=1,   res*_t = res_i · M_z(n′)|res=1,   res*_s res*_t = res_i² S̄
+/// ```
+///
+/// res_i = `res_image` pixels across the (square) image; other symbols as in [`max_mx`],
+/// [`max_mz`]. Texels.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `res_image` (finite, > 0) or `n_prime` (n′ ≥ near).
+pub fn critical_resolution(
+    view: &ViewFrustum,
+    n_prime: NPrime,
+    res_image: f64,
+) -> Result<MapResolution> {
+    let ri = positive("res_image", res_image)?;
+    let unit = Resolutions::default();
+    Ok(MapResolution {
+        res_s: ri * max_mx(view.near(), view.far(), n_prime, unit)?,
+        res_t: ri * max_mz(view, n_prime, unit)?,
+    })
+}
+
+/// The resolution for a texel budget S₀ that splits the error equally between x and z
+/// (Lloyd 2006 Eq 13, 14).
+///
+/// ```text
+/// res_s = √(S₀ · res*_s / res*_t),   res_t = √(S₀ · res*_t / res*_s)
+/// ```
+///
+/// S₀ = `budget` texels (res_s res_t = S₀); res*_s / res*_t = M_x / M_z from
+/// [`critical_resolution`], which does not depend on the image resolution, so none is needed.
+/// The resulting maximum error in both directions is res_i √(S̄ / S₀) ([`budget_error`]).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `budget` (finite, > 0) or `n_prime` (n′ ≥ near).
+pub fn budget_resolution(
+    view: &ViewFrustum,
+    n_prime: NPrime,
+    budget: f64,
+) -> Result<MapResolution> {
+    let s0 = positive("budget", budget)?;
+    let c = critical_resolution(view, n_prime, 1.0)?;
+    let ratio = c.res_s / c.res_t;
+    Ok(MapResolution {
+        res_s: (s0 * ratio).sqrt(),
+        res_t: (s0 / ratio).sqrt(),
+    })
+}
+
+/// The maximum error M_x = M_z of the budget resolution of [`budget_resolution`]:
+/// res_i √(S̄ / S₀) (Lloyd 2006 §4.2, from Eq 12–14). Dimensionless.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `res_image`, `budget` (finite, > 0) or `n_prime`.
+pub fn budget_error(
+    view: &ViewFrustum,
+    n_prime: NPrime,
+    budget: f64,
+    res_image: f64,
+) -> Result<f64> {
+    let s0 = positive("budget", budget)?;
+    let ri = positive("res_image", res_image)?;
+    Ok(ri * (storage_factor(view, n_prime)? / s0).sqrt())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Hand values at n = 1, f = 100, θ = 45° (tan θ = 1), n′ = 11 (LiSPSM).
+    #[test]
+    fn hand_values() {
+        let v = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_4).unwrap();
+        let r = Resolutions::default();
+        let l = NPrime::Finite(11.0);
+        // m_x(1) = 100·11/110 = 10; m_x(100) = 100·110/(100·110) = 1.
+        assert!((mx(1.0, 100.0, l, 1.0, r).unwrap() - 10.0).abs() < 1e-13);
+        assert!((mx(1.0, 100.0, l, 100.0, r).unwrap() - 1.0).abs() < 1e-13);
+        // m_z(1) = 99/2 · 121/(11·110) = 4.95; m_z(100) = 99/2 · 110²/(100·11·110) = 4.95.
+        let t = (std::f64::consts::FRAC_PI_4).tan();
+        assert!((mz(&v, l, 1.0, r).unwrap() - 4.95 / t).abs() < 1e-12);
+        assert!((mz(&v, l, 100.0, r).unwrap() - 4.95 / t).abs() < 1e-12);
+        assert!((max_mz(&v, l, r).unwrap() - 4.95 / t).abs() < 1e-12);
+        // Unwarped: S̄ = 99/2 · 100 = 4950.
+        assert!((storage_factor(&v, NPrime::Unwarped).unwrap() - 4950.0 / t).abs() < 1e-9);
+        // Budget: S₀ = 4 S̄ halves the error.
+        let s = storage_factor(&v, l).unwrap();
+        let b = budget_resolution(&v, l, 4.0 * s).unwrap();
+        assert!((b.res_s * b.res_t - 4.0 * s).abs() < 1e-9 * s);
+        assert!((budget_error(&v, l, 4.0 * s, 1.0).unwrap() - 0.5).abs() < 1e-14);
+        assert!(mx(1.0, 100.0, l, 0.5, r).is_err());
+        assert!(mx(1.0, 100.0, NPrime::Finite(0.5), 2.0, r).is_err());
+    }
+}

@@ -1,1 +1,495 @@
-//! (being written)
+//! Subdivided shadow maps: Lloyd, Yoon, Tuft & Manocha 2005 (UNC TR05-024), §3–4.
+//!
+//! The 2005 report works in a canonical 2D frustum with the near plane at 1 and the far plane at
+//! α = f/n, the light perpendicular to the view direction, and a perspective warp whose near
+//! plane sits a distance n from its centre of projection (n is Lloyd 2006's n′ / near; PSM n = 1,
+//! LiSPSM n_opt = 1 + √α, unwarped n = ∞). The shadow map's s runs along the warp (the view
+//! direction) and t along x, the other way round from Lloyd 2006 and the crate:
+//!
+//! | Lloyd 2005 | meaning | crate |
+//! |---|---|---|
+//! | α | f/n | `alpha` (= `far/near`) |
+//! | n | warp near distance, near = 1 | `n_warp` (n′/near) |
+//! | ξ | normalised warp parameter | `xi` (= Lloyd 2006's η) |
+//! | r_p | image resolution | `res_image` |
+//! | r_s | texels along the warp (z) direction | `res_shadow` (the crate's res_t) |
+//! | r_t | texels along x | `res_x` (the crate's res_s) |
+//!
+//! Every quantity here is scale-free, so a frustum [n, f] behaves as [1, α]; the tests check
+//! each function against Lloyd 2006's general-n forms ([`crate::analytic::overhead`]) and
+//! against the measured warp ([`crate::measure::twin`]).
+//!
+//! ```
+//! use shadow_aliasing::analytic::subdivided::{distribution_g, n_from_xi, xi_from_n};
+//! use shadow_aliasing::NPrime;
+//! let alpha = 100.0;
+//! let n = n_from_xi(alpha, 0.0)?; // LiSPSM: 1 + √α
+//! assert_eq!(n, NPrime::Finite(11.0));
+//! // g is 1/√α on both planes there.
+//! assert!((distribution_g(alpha, n, 1.0)? - 0.1).abs() < 1e-15);
+//! assert!((distribution_g(alpha, n, alpha)? - 0.1).abs() < 1e-15);
+//! assert_eq!(xi_from_n(alpha, n)?, 0.0);
+//! # Ok::<(), shadow_aliasing::Error>(())
+//! ```
+
+use crate::analytic::partition::{z_splits, SplitScheme, Splits};
+use crate::error::{fmt_num, in_closed, in_open, positive, Error, Result};
+use crate::frustum::NPrime;
+
+/// Validates α > 1, finite.
+fn alpha_ok(alpha: f64) -> Result<f64> {
+    let a = positive("alpha", alpha)?;
+    if a <= 1.0 {
+        return Err(Error::invalid(
+            "alpha",
+            format!("must be greater than 1 (got {})", fmt_num(a)),
+        ));
+    }
+    Ok(a)
+}
+
+/// Validates the warp distance n ≥ 1 (the warp frustum must contain the view frustum).
+fn n_warp_ok(n_warp: NPrime) -> Result<Option<f64>> {
+    match n_warp {
+        NPrime::Unwarped => Ok(None),
+        NPrime::Finite(v) => {
+            let v = positive("n_warp", v)?;
+            if v < 1.0 {
+                Err(Error::invalid(
+                    "n_warp",
+                    format!(
+                        "must be at least 1, the normalised near plane (got {})",
+                        fmt_num(v)
+                    ),
+                ))
+            } else {
+                Ok(Some(v))
+            }
+        }
+    }
+}
+
+/// Validates 1 ≤ z ≤ α.
+fn z_ok(z: f64, alpha: f64) -> Result<f64> {
+    let z = crate::error::finite("z", z)?;
+    if !(1.0..=alpha).contains(&z) {
+        return Err(Error::invalid(
+            "z",
+            format!(
+                "must lie in [1, alpha] = [1, {}] (got {})",
+                fmt_num(alpha),
+                fmt_num(z)
+            ),
+        ));
+    }
+    Ok(z)
+}
+
+fn tan_ok(half_fov: f64) -> Result<f64> {
+    Ok(in_open("half_fov", half_fov, 0.0, std::f64::consts::FRAC_PI_2)?.tan())
+}
+
+/// LiSPSM's optimal warp distance with near = 1: n_opt = 1 + √α (Lloyd 2005 §3.1).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `alpha` unless α > 1, finite.
+#[inline]
+pub fn n_opt(alpha: f64) -> Result<f64> {
+    Ok(1.0 + alpha_ok(alpha)?.sqrt())
+}
+
+/// The least maximum of g over the frustum, g₀ = min_n max_z g = 1/√α, reached at n = n_opt
+/// (Lloyd 2005 §3.1).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `alpha` unless α > 1, finite.
+#[inline]
+pub fn g_min(alpha: f64) -> Result<f64> {
+    Ok(1.0 / alpha_ok(alpha)?.sqrt())
+}
+
+/// The error distribution function g (Lloyd 2005 Eq 3).
+///
+/// ```text
+/// g(z) = (z − 1 + n)² / (z n (n + α − 1)),     g(z) = 1/z for n = ∞
+/// ```
+///
+/// α = `alpha` = f/n of the view frustum (> 1); n = `n_warp` ≥ 1, the warp near distance with
+/// the view near plane at 1; z ∈ [1, α] the normalised depth. Dimensionless. g is 1 at z = α for
+/// n = 1 (PSM) and at z = 1 for n = ∞; its least maximum 1/√α is at n = 1 + √α.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `alpha`, `n_warp` (≥ 1) or `z` (∈ [1, α]).
+#[inline]
+pub fn distribution_g(alpha: f64, n_warp: NPrime, z: f64) -> Result<f64> {
+    let a = alpha_ok(alpha)?;
+    let n = n_warp_ok(n_warp)?;
+    let z = z_ok(z, a)?;
+    Ok(match n {
+        None => 1.0 / z,
+        Some(n) => {
+            let zp = z - 1.0 + n;
+            (zp / z) * (zp / n) / (n + a - 1.0)
+        }
+    })
+}
+
+/// The perspective aliasing error m along the warp direction (Lloyd 2005 Eq 2).
+///
+/// ```text
+/// m = (r_p / r_s) · (α − 1) / (2 tan θ) · g(z)
+/// ```
+///
+/// r_p = `res_image` (pixels across the image), r_s = `res_shadow` (texels along the warp, the
+/// crate's res_t), θ = `half_fov` (radians), g from [`distribution_g`]. Dimensionless. Equal to
+/// Lloyd 2006's m_z (Eq 8) at depth z·near for n′ = n·near.
+///
+/// # Errors
+/// As [`distribution_g`], and `half_fov` (∈ (0, π/2)), `res_image`, `res_shadow` (> 0).
+pub fn error_m(
+    alpha: f64,
+    half_fov: f64,
+    n_warp: NPrime,
+    z: f64,
+    res_image: f64,
+    res_shadow: f64,
+) -> Result<f64> {
+    let t = tan_ok(half_fov)?;
+    let rp = positive("res_image", res_image)?;
+    let rs = positive("res_shadow", res_shadow)?;
+    let g = distribution_g(alpha, n_warp, z)?;
+    Ok(rp / rs * (alpha - 1.0) / (2.0 * t) * g)
+}
+
+/// ξ from the warp distance n (Lloyd 2005 §3.2).
+///
+/// ```text
+/// ξ = (g₀ − g(n, 1)) / (1 − g₀) = (√α − n + 1) / (n + α − 1)   n ≥ n_opt
+/// ξ = (g(n, α) − g₀) / (1 − g₀) = (√α − n + 1) / (n √α)        n < n_opt
+/// ξ = −1 for n = ∞;   g₀ = 1/√α, n_opt = 1 + √α
+/// ```
+///
+/// α = `alpha` (> 1), n = `n_warp` (≥ 1). ξ ∈ [−1, 1] interpolates the maximum of g linearly:
+/// from 1 on the near plane (ξ = −1) to g₀ (ξ = 0) and back to 1 on the far plane (ξ = 1).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `alpha` or `n_warp` (≥ 1).
+pub fn xi_from_n(alpha: f64, n_warp: NPrime) -> Result<f64> {
+    let a = alpha_ok(alpha)?;
+    let Some(n) = n_warp_ok(n_warp)? else {
+        return Ok(-1.0);
+    };
+    let ra = a.sqrt();
+    let xi = if n >= 1.0 + ra {
+        (ra - n + 1.0) / (n + a - 1.0)
+    } else {
+        (ra - n + 1.0) / (n * ra)
+    };
+    Ok(xi.clamp(-1.0, 1.0))
+}
+
+/// The warp distance n from ξ (Lloyd 2005 Eq 4).
+///
+/// ```text
+/// n = (√α + 1 − ξ (α − 1)) / (ξ + 1)   −1 ≤ ξ ≤ 0   (ξ = −1: n = ∞, [`NPrime::Unwarped`])
+/// n = (√α + 1) / (ξ √α + 1)           0 < ξ ≤ 1
+/// ```
+///
+/// α = `alpha` (> 1), ξ = `xi`. n with the view near plane at 1.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `alpha` or `xi` (∈ [−1, 1]).
+pub fn n_from_xi(alpha: f64, xi: f64) -> Result<NPrime> {
+    let a = alpha_ok(alpha)?;
+    let xi = in_closed("xi", xi, -1.0, 1.0)?;
+    let ra = a.sqrt();
+    if xi <= 0.0 {
+        let v = (ra + 1.0 - xi * (a - 1.0)) / (xi + 1.0);
+        if xi == -1.0 || !v.is_finite() {
+            Ok(NPrime::Unwarped)
+        } else {
+            Ok(NPrime::Finite(v))
+        }
+    } else {
+        Ok(NPrime::Finite((ra + 1.0) / (xi * ra + 1.0)))
+    }
+}
+
+/// The normalised depth at which g (and m) is largest for a given ξ: the near plane z = 1 for
+/// ξ ≤ 0 (n ≥ n_opt), the far plane z = α for ξ > 0 (both at ξ = 0).
+///
+/// Lloyd 2005 §3.2 prints the two the other way round (see docs/errata.md); Eq 5 is right.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `alpha` or `xi`.
+pub fn max_error_depth(alpha: f64, xi: f64) -> Result<f64> {
+    let a = alpha_ok(alpha)?;
+    let xi = in_closed("xi", xi, -1.0, 1.0)?;
+    Ok(if xi <= 0.0 { 1.0 } else { a })
+}
+
+/// The maximum error over the frustum in terms of ξ (Lloyd 2005 Eq 5).
+///
+/// ```text
+/// m_max = (r_p / r_s) · (α − 1) / (2 tan θ) · (1 + |ξ| (√α − 1)) / √α
+/// ```
+///
+/// Symbols as in [`error_m`]; ξ = `xi` ∈ [−1, 1]. Dimensionless.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `alpha`, `half_fov`, `xi`, `res_image` or `res_shadow`.
+pub fn max_error(
+    alpha: f64,
+    half_fov: f64,
+    xi: f64,
+    res_image: f64,
+    res_shadow: f64,
+) -> Result<f64> {
+    let a = alpha_ok(alpha)?;
+    let t = tan_ok(half_fov)?;
+    let xi = in_closed("xi", xi, -1.0, 1.0)?;
+    let rp = positive("res_image", res_image)?;
+    let rs = positive("res_shadow", res_shadow)?;
+    let ra = a.sqrt();
+    Ok(rp / rs * (a - 1.0) / (2.0 * t) * (1.0 + xi.abs() * (ra - 1.0)) / ra)
+}
+
+fn check_errors(errors: &[f64]) -> Result<f64> {
+    if errors.is_empty() {
+        return Err(Error::invalid(
+            "errors",
+            "must hold at least one value (got none)",
+        ));
+    }
+    let mut sum = 0.0;
+    for (i, &e) in errors.iter().enumerate() {
+        if !(e.is_finite() && e > 0.0) {
+            return Err(Error::invalid(
+                "errors",
+                format!(
+                    "must be finite and greater than 0 (got {} at index {i})",
+                    fmt_num(e)
+                ),
+            ));
+        }
+        sum += e;
+    }
+    if !sum.is_finite() {
+        return Err(Error::invalid("errors", "sum overflows"));
+    }
+    Ok(sum)
+}
+
+/// Texels per subdivision in proportion to each subdivision's maximum error (Lloyd 2005 Eq 6).
+///
+/// ```text
+/// r_si = r_s · e_i / Σ_j e_j
+/// ```
+///
+/// e_i = `errors[i]` (each subdivision's maximum error with the whole map's resolution, > 0),
+/// r_s = `total` texels (> 0, along the split direction). Written into `out` (same length as
+/// `errors`; no heap allocation). Since error scales as 1/texels, every subdivision then has the
+/// same maximum error, Σ_j e_j (in units of the whole map's error), and the r_si sum to r_s.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `errors` (empty, or a value not finite and positive),
+/// `total` (finite, > 0) or `out` (length differs from `errors`).
+///
+/// ```
+/// # use shadow_aliasing::analytic::subdivided::allocate_texels;
+/// let mut out = [0.0; 3];
+/// allocate_texels(&[1.0, 2.0, 1.0], 1024.0, &mut out)?;
+/// assert_eq!(out, [256.0, 512.0, 256.0]);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn allocate_texels(errors: &[f64], total: f64, out: &mut [f64]) -> Result<()> {
+    let sum = check_errors(errors)?;
+    let total = positive("total", total)?;
+    if out.len() != errors.len() {
+        return Err(Error::invalid(
+            "out",
+            format!(
+                "must have the length of errors ({}), got {}",
+                errors.len(),
+                out.len()
+            ),
+        ));
+    }
+    for (o, &e) in out.iter_mut().zip(errors) {
+        *o = total * (e / sum);
+    }
+    Ok(())
+}
+
+/// Eq 6 in whole texels: the largest-remainder rounding of [`allocate_texels`], so the counts
+/// sum to `total` exactly (ties go to the earlier subdivision). No heap allocation.
+///
+/// # Errors
+/// As [`allocate_texels`]; `total` must be at least 1.
+pub fn allocate_texels_whole(errors: &[f64], total: u32, out: &mut [u32]) -> Result<()> {
+    let sum = check_errors(errors)?;
+    if total == 0 {
+        return Err(Error::invalid("total", "must be at least 1 (got 0)"));
+    }
+    if out.len() != errors.len() {
+        return Err(Error::invalid(
+            "out",
+            format!(
+                "must have the length of errors ({}), got {}",
+                errors.len(),
+                out.len()
+            ),
+        ));
+    }
+    let t = f64::from(total);
+    let mut given: u64 = 0;
+    for (o, &e) in out.iter_mut().zip(errors) {
+        // floor of a value in [0, total]: fits in u32.
+        let share = (t * (e / sum)).floor().clamp(0.0, t);
+        *o = share as u32;
+        given += u64::from(*o);
+    }
+    let mut left = u64::from(total).saturating_sub(given);
+    while left > 0 {
+        // Give one texel to the largest remaining fractional part.
+        let mut best = 0usize;
+        let mut best_frac = f64::NEG_INFINITY;
+        for (i, (&o, &e)) in out.iter().zip(errors).enumerate() {
+            let frac = t * (e / sum) - f64::from(o);
+            if frac > best_frac {
+                best_frac = frac;
+                best = i;
+            }
+        }
+        out[best] += 1;
+        left -= 1;
+    }
+    Ok(())
+}
+
+/// The k face-subdivision planes z_i = α^{i/k}, i = 0..k, over the normalised frustum [1, α]
+/// (Lloyd 2005 §4, "Face subdivision"; the same self-similar planes as Lloyd 2006 Eq 15, 16).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `alpha` (> 1) or `k` (1 ≤ k ≤ 16).
+pub fn face_subdivision_planes(alpha: f64, k: usize) -> Result<Splits> {
+    let a = alpha_ok(alpha)?;
+    z_splits(1.0, a, k, SplitScheme::SelfSimilar)
+}
+
+/// The maximum error with k self-similar face subdivisions, each with ratio α^{1/k}, the same
+/// ξ, and 1/k of the texels (Lloyd 2005 Eq 7).
+///
+/// ```text
+/// m_max(k) = k (r_p / r_s) (α^{1/k} − 1) / (2 tan θ) · (1 + |ξ| (√(α^{1/k}) − 1)) / √(α^{1/k})
+/// ```
+///
+/// Symbols as in [`max_error`]; k = `k` ≥ 1. All subdivisions have the same maximum error, so
+/// Eq 6 gives each r_s/k texels, and Eq 5 with α → α^{1/k}, r_s → r_s/k is Eq 7. As k → ∞ it
+/// tends to (r_p/r_s) ln α / (2 tan θ) for every ξ (the |ξ| factor tends to 1).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `alpha`, `k` (≥ 1), `half_fov`, `xi`, `res_image` or
+/// `res_shadow`.
+pub fn subdivided_max_error(
+    alpha: f64,
+    k: usize,
+    xi: f64,
+    half_fov: f64,
+    res_image: f64,
+    res_shadow: f64,
+) -> Result<f64> {
+    let a = alpha_ok(alpha)?;
+    if k == 0 {
+        return Err(Error::invalid("k", "must be at least 1 (got 0)"));
+    }
+    let kf = k as f64;
+    let ln_ak = a.ln() / kf;
+    let ak_m1 = ln_ak.exp_m1(); // α^{1/k} − 1, accurate for large k
+    let rak = (0.5 * ln_ak).exp(); // √(α^{1/k})
+    let t = tan_ok(half_fov)?;
+    let xi = in_closed("xi", xi, -1.0, 1.0)?;
+    let rp = positive("res_image", res_image)?;
+    let rs = positive("res_shadow", res_shadow)?;
+    let rak_m1 = (0.5 * ln_ak).exp_m1();
+    Ok(kf * rp / rs * ak_m1 / (2.0 * t) * (1.0 + xi.abs() * rak_m1) / rak)
+}
+
+/// The x error (Lloyd 2005 Eq 8; Lloyd 2006 Eq 7 with n = 1, f = α).
+///
+/// ```text
+/// m_x = (r_p / r_t) · α (n + z − 1) / (z (n + α − 1)),    m_x = (r_p / r_t) α / z for n = ∞
+/// ```
+///
+/// r_p = `res_image`, r_t = `res_x` (texels along x: the crate's res_s); α, n, z as in
+/// [`distribution_g`]. Dimensionless.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `alpha`, `n_warp`, `z`, `res_image` or `res_x`.
+pub fn mx(alpha: f64, n_warp: NPrime, z: f64, res_image: f64, res_x: f64) -> Result<f64> {
+    let a = alpha_ok(alpha)?;
+    let n = n_warp_ok(n_warp)?;
+    let z = z_ok(z, a)?;
+    let rp = positive("res_image", res_image)?;
+    let rt = positive("res_x", res_x)?;
+    let shape = match n {
+        None => a / z,
+        Some(n) => a * (n + z - 1.0) / (z * (n + a - 1.0)),
+    };
+    Ok(rp / rt * shape)
+}
+
+/// The maximum x error, on the near plane z = 1, in terms of ξ (Lloyd 2005 Eq 9).
+///
+/// ```text
+/// m_x,max = (r_p / r_t) · α (1 − ξ (√α − 1)) / √α          ξ ≤ 0
+/// m_x,max = (r_p / r_t) · α / (√α (1 + ξ (√α − 1)))        ξ > 0
+/// ```
+///
+/// Symbols as in [`mx`] and [`max_error`]. It is smallest, r_p/r_t, at ξ = +1 (PSM, n = 1), and
+/// largest, (r_p/r_t) α, at ξ = −1 (unwarped).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `alpha`, `xi`, `res_image` or `res_x`.
+pub fn max_mx(alpha: f64, xi: f64, res_image: f64, res_x: f64) -> Result<f64> {
+    let a = alpha_ok(alpha)?;
+    let xi = in_closed("xi", xi, -1.0, 1.0)?;
+    let rp = positive("res_image", res_image)?;
+    let rt = positive("res_x", res_x)?;
+    let ra = a.sqrt();
+    let shape = if xi <= 0.0 {
+        a * (1.0 - xi * (ra - 1.0)) / ra
+    } else {
+        a / (ra * (1.0 + xi * (ra - 1.0)))
+    };
+    Ok(rp / rt * shape)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hand_values() {
+        // α = 100: n(ξ = 0) = 11, g₀ = 0.1; Eq 5 at θ = 45°, ξ = 0: 99/2 · 0.1 = 4.95.
+        let q = std::f64::consts::FRAC_PI_4;
+        let t = q.tan();
+        assert!((max_error(100.0, q, 0.0, 1.0, 1.0).unwrap() - 4.95 / t).abs() < 1e-12);
+        // ξ = ±1: 99/2 · 1.
+        assert!((max_error(100.0, q, 1.0, 1.0, 1.0).unwrap() - 49.5 / t).abs() < 1e-12);
+        // Eq 7 with k = 2, ξ = 0: 2 · 9/2 / √10.
+        let e = subdivided_max_error(100.0, 2, 0.0, q, 1.0, 1.0).unwrap();
+        assert!((e - 9.0 / 10f64.sqrt() / t).abs() < 1e-12);
+        // Eq 9: ξ = 1 gives r_p/r_t; ξ = −1 gives α.
+        assert!((max_mx(100.0, 1.0, 1.0, 1.0).unwrap() - 1.0).abs() < 1e-14);
+        assert!((max_mx(100.0, -1.0, 1.0, 1.0).unwrap() - 100.0).abs() < 1e-12);
+        assert_eq!(n_from_xi(100.0, -1.0), Ok(NPrime::Unwarped));
+        assert_eq!(xi_from_n(100.0, NPrime::Finite(1.0)), Ok(1.0));
+        let mut w = [0u32; 3];
+        allocate_texels_whole(&[1.0, 1.0, 1.0], 100, &mut w).unwrap();
+        assert_eq!(w, [34, 33, 33]);
+        assert!(distribution_g(1.0, NPrime::Unwarped, 1.0).is_err());
+        assert!(distribution_g(10.0, NPrime::Finite(0.5), 1.0).is_err());
+        assert!(allocate_texels(&[1.0, 0.0], 10.0, &mut [0.0; 2]).is_err());
+    }
+}

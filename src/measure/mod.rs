@@ -100,7 +100,7 @@ impl PointError {
 /// [`Error::Degenerate`] when `h.w ≤ 0` (the point is behind the map's centre of projection).
 pub fn st_gradients(matrix: &DMat4, p: DVec3) -> Result<(f64, f64, DVec3, DVec3, f64)> {
     let h = *matrix * DVec4::new(p.x, p.y, p.z, 1.0);
-    if !(h.w > 0.0) || !h.is_finite() {
+    if !h.is_finite() || h.w <= 0.0 {
         return Err(Error::Degenerate(format!(
             "the point {p} maps to w = {} (behind the shadow map's centre of projection)",
             h.w
@@ -135,7 +135,7 @@ pub fn point_error(
         return Err(Error::invalid("point", format!("must be finite (got {p})")));
     }
     let z = -p.z;
-    if !(z > 0.0) {
+    if z <= 0.0 {
         return Err(Error::invalid(
             "point",
             format!("must be in front of the camera, depth −p.z > 0 (got {p})"),
@@ -159,7 +159,7 @@ pub fn point_error(
     let grad_t = gt_p.length();
     // |det A| for an orthonormal basis of Π is |∇_Π s × ∇_Π t|.
     let det = gs_p.cross(gt_p).length();
-    if !(grad_t > 0.0) || !(det > 0.0) || !det.is_finite() {
+    if !det.is_finite() || grad_t <= 0.0 || det <= 0.0 {
         return Err(Error::Degenerate(format!(
             "the shadow map is singular at {p}: texels have no finite extent there"
         )));

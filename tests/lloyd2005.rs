@@ -1,0 +1,295 @@
+//! Lloyd, Yoon, Tuft & Manocha 2005, "Subdivided Shadow Maps" (UNC TR05-024): every closed
+//! form against the measured warping frustum (near = 1, far = α), against Lloyd 2006's
+//! general-n forms, and the errata.
+
+use proptest::prelude::*;
+use shadow_aliasing::analytic::overhead;
+use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
+use shadow_aliasing::analytic::subdivided::{
+    allocate_texels, allocate_texels_whole, distribution_g, error_m, face_subdivision_planes,
+    g_min, max_error, max_error_depth, max_mx, mx, n_from_xi, n_opt, subdivided_max_error,
+    xi_from_n,
+};
+use shadow_aliasing::measure::twin::overhead_map;
+use shadow_aliasing::measure::{frustum_max, point_error};
+use shadow_aliasing::warp::{eta_from_n_prime, n_prime_from_eta};
+use shadow_aliasing::{NPrime, Resolutions, ViewFrustum};
+
+const REL: f64 = 1e-9;
+
+fn config() -> ProptestConfig {
+    ProptestConfig {
+        cases: 128,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
+}
+
+fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * a.abs().max(b.abs())
+}
+
+/// α log-uniform in [1.01, 10⁴].
+fn alpha() -> impl Strategy<Value = f64> {
+    (0.0043f64..4.0).prop_map(|l| 10f64.powf(l))
+}
+
+fn half_fov() -> impl Strategy<Value = f64> {
+    (1.0f64..80.0).prop_map(f64::to_radians)
+}
+
+fn xi() -> impl Strategy<Value = f64> {
+    prop_oneof![7 => -0.999f64..=1.0, 1 => Just(-1.0)]
+}
+
+/// The measured error of the normalised frustum [1, α] warped with n at depth z, on the view
+/// axis: (m_x, m_z).
+fn measured(alpha: f64, th: f64, n: NPrime, z: f64, res: Resolutions) -> (f64, f64) {
+    let v = ViewFrustum::new(1.0, alpha, th).unwrap();
+    let map = overhead_map(&v, n).unwrap();
+    let p = point_error(&v, &map, glam::DVec3::new(0.0, 0.0, -z), res).unwrap();
+    (p.mx, p.mz)
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// Eq 2, 3: m = (r_p/r_s)(α − 1)/(2 tan θ) g(z) is the measured error along the warp
+    /// (the crate's m_z with res_t = r_s); Eq 8 is the measured x error (res_s = r_t).
+    #[test]
+    fn eq2_eq3_eq8_equal_the_measured_warp(
+        a in alpha(), th in half_fov(), x in xi(), fz in 0.0f64..=1.0,
+        rp in 1.0f64..4096.0, rs in 1.0f64..4096.0, rt in 1.0f64..4096.0,
+    ) {
+        let n = n_from_xi(a, x).unwrap();
+        let z = (1.0 + fz * (a - 1.0)).min(a);
+        let (mx_m, mz_m) = measured(a, th, n, z, Resolutions::new(rp, rt, rs).unwrap());
+        let m = error_m(a, th, n, z, rp, rs).unwrap();
+        prop_assert!(close(m, mz_m, REL), "Eq 2 {m} measured {mz_m}");
+        let g = distribution_g(a, n, z).unwrap();
+        prop_assert!(close(g, mz_m * rs / rp * 2.0 * th.tan() / (a - 1.0), REL));
+        let cx = mx(a, n, z, rp, rt).unwrap();
+        prop_assert!(close(cx, mx_m, REL), "Eq 8 {cx} measured {mx_m}");
+    }
+
+    /// Eq 5 and Eq 9: the measured maxima over the frustum vertices with n = n(ξ) (Eq 4).
+    #[test]
+    fn eq5_eq9_equal_the_measured_maxima(a in alpha(), th in half_fov(), x in xi()) {
+        let n = n_from_xi(a, x).unwrap();
+        let v = ViewFrustum::new(1.0, a, th).unwrap();
+        let m = frustum_max(&v, &overhead_map(&v, n).unwrap()).unwrap();
+        let e5 = max_error(a, th, x, 1.0, 1.0).unwrap();
+        prop_assert!(close(e5, m.max_mz, REL), "Eq 5 {e5} measured {}", m.max_mz);
+        let e9 = max_mx(a, x, 1.0, 1.0).unwrap();
+        prop_assert!(close(e9, m.max_mx, REL), "Eq 9 {e9} measured {}", m.max_mx);
+    }
+
+    /// §3.2: ξ(n(ξ)) = ξ; ξ is the linear interpolation of max g that defines it (computed here
+    /// from g on the two planes); and 2005's ξ ↔ n is 2006's η ↔ n′ with n′ = n·near.
+    #[test]
+    fn xi_roundtrip_definition_and_2006_agreement(a in alpha(), x in xi(), near in 0.01f64..10.0) {
+        let n = n_from_xi(a, x).unwrap();
+        prop_assert!((xi_from_n(a, n).unwrap() - x).abs() < 1e-9);
+        let g0 = g_min(a).unwrap();
+        let def = if x <= 0.0 {
+            (g0 - distribution_g(a, n, 1.0).unwrap()) / (1.0 - g0)
+        } else {
+            (distribution_g(a, n, a).unwrap() - g0) / (1.0 - g0)
+        };
+        prop_assert!((def - x).abs() < 1e-9, "definition {def} vs ξ {x}");
+        let np = n_prime_from_eta(near, near * a, x).unwrap();
+        match (n, np) {
+            (NPrime::Unwarped, NPrime::Unwarped) => {}
+            (NPrime::Finite(a1), NPrime::Finite(b1)) => prop_assert!(close(a1 * near, b1, 1e-12)),
+            other => prop_assert!(false, "{other:?}"),
+        }
+        prop_assert!((eta_from_n_prime(near, near * a, np).unwrap() - x).abs() < 1e-9);
+    }
+
+    /// Lloyd 2005 (near = 1, far = α) and Lloyd 2006 (general n) agree: Eq 8 vs 2006 Eq 7 and
+    /// Eq 2 vs 2006 Eq 8 at depth z·n with n′ = n_warp·n, Eq 5 vs 2006 Eq 10.
+    #[test]
+    fn lloyd2005_agrees_with_lloyd2006_at_any_near(
+        a in alpha(), th in half_fov(), x in xi(), near in 0.01f64..10.0, fz in 0.0f64..=1.0,
+    ) {
+        let n = n_from_xi(a, x).unwrap();
+        let np = match n { NPrime::Finite(v) => NPrime::Finite(v * near), u => u };
+        let z = (1.0 + fz * (a - 1.0)).min(a);
+        let v = ViewFrustum::new(near, near * a, th).unwrap();
+        let r = Resolutions::default();
+        let zz = (z * near).clamp(v.near(), v.far());
+        let m6 = overhead::mx(near, near * a, np, zz, r).unwrap();
+        prop_assert!(close(mx(a, n, z, 1.0, 1.0).unwrap(), m6, 1e-9));
+        let z6 = overhead::mz(&v, np, zz, r).unwrap();
+        prop_assert!(close(error_m(a, th, n, z, 1.0, 1.0).unwrap(), z6, 1e-9));
+        let mm = overhead::max_mz(&v, np, r).unwrap();
+        prop_assert!(close(max_error(a, th, x, 1.0, 1.0).unwrap(), mm, 1e-9));
+    }
+
+    /// Eq 7: k self-similar face subdivisions, each warped with the same ξ over its own range
+    /// and given r_s/k texels, measured: every subdivision has the same maximum error (so Eq 6
+    /// gives 1/k each), and that error is Eq 7.
+    #[test]
+    fn eq7_equals_the_measured_subdivisions(
+        a in alpha(), th in half_fov(), x in xi(), k in 1usize..=8, rs in 1.0f64..4096.0,
+    ) {
+        let planes = face_subdivision_planes(a, k).unwrap();
+        let mut errs = [0.0; 8];
+        for (i, e) in errs.iter_mut().enumerate().take(k) {
+            let (z0, z1) = planes.range(i);
+            let sub = ViewFrustum::new(z0, z1, th).unwrap();
+            let np = n_prime_from_eta(z0, z1, x).unwrap();
+            *e = frustum_max(&sub, &overhead_map(&sub, np).unwrap()).unwrap().max_mz;
+        }
+        let mut alloc = [0.0; 8];
+        allocate_texels(&errs[..k], rs, &mut alloc[..k]).unwrap();
+        let want = subdivided_max_error(a, k, x, th, 1.0, rs).unwrap();
+        for i in 0..k {
+            prop_assert!(close(alloc[i], rs / k as f64, 1e-9), "allocation {} of {rs}", alloc[i]);
+            // Error at r_si texels = error at 1 texel / r_si.
+            prop_assert!(close(errs[i] / alloc[i], want, REL), "{} vs Eq 7 {want}", errs[i] / alloc[i]);
+        }
+    }
+
+    /// Eq 6: the allocation sums to the total and equalises the measured maximum errors of
+    /// subdivisions of different depth ratios (frustum subdivisions of different sizes).
+    #[test]
+    fn eq6_equalises_measured_errors(
+        alphas in proptest::collection::vec(1.5f64..500.0, 1..6), th in half_fov(), x in xi(),
+        total in 16.0f64..4096.0,
+    ) {
+        let k = alphas.len();
+        let mut errs = [0.0; 6];
+        for (e, &a) in errs.iter_mut().zip(&alphas) {
+            let v = ViewFrustum::new(1.0, a, th).unwrap();
+            *e = frustum_max(&v, &overhead_map(&v, n_from_xi(a, x).unwrap()).unwrap()).unwrap().max_mz;
+        }
+        let mut out = [0.0; 6];
+        allocate_texels(&errs[..k], total, &mut out[..k]).unwrap();
+        let sum: f64 = out[..k].iter().sum();
+        prop_assert!(close(sum, total, 1e-12));
+        for i in 0..k {
+            let v = ViewFrustum::new(1.0, alphas[i], th).unwrap();
+            let map = overhead_map(&v, n_from_xi(alphas[i], x).unwrap()).unwrap();
+            let mut m = 0.0f64;
+            for c in v.corners() {
+                let r = Resolutions::new(1.0, 1.0, out[i]).unwrap();
+                m = m.max(point_error(&v, &map, c, r).unwrap().mz);
+            }
+            let all: f64 = errs[..k].iter().sum::<f64>() / total;
+            prop_assert!(close(m, all, REL), "subdivision {i}: {m} vs {all}");
+        }
+        let mut whole = [0u32; 6];
+        allocate_texels_whole(&errs[..k], total as u32, &mut whole[..k]).unwrap();
+        prop_assert_eq!(whole[..k].iter().map(|&w| u64::from(w)).sum::<u64>(), u64::from(total as u32));
+    }
+
+    /// Eq 7 decreases with k for every ξ and tends to (r_p/r_s) ln α / (2 tan θ).
+    #[test]
+    fn eq7_decreases_in_k(a in 1.5f64..1e4, th in half_fov(), x in xi()) {
+        let mut prev = f64::INFINITY;
+        for k in 1..=32 {
+            let e = subdivided_max_error(a, k, x, th, 1.0, 1.0).unwrap();
+            prop_assert!(e < prev);
+            prev = e;
+        }
+        let lim = a.ln() / (2.0 * th.tan());
+        prop_assert!(prev > lim);
+        let far = subdivided_max_error(a, 1 << 20, x, th, 1.0, 1.0).unwrap();
+        prop_assert!(close(far, lim, 1e-5), "{far} vs {lim}");
+    }
+}
+
+/// Hand values (α = 100): n_opt = 11, g₀ = 0.1, z_i = 100^{i/2} = 1, 10, 100.
+#[test]
+fn hand_values() {
+    assert_eq!(n_opt(100.0).unwrap(), 11.0);
+    assert_eq!(g_min(100.0).unwrap(), 0.1);
+    assert_eq!(
+        face_subdivision_planes(100.0, 2).unwrap().planes(),
+        &[1.0, 10.0, 100.0]
+    );
+    assert_eq!(
+        face_subdivision_planes(100.0, 2).unwrap(),
+        z_splits(1.0, 100.0, 2, SplitScheme::SelfSimilar).unwrap()
+    );
+    // g = 1 at z = α for n = 1 and at z = 1 for n = ∞ (§3.1).
+    assert_eq!(
+        distribution_g(100.0, NPrime::Finite(1.0), 100.0).unwrap(),
+        1.0
+    );
+    assert_eq!(distribution_g(100.0, NPrime::Unwarped, 1.0).unwrap(), 1.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Errata (docs/errata.md, "Lloyd et al. 2005").
+// ---------------------------------------------------------------------------------------------
+
+/// §3.2 says m_max is taken at z = α for ξ ≤ 0 and at z = 1 for ξ > 0; it is the other way
+/// round. α = 100, ξ = −0.5 (n = 121): g(1) = 0.55, g(α) = 0.01818…; Eq 5 gives 0.55.
+#[test]
+fn errata_s3_2_max_location_swapped() {
+    let a = 100.0;
+    let n = n_from_xi(a, -0.5).unwrap();
+    assert_eq!(n, NPrime::Finite(121.0));
+    let th = std::f64::consts::FRAC_PI_4;
+    let (_, near) = measured(a, th, n, 1.0, Resolutions::default());
+    let (_, far) = measured(a, th, n, a, Resolutions::default());
+    let scale = (a - 1.0) / (2.0 * th.tan());
+    assert!(close(near / scale, 0.55, 1e-12));
+    assert!(close(far / scale, 2.0 / 110.0, 1e-12));
+    assert!(close(max_error(a, th, -0.5, 1.0, 1.0).unwrap(), near, REL));
+    assert_eq!(max_error_depth(a, -0.5).unwrap(), 1.0);
+    // ξ = +0.5 (n = 11/6): the far plane holds the maximum.
+    let n = n_from_xi(a, 0.5).unwrap();
+    let (_, near) = measured(a, th, n, 1.0, Resolutions::default());
+    let (_, far) = measured(a, th, n, a, Resolutions::default());
+    assert!(far > near);
+    assert_eq!(max_error_depth(a, 0.5).unwrap(), a);
+}
+
+/// §4.1 says the x error is optimal at ξ = −1 "as in PSMs"; PSM is n = 1, ξ = +1. Measured at
+/// α = 100: M_x = 1 at ξ = +1 and 100 at ξ = −1.
+#[test]
+fn errata_s4_1_x_error_optimal_at_xi_plus_one() {
+    let a = 100.0;
+    let th = 0.5;
+    let at = |x: f64| {
+        let v = ViewFrustum::new(1.0, a, th).unwrap();
+        frustum_max(&v, &overhead_map(&v, n_from_xi(a, x).unwrap()).unwrap())
+            .unwrap()
+            .max_mx
+    };
+    assert!(close(at(1.0), 1.0, REL));
+    assert!(close(at(-1.0), 100.0, REL));
+    assert_eq!(n_from_xi(a, 1.0).unwrap(), NPrime::Finite(1.0));
+}
+
+/// §3.1 says a perspective projection gives "texel spacing proportional to 1/z²"; the spacing
+/// dz/ds grows as (z + c)² (the Appendix's own conclusion, z² for PSM). Measured for PSM at
+/// α = 100: w_lz(far)/w_lz(near) = 10⁴, not 10⁻⁴.
+#[test]
+fn errata_s3_1_texel_spacing_grows_as_z_squared() {
+    let v = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let map = overhead_map(&v, NPrime::Finite(1.0)).unwrap();
+    let r = Resolutions::default();
+    let w = |z: f64| {
+        point_error(&v, &map, glam::DVec3::new(0.0, 0.0, -z), r)
+            .unwrap()
+            .w_lt
+    };
+    assert!(close(w(100.0) / w(1.0), 1e4, REL));
+    assert!(close(w(10.0) / w(1.0), 100.0, REL));
+}
+
+/// §3.1's s(z′) = ½ + (f+n)/(2(f−n)) + fn/(z′(f−n)) has the sign of the last term wrong (as Lloyd
+/// 2006 Eq 6): printed s(n) = 4 and s(f) = 3 at n = 1, f = 2 (warp near and far); with − it is
+/// 0 and 1.
+#[test]
+fn errata_s3_1_parameterisation_sign() {
+    let (n, f) = (1.0f64, 2.0f64);
+    let printed = |z: f64| 0.5 + (f + n) / (2.0 * (f - n)) + f * n / (z * (f - n));
+    let right = |z: f64| 0.5 + (f + n) / (2.0 * (f - n)) - f * n / (z * (f - n));
+    assert_eq!((printed(n), printed(f)), (4.0, 3.0));
+    assert_eq!((right(n), right(f)), (0.0, 1.0));
+}

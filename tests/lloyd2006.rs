@@ -1,0 +1,310 @@
+//! Lloyd, Tuft, Yoon & Manocha 2006, "Warping and Partitioning for Low Error Shadow Maps":
+//! every closed form of §4 against its numeric twin (the warping-frustum matrix measured by
+//! `measure::point_error`), the identities of the η parameterisation, and the errata.
+
+use proptest::prelude::*;
+use shadow_aliasing::analytic::overhead::{
+    budget_error, budget_resolution, critical_resolution, max_mx, max_mz, mx, mz, storage_factor,
+};
+use shadow_aliasing::measure::twin::overhead_map;
+use shadow_aliasing::measure::{frustum_max, frustum_max_sampled, point_error};
+use shadow_aliasing::warp::{eta_from_n_prime, n_prime_from_eta, n_prime_lispsm, n_prime_psm};
+use shadow_aliasing::{NPrime, Resolutions, ViewFrustum};
+
+const REL: f64 = 1e-9;
+
+fn config() -> ProptestConfig {
+    ProptestConfig {
+        cases: 128,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
+}
+
+fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * a.abs().max(b.abs())
+}
+
+/// A random valid frustum: near log-uniform in [0.01, 10], f/n log-uniform in [1.01, 10⁴],
+/// half field of view in [1°, 80°].
+fn frustum() -> impl Strategy<Value = ViewFrustum> {
+    (-2.0f64..1.0, 0.0043f64..4.0, 1.0f64..80.0).prop_map(|(ln, la, th)| {
+        let n = 10f64.powf(ln);
+        ViewFrustum::new(n, n * 10f64.powf(la), th.to_radians()).unwrap()
+    })
+}
+
+fn resolutions() -> impl Strategy<Value = Resolutions> {
+    (1.0f64..4096.0, 1.0f64..4096.0, 1.0f64..4096.0)
+        .prop_map(|(i, s, t)| Resolutions::new(i, s, t).unwrap())
+}
+
+/// η ∈ [−0.999, 1], or exactly −1 (unwarped) one time in eight.
+fn eta() -> impl Strategy<Value = f64> {
+    prop_oneof![7 => -0.999f64..=1.0, 1 => Just(-1.0)]
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// Eq 7, 8: m_x and m_z at any point of the frustum equal the measured errors of the
+    /// warping frustum with the same n′ (any resolutions).
+    #[test]
+    fn eq7_eq8_equal_the_measured_warp_pointwise(
+        v in frustum(), e in eta(), res in resolutions(),
+        fz in 0.0f64..=1.0, fx in -1.0f64..=1.0, fy in -1.0f64..=1.0,
+    ) {
+        let np = n_prime_from_eta(v.near(), v.far(), e).unwrap();
+        let map = overhead_map(&v, np).unwrap();
+        let z = v.near() + fz * (v.far() - v.near());
+        let z = z.min(v.far());
+        let h = z * v.tan_half_fov();
+        let p = glam::DVec3::new(fx * h, fy * h, -z);
+        let m = point_error(&v, &map, p, res).unwrap();
+        let cx = mx(v.near(), v.far(), np, z, res).unwrap();
+        let cz = mz(&v, np, z, res).unwrap();
+        prop_assert!(close(m.mx, cx, REL), "m_x measured {} closed {}", m.mx, cx);
+        prop_assert!(close(m.mz, cz, REL), "m_z measured {} closed {}", m.mz, cz);
+    }
+
+    /// Eq 9, 10, 12: M_x, M_z and S̄ equal the measured maxima over the frustum vertices.
+    #[test]
+    fn eq9_eq10_eq12_equal_the_measured_maxima(v in frustum(), e in eta()) {
+        let np = n_prime_from_eta(v.near(), v.far(), e).unwrap();
+        let r = Resolutions::default();
+        let m = frustum_max(&v, &overhead_map(&v, np).unwrap()).unwrap();
+        prop_assert!(close(m.max_mx, max_mx(v.near(), v.far(), np, r).unwrap(), REL));
+        prop_assert!(close(m.max_mz, max_mz(&v, np, r).unwrap(), REL));
+        prop_assert!(close(m.storage_factor, storage_factor(&v, np).unwrap(), REL));
+    }
+
+    /// η(n′(η)) = η and n′(η(n′)) = n′.
+    #[test]
+    fn eta_and_n_prime_are_inverse(v in frustum(), e in eta(), nu in 1.0f64..1e6) {
+        let (n, f) = (v.near(), v.far());
+        let np = n_prime_from_eta(n, f, e).unwrap();
+        let back = eta_from_n_prime(n, f, np).unwrap();
+        prop_assert!((back - e).abs() <= 1e-9, "η = {e} → n′ = {np:?} → η = {back}");
+        let np2 = NPrime::Finite(n * nu);
+        let e2 = eta_from_n_prime(n, f, np2).unwrap();
+        let back2 = n_prime_from_eta(n, f, e2).unwrap();
+        prop_assert!(close(back2.value(), n * nu, 1e-8), "{} vs {}", back2.value(), n * nu);
+    }
+
+    /// App. B defines η by interpolating the *measured* maximum z error M_z linearly between
+    /// n′ = ∞ (η = −1), n′_LSPSM (0) and n′ = n (1). Computed from the twin, it is Eq 11's η.
+    #[test]
+    fn app_b_definition_from_measured_mz_gives_eq11(v in frustum(), e in eta()) {
+        let (n, f) = (v.near(), v.far());
+        let mz_of = |np: NPrime| frustum_max(&v, &overhead_map(&v, np).unwrap()).unwrap().max_mz;
+        let np = n_prime_from_eta(n, f, e).unwrap();
+        let l = NPrime::Finite(n_prime_lispsm(n, f).unwrap());
+        let (m, ml, minf, mn) = (mz_of(np), mz_of(l), mz_of(NPrime::Unwarped), mz_of(NPrime::Finite(n)));
+        let eta_b = if np.value() > l.value() {
+            (ml - m) / (minf - ml)
+        } else {
+            (m - ml) / (mn - ml)
+        };
+        prop_assert!((eta_b - e).abs() < 1e-6, "App. B η = {eta_b}, Eq 11 η = {e}");
+    }
+
+    /// §4.3: S̄ does not depend on n′ for n ≤ n′ ≤ n′_LSPSM (η ∈ [0, 1]): measured S̄ is
+    /// (f/n − 1)/(2 tan θ).
+    #[test]
+    fn storage_factor_is_flat_below_lispsm(v in frustum(), e in 0.0f64..=1.0) {
+        let np = n_prime_from_eta(v.near(), v.far(), e).unwrap();
+        let s = frustum_max(&v, &overhead_map(&v, np).unwrap()).unwrap().storage_factor;
+        let flat = (v.alpha() - 1.0) / (2.0 * v.tan_half_fov());
+        prop_assert!(close(s, flat, REL), "S̄ = {s}, flat {flat}");
+    }
+
+    /// At n′_LSPSM the measured m_z is the same on the near and far planes (§4.3, Eq 10's
+    /// regimes meet), and it is the smallest M_z of all n′.
+    #[test]
+    fn mz_equal_on_near_and_far_planes_at_lispsm(v in frustum(), e in eta()) {
+        let l = NPrime::Finite(v.n_prime_lispsm());
+        let map = overhead_map(&v, l).unwrap();
+        let r = Resolutions::default();
+        let near = point_error(&v, &map, glam::DVec3::new(0.0, 0.0, -v.near()), r).unwrap().mz;
+        let far = point_error(&v, &map, glam::DVec3::new(0.0, 0.0, -v.far()), r).unwrap().mz;
+        prop_assert!(close(near, far, REL), "near {near} far {far}");
+        let other = n_prime_from_eta(v.near(), v.far(), e).unwrap();
+        let m_other = frustum_max(&v, &overhead_map(&v, other).unwrap()).unwrap().max_mz;
+        prop_assert!(m_other >= near * (1.0 - REL));
+    }
+
+    /// Eq 10's regimes: the measured maximum of m_z lies on the far plane for n′ ≤ n′_LSPSM
+    /// (η ≥ 0) and on the near plane for n′ > n′_LSPSM (η < 0), as the text says.
+    #[test]
+    fn eq10_max_plane_switches_at_lispsm(v in frustum(), e in eta()) {
+        let np = n_prime_from_eta(v.near(), v.far(), e).unwrap();
+        let map = overhead_map(&v, np).unwrap();
+        let r = Resolutions::default();
+        let near = point_error(&v, &map, glam::DVec3::new(0.0, 0.0, -v.near()), r).unwrap().mz;
+        let far = point_error(&v, &map, glam::DVec3::new(0.0, 0.0, -v.far()), r).unwrap().mz;
+        if e > 1e-6 {
+            prop_assert!(far > near, "η = {e}: far {far} ≤ near {near}");
+        } else if e < -1e-6 {
+            prop_assert!(near > far, "η = {e}: near {near} ≤ far {far}");
+        }
+    }
+
+    /// Eq 13, 14: the critical resolution makes the measured M_x = M_z = 1, and the budget
+    /// resolution makes both equal res_i √(S̄ / S₀) with res_s res_t = S₀.
+    #[test]
+    fn eq13_eq14_critical_and_budget_resolution(
+        v in frustum(), e in eta(), ri in 64.0f64..4096.0, s0 in 1e4f64..1e8,
+    ) {
+        let np = n_prime_from_eta(v.near(), v.far(), e).unwrap();
+        let map = overhead_map(&v, np).unwrap();
+        let max_at = |res: Resolutions| {
+            let mut m = (0.0f64, 0.0f64);
+            for c in v.corners() {
+                let p = point_error(&v, &map, c, res).unwrap();
+                m = (m.0.max(p.mx), m.1.max(p.mz));
+            }
+            m
+        };
+        let c = critical_resolution(&v, np, ri).unwrap();
+        let (cx, cz) = max_at(Resolutions::new(ri, c.res_s, c.res_t).unwrap());
+        prop_assert!(close(cx, 1.0, REL) && close(cz, 1.0, REL), "{cx} {cz}");
+        let b = budget_resolution(&v, np, s0).unwrap();
+        prop_assert!(close(b.res_s * b.res_t, s0, REL));
+        let (bx, bz) = max_at(Resolutions::new(ri, b.res_s, b.res_t).unwrap());
+        let want = budget_error(&v, np, s0, ri).unwrap();
+        prop_assert!(close(bx, want, REL) && close(bz, want, REL), "{bx} {bz} {want}");
+    }
+}
+
+/// n′(0) = n + √(fn), n′(−1) = ∞, n′(1) = n (Fig 6 caption, Eq 11).
+#[test]
+fn n_prime_special_values() {
+    for (n, f) in [(1.0, 100.0), (0.3, 7.0), (2.0, 2000.0)] {
+        let l = n_prime_lispsm(n, f).unwrap();
+        assert_eq!(l, n + (f * n as f64).sqrt());
+        match n_prime_from_eta(n, f, 0.0).unwrap() {
+            NPrime::Finite(v) => assert!(close(v, l, 1e-15)),
+            NPrime::Unwarped => panic!("η = 0 is finite"),
+        }
+        assert_eq!(n_prime_from_eta(n, f, -1.0).unwrap(), NPrime::Unwarped);
+        match n_prime_from_eta(n, f, 1.0).unwrap() {
+            NPrime::Finite(v) => assert!(close(v, n_prime_psm(n, f).unwrap(), 1e-15)),
+            NPrime::Unwarped => panic!("η = 1 is finite"),
+        }
+        assert_eq!(eta_from_n_prime(n, f, NPrime::Unwarped).unwrap(), -1.0);
+        assert_eq!(eta_from_n_prime(n, f, NPrime::Finite(n)).unwrap(), 1.0);
+    }
+}
+
+/// The vertices suffice (§4.4): a dense grid finds the same maxima.
+#[test]
+fn vertices_suffice_for_the_overhead_warp() {
+    let v = ViewFrustum::new(0.5, 60.0, 0.7).unwrap();
+    for e in [-1.0, -0.6, 0.0, 0.4, 1.0] {
+        let np = n_prime_from_eta(v.near(), v.far(), e).unwrap();
+        let map = overhead_map(&v, np).unwrap();
+        let a = frustum_max(&v, &map).unwrap();
+        let b = frustum_max_sampled(&v, &map, 9).unwrap();
+        assert!(close(a.storage_factor, b.storage_factor, REL));
+    }
+}
+
+/// Bad inputs are typed errors naming the argument.
+#[test]
+fn domain_errors() {
+    let v = ViewFrustum::new(1.0, 10.0, 0.5).unwrap();
+    let r = Resolutions::default();
+    let msg = mx(1.0, 10.0, NPrime::Finite(0.5), 2.0, r)
+        .unwrap_err()
+        .to_string();
+    assert!(msg.starts_with("n_prime must be at least near"), "{msg}");
+    let msg = mz(&v, NPrime::Unwarped, 11.0, r).unwrap_err().to_string();
+    assert_eq!(msg, "z must lie in [near, far] = [1, 10] (got 11)");
+    assert!(n_prime_from_eta(1.0, 10.0, f64::NAN).is_err());
+    assert!(n_prime_from_eta(2.0, 1.0, 0.0).is_err());
+    assert!(budget_resolution(&v, NPrime::Unwarped, 0.0).is_err());
+    assert!(critical_resolution(&v, NPrime::Unwarped, -1.0).is_err());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Errata (docs/errata.md, "Lloyd et al. 2006").
+// ---------------------------------------------------------------------------------------------
+
+/// Eq 2 as transcribed: w_i(z) = (2 tan θ / res_i)(z/n). With that width, m_x at the near plane
+/// would be n times Eq 7; the measurement (pixel width 2 z tan θ / res_i) gives Eq 7.
+#[test]
+fn errata_eq2_pixel_width_has_no_over_n() {
+    let v = ViewFrustum::new(2.0, 100.0, 30f64.to_radians()).unwrap();
+    let np = NPrime::Finite(v.n_prime_lispsm());
+    let map = overhead_map(&v, np).unwrap();
+    let p = point_error(
+        &v,
+        &map,
+        glam::DVec3::new(0.0, 0.0, -2.0),
+        Resolutions::default(),
+    )
+    .unwrap();
+    let eq7 = mx(2.0, 100.0, np, 2.0, Resolutions::default()).unwrap();
+    // Lloyd's light beam width w_lx over the transcribed pixel width (z/n)·2 tan θ.
+    let printed = p.w_ls / (2.0 * v.tan_half_fov() * 2.0 / 2.0);
+    assert!(close(p.mx, eq7, REL));
+    assert!(close(printed, 2.0 * eq7, REL)); // n = 2 times too large
+                                             // Numbers for the errata page: n = 2, f = 100, θ = 30°, n′ = n′_LSPSM = 16.142…
+    assert!(close(
+        eq7,
+        100.0 * 16.142135623730951 / (2.0 * (16.142135623730951 + 98.0)),
+        1e-12
+    ));
+}
+
+/// Eq 5, 6 as transcribed: s = x/(z′ tan θ′) + ½, tan θ′ = (f′/f) tan θ and
+/// t = (f′+n′)/(2(f′−n′)) + f′n′/(z′(f′−n′)) + ½ do not map the frustum onto [0, 1]², and the
+/// printed tan θ′ gives the wrong m_x. The crate's map (s = x/(2 z′ tan θ′) + ½,
+/// tan θ′ = (f/f′) tan θ, − before f′n′) does, and its measured m_x is Eq 7.
+#[test]
+fn errata_eq5_eq6_warping_frustum_map() {
+    let (n, f, np) = (1.0f64, 100.0f64, 11.0f64);
+    let th = std::f64::consts::FRAC_PI_4;
+    let fp = np + f - n;
+    // Printed t at the near and far planes (z′ = n′, f′): 2.2̄ and 1.2̄, not 0 and 1.
+    let t_printed = |zp: f64| (fp + np) / (2.0 * (fp - np)) + fp * np / (zp * (fp - np)) + 0.5;
+    let t_right = |zp: f64| (fp + np) / (2.0 * (fp - np)) - fp * np / (zp * (fp - np)) + 0.5;
+    assert!(close(
+        t_printed(np),
+        (fp + np) / (2.0 * (fp - np)) + fp / (fp - np) + 0.5,
+        1e-15
+    ));
+    assert!(close(t_printed(np), 20.0 / 9.0, 1e-12) && close(t_printed(fp), 11.0 / 9.0, 1e-12));
+    assert!(t_right(np).abs() < 1e-12 && (t_right(fp) - 1.0).abs() < 1e-12);
+    // Printed s at the far corner x = f tan θ, z′ = f′: with tan θ′ = (f′/f) tan θ.
+    let tan_printed = fp / f * th.tan();
+    let s_printed = f * th.tan() / (fp * tan_printed) + 0.5;
+    assert!(close(s_printed, 0.5 + (f / fp).powi(2), 1e-12)); // 1.326…, outside [0, 1]
+                                                              // m_x at z = n from the printed s: w_lx = z′ tan θ′_printed / res_s.
+    let v = ViewFrustum::new(n, f, th).unwrap();
+    let mx_printed = np * tan_printed / (n * th.tan()); // = n′ f′/(n f) = 12.1
+    let measured = frustum_max(&v, &overhead_map(&v, NPrime::Finite(np)).unwrap()).unwrap();
+    assert!(close(mx_printed, 12.1, 1e-12));
+    assert!(close(measured.max_mx, 10.0, REL)); // Eq 7, 9: f n′/(n f′) = 10
+}
+
+/// Eq 9, 10 as transcribed: M_x = (res_i/res_s) f n′/(n′ + f − n) and a factor n in front of
+/// M_z's (f − n)/(2 tan θ) (probably Eq 9's denominator n displaced in the transcription). Both
+/// are dimensionally wrong and differ from the measurement by the factor n when n ≠ 1.
+#[test]
+fn errata_eq9_eq10_factor_n() {
+    let v = ViewFrustum::new(2.0, 100.0, 30f64.to_radians()).unwrap();
+    let (n, f) = (2.0, 100.0);
+    let np = v.n_prime_lispsm();
+    let m = frustum_max(&v, &overhead_map(&v, NPrime::Finite(np)).unwrap()).unwrap();
+    let mx_printed = f * np / (np + f - n);
+    let mx_right = f * np / (n * (np + f - n));
+    assert!(close(m.max_mx, mx_right, REL));
+    assert!(close(mx_printed, n * m.max_mx, REL));
+    let k = (f - n) / (2.0 * v.tan_half_fov());
+    let mz_printed = n * k * (np + f - n) / (np * f);
+    assert!(close(m.max_mz, k * (np + f - n) / (np * f), REL));
+    assert!(close(mz_printed, n * m.max_mz, REL));
+    // Numbers: M_x printed 14.142…, measured 7.071…; M_z printed 16.97…, measured 8.487…
+    assert!(close(m.max_mx, 50f64.sqrt(), 1e-12));
+}
