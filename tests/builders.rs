@@ -23,7 +23,7 @@ const ALL_RULES: [WarpRule; 14] = [
     WarpRule::Filament,
     WarpRule::Ogre,
     WarpRule::Minimax,
-    WarpRule::MinStorage,
+    WarpRule::MinimaxMz,
     WarpRule::Eta(-0.5),
 ];
 
@@ -237,7 +237,7 @@ fn storage_factor_continuous_through_parallel() {
         WarpRule::Barroso(Falloff::Barroso),
         WarpRule::LispsmReference,
         WarpRule::Minimax,
-        WarpRule::MinStorage,
+        WarpRule::MinimaxMz,
     ] {
         for plane in [DVec3::Y, DVec3::X] {
             for dir in [DVec3::NEG_Z, DVec3::Z] {
@@ -264,7 +264,7 @@ fn storage_factor_continuous_through_parallel() {
 #[test]
 fn minimax_minimises_mz() {
     let view = ViewFrustum::new(0.5, 300.0, 0.7).unwrap();
-    let m = n_prime_for(&view, DVec3::NEG_Y, WarpRule::Minimax).unwrap();
+    let m = n_prime_for(&view, DVec3::NEG_Y, WarpRule::MinimaxMz).unwrap();
     assert!((m.value() - view.n_prime_lispsm()).abs() < 1e-9 * view.n_prime_lispsm());
     for l in [
         DVec3::new(0.3, -0.7, 0.2),
@@ -272,7 +272,7 @@ fn minimax_minimises_mz() {
         DVec3::new(0.1, -0.2, 0.9),
         DVec3::new(0.0, -0.05, -1.0),
     ] {
-        let best = warp(&view, l, WarpRule::Minimax).unwrap();
+        let best = warp(&view, l, WarpRule::MinimaxMz).unwrap();
         let best_mz = frustum_max(&view, &best.shadow_map()).unwrap().max_mz;
         for k in -40..=40 {
             let np = NPrime::Finite(view.near() * 10f64.powf(k as f64 / 8.0));
