@@ -1,1 +1,399 @@
-//! (being written)
+//! The papers' figures, rendered with plotters from the crate's own functions (feature `plot`).
+//!
+//! Every figure is computed from the crate itself: the closed forms of [`crate::analytic`] and
+//! [`crate::warp`] for the analytic plots, and the measurement of built matrices
+//! ([`crate::measure`], [`crate::build`]) for the hemisphere and side-view plots. Nothing is
+//! re-derived here; this module only samples, lays out and draws.
+//!
+//! Text is drawn with DejaVu Sans, compiled into the binary (the `dejavu` crate) and registered
+//! once with plotters' `ab_glyph` backend, so no system font library is needed. Its licence is in
+//! `licenses/DejaVu-LICENSE`.
+//!
+//! | name | figure |
+//! |---|---|
+//! | `lloyd2005-fig4` | Lloyd et al. 2005, Fig 4: the error distribution g(z) for several n (and ξ) |
+//! | `lloyd2005-fig7` | Lloyd et al. 2005, Fig 7: maximum error against the number of face subdivisions |
+//! | `lloyd2006-fig5` | Lloyd et al. 2006, Fig 5: m_x and m_z along the frustum for several n′ |
+//! | `lloyd2006-fig6` | Lloyd et al. 2006, Fig 6: M_x, M_z and S̄ against η |
+//! | `lloyd2006-fig7` | Lloyd et al. 2006, Fig 7: S̄ over the hemisphere of light directions |
+//! | `lloyd2006-fig10` | Lloyd et al. 2006, Fig 10: S̄ of ZP+W against k, and the logarithmic optimum |
+//! | `lloyd2006-fig12` | Lloyd et al. 2006, Fig 12: S̄ against the number of shadow maps |
+//! | `lloyd2006-fig13` | Lloyd et al. 2006, Fig 13: where face partitioning overtakes z-partitioning |
+//! | `barroso-fig7` | Barroso & Celes 2007, Fig 7: the generalised LiSPSM n′ against γ |
+//! | `zhang-fig3` | Zhang et al. 2009, Fig 3: side views of E_p, E_q, E_p×E_q for SSM, LiSPSM, TSM |
+//! | `martin-tan-fig6` | Martin & Tan 2004, Fig 6: area of the focus region in the shadow map |
+//!
+//! ```no_run
+//! use shadow_aliasing::plot::{render_all, Format, FIGURES};
+//! let out = std::env::temp_dir().join("shadow-aliasing-figures");
+//! let files = render_all(&out, Format::Both, &[], |name| eprintln!("{name} done"))?;
+//! assert_eq!(files.len(), 2 * FIGURES.len());
+//! # Ok::<(), shadow_aliasing::plot::PlotError>(())
+//! ```
+
+mod barroso;
+mod chart;
+mod zhang;
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::fmt;
+use std::path::{Path, PathBuf};
+use std::str::FromStr;
+use std::sync::OnceLock;
+
+/// Which files to write for each figure.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Format {
+    /// `NAME.png` only.
+    Png,
+    /// `NAME.svg` only.
+    Svg,
+    /// Both `NAME.png` and `NAME.svg`.
+    #[default]
+    Both,
+}
+
+impl Format {
+    /// The file extensions this format writes, in order.
+    #[must_use]
+    pub fn extensions(self) -> &'static [&'static str] {
+        match self {
+            Format::Png => &["png"],
+            Format::Svg => &["svg"],
+            Format::Both => &["png", "svg"],
+        }
+    }
+}
+
+impl FromStr for Format {
+    type Err = PlotError;
+
+    /// Parses `png`, `svg` or `both` (case-insensitive).
+    fn from_str(s: &str) -> Result<Self, PlotError> {
+        match s.to_ascii_lowercase().as_str() {
+            "png" => Ok(Format::Png),
+            "svg" => Ok(Format::Svg),
+            "both" => Ok(Format::Both),
+            _ => Err(PlotError::UnknownFormat(s.to_string())),
+        }
+    }
+}
+
+impl fmt::Display for Format {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Format::Png => "png",
+            Format::Svg => "svg",
+            Format::Both => "both",
+        })
+    }
+}
+
+/// The names of all figures, in the order [`render_all`] writes them. Each is also the stem of
+/// its files (`NAME.png`, `NAME.svg`).
+pub const FIGURES: &[&str] = &["barroso-fig7", "zhang-fig3"];
+
+/// What went wrong while rendering a figure.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum PlotError {
+    /// The name is not one of [`FIGURES`]. Fix: use one of the names listed in the message.
+    #[error("unknown figure {0:?} (known figures: {known})", known = FIGURES.join(", "))]
+    UnknownFigure(String),
+    /// The format is not `png`, `svg` or `both`.
+    #[error("unknown format {0:?} (expected png, svg or both)")]
+    UnknownFormat(String),
+    /// The output directory could not be created or a file could not be written.
+    /// Fix: choose a writable directory.
+    #[error("cannot write {path}: {source}")]
+    Io {
+        /// The directory or file.
+        path: PathBuf,
+        /// The underlying error.
+        source: std::io::Error,
+    },
+    /// The compiled-in font could not be registered with plotters (a build problem, not an input
+    /// problem).
+    #[error("the compiled-in DejaVu Sans font could not be loaded")]
+    Font,
+    /// Computing the figure's data failed: a closed form or measurement refused its input.
+    #[error("computing the data of {figure} failed: {source}")]
+    Data {
+        /// The figure's name.
+        figure: &'static str,
+        /// The crate's error.
+        source: crate::Error,
+    },
+    /// plotters failed while drawing or encoding the figure.
+    #[error("drawing {figure} failed: {message}")]
+    Drawing {
+        /// The figure's name.
+        figure: &'static str,
+        /// plotters' message.
+        message: String,
+    },
+}
+
+/// An error inside a figure's code, before the figure's name is attached.
+#[derive(Debug)]
+pub(crate) enum Fail {
+    Draw(String),
+    Data(crate::Error),
+}
+
+impl From<crate::Error> for Fail {
+    fn from(e: crate::Error) -> Self {
+        Fail::Data(e)
+    }
+}
+
+impl<E: std::error::Error + Send + Sync> From<DrawingAreaErrorKind<E>> for Fail {
+    fn from(e: DrawingAreaErrorKind<E>) -> Self {
+        Fail::Draw(e.to_string())
+    }
+}
+
+impl Fail {
+    fn named(self, figure: &'static str) -> PlotError {
+        match self {
+            Fail::Draw(message) => PlotError::Drawing { figure, message },
+            Fail::Data(source) => PlotError::Data { figure, source },
+        }
+    }
+}
+
+/// A figure: its data computed once, drawn on any plotters backend.
+pub(crate) trait Figure {
+    /// Pixel size of the PNG (and of the SVG's view box).
+    fn size(&self) -> (u32, u32);
+    /// Draws the whole figure on `root`.
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail>;
+}
+
+/// Registers DejaVu Sans as plotters' "sans-serif" once per process.
+fn ensure_font() -> Result<(), PlotError> {
+    static REGISTERED: OnceLock<bool> = OnceLock::new();
+    let ok = *REGISTERED.get_or_init(|| {
+        plotters::style::register_font(chart::FONT, FontStyle::Normal, dejavu::sans::regular())
+            .is_ok()
+    });
+    if ok {
+        Ok(())
+    } else {
+        Err(PlotError::Font)
+    }
+}
+
+/// Writes `fig` as `out_dir/name.{png,svg}`.
+fn emit<F: Figure>(
+    name: &'static str,
+    fig: &F,
+    out_dir: &Path,
+    format: Format,
+) -> Result<Vec<PathBuf>, PlotError> {
+    let mut written = Vec::new();
+    for ext in format.extensions() {
+        let path = out_dir.join(format!("{name}.{ext}"));
+        if *ext == "png" {
+            let root = BitMapBackend::new(&path, fig.size()).into_drawing_area();
+            fig.draw(&root).map_err(|e| e.named(name))?;
+            root.present().map_err(|e| Fail::from(e).named(name))?;
+        } else {
+            let root = SVGBackend::new(&path, fig.size()).into_drawing_area();
+            fig.draw(&root).map_err(|e| e.named(name))?;
+            root.present().map_err(|e| Fail::from(e).named(name))?;
+        }
+        if !path.is_file() {
+            return Err(PlotError::Io {
+                path,
+                source: std::io::Error::other("the backend wrote no file"),
+            });
+        }
+        written.push(path);
+    }
+    Ok(written)
+}
+
+/// Renders one figure by name into `out_dir` (created if missing) and returns the files written.
+///
+/// # Errors
+/// [`PlotError::UnknownFigure`] for a name not in [`FIGURES`]; [`PlotError::Io`] when the
+/// directory cannot be created; [`PlotError::Data`] or [`PlotError::Drawing`] when computing or
+/// drawing the figure fails.
+pub fn render(name: &str, out_dir: &Path, format: Format) -> Result<Vec<PathBuf>, PlotError> {
+    let Some(&name) = FIGURES.iter().find(|&&n| n == name) else {
+        return Err(PlotError::UnknownFigure(name.to_string()));
+    };
+    ensure_font()?;
+    std::fs::create_dir_all(out_dir).map_err(|source| PlotError::Io {
+        path: out_dir.to_path_buf(),
+        source,
+    })?;
+    dispatch(name, out_dir, format)
+}
+
+/// Computes and writes the figure `name` (one of [`FIGURES`]).
+fn dispatch(name: &'static str, out_dir: &Path, format: Format) -> Result<Vec<PathBuf>, PlotError> {
+    let data = |e: Fail| e.named(name);
+    match name {
+        "barroso-fig7" => emit(name, &barroso::fig7().map_err(data)?, out_dir, format),
+        "zhang-fig3" => emit(name, &zhang::fig3().map_err(data)?, out_dir, format),
+        _ => Err(PlotError::UnknownFigure(name.to_string())),
+    }
+}
+
+/// Renders every figure, or only those named in `only` when it is not empty, into `out_dir`, in
+/// the order of [`FIGURES`]. `progress` is called with each figure's name once its files are
+/// written. Returns all files written.
+///
+/// # Errors
+/// [`PlotError::UnknownFigure`] before anything is drawn when a name in `only` is unknown;
+/// otherwise the first error of [`render`].
+pub fn render_all(
+    out_dir: &Path,
+    format: Format,
+    only: &[&str],
+    mut progress: impl FnMut(&str),
+) -> Result<Vec<PathBuf>, PlotError> {
+    if let Some(bad) = only.iter().find(|n| !FIGURES.contains(n)) {
+        return Err(PlotError::UnknownFigure((*bad).to_string()));
+    }
+    let mut written = Vec::new();
+    for &name in FIGURES {
+        if only.is_empty() || only.contains(&name) {
+            written.extend(render(name, out_dir, format)?);
+            progress(name);
+        }
+    }
+    Ok(written)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::chart::*;
+    use super::*;
+
+    /// A figure of made-up data exercising every helper: log axes, clipping, legend, a grid heat
+    /// map with a log colour bar, and a hemisphere panel.
+    struct Demo;
+
+    impl Figure for Demo {
+        fn size(&self) -> (u32, u32) {
+            (1200, 800)
+        }
+        fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+            let body = frame(
+                root,
+                "Self-test of the drawing helpers",
+                &["Made-up data: y = x² and y = 10/x on log axes, clipped at the border; a log₅ heat map; a hemisphere."],
+            )?;
+            let panels = body.split_evenly((2, 2));
+            let mut c = LineChart::new(
+                "log-log",
+                Axis::log10("x (units)", 0.1, 100.0),
+                Axis::log10("y (units)", 0.01, 1000.0),
+            );
+            let xs = geomspace(0.01, 1000.0, 50);
+            c.series.push(Series::line(
+                "x²",
+                xs.iter().map(|&x| (x, x * x)).collect(),
+                PALETTE[0],
+            ));
+            c.series.push(
+                Series::line(
+                    "10/x",
+                    xs.iter().map(|&x| (x, 10.0 / x)).collect(),
+                    PALETTE[1],
+                )
+                .dashed()
+                .with_markers(),
+            );
+            draw_line_chart(&panels[0], &c)?;
+            let mut l = LineChart::new(
+                "linear",
+                Axis::linear("η", -1.0, 1.0),
+                Axis::linear("value", 0.0, 1.0),
+            );
+            l.series.push(
+                Series::line(
+                    "η²",
+                    linspace(-1.0, 1.0, 41)
+                        .into_iter()
+                        .map(|e| (e, e * e))
+                        .collect(),
+                    PALETTE[2],
+                )
+                .dotted(),
+            );
+            draw_line_chart(&panels[1], &l)?;
+            let scale = ColourScale {
+                axis: Axis::log_base("E", 1.0, 625.0, 5.0),
+                levels: 40,
+            };
+            let (left, bar) = panels[2].split_horizontally(panels[2].dim_in_pixel().0 - 90);
+            let mut chart = build_chart(
+                &left,
+                "side view",
+                &Axis::linear("z", 0.0, 100.0),
+                &Axis::linear("y", -60.0, 60.0),
+                false,
+            )?;
+            let t = 30f64.to_radians().tan();
+            let grid = Grid::sample((0.0, 100.0, 60), (-60.0, 60.0, 40), |z, y| {
+                (z >= 1.0 && y.abs() <= z * t).then(|| 1.0 + z * (1.0 + y.abs()) / 10.0)
+            });
+            draw_grid(&mut chart, &grid, &scale)?;
+            draw_colour_bar(&bar, &scale)?;
+            let n_el = 10;
+            let n_az = 36;
+            let polar = PolarGrid {
+                elev_edges: linspace(0.0, std::f64::consts::FRAC_PI_2, n_el + 1),
+                az_edges: linspace(0.0, std::f64::consts::TAU, n_az + 1),
+                values: (0..n_el * n_az)
+                    .map(|k| Some(1.0 + (k % n_az) as f64 * 10.0))
+                    .collect(),
+            };
+            let hs = ColourScale {
+                axis: Axis::log10("S̄", 1.0, 1000.0),
+                levels: 30,
+            };
+            draw_hemisphere(&panels[3], "hemisphere", &polar, &hs)?;
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn helpers_render_png_and_svg() {
+        ensure_font().unwrap();
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/plot-selftest");
+        std::fs::create_dir_all(&dir).unwrap();
+        let files = emit("demo", &Demo, &dir, Format::Both).unwrap();
+        assert_eq!(files.len(), 2);
+        let png = std::fs::read(&files[0]).unwrap();
+        assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+        assert!(png.len() > 20_000, "PNG of {} bytes", png.len());
+        let svg = std::fs::read_to_string(&files[1]).unwrap();
+        assert!(svg.contains("<svg") && svg.matches("<rect").count() > 50);
+        assert!(svg.contains("Self-test of the drawing helpers"));
+    }
+
+    #[test]
+    fn format_parses_and_unknown_names_are_refused() {
+        assert_eq!("SVG".parse::<Format>().unwrap(), Format::Svg);
+        assert_eq!(Format::Both.extensions(), &["png", "svg"]);
+        assert!(matches!(
+            "jpeg".parse::<Format>(),
+            Err(PlotError::UnknownFormat(_))
+        ));
+        let dir = std::env::temp_dir();
+        assert!(matches!(
+            render("no-such-figure", &dir, Format::Png),
+            Err(PlotError::UnknownFigure(_))
+        ));
+        assert!(matches!(
+            render_all(&dir, Format::Png, &["no-such-figure"], |_| {}),
+            Err(PlotError::UnknownFigure(_))
+        ));
+    }
+}

@@ -1,0 +1,133 @@
+//! Lloyd et al. 2006 Fig 7: the storage factor S̄ over the hemisphere of light directions, from
+//! the crate's measurement of each scheme's own matrices ([`crate::measure::sweep::sweep`]).
+
+use super::chart::{draw_colour_bar, draw_hemisphere, extent, frame, Axis, ColourScale, PolarGrid};
+use super::{Fail, Figure};
+use crate::build::scheme::Partition;
+use crate::build::WarpRule;
+use crate::measure::sweep::{sweep, Sweep, SweepGrid};
+use crate::ViewFrustum;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::f64::consts::{FRAC_PI_2, TAU};
+
+/// Elevation rows of the sweeps (both ends, every 2°).
+const ELEVATIONS: usize = 46;
+/// Azimuth columns of the sweeps (every 2°).
+const AZIMUTHS: usize = 180;
+
+/// The cells of a sweep: each sample owns the band of elevations and azimuths halfway to its
+/// neighbours (the horizon and zenith rows half bands).
+pub(super) fn polar_grid(s: &Sweep, values: Vec<Option<f64>>) -> PolarGrid {
+    let e = s.grid.elevations();
+    let a = s.grid.azimuths();
+    let de = if e > 1 { FRAC_PI_2 / (e - 1) as f64 } else { FRAC_PI_2 };
+    let elev_edges = (0..=e)
+        .map(|i| (i as f64 * de - 0.5 * de).clamp(0.0, FRAC_PI_2))
+        .collect();
+    let da = TAU / a as f64;
+    let az_edges = (0..=a).map(|j| j as f64 * da - 0.5 * da).collect();
+    PolarGrid {
+        elev_edges,
+        az_edges,
+        values,
+    }
+}
+
+/// One panel: its title and its field.
+struct Panel {
+    title: String,
+    grid: PolarGrid,
+    max: f64,
+    min: f64,
+}
+
+/// Fig 7 with four panels and one log10 colour bar.
+pub(super) struct Fig7 {
+    panels: Vec<Panel>,
+    scale: ColourScale,
+    caption: Vec<String>,
+}
+
+/// The frustum of Fig 7 (the paper does not state it; these are its Fig 12's parameters).
+pub(super) fn fig7_view() -> Result<ViewFrustum, crate::Error> {
+    ViewFrustum::new(1.0, 1000.0, 30f64.to_radians())
+}
+
+pub(super) fn fig7() -> Result<Fig7, Fail> {
+    let view = fig7_view()?;
+    let grid = SweepGrid::new(ELEVATIONS, AZIMUTHS)?;
+    let schemes = [
+        ("No warping (n′ = ∞)", WarpRule::Uniform, Partition::Single),
+        ("LiSPSM warping, n′ = (n + √(fn))/sin γ", WarpRule::LispsmSin, Partition::Single),
+        ("Face partitioning + warping", WarpRule::LispsmSin, Partition::Faces),
+        ("Minimax n′ (this crate)", WarpRule::Minimax, Partition::Single),
+    ];
+    let mut panels = Vec::new();
+    for (title, rule, partition) in schemes {
+        let s = sweep(&view, rule, partition, 1, grid)?;
+        let values: Vec<Option<f64>> = s
+            .storage_factor
+            .iter()
+            .map(|&v| (v.is_finite() && v > 0.0).then_some(v))
+            .collect();
+        let (min, max) = extent(values.iter().flatten().copied()).ok_or_else(|| {
+            Fail::Data(crate::Error::Degenerate(format!(
+                "the sweep of {title} has no finite storage factor"
+            )))
+        })?;
+        panels.push(Panel {
+            title: title.to_string(),
+            grid: polar_grid(&s, values),
+            max,
+            min,
+        });
+    }
+    let lo = panels.iter().map(|p| p.min).fold(f64::INFINITY, f64::min);
+    let hi = panels.iter().map(|p| p.max).fold(0.0, f64::max);
+    let lo = 10f64.powf(lo.log10().floor());
+    let hi = 10f64.powf(hi.log10().ceil());
+    let summary: Vec<String> = panels
+        .iter()
+        .map(|p| format!("{}: {:.3e} to {:.3e}", p.title, p.min, p.max))
+        .collect();
+    let caption = vec![
+        format!(
+            "Lloyd et al. 2006, Fig. 7, measured: S̄ = M_x M_z (summed over partitions) of each scheme's own matrices at every light direction, n = 1, f = 1000, θ = 30°, {}° grid.",
+            90 / (ELEVATIONS - 1)
+        ),
+        "Hemisphere seen from above: overhead at the centre, light from behind the viewer on the left, from in front on the right; rings at 0°, 30°, 60° elevation.".to_string(),
+        format!("Range of S̄ — {}.", summary.join("; ")),
+    ];
+    Ok(Fig7 {
+        panels,
+        scale: ColourScale {
+            axis: Axis::log10("storage factor S̄ (log₁₀ scale)", lo, hi),
+            levels: 36,
+        },
+        caption,
+    })
+}
+
+impl Figure for Fig7 {
+    fn size(&self) -> (u32, u32) {
+        (1500, 560)
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let caption: Vec<&str> = self.caption.iter().map(String::as_str).collect();
+        let body = frame(
+            root,
+            "Storage factor over the hemisphere of light directions",
+            &caption,
+        )?;
+        let (w, _) = body.dim_in_pixel();
+        let (maps, bar) = body.split_horizontally(w - 110);
+        let cells = maps.split_evenly((1, self.panels.len()));
+        for (cell, p) in cells.iter().zip(&self.panels) {
+            draw_hemisphere(cell, &p.title, &p.grid, &self.scale)?;
+        }
+        draw_colour_bar(&bar, &self.scale)?;
+        Ok(())
+    }
+}

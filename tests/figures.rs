@@ -1,0 +1,549 @@
+//! Renders every figure into a temporary directory under target/ and checks that each file is a
+//! valid, non-trivial image: PNGs are decoded here (chunk CRCs, zlib stream, Adler-32, scanline
+//! filters) and must have the promised size and many distinct colours, neither blank nor flooded;
+//! SVGs must be well-formed enough to parse as XML elements, hold many drawing elements, and carry
+//! the figure's title and the paper's figure number in the caption.
+#![cfg(feature = "plot")]
+
+use shadow_aliasing::plot::{render, render_all, Format, PlotError, FIGURES};
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
+
+/// The paper and figure number each figure's caption must name.
+fn citation(name: &str) -> &'static str {
+    match name {
+        "lloyd2005-fig4" => "Lloyd et al. 2005, Fig. 4",
+        "lloyd2005-fig7" => "Lloyd et al. 2005, Fig. 7",
+        "lloyd2006-fig5" => "Lloyd et al. 2006, Fig. 5",
+        "lloyd2006-fig6" => "Lloyd et al. 2006, Fig. 6",
+        "lloyd2006-fig7" => "Lloyd et al. 2006, Fig. 7",
+        "lloyd2006-fig10" => "Lloyd et al. 2006, Fig. 10",
+        "lloyd2006-fig12" => "Lloyd et al. 2006, Fig. 12",
+        "lloyd2006-fig13" => "Lloyd et al. 2006, Fig. 13",
+        "barroso-fig7" => "Barroso &amp; Celes 2007, Fig. 7",
+        "zhang-fig3" => "Zhang et al. 2009, Fig. 3",
+        "martin-tan-fig6" => "Martin &amp; Tan 2004, Fig. 6",
+        other => panic!("no citation known for {other}"),
+    }
+}
+
+fn out_dir(sub: &str) -> PathBuf {
+    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(sub);
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+#[test]
+fn every_figure_renders_to_valid_png_and_svg() {
+    let dir = out_dir("figures-all");
+    let mut seen = Vec::new();
+    let files = render_all(&dir, Format::Both, &[], |n| seen.push(n.to_string())).unwrap();
+    assert_eq!(seen, FIGURES);
+    assert_eq!(files.len(), 2 * FIGURES.len());
+    for name in FIGURES {
+        let png = dir.join(format!("{name}.png"));
+        let svg = dir.join(format!("{name}.svg"));
+        assert!(files.contains(&png) && files.contains(&svg), "{name}");
+        check_png(&png);
+        check_svg(&svg, name);
+    }
+}
+
+#[test]
+fn only_and_format_select_the_files() {
+    let dir = out_dir("figures-only");
+    let name = FIGURES[0];
+    let files = render_all(&dir, Format::Svg, &[name], |_| {}).unwrap();
+    assert_eq!(files, vec![dir.join(format!("{name}.svg"))]);
+    let files = render(name, &dir, Format::Png).unwrap();
+    assert_eq!(files, vec![dir.join(format!("{name}.png"))]);
+    check_png(&files[0]);
+    let n = std::fs::read_dir(&dir).unwrap().count();
+    assert_eq!(n, 2, "only the two requested files are written");
+    let err = render_all(&dir, Format::Png, &[name, "lloyd2006-fig99"], |_| {}).unwrap_err();
+    assert!(matches!(err, PlotError::UnknownFigure(ref n) if n == "lloyd2006-fig99"));
+    assert!(
+        err.to_string().contains(name),
+        "the message lists the known names: {err}"
+    );
+}
+
+#[test]
+fn the_figure_list_is_the_issue_list() {
+    let expected = [
+        "lloyd2005-fig4",
+        "lloyd2005-fig7",
+        "lloyd2006-fig5",
+        "lloyd2006-fig6",
+        "lloyd2006-fig7",
+        "lloyd2006-fig10",
+        "lloyd2006-fig12",
+        "lloyd2006-fig13",
+        "barroso-fig7",
+        "zhang-fig3",
+        "martin-tan-fig6",
+    ];
+    for name in FIGURES {
+        assert!(expected.contains(name), "{name}");
+    }
+    let unique: HashSet<_> = FIGURES.iter().collect();
+    assert_eq!(unique.len(), FIGURES.len());
+}
+
+fn check_svg(path: &Path, name: &str) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let start = text
+        .find("<svg")
+        .unwrap_or_else(|| panic!("{name}: no <svg"));
+    assert!(text.trim_end().ends_with("</svg>"), "{name}: not closed");
+    // Walk the tags: every element is opened and closed in order.
+    let mut stack: Vec<&str> = Vec::new();
+    let mut elements = 0usize;
+    let mut rest = &text[start..];
+    while let Some(lt) = rest.find('<') {
+        rest = &rest[lt + 1..];
+        let gt = rest
+            .find('>')
+            .unwrap_or_else(|| panic!("{name}: unterminated tag"));
+        let tag = &rest[..gt];
+        rest = &rest[gt + 1..];
+        if let Some(closing) = tag.strip_prefix('/') {
+            assert_eq!(
+                stack.pop(),
+                Some(closing.trim()),
+                "{name}: mismatched </{closing}>"
+            );
+        } else if !tag.starts_with('?') && !tag.starts_with('!') {
+            elements += 1;
+            let tag_name = tag.split_whitespace().next().unwrap_or("");
+            assert!(
+                tag_name.chars().all(|c| c.is_ascii_alphanumeric()),
+                "{name}: bad tag {tag_name}"
+            );
+            if !tag.ends_with('/') {
+                stack.push(tag_name);
+            }
+        }
+    }
+    assert!(stack.is_empty(), "{name}: unclosed {stack:?}");
+    assert!(elements > 150, "{name}: only {elements} SVG elements");
+    assert!(
+        text.contains(citation(name)),
+        "{name}: the caption does not cite {}",
+        citation(name)
+    );
+    assert!(
+        text.matches("<text").count() >= 10,
+        "{name}: too few labels"
+    );
+}
+
+fn check_png(path: &Path) {
+    let bytes = std::fs::read(path).unwrap();
+    let img = decode_png(&bytes).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert!(
+        img.width >= 600 && img.height >= 400,
+        "{}x{}",
+        img.width,
+        img.height
+    );
+    let px = img.width * img.height;
+    let mut colours = HashSet::new();
+    let mut white = 0usize;
+    for p in img.rgb.chunks_exact(3) {
+        colours.insert((p[0], p[1], p[2]));
+        if p == [255, 255, 255] {
+            white += 1;
+        }
+    }
+    assert!(
+        colours.len() >= 16,
+        "{}: {} colours",
+        path.display(),
+        colours.len()
+    );
+    let ink = 1.0 - white as f64 / px as f64;
+    assert!(
+        (0.02..0.98).contains(&ink),
+        "{}: {:.1}% of the pixels are not white",
+        path.display(),
+        100.0 * ink
+    );
+}
+
+// ---------------------------------------------------------------------------------------------
+// A small PNG decoder (8-bit RGB / RGBA, non-interlaced), enough to check what plotters writes
+// without adding a dependency.
+
+struct Image {
+    width: usize,
+    height: usize,
+    rgb: Vec<u8>,
+}
+
+fn be32(b: &[u8]) -> u32 {
+    u32::from_be_bytes([b[0], b[1], b[2], b[3]])
+}
+
+fn crc32(data: &[u8]) -> u32 {
+    let mut c = 0xFFFF_FFFFu32;
+    for &b in data {
+        c ^= u32::from(b);
+        for _ in 0..8 {
+            c = if c & 1 != 0 {
+                0xEDB8_8320 ^ (c >> 1)
+            } else {
+                c >> 1
+            };
+        }
+    }
+    !c
+}
+
+fn decode_png(bytes: &[u8]) -> Result<Image, String> {
+    if bytes.len() < 8 || &bytes[..8] != b"\x89PNG\r\n\x1a\n" {
+        return Err("no PNG signature".into());
+    }
+    let mut pos = 8;
+    let (mut width, mut height, mut channels) = (0usize, 0usize, 0usize);
+    let mut idat = Vec::new();
+    let mut ended = false;
+    while pos + 12 <= bytes.len() {
+        let len = be32(&bytes[pos..]) as usize;
+        let kind = &bytes[pos + 4..pos + 8];
+        let data = bytes.get(pos + 8..pos + 8 + len).ok_or("truncated chunk")?;
+        let crc = be32(&bytes[pos + 8 + len..]);
+        if crc32(&bytes[pos + 4..pos + 8 + len]) != crc {
+            return Err(format!("bad CRC in {}", String::from_utf8_lossy(kind)));
+        }
+        match kind {
+            b"IHDR" => {
+                width = be32(data) as usize;
+                height = be32(&data[4..]) as usize;
+                if data[8] != 8 || data[12] != 0 {
+                    return Err("only 8-bit non-interlaced images are decoded".into());
+                }
+                channels = match data[9] {
+                    2 => 3,
+                    6 => 4,
+                    t => return Err(format!("colour type {t}")),
+                };
+            }
+            b"IDAT" => idat.extend_from_slice(data),
+            b"IEND" => {
+                ended = true;
+                break;
+            }
+            _ => {}
+        }
+        pos += 12 + len;
+    }
+    if !ended || width == 0 {
+        return Err("missing IHDR or IEND".into());
+    }
+    let raw = zlib_decompress(&idat)?;
+    let stride = width * channels;
+    if raw.len() != height * (stride + 1) {
+        return Err(format!(
+            "decoded {} bytes, expected {}",
+            raw.len(),
+            height * (stride + 1)
+        ));
+    }
+    let mut out = vec![0u8; height * stride];
+    for y in 0..height {
+        let filter = raw[y * (stride + 1)];
+        let line = &raw[y * (stride + 1) + 1..(y + 1) * (stride + 1)];
+        for x in 0..stride {
+            let a = if x >= channels {
+                out[y * stride + x - channels]
+            } else {
+                0
+            };
+            let b = if y > 0 { out[(y - 1) * stride + x] } else { 0 };
+            let c = if y > 0 && x >= channels {
+                out[(y - 1) * stride + x - channels]
+            } else {
+                0
+            };
+            let pred = match filter {
+                0 => 0,
+                1 => a,
+                2 => b,
+                3 => ((u16::from(a) + u16::from(b)) / 2) as u8,
+                4 => {
+                    let p = i16::from(a) + i16::from(b) - i16::from(c);
+                    let (pa, pb, pc) = (
+                        (p - i16::from(a)).abs(),
+                        (p - i16::from(b)).abs(),
+                        (p - i16::from(c)).abs(),
+                    );
+                    if pa <= pb && pa <= pc {
+                        a
+                    } else if pb <= pc {
+                        b
+                    } else {
+                        c
+                    }
+                }
+                f => return Err(format!("filter {f}")),
+            };
+            out[y * stride + x] = line[x].wrapping_add(pred);
+        }
+    }
+    let rgb = if channels == 3 {
+        out
+    } else {
+        out.chunks_exact(4)
+            .flat_map(|p| [p[0], p[1], p[2]])
+            .collect()
+    };
+    Ok(Image { width, height, rgb })
+}
+
+struct Bits<'a> {
+    data: &'a [u8],
+    pos: usize,
+    bit: u32,
+}
+
+impl Bits<'_> {
+    fn bit(&mut self) -> Result<u32, String> {
+        let byte = *self
+            .data
+            .get(self.pos)
+            .ok_or("deflate stream ended early")?;
+        let v = (u32::from(byte) >> self.bit) & 1;
+        self.bit += 1;
+        if self.bit == 8 {
+            self.bit = 0;
+            self.pos += 1;
+        }
+        Ok(v)
+    }
+    fn bits(&mut self, n: u32) -> Result<u32, String> {
+        let mut v = 0;
+        for i in 0..n {
+            v |= self.bit()? << i;
+        }
+        Ok(v)
+    }
+    fn align(&mut self) {
+        if self.bit != 0 {
+            self.bit = 0;
+            self.pos += 1;
+        }
+    }
+}
+
+/// A canonical Huffman code: symbols by code length.
+struct Huffman {
+    counts: [u16; 16],
+    symbols: Vec<u16>,
+}
+
+impl Huffman {
+    fn new(lengths: &[u8]) -> Self {
+        let mut counts = [0u16; 16];
+        for &l in lengths {
+            counts[l as usize] += 1;
+        }
+        counts[0] = 0;
+        let mut offs = [0u16; 16];
+        for i in 1..16 {
+            offs[i] = offs[i - 1] + counts[i - 1];
+        }
+        let mut symbols = vec![0u16; lengths.len()];
+        for (s, &l) in lengths.iter().enumerate() {
+            if l != 0 {
+                symbols[offs[l as usize] as usize] = s as u16;
+                offs[l as usize] += 1;
+            }
+        }
+        Self { counts, symbols }
+    }
+    fn decode(&self, b: &mut Bits<'_>) -> Result<u16, String> {
+        let (mut code, mut first, mut index) = (0i32, 0i32, 0i32);
+        for len in 1..16 {
+            code |= b.bit()? as i32;
+            let count = i32::from(self.counts[len]);
+            if code - count < first {
+                return Ok(self.symbols[(index + code - first) as usize]);
+            }
+            index += count;
+            first += count;
+            first <<= 1;
+            code <<= 1;
+        }
+        Err("bad Huffman code".into())
+    }
+}
+
+const LEN_BASE: [u16; 29] = [
+    3, 4, 5, 6, 7, 8, 9, 10, 11, 13, 15, 17, 19, 23, 27, 31, 35, 43, 51, 59, 67, 83, 99, 115, 131,
+    163, 195, 227, 258,
+];
+const LEN_EXTRA: [u8; 29] = [
+    0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0,
+];
+const DIST_BASE: [u16; 30] = [
+    1, 2, 3, 4, 5, 7, 9, 13, 17, 25, 33, 49, 65, 97, 129, 193, 257, 385, 513, 769, 1025, 1537,
+    2049, 3073, 4097, 6145, 8193, 12289, 16385, 24577,
+];
+const DIST_EXTRA: [u8; 30] = [
+    0, 0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13,
+    13,
+];
+
+fn zlib_decompress(data: &[u8]) -> Result<Vec<u8>, String> {
+    if data.len() < 6
+        || data[0] & 0x0F != 8
+        || (u16::from(data[0]) << 8 | u16::from(data[1])) % 31 != 0
+    {
+        return Err("bad zlib header".into());
+    }
+    let mut b = Bits {
+        data: &data[2..],
+        pos: 0,
+        bit: 0,
+    };
+    let mut out: Vec<u8> = Vec::new();
+    loop {
+        let last = b.bit()?;
+        match b.bits(2)? {
+            0 => {
+                b.align();
+                let d = &b.data[b.pos..];
+                let len = u16::from_le_bytes([d[0], d[1]]) as usize;
+                let nlen = u16::from_le_bytes([d[2], d[3]]) as usize;
+                if len != !nlen & 0xFFFF {
+                    return Err("bad stored block".into());
+                }
+                out.extend_from_slice(d.get(4..4 + len).ok_or("truncated stored block")?);
+                b.pos += 4 + len;
+            }
+            1 => {
+                let mut l = [0u8; 288];
+                l[..144].fill(8);
+                l[144..256].fill(9);
+                l[256..280].fill(7);
+                l[280..].fill(8);
+                inflate_block(
+                    &mut b,
+                    &mut out,
+                    &Huffman::new(&l),
+                    &Huffman::new(&[5u8; 30]),
+                )?;
+            }
+            2 => {
+                let hlit = b.bits(5)? as usize + 257;
+                let hdist = b.bits(5)? as usize + 1;
+                let hclen = b.bits(4)? as usize + 4;
+                const ORDER: [usize; 19] = [
+                    16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15,
+                ];
+                let mut cl = [0u8; 19];
+                for &o in ORDER.iter().take(hclen) {
+                    cl[o] = b.bits(3)? as u8;
+                }
+                let clh = Huffman::new(&cl);
+                let mut lengths = Vec::with_capacity(hlit + hdist);
+                while lengths.len() < hlit + hdist {
+                    match clh.decode(&mut b)? {
+                        s @ 0..=15 => lengths.push(s as u8),
+                        16 => {
+                            let prev = *lengths.last().ok_or("repeat with no previous length")?;
+                            for _ in 0..3 + b.bits(2)? {
+                                lengths.push(prev);
+                            }
+                        }
+                        17 => lengths.extend(std::iter::repeat_n(0, 3 + b.bits(3)? as usize)),
+                        _ => lengths.extend(std::iter::repeat_n(0, 11 + b.bits(7)? as usize)),
+                    }
+                }
+                let lit = Huffman::new(&lengths[..hlit]);
+                let dist = Huffman::new(&lengths[hlit..]);
+                inflate_block(&mut b, &mut out, &lit, &dist)?;
+            }
+            _ => return Err("reserved block type".into()),
+        }
+        if last == 1 {
+            break;
+        }
+    }
+    b.align();
+    let tail = b.data.get(b.pos..b.pos + 4).ok_or("missing Adler-32")?;
+    let (mut s1, mut s2) = (1u32, 0u32);
+    for &x in &out {
+        s1 = (s1 + u32::from(x)) % 65521;
+        s2 = (s2 + s1) % 65521;
+    }
+    if be32(tail) != (s2 << 16 | s1) {
+        return Err("Adler-32 mismatch".into());
+    }
+    Ok(out)
+}
+
+fn inflate_block(
+    b: &mut Bits<'_>,
+    out: &mut Vec<u8>,
+    lit: &Huffman,
+    dist: &Huffman,
+) -> Result<(), String> {
+    loop {
+        let sym = lit.decode(b)? as usize;
+        if sym < 256 {
+            out.push(sym as u8);
+        } else if sym == 256 {
+            return Ok(());
+        } else {
+            let i = sym - 257;
+            let len = *LEN_BASE.get(i).ok_or("bad length symbol")? as usize
+                + b.bits(u32::from(LEN_EXTRA[i]))? as usize;
+            let d = dist.decode(b)? as usize;
+            let back = *DIST_BASE.get(d).ok_or("bad distance symbol")? as usize
+                + b.bits(u32::from(DIST_EXTRA[d]))? as usize;
+            if back > out.len() {
+                return Err("distance before the start".into());
+            }
+            let start = out.len() - back;
+            for k in 0..len {
+                out.push(out[start + k]);
+            }
+        }
+    }
+}
+
+#[test]
+fn the_png_decoder_reads_a_hand_made_image() {
+    // A 2×1 RGB image, one stored deflate block: filter 0, red pixel, blue pixel.
+    let raw = [0u8, 255, 0, 0, 0, 0, 255];
+    let mut z = vec![0x78, 0x01, 0x01, 7, 0, !7u8, 0xFF];
+    z.extend_from_slice(&raw);
+    let (mut s1, mut s2) = (1u32, 0u32);
+    for &x in &raw {
+        s1 = (s1 + u32::from(x)) % 65521;
+        s2 = (s2 + s1) % 65521;
+    }
+    z.extend_from_slice(&(s2 << 16 | s1).to_be_bytes());
+    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+    let mut chunk = |kind: &[u8], data: &[u8]| {
+        png.extend_from_slice(&(data.len() as u32).to_be_bytes());
+        let mut body = kind.to_vec();
+        body.extend_from_slice(data);
+        png.extend_from_slice(&body);
+        png.extend_from_slice(&crc32(&body).to_be_bytes());
+    };
+    chunk(b"IHDR", &[0, 0, 0, 2, 0, 0, 0, 1, 8, 2, 0, 0, 0]);
+    chunk(b"IDAT", &z);
+    chunk(b"IEND", &[]);
+    let img = decode_png(&png).unwrap();
+    assert_eq!((img.width, img.height), (2, 1));
+    assert_eq!(img.rgb, vec![255, 0, 0, 0, 0, 255]);
+    // A flipped bit is caught by the CRC.
+    let mut bad = png.clone();
+    bad[40] ^= 1;
+    assert!(decode_png(&bad).is_err());
+    // The CRC of "IEND" is the well-known AE 42 60 82.
+    assert_eq!(crc32(b"IEND"), 0xAE42_6082);
+}
