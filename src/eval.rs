@@ -262,7 +262,6 @@ pub struct Args {
     values: Vec<(&'static str, Parsed)>,
 }
 
-#[allow(dead_code)] // removed once every quantity is wired
 impl Args {
     fn get(&self, name: &'static str) -> Option<&Parsed> {
         self.values.iter().find(|(n, _)| *n == name).map(|(_, p)| p)
@@ -639,7 +638,7 @@ pub const QUANTITIES: &[Quantity] = &[
     },
     Quantity {
         name: "distribution_g",
-        args: &[req("alpha", Num), req("n_warp", Num), Z],
+        args: &[req("alpha", Num), req("n_warp", ArgKind::NPrime), Z],
         value: ValueKind::Number,
         source: "Lloyd 2005 Eq 3",
         compute: wire::distribution_g,
@@ -792,54 +791,106 @@ pub fn quantity(name: &str) -> Option<&'static Quantity> {
 /// The wiring of each quantity to the crate's closed forms.
 mod wire {
     use super::{Args, Output};
-    use crate::analytic::{global, tilted, tsm};
+    use crate::analytic::{global, overhead, subdivided, tilted, tsm};
     use crate::error::{Error, Result};
-    use crate::frustum::{LightAngle, ViewFrustum};
+    use crate::frustum::LightAngle;
+    use crate::warp;
 
-    fn pending(what: &str) -> Result<Output> {
-        Err(Error::NoClosedForm(format!(
-            "{what} is not available in this build yet"
-        )))
+    /// The same error with the argument `from` called `to` (the contract's name for it).
+    fn rename(e: Error, from: &str, to: &'static str) -> Error {
+        match e {
+            Error::InvalidArgument { name, reason } if name == from => {
+                Error::InvalidArgument { name: to, reason }
+            }
+            other => other,
+        }
     }
 
-    pub(super) fn mx(_a: &Args) -> Result<Output> {
-        pending("mx")
+    pub(super) fn mx(a: &Args) -> Result<Output> {
+        let v = overhead::mx(
+            a.num("near")?,
+            a.num("far")?,
+            a.n_prime("n_prime")?,
+            a.num("z")?,
+            a.res_s()?,
+        )?;
+        Ok(Output::Number(v))
     }
-    pub(super) fn mz(_a: &Args) -> Result<Output> {
-        pending("mz")
+    pub(super) fn mz(a: &Args) -> Result<Output> {
+        let v = overhead::mz(&a.view()?, a.n_prime("n_prime")?, a.num("z")?, a.res_t()?)?;
+        Ok(Output::Number(v))
     }
-    pub(super) fn max_mx(_a: &Args) -> Result<Output> {
-        pending("max_mx")
+    pub(super) fn max_mx(a: &Args) -> Result<Output> {
+        let v = overhead::max_mx(
+            a.num("near")?,
+            a.num("far")?,
+            a.n_prime("n_prime")?,
+            a.res_s()?,
+        )?;
+        Ok(Output::Number(v))
     }
-    pub(super) fn max_mz(_a: &Args) -> Result<Output> {
-        pending("max_mz")
+    pub(super) fn max_mz(a: &Args) -> Result<Output> {
+        let v = overhead::max_mz(&a.view()?, a.n_prime("n_prime")?, a.res_t()?)?;
+        Ok(Output::Number(v))
     }
-    pub(super) fn storage_factor(_a: &Args) -> Result<Output> {
-        pending("storage_factor")
+    pub(super) fn storage_factor(a: &Args) -> Result<Output> {
+        let v = overhead::storage_factor(&a.view()?, a.n_prime("n_prime")?)?;
+        Ok(Output::Number(v))
     }
-    pub(super) fn critical_resolution(_a: &Args) -> Result<Output> {
-        pending("critical_resolution")
+    pub(super) fn critical_resolution(a: &Args) -> Result<Output> {
+        let view = a.view()?;
+        let n_prime = a.n_prime("n_prime")?;
+        // Eq 13, 14 use only the ratio res*_s / res*_t = M_x / M_z, which does not depend on
+        // the image resolution: res_image is validated but does not change the answer.
+        crate::error::positive("res_image", a.num("res_image")?)?;
+        let r = overhead::budget_resolution(&view, n_prime, a.num("budget")?)?;
+        Ok(Output::Numbers(vec![r.res_s, r.res_t]))
     }
     pub(super) fn n_prime_lispsm(a: &Args) -> Result<Output> {
-        // ViewFrustum only needs a valid half_fov to validate near and far; n + √(f n) does not
-        // depend on it.
-        let v = ViewFrustum::new(a.num("near")?, a.num("far")?, 0.5)?;
-        Ok(Output::Number(v.n_prime_lispsm()))
+        Ok(Output::Number(warp::n_prime_lispsm(
+            a.num("near")?,
+            a.num("far")?,
+        )?))
     }
-    pub(super) fn n_prime_from_eta(_a: &Args) -> Result<Output> {
-        pending("n_prime_from_eta")
+    pub(super) fn n_prime_from_eta(a: &Args) -> Result<Output> {
+        Ok(Output::NPrime(warp::n_prime_from_eta(
+            a.num("near")?,
+            a.num("far")?,
+            a.num("eta")?,
+        )?))
     }
-    pub(super) fn eta_from_n_prime(_a: &Args) -> Result<Output> {
-        pending("eta_from_n_prime")
+    pub(super) fn eta_from_n_prime(a: &Args) -> Result<Output> {
+        Ok(Output::Number(warp::eta_from_n_prime(
+            a.num("near")?,
+            a.num("far")?,
+            a.n_prime("n_prime")?,
+        )?))
     }
-    pub(super) fn distribution_g(_a: &Args) -> Result<Output> {
-        pending("distribution_g")
+    pub(super) fn distribution_g(a: &Args) -> Result<Output> {
+        Ok(Output::Number(subdivided::distribution_g(
+            a.num("alpha")?,
+            a.n_prime("n_warp")?,
+            a.num("z")?,
+        )?))
     }
-    pub(super) fn subdivided_max_error(_a: &Args) -> Result<Output> {
-        pending("subdivided_max_error")
+    pub(super) fn subdivided_max_error(a: &Args) -> Result<Output> {
+        // Lloyd 2005's ξ is the contract's eta; its r_s the contract's res_s.
+        let v = subdivided::subdivided_max_error(
+            a.num("alpha")?,
+            a.count("k")?,
+            a.num("eta")?,
+            a.num("half_fov")?,
+            a.num("res_image")?,
+            a.num("res_s")?,
+        )
+        .map_err(|e| rename(rename(e, "xi", "eta"), "res_shadow", "res_s"))?;
+        Ok(Output::Number(v))
     }
-    pub(super) fn allocate_texels(_a: &Args) -> Result<Output> {
-        pending("allocate_texels")
+    pub(super) fn allocate_texels(a: &Args) -> Result<Output> {
+        let errors = a.numbers("errors")?;
+        let mut out = vec![0.0; errors.len()];
+        subdivided::allocate_texels(errors, a.num("total")?, &mut out)?;
+        Ok(Output::Numbers(out))
     }
     pub(super) fn z_partition(a: &Args) -> Result<Output> {
         use crate::analytic::partition::{z_splits, SplitScheme};
@@ -885,8 +936,20 @@ mod wire {
         let splits = z_splits(a.num("near")?, a.num("far")?, a.count("k")?, scheme)?;
         Ok(Output::Numbers(splits.planes().to_vec()))
     }
-    pub(super) fn scheme_storage_factor(_a: &Args) -> Result<Output> {
-        pending("scheme_storage_factor")
+    pub(super) fn scheme_storage_factor(a: &Args) -> Result<Output> {
+        use crate::analytic::partition::{self, Scheme, SchemeLight};
+        let scheme = match a.choice("scheme")? {
+            "zp" => Scheme::Zp,
+            "zp_w" => Scheme::ZpW,
+            "fp_zp_w" => Scheme::FpZpW,
+            _ => Scheme::Optimal,
+        };
+        let light = match a.choice("light")? {
+            "overhead" => SchemeLight::Overhead,
+            _ => SchemeLight::Behind,
+        };
+        let v = partition::scheme_storage_factor(scheme, light, &a.view()?, a.count("k")?)?;
+        Ok(Output::Number(v))
     }
     pub(super) fn tilted_mz(a: &Args) -> Result<Output> {
         let v = tilted::tilted_mz(

@@ -61,6 +61,20 @@ fn one_object_in_one_object_out() {
 }
 
 #[test]
+fn infinity_is_the_string_inf_in_and_out() {
+    let (code, v, _) = eval_stdin(
+        r#"[{"quantity": "n_prime_from_eta", "near": 1, "far": 100, "eta": -1},
+            {"quantity": "eta_from_n_prime", "near": 1, "far": 100, "n_prime": "inf"},
+            {"quantity": "generalized_n_prime", "near": 1, "far": 100, "half_fov": 0.5, "light_angle": 0, "falloff": "barroso"}]"#,
+    );
+    assert_eq!(code, 0);
+    assert_eq!(v[0]["value"], "inf");
+    assert_eq!(v[1]["value"], -1.0);
+    // Light parallel to the view: every warp converges to the standard map (Barroso Eq 14).
+    assert_eq!(v[2]["value"], "inf");
+}
+
+#[test]
 fn array_in_array_out_same_order_and_exit_1_on_any_error() {
     let input = r#"[
         {"quantity": "n_prime_lispsm", "near": 4, "far": 9},
@@ -110,6 +124,26 @@ fn file_argument_and_dash_for_stdin() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+#[test]
+fn example_request_file_is_answered_with_values_only() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/eval-request.json");
+    let (code, out, err) = run(&["eval", path], "");
+    let v: Value = serde_json::from_str(&out).expect("JSON");
+    let answers = v.as_array().expect("an array");
+    for a in answers {
+        assert!(a.get("value").is_some(), "{a}");
+    }
+    assert_eq!(code, 0, "{err}");
+    // Every quantity of the contract appears in the example.
+    for q in QUANTITIES {
+        assert!(
+            answers.iter().any(|a| a["quantity"] == q.name),
+            "{} missing from examples/eval-request.json",
+            q.name
+        );
+    }
+}
+
 /// Barroso & Celes' Eq 10–12 for φ_y ≤ γ ≤ π/2, written out from the paper (unit resolutions).
 fn barroso_mz(n: f64, f: f64, phi: f64, np: f64, g: f64, z: f64) -> f64 {
     let (a, b) = (n * phi.tan(), f * phi.tan());
@@ -122,6 +156,7 @@ fn barroso_mz(n: f64, f: f64, phi: f64, np: f64, g: f64, z: f64) -> f64 {
 /// Hand-calculated values of each wired quantity (relative 1e-12).
 #[test]
 fn values_match_hand_calculations() {
+    #[allow(clippy::approx_constant)] // the requests' 0.5236, not π/6
     let phi = 0.5236f64;
     let t = phi.tan();
     let (a, b) = (t, 100.0 * t);
@@ -182,8 +217,64 @@ fn values_match_hand_calculations() {
             vec![99.0 * 400.0 / (110.0 * 11.0 * t * 10.0)],
         ),
     ];
+    // Lloyd 2006 Eq 7, 8, 12 and Lloyd 2005 Eq 3, 5–7 at n = 1, f = 100, θ = 0.5236, n′ = 11.
+    let base = 99.0 / (2.0 * t); // (f/n − 1)/(2 tan θ)
+    let sqrt3 = 100f64.powf(1.0 / 3.0);
+    let lloyd: Vec<(String, Vec<f64>)> = vec![
+        // m_x = f (n′ + z − n)/(z (n′ + f − n)) = 100·20/(10·110).
+        (r#"{"quantity": "mx", "near": 1, "far": 100, "n_prime": 11, "z": 10}"#.into(), vec![2000.0 / 1100.0]),
+        // times res_i/res_s = 1/2.
+        (r#"{"quantity": "mx", "near": 1, "far": 100, "n_prime": 11, "z": 10, "res_image": 1024, "res_s": 2048}"#.into(), vec![1000.0 / 1100.0]),
+        // m_z = (f − n)/(2 tan θ) (n′ + z − n)²/(z n′ (n′ + f − n)).
+        (r#"{"quantity": "mz", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 11, "z": 10}"#.into(), vec![base * 400.0 / (10.0 * 11.0 * 110.0)]),
+        // n′ = ∞: (f − n)/(2 tan θ)/z, times res_i/res_t = 1/2.
+        (r#"{"quantity": "mz", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": "inf", "z": 10, "res_image": 1024, "res_t": 2048}"#.into(), vec![0.5 * base / 10.0]),
+        // M_x = m_x(n) = f n′/(n (n′ + f − n)) = 1100/110.
+        (r#"{"quantity": "max_mx", "near": 1, "far": 100, "n_prime": 11}"#.into(), vec![10.0]),
+        // M_x unwarped: f/n.
+        (r#"{"quantity": "max_mx", "near": 1, "far": 100, "n_prime": "inf"}"#.into(), vec![100.0]),
+        // At n′_LSPSM M_z = m_z(f) = m_z(n) = base (n′ + f − n)/(f n′) = base·110/1100.
+        (r#"{"quantity": "max_mz", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 11}"#.into(), vec![base * 0.1]),
+        // S̄ = base for n′ ≤ n′_LSPSM (PSM n′ = n too), base·f/n unwarped,
+        // base·n′² f/(n (n′ + f − n)²) above n′_LSPSM.
+        (r#"{"quantity": "storage_factor", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 1}"#.into(), vec![base]),
+        (r#"{"quantity": "storage_factor", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": "inf"}"#.into(), vec![base * 100.0]),
+        (r#"{"quantity": "storage_factor", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 50}"#.into(), vec![base * 2500.0 * 100.0 / (149.0 * 149.0)]),
+        // Eq 13, 14 with M_x/M_z = 10/(base/10): res_s = √(S₀ M_x/M_z), res_t = √(S₀ M_z/M_x).
+        (
+            r#"{"quantity": "critical_resolution", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 11, "budget": 4194304, "res_image": 1024}"#.into(),
+            vec![(4194304.0 * 100.0 / base).sqrt(), (4194304.0 * base / 100.0).sqrt()],
+        ),
+        // Eq 11: η = 0 → n + √(fn); η = 1 → n; η = −1 → ∞ (checked as a string elsewhere);
+        // η = −0.5 → n (√α + 1 + (α − 1)/2)/(1/2) = 2·(11 + 49.5).
+        (r#"{"quantity": "n_prime_from_eta", "near": 1, "far": 100, "eta": 0}"#.into(), vec![11.0]),
+        (r#"{"quantity": "n_prime_from_eta", "near": 1, "far": 100, "eta": 1}"#.into(), vec![1.0]),
+        (r#"{"quantity": "n_prime_from_eta", "near": 1, "far": 100, "eta": -0.5}"#.into(), vec![121.0]),
+        (r#"{"quantity": "eta_from_n_prime", "near": 1, "far": 100, "n_prime": 121}"#.into(), vec![-0.5]),
+        (r#"{"quantity": "eta_from_n_prime", "near": 1, "far": 100, "n_prime": "inf"}"#.into(), vec![-1.0]),
+        // Lloyd 2005 Eq 3: (z − 1 + n)²/(z n (n + α − 1)) = 400/(10·11·110); n = ∞: 1/z.
+        (r#"{"quantity": "distribution_g", "alpha": 100, "n_warp": 11, "z": 10}"#.into(), vec![400.0 / 12100.0]),
+        (r#"{"quantity": "distribution_g", "alpha": 100, "n_warp": "inf", "z": 10}"#.into(), vec![0.1]),
+        // Eq 7: k (α^{1/k} − 1)/(2 tan θ) (1 + |ξ|(√α^{1/k} − 1))/√α^{1/k}, k = 3, ξ = 0 and 1.
+        (
+            r#"{"quantity": "subdivided_max_error", "alpha": 100, "k": 3, "eta": 0, "half_fov": 0.5236}"#.into(),
+            vec![3.0 * (sqrt3 - 1.0) / (2.0 * t) / sqrt3.sqrt()],
+        ),
+        (
+            r#"{"quantity": "subdivided_max_error", "alpha": 100, "k": 3, "eta": 1, "half_fov": 0.5236, "res_image": 2, "res_s": 1}"#.into(),
+            vec![2.0 * 3.0 * (sqrt3 - 1.0) / (2.0 * t) * sqrt3.sqrt() / sqrt3.sqrt()],
+        ),
+        // Eq 6: r_s e_i / Σ e_j.
+        (r#"{"quantity": "allocate_texels", "errors": [1, 2, 1], "total": 1024}"#.into(), vec![256.0, 512.0, 256.0]),
+        // Lloyd 2006 Eq 17–20 and App. C at n = 1, f = 1000, k = 3, a = 10.
+        (r#"{"quantity": "scheme_storage_factor", "scheme": "zp", "light": "overhead", "near": 1, "far": 1000, "half_fov": 0.5236, "k": 3}"#.into(), vec![3.0 * 10.0 * 9.0 / (2.0 * t)]),
+        (r#"{"quantity": "scheme_storage_factor", "scheme": "zp_w", "light": "overhead", "near": 1, "far": 1000, "half_fov": 0.5236, "k": 3}"#.into(), vec![27.0 / (2.0 * t)]),
+        (r#"{"quantity": "scheme_storage_factor", "scheme": "zp", "light": "behind", "near": 1, "far": 1000, "half_fov": 0.5236, "k": 3}"#.into(), vec![300.0]),
+        (r#"{"quantity": "scheme_storage_factor", "scheme": "optimal", "light": "overhead", "near": 1, "far": 1000, "half_fov": 0.5236, "k": 1}"#.into(), vec![1000f64.ln() / (2.0 * t)]),
+    ];
     let mut cases: Vec<(&str, &[f64])> = owned
         .iter()
+        .chain(&lloyd)
         .map(|(r, v)| (r.as_str(), v.as_slice()))
         .collect();
     cases.extend_from_slice(&[
@@ -331,6 +422,46 @@ fn every_kind_of_bad_request_is_an_error_naming_the_argument() {
         (
             r#"{"quantity": "zhang_eq_local", "near": 1, "far": 100, "half_fov": 0.5, "lambda": 11, "z": 200}"#,
             "z must ",
+        ),
+        (
+            r#"{"quantity": "storage_factor", "near": 1, "far": 100, "half_fov": 0.5, "n_prime": 0.5}"#,
+            "n_prime must be at least near",
+        ),
+        (
+            r#"{"quantity": "mx", "near": 1, "far": 100, "n_prime": 11, "z": 0.5}"#,
+            "z must ",
+        ),
+        (
+            r#"{"quantity": "mz", "near": 1, "far": 100, "half_fov": 1.6, "n_prime": 11, "z": 5}"#,
+            "half_fov must lie in (0, 1.5707963267948966) (got 1.6)",
+        ),
+        (
+            r#"{"quantity": "n_prime_from_eta", "near": 1, "far": 100, "eta": 1.5}"#,
+            "eta must lie in [-1, 1] (got 1.5)",
+        ),
+        (
+            r#"{"quantity": "subdivided_max_error", "alpha": 100, "k": 3, "eta": -2, "half_fov": 0.5}"#,
+            "eta must lie in [-1, 1] (got -2)",
+        ),
+        (
+            r#"{"quantity": "subdivided_max_error", "alpha": 100, "k": 3, "eta": 0, "half_fov": 0.5, "res_s": -1}"#,
+            "res_s must be greater than 0 (got -1)",
+        ),
+        (
+            r#"{"quantity": "mx", "near": 1, "far": 100, "n_prime": 11, "z": 5, "res_s": 0}"#,
+            "res_s must be greater than 0 (got 0)",
+        ),
+        (
+            r#"{"quantity": "critical_resolution", "near": 1, "far": 100, "half_fov": 0.5, "n_prime": 11, "budget": -4}"#,
+            "budget must be greater than 0 (got -4)",
+        ),
+        (
+            r#"{"quantity": "scheme_storage_factor", "scheme": "optimal", "light": "behind", "near": 1, "far": 100, "half_fov": 0.5, "k": 1}"#,
+            "no closed form: ",
+        ),
+        (
+            r#"{"quantity": "allocate_texels", "errors": [], "total": 10}"#,
+            "errors ",
         ),
         (
             r#"{"quantity": "allocate_texels", "errors": [1, "x"], "total": 10}"#,

@@ -153,10 +153,11 @@ pub enum WarpName {
     Barroso,
     /// Barroso & Celes' generalised n′ with Zhang's fall-off (Eq 17).
     BarrosoZhang,
-    /// The n′ that minimises the measured maximum error M_z (this crate).
+    /// The n′ that minimises the storage factor S̄ = M_x M_z of the fitted map, never worse than
+    /// uniform (this crate; the library's default).
     Minimax,
-    /// The n′ that minimises the storage factor S̄ = M_x M_z (this crate).
-    MinStorage,
+    /// The n′ that minimises the maximum z error M_z alone (this crate).
+    MinimaxMz,
     /// Trapezoidal shadow map with the 80% rule (Martin & Tan).
     Tsm,
     /// The LiSPSM reference code's d/(√(z1/z0) − 1).

@@ -40,7 +40,7 @@ pub fn rule(a: &SchemeArgs, near: f64, far: f64) -> Result<WarpRule, Error> {
         WarpName::Barroso => WarpRule::Barroso(Falloff::Barroso),
         WarpName::BarrosoZhang => WarpRule::Barroso(Falloff::Zhang),
         WarpName::Minimax => WarpRule::Minimax,
-        WarpName::MinStorage => WarpRule::MinStorage,
+        WarpName::MinimaxMz => WarpRule::MinimaxMz,
         WarpName::Tsm => {
             if !(a.focus > 0.0 && a.focus <= 1.0) {
                 return Err(Error::invalid(
