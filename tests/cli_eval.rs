@@ -334,6 +334,57 @@ fn values_match_hand_calculations() {
     assert_eq!(code, 0, "{err}");
 }
 
+/// The json blocks of a markdown file, in order.
+fn json_blocks(md: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut cur: Option<String> = None;
+    for line in md.lines() {
+        match (&mut cur, line.trim_end()) {
+            (None, "```json") => cur = Some(String::new()),
+            (Some(_), "```") => out.push(cur.take().unwrap_or_default()),
+            (Some(b), l) => {
+                b.push_str(l);
+                b.push('\n');
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+#[test]
+fn docs_show_the_binarys_answers() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let md = std::fs::read_to_string(format!("{root}/docs/eval.md")).unwrap();
+    let blocks = json_blocks(&md);
+    let n = blocks.len();
+    assert!(n >= 2);
+    let request = std::fs::read_to_string(format!("{root}/examples/eval-request.json")).unwrap();
+    assert_eq!(
+        blocks[n - 2],
+        request,
+        "docs/eval.md shows examples/eval-request.json"
+    );
+    let (code, out, _) = run(&["eval", &format!("{root}/examples/eval-request.json")], "");
+    assert_eq!(code, 0);
+    assert_eq!(
+        blocks[n - 1],
+        out,
+        "docs/eval.md shows what the binary prints"
+    );
+    // The single examples near the top are real answers too.
+    let (_, out, _) = run(
+        &["eval"],
+        r#"{"quantity": "storage_factor", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 0.5}"#,
+    );
+    assert!(md.contains(out.trim()), "{out}");
+    let (_, out, _) = run(
+        &["eval"],
+        r#"{"quantity": "storage_factor", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 11}"#,
+    );
+    assert!(md.contains(out.trim()), "{out}");
+}
+
 #[test]
 fn every_kind_of_bad_request_is_an_error_naming_the_argument() {
     let cases: &[(&str, &str)] = &[

@@ -54,7 +54,12 @@ pub struct FiguresArgs {
     #[arg(long, value_enum, default_value_t = Format::Both)]
     pub format: Format,
     /// Only these figures (for instance lloyd2006-fig7); all of them when absent.
-    #[arg(long, value_name = "NAME", num_args = 1..)]
+    #[arg(
+        long,
+        value_name = "NAME",
+        num_args = 1..,
+        value_parser = clap::builder::PossibleValuesParser::new(shadow_aliasing::plot::FIGURES)
+    )]
     pub only: Vec<String>,
 }
 

@@ -1,6 +1,6 @@
 //! What each subcommand does.
 
-use crate::args::{Cli, Command, EvalArgs, WarpArgs};
+use crate::args::{Cli, Command, EvalArgs, FiguresArgs, Format, WarpArgs};
 use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
 use crate::scheme::{partitions, PartitionReport};
 use glam::DVec3;
@@ -15,7 +15,7 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Eval(a) => eval(&a),
         Command::Warp(a) => warp(&a),
         Command::Sweep(_) => fail("sweep is not available in this build yet"),
-        Command::Figures(_) => fail("figures is not available in this build yet"),
+        Command::Figures(a) => figures(&a),
     }
 }
 
@@ -193,4 +193,53 @@ fn warp_text(a: &WarpArgs, gamma: f64, total: f64, parts: &[PartitionReport]) ->
 fn value_name<T: clap::ValueEnum>(v: &T) -> String {
     v.to_possible_value()
         .map_or_else(|| "?".to_string(), |p| p.get_name().to_string())
+}
+
+fn figures(a: &FiguresArgs) -> ExitCode {
+    use shadow_aliasing::plot::{self, FIGURES};
+    use std::io::IsTerminal;
+    let format = match a.format {
+        Format::Png => plot::Format::Png,
+        Format::Svg => plot::Format::Svg,
+        Format::Both => plot::Format::Both,
+    };
+    let only: Vec<&str> = a.only.iter().map(String::as_str).collect();
+    let count = if only.is_empty() {
+        FIGURES.len()
+    } else {
+        FIGURES.iter().filter(|n| only.contains(n)).count()
+    };
+    let bar = if std::io::stderr().is_terminal() {
+        let bar = indicatif::ProgressBar::new(count as u64);
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "{spinner} [{elapsed_precise}] {bar:30} {pos}/{len} {msg}",
+        ) {
+            bar.set_style(style);
+        }
+        bar.enable_steady_tick(std::time::Duration::from_millis(120));
+        Some(bar)
+    } else {
+        None
+    };
+    let start = std::time::Instant::now();
+    let result = plot::render_all(&a.out, format, &only, |name| {
+        if let Some(b) = &bar {
+            b.set_message(name.to_string());
+            b.inc(1);
+        }
+    });
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    match result {
+        Ok(files) => print(&format!(
+            "wrote {} files ({} figure{}) to {} in {:.1} s\n",
+            files.len(),
+            count,
+            if count == 1 { "" } else { "s" },
+            a.out.display(),
+            start.elapsed().as_secs_f64()
+        )),
+        Err(e) => fail(e),
+    }
 }
