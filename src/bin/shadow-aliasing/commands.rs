@@ -203,12 +203,12 @@ fn figures(a: &FiguresArgs) -> ExitCode {
         Format::Svg => plot::Format::Svg,
         Format::Both => plot::Format::Both,
     };
-    let only: Vec<&str> = a.only.iter().map(String::as_str).collect();
-    let count = if only.is_empty() {
-        FIGURES.len()
-    } else {
-        FIGURES.iter().filter(|n| only.contains(n)).count()
-    };
+    let names: Vec<&str> = FIGURES
+        .iter()
+        .copied()
+        .filter(|n| a.only.is_empty() || a.only.iter().any(|o| o == n))
+        .collect();
+    let count = names.len();
     let bar = if std::io::stderr().is_terminal() {
         let bar = indicatif::ProgressBar::new(count as u64);
         if let Ok(style) = indicatif::ProgressStyle::with_template(
@@ -222,12 +222,26 @@ fn figures(a: &FiguresArgs) -> ExitCode {
         None
     };
     let start = std::time::Instant::now();
-    let result = plot::render_all(&a.out, format, &only, |name| {
+    let mut result = Ok(Vec::new());
+    for name in &names {
         if let Some(b) = &bar {
-            b.set_message(name.to_string());
+            b.set_message(*name);
+        }
+        match plot::render(name, &a.out, format) {
+            Ok(files) => {
+                if let Ok(all) = &mut result {
+                    all.extend(files);
+                }
+            }
+            Err(e) => {
+                result = Err(e);
+                break;
+            }
+        }
+        if let Some(b) = &bar {
             b.inc(1);
         }
-    });
+    }
     if let Some(b) = bar {
         b.finish_and_clear();
     }
