@@ -293,3 +293,19 @@ fn errata_s3_1_parameterisation_sign() {
     assert_eq!((printed(n), printed(f)), (4.0, 3.0));
     assert_eq!((right(n), right(f)), (0.0, 1.0));
 }
+
+/// §3.1 derives the optimal parameterisation as "s = ∫₀¹ ds = ∫₁^z dz/z = ln z", which spans
+/// [0, ln α], not [0, 1]; normalised, s = ln z / ln α (as Lloyd 2006 App. C does), and the error
+/// is then (r_p/r_s) ln α / (2 tan θ), the k → ∞ limit of Eq 7: 2.3026 at α = 100, θ = 45°,
+/// where the unnormalised s = ln z would claim (r_p/r_s)/(2 tan θ) = 0.5.
+#[test]
+fn errata_s3_1_log_parameterisation_unnormalised() {
+    let a = 100.0f64;
+    let th = std::f64::consts::FRAC_PI_4;
+    let limit = subdivided_max_error(a, 1 << 24, 0.0, th, 1.0, 1.0).unwrap();
+    assert!(close(limit, a.ln() / (2.0 * th.tan()), 1e-9));
+    // dz/ds of s = ln z is z: m = (r_p/r_s) z / (2 z tan θ) = 0.5 at θ = 45°, below the limit
+    // that any map covering [1, α] with one s-unit can reach.
+    let unnormalised = 1.0 / (2.0 * th.tan());
+    assert!(close(unnormalised, 0.5, 1e-15) && unnormalised < limit);
+}

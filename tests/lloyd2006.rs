@@ -181,7 +181,7 @@ proptest! {
 fn n_prime_special_values() {
     for (n, f) in [(1.0, 100.0), (0.3, 7.0), (2.0, 2000.0)] {
         let l = n_prime_lispsm(n, f).unwrap();
-        assert_eq!(l, n + (f * n as f64).sqrt());
+        assert_eq!(l, n + (f * n).sqrt());
         match n_prime_from_eta(n, f, 0.0).unwrap() {
             NPrime::Finite(v) => assert!(close(v, l, 1e-15)),
             NPrime::Unwarped => panic!("η = 0 is finite"),
@@ -249,12 +249,10 @@ fn errata_eq2_pixel_width_has_no_over_n() {
     let printed = p.w_ls / (2.0 * v.tan_half_fov() * 2.0 / 2.0);
     assert!(close(p.mx, eq7, REL));
     assert!(close(printed, 2.0 * eq7, REL)); // n = 2 times too large
-                                             // Numbers for the errata page: n = 2, f = 100, θ = 30°, n′ = n′_LSPSM = 16.142…
-    assert!(close(
-        eq7,
-        100.0 * 16.142135623730951 / (2.0 * (16.142135623730951 + 98.0)),
-        1e-12
-    ));
+                                             // Numbers for the errata page: n = 2, f = 100, θ = 30°, n′ = n′_LSPSM = 16.142…: Eq 7
+                                             // gives 7.071 at z = n, the transcribed width 14.142.
+    let l = 2.0 + 200f64.sqrt();
+    assert!(close(eq7, 100.0 * l / (2.0 * (l + 98.0)), 1e-12));
 }
 
 /// Eq 5, 6 as transcribed: s = x/(z′ tan θ′) + ½, tan θ′ = (f′/f) tan θ and
@@ -305,6 +303,32 @@ fn errata_eq9_eq10_factor_n() {
     let mz_printed = n * k * (np + f - n) / (np * f);
     assert!(close(m.max_mz, k * (np + f - n) / (np * f), REL));
     assert!(close(mz_printed, n * m.max_mz, REL));
-    // Numbers: M_x printed 14.142…, measured 7.071…; M_z printed 16.97…, measured 8.487…
+    // Numbers: M_x printed 14.142…, measured 7.071…; M_z printed 12.002…, measured 6.001…
     assert!(close(m.max_mx, 50f64.sqrt(), 1e-12));
+    assert!((m.max_mz - 6.00125).abs() < 1e-5 && (mz_printed - 12.0025).abs() < 1e-4);
+}
+
+/// App. C gives the optimal map's errors as m_x = 1/res_s and m_z = (1/res_t) ln(f/n)/(2 tan θ),
+/// dropping res_i (right only for res_i = 1). Its x map is PSM's (n′ = n), whose measured m_x is
+/// res_i/res_s everywhere: 1 at res_i = res_s = 1024, where the printed form gives 1/1024.
+#[test]
+fn errata_app_c_drops_res_i() {
+    let v = ViewFrustum::new(1.0, 1000.0, 0.5).unwrap();
+    let map = overhead_map(&v, NPrime::Finite(1.0)).unwrap();
+    let r = Resolutions::new(1024.0, 1024.0, 1024.0).unwrap();
+    for z in [1.0, 30.0, 1000.0] {
+        let p = point_error(
+            &v,
+            &map,
+            glam::DVec3::new(0.3 * z * 0.5f64.tan(), 0.0, -z),
+            r,
+        )
+        .unwrap();
+        assert!(close(p.mx, 1.0, REL), "m_x = {}", p.mx);
+    }
+    assert!(close(
+        max_mx(1.0, 1000.0, NPrime::Finite(1.0), r).unwrap(),
+        1.0,
+        1e-15
+    ));
 }

@@ -1,0 +1,340 @@
+//! z-partitions: split schemes (Lloyd 2006 Eq 15, 16; Barroso & Celes Eq 19; uniform, practical,
+//! Unreal's exponent) and the storage factors of ZP, ZP+W, FP+ZP+W (Lloyd 2006 Eq 17–23,
+//! App. C), measured on cascades of twin maps.
+
+use proptest::prelude::*;
+use shadow_aliasing::analytic::partition::{
+    fp_zp_w_overhead_asymptotic, optimal_storage_factor, scheme_storage_factor, shadow_map_count,
+    splits_storage_factor, z_splits, zp_overhead_asymptotic, Scheme, SchemeLight, SplitScheme,
+    Splits, MAX_PARTITIONS,
+};
+use shadow_aliasing::measure::frustum_max;
+use shadow_aliasing::measure::twin::{
+    behind_cascade, behind_map, measured_fp_zp_w_behind, overhead_cascade, TwinWarp,
+};
+use shadow_aliasing::{Error, ViewFrustum};
+use std::f64::consts::FRAC_PI_2;
+
+const REL: f64 = 1e-9;
+
+fn config() -> ProptestConfig {
+    ProptestConfig {
+        cases: 128,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
+}
+
+fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * a.abs().max(b.abs())
+}
+
+fn frustum() -> impl Strategy<Value = ViewFrustum> {
+    (-2.0f64..1.0, 0.0043f64..4.0, 1.0f64..80.0).prop_map(|(ln, la, th)| {
+        let n = 10f64.powf(ln);
+        ViewFrustum::new(n, n * 10f64.powf(la), th.to_radians()).unwrap()
+    })
+}
+
+fn scheme() -> impl Strategy<Value = SplitScheme> {
+    prop_oneof![
+        Just(SplitScheme::Uniform),
+        Just(SplitScheme::SelfSimilar),
+        (0.0f64..=1.0).prop_map(|lambda| SplitScheme::Practical { lambda }),
+        (0.05f64..8.0).prop_map(|exponent| SplitScheme::Exponent { exponent }),
+        (0.0f64..=FRAC_PI_2, 1.01f64..4.0)
+            .prop_map(|(light_angle, ratio)| SplitScheme::Adaptive { light_angle, ratio }),
+    ]
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// Every scheme either gives k + 1 strictly increasing planes from near to far, or a typed
+    /// error (only the adaptive scheme, when α^{k−1} is too deep for f/n); never a panic.
+    #[test]
+    fn splits_are_increasing_from_near_to_far(
+        n in 0.01f64..10.0, a in 1.5f64..1e5, k in 1usize..=MAX_PARTITIONS, s in scheme(),
+    ) {
+        match z_splits(n, n * a, k, s) {
+            Ok(sp) => {
+                let p = sp.planes();
+                prop_assert_eq!(p.len(), k + 1);
+                prop_assert_eq!(p[0], n);
+                prop_assert_eq!(p[k], n * a);
+                for w in p.windows(2) {
+                    prop_assert!(w[1] > w[0]);
+                }
+                prop_assert_eq!(Splits::from_planes(p).unwrap(), sp);
+            }
+            Err(Error::NoSolution(_)) => {
+                let adaptive = matches!(s, SplitScheme::Adaptive { .. });
+                prop_assert!(adaptive);
+            }
+            Err(e) => prop_assert!(false, "{e}"),
+        }
+    }
+
+    /// Eq 15, 16: self-similar partitions all have the ratio (f/n)^{1/k}; practical λ = 1 is
+    /// self-similar and λ = 0 uniform; exponent 1 is uniform; Barroso's adaptive scheme at
+    /// γ = π/2 is self-similar for any ratio α (his claim below Eq 19).
+    #[test]
+    fn scheme_identities(n in 0.01f64..10.0, a in 1.5f64..1e5, k in 1usize..=MAX_PARTITIONS, r in 1.01f64..8.0) {
+        let f = n * a;
+        let ss = z_splits(n, f, k, SplitScheme::SelfSimilar).unwrap();
+        let want = a.powf(1.0 / k as f64);
+        for &ri in &ss.ratios()[..k] {
+            prop_assert!(close(ri, want, 1e-12));
+        }
+        let same = |x: &Splits, y: &Splits| x.planes().iter().zip(y.planes()).all(|(p, q)| close(*p, *q, 1e-12));
+        let p1 = z_splits(n, f, k, SplitScheme::Practical { lambda: 1.0 }).unwrap();
+        prop_assert!(same(&p1, &ss));
+        let u = z_splits(n, f, k, SplitScheme::Uniform).unwrap();
+        let p0 = z_splits(n, f, k, SplitScheme::Practical { lambda: 0.0 }).unwrap();
+        prop_assert!(same(&p0, &u));
+        let e1 = z_splits(n, f, k, SplitScheme::Exponent { exponent: 1.0 }).unwrap();
+        prop_assert!(same(&e1, &u));
+        let e_near1 = z_splits(n, f, k, SplitScheme::Exponent { exponent: 1.0 + 1e-12 }).unwrap();
+        prop_assert!(e_near1.planes().iter().zip(u.planes()).all(|(p, q)| close(*p, *q, 1e-9)));
+        let ad = z_splits(n, f, k, SplitScheme::Adaptive { light_angle: FRAC_PI_2, ratio: r }).unwrap();
+        prop_assert!(same(&ad, &ss), "{:?} vs {:?}", ad.planes(), ss.planes());
+    }
+
+    /// Unreal's exponent e: each partition is e times as deep as the one before it.
+    #[test]
+    fn exponent_depths_grow_geometrically(n in 0.01f64..10.0, a in 1.5f64..1e4, k in 2usize..=8, e in 0.2f64..4.0) {
+        let s = z_splits(n, n * a, k, SplitScheme::Exponent { exponent: e }).unwrap();
+        let p = s.planes();
+        for i in 1..k {
+            prop_assert!(close((p[i + 1] - p[i]) / (p[i] - p[i - 1]), e, 1e-9));
+        }
+    }
+
+    /// Eq 17, 18 (overhead) and Eq 20 (behind): the storage factor measured on self-similar
+    /// cascades of twin maps (each fitted to its partition, n′ = ∞ for ZP, LiSPSM's n′ or any
+    /// η ∈ [0, 1] for ZP+W), summed over partitions.
+    #[test]
+    fn eq17_eq18_eq20_equal_measured_cascades(v in frustum(), k in 1usize..=MAX_PARTITIONS, eta in 0.0f64..=1.0) {
+        let sp = z_splits(v.near(), v.far(), k, SplitScheme::SelfSimilar).unwrap();
+        let zp = overhead_cascade(&v, &sp, TwinWarp::Unwarped).unwrap().measured_storage_factor().unwrap();
+        let eq17 = scheme_storage_factor(Scheme::Zp, SchemeLight::Overhead, &v, k).unwrap();
+        prop_assert!(close(zp, eq17, REL), "ZP measured {zp}, Eq 17 {eq17}");
+        let eq18 = scheme_storage_factor(Scheme::ZpW, SchemeLight::Overhead, &v, k).unwrap();
+        for w in [TwinWarp::Lispsm, TwinWarp::Eta(eta)] {
+            let zpw = overhead_cascade(&v, &sp, w).unwrap().measured_storage_factor().unwrap();
+            prop_assert!(close(zpw, eq18, REL), "ZP+W measured {zpw}, Eq 18 {eq18}");
+        }
+        prop_assert_eq!(scheme_storage_factor(Scheme::FpZpW, SchemeLight::Overhead, &v, k).unwrap(), eq18);
+        let behind = behind_cascade(&v, &sp).unwrap().measured_storage_factor().unwrap();
+        let eq20 = scheme_storage_factor(Scheme::Zp, SchemeLight::Behind, &v, k).unwrap();
+        prop_assert!(close(behind, eq20, REL), "ZP behind measured {behind}, Eq 20 {eq20}");
+    }
+
+    /// Any split (uniform, practical, exponent, adaptive): the per-partition closed forms summed
+    /// equal the measured cascades; and the self-similar split has the least storage.
+    #[test]
+    fn splits_storage_factor_equals_measured_and_self_similar_is_least(
+        v in frustum(), k in 1usize..=8, s in scheme(),
+    ) {
+        let Ok(sp) = z_splits(v.near(), v.far(), k, s) else { return Ok(()); };
+        let ss = z_splits(v.near(), v.far(), k, SplitScheme::SelfSimilar).unwrap();
+        for (light, warped) in [(SchemeLight::Overhead, false), (SchemeLight::Overhead, true), (SchemeLight::Behind, false)] {
+            let closed = splits_storage_factor(&sp, v.half_fov(), light, warped).unwrap();
+            let measured = match light {
+                SchemeLight::Overhead => overhead_cascade(&v, &sp, if warped { TwinWarp::Lispsm } else { TwinWarp::Unwarped }),
+                SchemeLight::Behind => behind_cascade(&v, &sp),
+            }.unwrap().measured_storage_factor().unwrap();
+            prop_assert!(close(closed, measured, REL), "{light:?} {warped}: {closed} vs {measured}");
+            let best = splits_storage_factor(&ss, v.half_fov(), light, warped).unwrap();
+            prop_assert!(best <= closed * (1.0 + 1e-12));
+        }
+    }
+
+    /// Eq 21 with the crate's reading (S̄_overhead^{ZP+W} at θ = 45° for every θ): the measured
+    /// FP+ZP+W with the light behind — four side faces, each self-similarly split and warped with
+    /// LiSPSM's n′ (or any η ∈ [0, 1]) over the face, plus the near face — for any half field of
+    /// view.
+    #[test]
+    fn eq21_fp_zp_w_behind_matches_face_twin_for_any_fov(v in frustum(), k in 1usize..=8, eta in 0.0f64..=1.0) {
+        let sp = z_splits(v.near(), v.far(), k, SplitScheme::SelfSimilar).unwrap();
+        let eq21 = scheme_storage_factor(Scheme::FpZpW, SchemeLight::Behind, &v, k).unwrap();
+        for w in [TwinWarp::Lispsm, TwinWarp::Eta(eta)] {
+            let m = measured_fp_zp_w_behind(&v, &sp, w).unwrap();
+            prop_assert!(close(m, eq21, REL), "measured {m}, Eq 21 {eq21}");
+        }
+    }
+
+    /// Eq 18 → App. C: k((f/n)^{1/k} − 1)/(2 tan θ) decreases in k towards ln(f/n)/(2 tan θ).
+    #[test]
+    fn zp_w_decreases_towards_the_optimum(v in frustum()) {
+        let opt = optimal_storage_factor(&v);
+        prop_assert!(close(opt, scheme_storage_factor(Scheme::Optimal, SchemeLight::Overhead, &v, 1).unwrap(), 0.0));
+        let mut prev = f64::INFINITY;
+        for k in 1..=64 {
+            let s = scheme_storage_factor(Scheme::ZpW, SchemeLight::Overhead, &v, k).unwrap();
+            prop_assert!(s < prev && s > opt);
+            prev = s;
+        }
+        let big = scheme_storage_factor(Scheme::ZpW, SchemeLight::Overhead, &v, 1 << 24).unwrap();
+        prop_assert!(close(big, opt, 1e-6));
+    }
+}
+
+/// §5.2 "Seams": in a self-similar ZP+W cascade with LiSPSM's n′ per partition, the measured
+/// m_z does not change across a seam, while m_x jumps from 1 to √a (a = (f/n)^{1/k}); with
+/// n′ = n (PSM) m_x does not change and m_z jumps by the factor a.
+#[test]
+fn seams_of_self_similar_cascades() {
+    use shadow_aliasing::measure::point_error;
+    use shadow_aliasing::Resolutions;
+    let v = ViewFrustum::new(0.5, 500.0, 0.6).unwrap();
+    let k = 3;
+    let a = 1000f64.powf(1.0 / 3.0);
+    let sp = z_splits(0.5, 500.0, k, SplitScheme::SelfSimilar).unwrap();
+    for (warp, jump_x, jump_z) in [
+        (TwinWarp::Lispsm, a.sqrt(), 1.0),
+        (TwinWarp::Eta(1.0), 1.0, a),
+    ] {
+        let c = overhead_cascade(&v, &sp, warp).unwrap();
+        for i in 1..k {
+            let z = sp.planes()[i];
+            let p = glam::DVec3::new(0.0, 0.0, -z);
+            let (v0, m0) = c.get(i - 1).unwrap();
+            let (v1, m1) = c.get(i).unwrap();
+            let before = point_error(&v0, &m0, p, Resolutions::default()).unwrap();
+            let after = point_error(&v1, &m1, p, Resolutions::default()).unwrap();
+            assert!(close(after.mx / before.mx, jump_x, REL), "{warp:?} x");
+            assert!(close(before.mz / after.mz, jump_z, REL), "{warp:?} z");
+        }
+    }
+}
+
+/// Eq 20 with k = 1: the measured uniform map with the light behind gives (f/n)².
+#[test]
+fn measured_uniform_map_behind_is_alpha_squared() {
+    for (n, f, th) in [(1.0, 100.0, 0.5), (0.1, 1000.0, 1.2), (3.0, 4.0, 0.05)] {
+        let v = ViewFrustum::new(n, f, th).unwrap();
+        let m = frustum_max(&v, &behind_map(&v).unwrap()).unwrap();
+        assert!(close(m.storage_factor, (f / n) * (f / n), REL));
+        assert!(close(m.max_mx, f / n, REL) && close(m.max_mz, f / n, REL));
+    }
+}
+
+/// Hand values at f/n = 1000, θ = 30° (Lloyd 2006 Fig 12's frustum), k = 4.
+#[test]
+fn hand_values_fig12() {
+    let v = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
+    let a = 1000f64.powf(0.25);
+    let t2 = 2.0 * 30f64.to_radians().tan();
+    let s = |sc, l| scheme_storage_factor(sc, l, &v, 4).unwrap();
+    assert!(close(
+        s(Scheme::Zp, SchemeLight::Overhead),
+        4.0 * a * (a - 1.0) / t2,
+        1e-14
+    ));
+    assert!(close(
+        s(Scheme::ZpW, SchemeLight::Overhead),
+        4.0 * (a - 1.0) / t2,
+        1e-14
+    ));
+    assert!(close(
+        s(Scheme::Zp, SchemeLight::Behind),
+        4.0 * a * a,
+        1e-14
+    ));
+    assert!(close(
+        s(Scheme::ZpW, SchemeLight::Behind),
+        4.0 * a * a,
+        1e-14
+    ));
+    assert!(close(
+        s(Scheme::FpZpW, SchemeLight::Behind),
+        2.0 * 4.0 * (a - 1.0) + 1.0,
+        1e-14
+    ));
+    assert!(close(optimal_storage_factor(&v), 1000f64.ln() / t2, 1e-15));
+    assert_eq!(
+        shadow_map_count(Scheme::FpZpW, SchemeLight::Behind, 4).unwrap(),
+        17
+    );
+    assert_eq!(
+        shadow_map_count(Scheme::ZpW, SchemeLight::Overhead, 4).unwrap(),
+        4
+    );
+    // No closed form for the optimum with the light behind.
+    let e = scheme_storage_factor(Scheme::Optimal, SchemeLight::Behind, &v, 1).unwrap_err();
+    assert!(matches!(e, Error::NoClosedForm(_)), "{e}");
+    assert!(scheme_storage_factor(Scheme::Zp, SchemeLight::Overhead, &v, 0).is_err());
+}
+
+/// Adaptive at γ = 0 (Barroso Eq 19): partitions 2..k all have depth ratio α; and the first
+/// partition runs from n to the second's near plane (the paper's "f_1 = f_2" must be f_1 = n_2).
+#[test]
+fn adaptive_parallel_light() {
+    let s = z_splits(
+        1.0,
+        1000.0,
+        4,
+        SplitScheme::Adaptive {
+            light_angle: 0.0,
+            ratio: 2.0,
+        },
+    )
+    .unwrap();
+    assert_eq!(s.planes(), &[1.0, 125.0, 250.0, 500.0, 1000.0]);
+    assert_eq!(s.range(0), (1.0, 125.0));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Errata (docs/errata.md, "Lloyd et al. 2006").
+// ---------------------------------------------------------------------------------------------
+
+/// Eq 21 prints "4 S̄_overhead^{ZP+W} + 1, with θ = 45°". Read as S̄_overhead at the frustum's own
+/// θ it is wrong for θ ≠ 45°: at f/n = 1000, θ = 30°, k = 1 it gives 4·999/(2 tan 30°) + 1 =
+/// 3461.64; the measured face partitions give 4·999/2 + 1 = 1999 (the same as at θ = 45°).
+#[test]
+fn errata_eq21_holds_with_overhead_at_45_degrees_for_any_fov() {
+    for deg in [10.0f64, 30.0, 45.0, 70.0] {
+        let v = ViewFrustum::new(1.0, 1000.0, deg.to_radians()).unwrap();
+        let sp = z_splits(1.0, 1000.0, 1, SplitScheme::SelfSimilar).unwrap();
+        let m = measured_fp_zp_w_behind(&v, &sp, TwinWarp::Lispsm).unwrap();
+        assert!(close(m, 1999.0, REL), "θ = {deg}°: measured {m}");
+        let own_theta =
+            4.0 * scheme_storage_factor(Scheme::ZpW, SchemeLight::Overhead, &v, 1).unwrap() + 1.0;
+        if deg == 30.0 {
+            assert!(close(
+                own_theta,
+                4.0 * 999.0 / (2.0 * deg.to_radians().tan()) + 1.0,
+                1e-12
+            ));
+            assert!((own_theta - 3461.6375).abs() < 1e-3);
+        }
+    }
+}
+
+/// Eq 22, 23 print S̄_ZP ≈ j (f/n)^{2/j} and S̄_FP+ZP+W ≈ j (f/n)^{4/j}, dropping the constants
+/// 1/(2 tan θ) and 1/(8 tan θ) (FP+ZP+W has j/4 z-partitions). At f/n = 10⁶, θ = 30°, j = 8:
+/// Eq 17 gives 180.13 against the printed 252.98, Eq 18 with k = 2 gives 1730.3 against the
+/// printed 8000; the corrected asymptotes' ratios to the exact values are 1 − (f/n)^{−1/j} and
+/// 1 − (f/n)^{−4/j}, tending to 1.
+#[test]
+fn errata_eq22_eq23_drop_constant_factors() {
+    let th = 30f64.to_radians();
+    let j = 8usize;
+    let jf = j as f64;
+    for alpha in [1e3, 1e6, 1e12, 1e24] {
+        let v = ViewFrustum::new(1.0, alpha, th).unwrap();
+        let zp = scheme_storage_factor(Scheme::Zp, SchemeLight::Overhead, &v, j).unwrap();
+        let fp = scheme_storage_factor(Scheme::FpZpW, SchemeLight::Overhead, &v, j / 4).unwrap();
+        let c22 = zp / zp_overhead_asymptotic(&v, j).unwrap();
+        let c23 = fp / fp_zp_w_overhead_asymptotic(&v, j).unwrap();
+        assert!(close(c22, 1.0 - alpha.powf(-1.0 / jf), 1e-12), "{c22}");
+        assert!(close(c23, 1.0 - alpha.powf(-4.0 / jf), 1e-12), "{c23}");
+        if alpha == 1e6 {
+            assert!((zp - 180.1289).abs() < 1e-3 && (fp - 1730.3188).abs() < 1e-3);
+            let printed22 = jf * alpha.powf(2.0 / jf);
+            let printed23 = jf * alpha.powf(4.0 / jf);
+            assert!((printed22 - 252.9822).abs() < 1e-3 && printed23 == 8000.0);
+        }
+    }
+}
