@@ -307,6 +307,54 @@ pub fn n_prime_equal_error(view: &ViewFrustum, gamma: LightAngle) -> Result<NPri
     }
 }
 
+/// The n′ that minimises the maximum of the tilted m_z over the view axis, `max(m_z(n), m_z(f))`
+/// (the quantity Barroso's Eq 13 sets out to minimise), for every γ ∈ [0, π/2]:
+///
+/// `n′_opt = max(n′_eq, n′*)`, `n′* = d μ / (μ − 2 d)`,
+///
+/// with n′_eq Barroso's equal-error n′ (n′₁ or n′₂ of Eq 13, [`n_prime_equal_error`]; ignored
+/// where it is not positive), μ the frustum's extent along the warp axis ([`warp_depth_range`])
+/// and `d = ψ(n) − n′` the near point's warp depth from the nearest extent (`a cos γ` for
+/// γ ≥ φ_y, `b cos γ − (f − n) sin γ` below). Reason: m_z(f) decreases in n′ everywhere, while
+/// m_z(n) ∝ (n′ + d)²/(n′(n′ + μ)) decreases up to its stationary point n′* and increases after
+/// it; m_z(n) > m_z(f) exactly for n′ > n′_eq. So the equal-error n′ is the optimum only when
+/// n′* ≤ n′_eq; otherwise the optimum is n′*, with m_z(n) > m_z(f) there. At γ = 0, n′* = ∞
+/// ([`NPrime::Unwarped`]). Overhead, n′_opt = n + √(f n) (LiSPSM).
+///
+/// Unit: eye-space distance. Inputs are validated types, so this cannot fail.
+///
+/// ```
+/// # use shadow_aliasing::{analytic::tilted::{n_prime_axis_minimax, n_prime_2}, LightAngle, ViewFrustum};
+/// let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6)?;
+/// let g = LightAngle::new(28f64.to_radians())?;
+/// // Barroso's n′₂ = 0.665 equalises the errors, but n′ = 4.935 has a lower maximum.
+/// assert!((n_prime_2(&view, g) - 0.66487).abs() < 1e-4);
+/// assert!((n_prime_axis_minimax(&view, g).value() - 4.9349).abs() < 1e-4);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+#[must_use]
+pub fn n_prime_axis_minimax(view: &ViewFrustum, gamma: LightAngle) -> NPrime {
+    let mu = warp_depth_range(view, gamma);
+    let d = psi_offset(view, gamma, view.near()).max(0.0);
+    let den = mu - 2.0 * d;
+    let star = if den > 0.0 {
+        d * mu / den
+    } else {
+        f64::INFINITY
+    };
+    let eq = if gamma.radians() >= view.half_fov() {
+        n_prime_1(view, gamma)
+    } else {
+        n_prime_2(view, gamma)
+    };
+    let v = star.max(eq);
+    if v.is_finite() && v > 0.0 {
+        NPrime::Finite(v)
+    } else {
+        NPrime::Unwarped
+    }
+}
+
 /// Barroso's limit angle (Eq 15), where the near and far faces of the view frustum begin to
 /// overlap in the light's view:
 ///

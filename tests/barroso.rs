@@ -1,0 +1,399 @@
+//! Barroso & Celes 2007 §3.1 against the numeric twin: the tilted light's warping frustum built
+//! as a matrix (`measure::tilted_twin`) and measured with exact derivatives.
+
+use glam::DVec3;
+use proptest::prelude::*;
+use shadow_aliasing::analytic::global::zhang_ep;
+use shadow_aliasing::analytic::tilted::{
+    falloff_r, gamma_lim, generalized_n_prime, n_prime_1, n_prime_2, n_prime_axis_minimax,
+    n_prime_equal_error, tilted_mz, tilted_mz_perpendicular, tilted_psi, tilted_xi,
+    warp_depth_range, Falloff,
+};
+use shadow_aliasing::measure::tilted_twin::{mz_along_view_axis, tilted_warp, TiltSide};
+use shadow_aliasing::measure::{frustum_max, point_error};
+use shadow_aliasing::{Error, LightAngle, NPrime, Resolutions, ViewFrustum};
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_6};
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / a.abs().max(b.abs()).max(1e-300)
+}
+
+fn cases() -> ProptestConfig {
+    ProptestConfig {
+        cases: 256,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Config {
+    view: ViewFrustum,
+    gamma: f64,
+    n_prime: f64,
+    z: f64,
+    res: Resolutions,
+}
+
+fn config() -> impl Strategy<Value = Config> {
+    (
+        0.05f64..10.0,
+        0.2f64..3.0,  // log10(f/n)
+        0.05f64..1.4, // half fov
+        0.0f64..=1.0, // γ/(π/2)
+        -2.0f64..2.5, // log10(n′/n)
+        0.0f64..=1.0, // (z − n)/(f − n)
+        (0.1f64..10.0, 0.1f64..10.0),
+    )
+        .prop_map(|(n, la, phi, g, lp, w, (ri, rt))| {
+            let f = n * 10f64.powf(la);
+            Config {
+                view: ViewFrustum::new(n, f, phi).unwrap(),
+                gamma: g * FRAC_PI_2,
+                n_prime: n * 10f64.powf(lp),
+                z: (n + w * (f - n)).clamp(n, f),
+                res: Resolutions::new(ri, 1.0, rt).unwrap(),
+            }
+        })
+}
+
+/// Lloyd 2006 Eq 8, written out: m_z = (res_i/res_t)(f − n)/(2 tan θ)(n′ + z − n)²/(z n′(n′ + f − n)).
+fn lloyd_eq8(n: f64, f: f64, tan: f64, np: f64, z: f64, res: Resolutions) -> f64 {
+    res.image() / res.t() * (f - n) / (2.0 * tan) * (np + z - n).powi(2) / (z * np * (np + f - n))
+}
+
+proptest! {
+    #![proptest_config(cases())]
+
+    /// Eq 12 is the texel width along the view axis (Eq 6) of the twin, on the axis, for every
+    /// γ ∈ (0, π/2], n′ > 0 and both sides of the viewer; unwarped too.
+    #[test]
+    fn eq12_is_the_along_axis_width_of_the_twin(c in config()) {
+        prop_assume!(c.gamma > 1e-6);
+        let g = LightAngle::new(c.gamma).unwrap();
+        let p = DVec3::new(0.0, 0.0, -c.z);
+        for np in [NPrime::Finite(c.n_prime), NPrime::Unwarped] {
+            let closed = tilted_mz(&c.view, np, g, c.z, c.res).unwrap();
+            for side in [TiltSide::InFront, TiltSide::Behind] {
+                let w = tilted_warp(&c.view, g, side, np).unwrap();
+                let meas = mz_along_view_axis(&c.view, &w.shadow, p, c.res).unwrap();
+                prop_assert!(rel(closed, meas) < 1e-9, "{closed} vs {meas} ({np:?}, {side:?})");
+            }
+        }
+    }
+
+    /// Eq 12 × sin γ is the crate's perpendicular m_z (distance between t-isolines ⊥ light), for
+    /// every γ ∈ [0, π/2], and twice it is Zhang's E_p^pers at y = 0 (unit resolutions).
+    #[test]
+    fn eq12_times_sin_gamma_is_the_perpendicular_measurement(c in config()) {
+        let g = LightAngle::new(c.gamma).unwrap();
+        let np = NPrime::Finite(c.n_prime);
+        let perp = tilted_mz_perpendicular(&c.view, np, g, c.z, c.res).unwrap();
+        let w = tilted_warp(&c.view, g, TiltSide::Behind, np).unwrap();
+        let m = point_error(&c.view, &w.shadow, DVec3::new(0.0, 0.0, -c.z), c.res).unwrap();
+        prop_assert!(rel(perp, m.mz) < 1e-9, "{perp} vs {}", m.mz);
+        if c.gamma > 1e-6 {
+            let b = tilted_mz(&c.view, np, g, c.z, c.res).unwrap();
+            prop_assert!(rel(b * c.gamma.sin(), perp) < 1e-12);
+        }
+        let unit = tilted_mz_perpendicular(&c.view, np, g, c.z, Resolutions::default()).unwrap();
+        let ep = zhang_ep(&c.view, np, g, 0.0, c.z).unwrap();
+        prop_assert!(rel(2.0 * unit, ep) < 1e-9);
+    }
+
+    /// ξ ψ²/z written from the parts (Eq 10, 11, 12) is the same function; ψ is the twin's warp
+    /// depth z′ and f′ − n′ the twin's depth range.
+    #[test]
+    fn parts_match_the_twin(c in config()) {
+        prop_assume!(c.gamma > 1e-6);
+        let g = LightAngle::new(c.gamma).unwrap();
+        let w = tilted_warp(&c.view, g, TiltSide::Behind, NPrime::Finite(c.n_prime)).unwrap();
+        let psi = tilted_psi(&c.view, c.n_prime, g, c.z).unwrap();
+        let zp = DVec3::new(0.0, 0.0, -c.z).dot(w.warp_axis) - w.z_min + c.n_prime;
+        prop_assert!(rel(psi, zp) < 1e-9);
+        prop_assert!(rel(warp_depth_range(&c.view, g), w.depth_range) < 1e-9);
+        let xi = tilted_xi(&c.view, c.n_prime, g, c.res).unwrap();
+        let m = tilted_mz(&c.view, NPrime::Finite(c.n_prime), g, c.z, c.res).unwrap();
+        prop_assert!(rel(xi * psi * psi / c.z, m) < 1e-12);
+    }
+
+    /// Overhead, Barroso's m_z is Lloyd 2006 Eq 8 and n′₁ is n + √(fn).
+    #[test]
+    fn overhead_is_lloyd(c in config()) {
+        let (n, f) = (c.view.near(), c.view.far());
+        let up = LightAngle::new(FRAC_PI_2).unwrap();
+        prop_assert!(rel(n_prime_1(&c.view, up), n + (f * n).sqrt()) < 1e-12);
+        let np = c.n_prime.max(n);
+        let m = tilted_mz(&c.view, NPrime::Finite(np), up, c.z, c.res).unwrap();
+        prop_assert!(rel(m, lloyd_eq8(n, f, c.view.tan_half_fov(), np, c.z, c.res)) < 1e-12);
+    }
+
+    /// Eq 13: at n′₁ (γ ≥ φ) or n′₂ (γ < φ), when positive, the measured along-axis m_z is equal
+    /// on the near and far planes. Where n′* ≤ n′_eq any other n′ has a larger maximum of the
+    /// two; otherwise n′* ([`n_prime_axis_minimax`]) does better.
+    #[test]
+    fn eq13_equalises_near_and_far_on_the_twin(c in config()) {
+        prop_assume!(c.gamma > 1e-3);
+        let g = LightAngle::new(c.gamma).unwrap();
+        let np = match n_prime_equal_error(&c.view, g) {
+            Ok(NPrime::Finite(v)) => v,
+            Ok(NPrime::Unwarped) => unreachable!(),
+            Err(Error::NoSolution(_)) => return Ok(()),
+            Err(e) => return Err(TestCaseError::fail(e.to_string())),
+        };
+        let v = &c.view;
+        let at = |np: f64, z: f64| {
+            let w = tilted_warp(v, g, TiltSide::Behind, NPrime::Finite(np)).unwrap();
+            mz_along_view_axis(v, &w.shadow, DVec3::new(0.0, 0.0, -z), Resolutions::default()).unwrap()
+        };
+        let (mn, mf) = (at(np, v.near()), at(np, v.far()));
+        prop_assert!(rel(mn, mf) < 1e-9, "{mn} vs {mf}");
+        let opt = n_prime_axis_minimax(v, g).value();
+        let max_at = |np: f64| at(np, v.near()).max(at(np, v.far()));
+        if rel(opt, np) < 1e-12 {
+            for k in [0.98, 1.02] {
+                prop_assert!(max_at(np * k) > mn);
+            }
+        } else {
+            prop_assert!(opt > np && max_at(opt) < mn);
+        }
+    }
+
+    /// The axis minimax n′ beats its neighbours on the twin (measured along the view axis), for
+    /// every γ, including where Eq 13 has no positive solution.
+    #[test]
+    fn axis_minimax_is_a_minimum_on_the_twin(c in config()) {
+        prop_assume!(c.gamma > 1e-3);
+        let g = LightAngle::new(c.gamma).unwrap();
+        let v = &c.view;
+        let max_at = |np: NPrime| {
+            let w = tilted_warp(v, g, TiltSide::Behind, np).unwrap();
+            let m = |z: f64| mz_along_view_axis(v, &w.shadow, DVec3::new(0.0, 0.0, -z), Resolutions::default()).unwrap();
+            m(v.near()).max(m(v.far()))
+        };
+        let opt = n_prime_axis_minimax(v, g);
+        let best = max_at(opt);
+        if let NPrime::Finite(o) = opt {
+            for k in [0.9, 0.99, 1.01, 1.1] {
+                prop_assert!(max_at(NPrime::Finite(o * k)) >= best * (1.0 - 1e-12));
+            }
+        }
+        prop_assert!(max_at(NPrime::Unwarped) >= best * (1.0 - 1e-12));
+    }
+
+    /// The fall-offs r(γ) (Eq 17, 18) rise from 0 at γ = 0 to 1 at γ_lim, and Eq 18 lies below
+    /// Eq 17 (it "descends faster"); the generalised n′ (Eq 16) is n′₁ above γ_lim, continuous
+    /// there, LiSPSM's overhead, and grows without bound as γ → 0.
+    #[test]
+    fn generalised_n_prime_properties(c in config(), u in 0.0f64..1.0) {
+        let gl = gamma_lim(&c.view);
+        let gamma = u * gl;
+        let (z, b) = (falloff_r(Falloff::Zhang, gamma, gl), falloff_r(Falloff::Barroso, gamma, gl));
+        prop_assert!((0.0..=1.0).contains(&z) && b <= z + 1e-15);
+        prop_assert!(falloff_r(Falloff::Zhang, gamma * 0.5, gl) <= z);
+        prop_assert!(falloff_r(Falloff::Barroso, gamma * 0.5, gl) <= b);
+        let at_lim = n_prime_1(&c.view, LightAngle::new(gl).unwrap());
+        prop_assert!(at_lim > 0.0);
+        for fo in [Falloff::Zhang, Falloff::Barroso] {
+            let below = generalized_n_prime(&c.view, LightAngle::new(gl * (1.0 - 1e-12)).unwrap(), fo);
+            prop_assert!(rel(below.value(), at_lim) < 1e-9);
+            let v = generalized_n_prime(&c.view, LightAngle::new(gamma).unwrap(), fo);
+            prop_assert!(v.value() >= at_lim * (1.0 - 1e-12));
+            let above = gl + (FRAC_PI_2 - gl) * u;
+            let g = LightAngle::new(above).unwrap();
+            prop_assert_eq!(generalized_n_prime(&c.view, g, fo), NPrime::Finite(n_prime_1(&c.view, g)));
+        }
+    }
+}
+
+/// γ_lim (Eq 15) is where, in the light's view, the near face's far edge meets the far face's
+/// near edge: with the light behind the viewer, the near-top and far-bottom corners have the same
+/// coordinate along the warp axis. And it exceeds φ, as Barroso requires.
+#[test]
+fn gamma_lim_is_where_near_and_far_faces_meet() {
+    for (n, f, phi) in [(1.0, 100.0, FRAC_PI_6), (0.3, 2.0, 0.1), (2.0, 2000.0, 1.2)] {
+        let view = ViewFrustum::new(n, f, phi).unwrap();
+        let gl = gamma_lim(&view);
+        assert!(gl > phi && gl < FRAC_PI_2);
+        let w = tilted_warp(
+            &view,
+            LightAngle::new(gl).unwrap(),
+            TiltSide::Behind,
+            NPrime::Unwarped,
+        )
+        .unwrap();
+        let c = view.corners();
+        // corners(): near plane (−x−y, +x−y, +x+y, −x+y), then far.
+        let near_top = c[2].dot(w.warp_axis);
+        let far_bottom = c[4].dot(w.warp_axis);
+        assert!(
+            rel(near_top, far_bottom) < 1e-12,
+            "{near_top} vs {far_bottom}"
+        );
+    }
+}
+
+/// Eq 13's two branches meet at γ = φ (both √(fn) sin φ); n′₂ is negative near parallel light
+/// (Barroso's remark); n′(γ) of Eq 16 first decreases as the light tilts from overhead (the warp
+/// becomes stronger, Fig 7), then increases below γ_lim. Numbers at n = 1, f = 100, φ = π/6
+/// (Fig 7): n′ = 11 overhead, 9.238 at 60°, n′₁(γ_lim = 30.50°) = 5.085; at 10° Zhang's fall-off
+/// gives 10.32 and Barroso's 302.2.
+#[test]
+fn figure_7_shape() {
+    let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
+    let at = |deg: f64| LightAngle::new(f64::to_radians(deg)).unwrap();
+    let s = (100.0f64).sqrt() * 0.5;
+    assert!(rel(n_prime_1(&view, LightAngle::new(FRAC_PI_6).unwrap()), s) < 1e-12);
+    assert!(rel(n_prime_2(&view, LightAngle::new(FRAC_PI_6).unwrap()), s) < 1e-12);
+    assert!(n_prime_2(&view, at(10.0)) < 0.0);
+    assert!(matches!(
+        n_prime_equal_error(&view, at(10.0)),
+        Err(Error::NoSolution(_))
+    ));
+    assert!((gamma_lim(&view).to_degrees() - 30.4987).abs() < 1e-4);
+    let nz = |deg: f64| generalized_n_prime(&view, at(deg), Falloff::Zhang).value();
+    let nb = |deg: f64| generalized_n_prime(&view, at(deg), Falloff::Barroso).value();
+    assert!((nz(90.0) - 11.0).abs() < 1e-12);
+    assert!((nz(60.0) - 9.2376).abs() < 1e-4);
+    assert!((nz(gamma_lim(&view).to_degrees()) - 5.0852).abs() < 1e-4);
+    assert!((nz(10.0) - 10.324).abs() < 1e-3);
+    assert!((nb(10.0) - 302.17).abs() < 1e-2);
+    let mut prev = nz(90.0);
+    for deg in [80.0, 70.0, 60.0, 50.0, 40.0, 31.0] {
+        assert!(nz(deg) < prev);
+        prev = nz(deg);
+    }
+    for deg in [25.0, 15.0, 5.0, 1.0, 0.0] {
+        assert!(nz(deg) > prev && nb(deg) >= nz(deg));
+        prev = nz(deg);
+    }
+    assert_eq!(
+        generalized_n_prime(&view, at(0.0), Falloff::Barroso),
+        NPrime::Unwarped
+    );
+}
+
+/// Erratum: Eq 12 measures the texel along the view axis (Eq 6), not perpendicular to the light
+/// as Eq 3's perspective aliasing and Lloyd 2006 §4.4 do; the two differ by sin γ. At n = 1,
+/// f = 100, φ = 30°, γ = 45°, n′ = n′₁ = 7.370, z = n: Eq 12 gives 9.429, the perpendicular
+/// measurement 6.668 (the along-axis measurement of the twin, 9.429).
+#[test]
+fn eq12_is_along_the_view_axis_not_perpendicular() {
+    let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
+    let g = LightAngle::new(45f64.to_radians()).unwrap();
+    let np = n_prime_1(&view, g);
+    assert!((np - 7.370).abs() < 1e-3);
+    let w = tilted_warp(&view, g, TiltSide::Behind, NPrime::Finite(np)).unwrap();
+    let p = DVec3::new(0.0, 0.0, -1.0);
+    let perp = point_error(&view, &w.shadow, p, Resolutions::default())
+        .unwrap()
+        .mz;
+    let along = mz_along_view_axis(&view, &w.shadow, p, Resolutions::default()).unwrap();
+    let eq12 = tilted_mz(&view, NPrime::Finite(np), g, 1.0, Resolutions::default()).unwrap();
+    assert!((eq12 - 9.429).abs() < 1e-3, "{eq12}");
+    assert!((perp - 6.668).abs() < 1e-3, "{perp}");
+    assert!(rel(eq12, along) < 1e-12);
+}
+
+/// Erratum: Eq 13 equalises m_z on the view axis only. Over the frustum the maximum is at the
+/// vertices (Zhang's G depends on y), and n′₁ does not minimise it: at n = 1, f = 100, φ = 30°,
+/// γ = 60°, n′₁ = 9.238 gives a measured maximum (perpendicular, over the eight vertices)
+/// M_z = 13.37, while n′ = 12.11 gives 10.43.
+#[test]
+fn eq13_does_not_minimise_the_frustum_maximum() {
+    let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
+    let g = LightAngle::new(60f64.to_radians()).unwrap();
+    let mz = |np: f64| {
+        let w = tilted_warp(&view, g, TiltSide::Behind, NPrime::Finite(np)).unwrap();
+        frustum_max(&view, &w.shadow).unwrap().max_mz
+    };
+    let n1 = n_prime_1(&view, g);
+    assert!((n1 - 9.2376).abs() < 1e-4);
+    assert!((mz(n1) - 13.37).abs() < 1e-2, "{}", mz(n1));
+    assert!((mz(12.11) - 10.43).abs() < 1e-2, "{}", mz(12.11));
+}
+
+#[test]
+fn domain_errors() {
+    let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
+    let g = LightAngle::new(1.0).unwrap();
+    let res = Resolutions::default();
+    let name = |r: Result<f64, Error>| match r {
+        Err(Error::InvalidArgument { name, .. }) => name,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(
+        name(tilted_mz(&view, NPrime::Finite(0.0), g, 2.0, res)),
+        "n_prime"
+    );
+    assert_eq!(
+        name(tilted_mz(&view, NPrime::Finite(f64::NAN), g, 2.0, res)),
+        "n_prime"
+    );
+    assert_eq!(
+        name(tilted_mz(&view, NPrime::Finite(1.0), g, 0.5, res)),
+        "z"
+    );
+    assert_eq!(
+        name(tilted_mz(&view, NPrime::Finite(1.0), g, f64::NAN, res)),
+        "z"
+    );
+    let g0 = LightAngle::new(0.0).unwrap();
+    assert_eq!(
+        name(tilted_mz(&view, NPrime::Unwarped, g0, 2.0, res)),
+        "light_angle"
+    );
+    assert_eq!(name(tilted_xi(&view, 1.0, g0, res)), "light_angle");
+    assert_eq!(name(tilted_psi(&view, -1.0, g, 2.0)), "n_prime");
+    // Perpendicular m_z is finite at γ = 0 and equals the twin there.
+    let w = tilted_warp(&view, g0, TiltSide::Behind, NPrime::Finite(3.0)).unwrap();
+    let m = point_error(&view, &w.shadow, DVec3::new(0.0, 0.0, -7.0), res).unwrap();
+    let c = tilted_mz_perpendicular(&view, NPrime::Finite(3.0), g0, 7.0, res).unwrap();
+    assert!(rel(c, m.mz) < 1e-12);
+    assert!(mz_along_view_axis(&view, &w.shadow, DVec3::new(0.0, 0.0, -7.0), res).is_err());
+}
+
+/// Erratum: Eq 13 ("the maximum … can be minimized by making its value equal on those
+/// extremes") holds only when m_z(n) is already increasing in n′ at the equal-error n′. At n = 1,
+/// f = 100, φ = 30°, γ = 28°, n′₂ = 0.6649 equalises the along-axis errors at 73.51, while
+/// n′ = 4.935 has maximum 31.73 (measured on the twin). And where n′₂ ≤ 0 (γ = 20°), which
+/// Barroso reads as "impossible to satisfy", the maximum still has a finite minimiser n′ = 32.68
+/// (maximum 167.73, unwarped 274.75).
+#[test]
+fn eq13_is_not_always_the_minimax() {
+    let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
+    let max_at = |g: LightAngle, np: NPrime| {
+        let w = tilted_warp(&view, g, TiltSide::Behind, np).unwrap();
+        let m = |z: f64| {
+            mz_along_view_axis(
+                &view,
+                &w.shadow,
+                DVec3::new(0.0, 0.0, -z),
+                Resolutions::default(),
+            )
+            .unwrap()
+        };
+        m(1.0).max(m(100.0))
+    };
+    let g = LightAngle::new(28f64.to_radians()).unwrap();
+    let n2 = n_prime_2(&view, g);
+    assert!((n2 - 0.6649).abs() < 1e-4);
+    assert!(
+        (max_at(g, NPrime::Finite(n2)) - 73.51).abs() < 1e-2,
+        "{}",
+        max_at(g, NPrime::Finite(n2))
+    );
+    let opt = n_prime_axis_minimax(&view, g);
+    assert!((opt.value() - 4.9349).abs() < 1e-4, "{}", opt.value());
+    assert!((max_at(g, opt) - 31.73).abs() < 1e-2, "{}", max_at(g, opt));
+    let g = LightAngle::new(20f64.to_radians()).unwrap();
+    assert!(n_prime_2(&view, g) < 0.0);
+    let opt = n_prime_axis_minimax(&view, g);
+    assert!((opt.value() - 32.68).abs() < 1e-2);
+    assert!((max_at(g, opt) - 167.73).abs() < 1e-2, "{}", max_at(g, opt));
+    assert!(
+        (max_at(g, NPrime::Unwarped) - 274.75).abs() < 1e-2,
+        "{}",
+        max_at(g, NPrime::Unwarped)
+    );
+}

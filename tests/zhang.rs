@@ -1,0 +1,531 @@
+//! Zhang, Zhao & Sun 2009 against the numeric twin: the warping frustum of Eq 12 built as a
+//! matrix (`measure::tilted_twin`) and measured with exact derivatives.
+
+use glam::DVec3;
+use proptest::prelude::*;
+use shadow_aliasing::analytic::global::{
+    zhang_ep, zhang_ep_local, zhang_eq, zhang_eq_local, zhang_f_p, zhang_f_q, zhang_factorisation,
+    zhang_g, zhang_mu, zhang_tan_phi_w, zhang_z_w, SurfaceSlope,
+};
+use shadow_aliasing::measure::tilted_twin::{
+    aliasing_functions, tilted_warp, TiltSide, TiltedWarp,
+};
+use shadow_aliasing::measure::{point_error, PointError};
+use shadow_aliasing::{Error, LightAngle, NPrime, Resolutions, ViewFrustum};
+use std::f64::consts::{FRAC_PI_2, FRAC_PI_6};
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / a.abs().max(b.abs()).max(1e-300)
+}
+
+fn twin(view: &ViewFrustum, theta: f64, lambda: NPrime) -> TiltedWarp {
+    tilted_warp(
+        view,
+        LightAngle::new(theta).unwrap(),
+        TiltSide::InFront,
+        lambda,
+    )
+    .unwrap()
+}
+
+fn measured(view: &ViewFrustum, w: &TiltedWarp, x: f64, y: f64, z: f64) -> PointError {
+    point_error(
+        view,
+        &w.shadow,
+        DVec3::new(x, y, -z),
+        Resolutions::default(),
+    )
+    .unwrap()
+}
+
+/// A random valid configuration: view, θ, λ, and a point (x, y, z) inside the frustum.
+#[derive(Debug, Clone, Copy)]
+struct Config {
+    view: ViewFrustum,
+    theta: f64,
+    lambda: f64,
+    x: f64,
+    y: f64,
+    z: f64,
+}
+
+fn config() -> impl Strategy<Value = Config> {
+    (
+        0.05f64..10.0,
+        0.2f64..3.0,   // log10(f/n)
+        0.05f64..1.4,  // half fov
+        0.0f64..=1.0,  // θ / (π/2)
+        -2.0f64..2.5,  // log10(λ/n)
+        -1.0f64..=1.0, // y / (z tan φ)
+        -1.0f64..=1.0, // x / (z tan φ)
+        0.0f64..=1.0,  // (z − n)/(f − n)
+    )
+        .prop_map(|(n, la, phi, th, ll, u, v, w)| {
+            let f = n * 10f64.powf(la);
+            let view = ViewFrustum::new(n, f, phi).unwrap();
+            let z = (n + w * (f - n)).clamp(n, f);
+            let h = z * phi.tan();
+            Config {
+                view,
+                theta: th * FRAC_PI_2,
+                lambda: n * 10f64.powf(ll),
+                x: v * h,
+                y: u * h,
+                z,
+            }
+        })
+}
+
+fn cases() -> ProptestConfig {
+    ProptestConfig {
+        cases: 256,
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
+}
+
+proptest! {
+    #![proptest_config(cases())]
+
+    /// μ, z_w and tan φ_w (crate forms) are the fitted warping frustum's.
+    #[test]
+    fn frame_quantities_match_the_twin(c in config()) {
+        let th = LightAngle::new(c.theta).unwrap();
+        let w = twin(&c.view, c.theta, NPrime::Finite(c.lambda));
+        prop_assert!(rel(zhang_mu(&c.view, th), w.depth_range) < 1e-9);
+        let p = DVec3::new(c.x, c.y, -c.z);
+        let zw_twin = p.dot(w.warp_axis) - w.z_min + c.lambda;
+        prop_assert!(rel(zhang_z_w(&c.view, c.lambda, th, c.y, c.z).unwrap(), zw_twin) < 1e-9);
+        prop_assert!(rel(zhang_tan_phi_w(&c.view, c.lambda, th).unwrap(), w.half_extent_x) < 1e-9);
+    }
+
+    /// Eq 13, 14: the global representation is the measured perspective aliasing,
+    /// E_q^pers = 2 m_x and E_p^pers = 2 m_z (unit resolutions), at every point of the frustum,
+    /// for every θ ∈ [0, π/2] and λ > 0.
+    #[test]
+    fn global_representation_matches_the_twin(c in config()) {
+        let th = LightAngle::new(c.theta).unwrap();
+        let l = NPrime::Finite(c.lambda);
+        let m = measured(&c.view, &twin(&c.view, c.theta, l), c.x, c.y, c.z);
+        let eq = zhang_eq(&c.view, l, th, c.y, c.z).unwrap();
+        let ep = zhang_ep(&c.view, l, th, c.y, c.z).unwrap();
+        prop_assert!(rel(eq, 2.0 * m.mx) < 1e-9, "E_q {eq} vs measured {}", 2.0 * m.mx);
+        prop_assert!(rel(ep, 2.0 * m.mz) < 1e-9, "E_p {ep} vs measured {}", 2.0 * m.mz);
+        // The unwarped map too.
+        let m = measured(&c.view, &twin(&c.view, c.theta, NPrime::Unwarped), c.x, c.y, c.z);
+        prop_assert!(rel(zhang_eq(&c.view, NPrime::Unwarped, th, c.y, c.z).unwrap(), 2.0 * m.mx) < 1e-9);
+        prop_assert!(rel(zhang_ep(&c.view, NPrime::Unwarped, th, c.y, c.z).unwrap(), 2.0 * m.mz) < 1e-9);
+    }
+
+    /// The factored form F·(z + G)^k/z (crate's F_q, F_p, G) equals the direct E^pers for θ > 0.
+    #[test]
+    fn f_and_g_factor_the_global_representation(c in config()) {
+        prop_assume!(c.theta > 1e-3);
+        let th = LightAngle::new(c.theta).unwrap();
+        let l = NPrime::Finite(c.lambda);
+        let g = zhang_g(&c.view, c.lambda, th, c.y).unwrap();
+        let fq = zhang_f_q(&c.view, c.lambda, th).unwrap();
+        let fp = zhang_f_p(&c.view, c.lambda, th).unwrap();
+        let zg = c.z + g;
+        let eq = zhang_eq(&c.view, l, th, c.y, c.z).unwrap();
+        let ep = zhang_ep(&c.view, l, th, c.y, c.z).unwrap();
+        // z + G = z_w / sin θ: compare with the twin's z_w to the same tolerance.
+        prop_assert!(rel(fq * zg / c.z, eq) < 1e-8, "{} vs {eq}", fq * zg / c.z);
+        prop_assert!(rel(fp * zg * zg / c.z, ep) < 1e-8, "{} vs {ep}", fp * zg * zg / c.z);
+    }
+
+    /// Eq 10, 11 and the Appendix: E^pers × |E^proj| equals Zhang's full aliasing functions
+    /// |dq/dt|, |dp/ds| (Eq 1) along the shaft, from exact gradients of both maps.
+    #[test]
+    fn factorisation_matches_total_differentials(
+        c in config(), kx in -3.0f64..3.0, ky in -3.0f64..3.0,
+    ) {
+        let th = LightAngle::new(c.theta).unwrap();
+        let w = twin(&c.view, c.theta, NPrime::Finite(c.lambda));
+        let fac = zhang_factorisation(&c.view, c.lambda, th, c.x, c.y, c.z, SurfaceSlope { k_x: kx, k_y: ky });
+        let full = aliasing_functions(&c.view, &w.shadow, DVec3::new(c.x, c.y, -c.z), DVec3::new(kx, ky, -1.0));
+        match (fac, full) {
+            (Ok(fac), Ok(full)) => {
+                // Skip near-singular shafts (almost parallel to the light), where both blow up.
+                prop_assume!(fac.eq_proj < 1e6 && fac.ep_proj < 1e6);
+                prop_assert!(rel(fac.e_q(), full.e_q) < 1e-8, "{} vs {}", fac.e_q(), full.e_q);
+                prop_assert!(rel(fac.e_p(), full.e_p) < 1e-8, "{} vs {}", fac.e_p(), full.e_p);
+            }
+            (Err(Error::Degenerate(_)), _) | (_, Err(Error::Degenerate(_))) => {}
+            (a, b) => prop_assert!(false, "{a:?} {b:?}"),
+        }
+    }
+
+    /// At θ = π/2 and y = 0 the global representation is the local one (Eq 8, 9), which is twice
+    /// Lloyd 2006 Eq 7, 8 (written out here) with unit resolutions, for λ = n′ ≥ n.
+    #[test]
+    fn local_is_global_overhead_and_twice_lloyd(c in config()) {
+        let (n, f, t) = (c.view.near(), c.view.far(), c.view.tan_half_fov());
+        let l = NPrime::Finite(c.lambda);
+        let up = LightAngle::new(FRAC_PI_2).unwrap();
+        let (eql, epl) = (zhang_eq_local(&c.view, l, c.z).unwrap(), zhang_ep_local(&c.view, l, c.z).unwrap());
+        prop_assert!(rel(zhang_eq(&c.view, l, up, 0.0, c.z).unwrap(), eql) < 1e-9);
+        prop_assert!(rel(zhang_ep(&c.view, l, up, 0.0, c.z).unwrap(), epl) < 1e-9);
+        let m = measured(&c.view, &twin(&c.view, FRAC_PI_2, l), 0.0, 0.0, c.z);
+        prop_assert!(rel(eql, 2.0 * m.mx) < 1e-9);
+        prop_assert!(rel(epl, 2.0 * m.mz) < 1e-9);
+        let np = c.lambda.max(n);
+        let (ln, z) = (NPrime::Finite(np), c.z);
+        let lloyd_mx = f * (np + z - n) / (z * (np + f - n));
+        let lloyd_mz = (f - n) / (2.0 * t) * (np + z - n).powi(2) / (z * np * (np + f - n));
+        prop_assert!(rel(zhang_eq_local(&c.view, ln, z).unwrap(), 2.0 * lloyd_mx) < 1e-12);
+        prop_assert!(rel(zhang_ep_local(&c.view, ln, z).unwrap(), 2.0 * lloyd_mz) < 1e-12);
+    }
+
+    /// The light behind the viewer is the mirror image y → −y of Zhang's light in front.
+    #[test]
+    fn behind_is_the_mirror_image(c in config()) {
+        let th = LightAngle::new(c.theta).unwrap();
+        let l = NPrime::Finite(c.lambda);
+        let wb = tilted_warp(&c.view, th, TiltSide::Behind, l).unwrap();
+        let m = measured(&c.view, &wb, c.x, -c.y, c.z);
+        prop_assert!(rel(zhang_ep(&c.view, l, th, c.y, c.z).unwrap(), 2.0 * m.mz) < 1e-9);
+        prop_assert!(rel(zhang_eq(&c.view, l, th, c.y, c.z).unwrap(), 2.0 * m.mx) < 1e-9);
+    }
+}
+
+/// The printed Appendix forms, written out from the paper, for the errata comparisons.
+mod printed {
+    pub fn tan_phi_w(n: f64, f: f64, phi: f64, lambda: f64, theta: f64) -> f64 {
+        let mu = mu(n, f, phi, theta);
+        if theta >= phi {
+            f * phi.tan() / (mu + lambda)
+        } else {
+            f * phi.tan() / lambda
+        }
+    }
+    pub fn mu(n: f64, f: f64, phi: f64, theta: f64) -> f64 {
+        let (tp, tt) = (phi.tan(), theta.tan());
+        if theta >= phi {
+            (n * tp / tt + f - n + f * tp / tt) * theta.sin()
+        } else {
+            2.0 * f * tp * theta.cos()
+        }
+    }
+    pub fn f_p(n: f64, f: f64, phi: f64, lambda: f64, theta: f64) -> f64 {
+        let (tp, tt, s) = (phi.tan(), theta.tan(), theta.sin());
+        if theta >= phi {
+            let k = f - n + (f + n) * tp / tt;
+            s * s * k / (tp * lambda * (lambda + k * s))
+        } else {
+            2.0 * f * s * s / (lambda * (lambda + 2.0 * f * tp * theta.cos()) * tp)
+        }
+    }
+    pub fn f_q(n: f64, f: f64, phi: f64, lambda: f64, theta: f64) -> f64 {
+        let (tp, tt, s) = (phi.tan(), theta.tan(), theta.sin());
+        if theta >= phi {
+            2.0 * f * s / (lambda + (f - n) * (1.0 - tp / tt) * s)
+        } else {
+            2.0 * f * s / lambda
+        }
+    }
+    pub fn g(n: f64, f: f64, phi: f64, lambda: f64, theta: f64, y: f64) -> f64 {
+        let (tp, tt, s) = (phi.tan(), theta.tan(), theta.sin());
+        let r = if theta >= phi { n } else { f };
+        lambda / s - r + (r * tp - y) / tt
+    }
+    pub fn z_w(n: f64, f: f64, phi: f64, lambda: f64, theta: f64, y: f64, z: f64) -> f64 {
+        let (tp, tt) = (phi.tan(), theta.tan());
+        if theta >= phi {
+            (z - n + n * tp / tt - y / tt) * theta.sin() + lambda
+        } else {
+            (f * tp - (f - z) * tt - y) * theta.cos() + lambda
+        }
+    }
+}
+
+/// Printed μ, z_w, G agree with the twin; printed F_q agrees while the far corners bound W.
+#[test]
+fn printed_mu_z_w_g_f_q_agree_with_the_twin() {
+    let (n, f, phi) = (1.0, 100.0, FRAC_PI_6);
+    let view = ViewFrustum::new(n, f, phi).unwrap();
+    for theta in [0.2, 0.5, 0.9, 1.2, 1.5] {
+        let lambda = 11.0;
+        let w = twin(&view, theta, NPrime::Finite(lambda));
+        assert!(rel(printed::mu(n, f, phi, theta), w.depth_range) < 1e-12);
+        for (y, z) in [(0.0, 1.0), (-20.0, 40.0), (57.0, 99.0)] {
+            let p = DVec3::new(0.0, y, -z);
+            let zw = p.dot(w.warp_axis) - w.z_min + lambda;
+            assert!(rel(printed::z_w(n, f, phi, lambda, theta, y, z), zw) < 1e-12);
+            let g = printed::g(n, f, phi, lambda, theta, y);
+            assert!(rel((z + g) * theta.sin(), zw) < 1e-12);
+            let m = measured(&view, &w, 0.0, y, z);
+            assert!(
+                rel(
+                    printed::f_q(n, f, phi, lambda, theta) * (z + g) / z,
+                    2.0 * m.mx
+                ) < 1e-9
+            );
+        }
+    }
+}
+
+/// Erratum: Zhang's printed tan φ_w = f tan φ/(μ + λ) for θ ∈ [φ, π/2] leaves the far-top
+/// corners outside the warping frustum. At n = 1, f = 100, φ = 30°, θ = 60°, λ = 11: printed
+/// 0.4586, fitted (twin) 0.8471; the far-top corner's s would be 1.424 instead of ≤ 1.
+#[test]
+fn printed_tan_phi_w_cuts_off_the_far_top_corners() {
+    let (n, f, phi, theta, lambda) = (1.0, 100.0, FRAC_PI_6, 60f64.to_radians(), 11.0);
+    let view = ViewFrustum::new(n, f, phi).unwrap();
+    let w = twin(&view, theta, NPrime::Finite(lambda));
+    let printed = printed::tan_phi_w(n, f, phi, lambda, theta);
+    let fitted = zhang_tan_phi_w(&view, lambda, LightAngle::new(theta).unwrap()).unwrap();
+    assert!(rel(fitted, w.half_extent_x) < 1e-12);
+    assert!((printed - 0.4586).abs() < 5e-5, "{printed}");
+    assert!((fitted - 0.8471).abs() < 5e-5, "{fitted}");
+    // The far-top corner (x = f tan φ, y = f tan φ) under the printed W: s = ½ x/(z_w tan φ_w) + ½.
+    let b = f * phi.tan();
+    let zw = printed::z_w(n, f, phi, lambda, theta, b, f);
+    let s = 0.5 * b / (zw * printed) + 0.5;
+    assert!((s - 1.4235).abs() < 5e-4, "{s}");
+    // Overhead they agree.
+    assert!(
+        rel(
+            printed::tan_phi_w(n, f, phi, lambda, FRAC_PI_2),
+            zhang_tan_phi_w(&view, lambda, LightAngle::new(FRAC_PI_2).unwrap()).unwrap()
+        ) < 1e-12
+    );
+}
+
+/// Erratum: the printed F_p is too large by 1/sin θ for θ ∈ [φ, π/2] and by 1/(tan φ cos θ) for
+/// θ < φ. At n = 1, f = 100, φ = 30°, λ = 11, y = 0, z = 10: θ = 60°, printed F_p (z+G)²/z =
+/// 6.043, measured 2 m_z = 5.233; θ = 20°, printed 31.31, measured 16.99.
+#[test]
+fn printed_f_p_disagrees_with_the_twin() {
+    let (n, f, phi, lambda, z) = (1.0, 100.0, FRAC_PI_6, 11.0, 10.0);
+    let view = ViewFrustum::new(n, f, phi).unwrap();
+    for (deg, want_printed, want_measured, factor) in [
+        (60.0f64, 6.043, 5.233, 1.0 / 60f64.to_radians().sin()),
+        (
+            20.0,
+            31.31,
+            16.99,
+            1.0 / (phi.tan() * 20f64.to_radians().cos()),
+        ),
+    ] {
+        let theta = deg.to_radians();
+        let g = printed::g(n, f, phi, lambda, theta, 0.0);
+        let pr = printed::f_p(n, f, phi, lambda, theta) * (z + g).powi(2) / z;
+        let m = measured(
+            &view,
+            &twin(&view, theta, NPrime::Finite(lambda)),
+            0.0,
+            0.0,
+            z,
+        );
+        assert!((pr - want_printed).abs() < 1e-2, "printed {pr} at {deg}°");
+        assert!(
+            (2.0 * m.mz - want_measured).abs() < 1e-2,
+            "measured {} at {deg}°",
+            2.0 * m.mz
+        );
+        assert!(rel(pr / (2.0 * m.mz), factor) < 1e-9);
+        let th = LightAngle::new(theta).unwrap();
+        let ours = zhang_f_p(&view, lambda, th).unwrap() * (z + g).powi(2) / z;
+        assert!(rel(ours, 2.0 * m.mz) < 1e-9);
+    }
+}
+
+/// Erratum (domain): F_q as printed, and Eq 8, assume the far corners bound the warping frustum,
+/// λ ≥ n sin(θ − φ)/cos φ (λ ≥ n overhead). Below it the near corners bound it. At n = 1,
+/// f = 100, φ = 30°, θ = 90°, λ = 0.5, z = 1: Eq 8 gives 1.005, the fitted map 2.000; at
+/// θ = 60°, λ = 0.2: printed F_q (z + G)/z at (y, z) = (0, 1) is 1.7040, measured 4.8868.
+#[test]
+fn printed_f_q_and_eq8_need_far_corners_to_bound_w() {
+    let (n, f, phi) = (1.0, 100.0, FRAC_PI_6);
+    let view = ViewFrustum::new(n, f, phi).unwrap();
+    let eq8 = |l: f64, z: f64| 2.0 * f / (f - n + l) * (z - n + l) / z;
+    let m = measured(
+        &view,
+        &twin(&view, FRAC_PI_2, NPrime::Finite(0.5)),
+        0.0,
+        0.0,
+        1.0,
+    );
+    assert!((eq8(0.5, 1.0) - 1.005).abs() < 1e-3);
+    assert!((2.0 * m.mx - 2.0).abs() < 1e-9);
+    assert!(
+        rel(
+            zhang_eq_local(&view, NPrime::Finite(0.5), 1.0).unwrap(),
+            2.0 * m.mx
+        ) < 1e-12
+    );
+    let theta = 60f64.to_radians();
+    let (lambda, y, z) = (0.2, 0.0, 1.0);
+    let g = printed::g(n, f, phi, lambda, theta, y);
+    let pr = printed::f_q(n, f, phi, lambda, theta) * (z + g) / z;
+    let m = measured(
+        &view,
+        &twin(&view, theta, NPrime::Finite(lambda)),
+        0.0,
+        y,
+        z,
+    );
+    assert!((pr - 1.7040).abs() < 1e-4, "{pr}");
+    assert!((2.0 * m.mx - 4.8868).abs() < 1e-4, "{}", 2.0 * m.mx);
+    // Above the bound the printed F_q is right.
+    let bound = n * (theta - phi).sin() / phi.cos();
+    let l = bound * 1.01;
+    let th = LightAngle::new(theta).unwrap();
+    assert!(
+        rel(
+            printed::f_q(n, f, phi, l, theta),
+            zhang_f_q(&view, l, th).unwrap()
+        ) < 1e-12
+    );
+}
+
+/// Erratum: §2.4 prints E_q^pers = 2 tan φ_w z_w / tan φ without the 1/z the Appendix has; the
+/// §2.1 maps t(x, z) = ½ x/(z tan φ_w) + ½, s(z) = (λ + μ)/μ (1 − λ/z) use the view depth z where
+/// the warp depth z_w = z − n + λ belongs (Eq 8, 9 follow from z_w, not z). At n = 1, f = 100,
+/// φ = 30°, λ = 11, θ = 90°, z = 10 (y = 0): §2.4's form gives 36.36, measured 2 m_x = 3.636; the
+/// printed s(z) gives E_p = (1/tan φ)(1/z)(ds/dz)⁻¹ = 1.417, measured 2 m_z = 5.669.
+#[test]
+fn printed_section_2_forms_disagree_with_the_twin() {
+    let (n, f, phi, lambda, z) = (1.0, 100.0, FRAC_PI_6, 11.0, 10.0);
+    let view = ViewFrustum::new(n, f, phi).unwrap();
+    let m = measured(
+        &view,
+        &twin(&view, FRAC_PI_2, NPrime::Finite(lambda)),
+        0.0,
+        0.0,
+        z,
+    );
+    let (tp, mu) = (phi.tan(), f - n);
+    let tan_w = f * tp / (mu + lambda);
+    let zw = z - n + lambda;
+    let eq_24 = 2.0 * tan_w * zw / tp;
+    assert!((eq_24 - 36.36).abs() < 1e-2, "{eq_24}");
+    assert!((2.0 * m.mx - 3.636).abs() < 1e-3, "{}", 2.0 * m.mx);
+    assert!(rel(eq_24 / z, 2.0 * m.mx) < 1e-12);
+    // ds/dz of the printed s(z) = (λ+μ)/μ (1 − λ/z) is (λ+μ)λ/(μ z²).
+    let ep_printed_s = 1.0 / (tp * z) * mu * z * z / ((lambda + mu) * lambda);
+    assert!((ep_printed_s - 1.417).abs() < 1e-3, "{ep_printed_s}");
+    assert!((2.0 * m.mz - 5.669).abs() < 1e-3, "{}", 2.0 * m.mz);
+    let ep_zw = 1.0 / (tp * z) * mu * zw * zw / ((lambda + mu) * lambda);
+    assert!(rel(ep_zw, 2.0 * m.mz) < 1e-12);
+}
+
+/// §3.1 claims E_p, E_q, E_p×q are all smallest at (z = f, y = f tan φ). For E_p with LiSPSM's
+/// λ = n + √(fn) = 11 overhead (n = 1, f = 100, φ = 30°) the minimum is at z = √(fn) = 10 on
+/// every y: measured E_p = 5.669 there against 17.15 at (f, f tan φ).
+#[test]
+fn section_3_1_minimum_of_e_p_is_not_at_the_far_plane() {
+    let (n, f, phi, lambda) = (1.0, 100.0, FRAC_PI_6, 11.0);
+    let view = ViewFrustum::new(n, f, phi).unwrap();
+    let w = twin(&view, FRAC_PI_2, NPrime::Finite(lambda));
+    let at = |z: f64| 2.0 * measured(&view, &w, 0.0, z * phi.tan(), z).mz;
+    let (mid, far) = (at(10.0), at(100.0));
+    assert!((mid - 5.669).abs() < 1e-3, "{mid}");
+    assert!((far - 17.15).abs() < 1e-2, "{far}");
+    // And it is the minimum along the top edge.
+    for z in [5.0, 9.0, 11.0, 20.0] {
+        assert!(at(z) > mid);
+    }
+}
+
+/// §3.1 claims the maximum of E_q is at (z = n, y = −n tan φ) "regardless of the λ selection".
+/// With λ < n sin(θ − φ)/cos φ it is on the far plane: n = 1, f = 100, φ = 30°, θ = 60°,
+/// λ = 0.2: measured E_q = 7.774 at (n, −n tan φ), 11.51 at (f, −f tan φ).
+#[test]
+fn section_3_1_maximum_of_e_q_depends_on_lambda() {
+    let (n, f, phi, theta, lambda) = (1.0, 100.0, FRAC_PI_6, 60f64.to_radians(), 0.2);
+    let view = ViewFrustum::new(n, f, phi).unwrap();
+    let w = twin(&view, theta, NPrime::Finite(lambda));
+    let near = 2.0 * measured(&view, &w, 0.0, -n * phi.tan(), n).mx;
+    let far = 2.0 * measured(&view, &w, 0.0, -f * phi.tan(), f).mx;
+    assert!((near - 7.774).abs() < 1e-3, "{near}");
+    assert!((far - 11.51).abs() < 1e-2, "{far}");
+    // With LiSPSM's λ the claim holds.
+    let w = twin(&view, theta, NPrime::Finite(11.0));
+    let near = measured(&view, &w, 0.0, -n * phi.tan(), n).mx;
+    let far = measured(&view, &w, 0.0, -f * phi.tan(), f).mx;
+    assert!(near > far);
+}
+
+/// §3.2: for θ ≤ φ the light sees the frustum as a quad (the near face projects inside the far
+/// face), and at θ = 0 E_p^pers z is constant along z on every line of fixed y, whatever λ: the
+/// warp cannot change the eye's hyperbolic 1/z. Measured with the twin.
+#[test]
+fn degenerate_case_claims_hold() {
+    let (n, f, phi) = (1.0, 100.0, FRAC_PI_6);
+    let view = ViewFrustum::new(n, f, phi).unwrap();
+    for theta in [0.0, 0.2, phi] {
+        let w = twin(&view, theta, NPrime::Finite(5.0));
+        let c = view.corners();
+        let proj = |p: DVec3| (p.x, p.dot(w.warp_axis));
+        let (fx, fz): (Vec<f64>, Vec<f64>) = c[4..].iter().map(|&p| proj(p)).unzip();
+        for &p in &c[..4] {
+            let (x, zl) = proj(p);
+            assert!(x.abs() <= fx.iter().fold(0.0f64, |a, b| a.max(b.abs())) + 1e-12);
+            let (lo, hi) = fz
+                .iter()
+                .fold((f64::MAX, f64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
+            assert!(zl >= lo - 1e-9 && zl <= hi + 1e-9, "theta {theta}");
+        }
+    }
+    for lambda in [0.5, 5.0, 500.0] {
+        let w = twin(&view, 0.0, NPrime::Finite(lambda));
+        let y = 0.3;
+        let base = 2.0 * measured(&view, &w, 0.0, y, 1.0).mz * 1.0;
+        for z in [2.0, 10.0, 100.0] {
+            let v = 2.0 * measured(&view, &w, 0.0, y, z).mz * z;
+            assert!(rel(v, base) < 1e-9);
+        }
+    }
+}
+
+/// The global representation F·(z + G)/z is 0 · ∞ at θ = 0; the crate's E is finite and equals
+/// the twin there, and G is refused.
+#[test]
+fn theta_zero_is_finite() {
+    let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
+    let th = LightAngle::new(0.0).unwrap();
+    assert_eq!(zhang_f_q(&view, 3.0, th).unwrap(), 0.0);
+    assert!(matches!(
+        zhang_g(&view, 3.0, th, 0.0),
+        Err(Error::InvalidArgument {
+            name: "light_angle",
+            ..
+        })
+    ));
+    let m = measured(&view, &twin(&view, 0.0, NPrime::Finite(3.0)), 0.0, 1.0, 7.0);
+    let eq = zhang_eq(&view, NPrime::Finite(3.0), th, 1.0, 7.0).unwrap();
+    assert!(rel(eq, 2.0 * m.mx) < 1e-12);
+}
+
+#[test]
+fn domain_errors_name_the_argument() {
+    let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
+    let th = LightAngle::new(1.0).unwrap();
+    let name = |r: Result<f64, Error>| match r {
+        Err(Error::InvalidArgument { name, .. }) => name,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(
+        name(zhang_eq(&view, NPrime::Finite(0.0), th, 0.0, 2.0)),
+        "lambda"
+    );
+    assert_eq!(
+        name(zhang_ep(&view, NPrime::Finite(f64::NAN), th, 0.0, 2.0)),
+        "lambda"
+    );
+    assert_eq!(
+        name(zhang_ep(&view, NPrime::Finite(1.0), th, 0.0, 0.5)),
+        "z"
+    );
+    assert_eq!(
+        name(zhang_eq(&view, NPrime::Finite(1.0), th, 5.0, 2.0)),
+        "y"
+    );
+    assert_eq!(
+        name(zhang_eq_local(&view, NPrime::Finite(1.0), f64::INFINITY)),
+        "z"
+    );
+    assert!(zhang_ep_local(&view, NPrime::Unwarped, 3.0).unwrap() > 0.0);
+}
