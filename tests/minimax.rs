@@ -40,7 +40,7 @@ proptest! {
         fov_deg in 5.0f64..75.0,
         aspect in 0.6f64..2.0,
         elev in -1.55f64..1.55,
-        azim in 0.0f64..6.28,
+        azim in 0.0f64..std::f64::consts::TAU,
     ) {
         let view = ViewFrustum::with_aspect(n, n * log_ratio.exp(), fov_deg.to_radians(), aspect).unwrap();
         let l = light_from_angles(elev, azim);

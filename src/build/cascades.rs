@@ -1,1 +1,395 @@
-//! (being written)
+//! z-partitions (cascaded shadow maps): the view frustum cut along its depth, each partition with
+//! its own fitted map (Lloyd 2006 §5.2, Eq 15, 16), and stable cascades as engines build them.
+//!
+//! # z-partitions
+//!
+//! [`cascades`] takes the split planes `near = z₀ < z₁ < … < z_k = far` of a
+//! [`Splits`] (any [`SplitScheme`]: uniform, self-similar, practical λ, Barroso's adaptive,
+//! Unreal's exponent; or explicit depths, [`Splits::from_planes`]; or fractions of the depth range,
+//! [`splits_from_fractions`]) and fits one map per partition with [`warp()`] and a [`WarpRule`]:
+//! the rule sees the partition as its own view frustum `[z_i, z_{i+1}]`, so `WarpRule::Lispsm`
+//! is `n′ = z_i + √(z_i z_{i+1})` per partition, as Lloyd 2006 §5.2 fits "a warping frustum to each
+//! partition separately". With the light overhead and self-similar planes this gives Lloyd 2006
+//! Eq 17 (uniform maps) and Eq 18 (warped), and with the light behind Eq 20.
+//!
+//! # Overlap for blending
+//!
+//! With `overlap = o ∈ [0, 1)`, partition i (except the last) is fitted to
+//! `[z_i, min(z_{i+1} + o (z_{i+1} − z_i), far)]`: its far end reaches into the next partition by
+//! the fraction `o` of its own depth, the band a renderer cross-fades over. `o = 0` gives
+//! disjoint partitions that tile the frustum.
+//!
+//! # Stable cascades
+//!
+//! Engines (Unity, Unreal, Filament's and Bevy's stable mode, the "stable CSM" of ShaderX6) trade
+//! storage for stability under camera motion: each partition is enclosed in its minimal bounding
+//! sphere, which does not turn with the camera, and an orthographic map of side `2R` is aligned
+//! with a light space fixed in the world, its centre snapped to whole texels of the world-fixed
+//! grid so that a moving camera shifts the map by whole texels only. [`stable_cascade`] builds it
+//! and reports what the stability costs: the storage factor of the stable map against the tight
+//! orthographic fit of the same partition.
+//!
+//! ```
+//! use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
+//! use shadow_aliasing::build::cascades::cascades;
+//! use shadow_aliasing::build::WarpRule;
+//! use shadow_aliasing::ViewFrustum;
+//! use glam::DVec3;
+//! let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians())?;
+//! let splits = z_splits(1.0, 1000.0, 4, SplitScheme::SelfSimilar)?;
+//! let c = cascades(&view, DVec3::new(0.0, -1.0, 0.0), &splits, WarpRule::Lispsm, 0.0)?;
+//! // Light overhead: S̄ = k((f/n)^{1/k} − 1)/(2 tan θ) (Lloyd 2006 Eq 18).
+//! let expect = 4.0 * (1000f64.powf(0.25) - 1.0) / (2.0 * 30f64.to_radians().tan());
+//! assert!((c.storage_factor() - expect).abs() < 1e-9 * expect);
+//! # Ok::<(), shadow_aliasing::Error>(())
+//! ```
+
+pub use crate::analytic::partition::{SplitScheme, Splits, MAX_PARTITIONS};
+use crate::build::{light_space, warp, ShadowMatrix, WarpRule};
+use crate::error::{fmt_num, in_closed, Error, Result};
+use crate::frustum::{unit_light_dir, NPrime, ViewFrustum};
+use crate::measure::sweep::{vertex_max, VertexMax};
+use glam::{DMat4, DVec3, DVec4};
+
+/// One z-partition: its fitted map, the depth range it covers, and its measured maximum error.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cascade {
+    /// The partition's shadow matrix (eye → light clip, OpenGL depth), with the depth range it
+    /// was fitted to (`near`, `far`, overlap included) and its n′.
+    pub shadow: ShadowMatrix,
+    /// Where the partition starts, z_i (the split plane; equal to `shadow.near`).
+    pub split_near: f64,
+    /// Where the next partition starts, z_{i+1} (without the overlap).
+    pub split_far: f64,
+    /// M_x, M_z over the fitted sub-frustum's eight corners (unit resolutions).
+    pub error: VertexMax,
+}
+
+impl Cascade {
+    /// S̄ = M_x M_z of this partition.
+    #[must_use]
+    pub fn storage_factor(&self) -> f64 {
+        self.error.storage_factor()
+    }
+}
+
+/// A frame's z-partitions, near to far, in a fixed array (no heap allocation).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cascades {
+    parts: [Option<Cascade>; MAX_PARTITIONS],
+    k: usize,
+}
+
+impl Cascades {
+    /// Number of partitions k.
+    #[must_use]
+    pub fn k(&self) -> usize {
+        self.k
+    }
+    /// Partition `i` (0 nearest the viewer), or `None` beyond k.
+    #[must_use]
+    pub fn get(&self, i: usize) -> Option<&Cascade> {
+        self.parts.get(i).and_then(Option::as_ref)
+    }
+    /// The partitions, near to far.
+    pub fn iter(&self) -> impl Iterator<Item = &Cascade> {
+        self.parts[..self.k].iter().flatten()
+    }
+    /// The summed storage factor Σ S̄_i: k maps, each M_x,i M_z,i texels per image pixel
+    /// (Lloyd 2006 §5.3, "the storage factor is also multiplied by k").
+    #[must_use]
+    pub fn storage_factor(&self) -> f64 {
+        self.iter().map(Cascade::storage_factor).sum()
+    }
+}
+
+/// The split planes `near + φ_i (far − near)` for fractions `0 < φ₁ < … < φ_{k−1} < 1` of the
+/// depth range (engines' "cascade splits" given as fractions), near and far added at the ends.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `fractions` when there are more than `MAX_PARTITIONS − 1`,
+/// or they are not finite, not in (0, 1), or not strictly increasing; as
+/// [`Splits::from_planes`] when planes coincide in `f64`.
+///
+/// ```
+/// # use shadow_aliasing::build::cascades::splits_from_fractions;
+/// # use shadow_aliasing::ViewFrustum;
+/// let view = ViewFrustum::new(1.0, 101.0, 0.5)?;
+/// let s = splits_from_fractions(&view, &[0.1, 0.3])?;
+/// assert_eq!(s.planes(), &[1.0, 11.0, 31.0, 101.0]);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn splits_from_fractions(view: &ViewFrustum, fractions: &[f64]) -> Result<Splits> {
+    if fractions.len() >= MAX_PARTITIONS {
+        return Err(Error::invalid(
+            "fractions",
+            format!(
+                "must hold at most {} values (got {})",
+                MAX_PARTITIONS - 1,
+                fractions.len()
+            ),
+        ));
+    }
+    let (n, f) = (view.near(), view.far());
+    let mut planes = [0.0; MAX_PARTITIONS + 1];
+    planes[0] = n;
+    let mut prev = 0.0;
+    for (i, &phi) in fractions.iter().enumerate() {
+        if !(phi.is_finite() && phi > prev && phi < 1.0) {
+            return Err(Error::invalid(
+                "fractions",
+                format!(
+                    "must be finite, strictly increasing and inside (0, 1) (got {} at index {i})",
+                    fmt_num(phi)
+                ),
+            ));
+        }
+        prev = phi;
+        planes[i + 1] = n + phi * (f - n);
+    }
+    planes[fractions.len() + 1] = f;
+    Splits::from_planes(&planes[..fractions.len() + 2])
+}
+
+/// One map per z-partition of `splits`, each fitted by [`warp()`] with `rule` to its own
+/// sub-frustum (extended by `overlap`, see the module docs), and each measured at the eight
+/// corners of that sub-frustum with [`vertex_max`]. No heap allocation.
+///
+/// The planes of `splits` must lie within `[view.near(), view.far()]`; a renderer that wants
+/// its cascades to stop short of the far plane passes splits whose last plane is smaller.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `light_dir` (zero or not finite), `overlap` (outside
+/// [0, 1)), `splits` (planes outside the view's depth range), or the rule's parameter;
+/// [`Error::Degenerate`] when a fitted matrix maps a corner behind its centre of projection.
+pub fn cascades(
+    view: &ViewFrustum,
+    light_dir: DVec3,
+    splits: &Splits,
+    rule: WarpRule,
+    overlap: f64,
+) -> Result<Cascades> {
+    let mut parts = [None; MAX_PARTITIONS];
+    let mut k = 0;
+    visit_cascades(view, light_dir, splits, rule, overlap, |c| {
+        parts[k] = Some(*c);
+        k += 1;
+    })?;
+    Ok(Cascades { parts, k })
+}
+
+/// [`cascades`], handing each partition to `visit`, near to far, as it is built.
+pub(crate) fn visit_cascades(
+    view: &ViewFrustum,
+    light_dir: DVec3,
+    splits: &Splits,
+    rule: WarpRule,
+    overlap: f64,
+    mut visit: impl FnMut(&Cascade),
+) -> Result<()> {
+    let light_dir = unit_light_dir(light_dir)?;
+    let overlap = in_closed("overlap", overlap, 0.0, 1.0)?;
+    if overlap >= 1.0 {
+        return Err(Error::invalid("overlap", "must be smaller than 1 (got 1)"));
+    }
+    let planes = splits.planes();
+    let (first, last) = (planes[0], planes[planes.len() - 1]);
+    let slack = 1e-12 * view.far();
+    if first < view.near() - slack || last > view.far() + slack {
+        return Err(Error::invalid(
+            "splits",
+            format!(
+                "must lie within [near, far] = [{}, {}] (got [{}, {}])",
+                fmt_num(view.near()),
+                fmt_num(view.far()),
+                fmt_num(first),
+                fmt_num(last)
+            ),
+        ));
+    }
+    let k = splits.k();
+    let tan = view.tan_half_fov();
+    let ta = tan * view.aspect();
+    // Corner directions at unit depth, near-plane order of `ViewFrustum::corners`.
+    let dirs = [
+        DVec3::new(-ta, -tan, -1.0),
+        DVec3::new(ta, -tan, -1.0),
+        DVec3::new(ta, tan, -1.0),
+        DVec3::new(-ta, tan, -1.0),
+    ];
+    for i in 0..k {
+        let (a, b) = splits.range(i);
+        let end = if i + 1 < k {
+            (b + overlap * (b - a)).min(last)
+        } else {
+            b
+        };
+        let sub = view.with_depth_range(a, end)?;
+        let shadow = warp(&sub, light_dir, rule)?;
+        let mut corners = [DVec3::ZERO; 8];
+        for (j, d) in dirs.iter().enumerate() {
+            corners[j] = *d * a;
+            corners[j + 4] = *d * end;
+        }
+        let error =
+            vertex_max(&shadow.matrix, shadow.light_dir, tan, &corners).ok_or_else(|| {
+                Error::Degenerate(format!(
+                "the map of partition {i} ([{}, {}]) puts a corner behind its centre of projection",
+                fmt_num(a),
+                fmt_num(end)
+            ))
+            })?;
+        visit(&Cascade {
+            shadow,
+            split_near: a,
+            split_far: b,
+            error,
+        });
+    }
+    Ok(())
+}
+
+/// A stable cascade: an orthographic map of a partition's bounding sphere, aligned with a
+/// world-fixed light space and snapped to whole texels (see the module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StableCascade {
+    /// The stable map (eye → light clip, OpenGL depth), [`NPrime::Unwarped`].
+    pub shadow: ShadowMatrix,
+    /// Centre of the partition's minimal bounding sphere, eye space (on the view axis).
+    pub center: DVec3,
+    /// Radius R of that sphere.
+    pub radius: f64,
+    /// Texel edge of the map in world units, `2 R_map / resolution`, where the map's half-width
+    /// `R_map = R · resolution/(resolution − 2)` leaves one texel of margin on each side so that
+    /// snapping (a shift of at most half a texel) never cuts the sphere.
+    pub texel: f64,
+    /// S̄ of the stable map over the partition's eight corners.
+    pub storage_factor: f64,
+    /// S̄ of the tight orthographic fit ([`WarpRule::Uniform`]) of the same partition.
+    pub tight_storage_factor: f64,
+}
+
+impl StableCascade {
+    /// What stability costs: `storage_factor / tight_storage_factor` (≥ 1 up to rounding).
+    #[must_use]
+    pub fn storage_loss(&self) -> f64 {
+        self.storage_factor / self.tight_storage_factor
+    }
+}
+
+/// The minimal bounding sphere of the sub-frustum `[near, far]` of `view`: centre on the view
+/// axis at depth `c`, radius `R`.
+///
+/// With `k² = tan²θ (1 + aspect²)` (a corner at depth z is `z k` from the axis), equating the
+/// distances to a near and a far corner, `(c − n)² + n² k² = (f − c)² + f² k²`, gives
+/// `c = (n + f)(1 + k²)/2`; when that lies beyond the far plane the far cap alone decides and
+/// `c = f`. Then `R = √((f − c)² + f² k²)`.
+///
+/// # Errors
+/// As [`ViewFrustum::with_depth_range`].
+///
+/// ```
+/// # use shadow_aliasing::build::cascades::bounding_sphere;
+/// # use shadow_aliasing::ViewFrustum;
+/// // tan θ = 0.5, square: k² = 0.5; [1, 3]: c = 4 · 1.5/2 = 3 = f, R = 3 √0.5.
+/// let v = ViewFrustum::new(1.0, 3.0, 0.5f64.atan())?;
+/// let (c, r) = bounding_sphere(&v, 1.0, 3.0)?;
+/// assert!((c - 3.0).abs() < 1e-12 && (r - 3.0 * 0.5f64.sqrt()).abs() < 1e-12);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn bounding_sphere(view: &ViewFrustum, near: f64, far: f64) -> Result<(f64, f64)> {
+    let sub = view.with_depth_range(near, far)?;
+    let t = sub.tan_half_fov();
+    let k2 = t * t * (1.0 + sub.aspect() * sub.aspect());
+    let c = (0.5 * (near + far) * (1.0 + k2)).min(far);
+    let r = ((far - c) * (far - c) + far * far * k2).sqrt();
+    Ok((c, r))
+}
+
+/// A stable cascade for the partition `[near, far]` of `view`.
+///
+/// `world_to_eye` is the camera's view matrix (world → eye, rigid: rotation and translation,
+/// glam `look_at_rh`); `light_dir_world` the direction light travels in *world* space (a stable
+/// map must not turn with the camera); `resolution` the map's texels per side (≥ 3). The light
+/// space is [`light_space`]`(light_dir_world, −Z_world)`, fixed in the world. The sphere's centre,
+/// in that light space, is snapped to the nearest multiple of the texel edge along s and t.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `world_to_eye` (not finite, or not rigid to 10⁻⁶),
+/// `light_dir_world`, `resolution` (< 3), or as [`ViewFrustum::with_depth_range`].
+pub fn stable_cascade(
+    view: &ViewFrustum,
+    world_to_eye: DMat4,
+    light_dir_world: DVec3,
+    near: f64,
+    far: f64,
+    resolution: u32,
+) -> Result<StableCascade> {
+    if resolution < 3 {
+        return Err(Error::invalid(
+            "resolution",
+            format!("must be at least 3 texels (got {resolution})"),
+        ));
+    }
+    let eye_to_world = rigid_inverse(world_to_eye)?;
+    let lw = unit_light_dir(light_dir_world)
+        .map_err(|_| Error::invalid("light_dir_world", "must be a finite, non-zero vector"))?;
+    let sub = view.with_depth_range(near, far)?;
+    let (c, r) = bounding_sphere(view, near, far)?;
+    let ls = light_space(lw, DVec3::NEG_Z)?;
+    let res = f64::from(resolution);
+    let half = r * res / (res - 2.0);
+    let texel = 2.0 * half / res;
+    let center_eye = DVec3::new(0.0, 0.0, -c);
+    let cw = eye_to_world.transform_point3(center_eye);
+    let q = ls.to_light(cw);
+    let sx = (q.x / texel).round() * texel;
+    let sz = (q.z / texel).round() * texel;
+    // Light space (world) → clip: s from x, t from z, depth from −y over the sphere (±half).
+    let ortho = DMat4::from_cols(
+        DVec4::new(1.0 / half, 0.0, 0.0, 0.0),
+        DVec4::new(0.0, 0.0, -1.0 / half, 0.0),
+        DVec4::new(0.0, 1.0 / half, 0.0, 0.0),
+        DVec4::new(-sx / half, -sz / half, q.y / half, 1.0),
+    );
+    let matrix = ortho * ls.rotation() * eye_to_world;
+    let light_eye = world_to_eye.transform_vector3(lw).normalize();
+    let corners = sub.corners();
+    let stable = vertex_max(&matrix, light_eye, view.tan_half_fov(), &corners)
+        .ok_or_else(|| Error::Degenerate("the stable map is singular at a corner".into()))?;
+    let tight_map = warp(&sub, light_eye, WarpRule::Uniform)?;
+    let tight = vertex_max(&tight_map.matrix, light_eye, view.tan_half_fov(), &corners)
+        .ok_or_else(|| Error::Degenerate("the tight map is singular at a corner".into()))?;
+    Ok(StableCascade {
+        shadow: ShadowMatrix {
+            matrix,
+            light_dir: light_eye,
+            n_prime: NPrime::Unwarped,
+            near,
+            far,
+        },
+        center: center_eye,
+        radius: r,
+        texel,
+        storage_factor: stable.storage_factor(),
+        tight_storage_factor: tight.storage_factor(),
+    })
+}
+
+/// The inverse of a rigid world → eye matrix, checked to be rigid.
+fn rigid_inverse(world_to_eye: DMat4) -> Result<DMat4> {
+    if !world_to_eye.is_finite() {
+        return Err(Error::invalid("world_to_eye", "must have finite entries"));
+    }
+    let r = glam::DMat3::from_mat4(world_to_eye);
+    let rrt = r * r.transpose();
+    let off = (rrt - glam::DMat3::IDENTITY).to_cols_array();
+    let bottom = world_to_eye.row(3);
+    if off.iter().any(|v| v.abs() > 1e-6) || (bottom - DVec4::W).abs().max_element() > 1e-12 {
+        return Err(Error::invalid(
+            "world_to_eye",
+            "must be a rigid transform (orthonormal rotation and a translation)",
+        ));
+    }
+    Ok(world_to_eye.inverse())
+}

@@ -1,1 +1,507 @@
-//! (being written)
+//! Face partitions (Lloyd 2006 §5.1, Lloyd 2005 §4): one warped map per frustum face the light
+//! sees, optionally z-partitioned along each face.
+//!
+//! # Which faces
+//!
+//! Light space has `y` toward the light (against the direction `L` light travels) and `v = −Z` is
+//! the view vector. Lloyd 2006 §5.1: "the narrowest image beams are those first encountered by a
+//! light beam when v·y < 0 … Therefore the front faces of the view frustum with respect to the
+//! light should be used in this case. Likewise, when v·y > 0 … the back faces should be used."
+//! With outward face normals `N`:
+//!
+//! - `v·y < 0` (`L.z < 0`, the light travels along the view, source behind the viewer): the
+//!   front faces, `N·L < 0`, where light enters the frustum;
+//! - otherwise (`L.z ≥ 0`): the back faces, `N·L > 0`, where light leaves it.
+//!
+//! Either way, along each light ray the chosen face is where the ray is nearest the eye, so the
+//! image beams are narrowest there and the face bounds the error of the whole partition: the
+//! partition of a face is the part of the frustum whose light rays pass through it (the prism of
+//! the face along the light), and its maximum error is the maximum over the face. The chosen
+//! faces tile the frustum's silhouette seen from the light, so the partitions tile the frustum.
+//! The far face is never chosen. A face within [`EDGE_ON`] of edge-on (`|N·L| ≤ EDGE_ON`) is
+//! skipped: its prism is thinner than `EDGE_ON` times the frustum's size, so it covers no point a
+//! renderer could sample; at exactly `L.z = 0` (light perpendicular to the view) the near face is
+//! such a face.
+//!
+//! # One warp per side face
+//!
+//! Lloyd 2006 §5.1: "we first project the vectors from the viewpoint through the two side edges of
+//! the face, e₀ and e₁, into a plane perpendicular to the light direction to obtain e′₀ and e′₁. We
+//! use the bisector of the projected edge vectors e′₀ + e′₁ to align the z axis." The crate uses
+//! the unit vectors `ê′₀ + ê′₁`, the true bisector of the angle (with unequal lengths, `e′₀ + e′₁`
+//! leans towards the longer one). The face's prism, projected along the light, is the wedge
+//! between e′₀ and e′₁ from the projected eye, cut by the near and far edges; every point of it has
+//! a positive coordinate along the bisector.
+//!
+//! # The face's n′ (how Eq 19 and Eq 21 come out)
+//!
+//! A face's projection plays the part the view frustum's footprint plays for an overhead light:
+//! the apex is the projected eye, the bisector the view axis. Let `d_n` and `d_f` be the smallest
+//! and largest coordinates of the (sub-)face's vertices along the bisector, measured from the
+//! projected eye. The crate's face rules ([`FaceWarp`]) are the overhead rules with (n, f) replaced
+//! by (d_n, d_f), the warp's centre of projection on the bisector through the projected eye:
+//!
+//! - [`FaceWarp::Lispsm`]: `n′ = d_n + √(d_n d_f)` (LiSPSM's optimum for the face);
+//! - [`FaceWarp::Psm`]: `n′ = d_n` (the centre of projection at the projected eye);
+//! - [`FaceWarp::Uniform`]: n′ = ∞, an orthographic map aligned with the bisector.
+//!
+//! Why this reproduces the papers. With the light overhead (L = −Y, `v·y = 0`) the only back face
+//! is the bottom face, whose projection is the whole footprint with the bisector along −Z and
+//! `(d_n, d_f) = (n, f)`: the map is the LiSPSM map of the frustum and S̄ is Eq 12, Eq 18 with
+//! z-partitions, so Eq 19 holds. With the light behind (L = −Z) the front faces are the four sides
+//! and the near face. The top face `{(x, z tanθ, −z) : |x| ≤ z tanθ}` projects to
+//! `{(x, u) : |x| ≤ u}` with `u = z tanθ` along the bisector +Y and image beams `w_i = 2 z tanθ = 2u`
+//! — exactly an overhead frustum with half field of view 45°, near `n tanθ` and far `f tanθ`. So a
+//! side face with k self-similar z-partitions and n′ ≤ n′_LSPSM has S̄ = k((f/n)^{1/k} − 1)/2 for
+//! *any* θ (square image), and the near face, a square of side `2n tanθ` at depth n seen
+//! face-on with an orthographic map aligned with its edges, has S̄ = 1. The sum
+//! `4 k((f/n)^{1/k} − 1)/2 + 1` equals Lloyd 2006 Eq 21, `4 S̄_ZP+W,overhead + 1`, at θ = 45°, where
+//! the paper states it.
+//!
+//! # The near face
+//!
+//! As Lloyd 2006 §5.2 says, the near face is not z-partitioned ("the image beam widths are constant
+//! along this face"): it gets one orthographic map, aligned with the projection of the image's up
+//! vector +Y (so that, seen face-on, its square fills the map), and contributes S̄ = 1 when the
+//! light is exactly behind (the "+1" of Eq 21). Lloyd 2005 §4.1 notes it may instead be covered by
+//! stretching the side partitions to the viewpoint; the crate keeps it separate, which is what
+//! Eq 21 counts.
+//!
+//! # Depth
+//!
+//! Each map's depth range covers the whole frustum along the light (each face vertex is swept to
+//! the frustum's nearest and farthest light-space depth before fitting), so every point of the
+//! face's prism inside the frustum maps into the clip volume.
+//!
+//! ```
+//! use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
+//! use shadow_aliasing::ViewFrustum;
+//! use glam::DVec3;
+//! let view = ViewFrustum::new(1.0, 100.0, 45f64.to_radians())?;
+//! // Light from behind: four side faces and the near face.
+//! let p = face_partitions(&view, DVec3::new(0.0, 0.0, -1.0), FaceWarp::Lispsm, 1)?;
+//! assert_eq!(p.len(), 5);
+//! // Lloyd 2006 Eq 21 with k = 1, θ = 45°: 4 (f/n − 1)/(2 tan θ) + 1.
+//! let expect = 4.0 * 99.0 / 2.0 + 1.0;
+//! assert!((p.storage_factor() - expect).abs() < 1e-9 * expect);
+//! # Ok::<(), shadow_aliasing::Error>(())
+//! ```
+
+use crate::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
+use crate::build::{fit_warp, light_space, ShadowMatrix};
+use crate::error::{fmt_num, Error, Result};
+use crate::frustum::{unit_light_dir, NPrime, ViewFrustum};
+use crate::measure::sweep::{vertex_max, VertexMax};
+use glam::DVec3;
+
+/// Faces with `|N·L|` at most this (unit vectors: the sine of the angle between the face's plane
+/// and the light) are treated as edge-on and skipped (see the module docs). 10⁻⁶: the prism of
+/// such a face is thinner than a millionth of the frustum (less than a texel of any shadow map up
+/// to 10⁶ texels across), while a map fitted to a face seen at a grazing sine s carries rounding
+/// of about 10⁻¹⁶/s of its clip range: at 10⁻⁶ that is 10⁻¹⁰, below the clip-volume tolerance
+/// the crate's tests hold every map to.
+pub const EDGE_ON: f64 = 1e-6;
+
+/// The largest number of face partitions: four side faces of [`MAX_PARTITIONS`] z-partitions
+/// each, and the near face.
+pub const MAX_FACE_PARTITIONS: usize = 4 * MAX_PARTITIONS + 1;
+
+/// A face of the view frustum.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Face {
+    /// The −Y side (through corners −x−y and +x−y).
+    Bottom,
+    /// The +X side.
+    Right,
+    /// The +Y side.
+    Top,
+    /// The −X side.
+    Left,
+    /// The near plane.
+    Near,
+    /// The far plane.
+    Far,
+}
+
+impl Face {
+    /// The six faces.
+    pub const ALL: [Face; 6] = [
+        Face::Bottom,
+        Face::Right,
+        Face::Top,
+        Face::Left,
+        Face::Near,
+        Face::Far,
+    ];
+
+    /// The unit outward normal of the face in eye space.
+    ///
+    /// With `t = tan θ` and `a` the aspect: bottom `(0, −1, t)`, top `(0, 1, t)`, right
+    /// `(1, 0, t a)`, left `(−1, 0, t a)`, each normalised; near `+Z`, far `−Z`.
+    #[must_use]
+    pub fn outward_normal(self, view: &ViewFrustum) -> DVec3 {
+        let t = view.tan_half_fov();
+        self.normal_with(t, t * view.aspect())
+    }
+
+    #[inline]
+    fn normal_with(self, t: f64, ta: f64) -> DVec3 {
+        match self {
+            Face::Bottom => DVec3::new(0.0, -1.0, t).normalize(),
+            Face::Top => DVec3::new(0.0, 1.0, t).normalize(),
+            Face::Right => DVec3::new(1.0, 0.0, ta).normalize(),
+            Face::Left => DVec3::new(-1.0, 0.0, ta).normalize(),
+            Face::Near => DVec3::Z,
+            Face::Far => DVec3::NEG_Z,
+        }
+    }
+
+    /// The directions from the eye through the face's two side edges, at unit depth
+    /// (`z = −1`), in counter-clockwise order seen from inside the frustum; `None` for the near
+    /// and far faces. With `t = tan θ`, `a` the aspect, the four edge directions are
+    /// `c₀ = (−ta, −t, −1)`, `c₁ = (ta, −t, −1)`, `c₂ = (ta, t, −1)`, `c₃ = (−ta, t, −1)`; bottom is
+    /// `(c₀, c₁)`, right `(c₁, c₂)`, top `(c₂, c₃)`, left `(c₃, c₀)`.
+    #[must_use]
+    pub fn side_edges(self, view: &ViewFrustum) -> Option<[DVec3; 2]> {
+        let t = view.tan_half_fov();
+        self.edges_with(t, t * view.aspect())
+    }
+
+    #[inline]
+    fn edges_with(self, t: f64, ta: f64) -> Option<[DVec3; 2]> {
+        let c = [
+            DVec3::new(-ta, -t, -1.0),
+            DVec3::new(ta, -t, -1.0),
+            DVec3::new(ta, t, -1.0),
+            DVec3::new(-ta, t, -1.0),
+        ];
+        match self {
+            Face::Bottom => Some([c[0], c[1]]),
+            Face::Right => Some([c[1], c[2]]),
+            Face::Top => Some([c[2], c[3]]),
+            Face::Left => Some([c[3], c[0]]),
+            Face::Near | Face::Far => None,
+        }
+    }
+
+    /// The four vertices of the part of the face between depths `near` and `far`: for a side face
+    /// `[e₀ near, e₁ near, e₁ far, e₀ far]`; for the near (far) face its four corners at depth
+    /// `view.near()` (`view.far()`), whatever `near` and `far`.
+    #[must_use]
+    pub fn vertices(self, view: &ViewFrustum, near: f64, far: f64) -> [DVec3; 4] {
+        let t = view.tan_half_fov();
+        self.vertices_with(view, t, t * view.aspect(), near, far)
+    }
+
+    #[inline]
+    fn vertices_with(self, view: &ViewFrustum, t: f64, ta: f64, near: f64, far: f64) -> [DVec3; 4] {
+        match self.edges_with(t, ta) {
+            Some([e0, e1]) => [e0 * near, e1 * near, e1 * far, e0 * far],
+            None => {
+                let d = if self == Face::Near {
+                    view.near()
+                } else {
+                    view.far()
+                };
+                // c₀, c₁ (bottom edges) then c₂, c₃ (top edges): the corners' order.
+                let c = Face::Bottom
+                    .edges_with(t, ta)
+                    .into_iter()
+                    .chain(Face::Top.edges_with(t, ta))
+                    .flatten();
+                let mut out = [DVec3::ZERO; 4];
+                for (o, e) in out.iter_mut().zip(c) {
+                    *o = e * d;
+                }
+                out
+            }
+        }
+    }
+}
+
+/// The faces the light sees, as Lloyd 2006 §5.1 chooses them (see the module docs), in the
+/// order bottom, right, top, left, near; at most five.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VisibleFaces {
+    faces: [Face; 5],
+    len: usize,
+    /// Whether these are the front faces (`v·y < 0`, light travelling along the view) or the
+    /// back faces.
+    pub front: bool,
+}
+
+impl VisibleFaces {
+    /// The chosen faces.
+    #[must_use]
+    pub fn faces(&self) -> &[Face] {
+        &self.faces[..self.len]
+    }
+}
+
+/// The faces used for face partitioning for a light travelling along `light_dir` (eye space).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector.
+///
+/// ```
+/// # use shadow_aliasing::build::faces::{visible_faces, Face};
+/// # use shadow_aliasing::ViewFrustum;
+/// # use glam::DVec3;
+/// let view = ViewFrustum::new(1.0, 10.0, 0.5)?;
+/// let over = visible_faces(&view, DVec3::new(0.0, -1.0, 0.0))?;
+/// assert_eq!(over.faces(), &[Face::Bottom]);
+/// let behind = visible_faces(&view, DVec3::new(0.0, 0.0, -1.0))?;
+/// assert!(behind.front && behind.faces().len() == 5);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn visible_faces(view: &ViewFrustum, light_dir: DVec3) -> Result<VisibleFaces> {
+    let l = unit_light_dir(light_dir)?;
+    let t = view.tan_half_fov();
+    Ok(visible_with(t, t * view.aspect(), l))
+}
+
+fn visible_with(t: f64, ta: f64, l: DVec3) -> VisibleFaces {
+    // v·y = (−Z)·(−L) = L.z; front faces when it is negative.
+    let front = l.z < 0.0;
+    let sign = if front { -1.0 } else { 1.0 };
+    let mut faces = [Face::Near; 5];
+    let mut len = 0;
+    for face in [Face::Bottom, Face::Right, Face::Top, Face::Left, Face::Near] {
+        if sign * face.normal_with(t, ta).dot(l) > EDGE_ON {
+            faces[len] = face;
+            len += 1;
+        }
+    }
+    VisibleFaces { faces, len, front }
+}
+
+/// The warp axis of a side face: the bisector `ê′₀ + ê′₁` of its side edges projected
+/// perpendicular to the light (Lloyd 2006 §5.1). For the near and far faces, the image's up
+/// vector +Y (projected by [`light_space`]).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `light_dir`; [`Error::Degenerate`] when a side edge is
+/// parallel to the light (the face is then edge-on, and [`visible_faces`] never returns it).
+pub fn face_axis(view: &ViewFrustum, face: Face, light_dir: DVec3) -> Result<DVec3> {
+    let l = unit_light_dir(light_dir)?;
+    let t = view.tan_half_fov();
+    axis_with(face, t, t * view.aspect(), l)
+}
+
+fn axis_with(face: Face, t: f64, ta: f64, l: DVec3) -> Result<DVec3> {
+    match face.edges_with(t, ta) {
+        None => Ok(DVec3::Y),
+        Some([e0, e1]) => {
+            let p0 = e0 - e0.dot(l) * l;
+            let p1 = e1 - e1.dot(l) * l;
+            let (l0, l1) = (p0.length(), p1.length());
+            if !(l0 > EDGE_ON * e0.length() && l1 > EDGE_ON * e1.length()) {
+                return Err(Error::Degenerate(format!(
+                    "a side edge of the {face:?} face is parallel to the light {l}"
+                )));
+            }
+            Ok(p0 / l0 + p1 / l1)
+        }
+    }
+}
+
+/// How each face partition's n′ is chosen (see the module docs): the overhead rules with the
+/// (sub-)face's extent `[d_n, d_f]` along its bisector in place of `[n, f]`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum FaceWarp {
+    /// n′ = ∞: orthographic, aligned with the bisector.
+    Uniform,
+    /// n′ = d_n: the centre of projection at the projected eye.
+    Psm,
+    /// n′ = d_n + √(d_n d_f). The default; it reproduces Lloyd 2006 Eq 19 and 21.
+    #[default]
+    Lispsm,
+}
+
+/// One face partition: its face, the depth range of its part of the face, its map and its
+/// measured maximum error over the (sub-)face's vertices.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FacePartition {
+    /// Which face.
+    pub face: Face,
+    /// The map (eye → light clip, OpenGL depth); `shadow.near`, `shadow.far` are the depths of
+    /// this part of the face (both `view.near()` for the near face).
+    pub shadow: ShadowMatrix,
+    /// The four vertices of this part of the face (where its error is measured).
+    pub vertices: [DVec3; 4],
+    /// M_x, M_z over `vertices` (unit resolutions).
+    pub error: VertexMax,
+}
+
+impl FacePartition {
+    /// S̄ = M_x M_z of this partition.
+    #[must_use]
+    pub fn storage_factor(&self) -> f64 {
+        self.error.storage_factor()
+    }
+}
+
+/// A frame's face partitions in a fixed array (no heap allocation): for each visible side face
+/// (bottom, right, top, left order), its z-partitions near to far, then the near face if visible.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FacePartitions {
+    parts: [Option<FacePartition>; MAX_FACE_PARTITIONS],
+    len: usize,
+    /// The chosen faces.
+    pub faces: VisibleFaces,
+}
+
+impl FacePartitions {
+    /// Number of partitions.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+    /// Whether there is none (never, for a valid light: some face is always seen).
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+    /// The partitions.
+    pub fn iter(&self) -> impl Iterator<Item = &FacePartition> {
+        self.parts[..self.len].iter().flatten()
+    }
+    /// The summed storage factor.
+    #[must_use]
+    pub fn storage_factor(&self) -> f64 {
+        self.iter().map(FacePartition::storage_factor).sum()
+    }
+}
+
+/// Face partitions with `k` self-similar z-partitions on each side face (Lloyd 2006 Eq 15, 16
+/// over `[near, far]`), the near face unpartitioned.
+///
+/// # Errors
+/// As [`face_partitions_with`].
+pub fn face_partitions(
+    view: &ViewFrustum,
+    light_dir: DVec3,
+    rule: FaceWarp,
+    k: usize,
+) -> Result<FacePartitions> {
+    let splits = z_splits(view.near(), view.far(), k, SplitScheme::SelfSimilar)?;
+    face_partitions_with(view, light_dir, rule, &splits)
+}
+
+/// Face partitions with the side faces cut at the depths of `splits` (which must lie within
+/// `[view.near(), view.far()]`).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `light_dir` (zero or not finite) or `splits` (planes outside
+/// the view's depth range); [`Error::Degenerate`] when a fitted map is singular at a vertex.
+pub fn face_partitions_with(
+    view: &ViewFrustum,
+    light_dir: DVec3,
+    rule: FaceWarp,
+    splits: &Splits,
+) -> Result<FacePartitions> {
+    let mut parts = [None; MAX_FACE_PARTITIONS];
+    let mut len = 0;
+    let faces = visit_face_partitions(view, light_dir, rule, splits, |p| {
+        parts[len] = Some(*p);
+        len += 1;
+    })?;
+    Ok(FacePartitions { parts, len, faces })
+}
+
+/// [`face_partitions_with`], handing each partition to `visit` as it is built; returns the
+/// chosen faces.
+pub(crate) fn visit_face_partitions(
+    view: &ViewFrustum,
+    light_dir: DVec3,
+    rule: FaceWarp,
+    splits: &Splits,
+    mut visit: impl FnMut(&FacePartition),
+) -> Result<VisibleFaces> {
+    let l = unit_light_dir(light_dir)?;
+    let planes = splits.planes();
+    let slack = 1e-12 * view.far();
+    if planes[0] < view.near() - slack || planes[planes.len() - 1] > view.far() + slack {
+        return Err(Error::invalid(
+            "splits",
+            format!(
+                "must lie within [near, far] = [{}, {}]",
+                fmt_num(view.near()),
+                fmt_num(view.far())
+            ),
+        ));
+    }
+    let tan = view.tan_half_fov();
+    let ta = tan * view.aspect();
+    let faces = visible_with(tan, ta, l);
+    // The frustum's extent along the light (toward-the-light coordinate y = −L·p).
+    let (mut y_lo, mut y_hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for c in Face::Near
+        .vertices_with(view, tan, ta, 0.0, 0.0)
+        .into_iter()
+        .chain(Face::Far.vertices_with(view, tan, ta, 0.0, 0.0))
+    {
+        let y = -l.dot(c);
+        y_lo = y_lo.min(y);
+        y_hi = y_hi.max(y);
+    }
+    for &face in faces.faces() {
+        let axis = axis_with(face, tan, ta, l)?;
+        let ls = light_space(l, axis)?;
+        let is_side = !matches!(face, Face::Near | Face::Far);
+        let count = if is_side { splits.k() } else { 1 };
+        for j in 0..count {
+            let (a, b) = if is_side {
+                splits.range(j)
+            } else {
+                (view.near(), view.near())
+            };
+            let vertices = face.vertices_with(view, tan, ta, a, b);
+            let (mut d_n, mut d_f) = (f64::INFINITY, f64::NEG_INFINITY);
+            let mut swept = [DVec3::ZERO; 12];
+            for (i, v) in vertices.iter().enumerate() {
+                let d = ls.z.dot(*v);
+                d_n = d_n.min(d);
+                d_f = d_f.max(d);
+                let y = ls.y.dot(*v);
+                swept[3 * i] = *v;
+                swept[3 * i + 1] = *v + (y_lo - y) * ls.y;
+                swept[3 * i + 2] = *v + (y_hi - y) * ls.y;
+            }
+            let n_prime = if !is_side {
+                NPrime::Unwarped
+            } else {
+                match rule {
+                    FaceWarp::Uniform => NPrime::Unwarped,
+                    FaceWarp::Psm => NPrime::Finite(d_n),
+                    FaceWarp::Lispsm => NPrime::Finite(d_n + (d_n * d_f).sqrt()),
+                }
+            };
+            let n_prime = match n_prime {
+                NPrime::Finite(v) if !(v.is_finite() && v > 0.0) => NPrime::Unwarped,
+                other => other,
+            };
+            let matrix = fit_warp(&swept, &ls, n_prime)?;
+            let error = vertex_max(&matrix, l, tan, &vertices).ok_or_else(|| {
+                Error::Degenerate(format!(
+                    "the map of the {face:?} face over depths [{}, {}] is singular at a vertex",
+                    fmt_num(a),
+                    fmt_num(b)
+                ))
+            })?;
+            visit(&FacePartition {
+                face,
+                shadow: ShadowMatrix {
+                    matrix,
+                    light_dir: l,
+                    n_prime,
+                    near: a,
+                    far: b,
+                },
+                vertices,
+                error,
+            });
+        }
+    }
+    Ok(faces)
+}

@@ -31,8 +31,13 @@ pub mod faces;
 pub mod lightspace;
 pub mod matrix;
 pub mod minimax;
+pub mod scheme;
+pub mod tsm;
+pub mod uniform;
 pub mod warp;
 
 pub use lightspace::{light_space, LightSpace};
 pub use matrix::{ClipDepth, ShadowMatrix};
+pub use tsm::{tsm, TsmMap, TsmOptions, TsmSearch};
+pub use uniform::{uniform, with_casters, CasterDepth};
 pub use warp::{fit_warp, n_prime_for, warp, Falloff, WarpRule};

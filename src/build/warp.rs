@@ -37,14 +37,7 @@ use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{LightAngle, NPrime, ViewFrustum};
 use glam::{DMat4, DVec3, DVec4};
 
-/// Barroso & Celes' fall-off r(γ) below γ_lim (their Eq 17 and 18).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Falloff {
-    /// r(γ) = [1 + sin((γ/γ_lim − 1) π/2)]², Barroso & Celes Eq 18 (their choice for LiSPSM).
-    Barroso,
-    /// r(γ) = sin(γ/γ_lim · π/2), Zhang et al.'s fall-off for PSM, Barroso & Celes Eq 17.
-    Zhang,
-}
+pub use crate::analytic::tilted::Falloff;
 
 /// How the warp parameter n′ is chosen. Each rule names its source; the engines' rules reproduce
 /// the shipped code's arithmetic for a frustum-only focus body (no scene bound), so that their
@@ -386,7 +379,7 @@ pub(crate) fn rule_n_prime(
     let sin_g = fl.sin_gamma;
     Ok(match rule {
         WarpRule::Uniform => NPrime::Unwarped,
-        WarpRule::Eta(eta) => n_prime_from_eta(n, f, eta)?,
+        WarpRule::Eta(eta) => crate::warp::n_prime_from_eta(n, f, eta)?,
         WarpRule::Psm => NPrime::Finite(n),
         WarpRule::Lispsm => NPrime::Finite(view.n_prime_lispsm()),
         WarpRule::LispsmSin => {
@@ -397,8 +390,8 @@ pub(crate) fn rule_n_prime(
             }
         }
         WarpRule::Barroso(falloff) => {
-            let gamma = LightAngle::from_light_dir(fl.ls.light_dir())?.radians();
-            barroso_n_prime(view, gamma, falloff)
+            let gamma = LightAngle::from_light_dir(fl.ls.light_dir())?;
+            crate::analytic::tilted::generalized_n_prime(view, gamma, falloff)
         }
         WarpRule::Tsm { focus } => tsm_rule(view, fl, focus)?,
         WarpRule::LispsmReference => {
@@ -428,59 +421,22 @@ pub(crate) fn rule_n_prime(
     })
 }
 
-/// Lloyd 2006 Eq 11 (private until the overhead closed forms are shared).
-fn n_prime_from_eta(n: f64, f: f64, eta: f64) -> Result<NPrime> {
-    let eta = crate::error::in_closed("eta", eta, -1.0, 1.0)?;
-    let a = f / n;
-    let sa = a.sqrt();
-    Ok(if eta <= -1.0 {
-        NPrime::Unwarped
-    } else if eta <= 0.0 {
-        NPrime::Finite(n * (sa + 1.0 - eta * (a - 1.0)) / (eta + 1.0))
-    } else {
-        NPrime::Finite(n * (sa + 1.0) / (eta * sa + 1.0))
-    })
-}
+pub use crate::analytic::tsm::EIGHTY_PERCENT_LINE as TSM_80_PERCENT_LINE;
 
-/// Barroso & Celes Eq 13, 15–18 (private until the tilted closed forms are shared).
-fn barroso_n_prime(view: &ViewFrustum, gamma: f64, falloff: Falloff) -> NPrime {
-    use std::f64::consts::FRAC_PI_2;
-    let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
-    let (a, b) = (n * t, f * t);
-    let g_lim = ((a + b) / (f - n)).atan();
-    let n1 = |g: f64| (n + (f * n).sqrt()) * g.sin() - a * g.cos();
-    if gamma >= g_lim {
-        return NPrime::Finite(n1(gamma));
-    }
-    let r = match falloff {
-        Falloff::Zhang => (gamma / g_lim * FRAC_PI_2).sin(),
-        Falloff::Barroso => {
-            let s = 1.0 + ((gamma / g_lim - 1.0) * FRAC_PI_2).sin();
-            s * s
-        }
-    };
-    if r > 0.0 {
-        finite_or_unwarped(n1(g_lim) / r)
-    } else {
-        NPrime::Unwarped
-    }
-}
-
-/// The target line of Martin & Tan's 80 % rule: y = ξ = −0.6 in trapezoid space (top line +1).
-pub const TSM_80_PERCENT_LINE: f64 = -0.6;
-
-/// Martin & Tan §6.2: η = λδ′(1 + ξ)/(λ − 2δ′ − λξ), the distance of q from the top line that
-/// maps a point δ′ below the top line to y = ξ (top → +1, base → −1); `None` when no centre of
-/// projection beyond the top line can (the denominator is not positive, or δ′ = 0).
+/// Martin & Tan's η (§6.2, [`crate::analytic::tsm::tsm_eta`]) as the builders use it: `None`
+/// when no centre of projection beyond the top line maps the focus point to the line ξ (the
+/// closed form's `NoSolution`, its unwarped boundary, or a focus point on the top or base line),
+/// where the builders use the bounding rectangle, the limit η → ∞.
 #[inline]
 pub(crate) fn tsm_eta(lambda: f64, delta_p: f64, xi: f64) -> Option<f64> {
-    let den = lambda - 2.0 * delta_p - lambda * xi;
-    let num = lambda * delta_p * (1.0 + xi);
-    if den > 0.0 && num > 0.0 {
-        let eta = num / den;
-        eta.is_finite().then_some(eta)
-    } else {
-        None
+    // The closed form's domain, checked first so that the per-frame path never builds (and
+    // allocates) an error message: δ′ ∈ (0, λ) and a positive denominator λ(1 − ξ) − 2δ′.
+    if !(delta_p > 0.0 && delta_p < lambda && lambda * (1.0 - xi) - 2.0 * delta_p > 0.0) {
+        return None;
+    }
+    match crate::analytic::tsm::tsm_eta(lambda, delta_p, xi) {
+        Ok(NPrime::Finite(eta)) => Some(eta),
+        _ => None,
     }
 }
 

@@ -1,1 +1,337 @@
-//! (being written)
+//! The storage factor over the hemisphere of light directions, for any scheme, and the fast
+//! vertex measurement behind it.
+//!
+//! # Directions
+//!
+//! A light direction is given by its elevation `el` above the viewer's horizon and its azimuth
+//! `az` around the eye-space Y axis. The direction *towards* the light source is
+//!
+//! ```text
+//! D = (cos el · sin az, sin el, cos el · cos az)        (eye space)
+//! ```
+//!
+//! and light travels along `−D`. So `el = π/2` is the light overhead, `az = 0` puts the light
+//! source behind the viewer (light travels along the view direction −Z) and `az = π` in front of
+//! the viewer (light travels towards the camera). This is the layout of Lloyd 2006 Fig 7: overhead
+//! at the centre, behind and in front at the sides.
+//!
+//! # Grid
+//!
+//! A [`SweepGrid`] of `E` elevation rows and `A` azimuth columns samples
+//! `el_i = i · (π/2)/(E − 1)`, `i = 0..E` — both ends included, the horizon `el = 0` and the zenith
+//! `el = π/2` (with `E = 1` the single row is the zenith) — and `az_j = j · 2π/A`, `j = 0..A`:
+//! `0` included, `2π` excluded (it is `az = 0` again). Values are stored row by row (elevation
+//! major): the value of `(i, j)` is at `i · A + j`.
+//!
+//! # Speed
+//!
+//! [`sweep`] measures the scheme's own matrices at the vertices of each partition only, with
+//! [`vertex_max`] (no validation, no allocation); each elevation row reuses one stack-allocated
+//! [`SchemeResult`]. With the `parallel` feature the rows are spread over all cores with rayon;
+//! without it the same code runs serially.
+//!
+//! ```
+//! use shadow_aliasing::measure::sweep::{light_dir_from_angles, SweepGrid};
+//! let g = SweepGrid::new(3, 4)?;
+//! assert_eq!(g.elevation(2), std::f64::consts::FRAC_PI_2);
+//! assert_eq!(g.azimuth(1), std::f64::consts::FRAC_PI_2);
+//! // az = 0 at the horizon: the source is behind the viewer, light travels down −Z.
+//! let l = light_dir_from_angles(0.0, 0.0);
+//! assert!((l.z + 1.0).abs() < 1e-15);
+//! # Ok::<(), shadow_aliasing::Error>(())
+//! ```
+
+use crate::build::scheme::{scheme_into, Partition, SchemeResult};
+/// The jump of error across each seam between neighbouring partitions of a scheme (defined with
+/// the scheme, re-exported here beside the other measurements of partitions).
+pub use crate::build::scheme::{seams, Seam, Seams};
+use crate::build::WarpRule;
+use crate::error::{fmt_num, Error, Result};
+use crate::frustum::ViewFrustum;
+use glam::{DMat4, DVec3, DVec4};
+
+/// M_x and M_z of one matrix over a set of points (unit resolutions), from [`vertex_max`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VertexMax {
+    /// The largest m_x over the points.
+    pub max_mx: f64,
+    /// The largest m_z over the points.
+    pub max_mz: f64,
+}
+
+impl VertexMax {
+    /// The storage factor S̄ = M_x · M_z (Lloyd 2006 §4.4).
+    #[inline]
+    #[must_use]
+    pub fn storage_factor(&self) -> f64 {
+        self.max_mx * self.max_mz
+    }
+}
+
+/// The largest m_x and m_z of `matrix` over `points`, the hot-path twin of
+/// [`crate::measure::point_error`] with unit resolutions.
+///
+/// At a point p with `h = M (p, 1)`, the gradients of s and t are `G_s/(2 h.w²)` and
+/// `G_t/(2 h.w²)` with `G_s = h.w M₀ − h.x M₃`, `G_t = h.w M₁ − h.y M₃` (rows 0, 1, 3 of M, first
+/// three entries). With `G_t⊥ = G_t − (G_t·L) L` the part of G_t in the plane perpendicular to the
+/// light L, and `D = det[G_s, G_t, L]` the area factor of the (s, t) map restricted to that plane
+/// (projecting both gradients onto the plane does not change this determinant), the widths of
+/// [`crate::measure`] become
+///
+/// ```text
+/// m_x = h.w² |G_t⊥| / (|D| z tan θ),   m_z = h.w² / (|G_t⊥| z tan θ),   z = −p.z (depth)
+/// ```
+///
+/// The loop compares squares, `m_x² = h.w⁴ |G_t⊥|⁴ / (D² |G_t⊥|² z²) / tan²θ` and
+/// `m_z² = h.w⁴ D² / (D² |G_t⊥|² z²) / tan²θ`, with one division per point and one square root per
+/// maximum.
+///
+/// `light_dir` must be a unit vector (the direction light travels) and `tan_half_fov` = tan θ of
+/// the camera. No validation is done beyond what keeps the answer honest: the function returns
+/// `None` (never NaN) when a point is behind the map's centre of projection (`h.w ≤ 0`), has
+/// depth ≤ 0, or the map is singular there.
+#[inline]
+#[must_use]
+pub fn vertex_max(
+    matrix: &DMat4,
+    light_dir: DVec3,
+    tan_half_fov: f64,
+    points: &[DVec3],
+) -> Option<VertexMax> {
+    let r0 = matrix.row(0).truncate();
+    let r1 = matrix.row(1).truncate();
+    let r3 = matrix.row(3).truncate();
+    let (mut mx2, mut mz2) = (0.0f64, 0.0f64);
+    for &p in points {
+        let h = *matrix * DVec4::new(p.x, p.y, p.z, 1.0);
+        let z = -p.z;
+        // `w > 0` and `z > 0`, NaN refused.
+        if h.w.is_nan() || h.w <= 0.0 || z.is_nan() || z <= 0.0 {
+            return None;
+        }
+        let gs = h.w * r0 - h.x * r3;
+        let gt = h.w * r1 - h.y * r3;
+        let d = gs.cross(gt).dot(light_dir);
+        let d2 = d * d;
+        let gtl = gt.dot(light_dir);
+        let gtp2 = gt.length_squared() - gtl * gtl;
+        let w2 = h.w * h.w;
+        let w4 = w2 * w2;
+        let inv = 1.0 / (d2 * gtp2 * z * z);
+        if !(inv.is_finite() && gtp2 > 0.0) {
+            return None;
+        }
+        mx2 = mx2.max(w4 * gtp2 * gtp2 * inv);
+        mz2 = mz2.max(w4 * d2 * inv);
+    }
+    let t2 = tan_half_fov * tan_half_fov;
+    let (mx, mz) = ((mx2 / t2).sqrt(), (mz2 / t2).sqrt());
+    if mx.is_finite() && mz.is_finite() && mx > 0.0 && mz > 0.0 {
+        Some(VertexMax {
+            max_mx: mx,
+            max_mz: mz,
+        })
+    } else {
+        None
+    }
+}
+
+/// The eye-space direction light *travels* for elevation `el` and azimuth `az` (radians):
+/// `−D` with `D = (cos el · sin az, sin el, cos el · cos az)` towards the source. `az = 0` is the
+/// source behind the viewer, `az = π` in front, `el = π/2` overhead.
+#[inline]
+#[must_use]
+pub fn light_dir_from_angles(el: f64, az: f64) -> DVec3 {
+    let (se, ce) = el.sin_cos();
+    let (sa, ca) = az.sin_cos();
+    -DVec3::new(ce * sa, se, ce * ca)
+}
+
+/// The grid of light directions of a hemisphere sweep (see the module docs for both ends).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SweepGrid {
+    elevations: usize,
+    azimuths: usize,
+}
+
+/// The largest number of directions a sweep accepts (16 million), so the value buffer stays
+/// within memory.
+pub const MAX_SWEEP_DIRECTIONS: usize = 1 << 24;
+
+impl SweepGrid {
+    /// `elevations` rows over `[0, π/2]` (both ends) and `azimuths` columns over `[0, 2π)`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `elevations` or `azimuths` when zero, or when their
+    /// product exceeds [`MAX_SWEEP_DIRECTIONS`].
+    pub fn new(elevations: usize, azimuths: usize) -> Result<Self> {
+        if elevations == 0 {
+            return Err(Error::invalid("elevations", "must be at least 1 (got 0)"));
+        }
+        if azimuths == 0 {
+            return Err(Error::invalid("azimuths", "must be at least 1 (got 0)"));
+        }
+        if elevations.saturating_mul(azimuths) > MAX_SWEEP_DIRECTIONS {
+            return Err(Error::invalid(
+                "azimuths",
+                format!(
+                    "times elevations must not exceed {MAX_SWEEP_DIRECTIONS} (got {elevations} × {azimuths})"
+                ),
+            ));
+        }
+        Ok(Self {
+            elevations,
+            azimuths,
+        })
+    }
+    /// Number of elevation rows.
+    #[must_use]
+    pub fn elevations(&self) -> usize {
+        self.elevations
+    }
+    /// Number of azimuth columns.
+    #[must_use]
+    pub fn azimuths(&self) -> usize {
+        self.azimuths
+    }
+    /// Number of directions, rows × columns.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.elevations * self.azimuths
+    }
+    /// Always false: a grid has at least one direction.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+    /// Elevation of row `i`: `i · (π/2)/(E − 1)`, or π/2 when `E = 1`.
+    #[must_use]
+    pub fn elevation(&self, i: usize) -> f64 {
+        if self.elevations == 1 {
+            std::f64::consts::FRAC_PI_2
+        } else if i + 1 >= self.elevations {
+            // Exactly π/2 on the last row, whatever the rounding of the product.
+            std::f64::consts::FRAC_PI_2
+        } else {
+            i as f64 * std::f64::consts::FRAC_PI_2 / (self.elevations - 1) as f64
+        }
+    }
+    /// Azimuth of column `j`: `j · 2π/A`.
+    #[must_use]
+    pub fn azimuth(&self, j: usize) -> f64 {
+        j as f64 * std::f64::consts::TAU / self.azimuths as f64
+    }
+}
+
+/// The storage factor over a [`SweepGrid`], row by row (elevation major).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sweep {
+    /// The grid the values belong to.
+    pub grid: SweepGrid,
+    /// S̄ summed over the scheme's partitions, at `i · azimuths + j`.
+    pub storage_factor: Vec<f64>,
+}
+
+impl Sweep {
+    /// `(elevation, azimuth, storage_factor)` of every direction, row by row.
+    pub fn rows(&self) -> impl Iterator<Item = (f64, f64, f64)> + '_ {
+        self.storage_factor.iter().enumerate().map(|(n, &v)| {
+            let (i, j) = (n / self.grid.azimuths, n % self.grid.azimuths);
+            (self.grid.elevation(i), self.grid.azimuth(j), v)
+        })
+    }
+    /// The largest storage factor over the hemisphere.
+    #[must_use]
+    pub fn max(&self) -> f64 {
+        self.storage_factor.iter().fold(0.0, |a, &b| a.max(b))
+    }
+}
+
+/// The storage factor S̄ (summed over partitions) of the scheme `(rule, partition, k)` for every
+/// light direction of `grid`, from the crate's measurement of the scheme's own matrices at the
+/// partitions' vertices. Parallel over cores with the `parallel` feature (rayon's global pool:
+/// set its size with `RAYON_NUM_THREADS` or a `rayon::ThreadPool::install`), serial without.
+///
+/// # Errors
+/// The first error of [`crate::build::scheme::scheme`] in grid order, with the direction
+/// that caused it ([`Error::Degenerate`] wrapping the builder's message); validation errors of
+/// `partition` or `k` as the scheme reports them.
+///
+/// ```
+/// use shadow_aliasing::build::scheme::Partition;
+/// use shadow_aliasing::measure::sweep::{sweep, SweepGrid};
+/// use shadow_aliasing::build::WarpRule;
+/// use shadow_aliasing::ViewFrustum;
+/// let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians())?;
+/// let s = sweep(&view, WarpRule::Uniform, Partition::Single, 1, SweepGrid::new(4, 8)?)?;
+/// assert_eq!(s.storage_factor.len(), 32);
+/// assert!(s.storage_factor.iter().all(|v| v.is_finite() && *v > 0.0));
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn sweep(
+    view: &ViewFrustum,
+    rule: WarpRule,
+    partition: Partition,
+    k: usize,
+    grid: SweepGrid,
+) -> Result<Sweep> {
+    let mut values = vec![0.0; grid.len()];
+    sweep_into(view, rule, partition, k, grid, &mut values)?;
+    Ok(Sweep {
+        grid,
+        storage_factor: values,
+    })
+}
+
+/// As [`sweep`], writing into a caller's buffer of `grid.len()` values (no allocation at all).
+///
+/// # Errors
+/// As [`sweep`]; [`Error::InvalidArgument`] naming `out` when its length is not `grid.len()`.
+pub fn sweep_into(
+    view: &ViewFrustum,
+    rule: WarpRule,
+    partition: Partition,
+    k: usize,
+    grid: SweepGrid,
+    out: &mut [f64],
+) -> Result<()> {
+    if out.len() != grid.len() {
+        return Err(Error::invalid(
+            "out",
+            format!("must hold {} values (got {})", grid.len(), out.len()),
+        ));
+    }
+    // Validate the scheme once, at the zenith, so argument errors are reported as such.
+    let mut probe = SchemeResult::default();
+    scheme_into(view, DVec3::NEG_Y, rule, partition, k, &mut probe)?;
+    let row = |i: usize, values: &mut [f64]| -> Result<()> {
+        let el = grid.elevation(i);
+        let mut buf = SchemeResult::default();
+        for (j, v) in values.iter_mut().enumerate() {
+            let az = grid.azimuth(j);
+            let l = light_dir_from_angles(el, az);
+            scheme_into(view, l, rule, partition, k, &mut buf).map_err(|e| {
+                Error::Degenerate(format!(
+                    "at elevation={}, azimuth={}: {e}",
+                    fmt_num(el),
+                    fmt_num(az)
+                ))
+            })?;
+            *v = buf.storage_factor();
+        }
+        Ok(())
+    };
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        out.par_chunks_mut(grid.azimuths)
+            .enumerate()
+            .try_for_each(|(i, values)| row(i, values))
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        out.chunks_mut(grid.azimuths)
+            .enumerate()
+            .try_for_each(|(i, values)| row(i, values))
+    }
+}

@@ -1,0 +1,728 @@
+//! Trapezoidal shadow maps (Martin & Tan 2004), for a directional light.
+//!
+//! # Construction (Martin & Tan §6, in the crate's light space)
+//!
+//! For a directional light the light's post-perspective space L is light space itself
+//! (orthographic), and E, the eye's frustum seen from the light, is the projection of its corners
+//! onto the light-space (x, z) plane.
+//!
+//! 1. The centre line l passes through the projected centres of the near and far planes (§6.1
+//!    step 2). Both lie on the view axis, whose projection is the light-space z axis through the
+//!    eye, so l is the line x = 0 and the top and base lines, orthogonal to l and touching the hull
+//!    of E (steps 4, 5), are z = z₀ (nearest the near plane) and z = z₀ + λ.
+//! 2. The focus point p, `focus` beyond the near plane on the view axis, lies δ′ below the top
+//!    line. The centre of projection q on l, η above the top line, maps p to the line y = ξ of the
+//!    unit square (top → +1, base → −1) for η = λδ′(1 + ξ)/(λ − 2δ′ − λξ) (§6.2; ξ = −0.6 is the
+//!    80 % line).
+//! 3. The side lines pass through q and touch the hull of E (§6.2); with the top and base lines
+//!    they bound the trapezoid T.
+//! 4. N_T is the projective map sending T's corners to the unit square's: top-left → (−1, 1),
+//!    top-right → (1, 1), base-right → (1, −1), base-left → (−1, −1), solved as the four-point
+//!    homography (an 8 × 8 linear system, nalgebra LU, on coordinates normalised to the
+//!    trapezoid's size), and checked by mapping the corners back.
+//! 5. N_T is applied to x, y and w; depth stays in light space (§4): [`TsmMap::light_depth`] is
+//!    the affine light-space depth for the fragment stage (`gl_FragDepth = z_L` plus the usual
+//!    polygon offset, as §4 describes). The 4 × 4 [`ShadowMatrix`] also carries a depth row (the
+//!    light-space depth over w, fitted to [−1, 1], monotonic along each light ray) so that it can
+//!    be used as an ordinary shadow matrix.
+//!
+//! The same centre of projection and side lines are what [`crate::build::fit_warp`] builds with
+//! n′ = η (the trapezoid's homography equals the warp with t reversed): a test checks it.
+//!
+//! # When the frustum looks square from the light
+//!
+//! When the centres of the near and far planes (almost) coincide in the light's view (§6.1:
+//! "the algorithm handles that separately to result in the smallest box bounding the far plane as
+//! the desired trapezoid") — here when the centre line is shorter than [`SQUARE_TOLERANCE`] times
+//! λ — the map is the bounding rectangle of E: the orthographic fit, with the focus point wherever
+//! it lands. The same rectangle is used when no centre of projection beyond the top line can map
+//! the focus point to the requested line (the denominator of η is not positive): warping can only
+//! move the focus point further down, so the rectangle is the closest map. TSM is discontinuous at
+//! the first switch (an 80 % trapezoid just off the axis, the rectangle on it), as Martin & Tan's
+//! rule is; docs/builders.md gives the size of the jump.
+//!
+//! # The iterative variant
+//!
+//! §6.2: "In the first iteration, p_L is mapped to the 80 % line (or 0.8x), and in each subsequent
+//! iteration, p_L is mapped to an entry one line before that of the last iteration … we adopt the
+//! trapezoid … that transforms the focus region to cover the largest area." With `map_lines` = x
+//! lines numbered from the top, line k is ξ_k = 1 − 2k/x; the search runs k from round(0.8 x) down
+//! to 1 and keeps the first trapezoid of largest focus area.
+//!
+//! # The general case (§6.4)
+//!
+//! [`tsm_general`] restricts the eye's frustum to a convex bound (the light's volume, a scene
+//! box): I = frustum ∩ bound. The centre line runs from the eye through the centroid e of I's
+//! vertices (the warp axis is the direction of e), the near and far planes are pushed to I's depth
+//! range [n_I, f_I], and the focus distance becomes δ (f_I − n_I)/(f − n).
+
+use crate::build::lightspace::{light_space, LightSpace};
+use crate::build::matrix::ShadowMatrix;
+use crate::build::warp::tsm_eta;
+use crate::error::{fmt_num, in_open, positive, Error, Result};
+use crate::frustum::{NPrime, ViewFrustum};
+use glam::{DMat3, DMat4, DVec2, DVec3, DVec4};
+use nalgebra::{SMatrix, SVector};
+
+pub use crate::build::warp::TSM_80_PERCENT_LINE;
+
+/// The centre line is treated as a point (the frustum looks square from the light) when its
+/// length is below this fraction of the trapezoid's height λ. 10⁻³: one texel in a 1024-line map.
+pub const SQUARE_TOLERANCE: f64 = 1e-3;
+
+/// Which line the focus point is mapped to (Martin & Tan §6.2).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum TsmSearch {
+    /// The 80 % rule: ξ = −0.6.
+    #[default]
+    EightyPercent,
+    /// A chosen line ξ ∈ (−1, 1) of the unit square (top +1, base −1).
+    Line(f64),
+    /// The iterative variant over the map's lines (module docs).
+    Iterative {
+        /// Number of texel lines of the shadow map along t (1024 or 2048 in the paper).
+        map_lines: u32,
+    },
+}
+
+/// Options of the trapezoidal map.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TsmOptions {
+    /// Focus distance δ beyond the near plane, world units, `0 < focus ≤ f − n`.
+    pub focus: f64,
+    /// The line rule.
+    pub search: TsmSearch,
+}
+
+/// The trapezoid in light-space (x, z) coordinates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Trapezoid {
+    /// Corners: top-left, top-right, base-right, base-left (top nearest the near plane).
+    pub corners: [DVec2; 4],
+    /// The centre of projection q, or `None` for the bounding-rectangle fallback.
+    pub q: Option<DVec2>,
+}
+
+/// A trapezoidal shadow map.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TsmMap {
+    /// The 4 × 4 map (eye space → clip), N_T on x, y, w and a fitted depth row.
+    pub shadow: ShadowMatrix,
+    /// The light space the trapezoid lives in.
+    pub light_space: LightSpace,
+    /// The trapezoid.
+    pub trapezoid: Trapezoid,
+    /// N_T: light-space `(x, z, 1)` → homogeneous unit-square coordinates.
+    pub n_t: DMat3,
+    /// Light-space depth kept out of N_T (§4): `dot(light_depth, (p, 1))` ∈ [−1, 1] over the
+    /// frustum, −1 nearest the light, for an eye-space point p.
+    pub light_depth: DVec4,
+    /// The line y = ξ the focus point maps to.
+    pub xi: f64,
+    /// Fraction of the map's area covered by the focus region.
+    pub focus_area: f64,
+}
+
+/// Which corners the homography maps where: top-left, top-right, base-right, base-left.
+const SQUARE: [DVec2; 4] = [
+    DVec2::new(-1.0, 1.0),
+    DVec2::new(1.0, 1.0),
+    DVec2::new(1.0, -1.0),
+    DVec2::new(-1.0, -1.0),
+];
+
+/// The four-point homography H with `H (pᵢ, 1) ∝ (sᵢ, 1)` for the unit square's corners sᵢ
+/// (top-left (−1, 1), top-right (1, 1), base-right (1, −1), base-left (−1, −1)), h₃₃ = 1.
+///
+/// The 8 × 8 system `[x, y, 1, 0, 0, 0, −X x, −X y] h = X`, `[0, 0, 0, x, y, 1, −Y x, −Y y] h = Y`
+/// is solved by LU on coordinates translated to the quad's centroid and scaled to unit size
+/// (Hartley's normalisation), then the scaling is composed back.
+///
+/// # Errors
+/// [`Error::Degenerate`] when the quadrilateral is near-degenerate: not strictly convex with
+/// corners in this order, any three corners within a relative 10⁻⁹ of collinear, or a mapped-back
+/// residual above 10⁻⁹.
+///
+/// ```
+/// # use shadow_aliasing::build::tsm::quad_to_square;
+/// # use glam::{DVec2, DVec3};
+/// let quad = [DVec2::new(-1.0, 0.0), DVec2::new(1.0, 0.0), DVec2::new(3.0, 4.0), DVec2::new(-3.0, 4.0)];
+/// let h = quad_to_square(quad)?;
+/// let p = h * DVec3::new(3.0, 4.0, 1.0);
+/// assert!((p.x / p.z - 1.0).abs() < 1e-12 && (p.y / p.z + 1.0).abs() < 1e-12);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn quad_to_square(quad: [DVec2; 4]) -> Result<DMat3> {
+    if quad.iter().any(|p| !p.is_finite()) {
+        return Err(Error::invalid("quad", "must have finite corners"));
+    }
+    let c = (quad[0] + quad[1] + quad[2] + quad[3]) * 0.25;
+    let size = quad
+        .iter()
+        .map(|p| (*p - c).length())
+        .fold(0.0f64, f64::max);
+    if size.is_nan() || size <= 0.0 {
+        return Err(Error::Degenerate("the quadrilateral has no extent".into()));
+    }
+    let norm: [DVec2; 4] = quad.map(|p| (p - c) / size);
+    // Strict convexity with a consistent orientation, and no three corners nearly collinear.
+    let mut sign = 0.0f64;
+    for i in 0..4 {
+        let a = norm[i];
+        let b = norm[(i + 1) % 4];
+        let d = norm[(i + 2) % 4];
+        let cr = (b - a).perp_dot(d - b);
+        if cr.abs() < 1e-9 {
+            return Err(Error::Degenerate(format!(
+                "the quadrilateral is nearly degenerate (corners {i}..{} almost collinear)",
+                i + 2
+            )));
+        }
+        if sign == 0.0 {
+            sign = cr.signum();
+        } else if cr.signum() != sign {
+            return Err(Error::Degenerate(
+                "the quadrilateral is not convex in the given corner order".into(),
+            ));
+        }
+    }
+    let mut a = SMatrix::<f64, 8, 8>::zeros();
+    let mut b = SVector::<f64, 8>::zeros();
+    for i in 0..4 {
+        let (x, y) = (norm[i].x, norm[i].y);
+        let (u, v) = (SQUARE[i].x, SQUARE[i].y);
+        let r = 2 * i;
+        a[(r, 0)] = x;
+        a[(r, 1)] = y;
+        a[(r, 2)] = 1.0;
+        a[(r, 6)] = -u * x;
+        a[(r, 7)] = -u * y;
+        b[r] = u;
+        a[(r + 1, 3)] = x;
+        a[(r + 1, 4)] = y;
+        a[(r + 1, 5)] = 1.0;
+        a[(r + 1, 6)] = -v * x;
+        a[(r + 1, 7)] = -v * y;
+        b[r + 1] = v;
+    }
+    let h = a
+        .lu()
+        .solve(&b)
+        .ok_or_else(|| Error::Degenerate("the homography system is singular".into()))?;
+    let hn = DMat3::from_cols(
+        DVec3::new(h[0], h[3], h[6]),
+        DVec3::new(h[1], h[4], h[7]),
+        DVec3::new(h[2], h[5], 1.0),
+    );
+    // Undo the normalisation: p_norm = (p − c)/size.
+    let t = DMat3::from_cols(
+        DVec3::new(1.0 / size, 0.0, 0.0),
+        DVec3::new(0.0, 1.0 / size, 0.0),
+        DVec3::new(-c.x / size, -c.y / size, 1.0),
+    );
+    let m = hn * t;
+    for i in 0..4 {
+        let p = m * quad[i].extend(1.0);
+        let r = DVec2::new(p.x / p.z, p.y / p.z) - SQUARE[i];
+        if p.z == 0.0 || !r.is_finite() || r.length() > 1e-9 {
+            return Err(Error::Degenerate(format!(
+                "the homography maps corner {i} with residual {}",
+                fmt_num(r.length())
+            )));
+        }
+    }
+    Ok(m)
+}
+
+/// The trapezoidal shadow map of the whole view frustum for a light travelling along
+/// `light_dir` (eye space). No heap allocation.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `light_dir`, `focus` (not in (0, f − n]), `xi` (not in
+/// (−1, 1)) or `map_lines` (< 2); [`Error::Degenerate`] when the trapezoid is near-degenerate.
+///
+/// ```
+/// # use shadow_aliasing::build::tsm::{tsm, TsmOptions, TsmSearch};
+/// # use shadow_aliasing::ViewFrustum;
+/// # use glam::{DVec3, DVec4};
+/// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;
+/// let opts = TsmOptions { focus: 20.0, search: TsmSearch::EightyPercent };
+/// let t = tsm(&view, DVec3::new(0.0, -1.0, 0.3), opts)?;
+/// // The focus point on the view axis lands on the 80 % line.
+/// let h = t.shadow.matrix * DVec4::new(0.0, 0.0, -21.0, 1.0);
+/// assert!((h.y / h.w + 0.6).abs() < 1e-9);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn tsm(view: &ViewFrustum, light_dir: DVec3, opts: TsmOptions) -> Result<TsmMap> {
+    validate(view, &opts)?;
+    let ls = light_space(light_dir, DVec3::NEG_Z)?;
+    let corners = view.corners();
+    let (n, f) = (view.near(), view.far());
+    let focus_depth = n + opts.focus;
+    let focus_point = DVec3::new(0.0, 0.0, -focus_depth);
+    let fr = ViewFrustum::with_aspect(n, focus_depth, view.half_fov(), view.aspect())
+        .map(|v| v.corners())
+        .unwrap_or(corners);
+    let centre_line =
+        (ls.z.dot(DVec3::new(0.0, 0.0, -f)) - ls.z.dot(DVec3::new(0.0, 0.0, -n))).abs();
+    let core = Core {
+        ls,
+        points: &corners,
+        focus_region: &fr,
+        focus_point,
+        centre_line,
+    };
+    core.build(opts.search, n, f)
+}
+
+fn validate(view: &ViewFrustum, opts: &TsmOptions) -> Result<()> {
+    let focus = positive("focus", opts.focus)?;
+    if focus > view.far() - view.near() {
+        return Err(Error::invalid(
+            "focus",
+            format!(
+                "must be at most far − near = {} (got {})",
+                fmt_num(view.far() - view.near()),
+                fmt_num(focus)
+            ),
+        ));
+    }
+    match opts.search {
+        TsmSearch::EightyPercent => {}
+        TsmSearch::Line(xi) => {
+            in_open("xi", xi, -1.0, 1.0)?;
+        }
+        TsmSearch::Iterative { map_lines } => {
+            if map_lines < 2 {
+                return Err(Error::invalid(
+                    "map_lines",
+                    format!("must be at least 2 (got {map_lines})"),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Everything the construction needs, independent of how E was obtained.
+struct Core<'a> {
+    ls: LightSpace,
+    /// E's vertices (eye space).
+    points: &'a [DVec3],
+    /// The focus region's vertices (eye space).
+    focus_region: &'a [DVec3],
+    /// The focus point on the centre line (eye space).
+    focus_point: DVec3,
+    /// Length of the projected centre line.
+    centre_line: f64,
+}
+
+/// The analytic trapezoid map for a given η (q = (0, z₀ − η)): (X, Y) of a light-space (x, z).
+#[derive(Clone, Copy)]
+struct Analytic {
+    z0: f64,
+    lambda: f64,
+    /// None: the bounding rectangle.
+    eta: Option<f64>,
+    s_min: f64,
+    s_max: f64,
+}
+
+impl Analytic {
+    fn new(ls: &LightSpace, points: &[DVec3], z0: f64, lambda: f64, eta: Option<f64>) -> Self {
+        let (mut s_min, mut s_max) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in points {
+            let x = ls.x.dot(*p);
+            let s = match eta {
+                Some(e) => x / (ls.z.dot(*p) - z0 + e),
+                None => x,
+            };
+            s_min = s_min.min(s);
+            s_max = s_max.max(s);
+        }
+        Self {
+            z0,
+            lambda,
+            eta,
+            s_min,
+            s_max,
+        }
+    }
+
+    fn map(&self, x: f64, z: f64) -> DVec2 {
+        let d = z - self.z0;
+        let (s, y) = match self.eta {
+            Some(e) => (
+                x / (d + e),
+                1.0 - 2.0 * (d / self.lambda) * (e + self.lambda) / (e + d),
+            ),
+            None => (x, 1.0 - 2.0 * d / self.lambda),
+        };
+        let sm = 0.5 * (self.s_min + self.s_max);
+        let sh = 0.5 * (self.s_max - self.s_min);
+        DVec2::new((s - sm) / sh, y)
+    }
+
+    fn corners(&self) -> [DVec2; 4] {
+        let (z0, z1) = (self.z0, self.z0 + self.lambda);
+        match self.eta {
+            Some(e) => [
+                DVec2::new(self.s_min * e, z0),
+                DVec2::new(self.s_max * e, z0),
+                DVec2::new(self.s_max * (e + self.lambda), z1),
+                DVec2::new(self.s_min * (e + self.lambda), z1),
+            ],
+            None => [
+                DVec2::new(self.s_min, z0),
+                DVec2::new(self.s_max, z0),
+                DVec2::new(self.s_max, z1),
+                DVec2::new(self.s_min, z1),
+            ],
+        }
+    }
+}
+
+impl Core<'_> {
+    fn build(&self, search: TsmSearch, near: f64, far: f64) -> Result<TsmMap> {
+        let ls = &self.ls;
+        let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in self.points {
+            let z = ls.z.dot(*p);
+            z0 = z0.min(z);
+            z1 = z1.max(z);
+        }
+        let lambda = z1 - z0;
+        if lambda.is_nan() || lambda <= 0.0 {
+            return Err(Error::Degenerate(
+                "the region has no extent along the centre line".into(),
+            ));
+        }
+        let square = self.centre_line < SQUARE_TOLERANCE * lambda;
+        let delta_p = ls.z.dot(self.focus_point) - z0;
+        let eta_for = |xi: f64| {
+            if square {
+                None
+            } else {
+                tsm_eta(lambda, delta_p, xi)
+            }
+        };
+        let (eta, xi) = match search {
+            TsmSearch::EightyPercent => (eta_for(TSM_80_PERCENT_LINE), TSM_80_PERCENT_LINE),
+            TsmSearch::Line(xi) => (eta_for(xi), xi),
+            TsmSearch::Iterative { map_lines } => {
+                let x = f64::from(map_lines);
+                let k0 = (0.8 * x).round() as u32;
+                let mut best: Option<(f64, Option<f64>, f64)> = None;
+                for k in (1..=k0.max(1)).rev() {
+                    let xi = 1.0 - 2.0 * f64::from(k) / x;
+                    let eta = eta_for(xi);
+                    let a = Analytic::new(ls, self.points, z0, lambda, eta);
+                    let area = self.focus_area(&a);
+                    if best.is_none_or(|b| area > b.0) {
+                        best = Some((area, eta, xi));
+                    }
+                }
+                let (_, eta, xi) = best.unwrap_or((0.0, None, TSM_80_PERCENT_LINE));
+                (eta, xi)
+            }
+        };
+        let analytic = Analytic::new(ls, self.points, z0, lambda, eta);
+        let corners = analytic.corners();
+        let n_t = quad_to_square(corners)?;
+        // The 4 × 4 in light space: rows from N_T on (x, z, 1), depth fitted below.
+        let w_of = |p: DVec3| {
+            let h = n_t * DVec3::new(ls.x.dot(p), ls.z.dot(p), 1.0);
+            h.z
+        };
+        let sign = if w_of(self.points[0]) < 0.0 {
+            -1.0
+        } else {
+            1.0
+        };
+        let h = n_t * sign;
+        let (mut vmin, mut vmax) = (f64::INFINITY, f64::NEG_INFINITY);
+        let (mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in self.points {
+            let w = sign * w_of(*p);
+            if w.is_nan() || w <= 0.0 {
+                return Err(Error::Degenerate(format!(
+                    "a region vertex maps to w = {} under the trapezoid map",
+                    fmt_num(w)
+                )));
+            }
+            let y = ls.y.dot(*p);
+            vmin = vmin.min(y / w);
+            vmax = vmax.max(y / w);
+            ymin = ymin.min(y);
+            ymax = ymax.max(y);
+        }
+        let extent = self
+            .points
+            .iter()
+            .fold(0.0f64, |m, p| m.max(p.abs().max_element()));
+        let v_h = (0.5 * (vmax - vmin)).max(1e-9 * extent);
+        let v_m = 0.5 * (vmax + vmin);
+        let y_h = (0.5 * (ymax - ymin)).max(1e-9 * extent);
+        let y_m = 0.5 * (ymax + ymin);
+        // Light-space (x, y, z, 1) rows: N_T acts on (x, z, 1).
+        let row = |r: usize| DVec4::new(h.col(0)[r], 0.0, h.col(1)[r], h.col(2)[r]);
+        let (r0, r1, r3) = (row(0), row(1), row(2));
+        let r2 = DVec4::new(0.0, -1.0 / v_h, 0.0, 0.0) + r3 * (v_m / v_h);
+        let w_ls = DMat4::from_cols(r0, r1, r2, r3).transpose();
+        let matrix = w_ls * ls.rotation();
+        if !matrix.is_finite() {
+            return Err(Error::Degenerate(
+                "the trapezoidal map is not finite".into(),
+            ));
+        }
+        let light_depth = DVec4::new(-ls.y.x / y_h, -ls.y.y / y_h, -ls.y.z / y_h, y_m / y_h);
+        let focus_area = self.focus_area(&analytic);
+        Ok(TsmMap {
+            shadow: ShadowMatrix {
+                matrix,
+                light_dir: ls.light_dir(),
+                n_prime: match eta {
+                    Some(e) => NPrime::Finite(e),
+                    None => NPrime::Unwarped,
+                },
+                near,
+                far,
+            },
+            light_space: *ls,
+            trapezoid: Trapezoid {
+                corners,
+                q: eta.map(|e| DVec2::new(0.0, z0 - e)),
+            },
+            n_t: h,
+            light_depth,
+            xi: if eta.is_some() {
+                xi
+            } else {
+                analytic
+                    .map(ls.x.dot(self.focus_point), ls.z.dot(self.focus_point))
+                    .y
+            },
+            focus_area,
+        })
+    }
+
+    /// Fraction of the unit square covered by the image of the focus region's hull.
+    fn focus_area(&self, a: &Analytic) -> f64 {
+        let mut pts = [DVec2::ZERO; 64];
+        let m = self.focus_region.len().min(64);
+        for (i, p) in self.focus_region.iter().take(m).enumerate() {
+            pts[i] = a.map(self.ls.x.dot(*p), self.ls.z.dot(*p));
+        }
+        hull_area(&mut pts[..m]) / 4.0
+    }
+}
+
+/// Area of the convex hull of the points (monotone chain, in place, no allocation).
+fn hull_area(pts: &mut [DVec2]) -> f64 {
+    let n = pts.len();
+    if n < 3 {
+        return 0.0;
+    }
+    pts.sort_unstable_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    let mut hull = [DVec2::ZERO; 130];
+    let mut k = 0usize;
+    for &p in pts.iter() {
+        while k >= 2 && (hull[k - 1] - hull[k - 2]).perp_dot(p - hull[k - 2]) <= 0.0 {
+            k -= 1;
+        }
+        hull[k] = p;
+        k += 1;
+    }
+    let lower = k + 1;
+    for i in (0..n - 1).rev() {
+        while k >= lower && (hull[k - 1] - hull[k - 2]).perp_dot(pts[i] - hull[k - 2]) <= 0.0 {
+            k -= 1;
+        }
+        hull[k] = pts[i];
+        k += 1;
+    }
+    let mut area = 0.0;
+    for i in 0..k.saturating_sub(1) {
+        area += hull[i].perp_dot(hull[i + 1]);
+    }
+    0.5 * area.abs()
+}
+
+/// A convex region of eye space bounded by up to six planes `a x + b y + c z + d ≤ 0`, stored as
+/// `(a, b, c, d)`: the light's volume or a scene box for [`tsm_general`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ConvexBound {
+    planes: [DVec4; 6],
+}
+
+impl ConvexBound {
+    /// From six eye-space planes `(a, b, c, d)`, inside where `a x + b y + c z + d ≤ 0`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `planes` for a non-finite plane or a zero normal.
+    pub fn from_planes(planes: [DVec4; 6]) -> Result<Self> {
+        for p in &planes {
+            if !p.is_finite() || p.truncate().length() <= 0.0 {
+                return Err(Error::invalid(
+                    "planes",
+                    format!("must be finite with a non-zero normal (got {p})"),
+                ));
+            }
+        }
+        Ok(Self { planes })
+    }
+
+    /// A world-space axis-aligned box seen through the camera's view matrix (world → eye).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `min`/`max` (not finite, or min > max on an axis) or
+    /// `view_matrix` (not invertible).
+    pub fn from_aabb(min: DVec3, max: DVec3, view_matrix: DMat4) -> Result<Self> {
+        if !min.is_finite() || !max.is_finite() || min.cmpgt(max).any() {
+            return Err(Error::invalid(
+                "min",
+                format!("must be finite and not above max (got min={min}, max={max})"),
+            ));
+        }
+        let det = view_matrix.determinant();
+        if !det.is_finite() || det.abs() < 1e-300 {
+            return Err(Error::invalid("view_matrix", "must be invertible"));
+        }
+        // A world plane π (π·(x, 1) ≤ 0) is V⁻ᵀ π in eye space.
+        let it = view_matrix.inverse().transpose();
+        let world = [
+            DVec4::new(1.0, 0.0, 0.0, -max.x),
+            DVec4::new(-1.0, 0.0, 0.0, min.x),
+            DVec4::new(0.0, 1.0, 0.0, -max.y),
+            DVec4::new(0.0, -1.0, 0.0, min.y),
+            DVec4::new(0.0, 0.0, 1.0, -max.z),
+            DVec4::new(0.0, 0.0, -1.0, min.z),
+        ];
+        Self::from_planes(world.map(|p| it * p))
+    }
+}
+
+/// The planes of the view frustum in the same convention (a x + b y + c z + d ≤ 0).
+fn frustum_planes(view: &ViewFrustum, far: f64) -> [DVec4; 6] {
+    let t = view.tan_half_fov();
+    let ta = t * view.aspect();
+    [
+        DVec4::new(0.0, 0.0, 1.0, view.near()), // depth ≥ near
+        DVec4::new(0.0, 0.0, -1.0, -far),       // depth ≤ far
+        DVec4::new(1.0, 0.0, ta, 0.0),          // x ≤ depth · t · a
+        DVec4::new(-1.0, 0.0, ta, 0.0),         // −x ≤ depth · t · a
+        DVec4::new(0.0, 1.0, t, 0.0),           // y ≤ depth · t
+        DVec4::new(0.0, -1.0, t, 0.0),          // −y ≤ depth · t
+    ]
+}
+
+/// Vertices of the convex polyhedron `{p : πᵢ·(p, 1) ≤ 0}`: every triple of planes whose
+/// intersection point satisfies all the constraints (relative tolerance 10⁻⁹ of `scale`),
+/// deduplicated. Returns the count written into `out`.
+fn polytope_vertices(planes: &[DVec4], scale: f64, out: &mut [DVec3; 64]) -> usize {
+    let mut count = 0;
+    let tol = 1e-9 * scale;
+    let m = planes.len();
+    for i in 0..m {
+        for j in (i + 1)..m {
+            for k in (j + 1)..m {
+                let a = DMat3::from_cols(
+                    planes[i].truncate(),
+                    planes[j].truncate(),
+                    planes[k].truncate(),
+                )
+                .transpose();
+                let det = a.determinant();
+                let norms = planes[i].truncate().length()
+                    * planes[j].truncate().length()
+                    * planes[k].truncate().length();
+                if det.abs() <= 1e-12 * norms {
+                    continue;
+                }
+                let p = a.inverse() * DVec3::new(-planes[i].w, -planes[j].w, -planes[k].w);
+                if !p.is_finite() {
+                    continue;
+                }
+                let inside = planes
+                    .iter()
+                    .all(|pl| pl.truncate().dot(p) + pl.w <= tol * pl.truncate().length());
+                if inside && !out[..count].iter().any(|q| (*q - p).length() <= tol) && count < 64 {
+                    out[count] = p;
+                    count += 1;
+                }
+            }
+        }
+    }
+    count
+}
+
+/// The trapezoidal map of the part of the view frustum inside `bound` (Martin & Tan §6.4; module
+/// docs). No heap allocation.
+///
+/// # Errors
+/// As [`tsm`]; [`Error::NoSolution`] when the bound does not meet the view frustum in a solid.
+///
+/// ```
+/// # use shadow_aliasing::build::tsm::{tsm_general, ConvexBound, TsmOptions, TsmSearch};
+/// # use shadow_aliasing::ViewFrustum;
+/// # use glam::{DMat4, DVec3, DVec4};
+/// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;
+/// // The scene is a box 40 units deep in front of the camera (world = eye here).
+/// let bound = ConvexBound::from_aabb(DVec3::new(-50.0, -5.0, -40.0), DVec3::new(50.0, 5.0, 0.0), DMat4::IDENTITY)?;
+/// let opts = TsmOptions { focus: 20.0, search: TsmSearch::EightyPercent };
+/// let t = tsm_general(&view, DVec3::new(0.3, -1.0, 0.2), &bound, opts)?;
+/// let h = t.shadow.matrix * DVec4::new(0.0, 0.0, -40.0, 1.0);
+/// assert!((h.truncate() / h.w).abs().max_element() <= 1.0 + 1e-9);
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn tsm_general(
+    view: &ViewFrustum,
+    light_dir: DVec3,
+    bound: &ConvexBound,
+    opts: TsmOptions,
+) -> Result<TsmMap> {
+    validate(view, &opts)?;
+    let (n, f) = (view.near(), view.far());
+    let scale = f * (1.0 + view.tan_half_fov() * (1.0 + view.aspect()));
+    let mut planes = [DVec4::ZERO; 13];
+    planes[..6].copy_from_slice(&frustum_planes(view, f));
+    planes[6..12].copy_from_slice(&bound.planes);
+    let mut verts = [DVec3::ZERO; 64];
+    let count = polytope_vertices(&planes[..12], scale, &mut verts);
+    if count < 4 {
+        return Err(Error::NoSolution(
+            "the bound does not meet the view frustum in a solid region".into(),
+        ));
+    }
+    let pts = &verts[..count];
+    let e = pts.iter().fold(DVec3::ZERO, |a, p| a + *p) / count as f64;
+    let (mut n_i, mut f_i) = (f64::INFINITY, f64::NEG_INFINITY);
+    for p in pts {
+        n_i = n_i.min(-p.z);
+        f_i = f_i.max(-p.z);
+    }
+    if f_i - n_i <= 1e-12 * scale {
+        return Err(Error::NoSolution(
+            "the bound meets the view frustum in a region without depth".into(),
+        ));
+    }
+    let ls = light_space(light_dir, e)?;
+    let focus = opts.focus * (f_i - n_i) / (f - n);
+    // The focus point on the centre line (eye → e) at depth n_I + focus.
+    let focus_point = e * ((n_i + focus) / -e.z);
+    // The focus region: I cut at that depth.
+    planes[12] = DVec4::new(0.0, 0.0, -1.0, -(n_i + focus));
+    let mut fverts = [DVec3::ZERO; 64];
+    let fcount = polytope_vertices(&planes[..13], scale, &mut fverts);
+    // The centre line's projected length: from the eye's depth-n_I point to the f_I point on l.
+    let dir = e / -e.z;
+    let centre_line = (ls.z.dot(dir) * (f_i - n_i)).abs();
+    let core = Core {
+        ls,
+        points: pts,
+        focus_region: &fverts[..fcount],
+        focus_point,
+        centre_line,
+    };
+    core.build(opts.search, n_i, f_i)
+}

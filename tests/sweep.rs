@@ -1,0 +1,162 @@
+//! The hemisphere sweep: its grid and direction conventions, its values against the ground-truth
+//! measurement of each scheme's matrices, and the closed forms at the overhead and behind rows.
+
+use glam::DVec3;
+use shadow_aliasing::build::scheme::{scheme, Partition};
+use shadow_aliasing::build::{warp, WarpRule};
+use shadow_aliasing::measure::sweep::{
+    light_dir_from_angles, sweep, sweep_into, vertex_max, SweepGrid,
+};
+use shadow_aliasing::measure::{frustum_max, point_error, ShadowMap};
+use shadow_aliasing::{Resolutions, ViewFrustum};
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
+
+#[test]
+fn grid_ends_and_directions() {
+    let g = SweepGrid::new(90, 360).unwrap();
+    assert_eq!(g.len(), 32_400);
+    assert_eq!(g.elevation(0), 0.0);
+    assert_eq!(g.elevation(89), FRAC_PI_2);
+    assert!((g.elevation(1) - FRAC_PI_2 / 89.0).abs() < 1e-16);
+    assert_eq!(g.azimuth(0), 0.0);
+    assert!((g.azimuth(359) - TAU * 359.0 / 360.0).abs() < 1e-15);
+    assert_eq!(SweepGrid::new(1, 4).unwrap().elevation(0), FRAC_PI_2);
+    assert!(SweepGrid::new(0, 4).is_err());
+    assert!(SweepGrid::new(4, 0).is_err());
+    assert!(SweepGrid::new(1 << 13, 1 << 13).is_err());
+    // D = (cos el sin az, sin el, cos el cos az) toward the source; light travels −D.
+    let close = |a: DVec3, b: DVec3| (a - b).length() < 1e-15;
+    assert!(close(light_dir_from_angles(FRAC_PI_2, 1.234), DVec3::NEG_Y));
+    assert!(close(light_dir_from_angles(0.0, 0.0), DVec3::NEG_Z)); // source behind the viewer
+    assert!(close(light_dir_from_angles(0.0, PI), DVec3::Z)); // source in front
+    assert!(close(light_dir_from_angles(0.0, FRAC_PI_2), DVec3::NEG_X)); // source to the right
+    let d = light_dir_from_angles(0.3, 2.0);
+    assert!(close(
+        -d,
+        DVec3::new(
+            0.3f64.cos() * 2.0f64.sin(),
+            0.3f64.sin(),
+            0.3f64.cos() * 2.0f64.cos()
+        )
+    ));
+}
+
+/// `vertex_max` is `measure::point_error` (the ground truth) maximised over the points.
+#[test]
+fn vertex_max_is_point_error() {
+    let view = ViewFrustum::with_aspect(0.7, 90.0, 0.9, 1.6).unwrap();
+    for l in [
+        DVec3::new(0.2, -1.0, 0.3),
+        DVec3::new(-0.7, -0.1, -0.6),
+        DVec3::new(0.0, 0.0, 1.0),
+    ] {
+        for rule in [WarpRule::Lispsm, WarpRule::Uniform, WarpRule::Psm] {
+            let s = warp(&view, l, rule).unwrap();
+            let fast =
+                vertex_max(&s.matrix, s.light_dir, view.tan_half_fov(), &view.corners()).unwrap();
+            let truth = frustum_max(&view, &s.shadow_map()).unwrap();
+            assert!((fast.max_mx - truth.max_mx).abs() <= 1e-12 * truth.max_mx);
+            assert!((fast.max_mz - truth.max_mz).abs() <= 1e-12 * truth.max_mz);
+            let sm = ShadowMap::new(s.matrix, l).unwrap();
+            let p = DVec3::new(1.0, -2.0, -30.0);
+            let e = point_error(&view, &sm, p, Resolutions::default()).unwrap();
+            let one = vertex_max(&s.matrix, s.light_dir, view.tan_half_fov(), &[p]).unwrap();
+            assert!((one.max_mx - e.mx).abs() <= 1e-12 * e.mx);
+            assert!((one.max_mz - e.mz).abs() <= 1e-12 * e.mz);
+        }
+    }
+    // Behind the centre of projection, or at depth ≤ 0: None, not NaN.
+    let s = warp(&view, DVec3::NEG_Y, WarpRule::Psm).unwrap();
+    assert!(vertex_max(
+        &s.matrix,
+        s.light_dir,
+        0.9f64.tan(),
+        &[DVec3::new(0.0, 0.0, 1.0)]
+    )
+    .is_none());
+}
+
+/// Every sweep value is the scheme's storage factor at that direction, and for a single map the
+/// ground-truth `frustum_max` of the map `warp` builds there.
+#[test]
+fn sweep_values_are_the_measurement() {
+    let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
+    let grid = SweepGrid::new(7, 12).unwrap();
+    for (rule, partition, k) in [
+        (WarpRule::LispsmSin, Partition::Single, 1),
+        (WarpRule::Uniform, Partition::Log, 3),
+        (WarpRule::Lispsm, Partition::Faces, 2),
+        (WarpRule::Minimax, Partition::Practical(0.5), 2),
+    ] {
+        let s = sweep(&view, rule, partition, k, grid).unwrap();
+        for (n, (el, az, v)) in s.rows().enumerate() {
+            assert_eq!((el, az), (grid.elevation(n / 12), grid.azimuth(n % 12)));
+            let l = light_dir_from_angles(el, az);
+            let direct = scheme(&view, l, rule, partition, k)
+                .unwrap()
+                .storage_factor();
+            assert_eq!(v, direct);
+            if partition == Partition::Single {
+                let m = warp(&view, l, rule).unwrap();
+                let truth = frustum_max(&view, &m.shadow_map()).unwrap().storage_factor;
+                assert!((v - truth).abs() <= 1e-12 * truth);
+            }
+        }
+    }
+}
+
+/// The closed forms at the sweep's special rows (f/n = 1000, θ = 30°): overhead (the last row)
+/// LiSPSM with 1/sin γ gives Lloyd 2006 Eq 12, (f/n − 1)/(2 tan θ); at el = 0, az = 0 (source
+/// behind) it falls back to the uniform map, (f/n)² (Eq 20, k = 1).
+#[test]
+fn overhead_and_behind_closed_forms() {
+    let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
+    let grid = SweepGrid::new(10, 8).unwrap();
+    let s = sweep(&view, WarpRule::LispsmSin, Partition::Single, 1, grid).unwrap();
+    let eq12 = 999.0 / (2.0 * 30f64.to_radians().tan());
+    for j in 0..8 {
+        let v = s.storage_factor[9 * 8 + j];
+        assert!((v - eq12).abs() <= 1e-9 * eq12, "overhead {v} vs {eq12}");
+    }
+    let behind = s.storage_factor[0];
+    assert!((behind - 1e6).abs() <= 1e-9 * 1e6, "behind {behind}");
+    // Into a caller's buffer, and its length checked.
+    let mut buf = vec![0.0; grid.len()];
+    sweep_into(
+        &view,
+        WarpRule::LispsmSin,
+        Partition::Single,
+        1,
+        grid,
+        &mut buf,
+    )
+    .unwrap();
+    assert_eq!(buf, s.storage_factor);
+    let mut short = vec![0.0; 3];
+    assert!(sweep_into(
+        &view,
+        WarpRule::LispsmSin,
+        Partition::Single,
+        1,
+        grid,
+        &mut short
+    )
+    .is_err());
+    assert!(sweep(&view, WarpRule::Uniform, Partition::Log, 0, grid).is_err());
+    assert!(s.max() >= behind);
+}
+
+/// The parallel and the serial drivers agree value for value (rows are independent).
+#[cfg(feature = "parallel")]
+#[test]
+fn parallel_equals_serial() {
+    let view = ViewFrustum::new(0.5, 400.0, 0.5).unwrap();
+    let grid = SweepGrid::new(12, 24).unwrap();
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap()
+        .install(|| sweep(&view, WarpRule::Lispsm, Partition::Log, 3, grid).unwrap());
+    let all = sweep(&view, WarpRule::Lispsm, Partition::Log, 3, grid).unwrap();
+    assert_eq!(one, all);
+}

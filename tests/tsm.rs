@@ -1,0 +1,338 @@
+//! Trapezoidal shadow maps: the focus point on the chosen line, the trapezoid's corners on the
+//! unit square's, every frustum corner in clip space, the equality with the perspective warp of
+//! parameter η, Lloyd 2006's closed forms overhead, the fallbacks and the general case.
+
+use glam::{DMat4, DVec2, DVec3, DVec4};
+use proptest::prelude::*;
+use shadow_aliasing::build::tsm::{
+    quad_to_square, tsm, tsm_general, ConvexBound, TsmOptions, TsmSearch,
+};
+use shadow_aliasing::build::{fit_warp, light_space, warp, WarpRule};
+use shadow_aliasing::measure::{frustum_max, ShadowMap};
+use shadow_aliasing::{NPrime, ViewFrustum};
+
+fn clip(m: &DMat4, p: DVec3) -> DVec3 {
+    let h = *m * DVec4::new(p.x, p.y, p.z, 1.0);
+    assert!(h.w > 0.0, "w = {} at {p}", h.w);
+    h.truncate() / h.w
+}
+
+fn light_from_angles(elev: f64, azim: f64) -> DVec3 {
+    let (se, ce) = elev.sin_cos();
+    DVec3::new(ce * azim.sin(), -se, -ce * azim.cos())
+}
+
+fn in_clip(c: DVec3) -> bool {
+    c.is_finite() && c.abs().max_element() <= 1.0 + 1e-8
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// For random cameras and lights: the focus point lands on the chosen line (or, for the
+    /// bounding-rectangle fallback, below it, where no trapezoid can move it up), the corners of
+    /// the trapezoid land on the unit square's corners, every frustum corner is in the clip
+    /// volume, and the map equals the perspective warp with n′ = η (t reversed).
+    #[test]
+    fn tsm_behaviour(
+        near in 0.05f64..5.0,
+        log_ratio in (1.05f64).ln()..(1e5f64).ln(),
+        fov_deg in 1.0f64..80.0,
+        aspect in 0.5f64..2.0,
+        elev in -std::f64::consts::FRAC_PI_2..std::f64::consts::FRAC_PI_2,
+        azim in 0.0f64..std::f64::consts::TAU,
+        focus_frac in 0.01f64..1.0,
+        xi in -0.95f64..0.95,
+        eighty in proptest::bool::ANY,
+    ) {
+        let view = ViewFrustum::with_aspect(near, near * log_ratio.exp(), fov_deg.to_radians(), aspect).unwrap();
+        let l = light_from_angles(elev, azim);
+        let focus = focus_frac * (view.far() - view.near());
+        let search = if eighty { TsmSearch::EightyPercent } else { TsmSearch::Line(xi) };
+        let xi = if eighty { -0.6 } else { xi };
+        let t = tsm(&view, l, TsmOptions { focus, search }).unwrap();
+        let m = t.shadow.matrix;
+        for c in view.corners() {
+            prop_assert!(in_clip(clip(&m, c)), "corner {c} → {}", clip(&m, c));
+            let d = t.light_depth.dot(c.extend(1.0));
+            prop_assert!(d.abs() <= 1.0 + 1e-9);
+        }
+        let fp = DVec3::new(0.0, 0.0, -(view.near() + focus));
+        let y = clip(&m, fp).y;
+        match t.shadow.n_prime {
+            NPrime::Finite(eta) => {
+                prop_assert!((y - xi).abs() <= 1e-9, "focus at y = {y}, line {xi}");
+                // Same map as the warp of parameter η, t reversed.
+                let ls = light_space(l, DVec3::NEG_Z).unwrap();
+                let w = fit_warp(&view.corners(), &ls, NPrime::Finite(eta)).unwrap();
+                for c in view.corners().iter().chain([fp].iter()) {
+                    let a = clip(&m, *c);
+                    let b = clip(&w, *c);
+                    prop_assert!((a.x - b.x).abs() <= 1e-8 && (a.y + b.y).abs() <= 1e-8, "{a} vs {b}");
+                }
+            }
+            NPrime::Unwarped => prop_assert!(y <= xi + 1e-9, "fallback with focus at {y} above {xi}"),
+        }
+        for (k, corner) in t.trapezoid.corners.iter().enumerate() {
+            let h = t.n_t * corner.extend(1.0);
+            let s = DVec2::new(h.x / h.z, h.y / h.z);
+            let expect = [DVec2::new(-1.0, 1.0), DVec2::new(1.0, 1.0), DVec2::new(1.0, -1.0), DVec2::new(-1.0, -1.0)][k];
+            prop_assert!((s - expect).length() <= 1e-9, "corner {k}: {s}");
+        }
+    }
+}
+
+/// With the light overhead the trapezoid's warp is Lloyd's with n′ = η, so its measured S̄ is
+/// Lloyd 2006 Eq 12 with n′ = η (§4.3: PSM, LiSPSM and TSM differ only in n′).
+#[test]
+fn overhead_storage_factor_is_lloyd_eq_12() {
+    for (n, f, fov, focus) in [
+        (1.0, 100.0, 30.0f64, 20.0),
+        (0.5, 2000.0, 45.0, 300.0),
+        (1.0, 10.0, 20.0, 8.5),
+    ] {
+        let view = ViewFrustum::new(n, f, fov.to_radians()).unwrap();
+        let t = tsm(
+            &view,
+            DVec3::NEG_Y,
+            TsmOptions {
+                focus,
+                search: TsmSearch::EightyPercent,
+            },
+        )
+        .unwrap();
+        let eta = t.shadow.n_prime.value();
+        // Martin & Tan §6.2 by hand: λ = f − n, δ′ = focus, ξ = −0.6.
+        let lambda = f - n;
+        let by_hand = lambda * focus * 0.4 / (lambda - 2.0 * focus + 0.6 * lambda);
+        if focus < 0.8 * lambda {
+            assert!(
+                (eta - by_hand).abs() <= 1e-12 * by_hand,
+                "{eta} vs {by_hand}"
+            );
+        } else {
+            assert!(t.shadow.n_prime.is_unwarped());
+        }
+        let e = frustum_max(&view, &t.shadow.shadow_map()).unwrap();
+        let n_lsp = n + (f * n).sqrt();
+        let sbar = (f / n - 1.0) / (2.0 * fov.to_radians().tan())
+            * if eta <= n_lsp {
+                1.0
+            } else if eta.is_finite() {
+                eta * eta * f / (n * (eta + f - n).powi(2))
+            } else {
+                f / n
+            };
+        assert!(
+            (e.storage_factor - sbar).abs() <= 1e-9 * sbar,
+            "S̄ {} vs Eq 12 {sbar}",
+            e.storage_factor
+        );
+    }
+}
+
+/// The four-point homography rejects what it cannot map.
+#[test]
+fn homography_rejects_degenerate_quads() {
+    let ok = [
+        DVec2::new(-1.0, 0.0),
+        DVec2::new(1.0, 0.0),
+        DVec2::new(2.0, 3.0),
+        DVec2::new(-2.0, 3.0),
+    ];
+    assert!(quad_to_square(ok).is_ok());
+    // Three collinear corners.
+    let flat = [
+        DVec2::new(0.0, 0.0),
+        DVec2::new(1.0, 0.0),
+        DVec2::new(2.0, 0.0),
+        DVec2::new(0.0, 1.0),
+    ];
+    assert!(quad_to_square(flat).is_err());
+    // Nearly collinear, relative 10⁻¹².
+    let nearly = [
+        DVec2::new(0.0, 0.0),
+        DVec2::new(1.0, 0.0),
+        DVec2::new(2.0, 1e-12),
+        DVec2::new(0.0, 1.0),
+    ];
+    assert!(quad_to_square(nearly).is_err());
+    // A bow-tie (corners out of order).
+    let bow = [
+        DVec2::new(0.0, 0.0),
+        DVec2::new(1.0, 1.0),
+        DVec2::new(1.0, 0.0),
+        DVec2::new(0.0, 1.0),
+    ];
+    assert!(quad_to_square(bow).is_err());
+    // A point.
+    assert!(quad_to_square([DVec2::ONE; 4]).is_err());
+    assert!(quad_to_square([DVec2::new(f64::NAN, 0.0), DVec2::X, DVec2::ONE, DVec2::Y]).is_err());
+}
+
+/// Light straight behind: the frustum looks square, the map is the bounding rectangle, S̄ = (f/n)²;
+/// a degree off the axis the 80 % trapezoid is used (Martin & Tan's rule is discontinuous there).
+#[test]
+fn square_fallback_from_behind() {
+    let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
+    let opts = TsmOptions {
+        focus: 20.0,
+        search: TsmSearch::EightyPercent,
+    };
+    let t = tsm(&view, DVec3::NEG_Z, opts).unwrap();
+    assert!(t.shadow.n_prime.is_unwarped() && t.trapezoid.q.is_none());
+    let e = frustum_max(&view, &t.shadow.shadow_map()).unwrap();
+    assert!((e.storage_factor - 1e4).abs() < 1e-6);
+    let u = warp(&view, DVec3::NEG_Z, WarpRule::Uniform).unwrap();
+    let eu = frustum_max(&view, &u.shadow_map()).unwrap();
+    assert!((e.storage_factor - eu.storage_factor).abs() < 1e-6);
+    let off = tsm(&view, light_from_angles(0.0, 1f64.to_radians()), opts).unwrap();
+    assert!(!off.shadow.n_prime.is_unwarped());
+    for c in view.corners() {
+        assert!(in_clip(clip(&off.shadow.matrix, c)));
+    }
+}
+
+/// The iterative variant keeps the trapezoid of largest focus area, starting from the 80 % line:
+/// never less than the 80 % rule's, and the line chosen is one of the map's lines.
+#[test]
+fn iterative_variant_maximises_focus_area() {
+    let view = ViewFrustum::new(1.0, 200.0, 35f64.to_radians()).unwrap();
+    for l in [
+        light_from_angles(0.3, 0.2),
+        light_from_angles(1.2, 2.0),
+        light_from_angles(0.05, 3.0), // dueling frusta
+        light_from_angles(0.6, 4.5),
+    ] {
+        let base = tsm(
+            &view,
+            l,
+            TsmOptions {
+                focus: 40.0,
+                search: TsmSearch::EightyPercent,
+            },
+        )
+        .unwrap();
+        let it = tsm(
+            &view,
+            l,
+            TsmOptions {
+                focus: 40.0,
+                search: TsmSearch::Iterative { map_lines: 256 },
+            },
+        )
+        .unwrap();
+        assert!(
+            it.focus_area >= base.focus_area - 1e-12,
+            "{} < {}",
+            it.focus_area,
+            base.focus_area
+        );
+        if !it.shadow.n_prime.is_unwarped() {
+            let k = (1.0 - it.xi) * 256.0 / 2.0;
+            assert!(
+                (k - k.round()).abs() < 1e-9 && (1.0..=205.0).contains(&k.round()),
+                "line {k}"
+            );
+        }
+        for c in view.corners() {
+            assert!(in_clip(clip(&it.shadow.matrix, c)));
+        }
+        assert!(base.focus_area > 0.0 && base.focus_area <= 1.0 + 1e-12);
+    }
+}
+
+/// §6.4: a bound containing the whole frustum changes nothing; a bound cutting it gives a map of
+/// the intersection with the focus point (on the new centre line) on the 80 % line.
+#[test]
+fn general_case_restricts_to_the_bound() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let l = DVec3::new(0.3, -1.0, 0.4);
+    let opts = TsmOptions {
+        focus: 20.0,
+        search: TsmSearch::EightyPercent,
+    };
+    let big =
+        ConvexBound::from_aabb(DVec3::splat(-1e3), DVec3::splat(1e3), DMat4::IDENTITY).unwrap();
+    let a = tsm(&view, l, opts).unwrap();
+    let b = tsm_general(&view, l, &big, opts).unwrap();
+    let diff = (a.shadow.matrix - b.shadow.matrix)
+        .to_cols_array()
+        .iter()
+        .fold(0.0f64, |m, d| m.max(d.abs()));
+    assert!(diff < 1e-9, "{diff}");
+    // A scene box 40 deep and 10 high, seen by a camera at (0, 2, 5) looking down the −Z axis.
+    let cam = glam::dcamera::rh::view::look_at_mat4(
+        DVec3::new(0.0, 2.0, 5.0),
+        DVec3::new(0.0, 2.0, -10.0),
+        DVec3::Y,
+    );
+    let bound = ConvexBound::from_aabb(
+        DVec3::new(-50.0, -5.0, -40.0),
+        DVec3::new(50.0, 5.0, 0.0),
+        cam,
+    )
+    .unwrap();
+    let g = tsm_general(&view, l, &bound, opts).unwrap();
+    // The box's far end is 45 from the camera: depths beyond it are not covered.
+    assert!(g.shadow.far <= 45.0 + 1e-9 && g.shadow.near >= 1.0 - 1e-12);
+    let inside = DVec3::new(0.0, -2.0, -30.0);
+    assert!(in_clip(clip(&g.shadow.matrix, inside)));
+    let m = ShadowMap::new(g.shadow.matrix, l).unwrap();
+    assert!(m.matrix.is_finite());
+    // A bound missing the frustum altogether.
+    let away = ConvexBound::from_aabb(
+        DVec3::new(-1.0, -1.0, 10.0),
+        DVec3::new(1.0, 1.0, 20.0),
+        DMat4::IDENTITY,
+    )
+    .unwrap();
+    assert!(tsm_general(&view, l, &away, opts).is_err());
+}
+
+/// Invalid options are typed errors naming the argument.
+#[test]
+fn invalid_options() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let l = DVec3::NEG_Y;
+    let e = tsm(
+        &view,
+        l,
+        TsmOptions {
+            focus: 0.0,
+            search: TsmSearch::EightyPercent,
+        },
+    )
+    .unwrap_err();
+    assert!(e.to_string().starts_with("focus "), "{e}");
+    let e = tsm(
+        &view,
+        l,
+        TsmOptions {
+            focus: 200.0,
+            search: TsmSearch::EightyPercent,
+        },
+    )
+    .unwrap_err();
+    assert!(e.to_string().starts_with("focus "), "{e}");
+    let e = tsm(
+        &view,
+        l,
+        TsmOptions {
+            focus: 10.0,
+            search: TsmSearch::Line(1.0),
+        },
+    )
+    .unwrap_err();
+    assert!(e.to_string().starts_with("xi "), "{e}");
+    let e = tsm(
+        &view,
+        l,
+        TsmOptions {
+            focus: 10.0,
+            search: TsmSearch::Iterative { map_lines: 1 },
+        },
+    )
+    .unwrap_err();
+    assert!(e.to_string().starts_with("map_lines "), "{e}");
+}
