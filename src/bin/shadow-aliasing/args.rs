@@ -109,10 +109,10 @@ pub struct SchemeArgs {
     /// η ∈ [−1, 1] for `--warp eta` (−1 unwarped, 0 LiSPSM, 1 PSM).
     #[arg(long, allow_negative_numbers = true)]
     pub eta: Option<f64>,
-    /// TSM's focus distance δ beyond the near plane of each (sub)frustum, as a fraction of its
-    /// depth range (0 < focus ≤ 1).
-    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
-    pub focus: f64,
+    /// TSM's focus distance δ beyond the near plane of each map's (sub)frustum, world units
+    /// (default: half the depth range of the shallowest z-partition).
+    #[arg(long, allow_negative_numbers = true)]
+    pub focus: Option<f64>,
     /// Filament's near hint (`ShadowOptions::shadowNearHint`), with `--warp filament`.
     #[arg(
         long = "near-hint",
@@ -136,9 +136,6 @@ pub struct SchemeArgs {
     /// Blend of `practical` partitions: 0 uniform, 1 logarithmic.
     #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
     pub lambda: f64,
-    /// Depth ratio α of the far partitions of `adaptive` when the light is parallel (Barroso Eq 19).
-    #[arg(long, default_value_t = 2.0, allow_negative_numbers = true)]
-    pub ratio: f64,
 }
 
 /// Warp rules by name.
@@ -184,7 +181,7 @@ pub enum PartitionName {
     Log,
     /// The λ-blend of uniform and logarithmic (`--lambda`).
     Practical,
-    /// Barroso & Celes' adaptive z-partitions (Eq 19).
+    /// Barroso & Celes' adaptive z-partitions (Eq 19), γ from the light, α = 2.
     Adaptive,
     /// Face partitions (Lloyd 2006 §5.1), with `--k` z-partitions inside each face.
     Faces,

@@ -1,8 +1,8 @@
 //! What each subcommand does.
 
-use crate::args::{Cli, Command, EvalArgs, FiguresArgs, Format, WarpArgs};
+use crate::args::{Cli, Command, EvalArgs, FiguresArgs, Format, SweepArgs, WarpArgs};
 use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
-use crate::scheme::{partitions, PartitionReport};
+use crate::scheme::{partition, partitions, rule, PartitionReport};
 use glam::DVec3;
 use shadow_aliasing::{LightAngle, ViewFrustum};
 use std::fmt::Write as _;
@@ -14,7 +14,7 @@ pub fn run(cli: Cli) -> ExitCode {
     match cli.command {
         Command::Eval(a) => eval(&a),
         Command::Warp(a) => warp(&a),
-        Command::Sweep(_) => fail("sweep is not available in this build yet"),
+        Command::Sweep(a) => sweep(&a),
         Command::Figures(a) => figures(&a),
     }
 }
@@ -106,7 +106,10 @@ fn warp_json(total: f64, parts: &[PartitionReport]) -> String {
             .collect();
         let _ = writeln!(
             s,
-            "    {{\"near\": {}, \"far\": {}, \"n_prime\": {}, \"max_mx\": {}, \"max_mz\": {}, \"storage_factor\": {}, \"matrix\": [{}]}}{}",
+            "    {{{}\"near\": {}, \"far\": {}, \"n_prime\": {}, \"max_mx\": {}, \"max_mz\": {}, \"storage_factor\": {}, \"matrix\": [{}]}}{}",
+            p.face
+                .as_ref()
+                .map_or_else(String::new, |f| format!("\"face\": \"{f}\", ")),
             json_num(p.near),
             json_num(p.far),
             json_n_prime(p.n_prime),
@@ -154,9 +157,12 @@ fn warp_text(a: &WarpArgs, gamma: f64, total: f64, parts: &[PartitionReport]) ->
     for (i, p) in parts.iter().enumerate() {
         let _ = writeln!(
             s,
-            "\npartition {} of {}: depth [{}, {}], n′ = {}",
+            "\npartition {} of {}{}: depth [{}, {}], n′ = {}",
             i + 1,
             parts.len(),
+            p.face
+                .as_ref()
+                .map_or_else(String::new, |f| format!(" ({f} face)")),
             sig(p.near),
             sig(p.far),
             sig_n_prime(p.n_prime)
@@ -256,4 +262,47 @@ fn figures(a: &FiguresArgs) -> ExitCode {
         )),
         Err(e) => fail(e),
     }
+}
+
+fn sweep(a: &SweepArgs) -> ExitCode {
+    use shadow_aliasing::measure::sweep::{sweep, SweepGrid};
+    let c = &a.camera;
+    let view = match ViewFrustum::new(c.near, c.far, c.half_fov) {
+        Ok(v) => v,
+        Err(e) => return fail(e),
+    };
+    let r = match rule(&view, None, &a.scheme) {
+        Ok(r) => r,
+        Err(e) => return fail(e),
+    };
+    let grid = match SweepGrid::new(a.elevations, a.azimuths) {
+        Ok(g) => g,
+        Err(e) => return fail(e),
+    };
+    let run = || sweep(&view, r, partition(&a.scheme), a.scheme.k, grid);
+    let result = match a.threads {
+        None => run(),
+        Some(0) => return fail("threads must be at least 1 (got 0)"),
+        Some(t) => match rayon::ThreadPoolBuilder::new().num_threads(t).build() {
+            Ok(pool) => pool.install(run),
+            Err(e) => return fail(format!("threads: cannot start {t} threads: {e}")),
+        },
+    };
+    let s = match result {
+        Ok(s) => s,
+        Err(e) => return fail(e),
+    };
+    // Shortest round-trip numbers (Rust's `Display` for f64), the grid's strings computed once.
+    let azimuths: Vec<String> = (0..grid.azimuths())
+        .map(|j| format!("{}", grid.azimuth(j)))
+        .collect();
+    let mut out = String::with_capacity(40 * (grid.len() + 1));
+    out.push_str("elevation,azimuth,storage_factor\n");
+    for (i, row) in s.storage_factor.chunks(grid.azimuths()).enumerate() {
+        let el = format!("{}", grid.elevation(i));
+        for (az, v) in azimuths.iter().zip(row) {
+            let _ = writeln!(out, "{el},{az},{v}");
+        }
+    }
+    print(&out)
 }
