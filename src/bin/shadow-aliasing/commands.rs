@@ -60,8 +60,13 @@ fn eval(a: &EvalArgs) -> ExitCode {
 
 /// Writes `text` to standard output; a closed pipe is not an error worth a message.
 fn print(text: &str) -> ExitCode {
+    print_bytes(text.as_bytes())
+}
+
+/// As [`print`], for bytes.
+fn print_bytes(bytes: &[u8]) -> ExitCode {
     let mut out = std::io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+    match out.write_all(bytes).and_then(|()| out.flush()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
         Err(e) => fail(format!("cannot write to standard output: {e}")),
@@ -292,17 +297,26 @@ fn sweep(a: &SweepArgs) -> ExitCode {
         Ok(s) => s,
         Err(e) => return fail(e),
     };
-    // Shortest round-trip numbers (Rust's `Display` for f64), the grid's strings computed once.
+    // Shortest round-trip numbers (ryu, through serde_json), the grid's strings computed once,
+    // everything written into one buffer and then to standard output in one go.
     let azimuths: Vec<String> = (0..grid.azimuths())
-        .map(|j| format!("{}", grid.azimuth(j)))
+        .map(|j| json_num(grid.azimuth(j)))
         .collect();
-    let mut out = String::with_capacity(40 * (grid.len() + 1));
-    out.push_str("elevation,azimuth,storage_factor\n");
+    let mut out: Vec<u8> = Vec::with_capacity(64 * (grid.len() + 1));
+    out.extend_from_slice(b"elevation,azimuth,storage_factor\n");
     for (i, row) in s.storage_factor.chunks(grid.azimuths()).enumerate() {
-        let el = format!("{}", grid.elevation(i));
+        let el = json_num(grid.elevation(i));
         for (az, v) in azimuths.iter().zip(row) {
-            let _ = writeln!(out, "{el},{az},{v}");
+            out.extend_from_slice(el.as_bytes());
+            out.push(b',');
+            out.extend_from_slice(az.as_bytes());
+            out.push(b',');
+            if serde_json::to_writer(&mut out, v).is_err() {
+                // Only a non-finite value fails, and the sweep never returns one.
+                out.extend_from_slice(json_num(*v).as_bytes());
+            }
+            out.push(b'\n');
         }
     }
-    print(&out)
+    print_bytes(&out)
 }
