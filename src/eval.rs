@@ -219,7 +219,8 @@ impl Output {
         };
         if bad {
             Err(format!(
-                "{quantity} has no finite value for these arguments (the computation gave {})",
+                "{quantity} could not be computed in f64 for these arguments: the computation \
+                 gave {} (an overflow or cancellation, reported rather than printed)",
                 self.to_json()
             ))
         } else {

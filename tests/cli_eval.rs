@@ -75,6 +75,20 @@ fn infinity_is_the_string_inf_in_and_out() {
 }
 
 #[test]
+fn a_value_beyond_f64_is_an_error_never_a_number() {
+    // (f − n)/(2 tan θ) = 10¹⁰/(2·10⁻³⁰⁰) is beyond the largest f64.
+    let (code, v, _) = eval_stdin(
+        r#"{"quantity": "mz", "near": 1, "far": 1e10, "half_fov": 1e-300, "n_prime": 11, "z": 10}"#,
+    );
+    assert_eq!(code, 1);
+    let e = error_of(&v);
+    assert!(
+        e.contains("could not be computed in f64") || e.starts_with("degenerate geometry"),
+        "{e}"
+    );
+}
+
+#[test]
 fn array_in_array_out_same_order_and_exit_1_on_any_error() {
     let input = r#"[
         {"quantity": "n_prime_lispsm", "near": 4, "far": 9},
