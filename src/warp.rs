@@ -22,7 +22,7 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::error::{fmt_num, in_closed, positive, Error, Result};
+use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::NPrime;
 
 /// Validates a depth range `0 < near < far`, both finite.
@@ -34,6 +34,16 @@ pub(crate) fn near_far(near: f64, far: f64) -> Result<(f64, f64)> {
             "far",
             format!(
                 "must be greater than near (got near={}, far={})",
+                fmt_num(n),
+                fmt_num(f)
+            ),
+        ));
+    }
+    if !(f / n).is_finite() {
+        return Err(Error::invalid(
+            "far",
+            format!(
+                "far/near must be finite (got near={}, far={})",
                 fmt_num(n),
                 fmt_num(f)
             ),
@@ -75,7 +85,13 @@ pub(crate) fn n_prime_at_least(n_prime: NPrime, near: f64) -> Result<Option<f64>
 #[inline]
 pub fn n_prime_lispsm(near: f64, far: f64) -> Result<f64> {
     let (n, f) = near_far(near, far)?;
-    Ok(n + (f * n).sqrt())
+    let fn_ = f * n;
+    let root = if fn_.is_finite() && fn_ > 0.0 {
+        fn_.sqrt()
+    } else {
+        f.sqrt() * n.sqrt()
+    };
+    finite_result("n_prime", n + root)
 }
 
 /// PSM's warp parameter: n′ = n, the warping frustum's centre of projection at the eye
@@ -117,7 +133,7 @@ pub fn n_prime_from_eta(near: f64, far: f64, eta: f64) -> Result<NPrime> {
             Ok(NPrime::Unwarped)
         }
     } else {
-        Ok(NPrime::Finite(n * ((ra + 1.0) / (eta * ra + 1.0))))
+        finite_result("n_prime", n * ((ra + 1.0) / (eta * ra + 1.0))).map(NPrime::Finite)
     }
 }
 
@@ -143,8 +159,17 @@ pub fn eta_from_n_prime(near: f64, far: f64, n_prime: NPrime) -> Result<f64> {
     let alpha = f / n;
     let ra = alpha.sqrt();
     let nu = np / n;
+    if !nu.is_finite() {
+        return Ok(-1.0);
+    }
     let eta = if nu >= 1.0 + ra {
-        (ra + 1.0 - nu) / (nu + alpha - 1.0)
+        let den = nu + alpha - 1.0;
+        if den.is_finite() {
+            (ra + 1.0 - nu) / den
+        } else {
+            // Divided through by ν so that a huge ν cannot overflow.
+            ((ra + 1.0) / nu - 1.0) / (1.0 + (alpha - 1.0) / nu)
+        }
     } else {
         (ra + 1.0 - nu) / (nu * ra)
     };

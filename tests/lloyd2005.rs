@@ -309,3 +309,35 @@ fn errata_s3_1_log_parameterisation_unnormalised() {
     let unnormalised = 1.0 / (2.0 * th.tan());
     assert!(close(unnormalised, 0.5, 1e-15) && unnormalised < limit);
 }
+
+fn any_f64() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        prop::num::f64::ANY,
+        (-300.0f64..300.0).prop_map(|e| 10f64.powf(e)),
+        Just(f64::INFINITY),
+        Just(1.0),
+        Just(-1.0),
+    ]
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// No input makes a Lloyd 2005 closed form panic or return NaN or ±∞.
+    #[test]
+    fn never_nan_or_infinite(a in any_f64(), n in any_f64(), z in any_f64(), th in any_f64(), x in any_f64(), k in 0usize..100) {
+        let ok = |r: Result<f64, shadow_aliasing::Error>| r.map_or(true, f64::is_finite);
+        let nw = NPrime::new(n).unwrap_or(NPrime::Unwarped);
+        prop_assert!(ok(distribution_g(a, nw, z)));
+        prop_assert!(ok(error_m(a, th, nw, z, 1.0, 1.0)));
+        prop_assert!(ok(xi_from_n(a, nw)));
+        prop_assert!(ok(max_error(a, th, x, 1.0, 1.0)));
+        prop_assert!(ok(subdivided_max_error(a, k, x, th, 1.0, 1.0)));
+        prop_assert!(ok(mx(a, nw, z, 1.0, 1.0)));
+        prop_assert!(ok(max_mx(a, x, 1.0, 1.0)));
+        let mut out = [0.0; 2];
+        if allocate_texels(&[a, n], z, &mut out).is_ok() {
+            prop_assert!(out.iter().all(|v| v.is_finite()));
+        }
+    }
+}

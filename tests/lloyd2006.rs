@@ -332,3 +332,42 @@ fn errata_app_c_drops_res_i() {
         1e-15
     ));
 }
+
+fn any_f64() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        prop::num::f64::ANY,
+        (-300.0f64..300.0).prop_map(|e| 10f64.powf(e)),
+        Just(f64::INFINITY),
+        Just(0.0),
+        Just(1.0),
+    ]
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// No input makes a closed form panic or return NaN or ±∞: each answers a finite value or a
+    /// typed error.
+    #[test]
+    fn never_nan_or_infinite(n in any_f64(), f in any_f64(), th in any_f64(), np in any_f64(), z in any_f64(), e in any_f64()) {
+        let ok = |r: Result<f64, shadow_aliasing::Error>| r.map_or(true, f64::is_finite);
+        let np = NPrime::new(np).unwrap_or(NPrime::Unwarped);
+        let r = Resolutions::default();
+        prop_assert!(ok(mx(n, f, np, z, r)));
+        prop_assert!(ok(max_mx(n, f, np, r)));
+        prop_assert!(ok(n_prime_lispsm(n, f)));
+        prop_assert!(ok(eta_from_n_prime(n, f, np)));
+        if let Ok(p) = n_prime_from_eta(n, f, e) {
+            prop_assert!(p.value() > 0.0 && (p.is_unwarped() || p.value().is_finite()));
+        }
+        if let Ok(v) = ViewFrustum::new(n, f, th) {
+            prop_assert!(ok(mz(&v, np, z, r)));
+            prop_assert!(ok(max_mz(&v, np, r)));
+            prop_assert!(ok(storage_factor(&v, np)));
+            prop_assert!(ok(budget_error(&v, np, e, 1.0)));
+            if let Ok(b) = budget_resolution(&v, np, e) {
+                prop_assert!(b.res_s.is_finite() && b.res_t.is_finite());
+            }
+        }
+    }
+}

@@ -167,7 +167,7 @@ proptest! {
     /// Eq 18 → App. C: k((f/n)^{1/k} − 1)/(2 tan θ) decreases in k towards ln(f/n)/(2 tan θ).
     #[test]
     fn zp_w_decreases_towards_the_optimum(v in frustum()) {
-        let opt = optimal_storage_factor(&v);
+        let opt = optimal_storage_factor(&v).unwrap();
         prop_assert!(close(opt, scheme_storage_factor(Scheme::Optimal, SchemeLight::Overhead, &v, 1).unwrap(), 0.0));
         let mut prev = f64::INFINITY;
         for k in 1..=64 {
@@ -205,6 +205,35 @@ fn seams_of_self_similar_cascades() {
             let after = point_error(&v1, &m1, p, Resolutions::default()).unwrap();
             assert!(close(after.mx / before.mx, jump_x, REL), "{warp:?} x");
             assert!(close(before.mz / after.mz, jump_z, REL), "{warp:?} z");
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// §5.3 (Fig 12): with j shadow maps, ZP overhead (j partitions) beats FP+ZP+W overhead (j/4
+    /// z-partitions); behind, ZP's k (f/n)^{2/k} is least near k = 2 ln(f/n) and then grows,
+    /// while FP+ZP+W keeps falling towards 2 ln(f/n) + 1, so it eventually wins.
+    #[test]
+    fn fig12_claims(v in frustum()) {
+        for j in (4..=64).step_by(4) {
+            let zp = scheme_storage_factor(Scheme::Zp, SchemeLight::Overhead, &v, j).unwrap();
+            let fp = scheme_storage_factor(Scheme::FpZpW, SchemeLight::Overhead, &v, j / 4).unwrap();
+            prop_assert!(zp < fp, "j = {j}: ZP {zp} FP+ZP+W {fp}");
+        }
+        let ln = v.alpha().ln();
+        let behind = |k| scheme_storage_factor(Scheme::Zp, SchemeLight::Behind, &v, k).unwrap();
+        let kmin = (2.0 * ln).ceil().max(1.0) as usize;
+        prop_assert!(behind(kmin + 1) < behind(kmin + 2));
+        let fp_limit = 2.0 * ln + 1.0;
+        let fp_big = scheme_storage_factor(Scheme::FpZpW, SchemeLight::Behind, &v, 1 << 20).unwrap();
+        prop_assert!(close(fp_big, fp_limit, 1e-5));
+        // min_k k (f/n)^{2/k} ≥ 2 e ln(f/n) > 2 ln(f/n) + 1 once ln(f/n) > 1/(2(e − 1)).
+        if ln > 0.5 / (std::f64::consts::E - 1.0) {
+            for k in 1..=kmin + 2 {
+                prop_assert!(fp_limit < behind(k));
+            }
         }
     }
 }
@@ -252,7 +281,11 @@ fn hand_values_fig12() {
         2.0 * 4.0 * (a - 1.0) + 1.0,
         1e-14
     ));
-    assert!(close(optimal_storage_factor(&v), 1000f64.ln() / t2, 1e-15));
+    assert!(close(
+        optimal_storage_factor(&v).unwrap(),
+        1000f64.ln() / t2,
+        1e-15
+    ));
     assert_eq!(
         shadow_map_count(Scheme::FpZpW, SchemeLight::Behind, 4).unwrap(),
         17
@@ -335,6 +368,44 @@ fn errata_eq22_eq23_drop_constant_factors() {
             let printed22 = jf * alpha.powf(2.0 / jf);
             let printed23 = jf * alpha.powf(4.0 / jf);
             assert!((printed22 - 252.9822).abs() < 1e-3 && printed23 == 8000.0);
+        }
+    }
+}
+
+fn any_f64() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        prop::num::f64::ANY,
+        (-300.0f64..300.0).prop_map(|e| 10f64.powf(e)),
+        Just(f64::INFINITY),
+        Just(1.0),
+    ]
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// No input makes the splits or the scheme storage factors panic or return NaN or ±∞.
+    #[test]
+    fn never_nan_or_infinite(n in any_f64(), f in any_f64(), p in any_f64(), q in any_f64(), k in 0usize..40) {
+        for s in [
+            SplitScheme::Uniform,
+            SplitScheme::SelfSimilar,
+            SplitScheme::Practical { lambda: p },
+            SplitScheme::Exponent { exponent: p },
+            SplitScheme::Adaptive { light_angle: p, ratio: q },
+        ] {
+            if let Ok(sp) = z_splits(n, f, k, s) {
+                prop_assert!(sp.planes().iter().all(|z| z.is_finite() && *z > 0.0));
+            }
+        }
+        if let Ok(v) = ViewFrustum::new(n, f, p) {
+            for sc in [Scheme::Zp, Scheme::ZpW, Scheme::FpZpW, Scheme::Optimal] {
+                for l in [SchemeLight::Overhead, SchemeLight::Behind] {
+                    prop_assert!(scheme_storage_factor(sc, l, &v, k).map_or(true, f64::is_finite));
+                }
+            }
+            prop_assert!(zp_overhead_asymptotic(&v, k).map_or(true, f64::is_finite));
+            prop_assert!(fp_zp_w_overhead_asymptotic(&v, k).map_or(true, f64::is_finite));
         }
     }
 }

@@ -24,9 +24,20 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::error::{fmt_num, positive, Error, Result};
+use crate::error::{finite_result, fmt_num, positive, Error, Result};
 use crate::frustum::{NPrime, Resolutions, ViewFrustum};
 use crate::warp::{n_prime_at_least, near_far};
+
+/// n′_LSPSM = n + √f √n (without overflow of f n).
+#[inline]
+fn lispsm(view: &ViewFrustum) -> f64 {
+    let fn_ = view.far() * view.near();
+    if fn_.is_finite() && fn_ > 0.0 {
+        view.near() + fn_.sqrt()
+    } else {
+        view.near() + view.far().sqrt() * view.near().sqrt()
+    }
+}
 
 /// Checks n ≤ z ≤ f.
 fn depth_in(z: f64, n: f64, f: f64) -> Result<f64> {
@@ -67,9 +78,9 @@ pub fn mx(near: f64, far: f64, n_prime: NPrime, z: f64, res: Resolutions) -> Res
     let z = depth_in(z, n, f)?;
     let shape = match np {
         None => f / z,
-        Some(np) => f * (np + z - n) / (z * (np + f - n)),
+        Some(np) => f / z * ((np + z - n) / (np + f - n)),
     };
-    Ok(res.image() / res.s() * shape)
+    finite_result("m_x", res.image() / res.s() * shape)
 }
 
 /// The z error at depth z (Lloyd 2006 Eq 8; Lloyd 2005 Eq 2, 3 with n = 1, f = α).
@@ -95,10 +106,13 @@ pub fn mz(view: &ViewFrustum, n_prime: NPrime, z: f64, res: Resolutions) -> Resu
         Some(np) => {
             let zp = np + z - n;
             // (n′ + z − n)² / (z n′ (n′ + f − n)), arranged to avoid overflow at large n′.
-            (zp / z) * (zp / np) / (np + f - n)
+            (zp / (np + f - n)) * (zp / np) / z
         }
     };
-    Ok(res.image() / res.t() * (f - n) / (2.0 * view.tan_half_fov()) * shape)
+    finite_result(
+        "m_z",
+        res.image() / res.t() * (f - n) / (2.0 * view.tan_half_fov()) * shape,
+    )
 }
 
 /// The maximum x error over the view frustum, at z = n (Lloyd 2006 Eq 9; Lloyd 2005 Eq 9).
@@ -137,10 +151,13 @@ pub fn max_mz(view: &ViewFrustum, n_prime: NPrime, res: Resolutions) -> Result<f
     let np = n_prime_at_least(n_prime, n)?;
     let shape = match np {
         None => 1.0 / n,
-        Some(np) if np <= view.n_prime_lispsm() => (np + f - n) / (f * np),
-        Some(np) => np / (n * (np + f - n)),
+        Some(np) if np <= lispsm(view) => (np + f - n) / f / np,
+        Some(np) => np / (np + f - n) / n,
     };
-    Ok(res.image() / res.t() * (f - n) / (2.0 * view.tan_half_fov()) * shape)
+    finite_result(
+        "M_z",
+        res.image() / res.t() * (f - n) / (2.0 * view.tan_half_fov()) * shape,
+    )
 }
 
 /// The storage factor S̄ = M_x M_z with unit resolutions (Lloyd 2006 Eq 12): how many times
@@ -163,13 +180,13 @@ pub fn storage_factor(view: &ViewFrustum, n_prime: NPrime) -> Result<f64> {
     let base = (f / n - 1.0) / (2.0 * view.tan_half_fov());
     let factor = match np {
         None => f / n,
-        Some(np) if np <= view.n_prime_lispsm() => 1.0,
+        Some(np) if np <= lispsm(view) => 1.0,
         Some(np) => {
             let r = np / (np + f - n);
             r * r * f / n
         }
     };
-    Ok(base * factor)
+    finite_result("storage factor", base * factor)
 }
 
 /// A shadow-map resolution pair, texels along s (the eye's x) and t (the view direction).
@@ -201,8 +218,11 @@ pub fn critical_resolution(
     let ri = positive("res_image", res_image)?;
     let unit = Resolutions::default();
     Ok(MapResolution {
-        res_s: ri * max_mx(view.near(), view.far(), n_prime, unit)?,
-        res_t: ri * max_mz(view, n_prime, unit)?,
+        res_s: finite_result(
+            "res_s",
+            ri * max_mx(view.near(), view.far(), n_prime, unit)?,
+        )?,
+        res_t: finite_result("res_t", ri * max_mz(view, n_prime, unit)?)?,
     })
 }
 
@@ -228,8 +248,8 @@ pub fn budget_resolution(
     let c = critical_resolution(view, n_prime, 1.0)?;
     let ratio = c.res_s / c.res_t;
     Ok(MapResolution {
-        res_s: (s0 * ratio).sqrt(),
-        res_t: (s0 / ratio).sqrt(),
+        res_s: finite_result("res_s", (s0 * ratio).sqrt())?,
+        res_t: finite_result("res_t", (s0 / ratio).sqrt())?,
     })
 }
 
@@ -246,7 +266,10 @@ pub fn budget_error(
 ) -> Result<f64> {
     let s0 = positive("budget", budget)?;
     let ri = positive("res_image", res_image)?;
-    Ok(ri * (storage_factor(view, n_prime)? / s0).sqrt())
+    finite_result(
+        "budget error",
+        ri * (storage_factor(view, n_prime)? / s0).sqrt(),
+    )
 }
 
 #[cfg(test)]

@@ -20,7 +20,7 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::error::{fmt_num, in_closed, positive, Error, Result};
+use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::ViewFrustum;
 
 /// The largest number of z-partitions a [`Splits`] holds.
@@ -172,7 +172,10 @@ pub enum SplitScheme {
 /// planes are exactly `near` and `far`.
 ///
 /// Barroso's Eq 19 prints the far ratio as "α_i" and says "f_1 = f_2"; the crate reads a single
-/// α and f_1 = n_2 (partitions are contiguous), which is what makes γ = π/2 equal Eq 5.
+/// α (his text: every partition but the first gets "a small value α"; with α^i the ratios at
+/// γ = 0 would be α^k, …, α², not α) and f_1 = n_2 (partitions are contiguous; f_1 = f_2 would
+/// make the first partition cover the second). At γ = π/2 the α term vanishes and the planes are
+/// Eq 5's self-similar ones, as he states.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far, finite), `k`
@@ -203,7 +206,15 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
     let alpha = f / n;
     let mut p = [0.0; MAX_PARTITIONS + 1];
     let uniform = |i: usize| n + (f - n) * (i as f64 / kf);
-    let logarithmic = |i: usize| n * alpha.powf(i as f64 / kf);
+    // Self-similar planes n r^i, r = (f/n)^{1/k}: one powf, then products (error ≤ k ulps).
+    let r = alpha.powf(1.0 / kf);
+    let mut logarithmic = [0.0; MAX_PARTITIONS + 1];
+    let mut zl = n;
+    for l in logarithmic.iter_mut().take(k + 1) {
+        *l = zl;
+        zl *= r;
+    }
+    let logarithmic = |i: usize| logarithmic[i];
     match scheme {
         SplitScheme::Uniform => {
             for (i, z) in p.iter_mut().enumerate().take(k + 1) {
@@ -348,7 +359,8 @@ fn k_ok(k: usize) -> Result<f64> {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `k` (≥ 1); [`Error::NoClosedForm`] for the optimal
-/// parameterisation with the light behind, which Lloyd 2006 does not analyse.
+/// parameterisation with the light behind, which Lloyd 2006 does not analyse;
+/// [`Error::Degenerate`] when f/n is so large that the value overflows.
 ///
 /// ```
 /// # use shadow_aliasing::analytic::partition::{scheme_storage_factor, Scheme, SchemeLight};
@@ -370,20 +382,20 @@ pub fn scheme_storage_factor(
     let two_tan = 2.0 * view.tan_half_fov();
     let am1 = ratio_m1(alpha, k);
     let a = 1.0 + am1;
-    Ok(match (scheme, light) {
-        (Scheme::Zp, SchemeLight::Overhead) => kf * a * am1 / two_tan,
-        (Scheme::ZpW | Scheme::FpZpW, SchemeLight::Overhead) => kf * am1 / two_tan,
-        (Scheme::Zp | Scheme::ZpW, SchemeLight::Behind) => kf * a * a,
-        (Scheme::FpZpW, SchemeLight::Behind) => 4.0 * (kf * am1 / 2.0) + 1.0,
-        (Scheme::Optimal, SchemeLight::Overhead) => optimal_storage_factor(view),
-        (Scheme::Optimal, SchemeLight::Behind) => {
-            return Err(Error::NoClosedForm(
+    let v =
+        match (scheme, light) {
+            (Scheme::Zp, SchemeLight::Overhead) => kf * a * am1 / two_tan,
+            (Scheme::ZpW | Scheme::FpZpW, SchemeLight::Overhead) => kf * am1 / two_tan,
+            (Scheme::Zp | Scheme::ZpW, SchemeLight::Behind) => kf * a * a,
+            (Scheme::FpZpW, SchemeLight::Behind) => 4.0 * (kf * am1 / 2.0) + 1.0,
+            (Scheme::Optimal, SchemeLight::Overhead) => optimal_storage_factor(view)?,
+            (Scheme::Optimal, SchemeLight::Behind) => return Err(Error::NoClosedForm(
                 "Lloyd 2006 derives the optimal logarithmic storage factor (App. C) only for the \
                  light overhead; there is none for the light behind"
                     .into(),
-            ))
-        }
-    })
+            )),
+        };
+    finite_result("storage factor", v)
 }
 
 /// The number of shadow maps a scheme uses with k z-partitions: k, or 4k + 1 for FP+ZP+W with
@@ -411,10 +423,15 @@ pub fn shadow_map_count(scheme: Scheme, light: SchemeLight, k: usize) -> Result<
 /// n = near, f = far, θ = half_fov. It is the k → ∞ limit of Eq 18, and a true lower bound: a
 /// map with m_x, m_z ≤ 1 needs at least one texel per pixel footprint,
 /// ∫ₙᶠ 2 z tan θ / (2 z tan θ)² dz = ln(f/n) / (2 tan θ) texels per image pixel².
+///
+/// # Errors
+/// [`Error::Degenerate`] when f/n overflows (near so small and far so large that f/n = ∞).
 #[inline]
-#[must_use]
-pub fn optimal_storage_factor(view: &ViewFrustum) -> f64 {
-    view.alpha().ln() / (2.0 * view.tan_half_fov())
+pub fn optimal_storage_factor(view: &ViewFrustum) -> Result<f64> {
+    finite_result(
+        "storage factor",
+        view.alpha().ln() / (2.0 * view.tan_half_fov()),
+    )
 }
 
 /// The large-f/n behaviour of ZP with the light overhead, with j shadow maps (Lloyd 2006
@@ -433,7 +450,10 @@ pub fn zp_overhead_asymptotic(view: &ViewFrustum, shadow_maps: usize) -> Result<
         return Err(Error::invalid("shadow_maps", "must be at least 1 (got 0)"));
     }
     let j = shadow_maps as f64;
-    Ok(j * (2.0 * view.alpha().ln() / j).exp() / (2.0 * view.tan_half_fov()))
+    finite_result(
+        "storage factor",
+        j * (2.0 * view.alpha().ln() / j).exp() / (2.0 * view.tan_half_fov()),
+    )
 }
 
 /// The large-f/n behaviour of FP+ZP+W with the light overhead, with j shadow maps, i.e. j/4
@@ -452,7 +472,10 @@ pub fn fp_zp_w_overhead_asymptotic(view: &ViewFrustum, shadow_maps: usize) -> Re
         return Err(Error::invalid("shadow_maps", "must be at least 1 (got 0)"));
     }
     let j = shadow_maps as f64;
-    Ok(j * (4.0 * view.alpha().ln() / j).exp() / (8.0 * view.tan_half_fov()))
+    finite_result(
+        "storage factor",
+        j * (4.0 * view.alpha().ln() / j).exp() / (8.0 * view.tan_half_fov()),
+    )
 }
 
 /// The storage factor of any z-partition, summed over its partitions, from the per-partition
@@ -468,7 +491,8 @@ pub fn fp_zp_w_overhead_asymptotic(view: &ViewFrustum, shadow_maps: usize) -> Re
 /// For self-similar splits these are Eq 17, 18, 20. θ = `half_fov` (radians).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `half_fov` (∈ (0, π/2)).
+/// [`Error::InvalidArgument`] naming `half_fov` (∈ (0, π/2)); [`Error::Degenerate`] if the sum
+/// overflows.
 pub fn splits_storage_factor(
     splits: &Splits,
     half_fov: f64,
@@ -487,7 +511,7 @@ pub fn splits_storage_factor(
             (SchemeLight::Behind, _) => a * a,
         };
     }
-    Ok(sum)
+    finite_result("storage factor", sum)
 }
 
 #[cfg(test)]

@@ -33,7 +33,7 @@
 //! ```
 
 use crate::analytic::partition::{z_splits, SplitScheme, Splits};
-use crate::error::{fmt_num, in_closed, in_open, positive, Error, Result};
+use crate::error::{finite_result, fmt_num, in_closed, in_open, positive, Error, Result};
 use crate::frustum::NPrime;
 
 /// Validates α > 1, finite.
@@ -125,13 +125,14 @@ pub fn distribution_g(alpha: f64, n_warp: NPrime, z: f64) -> Result<f64> {
     let a = alpha_ok(alpha)?;
     let n = n_warp_ok(n_warp)?;
     let z = z_ok(z, a)?;
-    Ok(match n {
+    let g = match n {
         None => 1.0 / z,
         Some(n) => {
             let zp = z - 1.0 + n;
-            (zp / z) * (zp / n) / (n + a - 1.0)
+            (zp / (n + a - 1.0)) * (zp / n) / z
         }
-    })
+    };
+    finite_result("g", g)
 }
 
 /// The perspective aliasing error m along the warp direction (Lloyd 2005 Eq 2).
@@ -158,7 +159,7 @@ pub fn error_m(
     let rp = positive("res_image", res_image)?;
     let rs = positive("res_shadow", res_shadow)?;
     let g = distribution_g(alpha, n_warp, z)?;
-    Ok(rp / rs * (alpha - 1.0) / (2.0 * t) * g)
+    finite_result("m", rp / rs * (alpha - 1.0) / (2.0 * t) * g)
 }
 
 /// ξ from the warp distance n (Lloyd 2005 §3.2).
@@ -181,7 +182,13 @@ pub fn xi_from_n(alpha: f64, n_warp: NPrime) -> Result<f64> {
     };
     let ra = a.sqrt();
     let xi = if n >= 1.0 + ra {
-        (ra - n + 1.0) / (n + a - 1.0)
+        let den = n + a - 1.0;
+        if den.is_finite() {
+            (ra - n + 1.0) / den
+        } else {
+            // Divided through by n so that a huge n cannot overflow.
+            ((ra + 1.0) / n - 1.0) / (1.0 + (a - 1.0) / n)
+        }
     } else {
         (ra - n + 1.0) / (n * ra)
     };
@@ -251,7 +258,10 @@ pub fn max_error(
     let rp = positive("res_image", res_image)?;
     let rs = positive("res_shadow", res_shadow)?;
     let ra = a.sqrt();
-    Ok(rp / rs * (a - 1.0) / (2.0 * t) * (1.0 + xi.abs() * (ra - 1.0)) / ra)
+    finite_result(
+        "m_max",
+        rp / rs * (a - 1.0) / (2.0 * t) * (1.0 + xi.abs() * (ra - 1.0)) / ra,
+    )
 }
 
 fn check_errors(errors: &[f64]) -> Result<f64> {
@@ -412,7 +422,10 @@ pub fn subdivided_max_error(
     let rp = positive("res_image", res_image)?;
     let rs = positive("res_shadow", res_shadow)?;
     let rak_m1 = (0.5 * ln_ak).exp_m1();
-    Ok(kf * rp / rs * ak_m1 / (2.0 * t) * (1.0 + xi.abs() * rak_m1) / rak)
+    finite_result(
+        "m_max",
+        kf * rp / rs * ak_m1 / (2.0 * t) * (1.0 + xi.abs() * rak_m1) / rak,
+    )
 }
 
 /// The x error (Lloyd 2005 Eq 8; Lloyd 2006 Eq 7 with n = 1, f = α).
@@ -434,9 +447,9 @@ pub fn mx(alpha: f64, n_warp: NPrime, z: f64, res_image: f64, res_x: f64) -> Res
     let rt = positive("res_x", res_x)?;
     let shape = match n {
         None => a / z,
-        Some(n) => a * (n + z - 1.0) / (z * (n + a - 1.0)),
+        Some(n) => a / z * ((n + z - 1.0) / (n + a - 1.0)),
     };
-    Ok(rp / rt * shape)
+    finite_result("m_x", rp / rt * shape)
 }
 
 /// The maximum x error, on the near plane z = 1, in terms of ξ (Lloyd 2005 Eq 9).
@@ -462,7 +475,7 @@ pub fn max_mx(alpha: f64, xi: f64, res_image: f64, res_x: f64) -> Result<f64> {
     } else {
         a / (ra * (1.0 + xi * (ra - 1.0)))
     };
-    Ok(rp / rt * shape)
+    finite_result("m_x,max", rp / rt * shape)
 }
 
 #[cfg(test)]

@@ -49,9 +49,10 @@ pub const LIGHT_OVERHEAD: DVec3 = DVec3::new(0.0, -1.0, 0.0);
 pub const LIGHT_BEHIND: DVec3 = DVec3::new(0.0, 0.0, -1.0);
 
 /// The warping-frustum matrix in a light-space frame: `a` the map's s axis, `b` the warp axis
-/// (both unit, ⊥ the light), `light` the light direction; the warped region spans
-/// u = b·p ∈ [u_near, u_far] with half-width (along a) `half_width_far` at u_far, which must be
-/// at least `u_far`-proportional (the region is |a·p| ≤ half_width_far · u / u_far).
+/// (both unit, ⊥ the light), `light` the light direction. The warped region spans
+/// u = b·p ∈ [u_near, u_far] and |a·p| ≤ `half_width_far` · u / u_far (a trapezoid whose sides
+/// meet on the view axis); the warping frustum touches its far corners. The depth row is
+/// `depth_scale` times the light coordinate (divided by w like the others).
 #[allow(clippy::too_many_arguments)]
 fn warp_matrix(
     a: DVec3,
@@ -96,9 +97,10 @@ fn warp_matrix(
 /// `view` (its near, far and half_fov; square image assumed by the closed forms), with warp
 /// parameter n′ (`NPrime::Unwarped` for the orthographic map). Eye space → light clip space.
 ///
-/// Its measured m_x, m_z are Lloyd 2006 Eq 7, 8 exactly; M_x, M_z, S̄ at the frustum vertices are
-/// Eq 9, 10, 12. The depth row is the light coordinate −y divided by tan θ (and by w): inside
-/// [−1, 1] over the view frustum and monotone along each light ray.
+/// For a square image (`aspect = 1`) its measured m_x, m_z are Lloyd 2006 Eq 7, 8 (to a relative
+/// 10⁻¹²); M_x, M_z, S̄ at the frustum vertices are Eq 9, 10, 12. The depth row is the light
+/// coordinate −y divided by tan θ (and by w): inside [−1, 1] over the view frustum and monotone
+/// along each light ray.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `n_prime` when n′ < near (the warping frustum would not
@@ -116,7 +118,7 @@ pub fn overhead_map(view: &ViewFrustum, n_prime: NPrime) -> Result<ShadowMap> {
         f,
         half,
         np,
-        1.0 / (t * view.aspect().max(1.0)),
+        1.0 / t,
     );
     ShadowMap::new(m, LIGHT_OVERHEAD)
 }
@@ -408,6 +410,20 @@ mod tests {
                 }
                 let want_t = if i < 4 { 0.0 } else { 1.0 };
                 assert!((t - want_t).abs() < 1e-12, "t={t}");
+            }
+        }
+        for face in Face::ALL {
+            let fm =
+                behind_face_map(&v, face, NPrime::Finite(v.near() * 0.6f64.tan() * 3.0)).unwrap();
+            for (i, c) in face.corners(&v).into_iter().enumerate() {
+                let (s, t, ..) = crate::measure::st_gradients(&fm.matrix, c).unwrap();
+                assert!((-1e-12..=1.0 + 1e-12).contains(&s), "{face:?} s={s}");
+                let want_t = if i < 2 { 0.0 } else { 1.0 };
+                assert!((t - want_t).abs() < 1e-12, "{face:?} t={t}");
+                // Deeper along the same light ray (−Z): the same texel.
+                let (s2, t2, ..) =
+                    crate::measure::st_gradients(&fm.matrix, c - DVec3::Z * 3.0).unwrap();
+                assert!((s2 - s).abs() < 1e-12 && (t2 - t).abs() < 1e-12);
             }
         }
         let b = behind_map(&v).unwrap();
