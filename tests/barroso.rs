@@ -38,19 +38,24 @@ struct Config {
 fn config() -> impl Strategy<Value = Config> {
     (
         0.05f64..10.0,
-        0.2f64..3.0,  // log10(f/n)
-        0.05f64..1.4, // half fov
-        0.0f64..=1.0, // γ/(π/2)
-        -2.0f64..2.5, // log10(n′/n)
-        0.0f64..=1.0, // (z − n)/(f − n)
+        0.004f64..6.0,    // log10(f/n)
+        0.0175f64..1.396, // half fov, 1° to 80°
+        0.0f64..=1.0,     // γ/(π/2)
+        -2.0f64..2.5,     // log10(n′/n)
+        0.0f64..=1.0,     // (z − n)/(f − n)
         (0.1f64..10.0, 0.1f64..10.0),
     )
         .prop_map(|(n, la, phi, g, lp, w, (ri, rt))| {
             let f = n * 10f64.powf(la);
+            let view = ViewFrustum::new(n, f, phi).unwrap();
+            let gamma = g * FRAC_PI_2;
+            // The twin evaluates t = A + B/z′ through a 4×4 matrix, which loses about
+            // log10(f′/n′) digits of the measured gradient; f′/n′ ≤ 10⁵ keeps it good to 1e-10.
+            let mu = warp_depth_range(&view, LightAngle::new(gamma).unwrap());
             Config {
-                view: ViewFrustum::new(n, f, phi).unwrap(),
-                gamma: g * FRAC_PI_2,
-                n_prime: n * 10f64.powf(lp),
+                view,
+                gamma,
+                n_prime: (n * 10f64.powf(lp)).max(1e-5 * mu),
                 z: (n + w * (f - n)).clamp(n, f),
                 res: Resolutions::new(ri, 1.0, rt).unwrap(),
             }
@@ -115,6 +120,42 @@ proptest! {
         let xi = tilted_xi(&c.view, c.n_prime, g, c.res).unwrap();
         let m = tilted_mz(&c.view, NPrime::Finite(c.n_prime), g, c.z, c.res).unwrap();
         prop_assert!(rel(xi * psi * psi / c.z, m) < 1e-12);
+    }
+
+    /// No input makes a public function panic or return a non-finite number.
+    #[test]
+    fn any_input_is_an_error_or_finite(
+        c in config(),
+        np in proptest::num::f64::ANY,
+        z in proptest::num::f64::ANY,
+        g in proptest::num::f64::ANY,
+    ) {
+        let gammas = [LightAngle::new(g).ok(), LightAngle::new(c.gamma).ok()];
+        for gamma in gammas.into_iter().flatten() {
+            for n_prime in [NPrime::Finite(np), NPrime::new(np).unwrap_or(NPrime::Unwarped)] {
+                for zz in [z, c.z] {
+                    for v in [
+                        tilted_mz(&c.view, n_prime, gamma, zz, c.res),
+                        tilted_mz_perpendicular(&c.view, n_prime, gamma, zz, c.res),
+                        tilted_psi(&c.view, np, gamma, zz),
+                        tilted_xi(&c.view, np, gamma, c.res),
+                    ]
+.into_iter()
+.flatten()
+{
+prop_assert!(v.is_finite());
+}
+                }
+            }
+            for fo in [Falloff::Zhang, Falloff::Barroso] {
+                if let NPrime::Finite(v) = generalized_n_prime(&c.view, gamma, fo) {
+                    prop_assert!(v.is_finite() && v > 0.0);
+                }
+            }
+            if let NPrime::Finite(v) = n_prime_axis_minimax(&c.view, gamma) {
+                prop_assert!(v.is_finite() && v > 0.0);
+            }
+        }
     }
 
     /// Overhead, Barroso's m_z is Lloyd 2006 Eq 8 and n′₁ is n + √(fn).
@@ -396,4 +437,18 @@ fn eq13_is_not_always_the_minimax() {
         "{}",
         max_at(g, NPrime::Unwarped)
     );
+    // Marginally on the n′₁ branch too, for a wide field of view: n = 1, f = 2, φ = 1.2,
+    // γ = 1.25: 0.50535 at n′₁ = 1.480, 0.50519 at n′* = 1.559.
+    let wide = ViewFrustum::new(1.0, 2.0, 1.2).unwrap();
+    let g = LightAngle::new(1.25).unwrap();
+    let m = |np: NPrime| {
+        let r = Resolutions::default();
+        tilted_mz(&wide, np, g, 1.0, r)
+            .unwrap()
+            .max(tilted_mz(&wide, np, g, 2.0, r).unwrap())
+    };
+    let (n1, opt) = (n_prime_1(&wide, g), n_prime_axis_minimax(&wide, g));
+    assert!((n1 - 1.480).abs() < 1e-3 && (opt.value() - 1.559).abs() < 1e-3);
+    assert!((m(NPrime::Finite(n1)) - 0.50535).abs() < 1e-5);
+    assert!((m(opt) - 0.50519).abs() < 1e-5);
 }

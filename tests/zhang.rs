@@ -49,26 +49,34 @@ struct Config {
     z: f64,
 }
 
+/// The twin evaluates t = A + B/z′ through a 4×4 matrix, which loses about log10(f′/n′) digits
+/// of the measured gradient (A ≈ −B/z′ when n′ ≪ μ); keeping f′/n′ ≤ 10⁵ keeps the measurement
+/// good to 1e-10 so the comparisons at 1e-9 test the closed forms, not the float evaluation.
+fn well_conditioned(view: &ViewFrustum, theta: f64, lambda: f64) -> f64 {
+    lambda.max(1e-5 * zhang_mu(view, LightAngle::new(theta).unwrap()))
+}
+
 fn config() -> impl Strategy<Value = Config> {
     (
         0.05f64..10.0,
-        0.2f64..3.0,   // log10(f/n)
-        0.05f64..1.4,  // half fov
-        0.0f64..=1.0,  // θ / (π/2)
-        -2.0f64..2.5,  // log10(λ/n)
-        -1.0f64..=1.0, // y / (z tan φ)
-        -1.0f64..=1.0, // x / (z tan φ)
-        0.0f64..=1.0,  // (z − n)/(f − n)
+        0.004f64..6.0,    // log10(f/n)
+        0.0175f64..1.396, // half fov, 1° to 80°
+        0.0f64..=1.0,     // θ / (π/2)
+        -2.0f64..2.5,     // log10(λ/n)
+        -1.0f64..=1.0,    // y / (z tan φ)
+        -1.0f64..=1.0,    // x / (z tan φ)
+        0.0f64..=1.0,     // (z − n)/(f − n)
     )
         .prop_map(|(n, la, phi, th, ll, u, v, w)| {
             let f = n * 10f64.powf(la);
             let view = ViewFrustum::new(n, f, phi).unwrap();
             let z = (n + w * (f - n)).clamp(n, f);
             let h = z * phi.tan();
+            let theta = th * FRAC_PI_2;
             Config {
                 view,
-                theta: th * FRAC_PI_2,
-                lambda: n * 10f64.powf(ll),
+                theta,
+                lambda: well_conditioned(&view, theta, n * 10f64.powf(ll)),
                 x: v * h,
                 y: u * h,
                 z,
@@ -175,6 +183,62 @@ proptest! {
         let lloyd_mz = (f - n) / (2.0 * t) * (np + z - n).powi(2) / (z * np * (np + f - n));
         prop_assert!(rel(zhang_eq_local(&c.view, ln, z).unwrap(), 2.0 * lloyd_mx) < 1e-12);
         prop_assert!(rel(zhang_ep_local(&c.view, ln, z).unwrap(), 2.0 * lloyd_mz) < 1e-12);
+    }
+
+    /// §3.1: E_q, E_p (and so E_p×q) increase as y decreases, at every depth and light angle
+    /// (measured on the twin).
+    #[test]
+    fn errors_increase_as_y_decreases(c in config(), u in 0.0f64..1.0) {
+        let l = NPrime::Finite(c.lambda);
+        let w = twin(&c.view, c.theta, l);
+        let y2 = c.y + u * (c.z * c.view.tan_half_fov() - c.y);
+        let (a, b) = (measured(&c.view, &w, c.x, c.y, c.z), measured(&c.view, &w, c.x, y2, c.z));
+        prop_assert!(a.mx >= b.mx * (1.0 - 1e-12) && a.mz >= b.mz * (1.0 - 1e-12));
+    }
+
+    /// No input makes a public function panic or return a non-finite number.
+    #[test]
+    fn any_input_is_an_error_or_finite(
+        c in config(),
+        l in proptest::num::f64::ANY,
+        y in proptest::num::f64::ANY,
+        z in proptest::num::f64::ANY,
+        k in proptest::num::f64::ANY,
+    ) {
+        let th = LightAngle::new(c.theta).unwrap();
+        for lam in [NPrime::Finite(l), NPrime::new(l).unwrap_or(NPrime::Unwarped), NPrime::Finite(c.lambda)] {
+            for (yy, zz) in [(y, z), (c.y, z), (y, c.z), (c.y, c.z)] {
+                for v in [
+                    zhang_eq(&c.view, lam, th, yy, zz),
+                    zhang_ep(&c.view, lam, th, yy, zz),
+                    zhang_eq_local(&c.view, lam, zz),
+                    zhang_ep_local(&c.view, lam, zz),
+                ]
+.into_iter()
+.flatten()
+{
+prop_assert!(v.is_finite());
+}
+            }
+        }
+        for lam in [l, c.lambda] {
+            for v in [
+                zhang_f_q(&c.view, lam, th),
+                zhang_f_p(&c.view, lam, th),
+                zhang_g(&c.view, lam, th, y),
+                zhang_tan_phi_w(&c.view, lam, th),
+                zhang_z_w(&c.view, lam, th, y, z),
+            ]
+.into_iter()
+.flatten()
+{
+prop_assert!(v.is_finite());
+}
+            let slope = SurfaceSlope { k_x: k, k_y: c.x };
+            if let Ok(f) = zhang_factorisation(&c.view, lam, th, c.x, c.y, c.z, slope) {
+                prop_assert!(f.e_q().is_finite() && f.e_p().is_finite());
+            }
+        }
     }
 
     /// The light behind the viewer is the mirror image y → −y of Zhang's light in front.
@@ -427,6 +491,36 @@ fn section_3_1_minimum_of_e_p_is_not_at_the_far_plane() {
     for z in [5.0, 9.0, 11.0, 20.0] {
         assert!(at(z) > mid);
     }
+    // E_p×q along the top edge is smallest at z = 2√(fn) = 20: 17.39 there, 34.29 at z = f.
+    let pq = |z: f64| {
+        let m = measured(&view, &w, 0.0, z * phi.tan(), z);
+        4.0 * m.mx * m.mz
+    };
+    assert!((pq(20.0) - 17.39).abs() < 1e-2, "{}", pq(20.0));
+    assert!((pq(100.0) - 34.29).abs() < 1e-2, "{}", pq(100.0));
+    assert!(pq(19.0) > pq(20.0) && pq(21.0) > pq(20.0));
+}
+
+/// §2.4 says θ can be replaced by π − θ for a light behind the viewer; that holds only with y
+/// replaced by −y too (the light behind is the mirror image of the light in front). At n = 1,
+/// f = 100, φ = 30°, λ = 11, light behind at 120° from the view (folded θ = 60°), point
+/// (y, z) = (5, 10): measured E_p = 2 m_z = 6.694; Eq 14 with θ = 60° and y = 5 gives 3.952, with
+/// y = −5 gives 6.694.
+#[test]
+fn light_behind_needs_y_mirrored() {
+    let (n, f, phi, lambda) = (1.0, 100.0, FRAC_PI_6, 11.0);
+    let view = ViewFrustum::new(n, f, phi).unwrap();
+    let th = LightAngle::new(60f64.to_radians()).unwrap();
+    let w = tilted_warp(&view, th, TiltSide::Behind, NPrime::Finite(lambda)).unwrap();
+    let m = measured(&view, &w, 0.0, 5.0, 10.0);
+    let l = NPrime::Finite(lambda);
+    let (same, mirrored) = (
+        zhang_ep(&view, l, th, 5.0, 10.0).unwrap(),
+        zhang_ep(&view, l, th, -5.0, 10.0).unwrap(),
+    );
+    assert!((2.0 * m.mz - 6.694).abs() < 1e-3, "{}", 2.0 * m.mz);
+    assert!((same - 3.952).abs() < 1e-3, "{same}");
+    assert!(rel(mirrored, 2.0 * m.mz) < 1e-12);
 }
 
 /// §3.1 claims the maximum of E_q is at (z = n, y = −n tan φ) "regardless of the λ selection".
@@ -497,6 +591,9 @@ fn theta_zero_is_finite() {
     let m = measured(&view, &twin(&view, 0.0, NPrime::Finite(3.0)), 0.0, 1.0, 7.0);
     let eq = zhang_eq(&view, NPrime::Finite(3.0), th, 1.0, 7.0).unwrap();
     assert!(rel(eq, 2.0 * m.mx) < 1e-12);
+    // By hand: tan φ_w / tan φ = f/λ, z_w = f tan φ − y + λ, E_q = 2 (f/λ) z_w / z = 568.90.
+    let by_hand = 2.0 * (100.0 / 3.0) * (100.0 * FRAC_PI_6.tan() - 1.0 + 3.0) / 7.0;
+    assert!(rel(eq, by_hand) < 1e-12 && (eq - 568.90).abs() < 1e-2);
 }
 
 #[test]

@@ -122,7 +122,7 @@ pub fn zhang_z_w(
 ) -> Result<f64> {
     let lambda = positive("lambda", lambda)?;
     let (y, z) = point_in_view(view, y, z)?;
-    Ok(lambda + z_w_offset(view, theta, y, z))
+    finite_result("z_w", lambda + z_w_offset(view, theta, y, z))
 }
 
 /// tan φ_w, the half-angle in x of the warping frustum W fitted to contain the view frustum
@@ -145,7 +145,7 @@ pub fn zhang_z_w(
 #[inline]
 pub fn zhang_tan_phi_w(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> Result<f64> {
     let lambda = positive("lambda", lambda)?;
-    Ok(tan_phi_w_unchecked(view, lambda, theta))
+    finite_result("tan_phi_w", tan_phi_w_unchecked(view, lambda, theta))
 }
 
 #[inline]
@@ -171,7 +171,8 @@ fn tan_phi_w_unchecked(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> f6
 #[inline]
 pub fn zhang_f_q(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> Result<f64> {
     let lambda = positive("lambda", lambda)?;
-    Ok(
+    finite_result(
+        "F_q",
         2.0 * tan_phi_w_unchecked(view, lambda, theta) * theta.radians().sin()
             / view.tan_half_fov(),
     )
@@ -193,7 +194,10 @@ pub fn zhang_f_p(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> Result<f
     let lambda = positive("lambda", lambda)?;
     let mu = zhang_mu(view, theta);
     let s = theta.radians().sin();
-    Ok(mu * s * s / (view.tan_half_fov() * lambda * (lambda + mu)))
+    finite_result(
+        "F_p",
+        mu * s * s / (view.tan_half_fov() * lambda * (lambda + mu)),
+    )
 }
 
 /// G(y, λ, θ) of Zhang's global representation (Appendix), `z_w = (z + G) sin θ`:
@@ -251,13 +255,16 @@ pub fn zhang_eq(
     let lambda = finite_n_prime("lambda", lambda)?;
     let (y, z) = point_in_view(view, y, z)?;
     let t = view.tan_half_fov();
-    Ok(match lambda {
-        Some(l) => {
-            let zw = l + z_w_offset(view, theta, y, z);
-            2.0 * tan_phi_w_unchecked(view, l, theta) * zw / (t * z)
-        }
-        None => 2.0 * view.far() / z,
-    })
+    finite_result(
+        "E_q",
+        match lambda {
+            Some(l) => {
+                let zw = l + z_w_offset(view, theta, y, z);
+                2.0 * tan_phi_w_unchecked(view, l, theta) * zw / (t * z)
+            }
+            None => 2.0 * view.far() / z,
+        },
+    )
 }
 
 /// Zhang's E_p^pers, the perspective aliasing along the warp at the point (x, y, z) of the view
@@ -286,13 +293,16 @@ pub fn zhang_ep(
     let (y, z) = point_in_view(view, y, z)?;
     let t = view.tan_half_fov();
     let mu = zhang_mu(view, theta);
-    Ok(match lambda {
-        Some(l) => {
-            let zw = l + z_w_offset(view, theta, y, z);
-            mu / (t * z) * (zw / l) * (zw / (l + mu))
-        }
-        None => mu / (t * z),
-    })
+    finite_result(
+        "E_p",
+        match lambda {
+            Some(l) => {
+                let zw = l + z_w_offset(view, theta, y, z);
+                mu / (t * z) * (zw / l) * (zw / (l + mu))
+            }
+            None => mu / (t * z),
+        },
+    )
 }
 
 /// Zhang's local representation of E_q (Eq 8): the light overhead (θ = π/2), the point on the
@@ -313,11 +323,14 @@ pub fn zhang_eq_local(view: &ViewFrustum, lambda: NPrime, z: f64) -> Result<f64>
     let lambda = finite_n_prime("lambda", lambda)?;
     let z = depth_in_view(view, z)?;
     let (n, f) = (view.near(), view.far());
-    Ok(match lambda {
-        Some(l) if l >= n => 2.0 * f * (z - n + l) / ((f - n + l) * z),
-        Some(l) => 2.0 * n * (z - n + l) / (l * z),
-        None => 2.0 * f / z,
-    })
+    finite_result(
+        "E_q",
+        match lambda {
+            Some(l) if l >= n => 2.0 * f * (z - n + l) / ((f - n + l) * z),
+            Some(l) => 2.0 * n * (z - n + l) / (l * z),
+            None => 2.0 * f / z,
+        },
+    )
 }
 
 /// Zhang's local representation of E_p (Eq 9): the light overhead, the point on the view axis:
@@ -335,10 +348,13 @@ pub fn zhang_ep_local(view: &ViewFrustum, lambda: NPrime, z: f64) -> Result<f64>
     let lambda = finite_n_prime("lambda", lambda)?;
     let z = depth_in_view(view, z)?;
     let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
-    Ok(match lambda {
-        Some(l) => (f - n) / (t * z) * ((z - n + l) / l) * ((z - n + l) / (f - n + l)),
-        None => (f - n) / (t * z),
-    })
+    finite_result(
+        "E_p",
+        match lambda {
+            Some(l) => (f - n) / (t * z) * ((z - n + l) / l) * ((z - n + l) / (f - n + l)),
+            None => (f - n) / (t * z),
+        },
+    )
 }
 
 /// The slopes of Zhang's small shaft through a point: `x = k_x z − b_x`, `y = k_y z − b_y`

@@ -42,7 +42,7 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::error::{fmt_num, in_closed, positive, Error, Result};
+use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};
 
 /// The half heights `(a, b) = (n tan φ_y, f tan φ_y)` of the near and far planes.
@@ -112,7 +112,7 @@ pub fn warp_depth_range(view: &ViewFrustum, gamma: LightAngle) -> f64 {
 pub fn tilted_psi(view: &ViewFrustum, n_prime: f64, gamma: LightAngle, z: f64) -> Result<f64> {
     let np = positive("n_prime", n_prime)?;
     let z = depth_in_view(view, z)?;
-    Ok(np + psi_offset(view, gamma, z))
+    finite_result("psi", np + psi_offset(view, gamma, z))
 }
 
 /// ψ − n′: the point's warp depth from the frustum's nearest extent.
@@ -147,7 +147,10 @@ pub fn tilted_xi(
     let np = positive("n_prime", n_prime)?;
     let s = positive_sin(gamma)?;
     let mu = warp_depth_range(view, gamma);
-    Ok(res.image() / res.t() / (2.0 * view.tan_half_fov()) * mu / (np * (np + mu)) / s)
+    finite_result(
+        "xi",
+        res.image() / res.t() / (2.0 * view.tan_half_fov()) * mu / (np * (np + mu)) / s,
+    )
 }
 
 fn positive_sin(gamma: LightAngle) -> Result<f64> {
@@ -224,7 +227,7 @@ pub fn tilted_mz(
     let np = finite_n_prime("n_prime", n_prime)?;
     let s = positive_sin(gamma)?;
     let z = depth_in_view(view, z)?;
-    Ok(mz_perp_unchecked(view, np, gamma, z, res) / s)
+    finite_result("m_z", mz_perp_unchecked(view, np, gamma, z, res) / s)
 }
 
 /// The tilted-light m_z measured perpendicular to the light, as the crate measures every map
@@ -249,7 +252,7 @@ pub fn tilted_mz_perpendicular(
 ) -> Result<f64> {
     let np = finite_n_prime("n_prime", n_prime)?;
     let z = depth_in_view(view, z)?;
-    Ok(mz_perp_unchecked(view, np, gamma, z, res))
+    finite_result("m_z", mz_perp_unchecked(view, np, gamma, z, res))
 }
 
 /// Barroso's n′₁(γ) (Eq 13, first branch): the n′ that makes m_z equal on the near and far
@@ -263,8 +266,13 @@ pub fn tilted_mz_perpendicular(
 #[inline]
 #[must_use]
 pub fn n_prime_1(view: &ViewFrustum, gamma: LightAngle) -> f64 {
+    n_prime_1_at(view, gamma.radians())
+}
+
+#[inline]
+fn n_prime_1_at(view: &ViewFrustum, gamma: f64) -> f64 {
     let (a, _) = half_heights(view);
-    let (s, c) = gamma.radians().sin_cos();
+    let (s, c) = gamma.sin_cos();
     (view.near() + (view.far() * view.near()).sqrt()) * s - a * c
 }
 
@@ -377,6 +385,25 @@ pub enum Falloff {
     Barroso,
 }
 
+impl std::str::FromStr for Falloff {
+    type Err = Error;
+
+    /// Parses the eval contract's names, `"zhang"` (Eq 17) and `"barroso"` (Eq 18).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `falloff` for any other string.
+    fn from_str(s: &str) -> Result<Self> {
+        match s {
+            "zhang" => Ok(Falloff::Zhang),
+            "barroso" => Ok(Falloff::Barroso),
+            other => Err(Error::invalid(
+                "falloff",
+                format!("must be \"barroso\" or \"zhang\" (got \"{other}\")"),
+            )),
+        }
+    }
+}
+
 /// r(γ) for γ ∈ [0, γ_lim] (Barroso Eq 17, 18): 1 at γ_lim, 0 at γ = 0, increasing between.
 ///
 /// Eq 18 is evaluated as `4 sin⁴(γ π / (4 γ_lim))`, the same function
@@ -417,8 +444,7 @@ pub fn generalized_n_prime(view: &ViewFrustum, gamma: LightAngle, falloff: Fallo
     if g >= gl {
         return NPrime::Finite(n_prime_1(view, gamma));
     }
-    // γ_lim ∈ (φ_y, π/2), so it is a valid light angle.
-    let at_lim = LightAngle::new(gl).map_or(f64::NAN, |l| n_prime_1(view, l));
+    let at_lim = n_prime_1_at(view, gl);
     let r = falloff_r(falloff, g, gl);
     let v = at_lim / r;
     if v.is_finite() && v > 0.0 {
@@ -445,6 +471,16 @@ mod tests {
             tilted_psi(&view, 3.0, below, 7.0).unwrap(),
         );
         assert!((p1 - p2).abs() < 1e-9);
+    }
+
+    #[test]
+    fn falloff_names() {
+        assert_eq!("zhang".parse::<Falloff>(), Ok(Falloff::Zhang));
+        assert_eq!("barroso".parse::<Falloff>(), Ok(Falloff::Barroso));
+        assert_eq!(
+            "lloyd".parse::<Falloff>().unwrap_err().to_string(),
+            "falloff must be \"barroso\" or \"zhang\" (got \"lloyd\")"
+        );
     }
 
     #[test]

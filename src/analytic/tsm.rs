@@ -106,7 +106,7 @@ pub fn tsm_focus_line(lambda: f64, eta: NPrime, delta_prime: f64) -> Result<f64>
             let [[a, b], _] = tsm_projection(lambda, e);
             finite_result("the focus line", a + b / (e + d))
         }
-        NPrime::Unwarped => Ok(1.0 - 2.0 * d / lambda),
+        NPrime::Unwarped => finite_result("the focus line", 1.0 - 2.0 * d / lambda),
     }
 }
 
