@@ -467,3 +467,120 @@ fn per_frame_builders_do_not_allocate() {
     let (_, n) = no_alloc::allocations(|| vec![1u8; 16]);
     assert!(n >= 1);
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 128, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// A light tilted by γ in the view's vertical plane (from behind or in front): the measured
+    /// m_z of the built warp on the view axis equals Barroso & Celes Eq 12 measured perpendicular
+    /// to the light (`tilted_mz_perpendicular`), and 2 m_z, 2 m_x equal Zhang et al.'s global
+    /// E_p, E_q (Eq 13, 14), for any n′ and for Barroso's own n′.
+    #[test]
+    fn tilted_matches_barroso_and_zhang(
+        n in 0.05f64..5.0,
+        ratio in 1.5f64..1e4,
+        fov_deg in 5.0f64..75.0,
+        gamma in 0.01f64..std::f64::consts::FRAC_PI_2,
+        behind in proptest::bool::ANY,
+        log_np in -2.0f64..3.0,
+        zf in 0.0f64..1.0,
+        barroso_rule in proptest::bool::ANY,
+    ) {
+        use shadow_aliasing::analytic::global::{zhang_ep, zhang_eq};
+        use shadow_aliasing::analytic::tilted::tilted_mz_perpendicular;
+        use shadow_aliasing::LightAngle;
+        let f = n * ratio;
+        let view = ViewFrustum::new(n, f, fov_deg.to_radians()).unwrap();
+        let (s, c) = gamma.sin_cos();
+        let l = if behind { DVec3::new(0.0, -s, -c) } else { DVec3::new(0.0, -s, c) };
+        let sm = if barroso_rule {
+            warp(&view, l, WarpRule::Barroso(Falloff::Barroso)).unwrap()
+        } else {
+            let ls = light_space(l, DVec3::NEG_Z).unwrap();
+            let np = NPrime::Finite(n * 10f64.powf(log_np));
+            let m = fit_warp(&view.corners(), &ls, np).unwrap();
+            shadow_aliasing::build::ShadowMatrix { matrix: m, light_dir: l, n_prime: np, near: n, far: f }
+        };
+        let z = n + zf * (f - n);
+        let g = LightAngle::new(gamma).unwrap();
+        let e = point_error(&view, &sm.shadow_map(), DVec3::new(0.0, 0.0, -z), Resolutions::default()).unwrap();
+        let b = tilted_mz_perpendicular(&view, sm.n_prime, g, z, Resolutions::default()).unwrap();
+        prop_assert!((e.mz - b).abs() <= 1e-9 * b, "m_z {} vs Barroso {}", e.mz, b);
+        let ep = zhang_ep(&view, sm.n_prime, g, 0.0, z).unwrap();
+        let eq = zhang_eq(&view, sm.n_prime, g, 0.0, z).unwrap();
+        prop_assert!((2.0 * e.mz - ep).abs() <= 1e-9 * ep, "2 m_z {} vs Zhang E_p {}", 2.0 * e.mz, ep);
+        prop_assert!((2.0 * e.mx - eq).abs() <= 1e-9 * eq, "2 m_x {} vs Zhang E_q {}", 2.0 * e.mx, eq);
+    }
+}
+
+/// Sweeping through the view axis along a diagonal plane: the two sides agree and S̄ is
+/// continuous up to the axis, but the limit (the bounding rectangle turned 45°, S̄ = 2 (f/n)² for
+/// a square image) differs from the value exactly on the axis ((f/n)², the rectangle aligned
+/// with the image): the warp axis has no continuous extension there (docs/builders.md).
+#[test]
+fn diagonal_sweep_through_parallel() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let diag = DVec3::new(1.0, 1.0, 0.0).normalize();
+    for rule in [WarpRule::Uniform, WarpRule::Minimax, WarpRule::LispsmSin] {
+        let at = |t: f64| {
+            let s = warp(&view, DVec3::NEG_Z + t * diag, rule).unwrap();
+            frustum_max(&view, &s.shadow_map()).unwrap().storage_factor
+        };
+        let s6 = at(1e-6);
+        for t in [-1e-6, 1e-9, -1e-9, 1e-11, -1e-11] {
+            assert!(
+                (at(t) - s6).abs() <= 1e-4 * s6,
+                "{rule:?} at {t}: {} vs {s6}",
+                at(t)
+            );
+        }
+        assert!((s6 - 2e4).abs() <= 1e-3 * 2e4, "{rule:?}: {s6}");
+        assert!((at(0.0) - 1e4).abs() <= 1e-6 * 1e4);
+    }
+}
+
+/// Engine rules as shipped: Filament switches to the orthographic map below sin γ = 0.02, a jump
+/// from S̄ = 15 068 (its warp, 1.51× the uniform map) to 9 998 (n = 1, f = 100, θ = 30°, light
+/// from behind); OGRE's ramp never reaches the uniform map: on the axis its n′ = 2.1 (n + √(f n))
+/// gives S̄ = 72 976, 7.3× the uniform map's 10 000.
+#[test]
+fn engine_rules_near_parallel() {
+    let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
+    let sbar = |l: DVec3, r: WarpRule| {
+        frustum_max(&view, &warp(&view, l, r).unwrap().shadow_map())
+            .unwrap()
+            .storage_factor
+    };
+    let at = |s: f64| DVec3::new(0.0, -s, -(1.0 - s * s).sqrt());
+    let below = sbar(at(0.0199999), WarpRule::Filament);
+    let above = sbar(at(0.0200001), WarpRule::Filament);
+    assert_eq!(
+        n_prime_for(&view, at(0.0199999), WarpRule::Filament).unwrap(),
+        NPrime::Unwarped
+    );
+    assert!((below - 9997.9998).abs() < 1e-3, "{below}");
+    assert!((above - 15067.996).abs() < 1e-2, "{above}");
+    let ogre = n_prime_for(&view, DVec3::NEG_Z, WarpRule::Ogre)
+        .unwrap()
+        .value();
+    assert!((ogre - 2.1 * 11.0).abs() < 1e-12);
+    let s = sbar(DVec3::NEG_Z, WarpRule::Ogre);
+    assert!((s - 72975.648).abs() < 1e-2, "{s}");
+    // The reference code's general n′ = Δ/(√(z₁/z₀) − 1) is Wimmer's "old" (n + √(n(n + Δ sin γ)))/sin γ
+    // with d = Δ: check the identity at a tilted light.
+    let l = DVec3::new(0.3, -0.5, -0.8);
+    let fl_delta = {
+        let ls = light_space(l, DVec3::NEG_Z).unwrap();
+        let z: Vec<f64> = view.corners().iter().map(|c| ls.z.dot(*c)).collect();
+        z.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+            - z.iter().cloned().fold(f64::INFINITY, f64::min)
+    };
+    let sg = l.normalize().cross(DVec3::NEG_Z).length();
+    let old = (1.0 + (1.0 * (1.0 + fl_delta * sg)).sqrt()) / sg;
+    let r = n_prime_for(&view, l, WarpRule::LispsmReference)
+        .unwrap()
+        .value();
+    assert!((r - old).abs() <= 1e-12 * old, "{r} vs {old}");
+    let by_def = fl_delta / (((1.0 + fl_delta * sg) / 1.0).sqrt() - 1.0);
+    assert!((r - by_def).abs() <= 1e-9 * by_def);
+}

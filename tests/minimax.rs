@@ -156,3 +156,38 @@ fn overhead_optimum_is_lispsm() {
         assert!((s - lsp).abs() <= 1e-6 * lsp, "{s} vs {lsp}");
     }
 }
+
+/// Barroso & Celes' n′₁ (Eq 13) is not the frustum's M_z minimax for a tilted light (n = 1,
+/// f = 100, φ = 30°, γ = 60°): n′₁ = 9.238 gives the measured M_z = 13.37 over the vertices, the
+/// exact minimax n′ = 12.124 gives 10.424 (docs/errata.md, Barroso & Celes, scope entry).
+#[test]
+fn barroso_n1_is_not_the_frustum_minimax() {
+    use shadow_aliasing::analytic::tilted::n_prime_1;
+    use shadow_aliasing::LightAngle;
+    let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
+    let g = 60f64.to_radians();
+    let l = DVec3::new(0.0, -g.sin(), -g.cos());
+    let n1 = n_prime_1(&view, LightAngle::new(g).unwrap());
+    assert!((n1 - 9.238).abs() < 1e-3, "{n1}");
+    let m1 = measured(&view, l, NPrime::Finite(n1)).max_mz;
+    let o = minimax_mz_n_prime(&view, l).unwrap();
+    let mo = measured(&view, l, o.n_prime);
+    assert!((m1 - 13.37).abs() < 5e-3, "{m1}");
+    assert!((o.n_prime.value() - 12.1244).abs() < 1e-3 && (mo.max_mz - 10.4238).abs() < 1e-3);
+}
+
+/// Barroso & Celes' fall-off (Eq 16–18) passes through maps worse than the uniform one on its
+/// way to it: n = 1, f = 100, φ = 30°, light 18° above the horizon straight behind, S̄ is 1.27
+/// times the uniform map's; with f/n = 1000, 24° up and 10° off behind, 5.02 times.
+#[test]
+fn barroso_transition_is_worse_than_uniform() {
+    use shadow_aliasing::build::Falloff;
+    let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
+    let l = light_from_angles(18f64.to_radians(), 0.0);
+    let r = sbar(&view, l, WarpRule::Barroso(Falloff::Barroso)) / sbar(&view, l, WarpRule::Uniform);
+    assert!((r - 1.2703).abs() < 1e-3, "{r}");
+    let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
+    let l = light_from_angles(24f64.to_radians(), 10f64.to_radians());
+    let r = sbar(&view, l, WarpRule::Barroso(Falloff::Barroso)) / sbar(&view, l, WarpRule::Uniform);
+    assert!((r - 5.023).abs() < 1e-2, "{r}");
+}

@@ -336,3 +336,104 @@ fn invalid_options() {
     .unwrap_err();
     assert!(e.to_string().starts_with("map_lines "), "{e}");
 }
+
+/// Martin & Tan's rule near the dueling-frusta configuration: 0.1° from straight behind the 80 %
+/// trapezoid has 3.98 times the storage factor of the bounding rectangle that §6.1's special
+/// case uses on the axis (n = 1, f = 100, θ = 30°, focus 20): the switch is a jump, and the rule
+/// is worse than no warping there (docs/errata.md, Martin & Tan).
+#[test]
+fn tsm_80_percent_rule_jumps_at_the_square_fallback() {
+    let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
+    let opts = TsmOptions {
+        focus: 20.0,
+        search: TsmSearch::EightyPercent,
+    };
+    let sbar = |deg: f64| {
+        let e = deg.to_radians();
+        let t = tsm(&view, DVec3::new(0.0, -e.sin(), -e.cos()), opts).unwrap();
+        frustum_max(&view, &t.shadow.shadow_map())
+            .unwrap()
+            .storage_factor
+    };
+    let on_axis = sbar(0.0);
+    let inside_tolerance = sbar(0.05);
+    let off = sbar(0.1);
+    assert!((on_axis - 1e4).abs() < 1e-6);
+    assert!((inside_tolerance / on_axis - 1.0).abs() < 1e-6);
+    assert!((off / on_axis - 3.9824).abs() < 1e-3, "{}", off / on_axis);
+    // The uniform map 0.1° off the axis is the rectangle: TSM loses 3.98× to it.
+    let e = 0.1f64.to_radians();
+    let u = warp(
+        &view,
+        DVec3::new(0.0, -e.sin(), -e.cos()),
+        WarpRule::Uniform,
+    )
+    .unwrap();
+    let su = frustum_max(&view, &u.shadow_map()).unwrap().storage_factor;
+    assert!((off / su - 3.9824).abs() < 1e-3);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 96, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// The fast iterative search (ternary search over the line index) finds the same trapezoid as
+    /// the exhaustive one of the paper: the focus area is unimodal in the line index.
+    #[test]
+    fn fast_iterative_equals_exhaustive(
+        near in 0.05f64..5.0,
+        log_ratio in (1.05f64).ln()..(1e4f64).ln(),
+        fov_deg in 5.0f64..75.0,
+        aspect in 0.5f64..2.0,
+        elev in -std::f64::consts::FRAC_PI_2..std::f64::consts::FRAC_PI_2,
+        azim in 0.0f64..std::f64::consts::TAU,
+        focus_frac in 0.01f64..1.0,
+        lines in 32u32..2049,
+    ) {
+        let view = ViewFrustum::with_aspect(near, near * log_ratio.exp(), fov_deg.to_radians(), aspect).unwrap();
+        let l = light_from_angles(elev, azim);
+        let focus = focus_frac * (view.far() - view.near());
+        let fast = tsm(&view, l, TsmOptions { focus, search: TsmSearch::Iterative { map_lines: lines } }).unwrap();
+        let slow = tsm(&view, l, TsmOptions { focus, search: TsmSearch::IterativeExhaustive { map_lines: lines } }).unwrap();
+        prop_assert!(fast.focus_area >= slow.focus_area * (1.0 - 1e-9), "fast {} vs exhaustive {} (ξ {} vs {})", fast.focus_area, slow.focus_area, fast.xi, slow.xi);
+    }
+}
+
+/// The focus area is not unimodal in the target line (docs/errata.md, Martin & Tan §6.2): it falls
+/// from the box's 0.5944 to 0.5764 at line 20 of 32 and rises to 0.6341 at the 80 % line; both
+/// searches find line 26.
+#[test]
+fn iterative_focus_area_is_not_unimodal() {
+    let near = 0.05;
+    let view = ViewFrustum::with_aspect(
+        near,
+        near * 0.951378688432118f64.exp(),
+        15.748389140270007f64.to_radians(),
+        0.7934535693252515,
+    )
+    .unwrap();
+    let l = light_from_angles(0.0, 5.9539707937975015);
+    let focus = 0.6613704857689824 * (view.far() - view.near());
+    let area = |k: u32| {
+        let xi = 1.0 - 2.0 * f64::from(k) / 32.0;
+        tsm(
+            &view,
+            l,
+            TsmOptions {
+                focus,
+                search: TsmSearch::Line(xi),
+            },
+        )
+        .unwrap()
+        .focus_area
+    };
+    assert!((area(5) - 0.594399).abs() < 1e-6);
+    assert!((area(20) - 0.576414).abs() < 1e-6);
+    assert!((area(26) - 0.634064).abs() < 1e-6);
+    for search in [
+        TsmSearch::Iterative { map_lines: 32 },
+        TsmSearch::IterativeExhaustive { map_lines: 32 },
+    ] {
+        let t = tsm(&view, l, TsmOptions { focus, search }).unwrap();
+        assert!((t.xi + 0.625).abs() < 1e-12, "{search:?}: {}", t.xi);
+    }
+}

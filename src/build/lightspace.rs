@@ -128,16 +128,6 @@ fn unit_axis(axis: DVec3) -> Result<DVec3> {
     Ok(axis / len)
 }
 
-/// sin γ: the sine of the angle between the light and the axis, `|a − (a·y) y|` computed as
-/// `|a × y|` (accurate near 0, unlike `√(1 − cos²)`).
-#[inline]
-#[must_use]
-pub(crate) fn sin_to_axis(light_dir: DVec3, axis: DVec3) -> f64 {
-    let l = light_dir.normalize();
-    let a = axis.normalize();
-    a.cross(l).length().min(1.0)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

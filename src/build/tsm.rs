@@ -78,9 +78,20 @@ pub enum TsmSearch {
     EightyPercent,
     /// A chosen line ξ ∈ (−1, 1) of the unit square (top +1, base −1).
     Line(f64),
-    /// The iterative variant over the map's lines (module docs).
+    /// The iterative variant over the map's lines (module docs), searched fast: 33 lines spread
+    /// from the 80 % line to the top, a ternary search between the neighbours of the best, and
+    /// the last few lines exhaustively (all lines when there are at most 64). The focus area is a
+    /// smooth function of the line with at most a few turns (it can fall and rise again), so this
+    /// finds the exhaustive search's maximum; tests/tsm.rs checks it against
+    /// [`TsmSearch::IterativeExhaustive`] on random configurations.
     Iterative {
         /// Number of texel lines of the shadow map along t (1024 or 2048 in the paper).
+        map_lines: u32,
+    },
+    /// The iterative variant exactly as printed: every line from the 80 % line up to the top.
+    /// About 0.8 × `map_lines` evaluations.
+    IterativeExhaustive {
+        /// Number of texel lines of the shadow map along t.
         map_lines: u32,
     },
 }
@@ -292,7 +303,7 @@ fn validate(view: &ViewFrustum, opts: &TsmOptions) -> Result<()> {
         TsmSearch::Line(xi) => {
             in_open("xi", xi, -1.0, 1.0)?;
         }
-        TsmSearch::Iterative { map_lines } => {
+        TsmSearch::Iterative { map_lines } | TsmSearch::IterativeExhaustive { map_lines } => {
             if map_lines < 2 {
                 return Err(Error::invalid(
                     "map_lines",
@@ -329,13 +340,13 @@ struct Analytic {
 }
 
 impl Analytic {
-    fn new(ls: &LightSpace, points: &[DVec3], z0: f64, lambda: f64, eta: Option<f64>) -> Self {
+    /// From E's vertices projected to light-space (x, z).
+    fn new(xz: &[DVec2], z0: f64, lambda: f64, eta: Option<f64>) -> Self {
         let (mut s_min, mut s_max) = (f64::INFINITY, f64::NEG_INFINITY);
-        for p in points {
-            let x = ls.x.dot(*p);
+        for p in xz {
             let s = match eta {
-                Some(e) => x / (ls.z.dot(*p) - z0 + e),
-                None => x,
+                Some(e) => p.x / (p.y - z0 + e),
+                None => p.x,
             };
             s_min = s_min.min(s);
             s_max = s_max.max(s);
@@ -385,12 +396,24 @@ impl Analytic {
 impl Core<'_> {
     fn build(&self, search: TsmSearch, near: f64, far: f64) -> Result<TsmMap> {
         let ls = &self.ls;
+        // E and the focus region projected to light-space (x, z), once.
+        let mut xz = [DVec2::ZERO; 64];
+        let m = self.points.len().min(64);
         let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
-        for p in self.points {
-            let z = ls.z.dot(*p);
-            z0 = z0.min(z);
-            z1 = z1.max(z);
+        for (q, p) in xz.iter_mut().zip(self.points) {
+            *q = DVec2::new(ls.x.dot(*p), ls.z.dot(*p));
+            z0 = z0.min(q.y);
+            z1 = z1.max(q.y);
         }
+        let xz = &xz[..m];
+        let mut hull = [DVec2::ZERO; 130];
+        let mut fxz = [DVec2::ZERO; 64];
+        let fm = self.focus_region.len().min(64);
+        for (q, p) in fxz.iter_mut().zip(self.focus_region) {
+            *q = DVec2::new(ls.x.dot(*p), ls.z.dot(*p));
+        }
+        let hn = convex_hull(&mut fxz[..fm], &mut hull);
+        let hull = &hull[..hn];
         let lambda = z1 - z0;
         if lambda.is_nan() || lambda <= 0.0 {
             return Err(Error::Degenerate(
@@ -406,27 +429,56 @@ impl Core<'_> {
                 tsm_eta(lambda, delta_p, xi)
             }
         };
+        let area_at = |xi: f64| focus_area(&Analytic::new(xz, z0, lambda, eta_for(xi)), hull);
         let (eta, xi) = match search {
             TsmSearch::EightyPercent => (eta_for(TSM_80_PERCENT_LINE), TSM_80_PERCENT_LINE),
             TsmSearch::Line(xi) => (eta_for(xi), xi),
-            TsmSearch::Iterative { map_lines } => {
+            TsmSearch::Iterative { map_lines } | TsmSearch::IterativeExhaustive { map_lines } => {
                 let x = f64::from(map_lines);
-                let k0 = (0.8 * x).round() as u32;
-                let mut best: Option<(f64, Option<f64>, f64)> = None;
-                for k in (1..=k0.max(1)).rev() {
-                    let xi = 1.0 - 2.0 * f64::from(k) / x;
-                    let eta = eta_for(xi);
-                    let a = Analytic::new(ls, self.points, z0, lambda, eta);
-                    let area = self.focus_area(&a);
-                    if best.is_none_or(|b| area > b.0) {
-                        best = Some((area, eta, xi));
+                let line = |k: u32| 1.0 - 2.0 * f64::from(k) / x;
+                let k0 = ((0.8 * x).round() as u32).max(1);
+                // The first (largest k) line of largest area in [lo, hi], exhaustively.
+                let scan = |lo: u32, hi: u32| {
+                    let mut best = (f64::NEG_INFINITY, hi);
+                    for k in (lo..=hi).rev() {
+                        let a = area_at(line(k));
+                        if a > best.0 {
+                            best = (a, k);
+                        }
                     }
-                }
-                let (_, eta, xi) = best.unwrap_or((0.0, None, TSM_80_PERCENT_LINE));
-                (eta, xi)
+                    best
+                };
+                let k = if matches!(search, TsmSearch::IterativeExhaustive { .. }) || k0 <= 64 {
+                    scan(1, k0).1
+                } else {
+                    // 33 evenly spread lines (both ends included), then a ternary search
+                    // between the neighbours of the best, then the last few lines exhaustively.
+                    const COARSE: u32 = 32;
+                    let at = |i: u32| 1 + ((k0 - 1) as u64 * i as u64 / COARSE as u64) as u32;
+                    let mut best = (f64::NEG_INFINITY, 0u32);
+                    for i in (0..=COARSE).rev() {
+                        let a = area_at(line(at(i)));
+                        if a > best.0 {
+                            best = (a, i);
+                        }
+                    }
+                    let (mut lo, mut hi) =
+                        (at(best.1.saturating_sub(1)), at((best.1 + 1).min(COARSE)));
+                    while hi - lo > 6 {
+                        let m1 = lo + (hi - lo) / 3;
+                        let m2 = hi - (hi - lo) / 3;
+                        if area_at(line(m1)) > area_at(line(m2)) {
+                            hi = m2;
+                        } else {
+                            lo = m1;
+                        }
+                    }
+                    scan(lo, hi).1
+                };
+                (eta_for(line(k)), line(k))
             }
         };
-        let analytic = Analytic::new(ls, self.points, z0, lambda, eta);
+        let analytic = Analytic::new(xz, z0, lambda, eta);
         let corners = analytic.corners();
         let n_t = quad_to_square(corners)?;
         // The 4 × 4 in light space: rows from N_T on (x, z, 1), depth fitted below.
@@ -476,7 +528,7 @@ impl Core<'_> {
             ));
         }
         let light_depth = DVec4::new(-ls.y.x / y_h, -ls.y.y / y_h, -ls.y.z / y_h, y_m / y_h);
-        let focus_area = self.focus_area(&analytic);
+        let focus_area = focus_area(&analytic, hull);
         Ok(TsmMap {
             shadow: ShadowMatrix {
                 matrix,
@@ -505,47 +557,52 @@ impl Core<'_> {
             focus_area,
         })
     }
-
-    /// Fraction of the unit square covered by the image of the focus region's hull.
-    fn focus_area(&self, a: &Analytic) -> f64 {
-        let mut pts = [DVec2::ZERO; 64];
-        let m = self.focus_region.len().min(64);
-        for (i, p) in self.focus_region.iter().take(m).enumerate() {
-            pts[i] = a.map(self.ls.x.dot(*p), self.ls.z.dot(*p));
-        }
-        hull_area(&mut pts[..m]) / 4.0
-    }
 }
 
-/// Area of the convex hull of the points (monotone chain, in place, no allocation).
-fn hull_area(pts: &mut [DVec2]) -> f64 {
-    let n = pts.len();
+/// Fraction of the unit square covered by the image of the focus region. The map is projective
+/// with w > 0 over the region (or affine), so it maps the hull's vertices, in order, onto the
+/// image's hull: shoelace on the mapped vertices.
+fn focus_area(a: &Analytic, hull: &[DVec2]) -> f64 {
+    let n = hull.len();
     if n < 3 {
         return 0.0;
     }
+    let mut area = 0.0;
+    let mut prev = a.map(hull[n - 1].x, hull[n - 1].y);
+    for h in hull {
+        let p = a.map(h.x, h.y);
+        area += prev.perp_dot(p);
+        prev = p;
+    }
+    0.125 * area.abs()
+}
+
+/// Convex hull (monotone chain, counter-clockwise, no repeated end point) of `pts` into `out`;
+/// returns the number of hull vertices. Sorts `pts` in place; no allocation.
+fn convex_hull(pts: &mut [DVec2], out: &mut [DVec2; 130]) -> usize {
+    let n = pts.len();
+    if n < 3 {
+        out[..n].copy_from_slice(pts);
+        return n;
+    }
     pts.sort_unstable_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
-    let mut hull = [DVec2::ZERO; 130];
     let mut k = 0usize;
     for &p in pts.iter() {
-        while k >= 2 && (hull[k - 1] - hull[k - 2]).perp_dot(p - hull[k - 2]) <= 0.0 {
+        while k >= 2 && (out[k - 1] - out[k - 2]).perp_dot(p - out[k - 2]) <= 0.0 {
             k -= 1;
         }
-        hull[k] = p;
+        out[k] = p;
         k += 1;
     }
     let lower = k + 1;
     for i in (0..n - 1).rev() {
-        while k >= lower && (hull[k - 1] - hull[k - 2]).perp_dot(pts[i] - hull[k - 2]) <= 0.0 {
+        while k >= lower && (out[k - 1] - out[k - 2]).perp_dot(pts[i] - out[k - 2]) <= 0.0 {
             k -= 1;
         }
-        hull[k] = pts[i];
+        out[k] = pts[i];
         k += 1;
     }
-    let mut area = 0.0;
-    for i in 0..k.saturating_sub(1) {
-        area += hull[i].perp_dot(hull[i + 1]);
-    }
-    0.5 * area.abs()
+    k - 1
 }
 
 /// A convex region of eye space bounded by up to six planes `a x + b y + c z + d ≤ 0`, stored as

@@ -30,12 +30,12 @@
 //! `p = {lsCameraPosition.x, n − nopt, 0}`) and OGRE (`LiSPSMShadowCameraSetup::calculateLiSPSM`)
 //! place it; TSM's q on the centre line l is the same point (see the trapezoidal builder).
 
-use crate::build::lightspace::{light_space, sin_to_axis, LightSpace};
+use crate::build::lightspace::{light_space, LightSpace};
 use crate::build::matrix::ShadowMatrix;
 use crate::build::minimax;
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{LightAngle, NPrime, ViewFrustum};
-use glam::{DMat4, DVec3, DVec4};
+use glam::{DMat4, DVec3};
 
 pub use crate::analytic::tilted::Falloff;
 
@@ -133,13 +133,15 @@ impl FrustumInLight {
             z0 = z0.min(q[i].z);
             z1 = z1.max(q[i].z);
         }
+        // sin γ = |l × (0, 0, −1)| = √(l.x² + l.y²) for the unit light direction l: accurate near 0.
+        let l = ls.light_dir();
         Ok(Self {
             ls,
             q,
             depth,
             z0,
             delta: z1 - z0,
-            sin_gamma: sin_to_axis(light_dir, DVec3::NEG_Z),
+            sin_gamma: l.x.hypot(l.y).min(1.0),
         })
     }
 }
@@ -261,13 +263,14 @@ pub(crate) fn warp_matrix(
     let v_m = 0.5 * (r.v.1 + r.v.0);
     let a = 1.0 - rho * z0; // w = rho z + a
     let k = 2.0 / delta + rho;
-    let w_ls = DMat4::from_cols(
-        DVec4::new(1.0 / u_h, 0.0, 0.0, 0.0),
-        DVec4::new(0.0, 0.0, -1.0 / v_h, 0.0),
-        DVec4::new(-u_m * rho / u_h, k, v_m * rho / v_h, rho),
-        DVec4::new(-u_m * a / u_h, -1.0 - k * z0, v_m * a / v_h, a),
-    );
-    let m = w_ls * ls.rotation();
+    // Rows in light space, composed with the rotation (rows x, y, z of eye space) directly:
+    // row · (x·p, y·p, z·p, 1) = (row.x x + row.y y + row.z z) · p + row.w.
+    let (ex, ey, ez) = (ls.x, ls.y, ls.z);
+    let row0 = ((ex - u_m * rho * ez) / u_h).extend(-u_m * a / u_h);
+    let row1 = (k * ez).extend(-1.0 - k * z0);
+    let row2 = ((v_m * rho * ez - ey) / v_h).extend(v_m * a / v_h);
+    let row3 = (rho * ez).extend(a);
+    let m = DMat4::from_cols(row0, row1, row2, row3).transpose();
     if !m.is_finite() {
         return Err(Error::Degenerate(
             "the fitted warp is not finite for these points".into(),
@@ -301,7 +304,7 @@ pub(crate) fn warp_matrix(
 pub fn warp(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<ShadowMatrix> {
     let fl = FrustumInLight::new(view, light_dir)?;
     let n_prime = rule_n_prime(view, &fl, rule)?;
-    let matrix = fit_frustum(view, &fl, n_prime)?;
+    let matrix = fit_frustum(&fl, n_prime)?;
     Ok(ShadowMatrix {
         matrix,
         light_dir: fl.ls.light_dir(),
@@ -312,11 +315,7 @@ pub fn warp(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<Shad
 }
 
 /// [`fit_warp`] on the frustum already in light space.
-pub(crate) fn fit_frustum(
-    view: &ViewFrustum,
-    fl: &FrustumInLight,
-    n_prime: NPrime,
-) -> Result<DMat4> {
+pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4> {
     let rho = match n_prime {
         NPrime::Unwarped => 0.0,
         NPrime::Finite(v) => {
@@ -334,7 +333,9 @@ pub(crate) fn fit_frustum(
         let w = 1.0 + rho * (q.z - fl.z0);
         r.add(q.x / w, q.y / w);
     }
-    let extent = view.far() * (1.0 + view.tan_half_fov() * (1.0 + view.aspect()));
+    let extent =
+        fl.q.iter()
+            .fold(0.0f64, |m, q| m.max(q.abs().max_element()));
     warp_matrix(&fl.ls, fl.z0, fl.delta, rho, &r, extent)
 }
 
