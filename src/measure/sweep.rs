@@ -48,7 +48,7 @@ pub use crate::build::scheme::{seams, Seam, Seams};
 use crate::build::WarpRule;
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::ViewFrustum;
-use glam::{DMat4, DVec3, DVec4};
+use glam::{DMat4, DVec3};
 
 /// M_x and M_z of one matrix over a set of points (unit resolutions), from [`vertex_max`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -98,24 +98,28 @@ pub fn vertex_max(
     tan_half_fov: f64,
     points: &[DVec3],
 ) -> Option<VertexMax> {
-    let r0 = matrix.row(0).truncate();
-    let r1 = matrix.row(1).truncate();
-    let r3 = matrix.row(3).truncate();
+    // Rows 0, 1, 3 only: the depth row does not enter the error.
+    let r0 = matrix.row(0);
+    let r1 = matrix.row(1);
+    let r3 = matrix.row(3);
+    let (g0, g1, g3) = (r0.truncate(), r1.truncate(), r3.truncate());
     let (mut mx2, mut mz2) = (0.0f64, 0.0f64);
     for &p in points {
-        let h = *matrix * DVec4::new(p.x, p.y, p.z, 1.0);
+        let hx = g0.dot(p) + r0.w;
+        let hy = g1.dot(p) + r1.w;
+        let hw = g3.dot(p) + r3.w;
         let z = -p.z;
         // `w > 0` and `z > 0`, NaN refused.
-        if h.w.is_nan() || h.w <= 0.0 || z.is_nan() || z <= 0.0 {
+        if hw.is_nan() || hw <= 0.0 || z.is_nan() || z <= 0.0 {
             return None;
         }
-        let gs = h.w * r0 - h.x * r3;
-        let gt = h.w * r1 - h.y * r3;
+        let gs = hw * g0 - hx * g3;
+        let gt = hw * g1 - hy * g3;
         let d = gs.cross(gt).dot(light_dir);
         let d2 = d * d;
         let gtl = gt.dot(light_dir);
         let gtp2 = gt.length_squared() - gtl * gtl;
-        let w2 = h.w * h.w;
+        let w2 = hw * hw;
         let w4 = w2 * w2;
         let inv = 1.0 / (d2 * gtp2 * z * z);
         if !(inv.is_finite() && gtp2 > 0.0) {
