@@ -132,7 +132,7 @@ impl Axis {
     }
 
     /// Axis space → data value.
-    pub fn from_axis(&self, a: f64) -> f64 {
+    pub fn to_data(&self, a: f64) -> f64 {
         match self.scale {
             Scale::Linear => a,
             Scale::Log(b) => b.powf(a),
@@ -153,9 +153,15 @@ impl Axis {
         let inside = |v: f64| v >= lo - eps && v <= hi + eps;
         match self.scale {
             Scale::Linear => {
-                let step = nice_step((hi - lo) / 6.0);
+                let step = nice_step((hi - lo) / 8.0);
                 let bold = multiples(lo, hi, step, eps);
-                let light = multiples(lo, hi, step / 5.0, eps);
+                let mantissa = step / 10f64.powf(step.log10().floor());
+                let minor = if (mantissa - 2.0).abs() < 1e-9 {
+                    2.0
+                } else {
+                    5.0
+                };
+                let light = multiples(lo, hi, step / minor, eps);
                 (bold, light)
             }
             Scale::Log(b) => {
@@ -174,7 +180,7 @@ impl Axis {
                     .map(|e| e as f64)
                     .collect();
                 let mut light = Vec::new();
-                if (b - 10.0).abs() < 1e-12 {
+                if (b - 10.0).abs() < 1e-12 && decades <= 6.0 {
                     let lf = (lo - eps).floor() as i64;
                     for e in lf..=last {
                         for m in 2..10 {
@@ -197,7 +203,7 @@ impl Axis {
                         bold.sort_by(f64::total_cmp);
                     }
                 } else if bold.len() < 2 {
-                    let step = nice_step((hi - lo) / 4.0);
+                    let step = nice_step((hi - lo) / 5.0);
                     bold = multiples(lo, hi, step, eps);
                 }
                 light.extend(bold.iter().copied());
@@ -212,32 +218,32 @@ impl Axis {
         match self.scale {
             Scale::Linear => {
                 let (lo, hi) = self.range();
-                fmt_linear(a, nice_step((hi - lo) / 6.0))
+                fmt_linear(a, nice_step((hi - lo) / 8.0))
             }
             Scale::Log(b) => {
                 let e = a.round();
                 if (a - e).abs() < 1e-9 {
                     let e = e as i64;
-                    if (b - 10.0).abs() < 1e-12 && (-3..=4).contains(&e) {
+                    if (b - 10.0).abs() < 1e-12 && (-2..=3).contains(&e) {
                         fmt_plain(10f64.powi(e as i32))
                     } else {
                         format!("{}{}", fmt_plain(b), superscript(e))
                     }
                 } else {
-                    fmt_plain(self.from_axis(a))
+                    fmt_plain(self.to_data(a))
                 }
             }
         }
     }
 }
 
-/// 1, 2, 2.5 or 5 times a power of ten, at least `raw`.
+/// 1, 2 or 5 times a power of ten, at least `raw`.
 fn nice_step(raw: f64) -> f64 {
-    if !(raw > 0.0) || !raw.is_finite() {
+    if raw.is_nan() || raw <= 0.0 || raw.is_infinite() {
         return 1.0;
     }
     let p = 10f64.powf(raw.log10().floor());
-    for m in [1.0, 2.0, 2.5, 5.0, 10.0] {
+    for m in [1.0, 2.0, 5.0, 10.0] {
         if m * p >= raw * (1.0 - 1e-12) {
             return m * p;
         }
@@ -253,11 +259,12 @@ fn multiples(lo: f64, hi: f64, step: f64, eps: f64) -> Vec<f64> {
 
 /// A tick label on a linear axis with the decimals the step needs.
 fn fmt_linear(v: f64, step: f64) -> String {
-    let decimals = if step >= 1.0 {
-        0
-    } else {
-        (-step.log10()).ceil().clamp(0.0, 10.0) as usize + usize::from(step.log10().fract() != 0.0)
-    };
+    let decimals = (0..12)
+        .find(|&d| {
+            let scaled = step * 10f64.powi(d);
+            (scaled - scaled.round()).abs() < 1e-9 * scaled.max(1.0)
+        })
+        .unwrap_or(12) as usize;
     let s = format!(
         "{:.*}",
         decimals,
@@ -698,21 +705,6 @@ impl Grid {
             values,
         }
     }
-
-    /// The finite extremes of the field.
-    pub fn extent(&self) -> Option<(f64, f64)> {
-        extent(self.values.iter().flatten().copied())
-    }
-}
-
-/// The minimum and maximum of positive finite values.
-pub(crate) fn extent(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
-    values
-        .filter(|v| v.is_finite() && *v > 0.0)
-        .fold(None, |acc, v| match acc {
-            None => Some((v, v)),
-            Some((lo, hi)) => Some((f64::min(lo, v), f64::max(hi, v))),
-        })
 }
 
 /// Draws a grid into a chart whose axes are linear in the grid's coordinates. Runs of
@@ -804,8 +796,9 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
     };
     let n_el = grid.elev_edges.len() - 1;
     let n_az = grid.az_edges.len() - 1;
+    const OVERLAP: f64 = 0.25 * std::f64::consts::PI / 180.0;
     let arc = |el: f64, a0: f64, a1: f64, reverse: bool| -> Vec<(i32, i32)> {
-        let steps = (((a1 - a0).abs() / 3f64.to_radians()).ceil() as usize).max(1);
+        let steps = (((a1 - a0).abs() / 4f64.to_radians()).ceil() as usize).max(1);
         let mut v: Vec<(i32, i32)> = (0..=steps)
             .map(|k| {
                 let a = a0 + (a1 - a0) * k as f64 / steps as f64;
@@ -831,9 +824,16 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
             {
                 j += 1;
             }
-            let (a0, a1) = (grid.az_edges[start], grid.az_edges[j + 1]);
-            let mut poly = arc(e0, a0, a1, false);
-            poly.extend(arc(e1, a0, a1, true));
+            // A hair of overlap (0.25°) so that neighbouring polygons leave no unfilled pixels.
+            let (a0, a1) = (
+                grid.az_edges[start] - OVERLAP,
+                grid.az_edges[j + 1] + OVERLAP,
+            );
+            let lo = (e0 - OVERLAP).max(0.0);
+            let hi = (e1 + OVERLAP).min(std::f64::consts::FRAC_PI_2);
+            let mut poly = arc(lo, a0, a1, false);
+            poly.extend(arc(hi, a0, a1, true));
+            poly.dedup();
             area.draw(&Polygon::new(poly, scale.level_colour(level).filled()))?;
             j += 1;
         }
@@ -864,8 +864,13 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
             TextStyle::from((FONT, 12).into_font()).pos(pos),
         ))
     };
-    label("behind", (-1.02, 0.0), Pos::new(HPos::Right, VPos::Center))?;
-    label("in front", (1.02, 0.0), Pos::new(HPos::Left, VPos::Center))?;
+    label("← behind", (-1.0, 0.97), Pos::new(HPos::Left, VPos::Top))?;
+    label("in front →", (1.0, 0.97), Pos::new(HPos::Right, VPos::Top))?;
+    label(
+        "viewer's right",
+        (0.0, -1.02),
+        Pos::new(HPos::Center, VPos::Top),
+    )?;
     label(
         "overhead",
         (0.0, 0.03),
@@ -933,10 +938,20 @@ pub(crate) fn frame<DB: DrawingBackend>(
     let line_h = 18;
     let bottom = caption.len() as i32 * line_h + 10;
     for (k, line) in caption.iter().enumerate() {
+        // Shrink a long line until it fits the page width.
+        let mut size = 14.0;
+        while size > 9.0 {
+            let (tw, _) =
+                root.estimate_text_size(line, &TextStyle::from((FONT, size).into_font()))?;
+            if tw as f64 <= f64::from(w) - 28.0 {
+                break;
+            }
+            size -= 0.5;
+        }
         root.draw(&Text::new(
             (*line).to_string(),
             (14, h as i32 - bottom + 4 + k as i32 * line_h),
-            TextStyle::from((FONT, 14).into_font())
+            TextStyle::from((FONT, size).into_font())
                 .color(&RGBColor(50, 50, 50))
                 .pos(Pos::new(HPos::Left, VPos::Top)),
         ))?;
@@ -988,12 +1003,6 @@ pub(crate) fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
         .collect()
 }
 
-/// Geometrically spaced samples of `[a, b]` (`0 < a < b`), both ends included.
-pub(crate) fn geomspace(a: f64, b: f64, n: usize) -> Vec<f64> {
-    let (la, lb) = (a.ln(), b.ln());
-    linspace(la, lb, n).into_iter().map(f64::exp).collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1031,6 +1040,7 @@ mod tests {
         assert_eq!(bold, vec![0.0, 1.0, 2.0, 3.0, 4.0]);
         assert_eq!(light.len(), 4 * 8 + 5);
         assert_eq!(a.tick_label(3.0), "1000");
+        assert_eq!(a.tick_label(4.0), "10⁴");
         assert_eq!(Axis::log10("S", 1e-6, 1.0).tick_label(-6.0), "10⁻⁶");
         assert_eq!(a.to_axis(100.0), Some(2.0));
         assert_eq!(a.to_axis(0.0), None);
@@ -1047,6 +1057,14 @@ mod tests {
         let a = Axis::linear("z", 1.0, 20.0);
         let (bold, _) = a.ticks();
         assert_eq!(bold, vec![5.0, 10.0, 15.0, 20.0]);
+        let k = Axis::linear("k", 1.0, 16.0);
+        assert_eq!(
+            k.ticks().0,
+            vec![2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 14.0, 16.0]
+        );
+        assert_eq!(k.tick_label(6.0), "6");
+        let small = Axis::linear("g", 0.0, 1.05);
+        assert_eq!(small.tick_label(0.4), "0.4");
         let b = Axis::linear("η", -1.0, 1.0);
         assert_eq!(b.ticks().0, vec![-1.0, -0.5, 0.0, 0.5, 1.0]);
         assert_eq!(b.tick_label(-0.5), "-0.5");

@@ -1,7 +1,7 @@
 //! Lloyd et al. 2006 Fig 7: the storage factor S̄ over the hemisphere of light directions, from
 //! the crate's measurement of each scheme's own matrices ([`crate::measure::sweep::sweep`]).
 
-use super::chart::{draw_colour_bar, draw_hemisphere, extent, frame, Axis, ColourScale, PolarGrid};
+use super::chart::{draw_colour_bar, draw_hemisphere, frame, Axis, ColourScale, PolarGrid};
 use super::{Fail, Figure};
 use crate::build::scheme::Partition;
 use crate::build::WarpRule;
@@ -21,7 +21,11 @@ const AZIMUTHS: usize = 180;
 pub(super) fn polar_grid(s: &Sweep, values: Vec<Option<f64>>) -> PolarGrid {
     let e = s.grid.elevations();
     let a = s.grid.azimuths();
-    let de = if e > 1 { FRAC_PI_2 / (e - 1) as f64 } else { FRAC_PI_2 };
+    let de = if e > 1 {
+        FRAC_PI_2 / (e - 1) as f64
+    } else {
+        FRAC_PI_2
+    };
     let elev_edges = (0..=e)
         .map(|i| (i as f64 * de - 0.5 * de).clamp(0.0, FRAC_PI_2))
         .collect();
@@ -59,9 +63,21 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let grid = SweepGrid::new(ELEVATIONS, AZIMUTHS)?;
     let schemes = [
         ("No warping (n′ = ∞)", WarpRule::Uniform, Partition::Single),
-        ("LiSPSM warping, n′ = (n + √(fn))/sin γ", WarpRule::LispsmSin, Partition::Single),
-        ("Face partitioning + warping", WarpRule::LispsmSin, Partition::Faces),
-        ("Minimax n′ (this crate)", WarpRule::Minimax, Partition::Single),
+        (
+            "LiSPSM warping, n′ = (n + √(fn))/sin γ",
+            WarpRule::LispsmSin,
+            Partition::Single,
+        ),
+        (
+            "Face partitioning + warping",
+            WarpRule::LispsmSin,
+            Partition::Faces,
+        ),
+        (
+            "Minimax n′ (this crate)",
+            WarpRule::Minimax,
+            Partition::Single,
+        ),
     ];
     let mut panels = Vec::new();
     for (title, rule, partition) in schemes {
@@ -130,4 +146,14 @@ impl Figure for Fig7 {
         draw_colour_bar(&bar, &self.scale)?;
         Ok(())
     }
+}
+
+/// The minimum and maximum of positive finite values.
+fn extent(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
+    values
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .fold(None, |acc, v| match acc {
+            None => Some((v, v)),
+            Some((lo, hi)) => Some((f64::min(lo, v), f64::max(hi, v))),
+        })
 }

@@ -33,6 +33,10 @@
 
 mod barroso;
 mod chart;
+mod hemisphere;
+mod lloyd2005;
+mod lloyd2006;
+mod martin_tan;
 mod zhang;
 
 use plotters::coord::Shift;
@@ -92,7 +96,19 @@ impl fmt::Display for Format {
 
 /// The names of all figures, in the order [`render_all`] writes them. Each is also the stem of
 /// its files (`NAME.png`, `NAME.svg`).
-pub const FIGURES: &[&str] = &["barroso-fig7", "zhang-fig3"];
+pub const FIGURES: &[&str] = &[
+    "lloyd2005-fig4",
+    "lloyd2005-fig7",
+    "lloyd2006-fig5",
+    "lloyd2006-fig6",
+    "lloyd2006-fig7",
+    "lloyd2006-fig10",
+    "lloyd2006-fig12",
+    "lloyd2006-fig13",
+    "barroso-fig7",
+    "zhang-fig3",
+    "martin-tan-fig6",
+];
 
 /// What went wrong while rendering a figure.
 #[derive(Debug, thiserror::Error)]
@@ -237,8 +253,17 @@ pub fn render(name: &str, out_dir: &Path, format: Format) -> Result<Vec<PathBuf>
 fn dispatch(name: &'static str, out_dir: &Path, format: Format) -> Result<Vec<PathBuf>, PlotError> {
     let data = |e: Fail| e.named(name);
     match name {
+        "lloyd2005-fig4" => emit(name, &lloyd2005::fig4().map_err(data)?, out_dir, format),
+        "lloyd2005-fig7" => emit(name, &lloyd2005::fig7().map_err(data)?, out_dir, format),
+        "lloyd2006-fig5" => emit(name, &lloyd2006::fig5().map_err(data)?, out_dir, format),
+        "lloyd2006-fig6" => emit(name, &lloyd2006::fig6().map_err(data)?, out_dir, format),
+        "lloyd2006-fig7" => emit(name, &hemisphere::fig7().map_err(data)?, out_dir, format),
+        "lloyd2006-fig10" => emit(name, &lloyd2006::fig10().map_err(data)?, out_dir, format),
+        "lloyd2006-fig12" => emit(name, &lloyd2006::fig12().map_err(data)?, out_dir, format),
+        "lloyd2006-fig13" => emit(name, &lloyd2006::fig13().map_err(data)?, out_dir, format),
         "barroso-fig7" => emit(name, &barroso::fig7().map_err(data)?, out_dir, format),
         "zhang-fig3" => emit(name, &zhang::fig3().map_err(data)?, out_dir, format),
+        "martin-tan-fig6" => emit(name, &martin_tan::fig6().map_err(data)?, out_dir, format),
         _ => Err(PlotError::UnknownFigure(name.to_string())),
     }
 }
@@ -294,7 +319,10 @@ mod tests {
                 Axis::log10("x (units)", 0.1, 100.0),
                 Axis::log10("y (units)", 0.01, 1000.0),
             );
-            let xs = geomspace(0.01, 1000.0, 50);
+            let xs: Vec<f64> = linspace(-2.0, 3.0, 50)
+                .into_iter()
+                .map(|e| 10f64.powf(e))
+                .collect();
             c.series.push(Series::line(
                 "x²",
                 xs.iter().map(|&x| (x, x * x)).collect(),

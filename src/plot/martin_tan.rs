@@ -1,0 +1,139 @@
+//! Martin & Tan 2004 Fig 6: the area of the focus region in the shadow map against the light
+//! direction, measured on the crate's TSM matrices.
+//!
+//! The focus region is the eye's frustum truncated at δ beyond the near plane (Martin & Tan
+//! §6.2). For each light direction the trapezoidal map is built by [`crate::build::tsm::tsm`]
+//! (the 80 % rule, and the iterative variant over the map's lines), which reports the fraction of
+//! the map the focus region covers ([`crate::build::tsm::TsmMap::focus_area`]).
+
+use super::chart::{
+    draw_colour_bar, draw_hemisphere, draw_line_chart, frame, linspace, Axis, ColourScale,
+    LineChart, PolarGrid, Series, PALETTE,
+};
+use super::{Fail, Figure};
+use crate::build::tsm::{tsm, TsmOptions, TsmSearch};
+use crate::ViewFrustum;
+use glam::DVec3;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use std::f64::consts::{FRAC_PI_2, TAU};
+
+/// The focus distance δ beyond the near plane (as in Zhang Fig 3).
+const FOCUS: f64 = super::zhang::TSM_FOCUS;
+
+/// Hemisphere grid: elevation rows (both ends) and azimuth columns.
+const ELEVATIONS: usize = 31;
+const AZIMUTHS: usize = 120;
+
+/// The direction light travels for elevation `el` and azimuth `az` (radians), as in
+/// [`crate::measure::sweep`]: the source lies towards (cos el · sin az, sin el, cos el · cos az);
+/// az = 0 behind the viewer, π in front, el = π/2 overhead.
+fn light_dir(el: f64, az: f64) -> DVec3 {
+    let (se, ce) = el.sin_cos();
+    let (sa, ca) = az.sin_cos();
+    -DVec3::new(ce * sa, se, ce * ca)
+}
+
+/// The fraction of the shadow map the focus region covers for a light travelling along `dir`.
+fn focus_area(view: &ViewFrustum, dir: DVec3, search: TsmSearch) -> Result<f64, crate::Error> {
+    Ok(tsm(
+        view,
+        dir,
+        TsmOptions {
+            focus: FOCUS,
+            search,
+        },
+    )?
+    .focus_area)
+}
+
+pub(super) struct Fig6 {
+    grid: PolarGrid,
+    scale: ColourScale,
+    profile: LineChart,
+    caption: Vec<String>,
+}
+
+pub(super) fn fig6() -> Result<Fig6, Fail> {
+    let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians())?;
+    let de = FRAC_PI_2 / (ELEVATIONS - 1) as f64;
+    let da = TAU / AZIMUTHS as f64;
+    let mut values = Vec::with_capacity(ELEVATIONS * AZIMUTHS);
+    for i in 0..ELEVATIONS {
+        for j in 0..AZIMUTHS {
+            let dir = light_dir(i as f64 * de, j as f64 * da);
+            values.push(Some(focus_area(&view, dir, TsmSearch::EightyPercent)?));
+        }
+    }
+    let grid = PolarGrid {
+        elev_edges: (0..=ELEVATIONS)
+            .map(|i| (i as f64 * de - 0.5 * de).clamp(0.0, FRAC_PI_2))
+            .collect(),
+        az_edges: (0..=AZIMUTHS).map(|j| j as f64 * da - 0.5 * da).collect(),
+        values,
+    };
+    // The vertical plane: from behind the viewer (0°) over the top (90°) to in front (180°).
+    let angles = linspace(0.0, 180.0, 361);
+    let mut eighty = Vec::with_capacity(angles.len());
+    let mut iterative = Vec::with_capacity(angles.len());
+    for &a in &angles {
+        let r = a.to_radians();
+        let dir = DVec3::new(0.0, -r.sin(), -r.cos());
+        eighty.push((a, focus_area(&view, dir, TsmSearch::EightyPercent)?));
+        iterative.push((
+            a,
+            focus_area(&view, dir, TsmSearch::Iterative { map_lines: 1024 })?,
+        ));
+    }
+    let mut profile = LineChart::new(
+        "in the view's vertical plane",
+        Axis::linear(
+            "angle between light and view directions (degrees; 0 behind, 180 in front)",
+            0.0,
+            180.0,
+        ),
+        Axis::linear("focus region area / shadow-map area", 0.0, 1.0),
+    );
+    profile.legend = SeriesLabelPosition::LowerMiddle;
+    profile.series.push(Series::line(
+        format!("80 % rule, δ = {FOCUS}"),
+        eighty,
+        PALETTE[0],
+    ));
+    profile
+        .series
+        .push(Series::line("iterative variant, 1024 lines", iterative, PALETTE[1]).dashed());
+    Ok(Fig6 {
+        grid,
+        scale: ColourScale {
+            axis: Axis::linear("focus region area / shadow-map area", 0.0, 1.0),
+            levels: 40,
+        },
+        profile,
+        caption: vec![
+            format!("Martin & Tan 2004, Fig. 6, measured: the area the focus region (the eye frustum from n to n + δ, δ = {FOCUS}) covers in the trapezoidal map (build::tsm::tsm, TsmMap::focus_area),"),
+            "for every light direction above the viewer (left: overhead at the centre, behind on the left, in front on the right) and in the vertical plane (right). n = 1, f = 100, θ = 30°.".to_string(),
+        ],
+    })
+}
+
+impl Figure for Fig6 {
+    fn size(&self) -> (u32, u32) {
+        (1300, 600)
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let caption: Vec<&str> = self.caption.iter().map(String::as_str).collect();
+        let body = frame(
+            root,
+            "Area of the focus region in the trapezoidal shadow map against the light direction",
+            &caption,
+        )?;
+        let (left, right) = body.split_horizontally(560);
+        let (disk, bar) = left.split_horizontally(450);
+        draw_hemisphere(&disk, "over the hemisphere", &self.grid, &self.scale)?;
+        draw_colour_bar(&bar, &self.scale)?;
+        draw_line_chart(&right, &self.profile)?;
+        Ok(())
+    }
+}
