@@ -6,6 +6,21 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+/// The file names issue 4 fixes, so that links and scripts can rely on them.
+const NAMES: [&str; 11] = [
+    "lloyd2005-fig4",
+    "lloyd2005-fig7",
+    "lloyd2006-fig5",
+    "lloyd2006-fig6",
+    "lloyd2006-fig7",
+    "lloyd2006-fig10",
+    "lloyd2006-fig12",
+    "lloyd2006-fig13",
+    "barroso-fig7",
+    "zhang-fig3",
+    "martin-tan-fig6",
+];
+
 fn run(args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
         .args(args)
@@ -122,4 +137,27 @@ fn bad_arguments_are_one_line_and_a_non_zero_exit() {
         assert!(err.contains(needle), "{args:?}: {err}");
     }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn every_figure_in_both_formats() {
+    let dir = temp_dir("all");
+    let (code, out, err) = run(&["figures", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("22 files"), "{out}");
+    for name in NAMES {
+        check_png(&dir.join(format!("{name}.png")));
+        check_svg(&dir.join(format!("{name}.svg")));
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn help_has_an_example_and_the_names() {
+    let (code, out, _) = run(&["figures", "--help"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("shadow-aliasing figures --out"), "{out}");
+    for name in NAMES {
+        assert!(out.contains(name), "{name} not in --help");
+    }
 }
