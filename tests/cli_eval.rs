@@ -806,3 +806,36 @@ proptest! {
         }
     }
 }
+
+/// The README's promises: exactly two commands under "Two commands" (the main job and the tests),
+/// and every relative link resolves to a file of the repository.
+#[test]
+fn readme_two_commands_and_links() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let md = std::fs::read_to_string(format!("{root}/README.md")).unwrap();
+    let start = md.find("## Two commands").expect("a Two commands heading");
+    let section = &md[start..];
+    let end = section[3..].find("\n## ").map_or(section.len(), |i| i + 3);
+    let commands: Vec<&str> = section[..end]
+        .split("```sh\n")
+        .skip(1)
+        .map(|b| b.split("```").next().unwrap_or("").trim())
+        .collect();
+    assert_eq!(
+        commands,
+        [
+            "cargo run --release --locked --features cli -- figures",
+            "cargo test --locked --all-features"
+        ]
+    );
+    for (i, _) in md.match_indices("](") {
+        let target = md[i + 2..].split(')').next().unwrap_or("");
+        if target.starts_with("http") || target.starts_with('#') {
+            continue;
+        }
+        assert!(
+            std::path::Path::new(root).join(target).exists(),
+            "README links to {target}, which does not exist"
+        );
+    }
+}
