@@ -352,3 +352,53 @@ fn help_has_an_example() {
     assert!(out.contains("Example"), "{out}");
     assert!(out.contains("shadow-aliasing warp --near"), "{out}");
 }
+
+/// docs/cli.md shows what the binary prints: the text example exactly, the JSON example to a
+/// relative 1e-12 per number.
+#[test]
+fn docs_show_the_binarys_output() {
+    let md = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/cli.md")).unwrap();
+    let block = |fence: &str| -> String {
+        let start = md.find(fence).expect("fenced block") + fence.len();
+        md[start..].split("```").next().unwrap().to_string()
+    };
+    let text = block("```text\n");
+    let (first, shown) = text.split_once('\n').unwrap();
+    let args: Vec<&str> = first
+        .trim_start_matches("$ shadow-aliasing ")
+        .split(' ')
+        .collect();
+    let (code, out, _) = run(&args);
+    assert_eq!(code, 0);
+    assert_eq!(shown, out, "docs/cli.md's text example is stale");
+    let shown: Value = serde_json::from_str(&block("```json\n")).unwrap();
+    let now = warp_json(&[
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "lispsm",
+        "--partition",
+        "log",
+        "--k",
+        "2",
+    ]);
+    fn same(a: &Value, b: &Value) -> bool {
+        match (a, b) {
+            (Value::Number(x), Value::Number(y)) => {
+                let (x, y) = (x.as_f64().unwrap(), y.as_f64().unwrap());
+                (x - y).abs() <= 1e-12 * x.abs().max(y.abs())
+            }
+            (Value::Array(x), Value::Array(y)) => {
+                x.len() == y.len() && x.iter().zip(y).all(|(p, q)| same(p, q))
+            }
+            (Value::Object(x), Value::Object(y)) => {
+                x.len() == y.len() && x.iter().all(|(k, v)| y.get(k).is_some_and(|w| same(v, w)))
+            }
+            _ => a == b,
+        }
+    }
+    assert!(
+        same(&shown, &now),
+        "docs/cli.md's JSON example is stale:\n{now}"
+    );
+}

@@ -30,6 +30,10 @@ pub fn sig(v: f64) -> String {
         };
     }
     let rounded: f64 = format!("{v:.5e}").parse().unwrap_or(v);
+    if rounded == 0.0 {
+        // No "-0" for people.
+        return "0".into();
+    }
     let a = rounded.abs();
     if a != 0.0 && !(1e-4..1e9).contains(&a) {
         // Very large or small: keep the exponent form, trimmed.
@@ -59,6 +63,7 @@ mod tests {
         assert_eq!(json_num(f64::INFINITY), "\"inf\"");
         assert_eq!(sig(85.738683464316), "85.7387");
         assert_eq!(sig(11.0), "11");
+        assert_eq!(sig(-0.0), "0");
         assert_eq!(sig(-0.000123456789), "-0.000123457");
         assert_eq!(sig(1.5e12), "1.5·10^12");
         assert_eq!(sig_n_prime(NPrime::Unwarped), "∞ (unwarped)");
