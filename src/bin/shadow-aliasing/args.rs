@@ -39,7 +39,7 @@ pub enum Command {
     Warp(WarpArgs),
     /// The storage factor over the hemisphere of light directions, as CSV on standard output.
     #[command(
-        after_help = "Example:\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm-sin --elevations 90 --azimuths 360 > sweep.csv\n\nColumns: elevation,azimuth,storage_factor (radians). Elevation rows i = 0..E-1 at i·(π/2)/(E-1)\n(0 the horizon, π/2 overhead; both ends included); azimuth columns j = 0..A-1 at j·2π/A\n(0 behind the viewer, π in front; 2π excluded)."
+        after_help = "Example:\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm-sin --elevations 90 --azimuths 360 > sweep.csv\n\nColumns: elevation,azimuth,storage_factor (radians). Elevation rows i = 0..E-1 at i·(π/2)/(E-1)\n(0 the horizon, π/2 overhead; both ends included; E = 1 is the zenith); azimuth columns j = 0..A-1 at j·2π/A\n(0 behind the viewer, π in front; 2π excluded)."
     )]
     Sweep(SweepArgs),
 }
@@ -209,7 +209,7 @@ pub struct SweepArgs {
     pub camera: CameraArgs,
     #[command(flatten)]
     pub scheme: SchemeArgs,
-    /// Number of elevation rows, evenly over [0, π/2] both ends included (≥ 2).
+    /// Number of elevation rows, evenly over [0, π/2] both ends included (1 gives the zenith only).
     #[arg(long, default_value_t = 90)]
     pub elevations: usize,
     /// Number of azimuth columns, evenly over [0, 2π), 2π excluded (≥ 1).
