@@ -181,6 +181,11 @@ fn values_match_hand_calculations() {
             r#"{"quantity": "tilted_mz", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 11, "light_angle": 1.2, "z": 10}"#.into(),
             vec![barroso_mz(1.0, 100.0, phi, 11.0, 1.2, 10.0)],
         ),
+        // A tilted light accepts n′ below near (the contract): n′ = 0.5.
+        (
+            r#"{"quantity": "tilted_mz", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 0.5, "light_angle": 1.2, "z": 10}"#.into(),
+            vec![barroso_mz(1.0, 100.0, phi, 0.5, 1.2, 10.0)],
+        ),
         // res_t = 2 res_image halves it.
         (
             r#"{"quantity": "tilted_mz", "near": 1, "far": 100, "half_fov": 0.5236, "n_prime": 11, "light_angle": 1.2, "z": 10, "res_image": 512, "res_t": 1024}"#.into(),
