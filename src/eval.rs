@@ -1197,6 +1197,23 @@ mod tests {
     }
 
     #[test]
+    fn value_kinds_match_what_each_quantity_answers() {
+        let reqs: Value =
+            serde_json::from_str(include_str!("../examples/eval-request.json")).unwrap();
+        for r in reqs.as_array().unwrap() {
+            let map = r.as_object().unwrap();
+            let q = quantity(map["quantity"].as_str().unwrap()).unwrap();
+            let out = q.evaluate(map).unwrap();
+            let kind = match out {
+                Output::Number(_) => ValueKind::Number,
+                Output::NPrime(_) => ValueKind::NPrime,
+                Output::Numbers(_) => ValueKind::Numbers,
+            };
+            assert_eq!(kind, q.value, "{}", q.name);
+        }
+    }
+
+    #[test]
     fn numbers_print_shortest_round_trip() {
         for v in [0.1, 1.0 / 3.0, 1e300, 5e-324, -0.0, 11.0, 123456789.0125] {
             let s = json_number(v);
