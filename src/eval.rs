@@ -1123,9 +1123,12 @@ fn rejected(message: String) -> EvalOutcome {
 /// is not JSON, gives exit status 2 with one line on standard error.
 ///
 /// JSON numbers too large for an `f64` (such as `1e400`) cannot be represented and make the
-/// input malformed (exit 2); write `"inf"` for an infinite value.
+/// input malformed (exit 2); write `"inf"` for an infinite value. A leading UTF-8 byte-order
+/// mark is ignored.
 #[must_use]
 pub fn eval_json(input: &str) -> EvalOutcome {
+    // A byte-order mark (as some editors on Windows write) is not part of the JSON text.
+    let input = input.strip_prefix('\u{feff}').unwrap_or(input);
     let value: Value = match serde_json::from_str(input) {
         Ok(v) => v,
         Err(e) => {
@@ -1280,6 +1283,12 @@ mod tests {
         );
         assert!(parse_arg(&spec, &Value::from(-1.0)).is_err());
         assert!(parse_arg(&spec, &Value::from("-inf")).is_err());
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_ignored() {
+        let out = eval_json("\u{feff}{\"quantity\":\"n_prime_lispsm\",\"near\":1,\"far\":4}");
+        assert_eq!(out.exit_code, 0, "{}", out.stderr);
     }
 
     #[test]
