@@ -278,6 +278,16 @@ fn general_case_restricts_to_the_bound() {
     assert!(g.shadow.far <= 45.0 + 1e-9 && g.shadow.near >= 1.0 - 1e-12);
     let inside = DVec3::new(0.0, -2.0, -30.0);
     assert!(in_clip(clip(&g.shadow.matrix, inside)));
+    // The focus point on the new centre line lands on the 80 % line, and is δ (f_I − n_I)/(f − n)
+    // beyond the pushed near plane.
+    assert!(!g.shadow.n_prime.is_unwarped());
+    assert!((clip(&g.shadow.matrix, g.focus_point).y + 0.6).abs() < 1e-9);
+    let depth = -g.focus_point.z;
+    let expect = g.shadow.near + 20.0 * (g.shadow.far - g.shadow.near) / 99.0;
+    assert!(
+        (depth - expect).abs() < 1e-9 * expect,
+        "{depth} vs {expect}"
+    );
     let m = ShadowMap::new(g.shadow.matrix, l).unwrap();
     assert!(m.matrix.is_finite());
     // A bound missing the frustum altogether.

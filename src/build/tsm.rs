@@ -47,7 +47,13 @@
 //! iteration, p_L is mapped to an entry one line before that of the last iteration … we adopt the
 //! trapezoid … that transforms the focus region to cover the largest area." With `map_lines` = x
 //! lines numbered from the top, line k is ξ_k = 1 − 2k/x; the search runs k from round(0.8 x) down
-//! to 1 and keeps the first trapezoid of largest focus area.
+//! to 1 ("one line before": towards the top) and keeps the first trapezoid of largest focus area,
+//! the area of the image of the focus region (the frustum truncated δ beyond the near plane) in the
+//! unit square. Lines above the focus point's unwarped line have no centre of projection beyond
+//! the top line (see `analytic::tsm::tsm_eta`) and give the bounding rectangle. The area is not
+//! unimodal in k (it can fall and rise again), so [`TsmSearch::IterativeExhaustive`] tries every
+//! line as printed, and [`TsmSearch::Iterative`] samples 33 lines, then refines between the best
+//! one's neighbours; tests check they agree.
 //!
 //! # The general case (§6.4)
 //!
@@ -123,11 +129,15 @@ pub struct TsmMap {
     pub light_space: LightSpace,
     /// The trapezoid.
     pub trapezoid: Trapezoid,
-    /// N_T: light-space `(x, z, 1)` → homogeneous unit-square coordinates.
+    /// N_T: light-space `(x, z, 1)` → homogeneous unit-square coordinates, scaled so that
+    /// w ≥ 1 over the region with equality at its nearest point to q.
     pub n_t: DMat3,
     /// Light-space depth kept out of N_T (§4): `dot(light_depth, (p, 1))` ∈ [−1, 1] over the
     /// frustum, −1 nearest the light, for an eye-space point p.
     pub light_depth: DVec4,
+    /// The focus point p (eye space): `focus` beyond the near plane on the centre line (for
+    /// [`tsm_general`], beyond the pushed near plane on the line from the eye through I's centroid).
+    pub focus_point: DVec3,
     /// The line y = ξ the focus point maps to.
     pub xi: f64,
     /// Fraction of the map's area covered by the focus region.
@@ -486,14 +496,14 @@ impl Core<'_> {
             let h = n_t * DVec3::new(ls.x.dot(p), ls.z.dot(p), 1.0);
             h.z
         };
+        // Orient and scale N_T so that w > 0 over E with minimum 1 (the homogeneous scale does
+        // not change the map; it gives the same w ≥ 1 convention as the warps).
         let sign = if w_of(self.points[0]) < 0.0 {
             -1.0
         } else {
             1.0
         };
-        let h = n_t * sign;
-        let (mut vmin, mut vmax) = (f64::INFINITY, f64::NEG_INFINITY);
-        let (mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY);
+        let mut w_min = f64::INFINITY;
         for p in self.points {
             let w = sign * w_of(*p);
             if w.is_nan() || w <= 0.0 {
@@ -502,6 +512,14 @@ impl Core<'_> {
                     fmt_num(w)
                 )));
             }
+            w_min = w_min.min(w);
+        }
+        let scale = sign / w_min;
+        let h = n_t * scale;
+        let (mut vmin, mut vmax) = (f64::INFINITY, f64::NEG_INFINITY);
+        let (mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in self.points {
+            let w = scale * w_of(*p);
             let y = ls.y.dot(*p);
             vmin = vmin.min(y / w);
             vmax = vmax.max(y / w);
@@ -527,6 +545,7 @@ impl Core<'_> {
                 "the trapezoidal map is not finite".into(),
             ));
         }
+        crate::build::warp::verify_clip(&matrix, self.points.iter())?;
         let light_depth = DVec4::new(-ls.y.x / y_h, -ls.y.y / y_h, -ls.y.z / y_h, y_m / y_h);
         let focus_area = focus_area(&analytic, hull);
         Ok(TsmMap {
@@ -547,6 +566,7 @@ impl Core<'_> {
             },
             n_t: h,
             light_depth,
+            focus_point: self.focus_point,
             xi: if eta.is_some() {
                 xi
             } else {

@@ -15,7 +15,9 @@
 
 use crate::build::lightspace::LightSpace;
 use crate::build::matrix::ShadowMatrix;
-use crate::build::warp::{rule_n_prime, warp_matrix, FrustumInLight, Ranges, WarpRule};
+use crate::build::warp::{
+    rule_n_prime, verify_clip, warp_matrix, FrustumInLight, Ranges, WarpRule,
+};
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{NPrime, ViewFrustum};
 use glam::{DMat4, DVec3};
@@ -143,5 +145,7 @@ fn fit_two(a: &[DVec3], b: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result
         let w = 1.0 + rho * (q.z - z0);
         r.add(q.x / w, q.y / w);
     }
-    warp_matrix(ls, z0, z1 - z0, rho, &r, extent)
+    let m = warp_matrix(ls, z0, z1 - z0, rho, &r, extent)?;
+    verify_clip(&m, a.iter().chain(b))?;
+    Ok(m)
 }

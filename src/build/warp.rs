@@ -53,7 +53,9 @@ pub enum WarpRule {
     /// Lloyd 2006 Eq 11: n′(η) = n(√α + 1 − η(α − 1))/(η + 1) for −1 ≤ η ≤ 0 (η = −1 is
     /// n′ = ∞) and n(√α + 1)/(η√α + 1) for 0 < η ≤ 1, α = f/n. η = 0 is LiSPSM, η = 1 PSM.
     Eta(f64),
-    /// PSM's n′ = n (Lloyd 2006 §4.1).
+    /// PSM's n′ = n (Lloyd 2006 §4.1). This is PSM exactly only with the light overhead; for
+    /// other directions a perspective shadow map is not a one-point perspective in light space
+    /// (Lloyd 2006 §4.4), and this rule is the light-space warp with PSM's parameter.
     Psm,
     /// LiSPSM's overhead optimum n′ = n + √(f n) (Wimmer et al. 2004; Lloyd 2006 §4.1), for every
     /// light direction.
@@ -69,7 +71,8 @@ pub enum WarpRule {
         /// Focus distance δ beyond the near plane, world units, `0 < focus ≤ f − n`.
         focus: f64,
     },
-    /// The LiSPSM reference code (Wimmer, `LispSM::calcNoptGeneral`):
+    /// The LiSPSM reference implementation (D. Scherzer, TU Vienna 2005, for Wimmer et al. 2004;
+    /// `LispSM<REAL>::calcNoptGeneral` with `getNearCameraPointE` and `getZ0_ls`):
     /// n′ = Δ/(√(z₁/z₀) − 1) with z₀ = n, z₁ = n + Δ sin γ the eye depths at the near and far ends
     /// of the warp axis, computed as Δ(√(1 + x) + 1)/x, x = Δ sin γ/n; n′ = ∞ at γ = 0.
     LispsmReference,
@@ -108,6 +111,8 @@ pub enum WarpRule {
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct FrustumInLight {
     pub ls: LightSpace,
+    /// The eight corners, eye space.
+    pub corners: [DVec3; 8],
     /// Light-space coordinates of the eight corners.
     pub q: [DVec3; 8],
     /// Eye depth −p.z of each corner.
@@ -137,11 +142,12 @@ impl FrustumInLight {
         let l = ls.light_dir();
         Ok(Self {
             ls,
+            corners,
             q,
             depth,
             z0,
             delta: z1 - z0,
-            sin_gamma: l.x.hypot(l.y).min(1.0),
+            sin_gamma: (l.x * l.x + l.y * l.y).sqrt().min(1.0),
         })
     }
 }
@@ -158,7 +164,9 @@ impl FrustumInLight {
 /// # Errors
 /// [`Error::InvalidArgument`] naming `points` when empty or not finite, `n_prime` when a
 /// [`NPrime::Finite`] value is not finite and positive; [`Error::Degenerate`] when the points have
-/// no extent along `ls.x` or `ls.z`.
+/// no extent along `ls.x` or `ls.z`, or when rounding would put a point outside the clip volume
+/// by more than 10⁻⁶ (depth ratios far beyond 10⁶ with a strong warp: the result is checked, never
+/// returned wrong).
 ///
 /// ```
 /// # use shadow_aliasing::build::{fit_warp, light_space};
@@ -210,7 +218,32 @@ pub fn fit_warp(points: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DM
         let w = 1.0 + rho * (q.z - z0);
         range.add(q.x / w, q.y / w);
     }
-    warp_matrix(ls, z0, delta, rho, &range, extent)
+    let m = warp_matrix(ls, z0, delta, rho, &range, extent)?;
+    verify_clip(&m, points.iter())?;
+    Ok(m)
+}
+
+/// Checks what the construction guarantees in exact arithmetic: every point has w ≥ 1 and clip
+/// coordinates in [−1, 1]. With rounding the extreme points land within about 10⁻⁹ of the faces
+/// for f/n up to 10⁶; a point at w < ½ or more than 10⁻⁶ outside the clip volume means the
+/// frustum's depth ratio is beyond what f64 can warp (for the LiSPSM warp the error of w at the far
+/// end is about √(f/n) · 10⁻¹⁶, for PSM's n′ = n about (f/n) · 10⁻¹⁶), and the matrix is refused.
+pub(crate) fn verify_clip<'a>(m: &DMat4, points: impl Iterator<Item = &'a DVec3>) -> Result<()> {
+    const SLACK: f64 = 1.0 + 1e-6;
+    for p in points {
+        let h = *m * p.extend(1.0);
+        let ok = h.w >= 0.5
+            && h.x.abs() <= SLACK * h.w
+            && h.y.abs() <= SLACK * h.w
+            && h.z.abs() <= SLACK * h.w;
+        if !ok {
+            return Err(Error::Degenerate(format!(
+                "the map cannot be represented in f64 for this frustum (a point maps to {h}): \
+                 reduce far/near or use z-partitions"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// Running min/max of u = x/w and v = y/w.
@@ -286,7 +319,9 @@ pub(crate) fn warp_matrix(
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector, or the rule's
-/// parameter (`eta`, `focus`, `near_hint`, `far_hint`) outside its domain.
+/// parameter (`eta`, `focus`, `near_hint`, `far_hint`) outside its domain; [`Error::Degenerate`]
+/// when the frustum's depth ratio is beyond what f64 can warp with this n′ (every corner is checked
+/// to land in the clip volume; in practice from f/n ≈ 10¹⁵ for PSM, ≈ 10³⁰ for LiSPSM).
 ///
 /// ```
 /// # use shadow_aliasing::build::{warp, WarpRule};
@@ -329,14 +364,22 @@ pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4>
         }
     };
     let mut r = Ranges::new();
-    for q in &fl.q {
-        let w = 1.0 + rho * (q.z - fl.z0);
-        r.add(q.x / w, q.y / w);
+    if rho == 0.0 {
+        for q in &fl.q {
+            r.add(q.x, q.y);
+        }
+    } else {
+        for q in &fl.q {
+            let iw = 1.0 / (1.0 + rho * (q.z - fl.z0));
+            r.add(q.x * iw, q.y * iw);
+        }
     }
     let extent =
         fl.q.iter()
             .fold(0.0f64, |m, q| m.max(q.abs().max_element()));
-    warp_matrix(&fl.ls, fl.z0, fl.delta, rho, &r, extent)
+    let m = warp_matrix(&fl.ls, fl.z0, fl.delta, rho, &r, extent)?;
+    verify_clip(&m, fl.corners.iter())?;
+    Ok(m)
 }
 
 /// The n′ that `rule` chooses for the whole view frustum and this light (see [`WarpRule`]).
