@@ -209,3 +209,45 @@ fn composed_matrices_map_into_their_viewports() {
         assert!(atlas.compose(parts.len(), &DMat4::IDENTITY).is_none());
     }
 }
+
+/// A scheme's own atlas: the maps of every partitioning packed, tiling the texture, each
+/// composed matrix mapping its region's vertices into its viewport.
+#[test]
+fn scheme_atlas_holds_every_partition() {
+    use shadow_aliasing::build::scheme::{scheme, Partition, Region};
+    use shadow_aliasing::build::WarpRule;
+    let view = ViewFrustum::new(0.5, 300.0, 0.6).unwrap();
+    for partition in [Partition::Single, Partition::Log, Partition::Faces] {
+        for l in [
+            DVec3::new(0.2, -0.9, -0.3),
+            DVec3::NEG_Z,
+            DVec3::new(-0.5, -0.2, 0.8),
+        ] {
+            let r = scheme(&view, l, WarpRule::Lispsm, partition, 3).unwrap();
+            let atlas = r.atlas(2048, 2048).unwrap();
+            let texels: u64 = atlas.viewports().iter().map(|v| v.texels()).sum();
+            assert_eq!(texels, 2048 * 2048);
+            for (i, p) in r.partitions().iter().enumerate() {
+                let v = atlas.viewports()[i];
+                let m = atlas.compose(i, &p.matrix).unwrap();
+                let pts: Vec<DVec3> = match p.region {
+                    Region::Frustum => view
+                        .with_depth_range(p.near, p.far)
+                        .unwrap()
+                        .corners()
+                        .to_vec(),
+                    Region::Face(f) => f.vertices(&view, p.near, p.far).to_vec(),
+                };
+                for q in pts {
+                    let c = clip(&m, q);
+                    let x0 = -1.0 + 2.0 * f64::from(v.x) / 2048.0;
+                    let x1 = -1.0 + 2.0 * f64::from(v.x + v.width) / 2048.0;
+                    let y0 = -1.0 + 2.0 * f64::from(v.y) / 2048.0;
+                    let y1 = -1.0 + 2.0 * f64::from(v.y + v.height) / 2048.0;
+                    assert!(c.x >= x0 - 1e-9 && c.x <= x1 + 1e-9);
+                    assert!(c.y >= y0 - 1e-9 && c.y <= y1 + 1e-9);
+                }
+            }
+        }
+    }
+}

@@ -480,3 +480,156 @@ fn stable_cascade_loss_by_hand() {
     let stable = (r_map / t).powi(2);
     assert!((s.storage_loss() - stable / tight).abs() < 1e-9 * stable / tight);
 }
+
+/// Both clip-depth conventions: [0, 1] depth is (z + w)/2 of the OpenGL one, x, y, w unchanged;
+/// the single-precision matrix agrees to f32 rounding.
+#[test]
+fn clip_depth_conventions() {
+    use shadow_aliasing::build::ClipDepth;
+    let view = ViewFrustum::new(0.5, 80.0, 0.7).unwrap();
+    let r = scheme(
+        &view,
+        DVec3::new(0.4, -0.7, -0.3),
+        WarpRule::Lispsm,
+        Partition::Faces,
+        2,
+    )
+    .unwrap();
+    for p in r.partitions() {
+        let gl = p.matrix_with_clip_depth(ClipDepth::NegOneToOne);
+        let zo = p.matrix_with_clip_depth(ClipDepth::ZeroToOne);
+        assert_eq!(gl, p.matrix);
+        let f32m = p.to_mat4(ClipDepth::ZeroToOne);
+        let pts: Vec<DVec3> = match p.region {
+            Region::Frustum => view
+                .with_depth_range(p.near, p.far)
+                .unwrap()
+                .corners()
+                .to_vec(),
+            Region::Face(f) => f.vertices(&view, p.near, p.far).to_vec(),
+        };
+        for q in pts {
+            let a = gl * DVec4::new(q.x, q.y, q.z, 1.0);
+            let b = zo * DVec4::new(q.x, q.y, q.z, 1.0);
+            assert!((b.z - 0.5 * (a.z + a.w)).abs() < 1e-12 * a.w.abs().max(1.0));
+            assert_eq!((a.x, a.y, a.w), (b.x, b.y, b.w));
+            let d = b.z / b.w;
+            assert!((-1e-9..=1.0 + 1e-9).contains(&d), "depth {d}");
+            let c = f32m * glam::Vec4::new(q.x as f32, q.y as f32, q.z as f32, 1.0);
+            assert!(((c.z / c.w) as f64 - d).abs() < 1e-4);
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(config_cases(128))]
+
+    /// Any split planes (uniform, practical, Unreal's exponent), light overhead: the measured S̄ of
+    /// the cascades is Eq 12 summed over the partitions (`analytic::partition::splits_storage_factor`),
+    /// uniform maps and maps warped with n′ ≤ n′_LSPSM of each partition; light behind, (f_i/n_i)²
+    /// summed (Eq 20 per partition). And the scheme layer against Lloyd 2006 Eq 17–21 as the
+    /// analytic module states them (`scheme_storage_factor`).
+    #[test]
+    fn measured_schemes_equal_the_closed_forms(
+        n in 0.05f64..5.0,
+        lr in (2f64).ln()..(1e4f64).ln(),
+        th in 10f64.to_radians()..70f64.to_radians(),
+        k in 1usize..=6,
+        sch in split_scheme(),
+    ) {
+        use shadow_aliasing::analytic::partition::{
+            scheme_storage_factor, splits_storage_factor, Scheme, SchemeLight,
+        };
+        let view = ViewFrustum::new(n, n * lr.exp(), th).unwrap();
+        let splits = match z_splits(view.near(), view.far(), k, sch) {
+            Ok(s) => s,
+            Err(_) => return Ok(()),
+        };
+        for (light, l) in [(SchemeLight::Overhead, DVec3::NEG_Y), (SchemeLight::Behind, DVec3::NEG_Z)] {
+            for (rule, warped) in [(WarpRule::Uniform, false), (WarpRule::LispsmSin, true)] {
+                let got = cascades(&view, l, &splits, rule, 0.0).unwrap().storage_factor();
+                let want = splits_storage_factor(&splits, th, light, warped).unwrap();
+                prop_assert!((got - want).abs() <= 1e-9 * want, "{light:?} {rule:?}: {got} vs {want}");
+            }
+            for (scheme_, rule, partition) in [
+                (Scheme::Zp, WarpRule::Uniform, Partition::Log),
+                (Scheme::ZpW, WarpRule::LispsmSin, Partition::Log),
+                (Scheme::FpZpW, WarpRule::Lispsm, Partition::Faces),
+            ] {
+                let got = scheme(&view, l, rule, partition, k).unwrap().storage_factor();
+                let want = scheme_storage_factor(scheme_, light, &view, k).unwrap();
+                prop_assert!((got - want).abs() <= 1e-9 * want, "{scheme_:?} {light:?}: {got} vs {want}");
+            }
+        }
+    }
+}
+
+/// Barroso & Celes Eq 19 through the scheme layer: with the light overhead (γ = π/2) the adaptive
+/// planes are the self-similar ones, so S̄ is Eq 18's; with the light behind (γ = 0) they are
+/// f, f/α, f/α², … (α = 2), and S̄ is Eq 20 per partition, Σ (f_i/n_i)²: at n = 1, f = 100, k = 3
+/// the planes are 1, 25, 50, 100 and S̄ = 25² + 2² + 2² = 633.
+#[test]
+fn adaptive_partitions_by_hand() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let over = DVec3::NEG_Y;
+    let a = scheme(&view, over, WarpRule::Lispsm, Partition::Adaptive, 3).unwrap();
+    let l = scheme(&view, over, WarpRule::Lispsm, Partition::Log, 3).unwrap();
+    assert!((a.storage_factor() - l.storage_factor()).abs() < 1e-9 * l.storage_factor());
+    let eq18 = 3.0 * (100f64.powf(1.0 / 3.0) - 1.0) / (2.0 * 0.5f64.tan());
+    assert!((a.storage_factor() - eq18).abs() < 1e-9 * eq18);
+    let behind = scheme(
+        &view,
+        DVec3::NEG_Z,
+        WarpRule::LispsmSin,
+        Partition::Adaptive,
+        3,
+    )
+    .unwrap();
+    let planes: Vec<(f64, f64)> = behind
+        .partitions()
+        .iter()
+        .map(|p| (p.near, p.far))
+        .collect();
+    assert_eq!(planes, vec![(1.0, 25.0), (25.0, 50.0), (50.0, 100.0)]);
+    assert!((behind.storage_factor() - 633.0).abs() < 1e-9 * 633.0);
+    // f/n = 10 cannot hold five partitions, four of ratio 2 behind the first (10, 5, 2.5, 1.25,
+    // 0.625 < near):
+    // a typed error.
+    let short = ViewFrustum::new(1.0, 10.0, 0.5).unwrap();
+    assert!(matches!(
+        scheme(
+            &short,
+            DVec3::NEG_Z,
+            WarpRule::Lispsm,
+            Partition::Adaptive,
+            5
+        ),
+        Err(shadow_aliasing::Error::NoSolution(_))
+    ));
+}
+
+/// Stable cascades for all partitions: one per partition, each no better than its tight fit,
+/// the sums the sums; planes outside the view refused.
+#[test]
+fn stable_cascades_for_all_partitions() {
+    use shadow_aliasing::build::cascades::stable_cascades;
+    let view = ViewFrustum::new(0.5, 200.0, 0.6).unwrap();
+    let splits = z_splits(0.5, 200.0, 5, SplitScheme::SelfSimilar).unwrap();
+    let camera =
+        glam::dcamera::rh::view::look_at_mat4(DVec3::new(3.0, 2.0, 5.0), DVec3::ZERO, DVec3::Y);
+    let light = DVec3::new(0.3, -1.0, 0.2);
+    let c = stable_cascades(&view, camera, light, &splits, 1024).unwrap();
+    assert_eq!(c.k(), 5);
+    let mut sum = 0.0;
+    for (i, s) in c.iter().enumerate() {
+        let (a, b) = splits.range(i);
+        let one = stable_cascade(&view, camera, light, a, b, 1024).unwrap();
+        assert_eq!(*s, one);
+        assert!(s.storage_loss() >= 1.0);
+        sum += s.storage_factor;
+    }
+    assert!((c.storage_factor() - sum).abs() <= 1e-12 * sum);
+    assert!(c.storage_factor() >= c.tight_storage_factor());
+    let wide = z_splits(0.25, 200.0, 2, SplitScheme::Uniform).unwrap();
+    assert!(stable_cascades(&view, camera, light, &wide, 1024).is_err());
+}

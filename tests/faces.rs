@@ -470,9 +470,9 @@ fn errata_s5_1_bisector_of_unit_vectors() {
     assert!(faces_with_axis(&view, l, true).is_some());
 }
 
-/// Errata (docs/errata.md, Lloyd 2006 §5.1, item 13): the face's n′. From behind at θ = 30°,
-/// f/n = 1000, warping each side face with the view frustum's own n′ = n + √(f n) = 32.62 instead
-/// of the face's d_n + √(d_n d_f) = tan θ (n + √(f n)) = 18.83 puts it above the face's minimal
+/// Errata (docs/errata.md, Lloyd 2006 §5.1, "the face's n′ is not stated"). From behind at
+/// θ = 30°, f/n = 1000, warping each side face with the view frustum's own n′ = n + √(f n) =
+/// 32.62 instead of the face's d_n + √(d_n d_f) = tan θ (n + √(f n)) = 18.83 puts it above the face's minimal
 /// range: by Eq 12 for the face (an overhead frustum with half field of view 45°, near n tan θ,
 /// far f tan θ) each face then costs 499.5 · n′² d_f/(d_n (n′ + d_f − d_n)²) = 1431.5 instead of
 /// 499.5, Σ S̄ = 5727 instead of 1999.
@@ -512,4 +512,63 @@ fn errata_s5_1_face_n_prime_is_the_faces_own() {
         .unwrap()
         .storage_factor();
     assert!((crate_choice - 1999.0).abs() < 1e-9 * 1999.0);
+}
+
+/// A light along a side edge of the frustum (from behind, along the ray through the +x+y corner):
+/// the two faces sharing that edge are edge-on and skipped, the others cover the frustum.
+#[test]
+fn light_along_a_side_edge() {
+    let view = ViewFrustum::new(0.5, 50.0, 0.6).unwrap();
+    let t = view.tan_half_fov();
+    let l = DVec3::new(t, t, -1.0).normalize();
+    let vis = visible_faces(&view, l).unwrap();
+    assert_eq!(vis.faces(), &[Face::Bottom, Face::Left, Face::Near]);
+    let parts = face_partitions(&view, l, FaceWarp::Lispsm, 3).unwrap();
+    assert_eq!(parts.len(), 2 * 3 + 1);
+    for (i, (a, b, c)) in [
+        (0.1, 0.9, 0.95),
+        (0.5, -0.3, 0.2),
+        (0.99, 0.99, 0.99),
+        (0.0, -0.9, 0.9),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let z: f64 = 0.5 * 100f64.powf(a);
+        let p = DVec3::new(b * z * t, c * z * t, -z);
+        let inside = parts.iter().any(|part| {
+            clip(&part.shadow.matrix, p).is_some_and(|q| q.abs().max_element() <= 1.0 + 1e-9)
+        });
+        assert!(inside, "point {i} {p}");
+    }
+    assert!(parts.storage_factor().is_finite());
+}
+
+/// No jump where the choice switches between front and back faces (v·y = 0, the light
+/// perpendicular to the view) nor where faces appear edge-on: Σ S̄ is continuous and, by the
+/// frustum's symmetry, even in the tilt (f/n = 100, θ = 0.5, k = 2: 16.4744 overhead).
+#[test]
+fn storage_is_continuous_through_the_face_switch() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let s = |l: DVec3| {
+        face_partitions(&view, l, FaceWarp::Lispsm, 2)
+            .unwrap()
+            .storage_factor()
+    };
+    let at0 = s(DVec3::NEG_Y);
+    for e in [1e-8, 1e-6, 2e-6, 1e-5] {
+        let behind = s(DVec3::new(0.0, -1.0, -e));
+        let front = s(DVec3::new(0.0, -1.0, e));
+        assert!(
+            (behind - front).abs() < 1e-9 * at0,
+            "{e}: {behind} vs {front}"
+        );
+        assert!(
+            (behind - at0).abs() < 10.0 * e * at0,
+            "{e}: {behind} vs {at0}"
+        );
+        let left = s(DVec3::new(-e, -1.0, -0.3));
+        let right = s(DVec3::new(e, -1.0, -0.3));
+        assert!((left - right).abs() < 1e-9 * left);
+    }
 }

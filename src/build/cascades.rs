@@ -21,7 +21,7 @@
 //!
 //! # Stable cascades
 //!
-//! Engines (Unity, Unreal, Filament's and Bevy's stable mode, the "stable CSM" of ShaderX6) trade
+//! Engines (Unity's "Stable Fit", the stabilised cascades of Valient's ShaderX6 chapter) trade
 //! storage for stability under camera motion: each partition is enclosed in its minimal bounding
 //! sphere, which does not turn with the camera, and an orthographic map of side `2R` is aligned
 //! with a light space fixed in the world, its centre snapped to whole texels of the world-fixed
@@ -309,8 +309,8 @@ pub fn bounding_sphere(view: &ViewFrustum, near: f64, far: f64) -> Result<(f64, 
 /// A stable cascade for the partition `[near, far]` of `view`.
 ///
 /// `world_to_eye` is the camera's view matrix (world → eye, rigid: rotation and translation,
-/// glam `look_at_rh`); `light_dir_world` the direction light travels in *world* space (a stable
-/// map must not turn with the camera); `resolution` the map's texels per side (≥ 3). The light
+/// glam `dcamera::rh::view::look_at_mat4`); `light_dir_world` the direction light travels in
+/// *world* space (a stable map must not turn with the camera); `resolution` the map's texels per side (≥ 3). The light
 /// space is [`light_space`]`(light_dir_world, −Z_world)`, fixed in the world. The sphere's centre,
 /// in that light space, is snapped to the nearest multiple of the texel edge along s and t.
 ///
@@ -373,6 +373,92 @@ pub fn stable_cascade(
         texel,
         storage_factor: stable.storage_factor(),
         tight_storage_factor: tight.storage_factor(),
+    })
+}
+
+/// A frame's stable cascades, near to far, in a fixed array (no heap allocation).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StableCascades {
+    parts: [Option<StableCascade>; MAX_PARTITIONS],
+    k: usize,
+}
+
+impl StableCascades {
+    /// Number of partitions k.
+    #[must_use]
+    pub fn k(&self) -> usize {
+        self.k
+    }
+    /// The partitions, near to far.
+    pub fn iter(&self) -> impl Iterator<Item = &StableCascade> {
+        self.parts[..self.k].iter().flatten()
+    }
+    /// Σ S̄ of the stable maps.
+    #[must_use]
+    pub fn storage_factor(&self) -> f64 {
+        self.iter().map(|c| c.storage_factor).sum()
+    }
+    /// Σ S̄ of the tight orthographic fits of the same partitions.
+    #[must_use]
+    pub fn tight_storage_factor(&self) -> f64 {
+        self.iter().map(|c| c.tight_storage_factor).sum()
+    }
+}
+
+/// [`stable_cascade`] for every partition of `splits` (planes within the view's depth range).
+///
+/// # Errors
+/// As [`stable_cascade`]; [`Error::InvalidArgument`] naming `splits` when a plane lies outside
+/// `[view.near(), view.far()]`.
+///
+/// ```
+/// use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
+/// use shadow_aliasing::build::cascades::stable_cascades;
+/// use shadow_aliasing::ViewFrustum;
+/// use glam::{DMat4, DVec3};
+/// let view = ViewFrustum::new(0.5, 200.0, 0.6)?;
+/// let splits = z_splits(0.5, 200.0, 4, SplitScheme::Practical { lambda: 0.8 })?;
+/// let eye = DVec3::new(3.0, 2.0, 5.0);
+/// let camera = glam::dcamera::rh::view::look_at_mat4(eye, DVec3::ZERO, DVec3::Y);
+/// let c = stable_cascades(&view, camera, DVec3::new(0.3, -1.0, 0.2), &splits, 2048)?;
+/// assert_eq!(c.k(), 4);
+/// assert!(c.storage_factor() >= c.tight_storage_factor());
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+pub fn stable_cascades(
+    view: &ViewFrustum,
+    world_to_eye: DMat4,
+    light_dir_world: DVec3,
+    splits: &Splits,
+    resolution: u32,
+) -> Result<StableCascades> {
+    let planes = splits.planes();
+    let slack = 1e-12 * view.far();
+    if planes[0] < view.near() - slack || planes[planes.len() - 1] > view.far() + slack {
+        return Err(Error::invalid(
+            "splits",
+            format!(
+                "must lie within [near, far] = [{}, {}]",
+                fmt_num(view.near()),
+                fmt_num(view.far())
+            ),
+        ));
+    }
+    let mut parts = [None; MAX_PARTITIONS];
+    for (i, part) in parts.iter_mut().enumerate().take(splits.k()) {
+        let (a, b) = splits.range(i);
+        *part = Some(stable_cascade(
+            view,
+            world_to_eye,
+            light_dir_world,
+            a,
+            b,
+            resolution,
+        )?);
+    }
+    Ok(StableCascades {
+        parts,
+        k: splits.k(),
     })
 }
 

@@ -35,13 +35,14 @@
 //! ```
 
 use crate::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
+use crate::build::atlas::{layout, Atlas, AtlasEntry, MAX_ATLAS_ENTRIES};
 use crate::build::cascades::visit_cascades;
 use crate::build::faces::{visit_face_partitions, Face, FaceWarp, MAX_FACE_PARTITIONS};
 use crate::build::{warp, ClipDepth, WarpRule};
 use crate::error::{Error, Result};
 use crate::frustum::{unit_light_dir, LightAngle, NPrime, ViewFrustum};
 use crate::measure::sweep::vertex_max;
-use glam::{DMat4, DVec3};
+use glam::{DMat4, DVec3, Mat4};
 
 /// Barroso & Celes' far-partition ratio α for [`Partition::Adaptive`]: 2, the value of their
 /// Fig 9 ("the proposed adaptive scheme with α = 2").
@@ -126,6 +127,12 @@ impl PartitionResult {
             }
         }
     }
+
+    /// The matrix in single precision for the GPU, in the requested clip-depth convention.
+    #[must_use]
+    pub fn to_mat4(&self, depth: ClipDepth) -> Mat4 {
+        self.matrix_with_clip_depth(depth).as_mat4()
+    }
 }
 
 /// A scheme's maps in a fixed array (no heap allocation) and their summed storage factor.
@@ -165,6 +172,48 @@ impl SchemeResult {
     pub fn light_dir(&self) -> DVec3 {
         self.light_dir
     }
+    /// The maps packed into one `width × height` texture ([`crate::build::atlas::layout`]), grouped
+    /// as Lloyd 2005 §4.1 does: the two maps of opposite side faces share a column (left with
+    /// right, bottom with top, each face's z-partitions with them), the near face has its own;
+    /// z-partitions of the frustum share one column, split along t by their M_z. The viewports
+    /// are in the order of [`SchemeResult::partitions`].
+    ///
+    /// # Errors
+    /// As [`crate::build::atlas::layout`] (a texture too small to give every map a texel).
+    ///
+    /// ```
+    /// use shadow_aliasing::build::scheme::{scheme, Partition};
+    /// use shadow_aliasing::build::WarpRule;
+    /// use shadow_aliasing::ViewFrustum;
+    /// use glam::DVec3;
+    /// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;
+    /// let r = scheme(&view, DVec3::new(0.1, -0.2, -1.0), WarpRule::Lispsm, Partition::Faces, 2)?;
+    /// let atlas = r.atlas(4096, 4096)?;
+    /// let texels: u64 = atlas.viewports().iter().map(|v| v.texels()).sum();
+    /// assert_eq!(texels, 4096 * 4096);
+    /// # Ok::<(), shadow_aliasing::Error>(())
+    /// ```
+    pub fn atlas(&self, width: u32, height: u32) -> Result<Atlas> {
+        let mut entries = [AtlasEntry {
+            group: 0,
+            max_mx: 1.0,
+            max_mz: 1.0,
+        }; MAX_ATLAS_ENTRIES];
+        for (e, p) in entries.iter_mut().zip(self.partitions()) {
+            *e = AtlasEntry {
+                group: match p.region {
+                    Region::Frustum => 0,
+                    Region::Face(Face::Left | Face::Right) => 0,
+                    Region::Face(Face::Bottom | Face::Top) => 1,
+                    Region::Face(Face::Near | Face::Far) => 2,
+                },
+                max_mx: p.max_mx,
+                max_mz: p.max_mz,
+            };
+        }
+        layout(width, height, &entries[..self.len])
+    }
+
     fn push(&mut self, p: PartitionResult) {
         if self.len < MAX_SCHEME_PARTITIONS {
             self.parts[self.len] = p;
@@ -206,11 +255,51 @@ pub fn scheme_into(
     k: usize,
     out: &mut SchemeResult,
 ) -> Result<()> {
+    let l = unit_light_dir(light_dir)?;
+    scheme_into_prepared(&Prepared::new(view), l, rule, partition, k, out)
+}
+
+/// What a scheme needs of the view that does not depend on the light: computed once per sweep.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Prepared {
+    view: ViewFrustum,
+    tan: f64,
+    corners: [DVec3; 8],
+}
+
+impl Prepared {
+    pub(crate) fn new(view: &ViewFrustum) -> Self {
+        let tan = view.tan_half_fov();
+        let ta = tan * view.aspect();
+        let mut corners = [DVec3::ZERO; 8];
+        for (j, d) in [(-ta, -tan), (ta, -tan), (ta, tan), (-ta, tan)]
+            .iter()
+            .enumerate()
+        {
+            corners[j] = DVec3::new(d.0 * view.near(), d.1 * view.near(), -view.near());
+            corners[j + 4] = DVec3::new(d.0 * view.far(), d.1 * view.far(), -view.far());
+        }
+        Self {
+            view: *view,
+            tan,
+            corners,
+        }
+    }
+}
+
+/// [`scheme_into`] with the view prepared and `l` already a unit vector.
+pub(crate) fn scheme_into_prepared(
+    prep: &Prepared,
+    l: DVec3,
+    rule: WarpRule,
+    partition: Partition,
+    k: usize,
+    out: &mut SchemeResult,
+) -> Result<()> {
     out.len = 0;
     out.storage_factor = 0.0;
-    let l = unit_light_dir(light_dir)?;
     out.light_dir = l;
-    let r = fill(view, l, rule, partition, k, out);
+    let r = fill(prep, l, rule, partition, k, out);
     if r.is_err() {
         out.len = 0;
         out.storage_factor = 0.0;
@@ -219,30 +308,22 @@ pub fn scheme_into(
 }
 
 fn fill(
-    view: &ViewFrustum,
+    prep: &Prepared,
     l: DVec3,
     rule: WarpRule,
     partition: Partition,
     k: usize,
     out: &mut SchemeResult,
 ) -> Result<()> {
+    let view = &prep.view;
     let splits = |scheme: SplitScheme| z_splits(view.near(), view.far(), k, scheme);
     let planes: Splits = match partition {
         Partition::Single => {
             let s = warp(view, l, rule)?;
-            let tan = view.tan_half_fov();
-            let ta = tan * view.aspect();
-            let mut corners = [DVec3::ZERO; 8];
-            for (j, d) in [(-ta, -tan), (ta, -tan), (ta, tan), (-ta, tan)]
-                .iter()
-                .enumerate()
-            {
-                corners[j] = DVec3::new(d.0 * view.near(), d.1 * view.near(), -view.near());
-                corners[j + 4] = DVec3::new(d.0 * view.far(), d.1 * view.far(), -view.far());
-            }
-            let e = vertex_max(&s.matrix, s.light_dir, tan, &corners).ok_or_else(|| {
-                Error::Degenerate("the map is singular at a frustum corner".into())
-            })?;
+            let e =
+                vertex_max(&s.matrix, s.light_dir, prep.tan, &prep.corners).ok_or_else(|| {
+                    Error::Degenerate("the map is singular at a frustum corner".into())
+                })?;
             out.push(PartitionResult {
                 matrix: s.matrix,
                 n_prime: s.n_prime,

@@ -41,7 +41,7 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::build::scheme::{scheme_into, Partition, SchemeResult};
+use crate::build::scheme::{scheme_into, scheme_into_prepared, Partition, Prepared, SchemeResult};
 /// The jump of error across each seam between neighbouring partitions of a scheme (defined with
 /// the scheme, re-exported here beside the other measurements of partitions).
 pub use crate::build::scheme::{seams, Seam, Seams};
@@ -84,7 +84,9 @@ impl VertexMax {
 ///
 /// The loop compares squares, `m_x² = h.w⁴ |G_t⊥|⁴ / (D² |G_t⊥|² z²) / tan²θ` and
 /// `m_z² = h.w⁴ D² / (D² |G_t⊥|² z²) / tan²θ`, with one division per point and one square root per
-/// maximum.
+/// maximum; since G_s, G_t are linear in (h.x, h.y, h.w), `D = h.w (h.w a − h.y b + h.x c)` with
+/// `a = (g₀ × g₁)·L`, `b = (g₀ × g₃)·L`, `c = (g₁ × g₃)·L` and `G_t⊥ = h.w g₁⊥ − h.y g₃⊥` are set
+/// up once per matrix.
 ///
 /// `light_dir` must be a unit vector (the direction light travels) and `tan_half_fov` = tan θ of
 /// the camera. No validation is done beyond what keeps the answer honest: the function returns
@@ -98,27 +100,39 @@ pub fn vertex_max(
     tan_half_fov: f64,
     points: &[DVec3],
 ) -> Option<VertexMax> {
-    // Rows 0, 1, 3 only: the depth row does not enter the error.
+    // Rows 0, 1, 3 only: the depth row does not enter the error. With g₀, g₁, g₃ the first three
+    // entries of rows 0, 1, 3, G_s = h.w g₀ − h.x g₃ and G_t = h.w g₁ − h.y g₃, so
+    //   D = det[G_s, G_t, L] = h.w (h.w a − h.y b + h.x c),
+    //   a = (g₀ × g₁)·L, b = (g₀ × g₃)·L, c = (g₁ × g₃)·L,
+    //   G_t⊥ = h.w g₁⊥ − h.y g₃⊥  (g⊥ = g − (g·L) L),
+    // with a, b, c, g₁⊥, g₃⊥ computed once per matrix.
     let r0 = matrix.row(0);
     let r1 = matrix.row(1);
     let r3 = matrix.row(3);
     let (g0, g1, g3) = (r0.truncate(), r1.truncate(), r3.truncate());
+    let l = light_dir;
+    let a = g0.cross(g1).dot(l);
+    let b = g0.cross(g3).dot(l);
+    let c = g1.cross(g3).dot(l);
+    let g1p = g1 - g1.dot(l) * l;
+    let g3p = g3 - g3.dot(l) * l;
     let (mut mx2, mut mz2) = (0.0f64, 0.0f64);
-    for &p in points {
-        let hx = g0.dot(p) + r0.w;
-        let hy = g1.dot(p) + r1.w;
-        let hw = g3.dot(p) + r3.w;
-        let z = -p.z;
+    for p in points {
+        let (px, py, pz) = (p.x, p.y, p.z);
+        let hx = r0.x * px + r0.y * py + r0.z * pz + r0.w;
+        let hy = r1.x * px + r1.y * py + r1.z * pz + r1.w;
+        let hw = r3.x * px + r3.y * py + r3.z * pz + r3.w;
+        let z = -pz;
         // `w > 0` and `z > 0`, NaN refused.
         if hw.is_nan() || hw <= 0.0 || z.is_nan() || z <= 0.0 {
             return None;
         }
-        let gs = hw * g0 - hx * g3;
-        let gt = hw * g1 - hy * g3;
-        let d = gs.cross(gt).dot(light_dir);
+        let d = hw * (hw * a - hy * b + hx * c);
         let d2 = d * d;
-        let gtl = gt.dot(light_dir);
-        let gtp2 = gt.length_squared() - gtl * gtl;
+        let tx = hw * g1p.x - hy * g3p.x;
+        let ty = hw * g1p.y - hy * g3p.y;
+        let tz = hw * g1p.z - hy * g3p.z;
+        let gtp2 = tx * tx + ty * ty + tz * tz;
         let w2 = hw * hw;
         let w4 = w2 * w2;
         let inv = 1.0 / (d2 * gtp2 * z * z);
@@ -257,9 +271,10 @@ impl Sweep {
 /// set its size with `RAYON_NUM_THREADS` or a `rayon::ThreadPool::install`), serial without.
 ///
 /// # Errors
-/// The first error of [`crate::build::scheme::scheme`] in grid order, with the direction
-/// that caused it ([`Error::Degenerate`] wrapping the builder's message); validation errors of
-/// `partition` or `k` as the scheme reports them.
+/// An error of [`crate::build::scheme::scheme`] at some direction, with the direction that
+/// caused it ([`Error::Degenerate`] wrapping the builder's message): serially the first in grid
+/// order, in parallel the first any row reports. Validation errors of the rule, `partition` or
+/// `k` are found first, at the zenith, and reported as the scheme reports them.
 ///
 /// ```
 /// use shadow_aliasing::build::scheme::Partition;
@@ -308,13 +323,19 @@ pub fn sweep_into(
     // Validate the scheme once, at the zenith, so argument errors are reported as such.
     let mut probe = SchemeResult::default();
     scheme_into(view, DVec3::NEG_Y, rule, partition, k, &mut probe)?;
+    let prep = Prepared::new(view);
     let row = |i: usize, values: &mut [f64]| -> Result<()> {
         let el = grid.elevation(i);
+        let (se, ce) = el.sin_cos();
         let mut buf = SchemeResult::default();
         for (j, v) in values.iter_mut().enumerate() {
             let az = grid.azimuth(j);
-            let l = light_dir_from_angles(el, az);
-            scheme_into(view, l, rule, partition, k, &mut buf).map_err(|e| {
+            // light_dir_from_angles(el, az), with el's sine and cosine taken once per row,
+            // normalised as `scheme` normalises it (so the value is bit for bit `scheme`'s).
+            let (sa, ca) = az.sin_cos();
+            let l = -DVec3::new(ce * sa, se, ce * ca);
+            let l = l / l.length();
+            scheme_into_prepared(&prep, l, rule, partition, k, &mut buf).map_err(|e| {
                 Error::Degenerate(format!(
                     "at elevation={}, azimuth={}: {e}",
                     fmt_num(el),
