@@ -1,6 +1,7 @@
 //! Barroso & Celes 2007 Fig 7: the generalised LiSPSM parameter n′ against the angle γ between
 //! the light and view directions (n = 1, f = 100, φ_y = π/6), with both fall-offs r(γ), the
-//! branches of their Eq 13, LiSPSM's 1/sin γ rule and the crate's minimax n′.
+//! branches of their Eq 13, LiSPSM's 1/sin γ rule and the crate's n′ that minimises M_z over the
+//! whole frustum (`WarpRule::MinimaxMz`, the frustum-wide version of Barroso's objective).
 
 use super::chart::{linspace, Axis, Charts, LineChart, Note, Series, PALETTE};
 use super::Fail;
@@ -41,7 +42,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         if let Some(v) = finite(n_prime_for(&view, light_at(g), WarpRule::LispsmSin)?) {
             lispsm.push((d, v));
         }
-        if let Some(v) = finite(n_prime_for(&view, light_at(g), WarpRule::Minimax)?) {
+        if let Some(v) = finite(n_prime_for(&view, light_at(g), WarpRule::MinimaxMz)?) {
             minimax.push((d, v));
         }
         // Eq 13's branches where they are positive (the plot is logarithmic).
@@ -73,7 +74,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         .push(Series::line("LiSPSM: n′ = (n + √(fn))/sin γ", lispsm, PALETTE[2]).dashed());
     c.series.push(
         Series::line(
-            "minimax n′ of the 3D frustum (this crate)",
+            "n′ minimising M_z over the 3D frustum (this crate)",
             minimax,
             PALETTE[3],
         )
@@ -104,8 +105,27 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![
             "Barroso & Celes 2007, Fig. 7 (n = 1, f = 100, φ_y = π/6), from analytic::tilted::generalized_n_prime, n_prime_1, n_prime_2, gamma_lim;".into(),
-            "LiSPSM's 1/sin γ rule and the minimax n′ from build::n_prime_for. Logarithmic n′ axis: every rule tends to n′ = ∞ (no warp) as γ → 0.".into(),
+            "LiSPSM's 1/sin γ rule and the M_z-minimising n′ (WarpRule::MinimaxMz) from build::n_prime_for. Logarithmic n′ axis: every rule tends to n′ = ∞ (no warp) as γ → 0.".into(),
         ],
         charts: vec![c],
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// With the light overhead (γ = 90°) every rule is LiSPSM's n + √(fn) = 1 + 10 = 11; both
+    /// fall-offs meet n′₁(γ_lim) at γ_lim; at γ = 0 no finite n′ is plotted.
+    #[test]
+    fn fig7_curves_meet_lispsm_overhead() {
+        let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
+        let s = &fig.charts[0].series;
+        for curve in &s[..4] {
+            let (d, v) = *curve.points.last().unwrap();
+            assert_eq!(d, 90.0);
+            assert!((v - 11.0).abs() < 1e-6, "{v}");
+        }
+        assert!(s[0].points[0].0 > 0.0 && s[1].points[0].0 > 0.0);
+    }
 }

@@ -825,10 +825,16 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
                 j += 1;
             }
             // A hair of overlap (0.25°) so that neighbouring polygons leave no unfilled pixels.
-            let (a0, a1) = (
-                grid.az_edges[start] - OVERLAP,
-                grid.az_edges[j + 1] + OVERLAP,
-            );
+            let (a0, a1) = if start == 0 && j + 1 == n_az {
+                // A whole ring: exactly one turn, or the polygon would overlap itself at the
+                // seam and the overlap would be left unfilled.
+                (grid.az_edges[0], grid.az_edges[0] + std::f64::consts::TAU)
+            } else {
+                (
+                    grid.az_edges[start] - OVERLAP,
+                    grid.az_edges[j + 1] + OVERLAP,
+                )
+            };
             let lo = (e0 - OVERLAP).max(0.0);
             let hi = (e1 + OVERLAP).min(std::f64::consts::FRAC_PI_2);
             let mut poly = arc(lo, a0, a1, false);

@@ -157,3 +157,43 @@ fn extent(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
             Some((lo, hi)) => Some((f64::min(lo, v), f64::max(hi, v))),
         })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The plotted sweeps hit the paper's closed forms where the paper has them: LiSPSM overhead
+    /// is Lloyd 2006 Eq 12, (f/n − 1)/(2 tan θ) = 999/(2 tan 30°) = 865.159; the unwarped map
+    /// behind is Eq 20 with k = 1, (f/n)² = 10⁶; face partitions behind are Eq 21 at 45°,
+    /// 4 · 999/2 + 1 = 1999.
+    #[test]
+    fn fig7_panels_match_the_closed_forms_at_the_analysed_directions() {
+        let fig = fig7().map_err(|e| e.named("lloyd2006-fig7")).unwrap();
+        let (e, a) = (ELEVATIONS, AZIMUTHS);
+        let at =
+            |panel: usize, i: usize, j: usize| fig.panels[panel].grid.values[i * a + j].unwrap();
+        let overhead = 999.0 / (2.0 * 30f64.to_radians().tan());
+        for j in [0, 17, 90, 179] {
+            let v = at(1, e - 1, j);
+            assert!((v - overhead).abs() < 1e-9 * overhead, "{v}");
+        }
+        let behind = at(0, 0, 0);
+        assert!((behind - 1e6).abs() < 1e-6, "{behind}");
+        let front = at(0, 0, a / 2);
+        assert!((front - 1e6).abs() < 1e-6, "{front}");
+        let faces = at(2, 0, 0);
+        assert!((faces - 1999.0).abs() < 1e-6, "{faces}");
+        // The cells tile the hemisphere: elevations from the horizon to the zenith, azimuths a
+        // full turn.
+        let g = &fig.panels[0].grid;
+        assert_eq!(g.elev_edges.first(), Some(&0.0));
+        assert_eq!(g.elev_edges.last(), Some(&FRAC_PI_2));
+        let turn = g.az_edges[a] - g.az_edges[0];
+        assert!((turn - TAU).abs() < 1e-12);
+        // One colour scale covers every panel's range.
+        let (lo, hi) = fig.scale.axis.range();
+        for p in &fig.panels {
+            assert!(p.min.log10() >= lo && p.max.log10() <= hi);
+        }
+    }
+}

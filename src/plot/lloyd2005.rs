@@ -96,3 +96,33 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         charts: vec![c],
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Fig 4's ξ = 0 curve (n = 1 + √α) is g₀ = 1/√α on both planes, and ξ = 1 (n = 1) is z/α,
+    /// both by hand from Eq 3.
+    #[test]
+    fn fig4_curves_by_hand() {
+        let fig = fig4().map_err(|e| e.named("lloyd2005-fig4")).unwrap();
+        let s = &fig.charts[0].series;
+        let g0 = 1.0 / FIG4_ALPHA.sqrt();
+        assert!((s[2].points[0].1 - g0).abs() < 1e-12);
+        assert!((s[2].points.last().unwrap().1 - g0).abs() < 1e-12);
+        for &(z, g) in &s[0].points {
+            assert!((g - z / FIG4_ALPHA).abs() < 1e-12);
+        }
+    }
+
+    /// Fig 7 by hand from Eq 7 with ξ = 0: m(k)/m(1) = k(α^{1/k} − 1)α^{1/2 − 1/(2k)}/(α − 1);
+    /// at α = 100, k = 2: 2 · 9 · 10^{1/2}/99 = 0.5750.
+    #[test]
+    fn fig7_ratio_by_hand() {
+        let fig = fig7().map_err(|e| e.named("lloyd2005-fig7")).unwrap();
+        let alpha100 = &fig.charts[0].series[2].points;
+        let want = 2.0 * 9.0 * 10f64.sqrt() / 99.0;
+        assert!((alpha100[1].1 - want).abs() < 1e-12, "{}", alpha100[1].1);
+        assert_eq!(alpha100[0].1, 1.0);
+    }
+}

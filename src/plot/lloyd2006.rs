@@ -211,10 +211,15 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
             }
             let s = Series::line(format!("{name}, light {light_name}"), pts, PALETTE[colour])
                 .with_markers();
-            c.series.push(match light {
+            let mut s = match light {
                 SchemeLight::Overhead => s,
                 SchemeLight::Behind => s.dashed(),
-            });
+            };
+            if light == SchemeLight::Behind && scheme == Scheme::Zp {
+                // ZP+W equals ZP behind and is drawn over it: keep ZP visible around it.
+                s.width = 5;
+            }
+            c.series.push(s);
         }
     }
     Ok(Charts {
@@ -349,5 +354,60 @@ impl Figure for Fig13 {
             &PALETTE[1],
         )))?;
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Fig 13's first point: with one partition per face (5 maps) Eq 20 gives 5 r^{2/5} and
+    /// Eq 21 gives 2(r − 1) + 1; the plotted crossover is where they are equal (by hand:
+    /// r ≈ 5.41, both ≈ 9.82).
+    #[test]
+    fn fig13_crossover_equalises_eq20_and_eq21() {
+        let fig = fig13().map_err(|e| e.named("lloyd2006-fig13")).unwrap();
+        let (maps, r) = fig.crossover[0];
+        assert_eq!(maps, 5.0);
+        let zp = 5.0 * r.powf(0.4);
+        let fp = 2.0 * (r - 1.0) + 1.0;
+        assert!((zp - fp).abs() < 1e-9 * zp, "{zp} vs {fp}");
+        assert!((r - 5.4124).abs() < 1e-4, "{r}");
+        // The crossover depth ratio grows with the number of maps.
+        assert!(fig
+            .crossover
+            .windows(2)
+            .all(|w| w[1].1 > w[0].1 && w[1].0 > w[0].0));
+    }
+
+    /// Fig 5 at LiSPSM's n′ = 1 + √20: the z-error term is equal on the near and far planes,
+    /// 1/√(f/n) = 0.2236 (Lloyd 2005's g₀), and m_x is f/n · n′/(n′ + f − n) at z = n by hand.
+    #[test]
+    fn fig5_lispsm_curve_by_hand() {
+        let fig = fig5().map_err(|e| e.named("lloyd2006-fig5")).unwrap();
+        let z_curve = &fig.charts[1].series[2].points;
+        let g0 = 1.0 / 20f64.sqrt();
+        assert!((z_curve[0].1 - g0).abs() < 1e-12);
+        assert!((z_curve.last().unwrap().1 - g0).abs() < 1e-12);
+        let np = 1.0 + 20f64.sqrt();
+        let x_curve = &fig.charts[0].series[2].points;
+        assert!((x_curve[0].1 - 20.0 * np / (np + 19.0)).abs() < 1e-12);
+    }
+
+    /// Fig 6, by hand from Eq 8 (n = 1, α = f/n = 100, c = (α − 1)/(2 tan θ)): at η = −1
+    /// (n′ = ∞) M_z = m_z(n) = c, at η = 1 (n′ = n) M_z = m_z(f) = c, and at η = 0
+    /// (n′ = 1 + √α) M_z = c (1 + √α)/(√α + α) = c/√α. Normalised: 1, 1 and 1/√α = 0.1.
+    #[test]
+    fn fig6_m_z_is_smallest_at_eta_zero_and_equal_at_both_ends() {
+        let fig = fig6().map_err(|e| e.named("lloyd2006-fig6")).unwrap();
+        let m_z = &fig.charts[0].series[1].points;
+        let (first, last) = (m_z[0].1, m_z.last().unwrap().1);
+        assert!((first - 1.0).abs() < 1e-12 && (last - 1.0).abs() < 1e-12);
+        let min = m_z
+            .iter()
+            .copied()
+            .fold((0.0, f64::INFINITY), |a, p| if p.1 < a.1 { p } else { a });
+        assert!(min.0.abs() < 1e-12, "minimum at η = {}", min.0);
+        assert!((min.1 - 0.1).abs() < 1e-12, "{}", min.1);
     }
 }

@@ -137,3 +137,28 @@ impl Figure for Fig6 {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Light exactly behind or in front: the frustum looks square and the map is its bounding
+    /// rectangle, the far face (side 2 f tan θ); the focus region is seen as its own far face at
+    /// depth n + δ, so its share of the map is ((n + δ)/f)² = (11/100)² = 0.0121 by hand.
+    #[test]
+    fn dueling_frusta_area_by_hand() {
+        let fig = fig6().map_err(|e| e.named("martin-tan-fig6")).unwrap();
+        let want = (11.0f64 / 100.0).powi(2);
+        for s in &fig.profile.series {
+            let first = s.points[0];
+            let last = *s.points.last().unwrap();
+            assert_eq!((first.0, last.0), (0.0, 180.0));
+            assert!((first.1 - want).abs() < 1e-9, "{}", first.1);
+            assert!((last.1 - want).abs() < 1e-9, "{}", last.1);
+        }
+        // The same directions in the hemisphere grid: horizon row, azimuth 0 and π.
+        let behind = fig.grid.values[0].unwrap();
+        let front = fig.grid.values[AZIMUTHS / 2].unwrap();
+        assert!((behind - want).abs() < 1e-9 && (front - want).abs() < 1e-9);
+    }
+}

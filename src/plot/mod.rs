@@ -268,6 +268,58 @@ fn dispatch(name: &'static str, out_dir: &Path, format: Format) -> Result<Vec<Pa
     }
 }
 
+/// One public function per figure: each writes `out_dir/NAME.{png,svg}` as [`render`] does.
+macro_rules! figure_fns {
+    ($($(#[$doc:meta])* $func:ident => $name:literal;)*) => {
+        $(
+            $(#[$doc])*
+            ///
+            /// # Errors
+            /// As [`render`].
+            pub fn $func(out_dir: &Path, format: Format) -> Result<Vec<PathBuf>, PlotError> {
+                render($name, out_dir, format)
+            }
+        )*
+    };
+}
+
+figure_fns! {
+    /// Lloyd et al. 2005 Fig 4 (`lloyd2005-fig4`): the error distribution g(z) over z ∈ [1, α]
+    /// for the n of ξ = 1, ½, 0, −½, −1 (α = 10).
+    lloyd2005_fig4 => "lloyd2005-fig4";
+    /// Lloyd et al. 2005 Fig 7 (`lloyd2005-fig7`): the maximum error with k face subdivisions,
+    /// normalised at k = 1, for α = 10 … 10⁴.
+    lloyd2005_fig7 => "lloyd2005-fig7";
+    /// Lloyd et al. 2006 Fig 5 (`lloyd2006-fig5`): m_x and the z-error distribution along the
+    /// frustum for several n′ (n = 1, f = 20).
+    lloyd2006_fig5 => "lloyd2006-fig5";
+    /// Lloyd et al. 2006 Fig 6 (`lloyd2006-fig6`): M_x, M_z and S̄ against η, normalised
+    /// (n = 1, f = 100).
+    lloyd2006_fig6 => "lloyd2006-fig6";
+    /// Lloyd et al. 2006 Fig 7 (`lloyd2006-fig7`): the measured S̄ over the hemisphere of light
+    /// directions without warping, with LiSPSM warping, with face partitioning and with the
+    /// crate's minimax n′ (log₁₀ colour scale).
+    lloyd2006_fig7 => "lloyd2006-fig7";
+    /// Lloyd et al. 2006 Fig 10 (`lloyd2006-fig10`): S̄ of ZP+W against k with the optimal
+    /// logarithmic S̄.
+    lloyd2006_fig10 => "lloyd2006-fig10";
+    /// Lloyd et al. 2006 Fig 12 (`lloyd2006-fig12`): S̄ against the number of shadow maps for ZP,
+    /// ZP+W, FP+ZP+W, light overhead and behind (f/n = 1000, θ = 30°).
+    lloyd2006_fig12 => "lloyd2006-fig12";
+    /// Lloyd et al. 2006 Fig 13 (`lloyd2006-fig13`): where face partitioning overtakes
+    /// z-partitioning with the light behind.
+    lloyd2006_fig13 => "lloyd2006-fig13";
+    /// Barroso & Celes 2007 Fig 7 (`barroso-fig7`): the generalised LiSPSM n′ against γ with both
+    /// fall-offs (n = 1, f = 100, φ_y = π/6).
+    barroso_fig7 => "barroso-fig7";
+    /// Zhang et al. 2009 Fig 3 (`zhang-fig3`): measured side views of E_p, E_q and E_p×E_q for
+    /// SSM, LiSPSM and TSM at θ = 90°, 60°, 30° (log₅ colour scale).
+    zhang_fig3 => "zhang-fig3";
+    /// Martin & Tan 2004 Fig 6 (`martin-tan-fig6`): the area of the focus region in the
+    /// trapezoidal map against the light direction.
+    martin_tan_fig6 => "martin-tan-fig6";
+}
+
 /// Renders every figure, or only those named in `only` when it is not empty, into `out_dir`, in
 /// the order of [`FIGURES`]. `progress` is called with each figure's name once its files are
 /// written. Returns all files written.

@@ -118,15 +118,9 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         rows.push(row);
         row_labels.push(format!("θ = {theta_deg:.0}°: {}", lambdas.join(", ")));
     }
-    let lo_e = (lo.ln() / 5f64.ln()).floor();
-    let hi_e = (hi.ln() / 5f64.ln()).ceil();
+    // The colour bar spans exactly the measured range (one scale for all 27 panels).
     let scale = ColourScale {
-        axis: Axis::log_base(
-            "aliasing error (log₅ scale)",
-            5f64.powf(lo_e),
-            5f64.powf(hi_e),
-            5.0,
-        ),
+        axis: Axis::log_base("aliasing error (log₅ scale)", lo, hi, 5.0),
         levels: 40,
     };
     let caption = vec![
@@ -220,5 +214,51 @@ impl Figure for Fig3 {
         }
         draw_colour_bar(&bar, &self.scale)?;
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analytic::global::{zhang_ep, zhang_eq};
+    use crate::LightAngle;
+
+    /// The measured side view at θ = 90° and 60° (LiSPSM row) equals Zhang's global
+    /// representation (Eq 13, 14 with the corrected Appendix, `analytic::global`) at every
+    /// cell centre inside the frustum; E_p × E_q is their product.
+    #[test]
+    fn lispsm_cells_equal_zhangs_global_representation() {
+        let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
+        let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
+        for (r, theta_deg) in [(0usize, 90.0f64), (1, 60.0)] {
+            let theta = LightAngle::new(theta_deg.to_radians()).unwrap();
+            // LiSPSM's λ = (n + √(fn))/sin θ.
+            let lambda = NPrime::Finite(11.0 / theta_deg.to_radians().sin());
+            let panels = &fig.rows[r][1];
+            let g = &panels[0].grid;
+            let nx = g.x_edges.len() - 1;
+            let mut checked = 0;
+            for (k, v) in g.values.iter().enumerate() {
+                let Some(ep) = *v else { continue };
+                let (i, j) = (k % nx, k / nx);
+                let z = 0.5 * (g.x_edges[i] + g.x_edges[i + 1]);
+                let y = 0.5 * (g.y_edges[j] + g.y_edges[j + 1]);
+                let want_p = zhang_ep(&view, lambda, theta, y, z).unwrap();
+                let want_q = zhang_eq(&view, lambda, theta, y, z).unwrap();
+                let eq = panels[1].grid.values[k].unwrap();
+                let epq = panels[2].grid.values[k].unwrap();
+                assert!(
+                    (ep - want_p).abs() < 1e-9 * want_p,
+                    "E_p at ({y}, {z}): {ep} vs {want_p}"
+                );
+                assert!(
+                    (eq - want_q).abs() < 1e-9 * want_q,
+                    "E_q at ({y}, {z}): {eq} vs {want_q}"
+                );
+                assert!((epq - ep * eq).abs() < 1e-12 * epq);
+                checked += 1;
+            }
+            assert!(checked > 1000, "{checked} cells");
+        }
     }
 }
