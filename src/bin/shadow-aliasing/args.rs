@@ -257,7 +257,7 @@ pub fn clap_exit(e: &clap::Error) -> ExitCode {
             } else {
                 " (see --help)".to_string()
             };
-            eprintln!("{first}{hint}");
+            crate::commands::to_stderr(&format!("{first}{hint}\n"));
             ExitCode::from(2)
         }
     }

@@ -19,9 +19,14 @@ pub fn run(cli: Cli) -> ExitCode {
     }
 }
 
+/// Writes to standard error, ignoring a closed or failing stream (`eprintln!` would panic).
+pub fn to_stderr(text: &str) {
+    let _ = std::io::stderr().lock().write_all(text.as_bytes());
+}
+
 /// One line on standard error, exit status 1.
 pub fn fail(message: impl std::fmt::Display) -> ExitCode {
-    eprintln!("error: {message}");
+    to_stderr(&format!("error: {message}\n"));
     ExitCode::from(1)
 }
 
@@ -37,11 +42,11 @@ fn eval(a: &EvalArgs) -> ExitCode {
             .file
             .as_deref()
             .map_or("standard input".to_string(), |p| p.display().to_string());
-        eprintln!("error: cannot read {what}: {e}");
+        to_stderr(&format!("error: cannot read {what}: {e}\n"));
         return ExitCode::from(2);
     }
     let Ok(text) = String::from_utf8(bytes) else {
-        eprintln!("error: the input is not UTF-8 text");
+        to_stderr("error: the input is not UTF-8 text\n");
         return ExitCode::from(2);
     };
     let out = shadow_aliasing::eval::eval_json(&text);
@@ -54,7 +59,7 @@ fn eval(a: &EvalArgs) -> ExitCode {
         // A closed pipe: nothing more useful can be said on standard output.
         return ExitCode::from(2);
     }
-    eprint!("{}", out.stderr);
+    to_stderr(&out.stderr);
     ExitCode::from(u8::try_from(out.exit_code).unwrap_or(2))
 }
 
