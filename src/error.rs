@@ -121,7 +121,6 @@ pub(crate) fn in_open(name: &'static str, v: f64, lo: f64, hi: f64) -> Result<f6
 }
 
 /// Checks that a computed value is finite; a non-finite result is reported, never returned.
-#[allow(dead_code)]
 pub(crate) fn finite_result(what: &str, v: f64) -> Result<f64> {
     if v.is_finite() {
         Ok(v)

@@ -52,6 +52,17 @@ pub(crate) fn near_far(near: f64, far: f64) -> Result<(f64, f64)> {
     Ok((n, f))
 }
 
+/// √(f n) without overflow or underflow of the product f n (both positive and finite).
+#[inline]
+pub(crate) fn sqrt_fn(n: f64, f: f64) -> f64 {
+    let p = f * n;
+    if p.is_normal() {
+        p.sqrt()
+    } else {
+        f.sqrt() * n.sqrt()
+    }
+}
+
 /// Validates Lloyd's light-overhead domain n′ ≥ near; returns n′ or `None` for n′ = ∞.
 pub(crate) fn n_prime_at_least(n_prime: NPrime, near: f64) -> Result<Option<f64>> {
     match n_prime {
@@ -85,17 +96,13 @@ pub(crate) fn n_prime_at_least(n_prime: NPrime, near: f64) -> Result<Option<f64>
 #[inline]
 pub fn n_prime_lispsm(near: f64, far: f64) -> Result<f64> {
     let (n, f) = near_far(near, far)?;
-    let fn_ = f * n;
-    let root = if fn_.is_finite() && fn_ > 0.0 {
-        fn_.sqrt()
-    } else {
-        f.sqrt() * n.sqrt()
-    };
-    finite_result("n_prime", n + root)
+    finite_result("n_prime", n + sqrt_fn(n, f))
 }
 
 /// PSM's warp parameter: n′ = n, the warping frustum's centre of projection at the eye
 /// (Stamminger & Drettakis 2002; Lloyd 2006 §4.1). η = +1.
+///
+/// n′ in the unit of `near`.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `near` or `far` unless 0 < near < far, both finite.
@@ -148,6 +155,8 @@ pub fn n_prime_from_eta(near: f64, far: f64, eta: f64) -> Result<NPrime> {
 /// η = (√α + 1 − ν) / (ν √α)        for 1 ≤ ν < 1 + √α
 /// ν = n′/n, α = f/n;   η = −1 for n′ = ∞
 /// ```
+///
+/// η is dimensionless.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far) or `n_prime` (n′ ≥ near).

@@ -51,7 +51,7 @@ fn config() -> impl Strategy<Value = Config> {
             let gamma = g * FRAC_PI_2;
             // The twin evaluates t = A + B/z′ through a 4×4 matrix, which loses about
             // log10(f′/n′) digits of the measured gradient; f′/n′ ≤ 10⁵ keeps it good to 1e-10.
-            let mu = warp_depth_range(&view, LightAngle::new(gamma).unwrap());
+            let mu = warp_depth_range(&view, LightAngle::new(gamma).unwrap()).unwrap();
             Config {
                 view,
                 gamma,
@@ -116,7 +116,7 @@ proptest! {
         let psi = tilted_psi(&c.view, c.n_prime, g, c.z).unwrap();
         let zp = DVec3::new(0.0, 0.0, -c.z).dot(w.warp_axis) - w.z_min + c.n_prime;
         prop_assert!(rel(psi, zp) < 1e-9);
-        prop_assert!(rel(warp_depth_range(&c.view, g), w.depth_range) < 1e-9);
+        prop_assert!(rel(warp_depth_range(&c.view, g).unwrap(), w.depth_range) < 1e-9);
         let xi = tilted_xi(&c.view, c.n_prime, g, c.res).unwrap();
         let m = tilted_mz(&c.view, NPrime::Finite(c.n_prime), g, c.z, c.res).unwrap();
         prop_assert!(rel(xi * psi * psi / c.z, m) < 1e-12);
@@ -163,7 +163,7 @@ prop_assert!(v.is_finite());
     fn overhead_is_lloyd(c in config()) {
         let (n, f) = (c.view.near(), c.view.far());
         let up = LightAngle::new(FRAC_PI_2).unwrap();
-        prop_assert!(rel(n_prime_1(&c.view, up), n + (f * n).sqrt()) < 1e-12);
+        prop_assert!(rel(n_prime_1(&c.view, up).unwrap(), n + (f * n).sqrt()) < 1e-12);
         let np = c.n_prime.max(n);
         let m = tilted_mz(&c.view, NPrime::Finite(np), up, c.z, c.res).unwrap();
         prop_assert!(rel(m, lloyd_eq8(n, f, c.view.tan_half_fov(), np, c.z, c.res)) < 1e-12);
@@ -233,7 +233,7 @@ prop_assert!(v.is_finite());
         prop_assert!((0.0..=1.0).contains(&z) && b <= z + 1e-15);
         prop_assert!(falloff_r(Falloff::Zhang, gamma * 0.5, gl) <= z);
         prop_assert!(falloff_r(Falloff::Barroso, gamma * 0.5, gl) <= b);
-        let at_lim = n_prime_1(&c.view, LightAngle::new(gl).unwrap());
+        let at_lim = n_prime_1(&c.view, LightAngle::new(gl).unwrap()).unwrap();
         prop_assert!(at_lim > 0.0);
         for fo in [Falloff::Zhang, Falloff::Barroso] {
             let below = generalized_n_prime(&c.view, LightAngle::new(gl * (1.0 - 1e-12)).unwrap(), fo);
@@ -242,7 +242,7 @@ prop_assert!(v.is_finite());
             prop_assert!(v.value() >= at_lim * (1.0 - 1e-12));
             let above = gl + (FRAC_PI_2 - gl) * u;
             let g = LightAngle::new(above).unwrap();
-            prop_assert_eq!(generalized_n_prime(&c.view, g, fo), NPrime::Finite(n_prime_1(&c.view, g)));
+            prop_assert_eq!(generalized_n_prime(&c.view, g, fo), NPrime::Finite(n_prime_1(&c.view, g).unwrap()));
         }
     }
 }
@@ -284,9 +284,19 @@ fn figure_7_shape() {
     let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
     let at = |deg: f64| LightAngle::new(f64::to_radians(deg)).unwrap();
     let s = (100.0f64).sqrt() * 0.5;
-    assert!(rel(n_prime_1(&view, LightAngle::new(FRAC_PI_6).unwrap()), s) < 1e-12);
-    assert!(rel(n_prime_2(&view, LightAngle::new(FRAC_PI_6).unwrap()), s) < 1e-12);
-    assert!(n_prime_2(&view, at(10.0)) < 0.0);
+    assert!(
+        rel(
+            n_prime_1(&view, LightAngle::new(FRAC_PI_6).unwrap()).unwrap(),
+            s
+        ) < 1e-12
+    );
+    assert!(
+        rel(
+            n_prime_2(&view, LightAngle::new(FRAC_PI_6).unwrap()).unwrap(),
+            s
+        ) < 1e-12
+    );
+    assert!(n_prime_2(&view, at(10.0)).unwrap() < 0.0);
     assert!(matches!(
         n_prime_equal_error(&view, at(10.0)),
         Err(Error::NoSolution(_))
@@ -322,7 +332,7 @@ fn figure_7_shape() {
 fn eq12_is_along_the_view_axis_not_perpendicular() {
     let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
     let g = LightAngle::new(45f64.to_radians()).unwrap();
-    let np = n_prime_1(&view, g);
+    let np = n_prime_1(&view, g).unwrap();
     assert!((np - 7.370).abs() < 1e-3);
     let w = tilted_warp(&view, g, TiltSide::Behind, NPrime::Finite(np)).unwrap();
     let p = DVec3::new(0.0, 0.0, -1.0);
@@ -348,7 +358,7 @@ fn eq13_does_not_minimise_the_frustum_maximum() {
         let w = tilted_warp(&view, g, TiltSide::Behind, NPrime::Finite(np)).unwrap();
         frustum_max(&view, &w.shadow).unwrap().max_mz
     };
-    let n1 = n_prime_1(&view, g);
+    let n1 = n_prime_1(&view, g).unwrap();
     assert!((n1 - 9.2376).abs() < 1e-4);
     assert!((mz(n1) - 13.37).abs() < 1e-2, "{}", mz(n1));
     assert!((mz(12.11) - 10.43).abs() < 1e-2, "{}", mz(12.11));
@@ -417,7 +427,7 @@ fn eq13_is_not_always_the_minimax() {
         m(1.0).max(m(100.0))
     };
     let g = LightAngle::new(28f64.to_radians()).unwrap();
-    let n2 = n_prime_2(&view, g);
+    let n2 = n_prime_2(&view, g).unwrap();
     assert!((n2 - 0.6649).abs() < 1e-4);
     assert!(
         (max_at(g, NPrime::Finite(n2)) - 73.51).abs() < 1e-2,
@@ -428,7 +438,7 @@ fn eq13_is_not_always_the_minimax() {
     assert!((opt.value() - 4.9349).abs() < 1e-4, "{}", opt.value());
     assert!((max_at(g, opt) - 31.73).abs() < 1e-2, "{}", max_at(g, opt));
     let g = LightAngle::new(20f64.to_radians()).unwrap();
-    assert!(n_prime_2(&view, g) < 0.0);
+    assert!(n_prime_2(&view, g).unwrap() < 0.0);
     let opt = n_prime_axis_minimax(&view, g);
     assert!((opt.value() - 32.68).abs() < 1e-2);
     assert!((max_at(g, opt) - 167.73).abs() < 1e-2, "{}", max_at(g, opt));
@@ -447,8 +457,34 @@ fn eq13_is_not_always_the_minimax() {
             .unwrap()
             .max(tilted_mz(&wide, np, g, 2.0, r).unwrap())
     };
-    let (n1, opt) = (n_prime_1(&wide, g), n_prime_axis_minimax(&wide, g));
+    let (n1, opt) = (n_prime_1(&wide, g).unwrap(), n_prime_axis_minimax(&wide, g));
     assert!((n1 - 1.480).abs() < 1e-3 && (opt.value() - 1.559).abs() < 1e-3);
     assert!((m(NPrime::Finite(n1)) - 0.50535).abs() < 1e-5);
     assert!((m(opt) - 0.50519).abs() < 1e-5);
+}
+
+/// Erratum (notation, Eq 14 and 16): the constraints of Eq 14 and the second branch of Eq 16
+/// call the fall-off warp parameter n′₂, the name Eq 13 gives to the equal-error solution for
+/// γ < φ_y, a different function. At n = 1, f = 100, φ_y = 30°, γ = 20°: Eq 13's n′₂ = −16.63
+/// (no warp equalises the errors), Eq 16's "n′₂" = n′₁(γ_lim)/r(γ) = 5.931 (Eq 17) or 21.60
+/// (Eq 18), with γ_lim = 30.50° and n′₁(γ_lim) = 5.085. The crate keeps `n_prime_2` for Eq 13 and
+/// calls Eq 16 `generalized_n_prime`.
+#[test]
+fn eq16_reuses_the_name_n_prime_2() {
+    let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
+    let g = LightAngle::new(20f64.to_radians()).unwrap();
+    let eq13 = n_prime_2(&view, g).unwrap();
+    assert!((eq13 + 16.631).abs() < 1e-3);
+    let gl = gamma_lim(&view);
+    assert!((gl.to_degrees() - 30.4987).abs() < 1e-4);
+    let at_lim = n_prime_1(&view, LightAngle::new(gl).unwrap()).unwrap();
+    assert!((at_lim - 5.0852).abs() < 1e-4);
+    let zhang = generalized_n_prime(&view, g, Falloff::Zhang).value();
+    let barroso = generalized_n_prime(&view, g, Falloff::Barroso).value();
+    // By hand: n′₁(γ_lim) / sin((γ/γ_lim)·π/2) and n′₁(γ_lim) / [1 + sin((γ/γ_lim − 1)·π/2)]².
+    let u = 20f64.to_radians() / gl;
+    assert!(rel(zhang, at_lim / (u * FRAC_PI_2).sin()) < 1e-12 && (zhang - 5.9314).abs() < 1e-4);
+    let r18 = (1.0 + ((u - 1.0) * FRAC_PI_2).sin()).powi(2);
+    assert!(rel(barroso, at_lim / r18) < 1e-12 && (barroso - 21.597).abs() < 1e-3);
+    assert!(eq13 < 0.0 && zhang > 0.0 && barroso > 0.0);
 }

@@ -184,6 +184,36 @@ proptest! {
         prop_assert_eq!(whole[..k].iter().map(|&w| u64::from(w)).sum::<u64>(), u64::from(total as u32));
     }
 
+    /// Eq 6 with a different ξ_i in each subdivision (§4 assumes one ξ; §4.1 uses one): the
+    /// allocation still equalises the measured maximum errors, and the common maximum is
+    /// Σ_i m_max(α_i, ξ_i) (Eq 5 per subdivision, each with all the texels) — Eq 7
+    /// is the special case α_i = α^{1/k}, ξ_i = ξ. "More texels to larger subdivisions" then no
+    /// longer follows: α = (100, 50) with ξ = (0, 1) gives the smaller one 49/(9.9 + 49) = 83 %.
+    #[test]
+    fn eq6_equalises_measured_errors_with_a_xi_per_subdivision(
+        parts in proptest::collection::vec((1.5f64..500.0, xi()), 1..6), th in half_fov(),
+        total in 16.0f64..4096.0,
+    ) {
+        let k = parts.len();
+        let mut errs = [0.0; 6];
+        for (e, &(a, x)) in errs.iter_mut().zip(&parts) {
+            *e = max_error(a, th, x, 1.0, 1.0).unwrap();
+        }
+        let mut out = [0.0; 6];
+        allocate_texels(&errs[..k], total, &mut out[..k]).unwrap();
+        let all: f64 = errs[..k].iter().sum::<f64>() / total;
+        for (i, &(a, x)) in parts.iter().enumerate() {
+            let v = ViewFrustum::new(1.0, a, th).unwrap();
+            let map = overhead_map(&v, n_from_xi(a, x).unwrap()).unwrap();
+            let r = Resolutions::new(1.0, 1.0, out[i]).unwrap();
+            let mut m = 0.0f64;
+            for c in v.corners() {
+                m = m.max(point_error(&v, &map, c, r).unwrap().mz);
+            }
+            prop_assert!(close(m, all, REL), "subdivision {i}: {m} vs {all}");
+        }
+    }
+
     /// Eq 7 decreases with k for every ξ and tends to (r_p/r_s) ln α / (2 tan θ).
     #[test]
     fn eq7_decreases_in_k(a in 1.5f64..1e4, th in half_fov(), x in xi()) {
@@ -340,4 +370,57 @@ proptest! {
             prop_assert!(out.iter().all(|v| v.is_finite()));
         }
     }
+}
+
+/// Checked, right (docs/errata.md, Lloyd 2005 "Eq 4, 5 at ξ = 0"): both branches of Eq 4 give
+/// n_opt = 1 + √α at ξ = 0 and meet continuously; both branches of §3.2's ξ(n) vanish at n_opt;
+/// Eq 5 is continuous there with m_max = (r_p/r_s)(α − 1)/(2 tan θ)/√α, the measured maximum of
+/// the LiSPSM warp on both planes. At α = 100, θ = 45°: n(0) = 11, n(±1e-9) = 11 ∓ 9.9e-7 … and
+/// m_max(0) = 4.95.
+#[test]
+fn eq4_eq5_are_continuous_at_xi_zero() {
+    let a = 100.0;
+    let q = std::f64::consts::FRAC_PI_4;
+    assert_eq!(n_from_xi(a, 0.0).unwrap(), NPrime::Finite(11.0));
+    let left = n_from_xi(a, -1e-9).unwrap().value();
+    let right = n_from_xi(a, 1e-9).unwrap().value();
+    // dn/dξ = −(√α + 1 + α − 1) = −110 on the left, −√α(√α + 1) = −110 on the right.
+    assert!((left - (11.0 + 110e-9)).abs() < 1e-12, "{left}");
+    assert!((right - (11.0 - 110e-9)).abs() < 1e-12, "{right}");
+    assert_eq!(xi_from_n(a, NPrime::Finite(11.0)).unwrap(), 0.0);
+    let (m0, ml, mr) = (
+        max_error(a, q, 0.0, 1.0, 1.0).unwrap(),
+        max_error(a, q, -1e-9, 1.0, 1.0).unwrap(),
+        max_error(a, q, 1e-9, 1.0, 1.0).unwrap(),
+    );
+    assert!((m0 - 4.95).abs() < 1e-12 && (ml - m0).abs() < 1e-6 && (mr - m0).abs() < 1e-6);
+    // The measured warp at n = 11 has that maximum on both planes.
+    let v = ViewFrustum::new(1.0, a, q).unwrap();
+    let m = overhead_map(&v, NPrime::Finite(11.0)).unwrap();
+    for z in [1.0, a] {
+        let e = point_error(
+            &v,
+            &m,
+            glam::DVec3::new(0.0, 0.0, -z),
+            Resolutions::default(),
+        )
+        .unwrap();
+        assert!((e.mz - 4.95).abs() < 1e-9, "{}", e.mz);
+    }
+}
+
+/// Eq 6 with ξ per subdivision, by hand: α = (100, 50), ξ = (0, 1), θ = 45°: Eq 5 gives
+/// 99/2 · 0.1 = 4.95 and 49/2 · 1 = 24.5, so the smaller subdivision gets 24.5/29.45 = 83.2 % of
+/// the texels, and both end at the error 29.45 (in units of one whole map).
+#[test]
+fn eq6_with_different_xi_by_hand() {
+    let q = std::f64::consts::FRAC_PI_4;
+    let e = [
+        max_error(100.0, q, 0.0, 1.0, 1.0).unwrap(),
+        max_error(50.0, q, 1.0, 1.0, 1.0).unwrap(),
+    ];
+    assert!((e[0] - 4.95).abs() < 1e-12 && (e[1] - 24.5).abs() < 1e-12);
+    let mut out = [0.0; 2];
+    allocate_texels(&e, 1.0, &mut out).unwrap();
+    assert!((out[1] - 24.5 / 29.45).abs() < 1e-12 && out[1] > 0.83);
 }

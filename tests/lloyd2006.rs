@@ -371,3 +371,109 @@ proptest! {
         }
     }
 }
+
+/// Eq 13, 14 by hand (checked, right; docs/errata.md): n = 1, f = 100, θ = 45°, n′ = 11,
+/// res_i = 1024, S₀ = 2048². M_x = 10, M_z = 4.95 (unit resolutions), so res*_s/res*_t = 10/4.95
+/// whatever res_i, res_s = 2048 √(10/4.95) = 2910.9, res_t = 1440.9, and both measured maxima
+/// are res_i √(S̄/S₀) = 1024 √49.5 / 2048 = 3.5178: the error is split equally, as the text says.
+#[test]
+fn eq13_eq14_by_hand() {
+    let v = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_4).unwrap();
+    let l = NPrime::Finite(11.0);
+    let s0 = 2048.0 * 2048.0;
+    let b = budget_resolution(&v, l, s0).unwrap();
+    assert!((b.res_s - 2910.9004).abs() < 1e-3 && (b.res_t - 1440.8957).abs() < 1e-3);
+    let r = Resolutions::new(1024.0, b.res_s, b.res_t).unwrap();
+    let m = frustum_max(&v, &overhead_map(&v, l).unwrap()).unwrap();
+    // The twin measures with unit resolutions: scale by res_i / res_s and res_i / res_t.
+    let (mx, mz) = (m.max_mx * r.image() / r.s(), m.max_mz * r.image() / r.t());
+    assert!(
+        (mx - 3.5178).abs() < 1e-4 && (mz - 3.5178).abs() < 1e-4,
+        "{mx} {mz}"
+    );
+    assert!((budget_error(&v, l, s0, 1024.0).unwrap() - 3.5178).abs() < 1e-4);
+}
+
+/// Erratum (§4.4, the reason the vertices suffice): "It is sufficient to check just the vertices
+/// because the beam widths increase monotonically over the convex view frustum". The beam widths
+/// w_i, w_lx, w_lz do increase, but the errors m = w_l/w_i are ratios of increasing functions and
+/// are not monotone: with LiSPSM's n′ = 11 at n = 1, f = 100, θ = 45° the measured m_z on the
+/// axis is 4.95 at z = 1, 1.636 at z = 10 and 4.95 at z = 100. The conclusion holds for another
+/// reason: m_z ∝ (a·p + c)²/(v·p) is a square over a positive linear function (convex) and m_x a
+/// ratio of linear functions (quasi-linear), so their maxima over a convex polytope lie at its
+/// vertices. Checked with a dense grid for tilted lights too (any light angle, both sides,
+/// n′ from Barroso's rule, from the axis minimax and unwarped).
+#[test]
+fn errata_s4_4_vertices_suffice_by_convexity_not_monotonicity() {
+    use shadow_aliasing::analytic::tilted::{generalized_n_prime, n_prime_axis_minimax, Falloff};
+    use shadow_aliasing::measure::tilted_twin::{tilted_warp, TiltSide};
+    use shadow_aliasing::LightAngle;
+    let v = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_4).unwrap();
+    let map = overhead_map(&v, NPrime::Finite(11.0)).unwrap();
+    let at = |z: f64| {
+        point_error(
+            &v,
+            &map,
+            glam::DVec3::new(0.0, 0.0, -z),
+            Resolutions::default(),
+        )
+        .unwrap()
+        .mz
+    };
+    let (a, b, c) = (at(1.0), at(10.0), at(100.0));
+    assert!((a - 4.95).abs() < 1e-9 && (c - 4.95).abs() < 1e-9);
+    assert!((b - 49.5 * 400.0 / 12100.0).abs() < 1e-9 && (b - 1.636).abs() < 1e-3);
+    assert!(b < a && b < c); // not monotone in z
+    let view = ViewFrustum::new(0.7, 40.0, 0.6).unwrap();
+    for deg in [3.0, 20.0, 34.0, 50.0, 75.0, 90.0] {
+        let g = LightAngle::new(f64::to_radians(deg)).unwrap();
+        for side in [TiltSide::InFront, TiltSide::Behind] {
+            for np in [
+                generalized_n_prime(&view, g, Falloff::Barroso),
+                n_prime_axis_minimax(&view, g),
+                NPrime::Unwarped,
+            ] {
+                let w = tilted_warp(&view, g, side, np).unwrap();
+                let vert = frustum_max(&view, &w.shadow).unwrap();
+                let grid = frustum_max_sampled(&view, &w.shadow, 9).unwrap();
+                assert!(
+                    grid.max_mx <= vert.max_mx * (1.0 + 1e-9),
+                    "{deg}° {side:?} {np:?}"
+                );
+                assert!(
+                    grid.max_mz <= vert.max_mz * (1.0 + 1e-9),
+                    "{deg}° {side:?} {np:?}"
+                );
+            }
+        }
+    }
+}
+
+/// Erratum (§4.4, Fig 7's description): "Figure 7 shows S̄ over the entire hemisphere of light
+/// directions above a viewer with and without warping (n′ = ∞ and n′ = n′_LSPSM, respectively)"
+/// pairs the two the wrong way round: n′ = ∞ is the map *without* warping. Overhead at n = 1,
+/// f = 100, θ = 30°: n′ = ∞ gives S̄ = 99·100/(2 tan 30°) = 8573.65, n′_LSPSM = 11 gives 85.737
+/// (measured on the twin, Eq 12), and the text's own next sentence ("without warping, the error
+/// is high over all light directions") needs the larger one to be the unwarped map.
+#[test]
+fn errata_s4_4_fig7_with_and_without_warping_swapped() {
+    let v = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6).unwrap();
+    let unwarped = frustum_max(&v, &overhead_map(&v, NPrime::Unwarped).unwrap())
+        .unwrap()
+        .storage_factor;
+    let lispsm = frustum_max(&v, &overhead_map(&v, NPrime::Finite(11.0)).unwrap())
+        .unwrap()
+        .storage_factor;
+    assert!((unwarped - 8573.65).abs() < 0.01, "{unwarped}");
+    assert!((lispsm - 85.7365).abs() < 1e-3, "{lispsm}");
+    assert!(close(
+        unwarped,
+        storage_factor(&v, NPrime::Unwarped).unwrap(),
+        REL
+    ));
+    assert!(close(
+        lispsm,
+        storage_factor(&v, NPrime::Finite(11.0)).unwrap(),
+        REL
+    ));
+}

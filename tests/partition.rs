@@ -318,6 +318,48 @@ fn adaptive_parallel_light() {
     assert_eq!(s.range(0), (1.0, 125.0));
 }
 
+/// Barroso Eq 19 between the two limits (docs/errata.md, "Eq 19, what is interpolated"): the text
+/// calls it "linearly interpolating the distance of each subdivision between the optimal and limit
+/// cases", but Eq 19 interpolates each plane from the already interpolated next one, so the planes
+/// are not the blend of the optimal and limit partitions. n = 1, f = 1000, k = 3, α = 2,
+/// γ = π/4 (λ = ½), by hand: n_3 = ½·1000^{2/3} + ½·1000/2 = 300 (the blend of 100 and 500 too),
+/// n_2 = ½·300^{1/2} + ½·300/2 = 83.660, where the blend of the optimal 10 and the limit 250 is 130.
+#[test]
+fn adaptive_interpolates_plane_by_plane() {
+    let s = z_splits(
+        1.0,
+        1000.0,
+        3,
+        SplitScheme::Adaptive {
+            light_angle: FRAC_PI_2 / 2.0,
+            ratio: 2.0,
+        },
+    )
+    .unwrap();
+    let p = s.planes();
+    assert!((p[2] - 300.0).abs() < 1e-9, "{}", p[2]);
+    let by_hand = 0.5 * 300f64.sqrt() + 0.5 * 150.0;
+    assert!(
+        (p[1] - by_hand).abs() < 1e-9 && (p[1] - 83.660).abs() < 1e-3,
+        "{}",
+        p[1]
+    );
+    let optimal = z_splits(1.0, 1000.0, 3, SplitScheme::SelfSimilar).unwrap();
+    let limit = z_splits(
+        1.0,
+        1000.0,
+        3,
+        SplitScheme::Adaptive {
+            light_angle: 0.0,
+            ratio: 2.0,
+        },
+    )
+    .unwrap();
+    let blend = 0.5 * optimal.planes()[1] + 0.5 * limit.planes()[1];
+    assert!((blend - 130.0).abs() < 1e-9);
+    assert!(p[1] < 0.65 * blend);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Errata (docs/errata.md, "Lloyd et al. 2006").
 // ---------------------------------------------------------------------------------------------

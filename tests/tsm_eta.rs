@@ -5,11 +5,12 @@
 //! (x = η) to +1 and the base line (x = η + λ) to −1, solved as a 2×2 linear system; η is then
 //! found by bisection so that the focus point (x = η + δ′) lands on y = ξ.
 
+use glam::DVec3;
 use proptest::prelude::*;
 use shadow_aliasing::analytic::tsm::{
     tsm_eta, tsm_focus_line, tsm_projection, EIGHTY_PERCENT_LINE,
 };
-use shadow_aliasing::{Error, NPrime};
+use shadow_aliasing::{Error, NPrime, ViewFrustum};
 
 fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / a.abs().max(b.abs()).max(1e-300)
@@ -74,7 +75,7 @@ proptest! {
                     prop_assert!(rel(eta, e2) < 1e-9, "{eta} vs {e2}");
                 }
                 let (a, b) = solve_map(lambda, eta);
-                let m = tsm_projection(lambda, eta);
+                let m = tsm_projection(lambda, eta).unwrap();
                 prop_assert!(rel(m[0][0], a) < 1e-9 && rel(m[0][1], b) < 1e-9);
                 prop_assert_eq!(m[1], [1.0, 0.0]);
                 let back = tsm_focus_line(lambda, NPrime::Finite(eta), delta).unwrap();
@@ -127,7 +128,7 @@ fn eighty_percent_line_by_hand() {
     assert!((a + b / 11.2 + 1.0).abs() < 1e-12);
     // The printed matrix applied to (δ′ + η, 1) = (4.2, 1) gives the homogeneous (ξ̃, ω) =
     // (−2.52, 4.2), not (ξ, ω): the first component must be divided by ω = 4.2 to give −0.6.
-    let m = tsm_projection(10.0, 1.2);
+    let m = tsm_projection(10.0, 1.2).unwrap();
     let (xt, w) = (m[0][0] * 4.2 + m[0][1], m[1][0] * 4.2 + m[1][1]);
     assert!((xt + 2.52).abs() < 1e-12 && (w - 4.2).abs() < 1e-12);
     assert!((xt / w - EIGHTY_PERCENT_LINE).abs() < 1e-12);
@@ -167,4 +168,52 @@ fn domain_errors_name_the_argument() {
     assert_eq!(name(tsm_eta(1.0, 0.5, f64::INFINITY)), "xi");
     assert!(tsm_focus_line(1.0, NPrime::Finite(-2.0), 0.5).is_err());
     assert_eq!(tsm_focus_line(1.0, NPrime::Unwarped, 0.25), Ok(0.5));
+}
+
+/// Where §6.1's top line crosses the centre line, as an eye-space x coordinate, for a directional
+/// light travelling along d = (sin ε, 0, −cos ε) (ε from the view direction, in the XZ plane):
+/// Steps 1–4 by hand with the light's view an orthographic projection along d (a directional
+/// light), E = the frustum's corners projected, l through the projected near and far centres,
+/// the top line ⟂ l touching E on the near centre's side.
+fn top_line_crossing_x(view: &ViewFrustum, eps: f64) -> f64 {
+    let d = DVec3::new(eps.sin(), 0.0, -eps.cos());
+    let proj = |p: DVec3| p - p.dot(d) * d;
+    let cn = proj(DVec3::new(0.0, 0.0, -view.near()));
+    let cf = proj(DVec3::new(0.0, 0.0, -view.far()));
+    let l = (cf - cn).normalize();
+    let m = view
+        .corners()
+        .iter()
+        .map(|&p| proj(p).dot(l))
+        .fold(f64::INFINITY, f64::min);
+    (cn + (m - cn.dot(l)) * l).x
+}
+
+/// Erratum (§6.1, continuity claim): "l_t transits smoothly from frame to frame" (and l_b) holds
+/// only away from the exception the paper sets aside (near and far centres coincident in the
+/// light's view). Near it, the centre line l reverses direction when the light crosses the view
+/// axis, and the top line jumps from one side of E to the other: at n = 1, f = 100, φ = 30°, a
+/// light 0.001 rad to one side of the view axis puts the top line at x = +57.635, 0.001 rad to the
+/// other side at x = −57.635 (a jump of 115.27, nearly the far plane's width 2 f tan φ = 115.47,
+/// for a 0.115° turn), and the separate
+/// "smallest box bounding the far plane" used at the exception is a third, different answer.
+/// Away from it the top line does move continuously (0.02° turn at ε = 0.5: it moves by < 0.1).
+#[test]
+fn section_6_1_top_line_jumps_near_the_exception() {
+    let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6).unwrap();
+    let (a, b) = (
+        top_line_crossing_x(&view, 1e-3),
+        top_line_crossing_x(&view, -1e-3),
+    );
+    let span = 2.0 * 100.0 * std::f64::consts::FRAC_PI_6.tan();
+    assert!(
+        (a - 57.635).abs() < 1e-3 && (b + 57.635).abs() < 1e-3,
+        "{a} {b}"
+    );
+    assert!(a - b > 0.998 * span);
+    let (c, e) = (
+        top_line_crossing_x(&view, 0.5),
+        top_line_crossing_x(&view, 0.5 + 3.5e-4),
+    );
+    assert!((c - e).abs() < 0.1, "{c} {e}");
 }

@@ -53,7 +53,7 @@ struct Config {
 /// of the measured gradient (A ≈ −B/z′ when n′ ≪ μ); keeping f′/n′ ≤ 10⁵ keeps the measurement
 /// good to 1e-10 so the comparisons at 1e-9 test the closed forms, not the float evaluation.
 fn well_conditioned(view: &ViewFrustum, theta: f64, lambda: f64) -> f64 {
-    lambda.max(1e-5 * zhang_mu(view, LightAngle::new(theta).unwrap()))
+    lambda.max(1e-5 * zhang_mu(view, LightAngle::new(theta).unwrap()).unwrap())
 }
 
 fn config() -> impl Strategy<Value = Config> {
@@ -100,7 +100,7 @@ proptest! {
     fn frame_quantities_match_the_twin(c in config()) {
         let th = LightAngle::new(c.theta).unwrap();
         let w = twin(&c.view, c.theta, NPrime::Finite(c.lambda));
-        prop_assert!(rel(zhang_mu(&c.view, th), w.depth_range) < 1e-9);
+        prop_assert!(rel(zhang_mu(&c.view, th).unwrap(), w.depth_range) < 1e-9);
         let p = DVec3::new(c.x, c.y, -c.z);
         let zw_twin = p.dot(w.warp_axis) - w.z_min + c.lambda;
         prop_assert!(rel(zhang_z_w(&c.view, c.lambda, th, c.y, c.z).unwrap(), zw_twin) < 1e-9);
@@ -625,4 +625,52 @@ fn domain_errors_name_the_argument() {
         "z"
     );
     assert!(zhang_ep_local(&view, NPrime::Unwarped, 3.0).unwrap() > 0.0);
+}
+
+/// Erratum (§2.1, Eq 8, 9): Eq 8 is printed with "≈" ("when approximating dx/dt with
+/// (∂t/∂x)⁻¹") and Eq 9 with "=", the other way round. On the view axis, where the local
+/// representation is stated, ∂t/∂z = 0 (t ∝ x/z_w), so dx/dt = (∂t/∂x)⁻¹ exactly and Eq 8 is
+/// Zhang's full E_q (Eq 1) for every surface slope; Eq 9 is the full E_p only for a surface with
+/// |dy/dz| = |k_y| = 1: in general E_p = |k_y| · Eq 9 (his Eq 7 keeps the |dy/dz| factor, Eq 9
+/// drops it). The approximation of Eq 8 enters off the axis. Measured with the twin's exact
+/// total differentials at n = 1, f = 100, φ = 30°, θ = 90°, λ = 11, z = 10: Eq 8 = 3.636 equals
+/// the full E_q for every (k_x, k_y) on the axis; Eq 9 = 5.669 while the full E_p is 11.337 for
+/// k_y = 2; at x = 3 with k_x = 1 the full E_q is 2.995.
+#[test]
+fn eq8_is_exact_on_the_axis_and_eq9_assumes_unit_slope() {
+    let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
+    let l = NPrime::Finite(11.0);
+    let w = twin(&view, FRAC_PI_2, l);
+    let eq8 = zhang_eq_local(&view, l, 10.0).unwrap();
+    let eq9 = zhang_ep_local(&view, l, 10.0).unwrap();
+    assert!((eq8 - 40.0 / 11.0).abs() < 1e-12); // 2 f (z − n + λ)/((f − n + λ) z) = 2·100·20/(110·10)
+    assert!((eq9 - 5.669).abs() < 1e-3);
+    let axis = DVec3::new(0.0, 0.0, -10.0);
+    for (kx, ky) in [
+        (0.3, 2.0),
+        (-1.7, 0.5),
+        (5.0, 1.0),
+        (0.01, -3.0),
+        (1.0, -1.0),
+    ] {
+        let full = aliasing_functions(&view, &w.shadow, axis, DVec3::new(kx, ky, -1.0)).unwrap();
+        assert!(rel(full.e_q, eq8) < 1e-12, "{} vs {eq8}", full.e_q);
+        assert!(
+            rel(full.e_p, f64::abs(ky) * eq9) < 1e-12,
+            "{} vs {}",
+            full.e_p,
+            ky * eq9
+        );
+    }
+    let full = aliasing_functions(&view, &w.shadow, axis, DVec3::new(0.3, 2.0, -1.0)).unwrap();
+    assert!((full.e_p - 11.337).abs() < 1e-3);
+    // Off the axis the slope matters for E_q: E_q^proj = (k_x − x/z)/(k_x − x/z_w) = 0.7/0.85.
+    let off = aliasing_functions(
+        &view,
+        &w.shadow,
+        DVec3::new(3.0, 0.0, -10.0),
+        DVec3::new(1.0, 0.0, -1.0),
+    )
+    .unwrap();
+    assert!(rel(off.e_q, eq8 * 0.7 / 0.85) < 1e-12 && (off.e_q - 2.995).abs() < 1e-3);
 }

@@ -7,7 +7,7 @@
 //!
 //! Zhang's n, f, φ are the crate's `near`, `far`, `half_fov` (square image: both fields of view
 //! 2φ); his θ ∈ [0, π/2] (the angle between light and view) is the crate's [`LightAngle`]
-//! (Barroso's γ); his λ (near plane of the warping frustum W) is Lloyd's n′, passed as an
+//! (argument `light_angle`; Barroso's γ); his λ (near plane of the warping frustum W) is Lloyd's n′, passed as an
 //! [`NPrime`] (any λ > 0, or unwarped, λ = ∞). A point is `(x, y, z)` with z its depth in front
 //! of the eye: Zhang's left-handed DirectX eye space (z forward) is the crate's right-handed one
 //! with `z = −p.z`; x and y are the same. His light is above and in front of the viewer
@@ -55,27 +55,29 @@ use crate::frustum::{LightAngle, NPrime, ViewFrustum};
 ///
 /// The printed μ agrees with the fitted warping frustum (checked against the twin). This is
 /// [`crate::analytic::tilted::warp_depth_range`]. Unit: eye-space distance.
+///
+/// # Errors
+/// [`Error::Degenerate`] when μ overflows an `f64` (f tan φ beyond about 1e308).
 #[inline]
-#[must_use]
-pub fn zhang_mu(view: &ViewFrustum, theta: LightAngle) -> f64 {
-    warp_depth_range(view, theta)
+pub fn zhang_mu(view: &ViewFrustum, light_angle: LightAngle) -> Result<f64> {
+    warp_depth_range(view, light_angle)
 }
 
 /// The offset `D = (f − n)(sin θ − tan φ cos θ)` of the far-top corner's warp depth from the
 /// near-top corner's: the near-top corner is nearest W's centre of projection when D ≥ 0
 /// (θ ≥ φ), the far-top corner otherwise.
 #[inline]
-fn far_top_offset(view: &ViewFrustum, theta: LightAngle) -> f64 {
-    let (s, c) = theta.radians().sin_cos();
+fn far_top_offset(view: &ViewFrustum, light_angle: LightAngle) -> f64 {
+    let (s, c) = light_angle.radians().sin_cos();
     (view.far() - view.near()) * (s - view.tan_half_fov() * c)
 }
 
 /// z_w − λ, the point's warp depth from the frustum's nearest extent.
 #[inline]
-fn z_w_offset(view: &ViewFrustum, theta: LightAngle, y: f64, z: f64) -> f64 {
-    let (s, c) = theta.radians().sin_cos();
+fn z_w_offset(view: &ViewFrustum, light_angle: LightAngle, y: f64, z: f64) -> f64 {
+    let (s, c) = light_angle.radians().sin_cos();
     let t = view.tan_half_fov();
-    if theta.radians() >= view.half_fov() {
+    if light_angle.radians() >= view.half_fov() {
         (z - view.near()) * s + (view.near() * t - y) * c
     } else {
         (z - view.far()) * s + (view.far() * t - y) * c
@@ -116,13 +118,13 @@ fn point_in_view(view: &ViewFrustum, y: f64, z: f64) -> Result<(f64, f64)> {
 pub fn zhang_z_w(
     view: &ViewFrustum,
     lambda: f64,
-    theta: LightAngle,
+    light_angle: LightAngle,
     y: f64,
     z: f64,
 ) -> Result<f64> {
     let lambda = positive("lambda", lambda)?;
     let (y, z) = point_in_view(view, y, z)?;
-    finite_result("z_w", lambda + z_w_offset(view, theta, y, z))
+    finite_result("z_w", lambda + z_w_offset(view, light_angle, y, z))
 }
 
 /// tan φ_w, the half-angle in x of the warping frustum W fitted to contain the view frustum
@@ -143,15 +145,15 @@ pub fn zhang_z_w(
 /// # Errors
 /// [`Error::InvalidArgument`] naming `lambda` (not finite and positive).
 #[inline]
-pub fn zhang_tan_phi_w(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> Result<f64> {
+pub fn zhang_tan_phi_w(view: &ViewFrustum, lambda: f64, light_angle: LightAngle) -> Result<f64> {
     let lambda = positive("lambda", lambda)?;
-    finite_result("tan_phi_w", tan_phi_w_unchecked(view, lambda, theta))
+    finite_result("tan_phi_w", tan_phi_w_unchecked(view, lambda, light_angle))
 }
 
 #[inline]
-fn tan_phi_w_unchecked(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> f64 {
+fn tan_phi_w_unchecked(view: &ViewFrustum, lambda: f64, light_angle: LightAngle) -> f64 {
     let t = view.tan_half_fov();
-    let d = far_top_offset(view, theta);
+    let d = far_top_offset(view, light_angle);
     let near = view.near() * t / (lambda + (-d).max(0.0));
     let far = view.far() * t / (lambda + d.max(0.0));
     near.max(far)
@@ -169,11 +171,11 @@ fn tan_phi_w_unchecked(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> f6
 /// # Errors
 /// [`Error::InvalidArgument`] naming `lambda` (not finite and positive).
 #[inline]
-pub fn zhang_f_q(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> Result<f64> {
+pub fn zhang_f_q(view: &ViewFrustum, lambda: f64, light_angle: LightAngle) -> Result<f64> {
     let lambda = positive("lambda", lambda)?;
     finite_result(
         "F_q",
-        2.0 * tan_phi_w_unchecked(view, lambda, theta) * theta.radians().sin()
+        2.0 * tan_phi_w_unchecked(view, lambda, light_angle) * light_angle.radians().sin()
             / view.tan_half_fov(),
     )
 }
@@ -190,10 +192,10 @@ pub fn zhang_f_q(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> Result<f
 /// # Errors
 /// [`Error::InvalidArgument`] naming `lambda` (not finite and positive).
 #[inline]
-pub fn zhang_f_p(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> Result<f64> {
+pub fn zhang_f_p(view: &ViewFrustum, lambda: f64, light_angle: LightAngle) -> Result<f64> {
     let lambda = positive("lambda", lambda)?;
-    let mu = zhang_mu(view, theta);
-    let s = theta.radians().sin();
+    let mu = zhang_mu(view, light_angle)?;
+    let s = light_angle.radians().sin();
     finite_result(
         "F_p",
         mu * s * s / (view.tan_half_fov() * lambda * (lambda + mu)),
@@ -212,10 +214,10 @@ pub fn zhang_f_p(view: &ViewFrustum, lambda: f64, theta: LightAngle) -> Result<f
 /// `light_angle` (θ = 0, where G is infinite and the global representation F·(z + G)/z is
 /// 0 · ∞; [`zhang_eq`] and [`zhang_ep`] are finite there).
 #[inline]
-pub fn zhang_g(view: &ViewFrustum, lambda: f64, theta: LightAngle, y: f64) -> Result<f64> {
+pub fn zhang_g(view: &ViewFrustum, lambda: f64, light_angle: LightAngle, y: f64) -> Result<f64> {
     let lambda = positive("lambda", lambda)?;
     let y = finite("y", y)?;
-    let (s, c) = theta.radians().sin_cos();
+    let (s, c) = light_angle.radians().sin_cos();
     if s <= 0.0 {
         return Err(Error::invalid(
             "light_angle",
@@ -223,7 +225,7 @@ pub fn zhang_g(view: &ViewFrustum, lambda: f64, theta: LightAngle, y: f64) -> Re
         ));
     }
     let t = view.tan_half_fov();
-    let r = if theta.radians() >= view.half_fov() {
+    let r = if light_angle.radians() >= view.half_fov() {
         view.near()
     } else {
         view.far()
@@ -248,7 +250,7 @@ pub fn zhang_g(view: &ViewFrustum, lambda: f64, theta: LightAngle, y: f64) -> Re
 pub fn zhang_eq(
     view: &ViewFrustum,
     lambda: NPrime,
-    theta: LightAngle,
+    light_angle: LightAngle,
     y: f64,
     z: f64,
 ) -> Result<f64> {
@@ -259,8 +261,8 @@ pub fn zhang_eq(
         "E_q",
         match lambda {
             Some(l) => {
-                let zw = l + z_w_offset(view, theta, y, z);
-                2.0 * tan_phi_w_unchecked(view, l, theta) * zw / (t * z)
+                let zw = l + z_w_offset(view, light_angle, y, z);
+                2.0 * tan_phi_w_unchecked(view, l, light_angle) * zw / (t * z)
             }
             None => 2.0 * view.far() / z,
         },
@@ -285,19 +287,19 @@ pub fn zhang_eq(
 pub fn zhang_ep(
     view: &ViewFrustum,
     lambda: NPrime,
-    theta: LightAngle,
+    light_angle: LightAngle,
     y: f64,
     z: f64,
 ) -> Result<f64> {
     let lambda = finite_n_prime("lambda", lambda)?;
     let (y, z) = point_in_view(view, y, z)?;
     let t = view.tan_half_fov();
-    let mu = zhang_mu(view, theta);
+    let mu = zhang_mu(view, light_angle)?;
     finite_result(
         "E_p",
         match lambda {
             Some(l) => {
-                let zw = l + z_w_offset(view, theta, y, z);
+                let zw = l + z_w_offset(view, light_angle, y, z);
                 mu / (t * z) * (zw / l) * (zw / (l + mu))
             }
             None => mu / (t * z),
@@ -408,14 +410,17 @@ impl Factorisation {
 /// shaft ([`crate::measure::tilted_twin::aliasing_functions`]). x is the point's horizontal
 /// eye coordinate, `|x| ≤ z tan φ`.
 ///
+/// All four factors are dimensionless.
+///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `lambda`, `x`, `y`, `z` or `slope` (non-finite slopes) outside
 /// the domain; [`Error::Degenerate`] when a denominator vanishes (the surface contains the light
-/// direction: projection aliasing is infinite).
+/// direction: projection aliasing is infinite), or when a factor or the products E_q, E_p
+/// overflow an `f64`.
 pub fn zhang_factorisation(
     view: &ViewFrustum,
     lambda: f64,
-    theta: LightAngle,
+    light_angle: LightAngle,
     x: f64,
     y: f64,
     z: f64,
@@ -435,8 +440,8 @@ pub fn zhang_factorisation(
     }
     let kx = finite("slope", slope.k_x)?;
     let ky = finite("slope", slope.k_y)?;
-    let (s, c) = theta.radians().sin_cos();
-    let zw = l + z_w_offset(view, theta, y, z);
+    let (s, c) = light_angle.radians().sin_cos();
+    let zw = l + z_w_offset(view, light_angle, y, z);
     let dzw = -c * ky + s;
     let den_q = kx - x / zw * dzw;
     if dzw == 0.0 || den_q == 0.0 {
@@ -444,12 +449,15 @@ pub fn zhang_factorisation(
             "the surface contains the light direction: projection aliasing is infinite".into(),
         ));
     }
-    let eq_pers = zhang_eq(view, NPrime::Finite(l), theta, y, z)?;
-    let ep_pers = zhang_ep(view, NPrime::Finite(l), theta, y, z)?;
-    Ok(Factorisation {
+    let eq_pers = zhang_eq(view, NPrime::Finite(l), light_angle, y, z)?;
+    let ep_pers = zhang_ep(view, NPrime::Finite(l), light_angle, y, z)?;
+    let f = Factorisation {
         eq_pers,
         eq_proj: finite_result("E_q^proj", ((kx - x / z) / den_q).abs())?,
         ep_pers,
         ep_proj: finite_result("E_p^proj", ((ky - y / z) / dzw).abs())?,
-    })
+    };
+    finite_result("E_q", f.e_q())?;
+    finite_result("E_p", f.e_p())?;
+    Ok(f)
 }

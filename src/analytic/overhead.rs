@@ -26,17 +26,12 @@
 
 use crate::error::{finite_result, fmt_num, positive, Error, Result};
 use crate::frustum::{NPrime, Resolutions, ViewFrustum};
-use crate::warp::{n_prime_at_least, near_far};
+use crate::warp::{n_prime_at_least, near_far, sqrt_fn};
 
 /// n′_LSPSM = n + √f √n (without overflow of f n).
 #[inline]
 fn lispsm(view: &ViewFrustum) -> f64 {
-    let fn_ = view.far() * view.near();
-    if fn_.is_finite() && fn_ > 0.0 {
-        view.near() + fn_.sqrt()
-    } else {
-        view.near() + view.far().sqrt() * view.near().sqrt()
-    }
+    view.near() + sqrt_fn(view.near(), view.far())
 }
 
 /// Checks n ≤ z ≤ f.
@@ -124,6 +119,8 @@ pub fn mz(view: &ViewFrustum, n_prime: NPrime, z: f64, res: Resolutions) -> Resu
 /// Symbols as in [`mx`]. m_x ∝ (n′ + z − n)/z = 1 + (n′ − n)/z decreases in z for n′ ≥ n, so
 /// the maximum is on the near plane.
 ///
+/// Dimensionless.
+///
 /// # Errors
 /// As [`mx`] without `z`.
 #[inline]
@@ -142,6 +139,8 @@ pub fn max_mx(near: f64, far: f64, n_prime: NPrime, res: Resolutions) -> Result<
 ///
 /// Symbols as in [`mz`]. (n′ + z − n)²/z is convex in z, so the maximum is on the near or far
 /// plane; they are equal exactly at n′ = n′_LSPSM.
+///
+/// Dimensionless.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `n_prime` (n′ ≥ near).

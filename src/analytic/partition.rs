@@ -22,6 +22,7 @@
 
 use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::ViewFrustum;
+use crate::warp::near_far;
 
 /// The largest number of z-partitions a [`Splits`] holds.
 pub const MAX_PARTITIONS: usize = 16;
@@ -42,7 +43,7 @@ impl Splits {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] naming `planes` unless there are 2 to `MAX_PARTITIONS + 1`
-    /// values, each finite and positive, strictly increasing.
+    /// values, each finite and positive, strictly increasing, with finite ratios of neighbours.
     ///
     /// ```
     /// # use shadow_aliasing::analytic::partition::Splits;
@@ -70,6 +71,16 @@ impl Splits {
                     format!(
                         "must be finite and positive (got {} at index {i})",
                         fmt_num(z)
+                    ),
+                ));
+            }
+            if i > 0 && !(z / planes[i - 1]).is_finite() {
+                return Err(Error::invalid(
+                    "planes",
+                    format!(
+                        "adjacent depth ratios must be finite (got {} after {} at index {i})",
+                        fmt_num(z),
+                        fmt_num(planes[i - 1])
                     ),
                 ));
             }
@@ -178,24 +189,13 @@ pub enum SplitScheme {
 /// Eq 5's self-similar ones, as he states.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far, finite), `k`
+/// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far, finite, f/n finite), `k`
 /// (1 ≤ k ≤ [`MAX_PARTITIONS`]), `lambda` (∈ [0, 1]), `light_angle` (∈ [0, π/2]), `ratio`
 /// (finite, > 1) or `exponent` (finite, > 0); [`Error::NoSolution`] when the adaptive planes are
 /// not strictly increasing (α^{k−1} too large for f/n at this γ), [`Error::Degenerate`] when
 /// f/n is so close to 1 that adjacent planes round to the same `f64`.
 pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Splits> {
-    let n = positive("near", near)?;
-    let f = positive("far", far)?;
-    if f <= n {
-        return Err(Error::invalid(
-            "far",
-            format!(
-                "must be greater than near (got near={}, far={})",
-                fmt_num(n),
-                fmt_num(f)
-            ),
-        ));
-    }
+    let (n, f) = near_far(near, far)?;
     if k == 0 || k > MAX_PARTITIONS {
         return Err(Error::invalid(
             "k",
@@ -398,19 +398,25 @@ pub fn scheme_storage_factor(
     finite_result("storage factor", v)
 }
 
-/// The number of shadow maps a scheme uses with k z-partitions: k, or 4k + 1 for FP+ZP+W with
-/// the light behind (four side faces and the near face; overhead the light sees one face).
+/// The number of shadow maps a scheme uses with k z-partitions (Lloyd 2006 §5.3, the x axis of
+/// Fig 12): k, or 4k + 1 for FP+ZP+W with the light behind (four side faces and the near face;
+/// overhead the light sees one face).
 /// `Optimal` counts as one (continuous) map.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `k` (≥ 1).
+/// [`Error::InvalidArgument`] naming `k` (≥ 1, and 4k + 1 must fit in a `usize`).
 pub fn shadow_map_count(scheme: Scheme, light: SchemeLight, k: usize) -> Result<usize> {
     k_ok(k)?;
-    Ok(match (scheme, light) {
-        (Scheme::Optimal, _) => 1,
-        (Scheme::FpZpW, SchemeLight::Behind) => 4 * k + 1,
-        _ => k,
-    })
+    match (scheme, light) {
+        (Scheme::Optimal, _) => Ok(1),
+        (Scheme::FpZpW, SchemeLight::Behind) => k
+            .checked_mul(4)
+            .and_then(|v| v.checked_add(1))
+            .ok_or_else(|| {
+                Error::invalid("k", format!("is too large: 4k + 1 overflows (got {k})"))
+            }),
+        _ => Ok(k),
+    }
 }
 
 /// The storage factor of the optimal logarithmic parameterisation for the light overhead
@@ -443,6 +449,8 @@ pub fn optimal_storage_factor(view: &ViewFrustum) -> Result<f64> {
 ///
 /// The ratio to Eq 17 tends to 1 as f/n → ∞ for fixed j.
 ///
+/// Dimensionless.
+///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `shadow_maps` (≥ 1).
 pub fn zp_overhead_asymptotic(view: &ViewFrustum, shadow_maps: usize) -> Result<f64> {
@@ -464,6 +472,8 @@ pub fn zp_overhead_asymptotic(view: &ViewFrustum, shadow_maps: usize) -> Result<
 /// ```
 ///
 /// It is Eq 18 with k = j/4 for large f/n.
+///
+/// Dimensionless.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `shadow_maps` (≥ 1).

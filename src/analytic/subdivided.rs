@@ -34,7 +34,8 @@
 
 use crate::analytic::partition::{z_splits, SplitScheme, Splits};
 use crate::error::{finite_result, fmt_num, in_closed, in_open, positive, Error, Result};
-use crate::frustum::NPrime;
+use crate::frustum::{NPrime, Resolutions};
+use crate::warp::{eta_from_n_prime, n_prime_from_eta};
 
 /// Validates α > 1, finite.
 fn alpha_ok(alpha: f64) -> Result<f64> {
@@ -100,6 +101,8 @@ pub fn n_opt(alpha: f64) -> Result<f64> {
 
 /// The least maximum of g over the frustum, g₀ = min_n max_z g = 1/√α, reached at n = n_opt
 /// (Lloyd 2005 §3.1).
+///
+/// Dimensionless.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `alpha` unless α > 1, finite.
@@ -177,22 +180,9 @@ pub fn error_m(
 /// [`Error::InvalidArgument`] naming `alpha` or `n_warp` (≥ 1).
 pub fn xi_from_n(alpha: f64, n_warp: NPrime) -> Result<f64> {
     let a = alpha_ok(alpha)?;
-    let Some(n) = n_warp_ok(n_warp)? else {
-        return Ok(-1.0);
-    };
-    let ra = a.sqrt();
-    let xi = if n >= 1.0 + ra {
-        let den = n + a - 1.0;
-        if den.is_finite() {
-            (ra - n + 1.0) / den
-        } else {
-            // Divided through by n so that a huge n cannot overflow.
-            ((ra + 1.0) / n - 1.0) / (1.0 + (a - 1.0) / n)
-        }
-    } else {
-        (ra - n + 1.0) / (n * ra)
-    };
-    Ok(xi.clamp(-1.0, 1.0))
+    n_warp_ok(n_warp)?;
+    // The same map as Lloyd 2006's η(n′) with near = 1 (one implementation, in `warp`).
+    eta_from_n_prime(1.0, a, n_warp)
 }
 
 /// The warp distance n from ξ (Lloyd 2005 Eq 4).
@@ -209,23 +199,16 @@ pub fn xi_from_n(alpha: f64, n_warp: NPrime) -> Result<f64> {
 pub fn n_from_xi(alpha: f64, xi: f64) -> Result<NPrime> {
     let a = alpha_ok(alpha)?;
     let xi = in_closed("xi", xi, -1.0, 1.0)?;
-    let ra = a.sqrt();
-    if xi <= 0.0 {
-        let v = (ra + 1.0 - xi * (a - 1.0)) / (xi + 1.0);
-        if xi == -1.0 || !v.is_finite() {
-            Ok(NPrime::Unwarped)
-        } else {
-            Ok(NPrime::Finite(v))
-        }
-    } else {
-        Ok(NPrime::Finite((ra + 1.0) / (xi * ra + 1.0)))
-    }
+    // The same map as Lloyd 2006's n′(η) with near = 1 (one implementation, in `warp`).
+    n_prime_from_eta(1.0, a, xi)
 }
 
 /// The normalised depth at which g (and m) is largest for a given ξ: the near plane z = 1 for
 /// ξ ≤ 0 (n ≥ n_opt), the far plane z = α for ξ > 0 (both at ξ = 0).
 ///
 /// Lloyd 2005 §3.2 prints the two the other way round (see docs/errata.md); Eq 5 is right.
+///
+/// The depth is normalised (a multiple of the near distance, in [1, α]).
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `alpha` or `xi`.
@@ -380,6 +363,8 @@ pub fn allocate_texels_whole(errors: &[f64], total: u32, out: &mut [u32]) -> Res
 /// The k face-subdivision planes z_i = α^{i/k}, i = 0..k, over the normalised frustum [1, α]
 /// (Lloyd 2005 §4, "Face subdivision"; the same self-similar planes as Lloyd 2006 Eq 15, 16).
 ///
+/// Depths normalised to near = 1 (multiply by the near distance for eye-space units).
+///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `alpha` (> 1) or `k` (1 ≤ k ≤ 16).
 pub fn face_subdivision_planes(alpha: f64, k: usize) -> Result<Splits> {
@@ -441,15 +426,12 @@ pub fn subdivided_max_error(
 /// [`Error::InvalidArgument`] naming `alpha`, `n_warp`, `z`, `res_image` or `res_x`.
 pub fn mx(alpha: f64, n_warp: NPrime, z: f64, res_image: f64, res_x: f64) -> Result<f64> {
     let a = alpha_ok(alpha)?;
-    let n = n_warp_ok(n_warp)?;
+    n_warp_ok(n_warp)?;
     let z = z_ok(z, a)?;
     let rp = positive("res_image", res_image)?;
     let rt = positive("res_x", res_x)?;
-    let shape = match n {
-        None => a / z,
-        Some(n) => a / z * ((n + z - 1.0) / (n + a - 1.0)),
-    };
-    finite_result("m_x", rp / rt * shape)
+    // Lloyd 2006 Eq 7 with near = 1, far = α (one implementation, in `overhead`).
+    crate::analytic::overhead::mx(1.0, a, n_warp, z, Resolutions::new(rp, rt, 1.0)?)
 }
 
 /// The maximum x error, on the near plane z = 1, in terms of ξ (Lloyd 2005 Eq 9).
@@ -461,6 +443,8 @@ pub fn mx(alpha: f64, n_warp: NPrime, z: f64, res_image: f64, res_x: f64) -> Res
 ///
 /// Symbols as in [`mx`] and [`max_error`]. It is smallest, r_p/r_t, at ξ = +1 (PSM, n = 1), and
 /// largest, (r_p/r_t) α, at ξ = −1 (unwarped).
+///
+/// Dimensionless.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `alpha`, `xi`, `res_image` or `res_x`.

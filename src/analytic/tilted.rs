@@ -44,13 +44,7 @@
 
 use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};
-
-/// The half heights `(a, b) = (n tan φ_y, f tan φ_y)` of the near and far planes.
-#[inline]
-fn half_heights(view: &ViewFrustum) -> (f64, f64) {
-    let t = view.tan_half_fov();
-    (view.near() * t, view.far() * t)
-}
+use crate::warp::sqrt_fn;
 
 /// Validates a finite n′ > 0 (`name` is the argument's name in messages).
 #[inline]
@@ -76,24 +70,31 @@ pub(crate) fn depth_in_view(view: &ViewFrustum, z: f64) -> Result<f64> {
 /// `b = f tan φ_y` (all in eye-space units). μ > 0 for every valid input; the two branches agree
 /// at γ = φ_y (both are 2 f sin φ_y), so μ is continuous. Unit: eye-space distance.
 ///
+/// Evaluated as `f · ((1 + n/f) · tan φ_y cos γ) + (f − n) sin γ`, so that a large `b` with a
+/// small `cos γ` does not overflow on the way.
+///
+/// # Errors
+/// [`Error::Degenerate`] when μ itself overflows an `f64` (f tan φ_y beyond about 1e308).
+///
 /// ```
 /// # use shadow_aliasing::{analytic::tilted::warp_depth_range, LightAngle, ViewFrustum};
 /// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;
 /// // Overhead the extent is the frustum's depth range f − n.
-/// let mu = warp_depth_range(&view, LightAngle::new(std::f64::consts::FRAC_PI_2)?);
+/// let mu = warp_depth_range(&view, LightAngle::new(std::f64::consts::FRAC_PI_2)?)?;
 /// assert!((mu - 99.0).abs() < 1e-12);
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
 #[inline]
-#[must_use]
-pub fn warp_depth_range(view: &ViewFrustum, gamma: LightAngle) -> f64 {
-    let (a, b) = half_heights(view);
-    let (s, c) = gamma.radians().sin_cos();
-    if gamma.radians() >= view.half_fov() {
-        (a + b) * c + (view.far() - view.near()) * s
+pub fn warp_depth_range(view: &ViewFrustum, light_angle: LightAngle) -> Result<f64> {
+    let (n, f) = (view.near(), view.far());
+    let (s, c) = light_angle.radians().sin_cos();
+    let tc = view.tan_half_fov() * c;
+    let mu = if light_angle.radians() >= view.half_fov() {
+        f * ((1.0 + n / f) * tc) + (f - n) * s
     } else {
-        2.0 * b * c
-    }
+        f * (2.0 * tc)
+    };
+    finite_result("mu", mu)
 }
 
 /// ψ(z, n′, γ) = z′, the warp depth of the point at depth z on the view axis (Barroso Eq 10 and
@@ -109,21 +110,26 @@ pub fn warp_depth_range(view: &ViewFrustum, gamma: LightAngle) -> f64 {
 /// [`Error::InvalidArgument`] naming `n_prime` (not finite and positive) or `z` (outside
 /// `[near, far]`).
 #[inline]
-pub fn tilted_psi(view: &ViewFrustum, n_prime: f64, gamma: LightAngle, z: f64) -> Result<f64> {
+pub fn tilted_psi(
+    view: &ViewFrustum,
+    n_prime: f64,
+    light_angle: LightAngle,
+    z: f64,
+) -> Result<f64> {
     let np = positive("n_prime", n_prime)?;
     let z = depth_in_view(view, z)?;
-    finite_result("psi", np + psi_offset(view, gamma, z))
+    finite_result("psi", np + psi_offset(view, light_angle, z))
 }
 
 /// ψ − n′: the point's warp depth from the frustum's nearest extent.
 #[inline]
-fn psi_offset(view: &ViewFrustum, gamma: LightAngle, z: f64) -> f64 {
-    let (a, b) = half_heights(view);
-    let (s, c) = gamma.radians().sin_cos();
-    if gamma.radians() >= view.half_fov() {
-        a * c + (z - view.near()) * s
+fn psi_offset(view: &ViewFrustum, light_angle: LightAngle, z: f64) -> f64 {
+    let (s, c) = light_angle.radians().sin_cos();
+    let tc = view.tan_half_fov() * c;
+    if light_angle.radians() >= view.half_fov() {
+        view.near() * tc + (z - view.near()) * s
     } else {
-        b * c + (z - view.far()) * s
+        view.far() * tc + (z - view.far()) * s
     }
 }
 
@@ -136,25 +142,26 @@ fn psi_offset(view: &ViewFrustum, gamma: LightAngle, z: f64) -> f64 {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `n_prime` (not finite and positive) or `light_angle`
-/// (γ = 0, where ξ is infinite: t does not change along the view axis).
+/// (γ = 0, where ξ is infinite: t does not change along the view axis); [`Error::Degenerate`]
+/// when μ or ξ overflows.
 #[inline]
 pub fn tilted_xi(
     view: &ViewFrustum,
     n_prime: f64,
-    gamma: LightAngle,
+    light_angle: LightAngle,
     res: Resolutions,
 ) -> Result<f64> {
     let np = positive("n_prime", n_prime)?;
-    let s = positive_sin(gamma)?;
-    let mu = warp_depth_range(view, gamma);
+    let s = positive_sin(light_angle)?;
+    let mu = warp_depth_range(view, light_angle)?;
     finite_result(
         "xi",
         res.image() / res.t() / (2.0 * view.tan_half_fov()) * mu / (np * (np + mu)) / s,
     )
 }
 
-fn positive_sin(gamma: LightAngle) -> Result<f64> {
-    let s = gamma.radians().sin();
+fn positive_sin(light_angle: LightAngle) -> Result<f64> {
+    let s = light_angle.radians().sin();
     if s > 0.0 {
         Ok(s)
     } else {
@@ -162,31 +169,31 @@ fn positive_sin(gamma: LightAngle) -> Result<f64> {
             "light_angle",
             format!(
                 "must be greater than 0 for Barroso's m_z, which measures texels along the view axis and is infinite when light and view are parallel (got {})",
-                fmt_num(gamma.radians())
+                fmt_num(light_angle.radians())
             ),
         ))
     }
 }
 
-/// Perpendicular m_z without validation: `res_i/res_t · μ ψ² / (2 tan φ_y · n′ (n′ + μ) · z)`,
-/// and `res_i/res_t · μ / (2 tan φ_y z)` unwarped.
+/// Perpendicular m_z without validation of n′ and z: `res_i/res_t · μ ψ² / (2 tan φ_y · n′ (n′ + μ)
+/// · z)`, and `res_i/res_t · μ / (2 tan φ_y z)` unwarped. Errors only when μ overflows.
 #[inline]
 fn mz_perp_unchecked(
     view: &ViewFrustum,
     n_prime: Option<f64>,
-    gamma: LightAngle,
+    light_angle: LightAngle,
     z: f64,
     res: Resolutions,
-) -> f64 {
-    let mu = warp_depth_range(view, gamma);
+) -> Result<f64> {
+    let mu = warp_depth_range(view, light_angle)?;
     let k = res.image() / res.t() / (2.0 * view.tan_half_fov()) * mu / z;
     match n_prime {
         Some(np) => {
-            let psi = np + psi_offset(view, gamma, z);
+            let psi = np + psi_offset(view, light_angle, z);
             // ψ²/(n′(n′ + μ)), written so that it stays accurate for large n′.
-            k * (psi / np) * (psi / (np + mu))
+            Ok(k * (psi / np) * (psi / (np + mu)))
         }
-        None => k,
+        None => Ok(k),
     }
 }
 
@@ -205,7 +212,8 @@ fn mz_perp_unchecked(
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `n_prime` (finite but not positive), `light_angle` (γ = 0,
-/// where this along-axis width is infinite) or `z` (outside `[near, far]`).
+/// where this along-axis width is infinite) or `z` (outside `[near, far]`);
+/// [`Error::Degenerate`] when the value (or μ) overflows.
 ///
 /// ```
 /// # use shadow_aliasing::{analytic::tilted::tilted_mz, LightAngle, NPrime, Resolutions, ViewFrustum};
@@ -220,14 +228,14 @@ fn mz_perp_unchecked(
 pub fn tilted_mz(
     view: &ViewFrustum,
     n_prime: NPrime,
-    gamma: LightAngle,
+    light_angle: LightAngle,
     z: f64,
     res: Resolutions,
 ) -> Result<f64> {
     let np = finite_n_prime("n_prime", n_prime)?;
-    let s = positive_sin(gamma)?;
+    let s = positive_sin(light_angle)?;
     let z = depth_in_view(view, z)?;
-    finite_result("m_z", mz_perp_unchecked(view, np, gamma, z, res) / s)
+    finite_result("m_z", mz_perp_unchecked(view, np, light_angle, z, res)? / s)
 }
 
 /// The tilted-light m_z measured perpendicular to the light, as the crate measures every map
@@ -241,18 +249,18 @@ pub fn tilted_mz(
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `n_prime` (finite but not positive) or `z` (outside
-/// `[near, far]`).
+/// `[near, far]`); [`Error::Degenerate`] when the value (or μ) overflows.
 #[inline]
 pub fn tilted_mz_perpendicular(
     view: &ViewFrustum,
     n_prime: NPrime,
-    gamma: LightAngle,
+    light_angle: LightAngle,
     z: f64,
     res: Resolutions,
 ) -> Result<f64> {
     let np = finite_n_prime("n_prime", n_prime)?;
     let z = depth_in_view(view, z)?;
-    finite_result("m_z", mz_perp_unchecked(view, np, gamma, z, res))
+    finite_result("m_z", mz_perp_unchecked(view, np, light_angle, z, res)?)
 }
 
 /// Barroso's n′₁(γ) (Eq 13, first branch): the n′ that makes m_z equal on the near and far
@@ -263,17 +271,29 @@ pub fn tilted_mz_perpendicular(
 ///
 /// At γ = π/2 this is LiSPSM's n + √(f n). The formula is evaluated for any γ ∈ [0, π/2]; it is
 /// negative for small γ, where no warp satisfies the constraint. Unit: eye-space distance.
+///
+/// # Errors
+/// [`Error::Degenerate`] when the value overflows an `f64` (n tan φ_y or n + √(f n) beyond
+/// about 1e308).
 #[inline]
-#[must_use]
-pub fn n_prime_1(view: &ViewFrustum, gamma: LightAngle) -> f64 {
-    n_prime_1_at(view, gamma.radians())
+pub fn n_prime_1(view: &ViewFrustum, light_angle: LightAngle) -> Result<f64> {
+    let (n, f) = (view.near(), view.far());
+    let (s, c) = light_angle.radians().sin_cos();
+    finite_result(
+        "n_prime",
+        (n + sqrt_fn(n, f)) * s - n * (view.tan_half_fov() * c),
+    )
 }
 
+/// n′₁(γ_lim) in closed form, without the rounding of γ_lim and cos γ_lim near π/2:
+/// with ρ = n/f, t = tan φ_y, tan γ_lim = (1 + ρ) t / (1 − ρ),
+/// `n′₁(γ_lim) = f t (2ρ² + √ρ (1 + ρ)) / hypot(1 − ρ, (1 + ρ) t)`, always > 0.
 #[inline]
-fn n_prime_1_at(view: &ViewFrustum, gamma: f64) -> f64 {
-    let (a, _) = half_heights(view);
-    let (s, c) = gamma.sin_cos();
-    (view.near() + (view.far() * view.near()).sqrt()) * s - a * c
+fn n_prime_1_at_lim(view: &ViewFrustum) -> f64 {
+    let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
+    let rho = n / f;
+    let d = (f - n) / f;
+    f * (t * (2.0 * rho * rho + rho.sqrt() * (1.0 + rho)) / d.hypot((1.0 + rho) * t))
 }
 
 /// Barroso's n′₂(γ) (Eq 13, second branch), for 0 < γ < φ_y, where the far-bottom corner is
@@ -283,33 +303,41 @@ fn n_prime_1_at(view: &ViewFrustum, gamma: f64) -> f64 {
 ///
 /// Negative for light near parallel to the view (Barroso's remark after Eq 13), and for every
 /// γ below `atan(b / (f + √(fn)))`. Unit: eye-space distance.
+///
+/// # Errors
+/// [`Error::Degenerate`] when the value overflows an `f64` (f tan φ_y or f + √(f n) beyond
+/// about 1e308).
 #[inline]
-#[must_use]
-pub fn n_prime_2(view: &ViewFrustum, gamma: LightAngle) -> f64 {
-    let (_, b) = half_heights(view);
-    let (s, c) = gamma.radians().sin_cos();
-    (view.far() + (view.far() * view.near()).sqrt()) * s - b * c
+pub fn n_prime_2(view: &ViewFrustum, light_angle: LightAngle) -> Result<f64> {
+    let (n, f) = (view.near(), view.far());
+    let (s, c) = light_angle.radians().sin_cos();
+    finite_result(
+        "n_prime",
+        (f + sqrt_fn(n, f)) * s - f * (view.tan_half_fov() * c),
+    )
 }
 
 /// The n′ of Barroso Eq 13: n′₁ for φ_y ≤ γ ≤ π/2, n′₂ for γ < φ_y; the warp parameter for which
 /// the tilted m_z on the view axis is equal on the near and far planes, which minimises its
 /// maximum over `[near, far]` (m_z ∝ ψ²/z has a single minimum).
 ///
+/// Unit: eye-space distance.
+///
 /// # Errors
 /// [`Error::NoSolution`] where that n′ is not positive (light near parallel to the view): no
-/// warp equalises the errors there.
-pub fn n_prime_equal_error(view: &ViewFrustum, gamma: LightAngle) -> Result<NPrime> {
-    let v = if gamma.radians() >= view.half_fov() {
-        n_prime_1(view, gamma)
+/// warp equalises the errors there; [`Error::Degenerate`] when it overflows.
+pub fn n_prime_equal_error(view: &ViewFrustum, light_angle: LightAngle) -> Result<NPrime> {
+    let v = if light_angle.radians() >= view.half_fov() {
+        n_prime_1(view, light_angle)?
     } else {
-        n_prime_2(view, gamma)
+        n_prime_2(view, light_angle)?
     };
     if v > 0.0 {
         Ok(NPrime::Finite(v))
     } else {
         Err(Error::NoSolution(format!(
             "no warp makes m_z equal on the near and far planes at light_angle={}: Barroso's Eq 13 gives n_prime={} ≤ 0",
-            fmt_num(gamma.radians()),
+            fmt_num(light_angle.radians()),
             fmt_num(v)
         )))
     }
@@ -329,33 +357,38 @@ pub fn n_prime_equal_error(view: &ViewFrustum, gamma: LightAngle) -> Result<NPri
 /// n′* ≤ n′_eq; otherwise the optimum is n′*, with m_z(n) > m_z(f) there. At γ = 0, n′* = ∞
 /// ([`NPrime::Unwarped`]). Overhead, n′_opt = n + √(f n) (LiSPSM).
 ///
-/// Unit: eye-space distance. Inputs are validated types, so this cannot fail.
+/// Unit: eye-space distance. Inputs are validated types, so this cannot fail; where μ or the
+/// optimum overflows an `f64` (frusta beyond about 1e308 across) the answer is
+/// [`NPrime::Unwarped`], the limit n′ → ∞.
 ///
 /// ```
 /// # use shadow_aliasing::{analytic::tilted::{n_prime_axis_minimax, n_prime_2}, LightAngle, ViewFrustum};
 /// let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6)?;
 /// let g = LightAngle::new(28f64.to_radians())?;
 /// // Barroso's n′₂ = 0.665 equalises the errors, but n′ = 4.935 has a lower maximum.
-/// assert!((n_prime_2(&view, g) - 0.66487).abs() < 1e-4);
+/// assert!((n_prime_2(&view, g)? - 0.66487).abs() < 1e-4);
 /// assert!((n_prime_axis_minimax(&view, g).value() - 4.9349).abs() < 1e-4);
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
 #[must_use]
-pub fn n_prime_axis_minimax(view: &ViewFrustum, gamma: LightAngle) -> NPrime {
-    let mu = warp_depth_range(view, gamma);
-    let d = psi_offset(view, gamma, view.near()).max(0.0);
+pub fn n_prime_axis_minimax(view: &ViewFrustum, light_angle: LightAngle) -> NPrime {
+    let Ok(mu) = warp_depth_range(view, light_angle) else {
+        return NPrime::Unwarped;
+    };
+    let d = psi_offset(view, light_angle, view.near()).max(0.0);
     let den = mu - 2.0 * d;
     let star = if den > 0.0 {
-        d * mu / den
+        d * (mu / den)
     } else {
         f64::INFINITY
     };
-    let eq = if gamma.radians() >= view.half_fov() {
-        n_prime_1(view, gamma)
+    let eq = if light_angle.radians() >= view.half_fov() {
+        n_prime_1(view, light_angle)
     } else {
-        n_prime_2(view, gamma)
+        n_prime_2(view, light_angle)
     };
-    let v = star.max(eq);
+    // An overflowing n′_eq is larger than any finite n′*.
+    let v = star.max(eq.unwrap_or(f64::INFINITY));
     if v.is_finite() && v > 0.0 {
         NPrime::Finite(v)
     } else {
@@ -368,12 +401,14 @@ pub fn n_prime_axis_minimax(view: &ViewFrustum, gamma: LightAngle) -> NPrime {
 ///
 /// `γ_lim = atan((a + b)/(f − n)) = atan((f + n) tan φ_y / (f − n))`, radians.
 ///
-/// Always in (φ_y, π/2): the limit lies above the half field of view, as Barroso requires.
+/// Always in (φ_y, π/2]: the limit lies above the half field of view, as Barroso requires
+/// (it rounds to π/2 only when tan φ_y (f + n)/(f − n) exceeds about 1e16). Evaluated as
+/// `atan((1 + n/f) tan φ_y / ((f − n)/f))`, which cannot overflow on the way.
 #[inline]
 #[must_use]
 pub fn gamma_lim(view: &ViewFrustum) -> f64 {
-    let (a, b) = half_heights(view);
-    ((a + b) / (view.far() - view.near())).atan()
+    let (n, f) = (view.near(), view.far());
+    ((1.0 + n / f) * view.tan_half_fov() / ((f - n) / f)).atan()
 }
 
 /// The fall-off r(γ) of Barroso's generalised n′ below γ_lim (Eq 16–18).
@@ -408,12 +443,14 @@ impl std::str::FromStr for Falloff {
 ///
 /// Eq 18 is evaluated as `4 sin⁴(γ π / (4 γ_lim))`, the same function
 /// (`1 + sin(x − π/2) = 1 − cos x = 2 sin²(x/2)`) without cancellation near γ = 0.
-/// Arguments outside `[0, γ_lim]` are clamped into it.
+/// γ = `light_angle` and γ_lim = `gamma_lim` in radians. Arguments outside `[0, γ_lim]` are
+/// clamped into it (NaN counts as 0); a γ_lim that is not positive gives r = 1. Total: the result
+/// lies in [0, 1] for every input.
 #[inline]
 #[must_use]
-pub fn falloff_r(falloff: Falloff, gamma: f64, gamma_lim: f64) -> f64 {
+pub fn falloff_r(falloff: Falloff, light_angle: f64, gamma_lim: f64) -> f64 {
     let u = if gamma_lim > 0.0 {
-        (gamma / gamma_lim).clamp(0.0, 1.0)
+        (light_angle / gamma_lim).clamp(0.0, 1.0)
     } else {
         1.0
     };
@@ -434,17 +471,27 @@ pub fn falloff_r(falloff: Falloff, gamma: f64, gamma_lim: f64) -> f64 {
 ///
 /// with γ_lim from [`gamma_lim`] (Eq 15), r from [`falloff_r`] (Eq 17 or 18), `a = n tan φ_y`.
 /// Continuous at γ_lim (r = 1); at γ = 0 (r = 0) it is [`NPrime::Unwarped`], and wherever the
-/// quotient overflows. Unit: eye-space distance. n′₁(γ_lim) > 0 always, so n′ > 0.
+/// quotient overflows. Unit: eye-space distance. n′₁(γ_lim) > 0 always, so n′ > 0; it is
+/// evaluated in closed form (`f t (2ρ² + √ρ (1 + ρ)) / hypot(1 − ρ, (1 + ρ) t)`, ρ = n/f,
+/// t = tan φ_y) so that the rounding of γ_lim near π/2 cannot cancel it to 0.
 ///
-/// All inputs are validated types, so this cannot fail.
+/// All inputs are validated types, so this cannot fail; where n′ overflows an `f64` (frusta
+/// beyond about 1e308) the answer is [`NPrime::Unwarped`], the limit n′ → ∞.
 #[must_use]
-pub fn generalized_n_prime(view: &ViewFrustum, gamma: LightAngle, falloff: Falloff) -> NPrime {
+pub fn generalized_n_prime(
+    view: &ViewFrustum,
+    light_angle: LightAngle,
+    falloff: Falloff,
+) -> NPrime {
     let gl = gamma_lim(view);
-    let g = gamma.radians();
+    let g = light_angle.radians();
     if g >= gl {
-        return NPrime::Finite(n_prime_1(view, gamma));
+        return match n_prime_1(view, light_angle) {
+            Ok(v) if v > 0.0 => NPrime::Finite(v),
+            _ => NPrime::Unwarped,
+        };
     }
-    let at_lim = n_prime_1_at(view, gl);
+    let at_lim = n_prime_1_at_lim(view);
     let r = falloff_r(falloff, g, gl);
     let v = at_lim / r;
     if v.is_finite() && v > 0.0 {
@@ -463,7 +510,10 @@ mod tests {
         let view = ViewFrustum::new(2.0, 30.0, 0.4).unwrap();
         let at = LightAngle::new(0.4).unwrap();
         let below = LightAngle::new(0.4 - 1e-13).unwrap();
-        let (m1, m2) = (warp_depth_range(&view, at), warp_depth_range(&view, below));
+        let (m1, m2) = (
+            warp_depth_range(&view, at).unwrap(),
+            warp_depth_range(&view, below).unwrap(),
+        );
         assert!((m1 - 2.0 * 30.0 * 0.4f64.sin()).abs() < 1e-9);
         assert!((m1 - m2).abs() < 1e-9);
         let (p1, p2) = (

@@ -103,7 +103,7 @@ pub fn tsm_focus_line(lambda: f64, eta: NPrime, delta_prime: f64) -> Result<f64>
     match eta {
         NPrime::Finite(e) => {
             let e = positive("eta", e)?;
-            let [[a, b], _] = tsm_projection(lambda, e);
+            let [[a, b], _] = tsm_projection(lambda, e)?;
             finite_result("the focus line", a + b / (e + d))
         }
         NPrime::Unwarped => finite_result("the focus line", 1.0 - 2.0 * d / lambda),
@@ -111,17 +111,27 @@ pub fn tsm_focus_line(lambda: f64, eta: NPrime, delta_prime: f64) -> Result<f64>
 }
 
 /// Martin & Tan's 1D homogeneous projection matrix (§6.2), row-major,
-/// `[[−(λ + 2η)/λ, 2 (λ + η) η / λ], [1, 0]]`, acting on `(x, 1)` with x the distance from the
-/// centre of projection; the projected coordinate is the first component over the second.
-/// λ > 0 and η > 0 are not checked here (a pure formula).
+///
+/// `[[−(λ + 2η)/λ, 2 (λ + η) η / λ], [1, 0]]`,
+///
+/// acting on `(x, 1)` with x the distance from the centre of projection; the projected
+/// coordinate is the first component over the second. It sends the top line (x = η) to +1 and the
+/// base line (x = η + λ) to −1. λ = `lambda` (trapezoid height) and η = `eta` (distance of the
+/// centre of projection above the top line) are distances in the same unit; the entries are
+/// dimensionless (first row, first column) and in that unit (first row, second column).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `lambda` or `eta` unless finite and positive;
+/// [`Error::Degenerate`] when an entry overflows (η/λ beyond about 1e154).
 #[inline]
-#[must_use]
-pub fn tsm_projection(lambda: f64, eta: f64) -> [[f64; 2]; 2] {
-    [
+pub fn tsm_projection(lambda: f64, eta: f64) -> Result<[[f64; 2]; 2]> {
+    let lambda = positive("lambda", lambda)?;
+    let eta = positive("eta", eta)?;
+    Ok([
         [
-            -(lambda + 2.0 * eta) / lambda,
-            2.0 * (lambda + eta) * eta / lambda,
+            finite_result("the projection", -(1.0 + 2.0 * (eta / lambda)))?,
+            finite_result("the projection", 2.0 * (1.0 + eta / lambda) * eta)?,
         ],
         [1.0, 0.0],
-    ]
+    ])
 }

@@ -30,7 +30,7 @@ pub mod sweep;
 pub mod tilted_twin;
 pub mod twin;
 
-use crate::error::{Error, Result};
+use crate::error::{finite_result, Error, Result};
 use crate::frustum::{unit_light_dir, Resolutions, ViewFrustum};
 use glam::{DMat4, DVec3, DVec4};
 
@@ -193,7 +193,8 @@ pub struct FrustumError {
 /// vertices; [`frustum_max_sampled`] checks the claim).
 ///
 /// # Errors
-/// As [`point_error`], for any vertex.
+/// As [`point_error`], for any vertex; [`Error::Degenerate`] when M_x, M_z or their product
+/// overflows `f64`.
 pub fn frustum_max(view: &ViewFrustum, shadow: &ShadowMap) -> Result<FrustumError> {
     max_over(view, shadow, view.corners().into_iter())
 }
@@ -238,9 +239,9 @@ fn max_over(
         mz = mz.max(e.mz);
     }
     Ok(FrustumError {
-        max_mx: mx,
-        max_mz: mz,
-        storage_factor: mx * mz,
+        max_mx: finite_result("M_x", mx)?,
+        max_mz: finite_result("M_z", mz)?,
+        storage_factor: finite_result("the storage factor M_x M_z", mx * mz)?,
     })
 }
 

@@ -83,8 +83,8 @@ pub struct TiltedWarp {
 /// The unit vector towards a light tilted by γ in the view's vertical plane, and the warp axis
 /// `z_l` (module docs).
 #[must_use]
-pub fn tilted_light_frame(gamma: LightAngle, side: TiltSide) -> (DVec3, DVec3) {
-    let (s, c) = gamma.radians().sin_cos();
+pub fn tilted_light_frame(light_angle: LightAngle, side: TiltSide) -> (DVec3, DVec3) {
+    let (s, c) = light_angle.radians().sin_cos();
     match side {
         TiltSide::InFront => (DVec3::new(0.0, s, -c), DVec3::new(0.0, -c, -s)),
         TiltSide::Behind => (DVec3::new(0.0, s, c), DVec3::new(0.0, c, -s)),
@@ -99,14 +99,14 @@ pub fn tilted_light_frame(gamma: LightAngle, side: TiltSide) -> (DVec3, DVec3) {
 /// [`Error::Degenerate`] if the fitted matrix is not finite (n′ so large that f′ overflows).
 pub fn tilted_warp(
     view: &ViewFrustum,
-    gamma: LightAngle,
+    light_angle: LightAngle,
     side: TiltSide,
     n_prime: NPrime,
 ) -> Result<TiltedWarp> {
     if let NPrime::Finite(v) = n_prime {
         positive("n_prime", v)?;
     }
-    let (ell, zl) = tilted_light_frame(gamma, side);
+    let (ell, zl) = tilted_light_frame(light_angle, side);
     let corners = view.corners();
     let (mut zmin, mut zmax) = (f64::INFINITY, f64::NEG_INFINITY);
     let (mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY);

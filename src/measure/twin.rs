@@ -37,10 +37,10 @@
 //! ```
 
 use crate::analytic::partition::{Splits, MAX_PARTITIONS};
-use crate::error::{fmt_num, Error, Result};
+use crate::error::{finite_result, fmt_num, Error, Result};
 use crate::frustum::{NPrime, Resolutions, ViewFrustum};
 use crate::measure::{frustum_max, point_error, FrustumError, ShadowMap};
-use crate::warp::{n_prime_at_least, n_prime_from_eta};
+use crate::warp::{n_prime_at_least, n_prime_from_eta, sqrt_fn};
 use glam::{DMat4, DVec3, DVec4};
 
 /// The eye-space direction the light travels when it is overhead.
@@ -176,16 +176,26 @@ impl Face {
     }
 
     /// The face's four corners over the depth range of `view`: near edge, then far edge.
-    #[must_use]
-    pub fn corners(self, view: &ViewFrustum) -> [DVec3; 4] {
+    ///
+    /// # Errors
+    /// [`Error::Degenerate`] when a corner is not finite (f tan θ beyond about 1e308).
+    pub fn corners(self, view: &ViewFrustum) -> Result<[DVec3; 4]> {
         let (a, b, su, sx) = self.frame(view);
         let mut out = [DVec3::ZERO; 4];
         for (i, z) in [view.near(), view.far()].into_iter().enumerate() {
             for (j, sign) in [-1.0, 1.0].into_iter().enumerate() {
-                out[2 * i + j] = b * (su * z) + a * (sign * sx * z) - DVec3::Z * z;
+                let (u, x) = (su * z, sign * sx * z);
+                // Component-wise, so that no 0 · ∞ appears.
+                let c = DVec3::new(b.x * u + a.x * x, b.y * u + a.y * x, -z);
+                if !c.is_finite() {
+                    return Err(Error::Degenerate(format!(
+                        "a corner of the {self:?} face is not finite ({c})"
+                    )));
+                }
+                out[2 * i + j] = c;
             }
         }
-        out
+        Ok(out)
     }
 }
 
@@ -232,18 +242,18 @@ pub fn behind_face_map(view: &ViewFrustum, face: Face, n_prime: NPrime) -> Resul
 /// maxima are at the ends as in the overhead case).
 ///
 /// # Errors
-/// As [`point_error`].
+/// As [`point_error`]; [`Error::Degenerate`] when a maximum or their product overflows.
 pub fn face_max(view: &ViewFrustum, face: Face, map: &ShadowMap) -> Result<FrustumError> {
     let (mut mx, mut mz) = (0.0f64, 0.0f64);
-    for p in face.corners(view) {
+    for p in face.corners(view)? {
         let e = point_error(view, map, p, Resolutions::default())?;
         mx = mx.max(e.mx);
         mz = mz.max(e.mz);
     }
     Ok(FrustumError {
-        max_mx: mx,
-        max_mz: mz,
-        storage_factor: mx * mz,
+        max_mx: finite_result("M_x", mx)?,
+        max_mz: finite_result("M_z", mz)?,
+        storage_factor: finite_result("storage factor", mx * mz)?,
     })
 }
 
@@ -262,7 +272,7 @@ impl TwinWarp {
     fn n_prime(self, near: f64, far: f64) -> Result<NPrime> {
         match self {
             TwinWarp::Unwarped => Ok(NPrime::Unwarped),
-            TwinWarp::Lispsm => Ok(NPrime::Finite(near + (near * far).sqrt())),
+            TwinWarp::Lispsm => NPrime::new(near + sqrt_fn(near, far)),
             TwinWarp::Eta(eta) => n_prime_from_eta(near, far, eta),
         }
     }
@@ -300,7 +310,7 @@ impl Cascade {
     /// sub-frustum's vertices by [`frustum_max`].
     ///
     /// # Errors
-    /// As [`frustum_max`].
+    /// As [`frustum_max`]; [`Error::Degenerate`] when the sum is not finite.
     pub fn measured_storage_factor(&self) -> Result<f64> {
         let mut sum = 0.0;
         for i in 0..self.k {
@@ -308,7 +318,7 @@ impl Cascade {
                 sum += frustum_max(&v, &m)?.storage_factor;
             }
         }
-        Ok(sum)
+        finite_result("storage factor", sum)
     }
 }
 
@@ -356,7 +366,7 @@ pub fn behind_cascade(view: &ViewFrustum, splits: &Splits) -> Result<Cascade> {
 /// added too.
 ///
 /// # Errors
-/// As [`behind_face_map`] and [`point_error`].
+/// As [`behind_face_map`] and [`point_error`]; [`Error::Degenerate`] when the sum is not finite.
 pub fn measured_fp_zp_w_behind(view: &ViewFrustum, splits: &Splits, warp: TwinWarp) -> Result<f64> {
     let mut sum = 0.0;
     for face in Face::ALL {
@@ -386,7 +396,7 @@ pub fn measured_fp_zp_w_behind(view: &ViewFrustum, splits: &Splits, warp: TwinWa
         mx = mx.max(e.mx);
         mz = mz.max(e.mz);
     }
-    Ok(sum + mx * mz)
+    finite_result("storage factor", sum + mx * mz)
 }
 
 #[cfg(test)]
@@ -415,7 +425,7 @@ mod tests {
         for face in Face::ALL {
             let fm =
                 behind_face_map(&v, face, NPrime::Finite(v.near() * 0.6f64.tan() * 3.0)).unwrap();
-            for (i, c) in face.corners(&v).into_iter().enumerate() {
+            for (i, c) in face.corners(&v).unwrap().into_iter().enumerate() {
                 let (s, t, ..) = crate::measure::st_gradients(&fm.matrix, c).unwrap();
                 assert!((-1e-12..=1.0 + 1e-12).contains(&s), "{face:?} s={s}");
                 let want_t = if i < 2 { 0.0 } else { 1.0 };

@@ -46,7 +46,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
             minimax.push((d, v));
         }
         // Eq 13's branches where they are positive (the plot is logarithmic).
-        let (a, b) = (n_prime_1(&view, angle), n_prime_2(&view, angle));
+        let (a, b) = (n_prime_1(&view, angle)?, n_prime_2(&view, angle)?);
         n1.push((d, if a > 0.0 { a } else { f64::NAN }));
         n2.push((d, if b > 0.0 { b } else { f64::NAN }));
     }
