@@ -156,7 +156,6 @@ fn not_in_open(name: &'static str, v: f64, lo: f64, hi: f64) -> Error {
 }
 
 /// Checks that a computed value is finite; a non-finite result is reported, never returned.
-#[allow(dead_code)]
 #[inline]
 pub(crate) fn finite_result(what: &str, v: f64) -> Result<f64> {
     if v.is_finite() {

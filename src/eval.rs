@@ -1,1 +1,1314 @@
-//! (being written)
+//! `shadow-aliasing eval`: every closed form of the crate, evaluated from JSON.
+//!
+//! This is the language-neutral contract of `docs/eval.md`: a renderer's CI in any language
+//! sends requests by name and checks its own numbers against the papers' mathematics.
+//!
+//! # Shape
+//!
+//! The input is one JSON object or a JSON array of objects. Each object names a `quantity` and
+//! its arguments by name; the answer is `{"quantity": NAME, "value": V}` or
+//! `{"quantity": NAME, "error": MESSAGE}`, one answer for an object, an array in the same order
+//! for an array. `V` is a number or an array of numbers, printed in the shortest form that
+//! parses back to the same `f64`; an infinite value (n′ of an unwarped map) is the string
+//! `"inf"`, which is also accepted wherever n′ (or Zhang's λ) is an argument.
+//!
+//! Exit status ([`EvalOutcome::exit_code`]): 0 when every request was answered with a value,
+//! 1 when at least one was answered with an error, 2 when the input is not JSON of this shape at
+//! all (message on standard error, nothing on standard output).
+//!
+//! Every argument is checked against the table [`QUANTITIES`] before any closed form runs:
+//! unknown quantities, missing or unknown arguments, wrong types and NaN or infinite values are
+//! answered with an error naming the argument; the closed forms then check their own domains and
+//! their [`Error`] message (which names the argument too) becomes the answer's `error`.
+//!
+//! ```
+//! use shadow_aliasing::eval::eval_json;
+//! let out = eval_json(r#"{"quantity": "n_prime_lispsm", "near": 1, "far": 100}"#);
+//! assert_eq!(out.exit_code, 0);
+//! assert_eq!(out.stdout, "{\"quantity\":\"n_prime_lispsm\",\"value\":11.0}\n");
+//!
+//! let out = eval_json(r#"[{"quantity": "n_prime_lispsm", "near": 2, "far": 1}]"#);
+//! assert_eq!(out.exit_code, 1);
+//! assert!(out.stdout.contains("far must be greater than near (got near=2, far=1)"));
+//!
+//! assert_eq!(eval_json("not json").exit_code, 2);
+//! ```
+
+use crate::error::{fmt_num, Error, Result};
+use crate::frustum::{NPrime, Resolutions, ViewFrustum};
+use serde_json::{Map, Value};
+
+/// The README's Rust example, compiled and run by `cargo test --all-features` as a doc-test, so
+/// that the README cannot drift from the API.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
+
+/// What `shadow-aliasing eval` prints and how it exits.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct EvalOutcome {
+    /// Standard output: the answers as JSON followed by a newline, or empty when the input is
+    /// not JSON of the contract's shape.
+    pub stdout: String,
+    /// 0: every request answered with a value; 1: at least one answered with an error;
+    /// 2: the input is not JSON of the contract's shape.
+    pub exit_code: i32,
+    /// Standard error: one line saying why the input was rejected (exit 2), otherwise empty.
+    pub stderr: String,
+}
+
+/// The type of one argument, as read from JSON.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ArgKind {
+    /// A finite number.
+    Number,
+    /// A warp parameter: a finite number greater than 0, or the string `"inf"` (unwarped map).
+    NPrime,
+    /// A whole number ≥ 1 (a count of partitions or subdivisions).
+    Count,
+    /// One of a fixed set of strings.
+    Choice(&'static [&'static str]),
+    /// An array of finite numbers.
+    Numbers,
+}
+
+/// Whether an argument must be present.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Presence {
+    /// The request must give it.
+    Required,
+    /// It may be absent; this value is used then (resolutions default to 1).
+    Default(f64),
+    /// It may be absent; whether it is needed depends on another argument (for instance
+    /// `lambda` of `z_partition` is needed only by the `"practical"` scheme).
+    Optional,
+}
+
+/// One argument of a quantity.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ArgSpec {
+    /// Its name in the request.
+    pub name: &'static str,
+    /// Its JSON type.
+    pub kind: ArgKind,
+    /// Whether it must be given.
+    pub presence: Presence,
+}
+
+/// What a quantity answers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ValueKind {
+    /// One number.
+    Number,
+    /// One number that may be `"inf"` (an n′).
+    NPrime,
+    /// An array of numbers.
+    Numbers,
+}
+
+/// One row of the contract's table: a quantity, its arguments and how it is computed.
+#[derive(Debug, Clone, Copy)]
+pub struct Quantity {
+    /// The name in `"quantity"`.
+    pub name: &'static str,
+    /// Its arguments, in the order the contract lists them.
+    pub args: &'static [ArgSpec],
+    /// What it answers.
+    pub value: ValueKind,
+    /// The paper and equation it implements.
+    pub source: &'static str,
+    compute: fn(&Args) -> Result<Output>,
+}
+
+impl Quantity {
+    /// Evaluates this quantity on a request's arguments (the object, `"quantity"` included or
+    /// not), checking every argument first.
+    ///
+    /// # Errors
+    /// A message naming the argument that is missing, unknown, of the wrong type, NaN or
+    /// infinite, or outside the closed form's domain.
+    pub fn evaluate(&self, request: &Map<String, Value>) -> std::result::Result<Output, String> {
+        let args = self.parse_args(request)?;
+        let out = (self.compute)(&args).map_err(|e| e.to_string())?;
+        out.check(self.name)
+    }
+
+    fn parse_args(&self, request: &Map<String, Value>) -> std::result::Result<Args, String> {
+        for key in request.keys() {
+            if key != "quantity" && !self.args.iter().any(|a| a.name == key) {
+                let hint = suggest(key, self.args.iter().map(|a| a.name))
+                    .map(|s| format!("did you mean {s}? "))
+                    .unwrap_or_default();
+                return Err(format!(
+                    "{} is not an argument of {} ({hint}{} takes {})",
+                    quote_key(key),
+                    self.name,
+                    self.name,
+                    self.signature()
+                ));
+            }
+        }
+        let mut values = Vec::with_capacity(self.args.len());
+        for spec in self.args {
+            match request.get(spec.name) {
+                None => match spec.presence {
+                    Presence::Required => {
+                        return Err(format!(
+                            "{} is missing ({} takes {})",
+                            spec.name,
+                            self.name,
+                            self.signature()
+                        ))
+                    }
+                    Presence::Default(d) => values.push((spec.name, Parsed::Number(d))),
+                    Presence::Optional => {}
+                },
+                Some(v) => values.push((spec.name, parse_arg(spec, v)?)),
+            }
+        }
+        Ok(Args { values })
+    }
+
+    /// The arguments as the contract writes them: `near, far, n_prime, z, [res_image, res_s]`.
+    #[must_use]
+    pub fn signature(&self) -> String {
+        let req: Vec<&str> = self
+            .args
+            .iter()
+            .filter(|a| a.presence == Presence::Required)
+            .map(|a| a.name)
+            .collect();
+        let opt: Vec<&str> = self
+            .args
+            .iter()
+            .filter(|a| a.presence != Presence::Required)
+            .map(|a| a.name)
+            .collect();
+        let mut s = req.join(", ");
+        if !opt.is_empty() {
+            if !s.is_empty() {
+                s.push_str(", ");
+            }
+            s.push('[');
+            s.push_str(&opt.join(", "));
+            s.push(']');
+        }
+        s
+    }
+}
+
+/// A computed answer.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Output {
+    /// One number.
+    Number(f64),
+    /// A warp parameter n′, possibly unwarped (printed `"inf"`).
+    NPrime(NPrime),
+    /// An array of numbers.
+    Numbers(Vec<f64>),
+}
+
+impl Output {
+    /// A value that is not finite is reported, never printed (except n′ = ∞ as `"inf"`).
+    fn check(self, quantity: &str) -> std::result::Result<Output, String> {
+        let bad = match &self {
+            Output::Number(v) => !v.is_finite(),
+            Output::NPrime(NPrime::Finite(v)) => !(v.is_finite() && *v > 0.0),
+            Output::NPrime(NPrime::Unwarped) => false,
+            Output::Numbers(vs) => vs.iter().any(|v| !v.is_finite()),
+        };
+        if bad {
+            Err(format!(
+                "{quantity} could not be computed in f64 for these arguments: the computation \
+                 gave {} (an overflow or cancellation, reported rather than printed)",
+                self.to_json()
+            ))
+        } else {
+            Ok(self)
+        }
+    }
+
+    /// The value as JSON text: shortest round-trip numbers, `"inf"` for n′ = ∞.
+    #[must_use]
+    pub fn to_json(&self) -> String {
+        match self {
+            Output::Number(v) => json_number(*v),
+            Output::NPrime(n) => json_number(n.value()),
+            Output::Numbers(vs) => {
+                let parts: Vec<String> = vs.iter().map(|v| json_number(*v)).collect();
+                format!("[{}]", parts.join(","))
+            }
+        }
+    }
+}
+
+/// Shortest representation that parses back to the same `f64`; `"inf"`/`"-inf"`/`"nan"` strings
+/// for the non-finite values (only `"inf"` is ever printed in an answer's value).
+fn json_number(v: f64) -> String {
+    if v.is_finite() {
+        // serde_json prints finite f64 with ryu: the shortest round-trip form.
+        serde_json::to_string(&v).unwrap_or_else(|_| format!("{v:?}"))
+    } else {
+        format!("\"{}\"", fmt_num(v))
+    }
+}
+
+/// An argument after its JSON type was checked.
+#[derive(Debug, Clone, PartialEq)]
+enum Parsed {
+    Number(f64),
+    NPrime(NPrime),
+    Count(usize),
+    Choice(&'static str),
+    Numbers(Vec<f64>),
+}
+
+/// The arguments of one request, checked against its [`Quantity::args`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Args {
+    values: Vec<(&'static str, Parsed)>,
+}
+
+impl Args {
+    fn get(&self, name: &'static str) -> Option<&Parsed> {
+        self.values.iter().find(|(n, _)| *n == name).map(|(_, p)| p)
+    }
+    fn missing(name: &'static str) -> Error {
+        Error::invalid(name, "is missing")
+    }
+    fn num(&self, name: &'static str) -> Result<f64> {
+        match self.get(name) {
+            Some(Parsed::Number(v)) => Ok(*v),
+            _ => Err(Self::missing(name)),
+        }
+    }
+    fn opt_num(&self, name: &'static str) -> Option<f64> {
+        match self.get(name) {
+            Some(Parsed::Number(v)) => Some(*v),
+            _ => None,
+        }
+    }
+    fn n_prime(&self, name: &'static str) -> Result<NPrime> {
+        match self.get(name) {
+            Some(Parsed::NPrime(v)) => Ok(*v),
+            _ => Err(Self::missing(name)),
+        }
+    }
+    fn count(&self, name: &'static str) -> Result<usize> {
+        match self.get(name) {
+            Some(Parsed::Count(v)) => Ok(*v),
+            _ => Err(Self::missing(name)),
+        }
+    }
+    fn choice(&self, name: &'static str) -> Result<&'static str> {
+        match self.get(name) {
+            Some(Parsed::Choice(v)) => Ok(v),
+            _ => Err(Self::missing(name)),
+        }
+    }
+    fn numbers(&self, name: &'static str) -> Result<&[f64]> {
+        match self.get(name) {
+            Some(Parsed::Numbers(v)) => Ok(v),
+            _ => Err(Self::missing(name)),
+        }
+    }
+    /// Resolutions with `res_t` given (`res_s` unused, 1).
+    fn res_t(&self) -> Result<Resolutions> {
+        Resolutions::new(self.num("res_image")?, 1.0, self.num("res_t")?)
+    }
+    /// Resolutions with `res_s` given (`res_t` unused, 1).
+    fn res_s(&self) -> Result<Resolutions> {
+        Resolutions::new(self.num("res_image")?, self.num("res_s")?, 1.0)
+    }
+    /// The view frustum of `near`, `far`, `half_fov`.
+    fn view(&self) -> Result<ViewFrustum> {
+        ViewFrustum::new(self.num("near")?, self.num("far")?, self.num("half_fov")?)
+    }
+}
+
+/// The largest count accepted (a guard against requests that would allocate without bound;
+/// the closed forms have their own, smaller limits where they need one).
+pub const MAX_COUNT: usize = 1_000_000;
+
+fn describe(v: &Value) -> String {
+    let text = v.to_string();
+    let short = if text.chars().count() > 40 {
+        let mut s: String = text.chars().take(37).collect();
+        s.push_str("...");
+        s
+    } else {
+        text
+    };
+    let kind = match v {
+        Value::Null => return "null".into(),
+        Value::Bool(_) => "boolean",
+        Value::Number(_) => "number",
+        Value::String(_) => "string",
+        Value::Array(_) => "array",
+        Value::Object(_) => "object",
+    };
+    format!("{kind} {short}")
+}
+
+/// The non-finite spellings accepted as numbers, so that NaN and infinity can be sent (and are
+/// then rejected with a message naming the argument, or accepted as n′ = ∞).
+fn non_finite_word(s: &str) -> Option<f64> {
+    match s.trim().to_ascii_lowercase().as_str() {
+        "inf" | "+inf" | "infinity" | "+infinity" => Some(f64::INFINITY),
+        "-inf" | "-infinity" => Some(f64::NEG_INFINITY),
+        "nan" => Some(f64::NAN),
+        _ => None,
+    }
+}
+
+/// Reads a number, or one of the non-finite words; anything else is a type error.
+fn read_number(name: &str, v: &Value) -> std::result::Result<f64, String> {
+    match v {
+        Value::Number(n) => n
+            .as_f64()
+            .ok_or_else(|| format!("{name} must be a number (got {})", describe(v))),
+        Value::String(s) => non_finite_word(s).ok_or_else(|| {
+            format!(
+                "{name} must be a number (got {}{})",
+                describe(v),
+                if s.trim().parse::<f64>().is_ok() {
+                    "; write it without quotes"
+                } else {
+                    ""
+                }
+            )
+        }),
+        _ => Err(format!("{name} must be a number (got {})", describe(v))),
+    }
+}
+
+fn finite_number(name: &str, v: &Value) -> std::result::Result<f64, String> {
+    let x = read_number(name, v)?;
+    if x.is_finite() {
+        Ok(x)
+    } else {
+        Err(format!(
+            "{name} must be a finite number (got {})",
+            fmt_num(x)
+        ))
+    }
+}
+
+fn parse_arg(spec: &ArgSpec, v: &Value) -> std::result::Result<Parsed, String> {
+    let name = spec.name;
+    match spec.kind {
+        ArgKind::Number => finite_number(name, v).map(Parsed::Number),
+        ArgKind::NPrime => {
+            let x = read_number(name, v).map_err(|_| {
+                format!(
+                    "{name} must be a number greater than 0 or the string \"inf\" (got {})",
+                    describe(v)
+                )
+            })?;
+            if x == f64::INFINITY {
+                Ok(Parsed::NPrime(NPrime::Unwarped))
+            } else if x.is_finite() && x > 0.0 {
+                Ok(Parsed::NPrime(NPrime::Finite(x)))
+            } else {
+                Err(format!(
+                    "{name} must be a number greater than 0 or the string \"inf\" (got {})",
+                    fmt_num(x)
+                ))
+            }
+        }
+        ArgKind::Count => {
+            let x = finite_number(name, v)?;
+            if x.fract() != 0.0 || x < 1.0 {
+                Err(format!(
+                    "{name} must be a whole number of at least 1 (got {})",
+                    fmt_num(x)
+                ))
+            } else if x > MAX_COUNT as f64 {
+                Err(format!(
+                    "{name} must be at most {MAX_COUNT} (got {})",
+                    fmt_num(x)
+                ))
+            } else {
+                // Whole, in [1, MAX_COUNT]: the conversion is exact.
+                Ok(Parsed::Count(x as usize))
+            }
+        }
+        ArgKind::Choice(options) => {
+            let list = options
+                .iter()
+                .map(|o| format!("\"{o}\""))
+                .collect::<Vec<_>>()
+                .join(", ");
+            match v {
+                Value::String(s) => match options.iter().find(|o| **o == s.as_str()) {
+                    Some(o) => Ok(Parsed::Choice(o)),
+                    None => {
+                        let hint = suggest(s, options.iter().copied())
+                            .map(|h| format!("; did you mean \"{h}\"?"))
+                            .unwrap_or_default();
+                        Err(format!(
+                            "{name} must be one of {list} (got {}{hint})",
+                            describe(v)
+                        ))
+                    }
+                },
+                _ => Err(format!(
+                    "{name} must be one of the strings {list} (got {})",
+                    describe(v)
+                )),
+            }
+        }
+        ArgKind::Numbers => match v {
+            Value::Array(items) => items
+                .iter()
+                .enumerate()
+                .map(|(i, item)| {
+                    let x = read_number(name, item).map_err(|_| {
+                        format!(
+                            "{name} must be an array of numbers ({name}[{i}] is {})",
+                            describe(item)
+                        )
+                    })?;
+                    if x.is_finite() {
+                        Ok(x)
+                    } else {
+                        Err(format!(
+                            "{name} must hold finite numbers ({name}[{i}] is {})",
+                            fmt_num(x)
+                        ))
+                    }
+                })
+                .collect::<std::result::Result<Vec<f64>, String>>()
+                .map(Parsed::Numbers),
+            _ => Err(format!(
+                "{name} must be an array of numbers (got {})",
+                describe(v)
+            )),
+        },
+    }
+}
+
+/// Levenshtein distance, for "did you mean" hints.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut cur = vec![i + 1; b.len() + 1];
+        for (j, cb) in b.iter().enumerate() {
+            let sub = prev[j] + usize::from(ca != *cb);
+            cur[j + 1] = sub.min(prev[j + 1] + 1).min(cur[j] + 1);
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}
+
+/// The closest candidate, if it is close enough to be a likely typo.
+fn suggest<'a>(word: &str, candidates: impl Iterator<Item = &'a str>) -> Option<&'a str> {
+    if word.chars().count() > 64 {
+        return None;
+    }
+    candidates
+        .map(|c| (edit_distance(word, c), c))
+        .filter(|(d, c)| *d <= 2.max(c.len() / 4) && *d < c.len())
+        .min_by_key(|(d, _)| *d)
+        .map(|(_, c)| c)
+}
+
+/// A key as it appears in a message: bare when it looks like a name, JSON-quoted otherwise.
+fn quote_key(key: &str) -> String {
+    let plain = !key.is_empty()
+        && key.len() <= 40
+        && key.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    if plain {
+        key.to_string()
+    } else {
+        let s = Value::String(key.chars().take(40).collect()).to_string();
+        if key.chars().count() > 40 {
+            format!("{s}...")
+        } else {
+            s
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The table.
+
+const fn req(name: &'static str, kind: ArgKind) -> ArgSpec {
+    ArgSpec {
+        name,
+        kind,
+        presence: Presence::Required,
+    }
+}
+const fn res(name: &'static str) -> ArgSpec {
+    ArgSpec {
+        name,
+        kind: ArgKind::Number,
+        presence: Presence::Default(1.0),
+    }
+}
+const fn opt(name: &'static str, kind: ArgKind) -> ArgSpec {
+    ArgSpec {
+        name,
+        kind,
+        presence: Presence::Optional,
+    }
+}
+
+use ArgKind::{Count, Number as Num, Numbers as NumArray};
+const NEAR: ArgSpec = req("near", Num);
+const FAR: ArgSpec = req("far", Num);
+const HALF_FOV: ArgSpec = req("half_fov", Num);
+const N_PRIME: ArgSpec = req("n_prime", ArgKind::NPrime);
+const Z: ArgSpec = req("z", Num);
+const RES_IMAGE: ArgSpec = res("res_image");
+const RES_S: ArgSpec = res("res_s");
+const RES_T: ArgSpec = res("res_t");
+const LIGHT_ANGLE: ArgSpec = req("light_angle", Num);
+const LAMBDA_NP: ArgSpec = req("lambda", ArgKind::NPrime);
+
+/// `z_partition` schemes.
+pub const Z_PARTITION_SCHEMES: &[&str] = &["self_similar", "uniform", "practical", "adaptive"];
+/// `scheme_storage_factor` schemes.
+pub const STORAGE_SCHEMES: &[&str] = &["zp", "zp_w", "fp_zp_w", "optimal"];
+/// `scheme_storage_factor` light positions.
+pub const LIGHTS: &[&str] = &["overhead", "behind"];
+/// `generalized_n_prime` fall-offs r(γ).
+pub const FALLOFFS: &[&str] = &["barroso", "zhang"];
+
+/// Every quantity of the contract, in its order.
+pub const QUANTITIES: &[Quantity] = &[
+    Quantity {
+        name: "mx",
+        args: &[NEAR, FAR, N_PRIME, Z, RES_IMAGE, RES_S],
+        value: ValueKind::Number,
+        source: "Lloyd 2006 Eq 7 (Lloyd 2005 Eq 8)",
+        compute: wire::mx,
+    },
+    Quantity {
+        name: "mz",
+        args: &[NEAR, FAR, HALF_FOV, N_PRIME, Z, RES_IMAGE, RES_T],
+        value: ValueKind::Number,
+        source: "Lloyd 2006 Eq 8",
+        compute: wire::mz,
+    },
+    Quantity {
+        name: "max_mx",
+        args: &[NEAR, FAR, N_PRIME, RES_IMAGE, RES_S],
+        value: ValueKind::Number,
+        source: "Lloyd 2006 Eq 9",
+        compute: wire::max_mx,
+    },
+    Quantity {
+        name: "max_mz",
+        args: &[NEAR, FAR, HALF_FOV, N_PRIME, RES_IMAGE, RES_T],
+        value: ValueKind::Number,
+        source: "Lloyd 2006 Eq 10",
+        compute: wire::max_mz,
+    },
+    Quantity {
+        name: "storage_factor",
+        args: &[NEAR, FAR, HALF_FOV, N_PRIME],
+        value: ValueKind::Number,
+        source: "Lloyd 2006 Eq 12",
+        compute: wire::storage_factor,
+    },
+    Quantity {
+        name: "critical_resolution",
+        args: &[NEAR, FAR, HALF_FOV, N_PRIME, req("budget", Num), RES_IMAGE],
+        value: ValueKind::Numbers,
+        source: "Lloyd 2006 Eq 13, 14",
+        compute: wire::critical_resolution,
+    },
+    Quantity {
+        name: "n_prime_lispsm",
+        args: &[NEAR, FAR],
+        value: ValueKind::Number,
+        source: "Lloyd 2006 §4.1",
+        compute: wire::n_prime_lispsm,
+    },
+    Quantity {
+        name: "n_prime_from_eta",
+        args: &[NEAR, FAR, req("eta", Num)],
+        value: ValueKind::NPrime,
+        source: "Lloyd 2006 Eq 11",
+        compute: wire::n_prime_from_eta,
+    },
+    Quantity {
+        name: "eta_from_n_prime",
+        args: &[NEAR, FAR, N_PRIME],
+        value: ValueKind::Number,
+        source: "Lloyd 2006 App. B",
+        compute: wire::eta_from_n_prime,
+    },
+    Quantity {
+        name: "distribution_g",
+        args: &[req("alpha", Num), req("n_warp", ArgKind::NPrime), Z],
+        value: ValueKind::Number,
+        source: "Lloyd 2005 Eq 3",
+        compute: wire::distribution_g,
+    },
+    Quantity {
+        name: "subdivided_max_error",
+        args: &[
+            req("alpha", Num),
+            req("k", Count),
+            req("eta", Num),
+            HALF_FOV,
+            RES_IMAGE,
+            RES_S,
+        ],
+        value: ValueKind::Number,
+        source: "Lloyd 2005 Eq 7",
+        compute: wire::subdivided_max_error,
+    },
+    Quantity {
+        name: "allocate_texels",
+        args: &[req("errors", NumArray), req("total", Num)],
+        value: ValueKind::Numbers,
+        source: "Lloyd 2005 Eq 6",
+        compute: wire::allocate_texels,
+    },
+    Quantity {
+        name: "z_partition",
+        args: &[
+            NEAR,
+            FAR,
+            req("k", Count),
+            req("scheme", ArgKind::Choice(Z_PARTITION_SCHEMES)),
+            opt("lambda", Num),
+            opt("light_angle", Num),
+            opt("ratio", Num),
+        ],
+        value: ValueKind::Numbers,
+        source: "Lloyd 2006 Eq 15, 16; Barroso Eq 19",
+        compute: wire::z_partition,
+    },
+    Quantity {
+        name: "scheme_storage_factor",
+        args: &[
+            req("scheme", ArgKind::Choice(STORAGE_SCHEMES)),
+            req("light", ArgKind::Choice(LIGHTS)),
+            NEAR,
+            FAR,
+            HALF_FOV,
+            req("k", Count),
+        ],
+        value: ValueKind::Number,
+        source: "Lloyd 2006 Eq 17–21, App. C",
+        compute: wire::scheme_storage_factor,
+    },
+    Quantity {
+        name: "tilted_mz",
+        args: &[
+            NEAR,
+            FAR,
+            HALF_FOV,
+            N_PRIME,
+            LIGHT_ANGLE,
+            Z,
+            RES_IMAGE,
+            RES_T,
+        ],
+        value: ValueKind::Number,
+        source: "Barroso Eq 10–12",
+        compute: wire::tilted_mz,
+    },
+    Quantity {
+        name: "generalized_n_prime",
+        args: &[
+            NEAR,
+            FAR,
+            HALF_FOV,
+            LIGHT_ANGLE,
+            req("falloff", ArgKind::Choice(FALLOFFS)),
+        ],
+        value: ValueKind::NPrime,
+        source: "Barroso Eq 13–18",
+        compute: wire::generalized_n_prime,
+    },
+    Quantity {
+        name: "gamma_lim",
+        args: &[NEAR, FAR, HALF_FOV],
+        value: ValueKind::Number,
+        source: "Barroso Eq 15",
+        compute: wire::gamma_lim,
+    },
+    Quantity {
+        name: "tsm_eta",
+        args: &[req("lambda", Num), req("delta_prime", Num), req("xi", Num)],
+        value: ValueKind::NPrime,
+        source: "Martin–Tan §6.2",
+        compute: wire::tsm_eta,
+    },
+    Quantity {
+        name: "zhang_eq",
+        args: &[
+            NEAR,
+            FAR,
+            HALF_FOV,
+            LAMBDA_NP,
+            LIGHT_ANGLE,
+            req("y", Num),
+            Z,
+        ],
+        value: ValueKind::Number,
+        source: "Zhang Eq 13 and Appendix",
+        compute: wire::zhang_eq,
+    },
+    Quantity {
+        name: "zhang_ep",
+        args: &[
+            NEAR,
+            FAR,
+            HALF_FOV,
+            LAMBDA_NP,
+            LIGHT_ANGLE,
+            req("y", Num),
+            Z,
+        ],
+        value: ValueKind::Number,
+        source: "Zhang Eq 14 and Appendix",
+        compute: wire::zhang_ep,
+    },
+    Quantity {
+        name: "zhang_eq_local",
+        args: &[NEAR, FAR, HALF_FOV, LAMBDA_NP, Z],
+        value: ValueKind::Number,
+        source: "Zhang Eq 8",
+        compute: wire::zhang_eq_local,
+    },
+    Quantity {
+        name: "zhang_ep_local",
+        args: &[NEAR, FAR, HALF_FOV, LAMBDA_NP, Z],
+        value: ValueKind::Number,
+        source: "Zhang Eq 9",
+        compute: wire::zhang_ep_local,
+    },
+];
+
+/// The row of [`QUANTITIES`] named `name`.
+#[must_use]
+pub fn quantity(name: &str) -> Option<&'static Quantity> {
+    QUANTITIES.iter().find(|q| q.name == name)
+}
+
+/// The wiring of each quantity to the crate's closed forms.
+mod wire {
+    use super::{Args, Output};
+    use crate::analytic::{global, overhead, subdivided, tilted, tsm};
+    use crate::error::{Error, Result};
+    use crate::frustum::LightAngle;
+    use crate::warp;
+
+    /// The same error with the argument `from` called `to` (the contract's name for it).
+    fn rename(e: Error, from: &str, to: &'static str) -> Error {
+        match e {
+            Error::InvalidArgument { name, reason } if name == from => {
+                Error::InvalidArgument { name: to, reason }
+            }
+            other => other,
+        }
+    }
+
+    pub(super) fn mx(a: &Args) -> Result<Output> {
+        let v = overhead::mx(
+            a.num("near")?,
+            a.num("far")?,
+            a.n_prime("n_prime")?,
+            a.num("z")?,
+            a.res_s()?,
+        )?;
+        Ok(Output::Number(v))
+    }
+    pub(super) fn mz(a: &Args) -> Result<Output> {
+        let v = overhead::mz(&a.view()?, a.n_prime("n_prime")?, a.num("z")?, a.res_t()?)?;
+        Ok(Output::Number(v))
+    }
+    pub(super) fn max_mx(a: &Args) -> Result<Output> {
+        let v = overhead::max_mx(
+            a.num("near")?,
+            a.num("far")?,
+            a.n_prime("n_prime")?,
+            a.res_s()?,
+        )?;
+        Ok(Output::Number(v))
+    }
+    pub(super) fn max_mz(a: &Args) -> Result<Output> {
+        let v = overhead::max_mz(&a.view()?, a.n_prime("n_prime")?, a.res_t()?)?;
+        Ok(Output::Number(v))
+    }
+    pub(super) fn storage_factor(a: &Args) -> Result<Output> {
+        let v = overhead::storage_factor(&a.view()?, a.n_prime("n_prime")?)?;
+        Ok(Output::Number(v))
+    }
+    pub(super) fn critical_resolution(a: &Args) -> Result<Output> {
+        let view = a.view()?;
+        let n_prime = a.n_prime("n_prime")?;
+        // Eq 13, 14 use only the ratio res*_s / res*_t = M_x / M_z, which does not depend on
+        // the image resolution: res_image is validated but does not change the answer.
+        crate::error::positive("res_image", a.num("res_image")?)?;
+        let r = overhead::budget_resolution(&view, n_prime, a.num("budget")?)?;
+        Ok(Output::Numbers(vec![r.res_s, r.res_t]))
+    }
+    pub(super) fn n_prime_lispsm(a: &Args) -> Result<Output> {
+        Ok(Output::Number(warp::n_prime_lispsm(
+            a.num("near")?,
+            a.num("far")?,
+        )?))
+    }
+    pub(super) fn n_prime_from_eta(a: &Args) -> Result<Output> {
+        Ok(Output::NPrime(warp::n_prime_from_eta(
+            a.num("near")?,
+            a.num("far")?,
+            a.num("eta")?,
+        )?))
+    }
+    pub(super) fn eta_from_n_prime(a: &Args) -> Result<Output> {
+        Ok(Output::Number(warp::eta_from_n_prime(
+            a.num("near")?,
+            a.num("far")?,
+            a.n_prime("n_prime")?,
+        )?))
+    }
+    pub(super) fn distribution_g(a: &Args) -> Result<Output> {
+        Ok(Output::Number(subdivided::distribution_g(
+            a.num("alpha")?,
+            a.n_prime("n_warp")?,
+            a.num("z")?,
+        )?))
+    }
+    pub(super) fn subdivided_max_error(a: &Args) -> Result<Output> {
+        // Lloyd 2005's ξ is the contract's eta; its r_s the contract's res_s.
+        let v = subdivided::subdivided_max_error(
+            a.num("alpha")?,
+            a.count("k")?,
+            a.num("eta")?,
+            a.num("half_fov")?,
+            a.num("res_image")?,
+            a.num("res_s")?,
+        )
+        .map_err(|e| rename(rename(e, "xi", "eta"), "res_shadow", "res_s"))?;
+        Ok(Output::Number(v))
+    }
+    pub(super) fn allocate_texels(a: &Args) -> Result<Output> {
+        let errors = a.numbers("errors")?;
+        let mut out = vec![0.0; errors.len()];
+        subdivided::allocate_texels(errors, a.num("total")?, &mut out)?;
+        Ok(Output::Numbers(out))
+    }
+    pub(super) fn z_partition(a: &Args) -> Result<Output> {
+        use crate::analytic::partition::{z_splits, SplitScheme};
+        let scheme = a.choice("scheme")?;
+        // Each optional argument belongs to one scheme: present with another is a mistake.
+        let owner = |arg: &'static str| match arg {
+            "lambda" => "practical",
+            _ => "adaptive",
+        };
+        for arg in ["lambda", "light_angle", "ratio"] {
+            let needed = owner(arg) == scheme;
+            match (a.opt_num(arg).is_some(), needed) {
+                (true, false) => {
+                    return Err(Error::invalid(
+                        arg,
+                        format!(
+                            "is not an argument of z_partition with scheme \"{scheme}\" \
+                             (only of scheme \"{}\")",
+                            owner(arg)
+                        ),
+                    ))
+                }
+                (false, true) => {
+                    return Err(Error::invalid(
+                        arg,
+                        format!("is missing (scheme \"{scheme}\" needs it)"),
+                    ))
+                }
+                _ => {}
+            }
+        }
+        let scheme = match scheme {
+            "self_similar" => SplitScheme::SelfSimilar,
+            "uniform" => SplitScheme::Uniform,
+            "practical" => SplitScheme::Practical {
+                lambda: a.num("lambda")?,
+            },
+            _ => SplitScheme::Adaptive {
+                light_angle: a.num("light_angle")?,
+                ratio: a.num("ratio")?,
+            },
+        };
+        let splits = z_splits(a.num("near")?, a.num("far")?, a.count("k")?, scheme)?;
+        Ok(Output::Numbers(splits.planes().to_vec()))
+    }
+    pub(super) fn scheme_storage_factor(a: &Args) -> Result<Output> {
+        use crate::analytic::partition::{self, Scheme, SchemeLight};
+        let scheme = match a.choice("scheme")? {
+            "zp" => Scheme::Zp,
+            "zp_w" => Scheme::ZpW,
+            "fp_zp_w" => Scheme::FpZpW,
+            _ => Scheme::Optimal,
+        };
+        let light = match a.choice("light")? {
+            "overhead" => SchemeLight::Overhead,
+            _ => SchemeLight::Behind,
+        };
+        let v = partition::scheme_storage_factor(scheme, light, &a.view()?, a.count("k")?)?;
+        Ok(Output::Number(v))
+    }
+    pub(super) fn tilted_mz(a: &Args) -> Result<Output> {
+        let v = tilted::tilted_mz(
+            &a.view()?,
+            a.n_prime("n_prime")?,
+            LightAngle::new(a.num("light_angle")?)?,
+            a.num("z")?,
+            a.res_t()?,
+        )?;
+        Ok(Output::Number(v))
+    }
+    pub(super) fn generalized_n_prime(a: &Args) -> Result<Output> {
+        let falloff = match a.choice("falloff")? {
+            "barroso" => tilted::Falloff::Barroso,
+            _ => tilted::Falloff::Zhang,
+        };
+        let gamma = LightAngle::new(a.num("light_angle")?)?;
+        Ok(Output::NPrime(tilted::generalized_n_prime(
+            &a.view()?,
+            gamma,
+            falloff,
+        )))
+    }
+    pub(super) fn gamma_lim(a: &Args) -> Result<Output> {
+        Ok(Output::Number(tilted::gamma_lim(&a.view()?)))
+    }
+    pub(super) fn tsm_eta(a: &Args) -> Result<Output> {
+        let eta = tsm::tsm_eta(a.num("lambda")?, a.num("delta_prime")?, a.num("xi")?)?;
+        Ok(Output::NPrime(eta))
+    }
+    pub(super) fn zhang_eq(a: &Args) -> Result<Output> {
+        let v = global::zhang_eq(
+            &a.view()?,
+            a.n_prime("lambda")?,
+            LightAngle::new(a.num("light_angle")?)?,
+            a.num("y")?,
+            a.num("z")?,
+        )?;
+        Ok(Output::Number(v))
+    }
+    pub(super) fn zhang_ep(a: &Args) -> Result<Output> {
+        let v = global::zhang_ep(
+            &a.view()?,
+            a.n_prime("lambda")?,
+            LightAngle::new(a.num("light_angle")?)?,
+            a.num("y")?,
+            a.num("z")?,
+        )?;
+        Ok(Output::Number(v))
+    }
+    pub(super) fn zhang_eq_local(a: &Args) -> Result<Output> {
+        let v = global::zhang_eq_local(&a.view()?, a.n_prime("lambda")?, a.num("z")?)?;
+        Ok(Output::Number(v))
+    }
+    pub(super) fn zhang_ep_local(a: &Args) -> Result<Output> {
+        let v = global::zhang_ep_local(&a.view()?, a.n_prime("lambda")?, a.num("z")?)?;
+        Ok(Output::Number(v))
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Requests and answers.
+
+/// The answer to one request.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Answer {
+    /// The requested quantity's name as given, or `None` when the request named none.
+    pub quantity: Option<String>,
+    /// The value, or the error message.
+    pub result: std::result::Result<Output, String>,
+}
+
+impl Answer {
+    /// `{"quantity":NAME,"value":V}` or `{"quantity":NAME,"error":MESSAGE}`.
+    #[must_use]
+    pub fn to_json(&self) -> String {
+        let q = match &self.quantity {
+            Some(name) => Value::String(name.clone()).to_string(),
+            None => "null".to_string(),
+        };
+        match &self.result {
+            Ok(v) => format!("{{\"quantity\":{q},\"value\":{}}}", v.to_json()),
+            Err(e) => format!(
+                "{{\"quantity\":{q},\"error\":{}}}",
+                Value::String(e.clone())
+            ),
+        }
+    }
+}
+
+fn names_list() -> String {
+    QUANTITIES
+        .iter()
+        .map(|q| q.name)
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Answers one request (one JSON value of the input).
+#[must_use]
+pub fn answer(request: &Value) -> Answer {
+    let Value::Object(map) = request else {
+        return Answer {
+            quantity: None,
+            result: Err(format!(
+                "each request must be a JSON object naming a quantity (got {})",
+                describe(request)
+            )),
+        };
+    };
+    let name = match map.get("quantity") {
+        None => {
+            return Answer {
+                quantity: None,
+                result: Err(format!(
+                    "quantity is missing (name one of: {})",
+                    names_list()
+                )),
+            }
+        }
+        Some(Value::String(s)) => s.clone(),
+        Some(other) => {
+            return Answer {
+                quantity: None,
+                result: Err(format!(
+                    "quantity must be a string naming one of: {} (got {})",
+                    names_list(),
+                    describe(other)
+                )),
+            }
+        }
+    };
+    let result = match quantity(&name) {
+        Some(q) => q.evaluate(map),
+        None => {
+            let hint = suggest(&name, QUANTITIES.iter().map(|q| q.name))
+                .map(|s| format!("did you mean {s}? "))
+                .unwrap_or_default();
+            Err(format!(
+                "quantity {} is unknown ({hint}known: {})",
+                Value::String(name.chars().take(60).collect()),
+                names_list()
+            ))
+        }
+    };
+    Answer {
+        quantity: Some(name),
+        result,
+    }
+}
+
+fn rejected(message: String) -> EvalOutcome {
+    EvalOutcome {
+        stdout: String::new(),
+        exit_code: 2,
+        stderr: format!("error: {message}\n"),
+    }
+}
+
+/// Evaluates the text of a request file: the whole of `shadow-aliasing eval`.
+///
+/// Never panics. An object gives one answer, an array an array of answers in the same order
+/// (an element that is not an object is answered with an error); any other input, or text that
+/// is not JSON, gives exit status 2 with one line on standard error.
+///
+/// JSON numbers too large for an `f64` (such as `1e400`) cannot be represented and make the
+/// input malformed (exit 2); write `"inf"` for an infinite value. A leading UTF-8 byte-order
+/// mark is ignored.
+#[must_use]
+pub fn eval_json(input: &str) -> EvalOutcome {
+    // A byte-order mark (as some editors on Windows write) is not part of the JSON text.
+    let input = input.strip_prefix('\u{feff}').unwrap_or(input);
+    let value: Value = match serde_json::from_str(input) {
+        Ok(v) => v,
+        Err(e) => {
+            let what = if input.trim().is_empty() {
+                "the input is empty: expected a JSON object or an array of objects".to_string()
+            } else {
+                format!("the input is not valid JSON: {e}")
+            };
+            return rejected(what);
+        }
+    };
+    match &value {
+        Value::Object(_) => {
+            let a = answer(&value);
+            EvalOutcome {
+                stdout: format!("{}\n", a.to_json()),
+                exit_code: i32::from(a.result.is_err()),
+                stderr: String::new(),
+            }
+        }
+        Value::Array(items) => {
+            let answers: Vec<Answer> = items.iter().map(answer).collect();
+            let failed = answers.iter().any(|a| a.result.is_err());
+            let stdout = if answers.is_empty() {
+                "[]\n".to_string()
+            } else {
+                let lines: Vec<String> = answers
+                    .iter()
+                    .map(|a| format!("  {}", a.to_json()))
+                    .collect();
+                format!("[\n{}\n]\n", lines.join(",\n"))
+            };
+            EvalOutcome {
+                stdout,
+                exit_code: i32::from(failed),
+                stderr: String::new(),
+            }
+        }
+        other => rejected(format!(
+            "the input must be a JSON object or an array of objects (got {})",
+            describe(other)
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn one(input: &str) -> (i32, Value) {
+        let out = eval_json(input);
+        let v: Value = serde_json::from_str(&out.stdout).expect("answer is JSON");
+        (out.exit_code, v)
+    }
+
+    #[test]
+    fn every_quantity_has_distinct_arguments_and_a_source() {
+        for q in QUANTITIES {
+            assert!(!q.source.is_empty());
+            for (i, a) in q.args.iter().enumerate() {
+                assert_ne!(a.name, "quantity");
+                assert!(
+                    q.args[i + 1..].iter().all(|b| b.name != a.name),
+                    "{}",
+                    q.name
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn value_kinds_match_what_each_quantity_answers() {
+        let reqs: Value =
+            serde_json::from_str(include_str!("../examples/eval-request.json")).unwrap();
+        for r in reqs.as_array().unwrap() {
+            let map = r.as_object().unwrap();
+            let q = quantity(map["quantity"].as_str().unwrap()).unwrap();
+            let out = q.evaluate(map).unwrap();
+            let kind = match out {
+                Output::Number(_) => ValueKind::Number,
+                Output::NPrime(_) => ValueKind::NPrime,
+                Output::Numbers(_) => ValueKind::Numbers,
+            };
+            assert_eq!(kind, q.value, "{}", q.name);
+        }
+    }
+
+    #[test]
+    fn numbers_print_shortest_round_trip() {
+        for v in [0.1, 1.0 / 3.0, 1e300, 5e-324, -0.0, 11.0, 123456789.0125] {
+            let s = json_number(v);
+            assert_eq!(s.parse::<f64>().unwrap().to_bits(), v.to_bits(), "{s}");
+        }
+        assert_eq!(json_number(0.1), "0.1");
+        assert_eq!(json_number(f64::INFINITY), "\"inf\"");
+    }
+
+    #[test]
+    fn argument_errors_name_the_argument() {
+        let (code, v) = one(r#"{"quantity":"n_prime_lispsm","near":1}"#);
+        assert_eq!(code, 1);
+        assert_eq!(
+            v["error"],
+            "far is missing (n_prime_lispsm takes near, far)"
+        );
+        let (_, v) = one(r#"{"quantity":"n_prime_lispsm","near":1,"far":2,"nera":3}"#);
+        assert_eq!(
+            v["error"],
+            "nera is not an argument of n_prime_lispsm (did you mean near? n_prime_lispsm takes near, far)"
+        );
+        let (_, v) = one(r#"{"quantity":"n_prime_lispsm","near":"1","far":2}"#);
+        assert_eq!(
+            v["error"],
+            "near must be a number (got string \"1\"; write it without quotes)"
+        );
+        let (_, v) = one(r#"{"quantity":"n_prime_lispsm","near":"nan","far":2}"#);
+        assert_eq!(v["error"], "near must be a finite number (got NaN)");
+        let (_, v) = one(r#"{"quantity":"n_prime_lispsm","near":1,"far":"inf"}"#);
+        assert_eq!(v["error"], "far must be a finite number (got inf)");
+    }
+
+    #[test]
+    fn count_and_choice_and_array_arguments() {
+        let spec = req("k", Count);
+        assert_eq!(parse_arg(&spec, &Value::from(3.0)), Ok(Parsed::Count(3)));
+        assert!(parse_arg(&spec, &Value::from(2.5))
+            .unwrap_err()
+            .contains("whole"));
+        assert!(parse_arg(&spec, &Value::from(0)).is_err());
+        assert!(parse_arg(&spec, &Value::from(1e12))
+            .unwrap_err()
+            .contains("at most"));
+        let spec = req("scheme", ArgKind::Choice(Z_PARTITION_SCHEMES));
+        assert_eq!(
+            parse_arg(&spec, &Value::from("unifrom")).unwrap_err(),
+            "scheme must be one of \"self_similar\", \"uniform\", \"practical\", \"adaptive\" \
+             (got string \"unifrom\"; did you mean \"uniform\"?)"
+        );
+        let spec = req("errors", NumArray);
+        assert_eq!(
+            parse_arg(&spec, &serde_json::json!([1, 2.5])),
+            Ok(Parsed::Numbers(vec![1.0, 2.5]))
+        );
+        assert_eq!(
+            parse_arg(&spec, &serde_json::json!([1, "x"])).unwrap_err(),
+            "errors must be an array of numbers (errors[1] is string \"x\")"
+        );
+        let spec = req("n_prime", ArgKind::NPrime);
+        assert_eq!(
+            parse_arg(&spec, &Value::from("inf")),
+            Ok(Parsed::NPrime(NPrime::Unwarped))
+        );
+        assert!(parse_arg(&spec, &Value::from(-1.0)).is_err());
+        assert!(parse_arg(&spec, &Value::from("-inf")).is_err());
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_ignored() {
+        let out = eval_json("\u{feff}{\"quantity\":\"n_prime_lispsm\",\"near\":1,\"far\":4}");
+        assert_eq!(out.exit_code, 0, "{}", out.stderr);
+    }
+
+    #[test]
+    fn shapes_and_exit_codes() {
+        let out = eval_json("[]");
+        assert_eq!((out.exit_code, out.stdout.as_str()), (0, "[]\n"));
+        let out = eval_json("3");
+        assert_eq!(out.exit_code, 2);
+        assert!(out.stdout.is_empty());
+        assert!(out.stderr.starts_with("error: "));
+        let out = eval_json(
+            r#"[{"quantity":"n_prime_lispsm","near":1,"far":4}, 7, {"quantity":"nope"}]"#,
+        );
+        assert_eq!(out.exit_code, 1);
+        let v: Value = serde_json::from_str(&out.stdout).unwrap();
+        assert_eq!(v[0]["value"], 3.0);
+        assert!(v[1]["quantity"].is_null());
+        assert!(v[2]["error"]
+            .as_str()
+            .unwrap()
+            .starts_with("quantity \"nope\" is unknown"));
+    }
+}

@@ -50,17 +50,20 @@ impl ViewFrustum {
     /// A frustum with the given aspect ratio (width / height); `half_fov` is vertical.
     ///
     /// # Errors
-    /// As [`ViewFrustum::new`], and `aspect` when it is not finite and positive.
+    /// As [`ViewFrustum::new`], `aspect` when it is not finite and positive, and `far` when the far
+    /// plane's half extent `f tan θ · max(aspect, 1)` overflows `f64`.
     pub fn with_aspect(near: f64, far: f64, half_fov: f64, aspect: f64) -> Result<Self> {
         let (near, far) = depths(near, far)?;
         let half_fov = in_open("half_fov", half_fov, 0.0, std::f64::consts::FRAC_PI_2)?;
         let aspect = positive("aspect", aspect)?;
+        let tan_half_fov = half_fov.tan();
+        check_extent(far, tan_half_fov, aspect)?;
         Ok(Self {
             near,
             far,
             half_fov,
             aspect,
-            tan_half_fov: half_fov.tan(),
+            tan_half_fov,
         })
     }
 
@@ -105,7 +108,8 @@ impl ViewFrustum {
     #[inline]
     #[must_use]
     pub fn n_prime_lispsm(&self) -> f64 {
-        self.near + (self.far * self.near).sqrt()
+        // √(f n) without overflow or underflow of the product.
+        self.near + crate::warp::sqrt_fn(self.near, self.far)
     }
 
     /// The same frustum cut to the depth range `[near, far]` (a z-partition).
@@ -115,6 +119,7 @@ impl ViewFrustum {
     #[inline]
     pub fn with_depth_range(&self, near: f64, far: f64) -> Result<Self> {
         let (near, far) = depths(near, far)?;
+        check_extent(far, self.tan_half_fov, self.aspect)?;
         Ok(Self { near, far, ..*self })
     }
 
@@ -157,6 +162,28 @@ fn depths(near: f64, far: f64) -> Result<(f64, f64)> {
         return Err(far_not_beyond_near(near, far));
     }
     Ok((near, far))
+}
+
+/// The far plane's half extent `f tan θ max(aspect, 1)` must be finite.
+#[inline]
+fn check_extent(far: f64, tan_half_fov: f64, aspect: f64) -> Result<()> {
+    if (far * tan_half_fov * aspect.max(1.0)).is_finite() {
+        Ok(())
+    } else {
+        Err(far_too_large(far))
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn far_too_large(far: f64) -> Error {
+    Error::invalid(
+        "far",
+        format!(
+            "is too large: the far plane's half extent f tan θ overflows (got far={})",
+            fmt_num(far)
+        ),
+    )
 }
 
 #[cold]
@@ -361,6 +388,17 @@ mod tests {
         );
         let v = ViewFrustum::new(1.0, 4.0, 0.5).unwrap();
         assert_eq!(v.n_prime_lispsm(), 3.0);
+        // √(f n) computed without underflow: n = 1e-200, f = 1e-150 gives n + 1e-175.
+        let tiny = ViewFrustum::new(1e-200, 1e-150, 0.5).unwrap();
+        assert!((tiny.n_prime_lispsm() - (1e-200 + 1e-175)).abs() <= 1e-189);
+        // A far plane whose extent overflows is refused, naming far.
+        let e = ViewFrustum::new(1.0, 1e308, 1.5).unwrap_err();
+        assert!(e.to_string().starts_with("far is too large"), "{e}");
+        assert!(ViewFrustum::new(1.0, 1e308, 0.5)
+            .unwrap()
+            .corners()
+            .iter()
+            .all(|c| c.is_finite()));
         for c in v.corners() {
             assert!(v.contains(c, 1e-12));
         }

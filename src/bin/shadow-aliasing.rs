@@ -1,2 +1,25 @@
-//! The `shadow-aliasing` command line (being written).
-fn main() {}
+//! The `shadow-aliasing` command line: `figures` (the main job), `eval` (the JSON contract of
+//! docs/eval.md), `warp` (a camera's shadow matrices with their measured error) and `sweep`
+//! (the storage factor over the hemisphere of light directions, as CSV).
+//!
+//! Errors are one line on standard error and a non-zero exit status.
+
+#[path = "shadow-aliasing/args.rs"]
+mod args;
+#[path = "shadow-aliasing/commands.rs"]
+mod commands;
+#[path = "shadow-aliasing/output.rs"]
+mod output;
+#[path = "shadow-aliasing/scheme.rs"]
+mod scheme;
+
+use clap::Parser;
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    let cli = match args::Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return args::clap_exit(&e),
+    };
+    commands::run(cli)
+}

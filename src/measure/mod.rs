@@ -30,7 +30,7 @@ pub mod sweep;
 pub mod tilted_twin;
 pub mod twin;
 
-use crate::error::{Error, Result};
+use crate::error::{finite_result, Error, Result};
 use crate::frustum::{unit_light_dir, Resolutions, ViewFrustum};
 use glam::{DMat4, DVec3, DVec4};
 
@@ -193,7 +193,8 @@ pub struct FrustumError {
 /// vertices; [`frustum_max_sampled`] checks the claim).
 ///
 /// # Errors
-/// As [`point_error`], for any vertex.
+/// As [`point_error`], for any vertex; [`Error::Degenerate`] when M_x, M_z or their product
+/// overflows `f64`.
 pub fn frustum_max(view: &ViewFrustum, shadow: &ShadowMap) -> Result<FrustumError> {
     let corners = view.corners();
     match vertex_max_fast(view, shadow, &corners) {
@@ -215,7 +216,7 @@ pub fn frustum_max(view: &ViewFrustum, shadow: &ShadowMap) -> Result<FrustumErro
 /// m_x = h.w² g / (|D| z tan θ),   m_z = h.w² |D| / (|D| g z tan θ)     (z = −p.z)
 /// ```
 ///
-/// one square root and one division per corner. The light-ray test `|∇s·L| ≤ 10⁻⁷ |∇s|` is
+/// one square root and one division per corner; `None` too when S̄ = M_x M_z overflows. The light-ray test `|∇s·L| ≤ 10⁻⁷ |∇s|` is
 /// scale-free, so it is made on `G_s`, `G_t` in squares, with a 10⁻⁹ relative margin inside
 /// which the point-by-point path decides.
 #[inline]
@@ -262,6 +263,8 @@ fn vertex_max_fast(
         mx = crate::build::warp::fmax(mx, px);
         mz = crate::build::warp::fmax(mz, pz);
     }
+    // An overflowing S̄ is an error `max_over` reports.
+    ok &= (mx * mz).is_finite();
     ok.then_some(FrustumError {
         max_mx: mx,
         max_mz: mz,
@@ -309,9 +312,9 @@ fn max_over(
         mz = mz.max(e.mz);
     }
     Ok(FrustumError {
-        max_mx: mx,
-        max_mz: mz,
-        storage_factor: mx * mz,
+        max_mx: finite_result("M_x", mx)?,
+        max_mz: finite_result("M_z", mz)?,
+        storage_factor: finite_result("the storage factor M_x M_z", mx * mz)?,
     })
 }
 

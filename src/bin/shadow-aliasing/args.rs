@@ -1,0 +1,304 @@
+//! The command line's grammar (clap), with an example in every `--help`.
+
+use clap::error::ErrorKind;
+use clap::{Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// The mathematics of perspective aliasing in shadow maps: the papers' figures, their closed
+/// forms from JSON, a camera's shadow matrices with their measured error, and hemisphere sweeps.
+#[derive(Debug, Parser)]
+#[command(
+    name = "shadow-aliasing",
+    version,
+    after_help = "Examples:\n  shadow-aliasing figures --out figures\n  shadow-aliasing eval examples/eval-request.json\n  shadow-aliasing warp --near 1 --far 100 --half-fov 0.5236 --light-dir 0,-1,0 --warp lispsm\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm-sin > sweep.csv"
+)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Write every figure of the papers (PNG and SVG) into a directory.
+    #[command(
+        after_help = "Example:\n  shadow-aliasing figures --out figures --format svg --only lloyd2006-fig6 zhang-fig3"
+    )]
+    Figures(FiguresArgs),
+    /// Evaluate closed forms from JSON (docs/eval.md): one object or an array of objects.
+    #[command(
+        after_help = "Example:\n  echo '{\"quantity\": \"storage_factor\", \"near\": 1, \"far\": 100, \"half_fov\": 0.5236, \"n_prime\": 11}' | shadow-aliasing eval\n\nExit status: 0 every request answered with a value, 1 at least one answered with an error,\n2 the input is not JSON of the contract's shape."
+    )]
+    Eval(EvalArgs),
+    /// Print a camera's shadow matrices for a light, with their measured aliasing error.
+    #[command(
+        after_help = "Example:\n  shadow-aliasing warp --near 1 --far 100 --half-fov 0.5236 --light-dir 0,-1,0 --warp lispsm --partition log --k 4 --json"
+    )]
+    Warp(WarpArgs),
+    /// The storage factor over the hemisphere of light directions, as CSV on standard output.
+    #[command(
+        after_help = "Example:\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm-sin --elevations 90 --azimuths 360 > sweep.csv\n\nColumns: elevation,azimuth,storage_factor (radians). Elevation rows i = 0..E-1 at i·(π/2)/(E-1)\n(0 the horizon, π/2 overhead; both ends included; E = 1 is the zenith); azimuth columns j = 0..A-1 at j·2π/A\n(0 behind the viewer, π in front; 2π excluded)."
+    )]
+    Sweep(SweepArgs),
+}
+
+/// `figures` arguments.
+#[derive(Debug, clap::Args)]
+pub struct FiguresArgs {
+    /// Directory to write into (created when missing).
+    #[arg(long, value_name = "DIR", default_value = "figures")]
+    pub out: PathBuf,
+    /// Image format.
+    #[arg(long, value_enum, default_value_t = Format::Both)]
+    pub format: Format,
+    /// Only these figures (for instance lloyd2006-fig7); all of them when absent.
+    #[arg(
+        long,
+        value_name = "NAME",
+        num_args = 1..,
+        value_parser = clap::builder::PossibleValuesParser::new(shadow_aliasing::plot::FIGURES)
+    )]
+    pub only: Vec<String>,
+}
+
+/// Image formats of `figures`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    /// PNG only.
+    Png,
+    /// SVG only.
+    Svg,
+    /// PNG and SVG.
+    Both,
+}
+
+/// `eval` arguments.
+#[derive(Debug, clap::Args)]
+pub struct EvalArgs {
+    /// A JSON request file; standard input when absent or "-".
+    #[arg(value_name = "FILE")]
+    pub file: Option<PathBuf>,
+}
+
+/// The camera: view frustum of a square image.
+#[derive(Debug, Clone, clap::Args)]
+pub struct CameraArgs {
+    /// Near plane depth (> 0).
+    #[arg(long, allow_negative_numbers = true)]
+    pub near: f64,
+    /// Far plane depth (> near).
+    #[arg(long, allow_negative_numbers = true)]
+    pub far: f64,
+    /// Half of the vertical field of view, radians (0 < half_fov < π/2).
+    #[arg(
+        long = "half-fov",
+        value_name = "RADIANS",
+        allow_negative_numbers = true
+    )]
+    pub half_fov: f64,
+}
+
+/// A scheme: warp rule and partition.
+#[derive(Debug, Clone, clap::Args)]
+pub struct SchemeArgs {
+    /// The map and its n′ rule.
+    #[arg(long, value_enum)]
+    pub warp: WarpName,
+    /// η ∈ [−1, 1] for `--warp eta` (−1 unwarped, 0 LiSPSM, 1 PSM).
+    #[arg(long, allow_negative_numbers = true)]
+    pub eta: Option<f64>,
+    /// TSM's focus distance δ beyond the near plane of each map's (sub)frustum, world units
+    /// (default: half the depth range of the shallowest z-partition).
+    #[arg(long, allow_negative_numbers = true)]
+    pub focus: Option<f64>,
+    /// Filament's near hint (`ShadowOptions::shadowNearHint`), with `--warp filament`.
+    #[arg(
+        long = "near-hint",
+        requires = "far_hint",
+        allow_negative_numbers = true
+    )]
+    pub near_hint: Option<f64>,
+    /// Filament's far hint (`ShadowOptions::shadowFarHint`), with `--warp filament`.
+    #[arg(
+        long = "far-hint",
+        requires = "near_hint",
+        allow_negative_numbers = true
+    )]
+    pub far_hint: Option<f64>,
+    /// How the view frustum is partitioned.
+    #[arg(long, value_enum, default_value_t = PartitionName::Single)]
+    pub partition: PartitionName,
+    /// Number of z-partitions (inside each face for `faces`).
+    #[arg(long, default_value_t = 1)]
+    pub k: usize,
+    /// Blend of `practical` partitions: 0 uniform, 1 logarithmic.
+    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
+    pub lambda: f64,
+}
+
+/// Warp rules by name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum WarpName {
+    /// No warp: an orthographic map fitted to the frustum (n′ = ∞).
+    Uniform,
+    /// n′ from η (`--eta`).
+    Eta,
+    /// Perspective shadow map: n′ = n.
+    Psm,
+    /// LiSPSM: n′ = n + √(f n) of each (sub)frustum (Lloyd 2006 §4.1).
+    Lispsm,
+    /// LiSPSM's n′ divided by sin γ (Lloyd 2006 §4.4).
+    LispsmSin,
+    /// Barroso & Celes' generalised n′ with their fall-off (Eq 18).
+    Barroso,
+    /// Barroso & Celes' generalised n′ with Zhang's fall-off (Eq 17).
+    BarrosoZhang,
+    /// The n′ that minimises the storage factor S̄ = M_x M_z of the fitted map, never worse than
+    /// uniform (this crate; the library's default).
+    Minimax,
+    /// The n′ that minimises the maximum z error M_z alone (this crate).
+    MinimaxMz,
+    /// Trapezoidal shadow map with the 80% rule (Martin & Tan).
+    Tsm,
+    /// The LiSPSM reference code's d/(√(z1/z0) − 1).
+    LispsmReference,
+    /// Filament's rule (default hints, or `--near-hint` and `--far-hint`).
+    Filament,
+    /// OGRE's default rule.
+    Ogre,
+}
+
+/// Partition schemes by name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum PartitionName {
+    /// One map for the whole frustum.
+    Single,
+    /// z-partitions of equal depth.
+    Uniform,
+    /// Self-similar (logarithmic) z-partitions (Lloyd 2006 Eq 15, 16).
+    Log,
+    /// The λ-blend of uniform and logarithmic (`--lambda`).
+    Practical,
+    /// Barroso & Celes' adaptive z-partitions (Eq 19), γ from the light, α = 2.
+    Adaptive,
+    /// Face partitions (Lloyd 2006 §5.1), with `--k` z-partitions inside each face.
+    Faces,
+}
+
+/// `warp` arguments.
+#[derive(Debug, clap::Args)]
+pub struct WarpArgs {
+    #[command(flatten)]
+    pub camera: CameraArgs,
+    /// Direction the light travels, eye space (camera at the origin looking down −Z, Y up): x,y,z.
+    #[arg(long = "light-dir", value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = parse_vec3)]
+    pub light_dir: [f64; 3],
+    #[command(flatten)]
+    pub scheme: SchemeArgs,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `sweep` arguments.
+#[derive(Debug, clap::Args)]
+pub struct SweepArgs {
+    #[command(flatten)]
+    pub camera: CameraArgs,
+    #[command(flatten)]
+    pub scheme: SchemeArgs,
+    /// Number of elevation rows, evenly over [0, π/2] both ends included (1 gives the zenith only).
+    #[arg(long, default_value_t = 90)]
+    pub elevations: usize,
+    /// Number of azimuth columns, evenly over [0, 2π), 2π excluded (≥ 1).
+    #[arg(long, default_value_t = 360)]
+    pub azimuths: usize,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    pub threads: Option<usize>,
+}
+
+/// Parses `x,y,z`.
+fn parse_vec3(s: &str) -> Result<[f64; 3], String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 3 {
+        return Err(format!("expected three numbers x,y,z (got {s:?})"));
+    }
+    let mut out = [0.0; 3];
+    for (o, p) in out.iter_mut().zip(&parts) {
+        *o = p
+            .parse::<f64>()
+            .map_err(|_| format!("expected three numbers x,y,z ({p:?} is not a number)"))?;
+        if !o.is_finite() {
+            return Err(format!("expected three finite numbers x,y,z (got {p})"));
+        }
+    }
+    Ok(out)
+}
+
+/// Prints help and version as clap does; any other parse error as one line, exit status 2.
+pub fn clap_exit(e: &clap::Error) -> ExitCode {
+    match e.kind() {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            let _ = e.print();
+            ExitCode::SUCCESS
+        }
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            let _ = e.print();
+            ExitCode::from(2)
+        }
+        _ => {
+            let text = e.render().to_string();
+            let first = one_line(&text);
+            let hint = if first.contains("--help") {
+                String::new()
+            } else {
+                " (see --help)".to_string()
+            };
+            crate::commands::to_stderr(&format!("{first}{hint}\n"));
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// The first paragraph of clap's message on one line: "error: the following required
+/// arguments were not provided: --far <FAR> --half-fov <RADIANS>".
+fn one_line(text: &str) -> String {
+    let mut out = String::new();
+    for line in text.lines().skip_while(|l| l.trim().is_empty()) {
+        if line.trim().is_empty() {
+            break;
+        }
+        if !out.is_empty() {
+            out.push(' ');
+        }
+        out.push_str(line.trim());
+    }
+    if out.is_empty() {
+        "error: invalid arguments".to_string()
+    } else {
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn vec3_parsing() {
+        assert_eq!(parse_vec3("0,-1,0"), Ok([0.0, -1.0, 0.0]));
+        assert_eq!(parse_vec3(" 1, 2 ,3"), Ok([1.0, 2.0, 3.0]));
+        assert!(parse_vec3("1,2").is_err());
+        assert!(parse_vec3("1,x,2").is_err());
+        assert!(parse_vec3("1,inf,2").is_err());
+    }
+
+    #[test]
+    fn grammar_is_consistent() {
+        use clap::CommandFactory;
+        Cli::command().debug_assert();
+    }
+}

@@ -1,0 +1,327 @@
+//! What each subcommand does.
+
+use crate::args::{Cli, Command, EvalArgs, FiguresArgs, Format, SweepArgs, WarpArgs};
+use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
+use crate::scheme::{partition, partitions, rule, PartitionReport};
+use glam::DVec3;
+use shadow_aliasing::{LightAngle, ViewFrustum};
+use std::fmt::Write as _;
+use std::io::{Read, Write};
+use std::process::ExitCode;
+
+/// Runs the parsed command line.
+pub fn run(cli: Cli) -> ExitCode {
+    match cli.command {
+        Command::Eval(a) => eval(&a),
+        Command::Warp(a) => warp(&a),
+        Command::Sweep(a) => sweep(&a),
+        Command::Figures(a) => figures(&a),
+    }
+}
+
+/// Writes to standard error, ignoring a closed or failing stream (`eprintln!` would panic).
+pub fn to_stderr(text: &str) {
+    let _ = std::io::stderr().lock().write_all(text.as_bytes());
+}
+
+/// One line on standard error, exit status 1.
+pub fn fail(message: impl std::fmt::Display) -> ExitCode {
+    to_stderr(&format!("error: {message}\n"));
+    ExitCode::from(1)
+}
+
+fn eval(a: &EvalArgs) -> ExitCode {
+    let mut bytes = Vec::new();
+    let read = match a.file.as_deref() {
+        None => std::io::stdin().read_to_end(&mut bytes).map(|_| ()),
+        Some(p) if p.as_os_str() == "-" => std::io::stdin().read_to_end(&mut bytes).map(|_| ()),
+        Some(p) => std::fs::read(p).map(|b| bytes = b),
+    };
+    if let Err(e) = read {
+        let what = a
+            .file
+            .as_deref()
+            .map_or("standard input".to_string(), |p| p.display().to_string());
+        to_stderr(&format!("error: cannot read {what}: {e}\n"));
+        return ExitCode::from(2);
+    }
+    let Ok(text) = String::from_utf8(bytes) else {
+        to_stderr("error: the input is not UTF-8 text\n");
+        return ExitCode::from(2);
+    };
+    let out = shadow_aliasing::eval::eval_json(&text);
+    let mut stdout = std::io::stdout().lock();
+    if stdout
+        .write_all(out.stdout.as_bytes())
+        .and_then(|()| stdout.flush())
+        .is_err()
+    {
+        // A closed pipe: nothing more useful can be said on standard output.
+        return ExitCode::from(2);
+    }
+    to_stderr(&out.stderr);
+    ExitCode::from(u8::try_from(out.exit_code).unwrap_or(2))
+}
+
+/// Writes `text` to standard output; a closed pipe is not an error worth a message.
+fn print(text: &str) -> ExitCode {
+    print_bytes(text.as_bytes())
+}
+
+/// As [`print`], for bytes.
+fn print_bytes(bytes: &[u8]) -> ExitCode {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(bytes).and_then(|()| out.flush()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(e) => fail(format!("cannot write to standard output: {e}")),
+    }
+}
+
+fn warp(a: &WarpArgs) -> ExitCode {
+    let c = &a.camera;
+    let view = match ViewFrustum::new(c.near, c.far, c.half_fov) {
+        Ok(v) => v,
+        Err(e) => return fail(e),
+    };
+    let light = DVec3::from_array(a.light_dir);
+    let parts = match partitions(&view, light, &a.scheme) {
+        Ok(p) => p,
+        Err(e) => return fail(e),
+    };
+    let total: f64 = parts.iter().map(|p| p.storage_factor).sum();
+    let text = if a.json {
+        warp_json(total, &parts)
+    } else {
+        let gamma = LightAngle::from_light_dir(light)
+            .map(LightAngle::radians)
+            .unwrap_or(f64::NAN);
+        warp_text(a, gamma, total, &parts)
+    };
+    print(&text)
+}
+
+/// The JSON of issue 3: `storage_factor` summed, and one object per partition.
+fn warp_json(total: f64, parts: &[PartitionReport]) -> String {
+    let mut s = format!(
+        "{{\n  \"storage_factor\": {},\n  \"partitions\": [\n",
+        json_num(total)
+    );
+    for (i, p) in parts.iter().enumerate() {
+        let m: Vec<String> = p
+            .matrix
+            .to_cols_array()
+            .iter()
+            .map(|v| json_num(*v))
+            .collect();
+        let _ = writeln!(
+            s,
+            "    {{{}\"near\": {}, \"far\": {}, \"n_prime\": {}, \"max_mx\": {}, \"max_mz\": {}, \"storage_factor\": {}, \"matrix\": [{}]}}{}",
+            p.face
+                .as_ref()
+                .map_or_else(String::new, |f| format!("\"face\": \"{f}\", ")),
+            json_num(p.near),
+            json_num(p.far),
+            json_n_prime(p.n_prime),
+            json_num(p.max_mx),
+            json_num(p.max_mz),
+            json_num(p.storage_factor),
+            m.join(", "),
+            if i + 1 < parts.len() { "," } else { "" }
+        );
+    }
+    s.push_str("  ]\n}\n");
+    s
+}
+
+fn warp_text(a: &WarpArgs, gamma: f64, total: f64, parts: &[PartitionReport]) -> String {
+    let c = &a.camera;
+    let sch = &a.scheme;
+    let [lx, ly, lz] = a.light_dir;
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "camera: near {}, far {}, half_fov {} rad; light travels along ({}, {}, {}) in eye space, {}° from the view direction",
+        sig(c.near),
+        sig(c.far),
+        sig(c.half_fov),
+        sig(lx),
+        sig(ly),
+        sig(lz),
+        sig(gamma.to_degrees())
+    );
+    let _ = writeln!(
+        s,
+        "scheme: warp {}, partition {}, k {}",
+        value_name(&sch.warp),
+        value_name(&sch.partition),
+        sch.k
+    );
+    let _ = writeln!(
+        s,
+        "storage factor S̄ = {} (summed over {} partition{}, unit resolutions)",
+        sig(total),
+        parts.len(),
+        if parts.len() == 1 { "" } else { "s" }
+    );
+    for (i, p) in parts.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "\npartition {} of {}{}: depth [{}, {}], n′ = {}",
+            i + 1,
+            parts.len(),
+            p.face
+                .as_ref()
+                .map_or_else(String::new, |f| format!(" ({f} face)")),
+            sig(p.near),
+            sig(p.far),
+            sig_n_prime(p.n_prime)
+        );
+        let _ = writeln!(
+            s,
+            "  M_x = {}   M_z = {}   S̄ = {}",
+            sig(p.max_mx),
+            sig(p.max_mz),
+            sig(p.storage_factor)
+        );
+        let _ = writeln!(
+            s,
+            "  matrix (eye space → light clip space, OpenGL depth [-1, 1]), by rows:"
+        );
+        let cells: Vec<Vec<String>> = (0..4)
+            .map(|r| p.matrix.row(r).to_array().iter().map(|v| sig(*v)).collect())
+            .collect();
+        let width = cells
+            .iter()
+            .flatten()
+            .map(|c| c.chars().count())
+            .max()
+            .unwrap_or(1);
+        for row in cells {
+            let padded: Vec<String> = row.iter().map(|c| format!("{c:>width$}")).collect();
+            let _ = writeln!(s, "    [ {} ]", padded.join("  "));
+        }
+    }
+    s
+}
+
+/// The command-line spelling of a value (`lispsm-sin`).
+fn value_name<T: clap::ValueEnum>(v: &T) -> String {
+    v.to_possible_value()
+        .map_or_else(|| "?".to_string(), |p| p.get_name().to_string())
+}
+
+fn figures(a: &FiguresArgs) -> ExitCode {
+    use shadow_aliasing::plot::{self, FIGURES};
+    use std::io::IsTerminal;
+    let format = match a.format {
+        Format::Png => plot::Format::Png,
+        Format::Svg => plot::Format::Svg,
+        Format::Both => plot::Format::Both,
+    };
+    let names: Vec<&str> = FIGURES
+        .iter()
+        .copied()
+        .filter(|n| a.only.is_empty() || a.only.iter().any(|o| o == n))
+        .collect();
+    let count = names.len();
+    let bar = if std::io::stderr().is_terminal() {
+        let bar = indicatif::ProgressBar::new(count as u64);
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "{spinner} [{elapsed_precise}] {bar:30} {pos}/{len} {msg}",
+        ) {
+            bar.set_style(style);
+        }
+        bar.enable_steady_tick(std::time::Duration::from_millis(120));
+        Some(bar)
+    } else {
+        None
+    };
+    let start = std::time::Instant::now();
+    let mut result = Ok(Vec::new());
+    for name in &names {
+        if let Some(b) = &bar {
+            b.set_message(*name);
+        }
+        match plot::render(name, &a.out, format) {
+            Ok(files) => {
+                if let Ok(all) = &mut result {
+                    all.extend(files);
+                }
+            }
+            Err(e) => {
+                result = Err(e);
+                break;
+            }
+        }
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    }
+    if let Some(b) = bar {
+        b.finish_and_clear();
+    }
+    match result {
+        Ok(files) => print(&format!(
+            "wrote {} files ({} figure{}) to {} in {:.1} s\n",
+            files.len(),
+            count,
+            if count == 1 { "" } else { "s" },
+            a.out.display(),
+            start.elapsed().as_secs_f64()
+        )),
+        Err(e) => fail(e),
+    }
+}
+
+fn sweep(a: &SweepArgs) -> ExitCode {
+    use shadow_aliasing::measure::sweep::{sweep, SweepGrid};
+    let c = &a.camera;
+    let view = match ViewFrustum::new(c.near, c.far, c.half_fov) {
+        Ok(v) => v,
+        Err(e) => return fail(e),
+    };
+    let r = match rule(&view, None, &a.scheme) {
+        Ok(r) => r,
+        Err(e) => return fail(e),
+    };
+    let grid = match SweepGrid::new(a.elevations, a.azimuths) {
+        Ok(g) => g,
+        Err(e) => return fail(e),
+    };
+    let run = || sweep(&view, r, partition(&a.scheme), a.scheme.k, grid);
+    let result = match a.threads {
+        None => run(),
+        Some(0) => return fail("threads must be at least 1 (got 0)"),
+        Some(t) => match rayon::ThreadPoolBuilder::new().num_threads(t).build() {
+            Ok(pool) => pool.install(run),
+            Err(e) => return fail(format!("threads: cannot start {t} threads: {e}")),
+        },
+    };
+    let s = match result {
+        Ok(s) => s,
+        Err(e) => return fail(e),
+    };
+    // Shortest round-trip numbers (ryu, through serde_json), the grid's strings computed once,
+    // everything written into one buffer and then to standard output in one go.
+    let azimuths: Vec<String> = (0..grid.azimuths())
+        .map(|j| json_num(grid.azimuth(j)))
+        .collect();
+    let mut out: Vec<u8> = Vec::with_capacity(64 * (grid.len() + 1));
+    out.extend_from_slice(b"elevation,azimuth,storage_factor\n");
+    for (i, row) in s.storage_factor.chunks(grid.azimuths()).enumerate() {
+        let el = json_num(grid.elevation(i));
+        for (az, v) in azimuths.iter().zip(row) {
+            out.extend_from_slice(el.as_bytes());
+            out.push(b',');
+            out.extend_from_slice(az.as_bytes());
+            out.push(b',');
+            if serde_json::to_writer(&mut out, v).is_err() {
+                // Only a non-finite value fails, and the sweep never returns one.
+                out.extend_from_slice(json_num(*v).as_bytes());
+            }
+            out.push(b'\n');
+        }
+    }
+    print_bytes(&out)
+}

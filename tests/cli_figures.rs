@@ -1,0 +1,163 @@
+//! `shadow-aliasing figures`: the real binary writes the files issue 4 names, as valid,
+//! non-trivial PNG and SVG images, with a one-line summary; bad arguments are one line and a
+//! non-zero exit.
+#![cfg(feature = "cli")]
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The file names issue 4 fixes, so that links and scripts can rely on them.
+const NAMES: [&str; 11] = [
+    "lloyd2005-fig4",
+    "lloyd2005-fig7",
+    "lloyd2006-fig5",
+    "lloyd2006-fig6",
+    "lloyd2006-fig7",
+    "lloyd2006-fig10",
+    "lloyd2006-fig12",
+    "lloyd2006-fig13",
+    "barroso-fig7",
+    "zhang-fig3",
+    "martin-tan-fig6",
+];
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
+        .args(args)
+        .output()
+        .expect("the binary runs");
+    (
+        out.status.code().expect("exited normally"),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+fn temp_dir(tag: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("sa-cli-figures-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+/// A PNG: signature, an IHDR chunk of a plausible size, an IEND chunk, and more than a few
+/// kilobytes (a blank image of that size compresses to far less).
+fn check_png(path: &Path) {
+    let b = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert_eq!(&b[..8], b"\x89PNG\r\n\x1a\n", "{}", path.display());
+    assert_eq!(&b[12..16], b"IHDR");
+    let w = u32::from_be_bytes(b[16..20].try_into().unwrap());
+    let h = u32::from_be_bytes(b[20..24].try_into().unwrap());
+    assert!(w >= 300 && h >= 200, "{}: {w}×{h}", path.display());
+    assert_eq!(&b[b.len() - 8..b.len() - 4], b"IEND");
+    assert!(
+        b.len() > 8_000,
+        "{}: only {} bytes",
+        path.display(),
+        b.len()
+    );
+}
+
+/// An SVG: an `<svg` root closed at the end, with text (titles and labels) and drawn shapes.
+fn check_svg(path: &Path) {
+    let s = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert!(s.contains("<svg"), "{}", path.display());
+    assert!(s.trim_end().ends_with("</svg>"), "{}", path.display());
+    assert!(s.contains("<text"), "{}: no text", path.display());
+    let shapes = [
+        "<path",
+        "<polyline",
+        "<rect",
+        "<line",
+        "<circle",
+        "<polygon",
+    ]
+    .iter()
+    .map(|t| s.matches(t).count())
+    .sum::<usize>();
+    assert!(shapes > 20, "{}: {shapes} shapes", path.display());
+}
+
+#[test]
+fn only_and_format_select_the_files() {
+    let dir = temp_dir("only");
+    let (code, out, err) = run(&[
+        "figures",
+        "--out",
+        dir.to_str().unwrap(),
+        "--format",
+        "svg",
+        "--only",
+        "zhang-fig3",
+        "barroso-fig7",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let mut files: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    files.sort();
+    assert_eq!(files, ["barroso-fig7.svg", "zhang-fig3.svg"]);
+    for f in &files {
+        check_svg(&dir.join(f));
+    }
+    // One summary line: files written and time; no progress bar when stderr is not a terminal.
+    assert_eq!(out.lines().count(), 1, "{out}");
+    assert!(out.contains("2 files"), "{out}");
+    assert!(err.is_empty(), "{err}");
+    let (code, _, err) = run(&[
+        "figures",
+        "--out",
+        dir.to_str().unwrap(),
+        "--format",
+        "png",
+        "--only",
+        "barroso-fig7",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    check_png(&dir.join("barroso-fig7.png"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn bad_arguments_are_one_line_and_a_non_zero_exit() {
+    let dir = temp_dir("bad");
+    let d = dir.to_str().unwrap();
+    for (args, needle) in [
+        (
+            vec!["figures", "--out", d, "--only", "lloyd2006-fig99"],
+            "lloyd2006-fig99",
+        ),
+        (vec!["figures", "--out", d, "--format", "gif"], "--format"),
+        (vec!["figures", "--out", "/dev/null/x"], "/dev/null/x"),
+    ] {
+        let (code, out, err) = run(&args);
+        assert_ne!(code, 0, "{args:?}");
+        assert!(out.is_empty(), "{args:?}: {out}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn every_figure_in_both_formats() {
+    let dir = temp_dir("all");
+    let (code, out, err) = run(&["figures", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("22 files"), "{out}");
+    for name in NAMES {
+        check_png(&dir.join(format!("{name}.png")));
+        check_svg(&dir.join(format!("{name}.svg")));
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn help_has_an_example_and_the_names() {
+    let (code, out, _) = run(&["figures", "--help"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("shadow-aliasing figures --out"), "{out}");
+    for name in NAMES {
+        assert!(out.contains(name), "{name} not in --help");
+    }
+}

@@ -1,0 +1,404 @@
+//! `shadow-aliasing warp`: the real binary. Expected storage factors are Lloyd 2006's closed forms
+//! evaluated here by hand (Eq 12, 18, 20); the matrices are checked by what they do to the view
+//! frustum's corners.
+#![cfg(feature = "cli")]
+
+use serde_json::Value;
+use std::process::Command;
+
+#[allow(clippy::approx_constant)] // the command line's 0.5236 of issue 3, not π/6
+const HALF_FOV: f64 = 0.5236;
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
+        .args(args)
+        .output()
+        .expect("the binary runs");
+    (
+        out.status.code().expect("exited normally"),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+fn warp_json(extra: &[&str]) -> Value {
+    let mut args = vec![
+        "warp",
+        "--near",
+        "1",
+        "--far",
+        "100",
+        "--half-fov",
+        "0.5236",
+        "--json",
+    ];
+    args.extend_from_slice(extra);
+    let (code, out, err) = run(&args);
+    assert_eq!(code, 0, "{args:?}: {err}");
+    assert!(err.is_empty(), "{err}");
+    serde_json::from_str(&out).unwrap_or_else(|e| panic!("{out}: {e}"))
+}
+
+fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * b.abs().max(1e-300)
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().unwrap_or_else(|| panic!("{v} is a number"))
+}
+
+/// The eight corners of the view frustum of depth range [n, f], eye space.
+fn corners(n: f64, f: f64) -> Vec<[f64; 3]> {
+    let t = HALF_FOV.tan();
+    let mut out = Vec::new();
+    for d in [n, f] {
+        for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            out.push([sx * d * t, sy * d * t, -d]);
+        }
+    }
+    out
+}
+
+/// Column-major 4×4 times (p, 1), divided by w; w must be positive.
+fn project(m: &[f64], p: [f64; 3]) -> [f64; 3] {
+    let h: Vec<f64> = (0..4)
+        .map(|r| m[r] * p[0] + m[4 + r] * p[1] + m[8 + r] * p[2] + m[12 + r])
+        .collect();
+    assert!(h[3] > 0.0, "w = {} at {p:?}", h[3]);
+    [h[0] / h[3], h[1] / h[3], h[2] / h[3]]
+}
+
+/// Checks the JSON shape of issue 3 and that each z-partition's matrix maps its sub-frustum's
+/// corners into the clip volume [−1, 1]³ (a face partition covers only part of its depth range,
+/// so its corners are not checked); returns the partitions.
+fn check_shape(v: &Value) -> Vec<Value> {
+    check_shape_with(v, true)
+}
+
+fn check_shape_with(v: &Value, corners_inside: bool) -> Vec<Value> {
+    let parts = v["partitions"]
+        .as_array()
+        .expect("partitions array")
+        .clone();
+    assert!(!parts.is_empty());
+    let mut sum = 0.0;
+    for p in &parts {
+        let m: Vec<f64> = p["matrix"]
+            .as_array()
+            .expect("matrix array")
+            .iter()
+            .map(num)
+            .collect();
+        assert_eq!(m.len(), 16);
+        let (n, f) = (num(&p["near"]), num(&p["far"]));
+        assert!(n > 0.0 && f >= n);
+        let (mx, mz, s) = (
+            num(&p["max_mx"]),
+            num(&p["max_mz"]),
+            num(&p["storage_factor"]),
+        );
+        assert!(close(mx * mz, s, 1e-12), "{p}");
+        sum += s;
+        for c in corners(n, f).into_iter().filter(|_| corners_inside) {
+            for x in project(&m, c) {
+                assert!((-1.0 - 1e-9..=1.0 + 1e-9).contains(&x), "{c:?} → {x}: {p}");
+            }
+        }
+    }
+    assert!(close(num(&v["storage_factor"]), sum, 1e-12));
+    parts
+}
+
+#[test]
+fn lispsm_light_overhead_is_lloyd_2006_eq_12() {
+    let v = warp_json(&["--light-dir", "0,-1,0", "--warp", "lispsm"]);
+    let parts = check_shape(&v);
+    assert_eq!(parts.len(), 1);
+    assert_eq!(
+        (num(&parts[0]["near"]), num(&parts[0]["far"])),
+        (1.0, 100.0)
+    );
+    // n′ ≤ n′_LSPSM: S̄ = (f/n − 1)/(2 tan θ).
+    let want = 99.0 / (2.0 * HALF_FOV.tan());
+    assert!(close(num(&v["storage_factor"]), want, 1e-9), "{v}");
+    // LiSPSM makes M_z equal on the near and far planes; M_x = m_x(n) = f/(n′ + f − n) · (n′/n)
+    // with n′ = 11: 100 · 11 / 110 = 10.
+    assert!(close(num(&parts[0]["max_mx"]), 10.0, 1e-9), "{v}");
+    assert_eq!(parts[0]["n_prime"], 11.0);
+}
+
+#[test]
+fn log_partitions_with_lispsm_are_lloyd_2006_eq_18() {
+    let v = warp_json(&[
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "lispsm",
+        "--partition",
+        "log",
+        "--k",
+        "4",
+    ]);
+    let parts = check_shape(&v);
+    assert_eq!(parts.len(), 4);
+    // Planes n (f/n)^{i/k}: 1, √10, 10, 10√10, 100.
+    let planes = [1.0, 10f64.sqrt(), 10.0, 1000f64.sqrt(), 100.0];
+    for (i, p) in parts.iter().enumerate() {
+        assert!(close(num(&p["near"]), planes[i], 1e-12), "{p}");
+        assert!(close(num(&p["far"]), planes[i + 1], 1e-12), "{p}");
+    }
+    // S̄_ZP+W = k ((f/n)^{1/k} − 1)/(2 tan θ).
+    let want = 4.0 * (10f64.sqrt() - 1.0) / (2.0 * HALF_FOV.tan());
+    assert!(close(num(&v["storage_factor"]), want, 1e-9), "{v}");
+}
+
+#[test]
+fn uniform_map_with_the_light_behind_is_lloyd_2006_eq_20() {
+    // Light travelling along the view direction: S̄ = (f/n)² (Eq 20 with k = 1).
+    let v = warp_json(&["--light-dir", "0,0,-1", "--warp", "uniform"]);
+    check_shape(&v);
+    assert!(close(num(&v["storage_factor"]), 1e4, 1e-9), "{v}");
+    assert_eq!(v["partitions"][0]["n_prime"], "inf");
+    // And with self-similar z-partitions: k (f/n)^{2/k} = 2 · 100 at k = 2.
+    let v = warp_json(&[
+        "--light-dir",
+        "0,0,-1",
+        "--warp",
+        "uniform",
+        "--partition",
+        "log",
+        "--k",
+        "2",
+    ]);
+    check_shape(&v);
+    assert!(close(num(&v["storage_factor"]), 200.0, 1e-9), "{v}");
+}
+
+#[test]
+fn face_partitions_are_lloyd_2006_eq_19_and_21() {
+    // Overhead the light sees one face: S̄ = k ((f/n)^{1/k} − 1)/(2 tan θ) (Eq 19) = 2·9/(2 tan θ).
+    let v = warp_json(&[
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "lispsm",
+        "--partition",
+        "faces",
+        "--k",
+        "2",
+    ]);
+    check_shape_with(&v, false);
+    assert!(
+        close(num(&v["storage_factor"]), 9.0 / HALF_FOV.tan(), 1e-9),
+        "{v}"
+    );
+    // Behind: four side faces of k maps each and the near face, 4 k (a − 1)/2 + 1 = 37 (Eq 21).
+    let v = warp_json(&[
+        "--light-dir",
+        "0,0,-1",
+        "--warp",
+        "lispsm",
+        "--partition",
+        "faces",
+        "--k",
+        "2",
+    ]);
+    let parts = check_shape_with(&v, false);
+    assert_eq!(parts.len(), 9);
+    assert!(close(num(&v["storage_factor"]), 37.0, 1e-9), "{v}");
+    let faces: Vec<&str> = parts.iter().map(|p| p["face"].as_str().unwrap()).collect();
+    for f in ["bottom", "right", "top", "left"] {
+        assert_eq!(faces.iter().filter(|x| **x == f).count(), 2, "{faces:?}");
+    }
+    assert_eq!(
+        faces.iter().filter(|x| **x == "near").count(),
+        1,
+        "{faces:?}"
+    );
+}
+
+#[test]
+fn every_warp_and_partition_gives_finite_matrices_for_a_tilted_light() {
+    let warps = [
+        "uniform",
+        "psm",
+        "lispsm",
+        "lispsm-sin",
+        "barroso",
+        "barroso-zhang",
+        "minimax",
+        "minimax-mz",
+        "tsm",
+        "lispsm-reference",
+        "filament",
+        "ogre",
+    ];
+    for w in warps {
+        for (part, k) in [("single", "1"), ("practical", "3"), ("faces", "2")] {
+            let v = warp_json(&[
+                "--light-dir",
+                "0.3,-0.8,-0.4",
+                "--warp",
+                w,
+                "--partition",
+                part,
+                "--k",
+                k,
+            ]);
+            let parts = check_shape_with(&v, part != "faces");
+            assert!(num(&v["storage_factor"]) > 0.0, "{w} {part}: {v}");
+            if part == "practical" {
+                assert_eq!(parts.len(), 3, "{w}");
+            }
+        }
+    }
+    let v = warp_json(&["--light-dir", "0,-1,0", "--warp", "eta", "--eta", "-1"]);
+    assert_eq!(v["partitions"][0]["n_prime"], "inf");
+}
+
+#[test]
+fn text_output_is_readable() {
+    let (code, out, err) = run(&[
+        "warp",
+        "--near",
+        "1",
+        "--far",
+        "100",
+        "--half-fov",
+        "0.5236",
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "lispsm",
+        "--partition",
+        "log",
+        "--k",
+        "2",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("storage factor"), "{out}");
+    assert!(out.contains("partition 1 of 2"), "{out}");
+    assert!(out.contains("partition 2 of 2"), "{out}");
+    assert!(out.contains("M_x"), "{out}");
+    // The four rows of each matrix.
+    assert!(out.matches('[').count() >= 8, "{out}");
+}
+
+#[test]
+fn bad_arguments_are_one_line_and_a_non_zero_exit() {
+    let base = ["warp", "--far", "100", "--half-fov", "0.5"];
+    for (extra, needle) in [
+        (
+            vec!["--near", "-1", "--light-dir", "0,-1,0", "--warp", "lispsm"],
+            "near",
+        ),
+        (
+            vec!["--near", "1", "--light-dir", "0,0,0", "--warp", "lispsm"],
+            "light_dir",
+        ),
+        (
+            vec!["--near", "1", "--light-dir", "0,-1", "--warp", "lispsm"],
+            "--light-dir",
+        ),
+        (
+            vec!["--near", "1", "--light-dir", "0,-1,0", "--warp", "lsm"],
+            "--warp",
+        ),
+        (
+            vec![
+                "--near",
+                "1",
+                "--light-dir",
+                "0,-1,0",
+                "--warp",
+                "lispsm",
+                "--k",
+                "0",
+            ],
+            "k",
+        ),
+        (
+            vec!["--near", "1", "--light-dir", "0,-1,0", "--warp", "eta"],
+            "--eta",
+        ),
+        (
+            vec![
+                "--near",
+                "1",
+                "--light-dir",
+                "0,-1,0",
+                "--warp",
+                "eta",
+                "--eta",
+                "2",
+            ],
+            "eta",
+        ),
+    ] {
+        let mut args: Vec<&str> = base.to_vec();
+        args.extend(extra.iter());
+        let (code, out, err) = run(&args);
+        assert_ne!(code, 0, "{args:?}");
+        assert!(out.is_empty(), "{args:?}: {out}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn help_has_an_example() {
+    let (code, out, _) = run(&["warp", "--help"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("Example"), "{out}");
+    assert!(out.contains("shadow-aliasing warp --near"), "{out}");
+}
+
+/// docs/cli.md shows what the binary prints: the text example exactly, the JSON example to a
+/// relative 1e-12 per number.
+#[test]
+fn docs_show_the_binarys_output() {
+    let md = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/cli.md")).unwrap();
+    let block = |fence: &str| -> String {
+        let start = md.find(fence).expect("fenced block") + fence.len();
+        md[start..].split("```").next().unwrap().to_string()
+    };
+    let text = block("```text\n");
+    let (first, shown) = text.split_once('\n').unwrap();
+    let args: Vec<&str> = first
+        .trim_start_matches("$ shadow-aliasing ")
+        .split(' ')
+        .collect();
+    let (code, out, _) = run(&args);
+    assert_eq!(code, 0);
+    assert_eq!(shown, out, "docs/cli.md's text example is stale");
+    let shown: Value = serde_json::from_str(&block("```json\n")).unwrap();
+    let now = warp_json(&[
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "lispsm",
+        "--partition",
+        "log",
+        "--k",
+        "2",
+    ]);
+    fn same(a: &Value, b: &Value) -> bool {
+        match (a, b) {
+            (Value::Number(x), Value::Number(y)) => {
+                let (x, y) = (x.as_f64().unwrap(), y.as_f64().unwrap());
+                (x - y).abs() <= 1e-12 * x.abs().max(y.abs())
+            }
+            (Value::Array(x), Value::Array(y)) => {
+                x.len() == y.len() && x.iter().zip(y).all(|(p, q)| same(p, q))
+            }
+            (Value::Object(x), Value::Object(y)) => {
+                x.len() == y.len() && x.iter().all(|(k, v)| y.get(k).is_some_and(|w| same(v, w)))
+            }
+            _ => a == b,
+        }
+    }
+    assert!(
+        same(&shown, &now),
+        "docs/cli.md's JSON example is stale:\n{now}"
+    );
+}
