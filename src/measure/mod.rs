@@ -216,7 +216,8 @@ pub fn frustum_max(view: &ViewFrustum, shadow: &ShadowMap) -> Result<FrustumErro
 /// m_x = h.w² g / (|D| z tan θ),   m_z = h.w² |D| / (|D| g z tan θ)     (z = −p.z)
 /// ```
 ///
-/// one square root and one division per corner; `None` too when S̄ = M_x M_z overflows. The light-ray test `|∇s·L| ≤ 10⁻⁷ |∇s|` is
+/// one square root and one division per corner; `None` too when S̄ = M_x M_z overflows. The
+/// light-ray test `|∇s·L| ≤ 10⁻⁷ |∇s|` is
 /// scale-free, so it is made on `G_s`, `G_t` in squares, with a 10⁻⁹ relative margin inside
 /// which the point-by-point path decides.
 #[inline]
