@@ -26,30 +26,38 @@ use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::NPrime;
 
 /// Validates a depth range `0 < near < far`, both finite.
+#[inline]
 pub(crate) fn near_far(near: f64, far: f64) -> Result<(f64, f64)> {
     let n = positive("near", near)?;
     let f = positive("far", far)?;
+    if f <= n || !(f / n).is_finite() {
+        return Err(bad_near_far(n, f));
+    }
+    Ok((n, f))
+}
+
+#[cold]
+#[inline(never)]
+fn bad_near_far(n: f64, f: f64) -> Error {
     if f <= n {
-        return Err(Error::invalid(
+        Error::invalid(
             "far",
             format!(
                 "must be greater than near (got near={}, far={})",
                 fmt_num(n),
                 fmt_num(f)
             ),
-        ));
-    }
-    if !(f / n).is_finite() {
-        return Err(Error::invalid(
+        )
+    } else {
+        Error::invalid(
             "far",
             format!(
                 "far/near must be finite (got near={}, far={})",
                 fmt_num(n),
                 fmt_num(f)
             ),
-        ));
+        )
     }
-    Ok((n, f))
 }
 
 /// √(f n) without overflow or underflow of the product f n (both positive and finite).
@@ -64,25 +72,32 @@ pub(crate) fn sqrt_fn(n: f64, f: f64) -> f64 {
 }
 
 /// Validates Lloyd's light-overhead domain n′ ≥ near; returns n′ or `None` for n′ = ∞.
+#[inline]
 pub(crate) fn n_prime_at_least(n_prime: NPrime, near: f64) -> Result<Option<f64>> {
     match n_prime {
         NPrime::Unwarped => Ok(None),
         NPrime::Finite(v) => {
             let v = positive("n_prime", v)?;
             if v < near {
-                Err(Error::invalid(
-                    "n_prime",
-                    format!(
-                        "must be at least near for a light overhead (got n_prime={}, near={})",
-                        fmt_num(v),
-                        fmt_num(near)
-                    ),
-                ))
+                Err(n_prime_below_near(v, near))
             } else {
                 Ok(Some(v))
             }
         }
     }
+}
+
+#[cold]
+#[inline(never)]
+fn n_prime_below_near(v: f64, near: f64) -> Error {
+    Error::invalid(
+        "n_prime",
+        format!(
+            "must be at least near for a light overhead (got n_prime={}, near={})",
+            fmt_num(v),
+            fmt_num(near)
+        ),
+    )
 }
 
 /// LiSPSM's warp parameter for the light overhead: n′ = n + √(f n).

@@ -35,20 +35,30 @@ fn lispsm(view: &ViewFrustum) -> f64 {
 }
 
 /// Checks n ≤ z ≤ f.
+#[inline]
 fn depth_in(z: f64, n: f64, f: f64) -> Result<f64> {
-    let z = crate::error::finite("z", z)?;
-    if z < n || z > f {
-        return Err(Error::invalid(
-            "z",
-            format!(
-                "must lie in [near, far] = [{}, {}] (got {})",
-                fmt_num(n),
-                fmt_num(f),
-                fmt_num(z)
-            ),
-        ));
+    if z.is_finite() && z >= n && z <= f {
+        Ok(z)
+    } else {
+        Err(depth_outside(z, n, f))
     }
-    Ok(z)
+}
+
+#[cold]
+#[inline(never)]
+fn depth_outside(z: f64, n: f64, f: f64) -> Error {
+    if !z.is_finite() {
+        return crate::error::finite("z", z).unwrap_err();
+    }
+    Error::invalid(
+        "z",
+        format!(
+            "must lie in [near, far] = [{}, {}] (got {})",
+            fmt_num(n),
+            fmt_num(f),
+            fmt_num(z)
+        ),
+    )
 }
 
 /// The x error at depth z (Lloyd 2006 Eq 7; Lloyd 2005 Eq 8 with n = 1, f = α).
