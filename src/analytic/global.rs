@@ -76,6 +76,19 @@ fn far_top_offset(view: &ViewFrustum, light_angle: LightAngle) -> f64 {
 #[inline]
 fn z_w_offset(view: &ViewFrustum, light_angle: LightAngle, y: f64, z: f64) -> f64 {
     let (s, c) = light_angle.radians().sin_cos();
+    z_w_offset_sc(view, light_angle, s, c, y, z)
+}
+
+/// [`z_w_offset`] with `(s, c) = light_angle.radians().sin_cos()` already taken.
+#[inline]
+fn z_w_offset_sc(
+    view: &ViewFrustum,
+    light_angle: LightAngle,
+    s: f64,
+    c: f64,
+    y: f64,
+    z: f64,
+) -> f64 {
     let t = view.tan_half_fov();
     if light_angle.radians() >= view.half_fov() {
         (z - view.near()) * s + (view.near() * t - y) * c
@@ -91,16 +104,22 @@ fn point_in_view(view: &ViewFrustum, y: f64, z: f64) -> Result<(f64, f64)> {
     let y = finite("y", y)?;
     let h = z * view.tan_half_fov();
     if y.abs() > h * (1.0 + 1e-12) {
-        return Err(Error::invalid(
-            "y",
-            format!(
-                "must lie in the view frustum, |y| ≤ z tan(half_fov) = {} (got {})",
-                fmt_num(h),
-                fmt_num(y)
-            ),
-        ));
+        return Err(y_outside(h, y));
     }
     Ok((y, z))
+}
+
+#[cold]
+#[inline(never)]
+fn y_outside(h: f64, y: f64) -> Error {
+    Error::invalid(
+        "y",
+        format!(
+            "must lie in the view frustum, |y| ≤ z tan(half_fov) = {} (got {})",
+            fmt_num(h),
+            fmt_num(y)
+        ),
+    )
 }
 
 /// z_w, the warp depth of the point (x, y, z) in W's frame (Zhang Appendix):
@@ -294,12 +313,14 @@ pub fn zhang_ep(
     let lambda = finite_n_prime("lambda", lambda)?;
     let (y, z) = point_in_view(view, y, z)?;
     let t = view.tan_half_fov();
-    let mu = zhang_mu(view, light_angle)?;
+    // One sin_cos of θ for μ and z_w (zhang_mu and z_w_offset would take it twice).
+    let (s, c) = light_angle.radians().sin_cos();
+    let mu = crate::analytic::tilted::warp_depth_range_sc(view, light_angle, s, c)?;
     finite_result(
         "E_p",
         match lambda {
             Some(l) => {
-                let zw = l + z_w_offset(view, light_angle, y, z);
+                let zw = l + z_w_offset_sc(view, light_angle, s, c, y, z);
                 mu / (t * z) * (zw / l) * (zw / (l + mu))
             }
             None => mu / (t * z),

@@ -86,8 +86,19 @@ pub(crate) fn depth_in_view(view: &ViewFrustum, z: f64) -> Result<f64> {
 /// ```
 #[inline]
 pub fn warp_depth_range(view: &ViewFrustum, light_angle: LightAngle) -> Result<f64> {
-    let (n, f) = (view.near(), view.far());
     let (s, c) = light_angle.radians().sin_cos();
+    warp_depth_range_sc(view, light_angle, s, c)
+}
+
+/// [`warp_depth_range`] with `(s, c) = light_angle.radians().sin_cos()` already taken.
+#[inline]
+pub(crate) fn warp_depth_range_sc(
+    view: &ViewFrustum,
+    light_angle: LightAngle,
+    s: f64,
+    c: f64,
+) -> Result<f64> {
+    let (n, f) = (view.near(), view.far());
     let tc = view.tan_half_fov() * c;
     let mu = if light_angle.radians() >= view.half_fov() {
         f * ((1.0 + n / f) * tc) + (f - n) * s
@@ -160,19 +171,26 @@ pub fn tilted_xi(
     )
 }
 
+#[inline]
 fn positive_sin(light_angle: LightAngle) -> Result<f64> {
     let s = light_angle.radians().sin();
     if s > 0.0 {
         Ok(s)
     } else {
-        Err(Error::invalid(
-            "light_angle",
-            format!(
-                "must be greater than 0 for Barroso's m_z, which measures texels along the view axis and is infinite when light and view are parallel (got {})",
-                fmt_num(light_angle.radians())
-            ),
-        ))
+        Err(parallel_light(light_angle))
     }
+}
+
+#[cold]
+#[inline(never)]
+fn parallel_light(light_angle: LightAngle) -> Error {
+    Error::invalid(
+        "light_angle",
+        format!(
+            "must be greater than 0 for Barroso's m_z, which measures texels along the view axis and is infinite when light and view are parallel (got {})",
+            fmt_num(light_angle.radians())
+        ),
+    )
 }
 
 /// Perpendicular m_z without validation of n′ and z: `res_i/res_t · μ ψ² / (2 tan φ_y · n′ (n′ + μ)
