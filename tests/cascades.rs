@@ -35,11 +35,15 @@ fn config_cases(cases: u32) -> ProptestConfig {
     }
 }
 
+/// Rounding: the same bound as tests/builders.rs and `build::warp::fit_warp`'s documented
+/// precision. With f/n near 10⁶ and PSM's n′ = n, w spans six decades and the extreme corners
+/// land within about 10⁻⁹ of the faces (seen: 1.4·10⁻⁹ in depth at f/n = 8.2·10⁵ with the light
+/// 10⁻⁹ off parallel); 10⁻⁸ is far below a GPU's f32 resolution (6·10⁻⁸).
 fn assert_in_clip(m: &DMat4, p: DVec3, ctx: &str) {
     let h = *m * DVec4::new(p.x, p.y, p.z, 1.0);
     assert!(h.w > 0.0 && h.is_finite(), "{ctx}: w = {} at {p}", h.w);
     let c = h.truncate() / h.w;
-    let tol = 1e-9;
+    let tol = 1e-8;
     assert!(
         c.abs().max_element() <= 1.0 + tol,
         "{ctx}: corner {p} maps to {c}"
