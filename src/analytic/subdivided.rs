@@ -38,18 +38,26 @@ use crate::frustum::{NPrime, Resolutions};
 use crate::warp::{eta_from_n_prime, n_prime_from_eta};
 
 /// Validates α > 1, finite.
+#[inline]
 fn alpha_ok(alpha: f64) -> Result<f64> {
     let a = positive("alpha", alpha)?;
     if a <= 1.0 {
-        return Err(Error::invalid(
-            "alpha",
-            format!("must be greater than 1 (got {})", fmt_num(a)),
-        ));
+        return Err(alpha_not_above_one(a));
     }
     Ok(a)
 }
 
+#[cold]
+#[inline(never)]
+fn alpha_not_above_one(a: f64) -> Error {
+    Error::invalid(
+        "alpha",
+        format!("must be greater than 1 (got {})", fmt_num(a)),
+    )
+}
+
 /// Validates the warp distance n ≥ 1 (the warp frustum must contain the view frustum).
+#[inline]
 fn n_warp_ok(n_warp: NPrime) -> Result<Option<f64>> {
     match n_warp {
         NPrime::Unwarped => Ok(None),
@@ -71,21 +79,29 @@ fn n_warp_ok(n_warp: NPrime) -> Result<Option<f64>> {
 }
 
 /// Validates 1 ≤ z ≤ α.
+#[inline]
 fn z_ok(z: f64, alpha: f64) -> Result<f64> {
     let z = crate::error::finite("z", z)?;
     if !(1.0..=alpha).contains(&z) {
-        return Err(Error::invalid(
-            "z",
-            format!(
-                "must lie in [1, alpha] = [1, {}] (got {})",
-                fmt_num(alpha),
-                fmt_num(z)
-            ),
-        ));
+        return Err(z_outside(z, alpha));
     }
     Ok(z)
 }
 
+#[cold]
+#[inline(never)]
+fn z_outside(z: f64, alpha: f64) -> Error {
+    Error::invalid(
+        "z",
+        format!(
+            "must lie in [1, alpha] = [1, {}] (got {})",
+            fmt_num(alpha),
+            fmt_num(z)
+        ),
+    )
+}
+
+#[inline]
 fn tan_ok(half_fov: f64) -> Result<f64> {
     Ok(in_open("half_fov", half_fov, 0.0, std::f64::consts::FRAC_PI_2)?.tan())
 }

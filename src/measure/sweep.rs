@@ -118,6 +118,41 @@ pub fn vertex_max(
     let g1p = g1 - g1.dot(l) * l;
     let g3p = g3 - g3.dot(l) * l;
     let (mut mx2, mut mz2) = (0.0f64, 0.0f64);
+    if let Ok(p8) = <&[DVec3; 8]>::try_from(points) {
+        // The eight vertices of a (sub)frustum: the same arithmetic per point, laid out as
+        // arrays so the compiler evaluates two points per SSE2 instruction, then the maxima in
+        // point order (max is exact, so the values are the loop's below, bit for bit).
+        let mut sx = [0.0f64; 8];
+        let mut sz = [0.0f64; 8];
+        let mut ok = [false; 8];
+        for i in 0..8 {
+            let (px, py, pz) = (p8[i].x, p8[i].y, p8[i].z);
+            let hx = r0.x * px + r0.y * py + r0.z * pz + r0.w;
+            let hy = r1.x * px + r1.y * py + r1.z * pz + r1.w;
+            let hw = r3.x * px + r3.y * py + r3.z * pz + r3.w;
+            let z = -pz;
+            let d = hw * (hw * a - hy * b + hx * c);
+            let d2 = d * d;
+            let tx = hw * g1p.x - hy * g3p.x;
+            let ty = hw * g1p.y - hy * g3p.y;
+            let tz = hw * g1p.z - hy * g3p.z;
+            let gtp2 = tx * tx + ty * ty + tz * tz;
+            let w2 = hw * hw;
+            let w4 = w2 * w2;
+            let inv = 1.0 / (d2 * gtp2 * z * z);
+            ok[i] = hw > 0.0 && z > 0.0 && inv.is_finite() && gtp2 > 0.0;
+            sx[i] = w4 * gtp2 * gtp2 * inv;
+            sz[i] = w4 * d2 * inv;
+        }
+        if ok.contains(&false) {
+            return None;
+        }
+        for i in 0..8 {
+            mx2 = fmax(mx2, sx[i]);
+            mz2 = fmax(mz2, sz[i]);
+        }
+        return finish(mx2, mz2, tan_half_fov);
+    }
     for p in points {
         let (px, py, pz) = (p.x, p.y, p.z);
         let hx = r0.x * px + r0.y * py + r0.z * pz + r0.w;
@@ -145,6 +180,11 @@ pub fn vertex_max(
         mx2 = fmax(mx2, w4 * gtp2 * gtp2 * inv);
         mz2 = fmax(mz2, w4 * d2 * inv);
     }
+    finish(mx2, mz2, tan_half_fov)
+}
+
+#[inline]
+fn finish(mx2: f64, mz2: f64, tan_half_fov: f64) -> Option<VertexMax> {
     let t2 = tan_half_fov * tan_half_fov;
     let (mx, mz) = ((mx2 / t2).sqrt(), (mz2 / t2).sqrt());
     if mx.is_finite() && mz.is_finite() && mx > 0.0 && mz > 0.0 {
