@@ -59,9 +59,13 @@ pub const MAX_ATLAS_ENTRIES: usize = 4 * MAX_PARTITIONS + 1;
 /// `errors`: the maximum error of each subdivision (any positive unit, only ratios matter);
 /// `total`: texels along the axis being shared.
 ///
+/// This is [`crate::analytic::subdivided::allocate_texels_whole`] writing into the first
+/// `errors.len()` entries of `out`, for at most [`MAX_ATLAS_ENTRIES`] partitions.
+///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `errors` when empty, longer than `out`, or holding a value
-/// that is not finite and positive.
+/// [`Error::InvalidArgument`] naming `errors` when empty, longer than `out` (or than
+/// [`MAX_ATLAS_ENTRIES`]), or holding a value that is not finite and positive; naming `total`
+/// when it is 0.
 ///
 /// ```
 /// # use shadow_aliasing::build::atlas::allocate_texels;
@@ -78,55 +82,8 @@ pub fn allocate_texels(errors: &[f64], total: u32, out: &mut [u32]) -> Result<()
             format!("must hold 1 to {cap} values (got {})", errors.len()),
         ));
     }
-    let mut sum = 0.0;
-    for (i, &e) in errors.iter().enumerate() {
-        if !(e.is_finite() && e > 0.0) {
-            return Err(Error::invalid(
-                "errors",
-                format!(
-                    "must be finite and positive (got {} at index {i})",
-                    fmt_num(e)
-                ),
-            ));
-        }
-        sum += e;
-    }
-    if !sum.is_finite() {
-        return Err(Error::invalid("errors", "must have a finite sum"));
-    }
-    let mut rem = [0.0f64; MAX_ATLAS_ENTRIES];
-    let n = errors.len();
-    let mut given: u64 = 0;
-    for i in 0..n {
-        let share = f64::from(total) * (errors[i] / sum);
-        let whole = share.floor().min(f64::from(total));
-        out[i] = whole as u32;
-        given += u64::from(out[i]);
-        rem[i] = share - whole;
-    }
-    // Hand the remaining texels (fewer than n) to the largest remainders, ties to the lower
-    // index; should rounding leave more, they go round-robin.
-    let mut left = u64::from(total).saturating_sub(given);
-    let mut next = 0;
-    while left > 0 {
-        let mut best = next % n;
-        let mut best_r = -1.0;
-        for (i, &r) in rem.iter().enumerate().take(n) {
-            if r > best_r {
-                best = i;
-                best_r = r;
-            }
-        }
-        if best_r < 0.0 {
-            best = next % n;
-            next += 1;
-        } else {
-            rem[best] = -1.0;
-        }
-        out[best] += 1;
-        left -= 1;
-    }
-    Ok(())
+    // One implementation of Eq 6 in whole texels, shared with the closed forms.
+    crate::analytic::subdivided::allocate_texels_whole(errors, total, &mut out[..errors.len()])
 }
 
 /// One partition to place: its group (partitions of one group share a column) and its maximum
