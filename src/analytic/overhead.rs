@@ -256,9 +256,11 @@ pub fn budget_resolution(
     let s0 = positive("budget", budget)?;
     let c = critical_resolution(view, n_prime, 1.0)?;
     let ratio = c.res_s / c.res_t;
+    let res_s = finite_result("res_s", (s0 * ratio).sqrt())?;
+    // √(S₀ / ratio) = S₀ / √(S₀ ratio): one square root fewer, within a few ulps.
     Ok(MapResolution {
-        res_s: finite_result("res_s", (s0 * ratio).sqrt())?,
-        res_t: finite_result("res_t", (s0 / ratio).sqrt())?,
+        res_s,
+        res_t: finite_result("res_t", s0 / res_s)?,
     })
 }
 
