@@ -65,7 +65,7 @@
 
 use crate::build::lightspace::{light_space, LightSpace};
 use crate::build::matrix::ShadowMatrix;
-use crate::build::warp::tsm_eta;
+use crate::build::warp::{fmax, fmin, tsm_eta};
 use crate::error::{fmt_num, in_open, positive, Error, Result};
 use crate::frustum::{NPrime, ViewFrustum};
 use glam::{DMat3, DMat4, DVec2, DVec3, DVec4};
@@ -689,19 +689,39 @@ impl FastArea {
         if hn < 3 {
             return 0.0;
         }
+        // The divisions two at a time (independent, so the compiler can pair them in one SSE2
+        // `divpd`), the min/max and the sum in the same order as one at a time: bit for bit.
+        // η > 0 and d ≥ 0, so no value is NaN and the one-instruction min/max are exact.
         let (mut s_min, mut s_max) = (f64::INFINITY, f64::NEG_INFINITY);
-        for (x, d) in self.ex[..self.m].iter().zip(&self.ed[..self.m]) {
-            let s = x / (d + eta);
-            s_min = s_min.min(s);
-            s_max = s_max.max(s);
+        let m = self.m;
+        let mut j = 0;
+        while j + 2 <= m {
+            let s0 = self.ex[j] / (self.ed[j] + eta);
+            let s1 = self.ex[j + 1] / (self.ed[j + 1] + eta);
+            s_min = fmin(fmin(s_min, s0), s1);
+            s_max = fmax(fmax(s_max, s0), s1);
+            j += 2;
+        }
+        if j < m {
+            let s0 = self.ex[j] / (self.ed[j] + eta);
+            s_min = fmin(s_min, s0);
+            s_max = fmax(s_max, s0);
         }
         let s_h = 0.5 * (s_max - s_min);
         let mut r_prev = 1.0 / (self.hd[hn - 1] + eta);
         let mut sum = 0.0;
-        for (d, c) in self.hd[..hn].iter().zip(&self.hc[..hn]) {
-            let r = 1.0 / (d + eta);
-            sum += c * r_prev * r;
-            r_prev = r;
+        let mut i = 0;
+        while i + 2 <= hn {
+            let r0 = 1.0 / (self.hd[i] + eta);
+            let r1 = 1.0 / (self.hd[i + 1] + eta);
+            sum += self.hc[i] * r_prev * r0;
+            sum += self.hc[i + 1] * r0 * r1;
+            r_prev = r1;
+            i += 2;
+        }
+        if i < hn {
+            let r = 1.0 / (self.hd[i] + eta);
+            sum += self.hc[i] * r_prev * r;
         }
         (eta + self.lambda) * sum.abs() / (4.0 * self.lambda * s_h)
     }
