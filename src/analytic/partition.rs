@@ -206,21 +206,8 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
     let alpha = f / n;
     let mut p = [0.0; MAX_PARTITIONS + 1];
     let uniform = |i: usize| n + (f - n) * (i as f64 / kf);
-    // Self-similar planes n r^i, r = (f/n)^{1/k}: one root, then products (error ≤ k ulps).
-    // Only the self-similar and practical schemes need them.
-    let mut logarithmic = [0.0; MAX_PARTITIONS + 1];
-    if matches!(
-        scheme,
-        SplitScheme::SelfSimilar | SplitScheme::Practical { .. }
-    ) {
-        let r = root_k(alpha, k);
-        let mut zl = n;
-        for l in logarithmic.iter_mut().take(k + 1) {
-            *l = zl;
-            zl *= r;
-        }
-    }
-    let logarithmic = |i: usize| logarithmic[i];
+    // Self-similar planes n r^i, r = (f/n)^{1/k}: one root, then products (error ≤ k ulps),
+    // written straight into the planes (only the self-similar and practical schemes need them).
     match scheme {
         SplitScheme::Uniform => {
             for (i, z) in p.iter_mut().enumerate().take(k + 1) {
@@ -228,14 +215,20 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
             }
         }
         SplitScheme::SelfSimilar => {
-            for (i, z) in p.iter_mut().enumerate().take(k + 1) {
-                *z = logarithmic(i);
+            let r = root_k(alpha, k);
+            let mut zl = n;
+            for z in p.iter_mut().take(k + 1) {
+                *z = zl;
+                zl *= r;
             }
         }
         SplitScheme::Practical { lambda } => {
             let l = in_closed("lambda", lambda, 0.0, 1.0)?;
+            let r = root_k(alpha, k);
+            let mut zl = n;
             for (i, z) in p.iter_mut().enumerate().take(k + 1) {
-                *z = l * logarithmic(i) + (1.0 - l) * uniform(i);
+                *z = l * zl + (1.0 - l) * uniform(i);
+                zl *= r;
             }
         }
         SplitScheme::Adaptive { light_angle, ratio } => {
@@ -292,16 +285,22 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
     p[k] = f;
     for i in 1..=k {
         if !p[i].is_finite() || p[i] <= p[i - 1] {
-            return Err(Error::Degenerate(format!(
-                "split planes {} and {i} coincide ({} and {}): far/near={} is too close to 1 for k={k}",
-                i - 1,
-                fmt_num(p[i - 1]),
-                fmt_num(p[i]),
-                fmt_num(alpha)
-            )));
+            return Err(planes_coincide(i, p[i - 1], p[i], alpha, k));
         }
     }
     Ok(Splits { planes: p, k })
+}
+
+#[cold]
+#[inline(never)]
+fn planes_coincide(i: usize, prev: f64, z: f64, alpha: f64, k: usize) -> Error {
+    Error::Degenerate(format!(
+        "split planes {} and {i} coincide ({} and {}): far/near={} is too close to 1 for k={k}",
+        i - 1,
+        fmt_num(prev),
+        fmt_num(z),
+        fmt_num(alpha)
+    ))
 }
 
 /// x^{1/k} for x > 1: square roots for k = 1, 2, 4, 8, 16 (each correctly rounded, so within
