@@ -255,6 +255,25 @@ pub fn budget_resolution(
 ) -> Result<MapResolution> {
     let s0 = positive("budget", budget)?;
     let c = critical_resolution(view, n_prime, 1.0)?;
+    // res*_s / res*_t = M_x / M_z of Eq 9, 10 as one fraction num/den (within a few ulps of
+    // c.res_s / c.res_t), so that res_s = √(S₀ num/den) and res_t = √(S₀ den/num) are two
+    // independent divisions and square roots instead of a chain of five divisions (M_x, M_z
+    // above still run, beside it, and give the errors):
+    //   2 tan θ f² n′² / (n (f − n) (n′ + f − n)²)   n′ ≤ n′_LSPSM,   2 tan θ f / (f − n)   else.
+    let (n, f) = (view.near(), view.far());
+    let t2 = 2.0 * view.tan_half_fov();
+    let (num, den) = match n_prime {
+        NPrime::Finite(np) if np <= lispsm(view) => {
+            let (a, fp) = (np + f - n, f * np);
+            (fp * fp * t2, n * (f - n) * (a * a))
+        }
+        _ => (t2 * f, f - n),
+    };
+    let (res_s, res_t) = ((s0 * num / den).sqrt(), (s0 * den / num).sqrt());
+    if res_s.is_finite() && res_t.is_finite() && res_s > 0.0 && res_t > 0.0 {
+        return Ok(MapResolution { res_s, res_t });
+    }
+    // Overflow or underflow of the one fraction: from M_x, M_z themselves.
     let ratio = c.res_s / c.res_t;
     Ok(MapResolution {
         res_s: finite_result("res_s", (s0 * ratio).sqrt())?,

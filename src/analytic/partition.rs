@@ -206,15 +206,8 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
     let alpha = f / n;
     let mut p = [0.0; MAX_PARTITIONS + 1];
     let uniform = |i: usize| n + (f - n) * (i as f64 / kf);
-    // Self-similar planes n r^i, r = (f/n)^{1/k}: one powf, then products (error ≤ k ulps).
-    let r = alpha.powf(1.0 / kf);
-    let mut logarithmic = [0.0; MAX_PARTITIONS + 1];
-    let mut zl = n;
-    for l in logarithmic.iter_mut().take(k + 1) {
-        *l = zl;
-        zl *= r;
-    }
-    let logarithmic = |i: usize| logarithmic[i];
+    // Self-similar planes n r^i, r = (f/n)^{1/k}: one root, then products (error ≤ k ulps),
+    // written straight into the planes (only the self-similar and practical schemes need them).
     match scheme {
         SplitScheme::Uniform => {
             for (i, z) in p.iter_mut().enumerate().take(k + 1) {
@@ -222,14 +215,20 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
             }
         }
         SplitScheme::SelfSimilar => {
-            for (i, z) in p.iter_mut().enumerate().take(k + 1) {
-                *z = logarithmic(i);
+            let r = root_k(alpha, k);
+            let mut zl = n;
+            for z in p.iter_mut().take(k + 1) {
+                *z = zl;
+                zl *= r;
             }
         }
         SplitScheme::Practical { lambda } => {
             let l = in_closed("lambda", lambda, 0.0, 1.0)?;
+            let r = root_k(alpha, k);
+            let mut zl = n;
             for (i, z) in p.iter_mut().enumerate().take(k + 1) {
-                *z = l * logarithmic(i) + (1.0 - l) * uniform(i);
+                *z = l * zl + (1.0 - l) * uniform(i);
+                zl *= r;
             }
         }
         SplitScheme::Adaptive { light_angle, ratio } => {
@@ -245,8 +244,7 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
             p[k] = f;
             for i in (2..=k).rev() {
                 let fi = p[i];
-                let e = (i - 1) as f64 / i as f64;
-                p[i - 1] = l * n * (fi / n).powf(e) + (1.0 - l) * fi / a;
+                p[i - 1] = l * n * pow_i_minus_1_over_i(fi / n, i) + (1.0 - l) * fi / a;
             }
             p[0] = n;
             for i in 1..=k {
@@ -287,16 +285,50 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
     p[k] = f;
     for i in 1..=k {
         if !p[i].is_finite() || p[i] <= p[i - 1] {
-            return Err(Error::Degenerate(format!(
-                "split planes {} and {i} coincide ({} and {}): far/near={} is too close to 1 for k={k}",
-                i - 1,
-                fmt_num(p[i - 1]),
-                fmt_num(p[i]),
-                fmt_num(alpha)
-            )));
+            return Err(planes_coincide(i, p[i - 1], p[i], alpha, k));
         }
     }
     Ok(Splits { planes: p, k })
+}
+
+#[cold]
+#[inline(never)]
+fn planes_coincide(i: usize, prev: f64, z: f64, alpha: f64, k: usize) -> Error {
+    Error::Degenerate(format!(
+        "split planes {} and {i} coincide ({} and {}): far/near={} is too close to 1 for k={k}",
+        i - 1,
+        fmt_num(prev),
+        fmt_num(z),
+        fmt_num(alpha)
+    ))
+}
+
+/// x^{1/k} for x > 1: square roots for k = 1, 2, 4, 8, 16 (each correctly rounded, so within
+/// a few ulps of `powf`, and several times cheaper), `powf` otherwise.
+#[inline]
+fn root_k(x: f64, k: usize) -> f64 {
+    match k {
+        1 => x,
+        2 => x.sqrt(),
+        4 => x.sqrt().sqrt(),
+        8 => x.sqrt().sqrt().sqrt(),
+        16 => x.sqrt().sqrt().sqrt().sqrt(),
+        _ => x.powf(1.0 / k as f64),
+    }
+}
+
+/// x^{(i−1)/i} for x > 0, i ≥ 2 (Barroso & Celes Eq 19's exponent): √x for i = 2,
+/// √x · ⁴√x for i = 4 (within a few ulps of `powf`, and cheaper), `powf` otherwise.
+#[inline]
+fn pow_i_minus_1_over_i(x: f64, i: usize) -> f64 {
+    match i {
+        2 => x.sqrt(),
+        4 => {
+            let r = x.sqrt();
+            r * r.sqrt()
+        }
+        _ => x.powf((i - 1) as f64 / i as f64),
+    }
 }
 
 /// A partitioning scheme of Lloyd et al. 2006 §5.3.

@@ -74,16 +74,22 @@ pub fn tsm_eta(lambda: f64, delta_prime: f64, xi: f64) -> Result<NPrime> {
         return Ok(NPrime::Unwarped);
     }
     if den < 0.0 {
-        return Err(Error::NoSolution(format!(
-            "no centre of projection above the top line maps the focus point (delta_prime={}) of a trapezoid of height lambda={} to the line xi={}: without warping it already lies at {}, and a centre above the top line only moves it towards the base (-1)",
-            fmt_num(d),
-            fmt_num(lambda),
-            fmt_num(xi),
-            fmt_num(1.0 - 2.0 * d / lambda)
-        )));
+        return Err(eta_no_solution(lambda, d, xi));
     }
     let eta = finite_result("eta", lambda * d * (1.0 + xi) / den)?;
     NPrime::new(eta)
+}
+
+#[cold]
+#[inline(never)]
+fn eta_no_solution(lambda: f64, d: f64, xi: f64) -> Error {
+    Error::NoSolution(format!(
+        "no centre of projection above the top line maps the focus point (delta_prime={}) of a trapezoid of height lambda={} to the line xi={}: without warping it already lies at {}, and a centre above the top line only moves it towards the base (-1)",
+        fmt_num(d),
+        fmt_num(lambda),
+        fmt_num(xi),
+        fmt_num(1.0 - 2.0 * d / lambda)
+    ))
 }
 
 /// The forward map of Martin & Tan's 1D homogeneous projection (§6.2): the map line y ∈ (−1, 1)

@@ -65,7 +65,7 @@
 
 use crate::build::lightspace::{light_space, LightSpace};
 use crate::build::matrix::ShadowMatrix;
-use crate::build::warp::tsm_eta;
+use crate::build::warp::{fmax, fmin, tsm_eta};
 use crate::error::{fmt_num, in_open, positive, Error, Result};
 use crate::frustum::{NPrime, ViewFrustum};
 use glam::{DMat3, DMat4, DVec2, DVec3, DVec4};
@@ -86,7 +86,7 @@ pub enum TsmSearch {
     /// A chosen line ξ ∈ (−1, 1) of the unit square (top +1, base −1).
     Line(f64),
     /// The iterative variant over the map's lines (module docs), searched fast: 33 lines spread
-    /// from the 80 % line to the top, a ternary search between the neighbours of the best, and
+    /// from the 80 % line to the top, a golden-section search between the neighbours of the best, and
     /// the last few lines exhaustively (all lines when there are at most 64). The focus area can
     /// fall and rise again along the lines, so this is a fast approximation of
     /// [`TsmSearch::IterativeExhaustive`]: its focus area is never below the best of the 33
@@ -471,8 +471,9 @@ impl Core<'_> {
                 let k = if matches!(search, TsmSearch::IterativeExhaustive { .. }) || k0 <= 64 {
                     scan(1, k0).1
                 } else {
-                    // 33 evenly spread lines (both ends included), then a ternary search
-                    // between the neighbours of the best, then the last few lines exhaustively.
+                    // 33 evenly spread lines (both ends included), then a golden-section
+                    // search in the bracket of the best one's neighbours, then the last few
+                    // lines exhaustively, every line evaluated at most once.
                     const COARSE: u32 = 32;
                     let at = |i: u32| 1 + ((k0 - 1) as u64 * i as u64 / COARSE as u64) as u32;
                     let mut best = (f64::NEG_INFINITY, 0u32);
@@ -482,22 +483,58 @@ impl Core<'_> {
                             best = (a, i);
                         }
                     }
+                    // The refinement's lines with their areas, the best coarse line first (the
+                    // first 16 kept: enough for the bracket of up to ≈ 10⁴ map lines; beyond,
+                    // lines are only evaluated again).
+                    let mut seen = [(at(best.1), best.0); 16];
+                    let mut n_seen = 1usize;
+                    let mut eval = |k: u32| {
+                        if let Some(&(_, a)) = seen[..n_seen].iter().find(|s| s.0 == k) {
+                            return a;
+                        }
+                        let a = area_at(line(k));
+                        if n_seen < seen.len() {
+                            seen[n_seen] = (k, a);
+                            n_seen += 1;
+                        }
+                        a
+                    };
                     let (mut lo, mut hi) =
                         (at(best.1.saturating_sub(1)), at((best.1 + 1).min(COARSE)));
+                    // Bracket lo ≤ c ≤ hi with c the largest area seen: probe the wider side at
+                    // the golden ratio, keep the larger of the probe and c.
+                    let (mut c, mut fc) = (at(best.1), best.0);
                     while hi - lo > 6 {
-                        let m1 = lo + (hi - lo) / 3;
-                        let m2 = hi - (hi - lo) / 3;
-                        if area_at(line(m1)) > area_at(line(m2)) {
-                            hi = m2;
+                        let probe = |w: u32| {
+                            ((f64::from(w) * 0.381_966_011_250_105).round() as u32).clamp(1, w - 1)
+                        };
+                        if c - lo >= hi - c {
+                            let x = c - probe(c - lo);
+                            let fx = eval(x);
+                            if fx > fc {
+                                (hi, c, fc) = (c, x, fx);
+                            } else {
+                                lo = x;
+                            }
                         } else {
-                            lo = m1;
+                            let x = c + probe(hi - c);
+                            let fx = eval(x);
+                            if fx > fc {
+                                (lo, c, fc) = (c, x, fx);
+                            } else {
+                                hi = x;
+                            }
                         }
                     }
-                    // The ternary search assumes one peak between the neighbours; where the
-                    // area turns more than once it can discard the best coarse line, so keep
-                    // whichever is larger: never worse than any coarse line, the 80 % line
-                    // among them.
-                    let refined = scan(lo, hi);
+                    // The first (largest k) line of largest area in [lo, hi].
+                    let mut refined = (f64::NEG_INFINITY, hi);
+                    for k in (lo..=hi).rev() {
+                        let a = eval(k);
+                        if a > refined.0 {
+                            refined = (a, k);
+                        }
+                    }
+                    // Never worse than any coarse line, the 80 % line among them.
                     if best.0 > refined.0 {
                         at(best.1)
                     } else {
@@ -652,19 +689,39 @@ impl FastArea {
         if hn < 3 {
             return 0.0;
         }
+        // The divisions two at a time (independent, so the compiler can pair them in one SSE2
+        // `divpd`), the min/max and the sum in the same order as one at a time: bit for bit.
+        // η > 0 and d ≥ 0, so no value is NaN and the one-instruction min/max are exact.
         let (mut s_min, mut s_max) = (f64::INFINITY, f64::NEG_INFINITY);
-        for (x, d) in self.ex[..self.m].iter().zip(&self.ed[..self.m]) {
-            let s = x / (d + eta);
-            s_min = s_min.min(s);
-            s_max = s_max.max(s);
+        let m = self.m;
+        let mut j = 0;
+        while j + 2 <= m {
+            let s0 = self.ex[j] / (self.ed[j] + eta);
+            let s1 = self.ex[j + 1] / (self.ed[j + 1] + eta);
+            s_min = fmin(fmin(s_min, s0), s1);
+            s_max = fmax(fmax(s_max, s0), s1);
+            j += 2;
+        }
+        if j < m {
+            let s0 = self.ex[j] / (self.ed[j] + eta);
+            s_min = fmin(s_min, s0);
+            s_max = fmax(s_max, s0);
         }
         let s_h = 0.5 * (s_max - s_min);
         let mut r_prev = 1.0 / (self.hd[hn - 1] + eta);
         let mut sum = 0.0;
-        for (d, c) in self.hd[..hn].iter().zip(&self.hc[..hn]) {
-            let r = 1.0 / (d + eta);
-            sum += c * r_prev * r;
-            r_prev = r;
+        let mut i = 0;
+        while i + 2 <= hn {
+            let r0 = 1.0 / (self.hd[i] + eta);
+            let r1 = 1.0 / (self.hd[i + 1] + eta);
+            sum += self.hc[i] * r_prev * r0;
+            sum += self.hc[i + 1] * r0 * r1;
+            r_prev = r1;
+            i += 2;
+        }
+        if i < hn {
+            let r = 1.0 / (self.hd[i] + eta);
+            sum += self.hc[i] * r_prev * r;
         }
         (eta + self.lambda) * sum.abs() / (4.0 * self.lambda * s_h)
     }

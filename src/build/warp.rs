@@ -621,15 +621,18 @@ pub use crate::analytic::tsm::EIGHTY_PERCENT_LINE as TSM_80_PERCENT_LINE;
 /// where the builders use the bounding rectangle, the limit η → ∞.
 #[inline]
 pub(crate) fn tsm_eta(lambda: f64, delta_p: f64, xi: f64) -> Option<f64> {
-    // The closed form's domain, checked first so that the per-frame path never builds (and
-    // allocates) an error message: δ′ ∈ (0, λ) and a positive denominator λ(1 − ξ) − 2δ′.
-    if !(delta_p > 0.0 && delta_p < lambda && lambda * (1.0 - xi) - 2.0 * delta_p > 0.0) {
+    // The closed form's domain (λ finite, δ′ ∈ (0, λ), ξ ∈ (−1, 1), a positive denominator
+    // λ(1 − ξ) − 2δ′) and its value, bit for bit `analytic::tsm::tsm_eta`'s `Ok(Finite(η))`,
+    // without building its `Result` (the TSM line search calls this ≈ 45 times per map).
+    if !(lambda.is_finite() && delta_p > 0.0 && delta_p < lambda && xi > -1.0 && xi < 1.0) {
         return None;
     }
-    match crate::analytic::tsm::tsm_eta(lambda, delta_p, xi) {
-        Ok(NPrime::Finite(eta)) => Some(eta),
-        _ => None,
+    let den = lambda * (1.0 - xi) - 2.0 * delta_p;
+    if den <= 0.0 {
+        return None;
     }
+    let eta = lambda * delta_p * (1.0 + xi) / den;
+    (eta.is_finite() && eta > 0.0).then_some(eta)
 }
 
 fn tsm_rule(view: &ViewFrustum, fl: &FrustumInLight, focus: f64) -> Result<NPrime> {
