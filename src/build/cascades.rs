@@ -193,21 +193,9 @@ pub(crate) fn visit_cascades(
     if overlap >= 1.0 {
         return Err(Error::invalid("overlap", "must be smaller than 1 (got 1)"));
     }
+    splits_within(view, splits)?;
     let planes = splits.planes();
-    let (first, last) = (planes[0], planes[planes.len() - 1]);
-    let slack = 1e-12 * view.far();
-    if first < view.near() - slack || last > view.far() + slack {
-        return Err(Error::invalid(
-            "splits",
-            format!(
-                "must lie within [near, far] = [{}, {}] (got [{}, {}])",
-                fmt_num(view.near()),
-                fmt_num(view.far()),
-                fmt_num(first),
-                fmt_num(last)
-            ),
-        ));
-    }
+    let last = planes[planes.len() - 1];
     let k = splits.k();
     // `warp(&sub, light_dir, rule)` for every partition, with the light space computed once.
     let light = PreparedLight::new(light_dir)?;
@@ -435,18 +423,7 @@ pub fn stable_cascades(
     splits: &Splits,
     resolution: u32,
 ) -> Result<StableCascades> {
-    let planes = splits.planes();
-    let slack = 1e-12 * view.far();
-    if planes[0] < view.near() - slack || planes[planes.len() - 1] > view.far() + slack {
-        return Err(Error::invalid(
-            "splits",
-            format!(
-                "must lie within [near, far] = [{}, {}]",
-                fmt_num(view.near()),
-                fmt_num(view.far())
-            ),
-        ));
-    }
+    splits_within(view, splits)?;
     let mut parts = [None; MAX_PARTITIONS];
     for (i, part) in parts.iter_mut().enumerate().take(splits.k()) {
         let (a, b) = splits.range(i);
@@ -481,4 +458,27 @@ fn rigid_inverse(world_to_eye: DMat4) -> Result<DMat4> {
         ));
     }
     Ok(world_to_eye.inverse())
+}
+
+/// Checks that split planes lie within the view's [near, far] (to a relative 10⁻¹²).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `splits`, with both ranges.
+pub(crate) fn splits_within(view: &ViewFrustum, splits: &Splits) -> Result<()> {
+    let planes = splits.planes();
+    let (first, last) = (planes[0], planes[planes.len() - 1]);
+    let slack = 1e-12 * view.far();
+    if first < view.near() - slack || last > view.far() + slack {
+        return Err(Error::invalid(
+            "splits",
+            format!(
+                "must lie within [near, far] = [{}, {}] (got [{}, {}])",
+                fmt_num(view.near()),
+                fmt_num(view.far()),
+                fmt_num(first),
+                fmt_num(last)
+            ),
+        ));
+    }
+    Ok(())
 }

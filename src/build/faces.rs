@@ -419,18 +419,7 @@ pub(crate) fn visit_face_partitions(
     mut visit: impl FnMut(&FacePartition),
 ) -> Result<VisibleFaces> {
     let l = unit_light_dir(light_dir)?;
-    let planes = splits.planes();
-    let slack = 1e-12 * view.far();
-    if planes[0] < view.near() - slack || planes[planes.len() - 1] > view.far() + slack {
-        return Err(Error::invalid(
-            "splits",
-            format!(
-                "must lie within [near, far] = [{}, {}]",
-                fmt_num(view.near()),
-                fmt_num(view.far())
-            ),
-        ));
-    }
+    crate::build::cascades::splits_within(view, splits)?;
     let tan = view.tan_half_fov();
     let ta = tan * view.aspect();
     let faces = visible_with(tan, ta, l);
