@@ -8,8 +8,6 @@
 //! allocates), so the test harness running other tests on other threads does not disturb it.
 //! `allocations_are_counted` checks that the counter sees a real allocation, so a zero count
 //! cannot come from a counter that never counts.
-#![allow(unsafe_code)]
-
 use glam::DVec3;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
 use shadow_aliasing::build::atlas::{layout, AtlasEntry};
@@ -19,58 +17,11 @@ use shadow_aliasing::build::minimax::minimax_n_prime;
 use shadow_aliasing::build::{tsm, warp, ShadowMatrix, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::measure::frustum_max;
 use shadow_aliasing::ViewFrustum;
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
 use std::hint::black_box;
 
-struct Counting;
-
-thread_local! {
-    static COUNT: Cell<usize> = const { Cell::new(0) };
-}
-
-fn bump() {
-    // `try_with` so an allocation during thread teardown (after the slot is destroyed) is not a
-    // panic inside the allocator.
-    let _ = COUNT.try_with(|c| c.set(c.get() + 1));
-}
-
-// SAFETY: every method forwards to `System` with the caller's arguments unchanged, so `Counting`
-// upholds exactly the contract `System` does; the counter is a thread-local `Cell<usize>` with a
-// `const` initialiser and no destructor, whose access neither allocates nor re-enters the
-// allocator.
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        bump();
-        // SAFETY: forwarded unchanged (see above).
-        unsafe { System.alloc(layout) }
-    }
-    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-        bump();
-        // SAFETY: forwarded unchanged.
-        unsafe { System.alloc_zeroed(layout) }
-    }
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        bump();
-        // SAFETY: forwarded unchanged.
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        // SAFETY: forwarded unchanged.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-}
-
-#[global_allocator]
-static GLOBAL: Counting = Counting;
-
-/// Heap allocations made on this thread while `f` runs.
-fn allocations<R>(f: impl FnOnce() -> R) -> (usize, R) {
-    let before = COUNT.with(Cell::get);
-    let r = f();
-    let after = COUNT.with(Cell::get);
-    (after - before, r)
-}
+#[path = "common/counting_alloc.rs"]
+mod no_alloc;
+use no_alloc::allocations;
 
 /// Cameras from f/n = 1.01 to 10⁶ and half fields of view from 1° to 80°, with an aspect ≠ 1.
 fn views() -> Vec<ViewFrustum> {
@@ -103,7 +54,7 @@ fn assert_no_allocation(name: &str, build: impl Fn(&ViewFrustum, DVec3)) {
     build(&views[0], lights[0]);
     for v in &views {
         for &l in &lights {
-            let (n, ()) = allocations(|| build(black_box(v), black_box(l)));
+            let ((), n) = allocations(|| build(black_box(v), black_box(l)));
             assert_eq!(
                 n,
                 0,
@@ -125,7 +76,7 @@ fn single(rule: WarpRule) -> impl Fn(&ViewFrustum, DVec3) {
 
 #[test]
 fn allocations_are_counted() {
-    let (n, v) = allocations(|| black_box(vec![1u8; 64]));
+    let (v, n) = allocations(|| black_box(vec![1u8; 64]));
     assert!(n >= 1, "the counter saw {n} allocations for a Vec");
     drop(v);
 }

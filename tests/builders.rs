@@ -437,41 +437,8 @@ fn caster_bound_clamp_and_enclose() {
     .is_err());
 }
 
-mod no_alloc {
-    //! The per-frame builders allocate nothing: a counting allocator, per thread (tests run in
-    //! parallel threads), around the calls.
-    #![allow(unsafe_code)]
-    use std::alloc::{GlobalAlloc, Layout, System};
-    use std::cell::Cell;
-
-    thread_local! {
-        static COUNT: Cell<usize> = const { Cell::new(0) };
-    }
-
-    pub struct Counting;
-
-    // SAFETY: forwards to the system allocator; only counts.
-    unsafe impl GlobalAlloc for Counting {
-        unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-            let _ = COUNT.try_with(|c| c.set(c.get() + 1));
-            // SAFETY: same contract as the caller's.
-            unsafe { System.alloc(layout) }
-        }
-        unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-            // SAFETY: same contract as the caller's.
-            unsafe { System.dealloc(ptr, layout) }
-        }
-    }
-
-    #[global_allocator]
-    static GLOBAL: Counting = Counting;
-
-    pub fn allocations<T>(f: impl FnOnce() -> T) -> (T, usize) {
-        let before = COUNT.with(Cell::get);
-        let out = f();
-        (out, COUNT.with(Cell::get) - before)
-    }
-}
+#[path = "common/counting_alloc.rs"]
+mod no_alloc;
 
 #[test]
 fn per_frame_builders_do_not_allocate() {

@@ -161,40 +161,8 @@ fn parallel_equals_serial() {
     assert_eq!(one, all);
 }
 
-mod no_alloc {
-    //! A counting allocator, per thread (tests run in parallel threads), around the calls.
-    #![allow(unsafe_code)]
-    use std::alloc::{GlobalAlloc, Layout, System};
-    use std::cell::Cell;
-
-    thread_local! {
-        static COUNT: Cell<usize> = const { Cell::new(0) };
-    }
-
-    pub struct Counting;
-
-    // SAFETY: forwards to the system allocator; only counts.
-    unsafe impl GlobalAlloc for Counting {
-        unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-            let _ = COUNT.try_with(|c| c.set(c.get() + 1));
-            // SAFETY: same contract as the caller's.
-            unsafe { System.alloc(layout) }
-        }
-        unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-            // SAFETY: same contract as the caller's.
-            unsafe { System.dealloc(ptr, layout) }
-        }
-    }
-
-    #[global_allocator]
-    static GLOBAL: Counting = Counting;
-
-    pub fn allocations<T>(f: impl FnOnce() -> T) -> (T, usize) {
-        let before = COUNT.with(Cell::get);
-        let out = f();
-        (out, COUNT.with(Cell::get) - before)
-    }
-}
+#[path = "common/counting_alloc.rs"]
+mod no_alloc;
 
 /// The per-frame partition builders allocate nothing: schemes of every partitioning (into a
 /// reused result), cascades, face partitions, stable cascades, the atlas and the seams; and the
