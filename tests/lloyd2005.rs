@@ -14,20 +14,8 @@ use shadow_aliasing::measure::twin::overhead_map;
 use shadow_aliasing::measure::{frustum_max, point_error};
 use shadow_aliasing::warp::{eta_from_n_prime, n_prime_from_eta};
 use shadow_aliasing::{NPrime, Resolutions, ViewFrustum};
-
-const REL: f64 = 1e-9;
-
-fn config() -> ProptestConfig {
-    ProptestConfig {
-        cases: 128,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
-
-fn close(a: f64, b: f64, rel: f64) -> bool {
-    (a - b).abs() <= rel * a.abs().max(b.abs())
-}
+mod common;
+use common::{close, config, REL};
 
 /// α log-uniform in [1.01, 10⁴].
 fn alpha() -> impl Strategy<Value = f64> {

@@ -10,29 +10,8 @@ use shadow_aliasing::measure::twin::overhead_map;
 use shadow_aliasing::measure::{frustum_max, frustum_max_sampled, point_error};
 use shadow_aliasing::warp::{eta_from_n_prime, n_prime_from_eta, n_prime_lispsm, n_prime_psm};
 use shadow_aliasing::{NPrime, Resolutions, ViewFrustum};
-
-const REL: f64 = 1e-9;
-
-fn config() -> ProptestConfig {
-    ProptestConfig {
-        cases: 128,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
-
-fn close(a: f64, b: f64, rel: f64) -> bool {
-    (a - b).abs() <= rel * a.abs().max(b.abs())
-}
-
-/// A random valid frustum: near log-uniform in [0.01, 10], f/n log-uniform in [1.01, 10⁴],
-/// half field of view in [1°, 80°].
-fn frustum() -> impl Strategy<Value = ViewFrustum> {
-    (-2.0f64..1.0, 0.0043f64..4.0, 1.0f64..80.0).prop_map(|(ln, la, th)| {
-        let n = 10f64.powf(ln);
-        ViewFrustum::new(n, n * 10f64.powf(la), th.to_radians()).unwrap()
-    })
-}
+mod common;
+use common::{close, config, frustum, REL};
 
 fn resolutions() -> impl Strategy<Value = Resolutions> {
     (1.0f64..4096.0, 1.0f64..4096.0, 1.0f64..4096.0)

@@ -14,27 +14,8 @@ use shadow_aliasing::measure::twin::{
 };
 use shadow_aliasing::{Error, ViewFrustum};
 use std::f64::consts::FRAC_PI_2;
-
-const REL: f64 = 1e-9;
-
-fn config() -> ProptestConfig {
-    ProptestConfig {
-        cases: 128,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
-
-fn close(a: f64, b: f64, rel: f64) -> bool {
-    (a - b).abs() <= rel * a.abs().max(b.abs())
-}
-
-fn frustum() -> impl Strategy<Value = ViewFrustum> {
-    (-2.0f64..1.0, 0.0043f64..4.0, 1.0f64..80.0).prop_map(|(ln, la, th)| {
-        let n = 10f64.powf(ln);
-        ViewFrustum::new(n, n * 10f64.powf(la), th.to_radians()).unwrap()
-    })
-}
+mod common;
+use common::{close, config, frustum, REL};
 
 fn scheme() -> impl Strategy<Value = SplitScheme> {
     prop_oneof![
