@@ -264,8 +264,8 @@ pub fn scheme_into(
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Prepared {
     view: ViewFrustum,
-    tan: f64,
-    corners: [DVec3; 8],
+    pub(crate) tan: f64,
+    pub(crate) corners: [DVec3; 8],
 }
 
 impl Prepared {

@@ -42,6 +42,9 @@
 //! ```
 
 use crate::build::scheme::{scheme_into, scheme_into_prepared, Partition, Prepared, SchemeResult};
+use lanes::{LaneSweep, LANES};
+
+mod lanes;
 /// The jump of error across each seam between neighbouring partitions of a scheme (defined with
 /// the scheme, re-exported here beside the other measurements of partitions).
 pub use crate::build::scheme::{seams, Seam, Seams};
@@ -367,6 +370,14 @@ pub fn sweep_into(
     let mut probe = SchemeResult::default();
     scheme_into(view, DVec3::NEG_Y, rule, partition, k, &mut probe)?;
     let prep = Prepared::new(view);
+    // A single map of a rule whose n′ the lane code computes: LANES directions at a time, bit for
+    // bit the scalar values (`lanes`).
+    let lanes = if partition == Partition::Single {
+        let fixed = crate::build::n_prime_for(view, DVec3::NEG_Y, rule).ok();
+        LaneSweep::new(view, rule, fixed, &prep.corners, prep.tan)
+    } else {
+        None
+    };
     // S̄ of one direction: light_dir_from_angles(el, az) from the angles' sines and cosines,
     // normalised as `scheme` normalises it (so the value is bit for bit `scheme`'s).
     let one = |(se, ce): (f64, f64), (sa, ca): (f64, f64), buf: &mut SchemeResult| {
@@ -389,7 +400,28 @@ pub fn sweep_into(
         let row = |i: usize, values: &mut [f64]| -> bool {
             let el = grid.elevation(i).sin_cos();
             let mut buf = SchemeResult::default();
-            for (v, &az) in values[first..first + n].iter_mut().zip(table) {
+            let values = &mut values[first..first + n];
+            if let Some(lanes) = &lanes {
+                // LANES directions at a time; a lane the lane code cannot take (or the padding
+                // of the last group, which repeats its last direction) goes through `one`.
+                for (vs, azs) in values.chunks_mut(LANES).zip(table.chunks(LANES)) {
+                    let az: [(f64, f64); LANES] =
+                        std::array::from_fn(|j| azs[j.min(azs.len() - 1)]);
+                    let (s, ok) = lanes.run(el, &az);
+                    for (j, v) in vs.iter_mut().enumerate() {
+                        if ok[j] {
+                            *v = s[j];
+                        } else {
+                            match one(el, az[j], &mut buf) {
+                                Ok(s) => *v = s,
+                                Err(_) => return false,
+                            }
+                        }
+                    }
+                }
+                return true;
+            }
+            for (v, &az) in values.iter_mut().zip(table) {
                 match one(el, az, &mut buf) {
                     Ok(s) => *v = s,
                     Err(_) => return false,
