@@ -544,3 +544,39 @@ fn homogeneous(rows: &[Row; 4], (w, h, d): (f64, f64, f64)) -> [[F; 4]; 4] {
     let r = [at(&rows[0]), at(&rows[1]), at(&rows[2]), at(&rows[3])];
     std::array::from_fn(|j| [r[0][j], r[1][j], r[2][j], r[3][j]])
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::build::scheme::{scheme, Partition, Prepared};
+    use crate::measure::sweep::light_dir_from_angles;
+
+    /// The lanes take ordinary directions themselves (the bit-for-bit tests in tests/sweep.rs
+    /// would also pass if every lane went to the scalar code) and send the light exactly along the
+    /// view axis (the light-space fallback) to the scalar code.
+    #[test]
+    fn lanes_take_ordinary_directions_and_refuse_the_parallel_one() {
+        let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
+        let prep = Prepared::new(&view);
+        let lanes =
+            LaneSweep::new(&view, WarpRule::LispsmSin, None, &prep.corners, prep.tan).unwrap();
+        let azs = [0.0, 1.0, 2.5, std::f64::consts::PI];
+        for el in [0.0, 0.4, std::f64::consts::FRAC_PI_2] {
+            let (s, ok) = lanes.run(el.sin_cos(), &azs.map(f64::sin_cos));
+            for (j, &az) in azs.iter().enumerate() {
+                let l = light_dir_from_angles(el, az);
+                let parallel = el == 0.0 && (az == 0.0 || az == std::f64::consts::PI);
+                assert_eq!(ok[j], !parallel, "el={el} az={az}");
+                if ok[j] {
+                    let direct = scheme(&view, l, WarpRule::LispsmSin, Partition::Single, 1)
+                        .unwrap()
+                        .storage_factor();
+                    assert_eq!(s[j].to_bits(), direct.to_bits());
+                }
+            }
+        }
+        // Rules the lanes do not compute, and fixed rules without their n′, run the scalar code.
+        assert!(LaneSweep::new(&view, WarpRule::Minimax, None, &prep.corners, prep.tan).is_none());
+        assert!(LaneSweep::new(&view, WarpRule::Lispsm, None, &prep.corners, prep.tan).is_none());
+    }
+}
