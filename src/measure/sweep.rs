@@ -399,9 +399,10 @@ pub fn sweep_into(
         let table = &table[..n];
         let row = |i: usize, values: &mut [f64]| -> bool {
             let el = grid.elevation(i).sin_cos();
-            let mut buf = SchemeResult::default();
             let values = &mut values[first..first + n];
             if let Some(lanes) = &lanes {
+                // The scalar code's result buffer (several KB) only for a row that needs it.
+                let mut buf: Option<SchemeResult> = None;
                 // LANES directions at a time; a lane the lane code cannot take (or the padding
                 // of the last group, which repeats its last direction) goes through `one`.
                 for (vs, azs) in values.chunks_mut(LANES).zip(table.chunks(LANES)) {
@@ -412,7 +413,7 @@ pub fn sweep_into(
                         if ok[j] {
                             *v = s[j];
                         } else {
-                            match one(el, az[j], &mut buf) {
+                            match one(el, az[j], buf.get_or_insert_with(SchemeResult::default)) {
                                 Ok(s) => *v = s,
                                 Err(_) => return false,
                             }
@@ -421,6 +422,7 @@ pub fn sweep_into(
                 }
                 return true;
             }
+            let mut buf = SchemeResult::default();
             for (v, &az) in values.iter_mut().zip(table) {
                 match one(el, az, &mut buf) {
                     Ok(s) => *v = s,

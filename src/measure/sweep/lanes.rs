@@ -337,41 +337,16 @@ impl LaneSweep {
         let x = x.scale(1.0 / x.dot(x).sqrt());
         let z = x.cross(y);
         // `FrustumInLight::in_light_space`: the corners' light coordinates from shared products.
-        let mut q = [(F::splat(0.0), F::splat(0.0), F::splat(0.0)); 8];
+        let (qn, qf) = (
+            light_corners(&x, &y, &z, self.clip[0]),
+            light_corners(&x, &y, &z, self.clip[1]),
+        );
+        let q = [qn[0], qn[1], qn[2], qn[3], qf[0], qf[1], qf[2], qf[3]];
         let mut z0 = F::splat(f64::INFINITY);
         let mut z1 = F::splat(f64::NEG_INFINITY);
-        for (k, &(w, h, d)) in self.clip.iter().enumerate() {
-            let px = (x.x * w, y.x * w, z.x * w);
-            let py = (x.y * h, y.y * h, z.y * h);
-            let nd = -d;
-            let pz = (x.z * nd, y.z * nd, z.z * nd);
-            let c = [
-                (
-                    (-px.0 - py.0) + pz.0,
-                    (-px.1 - py.1) + pz.1,
-                    (-px.2 - py.2) + pz.2,
-                ),
-                (
-                    (px.0 - py.0) + pz.0,
-                    (px.1 - py.1) + pz.1,
-                    (px.2 - py.2) + pz.2,
-                ),
-                (
-                    (px.0 + py.0) + pz.0,
-                    (px.1 + py.1) + pz.1,
-                    (px.2 + py.2) + pz.2,
-                ),
-                (
-                    (-px.0 + py.0) + pz.0,
-                    (-px.1 + py.1) + pz.1,
-                    (-px.2 + py.2) + pz.2,
-                ),
-            ];
-            for (j, cj) in c.into_iter().enumerate() {
-                q[4 * k + j] = cj;
-                z0 = z0.min(cj.2);
-                z1 = z1.max(cj.2);
-            }
+        for c in &q {
+            z0 = z0.min(c.2);
+            z1 = z1.max(c.2);
         }
         let delta = z1 - z0;
         // sin γ = √(l.x² + l.y²), at most 1 (`f64::min`: the value is never NaN).
@@ -480,10 +455,12 @@ impl LaneSweep {
         let mut mz2 = F::splat(0.0);
         for k in 0..2 {
             let hc = homogeneous(&rows, self.clip[k]);
+            let hm_own;
             let hm = if self.same {
-                hc
+                &hc
             } else {
-                homogeneous(&rows, self.meas[k])
+                hm_own = homogeneous(&rows, self.meas[k]);
+                &hm_own
             };
             // z = −p.z, the depth of the measurement's corners (> 0: checked by `new`).
             let zd = self.meas[k].2;
@@ -518,6 +495,39 @@ impl LaneSweep {
         checks.positive(mz);
         ((0.0 + mx * mz).0, checks.passed())
     }
+}
+
+/// The light-space coordinates `(x·c, y·c, z·c)` of the four corners `(±w, ±h, −d)` of one depth
+/// (`ViewFrustum::corners` order), from the products shared by the four corners, as
+/// `FrustumInLight::in_light_space` computes them.
+#[inline(always)]
+fn light_corners(x: &V3, y: &V3, z: &V3, (w, h, d): (f64, f64, f64)) -> [(F, F, F); 4] {
+    let px = (x.x * w, y.x * w, z.x * w);
+    let py = (x.y * h, y.y * h, z.y * h);
+    let nd = -d;
+    let pz = (x.z * nd, y.z * nd, z.z * nd);
+    [
+        (
+            (-px.0 - py.0) + pz.0,
+            (-px.1 - py.1) + pz.1,
+            (-px.2 - py.2) + pz.2,
+        ),
+        (
+            (px.0 - py.0) + pz.0,
+            (px.1 - py.1) + pz.1,
+            (px.2 - py.2) + pz.2,
+        ),
+        (
+            (px.0 + py.0) + pz.0,
+            (px.1 + py.1) + pz.1,
+            (px.2 + py.2) + pz.2,
+        ),
+        (
+            (-px.0 + py.0) + pz.0,
+            (-px.1 + py.1) + pz.1,
+            (-px.2 + py.2) + pz.2,
+        ),
+    ]
 }
 
 /// The clip check's slack (`clip_ok_at_corners`).
