@@ -18,7 +18,8 @@
 //!    they bound the trapezoid T.
 //! 4. N_T is the projective map sending T's corners to the unit square's: top-left → (−1, 1),
 //!    top-right → (1, 1), base-right → (1, −1), base-left → (−1, −1), solved as the four-point
-//!    homography (an 8 × 8 linear system, nalgebra LU, on coordinates normalised to the
+//!    homography (Heckbert's square-to-quad map, whose two perspective terms are a 2 × 2 linear
+//!    system solved by nalgebra's LU, inverted by its adjugate, on coordinates normalised to the
 //!    trapezoid's size), and checked by mapping the corners back.
 //! 5. N_T is applied to x, y and w; depth stays in light space (§4): [`TsmMap::light_depth`] is
 //!    the affine light-space depth for the fragment stage (`gl_FragDepth = z_L` plus the usual
@@ -69,7 +70,7 @@ use crate::build::warp::{fmax, fmin, tsm_eta};
 use crate::error::{fmt_num, in_open, positive, Error, Result};
 use crate::frustum::{NPrime, ViewFrustum};
 use glam::{DMat3, DMat4, DVec2, DVec3, DVec4};
-use nalgebra::{SMatrix, SVector};
+use nalgebra::{Matrix2, Vector2};
 
 pub use crate::build::warp::TSM_80_PERCENT_LINE;
 
@@ -157,11 +158,23 @@ const SQUARE: [DVec2; 4] = [
 ];
 
 /// The four-point homography H with `H (pᵢ, 1) ∝ (sᵢ, 1)` for the unit square's corners sᵢ
-/// (top-left (−1, 1), top-right (1, 1), base-right (1, −1), base-left (−1, −1)), h₃₃ = 1.
+/// (top-left (−1, 1), top-right (1, 1), base-right (1, −1), base-left (−1, −1)).
 ///
-/// The 8 × 8 system `[x, y, 1, 0, 0, 0, −X x, −X y] h = X`, `[0, 0, 0, x, y, 1, −Y x, −Y y] h = Y`
-/// is solved by LU on coordinates translated to the quad's centroid and scaled to unit size
-/// (Hartley's normalisation), then the scaling is composed back.
+/// On coordinates translated to the quad's centroid and scaled to unit size (Hartley's
+/// normalisation), Heckbert's square-to-quad map P (Heckbert 1989, "Fundamentals of Texture
+/// Mapping and Image Warping") sends the unit square's (α, β) = (0, 0), (1, 0), (1, 1), (0, 1) to
+/// the corners p₀ … p₃:
+///
+/// ```text
+/// P = [[a, b, c], [d, e, f], [g, h, 1]],   [p₁ − p₂ | p₃ − p₂] (g, h)ᵀ = p₀ − p₁ + p₂ − p₃,
+/// (a, d) = p₁ − p₀ + g p₁,   (b, e) = p₃ − p₀ + h p₃,   (c, f) = p₀
+/// ```
+///
+/// (the 2 × 2 system solved by nalgebra's LU; g = h = 0 for a parallelogram). H is P's adjugate
+/// (∝ P⁻¹) followed by (u, v) = (2α − 1, 1 − 2β), scaled so that the centroid maps to w = 1, and
+/// the normalisation composed back. The same map as the 8 × 8 system
+/// `[x, y, 1, 0, 0, 0, −X x, −X y] h = X`, `[0, 0, 0, x, y, 1, −Y x, −Y y] h = Y`
+/// (`homography_is_the_eight_point_solve` in tests/tsm.rs checks the two agree).
 ///
 /// # Errors
 /// [`Error::Degenerate`] when the quadrilateral is near-degenerate: not strictly convex with
@@ -211,34 +224,43 @@ pub fn quad_to_square(quad: [DVec2; 4]) -> Result<DMat3> {
             ));
         }
     }
-    let mut a = SMatrix::<f64, 8, 8>::zeros();
-    let mut b = SVector::<f64, 8>::zeros();
-    for i in 0..4 {
-        let (x, y) = (norm[i].x, norm[i].y);
-        let (u, v) = (SQUARE[i].x, SQUARE[i].y);
-        let r = 2 * i;
-        a[(r, 0)] = x;
-        a[(r, 1)] = y;
-        a[(r, 2)] = 1.0;
-        a[(r, 6)] = -u * x;
-        a[(r, 7)] = -u * y;
-        b[r] = u;
-        a[(r + 1, 3)] = x;
-        a[(r + 1, 4)] = y;
-        a[(r + 1, 5)] = 1.0;
-        a[(r + 1, 6)] = -v * x;
-        a[(r + 1, 7)] = -v * y;
-        b[r + 1] = v;
-    }
-    let h = a
-        .lu()
-        .solve(&b)
-        .ok_or_else(|| Error::Degenerate("the homography system is singular".into()))?;
-    let hn = DMat3::from_cols(
-        DVec3::new(h[0], h[3], h[6]),
-        DVec3::new(h[1], h[4], h[7]),
-        DVec3::new(h[2], h[5], 1.0),
-    );
+    // Heckbert's square-to-quad map P: the unit square's (α, β) = (0, 0), (1, 0), (1, 1), (0, 1)
+    // onto the corners in order, P = [[a, b, c], [d, e, f], [g, h, 1]] on (α, β, 1). Its two
+    // perspective terms solve [p₁ − p₂, p₃ − p₂] (g, h)ᵀ = p₀ − p₁ + p₂ − p₃ (nalgebra LU;
+    // (g, h) = 0 for a parallelogram).
+    let hn = {
+        let p = norm;
+        let sigma = p[0] - p[1] + p[2] - p[3];
+        let (d1, d2) = (p[1] - p[2], p[3] - p[2]);
+        let gh = Matrix2::new(d1.x, d2.x, d1.y, d2.y)
+            .lu()
+            .solve(&Vector2::new(sigma.x, sigma.y))
+            .ok_or_else(|| Error::Degenerate("the homography system is singular".into()))?;
+        let (g, h) = (gh[0], gh[1]);
+        let (a, b, c) = (
+            p[1].x - p[0].x + g * p[1].x,
+            p[3].x - p[0].x + h * p[3].x,
+            p[0].x,
+        );
+        let (d, e, f) = (
+            p[1].y - p[0].y + g * p[1].y,
+            p[3].y - p[0].y + h * p[3].y,
+            p[0].y,
+        );
+        // P⁻¹ ∝ adj(P) (rows below), then (u, v) = (2α − 1, 1 − 2β) onto the corners' order
+        // top-left (−1, 1) …, scaled so that h₃₃ = 1 (the centroid, the origin here, maps to w = 1).
+        let row_a = DVec3::new(e - f * h, c * h - b, b * f - c * e);
+        let row_b = DVec3::new(f * g - d, a - c * g, c * d - a * f);
+        let row_w = DVec3::new(d * h - e * g, b * g - a * h, a * e - b * d);
+        let k = 1.0 / row_w.z;
+        let (row_u, row_v) = ((2.0 * row_a - row_w) * k, (row_w - 2.0 * row_b) * k);
+        let row_w = row_w * k;
+        DMat3::from_cols(
+            DVec3::new(row_u.x, row_v.x, row_w.x),
+            DVec3::new(row_u.y, row_v.y, row_w.y),
+            DVec3::new(row_u.z, row_v.z, 1.0),
+        )
+    };
     // Undo the normalisation: p_norm = (p − c)/size.
     let t = DMat3::from_cols(
         DVec3::new(1.0 / size, 0.0, 0.0),
