@@ -319,7 +319,8 @@ pub fn tsm(view: &ViewFrustum, light_dir: DVec3, opts: TsmOptions) -> Result<Tsm
         focus_point,
         centre_line,
     };
-    core.build(opts.search, n, f)
+    // E and the focus region are 8 corners each: scratch for 8 points, 16 hull slots.
+    core.build::<8, 16>(opts.search, n, f)
 }
 
 fn validate(view: &ViewFrustum, opts: &TsmOptions) -> Result<()> {
@@ -430,11 +431,20 @@ impl Analytic {
 }
 
 impl Core<'_> {
-    fn build(&self, search: TsmSearch, near: f64, far: f64) -> Result<TsmMap> {
+    /// The map, with scratch for up to `N` points of E and of the focus region (more are
+    /// ignored; callers pass at most `N`) and `H` ≥ 2`N` hull slots (the monotone chain's stack
+    /// holds at most 2n − 1 points): sized per caller, so [`tsm`] zeroes no unused kilobytes.
+    fn build<const N: usize, const H: usize>(
+        &self,
+        search: TsmSearch,
+        near: f64,
+        far: f64,
+    ) -> Result<TsmMap> {
+        const { assert!(H >= 2 * N) };
         let ls = &self.ls;
         // E and the focus region projected to light-space (x, z), once.
-        let mut xz = [DVec2::ZERO; 64];
-        let m = self.points.len().min(64);
+        let mut xz = [DVec2::ZERO; N];
+        let m = self.points.len().min(N);
         let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
         for (q, p) in xz.iter_mut().zip(self.points) {
             *q = DVec2::new(ls.x.dot(*p), ls.z.dot(*p));
@@ -442,9 +452,9 @@ impl Core<'_> {
             z1 = z1.max(q.y);
         }
         let xz = &xz[..m];
-        let mut hull = [DVec2::ZERO; 130];
-        let mut fxz = [DVec2::ZERO; 64];
-        let fm = self.focus_region.len().min(64);
+        let mut hull = [DVec2::ZERO; H];
+        let mut fxz = [DVec2::ZERO; N];
+        let fm = self.focus_region.len().min(N);
         for (q, p) in fxz.iter_mut().zip(self.focus_region) {
             *q = DVec2::new(ls.x.dot(*p), ls.z.dot(*p));
         }
@@ -470,8 +480,8 @@ impl Core<'_> {
             TsmSearch::EightyPercent => (eta_for(TSM_80_PERCENT_LINE), TSM_80_PERCENT_LINE),
             TsmSearch::Line(xi) => (eta_for(xi), xi),
             TsmSearch::Iterative { map_lines } | TsmSearch::IterativeExhaustive { map_lines } => {
-                // Built only for the line searches (7 KB of tables the fixed-line rules skip).
-                let fast = FastArea::new(xz, hull, z0, lambda);
+                // Built only for the line searches (tables the fixed-line rules skip).
+                let fast = FastArea::<N, H>::new(xz, hull, z0, lambda);
                 let area_at = |xi: f64| match eta_for(xi) {
                     Some(e) => fast.area(e),
                     None => focus_area(&Analytic::new(xz, z0, lambda, None), hull),
@@ -669,27 +679,27 @@ impl Core<'_> {
 ///
 /// over the hull's vertices (cyclic), with `cᵢ` independent of η and computed once. Equal to
 /// [`focus_area`] up to rounding (`fast_area_is_focus_area` checks it).
-struct FastArea {
+struct FastArea<const N: usize, const H: usize> {
     /// E's x and d = z − z₀.
-    ex: [f64; 64],
-    ed: [f64; 64],
+    ex: [f64; N],
+    ed: [f64; N],
     m: usize,
     /// The hull's d and cᵢ.
-    hd: [f64; 130],
-    hc: [f64; 130],
+    hd: [f64; H],
+    hc: [f64; H],
     hn: usize,
     lambda: f64,
 }
 
-impl FastArea {
+impl<const N: usize, const H: usize> FastArea<N, H> {
     fn new(xz: &[DVec2], hull: &[DVec2], z0: f64, lambda: f64) -> Self {
         let mut f = Self {
-            ex: [0.0; 64],
-            ed: [0.0; 64],
-            m: xz.len().min(64),
-            hd: [0.0; 130],
-            hc: [0.0; 130],
-            hn: hull.len().min(130),
+            ex: [0.0; N],
+            ed: [0.0; N],
+            m: xz.len().min(N),
+            hd: [0.0; H],
+            hc: [0.0; H],
+            hn: hull.len().min(H),
             lambda,
         };
         for (j, p) in xz.iter().take(f.m).enumerate() {
@@ -768,8 +778,9 @@ fn focus_area(a: &Analytic, hull: &[DVec2]) -> f64 {
 }
 
 /// Convex hull (monotone chain, counter-clockwise, no repeated end point) of `pts` into `out`;
-/// returns the number of hull vertices. Sorts `pts` in place; no allocation.
-fn convex_hull(pts: &mut [DVec2], out: &mut [DVec2; 130]) -> usize {
+/// returns the number of hull vertices. Sorts `pts` in place; no allocation. The chain's stack
+/// holds at most 2n − 1 points (the lower hull, then at most n − 1 more), so `out` needs 2n slots.
+fn convex_hull(pts: &mut [DVec2], out: &mut [DVec2]) -> usize {
     let n = pts.len();
     if n < 3 {
         out[..n].copy_from_slice(pts);
@@ -971,7 +982,7 @@ pub fn tsm_general(
         focus_point,
         centre_line,
     };
-    core.build(opts.search, n_i, f_i)
+    core.build::<64, 128>(opts.search, n_i, f_i)
 }
 
 #[cfg(test)]
@@ -1009,7 +1020,7 @@ mod tests {
             let z0 = xz.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
             let z1 = xz.iter().map(|p| p.y).fold(f64::NEG_INFINITY, f64::max);
             let lambda = z1 - z0;
-            let fast = FastArea::new(&xz, hull, z0, lambda);
+            let fast = FastArea::<64, 130>::new(&xz, hull, z0, lambda);
             for eta in [1e-3, 0.1, 1.0, 7.5, 40.0, 1e3, 1e6] {
                 let slow = focus_area(&Analytic::new(&xz, z0, lambda, Some(eta)), hull);
                 let f = fast.area(eta);
