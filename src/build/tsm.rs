@@ -482,9 +482,14 @@ impl Core<'_> {
             TsmSearch::Iterative { map_lines } | TsmSearch::IterativeExhaustive { map_lines } => {
                 // Built only for the line searches (tables the fixed-line rules skip).
                 let fast = FastArea::<N, H>::new(xz, hull, z0, lambda);
+                // The bounding rectangle's area (every line without a centre of projection, all
+                // those above the focus point's unwarped line) is computed once, when first needed.
+                let rect = std::cell::OnceCell::new();
                 let area_at = |xi: f64| match eta_for(xi) {
                     Some(e) => fast.area(e),
-                    None => focus_area(&Analytic::new(xz, z0, lambda, None), hull),
+                    None => {
+                        *rect.get_or_init(|| focus_area(&Analytic::new(xz, z0, lambda, None), hull))
+                    }
                 };
                 let x = f64::from(map_lines);
                 let line = |k: u32| 1.0 - 2.0 * f64::from(k) / x;
