@@ -18,7 +18,8 @@
 //!    they bound the trapezoid T.
 //! 4. N_T is the projective map sending T's corners to the unit square's: top-left → (−1, 1),
 //!    top-right → (1, 1), base-right → (1, −1), base-left → (−1, −1), solved as the four-point
-//!    homography (an 8 × 8 linear system, nalgebra LU, on coordinates normalised to the
+//!    homography (Heckbert's square-to-quad map, whose two perspective terms are a 2 × 2 linear
+//!    system solved by nalgebra's LU, inverted by its adjugate, on coordinates normalised to the
 //!    trapezoid's size), and checked by mapping the corners back.
 //! 5. N_T is applied to x, y and w; depth stays in light space (§4): [`TsmMap::light_depth`] is
 //!    the affine light-space depth for the fragment stage (`gl_FragDepth = z_L` plus the usual
@@ -69,7 +70,7 @@ use crate::build::warp::{fmax, fmin, tsm_eta};
 use crate::error::{fmt_num, in_open, positive, Error, Result};
 use crate::frustum::{NPrime, ViewFrustum};
 use glam::{DMat3, DMat4, DVec2, DVec3, DVec4};
-use nalgebra::{SMatrix, SVector};
+use nalgebra::{Matrix2, Vector2};
 
 pub use crate::build::warp::TSM_80_PERCENT_LINE;
 
@@ -157,11 +158,23 @@ const SQUARE: [DVec2; 4] = [
 ];
 
 /// The four-point homography H with `H (pᵢ, 1) ∝ (sᵢ, 1)` for the unit square's corners sᵢ
-/// (top-left (−1, 1), top-right (1, 1), base-right (1, −1), base-left (−1, −1)), h₃₃ = 1.
+/// (top-left (−1, 1), top-right (1, 1), base-right (1, −1), base-left (−1, −1)).
 ///
-/// The 8 × 8 system `[x, y, 1, 0, 0, 0, −X x, −X y] h = X`, `[0, 0, 0, x, y, 1, −Y x, −Y y] h = Y`
-/// is solved by LU on coordinates translated to the quad's centroid and scaled to unit size
-/// (Hartley's normalisation), then the scaling is composed back.
+/// On coordinates translated to the quad's centroid and scaled to unit size (Hartley's
+/// normalisation), Heckbert's square-to-quad map P (Heckbert 1989, "Fundamentals of Texture
+/// Mapping and Image Warping") sends the unit square's (α, β) = (0, 0), (1, 0), (1, 1), (0, 1) to
+/// the corners p₀ … p₃:
+///
+/// ```text
+/// P = [[a, b, c], [d, e, f], [g, h, 1]],   [p₁ − p₂ | p₃ − p₂] (g, h)ᵀ = p₀ − p₁ + p₂ − p₃,
+/// (a, d) = p₁ − p₀ + g p₁,   (b, e) = p₃ − p₀ + h p₃,   (c, f) = p₀
+/// ```
+///
+/// (the 2 × 2 system solved by nalgebra's LU; g = h = 0 for a parallelogram). H is P's adjugate
+/// (∝ P⁻¹) followed by (u, v) = (2α − 1, 1 − 2β), scaled so that the centroid maps to w = 1, and
+/// the normalisation composed back. The same map as the 8 × 8 system
+/// `[x, y, 1, 0, 0, 0, −X x, −X y] h = X`, `[0, 0, 0, x, y, 1, −Y x, −Y y] h = Y`
+/// (`homography_is_the_eight_point_solve` in tests/tsm.rs checks the two agree).
 ///
 /// # Errors
 /// [`Error::Degenerate`] when the quadrilateral is near-degenerate: not strictly convex with
@@ -211,34 +224,43 @@ pub fn quad_to_square(quad: [DVec2; 4]) -> Result<DMat3> {
             ));
         }
     }
-    let mut a = SMatrix::<f64, 8, 8>::zeros();
-    let mut b = SVector::<f64, 8>::zeros();
-    for i in 0..4 {
-        let (x, y) = (norm[i].x, norm[i].y);
-        let (u, v) = (SQUARE[i].x, SQUARE[i].y);
-        let r = 2 * i;
-        a[(r, 0)] = x;
-        a[(r, 1)] = y;
-        a[(r, 2)] = 1.0;
-        a[(r, 6)] = -u * x;
-        a[(r, 7)] = -u * y;
-        b[r] = u;
-        a[(r + 1, 3)] = x;
-        a[(r + 1, 4)] = y;
-        a[(r + 1, 5)] = 1.0;
-        a[(r + 1, 6)] = -v * x;
-        a[(r + 1, 7)] = -v * y;
-        b[r + 1] = v;
-    }
-    let h = a
-        .lu()
-        .solve(&b)
-        .ok_or_else(|| Error::Degenerate("the homography system is singular".into()))?;
-    let hn = DMat3::from_cols(
-        DVec3::new(h[0], h[3], h[6]),
-        DVec3::new(h[1], h[4], h[7]),
-        DVec3::new(h[2], h[5], 1.0),
-    );
+    // Heckbert's square-to-quad map P: the unit square's (α, β) = (0, 0), (1, 0), (1, 1), (0, 1)
+    // onto the corners in order, P = [[a, b, c], [d, e, f], [g, h, 1]] on (α, β, 1). Its two
+    // perspective terms solve [p₁ − p₂, p₃ − p₂] (g, h)ᵀ = p₀ − p₁ + p₂ − p₃ (nalgebra LU;
+    // (g, h) = 0 for a parallelogram).
+    let hn = {
+        let p = norm;
+        let sigma = p[0] - p[1] + p[2] - p[3];
+        let (d1, d2) = (p[1] - p[2], p[3] - p[2]);
+        let gh = Matrix2::new(d1.x, d2.x, d1.y, d2.y)
+            .lu()
+            .solve(&Vector2::new(sigma.x, sigma.y))
+            .ok_or_else(|| Error::Degenerate("the homography system is singular".into()))?;
+        let (g, h) = (gh[0], gh[1]);
+        let (a, b, c) = (
+            p[1].x - p[0].x + g * p[1].x,
+            p[3].x - p[0].x + h * p[3].x,
+            p[0].x,
+        );
+        let (d, e, f) = (
+            p[1].y - p[0].y + g * p[1].y,
+            p[3].y - p[0].y + h * p[3].y,
+            p[0].y,
+        );
+        // P⁻¹ ∝ adj(P) (rows below), then (u, v) = (2α − 1, 1 − 2β) onto the corners' order
+        // top-left (−1, 1) …, scaled so that h₃₃ = 1 (the centroid, the origin here, maps to w = 1).
+        let row_a = DVec3::new(e - f * h, c * h - b, b * f - c * e);
+        let row_b = DVec3::new(f * g - d, a - c * g, c * d - a * f);
+        let row_w = DVec3::new(d * h - e * g, b * g - a * h, a * e - b * d);
+        let k = 1.0 / row_w.z;
+        let (row_u, row_v) = ((2.0 * row_a - row_w) * k, (row_w - 2.0 * row_b) * k);
+        let row_w = row_w * k;
+        DMat3::from_cols(
+            DVec3::new(row_u.x, row_v.x, row_w.x),
+            DVec3::new(row_u.y, row_v.y, row_w.y),
+            DVec3::new(row_u.z, row_v.z, 1.0),
+        )
+    };
     // Undo the normalisation: p_norm = (p − c)/size.
     let t = DMat3::from_cols(
         DVec3::new(1.0 / size, 0.0, 0.0),
@@ -297,7 +319,8 @@ pub fn tsm(view: &ViewFrustum, light_dir: DVec3, opts: TsmOptions) -> Result<Tsm
         focus_point,
         centre_line,
     };
-    core.build(opts.search, n, f)
+    // E and the focus region are 8 corners each: scratch for 8 points, 16 hull slots.
+    core.build::<8, 16>(opts.search, n, f)
 }
 
 fn validate(view: &ViewFrustum, opts: &TsmOptions) -> Result<()> {
@@ -408,11 +431,20 @@ impl Analytic {
 }
 
 impl Core<'_> {
-    fn build(&self, search: TsmSearch, near: f64, far: f64) -> Result<TsmMap> {
+    /// The map, with scratch for up to `N` points of E and of the focus region (more are
+    /// ignored; callers pass at most `N`) and `H` ≥ 2`N` hull slots (the monotone chain's stack
+    /// holds at most 2n − 1 points): sized per caller, so [`tsm`] zeroes no unused kilobytes.
+    fn build<const N: usize, const H: usize>(
+        &self,
+        search: TsmSearch,
+        near: f64,
+        far: f64,
+    ) -> Result<TsmMap> {
+        const { assert!(H >= 2 * N) };
         let ls = &self.ls;
         // E and the focus region projected to light-space (x, z), once.
-        let mut xz = [DVec2::ZERO; 64];
-        let m = self.points.len().min(64);
+        let mut xz = [DVec2::ZERO; N];
+        let m = self.points.len().min(N);
         let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
         for (q, p) in xz.iter_mut().zip(self.points) {
             *q = DVec2::new(ls.x.dot(*p), ls.z.dot(*p));
@@ -420,9 +452,9 @@ impl Core<'_> {
             z1 = z1.max(q.y);
         }
         let xz = &xz[..m];
-        let mut hull = [DVec2::ZERO; 130];
-        let mut fxz = [DVec2::ZERO; 64];
-        let fm = self.focus_region.len().min(64);
+        let mut hull = [DVec2::ZERO; H];
+        let mut fxz = [DVec2::ZERO; N];
+        let fm = self.focus_region.len().min(N);
         for (q, p) in fxz.iter_mut().zip(self.focus_region) {
             *q = DVec2::new(ls.x.dot(*p), ls.z.dot(*p));
         }
@@ -448,11 +480,16 @@ impl Core<'_> {
             TsmSearch::EightyPercent => (eta_for(TSM_80_PERCENT_LINE), TSM_80_PERCENT_LINE),
             TsmSearch::Line(xi) => (eta_for(xi), xi),
             TsmSearch::Iterative { map_lines } | TsmSearch::IterativeExhaustive { map_lines } => {
-                // Built only for the line searches (7 KB of tables the fixed-line rules skip).
-                let fast = FastArea::new(xz, hull, z0, lambda);
+                // Built only for the line searches (tables the fixed-line rules skip).
+                let fast = FastArea::<N, H>::new(xz, hull, z0, lambda);
+                // The bounding rectangle's area (every line without a centre of projection, all
+                // those above the focus point's unwarped line) is computed once, when first needed.
+                let rect = std::cell::OnceCell::new();
                 let area_at = |xi: f64| match eta_for(xi) {
                     Some(e) => fast.area(e),
-                    None => focus_area(&Analytic::new(xz, z0, lambda, None), hull),
+                    None => {
+                        *rect.get_or_init(|| focus_area(&Analytic::new(xz, z0, lambda, None), hull))
+                    }
                 };
                 let x = f64::from(map_lines);
                 let line = |k: u32| 1.0 - 2.0 * f64::from(k) / x;
@@ -647,27 +684,27 @@ impl Core<'_> {
 ///
 /// over the hull's vertices (cyclic), with `cᵢ` independent of η and computed once. Equal to
 /// [`focus_area`] up to rounding (`fast_area_is_focus_area` checks it).
-struct FastArea {
+struct FastArea<const N: usize, const H: usize> {
     /// E's x and d = z − z₀.
-    ex: [f64; 64],
-    ed: [f64; 64],
+    ex: [f64; N],
+    ed: [f64; N],
     m: usize,
     /// The hull's d and cᵢ.
-    hd: [f64; 130],
-    hc: [f64; 130],
+    hd: [f64; H],
+    hc: [f64; H],
     hn: usize,
     lambda: f64,
 }
 
-impl FastArea {
+impl<const N: usize, const H: usize> FastArea<N, H> {
     fn new(xz: &[DVec2], hull: &[DVec2], z0: f64, lambda: f64) -> Self {
         let mut f = Self {
-            ex: [0.0; 64],
-            ed: [0.0; 64],
-            m: xz.len().min(64),
-            hd: [0.0; 130],
-            hc: [0.0; 130],
-            hn: hull.len().min(130),
+            ex: [0.0; N],
+            ed: [0.0; N],
+            m: xz.len().min(N),
+            hd: [0.0; H],
+            hc: [0.0; H],
+            hn: hull.len().min(H),
             lambda,
         };
         for (j, p) in xz.iter().take(f.m).enumerate() {
@@ -746,8 +783,9 @@ fn focus_area(a: &Analytic, hull: &[DVec2]) -> f64 {
 }
 
 /// Convex hull (monotone chain, counter-clockwise, no repeated end point) of `pts` into `out`;
-/// returns the number of hull vertices. Sorts `pts` in place; no allocation.
-fn convex_hull(pts: &mut [DVec2], out: &mut [DVec2; 130]) -> usize {
+/// returns the number of hull vertices. Sorts `pts` in place; no allocation. The chain's stack
+/// holds at most 2n − 1 points (the lower hull, then at most n − 1 more), so `out` needs 2n slots.
+fn convex_hull(pts: &mut [DVec2], out: &mut [DVec2]) -> usize {
     let n = pts.len();
     if n < 3 {
         out[..n].copy_from_slice(pts);
@@ -949,7 +987,7 @@ pub fn tsm_general(
         focus_point,
         centre_line,
     };
-    core.build(opts.search, n_i, f_i)
+    core.build::<64, 128>(opts.search, n_i, f_i)
 }
 
 #[cfg(test)]
@@ -987,7 +1025,7 @@ mod tests {
             let z0 = xz.iter().map(|p| p.y).fold(f64::INFINITY, f64::min);
             let z1 = xz.iter().map(|p| p.y).fold(f64::NEG_INFINITY, f64::max);
             let lambda = z1 - z0;
-            let fast = FastArea::new(&xz, hull, z0, lambda);
+            let fast = FastArea::<64, 130>::new(&xz, hull, z0, lambda);
             for eta in [1e-3, 0.1, 1.0, 7.5, 40.0, 1e3, 1e6] {
                 let slow = focus_area(&Analytic::new(&xz, z0, lambda, Some(eta)), hull);
                 let f = fast.area(eta);
