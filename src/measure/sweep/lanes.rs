@@ -180,6 +180,16 @@ impl V3 {
             z: self.x * o.y - o.x * self.y,
         }
     }
+    /// `self − (self·l) l`, the part perpendicular to the unit vector l (glam's order).
+    #[inline(always)]
+    fn perp(self, l: V3) -> V3 {
+        let s = self.dot(l);
+        V3 {
+            x: self.x - s * l.x,
+            y: self.y - s * l.y,
+            z: self.z - s * l.z,
+        }
+    }
     #[inline(always)]
     fn scale(self, s: F) -> V3 {
         V3 {
@@ -435,22 +445,7 @@ impl LaneSweep {
         let ca = g0.cross(g1).dot(l);
         let cb = g0.cross(g3).dot(l);
         let cc = g1.cross(g3).dot(l);
-        let g1p = {
-            let s = g1.dot(l);
-            V3 {
-                x: g1.x - s * l.x,
-                y: g1.y - s * l.y,
-                z: g1.z - s * l.z,
-            }
-        };
-        let g3p = {
-            let s = g3.dot(l);
-            V3 {
-                x: g3.x - s * l.x,
-                y: g3.y - s * l.y,
-                z: g3.z - s * l.z,
-            }
-        };
+        let (g1p, g3p) = (g1.perp(l), g3.perp(l));
         let mut mx2 = F::splat(0.0);
         let mut mz2 = F::splat(0.0);
         for k in 0..2 {
