@@ -203,32 +203,31 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
         ));
     }
     let kf = k as f64;
-    let alpha = f / n;
     let mut p = [0.0; MAX_PARTITIONS + 1];
     let uniform = |i: usize| n + (f - n) * (i as f64 / kf);
-    // Self-similar planes n r^i, r = (f/n)^{1/k}: one root, then products (error ≤ k ulps),
-    // written straight into the planes (only the self-similar and practical schemes need them).
     match scheme {
         SplitScheme::Uniform => {
-            for (i, z) in p.iter_mut().enumerate().take(k + 1) {
-                *z = uniform(i);
+            for (i, z) in p[1..k].iter_mut().enumerate() {
+                *z = uniform(i + 1);
             }
         }
         SplitScheme::SelfSimilar => {
-            let r = root_k(alpha, k);
+            // Self-similar planes n r^i, r = (f/n)^{1/k}: one root, then products (error ≤ k
+            // ulps).
+            let r = root_k(f / n, k);
             let mut zl = n;
-            for z in p.iter_mut().take(k + 1) {
-                *z = zl;
+            for z in &mut p[1..k] {
                 zl *= r;
+                *z = zl;
             }
         }
         SplitScheme::Practical { lambda } => {
             let l = in_closed("lambda", lambda, 0.0, 1.0)?;
-            let r = root_k(alpha, k);
+            let r = root_k(f / n, k);
             let mut zl = n;
-            for (i, z) in p.iter_mut().enumerate().take(k + 1) {
-                *z = l * zl + (1.0 - l) * uniform(i);
+            for (i, z) in p[1..k].iter_mut().enumerate() {
                 zl *= r;
+                *z = l * zl + (1.0 - l) * uniform(i + 1);
             }
         }
         SplitScheme::Adaptive { light_angle, ratio } => {
@@ -241,34 +240,22 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
                 ));
             }
             let l = g / std::f64::consts::FRAC_PI_2;
-            p[k] = f;
+            // In units of n: u_{i−1} = λ u_i^{(i−1)/i} + ((1 − λ)/α) u_i, u_k = f/n, and
+            // z_{i−1} = n u_{i−1}. One division at the start of the chain (the per-step
+            // divisions by n and α are off it).
+            let c = (1.0 - l) / a;
+            let mut u = f / n;
             for i in (2..=k).rev() {
-                let fi = p[i];
-                p[i - 1] = l * n * pow_i_minus_1_over_i(fi / n, i) + (1.0 - l) * fi / a;
-            }
-            p[0] = n;
-            for i in 1..=k {
-                if !p[i].is_finite() || p[i] <= p[i - 1] {
-                    return Err(Error::NoSolution(format!(
-                        "adaptive z-partitioning (Barroso & Celes Eq 19) with ratio={}, \
-                         light_angle={}, k={k} puts plane {i} at {} but plane {} at {} over \
-                         near={}, far={}: lower the ratio or k",
-                        fmt_num(a),
-                        fmt_num(g),
-                        fmt_num(p[i]),
-                        i - 1,
-                        fmt_num(p[i - 1]),
-                        fmt_num(n),
-                        fmt_num(f)
-                    )));
-                }
+                u = l * pow_i_minus_1_over_i(u, i) + c * u;
+                p[i - 1] = n * u;
             }
         }
         SplitScheme::Exponent { exponent } => {
             let e = positive("exponent", exponent)?;
             let ln_e = e.ln();
             let denom = (kf * ln_e).exp_m1();
-            for (i, z) in p.iter_mut().enumerate().take(k + 1) {
+            for (i0, z) in p[1..k].iter_mut().enumerate() {
+                let i = i0 + 1;
                 let frac = if ln_e == 0.0 || denom == 0.0 {
                     i as f64 / kf
                 } else if !denom.is_finite() {
@@ -285,22 +272,47 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
     p[k] = f;
     for i in 1..=k {
         if !p[i].is_finite() || p[i] <= p[i - 1] {
-            return Err(planes_coincide(i, p[i - 1], p[i], alpha, k));
+            return Err(planes_not_increasing(scheme, i, p[i - 1], p[i], n, f, k));
         }
     }
     Ok(Splits { planes: p, k })
 }
 
+/// The error for planes i − 1, i out of order: [`Error::NoSolution`] for Barroso's adaptive
+/// scheme (α^{k−1} too deep for f/n), [`Error::Degenerate`] for the others (f/n too close to 1).
 #[cold]
 #[inline(never)]
-fn planes_coincide(i: usize, prev: f64, z: f64, alpha: f64, k: usize) -> Error {
-    Error::Degenerate(format!(
-        "split planes {} and {i} coincide ({} and {}): far/near={} is too close to 1 for k={k}",
-        i - 1,
-        fmt_num(prev),
-        fmt_num(z),
-        fmt_num(alpha)
-    ))
+fn planes_not_increasing(
+    scheme: SplitScheme,
+    i: usize,
+    prev: f64,
+    z: f64,
+    n: f64,
+    f: f64,
+    k: usize,
+) -> Error {
+    match scheme {
+        SplitScheme::Adaptive { light_angle, ratio } => Error::NoSolution(format!(
+            "adaptive z-partitioning (Barroso & Celes Eq 19) with ratio={}, light_angle={}, \
+             k={k} puts plane {i} at {} but plane {} at {} over near={}, far={}: lower the \
+             ratio or k",
+            fmt_num(ratio),
+            fmt_num(light_angle),
+            fmt_num(z),
+            i - 1,
+            fmt_num(prev),
+            fmt_num(n),
+            fmt_num(f)
+        )),
+        _ => Error::Degenerate(format!(
+            "split planes {} and {i} coincide ({} and {}): far/near={} is too close to 1 for \
+             k={k}",
+            i - 1,
+            fmt_num(prev),
+            fmt_num(z),
+            fmt_num(f / n)
+        )),
+    }
 }
 
 /// x^{1/k} for x > 1: square roots for k = 1, 2, 4, 8, 16 (each correctly rounded, so within
@@ -317,18 +329,40 @@ fn root_k(x: f64, k: usize) -> f64 {
     }
 }
 
-/// x^{(i−1)/i} for x > 0, i ≥ 2 (Barroso & Celes Eq 19's exponent): √x for i = 2,
-/// √x · ⁴√x for i = 4 (within a few ulps of `powf`, and cheaper), `powf` otherwise.
+/// x^{(i−1)/i} for x > 0, i ≥ 2 (Barroso & Celes Eq 19's exponent), within a few ulps of
+/// `powf` and cheaper: √x for i = 2, x · x^{−1/3} for i = 3 ([`inv_cbrt`]), √x · ⁴√x for i = 4,
+/// `powf` otherwise.
 #[inline]
 fn pow_i_minus_1_over_i(x: f64, i: usize) -> f64 {
     match i {
         2 => x.sqrt(),
+        3 => x * inv_cbrt(x),
         4 => {
             let r = x.sqrt();
             r * r.sqrt()
         }
         _ => x.powf((i - 1) as f64 / i as f64),
     }
+}
+
+/// x^{−1/3} for finite x > 0, within ≈ 2 ulps, without a division or a libm call: an initial
+/// guess from the bits of x (the exponent divided by −3; relative error ≤ 3.5 %), then four
+/// Newton steps y ← y (4/3 − (x/3) y³), each squaring the error (≤ 2.4·10⁻³, 1.2·10⁻⁵,
+/// 2.9·10⁻¹⁰, 1.7·10⁻¹⁹, then rounding). Subnormal x (no such guess) goes to `powf`.
+#[inline]
+fn inv_cbrt(x: f64) -> f64 {
+    if !(f64::MIN_POSITIVE..=f64::MAX).contains(&x) {
+        return x.powf(-1.0 / 3.0);
+    }
+    // For x = 2^E (1 + m), bits/2^52 ≈ E + 1023 + m; K − bits/3 puts −E/3 in the exponent
+    // (K tuned for the least largest error over three binades).
+    const K: u64 = 0x553e_f0ed_3d85_9c8c;
+    let mut y = f64::from_bits(K - x.to_bits() / 3);
+    let x3 = x * (1.0 / 3.0);
+    for _ in 0..4 {
+        y *= 4.0 / 3.0 - x3 * (y * y * y);
+    }
+    y
 }
 
 /// A partitioning scheme of Lloyd et al. 2006 §5.3.
