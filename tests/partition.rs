@@ -527,3 +527,27 @@ fn adaptive_k3_by_hand() {
     .unwrap();
     assert_eq!(s.planes(), &[1.0, 16.0, 32.0, 64.0]);
 }
+
+/// The k = 4 paths report the same errors as the others: f/n = 1 + 2ε puts (f/n)^{1/4} at 1
+/// (√(1 + 2ε) = 1 + ε, √(1 + ε) rounds to 1), so planes 0 and 1 coincide (`Degenerate`); an
+/// adaptive ratio too deep for f/n = 10 is `NoSolution` (γ = 0, α = 4: 10, 2.5, 0.625, 0.15625;
+/// the first plane out of order, from the near side, is plane 1).
+#[test]
+fn four_partitions_report_the_common_errors() {
+    let f = 1.0 + 2.0 * f64::EPSILON;
+    match z_splits(1.0, f, 4, SplitScheme::SelfSimilar) {
+        Err(Error::Degenerate(m)) => assert!(m.contains("planes 0 and 1 coincide"), "{m}"),
+        other => panic!("{other:?}"),
+    }
+    let deep = SplitScheme::Adaptive {
+        light_angle: 0.0,
+        ratio: 4.0,
+    };
+    match z_splits(1.0, 10.0, 4, deep) {
+        Err(Error::NoSolution(m)) => assert!(
+            m.contains("puts plane 1 at 0.15625 but plane 0 at 1"),
+            "{m}"
+        ),
+        other => panic!("{other:?}"),
+    }
+}
