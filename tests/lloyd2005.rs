@@ -412,3 +412,109 @@ fn eq6_with_different_xi_by_hand() {
     allocate_texels(&e, 1.0, &mut out).unwrap();
     assert!((out[1] - 24.5 / 29.45).abs() < 1e-12 && out[1] > 0.83);
 }
+
+/// Double-double arithmetic (value = hi + lo, |lo| ≤ ulp(hi)/2) for an independent,
+/// high-accuracy Eq 7 (`subdivided_max_error_matches_a_double_double_reference`).
+mod dd {
+    pub type Dd = (f64, f64);
+
+    fn quick_two_sum(a: f64, b: f64) -> Dd {
+        let s = a + b;
+        (s, b - (s - a))
+    }
+
+    fn two_prod(a: f64, b: f64) -> Dd {
+        let p = a * b;
+        (p, a.mul_add(b, -p))
+    }
+
+    pub fn mul(a: Dd, b: Dd) -> Dd {
+        let (p, e) = two_prod(a.0, b.0);
+        quick_two_sum(p, e + (a.0 * b.1 + a.1 * b.0))
+    }
+
+    /// x^e for e ≥ 1 by repeated squaring, every product in double-double.
+    pub fn powi(x: f64, e: u32) -> Dd {
+        let mut acc: Dd = (1.0, 0.0);
+        let mut base: Dd = (x, 0.0);
+        let mut e = e;
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = mul(acc, base);
+            }
+            base = mul(base, base);
+            e >>= 1;
+        }
+        acc
+    }
+
+    /// s = α^{1/m} as double-double: one Newton step in double-double from `powf`
+    /// (s ← s + (α − s^m) / (m s^{m−1})), which squares powf's ≈ 10⁻¹⁶ error away.
+    pub fn root(alpha: f64, m: u32) -> Dd {
+        let y = alpha.powf(1.0 / f64::from(m));
+        let ym = powi(y, m);
+        // α − ym.0 is exact (Sterbenz: ym.0 is within a factor 2 of α).
+        let resid = (alpha - ym.0) - ym.1;
+        let delta = resid / (f64::from(m) * ym.0) * y;
+        quick_two_sum(y, delta)
+    }
+}
+
+/// Eq 7 by an independent route at high accuracy: s = α^{1/2k} in double-double (Newton on
+/// s^{2k} = α), s − 1 without cancellation (s.hi − 1 is exact for s.hi ≤ 2, then + s.lo),
+/// α^{1/k} − 1 = (s − 1)(s + 1). Relative error a few 10⁻¹⁶.
+fn eq7_reference(a: f64, k: usize, xi: f64, th: f64, rp: f64, rs: f64) -> f64 {
+    let s = dd::root(a, 2 * k as u32);
+    let sm1 = (s.0 - 1.0) + s.1;
+    let ak_m1 = sm1 * (s.0 + 1.0 + s.1);
+    k as f64 * rp / rs * ak_m1 * (1.0 + xi.abs() * sm1) / (2.0 * th.tan() * (s.0 + s.1))
+}
+
+/// α for the accuracy tests: just above 1 (α − 1 from 10⁻¹² to 10⁻¹), moderate, and huge.
+fn alpha_wide() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        (-12.0f64..-1.0).prop_map(|e| 1.0 + 10f64.powf(e)),
+        (0.0043f64..6.0).prop_map(|e| 10f64.powf(e)),
+        (6.0f64..307.0).prop_map(|e| 10f64.powf(e)),
+    ]
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// Eq 7's value is accurate to 10⁻¹⁴ relative against a double-double evaluation, from
+    /// α − 1 = 10⁻¹² to α = 10³⁰⁷: for k = 1, 2, 4, 8, 16 (square roots and the exact
+    /// identity α^{1/k} − 1 = (α − 1)/∏(α^{1/2^j} + 1)) at every α; for the other k (ln α
+    /// and exp_m1) up to α = 10⁶ — beyond, ln α's rounding (≈ 10⁻¹⁶ · ln α / 2k relative)
+    /// is what limits them, 4·10⁻¹⁵ · max(1, ln α / 2k) is checked.
+    #[test]
+    fn subdivided_max_error_matches_a_double_double_reference(
+        a in alpha_wide(), k in 1usize..=16, x in -1.0f64..=1.0, th in 0.01f64..1.5,
+        rp in 0.5f64..4096.0, rs in 0.5f64..4096.0,
+    ) {
+        let got = subdivided_max_error(a, k, x, th, rp, rs).unwrap();
+        let want = eq7_reference(a, k, x, th, rp, rs);
+        let tol = if k.is_power_of_two() || a <= 1e6 {
+            1e-14
+        } else {
+            4e-15 * (a.ln() / (2.0 * k as f64)).max(1.0)
+        };
+        prop_assert!(close(got, want, tol), "α={a} k={k}: {got} vs {want} ({:e})", (got - want).abs() / want);
+    }
+}
+
+/// Eq 7 near α = 1 by hand: α = 1 + ε, k = 4, ξ = 0, θ = 45°: α^{1/4} − 1 = ε/4 − 3ε²/32 + …,
+/// √(α^{1/4}) = 1 + ε/8 + …, so m_max = 4 (ε/4 − 3ε²/32)(1 − ε/8)/2 = ε/2 − ε²/4 + O(ε³).
+#[test]
+fn subdivided_max_error_near_alpha_one_by_hand() {
+    let q = std::f64::consts::FRAC_PI_4;
+    for eps in [1e-8f64, 1e-10, 1e-12] {
+        let a = 1.0 + eps;
+        // The ε the function sees: α − 1, exact (Sterbenz). The series' next term is O(ε³),
+        // below 10⁻¹⁶ relative here.
+        let e = a - 1.0;
+        let m = subdivided_max_error(a, 4, 0.0, q, 1.0, 1.0).unwrap();
+        let want = e / 2.0 - e * e / 4.0;
+        assert!(close(m, want, 1e-14), "ε={eps}: {m} vs {want}");
+    }
+}

@@ -432,3 +432,122 @@ proptest! {
         }
     }
 }
+
+/// x^{2/3} to ≈ 0.5 ulp: y = ∛x, one Newton step on y³ = x with the residual from exact
+/// products (`mul_add`), then y² = y₀² + 2 y₀ δ from an exact square. `powf(x, 2/3)` is off
+/// by ≈ 10⁻¹⁶ · ln x relative, because 2/3 is not a binary fraction.
+fn pow_2_3(x: f64) -> f64 {
+    let y = x.cbrt();
+    let y2 = y * y;
+    let y2_lo = y.mul_add(y, -y2);
+    let y3 = y2 * y;
+    let y3_lo = y2.mul_add(y, -y3) + y2_lo * y;
+    let delta = ((x - y3) - y3_lo) / (3.0 * y2);
+    y2 + (y2_lo + 2.0 * y * delta)
+}
+
+/// Barroso & Celes Eq 19 as printed (with the crate's reading, see `z_splits`), every power
+/// by `powf` (by [`pow_2_3`] for i = 3): z_{i−1} = λ n (z_i/n)^{(i−1)/i} + (1 − λ) z_i/α, z_k = f. None if the planes
+/// are not increasing by at least 10⁻¹² relative (too close to the `NoSolution` edge to
+/// compare).
+fn eq19_by_powf(n: f64, f: f64, k: usize, gamma: f64, ratio: f64) -> Option<Vec<f64>> {
+    let l = gamma / FRAC_PI_2;
+    let mut p = vec![0.0; k + 1];
+    p[k] = f;
+    for i in (2..=k).rev() {
+        let x = p[i] / n;
+        let pow = if i == 3 {
+            pow_2_3(x)
+        } else {
+            x.powf((i - 1) as f64 / i as f64)
+        };
+        p[i - 1] = l * n * pow + (1.0 - l) * p[i] / ratio;
+    }
+    p[0] = n;
+    p.windows(2)
+        .all(|w| w[1] > w[0] * (1.0 + 1e-12))
+        .then_some(p)
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// The adaptive planes (x^{(i−1)/i} by square roots for i = 2, 4, by x · x^{−1/3} with a
+    /// Newton inverse cube root for i = 3, `powf` otherwise; the recurrence in units of n)
+    /// agree with Eq 19 evaluated by `powf` to 10⁻¹⁴ relative, from f/n just above 1 to
+    /// f/n = 10³⁰⁰, and give `NoSolution` exactly where that evaluation is not increasing.
+    #[test]
+    fn adaptive_planes_match_eq19_by_powf(
+        n in prop_oneof![0.01f64..10.0, (-300.0f64..0.0).prop_map(|e| 10f64.powf(e))],
+        la in prop_oneof![-9.0f64..0.0, 0.0f64..300.0],
+        k in 2usize..=MAX_PARTITIONS,
+        gamma in prop_oneof![0.0f64..=FRAC_PI_2, Just(0.0), Just(FRAC_PI_2)],
+        ratio in 1.001f64..8.0,
+    ) {
+        let f = n * (1.0 + 10f64.powf(la));
+        prop_assume!(f.is_finite() && f > n);
+        let got = z_splits(n, f, k, SplitScheme::Adaptive { light_angle: gamma, ratio });
+        if let Some(want) = eq19_by_powf(n, f, k, gamma, ratio) {
+            let got = got.unwrap();
+            for (i, (g, w)) in got.planes().iter().zip(&want).enumerate() {
+                prop_assert!(close(*g, *w, 1e-14), "plane {i}: {g} vs {w} ({:e})", (g - w).abs() / w);
+            }
+        } else if let Ok(sp) = got {
+            // Near the edge: still strictly increasing, as the contract says.
+            prop_assert!(sp.planes().windows(2).all(|w| w[1] > w[0]));
+        }
+    }
+}
+
+/// Eq 19 with k = 3 by hand (the x^{2/3} plane): n = 1, f = 64, γ = π/2 (λ = 1): z₂ = 64^{2/3}
+/// = 16, z₁ = 16^{1/2} = 4 — the self-similar planes; with γ = 0, α = 2: 64, 32, 16.
+#[test]
+fn adaptive_k3_by_hand() {
+    let s = z_splits(
+        1.0,
+        64.0,
+        3,
+        SplitScheme::Adaptive {
+            light_angle: FRAC_PI_2,
+            ratio: 3.0,
+        },
+    )
+    .unwrap();
+    let p = s.planes();
+    assert!(close(p[1], 4.0, 1e-15) && close(p[2], 16.0, 1e-15), "{p:?}");
+    let s = z_splits(
+        1.0,
+        64.0,
+        3,
+        SplitScheme::Adaptive {
+            light_angle: 0.0,
+            ratio: 2.0,
+        },
+    )
+    .unwrap();
+    assert_eq!(s.planes(), &[1.0, 16.0, 32.0, 64.0]);
+}
+
+/// The k = 4 paths report the same errors as the others: f/n = 1 + 2ε puts (f/n)^{1/4} at 1
+/// (√(1 + 2ε) = 1 + ε, √(1 + ε) rounds to 1), so planes 0 and 1 coincide (`Degenerate`); an
+/// adaptive ratio too deep for f/n = 10 is `NoSolution` (γ = 0, α = 4: 10, 2.5, 0.625, 0.15625;
+/// the first plane out of order, from the near side, is plane 1).
+#[test]
+fn four_partitions_report_the_common_errors() {
+    let f = 1.0 + 2.0 * f64::EPSILON;
+    match z_splits(1.0, f, 4, SplitScheme::SelfSimilar) {
+        Err(Error::Degenerate(m)) => assert!(m.contains("planes 0 and 1 coincide"), "{m}"),
+        other => panic!("{other:?}"),
+    }
+    let deep = SplitScheme::Adaptive {
+        light_angle: 0.0,
+        ratio: 4.0,
+    };
+    match z_splits(1.0, 10.0, 4, deep) {
+        Err(Error::NoSolution(m)) => assert!(
+            m.contains("puts plane 1 at 0.15625 but plane 0 at 1"),
+            "{m}"
+        ),
+        other => panic!("{other:?}"),
+    }
+}

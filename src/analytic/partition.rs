@@ -195,7 +195,7 @@ pub enum SplitScheme {
 /// not strictly increasing (α^{k−1} too large for f/n at this γ), [`Error::Degenerate`] when
 /// f/n is so close to 1 that adjacent planes round to the same `f64`.
 pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Splits> {
-    let (n, f) = near_far(near, far)?;
+    let (n, f, alpha) = near_far_ratio(near, far)?;
     if k == 0 || k > MAX_PARTITIONS {
         return Err(Error::invalid(
             "k",
@@ -203,32 +203,36 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
         ));
     }
     let kf = k as f64;
-    let alpha = f / n;
     let mut p = [0.0; MAX_PARTITIONS + 1];
     let uniform = |i: usize| n + (f - n) * (i as f64 / kf);
-    // Self-similar planes n r^i, r = (f/n)^{1/k}: one root, then products (error ≤ k ulps),
-    // written straight into the planes (only the self-similar and practical schemes need them).
     match scheme {
         SplitScheme::Uniform => {
-            for (i, z) in p.iter_mut().enumerate().take(k + 1) {
-                *z = uniform(i);
+            for (i, z) in p[1..k].iter_mut().enumerate() {
+                *z = uniform(i + 1);
             }
         }
         SplitScheme::SelfSimilar => {
+            // Self-similar planes n r^i, r = (f/n)^{1/k}: one root, then products (error ≤ k
+            // ulps).
             let r = root_k(alpha, k);
+            if k == 4 {
+                let z1 = n * r;
+                let z2 = z1 * r;
+                return planes4(n, z1, z2, z2 * r, f, scheme);
+            }
             let mut zl = n;
-            for z in p.iter_mut().take(k + 1) {
-                *z = zl;
+            for z in &mut p[1..k] {
                 zl *= r;
+                *z = zl;
             }
         }
         SplitScheme::Practical { lambda } => {
             let l = in_closed("lambda", lambda, 0.0, 1.0)?;
             let r = root_k(alpha, k);
             let mut zl = n;
-            for (i, z) in p.iter_mut().enumerate().take(k + 1) {
-                *z = l * zl + (1.0 - l) * uniform(i);
+            for (i, z) in p[1..k].iter_mut().enumerate() {
                 zl *= r;
+                *z = l * zl + (1.0 - l) * uniform(i + 1);
             }
         }
         SplitScheme::Adaptive { light_angle, ratio } => {
@@ -240,35 +244,34 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
                     format!("must be greater than 1 (got {})", fmt_num(a)),
                 ));
             }
-            let l = g / std::f64::consts::FRAC_PI_2;
-            p[k] = f;
-            for i in (2..=k).rev() {
-                let fi = p[i];
-                p[i - 1] = l * n * pow_i_minus_1_over_i(fi / n, i) + (1.0 - l) * fi / a;
+            let l = g * std::f64::consts::FRAC_2_PI;
+            // In units of n: u_{i−1} = λ u_i^{(i−1)/i} + ((1 − λ)/α) u_i, u_k = f/n, and
+            // z_{i−1} = n u_{i−1}. One division at the start of the chain (the per-step
+            // divisions by n and α are off it).
+            let c = (1.0 - l) / a;
+            let mut u = alpha;
+            if k == 4 {
+                // The loop below unrolled, each product arranged off the chain u → u3 → u2 →
+                // z1 where it can be (λ √u beside the second root, λ u3 beside the cube root,
+                // n λ and n c beforehand): a few ulps from the loop's values.
+                let r = u.sqrt();
+                let u3 = (l * r) * r.sqrt() + c * u;
+                let (y, b) = inv_cbrt_parts(u3);
+                let u2 = ((l * u3) * y) * b + c * u3;
+                let z1 = (n * l) * u2.sqrt() + (n * c) * u2;
+                return planes4(n, z1, n * u2, n * u3, f, scheme);
             }
-            p[0] = n;
-            for i in 1..=k {
-                if !p[i].is_finite() || p[i] <= p[i - 1] {
-                    return Err(Error::NoSolution(format!(
-                        "adaptive z-partitioning (Barroso & Celes Eq 19) with ratio={}, \
-                         light_angle={}, k={k} puts plane {i} at {} but plane {} at {} over \
-                         near={}, far={}: lower the ratio or k",
-                        fmt_num(a),
-                        fmt_num(g),
-                        fmt_num(p[i]),
-                        i - 1,
-                        fmt_num(p[i - 1]),
-                        fmt_num(n),
-                        fmt_num(f)
-                    )));
-                }
+            for i in (2..=k).rev() {
+                u = l * pow_i_minus_1_over_i(u, i) + c * u;
+                p[i - 1] = n * u;
             }
         }
         SplitScheme::Exponent { exponent } => {
             let e = positive("exponent", exponent)?;
             let ln_e = e.ln();
             let denom = (kf * ln_e).exp_m1();
-            for (i, z) in p.iter_mut().enumerate().take(k + 1) {
+            for (i0, z) in p[1..k].iter_mut().enumerate() {
+                let i = i0 + 1;
                 let frac = if ln_e == 0.0 || denom == 0.0 {
                     i as f64 / kf
                 } else if !denom.is_finite() {
@@ -285,22 +288,90 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
     p[k] = f;
     for i in 1..=k {
         if !p[i].is_finite() || p[i] <= p[i - 1] {
-            return Err(planes_coincide(i, p[i - 1], p[i], alpha, k));
+            return Err(planes_not_increasing(scheme, i, p[i - 1], p[i], n, f, k));
         }
     }
     Ok(Splits { planes: p, k })
 }
 
+/// [`near_far`] that also returns f/n, the quotient its check computes (one division, not
+/// two); any invalid input goes to [`near_far`] for its error.
+#[inline(always)]
+fn near_far_ratio(near: f64, far: f64) -> Result<(f64, f64, f64)> {
+    if near.is_finite() && near > 0.0 && far.is_finite() && far > near {
+        let alpha = far / near;
+        if alpha.is_finite() {
+            return Ok((near, far, alpha));
+        }
+    }
+    let (n, f) = near_far(near, far)?;
+    Ok((n, f, f / n))
+}
+
+/// Four partitions (the usual cascade count) from their planes: the checks on the values and
+/// the result built in place (a run-time k would index a stack array and copy it, ≈ 8 ns).
+#[inline(always)]
+fn planes4(n: f64, z1: f64, z2: f64, z3: f64, f: f64, scheme: SplitScheme) -> Result<Splits> {
+    // n, f are finite, so a strictly increasing chain is finite too (NaN fails every compare).
+    if !(n < z1 && z1 < z2 && z2 < z3 && z3 < f) {
+        return Err(first_not_increasing(scheme, &[n, z1, z2, z3, f]));
+    }
+    let mut planes = [0.0; MAX_PARTITIONS + 1];
+    planes[0] = n;
+    planes[1] = z1;
+    planes[2] = z2;
+    planes[3] = z3;
+    planes[4] = f;
+    Ok(Splits { planes, k: 4 })
+}
+
+/// The error for the first plane of `p` (near to far) that is not finite or not above the
+/// one before it.
 #[cold]
 #[inline(never)]
-fn planes_coincide(i: usize, prev: f64, z: f64, alpha: f64, k: usize) -> Error {
-    Error::Degenerate(format!(
-        "split planes {} and {i} coincide ({} and {}): far/near={} is too close to 1 for k={k}",
-        i - 1,
-        fmt_num(prev),
-        fmt_num(z),
-        fmt_num(alpha)
-    ))
+fn first_not_increasing(scheme: SplitScheme, p: &[f64]) -> Error {
+    let k = p.len() - 1;
+    let i = (1..=k)
+        .find(|&i| !p[i].is_finite() || p[i] <= p[i - 1])
+        .unwrap_or(k);
+    planes_not_increasing(scheme, i, p[i - 1], p[i], p[0], p[k], k)
+}
+
+/// The error for planes i − 1, i out of order: [`Error::NoSolution`] for Barroso's adaptive
+/// scheme (α^{k−1} too deep for f/n), [`Error::Degenerate`] for the others (f/n too close to 1).
+#[cold]
+#[inline(never)]
+fn planes_not_increasing(
+    scheme: SplitScheme,
+    i: usize,
+    prev: f64,
+    z: f64,
+    n: f64,
+    f: f64,
+    k: usize,
+) -> Error {
+    match scheme {
+        SplitScheme::Adaptive { light_angle, ratio } => Error::NoSolution(format!(
+            "adaptive z-partitioning (Barroso & Celes Eq 19) with ratio={}, light_angle={}, \
+             k={k} puts plane {i} at {} but plane {} at {} over near={}, far={}: lower the \
+             ratio or k",
+            fmt_num(ratio),
+            fmt_num(light_angle),
+            fmt_num(z),
+            i - 1,
+            fmt_num(prev),
+            fmt_num(n),
+            fmt_num(f)
+        )),
+        _ => Error::Degenerate(format!(
+            "split planes {} and {i} coincide ({} and {}): far/near={} is too close to 1 for \
+             k={k}",
+            i - 1,
+            fmt_num(prev),
+            fmt_num(z),
+            fmt_num(f / n)
+        )),
+    }
 }
 
 /// x^{1/k} for x > 1: square roots for k = 1, 2, 4, 8, 16 (each correctly rounded, so within
@@ -317,18 +388,91 @@ fn root_k(x: f64, k: usize) -> f64 {
     }
 }
 
-/// x^{(i−1)/i} for x > 0, i ≥ 2 (Barroso & Celes Eq 19's exponent): √x for i = 2,
-/// √x · ⁴√x for i = 4 (within a few ulps of `powf`, and cheaper), `powf` otherwise.
+/// x^{(i−1)/i} for x > 0, i ≥ 2 (Barroso & Celes Eq 19's exponent), within a few ulps of
+/// `powf` and cheaper: √x for i = 2, x · x^{−1/3} for i = 3 ([`inv_cbrt`]), √x · ⁴√x for i = 4,
+/// `powf` otherwise.
 #[inline]
 fn pow_i_minus_1_over_i(x: f64, i: usize) -> f64 {
     match i {
         2 => x.sqrt(),
+        3 => x * inv_cbrt(x),
         4 => {
             let r = x.sqrt();
             r * r.sqrt()
         }
         _ => x.powf((i - 1) as f64 / i as f64),
     }
+}
+
+/// x^{−1/3} for finite x > 0, within ≈ 2 ulps, without a division or a libm call: a guess from
+/// the bits of x (the exponent divided by −3; relative error ≤ 3.5 %), scaled by a 64-entry
+/// table indexed by the guess's leading mantissa bits (≤ 3.4·10⁻³), then three Newton steps
+/// y ← y (4/3 − (x/3) y³), each squaring the error (≤ 2.3·10⁻⁵, 1.1·10⁻⁹, 2·10⁻¹⁸, then
+/// rounding). Subnormal x (no such guess) goes to `powf`.
+#[inline]
+fn inv_cbrt(x: f64) -> f64 {
+    let (y, b) = inv_cbrt_parts(x);
+    y * b
+}
+
+/// [`inv_cbrt`] as y and the last Newton step's factor b (x^{−1/3} = y b), so a caller can
+/// multiply y into its own factors while b is computed.
+#[inline]
+fn inv_cbrt_parts(x: f64) -> (f64, f64) {
+    if !(f64::MIN_POSITIVE..=f64::MAX).contains(&x) {
+        return (x.powf(-1.0 / 3.0), 1.0);
+    }
+    let yb = INV_CBRT_K - x.to_bits() / 3;
+    let mut y = f64::from_bits(yb) * INV_CBRT_SCALE[((yb >> 46) & 63) as usize];
+    let x3 = x * (1.0 / 3.0);
+    // (x/3 · y)(y²): two products side by side, not y² · y · x/3 in a row.
+    for _ in 0..2 {
+        y *= 4.0 / 3.0 - (x3 * y) * (y * y);
+    }
+    (y, 4.0 / 3.0 - (x3 * y) * (y * y))
+}
+
+/// For x = 2^E (1 + m), bits/2^52 ≈ E + 1023 + m, so K − bits/3 puts −E/3 in the exponent
+/// (K tuned for the least largest error over three binades).
+const INV_CBRT_K: u64 = 0x553e_f0ed_3d85_9c8c;
+
+/// The guess's error x^{−1/3}/y₀ depends only on y₀'s mantissa (three binades of x map onto
+/// one of y₀): per bucket of its leading 6 bits, the factor 2 r_min r_max/(r_min + r_max) of
+/// that ratio r over 65 points of the bucket (the least largest relative error), computed at
+/// compile time.
+const INV_CBRT_SCALE: [f64; 64] = inv_cbrt_scale();
+
+const fn inv_cbrt_scale() -> [f64; 64] {
+    let mut t = [0.0; 64];
+    let mut b = 0u64;
+    while b < 64 {
+        let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
+        let mut j = 0u64;
+        while j <= 64 {
+            // y₀ ∈ [1, 2) with leading mantissa bits b, and the x that gives it.
+            let yb = (0x3ff << 52) | (b << 46) | (j * ((1 << 46) - 1) / 64);
+            let x = f64::from_bits(3 * (INV_CBRT_K - yb));
+            let y0 = f64::from_bits(yb);
+            // x^{−1/3} by Newton from y₀ (converged to an ulp or two after six steps).
+            let mut y = y0;
+            let mut i = 0;
+            while i < 6 {
+                y *= 4.0 / 3.0 - (x / 3.0) * (y * y * y);
+                i += 1;
+            }
+            let r = y / y0;
+            if r < lo {
+                lo = r;
+            }
+            if r > hi {
+                hi = r;
+            }
+            j += 1;
+        }
+        t[b as usize] = 2.0 * lo * hi / (lo + hi);
+        b += 1;
+    }
+    t
 }
 
 /// A partitioning scheme of Lloyd et al. 2006 §5.3.

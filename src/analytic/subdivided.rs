@@ -415,22 +415,40 @@ pub fn subdivided_max_error(
         return Err(Error::invalid("k", "must be at least 1 (got 0)"));
     }
     let kf = k as f64;
-    // √(α^{1/k}) − 1 = exp_m1(ln α / 2k), accurate for large k (1/2k beside the logarithm, off
-    // its dependency chain); from it α^{1/k} − 1 = (√ − 1)(√ + 1) and √(α^{1/k}) itself, each
-    // within a few ulps, with one exponential instead of three.
-    let rak_m1 = (a.ln() * (0.5 / kf)).exp_m1();
-    let rak = 1.0 + rak_m1;
-    let ak_m1 = rak_m1 * (rak_m1 + 2.0);
+    // s = √(α^{1/k}) = α^{1/2k} and α^{1/k} − 1, each within a few ulps, without cancellation
+    // near α = 1 (α − 1 is exact there) and for large k.
+    // e = (α^{1/k} − 1)/s with s = √(α^{1/k}) = α^{1/2k}, each within a few ulps, without
+    // cancellation near α = 1 (α − 1 is exact there) and for large k, and without an
+    // intermediate overflow for huge α (e ≤ √α).
+    let (e, rak) = if k.is_power_of_two() && k <= 16 {
+        // k = 2^m: r_j = α^{1/2^j} by m square roots, and the exact identity
+        // α^{1/k} − 1 = (α − 1) / ∏_{j=1..m} (r_j + 1); then s = √r_m. No logarithm or
+        // exponential: square roots only, independent of `tan θ`'s chain.
+        let mut r = a;
+        let mut prod = 1.0;
+        let mut j = k;
+        while j > 1 {
+            r = r.sqrt();
+            prod *= r + 1.0;
+            j >>= 1;
+        }
+        let s = r.sqrt();
+        ((a - 1.0) / (prod * s), s)
+    } else {
+        // s − 1 = exp_m1(ln α / 2k) (1/2k beside the logarithm, off its dependency chain);
+        // α^{1/k} − 1 = (s − 1)(s + 1), with one exponential.
+        let rak_m1 = (a.ln() * (0.5 / kf)).exp_m1();
+        let rak = 1.0 + rak_m1;
+        (rak_m1 * (rak_m1 + 2.0) / rak, rak)
+    };
     let t = tan_ok(half_fov)?;
     let xi = in_closed("xi", xi, -1.0, 1.0)?;
     let rp = positive("res_image", res_image)?;
     let rs = positive("res_shadow", res_shadow)?;
-    // One division after the exponential: k (r_p/r_s) is ready before it.
-    let q = kf * rp / rs;
-    finite_result(
-        "m_max",
-        q * ak_m1 * (1.0 + xi.abs() * rak_m1) / (2.0 * t * rak),
-    )
+    // k (r_p/r_s)/(2 tan θ) is ready before e; 1 + |ξ|(s − 1) is 1 or more, so s − 1 needs no
+    // care there.
+    let q = kf * rp / (rs * (2.0 * t));
+    finite_result("m_max", q * e * (1.0 + xi.abs() * (rak - 1.0)))
 }
 
 /// The x error (Lloyd 2005 Eq 8; Lloyd 2006 Eq 7 with n = 1, f = α).
