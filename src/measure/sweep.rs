@@ -57,7 +57,7 @@ use crate::build::warp::fmax;
 use crate::build::WarpRule;
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::ViewFrustum;
-use glam::{DMat4, DVec3};
+use glam::{DMat4, DVec3, DVec4};
 
 /// M_x and M_z of one matrix over a set of points (unit resolutions), from [`vertex_max`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -125,6 +125,16 @@ pub fn vertex_max(
     let c = g1.cross(g3).dot(l);
     let g1p = g1 - g1.dot(l) * l;
     let g3p = g3 - g3.dot(l) * l;
+    let terms = PointTerms {
+        r0,
+        r1,
+        r3,
+        a,
+        b,
+        c,
+        g1p,
+        g3p,
+    };
     let (mut mx2, mut mz2) = (0.0f64, 0.0f64);
     if let Ok(p8) = <&[DVec3; 8]>::try_from(points) {
         // The eight vertices of a (sub)frustum: the same arithmetic per point, laid out as
@@ -134,23 +144,7 @@ pub fn vertex_max(
         let mut sz = [0.0f64; 8];
         let mut ok = [false; 8];
         for i in 0..8 {
-            let (px, py, pz) = (p8[i].x, p8[i].y, p8[i].z);
-            let hx = r0.x * px + r0.y * py + r0.z * pz + r0.w;
-            let hy = r1.x * px + r1.y * py + r1.z * pz + r1.w;
-            let hw = r3.x * px + r3.y * py + r3.z * pz + r3.w;
-            let z = -pz;
-            let d = hw * (hw * a - hy * b + hx * c);
-            let d2 = d * d;
-            let tx = hw * g1p.x - hy * g3p.x;
-            let ty = hw * g1p.y - hy * g3p.y;
-            let tz = hw * g1p.z - hy * g3p.z;
-            let gtp2 = tx * tx + ty * ty + tz * tz;
-            let w2 = hw * hw;
-            let w4 = w2 * w2;
-            let inv = 1.0 / (d2 * gtp2 * z * z);
-            ok[i] = hw > 0.0 && z > 0.0 && inv.is_finite() && gtp2 > 0.0;
-            sx[i] = w4 * gtp2 * gtp2 * inv;
-            sz[i] = w4 * d2 * inv;
+            (sx[i], sz[i], ok[i]) = terms.at(p8[i]);
         }
         if ok.contains(&false) {
             return None;
@@ -161,17 +155,46 @@ pub fn vertex_max(
         }
         return finish(mx2, mz2, tan_half_fov);
     }
-    for p in points {
+    for &p in points {
+        let (sx, sz, ok) = terms.at(p);
+        // `w > 0`, `z > 0`, NaN refused, a finite 1/(D² |G_t⊥|² z²) and G_t⊥ ≠ 0.
+        if !ok {
+            return None;
+        }
+        // `fmax`: one instruction; the values are finite here (checked above, and the result
+        // below), so it is `f64::max`.
+        mx2 = fmax(mx2, sx);
+        mz2 = fmax(mz2, sz);
+    }
+    finish(mx2, mz2, tan_half_fov)
+}
+
+/// What [`vertex_max`] sets up once per matrix (rows 0, 1, 3; a, b, c; g₁⊥, g₃⊥).
+struct PointTerms {
+    r0: DVec4,
+    r1: DVec4,
+    r3: DVec4,
+    a: f64,
+    b: f64,
+    c: f64,
+    g1p: DVec3,
+    g3p: DVec3,
+}
+
+impl PointTerms {
+    /// m_x² tan²θ and m_z² tan²θ of one point as [`vertex_max`] compares them,
+    /// `w⁴ |G_t⊥|⁴ inv` and `w⁴ D² inv` with `inv = 1/(D² |G_t⊥|² z²)`, and whether the point is
+    /// measurable (`w > 0`, `z > 0`, a finite `inv`, `G_t⊥ ≠ 0`; false for NaN).
+    #[inline(always)]
+    fn at(&self, p: DVec3) -> (f64, f64, bool) {
+        let (r0, r1, r3) = (self.r0, self.r1, self.r3);
+        let (g1p, g3p) = (self.g1p, self.g3p);
         let (px, py, pz) = (p.x, p.y, p.z);
         let hx = r0.x * px + r0.y * py + r0.z * pz + r0.w;
         let hy = r1.x * px + r1.y * py + r1.z * pz + r1.w;
         let hw = r3.x * px + r3.y * py + r3.z * pz + r3.w;
         let z = -pz;
-        // `w > 0` and `z > 0`, NaN refused.
-        if hw.is_nan() || hw <= 0.0 || z.is_nan() || z <= 0.0 {
-            return None;
-        }
-        let d = hw * (hw * a - hy * b + hx * c);
+        let d = hw * (hw * self.a - hy * self.b + hx * self.c);
         let d2 = d * d;
         let tx = hw * g1p.x - hy * g3p.x;
         let ty = hw * g1p.y - hy * g3p.y;
@@ -180,15 +203,9 @@ pub fn vertex_max(
         let w2 = hw * hw;
         let w4 = w2 * w2;
         let inv = 1.0 / (d2 * gtp2 * z * z);
-        if !(inv.is_finite() && gtp2 > 0.0) {
-            return None;
-        }
-        // `fmax`: one instruction; the values are finite here (checked above, and the result
-        // below), so it is `f64::max`.
-        mx2 = fmax(mx2, w4 * gtp2 * gtp2 * inv);
-        mz2 = fmax(mz2, w4 * d2 * inv);
+        let ok = hw > 0.0 && z > 0.0 && inv.is_finite() && gtp2 > 0.0;
+        (w4 * gtp2 * gtp2 * inv, w4 * d2 * inv, ok)
     }
-    finish(mx2, mz2, tan_half_fov)
 }
 
 #[inline]
