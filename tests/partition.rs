@@ -451,7 +451,9 @@ fn pow_2_3(x: f64) -> f64 {
 /// are not increasing by at least 10⁻¹² relative (too close to the `NoSolution` edge to
 /// compare).
 fn eq19_by_powf(n: f64, f: f64, k: usize, gamma: f64, ratio: f64) -> Option<Vec<f64>> {
+    // λ and 1 − λ each as one division (1 − λ without cancellation near γ = π/2).
     let l = gamma / FRAC_PI_2;
+    let one_minus_l = (FRAC_PI_2 - gamma) / FRAC_PI_2;
     let mut p = vec![0.0; k + 1];
     p[k] = f;
     for i in (2..=k).rev() {
@@ -461,7 +463,7 @@ fn eq19_by_powf(n: f64, f: f64, k: usize, gamma: f64, ratio: f64) -> Option<Vec<
         } else {
             x.powf((i - 1) as f64 / i as f64)
         };
-        p[i - 1] = l * n * pow + (1.0 - l) * p[i] / ratio;
+        p[i - 1] = l * n * pow + one_minus_l * p[i] / ratio;
     }
     p[0] = n;
     p.windows(2)
@@ -549,5 +551,35 @@ fn four_partitions_report_the_common_errors() {
             "{m}"
         ),
         other => panic!("{other:?}"),
+    }
+}
+
+/// The review's case near γ = π/2, where 1 − λ = 0.0297 and a one-ulp error in λ grows 33×:
+/// n = 0.01, f = 0.01 (1 + 10^13.751307336893603), k = 4, γ = 1.524098738043311, α = 1.001.
+/// Expected planes from Eq 19 in 60-digit decimal arithmetic (Python `decimal`, the inputs'
+/// exact binary values, π/2 read as `FRAC_PI_2`, x^{(i−1)/i} as exp(ln x (i−1)/i)):
+/// 14994331.29779288413, 504804775.74696225913, 16950971857.31791001641. With λ = γ · (2/π)
+/// and 1 − λ by subtraction (before the fix) plane 1 was 14994331.29779279, 6·10⁻¹⁵ off.
+#[test]
+fn adaptive_planes_near_half_pi_are_exact() {
+    let f = 0.01 * (1.0 + 10f64.powf(13.751307336893603));
+    let s = z_splits(
+        0.01,
+        f,
+        4,
+        SplitScheme::Adaptive {
+            light_angle: 1.524098738043311,
+            ratio: 1.001,
+        },
+    )
+    .unwrap();
+    let want = [
+        14994331.29779288413,
+        504804775.74696225913,
+        16950971857.31791001641,
+    ];
+    for (i, w) in want.iter().enumerate() {
+        let got = s.planes()[i + 1];
+        assert!(close(got, *w, 1e-15), "plane {}: {got} vs {w}", i + 1);
     }
 }

@@ -244,11 +244,17 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
                     format!("must be greater than 1 (got {})", fmt_num(a)),
                 ));
             }
-            let l = g * std::f64::consts::FRAC_2_PI;
+            // λ = γ/(π/2) and 1 − λ = (π/2 − γ)/(π/2), each one correctly rounded division:
+            // π/2 − γ is exact for γ ∈ [π/4, π/2] (Sterbenz), so 1 − λ keeps full precision as
+            // γ → π/2, where 1 − (γ/(π/2)) would amplify λ's rounding by λ/(1 − λ) (33–57×
+            // near γ = 1.52; `FRAC_2_PI` as a product is one more ulp off).
+            let half_pi = std::f64::consts::FRAC_PI_2;
+            let l = g / half_pi;
+            let one_minus_l = (half_pi - g) / half_pi;
             // In units of n: u_{i−1} = λ u_i^{(i−1)/i} + ((1 − λ)/α) u_i, u_k = f/n, and
             // z_{i−1} = n u_{i−1}. One division at the start of the chain (the per-step
             // divisions by n and α are off it).
-            let c = (1.0 - l) / a;
+            let c = one_minus_l / a;
             let mut u = alpha;
             if k == 4 {
                 // The loop below unrolled, each product arranged off the chain u → u3 → u2 →
