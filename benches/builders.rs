@@ -28,8 +28,8 @@ fn builders(c: &mut Criterion) {
     g.bench_function("lispsm", |b| {
         b.iter(|| warp(bb(&view), bb(light), bb(WarpRule::Lispsm)))
     });
-    g.bench_function("lispsm_sin", |b| {
-        b.iter(|| warp(bb(&view), bb(light), bb(WarpRule::LispsmSin)))
+    g.bench_function("lispsm_fixed", |b| {
+        b.iter(|| warp(bb(&view), bb(light), bb(WarpRule::LispsmFixed)))
     });
     g.bench_function("minimax", |b| {
         b.iter(|| warp(bb(&view), bb(light), bb(WarpRule::Minimax)))

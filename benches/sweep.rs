@@ -32,7 +32,7 @@ fn sweeps(c: &mut Criterion) {
                 pool.install(|| {
                     sweep_into(
                         bb(&view),
-                        bb(WarpRule::LispsmSin),
+                        bb(WarpRule::Lispsm),
                         Partition::Single,
                         1,
                         grid,

@@ -20,7 +20,7 @@ fn main() -> Result<()> {
         let rules = [
             WarpRule::Minimax,
             WarpRule::MinimaxMz,
-            WarpRule::LispsmSin,
+            WarpRule::Lispsm,
             WarpRule::Barroso(Falloff::Barroso),
             WarpRule::LispsmReference,
             WarpRule::Filament,

@@ -89,7 +89,7 @@ fn uniform_builder_does_not_allocate() {
 #[test]
 fn lispsm_builder_does_not_allocate() {
     assert_no_allocation("warp(Lispsm)", single(WarpRule::Lispsm));
-    assert_no_allocation("warp(LispsmSin)", single(WarpRule::LispsmSin));
+    assert_no_allocation("warp(LispsmFixed)", single(WarpRule::LispsmFixed));
 }
 
 #[test]

@@ -15,7 +15,7 @@ const ALL_RULES: [WarpRule; 14] = [
     WarpRule::Eta(0.5),
     WarpRule::Psm,
     WarpRule::Lispsm,
-    WarpRule::LispsmSin,
+    WarpRule::Lispsm,
     WarpRule::Barroso(Falloff::Barroso),
     WarpRule::Barroso(Falloff::Zhang),
     WarpRule::Tsm { focus: 0.0 }, // replaced by a valid focus per frustum
@@ -275,7 +275,7 @@ fn storage_factor_continuous_through_parallel() {
     let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
     for rule in [
         WarpRule::Uniform,
-        WarpRule::LispsmSin,
+        WarpRule::Lispsm,
         WarpRule::Barroso(Falloff::Barroso),
         WarpRule::LispsmReference,
         WarpRule::Minimax,
@@ -553,7 +553,7 @@ proptest! {
 fn diagonal_sweep_through_parallel() {
     let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
     let diag = DVec3::new(1.0, 1.0, 0.0).normalize();
-    for rule in [WarpRule::Uniform, WarpRule::Minimax, WarpRule::LispsmSin] {
+    for rule in [WarpRule::Uniform, WarpRule::Minimax, WarpRule::Lispsm] {
         let at = |t: f64| {
             let s = warp(&view, DVec3::NEG_Z + t * diag, rule).unwrap();
             frustum_max(&view, &s.shadow_map()).unwrap().storage_factor
@@ -591,7 +591,28 @@ fn engine_rules_near_parallel() {
         NPrime::Unwarped
     );
     assert!((below - 9997.9998).abs() < 1e-3, "{below}");
-    assert!((above - 15067.996).abs() < 1e-2, "{above}");
+    // sin γ = 0.0200001 is γ = 1.1459° < 1.4037°: |cos γ| ≥ 0.9997, so Filament keeps the light's
+    // frame with the camera's right vector as up (`computeLightRotation` returns identity) and
+    // warps along eye x. By hand (`applyLISPSM`): d = 2 f tan θ = 115.47 along x, z₀ = n = 1,
+    // z₁ = 1 + d sin γ, vz₀ = 1, vz₁ = min(f, z₁), n′ = (z₀ + √(vz₀ vz₁))/sin γ = 140.95825.
+    let sg = 0.0200001f64;
+    let d = 2.0 * 100.0 * 30f64.to_radians().tan();
+    let nopt = (1.0 + (1.0 + d * sg).min(100.0).sqrt()) / sg;
+    let got = n_prime_for(&view, at(sg), WarpRule::Filament)
+        .unwrap()
+        .value();
+    assert!((got - nopt).abs() <= 1e-12 * nopt, "{got} vs {nopt}");
+    assert!((nopt - 140.95825).abs() < 1e-5, "{nopt}");
+    // The warp runs along eye x: t depends on x alone (two points differing in y and z only).
+    let m = warp(&view, at(sg), WarpRule::Filament).unwrap().matrix;
+    let t = |p: DVec3| {
+        let h = m * p.extend(1.0);
+        h.y / h.w
+    };
+    let (a, b) = (DVec3::new(10.0, -3.0, -40.0), DVec3::new(10.0, 5.0, -70.0));
+    assert!((t(a) - t(b)).abs() < 1e-12, "{} vs {}", t(a), t(b));
+    // S̄ of that map (15 068 with the warp wrongly along the view axis).
+    assert!((above - 15527.303).abs() < 1e-2, "{above}");
     let ogre = n_prime_for(&view, DVec3::NEG_Z, WarpRule::Ogre)
         .unwrap()
         .value();
@@ -675,7 +696,7 @@ fn matrices_converge_and_stay_conditioned_through_parallel() {
     let c0 = cond(&on_axis);
     assert!(c0.is_finite() && c0 < 1e6, "{c0}");
     for rule in [
-        WarpRule::LispsmSin,
+        WarpRule::Lispsm,
         WarpRule::LispsmReference,
         WarpRule::Barroso(Falloff::Barroso),
         WarpRule::Barroso(Falloff::Zhang),

@@ -18,7 +18,7 @@ const RULES: [WarpRule; 11] = [
     WarpRule::Uniform,
     WarpRule::Psm,
     WarpRule::Lispsm,
-    WarpRule::LispsmSin,
+    WarpRule::Lispsm,
     WarpRule::Eta(0.5),
     WarpRule::Barroso(Falloff::Barroso),
     WarpRule::LispsmReference,
@@ -206,7 +206,7 @@ proptest! {
         for (rule, expect) in [
             (WarpRule::Uniform, zp),
             (WarpRule::Lispsm, zpw),
-            (WarpRule::LispsmSin, zpw),
+            (WarpRule::Lispsm, zpw),
             (WarpRule::Psm, zpw),
             (WarpRule::MinimaxMz, zpw),
         ] {
@@ -239,7 +239,7 @@ proptest! {
         let view = ViewFrustum::new(n, n * alpha, th).unwrap();
         let expect = k as f64 * alpha.powf(2.0 / k as f64);
         let splits = z_splits(view.near(), view.far(), k, SplitScheme::SelfSimilar).unwrap();
-        for rule in [WarpRule::Uniform, WarpRule::LispsmSin] {
+        for rule in [WarpRule::Uniform, WarpRule::Lispsm] {
             let c = cascades(&view, DVec3::new(0.0, 0.0, -1.0), &splits, rule, 0.0).unwrap();
             let mut measured = 0.0;
             for part in c.iter() {
@@ -550,14 +550,14 @@ proptest! {
             Err(_) => return Ok(()),
         };
         for (light, l) in [(SchemeLight::Overhead, DVec3::NEG_Y), (SchemeLight::Behind, DVec3::NEG_Z)] {
-            for (rule, warped) in [(WarpRule::Uniform, false), (WarpRule::LispsmSin, true)] {
+            for (rule, warped) in [(WarpRule::Uniform, false), (WarpRule::Lispsm, true)] {
                 let got = cascades(&view, l, &splits, rule, 0.0).unwrap().storage_factor();
                 let want = splits_storage_factor(&splits, th, light, warped).unwrap();
                 prop_assert!((got - want).abs() <= 1e-9 * want, "{light:?} {rule:?}: {got} vs {want}");
             }
             for (scheme_, rule, partition) in [
                 (Scheme::Zp, WarpRule::Uniform, Partition::Log),
-                (Scheme::ZpW, WarpRule::LispsmSin, Partition::Log),
+                (Scheme::ZpW, WarpRule::Lispsm, Partition::Log),
                 (Scheme::FpZpW, WarpRule::Lispsm, Partition::Faces),
             ] {
                 let got = scheme(&view, l, rule, partition, k).unwrap().storage_factor();
@@ -584,7 +584,7 @@ fn adaptive_partitions_by_hand() {
     let behind = scheme(
         &view,
         DVec3::NEG_Z,
-        WarpRule::LispsmSin,
+        WarpRule::Lispsm,
         Partition::Adaptive,
         3,
     )

@@ -244,7 +244,7 @@ proptest! {
             prop_assert!((got - expect).abs() <= 1e-9 * expect, "{rule:?}: {got} vs {expect}");
         }
         // The scheme layer gives the same for every warping rule.
-        let s = scheme(&view, l, WarpRule::LispsmSin, Partition::Faces, k).unwrap();
+        let s = scheme(&view, l, WarpRule::Lispsm, Partition::Faces, k).unwrap();
         prop_assert!((s.storage_factor() - zpw).abs() <= 1e-9 * zpw);
     }
 

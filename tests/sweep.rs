@@ -83,7 +83,7 @@ fn sweep_values_are_the_measurement() {
     let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
     let grid = SweepGrid::new(7, 12).unwrap();
     for (rule, partition, k) in [
-        (WarpRule::LispsmSin, Partition::Single, 1),
+        (WarpRule::Lispsm, Partition::Single, 1),
         (WarpRule::Uniform, Partition::Log, 3),
         (WarpRule::Lispsm, Partition::Faces, 2),
         (WarpRule::Minimax, Partition::Practical(0.5), 2),
@@ -123,7 +123,7 @@ fn lane_sweep_is_the_scalar_scheme_bit_for_bit() {
             WarpRule::Uniform,
             WarpRule::Psm,
             WarpRule::Lispsm,
-            WarpRule::LispsmSin,
+            WarpRule::Lispsm,
             WarpRule::LispsmReference,
             WarpRule::Eta(0.3),
             WarpRule::Eta(-1.0),
@@ -152,7 +152,7 @@ fn lane_sweep_is_the_scalar_scheme_bit_for_bit() {
 fn overhead_and_behind_closed_forms() {
     let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
     let grid = SweepGrid::new(10, 8).unwrap();
-    let s = sweep(&view, WarpRule::LispsmSin, Partition::Single, 1, grid).unwrap();
+    let s = sweep(&view, WarpRule::Lispsm, Partition::Single, 1, grid).unwrap();
     let eq12 = 999.0 / (2.0 * 30f64.to_radians().tan());
     for j in 0..8 {
         let v = s.storage_factor[9 * 8 + j];
@@ -164,7 +164,7 @@ fn overhead_and_behind_closed_forms() {
     let mut buf = vec![0.0; grid.len()];
     sweep_into(
         &view,
-        WarpRule::LispsmSin,
+        WarpRule::Lispsm,
         Partition::Single,
         1,
         grid,
@@ -175,7 +175,7 @@ fn overhead_and_behind_closed_forms() {
     let mut short = vec![0.0; 3];
     assert!(sweep_into(
         &view,
-        WarpRule::LispsmSin,
+        WarpRule::Lispsm,
         Partition::Single,
         1,
         grid,
@@ -230,7 +230,7 @@ fn per_frame_partition_builders_do_not_allocate() {
     ] {
         for rule in [
             WarpRule::Lispsm,
-            WarpRule::LispsmSin,
+            WarpRule::Lispsm,
             WarpRule::Minimax,
             WarpRule::Uniform,
         ] {
@@ -282,14 +282,7 @@ fn per_frame_partition_builders_do_not_allocate() {
         let grid = SweepGrid::new(6, 10).unwrap();
         let mut buf = vec![0.0; grid.len()];
         let (r, n) = no_alloc::allocations(|| {
-            sweep_into(
-                &view,
-                WarpRule::LispsmSin,
-                Partition::Log,
-                3,
-                grid,
-                &mut buf,
-            )
+            sweep_into(&view, WarpRule::Lispsm, Partition::Log, 3, grid, &mut buf)
         });
         assert!(r.is_ok());
         assert_eq!(n, 0, "the serial sweep allocated {n} times");
@@ -318,7 +311,7 @@ fn sweeps_are_finite_on_extreme_views() {
             for rule in [
                 WarpRule::Uniform,
                 WarpRule::Lispsm,
-                WarpRule::LispsmSin,
+                WarpRule::Lispsm,
                 WarpRule::Barroso(Falloff::Barroso),
                 WarpRule::Filament,
                 WarpRule::Minimax,
@@ -351,12 +344,12 @@ fn errata_s5_3_worst_case_factor() {
             .storage_factor()
     };
     let behind = DVec3::NEG_Z;
-    let single = s(d(12.0, 356.0), WarpRule::LispsmSin, Partition::Single, 1);
-    let single_behind = s(behind, WarpRule::LispsmSin, Partition::Single, 1);
+    let single = s(d(12.0, 356.0), WarpRule::Lispsm, Partition::Single, 1);
+    let single_behind = s(behind, WarpRule::Lispsm, Partition::Single, 1);
     assert!((single_behind - 1e6).abs() < 1e-6 * 1e6);
     assert!(single / single_behind > 4.7, "{single}");
-    let zpw = s(d(4.0, 176.0), WarpRule::LispsmSin, Partition::Log, 4);
-    let zpw_behind = s(behind, WarpRule::LispsmSin, Partition::Log, 4);
+    let zpw = s(d(4.0, 176.0), WarpRule::Lispsm, Partition::Log, 4);
+    let zpw_behind = s(behind, WarpRule::Lispsm, Partition::Log, 4);
     assert!(
         (zpw / zpw_behind - 2.07).abs() < 0.01,
         "{}",

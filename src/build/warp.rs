@@ -57,12 +57,21 @@ pub enum WarpRule {
     /// other directions a perspective shadow map is not a one-point perspective in light space
     /// (Lloyd 2006 §4.4), and this rule is the light-space warp with PSM's parameter.
     Psm,
-    /// LiSPSM's overhead optimum n′ = n + √(f n) (Wimmer et al. 2004; Lloyd 2006 §4.1), for every
-    /// light direction.
+    /// LiSPSM as its authors apply it to every light direction (Wimmer et al. 2004 §5; Lloyd 2006
+    /// §4.1, §4.4, the rule behind Lloyd 2006 Fig 7's warped panel): n′ = (n + √(f n))/sin γ.
+    /// With the light overhead (γ = π/2) it is the overhead optimum n′_LSPSM = n + √(f n); as the
+    /// light turns parallel to the view n′ grows without bound, so the map tends continuously to
+    /// the uniform map, which it is at γ = 0 (Lloyd 2006 §4.4: LiSPSM "reverts to" the
+    /// orthographic map with the light behind or in front). It is never worse than
+    /// [`WarpRule::Uniform`] there, and z-partitions warped with it (ZP+W) have the S̄ of Lloyd
+    /// 2006 Eq 20 behind and in front.
     Lispsm,
-    /// The 1/sin γ generalisation n′ = (n + √(f n))/sin γ (Wimmer et al. 2004 §5; the rule behind
-    /// Lloyd 2006 Fig 7's warped panel); n′ = ∞ at γ = 0.
-    LispsmSin,
+    /// LiSPSM's light-overhead n′ = n + √(f n) held fixed for every light direction. It is LiSPSM
+    /// only with the light overhead: behind or in front it keeps the full warp, which there only
+    /// stretches the map along the view (f/n = 10, θ = 30°, light behind: S̄ 427 against the
+    /// uniform map's 100; see docs/builders.md). Kept for analysis (Lloyd 2006 §4.3 compares
+    /// fixed n′), not as a renderer's choice.
+    LispsmFixed,
     /// Barroso & Celes' generalised n′ (their Eq 13, 15, 16 with the fall-off of Eq 17 or 18).
     Barroso(Falloff),
     /// Martin & Tan's 80 % rule (TSM §6.2): the n′ that maps the point `focus` beyond the near
@@ -77,6 +86,14 @@ pub enum WarpRule {
     /// of the warp axis, computed as Δ(√(1 + x) + 1)/x, x = Δ sin γ/n; n′ = ∞ at γ = 0.
     LispsmReference,
     /// Filament's `ShadowMap::applyLISPSM` with its default hints (near 1, far 100 world units).
+    ///
+    /// Filament aligns the map with the view only while |cos γ| < 0.9997
+    /// (`ShadowMap::computeLightRotation`); from there to the parallel light (γ ≤ 1.4037°) it keeps
+    /// the light's own frame, whose up vector is the camera's right vector
+    /// (`computeDirectionalShadowBounds`), so the warp axis, and the depth range d along it, run
+    /// along the camera's x axis projected perpendicular to the light. It still warps there while
+    /// sin γ > 0.02 (γ > 1.1459°). The crate does the same: for 1.1459° < γ ≤ 1.4037° the warp runs
+    /// along eye x with n′ from that axis's d (docs/builders.md has the numbers at the switch).
     Filament,
     /// Filament's rule with explicit hints: n′ = max((z₀ + √(v₀ v₁))/sin γ, dzn/(2 − 3 dzn/(f − n)))
     /// with dzn = max(0, near_hint − n), dzf = max(0, f − far_hint), z₀ = n, z₁ = n + Δ sin γ,
@@ -87,12 +104,31 @@ pub enum WarpRule {
         /// `ShadowOptions::shadowFarHint`.
         far_hint: f64,
     },
-    /// OGRE's default (`LiSPSMShadowCameraSetup::calculateNOptSimple`, `mUseSimpleNOpt = true`):
+    /// OGRE's default LiSPSM as OGRE 1.x through 13.5 ship it
+    /// (`LiSPSMShadowCameraSetup::calculateNOptSimple`, `mUseSimpleNOpt = true`):
     /// n′ = (|e_z| + √(n f)) · 0.1 · k, e_z the near camera point's eye depth (n for the frustum),
     /// 0.1 the default `mOptAdjustFactor`, and k = 1 + 20 (|cos γ| − 0.9)/0.1 when |cos γ| ≥ 0.9,
-    /// else 1 (`getShadowCamera`'s ramp, `mCosCamLightDirThreshold = 0.9`). It does not tend to
-    /// the uniform map as the light turns parallel (k ≤ 21).
+    /// else 1 (`getShadowCamera`'s ramp, `mCosCamLightDirThreshold = 0.9`); n′ ≤ 0 (underflow) is
+    /// OGRE's "uniform shadow mapping". It does not tend to the uniform map as the light turns
+    /// parallel (k ≤ 21).
+    ///
+    /// The centre of projection is OGRE's `C_start = (e_ls.x, e_ls.y, z_max)`: it lies on the
+    /// light-space x and y of the near camera point e (`getNearCameraPoint_ws`, the body vertex
+    /// nearest the camera; for the view frustum the first near-plane vertex of OGRE's
+    /// `ConvexBody::define` order, the top right (+w, +h, −n), as the four tie), not on the eye.
+    /// These versions build the light space with the unit projection `Affine3::getScale(1, 1, −1)`
+    /// (13.4.0 and 13.5 restore it for the orthographic camera), so n′ is in world units.
     Ogre,
+    /// OGRE 13.6 and later: as [`WarpRule::Ogre`], but `getShadowCamera` builds LiSPSM's light
+    /// space from `DefaultShadowCameraSetup`'s orthographic camera, whose window is
+    /// 2 · shadowDist wide (OGRECave/ogre commit b3f63b4, "LiSPSM - drop obsolete workaround",
+    /// first in 13.6.0). n_opt, computed in world units, is then applied in that space scaled
+    /// by 1/shadowDist, so the effective n′ is n_opt × shadowDist.
+    OgreOrtho {
+        /// OGRE's `shadowDist` (world units, > 0): the shadow camera's far clip distance if set,
+        /// else the light's shadow far distance, else 300 × the camera's near distance.
+        shadow_distance: f64,
+    },
     /// The crate's minimax, the default: the n′ ∈ (0, ∞] that minimises the storage factor
     /// S̄ = M_x M_z of the fitted map, the product of the frustum's maximum errors, which is the
     /// texel count a map needs for a given maximum error (Lloyd 2006 §4.2)
@@ -459,8 +495,21 @@ pub(crate) fn warp_prepared(
 
 #[inline(always)]
 fn warp_in(view: &ViewFrustum, fl: &FrustumInLight, rule: WarpRule) -> Result<ShadowMatrix> {
+    if let Some(frame) = rule_frame(view, fl, rule) {
+        return warp_fitted(view, &frame, rule);
+    }
+    warp_fitted(view, fl, rule)
+}
+
+#[inline(always)]
+fn warp_fitted(view: &ViewFrustum, fl: &FrustumInLight, rule: WarpRule) -> Result<ShadowMatrix> {
     let n_prime = rule_n_prime(view, fl, rule)?;
-    let matrix = fit_frustum(fl, n_prime)?;
+    let matrix = match rule {
+        // OGRE's C_start: the first near-plane vertex in OGRE's order, (+w, +h, −n), index 2 of
+        // `ViewFrustum::corners`.
+        WarpRule::Ogre | WarpRule::OgreOrtho { .. } => fit_frustum_from_corner(fl, n_prime, 2)?,
+        _ => fit_frustum(fl, n_prime)?,
+    };
     Ok(ShadowMatrix {
         matrix,
         light_dir: fl.ls.light_dir(),
@@ -546,12 +595,15 @@ fn clip_ok_at_corners(m: &DMat4, corners: &[DVec3; 8]) -> bool {
 /// let m = n_prime_for(&view, overhead, WarpRule::MinimaxMz)?.value();
 /// assert!((m - 11.0).abs() < 1e-9);
 /// // Light from behind: every generalised rule falls back to the uniform map.
-/// assert_eq!(n_prime_for(&view, DVec3::NEG_Z, WarpRule::LispsmSin)?, NPrime::Unwarped);
+/// assert_eq!(n_prime_for(&view, DVec3::NEG_Z, WarpRule::Lispsm)?, NPrime::Unwarped);
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
 pub fn n_prime_for(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<NPrime> {
     let fl = FrustumInLight::new(view, light_dir)?;
-    rule_n_prime(view, &fl, rule)
+    match rule_frame(view, &fl, rule) {
+        Some(frame) => rule_n_prime(view, &frame, rule),
+        None => rule_n_prime(view, &fl, rule),
+    }
 }
 
 fn finite_or_unwarped(v: f64) -> NPrime {
@@ -573,8 +625,8 @@ pub(crate) fn rule_n_prime(
         WarpRule::Uniform => NPrime::Unwarped,
         WarpRule::Eta(eta) => crate::warp::n_prime_from_eta(n, f, eta)?,
         WarpRule::Psm => NPrime::Finite(n),
-        WarpRule::Lispsm => NPrime::Finite(view.n_prime_lispsm()),
-        WarpRule::LispsmSin => {
+        WarpRule::LispsmFixed => NPrime::Finite(view.n_prime_lispsm()),
+        WarpRule::Lispsm => {
             if sin_g > 0.0 {
                 finite_or_unwarped(view.n_prime_lispsm() / sin_g)
             } else {
@@ -599,18 +651,65 @@ pub(crate) fn rule_n_prime(
             near_hint,
             far_hint,
         } => filament_n_prime(view, fl, near_hint, far_hint)?,
-        WarpRule::Ogre => {
-            let cos_g = fl.ls.light_dir().z.abs().min(1.0);
-            let tweak = if cos_g >= 0.9 {
-                1.0 + 20.0 * ((cos_g - 0.9) / (1.0 - 0.9))
-            } else {
-                1.0
-            };
-            NPrime::Finite((n + (n * f).sqrt()) * 0.1 * tweak)
+        WarpRule::Ogre => finite_or_unwarped(ogre_n_opt(view, fl)),
+        WarpRule::OgreOrtho { shadow_distance } => {
+            let d = crate::error::positive("shadow_distance", shadow_distance)?;
+            finite_or_unwarped(ogre_n_opt(view, fl) * d)
         }
         WarpRule::Minimax => minimax::min_storage(view, fl).n_prime,
         WarpRule::MinimaxMz => minimax::minimax_mz(view, fl).n_prime,
     })
+}
+
+/// OGRE's `calculateNOptSimple` with `getShadowCamera`'s ramp (see [`WarpRule::Ogre`]).
+fn ogre_n_opt(view: &ViewFrustum, fl: &FrustumInLight) -> f64 {
+    let (n, f) = (view.near(), view.far());
+    let cos_g = fl.ls.light_dir().z.abs().min(1.0);
+    let tweak = if cos_g >= 0.9 {
+        1.0 + 20.0 * ((cos_g - 0.9) / (1.0 - 0.9))
+    } else {
+        1.0
+    };
+    (n + (n * f).sqrt()) * 0.1 * tweak
+}
+
+/// Filament's `computeLightRotation` threshold on |cos γ| = |(Mv V).z| (a `float` constant).
+const FILAMENT_PARALLEL_COS: f64 = 0.9997f32 as f64;
+
+/// The frame a rule fits its map in when it is not the view-axis frame of `fl`: Filament keeps
+/// the light's own frame, with the camera's right vector as up, once |cos γ| ≥ 0.9997
+/// ([`WarpRule::Filament`]).
+#[inline]
+fn rule_frame(view: &ViewFrustum, fl: &FrustumInLight, rule: WarpRule) -> Option<FrustumInLight> {
+    match rule {
+        WarpRule::Filament | WarpRule::FilamentHints { .. }
+            if fl.ls.light_dir().z.abs() >= FILAMENT_PARALLEL_COS =>
+        {
+            let l = fl.ls.light_dir();
+            Some(FrustumInLight::in_light_space(
+                view,
+                l,
+                light_space_unit(l, DVec3::X),
+            ))
+        }
+        _ => None,
+    }
+}
+
+/// [`fit_frustum`] with the centre of projection on the light-space x and y of `fl.q[i]`
+/// instead of the eye's: the map fitted around the corners seen from that point, composed
+/// with the translation that puts it at the origin (OGRE's `C_start`, [`WarpRule::Ogre`]).
+fn fit_frustum_from_corner(fl: &FrustumInLight, n_prime: NPrime, i: usize) -> Result<DMat4> {
+    let (x0, y0) = (fl.q[i].x, fl.q[i].y);
+    let offset = fl.ls.x * x0 + fl.ls.y * y0;
+    let mut moved = *fl;
+    for (q, c) in moved.q.iter_mut().zip(moved.corners.iter_mut()) {
+        q.x -= x0;
+        q.y -= y0;
+        *c -= offset;
+    }
+    let m = fit_frustum(&moved, n_prime)? * DMat4::from_translation(-offset);
+    verify_clip(&m, fl.corners.iter()).map(|()| m)
 }
 
 pub use crate::analytic::tsm::EIGHTY_PERCENT_LINE as TSM_80_PERCENT_LINE;

@@ -39,7 +39,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         if let Some(v) = finite(generalized_n_prime(&view, angle, Falloff::Zhang)) {
             zhang.push((d, v));
         }
-        if let Some(v) = finite(n_prime_for(&view, light_at(g), WarpRule::LispsmSin)?) {
+        if let Some(v) = finite(n_prime_for(&view, light_at(g), WarpRule::Lispsm)?) {
             lispsm.push((d, v));
         }
         if let Some(v) = finite(n_prime_for(&view, light_at(g), WarpRule::MinimaxMz)?) {

@@ -65,12 +65,12 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         ("No warping (n′ = ∞)", WarpRule::Uniform, Partition::Single),
         (
             "LiSPSM warping, n′ = (n + √(fn))/sin γ",
-            WarpRule::LispsmSin,
+            WarpRule::Lispsm,
             Partition::Single,
         ),
         (
             "Face partitioning + warping",
-            WarpRule::LispsmSin,
+            WarpRule::Lispsm,
             Partition::Faces,
         ),
         (

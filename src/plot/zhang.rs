@@ -55,7 +55,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     let res = Resolutions::default();
     let rules = [
         ("SSM", WarpRule::Uniform),
-        ("LiSPSM", WarpRule::LispsmSin),
+        ("LiSPSM", WarpRule::Lispsm),
         ("TSM", WarpRule::Tsm { focus: TSM_FOCUS }),
     ];
     let mut rows = Vec::new();

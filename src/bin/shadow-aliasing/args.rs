@@ -147,10 +147,13 @@ pub enum WarpName {
     Eta,
     /// Perspective shadow map: n′ = n.
     Psm,
-    /// LiSPSM: n′ = n + √(f n) of each (sub)frustum (Lloyd 2006 §4.1).
+    /// LiSPSM: n′ = (n + √(f n))/sin γ of each (sub)frustum (Wimmer et al. 2004; Lloyd 2006
+    /// §4.1, §4.4): the uniform map with the light behind or in front.
+    #[value(alias = "lispsm-sin")]
     Lispsm,
-    /// LiSPSM's n′ divided by sin γ (Lloyd 2006 §4.4).
-    LispsmSin,
+    /// LiSPSM's overhead n′ = n + √(f n) held fixed for every light direction (not LiSPSM away
+    /// from overhead).
+    LispsmFixed,
     /// Barroso & Celes' generalised n′ with their fall-off (Eq 18).
     Barroso,
     /// Barroso & Celes' generalised n′ with Zhang's fall-off (Eq 17).

@@ -109,7 +109,7 @@ pub fn rule(
         })?),
         WarpName::Psm => WarpRule::Psm,
         WarpName::Lispsm => WarpRule::Lispsm,
-        WarpName::LispsmSin => WarpRule::LispsmSin,
+        WarpName::LispsmFixed => WarpRule::LispsmFixed,
         WarpName::Barroso => WarpRule::Barroso(Falloff::Barroso),
         WarpName::BarrosoZhang => WarpRule::Barroso(Falloff::Zhang),
         WarpName::Minimax => WarpRule::Minimax,

@@ -212,7 +212,7 @@ struct Row {
 enum LaneRule {
     /// The same 1/n′ for every direction (0 for the orthographic map).
     Fixed(f64),
-    /// `WarpRule::LispsmSin`: n′ = n′_LiSPSM / sin γ.
+    /// `WarpRule::Lispsm`: n′ = n′_LiSPSM / sin γ.
     SinScaled(f64),
     /// `WarpRule::LispsmReference`: n′ from Wimmer's reference code, with the near depth.
     Reference(f64),
@@ -247,13 +247,14 @@ impl LaneSweep {
         tan: f64,
     ) -> Option<Self> {
         let rule = match rule {
-            WarpRule::Uniform | WarpRule::Psm | WarpRule::Lispsm | WarpRule::Eta(_) => match fixed?
-            {
-                NPrime::Unwarped => LaneRule::Fixed(0.0),
-                NPrime::Finite(v) if v.is_finite() && v > 0.0 => LaneRule::Fixed(1.0 / v),
-                NPrime::Finite(_) => return None,
-            },
-            WarpRule::LispsmSin => LaneRule::SinScaled(view.n_prime_lispsm()),
+            WarpRule::Uniform | WarpRule::Psm | WarpRule::LispsmFixed | WarpRule::Eta(_) => {
+                match fixed? {
+                    NPrime::Unwarped => LaneRule::Fixed(0.0),
+                    NPrime::Finite(v) if v.is_finite() && v > 0.0 => LaneRule::Fixed(1.0 / v),
+                    NPrime::Finite(_) => return None,
+                }
+            }
+            WarpRule::Lispsm => LaneRule::SinScaled(view.n_prime_lispsm()),
             WarpRule::LispsmReference => LaneRule::Reference(view.near()),
             _ => return None,
         };
@@ -563,8 +564,7 @@ mod tests {
     fn lanes_take_ordinary_directions_and_refuse_the_parallel_one() {
         let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
         let prep = Prepared::new(&view);
-        let lanes =
-            LaneSweep::new(&view, WarpRule::LispsmSin, None, &prep.corners, prep.tan).unwrap();
+        let lanes = LaneSweep::new(&view, WarpRule::Lispsm, None, &prep.corners, prep.tan).unwrap();
         let azs = [0.0, 1.0, 2.5, std::f64::consts::PI];
         for el in [0.0, 0.4, std::f64::consts::FRAC_PI_2] {
             let (s, ok) = lanes.run(el.sin_cos(), &azs.map(f64::sin_cos));
@@ -573,7 +573,7 @@ mod tests {
                 let parallel = el == 0.0 && (az == 0.0 || az == std::f64::consts::PI);
                 assert_eq!(ok[j], !parallel, "el={el} az={az}");
                 if ok[j] {
-                    let direct = scheme(&view, l, WarpRule::LispsmSin, Partition::Single, 1)
+                    let direct = scheme(&view, l, WarpRule::Lispsm, Partition::Single, 1)
                         .unwrap()
                         .storage_factor();
                     assert_eq!(s[j].to_bits(), direct.to_bits());
@@ -582,6 +582,8 @@ mod tests {
         }
         // Rules the lanes do not compute, and fixed rules without their n′, run the scalar code.
         assert!(LaneSweep::new(&view, WarpRule::Minimax, None, &prep.corners, prep.tan).is_none());
-        assert!(LaneSweep::new(&view, WarpRule::Lispsm, None, &prep.corners, prep.tan).is_none());
+        assert!(
+            LaneSweep::new(&view, WarpRule::LispsmFixed, None, &prep.corners, prep.tan).is_none()
+        );
     }
 }

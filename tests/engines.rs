@@ -1,0 +1,156 @@
+//! The engines' rules as their shipped code builds them (issue 11): OGRE's centre of projection
+//! at the near camera point, OGRE 13.6's orthographic light space (n′ scaled by shadowDist),
+//! Filament's light frame once |cos γ| ≥ 0.9997. Expected values are the engines' formulas by
+//! hand and properties of a perspective map, not the builders' arithmetic.
+
+use glam::DVec3;
+use shadow_aliasing::build::{light_space, n_prime_for, warp, WarpRule};
+use shadow_aliasing::measure::frustum_max;
+use shadow_aliasing::{Error, NPrime, ViewFrustum};
+
+fn view() -> ViewFrustum {
+    ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap()
+}
+
+/// s = x_c/w of a map at an eye-space point.
+fn s_of(m: &glam::DMat4, p: DVec3) -> f64 {
+    let h = *m * p.extend(1.0);
+    h.x / h.w
+}
+
+/// OGRE's `C_start = (e_ls.x, e_ls.y, z_max)` + n′ along the warp axis, e the near camera point
+/// (the top-right near vertex (w, h, −n) for the bare frustum): every point on a ray from that
+/// centre has the same s (a perspective map's lines through its centre of projection). A
+/// centre on the eye's light-space x, as the builders use for the other rules, does not.
+#[test]
+fn ogre_centre_of_projection_is_the_near_camera_point() {
+    let view = view();
+    let l = DVec3::new(0.3, -0.5, -0.8).normalize();
+    let ls = light_space(l, DVec3::NEG_Z).unwrap();
+    let n_prime = n_prime_for(&view, l, WarpRule::Ogre).unwrap().value();
+    // |cos γ| = 0.808 < 0.9: no ramp, n′ = (n + √(n f)) · 0.1 = 1.1.
+    assert!((n_prime - 1.1).abs() < 1e-12, "{n_prime}");
+    let corners = view.corners();
+    let z0 = corners
+        .iter()
+        .map(|c| ls.z.dot(*c))
+        .fold(f64::INFINITY, f64::min);
+    let t = view.tan_half_fov();
+    let e = ls.to_light(DVec3::new(t, t, -1.0));
+    let centre = ls.x * e.x + ls.y * e.y + ls.z * (z0 - n_prime);
+    let eye_centre = ls.z * (z0 - n_prime);
+    let ogre = warp(&view, l, WarpRule::Ogre).unwrap().matrix;
+    let p = DVec3::new(-20.0, 5.0, -60.0);
+    for h in [0.3, 0.7] {
+        let q = centre + h * (p - centre);
+        assert!(
+            (s_of(&ogre, p) - s_of(&ogre, q)).abs() < 1e-12,
+            "{} vs {}",
+            s_of(&ogre, p),
+            s_of(&ogre, q)
+        );
+        let q_eye = eye_centre + h * (p - eye_centre);
+        assert!((s_of(&ogre, p) - s_of(&ogre, q_eye)).abs() > 1e-4);
+    }
+    // The map covers the frustum: every corner inside the clip volume.
+    for c in corners {
+        let h = ogre * c.extend(1.0);
+        assert!(h.w > 0.0 && (h.truncate() / h.w).abs().max_element() <= 1.0 + 1e-9);
+    }
+}
+
+/// OGRE ≥ 13.6: n_opt applied in the orthographic camera's space, 2 shadowDist wide, so the
+/// effective n′ is n_opt · shadowDist: 1.1 · 300 = 330 here, and with the ramp on the axis
+/// (|cos γ| = 1, factor 21) 23.1 · 300 = 6930.
+#[test]
+fn ogre_13_6_scales_n_prime_by_the_shadow_distance() {
+    let view = view();
+    let l = DVec3::new(0.3, -0.5, -0.8);
+    let rule = WarpRule::OgreOrtho {
+        shadow_distance: 300.0,
+    };
+    let got = n_prime_for(&view, l, rule).unwrap().value();
+    assert!((got - 330.0).abs() < 1e-9, "{got}");
+    let got = n_prime_for(&view, DVec3::NEG_Z, rule).unwrap().value();
+    assert!((got - 21.0 * 1.1 * 300.0).abs() < 1e-9, "{got}");
+    // A larger n′ warps less: 13.6's map, nearer the uniform map, has a different S̄.
+    let sbar = |r| {
+        frustum_max(&view, &warp(&view, l, r).unwrap().shadow_map())
+            .unwrap()
+            .storage_factor
+    };
+    assert!((sbar(rule) - sbar(WarpRule::Ogre)).abs() > 1.0);
+    for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let r = n_prime_for(
+            &view,
+            l,
+            WarpRule::OgreOrtho {
+                shadow_distance: bad,
+            },
+        );
+        assert!(
+            matches!(&r, Err(Error::InvalidArgument { name, .. }) if *name == "shadow_distance"),
+            "{bad}: {r:?}"
+        );
+    }
+}
+
+/// OGRE's "in case n_opt is null, uniform shadow mapping will be done": an n′ that underflows to
+/// 0 is the uniform map, never n′ = 0 (which no fit can use).
+#[test]
+fn ogre_null_n_prime_is_the_uniform_map() {
+    // n = 5e-324 (the least subnormal), f = 1e-310: √(n f) underflows to 0 and n · 0.1 rounds
+    // to 0. A frustum the crate accepts gets OGRE's fallback; one it refuses never reaches it.
+    if let Ok(view) = ViewFrustum::new(5e-324, 1e-310, 0.5) {
+        let r = n_prime_for(&view, DVec3::new(0.0, -1.0, -0.1), WarpRule::Ogre);
+        assert_eq!(r.unwrap(), NPrime::Unwarped);
+    }
+}
+
+/// Filament's switch at |cos γ| = 0.9997 (γ = 1.4035°), n = 1, f = 100, θ = 30°, light tilted
+/// up from behind. Just past it (γ = 1.4030°) the warp runs along eye x and d is the frustum's
+/// width 2 f tan θ = 115.47; just before it (γ = 1.4035°) along the view, d = the frustum's depth
+/// extent. Filament's n′ = (z₀ + √(vz₀ vz₁))/sin γ on each side, by hand.
+#[test]
+fn filament_switches_frames_at_cos_0_9997() {
+    let view = view();
+    let at = |deg: f64| {
+        let g = deg.to_radians();
+        DVec3::new(0.0, -g.sin(), -g.cos())
+    };
+    let nopt = |deg: f64, d: f64| {
+        let s = f64::to_radians(deg).sin();
+        (1.0 + (1.0 + d * s).min(100.0).sqrt()) / s
+    };
+    // Inside: d along eye x.
+    let width = 2.0 * 100.0 * 30f64.to_radians().tan();
+    let inside = n_prime_for(&view, at(1.4030), WarpRule::Filament)
+        .unwrap()
+        .value();
+    assert!(
+        (inside - nopt(1.4030, width)).abs() < 1e-9 * inside,
+        "{inside}"
+    );
+    // Outside: d along the view axis projected ⊥ the light, the corners' extent on that axis.
+    let l = at(1.4036);
+    let ls = light_space(l, DVec3::NEG_Z).unwrap();
+    let z: Vec<f64> = view.corners().iter().map(|c| ls.z.dot(*c)).collect();
+    let depth = z.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+        - z.iter().cloned().fold(f64::INFINITY, f64::min);
+    let outside = n_prime_for(&view, l, WarpRule::Filament).unwrap().value();
+    assert!(
+        (outside - nopt(1.4036, depth)).abs() < 1e-9 * outside,
+        "{outside}"
+    );
+    // The jump in S̄ at the switch: 16 665 inside, 15 997 outside (docs/builders.md).
+    let sbar = |l: DVec3| {
+        frustum_max(
+            &view,
+            &warp(&view, l, WarpRule::Filament).unwrap().shadow_map(),
+        )
+        .unwrap()
+        .storage_factor
+    };
+    assert!((sbar(at(1.4030)) - 16664.963).abs() < 1e-2);
+    assert!((sbar(at(1.40352)) - 15997.223).abs() < 1e-2);
+}
