@@ -574,9 +574,9 @@ fn adaptive_planes_near_half_pi_are_exact() {
     )
     .unwrap();
     let want = [
-        14994331.29779288413,
-        504804775.74696225913,
-        16950971857.31791001641,
+        14_994_331.297_792_884,
+        504_804_775.746_962_26,
+        16_950_971_857.317_91,
     ];
     for (i, w) in want.iter().enumerate() {
         let got = s.planes()[i + 1];
