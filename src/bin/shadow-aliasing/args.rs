@@ -29,7 +29,7 @@ pub enum Command {
     Figures(FiguresArgs),
     /// Evaluate closed forms from JSON (docs/eval.md): one object or an array of objects.
     #[command(
-        after_help = "Example:\n  echo '{\"quantity\": \"storage_factor\", \"near\": 1, \"far\": 100, \"half_fov\": 0.5236, \"n_prime\": 11}' | shadow-aliasing eval\n\nExit status: 0 every request answered with a value, 1 at least one answered with an error,\n2 the input is not JSON of the contract's shape."
+        after_help = "Example:\n  echo '{\"quantity\": \"storage_factor\", \"near\": 1, \"far\": 100, \"half_fov\": 0.5236, \"n_prime\": 11}' | shadow-aliasing eval\n\nExit status: 0 every request answered with a value, 1 at least one answered with an error\n(or standard output cannot be written), 2 the input is not JSON of the contract's shape."
     )]
     Eval(EvalArgs),
     /// Print a camera's shadow matrices for a light, with their measured aliasing error.
