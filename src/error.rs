@@ -46,7 +46,10 @@ impl Error {
     }
 }
 
-/// Formats a number for an error message: shortest round-trip form.
+/// Formats a number for an error message: the shortest decimal that parses back to the same
+/// `f64`, positional for 10⁻⁵ ≤ |v| < 10¹⁶ (`2`, `0.1`, `-0.00012`) and in exponent form outside
+/// it (`1e300`, `-2.5e-7`), so that no number takes more than 24 characters (positional `{}`
+/// alone would print 1e300 with 301 digits).
 pub(crate) fn fmt_num(v: f64) -> String {
     if v.is_nan() {
         "NaN".into()
@@ -54,8 +57,10 @@ pub(crate) fn fmt_num(v: f64) -> String {
         "inf".into()
     } else if v == f64::NEG_INFINITY {
         "-inf".into()
-    } else {
+    } else if v == 0.0 || (1e-5..1e16).contains(&v.abs()) {
         format!("{v}")
+    } else {
+        format!("{v:e}")
     }
 }
 
@@ -194,5 +199,54 @@ mod tests {
         );
         assert!(in_open("half_fov", 0.0, 0.0, 1.0).is_err());
         assert_eq!(in_open("half_fov", 0.5, 0.0, 1.0), Ok(0.5));
+        assert_eq!(
+            positive("near", -1e300).unwrap_err().to_string(),
+            "near must be greater than 0 (got -1e300)"
+        );
+    }
+
+    #[test]
+    fn message_numbers_are_short_and_round_trip() {
+        // Expected strings written by hand: positional in [1e-5, 1e16), exponent form outside.
+        for (v, want) in [
+            (2.0, "2"),
+            (-2.0, "-2"),
+            (0.0, "0"),
+            (-0.0, "-0"),
+            (0.1, "0.1"),
+            (0.5237, "0.5237"),
+            (1e-5, "0.00001"),
+            (-0.00012345678901234567, "-0.00012345678901234567"),
+            (9.999999999999998e15, "9999999999999998"),
+            (1e16, "1e16"),
+            (1e300, "1e300"),
+            (-1e300, "-1e300"),
+            (1e308, "1e308"),
+            (f64::MAX, "1.7976931348623157e308"),
+            (-f64::MIN_POSITIVE, "-2.2250738585072014e-308"),
+            (5e-324, "5e-324"),
+            (9.99e-6, "9.99e-6"),
+            (2.5e-7, "2.5e-7"),
+            (f64::NAN, "NaN"),
+            (f64::NEG_INFINITY, "-inf"),
+        ] {
+            assert_eq!(fmt_num(v), want, "{v:e}");
+        }
+        // Every finite value, sampled across all exponents: at most 24 characters, and it parses
+        // back to the same bits.
+        let mut bits: u64 = 0x9e37_79b9_7f4a_7c15;
+        for _ in 0..200_000 {
+            // xorshift64*: a fixed, seedless sequence covering the whole bit range.
+            bits ^= bits >> 12;
+            bits ^= bits << 25;
+            bits ^= bits >> 27;
+            let v = f64::from_bits(bits.wrapping_mul(0x2545_f491_4f6c_dd1d));
+            if !v.is_finite() {
+                continue;
+            }
+            let s = fmt_num(v);
+            assert!(s.len() <= 24, "{s} ({} chars)", s.len());
+            assert_eq!(s.parse::<f64>().map(f64::to_bits), Ok(v.to_bits()), "{s}");
+        }
     }
 }

@@ -345,30 +345,49 @@ impl LightAngle {
     }
 }
 
-/// Normalises an eye-space light direction.
+/// Normalises an eye-space light direction: any finite, non-zero vector, however large or small
+/// its components (`(1e308, 1e308, 1e308)` and `(1e-320, 0, 0)` included).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `light_dir` for a zero, tiny or non-finite vector.
+/// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector.
 #[inline]
 pub fn unit_light_dir(light_dir: DVec3) -> Result<DVec3> {
-    let len = light_dir.length();
-    if light_dir.is_finite() && len > 1e-300 && len.is_finite() {
-        Ok(light_dir / len)
+    let len2 = light_dir.length_squared();
+    if len2 > 1e-290 && len2 < 1e290 {
+        // No square overflows, and none that underflows matters: l / |l| directly, the same
+        // bits as before (glam's `length` is this square root).
+        Ok(light_dir / len2.sqrt())
     } else {
-        Err(bad_light_dir(light_dir))
+        scaled_unit_light_dir(light_dir)
     }
+}
+
+/// [`unit_light_dir`] for a vector whose squared length overflows or underflows (or is not
+/// finite): scaled by its largest |component| first, so that the squares lie in [0, 3].
+#[cold]
+#[inline(never)]
+fn scaled_unit_light_dir(light_dir: DVec3) -> Result<DVec3> {
+    let m = light_dir.abs().max_element();
+    if !light_dir.is_finite() || m == 0.0 {
+        return Err(bad_light_dir(light_dir));
+    }
+    let s = light_dir / m;
+    Ok(s / s.length())
 }
 
 #[cold]
 #[inline(never)]
 fn bad_light_dir(light_dir: DVec3) -> Error {
+    let v = format!(
+        "[{}, {}, {}]",
+        fmt_num(light_dir.x),
+        fmt_num(light_dir.y),
+        fmt_num(light_dir.z)
+    );
     if !light_dir.is_finite() {
-        Error::invalid("light_dir", format!("must be finite (got {light_dir})"))
+        Error::invalid("light_dir", format!("must be finite (got {v})"))
     } else {
-        Error::invalid(
-            "light_dir",
-            format!("must be a non-zero vector (got {light_dir})"),
-        )
+        Error::invalid("light_dir", format!("must be a non-zero vector (got {v})"))
     }
 }
 

@@ -52,7 +52,7 @@ fn bad_near_far(n: f64, f: f64) -> Error {
         Error::invalid(
             "far",
             format!(
-                "far/near must be finite (got near={}, far={})",
+                "must be small enough that far/near is finite (got near={}, far={})",
                 fmt_num(n),
                 fmt_num(f)
             ),

@@ -844,3 +844,94 @@ fn readme_two_commands_and_links() {
         );
     }
 }
+
+/// Runs the binary with standard output on /dev/full (every write fails with ENOSPC).
+#[cfg(target_os = "linux")]
+fn run_to_full(args: &[&str], stdin: &str) -> (i32, String) {
+    let full = std::fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .expect("/dev/full opens");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::from(full))
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary starts");
+    let _ = child
+        .stdin
+        .take()
+        .expect("stdin is piped")
+        .write_all(stdin.as_bytes());
+    let out = child.wait_with_output().expect("the binary finishes");
+    (
+        out.status.code().expect("exited normally"),
+        String::from_utf8(out.stderr).expect("stderr is UTF-8"),
+    )
+}
+
+/// A failing standard output is exit status 1 with a message, as for `warp` and `sweep` (2 is
+/// malformed input); it used to be status 2 and silence.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_write_error_is_status_1_with_a_message() {
+    let want = "error: cannot write to standard output: No space left on device (os error 28)\n";
+    let request = r#"{"quantity": "n_prime_lispsm", "near": 1, "far": 100}"#;
+    for args in [
+        vec!["eval"],
+        vec![
+            "warp",
+            "--near",
+            "1",
+            "--far",
+            "100",
+            "--half-fov",
+            "0.5",
+            "--light-dir",
+            "0,-1,0",
+            "--warp",
+            "lispsm",
+        ],
+        vec![
+            "sweep",
+            "--near",
+            "1",
+            "--far",
+            "100",
+            "--half-fov",
+            "0.5",
+            "--warp",
+            "lispsm",
+            "--elevations",
+            "2",
+            "--azimuths",
+            "2",
+        ],
+    ] {
+        let (code, err) = run_to_full(&args, request);
+        assert_eq!((code, err.as_str()), (1, want), "{args:?}");
+    }
+    // Malformed input is still status 2 (nothing reaches standard output).
+    let (code, err) = run_to_full(&["eval"], "{not json");
+    assert_eq!(code, 2);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.starts_with("error: "), "{err}");
+}
+
+#[test]
+fn error_messages_name_each_argument_once_with_short_numbers() {
+    let (code, v, _) = eval_stdin(
+        r#"[{"quantity": "n_prime_lispsm", "near": 1e-300, "far": 1e300},
+            {"quantity": "n_prime_lispsm", "near": -1e300, "far": 1},
+            {"quantity": "n_prime_lispsm", "near": 1, "far": 1.7976931348623157e308}]"#,
+    );
+    assert_eq!(code, 1);
+    assert_eq!(
+        error_of(&v[0]),
+        "far must be small enough that far/near is finite (got near=1e-300, far=1e300)"
+    );
+    assert_eq!(error_of(&v[1]), "near must be greater than 0 (got -1e300)");
+    // f64::MAX/1 is finite: a value, not an error.
+    assert!(value_of(&v[2]).is_finite());
+}

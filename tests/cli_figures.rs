@@ -161,3 +161,64 @@ fn help_has_an_example_and_the_names() {
         assert!(out.contains(name), "{name} not in --help");
     }
 }
+
+#[test]
+fn an_unwritable_file_is_named_with_the_os_error() {
+    // The directory exists but the file cannot be created: here a directory stands where the
+    // image should go. plotters used to answer a debug dump without the path.
+    for (format, ext) in [("png", "png"), ("svg", "svg")] {
+        let dir = temp_dir(&format!("blocked-{format}"));
+        let blocked = dir.join(format!("zhang-fig3.{ext}"));
+        std::fs::create_dir_all(&blocked).unwrap();
+        let (code, out, err) = run(&[
+            "figures",
+            "--out",
+            dir.to_str().unwrap(),
+            "--only",
+            "zhang-fig3",
+            "--format",
+            format,
+        ]);
+        assert_eq!(code, 1, "{err}");
+        assert!(out.is_empty(), "{out}");
+        let want = format!("error: cannot write {}: ", blocked.display());
+        assert!(err.starts_with(&want), "{err}");
+        assert!(
+            err.trim_end().ends_with(")") && err.contains("os error"),
+            "{err}"
+        );
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(!err.contains("Os {"), "{err}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+    // A path under a regular file.
+    let dir = temp_dir("under-file");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("plain");
+    std::fs::write(&file, b"x").unwrap();
+    let under = file.join("figures");
+    let (code, _, err) = run(&[
+        "figures",
+        "--out",
+        under.to_str().unwrap(),
+        "--only",
+        "zhang-fig3",
+    ]);
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.starts_with(&format!("error: cannot write {}: ", under.display()))
+            && err.contains("os error"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    // procfs accepts no new files, even from root.
+    if Path::new("/proc/self").is_dir() {
+        let (code, _, err) = run(&["figures", "--out", "/proc", "--only", "zhang-fig3"]);
+        assert_eq!(code, 1, "{err}");
+        assert!(
+            err.starts_with("error: cannot write /proc/zhang-fig3.png: ")
+                && err.contains("os error"),
+            "{err}"
+        );
+    }
+}

@@ -161,3 +161,279 @@ fn help_has_an_example_and_the_grid() {
     assert!(out.contains("shadow-aliasing sweep --near"), "{out}");
     assert!(out.contains("elevation,azimuth,storage_factor"), "{out}");
 }
+
+/// Runs the binary, killing it (and failing) if it has not finished within `secs` seconds: a
+/// hang is a failure, not a stuck test run.
+fn run_within(args: &[&str], secs: u64) -> (i32, String, String) {
+    use std::io::Read;
+    use std::process::Stdio;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary starts");
+    let start = std::time::Instant::now();
+    let status = loop {
+        if let Some(s) = child.try_wait().expect("wait") {
+            break s;
+        }
+        if start.elapsed().as_secs() >= secs {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("{args:?} did not finish within {secs} s");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    };
+    let (mut out, mut err) = (String::new(), String::new());
+    child
+        .stdout
+        .take()
+        .unwrap()
+        .read_to_string(&mut out)
+        .unwrap();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut err)
+        .unwrap();
+    (status.code().expect("exited normally"), out, err)
+}
+
+#[test]
+fn thread_counts_outside_1_to_1024_are_refused_with_exit_2() {
+    let base = [
+        "sweep",
+        "--near",
+        "1",
+        "--far",
+        "100",
+        "--half-fov",
+        "0.5",
+        "--warp",
+        "lispsm",
+        "--elevations",
+        "2",
+        "--azimuths",
+        "3",
+        "--threads",
+    ];
+    // 20000 used to panic in a worker and hang; u64::MAX used to hang.
+    for t in ["20000", "18446744073709551615", "1025", "0", "-1"] {
+        let mut args = base.to_vec();
+        args.push(t);
+        let (code, out, err) = run_within(&args, 60);
+        assert_eq!(code, 2, "{t}: {err}");
+        assert!(out.is_empty(), "{t}: {out}");
+        assert_eq!(
+            err,
+            format!(
+                "error: invalid value '{t}' for '--threads <T>': must lie in [1, 1024] (got {t}) (see --help)\n"
+            )
+        );
+    }
+    let mut args = base.to_vec();
+    args.push("many");
+    let (code, _, err) = run_within(&args, 60);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("--threads") && err.contains("[1, 1024]"),
+        "{err}"
+    );
+    // The bound itself is accepted, with the same bytes as one thread.
+    let mut one = base.to_vec();
+    one.push("1");
+    let mut most = base.to_vec();
+    most.push("1024");
+    let (c1, o1, e1) = run_within(&one, 60);
+    let (c2, o2, e2) = run_within(&most, 60);
+    assert_eq!((c1, c2), (0, 0), "{e1} {e2}");
+    assert_eq!(o1.lines().count(), 1 + 2 * 3);
+    assert_eq!(o1, o2);
+}
+
+#[test]
+fn tsm_default_focus_fits_the_adaptive_partitions_of_every_direction() {
+    // Issue 11: every k ≥ 2 failed with "focus must be at most far − near", the default focus
+    // having been taken from γ = 0 although γ = π/2 has the shallower first partition.
+    for k in ["2", "3", "4"] {
+        let rows = sweep(&[
+            "--warp",
+            "tsm",
+            "--partition",
+            "adaptive",
+            "--k",
+            k,
+            "--elevations",
+            "3",
+            "--azimuths",
+            "8",
+        ]);
+        assert_eq!(rows.len(), 24, "k {k}");
+        assert!(rows.iter().all(|r| r.2.is_finite() && r.2 > 0.0), "k {k}");
+    }
+    // Two directions, light behind (γ = 0) and overhead (γ = π/2), k = 2, α = 2 (Barroso Eq 19
+    // by hand): γ = 0 gives planes 1, 100/2 = 50, 100 (depths 49 and 50), γ = π/2 the
+    // self-similar 1, √100 = 10, 100 (depths 9 and 90). The shallowest is 9, so the focus is
+    // 4.5 for the whole sweep, and each row is `warp --focus 4.5` at that direction.
+    let rows = sweep(&[
+        "--warp",
+        "tsm",
+        "--partition",
+        "adaptive",
+        "--k",
+        "2",
+        "--elevations",
+        "2",
+        "--azimuths",
+        "1",
+    ]);
+    assert_eq!(rows.len(), 2);
+    // The sweep's directions: −(cos el sin az, sin el, cos el cos az) at (0, 0) and (π/2, 0).
+    let zenith = format!("-0,-1,{}", -FRAC_PI_2.cos());
+    for (row, dir) in rows.iter().zip(["-0,-0,-1", zenith.as_str()]) {
+        let (code, out, err) = run(&[
+            "warp",
+            "--near",
+            "1",
+            "--far",
+            "100",
+            "--half-fov",
+            "0.5",
+            "--light-dir",
+            dir,
+            "--warp",
+            "tsm",
+            "--focus",
+            "4.5",
+            "--partition",
+            "adaptive",
+            "--k",
+            "2",
+            "--json",
+        ]);
+        assert_eq!(code, 0, "{dir}: {err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let want = v["storage_factor"].as_f64().unwrap();
+        assert!(close(row.2, want, 1e-12), "{row:?} want {want} ({dir})");
+    }
+}
+
+#[test]
+fn negative_numbers_get_the_domain_error_not_unexpected_argument() {
+    let base = ["sweep", "--near", "1", "--far", "100", "--half-fov", "0.5"];
+    for (extra, want) in [
+        (
+            vec!["--warp", "lispsm", "--elevations", "-3"],
+            "error: elevations must be at least 1 (got -3)",
+        ),
+        (
+            vec!["--warp", "lispsm", "--azimuths", "-1"],
+            "error: azimuths must be at least 1 (got -1)",
+        ),
+        (
+            vec!["--warp", "lispsm", "--partition", "log", "--k", "-1"],
+            "error: k must lie in [1, 16] (got -1)",
+        ),
+        (
+            vec!["--warp", "lispsm", "--partition", "log", "--k", "0"],
+            "error: k must lie in [1, 16] (got 0)",
+        ),
+        (
+            vec!["--warp", "eta", "--eta", "-inf"],
+            "error: eta must be a finite number (got -inf)",
+        ),
+        (
+            vec!["--warp", "eta", "--eta", "-1.5"],
+            "error: eta must lie in [-1, 1] (got -1.5)",
+        ),
+        (
+            vec!["--warp", "tsm", "--focus", "-2"],
+            "error: focus must be greater than 0 (got -2)",
+        ),
+        (
+            vec![
+                "--warp",
+                "lispsm",
+                "--partition",
+                "practical",
+                "--k",
+                "2",
+                "--lambda",
+                "-0.5",
+            ],
+            "error: lambda must lie in [0, 1] (got -0.5)",
+        ),
+    ] {
+        let mut args: Vec<&str> = base.to_vec();
+        args.extend(extra.iter());
+        let (code, out, err) = run(&args);
+        assert_eq!(
+            (code, out.as_str(), err.trim_end()),
+            (1, "", want),
+            "{args:?}"
+        );
+    }
+    for (flag, want) in [
+        ("--near", "error: near must be a finite number (got -inf)"),
+        ("--far", "error: far must be a finite number (got -inf)"),
+        (
+            "--half-fov",
+            "error: half_fov must be a finite number (got -inf)",
+        ),
+    ] {
+        let mut args = vec!["sweep", "--near", "1", "--far", "100", "--half-fov", "0.5"];
+        let i = args.iter().position(|a| *a == flag).unwrap();
+        args[i + 1] = "-inf";
+        args.extend(["--warp", "lispsm"]);
+        let (code, _, err) = run(&args);
+        assert_eq!((code, err.trim_end()), (1, want), "{args:?}");
+    }
+}
+
+#[test]
+fn lambda_only_with_practical_partitions() {
+    let base = [
+        "sweep",
+        "--near",
+        "1",
+        "--far",
+        "100",
+        "--half-fov",
+        "0.5",
+        "--warp",
+        "lispsm",
+        "--elevations",
+        "2",
+        "--azimuths",
+        "3",
+    ];
+    for (partition, k) in [
+        ("single", "1"),
+        ("log", "2"),
+        ("adaptive", "2"),
+        ("faces", "2"),
+    ] {
+        let mut args = base.to_vec();
+        args.extend(["--partition", partition, "--k", k, "--lambda", "0.3"]);
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 1, "{args:?}");
+        assert!(out.is_empty());
+        assert_eq!(
+            err,
+            format!(
+                "error: lambda is not an argument of --partition {partition} (only of --partition practical)\n"
+            )
+        );
+    }
+    // With practical: given, or its default 0.5.
+    let mut given = base.to_vec();
+    given.extend(["--partition", "practical", "--k", "2", "--lambda", "0.5"]);
+    let mut default = base.to_vec();
+    default.extend(["--partition", "practical", "--k", "2"]);
+    let (c1, o1, _) = run(&given);
+    let (c2, o2, _) = run(&default);
+    assert_eq!((c1, c2), (0, 0));
+    assert_eq!(o1, o2);
+}

@@ -402,3 +402,185 @@ fn docs_show_the_binarys_output() {
         "docs/cli.md's JSON example is stale:\n{now}"
     );
 }
+
+#[test]
+fn lambda_is_refused_unless_the_partition_is_practical() {
+    let base = [
+        "warp",
+        "--near",
+        "1",
+        "--far",
+        "100",
+        "--half-fov",
+        "0.5",
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "lispsm",
+    ];
+    // It used to be ignored silently: `--lambda 0.3` printed the single map's S̄.
+    for (partition, k) in [
+        ("single", "1"),
+        ("uniform", "2"),
+        ("log", "2"),
+        ("adaptive", "2"),
+        ("faces", "2"),
+    ] {
+        let mut args = base.to_vec();
+        args.extend(["--partition", partition, "--k", k, "--lambda", "0.3"]);
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 1, "{args:?}");
+        assert!(out.is_empty(), "{out}");
+        assert_eq!(
+            err,
+            format!(
+                "error: lambda is not an argument of --partition {partition} (only of --partition practical)\n"
+            )
+        );
+    }
+    // Practical: λ = 0 is the uniform partition, λ = 1 the logarithmic one, absent is 0.5.
+    let sf = |extra: &[&str]| {
+        let mut a = vec!["--light-dir", "0,-1,0", "--warp", "lispsm", "--k", "2"];
+        a.extend_from_slice(extra);
+        num(&warp_json(&a)["storage_factor"])
+    };
+    assert_eq!(
+        sf(&["--partition", "practical", "--lambda", "0"]),
+        sf(&["--partition", "uniform"])
+    );
+    assert!(close(
+        sf(&["--partition", "practical", "--lambda", "1"]),
+        sf(&["--partition", "log"]),
+        1e-12
+    ));
+    assert_eq!(
+        sf(&["--partition", "practical"]),
+        sf(&["--partition", "practical", "--lambda", "0.5"])
+    );
+}
+
+#[test]
+fn negative_values_reach_the_domain_checks() {
+    let base = ["warp", "--near", "1", "--far", "100", "--half-fov", "0.5"];
+    for (extra, want) in [
+        (
+            vec!["--light-dir", "0,-1,0", "--warp", "eta", "--eta", "-inf"],
+            "error: eta must be a finite number (got -inf)",
+        ),
+        (
+            vec!["--light-dir", "0,-1,0", "--warp", "eta", "--eta", "-2"],
+            "error: eta must lie in [-1, 1] (got -2)",
+        ),
+        (
+            vec![
+                "--light-dir",
+                "0,-1,0",
+                "--warp",
+                "lispsm",
+                "--partition",
+                "log",
+                "--k",
+                "-1",
+            ],
+            "error: k must lie in [1, 16] (got -1)",
+        ),
+        (
+            vec!["--light-dir", "0,-1,0", "--warp", "tsm", "--focus", "-2"],
+            "error: focus must be greater than 0 (got -2)",
+        ),
+        (
+            vec!["--light-dir", "0,-1,0", "--warp", "tsm", "--focus", "-inf"],
+            "error: focus must be a finite number (got -inf)",
+        ),
+        (
+            vec![
+                "--light-dir",
+                "0,-1,0",
+                "--warp",
+                "lispsm",
+                "--partition",
+                "practical",
+                "--k",
+                "2",
+                "--lambda",
+                "-1e-3",
+            ],
+            "error: lambda must lie in [0, 1] (got -0.001)",
+        ),
+    ] {
+        let mut args: Vec<&str> = base.to_vec();
+        args.extend(extra.iter());
+        let (code, out, err) = run(&args);
+        assert_eq!(
+            (code, out.as_str(), err.trim_end()),
+            (1, "", want),
+            "{args:?}"
+        );
+    }
+    for (flag, name) in [
+        ("--near", "near"),
+        ("--far", "far"),
+        ("--half-fov", "half_fov"),
+    ] {
+        let mut args = vec!["warp", "--near", "1", "--far", "100", "--half-fov", "0.5"];
+        let i = args.iter().position(|a| *a == flag).unwrap();
+        args[i + 1] = "-inf";
+        args.extend(["--light-dir", "0,-1,0", "--warp", "lispsm"]);
+        let (code, _, err) = run(&args);
+        assert_eq!(code, 1, "{args:?}");
+        assert_eq!(
+            err.trim_end(),
+            format!("error: {name} must be a finite number (got -inf)")
+        );
+    }
+    // η = −1 is a value, the unwarped map (Lloyd 2006 Eq 11); negative hints reach Filament's
+    // rule; negative light components are a direction.
+    let v = warp_json(&["--light-dir", "-1,-1,-0.5", "--warp", "eta", "--eta", "-1"]);
+    assert_eq!(v["partitions"][0]["n_prime"], "inf");
+    let (_, _, err) = run(&[
+        "warp",
+        "--near",
+        "1",
+        "--far",
+        "100",
+        "--half-fov",
+        "0.5",
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "filament",
+        "--near-hint",
+        "-1",
+        "--far-hint",
+        "-0.5",
+    ]);
+    assert!(!err.contains("unexpected argument"), "{err}");
+}
+
+#[test]
+fn huge_light_directions_are_directions_and_numbers_in_messages_are_short() {
+    // (1e308, 1e308, 1e308) is the direction (1, 1, 1): its squared length overflows, and it
+    // used to be refused as a zero vector with three 309-digit numbers.
+    let huge = warp_json(&["--light-dir", "1e308,1e308,1e308", "--warp", "lispsm"]);
+    let unit = warp_json(&["--light-dir", "1,1,1", "--warp", "lispsm"]);
+    let (a, b) = (num(&huge["storage_factor"]), num(&unit["storage_factor"]));
+    assert!(a.is_finite() && close(a, b, 1e-12), "{a} {b}");
+    let (code, _, err) = run(&[
+        "warp",
+        "--near",
+        "1e300",
+        "--far",
+        "1e-300",
+        "--half-fov",
+        "0.5",
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "lispsm",
+    ]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        err,
+        "error: far must be greater than near (got near=1e300, far=1e-300)\n"
+    );
+}

@@ -29,7 +29,7 @@ pub enum Command {
     Figures(FiguresArgs),
     /// Evaluate closed forms from JSON (docs/eval.md): one object or an array of objects.
     #[command(
-        after_help = "Example:\n  echo '{\"quantity\": \"storage_factor\", \"near\": 1, \"far\": 100, \"half_fov\": 0.5236, \"n_prime\": 11}' | shadow-aliasing eval\n\nExit status: 0 every request answered with a value, 1 at least one answered with an error,\n2 the input is not JSON of the contract's shape."
+        after_help = "Example:\n  echo '{\"quantity\": \"storage_factor\", \"near\": 1, \"far\": 100, \"half_fov\": 0.5236, \"n_prime\": 11}' | shadow-aliasing eval\n\nExit status: 0 every request answered with a value, 1 at least one answered with an error\n(or standard output cannot be written), 2 the input is not JSON of the contract's shape."
     )]
     Eval(EvalArgs),
     /// Print a camera's shadow matrices for a light, with their measured aliasing error.
@@ -86,17 +86,13 @@ pub struct EvalArgs {
 #[derive(Debug, Clone, clap::Args)]
 pub struct CameraArgs {
     /// Near plane depth (> 0).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub near: f64,
     /// Far plane depth (> near).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub far: f64,
     /// Half of the vertical field of view, radians (0 < half_fov < π/2).
-    #[arg(
-        long = "half-fov",
-        value_name = "RADIANS",
-        allow_negative_numbers = true
-    )]
+    #[arg(long = "half-fov", value_name = "RADIANS", allow_hyphen_values = true)]
     pub half_fov: f64,
 }
 
@@ -107,35 +103,31 @@ pub struct SchemeArgs {
     #[arg(long, value_enum)]
     pub warp: WarpName,
     /// η ∈ [−1, 1] for `--warp eta` (−1 unwarped, 0 LiSPSM, 1 PSM).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub eta: Option<f64>,
     /// TSM's focus distance δ beyond the near plane of each map's (sub)frustum, world units
     /// (default: half the depth range of the shallowest z-partition).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub focus: Option<f64>,
     /// Filament's near hint (`ShadowOptions::shadowNearHint`), with `--warp filament`.
-    #[arg(
-        long = "near-hint",
-        requires = "far_hint",
-        allow_negative_numbers = true
-    )]
+    #[arg(long = "near-hint", requires = "far_hint", allow_hyphen_values = true)]
     pub near_hint: Option<f64>,
     /// Filament's far hint (`ShadowOptions::shadowFarHint`), with `--warp filament`.
-    #[arg(
-        long = "far-hint",
-        requires = "near_hint",
-        allow_negative_numbers = true
-    )]
+    #[arg(long = "far-hint", requires = "near_hint", allow_hyphen_values = true)]
     pub far_hint: Option<f64>,
     /// How the view frustum is partitioned.
     #[arg(long, value_enum, default_value_t = PartitionName::Single)]
     pub partition: PartitionName,
-    /// Number of z-partitions (inside each face for `faces`).
-    #[arg(long, default_value_t = 1)]
-    pub k: usize,
-    /// Blend of `practical` partitions: 0 uniform, 1 logarithmic.
-    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
-    pub lambda: f64,
+    /// Number of z-partitions (inside each face for `faces`), 1 to 16.
+    ///
+    /// Signed, so that a negative count reaches the domain check (`k must lie in [1, 16]`)
+    /// instead of clap's "unexpected argument".
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
+    pub k: i64,
+    /// Blend of `practical` partitions: 0 uniform, 1 logarithmic (default 0.5; only with
+    /// `--partition practical`).
+    #[arg(long, allow_hyphen_values = true)]
+    pub lambda: Option<f64>,
 }
 
 /// Warp rules by name.
@@ -213,14 +205,37 @@ pub struct SweepArgs {
     #[command(flatten)]
     pub scheme: SchemeArgs,
     /// Number of elevation rows, evenly over [0, π/2] both ends included (1 gives the zenith only).
-    #[arg(long, default_value_t = 90)]
-    pub elevations: usize,
+    #[arg(long, default_value_t = 90, allow_hyphen_values = true)]
+    pub elevations: i64,
     /// Number of azimuth columns, evenly over [0, 2π), 2π excluded (≥ 1).
-    #[arg(long, default_value_t = 360)]
-    pub azimuths: usize,
-    /// Worker threads (default: all cores).
-    #[arg(long)]
+    #[arg(long, default_value_t = 360, allow_hyphen_values = true)]
+    pub azimuths: i64,
+    /// Worker threads, 1 to 1024 (default: all cores).
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = parse_threads)]
     pub threads: Option<usize>,
+}
+
+/// The largest `--threads`: far more than a sweep can use on any machine (it is CPU-bound, so
+/// threads beyond the cores only wait), and far below the operating system's limits on threads
+/// and memory maps, whose exhaustion inside a worker would otherwise panic it and hang the pool.
+pub const MAX_THREADS: usize = 1024;
+
+/// Parses `--threads`: a whole number in [1, [`MAX_THREADS`]].
+fn parse_threads(s: &str) -> Result<usize, String> {
+    let t = s.trim();
+    let digits = t.strip_prefix(['-', '+']).unwrap_or(t);
+    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return Err(format!(
+            "expected a whole number of threads in [1, {MAX_THREADS}] (got {s:?})"
+        ));
+    }
+    match t.parse::<i128>() {
+        Ok(v) if (1..=MAX_THREADS as i128).contains(&v) => {
+            usize::try_from(v).map_err(|_| format!("must lie in [1, {MAX_THREADS}] (got {t})"))
+        }
+        // Out of range, however many digits it has.
+        _ => Err(format!("must lie in [1, {MAX_THREADS}] (got {t})")),
+    }
 }
 
 /// Parses `x,y,z`.
@@ -297,6 +312,29 @@ mod tests {
         assert!(parse_vec3("1,2").is_err());
         assert!(parse_vec3("1,x,2").is_err());
         assert!(parse_vec3("1,inf,2").is_err());
+        assert_eq!(parse_vec3("-1,-0.5,-1e-3"), Ok([-1.0, -0.5, -1e-3]));
+    }
+
+    #[test]
+    fn threads_parsing() {
+        assert_eq!(parse_threads("1"), Ok(1));
+        assert_eq!(parse_threads("1024"), Ok(MAX_THREADS));
+        for bad in [
+            "0",
+            "-1",
+            "1025",
+            "20000",
+            "18446744073709551615",
+            "1e3",
+            "x",
+            "",
+        ] {
+            assert!(parse_threads(bad).is_err(), "{bad}");
+        }
+        assert_eq!(
+            parse_threads("18446744073709551616000000000000000000000000"),
+            Err("must lie in [1, 1024] (got 18446744073709551616000000000000000000000000)".into())
+        );
     }
 
     #[test]

@@ -2,7 +2,7 @@
 
 use crate::args::{Cli, Command, EvalArgs, FiguresArgs, Format, SweepArgs, WarpArgs};
 use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
-use crate::scheme::{partition, partitions, rule, PartitionReport};
+use crate::scheme::{k, partition, partitions, rule, Lights, PartitionReport};
 use glam::DVec3;
 use shadow_aliasing::{LightAngle, ViewFrustum};
 use std::fmt::Write as _;
@@ -51,16 +51,24 @@ fn eval(a: &EvalArgs) -> ExitCode {
     };
     let out = shadow_aliasing::eval::eval_json(&text);
     let mut stdout = std::io::stdout().lock();
-    if stdout
+    match stdout
         .write_all(out.stdout.as_bytes())
         .and_then(|()| stdout.flush())
-        .is_err()
     {
-        // A closed pipe: nothing more useful can be said on standard output.
-        return ExitCode::from(2);
+        // A closed pipe: the reader has gone, which is not an error of the input or ours.
+        Ok(()) => {}
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {}
+        // Exit status 2 means malformed input; a failing output is status 1, with a message.
+        Err(e) => return fail(format!("cannot write to standard output: {e}")),
     }
     to_stderr(&out.stderr);
     ExitCode::from(u8::try_from(out.exit_code).unwrap_or(2))
+}
+
+/// A grid count as the library's `usize`; a negative one answered in `SweepGrid::new`'s words.
+fn count(name: &'static str, v: i64) -> Result<usize, shadow_aliasing::Error> {
+    usize::try_from(v)
+        .map_err(|_| shadow_aliasing::Error::invalid(name, format!("must be at least 1 (got {v})")))
 }
 
 /// Writes `text` to standard output; a closed pipe is not an error worth a message.
@@ -243,7 +251,13 @@ fn figures(a: &FiguresArgs) -> ExitCode {
         if let Some(b) = &bar {
             b.set_message(*name);
         }
-        match plot::render(name, &a.out, format) {
+        // plotters reports a file it cannot create as a debug dump without the path; opening
+        // each file first reports the path and the operating system's error instead.
+        if let Err(e) = writable(&a.out, name, format) {
+            result = Err(e);
+            break;
+        }
+        match plot::render(name, &a.out, format).map_err(|e| e.to_string()) {
             Ok(files) => {
                 if let Ok(all) = &mut result {
                     all.extend(files);
@@ -274,6 +288,28 @@ fn figures(a: &FiguresArgs) -> ExitCode {
     }
 }
 
+/// Creates `dir` and opens (creating, not truncating) each file `figures` is about to write
+/// there: "cannot write PATH: OS error" for the first that cannot be.
+fn writable(
+    dir: &std::path::Path,
+    name: &str,
+    format: shadow_aliasing::plot::Format,
+) -> Result<(), String> {
+    let cannot =
+        |p: &std::path::Path, e: std::io::Error| format!("cannot write {}: {e}", p.display());
+    std::fs::create_dir_all(dir).map_err(|e| cannot(dir, e))?;
+    for ext in format.extensions() {
+        let path = dir.join(format!("{name}.{ext}"));
+        std::fs::OpenOptions::new()
+            .write(true)
+            .create(true)
+            .truncate(false)
+            .open(&path)
+            .map_err(|e| cannot(&path, e))?;
+    }
+    Ok(())
+}
+
 fn sweep(a: &SweepArgs) -> ExitCode {
     use shadow_aliasing::measure::sweep::{sweep, SweepGrid};
     let c = &a.camera;
@@ -281,18 +317,22 @@ fn sweep(a: &SweepArgs) -> ExitCode {
         Ok(v) => v,
         Err(e) => return fail(e),
     };
-    let r = match rule(&view, None, &a.scheme) {
-        Ok(r) => r,
-        Err(e) => return fail(e),
-    };
-    let grid = match SweepGrid::new(a.elevations, a.azimuths) {
+    let grid = match count("elevations", a.elevations)
+        .and_then(|e| Ok((e, count("azimuths", a.azimuths)?)))
+        .and_then(|(e, az)| SweepGrid::new(e, az))
+    {
         Ok(g) => g,
         Err(e) => return fail(e),
     };
-    let run = || sweep(&view, r, partition(&a.scheme), a.scheme.k, grid);
+    let (r, k) =
+        match rule(&view, Lights::Sweep(grid), &a.scheme).and_then(|r| Ok((r, k(&a.scheme)?))) {
+            Ok(rk) => rk,
+            Err(e) => return fail(e),
+        };
+    let run = || sweep(&view, r, partition(&a.scheme), k, grid);
+    // `--threads` is in [1, MAX_THREADS] (args::parse_threads).
     let result = match a.threads {
         None => run(),
-        Some(0) => return fail("threads must be at least 1 (got 0)"),
         Some(t) => match rayon::ThreadPoolBuilder::new().num_threads(t).build() {
             Ok(pool) => pool.install(run),
             Err(e) => return fail(format!("threads: cannot start {t} threads: {e}")),

@@ -2,10 +2,12 @@
 //! error of each partition's matrix (`build::scheme`).
 
 use crate::args::{PartitionName, SchemeArgs, WarpName};
+use clap::ValueEnum;
 use glam::{DMat4, DVec3};
-use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
+use shadow_aliasing::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
 use shadow_aliasing::build::scheme::{scheme, Partition, Region, ADAPTIVE_RATIO};
 use shadow_aliasing::build::{Falloff, WarpRule};
+use shadow_aliasing::measure::sweep::{light_dir_from_angles, SweepGrid};
 use shadow_aliasing::{Error, LightAngle, NPrime, ViewFrustum};
 
 /// One partition's matrix and its measured error (unit resolutions).
@@ -29,55 +31,129 @@ pub struct PartitionReport {
     pub face: Option<String>,
 }
 
+/// `--lambda` when it is not given.
+pub const DEFAULT_LAMBDA: f64 = 0.5;
+
+/// The light directions a scheme is evaluated at: one for `warp`, a sweep's grid for `sweep`.
+#[derive(Debug, Clone, Copy)]
+pub enum Lights {
+    /// One eye-space light direction.
+    One(DVec3),
+    /// Every direction of a hemisphere sweep.
+    Sweep(SweepGrid),
+}
+
 /// The library's partition for `--partition` (and `--lambda`).
 pub fn partition(a: &SchemeArgs) -> Partition {
     match a.partition {
         PartitionName::Single => Partition::Single,
         PartitionName::Uniform => Partition::Uniform,
         PartitionName::Log => Partition::Log,
-        PartitionName::Practical => Partition::Practical(a.lambda),
+        PartitionName::Practical => Partition::Practical(a.lambda.unwrap_or(DEFAULT_LAMBDA)),
         PartitionName::Adaptive => Partition::Adaptive,
         PartitionName::Faces => Partition::Faces,
     }
 }
 
-/// The shallowest depth range among the scheme's z-partitions for this light (TSM's default
-/// focus is half of it, so that the focus point lies inside every partition).
-fn shallowest_partition(
-    view: &ViewFrustum,
-    light_dir: Option<DVec3>,
-    a: &SchemeArgs,
-) -> Result<f64, Error> {
-    let (n, f, k) = (view.near(), view.far(), a.k);
-    let split = match a.partition {
-        PartitionName::Single | PartitionName::Faces => return Ok(f - n),
-        PartitionName::Uniform => SplitScheme::Uniform,
-        PartitionName::Log => SplitScheme::SelfSimilar,
-        PartitionName::Practical => SplitScheme::Practical { lambda: a.lambda },
-        PartitionName::Adaptive => SplitScheme::Adaptive {
-            light_angle: match light_dir {
-                Some(l) => LightAngle::from_light_dir(l)?.radians(),
-                // A sweep: the light parallel to the view gives the shallowest far partitions.
-                None => 0.0,
-            },
+/// `--k` as the library's count: 1 with `single`, otherwise in [1, 16] (a negative or zero
+/// count answered in the library's words, a larger one left to the library, which says the same).
+pub fn k(a: &SchemeArgs) -> Result<usize, Error> {
+    if a.partition == PartitionName::Single && a.k != 1 {
+        return Err(Error::invalid(
+            "k",
+            format!(
+                "is the number of z-partitions and needs a --partition other than single (got {})",
+                a.k
+            ),
+        ));
+    }
+    match usize::try_from(a.k) {
+        Ok(k) if k >= 1 => Ok(k),
+        _ => Err(Error::invalid(
+            "k",
+            format!("must lie in [1, {MAX_PARTITIONS}] (got {})", a.k),
+        )),
+    }
+}
+
+/// The depth range of the shallowest of the adaptive z-partitions (Barroso Eq 19) for one light
+/// angle γ.
+fn shallowest_adaptive(n: f64, f: f64, k: usize, gamma: f64) -> Result<f64, Error> {
+    let s = z_splits(
+        n,
+        f,
+        k,
+        SplitScheme::Adaptive {
+            light_angle: gamma,
             ratio: ADAPTIVE_RATIO,
         },
-    };
-    let s = z_splits(n, f, k, split)?;
-    Ok((0..s.k())
+    )?;
+    Ok(shallowest(&s))
+}
+
+/// The smallest `b − a` over the ranges of `s`.
+fn shallowest(s: &Splits) -> f64 {
+    (0..s.k())
         .map(|i| {
             let (a, b) = s.range(i);
             b - a
         })
-        .fold(f64::INFINITY, f64::min))
+        .fold(f64::INFINITY, f64::min)
 }
 
-/// The library's rule for `--warp` (and its parameters). `light_dir` is `None` for a sweep.
-pub fn rule(
-    view: &ViewFrustum,
-    light_dir: Option<DVec3>,
-    a: &SchemeArgs,
-) -> Result<WarpRule, Error> {
+/// The shallowest depth range among the scheme's z-partitions for these lights (TSM's default
+/// focus is half of it, so that the focus point lies inside every partition).
+///
+/// Only `adaptive` partitions depend on the light (through γ). For a sweep the minimum is taken
+/// over every direction the sweep visits, so that one focus distance serves the whole sweep:
+/// neither γ = 0 nor γ = π/2 is the shallowest case in general (at n = 1, f = 100, k = 4 the
+/// first partition is 11.5 deep at γ = 0 but 100^{1/4} − 1 = 2.16 at γ = π/2). A direction whose
+/// partitions do not exist (Eq 19's planes not increasing) is left to the sweep, which reports
+/// it with the direction.
+fn shallowest_partition(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> Result<f64, Error> {
+    let (n, f, k) = (view.near(), view.far(), k(a)?);
+    let split = match a.partition {
+        PartitionName::Single | PartitionName::Faces => return Ok(f - n),
+        PartitionName::Uniform => SplitScheme::Uniform,
+        PartitionName::Log => SplitScheme::SelfSimilar,
+        PartitionName::Practical => SplitScheme::Practical {
+            lambda: a.lambda.unwrap_or(DEFAULT_LAMBDA),
+        },
+        PartitionName::Adaptive => {
+            return match lights {
+                Lights::One(l) => {
+                    shallowest_adaptive(n, f, k, LightAngle::from_light_dir(l)?.radians())
+                }
+                Lights::Sweep(grid) => {
+                    let mut min = f64::INFINITY;
+                    let mut first_error = None;
+                    for i in 0..grid.elevations() {
+                        for j in 0..grid.azimuths() {
+                            let l = light_dir_from_angles(grid.elevation(i), grid.azimuth(j));
+                            match LightAngle::from_light_dir(l)
+                                .and_then(|g| shallowest_adaptive(n, f, k, g.radians()))
+                            {
+                                Ok(d) => min = min.min(d),
+                                Err(e) => {
+                                    first_error.get_or_insert(e);
+                                }
+                            }
+                        }
+                    }
+                    match first_error {
+                        Some(e) if min == f64::INFINITY => Err(e),
+                        _ => Ok(min),
+                    }
+                }
+            };
+        }
+    };
+    Ok(shallowest(&z_splits(n, f, k, split)?))
+}
+
+/// The library's rule for `--warp` (and its parameters), checking that every parameter given is
+/// one the scheme uses.
+pub fn rule(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> Result<WarpRule, Error> {
     if a.eta.is_some() && a.warp != WarpName::Eta {
         return Err(Error::invalid("eta", "is only used by --warp eta"));
     }
@@ -90,18 +166,19 @@ pub fn rule(
             "is only used by --warp filament",
         ));
     }
-    if a.partition != PartitionName::Single && a.k == 0 {
-        return Err(Error::invalid("k", "must be at least 1 (got 0)"));
-    }
-    if a.partition == PartitionName::Single && a.k != 1 {
+    if a.lambda.is_some() && a.partition != PartitionName::Practical {
+        // eval's wording for z_partition's lambda with another scheme.
         return Err(Error::invalid(
-            "k",
+            "lambda",
             format!(
-                "is the number of z-partitions and needs a --partition other than single (got {})",
-                a.k
+                "is not an argument of --partition {} (only of --partition practical)",
+                a.partition
+                    .to_possible_value()
+                    .map_or_else(|| "?".to_string(), |p| p.get_name().to_string())
             ),
         ));
     }
+    k(a)?;
     Ok(match a.warp {
         WarpName::Uniform => WarpRule::Uniform,
         WarpName::Eta => WarpRule::Eta(a.eta.ok_or_else(|| {
@@ -117,7 +194,7 @@ pub fn rule(
         WarpName::Tsm => WarpRule::Tsm {
             focus: match a.focus {
                 Some(f) => f,
-                None => 0.5 * shallowest_partition(view, light_dir, a)?,
+                None => 0.5 * shallowest_partition(view, lights, a)?,
             },
         },
         WarpName::LispsmReference => WarpRule::LispsmReference,
@@ -138,8 +215,8 @@ pub fn partitions(
     light_dir: DVec3,
     a: &SchemeArgs,
 ) -> Result<Vec<PartitionReport>, Error> {
-    let r = rule(view, Some(light_dir), a)?;
-    let result = scheme(view, light_dir, r, partition(a), a.k)?;
+    let r = rule(view, Lights::One(light_dir), a)?;
+    let result = scheme(view, light_dir, r, partition(a), k(a)?)?;
     Ok(result
         .partitions()
         .iter()

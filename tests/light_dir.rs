@@ -1,0 +1,109 @@
+//! `frustum::unit_light_dir` normalises every finite, non-zero light direction, however large or
+//! small its components; expected values are hand calculations (1/√2, 1/√3, 3-4-5 triangles).
+
+use glam::DVec3;
+use proptest::prelude::*;
+use shadow_aliasing::frustum::unit_light_dir;
+use shadow_aliasing::{Error, LightAngle};
+
+fn close(a: DVec3, b: DVec3) -> bool {
+    (a - b).abs().max_element() <= 4.0 * f64::EPSILON
+}
+
+#[test]
+fn huge_components_normalise_instead_of_overflowing() {
+    // |l|² overflows for all of these; each is a multiple of a vector whose unit vector is known.
+    let r3 = 1.0 / 3f64.sqrt();
+    let r2 = std::f64::consts::FRAC_1_SQRT_2;
+    for (l, want) in [
+        (DVec3::splat(1e308), DVec3::splat(r3)),
+        (DVec3::new(-1e308, 1e308, -1e308), DVec3::new(-r3, r3, -r3)),
+        (DVec3::new(f64::MAX, 0.0, 0.0), DVec3::X),
+        (
+            DVec3::new(-f64::MAX, f64::MAX, 0.0),
+            DVec3::new(-r2, r2, 0.0),
+        ),
+        (DVec3::new(3e200, 0.0, -4e200), DVec3::new(0.6, 0.0, -0.8)),
+    ] {
+        let u = unit_light_dir(l).unwrap_or_else(|e| panic!("{l}: {e}"));
+        assert!(close(u, want), "{l}: {u} want {want}");
+    }
+    // The axis of the largest component is exact.
+    assert_eq!(
+        unit_light_dir(DVec3::new(0.0, -f64::MAX, 0.0)),
+        Ok(DVec3::NEG_Y)
+    );
+    // γ of a light at 45° to the view axis, from components near the top of the range.
+    let g = LightAngle::from_light_dir(DVec3::new(1e308, 0.0, 1e308)).unwrap();
+    assert!((g.radians() - std::f64::consts::FRAC_PI_4).abs() < 1e-15);
+}
+
+#[test]
+fn tiny_components_normalise_accurately() {
+    let r2 = std::f64::consts::FRAC_1_SQRT_2;
+    for (l, want) in [
+        // |l|² = 2e-320 is subnormal (a dozen significant bits): l/|l| computed from it is off
+        // in the fourth digit.
+        (DVec3::new(1e-160, 1e-160, 0.0), DVec3::new(r2, r2, 0.0)),
+        (DVec3::new(0.0, -3e-310, 4e-310), DVec3::new(0.0, -0.6, 0.8)),
+        (DVec3::new(5e-324, 0.0, 0.0), DVec3::X),
+        (DVec3::new(0.0, 0.0, -5e-324), DVec3::NEG_Z),
+    ] {
+        let u = unit_light_dir(l).unwrap_or_else(|e| panic!("{l}: {e}"));
+        assert!(close(u, want), "{l}: {u} want {want}");
+    }
+}
+
+#[test]
+fn ordinary_vectors_are_l_over_its_length_bit_for_bit() {
+    for l in [
+        DVec3::new(1.0, 2.0, 3.0),
+        DVec3::new(0.0, -1.0, 0.0),
+        DVec3::new(-0.3, -0.9, 0.1),
+        DVec3::new(1e-100, 2e-100, -3e-100),
+        DVec3::new(1e100, -2e100, 3e100),
+    ] {
+        // What it always computed for these (the sweep's lanes mirror it bit for bit).
+        assert_eq!(unit_light_dir(l), Ok(l / l.length()), "{l}");
+    }
+}
+
+#[test]
+fn zero_and_non_finite_vectors_are_errors_with_short_numbers() {
+    let msg = |l: DVec3| match unit_light_dir(l) {
+        Err(e @ Error::InvalidArgument { .. }) => e.to_string(),
+        other => panic!("{l}: {other:?}"),
+    };
+    assert_eq!(
+        msg(DVec3::ZERO),
+        "light_dir must be a non-zero vector (got [0, 0, 0])"
+    );
+    assert_eq!(
+        msg(DVec3::new(-0.0, 0.0, -0.0)),
+        "light_dir must be a non-zero vector (got [-0, 0, -0])"
+    );
+    assert_eq!(
+        msg(DVec3::new(1e300, f64::NAN, 0.0)),
+        "light_dir must be finite (got [1e300, NaN, 0])"
+    );
+    assert_eq!(
+        msg(DVec3::new(f64::INFINITY, 1.0, 0.0)),
+        "light_dir must be finite (got [inf, 1, 0])"
+    );
+}
+
+proptest! {
+    /// A direction scaled by any power of two anywhere in the range has the direction's unit
+    /// vector (the scaling is exact, so only the normalisation may differ, by a few ulps).
+    #[test]
+    fn scale_does_not_change_the_unit_vector(
+        x in -1.0f64..1.0, y in -1.0f64..1.0, z in -1.0f64..1.0, e in -1000i32..=1020,
+    ) {
+        let v = DVec3::new(x, y, z);
+        prop_assume!(v.abs().max_element() > 0.1);
+        let want = v.normalize();
+        let scaled = v * 2f64.powi(e);
+        let u = unit_light_dir(scaled).unwrap();
+        prop_assert!(close(u, want), "{scaled}: {u} want {want}");
+    }
+}
