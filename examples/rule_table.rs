@@ -27,13 +27,16 @@ fn main() -> Result<()> {
             WarpRule::Tsm {
                 focus: 0.2 * (f - n),
             },
-            WarpRule::Lispsm,
+            WarpRule::LispsmFixed,
             WarpRule::Ogre,
+            WarpRule::OgreOrtho {
+                shadow_distance: 300.0 * n,
+            },
             WarpRule::Psm,
         ];
-        let mut worse = [0usize; 10];
-        let mut worst = [(0.0f64, 0usize, 0usize); 10];
-        let mut sum_log = [0.0f64; 10];
+        let mut worse = [0usize; 11];
+        let mut worst = [(0.0f64, 0usize, 0usize); 11];
+        let mut sum_log = [0.0f64; 11];
         let mut count = 0usize;
         for ie in 0..=45 {
             let elev = (2.0 * ie as f64).to_radians();

@@ -584,3 +584,40 @@ fn huge_light_directions_are_directions_and_numbers_in_messages_are_short() {
         "error: far must be greater than near (got near=1e300, far=1e-300)\n"
     );
 }
+
+/// The LiSPSM names (issue 11): `lispsm` is the uniform map behind (n′ = ∞), `lispsm-sin` its
+/// old name, `lispsm-fixed` keeps n′ = n + √(f n) = 11; `ogre-ortho` is OGRE 13.6's
+/// n_opt × shadowDist: (1 + 10) · 0.1 · 300 = 330 at |cos γ| < 0.9 (default shadowDist 300 n),
+/// 1.1 · 50 = 55 with `--shadow-distance 50`, which no other rule takes.
+#[test]
+fn lispsm_and_ogre_names() {
+    for name in ["lispsm", "lispsm-sin"] {
+        let v = warp_json(&["--light-dir", "0,0,-1", "--warp", name]);
+        assert_eq!(v["partitions"][0]["n_prime"], "inf", "{name}");
+    }
+    let v = warp_json(&["--light-dir", "0,0,-1", "--warp", "lispsm-fixed"]);
+    assert_eq!(v["partitions"][0]["n_prime"], 11.0);
+    let v = warp_json(&["--light-dir", "0.3,-0.5,-0.8", "--warp", "ogre-ortho"]);
+    assert!(close(num(&v["partitions"][0]["n_prime"]), 330.0, 1e-12));
+    let v = warp_json(&[
+        "--light-dir",
+        "0.3,-0.5,-0.8",
+        "--warp",
+        "ogre-ortho",
+        "--shadow-distance",
+        "50",
+    ]);
+    assert!(close(num(&v["partitions"][0]["n_prime"]), 55.0, 1e-12));
+    let (code, _, err) = run(&[
+        "warp", "--near", "1", "--far", "100", "--half-fov", "0.5", "--light-dir", "0,-1,0",
+        "--warp", "ogre", "--shadow-distance", "50",
+    ]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("shadow_distance is only used by --warp ogre-ortho"), "{err}");
+    let (code, _, err) = run(&[
+        "warp", "--near", "1", "--far", "100", "--half-fov", "0.5", "--light-dir", "0,-1,0",
+        "--warp", "ogre-ortho", "--shadow-distance", "-2",
+    ]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("shadow_distance"), "{err}");
+}

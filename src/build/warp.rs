@@ -26,9 +26,10 @@
 //! matrix whose entries stay of the size of the frustum's extent (no `1/n′ · n′` cancellation).
 //!
 //! s is the tight fit of `x/w` with the centre of projection on the eye's light-space x, as the
-//! LiSPSM reference code (`C_start = (e.x, e.y, z_max)`), Filament (`ShadowMap::applyLISPSM`,
-//! `p = {lsCameraPosition.x, n − nopt, 0}`) and OGRE (`LiSPSMShadowCameraSetup::calculateLiSPSM`)
-//! place it; TSM's q on the centre line l is the same point (see the trapezoidal builder).
+//! LiSPSM reference code (`C_start = (e.x, e.y, z_max)`) and Filament (`ShadowMap::applyLISPSM`,
+//! `p = {lsCameraPosition.x, n − nopt, 0}`) place it; TSM's q on the centre line l is the same
+//! point (see the trapezoidal builder). OGRE (`LiSPSMShadowCameraSetup::calculateLiSPSM`) puts it
+//! on the near camera point's light-space x and y instead, which [`WarpRule::Ogre`] reproduces.
 
 use crate::build::lightspace::{light_space_unit, LightSpace};
 use crate::build::matrix::ShadowMatrix;

@@ -11,7 +11,7 @@ use std::process::ExitCode;
 #[command(
     name = "shadow-aliasing",
     version,
-    after_help = "Examples:\n  shadow-aliasing figures --out figures\n  shadow-aliasing eval examples/eval-request.json\n  shadow-aliasing warp --near 1 --far 100 --half-fov 0.5236 --light-dir 0,-1,0 --warp lispsm\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm-sin > sweep.csv"
+    after_help = "Examples:\n  shadow-aliasing figures --out figures\n  shadow-aliasing eval examples/eval-request.json\n  shadow-aliasing warp --near 1 --far 100 --half-fov 0.5236 --light-dir 0,-1,0 --warp lispsm\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm > sweep.csv"
 )]
 pub struct Cli {
     /// What to do.
@@ -39,7 +39,7 @@ pub enum Command {
     Warp(WarpArgs),
     /// The storage factor over the hemisphere of light directions, as CSV on standard output.
     #[command(
-        after_help = "Example:\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm-sin --elevations 90 --azimuths 360 > sweep.csv\n\nColumns: elevation,azimuth,storage_factor (radians). Elevation rows i = 0..E-1 at i·(π/2)/(E-1)\n(0 the horizon, π/2 overhead; both ends included; E = 1 is the zenith); azimuth columns j = 0..A-1 at j·2π/A\n(0 behind the viewer, π in front; 2π excluded)."
+        after_help = "Example:\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm --elevations 90 --azimuths 360 > sweep.csv\n\nColumns: elevation,azimuth,storage_factor (radians). Elevation rows i = 0..E-1 at i·(π/2)/(E-1)\n(0 the horizon, π/2 overhead; both ends included; E = 1 is the zenith); azimuth columns j = 0..A-1 at j·2π/A\n(0 behind the viewer, π in front; 2π excluded)."
     )]
     Sweep(SweepArgs),
 }
@@ -115,6 +115,10 @@ pub struct SchemeArgs {
     /// Filament's far hint (`ShadowOptions::shadowFarHint`), with `--warp filament`.
     #[arg(long = "far-hint", requires = "near_hint", allow_hyphen_values = true)]
     pub far_hint: Option<f64>,
+    /// OGRE's shadowDist, world units, with `--warp ogre-ortho` (default: 300 × near, OGRE's
+    /// own fallback when neither the shadow camera's far clip nor a shadow far distance is set).
+    #[arg(long = "shadow-distance", allow_hyphen_values = true)]
+    pub shadow_distance: Option<f64>,
     /// How the view frustum is partitioned.
     #[arg(long, value_enum, default_value_t = PartitionName::Single)]
     pub partition: PartitionName,
@@ -161,8 +165,10 @@ pub enum WarpName {
     LispsmReference,
     /// Filament's rule (default hints, or `--near-hint` and `--far-hint`).
     Filament,
-    /// OGRE's default rule.
+    /// OGRE's default rule, as OGRE 1.x through 13.5 build it.
     Ogre,
+    /// OGRE 13.6 and later: n′ × shadowDist (`--shadow-distance`), from the orthographic camera.
+    OgreOrtho,
 }
 
 /// Partition schemes by name.

@@ -213,7 +213,7 @@ fn warp_text(a: &WarpArgs, gamma: f64, total: f64, parts: &[PartitionReport]) ->
     s
 }
 
-/// The command-line spelling of a value (`lispsm-sin`).
+/// The command-line spelling of a value (`lispsm-fixed`).
 fn value_name<T: clap::ValueEnum>(v: &T) -> String {
     v.to_possible_value()
         .map_or_else(|| "?".to_string(), |p| p.get_name().to_string())

@@ -166,6 +166,12 @@ pub fn rule(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> Result<WarpRu
             "is only used by --warp filament",
         ));
     }
+    if a.shadow_distance.is_some() && a.warp != WarpName::OgreOrtho {
+        return Err(Error::invalid(
+            "shadow_distance",
+            "is only used by --warp ogre-ortho",
+        ));
+    }
     if a.lambda.is_some() && a.partition != PartitionName::Practical {
         // eval's wording for z_partition's lambda with another scheme.
         return Err(Error::invalid(
@@ -206,6 +212,9 @@ pub fn rule(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> Result<WarpRu
             _ => WarpRule::Filament,
         },
         WarpName::Ogre => WarpRule::Ogre,
+        WarpName::OgreOrtho => WarpRule::OgreOrtho {
+            shadow_distance: a.shadow_distance.unwrap_or(300.0 * view.near()),
+        },
     })
 }
 
