@@ -569,8 +569,16 @@ fn errata_eq23_needs_j_a_multiple_of_4() {
         // Eq 18 with k = j/4, by hand, and its large-f/n form.
         let eq18 = k as f64 * (1e6f64.powf(1.0 / k as f64) - 1.0) / (2.0 * th.tan());
         assert!(close(exact, eq18, 1e-12));
-        assert!(close(exact / eq23(j as f64), 1.0 - 1e6f64.powf(-4.0 / j as f64), 1e-12));
-        assert!(close(fp_zp_w_overhead_asymptotic(&v, j).unwrap(), eq23(j as f64), 1e-12));
+        assert!(close(
+            exact / eq23(j as f64),
+            1.0 - 1e6f64.powf(-4.0 / j as f64),
+            1e-12
+        ));
+        assert!(close(
+            fp_zp_w_overhead_asymptotic(&v, j).unwrap(),
+            eq23(j as f64),
+            1e-12
+        ));
         assert_eq!(
             shadow_map_count(Scheme::FpZpW, SchemeLight::Behind, k).unwrap(),
             j + 1
