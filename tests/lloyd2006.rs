@@ -257,11 +257,18 @@ fn errata_eq5_eq6_warping_frustum_map() {
     let tan_printed = fp / f * th.tan();
     let s_printed = f * th.tan() / (fp * tan_printed) + 0.5;
     assert!(close(s_printed, 0.5 + (f / fp).powi(2), 1e-12)); // 1.326…, outside [0, 1]
-                                                              // m_x at z = n from the printed s: w_lx = z′ tan θ′_printed / res_s.
+
+    // m_x at z = n from the printed s and tan θ′: w_lx = (ds/dx)⁻¹/res_s = z′ tan θ′_printed/res_s
+    // against the pixel width w_i = 2 z tan θ/res_i (unit resolutions), z = n, z′ = n′.
     let v = ViewFrustum::new(n, f, th).unwrap();
-    let mx_printed = np * tan_printed / (n * th.tan()); // = n′ f′/(n f) = 12.1
+    let h = 1e-6;
+    let s_of_x = |x: f64| x / (np * tan_printed) + 0.5; // printed Eq 5 at z′ = n′
+    let dx_ds = 2.0 * h / (s_of_x(h) - s_of_x(-h));
+    let w_i = 2.0 * n * th.tan();
+    let mx_printed = dx_ds / w_i; // = n′ f′/(2 n f) = 6.05
     let measured = frustum_max(&v, &overhead_map(&v, NPrime::Finite(np)).unwrap()).unwrap();
-    assert!(close(mx_printed, 12.1, 1e-12));
+    assert!(close(mx_printed, np * fp / (2.0 * n * f), 1e-9));
+    assert!(close(mx_printed, 6.05, 1e-9));
     assert!(close(measured.max_mx, 10.0, REL)); // Eq 7, 9: f n′/(n f′) = 10
 }
 
@@ -455,4 +462,63 @@ fn errata_s4_4_fig7_with_and_without_warping_swapped() {
         storage_factor(&v, NPrime::Finite(11.0)).unwrap(),
         REL
     ));
+}
+
+/// §4.3: "for values of n′ ≤ n′_LSPSM in Eq. 12, S̄ is minimal and does not depend on n′" (PSM,
+/// LiSPSM and some TSMs equivalent) holds for the light overhead only. Away from it the measured
+/// S̄ of maps fitted with explicit n′ (PSM's n′ = n = 1, n′ = 6, LiSPSM's n′ = n + √(f n) = 11)
+/// differ: n = 1, f = 100, θ = 30°, the light 45° above the horizon behind the viewer: 642.11,
+/// 360.55, 311.67; overhead all three are Eq 12's 99/(2 tan 30°) = 85.737.
+#[test]
+fn errata_s4_3_equivalence_only_overhead() {
+    use glam::DVec3;
+    use shadow_aliasing::build::{fit_warp, light_space};
+    use shadow_aliasing::measure::sweep::light_dir_from_angles;
+    use shadow_aliasing::measure::ShadowMap;
+    let v = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
+    let s_bar = |l: DVec3, np: f64| {
+        let ls = light_space(l, DVec3::NEG_Z).unwrap();
+        let m = fit_warp(&v.corners(), &ls, NPrime::Finite(np)).unwrap();
+        frustum_max(&v, &ShadowMap::new(m, l).unwrap())
+            .unwrap()
+            .storage_factor
+    };
+    let n_primes = [1.0, 6.0, 1.0 + (100.0f64).sqrt()];
+    let eq12 = 99.0 / (2.0 * 30f64.to_radians().tan());
+    for np in n_primes {
+        assert!(close(s_bar(DVec3::NEG_Y, np), eq12, REL));
+    }
+    let behind = light_dir_from_angles(45f64.to_radians(), 0.0);
+    let s: Vec<f64> = n_primes.iter().map(|&np| s_bar(behind, np)).collect();
+    assert!((s[0] - 642.11).abs() < 5e-3, "{}", s[0]);
+    assert!((s[1] - 360.55).abs() < 5e-3, "{}", s[1]);
+    assert!((s[2] - 311.67).abs() < 5e-3, "{}", s[2]);
+    assert!(s[0] > 2.0 * s[2]);
+}
+
+/// App. C's w_lz line, garbled in the transcription ("1/res_t z log(f/n) n"): from
+/// t = ln(z/n)/ln(f/n), dz/dt = z ln(f/n) (central differences of t), so w_lz = z ln(f/n)/res_t and
+/// m_z = ln(f/n)/(2 tan θ) with w_i = 2 z tan θ (unit resolutions). n = 2, f = 200, θ = 30°,
+/// z = 20: dz/dt = 92.103; read as z/ln(f/n), 4.343; with Eq 2's stray /n, z ln(f/n)/n = 46.05.
+#[test]
+fn errata_app_c_w_lz_line() {
+    use shadow_aliasing::analytic::partition::optimal_storage_factor;
+    let (n, f, th) = (2.0f64, 200.0f64, 30f64.to_radians());
+    let t = |z: f64| (z / n).ln() / (f / n).ln();
+    assert!(t(n).abs() < 1e-15 && (t(f) - 1.0).abs() < 1e-15);
+    for z in [2.5, 20.0, 150.0] {
+        let h = 1e-5 * z;
+        let dz_dt = 2.0 * h / (t(z + h) - t(z - h));
+        assert!(close(dz_dt, z * (f / n).ln(), 1e-8), "{dz_dt}");
+        let m_z = dz_dt / (2.0 * z * th.tan());
+        let v = ViewFrustum::new(n, f, th).unwrap();
+        assert!(close(m_z, optimal_storage_factor(&v).unwrap(), 1e-8));
+        assert!(close(m_z, 3.988, 1e-4));
+        // The two other readings of the garbled line are not dz/dt.
+        assert!(z / (f / n).ln() < 0.05 * dz_dt && close(z * (f / n).ln() / n, dz_dt / n, 1e-8));
+    }
+    let z = 20.0;
+    assert!((z * (f / n).ln() - 92.103).abs() < 1e-3);
+    assert!((z / (f / n).ln() - 4.343).abs() < 1e-3);
+    assert!((z * (f / n).ln() / n - 46.05).abs() < 1e-2);
 }

@@ -583,3 +583,45 @@ fn adaptive_planes_near_half_pi_are_exact() {
         assert!(close(got, *w, 1e-15), "plane {}: {got} vs {w}", i + 1);
     }
 }
+
+/// Eq 23's j (shadow maps) describes a scheme only for j = 4k, k z-partitions per face (the
+/// paper: "one z-partitioning for every four shadow maps"; its j leaves out the near face's map,
+/// which `shadow_map_count` counts: 4k + 1). At f/n = 10⁶, θ = 30°: Eq 18 gives 866 024.5 (k = 1)
+/// and 1730.32 (k = 2), Eq 23 with its constant j (f/n)^{4/j}/(8 tan θ) 866 025.4 (j = 4) and
+/// 1732.05 (j = 8); j = 6 gives 12 990.4, the value of 1.5 partitions per face, no scheme; and
+/// j = 9, the crate's map count for k = 2, gives 904.44, half of the scheme's 1730.32.
+#[test]
+fn errata_eq23_needs_j_a_multiple_of_4() {
+    let th = 30f64.to_radians();
+    let v = ViewFrustum::new(1.0, 1e6, th).unwrap();
+    let eq23 = |j: f64| j * 1e6f64.powf(4.0 / j) / (8.0 * th.tan());
+    for k in [1usize, 2, 3, 5] {
+        let j = 4 * k;
+        let exact = scheme_storage_factor(Scheme::FpZpW, SchemeLight::Overhead, &v, k).unwrap();
+        // Eq 18 with k = j/4, by hand, and its large-f/n form.
+        let eq18 = k as f64 * (1e6f64.powf(1.0 / k as f64) - 1.0) / (2.0 * th.tan());
+        assert!(close(exact, eq18, 1e-12));
+        assert!(close(
+            exact / eq23(j as f64),
+            1.0 - 1e6f64.powf(-4.0 / j as f64),
+            1e-12
+        ));
+        assert!(close(
+            fp_zp_w_overhead_asymptotic(&v, j).unwrap(),
+            eq23(j as f64),
+            1e-12
+        ));
+        assert_eq!(
+            shadow_map_count(Scheme::FpZpW, SchemeLight::Behind, k).unwrap(),
+            j + 1
+        );
+    }
+    let k1 = scheme_storage_factor(Scheme::FpZpW, SchemeLight::Overhead, &v, 1).unwrap();
+    let k2 = scheme_storage_factor(Scheme::FpZpW, SchemeLight::Overhead, &v, 2).unwrap();
+    assert!((k1 - 866_024.5).abs() < 0.05 && (k2 - 1730.32).abs() < 5e-3);
+    assert!((eq23(4.0) - 866_025.4).abs() < 0.05 && (eq23(8.0) - 1732.05).abs() < 5e-3);
+    // j = 6 lies between the k = 1 and k = 2 schemes, equal to neither.
+    assert!((eq23(6.0) - 12_990.4).abs() < 0.05 && eq23(6.0) < k1 && eq23(6.0) > k2);
+    // j = 4k + 1 (the near face counted) halves the k = 2 value.
+    assert!((eq23(9.0) - 904.44).abs() < 5e-3 && eq23(9.0) < 0.53 * k2);
+}

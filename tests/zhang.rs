@@ -591,9 +591,9 @@ fn theta_zero_is_finite() {
     let m = measured(&view, &twin(&view, 0.0, NPrime::Finite(3.0)), 0.0, 1.0, 7.0);
     let eq = zhang_eq(&view, NPrime::Finite(3.0), th, 1.0, 7.0).unwrap();
     assert!(rel(eq, 2.0 * m.mx) < 1e-12);
-    // By hand: tan φ_w / tan φ = f/λ, z_w = f tan φ − y + λ, E_q = 2 (f/λ) z_w / z = 568.90.
+    // By hand: tan φ_w / tan φ = f/λ, z_w = f tan φ − y + λ, E_q = 2 (f/λ) z_w / z = 568.91.
     let by_hand = 2.0 * (100.0 / 3.0) * (100.0 * FRAC_PI_6.tan() - 1.0 + 3.0) / 7.0;
-    assert!(rel(eq, by_hand) < 1e-12 && (eq - 568.90).abs() < 1e-2);
+    assert!(rel(eq, by_hand) < 1e-12 && (eq - 568.905).abs() < 1e-3);
 }
 
 #[test]
@@ -673,4 +673,48 @@ fn eq8_is_exact_on_the_axis_and_eq9_assumes_unit_slope() {
     )
     .unwrap();
     assert!(rel(off.e_q, eq8 * 0.7 / 0.85) < 1e-12 && (off.e_q - 2.995).abs() < 1e-3);
+}
+
+/// §3.1, "E_q increases as z decreases", checked at fixed y for ordinary λ. E_q = F_q (z + G)/z
+/// falls along z exactly where G(y) > 0, i.e. λ > n sin θ + (y − n tan φ) cos θ; over the whole
+/// frustum that needs λ ≥ n sin θ + (f − n) tan φ cos θ (29.44 at n = 1, f = 100, φ = 30°,
+/// θ = 60°), above LiSPSM's λ = 11 and Barroso's n′₁ = 9.238. Measured (twin, 2 m_x) at y = 40:
+/// λ = 11: E_q = 2.1356 at z = 69.282 (the top plane), 2.2602 at z = f; λ = 9.238: 2.1157, 2.2671.
+/// Overhead (θ = 90°) G = λ − n and the claim holds for every λ > n.
+#[test]
+fn section_3_1_e_q_grows_with_z_on_the_upper_part_for_ordinary_lambda() {
+    let (n, f, phi, theta) = (1.0, 100.0, FRAC_PI_6, 60f64.to_radians());
+    let view = ViewFrustum::new(n, f, phi).unwrap();
+    let bound = n * theta.sin() + (f - n) * phi.tan() * theta.cos();
+    assert!((bound - 29.44).abs() < 5e-3, "{bound}");
+    let y = 40.0;
+    let z_top = y / phi.tan();
+    for (lambda, at_top, at_far) in [(11.0, 2.1356, 2.2602), (9.238, 2.1157, 2.2671)] {
+        let w = twin(&view, theta, NPrime::Finite(lambda));
+        let e = |z: f64| 2.0 * measured(&view, &w, 0.0, y, z).mx;
+        assert!((e(z_top) - at_top).abs() < 1e-4, "{}", e(z_top));
+        assert!((e(f) - at_far).abs() < 1e-4, "{}", e(f));
+        let g = zhang_g(&view, lambda, LightAngle::new(theta).unwrap(), y).unwrap();
+        assert!(g < 0.0);
+        // E_q rises monotonically along z at this y.
+        let zs: Vec<f64> = (0..=10)
+            .map(|i| z_top + (f - z_top) * i as f64 / 10.0)
+            .collect();
+        assert!(zs.windows(2).all(|p| e(p[1]) > e(p[0])));
+        // On the axis (y = 0, threshold 0.577) the claim holds.
+        let e0 = |z: f64| measured(&view, &w, 0.0, 0.0, z).mx;
+        assert!(e0(n) > e0(10.0) && e0(10.0) > e0(f));
+    }
+    // λ above the bound: E_q falls along z at every y, the top plane included.
+    let w = twin(&view, theta, NPrime::Finite(30.0));
+    for y in [-40.0, 0.0, 40.0, 55.0] {
+        let e = |z: f64| 2.0 * measured(&view, &w, 0.0, y, z).mx;
+        let z0 = ((y / phi.tan()).abs() * (1.0 + 1e-9)).max(n);
+        assert!(e(z0) > e(f), "y {y}");
+    }
+    // Overhead, G = λ − n > 0 for λ > n at every y.
+    let up = LightAngle::new(FRAC_PI_2).unwrap();
+    for y in [-40.0, 0.0, 40.0] {
+        assert!(rel(zhang_g(&view, 11.0, up, y).unwrap(), 10.0) < 1e-12);
+    }
 }
