@@ -609,14 +609,39 @@ fn lispsm_and_ogre_names() {
     ]);
     assert!(close(num(&v["partitions"][0]["n_prime"]), 55.0, 1e-12));
     let (code, _, err) = run(&[
-        "warp", "--near", "1", "--far", "100", "--half-fov", "0.5", "--light-dir", "0,-1,0",
-        "--warp", "ogre", "--shadow-distance", "50",
+        "warp",
+        "--near",
+        "1",
+        "--far",
+        "100",
+        "--half-fov",
+        "0.5",
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "ogre",
+        "--shadow-distance",
+        "50",
     ]);
     assert_eq!(code, 1, "{err}");
-    assert!(err.contains("shadow_distance is only used by --warp ogre-ortho"), "{err}");
+    assert!(
+        err.contains("shadow_distance is only used by --warp ogre-ortho"),
+        "{err}"
+    );
     let (code, _, err) = run(&[
-        "warp", "--near", "1", "--far", "100", "--half-fov", "0.5", "--light-dir", "0,-1,0",
-        "--warp", "ogre-ortho", "--shadow-distance", "-2",
+        "warp",
+        "--near",
+        "1",
+        "--far",
+        "100",
+        "--half-fov",
+        "0.5",
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "ogre-ortho",
+        "--shadow-distance",
+        "-2",
     ]);
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("shadow_distance"), "{err}");

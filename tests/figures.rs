@@ -27,8 +27,10 @@ fn citation(name: &str) -> &'static str {
     }
 }
 
+/// A fresh directory per test and per process, so that two test runs at once (CI's two seeds on
+/// one machine, a developer's run beside it) never delete each other's figures.
 fn out_dir(sub: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(sub);
+    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("{sub}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&d);
     d
 }
