@@ -154,3 +154,41 @@ fn filament_switches_frames_at_cos_0_9997() {
     assert!((sbar(at(1.4030)) - 16664.963).abs() < 1e-2);
     assert!((sbar(at(1.40352)) - 15997.223).abs() < 1e-2);
 }
+
+/// Filament's hints are distances in front of the eye with the far one beyond the near one;
+/// anything else is refused by name (the command line's `--near-hint -1 --far-hint -0.5` was
+/// accepted and gave n′ = z₀/sin γ, its virtual far plane clamped to 0).
+#[test]
+fn filament_hints_must_be_ordered_distances() {
+    let view = view();
+    let l = DVec3::new(0.0, -0.6, -0.8);
+    for (near_hint, far_hint, name) in [
+        (-1.0, -0.5, "near_hint"),
+        (0.0, 10.0, "near_hint"),
+        (1.0, f64::NAN, "far_hint"),
+        (5.0, 5.0, "far_hint"),
+        (5.0, 2.0, "far_hint"),
+    ] {
+        let r = n_prime_for(
+            &view,
+            l,
+            WarpRule::FilamentHints {
+                near_hint,
+                far_hint,
+            },
+        );
+        assert!(
+            matches!(&r, Err(Error::InvalidArgument { name: got, .. }) if *got == name),
+            "({near_hint}, {far_hint}): {r:?}"
+        );
+    }
+    // The defaults as explicit hints are `Filament`.
+    let hints = WarpRule::FilamentHints {
+        near_hint: 1.0,
+        far_hint: 100.0,
+    };
+    assert_eq!(
+        n_prime_for(&view, l, hints).unwrap(),
+        n_prime_for(&view, l, WarpRule::Filament).unwrap()
+    );
+}

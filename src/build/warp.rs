@@ -760,8 +760,22 @@ fn filament_n_prime(
     near_hint: f64,
     far_hint: f64,
 ) -> Result<NPrime> {
-    let near_hint = crate::error::finite("near_hint", near_hint)?;
-    let far_hint = crate::error::finite("far_hint", far_hint)?;
+    // Filament's hints are distances from the eye (`ShadowOptions`: 1 m and 100 m by default);
+    // its code does not check them, but a hint at or behind the eye, or a far hint not beyond
+    // the near hint, describes no virtual near and far planes (vz₁ would clamp to 0 and n′ to
+    // z₀/sin γ silently).
+    let near_hint = crate::error::positive("near_hint", near_hint)?;
+    let far_hint = crate::error::positive("far_hint", far_hint)?;
+    if far_hint <= near_hint {
+        return Err(Error::invalid(
+            "far_hint",
+            format!(
+                "must be greater than near_hint (got near_hint={}, far_hint={})",
+                fmt_num(near_hint),
+                fmt_num(far_hint)
+            ),
+        ));
+    }
     let (zn, zf) = (view.near(), view.far());
     let sin_lv = fl.sin_gamma;
     let dzn = (near_hint - zn).max(0.0);
