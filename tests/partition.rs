@@ -624,4 +624,13 @@ fn errata_eq23_needs_j_a_multiple_of_4() {
     assert!((eq23(6.0) - 12_990.4).abs() < 0.05 && eq23(6.0) < k1 && eq23(6.0) > k2);
     // j = 4k + 1 (the near face counted) halves the k = 2 value.
     assert!((eq23(9.0) - 904.44).abs() < 5e-3 && eq23(9.0) < 0.53 * k2);
+    // The crate refuses both: they describe no scheme.
+    for j in [0, 6, 9, 13] {
+        match fp_zp_w_overhead_asymptotic(&v, j) {
+            Err(shadow_aliasing::Error::InvalidArgument { name, .. }) => {
+                assert_eq!(name, "shadow_maps")
+            }
+            other => panic!("j = {j}: {other:?}"),
+        }
+    }
 }

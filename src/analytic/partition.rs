@@ -653,15 +653,24 @@ pub fn zp_overhead_asymptotic(view: &ViewFrustum, shadow_maps: usize) -> Result<
 /// S̄_FP+ZP+W,overhead ≈ j (f/n)^{4/j} / (8 tan θ)      (printed: j (f/n)^{4/j})
 /// ```
 ///
-/// It is Eq 18 with k = j/4 for large f/n.
+/// It is Eq 18 with k = j/4 for large f/n. The scheme has "one z-partitioning for every four
+/// shadow maps", so j counts the four side faces' maps of k z-partitions, j = 4k (the near
+/// face's map, which [`shadow_map_count`] adds with the light behind, is not among them); any
+/// other j describes no scheme (docs/errata.md, Lloyd 2006 #19).
 ///
 /// Dimensionless.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `shadow_maps` (≥ 1).
+/// [`Error::InvalidArgument`] naming `shadow_maps` (a positive multiple of 4).
 pub fn fp_zp_w_overhead_asymptotic(view: &ViewFrustum, shadow_maps: usize) -> Result<f64> {
-    if shadow_maps == 0 {
-        return Err(Error::invalid("shadow_maps", "must be at least 1 (got 0)"));
+    if shadow_maps == 0 || shadow_maps % 4 != 0 {
+        return Err(Error::invalid(
+            "shadow_maps",
+            format!(
+                "must be a positive multiple of 4: Eq 23 counts four face maps per \
+                 z-partition (got {shadow_maps})"
+            ),
+        ));
     }
     let j = shadow_maps as f64;
     finite_result(
