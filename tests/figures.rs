@@ -585,3 +585,19 @@ fn the_png_decoder_reads_a_hand_made_image() {
     // The CRC of "IEND" is the well-known AE 42 60 82.
     assert_eq!(crc32(b"IEND"), 0xAE42_6082);
 }
+
+/// A file that cannot be written is `PlotError::Io` naming that file (a directory stands where
+/// the PNG should go), not a backend's debug dump; the SVG beside it is still written.
+#[test]
+fn an_unwritable_file_is_io_with_its_path() {
+    let dir = out_dir("figures-unwritable");
+    let blocked = dir.join("lloyd2006-fig5.png");
+    std::fs::create_dir_all(&blocked).unwrap();
+    match render("lloyd2006-fig5", &dir, Format::Png) {
+        Err(PlotError::Io { path, .. }) => assert_eq!(path, blocked),
+        other => panic!("{other:?}"),
+    }
+    let files = render("lloyd2006-fig5", &dir, Format::Svg).unwrap();
+    assert_eq!(files, vec![dir.join("lloyd2006-fig5.svg")]);
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -39,6 +39,7 @@ mod lloyd2006;
 mod martin_tan;
 mod zhang;
 
+use image::ImageEncoder;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::fmt;
@@ -208,24 +209,42 @@ fn emit<F: Figure>(
     out_dir: &Path,
     format: Format,
 ) -> Result<Vec<PathBuf>, PlotError> {
+    // Each figure is drawn into memory and written with `std::fs`, so that a file that cannot be
+    // created or written is reported with its path and the operating system's error (plotters'
+    // own file backends report it as a debug dump without the path), and nothing is written
+    // for a figure whose drawing fails.
     let mut written = Vec::new();
     for ext in format.extensions() {
         let path = out_dir.join(format!("{name}.{ext}"));
-        if *ext == "png" {
-            let root = BitMapBackend::new(&path, fig.size()).into_drawing_area();
-            fig.draw(&root).map_err(|e| e.named(name))?;
-            root.present().map_err(|e| Fail::from(e).named(name))?;
+        let (w, h) = fig.size();
+        let bytes = if *ext == "png" {
+            let mut rgb = vec![0u8; w as usize * h as usize * 3];
+            {
+                let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+                fig.draw(&root).map_err(|e| e.named(name))?;
+                root.present().map_err(|e| Fail::from(e).named(name))?;
+            }
+            let mut png = Vec::new();
+            image::codecs::png::PngEncoder::new(&mut png)
+                .write_image(&rgb, w, h, image::ColorType::Rgb8)
+                .map_err(|e| PlotError::Io {
+                    path: path.clone(),
+                    source: std::io::Error::other(e),
+                })?;
+            png
         } else {
-            let root = SVGBackend::new(&path, fig.size()).into_drawing_area();
-            fig.draw(&root).map_err(|e| e.named(name))?;
-            root.present().map_err(|e| Fail::from(e).named(name))?;
-        }
-        if !path.is_file() {
-            return Err(PlotError::Io {
-                path,
-                source: std::io::Error::other("the backend wrote no file"),
-            });
-        }
+            let mut svg = String::new();
+            {
+                let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
+                fig.draw(&root).map_err(|e| e.named(name))?;
+                root.present().map_err(|e| Fail::from(e).named(name))?;
+            }
+            svg.into_bytes()
+        };
+        std::fs::write(&path, bytes).map_err(|source| PlotError::Io {
+            path: path.clone(),
+            source,
+        })?;
         written.push(path);
     }
     Ok(written)

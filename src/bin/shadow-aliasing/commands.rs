@@ -251,12 +251,6 @@ fn figures(a: &FiguresArgs) -> ExitCode {
         if let Some(b) = &bar {
             b.set_message(*name);
         }
-        // plotters reports a file it cannot create as a debug dump without the path; opening
-        // each file first reports the path and the operating system's error instead.
-        if let Err(e) = writable(&a.out, name, format) {
-            result = Err(e);
-            break;
-        }
         match plot::render(name, &a.out, format).map_err(|e| e.to_string()) {
             Ok(files) => {
                 if let Ok(all) = &mut result {
@@ -286,28 +280,6 @@ fn figures(a: &FiguresArgs) -> ExitCode {
         )),
         Err(e) => fail(e),
     }
-}
-
-/// Creates `dir` and opens (creating, not truncating) each file `figures` is about to write
-/// there: "cannot write PATH: OS error" for the first that cannot be.
-fn writable(
-    dir: &std::path::Path,
-    name: &str,
-    format: shadow_aliasing::plot::Format,
-) -> Result<(), String> {
-    let cannot =
-        |p: &std::path::Path, e: std::io::Error| format!("cannot write {}: {e}", p.display());
-    std::fs::create_dir_all(dir).map_err(|e| cannot(dir, e))?;
-    for ext in format.extensions() {
-        let path = dir.join(format!("{name}.{ext}"));
-        std::fs::OpenOptions::new()
-            .write(true)
-            .create(true)
-            .truncate(false)
-            .open(&path)
-            .map_err(|e| cannot(&path, e))?;
-    }
-    Ok(())
 }
 
 fn sweep(a: &SweepArgs) -> ExitCode {
