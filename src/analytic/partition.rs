@@ -663,7 +663,7 @@ pub fn zp_overhead_asymptotic(view: &ViewFrustum, shadow_maps: usize) -> Result<
 /// # Errors
 /// [`Error::InvalidArgument`] naming `shadow_maps` (a positive multiple of 4).
 pub fn fp_zp_w_overhead_asymptotic(view: &ViewFrustum, shadow_maps: usize) -> Result<f64> {
-    if shadow_maps == 0 || shadow_maps % 4 != 0 {
+    if shadow_maps == 0 || !shadow_maps.is_multiple_of(4) {
         return Err(Error::invalid(
             "shadow_maps",
             format!(
