@@ -452,7 +452,8 @@ fn faces_with_axis(view: &ViewFrustum, l: DVec3, unit: bool) -> Option<f64> {
 /// sum is then not the bisector: at f/n = 100, θ = 30°, light at elevation 15°, azimuth 165°
 /// the sum gives Σ S̄ = 2359.6 and the unit-vector bisector 287.05; at elevation 3°, azimuth 25°
 /// the sum leaves a vertex of a face behind the projected eye and no warp fits at all. The crate's
-/// `face_partitions` uses ê′₀ + ê′₁ and is the unit-vector value.
+/// `face_partitions` keeps, per face part, the better of ê′₀ + ê′₁ and the face's depth axis
+/// (`face_depth_axis`), so it is never above the unit-vector value (185.73 here).
 #[test]
 fn errata_s5_1_bisector_of_unit_vectors() {
     use shadow_aliasing::measure::sweep::light_dir_from_angles;
@@ -463,7 +464,8 @@ fn errata_s5_1_bisector_of_unit_vectors() {
     let built = face_partitions(&view, l, FaceWarp::Lispsm, 1)
         .unwrap()
         .storage_factor();
-    assert!((unit - built).abs() < 1e-9 * built);
+    assert!(built <= unit * (1.0 + 1e-12), "{built} vs {unit}");
+    assert!((built - 185.73).abs() < 1e-2, "{built}");
     assert!((unit - 287.05).abs() < 1e-2, "{unit}");
     assert!((raw - 2359.6).abs() < 0.1, "{raw}");
     let l = light_dir_from_angles(3f64.to_radians(), 25f64.to_radians());

@@ -92,7 +92,7 @@ use crate::build::{fit_warp, light_space, ShadowMatrix};
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{unit_light_dir, NPrime, ViewFrustum};
 use crate::measure::sweep::{vertex_max, VertexMax};
-use glam::DVec3;
+use glam::{DMat4, DVec3};
 
 /// Faces with `|N·L|` at most this (unit vectors: the sine of the angle between the face's plane
 /// and the light) are treated as edge-on and skipped (see the module docs). 10⁻⁶: the prism of
@@ -257,17 +257,41 @@ impl VisibleFaces {
 pub fn visible_faces(view: &ViewFrustum, light_dir: DVec3) -> Result<VisibleFaces> {
     let l = unit_light_dir(light_dir)?;
     let t = view.tan_half_fov();
-    Ok(visible_with(t, t * view.aspect(), l))
+    Ok(visible_with(
+        t,
+        t * view.aspect(),
+        view.near() / view.far(),
+        l,
+    ))
 }
 
-fn visible_with(t: f64, ta: f64, l: DVec3) -> VisibleFaces {
+fn visible_with(t: f64, ta: f64, near_over_far: f64, l: DVec3) -> VisibleFaces {
     // v·y = (−Z)·(−L) = L.z; front faces when it is negative.
     let front = l.z < 0.0;
     let sign = if front { -1.0 } else { 1.0 };
+    // Signed areas of the faces projected along the light, over f² (positive when the outward
+    // normal is along L): a side face between its edges cᵢ, cᵢ₊₁ at unit depth is the trapezoid
+    // ½ (f² − n²)(cᵢ × cᵢ₊₁), the near face 4 n² t ta Z, the far face −4 f² t ta Z.
+    let q = near_over_far * near_over_far;
+    let side = |face: Face| {
+        face.edges_with(t, ta)
+            .map_or(0.0, |[e0, e1]| 0.5 * (1.0 - q) * e0.cross(e1).dot(l))
+    };
+    let near = 4.0 * q * t * ta * l.z;
+    let area = |face: Face| match face {
+        Face::Near => near,
+        Face::Far => -4.0 * t * ta * l.z,
+        _ => side(face),
+    };
+    // The silhouette's area: half the summed |areas| of the six faces (each light ray enters
+    // once and leaves once).
+    let silhouette = 0.5 * Face::ALL.iter().map(|&f| area(f).abs()).sum::<f64>();
     let mut faces = [Face::Near; 5];
     let mut len = 0;
     for face in [Face::Bottom, Face::Right, Face::Top, Face::Left, Face::Near] {
-        if sign * face.normal_with(t, ta).dot(l) > EDGE_ON {
+        let facing = sign * face.normal_with(t, ta).dot(l);
+        let edge_on = facing <= EDGE_ON && sign * area(face) <= EDGE_ON * silhouette;
+        if facing > 0.0 && !edge_on {
             faces[len] = face;
             len += 1;
         }
@@ -303,6 +327,35 @@ fn axis_with(face: Face, t: f64, ta: f64, l: DVec3) -> Result<DVec3> {
             Ok(p0 / l0 + p1 / l1)
         }
     }
+}
+
+/// The depth axis of a side face: the direction, perpendicular to the light, along which the eye
+/// depth of the face's points grows — perpendicular to the projection of the face's near edge
+/// (a line of constant depth), pointing away from the projected eye. `None` for the near and far
+/// faces, and when the light is within [`EDGE_ON`] of parallel to the near edge (the edge's
+/// projection, and with it the axis, vanishes).
+///
+/// Along this axis every point of the face at depth z has the coordinate `z h`, with h the
+/// distance of the projected eye from the projected near edge, so the face's projection is an
+/// overhead frustum's footprint (sheared when the light tilts sideways) of depths `[n h, f h]`.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `light_dir`.
+pub fn face_depth_axis(view: &ViewFrustum, face: Face, light_dir: DVec3) -> Result<Option<DVec3>> {
+    let l = unit_light_dir(light_dir)?;
+    let t = view.tan_half_fov();
+    Ok(depth_axis_with(face, t, t * view.aspect(), l))
+}
+
+fn depth_axis_with(face: Face, t: f64, ta: f64, l: DVec3) -> Option<DVec3> {
+    let [e0, e1] = face.edges_with(t, ta)?;
+    let e = e1 - e0;
+    // L × E is perpendicular to the light and to the projected edge E − (E·L) L.
+    let m = l.cross(e);
+    if !(m.length() > EDGE_ON * e.length()) {
+        return None;
+    }
+    Some(if m.dot(e0) < 0.0 { -m } else { m })
 }
 
 /// How each face partition's n′ is chosen (see the module docs): the overhead rules with the
@@ -422,7 +475,7 @@ pub(crate) fn visit_face_partitions(
     crate::build::cascades::splits_within(view, splits)?;
     let tan = view.tan_half_fov();
     let ta = tan * view.aspect();
-    let faces = visible_with(tan, ta, l);
+    let faces = visible_with(tan, ta, view.near() / view.far(), l);
     // The frustum's extent along the light (toward-the-light coordinate y = −L·p).
     let (mut y_lo, mut y_hi) = (f64::INFINITY, f64::NEG_INFINITY);
     for c in Face::Near
@@ -434,10 +487,31 @@ pub(crate) fn visit_face_partitions(
         y_lo = y_lo.min(y);
         y_hi = y_hi.max(y);
     }
+    if faces.len == 0 {
+        // The chosen faces tile the silhouette, so one of them holds at least a fifth of its area
+        // and is never skipped; an empty choice means the light direction or the frustum is not
+        // representable (it is refused rather than reported as zero maps).
+        return Err(Error::Degenerate(format!(
+            "no face of the view frustum is seen by the light {l}"
+        )));
+    }
     for &face in faces.faces() {
-        let axis = axis_with(face, tan, ta, l)?;
-        let ls = light_space(l, axis)?;
         let is_side = !matches!(face, Face::Near | Face::Far);
+        // The candidate warp axes: Lloyd's bisector, and for a side face its depth axis. A
+        // candidate that cannot be built (a side edge along the light, the light along the near
+        // edge) is dropped; its error is reported only when no candidate is left.
+        let mut first_err = None;
+        let mut spaces = [None; 2];
+        match axis_with(face, tan, ta, l).and_then(|a| light_space(l, a)) {
+            Ok(ls) => spaces[0] = Some(ls),
+            Err(e) => first_err = Some(e),
+        }
+        if is_side {
+            if let Some(ls) = depth_axis_with(face, tan, ta, l).and_then(|a| light_space(l, a).ok())
+            {
+                spaces[1] = Some(ls);
+            }
+        }
         let count = if is_side { splits.k() } else { 1 };
         for j in 0..count {
             let (a, b) = if is_side {
@@ -446,37 +520,24 @@ pub(crate) fn visit_face_partitions(
                 (view.near(), view.near())
             };
             let vertices = face.vertices_with(view, tan, ta, a, b);
-            let (mut d_n, mut d_f) = (f64::INFINITY, f64::NEG_INFINITY);
-            let mut swept = [DVec3::ZERO; 12];
-            for (i, v) in vertices.iter().enumerate() {
-                let d = ls.z.dot(*v);
-                d_n = d_n.min(d);
-                d_f = d_f.max(d);
-                let y = ls.y.dot(*v);
-                swept[3 * i] = *v;
-                swept[3 * i + 1] = *v + (y_lo - y) * ls.y;
-                swept[3 * i + 2] = *v + (y_hi - y) * ls.y;
-            }
-            let n_prime = if !is_side {
-                NPrime::Unwarped
-            } else {
-                match rule {
-                    FaceWarp::Uniform => NPrime::Unwarped,
-                    FaceWarp::Psm => NPrime::Finite(d_n),
-                    FaceWarp::Lispsm => NPrime::Finite(d_n + (d_n * d_f).sqrt()),
+            let mut best: Option<(DMat4, NPrime, VertexMax)> = None;
+            let mut err = first_err.clone();
+            for ls in spaces.iter().flatten() {
+                match fit_part(ls, &vertices, face, (a, b), rule, (y_lo, y_hi), l, tan) {
+                    Ok(c) => {
+                        if best.is_none_or(|b| c.2.storage_factor() < b.2.storage_factor()) {
+                            best = Some(c);
+                        }
+                    }
+                    Err(e) => {
+                        err.get_or_insert(e);
+                    }
                 }
-            };
-            let n_prime = match n_prime {
-                NPrime::Finite(v) if !(v.is_finite() && v > 0.0) => NPrime::Unwarped,
-                other => other,
-            };
-            let matrix = fit_warp(&swept, &ls, n_prime)?;
-            let error = vertex_max(&matrix, l, tan, &vertices).ok_or_else(|| {
-                Error::Degenerate(format!(
-                    "the map of the {face:?} face over depths [{}, {}] is singular at a vertex",
-                    fmt_num(a),
-                    fmt_num(b)
-                ))
+            }
+            let (matrix, n_prime, error) = best.ok_or_else(|| {
+                err.unwrap_or_else(|| {
+                    Error::Degenerate(format!("no warp axis for the {face:?} face"))
+                })
             })?;
             visit(&FacePartition {
                 face,
@@ -493,4 +554,56 @@ pub(crate) fn visit_face_partitions(
         }
     }
     Ok(faces)
+}
+
+#[cold]
+#[inline(never)]
+fn singular(face: Face, a: f64, b: f64) -> Error {
+    Error::Degenerate(format!(
+        "the map of the {face:?} face over depths [{}, {}] is singular at a vertex",
+        fmt_num(a),
+        fmt_num(b)
+    ))
+}
+
+/// One face part's map in the light space `ls`: the face rule's n′ from the part's extent
+/// `[d_n, d_f]` along `ls.z`, the warp fitted to the part's vertices swept along the light over
+/// the frustum's extent `y_range`, and its error at the vertices.
+fn fit_part(
+    ls: &crate::build::LightSpace,
+    vertices: &[DVec3; 4],
+    face: Face,
+    (a, b): (f64, f64),
+    rule: FaceWarp,
+    (y_lo, y_hi): (f64, f64),
+    l: DVec3,
+    tan: f64,
+) -> Result<(DMat4, NPrime, VertexMax)> {
+    let (mut d_n, mut d_f) = (f64::INFINITY, f64::NEG_INFINITY);
+    let mut swept = [DVec3::ZERO; 12];
+    for (i, v) in vertices.iter().enumerate() {
+        let d = ls.z.dot(*v);
+        d_n = d_n.min(d);
+        d_f = d_f.max(d);
+        let y = ls.y.dot(*v);
+        swept[3 * i] = *v;
+        swept[3 * i + 1] = *v + (y_lo - y) * ls.y;
+        swept[3 * i + 2] = *v + (y_hi - y) * ls.y;
+    }
+    let n_prime = if matches!(face, Face::Near | Face::Far) {
+        NPrime::Unwarped
+    } else {
+        match rule {
+            FaceWarp::Uniform => NPrime::Unwarped,
+            FaceWarp::Psm => NPrime::Finite(d_n),
+            FaceWarp::Lispsm => NPrime::Finite(d_n + (d_n * d_f).sqrt()),
+        }
+    };
+    let n_prime = match n_prime {
+        NPrime::Finite(v) if !(v.is_finite() && v > 0.0) => NPrime::Unwarped,
+        other => other,
+    };
+    let matrix = fit_warp(&swept, ls, n_prime)?;
+    let error = vertex_max(&matrix, l, tan, vertices).ok_or_else(|| singular(face, a, b))?;
+    Ok((matrix, n_prime, error))
 }
