@@ -44,7 +44,11 @@ fn camera() -> impl Strategy<Value = ViewFrustum> {
     (
         -3.0f64..1.0,
         (1.01f64).ln()..(1e6f64).ln(),
-        1f64.to_radians()..80f64.to_radians(),
+        prop_oneof![
+            4 => 1f64.to_radians()..80f64.to_radians(),
+            // Half fields of view near π/2: a slab far wider than deep.
+            1 => (2.0f64..9.0).prop_map(|u| std::f64::consts::FRAC_PI_2 - 10f64.powf(-u)),
+        ],
         0.5f64..2.0,
     )
         .prop_map(|(ln, lr, th, a)| {
@@ -87,6 +91,12 @@ proptest! {
             Ok(p) => p,
             // Thin frusta cannot hold k distinct self-similar planes: a typed error.
             Err(shadow_aliasing::Error::Degenerate(m)) if m.contains("coincide") => return Ok(()),
+            // Near π/2 a face seen at a grazing angle is a sliver thinner than fit_warp's 10⁻¹²
+            // of the swept points' extent: refused with a typed error, never an empty success.
+            Err(shadow_aliasing::Error::Degenerate(m)) if view.half_fov() > 1.5 => {
+                eprintln!("refused: {m}");
+                return Ok(());
+            }
             Err(e) => panic!("{e}"),
         };
         prop_assert!(!parts.is_empty());
