@@ -756,6 +756,13 @@ fn no_jump_at_a_side_edge() {
         }
         // Off the edge on the light's side of either face plane, one or both faces are seen.
         assert!(seen >= 12, "{seen}");
+        // The direction, 0.005° below the edge: 404.4 (k = 4) and 491.6 (k = 8) before.
+        use shadow_aliasing::measure::sweep::light_dir_from_angles;
+        let l = light_dir_from_angles(26.56f64.to_radians(), 150f64.to_radians());
+        let s = face_partitions(&view, l, FaceWarp::Lispsm, k)
+            .unwrap()
+            .storage_factor();
+        assert!((s - s0).abs() <= 1e-3 * s0, "k {k}: {s} vs {s0}");
     }
 }
 
