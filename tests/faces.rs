@@ -44,7 +44,11 @@ fn camera() -> impl Strategy<Value = ViewFrustum> {
     (
         -3.0f64..1.0,
         (1.01f64).ln()..(1e6f64).ln(),
-        1f64.to_radians()..80f64.to_radians(),
+        prop_oneof![
+            4 => 1f64.to_radians()..80f64.to_radians(),
+            // Half fields of view near π/2: a slab far wider than deep.
+            1 => (2.0f64..9.0).prop_map(|u| std::f64::consts::FRAC_PI_2 - 10f64.powf(-u)),
+        ],
         0.5f64..2.0,
     )
         .prop_map(|(ln, lr, th, a)| {
@@ -87,6 +91,12 @@ proptest! {
             Ok(p) => p,
             // Thin frusta cannot hold k distinct self-similar planes: a typed error.
             Err(shadow_aliasing::Error::Degenerate(m)) if m.contains("coincide") => return Ok(()),
+            // Near π/2 a face seen at a grazing angle is a sliver thinner than fit_warp's 10⁻¹²
+            // of the swept points' extent: refused with a typed error, never an empty success.
+            Err(shadow_aliasing::Error::Degenerate(m)) if view.half_fov() > 1.5 => {
+                eprintln!("refused: {m}");
+                return Ok(());
+            }
             Err(e) => panic!("{e}"),
         };
         prop_assert!(!parts.is_empty());
@@ -452,7 +462,8 @@ fn faces_with_axis(view: &ViewFrustum, l: DVec3, unit: bool) -> Option<f64> {
 /// sum is then not the bisector: at f/n = 100, θ = 30°, light at elevation 15°, azimuth 165°
 /// the sum gives Σ S̄ = 2359.6 and the unit-vector bisector 287.05; at elevation 3°, azimuth 25°
 /// the sum leaves a vertex of a face behind the projected eye and no warp fits at all. The crate's
-/// `face_partitions` uses ê′₀ + ê′₁ and is the unit-vector value.
+/// `face_partitions` keeps, per face part, the better of ê′₀ + ê′₁ and the face's depth axis
+/// (`face_depth_axis`), so it is never above the unit-vector value (185.73 here).
 #[test]
 fn errata_s5_1_bisector_of_unit_vectors() {
     use shadow_aliasing::measure::sweep::light_dir_from_angles;
@@ -463,7 +474,8 @@ fn errata_s5_1_bisector_of_unit_vectors() {
     let built = face_partitions(&view, l, FaceWarp::Lispsm, 1)
         .unwrap()
         .storage_factor();
-    assert!((unit - built).abs() < 1e-9 * built);
+    assert!(built <= unit * (1.0 + 1e-12), "{built} vs {unit}");
+    assert!((built - 185.73).abs() < 1e-2, "{built}");
     assert!((unit - 287.05).abs() < 1e-2, "{unit}");
     assert!((raw - 2359.6).abs() < 0.1, "{raw}");
     let l = light_dir_from_angles(3f64.to_radians(), 25f64.to_radians());
@@ -571,5 +583,281 @@ fn storage_is_continuous_through_the_face_switch() {
         let left = s(DVec3::new(-e, -1.0, -0.3));
         let right = s(DVec3::new(e, -1.0, -0.3));
         assert!((left - right).abs() < 1e-9 * left);
+    }
+}
+
+/// Σ S̄ of FP+ZP+W (LiSPSM per face part, k self-similar z-partitions per side face) for the light
+/// at sweep angles `(el, az)` (radians, `measure::sweep` convention: D = (cos el sin az, sin el,
+/// cos el cos az) towards the source, light travelling −D); el is clamped to the hemisphere.
+fn fp_storage(view: &ViewFrustum, k: usize, el: f64, az: f64) -> f64 {
+    use shadow_aliasing::measure::sweep::light_dir_from_angles;
+    let el = el.clamp(0.0, std::f64::consts::FRAC_PI_2);
+    face_partitions(view, light_dir_from_angles(el, az), FaceWarp::Lispsm, k)
+        .unwrap_or_else(|e| panic!("el {el}, az {az}: {e}"))
+        .storage_factor()
+}
+
+/// Nelder–Mead maximisation of `f` over (el, az) from `x0` with an initial simplex of edge `h`:
+/// the largest value seen and where.
+fn nelder_mead_max(
+    f: &dyn Fn(f64, f64) -> f64,
+    x0: [f64; 2],
+    h: f64,
+    iters: usize,
+) -> (f64, [f64; 2]) {
+    let g = |p: [f64; 2]| -f(p[0], p[1]);
+    let mut p = [x0, [x0[0] + h, x0[1]], [x0[0], x0[1] + h]];
+    let mut v = p.map(g);
+    for _ in 0..iters {
+        let mut idx = [0, 1, 2];
+        idx.sort_by(|&a, &b| v[a].total_cmp(&v[b]));
+        let [b, m, w] = idx;
+        let c = [(p[b][0] + p[m][0]) / 2.0, (p[b][1] + p[m][1]) / 2.0];
+        let at = |t: f64| [c[0] + t * (p[w][0] - c[0]), c[1] + t * (p[w][1] - c[1])];
+        let r = at(-1.0);
+        let vr = g(r);
+        if vr < v[b] {
+            let e = at(-2.0);
+            let ve = g(e);
+            (p[w], v[w]) = if ve < vr { (e, ve) } else { (r, vr) };
+        } else if vr < v[m] {
+            (p[w], v[w]) = (r, vr);
+        } else {
+            let cc = at(0.5);
+            let vc = g(cc);
+            if vc < v[w] {
+                (p[w], v[w]) = (cc, vc);
+            } else {
+                for i in [m, w] {
+                    p[i] = [(p[i][0] + p[b][0]) / 2.0, (p[i][1] + p[b][1]) / 2.0];
+                    v[i] = g(p[i]);
+                }
+            }
+        }
+    }
+    let i = (0..3).min_by(|&a, &b| v[a].total_cmp(&v[b])).unwrap();
+    (
+        -v[i],
+        [p[i][0].clamp(0.0, std::f64::consts::FRAC_PI_2), p[i][1]],
+    )
+}
+
+/// The worst Σ S̄ of FP+ZP+W over the hemisphere: a grid of `step_deg` in elevation (both ends)
+/// and azimuth, then Nelder–Mead from the `starts` largest grid values (and from their
+/// neighbourhood, the simplex spanning half a grid step). Returns (S̄, el, az).
+fn worst_case(view: &ViewFrustum, k: usize, step_deg: f64, starts: usize) -> (f64, f64, f64) {
+    let f = |el: f64, az: f64| fp_storage(view, k, el, az);
+    let (ne, na) = (
+        (90.0 / step_deg).round() as usize,
+        (360.0 / step_deg).round() as usize,
+    );
+    let mut grid = Vec::with_capacity((ne + 1) * na);
+    for i in 0..=ne {
+        for j in 0..na {
+            let (el, az) = (
+                (i as f64 * step_deg).to_radians(),
+                (j as f64 * step_deg).to_radians(),
+            );
+            grid.push((f(el, az), el, az));
+        }
+    }
+    grid.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let mut best = grid[0];
+    for &(_, el, az) in grid.iter().take(starts) {
+        let (v, [e, a]) = nelder_mead_max(&f, [el, az], (0.5 * step_deg).to_radians(), 120);
+        if v > best.0 {
+            best = (v, e, a);
+        }
+    }
+    best
+}
+
+/// The light-behind value of FP+ZP+W (module docs of `build::faces`, Eq 21 for any θ):
+/// 4 k((f/n)^{1/k} − 1)/2 + 1.
+fn behind_closed_form(alpha: f64, k: usize) -> f64 {
+    2.0 * k as f64 * (alpha.powf(1.0 / k as f64) - 1.0) + 1.0
+}
+
+/// Lloyd 2006 §5.3: "the worst case S̄ was within a factor of 2–3" of the light-behind value. With
+/// Lloyd's bisector alone a face seen nearly edge-on next to a side edge along the light (source
+/// at elevation 26.565°, azimuth 150°, f/n = 1000, θ = 30°) had its vertices on the near-parallel
+/// edge collapse onto the projected eye: d_n → 0, n′ → 0, and Σ S̄ reached 750 (k = 4, 19.7×),
+/// 6241 (k = 8, 272×) in a sliver a 1° grid misses. With the face's depth axis among the
+/// candidates the worst case over the hemisphere, found by Nelder–Mead from a 5° grid, is the
+/// light-behind (or in-front) value itself for every k = 1..8.
+#[test]
+fn worst_case_within_3x_of_behind() {
+    let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
+    for k in 1..=8 {
+        let behind = fp_storage(&view, k, 0.0, 0.0);
+        let expect = behind_closed_form(1000.0, k);
+        assert!((behind - expect).abs() < 1e-9 * expect, "k = {k}: {behind}");
+        let (worst, el, az) = worst_case(&view, k, 5.0, 4);
+        let ratio = worst / behind;
+        assert!(
+            ratio <= 3.0,
+            "k = {k}: S̄ = {worst} at el {}°, az {}°: {ratio} × behind",
+            el.to_degrees(),
+            az.to_degrees()
+        );
+        assert!(ratio >= 1.0);
+    }
+}
+
+/// A light approaching a side edge of the frustum (here the +x+y edge, shared by the right and
+/// top faces, from the far end: f/n = 1000, θ = 30°, the elevation 26.565°, azimuth
+/// 150°). The two faces turn edge-on and their prisms vanish, so Σ S̄ must tend to its value with
+/// the light on the edge, where both are skipped; each of them seen at an angle δ off the edge has
+/// its depth axis coordinate z h with h ∝ δ (the projected eye's distance from the projected near
+/// edge), which scales its maps' t range by δ: m_z ∝ δ, m_x unchanged, so its S̄ ∝ δ.
+/// With Lloyd's bisector alone the vertices on the edge collapse onto the projected eye instead,
+/// d_n → 0, and Σ S̄ grew as δ^(−1/2) until `EDGE_ON` cut it off: k = 4, 117 at δ = 10⁻², 1761 at
+/// δ = 10⁻⁵, 38.6 on the edge.
+#[test]
+fn no_jump_at_a_side_edge() {
+    let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
+    let t = view.tan_half_fov();
+    let edge = DVec3::new(t, t, -1.0).normalize();
+    for k in [1, 4, 8] {
+        let on_edge = face_partitions(&view, -edge, FaceWarp::Lispsm, k).unwrap();
+        assert_eq!(
+            on_edge.faces.faces(),
+            &[Face::Bottom, Face::Left, Face::Near]
+        );
+        let s0 = on_edge.storage_factor();
+        let mut seen = 0;
+        for deg in (0..360).step_by(15) {
+            let a = f64::from(deg).to_radians();
+            let u = DVec3::new(a.cos(), a.sin(), 0.0);
+            let u = (u - u.dot(edge) * edge).normalize();
+            let thin = |d: f64| {
+                let p = face_partitions(&view, -(edge + d * u).normalize(), FaceWarp::Lispsm, k)
+                    .unwrap();
+                let edge_on: f64 = p
+                    .iter()
+                    .filter(|q| matches!(q.face, Face::Right | Face::Top))
+                    .map(|q| q.storage_factor())
+                    .sum();
+                (p.storage_factor(), edge_on)
+            };
+            for d in [1e-2, 1e-3, 1e-4, 1e-5] {
+                let (s, _) = thin(d);
+                assert!(
+                    (s - s0).abs() <= 5.0 * d * s0,
+                    "k {k}, {deg}°, δ {d}: {s} vs {s0}"
+                );
+            }
+            let (_, e3) = thin(1e-3);
+            let (_, e4) = thin(1e-4);
+            if e3 > 0.0 {
+                assert!((e3 / e4 - 10.0).abs() < 0.1, "k {k}, {deg}°: {e3} / {e4}");
+                seen += 1;
+            }
+        }
+        // Off the edge on the light's side of either face plane, one or both faces are seen.
+        assert!(seen >= 12, "{seen}");
+        // The direction, 0.005° below the edge: 404.4 (k = 4) and 491.6 (k = 8) before.
+        use shadow_aliasing::measure::sweep::light_dir_from_angles;
+        let l = light_dir_from_angles(26.56f64.to_radians(), 150f64.to_radians());
+        let s = face_partitions(&view, l, FaceWarp::Lispsm, k)
+            .unwrap()
+            .storage_factor();
+        assert!((s - s0).abs() <= 1e-3 * s0, "k {k}: {s} vs {s0}");
+    }
+}
+
+/// Half FOV near π/2: the frustum is a slab much wider than deep and every face's |N·L| is
+/// tiny for an overhead light (the bottom face's is cos θ), so the absolute `EDGE_ON` skipped all
+/// faces once tan θ > 10⁶ and `face_partitions` returned zero maps with Σ S̄ = 0. The bottom face
+/// is then the whole footprint (half the silhouette), so it is kept, and overhead the result is
+/// Lloyd 2006 Eq 19, k((f/n)^{1/k} − 1)/(2 tan θ); every other light gives maps or, beyond what
+/// f64 can fit, a typed error — never an empty success.
+#[test]
+fn half_fov_near_a_right_angle_gives_maps_or_a_typed_error() {
+    use shadow_aliasing::Error;
+    let k = 3;
+    for eps in [1e-3, 1e-6, 1e-7, 1e-9, 1e-12] {
+        let th = std::f64::consts::FRAC_PI_2 - eps;
+        let view = ViewFrustum::new(1.0, 100.0, th).unwrap();
+        let eq19 = k as f64 * (100f64.powf(1.0 / k as f64) - 1.0) / (2.0 * th.tan());
+        for l in [
+            DVec3::NEG_Y,
+            DVec3::X,
+            DVec3::NEG_Z,
+            DVec3::Z,
+            DVec3::new(0.3, -0.8, -0.5),
+            DVec3::new(0.0, -1.0, 1e-3),
+            DVec3::new(-0.2, -0.9, 0.1),
+        ] {
+            match face_partitions(&view, l, FaceWarp::Lispsm, k) {
+                Ok(p) => {
+                    assert!(!p.is_empty(), "{eps:e}, {l}");
+                    let s = p.storage_factor();
+                    assert!(s.is_finite() && s > 0.0, "{eps:e}, {l}: {s}");
+                    if l == DVec3::NEG_Y || l == DVec3::X {
+                        assert_eq!(p.len(), k, "{eps:e}, {l}");
+                        assert!(
+                            (s - eq19).abs() < 1e-6 * eq19,
+                            "{eps:e}, {l}: {s} vs {eq19}"
+                        );
+                    }
+                }
+                Err(Error::Degenerate(_)) => assert!(eps < 1e-9, "{eps:e}, {l}"),
+                Err(e) => panic!("{eps:e}, {l}: {e}"),
+            }
+        }
+    }
+}
+
+/// The exhaustive variant of `worst_case_within_3x_of_behind`: a 2° grid and Nelder–Mead from
+/// its 12 largest values, k = 1..8, for several f/n and θ (≈ 1 min unoptimised). Measured
+/// worst/behind: 1.000 at θ ≥ 30° (the light behind or in front is the worst direction), 2.32 at
+/// θ = 10° (k = 8, elevation 36°, azimuth 47°).
+#[test]
+#[ignore = "exhaustive: about a minute in a debug build"]
+fn worst_case_within_3x_of_behind_exhaustive() {
+    for (alpha, deg) in [
+        (1000.0, 30.0),
+        (100.0, 45.0),
+        (1e4, 60.0),
+        (1e6, 30.0),
+        (1000.0, 10.0),
+    ] {
+        let view = ViewFrustum::new(1.0, alpha, f64::to_radians(deg)).unwrap();
+        for k in 1..=8 {
+            let behind = behind_closed_form(alpha, k);
+            let (worst, el, az) = worst_case(&view, k, 2.0, 12);
+            let ratio = worst / behind;
+            println!(
+                "f/n {alpha}, θ {deg}°, k {k}: worst {worst:.4} at ({:.3}°, {:.3}°), {ratio:.3} × behind {behind:.4}",
+                el.to_degrees(),
+                az.to_degrees()
+            );
+            assert!(ratio <= 3.0);
+        }
+    }
+}
+
+/// Where 3× cannot hold: overhead, the light sees the bottom face alone, whose best warp per
+/// z-partition is Lloyd 2006 Eq 19 (= Eq 18, the minimal range of Eq 12), k((f/n)^{1/k} − 1)/(2 tan θ),
+/// while behind Eq 21 gives 2k((f/n)^{1/k} − 1) + 1 for any θ. Their ratio tends to 1/(4 tan θ)
+/// as f/n grows, above 3 once tan θ < 1/12 (θ < 4.76°), for any face scheme that keeps Lloyd's
+/// optimal maps behind. At θ = 4°, f/n = 1000 the measured ratio is 3.57 (k = 1) to 3.42 (k = 8).
+#[test]
+fn narrow_fov_overhead_alone_exceeds_3x_behind() {
+    let (alpha, th) = (1000.0f64, 4f64.to_radians());
+    let view = ViewFrustum::new(1.0, alpha, th).unwrap();
+    for k in 1..=8 {
+        let r = alpha.powf(1.0 / k as f64);
+        let eq19 = k as f64 * (r - 1.0) / (2.0 * th.tan());
+        let behind = behind_closed_form(alpha, k);
+        let over = fp_storage(&view, k, std::f64::consts::FRAC_PI_2, 0.0);
+        let back = fp_storage(&view, k, 0.0, 0.0);
+        assert!((over - eq19).abs() < 1e-9 * eq19, "k {k}: {over} vs {eq19}");
+        assert!(
+            (back - behind).abs() < 1e-9 * behind,
+            "k {k}: {back} vs {behind}"
+        );
+        assert!(over / back > 3.0, "k {k}: {}", over / back);
     }
 }

@@ -333,7 +333,10 @@ fn sweeps_are_finite_on_extreme_views() {
 /// f/n = 1000, θ = 30°: a single map warped with the 1/sin γ rule (Fig 7's warp, ZP+W with k = 1)
 /// reaches 4.735 · 10⁶ at elevation 12°, azimuth 356°, 4.7 times Eq 20's 10⁶; the partitioned
 /// schemes stay within the claim at their worst grid directions (1° steps): ZP+W k = 4, 262.41 at
-/// (4°, 176°), 2.07 × 126.49; FP+ZP+W k = 4, 102.04 at (26°, 209°), 2.69 × 37.99.
+/// (4°, 176°), 2.07 × 126.49. FP+ZP+W k = 4 at (26°, 209°), the worst 1° grid direction with
+/// Lloyd's bisector alone (102.04, 2.69 × 37.99), is 30.05 (0.79 ×) with the depth axis among the
+/// face's candidates; its true worst case is the light behind (tests/faces.rs,
+/// `worst_case_within_3x_of_behind`).
 #[test]
 fn errata_s5_3_worst_case_factor() {
     let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
@@ -357,7 +360,7 @@ fn errata_s5_3_worst_case_factor() {
     );
     let fp = s(d(26.0, 209.0), WarpRule::Lispsm, Partition::Faces, 4);
     let fp_behind = s(behind, WarpRule::Lispsm, Partition::Faces, 4);
-    assert!((fp / fp_behind - 2.69).abs() < 0.01, "{}", fp / fp_behind);
+    assert!((fp / fp_behind - 0.79).abs() < 0.01, "{}", fp / fp_behind);
     // The crate's default rule keeps the single map within the claim there.
     let minimax = s(d(12.0, 356.0), WarpRule::Minimax, Partition::Single, 1);
     assert!(minimax / single_behind < 3.0);

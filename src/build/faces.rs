@@ -18,32 +18,63 @@
 //! partition of a face is the part of the frustum whose light rays pass through it (the prism of
 //! the face along the light), and its maximum error is the maximum over the face. The chosen
 //! faces tile the frustum's silhouette seen from the light, so the partitions tile the frustum.
-//! The far face is never chosen. A face within [`EDGE_ON`] of edge-on (`|N·L| ≤ EDGE_ON`) is
-//! skipped: its prism is thinner than `EDGE_ON` times the frustum's size, so it covers no point a
-//! renderer could sample; at exactly `L.z = 0` (light perpendicular to the view) the near face is
-//! such a face.
+//! The far face is never chosen. A face that is edge-on within [`EDGE_ON`] is skipped: its
+//! `|N·L| ≤ EDGE_ON` *and* its area projected along the light is at most `EDGE_ON` of the
+//! silhouette's. Its prism is then thinner than a millionth of its own size and of the frustum's
+//! shadow, so it covers no point a renderer could sample; at exactly `L.z = 0` (light perpendicular
+//! to the view) the near face is such a face. The second condition matters for a half field of
+//! view near π/2: the frustum is then a slab far wider than deep, every face's `|N·L|` is tiny
+//! for an overhead light (the bottom face's is cos θ), yet the bottom face is the whole footprint.
+//! The chosen faces tile the silhouette, so one of them holds at least a fifth of it and is never
+//! skipped: the partitions are never empty.
 //!
-//! # One warp per side face
+//! # One warp per side face part: two candidate axes
 //!
 //! Lloyd 2006 §5.1: "we first project the vectors from the viewpoint through the two side edges of
 //! the face, e₀ and e₁, into a plane perpendicular to the light direction to obtain e′₀ and e′₁. We
 //! use the bisector of the projected edge vectors e′₀ + e′₁ to align the z axis." The crate uses
 //! the unit vectors `ê′₀ + ê′₁`, the true bisector of the angle (with unequal lengths, `e′₀ + e′₁`
-//! leans towards the longer one). The face's prism, projected along the light, is the wedge
-//! between e′₀ and e′₁ from the projected eye, cut by the near and far edges; every point of it has
-//! a positive coordinate along the bisector.
+//! leans towards the longer one; [`face_axis`]). The face's prism, projected along the light, is
+//! the wedge between e′₀ and e′₁ from the projected eye, cut by the near and far edges; every
+//! point of it has a positive coordinate along the bisector.
+//!
+//! The bisector degenerates when a side edge turns parallel to the light (the light near a side
+//! edge of the frustum, the face next to it seen nearly edge-on): that edge's projection e′ shrinks
+//! to the projected eye, its direction ê′ (and the bisector with it) swings with the last bits of
+//! the light's offset, and the edge's vertices sit at a coordinate near 0 along the axis, so
+//! `d_n → 0` and the LiSPSM n′ below → 0: a map warped to a point on the face along an axis that
+//! can run across the face's thin projection. Σ S̄ then grew as δ^(−1/2) with the light's angle δ
+//! from the edge until [`EDGE_ON`] cut the face off (f/n = 1000, θ = 30°, k = 4: 117 at δ = 10⁻²,
+//! 1761 at δ = 10⁻⁵, against 38.0 with the light behind), in slivers of directions a 1° grid misses.
+//!
+//! So each side face also has its **depth axis** ([`face_depth_axis`]): the direction, in the
+//! plane perpendicular to the light, along which the eye depth of the face's points grows,
+//! perpendicular to the projected near edge (a line of constant depth). Along it the face's point
+//! at depth z has the coordinate `z h`, h the projected eye's distance from the projected near
+//! edge, so the face's projection is exactly an overhead frustum's footprint (sheared when the
+//! light tilts sideways) from `n h` to `f h`, and as the face turns edge-on, h ∝ |N·L| → 0
+//! uniformly: the maps' t range shrinks by h, m_z ∝ h, m_x is unchanged and the face's S̄ → 0
+//! with its prism, continuously. The depth axis degenerates only when the light is parallel to the
+//! near edge, where the bisector is well conditioned. Every face part is fitted with both axes and
+//! keeps the map with the smaller measured S̄ (either is a valid map of the part: the error over a
+//! face's prism is its maximum over the face, whatever the axis), so it is never worse than
+//! Lloyd's bisector. With the light behind or overhead the two axes coincide.
+//!
+//! Measured worst case over the hemisphere (Nelder–Mead from a 2° grid, `tests/faces.rs`):
+//! at θ ≥ 30° (f/n = 100 to 10⁶) it is the light behind (or in front) itself,
+//! `2k((f/n)^{1/k} − 1) + 1`, for every k = 1…8; at θ = 10° it is 2.19–2.32 times that.
 //!
 //! # The face's n′ (how Eq 19 and Eq 21 come out)
 //!
 //! A face's projection plays the part the view frustum's footprint plays for an overhead light:
-//! the apex is the projected eye, the bisector the view axis. Let `d_n` and `d_f` be the smallest
-//! and largest coordinates of the (sub-)face's vertices along the bisector, measured from the
-//! projected eye. The crate's face rules ([`FaceWarp`]) are the overhead rules with (n, f) replaced
-//! by (d_n, d_f), the warp's centre of projection on the bisector through the projected eye:
+//! the apex is the projected eye, the warp axis (bisector or depth axis) the view axis. Let `d_n`
+//! and `d_f` be the smallest and largest coordinates of the (sub-)face's vertices along the axis,
+//! measured from the projected eye. The crate's face rules ([`FaceWarp`]) are the overhead rules with (n, f) replaced
+//! by (d_n, d_f), the warp's centre of projection on the axis through the projected eye:
 //!
 //! - [`FaceWarp::Lispsm`]: `n′ = d_n + √(d_n d_f)` (LiSPSM's optimum for the face);
 //! - [`FaceWarp::Psm`]: `n′ = d_n` (the centre of projection at the projected eye);
-//! - [`FaceWarp::Uniform`]: n′ = ∞, an orthographic map aligned with the bisector.
+//! - [`FaceWarp::Uniform`]: n′ = ∞, an orthographic map aligned with the axis.
 //!
 //! Why this reproduces the papers. With the light overhead (L = −Y, `v·y = 0`) the only back face
 //! is the bottom face, whose projection is the whole footprint with the bisector along −Z and
@@ -92,14 +123,20 @@ use crate::build::{fit_warp, light_space, ShadowMatrix};
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{unit_light_dir, NPrime, ViewFrustum};
 use crate::measure::sweep::{vertex_max, VertexMax};
-use glam::DVec3;
+use glam::{DMat4, DVec3};
 
 /// Faces with `|N·L|` at most this (unit vectors: the sine of the angle between the face's plane
-/// and the light) are treated as edge-on and skipped (see the module docs). 10⁻⁶: the prism of
-/// such a face is thinner than a millionth of the frustum (less than a texel of any shadow map up
-/// to 10⁶ texels across), while a map fitted to a face seen at a grazing sine s carries rounding
-/// of about 10⁻¹⁶/s of its clip range: at 10⁻⁶ that is 10⁻¹⁰, below the clip-volume tolerance
-/// the crate's tests hold every map to.
+/// and the light) whose area projected along the light is also at most this fraction of the
+/// frustum's silhouette are treated as edge-on and skipped (see the module docs). 10⁻⁶: the prism
+/// of such a face is thinner than a millionth of its own size and of the frustum's shadow (less
+/// than a texel of any shadow map up to 10⁶ texels across), while a map fitted to a face seen at
+/// a grazing sine s carries rounding of about 10⁻¹⁶/s of its clip range: at 10⁻⁶ that is 10⁻¹⁰,
+/// below the clip-volume tolerance the crate's tests hold every map to. (A face kept at a smaller
+/// sine because it is large, as with a half field of view near π/2, is fitted and checked like
+/// any other; past what f64 can fit the fit is refused with [`Error::Degenerate`].)
+///
+/// The same tolerance marks a warp axis as undefined: a side edge (for the bisector) or the near
+/// edge (for the depth axis) within `EDGE_ON` of parallel to the light.
 pub const EDGE_ON: f64 = 1e-6;
 
 /// The largest number of face partitions: four side faces of [`MAX_PARTITIONS`] z-partitions
@@ -257,17 +294,41 @@ impl VisibleFaces {
 pub fn visible_faces(view: &ViewFrustum, light_dir: DVec3) -> Result<VisibleFaces> {
     let l = unit_light_dir(light_dir)?;
     let t = view.tan_half_fov();
-    Ok(visible_with(t, t * view.aspect(), l))
+    Ok(visible_with(
+        t,
+        t * view.aspect(),
+        view.near() / view.far(),
+        l,
+    ))
 }
 
-fn visible_with(t: f64, ta: f64, l: DVec3) -> VisibleFaces {
+fn visible_with(t: f64, ta: f64, near_over_far: f64, l: DVec3) -> VisibleFaces {
     // v·y = (−Z)·(−L) = L.z; front faces when it is negative.
     let front = l.z < 0.0;
     let sign = if front { -1.0 } else { 1.0 };
+    // Signed areas of the faces projected along the light, over f² (positive when the outward
+    // normal is along L): a side face between its edges cᵢ, cᵢ₊₁ at unit depth is the trapezoid
+    // ½ (f² − n²)(cᵢ × cᵢ₊₁), the near face 4 n² t ta Z, the far face −4 f² t ta Z.
+    let q = near_over_far * near_over_far;
+    let side = |face: Face| {
+        face.edges_with(t, ta)
+            .map_or(0.0, |[e0, e1]| 0.5 * (1.0 - q) * e0.cross(e1).dot(l))
+    };
+    let near = 4.0 * q * t * ta * l.z;
+    let area = |face: Face| match face {
+        Face::Near => near,
+        Face::Far => -4.0 * t * ta * l.z,
+        _ => side(face),
+    };
+    // The silhouette's area: half the summed |areas| of the six faces (each light ray enters
+    // once and leaves once).
+    let silhouette = 0.5 * Face::ALL.iter().map(|&f| area(f).abs()).sum::<f64>();
     let mut faces = [Face::Near; 5];
     let mut len = 0;
     for face in [Face::Bottom, Face::Right, Face::Top, Face::Left, Face::Near] {
-        if sign * face.normal_with(t, ta).dot(l) > EDGE_ON {
+        let facing = sign * face.normal_with(t, ta).dot(l);
+        let edge_on = facing <= EDGE_ON && sign * area(face) <= EDGE_ON * silhouette;
+        if facing > 0.0 && !edge_on {
             faces[len] = face;
             len += 1;
         }
@@ -275,13 +336,15 @@ fn visible_with(t: f64, ta: f64, l: DVec3) -> VisibleFaces {
     VisibleFaces { faces, len, front }
 }
 
-/// The warp axis of a side face: the bisector `ê′₀ + ê′₁` of its side edges projected
-/// perpendicular to the light (Lloyd 2006 §5.1). For the near and far faces, the image's up
+/// Lloyd's warp axis of a side face: the bisector `ê′₀ + ê′₁` of its side edges projected
+/// perpendicular to the light (Lloyd 2006 §5.1), the first of the two candidates the face
+/// partitions try (module docs). For the near and far faces, the image's up
 /// vector +Y (projected by [`light_space`]).
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir`; [`Error::Degenerate`] when a side edge is
-/// parallel to the light (the face is then edge-on, and [`visible_faces`] never returns it).
+/// within [`EDGE_ON`] of parallel to the light (the face is then edge-on or nearly so, and the
+/// face partitions use its [`face_depth_axis`]).
 pub fn face_axis(view: &ViewFrustum, face: Face, light_dir: DVec3) -> Result<DVec3> {
     let l = unit_light_dir(light_dir)?;
     let t = view.tan_half_fov();
@@ -303,6 +366,35 @@ fn axis_with(face: Face, t: f64, ta: f64, l: DVec3) -> Result<DVec3> {
             Ok(p0 / l0 + p1 / l1)
         }
     }
+}
+
+/// The depth axis of a side face: the direction, perpendicular to the light, along which the eye
+/// depth of the face's points grows — perpendicular to the projection of the face's near edge
+/// (a line of constant depth), pointing away from the projected eye. `None` for the near and far
+/// faces, and when the light is within [`EDGE_ON`] of parallel to the near edge (the edge's
+/// projection, and with it the axis, vanishes).
+///
+/// Along this axis every point of the face at depth z has the coordinate `z h`, with h the
+/// distance of the projected eye from the projected near edge, so the face's projection is an
+/// overhead frustum's footprint (sheared when the light tilts sideways) of depths `[n h, f h]`.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `light_dir`.
+pub fn face_depth_axis(view: &ViewFrustum, face: Face, light_dir: DVec3) -> Result<Option<DVec3>> {
+    let l = unit_light_dir(light_dir)?;
+    let t = view.tan_half_fov();
+    Ok(depth_axis_with(face, t, t * view.aspect(), l))
+}
+
+fn depth_axis_with(face: Face, t: f64, ta: f64, l: DVec3) -> Option<DVec3> {
+    let [e0, e1] = face.edges_with(t, ta)?;
+    let e = e1 - e0;
+    // L × E is perpendicular to the light and to the projected edge E − (E·L) L.
+    let m = l.cross(e);
+    if m.length() <= EDGE_ON * e.length() {
+        return None;
+    }
+    Some(if m.dot(e0) < 0.0 { -m } else { m })
 }
 
 /// How each face partition's n′ is chosen (see the module docs): the overhead rules with the
@@ -357,7 +449,7 @@ impl FacePartitions {
     pub fn len(&self) -> usize {
         self.len
     }
-    /// Whether there is none (never, for a valid light: some face is always seen).
+    /// Whether there is none (never: [`face_partitions_with`] refuses an empty choice).
     #[must_use]
     pub fn is_empty(&self) -> bool {
         self.len == 0
@@ -393,7 +485,11 @@ pub fn face_partitions(
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir` (zero or not finite) or `splits` (planes outside
-/// the view's depth range); [`Error::Degenerate`] when a fitted map is singular at a vertex.
+/// the view's depth range); [`Error::Degenerate`] when no face is seen (not reachable for a
+/// valid frustum and light, checked all the same) or when neither warp axis of a face part gives
+/// a map [`fit_warp`] accepts (a face part with no extent along or across the axis beyond 10⁻¹²
+/// of the swept points' extent: met with a half field of view within about 10⁻² of π/2 and a
+/// grazing light) and regular at the part's vertices.
 pub fn face_partitions_with(
     view: &ViewFrustum,
     light_dir: DVec3,
@@ -422,7 +518,7 @@ pub(crate) fn visit_face_partitions(
     crate::build::cascades::splits_within(view, splits)?;
     let tan = view.tan_half_fov();
     let ta = tan * view.aspect();
-    let faces = visible_with(tan, ta, l);
+    let faces = visible_with(tan, ta, view.near() / view.far(), l);
     // The frustum's extent along the light (toward-the-light coordinate y = −L·p).
     let (mut y_lo, mut y_hi) = (f64::INFINITY, f64::NEG_INFINITY);
     for c in Face::Near
@@ -434,10 +530,37 @@ pub(crate) fn visit_face_partitions(
         y_lo = y_lo.min(y);
         y_hi = y_hi.max(y);
     }
+    if faces.len == 0 {
+        // The chosen faces tile the silhouette, so one of them holds at least a fifth of its area
+        // and is never skipped; an empty choice means the light direction or the frustum is not
+        // representable (it is refused rather than reported as zero maps).
+        return Err(Error::Degenerate(format!(
+            "no face of the view frustum is seen by the light {l}"
+        )));
+    }
+    let fitter = PartFitter {
+        rule,
+        y_range: (y_lo, y_hi),
+        l,
+        tan,
+    };
     for &face in faces.faces() {
-        let axis = axis_with(face, tan, ta, l)?;
-        let ls = light_space(l, axis)?;
         let is_side = !matches!(face, Face::Near | Face::Far);
+        // The candidate warp axes: Lloyd's bisector, and for a side face its depth axis. A
+        // candidate that cannot be built (a side edge along the light, the light along the near
+        // edge) is dropped; its error is reported only when no candidate is left.
+        let mut first_err = None;
+        let mut spaces = [None; 2];
+        match axis_with(face, tan, ta, l).and_then(|a| light_space(l, a)) {
+            Ok(ls) => spaces[0] = Some(ls),
+            Err(e) => first_err = Some(e),
+        }
+        if is_side {
+            if let Some(ls) = depth_axis_with(face, tan, ta, l).and_then(|a| light_space(l, a).ok())
+            {
+                spaces[1] = Some(ls);
+            }
+        }
         let count = if is_side { splits.k() } else { 1 };
         for j in 0..count {
             let (a, b) = if is_side {
@@ -446,37 +569,24 @@ pub(crate) fn visit_face_partitions(
                 (view.near(), view.near())
             };
             let vertices = face.vertices_with(view, tan, ta, a, b);
-            let (mut d_n, mut d_f) = (f64::INFINITY, f64::NEG_INFINITY);
-            let mut swept = [DVec3::ZERO; 12];
-            for (i, v) in vertices.iter().enumerate() {
-                let d = ls.z.dot(*v);
-                d_n = d_n.min(d);
-                d_f = d_f.max(d);
-                let y = ls.y.dot(*v);
-                swept[3 * i] = *v;
-                swept[3 * i + 1] = *v + (y_lo - y) * ls.y;
-                swept[3 * i + 2] = *v + (y_hi - y) * ls.y;
-            }
-            let n_prime = if !is_side {
-                NPrime::Unwarped
-            } else {
-                match rule {
-                    FaceWarp::Uniform => NPrime::Unwarped,
-                    FaceWarp::Psm => NPrime::Finite(d_n),
-                    FaceWarp::Lispsm => NPrime::Finite(d_n + (d_n * d_f).sqrt()),
+            let mut best: Option<(DMat4, NPrime, VertexMax)> = None;
+            let mut err = first_err.clone();
+            for ls in spaces.iter().flatten() {
+                match fitter.fit(ls, &vertices, face, (a, b)) {
+                    Ok(c) => {
+                        if best.is_none_or(|b| c.2.storage_factor() < b.2.storage_factor()) {
+                            best = Some(c);
+                        }
+                    }
+                    Err(e) => {
+                        err.get_or_insert(e);
+                    }
                 }
-            };
-            let n_prime = match n_prime {
-                NPrime::Finite(v) if !(v.is_finite() && v > 0.0) => NPrime::Unwarped,
-                other => other,
-            };
-            let matrix = fit_warp(&swept, &ls, n_prime)?;
-            let error = vertex_max(&matrix, l, tan, &vertices).ok_or_else(|| {
-                Error::Degenerate(format!(
-                    "the map of the {face:?} face over depths [{}, {}] is singular at a vertex",
-                    fmt_num(a),
-                    fmt_num(b)
-                ))
+            }
+            let (matrix, n_prime, error) = best.ok_or_else(|| {
+                err.unwrap_or_else(|| {
+                    Error::Degenerate(format!("no warp axis for the {face:?} face"))
+                })
             })?;
             visit(&FacePartition {
                 face,
@@ -493,4 +603,66 @@ pub(crate) fn visit_face_partitions(
         }
     }
     Ok(faces)
+}
+
+#[cold]
+#[inline(never)]
+fn singular(face: Face, a: f64, b: f64) -> Error {
+    Error::Degenerate(format!(
+        "the map of the {face:?} face over depths [{}, {}] is singular at a vertex",
+        fmt_num(a),
+        fmt_num(b)
+    ))
+}
+
+/// What every face part's fit shares: the face rule, the frustum's extent along the light
+/// (toward-the-light coordinate), the unit light direction and tan θ.
+struct PartFitter {
+    rule: FaceWarp,
+    y_range: (f64, f64),
+    l: DVec3,
+    tan: f64,
+}
+
+impl PartFitter {
+    /// One face part's map in the light space `ls`: the face rule's n′ from the part's extent
+    /// `[d_n, d_f]` along `ls.z`, the warp fitted to the part's vertices swept along the light
+    /// over the frustum's extent, and its error at the vertices.
+    fn fit(
+        &self,
+        ls: &crate::build::LightSpace,
+        vertices: &[DVec3; 4],
+        face: Face,
+        (a, b): (f64, f64),
+    ) -> Result<(DMat4, NPrime, VertexMax)> {
+        let (y_lo, y_hi) = self.y_range;
+        let (mut d_n, mut d_f) = (f64::INFINITY, f64::NEG_INFINITY);
+        let mut swept = [DVec3::ZERO; 12];
+        for (i, v) in vertices.iter().enumerate() {
+            let d = ls.z.dot(*v);
+            d_n = d_n.min(d);
+            d_f = d_f.max(d);
+            let y = ls.y.dot(*v);
+            swept[3 * i] = *v;
+            swept[3 * i + 1] = *v + (y_lo - y) * ls.y;
+            swept[3 * i + 2] = *v + (y_hi - y) * ls.y;
+        }
+        let n_prime = if matches!(face, Face::Near | Face::Far) {
+            NPrime::Unwarped
+        } else {
+            match self.rule {
+                FaceWarp::Uniform => NPrime::Unwarped,
+                FaceWarp::Psm => NPrime::Finite(d_n),
+                FaceWarp::Lispsm => NPrime::Finite(d_n + (d_n * d_f).sqrt()),
+            }
+        };
+        let n_prime = match n_prime {
+            NPrime::Finite(v) if !(v.is_finite() && v > 0.0) => NPrime::Unwarped,
+            other => other,
+        };
+        let matrix = fit_warp(&swept, ls, n_prime)?;
+        let error =
+            vertex_max(&matrix, self.l, self.tan, vertices).ok_or_else(|| singular(face, a, b))?;
+        Ok((matrix, n_prime, error))
+    }
 }
