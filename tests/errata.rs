@@ -609,10 +609,12 @@ mod checks {
         let e = Entry::numbered(L06, 13);
         let v = view(1.0, 100.0, 30f64.to_radians());
         let l = light_dir_from_angles(15f64.to_radians(), 165f64.to_radians());
-        let s = face_partitions(&v, l, FaceWarp::Lispsm, 1)
+        let unit = faces_with_axis(&v, l, true).unwrap();
+        let built = face_partitions(&v, l, FaceWarp::Lispsm, 1)
             .unwrap()
             .storage_factor();
-        e.has(format!("ê′₀ + ê′₁ gives {}", d(s, 2)));
+        e.has(format!("ê′₀ + ê′₁ gives {}", d(unit, 2)));
+        e.has(format!("which gives {} here", d(built, 2)));
         e.done()
     }
 
@@ -806,7 +808,8 @@ mod checks {
         let built = face_partitions(&v, l, FaceWarp::Lispsm, 1)
             .unwrap()
             .storage_factor();
-        assert!(close(unit, built, 1e-9));
+        // The crate's per-part choice is never above the unit-vector bisector alone.
+        assert!(built <= unit * (1.0 + 1e-12));
         e.has(format!("the sum gives Σ S̄ = {} over", d(raw, 1)));
         e.done()
     }
