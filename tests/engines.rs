@@ -192,3 +192,24 @@ fn filament_hints_must_be_ordered_distances() {
         n_prime_for(&view, l, WarpRule::Filament).unwrap()
     );
 }
+
+/// `with_casters` (`CasterDepth::Enclose`) chooses the rule's n′ in the rule's own frame, as
+/// `warp()` does: with Filament near the parallel light (γ = 1.3°, inside the switch), and a
+/// caster inside the frustum (so the union is the frustum), the n′ is `warp()`'s, and the map's
+/// t depends on eye x alone.
+#[test]
+fn enclosing_casters_keep_filaments_frame() {
+    use shadow_aliasing::build::{with_casters, CasterDepth};
+    let view = view();
+    let g = 1.3f64.to_radians();
+    let l = DVec3::new(0.0, -g.sin(), -g.cos());
+    let inside = [DVec3::new(0.0, 0.0, -50.0)];
+    let s = with_casters(&view, l, WarpRule::Filament, &inside, CasterDepth::Enclose).unwrap();
+    assert_eq!(s.n_prime, n_prime_for(&view, l, WarpRule::Filament).unwrap());
+    let t = |p: DVec3| {
+        let h = s.matrix * p.extend(1.0);
+        h.y / h.w
+    };
+    let (a, b) = (DVec3::new(7.0, -3.0, -40.0), DVec3::new(7.0, 9.0, -80.0));
+    assert!((t(a) - t(b)).abs() < 1e-12, "{} vs {}", t(a), t(b));
+}

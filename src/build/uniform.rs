@@ -16,7 +16,7 @@
 use crate::build::lightspace::LightSpace;
 use crate::build::matrix::ShadowMatrix;
 use crate::build::warp::{
-    rule_n_prime, verify_clip, warp_matrix, FrustumInLight, Ranges, WarpRule,
+    rule_frame, rule_n_prime, verify_clip, warp_matrix, FrustumInLight, Ranges, WarpRule,
 };
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{NPrime, ViewFrustum};
@@ -62,8 +62,10 @@ pub fn uniform(view: &ViewFrustum, light_dir: DVec3) -> Result<ShadowMatrix> {
 ///
 /// With [`CasterDepth::Clamp`] the casters only need to be finite: the map is the frustum-only
 /// map of [`crate::build::warp()`]. With [`CasterDepth::Enclose`] the warp is fitted around the
-/// frustum corners and the casters together, with the rule's n′ (chosen for the frustum)
-/// measured from where that union starts along the warp axis.
+/// frustum corners and the casters together, with the rule's n′ (chosen for the frustum, in the
+/// rule's frame) measured from where that union starts along the warp axis, and the centre of
+/// projection on the eye's light-space line for every rule (OGRE's near-camera-point centre is
+/// [`crate::build::warp()`]'s, for the frustum alone).
 ///
 /// # Errors
 /// As [`crate::build::warp()`], and [`Error::InvalidArgument`] naming `casters` for a non-finite
@@ -105,6 +107,8 @@ pub fn with_casters(
         CasterDepth::Clamp => crate::build::warp::warp(view, light_dir, rule),
         CasterDepth::Enclose => {
             let fl = FrustumInLight::new(view, light_dir)?;
+            // The rule's own frame (Filament's near the parallel light), as `warp()` uses.
+            let fl = rule_frame(view, &fl, rule).unwrap_or(fl);
             let n_prime = rule_n_prime(view, &fl, rule)?;
             let corners = view.corners();
             let matrix = fit_two(&corners, casters, &fl.ls, n_prime)?;

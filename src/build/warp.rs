@@ -681,7 +681,11 @@ const FILAMENT_PARALLEL_COS: f64 = 0.9997f32 as f64;
 /// the light's own frame, with the camera's right vector as up, once |cos γ| ≥ 0.9997
 /// ([`WarpRule::Filament`]).
 #[inline]
-fn rule_frame(view: &ViewFrustum, fl: &FrustumInLight, rule: WarpRule) -> Option<FrustumInLight> {
+pub(crate) fn rule_frame(
+    view: &ViewFrustum,
+    fl: &FrustumInLight,
+    rule: WarpRule,
+) -> Option<FrustumInLight> {
     match rule {
         WarpRule::Filament | WarpRule::FilamentHints { .. }
             if fl.ls.light_dir().z.abs() >= FILAMENT_PARALLEL_COS =>
