@@ -79,6 +79,7 @@ pub mod error;
 #[cfg(feature = "cli")]
 pub mod eval;
 pub mod frustum;
+pub mod geom;
 pub mod measure;
 #[cfg(feature = "plot")]
 pub mod plot;

@@ -205,7 +205,10 @@ fn enclosing_casters_keep_filaments_frame() {
     let l = DVec3::new(0.0, -g.sin(), -g.cos());
     let inside = [DVec3::new(0.0, 0.0, -50.0)];
     let s = with_casters(&view, l, WarpRule::Filament, &inside, CasterDepth::Enclose).unwrap();
-    assert_eq!(s.n_prime, n_prime_for(&view, l, WarpRule::Filament).unwrap());
+    assert_eq!(
+        s.n_prime,
+        n_prime_for(&view, l, WarpRule::Filament).unwrap()
+    );
     let t = |p: DVec3| {
         let h = s.matrix * p.extend(1.0);
         h.y / h.w
