@@ -31,6 +31,7 @@
 //! point (see the trapezoidal builder). OGRE (`LiSPSMShadowCameraSetup::calculateLiSPSM`) puts it
 //! on the near camera point's light-space x and y instead, which [`WarpRule::Ogre`] reproduces.
 
+use crate::analytic::tsm::tsm_eta_finite;
 use crate::build::lightspace::{light_space_unit, LightSpace};
 use crate::build::matrix::ShadowMatrix;
 use crate::build::minimax;
@@ -719,26 +720,6 @@ fn fit_frustum_from_corner(fl: &FrustumInLight, n_prime: NPrime, i: usize) -> Re
 
 pub use crate::analytic::tsm::EIGHTY_PERCENT_LINE as TSM_80_PERCENT_LINE;
 
-/// Martin & Tan's η (§6.2, [`crate::analytic::tsm::tsm_eta`]) as the builders use it: `None`
-/// when no centre of projection beyond the top line maps the focus point to the line ξ (the
-/// closed form's `NoSolution`, its unwarped boundary, or a focus point on the top or base line),
-/// where the builders use the bounding rectangle, the limit η → ∞.
-#[inline]
-pub(crate) fn tsm_eta(lambda: f64, delta_p: f64, xi: f64) -> Option<f64> {
-    // The closed form's domain (λ finite, δ′ ∈ (0, λ), ξ ∈ (−1, 1), a positive denominator
-    // λ(1 − ξ) − 2δ′) and its value, bit for bit `analytic::tsm::tsm_eta`'s `Ok(Finite(η))`,
-    // without building its `Result` (the TSM line search calls this ≈ 45 times per map).
-    if !(lambda.is_finite() && delta_p > 0.0 && delta_p < lambda && xi > -1.0 && xi < 1.0) {
-        return None;
-    }
-    let den = lambda * (1.0 - xi) - 2.0 * delta_p;
-    if den <= 0.0 {
-        return None;
-    }
-    let eta = lambda * delta_p * (1.0 + xi) / den;
-    (eta.is_finite() && eta > 0.0).then_some(eta)
-}
-
 fn tsm_rule(view: &ViewFrustum, fl: &FrustumInLight, focus: f64) -> Result<NPrime> {
     let focus = crate::error::positive("focus", focus)?;
     if focus > view.far() - view.near() {
@@ -752,10 +733,12 @@ fn tsm_rule(view: &ViewFrustum, fl: &FrustumInLight, focus: f64) -> Result<NPrim
         ));
     }
     let p = fl.ls.to_light(DVec3::new(0.0, 0.0, -(view.near() + focus)));
-    Ok(match tsm_eta(fl.delta, p.z - fl.z0, TSM_80_PERCENT_LINE) {
-        Some(eta) => NPrime::Finite(eta),
-        None => NPrime::Unwarped,
-    })
+    Ok(
+        match tsm_eta_finite(fl.delta, p.z - fl.z0, TSM_80_PERCENT_LINE) {
+            Some(eta) => NPrime::Finite(eta),
+            None => NPrime::Unwarped,
+        },
+    )
 }
 
 fn filament_n_prime(

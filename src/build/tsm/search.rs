@@ -2,9 +2,10 @@
 //! (Martin & Tan §6.1, §6.2).
 
 use super::{Trapezoid, TsmMap, TsmSearch, SQUARE_TOLERANCE, TSM_80_PERCENT_LINE};
+use crate::analytic::tsm::tsm_eta_finite;
 use crate::build::lightspace::LightSpace;
 use crate::build::matrix::ShadowMatrix;
-use crate::build::warp::{fmax, fmin, tsm_eta};
+use crate::build::warp::{fmax, fmin};
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::NPrime;
 use crate::geom::homography::quad_to_square;
@@ -131,7 +132,7 @@ impl Core<'_> {
             if square {
                 None
             } else {
-                tsm_eta(lambda, delta_p, xi)
+                tsm_eta_finite(lambda, delta_p, xi)
             }
         };
 
