@@ -718,7 +718,7 @@ fn fit_frustum_from_corner(fl: &FrustumInLight, n_prime: NPrime, i: usize) -> Re
     verify_clip(&m, fl.corners.iter()).map(|()| m)
 }
 
-pub use crate::analytic::tsm::EIGHTY_PERCENT_LINE as TSM_80_PERCENT_LINE;
+use crate::analytic::tsm::EIGHTY_PERCENT_LINE;
 
 fn tsm_rule(view: &ViewFrustum, fl: &FrustumInLight, focus: f64) -> Result<NPrime> {
     let focus = crate::error::positive("focus", focus)?;
@@ -734,7 +734,7 @@ fn tsm_rule(view: &ViewFrustum, fl: &FrustumInLight, focus: f64) -> Result<NPrim
     }
     let p = fl.ls.to_light(DVec3::new(0.0, 0.0, -(view.near() + focus)));
     Ok(
-        match tsm_eta_finite(fl.delta, p.z - fl.z0, TSM_80_PERCENT_LINE) {
+        match tsm_eta_finite(fl.delta, p.z - fl.z0, EIGHTY_PERCENT_LINE) {
             Some(eta) => NPrime::Finite(eta),
             None => NPrime::Unwarped,
         },

@@ -1,8 +1,9 @@
 //! The trapezoid's construction from E and the focus region, and the search over map lines
 //! (Martin & Tan §6.1, §6.2).
 
-use super::{Trapezoid, TsmMap, TsmSearch, SQUARE_TOLERANCE, TSM_80_PERCENT_LINE};
+use super::{Trapezoid, TsmMap, TsmSearch, SQUARE_TOLERANCE};
 use crate::analytic::tsm::tsm_eta_finite;
+use crate::analytic::tsm::EIGHTY_PERCENT_LINE;
 use crate::build::lightspace::LightSpace;
 use crate::build::matrix::ShadowMatrix;
 use crate::build::warp::{fmax, fmin};
@@ -137,7 +138,7 @@ impl Core<'_> {
         };
 
         let (eta, xi) = match search {
-            TsmSearch::EightyPercent => (eta_for(TSM_80_PERCENT_LINE), TSM_80_PERCENT_LINE),
+            TsmSearch::EightyPercent => (eta_for(EIGHTY_PERCENT_LINE), EIGHTY_PERCENT_LINE),
             TsmSearch::Line(xi) => (eta_for(xi), xi),
             TsmSearch::Iterative { map_lines } | TsmSearch::IterativeExhaustive { map_lines } => {
                 // Built only for the line searches (tables the fixed-line rules skip).
