@@ -38,12 +38,6 @@ use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{NPrime, Resolutions, ViewFrustum};
 use serde_json::{Map, Value};
 
-/// The README's Rust example, compiled and run by `cargo test --all-features` as a doc-test, so
-/// that the README cannot drift from the API.
-#[doc = include_str!("../README.md")]
-#[cfg(doctest)]
-pub struct ReadmeDoctests;
-
 /// What `shadow-aliasing eval` prints and how it exits.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct EvalOutcome {

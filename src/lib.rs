@@ -26,6 +26,7 @@
 //! 3. [`build`]: the matrices a renderer needs (uniform, LiSPSM with every n′ rule, the crate's
 //!    minimax, trapezoidal, cascades, stable cascades, face partitions, an atlas), eye space →
 //!    light clip space, in both clip-depth conventions, without heap allocation.
+//!    [`geom`] holds the plane geometry they share (homography, convex hull, polytopes).
 //! 4. [`measure`]: the ground truth. The error of *any* shadow matrix at any point, from the exact
 //!    derivatives of the projective map; its maximum over the frustum; the storage factor over the
 //!    hemisphere of light directions. Every closed form has a numeric twin here, and the tests hold
@@ -87,3 +88,9 @@ pub mod warp;
 
 pub use error::{Error, Result};
 pub use frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};
+
+/// The README's Rust example, compiled and run as a doc-test by `cargo test` in every feature
+/// set, so that the README cannot drift from the API.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
