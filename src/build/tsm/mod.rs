@@ -78,7 +78,6 @@ pub use crate::geom::polytope::ConvexBound;
 pub use bound::tsm_general;
 use search::Core;
 
-
 /// The centre line is treated as a point (the frustum looks square from the light) when its
 /// length is below this fraction of the trapezoid's height λ. 10⁻³: one texel in a 1024-line map.
 pub const SQUARE_TOLERANCE: f64 = 1e-3;
