@@ -58,43 +58,74 @@ pub const ROUNDING_TOLERANCE: f64 = 1e-6;
 ///
 /// The same bound holds, to first order, for relative changes of u in the matrix entries (the
 /// rounding of the matrix itself). `NaN` or `inf` when `g`, `D` or `h.w` is zero.
-#[inline]
-fn rounding_bound(m: &DMat4, p: DVec3, h: DVec4, gs: DVec3, gt: DVec3, l: DVec3) -> f64 {
-    const C: f64 = 8.0 * 0.5 * f64::EPSILON;
-    let abs = DMat4::from_cols(
-        m.x_axis.abs(),
-        m.y_axis.abs(),
-        m.z_axis.abs(),
-        m.w_axis.abs(),
-    );
-    let a = abs * p.abs().extend(1.0);
-    let (r0, r1, r3) = (
-        m.row(0).truncate(),
-        m.row(1).truncate(),
-        m.row(3).truncate(),
-    );
-    let (n0, n1, n3) = (r0.length(), r1.length(), r3.length());
-    // g: the errors of h through G_t.
-    let et = C * (a.w * abs.row(1).truncate() + a.y * abs.row(3).truncate()).length();
-    let g = (gt - gt.dot(l) * l).length();
-    let rel_g = et / g;
-    // D: the errors of h through the factorised form, then those of forming G and D from h.
-    let (ta, tb, tc) = (
-        r0.cross(r1).dot(l),
-        r0.cross(r3).dot(l),
-        r1.cross(r3).dot(l),
-    );
-    let bracket = h.w * ta - h.y * tb + h.x * tc;
-    let e_bracket = C * (a.w * ta.abs() + a.y * tb.abs() + a.x * tc.abs());
-    let rel_w = C * a.w / h.w.abs();
-    let d = gs.cross(gt).dot(l).abs();
-    let (ls, lt) = (gs.length(), gt.length());
-    let gs_perp = (gs - gs.dot(l) * l).length();
-    let es = C * (h.w.abs() * n0 + h.x.abs() * n3);
-    let et_form = C * (h.w.abs() * n1 + h.y.abs() * n3);
-    let rel_d = rel_w + e_bracket / bracket.abs() + (es * g + gs_perp * et_form + C * ls * lt) / d;
-    // Not `max`: a NaN must survive to fail the caller's `<=`. h.w enters squared.
-    rel_g + rel_d + 2.0 * rel_w
+#[derive(Debug, Clone, Copy)]
+struct Rounding {
+    /// `|M|`, entrywise.
+    abs: DMat4,
+    /// `|M₁|`, `|M₃|` (first three entries), entrywise.
+    abs1: DVec3,
+    abs3: DVec3,
+    /// `|M₀|`, `|M₁|`, `|M₃|`, lengths.
+    n0: f64,
+    n1: f64,
+    n3: f64,
+    /// `(M₀×M₁)·L`, `(M₀×M₃)·L`, `(M₁×M₃)·L`.
+    ta: f64,
+    tb: f64,
+    tc: f64,
+}
+
+impl Rounding {
+    /// The per-matrix terms of [`Rounding::bound`], computed once per matrix and light.
+    #[inline]
+    fn new(m: &DMat4, l: DVec3) -> Self {
+        let abs = DMat4::from_cols(
+            m.x_axis.abs(),
+            m.y_axis.abs(),
+            m.z_axis.abs(),
+            m.w_axis.abs(),
+        );
+        let (r0, r1, r3) = (
+            m.row(0).truncate(),
+            m.row(1).truncate(),
+            m.row(3).truncate(),
+        );
+        Self {
+            abs,
+            abs1: abs.row(1).truncate(),
+            abs3: abs.row(3).truncate(),
+            n0: r0.length(),
+            n1: r1.length(),
+            n3: r3.length(),
+            ta: r0.cross(r1).dot(l),
+            tb: r0.cross(r3).dot(l),
+            tc: r1.cross(r3).dot(l),
+        }
+    }
+
+    /// The bound at `p` (see above), with `h`, `G_s`, `G_t` as computed there.
+    #[inline]
+    fn bound(&self, p: DVec3, h: DVec4, gs: DVec3, gt: DVec3, l: DVec3) -> f64 {
+        const C: f64 = 8.0 * 0.5 * f64::EPSILON;
+        let a = self.abs * p.abs().extend(1.0);
+        // g: the errors of h through G_t.
+        let et = C * (a.w * self.abs1 + a.y * self.abs3).length();
+        let g = (gt - gt.dot(l) * l).length();
+        let rel_g = et / g;
+        // D: the errors of h through the factorised form, then those of forming G and D from h.
+        let bracket = h.w * self.ta - h.y * self.tb + h.x * self.tc;
+        let e_bracket = C * (a.w * self.ta.abs() + a.y * self.tb.abs() + a.x * self.tc.abs());
+        let rel_w = C * a.w / h.w.abs();
+        let d = gs.cross(gt).dot(l).abs();
+        let (ls, lt) = (gs.length(), gt.length());
+        let gs_perp = (gs - gs.dot(l) * l).length();
+        let es = C * (h.w.abs() * self.n0 + h.x.abs() * self.n3);
+        let et_form = C * (h.w.abs() * self.n1 + h.y.abs() * self.n3);
+        let rel_d =
+            rel_w + e_bracket / bracket.abs() + (es * g + gs_perp * et_form + C * ls * lt) / d;
+        // Not `max`: a NaN must survive to fail the caller's test. h.w enters squared.
+        rel_g + rel_d + 2.0 * rel_w
+    }
 }
 
 #[cold]
@@ -241,7 +272,7 @@ pub fn point_error(
     let h = *m * p.extend(1.0);
     let g_s = h.w * m.row(0).truncate() - h.x * m.row(3).truncate();
     let g_t = h.w * m.row(1).truncate() - h.y * m.row(3).truncate();
-    let bound = rounding_bound(m, p, h, g_s, g_t, l);
+    let bound = Rounding::new(m, l).bound(p, h, g_s, g_t, l);
     if bound.is_nan() || bound > ROUNDING_TOLERANCE {
         return Err(ill_conditioned(p, bound));
     }
@@ -329,6 +360,7 @@ fn vertex_max_fast(
     let r1 = m.row(1).truncate();
     let r3 = m.row(3).truncate();
     let tol2 = LIGHT_RAY_TOLERANCE * LIGHT_RAY_TOLERANCE * (1.0 - 1e-9);
+    let rounding = Rounding::new(m, l);
     let t = view.tan_half_fov();
     let (mut mx, mut mz) = (0.0f64, 0.0f64);
     let mut ok = true;
@@ -353,7 +385,7 @@ fn vertex_max_fast(
             && pz.is_finite()
             && px > 0.0
             && pz > 0.0
-            && rounding_bound(m, *p, h, gs, gt, l) <= ROUNDING_TOLERANCE * (1.0 - 1e-9);
+            && rounding.bound(*p, h, gs, gt, l) <= ROUNDING_TOLERANCE * (1.0 - 1e-9);
         // A NaN here fails `ok`, so the one-instruction max is `f64::max` for every kept value.
         mx = crate::build::warp::fmax(mx, px);
         mz = crate::build::warp::fmax(mz, pz);
