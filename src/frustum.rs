@@ -12,7 +12,12 @@ use glam::DVec3;
 /// A symmetric view frustum: near and far plane depths, half of the vertical field of view,
 /// and the aspect ratio (width / height) of the image.
 ///
-/// Domain: `0 < near < far`, both finite; `0 < half_fov < π/2`; `aspect > 0`. The papers'
+/// Domain: `0 < near < far`, both finite; `0 < half_fov < π/2`; `aspect > 0`; and every
+/// quantity the frustum's accessors and the builders derive from these is a finite, normal `f64`:
+/// the depth ratio f/n, tan θ, the near plane's half extents `n tan θ` and `n tan θ · aspect`
+/// (the image beam width at the near plane, the denominator of every error), the far plane's
+/// half extents, and LiSPSM's n + √(f n). This excludes subnormal near planes and fields of
+/// view, whose one or few significant bits make every derived value meaningless. The papers'
 /// analysis assumes a square image (`aspect = 1`, the default of [`ViewFrustum::new`]).
 ///
 /// | crate | Lloyd 2005 | Lloyd 2006 | Barroso & Celes | Zhang et al. |
@@ -34,7 +39,8 @@ impl ViewFrustum {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] naming `near`, `far` or `half_fov` when a value is not finite,
-    /// `near ≤ 0`, `far ≤ near`, or `half_fov ∉ (0, π/2)`.
+    /// `near ≤ 0`, `far ≤ near`, `half_fov ∉ (0, π/2)`, or a derived quantity leaves the type's
+    /// domain (as [`ViewFrustum::with_aspect`]: f/n overflowing, a subnormal near plane or tan θ).
     ///
     /// ```
     /// # use shadow_aliasing::ViewFrustum;
@@ -50,14 +56,19 @@ impl ViewFrustum {
     /// A frustum with the given aspect ratio (width / height); `half_fov` is vertical.
     ///
     /// # Errors
-    /// As [`ViewFrustum::new`], `aspect` when it is not finite and positive, and `far` when the far
-    /// plane's half extent `f tan θ · max(aspect, 1)` overflows `f64`.
+    /// As [`ViewFrustum::new`], `aspect` when it is not finite and positive, `far` when the far
+    /// plane's half extent `f tan θ · max(aspect, 1)`, the ratio f/n or n + √(f n) overflows
+    /// `f64`, and `near` or `half_fov` when tan θ or the near plane's half extent
+    /// `n tan θ · min(aspect, 1)` is zero or subnormal (the type's domain).
     pub fn with_aspect(near: f64, far: f64, half_fov: f64, aspect: f64) -> Result<Self> {
         let (near, far) = depths(near, far)?;
         let half_fov = in_open("half_fov", half_fov, 0.0, std::f64::consts::FRAC_PI_2)?;
         let aspect = positive("aspect", aspect)?;
         let tan_half_fov = half_fov.tan();
-        check_extent(far, tan_half_fov, aspect)?;
+        if !(tan_half_fov.is_normal() && tan_half_fov > 0.0) {
+            return Err(half_fov_too_small(half_fov));
+        }
+        check_extent(near, far, tan_half_fov, aspect)?;
         Ok(Self {
             near,
             far,
@@ -115,11 +126,11 @@ impl ViewFrustum {
     /// The same frustum cut to the depth range `[near, far]` (a z-partition).
     ///
     /// # Errors
-    /// As [`ViewFrustum::new`].
+    /// As [`ViewFrustum::with_aspect`].
     #[inline]
     pub fn with_depth_range(&self, near: f64, far: f64) -> Result<Self> {
         let (near, far) = depths(near, far)?;
-        check_extent(far, self.tan_half_fov, self.aspect)?;
+        check_extent(near, far, self.tan_half_fov, self.aspect)?;
         Ok(Self { near, far, ..*self })
     }
 
@@ -164,14 +175,59 @@ fn depths(near: f64, far: f64) -> Result<(f64, f64)> {
     Ok((near, far))
 }
 
-/// The far plane's half extent `f tan θ max(aspect, 1)` must be finite.
+/// The derived quantities of the type's domain: the far plane's half extent `f tan θ max(aspect, 1)`,
+/// f/n and n + √(f n) finite; the near plane's half extent `n tan θ min(aspect, 1)` normal.
 #[inline]
-fn check_extent(far: f64, tan_half_fov: f64, aspect: f64) -> Result<()> {
-    if (far * tan_half_fov * aspect.max(1.0)).is_finite() {
-        Ok(())
-    } else {
-        Err(far_too_large(far))
+fn check_extent(near: f64, far: f64, tan_half_fov: f64, aspect: f64) -> Result<()> {
+    if !(far * tan_half_fov * aspect.max(1.0)).is_finite() {
+        return Err(far_too_large(far));
     }
+    if !(far / near).is_finite() || !(near + crate::warp::sqrt_fn(near, far)).is_finite() {
+        return Err(ratio_too_large(near, far));
+    }
+    if !(near * tan_half_fov * aspect.min(1.0)).is_normal() {
+        return Err(near_too_small(near, tan_half_fov));
+    }
+    Ok(())
+}
+
+#[cold]
+#[inline(never)]
+fn half_fov_too_small(half_fov: f64) -> Error {
+    Error::invalid(
+        "half_fov",
+        format!(
+            "is too small: tan θ must be a normal f64, at least {} (got half_fov={})",
+            fmt_num(f64::MIN_POSITIVE),
+            fmt_num(half_fov)
+        ),
+    )
+}
+
+#[cold]
+#[inline(never)]
+fn ratio_too_large(near: f64, far: f64) -> Error {
+    Error::invalid(
+        "far",
+        format!(
+            "is too large for near: far/near and near + √(far near) must be finite (got near={}, far={})",
+            fmt_num(near),
+            fmt_num(far)
+        ),
+    )
+}
+
+#[cold]
+#[inline(never)]
+fn near_too_small(near: f64, tan_half_fov: f64) -> Error {
+    Error::invalid(
+        "near",
+        format!(
+            "is too small: the near plane's half extent near tan θ min(aspect, 1) must be a normal f64 (got near={}, tan θ={})",
+            fmt_num(near),
+            fmt_num(tan_half_fov)
+        ),
+    )
 }
 
 #[cold]

@@ -47,7 +47,7 @@
 pub use crate::analytic::partition::{SplitScheme, Splits, MAX_PARTITIONS};
 use crate::build::warp::{warp_prepared, PreparedLight};
 use crate::build::{light_space, warp, ShadowMatrix, WarpRule};
-use crate::error::{fmt_num, in_closed, Error, Result};
+use crate::error::{finite_result, fmt_num, in_closed, Error, Result};
 use crate::frustum::{unit_light_dir, NPrime, ViewFrustum};
 use crate::measure::sweep::{vertex_max, VertexMax};
 use glam::{DMat4, DVec3, DVec4};
@@ -274,10 +274,10 @@ impl StableCascade {
 /// With `k² = tan²θ (1 + aspect²)` (a corner at depth z is `z k` from the axis), equating the
 /// distances to a near and a far corner, `(c − n)² + n² k² = (f − c)² + f² k²`, gives
 /// `c = (n + f)(1 + k²)/2`; when that lies beyond the far plane the far cap alone decides and
-/// `c = f`. Then `R = √((f − c)² + f² k²)`.
+/// `c = f`. Then `R = √((f − c)² + f² k²)`, computed without squaring a length.
 ///
 /// # Errors
-/// As [`ViewFrustum::with_depth_range`].
+/// As [`ViewFrustum::with_depth_range`]; [`Error::Degenerate`] when `R` overflows `f64`.
 ///
 /// ```
 /// # use shadow_aliasing::build::cascades::bounding_sphere;
@@ -290,10 +290,11 @@ impl StableCascade {
 /// ```
 pub fn bounding_sphere(view: &ViewFrustum, near: f64, far: f64) -> Result<(f64, f64)> {
     let sub = view.with_depth_range(near, far)?;
-    let t = sub.tan_half_fov();
-    let k2 = t * t * (1.0 + sub.aspect() * sub.aspect());
-    let c = (0.5 * (near + far) * (1.0 + k2)).min(far);
-    let r = ((far - c) * (far - c) + far * far * k2).sqrt();
+    // k = tan θ √(1 + aspect²); no square of a length is formed, so nothing overflows before
+    // the radius itself would (a k² or (n + f)(1 + k²) that overflows puts c at f, as it should).
+    let k = sub.tan_half_fov() * 1f64.hypot(sub.aspect());
+    let c = ((0.5 * near + 0.5 * far) * (1.0 + k * k)).min(far);
+    let r = finite_result("the bounding sphere's radius", (far - c).hypot(far * k))?;
     Ok((c, r))
 }
 

@@ -94,9 +94,24 @@ impl LightSpace {
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
 pub fn light_space(light_dir: DVec3, axis: DVec3) -> Result<LightSpace> {
-    let l = unit_light_dir(light_dir)?;
-    let a = unit_axis(axis)?;
+    // Both vectors are scaled to a largest component of 1 before they are normalised: the sum
+    // of squares of a vector with components near 10⁻¹⁵⁸ is subnormal (a light direction of
+    // length 1 + 8·10⁻⁹ came out of it), and one near 10¹⁵⁵ overflows.
+    let l = unit_light_dir(scaled(light_dir))?;
+    let a = unit_axis(scaled(axis))?;
     Ok(light_space_unit(l, a))
+}
+
+/// `v / max|vᵢ|` for a finite, non-zero `v` (the same direction, largest component ±1); any other
+/// `v` unchanged, for the validators to name.
+#[inline]
+fn scaled(v: DVec3) -> DVec3 {
+    let m = v.abs().max_element();
+    if v.is_finite() && m > 0.0 {
+        v / m
+    } else {
+        v
+    }
 }
 
 /// [`light_space`] for a unit light direction `l` and a unit axis `a`, already validated.

@@ -41,7 +41,7 @@
 //! uniform map.
 
 use crate::build::warp::FrustumInLight;
-use crate::error::Result;
+use crate::error::{finite_result, Error, Result};
 use crate::frustum::{NPrime, ViewFrustum};
 use glam::DVec3;
 
@@ -112,9 +112,11 @@ impl Vertices {
             gx = gx.max(wd);
             gz = gz.max(w * wd);
         }
+        // Divide by tan θ (up to 1.6·10¹⁶) before multiplying by gx (up to 1/n): the maxima are
+        // finite whenever they are representable, not only when u_h gx is.
         let u_h = 0.5 * (u_hi - u_lo);
-        let mz = self.extent * gz / ((1.0 + rho * self.extent) * 2.0 * self.tan);
-        (u_h * gx / self.tan, mz)
+        let mz = (self.extent / ((1.0 + rho * self.extent) * 2.0 * self.tan)) * gz;
+        ((u_h / self.tan) * gx, mz)
     }
 }
 
@@ -188,9 +190,23 @@ const SCAN: usize = 64;
 pub(crate) fn min_storage(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
     let d = fl.delta;
     let verts = Vertices::new(view, fl);
+    // S̄ relative to the uniform map's, (M_x/M_x,∞)(M_z/M_z,∞): the same minimiser, and finite
+    // wherever the two ratios are, even when S̄ itself overflows `f64`. A value that is not
+    // finite (an overflowing ratio, or NaN) is never chosen.
+    let (mx0, mz0) = verts.maxima(0.0);
+    let (sx, sz) = if mx0.is_normal() && mz0.is_normal() {
+        (1.0 / mx0, 1.0 / mz0)
+    } else {
+        (1.0, 1.0)
+    };
     let sbar = |rho: f64| {
         let (mx, mz) = verts.maxima(rho);
-        mx * mz
+        let v = (mx * sx) * (mz * sz);
+        if v.is_finite() {
+            v
+        } else {
+            f64::INFINITY
+        }
     };
     // log n′ from 10⁻³ min(n, Δ) to 10⁶ max(n, Δ); n′ = ∞ separately.
     let lo = (1e-3 * view.near().min(d)).ln();
@@ -271,7 +287,8 @@ pub(crate) fn min_storage(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
 /// (module docs), with the maxima it achieves.
 ///
 /// # Errors
-/// [`crate::Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector.
+/// [`crate::Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector;
+/// [`crate::Error::Degenerate`] when the maxima or S̄ of the optimum overflow `f64`.
 ///
 /// ```
 /// # use shadow_aliasing::build::minimax::minimax_mz_n_prime;
@@ -284,7 +301,26 @@ pub(crate) fn min_storage(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
 /// ```
 pub fn minimax_mz_n_prime(view: &ViewFrustum, light_dir: DVec3) -> Result<Optimum> {
     let fl = FrustumInLight::new(view, light_dir)?;
-    Ok(minimax_mz(view, &fl))
+    checked(minimax_mz(view, &fl))
+}
+
+/// The optimum, or [`Error::Degenerate`] when its maxima or their product are not finite
+/// (the frustum's errors overflow `f64` for every n′).
+fn checked(o: Optimum) -> Result<Optimum> {
+    finite_result("M_x of the minimax map", o.max_mx)?;
+    finite_result("M_z of the minimax map", o.max_mz)?;
+    finite_result(
+        "the storage factor M_x M_z of the minimax map",
+        o.storage_factor(),
+    )?;
+    if o.max_mx > 0.0 && o.max_mz > 0.0 {
+        Ok(o)
+    } else {
+        Err(Error::Degenerate(format!(
+            "the minimax map's maxima are not positive (M_x = {}, M_z = {})",
+            o.max_mx, o.max_mz
+        )))
+    }
 }
 
 /// The n′ ∈ (0, ∞] minimising the storage factor S̄ = M_x M_z of the view frustum's fitted warp
@@ -292,7 +328,8 @@ pub fn minimax_mz_n_prime(view: &ViewFrustum, light_dir: DVec3) -> Result<Optimu
 /// evaluations of the eight vertex errors.
 ///
 /// # Errors
-/// [`crate::Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector.
+/// [`crate::Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector;
+/// [`crate::Error::Degenerate`] when the maxima or S̄ of the optimum overflow `f64`.
 ///
 /// ```
 /// # use shadow_aliasing::build::minimax::minimax_n_prime;
@@ -308,5 +345,5 @@ pub fn minimax_mz_n_prime(view: &ViewFrustum, light_dir: DVec3) -> Result<Optimu
 /// ```
 pub fn minimax_n_prime(view: &ViewFrustum, light_dir: DVec3) -> Result<Optimum> {
     let fl = FrustumInLight::new(view, light_dir)?;
-    Ok(min_storage(view, &fl))
+    checked(min_storage(view, &fl))
 }

@@ -37,6 +37,109 @@ use glam::{DMat4, DVec3, DVec4};
 /// Relative tolerance for "s and t are constant along light rays".
 pub const LIGHT_RAY_TOLERANCE: f64 = 1e-7;
 
+/// The largest bound on the relative rounding error of the measured beam widths that
+/// [`point_error`] and [`frustum_max`] accept (see "Domain" in [`frustum_max`]): the values
+/// they return are accurate to about this, relative. Where the bound is 5 (θ = π/2 − 1 ulp) the
+/// values measured were 21 % off; the crate's extreme test cameras (f/n = 10⁶, θ = 80°, PSM with
+/// the light along the view axis, n′ = 10⁻⁵ n) have bounds below 2·10⁻⁷.
+pub const ROUNDING_TOLERANCE: f64 = 1e-6;
+
+/// A bound on the relative rounding error of the widths measured at `p` with `h = M (p, 1)`,
+/// `G_s = h.w M₀ − h.x M₃`, `G_t = h.w M₁ − h.y M₃` (computed in `f64`), `D = (G_s × G_t)·L` and
+/// `g = |G_t − (G_t·L) L|`, to first order in the unit roundoff u:
+///
+/// - `h` is computed with errors `|δhᵢ| ≤ 4u aᵢ`, `aᵢ = Σₖ |Mᵢₖ| |(p, 1)ₖ|`, carried into `G_t`
+///   (`|δG_t| ≤ 4u (a_w |M₁| + a_y |M₃|)`) and, through the identity
+///   `D = h.w (h.w (M₀×M₁)·L − h.y (M₀×M₃)·L + h.x (M₁×M₃)·L)`, which holds for any `h` (so the
+///   computed `G_s × G_t` is this form of the computed `h`, whose triple products are never
+///   formed), into `D`;
+/// - forming `G_s`, `G_t` from `h` and the cross and dot products add `2u` relative errors of
+///   their terms.
+///
+/// The same bound holds, to first order, for relative changes of u in the matrix entries (the
+/// rounding of the matrix itself). `NaN` or `inf` when `g`, `D` or `h.w` is zero.
+#[derive(Debug, Clone, Copy)]
+struct Rounding {
+    /// `|M|`, entrywise.
+    abs: DMat4,
+    /// `|M₁|`, `|M₃|` (first three entries), entrywise.
+    abs1: DVec3,
+    abs3: DVec3,
+    /// `|M₀|`, `|M₁|`, `|M₃|`, lengths.
+    n0: f64,
+    n1: f64,
+    n3: f64,
+    /// `(M₀×M₁)·L`, `(M₀×M₃)·L`, `(M₁×M₃)·L`.
+    ta: f64,
+    tb: f64,
+    tc: f64,
+}
+
+impl Rounding {
+    /// The per-matrix terms of [`Rounding::bound`], computed once per matrix and light.
+    #[inline]
+    fn new(m: &DMat4, l: DVec3) -> Self {
+        let abs = DMat4::from_cols(
+            m.x_axis.abs(),
+            m.y_axis.abs(),
+            m.z_axis.abs(),
+            m.w_axis.abs(),
+        );
+        let (r0, r1, r3) = (
+            m.row(0).truncate(),
+            m.row(1).truncate(),
+            m.row(3).truncate(),
+        );
+        Self {
+            abs,
+            abs1: abs.row(1).truncate(),
+            abs3: abs.row(3).truncate(),
+            n0: r0.length(),
+            n1: r1.length(),
+            n3: r3.length(),
+            ta: r0.cross(r1).dot(l),
+            tb: r0.cross(r3).dot(l),
+            tc: r1.cross(r3).dot(l),
+        }
+    }
+
+    /// The bound at `p` (see above), with `h`, `G_s`, `G_t` as computed there.
+    #[inline]
+    fn bound(&self, p: DVec3, h: DVec4, gs: DVec3, gt: DVec3, l: DVec3) -> f64 {
+        const C: f64 = 8.0 * 0.5 * f64::EPSILON;
+        let a = self.abs * p.abs().extend(1.0);
+        // g: the errors of h through G_t.
+        let et = C * (a.w * self.abs1 + a.y * self.abs3).length();
+        let g = (gt - gt.dot(l) * l).length();
+        let rel_g = et / g;
+        // D: the errors of h through the factorised form, then those of forming G and D from h.
+        let bracket = h.w * self.ta - h.y * self.tb + h.x * self.tc;
+        let e_bracket = C * (a.w * self.ta.abs() + a.y * self.tb.abs() + a.x * self.tc.abs());
+        let rel_w = C * a.w / h.w.abs();
+        let d = gs.cross(gt).dot(l).abs();
+        let (ls, lt) = (gs.length(), gt.length());
+        let gs_perp = (gs - gs.dot(l) * l).length();
+        let es = C * (h.w.abs() * self.n0 + h.x.abs() * self.n3);
+        let et_form = C * (h.w.abs() * self.n1 + h.y.abs() * self.n3);
+        let rel_d =
+            rel_w + e_bracket / bracket.abs() + (es * g + gs_perp * et_form + C * ls * lt) / d;
+        // Not `max`: a NaN must survive to fail the caller's test. h.w enters squared.
+        rel_g + rel_d + 2.0 * rel_w
+    }
+}
+
+#[cold]
+#[inline(never)]
+fn ill_conditioned(p: DVec3, bound: f64) -> Error {
+    Error::Degenerate(format!(
+        "the shadow map is ill-conditioned at {p}: rounding in f64 can change its texel widths \
+         there by a relative {} (more than {ROUNDING_TOLERANCE:e}), so no exact measurement exists \
+         (the map's coordinates over the frustum are a few ulps apart; narrow the field of view \
+         or the depth range)",
+        crate::error::fmt_num(bound)
+    ))
+}
+
 /// A shadow matrix to measure: the matrix (eye space → light clip space, OpenGL x, y) and the
 /// eye-space direction the light travels.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -123,8 +226,9 @@ pub fn st_gradients(matrix: &DMat4, p: DVec3) -> Result<(f64, f64, DVec3, DVec3,
 /// # Errors
 /// [`Error::InvalidArgument`] naming `point` for a non-finite point or depth ≤ 0, or `matrix` when
 /// s or t vary along light rays (not a directional-light shadow map for `light_dir`);
-/// [`Error::Degenerate`] when the point is behind the map's centre of projection or the map is
-/// singular there.
+/// [`Error::Degenerate`] when the point is behind the map's centre of projection, the map is
+/// singular there, or so ill-conditioned there that rounding in `f64` can change the widths by
+/// more than [`ROUNDING_TOLERANCE`] (relative).
 pub fn point_error(
     view: &ViewFrustum,
     shadow: &ShadowMap,
@@ -164,6 +268,14 @@ pub fn point_error(
             "the shadow map is singular at {p}: texels have no finite extent there"
         )));
     }
+    let m = &shadow.matrix;
+    let h = *m * p.extend(1.0);
+    let g_s = h.w * m.row(0).truncate() - h.x * m.row(3).truncate();
+    let g_t = h.w * m.row(1).truncate() - h.y * m.row(3).truncate();
+    let bound = Rounding::new(m, l).bound(p, h, g_s, g_t, l);
+    if bound.is_nan() || bound > ROUNDING_TOLERANCE {
+        return Err(ill_conditioned(p, bound));
+    }
     let w_i = 2.0 * z * view.tan_half_fov() / res.image();
     let w_ls = grad_t / (det * res.s());
     let w_lt = 1.0 / (grad_t * res.t());
@@ -192,9 +304,21 @@ pub struct FrustumError {
 /// (Lloyd 2006 §4.4: the beam widths are monotonic over the convex frustum, so the maxima lie at
 /// vertices; [`frustum_max_sampled`] checks the claim).
 ///
+/// # Domain
+///
+/// The claim is exact for the papers' warps (t a function of one light-space coordinate), whose
+/// `|G_t⊥|` is constant and whose `D` is affine over the frustum, and it is exact *in `f64`* only
+/// where the matrix is well conditioned. With half the field of view within a few ulps of π/2
+/// the frustum is ~10¹⁶ times wider than it is deep, a warp's t varies over it by a few ulps of 1,
+/// and `G_t = h.w M₁ − h.y M₃` cancels to its last digits: the value at a vertex is rounding
+/// noise (n = 1, f = 2, θ = π/2 − 1 ulp, light (0, −1, −1), LiSPSM 1/sin γ: M_z came out 2.2·10¹⁵ at
+/// the vertices and 2.8·10¹⁵ at interior samples, 21 % apart). So each vertex's widths carry a
+/// first-order rounding bound (the error of `h` carried through every cancellation), and a vertex
+/// whose bound exceeds [`ROUNDING_TOLERANCE`] is an error, not a number.
+///
 /// # Errors
-/// As [`point_error`], for any vertex; [`Error::Degenerate`] when M_x, M_z or their product
-/// overflows `f64`.
+/// As [`point_error`], for any vertex (including the ill-conditioning of the Domain section);
+/// [`Error::Degenerate`] when M_x, M_z or their product overflows `f64`.
 pub fn frustum_max(view: &ViewFrustum, shadow: &ShadowMap) -> Result<FrustumError> {
     let corners = view.corners();
     match vertex_max_fast(view, shadow, &corners) {
@@ -236,6 +360,7 @@ fn vertex_max_fast(
     let r1 = m.row(1).truncate();
     let r3 = m.row(3).truncate();
     let tol2 = LIGHT_RAY_TOLERANCE * LIGHT_RAY_TOLERANCE * (1.0 - 1e-9);
+    let rounding = Rounding::new(m, l);
     let t = view.tan_half_fov();
     let (mut mx, mut mz) = (0.0f64, 0.0f64);
     let mut ok = true;
@@ -259,7 +384,8 @@ fn vertex_max_fast(
             && px.is_finite()
             && pz.is_finite()
             && px > 0.0
-            && pz > 0.0;
+            && pz > 0.0
+            && rounding.bound(*p, h, gs, gt, l) <= ROUNDING_TOLERANCE * (1.0 - 1e-9);
         // A NaN here fails `ok`, so the one-instruction max is `f64::max` for every kept value.
         mx = crate::build::warp::fmax(mx, px);
         mz = crate::build::warp::fmax(mz, pz);
