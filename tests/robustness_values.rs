@@ -192,7 +192,7 @@ fn bounding_sphere_of_huge_frustum_is_finite() {
 fn frustum_max_refuses_ill_conditioned_maps() {
     let l = DVec3::new(0.0, -1.0, -1.0);
     let view = ViewFrustum::new(1.0, 2.0, FRAC_PI_2.next_down()).unwrap();
-    let s = warp(&view, l, WarpRule::LispsmSin).unwrap().shadow_map();
+    let s = warp(&view, l, WarpRule::Lispsm).unwrap().shadow_map();
     let e = frustum_max(&view, &s).unwrap_err();
     assert!(matches!(e, Error::Degenerate(_)), "{e}");
     assert!(e.to_string().contains("ill-conditioned"), "{e}");
@@ -202,7 +202,7 @@ fn frustum_max_refuses_ill_conditioned_maps() {
     // Where the answer is accepted it is the dense sampling's maximum, to the tolerance.
     for th in [1.0, 1.5, 1.57, FRAC_PI_2 - 1e-6, FRAC_PI_2 - 1e-9] {
         let view = ViewFrustum::new(1.0, 2.0, th).unwrap();
-        for r in [WarpRule::LispsmSin, WarpRule::Eta(-0.5), WarpRule::Uniform] {
+        for r in [WarpRule::Lispsm, WarpRule::Eta(-0.5), WarpRule::Uniform] {
             let s = warp(&view, l, r).unwrap().shadow_map();
             let (Ok(exact), Ok(dense)) =
                 (frustum_max(&view, &s), frustum_max_sampled(&view, &s, 17))

@@ -61,12 +61,12 @@ fn fov(u: &mut Unstructured) -> Result<f64> {
 }
 
 fn rule(u: &mut Unstructured) -> Result<WarpRule> {
-    Ok(match u.int_in_range(0u8..=13)? {
+    Ok(match u.int_in_range(0u8..=14)? {
         0 => WarpRule::Uniform,
         1 => WarpRule::Eta(num(u)?),
         2 => WarpRule::Psm,
-        3 => WarpRule::Lispsm,
-        4 => WarpRule::LispsmSin,
+        3 => WarpRule::LispsmFixed,
+        4 => WarpRule::Lispsm,
         5 => WarpRule::Barroso(Falloff::Barroso),
         6 => WarpRule::Barroso(Falloff::Zhang),
         7 => WarpRule::Tsm { focus: num(u)? },
@@ -78,6 +78,9 @@ fn rule(u: &mut Unstructured) -> Result<WarpRule> {
         },
         11 => WarpRule::Ogre,
         12 => WarpRule::Minimax,
+        13 => WarpRule::OgreOrtho {
+            shadow_distance: num(u)?,
+        },
         _ => WarpRule::MinimaxMz,
     })
 }
