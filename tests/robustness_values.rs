@@ -219,3 +219,63 @@ fn frustum_max_refuses_ill_conditioned_maps() {
         }
     }
 }
+
+/// The `[0, 1]`-depth form of a map is as valid as the OpenGL form it comes from (fuzz finding,
+/// docs/fuzzing.md): at n = 2.2·10⁻³⁰⁸, f = π/2 (f/n = 7·10³⁰⁷), θ = 1.043, a tiny light and
+/// `Lispsm`, the OpenGL matrix passed the clip check but its `[0, 1]` form, depth row
+/// (M₂ + M₃)/2, put a corner at z = −0.00175. Every builder now checks both forms: the map is
+/// either inside in both, or a typed `Degenerate`.
+#[test]
+fn zero_to_one_depth_is_checked_too() {
+    use shadow_aliasing::build::ClipDepth;
+    let view = ViewFrustum::new(
+        2.2250738585072014e-308,
+        1.5707963267948963,
+        1.0430829673124253,
+    )
+    .unwrap();
+    let l = DVec3::new(
+        -0.00000009999847412109375,
+        -0.00000000037384033203125,
+        -0.00000008085479736328126,
+    );
+    for rule in [
+        WarpRule::Lispsm,
+        WarpRule::Uniform,
+        WarpRule::Psm,
+        WarpRule::Minimax,
+    ] {
+        match warp(&view, l, rule) {
+            Ok(s) => {
+                let m01 = s.with_clip_depth(ClipDepth::ZeroToOne);
+                for c in view.corners() {
+                    let h = m01 * c.extend(1.0);
+                    let z = h.z / h.w;
+                    assert!((-1e-6..=1.0 + 1e-6).contains(&z), "{rule:?}: {c} → z = {z}");
+                }
+            }
+            Err(Error::Degenerate(m)) => assert!(m.contains("cannot be represented"), "{m}"),
+            Err(e) => panic!("{rule:?}: {e:?}"),
+        }
+    }
+}
+
+/// Fuzz finding (docs/fuzzing.md): `face_partitions` answered `Ok` with no partitions at
+/// n = 2.2·10⁻³⁰⁸, f = θ = π/2 − 1 ulp, light (π/2 − 1 ulp, π/2 − 1 ulp, −0). An empty result is
+/// never a success: maps, or a typed error.
+#[test]
+fn face_partitions_are_never_empty() {
+    use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
+    let hp = 1.5707963267948963;
+    let Ok(view) = ViewFrustum::new(2.2250738585072014e-308, hp, hp) else {
+        return;
+    };
+    for warp in [FaceWarp::Uniform, FaceWarp::Psm, FaceWarp::Lispsm] {
+        for k in [1, 3] {
+            match face_partitions(&view, DVec3::new(hp, hp, -0.0), warp, k) {
+                Ok(f) => assert!(!f.is_empty(), "{warp:?} k = {k}: empty"),
+                Err(e) => assert!(!e.to_string().is_empty()),
+            }
+        }
+    }
+}

@@ -232,12 +232,9 @@ fn run(u: &mut Unstructured) -> Result<()> {
             };
             match face_partitions(&view, light, fw, k) {
                 Ok(fp) => {
-                    // Known finding, reported (src/build/faces.rs is not this target's to fix):
-                    // `Ok` with no partitions, e.g. n = 2.2e-308, f = θ = π/2 − 1 ulp, light
-                    // (π/2 − 1 ulp, π/2 − 1 ulp, −0). Checked by `cargo fuzz run` once fixed.
-                    if fp.is_empty() {
-                        return Ok(());
-                    }
+                    // An empty result is never a success (the finding at n = 2.2e-308,
+                    // f = θ = π/2 − 1 ulp, light (π/2 − 1 ulp, π/2 − 1 ulp, −0), now fixed).
+                    assert!(!fp.is_empty(), "{what} {fw:?}: Ok with no partitions");
                     for p in fp.iter() {
                         let what = format!("{what} {fw:?} face {:?}", p.face);
                         in_clip(&p.shadow.matrix, &p.vertices, -1.0, &what);

@@ -62,14 +62,7 @@ impl ShadowMatrix {
     pub fn with_clip_depth(&self, depth: ClipDepth) -> DMat4 {
         match depth {
             ClipDepth::NegOneToOne => self.matrix,
-            ClipDepth::ZeroToOne => {
-                let r2 = self.matrix.row(2);
-                let r3 = self.matrix.row(3);
-                let z = 0.5 * (r2 + r3);
-                let mut t = self.matrix.transpose();
-                t.z_axis = z;
-                t.transpose()
-            }
+            ClipDepth::ZeroToOne => zero_to_one(&self.matrix),
         }
     }
 
@@ -113,4 +106,16 @@ pub(crate) fn project(m: &DMat4, p: DVec3) -> Option<DVec3> {
     } else {
         None
     }
+}
+
+/// The `[0, 1]`-depth form of an OpenGL-depth map: depth row `(M₂ + M₃)/2`. Every builder checks
+/// its matrix in both forms before returning it (`build::warp::verify_clip`): where the map's w
+/// spans many orders of magnitude the entrywise sum rounds differently from the rows it
+/// combines, and the `[0, 1]` form can leave the clip volume while the OpenGL form does not.
+#[inline]
+pub(crate) fn zero_to_one(m: &DMat4) -> DMat4 {
+    let z = 0.5 * (m.row(2) + m.row(3));
+    let mut t = m.transpose();
+    t.z_axis = z;
+    t.transpose()
 }

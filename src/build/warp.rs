@@ -33,11 +33,11 @@
 
 use crate::analytic::tsm::tsm_eta_finite;
 use crate::build::lightspace::{light_space_unit, LightSpace};
-use crate::build::matrix::ShadowMatrix;
+use crate::build::matrix::{zero_to_one, ShadowMatrix};
 use crate::build::minimax;
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{unit_light_dir, LightAngle, NPrime, ViewFrustum};
-use glam::{DMat4, DVec3};
+use glam::{DMat4, DVec3, DVec4};
 
 pub use crate::analytic::tilted::Falloff;
 
@@ -305,13 +305,10 @@ pub fn fit_warp(points: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DM
 /// frustum's depth ratio is beyond what f64 can warp (for the LiSPSM warp the error of w at the far
 /// end is about √(f/n) · 10⁻¹⁶, for PSM's n′ = n about (f/n) · 10⁻¹⁶), and the matrix is refused.
 pub(crate) fn verify_clip<'a>(m: &DMat4, points: impl Iterator<Item = &'a DVec3>) -> Result<()> {
-    const SLACK: f64 = 1.0 + 1e-6;
+    let m01 = zero_to_one(m);
     for p in points {
         let h = *m * p.extend(1.0);
-        let ok = h.w >= 0.5
-            && h.x.abs() <= SLACK * h.w
-            && h.y.abs() <= SLACK * h.w
-            && h.z.abs() <= SLACK * h.w;
+        let ok = in_clip(h) && in_unit_depth((m01 * p.extend(1.0)).z, h.w);
         if !ok {
             return Err(Error::Degenerate(format!(
                 "the map cannot be represented in f64 for this frustum (a point maps to {h}): \
@@ -563,22 +560,47 @@ pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4>
 /// to exact sign changes: 6 vector products instead of 32.
 #[inline]
 fn clip_ok_at_corners(m: &DMat4, corners: &[DVec3; 8]) -> bool {
-    const SLACK: f64 = 1.0 + 1e-6;
+    let m01 = zero_to_one(m);
     let mut ok = true;
     for k in 0..2 {
         let c = corners[4 * k + 2]; // (+w, +h, −d)
         let a = m.x_axis * c.x;
         let b = m.y_axis * c.y;
         let z = m.z_axis * c.z;
-        for h in [(-a - b) + z, (a - b) + z, (a + b) + z, (-a + b) + z] {
+        let (a1, b1, z1) = (m01.x_axis.z * c.x, m01.y_axis.z * c.y, m01.z_axis.z * c.z);
+        let z01 = [
+            (-a1 - b1) + z1,
+            (a1 - b1) + z1,
+            (a1 + b1) + z1,
+            (-a1 + b1) + z1,
+        ];
+        for (h, z01) in [(-a - b) + z, (a - b) + z, (a + b) + z, (-a + b) + z]
+            .into_iter()
+            .zip(z01)
+        {
             let h = h + m.w_axis;
-            ok &= h.w >= 0.5
-                && h.x.abs() <= SLACK * h.w
-                && h.y.abs() <= SLACK * h.w
-                && h.z.abs() <= SLACK * h.w;
+            ok &= in_clip(h) && in_unit_depth(z01 + m01.w_axis.z, h.w);
         }
     }
     ok
+}
+
+/// How far outside the clip volume rounding may put a point: 10⁻⁶ of its half-width.
+pub(crate) const CLIP_SLACK: f64 = 1e-6;
+
+/// `h` (OpenGL depth) inside the clip volume, within [`CLIP_SLACK`], with w ≥ 1/2.
+#[inline(always)]
+fn in_clip(h: DVec4) -> bool {
+    let s = (1.0 + CLIP_SLACK) * h.w;
+    h.w >= 0.5 && h.x.abs() <= s && h.y.abs() <= s && h.z.abs() <= s
+}
+
+/// The `[0, 1]`-depth form's z of the same point inside [0, w], within [`CLIP_SLACK`] of its
+/// half-width w/2.
+#[inline(always)]
+fn in_unit_depth(z01: f64, w: f64) -> bool {
+    let s = 0.5 * CLIP_SLACK * w;
+    z01 >= -s && z01 <= w + s
 }
 
 /// The n′ that `rule` chooses for the whole view frustum and this light (see [`WarpRule`]).

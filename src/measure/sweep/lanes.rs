@@ -447,10 +447,23 @@ impl LaneSweep {
         let cb = g0.cross(g3).dot(l);
         let cc = g1.cross(g3).dot(l);
         let (g1p, g3p) = (g1.perp(l), g3.perp(l));
+        // The `[0, 1]`-depth form's depth row, `(M₂ + M₃)/2` as `ShadowMatrix::with_clip_depth`
+        // forms it, checked as `clip_ok_at_corners` checks it.
+        let half = F::splat(0.5);
+        let (r2, r3) = (&rows[2], &rows[3]);
+        let row01 = Row {
+            v: V3 {
+                x: (r2.v.x + r3.v.x) * half,
+                y: (r2.v.y + r3.v.y) * half,
+                z: (r2.v.z + r3.v.z) * half,
+            },
+            w: (r2.w + r3.w) * half,
+        };
         let mut mx2 = F::splat(0.0);
         let mut mz2 = F::splat(0.0);
         for k in 0..2 {
             let hc = homogeneous(&rows, self.clip[k]);
+            let z01 = row_at(&row01, self.clip[k]);
             let hm_own;
             let hm = if self.same {
                 &hc
@@ -466,6 +479,9 @@ impl LaneSweep {
                 let sw = SLACK * hw;
                 checks.non_negative(hw - 0.5);
                 checks.non_negative(sw - hx.abs().max(hy.abs()).max(hz.abs()));
+                let s01 = hw * HALF_SLACK;
+                checks.non_negative(z01[j] + s01);
+                checks.non_negative((hw + s01) - z01[j]);
                 let [hx, hy, _, hw] = hm[j];
                 let d = hw * (hw * ca - hy * cb + hx * cc);
                 let d2 = d * d;
@@ -527,26 +543,32 @@ fn light_corners(x: &V3, y: &V3, z: &V3, (w, h, d): (f64, f64, f64)) -> [(F, F, 
 }
 
 /// The clip check's slack (`clip_ok_at_corners`).
-const SLACK: f64 = 1.0 + 1e-6;
+const SLACK: f64 = 1.0 + crate::build::warp::CLIP_SLACK;
+/// The `[0, 1]`-depth check's slack, half the clip volume's (`in_unit_depth`).
+const HALF_SLACK: f64 = 0.5 * crate::build::warp::CLIP_SLACK;
+
+/// One row of `M` at the four corners `(±w, ±h, −d)` of one depth, in glam's order
+/// `((M₀ x + M₁ y) + M₂ z) + M₃` with the products shared up to exact sign changes.
+#[inline(always)]
+fn row_at(row: &Row, (w, h, d): (f64, f64, f64)) -> [F; 4] {
+    let a = row.v.x * w;
+    let b = row.v.y * h;
+    let c = row.v.z * -d;
+    [
+        ((-a - b) + c) + row.w,
+        ((a - b) + c) + row.w,
+        ((a + b) + c) + row.w,
+        ((-a + b) + c) + row.w,
+    ]
+}
 
 /// `M (c, 1)` at the four corners `(±w, ±h, −d)` of one depth in `ViewFrustum::corners` order,
 /// from the products `M₀ w`, `M₁ h`, `M₂ (−d)` shared by the four corners (sign changes are
 /// exact): per row `((±M₀ w ± M₁ h) + M₂ (−d)) + M₃`, bit for bit `vertex_max`'s
 /// `((r.x p.x + r.y p.y) + r.z p.z) + r.w` and glam's `M · (c, 1)`.
 #[inline(always)]
-fn homogeneous(rows: &[Row; 4], (w, h, d): (f64, f64, f64)) -> [[F; 4]; 4] {
-    let nd = -d;
-    let at = |row: &Row| {
-        let a = row.v.x * w;
-        let b = row.v.y * h;
-        let c = row.v.z * nd;
-        [
-            ((-a - b) + c) + row.w,
-            ((a - b) + c) + row.w,
-            ((a + b) + c) + row.w,
-            ((-a + b) + c) + row.w,
-        ]
-    };
+fn homogeneous(rows: &[Row; 4], corner: (f64, f64, f64)) -> [[F; 4]; 4] {
+    let at = |row: &Row| row_at(row, corner);
     let r = [at(&rows[0]), at(&rows[1]), at(&rows[2]), at(&rows[3])];
     std::array::from_fn(|j| [r[0][j], r[1][j], r[2][j], r[3][j]])
 }
