@@ -11,7 +11,8 @@ Two forms, both checked against the crate's own output (`--check FILE.npy`):
   - sines and cosines of the grid's 1-D axes only (E + A of each, not E·A), broadcast;
   - the light-space basis in closed form per component, no `np.cross`/`np.linalg.norm`
     (x = y × z of two orthonormal vectors is unit);
-  - the directions in blocks of whole elevation rows (≈ 4 096 directions) so that every
+  - the directions in blocks of whole elevation rows (at most 4 096 directions: two rows of
+    1 440, the fastest block tried) so that every
     (block, 8) temporary stays in cache, with the block's arrays reused through ``out=``;
   - the matrix rows' products at the corners shared (h_w = ρ q_z + a is the fit's w).
 * ``reduced``: the measurement above simplified by hand for this single fitted map:
