@@ -4,6 +4,7 @@
 #![cfg(feature = "cli")]
 
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
+use std::path::Path;
 use std::process::Command;
 
 fn run(args: &[&str]) -> (i32, String, String) {
@@ -160,6 +161,7 @@ fn help_has_an_example_and_the_grid() {
     assert_eq!(code, 0);
     assert!(out.contains("shadow-aliasing sweep --near"), "{out}");
     assert!(out.contains("elevation,azimuth,storage_factor"), "{out}");
+    assert!(out.contains("--format npy --output sweep.npy"), "{out}");
 }
 
 /// Runs the binary, killing it (and failing) if it has not finished within `secs` seconds: a
@@ -436,4 +438,286 @@ fn lambda_only_with_practical_partitions() {
     let (c2, o2, _) = run(&default);
     assert_eq!((c1, c2), (0, 0));
     assert_eq!(o1, o2);
+}
+
+/// A fresh directory under the system's temporary directory.
+fn temp_dir(tag: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("sa-cli-sweep-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Runs the binary and returns its exit status and the raw bytes of its standard output.
+fn run_bytes(args: &[&str]) -> (i32, Vec<u8>, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
+        .args(args)
+        .output()
+        .expect("the binary runs");
+    (
+        out.status.code().expect("exited normally"),
+        out.stdout,
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+/// Reads a `.npy` file as NumPy's format specification (version 1.0) lays it out, written here
+/// from the specification and not from the binary's writer: the magic `\x93NUMPY`, version 1.0,
+/// a little-endian u16 header length, an ASCII dict literal padded with spaces and ended by a
+/// newline so that the data starts at a multiple of 64, then the raw data. Returns the shape
+/// and the values (little-endian float64, C order).
+fn read_npy(bytes: &[u8]) -> (Vec<usize>, Vec<f64>) {
+    assert_eq!(&bytes[..6], b"\x93NUMPY", "magic");
+    assert_eq!((bytes[6], bytes[7]), (1, 0), "version 1.0");
+    let hlen = usize::from(u16::from_le_bytes([bytes[8], bytes[9]]));
+    let start = 10 + hlen;
+    assert_eq!(start % 64, 0, "data aligned to 64 bytes");
+    let header = std::str::from_utf8(&bytes[10..start]).expect("ASCII header");
+    assert!(header.ends_with('\n'), "{header:?}");
+    let dict = header.trim_end_matches('\n').trim_end_matches(' ');
+    assert!(dict.starts_with('{') && dict.ends_with('}'), "{dict:?}");
+    // The three keys, each exactly once, in any order.
+    let value_of = |key: &str| -> &str {
+        let k = format!("'{key}':");
+        assert_eq!(dict.matches(&k).count(), 1, "{key} in {dict}");
+        let rest = dict.split_once(&k).unwrap().1.trim_start();
+        let end = if rest.starts_with('(') {
+            rest.find(')').unwrap() + 1
+        } else {
+            rest.find([',', '}']).unwrap()
+        };
+        rest[..end].trim()
+    };
+    assert_eq!(value_of("descr"), "'<f8'");
+    assert_eq!(value_of("fortran_order"), "False");
+    let shape_text = value_of("shape");
+    let inner = shape_text
+        .strip_prefix('(')
+        .and_then(|s| s.strip_suffix(')'))
+        .unwrap();
+    let shape: Vec<usize> = inner
+        .split(',')
+        .map(str::trim)
+        .filter(|s| !s.is_empty())
+        .map(|s| s.parse().unwrap())
+        .collect();
+    if shape.len() == 1 {
+        // Python's one-element tuple.
+        assert!(inner.trim_end().ends_with(','), "{shape_text}");
+    }
+    let data = &bytes[start..];
+    assert_eq!(
+        data.len(),
+        8 * shape.iter().product::<usize>(),
+        "data length"
+    );
+    let values = data
+        .chunks_exact(8)
+        .map(|b| f64::from_le_bytes(b.try_into().unwrap()))
+        .collect();
+    (shape, values)
+}
+
+const BASE: [&str; 13] = [
+    "sweep",
+    "--near",
+    "1",
+    "--far",
+    "100",
+    "--half-fov",
+    "0.5",
+    "--warp",
+    "lispsm",
+    "--partition",
+    "log",
+    "--k",
+    "2",
+];
+
+#[test]
+fn npy_holds_the_csv_values_bit_for_bit_with_its_axes() {
+    let dir = temp_dir("npy");
+    let file = dir.join("s.npy");
+    let grid = ["--elevations", "7", "--azimuths", "12"];
+    let mut csv_args = BASE.to_vec();
+    csv_args.extend(grid);
+    let rows = {
+        let (code, out, err) = run(&csv_args);
+        assert_eq!(code, 0, "{err}");
+        out.lines()
+            .skip(1)
+            .map(|l| {
+                let f: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+                (f[0], f[1], f[2])
+            })
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(rows.len(), 7 * 12);
+    let mut npy_args = csv_args.clone();
+    npy_args.extend(["--format", "npy", "--output", file.to_str().unwrap()]);
+    let (code, out, err) = run(&npy_args);
+    assert_eq!((code, out.as_str(), err.as_str()), (0, "", ""));
+
+    let (shape, values) = read_npy(&std::fs::read(&file).unwrap());
+    assert_eq!(shape, [7, 12]);
+    let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    let csv_sf: Vec<f64> = rows.iter().map(|r| r.2).collect();
+    assert_eq!(
+        bits(&values),
+        bits(&csv_sf),
+        "S̄, row-major (elevation, azimuth)"
+    );
+
+    let (el_shape, el) = read_npy(&std::fs::read(dir.join("s.elevations.npy")).unwrap());
+    let (az_shape, az) = read_npy(&std::fs::read(dir.join("s.azimuths.npy")).unwrap());
+    assert_eq!((el_shape, az_shape), (vec![7], vec![12]));
+    let csv_el: Vec<f64> = rows.iter().step_by(12).map(|r| r.0).collect();
+    let csv_az: Vec<f64> = rows[..12].iter().map(|r| r.1).collect();
+    assert_eq!(bits(&el), bits(&csv_el));
+    assert_eq!(bits(&az), bits(&csv_az));
+    // The documented spacing: i·(π/2)/(E−1) and j·2π/A.
+    assert_eq!((el[0], el[6]), (0.0, FRAC_PI_2));
+    assert!(close(el[2], 2.0 * FRAC_PI_2 / 6.0, 1e-15));
+    assert!(close(az[3], 3.0 * TAU / 12.0, 1e-15));
+    // Every row's elevation is its row's: the CSV is elevation-major.
+    for (n, r) in rows.iter().enumerate() {
+        assert_eq!((r.0, r.1), (el[n / 12], az[n % 12]), "row {n}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn npy_to_standard_output_is_the_file_without_axes() {
+    let dir = temp_dir("npy-stdout");
+    let file = dir.join("s.npy");
+    let mut args = BASE.to_vec();
+    args.extend(["--elevations", "3", "--azimuths", "5", "--format", "npy"]);
+    let (code, stdout, err) = run_bytes(&args);
+    assert_eq!(code, 0, "{err}");
+    let (shape, values) = read_npy(&stdout);
+    assert_eq!(shape, [3, 5]);
+    assert!(values.iter().all(|v| v.is_finite() && *v > 0.0));
+    args.extend(["--output", file.to_str().unwrap()]);
+    assert_eq!(run_bytes(&args).0, 0);
+    assert_eq!(std::fs::read(&file).unwrap(), stdout);
+    // "-" is standard output, and writes no axes.
+    let n = args.len();
+    args[n - 1] = "-";
+    let (code, dash, _) = run_bytes(&args);
+    assert_eq!((code, dash), (0, stdout));
+    assert!(!Path::new("-.elevations.npy").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn output_writes_the_csv_to_a_file() {
+    let dir = temp_dir("csv");
+    let file = dir.join("s.csv");
+    let mut args = BASE.to_vec();
+    args.extend(["--elevations", "4", "--azimuths", "9"]);
+    let (code, stdout, _) = run_bytes(&args);
+    assert_eq!(code, 0);
+    assert_eq!(stdout.iter().filter(|&&b| b == b'\n').count(), 1 + 4 * 9);
+    let mut explicit = args.clone();
+    explicit.extend(["--format", "csv", "--output", file.to_str().unwrap()]);
+    let (code, out, err) = run_bytes(&explicit);
+    assert_eq!((code, out.as_slice(), err.as_str()), (0, &b""[..], ""));
+    assert_eq!(std::fs::read(&file).unwrap(), stdout);
+    // Only npy has axis files.
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn write_errors_exit_1_with_a_message() {
+    use std::process::Stdio;
+    let dir = temp_dir("errors");
+    let mut grid = BASE.to_vec();
+    grid.extend(["--elevations", "3", "--azimuths", "4"]);
+    let full = "No space left on device (os error 28)";
+    for format in ["csv", "npy"] {
+        // A file that cannot take the data.
+        let mut args = grid.clone();
+        args.extend(["--format", format, "--output", "/dev/full"]);
+        let (code, out, err) = run(&args);
+        assert_eq!(
+            (code, out.as_str(), err.as_str()),
+            (
+                1,
+                "",
+                format!("error: cannot write /dev/full: {full}\n").as_str()
+            ),
+            "{format}"
+        );
+        // A file that cannot be created.
+        let missing = dir.join("no-such-dir").join("s.out");
+        let mut args = grid.clone();
+        args.extend(["--format", format, "--output", missing.to_str().unwrap()]);
+        let (code, _, err) = run(&args);
+        assert_eq!(
+            (code, err),
+            (
+                1,
+                format!(
+                    "error: cannot write {}: No such file or directory (os error 2)\n",
+                    missing.display()
+                )
+            ),
+            "{format}"
+        );
+        // Standard output that fails.
+        let mut args = grid.clone();
+        args.extend(["--format", format]);
+        let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
+            .args(&args)
+            .stdout(Stdio::from(
+                std::fs::OpenOptions::new()
+                    .write(true)
+                    .open("/dev/full")
+                    .unwrap(),
+            ))
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(1), "{format}");
+        assert_eq!(
+            String::from_utf8(out.stderr).unwrap(),
+            format!("error: cannot write to standard output: {full}\n")
+        );
+    }
+    // An axis file that cannot be written (a directory of its name) is named.
+    let file = dir.join("s.npy");
+    let blocked = dir.join("s.azimuths.npy");
+    std::fs::create_dir_all(&blocked).unwrap();
+    let mut args = grid.clone();
+    args.extend(["--format", "npy", "--output", file.to_str().unwrap()]);
+    let (code, _, err) = run(&args);
+    assert_eq!(code, 1);
+    assert!(
+        err.starts_with(&format!("error: cannot write {}: ", blocked.display()))
+            && err.ends_with("(os error 21)\n"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `--format npy` to a terminal is refused before the sweep runs. The terminal is a
+/// pseudo-terminal made by util-linux's `script` (Debian's essential bsdutils).
+#[cfg(target_os = "linux")]
+#[test]
+fn npy_to_a_terminal_is_refused() {
+    let bin = env!("CARGO_BIN_EXE_shadow-aliasing");
+    let cmd = format!("{bin} {} --format npy; echo \"status $?\"", BASE.join(" "));
+    let out = Command::new("script")
+        .args(["-qec", &cmd, "/dev/null"])
+        .output()
+        .expect("script (util-linux) runs");
+    let text = String::from_utf8_lossy(&out.stdout).replace('\r', "");
+    assert!(
+        text.contains(
+            "error: --format npy writes binary data: give --output FILE, or redirect standard output\n"
+        ) && text.contains("status 1"),
+        "{text:?}"
+    );
+    assert!(!text.contains("NUMPY"), "{text:?}");
 }

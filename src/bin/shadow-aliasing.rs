@@ -1,6 +1,6 @@
 //! The `shadow-aliasing` command line: `figures` (the main job), `eval` (the JSON contract of
 //! docs/eval.md), `warp` (a camera's shadow matrices with their measured error) and `sweep`
-//! (the storage factor over the hemisphere of light directions, as CSV).
+//! (the storage factor over the hemisphere of light directions, as CSV or a NumPy `.npy` array).
 //!
 //! Errors are one line on standard error and a non-zero exit status.
 
@@ -12,6 +12,8 @@ mod commands;
 mod output;
 #[path = "shadow-aliasing/scheme.rs"]
 mod scheme;
+#[path = "shadow-aliasing/sweep_out.rs"]
+mod sweep_out;
 
 use clap::Parser;
 use std::process::ExitCode;

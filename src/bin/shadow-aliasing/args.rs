@@ -37,9 +37,9 @@ pub enum Command {
         after_help = "Example:\n  shadow-aliasing warp --near 1 --far 100 --half-fov 0.5236 --light-dir 0,-1,0 --warp lispsm --partition log --k 4 --json"
     )]
     Warp(WarpArgs),
-    /// The storage factor over the hemisphere of light directions, as CSV on standard output.
+    /// The storage factor over the hemisphere of light directions, as CSV or a NumPy array.
     #[command(
-        after_help = "Example:\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm --elevations 90 --azimuths 360 > sweep.csv\n\nColumns: elevation,azimuth,storage_factor (radians). Elevation rows i = 0..E-1 at i·(π/2)/(E-1)\n(0 the horizon, π/2 overhead; both ends included; E = 1 is the zenith); azimuth columns j = 0..A-1 at j·2π/A\n(0 behind the viewer, π in front; 2π excluded)."
+        after_help = "Examples:\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm --elevations 90 --azimuths 360 > sweep.csv\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm --format npy --output sweep.npy\n\nnpy: float64 array of shape (E, A), row i elevation i, column j azimuth j; with --output sweep.npy\nalso sweep.elevations.npy (E) and sweep.azimuths.npy (A), radians.\n\nColumns: elevation,azimuth,storage_factor (radians). Elevation rows i = 0..E-1 at i·(π/2)/(E-1)\n(0 the horizon, π/2 overhead; both ends included; E = 1 is the zenith); azimuth columns j = 0..A-1 at j·2π/A\n(0 behind the viewer, π in front; 2π excluded)."
     )]
     Sweep(SweepArgs),
 }
@@ -219,6 +219,23 @@ pub struct SweepArgs {
     /// Worker threads, 1 to 1024 (default: all cores).
     #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = parse_threads)]
     pub threads: Option<usize>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = SweepFormat::Csv)]
+    pub format: SweepFormat,
+    /// Write to FILE instead of standard output ("-" is standard output). With `--format npy`,
+    /// the axes go beside it: FILE.npy gives FILE.elevations.npy and FILE.azimuths.npy.
+    #[arg(long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+/// Output formats of `sweep`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SweepFormat {
+    /// Text: elevation,azimuth,storage_factor, one row per direction.
+    Csv,
+    /// NumPy .npy: the storage factors as a little-endian float64 array of shape
+    /// (elevations, azimuths).
+    Npy,
 }
 
 /// The largest `--threads`: far more than a sweep can use on any machine (it is CPU-bound, so

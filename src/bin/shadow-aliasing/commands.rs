@@ -1,9 +1,11 @@
 //! What each subcommand does.
 
-use crate::args::{Cli, Command, EvalArgs, FiguresArgs, Format, SweepArgs, WarpArgs};
+use crate::args::{Cli, Command, EvalArgs, FiguresArgs, Format, SweepArgs, SweepFormat, WarpArgs};
 use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
 use crate::scheme::{k, partition, partitions, rule, Lights, PartitionReport};
+use crate::sweep_out::{self, write_to, Sink, WriteError};
 use glam::DVec3;
+use shadow_aliasing::measure::sweep::SweepGrid;
 use shadow_aliasing::{LightAngle, ViewFrustum};
 use std::fmt::Write as _;
 use std::io::{Read, Write};
@@ -283,7 +285,17 @@ fn figures(a: &FiguresArgs) -> ExitCode {
 }
 
 fn sweep(a: &SweepArgs) -> ExitCode {
-    use shadow_aliasing::measure::sweep::{sweep, SweepGrid};
+    use shadow_aliasing::measure::sweep::sweep;
+    use std::io::IsTerminal;
+    let sink = Sink::from_arg(a.output.as_deref());
+    if a.format == SweepFormat::Npy
+        && matches!(sink, Sink::Stdout)
+        && std::io::stdout().is_terminal()
+    {
+        return fail(
+            "--format npy writes binary data: give --output FILE, or redirect standard output",
+        );
+    }
     let c = &a.camera;
     let view = match ViewFrustum::new(c.near, c.far, c.half_fov) {
         Ok(v) => v,
@@ -314,26 +326,34 @@ fn sweep(a: &SweepArgs) -> ExitCode {
         Ok(s) => s,
         Err(e) => return fail(e),
     };
-    // Shortest round-trip numbers (ryu, through serde_json), the grid's strings computed once,
-    // everything written into one buffer and then to standard output in one go.
-    let azimuths: Vec<String> = (0..grid.azimuths())
-        .map(|j| json_num(grid.azimuth(j)))
-        .collect();
-    let mut out: Vec<u8> = Vec::with_capacity(64 * (grid.len() + 1));
-    out.extend_from_slice(b"elevation,azimuth,storage_factor\n");
-    for (i, row) in s.storage_factor.chunks(grid.azimuths()).enumerate() {
-        let el = json_num(grid.elevation(i));
-        for (az, v) in azimuths.iter().zip(row) {
-            out.extend_from_slice(el.as_bytes());
-            out.push(b',');
-            out.extend_from_slice(az.as_bytes());
-            out.push(b',');
-            if serde_json::to_writer(&mut out, v).is_err() {
-                // Only a non-finite value fails, and the sweep never returns one.
-                out.extend_from_slice(json_num(*v).as_bytes());
-            }
-            out.push(b'\n');
+    write_sweep(a, &sink, grid, &s.storage_factor)
+}
+
+/// Writes a sweep's result in `--format` to `--output`; with `--output FILE --format npy`, the
+/// axes beside it.
+fn write_sweep(a: &SweepArgs, sink: &Sink, grid: SweepGrid, values: &[f64]) -> ExitCode {
+    let done = match a.format {
+        SweepFormat::Csv => write_to(sink, |w| sweep_out::write_csv(w, grid, values)),
+        SweepFormat::Npy => {
+            let shape = [grid.elevations(), grid.azimuths()];
+            write_to(sink, |w| sweep_out::write_npy(w, &shape, values)).and_then(|()| {
+                let Sink::File(path) = sink else {
+                    return Ok(());
+                };
+                let (el_path, az_path) = sweep_out::axis_paths(path);
+                let el: Vec<f64> = (0..grid.elevations()).map(|i| grid.elevation(i)).collect();
+                let az: Vec<f64> = (0..grid.azimuths()).map(|j| grid.azimuth(j)).collect();
+                write_to(&Sink::File(el_path), |w| {
+                    sweep_out::write_npy(w, &[el.len()], &el)
+                })?;
+                write_to(&Sink::File(az_path), |w| {
+                    sweep_out::write_npy(w, &[az.len()], &az)
+                })
+            })
         }
+    };
+    match done {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(WriteError(message)) => fail(message),
     }
-    print_bytes(&out)
 }
