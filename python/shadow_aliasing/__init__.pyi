@@ -41,7 +41,7 @@ def subdivided_max_error(alpha: ArrayLike, k: ArrayLike, eta: ArrayLike, half_fo
                          res_image: Optional[ArrayLike] = ..., res_s: Optional[ArrayLike] = ...) -> F64:
     """m_max with k face subdivisions (Lloyd 2005 Eq 7)."""
 def allocate_texels(errors: ArrayLike, total: float) -> npt.NDArray[np.float64]:
-    """T_i = total e_i²/Σ e_j² (Lloyd 2005 Eq 6)."""
+    """r_si = total e_i/Σ e_j (Lloyd 2005 Eq 6)."""
 def z_partition(near: ArrayLike, far: ArrayLike, k: int,
                 scheme: Literal["self_similar", "uniform", "practical", "adaptive"],
                 lambda_: Optional[ArrayLike] = ..., light_angle: Optional[ArrayLike] = ...,

@@ -182,7 +182,7 @@ where
             FloatArg::Number(_) => None,
             FloatArg::Array(arr) => {
                 let view = arr.as_array();
-                if view.len() == 1 || (view.shape() == shape.as_slice() && arr.as_slice().is_ok()) {
+                if view.len() == 1 || (view.shape() == shape.as_slice() && view.is_standard_layout()) {
                     None
                 } else {
                     let b = view.broadcast(IxDyn(&shape)).ok_or_else(|| {

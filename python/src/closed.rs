@@ -378,10 +378,10 @@ pub fn subdivided_max_error<'py>(
     )
 }
 
-/// Texels per subdivision for a total budget, proportional to the square of each error
-/// (Lloyd 2005 Eq 6):
+/// Texels per subdivision (along the split direction) in proportion to each subdivision's
+/// maximum error (Lloyd 2005 Eq 6):
 ///
-///     T_i = total · e_i² / Σ_j e_j²
+///     r_si = total · e_i / Σ_j e_j
 ///
 /// errors: a 1-D array (each > 0); total: a number > 0. Returns a 1-D float64 array.
 #[pyfunction]
