@@ -182,7 +182,9 @@ where
             FloatArg::Number(_) => None,
             FloatArg::Array(arr) => {
                 let view = arr.as_array();
-                if view.len() == 1 || (view.shape() == shape.as_slice() && view.is_standard_layout()) {
+                if view.len() == 1
+                    || (view.shape() == shape.as_slice() && view.is_standard_layout())
+                {
                     None
                 } else {
                     let b = view.broadcast(IxDyn(&shape)).ok_or_else(|| {
