@@ -1,0 +1,87 @@
+"""The perspective aliasing error of shadow maps, from the Rust crate ``shadow-aliasing``.
+
+Closed forms (NumPy broadcasting over every float argument, float64 out, ``ValueError`` with
+the crate's message for any input outside the domain, never NaN): ``mx``, ``mz``, ``max_mx``,
+``max_mz``, ``storage_factor``, ``critical_resolution``, ``n_prime_lispsm``,
+``n_prime_from_eta``, ``eta_from_n_prime``, ``distribution_g``, ``subdivided_max_error``,
+``allocate_texels``, ``z_partition``, ``scheme_storage_factor``, ``tilted_mz``,
+``generalized_n_prime``, ``gamma_lim``, ``tsm_eta``, ``zhang_eq``, ``zhang_ep``,
+``zhang_eq_local``, ``zhang_ep_local`` (the names and arguments of docs/eval.md; ``lambda`` is
+spelled ``lambda_``).
+
+Builders (4×4 float64 matrices, eye space → light clip space, ``clip = M @ (x, y, z, 1)``):
+``warp``, ``n_prime_for``, ``cascades``, ``faces``, ``tsm``. Measurement: ``frustum_max``,
+``point_error``. Hemisphere sweep: ``sweep``, ``sweep_angles``.
+"""
+
+from ._native import (
+    WARP_RULES,
+    allocate_texels,
+    cascades,
+    critical_resolution,
+    distribution_g,
+    eta_from_n_prime,
+    faces,
+    frustum_max,
+    gamma_lim,
+    generalized_n_prime,
+    max_mx,
+    max_mz,
+    mx,
+    mz,
+    n_prime_for,
+    n_prime_from_eta,
+    n_prime_lispsm,
+    point_error,
+    scheme_storage_factor,
+    storage_factor,
+    subdivided_max_error,
+    sweep,
+    sweep_angles,
+    tilted_mz,
+    tsm,
+    tsm_eta,
+    warp,
+    z_partition,
+    zhang_ep,
+    zhang_ep_local,
+    zhang_eq,
+    zhang_eq_local,
+)
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "WARP_RULES",
+    "allocate_texels",
+    "cascades",
+    "critical_resolution",
+    "distribution_g",
+    "eta_from_n_prime",
+    "faces",
+    "frustum_max",
+    "gamma_lim",
+    "generalized_n_prime",
+    "max_mx",
+    "max_mz",
+    "mx",
+    "mz",
+    "n_prime_for",
+    "n_prime_from_eta",
+    "n_prime_lispsm",
+    "point_error",
+    "scheme_storage_factor",
+    "storage_factor",
+    "subdivided_max_error",
+    "sweep",
+    "sweep_angles",
+    "tilted_mz",
+    "tsm",
+    "tsm_eta",
+    "warp",
+    "z_partition",
+    "zhang_ep",
+    "zhang_ep_local",
+    "zhang_eq",
+    "zhang_eq_local",
+]

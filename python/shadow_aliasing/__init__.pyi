@@ -1,0 +1,115 @@
+"""Type stubs of shadow_aliasing (the closed forms broadcast over every float argument)."""
+from typing import Literal, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+ArrayLike = npt.ArrayLike
+F64 = Union[np.float64, npt.NDArray[np.float64]]
+Vec3 = Union[Sequence[float], npt.NDArray[np.floating]]
+ClipDepth = Literal["neg_one_to_one", "zero_to_one"]
+
+WARP_RULES: list[str]
+__version__: str
+
+def mx(near: ArrayLike, far: ArrayLike, n_prime: ArrayLike, z: ArrayLike,
+       res_image: Optional[ArrayLike] = ..., res_s: Optional[ArrayLike] = ...) -> F64:
+    """m_x = (res_image/res_s) f (n′ + z − n)/(z (n′ + f − n)) (Lloyd 2006 Eq 7)."""
+def mz(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, n_prime: ArrayLike, z: ArrayLike,
+       res_image: Optional[ArrayLike] = ..., res_t: Optional[ArrayLike] = ...) -> F64:
+    """m_z = (res_image/res_t) (f − n)/(2 tan θ) (n′ + z − n)²/(z n′ (n′ + f − n)) (Lloyd 2006 Eq 8)."""
+def max_mx(near: ArrayLike, far: ArrayLike, n_prime: ArrayLike,
+           res_image: Optional[ArrayLike] = ..., res_s: Optional[ArrayLike] = ...) -> F64:
+    """M_x = m_x at z = near (Lloyd 2006 Eq 9)."""
+def max_mz(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, n_prime: ArrayLike,
+           res_image: Optional[ArrayLike] = ..., res_t: Optional[ArrayLike] = ...) -> F64:
+    """M_z (Lloyd 2006 Eq 10)."""
+def storage_factor(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, n_prime: ArrayLike) -> F64:
+    """S̄ = (f/n − 1)/(2 tan θ) · {1; n′² f/(n (n′ + f − n)²); f/n} (Lloyd 2006 Eq 12)."""
+def critical_resolution(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, n_prime: ArrayLike,
+                        budget: ArrayLike, res_image: Optional[ArrayLike] = ...) -> npt.NDArray[np.float64]:
+    """[res_s, res_t] (last axis) with res_s/res_t = M_x/M_z, res_s res_t = budget (Lloyd 2006 Eq 13, 14)."""
+def n_prime_lispsm(near: ArrayLike, far: ArrayLike) -> F64:
+    """n′ = n + √(f n) (Lloyd 2006 §4.1)."""
+def n_prime_from_eta(near: ArrayLike, far: ArrayLike, eta: ArrayLike) -> F64:
+    """n′(η) (Lloyd 2006 Eq 11); inf for η = −1."""
+def eta_from_n_prime(near: ArrayLike, far: ArrayLike, n_prime: ArrayLike) -> F64:
+    """η(n′) (Lloyd 2006 App. B)."""
+def distribution_g(alpha: ArrayLike, n_warp: ArrayLike, z: ArrayLike) -> F64:
+    """g(z) = (z − 1 + n)²/(z n (n + α − 1)) (Lloyd 2005 Eq 3)."""
+def subdivided_max_error(alpha: ArrayLike, k: ArrayLike, eta: ArrayLike, half_fov: ArrayLike,
+                         res_image: Optional[ArrayLike] = ..., res_s: Optional[ArrayLike] = ...) -> F64:
+    """m_max with k face subdivisions (Lloyd 2005 Eq 7)."""
+def allocate_texels(errors: ArrayLike, total: float) -> npt.NDArray[np.float64]:
+    """r_si = total e_i/Σ e_j (Lloyd 2005 Eq 6)."""
+def z_partition(near: ArrayLike, far: ArrayLike, k: int,
+                scheme: Literal["self_similar", "uniform", "practical", "adaptive"],
+                lambda_: Optional[ArrayLike] = ..., light_angle: Optional[ArrayLike] = ...,
+                ratio: Optional[ArrayLike] = ...) -> npt.NDArray[np.float64]:
+    """The k + 1 split planes (last axis) (Lloyd 2006 Eq 15, 16; Barroso Eq 19)."""
+def scheme_storage_factor(scheme: Literal["zp", "zp_w", "fp_zp_w", "optimal"],
+                          light: Literal["overhead", "behind"], near: ArrayLike, far: ArrayLike,
+                          half_fov: ArrayLike, k: ArrayLike) -> F64:
+    """S̄ of a partitioning scheme (Lloyd 2006 Eq 17–21, App. C)."""
+def tilted_mz(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, n_prime: ArrayLike,
+              light_angle: ArrayLike, z: ArrayLike, res_image: Optional[ArrayLike] = ...,
+              res_t: Optional[ArrayLike] = ...) -> F64:
+    """m_z for a tilted light (Barroso Eq 10–12)."""
+def generalized_n_prime(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, light_angle: ArrayLike,
+                        falloff: Literal["barroso", "zhang"]) -> F64:
+    """Barroso's generalised n′ (Eq 13–18); inf at γ = 0."""
+def gamma_lim(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike) -> F64:
+    """γ_lim = atan((f + n) tan θ/(f − n)) (Barroso Eq 15)."""
+def tsm_eta(lambda_: ArrayLike, delta_prime: ArrayLike, xi: ArrayLike) -> F64:
+    """η = λ δ′ (1 + ξ)/(λ (1 − ξ) − 2 δ′) (Martin–Tan §6.2)."""
+def zhang_eq(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_: ArrayLike,
+             light_angle: ArrayLike, y: ArrayLike, z: ArrayLike) -> F64:
+    """E_q, global representation (Zhang Eq 13)."""
+def zhang_ep(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_: ArrayLike,
+             light_angle: ArrayLike, y: ArrayLike, z: ArrayLike) -> F64:
+    """E_p, global representation (Zhang Eq 14)."""
+def zhang_eq_local(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_: ArrayLike, z: ArrayLike) -> F64:
+    """E_q = 2 f (z − n + λ)/((f − n + λ) z) (Zhang Eq 8)."""
+def zhang_ep_local(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_: ArrayLike, z: ArrayLike) -> F64:
+    """E_p = (f − n)(z − n + λ)²/((f − n + λ) λ tan φ z) (Zhang Eq 9)."""
+
+def warp(near: float, far: float, half_fov: float, light_dir: Vec3, rule: str = ..., *,
+         eta: Optional[float] = ..., focus: Optional[float] = ..., near_hint: Optional[float] = ...,
+         far_hint: Optional[float] = ..., shadow_distance: Optional[float] = ...,
+         clip_depth: ClipDepth = ..., aspect: float = ...) -> npt.NDArray[np.float64]:
+    """The (4, 4) shadow matrix of one map, n′ by the named rule (Lloyd 2006 §4)."""
+def n_prime_for(near: float, far: float, half_fov: float, light_dir: Vec3, rule: str = ..., *,
+                eta: Optional[float] = ..., focus: Optional[float] = ..., near_hint: Optional[float] = ...,
+                far_hint: Optional[float] = ..., shadow_distance: Optional[float] = ...,
+                aspect: float = ...) -> float:
+    """The n′ the rule chooses (inf: unwarped)."""
+def cascades(near: float, far: float, half_fov: float, light_dir: Vec3, k: int,
+             partition: Literal["self_similar", "log", "uniform", "practical", "adaptive"] = ...,
+             rule: str = ..., *, lambda_: Optional[float] = ..., overlap: float = ...,
+             eta: Optional[float] = ..., focus: Optional[float] = ..., clip_depth: ClipDepth = ...,
+             aspect: float = ...) -> npt.NDArray[np.float64]:
+    """(k, 4, 4) z-partition matrices, near to far."""
+def faces(near: float, far: float, half_fov: float, light_dir: Vec3, k: int = ...,
+          warp: Literal["uniform", "psm", "lispsm"] = ..., *, clip_depth: ClipDepth = ...,
+          aspect: float = ...) -> Tuple[npt.NDArray[np.float64], list[str]]:
+    """(m, 4, 4) face-partition matrices and their faces (Lloyd 2006 §5.1)."""
+def tsm(near: float, far: float, half_fov: float, light_dir: Vec3, focus: Optional[float] = ..., *,
+        xi: Optional[float] = ..., iterative: Optional[int] = ..., clip_depth: ClipDepth = ...,
+        aspect: float = ...) -> npt.NDArray[np.float64]:
+    """The (4, 4) trapezoidal shadow matrix (Martin & Tan 2004)."""
+def frustum_max(matrix: ArrayLike, light_dir: ArrayLike, near: float, far: float, half_fov: float, *,
+                aspect: float = ...) -> npt.NDArray[np.float64]:
+    """[M_x, M_z, S̄] (last axis) of (..., 4, 4) matrices, measured at the frustum's vertices."""
+def point_error(matrix: ArrayLike, light_dir: Vec3, point: ArrayLike, near: float, far: float,
+                half_fov: float, *, res_image: float = ..., res_s: float = ..., res_t: float = ...,
+                aspect: float = ...) -> npt.NDArray[np.float64]:
+    """[m_x, m_z] (last axis) of one matrix at (..., 3) eye-space points."""
+def sweep_angles(elevations: int, azimuths: int) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    """The grid's elevations (both ends) and azimuths (2π excluded)."""
+def sweep(near: float, far: float, half_fov: float, rule: str = ...,
+          partition: Literal["single", "uniform", "log", "practical", "adaptive", "faces"] = ...,
+          k: int = ..., *, elevations: int = ..., azimuths: int = ..., lambda_: Optional[float] = ...,
+          eta: Optional[float] = ..., focus: Optional[float] = ..., near_hint: Optional[float] = ...,
+          far_hint: Optional[float] = ..., shadow_distance: Optional[float] = ...,
+          aspect: float = ...) -> npt.NDArray[np.float64]:
+    """(elevations, azimuths) storage factor over the hemisphere, all cores, GIL released."""

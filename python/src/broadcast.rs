@@ -1,0 +1,344 @@
+//! Element-wise evaluation with NumPy's broadcasting rules.
+//!
+//! Every float argument is converted to a float64 array (Python numbers, lists, integer and float32
+//! arrays alike; booleans, complex numbers, strings and objects are refused), the arguments'
+//! shapes are broadcast against each other as NumPy broadcasts them, and the closed form runs once
+//! per element of the broadcast shape with the GIL released, over all cores for large arrays.
+//! The first element (in C order) whose arguments the crate refuses raises `ValueError` with the
+//! crate's message and, for an array, the element's index.
+
+use numpy::ndarray::{ArrayD, IxDyn};
+use numpy::{
+    AllowTypeChange, PyArrayDescrMethods, PyArrayDyn, PyArrayLikeDyn, PyUntypedArray,
+    PyUntypedArrayMethods,
+};
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyFloat, PyInt};
+use rayon::prelude::*;
+use shadow_aliasing::Error;
+
+/// Elements per parallel task; calls below twice this run on one thread.
+const CHUNK: usize = 16 * 1024;
+
+/// The crate's error as Python's `ValueError`.
+pub fn value_error(e: &Error) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// One float argument after conversion: a float64 array, or a Python number.
+pub enum FloatArg<'py> {
+    Number(f64),
+    Array(PyArrayLikeDyn<'py, f64, AllowTypeChange>),
+}
+
+impl<'py> FloatArg<'py> {
+    /// Converts `ob` (a number or anything `numpy.asarray` takes) to float64, refusing dtypes
+    /// that are not real numbers.
+    pub fn extract(name: &str, ob: &Bound<'py, PyAny>) -> PyResult<Self> {
+        if ob.is_instance_of::<PyBool>() {
+            return Err(PyTypeError::new_err(format!(
+                "{name} must be a real number or an array of real numbers (got a bool)"
+            )));
+        }
+        if ob.is_instance_of::<PyFloat>() || ob.is_instance_of::<PyInt>() {
+            return Ok(FloatArg::Number(ob.extract::<f64>()?));
+        }
+        let py = ob.py();
+        // numpy.asarray first, so that the dtype of lists and scalars is checked too.
+        let arr = if ob.cast::<PyUntypedArray>().is_ok() {
+            ob.clone()
+        } else {
+            py.import("numpy")?.getattr("asarray")?.call1((ob,))?
+        };
+        let untyped = arr.cast::<PyUntypedArray>().map_err(|_| {
+            PyTypeError::new_err(format!("{name} must be a number or an array of numbers"))
+        })?;
+        let kind = untyped.dtype().kind();
+        if !matches!(kind, b'f' | b'i' | b'u') {
+            return Err(PyTypeError::new_err(format!(
+                "{name} must be a real number or an array of real numbers (got dtype {})",
+                untyped.dtype()
+            )));
+        }
+        let a: PyArrayLikeDyn<'py, f64, AllowTypeChange> = arr.extract()?;
+        Ok(FloatArg::Array(a))
+    }
+
+    fn shape(&self) -> Vec<usize> {
+        match self {
+            FloatArg::Number(_) => Vec::new(),
+            FloatArg::Array(a) => a.shape().to_vec(),
+        }
+    }
+}
+
+/// Broadcasts shapes as NumPy does: right-aligned, each pair of dimensions equal or one of them 1.
+pub fn broadcast_shapes(names: &[&str], shapes: &[Vec<usize>]) -> PyResult<Vec<usize>> {
+    let nd = shapes.iter().map(Vec::len).max().unwrap_or(0);
+    let mut out = vec![1usize; nd];
+    for (k, s) in shapes.iter().enumerate() {
+        for (i, &d) in s.iter().rev().enumerate() {
+            let o = &mut out[nd - 1 - i];
+            if d == *o || d == 1 {
+                continue;
+            }
+            if *o == 1 {
+                *o = d;
+                continue;
+            }
+            let described: Vec<String> = names
+                .iter()
+                .zip(shapes)
+                .map(|(n, s)| format!("{n} {}", fmt_shape(s)))
+                .collect();
+            return Err(PyValueError::new_err(format!(
+                "shapes cannot be broadcast together: {} ({} does not match)",
+                described.join(", "),
+                names[k]
+            )));
+        }
+    }
+    Ok(out)
+}
+
+/// A shape as Python prints it: `()`, `(3,)`, `(2, 3)`.
+pub fn fmt_shape(s: &[usize]) -> String {
+    match s {
+        [] => "()".into(),
+        [a] => format!("({a},)"),
+        _ => format!(
+            "({})",
+            s.iter()
+                .map(usize::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    }
+}
+
+/// The values of one argument over the broadcast shape, in C order.
+enum Data<'a> {
+    Scalar(f64),
+    Slice(&'a [f64]),
+}
+
+impl Data<'_> {
+    #[inline(always)]
+    fn at(&self, i: usize) -> f64 {
+        match self {
+            Data::Scalar(v) => *v,
+            Data::Slice(s) => s[i],
+        }
+    }
+}
+
+/// What one element of the output is.
+#[derive(Clone, Copy)]
+pub struct OutSpec {
+    /// `None`: one number per element (output shape = broadcast shape); `Some(w)`: `w` numbers
+    /// per element (output shape = broadcast shape + `(w,)`).
+    pub width: Option<usize>,
+    /// Whether +∞ is a legitimate value (an n′ of an unwarped map).
+    pub allow_inf: bool,
+}
+
+/// A scalar quantity: one finite number per element.
+pub const SCALAR: OutSpec = OutSpec {
+    width: None,
+    allow_inf: false,
+};
+/// An n′: one number per element, +∞ for the unwarped map.
+pub const N_PRIME: OutSpec = OutSpec {
+    width: None,
+    allow_inf: true,
+};
+
+/// Evaluates `f` on every element of the broadcast of `args` (each `(name, object)`).
+///
+/// `f` writes its `width` numbers (one for a scalar quantity) into its output slice.
+pub fn map_into<'py, const N: usize, F>(
+    py: Python<'py>,
+    args: [(&'static str, &Bound<'py, PyAny>); N],
+    spec: OutSpec,
+    f: F,
+) -> PyResult<Bound<'py, PyAny>>
+where
+    F: Fn(&[f64; N], &mut [f64]) -> Result<(), Error> + Sync,
+{
+    let names: [&'static str; N] = std::array::from_fn(|k| args[k].0);
+    let mut conv = Vec::with_capacity(N);
+    for (name, ob) in args {
+        conv.push(FloatArg::extract(name, ob)?);
+    }
+    let shapes: Vec<Vec<usize>> = conv.iter().map(FloatArg::shape).collect();
+    let shape = broadcast_shapes(&names, &shapes)?;
+    let n: usize = shape.iter().product();
+    // Arguments that are neither one value nor already C-contiguous in the broadcast shape are
+    // copied out in C order (NumPy's broadcast views, transposes, slices with steps).
+    let mut owned: Vec<Option<Vec<f64>>> = Vec::with_capacity(N);
+    for a in &conv {
+        owned.push(match a {
+            FloatArg::Number(_) => None,
+            FloatArg::Array(arr) => {
+                let view = arr.as_array();
+                if view.len() == 1
+                    || (view.shape() == shape.as_slice() && view.is_standard_layout())
+                {
+                    None
+                } else {
+                    let b = view.broadcast(IxDyn(&shape)).ok_or_else(|| {
+                        PyValueError::new_err("internal error: broadcast of a checked shape")
+                    })?;
+                    Some(b.iter().copied().collect())
+                }
+            }
+        });
+    }
+    let mut data: Vec<Data<'_>> = Vec::with_capacity(N);
+    for (a, o) in conv.iter().zip(&owned) {
+        data.push(match (a, o) {
+            (_, Some(v)) => Data::Slice(v.as_slice()),
+            (FloatArg::Number(v), None) => Data::Scalar(*v),
+            (FloatArg::Array(arr), None) => {
+                let view = arr.as_array();
+                if view.len() == 1 {
+                    Data::Scalar(view.iter().next().copied().unwrap_or(f64::NAN))
+                } else {
+                    Data::Slice(
+                        arr.as_slice()
+                            .map_err(|e| PyValueError::new_err(e.to_string()))?,
+                    )
+                }
+            }
+        });
+    }
+    let width = spec.width.unwrap_or(1);
+    let mut out = vec![0.0f64; n * width];
+    let failure = py.detach(|| run(&data, &mut out, width, spec.allow_inf, &f));
+    if let Some((i, e)) = failure {
+        let msg = e.to_string();
+        return Err(PyValueError::new_err(if shape.is_empty() {
+            msg
+        } else {
+            format!("{msg} (at index {})", fmt_index(i, &shape))
+        }));
+    }
+    let mut out_shape = shape;
+    if let Some(w) = spec.width {
+        out_shape.push(w);
+    }
+    to_python(py, out_shape, out)
+}
+
+/// A scalar quantity of `N` broadcast arguments.
+pub fn map<'py, const N: usize, F>(
+    py: Python<'py>,
+    args: [(&'static str, &Bound<'py, PyAny>); N],
+    spec: OutSpec,
+    f: F,
+) -> PyResult<Bound<'py, PyAny>>
+where
+    F: Fn(&[f64; N]) -> Result<f64, Error> + Sync,
+{
+    map_into(py, args, spec, |x, o| {
+        o[0] = f(x)?;
+        Ok(())
+    })
+}
+
+/// The computation proper, without the GIL: the first failing element (lowest index), if any.
+fn run<const N: usize, F>(
+    data: &[Data<'_>],
+    out: &mut [f64],
+    width: usize,
+    allow_inf: bool,
+    f: &F,
+) -> Option<(usize, Error)>
+where
+    F: Fn(&[f64; N], &mut [f64]) -> Result<(), Error> + Sync,
+{
+    let chunk = |start: usize, out: &mut [f64]| -> Option<(usize, Error)> {
+        for (j, o) in out.chunks_exact_mut(width).enumerate() {
+            let i = start + j;
+            let x: [f64; N] = std::array::from_fn(|k| data[k].at(i));
+            if let Err(e) = f(&x, o) {
+                return Some((i, e));
+            }
+            if let Some(bad) = o
+                .iter()
+                .find(|v| !(v.is_finite() || (allow_inf && **v == f64::INFINITY)))
+            {
+                return Some((
+                    i,
+                    Error::Degenerate(format!(
+                        "the value is not finite ({bad}) for these arguments"
+                    )),
+                ));
+            }
+        }
+        None
+    };
+    let elements = out.len() / width.max(1);
+    if elements < 2 * CHUNK {
+        return chunk(0, out);
+    }
+    out.par_chunks_mut(CHUNK * width)
+        .enumerate()
+        .filter_map(|(c, o)| chunk(c * CHUNK, o))
+        .min_by_key(|(i, _)| *i)
+}
+
+/// A flat C-order index as NumPy's multi-index `(i, j, …)`.
+pub fn fmt_index(mut flat: usize, shape: &[usize]) -> String {
+    let mut idx = vec![0usize; shape.len()];
+    for (k, &d) in shape.iter().enumerate().rev() {
+        if d > 0 {
+            idx[k] = flat % d;
+            flat /= d;
+        }
+    }
+    fmt_shape(&idx)
+}
+
+/// A float64 array of `shape` holding `values` (C order); a 0-d result is a `numpy.float64`,
+/// as NumPy's ufuncs return for scalar arguments.
+pub fn to_python(
+    py: Python<'_>,
+    shape: Vec<usize>,
+    values: Vec<f64>,
+) -> PyResult<Bound<'_, PyAny>> {
+    let zero_d = shape.is_empty();
+    let arr = ArrayD::from_shape_vec(IxDyn(&shape), values)
+        .map_err(|e| PyValueError::new_err(format!("internal error: {e}")))?;
+    let arr = PyArrayDyn::from_owned_array(py, arr);
+    if zero_d {
+        arr.into_any().get_item(())
+    } else {
+        Ok(arr.into_any())
+    }
+}
+
+/// A whole number ≥ 1 passed as a float element (`k`), in the eval contract's words.
+pub fn count(name: &'static str, v: f64) -> Result<usize, Error> {
+    if !v.is_finite() {
+        return Err(Error::invalid(
+            name,
+            format!("must be a finite number (got {v})"),
+        ));
+    }
+    if v.fract() != 0.0 || v < 1.0 {
+        return Err(Error::invalid(
+            name,
+            format!("must be a whole number of at least 1 (got {v})"),
+        ));
+    }
+    if v > 1e6 {
+        return Err(Error::invalid(
+            name,
+            format!("must be at most 1000000 (got {v})"),
+        ));
+    }
+    // Whole, in [1, 1e6]: exact.
+    Ok(v as usize)
+}

@@ -1,0 +1,52 @@
+//! `shadow_aliasing._native`: the Python bindings of the shadow-aliasing crate.
+//!
+//! The closed forms of the eval contract element-wise on NumPy arrays with broadcasting
+//! (`closed`, over `broadcast`), the shadow-matrix builders, the measurement of any 4×4 matrix
+//! and the hemisphere sweep (`builders`). Every error of the crate becomes `ValueError` with the
+//! crate's message; no function returns NaN.
+
+mod broadcast;
+mod builders;
+mod closed;
+
+use pyo3::prelude::*;
+
+/// The native module; `shadow_aliasing/__init__.py` re-exports it.
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    use closed::*;
+    m.add_function(wrap_pyfunction!(mx, m)?)?;
+    m.add_function(wrap_pyfunction!(mz, m)?)?;
+    m.add_function(wrap_pyfunction!(max_mx, m)?)?;
+    m.add_function(wrap_pyfunction!(max_mz, m)?)?;
+    m.add_function(wrap_pyfunction!(storage_factor, m)?)?;
+    m.add_function(wrap_pyfunction!(critical_resolution, m)?)?;
+    m.add_function(wrap_pyfunction!(n_prime_lispsm, m)?)?;
+    m.add_function(wrap_pyfunction!(n_prime_from_eta, m)?)?;
+    m.add_function(wrap_pyfunction!(eta_from_n_prime, m)?)?;
+    m.add_function(wrap_pyfunction!(distribution_g, m)?)?;
+    m.add_function(wrap_pyfunction!(subdivided_max_error, m)?)?;
+    m.add_function(wrap_pyfunction!(allocate_texels, m)?)?;
+    m.add_function(wrap_pyfunction!(z_partition, m)?)?;
+    m.add_function(wrap_pyfunction!(scheme_storage_factor, m)?)?;
+    m.add_function(wrap_pyfunction!(tilted_mz, m)?)?;
+    m.add_function(wrap_pyfunction!(generalized_n_prime, m)?)?;
+    m.add_function(wrap_pyfunction!(gamma_lim, m)?)?;
+    m.add_function(wrap_pyfunction!(tsm_eta, m)?)?;
+    m.add_function(wrap_pyfunction!(zhang_eq, m)?)?;
+    m.add_function(wrap_pyfunction!(zhang_ep, m)?)?;
+    m.add_function(wrap_pyfunction!(zhang_eq_local, m)?)?;
+    m.add_function(wrap_pyfunction!(zhang_ep_local, m)?)?;
+    use builders::*;
+    m.add_function(wrap_pyfunction!(warp, m)?)?;
+    m.add_function(wrap_pyfunction!(n_prime_for, m)?)?;
+    m.add_function(wrap_pyfunction!(cascades, m)?)?;
+    m.add_function(wrap_pyfunction!(faces, m)?)?;
+    m.add_function(wrap_pyfunction!(tsm, m)?)?;
+    m.add_function(wrap_pyfunction!(frustum_max, m)?)?;
+    m.add_function(wrap_pyfunction!(point_error, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep_angles, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep, m)?)?;
+    m.add("WARP_RULES", builders::WARP_RULES.to_vec())?;
+    Ok(())
+}
