@@ -8,8 +8,9 @@
 //! ```
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use shadow_aliasing::analytic::eta;
 use shadow_aliasing::analytic::{global, overhead, partition, subdivided, tilted, tsm};
-use shadow_aliasing::{warp, LightAngle, NPrime, Resolutions, ViewFrustum};
+use shadow_aliasing::{LightAngle, NPrime, Resolutions, ViewFrustum};
 use std::hint::black_box as bb;
 
 fn closed(c: &mut Criterion) {
@@ -41,13 +42,13 @@ fn closed(c: &mut Criterion) {
     });
     // η ↔ n′ (Lloyd 2006 §4.1, Eq 11, App. B).
     g.bench_function("n_prime_lispsm", |b| {
-        b.iter(|| warp::n_prime_lispsm(bb(n), bb(f)))
+        b.iter(|| eta::n_prime_lispsm(bb(n), bb(f)))
     });
     g.bench_function("n_prime_from_eta", |b| {
-        b.iter(|| warp::n_prime_from_eta(bb(n), bb(f), bb(-0.3)))
+        b.iter(|| eta::n_prime_from_eta(bb(n), bb(f), bb(-0.3)))
     });
     g.bench_function("eta_from_n_prime", |b| {
-        b.iter(|| warp::eta_from_n_prime(bb(n), bb(f), bb(np)))
+        b.iter(|| eta::eta_from_n_prime(bb(n), bb(f), bb(np)))
     });
     // Lloyd 2005 (Eq 3–9).
     g.bench_function("distribution_g", |b| {

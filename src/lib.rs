@@ -20,7 +20,7 @@
 //! 1. [`frustum`]: validated inputs ([`ViewFrustum`], [`NPrime`], [`Resolutions`],
 //!    [`LightAngle`]); every constructor returns [`Result`] with an [`Error`] that names the
 //!    argument.
-//! 2. [`analytic`] and [`warp`]: the closed forms of the five papers, in one notation
+//! 2. [`analytic`] (with [`analytic::eta`], the warp parameter n′ ↔ η): the closed forms of the five papers, in one notation
 //!    (docs/notation.md), each citing its paper and equation, corrected where the paper is wrong
 //!    (docs/errata.md).
 //! 3. [`build`]: the matrices a renderer needs (uniform, LiSPSM with every n′ rule, the crate's
@@ -84,7 +84,6 @@ pub mod geom;
 pub mod measure;
 #[cfg(feature = "plot")]
 pub mod plot;
-pub mod warp;
 
 pub use error::{Error, Result};
 pub use frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};

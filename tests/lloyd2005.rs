@@ -3,6 +3,7 @@
 //! general-n forms, and the errata.
 
 use proptest::prelude::*;
+use shadow_aliasing::analytic::eta::{eta_from_n_prime, n_prime_from_eta};
 use shadow_aliasing::analytic::overhead;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
 use shadow_aliasing::analytic::subdivided::{
@@ -12,7 +13,6 @@ use shadow_aliasing::analytic::subdivided::{
 };
 use shadow_aliasing::measure::twin::overhead_map;
 use shadow_aliasing::measure::{frustum_max, point_error};
-use shadow_aliasing::warp::{eta_from_n_prime, n_prime_from_eta};
 use shadow_aliasing::{NPrime, Resolutions, ViewFrustum};
 mod common;
 use common::{close, config, REL};

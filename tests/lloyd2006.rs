@@ -3,12 +3,14 @@
 //! `measure::point_error`), the identities of the η parameterisation, and the errata.
 
 use proptest::prelude::*;
+use shadow_aliasing::analytic::eta::{
+    eta_from_n_prime, n_prime_from_eta, n_prime_lispsm, n_prime_psm,
+};
 use shadow_aliasing::analytic::overhead::{
     budget_error, budget_resolution, critical_resolution, max_mx, max_mz, mx, mz, storage_factor,
 };
 use shadow_aliasing::measure::twin::overhead_map;
 use shadow_aliasing::measure::{frustum_max, frustum_max_sampled, point_error};
-use shadow_aliasing::warp::{eta_from_n_prime, n_prime_from_eta, n_prime_lispsm, n_prime_psm};
 use shadow_aliasing::{NPrime, Resolutions, ViewFrustum};
 mod common;
 use common::{close, config, frustum, REL};

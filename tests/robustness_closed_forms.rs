@@ -9,6 +9,9 @@
 
 use proptest::prelude::*;
 use proptest::test_runner::Config as ProptestConfig;
+use shadow_aliasing::analytic::eta::{
+    eta_from_n_prime, n_prime_from_eta, n_prime_lispsm, n_prime_psm,
+};
 use shadow_aliasing::analytic::global::{
     zhang_ep, zhang_ep_local, zhang_eq, zhang_eq_local, zhang_f_p, zhang_f_q, zhang_factorisation,
     zhang_g, zhang_mu, zhang_tan_phi_w, zhang_z_w, SurfaceSlope,
@@ -35,7 +38,6 @@ use shadow_aliasing::measure::twin::{
     behind_cascade, behind_face_map, behind_map, face_max, measured_fp_zp_w_behind,
     overhead_cascade, overhead_map, Face, TwinWarp,
 };
-use shadow_aliasing::warp::{eta_from_n_prime, n_prime_from_eta, n_prime_lispsm, n_prime_psm};
 use shadow_aliasing::{Error, LightAngle, NPrime, Resolutions, ViewFrustum};
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
 

@@ -7,9 +7,10 @@ use crate::broadcast::{count, map, map_into, OutSpec, N_PRIME, SCALAR};
 use numpy::PyUntypedArrayMethods;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+use shadow_aliasing::analytic::eta;
 use shadow_aliasing::analytic::partition::{self, Scheme, SchemeLight, SplitScheme};
 use shadow_aliasing::analytic::{global, overhead, subdivided, tilted, tsm};
-use shadow_aliasing::{warp, Error, LightAngle, NPrime, Resolutions, ViewFrustum};
+use shadow_aliasing::{Error, LightAngle, NPrime, Resolutions, ViewFrustum};
 
 type Any<'py> = Bound<'py, PyAny>;
 
@@ -284,7 +285,7 @@ pub fn critical_resolution<'py>(
 #[pyfunction]
 pub fn n_prime_lispsm<'py>(py: Python<'py>, near: &Any<'py>, far: &Any<'py>) -> PyResult<Any<'py>> {
     map(py, [("near", near), ("far", far)], SCALAR, |x| {
-        warp::n_prime_lispsm(x[0], x[1])
+        eta::n_prime_lispsm(x[0], x[1])
     })
 }
 
@@ -303,7 +304,7 @@ pub fn n_prime_from_eta<'py>(
         py,
         [("near", near), ("far", far), ("eta", eta)],
         N_PRIME,
-        |x| Ok(warp::n_prime_from_eta(x[0], x[1], x[2])?.value()),
+        |x| Ok(eta::n_prime_from_eta(x[0], x[1], x[2])?.value()),
     )
 }
 
@@ -319,7 +320,7 @@ pub fn eta_from_n_prime<'py>(
         py,
         [("near", near), ("far", far), ("n_prime", n_prime)],
         SCALAR,
-        |x| warp::eta_from_n_prime(x[0], x[1], n_prime_arg("n_prime", x[2])?),
+        |x| eta::eta_from_n_prime(x[0], x[1], n_prime_arg("n_prime", x[2])?),
     )
 }
 

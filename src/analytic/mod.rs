@@ -1,5 +1,6 @@
 //! Closed forms of the five papers, one file per geometry.
 
+pub mod eta;
 pub mod global;
 pub mod overhead;
 pub mod partition;

@@ -2,7 +2,7 @@
 //!
 //! A directional light travels perpendicular to the view direction; the shadow map is warped by
 //! a perspective "warping frustum" along the view direction whose centre of projection lies n′
-//! in front of the near plane ([`crate::warp`]). Along the view direction at depth z
+//! in front of the near plane ([`crate::analytic::eta`]). Along the view direction at depth z
 //! (n ≤ z ≤ f) the image beam has width w_i = 2 z tan θ / res_i, and the light beams have widths
 //! w_lx (along the map's s, the eye's x) and w_lz (along t, the view direction). The errors
 //! m_x = w_lx / w_i and m_z = w_lz / w_i, their maxima M_x, M_z over the frustum, and the storage
@@ -24,9 +24,9 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
+use crate::analytic::eta::{n_prime_at_least, near_far, sqrt_fn};
 use crate::error::{finite_result, fmt_num, positive, Error, Result};
 use crate::frustum::{NPrime, Resolutions, ViewFrustum};
-use crate::warp::{n_prime_at_least, near_far, sqrt_fn};
 
 /// n′_LSPSM = n + √f √n (without overflow of f n).
 #[inline]

@@ -20,9 +20,9 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
+use crate::analytic::eta::near_far;
 use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::ViewFrustum;
-use crate::warp::near_far;
 
 /// The largest number of z-partitions a [`Splits`] holds.
 pub const MAX_PARTITIONS: usize = 16;

@@ -32,10 +32,10 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
+use crate::analytic::eta::{eta_from_n_prime, n_prime_from_eta};
 use crate::analytic::partition::{z_splits, SplitScheme, Splits};
 use crate::error::{finite_result, fmt_num, in_closed, in_open, positive, Error, Result};
 use crate::frustum::{NPrime, Resolutions};
-use crate::warp::{eta_from_n_prime, n_prime_from_eta};
 
 /// Validates α > 1, finite.
 #[inline]

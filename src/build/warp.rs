@@ -647,7 +647,7 @@ pub(crate) fn rule_n_prime(
     let sin_g = fl.sin_gamma;
     Ok(match rule {
         WarpRule::Uniform => NPrime::Unwarped,
-        WarpRule::Eta(eta) => crate::warp::n_prime_from_eta(n, f, eta)?,
+        WarpRule::Eta(eta) => crate::analytic::eta::n_prime_from_eta(n, f, eta)?,
         WarpRule::Psm => NPrime::Finite(n),
         WarpRule::LispsmFixed => NPrime::Finite(view.n_prime_lispsm()),
         WarpRule::Lispsm => {

@@ -3,10 +3,9 @@
 //! spelled once, in its row.
 
 use super::{ArgKind, ArgSpec, Output, Presence, Quantity, ValueKind};
-use crate::analytic::{global, overhead, subdivided, tilted, tsm};
+use crate::analytic::{eta, global, overhead, subdivided, tilted, tsm};
 use crate::error::Error;
 use crate::frustum::LightAngle;
-use crate::warp;
 
 pub(super) const fn req(name: &'static str, kind: ArgKind) -> ArgSpec {
     ArgSpec {
@@ -135,7 +134,7 @@ pub const QUANTITIES: &[Quantity] = &[
         value: ValueKind::Number,
         source: "Lloyd 2006 §4.1",
         compute: |a| {
-            Ok(Output::Number(warp::n_prime_lispsm(
+            Ok(Output::Number(eta::n_prime_lispsm(
                 a.num("near")?,
                 a.num("far")?,
             )?))
@@ -147,7 +146,7 @@ pub const QUANTITIES: &[Quantity] = &[
         value: ValueKind::NPrime,
         source: "Lloyd 2006 Eq 11",
         compute: |a| {
-            Ok(Output::NPrime(warp::n_prime_from_eta(
+            Ok(Output::NPrime(eta::n_prime_from_eta(
                 a.num("near")?,
                 a.num("far")?,
                 a.num("eta")?,
@@ -160,7 +159,7 @@ pub const QUANTITIES: &[Quantity] = &[
         value: ValueKind::Number,
         source: "Lloyd 2006 App. B",
         compute: |a| {
-            Ok(Output::Number(warp::eta_from_n_prime(
+            Ok(Output::Number(eta::eta_from_n_prime(
                 a.num("near")?,
                 a.num("far")?,
                 a.n_prime("n_prime")?,

@@ -6,9 +6,9 @@ use super::chart::{
     PALETTE,
 };
 use super::{Fail, Figure};
+use crate::analytic::eta::{n_prime_from_eta, n_prime_lispsm};
 use crate::analytic::overhead::{max_mx, max_mz, mx, mz, storage_factor};
 use crate::analytic::partition::{scheme_storage_factor, shadow_map_count, Scheme, SchemeLight};
-use crate::warp::{n_prime_from_eta, n_prime_lispsm};
 use crate::{NPrime, Resolutions, ViewFrustum};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -127,7 +127,7 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
         size: (1000, 640),
         title: "Maximum error and storage factor against the warp parameter η".into(),
         caption: vec![
-            "Lloyd et al. 2006, Fig. 6 (n = 1, f = 100), from Eq 9, 10, 11, 12 (analytic::overhead, warp::n_prime_from_eta).".into(),
+            "Lloyd et al. 2006, Fig. 6 (n = 1, f = 100), from Eq 9, 10, 11, 12 (analytic::overhead, analytic::eta::n_prime_from_eta).".into(),
             "Each curve is divided by its own maximum, after which θ cancels. For η ≤ 0 the normalised M_x and M_z coincide (both ∝ n′/(n′ + f − n)); S̄ is constant for η ≥ 0.".into(),
         ],
         charts: vec![c],

@@ -1,7 +1,7 @@
 //! The papers' figures, rendered with plotters from the crate's own functions (feature `plot`).
 //!
 //! Every figure is computed from the crate itself: the closed forms of [`crate::analytic`] and
-//! [`crate::warp`] for the analytic plots, and the measurement of built matrices
+//! [`crate::analytic::eta`] for the analytic plots, and the measurement of built matrices
 //! ([`crate::measure`], [`crate::build`]) for the hemisphere and side-view plots. Nothing is
 //! re-derived here; this module only samples, lays out and draws.
 //!

@@ -13,7 +13,7 @@
 //! | +1 | n | PSM: M_z largest again, on the far plane |
 //!
 //! ```
-//! use shadow_aliasing::warp::{eta_from_n_prime, n_prime_from_eta};
+//! use shadow_aliasing::analytic::eta::{eta_from_n_prime, n_prime_from_eta};
 //! use shadow_aliasing::NPrime;
 //! let n0 = n_prime_from_eta(1.0, 100.0, 0.0)?;
 //! assert_eq!(n0, NPrime::Finite(11.0)); // n + √(f n)
