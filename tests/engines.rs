@@ -216,3 +216,24 @@ fn enclosing_casters_keep_filaments_frame() {
     let (a, b) = (DVec3::new(7.0, -3.0, -40.0), DVec3::new(7.0, 9.0, -80.0));
     assert!((t(a) - t(b)).abs() < 1e-12, "{} vs {}", t(a), t(b));
 }
+
+/// Fuzz finding: OGRE 13.6 with a shadowDist of 2.2·10⁻³⁰⁸ makes n′ so small that 1/n′ overflows
+/// and the map sends the far corners to infinity, which the clip check let through (∞ ≤ ∞). It is
+/// now `Degenerate`; a finite map is never replaced by an infinite one.
+#[test]
+fn ogre_ortho_with_a_vanishing_shadow_distance_is_degenerate() {
+    let view = ViewFrustum::new(1.5707963267948963, 815078735.3515625, 0.3018346884663106).unwrap();
+    let l = DVec3::new(-0.004197235107421875, 4.2755126953125, -0.0000000001678466796875);
+    let rule = WarpRule::OgreOrtho {
+        shadow_distance: 2.2250738585072014e-308,
+    };
+    match warp(&view, l, rule) {
+        Err(Error::Degenerate(_)) => {}
+        Ok(s) => {
+            for c in view.corners() {
+                assert!((s.matrix * c.extend(1.0)).is_finite(), "{c}");
+            }
+        }
+        Err(e) => panic!("{e:?}"),
+    }
+}

@@ -588,11 +588,12 @@ fn clip_ok_at_corners(m: &DMat4, corners: &[DVec3; 8]) -> bool {
 /// How far outside the clip volume rounding may put a point: 10⁻⁶ of its half-width.
 pub(crate) const CLIP_SLACK: f64 = 1e-6;
 
-/// `h` (OpenGL depth) inside the clip volume, within [`CLIP_SLACK`], with w ≥ 1/2.
+/// `h` (OpenGL depth) inside the clip volume, within [`CLIP_SLACK`], with w ∈ [1/2, ∞) finite
+/// (an infinite w would admit infinite x, y, z).
 #[inline(always)]
 fn in_clip(h: DVec4) -> bool {
     let s = (1.0 + CLIP_SLACK) * h.w;
-    h.w >= 0.5 && h.x.abs() <= s && h.y.abs() <= s && h.z.abs() <= s
+    h.w >= 0.5 && h.w < f64::INFINITY && h.x.abs() <= s && h.y.abs() <= s && h.z.abs() <= s
 }
 
 /// The `[0, 1]`-depth form's z of the same point inside [0, w], within [`CLIP_SLACK`] of its
