@@ -4,7 +4,9 @@
 #![cfg(feature = "cli")]
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
+
+mod common;
+use common::cli::run;
 
 /// The file names issue 4 fixes, so that links and scripts can rely on them.
 const NAMES: [&str; 11] = [
@@ -20,18 +22,6 @@ const NAMES: [&str; 11] = [
     "zhang-fig3",
     "martin-tan-fig6",
 ];
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
-        .args(args)
-        .output()
-        .expect("the binary runs");
-    (
-        out.status.code().expect("exited normally"),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
-}
 
 fn temp_dir(tag: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("sa-cli-figures-{tag}-{}", std::process::id()));

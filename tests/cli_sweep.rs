@@ -7,17 +7,9 @@ use std::f64::consts::{FRAC_PI_2, PI, TAU};
 use std::path::Path;
 use std::process::Command;
 
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
-        .args(args)
-        .output()
-        .expect("the binary runs");
-    (
-        out.status.code().expect("exited normally"),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
-}
+mod common;
+use common::cli::run;
+use common::close;
 
 /// Runs a sweep with n = 1, f = 100, θ = 0.5 and returns the rows.
 fn sweep(extra: &[&str]) -> Vec<(f64, f64, f64)> {
@@ -37,10 +29,6 @@ fn sweep(extra: &[&str]) -> Vec<(f64, f64, f64)> {
             (f[0], f[1], f[2])
         })
         .collect()
-}
-
-fn close(a: f64, b: f64, rel: f64) -> bool {
-    (a - b).abs() <= rel * b.abs()
 }
 
 #[test]

@@ -4,22 +4,13 @@
 #![cfg(feature = "cli")]
 
 use serde_json::Value;
-use std::process::Command;
+
+mod common;
+use common::cli::run;
+use common::close;
 
 #[allow(clippy::approx_constant)] // the command line's 0.5236 of issue 3, not π/6
 const HALF_FOV: f64 = 0.5236;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
-        .args(args)
-        .output()
-        .expect("the binary runs");
-    (
-        out.status.code().expect("exited normally"),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
-}
 
 fn warp_json(extra: &[&str]) -> Value {
     let mut args = vec![
@@ -37,10 +28,6 @@ fn warp_json(extra: &[&str]) -> Value {
     assert_eq!(code, 0, "{args:?}: {err}");
     assert!(err.is_empty(), "{err}");
     serde_json::from_str(&out).unwrap_or_else(|e| panic!("{out}: {e}"))
-}
-
-fn close(a: f64, b: f64, rel: f64) -> bool {
-    (a - b).abs() <= rel * b.abs().max(1e-300)
 }
 
 fn num(v: &Value) -> f64 {

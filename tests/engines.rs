@@ -223,7 +223,11 @@ fn enclosing_casters_keep_filaments_frame() {
 #[test]
 fn ogre_ortho_with_a_vanishing_shadow_distance_is_degenerate() {
     let view = ViewFrustum::new(1.5707963267948963, 815078735.3515625, 0.3018346884663106).unwrap();
-    let l = DVec3::new(-0.004197235107421875, 4.2755126953125, -0.0000000001678466796875);
+    let l = DVec3::new(
+        -0.004197235107421875,
+        4.2755126953125,
+        -0.0000000001678466796875,
+    );
     let rule = WarpRule::OgreOrtho {
         shadow_distance: 2.2250738585072014e-308,
     };

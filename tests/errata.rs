@@ -9,6 +9,8 @@
 //!
 //! Lloyd 2006 entry 17 is being rewritten elsewhere and is not checked here.
 
+mod common;
+use common::close;
 use glam::DVec3;
 use shadow_aliasing::analytic::global::{zhang_ep, zhang_ep_local, zhang_eq, zhang_eq_local};
 use shadow_aliasing::analytic::partition::{
@@ -218,10 +220,6 @@ fn sci(x: f64, p: usize) -> String {
     let k = x.abs().log10().floor() as i32;
     // d() counts the value.
     format!("{}·10{}", d(x / 10f64.powi(k), p), superscript(k))
-}
-
-fn close(a: f64, b: f64, rel: f64) -> bool {
-    (a - b).abs() <= rel * a.abs().max(b.abs())
 }
 
 /// Measured error at (x, y, −z) with unit resolutions.

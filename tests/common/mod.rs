@@ -3,6 +3,9 @@
 //! frustum. Each test binary uses a subset, hence `dead_code` is allowed here.
 #![allow(dead_code)]
 
+#[cfg(feature = "cli")]
+pub mod cli;
+
 use proptest::prelude::*;
 use shadow_aliasing::ViewFrustum;
 
