@@ -279,3 +279,21 @@ fn face_partitions_are_never_empty() {
         }
     }
 }
+
+/// Fuzz finding: at aspect 2.2·10⁻³⁰⁸ (n = 1, f = θ = π/2 − 1 ulp, light (0, −6.5·10³⁰⁰, 10⁹))
+/// the minimax optimum had M_x = 2.8·10⁻³⁰⁸ and M_z = 6.5·10⁻¹⁷, whose product, the storage
+/// factor, underflows to 0: no valid answer, so `Degenerate`, not `Ok` with S̄ = 0.
+#[test]
+fn minimax_refuses_an_underflowing_storage_factor() {
+    let hp = 1.5707963267948963;
+    let Ok(view) = ViewFrustum::with_aspect(1.0, hp, hp, 2.2250738585072014e-308) else {
+        return;
+    };
+    let l = DVec3::new(0.0, -6.486014777691532e300, 996063232.421875);
+    for r in [minimax_n_prime(&view, l), minimax_mz_n_prime(&view, l)] {
+        match r {
+            Ok(o) => assert!(o.storage_factor().is_normal(), "{o:?}"),
+            Err(e) => assert!(matches!(e, Error::Degenerate(_)), "{e:?}"),
+        }
+    }
+}

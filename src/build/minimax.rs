@@ -41,7 +41,7 @@
 //! uniform map.
 
 use crate::build::warp::FrustumInLight;
-use crate::error::{finite_result, Error, Result};
+use crate::error::{finite_result, fmt_num, Error, Result};
 use crate::frustum::{NPrime, ViewFrustum};
 use glam::DVec3;
 
@@ -288,7 +288,7 @@ pub(crate) fn min_storage(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
 ///
 /// # Errors
 /// [`crate::Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector;
-/// [`crate::Error::Degenerate`] when the maxima or S̄ of the optimum overflow `f64`.
+/// [`crate::Error::Degenerate`] when the maxima or S̄ of the optimum overflow or underflow `f64`.
 ///
 /// ```
 /// # use shadow_aliasing::build::minimax::minimax_mz_n_prime;
@@ -305,7 +305,8 @@ pub fn minimax_mz_n_prime(view: &ViewFrustum, light_dir: DVec3) -> Result<Optimu
 }
 
 /// The optimum, or [`Error::Degenerate`] when its maxima or their product are not finite
-/// (the frustum's errors overflow `f64` for every n′).
+/// (the frustum's errors overflow `f64` for every n′) or not normal (they underflow: a frustum
+/// of aspect 2·10⁻³⁰⁸ gives M_x = 3·10⁻³⁰⁸, M_x M_z = 0).
 fn checked(o: Optimum) -> Result<Optimum> {
     finite_result("M_x of the minimax map", o.max_mx)?;
     finite_result("M_z of the minimax map", o.max_mz)?;
@@ -313,12 +314,15 @@ fn checked(o: Optimum) -> Result<Optimum> {
         "the storage factor M_x M_z of the minimax map",
         o.storage_factor(),
     )?;
-    if o.max_mx > 0.0 && o.max_mz > 0.0 {
+    // Normal values: a subnormal maximum (or product) has lost its digits, and a product that
+    // underflows to 0 is no storage factor.
+    if o.max_mx.is_normal() && o.max_mz.is_normal() && o.storage_factor().is_normal() {
         Ok(o)
     } else {
         Err(Error::Degenerate(format!(
-            "the minimax map's maxima are not positive (M_x = {}, M_z = {})",
-            o.max_mx, o.max_mz
+            "the minimax map's maxima or their product underflow f64 (M_x = {}, M_z = {})",
+            fmt_num(o.max_mx),
+            fmt_num(o.max_mz)
         )))
     }
 }
@@ -329,7 +333,7 @@ fn checked(o: Optimum) -> Result<Optimum> {
 ///
 /// # Errors
 /// [`crate::Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector;
-/// [`crate::Error::Degenerate`] when the maxima or S̄ of the optimum overflow `f64`.
+/// [`crate::Error::Degenerate`] when the maxima or S̄ of the optimum overflow or underflow `f64`.
 ///
 /// ```
 /// # use shadow_aliasing::build::minimax::minimax_n_prime;
