@@ -32,6 +32,7 @@
 //! ```
 
 mod barroso;
+mod canvas;
 mod chart;
 mod hemisphere;
 mod lloyd2005;
@@ -202,6 +203,9 @@ fn ensure_font() -> Result<(), PlotError> {
     }
 }
 
+/// The PNG is drawn at this many times its size in each direction and averaged down.
+const SUPERSAMPLE: u32 = 2;
+
 /// Writes `fig` as `out_dir/name.{png,svg}`.
 fn emit<F: Figure>(
     name: &'static str,
@@ -218,12 +222,18 @@ fn emit<F: Figure>(
         let path = out_dir.join(format!("{name}.{ext}"));
         let (w, h) = fig.size();
         let bytes = if *ext == "png" {
-            let mut rgb = vec![0u8; w as usize * h as usize * 3];
+            // Drawn at twice the size and box-filtered down: anti-aliased lines and edges.
+            let mut big =
+                vec![0u8; (SUPERSAMPLE * SUPERSAMPLE) as usize * w as usize * h as usize * 3];
             {
-                let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+                let bitmap =
+                    BitMapBackend::with_buffer(&mut big, (SUPERSAMPLE * w, SUPERSAMPLE * h));
+                let root = canvas::Canvas::new(bitmap, SUPERSAMPLE, canvas::BITMAP_TEXT)
+                    .into_drawing_area();
                 fig.draw(&root).map_err(|e| e.named(name))?;
                 root.present().map_err(|e| Fail::from(e).named(name))?;
             }
+            let rgb = canvas::downsample(&big, w, h, SUPERSAMPLE);
             let mut png = Vec::new();
             image::codecs::png::PngEncoder::new(&mut png)
                 .write_image(&rgb, w, h, image::ColorType::Rgb8)
@@ -235,7 +245,12 @@ fn emit<F: Figure>(
         } else {
             let mut svg = String::new();
             {
-                let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
+                let root = canvas::Canvas::new(
+                    SVGBackend::with_string(&mut svg, (w, h)),
+                    1,
+                    canvas::SVG_TEXT,
+                )
+                .into_drawing_area();
                 fig.draw(&root).map_err(|e| e.named(name))?;
                 root.present().map_err(|e| Fail::from(e).named(name))?;
             }
