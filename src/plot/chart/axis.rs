@@ -181,9 +181,15 @@ impl Axis {
                         }
                     }
                     if decades <= 2.0 + 1e-9 {
-                        // Two decades or less: label 2 and 5 as well.
+                        // Two decades or less: label 2 and 5 as well; less than one decade:
+                        // every mantissa.
+                        let mantissas: &[f64] = if decades < 1.0 - 1e-9 {
+                            &[2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]
+                        } else {
+                            &[2.0, 5.0]
+                        };
                         for e in lf..=last {
-                            for m in [2.0f64, 5.0] {
+                            for &m in mantissas {
                                 let v = e as f64 + m.log10();
                                 if inside(v) {
                                     bold.push(v);
@@ -203,6 +209,16 @@ impl Axis {
         }
     }
 
+    /// Whether every labelled decade of a base-10 axis reads well as a plain number (0.01 to
+    /// 1000); otherwise all decades are written as powers of ten, never a mix of both.
+    fn plain_decades(&self) -> bool {
+        self.ticks()
+            .0
+            .iter()
+            .all(|&a| (-2.0 - 1e-9..=3.0 + 1e-9).contains(&a))
+            && self.max <= 1000.0 * (1.0 + 1e-9)
+    }
+
     /// The label of a tick at axis-space position `a`.
     pub fn tick_label(&self, a: f64) -> String {
         match self.scale {
@@ -214,11 +230,13 @@ impl Axis {
                 let e = a.round();
                 if (a - e).abs() < 1e-9 {
                     let e = e as i64;
-                    if (b - 10.0).abs() < 1e-12 && (-2..=3).contains(&e) {
+                    if (b - 10.0).abs() < 1e-12 && self.plain_decades() {
                         fmt_plain(10f64.powi(e as i32))
                     } else {
                         format!("{}{}", fmt_plain(b), superscript(e))
                     }
+                } else if (b - 10.0).abs() < 1e-12 && !self.plain_decades() {
+                    fmt_times_ten(self.to_data(a))
                 } else {
                     fmt_plain(self.to_data(a))
                 }
@@ -278,6 +296,31 @@ fn trim_zeros(s: &str) -> String {
         s.trim_end_matches('0').trim_end_matches('.').to_string()
     } else {
         s.to_string()
+    }
+}
+
+/// A number as m×10ᵉ with up to four significant digits ("8.652×10⁵"); plain between 0.01 and
+/// 1000.
+pub(crate) fn fmt_times_ten(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return fmt_plain(v);
+    }
+    let e = v.abs().log10().floor();
+    if (-2.0..=3.0).contains(&e) {
+        return fmt_plain(v);
+    }
+    let m = v / 10f64.powf(e);
+    // Rounding can carry the mantissa to 10.
+    let (m, e) = if (m.abs() * 1000.0).round() >= 10_000.0 {
+        (m / 10.0, e + 1.0)
+    } else {
+        (m, e)
+    };
+    let mant = trim_zeros(&format!("{m:.3}"));
+    if mant == "1" {
+        format!("10{}", superscript(e as i64))
+    } else {
+        format!("{mant}×10{}", superscript(e as i64))
     }
 }
 
@@ -381,8 +424,22 @@ mod tests {
         let (bold, light) = a.ticks();
         assert_eq!(bold, vec![0.0, 1.0, 2.0, 3.0, 4.0]);
         assert_eq!(light.len(), 4 * 8 + 5);
-        assert_eq!(a.tick_label(3.0), "1000");
+        // One format per axis: 1 … 10⁴ is all powers, 0.1 … 1000 all plain numbers.
+        assert_eq!(a.tick_label(0.0), "10⁰");
+        assert_eq!(a.tick_label(3.0), "10³");
         assert_eq!(a.tick_label(4.0), "10⁴");
+        // Less than a decade: every mantissa, written as m×10ᵉ on a large axis.
+        let sub = Axis::log10("S", 8.65e5, 2e6);
+        let labels: Vec<String> = sub.ticks().0.iter().map(|&t| sub.tick_label(t)).collect();
+        assert_eq!(labels, vec!["9×10⁵", "10⁶", "2×10⁶"]);
+        assert_eq!(fmt_times_ten(8.6523e5), "8.652×10⁵");
+        assert_eq!(fmt_times_ten(9.99999e5), "10⁶");
+        assert_eq!(fmt_times_ten(1999.0), "1999");
+        assert_eq!(fmt_times_ten(19990.0), "1.999×10⁴");
+        assert_eq!(fmt_times_ten(865.2), "865.2");
+        let plain = Axis::log10("S", 0.1, 1000.0);
+        assert_eq!(plain.tick_label(-1.0), "0.1");
+        assert_eq!(plain.tick_label(3.0), "1000");
         assert_eq!(Axis::log10("S", 1e-6, 1.0).tick_label(-6.0), "10⁻⁶");
         assert_eq!(a.to_axis(100.0), Some(2.0));
         assert_eq!(a.to_axis(0.0), None);

@@ -8,48 +8,134 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// A colour scale: a value range on an axis (linear or logarithmic), quantised into `levels`
-/// bands of the jet colour map (blue low, red high, as in the papers' plots).
+/// bands of the viridis colour map (dark blue low, yellow high: perceptually uniform, and
+/// readable in grey and by colour-blind readers).
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct ColourScale {
     pub axis: Axis,
     pub levels: usize,
 }
 
+/// Bands of a smooth colour scale: neighbouring bands of viridis differ by less than the eye
+/// resolves, so the map reads as continuous, while runs of equal cells still merge in the SVG.
+pub(crate) const SMOOTH_LEVELS: usize = 96;
+
 impl ColourScale {
+    /// A smooth scale over `axis`.
+    pub fn smooth(axis: Axis) -> Self {
+        Self {
+            axis,
+            levels: SMOOTH_LEVELS,
+        }
+    }
+
     /// The band of a value, clamped to the range; `None` where the value cannot be shown.
     pub fn level(&self, v: f64) -> Option<usize> {
         let a = self.axis.to_axis(v)?;
         let (lo, hi) = self.axis.range();
-        let t = ((a - lo) / (hi - lo)).clamp(0.0, 1.0);
+        let t = if hi > lo {
+            ((a - lo) / (hi - lo)).clamp(0.0, 1.0)
+        } else {
+            0.5
+        };
         Some(((t * self.levels as f64) as usize).min(self.levels - 1))
     }
 
     /// The colour of a band.
     pub fn level_colour(&self, level: usize) -> RGBColor {
-        jet((level as f64 + 0.5) / self.levels as f64)
+        viridis((level as f64 + 0.5) / self.levels as f64)
     }
 }
 
-/// The jet colour map at t ∈ [0, 1].
-pub(crate) fn jet(t: f64) -> RGBColor {
-    let c = |x: f64| (255.0 * (1.5 - x.abs()).clamp(0.0, 1.0)).round() as u8;
-    RGBColor(c(4.0 * t - 3.0), c(4.0 * t - 2.0), c(4.0 * t - 1.0))
+/// matplotlib's viridis at t = 0, 1/9, …, 1 (its ten-colour table, #440154 … #fde725).
+const VIRIDIS: [(u8, u8, u8); 10] = [
+    (0x44, 0x01, 0x54),
+    (0x48, 0x28, 0x78),
+    (0x3e, 0x49, 0x89),
+    (0x31, 0x68, 0x8e),
+    (0x26, 0x82, 0x8e),
+    (0x1f, 0x9e, 0x89),
+    (0x35, 0xb7, 0x79),
+    (0x6e, 0xce, 0x58),
+    (0xb5, 0xde, 0x2b),
+    (0xfd, 0xe7, 0x25),
+];
+
+/// The viridis colour map at t ∈ [0, 1] (linear between the ten samples).
+pub(crate) fn viridis(t: f64) -> RGBColor {
+    let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
+    let x = t * (VIRIDIS.len() - 1) as f64;
+    let i = (x.floor() as usize).min(VIRIDIS.len() - 2);
+    let f = x - i as f64;
+    let (a, b) = (VIRIDIS[i], VIRIDIS[i + 1]);
+    let mix = |p: u8, q: u8| (f64::from(p) + f * (f64::from(q) - f64::from(p))).round() as u8;
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
 }
 
 /// A field on a rectangular grid: `values[j * nx + i]` for the cell `[x_i, x_{i+1}] ×
-/// [y_j, y_{j+1}]` in data coordinates; `None` cells are left blank.
+/// [y_j, y_{j+1}]` in data coordinates, cut to the convex region `clip` (half-planes
+/// `a x + b y ≤ c`; none: the whole rectangle); `None` cells are left blank.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Grid {
     pub x_edges: Vec<f64>,
     pub y_edges: Vec<f64>,
     pub values: Vec<Option<f64>>,
+    pub clip: Vec<(f64, f64, f64)>,
+}
+
+/// Cuts a convex polygon to the half-plane `a x + b y ≤ c` (Sutherland–Hodgman).
+fn cut(poly: &[(f64, f64)], (a, b, c): (f64, f64, f64)) -> Vec<(f64, f64)> {
+    let d = |p: (f64, f64)| a * p.0 + b * p.1 - c;
+    let mut out = Vec::with_capacity(poly.len() + 1);
+    for k in 0..poly.len() {
+        let (p, q) = (poly[k], poly[(k + 1) % poly.len()]);
+        let (dp, dq) = (d(p), d(q));
+        if dp <= 0.0 {
+            out.push(p);
+        }
+        if (dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0) {
+            let t = dp / (dp - dq);
+            out.push((p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1)));
+        }
+    }
+    out
+}
+
+/// The area and centroid of a simple polygon (shoelace).
+fn area_centroid(poly: &[(f64, f64)]) -> (f64, (f64, f64)) {
+    let (mut a, mut cx, mut cy) = (0.0, 0.0, 0.0);
+    for k in 0..poly.len() {
+        let (p, q) = (poly[k], poly[(k + 1) % poly.len()]);
+        let w = p.0 * q.1 - q.0 * p.1;
+        a += w;
+        cx += (p.0 + q.0) * w;
+        cy += (p.1 + q.1) * w;
+    }
+    if a.abs() < 1e-300 {
+        return (0.0, (f64::NAN, f64::NAN));
+    }
+    (0.5 * a.abs(), (cx / (3.0 * a), cy / (3.0 * a)))
 }
 
 impl Grid {
     /// Evaluates `f` at each cell centre of an `nx × ny` grid over `[x0, x1] × [y0, y1]`.
+    #[cfg(test)]
     pub fn sample(
+        x: (f64, f64, usize),
+        y: (f64, f64, usize),
+        f: impl FnMut(f64, f64) -> Option<f64>,
+    ) -> Self {
+        Self::sample_clipped(x, y, Vec::new(), f)
+    }
+
+    /// As [`Grid::sample`], with each cell cut to the region `clip` and `f` evaluated at the
+    /// centroid of what is left (cells outside the region are blank), so that the cells along a
+    /// slanted border follow it and the first cells sample the region's edge, not a centre
+    /// half a cell away.
+    pub fn sample_clipped(
         (x0, x1, nx): (f64, f64, usize),
         (y0, y1, ny): (f64, f64, usize),
+        clip: Vec<(f64, f64, f64)>,
         mut f: impl FnMut(f64, f64) -> Option<f64>,
     ) -> Self {
         let x_edges: Vec<f64> = (0..=nx)
@@ -58,25 +144,60 @@ impl Grid {
         let y_edges: Vec<f64> = (0..=ny)
             .map(|j| y0 + (y1 - y0) * j as f64 / ny as f64)
             .collect();
-        let mut values = Vec::with_capacity(nx * ny);
-        for j in 0..ny {
-            for i in 0..nx {
-                let x = 0.5 * (x_edges[i] + x_edges[i + 1]);
-                let y = 0.5 * (y_edges[j] + y_edges[j + 1]);
-                values.push(f(x, y).filter(|v| v.is_finite()));
-            }
-        }
-        Self {
+        let mut grid = Self {
             x_edges,
             y_edges,
-            values,
+            values: Vec::with_capacity(nx * ny),
+            clip,
+        };
+        for j in 0..ny {
+            for i in 0..nx {
+                let v = grid
+                    .sample_point(i, j)
+                    .and_then(|(x, y)| f(x, y))
+                    .filter(|v| v.is_finite());
+                grid.values.push(v);
+            }
         }
+        grid
+    }
+
+    /// The cell `(i, j)` cut to the clip region (its four corners when nothing is cut), and
+    /// whether it was cut.
+    pub fn cell(&self, i: usize, j: usize) -> (Vec<(f64, f64)>, bool) {
+        let (xa, xb) = (self.x_edges[i], self.x_edges[i + 1]);
+        let (ya, yb) = (self.y_edges[j], self.y_edges[j + 1]);
+        let rect = vec![(xa, ya), (xb, ya), (xb, yb), (xa, yb)];
+        let inside = |p: &(f64, f64)| self.clip.iter().all(|h| h.0 * p.0 + h.1 * p.1 <= h.2);
+        if rect.iter().all(inside) {
+            return (rect, false);
+        }
+        let mut poly = rect;
+        for &h in &self.clip {
+            poly = cut(&poly, h);
+            if poly.len() < 3 {
+                return (Vec::new(), true);
+            }
+        }
+        (poly, true)
+    }
+
+    /// Where the cell `(i, j)` is sampled: the centroid of its part inside the clip region;
+    /// `None` when nothing of it is inside.
+    pub fn sample_point(&self, i: usize, j: usize) -> Option<(f64, f64)> {
+        let (poly, _) = self.cell(i, j);
+        if poly.len() < 3 {
+            return None;
+        }
+        let (area, c) = area_centroid(&poly);
+        (area > 0.0 && c.0.is_finite() && c.1.is_finite()).then_some(c)
     }
 }
 
 /// Draws a grid into a chart whose axes are linear in the grid's coordinates. Runs of
-/// neighbouring cells in one row that fall in the same colour band are merged into one
-/// rectangle, which keeps the SVG small.
+/// neighbouring whole cells in one row that fall in the same colour band are merged into one
+/// rectangle, which keeps the SVG small; cells cut by the clip region are drawn as the
+/// polygons they are, so that a slanted border is straight, not stair-stepped.
 pub(crate) fn draw_grid<DB: DrawingBackend>(
     chart: &mut Chart2d<'_, DB>,
     grid: &Grid,
@@ -85,17 +206,25 @@ pub(crate) fn draw_grid<DB: DrawingBackend>(
     let nx = grid.x_edges.len() - 1;
     let ny = grid.y_edges.len() - 1;
     let mut rects = Vec::new();
+    let mut polys = Vec::new();
+    let level_at = |i: usize, j: usize| grid.values[j * nx + i].and_then(|v| scale.level(v));
     for j in 0..ny {
         let mut i = 0;
         while i < nx {
-            let Some(level) = grid.values[j * nx + i].and_then(|v| scale.level(v)) else {
+            let Some(level) = level_at(i, j) else {
                 i += 1;
                 continue;
             };
+            let (poly, was_cut) = grid.cell(i, j);
+            if was_cut {
+                if poly.len() >= 3 {
+                    polys.push(Polygon::new(poly, scale.level_colour(level).filled()));
+                }
+                i += 1;
+                continue;
+            }
             let start = i;
-            while i + 1 < nx
-                && grid.values[j * nx + i + 1].and_then(|v| scale.level(v)) == Some(level)
-            {
+            while i + 1 < nx && level_at(i + 1, j) == Some(level) && !grid.cell(i + 1, j).1 {
                 i += 1;
             }
             rects.push(Rectangle::new(
@@ -109,6 +238,7 @@ pub(crate) fn draw_grid<DB: DrawingBackend>(
         }
     }
     chart.draw_series(rects)?;
+    chart.draw_series(polys)?;
     Ok(())
 }
 
@@ -310,10 +440,57 @@ mod tests {
         assert_eq!(s.level(0.5), Some(0));
         assert_eq!(s.level(-1.0), None);
         assert_eq!(s.level(10f64.powf(1.5)), Some(15));
-        // Jet: blue at the bottom, red at the top.
-        assert_eq!(jet(0.0), RGBColor(0, 0, 128));
-        assert_eq!(jet(1.0), RGBColor(128, 0, 0));
-        assert_eq!(jet(0.5), RGBColor(128, 255, 128));
+        // Viridis: matplotlib's end colours #440154 and #fde725, and its lightness rises
+        // monotonically (relative luminance, WCAG's formula, computed here).
+        assert_eq!(viridis(0.0), RGBColor(0x44, 0x01, 0x54));
+        assert_eq!(viridis(1.0), RGBColor(0xfd, 0xe7, 0x25));
+        let lum = |c: RGBColor| {
+            let lin = |u: u8| {
+                let v = f64::from(u) / 255.0;
+                if v <= 0.04045 {
+                    v / 12.92
+                } else {
+                    ((v + 0.055) / 1.055).powf(2.4)
+                }
+            };
+            0.2126 * lin(c.0) + 0.7152 * lin(c.1) + 0.0722 * lin(c.2)
+        };
+        let ls: Vec<f64> = (0..=200).map(|k| lum(viridis(k as f64 / 200.0))).collect();
+        assert!(
+            ls.windows(2).all(|w| w[1] >= w[0]),
+            "lightness not monotonic"
+        );
+        // plotters' own viridis table (eight samples) at t = 2/7: (54, 92, 141).
+        let c = viridis(2.0 / 7.0);
+        assert!(
+            c.0.abs_diff(54) <= 2 && c.1.abs_diff(92) <= 2 && c.2.abs_diff(141) <= 2,
+            "{c:?}"
+        );
+    }
+
+    /// A 2 × 2 grid over [0, 2]² cut to y ≤ x: the diagonal cells become the triangles below
+    /// the diagonal, sampled at their centroids (2/3, 1/3) and (5/3, 4/3); the cell above it
+    /// is blank, the one below whole.
+    #[test]
+    fn clipped_cells_follow_the_border_and_sample_their_centroid() {
+        let g = Grid::sample_clipped(
+            (0.0, 2.0, 2),
+            (0.0, 2.0, 2),
+            vec![(-1.0, 1.0, 0.0)],
+            |x, y| Some(x + 10.0 * y),
+        );
+        let (p, cut0) = g.cell(0, 0);
+        assert!(cut0 && p.len() == 3);
+        let c = g.sample_point(0, 0).unwrap();
+        assert!((c.0 - 2.0 / 3.0).abs() < 1e-12 && (c.1 - 1.0 / 3.0).abs() < 1e-12);
+        let c = g.sample_point(1, 1).unwrap();
+        assert!((c.0 - 5.0 / 3.0).abs() < 1e-12 && (c.1 - 4.0 / 3.0).abs() < 1e-12);
+        assert_eq!(g.values[2], None, "cell (0, 1) lies above y = x");
+        assert_eq!(
+            g.cell(1, 0),
+            (vec![(1.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0)], false)
+        );
+        assert_eq!(g.values[1], Some(1.5 + 5.0));
     }
 
     #[test]

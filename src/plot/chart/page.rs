@@ -8,8 +8,8 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-/// Fills the page white, writes the title at the top and the caption lines at the bottom, and
-/// returns the area left between them.
+/// Fills the page white, writes the title at the top and the caption (its lines joined into one
+/// paragraph, wrapped to the page width) at the bottom, and returns the area left between them.
 pub(crate) fn frame<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     title: &str,
@@ -23,27 +23,48 @@ pub(crate) fn frame<DB: DrawingBackend>(
         TextStyle::from((FONT, 22).into_font()).pos(Pos::new(HPos::Center, VPos::Top)),
     ))?;
     let line_h = 18;
-    let bottom = caption.len() as i32 * line_h + 10;
-    for (k, line) in caption.iter().enumerate() {
-        // Shrink a long line until it fits the page width.
-        let mut size = 14.0;
-        while size > 9.0 {
-            let (tw, _) =
-                root.estimate_text_size(line, &TextStyle::from((FONT, size).into_font()))?;
-            if tw as f64 <= f64::from(w) - 28.0 {
-                break;
-            }
-            size -= 0.5;
-        }
+    let style = TextStyle::from((FONT, 14).into_font());
+    let width = f64::from(w) - 28.0;
+    // The caption is one paragraph, wrapped to the page.
+    let lines = wrap(&caption.join(" "), width, |t| {
+        root.estimate_text_size(t, &style)
+            .map(|(tw, _)| f64::from(tw))
+            .unwrap_or(f64::INFINITY)
+    });
+    let bottom = lines.len() as i32 * line_h + 10;
+    for (k, line) in lines.iter().enumerate() {
         root.draw(&Text::new(
-            (*line).to_string(),
+            line.clone(),
             (14, h as i32 - bottom + 4 + k as i32 * line_h),
-            TextStyle::from((FONT, size).into_font())
+            style
                 .color(&RGBColor(50, 50, 50))
                 .pos(Pos::new(HPos::Left, VPos::Top)),
         ))?;
     }
     Ok(root.margin(44, bottom, 6, 6))
+}
+
+/// Breaks `text` at spaces into lines no wider than `width` (as measured by `measure`); a single
+/// word wider than the page keeps a line of its own.
+pub(crate) fn wrap(text: &str, width: f64, measure: impl Fn(&str) -> f64) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut cur = String::new();
+    for word in text.split(' ') {
+        let candidate = if cur.is_empty() {
+            word.to_string()
+        } else {
+            format!("{cur} {word}")
+        };
+        if !cur.is_empty() && measure(&candidate) > width {
+            lines.push(std::mem::replace(&mut cur, word.to_string()));
+        } else {
+            cur = candidate;
+        }
+    }
+    if !cur.is_empty() || lines.is_empty() {
+        lines.push(cur);
+    }
+    lines
 }
 
 /// A page of line charts side by side: the common shape of the closed-form figures.
@@ -68,5 +89,19 @@ impl super::super::Figure for Charts {
             draw_line_chart(panel, chart)?;
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn captions_wrap_at_spaces_within_the_width() {
+        // One unit per character: "aaa bb" is 6 wide.
+        let m = |t: &str| t.chars().count() as f64;
+        assert_eq!(wrap("aaa bb cc d", 6.0, m), vec!["aaa bb", "cc d"]);
+        assert_eq!(wrap("short", 60.0, m), vec!["short"]);
+        assert_eq!(wrap("toolongword x", 4.0, m), vec!["toolongword", "x"]);
     }
 }
