@@ -23,6 +23,7 @@ fn citation(name: &str) -> &'static str {
         "barroso-fig7" => "Barroso &amp; Celes 2007, Fig. 7",
         "zhang-fig3" => "Zhang et al. 2009, Fig. 3",
         "martin-tan-fig6" => "Martin &amp; Tan 2004, Fig. 6",
+        "lloyd2006-worst-case" => "Lloyd et al. 2006, §5.3",
         other => panic!("no citation known for {other}"),
     }
 }
@@ -88,7 +89,7 @@ fn each_figure_has_its_own_function() {
     use shadow_aliasing::plot;
     let dir = out_dir("figures-functions");
     type F = fn(&Path, Format) -> Result<Vec<PathBuf>, PlotError>;
-    let funcs: [(&str, F); 11] = [
+    let funcs: [(&str, F); 12] = [
         ("lloyd2005-fig4", plot::lloyd2005_fig4),
         ("lloyd2005-fig7", plot::lloyd2005_fig7),
         ("lloyd2006-fig5", plot::lloyd2006_fig5),
@@ -100,6 +101,7 @@ fn each_figure_has_its_own_function() {
         ("barroso-fig7", plot::barroso_fig7),
         ("zhang-fig3", plot::zhang_fig3),
         ("martin-tan-fig6", plot::martin_tan_fig6),
+        ("lloyd2006-worst-case", plot::lloyd2006_worst_case),
     ];
     assert_eq!(funcs.len(), FIGURES.len());
     for (name, f) in funcs {
@@ -122,6 +124,7 @@ fn the_figure_list_is_the_issue_list() {
         "barroso-fig7",
         "zhang-fig3",
         "martin-tan-fig6",
+        "lloyd2006-worst-case",
     ];
     assert_eq!(FIGURES, expected);
     let unique: HashSet<_> = FIGURES.iter().collect();

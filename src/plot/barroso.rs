@@ -49,8 +49,22 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         // 0 < γ < φ_y) and where it is positive (the plot is logarithmic).
         let (a, b) = (n_prime_1(&view, angle)?, n_prime_2(&view, angle)?);
         let phi = view.half_fov();
-        n1.push((d, if g >= phi - 1e-12 && a > 0.0 { a } else { f64::NAN }));
-        n2.push((d, if g < phi - 1e-12 && b > 0.0 { b } else { f64::NAN }));
+        n1.push((
+            d,
+            if g >= phi - 1e-12 && a > 0.0 {
+                a
+            } else {
+                f64::NAN
+            },
+        ));
+        n2.push((
+            d,
+            if g < phi - 1e-12 && b > 0.0 {
+                b
+            } else {
+                f64::NAN
+            },
+        ));
     }
     let mut c = LineChart::new(
         "",

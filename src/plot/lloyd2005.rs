@@ -69,7 +69,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     let mut c = LineChart::new(
         "",
         Axis::linear("number of face subdivisions k", 1.0, 10.0),
-        Axis::log10("m_max(k) / m_max(1) (log scale)", 1e-3, 1.0),
+        Axis::log10("m_{max}(k) / m_{max}(1) (log scale)", 1e-3, 1.0),
     );
     c.legend = SeriesLabelPosition::LowerLeft;
     for (i, alpha) in [10.0, 100.0, 1000.0, 10_000.0].into_iter().enumerate() {
