@@ -24,6 +24,7 @@ fn citation(name: &str) -> &'static str {
         "zhang-fig3" => "Zhang et al. 2009, Fig. 3",
         "martin-tan-fig6" => "Martin &amp; Tan 2004, Fig. 6",
         "lloyd2006-worst-case" => "Lloyd et al. 2006, §5.3",
+        "lloyd2006-fig4" => "Lloyd et al. 2006, Fig. 4",
         other => panic!("no citation known for {other}"),
     }
 }
@@ -89,7 +90,7 @@ fn each_figure_has_its_own_function() {
     use shadow_aliasing::plot;
     let dir = out_dir("figures-functions");
     type F = fn(&Path, Format) -> Result<Vec<PathBuf>, PlotError>;
-    let funcs: [(&str, F); 12] = [
+    let funcs: [(&str, F); 13] = [
         ("lloyd2005-fig4", plot::lloyd2005_fig4),
         ("lloyd2005-fig7", plot::lloyd2005_fig7),
         ("lloyd2006-fig5", plot::lloyd2006_fig5),
@@ -102,6 +103,7 @@ fn each_figure_has_its_own_function() {
         ("zhang-fig3", plot::zhang_fig3),
         ("martin-tan-fig6", plot::martin_tan_fig6),
         ("lloyd2006-worst-case", plot::lloyd2006_worst_case),
+        ("lloyd2006-fig4", plot::lloyd2006_fig4),
     ];
     assert_eq!(funcs.len(), FIGURES.len());
     for (name, f) in funcs {
@@ -125,6 +127,7 @@ fn the_figure_list_is_the_issue_list() {
         "zhang-fig3",
         "martin-tan-fig6",
         "lloyd2006-worst-case",
+        "lloyd2006-fig4",
     ];
     assert_eq!(FIGURES, expected);
     let unique: HashSet<_> = FIGURES.iter().collect();

@@ -22,6 +22,7 @@
 //! | `barroso-fig7` | Barroso & Celes 2007, Fig 7: the generalised LiSPSM n′ against γ |
 //! | `zhang-fig3` | Zhang et al. 2009, Fig 3: side views of E_p, E_q, E_p×E_q for SSM, LiSPSM, TSM |
 //! | `martin-tan-fig6` | Martin & Tan 2004, Fig 6: area of the focus region in the shadow map |
+//! | `lloyd2006-fig4` | Lloyd et al. 2006, Fig 4: the warped grids as n′ varies |
 //! | `lloyd2006-worst-case` | Lloyd et al. 2006, §5.3: worst case over all light directions against the light-behind value |
 //!
 //! ```no_run
@@ -39,6 +40,7 @@ mod hemisphere;
 mod lloyd2005;
 mod lloyd2006;
 mod martin_tan;
+mod warp_grid;
 mod worst;
 mod zhang;
 
@@ -113,6 +115,7 @@ pub const FIGURES: &[&str] = &[
     "zhang-fig3",
     "martin-tan-fig6",
     "lloyd2006-worst-case",
+    "lloyd2006-fig4",
 ];
 
 /// What went wrong while rendering a figure.
@@ -302,6 +305,7 @@ fn dispatch(name: &'static str, out_dir: &Path, format: Format) -> Result<Vec<Pa
         "zhang-fig3" => emit(name, &zhang::fig3().map_err(data)?, out_dir, format),
         "martin-tan-fig6" => emit(name, &martin_tan::fig6().map_err(data)?, out_dir, format),
         "lloyd2006-worst-case" => emit(name, &worst::worst_case().map_err(data)?, out_dir, format),
+        "lloyd2006-fig4" => emit(name, &warp_grid::fig4().map_err(data)?, out_dir, format),
         _ => Err(PlotError::UnknownFigure(name.to_string())),
     }
 }
@@ -359,6 +363,9 @@ figure_fns! {
     /// Lloyd et al. 2006 §5.3 (`lloyd2006-worst-case`): the measured worst S̄ over all light
     /// directions against the light-behind closed form, per scheme and number of partitions.
     lloyd2006_worst_case => "lloyd2006-worst-case";
+    /// Lloyd et al. 2006 Fig 4 (`lloyd2006-fig4`): the warped shadow-map grid over the view
+    /// frustum and the frustum's grid in the map, as n′ decreases from ∞ to n (light overhead).
+    lloyd2006_fig4 => "lloyd2006-fig4";
 }
 
 /// Renders every figure, or only those named in `only` when it is not empty, into `out_dir`, in
