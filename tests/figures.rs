@@ -25,6 +25,7 @@ fn citation(name: &str) -> &'static str {
         "martin-tan-fig6" => "Martin &amp; Tan 2004, Fig. 6",
         "lloyd2006-worst-case" => "Lloyd et al. 2006, §5.3",
         "lloyd2006-fig4" => "Lloyd et al. 2006, Fig. 4",
+        "martin-tan-fig3" => "Martin &amp; Tan 2004, Figs. 3 and 4",
         other => panic!("no citation known for {other}"),
     }
 }
@@ -90,7 +91,7 @@ fn each_figure_has_its_own_function() {
     use shadow_aliasing::plot;
     let dir = out_dir("figures-functions");
     type F = fn(&Path, Format) -> Result<Vec<PathBuf>, PlotError>;
-    let funcs: [(&str, F); 13] = [
+    let funcs: [(&str, F); 14] = [
         ("lloyd2005-fig4", plot::lloyd2005_fig4),
         ("lloyd2005-fig7", plot::lloyd2005_fig7),
         ("lloyd2006-fig5", plot::lloyd2006_fig5),
@@ -104,6 +105,7 @@ fn each_figure_has_its_own_function() {
         ("martin-tan-fig6", plot::martin_tan_fig6),
         ("lloyd2006-worst-case", plot::lloyd2006_worst_case),
         ("lloyd2006-fig4", plot::lloyd2006_fig4),
+        ("martin-tan-fig3", plot::martin_tan_fig3),
     ];
     assert_eq!(funcs.len(), FIGURES.len());
     for (name, f) in funcs {
@@ -128,6 +130,7 @@ fn the_figure_list_is_the_issue_list() {
         "martin-tan-fig6",
         "lloyd2006-worst-case",
         "lloyd2006-fig4",
+        "martin-tan-fig3",
     ];
     assert_eq!(FIGURES, expected);
     let unique: HashSet<_> = FIGURES.iter().collect();

@@ -23,6 +23,7 @@
 //! | `zhang-fig3` | Zhang et al. 2009, Fig 3: side views of E_p, E_q, E_p×E_q for SSM, LiSPSM, TSM |
 //! | `martin-tan-fig6` | Martin & Tan 2004, Fig 6: area of the focus region in the shadow map |
 //! | `lloyd2006-fig4` | Lloyd et al. 2006, Fig 4: the warped grids as n′ varies |
+//! | `martin-tan-fig3` | Martin & Tan 2004, Figs 3–4: the trapezoid against the bounding box |
 //! | `lloyd2006-worst-case` | Lloyd et al. 2006, §5.3: worst case over all light directions against the light-behind value |
 //!
 //! ```no_run
@@ -40,6 +41,7 @@ mod hemisphere;
 mod lloyd2005;
 mod lloyd2006;
 mod martin_tan;
+mod trapezoid;
 mod warp_grid;
 mod worst;
 mod zhang;
@@ -116,6 +118,7 @@ pub const FIGURES: &[&str] = &[
     "martin-tan-fig6",
     "lloyd2006-worst-case",
     "lloyd2006-fig4",
+    "martin-tan-fig3",
 ];
 
 /// What went wrong while rendering a figure.
@@ -306,6 +309,7 @@ fn dispatch(name: &'static str, out_dir: &Path, format: Format) -> Result<Vec<Pa
         "martin-tan-fig6" => emit(name, &martin_tan::fig6().map_err(data)?, out_dir, format),
         "lloyd2006-worst-case" => emit(name, &worst::worst_case().map_err(data)?, out_dir, format),
         "lloyd2006-fig4" => emit(name, &warp_grid::fig4().map_err(data)?, out_dir, format),
+        "martin-tan-fig3" => emit(name, &trapezoid::fig3().map_err(data)?, out_dir, format),
         _ => Err(PlotError::UnknownFigure(name.to_string())),
     }
 }
@@ -366,6 +370,9 @@ figure_fns! {
     /// Lloyd et al. 2006 Fig 4 (`lloyd2006-fig4`): the warped shadow-map grid over the view
     /// frustum and the frustum's grid in the map, as n′ decreases from ∞ to n (light overhead).
     lloyd2006_fig4 => "lloyd2006-fig4";
+    /// Martin & Tan 2004 Figs 3–4 (`martin-tan-fig3`): the eye's frustum seen from the light
+    /// with the trapezoid and the bounding box, and the frustum in both normalised spaces.
+    martin_tan_fig3 => "martin-tan-fig3";
 }
 
 /// Renders every figure, or only those named in `only` when it is not empty, into `out_dir`, in
