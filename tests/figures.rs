@@ -26,6 +26,8 @@ fn citation(name: &str) -> &'static str {
         "lloyd2006-worst-case" => "Lloyd et al. 2006, §5.3",
         "lloyd2006-fig4" => "Lloyd et al. 2006, Fig. 4",
         "martin-tan-fig3" => "Martin &amp; Tan 2004, Figs. 3 and 4",
+        "barroso-fig5" => "Barroso &amp; Celes 2007, Fig. 5",
+        "lloyd2006-fig11" => "Lloyd et al. 2006, Fig. 11",
         other => panic!("no citation known for {other}"),
     }
 }
@@ -91,7 +93,7 @@ fn each_figure_has_its_own_function() {
     use shadow_aliasing::plot;
     let dir = out_dir("figures-functions");
     type F = fn(&Path, Format) -> Result<Vec<PathBuf>, PlotError>;
-    let funcs: [(&str, F); 14] = [
+    let funcs: [(&str, F); 16] = [
         ("lloyd2005-fig4", plot::lloyd2005_fig4),
         ("lloyd2005-fig7", plot::lloyd2005_fig7),
         ("lloyd2006-fig5", plot::lloyd2006_fig5),
@@ -106,6 +108,8 @@ fn each_figure_has_its_own_function() {
         ("lloyd2006-worst-case", plot::lloyd2006_worst_case),
         ("lloyd2006-fig4", plot::lloyd2006_fig4),
         ("martin-tan-fig3", plot::martin_tan_fig3),
+        ("barroso-fig5", plot::barroso_fig5),
+        ("lloyd2006-fig11", plot::lloyd2006_fig11),
     ];
     assert_eq!(funcs.len(), FIGURES.len());
     for (name, f) in funcs {
@@ -131,6 +135,8 @@ fn the_figure_list_is_the_issue_list() {
         "lloyd2006-worst-case",
         "lloyd2006-fig4",
         "martin-tan-fig3",
+        "barroso-fig5",
+        "lloyd2006-fig11",
     ];
     assert_eq!(FIGURES, expected);
     let unique: HashSet<_> = FIGURES.iter().collect();

@@ -24,6 +24,8 @@
 //! | `martin-tan-fig6` | Martin & Tan 2004, Fig 6: area of the focus region in the shadow map |
 //! | `lloyd2006-fig4` | Lloyd et al. 2006, Fig 4: the warped grids as n′ varies |
 //! | `martin-tan-fig3` | Martin & Tan 2004, Figs 3–4: the trapezoid against the bounding box |
+//! | `barroso-fig5` | Barroso & Celes 2007, Fig 5: the frustum seen from the light with z-partitions |
+//! | `lloyd2006-fig11` | Lloyd et al. 2006, Fig 11: the frustum seen from a light behind the viewer |
 //! | `lloyd2006-worst-case` | Lloyd et al. 2006, §5.3: worst case over all light directions against the light-behind value |
 //!
 //! ```no_run
@@ -37,6 +39,7 @@
 mod barroso;
 mod canvas;
 mod chart;
+mod from_light;
 mod hemisphere;
 mod lloyd2005;
 mod lloyd2006;
@@ -119,6 +122,8 @@ pub const FIGURES: &[&str] = &[
     "lloyd2006-worst-case",
     "lloyd2006-fig4",
     "martin-tan-fig3",
+    "barroso-fig5",
+    "lloyd2006-fig11",
 ];
 
 /// What went wrong while rendering a figure.
@@ -310,6 +315,18 @@ fn dispatch(name: &'static str, out_dir: &Path, format: Format) -> Result<Vec<Pa
         "lloyd2006-worst-case" => emit(name, &worst::worst_case().map_err(data)?, out_dir, format),
         "lloyd2006-fig4" => emit(name, &warp_grid::fig4().map_err(data)?, out_dir, format),
         "martin-tan-fig3" => emit(name, &trapezoid::fig3().map_err(data)?, out_dir, format),
+        "barroso-fig5" => emit(
+            name,
+            &from_light::barroso_fig5().map_err(data)?,
+            out_dir,
+            format,
+        ),
+        "lloyd2006-fig11" => emit(
+            name,
+            &from_light::lloyd2006_fig11().map_err(data)?,
+            out_dir,
+            format,
+        ),
         _ => Err(PlotError::UnknownFigure(name.to_string())),
     }
 }
@@ -373,6 +390,12 @@ figure_fns! {
     /// Martin & Tan 2004 Figs 3–4 (`martin-tan-fig3`): the eye's frustum seen from the light
     /// with the trapezoid and the bounding box, and the frustum in both normalised spaces.
     martin_tan_fig3 => "martin-tan-fig3";
+    /// Barroso & Celes 2007 Fig 5 (`barroso-fig5`): the view frustum seen from the light with
+    /// self-similar and adaptive z-partitions.
+    barroso_fig5 => "barroso-fig5";
+    /// Lloyd et al. 2006 Fig 11 (`lloyd2006-fig11`): the view frustum seen from a light behind
+    /// the viewer, with z-partitions and their overlapping maps.
+    lloyd2006_fig11 => "lloyd2006-fig11";
 }
 
 /// Renders every figure, or only those named in `only` when it is not empty, into `out_dir`, in
