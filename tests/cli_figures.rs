@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// The file names issue 4 fixes, so that links and scripts can rely on them.
-const NAMES: [&str; 16] = [
+const NAMES: [&str; 17] = [
     "lloyd2005-fig4",
     "lloyd2005-fig7",
     "lloyd2006-fig5",
@@ -24,6 +24,7 @@ const NAMES: [&str; 16] = [
     "martin-tan-fig3",
     "barroso-fig5",
     "lloyd2006-fig11",
+    "lloyd2005-fig8",
 ];
 
 fn run(args: &[&str]) -> (i32, String, String) {
@@ -149,7 +150,7 @@ fn every_figure_in_both_formats() {
     let dir = temp_dir("all");
     let (code, out, err) = run(&["figures", "--out", dir.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
-    assert!(out.contains("32 files"), "{out}");
+    assert!(out.contains("34 files"), "{out}");
     for name in NAMES {
         check_png(&dir.join(format!("{name}.png")));
         check_svg(&dir.join(format!("{name}.svg")));

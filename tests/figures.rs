@@ -28,6 +28,7 @@ fn citation(name: &str) -> &'static str {
         "martin-tan-fig3" => "Martin &amp; Tan 2004, Figs. 3 and 4",
         "barroso-fig5" => "Barroso &amp; Celes 2007, Fig. 5",
         "lloyd2006-fig11" => "Lloyd et al. 2006, Fig. 11",
+        "lloyd2005-fig8" => "Lloyd et al. 2005, Fig. 8",
         other => panic!("no citation known for {other}"),
     }
 }
@@ -93,7 +94,7 @@ fn each_figure_has_its_own_function() {
     use shadow_aliasing::plot;
     let dir = out_dir("figures-functions");
     type F = fn(&Path, Format) -> Result<Vec<PathBuf>, PlotError>;
-    let funcs: [(&str, F); 16] = [
+    let funcs: [(&str, F); 17] = [
         ("lloyd2005-fig4", plot::lloyd2005_fig4),
         ("lloyd2005-fig7", plot::lloyd2005_fig7),
         ("lloyd2006-fig5", plot::lloyd2006_fig5),
@@ -110,6 +111,7 @@ fn each_figure_has_its_own_function() {
         ("martin-tan-fig3", plot::martin_tan_fig3),
         ("barroso-fig5", plot::barroso_fig5),
         ("lloyd2006-fig11", plot::lloyd2006_fig11),
+        ("lloyd2005-fig8", plot::lloyd2005_fig8),
     ];
     assert_eq!(funcs.len(), FIGURES.len());
     for (name, f) in funcs {
@@ -137,6 +139,7 @@ fn the_figure_list_is_the_issue_list() {
         "martin-tan-fig3",
         "barroso-fig5",
         "lloyd2006-fig11",
+        "lloyd2005-fig8",
     ];
     assert_eq!(FIGURES, expected);
     let unique: HashSet<_> = FIGURES.iter().collect();

@@ -26,6 +26,7 @@
 //! | `martin-tan-fig3` | Martin & Tan 2004, Figs 3–4: the trapezoid against the bounding box |
 //! | `barroso-fig5` | Barroso & Celes 2007, Fig 5: the frustum seen from the light with z-partitions |
 //! | `lloyd2006-fig11` | Lloyd et al. 2006, Fig 11: the frustum seen from a light behind the viewer |
+//! | `lloyd2005-fig8` | Lloyd et al. 2005, Fig 8(c): the texture layout of the subdivisions |
 //! | `lloyd2006-worst-case` | Lloyd et al. 2006, §5.3: worst case over all light directions against the light-behind value |
 //!
 //! ```no_run
@@ -41,6 +42,7 @@ mod canvas;
 mod chart;
 mod from_light;
 mod hemisphere;
+mod layout;
 mod lloyd2005;
 mod lloyd2006;
 mod martin_tan;
@@ -124,6 +126,7 @@ pub const FIGURES: &[&str] = &[
     "martin-tan-fig3",
     "barroso-fig5",
     "lloyd2006-fig11",
+    "lloyd2005-fig8",
 ];
 
 /// What went wrong while rendering a figure.
@@ -327,6 +330,7 @@ fn dispatch(name: &'static str, out_dir: &Path, format: Format) -> Result<Vec<Pa
             out_dir,
             format,
         ),
+        "lloyd2005-fig8" => emit(name, &layout::fig8().map_err(data)?, out_dir, format),
         _ => Err(PlotError::UnknownFigure(name.to_string())),
     }
 }
@@ -396,6 +400,9 @@ figure_fns! {
     /// Lloyd et al. 2006 Fig 11 (`lloyd2006-fig11`): the view frustum seen from a light behind
     /// the viewer, with z-partitions and their overlapping maps.
     lloyd2006_fig11 => "lloyd2006-fig11";
+    /// Lloyd et al. 2005 Fig 8(c) (`lloyd2005-fig8`): the texture layout of face partitions
+    /// with z-partitions, by Eq 6.
+    lloyd2005_fig8 => "lloyd2005-fig8";
 }
 
 /// Renders every figure, or only those named in `only` when it is not empty, into `out_dir`, in
