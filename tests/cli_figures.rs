@@ -9,7 +9,7 @@ mod common;
 use common::cli::run;
 
 /// The file names issue 4 fixes, so that links and scripts can rely on them.
-const NAMES: [&str; 11] = [
+const NAMES: [&str; 17] = [
     "lloyd2005-fig4",
     "lloyd2005-fig7",
     "lloyd2006-fig5",
@@ -21,6 +21,12 @@ const NAMES: [&str; 11] = [
     "barroso-fig7",
     "zhang-fig3",
     "martin-tan-fig6",
+    "lloyd2006-worst-case",
+    "lloyd2006-fig4",
+    "martin-tan-fig3",
+    "barroso-fig5",
+    "lloyd2006-fig11",
+    "lloyd2005-fig8",
 ];
 
 fn temp_dir(tag: &str) -> PathBuf {
@@ -134,7 +140,7 @@ fn every_figure_in_both_formats() {
     let dir = temp_dir("all");
     let (code, out, err) = run(&["figures", "--out", dir.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
-    assert!(out.contains("22 files"), "{out}");
+    assert!(out.contains("34 files"), "{out}");
     for name in NAMES {
         check_png(&dir.join(format!("{name}.png")));
         check_svg(&dir.join(format!("{name}.svg")));

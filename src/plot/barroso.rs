@@ -45,10 +45,26 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         if let Some(v) = finite(n_prime_for(&view, light_at(g), WarpRule::MinimaxMz)?) {
             minimax.push((d, v));
         }
-        // Eq 13's branches where they are positive (the plot is logarithmic).
+        // Eq 13's branches, each on its own domain (n′₁ for φ_y ≤ γ ≤ π/2, n′₂ for
+        // 0 < γ < φ_y) and where it is positive (the plot is logarithmic).
         let (a, b) = (n_prime_1(&view, angle)?, n_prime_2(&view, angle)?);
-        n1.push((d, if a > 0.0 { a } else { f64::NAN }));
-        n2.push((d, if b > 0.0 { b } else { f64::NAN }));
+        let phi = view.half_fov();
+        n1.push((
+            d,
+            if g >= phi - 1e-12 && a > 0.0 {
+                a
+            } else {
+                f64::NAN
+            },
+        ));
+        n2.push((
+            d,
+            if g < phi - 1e-12 && b > 0.0 {
+                b
+            } else {
+                f64::NAN
+            },
+        ));
     }
     let mut c = LineChart::new(
         "",
@@ -81,31 +97,46 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         .dashed(),
     );
     c.series
-        .push(Series::line("n′₁(γ), Eq 13 (where > 0)", n1, PALETTE[6]).dotted());
-    c.series
-        .push(Series::line("n′₂(γ), Eq 13 (where > 0)", n2, PALETTE[7]).dotted());
+        .push(Series::line("n′₁(γ), Eq 13, φ_y ≤ γ ≤ 90°", n1, PALETTE[6]).dotted());
+    let mut s2 = Series::line("n′₂(γ), Eq 13, γ < φ_y (where > 0)", n2, PALETTE[7]).dotted();
+    s2.width = 3;
+    c.series.push(s2);
     let gl_deg = gl.to_degrees();
     let phi_deg = view.half_fov().to_degrees();
-    let grey = RGBColor(90, 90, 90);
-    let mut vline = |x: f64, y: f64, label: String| {
-        let mut s = Series::line(String::new(), vec![(x, 1.0), (x, 1e4)], grey).dotted();
-        s.label = None;
-        s.width = 1;
-        c.series.push(s);
-        c.notes.push(Note {
-            at: (x + 0.8, y),
-            text: label,
-            colour: grey,
-        });
-    };
-    vline(gl_deg, 1.7, format!("γ_lim = {gl_deg:.1}° (Eq 15)"));
-    vline(phi_deg, 1.25, format!("φ_y = {phi_deg:.0}°"));
+    // The two angles, 0.5° apart: γ_lim dashed with its label to the right, φ_y dotted with its
+    // label to the left.
+    let grey = RGBColor(110, 110, 110);
+    let mut gl_line = Series::line(
+        String::new(),
+        vec![(gl_deg, 1.0), (gl_deg, 1e4)],
+        PALETTE[6],
+    )
+    .dashed();
+    gl_line.label = None;
+    gl_line.width = 1;
+    c.series.push(gl_line);
+    let mut phi_line =
+        Series::line(String::new(), vec![(phi_deg, 1.0), (phi_deg, 1e4)], grey).dotted();
+    phi_line.label = None;
+    phi_line.width = 1;
+    c.series.push(phi_line);
+    c.notes.push(Note {
+        at: (gl_deg + 0.8, 2.2),
+        text: format!("γ_{{lim}} = {gl_deg:.1}° (Eq 15) →"),
+        colour: PALETTE[6],
+    });
+    c.notes.push(Note {
+        at: (phi_deg - 9.0, 1.4),
+        text: format!("← φ_y = {phi_deg:.0}°"),
+        colour: grey,
+    });
     Ok(Charts {
         size: (1100, 680),
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![
             "Barroso & Celes 2007, Fig. 7 (n = 1, f = 100, φ_y = π/6), from analytic::tilted::generalized_n_prime, n_prime_1, n_prime_2, gamma_lim;".into(),
-            "LiSPSM's 1/sin γ rule and the M_z-minimising n′ (WarpRule::MinimaxMz) from build::n_prime_for. Logarithmic n′ axis: every rule tends to n′ = ∞ (no warp) as γ → 0.".into(),
+            "LiSPSM's 1/sin γ rule and the M_z-minimising n′ (WarpRule::MinimaxMz) from build::n_prime_for. Logarithmic n′ axis: every rule tends to n′ = ∞ (no warp) as γ → 0. Each branch of Eq 13 is drawn only on its domain.".into(),
+            "The M_z-minimising curve has corners near γ = φ_y: there the frustum corner nearest the warp's centre of projection switches between the near-bottom and the far-bottom one (the switch between Eq 13's branches), so the point where m_z is largest jumps and the minimising n′ follows another formula.".into(),
         ],
         charts: vec![c],
     })
@@ -127,5 +158,28 @@ mod tests {
             assert!((v - 11.0).abs() < 1e-6, "{v}");
         }
         assert!(s[0].points[0].0 > 0.0 && s[1].points[0].0 > 0.0);
+    }
+
+    /// Eq 13's branches are drawn only on their domains: n′₁ for φ_y = 30° ≤ γ, n′₂ for γ < 30°
+    /// and, being positive only above atan(b/(f + √(fn))) = atan(57.735/110) = 27.69° (by
+    /// hand), only between 27.69° and 30°.
+    #[test]
+    fn eq13_branches_only_on_their_domains() {
+        let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
+        let s = &fig.charts[0].series;
+        let finite = |k: usize| -> Vec<f64> {
+            s[k].points
+                .iter()
+                .filter(|p| p.1.is_finite())
+                .map(|p| p.0)
+                .collect()
+        };
+        let n1 = finite(4);
+        let n2 = finite(5);
+        assert!(n1.iter().all(|&d| d >= 30.0 - 1e-9) && n1.first() == Some(&30.0));
+        let start = (100.0 * 3f64.sqrt() / 3.0 / 110.0).atan().to_degrees();
+        assert!((start - 27.69).abs() < 0.01);
+        assert!(!n2.is_empty());
+        assert!(n2.iter().all(|&d| d > start && d < 30.0), "{n2:?}");
     }
 }

@@ -1,7 +1,9 @@
 //! Lloyd et al. 2006 Fig 7: the storage factor S̄ over the hemisphere of light directions, from
 //! the crate's measurement of each scheme's own matrices ([`crate::measure::sweep::sweep`]).
 
-use super::chart::{draw_colour_bar, draw_hemisphere, frame, Axis, ColourScale, PolarGrid};
+use super::chart::{
+    draw_colour_bar, draw_hemisphere, fmt_times_ten, frame, Axis, ColourScale, PolarGrid,
+};
 use super::{Fail, Figure};
 use crate::build::scheme::Partition;
 use crate::build::WarpRule;
@@ -44,12 +46,13 @@ struct Panel {
     grid: PolarGrid,
     max: f64,
     min: f64,
+    /// The panel's own colour scale: log₁₀, exactly over its range.
+    scale: ColourScale,
 }
 
-/// Fig 7 with four panels and one log10 colour bar.
+/// Fig 7 with four panels, each with its own log₁₀ colour bar.
 pub(super) struct Fig7 {
     panels: Vec<Panel>,
-    scale: ColourScale,
     caption: Vec<String>,
 }
 
@@ -97,15 +100,19 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
             grid: polar_grid(&s, values),
             max,
             min,
+            scale: ColourScale::smooth(Axis::log10("S̄ (log scale)", min, max)),
         });
     }
-    let lo = panels.iter().map(|p| p.min).fold(f64::INFINITY, f64::min);
-    let hi = panels.iter().map(|p| p.max).fold(0.0, f64::max);
-    let lo = 10f64.powf(lo.log10().floor());
-    let hi = 10f64.powf(hi.log10().ceil());
     let summary: Vec<String> = panels
         .iter()
-        .map(|p| format!("{}: {:.3e} to {:.3e}", p.title, p.min, p.max))
+        .map(|p| {
+            format!(
+                "{}: {} to {}",
+                p.title,
+                fmt_times_ten(p.min),
+                fmt_times_ten(p.max)
+            )
+        })
         .collect();
     let caption = vec![
         format!(
@@ -114,20 +121,14 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         ),
         "Hemisphere seen from above: overhead at the centre, light from behind the viewer on the left, from in front on the right; rings at 0°, 30°, 60° elevation.".to_string(),
         format!("Range of S̄ — {}.", summary.join("; ")),
+        "Unlike the paper's, each panel has its own colour scale, spanning exactly its range, so that the shape of every panel shows; compare panels by their bars.".to_string(),
     ];
-    Ok(Fig7 {
-        panels,
-        scale: ColourScale {
-            axis: Axis::log10("storage factor S̄ (log₁₀ scale)", lo, hi),
-            levels: 36,
-        },
-        caption,
-    })
+    Ok(Fig7 { panels, caption })
 }
 
 impl Figure for Fig7 {
     fn size(&self) -> (u32, u32) {
-        (1500, 560)
+        (1800, 620)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -137,13 +138,13 @@ impl Figure for Fig7 {
             "Storage factor over the hemisphere of light directions",
             &caption,
         )?;
-        let (w, _) = body.dim_in_pixel();
-        let (maps, bar) = body.split_horizontally(w - 110);
-        let cells = maps.split_evenly((1, self.panels.len()));
+        let cells = body.split_evenly((1, self.panels.len()));
         for (cell, p) in cells.iter().zip(&self.panels) {
-            draw_hemisphere(cell, &p.title, &p.grid, &self.scale)?;
+            let (w, _) = cell.dim_in_pixel();
+            let (map, bar) = cell.split_horizontally(w.saturating_sub(92));
+            draw_hemisphere(&map, &p.title, &p.grid, &p.scale)?;
+            draw_colour_bar(&bar, &p.scale)?;
         }
-        draw_colour_bar(&bar, &self.scale)?;
         Ok(())
     }
 }
@@ -161,6 +162,7 @@ fn extent(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::collections::HashSet;
 
     /// The plotted sweeps hit the paper's closed forms where the paper has them: LiSPSM overhead
     /// is Lloyd 2006 Eq 12, (f/n − 1)/(2 tan θ) = 999/(2 tan 30°) = 865.159; the unwarped map
@@ -190,10 +192,23 @@ mod tests {
         assert_eq!(g.elev_edges.last(), Some(&FRAC_PI_2));
         let turn = g.az_edges[a] - g.az_edges[0];
         assert!((turn - TAU).abs() < 1e-12);
-        // One colour scale covers every panel's range.
-        let (lo, hi) = fig.scale.axis.range();
+        // Each panel's colour scale spans exactly its own values: the smallest and largest
+        // value found here fall in the first and last band, and the unwarped panel (10³ … 10⁶,
+        // by the closed forms above and Eq 12 overhead) uses the whole scale, not 2–3 bands.
         for p in &fig.panels {
-            assert!(p.min.log10() >= lo && p.max.log10() <= hi);
+            let vals: Vec<f64> = p.grid.values.iter().flatten().copied().collect();
+            let lo = vals.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = vals.iter().copied().fold(0.0, f64::max);
+            assert_eq!(p.scale.level(lo), Some(0), "{}", p.title);
+            assert_eq!(p.scale.level(hi), Some(p.scale.levels - 1), "{}", p.title);
         }
+        let unwarped: HashSet<usize> = fig.panels[0]
+            .grid
+            .values
+            .iter()
+            .flatten()
+            .filter_map(|&v| fig.panels[0].scale.level(v))
+            .collect();
+        assert!(unwarped.len() > 40, "{} bands", unwarped.len());
     }
 }

@@ -1,6 +1,6 @@
 //! Lloyd, Yoon, Tuft, Manocha 2005, *Subdivided Shadow Maps*: Fig 4 and Fig 7.
 
-use super::chart::{linspace, Axis, Charts, LineChart, Note, Series, PALETTE};
+use super::chart::{fmt_times_ten, linspace, Axis, Charts, LineChart, Note, Series, PALETTE};
 use super::Fail;
 use crate::analytic::subdivided::{distribution_g, g_min, n_from_xi, subdivided_max_error};
 use crate::NPrime;
@@ -58,40 +58,43 @@ pub(super) fn fig4() -> Result<Charts, Fail> {
 }
 
 /// Fig 7: the maximum error with k face subdivisions (Eq 7), divided by its value at k = 1, for
-/// several α; ξ = 0 (solid) and |ξ| = 1 (dashed).
+/// several α; ξ = 0 (solid) and |ξ| = 1 (dashed), on a logarithmic axis.
 pub(super) fn fig7() -> Result<Charts, Fail> {
     let ks: Vec<usize> = (1..=10).collect();
     let theta = 30f64.to_radians();
+    let ratio = |alpha: f64, k: usize, xi: f64| -> Result<f64, crate::Error> {
+        Ok(subdivided_max_error(alpha, k, xi, theta, 1.0, 1.0)?
+            / subdivided_max_error(alpha, 1, xi, theta, 1.0, 1.0)?)
+    };
     let mut c = LineChart::new(
         "",
-        // Room on the right (k > 10) for the legend.
-        Axis::linear("number of face subdivisions k", 1.0, 13.5),
-        Axis::linear("m_max(k) / m_max(1)", 0.0, 1.05),
+        Axis::linear("number of face subdivisions k", 1.0, 10.0),
+        Axis::log10("m_{max}(k) / m_{max}(1) (log scale)", 1e-3, 1.0),
     );
-    c.legend = SeriesLabelPosition::UpperRight;
+    c.legend = SeriesLabelPosition::LowerLeft;
     for (i, alpha) in [10.0, 100.0, 1000.0, 10_000.0].into_iter().enumerate() {
         for (xi, dashed) in [(0.0, false), (1.0, true)] {
-            let one = subdivided_max_error(alpha, 1, xi, theta, 1.0, 1.0)?;
             let pts = ks
                 .iter()
-                .map(|&k| {
-                    Ok((
-                        k as f64,
-                        subdivided_max_error(alpha, k, xi, theta, 1.0, 1.0)? / one,
-                    ))
-                })
+                .map(|&k| Ok((k as f64, ratio(alpha, k, xi)?)))
                 .collect::<Result<Vec<_>, crate::Error>>()?;
-            let label = format!("α = {alpha}, |ξ| = {xi}");
+            let label = format!("α = {}, |ξ| = {xi}", fmt_times_ten(alpha));
             let s = Series::line(label, pts, PALETTE[i]).with_markers();
             c.series.push(if dashed { s.dashed() } else { s });
         }
     }
+    // The report's "nearly 5 times" (its Fig 9, α = 100): which ξ gives it.
+    let gain = |xi: f64, k: usize| -> Result<f64, crate::Error> { Ok(1.0 / ratio(100.0, k, xi)?) };
+    let (g0_2, g0_10, g1_2) = (gain(0.0, 2)?, gain(0.0, 10)?, gain(1.0, 2)?);
     Ok(Charts {
-        size: (1000, 640),
+        size: (1000, 660),
         title: "Maximum error against the number of face subdivisions".into(),
         caption: vec![
             "Lloyd et al. 2005, Fig. 7, from Eq 7 (analytic::subdivided::subdivided_max_error): self-similar subdivisions z_i = α^{i/k}, texels shared by Eq 6.".into(),
-            "Each curve is divided by its value at k = 1 (θ and the resolutions cancel). Most of the reduction comes with 2 or 3 subdivisions.".into(),
+            "Each curve is divided by its value at k = 1 (θ and the resolutions cancel); logarithmic axis, k ≤ 10 as in the paper. Most of the reduction comes with 2 or 3 subdivisions.".into(),
+            format!(
+                "The report's \"nearly 5 times\" improvement at α = 100 (its Fig 9) needs |ξ| = 1: {g1_2:.1}× with k = 2; with ξ = 0 the gain is {g0_2:.2}× at k = 2 and {g0_10:.2}× at k = 10 (at most √α ln α/(α − 1) = 2.15× as k → ∞). The report does not say which ξ it plots."
+            ),
         ],
         charts: vec![c],
     })
@@ -124,5 +127,20 @@ mod tests {
         let want = 2.0 * 9.0 * 10f64.sqrt() / 99.0;
         assert!((alpha100[1].1 - want).abs() < 1e-12, "{}", alpha100[1].1);
         assert_eq!(alpha100[0].1, 1.0);
+        // |ξ| = 1: m(k)/m(1) = k(α^{1/k} − 1)/(α − 1) by hand from Eq 7; at α = 100, k = 2:
+        // 18/99, the 5.5× that matches the report's "nearly 5 times" (ξ = 0 gives 1.74×).
+        let xi1 = &fig.charts[0].series[3].points;
+        assert!((xi1[1].1 - 18.0 / 99.0).abs() < 1e-12, "{}", xi1[1].1);
+        assert!(fig.charts[0].x.max <= 10.0, "no empty k > 10 area");
+        assert!(
+            fig.caption[2].contains("5.5× with k = 2"),
+            "{}",
+            fig.caption[2]
+        );
+        assert!(
+            fig.caption[2].contains("1.74× at k = 2"),
+            "{}",
+            fig.caption[2]
+        );
     }
 }

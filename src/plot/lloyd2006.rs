@@ -2,8 +2,7 @@
 //! the closed-form figures (Fig 5, 6, 10, 12, 13). Fig 7 is in [`super::hemisphere`].
 
 use super::chart::{
-    build_chart, clip_polyline, fmt_plain, frame, linspace, Axis, Charts, LineChart, Series, FONT,
-    PALETTE,
+    build_chart, fmt_plain, frame, linspace, Axis, Charts, LineChart, Note, Series, FONT, PALETTE,
 };
 use super::{Fail, Figure};
 use crate::analytic::eta::{n_prime_from_eta, n_prime_lispsm};
@@ -15,10 +14,10 @@ use plotters::prelude::*;
 
 /// Fig 5: m_x and the distribution term of m_z along the frustum for several n′ (n = 1, f = 20).
 ///
-/// m_x is plotted as it is (unit resolutions; it does not depend on θ). m_z is divided by its
-/// constant factor (f − n)/(2 tan θ), leaving the last term of Lloyd 2006 Eq 8, which is what the
-/// paper plots; the factor is computed from the frustum, m_z itself comes from
-/// [`crate::analytic::overhead::mz`].
+/// Both are divided by their constant factors, leaving the last terms of Lloyd 2006 Eq 7 and 8,
+/// which is what the paper plots: m_x by f (unit resolutions), m_z by (f − n)/(2 tan θ). The
+/// factors are computed from the frustum; m_x and m_z themselves come from
+/// [`crate::analytic::overhead::mx`] and [`crate::analytic::overhead::mz`].
 pub(super) fn fig5() -> Result<Charts, Fail> {
     let (n, f) = (1.0, 20.0);
     let view = ViewFrustum::new(n, f, 45f64.to_radians())?;
@@ -38,9 +37,9 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
     let zs = linspace(n, f, 160);
     let z_factor = (f - n) / (2.0 * view.tan_half_fov());
     let mut cx = LineChart::new(
-        "x error m_x(z)",
+        "x error: m_x(z) / f",
         Axis::linear("depth z (eye-space units, n = 1)", n, f),
-        Axis::log10("m_x (unit resolutions)", 0.9, 25.0),
+        Axis::log10("m_x / f = (n′ + z − n)/(z(n′ + f − n))", 0.03, 1.3),
     );
     let mut cz = LineChart::new(
         "z error: m_z(z) · 2 tan θ / (f − n)",
@@ -51,7 +50,7 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
     for (i, (np, label)) in warps.iter().enumerate() {
         let px = zs
             .iter()
-            .map(|&z| Ok((z, mx(n, f, *np, z, res)?)))
+            .map(|&z| Ok((z, mx(n, f, *np, z, res)? / f)))
             .collect::<Result<Vec<_>, crate::Error>>()?;
         let pz = zs
             .iter()
@@ -66,14 +65,16 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
         size: (1300, 620),
         title: "Error distribution along the view frustum, light overhead".into(),
         caption: vec![
-            "Lloyd et al. 2006, Fig. 5 (n = 1, f = 20), from Eq 7 and 8 (analytic::overhead::mx, mz). m_x is the largest at z = n;".into(),
-            "m_z at z = f for n′ ≤ n + √(fn) and at z = n beyond it. Unit image and shadow-map resolutions; the legend holds for both panels.".into(),
+            "Lloyd et al. 2006, Fig. 5 (n = 1, f = 20), from Eq 7 and 8 (analytic::overhead::mx, mz): the last term of each, as the paper plots, i.e. m_x divided by f and m_z by (f − n)/(2 tan θ).".into(),
+            "m_x is the largest at z = n; m_z at z = f for n′ ≤ n + √(fn) and at z = n beyond it. Unit image and shadow-map resolutions; the legend holds for both panels.".into(),
         ],
         charts: vec![cx, cz],
     })
 }
 
-/// Fig 6: M_x, M_z and S̄ against η ∈ [−1, 1] (n = 1, f = 100), each divided by its maximum over η.
+/// Fig 6: M_x, M_z and S̄ against η ∈ [−1, 1] (n = 1, f = 100, θ = 30°, unit resolutions), as
+/// they are, on a logarithmic axis (the paper normalises each to fit one linear scale, which puts
+/// M_x under M_z for η ≤ 0 and the flat S̄ for η ≥ 0 on the x axis).
 pub(super) fn fig6() -> Result<Charts, Fail> {
     let (n, f) = (1.0, 100.0);
     let view = ViewFrustum::new(n, f, 30f64.to_radians())?;
@@ -88,13 +89,8 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
         m_z.push((eta, max_mz(&view, np, res)?));
         s.push((eta, storage_factor(&view, np)?));
     }
-    let normalise = |v: Vec<(f64, f64)>| -> (Vec<(f64, f64)>, f64) {
-        let top = v.iter().map(|p| p.1).fold(0.0, f64::max);
-        (v.into_iter().map(|(e, y)| (e, y / top)).collect(), top)
-    };
-    let (m_x, top_x) = normalise(m_x);
-    let (m_z, top_z) = normalise(m_z);
-    let (s, top_s) = normalise(s);
+    let top = |v: &[(f64, f64)]| v.iter().map(|p| p.1).fold(0.0, f64::max);
+    let (top_x, top_z, top_s) = (top(&m_x), top(&m_z), top(&s));
     let mut c = LineChart::new(
         "",
         Axis::linear(
@@ -102,9 +98,9 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
             -1.0,
             1.0,
         ),
-        Axis::linear("value / its maximum over η", 0.0, 1.05),
+        Axis::log10("M_x, M_z (unit resolutions), S̄ (log scale)", 0.5, 2e4),
     );
-    c.legend = SeriesLabelPosition::UpperMiddle;
+    c.legend = SeriesLabelPosition::LowerLeft;
     c.series.push(Series::line(
         format!("M_x (maximum {})", fmt_plain(top_x)),
         m_x,
@@ -128,7 +124,7 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
         title: "Maximum error and storage factor against the warp parameter η".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 6 (n = 1, f = 100), from Eq 9, 10, 11, 12 (analytic::overhead, analytic::eta::n_prime_from_eta).".into(),
-            "Each curve is divided by its own maximum, after which θ cancels. For η ≤ 0 the normalised M_x and M_z coincide (both ∝ n′/(n′ + f − n)); S̄ is constant for η ≥ 0.".into(),
+            "θ = 30°, unit resolutions. Unlike the paper, which normalises each curve to fit one linear scale, the values are drawn as they are on a logarithmic axis: for η ≤ 0 M_x and M_z are both ∝ n′/(n′ + f − n) and run parallel; for η ≥ 0 S̄ stays constant while M_x falls and M_z rises (§4.3).".into(),
         ],
         charts: vec![c],
     })
@@ -202,7 +198,7 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
     ] {
         for (scheme, name, colour) in schemes {
             let mut pts = Vec::new();
-            for k in 1..=16usize {
+            for k in 1..=40usize {
                 let maps = shadow_map_count(scheme, SchemeLight::Behind, k)?;
                 if maps > 40 {
                     break;
@@ -222,12 +218,17 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
             c.series.push(s);
         }
     }
+    c.notes.push(Note {
+        at: (15.5, 90.0),
+        text: "light behind: FP+ZP+W below ZP from 17 maps on".into(),
+        colour: PALETTE[6],
+    });
     Ok(Charts {
         size: (1000, 660),
         title: "Storage factor against the number of shadow maps".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 12 (f/n = 1000, θ = 30°), from Eq 17–21 (analytic::partition::scheme_storage_factor). k z-partitions use k maps; FP+ZP+W uses 4k + 1".into(),
-            "(four side faces and the near face). Behind, ZP+W equals ZP (a square frustum cannot be warped); FP+ZP+W behind is Eq 21 with each face at 45° whatever θ (docs/errata.md).".into(),
+            "(four side faces and the near face). Behind, ZP+W equals ZP (a square frustum cannot be warped); FP+ZP+W behind is Eq 21 with each face at 45° whatever θ (docs/errata.md). Up to 40 maps, so that the light-behind crossover of §5.3 (between 13 and 17 maps) shows.".into(),
         ],
         charts: vec![c],
     })
@@ -268,9 +269,10 @@ fn crossover(maps: usize, k: usize, lo: f64, hi: f64) -> Result<Option<f64>, cra
 }
 
 pub(super) fn fig13() -> Result<Fig13, Fail> {
+    // The search interval of the crossover; the plot shows the depth ratios of real scenes.
     let (lo, hi) = (1.5, 1e12);
     let mut pts = Vec::new();
-    for k in 1..=12usize {
+    for k in 1..=10usize {
         let maps = shadow_map_count(Scheme::FpZpW, SchemeLight::Behind, k)?;
         if let Some(r) = crossover(maps, k, lo, hi)? {
             pts.push((maps as f64, r));
@@ -278,8 +280,12 @@ pub(super) fn fig13() -> Result<Fig13, Fail> {
     }
     Ok(Fig13 {
         crossover: pts,
-        x: Axis::linear("number of shadow maps (4k + 1)", 5.0, 49.0),
-        y: Axis::log10("depth ratio f/n", lo, hi),
+        x: Axis::linear(
+            "number of shadow maps j = 4k + 1 (k z-partitions per face)",
+            3.0,
+            43.0,
+        ),
+        y: Axis::log10("depth ratio f/n", 1.0, 1e6),
     })
 }
 
@@ -294,63 +300,52 @@ impl Figure for Fig13 {
             "Which partitioning has the lowest error, light behind the viewer",
             &[
                 "Lloyd et al. 2006, Fig. 13, from Eq 20 and 21 (analytic::partition::scheme_storage_factor, light behind): at equal numbers of maps, j = 4k + 1,",
-                "z-partitioning (ZP, or ZP+W: the same behind) with j maps against face partitioning with k warped z-partitions per face. The curve is where S̄ is equal.",
+                "z-partitioning (ZP, or ZP+W: the same behind) with j maps against face partitioning with k warped z-partitions per face. The comparison exists only at j = 4k + 1, so each j is a column: FP+ZP+W is lowest below the dot (where S̄ is equal), ZP above it (the paper draws continuous regions). f/n up to 10⁶ (the dot at 17 maps is just above f/n = 1000, Fig 12's crossover).",
             ],
         )?;
         let mut chart = build_chart(&body, "", &self.x, &self.y, true)?;
-        let (x0, x1) = self.x.range();
         let (y0, y1) = self.y.range();
-        let curve: Vec<(f64, f64)> = self
-            .crossover
-            .iter()
-            .filter_map(|&(x, y)| Some((self.x.to_axis(x)?, self.y.to_axis(y)?)))
-            .collect();
-        if let (Some(first), Some(last)) = (curve.first(), curve.last()) {
-            let mut above = vec![(first.0, y1)];
-            above.extend(curve.iter().copied());
-            above.push((last.0, y1));
-            let mut below = vec![(first.0, y0)];
-            below.extend(curve.iter().copied());
-            below.push((last.0, y0));
-            chart.draw_series(std::iter::once(Polygon::new(
-                above,
-                PALETTE[0].mix(0.18).filled(),
-            )))?;
-            chart.draw_series(std::iter::once(Polygon::new(
-                below,
-                PALETTE[1].mix(0.18).filled(),
-            )))?;
+        let half = 1.3;
+        for &(j, r) in &self.crossover {
+            let Some(ry) = self.y.to_axis(r) else {
+                continue;
+            };
+            let mid = ry.clamp(y0, y1);
+            chart.draw_series([
+                Rectangle::new(
+                    [(j - half, mid), (j + half, y1)],
+                    PALETTE[0].mix(0.35).filled(),
+                ),
+                Rectangle::new(
+                    [(j - half, y0), (j + half, mid)],
+                    PALETTE[1].mix(0.35).filled(),
+                ),
+            ])?;
+            if ry <= y1 {
+                chart.draw_series(std::iter::once(Circle::new(
+                    (j, ry),
+                    4,
+                    PALETTE[6].filled(),
+                )))?;
+            }
         }
-        let clipped = clip_polyline(
-            &curve.iter().map(|&p| Some(p)).collect::<Vec<_>>(),
-            (x0, x1, y0, y1),
-        );
-        for piece in clipped {
-            chart.draw_series(LineSeries::new(piece, PALETTE[6].stroke_width(2)))?;
-        }
-        chart.draw_series(
-            curve
-                .iter()
-                .map(|&p| Circle::new(p, 4, PALETTE[6].filled())),
-        )?;
         let label = |text: &str, x: f64, y: f64, colour: &'static RGBColor| {
             Text::new(
                 text.to_string(),
                 (x, y),
-                TextStyle::from((FONT, 18).into_font()).color(colour),
+                TextStyle::from((FONT, 17).into_font()).color(colour),
             )
         };
-        let xm = x0 + 0.35 * (x1 - x0);
         chart.draw_series(std::iter::once(label(
             "ZP / ZP+W lowest (high depth range, few maps)",
-            xm,
-            y0 + 0.85 * (y1 - y0),
+            4.0,
+            y0 + 0.95 * (y1 - y0),
             &PALETTE[0],
         )))?;
         chart.draw_series(std::iter::once(label(
             "FP+ZP+W lowest",
-            x0 + 0.6 * (x1 - x0),
-            y0 + 0.12 * (y1 - y0),
+            30.0,
+            y0 + 0.1 * (y1 - y0),
             &PALETTE[1],
         )))?;
         Ok(())
@@ -373,6 +368,19 @@ mod tests {
         let fp = 2.0 * (r - 1.0) + 1.0;
         assert!((zp - fp).abs() < 1e-9 * zp, "{zp} vs {fp}");
         assert!((r - 5.4124).abs() < 1e-4, "{r}");
+        // At 17 maps the crossover is just above f/n = 1000: Fig 12 (f/n = 1000) has FP+ZP+W
+        // lowest there (37.987 against 38.317, see the Fig 12 test).
+        let (j, r17) = fig.crossover[3];
+        assert_eq!(j, 17.0);
+        assert!(r17 > 1000.0 && r17 < 1500.0, "{r17}");
+        let zp = 17.0 * r17.powf(2.0 / 17.0);
+        let fp = 8.0 * (r17.powf(0.25) - 1.0) + 1.0;
+        assert!((zp - fp).abs() < 1e-9 * zp);
+        // Only the 4k + 1 map counts are drawn, inside the axes.
+        for &(maps, _) in &fig.crossover {
+            assert_eq!((maps as usize - 1) % 4, 0);
+            assert!(maps >= fig.x.min && maps <= fig.x.max);
+        }
         // The crossover depth ratio grows with the number of maps.
         assert!(fig
             .crossover
@@ -390,24 +398,74 @@ mod tests {
         assert!((z_curve[0].1 - g0).abs() < 1e-12);
         assert!((z_curve.last().unwrap().1 - g0).abs() < 1e-12);
         let np = 1.0 + 20f64.sqrt();
+        // The left panel is Eq 7's last term (n′ + z − n)/(z(n′ + f − n)), without the factor f:
+        // np/(np + 19) at z = n and 1/20 at z = f for every n′.
         let x_curve = &fig.charts[0].series[2].points;
-        assert!((x_curve[0].1 - 20.0 * np / (np + 19.0)).abs() < 1e-12);
+        assert!((x_curve[0].1 - np / (np + 19.0)).abs() < 1e-12);
+        assert!((x_curve.last().unwrap().1 - 0.05).abs() < 1e-12);
     }
 
-    /// Fig 6, by hand from Eq 8 (n = 1, α = f/n = 100, c = (α − 1)/(2 tan θ)): at η = −1
-    /// (n′ = ∞) M_z = m_z(n) = c, at η = 1 (n′ = n) M_z = m_z(f) = c, and at η = 0
-    /// (n′ = 1 + √α) M_z = c (1 + √α)/(√α + α) = c/√α. Normalised: 1, 1 and 1/√α = 0.1.
+    /// Fig 6, by hand from Eq 8 (n = 1, α = f/n = 100, c = (α − 1)/(2 tan θ) = 85.74 at
+    /// θ = 30°): at η = −1 (n′ = ∞) M_z = m_z(n) = c, at η = 1 (n′ = n) M_z = m_z(f) = c, and
+    /// at η = 0 (n′ = 1 + √α) M_z = c (1 + √α)/(√α + α) = c/√α. M_x (Eq 9) is f = 100 at
+    /// η = −1, so it lies above M_z there, not under it, and 1 at η = 1 (PSM). S̄ = M_x M_z is
+    /// constant for η ≥ 0: at η = 0, M_x = f n′/(n′ + f − n) = 100 · 11/110 = 10 and
+    /// M_z = c/10, at η = 1, M_x = 1 and M_z = c; both S̄ = c.
     #[test]
     fn fig6_m_z_is_smallest_at_eta_zero_and_equal_at_both_ends() {
         let fig = fig6().map_err(|e| e.named("lloyd2006-fig6")).unwrap();
+        let c = 99.0 / (2.0 * 30f64.to_radians().tan());
         let m_z = &fig.charts[0].series[1].points;
         let (first, last) = (m_z[0].1, m_z.last().unwrap().1);
-        assert!((first - 1.0).abs() < 1e-12 && (last - 1.0).abs() < 1e-12);
+        assert!((first - c).abs() < 1e-9 * c && (last - c).abs() < 1e-9 * c);
+        let m_x = &fig.charts[0].series[0].points;
+        assert!((m_x[0].1 - 100.0).abs() < 1e-9 && m_x[0].1 > first);
+        assert!((m_x.last().unwrap().1 - 1.0).abs() < 1e-12);
+        let s = &fig.charts[0].series[2].points;
+        let mid = s.len() / 2;
+        assert!(s[mid].0.abs() < 1e-12);
+        assert!((s[mid].1 - s.last().unwrap().1).abs() < 1e-9 * s[mid].1);
+        assert!((s[mid].1 - c).abs() < 1e-9 * c, "{}", s[mid].1);
         let min = m_z
             .iter()
             .copied()
             .fold((0.0, f64::INFINITY), |a, p| if p.1 < a.1 { p } else { a });
         assert!(min.0.abs() < 1e-12, "minimum at η = {}", min.0);
-        assert!((min.1 - 0.1).abs() < 1e-12, "{}", min.1);
+        assert!((min.1 - c / 10.0).abs() < 1e-9 * c, "{}", min.1);
+    }
+
+    /// Fig 12 reaches 40 maps and so shows the light-behind crossover (§5.3, Fig 13), by hand
+    /// from Eq 20 (ZP with j maps: j · 1000^{2/j}) and Eq 21 (FP+ZP+W with j = 4k + 1 maps:
+    /// 4k(1000^{1/k} − 1)/(2 tan 45°) + 1): at 13 maps ZP is lower (13 · 1000^{2/13} = 37.6
+    /// against 6 · 9 + 1 = 55), at 17 maps FP+ZP+W is (8(1000^{1/4} − 1) + 1 = 37.987 against
+    /// 17 · 1000^{2/17} = 38.317), so the curves cross between 13 and 17 maps, near 17.
+    #[test]
+    fn fig12_reaches_the_light_behind_crossover() {
+        let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
+        let series = &fig.charts[0].series;
+        let at = |s: usize, maps: f64| {
+            series[s]
+                .points
+                .iter()
+                .find(|p| p.0 == maps)
+                .map(|p| p.1)
+                .unwrap_or_else(|| panic!("series {s} has no point at {maps} maps"))
+        };
+        let r = 1000f64;
+        let zp = |j: f64| j * r.powf(2.0 / j);
+        let fp = |k: f64| 4.0 * k * (r.powf(1.0 / k) - 1.0) / 2.0 + 1.0;
+        // Series 3 is ZP behind, 5 FP+ZP+W behind.
+        for (j, k) in [(13.0, 3.0), (17.0, 4.0)] {
+            assert!((at(3, j) - zp(j)).abs() < 1e-9 * zp(j), "ZP at {j}");
+            assert!((at(5, j) - fp(k)).abs() < 1e-9 * fp(k), "FP at {j}");
+        }
+        assert!(at(3, 13.0) < at(5, 13.0));
+        assert!(at(3, 17.0) > at(5, 17.0));
+        assert!((fp(4.0) - 37.987).abs() < 0.001 && (zp(17.0) - 38.317).abs() < 0.001);
+        // Every ZP curve runs to 40 maps, FP+ZP+W to 4 · 9 + 1 = 37.
+        for s in [0, 1, 3, 4] {
+            assert_eq!(series[s].points.last().unwrap().0, 40.0, "series {s}");
+        }
+        assert_eq!(series[5].points.last().unwrap().0, 37.0);
     }
 }

@@ -65,6 +65,10 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
             values.push(Some(focus_area(&view, dir, TsmSearch::EightyPercent)?));
         }
     }
+    let (lo, hi) = values
+        .iter()
+        .flatten()
+        .fold((f64::INFINITY, 0.0f64), |(a, b), &v| (a.min(v), b.max(v)));
     let grid = PolarGrid {
         elev_edges: (0..=ELEVATIONS)
             .map(|i| (i as f64 * de - 0.5 * de).clamp(0.0, FRAC_PI_2))
@@ -92,7 +96,11 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
             0.0,
             180.0,
         ),
-        Axis::linear("focus region area / shadow-map area", 0.0, 1.0),
+        Axis::log10(
+            "focus region area / shadow-map area (log scale)",
+            profile_floor(&eighty, &iterative),
+            1.0,
+        ),
     );
     profile.legend = SeriesLabelPosition::LowerMiddle;
     profile.series.push(Series::line(
@@ -105,16 +113,24 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         .push(Series::line("iterative variant, 1024 lines", iterative, PALETTE[1]).dashed());
     Ok(Fig6 {
         grid,
-        scale: ColourScale {
-            axis: Axis::linear("focus region area / shadow-map area", 0.0, 1.0),
-            levels: 40,
-        },
+        scale: ColourScale::smooth(Axis::linear("share of the map (colour)", lo, hi)),
         profile,
         caption: vec![
             format!("Martin & Tan 2004, Fig. 6, measured: the area the focus region (the eye frustum from n to n + δ, δ = {FOCUS}) covers in the trapezoidal map (build::tsm::tsm, TsmMap::focus_area),"),
-            "for every light direction above the viewer (left: overhead at the centre, behind on the left, in front on the right) and in the vertical plane (right). n = 1, f = 100, θ = 30°.".to_string(),
+            "for every light direction above the viewer (left: overhead at the centre, behind on the left, in front on the right; the colour scale spans the values found) and in the vertical plane (right, logarithmic, so that the 80 % rule's jump where the light leaves the view's cone shows). n = 1, f = 100, θ = 30°.".to_string(),
         ],
     })
+}
+
+/// The bottom of the profile's logarithmic axis: a power of ten below the smallest area.
+fn profile_floor(a: &[(f64, f64)], b: &[(f64, f64)]) -> f64 {
+    let min = a
+        .iter()
+        .chain(b)
+        .map(|p| p.1)
+        .filter(|&v| v > 0.0)
+        .fold(1.0f64, f64::min);
+    10f64.powf(min.log10().floor())
 }
 
 impl Figure for Fig6 {

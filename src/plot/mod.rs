@@ -22,6 +22,12 @@
 //! | `barroso-fig7` | Barroso & Celes 2007, Fig 7: the generalised LiSPSM n′ against γ |
 //! | `zhang-fig3` | Zhang et al. 2009, Fig 3: side views of E_p, E_q, E_p×E_q for SSM, LiSPSM, TSM |
 //! | `martin-tan-fig6` | Martin & Tan 2004, Fig 6: area of the focus region in the shadow map |
+//! | `lloyd2006-fig4` | Lloyd et al. 2006, Fig 4: the warped grids as n′ varies |
+//! | `martin-tan-fig3` | Martin & Tan 2004, Figs 3–4: the trapezoid against the bounding box |
+//! | `barroso-fig5` | Barroso & Celes 2007, Fig 5: the frustum seen from the light with z-partitions |
+//! | `lloyd2006-fig11` | Lloyd et al. 2006, Fig 11: the frustum seen from a light behind the viewer |
+//! | `lloyd2005-fig8` | Lloyd et al. 2005, Fig 8(c): the texture layout of the subdivisions |
+//! | `lloyd2006-worst-case` | Lloyd et al. 2006, §5.3: worst case over all light directions against the light-behind value |
 //!
 //! ```no_run
 //! use shadow_aliasing::plot::{render_all, Format, FIGURES};
@@ -32,11 +38,17 @@
 //! ```
 
 mod barroso;
+mod canvas;
 mod chart;
+mod from_light;
 mod hemisphere;
+mod layout;
 mod lloyd2005;
 mod lloyd2006;
 mod martin_tan;
+mod trapezoid;
+mod warp_grid;
+mod worst;
 mod zhang;
 
 use image::ImageEncoder;
@@ -109,6 +121,12 @@ pub const FIGURES: &[&str] = &[
     "barroso-fig7",
     "zhang-fig3",
     "martin-tan-fig6",
+    "lloyd2006-worst-case",
+    "lloyd2006-fig4",
+    "martin-tan-fig3",
+    "barroso-fig5",
+    "lloyd2006-fig11",
+    "lloyd2005-fig8",
 ];
 
 /// What went wrong while rendering a figure.
@@ -202,6 +220,9 @@ fn ensure_font() -> Result<(), PlotError> {
     }
 }
 
+/// The PNG is drawn at this many times its size in each direction and averaged down.
+const SUPERSAMPLE: u32 = 2;
+
 /// Writes `fig` as `out_dir/name.{png,svg}`.
 fn emit<F: Figure>(
     name: &'static str,
@@ -218,12 +239,18 @@ fn emit<F: Figure>(
         let path = out_dir.join(format!("{name}.{ext}"));
         let (w, h) = fig.size();
         let bytes = if *ext == "png" {
-            let mut rgb = vec![0u8; w as usize * h as usize * 3];
+            // Drawn at twice the size and box-filtered down: anti-aliased lines and edges.
+            let mut big =
+                vec![0u8; (SUPERSAMPLE * SUPERSAMPLE) as usize * w as usize * h as usize * 3];
             {
-                let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+                let bitmap =
+                    BitMapBackend::with_buffer(&mut big, (SUPERSAMPLE * w, SUPERSAMPLE * h));
+                let root = canvas::Canvas::new(bitmap, SUPERSAMPLE, canvas::BITMAP_TEXT)
+                    .into_drawing_area();
                 fig.draw(&root).map_err(|e| e.named(name))?;
                 root.present().map_err(|e| Fail::from(e).named(name))?;
             }
+            let rgb = canvas::downsample(&big, w, h, SUPERSAMPLE);
             let mut png = Vec::new();
             image::codecs::png::PngEncoder::new(&mut png)
                 .write_image(&rgb, w, h, image::ColorType::Rgb8)
@@ -235,7 +262,12 @@ fn emit<F: Figure>(
         } else {
             let mut svg = String::new();
             {
-                let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
+                let root = canvas::Canvas::new(
+                    SVGBackend::with_string(&mut svg, (w, h)),
+                    1,
+                    canvas::SVG_TEXT,
+                )
+                .into_drawing_area();
                 fig.draw(&root).map_err(|e| e.named(name))?;
                 root.present().map_err(|e| Fail::from(e).named(name))?;
             }
@@ -283,6 +315,22 @@ fn dispatch(name: &'static str, out_dir: &Path, format: Format) -> Result<Vec<Pa
         "barroso-fig7" => emit(name, &barroso::fig7().map_err(data)?, out_dir, format),
         "zhang-fig3" => emit(name, &zhang::fig3().map_err(data)?, out_dir, format),
         "martin-tan-fig6" => emit(name, &martin_tan::fig6().map_err(data)?, out_dir, format),
+        "lloyd2006-worst-case" => emit(name, &worst::worst_case().map_err(data)?, out_dir, format),
+        "lloyd2006-fig4" => emit(name, &warp_grid::fig4().map_err(data)?, out_dir, format),
+        "martin-tan-fig3" => emit(name, &trapezoid::fig3().map_err(data)?, out_dir, format),
+        "barroso-fig5" => emit(
+            name,
+            &from_light::barroso_fig5().map_err(data)?,
+            out_dir,
+            format,
+        ),
+        "lloyd2006-fig11" => emit(
+            name,
+            &from_light::lloyd2006_fig11().map_err(data)?,
+            out_dir,
+            format,
+        ),
+        "lloyd2005-fig8" => emit(name, &layout::fig8().map_err(data)?, out_dir, format),
         _ => Err(PlotError::UnknownFigure(name.to_string())),
     }
 }
@@ -337,6 +385,24 @@ figure_fns! {
     /// Martin & Tan 2004 Fig 6 (`martin-tan-fig6`): the area of the focus region in the
     /// trapezoidal map against the light direction.
     martin_tan_fig6 => "martin-tan-fig6";
+    /// Lloyd et al. 2006 §5.3 (`lloyd2006-worst-case`): the measured worst S̄ over all light
+    /// directions against the light-behind closed form, per scheme and number of partitions.
+    lloyd2006_worst_case => "lloyd2006-worst-case";
+    /// Lloyd et al. 2006 Fig 4 (`lloyd2006-fig4`): the warped shadow-map grid over the view
+    /// frustum and the frustum's grid in the map, as n′ decreases from ∞ to n (light overhead).
+    lloyd2006_fig4 => "lloyd2006-fig4";
+    /// Martin & Tan 2004 Figs 3–4 (`martin-tan-fig3`): the eye's frustum seen from the light
+    /// with the trapezoid and the bounding box, and the frustum in both normalised spaces.
+    martin_tan_fig3 => "martin-tan-fig3";
+    /// Barroso & Celes 2007 Fig 5 (`barroso-fig5`): the view frustum seen from the light with
+    /// self-similar and adaptive z-partitions.
+    barroso_fig5 => "barroso-fig5";
+    /// Lloyd et al. 2006 Fig 11 (`lloyd2006-fig11`): the view frustum seen from a light behind
+    /// the viewer, with z-partitions and their overlapping maps.
+    lloyd2006_fig11 => "lloyd2006-fig11";
+    /// Lloyd et al. 2005 Fig 8(c) (`lloyd2005-fig8`): the texture layout of face partitions
+    /// with z-partitions, by Eq 6.
+    lloyd2005_fig8 => "lloyd2005-fig8";
 }
 
 /// Renders every figure, or only those named in `only` when it is not empty, into `out_dir`, in

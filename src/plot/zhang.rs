@@ -25,22 +25,23 @@ use std::f64::consts::FRAC_PI_6;
 /// θ = 90° and 60°, as his §3.1 says of his.
 pub(super) const TSM_FOCUS: f64 = 10.0;
 
-/// Grid cells along the depth axis and across it.
-const NZ: usize = 80;
-const NY: usize = 46;
+/// Grid cells along the depth axis (from the near to the far plane) and across it.
+const NZ: usize = 99;
+const NY: usize = 60;
 
 /// One side view.
 struct Panel {
     grid: Grid,
 }
 
-/// The 3 × 9 panels, their labels and the one colour scale.
+/// The 3 × 9 panels, their labels and a colour scale per quantity.
 pub(super) struct Fig3 {
     /// rows[θ][scheme][quantity]
     rows: Vec<Vec<Vec<Panel>>>,
     row_labels: Vec<String>,
     scheme_labels: Vec<String>,
-    scale: ColourScale,
+    /// One scale per quantity (E_p, E_q, E_p × E_q), over its range in all nine panels.
+    scales: Vec<ColourScale>,
     caption: Vec<String>,
     far: f64,
     tan_phi: f64,
@@ -61,7 +62,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     let mut rows = Vec::new();
     let mut row_labels = Vec::new();
     let mut scheme_labels: Vec<String> = Vec::new();
-    let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
+    let mut ranges = [(f64::INFINITY, 0.0f64); 3];
     for (r, theta_deg) in [90.0f64, 60.0, 30.0].into_iter().enumerate() {
         let theta = theta_deg.to_radians();
         // Source above and in front of the viewer: light travels along (0, −sin θ, cos θ).
@@ -77,17 +78,12 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
                 scheme_labels.push(name.to_string());
             }
             let mut fields = [Vec::new(), Vec::new(), Vec::new()];
-            let grid = Grid::sample((0.0, f, NZ), (-f * tan_phi, f * tan_phi, NY), |z, y| {
-                (z >= n && y.abs() <= z * tan_phi).then_some(0.0)
-            });
+            let grid = frustum_grid(n, f, tan_phi);
             let nx = grid.x_edges.len() - 1;
-            for (k, v) in grid.values.iter().enumerate() {
-                let e = match v {
+            for k in 0..grid.values.len() {
+                let e = match grid.sample_point(k % nx, k / nx) {
                     None => None,
-                    Some(_) => {
-                        let (i, j) = (k % nx, k / nx);
-                        let z = 0.5 * (grid.x_edges[i] + grid.x_edges[i + 1]);
-                        let y = 0.5 * (grid.y_edges[j] + grid.y_edges[j + 1]);
+                    Some((z, y)) => {
                         let e = point_error(&view, &shadow, DVec3::new(0.0, y, -z), res)?;
                         Some((2.0 * e.mz, 2.0 * e.mx))
                     }
@@ -95,10 +91,10 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
                 let ep = e.map(|e| e.0);
                 let eq = e.map(|e| e.1);
                 let epq = e.map(|e| e.0 * e.1);
-                for (field, val) in fields.iter_mut().zip([ep, eq, epq]) {
+                for ((field, val), range) in fields.iter_mut().zip([ep, eq, epq]).zip(&mut ranges) {
                     if let Some(v) = val {
-                        lo = lo.min(v);
-                        hi = hi.max(v);
+                        range.0 = range.0.min(v);
+                        range.1 = range.1.max(v);
                     }
                     field.push(val);
                 }
@@ -110,6 +106,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
                         x_edges: grid.x_edges.clone(),
                         y_edges: grid.y_edges.clone(),
                         values,
+                        clip: grid.clip.clone(),
                     },
                 })
                 .collect();
@@ -118,26 +115,47 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         rows.push(row);
         row_labels.push(format!("θ = {theta_deg:.0}°: {}", lambdas.join(", ")));
     }
-    // The colour bar spans exactly the measured range (one scale for all 27 panels).
-    let scale = ColourScale {
-        axis: Axis::log_base("aliasing error (log₅ scale)", lo, hi, 5.0),
-        levels: 40,
-    };
+    // Each quantity's colour bar spans exactly its measured range over its nine panels.
+    let scales: Vec<ColourScale> = QUANTITIES
+        .iter()
+        .zip(ranges)
+        .map(|(q, (lo, hi))| {
+            ColourScale::smooth(Axis::log_base(format!("{q} (log₅)"), lo, hi, 5.0))
+        })
+        .collect();
+    let range_text: Vec<String> = QUANTITIES
+        .iter()
+        .zip(ranges)
+        .map(|(q, (lo, hi))| format!("{q} {lo:.3} to {hi:.1}"))
+        .collect();
     let caption = vec![
         "Zhang et al. 2009, Fig. 3, measured: E_p = 2 m_z, E_q = 2 m_x of each scheme's built matrix (build::warp, measure::point_error) on the frustum's vertical plane x = 0.".to_string(),
         format!(
-            "n = 1, f = 100, φ = π/6; light above and in front of the viewer at angle θ to the view direction. LiSPSM: λ = (n + √(fn))/sin θ; TSM: 80 % rule, focus δ = {TSM_FOCUS}. Range {lo:.3} to {hi:.1}."
+            "n = 1, f = 100, φ = π/6; light above and in front of the viewer at angle θ to the view direction. LiSPSM: λ = (n + √(fn))/sin θ; TSM: 80 % rule, focus δ = {TSM_FOCUS}. Ranges: {}.",
+            range_text.join(", ")
         ),
+        format!("Unlike the paper's single log₅ scale, each quantity has its own colour bar over its range. Each cell is cut to the frustum and sampled at the centroid of what is left; the first column starts at the near plane ({NZ} × {NY} cells per panel)."),
     ];
     Ok(Fig3 {
         rows,
         row_labels,
         scheme_labels,
-        scale,
+        scales,
         caption,
         far: f,
         tan_phi,
     })
+}
+
+/// The grid of a side view: depth z from n to f, height y over the far plane's extent, every
+/// cell cut to the frustum |y| ≤ z tan φ.
+fn frustum_grid(n: f64, f: f64, tan_phi: f64) -> Grid {
+    Grid::sample_clipped(
+        (n, f, NZ),
+        (-f * tan_phi, f * tan_phi, NY),
+        vec![(-tan_phi, 1.0, 0.0), (-tan_phi, -1.0, 0.0)],
+        |_, _| Some(0.0),
+    )
 }
 
 fn fmt_lambda(n: NPrime) -> String {
@@ -149,7 +167,7 @@ fn fmt_lambda(n: NPrime) -> String {
 
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
-        (1720, 860)
+        (2200, 1240)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -160,7 +178,7 @@ impl Figure for Fig3 {
             &caption,
         )?;
         let (w, _) = body.dim_in_pixel();
-        let (maps, bar) = body.split_horizontally(w - 100);
+        let (maps, bars) = body.split_horizontally(w - 300);
         let (header, maps) = maps.split_vertically(24);
         let (hw, _) = header.dim_in_pixel();
         let group_w = hw as i32 / 3;
@@ -173,22 +191,22 @@ impl Figure for Fig3 {
         }
         let row_areas = maps.split_evenly((self.rows.len(), 1));
         let style = ChartStyle {
-            title_size: 13,
-            x_label_area: 30,
-            y_label_area: 34,
-            tick_size: 10,
-            desc_size: 11,
-            margin: 3,
+            title_size: 15,
+            x_label_area: 34,
+            y_label_area: 40,
+            tick_size: 12,
+            desc_size: 13,
+            margin: 4,
         };
         let z_axis = Axis::linear("z", 0.0, self.far);
         let y_axis = Axis::linear("y", -self.far * self.tan_phi, self.far * self.tan_phi);
         for (row_area, (row, label)) in row_areas.iter().zip(self.rows.iter().zip(&self.row_labels))
         {
-            let (row_title, cells) = row_area.split_vertically(18);
+            let (row_title, cells) = row_area.split_vertically(22);
             row_title.draw(&Text::new(
                 label.clone(),
                 (6, 1),
-                TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Top)),
+                TextStyle::from((FONT, 15).into_font()).pos(Pos::new(HPos::Left, VPos::Top)),
             ))?;
             let cells = cells.split_evenly((1, 9));
             for (s, scheme) in row.iter().enumerate() {
@@ -196,8 +214,8 @@ impl Figure for Fig3 {
                     let cell = &cells[3 * s + q];
                     let mut chart =
                         build_chart_styled(cell, QUANTITIES[q], &z_axis, &y_axis, false, &style)?;
-                    super::chart::draw_grid(&mut chart, &panel.grid, &self.scale)?;
-                    // The frustum's outline over the stair-stepped cells.
+                    super::chart::draw_grid(&mut chart, &panel.grid, &self.scales[q])?;
+                    // The frustum's outline.
                     let (n, f, t) = (1.0, self.far, self.tan_phi);
                     chart.draw_series(std::iter::once(PathElement::new(
                         vec![
@@ -212,7 +230,13 @@ impl Figure for Fig3 {
                 }
             }
         }
-        draw_colour_bar(&bar, &self.scale)?;
+        for (bar, scale) in bars
+            .split_evenly((1, self.scales.len()))
+            .iter()
+            .zip(&self.scales)
+        {
+            draw_colour_bar(bar, scale)?;
+        }
         Ok(())
     }
 }
@@ -240,9 +264,7 @@ mod tests {
             let mut checked = 0;
             for (k, v) in g.values.iter().enumerate() {
                 let Some(ep) = *v else { continue };
-                let (i, j) = (k % nx, k / nx);
-                let z = 0.5 * (g.x_edges[i] + g.x_edges[i + 1]);
-                let y = 0.5 * (g.y_edges[j] + g.y_edges[j + 1]);
+                let (z, y) = g.sample_point(k % nx, k / nx).unwrap();
                 let want_p = zhang_ep(&view, lambda, theta, y, z).unwrap();
                 let want_q = zhang_eq(&view, lambda, theta, y, z).unwrap();
                 let eq = panels[1].grid.values[k].unwrap();
@@ -259,6 +281,34 @@ mod tests {
                 checked += 1;
             }
             assert!(checked > 1000, "{checked} cells");
+        }
+    }
+
+    /// The side views sample the near plane: the first column of cells is [n, n + 1] (99 cells
+    /// over [1, 100]), its (cut) cells are sampled inside it, where
+    /// the old grid over [0, f] first sampled z = 1.875; the cells along the slanted sides end
+    /// on the frustum's border |y| = z tan φ.
+    #[test]
+    fn side_view_cells_start_at_the_near_plane_and_follow_the_border() {
+        let t = FRAC_PI_6.tan();
+        let g = frustum_grid(1.0, 100.0, t);
+        assert_eq!(g.x_edges[0], 1.0);
+        let nx = g.x_edges.len() - 1;
+        let first: Vec<(f64, f64)> = (0..g.y_edges.len() - 1)
+            .filter_map(|j| g.sample_point(0, j))
+            .collect();
+        assert!(!first.is_empty());
+        for &(z, y) in &first {
+            assert!(z > 1.0 && z < 2.0, "z = {z}");
+            assert!(y.abs() <= z * t);
+        }
+        for j in 0..g.y_edges.len() - 1 {
+            for i in 0..nx {
+                let (poly, _) = g.cell(i, j);
+                for p in poly {
+                    assert!(p.1.abs() <= p.0 * t * (1.0 + 1e-12) + 1e-12, "{p:?}");
+                }
+            }
         }
     }
 }

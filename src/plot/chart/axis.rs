@@ -1,0 +1,472 @@
+//! Axes: linear or logarithmic scales with chosen tick marks and labels, and the chart builder
+//! that draws them.
+
+use super::super::Fail;
+use super::FONT;
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// The chart type of every panel: both axes linear in axis space, with explicit ticks.
+pub(crate) type Chart2d<'a, DB> = ChartContext<'a, DB, Cartesian2d<Ticked, Ticked>>;
+
+/// A linear plotters coordinate over `[lo, hi]` whose bold (labelled) and light (grid) tick
+/// positions are given, not computed by plotters.
+#[derive(Debug, Clone)]
+pub(crate) struct Ticked {
+    lo: f64,
+    hi: f64,
+    bold: Vec<f64>,
+    light: Vec<f64>,
+}
+
+impl Ticked {
+    pub(crate) fn new(lo: f64, hi: f64, bold: Vec<f64>, light: Vec<f64>) -> Self {
+        Self {
+            lo,
+            hi,
+            bold,
+            light,
+        }
+    }
+}
+
+impl Ranged for Ticked {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    fn map(&self, v: &f64, limit: (i32, i32)) -> i32 {
+        if self.hi == self.lo {
+            return (limit.0 + limit.1) / 2;
+        }
+        let t = (v - self.lo) / (self.hi - self.lo);
+        let len = f64::from(limit.1 - limit.0);
+        let px = f64::from(limit.0) + (len * t).round();
+        // Keep pixel positions finite and inside i32 even for wild values.
+        px.clamp(-1e6, 1e6) as i32
+    }
+
+    fn key_points<Hint: KeyPointHint>(&self, hint: Hint) -> Vec<f64> {
+        if hint.weight().allow_light_points() {
+            self.light.clone()
+        } else {
+            self.bold.clone()
+        }
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.lo..self.hi
+    }
+}
+
+/// How an axis maps data to position.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Scale {
+    /// Position proportional to the value.
+    Linear,
+    /// Position proportional to log_b of the value (b > 1).
+    Log(f64),
+}
+
+/// One axis: its label (with the unit), its data range and its scale.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Axis {
+    pub label: String,
+    pub min: f64,
+    pub max: f64,
+    pub scale: Scale,
+}
+
+impl Axis {
+    /// A linear axis over `[min, max]`.
+    pub fn linear(label: impl Into<String>, min: f64, max: f64) -> Self {
+        Self {
+            label: label.into(),
+            min,
+            max,
+            scale: Scale::Linear,
+        }
+    }
+
+    /// A base-10 logarithmic axis over `[min, max]`, `0 < min < max`.
+    pub fn log10(label: impl Into<String>, min: f64, max: f64) -> Self {
+        Self {
+            label: label.into(),
+            min,
+            max,
+            scale: Scale::Log(10.0),
+        }
+    }
+
+    /// A logarithmic axis of base `b`.
+    pub fn log_base(label: impl Into<String>, min: f64, max: f64, b: f64) -> Self {
+        Self {
+            label: label.into(),
+            min,
+            max,
+            scale: Scale::Log(b),
+        }
+    }
+
+    /// Data value → axis space; `None` for values the axis cannot show at all (non-finite, or
+    /// ≤ 0 on a logarithmic axis). Values outside `[min, max]` are mapped, not dropped: the
+    /// drawing code clips.
+    pub fn to_axis(&self, v: f64) -> Option<f64> {
+        if !v.is_finite() {
+            return None;
+        }
+        match self.scale {
+            Scale::Linear => Some(v),
+            Scale::Log(b) => (v > 0.0).then(|| v.ln() / b.ln()),
+        }
+    }
+
+    /// Axis space → data value.
+    pub fn to_data(&self, a: f64) -> f64 {
+        match self.scale {
+            Scale::Linear => a,
+            Scale::Log(b) => b.powf(a),
+        }
+    }
+
+    /// The axis range in axis space.
+    pub fn range(&self) -> (f64, f64) {
+        let lo = self.to_axis(self.min).unwrap_or(0.0);
+        let hi = self.to_axis(self.max).unwrap_or(1.0);
+        (lo, hi)
+    }
+
+    /// Bold (labelled) and light (grid only) tick positions, in axis space.
+    pub fn ticks(&self) -> (Vec<f64>, Vec<f64>) {
+        let (lo, hi) = self.range();
+        let eps = 1e-9 * (hi - lo).abs().max(1e-300);
+        let inside = |v: f64| v >= lo - eps && v <= hi + eps;
+        match self.scale {
+            Scale::Linear => {
+                let step = nice_step((hi - lo) / 8.0);
+                let bold = multiples(lo, hi, step, eps);
+                let mantissa = step / 10f64.powf(step.log10().floor());
+                let minor = if (mantissa - 2.0).abs() < 1e-9 {
+                    2.0
+                } else {
+                    5.0
+                };
+                let light = multiples(lo, hi, step / minor, eps);
+                (bold, light)
+            }
+            Scale::Log(b) => {
+                let decades = hi - lo;
+                let first = (lo - eps).ceil() as i64;
+                let last = (hi + eps).floor() as i64;
+                let every = if decades > 12.0 {
+                    3
+                } else if decades > 7.0 {
+                    2
+                } else {
+                    1
+                };
+                let mut bold: Vec<f64> = (first..=last)
+                    .filter(|e| e.rem_euclid(every) == 0)
+                    .map(|e| e as f64)
+                    .collect();
+                let mut light = Vec::new();
+                if (b - 10.0).abs() < 1e-12 && decades <= 6.0 {
+                    let lf = (lo - eps).floor() as i64;
+                    for e in lf..=last {
+                        for m in 2..10 {
+                            let v = e as f64 + (m as f64).log10();
+                            if inside(v) {
+                                light.push(v);
+                            }
+                        }
+                    }
+                    if decades <= 2.0 + 1e-9 {
+                        // Two decades or less: label 2 and 5 as well; less than one decade:
+                        // every mantissa.
+                        let mantissas: &[f64] = if decades < 1.0 - 1e-9 {
+                            &[2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]
+                        } else {
+                            &[2.0, 5.0]
+                        };
+                        for e in lf..=last {
+                            for &m in mantissas {
+                                let v = e as f64 + m.log10();
+                                if inside(v) {
+                                    bold.push(v);
+                                }
+                            }
+                        }
+                        bold.sort_by(f64::total_cmp);
+                    }
+                } else if bold.len() < 2 {
+                    let step = nice_step((hi - lo) / 5.0);
+                    bold = multiples(lo, hi, step, eps);
+                }
+                light.extend(bold.iter().copied());
+                light.sort_by(f64::total_cmp);
+                (bold, light)
+            }
+        }
+    }
+
+    /// Whether every labelled decade of a base-10 axis reads well as a plain number (0.01 to
+    /// 1000); otherwise all decades are written as powers of ten, never a mix of both.
+    fn plain_decades(&self) -> bool {
+        self.ticks()
+            .0
+            .iter()
+            .all(|&a| (-2.0 - 1e-9..=3.0 + 1e-9).contains(&a))
+            && self.max <= 1000.0 * (1.0 + 1e-9)
+    }
+
+    /// The label of a tick at axis-space position `a`.
+    pub fn tick_label(&self, a: f64) -> String {
+        match self.scale {
+            Scale::Linear => {
+                let (lo, hi) = self.range();
+                fmt_linear(a, nice_step((hi - lo) / 8.0))
+            }
+            Scale::Log(b) => {
+                let e = a.round();
+                if (a - e).abs() < 1e-9 {
+                    let e = e as i64;
+                    if (b - 10.0).abs() < 1e-12 && self.plain_decades() {
+                        fmt_plain(10f64.powi(e as i32))
+                    } else {
+                        format!("{}{}", fmt_plain(b), superscript(e))
+                    }
+                } else if (b - 10.0).abs() < 1e-12 && !self.plain_decades() {
+                    fmt_times_ten(self.to_data(a))
+                } else {
+                    fmt_plain(self.to_data(a))
+                }
+            }
+        }
+    }
+}
+
+/// 1, 2 or 5 times a power of ten, at least `raw`.
+fn nice_step(raw: f64) -> f64 {
+    if raw.is_nan() || raw <= 0.0 || raw.is_infinite() {
+        return 1.0;
+    }
+    let p = 10f64.powf(raw.log10().floor());
+    for m in [1.0, 2.0, 5.0, 10.0] {
+        if m * p >= raw * (1.0 - 1e-12) {
+            return m * p;
+        }
+    }
+    10.0 * p
+}
+
+fn multiples(lo: f64, hi: f64, step: f64, eps: f64) -> Vec<f64> {
+    let first = ((lo - eps) / step).ceil() as i64;
+    let last = ((hi + eps) / step).floor() as i64;
+    (first..=last).map(|i| i as f64 * step).collect()
+}
+
+/// A tick label on a linear axis with the decimals the step needs.
+fn fmt_linear(v: f64, step: f64) -> String {
+    let decimals = (0..12)
+        .find(|&d| {
+            let scaled = step * 10f64.powi(d);
+            (scaled - scaled.round()).abs() < 1e-9 * scaled.max(1.0)
+        })
+        .unwrap_or(12) as usize;
+    let s = format!(
+        "{:.*}",
+        decimals,
+        if v.abs() < 1e-12 * step { 0.0 } else { v }
+    );
+    trim_zeros(&s)
+}
+
+/// A number without trailing zeros, up to four significant decimals.
+pub(crate) fn fmt_plain(v: f64) -> String {
+    if v == 0.0 {
+        return "0".into();
+    }
+    let mag = v.abs().log10().floor();
+    let decimals = (3.0 - mag).clamp(0.0, 12.0) as usize;
+    trim_zeros(&format!("{v:.decimals$}"))
+}
+
+fn trim_zeros(s: &str) -> String {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s.to_string()
+    }
+}
+
+/// A number as m×10ᵉ with up to four significant digits ("8.652×10⁵"); plain between 0.01 and
+/// 1000.
+pub(crate) fn fmt_times_ten(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return fmt_plain(v);
+    }
+    let e = v.abs().log10().floor();
+    if (-2.0..=3.0).contains(&e) {
+        return fmt_plain(v);
+    }
+    let m = v / 10f64.powf(e);
+    // Rounding can carry the mantissa to 10.
+    let (m, e) = if (m.abs() * 1000.0).round() >= 10_000.0 {
+        (m / 10.0, e + 1.0)
+    } else {
+        (m, e)
+    };
+    let mant = trim_zeros(&format!("{m:.3}"));
+    if mant == "1" {
+        format!("10{}", superscript(e as i64))
+    } else {
+        format!("{mant}×10{}", superscript(e as i64))
+    }
+}
+
+/// An integer in Unicode superscript digits (DejaVu Sans has them all).
+pub(crate) fn superscript(e: i64) -> String {
+    let digits = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let mut s = String::new();
+    if e < 0 {
+        s.push('⁻');
+    }
+    for c in e.unsigned_abs().to_string().chars() {
+        s.push(digits[c as usize - '0' as usize]);
+    }
+    s
+}
+
+/// Sizes of a chart's text and label areas, in pixels.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct ChartStyle {
+    pub title_size: u32,
+    pub x_label_area: u32,
+    pub y_label_area: u32,
+    pub tick_size: u32,
+    pub desc_size: u32,
+    pub margin: u32,
+}
+
+impl Default for ChartStyle {
+    fn default() -> Self {
+        Self {
+            title_size: 17,
+            x_label_area: 46,
+            y_label_area: 64,
+            tick_size: 13,
+            desc_size: 15,
+            margin: 8,
+        }
+    }
+}
+
+/// Builds a chart over two axes with the mesh and axis labels drawn.
+pub(crate) fn build_chart<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, Shift>,
+    title: &str,
+    x: &Axis,
+    y: &Axis,
+    grid_lines: bool,
+) -> Result<Chart2d<'a, DB>, Fail> {
+    build_chart_styled(area, title, x, y, grid_lines, &ChartStyle::default())
+}
+
+/// [`build_chart`] with explicit text and label-area sizes (for small panels).
+pub(crate) fn build_chart_styled<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, Shift>,
+    title: &str,
+    x: &Axis,
+    y: &Axis,
+    grid_lines: bool,
+    style: &ChartStyle,
+) -> Result<Chart2d<'a, DB>, Fail> {
+    let (x0, x1) = x.range();
+    let (y0, y1) = y.range();
+    let (xb, xl) = x.ticks();
+    let (yb, yl) = y.ticks();
+    let mut builder = ChartBuilder::on(area);
+    builder
+        .margin(style.margin)
+        .margin_right(2 * style.margin)
+        .x_label_area_size(style.x_label_area)
+        .y_label_area_size(style.y_label_area);
+    if !title.is_empty() {
+        builder.caption(title, (FONT, style.title_size));
+    }
+    let mut chart =
+        builder.build_cartesian_2d(Ticked::new(x0, x1, xb, xl), Ticked::new(y0, y1, yb, yl))?;
+    let xf = |v: &f64| x.tick_label(*v);
+    let yf = |v: &f64| y.tick_label(*v);
+    let mut mesh = chart.configure_mesh();
+    mesh.x_desc(x.label.as_str())
+        .y_desc(y.label.as_str())
+        .x_label_formatter(&xf)
+        .y_label_formatter(&yf)
+        .axis_desc_style((FONT, style.desc_size))
+        .label_style((FONT, style.tick_size))
+        .bold_line_style(RGBColor(205, 205, 205))
+        .light_line_style(RGBColor(238, 238, 238));
+    if !grid_lines {
+        mesh.disable_mesh();
+    }
+    mesh.draw()?;
+    Ok(chart)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn log_axis_ticks_are_decades_and_labels_read_as_numbers() {
+        let a = Axis::log10("S", 1.0, 1e4);
+        let (bold, light) = a.ticks();
+        assert_eq!(bold, vec![0.0, 1.0, 2.0, 3.0, 4.0]);
+        assert_eq!(light.len(), 4 * 8 + 5);
+        // One format per axis: 1 … 10⁴ is all powers, 0.1 … 1000 all plain numbers.
+        assert_eq!(a.tick_label(0.0), "10⁰");
+        assert_eq!(a.tick_label(3.0), "10³");
+        assert_eq!(a.tick_label(4.0), "10⁴");
+        // Less than a decade: every mantissa, written as m×10ᵉ on a large axis.
+        let sub = Axis::log10("S", 8.65e5, 2e6);
+        let labels: Vec<String> = sub.ticks().0.iter().map(|&t| sub.tick_label(t)).collect();
+        assert_eq!(labels, vec!["9×10⁵", "10⁶", "2×10⁶"]);
+        assert_eq!(fmt_times_ten(8.6523e5), "8.652×10⁵");
+        assert_eq!(fmt_times_ten(9.99999e5), "10⁶");
+        assert_eq!(fmt_times_ten(1999.0), "1999");
+        assert_eq!(fmt_times_ten(19990.0), "1.999×10⁴");
+        assert_eq!(fmt_times_ten(865.2), "865.2");
+        let plain = Axis::log10("S", 0.1, 1000.0);
+        assert_eq!(plain.tick_label(-1.0), "0.1");
+        assert_eq!(plain.tick_label(3.0), "1000");
+        assert_eq!(Axis::log10("S", 1e-6, 1.0).tick_label(-6.0), "10⁻⁶");
+        assert_eq!(a.to_axis(100.0), Some(2.0));
+        assert_eq!(a.to_axis(0.0), None);
+        let five = Axis::log_base("E", 1.0, 625.0, 5.0);
+        assert_eq!(five.ticks().0, vec![0.0, 1.0, 2.0, 3.0, 4.0]);
+        assert_eq!(five.tick_label(2.0), "5²");
+        // Less than a decade: 2 and 5 are labelled too.
+        let short = Axis::log10("g", 0.1, 1.0);
+        assert_eq!(short.ticks().0.len(), 4);
+    }
+
+    #[test]
+    fn linear_ticks_are_round_numbers() {
+        let a = Axis::linear("z", 1.0, 20.0);
+        let (bold, _) = a.ticks();
+        assert_eq!(bold, vec![5.0, 10.0, 15.0, 20.0]);
+        let k = Axis::linear("k", 1.0, 16.0);
+        assert_eq!(
+            k.ticks().0,
+            vec![2.0, 4.0, 6.0, 8.0, 10.0, 12.0, 14.0, 16.0]
+        );
+        assert_eq!(k.tick_label(6.0), "6");
+        let small = Axis::linear("g", 0.0, 1.05);
+        assert_eq!(small.tick_label(0.4), "0.4");
+        let b = Axis::linear("η", -1.0, 1.0);
+        assert_eq!(b.ticks().0, vec![-1.0, -0.5, 0.0, 0.5, 1.0]);
+        assert_eq!(b.tick_label(-0.5), "-0.5");
+        assert_eq!(b.tick_label(0.0), "0");
+    }
+}

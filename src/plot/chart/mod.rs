@@ -1,0 +1,29 @@
+//! Drawing helpers shared by the figures: axes with linear or logarithmic scales and chosen tick
+//! marks, line charts that clip their data to the axes (plotters draws points outside an axis
+//! range on the border, so nothing is handed to it unclipped), heat maps on rectangular and
+//! hemispherical grids with a quantised colour scale, colour bars, and the page frame (title on
+//! top, the caption naming the paper and figure at the bottom).
+//!
+//! Everything here works in *axis space*: a logarithmic axis is drawn as a linear plotters axis
+//! over log_b of the data, with tick marks placed and labelled by [`Axis`]. That keeps one
+//! concrete chart type for every combination of linear and logarithmic axes.
+
+mod axis;
+mod heat;
+mod line;
+mod page;
+
+pub(crate) use axis::*;
+pub(crate) use heat::*;
+pub(crate) use line::*;
+pub(crate) use page::*;
+
+/// The font family every figure uses; registered from the compiled-in DejaVu Sans.
+pub(crate) const FONT: &str = "sans-serif";
+
+/// Evenly spaced samples of `[a, b]`, both ends included.
+pub(crate) fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| a + (b - a) * i as f64 / (n - 1).max(1) as f64)
+        .collect()
+}

@@ -1,0 +1,107 @@
+//! The page: title on top, the caption naming the paper and figure at the bottom, and the
+//! common page of line charts side by side.
+
+use super::super::Fail;
+use super::line::{draw_line_chart, LineChart};
+use super::FONT;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+/// Fills the page white, writes the title at the top and the caption (its lines joined into one
+/// paragraph, wrapped to the page width) at the bottom, and returns the area left between them.
+pub(crate) fn frame<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    title: &str,
+    caption: &[&str],
+) -> Result<DrawingArea<DB, Shift>, Fail> {
+    root.fill(&WHITE)?;
+    let (w, h) = root.dim_in_pixel();
+    root.draw(&Text::new(
+        title.to_string(),
+        (w as i32 / 2, 10),
+        TextStyle::from((FONT, 22).into_font()).pos(Pos::new(HPos::Center, VPos::Top)),
+    ))?;
+    let line_h = 18;
+    let style = TextStyle::from((FONT, 14).into_font());
+    let width = f64::from(w) - 28.0;
+    // The caption is one paragraph, wrapped to the page.
+    let lines = wrap(&caption.join(" "), width, |t| {
+        root.estimate_text_size(t, &style)
+            .map(|(tw, _)| f64::from(tw))
+            .unwrap_or(f64::INFINITY)
+    });
+    let bottom = lines.len() as i32 * line_h + 10;
+    for (k, line) in lines.iter().enumerate() {
+        root.draw(&Text::new(
+            line.clone(),
+            (14, h as i32 - bottom + 4 + k as i32 * line_h),
+            style
+                .color(&RGBColor(50, 50, 50))
+                .pos(Pos::new(HPos::Left, VPos::Top)),
+        ))?;
+    }
+    Ok(root.margin(44, bottom, 6, 6))
+}
+
+/// Breaks `text` at spaces into lines no wider than `width` (as measured by `measure`); a single
+/// word wider than the page keeps a line of its own.
+pub(crate) fn wrap(text: &str, width: f64, measure: impl Fn(&str) -> f64) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut cur = String::new();
+    for word in text.split(' ') {
+        let candidate = if cur.is_empty() {
+            word.to_string()
+        } else {
+            format!("{cur} {word}")
+        };
+        if !cur.is_empty() && measure(&candidate) > width {
+            lines.push(std::mem::replace(&mut cur, word.to_string()));
+        } else {
+            cur = candidate;
+        }
+    }
+    if !cur.is_empty() || lines.is_empty() {
+        lines.push(cur);
+    }
+    lines
+}
+
+/// A page of line charts side by side: the common shape of the closed-form figures.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Charts {
+    pub size: (u32, u32),
+    pub title: String,
+    pub caption: Vec<String>,
+    pub charts: Vec<LineChart>,
+}
+
+impl super::super::Figure for Charts {
+    fn size(&self) -> (u32, u32) {
+        self.size
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let caption: Vec<&str> = self.caption.iter().map(String::as_str).collect();
+        let body = frame(root, &self.title, &caption)?;
+        let panels = body.split_evenly((1, self.charts.len().max(1)));
+        for (panel, chart) in panels.iter().zip(&self.charts) {
+            draw_line_chart(panel, chart)?;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn captions_wrap_at_spaces_within_the_width() {
+        // One unit per character: "aaa bb" is 6 wide.
+        let m = |t: &str| t.chars().count() as f64;
+        assert_eq!(wrap("aaa bb cc d", 6.0, m), vec!["aaa bb", "cc d"]);
+        assert_eq!(wrap("short", 60.0, m), vec!["short"]);
+        assert_eq!(wrap("toolongword x", 4.0, m), vec!["toolongword", "x"]);
+    }
+}

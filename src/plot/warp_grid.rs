@@ -1,0 +1,205 @@
+//! Lloyd et al. 2006 Fig 4: the perspective warp's grid as n′ decreases from ∞ to n, light
+//! overhead. Top: in light space (seen from the light), the shadow map's texel grid over the
+//! view frustum. Bottom: in the shadow map, the view frustum's own grid (planes of constant
+//! depth and rays of constant x/z), stretched to fill the map.
+//!
+//! Both come from the crate's built matrix ([`crate::build::warp`] with [`WarpRule::Eta`]): on
+//! the plane y = 0 of eye space the matrix is a 2D projective map (x, z) ↦ (u, v), so every grid
+//! line is straight and maps to a straight line; its ends are carried over with the map or its
+//! inverse.
+
+use super::chart::{build_chart, clip_polyline, frame, linspace, Axis, PALETTE};
+use super::{Fail, Figure};
+use crate::build::{warp, WarpRule};
+use crate::analytic::eta::n_prime_from_eta;
+use crate::{NPrime, ViewFrustum};
+use glam::{DMat3, DVec3};
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+/// Grid lines per direction.
+const LINES: usize = 12;
+
+/// The light travels straight down (−Y): overhead.
+const OVERHEAD: DVec3 = DVec3::NEG_Y;
+
+/// One column of the figure.
+pub(super) struct Column {
+    pub title: String,
+    /// Segments in eye space (z, x): the map's lines of constant u (across) and v (depth).
+    pub light_space: Vec<[(f64, f64); 2]>,
+    /// Segments in the map (u, v): the frustum's planes of constant depth and rays.
+    pub map: Vec<[(f64, f64); 2]>,
+    /// The map's (u, v) → eye-space (x, z) on y = 0 (kept for the checks).
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub to_eye: DMat3,
+}
+
+pub(super) struct Fig4 {
+    pub view: ViewFrustum,
+    pub columns: Vec<Column>,
+}
+
+/// The homography of `m` restricted to eye-space y = 0: (x, z, 1) ↦ (clip x, clip y, w).
+fn plane_map(m: &glam::DMat4) -> DMat3 {
+    let r = |row: usize, col: usize| m.col(col)[row];
+    DMat3::from_cols(
+        DVec3::new(r(0, 0), r(1, 0), r(3, 0)),
+        DVec3::new(r(0, 2), r(1, 2), r(3, 2)),
+        DVec3::new(r(0, 3), r(1, 3), r(3, 3)),
+    )
+}
+
+fn apply(h: &DMat3, a: f64, b: f64) -> Option<(f64, f64)> {
+    let p = *h * DVec3::new(a, b, 1.0);
+    (p.z.abs() > 1e-300 && p.is_finite()).then(|| (p.x / p.z, p.y / p.z))
+}
+
+pub(super) fn fig4() -> Result<Fig4, Fail> {
+    let view = ViewFrustum::new(1.0, 10.0, 30f64.to_radians())?;
+    let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
+    let mut columns = Vec::new();
+    for eta in [-1.0, -0.6, 0.0, 1.0] {
+        let np = n_prime_from_eta(n, f, eta)?;
+        let s = warp(&view, OVERHEAD, WarpRule::Eta(eta))?;
+        let h = plane_map(&s.matrix);
+        let inv = h.inverse();
+        if !inv.is_finite() {
+            return Err(Fail::Data(crate::Error::Degenerate(format!(
+                "the map of η = {eta} is singular on the plane y = 0"
+            ))));
+        }
+        // (u, v) → (x, z) → plotted as (depth −z, x).
+        let to_eye = |u: f64, v: f64| apply(&inv, u, v).map(|(x, z)| (-z, x));
+        let mut light_space = Vec::new();
+        for c in linspace(-1.0, 1.0, LINES + 1) {
+            for (a, b) in [((c, -1.0), (c, 1.0)), ((-1.0, c), (1.0, c))] {
+                if let (Some(p), Some(q)) = (to_eye(a.0, a.1), to_eye(b.0, b.1)) {
+                    light_space.push([p, q]);
+                }
+            }
+        }
+        let to_map = |depth: f64, x: f64| apply(&h, x, -depth);
+        let mut map = Vec::new();
+        for z in linspace(n, f, LINES + 1) {
+            if let (Some(p), Some(q)) = (to_map(z, -z * t), to_map(z, z * t)) {
+                map.push([p, q]);
+            }
+        }
+        for c in linspace(-1.0, 1.0, LINES + 1) {
+            if let (Some(p), Some(q)) = (to_map(n, c * n * t), to_map(f, c * f * t)) {
+                map.push([p, q]);
+            }
+        }
+        let name = match np {
+            NPrime::Unwarped => "n′ = ∞ (η = −1, uniform)".to_string(),
+            NPrime::Finite(v) if eta == 0.0 => format!("n′ = n + √(fn) = {v:.2} (η = 0, LiSPSM)"),
+            NPrime::Finite(v) if eta == 1.0 => format!("n′ = n = {v:.0} (η = 1, PSM)"),
+            NPrime::Finite(v) => format!("n′ = {v:.2} (η = {eta})"),
+        };
+        columns.push(Column {
+            title: name,
+            light_space,
+            map,
+            to_eye: inv,
+        });
+    }
+    Ok(Fig4 { view, columns })
+}
+
+impl Figure for Fig4 {
+    fn size(&self) -> (u32, u32) {
+        (1600, 900)
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let body = frame(
+            root,
+            "Perspective warping: the shadow map's grid as n′ decreases from ∞ to n, light overhead",
+            &[
+                "Lloyd et al. 2006, Fig. 4 (n = 1, f = 10, θ = 30°), from the crate's built matrices (build::warp with WarpRule::Eta) on the plane y = 0. Top: seen from the light, the map's 12 × 12 texel grid (blue) over the view frustum (black); the warp compresses it towards the near plane. Bottom: in the shadow map, the frustum's own grid (planes of constant depth, orange, and rays from the eye, green) stretched to fill the map. The paper draws the same two rows as sketches.",
+            ],
+        )?;
+        let rows = body.split_evenly((2, self.columns.len()));
+        let (n, f, t) = (self.view.near(), self.view.far(), self.view.tan_half_fov());
+        let depth = Axis::linear("depth z (eye-space units)", 0.0, f * 1.05);
+        let across = Axis::linear("x (eye space)", -f * t * 1.1, f * t * 1.1);
+        let u = Axis::linear("map u", -1.1, 1.1);
+        let v = Axis::linear("map v", -1.1, 1.1);
+        let frustum = [
+            (n, -n * t),
+            (f, -f * t),
+            (f, f * t),
+            (n, n * t),
+            (n, -n * t),
+        ];
+        for (k, col) in self.columns.iter().enumerate() {
+            let mut chart = build_chart(&rows[k], &col.title, &depth, &across, false)?;
+            let bounds = (0.0, f * 1.05, -f * t * 1.1, f * t * 1.1);
+            for seg in &col.light_space {
+                for piece in clip_polyline(&[Some(seg[0]), Some(seg[1])], bounds) {
+                    chart.draw_series(LineSeries::new(piece, PALETTE[0].stroke_width(1)))?;
+                }
+            }
+            chart.draw_series(LineSeries::new(frustum, BLACK.stroke_width(2)))?;
+            let mut chart = build_chart(&rows[self.columns.len() + k], "", &u, &v, false)?;
+            chart.draw_series(LineSeries::new(
+                [
+                    (-1.0, -1.0),
+                    (1.0, -1.0),
+                    (1.0, 1.0),
+                    (-1.0, 1.0),
+                    (-1.0, -1.0),
+                ],
+                BLACK.stroke_width(2),
+            ))?;
+            for (i, seg) in col.map.iter().enumerate() {
+                let colour = if i < LINES + 1 {
+                    PALETTE[1]
+                } else {
+                    PALETTE[2]
+                };
+                for piece in clip_polyline(&[Some(seg[0]), Some(seg[1])], (-1.1, 1.1, -1.1, 1.1)) {
+                    chart.draw_series(LineSeries::new(piece, colour.stroke_width(1)))?;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The warp's middle texel row, by hand: a perspective map along depth with its centre n′
+    /// before the near plane puts t = ½ where 1/z′ = (1/n′ + 1/f′)/2, z′ = n′ + z − n,
+    /// f′ = n′ + f − n. For LiSPSM (n′ = 1 + √10 at n = 1, f = 10) that is z = √(fn) = 3.162;
+    /// unwarped it is the middle, z = 5.5. The map's ends, v = ±1 or u = ±1 along depth, are the
+    /// near and far planes.
+    #[test]
+    fn middle_row_by_hand() {
+        let fig = fig4().map_err(|e| e.named("lloyd2006-fig4")).unwrap();
+        for (col, want) in [(0usize, 5.5f64), (2, 10f64.sqrt())] {
+            let inv = fig.columns[col].to_eye;
+            // Find which map axis runs along depth: the one whose ends are n and f at centre.
+            let depth_at = |u: f64, v: f64| -apply(&inv, u, v).unwrap().1;
+            let along_v = (depth_at(0.0, -1.0) - depth_at(0.0, 1.0)).abs();
+            let along_u = (depth_at(-1.0, 0.0) - depth_at(1.0, 0.0)).abs();
+            let (lo, mid, hi) = if along_v > along_u {
+                (depth_at(0.0, -1.0), depth_at(0.0, 0.0), depth_at(0.0, 1.0))
+            } else {
+                (depth_at(-1.0, 0.0), depth_at(0.0, 0.0), depth_at(1.0, 0.0))
+            };
+            let (near, far) = (lo.min(hi), lo.max(hi));
+            assert!(
+                (near - 1.0).abs() < 1e-9 && (far - 10.0).abs() < 1e-9,
+                "{near} {far}"
+            );
+            assert!(
+                (mid - want).abs() < 1e-9,
+                "column {col}: middle row at z = {mid}, want {want}"
+            );
+        }
+    }
+}
