@@ -297,3 +297,19 @@ fn minimax_refuses_an_underflowing_storage_factor() {
         }
     }
 }
+
+/// Fuzz finding: the bounding sphere of a thin, distant partition (θ = 1.25·10⁻⁸, aspect
+/// 0.00527, [7.556001431·10⁷⁸, 7.556002913·10⁷⁸]) left a corner 1.2·10⁻⁹ R outside (the centre
+/// is ≈ 10⁷ R from the eye, and its rounding alone is 10⁻⁹ R). Every corner is inside now, in
+/// units of R.
+#[test]
+fn bounding_sphere_contains_its_corners_as_computed() {
+    let (a, b) = (7556001431015456e63, 7556002913165484e63);
+    let view = ViewFrustum::with_aspect(a * 0.5, b * 2.0, 1.25e-8, 0.00527252197265625).unwrap();
+    let (c, r) = bounding_sphere(&view, a, b).unwrap();
+    let sub = view.with_depth_range(a, b).unwrap();
+    for p in sub.corners() {
+        let d = (p / r - DVec3::new(0.0, 0.0, -c / r)).length();
+        assert!(d <= 1.0, "{p}: {d} R");
+    }
+}

@@ -274,7 +274,8 @@ impl StableCascade {
 /// With `k² = tan²θ (1 + aspect²)` (a corner at depth z is `z k` from the axis), equating the
 /// distances to a near and a far corner, `(c − n)² + n² k² = (f − c)² + f² k²`, gives
 /// `c = (n + f)(1 + k²)/2`; when that lies beyond the far plane the far cap alone decides and
-/// `c = f`. Then `R = √((f − c)² + f² k²)`, computed without squaring a length.
+/// `c = f`. Then `R = √((f − c)² + f² k²)`, computed without squaring a length, and padded by
+/// 4 ulps of c + R for the rounding of c, so that the sphere contains every corner as computed.
 ///
 /// # Errors
 /// As [`ViewFrustum::with_depth_range`]; [`Error::Degenerate`] when `R` overflows `f64`.
@@ -294,7 +295,14 @@ pub fn bounding_sphere(view: &ViewFrustum, near: f64, far: f64) -> Result<(f64, 
     // the radius itself would (a k² or (n + f)(1 + k²) that overflows puts c at f, as it should).
     let k = sub.tan_half_fov() * 1f64.hypot(sub.aspect());
     let c = ((0.5 * near + 0.5 * far) * (1.0 + k * k)).min(far);
-    let r = finite_result("the bounding sphere's radius", (far - c).hypot(far * k))?;
+    // The computed c is a few ulps off the exact centre; R grows by 4 ulps of c + R so that every
+    // corner lies inside the sphere as computed (a thin, distant partition has R ≪ c: at
+    // c = 7.6·10⁷⁸, R = 7.5·10⁷¹ the unpadded sphere missed a corner by 1.2·10⁻⁹ R).
+    let r = (far - c).hypot(far * k);
+    let r = finite_result(
+        "the bounding sphere's radius",
+        r + 4.0 * f64::EPSILON * (c + r),
+    )?;
     Ok((c, r))
 }
 

@@ -10,8 +10,8 @@
 
 use super::chart::{build_chart, clip_polyline, frame, linspace, Axis, PALETTE};
 use super::{Fail, Figure};
-use crate::build::{warp, WarpRule};
 use crate::analytic::eta::n_prime_from_eta;
+use crate::build::{warp, WarpRule};
 use crate::{NPrime, ViewFrustum};
 use glam::{DMat3, DVec3};
 use plotters::coord::Shift;
