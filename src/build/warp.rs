@@ -743,7 +743,9 @@ fn fit_frustum_from_corner(fl: &FrustumInLight, n_prime: NPrime, i: usize) -> Re
 
 use crate::analytic::tsm::EIGHTY_PERCENT_LINE;
 
-fn tsm_rule(view: &ViewFrustum, fl: &FrustumInLight, focus: f64) -> Result<NPrime> {
+/// Martin & Tan's focus distance δ beyond the near plane: `0 < focus ≤ f − n` (the TSM rule and
+/// the trapezoidal builders).
+pub(crate) fn focus_in_range(view: &ViewFrustum, focus: f64) -> Result<f64> {
     let focus = crate::error::positive("focus", focus)?;
     if focus > view.far() - view.near() {
         return Err(Error::invalid(
@@ -755,6 +757,11 @@ fn tsm_rule(view: &ViewFrustum, fl: &FrustumInLight, focus: f64) -> Result<NPrim
             ),
         ));
     }
+    Ok(focus)
+}
+
+fn tsm_rule(view: &ViewFrustum, fl: &FrustumInLight, focus: f64) -> Result<NPrime> {
+    let focus = focus_in_range(view, focus)?;
     let p = fl.ls.to_light(DVec3::new(0.0, 0.0, -(view.near() + focus)));
     Ok(
         match tsm_eta_finite(fl.delta, p.z - fl.z0, EIGHTY_PERCENT_LINE) {

@@ -66,7 +66,7 @@
 
 use crate::build::lightspace::{light_space, LightSpace};
 use crate::build::matrix::ShadowMatrix;
-use crate::error::{fmt_num, in_open, positive, Error, Result};
+use crate::error::{in_open, Error, Result};
 use crate::frustum::ViewFrustum;
 use glam::{DMat3, DVec2, DVec3, DVec4};
 
@@ -196,17 +196,7 @@ pub fn tsm(view: &ViewFrustum, light_dir: DVec3, opts: TsmOptions) -> Result<Tsm
 }
 
 pub(super) fn validate(view: &ViewFrustum, opts: &TsmOptions) -> Result<()> {
-    let focus = positive("focus", opts.focus)?;
-    if focus > view.far() - view.near() {
-        return Err(Error::invalid(
-            "focus",
-            format!(
-                "must be at most far − near = {} (got {})",
-                fmt_num(view.far() - view.near()),
-                fmt_num(focus)
-            ),
-        ));
-    }
+    crate::build::warp::focus_in_range(view, opts.focus)?;
     match opts.search {
         TsmSearch::EightyPercent => {}
         TsmSearch::Line(xi) => {
