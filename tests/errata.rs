@@ -11,6 +11,7 @@
 
 mod common;
 use common::close;
+use common::faces::faces_with_axis;
 use glam::DVec3;
 use shadow_aliasing::analytic::global::{zhang_ep, zhang_ep_local, zhang_eq, zhang_eq_local};
 use shadow_aliasing::analytic::partition::{
@@ -23,10 +24,10 @@ use shadow_aliasing::analytic::tilted::{
     gamma_lim, generalized_n_prime, n_prime_1, n_prime_2, n_prime_axis_minimax, tilted_mz, Falloff,
 };
 use shadow_aliasing::analytic::tsm::tsm_projection;
-use shadow_aliasing::build::faces::{face_partitions, visible_faces, Face, FaceWarp};
+use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
 use shadow_aliasing::build::minimax::minimax_mz_n_prime;
 use shadow_aliasing::build::{fit_warp, light_space, tsm, warp, TsmOptions, TsmSearch, WarpRule};
-use shadow_aliasing::measure::sweep::{light_dir_from_angles, vertex_max};
+use shadow_aliasing::measure::sweep::light_dir_from_angles;
 use shadow_aliasing::measure::tilted_twin::{
     aliasing_functions, mz_along_view_axis, tilted_warp, TiltSide, TiltedWarp,
 };
@@ -750,51 +751,6 @@ mod checks {
             d(z * (f / n).ln() / n, 2)
         ));
         e.done()
-    }
-
-    /// Σ S̄ of face partitions (k = 1) with each side face's warp axis the unit-vector bisector
-    /// (`unit`) or the printed sum e′₀ + e′₁ of the projected edge vectors (tests/faces.rs);
-    /// `None` when a face vertex lies at or behind the projected eye along the axis.
-    fn faces_with_axis(view: &ViewFrustum, l: DVec3, unit: bool) -> Option<f64> {
-        let t = view.tan_half_fov();
-        let mut total = 0.0;
-        for &f in visible_faces(view, l).unwrap().faces() {
-            let v = f.vertices(view, view.near(), view.far());
-            if f.side_edges(view).is_none() {
-                let parts = face_partitions(view, l, FaceWarp::Lispsm, 1).unwrap();
-                total += parts
-                    .iter()
-                    .find(|p| p.face == Face::Near)
-                    .unwrap()
-                    .storage_factor();
-                continue;
-            }
-            let (e0, e1) = (v[3], v[2]);
-            let p0 = e0 - e0.dot(l) * l;
-            let p1 = e1 - e1.dot(l) * l;
-            let axis = if unit {
-                p0.normalize() + p1.normalize()
-            } else {
-                p0 + p1
-            };
-            let ls = light_space(l, axis).unwrap();
-            let (mut dn, mut df) = (f64::INFINITY, f64::NEG_INFINITY);
-            for q in v {
-                dn = dn.min(ls.z.dot(q));
-                df = df.max(ls.z.dot(q));
-            }
-            if dn <= 0.0 {
-                return None;
-            }
-            let mut pts = v.to_vec();
-            for q in v {
-                pts.push(q + 3.0 * view.far() * l);
-                pts.push(q - 3.0 * view.far() * l);
-            }
-            let m = fit_warp(&pts, &ls, NPrime::Finite(dn + (dn * df).sqrt())).unwrap();
-            total += vertex_max(&m, l, t, &v).unwrap().storage_factor();
-        }
-        Some(total)
     }
 
     pub fn l06_13_sum() -> usize {

@@ -5,6 +5,7 @@
 
 #[cfg(feature = "cli")]
 pub mod cli;
+pub mod faces;
 
 use proptest::prelude::*;
 use shadow_aliasing::ViewFrustum;

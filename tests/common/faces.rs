@@ -1,0 +1,55 @@
+//! The face partitions' Σ S̄ with a chosen side-face axis (tests/faces.rs and tests/errata.rs).
+
+use glam::DVec3;
+use shadow_aliasing::build::faces::{face_partitions, visible_faces, Face, FaceWarp};
+use shadow_aliasing::ViewFrustum;
+
+/// Σ S̄ of face partitions (k = 1, LiSPSM n′ per face) with each side face's warp axis either the
+/// angle bisector ê′₀ + ê′₁ (the crate) or the printed e′₀ + e′₁ of the projected far-corner
+/// vectors. `None` when the axis leaves a face vertex at or behind the projected eye (d_n ≤ 0), so
+/// that no warp centred on the eye can be fitted.
+pub fn faces_with_axis(view: &ViewFrustum, l: DVec3, unit: bool) -> Option<f64> {
+    use shadow_aliasing::build::{fit_warp, light_space};
+    use shadow_aliasing::measure::sweep::vertex_max;
+    use shadow_aliasing::NPrime;
+    let t = view.tan_half_fov();
+    let mut total = 0.0;
+    for &f in visible_faces(view, l).unwrap().faces() {
+        let v = f.vertices(view, view.near(), view.far());
+        let Some(_) = f.side_edges(view) else {
+            let parts = face_partitions(view, l, FaceWarp::Lispsm, 1).unwrap();
+            total += parts
+                .iter()
+                .find(|p| p.face == Face::Near)
+                .unwrap()
+                .storage_factor();
+            continue;
+        };
+        // The vectors from the viewpoint through the side edges, to the far plane.
+        let (e0, e1) = (v[3], v[2]);
+        let p0 = e0 - e0.dot(l) * l;
+        let p1 = e1 - e1.dot(l) * l;
+        let axis = if unit {
+            p0.normalize() + p1.normalize()
+        } else {
+            p0 + p1
+        };
+        let ls = light_space(l, axis).unwrap();
+        let (mut dn, mut df) = (f64::INFINITY, f64::NEG_INFINITY);
+        for q in v {
+            dn = dn.min(ls.z.dot(q));
+            df = df.max(ls.z.dot(q));
+        }
+        if dn <= 0.0 {
+            return None;
+        }
+        let mut pts = v.to_vec();
+        for q in v {
+            pts.push(q + 3.0 * view.far() * l);
+            pts.push(q - 3.0 * view.far() * l);
+        }
+        let m = fit_warp(&pts, &ls, NPrime::Finite(dn + (dn * df).sqrt())).unwrap();
+        total += vertex_max(&m, l, t, &v).unwrap().storage_factor();
+    }
+    Some(total)
+}
