@@ -296,24 +296,6 @@ impl NPrime {
     pub fn is_unwarped(self) -> bool {
         matches!(self, NPrime::Unwarped)
     }
-
-    /// Checks Lloyd's light-overhead domain n′ ≥ near.
-    ///
-    /// # Errors
-    /// [`Error::InvalidArgument`] naming `n_prime` when n′ < near.
-    pub fn at_least_near(self, view: &ViewFrustum) -> Result<Self> {
-        match self {
-            NPrime::Finite(v) if v < view.near() => Err(Error::invalid(
-                "n_prime",
-                format!(
-                    "must be at least near for a light overhead (got n_prime={}, near={})",
-                    fmt_num(v),
-                    fmt_num(view.near())
-                ),
-            )),
-            other => Ok(other),
-        }
-    }
 }
 
 /// Image and shadow-map resolutions: `image` pixels across a square image, and a shadow map of
@@ -484,8 +466,6 @@ mod tests {
         assert_eq!(NPrime::new(f64::INFINITY), Ok(NPrime::Unwarped));
         assert!(NPrime::new(f64::NAN).is_err());
         assert!(NPrime::new(0.0).is_err());
-        let v = ViewFrustum::new(1.0, 4.0, 0.5).unwrap();
-        assert!(NPrime::Finite(0.5).at_least_near(&v).is_err());
         let g = LightAngle::from_light_dir(DVec3::new(0.0, -1.0, 0.0)).unwrap();
         assert!((g.radians() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
         let g = LightAngle::from_light_dir(DVec3::new(0.0, 0.0, 1.0)).unwrap();
