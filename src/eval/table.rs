@@ -40,6 +40,16 @@ const RES_S: ArgSpec = res("res_s");
 const RES_T: ArgSpec = res("res_t");
 const LIGHT_ANGLE: ArgSpec = req("light_angle", Num);
 const LAMBDA_NP: ArgSpec = req("lambda", ArgKind::NPrime);
+/// Zhang's global aliasing functions' arguments (`zhang_eq`, `zhang_ep`).
+const ZHANG_GLOBAL: &[ArgSpec] = &[
+    NEAR,
+    FAR,
+    HALF_FOV,
+    LAMBDA_NP,
+    LIGHT_ANGLE,
+    req("y", Num),
+    Z,
+];
 
 /// `z_partition` schemes.
 pub const Z_PARTITION_SCHEMES: &[&str] = &["self_similar", "uniform", "practical", "adaptive"];
@@ -371,51 +381,17 @@ pub const QUANTITIES: &[Quantity] = &[
     },
     Quantity {
         name: "zhang_eq",
-        args: &[
-            NEAR,
-            FAR,
-            HALF_FOV,
-            LAMBDA_NP,
-            LIGHT_ANGLE,
-            req("y", Num),
-            Z,
-        ],
+        args: ZHANG_GLOBAL,
         value: ValueKind::Number,
         source: "Zhang Eq 13 and Appendix",
-        compute: |a| {
-            let v = global::zhang_eq(
-                &a.view()?,
-                a.n_prime("lambda")?,
-                LightAngle::new(a.num("light_angle")?)?,
-                a.num("y")?,
-                a.num("z")?,
-            )?;
-            Ok(Output::Number(v))
-        },
+        compute: |a| zhang_global(a, global::zhang_eq),
     },
     Quantity {
         name: "zhang_ep",
-        args: &[
-            NEAR,
-            FAR,
-            HALF_FOV,
-            LAMBDA_NP,
-            LIGHT_ANGLE,
-            req("y", Num),
-            Z,
-        ],
+        args: ZHANG_GLOBAL,
         value: ValueKind::Number,
         source: "Zhang Eq 14 and Appendix",
-        compute: |a| {
-            let v = global::zhang_ep(
-                &a.view()?,
-                a.n_prime("lambda")?,
-                LightAngle::new(a.num("light_angle")?)?,
-                a.num("y")?,
-                a.num("z")?,
-            )?;
-            Ok(Output::Number(v))
-        },
+        compute: |a| zhang_global(a, global::zhang_ep),
     },
     Quantity {
         name: "zhang_eq_local",
@@ -453,4 +429,19 @@ fn rename(e: Error, from: &str, to: &'static str) -> Error {
         }
         other => other,
     }
+}
+
+/// `zhang_eq` and `zhang_ep`: the same arguments into one of Zhang's global aliasing functions.
+fn zhang_global(
+    a: &super::Args,
+    f: fn(&crate::ViewFrustum, crate::NPrime, LightAngle, f64, f64) -> crate::Result<f64>,
+) -> crate::Result<Output> {
+    let v = f(
+        &a.view()?,
+        a.n_prime("lambda")?,
+        LightAngle::new(a.num("light_angle")?)?,
+        a.num("y")?,
+        a.num("z")?,
+    )?;
+    Ok(Output::Number(v))
 }
