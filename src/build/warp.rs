@@ -494,10 +494,7 @@ pub(crate) fn warp_prepared(
 
 #[inline(always)]
 fn warp_in(view: &ViewFrustum, fl: &FrustumInLight, rule: WarpRule) -> Result<ShadowMatrix> {
-    if let Some(frame) = rule_frame(view, fl, rule) {
-        return warp_fitted(view, &frame, rule);
-    }
-    warp_fitted(view, fl, rule)
+    in_rule_frame(view, fl, rule, |fl| warp_fitted(view, fl, rule))
 }
 
 #[inline(always)]
@@ -625,10 +622,7 @@ fn in_unit_depth(z01: f64, w: f64) -> bool {
 /// ```
 pub fn n_prime_for(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<NPrime> {
     let fl = FrustumInLight::new(view, light_dir)?;
-    match rule_frame(view, &fl, rule) {
-        Some(frame) => rule_n_prime(view, &frame, rule),
-        None => rule_n_prime(view, &fl, rule),
-    }
+    in_rule_frame(view, &fl, rule, |fl| rule_n_prime(view, fl, rule))
 }
 
 fn finite_or_unwarped(v: f64) -> NPrime {
@@ -722,6 +716,20 @@ pub(crate) fn rule_frame(
             ))
         }
         _ => None,
+    }
+}
+
+/// `f` on the frame `rule` fits its map in: [`rule_frame`]'s, or `fl` itself.
+#[inline(always)]
+fn in_rule_frame<T>(
+    view: &ViewFrustum,
+    fl: &FrustumInLight,
+    rule: WarpRule,
+    f: impl FnOnce(&FrustumInLight) -> T,
+) -> T {
+    match rule_frame(view, fl, rule) {
+        Some(frame) => f(&frame),
+        None => f(fl),
     }
 }
 
