@@ -11,10 +11,10 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use glam::DVec3;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
-use shadow_aliasing::build::atlas::{layout, AtlasEntry};
-use shadow_aliasing::build::cascades::cascades;
-use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
-use shadow_aliasing::build::{tsm, warp, TsmOptions, TsmSearch, WarpRule};
+use shadow_aliasing::maps::atlas::{layout, AtlasEntry};
+use shadow_aliasing::maps::cascades::cascades;
+use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
+use shadow_aliasing::maps::{tsm, warp, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::ViewFrustum;
 use std::hint::black_box as bb;
 

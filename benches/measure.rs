@@ -7,7 +7,7 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use glam::DVec3;
-use shadow_aliasing::build::{warp, WarpRule};
+use shadow_aliasing::maps::{warp, WarpRule};
 use shadow_aliasing::measure::{frustum_max, point_error};
 use shadow_aliasing::{Resolutions, ViewFrustum};
 use std::hint::black_box as bb;

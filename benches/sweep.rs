@@ -9,9 +9,9 @@
 //! ```
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use shadow_aliasing::build::scheme::Partition;
-use shadow_aliasing::build::WarpRule;
-use shadow_aliasing::measure::sweep::{sweep_into, SweepGrid};
+use shadow_aliasing::maps::WarpRule;
+use shadow_aliasing::scheme::sweep::{sweep_into, SweepGrid};
+use shadow_aliasing::scheme::Partition;
 use shadow_aliasing::ViewFrustum;
 use std::hint::black_box as bb;
 

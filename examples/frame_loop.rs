@@ -8,7 +8,7 @@
 //! Run with `cargo run --example frame_loop`.
 
 use glam::{DMat4, DVec3, Mat4};
-use shadow_aliasing::build::{warp, ClipDepth, WarpRule};
+use shadow_aliasing::maps::{warp, ClipDepth, WarpRule};
 use shadow_aliasing::measure::frustum_max;
 use shadow_aliasing::{Result, ViewFrustum};
 

@@ -6,7 +6,7 @@
 //! to 355° in 5° steps. Run with `cargo run --release --example rule_table`.
 
 use glam::DVec3;
-use shadow_aliasing::build::{warp, Falloff, WarpRule};
+use shadow_aliasing::maps::{warp, Falloff, WarpRule};
 use shadow_aliasing::measure::frustum_max;
 use shadow_aliasing::{Result, ViewFrustum};
 

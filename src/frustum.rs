@@ -120,7 +120,7 @@ impl ViewFrustum {
     #[must_use]
     pub fn n_prime_lispsm(&self) -> f64 {
         // √(f n) without overflow or underflow of the product.
-        self.near + crate::analytic::eta::sqrt_fn(self.near, self.far)
+        self.near + crate::numeric::sqrt_fn(self.near, self.far)
     }
 
     /// The same frustum cut to the depth range `[near, far]` (a z-partition).
@@ -182,7 +182,7 @@ fn check_extent(near: f64, far: f64, tan_half_fov: f64, aspect: f64) -> Result<(
     if !(far * tan_half_fov * aspect.max(1.0)).is_finite() {
         return Err(far_too_large(far));
     }
-    if !(far / near).is_finite() || !(near + crate::analytic::eta::sqrt_fn(near, far)).is_finite() {
+    if !(far / near).is_finite() || !(near + crate::numeric::sqrt_fn(near, far)).is_finite() {
         return Err(ratio_too_large(near, far));
     }
     if !(near * tan_half_fov * aspect.min(1.0)).is_normal() {

@@ -23,7 +23,7 @@
 //! 2. [`analytic`] (with [`analytic::eta`], the warp parameter n′ ↔ η): the closed forms of the five papers, in one notation
 //!    (docs/notation.md), each citing its paper and equation, corrected where the paper is wrong
 //!    (docs/errata.md).
-//! 3. [`build`]: the matrices a renderer needs (uniform, LiSPSM with every n′ rule, the crate's
+//! 3. [`maps`]: the matrices a renderer needs (uniform, LiSPSM with every n′ rule, the crate's
 //!    minimax, trapezoidal, cascades, stable cascades, face partitions, an atlas), eye space →
 //!    light clip space, in both clip-depth conventions, without heap allocation.
 //!    [`geom`] holds the plane geometry they share (homography, convex hull, polytopes).
@@ -40,14 +40,14 @@
 //! `look_at_rh`); the depth of a point `p` is `z = −p.z`. Angles are in radians; `half_fov` is half
 //! the vertical field of view. A light direction is the direction light travels, in eye space.
 //! Shadow matrices map eye space to light clip space with x, y ∈ [−1, 1] over the map; depth in
-//! [−1, 1] (OpenGL) or [0, 1] (Vulkan, wgpu, D3D) by [`build::ClipDepth`]. All analysis is `f64`;
-//! [`build::ShadowMatrix::to_mat4`] gives `f32` for the GPU.
+//! [−1, 1] (OpenGL) or [0, 1] (Vulkan, wgpu, D3D) by [`maps::ClipDepth`]. All analysis is `f64`;
+//! [`maps::ShadowMatrix::to_mat4`] gives `f32` for the GPU.
 //!
 //! # Example
 //!
 //! ```
 //! use glam::DVec3;
-//! use shadow_aliasing::{analytic::overhead, build, measure, NPrime, Resolutions, ViewFrustum};
+//! use shadow_aliasing::{analytic::overhead, maps, measure, NPrime, Resolutions, ViewFrustum};
 //!
 //! let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians())?;
 //! // Closed form: LiSPSM's storage factor for the light overhead (Lloyd 2006 Eq 12).
@@ -55,7 +55,7 @@
 //! let predicted = overhead::storage_factor(&view, n_prime)?;
 //! // The same map built as a matrix, and its error measured from exact derivatives.
 //! let light = DVec3::new(0.0, -1.0, 0.0);
-//! let map = build::warp(&view, light, build::WarpRule::Lispsm)?;
+//! let map = maps::warp(&view, light, maps::WarpRule::Lispsm)?;
 //! let measured = measure::frustum_max(&view, &map.shadow_map())?;
 //! assert!((measured.storage_factor - predicted).abs() < 1e-9 * predicted);
 //! # let _ = Resolutions::default();
@@ -75,15 +75,17 @@
 #![forbid(unsafe_code)]
 
 pub mod analytic;
-pub mod build;
 pub mod error;
 #[cfg(feature = "cli")]
 pub mod eval;
 pub mod frustum;
 pub mod geom;
+pub mod maps;
 pub mod measure;
+pub mod numeric;
 #[cfg(feature = "plot")]
 pub mod plot;
+pub mod scheme;
 
 pub use error::{Error, Result};
 pub use frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};

@@ -10,11 +10,11 @@
 //! cannot come from a counter that never counts.
 use glam::DVec3;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
-use shadow_aliasing::build::atlas::{layout, AtlasEntry};
-use shadow_aliasing::build::cascades::cascades;
-use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
-use shadow_aliasing::build::minimax::minimax_n_prime;
-use shadow_aliasing::build::{tsm, warp, ShadowMatrix, TsmOptions, TsmSearch, WarpRule};
+use shadow_aliasing::maps::atlas::{layout, AtlasEntry};
+use shadow_aliasing::maps::cascades::cascades;
+use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
+use shadow_aliasing::maps::minimax::minimax_n_prime;
+use shadow_aliasing::maps::{tsm, warp, ShadowMatrix, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::measure::frustum_max;
 use shadow_aliasing::ViewFrustum;
 use std::hint::black_box;

@@ -4,8 +4,8 @@
 
 use glam::{DMat4, DVec3, DVec4};
 use proptest::prelude::*;
-use shadow_aliasing::build::atlas::{allocate_texels, layout, AtlasEntry, MAX_ATLAS_ENTRIES};
-use shadow_aliasing::build::faces::{face_partitions, Face, FaceWarp};
+use shadow_aliasing::maps::atlas::{allocate_texels, layout, AtlasEntry, MAX_ATLAS_ENTRIES};
+use shadow_aliasing::maps::faces::{face_partitions, Face, FaceWarp};
 use shadow_aliasing::ViewFrustum;
 
 fn config() -> ProptestConfig {
@@ -214,8 +214,8 @@ fn composed_matrices_map_into_their_viewports() {
 /// composed matrix mapping its region's vertices into its viewport.
 #[test]
 fn scheme_atlas_holds_every_partition() {
-    use shadow_aliasing::build::scheme::{scheme, Partition, Region};
-    use shadow_aliasing::build::WarpRule;
+    use shadow_aliasing::maps::WarpRule;
+    use shadow_aliasing::scheme::{scheme, Partition, Region};
     let view = ViewFrustum::new(0.5, 300.0, 0.6).unwrap();
     for partition in [Partition::Single, Partition::Log, Partition::Faces] {
         for l in [

@@ -4,7 +4,7 @@
 
 use glam::{DMat4, DVec3, DVec4};
 use proptest::prelude::*;
-use shadow_aliasing::build::{
+use shadow_aliasing::maps::{
     fit_warp, light_space, n_prime_for, warp, ClipDepth, Falloff, WarpRule,
 };
 use shadow_aliasing::measure::{frustum_max, frustum_max_sampled, point_error};
@@ -63,8 +63,8 @@ fn light_from_angles(elev: f64, azim: f64) -> DVec3 {
 }
 
 fn check_all_rules(view: &ViewFrustum, l: DVec3) {
-    use shadow_aliasing::build::tsm::{tsm, TsmOptions, TsmSearch};
-    use shadow_aliasing::build::uniform::{with_casters, CasterDepth};
+    use shadow_aliasing::maps::tsm::{tsm, TsmOptions, TsmSearch};
+    use shadow_aliasing::maps::uniform::{with_casters, CasterDepth};
     // A caster box reaching from the camera to twice the far plane and far up.
     let f = view.far();
     let casters: [DVec3; 8] = std::array::from_fn(|i| {
@@ -384,7 +384,7 @@ fn invalid_inputs_are_errors() {
 /// never costs storage: S̄ of the clamped map is at most that of the enclosing one.
 #[test]
 fn caster_bound_clamp_and_enclose() {
-    use shadow_aliasing::build::uniform::{with_casters, CasterDepth};
+    use shadow_aliasing::maps::uniform::{with_casters, CasterDepth};
     let view = ViewFrustum::with_aspect(0.5, 60.0, 0.6, 1.5).unwrap();
     // A scene box in eye space, 100 wide, reaching 80 above the camera.
     let (lo, hi) = (DVec3::new(-50.0, -3.0, -70.0), DVec3::new(50.0, 80.0, 5.0));
@@ -442,7 +442,7 @@ mod no_alloc;
 
 #[test]
 fn per_frame_builders_do_not_allocate() {
-    use shadow_aliasing::build::tsm::{tsm, TsmOptions, TsmSearch};
+    use shadow_aliasing::maps::tsm::{tsm, TsmOptions, TsmSearch};
     let view = ViewFrustum::new(0.3, 500.0, 0.7).unwrap();
     let l = DVec3::new(0.3, -0.8, -0.4);
     // Warm up anything lazily initialised.
@@ -471,8 +471,8 @@ fn per_frame_builders_do_not_allocate() {
         assert_eq!(n, 0, "TSM {search:?} allocated {n} times");
     }
     {
-        use shadow_aliasing::build::tsm::{tsm_general, ConvexBound};
-        use shadow_aliasing::build::uniform::{with_casters, CasterDepth};
+        use shadow_aliasing::maps::tsm::{tsm_general, ConvexBound};
+        use shadow_aliasing::maps::uniform::{with_casters, CasterDepth};
         let bound = ConvexBound::from_aabb(
             DVec3::new(-100.0, -5.0, -300.0),
             DVec3::new(100.0, 50.0, 0.0),
@@ -531,7 +531,7 @@ proptest! {
             let ls = light_space(l, DVec3::NEG_Z).unwrap();
             let np = NPrime::Finite(n * 10f64.powf(log_np));
             let m = fit_warp(&view.corners(), &ls, np).unwrap();
-            shadow_aliasing::build::ShadowMatrix { matrix: m, light_dir: l, n_prime: np, near: n, far: f }
+            shadow_aliasing::maps::ShadowMatrix { matrix: m, light_dir: l, n_prime: np, near: n, far: f }
         };
         let z = n + zf * (f - n);
         let g = LightAngle::new(gamma).unwrap();
@@ -655,7 +655,7 @@ proptest! {
         lz in prop_oneof![Just(0.0), -1e3f64..1e3, Just(1e-300), Just(f64::INFINITY)],
         rule_ix in 0usize..14,
     ) {
-        use shadow_aliasing::build::tsm::{tsm, TsmOptions, TsmSearch};
+        use shadow_aliasing::maps::tsm::{tsm, TsmOptions, TsmSearch};
         let near = 10f64.powf(log_near);
         let far = near * 10f64.powf(log_ratio);
         let Ok(view) = ViewFrustum::with_aspect(near, far, fov, 10f64.powf(log_aspect)) else { return Ok(()); };

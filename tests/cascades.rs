@@ -5,12 +5,12 @@
 use glam::{DMat3, DMat4, DVec3, DVec4};
 use proptest::prelude::*;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
-use shadow_aliasing::build::cascades::{
+use shadow_aliasing::maps::cascades::{
     bounding_sphere, cascades, splits_from_fractions, stable_cascade,
 };
-use shadow_aliasing::build::scheme::{scheme, seams, Partition, Region};
-use shadow_aliasing::build::{Falloff, WarpRule};
+use shadow_aliasing::maps::{Falloff, WarpRule};
 use shadow_aliasing::measure::{frustum_max, frustum_max_sampled};
+use shadow_aliasing::scheme::{scheme, seams, Partition, Region};
 use shadow_aliasing::ViewFrustum;
 
 const RULES: [WarpRule; 11] = [
@@ -35,7 +35,7 @@ fn config_cases(cases: u32) -> ProptestConfig {
     }
 }
 
-/// Rounding: the same bound as tests/builders.rs and `build::warp::fit_warp`'s documented
+/// Rounding: the same bound as tests/builders.rs and `maps::warp::fit_warp`'s documented
 /// precision. With f/n near 10⁶ and PSM's n′ = n, w spans six decades and the extreme corners
 /// land within about 10⁻⁹ of the faces (seen: 1.4·10⁻⁹ in depth at f/n = 8.2·10⁵ with the light
 /// 10⁻⁹ off parallel); 10⁻⁸ is far below a GPU's f32 resolution (6·10⁻⁸).
@@ -489,7 +489,7 @@ fn stable_cascade_loss_by_hand() {
 /// the single-precision matrix agrees to f32 rounding.
 #[test]
 fn clip_depth_conventions() {
-    use shadow_aliasing::build::ClipDepth;
+    use shadow_aliasing::maps::ClipDepth;
     let view = ViewFrustum::new(0.5, 80.0, 0.7).unwrap();
     let r = scheme(
         &view,
@@ -616,7 +616,7 @@ fn adaptive_partitions_by_hand() {
 /// the sums the sums; planes outside the view refused.
 #[test]
 fn stable_cascades_for_all_partitions() {
-    use shadow_aliasing::build::cascades::stable_cascades;
+    use shadow_aliasing::maps::cascades::stable_cascades;
     let view = ViewFrustum::new(0.5, 200.0, 0.6).unwrap();
     let splits = z_splits(0.5, 200.0, 5, SplitScheme::SelfSimilar).unwrap();
     let camera =

@@ -4,7 +4,7 @@
 //! hand and properties of a perspective map, not the builders' arithmetic.
 
 use glam::DVec3;
-use shadow_aliasing::build::{light_space, n_prime_for, warp, WarpRule};
+use shadow_aliasing::maps::{light_space, n_prime_for, warp, WarpRule};
 use shadow_aliasing::measure::frustum_max;
 use shadow_aliasing::{Error, NPrime, ViewFrustum};
 
@@ -199,7 +199,7 @@ fn filament_hints_must_be_ordered_distances() {
 /// t depends on eye x alone.
 #[test]
 fn enclosing_casters_keep_filaments_frame() {
-    use shadow_aliasing::build::{with_casters, CasterDepth};
+    use shadow_aliasing::maps::{with_casters, CasterDepth};
     let view = view();
     let g = 1.3f64.to_radians();
     let l = DVec3::new(0.0, -g.sin(), -g.cos());

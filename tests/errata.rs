@@ -24,10 +24,9 @@ use shadow_aliasing::analytic::tilted::{
     gamma_lim, generalized_n_prime, n_prime_1, n_prime_2, n_prime_axis_minimax, tilted_mz, Falloff,
 };
 use shadow_aliasing::analytic::tsm::tsm_projection;
-use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
-use shadow_aliasing::build::minimax::minimax_mz_n_prime;
-use shadow_aliasing::build::{fit_warp, light_space, tsm, warp, TsmOptions, TsmSearch, WarpRule};
-use shadow_aliasing::measure::sweep::light_dir_from_angles;
+use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
+use shadow_aliasing::maps::minimax::minimax_mz_n_prime;
+use shadow_aliasing::maps::{fit_warp, light_space, tsm, warp, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::measure::tilted_twin::{
     aliasing_functions, mz_along_view_axis, tilted_warp, TiltSide, TiltedWarp,
 };
@@ -35,6 +34,7 @@ use shadow_aliasing::measure::twin::{
     behind_map, measured_fp_zp_w_behind, overhead_cascade, overhead_map, TwinWarp,
 };
 use shadow_aliasing::measure::{frustum_max, point_error, FrustumError, PointError, ShadowMap};
+use shadow_aliasing::scheme::sweep::light_dir_from_angles;
 use shadow_aliasing::{LightAngle, NPrime, Resolutions, ViewFrustum};
 use std::cell::Cell;
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, FRAC_PI_6};

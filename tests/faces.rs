@@ -6,12 +6,11 @@ mod common;
 use common::faces::faces_with_axis;
 use glam::{DMat4, DVec3, DVec4};
 use proptest::prelude::*;
-use shadow_aliasing::build::faces::{
-    face_axis, face_partitions, visible_faces, Face, FaceWarp, EDGE_ON,
-};
-use shadow_aliasing::build::scheme::{scheme, seams, Partition, Region};
-use shadow_aliasing::build::WarpRule;
+use shadow_aliasing::maps::faces::{face_axis, face_partitions, visible_faces, Face, FaceWarp};
+use shadow_aliasing::maps::WarpRule;
 use shadow_aliasing::measure::{point_error, ShadowMap};
+use shadow_aliasing::numeric::EDGE_ON;
+use shadow_aliasing::scheme::{scheme, seams, Partition, Region};
 use shadow_aliasing::{Resolutions, ViewFrustum};
 
 fn config(cases: u32) -> ProptestConfig {
@@ -262,7 +261,7 @@ proptest! {
 
     /// Lloyd 2006 Eq 21: light behind, θ = 45°: S̄ = 4 S̄_ZP+W,overhead + 1 =
     /// 4 k((f/n)^{1/k} − 1)/(2 tan 45°) + 1. For any other θ (square image) each side face is
-    /// still an overhead frustum of half field of view 45° (module docs of `build::faces`), so the
+    /// still an overhead frustum of half field of view 45° (module docs of `maps::faces`), so the
     /// measurement gives 4 k((f/n)^{1/k} − 1)/2 + 1 whatever θ.
     #[test]
     fn eq21_behind(
@@ -369,7 +368,7 @@ fn face_seams() {
 /// S̄ of a uniform map fitted to the far face, measured over the whole frustum with the ground
 /// truth (each light ray crosses the far face and the near plane, so every corner is covered).
 fn far_face_storage(view: &ViewFrustum, l: DVec3) -> f64 {
-    use shadow_aliasing::build::{fit_warp, light_space};
+    use shadow_aliasing::maps::{fit_warp, light_space};
     use shadow_aliasing::NPrime;
     let ls = light_space(l, DVec3::Y).unwrap();
     let far = Face::Far.vertices(view, view.near(), view.far());
@@ -418,7 +417,7 @@ fn errata_face_choice_never_the_far_face() {
 /// (`face_depth_axis`), so it is never above the unit-vector value (185.73 here).
 #[test]
 fn errata_s5_1_bisector_of_unit_vectors() {
-    use shadow_aliasing::measure::sweep::light_dir_from_angles;
+    use shadow_aliasing::scheme::sweep::light_dir_from_angles;
     let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
     let l = light_dir_from_angles(15f64.to_radians(), 165f64.to_radians());
     let unit = faces_with_axis(&view, l, true).unwrap();
@@ -443,8 +442,8 @@ fn errata_s5_1_bisector_of_unit_vectors() {
 /// 499.5, Σ S̄ = 5727 instead of 1999.
 #[test]
 fn errata_s5_1_face_n_prime_is_the_faces_own() {
-    use shadow_aliasing::build::{fit_warp, light_space};
-    use shadow_aliasing::measure::sweep::vertex_max;
+    use shadow_aliasing::maps::{fit_warp, light_space};
+    use shadow_aliasing::measure::vertex::vertex_max;
     use shadow_aliasing::NPrime;
     let (n, f, th) = (1.0f64, 1000.0f64, 30f64.to_radians());
     let view = ViewFrustum::new(n, f, th).unwrap();
@@ -542,7 +541,7 @@ fn storage_is_continuous_through_the_face_switch() {
 /// at sweep angles `(el, az)` (radians, `measure::sweep` convention: D = (cos el sin az, sin el,
 /// cos el cos az) towards the source, light travelling −D); el is clamped to the hemisphere.
 fn fp_storage(view: &ViewFrustum, k: usize, el: f64, az: f64) -> f64 {
-    use shadow_aliasing::measure::sweep::light_dir_from_angles;
+    use shadow_aliasing::scheme::sweep::light_dir_from_angles;
     let el = el.clamp(0.0, std::f64::consts::FRAC_PI_2);
     face_partitions(view, light_dir_from_angles(el, az), FaceWarp::Lispsm, k)
         .unwrap_or_else(|e| panic!("el {el}, az {az}: {e}"))
@@ -624,7 +623,7 @@ fn worst_case(view: &ViewFrustum, k: usize, step_deg: f64, starts: usize) -> (f6
     best
 }
 
-/// The light-behind value of FP+ZP+W (module docs of `build::faces`, Eq 21 for any θ):
+/// The light-behind value of FP+ZP+W (module docs of `maps::faces`, Eq 21 for any θ):
 /// 4 k((f/n)^{1/k} − 1)/2 + 1.
 fn behind_closed_form(alpha: f64, k: usize) -> f64 {
     2.0 * k as f64 * (alpha.powf(1.0 / k as f64) - 1.0) + 1.0
@@ -709,7 +708,7 @@ fn no_jump_at_a_side_edge() {
         // Off the edge on the light's side of either face plane, one or both faces are seen.
         assert!(seen >= 12, "{seen}");
         // The direction, 0.005° below the edge: 404.4 (k = 4) and 491.6 (k = 8) before.
-        use shadow_aliasing::measure::sweep::light_dir_from_angles;
+        use shadow_aliasing::scheme::sweep::light_dir_from_angles;
         let l = light_dir_from_angles(26.56f64.to_radians(), 150f64.to_radians());
         let s = face_partitions(&view, l, FaceWarp::Lispsm, k)
             .unwrap()

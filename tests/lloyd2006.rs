@@ -474,9 +474,9 @@ fn errata_s4_4_fig7_with_and_without_warping_swapped() {
 #[test]
 fn errata_s4_3_equivalence_only_overhead() {
     use glam::DVec3;
-    use shadow_aliasing::build::{fit_warp, light_space};
-    use shadow_aliasing::measure::sweep::light_dir_from_angles;
+    use shadow_aliasing::maps::{fit_warp, light_space};
     use shadow_aliasing::measure::ShadowMap;
+    use shadow_aliasing::scheme::sweep::light_dir_from_angles;
     let v = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
     let s_bar = |l: DVec3, np: f64| {
         let ls = light_space(l, DVec3::NEG_Z).unwrap();

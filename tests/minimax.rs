@@ -5,8 +5,8 @@
 
 use glam::DVec3;
 use proptest::prelude::*;
-use shadow_aliasing::build::minimax::{minimax_mz_n_prime, minimax_n_prime};
-use shadow_aliasing::build::{fit_warp, light_space, warp, WarpRule};
+use shadow_aliasing::maps::minimax::{minimax_mz_n_prime, minimax_n_prime};
+use shadow_aliasing::maps::{fit_warp, light_space, warp, WarpRule};
 use shadow_aliasing::measure::{frustum_max, FrustumError, ShadowMap};
 use shadow_aliasing::{NPrime, ViewFrustum};
 
@@ -181,7 +181,7 @@ fn barroso_n1_is_not_the_frustum_minimax() {
 /// times the uniform map's; with f/n = 1000, 24° up and 10° off behind, 5.02 times.
 #[test]
 fn barroso_transition_is_worse_than_uniform() {
-    use shadow_aliasing::build::Falloff;
+    use shadow_aliasing::maps::Falloff;
     let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
     let l = light_from_angles(18f64.to_radians(), 0.0);
     let r = sbar(&view, l, WarpRule::Barroso(Falloff::Barroso)) / sbar(&view, l, WarpRule::Uniform);

@@ -13,9 +13,9 @@ use glam::DVec3;
 use shadow_aliasing::analytic::partition::{
     scheme_storage_factor, Scheme, SchemeLight, MAX_PARTITIONS,
 };
-use shadow_aliasing::build::scheme::{scheme, Partition};
-use shadow_aliasing::build::{warp, WarpRule};
+use shadow_aliasing::maps::{warp, WarpRule};
 use shadow_aliasing::measure::frustum_max;
+use shadow_aliasing::scheme::{scheme, Partition};
 use shadow_aliasing::ViewFrustum;
 
 const BEHIND: DVec3 = DVec3::NEG_Z;

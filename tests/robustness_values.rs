@@ -5,10 +5,10 @@
 
 use glam::DVec3;
 use shadow_aliasing::analytic::overhead::storage_factor;
-use shadow_aliasing::build::cascades::bounding_sphere;
-use shadow_aliasing::build::light_space;
-use shadow_aliasing::build::minimax::{minimax_mz_n_prime, minimax_n_prime};
-use shadow_aliasing::build::{warp, WarpRule};
+use shadow_aliasing::maps::cascades::bounding_sphere;
+use shadow_aliasing::maps::light_space;
+use shadow_aliasing::maps::minimax::{minimax_mz_n_prime, minimax_n_prime};
+use shadow_aliasing::maps::{warp, WarpRule};
 use shadow_aliasing::measure::{frustum_max, frustum_max_sampled, point_error, ROUNDING_TOLERANCE};
 use shadow_aliasing::{Error, NPrime, Resolutions, ViewFrustum};
 use std::f64::consts::FRAC_PI_2;
@@ -227,7 +227,7 @@ fn frustum_max_refuses_ill_conditioned_maps() {
 /// either inside in both, or a typed `Degenerate`.
 #[test]
 fn zero_to_one_depth_is_checked_too() {
-    use shadow_aliasing::build::ClipDepth;
+    use shadow_aliasing::maps::ClipDepth;
     let view = ViewFrustum::new(
         2.2250738585072014e-308,
         1.5707963267948963,
@@ -265,7 +265,7 @@ fn zero_to_one_depth_is_checked_too() {
 /// never a success: maps, or a typed error.
 #[test]
 fn face_partitions_are_never_empty() {
-    use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
+    use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
     let hp = 1.5707963267948963;
     let Ok(view) = ViewFrustum::new(2.2250738585072014e-308, hp, hp) else {
         return;

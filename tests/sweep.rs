@@ -2,12 +2,11 @@
 //! measurement of each scheme's matrices, and the closed forms at the overhead and behind rows.
 
 use glam::DVec3;
-use shadow_aliasing::build::scheme::{scheme, Partition};
-use shadow_aliasing::build::{warp, WarpRule};
-use shadow_aliasing::measure::sweep::{
-    light_dir_from_angles, sweep, sweep_into, vertex_max, SweepGrid,
-};
+use shadow_aliasing::maps::{warp, WarpRule};
+use shadow_aliasing::measure::vertex::vertex_max;
 use shadow_aliasing::measure::{frustum_max, point_error, ShadowMap};
+use shadow_aliasing::scheme::sweep::{light_dir_from_angles, sweep, sweep_into, SweepGrid};
+use shadow_aliasing::scheme::{scheme, Partition};
 use shadow_aliasing::{Resolutions, ViewFrustum};
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -211,10 +210,10 @@ mod no_alloc;
 fn per_frame_partition_builders_do_not_allocate() {
     use glam::DMat4;
     use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
-    use shadow_aliasing::build::atlas::{layout, AtlasEntry};
-    use shadow_aliasing::build::cascades::{cascades, stable_cascade};
-    use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
-    use shadow_aliasing::build::scheme::{scheme_into, seams, SchemeResult};
+    use shadow_aliasing::maps::atlas::{layout, AtlasEntry};
+    use shadow_aliasing::maps::cascades::{cascades, stable_cascade};
+    use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
+    use shadow_aliasing::scheme::{scheme_into, seams, SchemeResult};
     let view = ViewFrustum::new(0.3, 500.0, 0.7).unwrap();
     let l = DVec3::new(0.3, -0.8, -0.4);
     let mut out = SchemeResult::default();
@@ -294,7 +293,7 @@ fn per_frame_partition_builders_do_not_allocate() {
 /// the horizon, the zenith, straight behind and straight in front.
 #[test]
 fn sweeps_are_finite_on_extreme_views() {
-    use shadow_aliasing::build::Falloff;
+    use shadow_aliasing::maps::Falloff;
     let grid = SweepGrid::new(7, 16).unwrap();
     for view in [
         ViewFrustum::with_aspect(1.0, 1.01, 1f64.to_radians(), 2.0).unwrap(),

@@ -4,10 +4,10 @@
 
 use glam::{DMat4, DVec2, DVec3, DVec4};
 use proptest::prelude::*;
-use shadow_aliasing::build::tsm::{
+use shadow_aliasing::maps::tsm::{
     quad_to_square, tsm, tsm_general, ConvexBound, TsmOptions, TsmSearch, SQUARE_TOLERANCE,
 };
-use shadow_aliasing::build::{fit_warp, light_space, warp, WarpRule};
+use shadow_aliasing::maps::{fit_warp, light_space, warp, WarpRule};
 use shadow_aliasing::measure::{frustum_max, ShadowMap};
 use shadow_aliasing::{NPrime, ViewFrustum};
 

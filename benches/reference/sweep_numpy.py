@@ -2,7 +2,7 @@
 """NumPy reference of the hemisphere sweep of S̄ (issue 5's "ten times faster than NumPy" target).
 
 The same computation as `shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5235987755982988
---warp lispsm-sin` (src/measure/sweep.rs, src/build/warp.rs, src/measure/mod.rs), vectorised over
+--warp lispsm-sin` (src/scheme/sweep.rs, src/maps/warp.rs, src/measure/mod.rs), vectorised over
 all directions at once, one NumPy array operation per step, no Python loop over directions:
 
 1. directions: D = (cos el sin az, sin el, cos el cos az) towards the light, light travels −D;
@@ -12,7 +12,7 @@ all directions at once, one NumPy array operation per step, no Python loop over 
 3. the eight frustum corners in light space, their extent Δ along the warp axis, sin γ;
 4. n′ = (n + √(f n))/sin γ (the 1/sin γ rule; unwarped when sin γ = 0 or the quotient overflows),
    ρ = 1/n′;
-5. the fitted warp's rows (Lloyd 2006 §4 in ρ form, src/build/warp.rs `warp_matrix`) composed with
+5. the fitted warp's rows (Lloyd 2006 §4 in ρ form, src/maps/warp.rs `warp_matrix`) composed with
    the light-space rotation: the 4 × 4 shadow matrix of every direction;
 6. the measurement at the eight vertices from the exact derivatives of s and t (src/measure):
    m_x = h_w² |G_t⊥| / (|D| z tan θ), m_z = h_w² / (|G_t⊥| z tan θ), S̄ = max m_x · max m_z.

@@ -8,10 +8,10 @@ use arbitrary::{Result, Unstructured};
 use glam::{DMat4, DVec3, DVec4};
 use libfuzzer_sys::fuzz_target;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
-use shadow_aliasing::build::cascades::{bounding_sphere, cascades};
-use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
-use shadow_aliasing::build::minimax::{minimax_mz_n_prime, minimax_n_prime};
-use shadow_aliasing::build::{
+use shadow_aliasing::maps::cascades::{bounding_sphere, cascades};
+use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
+use shadow_aliasing::maps::minimax::{minimax_mz_n_prime, minimax_n_prime};
+use shadow_aliasing::maps::{
     light_space, tsm, warp, ClipDepth, Falloff, TsmOptions, TsmSearch, WarpRule,
 };
 use shadow_aliasing::measure::{frustum_max, FrustumError, ShadowMap};

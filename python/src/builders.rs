@@ -11,16 +11,16 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyList;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
-use shadow_aliasing::build::cascades::cascades as build_cascades;
-use shadow_aliasing::build::faces::{face_partitions, Face, FaceWarp};
-use shadow_aliasing::build::scheme::{Partition, ADAPTIVE_RATIO};
-use shadow_aliasing::build::{
+use shadow_aliasing::maps::cascades::cascades as build_cascades;
+use shadow_aliasing::maps::faces::{face_partitions, Face, FaceWarp};
+use shadow_aliasing::maps::{
     self, ClipDepth, Falloff, ShadowMatrix, TsmOptions, TsmSearch, WarpRule,
 };
-use shadow_aliasing::measure::sweep::{sweep_into, SweepGrid};
 use shadow_aliasing::measure::{
     frustum_max as measure_frustum_max, point_error as measure_point_error, ShadowMap,
 };
+use shadow_aliasing::scheme::sweep::{sweep_into, SweepGrid};
+use shadow_aliasing::scheme::{Partition, ADAPTIVE_RATIO};
 use shadow_aliasing::{Error, LightAngle, Resolutions, ViewFrustum};
 
 type Any<'py> = Bound<'py, PyAny>;
@@ -222,7 +222,7 @@ pub fn warp<'py>(
         },
     )?;
     let depth = self::clip_depth(clip_depth)?;
-    let s: ShadowMatrix = py.detach(|| build::warp(&view, l, r)).map_err(err)?;
+    let s: ShadowMatrix = py.detach(|| maps::warp(&view, l, r)).map_err(err)?;
     one_matrix(py, &s.with_clip_depth(depth))
 }
 
@@ -258,7 +258,7 @@ pub fn n_prime_for(
             shadow_distance,
         },
     )?;
-    Ok(build::n_prime_for(&view, l, r).map_err(err)?.value())
+    Ok(maps::n_prime_for(&view, l, r).map_err(err)?.value())
 }
 
 fn split_scheme(name: &str, lambda_: Option<f64>, light_dir: DVec3) -> PyResult<SplitScheme> {
@@ -416,7 +416,7 @@ pub fn tsm<'py>(
         search,
     };
     let depth = self::clip_depth(clip_depth)?;
-    let m = build::tsm(&view, l, opts).map_err(err)?;
+    let m = maps::tsm(&view, l, opts).map_err(err)?;
     one_matrix(py, &m.shadow.with_clip_depth(depth))
 }
 

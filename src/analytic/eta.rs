@@ -24,6 +24,7 @@
 
 use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::NPrime;
+use crate::numeric::sqrt_fn;
 
 /// Validates a depth range `0 < near < far`, both finite.
 #[inline]
@@ -57,17 +58,6 @@ fn bad_near_far(n: f64, f: f64) -> Error {
                 fmt_num(f)
             ),
         )
-    }
-}
-
-/// √(f n) without overflow or underflow of the product f n (both positive and finite).
-#[inline]
-pub(crate) fn sqrt_fn(n: f64, f: f64) -> f64 {
-    let p = f * n;
-    if p.is_normal() {
-        p.sqrt()
-    } else {
-        f.sqrt() * n.sqrt()
     }
 }
 

@@ -24,9 +24,10 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::analytic::eta::{n_prime_at_least, near_far, sqrt_fn};
+use crate::analytic::eta::{n_prime_at_least, near_far};
 use crate::error::{finite_result, fmt_num, positive, Error, Result};
 use crate::frustum::{NPrime, Resolutions, ViewFrustum};
+use crate::numeric::sqrt_fn;
 
 /// n′_LSPSM = n + √f √n (without overflow of f n).
 #[inline]

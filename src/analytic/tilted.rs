@@ -42,9 +42,9 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::analytic::eta::sqrt_fn;
 use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};
+use crate::numeric::sqrt_fn;
 
 /// Validates a finite n′ > 0 (`name` is the argument's name in messages).
 #[inline]

@@ -6,7 +6,7 @@ use crate::frustum::ViewFrustum;
 use glam::{DMat3, DMat4, DVec3, DVec4};
 
 /// A convex region of eye space bounded by up to six planes `a x + b y + c z + d ≤ 0`, stored as
-/// `(a, b, c, d)`: the light's volume or a scene box for [`crate::build::tsm::tsm_general`].
+/// `(a, b, c, d)`: the light's volume or a scene box for [`crate::maps::tsm::tsm_general`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ConvexBound {
     planes: [DVec4; 6],

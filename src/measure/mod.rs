@@ -26,9 +26,9 @@
 //! Zhang et al.'s perspective aliasing uses screen coordinates in `[−1, 1]` and texture
 //! coordinates in `[0, 1]`, so `E_q^pers = 2 m_x`, `E_p^pers = 2 m_z` with unit resolutions.
 
-pub mod sweep;
 pub mod tilted_twin;
 pub mod twin;
+pub mod vertex;
 
 use crate::error::{finite_result, Error, Result};
 use crate::frustum::{unit_light_dir, Resolutions, ViewFrustum};
@@ -387,8 +387,8 @@ fn vertex_max_fast(
             && pz > 0.0
             && rounding.bound(*p, h, gs, gt, l) <= ROUNDING_TOLERANCE * (1.0 - 1e-9);
         // A NaN here fails `ok`, so the one-instruction max is `f64::max` for every kept value.
-        mx = crate::build::warp::fmax(mx, px);
-        mz = crate::build::warp::fmax(mz, pz);
+        mx = crate::numeric::fmax(mx, px);
+        mz = crate::numeric::fmax(mz, pz);
     }
     // An overflowing S̄ is an error `max_over` reports.
     ok &= (mx * mz).is_finite();

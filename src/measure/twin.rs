@@ -36,11 +36,12 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::analytic::eta::{n_prime_at_least, n_prime_from_eta, sqrt_fn};
+use crate::analytic::eta::{n_prime_at_least, n_prime_from_eta};
 use crate::analytic::partition::{Splits, MAX_PARTITIONS};
 use crate::error::{finite_result, fmt_num, Error, Result};
 use crate::frustum::{NPrime, Resolutions, ViewFrustum};
 use crate::measure::{frustum_max, point_error, FrustumError, ShadowMap};
+use crate::numeric::sqrt_fn;
 use glam::{DMat4, DVec3, DVec4};
 
 /// The eye-space direction the light travels when it is overhead.

@@ -6,7 +6,7 @@
 use super::chart::{linspace, Axis, Charts, LineChart, Note, Series, PALETTE};
 use super::Fail;
 use crate::analytic::tilted::{gamma_lim, generalized_n_prime, n_prime_1, n_prime_2, Falloff};
-use crate::build::{n_prime_for, WarpRule};
+use crate::maps::{n_prime_for, WarpRule};
 use crate::{LightAngle, NPrime, ViewFrustum};
 use glam::DVec3;
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
@@ -135,7 +135,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![
             "Barroso & Celes 2007, Fig. 7 (n = 1, f = 100, φ_y = π/6), from analytic::tilted::generalized_n_prime, n_prime_1, n_prime_2, gamma_lim;".into(),
-            "LiSPSM's 1/sin γ rule and the M_z-minimising n′ (WarpRule::MinimaxMz) from build::n_prime_for. Logarithmic n′ axis: every rule tends to n′ = ∞ (no warp) as γ → 0. Each branch of Eq 13 is drawn only on its domain.".into(),
+            "LiSPSM's 1/sin γ rule and the M_z-minimising n′ (WarpRule::MinimaxMz) from maps::n_prime_for. Logarithmic n′ axis: every rule tends to n′ = ∞ (no warp) as γ → 0. Each branch of Eq 13 is drawn only on its domain.".into(),
             "The M_z-minimising curve has corners near γ = φ_y: there the frustum corner nearest the warp's centre of projection switches between the near-bottom and the far-bottom one (the switch between Eq 13's branches), so the point where m_z is largest jumps and the minimising n′ follows another formula.".into(),
         ],
         charts: vec![c],

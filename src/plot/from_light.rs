@@ -4,7 +4,7 @@
 //! square, the near face inside the far one, and the side faces are trapezoids).
 //!
 //! The frustum's edges and the split planes' cross-sections are projected along the light with
-//! the crate's light space ([`crate::build::light_space`], the view direction as its axis); the
+//! the crate's light space ([`crate::maps::light_space`], the view direction as its axis); the
 //! split depths come from [`crate::analytic::partition::z_splits`]. Each partition's orthographic
 //! map (ZP) is the light-space bounding rectangle of its corners, drawn dashed, so that the
 //! overlap of the maps shows.
@@ -12,8 +12,8 @@
 use super::chart::{build_chart, frame, Axis, PALETTE};
 use super::{Fail, Figure};
 use crate::analytic::partition::{z_splits, SplitScheme};
-use crate::build::light_space;
-use crate::build::scheme::ADAPTIVE_RATIO;
+use crate::maps::light_space;
+use crate::scheme::ADAPTIVE_RATIO;
 use crate::ViewFrustum;
 use glam::{DVec2, DVec3};
 use plotters::coord::Shift;

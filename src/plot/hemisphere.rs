@@ -1,13 +1,13 @@
 //! Lloyd et al. 2006 Fig 7: the storage factor S̄ over the hemisphere of light directions, from
-//! the crate's measurement of each scheme's own matrices ([`crate::measure::sweep::sweep`]).
+//! the crate's measurement of each scheme's own matrices ([`crate::scheme::sweep::sweep`]).
 
 use super::chart::{
     draw_colour_bar, draw_hemisphere, fmt_times_ten, frame, Axis, ColourScale, PolarGrid,
 };
 use super::{Fail, Figure};
-use crate::build::scheme::Partition;
-use crate::build::WarpRule;
-use crate::measure::sweep::{sweep, Sweep, SweepGrid};
+use crate::maps::WarpRule;
+use crate::scheme::sweep::{sweep, Sweep, SweepGrid};
+use crate::scheme::Partition;
 use crate::ViewFrustum;
 use plotters::coord::Shift;
 use plotters::prelude::*;

@@ -1,15 +1,15 @@
 //! Lloyd et al. 2005 Fig 8(c): the texture layout of a face-partitioned, z-partitioned scheme.
-//! The crate's scheme ([`crate::build::scheme::scheme`], face partitions with k z-partitions
+//! The crate's scheme ([`crate::scheme::scheme`], face partitions with k z-partitions
 //! each, LiSPSM-warped) is measured per partition and packed into one texture by
-//! [`crate::build::scheme::SchemeResult::atlas`] (Lloyd 2005 Eq 6: the width split among the
+//! [`crate::scheme::SchemeResult::atlas`] (Lloyd 2005 Eq 6: the width split among the
 //! face pairs by their largest M_x, each column's height among its members by M_z).
 
 use super::chart::{build_chart, frame, Axis, FONT, PALETTE};
 use super::{Fail, Figure};
-use crate::build::atlas::Viewport;
-use crate::build::faces::Face;
-use crate::build::scheme::{scheme, Partition, Region};
-use crate::build::WarpRule;
+use crate::maps::atlas::Viewport;
+use crate::maps::faces::Face;
+use crate::maps::WarpRule;
+use crate::scheme::{scheme, Partition, Region};
 use crate::ViewFrustum;
 use glam::DVec3;
 use plotters::coord::Shift;
@@ -74,7 +74,7 @@ impl Figure for Fig8 {
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let caption = format!(
-            "Lloyd et al. 2005, Fig. 8(c): the texture layout of face partitioning with k = {} z-partitions per face, LiSPSM-warped (n = 1, f = 100, θ = 30°; light 35° above the horizon, 60° to the right of straight behind), from build::scheme::scheme and SchemeResult::atlas ({SIZE} × {SIZE} texels). Eq 6: the width is shared among the face pairs (left/right, bottom/top, near) by their largest M_x, each column's height among its partitions by M_z, so that the error after allocation is equal. Each rectangle gives its face, depth range, M_x and M_z (unit resolutions). Panels (a) and (b) of the paper are sketches; the frustum seen from the light is drawn in barroso-fig5 and lloyd2006-fig11, the warped grids in lloyd2006-fig4.",
+            "Lloyd et al. 2005, Fig. 8(c): the texture layout of face partitioning with k = {} z-partitions per face, LiSPSM-warped (n = 1, f = 100, θ = 30°; light 35° above the horizon, 60° to the right of straight behind), from scheme::scheme and SchemeResult::atlas ({SIZE} × {SIZE} texels). Eq 6: the width is shared among the face pairs (left/right, bottom/top, near) by their largest M_x, each column's height among its partitions by M_z, so that the error after allocation is equal. Each rectangle gives its face, depth range, M_x and M_z (unit resolutions). Panels (a) and (b) of the paper are sketches; the frustum seen from the light is drawn in barroso-fig5 and lloyd2006-fig11, the warped grids in lloyd2006-fig4.",
             self.k
         );
         let body = frame(

@@ -2,16 +2,16 @@
 //! direction, measured on the crate's TSM matrices.
 //!
 //! The focus region is the eye's frustum truncated at δ beyond the near plane (Martin & Tan
-//! §6.2). For each light direction the trapezoidal map is built by [`crate::build::tsm::tsm`]
+//! §6.2). For each light direction the trapezoidal map is built by [`crate::maps::tsm::tsm`]
 //! (the 80 % rule, and the iterative variant over the map's lines), which reports the fraction of
-//! the map the focus region covers ([`crate::build::tsm::TsmMap::focus_area`]).
+//! the map the focus region covers ([`crate::maps::tsm::TsmMap::focus_area`]).
 
 use super::chart::{
     draw_colour_bar, draw_hemisphere, draw_line_chart, frame, linspace, Axis, ColourScale,
     LineChart, PolarGrid, Series, PALETTE,
 };
 use super::{Fail, Figure};
-use crate::build::tsm::{tsm, TsmOptions, TsmSearch};
+use crate::maps::tsm::{tsm, TsmOptions, TsmSearch};
 use crate::ViewFrustum;
 use glam::DVec3;
 use plotters::coord::Shift;
@@ -26,7 +26,7 @@ const ELEVATIONS: usize = 31;
 const AZIMUTHS: usize = 120;
 
 /// The direction light travels for elevation `el` and azimuth `az` (radians), as in
-/// [`crate::measure::sweep`]: the source lies towards (cos el · sin az, sin el, cos el · cos az);
+/// [`crate::scheme::sweep`]: the source lies towards (cos el · sin az, sin el, cos el · cos az);
 /// az = 0 behind the viewer, π in front, el = π/2 overhead.
 fn light_dir(el: f64, az: f64) -> DVec3 {
     let (se, ce) = el.sin_cos();
@@ -116,7 +116,7 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         scale: ColourScale::smooth(Axis::linear("share of the map (colour)", lo, hi)),
         profile,
         caption: vec![
-            format!("Martin & Tan 2004, Fig. 6, measured: the area the focus region (the eye frustum from n to n + δ, δ = {FOCUS}) covers in the trapezoidal map (build::tsm::tsm, TsmMap::focus_area),"),
+            format!("Martin & Tan 2004, Fig. 6, measured: the area the focus region (the eye frustum from n to n + δ, δ = {FOCUS}) covers in the trapezoidal map (maps::tsm::tsm, TsmMap::focus_area),"),
             "for every light direction above the viewer (left: overhead at the centre, behind on the left, in front on the right; the colour scale spans the values found) and in the vertical plane (right, logarithmic, so that the 80 % rule's jump where the light leaves the view's cone shows). n = 1, f = 100, θ = 30°.".to_string(),
         ],
     })

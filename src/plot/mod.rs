@@ -2,7 +2,7 @@
 //!
 //! Every figure is computed from the crate itself: the closed forms of [`crate::analytic`] and
 //! [`crate::analytic::eta`] for the analytic plots, and the measurement of built matrices
-//! ([`crate::measure`], [`crate::build`]) for the hemisphere and side-view plots. Nothing is
+//! ([`crate::measure`], [`crate::maps`]) for the hemisphere and side-view plots. Nothing is
 //! re-derived here; this module only samples, lays out and draws.
 //!
 //! Text is drawn with DejaVu Sans, compiled into the binary (the `dejavu` crate) and registered

@@ -1,12 +1,12 @@
 //! Martin & Tan 2004 Figs 3–4: the trapezoid against the bounding box. The eye's frustum seen
 //! from the light (E, with its convex hull C and the focus region), the trapezoid T of the 80 %
-//! rule ([`crate::build::tsm::tsm`]) and the smallest axis-aligned bounding box B; then C in the
+//! rule ([`crate::maps::tsm::tsm`]) and the smallest axis-aligned bounding box B; then C in the
 //! trapezoidal space (N_T, the map the trapezoid builds) and in the bounding box's space, with
 //! the share of the map each leaves unused (the paper's *wastage*).
 
 use super::chart::{build_chart, frame, Axis, PALETTE};
 use super::{Fail, Figure};
-use crate::build::tsm::{tsm, TsmOptions, TsmSearch};
+use crate::maps::tsm::{tsm, TsmOptions, TsmSearch};
 use crate::ViewFrustum;
 use glam::{DMat3, DVec2, DVec3};
 use plotters::coord::Shift;
@@ -137,7 +137,7 @@ impl Figure for Fig3 {
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let caption = format!(
-            "Martin & Tan 2004, Figs. 3 and 4, from build::tsm::tsm (80 % rule, focus δ = {FOCUS}; n = 1, f = 100, θ = 30°; light 40° above the horizon, in front and 30° to the right). Left: the eye's frustum E seen from the light (grey edges), its hull C, the focus region (orange), the trapezoid T (blue) and the smallest axis-aligned bounding box B (dashed). Middle: C in the trapezoidal space N_T: it covers {:.1} % of the map. Right: C in the bounding box's space: {:.1} %. The unused rest is the paper's wastage. The paper's figures are sketches for a chosen view; ours are computed.",
+            "Martin & Tan 2004, Figs. 3 and 4, from maps::tsm::tsm (80 % rule, focus δ = {FOCUS}; n = 1, f = 100, θ = 30°; light 40° above the horizon, in front and 30° to the right). Left: the eye's frustum E seen from the light (grey edges), its hull C, the focus region (orange), the trapezoid T (blue) and the smallest axis-aligned bounding box B (dashed). Middle: C in the trapezoidal space N_T: it covers {:.1} % of the map. Right: C in the bounding box's space: {:.1} %. The unused rest is the paper's wastage. The paper's figures are sketches for a chosen view; ours are computed.",
             100.0 * self.covered_t,
             100.0 * self.covered_b
         );

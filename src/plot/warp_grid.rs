@@ -3,7 +3,7 @@
 //! view frustum. Bottom: in the shadow map, the view frustum's own grid (planes of constant
 //! depth and rays of constant x/z), stretched to fill the map.
 //!
-//! Both come from the crate's built matrix ([`crate::build::warp`] with [`WarpRule::Eta`]): on
+//! Both come from the crate's built matrix ([`crate::maps::warp`] with [`WarpRule::Eta`]): on
 //! the plane y = 0 of eye space the matrix is a 2D projective map (x, z) ↦ (u, v), so every grid
 //! line is straight and maps to a straight line; its ends are carried over with the map or its
 //! inverse.
@@ -11,7 +11,7 @@
 use super::chart::{build_chart, clip_polyline, frame, linspace, Axis, PALETTE};
 use super::{Fail, Figure};
 use crate::analytic::eta::n_prime_from_eta;
-use crate::build::{warp, WarpRule};
+use crate::maps::{warp, WarpRule};
 use crate::{NPrime, ViewFrustum};
 use glam::{DMat3, DVec3};
 use plotters::coord::Shift;
@@ -117,7 +117,7 @@ impl Figure for Fig4 {
             root,
             "Perspective warping: the shadow map's grid as n′ decreases from ∞ to n, light overhead",
             &[
-                "Lloyd et al. 2006, Fig. 4 (n = 1, f = 10, θ = 30°), from the crate's built matrices (build::warp with WarpRule::Eta) on the plane y = 0. Top: seen from the light, the map's 12 × 12 texel grid (blue) over the view frustum (black); the warp compresses it towards the near plane. Bottom: in the shadow map, the frustum's own grid (planes of constant depth, orange, and rays from the eye, green) stretched to fill the map. The paper draws the same two rows as sketches.",
+                "Lloyd et al. 2006, Fig. 4 (n = 1, f = 10, θ = 30°), from the crate's built matrices (maps::warp with WarpRule::Eta) on the plane y = 0. Top: seen from the light, the map's 12 × 12 texel grid (blue) over the view frustum (black); the warp compresses it towards the near plane. Bottom: in the shadow map, the frustum's own grid (planes of constant depth, orange, and rays from the eye, green) stretched to fill the map. The paper draws the same two rows as sketches.",
             ],
         )?;
         let rows = body.split_evenly((2, self.columns.len()));

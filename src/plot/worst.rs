@@ -3,15 +3,15 @@
 //! For all combinations of warping, partitioning, and number of partitions, we found that the
 //! worst case S̄ was within a factor of 2–3 times of that which we computed analytically for the
 //! light behind case." The paper gives no figure for it; this one measures the worst case with
-//! [`crate::measure::sweep::sweep`] on each scheme's own matrices and sets it against the
+//! [`crate::scheme::sweep::sweep`] on each scheme's own matrices and sets it against the
 //! closed form behind ([`crate::analytic::partition::scheme_storage_factor`], Eq 20, 21).
 
 use super::chart::{fmt_plain, Axis, Charts, LineChart, Series, PALETTE};
 use super::Fail;
 use crate::analytic::partition::{scheme_storage_factor, Scheme, SchemeLight};
-use crate::build::scheme::Partition;
-use crate::build::WarpRule;
-use crate::measure::sweep::{sweep, SweepGrid};
+use crate::maps::WarpRule;
+use crate::scheme::sweep::{sweep, SweepGrid};
+use crate::scheme::Partition;
 use crate::ViewFrustum;
 use plotters::prelude::SeriesLabelPosition;
 

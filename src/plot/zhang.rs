@@ -2,7 +2,7 @@
 //! inside the view frustum for SSM, LiSPSM and TSM at light angles θ = 90°, 60°, 30°.
 //!
 //! Every value is measured: the renderer-facing matrix of each scheme is built by
-//! [`crate::build::warp`] for a light above and in front of the viewer (Zhang's Fig 2), and
+//! [`crate::maps::warp`] for a light above and in front of the viewer (Zhang's Fig 2), and
 //! [`crate::measure::point_error`] gives m_x and m_z at each point of the frustum's vertical
 //! plane x = 0, so that E_q = 2 m_x and E_p = 2 m_z (Zhang's screen in [−1, 1], texture in
 //! [0, 1]; unit resolutions).
@@ -11,7 +11,7 @@ use super::chart::{
     build_chart_styled, draw_colour_bar, frame, Axis, ChartStyle, ColourScale, Grid, FONT,
 };
 use super::{Fail, Figure};
-use crate::build::{warp, WarpRule};
+use crate::maps::{warp, WarpRule};
 use crate::measure::{point_error, ShadowMap};
 use crate::{NPrime, Resolutions, ViewFrustum};
 use glam::DVec3;
@@ -129,7 +129,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         .map(|(q, (lo, hi))| format!("{q} {lo:.3} to {hi:.1}"))
         .collect();
     let caption = vec![
-        "Zhang et al. 2009, Fig. 3, measured: E_p = 2 m_z, E_q = 2 m_x of each scheme's built matrix (build::warp, measure::point_error) on the frustum's vertical plane x = 0.".to_string(),
+        "Zhang et al. 2009, Fig. 3, measured: E_p = 2 m_z, E_q = 2 m_x of each scheme's built matrix (maps::warp, measure::point_error) on the frustum's vertical plane x = 0.".to_string(),
         format!(
             "n = 1, f = 100, φ = π/6; light above and in front of the viewer at angle θ to the view direction. LiSPSM: λ = (n + √(fn))/sin θ; TSM: 80 % rule, focus δ = {TSM_FOCUS}. Ranges: {}.",
             range_text.join(", ")

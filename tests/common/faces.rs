@@ -1,7 +1,7 @@
 //! The face partitions' Σ S̄ with a chosen side-face axis (tests/faces.rs and tests/errata.rs).
 
 use glam::DVec3;
-use shadow_aliasing::build::faces::{face_partitions, visible_faces, Face, FaceWarp};
+use shadow_aliasing::maps::faces::{face_partitions, visible_faces, Face, FaceWarp};
 use shadow_aliasing::ViewFrustum;
 
 /// Σ S̄ of face partitions (k = 1, LiSPSM n′ per face) with each side face's warp axis either the
@@ -9,8 +9,8 @@ use shadow_aliasing::ViewFrustum;
 /// vectors. `None` when the axis leaves a face vertex at or behind the projected eye (d_n ≤ 0), so
 /// that no warp centred on the eye can be fitted.
 pub fn faces_with_axis(view: &ViewFrustum, l: DVec3, unit: bool) -> Option<f64> {
-    use shadow_aliasing::build::{fit_warp, light_space};
-    use shadow_aliasing::measure::sweep::vertex_max;
+    use shadow_aliasing::maps::{fit_warp, light_space};
+    use shadow_aliasing::measure::vertex::vertex_max;
     use shadow_aliasing::NPrime;
     let t = view.tan_half_fov();
     let mut total = 0.0;

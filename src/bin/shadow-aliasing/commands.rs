@@ -5,7 +5,7 @@ use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
 use crate::scheme::{k, partition, partitions, rule, Lights, PartitionReport};
 use crate::sweep_out::{self, write_to, Sink, WriteError};
 use glam::DVec3;
-use shadow_aliasing::measure::sweep::SweepGrid;
+use shadow_aliasing::scheme::sweep::SweepGrid;
 use shadow_aliasing::{LightAngle, ViewFrustum};
 use std::fmt::Write as _;
 use std::io::{Read, Write};
@@ -285,7 +285,7 @@ fn figures(a: &FiguresArgs) -> ExitCode {
 }
 
 fn sweep(a: &SweepArgs) -> ExitCode {
-    use shadow_aliasing::measure::sweep::sweep;
+    use shadow_aliasing::scheme::sweep::sweep;
     use std::io::IsTerminal;
     let sink = Sink::from_arg(a.output.as_deref());
     if a.format == SweepFormat::Npy

@@ -1,13 +1,13 @@
 //! From the command line's names to the library's warp rules and partitions, and the measured
-//! error of each partition's matrix (`build::scheme`).
+//! error of each partition's matrix (`scheme`).
 
 use crate::args::{PartitionName, SchemeArgs, WarpName};
 use clap::ValueEnum;
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
-use shadow_aliasing::build::scheme::{scheme, Partition, Region, ADAPTIVE_RATIO};
-use shadow_aliasing::build::{Falloff, WarpRule};
-use shadow_aliasing::measure::sweep::{light_dir_from_angles, SweepGrid};
+use shadow_aliasing::maps::{Falloff, WarpRule};
+use shadow_aliasing::scheme::sweep::{light_dir_from_angles, SweepGrid};
+use shadow_aliasing::scheme::{scheme, Partition, Region, ADAPTIVE_RATIO};
 use shadow_aliasing::{Error, LightAngle, NPrime, ViewFrustum};
 
 /// One partition's matrix and its measured error (unit resolutions).

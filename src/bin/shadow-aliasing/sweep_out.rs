@@ -1,7 +1,7 @@
 //! `sweep`'s output: CSV (shortest round-trip numbers) or a NumPy `.npy` array, to standard
 //! output or a file, written through one fixed-size buffer (no allocation per row).
 
-use shadow_aliasing::measure::sweep::SweepGrid;
+use shadow_aliasing::scheme::sweep::SweepGrid;
 use std::io::{self, Write};
 use std::path::{Path, PathBuf};
 

@@ -256,7 +256,7 @@ pub(crate) struct PolarGrid {
 /// (orthographic), overhead at the centre, the source behind the viewer on the left (−x), in
 /// front on the right (+x), and to the viewer's right (azimuth π/2, eye-space +X) at the bottom,
 /// as a map seen from above with the viewer facing right. Azimuth and elevation as in
-/// [`crate::measure::sweep`]: the source lies towards (cos el · sin az, sin el, cos el · cos az).
+/// [`crate::scheme::sweep`]: the source lies towards (cos el · sin az, sin el, cos el · cos az).
 pub(crate) fn hemisphere_xy(elevation: f64, azimuth: f64) -> (f64, f64) {
     let r = elevation.cos();
     (-r * azimuth.cos(), -r * azimuth.sin())

@@ -46,7 +46,7 @@ impl ShadowMatrix {
     /// The matrix in the requested clip-depth convention (eye space → light clip space).
     ///
     /// ```
-    /// # use shadow_aliasing::build::{warp, ClipDepth, WarpRule};
+    /// # use shadow_aliasing::maps::{warp, ClipDepth, WarpRule};
     /// # use shadow_aliasing::ViewFrustum;
     /// # use glam::{DVec3, DVec4};
     /// let view = ViewFrustum::new(1.0, 50.0, 0.6)?;
@@ -109,7 +109,7 @@ pub(crate) fn project(m: &DMat4, p: DVec3) -> Option<DVec3> {
 }
 
 /// The `[0, 1]`-depth form of an OpenGL-depth map: depth row `(M₂ + M₃)/2`. Every builder checks
-/// its matrix in both forms before returning it (`build::warp::verify_clip`): where the map's w
+/// its matrix in both forms before returning it (`maps::warp::verify_clip`): where the map's w
 /// spans many orders of magnitude the entrywise sum rounds differently from the rows it
 /// combines, and the `[0, 1]` form can leave the clip volume while the OpenGL form does not.
 #[inline]

@@ -105,7 +105,7 @@
 //! face's prism inside the frustum maps into the clip volume.
 //!
 //! ```
-//! use shadow_aliasing::build::faces::{face_partitions, FaceWarp};
+//! use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
 //! use shadow_aliasing::ViewFrustum;
 //! use glam::DVec3;
 //! let view = ViewFrustum::new(1.0, 100.0, 45f64.to_radians())?;
@@ -119,25 +119,12 @@
 //! ```
 
 use crate::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
-use crate::build::{fit_warp, light_space, ShadowMatrix};
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{unit_light_dir, NPrime, ViewFrustum};
-use crate::measure::sweep::{vertex_max, VertexMax};
+use crate::maps::{fit_warp, light_space, ShadowMatrix};
+use crate::measure::vertex::{vertex_max, VertexMax};
+use crate::numeric::EDGE_ON;
 use glam::{DMat4, DVec3};
-
-/// Faces with `|N·L|` at most this (unit vectors: the sine of the angle between the face's plane
-/// and the light) whose area projected along the light is also at most this fraction of the
-/// frustum's silhouette are treated as edge-on and skipped (see the module docs). 10⁻⁶: the prism
-/// of such a face is thinner than a millionth of its own size and of the frustum's shadow (less
-/// than a texel of any shadow map up to 10⁶ texels across), while a map fitted to a face seen at
-/// a grazing sine s carries rounding of about 10⁻¹⁶/s of its clip range: at 10⁻⁶ that is 10⁻¹⁰,
-/// below the clip-volume tolerance the crate's tests hold every map to. (A face kept at a smaller
-/// sine because it is large, as with a half field of view near π/2, is fitted and checked like
-/// any other; past what f64 can fit the fit is refused with [`Error::Degenerate`].)
-///
-/// The same tolerance marks a warp axis as undefined: a side edge (for the bisector) or the near
-/// edge (for the depth axis) within `EDGE_ON` of parallel to the light.
-pub const EDGE_ON: f64 = 1e-6;
 
 /// The largest number of face partitions: four side faces of [`MAX_PARTITIONS`] z-partitions
 /// each, and the near face.
@@ -281,7 +268,7 @@ impl VisibleFaces {
 /// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector.
 ///
 /// ```
-/// # use shadow_aliasing::build::faces::{visible_faces, Face};
+/// # use shadow_aliasing::maps::faces::{visible_faces, Face};
 /// # use shadow_aliasing::ViewFrustum;
 /// # use glam::DVec3;
 /// let view = ViewFrustum::new(1.0, 10.0, 0.5)?;
@@ -515,7 +502,7 @@ pub(crate) fn visit_face_partitions(
     mut visit: impl FnMut(&FacePartition),
 ) -> Result<VisibleFaces> {
     let l = unit_light_dir(light_dir)?;
-    crate::build::cascades::splits_within(view, splits)?;
+    crate::maps::cascades::splits_within(view, splits)?;
     let tan = view.tan_half_fov();
     let ta = tan * view.aspect();
     let faces = visible_with(tan, ta, view.near() / view.far(), l);
@@ -630,7 +617,7 @@ impl PartFitter {
     /// over the frustum's extent, and its error at the vertices.
     fn fit(
         &self,
-        ls: &crate::build::LightSpace,
+        ls: &crate::maps::LightSpace,
         vertices: &[DVec3; 4],
         face: Face,
         (a, b): (f64, f64),

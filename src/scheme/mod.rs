@@ -1,6 +1,6 @@
 //! One frame's shadow maps for a named scheme (warp rule × partitioning), each with its measured
 //! error: what `shadow-aliasing warp --warp W --partition P --k K` prints and what
-//! [`crate::measure::sweep`] sweeps over the hemisphere.
+//! [`crate::scheme::sweep`] sweeps over the hemisphere.
 //!
 //! | [`Partition`] | maps | planes |
 //! |---|---|---|
@@ -9,7 +9,7 @@
 //! | `Log` | k | z_i = n (f/n)^{i/k} (Lloyd 2006 Eq 15, 16) |
 //! | `Practical(λ)` | k | λ-blend of the two |
 //! | `Adaptive` | k | Barroso & Celes Eq 19 with γ from the light and α = [`ADAPTIVE_RATIO`] |
-//! | `Faces` | k per visible side face, + near face | self-similar along each face ([`crate::build::faces`]) |
+//! | `Faces` | k per visible side face, + near face | self-similar along each face ([`crate::maps::faces`]) |
 //!
 //! Every z-partition is fitted with the scheme's [`WarpRule`] applied to its own sub-frustum.
 //! For `Faces` the rule is mapped onto the face rules of [`FaceWarp`]: `Uniform` and `Eta(−1)` to
@@ -21,8 +21,8 @@
 //! four vertices) with unit resolutions; the scheme's storage factor is the sum over its maps.
 //!
 //! ```
-//! use shadow_aliasing::build::scheme::{scheme, Partition};
-//! use shadow_aliasing::build::WarpRule;
+//! use shadow_aliasing::scheme::{scheme, Partition};
+//! use shadow_aliasing::maps::WarpRule;
 //! use shadow_aliasing::ViewFrustum;
 //! use glam::DVec3;
 //! let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians())?;
@@ -35,15 +35,17 @@
 //! ```
 
 use crate::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
-use crate::build::atlas::{layout, Atlas, AtlasEntry, MAX_ATLAS_ENTRIES};
-use crate::build::cascades::visit_cascades;
-use crate::build::faces::{visit_face_partitions, Face, FaceWarp, MAX_FACE_PARTITIONS};
-use crate::build::warp::{warp_prepared, PreparedLight};
-use crate::build::{ClipDepth, WarpRule};
 use crate::error::{Error, Result};
 use crate::frustum::{unit_light_dir, LightAngle, NPrime, ViewFrustum};
-use crate::measure::sweep::vertex_max;
+use crate::maps::atlas::{layout, Atlas, AtlasEntry, MAX_ATLAS_ENTRIES};
+use crate::maps::cascades::visit_cascades;
+use crate::maps::faces::{visit_face_partitions, Face, FaceWarp, MAX_FACE_PARTITIONS};
+use crate::maps::warp::{warp_prepared, PreparedLight};
+use crate::maps::{ClipDepth, WarpRule};
+use crate::measure::vertex::vertex_max;
 use glam::{DMat4, DVec3, Mat4};
+
+pub mod sweep;
 
 /// Barroso & Celes' far-partition ratio α for [`Partition::Adaptive`]: 2, the value of their
 /// Fig 9 ("the proposed adaptive scheme with α = 2").
@@ -75,7 +77,7 @@ pub enum Partition {
 pub enum Region {
     /// The sub-frustum between two depths (the whole frustum for [`Partition::Single`]).
     Frustum,
-    /// The prism along the light of a part of a face (see [`crate::build::faces`]).
+    /// The prism along the light of a part of a face (see [`crate::maps::faces`]).
     Face(Face),
 }
 
@@ -116,7 +118,7 @@ impl Default for PartitionResult {
 }
 
 impl PartitionResult {
-    /// The matrix in the requested clip-depth convention (see [`crate::build::ClipDepth`]).
+    /// The matrix in the requested clip-depth convention (see [`crate::maps::ClipDepth`]).
     #[must_use]
     pub fn matrix_with_clip_depth(&self, depth: ClipDepth) -> DMat4 {
         match depth {
@@ -173,18 +175,18 @@ impl SchemeResult {
     pub fn light_dir(&self) -> DVec3 {
         self.light_dir
     }
-    /// The maps packed into one `width × height` texture ([`crate::build::atlas::layout`]), grouped
+    /// The maps packed into one `width × height` texture ([`crate::maps::atlas::layout`]), grouped
     /// as Lloyd 2005 §4.1 does: the two maps of opposite side faces share a column (left with
     /// right, bottom with top, each face's z-partitions with them), the near face has its own;
     /// z-partitions of the frustum share one column, split along t by their M_z. The viewports
     /// are in the order of [`SchemeResult::partitions`].
     ///
     /// # Errors
-    /// As [`crate::build::atlas::layout`] (a texture too small to give every map a texel).
+    /// As [`crate::maps::atlas::layout`] (a texture too small to give every map a texel).
     ///
     /// ```
-    /// use shadow_aliasing::build::scheme::{scheme, Partition};
-    /// use shadow_aliasing::build::WarpRule;
+    /// use shadow_aliasing::scheme::{scheme, Partition};
+    /// use shadow_aliasing::maps::WarpRule;
     /// use shadow_aliasing::ViewFrustum;
     /// use glam::DVec3;
     /// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;
@@ -448,8 +450,8 @@ impl Seams {
 /// is).
 ///
 /// ```
-/// use shadow_aliasing::build::scheme::{scheme, seams, Partition};
-/// use shadow_aliasing::build::WarpRule;
+/// use shadow_aliasing::scheme::{scheme, seams, Partition};
+/// use shadow_aliasing::maps::WarpRule;
 /// use shadow_aliasing::ViewFrustum;
 /// use glam::DVec3;
 /// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;

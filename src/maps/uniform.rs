@@ -7,19 +7,19 @@
 //! With [`CasterDepth::Clamp`] the builder does exactly that, and the renderer enables depth
 //! clamping (OpenGL `GL_DEPTH_CLAMP`, Vulkan `depthClampEnable`, wgpu `unclipped_depth`, Direct3D
 //! `DepthClipEnable = FALSE`) so that casters with clip depth below the near end land at depth 0
-//! (clip z = −1 in [`crate::build::ClipDepth::NegOneToOne`], 0 in `ZeroToOne`). Casters outside
+//! (clip z = −1 in [`crate::maps::ClipDepth::NegOneToOne`], 0 in `ZeroToOne`). Casters outside
 //! the light's extrusion of the frustum fall outside the map in x or y; they cannot shadow any
 //! visible point. With [`CasterDepth::Enclose`] the map is fitted around the frustum and the
 //! caster bound together (every caster point inside the clip volume, no depth clamp needed), at
 //! the resolution cost the measurement shows.
 
-use crate::build::lightspace::LightSpace;
-use crate::build::matrix::ShadowMatrix;
-use crate::build::warp::{
-    rule_frame, rule_n_prime, verify_clip, warp_matrix, FrustumInLight, Ranges, WarpRule,
-};
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{NPrime, ViewFrustum};
+use crate::maps::lightspace::LightSpace;
+use crate::maps::matrix::ShadowMatrix;
+use crate::maps::warp::{
+    rule_frame, rule_n_prime, verify_clip, warp_matrix, FrustumInLight, Ranges, WarpRule,
+};
 use glam::{DMat4, DVec3};
 
 /// What the map does with a caster bound.
@@ -35,14 +35,14 @@ pub enum CasterDepth {
 }
 
 /// The uniform map: orthographic, tightly fitted to the view frustum in the light space of
-/// [`crate::build::light_space`] (s along x, t along the view direction projected, depth along the
+/// [`crate::maps::light_space`] (s along x, t along the view direction projected, depth along the
 /// light). Equal to `warp(view, light_dir, WarpRule::Uniform)`.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector.
 ///
 /// ```
-/// # use shadow_aliasing::build::uniform::uniform;
+/// # use shadow_aliasing::maps::uniform::uniform;
 /// # use shadow_aliasing::measure::frustum_max;
 /// # use shadow_aliasing::ViewFrustum;
 /// # use glam::DVec3;
@@ -54,26 +54,26 @@ pub enum CasterDepth {
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
 pub fn uniform(view: &ViewFrustum, light_dir: DVec3) -> Result<ShadowMatrix> {
-    crate::build::warp::warp(view, light_dir, WarpRule::Uniform)
+    crate::maps::warp::warp(view, light_dir, WarpRule::Uniform)
 }
 
 /// The map of `rule` with a caster bound (eye-space points, for instance the eight corners of the
 /// scene's bounding box transformed by the view matrix), handled as `depth` says.
 ///
 /// With [`CasterDepth::Clamp`] the casters only need to be finite: the map is the frustum-only
-/// map of [`crate::build::warp()`]. With [`CasterDepth::Enclose`] the warp is fitted around the
+/// map of [`crate::maps::warp()`]. With [`CasterDepth::Enclose`] the warp is fitted around the
 /// frustum corners and the casters together, with the rule's n′ (chosen for the frustum, in the
 /// rule's frame) measured from where that union starts along the warp axis, and the centre of
 /// projection on the eye's light-space line for every rule (OGRE's near-camera-point centre is
-/// [`crate::build::warp()`]'s, for the frustum alone).
+/// [`crate::maps::warp()`]'s, for the frustum alone).
 ///
 /// # Errors
-/// As [`crate::build::warp()`], and [`Error::InvalidArgument`] naming `casters` for a non-finite
+/// As [`crate::maps::warp()`], and [`Error::InvalidArgument`] naming `casters` for a non-finite
 /// point.
 ///
 /// ```
-/// # use shadow_aliasing::build::uniform::{with_casters, CasterDepth};
-/// # use shadow_aliasing::build::WarpRule;
+/// # use shadow_aliasing::maps::uniform::{with_casters, CasterDepth};
+/// # use shadow_aliasing::maps::WarpRule;
 /// # use shadow_aliasing::ViewFrustum;
 /// # use glam::{DVec3, DVec4};
 /// let view = ViewFrustum::new(1.0, 30.0, 0.5)?;
@@ -104,7 +104,7 @@ pub fn with_casters(
         }
     }
     match depth {
-        CasterDepth::Clamp => crate::build::warp::warp(view, light_dir, rule),
+        CasterDepth::Clamp => crate::maps::warp::warp(view, light_dir, rule),
         CasterDepth::Enclose => {
             let fl = FrustumInLight::new(view, light_dir)?;
             // The rule's own frame (Filament's near the parallel light), as `warp()` uses.
@@ -123,7 +123,7 @@ pub fn with_casters(
     }
 }
 
-/// [`crate::build::fit_warp`] over the union of two point sets, without allocating.
+/// [`crate::maps::fit_warp`] over the union of two point sets, without allocating.
 fn fit_two(a: &[DVec3], b: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DMat4> {
     let rho = match n_prime {
         NPrime::Unwarped => 0.0,

@@ -17,9 +17,9 @@
 //! points (they are bit for bit whenever the aspect is 1, and both are formed from shared
 //! products either way).
 
-use crate::build::lightspace::PARALLEL_TOLERANCE;
-use crate::build::WarpRule;
 use crate::frustum::{NPrime, ViewFrustum};
+use crate::maps::WarpRule;
+use crate::numeric::PARALLEL_TOLERANCE;
 use glam::DVec3;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -543,9 +543,9 @@ fn light_corners(x: &V3, y: &V3, z: &V3, (w, h, d): (f64, f64, f64)) -> [(F, F, 
 }
 
 /// The clip check's slack (`clip_ok_at_corners`).
-const SLACK: f64 = 1.0 + crate::build::warp::CLIP_SLACK;
+const SLACK: f64 = 1.0 + crate::numeric::CLIP_SLACK;
 /// The `[0, 1]`-depth check's slack, half the clip volume's (`in_unit_depth`).
-const HALF_SLACK: f64 = 0.5 * crate::build::warp::CLIP_SLACK;
+const HALF_SLACK: f64 = 0.5 * crate::numeric::CLIP_SLACK;
 
 /// One row of `M` at the four corners `(±w, ±h, −d)` of one depth, in glam's order
 /// `((M₀ x + M₁ y) + M₂ z) + M₃` with the products shared up to exact sign changes.
@@ -576,8 +576,8 @@ fn homogeneous(rows: &[Row; 4], corner: (f64, f64, f64)) -> [[F; 4]; 4] {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::build::scheme::{scheme, Partition, Prepared};
-    use crate::measure::sweep::light_dir_from_angles;
+    use crate::scheme::sweep::light_dir_from_angles;
+    use crate::scheme::{scheme, Partition, Prepared};
 
     /// The lanes take ordinary directions themselves (the bit-for-bit tests in tests/sweep.rs
     /// would also pass if every lane went to the scalar code) and send the light exactly along the

@@ -27,7 +27,7 @@
 //!    light-space depth over w, fitted to [−1, 1], monotonic along each light ray) so that it can
 //!    be used as an ordinary shadow matrix.
 //!
-//! The same centre of projection and side lines are what [`crate::build::fit_warp`] builds with
+//! The same centre of projection and side lines are what [`crate::maps::fit_warp`] builds with
 //! n′ = η (the trapezoid's homography equals the warp with t reversed): a test checks it.
 //!
 //! # When the frustum looks square from the light
@@ -64,10 +64,10 @@
 //! vertices (the warp axis is the direction of e), the near and far planes are pushed to I's depth
 //! range [n_I, f_I], and the focus distance becomes δ (f_I − n_I)/(f − n).
 
-use crate::build::lightspace::{light_space, LightSpace};
-use crate::build::matrix::ShadowMatrix;
 use crate::error::{in_open, Error, Result};
 use crate::frustum::ViewFrustum;
+use crate::maps::lightspace::{light_space, LightSpace};
+use crate::maps::matrix::ShadowMatrix;
 use glam::{DMat3, DVec2, DVec3, DVec4};
 
 mod bound;
@@ -161,7 +161,7 @@ pub struct TsmMap {
 /// (−1, 1)) or `map_lines` (< 2); [`Error::Degenerate`] when the trapezoid is near-degenerate.
 ///
 /// ```
-/// # use shadow_aliasing::build::tsm::{tsm, TsmOptions, TsmSearch};
+/// # use shadow_aliasing::maps::tsm::{tsm, TsmOptions, TsmSearch};
 /// # use shadow_aliasing::ViewFrustum;
 /// # use glam::{DVec3, DVec4};
 /// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;
@@ -196,7 +196,7 @@ pub fn tsm(view: &ViewFrustum, light_dir: DVec3, opts: TsmOptions) -> Result<Tsm
 }
 
 pub(super) fn validate(view: &ViewFrustum, opts: &TsmOptions) -> Result<()> {
-    crate::build::warp::focus_in_range(view, opts.focus)?;
+    crate::maps::warp::focus_in_range(view, opts.focus)?;
     match opts.search {
         TsmSearch::EightyPercent => {}
         TsmSearch::Line(xi) => {

@@ -32,11 +32,12 @@
 //! on the near camera point's light-space x and y instead, which [`WarpRule::Ogre`] reproduces.
 
 use crate::analytic::tsm::tsm_eta_finite;
-use crate::build::lightspace::{light_space_unit, LightSpace};
-use crate::build::matrix::{zero_to_one, ShadowMatrix};
-use crate::build::minimax;
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{unit_light_dir, LightAngle, NPrime, ViewFrustum};
+use crate::maps::lightspace::{light_space_unit, LightSpace};
+use crate::maps::matrix::{zero_to_one, ShadowMatrix};
+use crate::maps::minimax;
+use crate::numeric::{fmax, fmin, CLIP_SLACK};
 use glam::{DMat4, DVec3, DVec4};
 
 pub use crate::analytic::tilted::Falloff;
@@ -134,12 +135,12 @@ pub enum WarpRule {
     /// The crate's minimax, the default: the n′ ∈ (0, ∞] that minimises the storage factor
     /// S̄ = M_x M_z of the fitted map, the product of the frustum's maximum errors, which is the
     /// texel count a map needs for a given maximum error (Lloyd 2006 §4.2)
-    /// ([`crate::build::minimax::minimax_n_prime`]). n′ = ∞ is a candidate, so it is never worse
+    /// ([`crate::maps::minimax::minimax_n_prime`]). n′ = ∞ is a candidate, so it is never worse
     /// than [`WarpRule::Uniform`].
     #[default]
     Minimax,
     /// The n′ ∈ (0, ∞] that minimises the maximum z error M_z alone, found exactly
-    /// ([`crate::build::minimax::minimax_mz_n_prime`]). With the light overhead it is
+    /// ([`crate::maps::minimax::minimax_mz_n_prime`]). With the light overhead it is
     /// n + √(f n); for grazing lights it can lose up to ≈ 19 % of S̄ against the uniform map,
     /// which is why [`WarpRule::Minimax`] minimises S̄ instead.
     MinimaxMz,
@@ -240,7 +241,7 @@ impl FrustumInLight {
 /// returned wrong).
 ///
 /// ```
-/// # use shadow_aliasing::build::{fit_warp, light_space};
+/// # use shadow_aliasing::maps::{fit_warp, light_space};
 /// # use shadow_aliasing::{NPrime, ViewFrustum};
 /// # use glam::{DVec3, DVec4};
 /// let view = ViewFrustum::new(1.0, 20.0, 0.5)?;
@@ -317,29 +318,6 @@ pub(crate) fn verify_clip<'a>(m: &DMat4, points: impl Iterator<Item = &'a DVec3>
         }
     }
     Ok(())
-}
-
-/// `min(a, b)` for values that are never NaN (finite corner coordinates): one `minsd`, where
-/// `f64::min`'s NaN handling costs three more instructions on x86-64, in loops that run 8 to 40
-/// times per map. Equal to `a.min(b)` whenever neither is NaN (a NaN `b` is returned, so it is not
-/// silently dropped either).
-#[inline(always)]
-pub(crate) fn fmin(a: f64, b: f64) -> f64 {
-    if a < b {
-        a
-    } else {
-        b
-    }
-}
-
-/// `max(a, b)` for values that are never NaN; see [`fmin`].
-#[inline(always)]
-pub(crate) fn fmax(a: f64, b: f64) -> f64 {
-    if a > b {
-        a
-    } else {
-        b
-    }
 }
 
 /// Running min/max of u = x/w and v = y/w.
@@ -432,7 +410,7 @@ fn bad_n_prime(v: f64) -> Error {
 }
 
 /// The shadow matrix of `rule` for the whole view frustum and a light travelling along
-/// `light_dir` (eye space): the light space of [`light_space`](crate::build::light_space) with the view direction as axis,
+/// `light_dir` (eye space): the light space of [`light_space`](crate::maps::light_space) with the view direction as axis,
 /// n′ from [`n_prime_for`], the warp fitted to the eight corners by [`fit_warp`]. No heap
 /// allocation.
 ///
@@ -443,7 +421,7 @@ fn bad_n_prime(v: f64) -> Error {
 /// to land in the clip volume; in practice from f/n ≈ 10¹⁵ for PSM, ≈ 10³⁰ for LiSPSM).
 ///
 /// ```
-/// # use shadow_aliasing::build::{warp, WarpRule};
+/// # use shadow_aliasing::maps::{warp, WarpRule};
 /// # use shadow_aliasing::measure::frustum_max;
 /// # use shadow_aliasing::ViewFrustum;
 /// # use glam::DVec3;
@@ -582,9 +560,6 @@ fn clip_ok_at_corners(m: &DMat4, corners: &[DVec3; 8]) -> bool {
     ok
 }
 
-/// How far outside the clip volume rounding may put a point: 10⁻⁶ of its half-width.
-pub(crate) const CLIP_SLACK: f64 = 1e-6;
-
 /// `h` (OpenGL depth) inside the clip volume, within [`CLIP_SLACK`], with w ∈ [1/2, ∞) finite
 /// (an infinite w would admit infinite x, y, z).
 #[inline(always)]
@@ -607,7 +582,7 @@ fn in_unit_depth(z01: f64, w: f64) -> bool {
 /// As [`warp`].
 ///
 /// ```
-/// # use shadow_aliasing::build::{n_prime_for, WarpRule};
+/// # use shadow_aliasing::maps::{n_prime_for, WarpRule};
 /// # use shadow_aliasing::{NPrime, ViewFrustum};
 /// # use glam::DVec3;
 /// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;

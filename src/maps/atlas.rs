@@ -31,7 +31,7 @@
 //! texture (and, with `s = (x/w + 1)/2`, `t = (y/w + 1)/2`, samples it there).
 //!
 //! ```
-//! use shadow_aliasing::build::atlas::{layout, AtlasEntry};
+//! use shadow_aliasing::maps::atlas::{layout, AtlasEntry};
 //! let entries = [
 //!     AtlasEntry { group: 0, max_mx: 1.0, max_mz: 3.0 },
 //!     AtlasEntry { group: 0, max_mx: 1.0, max_mz: 1.0 },
@@ -68,7 +68,7 @@ pub const MAX_ATLAS_ENTRIES: usize = 4 * MAX_PARTITIONS + 1;
 /// when it is 0.
 ///
 /// ```
-/// # use shadow_aliasing::build::atlas::allocate_texels;
+/// # use shadow_aliasing::maps::atlas::allocate_texels;
 /// let mut out = [0u32; 3];
 /// allocate_texels(&[1.0, 1.0, 1.0], 100, &mut out)?;
 /// assert_eq!(out, [34, 33, 33]);

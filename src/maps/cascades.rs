@@ -31,8 +31,8 @@
 //!
 //! ```
 //! use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
-//! use shadow_aliasing::build::cascades::cascades;
-//! use shadow_aliasing::build::WarpRule;
+//! use shadow_aliasing::maps::cascades::cascades;
+//! use shadow_aliasing::maps::WarpRule;
 //! use shadow_aliasing::ViewFrustum;
 //! use glam::DVec3;
 //! let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians())?;
@@ -45,11 +45,11 @@
 //! ```
 
 pub use crate::analytic::partition::{SplitScheme, Splits, MAX_PARTITIONS};
-use crate::build::warp::{warp_prepared, PreparedLight};
-use crate::build::{light_space, warp, ShadowMatrix, WarpRule};
 use crate::error::{finite_result, fmt_num, in_closed, Error, Result};
 use crate::frustum::{unit_light_dir, NPrime, ViewFrustum};
-use crate::measure::sweep::{vertex_max, VertexMax};
+use crate::maps::warp::{warp_prepared, PreparedLight};
+use crate::maps::{light_space, warp, ShadowMatrix, WarpRule};
+use crate::measure::vertex::{vertex_max, VertexMax};
 use glam::{DMat4, DVec3, DVec4};
 
 /// One z-partition: its fitted map, the depth range it covers, and its measured maximum error.
@@ -113,7 +113,7 @@ impl Cascades {
 /// [`Splits::from_planes`] when planes coincide in `f64`.
 ///
 /// ```
-/// # use shadow_aliasing::build::cascades::splits_from_fractions;
+/// # use shadow_aliasing::maps::cascades::splits_from_fractions;
 /// # use shadow_aliasing::ViewFrustum;
 /// let view = ViewFrustum::new(1.0, 101.0, 0.5)?;
 /// let s = splits_from_fractions(&view, &[0.1, 0.3])?;
@@ -281,7 +281,7 @@ impl StableCascade {
 /// As [`ViewFrustum::with_depth_range`]; [`Error::Degenerate`] when `R` overflows `f64`.
 ///
 /// ```
-/// # use shadow_aliasing::build::cascades::bounding_sphere;
+/// # use shadow_aliasing::maps::cascades::bounding_sphere;
 /// # use shadow_aliasing::ViewFrustum;
 /// // tan θ = 0.5, square: k² = 0.5; [1, 3]: c = 4 · 1.5/2 = 3 = f, R = 3 √0.5.
 /// let v = ViewFrustum::new(1.0, 3.0, 0.5f64.atan())?;
@@ -413,7 +413,7 @@ impl StableCascades {
 ///
 /// ```
 /// use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
-/// use shadow_aliasing::build::cascades::stable_cascades;
+/// use shadow_aliasing::maps::cascades::stable_cascades;
 /// use shadow_aliasing::ViewFrustum;
 /// use glam::{DMat4, DVec3};
 /// let view = ViewFrustum::new(0.5, 200.0, 0.6)?;

@@ -23,14 +23,8 @@
 
 use crate::error::{Error, Result};
 use crate::frustum::unit_light_dir;
+use crate::numeric::PARALLEL_TOLERANCE;
 use glam::{DMat4, DVec3, DVec4};
-
-/// Below this length of the axis projected perpendicular to the light (the sine of the angle
-/// between them), the projection is treated as zero and the fallback axis is used. 1e−12 is far
-/// below any angle a renderer distinguishes (2·10⁻¹⁰ degrees) and far above the rounding error of
-/// a unit vector's components (≈ 10⁻¹⁶), so the normalised projection is accurate to ≈ 10⁻⁴ in the
-/// worst case just above the threshold and exact far from it.
-pub const PARALLEL_TOLERANCE: f64 = 1e-12;
 
 /// An orthonormal, right-handed light-space frame in eye space (see the module docs).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -84,7 +78,7 @@ impl LightSpace {
 /// [`Error::InvalidArgument`] naming `light_dir` or `axis` for a zero or non-finite vector.
 ///
 /// ```
-/// # use shadow_aliasing::build::light_space;
+/// # use shadow_aliasing::maps::light_space;
 /// # use glam::DVec3;
 /// // Light straight down, view along −Z: z is the view direction, y is up.
 /// let ls = light_space(DVec3::new(0.0, -1.0, 0.0), DVec3::new(0.0, 0.0, -1.0))?;

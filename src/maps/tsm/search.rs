@@ -4,13 +4,13 @@
 use super::{Trapezoid, TsmMap, TsmSearch, SQUARE_TOLERANCE};
 use crate::analytic::tsm::tsm_eta_finite;
 use crate::analytic::tsm::EIGHTY_PERCENT_LINE;
-use crate::build::lightspace::LightSpace;
-use crate::build::matrix::ShadowMatrix;
-use crate::build::warp::{fmax, fmin};
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::NPrime;
 use crate::geom::homography::quad_to_square;
 use crate::geom::hull::convex_hull;
+use crate::maps::lightspace::LightSpace;
+use crate::maps::matrix::ShadowMatrix;
+use crate::numeric::{fmax, fmin};
 use glam::{DMat4, DVec2, DVec3, DVec4};
 
 /// Everything the construction needs, independent of how E was obtained.
@@ -299,7 +299,7 @@ impl Core<'_> {
                 "the trapezoidal map is not finite".into(),
             ));
         }
-        crate::build::warp::verify_clip(&matrix, self.points.iter())?;
+        crate::maps::warp::verify_clip(&matrix, self.points.iter())?;
         let light_depth = DVec4::new(-ls.y.x / y_h, -ls.y.y / y_h, -ls.y.z / y_h, y_m / y_h);
         let focus_area = focus_area(&analytic, hull);
         Ok(TsmMap {
@@ -446,8 +446,8 @@ fn focus_area(a: &Analytic, hull: &[DVec2]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::build::lightspace::light_space;
     use crate::frustum::ViewFrustum;
+    use crate::maps::lightspace::light_space;
 
     /// The line search's area (one division per vertex, translation- and scale-free shoelace)
     /// equals the map-then-shoelace area of `focus_area` on the same trapezoids, for lights all

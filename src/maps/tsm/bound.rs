@@ -3,10 +3,10 @@
 
 use super::search::Core;
 use super::{validate, ConvexBound, TsmMap, TsmOptions};
-use crate::build::lightspace::light_space;
 use crate::error::{Error, Result};
 use crate::frustum::ViewFrustum;
 use crate::geom::polytope::{frustum_planes, polytope_vertices};
+use crate::maps::lightspace::light_space;
 use glam::{DVec3, DVec4};
 
 /// The trapezoidal map of the part of the view frustum inside `bound` (Martin & Tan §6.4; module
@@ -16,7 +16,7 @@ use glam::{DVec3, DVec4};
 /// As [`super::tsm`]; [`Error::NoSolution`] when the bound does not meet the view frustum in a solid.
 ///
 /// ```
-/// # use shadow_aliasing::build::tsm::{tsm_general, ConvexBound, TsmOptions, TsmSearch};
+/// # use shadow_aliasing::maps::tsm::{tsm_general, ConvexBound, TsmOptions, TsmSearch};
 /// # use shadow_aliasing::ViewFrustum;
 /// # use glam::{DMat4, DVec3, DVec4};
 /// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;

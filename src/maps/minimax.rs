@@ -2,7 +2,7 @@
 //! the error's exact form in n′ rather than from the light-overhead closed form.
 //!
 //! Two objectives: the storage factor S̄ = M_x M_z ([`minimax_n_prime`], the default rule
-//! [`crate::build::WarpRule::Minimax`]) and the z error M_z alone ([`minimax_mz_n_prime`]).
+//! [`crate::maps::WarpRule::Minimax`]) and the z error M_z alone ([`minimax_mz_n_prime`]).
 //! S̄ is what a fixed texel budget buys (Lloyd 2006 §4.2: the critical-resolution map for
 //! maximum error 1 has S̄ texels), and minimising M_z alone can raise M_x enough to lose against
 //! the uniform map: for n = 1, f = 100, θ = 30°, light 12° above the horizon from behind the
@@ -11,7 +11,7 @@
 //!
 //! # M_z as a function of n′
 //!
-//! For the warp of [`crate::build::fit_warp`] the t coordinate depends only on `δ = z − z₀`, the
+//! For the warp of [`crate::maps::fit_warp`] the t coordinate depends only on `δ = z − z₀`, the
 //! light-space distance along the warp axis from where the warping frustum starts, and with unit
 //! resolutions the z error at a frustum vertex i (eye depth zᵢ, offset δᵢ, frustum extent Δ along
 //! the axis, half field of view θ) is
@@ -40,9 +40,9 @@
 //! this picks n + √(f n)). n′ = ∞ is evaluated exactly, so the result is never worse than the
 //! uniform map.
 
-use crate::build::warp::FrustumInLight;
 use crate::error::{finite_result, fmt_num, Error, Result};
 use crate::frustum::{NPrime, ViewFrustum};
+use crate::maps::warp::FrustumInLight;
 use glam::DVec3;
 
 /// A chosen n′ and the frustum maximum it achieves.
@@ -291,7 +291,7 @@ pub(crate) fn min_storage(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
 /// [`crate::Error::Degenerate`] when the maxima or S̄ of the optimum overflow or underflow `f64`.
 ///
 /// ```
-/// # use shadow_aliasing::build::minimax::minimax_mz_n_prime;
+/// # use shadow_aliasing::maps::minimax::minimax_mz_n_prime;
 /// # use shadow_aliasing::{NPrime, ViewFrustum};
 /// # use glam::DVec3;
 /// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;
@@ -336,7 +336,7 @@ fn checked(o: Optimum) -> Result<Optimum> {
 /// [`crate::Error::Degenerate`] when the maxima or S̄ of the optimum overflow or underflow `f64`.
 ///
 /// ```
-/// # use shadow_aliasing::build::minimax::minimax_n_prime;
+/// # use shadow_aliasing::maps::minimax::minimax_n_prime;
 /// # use shadow_aliasing::ViewFrustum;
 /// # use glam::DVec3;
 /// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;

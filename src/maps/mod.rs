@@ -12,7 +12,7 @@
 //!   Filament, OGRE, and the crate's minimax).
 //!
 //! ```
-//! use shadow_aliasing::build::{warp, ClipDepth, WarpRule};
+//! use shadow_aliasing::maps::{warp, ClipDepth, WarpRule};
 //! use shadow_aliasing::measure::frustum_max;
 //! use shadow_aliasing::ViewFrustum;
 //! use glam::DVec3;
@@ -31,7 +31,6 @@ pub mod faces;
 pub mod lightspace;
 pub mod matrix;
 pub mod minimax;
-pub mod scheme;
 pub mod tsm;
 pub mod uniform;
 pub mod warp;
