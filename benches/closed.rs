@@ -15,7 +15,7 @@ use std::hint::black_box as bb;
 
 fn closed(c: &mut Criterion) {
     let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
-    let np = NPrime::Finite(11.0);
+    let np = NPrime::finite(11.0).unwrap();
     let res = Resolutions::default();
     let gamma = LightAngle::new(60f64.to_radians()).unwrap();
     let (n, f, z) = (1.0, 100.0, 7.5);
@@ -52,10 +52,10 @@ fn closed(c: &mut Criterion) {
     });
     // Lloyd 2005 (Eq 3–9).
     g.bench_function("distribution_g", |b| {
-        b.iter(|| subdivided::distribution_g(bb(100.0), bb(NPrime::Finite(11.0)), bb(z)))
+        b.iter(|| subdivided::distribution_g(bb(100.0), bb(NPrime::finite(11.0).unwrap()), bb(z)))
     });
     g.bench_function("xi_from_n", |b| {
-        b.iter(|| subdivided::xi_from_n(bb(100.0), bb(NPrime::Finite(11.0))))
+        b.iter(|| subdivided::xi_from_n(bb(100.0), bb(NPrime::finite(11.0).unwrap())))
     });
     g.bench_function("subdivided_max_error", |b| {
         b.iter(|| {

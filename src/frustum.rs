@@ -257,44 +257,110 @@ fn far_not_beyond_near(near: f64, far: f64) -> Error {
 
 /// The warp parameter n′: the distance from the warping frustum's centre of projection to the
 /// plane where the warping frustum starts (Lloyd 2006 Fig 3; Lloyd 2005's n with near = 1;
-/// Zhang's λ). [`NPrime::Unwarped`] is the orthographic (unwarped) map, n′ = ∞, represented
+/// Zhang's λ). [`NPrime::UNWARPED`] is the orthographic (unwarped) map, n′ = ∞, represented
 /// explicitly so that no function returns an infinite `f64`.
+///
+/// The payload is private: every `NPrime` holds a positive n′, finite or ∞ (never NaN, zero,
+/// negative or −∞), so functions that take one do not check it again.
+///
+/// ```
+/// # use shadow_aliasing::NPrime;
+/// let n = NPrime::finite(11.0)?;
+/// assert_eq!(n.as_finite(), Some(11.0));
+/// assert_eq!(NPrime::new(f64::INFINITY)?, NPrime::UNWARPED);
+/// assert_eq!(NPrime::UNWARPED.as_finite(), None);
+/// assert!(NPrime::finite(0.0).is_err() && NPrime::finite(f64::INFINITY).is_err());
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum NPrime {
-    /// A finite, positive n′.
-    Finite(f64),
-    /// n′ = ∞: an orthographic, unwarped shadow map.
-    Unwarped,
-}
+pub struct NPrime(f64);
 
 impl NPrime {
-    /// Validates a finite n′ > 0, or maps `f64::INFINITY` to [`NPrime::Unwarped`].
+    /// n′ = ∞: an orthographic, unwarped shadow map.
+    pub const UNWARPED: Self = Self(f64::INFINITY);
+
+    /// Validates a finite n′ > 0, or maps `f64::INFINITY` to [`NPrime::UNWARPED`].
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] naming `n_prime` for NaN, −∞ or n′ ≤ 0.
     pub fn new(n_prime: f64) -> Result<Self> {
+        Self::named("n_prime", n_prime)
+    }
+
+    /// [`NPrime::new`] with the error naming `name` (Zhang's `lambda`, Lloyd 2005's `n_warp`).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `name` for NaN, −∞ or n′ ≤ 0.
+    pub fn named(name: &'static str, n_prime: f64) -> Result<Self> {
         if n_prime == f64::INFINITY {
-            Ok(NPrime::Unwarped)
+            Ok(Self::UNWARPED)
         } else {
-            positive("n_prime", n_prime).map(NPrime::Finite)
+            positive(name, n_prime).map(Self)
         }
     }
 
-    /// n′ as an `f64`, `f64::INFINITY` for [`NPrime::Unwarped`].
+    /// Validates a finite n′ > 0 (a warped map).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `n_prime` unless n′ is finite and positive.
+    pub fn finite(n_prime: f64) -> Result<Self> {
+        positive("n_prime", n_prime).map(Self)
+    }
+
+    /// A finite n′ > 0 computed inside the crate from validated inputs (LiSPSM's n + √(f n) of a
+    /// [`ViewFrustum`], which its domain keeps finite and positive): no check in release builds.
+    #[inline]
+    pub(crate) fn finite_unchecked(n_prime: f64) -> Self {
+        debug_assert!(n_prime.is_finite() && n_prime > 0.0, "n′ = {n_prime}");
+        Self(n_prime)
+    }
+
+    /// A computed n′: itself when finite and positive, [`NPrime::UNWARPED`] otherwise (an
+    /// overflow to ∞, or a rule with no finite answer, is the orthographic limit).
+    #[inline]
+    pub(crate) fn finite_or_unwarped(n_prime: f64) -> Self {
+        Self::try_finite(n_prime).unwrap_or(Self::UNWARPED)
+    }
+
+    /// `Some(n′)` for a finite n′ > 0, `None` for a computed value that is not one: NaN, ≤ 0, or
+    /// ∞ (use [`NPrime::new`] to map ∞ to [`NPrime::UNWARPED`]).
+    #[inline]
+    #[must_use]
+    pub fn try_finite(n_prime: f64) -> Option<Self> {
+        (n_prime.is_finite() && n_prime > 0.0).then_some(Self(n_prime))
+    }
+
+    /// n′ as an `f64`, `f64::INFINITY` for [`NPrime::UNWARPED`].
     #[inline]
     #[must_use]
     pub fn value(self) -> f64 {
-        match self {
-            NPrime::Finite(v) => v,
-            NPrime::Unwarped => f64::INFINITY,
+        self.0
+    }
+
+    /// n′ when it is finite, `None` for [`NPrime::UNWARPED`].
+    #[inline]
+    #[must_use]
+    pub fn as_finite(self) -> Option<f64> {
+        if self.0.is_finite() {
+            Some(self.0)
+        } else {
+            None
         }
+    }
+
+    /// 1/n′, exactly 0 for [`NPrime::UNWARPED`] (the warp written in 1/n′ tends continuously to
+    /// the orthographic map).
+    #[inline]
+    #[must_use]
+    pub fn recip(self) -> f64 {
+        1.0 / self.0
     }
 
     /// Whether this is the unwarped (orthographic) map.
     #[inline]
     #[must_use]
     pub fn is_unwarped(self) -> bool {
-        matches!(self, NPrime::Unwarped)
+        self.0 == f64::INFINITY
     }
 }
 
@@ -370,10 +436,14 @@ impl LightAngle {
     /// # Errors
     /// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector.
     pub fn from_light_dir(light_dir: DVec3) -> Result<Self> {
-        let l = unit_light_dir(light_dir)?;
+        LightDir::new(light_dir).map(Self::from_unit)
+    }
+    /// [`LightAngle::from_light_dir`] for a direction already validated.
+    #[must_use]
+    pub fn from_unit(light_dir: LightDir) -> Self {
         // |cos| of the angle between the line of the light and the view axis.
-        let c = l.z.abs().min(1.0);
-        Ok(Self(c.acos()))
+        let c = light_dir.as_dvec3().z.abs().min(1.0);
+        Self(c.acos())
     }
     /// γ in radians.
     #[inline]
@@ -383,24 +453,71 @@ impl LightAngle {
     }
 }
 
-/// Normalises an eye-space light direction: any finite, non-zero vector, however large or small
-/// its components (`(1e308, 1e308, 1e308)` and `(1e-320, 0, 0)` included).
+/// A unit light direction (the direction light travels), validated and normalised once: every
+/// builder normalises its `DVec3` argument into one at its entry and passes this type inside, so
+/// that no direction is normalised twice.
 ///
-/// # Errors
-/// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector.
-#[inline]
-pub fn unit_light_dir(light_dir: DVec3) -> Result<DVec3> {
-    let len2 = light_dir.length_squared();
-    if len2 > 1e-290 && len2 < 1e290 {
-        // No square overflows, and none that underflows matters: l / |l| directly, the same
-        // bits as before (glam's `length` is this square root).
-        Ok(light_dir / len2.sqrt())
-    } else {
-        scaled_unit_light_dir(light_dir)
+/// ```
+/// # use shadow_aliasing::frustum::LightDir;
+/// # use glam::DVec3;
+/// let l = LightDir::new(DVec3::new(0.0, -2.0, 0.0))?;
+/// assert_eq!(l.as_dvec3(), DVec3::NEG_Y);
+/// assert!(LightDir::new(DVec3::ZERO).is_err());
+/// # Ok::<(), shadow_aliasing::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LightDir(DVec3);
+
+impl LightDir {
+    /// Normalises a light direction: any finite, non-zero vector, however large or small its
+    /// components (`(1e308, 1e308, 1e308)` and `(1e-320, 0, 0)` included).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector.
+    #[inline]
+    pub fn new(light_dir: DVec3) -> Result<Self> {
+        let len2 = light_dir.length_squared();
+        if len2 > 1e-290 && len2 < 1e290 {
+            // No square overflows, and none that underflows matters: l / |l| directly, the same
+            // bits as before (glam's `length` is this square root).
+            Ok(Self(light_dir / len2.sqrt()))
+        } else {
+            scaled_unit_light_dir(light_dir).map(Self)
+        }
+    }
+
+    /// [`LightDir::new`] with the error naming `name` (`light_dir_world` for a world-space light).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `name` for a zero or non-finite vector.
+    #[inline]
+    pub fn named(name: &'static str, light_dir: DVec3) -> Result<Self> {
+        Self::new(light_dir).map_err(|e| match e {
+            Error::InvalidArgument { reason, .. } => Error::InvalidArgument { name, reason },
+            other => other,
+        })
+    }
+
+    /// A vector the crate has already normalised (a light space's −y): no check in release
+    /// builds.
+    #[inline]
+    pub(crate) fn from_unit_unchecked(unit: DVec3) -> Self {
+        debug_assert!(
+            unit.is_finite() && (unit.length() - 1.0).abs() < 1e-12,
+            "{unit}"
+        );
+        Self(unit)
+    }
+
+    /// The unit vector.
+    #[inline]
+    #[must_use]
+    pub fn as_dvec3(self) -> DVec3 {
+        self.0
     }
 }
 
-/// [`unit_light_dir`] for a vector whose squared length overflows or underflows (or is not
+/// [`LightDir::new`] for a vector whose squared length overflows or underflows (or is not
 /// finite): scaled by its largest |component| first, so that the squares lie in [0, 3].
 #[cold]
 #[inline(never)]
@@ -463,7 +580,11 @@ mod tests {
 
     #[test]
     fn n_prime_and_angles() {
-        assert_eq!(NPrime::new(f64::INFINITY), Ok(NPrime::Unwarped));
+        assert_eq!(NPrime::new(f64::INFINITY), Ok(NPrime::UNWARPED));
+        assert!(NPrime::finite(f64::INFINITY).is_err());
+        assert!(NPrime::new(f64::NEG_INFINITY).is_err());
+        assert_eq!(NPrime::UNWARPED.recip(), 0.0);
+        assert_eq!(NPrime::try_finite(-1.0), None);
         assert!(NPrime::new(f64::NAN).is_err());
         assert!(NPrime::new(0.0).is_err());
         let g = LightAngle::from_light_dir(DVec3::new(0.0, -1.0, 0.0)).unwrap();

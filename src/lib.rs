@@ -51,7 +51,7 @@
 //!
 //! let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians())?;
 //! // Closed form: LiSPSM's storage factor for the light overhead (Lloyd 2006 Eq 12).
-//! let n_prime = NPrime::Finite(view.n_prime_lispsm());
+//! let n_prime = NPrime::finite(view.n_prime_lispsm())?;
 //! let predicted = overhead::storage_factor(&view, n_prime)?;
 //! // The same map built as a matrix, and its error measured from exact derivatives.
 //! let light = DVec3::new(0.0, -1.0, 0.0);
@@ -88,7 +88,7 @@ pub mod plot;
 pub mod scheme;
 
 pub use error::{Error, Result};
-pub use frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};
+pub use frustum::{LightAngle, LightDir, NPrime, Resolutions, ViewFrustum};
 
 /// The README's Rust example, compiled and run as a doc-test by `cargo test` in every feature
 /// set, so that the README cannot drift from the API.

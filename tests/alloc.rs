@@ -166,6 +166,6 @@ fn atlas_layout_does_not_allocate() {
             n += 1;
         }
         let atlas = layout(4096, 4096, &entries[..n]).unwrap();
-        black_box(atlas.compose(0, &faces.iter().next().unwrap().shadow.matrix));
+        black_box(atlas.compose(0, &faces.iter().next().unwrap().shadow.matrix()));
     });
 }

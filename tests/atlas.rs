@@ -186,7 +186,7 @@ fn composed_matrices_map_into_their_viewports() {
         let atlas = layout(4096, 4096, &entries).unwrap();
         for (i, p) in parts.iter().enumerate() {
             let v = atlas.viewports()[i];
-            let m = atlas.compose(i, &p.shadow.matrix).unwrap();
+            let m = atlas.compose(i, &p.shadow.matrix()).unwrap();
             let (x0, x1) = (
                 -1.0 + 2.0 * f64::from(v.x) / 4096.0,
                 -1.0 + 2.0 * f64::from(v.x + v.width) / 4096.0,
@@ -197,7 +197,7 @@ fn composed_matrices_map_into_their_viewports() {
             );
             for q in p.vertices {
                 let c = clip(&m, q);
-                let own = clip(&p.shadow.matrix, q);
+                let own = clip(&p.shadow.matrix(), q);
                 assert!(
                     c.x >= x0 - 1e-9 && c.x <= x1 + 1e-9,
                     "{c} not in [{x0}, {x1}]"

@@ -77,7 +77,7 @@ proptest! {
         prop_assume!(c.gamma > 1e-6);
         let g = LightAngle::new(c.gamma).unwrap();
         let p = DVec3::new(0.0, 0.0, -c.z);
-        for np in [NPrime::Finite(c.n_prime), NPrime::Unwarped] {
+        for np in [NPrime::finite(c.n_prime).unwrap(), NPrime::UNWARPED] {
             let closed = tilted_mz(&c.view, np, g, c.z, c.res).unwrap();
             for side in [TiltSide::InFront, TiltSide::Behind] {
                 let w = tilted_warp(&c.view, g, side, np).unwrap();
@@ -92,7 +92,7 @@ proptest! {
     #[test]
     fn eq12_times_sin_gamma_is_the_perpendicular_measurement(c in config()) {
         let g = LightAngle::new(c.gamma).unwrap();
-        let np = NPrime::Finite(c.n_prime);
+        let np = NPrime::finite(c.n_prime).unwrap();
         let perp = tilted_mz_perpendicular(&c.view, np, g, c.z, c.res).unwrap();
         let w = tilted_warp(&c.view, g, TiltSide::Behind, np).unwrap();
         let m = point_error(&c.view, &w.shadow, DVec3::new(0.0, 0.0, -c.z), c.res).unwrap();
@@ -112,13 +112,13 @@ proptest! {
     fn parts_match_the_twin(c in config()) {
         prop_assume!(c.gamma > 1e-6);
         let g = LightAngle::new(c.gamma).unwrap();
-        let w = tilted_warp(&c.view, g, TiltSide::Behind, NPrime::Finite(c.n_prime)).unwrap();
+        let w = tilted_warp(&c.view, g, TiltSide::Behind, NPrime::finite(c.n_prime).unwrap()).unwrap();
         let psi = tilted_psi(&c.view, c.n_prime, g, c.z).unwrap();
         let zp = DVec3::new(0.0, 0.0, -c.z).dot(w.warp_axis) - w.z_min + c.n_prime;
         prop_assert!(rel(psi, zp) < 1e-9);
         prop_assert!(rel(warp_depth_range(&c.view, g).unwrap(), w.depth_range) < 1e-9);
         let xi = tilted_xi(&c.view, c.n_prime, g, c.res).unwrap();
-        let m = tilted_mz(&c.view, NPrime::Finite(c.n_prime), g, c.z, c.res).unwrap();
+        let m = tilted_mz(&c.view, NPrime::finite(c.n_prime).unwrap(), g, c.z, c.res).unwrap();
         prop_assert!(rel(xi * psi * psi / c.z, m) < 1e-12);
     }
 
@@ -132,7 +132,7 @@ proptest! {
     ) {
         let gammas = [LightAngle::new(g).ok(), LightAngle::new(c.gamma).ok()];
         for gamma in gammas.into_iter().flatten() {
-            for n_prime in [NPrime::Finite(np), NPrime::new(np).unwrap_or(NPrime::Unwarped)] {
+            for n_prime in [NPrime::finite(np).ok(), Some(NPrime::new(np).unwrap_or(NPrime::UNWARPED))].into_iter().flatten() {
                 for zz in [z, c.z] {
                     for v in [
                         tilted_mz(&c.view, n_prime, gamma, zz, c.res),
@@ -148,11 +148,11 @@ prop_assert!(v.is_finite());
                 }
             }
             for fo in [Falloff::Zhang, Falloff::Barroso] {
-                if let NPrime::Finite(v) = generalized_n_prime(&c.view, gamma, fo) {
+                if let Some(v) = generalized_n_prime(&c.view, gamma, fo).as_finite() {
                     prop_assert!(v.is_finite() && v > 0.0);
                 }
             }
-            if let NPrime::Finite(v) = n_prime_axis_minimax(&c.view, gamma) {
+            if let Some(v) = n_prime_axis_minimax(&c.view, gamma).as_finite() {
                 prop_assert!(v.is_finite() && v > 0.0);
             }
         }
@@ -165,7 +165,7 @@ prop_assert!(v.is_finite());
         let up = LightAngle::new(FRAC_PI_2).unwrap();
         prop_assert!(rel(n_prime_1(&c.view, up).unwrap(), n + (f * n).sqrt()) < 1e-12);
         let np = c.n_prime.max(n);
-        let m = tilted_mz(&c.view, NPrime::Finite(np), up, c.z, c.res).unwrap();
+        let m = tilted_mz(&c.view, NPrime::finite(np).unwrap(), up, c.z, c.res).unwrap();
         prop_assert!(rel(m, lloyd_eq8(n, f, c.view.tan_half_fov(), np, c.z, c.res)) < 1e-12);
     }
 
@@ -176,15 +176,15 @@ prop_assert!(v.is_finite());
     fn eq13_equalises_near_and_far_on_the_twin(c in config()) {
         prop_assume!(c.gamma > 1e-3);
         let g = LightAngle::new(c.gamma).unwrap();
-        let np = match n_prime_equal_error(&c.view, g) {
-            Ok(NPrime::Finite(v)) => v,
-            Ok(NPrime::Unwarped) => unreachable!(),
+        let np = match n_prime_equal_error(&c.view, g).map(NPrime::as_finite) {
+            Ok(Some(v)) => v,
+            Ok(None) => unreachable!(),
             Err(Error::NoSolution(_)) => return Ok(()),
             Err(e) => return Err(TestCaseError::fail(e.to_string())),
         };
         let v = &c.view;
         let at = |np: f64, z: f64| {
-            let w = tilted_warp(v, g, TiltSide::Behind, NPrime::Finite(np)).unwrap();
+            let w = tilted_warp(v, g, TiltSide::Behind, NPrime::finite(np).unwrap()).unwrap();
             mz_along_view_axis(v, &w.shadow, DVec3::new(0.0, 0.0, -z), Resolutions::default()).unwrap()
         };
         let (mn, mf) = (at(np, v.near()), at(np, v.far()));
@@ -214,12 +214,12 @@ prop_assert!(v.is_finite());
         };
         let opt = n_prime_axis_minimax(v, g);
         let best = max_at(opt);
-        if let NPrime::Finite(o) = opt {
+        if let Some(o) = opt.as_finite() {
             for k in [0.9, 0.99, 1.01, 1.1] {
-                prop_assert!(max_at(NPrime::Finite(o * k)) >= best * (1.0 - 1e-12));
+                prop_assert!(max_at(NPrime::finite(o * k).unwrap()) >= best * (1.0 - 1e-12));
             }
         }
-        prop_assert!(max_at(NPrime::Unwarped) >= best * (1.0 - 1e-12));
+        prop_assert!(max_at(NPrime::UNWARPED) >= best * (1.0 - 1e-12));
     }
 
     /// The fall-offs r(γ) (Eq 17, 18) rise from 0 at γ = 0 to 1 at γ_lim, and Eq 18 lies below
@@ -242,7 +242,7 @@ prop_assert!(v.is_finite());
             prop_assert!(v.value() >= at_lim * (1.0 - 1e-12));
             let above = gl + (FRAC_PI_2 - gl) * u;
             let g = LightAngle::new(above).unwrap();
-            prop_assert_eq!(generalized_n_prime(&c.view, g, fo), NPrime::Finite(n_prime_1(&c.view, g).unwrap()));
+            prop_assert_eq!(generalized_n_prime(&c.view, g, fo), NPrime::finite(n_prime_1(&c.view, g).unwrap()).unwrap());
         }
     }
 }
@@ -260,7 +260,7 @@ fn gamma_lim_is_where_near_and_far_faces_meet() {
             &view,
             LightAngle::new(gl).unwrap(),
             TiltSide::Behind,
-            NPrime::Unwarped,
+            NPrime::UNWARPED,
         )
         .unwrap();
         let c = view.corners();
@@ -320,7 +320,7 @@ fn figure_7_shape() {
     }
     assert_eq!(
         generalized_n_prime(&view, at(0.0), Falloff::Barroso),
-        NPrime::Unwarped
+        NPrime::UNWARPED
     );
 }
 
@@ -334,13 +334,20 @@ fn eq12_is_along_the_view_axis_not_perpendicular() {
     let g = LightAngle::new(45f64.to_radians()).unwrap();
     let np = n_prime_1(&view, g).unwrap();
     assert!((np - 7.370).abs() < 1e-3);
-    let w = tilted_warp(&view, g, TiltSide::Behind, NPrime::Finite(np)).unwrap();
+    let w = tilted_warp(&view, g, TiltSide::Behind, NPrime::finite(np).unwrap()).unwrap();
     let p = DVec3::new(0.0, 0.0, -1.0);
     let perp = point_error(&view, &w.shadow, p, Resolutions::default())
         .unwrap()
         .mz;
     let along = mz_along_view_axis(&view, &w.shadow, p, Resolutions::default()).unwrap();
-    let eq12 = tilted_mz(&view, NPrime::Finite(np), g, 1.0, Resolutions::default()).unwrap();
+    let eq12 = tilted_mz(
+        &view,
+        NPrime::finite(np).unwrap(),
+        g,
+        1.0,
+        Resolutions::default(),
+    )
+    .unwrap();
     assert!((eq12 - 9.429).abs() < 1e-3, "{eq12}");
     assert!((perp - 6.6675).abs() < 1e-4, "{perp}");
     assert!(rel(eq12, along) < 1e-12);
@@ -355,7 +362,7 @@ fn eq13_does_not_minimise_the_frustum_maximum() {
     let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
     let g = LightAngle::new(60f64.to_radians()).unwrap();
     let mz = |np: f64| {
-        let w = tilted_warp(&view, g, TiltSide::Behind, NPrime::Finite(np)).unwrap();
+        let w = tilted_warp(&view, g, TiltSide::Behind, NPrime::finite(np).unwrap()).unwrap();
         frustum_max(&view, &w.shadow).unwrap().max_mz
     };
     let n1 = n_prime_1(&view, g).unwrap();
@@ -374,32 +381,38 @@ fn domain_errors() {
         other => panic!("{other:?}"),
     };
     assert_eq!(
-        name(tilted_mz(&view, NPrime::Finite(0.0), g, 2.0, res)),
+        name(NPrime::finite(0.0).and_then(|n| tilted_mz(&view, n, g, 2.0, res))),
         "n_prime"
     );
     assert_eq!(
-        name(tilted_mz(&view, NPrime::Finite(f64::NAN), g, 2.0, res)),
+        name(NPrime::finite(f64::NAN).and_then(|n| tilted_mz(&view, n, g, 2.0, res))),
         "n_prime"
     );
     assert_eq!(
-        name(tilted_mz(&view, NPrime::Finite(1.0), g, 0.5, res)),
+        name(tilted_mz(&view, NPrime::finite(1.0).unwrap(), g, 0.5, res)),
         "z"
     );
     assert_eq!(
-        name(tilted_mz(&view, NPrime::Finite(1.0), g, f64::NAN, res)),
+        name(tilted_mz(
+            &view,
+            NPrime::finite(1.0).unwrap(),
+            g,
+            f64::NAN,
+            res
+        )),
         "z"
     );
     let g0 = LightAngle::new(0.0).unwrap();
     assert_eq!(
-        name(tilted_mz(&view, NPrime::Unwarped, g0, 2.0, res)),
+        name(tilted_mz(&view, NPrime::UNWARPED, g0, 2.0, res)),
         "light_angle"
     );
     assert_eq!(name(tilted_xi(&view, 1.0, g0, res)), "light_angle");
     assert_eq!(name(tilted_psi(&view, -1.0, g, 2.0)), "n_prime");
     // Perpendicular m_z is finite at γ = 0 and equals the twin there.
-    let w = tilted_warp(&view, g0, TiltSide::Behind, NPrime::Finite(3.0)).unwrap();
+    let w = tilted_warp(&view, g0, TiltSide::Behind, NPrime::finite(3.0).unwrap()).unwrap();
     let m = point_error(&view, &w.shadow, DVec3::new(0.0, 0.0, -7.0), res).unwrap();
-    let c = tilted_mz_perpendicular(&view, NPrime::Finite(3.0), g0, 7.0, res).unwrap();
+    let c = tilted_mz_perpendicular(&view, NPrime::finite(3.0).unwrap(), g0, 7.0, res).unwrap();
     assert!(rel(c, m.mz) < 1e-12);
     assert!(mz_along_view_axis(&view, &w.shadow, DVec3::new(0.0, 0.0, -7.0), res).is_err());
 }
@@ -430,9 +443,9 @@ fn eq13_is_not_always_the_minimax() {
     let n2 = n_prime_2(&view, g).unwrap();
     assert!((n2 - 0.6649).abs() < 1e-4);
     assert!(
-        (max_at(g, NPrime::Finite(n2)) - 73.51).abs() < 1e-2,
+        (max_at(g, NPrime::finite(n2).unwrap()) - 73.51).abs() < 1e-2,
         "{}",
-        max_at(g, NPrime::Finite(n2))
+        max_at(g, NPrime::finite(n2).unwrap())
     );
     let opt = n_prime_axis_minimax(&view, g);
     assert!((opt.value() - 4.9349).abs() < 1e-4, "{}", opt.value());
@@ -443,9 +456,9 @@ fn eq13_is_not_always_the_minimax() {
     assert!((opt.value() - 32.68).abs() < 1e-2);
     assert!((max_at(g, opt) - 167.73).abs() < 1e-2, "{}", max_at(g, opt));
     assert!(
-        (max_at(g, NPrime::Unwarped) - 274.75).abs() < 1e-2,
+        (max_at(g, NPrime::UNWARPED) - 274.75).abs() < 1e-2,
         "{}",
-        max_at(g, NPrime::Unwarped)
+        max_at(g, NPrime::UNWARPED)
     );
     // Marginally on the n′₁ branch too, for a wide field of view: n = 1, f = 2, φ = 1.2,
     // γ = 1.25: 0.50535 at n′₁ = 1.480, 0.50519 at n′* = 1.559.
@@ -459,7 +472,7 @@ fn eq13_is_not_always_the_minimax() {
     };
     let (n1, opt) = (n_prime_1(&wide, g).unwrap(), n_prime_axis_minimax(&wide, g));
     assert!((n1 - 1.480).abs() < 1e-3 && (opt.value() - 1.559).abs() < 1e-3);
-    assert!((m(NPrime::Finite(n1)) - 0.50535).abs() < 1e-5);
+    assert!((m(NPrime::finite(n1).unwrap()) - 0.50535).abs() < 1e-5);
     assert!((m(opt) - 0.50519).abs() < 1e-5);
 }
 
@@ -501,9 +514,9 @@ fn errata_s2_4_partition_error_not_proportional_to_ratio() {
     let measure = |n: f64, f: f64, warped: bool| {
         let v = ViewFrustum::new(n, f, th).unwrap();
         let np = if warped {
-            NPrime::Finite(v.n_prime_lispsm())
+            NPrime::finite(v.n_prime_lispsm()).unwrap()
         } else {
-            NPrime::Unwarped
+            NPrime::UNWARPED
         };
         frustum_max(&v, &overhead_map(&v, np).unwrap()).unwrap()
     };
@@ -541,7 +554,7 @@ fn errata_s2_4_partition_error_not_proportional_to_ratio() {
 #[test]
 fn errata_eq13_n_prime_below_near_is_right() {
     let axis_max = |v: &ViewFrustum, g: LightAngle, np: f64| {
-        let w = tilted_warp(v, g, TiltSide::InFront, NPrime::Finite(np)).unwrap();
+        let w = tilted_warp(v, g, TiltSide::InFront, NPrime::finite(np).unwrap()).unwrap();
         let at = |z: f64| {
             mz_along_view_axis(
                 v,
@@ -562,8 +575,11 @@ fn errata_eq13_n_prime_below_near_is_right() {
         let g = LightAngle::new(gamma.to_radians()).unwrap();
         let n1 = n_prime_1(&v, g).unwrap();
         assert!((n1 - n1_expect).abs() < 1e-4 && n1 < v.near(), "{n1}");
-        assert_eq!(n_prime_equal_error(&v, g).unwrap(), NPrime::Finite(n1));
-        assert_eq!(n_prime_axis_minimax(&v, g), NPrime::Finite(n1));
+        assert_eq!(
+            n_prime_equal_error(&v, g).unwrap(),
+            NPrime::finite(n1).unwrap()
+        );
+        assert_eq!(n_prime_axis_minimax(&v, g), NPrime::finite(n1).unwrap());
         let (a, b) = axis_max(&v, g, n1);
         assert!(rel(a, b) < 1e-9, "{a} {b}");
         assert!(rel(a, at_n1) < 5e-5, "{a}");

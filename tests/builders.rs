@@ -89,7 +89,7 @@ fn check_all_rules(view: &ViewFrustum, l: DVec3) {
         .unwrap_or_else(|e| panic!("TSM {l}: {e}"));
         for c in view.corners() {
             assert_in_clip(
-                &t.shadow.matrix,
+                &t.shadow.matrix(),
                 c,
                 -1.0,
                 &format!("TSM {search:?} light {l}"),
@@ -99,9 +99,9 @@ fn check_all_rules(view: &ViewFrustum, l: DVec3) {
     for r in ALL_RULES {
         let r = rule_for(view, r);
         let s = warp(view, l, r).unwrap_or_else(|e| panic!("{r:?} {l}: {e}"));
-        assert!(s.matrix.is_finite(), "{r:?}");
+        assert!(s.matrix().is_finite(), "{r:?}");
         for c in view.corners() {
-            assert_in_clip(&s.matrix, c, -1.0, &format!("{r:?} light {l}"));
+            assert_in_clip(&s.matrix(), c, -1.0, &format!("{r:?} light {l}"));
             let z01 = s.with_clip_depth(ClipDepth::ZeroToOne);
             assert_in_clip(&z01, c, 0.0, &format!("{r:?} [0,1] light {l}"));
         }
@@ -110,7 +110,7 @@ fn check_all_rules(view: &ViewFrustum, l: DVec3) {
         let enc = with_casters(view, l, r, &casters, CasterDepth::Enclose)
             .unwrap_or_else(|e| panic!("{r:?} casters {l}: {e}"));
         for c in view.corners().iter().chain(casters.iter()) {
-            assert_in_clip(&enc.matrix, *c, -1.0, &format!("{r:?} enclose light {l}"));
+            assert_in_clip(&enc.matrix(), *c, -1.0, &format!("{r:?} enclose light {l}"));
         }
     }
 }
@@ -197,7 +197,7 @@ proptest! {
         let view = ViewFrustum::new(n, f, th).unwrap();
         let s = warp(&view, DVec3::NEG_Y, WarpRule::Eta(eta)).unwrap();
         let np = lloyd_n_prime(n, f, eta);
-        prop_assert!((s.n_prime.value() - np).abs() <= 1e-12 * np);
+        prop_assert!((s.n_prime().value() - np).abs() <= 1e-12 * np);
         let z = n + zf * (f - n);
         let e = point_error(&view, &s.shadow_map(), DVec3::new(0.0, 0.0, -z), Resolutions::default()).unwrap();
         let (mx, mz) = (lloyd_mx(n, f, np, z), lloyd_mz(n, f, th, np, z));
@@ -253,11 +253,11 @@ fn vertex_maxima_hold_for_tilted_lights() {
 fn warp_tends_to_uniform_as_n_prime_grows() {
     let view = ViewFrustum::new(1.0, 30.0, 0.5).unwrap();
     let ls = light_space(DVec3::new(0.2, -0.5, -0.6), DVec3::NEG_Z).unwrap();
-    let ortho = fit_warp(&view.corners(), &ls, NPrime::Unwarped).unwrap();
+    let ortho = fit_warp(&view.corners(), &ls, NPrime::UNWARPED).unwrap();
     let mut prev = f64::INFINITY;
     for k in 2..12 {
         let np = 10f64.powi(k);
-        let m = fit_warp(&view.corners(), &ls, NPrime::Finite(np)).unwrap();
+        let m = fit_warp(&view.corners(), &ls, NPrime::finite(np).unwrap()).unwrap();
         let diff = (m - ortho)
             .to_cols_array()
             .iter()
@@ -317,7 +317,7 @@ fn minimax_minimises_mz() {
         let best = warp(&view, l, WarpRule::MinimaxMz).unwrap();
         let best_mz = frustum_max(&view, &best.shadow_map()).unwrap().max_mz;
         for k in -40..=40 {
-            let np = NPrime::Finite(view.near() * 10f64.powf(k as f64 / 8.0));
+            let np = NPrime::finite(view.near() * 10f64.powf(k as f64 / 8.0)).unwrap();
             let ls = light_space(l, DVec3::NEG_Z).unwrap();
             let m = fit_warp(&view.corners(), &ls, np).unwrap();
             let sm = shadow_aliasing::measure::ShadowMap::new(m, l).unwrap();
@@ -371,11 +371,13 @@ fn invalid_inputs_are_errors() {
     let e = warp(&view, DVec3::NEG_Y, WarpRule::Tsm { focus: 100.0 }).unwrap_err();
     assert!(e.to_string().starts_with("focus "), "{e}");
     let ls = light_space(DVec3::NEG_Y, DVec3::NEG_Z).unwrap();
-    assert!(fit_warp(&[], &ls, NPrime::Unwarped).is_err());
-    assert!(fit_warp(&view.corners(), &ls, NPrime::Finite(-1.0)).is_err());
+    assert!(fit_warp(&[], &ls, NPrime::UNWARPED).is_err());
+    assert!(NPrime::finite(-1.0)
+        .and_then(|n| fit_warp(&view.corners(), &ls, n))
+        .is_err());
     // All points on one light ray: no extent across the map.
     let p = [DVec3::new(0.0, 1.0, -2.0), DVec3::new(0.0, 3.0, -2.0)];
-    assert!(fit_warp(&p, &ls, NPrime::Unwarped).is_err());
+    assert!(fit_warp(&p, &ls, NPrime::UNWARPED).is_err());
 }
 
 /// Caster bound, Lloyd 2006 §6.4: with `Clamp` the map is the frustum's and casters nearer the
@@ -405,17 +407,17 @@ fn caster_bound_clamp_and_enclose() {
             let e = with_casters(&view, l, rule, &casters, CasterDepth::Enclose).unwrap();
             assert_eq!(c, warp(&view, l, rule).unwrap());
             for p in view.corners() {
-                assert_in_clip(&c.matrix, p, -1.0, "clamp");
-                assert_in_clip(&e.matrix, p, -1.0, "enclose");
+                assert_in_clip(&c.matrix(), p, -1.0, "clamp");
+                assert_in_clip(&e.matrix(), p, -1.0, "enclose");
             }
             for p in casters {
-                assert_in_clip(&e.matrix, p, -1.0, "enclose caster");
+                assert_in_clip(&e.matrix(), p, -1.0, "enclose caster");
             }
             // A caster straight up the light ray from a frustum point, far toward the light: same
             // texel as that point, depth below the near end.
             let inside = DVec3::new(1.0, -2.0, -20.0);
             let up = inside - 500.0 * l.normalize();
-            let (a, b) = (clip(&c.matrix, inside), clip(&c.matrix, up));
+            let (a, b) = (clip(&c.matrix(), inside), clip(&c.matrix(), up));
             assert!((a.x - b.x).abs() < 1e-9 && (a.y - b.y).abs() < 1e-9);
             assert!(b.z < -1.0, "{rule:?} {l}: {b}");
             let sc = frustum_max(&view, &c.shadow_map()).unwrap().storage_factor;
@@ -525,21 +527,22 @@ proptest! {
         let view = ViewFrustum::new(n, f, fov_deg.to_radians()).unwrap();
         let (s, c) = gamma.sin_cos();
         let l = if behind { DVec3::new(0.0, -s, -c) } else { DVec3::new(0.0, -s, c) };
-        let sm = if barroso_rule {
-            warp(&view, l, WarpRule::Barroso(Falloff::Barroso)).unwrap()
+        let (map, n_prime) = if barroso_rule {
+            let sm = warp(&view, l, WarpRule::Barroso(Falloff::Barroso)).unwrap();
+            (sm.shadow_map(), sm.n_prime())
         } else {
             let ls = light_space(l, DVec3::NEG_Z).unwrap();
-            let np = NPrime::Finite(n * 10f64.powf(log_np));
+            let np = NPrime::finite(n * 10f64.powf(log_np)).unwrap();
             let m = fit_warp(&view.corners(), &ls, np).unwrap();
-            shadow_aliasing::maps::ShadowMatrix { matrix: m, light_dir: l, n_prime: np, near: n, far: f }
+            (shadow_aliasing::measure::ShadowMap::new(m, l).unwrap(), np)
         };
         let z = n + zf * (f - n);
         let g = LightAngle::new(gamma).unwrap();
-        let e = point_error(&view, &sm.shadow_map(), DVec3::new(0.0, 0.0, -z), Resolutions::default()).unwrap();
-        let b = tilted_mz_perpendicular(&view, sm.n_prime, g, z, Resolutions::default()).unwrap();
+        let e = point_error(&view, &map, DVec3::new(0.0, 0.0, -z), Resolutions::default()).unwrap();
+        let b = tilted_mz_perpendicular(&view, n_prime, g, z, Resolutions::default()).unwrap();
         prop_assert!((e.mz - b).abs() <= 1e-9 * b, "m_z {} vs Barroso {}", e.mz, b);
-        let ep = zhang_ep(&view, sm.n_prime, g, 0.0, z).unwrap();
-        let eq = zhang_eq(&view, sm.n_prime, g, 0.0, z).unwrap();
+        let ep = zhang_ep(&view, n_prime, g, 0.0, z).unwrap();
+        let eq = zhang_eq(&view, n_prime, g, 0.0, z).unwrap();
         prop_assert!((2.0 * e.mz - ep).abs() <= 1e-9 * ep, "2 m_z {} vs Zhang E_p {}", 2.0 * e.mz, ep);
         prop_assert!((2.0 * e.mx - eq).abs() <= 1e-9 * eq, "2 m_x {} vs Zhang E_q {}", 2.0 * e.mx, eq);
     }
@@ -588,7 +591,7 @@ fn engine_rules_near_parallel() {
     let above = sbar(at(0.0200001), WarpRule::Filament);
     assert_eq!(
         n_prime_for(&view, at(0.0199999), WarpRule::Filament).unwrap(),
-        NPrime::Unwarped
+        NPrime::UNWARPED
     );
     assert!((below - 9997.9998).abs() < 1e-3, "{below}");
     // sin γ = 0.0200001 is γ = 1.1459° < 1.4037°: |cos γ| ≥ 0.9997, so Filament keeps the light's
@@ -604,7 +607,7 @@ fn engine_rules_near_parallel() {
     assert!((got - nopt).abs() <= 1e-12 * nopt, "{got} vs {nopt}");
     assert!((nopt - 140.95825).abs() < 1e-5, "{nopt}");
     // The warp runs along eye x: t depends on x alone (two points differing in y and z only).
-    let m = warp(&view, at(sg), WarpRule::Filament).unwrap().matrix;
+    let m = warp(&view, at(sg), WarpRule::Filament).unwrap().matrix();
     let t = |p: DVec3| {
         let h = m * p.extend(1.0);
         h.y / h.w
@@ -662,10 +665,10 @@ proptest! {
         let l = DVec3::new(lx, ly, lz);
         let rule = rule_for(&view, ALL_RULES[rule_ix]);
         if let Ok(s) = warp(&view, l, rule) {
-            prop_assert!(s.matrix.is_finite());
-            prop_assert!(s.n_prime.value() > 0.0 && !s.n_prime.value().is_nan());
+            prop_assert!(s.matrix().is_finite());
+            prop_assert!(s.n_prime().value() > 0.0 && !s.n_prime().value().is_nan());
             for c in view.corners() {
-                let h = s.matrix * DVec4::new(c.x, c.y, c.z, 1.0);
+                let h = s.matrix() * DVec4::new(c.x, c.y, c.z, 1.0);
                 prop_assert!(h.is_finite() && h.w > 0.0, "{rule:?}: {c} → {h}");
                 prop_assert!((h.truncate() / h.w).abs().max_element() <= 1.0 + 1e-6, "{rule:?}: {c} → {}", h.truncate() / h.w);
             }
@@ -673,7 +676,7 @@ proptest! {
         let focus = 0.3 * (far - near);
         if focus.is_finite() && focus > 0.0 {
             if let Ok(t) = tsm(&view, l, TsmOptions { focus, search: TsmSearch::Iterative { map_lines: 64 } }) {
-                prop_assert!(t.shadow.matrix.is_finite() && t.light_depth.is_finite() && t.focus_area.is_finite());
+                prop_assert!(t.shadow.matrix().is_finite() && t.light_depth.is_finite() && t.focus_area.is_finite());
             }
         }
     }
@@ -692,7 +695,9 @@ fn cond(m: &DMat4) -> f64 {
 #[test]
 fn matrices_converge_and_stay_conditioned_through_parallel() {
     let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
-    let on_axis = warp(&view, DVec3::NEG_Z, WarpRule::Uniform).unwrap().matrix;
+    let on_axis = warp(&view, DVec3::NEG_Z, WarpRule::Uniform)
+        .unwrap()
+        .matrix();
     let c0 = cond(&on_axis);
     assert!(c0.is_finite() && c0 < 1e6, "{c0}");
     for rule in [
@@ -704,7 +709,9 @@ fn matrices_converge_and_stay_conditioned_through_parallel() {
     ] {
         let mut prev = f64::INFINITY;
         for t in [1e-3, 1e-5, 1e-7, 1e-9, 1e-11] {
-            let m = warp(&view, DVec3::new(0.0, -t, -1.0), rule).unwrap().matrix;
+            let m = warp(&view, DVec3::new(0.0, -t, -1.0), rule)
+                .unwrap()
+                .matrix();
             let diff = (m - on_axis)
                 .to_cols_array()
                 .iter()
@@ -737,12 +744,12 @@ fn eta_ends_are_uniform_and_psm() {
     let (n, f, th) = (2.0, 300.0, 0.6f64);
     let view = ViewFrustum::new(n, f, th).unwrap();
     let u = warp(&view, DVec3::NEG_Y, WarpRule::Eta(-1.0)).unwrap();
-    assert!(u.n_prime.is_unwarped());
+    assert!(u.n_prime().is_unwarped());
     let e = frustum_max(&view, &u.shadow_map()).unwrap();
     assert!((e.max_mx - f / n).abs() <= 1e-12 * f / n);
     assert!((e.max_mz - (f - n) / (2.0 * n * th.tan())).abs() <= 1e-12 * e.max_mz);
     let p = warp(&view, DVec3::NEG_Y, WarpRule::Eta(1.0)).unwrap();
-    assert_eq!(p.n_prime, NPrime::Finite(n));
+    assert_eq!(p.n_prime(), NPrime::finite(n).unwrap());
     let e = frustum_max(&view, &p.shadow_map()).unwrap();
     assert!((e.max_mx - 1.0).abs() <= 1e-12);
     let sbar = (f / n - 1.0) / (2.0 * th.tan());

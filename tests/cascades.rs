@@ -117,9 +117,9 @@ proptest! {
         for (i, part) in c.iter().enumerate() {
             prop_assert_eq!(part.split_near, prev_far);
             prev_far = part.split_far;
-            let sub = view.with_depth_range(part.shadow.near, part.shadow.far).unwrap();
+            let sub = view.with_depth_range(part.shadow.near(), part.shadow.far()).unwrap();
             for p in sub.corners() {
-                assert_in_clip(&part.shadow.matrix, p, &format!("partition {i} of {k}, {rule:?}"));
+                assert_in_clip(&part.shadow.matrix(), p, &format!("partition {i} of {k}, {rule:?}"));
             }
             prop_assert!(part.error.max_mx.is_finite() && part.error.max_mx > 0.0);
             prop_assert!(part.error.max_mz.is_finite() && part.error.max_mz > 0.0);
@@ -213,7 +213,7 @@ proptest! {
             let c = cascades(&view, l, &splits, rule, 0.0).unwrap();
             let mut measured = 0.0;
             for part in c.iter() {
-                let sub = view.with_depth_range(part.shadow.near, part.shadow.far).unwrap();
+                let sub = view.with_depth_range(part.shadow.near(), part.shadow.far()).unwrap();
                 let e = frustum_max(&sub, &part.shadow.shadow_map()).unwrap();
                 prop_assert!((e.storage_factor - part.storage_factor()).abs() <= 1e-9 * e.storage_factor);
                 measured += e.storage_factor;
@@ -243,7 +243,7 @@ proptest! {
             let c = cascades(&view, DVec3::new(0.0, 0.0, -1.0), &splits, rule, 0.0).unwrap();
             let mut measured = 0.0;
             for part in c.iter() {
-                let sub = view.with_depth_range(part.shadow.near, part.shadow.far).unwrap();
+                let sub = view.with_depth_range(part.shadow.near(), part.shadow.far()).unwrap();
                 measured += frustum_max(&sub, &part.shadow.shadow_map()).unwrap().storage_factor;
             }
             prop_assert!(
@@ -298,7 +298,7 @@ fn vertex_maxima_agree_with_dense_sampling() {
             let c = cascades(&view, l, &splits, rule, 0.1).unwrap();
             for part in c.iter() {
                 let sub = view
-                    .with_depth_range(part.shadow.near, part.shadow.far)
+                    .with_depth_range(part.shadow.near(), part.shadow.far())
                     .unwrap();
                 let dense = frustum_max_sampled(&sub, &part.shadow.shadow_map(), 9).unwrap();
                 assert!(dense.max_mx <= part.error.max_mx * (1.0 + 1e-9));
@@ -324,8 +324,8 @@ fn overlap_extends_each_partition_by_its_fraction() {
     let p0 = c.get(0).unwrap();
     let p1 = c.get(1).unwrap();
     assert_eq!((p0.split_near, p0.split_far), (1.0, 10.0));
-    assert!((p0.shadow.far - (10.0 + 0.25 * 9.0)).abs() < 1e-12);
-    assert_eq!((p1.shadow.near, p1.shadow.far), (10.0, 100.0));
+    assert!((p0.shadow.far() - (10.0 + 0.25 * 9.0)).abs() < 1e-12);
+    assert_eq!((p1.shadow.near(), p1.shadow.far()), (10.0, 100.0));
     assert!(c.get(2).is_none());
     assert!(cascades(&view, DVec3::NEG_Y, &splits, WarpRule::Lispsm, 1.0).is_err());
     assert!(cascades(&view, DVec3::NEG_Y, &splits, WarpRule::Lispsm, f64::NAN).is_err());
@@ -423,7 +423,7 @@ fn stable_cascades_snap_to_whole_texels() {
             let s = stable_cascade(&view, world_to_eye, light_world, a, b, res).unwrap();
             let sub = view.with_depth_range(a, b).unwrap();
             for p in sub.corners() {
-                assert_in_clip(&s.shadow.matrix, p, "stable cascade");
+                assert_in_clip(&s.shadow.matrix(), p, "stable cascade");
             }
             let t = view.tan_half_fov();
             let r_map = s.radius * f64::from(res) / f64::from(res - 2);
@@ -431,7 +431,7 @@ fn stable_cascades_snap_to_whole_texels() {
             assert!((s.storage_factor - expect).abs() < 1e-9 * expect);
             assert!(s.storage_loss() >= 1.0);
             texel = s.texel;
-            let m = s.shadow.matrix * world_to_eye;
+            let m = s.shadow.matrix() * world_to_eye;
             clips.push(
                 probes
                     .iter()

@@ -292,7 +292,7 @@ mod checks {
     pub fn l05_2() -> usize {
         let e = Entry::numbered(L05, 2);
         let v = view(1.0, 100.0, 0.5);
-        let map = overhead_map(&v, NPrime::Finite(1.0)).unwrap();
+        let map = overhead_map(&v, NPrime::finite(1.0).unwrap()).unwrap();
         let w = |z: f64| at(&v, &map, 0.0, 0.0, z).w_lt;
         e.has(format!(
             "w_lz(α)/w_lz(1) = {} (not {})",
@@ -365,7 +365,7 @@ mod checks {
         ));
         let th = FRAC_PI_4;
         let v = view(1.0, a, th);
-        let m = overhead_map(&v, NPrime::Finite(n0)).unwrap();
+        let m = overhead_map(&v, NPrime::finite(n0).unwrap()).unwrap();
         let (near, far) = (at(&v, &m, 0.0, 0.0, 1.0).mz, at(&v, &m, 0.0, 0.0, a).mz);
         assert!(close(near, far, 1e-9));
         assert!(close(near, max_error(a, th, 0.0, 1.0, 1.0).unwrap(), 1e-9));
@@ -413,7 +413,7 @@ mod checks {
         let e = Entry::numbered(L06, 1);
         let (n, f, th) = (2.0, 100.0, 30f64.to_radians());
         let v = view(n, f, th);
-        let m = overhead(&v, NPrime::Finite(v.n_prime_lispsm()));
+        let m = overhead(&v, NPrime::finite(v.n_prime_lispsm()).unwrap());
         // The transcribed width (2 tan θ/res_i)(z/n) is n times smaller at every z.
         let w_right = 2.0 * n * th.tan();
         let w_printed = 2.0 * th.tan() * n / n;
@@ -436,7 +436,7 @@ mod checks {
         let h = 1e-6;
         let mx_printed = 2.0 * h / (s_near(h) - s_near(-h)) / (2.0 * n * th.tan());
         e.has(format!("m_x(n) = n′ f′/(2 n f) = {}", d(mx_printed, 2)));
-        let m = overhead(&view(n, f, th), NPrime::Finite(np));
+        let m = overhead(&view(n, f, th), NPrime::finite(np).unwrap());
         e.has(format!("f n′/(n f′) = {}", d(m.max_mx, 0)));
         e.done()
     }
@@ -465,7 +465,7 @@ mod checks {
         let (n, f) = (2.0, 100.0);
         let v = view(n, f, 30f64.to_radians());
         let np = v.n_prime_lispsm();
-        let m = overhead(&v, NPrime::Finite(np));
+        let m = overhead(&v, NPrime::finite(np).unwrap());
         let mx_printed = f * np / (np + f - n);
         let mz_printed = n * (f - n) / (2.0 * v.tan_half_fov()) * (np + f - n) / (np * f);
         e.has(format!(
@@ -484,7 +484,7 @@ mod checks {
     pub fn l06_5() -> usize {
         let e = Entry::numbered(L06, 5);
         let v = view(1.0, 100.0, FRAC_PI_4);
-        let m = overhead(&v, NPrime::Finite(11.0));
+        let m = overhead(&v, NPrime::finite(11.0).unwrap());
         let s0 = 2048.0f64 * 2048.0;
         // Eq 13, 14 with res*_s/res*_t = M_x/M_z (measured, unit resolutions).
         let (rs, rt) = (
@@ -557,7 +557,7 @@ mod checks {
         let e = Entry::numbered(L06, 9);
         let v = view(1.0, 1000.0, 0.5);
         let r = Resolutions::new(1024.0, 1024.0, 1024.0).unwrap();
-        let map = overhead_map(&v, NPrime::Finite(1.0)).unwrap();
+        let map = overhead_map(&v, NPrime::finite(1.0).unwrap()).unwrap();
         let mx = point_error(&v, &map, DVec3::new(0.0, 0.0, -30.0), r)
             .unwrap()
             .mx;
@@ -575,8 +575,8 @@ mod checks {
         // The 1/sin γ rule with explicit n′ = (n + √(f n))/sin γ against the unwarped map.
         let ratio = |v: &ViewFrustum, l: DVec3| {
             let sin = LightAngle::from_light_dir(l).unwrap().radians().sin();
-            let np = NPrime::Finite(v.n_prime_lispsm() / sin);
-            fitted(v, l, np).storage_factor / fitted(v, l, NPrime::Unwarped).storage_factor
+            let np = NPrime::finite(v.n_prime_lispsm() / sin).unwrap();
+            fitted(v, l, np).storage_factor / fitted(v, l, NPrime::UNWARPED).storage_factor
         };
         let v = view(1.0, 100.0, 30f64.to_radians());
         let r1 = ratio(&v, light_dir_from_angles(0.0, 350f64.to_radians()));
@@ -642,7 +642,7 @@ mod checks {
     pub fn l06_15() -> usize {
         let e = Entry::numbered(L06, 15);
         let v = view(1.0, 100.0, FRAC_PI_4);
-        let map = overhead_map(&v, NPrime::Finite(11.0)).unwrap();
+        let map = overhead_map(&v, NPrime::finite(11.0).unwrap()).unwrap();
         let mz = |z: f64| at(&v, &map, 0.0, 0.0, z).mz;
         e.has(format!(
             "m_z = {}, {}, {} at z = 1, 10, 100",
@@ -658,8 +658,11 @@ mod checks {
         let v = view(1.0, 100.0, 30f64.to_radians());
         e.has(format!(
             "S̄ is {} for n′ = ∞ and {} for n′_LSPSM = 11",
-            d(overhead(&v, NPrime::Unwarped).storage_factor, 2),
-            d(overhead(&v, NPrime::Finite(11.0)).storage_factor, 3)
+            d(overhead(&v, NPrime::UNWARPED).storage_factor, 2),
+            d(
+                overhead(&v, NPrime::finite(11.0).unwrap()).storage_factor,
+                3
+            )
         ));
         e.done()
     }
@@ -670,7 +673,7 @@ mod checks {
         let nps = [1.0, 6.0, 1.0 + 100f64.sqrt()];
         let up: Vec<f64> = nps
             .iter()
-            .map(|&np| fitted(&v, DVec3::NEG_Y, NPrime::Finite(np)).storage_factor)
+            .map(|&np| fitted(&v, DVec3::NEG_Y, NPrime::finite(np).unwrap()).storage_factor)
             .collect();
         assert!(up.iter().all(|&s| close(s, up[0], 1e-9)));
         e.has(format!(
@@ -682,7 +685,7 @@ mod checks {
         let l = light_dir_from_angles(45f64.to_radians(), 0.0);
         let s: Vec<f64> = nps
             .iter()
-            .map(|&np| fitted(&v, l, NPrime::Finite(np)).storage_factor)
+            .map(|&np| fitted(&v, l, NPrime::finite(np).unwrap()).storage_factor)
             .collect();
         e.has(format!(
             "S̄ = {}, {} and {}, PSM's {} times LiSPSM's",
@@ -782,7 +785,7 @@ mod checks {
                     (ie as f64 * 2.0).to_radians(),
                     (ia as f64 * 5.0).to_radians(),
                 );
-                let su = fitted(view, l, NPrime::Unwarped).storage_factor;
+                let su = fitted(view, l, NPrime::UNWARPED).storage_factor;
                 if rule(l).storage_factor > su * (1.0 + 1e-12) {
                     worse += 1;
                 }
@@ -798,9 +801,9 @@ mod checks {
             move |l: DVec3| {
                 let sin = LightAngle::from_light_dir(l).unwrap().radians().sin();
                 let np = if sin > 0.0 {
-                    NPrime::Finite(v.n_prime_lispsm() / sin)
+                    NPrime::finite(v.n_prime_lispsm() / sin).unwrap()
                 } else {
-                    NPrime::Unwarped
+                    NPrime::UNWARPED
                 };
                 fitted(&v, l, np)
             }
@@ -985,9 +988,9 @@ mod checks {
             overhead(
                 &v,
                 if warped {
-                    NPrime::Finite(v.n_prime_lispsm())
+                    NPrime::finite(v.n_prime_lispsm()).unwrap()
                 } else {
-                    NPrime::Unwarped
+                    NPrime::UNWARPED
                 },
             )
         };
@@ -1026,9 +1029,9 @@ mod checks {
         let g = 2f64.to_radians();
         let n1 = n_prime_1(&v, LightAngle::new(g).unwrap()).unwrap();
         let gen = generalized_n_prime(&v, LightAngle::new(g).unwrap(), Falloff::Barroso);
-        assert_eq!(gen, NPrime::Finite(n1));
+        assert_eq!(gen, NPrime::finite(n1).unwrap());
         let mx = |np: f64| {
-            let w = tilted(&v, g, TiltSide::Behind, NPrime::Finite(np));
+            let w = tilted(&v, g, TiltSide::Behind, NPrime::finite(np).unwrap());
             along(&v, &w, 1.0).max(along(&v, &w, 100.0))
         };
         e.has(format!(
@@ -1042,7 +1045,7 @@ mod checks {
         let g = 35f64.to_radians();
         let n1 = n_prime_1(&v, LightAngle::new(g).unwrap()).unwrap();
         let mx = |np: f64| {
-            let w = tilted(&v, g, TiltSide::Behind, NPrime::Finite(np));
+            let w = tilted(&v, g, TiltSide::Behind, NPrime::finite(np).unwrap());
             along(&v, &w, 1.0).max(along(&v, &w, 2.0))
         };
         e.has(format!(
@@ -1059,10 +1062,10 @@ mod checks {
         let v = view(1.0, 100.0, FRAC_PI_6);
         let g = 45f64.to_radians();
         let np = n_prime_1(&v, LightAngle::new(g).unwrap()).unwrap();
-        let w = tilted(&v, g, TiltSide::Behind, NPrime::Finite(np));
+        let w = tilted(&v, g, TiltSide::Behind, NPrime::finite(np).unwrap());
         let eq12 = tilted_mz(
             &v,
-            NPrime::Finite(np),
+            NPrime::finite(np).unwrap(),
             LightAngle::new(g).unwrap(),
             1.0,
             Resolutions::default(),
@@ -1092,7 +1095,7 @@ mod checks {
         e.has(format!(
             "n′₂ = {} gives the along-axis maximum {}, n′ = {} gives {}",
             d(n2, 4),
-            d(max_at(g, NPrime::Finite(n2)), 2),
+            d(max_at(g, NPrime::finite(n2).unwrap()), 2),
             d(opt.value(), 3),
             d(max_at(g, opt), 2)
         ));
@@ -1103,7 +1106,7 @@ mod checks {
             "n′ = {} gives {}, unwarped {}",
             d(opt.value(), 2),
             d(max_at(g, opt), 2),
-            d(max_at(g, NPrime::Unwarped), 2)
+            d(max_at(g, NPrime::UNWARPED), 2)
         ));
         let wide = view(1.0, 2.0, 1.2);
         let g = 1.25;
@@ -1115,7 +1118,7 @@ mod checks {
         let opt = n_prime_axis_minimax(&wide, LightAngle::new(g).unwrap());
         e.has(format!(
             "along-axis maximum {} at n′₁ = {}, {} at n′* = {}",
-            d(m(NPrime::Finite(n1)), 5),
+            d(m(NPrime::finite(n1).unwrap()), 5),
             d(n1, 3),
             d(m(opt), 5),
             d(opt.value(), 3)
@@ -1130,7 +1133,7 @@ mod checks {
         let mz = |np: f64| {
             frustum_max(
                 &v,
-                &tilted(&v, g, TiltSide::Behind, NPrime::Finite(np)).shadow,
+                &tilted(&v, g, TiltSide::Behind, NPrime::finite(np).unwrap()).shadow,
             )
             .unwrap()
             .max_mz
@@ -1270,7 +1273,7 @@ mod checks {
         let ratio = |v: &ViewFrustum, l: DVec3| {
             let b = warp(v, l, WarpRule::Barroso(Falloff::Barroso)).unwrap();
             frustum_max(v, &b.shadow_map()).unwrap().storage_factor
-                / fitted(v, l, NPrime::Unwarped).storage_factor
+                / fitted(v, l, NPrime::UNWARPED).storage_factor
         };
         let v = view(1.0, 100.0, 30f64.to_radians());
         e.has(format!(
@@ -1297,7 +1300,7 @@ mod checks {
             "n′ = {} with M_z = {}, against {} at n′₁ = {}",
             d(o.n_prime.value(), 3),
             d(fitted(&v, l, o.n_prime).max_mz, 3),
-            d(fitted(&v, l, NPrime::Finite(n1)).max_mz, 2),
+            d(fitted(&v, l, NPrime::finite(n1).unwrap()).max_mz, 2),
             d(n1, 3)
         ));
         e.done()
@@ -1306,7 +1309,7 @@ mod checks {
     // ----- Zhang, Zhao & Sun 2009 (his light above and in front: TiltSide::InFront) -----
 
     fn zt(v: &ViewFrustum, theta: f64, lambda: f64) -> TiltedWarp {
-        tilted(v, theta, TiltSide::InFront, NPrime::Finite(lambda))
+        tilted(v, theta, TiltSide::InFront, NPrime::finite(lambda).unwrap())
     }
 
     /// Zhang's printed Appendix forms, as printed.
@@ -1361,8 +1364,8 @@ mod checks {
         let w = zt(&v, FRAC_PI_2, 11.0);
         let axis = DVec3::new(0.0, 0.0, -10.0);
         let full = aliasing_functions(&v, &w.shadow, axis, DVec3::new(0.3, 2.0, -1.0)).unwrap();
-        let eq8 = zhang_eq_local(&v, NPrime::Finite(11.0), 10.0).unwrap();
-        let eq9 = zhang_ep_local(&v, NPrime::Finite(11.0), 10.0).unwrap();
+        let eq8 = zhang_eq_local(&v, NPrime::finite(11.0).unwrap(), 10.0).unwrap();
+        let eq9 = zhang_ep_local(&v, NPrime::finite(11.0).unwrap(), 10.0).unwrap();
         assert!(close(full.e_q, eq8, 1e-9));
         e.has(format!("Eq 8 = {} = the full E_q", d(full.e_q, 3)));
         e.has(format!(
@@ -1544,9 +1547,9 @@ mod checks {
         let e = Entry::bullet(ZH, "§2.4, \"θ can be replaced");
         let v = view(1.0, 100.0, FRAC_PI_6);
         let th = LightAngle::new(60f64.to_radians()).unwrap();
-        let w = tilted_warp(&v, th, TiltSide::Behind, NPrime::Finite(11.0)).unwrap();
+        let w = tilted_warp(&v, th, TiltSide::Behind, NPrime::finite(11.0).unwrap()).unwrap();
         let m = 2.0 * at(&v, &w.shadow, 0.0, 5.0, 10.0).mz;
-        let l = NPrime::Finite(11.0);
+        let l = NPrime::finite(11.0).unwrap();
         e.has(format!("measured E_p = {}", d(m, 3)));
         e.has(format!(
             "Eq 14 at θ = 60° gives {} with y = 5 and {} with y = −5",
@@ -1562,7 +1565,7 @@ mod checks {
         let m = 2.0 * at(&v, &zt(&v, 0.0, 3.0).shadow, 0.0, 1.0, 7.0).mx;
         let eq = zhang_eq(
             &v,
-            NPrime::Finite(3.0),
+            NPrime::finite(3.0).unwrap(),
             LightAngle::new(0.0).unwrap(),
             1.0,
             7.0,

@@ -111,7 +111,7 @@ proptest! {
                     if !view.contains(q, 1e-12) {
                         continue;
                     }
-                    let c = clip(&p.shadow.matrix, q).expect("w > 0");
+                    let c = clip(&p.shadow.matrix(), q).expect("w > 0");
                     // fit_warp's documented rounding bound, as in tests/builders.rs.
                     let tol = 1e-8;
                     prop_assert!(c.abs().max_element() <= 1.0 + tol, "{:?}: {q} → {c}", p.face);
@@ -127,7 +127,7 @@ proptest! {
             let p = DVec3::new(b * z * t * view.aspect() * 0.999, c * z * t * 0.999, -z);
             let mut found = false;
             for part in parts.iter() {
-                if let Some(cl) = clip(&part.shadow.matrix, p) {
+                if let Some(cl) = clip(&part.shadow.matrix(), p) {
                     if cl.abs().max_element() <= 1.0 + 1e-9 {
                         found = true;
                         break;
@@ -217,7 +217,7 @@ fn measured_sum(view: &ViewFrustum, l: DVec3, rule: FaceWarp, k: usize) -> f64 {
     let parts = face_partitions(view, l, rule, k).unwrap();
     let mut total = 0.0;
     for p in parts.iter() {
-        let sm = ShadowMap::new(p.shadow.matrix, l).unwrap();
+        let sm = ShadowMap::new(p.shadow.matrix(), l).unwrap();
         let (mut mx, mut mz) = (0.0f64, 0.0f64);
         for v in p.vertices {
             let e = point_error(view, &sm, v, Resolutions::default()).unwrap();
@@ -313,7 +313,7 @@ fn face_maxima_at_vertices() {
         let l = l.normalize();
         let parts = face_partitions(&view, l, FaceWarp::Lispsm, 2).unwrap();
         for p in parts.iter() {
-            let sm = ShadowMap::new(p.shadow.matrix, l).unwrap();
+            let sm = ShadowMap::new(p.shadow.matrix(), l).unwrap();
             let [v0, v1, v2, v3] = p.vertices;
             for i in 0..=8 {
                 for j in 0..=8 {
@@ -377,7 +377,7 @@ fn far_face_storage(view: &ViewFrustum, l: DVec3) -> f64 {
         pts.push(v + 3.0 * view.far() * l);
         pts.push(v - 3.0 * view.far() * l);
     }
-    let m = fit_warp(&pts, &ls, NPrime::Unwarped).unwrap();
+    let m = fit_warp(&pts, &ls, NPrime::UNWARPED).unwrap();
     let sm = ShadowMap::new(m, l).unwrap();
     let (mut mx, mut mz) = (0.0f64, 0.0f64);
     for c in view.corners() {
@@ -462,7 +462,7 @@ fn errata_s5_1_face_n_prime_is_the_faces_own() {
             pts.push(q + 3.0 * f * l);
             pts.push(q - 3.0 * f * l);
         }
-        let m = fit_warp(&pts, &ls, NPrime::Finite(n_view)).unwrap();
+        let m = fit_warp(&pts, &ls, NPrime::finite(n_view).unwrap()).unwrap();
         let e = vertex_max(&m, l, t, &v).unwrap().storage_factor();
         assert!(
             (e - per_face).abs() < 1e-9 * per_face,
@@ -501,7 +501,7 @@ fn light_along_a_side_edge() {
         let z: f64 = 0.5 * 100f64.powf(a);
         let p = DVec3::new(b * z * t, c * z * t, -z);
         let inside = parts.iter().any(|part| {
-            clip(&part.shadow.matrix, p).is_some_and(|q| q.abs().max_element() <= 1.0 + 1e-9)
+            clip(&part.shadow.matrix(), p).is_some_and(|q| q.abs().max_element() <= 1.0 + 1e-9)
         });
         assert!(inside, "point {i} {p}");
     }

@@ -1,10 +1,51 @@
-//! `frustum::unit_light_dir` normalises every finite, non-zero light direction, however large or
+//! `LightDir::new` normalises every finite, non-zero light direction, however large or
 //! small its components; expected values are hand calculations (1/√2, 1/√3, 3-4-5 triangles).
 
 use glam::DVec3;
 use proptest::prelude::*;
-use shadow_aliasing::frustum::unit_light_dir;
-use shadow_aliasing::{Error, LightAngle};
+use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
+use shadow_aliasing::maps::cascades::cascades;
+use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
+use shadow_aliasing::maps::{warp, WarpRule};
+use shadow_aliasing::scheme::{scheme, Partition};
+use shadow_aliasing::{Error, LightAngle, LightDir, ViewFrustum};
+
+fn unit_light_dir(l: DVec3) -> shadow_aliasing::Result<DVec3> {
+    LightDir::new(l).map(LightDir::as_dvec3)
+}
+
+/// Every builder normalises the light direction once, at its entry: the unit vector each map
+/// reports is `l / |l|` bit for bit (computed here by hand), not a re-normalised unit vector. These
+/// directions are ones where normalising `l / |l|` again changes the last bit (issue 12 counted
+/// five normalisations on the way from the command line to a map; the cascades, the schemes and
+/// the face partitions reported the twice-normalised vector).
+#[test]
+fn builders_normalise_the_light_once() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let splits = z_splits(1.0, 100.0, 3, SplitScheme::SelfSimilar).unwrap();
+    for l in [
+        DVec3::new(-1.0, -1.0, 0.3),
+        DVec3::new(-1.0, -0.7, 0.2),
+        DVec3::new(-1.0, -0.3, 0.5),
+    ] {
+        let once = l / (l.x * l.x + l.y * l.y + l.z * l.z).sqrt();
+        let twice = once / once.length();
+        assert_ne!(once, twice, "{l}: not a direction that tells the two apart");
+        assert_eq!(LightDir::new(l).unwrap().as_dvec3(), once);
+        assert_eq!(warp(&view, l, WarpRule::Lispsm).unwrap().light_dir(), once);
+        let c = cascades(&view, l, &splits, WarpRule::Lispsm, 0.0).unwrap();
+        assert!(
+            c.iter().all(|c| c.shadow.light_dir() == once),
+            "{l}: cascades"
+        );
+        let f = face_partitions(&view, l, FaceWarp::Lispsm, 2).unwrap();
+        assert!(f.iter().all(|p| p.shadow.light_dir() == once), "{l}: faces");
+        for partition in [Partition::Single, Partition::Log, Partition::Faces] {
+            let r = scheme(&view, l, WarpRule::Lispsm, partition, 3).unwrap();
+            assert_eq!(r.light_dir(), once, "{l}: {partition:?}");
+        }
+    }
+}
 
 fn close(a: DVec3, b: DVec3) -> bool {
     (a - b).abs().max_element() <= 4.0 * f64::EPSILON

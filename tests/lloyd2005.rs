@@ -86,9 +86,9 @@ proptest! {
         };
         prop_assert!((def - x).abs() < 1e-9, "definition {def} vs ξ {x}");
         let np = n_prime_from_eta(near, near * a, x).unwrap();
-        match (n, np) {
-            (NPrime::Unwarped, NPrime::Unwarped) => {}
-            (NPrime::Finite(a1), NPrime::Finite(b1)) => prop_assert!(close(a1 * near, b1, 1e-12)),
+        match (n.as_finite(), np.as_finite()) {
+            (None, None) => {}
+            (Some(a1), Some(b1)) => prop_assert!(close(a1 * near, b1, 1e-12)),
             other => prop_assert!(false, "{other:?}"),
         }
         prop_assert!((eta_from_n_prime(near, near * a, np).unwrap() - x).abs() < 1e-9);
@@ -101,7 +101,7 @@ proptest! {
         a in alpha(), th in half_fov(), x in xi(), near in 0.01f64..10.0, fz in 0.0f64..=1.0,
     ) {
         let n = n_from_xi(a, x).unwrap();
-        let np = match n { NPrime::Finite(v) => NPrime::Finite(v * near), u => u };
+        let np = match n.as_finite() { Some(v) => NPrime::finite(v * near).unwrap(), None => n };
         let z = (1.0 + fz * (a - 1.0)).min(a);
         let v = ViewFrustum::new(near, near * a, th).unwrap();
         let r = Resolutions::default();
@@ -233,10 +233,10 @@ fn hand_values() {
     );
     // g = 1 at z = α for n = 1 and at z = 1 for n = ∞ (§3.1).
     assert_eq!(
-        distribution_g(100.0, NPrime::Finite(1.0), 100.0).unwrap(),
+        distribution_g(100.0, NPrime::finite(1.0).unwrap(), 100.0).unwrap(),
         1.0
     );
-    assert_eq!(distribution_g(100.0, NPrime::Unwarped, 1.0).unwrap(), 1.0);
+    assert_eq!(distribution_g(100.0, NPrime::UNWARPED, 1.0).unwrap(), 1.0);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -249,7 +249,7 @@ fn hand_values() {
 fn errata_s3_2_max_location_swapped() {
     let a = 100.0;
     let n = n_from_xi(a, -0.5).unwrap();
-    assert_eq!(n, NPrime::Finite(121.0));
+    assert_eq!(n, NPrime::finite(121.0).unwrap());
     let th = std::f64::consts::FRAC_PI_4;
     let (_, near) = measured(a, th, n, 1.0, Resolutions::default());
     let (_, far) = measured(a, th, n, a, Resolutions::default());
@@ -280,7 +280,7 @@ fn errata_s4_1_x_error_optimal_at_xi_plus_one() {
     };
     assert!(close(at(1.0), 1.0, REL));
     assert!(close(at(-1.0), 100.0, REL));
-    assert_eq!(n_from_xi(a, 1.0).unwrap(), NPrime::Finite(1.0));
+    assert_eq!(n_from_xi(a, 1.0).unwrap(), NPrime::finite(1.0).unwrap());
 }
 
 /// §3.1 says a perspective projection gives "texel spacing proportional to 1/z²"; the spacing
@@ -289,7 +289,7 @@ fn errata_s4_1_x_error_optimal_at_xi_plus_one() {
 #[test]
 fn errata_s3_1_texel_spacing_grows_as_z_squared() {
     let v = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
-    let map = overhead_map(&v, NPrime::Finite(1.0)).unwrap();
+    let map = overhead_map(&v, NPrime::finite(1.0).unwrap()).unwrap();
     let r = Resolutions::default();
     let w = |z: f64| {
         point_error(&v, &map, glam::DVec3::new(0.0, 0.0, -z), r)
@@ -345,7 +345,7 @@ proptest! {
     #[test]
     fn never_nan_or_infinite(a in any_f64(), n in any_f64(), z in any_f64(), th in any_f64(), x in any_f64(), k in 0usize..100) {
         let ok = |r: Result<f64, shadow_aliasing::Error>| r.map_or(true, f64::is_finite);
-        let nw = NPrime::new(n).unwrap_or(NPrime::Unwarped);
+        let nw = NPrime::new(n).unwrap_or(NPrime::UNWARPED);
         prop_assert!(ok(distribution_g(a, nw, z)));
         prop_assert!(ok(error_m(a, th, nw, z, 1.0, 1.0)));
         prop_assert!(ok(xi_from_n(a, nw)));
@@ -369,13 +369,13 @@ proptest! {
 fn eq4_eq5_are_continuous_at_xi_zero() {
     let a = 100.0;
     let q = std::f64::consts::FRAC_PI_4;
-    assert_eq!(n_from_xi(a, 0.0).unwrap(), NPrime::Finite(11.0));
+    assert_eq!(n_from_xi(a, 0.0).unwrap(), NPrime::finite(11.0).unwrap());
     let left = n_from_xi(a, -1e-9).unwrap().value();
     let right = n_from_xi(a, 1e-9).unwrap().value();
     // dn/dξ = −(√α + 1 + α − 1) = −110 on the left, −√α(√α + 1) = −110 on the right.
     assert!((left - (11.0 + 110e-9)).abs() < 1e-12, "{left}");
     assert!((right - (11.0 - 110e-9)).abs() < 1e-12, "{right}");
-    assert_eq!(xi_from_n(a, NPrime::Finite(11.0)).unwrap(), 0.0);
+    assert_eq!(xi_from_n(a, NPrime::finite(11.0).unwrap()).unwrap(), 0.0);
     let (m0, ml, mr) = (
         max_error(a, q, 0.0, 1.0, 1.0).unwrap(),
         max_error(a, q, -1e-9, 1.0, 1.0).unwrap(),
@@ -384,7 +384,7 @@ fn eq4_eq5_are_continuous_at_xi_zero() {
     assert!((m0 - 4.95).abs() < 1e-12 && (ml - m0).abs() < 1e-6 && (mr - m0).abs() < 1e-6);
     // The measured warp at n = 11 has that maximum on both planes.
     let v = ViewFrustum::new(1.0, a, q).unwrap();
-    let m = overhead_map(&v, NPrime::Finite(11.0)).unwrap();
+    let m = overhead_map(&v, NPrime::finite(11.0).unwrap()).unwrap();
     for z in [1.0, a] {
         let e = point_error(
             &v,

@@ -66,7 +66,7 @@ proptest! {
         let np = n_prime_from_eta(n, f, e).unwrap();
         let back = eta_from_n_prime(n, f, np).unwrap();
         prop_assert!((back - e).abs() <= 1e-9, "η = {e} → n′ = {np:?} → η = {back}");
-        let np2 = NPrime::Finite(n * nu);
+        let np2 = NPrime::finite(n * nu).unwrap();
         let e2 = eta_from_n_prime(n, f, np2).unwrap();
         let back2 = n_prime_from_eta(n, f, e2).unwrap();
         prop_assert!(close(back2.value(), n * nu, 1e-8), "{} vs {}", back2.value(), n * nu);
@@ -79,8 +79,8 @@ proptest! {
         let (n, f) = (v.near(), v.far());
         let mz_of = |np: NPrime| frustum_max(&v, &overhead_map(&v, np).unwrap()).unwrap().max_mz;
         let np = n_prime_from_eta(n, f, e).unwrap();
-        let l = NPrime::Finite(n_prime_lispsm(n, f).unwrap());
-        let (m, ml, minf, mn) = (mz_of(np), mz_of(l), mz_of(NPrime::Unwarped), mz_of(NPrime::Finite(n)));
+        let l = NPrime::finite(n_prime_lispsm(n, f).unwrap()).unwrap();
+        let (m, ml, minf, mn) = (mz_of(np), mz_of(l), mz_of(NPrime::UNWARPED), mz_of(NPrime::finite(n).unwrap()));
         let eta_b = if np.value() > l.value() {
             (ml - m) / (minf - ml)
         } else {
@@ -103,7 +103,7 @@ proptest! {
     /// regimes meet), and it is the smallest M_z of all n′.
     #[test]
     fn mz_equal_on_near_and_far_planes_at_lispsm(v in frustum(), e in eta()) {
-        let l = NPrime::Finite(v.n_prime_lispsm());
+        let l = NPrime::finite(v.n_prime_lispsm()).unwrap();
         let map = overhead_map(&v, l).unwrap();
         let r = Resolutions::default();
         let near = point_error(&v, &map, glam::DVec3::new(0.0, 0.0, -v.near()), r).unwrap().mz;
@@ -163,17 +163,20 @@ fn n_prime_special_values() {
     for (n, f) in [(1.0, 100.0), (0.3, 7.0), (2.0, 2000.0)] {
         let l = n_prime_lispsm(n, f).unwrap();
         assert_eq!(l, n + (f * n).sqrt());
-        match n_prime_from_eta(n, f, 0.0).unwrap() {
-            NPrime::Finite(v) => assert!(close(v, l, 1e-15)),
-            NPrime::Unwarped => panic!("η = 0 is finite"),
+        match n_prime_from_eta(n, f, 0.0).unwrap().as_finite() {
+            Some(v) => assert!(close(v, l, 1e-15)),
+            None => panic!("η = 0 is finite"),
         }
-        assert_eq!(n_prime_from_eta(n, f, -1.0).unwrap(), NPrime::Unwarped);
-        match n_prime_from_eta(n, f, 1.0).unwrap() {
-            NPrime::Finite(v) => assert!(close(v, n_prime_psm(n, f).unwrap(), 1e-15)),
-            NPrime::Unwarped => panic!("η = 1 is finite"),
+        assert_eq!(n_prime_from_eta(n, f, -1.0).unwrap(), NPrime::UNWARPED);
+        match n_prime_from_eta(n, f, 1.0).unwrap().as_finite() {
+            Some(v) => assert!(close(v, n_prime_psm(n, f).unwrap(), 1e-15)),
+            None => panic!("η = 1 is finite"),
         }
-        assert_eq!(eta_from_n_prime(n, f, NPrime::Unwarped).unwrap(), -1.0);
-        assert_eq!(eta_from_n_prime(n, f, NPrime::Finite(n)).unwrap(), 1.0);
+        assert_eq!(eta_from_n_prime(n, f, NPrime::UNWARPED).unwrap(), -1.0);
+        assert_eq!(
+            eta_from_n_prime(n, f, NPrime::finite(n).unwrap()).unwrap(),
+            1.0
+        );
     }
 }
 
@@ -195,16 +198,16 @@ fn vertices_suffice_for_the_overhead_warp() {
 fn domain_errors() {
     let v = ViewFrustum::new(1.0, 10.0, 0.5).unwrap();
     let r = Resolutions::default();
-    let msg = mx(1.0, 10.0, NPrime::Finite(0.5), 2.0, r)
+    let msg = mx(1.0, 10.0, NPrime::finite(0.5).unwrap(), 2.0, r)
         .unwrap_err()
         .to_string();
     assert!(msg.starts_with("n_prime must be at least near"), "{msg}");
-    let msg = mz(&v, NPrime::Unwarped, 11.0, r).unwrap_err().to_string();
+    let msg = mz(&v, NPrime::UNWARPED, 11.0, r).unwrap_err().to_string();
     assert_eq!(msg, "z must lie in [near, far] = [1, 10] (got 11)");
     assert!(n_prime_from_eta(1.0, 10.0, f64::NAN).is_err());
     assert!(n_prime_from_eta(2.0, 1.0, 0.0).is_err());
-    assert!(budget_resolution(&v, NPrime::Unwarped, 0.0).is_err());
-    assert!(critical_resolution(&v, NPrime::Unwarped, -1.0).is_err());
+    assert!(budget_resolution(&v, NPrime::UNWARPED, 0.0).is_err());
+    assert!(critical_resolution(&v, NPrime::UNWARPED, -1.0).is_err());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -216,7 +219,7 @@ fn domain_errors() {
 #[test]
 fn errata_eq2_pixel_width_has_no_over_n() {
     let v = ViewFrustum::new(2.0, 100.0, 30f64.to_radians()).unwrap();
-    let np = NPrime::Finite(v.n_prime_lispsm());
+    let np = NPrime::finite(v.n_prime_lispsm()).unwrap();
     let map = overhead_map(&v, np).unwrap();
     let p = point_error(
         &v,
@@ -268,7 +271,8 @@ fn errata_eq5_eq6_warping_frustum_map() {
     let dx_ds = 2.0 * h / (s_of_x(h) - s_of_x(-h));
     let w_i = 2.0 * n * th.tan();
     let mx_printed = dx_ds / w_i; // = n′ f′/(2 n f) = 6.05
-    let measured = frustum_max(&v, &overhead_map(&v, NPrime::Finite(np)).unwrap()).unwrap();
+    let measured =
+        frustum_max(&v, &overhead_map(&v, NPrime::finite(np).unwrap()).unwrap()).unwrap();
     assert!(close(mx_printed, np * fp / (2.0 * n * f), 1e-9));
     assert!(close(mx_printed, 6.05, 1e-9));
     assert!(close(measured.max_mx, 10.0, REL)); // Eq 7, 9: f n′/(n f′) = 10
@@ -282,7 +286,7 @@ fn errata_eq9_eq10_factor_n() {
     let v = ViewFrustum::new(2.0, 100.0, 30f64.to_radians()).unwrap();
     let (n, f) = (2.0, 100.0);
     let np = v.n_prime_lispsm();
-    let m = frustum_max(&v, &overhead_map(&v, NPrime::Finite(np)).unwrap()).unwrap();
+    let m = frustum_max(&v, &overhead_map(&v, NPrime::finite(np).unwrap()).unwrap()).unwrap();
     let mx_printed = f * np / (np + f - n);
     let mx_right = f * np / (n * (np + f - n));
     assert!(close(m.max_mx, mx_right, REL));
@@ -302,7 +306,7 @@ fn errata_eq9_eq10_factor_n() {
 #[test]
 fn errata_app_c_drops_res_i() {
     let v = ViewFrustum::new(1.0, 1000.0, 0.5).unwrap();
-    let map = overhead_map(&v, NPrime::Finite(1.0)).unwrap();
+    let map = overhead_map(&v, NPrime::finite(1.0).unwrap()).unwrap();
     let r = Resolutions::new(1024.0, 1024.0, 1024.0).unwrap();
     for z in [1.0, 30.0, 1000.0] {
         let p = point_error(
@@ -315,7 +319,7 @@ fn errata_app_c_drops_res_i() {
         assert!(close(p.mx, 1.0, REL), "m_x = {}", p.mx);
     }
     assert!(close(
-        max_mx(1.0, 1000.0, NPrime::Finite(1.0), r).unwrap(),
+        max_mx(1.0, 1000.0, NPrime::finite(1.0).unwrap(), r).unwrap(),
         1.0,
         1e-15
     ));
@@ -339,7 +343,7 @@ proptest! {
     #[test]
     fn never_nan_or_infinite(n in any_f64(), f in any_f64(), th in any_f64(), np in any_f64(), z in any_f64(), e in any_f64()) {
         let ok = |r: Result<f64, shadow_aliasing::Error>| r.map_or(true, f64::is_finite);
-        let np = NPrime::new(np).unwrap_or(NPrime::Unwarped);
+        let np = NPrime::new(np).unwrap_or(NPrime::UNWARPED);
         let r = Resolutions::default();
         prop_assert!(ok(mx(n, f, np, z, r)));
         prop_assert!(ok(max_mx(n, f, np, r)));
@@ -367,7 +371,7 @@ proptest! {
 #[test]
 fn eq13_eq14_by_hand() {
     let v = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_4).unwrap();
-    let l = NPrime::Finite(11.0);
+    let l = NPrime::finite(11.0).unwrap();
     let s0 = 2048.0 * 2048.0;
     let b = budget_resolution(&v, l, s0).unwrap();
     assert!((b.res_s - 2910.9004).abs() < 1e-3 && (b.res_t - 1440.8957).abs() < 1e-3);
@@ -397,7 +401,7 @@ fn errata_s4_4_vertices_suffice_by_convexity_not_monotonicity() {
     use shadow_aliasing::measure::tilted_twin::{tilted_warp, TiltSide};
     use shadow_aliasing::LightAngle;
     let v = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_4).unwrap();
-    let map = overhead_map(&v, NPrime::Finite(11.0)).unwrap();
+    let map = overhead_map(&v, NPrime::finite(11.0).unwrap()).unwrap();
     let at = |z: f64| {
         point_error(
             &v,
@@ -419,7 +423,7 @@ fn errata_s4_4_vertices_suffice_by_convexity_not_monotonicity() {
             for np in [
                 generalized_n_prime(&view, g, Falloff::Barroso),
                 n_prime_axis_minimax(&view, g),
-                NPrime::Unwarped,
+                NPrime::UNWARPED,
             ] {
                 let w = tilted_warp(&view, g, side, np).unwrap();
                 let vert = frustum_max(&view, &w.shadow).unwrap();
@@ -446,22 +450,25 @@ fn errata_s4_4_vertices_suffice_by_convexity_not_monotonicity() {
 #[test]
 fn errata_s4_4_fig7_with_and_without_warping_swapped() {
     let v = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6).unwrap();
-    let unwarped = frustum_max(&v, &overhead_map(&v, NPrime::Unwarped).unwrap())
+    let unwarped = frustum_max(&v, &overhead_map(&v, NPrime::UNWARPED).unwrap())
         .unwrap()
         .storage_factor;
-    let lispsm = frustum_max(&v, &overhead_map(&v, NPrime::Finite(11.0)).unwrap())
-        .unwrap()
-        .storage_factor;
+    let lispsm = frustum_max(
+        &v,
+        &overhead_map(&v, NPrime::finite(11.0).unwrap()).unwrap(),
+    )
+    .unwrap()
+    .storage_factor;
     assert!((unwarped - 8573.65).abs() < 0.01, "{unwarped}");
     assert!((lispsm - 85.7365).abs() < 1e-3, "{lispsm}");
     assert!(close(
         unwarped,
-        storage_factor(&v, NPrime::Unwarped).unwrap(),
+        storage_factor(&v, NPrime::UNWARPED).unwrap(),
         REL
     ));
     assert!(close(
         lispsm,
-        storage_factor(&v, NPrime::Finite(11.0)).unwrap(),
+        storage_factor(&v, NPrime::finite(11.0).unwrap()).unwrap(),
         REL
     ));
 }
@@ -480,7 +487,7 @@ fn errata_s4_3_equivalence_only_overhead() {
     let v = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
     let s_bar = |l: DVec3, np: f64| {
         let ls = light_space(l, DVec3::NEG_Z).unwrap();
-        let m = fit_warp(&v.corners(), &ls, NPrime::Finite(np)).unwrap();
+        let m = fit_warp(&v.corners(), &ls, NPrime::finite(np).unwrap()).unwrap();
         frustum_max(&v, &ShadowMap::new(m, l).unwrap())
             .unwrap()
             .storage_factor

@@ -53,10 +53,10 @@ proptest! {
         prop_assert!((oz.max_mz - mz.max_mz).abs() <= 1e-9 * mz.max_mz);
         // Brute force over n′ = Δ-scaled geometric grid, plus n′ = ∞.
         let scale = view.far();
-        let mut best_s = measured(&view, l, NPrime::Unwarped).storage_factor;
-        let mut best_z = measured(&view, l, NPrime::Unwarped).max_mz;
+        let mut best_s = measured(&view, l, NPrime::UNWARPED).storage_factor;
+        let mut best_z = measured(&view, l, NPrime::UNWARPED).max_mz;
         for k in -160..=160 {
-            let np = NPrime::Finite(scale * 10f64.powf(k as f64 / 40.0));
+            let np = NPrime::finite(scale * 10f64.powf(k as f64 / 40.0)).unwrap();
             let e = measured(&view, l, np);
             best_s = best_s.min(e.storage_factor);
             best_z = best_z.min(e.max_mz);
@@ -169,7 +169,7 @@ fn barroso_n1_is_not_the_frustum_minimax() {
     let l = DVec3::new(0.0, -g.sin(), -g.cos());
     let n1 = n_prime_1(&view, LightAngle::new(g).unwrap()).unwrap();
     assert!((n1 - 9.238).abs() < 1e-3, "{n1}");
-    let m1 = measured(&view, l, NPrime::Finite(n1)).max_mz;
+    let m1 = measured(&view, l, NPrime::finite(n1).unwrap()).max_mz;
     let o = minimax_mz_n_prime(&view, l).unwrap();
     let mo = measured(&view, l, o.n_prime);
     assert!((m1 - 13.37).abs() < 5e-3, "{m1}");

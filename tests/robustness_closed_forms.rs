@@ -176,10 +176,10 @@ fn ok_finite(what: &str, r: Result<f64, Error>) -> Result<(), TestCaseError> {
 }
 
 fn n_prime_ok(what: &str, n: NPrime) -> Result<(), TestCaseError> {
-    if let NPrime::Finite(v) = n {
+    if let Some(v) = n.as_finite() {
         prop_assert!(
             v.is_finite() && v > 0.0,
-            "{what} returned NPrime::Finite({v})"
+            "{what} returned NPrime::finite({v}).unwrap()"
         );
     }
     Ok(())
@@ -192,11 +192,13 @@ fn n_prime_result_ok(what: &str, r: Result<NPrime, Error>) -> Result<(), TestCas
     }
 }
 
+/// The n′ an arbitrary `v` can become: an invalid payload is unrepresentable (`NPrime` is closed),
+/// so the constructors refuse it with a typed error.
 fn n_primes(v: f64) -> [NPrime; 3] {
     [
-        NPrime::Finite(v),
-        NPrime::new(v).unwrap_or(NPrime::Unwarped),
-        NPrime::Unwarped,
+        NPrime::finite(v).unwrap_or(NPrime::UNWARPED),
+        NPrime::new(v).unwrap_or(NPrime::UNWARPED),
+        NPrime::UNWARPED,
     ]
 }
 
@@ -234,7 +236,7 @@ proptest! {
             }
         }
         let Ok(v) = ViewFrustum::new(n, f, th) else { return Ok(()) };
-        let lispsm = NPrime::Finite(v.n_prime_lispsm());
+        let lispsm = NPrime::finite(v.n_prime_lispsm()).unwrap();
         for p in n_primes(np).into_iter().chain([lispsm]) {
             for zz in [z, n, f, 0.5 * (n + f)] {
                 for res in resolutions(r.0, r.1, r.2) {
@@ -424,7 +426,7 @@ proptest! {
             for fo in [Falloff::Zhang, Falloff::Barroso] {
                 n_prime_ok("generalized_n_prime", generalized_n_prime(&v, gamma, fo))?;
             }
-            for p in n_primes(np).into_iter().chain([NPrime::Finite(v.near())]) {
+            for p in n_primes(np).into_iter().chain([NPrime::finite(v.near()).unwrap()]) {
                 for zz in [z, v.near(), v.far()] {
                     for res in resolutions(r.0, r.1, r.2) {
                         ok_finite("tilted_mz", tilted_mz(&v, p, gamma, zz, res))?;
@@ -517,16 +519,16 @@ proptest! {
         k in 0usize..4,
     ) {
         let Ok(v) = ViewFrustum::new(n, f, th) else { return Ok(()) };
-        for p in n_primes(np).into_iter().chain([NPrime::Finite(v.near())]) {
+        for p in n_primes(np).into_iter().chain([NPrime::finite(v.near()).unwrap()]) {
             if let Ok(m) = overhead_map(&v, p) {
-                prop_assert!(m.matrix.is_finite());
+                prop_assert!(m.matrix().is_finite());
             }
             for face in Face::ALL {
                 if let Ok(c) = face.corners(&v) {
                     prop_assert!(c.iter().all(|c| c.is_finite()));
                 }
                 if let Ok(m) = behind_face_map(&v, face, p) {
-                    prop_assert!(m.matrix.is_finite());
+                    prop_assert!(m.matrix().is_finite());
                     if let Ok(e) = face_max(&v, face, &m) {
                         prop_assert!(e.storage_factor.is_finite());
                     }
@@ -540,7 +542,7 @@ proptest! {
                 prop_assert!(a.is_finite() && b.is_finite());
                 for side in [TiltSide::InFront, TiltSide::Behind] {
                     if let Ok(w) = tilted_warp(&v, gamma, side, p) {
-                        prop_assert!(w.shadow.matrix.is_finite());
+                        prop_assert!(w.shadow.matrix().is_finite());
                         let point = glam::DVec3::new(pt.0, pt.1, pt.2);
                         for q in [point, glam::DVec3::new(0.0, 0.0, -v.near())] {
                             ok_finite("mz_along_view_axis", mz_along_view_axis(&v, &w.shadow, q, Resolutions::default()))?;
@@ -553,7 +555,7 @@ proptest! {
             }
         }
         if let Ok(m) = behind_map(&v) {
-            prop_assert!(m.matrix.is_finite());
+            prop_assert!(m.matrix().is_finite());
         }
         if k > 0 {
             if let Ok(sp) = z_splits(v.near(), v.far(), k, SplitScheme::SelfSimilar) {
@@ -563,7 +565,7 @@ proptest! {
                         prop_assert_eq!(c.k(), k);
                         for i in 0..=k {
                             if let Some((pv, pm)) = c.get(i) {
-                                prop_assert!(pv.near() < pv.far() && pm.matrix.is_finite());
+                                prop_assert!(pv.near() < pv.far() && pm.matrix().is_finite());
                             }
                         }
                     }

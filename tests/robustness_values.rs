@@ -96,7 +96,7 @@ fn accepted_frusta_have_finite_valid_accessors() {
 #[test]
 fn minimax_answers_finite_maxima_or_an_error() {
     let view = ViewFrustum::new(1e-300, 0.5, FRAC_PI_2.next_down()).unwrap();
-    let expected = storage_factor(&view, NPrime::Finite(view.n_prime_lispsm())).unwrap();
+    let expected = storage_factor(&view, NPrime::finite(view.n_prime_lispsm()).unwrap()).unwrap();
     assert!(expected.is_finite());
     let o = minimax_n_prime(&view, DVec3::NEG_Y).unwrap();
     assert!(o.max_mx.is_finite() && o.max_mz.is_finite());

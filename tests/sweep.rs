@@ -51,15 +51,20 @@ fn vertex_max_is_point_error() {
     ] {
         for rule in [WarpRule::Lispsm, WarpRule::Uniform, WarpRule::Psm] {
             let s = warp(&view, l, rule).unwrap();
-            let fast =
-                vertex_max(&s.matrix, s.light_dir, view.tan_half_fov(), &view.corners()).unwrap();
+            let fast = vertex_max(
+                &s.matrix(),
+                s.light_dir(),
+                view.tan_half_fov(),
+                &view.corners(),
+            )
+            .unwrap();
             let truth = frustum_max(&view, &s.shadow_map()).unwrap();
             assert!((fast.max_mx - truth.max_mx).abs() <= 1e-12 * truth.max_mx);
             assert!((fast.max_mz - truth.max_mz).abs() <= 1e-12 * truth.max_mz);
-            let sm = ShadowMap::new(s.matrix, l).unwrap();
+            let sm = ShadowMap::new(s.matrix(), l).unwrap();
             let p = DVec3::new(1.0, -2.0, -30.0);
             let e = point_error(&view, &sm, p, Resolutions::default()).unwrap();
-            let one = vertex_max(&s.matrix, s.light_dir, view.tan_half_fov(), &[p]).unwrap();
+            let one = vertex_max(&s.matrix(), s.light_dir(), view.tan_half_fov(), &[p]).unwrap();
             assert!((one.max_mx - e.mx).abs() <= 1e-12 * e.mx);
             assert!((one.max_mz - e.mz).abs() <= 1e-12 * e.mz);
         }
@@ -67,8 +72,8 @@ fn vertex_max_is_point_error() {
     // Behind the centre of projection, or at depth ≤ 0: None, not NaN.
     let s = warp(&view, DVec3::NEG_Y, WarpRule::Psm).unwrap();
     assert!(vertex_max(
-        &s.matrix,
-        s.light_dir,
+        &s.matrix(),
+        s.light_dir(),
         0.9f64.tan(),
         &[DVec3::new(0.0, 0.0, 1.0)]
     )

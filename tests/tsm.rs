@@ -51,7 +51,7 @@ proptest! {
         let search = if eighty { TsmSearch::EightyPercent } else { TsmSearch::Line(xi) };
         let xi = if eighty { -0.6 } else { xi };
         let t = tsm(&view, l, TsmOptions { focus, search }).unwrap();
-        let m = t.shadow.matrix;
+        let m = t.shadow.matrix();
         for c in view.corners() {
             prop_assert!(in_clip(clip(&m, c)), "corner {c} → {}", clip(&m, c));
             let d = t.light_depth.dot(c.extend(1.0));
@@ -59,19 +59,19 @@ proptest! {
         }
         let fp = DVec3::new(0.0, 0.0, -(view.near() + focus));
         let y = clip(&m, fp).y;
-        match t.shadow.n_prime {
-            NPrime::Finite(eta) => {
+        match t.shadow.n_prime().as_finite() {
+            Some(eta) => {
                 prop_assert!((y - xi).abs() <= 1e-9, "focus at y = {y}, line {xi}");
                 // Same map as the warp of parameter η, t reversed.
                 let ls = light_space(l, DVec3::NEG_Z).unwrap();
-                let w = fit_warp(&view.corners(), &ls, NPrime::Finite(eta)).unwrap();
+                let w = fit_warp(&view.corners(), &ls, NPrime::finite(eta).unwrap()).unwrap();
                 for c in view.corners().iter().chain([fp].iter()) {
                     let a = clip(&m, *c);
                     let b = clip(&w, *c);
                     prop_assert!((a.x - b.x).abs() <= 1e-8 && (a.y + b.y).abs() <= 1e-8, "{a} vs {b}");
                 }
             }
-            NPrime::Unwarped => {
+            None => {
                 // The rectangle leaves the focus point below the line, except when the frustum
                 // looks square from the light (the centre line shorter than SQUARE_TOLERANCE · λ,
                 // module docs): then the focus point lands wherever the rectangle puts it (on the
@@ -115,7 +115,7 @@ fn overhead_storage_factor_is_lloyd_eq_12() {
             },
         )
         .unwrap();
-        let eta = t.shadow.n_prime.value();
+        let eta = t.shadow.n_prime().value();
         // Martin & Tan §6.2 by hand: λ = f − n, δ′ = focus, ξ = −0.6.
         let lambda = f - n;
         let by_hand = lambda * focus * 0.4 / (lambda - 2.0 * focus + 0.6 * lambda);
@@ -125,7 +125,7 @@ fn overhead_storage_factor_is_lloyd_eq_12() {
                 "{eta} vs {by_hand}"
             );
         } else {
-            assert!(t.shadow.n_prime.is_unwarped());
+            assert!(t.shadow.n_prime().is_unwarped());
         }
         let e = frustum_max(&view, &t.shadow.shadow_map()).unwrap();
         let n_lsp = n + (f * n).sqrt();
@@ -295,16 +295,16 @@ fn square_fallback_from_behind() {
         search: TsmSearch::EightyPercent,
     };
     let t = tsm(&view, DVec3::NEG_Z, opts).unwrap();
-    assert!(t.shadow.n_prime.is_unwarped() && t.trapezoid.q.is_none());
+    assert!(t.shadow.n_prime().is_unwarped() && t.trapezoid.q.is_none());
     let e = frustum_max(&view, &t.shadow.shadow_map()).unwrap();
     assert!((e.storage_factor - 1e4).abs() < 1e-6);
     let u = warp(&view, DVec3::NEG_Z, WarpRule::Uniform).unwrap();
     let eu = frustum_max(&view, &u.shadow_map()).unwrap();
     assert!((e.storage_factor - eu.storage_factor).abs() < 1e-6);
     let off = tsm(&view, light_from_angles(0.0, 1f64.to_radians()), opts).unwrap();
-    assert!(!off.shadow.n_prime.is_unwarped());
+    assert!(!off.shadow.n_prime().is_unwarped());
     for c in view.corners() {
-        assert!(in_clip(clip(&off.shadow.matrix, c)));
+        assert!(in_clip(clip(&off.shadow.matrix(), c)));
     }
 }
 
@@ -343,7 +343,7 @@ fn iterative_variant_maximises_focus_area() {
             it.focus_area,
             base.focus_area
         );
-        if !it.shadow.n_prime.is_unwarped() {
+        if !it.shadow.n_prime().is_unwarped() {
             let k = (1.0 - it.xi) * 256.0 / 2.0;
             assert!(
                 (k - k.round()).abs() < 1e-9 && (1.0..=205.0).contains(&k.round()),
@@ -351,7 +351,7 @@ fn iterative_variant_maximises_focus_area() {
             );
         }
         for c in view.corners() {
-            assert!(in_clip(clip(&it.shadow.matrix, c)));
+            assert!(in_clip(clip(&it.shadow.matrix(), c)));
         }
         assert!(base.focus_area > 0.0 && base.focus_area <= 1.0 + 1e-12);
     }
@@ -371,7 +371,7 @@ fn general_case_restricts_to_the_bound() {
         ConvexBound::from_aabb(DVec3::splat(-1e3), DVec3::splat(1e3), DMat4::IDENTITY).unwrap();
     let a = tsm(&view, l, opts).unwrap();
     let b = tsm_general(&view, l, &big, opts).unwrap();
-    let diff = (a.shadow.matrix - b.shadow.matrix)
+    let diff = (a.shadow.matrix() - b.shadow.matrix())
         .to_cols_array()
         .iter()
         .fold(0.0f64, |m, d| m.max(d.abs()));
@@ -390,21 +390,21 @@ fn general_case_restricts_to_the_bound() {
     .unwrap();
     let g = tsm_general(&view, l, &bound, opts).unwrap();
     // The box's far end is 45 from the camera: depths beyond it are not covered.
-    assert!(g.shadow.far <= 45.0 + 1e-9 && g.shadow.near >= 1.0 - 1e-12);
+    assert!(g.shadow.far() <= 45.0 + 1e-9 && g.shadow.near() >= 1.0 - 1e-12);
     let inside = DVec3::new(0.0, -2.0, -30.0);
-    assert!(in_clip(clip(&g.shadow.matrix, inside)));
+    assert!(in_clip(clip(&g.shadow.matrix(), inside)));
     // The focus point on the new centre line lands on the 80 % line, and is δ (f_I − n_I)/(f − n)
     // beyond the pushed near plane.
-    assert!(!g.shadow.n_prime.is_unwarped());
-    assert!((clip(&g.shadow.matrix, g.focus_point).y + 0.6).abs() < 1e-9);
+    assert!(!g.shadow.n_prime().is_unwarped());
+    assert!((clip(&g.shadow.matrix(), g.focus_point).y + 0.6).abs() < 1e-9);
     let depth = -g.focus_point.z;
-    let expect = g.shadow.near + 20.0 * (g.shadow.far - g.shadow.near) / 99.0;
+    let expect = g.shadow.near() + 20.0 * (g.shadow.far() - g.shadow.near()) / 99.0;
     assert!(
         (depth - expect).abs() < 1e-9 * expect,
         "{depth} vs {expect}"
     );
-    let m = ShadowMap::new(g.shadow.matrix, l).unwrap();
-    assert!(m.matrix.is_finite());
+    let m = ShadowMap::new(g.shadow.matrix(), l).unwrap();
+    assert!(m.matrix().is_finite());
     // A bound missing the frustum altogether.
     let away = ConvexBound::from_aabb(
         DVec3::new(-1.0, -1.0, 10.0),

@@ -64,8 +64,8 @@ proptest! {
     ) {
         let delta = d * lambda;
         let unwarped = 1.0 - 2.0 * delta / lambda;
-        match tsm_eta(lambda, delta, xi) {
-            Ok(NPrime::Finite(eta)) => {
+        match tsm_eta(lambda, delta, xi).map(NPrime::as_finite) {
+            Ok(Some(eta)) => {
                 prop_assert!(xi < unwarped);
                 prop_assert!((focus_image(lambda, eta, delta) - xi).abs() < 1e-9);
                 // Near the unwarped line the image is flat in η (dξ/dη ∝ 1/η²), so the
@@ -78,10 +78,10 @@ proptest! {
                 let m = tsm_projection(lambda, eta).unwrap();
                 prop_assert!(rel(m[0][0], a) < 1e-9 && rel(m[0][1], b) < 1e-9);
                 prop_assert_eq!(m[1], [1.0, 0.0]);
-                let back = tsm_focus_line(lambda, NPrime::Finite(eta), delta).unwrap();
+                let back = tsm_focus_line(lambda, NPrime::finite(eta).unwrap(), delta).unwrap();
                 prop_assert!((back - xi).abs() < 1e-9);
             }
-            Ok(NPrime::Unwarped) => prop_assert!(rel(xi, unwarped) < 1e-12),
+            Ok(None) => prop_assert!(rel(xi, unwarped) < 1e-12),
             Err(Error::NoSolution(_)) => {
                 prop_assert!(xi > unwarped);
                 // No centre above the top line reaches ξ: even the weakest warp (η → ∞) sends the
@@ -102,10 +102,10 @@ proptest! {
         l in proptest::num::f64::ANY, d in proptest::num::f64::ANY, x in proptest::num::f64::ANY,
     ) {
         for (lambda, delta, xi) in [(l, d, x), (1.0, d, x), (1.0, 0.3, x), (l, 0.3, -0.6), (1.0, d, -0.6)] {
-            if let Ok(NPrime::Finite(v)) = tsm_eta(lambda, delta, xi) {
+            if let Ok(Some(v)) = tsm_eta(lambda, delta, xi).map(NPrime::as_finite) {
                 prop_assert!(v.is_finite() && v > 0.0);
             }
-            for eta in [NPrime::Finite(x), NPrime::Finite(l), NPrime::Unwarped] {
+            for eta in [NPrime::finite(x).ok(), NPrime::finite(l).ok(), Some(NPrime::UNWARPED)].into_iter().flatten() {
                 if let Ok(v) = tsm_focus_line(lambda, eta, delta) {
                     prop_assert!(v.is_finite());
                 }
@@ -151,7 +151,7 @@ fn printed_eta_outside_its_domain() {
         Err(Error::NoSolution(_))
     ));
     // On the unwarped line itself the answer is η = ∞.
-    assert_eq!(tsm_eta(1.0, 0.8, -0.6), Ok(NPrime::Unwarped));
+    assert_eq!(tsm_eta(1.0, 0.8, -0.6), Ok(NPrime::UNWARPED));
 }
 
 #[test]
@@ -166,8 +166,10 @@ fn domain_errors_name_the_argument() {
     assert_eq!(name(tsm_eta(1.0, 1.0, 0.0)), "delta_prime");
     assert_eq!(name(tsm_eta(1.0, 0.5, -1.0)), "xi");
     assert_eq!(name(tsm_eta(1.0, 0.5, f64::INFINITY)), "xi");
-    assert!(tsm_focus_line(1.0, NPrime::Finite(-2.0), 0.5).is_err());
-    assert_eq!(tsm_focus_line(1.0, NPrime::Unwarped, 0.25), Ok(0.5));
+    assert!(NPrime::finite(-2.0)
+        .and_then(|n| tsm_focus_line(1.0, n, 0.5))
+        .is_err());
+    assert_eq!(tsm_focus_line(1.0, NPrime::UNWARPED, 0.25), Ok(0.5));
 }
 
 /// Where §6.1's top line crosses the centre line, as an eye-space x coordinate, for a directional

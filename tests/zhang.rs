@@ -99,7 +99,7 @@ proptest! {
     #[test]
     fn frame_quantities_match_the_twin(c in config()) {
         let th = LightAngle::new(c.theta).unwrap();
-        let w = twin(&c.view, c.theta, NPrime::Finite(c.lambda));
+        let w = twin(&c.view, c.theta, NPrime::finite(c.lambda).unwrap());
         prop_assert!(rel(zhang_mu(&c.view, th).unwrap(), w.depth_range) < 1e-9);
         let p = DVec3::new(c.x, c.y, -c.z);
         let zw_twin = p.dot(w.warp_axis) - w.z_min + c.lambda;
@@ -113,16 +113,16 @@ proptest! {
     #[test]
     fn global_representation_matches_the_twin(c in config()) {
         let th = LightAngle::new(c.theta).unwrap();
-        let l = NPrime::Finite(c.lambda);
+        let l = NPrime::finite(c.lambda).unwrap();
         let m = measured(&c.view, &twin(&c.view, c.theta, l), c.x, c.y, c.z);
         let eq = zhang_eq(&c.view, l, th, c.y, c.z).unwrap();
         let ep = zhang_ep(&c.view, l, th, c.y, c.z).unwrap();
         prop_assert!(rel(eq, 2.0 * m.mx) < 1e-9, "E_q {eq} vs measured {}", 2.0 * m.mx);
         prop_assert!(rel(ep, 2.0 * m.mz) < 1e-9, "E_p {ep} vs measured {}", 2.0 * m.mz);
         // The unwarped map too.
-        let m = measured(&c.view, &twin(&c.view, c.theta, NPrime::Unwarped), c.x, c.y, c.z);
-        prop_assert!(rel(zhang_eq(&c.view, NPrime::Unwarped, th, c.y, c.z).unwrap(), 2.0 * m.mx) < 1e-9);
-        prop_assert!(rel(zhang_ep(&c.view, NPrime::Unwarped, th, c.y, c.z).unwrap(), 2.0 * m.mz) < 1e-9);
+        let m = measured(&c.view, &twin(&c.view, c.theta, NPrime::UNWARPED), c.x, c.y, c.z);
+        prop_assert!(rel(zhang_eq(&c.view, NPrime::UNWARPED, th, c.y, c.z).unwrap(), 2.0 * m.mx) < 1e-9);
+        prop_assert!(rel(zhang_ep(&c.view, NPrime::UNWARPED, th, c.y, c.z).unwrap(), 2.0 * m.mz) < 1e-9);
     }
 
     /// The factored form F·(z + G)^k/z (crate's F_q, F_p, G) equals the direct E^pers for θ > 0.
@@ -130,7 +130,7 @@ proptest! {
     fn f_and_g_factor_the_global_representation(c in config()) {
         prop_assume!(c.theta > 1e-3);
         let th = LightAngle::new(c.theta).unwrap();
-        let l = NPrime::Finite(c.lambda);
+        let l = NPrime::finite(c.lambda).unwrap();
         let g = zhang_g(&c.view, c.lambda, th, c.y).unwrap();
         let fq = zhang_f_q(&c.view, c.lambda, th).unwrap();
         let fp = zhang_f_p(&c.view, c.lambda, th).unwrap();
@@ -149,7 +149,7 @@ proptest! {
         c in config(), kx in -3.0f64..3.0, ky in -3.0f64..3.0,
     ) {
         let th = LightAngle::new(c.theta).unwrap();
-        let w = twin(&c.view, c.theta, NPrime::Finite(c.lambda));
+        let w = twin(&c.view, c.theta, NPrime::finite(c.lambda).unwrap());
         let fac = zhang_factorisation(&c.view, c.lambda, th, c.x, c.y, c.z, SurfaceSlope { k_x: kx, k_y: ky });
         let full = aliasing_functions(&c.view, &w.shadow, DVec3::new(c.x, c.y, -c.z), DVec3::new(kx, ky, -1.0));
         match (fac, full) {
@@ -169,7 +169,7 @@ proptest! {
     #[test]
     fn local_is_global_overhead_and_twice_lloyd(c in config()) {
         let (n, f, t) = (c.view.near(), c.view.far(), c.view.tan_half_fov());
-        let l = NPrime::Finite(c.lambda);
+        let l = NPrime::finite(c.lambda).unwrap();
         let up = LightAngle::new(FRAC_PI_2).unwrap();
         let (eql, epl) = (zhang_eq_local(&c.view, l, c.z).unwrap(), zhang_ep_local(&c.view, l, c.z).unwrap());
         prop_assert!(rel(zhang_eq(&c.view, l, up, 0.0, c.z).unwrap(), eql) < 1e-9);
@@ -178,7 +178,7 @@ proptest! {
         prop_assert!(rel(eql, 2.0 * m.mx) < 1e-9);
         prop_assert!(rel(epl, 2.0 * m.mz) < 1e-9);
         let np = c.lambda.max(n);
-        let (ln, z) = (NPrime::Finite(np), c.z);
+        let (ln, z) = (NPrime::finite(np).unwrap(), c.z);
         let lloyd_mx = f * (np + z - n) / (z * (np + f - n));
         let lloyd_mz = (f - n) / (2.0 * t) * (np + z - n).powi(2) / (z * np * (np + f - n));
         prop_assert!(rel(zhang_eq_local(&c.view, ln, z).unwrap(), 2.0 * lloyd_mx) < 1e-12);
@@ -189,7 +189,7 @@ proptest! {
     /// (measured on the twin).
     #[test]
     fn errors_increase_as_y_decreases(c in config(), u in 0.0f64..1.0) {
-        let l = NPrime::Finite(c.lambda);
+        let l = NPrime::finite(c.lambda).unwrap();
         let w = twin(&c.view, c.theta, l);
         let y2 = c.y + u * (c.z * c.view.tan_half_fov() - c.y);
         let (a, b) = (measured(&c.view, &w, c.x, c.y, c.z), measured(&c.view, &w, c.x, y2, c.z));
@@ -206,7 +206,7 @@ proptest! {
         k in proptest::num::f64::ANY,
     ) {
         let th = LightAngle::new(c.theta).unwrap();
-        for lam in [NPrime::Finite(l), NPrime::new(l).unwrap_or(NPrime::Unwarped), NPrime::Finite(c.lambda)] {
+        for lam in [NPrime::finite(l).ok(), Some(NPrime::new(l).unwrap_or(NPrime::UNWARPED)), NPrime::finite(c.lambda).ok()].into_iter().flatten() {
             for (yy, zz) in [(y, z), (c.y, z), (y, c.z), (c.y, c.z)] {
                 for v in [
                     zhang_eq(&c.view, lam, th, yy, zz),
@@ -245,7 +245,7 @@ prop_assert!(v.is_finite());
     #[test]
     fn behind_is_the_mirror_image(c in config()) {
         let th = LightAngle::new(c.theta).unwrap();
-        let l = NPrime::Finite(c.lambda);
+        let l = NPrime::finite(c.lambda).unwrap();
         let wb = tilted_warp(&c.view, th, TiltSide::Behind, l).unwrap();
         let m = measured(&c.view, &wb, c.x, -c.y, c.z);
         prop_assert!(rel(zhang_ep(&c.view, l, th, c.y, c.z).unwrap(), 2.0 * m.mz) < 1e-9);
@@ -310,7 +310,7 @@ fn printed_mu_z_w_g_f_q_agree_with_the_twin() {
     let view = ViewFrustum::new(n, f, phi).unwrap();
     for theta in [0.2, 0.5, 0.9, 1.2, 1.5] {
         let lambda = 11.0;
-        let w = twin(&view, theta, NPrime::Finite(lambda));
+        let w = twin(&view, theta, NPrime::finite(lambda).unwrap());
         assert!(rel(printed::mu(n, f, phi, theta), w.depth_range) < 1e-12);
         for (y, z) in [(0.0, 1.0), (-20.0, 40.0), (57.0, 99.0)] {
             let p = DVec3::new(0.0, y, -z);
@@ -336,7 +336,7 @@ fn printed_mu_z_w_g_f_q_agree_with_the_twin() {
 fn printed_tan_phi_w_cuts_off_the_far_top_corners() {
     let (n, f, phi, theta, lambda) = (1.0, 100.0, FRAC_PI_6, 60f64.to_radians(), 11.0);
     let view = ViewFrustum::new(n, f, phi).unwrap();
-    let w = twin(&view, theta, NPrime::Finite(lambda));
+    let w = twin(&view, theta, NPrime::finite(lambda).unwrap());
     let printed = printed::tan_phi_w(n, f, phi, lambda, theta);
     let fitted = zhang_tan_phi_w(&view, lambda, LightAngle::new(theta).unwrap()).unwrap();
     assert!(rel(fitted, w.half_extent_x) < 1e-12);
@@ -377,7 +377,7 @@ fn printed_f_p_disagrees_with_the_twin() {
         let pr = printed::f_p(n, f, phi, lambda, theta) * (z + g).powi(2) / z;
         let m = measured(
             &view,
-            &twin(&view, theta, NPrime::Finite(lambda)),
+            &twin(&view, theta, NPrime::finite(lambda).unwrap()),
             0.0,
             0.0,
             z,
@@ -406,7 +406,7 @@ fn printed_f_q_and_eq8_need_far_corners_to_bound_w() {
     let eq8 = |l: f64, z: f64| 2.0 * f / (f - n + l) * (z - n + l) / z;
     let m = measured(
         &view,
-        &twin(&view, FRAC_PI_2, NPrime::Finite(0.5)),
+        &twin(&view, FRAC_PI_2, NPrime::finite(0.5).unwrap()),
         0.0,
         0.0,
         1.0,
@@ -415,7 +415,7 @@ fn printed_f_q_and_eq8_need_far_corners_to_bound_w() {
     assert!((2.0 * m.mx - 2.0).abs() < 1e-9);
     assert!(
         rel(
-            zhang_eq_local(&view, NPrime::Finite(0.5), 1.0).unwrap(),
+            zhang_eq_local(&view, NPrime::finite(0.5).unwrap(), 1.0).unwrap(),
             2.0 * m.mx
         ) < 1e-12
     );
@@ -425,7 +425,7 @@ fn printed_f_q_and_eq8_need_far_corners_to_bound_w() {
     let pr = printed::f_q(n, f, phi, lambda, theta) * (z + g) / z;
     let m = measured(
         &view,
-        &twin(&view, theta, NPrime::Finite(lambda)),
+        &twin(&view, theta, NPrime::finite(lambda).unwrap()),
         0.0,
         y,
         z,
@@ -455,7 +455,7 @@ fn printed_section_2_forms_disagree_with_the_twin() {
     let view = ViewFrustum::new(n, f, phi).unwrap();
     let m = measured(
         &view,
-        &twin(&view, FRAC_PI_2, NPrime::Finite(lambda)),
+        &twin(&view, FRAC_PI_2, NPrime::finite(lambda).unwrap()),
         0.0,
         0.0,
         z,
@@ -482,7 +482,7 @@ fn printed_section_2_forms_disagree_with_the_twin() {
 fn section_3_1_minimum_of_e_p_is_not_at_the_far_plane() {
     let (n, f, phi, lambda) = (1.0, 100.0, FRAC_PI_6, 11.0);
     let view = ViewFrustum::new(n, f, phi).unwrap();
-    let w = twin(&view, FRAC_PI_2, NPrime::Finite(lambda));
+    let w = twin(&view, FRAC_PI_2, NPrime::finite(lambda).unwrap());
     let at = |z: f64| 2.0 * measured(&view, &w, 0.0, z * phi.tan(), z).mz;
     let (mid, far) = (at(10.0), at(100.0));
     assert!((mid - 5.669).abs() < 1e-3, "{mid}");
@@ -511,9 +511,9 @@ fn light_behind_needs_y_mirrored() {
     let (n, f, phi, lambda) = (1.0, 100.0, FRAC_PI_6, 11.0);
     let view = ViewFrustum::new(n, f, phi).unwrap();
     let th = LightAngle::new(60f64.to_radians()).unwrap();
-    let w = tilted_warp(&view, th, TiltSide::Behind, NPrime::Finite(lambda)).unwrap();
+    let w = tilted_warp(&view, th, TiltSide::Behind, NPrime::finite(lambda).unwrap()).unwrap();
     let m = measured(&view, &w, 0.0, 5.0, 10.0);
-    let l = NPrime::Finite(lambda);
+    let l = NPrime::finite(lambda).unwrap();
     let (same, mirrored) = (
         zhang_ep(&view, l, th, 5.0, 10.0).unwrap(),
         zhang_ep(&view, l, th, -5.0, 10.0).unwrap(),
@@ -530,13 +530,13 @@ fn light_behind_needs_y_mirrored() {
 fn section_3_1_maximum_of_e_q_depends_on_lambda() {
     let (n, f, phi, theta, lambda) = (1.0, 100.0, FRAC_PI_6, 60f64.to_radians(), 0.2);
     let view = ViewFrustum::new(n, f, phi).unwrap();
-    let w = twin(&view, theta, NPrime::Finite(lambda));
+    let w = twin(&view, theta, NPrime::finite(lambda).unwrap());
     let near = 2.0 * measured(&view, &w, 0.0, -n * phi.tan(), n).mx;
     let far = 2.0 * measured(&view, &w, 0.0, -f * phi.tan(), f).mx;
     assert!((near - 7.774).abs() < 1e-3, "{near}");
     assert!((far - 11.51).abs() < 1e-2, "{far}");
     // With LiSPSM's λ the claim holds.
-    let w = twin(&view, theta, NPrime::Finite(11.0));
+    let w = twin(&view, theta, NPrime::finite(11.0).unwrap());
     let near = measured(&view, &w, 0.0, -n * phi.tan(), n).mx;
     let far = measured(&view, &w, 0.0, -f * phi.tan(), f).mx;
     assert!(near > far);
@@ -550,7 +550,7 @@ fn degenerate_case_claims_hold() {
     let (n, f, phi) = (1.0, 100.0, FRAC_PI_6);
     let view = ViewFrustum::new(n, f, phi).unwrap();
     for theta in [0.0, 0.2, phi] {
-        let w = twin(&view, theta, NPrime::Finite(5.0));
+        let w = twin(&view, theta, NPrime::finite(5.0).unwrap());
         let c = view.corners();
         let proj = |p: DVec3| (p.x, p.dot(w.warp_axis));
         let (fx, fz): (Vec<f64>, Vec<f64>) = c[4..].iter().map(|&p| proj(p)).unzip();
@@ -564,7 +564,7 @@ fn degenerate_case_claims_hold() {
         }
     }
     for lambda in [0.5, 5.0, 500.0] {
-        let w = twin(&view, 0.0, NPrime::Finite(lambda));
+        let w = twin(&view, 0.0, NPrime::finite(lambda).unwrap());
         let y = 0.3;
         let base = 2.0 * measured(&view, &w, 0.0, y, 1.0).mz * 1.0;
         for z in [2.0, 10.0, 100.0] {
@@ -588,8 +588,14 @@ fn theta_zero_is_finite() {
             ..
         })
     ));
-    let m = measured(&view, &twin(&view, 0.0, NPrime::Finite(3.0)), 0.0, 1.0, 7.0);
-    let eq = zhang_eq(&view, NPrime::Finite(3.0), th, 1.0, 7.0).unwrap();
+    let m = measured(
+        &view,
+        &twin(&view, 0.0, NPrime::finite(3.0).unwrap()),
+        0.0,
+        1.0,
+        7.0,
+    );
+    let eq = zhang_eq(&view, NPrime::finite(3.0).unwrap(), th, 1.0, 7.0).unwrap();
     assert!(rel(eq, 2.0 * m.mx) < 1e-12);
     // By hand: tan φ_w / tan φ = f/λ, z_w = f tan φ − y + λ, E_q = 2 (f/λ) z_w / z = 568.91.
     let by_hand = 2.0 * (100.0 / 3.0) * (100.0 * FRAC_PI_6.tan() - 1.0 + 3.0) / 7.0;
@@ -605,26 +611,30 @@ fn domain_errors_name_the_argument() {
         other => panic!("{other:?}"),
     };
     assert_eq!(
-        name(zhang_eq(&view, NPrime::Finite(0.0), th, 0.0, 2.0)),
+        name(NPrime::named("lambda", 0.0).and_then(|n| zhang_eq(&view, n, th, 0.0, 2.0))),
         "lambda"
     );
     assert_eq!(
-        name(zhang_ep(&view, NPrime::Finite(f64::NAN), th, 0.0, 2.0)),
+        name(NPrime::named("lambda", f64::NAN).and_then(|n| zhang_ep(&view, n, th, 0.0, 2.0))),
         "lambda"
     );
     assert_eq!(
-        name(zhang_ep(&view, NPrime::Finite(1.0), th, 0.0, 0.5)),
+        name(zhang_ep(&view, NPrime::finite(1.0).unwrap(), th, 0.0, 0.5)),
         "z"
     );
     assert_eq!(
-        name(zhang_eq(&view, NPrime::Finite(1.0), th, 5.0, 2.0)),
+        name(zhang_eq(&view, NPrime::finite(1.0).unwrap(), th, 5.0, 2.0)),
         "y"
     );
     assert_eq!(
-        name(zhang_eq_local(&view, NPrime::Finite(1.0), f64::INFINITY)),
+        name(zhang_eq_local(
+            &view,
+            NPrime::finite(1.0).unwrap(),
+            f64::INFINITY
+        )),
         "z"
     );
-    assert!(zhang_ep_local(&view, NPrime::Unwarped, 3.0).unwrap() > 0.0);
+    assert!(zhang_ep_local(&view, NPrime::UNWARPED, 3.0).unwrap() > 0.0);
 }
 
 /// Erratum (§2.1, Eq 8, 9): Eq 8 is printed with "≈" ("when approximating dx/dt with
@@ -639,7 +649,7 @@ fn domain_errors_name_the_argument() {
 #[test]
 fn eq8_is_exact_on_the_axis_and_eq9_assumes_unit_slope() {
     let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
-    let l = NPrime::Finite(11.0);
+    let l = NPrime::finite(11.0).unwrap();
     let w = twin(&view, FRAC_PI_2, l);
     let eq8 = zhang_eq_local(&view, l, 10.0).unwrap();
     let eq9 = zhang_ep_local(&view, l, 10.0).unwrap();
@@ -690,7 +700,7 @@ fn section_3_1_e_q_grows_with_z_on_the_upper_part_for_ordinary_lambda() {
     let y = 40.0;
     let z_top = y / phi.tan();
     for (lambda, at_top, at_far) in [(11.0, 2.1356, 2.2602), (9.238, 2.1157, 2.2671)] {
-        let w = twin(&view, theta, NPrime::Finite(lambda));
+        let w = twin(&view, theta, NPrime::finite(lambda).unwrap());
         let e = |z: f64| 2.0 * measured(&view, &w, 0.0, y, z).mx;
         assert!((e(z_top) - at_top).abs() < 1e-4, "{}", e(z_top));
         assert!((e(f) - at_far).abs() < 1e-4, "{}", e(f));
@@ -706,7 +716,7 @@ fn section_3_1_e_q_grows_with_z_on_the_upper_part_for_ordinary_lambda() {
         assert!(e0(n) > e0(10.0) && e0(10.0) > e0(f));
     }
     // λ above the bound: E_q falls along z at every y, the top plane included.
-    let w = twin(&view, theta, NPrime::Finite(30.0));
+    let w = twin(&view, theta, NPrime::finite(30.0).unwrap());
     for y in [-40.0, 0.0, 40.0, 55.0] {
         let e = |z: f64| 2.0 * measured(&view, &w, 0.0, y, z).mx;
         let z0 = ((y / phi.tan()).abs() * (1.0 + 1e-9)).max(n);

@@ -16,7 +16,7 @@ type Any<'py> = Bound<'py, PyAny>;
 
 /// n′ from a float: +∞ is the unwarped map; anything else must be finite and > 0.
 pub fn n_prime_arg(name: &'static str, v: f64) -> Result<NPrime, Error> {
-    NPrime::new(v).map_err(|e| rename(e, "n_prime", name))
+    NPrime::named(name, v)
 }
 
 /// The same error with the argument `from` called `to`.

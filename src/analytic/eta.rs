@@ -8,7 +8,7 @@
 //!
 //! | η | n′ | map |
 //! |---|---|---|
-//! | −1 | ∞ ([`NPrime::Unwarped`]) | orthographic, M_z largest, on the near plane |
+//! | −1 | ∞ ([`NPrime::UNWARPED`]) | orthographic, M_z largest, on the near plane |
 //! | 0 | n + √(f n) | LiSPSM: M_z smallest, equal on near and far planes |
 //! | +1 | n | PSM: M_z largest again, on the far plane |
 //!
@@ -16,8 +16,8 @@
 //! use shadow_aliasing::analytic::eta::{eta_from_n_prime, n_prime_from_eta};
 //! use shadow_aliasing::NPrime;
 //! let n0 = n_prime_from_eta(1.0, 100.0, 0.0)?;
-//! assert_eq!(n0, NPrime::Finite(11.0)); // n + √(f n)
-//! assert_eq!(n_prime_from_eta(1.0, 100.0, -1.0)?, NPrime::Unwarped);
+//! assert_eq!(n0, NPrime::finite(11.0)?); // n + √(f n)
+//! assert_eq!(n_prime_from_eta(1.0, 100.0, -1.0)?, NPrime::UNWARPED);
 //! assert!((eta_from_n_prime(1.0, 100.0, n0)? - 0.0).abs() < 1e-15);
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
@@ -64,16 +64,10 @@ fn bad_near_far(n: f64, f: f64) -> Error {
 /// Validates Lloyd's light-overhead domain n′ ≥ near; returns n′ or `None` for n′ = ∞.
 #[inline]
 pub(crate) fn n_prime_at_least(n_prime: NPrime, near: f64) -> Result<Option<f64>> {
-    match n_prime {
-        NPrime::Unwarped => Ok(None),
-        NPrime::Finite(v) => {
-            let v = positive("n_prime", v)?;
-            if v < near {
-                Err(n_prime_below_near(v, near))
-            } else {
-                Ok(Some(v))
-            }
-        }
+    match n_prime.as_finite() {
+        None => Ok(None),
+        Some(v) if v < near => Err(n_prime_below_near(v, near)),
+        Some(v) => Ok(Some(v)),
     }
 }
 
@@ -125,7 +119,7 @@ pub fn n_prime_psm(near: f64, far: f64) -> Result<f64> {
 /// ```
 ///
 /// n = `near`, f = `far` (eye-space depths), η dimensionless. η = −1 gives n′ = ∞, returned as
-/// [`NPrime::Unwarped`]; so does an η so close to −1 that n′ overflows.
+/// [`NPrime::UNWARPED`]; so does an η so close to −1 that n′ overflows.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far) or `eta` (∈ [−1, 1]).
@@ -136,16 +130,13 @@ pub fn n_prime_from_eta(near: f64, far: f64, eta: f64) -> Result<NPrime> {
     let ra = alpha.sqrt();
     if eta <= 0.0 {
         if eta == -1.0 {
-            return Ok(NPrime::Unwarped);
+            return Ok(NPrime::UNWARPED);
         }
         let v = n * ((ra + 1.0 - eta * (alpha - 1.0)) / (eta + 1.0));
-        if v.is_finite() {
-            Ok(NPrime::Finite(v))
-        } else {
-            Ok(NPrime::Unwarped)
-        }
+        Ok(NPrime::finite_or_unwarped(v))
     } else {
-        finite_result("n_prime", n * ((ra + 1.0) / (eta * ra + 1.0))).map(NPrime::Finite)
+        // n′ ≥ n > 0 for η ∈ (0, 1].
+        finite_result("n_prime", n * ((ra + 1.0) / (eta * ra + 1.0))).map(NPrime::finite_unchecked)
     }
 }
 
@@ -197,20 +188,26 @@ mod tests {
     #[test]
     fn hand_values() {
         // α = 100: n′(0) = 11, n′(1) = 1, n′(−0.5) = (11 + 49.5)/0.5 = 121, n′(0.5) = 11/6.
-        assert_eq!(n_prime_from_eta(1.0, 100.0, 0.0), Ok(NPrime::Finite(11.0)));
-        assert_eq!(n_prime_from_eta(1.0, 100.0, 1.0), Ok(NPrime::Finite(1.0)));
+        assert_eq!(
+            n_prime_from_eta(1.0, 100.0, 0.0),
+            Ok(NPrime::finite(11.0).unwrap())
+        );
+        assert_eq!(
+            n_prime_from_eta(1.0, 100.0, 1.0),
+            Ok(NPrime::finite(1.0).unwrap())
+        );
         assert_eq!(
             n_prime_from_eta(1.0, 100.0, -0.5),
-            Ok(NPrime::Finite(121.0))
+            Ok(NPrime::finite(121.0).unwrap())
         );
         let h = n_prime_from_eta(2.0, 200.0, 0.5).unwrap().value();
         assert!((h - 2.0 * 11.0 / 6.0).abs() < 1e-14);
         assert_eq!(
-            eta_from_n_prime(1.0, 100.0, NPrime::Finite(121.0)),
+            eta_from_n_prime(1.0, 100.0, NPrime::finite(121.0).unwrap()),
             Ok(-0.5)
         );
-        assert_eq!(eta_from_n_prime(1.0, 100.0, NPrime::Unwarped), Ok(-1.0));
-        assert!(eta_from_n_prime(1.0, 100.0, NPrime::Finite(0.5)).is_err());
+        assert_eq!(eta_from_n_prime(1.0, 100.0, NPrime::UNWARPED), Ok(-1.0));
+        assert!(eta_from_n_prime(1.0, 100.0, NPrime::finite(0.5).unwrap()).is_err());
         assert!(n_prime_from_eta(1.0, 100.0, 1.5).is_err());
         assert_eq!(n_prime_lispsm(1.0, 100.0), Ok(11.0));
         assert_eq!(n_prime_psm(3.0, 100.0), Ok(3.0));

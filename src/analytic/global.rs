@@ -34,7 +34,7 @@
 //! use shadow_aliasing::analytic::global::{zhang_ep, zhang_ep_local, zhang_eq, zhang_eq_local};
 //! use shadow_aliasing::{LightAngle, NPrime, ViewFrustum};
 //! let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6)?;
-//! let lambda = NPrime::Finite(11.0);
+//! let lambda = NPrime::finite(11.0)?;
 //! let up = LightAngle::new(std::f64::consts::FRAC_PI_2)?;
 //! // At θ = π/2 and y = 0 the global representation is the local one.
 //! let (g, l) = (zhang_ep(&view, lambda, up, 0.0, 10.0)?, zhang_ep_local(&view, lambda, 10.0)?);
@@ -44,7 +44,7 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::analytic::tilted::{depth_in_view, finite_n_prime, warp_depth_range};
+use crate::analytic::tilted::{depth_in_view, warp_depth_range};
 use crate::error::{finite, finite_result, fmt_num, positive, Error, Result};
 use crate::frustum::{LightAngle, NPrime, ViewFrustum};
 
@@ -273,7 +273,7 @@ pub fn zhang_eq(
     y: f64,
     z: f64,
 ) -> Result<f64> {
-    let lambda = finite_n_prime("lambda", lambda)?;
+    let lambda = lambda.as_finite();
     let (y, z) = point_in_view(view, y, z)?;
     let t = view.tan_half_fov();
     finite_result(
@@ -310,7 +310,7 @@ pub fn zhang_ep(
     y: f64,
     z: f64,
 ) -> Result<f64> {
-    let lambda = finite_n_prime("lambda", lambda)?;
+    let lambda = lambda.as_finite();
     let (y, z) = point_in_view(view, y, z)?;
     let t = view.tan_half_fov();
     // One sin_cos of θ for μ and z_w (zhang_mu and z_w_offset would take it twice).
@@ -343,7 +343,7 @@ pub fn zhang_ep(
 /// `[near, far]`).
 #[inline]
 pub fn zhang_eq_local(view: &ViewFrustum, lambda: NPrime, z: f64) -> Result<f64> {
-    let lambda = finite_n_prime("lambda", lambda)?;
+    let lambda = lambda.as_finite();
     let z = depth_in_view(view, z)?;
     let (n, f) = (view.near(), view.far());
     finite_result(
@@ -368,7 +368,7 @@ pub fn zhang_eq_local(view: &ViewFrustum, lambda: NPrime, z: f64) -> Result<f64>
 /// `[near, far]`).
 #[inline]
 pub fn zhang_ep_local(view: &ViewFrustum, lambda: NPrime, z: f64) -> Result<f64> {
-    let lambda = finite_n_prime("lambda", lambda)?;
+    let lambda = lambda.as_finite();
     let z = depth_in_view(view, z)?;
     let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
     finite_result(
@@ -470,8 +470,9 @@ pub fn zhang_factorisation(
             "the surface contains the light direction: projection aliasing is infinite".into(),
         ));
     }
-    let eq_pers = zhang_eq(view, NPrime::Finite(l), light_angle, y, z)?;
-    let ep_pers = zhang_ep(view, NPrime::Finite(l), light_angle, y, z)?;
+    let lambda = NPrime::finite_unchecked(l);
+    let eq_pers = zhang_eq(view, lambda, light_angle, y, z)?;
+    let ep_pers = zhang_ep(view, lambda, light_angle, y, z)?;
     let f = Factorisation {
         eq_pers,
         eq_proj: finite_result("E_q^proj", ((kx - x / z) / den_q).abs())?,

@@ -16,7 +16,7 @@
 //! use shadow_aliasing::analytic::overhead::{max_mx, max_mz, storage_factor};
 //! use shadow_aliasing::{NPrime, Resolutions, ViewFrustum};
 //! let v = ViewFrustum::new(1.0, 100.0, 45f64.to_radians())?;
-//! let lispsm = NPrime::Finite(v.n_prime_lispsm());
+//! let lispsm = NPrime::finite(v.n_prime_lispsm())?;
 //! let r = Resolutions::default();
 //! let s = max_mx(1.0, 100.0, lispsm, r)? * max_mz(&v, lispsm, r)?;
 //! assert!((s - storage_factor(&v, lispsm)?).abs() < 1e-12 * s);
@@ -263,8 +263,8 @@ pub fn budget_resolution(
     //   2 tan θ f² n′² / (n (f − n) (n′ + f − n)²)   n′ ≤ n′_LSPSM,   2 tan θ f / (f − n)   else.
     let (n, f) = (view.near(), view.far());
     let t2 = 2.0 * view.tan_half_fov();
-    let (num, den) = match n_prime {
-        NPrime::Finite(np) if np <= lispsm(view) => {
+    let (num, den) = match n_prime.as_finite() {
+        Some(np) if np <= lispsm(view) => {
             let (a, fp) = (np + f - n, f * np);
             (fp * fp * t2, n * (f - n) * (a * a))
         }
@@ -310,7 +310,7 @@ mod tests {
     fn hand_values() {
         let v = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_4).unwrap();
         let r = Resolutions::default();
-        let l = NPrime::Finite(11.0);
+        let l = NPrime::finite(11.0).unwrap();
         // m_x(1) = 100·11/110 = 10; m_x(100) = 100·110/(100·110) = 1.
         assert!((mx(1.0, 100.0, l, 1.0, r).unwrap() - 10.0).abs() < 1e-13);
         assert!((mx(1.0, 100.0, l, 100.0, r).unwrap() - 1.0).abs() < 1e-13);
@@ -320,13 +320,13 @@ mod tests {
         assert!((mz(&v, l, 100.0, r).unwrap() - 4.95 / t).abs() < 1e-12);
         assert!((max_mz(&v, l, r).unwrap() - 4.95 / t).abs() < 1e-12);
         // Unwarped: S̄ = 99/2 · 100 = 4950.
-        assert!((storage_factor(&v, NPrime::Unwarped).unwrap() - 4950.0 / t).abs() < 1e-9);
+        assert!((storage_factor(&v, NPrime::UNWARPED).unwrap() - 4950.0 / t).abs() < 1e-9);
         // Budget: S₀ = 4 S̄ halves the error.
         let s = storage_factor(&v, l).unwrap();
         let b = budget_resolution(&v, l, 4.0 * s).unwrap();
         assert!((b.res_s * b.res_t - 4.0 * s).abs() < 1e-9 * s);
         assert!((budget_error(&v, l, 4.0 * s, 1.0).unwrap() - 0.5).abs() < 1e-14);
         assert!(mx(1.0, 100.0, l, 0.5, r).is_err());
-        assert!(mx(1.0, 100.0, NPrime::Finite(0.5), 2.0, r).is_err());
+        assert!(mx(1.0, 100.0, NPrime::finite(0.5).unwrap(), 2.0, r).is_err());
     }
 }

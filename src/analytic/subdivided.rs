@@ -24,7 +24,7 @@
 //! use shadow_aliasing::NPrime;
 //! let alpha = 100.0;
 //! let n = n_from_xi(alpha, 0.0)?; // LiSPSM: 1 + √α
-//! assert_eq!(n, NPrime::Finite(11.0));
+//! assert_eq!(n, NPrime::finite(11.0)?);
 //! // g is 1/√α on both planes there.
 //! assert!((distribution_g(alpha, n, 1.0)? - 0.1).abs() < 1e-15);
 //! assert!((distribution_g(alpha, n, alpha)? - 0.1).abs() < 1e-15);
@@ -59,10 +59,9 @@ fn alpha_not_above_one(a: f64) -> Error {
 /// Validates the warp distance n ≥ 1 (the warp frustum must contain the view frustum).
 #[inline]
 fn n_warp_ok(n_warp: NPrime) -> Result<Option<f64>> {
-    match n_warp {
-        NPrime::Unwarped => Ok(None),
-        NPrime::Finite(v) => {
-            let v = positive("n_warp", v)?;
+    match n_warp.as_finite() {
+        None => Ok(None),
+        Some(v) => {
             if v < 1.0 {
                 Err(Error::invalid(
                     "n_warp",
@@ -204,7 +203,7 @@ pub fn xi_from_n(alpha: f64, n_warp: NPrime) -> Result<f64> {
 /// The warp distance n from ξ (Lloyd 2005 Eq 4).
 ///
 /// ```text
-/// n = (√α + 1 − ξ (α − 1)) / (ξ + 1)   −1 ≤ ξ ≤ 0   (ξ = −1: n = ∞, [`NPrime::Unwarped`])
+/// n = (√α + 1 − ξ (α − 1)) / (ξ + 1)   −1 ≤ ξ ≤ 0   (ξ = −1: n = ∞, [`NPrime::UNWARPED`])
 /// n = (√α + 1) / (ξ √α + 1)           0 < ξ ≤ 1
 /// ```
 ///
@@ -518,13 +517,13 @@ mod tests {
         // Eq 9: ξ = 1 gives r_p/r_t; ξ = −1 gives α.
         assert!((max_mx(100.0, 1.0, 1.0, 1.0).unwrap() - 1.0).abs() < 1e-14);
         assert!((max_mx(100.0, -1.0, 1.0, 1.0).unwrap() - 100.0).abs() < 1e-12);
-        assert_eq!(n_from_xi(100.0, -1.0), Ok(NPrime::Unwarped));
-        assert_eq!(xi_from_n(100.0, NPrime::Finite(1.0)), Ok(1.0));
+        assert_eq!(n_from_xi(100.0, -1.0), Ok(NPrime::UNWARPED));
+        assert_eq!(xi_from_n(100.0, NPrime::finite(1.0).unwrap()), Ok(1.0));
         let mut w = [0u32; 3];
         allocate_texels_whole(&[1.0, 1.0, 1.0], 100, &mut w).unwrap();
         assert_eq!(w, [34, 33, 33]);
-        assert!(distribution_g(1.0, NPrime::Unwarped, 1.0).is_err());
-        assert!(distribution_g(10.0, NPrime::Finite(0.5), 1.0).is_err());
+        assert!(distribution_g(1.0, NPrime::UNWARPED, 1.0).is_err());
+        assert!(distribution_g(10.0, NPrime::finite(0.5).unwrap(), 1.0).is_err());
         assert!(allocate_texels(&[1.0, 0.0], 10.0, &mut [0.0; 2]).is_err());
     }
 }

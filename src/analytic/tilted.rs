@@ -35,9 +35,9 @@
 //! let overhead = LightAngle::new(std::f64::consts::FRAC_PI_2)?;
 //! assert!((generalized_n_prime(&view, overhead, Falloff::Barroso).value() - 11.0).abs() < 1e-12);
 //! // Below γ_lim it grows, and it is unwarped when light and view are parallel.
-//! assert_eq!(generalized_n_prime(&view, LightAngle::new(0.0)?, Falloff::Zhang), NPrime::Unwarped);
+//! assert_eq!(generalized_n_prime(&view, LightAngle::new(0.0)?, Falloff::Zhang), NPrime::UNWARPED);
 //! assert!(gamma_lim(&view) > view.half_fov());
-//! let m = tilted_mz(&view, NPrime::Finite(11.0), overhead, 1.0, Resolutions::default())?;
+//! let m = tilted_mz(&view, NPrime::finite(11.0)?, overhead, 1.0, Resolutions::default())?;
 //! assert!(m > 0.0);
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
@@ -45,15 +45,6 @@
 use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};
 use crate::numeric::sqrt_fn;
-
-/// Validates a finite n′ > 0 (`name` is the argument's name in messages).
-#[inline]
-pub(crate) fn finite_n_prime(name: &'static str, n_prime: NPrime) -> Result<Option<f64>> {
-    match n_prime {
-        NPrime::Finite(v) => positive(name, v).map(Some),
-        NPrime::Unwarped => Ok(None),
-    }
-}
 
 /// Validates a depth on the view axis, `near ≤ z ≤ far`.
 #[inline]
@@ -238,7 +229,7 @@ fn mz_perp_unchecked(
 /// let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_4)?;
 /// let up = LightAngle::new(std::f64::consts::FRAC_PI_2)?;
 /// // Overhead with n′ = n (PSM): m_z = (f − n) z / (2 tan θ · f n) = 99·50/200 at z = 50.
-/// let m = tilted_mz(&view, NPrime::Finite(1.0), up, 50.0, Resolutions::default())?;
+/// let m = tilted_mz(&view, NPrime::finite(1.0)?, up, 50.0, Resolutions::default())?;
 /// assert!((m - 99.0 * 50.0 / 200.0).abs() < 1e-12);
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
@@ -250,7 +241,7 @@ pub fn tilted_mz(
     z: f64,
     res: Resolutions,
 ) -> Result<f64> {
-    let np = finite_n_prime("n_prime", n_prime)?;
+    let np = n_prime.as_finite();
     let s = positive_sin(light_angle)?;
     let z = depth_in_view(view, z)?;
     finite_result("m_z", mz_perp_unchecked(view, np, light_angle, z, res)? / s)
@@ -276,7 +267,7 @@ pub fn tilted_mz_perpendicular(
     z: f64,
     res: Resolutions,
 ) -> Result<f64> {
-    let np = finite_n_prime("n_prime", n_prime)?;
+    let np = n_prime.as_finite();
     let z = depth_in_view(view, z)?;
     finite_result("m_z", mz_perp_unchecked(view, np, light_angle, z, res)?)
 }
@@ -351,7 +342,7 @@ pub fn n_prime_equal_error(view: &ViewFrustum, light_angle: LightAngle) -> Resul
         n_prime_2(view, light_angle)?
     };
     if v > 0.0 {
-        Ok(NPrime::Finite(v))
+        NPrime::new(v)
     } else {
         Err(Error::NoSolution(format!(
             "no warp makes m_z equal on the near and far planes at light_angle={}: Barroso's Eq 13 gives n_prime={} ≤ 0",
@@ -373,11 +364,11 @@ pub fn n_prime_equal_error(view: &ViewFrustum, light_angle: LightAngle) -> Resul
 /// m_z(n) ∝ (n′ + d)²/(n′(n′ + μ)) decreases up to its stationary point n′* and increases after
 /// it; m_z(n) > m_z(f) exactly for n′ > n′_eq. So the equal-error n′ is the optimum only when
 /// n′* ≤ n′_eq; otherwise the optimum is n′*, with m_z(n) > m_z(f) there. At γ = 0, n′* = ∞
-/// ([`NPrime::Unwarped`]). Overhead, n′_opt = n + √(f n) (LiSPSM).
+/// ([`NPrime::UNWARPED`]). Overhead, n′_opt = n + √(f n) (LiSPSM).
 ///
 /// Unit: eye-space distance. Inputs are validated types, so this cannot fail; where μ or the
 /// optimum overflows an `f64` (frusta beyond about 1e308 across) the answer is
-/// [`NPrime::Unwarped`], the limit n′ → ∞.
+/// [`NPrime::UNWARPED`], the limit n′ → ∞.
 ///
 /// ```
 /// # use shadow_aliasing::{analytic::tilted::{n_prime_axis_minimax, n_prime_2}, LightAngle, ViewFrustum};
@@ -391,7 +382,7 @@ pub fn n_prime_equal_error(view: &ViewFrustum, light_angle: LightAngle) -> Resul
 #[must_use]
 pub fn n_prime_axis_minimax(view: &ViewFrustum, light_angle: LightAngle) -> NPrime {
     let Ok(mu) = warp_depth_range(view, light_angle) else {
-        return NPrime::Unwarped;
+        return NPrime::UNWARPED;
     };
     let d = psi_offset(view, light_angle, view.near()).max(0.0);
     let den = mu - 2.0 * d;
@@ -407,11 +398,7 @@ pub fn n_prime_axis_minimax(view: &ViewFrustum, light_angle: LightAngle) -> NPri
     };
     // An overflowing n′_eq is larger than any finite n′*.
     let v = star.max(eq.unwrap_or(f64::INFINITY));
-    if v.is_finite() && v > 0.0 {
-        NPrime::Finite(v)
-    } else {
-        NPrime::Unwarped
-    }
+    NPrime::finite_or_unwarped(v)
 }
 
 /// Barroso's limit angle (Eq 15), where the near and far faces of the view frustum begin to
@@ -488,13 +475,13 @@ pub fn falloff_r(falloff: Falloff, light_angle: f64, gamma_lim: f64) -> f64 {
 /// `n′ = n′₁(γ_lim) / r(γ)` for 0 ≤ γ < γ_lim,
 ///
 /// with γ_lim from [`gamma_lim`] (Eq 15), r from [`falloff_r`] (Eq 17 or 18), `a = n tan φ_y`.
-/// Continuous at γ_lim (r = 1); at γ = 0 (r = 0) it is [`NPrime::Unwarped`], and wherever the
+/// Continuous at γ_lim (r = 1); at γ = 0 (r = 0) it is [`NPrime::UNWARPED`], and wherever the
 /// quotient overflows. Unit: eye-space distance. n′₁(γ_lim) > 0 always, so n′ > 0; it is
 /// evaluated in closed form (`f t (2ρ² + √ρ (1 + ρ)) / hypot(1 − ρ, (1 + ρ) t)`, ρ = n/f,
 /// t = tan φ_y) so that the rounding of γ_lim near π/2 cannot cancel it to 0.
 ///
 /// All inputs are validated types, so this cannot fail; where n′ overflows an `f64` (frusta
-/// beyond about 1e308) the answer is [`NPrime::Unwarped`], the limit n′ → ∞.
+/// beyond about 1e308) the answer is [`NPrime::UNWARPED`], the limit n′ → ∞.
 #[must_use]
 pub fn generalized_n_prime(
     view: &ViewFrustum,
@@ -505,18 +492,13 @@ pub fn generalized_n_prime(
     let g = light_angle.radians();
     if g >= gl {
         return match n_prime_1(view, light_angle) {
-            Ok(v) if v > 0.0 => NPrime::Finite(v),
-            _ => NPrime::Unwarped,
+            Ok(v) => NPrime::finite_or_unwarped(v),
+            Err(_) => NPrime::UNWARPED,
         };
     }
     let at_lim = n_prime_1_at_lim(view);
     let r = falloff_r(falloff, g, gl);
-    let v = at_lim / r;
-    if v.is_finite() && v > 0.0 {
-        NPrime::Finite(v)
-    } else {
-        NPrime::Unwarped
-    }
+    NPrime::finite_or_unwarped(at_lim / r)
 }
 
 #[cfg(test)]
@@ -567,7 +549,13 @@ mod tests {
     fn domain_errors() {
         let view = ViewFrustum::new(1.0, 10.0, 0.5).unwrap();
         let g0 = LightAngle::new(0.0).unwrap();
-        let e = tilted_mz(&view, NPrime::Finite(2.0), g0, 2.0, Resolutions::default());
+        let e = tilted_mz(
+            &view,
+            NPrime::finite(2.0).unwrap(),
+            g0,
+            2.0,
+            Resolutions::default(),
+        );
         assert!(matches!(
             e,
             Err(Error::InvalidArgument {
@@ -576,10 +564,17 @@ mod tests {
             })
         ));
         let g = LightAngle::new(1.0).unwrap();
-        assert!(tilted_mz(&view, NPrime::Finite(-1.0), g, 2.0, Resolutions::default()).is_err());
-        assert!(tilted_mz(&view, NPrime::Finite(1.0), g, 11.0, Resolutions::default()).is_err());
+        assert!(NPrime::finite(-1.0).is_err());
+        assert!(tilted_mz(
+            &view,
+            NPrime::finite(1.0).unwrap(),
+            g,
+            11.0,
+            Resolutions::default()
+        )
+        .is_err());
         assert!(
-            tilted_mz_perpendicular(&view, NPrime::Unwarped, g0, 2.0, Resolutions::default())
+            tilted_mz_perpendicular(&view, NPrime::UNWARPED, g0, 2.0, Resolutions::default())
                 .is_ok()
         );
         assert!(matches!(

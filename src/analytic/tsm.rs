@@ -57,7 +57,7 @@ fn check_inputs(lambda: f64, delta_prime: f64) -> Result<(f64, f64)> {
 ///
 /// The warp can only move p_L towards the base (a centre above the top line magnifies the top):
 /// a finite η > 0 exists exactly when ξ is below the unwarped line `1 − 2δ′/λ`; at that line the
-/// answer is [`NPrime::Unwarped`] (η = ∞, the orthographic map).
+/// answer is [`NPrime::UNWARPED`] (η = ∞, the orthographic map).
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `lambda` (not finite and positive), `delta_prime` (outside
@@ -71,7 +71,7 @@ pub fn tsm_eta(lambda: f64, delta_prime: f64, xi: f64) -> Result<NPrime> {
     let xi = in_open("xi", xi, -1.0, 1.0)?;
     let den = eta_denominator(lambda, d, xi);
     if den == 0.0 {
-        return Ok(NPrime::Unwarped);
+        return Ok(NPrime::UNWARPED);
     }
     if den < 0.0 {
         return Err(eta_no_solution(lambda, d, xi));
@@ -94,7 +94,7 @@ fn eta_over(lambda: f64, d: f64, xi: f64, den: f64) -> f64 {
 
 /// [`tsm_eta`]'s finite value without building its `Result`, for the trapezoidal builders (the
 /// line search calls it ≈ 45 times per map): `Some(η)` exactly where [`tsm_eta`] returns
-/// `Ok(NPrime::Finite(η))`, bit for bit, and `None` where it returns `Unwarped` or an error
+/// a finite `Ok(η)`, bit for bit, and `None` where it returns [`NPrime::UNWARPED`] or an error
 /// (outside its domain, no solution, a focus point on the top or base line). The builders then
 /// use the bounding rectangle, the limit η → ∞.
 #[inline]
@@ -137,13 +137,12 @@ fn eta_no_solution(lambda: f64, d: f64, xi: f64) -> Error {
 #[inline]
 pub fn tsm_focus_line(lambda: f64, eta: NPrime, delta_prime: f64) -> Result<f64> {
     let (lambda, d) = check_inputs(lambda, delta_prime)?;
-    match eta {
-        NPrime::Finite(e) => {
-            let e = positive("eta", e)?;
+    match eta.as_finite() {
+        Some(e) => {
             let [[a, b], _] = tsm_projection(lambda, e)?;
             finite_result("the focus line", a + b / (e + d))
         }
-        NPrime::Unwarped => finite_result("the focus line", 1.0 - 2.0 * d / lambda),
+        None => finite_result("the focus line", 1.0 - 2.0 * d / lambda),
     }
 }
 
@@ -191,8 +190,8 @@ mod finite_tests {
                 for &xi in &xis {
                     let d = fr * if l.is_finite() { l } else { 1.0 };
                     let fast = tsm_eta_finite(l, d, xi);
-                    match tsm_eta(l, d, xi) {
-                        Ok(NPrime::Finite(e)) => {
+                    match tsm_eta(l, d, xi).map(NPrime::as_finite) {
+                        Ok(Some(e)) => {
                             assert_eq!(fast.map(f64::to_bits), Some(e.to_bits()));
                             finite += 1;
                         }

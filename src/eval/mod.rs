@@ -210,8 +210,8 @@ impl Output {
     fn check(self, quantity: &str) -> std::result::Result<Output, String> {
         let bad = match &self {
             Output::Number(v) => !v.is_finite(),
-            Output::NPrime(NPrime::Finite(v)) => !(v.is_finite() && *v > 0.0),
-            Output::NPrime(NPrime::Unwarped) => false,
+            // Valid by construction: finite and positive, or ∞.
+            Output::NPrime(_) => false,
             Output::Numbers(vs) => vs.iter().any(|v| !v.is_finite()),
         };
         if bad {
@@ -402,10 +402,8 @@ fn parse_arg(spec: &ArgSpec, v: &Value) -> std::result::Result<Parsed, String> {
                     describe(v)
                 )
             })?;
-            if x == f64::INFINITY {
-                Ok(Parsed::NPrime(NPrime::Unwarped))
-            } else if x.is_finite() && x > 0.0 {
-                Ok(Parsed::NPrime(NPrime::Finite(x)))
+            if let Ok(n) = NPrime::new(x) {
+                Ok(Parsed::NPrime(n))
             } else {
                 Err(format!(
                     "{name} must be a number greater than 0 or the string \"inf\" (got {})",
@@ -793,7 +791,7 @@ mod tests {
         let spec = req("n_prime", ArgKind::NPrime);
         assert_eq!(
             parse_arg(&spec, &Value::from("inf")),
-            Ok(Parsed::NPrime(NPrime::Unwarped))
+            Ok(Parsed::NPrime(NPrime::UNWARPED))
         );
         assert!(parse_arg(&spec, &Value::from(-1.0)).is_err());
         assert!(parse_arg(&spec, &Value::from("-inf")).is_err());

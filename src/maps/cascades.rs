@@ -46,9 +46,10 @@
 
 pub use crate::analytic::partition::{SplitScheme, Splits, MAX_PARTITIONS};
 use crate::error::{finite_result, fmt_num, in_closed, Error, Result};
-use crate::frustum::{unit_light_dir, NPrime, ViewFrustum};
+use crate::frustum::{LightDir, NPrime, ViewFrustum};
+use crate::maps::lightspace::light_space_dir;
 use crate::maps::warp::{warp_prepared, PreparedLight};
-use crate::maps::{light_space, warp, ShadowMatrix, WarpRule};
+use crate::maps::{warp, ShadowMatrix, WarpRule};
 use crate::measure::vertex::{vertex_max, VertexMax};
 use glam::{DMat4, DVec3, DVec4};
 
@@ -172,23 +173,29 @@ pub fn cascades(
 ) -> Result<Cascades> {
     let mut parts = [None; MAX_PARTITIONS];
     let mut k = 0;
-    visit_cascades(view, light_dir, splits, rule, overlap, |c| {
-        parts[k] = Some(*c);
-        k += 1;
-    })?;
+    visit_cascades(
+        view,
+        LightDir::new(light_dir)?,
+        splits,
+        rule,
+        overlap,
+        |c| {
+            parts[k] = Some(*c);
+            k += 1;
+        },
+    )?;
     Ok(Cascades { parts, k })
 }
 
 /// [`cascades`], handing each partition to `visit`, near to far, as it is built.
 pub(crate) fn visit_cascades(
     view: &ViewFrustum,
-    light_dir: DVec3,
+    light_dir: LightDir,
     splits: &Splits,
     rule: WarpRule,
     overlap: f64,
     mut visit: impl FnMut(&Cascade),
 ) -> Result<()> {
-    let light_dir = unit_light_dir(light_dir)?;
     let overlap = in_closed("overlap", overlap, 0.0, 1.0)?;
     if overlap >= 1.0 {
         return Err(Error::invalid("overlap", "must be smaller than 1 (got 1)"));
@@ -198,7 +205,7 @@ pub(crate) fn visit_cascades(
     let last = planes[planes.len() - 1];
     let k = splits.k();
     // `warp(&sub, light_dir, rule)` for every partition, with the light space computed once.
-    let light = PreparedLight::new(light_dir)?;
+    let light = PreparedLight::new(light_dir);
     let tan = view.tan_half_fov();
     let ta = tan * view.aspect();
     // Corner directions at unit depth, near-plane order of `ViewFrustum::corners`.
@@ -223,7 +230,7 @@ pub(crate) fn visit_cascades(
             corners[j + 4] = *d * end;
         }
         let error =
-            vertex_max(&shadow.matrix, shadow.light_dir, tan, &corners).ok_or_else(|| {
+            vertex_max(&shadow.matrix(), shadow.light_dir(), tan, &corners).ok_or_else(|| {
                 Error::Degenerate(format!(
                 "the map of partition {i} ([{}, {}]) puts a corner behind its centre of projection",
                 fmt_num(a),
@@ -244,7 +251,7 @@ pub(crate) fn visit_cascades(
 /// world-fixed light space and snapped to whole texels (see the module docs).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StableCascade {
-    /// The stable map (eye → light clip, OpenGL depth), [`NPrime::Unwarped`].
+    /// The stable map (eye → light clip, OpenGL depth), [`NPrime::UNWARPED`].
     pub shadow: ShadowMatrix,
     /// Centre of the partition's minimal bounding sphere, eye space (on the view axis).
     pub center: DVec3,
@@ -311,7 +318,7 @@ pub fn bounding_sphere(view: &ViewFrustum, near: f64, far: f64) -> Result<(f64, 
 /// `world_to_eye` is the camera's view matrix (world → eye, rigid: rotation and translation,
 /// glam `dcamera::rh::view::look_at_mat4`); `light_dir_world` the direction light travels in
 /// *world* space (a stable map must not turn with the camera); `resolution` the map's texels per side (≥ 3). The light
-/// space is [`light_space`]`(light_dir_world, −Z_world)`, fixed in the world. The sphere's centre,
+/// space is [`light_space`](crate::maps::light_space)`(light_dir_world, −Z_world)`, fixed in the world. The sphere's centre,
 /// in that light space, is snapped to the nearest multiple of the texel edge along s and t.
 ///
 /// # Errors
@@ -332,11 +339,11 @@ pub fn stable_cascade(
         ));
     }
     let eye_to_world = rigid_inverse(world_to_eye)?;
-    let lw = unit_light_dir(light_dir_world)
+    let lw = LightDir::new(light_dir_world)
         .map_err(|_| Error::invalid("light_dir_world", "must be a finite, non-zero vector"))?;
     let sub = view.with_depth_range(near, far)?;
     let (c, r) = bounding_sphere(view, near, far)?;
-    let ls = light_space(lw, DVec3::NEG_Z)?;
+    let ls = light_space_dir(lw, DVec3::NEG_Z)?;
     let res = f64::from(resolution);
     let half = r * res / (res - 2.0);
     let texel = 2.0 * half / res;
@@ -353,21 +360,27 @@ pub fn stable_cascade(
         DVec4::new(-sx / half, -sz / half, q.y / half, 1.0),
     );
     let matrix = ortho * ls.rotation() * eye_to_world;
-    let light_eye = world_to_eye.transform_vector3(lw).normalize();
+    // A rigid transform of a unit vector, normalised against rounding.
+    let light_eye = world_to_eye.transform_vector3(lw.as_dvec3()).normalize();
     let corners = sub.corners();
     let stable = vertex_max(&matrix, light_eye, view.tan_half_fov(), &corners)
         .ok_or_else(|| Error::Degenerate("the stable map is singular at a corner".into()))?;
     let tight_map = warp(&sub, light_eye, WarpRule::Uniform)?;
-    let tight = vertex_max(&tight_map.matrix, light_eye, view.tan_half_fov(), &corners)
-        .ok_or_else(|| Error::Degenerate("the tight map is singular at a corner".into()))?;
+    let tight = vertex_max(
+        &tight_map.matrix(),
+        light_eye,
+        view.tan_half_fov(),
+        &corners,
+    )
+    .ok_or_else(|| Error::Degenerate("the tight map is singular at a corner".into()))?;
     Ok(StableCascade {
-        shadow: ShadowMatrix {
+        shadow: ShadowMatrix::new(
             matrix,
-            light_dir: light_eye,
-            n_prime: NPrime::Unwarped,
+            LightDir::from_unit_unchecked(light_eye),
+            NPrime::UNWARPED,
             near,
             far,
-        },
+        ),
         center: center_eye,
         radius: r,
         texel,

@@ -120,8 +120,9 @@
 
 use crate::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
 use crate::error::{fmt_num, Error, Result};
-use crate::frustum::{unit_light_dir, NPrime, ViewFrustum};
-use crate::maps::{fit_warp, light_space, ShadowMatrix};
+use crate::frustum::{LightDir, NPrime, ViewFrustum};
+use crate::maps::lightspace::light_space_dir;
+use crate::maps::{fit_warp, ShadowMatrix};
 use crate::measure::vertex::{vertex_max, VertexMax};
 use crate::numeric::EDGE_ON;
 use glam::{DMat4, DVec3};
@@ -279,7 +280,7 @@ impl VisibleFaces {
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
 pub fn visible_faces(view: &ViewFrustum, light_dir: DVec3) -> Result<VisibleFaces> {
-    let l = unit_light_dir(light_dir)?;
+    let l = LightDir::new(light_dir)?.as_dvec3();
     let t = view.tan_half_fov();
     Ok(visible_with(
         t,
@@ -326,14 +327,14 @@ fn visible_with(t: f64, ta: f64, near_over_far: f64, l: DVec3) -> VisibleFaces {
 /// Lloyd's warp axis of a side face: the bisector `ê′₀ + ê′₁` of its side edges projected
 /// perpendicular to the light (Lloyd 2006 §5.1), the first of the two candidates the face
 /// partitions try (module docs). For the near and far faces, the image's up
-/// vector +Y (projected by [`light_space`]).
+/// vector +Y (projected by [`light_space`](crate::maps::light_space)).
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir`; [`Error::Degenerate`] when a side edge is
 /// within [`EDGE_ON`] of parallel to the light (the face is then edge-on or nearly so, and the
 /// face partitions use its [`face_depth_axis`]).
 pub fn face_axis(view: &ViewFrustum, face: Face, light_dir: DVec3) -> Result<DVec3> {
-    let l = unit_light_dir(light_dir)?;
+    let l = LightDir::new(light_dir)?.as_dvec3();
     let t = view.tan_half_fov();
     axis_with(face, t, t * view.aspect(), l)
 }
@@ -368,7 +369,7 @@ fn axis_with(face: Face, t: f64, ta: f64, l: DVec3) -> Result<DVec3> {
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir`.
 pub fn face_depth_axis(view: &ViewFrustum, face: Face, light_dir: DVec3) -> Result<Option<DVec3>> {
-    let l = unit_light_dir(light_dir)?;
+    let l = LightDir::new(light_dir)?.as_dvec3();
     let t = view.tan_half_fov();
     Ok(depth_axis_with(face, t, t * view.aspect(), l))
 }
@@ -485,7 +486,7 @@ pub fn face_partitions_with(
 ) -> Result<FacePartitions> {
     let mut parts = [None; MAX_FACE_PARTITIONS];
     let mut len = 0;
-    let faces = visit_face_partitions(view, light_dir, rule, splits, |p| {
+    let faces = visit_face_partitions(view, LightDir::new(light_dir)?, rule, splits, |p| {
         parts[len] = Some(*p);
         len += 1;
     })?;
@@ -496,12 +497,12 @@ pub fn face_partitions_with(
 /// chosen faces.
 pub(crate) fn visit_face_partitions(
     view: &ViewFrustum,
-    light_dir: DVec3,
+    light: LightDir,
     rule: FaceWarp,
     splits: &Splits,
     mut visit: impl FnMut(&FacePartition),
 ) -> Result<VisibleFaces> {
-    let l = unit_light_dir(light_dir)?;
+    let l = light.as_dvec3();
     crate::maps::cascades::splits_within(view, splits)?;
     let tan = view.tan_half_fov();
     let ta = tan * view.aspect();
@@ -538,12 +539,13 @@ pub(crate) fn visit_face_partitions(
         // edge) is dropped; its error is reported only when no candidate is left.
         let mut first_err = None;
         let mut spaces = [None; 2];
-        match axis_with(face, tan, ta, l).and_then(|a| light_space(l, a)) {
+        match axis_with(face, tan, ta, l).and_then(|a| light_space_dir(light, a)) {
             Ok(ls) => spaces[0] = Some(ls),
             Err(e) => first_err = Some(e),
         }
         if is_side {
-            if let Some(ls) = depth_axis_with(face, tan, ta, l).and_then(|a| light_space(l, a).ok())
+            if let Some(ls) =
+                depth_axis_with(face, tan, ta, l).and_then(|a| light_space_dir(light, a).ok())
             {
                 spaces[1] = Some(ls);
             }
@@ -577,13 +579,7 @@ pub(crate) fn visit_face_partitions(
             })?;
             visit(&FacePartition {
                 face,
-                shadow: ShadowMatrix {
-                    matrix,
-                    light_dir: l,
-                    n_prime,
-                    near: a,
-                    far: b,
-                },
+                shadow: ShadowMatrix::new(matrix, light, n_prime, a, b),
                 vertices,
                 error,
             });
@@ -635,17 +631,15 @@ impl PartFitter {
             swept[3 * i + 2] = *v + (y_hi - y) * ls.y;
         }
         let n_prime = if matches!(face, Face::Near | Face::Far) {
-            NPrime::Unwarped
+            NPrime::UNWARPED
         } else {
             match self.rule {
-                FaceWarp::Uniform => NPrime::Unwarped,
-                FaceWarp::Psm => NPrime::Finite(d_n),
-                FaceWarp::Lispsm => NPrime::Finite(d_n + (d_n * d_f).sqrt()),
+                FaceWarp::Uniform => NPrime::UNWARPED,
+                FaceWarp::Psm => NPrime::try_finite(d_n).unwrap_or(NPrime::UNWARPED),
+                FaceWarp::Lispsm => {
+                    NPrime::try_finite(d_n + (d_n * d_f).sqrt()).unwrap_or(NPrime::UNWARPED)
+                }
             }
-        };
-        let n_prime = match n_prime {
-            NPrime::Finite(v) if !(v.is_finite() && v > 0.0) => NPrime::Unwarped,
-            other => other,
         };
         let matrix = fit_warp(&swept, ls, n_prime)?;
         let error =

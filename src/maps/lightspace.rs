@@ -19,10 +19,10 @@
 //! For the view direction −Z this is the limit of the light sweeping through the view axis in the
 //! eye's vertical plane, and it gives the same orthographic storage factor as the limit in the
 //! horizontal plane (the frustum's cross-section is an axis-aligned rectangle). All the crate's
-//! n′ rules go to [`crate::NPrime::Unwarped`] there, so the map is the orthographic fit.
+//! n′ rules go to [`crate::NPrime::UNWARPED`] there, so the map is the orthographic fit.
 
 use crate::error::{Error, Result};
-use crate::frustum::unit_light_dir;
+use crate::frustum::LightDir;
 use crate::numeric::PARALLEL_TOLERANCE;
 use glam::{DMat4, DVec3, DVec4};
 
@@ -64,6 +64,12 @@ impl LightSpace {
     pub fn light_dir(&self) -> DVec3 {
         -self.y
     }
+
+    /// [`LightSpace::light_dir`] as the validated type (`y` is a unit vector by construction).
+    #[inline]
+    pub(crate) fn light(&self) -> LightDir {
+        LightDir::from_unit_unchecked(-self.y)
+    }
 }
 
 /// Builds light space for a directional light travelling along `light_dir` (eye space, any
@@ -91,7 +97,16 @@ pub fn light_space(light_dir: DVec3, axis: DVec3) -> Result<LightSpace> {
     // Both vectors are scaled to a largest component of 1 before they are normalised: the sum
     // of squares of a vector with components near 10⁻¹⁵⁸ is subnormal (a light direction of
     // length 1 + 8·10⁻⁹ came out of it), and one near 10¹⁵⁵ overflows.
-    let l = unit_light_dir(scaled(light_dir))?;
+    let l = LightDir::new(scaled(light_dir))?;
+    light_space_dir(l, axis)
+}
+
+/// [`light_space`] for a light direction already validated (the axis is validated here).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `axis` for a zero or non-finite vector.
+#[inline]
+pub(crate) fn light_space_dir(l: LightDir, axis: DVec3) -> Result<LightSpace> {
     let a = unit_axis(scaled(axis))?;
     Ok(light_space_unit(l, a))
 }
@@ -110,8 +125,8 @@ fn scaled(v: DVec3) -> DVec3 {
 
 /// [`light_space`] for a unit light direction `l` and a unit axis `a`, already validated.
 #[inline]
-pub(crate) fn light_space_unit(l: DVec3, a: DVec3) -> LightSpace {
-    let y = -l;
+pub(crate) fn light_space_unit(l: LightDir, a: DVec3) -> LightSpace {
+    let y = -l.as_dvec3();
     let mut z = a - a.dot(y) * y;
     let mut len = z.length();
     if len < PARALLEL_TOLERANCE {

@@ -14,7 +14,7 @@
 //! a point lands in, unchanged.
 
 use crate::measure::ShadowMap;
-use crate::NPrime;
+use crate::{LightDir, NPrime};
 use glam::{DMat4, DVec3, DVec4, Mat4};
 
 /// The depth range of light clip space after the perspective divide.
@@ -27,22 +27,71 @@ pub enum ClipDepth {
     ZeroToOne,
 }
 
-/// A shadow matrix for one directional light and one view (sub)frustum.
+/// A shadow matrix for one directional light and one view (sub)frustum, as a builder made it:
+/// the fields are private, so a `ShadowMatrix` is always a builder's checked output.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ShadowMatrix {
-    /// Eye space → light clip space, OpenGL depth [−1, 1]; x, y span the map.
-    pub matrix: DMat4,
-    /// Unit eye-space direction the light travels.
-    pub light_dir: DVec3,
-    /// The warp parameter used ([`NPrime::Unwarped`] for an orthographic map).
-    pub n_prime: NPrime,
-    /// Near end of the view-depth range the map covers.
-    pub near: f64,
-    /// Far end of the view-depth range the map covers.
-    pub far: f64,
+    matrix: DMat4,
+    light_dir: LightDir,
+    n_prime: NPrime,
+    near: f64,
+    far: f64,
 }
 
 impl ShadowMatrix {
+    /// A builder's result: `matrix` finite and checked against the clip volume by the builder.
+    #[inline]
+    pub(crate) fn new(
+        matrix: DMat4,
+        light_dir: LightDir,
+        n_prime: NPrime,
+        near: f64,
+        far: f64,
+    ) -> Self {
+        Self {
+            matrix,
+            light_dir,
+            n_prime,
+            near,
+            far,
+        }
+    }
+
+    /// Eye space → light clip space, OpenGL depth [−1, 1]; x, y span the map.
+    #[inline]
+    #[must_use]
+    pub fn matrix(&self) -> DMat4 {
+        self.matrix
+    }
+
+    /// Unit eye-space direction the light travels.
+    #[inline]
+    #[must_use]
+    pub fn light_dir(&self) -> DVec3 {
+        self.light_dir.as_dvec3()
+    }
+
+    /// The warp parameter used ([`NPrime::UNWARPED`] for an orthographic map).
+    #[inline]
+    #[must_use]
+    pub fn n_prime(&self) -> NPrime {
+        self.n_prime
+    }
+
+    /// Near end of the view-depth range the map covers.
+    #[inline]
+    #[must_use]
+    pub fn near(&self) -> f64 {
+        self.near
+    }
+
+    /// Far end of the view-depth range the map covers.
+    #[inline]
+    #[must_use]
+    pub fn far(&self) -> f64 {
+        self.far
+    }
+
     /// The matrix in the requested clip-depth convention (eye space → light clip space).
     ///
     /// ```
@@ -83,10 +132,7 @@ impl ShadowMatrix {
     /// take.
     #[must_use]
     pub fn shadow_map(&self) -> ShadowMap {
-        ShadowMap {
-            matrix: self.matrix,
-            light_dir: self.light_dir,
-        }
+        ShadowMap::from_parts(self.matrix, self.light_dir)
     }
 
     /// Light clip coordinates `(x/w, y/w, z/w)` of an eye-space point, OpenGL depth, or `None`

@@ -121,10 +121,7 @@ impl Vertices {
 }
 
 fn rho_of(n: NPrime) -> f64 {
-    match n {
-        NPrime::Unwarped => 0.0,
-        NPrime::Finite(v) => 1.0 / v,
-    }
+    n.recip()
 }
 
 fn optimum(view: &ViewFrustum, fl: &FrustumInLight, n_prime: NPrime) -> Optimum {
@@ -176,9 +173,9 @@ pub(crate) fn minimax_mz(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
         }
     }
     let n_prime = if best_n.is_finite() {
-        NPrime::Finite(best_n)
+        NPrime::finite_or_unwarped(best_n)
     } else {
-        NPrime::Unwarped
+        NPrime::UNWARPED
     };
     optimum(view, fl, n_prime)
 }
@@ -225,7 +222,7 @@ pub(crate) fn min_storage(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
         }
     }
     if best_k == usize::MAX {
-        return optimum(view, fl, NPrime::Unwarped);
+        return optimum(view, fl, NPrime::UNWARPED);
     }
     // Golden-section refinement of log n′ between the neighbours of the best sample.
     let mut a = lo + (best_k.saturating_sub(1)) as f64 * step;
@@ -260,7 +257,7 @@ pub(crate) fn min_storage(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
     // found by bisection between the largest tying sample and the next one.
     let tol = best * (1.0 + 1e-9);
     if s_inf <= tol {
-        return optimum(view, fl, NPrime::Unwarped);
+        return optimum(view, fl, NPrime::UNWARPED);
     }
     if let Some(k) = (0..=SCAN).rev().find(|&k| samples[k] <= tol) {
         let xk = lo + k as f64 * step;
@@ -280,7 +277,7 @@ pub(crate) fn min_storage(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
             }
         }
     }
-    optimum(view, fl, NPrime::Finite(x_best.exp()))
+    optimum(view, fl, NPrime::finite_or_unwarped(x_best.exp()))
 }
 
 /// The n′ ∈ (0, ∞] minimising M_z of the view frustum's fitted warp for this light, exactly

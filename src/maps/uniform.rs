@@ -13,7 +13,7 @@
 //! caster bound together (every caster point inside the clip volume, no depth clamp needed), at
 //! the resolution cost the measurement shows.
 
-use crate::error::{fmt_num, Error, Result};
+use crate::error::{Error, Result};
 use crate::frustum::{NPrime, ViewFrustum};
 use crate::maps::lightspace::LightSpace;
 use crate::maps::matrix::ShadowMatrix;
@@ -81,10 +81,10 @@ pub fn uniform(view: &ViewFrustum, light_dir: DVec3) -> Result<ShadowMatrix> {
 /// // A caster hovering 40 units above the frustum's middle.
 /// let caster = [DVec3::new(0.0, 40.0, -10.0)];
 /// let clamp = with_casters(&view, light, WarpRule::Uniform, &caster, CasterDepth::Clamp)?;
-/// let h = clamp.matrix * DVec4::new(0.0, 40.0, -10.0, 1.0);
+/// let h = clamp.matrix() * DVec4::new(0.0, 40.0, -10.0, 1.0);
 /// assert!(h.z / h.w < -1.0); // nearer the light than the frustum: the renderer clamps it to 0
 /// let enclose = with_casters(&view, light, WarpRule::Uniform, &caster, CasterDepth::Enclose)?;
-/// let h = enclose.matrix * DVec4::new(0.0, 40.0, -10.0, 1.0);
+/// let h = enclose.matrix() * DVec4::new(0.0, 40.0, -10.0, 1.0);
 /// assert!((h.z / h.w).abs() <= 1.0 + 1e-12);
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
@@ -112,29 +112,20 @@ pub fn with_casters(
             let n_prime = rule_n_prime(view, &fl, rule)?;
             let corners = view.corners();
             let matrix = fit_two(&corners, casters, &fl.ls, n_prime)?;
-            Ok(ShadowMatrix {
+            Ok(ShadowMatrix::new(
                 matrix,
-                light_dir: fl.ls.light_dir(),
+                fl.ls.light(),
                 n_prime,
-                near: view.near(),
-                far: view.far(),
-            })
+                view.near(),
+                view.far(),
+            ))
         }
     }
 }
 
 /// [`crate::maps::fit_warp`] over the union of two point sets, without allocating.
 fn fit_two(a: &[DVec3], b: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DMat4> {
-    let rho = match n_prime {
-        NPrime::Unwarped => 0.0,
-        NPrime::Finite(v) if v.is_finite() && v > 0.0 => 1.0 / v,
-        NPrime::Finite(v) => {
-            return Err(Error::invalid(
-                "n_prime",
-                format!("must be finite and greater than 0 (got {})", fmt_num(v)),
-            ))
-        }
-    };
+    let rho = n_prime.recip();
     let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
     let mut extent = 0.0f64;
     for p in a.iter().chain(b) {

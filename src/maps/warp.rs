@@ -8,7 +8,7 @@
 //! through the eye, at `z = z₀ − n′`: n′ is the distance from `c` to the plane where the warping
 //! frustum starts (Lloyd 2006 Fig 3; in the light-overhead case `z₀ = n` and this is Lloyd's n′
 //! exactly; for a tilted light it is Barroso & Celes' n′, their Eq 10, and the reference LiSPSM
-//! code's `C = C_start + n·ẑ`). With `ρ = 1/n′` (0 for [`NPrime::Unwarped`]) and
+//! code's `C = C_start + n·ẑ`). With `ρ = 1/n′` (0 for [`NPrime::UNWARPED`]) and
 //! `δ = z − z₀ ∈ [0, Δ]`, the homogeneous map is, in light space,
 //!
 //! ```text
@@ -33,7 +33,7 @@
 
 use crate::analytic::tsm::tsm_eta_finite;
 use crate::error::{fmt_num, Error, Result};
-use crate::frustum::{unit_light_dir, LightAngle, NPrime, ViewFrustum};
+use crate::frustum::{LightAngle, LightDir, NPrime, ViewFrustum};
 use crate::maps::lightspace::{light_space_unit, LightSpace};
 use crate::maps::matrix::{zero_to_one, ShadowMatrix};
 use crate::maps::minimax;
@@ -169,19 +169,20 @@ impl FrustumInLight {
     // copied out with `memcpy` (11 % of the LiSPSM builder's instructions).
     #[inline(always)]
     pub(crate) fn new(view: &ViewFrustum, light_dir: DVec3) -> Result<Self> {
-        let l = unit_light_dir(light_dir)?;
-        // The validated −Z axis is −Z exactly.
-        Ok(Self::in_light_space(
-            view,
-            l,
-            light_space_unit(l, DVec3::NEG_Z),
-        ))
+        Ok(Self::from_dir(view, LightDir::new(light_dir)?))
     }
 
-    /// As [`FrustumInLight::new`] with `l = unit_light_dir(light_dir)` and
-    /// `ls = light_space_unit(l, −Z)` already computed (shared by a light's cascades).
+    /// [`FrustumInLight::new`] for a validated light direction.
     #[inline(always)]
-    pub(crate) fn in_light_space(view: &ViewFrustum, l: DVec3, ls: LightSpace) -> Self {
+    pub(crate) fn from_dir(view: &ViewFrustum, l: LightDir) -> Self {
+        // The validated −Z axis is −Z exactly.
+        Self::in_light_space(view, l, light_space_unit(l, DVec3::NEG_Z))
+    }
+
+    /// As [`FrustumInLight::from_dir`] with `ls = light_space_unit(l, −Z)` already computed
+    /// (shared by a light's cascades).
+    #[inline(always)]
+    pub(crate) fn in_light_space(view: &ViewFrustum, l: LightDir, ls: LightSpace) -> Self {
         let corners = view.corners();
         // The corners are (±w, ±h, −d) at d = near, far; their light-space coordinates
         // `e·c = (e.x c.x + e.y c.y) + e.z c.z` for e = x, y, z share the products e.x w, e.y h,
@@ -219,13 +220,16 @@ impl FrustumInLight {
             depth,
             z0,
             delta: z1 - z0,
-            sin_gamma: (l.x * l.x + l.y * l.y).sqrt().min(1.0),
+            sin_gamma: {
+                let l = l.as_dvec3();
+                (l.x * l.x + l.y * l.y).sqrt().min(1.0)
+            },
         }
     }
 }
 
 /// The perspective warp of the module docs along `ls.z` with parameter `n_prime`, fitted tightly
-/// around `points` (eye space); orthographic for [`NPrime::Unwarped`]. s runs along `ls.x`, t along
+/// around `points` (eye space); orthographic for [`NPrime::UNWARPED`]. s runs along `ls.x`, t along
 /// `ls.z` (t = 0 at the points' smallest z), depth along `−ls.y`. Every point maps into the clip
 /// volume `[−1, 1]³` with `w ≥ 1`; the extreme points land on its faces.
 ///
@@ -235,7 +239,7 @@ impl FrustumInLight {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `points` when empty or not finite, `n_prime` when a
-/// [`NPrime::Finite`] value is not finite and positive; [`Error::Degenerate`] when the points have
+/// [`NPrime::finite`] value is not finite and positive; [`Error::Degenerate`] when the points have
 /// no extent along `ls.x` or `ls.z`, or when rounding would put a point outside the clip volume
 /// by more than 10⁻⁶ (depth ratios far beyond 10⁶ with a strong warp: the result is checked, never
 /// returned wrong).
@@ -246,7 +250,7 @@ impl FrustumInLight {
 /// # use glam::{DVec3, DVec4};
 /// let view = ViewFrustum::new(1.0, 20.0, 0.5)?;
 /// let ls = light_space(DVec3::new(0.0, -1.0, 0.0), DVec3::NEG_Z)?;
-/// let m = fit_warp(&view.corners(), &ls, NPrime::Finite(view.n_prime_lispsm()))?;
+/// let m = fit_warp(&view.corners(), &ls, NPrime::finite(view.n_prime_lispsm())?)?;
 /// for c in view.corners() {
 ///     let h = m * DVec4::new(c.x, c.y, c.z, 1.0);
 ///     assert!(h.w > 0.0 && (h.truncate() / h.w).abs().max_element() <= 1.0 + 1e-12);
@@ -257,15 +261,7 @@ pub fn fit_warp(points: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DM
     if points.is_empty() {
         return Err(Error::invalid("points", "must not be empty"));
     }
-    let rho = match n_prime {
-        NPrime::Unwarped => 0.0,
-        NPrime::Finite(v) => {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(bad_n_prime(v));
-            }
-            1.0 / v
-        }
-    };
+    let rho = n_prime.recip();
     let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
     let mut extent = 0.0f64;
     for p in points {
@@ -400,15 +396,6 @@ fn not_finite_warp() -> Error {
     Error::Degenerate("the fitted warp is not finite for these points".into())
 }
 
-#[cold]
-#[inline(never)]
-fn bad_n_prime(v: f64) -> Error {
-    Error::invalid(
-        "n_prime",
-        format!("must be finite and greater than 0 (got {})", fmt_num(v)),
-    )
-}
-
 /// The shadow matrix of `rule` for the whole view frustum and a light travelling along
 /// `light_dir` (eye space): the light space of [`light_space`](crate::maps::light_space) with the view direction as axis,
 /// n′ from [`n_prime_for`], the warp fitted to the eight corners by [`fit_warp`]. No heap
@@ -442,20 +429,17 @@ pub fn warp(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<Shad
 /// with it is [`warp()`] bit for bit.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PreparedLight {
-    l: DVec3,
+    l: LightDir,
     ls: LightSpace,
 }
 
 impl PreparedLight {
-    /// # Errors
-    /// As [`unit_light_dir`].
     #[inline]
-    pub(crate) fn new(light_dir: DVec3) -> Result<Self> {
-        let l = unit_light_dir(light_dir)?;
-        Ok(Self {
+    pub(crate) fn new(l: LightDir) -> Self {
+        Self {
             l,
             ls: light_space_unit(l, DVec3::NEG_Z),
-        })
+        }
     }
 }
 
@@ -484,27 +468,19 @@ fn warp_fitted(view: &ViewFrustum, fl: &FrustumInLight, rule: WarpRule) -> Resul
         WarpRule::Ogre | WarpRule::OgreOrtho { .. } => fit_frustum_from_corner(fl, n_prime, 2)?,
         _ => fit_frustum(fl, n_prime)?,
     };
-    Ok(ShadowMatrix {
+    Ok(ShadowMatrix::new(
         matrix,
-        light_dir: fl.ls.light_dir(),
+        fl.ls.light(),
         n_prime,
-        near: view.near(),
-        far: view.far(),
-    })
+        view.near(),
+        view.far(),
+    ))
 }
 
 /// [`fit_warp`] on the frustum already in light space.
 #[inline]
 pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4> {
-    let rho = match n_prime {
-        NPrime::Unwarped => 0.0,
-        NPrime::Finite(v) => {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(bad_n_prime(v));
-            }
-            1.0 / v
-        }
-    };
+    let rho = n_prime.recip();
     let mut r = Ranges::new();
     if rho == 0.0 {
         for q in &fl.q {
@@ -587,25 +563,17 @@ fn in_unit_depth(z01: f64, w: f64) -> bool {
 /// # use glam::DVec3;
 /// let view = ViewFrustum::new(1.0, 100.0, 0.5)?;
 /// let overhead = DVec3::new(0.0, -1.0, 0.0);
-/// assert_eq!(n_prime_for(&view, overhead, WarpRule::Lispsm)?, NPrime::Finite(11.0));
+/// assert_eq!(n_prime_for(&view, overhead, WarpRule::Lispsm)?, NPrime::finite(11.0)?);
 /// // The M_z minimax n′ overhead is LiSPSM's (M_z equal on the near and far planes).
 /// let m = n_prime_for(&view, overhead, WarpRule::MinimaxMz)?.value();
 /// assert!((m - 11.0).abs() < 1e-9);
 /// // Light from behind: every generalised rule falls back to the uniform map.
-/// assert_eq!(n_prime_for(&view, DVec3::NEG_Z, WarpRule::Lispsm)?, NPrime::Unwarped);
+/// assert_eq!(n_prime_for(&view, DVec3::NEG_Z, WarpRule::Lispsm)?, NPrime::UNWARPED);
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
 pub fn n_prime_for(view: &ViewFrustum, light_dir: DVec3, rule: WarpRule) -> Result<NPrime> {
     let fl = FrustumInLight::new(view, light_dir)?;
     in_rule_frame(view, &fl, rule, |fl| rule_n_prime(view, fl, rule))
-}
-
-fn finite_or_unwarped(v: f64) -> NPrime {
-    if v.is_finite() && v > 0.0 {
-        NPrime::Finite(v)
-    } else {
-        NPrime::Unwarped
-    }
 }
 
 pub(crate) fn rule_n_prime(
@@ -616,15 +584,15 @@ pub(crate) fn rule_n_prime(
     let (n, f) = (view.near(), view.far());
     let sin_g = fl.sin_gamma;
     Ok(match rule {
-        WarpRule::Uniform => NPrime::Unwarped,
+        WarpRule::Uniform => NPrime::UNWARPED,
         WarpRule::Eta(eta) => crate::analytic::eta::n_prime_from_eta(n, f, eta)?,
-        WarpRule::Psm => NPrime::Finite(n),
-        WarpRule::LispsmFixed => NPrime::Finite(view.n_prime_lispsm()),
+        WarpRule::Psm => NPrime::finite_unchecked(n),
+        WarpRule::LispsmFixed => NPrime::finite_unchecked(view.n_prime_lispsm()),
         WarpRule::Lispsm => {
             if sin_g > 0.0 {
-                finite_or_unwarped(view.n_prime_lispsm() / sin_g)
+                NPrime::finite_or_unwarped(view.n_prime_lispsm() / sin_g)
             } else {
-                NPrime::Unwarped
+                NPrime::UNWARPED
             }
         }
         WarpRule::Barroso(falloff) => {
@@ -635,9 +603,9 @@ pub(crate) fn rule_n_prime(
         WarpRule::LispsmReference => {
             let x = fl.delta * sin_g / n;
             if x > 0.0 {
-                finite_or_unwarped(fl.delta * ((1.0 + x).sqrt() + 1.0) / x)
+                NPrime::finite_or_unwarped(fl.delta * ((1.0 + x).sqrt() + 1.0) / x)
             } else {
-                NPrime::Unwarped
+                NPrime::UNWARPED
             }
         }
         WarpRule::Filament => filament_n_prime(view, fl, 1.0, 100.0)?,
@@ -645,10 +613,10 @@ pub(crate) fn rule_n_prime(
             near_hint,
             far_hint,
         } => filament_n_prime(view, fl, near_hint, far_hint)?,
-        WarpRule::Ogre => finite_or_unwarped(ogre_n_opt(view, fl)),
+        WarpRule::Ogre => NPrime::finite_or_unwarped(ogre_n_opt(view, fl)),
         WarpRule::OgreOrtho { shadow_distance } => {
             let d = crate::error::positive("shadow_distance", shadow_distance)?;
-            finite_or_unwarped(ogre_n_opt(view, fl) * d)
+            NPrime::finite_or_unwarped(ogre_n_opt(view, fl) * d)
         }
         WarpRule::Minimax => minimax::min_storage(view, fl).n_prime,
         WarpRule::MinimaxMz => minimax::minimax_mz(view, fl).n_prime,
@@ -683,7 +651,7 @@ pub(crate) fn rule_frame(
         WarpRule::Filament | WarpRule::FilamentHints { .. }
             if fl.ls.light_dir().z.abs() >= FILAMENT_PARALLEL_COS =>
         {
-            let l = fl.ls.light_dir();
+            let l = fl.ls.light();
             Some(FrustumInLight::in_light_space(
                 view,
                 l,
@@ -748,8 +716,8 @@ fn tsm_rule(view: &ViewFrustum, fl: &FrustumInLight, focus: f64) -> Result<NPrim
     let p = fl.ls.to_light(DVec3::new(0.0, 0.0, -(view.near() + focus)));
     Ok(
         match tsm_eta_finite(fl.delta, p.z - fl.z0, EIGHTY_PERCENT_LINE) {
-            Some(eta) => NPrime::Finite(eta),
-            None => NPrime::Unwarped,
+            Some(eta) => NPrime::finite_unchecked(eta),
+            None => NPrime::UNWARPED,
         },
     )
 }
@@ -784,11 +752,11 @@ fn filament_n_prime(
     let z1 = z0 + fl.delta * sin_lv;
     const EPSILON: f64 = 0.02;
     if !(sin_lv > EPSILON && 3.0 * (dzn / (zf - zn)) < 2.0) {
-        return Ok(NPrime::Unwarped);
+        return Ok(NPrime::UNWARPED);
     }
     let vz0 = zn.max(zn + dzn).max(z0).max(0.0);
     let vz1 = zf.min(zf - dzf).min(z1).max(0.0);
     let nopt0 = (z0 + (vz0 * vz1).sqrt()) / sin_lv;
     let nopt1 = dzn / (2.0 - 3.0 * (dzn / (zf - zn)));
-    Ok(finite_or_unwarped(nopt0.max(nopt1)))
+    Ok(NPrime::finite_or_unwarped(nopt0.max(nopt1)))
 }

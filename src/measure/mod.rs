@@ -31,7 +31,7 @@ pub mod twin;
 pub mod vertex;
 
 use crate::error::{finite_result, Error, Result};
-use crate::frustum::{unit_light_dir, Resolutions, ViewFrustum};
+use crate::frustum::{LightDir, Resolutions, ViewFrustum};
 use glam::{DMat4, DVec3, DVec4};
 
 /// Relative tolerance for "s and t are constant along light rays".
@@ -144,10 +144,9 @@ fn ill_conditioned(p: DVec3, bound: f64) -> Error {
 /// eye-space direction the light travels.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ShadowMap {
-    /// Eye space → light clip space.
-    pub matrix: DMat4,
-    /// Unit eye-space direction the light travels.
-    pub light_dir: DVec3,
+    matrix: DMat4,
+    /// Unit (a [`LightDir`]'s vector).
+    light_dir: DVec3,
 }
 
 impl ShadowMap {
@@ -159,10 +158,31 @@ impl ShadowMap {
         if !matrix.is_finite() {
             return Err(Error::invalid("matrix", "must have finite entries"));
         }
-        Ok(Self {
+        Ok(Self::from_parts(matrix, LightDir::new(light_dir)?))
+    }
+
+    /// A matrix with finite entries (a builder's) and a validated light direction.
+    #[inline]
+    pub(crate) fn from_parts(matrix: DMat4, light_dir: LightDir) -> Self {
+        debug_assert!(matrix.is_finite());
+        Self {
             matrix,
-            light_dir: unit_light_dir(light_dir)?,
-        })
+            light_dir: light_dir.as_dvec3(),
+        }
+    }
+
+    /// Eye space → light clip space.
+    #[inline]
+    #[must_use]
+    pub fn matrix(&self) -> DMat4 {
+        self.matrix
+    }
+
+    /// Unit eye-space direction the light travels.
+    #[inline]
+    #[must_use]
+    pub fn light_dir(&self) -> DVec3 {
+        self.light_dir
     }
 }
 

@@ -23,7 +23,7 @@
 //! - `t = ½ + ½ (f′ + n′)/(f′ − n′) − f′ n′ / (z′ (f′ − n′))`, the OpenGL depth of the warping
 //!   frustum (Zhang's s = (λ + μ)/μ (1 − λ/z_w), the same function).
 //!
-//! n′ = ∞ ([`NPrime::Unwarped`]) is the orthographic map fitted to the same extents.
+//! n′ = ∞ ([`NPrime::UNWARPED`]) is the orthographic map fitted to the same extents.
 //!
 //! # Which side the light is on
 //!
@@ -38,13 +38,13 @@
 //! use shadow_aliasing::{LightAngle, NPrime, Resolutions, ViewFrustum};
 //! use glam::DVec3;
 //! let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians())?;
-//! let warp = tilted_warp(&view, LightAngle::new(1.0)?, TiltSide::InFront, NPrime::Finite(5.0))?;
+//! let warp = tilted_warp(&view, LightAngle::new(1.0)?, TiltSide::InFront, NPrime::finite(5.0)?)?;
 //! let e = point_error(&view, &warp.shadow, DVec3::new(0.0, 0.0, -10.0), Resolutions::default())?;
 //! assert!(e.mz > 0.0 && e.mx > 0.0);
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::error::{finite, finite_result, positive, Error, Result};
+use crate::error::{finite, finite_result, Error, Result};
 use crate::frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};
 use crate::measure::{st_gradients, ShadowMap};
 use glam::{DMat4, DVec3, DVec4};
@@ -92,7 +92,7 @@ pub fn tilted_light_frame(light_angle: LightAngle, side: TiltSide) -> (DVec3, DV
 }
 
 /// Builds the warping frustum of a light tilted by γ (module docs) for the view frustum `view`
-/// and warp parameter n′ (any n′ > 0, or [`NPrime::Unwarped`]).
+/// and warp parameter n′ (any n′ > 0, or [`NPrime::UNWARPED`]).
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `n_prime` for a finite n′ that is not positive and finite;
@@ -103,9 +103,6 @@ pub fn tilted_warp(
     side: TiltSide,
     n_prime: NPrime,
 ) -> Result<TiltedWarp> {
-    if let NPrime::Finite(v) = n_prime {
-        positive("n_prime", v)?;
-    }
     let (ell, zl) = tilted_light_frame(light_angle, side);
     let corners = view.corners();
     let (mut zmin, mut zmax) = (f64::INFINITY, f64::NEG_INFINITY);
@@ -123,8 +120,8 @@ pub fn tilted_warp(
     let yh = 0.5 * (ymax - ymin);
     let rows: [DVec4; 4];
     let half_x;
-    match n_prime {
-        NPrime::Finite(np) => {
+    match n_prime.as_finite() {
+        Some(np) => {
             let mut tan_w = 0.0f64;
             for c in corners {
                 tan_w = tan_w.max(c.x.abs() / (c.dot(zl) - zmin + np));
@@ -146,7 +143,7 @@ pub fn tilted_warp(
                 w,
             ];
         }
-        NPrime::Unwarped => {
+        None => {
             let mut hx = 0.0f64;
             for c in corners {
                 hx = hx.max(c.x.abs());
@@ -299,7 +296,11 @@ mod tests {
         let view = ViewFrustum::new(1.0, 50.0, 0.6).unwrap();
         for g in [0.0, 0.2, 0.6, 1.0, std::f64::consts::FRAC_PI_2] {
             for side in [TiltSide::InFront, TiltSide::Behind] {
-                for np in [NPrime::Finite(0.3), NPrime::Finite(7.0), NPrime::Unwarped] {
+                for np in [
+                    NPrime::finite(0.3).unwrap(),
+                    NPrime::finite(7.0).unwrap(),
+                    NPrime::UNWARPED,
+                ] {
                     let w = tilted_warp(&view, LightAngle::new(g).unwrap(), side, np).unwrap();
                     let (mut tmin, mut tmax, mut smax) = (1.0f64, 0.0f64, 0.0f64);
                     for c in view.corners() {
@@ -335,7 +336,7 @@ mod tests {
             &view,
             LightAngle::new(std::f64::consts::FRAC_PI_2).unwrap(),
             TiltSide::InFront,
-            NPrime::Finite(4.0),
+            NPrime::finite(4.0).unwrap(),
         )
         .unwrap();
         let p = DVec3::new(0.0, 0.0, -5.0);

@@ -29,7 +29,7 @@
 //! use shadow_aliasing::analytic::overhead::storage_factor;
 //! use shadow_aliasing::{NPrime, ViewFrustum};
 //! let v = ViewFrustum::new(1.0, 100.0, 0.5)?;
-//! let n = NPrime::Finite(v.n_prime_lispsm());
+//! let n = NPrime::finite(v.n_prime_lispsm())?;
 //! let measured = frustum_max(&v, &overhead_map(&v, n)?)?.storage_factor;
 //! let closed = storage_factor(&v, n)?;
 //! assert!((measured - closed).abs() < 1e-10 * closed);
@@ -96,7 +96,7 @@ fn warp_matrix(
 
 /// Lloyd 2006's warped shadow map for the light overhead ([`LIGHT_OVERHEAD`]), fitted to
 /// `view` (its near, far and half_fov; square image assumed by the closed forms), with warp
-/// parameter n′ (`NPrime::Unwarped` for the orthographic map). Eye space → light clip space.
+/// parameter n′ (`NPrime::UNWARPED` for the orthographic map). Eye space → light clip space.
 ///
 /// For a square image (`aspect = 1`) its measured m_x, m_z are Lloyd 2006 Eq 7, 8 (to a relative
 /// 10⁻¹²); M_x, M_z, S̄ at the frustum vertices are Eq 9, 10, 12. The depth row is the light
@@ -211,10 +211,10 @@ impl Face {
 pub fn behind_face_map(view: &ViewFrustum, face: Face, n_prime: NPrime) -> Result<ShadowMap> {
     let (a, b, su, sx) = face.frame(view);
     let (un, uf) = (view.near() * su, view.far() * su);
-    let np = match n_prime {
-        NPrime::Unwarped => None,
-        NPrime::Finite(v) if v.is_finite() && v >= un => Some(v),
-        NPrime::Finite(v) => {
+    let np = match n_prime.as_finite() {
+        None => None,
+        Some(v) if v >= un => Some(v),
+        Some(v) => {
             return Err(Error::invalid(
                 "n_prime",
                 format!(
@@ -272,7 +272,7 @@ pub enum TwinWarp {
 impl TwinWarp {
     fn n_prime(self, near: f64, far: f64) -> Result<NPrime> {
         match self {
-            TwinWarp::Unwarped => Ok(NPrime::Unwarped),
+            TwinWarp::Unwarped => Ok(NPrime::UNWARPED),
             TwinWarp::Lispsm => NPrime::new(near + sqrt_fn(near, far)),
             TwinWarp::Eta(eta) => n_prime_from_eta(near, far, eta),
         }
@@ -410,7 +410,11 @@ mod tests {
     #[test]
     fn overhead_map_fits_the_frustum() {
         let v = ViewFrustum::new(2.0, 50.0, 0.6).unwrap();
-        for np in [NPrime::Finite(2.0), NPrime::Finite(12.0), NPrime::Unwarped] {
+        for np in [
+            NPrime::finite(2.0).unwrap(),
+            NPrime::finite(12.0).unwrap(),
+            NPrime::UNWARPED,
+        ] {
             let m = overhead_map(&v, np).unwrap();
             for (i, c) in v.corners().into_iter().enumerate() {
                 let (s, t, ..) = crate::measure::st_gradients(&m.matrix, c).unwrap();
@@ -424,8 +428,12 @@ mod tests {
             }
         }
         for face in Face::ALL {
-            let fm =
-                behind_face_map(&v, face, NPrime::Finite(v.near() * 0.6f64.tan() * 3.0)).unwrap();
+            let fm = behind_face_map(
+                &v,
+                face,
+                NPrime::finite(v.near() * 0.6f64.tan() * 3.0).unwrap(),
+            )
+            .unwrap();
             for (i, c) in face.corners(&v).unwrap().into_iter().enumerate() {
                 let (s, t, ..) = crate::measure::st_gradients(&fm.matrix, c).unwrap();
                 assert!((-1e-12..=1.0 + 1e-12).contains(&s), "{face:?} s={s}");

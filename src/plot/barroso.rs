@@ -20,10 +20,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6)?;
     let gl = gamma_lim(&view);
     let degrees = linspace(0.0, 90.0, 361);
-    let finite = |n: NPrime| match n {
-        NPrime::Finite(v) => Some(v),
-        NPrime::Unwarped => None,
-    };
+    let finite = |n: NPrime| n.as_finite();
     let mut barroso = Vec::new();
     let mut zhang = Vec::new();
     let mut lispsm = Vec::new();

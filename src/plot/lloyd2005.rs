@@ -3,7 +3,6 @@
 use super::chart::{fmt_times_ten, linspace, Axis, Charts, LineChart, Note, Series, PALETTE};
 use super::Fail;
 use crate::analytic::subdivided::{distribution_g, g_min, n_from_xi, subdivided_max_error};
-use crate::NPrime;
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 
 /// α of Fig 4 (the paper does not print it).
@@ -25,9 +24,9 @@ pub(super) fn fig4() -> Result<Charts, Fail> {
     c.legend = SeriesLabelPosition::UpperMiddle;
     for (i, xi) in [1.0, 0.5, 0.0, -0.5, -1.0].into_iter().enumerate() {
         let n = n_from_xi(alpha, xi)?;
-        let label = match n {
-            NPrime::Finite(v) => format!("n = {v:.3} (ξ = {xi})"),
-            NPrime::Unwarped => format!("n = ∞ (ξ = {xi})"),
+        let label = match n.as_finite() {
+            Some(v) => format!("n = {v:.3} (ξ = {xi})"),
+            None => format!("n = ∞ (ξ = {xi})"),
         };
         let pts = zs
             .iter()

@@ -24,15 +24,15 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
     let res = Resolutions::default();
     let lispsm = n_prime_lispsm(n, f)?;
     let warps = [
-        (NPrime::Finite(1.0), "n′ = n = 1 (PSM, η = 1)".to_string()),
-        (NPrime::Finite(2.0), "n′ = 2".to_string()),
+        (NPrime::finite(1.0)?, "n′ = n = 1 (PSM, η = 1)".to_string()),
+        (NPrime::finite(2.0)?, "n′ = 2".to_string()),
         (
-            NPrime::Finite(lispsm),
+            NPrime::finite(lispsm)?,
             format!("n′ = n + √(fn) ≈ {lispsm:.2} (LiSPSM, η = 0)"),
         ),
-        (NPrime::Finite(20.0), "n′ = 20".to_string()),
-        (NPrime::Finite(100.0), "n′ = 100".to_string()),
-        (NPrime::Unwarped, "n′ = ∞ (uniform, η = −1)".to_string()),
+        (NPrime::finite(20.0)?, "n′ = 20".to_string()),
+        (NPrime::finite(100.0)?, "n′ = 100".to_string()),
+        (NPrime::UNWARPED, "n′ = ∞ (uniform, η = −1)".to_string()),
     ];
     let zs = linspace(n, f, 160);
     let z_factor = (f - n) / (2.0 * view.tan_half_fov());

@@ -12,7 +12,7 @@ use super::chart::{build_chart, clip_polyline, frame, linspace, Axis, PALETTE};
 use super::{Fail, Figure};
 use crate::analytic::eta::n_prime_from_eta;
 use crate::maps::{warp, WarpRule};
-use crate::{NPrime, ViewFrustum};
+use crate::ViewFrustum;
 use glam::{DMat3, DVec3};
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -62,7 +62,7 @@ pub(super) fn fig4() -> Result<Fig4, Fail> {
     for eta in [-1.0, -0.6, 0.0, 1.0] {
         let np = n_prime_from_eta(n, f, eta)?;
         let s = warp(&view, OVERHEAD, WarpRule::Eta(eta))?;
-        let h = plane_map(&s.matrix);
+        let h = plane_map(&s.matrix());
         let inv = h.inverse();
         if !inv.is_finite() {
             return Err(Fail::Data(crate::Error::Degenerate(format!(
@@ -91,11 +91,11 @@ pub(super) fn fig4() -> Result<Fig4, Fail> {
                 map.push([p, q]);
             }
         }
-        let name = match np {
-            NPrime::Unwarped => "n′ = ∞ (η = −1, uniform)".to_string(),
-            NPrime::Finite(v) if eta == 0.0 => format!("n′ = n + √(fn) = {v:.2} (η = 0, LiSPSM)"),
-            NPrime::Finite(v) if eta == 1.0 => format!("n′ = n = {v:.0} (η = 1, PSM)"),
-            NPrime::Finite(v) => format!("n′ = {v:.2} (η = {eta})"),
+        let name = match np.as_finite() {
+            None => "n′ = ∞ (η = −1, uniform)".to_string(),
+            Some(v) if eta == 0.0 => format!("n′ = n + √(fn) = {v:.2} (η = 0, LiSPSM)"),
+            Some(v) if eta == 1.0 => format!("n′ = n = {v:.0} (η = 1, PSM)"),
+            Some(v) => format!("n′ = {v:.2} (η = {eta})"),
         };
         columns.push(Column {
             title: name,

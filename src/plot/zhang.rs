@@ -73,7 +73,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         for (name, rule) in rules {
             let m = warp(&view, light, rule)?;
             let shadow: ShadowMap = m.shadow_map();
-            lambdas.push(format!("{name} λ = {}", fmt_lambda(m.n_prime)));
+            lambdas.push(format!("{name} λ = {}", fmt_lambda(m.n_prime())));
             if r == 0 {
                 scheme_labels.push(name.to_string());
             }
@@ -159,9 +159,9 @@ fn frustum_grid(n: f64, f: f64, tan_phi: f64) -> Grid {
 }
 
 fn fmt_lambda(n: NPrime) -> String {
-    match n {
-        NPrime::Unwarped => "∞".to_string(),
-        NPrime::Finite(v) => format!("{v:.2}"),
+    match n.as_finite() {
+        None => "∞".to_string(),
+        Some(v) => format!("{v:.2}"),
     }
 }
 
@@ -257,7 +257,7 @@ mod tests {
         for (r, theta_deg) in [(0usize, 90.0f64), (1, 60.0)] {
             let theta = LightAngle::new(theta_deg.to_radians()).unwrap();
             // LiSPSM's λ = (n + √(fn))/sin θ.
-            let lambda = NPrime::Finite(11.0 / theta_deg.to_radians().sin());
+            let lambda = NPrime::finite(11.0 / theta_deg.to_radians().sin()).unwrap();
             let panels = &fig.rows[r][1];
             let g = &panels[0].grid;
             let nx = g.x_edges.len() - 1;

@@ -36,7 +36,7 @@
 
 use crate::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
 use crate::error::{Error, Result};
-use crate::frustum::{unit_light_dir, LightAngle, NPrime, ViewFrustum};
+use crate::frustum::{LightAngle, LightDir, NPrime, ViewFrustum};
 use crate::maps::atlas::{layout, Atlas, AtlasEntry, MAX_ATLAS_ENTRIES};
 use crate::maps::cascades::visit_cascades;
 use crate::maps::faces::{visit_face_partitions, Face, FaceWarp, MAX_FACE_PARTITIONS};
@@ -106,7 +106,7 @@ impl Default for PartitionResult {
     fn default() -> Self {
         Self {
             matrix: DMat4::IDENTITY,
-            n_prime: NPrime::Unwarped,
+            n_prime: NPrime::UNWARPED,
             near: 0.0,
             far: 0.0,
             max_mx: 0.0,
@@ -258,7 +258,7 @@ pub fn scheme_into(
     k: usize,
     out: &mut SchemeResult,
 ) -> Result<()> {
-    let l = unit_light_dir(light_dir)?;
+    let l = LightDir::new(light_dir)?;
     scheme_into_prepared(&Prepared::new(view), l, rule, partition, k, out)
 }
 
@@ -293,7 +293,7 @@ impl Prepared {
 /// [`scheme_into`] with the view prepared and `l` already a unit vector.
 pub(crate) fn scheme_into_prepared(
     prep: &Prepared,
-    l: DVec3,
+    l: LightDir,
     rule: WarpRule,
     partition: Partition,
     k: usize,
@@ -301,7 +301,7 @@ pub(crate) fn scheme_into_prepared(
 ) -> Result<()> {
     out.len = 0;
     out.storage_factor = 0.0;
-    out.light_dir = l;
+    out.light_dir = l.as_dvec3();
     let r = fill(prep, l, rule, partition, k, out);
     if r.is_err() {
         out.len = 0;
@@ -312,7 +312,7 @@ pub(crate) fn scheme_into_prepared(
 
 fn fill(
     prep: &Prepared,
-    l: DVec3,
+    l: LightDir,
     rule: WarpRule,
     partition: Partition,
     k: usize,
@@ -323,14 +323,13 @@ fn fill(
     let planes: Splits = match partition {
         Partition::Single => {
             // `warp(view, l, rule)`, inlined here.
-            let s = warp_prepared(view, &PreparedLight::new(l)?, rule)?;
-            let e =
-                vertex_max(&s.matrix, s.light_dir, prep.tan, &prep.corners).ok_or_else(|| {
-                    Error::Degenerate("the map is singular at a frustum corner".into())
-                })?;
+            let s = warp_prepared(view, &PreparedLight::new(l), rule)?;
+            let e = vertex_max(&s.matrix(), s.light_dir(), prep.tan, &prep.corners).ok_or_else(
+                || Error::Degenerate("the map is singular at a frustum corner".into()),
+            )?;
             out.push(PartitionResult {
-                matrix: s.matrix,
-                n_prime: s.n_prime,
+                matrix: s.matrix(),
+                n_prime: s.n_prime(),
                 near: view.near(),
                 far: view.far(),
                 max_mx: e.max_mx,
@@ -344,7 +343,7 @@ fn fill(
         Partition::Log | Partition::Faces => splits(SplitScheme::SelfSimilar)?,
         Partition::Practical(lambda) => splits(SplitScheme::Practical { lambda })?,
         Partition::Adaptive => {
-            let gamma = LightAngle::from_light_dir(l)?.radians();
+            let gamma = LightAngle::from_unit(l).radians();
             splits(SplitScheme::Adaptive {
                 light_angle: gamma,
                 ratio: ADAPTIVE_RATIO,
@@ -355,10 +354,10 @@ fn fill(
         let face_rule = face_rule(rule);
         visit_face_partitions(view, l, face_rule, &planes, |p| {
             out.push(PartitionResult {
-                matrix: p.shadow.matrix,
-                n_prime: p.shadow.n_prime,
-                near: p.shadow.near,
-                far: p.shadow.far,
+                matrix: p.shadow.matrix(),
+                n_prime: p.shadow.n_prime(),
+                near: p.shadow.near(),
+                far: p.shadow.far(),
                 max_mx: p.error.max_mx,
                 max_mz: p.error.max_mz,
                 storage_factor: p.error.storage_factor(),
@@ -369,10 +368,10 @@ fn fill(
     } else {
         visit_cascades(view, l, &planes, rule, 0.0, |c| {
             out.push(PartitionResult {
-                matrix: c.shadow.matrix,
-                n_prime: c.shadow.n_prime,
-                near: c.shadow.near,
-                far: c.shadow.far,
+                matrix: c.shadow.matrix(),
+                n_prime: c.shadow.n_prime(),
+                near: c.shadow.near(),
+                far: c.shadow.far(),
                 max_mx: c.error.max_mx,
                 max_mz: c.error.max_mz,
                 storage_factor: c.error.storage_factor(),

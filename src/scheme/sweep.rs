@@ -51,7 +51,7 @@ use lanes::{LaneSweep, LANES};
 
 mod lanes;
 use crate::error::{fmt_num, Error, Result};
-use crate::frustum::ViewFrustum;
+use crate::frustum::{LightDir, ViewFrustum};
 use crate::maps::WarpRule;
 /// The jump of error across each seam between neighbouring partitions of a scheme (defined with
 /// the scheme, re-exported here beside the other measurements of partitions).
@@ -239,8 +239,7 @@ pub fn sweep_into(
     // S̄ of one direction: light_dir_from_angles(el, az) from the angles' sines and cosines,
     // normalised as `scheme` normalises it (so the value is bit for bit `scheme`'s).
     let one = |(se, ce): (f64, f64), (sa, ca): (f64, f64), buf: &mut SchemeResult| {
-        let l = -DVec3::new(ce * sa, se, ce * ca);
-        let l = l / l.length();
+        let l = LightDir::new(-DVec3::new(ce * sa, se, ce * ca))?;
         scheme_into_prepared(&prep, l, rule, partition, k, buf).map(|()| buf.storage_factor())
     };
     // The azimuths' sines and cosines are taken once per block of columns for all rows, not once

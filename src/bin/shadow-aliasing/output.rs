@@ -46,9 +46,9 @@ pub fn sig(v: f64) -> String {
 
 /// n′ for people.
 pub fn sig_n_prime(n: NPrime) -> String {
-    match n {
-        NPrime::Finite(v) => sig(v),
-        NPrime::Unwarped => "∞ (unwarped)".into(),
+    match n.as_finite() {
+        Some(v) => sig(v),
+        None => "∞ (unwarped)".into(),
     }
 }
 
@@ -66,6 +66,6 @@ mod tests {
         assert_eq!(sig(-0.0), "0");
         assert_eq!(sig(-0.000123456789), "-0.000123457");
         assert_eq!(sig(1.5e12), "1.5·10^12");
-        assert_eq!(sig_n_prime(NPrime::Unwarped), "∞ (unwarped)");
+        assert_eq!(sig_n_prime(NPrime::UNWARPED), "∞ (unwarped)");
     }
 }

@@ -24,7 +24,7 @@ use glam::{DVec3, DVec4};
 /// let bound = ConvexBound::from_aabb(DVec3::new(-50.0, -5.0, -40.0), DVec3::new(50.0, 5.0, 0.0), DMat4::IDENTITY)?;
 /// let opts = TsmOptions { focus: 20.0, search: TsmSearch::EightyPercent };
 /// let t = tsm_general(&view, DVec3::new(0.3, -1.0, 0.2), &bound, opts)?;
-/// let h = t.shadow.matrix * DVec4::new(0.0, 0.0, -40.0, 1.0);
+/// let h = t.shadow.matrix() * DVec4::new(0.0, 0.0, -40.0, 1.0);
 /// assert!((h.truncate() / h.w).abs().max_element() <= 1.0 + 1e-9);
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```

@@ -168,7 +168,7 @@ pub struct TsmMap {
 /// let opts = TsmOptions { focus: 20.0, search: TsmSearch::EightyPercent };
 /// let t = tsm(&view, DVec3::new(0.0, -1.0, 0.3), opts)?;
 /// // The focus point on the view axis lands on the 80 % line.
-/// let h = t.shadow.matrix * DVec4::new(0.0, 0.0, -21.0, 1.0);
+/// let h = t.shadow.matrix() * DVec4::new(0.0, 0.0, -21.0, 1.0);
 /// assert!((h.y / h.w + 0.6).abs() < 1e-9);
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```

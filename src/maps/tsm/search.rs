@@ -303,16 +303,13 @@ impl Core<'_> {
         let light_depth = DVec4::new(-ls.y.x / y_h, -ls.y.y / y_h, -ls.y.z / y_h, y_m / y_h);
         let focus_area = focus_area(&analytic, hull);
         Ok(TsmMap {
-            shadow: ShadowMatrix {
+            shadow: ShadowMatrix::new(
                 matrix,
-                light_dir: ls.light_dir(),
-                n_prime: match eta {
-                    Some(e) => NPrime::Finite(e),
-                    None => NPrime::Unwarped,
-                },
+                ls.light(),
+                eta.map_or(NPrime::UNWARPED, NPrime::finite_unchecked),
                 near,
                 far,
-            },
+            ),
             light_space: *ls,
             trapezoid: Trapezoid {
                 corners,

@@ -248,11 +248,7 @@ impl LaneSweep {
     ) -> Option<Self> {
         let rule = match rule {
             WarpRule::Uniform | WarpRule::Psm | WarpRule::LispsmFixed | WarpRule::Eta(_) => {
-                match fixed? {
-                    NPrime::Unwarped => LaneRule::Fixed(0.0),
-                    NPrime::Finite(v) if v.is_finite() && v > 0.0 => LaneRule::Fixed(1.0 / v),
-                    NPrime::Finite(_) => return None,
-                }
+                LaneRule::Fixed(fixed?.recip())
             }
             WarpRule::Lispsm => LaneRule::SinScaled(view.n_prime_lispsm()),
             WarpRule::LispsmReference => LaneRule::Reference(view.near()),
@@ -302,19 +298,13 @@ impl LaneSweep {
         let (se, ce) = el;
         let sa = F(az.map(|a| a.0));
         let ca = F(az.map(|a| a.1));
-        // The sweep's `one`: l = −(ce sa, se, ce ca), l / |l|.
+        // The sweep's `one`: l = −(ce sa, se, ce ca), `LightDir::new`: l / |l| (|l| ≈ 1, so
+        // finite and far from the scaled path's range).
         let l = V3 {
             x: -(ce * sa),
             y: -F::splat(se),
             z: -(ce * ca),
         };
-        let len = l.dot(l).sqrt();
-        let l = V3 {
-            x: l.x / len,
-            y: l.y / len,
-            z: l.z / len,
-        };
-        // `unit_light_dir`: finite, |l| > 1e−300 and finite, l / |l|.
         let len = l.dot(l).sqrt();
         let mut checks = Checks::new();
         checks.finite(l.x + l.y + l.z);
