@@ -163,7 +163,7 @@ prop_assert!(v.is_finite());
     fn overhead_is_lloyd(c in config()) {
         let (n, f) = (c.view.near(), c.view.far());
         let up = LightAngle::new(FRAC_PI_2).unwrap();
-        prop_assert!(rel(n_prime_1(&c.view, up).unwrap(), n + (f * n).sqrt()) < 1e-12);
+        prop_assert!(rel(n_prime_1(&c.view, up), n + (f * n).sqrt()) < 1e-12);
         let np = c.n_prime.max(n);
         let m = tilted_mz(&c.view, NPrime::finite(np).unwrap(), up, c.z, c.res).unwrap();
         prop_assert!(rel(m, lloyd_eq8(n, f, c.view.tan_half_fov(), np, c.z, c.res)) < 1e-12);
@@ -233,7 +233,7 @@ prop_assert!(v.is_finite());
         prop_assert!((0.0..=1.0).contains(&z) && b <= z + 1e-15);
         prop_assert!(falloff_r(Falloff::Zhang, gamma * 0.5, gl) <= z);
         prop_assert!(falloff_r(Falloff::Barroso, gamma * 0.5, gl) <= b);
-        let at_lim = n_prime_1(&c.view, LightAngle::new(gl).unwrap()).unwrap();
+        let at_lim = n_prime_1(&c.view, LightAngle::new(gl).unwrap());
         prop_assert!(at_lim > 0.0);
         for fo in [Falloff::Zhang, Falloff::Barroso] {
             let below = generalized_n_prime(&c.view, LightAngle::new(gl * (1.0 - 1e-12)).unwrap(), fo);
@@ -242,7 +242,7 @@ prop_assert!(v.is_finite());
             prop_assert!(v.value() >= at_lim * (1.0 - 1e-12));
             let above = gl + (FRAC_PI_2 - gl) * u;
             let g = LightAngle::new(above).unwrap();
-            prop_assert_eq!(generalized_n_prime(&c.view, g, fo), NPrime::finite(n_prime_1(&c.view, g).unwrap()).unwrap());
+            prop_assert_eq!(generalized_n_prime(&c.view, g, fo), NPrime::finite(n_prime_1(&c.view, g)).unwrap());
         }
     }
 }
@@ -284,12 +284,7 @@ fn figure_7_shape() {
     let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
     let at = |deg: f64| LightAngle::new(f64::to_radians(deg)).unwrap();
     let s = (100.0f64).sqrt() * 0.5;
-    assert!(
-        rel(
-            n_prime_1(&view, LightAngle::new(FRAC_PI_6).unwrap()).unwrap(),
-            s
-        ) < 1e-12
-    );
+    assert!(rel(n_prime_1(&view, LightAngle::new(FRAC_PI_6).unwrap()), s) < 1e-12);
     assert!(
         rel(
             n_prime_2(&view, LightAngle::new(FRAC_PI_6).unwrap()).unwrap(),
@@ -332,7 +327,7 @@ fn figure_7_shape() {
 fn eq12_is_along_the_view_axis_not_perpendicular() {
     let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
     let g = LightAngle::new(45f64.to_radians()).unwrap();
-    let np = n_prime_1(&view, g).unwrap();
+    let np = n_prime_1(&view, g);
     assert!((np - 7.370).abs() < 1e-3);
     let w = tilted_warp(&view, g, TiltSide::Behind, NPrime::finite(np).unwrap()).unwrap();
     let p = DVec3::new(0.0, 0.0, -1.0);
@@ -365,7 +360,7 @@ fn eq13_does_not_minimise_the_frustum_maximum() {
         let w = tilted_warp(&view, g, TiltSide::Behind, NPrime::finite(np).unwrap()).unwrap();
         frustum_max(&view, &w.shadow).unwrap().max_mz
     };
-    let n1 = n_prime_1(&view, g).unwrap();
+    let n1 = n_prime_1(&view, g);
     assert!((n1 - 9.2376).abs() < 1e-4);
     assert!((mz(n1) - 13.37).abs() < 1e-2, "{}", mz(n1));
     assert!((mz(12.11) - 10.43).abs() < 1e-2, "{}", mz(12.11));
@@ -470,7 +465,7 @@ fn eq13_is_not_always_the_minimax() {
             .unwrap()
             .max(tilted_mz(&wide, np, g, 2.0, r).unwrap())
     };
-    let (n1, opt) = (n_prime_1(&wide, g).unwrap(), n_prime_axis_minimax(&wide, g));
+    let (n1, opt) = (n_prime_1(&wide, g), n_prime_axis_minimax(&wide, g));
     assert!((n1 - 1.480).abs() < 1e-3 && (opt.value() - 1.559).abs() < 1e-3);
     assert!((m(NPrime::finite(n1).unwrap()) - 0.50535).abs() < 1e-5);
     assert!((m(opt) - 0.50519).abs() < 1e-5);
@@ -490,7 +485,7 @@ fn eq16_reuses_the_name_n_prime_2() {
     assert!((eq13 + 16.631).abs() < 1e-3);
     let gl = gamma_lim(&view);
     assert!((gl.to_degrees() - 30.4987).abs() < 1e-4);
-    let at_lim = n_prime_1(&view, LightAngle::new(gl).unwrap()).unwrap();
+    let at_lim = n_prime_1(&view, LightAngle::new(gl).unwrap());
     assert!((at_lim - 5.0852).abs() < 1e-4);
     let zhang = generalized_n_prime(&view, g, Falloff::Zhang).value();
     let barroso = generalized_n_prime(&view, g, Falloff::Barroso).value();
@@ -573,7 +568,7 @@ fn errata_eq13_n_prime_below_near_is_right() {
     for (f, phi, gamma, n1_expect, at_n1, at_n) in cases {
         let v = ViewFrustum::new(1.0, f, phi.to_radians()).unwrap();
         let g = LightAngle::new(gamma.to_radians()).unwrap();
-        let n1 = n_prime_1(&v, g).unwrap();
+        let n1 = n_prime_1(&v, g);
         assert!((n1 - n1_expect).abs() < 1e-4 && n1 < v.near(), "{n1}");
         assert_eq!(
             n_prime_equal_error(&v, g).unwrap(),
@@ -595,5 +590,36 @@ fn errata_eq13_n_prime_below_near_is_right() {
     let g = LightAngle::new(2f64.to_radians()).unwrap();
     assert!((gamma_lim(&v).to_degrees() - 1.020).abs() < 1e-3);
     let gen = generalized_n_prime(&v, g, Falloff::Barroso).value();
-    assert!(rel(gen, n_prime_1(&v, g).unwrap()) < 1e-12);
+    assert!(rel(gen, n_prime_1(&v, g)) < 1e-12);
+}
+
+/// n′₁ of Eq 13 needs no `Result`: a valid frustum keeps A = n + √(f n) and B = n tan φ_y finite,
+/// and A sin γ − B cos γ lies in [−B, A]. At the edges of the frustum's domain (near planes and
+/// depth ratios as small and as large as it accepts) it is finite and inside that interval, and at
+/// γ = π/2 it is A and at γ = 0 it is −B (hand values: sin, cos exactly 1 and 0 there, up to the
+/// rounding of cos(π/2) ≈ 6e−17).
+#[test]
+fn n_prime_1_is_finite_on_the_whole_domain() {
+    let frusta = [
+        (1e-300, 1e-299, 0.5),
+        (1e-150, 1e150, 1.5),
+        (1.0, 1e307, 0.1),
+        (1e300, 1.5e300, 1.0),
+        (1.0, 100.0, FRAC_PI_6),
+    ];
+    for (n, f, th) in frusta {
+        let v = ViewFrustum::new(n, f, th).unwrap();
+        let a = v.n_prime_lispsm();
+        let b = n * v.tan_half_fov();
+        for g in [0.0, 1e-9, 0.3, FRAC_PI_6, 1.2, FRAC_PI_2] {
+            let n1 = n_prime_1(&v, LightAngle::new(g).unwrap());
+            assert!(
+                n1.is_finite() && n1 >= -b && n1 <= a,
+                "{n} {f} {th} γ = {g}: {n1}"
+            );
+        }
+        assert_eq!(n_prime_1(&v, LightAngle::new(0.0).unwrap()), -b);
+        let top = n_prime_1(&v, LightAngle::new(FRAC_PI_2).unwrap());
+        assert!((top - a).abs() <= 1e-15 * a + 1e-16 * b, "{top} vs {a}");
+    }
 }

@@ -1027,7 +1027,7 @@ mod checks {
         let e = Entry::bullet(BC, "Eq 13, n′ below n");
         let v = view(1.0, 100.0, 1f64.to_radians());
         let g = 2f64.to_radians();
-        let n1 = n_prime_1(&v, LightAngle::new(g).unwrap()).unwrap();
+        let n1 = n_prime_1(&v, LightAngle::new(g).unwrap());
         let gen = generalized_n_prime(&v, LightAngle::new(g).unwrap(), Falloff::Barroso);
         assert_eq!(gen, NPrime::finite(n1).unwrap());
         let mx = |np: f64| {
@@ -1043,7 +1043,7 @@ mod checks {
         ));
         let v = view(1.0, 2.0, 30f64.to_radians());
         let g = 35f64.to_radians();
-        let n1 = n_prime_1(&v, LightAngle::new(g).unwrap()).unwrap();
+        let n1 = n_prime_1(&v, LightAngle::new(g).unwrap());
         let mx = |np: f64| {
             let w = tilted(&v, g, TiltSide::Behind, NPrime::finite(np).unwrap());
             along(&v, &w, 1.0).max(along(&v, &w, 2.0))
@@ -1061,7 +1061,7 @@ mod checks {
         let e = Entry::bullet(BC, "Eq 6 and Eq 12, which width");
         let v = view(1.0, 100.0, FRAC_PI_6);
         let g = 45f64.to_radians();
-        let np = n_prime_1(&v, LightAngle::new(g).unwrap()).unwrap();
+        let np = n_prime_1(&v, LightAngle::new(g).unwrap());
         let w = tilted(&v, g, TiltSide::Behind, NPrime::finite(np).unwrap());
         let eq12 = tilted_mz(
             &v,
@@ -1114,7 +1114,7 @@ mod checks {
             let w = tilted(&wide, g, TiltSide::Behind, np);
             along(&wide, &w, 1.0).max(along(&wide, &w, 2.0))
         };
-        let n1 = n_prime_1(&wide, LightAngle::new(g).unwrap()).unwrap();
+        let n1 = n_prime_1(&wide, LightAngle::new(g).unwrap());
         let opt = n_prime_axis_minimax(&wide, LightAngle::new(g).unwrap());
         e.has(format!(
             "along-axis maximum {} at n′₁ = {}, {} at n′* = {}",
@@ -1138,7 +1138,7 @@ mod checks {
             .unwrap()
             .max_mz
         };
-        let n1 = n_prime_1(&v, LightAngle::new(g).unwrap()).unwrap();
+        let n1 = n_prime_1(&v, LightAngle::new(g).unwrap());
         e.has(format!(
             "n′₁ = {} gives the measured maximum over the eight vertices (perpendicular m_z) M_z = {}, n′ = 12.11 gives {}",
             d(n1, 3),
@@ -1159,7 +1159,7 @@ mod checks {
             d(generalized_n_prime(&v, g, Falloff::Zhang).value(), 3),
             d(generalized_n_prime(&v, g, Falloff::Barroso).value(), 2),
             d(gl.to_degrees(), 2),
-            d(n_prime_1(&v, LightAngle::new(gl).unwrap()).unwrap(), 3)
+            d(n_prime_1(&v, LightAngle::new(gl).unwrap()), 3)
         ));
         e.done()
     }
@@ -1295,7 +1295,7 @@ mod checks {
         let g = 60f64.to_radians();
         let l = DVec3::new(0.0, -g.sin(), -g.cos());
         let o = minimax_mz_n_prime(&v, l).unwrap();
-        let n1 = n_prime_1(&v, LightAngle::new(g).unwrap()).unwrap();
+        let n1 = n_prime_1(&v, LightAngle::new(g).unwrap());
         e.has(format!(
             "n′ = {} with M_z = {}, against {} at n′₁ = {}",
             d(o.n_prime.value(), 3),
@@ -1527,7 +1527,7 @@ mod checks {
             "(f − n) tan φ cos θ, {} at",
             d(n * th.sin() + (f - n) * phi.tan() * th.cos(), 2)
         ));
-        let n1 = n_prime_1(&v, LightAngle::new(th).unwrap()).unwrap();
+        let n1 = n_prime_1(&v, LightAngle::new(th).unwrap());
         e.has(format!("Barroso's n′₁ = {}", d(n1, 3)));
         let (y, z_top) = (40.0, 40.0 / phi.tan());
         let eq = |lambda: f64, z: f64| 2.0 * at(&v, &zt(&v, th, lambda).shadow, 0.0, y, z).mx;

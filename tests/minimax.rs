@@ -167,7 +167,7 @@ fn barroso_n1_is_not_the_frustum_minimax() {
     let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
     let g = 60f64.to_radians();
     let l = DVec3::new(0.0, -g.sin(), -g.cos());
-    let n1 = n_prime_1(&view, LightAngle::new(g).unwrap()).unwrap();
+    let n1 = n_prime_1(&view, LightAngle::new(g).unwrap());
     assert!((n1 - 9.238).abs() < 1e-3, "{n1}");
     let m1 = measured(&view, l, NPrime::finite(n1).unwrap()).max_mz;
     let o = minimax_mz_n_prime(&view, l).unwrap();

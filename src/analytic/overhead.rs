@@ -82,11 +82,18 @@ pub fn mx(near: f64, far: f64, n_prime: NPrime, z: f64, res: Resolutions) -> Res
     let (n, f) = near_far(near, far)?;
     let np = n_prime_at_least(n_prime, n)?;
     let z = depth_in(z, n, f)?;
+    finite_result("m_x", mx_unchecked(n, f, np, z, res))
+}
+
+/// [`mx`] for inputs already checked: 0 < n < f (a [`ViewFrustum`]'s), n′ ≥ n (`None` for ∞),
+/// n ≤ z ≤ f. The same arithmetic; the result may be ∞ where [`mx`] reports `Degenerate`.
+#[inline]
+fn mx_unchecked(n: f64, f: f64, np: Option<f64>, z: f64, res: Resolutions) -> f64 {
     let shape = match np {
         None => f / z,
         Some(np) => f / z * ((np + z - n) / (np + f - n)),
     };
-    finite_result("m_x", res.image() / res.s() * shape)
+    res.image() / res.s() * shape
 }
 
 /// The z error at depth z (Lloyd 2006 Eq 8; Lloyd 2005 Eq 2, 3 with n = 1, f = α).
@@ -227,11 +234,12 @@ pub fn critical_resolution(
 ) -> Result<MapResolution> {
     let ri = positive("res_image", res_image)?;
     let unit = Resolutions::default();
+    // M_x of Eq 9 on the view's depths, which the type has validated: only n′ ≥ n is checked.
+    let n = view.near();
+    let np = n_prime_at_least(n_prime, n)?;
+    let max_mx = finite_result("m_x", mx_unchecked(n, view.far(), np, n, unit))?;
     Ok(MapResolution {
-        res_s: finite_result(
-            "res_s",
-            ri * max_mx(view.near(), view.far(), n_prime, unit)?,
-        )?,
+        res_s: finite_result("res_s", ri * max_mx)?,
         res_t: finite_result("res_t", ri * max_mz(view, n_prime, unit)?)?,
     })
 }

@@ -281,17 +281,13 @@ pub fn tilted_mz_perpendicular(
 /// At γ = π/2 this is LiSPSM's n + √(f n). The formula is evaluated for any γ ∈ [0, π/2]; it is
 /// negative for small γ, where no warp satisfies the constraint. Unit: eye-space distance.
 ///
-/// # Errors
-/// [`Error::Degenerate`] when the value overflows an `f64` (n tan φ_y or n + √(f n) beyond
-/// about 1e308).
+/// Always finite: a [`ViewFrustum`] keeps n + √(f n) and n tan φ_y ≤ f tan φ_y finite, and
+/// `A sin γ − B cos γ` with finite A, B ≥ 0 lies in [−B, A]. So there is no error to return.
 #[inline]
-pub fn n_prime_1(view: &ViewFrustum, light_angle: LightAngle) -> Result<f64> {
-    let (n, f) = (view.near(), view.far());
+#[must_use]
+pub fn n_prime_1(view: &ViewFrustum, light_angle: LightAngle) -> f64 {
     let (s, c) = light_angle.radians().sin_cos();
-    finite_result(
-        "n_prime",
-        (n + sqrt_fn(n, f)) * s - n * (view.tan_half_fov() * c),
-    )
+    (view.n_prime_lispsm() * s) - view.near() * (view.tan_half_fov() * c)
 }
 
 /// n′₁(γ_lim) in closed form, without the rounding of γ_lim and cos γ_lim near π/2:
@@ -337,7 +333,7 @@ pub fn n_prime_2(view: &ViewFrustum, light_angle: LightAngle) -> Result<f64> {
 /// warp equalises the errors there; [`Error::Degenerate`] when it overflows.
 pub fn n_prime_equal_error(view: &ViewFrustum, light_angle: LightAngle) -> Result<NPrime> {
     let v = if light_angle.radians() >= view.half_fov() {
-        n_prime_1(view, light_angle)?
+        n_prime_1(view, light_angle)
     } else {
         n_prime_2(view, light_angle)?
     };
@@ -392,7 +388,7 @@ pub fn n_prime_axis_minimax(view: &ViewFrustum, light_angle: LightAngle) -> NPri
         f64::INFINITY
     };
     let eq = if light_angle.radians() >= view.half_fov() {
-        n_prime_1(view, light_angle)
+        Ok(n_prime_1(view, light_angle))
     } else {
         n_prime_2(view, light_angle)
     };
@@ -491,10 +487,7 @@ pub fn generalized_n_prime(
     let gl = gamma_lim(view);
     let g = light_angle.radians();
     if g >= gl {
-        return match n_prime_1(view, light_angle) {
-            Ok(v) => NPrime::finite_or_unwarped(v),
-            Err(_) => NPrime::UNWARPED,
-        };
+        return NPrime::finite_or_unwarped(n_prime_1(view, light_angle));
     }
     let at_lim = n_prime_1_at_lim(view);
     let r = falloff_r(falloff, g, gl);

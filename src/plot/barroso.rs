@@ -44,7 +44,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         }
         // Eq 13's branches, each on its own domain (n′₁ for φ_y ≤ γ ≤ π/2, n′₂ for
         // 0 < γ < φ_y) and where it is positive (the plot is logarithmic).
-        let (a, b) = (n_prime_1(&view, angle)?, n_prime_2(&view, angle)?);
+        let (a, b) = (n_prime_1(&view, angle), n_prime_2(&view, angle)?);
         let phi = view.half_fov();
         n1.push((
             d,

@@ -179,7 +179,9 @@ pub fn tsm(view: &ViewFrustum, light_dir: DVec3, opts: TsmOptions) -> Result<Tsm
     let (n, f) = (view.near(), view.far());
     let focus_depth = n + opts.focus;
     let focus_point = DVec3::new(0.0, 0.0, -focus_depth);
-    let fr = ViewFrustum::with_aspect(n, focus_depth, view.half_fov(), view.aspect())
+    // The view's own field of view and aspect, already valid: only the depths are checked.
+    let fr = view
+        .with_depth_range(n, focus_depth)
         .map(|v| v.corners())
         .unwrap_or(corners);
     let centre_line =
