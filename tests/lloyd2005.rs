@@ -8,8 +8,8 @@ use shadow_aliasing::analytic::overhead;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
 use shadow_aliasing::analytic::subdivided::{
     allocate_texels, allocate_texels_whole, distribution_g, error_m, face_subdivision_planes,
-    g_min, max_error, max_error_depth, max_mx, mx, n_from_xi, n_opt, subdivided_max_error,
-    xi_from_n,
+    g_min, max_error, max_error_depth, max_mx_normalised, mx_normalised, n_from_xi, n_opt,
+    subdivided_max_error, xi_from_n,
 };
 use shadow_aliasing::measure::twin::overhead_map;
 use shadow_aliasing::measure::{frustum_max, point_error};
@@ -56,7 +56,7 @@ proptest! {
         prop_assert!(close(m, mz_m, REL), "Eq 2 {m} measured {mz_m}");
         let g = distribution_g(a, n, z).unwrap();
         prop_assert!(close(g, mz_m * rs / rp * 2.0 * th.tan() / (a - 1.0), REL));
-        let cx = mx(a, n, z, rp, rt).unwrap();
+        let cx = mx_normalised(a, n, z, rp, rt).unwrap();
         prop_assert!(close(cx, mx_m, REL), "Eq 8 {cx} measured {mx_m}");
     }
 
@@ -68,7 +68,7 @@ proptest! {
         let m = frustum_max(&v, &overhead_map(&v, n).unwrap()).unwrap();
         let e5 = max_error(a, th, x, 1.0, 1.0).unwrap();
         prop_assert!(close(e5, m.max_mz, REL), "Eq 5 {e5} measured {}", m.max_mz);
-        let e9 = max_mx(a, x, 1.0, 1.0).unwrap();
+        let e9 = max_mx_normalised(a, x, 1.0, 1.0).unwrap();
         prop_assert!(close(e9, m.max_mx, REL), "Eq 9 {e9} measured {}", m.max_mx);
     }
 
@@ -107,7 +107,7 @@ proptest! {
         let r = Resolutions::default();
         let zz = (z * near).clamp(v.near(), v.far());
         let m6 = overhead::mx(near, near * a, np, zz, r).unwrap();
-        prop_assert!(close(mx(a, n, z, 1.0, 1.0).unwrap(), m6, 1e-9));
+        prop_assert!(close(mx_normalised(a, n, z, 1.0, 1.0).unwrap(), m6, 1e-9));
         let z6 = overhead::mz(&v, np, zz, r).unwrap();
         prop_assert!(close(error_m(a, th, n, z, 1.0, 1.0).unwrap(), z6, 1e-9));
         let mm = overhead::max_mz(&v, np, r).unwrap();
@@ -351,8 +351,8 @@ proptest! {
         prop_assert!(ok(xi_from_n(a, nw)));
         prop_assert!(ok(max_error(a, th, x, 1.0, 1.0)));
         prop_assert!(ok(subdivided_max_error(a, k, x, th, 1.0, 1.0)));
-        prop_assert!(ok(mx(a, nw, z, 1.0, 1.0)));
-        prop_assert!(ok(max_mx(a, x, 1.0, 1.0)));
+        prop_assert!(ok(mx_normalised(a, nw, z, 1.0, 1.0)));
+        prop_assert!(ok(max_mx_normalised(a, x, 1.0, 1.0)));
         let mut out = [0.0; 2];
         if allocate_texels(&[a, n], z, &mut out).is_ok() {
             prop_assert!(out.iter().all(|v| v.is_finite()));
@@ -517,4 +517,30 @@ fn subdivided_max_error_near_alpha_one_by_hand() {
         let want = e / 2.0 - e * e / 4.0;
         assert!(close(m, want, 1e-14), "ε={eps}: {m} vs {want}");
     }
+}
+
+/// The library names its arguments as the eval contract does (Lloyd 2005's ξ is the contract's
+/// `eta`, r_s its `res_s`), so that eval passes its errors through unchanged.
+#[test]
+fn argument_names_are_the_contracts() {
+    let name = |r: Result<f64, shadow_aliasing::Error>| match r {
+        Err(shadow_aliasing::Error::InvalidArgument { name, .. }) => name,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(
+        name(subdivided_max_error(100.0, 3, -2.0, 0.5, 1.0, 1.0)),
+        "eta"
+    );
+    assert_eq!(
+        name(subdivided_max_error(100.0, 3, 0.0, 0.5, 1.0, -1.0)),
+        "res_s"
+    );
+    assert_eq!(name(max_error(100.0, 0.5, 1.5, 1.0, 1.0)), "eta");
+    assert_eq!(name(max_error(100.0, 0.5, 0.0, 1.0, 0.0)), "res_s");
+    assert_eq!(name(max_error_depth(100.0, f64::NAN)), "eta");
+    assert_eq!(name(max_mx_normalised(100.0, 2.0, 1.0, 1.0)), "eta");
+    assert!(matches!(
+        n_from_xi(100.0, 3.0),
+        Err(shadow_aliasing::Error::InvalidArgument { name: "eta", .. })
+    ));
 }

@@ -36,7 +36,7 @@ use shadow_aliasing::measure::tilted_twin::{
 };
 use shadow_aliasing::measure::twin::{
     behind_cascade, behind_face_map, behind_map, face_max, measured_fp_zp_w_behind,
-    overhead_cascade, overhead_map, Face, TwinWarp,
+    overhead_cascade, overhead_map, SideFace, TwinWarp,
 };
 use shadow_aliasing::{Error, LightAngle, NPrime, Resolutions, ViewFrustum};
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
@@ -280,7 +280,7 @@ proptest! {
                     ok_finite("distribution_g", subdivided::distribution_g(alpha, p, zz))?;
                     ok_finite("error_m", subdivided::error_m(alpha, th, p, zz, r.0, r.1))?;
                     ok_finite("error_m", subdivided::error_m(alpha, 0.6, p, zz, 1.0, 1.0))?;
-                    ok_finite("subdivided::mx", subdivided::mx(alpha, p, zz, r.0, r.1))?;
+                    ok_finite("subdivided::mx_normalised", subdivided::mx_normalised(alpha, p, zz, r.0, r.1))?;
                 }
                 ok_finite("xi_from_n", subdivided::xi_from_n(alpha, p))?;
             }
@@ -298,7 +298,7 @@ proptest! {
                     subdivided::subdivided_max_error(alpha, k, 1.0, t, 1.0, 1.0),
                 )?;
             }
-            ok_finite("subdivided::max_mx", subdivided::max_mx(alpha, xi, r.0, r.1))?;
+            ok_finite("subdivided::max_mx_normalised", subdivided::max_mx_normalised(alpha, xi, r.0, r.1))?;
             if let Ok(s) = subdivided::face_subdivision_planes(alpha, k) {
                 prop_assert!(s.planes().iter().all(|p| p.is_finite() && *p > 0.0));
             }
@@ -523,7 +523,7 @@ proptest! {
             if let Ok(m) = overhead_map(&v, p) {
                 prop_assert!(m.matrix().is_finite());
             }
-            for face in Face::ALL {
+            for face in SideFace::ALL {
                 if let Ok(c) = face.corners(&v) {
                     prop_assert!(c.iter().all(|c| c.is_finite()));
                 }

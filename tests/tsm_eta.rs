@@ -166,6 +166,14 @@ fn domain_errors_name_the_argument() {
     assert_eq!(name(tsm_eta(1.0, 1.0, 0.0)), "delta_prime");
     assert_eq!(name(tsm_eta(1.0, 0.5, -1.0)), "xi");
     assert_eq!(name(tsm_eta(1.0, 0.5, f64::INFINITY)), "xi");
+    // Martin–Tan's η is `tsm_eta`, never `eta` (which is Lloyd's η ∈ [−1, 1] everywhere else).
+    assert!(matches!(
+        tsm_projection(1.0, -1.0),
+        Err(Error::InvalidArgument {
+            name: "tsm_eta",
+            ..
+        })
+    ));
     assert!(NPrime::finite(-2.0)
         .and_then(|n| tsm_focus_line(1.0, n, 0.5))
         .is_err());

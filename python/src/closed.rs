@@ -19,16 +19,6 @@ pub fn n_prime_arg(name: &'static str, v: f64) -> Result<NPrime, Error> {
     NPrime::named(name, v)
 }
 
-/// The same error with the argument `from` called `to`.
-pub fn rename(e: Error, from: &str, to: &'static str) -> Error {
-    match e {
-        Error::InvalidArgument { name, reason } if name == from => {
-            Error::InvalidArgument { name: to, reason }
-        }
-        other => other,
-    }
-}
-
 /// One of a fixed set of strings, in the eval contract's words.
 pub fn choice<'a>(name: &str, value: &str, options: &[&'a str]) -> PyResult<&'a str> {
     options
@@ -372,10 +362,7 @@ pub fn subdivided_max_error<'py>(
             ("res_s", rs),
         ],
         SCALAR,
-        |x| {
-            subdivided::subdivided_max_error(x[0], count("k", x[1])?, x[2], x[3], x[4], x[5])
-                .map_err(|e| rename(rename(e, "xi", "eta"), "res_shadow", "res_s"))
-        },
+        |x| subdivided::subdivided_max_error(x[0], count("k", x[1])?, x[2], x[3], x[4], x[5]),
     )
 }
 

@@ -10,10 +10,10 @@
 //! |---|---|---|
 //! | α | f/n | `alpha` (= `far/near`) |
 //! | n | warp near distance, near = 1 | `n_warp` (n′/near) |
-//! | ξ | normalised warp parameter | `xi` (= Lloyd 2006's η) |
+//! | ξ | normalised warp parameter | `eta` (= Lloyd 2006's η) |
 //! | r_p | image resolution | `res_image` |
-//! | r_s | texels along the warp (z) direction | `res_shadow` (the crate's res_t) |
-//! | r_t | texels along x | `res_x` (the crate's res_s) |
+//! | r_s | texels along the warp (z) direction | `res_s`, as the eval contract names Lloyd 2005's r_s (the crate's res_t elsewhere) |
+//! | r_t | texels along x | `res_x` (the crate's res_s elsewhere) |
 //!
 //! Every quantity here is scale-free, so a frustum [n, f] behaves as [1, α]; the tests check
 //! each function against Lloyd 2006's general-n forms ([`crate::analytic::overhead`]) and
@@ -159,23 +159,23 @@ pub fn distribution_g(alpha: f64, n_warp: NPrime, z: f64) -> Result<f64> {
 /// m = (r_p / r_s) · (α − 1) / (2 tan θ) · g(z)
 /// ```
 ///
-/// r_p = `res_image` (pixels across the image), r_s = `res_shadow` (texels along the warp, the
+/// r_p = `res_image` (pixels across the image), r_s = `res_s` (texels along the warp, the
 /// crate's res_t), θ = `half_fov` (radians), g from [`distribution_g`]. Dimensionless. Equal to
 /// Lloyd 2006's m_z (Eq 8) at depth z·near for n′ = n·near.
 ///
 /// # Errors
-/// As [`distribution_g`], and `half_fov` (∈ (0, π/2)), `res_image`, `res_shadow` (> 0).
+/// As [`distribution_g`], and `half_fov` (∈ (0, π/2)), `res_image`, `res_s` (> 0).
 pub fn error_m(
     alpha: f64,
     half_fov: f64,
     n_warp: NPrime,
     z: f64,
     res_image: f64,
-    res_shadow: f64,
+    res_s: f64,
 ) -> Result<f64> {
     let t = tan_ok(half_fov)?;
     let rp = positive("res_image", res_image)?;
-    let rs = positive("res_shadow", res_shadow)?;
+    let rs = positive("res_s", res_s)?;
     let g = distribution_g(alpha, n_warp, z)?;
     finite_result("m", rp / rs * (alpha - 1.0) / (2.0 * t) * g)
 }
@@ -207,15 +207,15 @@ pub fn xi_from_n(alpha: f64, n_warp: NPrime) -> Result<f64> {
 /// n = (√α + 1) / (ξ √α + 1)           0 < ξ ≤ 1
 /// ```
 ///
-/// α = `alpha` (> 1), ξ = `xi`. n with the view near plane at 1.
+/// α = `alpha` (> 1), ξ = `eta`. n with the view near plane at 1.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `alpha` or `xi` (∈ [−1, 1]).
-pub fn n_from_xi(alpha: f64, xi: f64) -> Result<NPrime> {
+/// [`Error::InvalidArgument`] naming `alpha` or `eta` (∈ [−1, 1]).
+pub fn n_from_xi(alpha: f64, eta: f64) -> Result<NPrime> {
     let a = alpha_ok(alpha)?;
-    let xi = in_closed("xi", xi, -1.0, 1.0)?;
+    let eta = in_closed("eta", eta, -1.0, 1.0)?;
     // The same map as Lloyd 2006's n′(η) with near = 1 (one implementation, in `warp`).
-    n_prime_from_eta(1.0, a, xi)
+    n_prime_from_eta(1.0, a, eta)
 }
 
 /// The normalised depth at which g (and m) is largest for a given ξ: the near plane z = 1 for
@@ -226,11 +226,11 @@ pub fn n_from_xi(alpha: f64, xi: f64) -> Result<NPrime> {
 /// The depth is normalised (a multiple of the near distance, in [1, α]).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `alpha` or `xi`.
-pub fn max_error_depth(alpha: f64, xi: f64) -> Result<f64> {
+/// [`Error::InvalidArgument`] naming `alpha` or `eta`.
+pub fn max_error_depth(alpha: f64, eta: f64) -> Result<f64> {
     let a = alpha_ok(alpha)?;
-    let xi = in_closed("xi", xi, -1.0, 1.0)?;
-    Ok(if xi <= 0.0 { 1.0 } else { a })
+    let eta = in_closed("eta", eta, -1.0, 1.0)?;
+    Ok(if eta <= 0.0 { 1.0 } else { a })
 }
 
 /// The maximum error over the frustum in terms of ξ (Lloyd 2005 Eq 5).
@@ -239,26 +239,20 @@ pub fn max_error_depth(alpha: f64, xi: f64) -> Result<f64> {
 /// m_max = (r_p / r_s) · (α − 1) / (2 tan θ) · (1 + |ξ| (√α − 1)) / √α
 /// ```
 ///
-/// Symbols as in [`error_m`]; ξ = `xi` ∈ [−1, 1]. Dimensionless.
+/// Symbols as in [`error_m`]; ξ = `eta` ∈ [−1, 1]. Dimensionless.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `alpha`, `half_fov`, `xi`, `res_image` or `res_shadow`.
-pub fn max_error(
-    alpha: f64,
-    half_fov: f64,
-    xi: f64,
-    res_image: f64,
-    res_shadow: f64,
-) -> Result<f64> {
+/// [`Error::InvalidArgument`] naming `alpha`, `half_fov`, `eta`, `res_image` or `res_s`.
+pub fn max_error(alpha: f64, half_fov: f64, eta: f64, res_image: f64, res_s: f64) -> Result<f64> {
     let a = alpha_ok(alpha)?;
     let t = tan_ok(half_fov)?;
-    let xi = in_closed("xi", xi, -1.0, 1.0)?;
+    let eta = in_closed("eta", eta, -1.0, 1.0)?;
     let rp = positive("res_image", res_image)?;
-    let rs = positive("res_shadow", res_shadow)?;
+    let rs = positive("res_s", res_s)?;
     let ra = a.sqrt();
     finite_result(
         "m_max",
-        rp / rs * (a - 1.0) / (2.0 * t) * (1.0 + xi.abs() * (ra - 1.0)) / ra,
+        rp / rs * (a - 1.0) / (2.0 * t) * (1.0 + eta.abs() * (ra - 1.0)) / ra,
     )
 }
 
@@ -399,15 +393,15 @@ pub fn face_subdivision_planes(alpha: f64, k: usize) -> Result<Splits> {
 /// tends to (r_p/r_s) ln α / (2 tan θ) for every ξ (the |ξ| factor tends to 1).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `alpha`, `k` (≥ 1), `half_fov`, `xi`, `res_image` or
-/// `res_shadow`.
+/// [`Error::InvalidArgument`] naming `alpha`, `k` (≥ 1), `half_fov`, `eta`, `res_image` or
+/// `res_s`.
 pub fn subdivided_max_error(
     alpha: f64,
     k: usize,
-    xi: f64,
+    eta: f64,
     half_fov: f64,
     res_image: f64,
-    res_shadow: f64,
+    res_s: f64,
 ) -> Result<f64> {
     let a = alpha_ok(alpha)?;
     if k == 0 {
@@ -441,13 +435,13 @@ pub fn subdivided_max_error(
         (rak_m1 * (rak_m1 + 2.0) / rak, rak)
     };
     let t = tan_ok(half_fov)?;
-    let xi = in_closed("xi", xi, -1.0, 1.0)?;
+    let eta = in_closed("eta", eta, -1.0, 1.0)?;
     let rp = positive("res_image", res_image)?;
-    let rs = positive("res_shadow", res_shadow)?;
+    let rs = positive("res_s", res_s)?;
     // k (r_p/r_s)/(2 tan θ) is ready before e; 1 + |ξ|(s − 1) is 1 or more, so s − 1 needs no
     // care there.
     let q = kf * rp / (rs * (2.0 * t));
-    finite_result("m_max", q * e * (1.0 + xi.abs() * (rak - 1.0)))
+    finite_result("m_max", q * e * (1.0 + eta.abs() * (rak - 1.0)))
 }
 
 /// The x error (Lloyd 2005 Eq 8; Lloyd 2006 Eq 7 with n = 1, f = α).
@@ -461,7 +455,13 @@ pub fn subdivided_max_error(
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `alpha`, `n_warp`, `z`, `res_image` or `res_x`.
-pub fn mx(alpha: f64, n_warp: NPrime, z: f64, res_image: f64, res_x: f64) -> Result<f64> {
+pub fn mx_normalised(
+    alpha: f64,
+    n_warp: NPrime,
+    z: f64,
+    res_image: f64,
+    res_x: f64,
+) -> Result<f64> {
     let a = alpha_ok(alpha)?;
     n_warp_ok(n_warp)?;
     let z = z_ok(z, a)?;
@@ -478,23 +478,23 @@ pub fn mx(alpha: f64, n_warp: NPrime, z: f64, res_image: f64, res_x: f64) -> Res
 /// m_x,max = (r_p / r_t) · α / (√α (1 + ξ (√α − 1)))        ξ > 0
 /// ```
 ///
-/// Symbols as in [`mx`] and [`max_error`]. It is smallest, r_p/r_t, at ξ = +1 (PSM, n = 1), and
+/// Symbols as in [`mx_normalised`] and [`max_error`]. It is smallest, r_p/r_t, at ξ = +1 (PSM, n = 1), and
 /// largest, (r_p/r_t) α, at ξ = −1 (unwarped).
 ///
 /// Dimensionless.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `alpha`, `xi`, `res_image` or `res_x`.
-pub fn max_mx(alpha: f64, xi: f64, res_image: f64, res_x: f64) -> Result<f64> {
+/// [`Error::InvalidArgument`] naming `alpha`, `eta`, `res_image` or `res_x`.
+pub fn max_mx_normalised(alpha: f64, eta: f64, res_image: f64, res_x: f64) -> Result<f64> {
     let a = alpha_ok(alpha)?;
-    let xi = in_closed("xi", xi, -1.0, 1.0)?;
+    let eta = in_closed("eta", eta, -1.0, 1.0)?;
     let rp = positive("res_image", res_image)?;
     let rt = positive("res_x", res_x)?;
     let ra = a.sqrt();
-    let shape = if xi <= 0.0 {
-        a * (1.0 - xi * (ra - 1.0)) / ra
+    let shape = if eta <= 0.0 {
+        a * (1.0 - eta * (ra - 1.0)) / ra
     } else {
-        a / (ra * (1.0 + xi * (ra - 1.0)))
+        a / (ra * (1.0 + eta * (ra - 1.0)))
     };
     finite_result("m_x,max", rp / rt * shape)
 }
@@ -515,8 +515,8 @@ mod tests {
         let e = subdivided_max_error(100.0, 2, 0.0, q, 1.0, 1.0).unwrap();
         assert!((e - 9.0 / 10f64.sqrt() / t).abs() < 1e-12);
         // Eq 9: ξ = 1 gives r_p/r_t; ξ = −1 gives α.
-        assert!((max_mx(100.0, 1.0, 1.0, 1.0).unwrap() - 1.0).abs() < 1e-14);
-        assert!((max_mx(100.0, -1.0, 1.0, 1.0).unwrap() - 100.0).abs() < 1e-12);
+        assert!((max_mx_normalised(100.0, 1.0, 1.0, 1.0).unwrap() - 1.0).abs() < 1e-14);
+        assert!((max_mx_normalised(100.0, -1.0, 1.0, 1.0).unwrap() - 100.0).abs() < 1e-12);
         assert_eq!(n_from_xi(100.0, -1.0), Ok(NPrime::UNWARPED));
         assert_eq!(xi_from_n(100.0, NPrime::finite(1.0).unwrap()), Ok(1.0));
         let mut w = [0u32; 3];

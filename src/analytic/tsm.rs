@@ -76,7 +76,7 @@ pub fn tsm_eta(lambda: f64, delta_prime: f64, xi: f64) -> Result<NPrime> {
     if den < 0.0 {
         return Err(eta_no_solution(lambda, d, xi));
     }
-    let eta = finite_result("eta", eta_over(lambda, d, xi, den))?;
+    let eta = finite_result("tsm_eta", eta_over(lambda, d, xi, den))?;
     NPrime::new(eta)
 }
 
@@ -132,12 +132,12 @@ fn eta_no_solution(lambda: f64, d: f64, xi: f64) -> Error {
 /// and `y = 1 − 2δ′/λ` unwarped (η = ∞). The inverse of [`tsm_eta`] in ξ.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `lambda`, `delta_prime` (outside `(0, λ)`) or `eta` (a
-/// finite η that is not positive).
+/// [`Error::InvalidArgument`] naming `lambda` or `delta_prime` (outside `(0, λ)`); `tsm_eta` is
+/// valid by construction ([`NPrime`]).
 #[inline]
-pub fn tsm_focus_line(lambda: f64, eta: NPrime, delta_prime: f64) -> Result<f64> {
+pub fn tsm_focus_line(lambda: f64, tsm_eta: NPrime, delta_prime: f64) -> Result<f64> {
     let (lambda, d) = check_inputs(lambda, delta_prime)?;
-    match eta.as_finite() {
+    match tsm_eta.as_finite() {
         Some(e) => {
             let [[a, b], _] = tsm_projection(lambda, e)?;
             finite_result("the focus line", a + b / (e + d))
@@ -152,17 +152,17 @@ pub fn tsm_focus_line(lambda: f64, eta: NPrime, delta_prime: f64) -> Result<f64>
 ///
 /// acting on `(x, 1)` with x the distance from the centre of projection; the projected
 /// coordinate is the first component over the second. It sends the top line (x = η) to +1 and the
-/// base line (x = η + λ) to −1. λ = `lambda` (trapezoid height) and η = `eta` (distance of the
+/// base line (x = η + λ) to −1. λ = `lambda` (trapezoid height) and η = `tsm_eta` (distance of the
 /// centre of projection above the top line) are distances in the same unit; the entries are
 /// dimensionless (first row, first column) and in that unit (first row, second column).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `lambda` or `eta` unless finite and positive;
+/// [`Error::InvalidArgument`] naming `lambda` or `tsm_eta` unless finite and positive;
 /// [`Error::Degenerate`] when an entry overflows (η/λ beyond about 1e154).
 #[inline]
-pub fn tsm_projection(lambda: f64, eta: f64) -> Result<[[f64; 2]; 2]> {
+pub fn tsm_projection(lambda: f64, tsm_eta: f64) -> Result<[[f64; 2]; 2]> {
     let lambda = positive("lambda", lambda)?;
-    let eta = positive("eta", eta)?;
+    let eta = positive("tsm_eta", tsm_eta)?;
     Ok([
         [
             finite_result("the projection", -(1.0 + 2.0 * (eta / lambda)))?,

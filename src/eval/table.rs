@@ -202,7 +202,8 @@ pub const QUANTITIES: &[Quantity] = &[
         value: ValueKind::Number,
         source: "Lloyd 2005 Eq 7",
         compute: |a| {
-            // Lloyd 2005's ξ is the contract's eta; its r_s the contract's res_s.
+            // The library's argument names are the contract's (Lloyd 2005's ξ is `eta`, r_s is
+            // `res_s`): its errors need no renaming.
             let v = subdivided::subdivided_max_error(
                 a.num("alpha")?,
                 a.count("k")?,
@@ -210,8 +211,7 @@ pub const QUANTITIES: &[Quantity] = &[
                 a.num("half_fov")?,
                 a.num("res_image")?,
                 a.num("res_s")?,
-            )
-            .map_err(|e| rename(rename(e, "xi", "eta"), "res_shadow", "res_s"))?;
+            )?;
             Ok(Output::Number(v))
         },
     },
@@ -419,16 +419,6 @@ pub const QUANTITIES: &[Quantity] = &[
 #[must_use]
 pub fn quantity(name: &str) -> Option<&'static Quantity> {
     QUANTITIES.iter().find(|q| q.name == name)
-}
-
-/// The same error with the argument `from` called `to` (the contract's name for it).
-fn rename(e: Error, from: &str, to: &'static str) -> Error {
-    match e {
-        Error::InvalidArgument { name, reason } if name == from => {
-            Error::InvalidArgument { name: to, reason }
-        }
-        other => other,
-    }
 }
 
 /// `zhang_eq` and `zhang_ep`: the same arguments into one of Zhang's global aliasing functions.

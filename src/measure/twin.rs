@@ -148,7 +148,7 @@ pub fn behind_map(view: &ViewFrustum) -> Result<ShadowMap> {
 
 /// A side face of the view frustum, as seen by a light behind the viewer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Face {
+pub enum SideFace {
     /// y = +z tan θ.
     Top,
     /// y = −z tan θ.
@@ -159,9 +159,14 @@ pub enum Face {
     Left,
 }
 
-impl Face {
+impl SideFace {
     /// All four side faces.
-    pub const ALL: [Face; 4] = [Face::Top, Face::Bottom, Face::Right, Face::Left];
+    pub const ALL: [SideFace; 4] = [
+        SideFace::Top,
+        SideFace::Bottom,
+        SideFace::Right,
+        SideFace::Left,
+    ];
 
     /// (a, b, slope_u, slope_x): the face's s axis, its outward warp axis, and the rates at which
     /// the face's distance from the view axis and its half-width grow with depth.
@@ -169,10 +174,10 @@ impl Face {
         let t = view.tan_half_fov();
         let ta = t * view.aspect();
         match self {
-            Face::Top => (DVec3::X, DVec3::Y, t, ta),
-            Face::Bottom => (DVec3::X, DVec3::NEG_Y, t, ta),
-            Face::Right => (DVec3::Y, DVec3::X, ta, t),
-            Face::Left => (DVec3::Y, DVec3::NEG_X, ta, t),
+            SideFace::Top => (DVec3::X, DVec3::Y, t, ta),
+            SideFace::Bottom => (DVec3::X, DVec3::NEG_Y, t, ta),
+            SideFace::Right => (DVec3::Y, DVec3::X, ta, t),
+            SideFace::Left => (DVec3::Y, DVec3::NEG_X, ta, t),
         }
     }
 
@@ -208,7 +213,7 @@ impl Face {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `n_prime` when n′ < n tan θ.
-pub fn behind_face_map(view: &ViewFrustum, face: Face, n_prime: NPrime) -> Result<ShadowMap> {
+pub fn behind_face_map(view: &ViewFrustum, face: SideFace, n_prime: NPrime) -> Result<ShadowMap> {
     let (a, b, su, sx) = face.frame(view);
     let (un, uf) = (view.near() * su, view.far() * su);
     let np = match n_prime.as_finite() {
@@ -244,7 +249,7 @@ pub fn behind_face_map(view: &ViewFrustum, face: Face, n_prime: NPrime) -> Resul
 ///
 /// # Errors
 /// As [`point_error`]; [`Error::Degenerate`] when a maximum or their product overflows.
-pub fn face_max(view: &ViewFrustum, face: Face, map: &ShadowMap) -> Result<FrustumError> {
+pub fn face_max(view: &ViewFrustum, face: SideFace, map: &ShadowMap) -> Result<FrustumError> {
     let (mut mx, mut mz) = (0.0f64, 0.0f64);
     for p in face.corners(view)? {
         let e = point_error(view, map, p, Resolutions::default())?;
@@ -282,13 +287,13 @@ impl TwinWarp {
 /// A cascade of twin maps, one per z-partition, each with its partition's sub-frustum.
 /// Fixed-size storage (no heap allocation).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Cascade {
+pub struct TwinCascade {
     views: [Option<ViewFrustum>; MAX_PARTITIONS],
     maps: [Option<ShadowMap>; MAX_PARTITIONS],
     k: usize,
 }
 
-impl Cascade {
+impl TwinCascade {
     /// Number of partitions.
     #[must_use]
     pub fn k(&self) -> usize {
@@ -327,8 +332,8 @@ fn cascade_with(
     view: &ViewFrustum,
     splits: &Splits,
     mut make: impl FnMut(&ViewFrustum) -> Result<ShadowMap>,
-) -> Result<Cascade> {
-    let mut c = Cascade {
+) -> Result<TwinCascade> {
+    let mut c = TwinCascade {
         views: [None; MAX_PARTITIONS],
         maps: [None; MAX_PARTITIONS],
         k: splits.k(),
@@ -346,7 +351,11 @@ fn cascade_with(
 ///
 /// # Errors
 /// As [`ViewFrustum::with_depth_range`] and [`overhead_map`].
-pub fn overhead_cascade(view: &ViewFrustum, splits: &Splits, warp: TwinWarp) -> Result<Cascade> {
+pub fn overhead_cascade(
+    view: &ViewFrustum,
+    splits: &Splits,
+    warp: TwinWarp,
+) -> Result<TwinCascade> {
     cascade_with(view, splits, |v| {
         overhead_map(v, warp.n_prime(v.near(), v.far())?)
     })
@@ -356,7 +365,7 @@ pub fn overhead_cascade(view: &ViewFrustum, splits: &Splits, warp: TwinWarp) -> 
 ///
 /// # Errors
 /// As [`ViewFrustum::with_depth_range`].
-pub fn behind_cascade(view: &ViewFrustum, splits: &Splits) -> Result<Cascade> {
+pub fn behind_cascade(view: &ViewFrustum, splits: &Splits) -> Result<TwinCascade> {
     cascade_with(view, splits, behind_map)
 }
 
@@ -370,7 +379,7 @@ pub fn behind_cascade(view: &ViewFrustum, splits: &Splits) -> Result<Cascade> {
 /// As [`behind_face_map`] and [`point_error`]; [`Error::Degenerate`] when the sum is not finite.
 pub fn measured_fp_zp_w_behind(view: &ViewFrustum, splits: &Splits, warp: TwinWarp) -> Result<f64> {
     let mut sum = 0.0;
-    for face in Face::ALL {
+    for face in SideFace::ALL {
         for i in 0..splits.k() {
             let (zn, zf) = splits.range(i);
             let v = view.with_depth_range(zn, zf)?;
@@ -427,7 +436,7 @@ mod tests {
                 assert!((t - want_t).abs() < 1e-12, "t={t}");
             }
         }
-        for face in Face::ALL {
+        for face in SideFace::ALL {
             let fm = behind_face_map(
                 &v,
                 face,
