@@ -2,22 +2,16 @@
 //! disjoint and tile the texture, each partition's matrix composed with its viewport maps its
 //! region into its rectangle.
 
+mod common;
+use common::config;
 use glam::{DMat4, DVec3, DVec4};
 use proptest::prelude::*;
 use shadow_aliasing::maps::atlas::{allocate_texels, layout, AtlasEntry, MAX_ATLAS_ENTRIES};
 use shadow_aliasing::maps::faces::{face_partitions, Face, FaceWarp};
 use shadow_aliasing::ViewFrustum;
 
-fn config() -> ProptestConfig {
-    ProptestConfig {
-        cases: 256,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
-
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(config(256))]
 
     /// Eq 6 in whole texels: the allocation sums to the total and each share is within one texel
     /// of r_s e_i/Σ e_j.
@@ -215,7 +209,7 @@ fn composed_matrices_map_into_their_viewports() {
 #[test]
 fn scheme_atlas_holds_every_partition() {
     use shadow_aliasing::maps::WarpRule;
-    use shadow_aliasing::scheme::{scheme, Partition, Region};
+    use shadow_aliasing::scheme::{scheme, Partition};
     let view = ViewFrustum::new(0.5, 300.0, 0.6).unwrap();
     for partition in [Partition::Single, Partition::Log, Partition::Faces] {
         for l in [
@@ -230,14 +224,7 @@ fn scheme_atlas_holds_every_partition() {
             for (i, p) in r.partitions().iter().enumerate() {
                 let v = atlas.viewports()[i];
                 let m = atlas.compose(i, &p.matrix).unwrap();
-                let pts: Vec<DVec3> = match p.region {
-                    Region::Frustum => view
-                        .with_depth_range(p.near, p.far)
-                        .unwrap()
-                        .corners()
-                        .to_vec(),
-                    Region::Face(f) => f.vertices(&view, p.near, p.far).to_vec(),
-                };
+                let pts: Vec<DVec3> = common::region_points(&view, p);
                 for q in pts {
                     let c = clip(&m, q);
                     let x0 = -1.0 + 2.0 * f64::from(v.x) / 2048.0;

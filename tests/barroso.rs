@@ -1,6 +1,8 @@
 //! Barroso & Celes 2007 §3.1 against the numeric twin: the tilted light's warping frustum built
 //! as a matrix (`measure::tilted_twin`) and measured with exact derivatives.
 
+mod common;
+use common::{rel, tilted_view};
 use glam::DVec3;
 use proptest::prelude::*;
 use shadow_aliasing::analytic::global::zhang_ep;
@@ -14,18 +16,6 @@ use shadow_aliasing::measure::{frustum_max, point_error};
 use shadow_aliasing::{Error, LightAngle, NPrime, Resolutions, ViewFrustum};
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_6};
 
-fn rel(a: f64, b: f64) -> f64 {
-    (a - b).abs() / a.abs().max(b.abs()).max(1e-300)
-}
-
-fn cases() -> ProptestConfig {
-    ProptestConfig {
-        cases: 256,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
-
 #[derive(Debug, Clone, Copy)]
 struct Config {
     view: ViewFrustum,
@@ -35,19 +25,17 @@ struct Config {
     res: Resolutions,
 }
 
-fn config() -> impl Strategy<Value = Config> {
+/// A random configuration: a `common::tilted_view`, γ, n′, a depth z and resolutions.
+fn configs() -> impl Strategy<Value = Config> {
     (
-        0.05f64..10.0,
-        0.004f64..6.0,    // log10(f/n)
-        0.0175f64..1.396, // half fov, 1° to 80°
-        0.0f64..=1.0,     // γ/(π/2)
-        -2.0f64..2.5,     // log10(n′/n)
-        0.0f64..=1.0,     // (z − n)/(f − n)
+        tilted_view(),
+        0.0f64..=1.0, // γ/(π/2)
+        -2.0f64..2.5, // log10(n′/n)
+        0.0f64..=1.0, // (z − n)/(f − n)
         (0.1f64..10.0, 0.1f64..10.0),
     )
-        .prop_map(|(n, la, phi, g, lp, w, (ri, rt))| {
-            let f = n * 10f64.powf(la);
-            let view = ViewFrustum::new(n, f, phi).unwrap();
+        .prop_map(|(view, g, lp, w, (ri, rt))| {
+            let (n, f) = (view.near(), view.far());
             let gamma = g * FRAC_PI_2;
             // The twin evaluates t = A + B/z′ through a 4×4 matrix, which loses about
             // log10(f′/n′) digits of the measured gradient; f′/n′ ≤ 10⁵ keeps it good to 1e-10.
@@ -68,12 +56,12 @@ fn lloyd_eq8(n: f64, f: f64, tan: f64, np: f64, z: f64, res: Resolutions) -> f64
 }
 
 proptest! {
-    #![proptest_config(cases())]
+    #![proptest_config(common::config(256))]
 
     /// Eq 12 is the texel width along the view axis (Eq 6) of the twin, on the axis, for every
     /// γ ∈ (0, π/2], n′ > 0 and both sides of the viewer; unwarped too.
     #[test]
-    fn eq12_is_the_along_axis_width_of_the_twin(c in config()) {
+    fn eq12_is_the_along_axis_width_of_the_twin(c in configs()) {
         prop_assume!(c.gamma > 1e-6);
         let g = LightAngle::new(c.gamma).unwrap();
         let p = DVec3::new(0.0, 0.0, -c.z);
@@ -90,7 +78,7 @@ proptest! {
     /// Eq 12 × sin γ is the crate's perpendicular m_z (distance between t-isolines ⊥ light), for
     /// every γ ∈ [0, π/2], and twice it is Zhang's E_p^pers at y = 0 (unit resolutions).
     #[test]
-    fn eq12_times_sin_gamma_is_the_perpendicular_measurement(c in config()) {
+    fn eq12_times_sin_gamma_is_the_perpendicular_measurement(c in configs()) {
         let g = LightAngle::new(c.gamma).unwrap();
         let np = NPrime::finite(c.n_prime).unwrap();
         let perp = tilted_mz_perpendicular(&c.view, np, g, c.z, c.res).unwrap();
@@ -109,7 +97,7 @@ proptest! {
     /// ξ ψ²/z written from the parts (Eq 10, 11, 12) is the same function; ψ is the twin's warp
     /// depth z′ and f′ − n′ the twin's depth range.
     #[test]
-    fn parts_match_the_twin(c in config()) {
+    fn parts_match_the_twin(c in configs()) {
         prop_assume!(c.gamma > 1e-6);
         let g = LightAngle::new(c.gamma).unwrap();
         let w = tilted_warp(&c.view, g, TiltSide::Behind, NPrime::finite(c.n_prime).unwrap()).unwrap();
@@ -125,7 +113,7 @@ proptest! {
     /// No input makes a public function panic or return a non-finite number.
     #[test]
     fn any_input_is_an_error_or_finite(
-        c in config(),
+        c in configs(),
         np in proptest::num::f64::ANY,
         z in proptest::num::f64::ANY,
         g in proptest::num::f64::ANY,
@@ -160,7 +148,7 @@ prop_assert!(v.is_finite());
 
     /// Overhead, Barroso's m_z is Lloyd 2006 Eq 8 and n′₁ is n + √(fn).
     #[test]
-    fn overhead_is_lloyd(c in config()) {
+    fn overhead_is_lloyd(c in configs()) {
         let (n, f) = (c.view.near(), c.view.far());
         let up = LightAngle::new(FRAC_PI_2).unwrap();
         prop_assert!(rel(n_prime_1(&c.view, up), n + (f * n).sqrt()) < 1e-12);
@@ -173,7 +161,7 @@ prop_assert!(v.is_finite());
     /// on the near and far planes. Where n′* ≤ n′_eq any other n′ has a larger maximum of the
     /// two; otherwise n′* ([`n_prime_axis_minimax`]) does better.
     #[test]
-    fn eq13_equalises_near_and_far_on_the_twin(c in config()) {
+    fn eq13_equalises_near_and_far_on_the_twin(c in configs()) {
         prop_assume!(c.gamma > 1e-3);
         let g = LightAngle::new(c.gamma).unwrap();
         let np = match n_prime_equal_error(&c.view, g).map(NPrime::as_finite) {
@@ -203,7 +191,7 @@ prop_assert!(v.is_finite());
     /// The axis minimax n′ beats its neighbours on the twin (measured along the view axis), for
     /// every γ, including where Eq 13 has no positive solution.
     #[test]
-    fn axis_minimax_is_a_minimum_on_the_twin(c in config()) {
+    fn axis_minimax_is_a_minimum_on_the_twin(c in configs()) {
         prop_assume!(c.gamma > 1e-3);
         let g = LightAngle::new(c.gamma).unwrap();
         let v = &c.view;
@@ -226,7 +214,7 @@ prop_assert!(v.is_finite());
     /// Eq 17 (it "descends faster"); the generalised n′ (Eq 16) is n′₁ above γ_lim, continuous
     /// there, LiSPSM's overhead, and grows without bound as γ → 0.
     #[test]
-    fn generalised_n_prime_properties(c in config(), u in 0.0f64..1.0) {
+    fn generalised_n_prime_properties(c in configs(), u in 0.0f64..1.0) {
         let gl = gamma_lim(&c.view);
         let gamma = u * gl;
         let (z, b) = (falloff_r(Falloff::Zhang, gamma, gl), falloff_r(Falloff::Barroso, gamma, gl));

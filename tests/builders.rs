@@ -2,6 +2,8 @@
 //! cameras and lights, Lloyd 2006's closed forms reproduced by the measurement of the built
 //! matrices with the light overhead and behind, continuity through the parallel configuration.
 
+mod common;
+use common::config;
 use glam::{DMat4, DVec3, DVec4};
 use proptest::prelude::*;
 use shadow_aliasing::maps::{
@@ -116,7 +118,7 @@ fn check_all_rules(view: &ViewFrustum, l: DVec3) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 1024, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(1024))]
 
     /// Random cameras (f/n from 1.01 to 10⁶, half fov 1° to 80°, aspect 0.5 to 2.5) and random
     /// lights over the whole sphere: every rule maps the eight corners into the clip volume, in
@@ -180,7 +182,7 @@ fn lloyd_n_prime(n: f64, f: f64, eta: f64) -> f64 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 128, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(128))]
 
     /// Light overhead: the measured m_x, m_z of the built warp on the view axis equal Lloyd 2006
     /// Eq 7, 8 for n′ from η ∈ (−1, 1] (Eq 11), and the measured S̄ equals Eq 12.
@@ -503,7 +505,7 @@ fn per_frame_builders_do_not_allocate() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 128, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(128))]
 
     /// A light tilted by γ in the view's vertical plane (from behind or in front): the measured
     /// m_z of the built warp on the view axis equals Barroso & Celes Eq 12 measured perpendicular
@@ -642,7 +644,7 @@ fn engine_rules_near_parallel() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 512, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(512))]
 
     /// Any valid frustum, however extreme (near from 10⁻³⁰⁰ to 10³⁰⁰, f/n up to 10⁶⁰⁰), any light
     /// (components from 10⁻³⁰⁰ to 10³⁰⁰, zeros, NaN): every builder answers a finite matrix whose

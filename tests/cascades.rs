@@ -2,6 +2,8 @@
 //! lights; Lloyd 2006 Eq 17, 18 (light overhead) and Eq 20 (light behind) from the measurement of
 //! the built matrices; overlap; explicit fractions; stable cascades and what they cost.
 
+mod common;
+use common::{config, n_ln_alpha_theta_k};
 use glam::{DMat3, DMat4, DVec3, DVec4};
 use proptest::prelude::*;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
@@ -10,7 +12,7 @@ use shadow_aliasing::maps::cascades::{
 };
 use shadow_aliasing::maps::{Falloff, WarpRule};
 use shadow_aliasing::measure::{frustum_max, frustum_max_sampled};
-use shadow_aliasing::scheme::{scheme, seams, Partition, Region};
+use shadow_aliasing::scheme::{scheme, seams, Partition};
 use shadow_aliasing::ViewFrustum;
 
 const RULES: [WarpRule; 11] = [
@@ -27,14 +29,6 @@ const RULES: [WarpRule; 11] = [
     WarpRule::Minimax,
 ];
 
-fn config_cases(cases: u32) -> ProptestConfig {
-    ProptestConfig {
-        cases,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
-
 /// Rounding: the same bound as tests/builders.rs and `maps::warp::fit_warp`'s documented
 /// precision. With f/n near 10⁶ and PSM's n′ = n, w spans six decades and the extreme corners
 /// land within about 10⁻⁹ of the faces (seen: 1.4·10⁻⁹ in depth at f/n = 8.2·10⁵ with the light
@@ -50,35 +44,14 @@ fn assert_in_clip(m: &DMat4, p: DVec3, ctx: &str) {
     );
 }
 
-/// A light direction: random on the sphere, or one of the special directions (parallel,
-/// antiparallel, perpendicular to the view, and a hair away from parallel).
+/// `common::light` with a direction a hair from antiparallel to the view.
 fn light() -> impl Strategy<Value = DVec3> {
-    prop_oneof![
-        (0.0..std::f64::consts::TAU, -1.0f64..1.0).prop_map(|(a, z)| {
-            let r = (1.0 - z * z).sqrt();
-            DVec3::new(r * a.cos(), r * a.sin(), z)
-        }),
-        Just(DVec3::new(0.0, 0.0, -1.0)),
-        Just(DVec3::new(0.0, 0.0, 1.0)),
-        Just(DVec3::new(0.0, -1.0, 0.0)),
-        Just(DVec3::new(1.0, 0.0, 0.0)),
-        Just(DVec3::new(1e-9, -1e-9, -1.0)),
-        Just(DVec3::new(0.0, 1e-7, 1.0)),
-    ]
+    common::light(DVec3::new(0.0, 1e-7, 1.0))
 }
 
 /// Near in [1e−3, 10], f/n log-uniform in [1.01, 10⁶], half fov in [1°, 80°], aspect in [0.5, 2].
 fn camera() -> impl Strategy<Value = ViewFrustum> {
-    (
-        -3.0f64..1.0,
-        (1.01f64).ln()..(1e6f64).ln(),
-        1f64.to_radians()..80f64.to_radians(),
-        0.5f64..2.0,
-    )
-        .prop_map(|(ln, lr, th, a)| {
-            let n = 10f64.powf(ln);
-            ViewFrustum::with_aspect(n, n * lr.exp(), th, a).unwrap()
-        })
+    common::camera(1f64.to_radians()..80f64.to_radians())
 }
 
 fn split_scheme() -> impl Strategy<Value = SplitScheme> {
@@ -91,7 +64,7 @@ fn split_scheme() -> impl Strategy<Value = SplitScheme> {
 }
 
 proptest! {
-    #![proptest_config(config_cases(2048))]
+    #![proptest_config(config(2048))]
 
     /// Every partition's matrix maps its (overlap-extended) sub-frustum's eight corners into the
     /// clip volume, with finite, positive measured errors.
@@ -168,10 +141,7 @@ proptest! {
             }
             prop_assert!(p.max_mx > 0.0 && p.max_mz > 0.0);
             sum += p.storage_factor;
-            let points: Vec<DVec3> = match p.region {
-                Region::Frustum => view.with_depth_range(p.near, p.far).unwrap().corners().to_vec(),
-                Region::Face(face) => face.vertices(&view, p.near, p.far).to_vec(),
-            };
+            let points: Vec<DVec3> = common::region_points(&view, p);
             for q in points {
                 assert_in_clip(&p.matrix, q, &format!("{partition:?} {rule:?} {:?}", p.region));
             }
@@ -190,10 +160,7 @@ proptest! {
     /// `measure::frustum_max` (the crate's ground truth) on each partition's matrix.
     #[test]
     fn eq17_eq18_overhead(
-        n in 0.01f64..10.0,
-        lr in (1.5f64).ln()..(1e5f64).ln(),
-        th in 5f64.to_radians()..75f64.to_radians(),
-        k in 1usize..=8,
+        (n, lr, th, k) in n_ln_alpha_theta_k(),
     ) {
         let alpha = lr.exp();
         let view = ViewFrustum::new(n, n * alpha, th).unwrap();
@@ -230,10 +197,7 @@ proptest! {
     /// possible: the frustum looks square), here with the 1/sin γ rule.
     #[test]
     fn eq20_behind(
-        n in 0.01f64..10.0,
-        lr in (1.5f64).ln()..(1e5f64).ln(),
-        th in 5f64.to_radians()..75f64.to_radians(),
-        k in 1usize..=8,
+        (n, lr, th, k) in n_ln_alpha_theta_k(),
     ) {
         let alpha = lr.exp();
         let view = ViewFrustum::new(n, n * alpha, th).unwrap();
@@ -504,14 +468,7 @@ fn clip_depth_conventions() {
         let zo = p.matrix_with_clip_depth(ClipDepth::ZeroToOne);
         assert_eq!(gl, p.matrix);
         let f32m = p.to_mat4(ClipDepth::ZeroToOne);
-        let pts: Vec<DVec3> = match p.region {
-            Region::Frustum => view
-                .with_depth_range(p.near, p.far)
-                .unwrap()
-                .corners()
-                .to_vec(),
-            Region::Face(f) => f.vertices(&view, p.near, p.far).to_vec(),
-        };
+        let pts: Vec<DVec3> = common::region_points(&view, p);
         for q in pts {
             let a = gl * DVec4::new(q.x, q.y, q.z, 1.0);
             let b = zo * DVec4::new(q.x, q.y, q.z, 1.0);
@@ -526,7 +483,7 @@ fn clip_depth_conventions() {
 }
 
 proptest! {
-    #![proptest_config(config_cases(128))]
+    #![proptest_config(config(128))]
 
     /// Any split planes (uniform, practical, Unreal's exponent), light overhead: the measured S̄ of
     /// the cascades is Eq 12 summed over the partitions (`analytic::partition::splits_storage_factor`),

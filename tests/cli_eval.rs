@@ -4,7 +4,6 @@
 #![cfg(feature = "cli")]
 
 use proptest::prelude::*;
-use proptest::test_runner::Config as ProptestConfig;
 use serde_json::{json, Value};
 use shadow_aliasing::eval::{eval_json, ArgKind, Presence, QUANTITIES};
 use std::io::Write;
@@ -12,6 +11,7 @@ use std::process::{Command, Stdio};
 
 mod common;
 use common::cli::run_with_stdin as run;
+use common::config;
 
 fn eval_stdin(input: &str) -> (i32, Value, String) {
     let (code, out, err) = run(&["eval"], input);
@@ -760,7 +760,7 @@ fn check_shape(input: &str, parsed: Option<&Value>) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(256))]
 
     #[test]
     fn random_json_never_panics(v in arb_json()) {

@@ -10,8 +10,8 @@
 //! Lloyd 2006 entry 17 is being rewritten elsewhere and is not checked here.
 
 mod common;
-use common::close;
 use common::faces::faces_with_axis;
+use common::{close, top_line_crossing_x};
 use glam::DVec3;
 use shadow_aliasing::analytic::global::{zhang_ep, zhang_ep_local, zhang_eq, zhang_eq_local};
 use shadow_aliasing::analytic::partition::{
@@ -844,22 +844,6 @@ mod checks {
             d(xt / w, 1)
         ));
         e.done()
-    }
-
-    /// Where §6.1's top line crosses the centre line (eye-space x) for a directional light along
-    /// (sin ε, 0, −cos ε): Steps 1–4 with an orthographic light view (tests/tsm_eta.rs).
-    fn top_line_crossing_x(view: &ViewFrustum, eps: f64) -> f64 {
-        let dir = DVec3::new(eps.sin(), 0.0, -eps.cos());
-        let proj = |p: DVec3| p - p.dot(dir) * dir;
-        let cn = proj(DVec3::new(0.0, 0.0, -view.near()));
-        let cf = proj(DVec3::new(0.0, 0.0, -view.far()));
-        let l = (cf - cn).normalize();
-        let m = view
-            .corners()
-            .iter()
-            .map(|&p| proj(p).dot(l))
-            .fold(f64::INFINITY, f64::min);
-        (cn + (m - cn.dot(l)) * l).x
     }
 
     pub fn mt_top_line() -> usize {

@@ -4,6 +4,7 @@
 
 mod common;
 use common::faces::faces_with_axis;
+use common::{config, n_ln_alpha_theta_k};
 use glam::{DMat4, DVec3, DVec4};
 use proptest::prelude::*;
 use shadow_aliasing::maps::faces::{face_axis, face_partitions, visible_faces, Face, FaceWarp};
@@ -13,49 +14,23 @@ use shadow_aliasing::numeric::EDGE_ON;
 use shadow_aliasing::scheme::{scheme, seams, Partition, Region};
 use shadow_aliasing::{Resolutions, ViewFrustum};
 
-fn config(cases: u32) -> ProptestConfig {
-    ProptestConfig {
-        cases,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
-
 fn clip(m: &DMat4, p: DVec3) -> Option<DVec3> {
     let h = *m * DVec4::new(p.x, p.y, p.z, 1.0);
     (h.w > 0.0 && h.is_finite()).then(|| h.truncate() / h.w)
 }
 
+/// `common::light` with a light a hair from the view's perpendicular plane.
 fn light() -> impl Strategy<Value = DVec3> {
-    prop_oneof![
-        (0.0..std::f64::consts::TAU, -1.0f64..1.0).prop_map(|(a, z)| {
-            let r = (1.0 - z * z).sqrt();
-            DVec3::new(r * a.cos(), r * a.sin(), z)
-        }),
-        Just(DVec3::new(0.0, 0.0, -1.0)),
-        Just(DVec3::new(0.0, 0.0, 1.0)),
-        Just(DVec3::new(0.0, -1.0, 0.0)),
-        Just(DVec3::new(1.0, 0.0, 0.0)),
-        Just(DVec3::new(1e-9, -1e-9, -1.0)),
-        Just(DVec3::new(0.0, -1.0, 1e-8)),
-    ]
+    common::light(DVec3::new(0.0, -1.0, 1e-8))
 }
 
+/// `common::camera`, a fifth of them with a half field of view near π/2.
 fn camera() -> impl Strategy<Value = ViewFrustum> {
-    (
-        -3.0f64..1.0,
-        (1.01f64).ln()..(1e6f64).ln(),
-        prop_oneof![
-            4 => 1f64.to_radians()..80f64.to_radians(),
-            // Half fields of view near π/2: a slab far wider than deep.
-            1 => (2.0f64..9.0).prop_map(|u| std::f64::consts::FRAC_PI_2 - 10f64.powf(-u)),
-        ],
-        0.5f64..2.0,
-    )
-        .prop_map(|(ln, lr, th, a)| {
-            let n = 10f64.powf(ln);
-            ViewFrustum::with_aspect(n, n * lr.exp(), th, a).unwrap()
-        })
+    common::camera(prop_oneof![
+        4 => 1f64.to_radians()..80f64.to_radians(),
+        // Half fields of view near π/2: a slab far wider than deep.
+        1 => (2.0f64..9.0).prop_map(|u| std::f64::consts::FRAC_PI_2 - 10f64.powf(-u)),
+    ])
 }
 
 /// The point where the light ray through `p` crosses the plane of `face` (eye space).
@@ -238,10 +213,7 @@ proptest! {
     /// k (f/n)^{1/k}((f/n)^{1/k} − 1)/(2 tan θ).
     #[test]
     fn eq19_overhead(
-        n in 0.01f64..10.0,
-        lr in (1.5f64).ln()..(1e5f64).ln(),
-        th in 5f64.to_radians()..75f64.to_radians(),
-        k in 1usize..=8,
+        (n, lr, th, k) in n_ln_alpha_theta_k(),
     ) {
         let alpha = lr.exp();
         let view = ViewFrustum::new(n, n * alpha, th).unwrap();
@@ -265,10 +237,7 @@ proptest! {
     /// measurement gives 4 k((f/n)^{1/k} − 1)/2 + 1 whatever θ.
     #[test]
     fn eq21_behind(
-        n in 0.01f64..10.0,
-        lr in (1.5f64).ln()..(1e5f64).ln(),
-        th in 5f64.to_radians()..75f64.to_radians(),
-        k in 1usize..=8,
+        (n, lr, th, k) in n_ln_alpha_theta_k(),
     ) {
         let alpha = lr.exp();
         let r = alpha.powf(1.0 / k as f64);

@@ -40,7 +40,7 @@ fn measured(alpha: f64, th: f64, n: NPrime, z: f64, res: Resolutions) -> (f64, f
 }
 
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(config(128))]
 
     /// Eq 2, 3: m = (r_p/r_s)(α − 1)/(2 tan θ) g(z) is the measured error along the warp
     /// (the crate's m_z with res_t = r_s); Eq 8 is the measured x error (res_s = r_t).
@@ -339,7 +339,7 @@ fn any_f64() -> impl Strategy<Value = f64> {
 }
 
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(config(128))]
 
     /// No input makes a Lloyd 2005 closed form panic or return NaN or ±∞.
     #[test]
@@ -480,7 +480,7 @@ fn alpha_wide() -> impl Strategy<Value = f64> {
 }
 
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(config(128))]
 
     /// Eq 7's value is accurate to 10⁻¹⁴ relative against a double-double evaluation, from
     /// α − 1 = 10⁻¹² to α = 10³⁰⁷: for k = 1, 2, 4, 8, 16 (square roots and the exact

@@ -26,7 +26,7 @@ fn eta() -> impl Strategy<Value = f64> {
 }
 
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(config(128))]
 
     /// Eq 7, 8: m_x and m_z at any point of the frustum equal the measured errors of the
     /// warping frustum with the same n′ (any resolutions).
@@ -336,7 +336,7 @@ fn any_f64() -> impl Strategy<Value = f64> {
 }
 
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(config(128))]
 
     /// No input makes a closed form panic or return NaN or ±∞: each answers a finite value or a
     /// typed error.

@@ -3,6 +3,8 @@
 //! than the uniform map over the hemisphere of light directions, while the 1/sin γ rule and the
 //! M_z-only optimum are, for some directions.
 
+mod common;
+use common::config;
 use glam::DVec3;
 use proptest::prelude::*;
 use shadow_aliasing::maps::minimax::{minimax_mz_n_prime, minimax_n_prime};
@@ -28,7 +30,7 @@ fn sbar(view: &ViewFrustum, l: DVec3, rule: WarpRule) -> f64 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 96, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(96))]
 
     /// The optimum's M_x, M_z (closed forms in n′) equal the measurement of the built matrix, and
     /// no n′ of a dense brute-force scan (measured) has a smaller S̄, nor a smaller M_z for the

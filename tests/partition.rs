@@ -29,7 +29,7 @@ fn scheme() -> impl Strategy<Value = SplitScheme> {
 }
 
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(config(128))]
 
     /// Every scheme either gives k + 1 strictly increasing planes from near to far, or a typed
     /// error (only the adaptive scheme, when α^{k−1} is too deep for f/n); never a panic.
@@ -191,7 +191,7 @@ fn seams_of_self_similar_cascades() {
 }
 
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(config(128))]
 
     /// §5.3 (Fig 12): with j shadow maps, ZP overhead (j partitions) beats FP+ZP+W overhead (j/4
     /// z-partitions); behind, ZP's k (f/n)^{2/k} is least near k = 2 ln(f/n) and then grows,
@@ -405,7 +405,7 @@ fn any_f64() -> impl Strategy<Value = f64> {
 }
 
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(config(128))]
 
     /// No input makes the splits or the scheme storage factors panic or return NaN or ±∞.
     #[test]
@@ -472,7 +472,7 @@ fn eq19_by_powf(n: f64, f: f64, k: usize, gamma: f64, ratio: f64) -> Option<Vec<
 }
 
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(config(128))]
 
     /// The adaptive planes (x^{(i−1)/i} by square roots for i = 2, 4, by x · x^{−1/3} with a
     /// Newton inverse cube root for i = 3, `powf` otherwise; the recurrence in units of n)

@@ -7,8 +7,9 @@
 //! Validated inputs ([`ViewFrustum`], [`LightAngle`], [`Resolutions`]) are built from the same
 //! arbitrary numbers; whenever a constructor accepts them, every function taking them is called.
 
+mod common;
+use common::config;
 use proptest::prelude::*;
-use proptest::test_runner::Config as ProptestConfig;
 use shadow_aliasing::analytic::eta::{
     eta_from_n_prime, n_prime_from_eta, n_prime_lispsm, n_prime_psm,
 };
@@ -40,14 +41,6 @@ use shadow_aliasing::measure::twin::{
 };
 use shadow_aliasing::{Error, LightAngle, NPrime, Resolutions, ViewFrustum};
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
-
-fn config() -> ProptestConfig {
-    ProptestConfig {
-        cases: 192,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
 
 /// The largest f64 below π/2 (θ "a few ulps" from a right angle).
 fn below_half_pi() -> f64 {
@@ -211,7 +204,7 @@ fn resolutions(a: f64, b: f64, c: f64) -> Vec<Resolutions> {
 }
 
 proptest! {
-    #![proptest_config(config())]
+    #![proptest_config(config(192))]
 
     /// Lloyd 2006 (overhead.rs) and the warp parameter (warp.rs).
     #[test]

@@ -2,6 +2,8 @@
 //! unit square's, every frustum corner in clip space, the equality with the perspective warp of
 //! parameter η, Lloyd 2006's closed forms overhead, the fallbacks and the general case.
 
+mod common;
+use common::config;
 use glam::{DMat4, DVec2, DVec3, DVec4};
 use proptest::prelude::*;
 use shadow_aliasing::maps::tsm::{
@@ -27,7 +29,7 @@ fn in_clip(c: DVec3) -> bool {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(256))]
 
     /// For random cameras and lights: the focus point lands on the chosen line (or, for the
     /// bounding-rectangle fallback, below it, where no trapezoid can move it up), the corners of
@@ -226,7 +228,7 @@ fn eight_point_map(quad: [DVec2; 4], p: DVec2) -> DVec2 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(256))]
 
     /// On random convex quadrilaterals (corners on an ellipse at increasing angles, either
     /// orientation, up to 100 times its size from the origin, at any scale), `quad_to_square` maps
@@ -499,7 +501,7 @@ fn tsm_80_percent_rule_jumps_at_the_square_fallback() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 96, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(config(96))]
 
     /// The fast iterative search (33 sampled lines, then a ternary search) is bounded by the map
     /// line nearest the 80 % line below and the exhaustive search of the paper above. The focus area is not

@@ -5,16 +5,13 @@
 //! (x = η) to +1 and the base line (x = η + λ) to −1, solved as a 2×2 linear system; η is then
 //! found by bisection so that the focus point (x = η + δ′) lands on y = ξ.
 
-use glam::DVec3;
+mod common;
+use common::{config, rel, top_line_crossing_x};
 use proptest::prelude::*;
 use shadow_aliasing::analytic::tsm::{
     tsm_eta, tsm_focus_line, tsm_projection, EIGHTY_PERCENT_LINE,
 };
 use shadow_aliasing::{Error, NPrime, ViewFrustum};
-
-fn rel(a: f64, b: f64) -> f64 {
-    (a - b).abs() / a.abs().max(b.abs()).max(1e-300)
-}
 
 /// (a, b) of y(x) = a + b/x from y(η) = 1, y(η + λ) = −1, by Cramer's rule.
 fn solve_map(lambda: f64, eta: f64) -> (f64, f64) {
@@ -45,16 +42,8 @@ fn eta_by_bisection(lambda: f64, delta: f64, xi: f64) -> f64 {
     (lo * hi).sqrt()
 }
 
-fn cases() -> ProptestConfig {
-    ProptestConfig {
-        cases: 256,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
-
 proptest! {
-    #![proptest_config(cases())]
+    #![proptest_config(config(256))]
 
     /// Where a centre above the top line exists, the printed η equals the η found from the map,
     /// the map with that η sends the focus point to ξ, and the printed matrix is the map.
@@ -94,7 +83,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(cases())]
+    #![proptest_config(config(256))]
 
     /// No input makes tsm_eta or tsm_focus_line panic or return a non-finite number.
     #[test]
@@ -178,25 +167,6 @@ fn domain_errors_name_the_argument() {
         .and_then(|n| tsm_focus_line(1.0, n, 0.5))
         .is_err());
     assert_eq!(tsm_focus_line(1.0, NPrime::UNWARPED, 0.25), Ok(0.5));
-}
-
-/// Where §6.1's top line crosses the centre line, as an eye-space x coordinate, for a directional
-/// light travelling along d = (sin ε, 0, −cos ε) (ε from the view direction, in the XZ plane):
-/// Steps 1–4 by hand with the light's view an orthographic projection along d (a directional
-/// light), E = the frustum's corners projected, l through the projected near and far centres,
-/// the top line ⟂ l touching E on the near centre's side.
-fn top_line_crossing_x(view: &ViewFrustum, eps: f64) -> f64 {
-    let d = DVec3::new(eps.sin(), 0.0, -eps.cos());
-    let proj = |p: DVec3| p - p.dot(d) * d;
-    let cn = proj(DVec3::new(0.0, 0.0, -view.near()));
-    let cf = proj(DVec3::new(0.0, 0.0, -view.far()));
-    let l = (cf - cn).normalize();
-    let m = view
-        .corners()
-        .iter()
-        .map(|&p| proj(p).dot(l))
-        .fold(f64::INFINITY, f64::min);
-    (cn + (m - cn.dot(l)) * l).x
 }
 
 /// Erratum (§6.1, continuity claim): "l_t transits smoothly from frame to frame" (and l_b) holds

@@ -1,6 +1,8 @@
 //! Zhang, Zhao & Sun 2009 against the numeric twin: the warping frustum of Eq 12 built as a
 //! matrix (`measure::tilted_twin`) and measured with exact derivatives.
 
+mod common;
+use common::{config, rel, tilted_view};
 use glam::DVec3;
 use proptest::prelude::*;
 use shadow_aliasing::analytic::global::{
@@ -13,10 +15,6 @@ use shadow_aliasing::measure::tilted_twin::{
 use shadow_aliasing::measure::{point_error, PointError};
 use shadow_aliasing::{Error, LightAngle, NPrime, Resolutions, ViewFrustum};
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_6};
-
-fn rel(a: f64, b: f64) -> f64 {
-    (a - b).abs() / a.abs().max(b.abs()).max(1e-300)
-}
 
 fn twin(view: &ViewFrustum, theta: f64, lambda: NPrime) -> TiltedWarp {
     tilted_warp(
@@ -56,22 +54,20 @@ fn well_conditioned(view: &ViewFrustum, theta: f64, lambda: f64) -> f64 {
     lambda.max(1e-5 * zhang_mu(view, LightAngle::new(theta).unwrap()).unwrap())
 }
 
-fn config() -> impl Strategy<Value = Config> {
+/// A random configuration: a `common::tilted_view`, θ, λ and a point (x, y, z) in the frustum.
+fn configs() -> impl Strategy<Value = Config> {
     (
-        0.05f64..10.0,
-        0.004f64..6.0,    // log10(f/n)
-        0.0175f64..1.396, // half fov, 1° to 80°
-        0.0f64..=1.0,     // θ / (π/2)
-        -2.0f64..2.5,     // log10(λ/n)
-        -1.0f64..=1.0,    // y / (z tan φ)
-        -1.0f64..=1.0,    // x / (z tan φ)
-        0.0f64..=1.0,     // (z − n)/(f − n)
+        tilted_view(),
+        0.0f64..=1.0,  // θ / (π/2)
+        -2.0f64..2.5,  // log10(λ/n)
+        -1.0f64..=1.0, // y / (z tan φ)
+        -1.0f64..=1.0, // x / (z tan φ)
+        0.0f64..=1.0,  // (z − n)/(f − n)
     )
-        .prop_map(|(n, la, phi, th, ll, u, v, w)| {
-            let f = n * 10f64.powf(la);
-            let view = ViewFrustum::new(n, f, phi).unwrap();
+        .prop_map(|(view, th, ll, u, v, w)| {
+            let (n, f) = (view.near(), view.far());
             let z = (n + w * (f - n)).clamp(n, f);
-            let h = z * phi.tan();
+            let h = z * view.half_fov().tan();
             let theta = th * FRAC_PI_2;
             Config {
                 view,
@@ -84,20 +80,12 @@ fn config() -> impl Strategy<Value = Config> {
         })
 }
 
-fn cases() -> ProptestConfig {
-    ProptestConfig {
-        cases: 256,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    }
-}
-
 proptest! {
-    #![proptest_config(cases())]
+    #![proptest_config(config(256))]
 
     /// μ, z_w and tan φ_w (crate forms) are the fitted warping frustum's.
     #[test]
-    fn frame_quantities_match_the_twin(c in config()) {
+    fn frame_quantities_match_the_twin(c in configs()) {
         let th = LightAngle::new(c.theta).unwrap();
         let w = twin(&c.view, c.theta, NPrime::finite(c.lambda).unwrap());
         prop_assert!(rel(zhang_mu(&c.view, th).unwrap(), w.depth_range) < 1e-9);
@@ -111,7 +99,7 @@ proptest! {
     /// E_q^pers = 2 m_x and E_p^pers = 2 m_z (unit resolutions), at every point of the frustum,
     /// for every θ ∈ [0, π/2] and λ > 0.
     #[test]
-    fn global_representation_matches_the_twin(c in config()) {
+    fn global_representation_matches_the_twin(c in configs()) {
         let th = LightAngle::new(c.theta).unwrap();
         let l = NPrime::finite(c.lambda).unwrap();
         let m = measured(&c.view, &twin(&c.view, c.theta, l), c.x, c.y, c.z);
@@ -127,7 +115,7 @@ proptest! {
 
     /// The factored form F·(z + G)^k/z (crate's F_q, F_p, G) equals the direct E^pers for θ > 0.
     #[test]
-    fn f_and_g_factor_the_global_representation(c in config()) {
+    fn f_and_g_factor_the_global_representation(c in configs()) {
         prop_assume!(c.theta > 1e-3);
         let th = LightAngle::new(c.theta).unwrap();
         let l = NPrime::finite(c.lambda).unwrap();
@@ -146,7 +134,7 @@ proptest! {
     /// |dq/dt|, |dp/ds| (Eq 1) along the shaft, from exact gradients of both maps.
     #[test]
     fn factorisation_matches_total_differentials(
-        c in config(), kx in -3.0f64..3.0, ky in -3.0f64..3.0,
+        c in configs(), kx in -3.0f64..3.0, ky in -3.0f64..3.0,
     ) {
         let th = LightAngle::new(c.theta).unwrap();
         let w = twin(&c.view, c.theta, NPrime::finite(c.lambda).unwrap());
@@ -167,7 +155,7 @@ proptest! {
     /// At θ = π/2 and y = 0 the global representation is the local one (Eq 8, 9), which is twice
     /// Lloyd 2006 Eq 7, 8 (written out here) with unit resolutions, for λ = n′ ≥ n.
     #[test]
-    fn local_is_global_overhead_and_twice_lloyd(c in config()) {
+    fn local_is_global_overhead_and_twice_lloyd(c in configs()) {
         let (n, f, t) = (c.view.near(), c.view.far(), c.view.tan_half_fov());
         let l = NPrime::finite(c.lambda).unwrap();
         let up = LightAngle::new(FRAC_PI_2).unwrap();
@@ -188,7 +176,7 @@ proptest! {
     /// §3.1: E_q, E_p (and so E_p×q) increase as y decreases, at every depth and light angle
     /// (measured on the twin).
     #[test]
-    fn errors_increase_as_y_decreases(c in config(), u in 0.0f64..1.0) {
+    fn errors_increase_as_y_decreases(c in configs(), u in 0.0f64..1.0) {
         let l = NPrime::finite(c.lambda).unwrap();
         let w = twin(&c.view, c.theta, l);
         let y2 = c.y + u * (c.z * c.view.tan_half_fov() - c.y);
@@ -199,7 +187,7 @@ proptest! {
     /// No input makes a public function panic or return a non-finite number.
     #[test]
     fn any_input_is_an_error_or_finite(
-        c in config(),
+        c in configs(),
         l in proptest::num::f64::ANY,
         y in proptest::num::f64::ANY,
         z in proptest::num::f64::ANY,
@@ -243,7 +231,7 @@ prop_assert!(v.is_finite());
 
     /// The light behind the viewer is the mirror image y → −y of Zhang's light in front.
     #[test]
-    fn behind_is_the_mirror_image(c in config()) {
+    fn behind_is_the_mirror_image(c in configs()) {
         let th = LightAngle::new(c.theta).unwrap();
         let l = NPrime::finite(c.lambda).unwrap();
         let wb = tilted_warp(&c.view, th, TiltSide::Behind, l).unwrap();

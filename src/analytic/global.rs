@@ -264,7 +264,7 @@ pub fn zhang_g(view: &ViewFrustum, lambda: f64, light_angle: LightAngle, y: f64)
 /// Domain: any λ > 0 or unwarped, θ ∈ [0, π/2], `near ≤ z ≤ far`, `|y| ≤ z tan φ`.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `lambda`, `y` or `z` outside that domain.
+/// [`Error::InvalidArgument`] naming `y` or `z` outside that domain.
 #[inline]
 pub fn zhang_eq(
     view: &ViewFrustum,
@@ -301,7 +301,7 @@ pub fn zhang_eq(
 /// Domain: any λ > 0 or unwarped, θ ∈ [0, π/2], `near ≤ z ≤ far`, `|y| ≤ z tan φ`.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `lambda`, `y` or `z` outside that domain.
+/// [`Error::InvalidArgument`] naming `y` or `z` outside that domain.
 #[inline]
 pub fn zhang_ep(
     view: &ViewFrustum,
@@ -339,8 +339,7 @@ pub fn zhang_ep(
 /// Dimensionless.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `lambda` (finite but not positive) or `z` (outside
-/// `[near, far]`).
+/// [`Error::InvalidArgument`] naming `z` (outside `[near, far]`).
 #[inline]
 pub fn zhang_eq_local(view: &ViewFrustum, lambda: NPrime, z: f64) -> Result<f64> {
     let lambda = lambda.as_finite();
@@ -364,8 +363,7 @@ pub fn zhang_eq_local(view: &ViewFrustum, lambda: NPrime, z: f64) -> Result<f64>
 /// Dimensionless.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `lambda` (finite but not positive) or `z` (outside
-/// `[near, far]`).
+/// [`Error::InvalidArgument`] naming `z` (outside `[near, far]`).
 #[inline]
 pub fn zhang_ep_local(view: &ViewFrustum, lambda: NPrime, z: f64) -> Result<f64> {
     let lambda = lambda.as_finite();

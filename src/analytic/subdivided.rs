@@ -307,20 +307,22 @@ fn check_errors(errors: &[f64]) -> Result<f64> {
 pub fn allocate_texels(errors: &[f64], total: f64, out: &mut [f64]) -> Result<()> {
     let sum = check_errors(errors)?;
     let total = positive("total", total)?;
-    if out.len() != errors.len() {
-        return Err(Error::invalid(
-            "out",
-            format!(
-                "must have the length of errors ({}), got {}",
-                errors.len(),
-                out.len()
-            ),
-        ));
-    }
+    same_length(errors.len(), out.len())?;
     for (o, &e) in out.iter_mut().zip(errors) {
         *o = total * (e / sum);
     }
     Ok(())
+}
+
+/// `out` must have the length of `errors`.
+fn same_length(errors: usize, out: usize) -> Result<()> {
+    if out == errors {
+        return Ok(());
+    }
+    Err(Error::invalid(
+        "out",
+        format!("must have the length of errors ({errors}), got {out}"),
+    ))
 }
 
 /// Eq 6 in whole texels: the largest-remainder rounding of [`allocate_texels`], so the counts
@@ -333,16 +335,7 @@ pub fn allocate_texels_whole(errors: &[f64], total: u32, out: &mut [u32]) -> Res
     if total == 0 {
         return Err(Error::invalid("total", "must be at least 1 (got 0)"));
     }
-    if out.len() != errors.len() {
-        return Err(Error::invalid(
-            "out",
-            format!(
-                "must have the length of errors ({}), got {}",
-                errors.len(),
-                out.len()
-            ),
-        ));
-    }
+    same_length(errors.len(), out.len())?;
     let t = f64::from(total);
     let mut given: u64 = 0;
     for (o, &e) in out.iter_mut().zip(errors) {

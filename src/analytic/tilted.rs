@@ -220,8 +220,8 @@ fn mz_perp_unchecked(
 /// Domain: `0 < γ ≤ π/2`, `near ≤ z ≤ far`, any n′ > 0 or unwarped. Dimensionless.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `n_prime` (finite but not positive), `light_angle` (γ = 0,
-/// where this along-axis width is infinite) or `z` (outside `[near, far]`);
+/// [`Error::InvalidArgument`] naming `light_angle` (γ = 0, where this along-axis width is
+/// infinite) or `z` (outside `[near, far]`);
 /// [`Error::Degenerate`] when the value (or μ) overflows.
 ///
 /// ```
@@ -257,8 +257,8 @@ pub fn tilted_mz(
 /// resolutions. Defined for every γ ∈ [0, π/2].
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `n_prime` (finite but not positive) or `z` (outside
-/// `[near, far]`); [`Error::Degenerate`] when the value (or μ) overflows.
+/// [`Error::InvalidArgument`] naming `z` (outside `[near, far]`); [`Error::Degenerate`] when the
+/// value (or μ) overflows.
 #[inline]
 pub fn tilted_mz_perpendicular(
     view: &ViewFrustum,

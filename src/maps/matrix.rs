@@ -31,8 +31,8 @@ pub enum ClipDepth {
 /// the fields are private, so a `ShadowMatrix` is always a builder's checked output.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ShadowMatrix {
-    matrix: DMat4,
-    light_dir: LightDir,
+    /// The matrix and the unit light direction, in the form the measurement takes.
+    map: ShadowMap,
     n_prime: NPrime,
     near: f64,
     far: f64,
@@ -49,26 +49,26 @@ impl ShadowMatrix {
         far: f64,
     ) -> Self {
         Self {
-            matrix,
-            light_dir,
+            map: ShadowMap::from_parts(matrix, light_dir),
             n_prime,
             near,
             far,
         }
     }
 
-    /// Eye space → light clip space, OpenGL depth [−1, 1]; x, y span the map.
+    /// Eye space → light clip space, OpenGL depth [−1, 1]; x, y span the map
+    /// ([`ShadowMap::matrix`]).
     #[inline]
     #[must_use]
     pub fn matrix(&self) -> DMat4 {
-        self.matrix
+        self.map.matrix()
     }
 
-    /// Unit eye-space direction the light travels.
+    /// Unit eye-space direction the light travels ([`ShadowMap::light_dir`]).
     #[inline]
     #[must_use]
     pub fn light_dir(&self) -> DVec3 {
-        self.light_dir.as_dvec3()
+        self.map.light_dir()
     }
 
     /// The warp parameter used ([`NPrime::UNWARPED`] for an orthographic map).
@@ -110,8 +110,8 @@ impl ShadowMatrix {
     #[must_use]
     pub fn with_clip_depth(&self, depth: ClipDepth) -> DMat4 {
         match depth {
-            ClipDepth::NegOneToOne => self.matrix,
-            ClipDepth::ZeroToOne => zero_to_one(&self.matrix),
+            ClipDepth::NegOneToOne => self.matrix(),
+            ClipDepth::ZeroToOne => zero_to_one(&self.matrix()),
         }
     }
 
@@ -132,14 +132,14 @@ impl ShadowMatrix {
     /// take.
     #[must_use]
     pub fn shadow_map(&self) -> ShadowMap {
-        ShadowMap::from_parts(self.matrix, self.light_dir)
+        self.map
     }
 
     /// Light clip coordinates `(x/w, y/w, z/w)` of an eye-space point, OpenGL depth, or `None`
     /// when `w ≤ 0` (the point is behind the warp's centre of projection).
     #[must_use]
     pub fn project(&self, p: DVec3) -> Option<DVec3> {
-        project(&self.matrix, p)
+        project(&self.matrix(), p)
     }
 }
 

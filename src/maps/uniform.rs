@@ -112,13 +112,7 @@ pub fn with_casters(
             let n_prime = rule_n_prime(view, &fl, rule)?;
             let corners = view.corners();
             let matrix = fit_two(&corners, casters, &fl.ls, n_prime)?;
-            Ok(ShadowMatrix::new(
-                matrix,
-                fl.ls.light(),
-                n_prime,
-                view.near(),
-                view.far(),
-            ))
+            Ok(fl.shadow_matrix(view, matrix, n_prime))
         }
     }
 }

@@ -179,6 +179,17 @@ impl FrustumInLight {
         Self::in_light_space(view, l, light_space_unit(l, DVec3::NEG_Z))
     }
 
+    /// The builders' result for `view`'s whole depth range, fitted in this light space.
+    #[inline]
+    pub(crate) fn shadow_matrix(
+        &self,
+        view: &ViewFrustum,
+        matrix: DMat4,
+        n_prime: NPrime,
+    ) -> ShadowMatrix {
+        ShadowMatrix::new(matrix, self.ls.light(), n_prime, view.near(), view.far())
+    }
+
     /// As [`FrustumInLight::from_dir`] with `ls = light_space_unit(l, −Z)` already computed
     /// (shared by a light's cascades).
     #[inline(always)]
@@ -238,8 +249,7 @@ impl FrustumInLight {
 /// mapped and is an error.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `points` when empty or not finite, `n_prime` when a
-/// [`NPrime::finite`] value is not finite and positive; [`Error::Degenerate`] when the points have
+/// [`Error::InvalidArgument`] naming `points` when empty or not finite; [`Error::Degenerate`] when the points have
 /// no extent along `ls.x` or `ls.z`, or when rounding would put a point outside the clip volume
 /// by more than 10⁻⁶ (depth ratios far beyond 10⁶ with a strong warp: the result is checked, never
 /// returned wrong).
@@ -468,13 +478,7 @@ fn warp_fitted(view: &ViewFrustum, fl: &FrustumInLight, rule: WarpRule) -> Resul
         WarpRule::Ogre | WarpRule::OgreOrtho { .. } => fit_frustum_from_corner(fl, n_prime, 2)?,
         _ => fit_frustum(fl, n_prime)?,
     };
-    Ok(ShadowMatrix::new(
-        matrix,
-        fl.ls.light(),
-        n_prime,
-        view.near(),
-        view.far(),
-    ))
+    Ok(fl.shadow_matrix(view, matrix, n_prime))
 }
 
 /// [`fit_warp`] on the frustum already in light space.

@@ -95,7 +95,6 @@ pub fn tilted_light_frame(light_angle: LightAngle, side: TiltSide) -> (DVec3, DV
 /// and warp parameter n′ (any n′ > 0, or [`NPrime::UNWARPED`]).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `n_prime` for a finite n′ that is not positive and finite;
 /// [`Error::Degenerate`] if the fitted matrix is not finite (n′ so large that f′ overflows).
 pub fn tilted_warp(
     view: &ViewFrustum,

@@ -223,6 +223,15 @@ fn ensure_font() -> Result<(), PlotError> {
 /// The PNG is drawn at this many times its size in each direction and averaged down.
 const SUPERSAMPLE: u32 = 2;
 
+/// The outline of a map's normalised space [−1, 1]², closed, for the figures that draw it.
+pub(crate) const UNIT_SQUARE: [(f64, f64); 5] = [
+    (-1.0, -1.0),
+    (1.0, -1.0),
+    (1.0, 1.0),
+    (-1.0, 1.0),
+    (-1.0, -1.0),
+];
+
 /// Writes `fig` as `out_dir/name.{png,svg}`.
 fn emit<F: Figure>(
     name: &'static str,

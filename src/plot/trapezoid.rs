@@ -5,7 +5,7 @@
 //! the share of the map each leaves unused (the paper's *wastage*).
 
 use super::chart::{build_chart, frame, Axis, PALETTE};
-use super::{Fail, Figure};
+use super::{Fail, Figure, UNIT_SQUARE};
 use crate::maps::tsm::{tsm, TsmOptions, TsmSearch};
 use crate::ViewFrustum;
 use glam::{DMat3, DVec2, DVec3};
@@ -220,16 +220,7 @@ impl Figure for Fig3 {
                 RGBColor(120, 120, 120),
             )?;
             self.draw_frustum(&mut chart, &self.focus, |p| through(&h, p), PALETTE[1])?;
-            chart.draw_series(LineSeries::new(
-                [
-                    (-1.0, -1.0),
-                    (1.0, -1.0),
-                    (1.0, 1.0),
-                    (-1.0, 1.0),
-                    (-1.0, -1.0),
-                ],
-                BLACK.stroke_width(2),
-            ))?;
+            chart.draw_series(LineSeries::new(UNIT_SQUARE, BLACK.stroke_width(2)))?;
         }
         Ok(())
     }

@@ -9,7 +9,7 @@
 //! inverse.
 
 use super::chart::{build_chart, clip_polyline, frame, linspace, Axis, PALETTE};
-use super::{Fail, Figure};
+use super::{Fail, Figure, UNIT_SQUARE};
 use crate::analytic::eta::n_prime_from_eta;
 use crate::maps::{warp, WarpRule};
 use crate::ViewFrustum;
@@ -143,16 +143,7 @@ impl Figure for Fig4 {
             }
             chart.draw_series(LineSeries::new(frustum, BLACK.stroke_width(2)))?;
             let mut chart = build_chart(&rows[self.columns.len() + k], "", &u, &v, false)?;
-            chart.draw_series(LineSeries::new(
-                [
-                    (-1.0, -1.0),
-                    (1.0, -1.0),
-                    (1.0, 1.0),
-                    (-1.0, 1.0),
-                    (-1.0, -1.0),
-                ],
-                BLACK.stroke_width(2),
-            ))?;
+            chart.draw_series(LineSeries::new(UNIT_SQUARE, BLACK.stroke_width(2)))?;
             for (i, seg) in col.map.iter().enumerate() {
                 let colour = if i < LINES + 1 {
                     PALETTE[1]
