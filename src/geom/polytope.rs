@@ -118,3 +118,206 @@ pub(crate) fn polytope_vertices(planes: &[DVec4], scale: f64, out: &mut [DVec3; 
     }
     count
 }
+
+/// Largest number of faces of a [`ConvexBody`].
+pub(crate) const MAX_BODY_FACES: usize = 32;
+/// Largest number of vertices of one face of a [`ConvexBody`].
+pub(crate) const MAX_FACE_VERTICES: usize = 32;
+
+/// A convex polyhedron of eye space as its faces (convex polygons, each vertex list cyclic),
+/// clipped exactly by half-spaces (Sutherland–Hodgman on every face, the cut closed by a cap
+/// face), in fixed arrays: no heap allocation. Points within `tol` of a clipping plane count as on
+/// it, so a body that only touches a plane keeps its face, edge or vertex there (and no volume).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ConvexBody {
+    faces: [[DVec3; MAX_FACE_VERTICES]; MAX_BODY_FACES],
+    lens: [usize; MAX_BODY_FACES],
+    count: usize,
+}
+
+impl ConvexBody {
+    /// The hexahedron with corners `c` in [`ViewFrustum::corners`]' order (near face
+    /// 0, 1, 2, 3, far face 4, 5, 6, 7, each counter-clockwise about the view direction), which is
+    /// also the order of a box's corners given as (min/max x, min/max y) at two z.
+    pub(crate) fn hexahedron(c: &[DVec3; 8]) -> Self {
+        let mut b = Self {
+            faces: [[DVec3::ZERO; MAX_FACE_VERTICES]; MAX_BODY_FACES],
+            lens: [0; MAX_BODY_FACES],
+            count: 0,
+        };
+        let quads = [
+            [0, 1, 2, 3],
+            [4, 7, 6, 5],
+            [0, 4, 5, 1],
+            [1, 5, 6, 2],
+            [2, 6, 7, 3],
+            [3, 7, 4, 0],
+        ];
+        for q in quads {
+            b.faces[b.count][..4].copy_from_slice(&q.map(|i| c[i]));
+            b.lens[b.count] = 4;
+            b.count += 1;
+        }
+        b
+    }
+
+    /// Keeps the part where `plane·(p, 1) ≤ tol |n|` (`plane = (n, d)`). Returns `false` when a
+    /// fixed array would overflow (the body is then unchanged).
+    pub(crate) fn clip(&mut self, plane: DVec4, tol: f64) -> bool {
+        let n = plane.truncate();
+        let len = n.length();
+        if !(len > 0.0) || !plane.is_finite() {
+            return false;
+        }
+        let (n, d) = (n / len, plane.w / len);
+        let dist = |p: DVec3| n.dot(p) + d;
+        // Quick accept: every vertex inside.
+        let mut all_in = true;
+        let mut any_in = false;
+        for f in 0..self.count {
+            for p in &self.faces[f][..self.lens[f]] {
+                let s = dist(*p);
+                all_in &= s <= tol;
+                any_in |= s <= tol;
+            }
+        }
+        if all_in {
+            return true;
+        }
+        if !any_in {
+            self.count = 0;
+            return true;
+        }
+        // In place: face f's clipped polygon goes to slot w ≤ f (faces are only removed), the
+        // cap to the end.
+        let mut w = 0usize;
+        let mut cap = [DVec3::ZERO; MAX_FACE_VERTICES];
+        let mut ncap = 0usize;
+        let mut push_cap = |p: DVec3, ncap: &mut usize| -> bool {
+            if cap[..*ncap].iter().any(|q| (*q - p).length() <= tol) {
+                return true;
+            }
+            if *ncap == MAX_FACE_VERTICES {
+                return false;
+            }
+            cap[*ncap] = p;
+            *ncap += 1;
+            true
+        };
+        for f in 0..self.count {
+            let face = self.faces[f];
+            let face = &face[..self.lens[f]];
+            let mut poly = [DVec3::ZERO; MAX_FACE_VERTICES];
+            let mut m = 0usize;
+            for (i, &a) in face.iter().enumerate() {
+                let b = face[(i + 1) % face.len()];
+                let (da, db) = (dist(a), dist(b));
+                if da <= tol {
+                    if m == MAX_FACE_VERTICES {
+                        return false;
+                    }
+                    poly[m] = a;
+                    m += 1;
+                    if da >= -tol && !push_cap(a, &mut ncap) {
+                        return false;
+                    }
+                }
+                if (da < -tol && db > tol) || (da > tol && db < -tol) {
+                    let t = da / (da - db);
+                    let p = a + (b - a) * t;
+                    if m == MAX_FACE_VERTICES {
+                        return false;
+                    }
+                    poly[m] = p;
+                    m += 1;
+                    if !push_cap(p, &mut ncap) {
+                        return false;
+                    }
+                }
+            }
+            if m > 0 {
+                self.faces[w][..m].copy_from_slice(&poly[..m]);
+                self.lens[w] = m;
+                w += 1;
+            }
+        }
+        self.count = w;
+        if ncap >= 3 {
+            // The cap is convex: order its points by angle about their centroid in the plane.
+            let c = cap[..ncap].iter().fold(DVec3::ZERO, |a, p| a + *p) / ncap as f64;
+            let u = n.any_orthonormal_vector();
+            let v = n.cross(u);
+            let mut ang = [0.0f64; MAX_FACE_VERTICES];
+            for i in 0..ncap {
+                let r = cap[i] - c;
+                ang[i] = r.dot(v).atan2(r.dot(u));
+            }
+            // Insertion sort by angle (at most 32 points).
+            for i in 1..ncap {
+                let mut j = i;
+                while j > 0 && ang[j - 1] > ang[j] {
+                    ang.swap(j - 1, j);
+                    cap.swap(j - 1, j);
+                    j -= 1;
+                }
+            }
+            if self.count == MAX_BODY_FACES {
+                return false;
+            }
+            self.faces[self.count][..ncap].copy_from_slice(&cap[..ncap]);
+            self.lens[self.count] = ncap;
+            self.count += 1;
+        }
+        true
+    }
+
+    /// The body's distinct vertices (within `tol`) into `out`; returns their count (0 for an
+    /// empty body), or `None` when there are more than `out` holds.
+    pub(crate) fn vertices(&self, tol: f64, out: &mut [DVec3]) -> Option<usize> {
+        let mut k = 0;
+        for f in 0..self.count {
+            for p in &self.faces[f][..self.lens[f]] {
+                if out[..k].iter().any(|q| (*q - *p).length() <= tol) {
+                    continue;
+                }
+                if k == out.len() {
+                    return None;
+                }
+                out[k] = *p;
+                k += 1;
+            }
+        }
+        Some(k)
+    }
+}
+
+/// How many dimensions a point set spans, with the sizes that decide it: `(length, width,
+/// thickness)`, the distance of the point farthest from the first, of the point farthest from the
+/// line through those two, and of the point farthest from the plane through those three. Each is
+/// 0 when the previous is 0.
+pub(crate) fn extents(points: &[DVec3]) -> (f64, f64, f64) {
+    let Some(&p0) = points.first() else {
+        return (0.0, 0.0, 0.0);
+    };
+    let far = |f: &dyn Fn(DVec3) -> f64| {
+        points
+            .iter()
+            .map(|p| (f(*p), *p))
+            .fold((0.0f64, p0), |a, b| if b.0 > a.0 { b } else { a })
+    };
+    let (len, p1) = far(&|p| (p - p0).length());
+    if len <= 0.0 {
+        return (0.0, 0.0, 0.0);
+    }
+    let e = (p1 - p0) / len;
+    let (width, p2) = far(&|p| {
+        let r = p - p0;
+        (r - r.dot(e) * e).length()
+    });
+    if width <= 0.0 {
+        return (len, 0.0, 0.0);
+    }
+    let nrm = e.cross(p2 - p0).normalize();
+    let (thick, _) = far(&|p| (p - p0).dot(nrm).abs());
+    (len, width, thick)
+}
