@@ -440,6 +440,7 @@ pub struct FrameMap {
     pub max_error_pixels: f64,
     /// What the body is (Body, Flat or ZeroDepth for a built map).
     pub focus: Focus,
+    world_to_eye: DMat4,
     body: [DVec3; MAX_BODY_VERTICES],
     body_len: usize,
 }
@@ -450,7 +451,7 @@ impl FrameMap {
     pub fn world_to_clip(&self, depth: ClipDepth) -> DMat4 {
         match depth {
             ClipDepth::NegOneToOne => self.world_to_clip,
-            ClipDepth::ZeroToOne => zero_to_one(&self.world_to_clip),
+            ClipDepth::ZeroToOne => zero_to_one(&self.shadow.matrix) * self.world_to_eye,
         }
     }
     /// [`FrameMap::world_to_clip`] in single precision for the GPU.
@@ -972,6 +973,8 @@ fn cascade_slices(
     }
 }
 
+// Not boxed: a per-frame heap allocation is what the frame API must not do.
+#[allow(clippy::large_enum_variant)]
 enum Built {
     Map(FrameMap),
     None(Focus),
@@ -1326,6 +1329,7 @@ impl Ctx<'_, '_> {
             storage_factor: err.storage_factor(),
             max_error_pixels: err.max_mx.max(err.max_mz) * image / res,
             focus,
+            world_to_eye: self.input.camera.world_to_eye,
             body,
             body_len: pts.len(),
         })
@@ -1361,8 +1365,8 @@ struct Prism {
 impl Prism {
     fn new<const N: usize>(fl: &FrustumInLight<N>, n: usize) -> Self {
         let mut pts = [DVec2::ZERO; MAX_BODY_VERTICES];
-        for i in 0..n.min(MAX_BODY_VERTICES) {
-            pts[i] = DVec2::new(fl.q[i].x, fl.q[i].z);
+        for (p, q) in pts.iter_mut().zip(&fl.q).take(n) {
+            *p = DVec2::new(q.x, q.z);
         }
         let mut hull = [DVec2::ZERO; 2 * MAX_BODY_VERTICES];
         let h = crate::geom::hull::convex_hull(&mut pts[..n], &mut hull);
@@ -1387,7 +1391,7 @@ impl Prism {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geom::polytope::frustum_planes;
+    use crate::geom::polytope::{frustum_planes, polytope_vertices};
 
     #[test]
     fn frustum_planes_agree_with_the_body() {
@@ -1398,5 +1402,80 @@ mod tests {
                 assert!(p.truncate().dot(c) + p.w <= 1e-12 * 10.0);
             }
         }
+    }
+
+    /// The clipper's vertices against the triple-plane enumeration of `polytope_vertices` (an
+    /// independent algorithm), for random boxes across, inside and around random frusta.
+    #[test]
+    fn clipped_body_matches_plane_triples() {
+        let mut seed = 99u64;
+        let mut rnd = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut nonempty = 0;
+        for _ in 0..500 {
+            let near = 0.1 + rnd();
+            let view = ViewFrustum::with_aspect(
+                near,
+                near * (2.0 + 50.0 * rnd()),
+                0.2 + rnd(),
+                0.5 + rnd(),
+            )
+            .unwrap();
+            let f = view.far();
+            let lo = DVec3::new((rnd() - 0.7) * f, (rnd() - 0.7) * f, -rnd() * 1.2 * f);
+            let hi = lo + DVec3::new(rnd(), rnd(), rnd()) * f;
+            let cam = Camera::new(
+                DMat4::IDENTITY,
+                view.near(),
+                view.far(),
+                view.half_fov(),
+                view.aspect(),
+            )
+            .unwrap();
+            let boxes = [Aabb::new(lo, hi).unwrap()];
+            let input = FrameInput::new(cam, DVec3::new(0.3, -1.0, 0.2), 1024, 1024)
+                .receivers(Bound::Boxes(&boxes))
+                .scheme(FrameScheme::Single(WarpRule::Uniform));
+            let planes = receiver_planes(&cam, &input.receivers).unwrap();
+            let ctx = Ctx {
+                input: &input,
+                view: &view,
+                l: DVec3::NEG_Y,
+                lw: DVec3::NEG_Y,
+                planes,
+            };
+            let body = ctx.body(view.near(), view.far()).unwrap();
+            let mut all = [DVec4::ZERO; 12];
+            all[..6].copy_from_slice(&frustum_planes(&view, f));
+            all[6..].copy_from_slice(&planes.p[..6]);
+            let scale = ctx.scale();
+            let mut want = [DVec3::ZERO; 64];
+            let n = polytope_vertices(&all, scale, &mut want);
+            if body.focus == Focus::Empty {
+                // No solid: the enumeration finds no body with volume either.
+                let (_, _, thick) = extents(&want[..n]);
+                assert!(thick <= 1e-6 * scale, "{lo} {hi}");
+                continue;
+            }
+            nonempty += 1;
+            let got = &body.v[..body.n];
+            for w in &want[..n] {
+                assert!(
+                    got.iter().any(|g| (*g - *w).length() <= 1e-7 * scale),
+                    "missing {w}"
+                );
+            }
+            for g in got {
+                assert!(
+                    want[..n].iter().any(|w| (*g - *w).length() <= 1e-7 * scale),
+                    "extra {g}"
+                );
+            }
+        }
+        assert!(nonempty > 100, "{nonempty}");
     }
 }

@@ -166,7 +166,7 @@ impl ConvexBody {
     pub(crate) fn clip(&mut self, plane: DVec4, tol: f64) -> bool {
         let n = plane.truncate();
         let len = n.length();
-        if !(len > 0.0) || !plane.is_finite() {
+        if len.is_nan() || len <= 0.0 || !plane.is_finite() {
             return false;
         }
         let (n, d) = (n / len, plane.w / len);
