@@ -85,6 +85,13 @@ pub const MAX_BODY_VERTICES: usize = 32;
 /// The largest number of planes of a [`Bound::Polytope`].
 pub const MAX_BOUND_PLANES: usize = 12;
 
+/// The receivers' body: 6 frustum faces + 12 bound planes, a face at most 4 + 12 vertices.
+type BodyClip = ConvexBody<18, 18>;
+/// A caster box cut by the prism of B's footprint (at most 20 edges): 26 faces of at most 24.
+type CasterClip = ConvexBody<28, 28>;
+/// A caster polytope: a box, 12 planes and the prism.
+type PolytopeClip = ConvexBody<40, 40>;
+
 /// A world-space axis-aligned box.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Aabb {
@@ -1027,7 +1034,7 @@ impl Ctx<'_, '_> {
             return Ok(body);
         }
         body.whole = false;
-        let mut cb = ConvexBody::hexahedron(&corners);
+        let mut cb = BodyClip::hexahedron(&corners);
         for pl in planes {
             if !cb.clip(*pl, tol) {
                 return Err(Error::Degenerate(
@@ -1072,37 +1079,52 @@ impl Ctx<'_, '_> {
             Bound::Boxes(b) => b,
             Bound::Polytope(_) => &[],
         };
-        let prism = Prism::new(fl, body_len);
         let tol = 1e-10 * self.scale();
         let y0 = centre.map_or(0.0, |i| fl.q[i].y);
         let depth_of = |p: DVec3| {
             let q = fl.ls.to_light(p);
             (q.y - y0) / (1.0 + rho * (q.z - fl.z0))
         };
+        // Only a point nearer the light than every point of B extends the range.
+        let top = (0..body_len)
+            .map(|i| depth_of(fl.corners[i]))
+            .fold(f64::NEG_INFINITY, f64::max);
         let mut best: Option<(f64, DVec3)> = None;
-        let mut consider = |cb: &ConvexBody| -> Result<()> {
-            let mut v = [DVec3::ZERO; 64];
-            let n = cb.vertices(tol, &mut v).ok_or_else(|| {
-                Error::Degenerate("a caster's clipped body has too many vertices".into())
-            })?;
-            for p in &v[..n] {
+        let mut consider = |v: &[DVec3]| {
+            for p in v {
                 let d = depth_of(*p);
                 if best.is_none_or(|(b, _)| d > b) {
                     best = Some((d, *p));
                 }
             }
-            Ok(())
         };
+        let mut prism: Option<Prism> = None;
         let w2e = self.input.camera.world_to_eye;
         for bx in boxes {
             let c = bx.corners().map(|p| w2e.transform_point3(p));
-            let mut cb = ConvexBody::hexahedron(&c);
+            // The depth is linear-fractional: its maximum over the box (and over any part of it)
+            // is at most its maximum over the corners. A box no nearer the light than B is skipped.
+            // (Only where w > 0 at every corner, hence over the whole box.)
+            let w_pos = |p: &DVec3| 1.0 + rho * (fl.ls.z.dot(*p) - fl.z0) > 0.0;
+            if c.iter().all(|p| w_pos(p) && depth_of(*p) <= top) {
+                continue;
+            }
+            let prism = prism.get_or_insert_with(|| Prism::new(fl, body_len));
+            if c.iter().all(|p| prism.contains(*p, tol)) {
+                consider(&c);
+                continue;
+            }
+            let mut cb = CasterClip::hexahedron(&c);
             if !prism.clip(&mut cb, tol) {
                 return Err(Error::Degenerate(
                     "a caster's clipped body has more faces than the clipper holds".into(),
                 ));
             }
-            consider(&cb)?;
+            let mut v = [DVec3::ZERO; 64];
+            let n = cb.vertices(tol, &mut v).ok_or_else(|| {
+                Error::Degenerate("a caster's clipped body has too many vertices".into())
+            })?;
+            consider(&v[..n]);
         }
         if let Bound::Polytope(world) = self.input.casters {
             // Start from the prism capped far beyond the body toward the light, then cut by the
@@ -1126,13 +1148,13 @@ impl Ctx<'_, '_> {
                 to_eye(hi.x, yb, hi.z),
                 to_eye(lo.x, yb, hi.z),
             ];
-            let mut cb = ConvexBody::hexahedron(&c);
+            let mut cb = PolytopeClip::hexahedron(&c);
             let it = self.input.camera.eye_to_world.transpose();
             let mut ok = true;
             for p in world {
                 ok &= cb.clip(it * *p, tol);
             }
-            ok &= prism.clip(&mut cb, tol);
+            ok &= Prism::new(fl, body_len).clip(&mut cb, tol);
             if !ok {
                 return Err(Error::Degenerate(
                     "the casters' clipped body has more faces than the clipper holds".into(),
@@ -1146,15 +1168,9 @@ impl Ctx<'_, '_> {
                     "the polytope is unbounded toward the light",
                 ));
             }
-            consider(&cb)?;
+            consider(&v[..n]);
         }
-        Ok(best.and_then(|(d, p)| {
-            // Only a point nearer the light than the body extends the range.
-            let top = (0..body_len)
-                .map(|i| depth_of(fl.corners[i]))
-                .fold(f64::NEG_INFINITY, f64::max);
-            (d > top).then_some(p)
-        }))
+        Ok(best.and_then(|(d, p)| (d > top).then_some(p)))
     }
 
     fn map(&self, s: &Slice, rule: WarpRule) -> Result<Built> {
@@ -1383,8 +1399,16 @@ impl Prism {
         Self { planes, n: h }
     }
 
-    fn clip(&self, cb: &mut ConvexBody, tol: f64) -> bool {
+    fn clip<const F: usize, const V: usize>(&self, cb: &mut ConvexBody<F, V>, tol: f64) -> bool {
         self.planes[..self.n].iter().all(|p| cb.clip(*p, tol))
+    }
+
+    /// Whether `p` lies inside the prism (within `tol` of its planes, which have unit normals
+    /// up to the hull edge's length).
+    fn contains(&self, p: DVec3, tol: f64) -> bool {
+        self.planes[..self.n]
+            .iter()
+            .all(|pl| pl.truncate().dot(p) + pl.w <= tol * pl.truncate().length())
     }
 }
 

@@ -119,30 +119,27 @@ pub(crate) fn polytope_vertices(planes: &[DVec4], scale: f64, out: &mut [DVec3; 
     count
 }
 
-/// Largest number of faces of a [`ConvexBody`].
-pub(crate) const MAX_BODY_FACES: usize = 32;
-/// Largest number of vertices of one face of a [`ConvexBody`].
-pub(crate) const MAX_FACE_VERTICES: usize = 32;
-
-/// A convex polyhedron of eye space as its faces (convex polygons, each vertex list cyclic),
-/// clipped exactly by half-spaces (Sutherland–Hodgman on every face, the cut closed by a cap
-/// face), in fixed arrays: no heap allocation. Points within `tol` of a clipping plane count as on
-/// it, so a body that only touches a plane keeps its face, edge or vertex there (and no volume).
+/// A convex polyhedron of eye space as its faces (convex polygons, each vertex list cyclic), at
+/// most `F` faces of at most `V` vertices, clipped exactly by half-spaces (Sutherland–Hodgman on
+/// every face, the cut closed by a cap face), in fixed arrays: no heap allocation. Points within
+/// `tol` of a clipping plane count as on it, so a body that only touches a plane keeps its face,
+/// edge or vertex there (and no volume).
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct ConvexBody {
-    faces: [[DVec3; MAX_FACE_VERTICES]; MAX_BODY_FACES],
-    lens: [usize; MAX_BODY_FACES],
+pub(crate) struct ConvexBody<const F: usize, const V: usize> {
+    faces: [[DVec3; V]; F],
+    lens: [usize; F],
     count: usize,
 }
 
-impl ConvexBody {
+impl<const F: usize, const V: usize> ConvexBody<F, V> {
     /// The hexahedron with corners `c` in [`ViewFrustum::corners`]' order (near face
     /// 0, 1, 2, 3, far face 4, 5, 6, 7, each counter-clockwise about the view direction), which is
     /// also the order of a box's corners given as (min/max x, min/max y) at two z.
     pub(crate) fn hexahedron(c: &[DVec3; 8]) -> Self {
+        const { assert!(F >= 6 && V >= 4) };
         let mut b = Self {
-            faces: [[DVec3::ZERO; MAX_FACE_VERTICES]; MAX_BODY_FACES],
-            lens: [0; MAX_BODY_FACES],
+            faces: [[DVec3::ZERO; V]; F],
+            lens: [0; F],
             count: 0,
         };
         let quads = [
@@ -162,7 +159,8 @@ impl ConvexBody {
     }
 
     /// Keeps the part where `plane·(p, 1) ≤ tol |n|` (`plane = (n, d)`). Returns `false` when a
-    /// fixed array would overflow (the body is then unchanged).
+    /// fixed array would overflow (the body is then unusable) or the plane is not finite with a
+    /// non-zero normal.
     pub(crate) fn clip(&mut self, plane: DVec4, tol: f64) -> bool {
         let n = plane.truncate();
         let len = n.length();
@@ -171,7 +169,7 @@ impl ConvexBody {
         }
         let (n, d) = (n / len, plane.w / len);
         let dist = |p: DVec3| n.dot(p) + d;
-        // Quick accept: every vertex inside.
+        // Quick accept (every vertex inside) and reject (none).
         let mut all_in = true;
         let mut any_in = false;
         for f in 0..self.count {
@@ -191,29 +189,29 @@ impl ConvexBody {
         // In place: face f's clipped polygon goes to slot w ≤ f (faces are only removed), the
         // cap to the end.
         let mut w = 0usize;
-        let mut cap = [DVec3::ZERO; MAX_FACE_VERTICES];
+        let mut cap = [DVec3::ZERO; V];
         let mut ncap = 0usize;
         let mut push_cap = |p: DVec3, ncap: &mut usize| -> bool {
             if cap[..*ncap].iter().any(|q| (*q - p).length() <= tol) {
                 return true;
             }
-            if *ncap == MAX_FACE_VERTICES {
+            if *ncap == V {
                 return false;
             }
             cap[*ncap] = p;
             *ncap += 1;
             true
         };
+        let mut poly = [DVec3::ZERO; V];
         for f in 0..self.count {
-            let face = self.faces[f];
-            let face = &face[..self.lens[f]];
-            let mut poly = [DVec3::ZERO; MAX_FACE_VERTICES];
+            let fl = self.lens[f];
             let mut m = 0usize;
-            for (i, &a) in face.iter().enumerate() {
-                let b = face[(i + 1) % face.len()];
+            for i in 0..fl {
+                let a = self.faces[f][i];
+                let b = self.faces[f][if i + 1 == fl { 0 } else { i + 1 }];
                 let (da, db) = (dist(a), dist(b));
                 if da <= tol {
-                    if m == MAX_FACE_VERTICES {
+                    if m == V {
                         return false;
                     }
                     poly[m] = a;
@@ -225,7 +223,7 @@ impl ConvexBody {
                 if (da < -tol && db > tol) || (da > tol && db < -tol) {
                     let t = da / (da - db);
                     let p = a + (b - a) * t;
-                    if m == MAX_FACE_VERTICES {
+                    if m == V {
                         return false;
                     }
                     poly[m] = p;
@@ -247,12 +245,12 @@ impl ConvexBody {
             let c = cap[..ncap].iter().fold(DVec3::ZERO, |a, p| a + *p) / ncap as f64;
             let u = n.any_orthonormal_vector();
             let v = n.cross(u);
-            let mut ang = [0.0f64; MAX_FACE_VERTICES];
+            let mut ang = [0.0f64; V];
             for i in 0..ncap {
                 let r = cap[i] - c;
                 ang[i] = r.dot(v).atan2(r.dot(u));
             }
-            // Insertion sort by angle (at most 32 points).
+            // Insertion sort by angle (a few dozen points at most).
             for i in 1..ncap {
                 let mut j = i;
                 while j > 0 && ang[j - 1] > ang[j] {
@@ -261,7 +259,7 @@ impl ConvexBody {
                     j -= 1;
                 }
             }
-            if self.count == MAX_BODY_FACES {
+            if self.count == F {
                 return false;
             }
             self.faces[self.count][..ncap].copy_from_slice(&cap[..ncap]);
