@@ -485,6 +485,20 @@ pub struct Frame {
     light_dir_eye: DVec3,
 }
 
+impl Default for Frame {
+    /// An empty frame, for [`frame_into`] to fill.
+    fn default() -> Self {
+        Self {
+            maps: [None; MAX_PARTITIONS],
+            k: 0,
+            len: 0,
+            focus: Focus::Empty,
+            light: LightCase::General,
+            light_dir_eye: DVec3::NEG_Y,
+        }
+    }
+}
+
 impl Frame {
     /// The built maps, near to far (cascades whose body is empty are left out).
     pub fn maps(&self) -> FrameMaps<'_> {
@@ -584,14 +598,7 @@ struct Planes {
 /// list, too many planes, a polytope unbounded toward the light), `overlap`, `k`, the splits or
 /// the rule's parameter; [`Error::Degenerate`] when a map cannot be represented in `f64`.
 pub fn frame(input: &FrameInput<'_>) -> Result<Frame> {
-    let mut out = Frame {
-        maps: [None; MAX_PARTITIONS],
-        k: 0,
-        len: 0,
-        focus: Focus::Empty,
-        light: LightCase::General,
-        light_dir_eye: DVec3::NEG_Y,
-    };
+    let mut out = Frame::default();
     frame_into(input, &mut out)?;
     Ok(out)
 }

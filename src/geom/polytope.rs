@@ -191,8 +191,12 @@ impl<const F: usize, const V: usize> ConvexBody<F, V> {
         let mut w = 0usize;
         let mut cap = [DVec3::ZERO; V];
         let mut ncap = 0usize;
+        let tol2 = tol * tol;
         let mut push_cap = |p: DVec3, ncap: &mut usize| -> bool {
-            if cap[..*ncap].iter().any(|q| (*q - p).length() <= tol) {
+            if cap[..*ncap]
+                .iter()
+                .any(|q| (*q - p).length_squared() <= tol2)
+            {
                 return true;
             }
             if *ncap == V {
@@ -245,10 +249,15 @@ impl<const F: usize, const V: usize> ConvexBody<F, V> {
             let c = cap[..ncap].iter().fold(DVec3::ZERO, |a, p| a + *p) / ncap as f64;
             let u = n.any_orthonormal_vector();
             let v = n.cross(u);
+            // A pseudo-angle, monotonic in the angle (no atan2): the position along the diamond
+            // |x| + |y| = 1, in [0, 4).
             let mut ang = [0.0f64; V];
             for i in 0..ncap {
                 let r = cap[i] - c;
-                ang[i] = r.dot(v).atan2(r.dot(u));
+                let (x, y) = (r.dot(u), r.dot(v));
+                let s = x.abs() + y.abs();
+                let t = if s > 0.0 { y / s } else { 0.0 };
+                ang[i] = if x >= 0.0 { t.rem_euclid(4.0) } else { 2.0 - t };
             }
             // Insertion sort by angle (a few dozen points at most).
             for i in 1..ncap {
@@ -273,9 +282,10 @@ impl<const F: usize, const V: usize> ConvexBody<F, V> {
     /// empty body), or `None` when there are more than `out` holds.
     pub(crate) fn vertices(&self, tol: f64, out: &mut [DVec3]) -> Option<usize> {
         let mut k = 0;
+        let tol2 = tol * tol;
         for f in 0..self.count {
             for p in &self.faces[f][..self.lens[f]] {
-                if out[..k].iter().any(|q| (*q - *p).length() <= tol) {
+                if out[..k].iter().any(|q| (*q - *p).length_squared() <= tol2) {
                     continue;
                 }
                 if k == out.len() {
