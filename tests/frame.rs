@@ -638,3 +638,51 @@ proptest! {
         }
     }
 }
+
+/// A polytope bound with a box's six planes gives the box's maps, as receivers and as casters;
+/// an unbounded caster polytope is a typed error.
+#[test]
+fn polytope_bounds_agree_with_boxes() {
+    let ground = aabb([-20.0, -1.0, -9.0], [20.0, 0.0, -1.0]);
+    let tower = aabb([-1.0, 0.0, -6.0], [1.0, 30.0, -4.0]);
+    let planes = |b: &Aabb| {
+        [
+            DVec4::new(1.0, 0.0, 0.0, -b.max.x),
+            DVec4::new(-1.0, 0.0, 0.0, b.min.x),
+            DVec4::new(0.0, 1.0, 0.0, -b.max.y),
+            DVec4::new(0.0, -1.0, 0.0, b.min.y),
+            DVec4::new(0.0, 0.0, 1.0, -b.max.z),
+            DVec4::new(0.0, 0.0, -1.0, b.min.z),
+        ]
+    };
+    let (gp, tp) = (planes(&ground), planes(&tower));
+    let (gb, tb) = ([ground], [tower]);
+    let lw = DVec3::new(0.05, -1.0, 0.05);
+    let base = FrameInput::new(identity_camera(), lw, 1024, 1024)
+        .scheme(FrameScheme::Single(WarpRule::Lispsm));
+    let a = frame(&base.receivers(Bound::Boxes(&gb)).casters(Bound::Boxes(&tb))).unwrap();
+    let b = frame(
+        &base
+            .receivers(Bound::Polytope(&gp))
+            .casters(Bound::Polytope(&tp)),
+    )
+    .unwrap();
+    let (ma, mb) = (a.maps()[0].shadow.matrix, b.maps()[0].shadow.matrix);
+    let d = (ma - mb)
+        .abs()
+        .to_cols_array()
+        .into_iter()
+        .fold(0.0, f64::max);
+    assert!(d < 1e-9, "{d:e}");
+    // The tower reaches into the depth range in both (the casters moved depth).
+    let plain = frame(&base.receivers(Bound::Boxes(&gb))).unwrap();
+    assert_ne!(plain.maps()[0].shadow.matrix.row(2), mb.row(2));
+    // Half-space casters (y ≥ 0): unbounded toward the light, a typed error.
+    let half = [DVec4::new(0.0, -1.0, 0.0, 0.0)];
+    assert!(frame(
+        &base
+            .receivers(Bound::Boxes(&gb))
+            .casters(Bound::Polytope(&half))
+    )
+    .is_err());
+}
