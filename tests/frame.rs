@@ -11,7 +11,7 @@ use shadow_aliasing::frame::{
     WarpCentre,
 };
 use shadow_aliasing::maps::cascades::cascades;
-use shadow_aliasing::maps::{warp, ClipDepth, Falloff, WarpRule};
+use shadow_aliasing::maps::{tsm, warp, ClipDepth, Falloff, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::measure::{point_error, ShadowMap};
 use shadow_aliasing::{Resolutions, ViewFrustum};
 
@@ -585,7 +585,10 @@ proptest! {
         let rule = rules()[rule_i];
         // TSM's focus within the smallest slice (the first of three self-similar cascades).
         let rule = match rule { WarpRule::Tsm { .. } => WarpRule::Tsm { focus: 0.3 * near * (ratio.cbrt() - 1.0) }, r => r };
-        let scheme = if cascaded {
+        let scheme = if let (false, WarpRule::Tsm { focus }) = (cascaded, rule) {
+            // The trapezoidal map itself (not only its n′ rule) on B.
+            FrameScheme::Tsm(TsmOptions { focus, search: TsmSearch::EightyPercent })
+        } else if cascaded {
             FrameScheme::Cascades { splits: CascadeSplits::Scheme { scheme: SplitScheme::SelfSimilar, k: 3, overlap: 0.1 }, rule }
         } else {
             FrameScheme::Single(rule)
@@ -685,4 +688,41 @@ fn polytope_bounds_agree_with_boxes() {
             .casters(Bound::Polytope(&half))
     )
     .is_err());
+}
+
+/// TSM on a B that is the whole frustum is Martin & Tan's map of the frustum (s, t and w rows;
+/// the depth row is refitted); on a scene box every B vertex lands in the clip volume.
+#[test]
+fn tsm_on_the_body() {
+    let huge = [aabb([-1e4, -1e4, -1e4], [1e4, 1e4, 1e4])];
+    let lw = DVec3::new(0.3, -0.8, -0.4);
+    let opts = TsmOptions {
+        focus: 3.0,
+        search: TsmSearch::EightyPercent,
+    };
+    let f = frame(
+        &FrameInput::new(identity_camera(), lw, 1024, 1024)
+            .receivers(Bound::Boxes(&huge))
+            .scheme(FrameScheme::Tsm(opts)),
+    )
+    .unwrap();
+    let want = tsm(identity_camera().view(), f.light_dir_eye(), opts).unwrap();
+    let got = f.maps()[0].shadow.matrix;
+    for r in [0, 1, 3] {
+        let d = (got.row(r) - want.shadow.matrix.row(r)).abs().max_element();
+        let scale = want.shadow.matrix.row(r).abs().max_element();
+        assert!(d <= 1e-9 * scale, "row {r}: {d:e}");
+    }
+    let ground = [aabb([-20.0, -1.0, -9.0], [20.0, 0.0, -1.0])];
+    let f = frame(
+        &FrameInput::new(identity_camera(), lw, 1024, 1024)
+            .receivers(Bound::Boxes(&ground))
+            .scheme(FrameScheme::Tsm(opts)),
+    )
+    .unwrap();
+    let m = &f.maps()[0];
+    for p in m.body() {
+        let h = m.shadow.matrix * p.extend(1.0);
+        assert!(h.w > 0.0 && (h.truncate() / h.w).abs().max_element() <= 1.0 + 1e-9);
+    }
 }

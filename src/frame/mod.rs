@@ -70,11 +70,12 @@ use crate::geom::polytope::{extents, ConvexBody};
 use crate::maps::cascades::bounding_sphere;
 use crate::maps::lightspace::{light_space_unit, LightSpace};
 use crate::maps::matrix::zero_to_one;
+use crate::maps::tsm::{tsm_on_points, validate as validate_tsm};
 use crate::maps::warp::{
     fit_body, focus_in_range, rule_axis, rule_n_prime_on, warp_prepared, FrustumInLight,
     PreparedLight,
 };
-use crate::maps::{ClipDepth, ShadowMatrix, WarpRule};
+use crate::maps::{ClipDepth, ShadowMatrix, TsmOptions, WarpRule};
 use crate::measure::vertex::vertex_max;
 use glam::{DMat3, DMat4, DVec2, DVec3, DVec4, Mat4};
 
@@ -301,6 +302,11 @@ pub enum FrameScheme<'a> {
     /// light space, snapped to whole texels ([`crate::maps::cascades::stable_cascade`]); the
     /// depth range from its focus body and the casters; no map for a slice whose body is empty.
     Stable(CascadeSplits<'a>),
+    /// One trapezoidal map (Martin & Tan) of the focus body: the view-axis light space, B's
+    /// vertices as E, the focus region B cut `focus × (f_B − n_B)/(f − n)` beyond B's nearest depth
+    /// (the focus distance scaled to B's depth, as [`crate::maps::tsm::tsm_general`] does), the
+    /// depth row refitted to B and the casters.
+    Tsm(TsmOptions),
 }
 
 /// Everything the frame needs (see the module docs). Build with [`FrameInput::new`] and the
@@ -642,7 +648,7 @@ pub fn frame_into(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
         split: (0.0, 0.0),
         blend: (0.0, 0.0),
     }; MAX_PARTITIONS];
-    let (k, rule, stable) = match input.scheme {
+    let (k, rule, _) = match input.scheme {
         FrameScheme::Single(rule) => {
             slices[0] = Slice {
                 cover: (zn, zf),
@@ -659,6 +665,14 @@ pub fn frame_into(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
             WarpRule::Uniform,
             true,
         ),
+        FrameScheme::Tsm(_) => {
+            slices[0] = Slice {
+                cover: (zn, zf),
+                split: (zn, zf),
+                blend: (zf, zf),
+            };
+            (1, WarpRule::Uniform, false)
+        }
     };
     let ctx = Ctx {
         input,
@@ -670,10 +684,10 @@ pub fn frame_into(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
     let mut first_focus = None;
     let mut any_edge_on = false;
     for (i, s) in slices[..k].iter().enumerate() {
-        let m = if stable {
-            ctx.stable_map(s)?
-        } else {
-            ctx.map(s, rule)?
+        let m = match input.scheme {
+            FrameScheme::Stable(_) => ctx.stable_map(s)?,
+            FrameScheme::Tsm(opts) => ctx.tsm_map(s, opts)?,
+            _ => ctx.map(s, rule)?,
         };
         match m {
             Built::Map(m) => {
@@ -1018,7 +1032,7 @@ impl Ctx<'_, '_> {
     }
 
     /// B for the slice `[a, b]`.
-    fn body(&self, a: f64, b: f64) -> Result<Body> {
+    fn body(&self, a: f64, b: f64, extra: Option<DVec4>) -> Result<Body> {
         let sub = self.view.with_depth_range(a, b)?;
         let corners = sub.corners();
         let scale = self.scale();
@@ -1035,14 +1049,14 @@ impl Ctx<'_, '_> {
                 .iter()
                 .all(|pl| pl.truncate().dot(*p) + pl.w <= tol * pl.truncate().length())
         };
-        if corners.iter().all(inside) {
+        if extra.is_none() && corners.iter().all(inside) {
             body.v[..8].copy_from_slice(&corners);
             body.n = 8;
             return Ok(body);
         }
         body.whole = false;
         let mut cb = BodyClip::hexahedron(&corners);
-        for pl in planes {
+        for pl in planes.iter().chain(extra.as_ref()) {
             if !cb.clip(*pl, tol) {
                 return Err(Error::Degenerate(
                     "the focus body has more faces than the clipper holds".into(),
@@ -1075,8 +1089,8 @@ impl Ctx<'_, '_> {
         &self,
         fl: &FrustumInLight<N>,
         body_len: usize,
-        rho: f64,
-        centre: Option<usize>,
+        w_of: impl Fn(DVec3) -> f64,
+        y0: f64,
     ) -> Result<Option<DVec3>> {
         if self.input.depth_clamp {
             return Ok(None);
@@ -1087,11 +1101,7 @@ impl Ctx<'_, '_> {
             Bound::Polytope(_) => &[],
         };
         let tol = 1e-10 * self.scale();
-        let y0 = centre.map_or(0.0, |i| fl.q[i].y);
-        let depth_of = |p: DVec3| {
-            let q = fl.ls.to_light(p);
-            (q.y - y0) / (1.0 + rho * (q.z - fl.z0))
-        };
+        let depth_of = |p: DVec3| (fl.ls.y.dot(p) - y0) / w_of(p);
         // Only a point nearer the light than every point of B extends the range.
         let top = (0..body_len)
             .map(|i| depth_of(fl.corners[i]))
@@ -1112,7 +1122,7 @@ impl Ctx<'_, '_> {
             // The depth is linear-fractional: its maximum over the box (and over any part of it)
             // is at most its maximum over the corners. A box no nearer the light than B is skipped.
             // (Only where w > 0 at every corner, hence over the whole box.)
-            let w_pos = |p: &DVec3| 1.0 + rho * (fl.ls.z.dot(*p) - fl.z0) > 0.0;
+            let w_pos = |p: &DVec3| w_of(*p) > 0.0;
             if c.iter().all(|p| w_pos(p) && depth_of(*p) <= top) {
                 continue;
             }
@@ -1181,7 +1191,7 @@ impl Ctx<'_, '_> {
     }
 
     fn map(&self, s: &Slice, rule: WarpRule) -> Result<Built> {
-        let body = self.body(s.cover.0, s.cover.1)?;
+        let body = self.body(s.cover.0, s.cover.1, None)?;
         if body.focus == Focus::Empty || body.n == 0 {
             return Ok(Built::None(Focus::Empty));
         }
@@ -1243,7 +1253,9 @@ impl Ctx<'_, '_> {
             NPrime::Unwarped => 0.0,
             NPrime::Finite(v) => 1.0 / v,
         };
-        let caster = self.caster_extreme(&fl, body.n, rho, centre)?;
+        let w_of = |p: DVec3| 1.0 + rho * (fl.ls.z.dot(p) - fl.z0);
+        let y0 = centre.map_or(0.0, |i| fl.q[i].y);
+        let caster = self.caster_extreme(&fl, body.n, w_of, y0)?;
         let default_centre = self.input.centre == WarpCentre::Rule;
         let shadow = if body.whole && caster.is_none() && default_centre {
             // `warp(&slice, l, rule)` itself: B is the slice and nothing extends its depth.
@@ -1260,9 +1272,85 @@ impl Ctx<'_, '_> {
         self.finish(shadow, pts, s, focus).map(Built::Map)
     }
 
+    /// The trapezoidal map of B, its depth row refitted to B and the casters.
+    fn tsm_map(&self, s: &Slice, opts: TsmOptions) -> Result<Built> {
+        let sub_full = self.view.with_depth_range(s.cover.0, s.cover.1)?;
+        validate_tsm(&sub_full, &opts)?;
+        let body = self.body(s.cover.0, s.cover.1, None)?;
+        if body.focus == Focus::Empty || body.n == 0 {
+            return Ok(Built::None(Focus::Empty));
+        }
+        let pts = &body.v[..body.n];
+        let (mut n_b, mut f_b) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in pts {
+            n_b = n_b.min(-p.z);
+            f_b = f_b.max(-p.z);
+        }
+        let l = self.l;
+        let ls = light_space_unit(l, DVec3::NEG_Z);
+        let fl = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, l, ls)
+            .ok_or_else(|| Error::Degenerate("the focus body has no vertices".into()))?;
+        let (mut xl, mut xh) = (f64::INFINITY, f64::NEG_INFINITY);
+        for q in &fl.q {
+            xl = xl.min(q.x);
+            xh = xh.max(q.x);
+        }
+        let small = 1e-9 * self.scale();
+        if xh - xl <= small || fl.delta <= small {
+            return Ok(Built::None(Focus::EdgeOn));
+        }
+        let focus = opts.focus * (f_b - n_b) / (s.cover.1 - s.cover.0);
+        let focus_depth = n_b + focus;
+        let region = self.body(
+            s.cover.0,
+            s.cover.1,
+            Some(DVec4::new(0.0, 0.0, -1.0, -focus_depth)),
+        )?;
+        let focus_region: &[DVec3] = if region.n > 0 {
+            &region.v[..region.n]
+        } else {
+            pts
+        };
+        let centre_line = (ls.z.z * (f_b - n_b)).abs();
+        let t = tsm_on_points(
+            ls,
+            pts,
+            focus_region,
+            DVec3::new(0.0, 0.0, -focus_depth),
+            centre_line,
+            opts.search,
+            n_b,
+            f_b,
+        )?;
+        let mut m = t.shadow.matrix;
+        // Depth: v = y/w over B and the casters' extreme, −1 nearest the light (the form of the
+        // crate's warps; monotonic along each light ray, whose w is constant).
+        let row3 = m.row(3);
+        let w_of = |p: DVec3| row3.dot(p.extend(1.0));
+        let caster = self.caster_extreme(&fl, body.n, w_of, 0.0)?;
+        let mut r = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in pts.iter().chain(caster.as_slice()) {
+            let v = ls.y.dot(*p) / w_of(*p);
+            r = (r.0.min(v), r.1.max(v));
+        }
+        let v_m = 0.5 * (r.0 + r.1);
+        let v_h = (0.5 * (r.1 - r.0)).max(1e-9 * self.scale());
+        let mut mt = m.transpose();
+        mt.z_axis = (v_m * row3 - ls.y.extend(0.0)) / v_h;
+        m = mt.transpose();
+        let shadow = ShadowMatrix {
+            matrix: m,
+            light_dir: l,
+            n_prime: t.shadow.n_prime,
+            near: n_b,
+            far: f_b,
+        };
+        self.finish(shadow, pts, s, body.focus).map(Built::Map)
+    }
+
     /// A stable cascade with its depth range from B and the casters.
     fn stable_map(&self, s: &Slice) -> Result<Built> {
-        let body = self.body(s.cover.0, s.cover.1)?;
+        let body = self.body(s.cover.0, s.cover.1, None)?;
         if body.focus == Focus::Empty || body.n == 0 {
             return Ok(Built::None(Focus::Empty));
         }
@@ -1292,7 +1380,7 @@ impl Ctx<'_, '_> {
             ylo = ylo.min(q.y);
             yhi = yhi.max(q.y);
         }
-        if let Some(p) = self.caster_extreme(&fl, body.n, 0.0, None)? {
+        if let Some(p) = self.caster_extreme(&fl, body.n, |_| 1.0, 0.0)? {
             yhi = yhi.max(ls_e.y.dot(p));
         }
         let v_m = 0.5 * (ylo + yhi);
@@ -1479,7 +1567,7 @@ mod tests {
                 lw: DVec3::NEG_Y,
                 planes,
             };
-            let body = ctx.body(view.near(), view.far()).unwrap();
+            let body = ctx.body(view.near(), view.far(), None).unwrap();
             let mut all = [DVec4::ZERO; 12];
             all[..6].copy_from_slice(&frustum_planes(&view, f));
             all[6..].copy_from_slice(&planes.p[..6]);
