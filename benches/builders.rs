@@ -11,8 +11,9 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use glam::DVec3;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
+use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme};
 use shadow_aliasing::maps::atlas::{layout, AtlasEntry};
-use shadow_aliasing::maps::cascades::cascades;
+use shadow_aliasing::maps::cascades::{cascades, stable_cascades};
 use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
 use shadow_aliasing::maps::{tsm, warp, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::ViewFrustum;
@@ -83,6 +84,45 @@ fn builders(c: &mut Criterion) {
     let entries = &entries[..n];
     g.bench_function("atlas", |b| {
         b.iter(|| layout(bb(4096), bb(4096), bb(entries)))
+    });
+    // The frame API on a scene 100 units across inside the 1000-deep frustum (issue 9): camera
+    // at the world origin (world = eye, the configuration above), receivers a ground box
+    // [−50, 50] × [−5, 0] × [−100, 0], casters that box and a tower [−10, 10] × [0, 20] × [−60, −40].
+    let cam = Camera::new(glam::DMat4::IDENTITY, 1.0, 1000.0, 30f64.to_radians(), 1.0).unwrap();
+    let ground = Aabb::new(DVec3::new(-50.0, -5.0, -100.0), DVec3::new(50.0, 0.0, 0.0)).unwrap();
+    let tower = Aabb::new(DVec3::new(-10.0, 0.0, -60.0), DVec3::new(10.0, 20.0, -40.0)).unwrap();
+    let receivers = [ground];
+    let casters = [ground, tower];
+    let scene = FrameInput::new(cam, light, 2048, 1080)
+        .receivers(Bound::Boxes(&receivers))
+        .casters(Bound::Boxes(&casters));
+    // One LiSPSM map focused on the ground, casters in its depth range, measured over B.
+    let single = scene.scheme(FrameScheme::Single(WarpRule::Lispsm));
+    g.bench_function("frame_lispsm_scene", |b| b.iter(|| frame(bb(&single))));
+    // Four stable cascades (practical λ = 0.8) with the same scene bounds; the counterpart is
+    // `stable_cascades4`, the frustum-only stable cascades.
+    let stable = scene.scheme(FrameScheme::Stable(CascadeSplits::Scheme {
+        scheme: SplitScheme::Practical { lambda: 0.8 },
+        k: 4,
+        overlap: 0.0,
+    }));
+    g.bench_function("frame_cascades4_scene", |b| b.iter(|| frame(bb(&stable))));
+    g.bench_function("stable_cascades4", |b| {
+        b.iter(|| {
+            let splits = z_splits(
+                bb(1.0),
+                bb(1000.0),
+                bb(4),
+                SplitScheme::Practical { lambda: 0.8 },
+            )?;
+            stable_cascades(
+                bb(&view),
+                bb(glam::DMat4::IDENTITY),
+                bb(light),
+                &splits,
+                bb(2048),
+            )
+        })
     });
     g.finish();
 }

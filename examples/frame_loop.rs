@@ -1,78 +1,96 @@
-//! A renderer's frame loop: camera in, this frame's shadow matrix out, as `Mat4` for the GPU,
-//! with the aliasing error of what was built.
+//! A renderer's frame loop with the scene-aware frame API: camera, light and scene bounds in,
+//! this frame's shadow maps out (world → light clip as `Mat4`, split depths, blend bands, texel
+//! sizes), with the aliasing error of what was built.
 //!
-//! Copy the body of `shadow_for_frame` into your renderer. Conventions: world and eye space
-//! right-handed, the camera's view matrix maps world → eye with the camera looking down −Z
-//! (glam `dcamera::rh::view::look_at_mat4`); the light direction is the direction light travels.
+//! Conventions: world and eye space right-handed, the camera's view matrix maps world → eye with
+//! the camera looking down −Z (glam `dcamera::rh::view::look_at_mat4`); the light direction is the
+//! direction light travels, in world space. docs/renderer.md explains each output.
 //!
 //! Run with `cargo run --example frame_loop`.
 
-use glam::{DMat4, DVec3, Mat4};
-use shadow_aliasing::maps::{warp, ClipDepth, WarpRule};
-use shadow_aliasing::measure::frustum_max;
-use shadow_aliasing::{Result, ViewFrustum};
+use glam::{DVec3, Mat4};
+use shadow_aliasing::analytic::partition::SplitScheme;
+use shadow_aliasing::frame::{
+    frame_into, Aabb, Bound, Camera, CascadeSplits, Frame, FrameInput, FrameScheme,
+};
+use shadow_aliasing::maps::{ClipDepth, WarpRule};
+use shadow_aliasing::Result;
 
-/// What a renderer uploads for one directional light this frame.
-struct FrameShadow {
-    /// World → light clip space, depth in [0, 1] (Vulkan, wgpu, Direct3D, Metal).
+/// What a renderer uploads for one cascade this frame.
+struct Upload {
     world_to_light: Mat4,
-    /// The same for eye-space positions (if your shaders work in view space).
-    eye_to_light: Mat4,
-    /// Maximum aliasing error over the view frustum with a 1 × 1 map and a 1-pixel image:
-    /// multiply by (image pixels / map texels) along each axis for your resolutions.
-    max_mx: f64,
-    max_mz: f64,
-    /// Texels needed per image pixel² for maximum error 1 (Lloyd 2006 §4.2).
-    storage_factor: f64,
-}
-
-fn shadow_for_frame(
-    view_matrix: DMat4,
-    near: f64,
-    far: f64,
-    half_fov_y: f64,
-    aspect: f64,
-    light_dir_world: DVec3,
-) -> Result<FrameShadow> {
-    // 1. The camera's frustum (validated: near > 0, far > near, 0 < fov/2 < 90°).
-    let frustum = ViewFrustum::with_aspect(near, far, half_fov_y, aspect)?;
-    // 2. The light in eye space: rotate by the view matrix (a direction ignores translation).
-    let light_eye = view_matrix.transform_vector3(light_dir_world);
-    // 3. The warp. `WarpRule::default()` is the crate's minimax n′ (never worse than the
-    //    uniform map); `WarpRule::Lispsm`, `WarpRule::Filament`, … reproduce other rules.
-    let shadow = warp(&frustum, light_eye, WarpRule::default())?;
-    // 4. What it costs: exact maximum error over the frustum.
-    let err = frustum_max(&frustum, &shadow.shadow_map())?;
-    Ok(FrameShadow {
-        world_to_light: shadow
-            .world_to_clip(view_matrix, ClipDepth::ZeroToOne)
-            .as_mat4(),
-        eye_to_light: shadow.to_mat4(ClipDepth::ZeroToOne),
-        max_mx: err.max_mx,
-        max_mz: err.max_mz,
-        storage_factor: err.storage_factor,
-    })
+    split: (f32, f32),
+    blend: (f32, f32),
+    normal_bias: f32,
 }
 
 fn main() -> Result<()> {
     let sun = DVec3::new(0.3, -1.0, 0.2); // travelling down and slightly sideways
-    for frame in 0..8 {
-        // The camera orbits a point, looking at it from 20 units away, 5 up.
-        let a = frame as f64 * std::f64::consts::TAU / 8.0;
-        let eye = DVec3::new(20.0 * a.cos(), 5.0, 20.0 * a.sin());
-        let view = glam::dcamera::rh::view::look_at_mat4(eye, DVec3::ZERO, DVec3::Y);
-        let s = shadow_for_frame(view, 0.5, 200.0, 30f64.to_radians(), 16.0 / 9.0, sun)?;
-        // For a 1920 × 1080 image and a 2048² map, the maximum texel-to-pixel ratios:
-        let (img, map) = (1080.0, 2048.0);
+                                          // The scene: a ground 200 units across and a tower on it (world space).
+    let ground = Aabb::new(
+        DVec3::new(-100.0, -1.0, -100.0),
+        DVec3::new(100.0, 0.0, 100.0),
+    )?;
+    let tower = Aabb::new(DVec3::new(-5.0, 0.0, -5.0), DVec3::new(5.0, 40.0, 5.0))?;
+    let receivers = [ground, tower];
+    let casters = [ground, tower];
+    // Reused every frame: no heap allocation per frame.
+    let mut out = Frame::default();
+    for n in 0..8 {
+        // The camera orbits the tower 60 units away, 5 up; far plane 1000 (far beyond the scene).
+        let a = f64::from(n) * std::f64::consts::TAU / 8.0;
+        let eye = DVec3::new(60.0 * a.cos(), 5.0, 60.0 * a.sin());
+        let view = glam::dcamera::rh::view::look_at_mat4(eye, DVec3::new(0.0, 5.0, 0.0), DVec3::Y);
+        let camera = Camera::new(view, 0.5, 1000.0, 30f64.to_radians(), 16.0 / 9.0)?;
+        let input = FrameInput::new(camera, sun, 2048, 1080)
+            .receivers(Bound::Boxes(&receivers))
+            .casters(Bound::Boxes(&casters))
+            .scheme(FrameScheme::Cascades {
+                splits: CascadeSplits::Scheme {
+                    scheme: SplitScheme::Practical { lambda: 0.8 },
+                    k: 4,
+                    overlap: 0.1,
+                },
+                rule: WarpRule::Lispsm,
+            });
+        frame_into(&input, &mut out)?;
+        if out.is_empty() {
+            println!("frame {n}: scene out of view, no shadow map");
+            continue;
+        }
+        let uploads: Vec<Upload> = out
+            .maps()
+            .iter()
+            .map(|m| Upload {
+                world_to_light: m.to_mat4(ClipDepth::ZeroToOne),
+                split: (m.split.0 as f32, m.split.1 as f32),
+                blend: (m.blend.0 as f32, m.blend.1 as f32),
+                normal_bias: (1.5 * m.texel_world) as f32,
+            })
+            .collect();
         println!(
-            "frame {frame}: S̄ = {:9.2}  max error x {:5.2}, z {:5.2} (1080p, 2048² map)  first row {:?}",
-            s.storage_factor,
-            s.max_mx * img / map,
-            s.max_mz * img / map,
-            s.world_to_light.row(0).to_array()
+            "frame {n}: {} maps, S̄ over the scene = {:8.2}, worst predicted error {:5.2} px (1080p, 2048² maps)",
+            out.len(),
+            out.storage_factor().unwrap_or(0.0),
+            out.maps()
+                .iter()
+                .map(|m| m.max_error_pixels)
+                .fold(0.0, f64::max)
         );
-        // A GPU upload would copy `s.world_to_light.to_cols_array()` (column-major).
-        assert!(s.eye_to_light.is_finite());
+        for (m, u) in out.maps().iter().zip(&uploads) {
+            println!(
+                "    split [{:7.2}, {:7.2}] blend [{:7.2}, {:7.2}] normal bias {:.4}  B has {} vertices, n′ = {:?}",
+                u.split.0,
+                u.split.1,
+                u.blend.0,
+                u.blend.1,
+                u.normal_bias,
+                m.body().len(),
+                m.shadow.n_prime()
+            );
+            // A GPU upload would copy `u.world_to_light.to_cols_array()` (column-major).
+            assert!(u.world_to_light.is_finite());
+        }
     }
     Ok(())
 }

@@ -78,6 +78,7 @@ pub mod analytic;
 pub mod error;
 #[cfg(feature = "cli")]
 pub mod eval;
+pub mod frame;
 pub mod frustum;
 pub mod geom;
 pub mod maps;

@@ -169,3 +169,86 @@ fn atlas_layout_does_not_allocate() {
         black_box(atlas.compose(0, &faces.iter().next().unwrap().shadow.matrix()));
     });
 }
+
+#[test]
+fn frame_api_does_not_allocate() {
+    use shadow_aliasing::frame::{
+        frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme,
+    };
+    for scheme in [
+        FrameScheme::Single(WarpRule::Lispsm),
+        FrameScheme::Single(WarpRule::Minimax),
+        FrameScheme::Single(WarpRule::Ogre),
+        FrameScheme::Cascades {
+            splits: CascadeSplits::Scheme {
+                scheme: SplitScheme::Practical { lambda: 0.8 },
+                k: 4,
+                overlap: 0.1,
+            },
+            rule: WarpRule::Lispsm,
+        },
+        FrameScheme::Stable(CascadeSplits::Bevy {
+            k: 4,
+            minimum_distance: 0.0,
+            maximum_distance: 1e9,
+            first_far_bound: 1e-3,
+            overlap_proportion: 0.2,
+        }),
+    ] {
+        assert_no_allocation("frame", |v, l| {
+            let cam = Camera::new(
+                glam::DMat4::IDENTITY,
+                v.near(),
+                v.far(),
+                v.half_fov(),
+                v.aspect(),
+            )
+            .unwrap();
+            let f = v.far();
+            // Receivers: the lower half of the view to 60 % of its depth; casters above it.
+            let r = [Aabb::new(DVec3::new(-f, -f, -0.6 * f), DVec3::new(f, 0.0, 0.0)).unwrap()];
+            let c = [
+                Aabb::new(
+                    DVec3::new(-0.1 * f, 0.0, -0.3 * f),
+                    DVec3::new(0.1 * f, 0.5 * f, -0.2 * f),
+                )
+                .unwrap(),
+                r[0],
+            ];
+            let input = FrameInput::new(cam, l, 2048, 1080)
+                .receivers(Bound::Boxes(&r))
+                .casters(Bound::Boxes(&c))
+                .scheme(scheme);
+            black_box(frame(&input).unwrap());
+        });
+    }
+}
+
+#[test]
+fn frame_api_tsm_does_not_allocate() {
+    use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, FrameInput, FrameScheme};
+    assert_no_allocation("frame(Tsm)", |v, l| {
+        let cam = Camera::new(
+            glam::DMat4::IDENTITY,
+            v.near(),
+            v.far(),
+            v.half_fov(),
+            v.aspect(),
+        )
+        .unwrap();
+        let f = v.far();
+        let r = [Aabb::new(DVec3::new(-f, -f, -0.6 * f), DVec3::new(f, 0.0, 0.0)).unwrap()];
+        let input = FrameInput::new(cam, l, 2048, 1080)
+            .receivers(Bound::Boxes(&r))
+            .scheme(FrameScheme::Tsm(TsmOptions {
+                focus: 0.3 * (v.far() - v.near()),
+                search: TsmSearch::EightyPercent,
+            }));
+        match frame(&input) {
+            Ok(fr) => {
+                black_box(fr);
+            }
+            Err(e) => panic!("{e} at near={}, far={}, light={l}", v.near(), v.far()),
+        }
+    });
+}

@@ -10,6 +10,8 @@ mod args;
 mod commands;
 #[path = "shadow-aliasing/output.rs"]
 mod output;
+#[path = "shadow-aliasing/scene.rs"]
+mod scene;
 #[path = "shadow-aliasing/scheme.rs"]
 mod scheme;
 #[path = "shadow-aliasing/sweep_out.rs"]

@@ -66,29 +66,29 @@ impl Optimum {
 
 /// The frustum's vertices as the closed forms above need them, precomputed once per light.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Vertices {
+pub(crate) struct Vertices<const N: usize = 8> {
     /// Light-space x.
-    x: [f64; 8],
+    x: [f64; N],
     /// δ = z − z₀ along the warp axis.
-    delta: [f64; 8],
+    delta: [f64; N],
     /// 1 / eye depth.
-    inv_depth: [f64; 8],
+    inv_depth: [f64; N],
     /// Δ, the extent along the warp axis.
     extent: f64,
     /// tan θ.
     tan: f64,
 }
 
-impl Vertices {
-    pub(crate) fn new(view: &ViewFrustum, fl: &FrustumInLight) -> Self {
+impl<const N: usize> Vertices<N> {
+    pub(crate) fn new(view: &ViewFrustum, fl: &FrustumInLight<N>) -> Self {
         let mut v = Self {
-            x: [0.0; 8],
-            delta: [0.0; 8],
-            inv_depth: [0.0; 8],
+            x: [0.0; N],
+            delta: [0.0; N],
+            inv_depth: [0.0; N],
             extent: fl.delta,
             tan: view.tan_half_fov(),
         };
-        for i in 0..8 {
+        for i in 0..N {
             let q: DVec3 = fl.q[i];
             v.x[i] = q.x;
             v.delta[i] = q.z - fl.z0;
@@ -103,7 +103,7 @@ impl Vertices {
         let (mut u_lo, mut u_hi) = (f64::INFINITY, f64::NEG_INFINITY);
         let mut gx = 0.0f64;
         let mut gz = 0.0f64;
-        for i in 0..8 {
+        for i in 0..N {
             let w = 1.0 + rho * self.delta[i];
             let u = self.x[i] / w;
             u_lo = u_lo.min(u);
@@ -124,7 +124,7 @@ fn rho_of(n: NPrime) -> f64 {
     n.recip()
 }
 
-fn optimum(view: &ViewFrustum, fl: &FrustumInLight, n_prime: NPrime) -> Optimum {
+fn optimum<const N: usize>(view: &ViewFrustum, fl: &FrustumInLight<N>, n_prime: NPrime) -> Optimum {
     let (max_mx, max_mz) = Vertices::new(view, fl).maxima(rho_of(n_prime));
     Optimum {
         n_prime,
@@ -134,18 +134,18 @@ fn optimum(view: &ViewFrustum, fl: &FrustumInLight, n_prime: NPrime) -> Optimum 
 }
 
 /// The n′ ∈ (0, ∞] minimising M_z of the frustum's fitted warp, exactly (module docs).
-pub(crate) fn minimax_mz(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
+pub(crate) fn minimax_mz<const N: usize>(view: &ViewFrustum, fl: &FrustumInLight<N>) -> Optimum {
     let d = fl.delta;
     let t = view.tan_half_fov();
-    let mut a = [0.0f64; 8];
-    let mut b = [0.0f64; 8];
-    for i in 0..8 {
+    let mut a = [0.0f64; N];
+    let mut b = [0.0f64; N];
+    for i in 0..N {
         let k = (d / (2.0 * fl.depth[i] * t)).sqrt();
         a[i] = k;
         b[i] = k * (fl.q[i].z - fl.z0);
     }
     let mz_at = |n: f64| -> f64 {
-        let g = (0..8).fold(0.0f64, |m, i| m.max(a[i] * n + b[i]));
+        let g = (0..N).fold(0.0f64, |m, i| m.max(a[i] * n + b[i]));
         g * g / (n * (n + d))
     };
     // n′ = ∞: M_z = max Kᵢ.
@@ -160,12 +160,12 @@ pub(crate) fn minimax_mz(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
             }
         }
     };
-    for i in 0..8 {
+    for i in 0..N {
         let di = fl.q[i].z - fl.z0;
         if di > 0.0 && 2.0 * di < d {
             consider(di * d / (d - 2.0 * di));
         }
-        for j in (i + 1)..8 {
+        for j in (i + 1)..N {
             let da = a[i] - a[j];
             if da != 0.0 {
                 consider((b[j] - b[i]) / da);
@@ -184,7 +184,7 @@ pub(crate) fn minimax_mz(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
 const SCAN: usize = 64;
 
 /// The n′ ∈ (0, ∞] minimising S̄ = M_x M_z of the frustum's fitted warp (module docs).
-pub(crate) fn min_storage(view: &ViewFrustum, fl: &FrustumInLight) -> Optimum {
+pub(crate) fn min_storage<const N: usize>(view: &ViewFrustum, fl: &FrustumInLight<N>) -> Optimum {
     let d = fl.delta;
     let verts = Vertices::new(view, fl);
     // S̄ relative to the uniform map's, (M_x/M_x,∞)(M_z/M_z,∞): the same minimiser, and finite

@@ -146,16 +146,18 @@ pub enum WarpRule {
     MinimaxMz,
 }
 
-/// The view frustum's corners in light space with what the rules need: no allocation.
+/// The view frustum's corners in light space with what the rules need: no allocation. With
+/// `N ≠ 8`, any convex body's vertices ([`FrustumInLight::from_points`], the frame API's focus
+/// body), padded to `N` with copies of the first (a repeated vertex changes no minimum or maximum).
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct FrustumInLight {
+pub(crate) struct FrustumInLight<const N: usize = 8> {
     pub ls: LightSpace,
-    /// The eight corners, eye space.
-    pub corners: [DVec3; 8],
+    /// The eight corners (or the body's vertices), eye space.
+    pub corners: [DVec3; N],
     /// Light-space coordinates of the eight corners.
-    pub q: [DVec3; 8],
+    pub q: [DVec3; N],
     /// Eye depth −p.z of each corner.
-    pub depth: [f64; 8],
+    pub depth: [f64; N],
     /// Smallest light-space z of the corners.
     pub z0: f64,
     /// Extent of the corners along the warp axis.
@@ -236,6 +238,38 @@ impl FrustumInLight {
                 (l.x * l.x + l.y * l.y).sqrt().min(1.0)
             },
         }
+    }
+}
+
+impl<const N: usize> FrustumInLight<N> {
+    /// A convex body's vertices `points` (eye space, `1 ≤ len ≤ N`, finite, in front of the eye)
+    /// in the light space `ls` of the unit light direction `l`, padded to `N` with copies of
+    /// `points[0]`; `None` when `points` is empty or longer than `N`. sin γ is the view
+    /// direction's, as for the frustum: the warp axis is the view direction's whatever the body.
+    pub(crate) fn from_points(points: &[DVec3], l: DVec3, ls: LightSpace) -> Option<Self> {
+        if points.is_empty() || points.len() > N {
+            return None;
+        }
+        let mut corners = [points[0]; N];
+        corners[..points.len()].copy_from_slice(points);
+        let mut q = [DVec3::ZERO; N];
+        let mut depth = [0.0; N];
+        let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
+        for i in 0..N {
+            q[i] = ls.to_light(corners[i]);
+            depth[i] = -corners[i].z;
+            z0 = fmin(z0, q[i].z);
+            z1 = fmax(z1, q[i].z);
+        }
+        Some(Self {
+            ls,
+            corners,
+            q,
+            depth,
+            z0,
+            delta: z1 - z0,
+            sin_gamma: (l.x * l.x + l.y * l.y).sqrt().min(1.0),
+        })
     }
 }
 
@@ -585,6 +619,23 @@ pub(crate) fn rule_n_prime(
     fl: &FrustumInLight,
     rule: WarpRule,
 ) -> Result<NPrime> {
+    rule_n_prime_on(view, view, fl, rule)
+}
+
+/// The n′ of `rule` for a body in light space `fl` whose eye-depth range is `view`'s
+/// `[near, far]` (a sub-frustum `[n_B, f_B]` for the frame API's focus body B), seen by a camera
+/// with near and far planes `camera`'s: the rules of the papers see the body's depth range as their
+/// frustum (as a z-partition's rule sees its partition); Filament's hints are measured from the
+/// camera's planes and its z₀ is the body's nearest depth (`ShadowMap::applyLISPSM`: `zn`, `zf`
+/// the camera's, `z0` the receivers' nearest); OGRE's n_opt is `|e_z| + √(n f)` with e the body's
+/// vertex nearest the camera and n, f the camera's (`calculateNOptSimple`). With
+/// `camera == view` and the frustum's corners this is [`rule_n_prime`] bit for bit.
+pub(crate) fn rule_n_prime_on<const N: usize>(
+    camera: &ViewFrustum,
+    view: &ViewFrustum,
+    fl: &FrustumInLight<N>,
+    rule: WarpRule,
+) -> Result<NPrime> {
     let (n, f) = (view.near(), view.far());
     let sin_g = fl.sin_gamma;
     Ok(match rule {
@@ -612,15 +663,15 @@ pub(crate) fn rule_n_prime(
                 NPrime::UNWARPED
             }
         }
-        WarpRule::Filament => filament_n_prime(view, fl, 1.0, 100.0)?,
+        WarpRule::Filament => filament_n_prime(camera, view, fl, 1.0, 100.0)?,
         WarpRule::FilamentHints {
             near_hint,
             far_hint,
-        } => filament_n_prime(view, fl, near_hint, far_hint)?,
-        WarpRule::Ogre => NPrime::finite_or_unwarped(ogre_n_opt(view, fl)),
+        } => filament_n_prime(camera, view, fl, near_hint, far_hint)?,
+        WarpRule::Ogre => NPrime::finite_or_unwarped(ogre_n_opt(camera, view, fl)),
         WarpRule::OgreOrtho { shadow_distance } => {
             let d = crate::error::positive("shadow_distance", shadow_distance)?;
-            NPrime::finite_or_unwarped(ogre_n_opt(view, fl) * d)
+            NPrime::finite_or_unwarped(ogre_n_opt(camera, view, fl) * d)
         }
         WarpRule::Minimax => minimax::min_storage(view, fl).n_prime,
         WarpRule::MinimaxMz => minimax::minimax_mz(view, fl).n_prime,
@@ -628,15 +679,20 @@ pub(crate) fn rule_n_prime(
 }
 
 /// OGRE's `calculateNOptSimple` with `getShadowCamera`'s ramp (see [`WarpRule::Ogre`]).
-fn ogre_n_opt(view: &ViewFrustum, fl: &FrustumInLight) -> f64 {
-    let (n, f) = (view.near(), view.far());
+fn ogre_n_opt<const N: usize>(
+    camera: &ViewFrustum,
+    view: &ViewFrustum,
+    fl: &FrustumInLight<N>,
+) -> f64 {
+    let (n, f) = (camera.near(), camera.far());
+    let e_z = view.near();
     let cos_g = fl.ls.light_dir().z.abs().min(1.0);
     let tweak = if cos_g >= 0.9 {
         1.0 + 20.0 * ((cos_g - 0.9) / (1.0 - 0.9))
     } else {
         1.0
     };
-    (n + (n * f).sqrt()) * 0.1 * tweak
+    (e_z + (n * f).sqrt()) * 0.1 * tweak
 }
 
 /// Filament's `computeLightRotation` threshold on |cos γ| = |(Mv V).z| (a `float` constant).
@@ -663,6 +719,20 @@ pub(crate) fn rule_frame(
             ))
         }
         _ => None,
+    }
+}
+
+/// The warp axis `rule` builds its light space with for the unit light direction `l` (eye space):
+/// the view direction −Z, or eye x where Filament keeps the light's own frame ([`rule_frame`]).
+#[inline]
+pub(crate) fn rule_axis(l: DVec3, rule: WarpRule) -> DVec3 {
+    match rule {
+        WarpRule::Filament | WarpRule::FilamentHints { .. }
+            if l.z.abs() >= FILAMENT_PARALLEL_COS =>
+        {
+            DVec3::X
+        }
+        _ => DVec3::NEG_Z,
     }
 }
 
@@ -696,6 +766,57 @@ fn fit_frustum_from_corner(fl: &FrustumInLight, n_prime: NPrime, i: usize) -> Re
     verify_clip(&m, fl.corners.iter()).map(|()| m)
 }
 
+/// The warp of parameter `n_prime` fitted to a body in light space (`fl`, the frame API's focus
+/// body B): s and t to the body's vertices, depth to the body's vertices and `depth_points`
+/// together (casters that can shadow the body: they only extend the depth range). `centre` is the
+/// index of the vertex whose light-space x and y carry the centre of projection (OGRE's and the
+/// LiSPSM reference code's near camera point), or `None` for the eye's own light-space line. Every
+/// vertex and depth point is checked to land in the clip volume, in both depth conventions.
+///
+/// # Errors
+/// As [`fit_warp`].
+pub(crate) fn fit_body<const N: usize>(
+    fl: &FrustumInLight<N>,
+    n_prime: NPrime,
+    centre: Option<usize>,
+    depth_points: &[DVec3],
+) -> Result<DMat4> {
+    let rho = n_prime.recip();
+    let (x0, y0) = match centre {
+        Some(i) => (fl.q[i].x, fl.q[i].y),
+        None => (0.0, 0.0),
+    };
+    let mut r = Ranges::new();
+    let mut extent = 0.0f64;
+    for q in &fl.q {
+        let iw = 1.0 / (1.0 + rho * (q.z - fl.z0));
+        r.add((q.x - x0) * iw, (q.y - y0) * iw);
+        let a = q.abs();
+        extent = fmax(extent, fmax(fmax(a.x, a.y), a.z));
+    }
+    let mut depth = r;
+    for p in depth_points {
+        if !p.is_finite() {
+            return Err(not_finite_point(*p));
+        }
+        let q = fl.ls.to_light(*p);
+        let iw = 1.0 / (1.0 + rho * (q.z - fl.z0));
+        depth.add((q.x - x0) * iw, (q.y - y0) * iw);
+        let a = q.abs();
+        extent = fmax(extent, fmax(fmax(a.x, a.y), a.z));
+    }
+    // Casters never widen s (or t: their z is not looked at): only the depth range grows.
+    let r = Ranges { u: r.u, v: depth.v };
+    let m = warp_matrix(&fl.ls, fl.z0, fl.delta, rho, &r, extent)?;
+    let m = if centre.is_some() {
+        m * DMat4::from_translation(-(fl.ls.x * x0 + fl.ls.y * y0))
+    } else {
+        m
+    };
+    verify_clip(&m, fl.corners.iter())?;
+    Ok(m)
+}
+
 use crate::analytic::tsm::EIGHTY_PERCENT_LINE;
 
 /// Martin & Tan's focus distance δ beyond the near plane: `0 < focus ≤ f − n` (the TSM rule and
@@ -715,7 +836,11 @@ pub(crate) fn focus_in_range(view: &ViewFrustum, focus: f64) -> Result<f64> {
     Ok(focus)
 }
 
-fn tsm_rule(view: &ViewFrustum, fl: &FrustumInLight, focus: f64) -> Result<NPrime> {
+fn tsm_rule<const N: usize>(
+    view: &ViewFrustum,
+    fl: &FrustumInLight<N>,
+    focus: f64,
+) -> Result<NPrime> {
     let focus = focus_in_range(view, focus)?;
     let p = fl.ls.to_light(DVec3::new(0.0, 0.0, -(view.near() + focus)));
     Ok(
@@ -726,9 +851,10 @@ fn tsm_rule(view: &ViewFrustum, fl: &FrustumInLight, focus: f64) -> Result<NPrim
     )
 }
 
-fn filament_n_prime(
+fn filament_n_prime<const N: usize>(
+    camera: &ViewFrustum,
     view: &ViewFrustum,
-    fl: &FrustumInLight,
+    fl: &FrustumInLight<N>,
     near_hint: f64,
     far_hint: f64,
 ) -> Result<NPrime> {
@@ -748,11 +874,11 @@ fn filament_n_prime(
             ),
         ));
     }
-    let (zn, zf) = (view.near(), view.far());
+    let (zn, zf) = (camera.near(), camera.far());
     let sin_lv = fl.sin_gamma;
     let dzn = (near_hint - zn).max(0.0);
     let dzf = (zf - far_hint).max(0.0);
-    let z0 = zn;
+    let z0 = view.near();
     let z1 = z0 + fl.delta * sin_lv;
     const EPSILON: f64 = 0.02;
     if !(sin_lv > EPSILON && 3.0 * (dzn / (zf - zn)) < 2.0) {

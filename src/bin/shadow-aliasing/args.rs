@@ -198,9 +198,55 @@ pub struct WarpArgs {
     pub light_dir: [f64; 3],
     #[command(flatten)]
     pub scheme: SchemeArgs,
+    #[command(flatten)]
+    pub scene: SceneArgs,
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
+}
+
+/// `warp`'s scene: the maps focused on receivers ∩ the view (the library's frame API), with the
+/// camera at the origin of eye space (world = eye) and a square image.
+#[derive(Debug, Clone, clap::Args)]
+pub struct SceneArgs {
+    /// A receivers' box in eye space (repeatable; several merge into their bounding box).
+    #[arg(long, value_name = "MINX,MINY,MINZ,MAXX,MAXY,MAXZ", allow_hyphen_values = true, value_parser = parse_box)]
+    pub receivers: Vec<[f64; 6]>,
+    /// A casters' box in eye space (repeatable): extends each map's depth toward the light.
+    #[arg(long, value_name = "MINX,MINY,MINZ,MAXX,MAXY,MAXZ", allow_hyphen_values = true, value_parser = parse_box)]
+    pub casters: Vec<[f64; 6]>,
+    /// The visible receivers' depth range (a depth-buffer min/max reduction).
+    #[arg(long = "depth-range", value_name = "ZMIN,ZMAX", allow_hyphen_values = true, value_parser = parse_pair)]
+    pub depth_range: Option<[f64; 2]>,
+    /// The device clamps depth: casters are not put in the depth range.
+    #[arg(long = "depth-clamp")]
+    pub depth_clamp: bool,
+    /// Cascades at absolute split distances Z0,Z1,...,ZK (first near to last far).
+    #[arg(long, value_name = "Z0,...,ZK", allow_hyphen_values = true, value_parser = parse_list, conflicts_with_all = ["fractions", "bevy"])]
+    pub splits: Option<NumList>,
+    /// Cascades at fractions F1,...,F(K-1) of the depth range.
+    #[arg(long, value_name = "F1,...", allow_hyphen_values = true, value_parser = parse_list, conflicts_with = "bevy")]
+    pub fractions: Option<NumList>,
+    /// Bevy's cascades: K,MINIMUM_DISTANCE,FIRST_FAR_BOUND,MAXIMUM_DISTANCE,OVERLAP_PROPORTION.
+    #[arg(long, value_name = "K,MIN,FIRST_FAR,MAX,OVERLAP", allow_hyphen_values = true, value_parser = parse_list)]
+    pub bevy: Option<NumList>,
+    /// Cascade overlap fraction in [0, 1) (with --partition, --splits or --fractions).
+    #[arg(long, allow_hyphen_values = true)]
+    pub overlap: Option<f64>,
+}
+
+impl SceneArgs {
+    /// Whether any scene option is given (then `warp` uses the frame API).
+    pub fn any(&self) -> bool {
+        !self.receivers.is_empty()
+            || !self.casters.is_empty()
+            || self.depth_range.is_some()
+            || self.depth_clamp
+            || self.splits.is_some()
+            || self.fractions.is_some()
+            || self.bevy.is_some()
+            || self.overlap.is_some()
+    }
 }
 
 /// `sweep` arguments.
@@ -259,6 +305,44 @@ fn parse_threads(s: &str) -> Result<usize, String> {
         // Out of range, however many digits it has.
         _ => Err(format!("must lie in [1, {MAX_THREADS}] (got {t})")),
     }
+}
+
+/// A comma-separated list of numbers (a newtype: clap reads `Option<Vec<_>>` as repeated values).
+#[derive(Debug, Clone, PartialEq)]
+pub struct NumList(pub Vec<f64>);
+
+/// Parses a comma-separated list of finite numbers.
+fn parse_list(s: &str) -> Result<NumList, String> {
+    parse_numbers(s).map(NumList)
+}
+
+fn parse_numbers(s: &str) -> Result<Vec<f64>, String> {
+    s.split(',')
+        .map(str::trim)
+        .map(|p| match p.parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            Ok(_) => Err(format!("expected finite numbers (got {p})")),
+            Err(_) => Err(format!(
+                "expected numbers separated by commas ({p:?} is not a number)"
+            )),
+        })
+        .collect()
+}
+
+fn parse_n<const N: usize>(s: &str, what: &str) -> Result<[f64; N], String> {
+    let v = parse_numbers(s)?;
+    <[f64; N]>::try_from(v.as_slice())
+        .map_err(|_| format!("expected {N} numbers {what} (got {s:?})"))
+}
+
+/// Parses `minx,miny,minz,maxx,maxy,maxz`.
+fn parse_box(s: &str) -> Result<[f64; 6], String> {
+    parse_n::<6>(s, "MINX,MINY,MINZ,MAXX,MAXY,MAXZ")
+}
+
+/// Parses `a,b`.
+fn parse_pair(s: &str) -> Result<[f64; 2], String> {
+    parse_n::<2>(s, "ZMIN,ZMAX")
 }
 
 /// Parses `x,y,z`.

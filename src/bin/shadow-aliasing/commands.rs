@@ -89,6 +89,12 @@ fn print_bytes(bytes: &[u8]) -> ExitCode {
 }
 
 fn warp(a: &WarpArgs) -> ExitCode {
+    if a.scene.any() {
+        return match crate::scene::warp_scene(a) {
+            Ok(text) => print(&text),
+            Err(e) => fail(e),
+        };
+    }
     let c = &a.camera;
     let view = match ViewFrustum::new(c.near, c.far, c.half_fov) {
         Ok(v) => v,

@@ -197,7 +197,32 @@ pub fn tsm(view: &ViewFrustum, light_dir: DVec3, opts: TsmOptions) -> Result<Tsm
     core.build::<8, 16>(opts.search, n, f)
 }
 
-pub(super) fn validate(view: &ViewFrustum, opts: &TsmOptions) -> Result<()> {
+/// The trapezoidal map of a body's vertices `points` (eye space, at most 32) in the view-axis
+/// light space `ls`, with its focus region's vertices, the focus point on the view axis and the
+/// projected length of the view axis over the body's depth range `[near, far]` (the frame API's
+/// TSM on its focus body B; [`tsm`] is the frustum's case). `search` is validated by the caller.
+#[allow(clippy::too_many_arguments)] // Core's fields and build's arguments, one call site
+pub(crate) fn tsm_on_points(
+    ls: LightSpace,
+    points: &[DVec3],
+    focus_region: &[DVec3],
+    focus_point: DVec3,
+    centre_line: f64,
+    search: TsmSearch,
+    near: f64,
+    far: f64,
+) -> Result<TsmMap> {
+    let core = Core {
+        ls,
+        points,
+        focus_region,
+        focus_point,
+        centre_line,
+    };
+    core.build::<32, 64>(search, near, far)
+}
+
+pub(crate) fn validate(view: &ViewFrustum, opts: &TsmOptions) -> Result<()> {
     crate::maps::warp::focus_in_range(view, opts.focus)?;
     match opts.search {
         TsmSearch::EightyPercent => {}

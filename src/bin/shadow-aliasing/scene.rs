@@ -1,0 +1,275 @@
+//! `warp` with a scene (`--receivers`, `--casters`, `--depth-range`, `--splits`, `--fractions`,
+//! `--bevy`): the library's frame API with the camera at the origin of eye space (world = eye),
+//! a square image, maps measured over each focus body B.
+
+use crate::args::{PartitionName, WarpArgs};
+use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
+use crate::scheme::{k, rule, Lights, DEFAULT_LAMBDA};
+use glam::{DMat4, DVec3};
+use shadow_aliasing::analytic::partition::SplitScheme;
+use shadow_aliasing::frame::{
+    frame, Aabb, Bound, Camera, CascadeSplits, Focus, FrameInput, FrameScheme, LightCase,
+};
+use shadow_aliasing::scheme::ADAPTIVE_RATIO;
+use shadow_aliasing::{Error, LightAngle, ViewFrustum};
+use std::fmt::Write as _;
+
+/// The map resolution and image height the frame API is given (the measured M_x, M_z, S̄ are
+/// for unit resolutions, as everywhere in `warp`).
+const RESOLUTION: u32 = 2048;
+
+fn boxes(list: &[[f64; 6]], name: &'static str) -> Result<Vec<Aabb>, Error> {
+    list.iter()
+        .map(|b| {
+            Aabb::new(DVec3::new(b[0], b[1], b[2]), DVec3::new(b[3], b[4], b[5])).map_err(|_| {
+                Error::invalid(
+                    name,
+                    format!(
+                        "boxes must have MINX ≤ MAXX, MINY ≤ MAXY, MINZ ≤ MAXZ (got {})",
+                        b.map(sig).join(",")
+                    ),
+                )
+            })
+        })
+        .collect()
+}
+
+fn focus_name(f: Focus) -> &'static str {
+    match f {
+        Focus::Body => "body",
+        Focus::Empty => "empty",
+        Focus::Flat => "flat",
+        Focus::EdgeOn => "edge_on",
+        Focus::ZeroDepth => "zero_depth",
+    }
+}
+
+fn light_name(l: LightCase) -> &'static str {
+    match l {
+        LightCase::General => "general",
+        LightCase::SunStraightDown => "sun_straight_down",
+        LightCase::ParallelToView => "parallel_to_view",
+    }
+}
+
+/// The text or JSON of `warp` with a scene.
+pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
+    let c = &a.camera;
+    let view = ViewFrustum::new(c.near, c.far, c.half_fov)?;
+    let light = DVec3::from_array(a.light_dir);
+    let sc = &a.scene;
+    let sch = &a.scheme;
+    let r = rule(&view, Lights::One(light), sch)?;
+    let k = k(sch)?;
+    let overlap = sc.overlap.unwrap_or(0.0);
+    let scheme_of = |s: SplitScheme| CascadeSplits::Scheme {
+        scheme: s,
+        k,
+        overlap,
+    };
+    let bevy;
+    let splits = if let Some(planes) = &sc.splits {
+        Some(CascadeSplits::Distances {
+            planes: &planes.0,
+            overlap,
+        })
+    } else if let Some(fractions) = &sc.fractions {
+        Some(CascadeSplits::Fractions {
+            fractions: &fractions.0,
+            overlap,
+        })
+    } else if let Some(b) = &sc.bevy {
+        let [kb, min, first, max, o] = <[f64; 5]>::try_from(b.0.as_slice()).map_err(|_| {
+            Error::invalid(
+                "bevy",
+                "needs K,MINIMUM_DISTANCE,FIRST_FAR_BOUND,MAXIMUM_DISTANCE,OVERLAP_PROPORTION",
+            )
+        })?;
+        if !((1.0..=16.0).contains(&kb) && kb.fract() == 0.0) {
+            return Err(Error::invalid(
+                "k",
+                format!("must lie in [1, 16] (got {})", sig(kb)),
+            ));
+        }
+        bevy = CascadeSplits::Bevy {
+            k: kb as usize,
+            minimum_distance: min,
+            maximum_distance: max,
+            first_far_bound: first,
+            overlap_proportion: o,
+        };
+        Some(bevy)
+    } else {
+        None
+    };
+    let has_splits = splits.is_some();
+    if has_splits && sch.partition != PartitionName::Single {
+        return Err(Error::invalid(
+            "partition",
+            "is single when --splits, --fractions or --bevy give the cascades",
+        ));
+    }
+    let fs = match (splits, sch.partition) {
+        (Some(s), _) => FrameScheme::Cascades { splits: s, rule: r },
+        (None, PartitionName::Single) => {
+            if sc.overlap.is_some() {
+                return Err(Error::invalid("overlap", "needs cascades (--partition, --splits or --fractions)"));
+            }
+            FrameScheme::Single(r)
+        }
+        (None, PartitionName::Uniform) => FrameScheme::Cascades { splits: scheme_of(SplitScheme::Uniform), rule: r },
+        (None, PartitionName::Log) => FrameScheme::Cascades { splits: scheme_of(SplitScheme::SelfSimilar), rule: r },
+        (None, PartitionName::Practical) => FrameScheme::Cascades {
+            splits: scheme_of(SplitScheme::Practical { lambda: sch.lambda.unwrap_or(DEFAULT_LAMBDA) }),
+            rule: r,
+        },
+        (None, PartitionName::Adaptive) => FrameScheme::Cascades {
+            splits: scheme_of(SplitScheme::Adaptive {
+                light_angle: LightAngle::from_light_dir(light)?.radians(),
+                ratio: ADAPTIVE_RATIO,
+            }),
+            rule: r,
+        },
+        (None, PartitionName::Faces) => {
+            return Err(Error::invalid(
+                "partition",
+                "faces is not yet focused on a scene: use it without --receivers, --casters and --depth-range",
+            ))
+        }
+    };
+    let receivers = boxes(&sc.receivers, "receivers")?;
+    let casters = boxes(&sc.casters, "casters")?;
+    let cam = Camera::new(DMat4::IDENTITY, c.near, c.far, c.half_fov, 1.0)?;
+    let mut input = FrameInput::new(cam, light, RESOLUTION, RESOLUTION)
+        .scheme(fs)
+        .depth_clamp(sc.depth_clamp);
+    if !receivers.is_empty() {
+        input = input.receivers(Bound::Boxes(&receivers));
+    }
+    if !casters.is_empty() {
+        input = input.casters(Bound::Boxes(&casters));
+    }
+    if let Some([z0, z1]) = sc.depth_range {
+        input = input.depth_range(z0, z1);
+    }
+    let f = frame(&input)?;
+    Ok(if a.json { json(&f) } else { text(a, &f) })
+}
+
+fn json(f: &shadow_aliasing::frame::Frame) -> String {
+    let mut s = format!(
+        "{{\n  \"focus\": \"{}\",\n  \"light\": \"{}\",\n",
+        focus_name(f.focus()),
+        light_name(f.light_case())
+    );
+    let maps: Vec<_> = f.maps().iter().collect();
+    if let Some(total) = f.storage_factor() {
+        let mx = maps.iter().map(|m| m.max_mx).fold(0.0, f64::max);
+        let mz = maps.iter().map(|m| m.max_mz).fold(0.0, f64::max);
+        let _ = writeln!(s, "  \"storage_factor\": {},", json_num(total));
+        let _ = writeln!(s, "  \"max_mx\": {},", json_num(mx));
+        let _ = writeln!(s, "  \"max_mz\": {},", json_num(mz));
+        if maps.len() == 1 {
+            let _ = writeln!(
+                s,
+                "  \"n_prime\": {},",
+                json_n_prime(maps[0].shadow.n_prime())
+            );
+        }
+    }
+    s.push_str("  \"partitions\": [\n");
+    for (i, m) in maps.iter().enumerate() {
+        let mat: Vec<String> = m
+            .shadow
+            .matrix()
+            .to_cols_array()
+            .iter()
+            .map(|v| json_num(*v))
+            .collect();
+        let _ = writeln!(
+            s,
+            "    {{\"near\": {}, \"far\": {}, \"split\": [{}, {}], \"blend\": [{}, {}], \"n_prime\": {}, \"max_mx\": {}, \"max_mz\": {}, \"storage_factor\": {}, \"texel_world\": {}, \"body_vertices\": {}, \"matrix\": [{}]}}{}",
+            json_num(m.shadow.near()),
+            json_num(m.shadow.far()),
+            json_num(m.split.0),
+            json_num(m.split.1),
+            json_num(m.blend.0),
+            json_num(m.blend.1),
+            json_n_prime(m.shadow.n_prime()),
+            json_num(m.max_mx),
+            json_num(m.max_mz),
+            json_num(m.storage_factor),
+            json_num(m.texel_world),
+            m.body().len(),
+            mat.join(", "),
+            if i + 1 < maps.len() { "," } else { "" }
+        );
+    }
+    s.push_str("  ]\n}\n");
+    s
+}
+
+fn text(a: &WarpArgs, f: &shadow_aliasing::frame::Frame) -> String {
+    let mut s = String::new();
+    let [lx, ly, lz] = a.light_dir;
+    let _ = writeln!(
+        s,
+        "camera: near {}, far {}, half_fov {} rad; light travels along ({}, {}, {}) in eye space ({})",
+        sig(a.camera.near),
+        sig(a.camera.far),
+        sig(a.camera.half_fov),
+        sig(lx),
+        sig(ly),
+        sig(lz),
+        light_name(f.light_case())
+    );
+    let _ = writeln!(s, "focus: {}", focus_name(f.focus()));
+    let Some(total) = f.storage_factor() else {
+        s.push_str("no map needed: the receivers are out of view (or edge-on to the light)\n");
+        return s;
+    };
+    let _ = writeln!(
+        s,
+        "storage factor S̄ over B = {} (summed over {} map{}, unit resolutions)",
+        sig(total),
+        f.len(),
+        if f.len() == 1 { "" } else { "s" }
+    );
+    for (i, m) in f.maps().iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "\nmap {} of {}: B's depth [{}, {}] ({} vertices), split [{}, {}], n′ = {}",
+            i + 1,
+            f.len(),
+            sig(m.shadow.near()),
+            sig(m.shadow.far()),
+            m.body().len(),
+            sig(m.split.0),
+            sig(m.split.1),
+            sig_n_prime(m.shadow.n_prime())
+        );
+        let _ = writeln!(
+            s,
+            "  M_x = {}   M_z = {}   S̄ = {}",
+            sig(m.max_mx),
+            sig(m.max_mz),
+            sig(m.storage_factor)
+        );
+        let _ = writeln!(
+            s,
+            "  matrix (eye space → light clip space, OpenGL depth [-1, 1]), by rows:"
+        );
+        for r in 0..4 {
+            let row = m.shadow.matrix().row(r);
+            let _ = writeln!(
+                s,
+                "    [ {:>10} {:>10} {:>10} {:>10} ]",
+                sig(row.x),
+                sig(row.y),
+                sig(row.z),
+                sig(row.w)
+            );
+        }
+    }
+    s
+}

@@ -1,0 +1,1599 @@
+//! The frame API: a renderer's one call per light per frame, in world space, with the map focused
+//! on the scene (issue 9).
+//!
+//! # The focus body
+//!
+//! B = (the view frustum, or a cascade's slice of it, cut to the visible depth range) ∩ the
+//! receivers' bound, by exact convex clipping (Sutherland–Hodgman on every face of the frustum,
+//! each cut closed by a cap face, in fixed arrays). Several receiver boxes combine as their merged
+//! bounding box (as OGRE does). B is *empty* when the intersection has no volume: a box that only
+//! touches the frustum at a face, an edge or a point gives no map ([`Focus::Empty`], "no map
+//! needed"). A receivers' bound that is itself flat (a ground plane of zero thickness) gives a
+//! flat B, which is mapped ([`Focus::Flat`]) as long as the light sees it with an area.
+//!
+//! The casters that can shadow B are the casters' bound ∩ the sweep of B toward the light. For the
+//! maps' depth only the point of that set nearest the light matters, and over the prism of B's
+//! light-space footprint (x, z) it is the same point (a point of the prism nearer the light than
+//! every point of B lies in the sweep), so each caster box is clipped by the prism's side planes
+//! and its vertex nearest the light (in the warp's depth, y/w) extends the depth range. With
+//! `depth_clamp` the casters are not looked at: the map's depth covers B alone and casters nearer
+//! the light fall below depth 0, which the device clamps ("pancaking").
+//!
+//! # Conventions (the tests and the command line rely on them)
+//!
+//! - Light space is [`crate::maps::light_space`]'s: the warp axis is the view direction projected
+//!   perpendicular to the light whatever B is (not B's centroid, as
+//!   [`crate::maps::tsm::tsm_general`] does).
+//! - s, t are fitted to B's vertices: the uniform map to the bounding rectangle of B's vertices in
+//!   light space; a warp of parameter n′ with its centre of projection on the eye's own light-space
+//!   line ([`WarpCentre::Eye`], as [`crate::maps::fit_warp`] and Filament do), or on B's vertex
+//!   nearest the camera ([`WarpCentre::NearestVertex`], the LiSPSM reference code's and OGRE's
+//!   `C_start`); n′ is measured from B's nearest extent along the warp axis, f′ = n′ + B's depth
+//!   along it.
+//! - Every n′ rule sees B's eye-depth range `[n_B, f_B]` as its frustum (as a z-partition's rule
+//!   sees its partition): the papers' rules use n_B, f_B; the LiSPSM reference code's z₀ is n_B and
+//!   its d is B's extent Δ_B along the warp axis; Filament's z₀ is n_B (the nearest receiver) with d
+//!   = Δ_B and its hints measured from the camera's planes; OGRE's e_z is n_B with the camera's
+//!   √(n f); TSM's focus distance is scaled by (f_B − n_B)/(slice depth), as
+//!   [`crate::maps::tsm::tsm_general`] does; minimax minimises S̄ over B's vertices with the eye's
+//!   centre, so it is never above the uniform map over B.
+//! - Casters only extend the light-depth range (or rely on depth clamp), never s, t or S̄.
+//! - The error is measured over B's vertices ([`crate::measure::vertex::vertex_max`]): the papers'
+//!   warps have m_x quasi-linear and m_z convex over a convex body, so the maxima lie at vertices
+//!   (tests/frame.rs checks it densely).
+//! - A receivers' bound that contains the frustum (slice) gives the frustum-only builders'
+//!   matrices: [`crate::maps::warp()`], [`crate::maps::cascades::cascades`] bit for bit.
+//!
+//! ```
+//! use glam::{DMat4, DVec3};
+//! use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, FrameInput, FrameScheme, Focus};
+//! use shadow_aliasing::maps::{ClipDepth, WarpRule};
+//! let view = glam::dcamera::rh::view::look_at_mat4(DVec3::new(0.0, 2.0, 0.0), DVec3::new(0.0, 2.0, -1.0), DVec3::Y);
+//! let camera = Camera::new(view, 0.1, 1000.0, 30f64.to_radians(), 16.0 / 9.0)?;
+//! let ground = [Aabb::new(DVec3::new(-50.0, -1.0, -100.0), DVec3::new(50.0, 0.0, 0.0))?];
+//! let input = FrameInput::new(camera, DVec3::new(0.3, -1.0, -0.2), 2048, 1080)
+//!     .receivers(Bound::Boxes(&ground))
+//!     .casters(Bound::Boxes(&ground))
+//!     .scheme(FrameScheme::Single(WarpRule::Lispsm));
+//! let f = frame(&input)?;
+//! assert_eq!(f.focus(), Focus::Body);
+//! let map = &f.maps()[0];
+//! let gpu = map.to_mat4(ClipDepth::ZeroToOne); // world → light clip, upload per frame
+//! assert!(gpu.is_finite() && map.texel_world > 0.0);
+//! # Ok::<(), shadow_aliasing::Error>(())
+//! ```
+
+use crate::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
+use crate::error::{fmt_num, in_closed, positive, Error, Result};
+use crate::frustum::{LightDir, NPrime, ViewFrustum};
+use crate::geom::polytope::{extents, ConvexBody};
+use crate::maps::cascades::bounding_sphere;
+use crate::maps::lightspace::{light_space_unit, LightSpace};
+use crate::maps::matrix::zero_to_one;
+use crate::maps::tsm::{tsm_on_points, validate as validate_tsm};
+use crate::maps::warp::{
+    fit_body, focus_in_range, rule_axis, rule_n_prime_on, warp_prepared, FrustumInLight,
+    PreparedLight,
+};
+use crate::maps::{ClipDepth, ShadowMatrix, TsmOptions, WarpRule};
+use crate::measure::vertex::vertex_max;
+use glam::{DMat3, DMat4, DVec2, DVec3, DVec4, Mat4};
+
+/// The largest number of vertices of a focus body (a frustum slice cut by up to 6 planes has at
+/// most 2·12 − 4 = 20; the rest is room for a polytope bound's extra planes).
+pub const MAX_BODY_VERTICES: usize = 32;
+
+/// The largest number of planes of a [`Bound::Polytope`].
+pub const MAX_BOUND_PLANES: usize = 12;
+
+/// The receivers' body: 6 frustum faces + 12 bound planes, a face at most 4 + 12 vertices.
+type BodyClip = ConvexBody<18, 18>;
+/// A caster box cut by the prism of B's footprint (at most 20 edges): 26 faces of at most 24.
+type CasterClip = ConvexBody<28, 28>;
+/// A caster polytope: a box, 12 planes and the prism.
+type PolytopeClip = ConvexBody<40, 40>;
+
+/// A world-space axis-aligned box.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Aabb {
+    /// Smallest corner.
+    pub min: DVec3,
+    /// Largest corner.
+    pub max: DVec3,
+}
+
+impl Aabb {
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `min` when a coordinate is not finite or min > max.
+    pub fn new(min: DVec3, max: DVec3) -> Result<Self> {
+        let b = Self { min, max };
+        b.check()?;
+        Ok(b)
+    }
+
+    fn check(&self) -> Result<()> {
+        if !self.min.is_finite() || !self.max.is_finite() || self.min.cmpgt(self.max).any() {
+            return Err(Error::invalid(
+                "min",
+                format!(
+                    "must be finite and not above max (got min={}, max={})",
+                    self.min, self.max
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The eight corners in the order of [`ViewFrustum::corners`] (min z face first).
+    fn corners(&self) -> [DVec3; 8] {
+        let (a, b) = (self.min, self.max);
+        let mut c = [DVec3::ZERO; 8];
+        for (k, z) in [a.z, b.z].into_iter().enumerate() {
+            c[4 * k] = DVec3::new(a.x, a.y, z);
+            c[4 * k + 1] = DVec3::new(b.x, a.y, z);
+            c[4 * k + 2] = DVec3::new(b.x, b.y, z);
+            c[4 * k + 3] = DVec3::new(a.x, b.y, z);
+        }
+        c
+    }
+}
+
+/// A world-space bound of receivers or casters.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Bound<'a> {
+    /// No bound: receivers everywhere (B is the frustum); for casters, none known beyond B (the
+    /// depth range is B's, as the frustum-only builders fit it; nearer casters need depth clamp).
+    #[default]
+    Unbounded,
+    /// One or many boxes. Receivers: their merged bounding box (as OGRE). Casters: each box.
+    Boxes(&'a [Aabb]),
+    /// A bounded convex polytope, at most [`MAX_BOUND_PLANES`] world planes `(a, b, c, d)`,
+    /// inside where `a x + b y + c z + d ≤ 0`.
+    Polytope(&'a [DVec4]),
+}
+
+/// The camera: world → eye (rigid) and its projection.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Camera {
+    world_to_eye: DMat4,
+    eye_to_world: DMat4,
+    view: ViewFrustum,
+}
+
+impl Camera {
+    /// From the world → eye matrix (glam `dcamera::rh::view::look_at_mat4`: right-handed, looking
+    /// down −Z) and the projection's near, far, half vertical field of view and aspect.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `world_to_eye` (not finite, or not rigid to 10⁻⁶), or as
+    /// [`ViewFrustum::with_aspect`].
+    pub fn new(
+        world_to_eye: DMat4,
+        near: f64,
+        far: f64,
+        half_fov: f64,
+        aspect: f64,
+    ) -> Result<Self> {
+        let view = ViewFrustum::with_aspect(near, far, half_fov, aspect)?;
+        if !world_to_eye.is_finite() {
+            return Err(Error::invalid("world_to_eye", "must have finite entries"));
+        }
+        let r = DMat3::from_mat4(world_to_eye);
+        let off = (r * r.transpose() - DMat3::IDENTITY).to_cols_array();
+        let bottom = world_to_eye.row(3);
+        if off.iter().any(|v| v.abs() > 1e-6)
+            || (bottom - DVec4::W).abs().max_element() > 1e-12
+            || r.determinant() <= 0.0
+        {
+            return Err(Error::invalid(
+                "world_to_eye",
+                "must be a rigid transform (rotation and translation)",
+            ));
+        }
+        Ok(Self {
+            world_to_eye,
+            eye_to_world: world_to_eye.inverse(),
+            view,
+        })
+    }
+
+    /// As [`Camera::new`] for a single-precision view matrix.
+    ///
+    /// # Errors
+    /// As [`Camera::new`].
+    pub fn from_mat4(
+        world_to_eye: Mat4,
+        near: f64,
+        far: f64,
+        half_fov: f64,
+        aspect: f64,
+    ) -> Result<Self> {
+        Self::new(world_to_eye.as_dmat4(), near, far, half_fov, aspect)
+    }
+
+    /// The camera's view frustum.
+    #[must_use]
+    pub fn view(&self) -> &ViewFrustum {
+        &self.view
+    }
+
+    /// World → eye.
+    #[must_use]
+    pub fn world_to_eye(&self) -> DMat4 {
+        self.world_to_eye
+    }
+}
+
+/// Where a warp's centre of projection lies across the warp axis (module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum WarpCentre {
+    /// As [`crate::maps::warp()`] builds each rule: on B's vertex nearest the camera for
+    /// [`WarpRule::Ogre`] and [`WarpRule::OgreOrtho`], on the eye's light-space line otherwise.
+    #[default]
+    Rule,
+    /// On the eye's own light-space line (`fit_warp`, Filament).
+    Eye,
+    /// On the light-space x and y of B's vertex nearest the camera (ties: the largest x + y, the
+    /// top right of OGRE's `ConvexBody::define` order), as the LiSPSM reference code and OGRE.
+    NearestVertex,
+}
+
+/// How the view's depth range is split into cascades.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CascadeSplits<'a> {
+    /// k planes of a [`SplitScheme`] over the visible depth range; each partition but the last
+    /// reaches `overlap` of its own depth into the next (the crate's overlap,
+    /// [`crate::maps::cascades`]).
+    Scheme {
+        /// The split scheme.
+        scheme: SplitScheme,
+        /// Number of cascades, 1..=16.
+        k: usize,
+        /// Overlap fraction in [0, 1).
+        overlap: f64,
+    },
+    /// Absolute split distances: every plane from the first cascade's near to the last's far,
+    /// strictly increasing, inside the visible depth range.
+    Distances {
+        /// The planes z₀ < z₁ < … < z_k.
+        planes: &'a [f64],
+        /// Overlap fraction in [0, 1).
+        overlap: f64,
+    },
+    /// Fractions 0 < φ₁ < … < φ_{k−1} < 1 of the visible depth range.
+    Fractions {
+        /// The interior fractions.
+        fractions: &'a [f64],
+        /// Overlap fraction in [0, 1).
+        overlap: f64,
+    },
+    /// Bevy's `CascadeShadowConfigBuilder`: far bounds `first_far_bound · b^i` with
+    /// `b = (maximum_distance/first_far_bound)^{1/(k−1)}` (`calculate_cascade_bounds`), the first
+    /// cascade starting at `minimum_distance`, cascade i > 0 at `(1 − overlap_proportion)` times
+    /// the previous far bound (the band cross-faded with the previous cascade). Distances are
+    /// clamped to the visible depth range.
+    Bevy {
+        /// Number of cascades, 1..=16.
+        k: usize,
+        /// Near bound of the first cascade.
+        minimum_distance: f64,
+        /// Far bound of the last cascade.
+        maximum_distance: f64,
+        /// Far bound of the first cascade (ignored for k = 1).
+        first_far_bound: f64,
+        /// Overlap proportion in [0, 1).
+        overlap_proportion: f64,
+    },
+}
+
+/// What the frame builds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum FrameScheme<'a> {
+    /// One map with any warp rule.
+    Single(WarpRule),
+    /// Cascades, each fitted with the rule to its own focus body.
+    Cascades {
+        /// The splits.
+        splits: CascadeSplits<'a>,
+        /// The rule of every cascade.
+        rule: WarpRule,
+    },
+    /// Stable cascades: each cascade's s, t from its slice's bounding sphere in a world-fixed
+    /// light space, snapped to whole texels ([`crate::maps::cascades::stable_cascade`]); the
+    /// depth range from its focus body and the casters; no map for a slice whose body is empty.
+    Stable(CascadeSplits<'a>),
+    /// One trapezoidal map (Martin & Tan) of the focus body: the view-axis light space, B's
+    /// vertices as E, the focus region B cut `focus × (f_B − n_B)/(f − n)` beyond B's nearest depth
+    /// (the focus distance scaled to B's depth, as [`crate::maps::tsm::tsm_general`] does), the
+    /// depth row refitted to B and the casters.
+    Tsm(TsmOptions),
+}
+
+/// Everything the frame needs (see the module docs). Build with [`FrameInput::new`] and the
+/// setters.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrameInput<'a> {
+    /// The camera.
+    pub camera: Camera,
+    /// The direction light travels, world space.
+    pub light_dir_world: DVec3,
+    /// The receivers' bound.
+    pub receivers: Bound<'a>,
+    /// The casters' bound.
+    pub casters: Bound<'a>,
+    /// The visible receivers' depth range `[z_min, z_max]` (a depth-buffer min/max reduction).
+    pub depth_range: Option<(f64, f64)>,
+    /// The map's texels per side.
+    pub map_resolution: u32,
+    /// The image's height in pixels (the predicted error is in these pixels).
+    pub image_height: u32,
+    /// The device clamps depth: casters are not needed in the depth range.
+    pub depth_clamp: bool,
+    /// The scheme.
+    pub scheme: FrameScheme<'a>,
+    /// Where warps put their centre of projection.
+    pub centre: WarpCentre,
+}
+
+impl<'a> FrameInput<'a> {
+    /// A single minimax map of the whole frustum, no scene bounds, no depth clamp.
+    #[must_use]
+    pub fn new(
+        camera: Camera,
+        light_dir_world: DVec3,
+        map_resolution: u32,
+        image_height: u32,
+    ) -> Self {
+        Self {
+            camera,
+            light_dir_world,
+            receivers: Bound::Unbounded,
+            casters: Bound::Unbounded,
+            depth_range: None,
+            map_resolution,
+            image_height,
+            depth_clamp: false,
+            scheme: FrameScheme::Single(WarpRule::Minimax),
+            centre: WarpCentre::Rule,
+        }
+    }
+    /// Sets the receivers' bound.
+    #[must_use]
+    pub fn receivers(mut self, b: Bound<'a>) -> Self {
+        self.receivers = b;
+        self
+    }
+    /// Sets the casters' bound.
+    #[must_use]
+    pub fn casters(mut self, b: Bound<'a>) -> Self {
+        self.casters = b;
+        self
+    }
+    /// Sets the visible depth range.
+    #[must_use]
+    pub fn depth_range(mut self, z_min: f64, z_max: f64) -> Self {
+        self.depth_range = Some((z_min, z_max));
+        self
+    }
+    /// Says whether the device clamps depth.
+    #[must_use]
+    pub fn depth_clamp(mut self, on: bool) -> Self {
+        self.depth_clamp = on;
+        self
+    }
+    /// Sets the scheme.
+    #[must_use]
+    pub fn scheme(mut self, s: FrameScheme<'a>) -> Self {
+        self.scheme = s;
+        self
+    }
+    /// Sets the warp centre.
+    #[must_use]
+    pub fn centre(mut self, c: WarpCentre) -> Self {
+        self.centre = c;
+        self
+    }
+}
+
+/// What the focus body is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Focus {
+    /// A body with volume: maps built.
+    #[default]
+    Body,
+    /// The scene is out of view (B has no volume, touching included): no map needed.
+    Empty,
+    /// The receivers' bound is flat (zero thickness) and B is a polygon: mapped.
+    Flat,
+    /// B has no extent across or along the warp axis as the light sees it (an edge-on flat
+    /// receiver): no map can be fitted and none is needed.
+    EdgeOn,
+    /// B has no extent in eye depth (f_B = n_B, a wall facing the camera): mapped with n′ = ∞,
+    /// since every warp rule needs a depth range.
+    ZeroDepth,
+}
+
+/// The light's relation to the camera and the world.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum LightCase {
+    /// Nothing special.
+    #[default]
+    General,
+    /// The light travels straight down the world's −Y (no world-up vector is used: the warp axis is
+    /// the view direction projected, so nothing degenerates).
+    SunStraightDown,
+    /// The light is parallel to the view direction (sin γ < 10⁻⁶): every rule's map is (close to)
+    /// the uniform map, in the fallback light space of [`crate::maps::lightspace`].
+    ParallelToView,
+}
+
+/// One map of a frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrameMap {
+    /// Eye → light clip (OpenGL depth), with n′ and the eye-depth range of its body.
+    pub shadow: ShadowMatrix,
+    /// World → light clip, OpenGL depth [−1, 1].
+    pub world_to_clip: DMat4,
+    /// The view-depth range where the shader selects this map.
+    pub split: (f64, f64),
+    /// The band at the far end of `split` (or beyond it) that this map and the next both cover,
+    /// to cross-fade over; `(split.1, split.1)` when there is none.
+    pub blend: (f64, f64),
+    /// The largest world-space texel edge over the body at the map's resolution (normal-offset
+    /// bias: Bevy's `texel_size`, Filament's `texelSizeWorldSpace`).
+    pub texel_world: f64,
+    /// M_x over the body's vertices (unit resolutions).
+    pub max_mx: f64,
+    /// M_z over the body's vertices (unit resolutions).
+    pub max_mz: f64,
+    /// S̄ = M_x M_z over the body.
+    pub storage_factor: f64,
+    /// The predicted maximum error in screen pixels, `max(M_x, M_z) · image_height /
+    /// map_resolution`.
+    pub max_error_pixels: f64,
+    /// What the body is (Body, Flat or ZeroDepth for a built map).
+    pub focus: Focus,
+    world_to_eye: DMat4,
+    body: [DVec3; MAX_BODY_VERTICES],
+    body_len: usize,
+}
+
+impl FrameMap {
+    /// World → light clip in the requested clip-depth convention.
+    #[must_use]
+    pub fn world_to_clip(&self, depth: ClipDepth) -> DMat4 {
+        match depth {
+            ClipDepth::NegOneToOne => self.world_to_clip,
+            ClipDepth::ZeroToOne => zero_to_one(&self.shadow.matrix()) * self.world_to_eye,
+        }
+    }
+    /// [`FrameMap::world_to_clip`] in single precision for the GPU.
+    #[must_use]
+    pub fn to_mat4(&self, depth: ClipDepth) -> Mat4 {
+        self.world_to_clip(depth).as_mat4()
+    }
+    /// The focus body's vertices, eye space.
+    #[must_use]
+    pub fn body(&self) -> &[DVec3] {
+        &self.body[..self.body_len]
+    }
+}
+
+/// A frame's maps, in a fixed array (no heap allocation).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Frame {
+    maps: [Option<FrameMap>; MAX_PARTITIONS],
+    /// Slot i of the scheme's partitions (None where its body is empty).
+    k: usize,
+    len: usize,
+    focus: Focus,
+    light: LightCase,
+    light_dir_eye: DVec3,
+}
+
+impl Default for Frame {
+    /// An empty frame, for [`frame_into`] to fill.
+    fn default() -> Self {
+        Self {
+            maps: [None; MAX_PARTITIONS],
+            k: 0,
+            len: 0,
+            focus: Focus::Empty,
+            light: LightCase::General,
+            light_dir_eye: DVec3::NEG_Y,
+        }
+    }
+}
+
+impl Frame {
+    /// The built maps, near to far (cascades whose body is empty are left out).
+    pub fn maps(&self) -> FrameMaps<'_> {
+        FrameMaps(&self.maps[..self.k])
+    }
+    /// The partition slots, `None` where the slice's body is empty (no map needed).
+    #[must_use]
+    pub fn slots(&self) -> &[Option<FrameMap>] {
+        &self.maps[..self.k]
+    }
+    /// The number of maps built.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+    /// No map built: the scene is out of view (or edge-on to the light).
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+    /// The focus of the whole frame: the first built map's, or why none was built.
+    #[must_use]
+    pub fn focus(&self) -> Focus {
+        self.focus
+    }
+    /// The light's case.
+    #[must_use]
+    pub fn light_case(&self) -> LightCase {
+        self.light
+    }
+    /// The unit direction light travels, eye space.
+    #[must_use]
+    pub fn light_dir_eye(&self) -> DVec3 {
+        self.light_dir_eye
+    }
+    /// Σ S̄ over the built maps, `None` when none was built.
+    #[must_use]
+    pub fn storage_factor(&self) -> Option<f64> {
+        (self.len > 0).then(|| self.maps().iter().map(|m| m.storage_factor).sum())
+    }
+}
+
+/// The built maps of a [`Frame`], indexable and iterable.
+#[derive(Debug, Clone, Copy)]
+pub struct FrameMaps<'f>(&'f [Option<FrameMap>]);
+
+impl<'f> FrameMaps<'f> {
+    /// The built maps in order.
+    pub fn iter(&self) -> impl Iterator<Item = &'f FrameMap> {
+        self.0.iter().flatten()
+    }
+    /// The number of built maps.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.iter().count()
+    }
+    /// Whether no map was built.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+impl std::ops::Index<usize> for FrameMaps<'_> {
+    type Output = FrameMap;
+    fn index(&self, i: usize) -> &FrameMap {
+        self.0
+            .iter()
+            .flatten()
+            .nth(i)
+            .expect("map index out of range")
+    }
+}
+
+/// One slice to map: covered depth range, selection range, blend band.
+#[derive(Debug, Clone, Copy)]
+struct Slice {
+    cover: (f64, f64),
+    split: (f64, f64),
+    blend: (f64, f64),
+}
+
+/// The receivers' bound as eye-space planes.
+#[derive(Debug, Clone, Copy)]
+struct Planes {
+    p: [DVec4; MAX_BOUND_PLANES],
+    n: usize,
+    /// The bound itself has no volume (a flat box).
+    flat: bool,
+}
+
+/// The frame's maps (module docs). No heap allocation on success or for the typed outcomes.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `light_dir_world`, `map_resolution` (< 3), `image_height`
+/// (0), `depth_range` (not finite, z_min ≥ z_max), `receivers`/`casters` (a bad box, an empty
+/// list, too many planes, a polytope unbounded toward the light), `overlap`, `k`, the splits or
+/// the rule's parameter; [`Error::Degenerate`] when a map cannot be represented in `f64`.
+pub fn frame(input: &FrameInput<'_>) -> Result<Frame> {
+    let mut out = Frame::default();
+    frame_into(input, &mut out)?;
+    Ok(out)
+}
+
+/// As [`frame`], writing into `out` (reused between frames).
+///
+/// # Errors
+/// As [`frame`].
+pub fn frame_into(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
+    out.k = 0;
+    out.len = 0;
+    out.focus = Focus::Empty;
+    let cam = &input.camera;
+    let lw = LightDir::new(input.light_dir_world)
+        .map_err(|_| Error::invalid("light_dir_world", "must be a finite, non-zero vector"))?
+        .as_dvec3();
+    if input.map_resolution < 3 {
+        return Err(Error::invalid(
+            "map_resolution",
+            format!("must be at least 3 texels (got {})", input.map_resolution),
+        ));
+    }
+    if input.image_height == 0 {
+        return Err(Error::invalid("image_height", "must be at least 1 pixel"));
+    }
+    let l = cam.world_to_eye.transform_vector3(lw).normalize();
+    out.light_dir_eye = l;
+    let sin_gamma = (l.x * l.x + l.y * l.y).sqrt();
+    out.light = if sin_gamma < 1e-6 {
+        LightCase::ParallelToView
+    } else if lw.x.hypot(lw.z) < 1e-6 && lw.y < 0.0 {
+        LightCase::SunStraightDown
+    } else {
+        LightCase::General
+    };
+    let view = &cam.view;
+    let (zn, zf) = visible_range(view, input.depth_range)?;
+    let planes = receiver_planes(cam, &input.receivers)?;
+    validate_casters(&input.casters)?;
+    let mut slices = [Slice {
+        cover: (0.0, 0.0),
+        split: (0.0, 0.0),
+        blend: (0.0, 0.0),
+    }; MAX_PARTITIONS];
+    let (k, rule, _) = match input.scheme {
+        FrameScheme::Single(rule) => {
+            slices[0] = Slice {
+                cover: (zn, zf),
+                split: (zn, zf),
+                blend: (zf, zf),
+            };
+            (1, rule, false)
+        }
+        FrameScheme::Cascades { splits, rule } => {
+            (cascade_slices(splits, zn, zf, &mut slices)?, rule, false)
+        }
+        FrameScheme::Stable(splits) => (
+            cascade_slices(splits, zn, zf, &mut slices)?,
+            WarpRule::Uniform,
+            true,
+        ),
+        FrameScheme::Tsm(_) => {
+            slices[0] = Slice {
+                cover: (zn, zf),
+                split: (zn, zf),
+                blend: (zf, zf),
+            };
+            (1, WarpRule::Uniform, false)
+        }
+    };
+    let ctx = Ctx {
+        input,
+        view,
+        l,
+        lw,
+        planes,
+    };
+    let mut first_focus = None;
+    let mut any_edge_on = false;
+    for (i, s) in slices[..k].iter().enumerate() {
+        let m = match input.scheme {
+            FrameScheme::Stable(_) => ctx.stable_map(s)?,
+            FrameScheme::Tsm(opts) => ctx.tsm_map(s, opts)?,
+            _ => ctx.map(s, rule)?,
+        };
+        match m {
+            Built::Map(m) => {
+                first_focus.get_or_insert(m.focus);
+                out.maps[i] = Some(m);
+                out.len += 1;
+            }
+            Built::None(f) => {
+                any_edge_on |= f == Focus::EdgeOn;
+                out.maps[i] = None;
+            }
+        }
+    }
+    out.k = k;
+    out.focus = match first_focus {
+        Some(f) => f,
+        None if any_edge_on => Focus::EdgeOn,
+        None => Focus::Empty,
+    };
+    Ok(())
+}
+
+/// The visible depth range: the camera's, cut to `[z_min, z_max]`.
+fn visible_range(view: &ViewFrustum, range: Option<(f64, f64)>) -> Result<(f64, f64)> {
+    let (n, f) = (view.near(), view.far());
+    let Some((a, b)) = range else {
+        return Ok((n, f));
+    };
+    if !(a.is_finite() && b.is_finite() && a < b) {
+        return Err(Error::invalid(
+            "depth_range",
+            format!(
+                "must be finite with z_min < z_max (got [{}, {}])",
+                fmt_num(a),
+                fmt_num(b)
+            ),
+        ));
+    }
+    let (a, b) = (a.max(n), b.min(f));
+    if a >= b {
+        return Err(Error::invalid(
+            "depth_range",
+            format!(
+                "must overlap the camera's [near, far] = [{}, {}] in a range",
+                fmt_num(n),
+                fmt_num(f)
+            ),
+        ));
+    }
+    Ok((a, b))
+}
+
+/// The receivers' bound as eye-space planes; `n = 0` for no bound.
+fn receiver_planes(cam: &Camera, b: &Bound<'_>) -> Result<Planes> {
+    let mut out = Planes {
+        p: [DVec4::ZERO; MAX_BOUND_PLANES],
+        n: 0,
+        flat: false,
+    };
+    let it = cam.eye_to_world.transpose(); // a world plane π is (V⁻¹)ᵀ π in eye space
+    match b {
+        Bound::Unbounded => {}
+        Bound::Boxes(boxes) => {
+            let Some(first) = boxes.first() else {
+                return Err(Error::invalid("receivers", "must hold at least one box"));
+            };
+            let (mut lo, mut hi) = (first.min, first.max);
+            for bx in *boxes {
+                bx.check().map_err(|_| bad_box("receivers", bx))?;
+                lo = lo.min(bx.min);
+                hi = hi.max(bx.max);
+            }
+            let world = [
+                DVec4::new(1.0, 0.0, 0.0, -hi.x),
+                DVec4::new(-1.0, 0.0, 0.0, lo.x),
+                DVec4::new(0.0, 1.0, 0.0, -hi.y),
+                DVec4::new(0.0, -1.0, 0.0, lo.y),
+                DVec4::new(0.0, 0.0, 1.0, -hi.z),
+                DVec4::new(0.0, 0.0, -1.0, lo.z),
+            ];
+            for (k, w) in world.iter().enumerate() {
+                out.p[k] = it * *w;
+            }
+            out.n = 6;
+            let size = (hi - lo).abs().max_element().max(1.0);
+            out.flat = (hi - lo).min_element() <= 1e-12 * size;
+        }
+        Bound::Polytope(planes) => {
+            if planes.is_empty() || planes.len() > MAX_BOUND_PLANES {
+                return Err(Error::invalid(
+                    "receivers",
+                    format!(
+                        "a polytope must have 1 to {MAX_BOUND_PLANES} planes (got {})",
+                        planes.len()
+                    ),
+                ));
+            }
+            for (k, p) in planes.iter().enumerate() {
+                if !p.is_finite() || p.truncate().length() <= 0.0 {
+                    return Err(Error::invalid(
+                        "receivers",
+                        format!("planes must be finite with a non-zero normal (got {p})"),
+                    ));
+                }
+                out.p[k] = it * *p;
+            }
+            out.n = planes.len();
+        }
+    }
+    Ok(out)
+}
+
+fn bad_box(name: &'static str, b: &Aabb) -> Error {
+    Error::invalid(
+        name,
+        format!(
+            "boxes must be finite with min not above max (got min={}, max={})",
+            b.min, b.max
+        ),
+    )
+}
+
+fn validate_casters(b: &Bound<'_>) -> Result<()> {
+    match b {
+        Bound::Unbounded => Ok(()),
+        Bound::Boxes(boxes) => {
+            for bx in *boxes {
+                bx.check().map_err(|_| bad_box("casters", bx))?;
+            }
+            Ok(())
+        }
+        Bound::Polytope(planes) => {
+            if planes.is_empty() || planes.len() > MAX_BOUND_PLANES {
+                return Err(Error::invalid(
+                    "casters",
+                    format!("a polytope must have 1 to {MAX_BOUND_PLANES} planes"),
+                ));
+            }
+            if planes
+                .iter()
+                .any(|p| !p.is_finite() || p.truncate().length() <= 0.0)
+            {
+                return Err(Error::invalid(
+                    "casters",
+                    "planes must be finite with a non-zero normal",
+                ));
+            }
+            Ok(())
+        }
+    }
+}
+
+fn overlap_ok(o: f64) -> Result<f64> {
+    let o = in_closed("overlap", o, 0.0, 1.0)?;
+    if o >= 1.0 {
+        return Err(Error::invalid("overlap", "must be smaller than 1 (got 1)"));
+    }
+    Ok(o)
+}
+
+/// The cascades' slices over the visible range `[zn, zf]`; returns k.
+fn cascade_slices(
+    splits: CascadeSplits<'_>,
+    zn: f64,
+    zf: f64,
+    out: &mut [Slice; MAX_PARTITIONS],
+) -> Result<usize> {
+    let crate_overlap =
+        |s: &Splits, overlap: f64, out: &mut [Slice; MAX_PARTITIONS]| -> Result<usize> {
+            let o = overlap_ok(overlap)?;
+            let planes = s.planes();
+            let (first, last) = (planes[0], planes[planes.len() - 1]);
+            let slack = 1e-12 * zf;
+            if first < zn - slack || last > zf + slack {
+                return Err(Error::invalid(
+                    "splits",
+                    format!(
+                        "must lie within the visible depth range [{}, {}] (got [{}, {}])",
+                        fmt_num(zn),
+                        fmt_num(zf),
+                        fmt_num(first),
+                        fmt_num(last)
+                    ),
+                ));
+            }
+            let k = s.k();
+            for (i, slot) in out.iter_mut().enumerate().take(k) {
+                let (a, b) = s.range(i);
+                let end = if i + 1 < k {
+                    (b + o * (b - a)).min(last)
+                } else {
+                    b
+                };
+                *slot = Slice {
+                    cover: (a.max(zn), end.min(zf)),
+                    split: (a, b),
+                    blend: (b, end),
+                };
+            }
+            Ok(k)
+        };
+    match splits {
+        CascadeSplits::Scheme { scheme, k, overlap } => {
+            let s = z_splits(zn, zf, k, scheme)?;
+            crate_overlap(&s, overlap, out)
+        }
+        CascadeSplits::Distances { planes, overlap } => {
+            let s = Splits::from_planes(planes)?;
+            crate_overlap(&s, overlap, out)
+        }
+        CascadeSplits::Fractions { fractions, overlap } => {
+            if fractions.len() >= MAX_PARTITIONS {
+                return Err(Error::invalid(
+                    "fractions",
+                    format!("must hold at most {} values", MAX_PARTITIONS - 1),
+                ));
+            }
+            let mut planes = [0.0; MAX_PARTITIONS + 1];
+            planes[0] = zn;
+            let mut prev = 0.0;
+            for (i, &phi) in fractions.iter().enumerate() {
+                if !(phi.is_finite() && phi > prev && phi < 1.0) {
+                    return Err(Error::invalid(
+                        "fractions",
+                        format!(
+                            "must be finite, strictly increasing and inside (0, 1) (got {} at index {i})",
+                            fmt_num(phi)
+                        ),
+                    ));
+                }
+                prev = phi;
+                planes[i + 1] = zn + phi * (zf - zn);
+            }
+            planes[fractions.len() + 1] = zf;
+            let s = Splits::from_planes(&planes[..fractions.len() + 2])?;
+            crate_overlap(&s, overlap, out)
+        }
+        CascadeSplits::Bevy {
+            k,
+            minimum_distance,
+            maximum_distance,
+            first_far_bound,
+            overlap_proportion,
+        } => {
+            if k == 0 || k > MAX_PARTITIONS {
+                return Err(Error::invalid(
+                    "k",
+                    format!("must be in 1..={MAX_PARTITIONS} (got {k})"),
+                ));
+            }
+            let o = overlap_ok(overlap_proportion)?;
+            let max_d = positive("maximum_distance", maximum_distance)?;
+            let min_d = in_closed("minimum_distance", minimum_distance, 0.0, max_d)?;
+            let first = if k > 1 {
+                let f = positive("first_far_bound", first_far_bound)?;
+                if !(f > min_d && f < max_d) {
+                    return Err(Error::invalid(
+                        "first_far_bound",
+                        format!(
+                            "must lie between minimum_distance and maximum_distance (got {})",
+                            fmt_num(f)
+                        ),
+                    ));
+                }
+                f
+            } else {
+                max_d
+            };
+            // Bevy's `calculate_cascade_bounds`, in f64.
+            let base = if k > 1 {
+                (max_d / first).powf(1.0 / (k - 1) as f64)
+            } else {
+                1.0
+            };
+            let mut prev_far = 0.0;
+            let mut n = 0;
+            for i in 0..k {
+                let far_b = if k == 1 {
+                    max_d
+                } else {
+                    first * base.powi(i as i32)
+                };
+                let near_b = if i == 0 { min_d } else { (1.0 - o) * prev_far };
+                let sel_near = if i == 0 { min_d } else { prev_far };
+                let blend = if i + 1 < k {
+                    ((1.0 - o) * far_b, far_b)
+                } else {
+                    (far_b, far_b)
+                };
+                prev_far = far_b;
+                let (a, b) = (near_b.max(zn), far_b.min(zf));
+                if a >= b {
+                    // Wholly outside the visible range: nothing to map there.
+                    continue;
+                }
+                out[n] = Slice {
+                    cover: (a, b),
+                    split: (sel_near.max(zn), b),
+                    blend: (blend.0.clamp(zn, zf), blend.1.clamp(zn, zf)),
+                };
+                n += 1;
+            }
+            if n == 0 {
+                return Err(Error::invalid(
+                    "minimum_distance",
+                    "Bevy's cascades do not meet the visible depth range",
+                ));
+            }
+            Ok(n)
+        }
+    }
+}
+
+// Not boxed: a per-frame heap allocation is what the frame API must not do.
+#[allow(clippy::large_enum_variant)]
+enum Built {
+    Map(FrameMap),
+    None(Focus),
+}
+
+struct Ctx<'i, 'a> {
+    input: &'i FrameInput<'a>,
+    view: &'i ViewFrustum,
+    l: DVec3,
+    lw: DVec3,
+    planes: Planes,
+}
+
+/// The focus body of one slice.
+struct Body {
+    v: [DVec3; MAX_BODY_VERTICES],
+    n: usize,
+    /// B is the slice itself (no receivers' plane cut it).
+    whole: bool,
+    focus: Focus,
+}
+
+impl Ctx<'_, '_> {
+    fn scale(&self) -> f64 {
+        let v = self.view;
+        v.far() * (1.0 + v.tan_half_fov() * (1.0 + v.aspect()))
+    }
+
+    /// B for the slice `[a, b]`.
+    fn body(&self, a: f64, b: f64, extra: Option<DVec4>) -> Result<Body> {
+        let sub = self.view.with_depth_range(a, b)?;
+        let corners = sub.corners();
+        let scale = self.scale();
+        let tol = 1e-10 * scale;
+        let mut body = Body {
+            v: [DVec3::ZERO; MAX_BODY_VERTICES],
+            n: 0,
+            whole: true,
+            focus: Focus::Body,
+        };
+        let planes = &self.planes.p[..self.planes.n];
+        let inside = |p: &DVec3| {
+            planes
+                .iter()
+                .all(|pl| pl.truncate().dot(*p) + pl.w <= tol * pl.truncate().length())
+        };
+        if extra.is_none() && corners.iter().all(inside) {
+            body.v[..8].copy_from_slice(&corners);
+            body.n = 8;
+            return Ok(body);
+        }
+        body.whole = false;
+        let mut cb = BodyClip::hexahedron(&corners);
+        for pl in planes.iter().chain(extra.as_ref()) {
+            if !cb.clip(*pl, tol) {
+                return Err(Error::Degenerate(
+                    "the focus body has more faces than the clipper holds".into(),
+                ));
+            }
+        }
+        let n = cb.vertices(tol, &mut body.v).ok_or_else(|| {
+            Error::Degenerate("the focus body has more vertices than the frame holds".into())
+        })?;
+        body.n = n;
+        let (len, width, thick) = extents(&body.v[..n]);
+        let small = 1e-9 * scale;
+        body.focus = if self.planes.flat {
+            if width <= small || len <= small {
+                Focus::Empty
+            } else {
+                Focus::Flat
+            }
+        } else if thick <= small {
+            Focus::Empty
+        } else {
+            Focus::Body
+        };
+        Ok(body)
+    }
+
+    /// The point that can shadow B nearest the light in the warp's depth (largest (y − y₀)/w),
+    /// over every caster; `None` when there is none or casters are not needed.
+    fn caster_extreme<const N: usize>(
+        &self,
+        fl: &FrustumInLight<N>,
+        body_len: usize,
+        w_of: impl Fn(DVec3) -> f64,
+        y0: f64,
+    ) -> Result<Option<DVec3>> {
+        if self.input.depth_clamp {
+            return Ok(None);
+        }
+        let boxes: &[Aabb] = match self.input.casters {
+            Bound::Unbounded => return Ok(None),
+            Bound::Boxes(b) => b,
+            Bound::Polytope(_) => &[],
+        };
+        let tol = 1e-10 * self.scale();
+        let depth_of = |p: DVec3| (fl.ls.y.dot(p) - y0) / w_of(p);
+        // Only a point nearer the light than every point of B extends the range.
+        let top = (0..body_len)
+            .map(|i| depth_of(fl.corners[i]))
+            .fold(f64::NEG_INFINITY, f64::max);
+        let mut best: Option<(f64, DVec3)> = None;
+        let mut consider = |v: &[DVec3]| {
+            for p in v {
+                let d = depth_of(*p);
+                if best.is_none_or(|(b, _)| d > b) {
+                    best = Some((d, *p));
+                }
+            }
+        };
+        let mut prism: Option<Prism> = None;
+        let w2e = self.input.camera.world_to_eye;
+        for bx in boxes {
+            let c = bx.corners().map(|p| w2e.transform_point3(p));
+            // The depth is linear-fractional: its maximum over the box (and over any part of it)
+            // is at most its maximum over the corners. A box no nearer the light than B is skipped.
+            // (Only where w > 0 at every corner, hence over the whole box.)
+            let w_pos = |p: &DVec3| w_of(*p) > 0.0;
+            if c.iter().all(|p| w_pos(p) && depth_of(*p) <= top) {
+                continue;
+            }
+            let prism = prism.get_or_insert_with(|| Prism::new(fl, body_len));
+            if c.iter().all(|p| prism.contains(*p, tol)) {
+                consider(&c);
+                continue;
+            }
+            let mut cb = CasterClip::hexahedron(&c);
+            if !prism.clip(&mut cb, tol) {
+                return Err(Error::Degenerate(
+                    "a caster's clipped body has more faces than the clipper holds".into(),
+                ));
+            }
+            let mut v = [DVec3::ZERO; 64];
+            let n = cb.vertices(tol, &mut v).ok_or_else(|| {
+                Error::Degenerate("a caster's clipped body has too many vertices".into())
+            })?;
+            consider(&v[..n]);
+        }
+        if let Bound::Polytope(world) = self.input.casters {
+            // Start from the prism capped far beyond the body toward the light, then cut by the
+            // casters' planes: a result that reaches the cap is unbounded toward the light.
+            let reach = 1e6 * self.scale();
+            let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
+            for q in &fl.q {
+                lo = lo.min(*q);
+                hi = hi.max(*q);
+            }
+            let ls = fl.ls;
+            let to_eye = |x: f64, y: f64, z: f64| ls.x * x + ls.y * y + ls.z * z;
+            let (ya, yb) = (lo.y - 1.0, hi.y + reach);
+            let c = [
+                to_eye(lo.x, ya, lo.z),
+                to_eye(hi.x, ya, lo.z),
+                to_eye(hi.x, yb, lo.z),
+                to_eye(lo.x, yb, lo.z),
+                to_eye(lo.x, ya, hi.z),
+                to_eye(hi.x, ya, hi.z),
+                to_eye(hi.x, yb, hi.z),
+                to_eye(lo.x, yb, hi.z),
+            ];
+            let mut cb = PolytopeClip::hexahedron(&c);
+            let it = self.input.camera.eye_to_world.transpose();
+            let mut ok = true;
+            for p in world {
+                ok &= cb.clip(it * *p, tol);
+            }
+            ok &= Prism::new(fl, body_len).clip(&mut cb, tol);
+            if !ok {
+                return Err(Error::Degenerate(
+                    "the casters' clipped body has more faces than the clipper holds".into(),
+                ));
+            }
+            let mut v = [DVec3::ZERO; 64];
+            let n = cb.vertices(tol, &mut v).unwrap_or(0);
+            if v[..n].iter().any(|p| ls.y.dot(*p) >= hi.y + 0.5 * reach) {
+                return Err(Error::invalid(
+                    "casters",
+                    "the polytope is unbounded toward the light",
+                ));
+            }
+            consider(&v[..n]);
+        }
+        Ok(best.and_then(|(d, p)| (d > top).then_some(p)))
+    }
+
+    fn map(&self, s: &Slice, rule: WarpRule) -> Result<Built> {
+        let body = self.body(s.cover.0, s.cover.1, None)?;
+        if body.focus == Focus::Empty || body.n == 0 {
+            return Ok(Built::None(Focus::Empty));
+        }
+        let pts = &body.v[..body.n];
+        let (mut n_b, mut f_b) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in pts {
+            n_b = n_b.min(-p.z);
+            f_b = f_b.max(-p.z);
+        }
+        let cam = self.view;
+        let sub_full = cam.with_depth_range(s.cover.0, s.cover.1)?;
+        let l = self.l;
+        let centre_rule = match self.input.centre {
+            WarpCentre::Rule => matches!(rule, WarpRule::Ogre | WarpRule::OgreOrtho { .. }),
+            WarpCentre::Eye => false,
+            WarpCentre::NearestVertex => true,
+        };
+        // TSM's focus distance, checked against the slice, scaled to B's depth.
+        let rule = match rule {
+            WarpRule::Tsm { focus } => {
+                let focus = focus_in_range(&sub_full, focus)?;
+                WarpRule::Tsm {
+                    focus: focus * (f_b - n_b) / (s.cover.1 - s.cover.0),
+                }
+            }
+            r => r,
+        };
+        let ls = light_space_unit(LightDir::from_unit_unchecked(l), rule_axis(l, rule));
+        let fl = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, l, ls)
+            .ok_or_else(|| Error::Degenerate("the focus body has no vertices".into()))?;
+        // Extent across and along the warp axis as the light sees B.
+        let (mut xl, mut xh) = (f64::INFINITY, f64::NEG_INFINITY);
+        for q in &fl.q {
+            xl = xl.min(q.x);
+            xh = xh.max(q.x);
+        }
+        let small = 1e-9 * self.scale();
+        if xh - xl <= small || fl.delta <= small {
+            return Ok(Built::None(Focus::EdgeOn));
+        }
+        let mut focus = body.focus;
+        let zero_depth = f_b - n_b <= 1e-9 * f_b;
+        if zero_depth {
+            focus = Focus::ZeroDepth;
+        }
+        // The frustum-only builder, exactly, when B is the slice and nothing extends its depth.
+        let centre = if centre_rule {
+            Some(nearest_vertex(&fl, body.n))
+        } else {
+            None
+        };
+        let n_prime = if zero_depth {
+            NPrime::UNWARPED
+        } else {
+            let sub = cam.with_depth_range(n_b, f_b)?;
+            rule_n_prime_on(cam, &sub, &fl, rule)?
+        };
+        let rho = n_prime.recip();
+        let w_of = |p: DVec3| 1.0 + rho * (fl.ls.z.dot(p) - fl.z0);
+        let y0 = centre.map_or(0.0, |i| fl.q[i].y);
+        let caster = self.caster_extreme(&fl, body.n, w_of, y0)?;
+        let default_centre = self.input.centre == WarpCentre::Rule;
+        let shadow = if body.whole && caster.is_none() && default_centre {
+            // `warp(&slice, l, rule)` itself, l normalised at the entry as `warp` does: B is the
+            // slice and nothing extends its depth.
+            warp_prepared(&sub_full, &PreparedLight::new(LightDir::new(l)?), rule)?
+        } else {
+            ShadowMatrix::new(
+                fit_body(&fl, n_prime, centre, caster.as_slice())?,
+                LightDir::from_unit_unchecked(l),
+                n_prime,
+                n_b,
+                f_b,
+            )
+        };
+        self.finish(shadow, pts, s, focus).map(Built::Map)
+    }
+
+    /// The trapezoidal map of B, its depth row refitted to B and the casters.
+    fn tsm_map(&self, s: &Slice, opts: TsmOptions) -> Result<Built> {
+        let sub_full = self.view.with_depth_range(s.cover.0, s.cover.1)?;
+        validate_tsm(&sub_full, &opts)?;
+        let body = self.body(s.cover.0, s.cover.1, None)?;
+        if body.focus == Focus::Empty || body.n == 0 {
+            return Ok(Built::None(Focus::Empty));
+        }
+        let pts = &body.v[..body.n];
+        let (mut n_b, mut f_b) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in pts {
+            n_b = n_b.min(-p.z);
+            f_b = f_b.max(-p.z);
+        }
+        let l = self.l;
+        let ls = light_space_unit(LightDir::from_unit_unchecked(l), DVec3::NEG_Z);
+        let fl = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, l, ls)
+            .ok_or_else(|| Error::Degenerate("the focus body has no vertices".into()))?;
+        let (mut xl, mut xh) = (f64::INFINITY, f64::NEG_INFINITY);
+        for q in &fl.q {
+            xl = xl.min(q.x);
+            xh = xh.max(q.x);
+        }
+        let small = 1e-9 * self.scale();
+        if xh - xl <= small || fl.delta <= small {
+            return Ok(Built::None(Focus::EdgeOn));
+        }
+        let focus = opts.focus * (f_b - n_b) / (s.cover.1 - s.cover.0);
+        let focus_depth = n_b + focus;
+        let region = self.body(
+            s.cover.0,
+            s.cover.1,
+            Some(DVec4::new(0.0, 0.0, -1.0, -focus_depth)),
+        )?;
+        let focus_region: &[DVec3] = if region.n > 0 {
+            &region.v[..region.n]
+        } else {
+            pts
+        };
+        let centre_line = (ls.z.z * (f_b - n_b)).abs();
+        let t = tsm_on_points(
+            ls,
+            pts,
+            focus_region,
+            DVec3::new(0.0, 0.0, -focus_depth),
+            centre_line,
+            opts.search,
+            n_b,
+            f_b,
+        )?;
+        let mut m = t.shadow.matrix();
+        // Depth: v = y/w over B and the casters' extreme, −1 nearest the light (the form of the
+        // crate's warps; monotonic along each light ray, whose w is constant).
+        let row3 = m.row(3);
+        let w_of = |p: DVec3| row3.dot(p.extend(1.0));
+        let caster = self.caster_extreme(&fl, body.n, w_of, 0.0)?;
+        let mut r = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in pts.iter().chain(caster.as_slice()) {
+            let v = ls.y.dot(*p) / w_of(*p);
+            r = (r.0.min(v), r.1.max(v));
+        }
+        let v_m = 0.5 * (r.0 + r.1);
+        let v_h = (0.5 * (r.1 - r.0)).max(1e-9 * self.scale());
+        let mut mt = m.transpose();
+        mt.z_axis = (v_m * row3 - ls.y.extend(0.0)) / v_h;
+        m = mt.transpose();
+        let shadow = ShadowMatrix::new(
+            m,
+            LightDir::from_unit_unchecked(l),
+            t.shadow.n_prime(),
+            n_b,
+            f_b,
+        );
+        self.finish(shadow, pts, s, body.focus).map(Built::Map)
+    }
+
+    /// A stable cascade with its depth range from B and the casters.
+    fn stable_map(&self, s: &Slice) -> Result<Built> {
+        let body = self.body(s.cover.0, s.cover.1, None)?;
+        if body.focus == Focus::Empty || body.n == 0 {
+            return Ok(Built::None(Focus::Empty));
+        }
+        let pts = &body.v[..body.n];
+        let cam = &self.input.camera;
+        let res = f64::from(self.input.map_resolution);
+        let (c, r) = bounding_sphere(self.view, s.cover.0, s.cover.1)?;
+        // World-fixed light space (y toward the light, z the world −Z projected).
+        let ls_w = light_space_unit(LightDir::from_unit_unchecked(self.lw), DVec3::NEG_Z);
+        let half = r * res / (res - 2.0);
+        let texel = 2.0 * half / res;
+        let cw = cam.eye_to_world.transform_point3(DVec3::new(0.0, 0.0, -c));
+        let q = ls_w.to_light(cw);
+        let sx = (q.x / texel).round() * texel;
+        let sz = (q.z / texel).round() * texel;
+        // The light space in eye coordinates (rotation only; offsets cancel in the fit).
+        let rot = |v: DVec3| cam.world_to_eye.transform_vector3(v);
+        let ls_e = LightSpace {
+            x: rot(ls_w.x),
+            y: rot(ls_w.y),
+            z: rot(ls_w.z),
+        };
+        let fl = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, self.l, ls_e)
+            .ok_or_else(|| Error::Degenerate("the focus body has no vertices".into()))?;
+        let (mut ylo, mut yhi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for q in &fl.q {
+            ylo = ylo.min(q.y);
+            yhi = yhi.max(q.y);
+        }
+        if let Some(p) = self.caster_extreme(&fl, body.n, |_| 1.0, 0.0)? {
+            yhi = yhi.max(ls_e.y.dot(p));
+        }
+        let v_m = 0.5 * (ylo + yhi);
+        let v_h = (0.5 * (yhi - ylo)).max(1e-9 * self.scale());
+        // s, t as `stable_cascade`: world light space, the snapped centre, half-width `half`.
+        let ortho = DMat4::from_cols(
+            DVec4::new(1.0 / half, 0.0, 0.0, 0.0),
+            DVec4::new(0.0, 0.0, 0.0, 0.0),
+            DVec4::new(0.0, 1.0 / half, 0.0, 0.0),
+            DVec4::new(-sx / half, -sz / half, 0.0, 1.0),
+        );
+        let mut m = (ortho * ls_w.rotation() * cam.eye_to_world).transpose();
+        // Depth from the eye-space light y over B and the casters, −1 nearest the light.
+        m.z_axis = (-ls_e.y / v_h).extend(v_m / v_h);
+        let matrix = m.transpose();
+        let shadow = ShadowMatrix::new(
+            matrix,
+            LightDir::from_unit_unchecked(self.l),
+            NPrime::UNWARPED,
+            -pts.iter().map(|p| p.z).fold(f64::NEG_INFINITY, f64::max),
+            -pts.iter().map(|p| p.z).fold(f64::INFINITY, f64::min),
+        );
+        self.finish(shadow, pts, s, body.focus).map(Built::Map)
+    }
+
+    fn finish(
+        &self,
+        shadow: ShadowMatrix,
+        pts: &[DVec3],
+        s: &Slice,
+        focus: Focus,
+    ) -> Result<FrameMap> {
+        let tan = self.view.tan_half_fov();
+        let err = vertex_max(&shadow.matrix(), self.l, tan, pts).ok_or_else(|| {
+            Error::Degenerate("the map is singular at a vertex of the focus body".into())
+        })?;
+        // The largest texel edge over B: m · (image beam width 2 z tan θ) / resolution.
+        let res = f64::from(self.input.map_resolution);
+        let mut texel = 0.0f64;
+        for p in pts {
+            if let Some(e) = vertex_max(&shadow.matrix(), self.l, tan, std::slice::from_ref(p)) {
+                let wi = 2.0 * -p.z * tan;
+                texel = texel.max(e.max_mx.max(e.max_mz) * wi / res);
+            }
+        }
+        let mut body = [DVec3::ZERO; MAX_BODY_VERTICES];
+        body[..pts.len()].copy_from_slice(pts);
+        let image = f64::from(self.input.image_height);
+        Ok(FrameMap {
+            world_to_clip: shadow.matrix() * self.input.camera.world_to_eye,
+            shadow,
+            split: s.split,
+            blend: s.blend,
+            texel_world: texel,
+            max_mx: err.max_mx,
+            max_mz: err.max_mz,
+            storage_factor: err.storage_factor(),
+            max_error_pixels: err.max_mx.max(err.max_mz) * image / res,
+            focus,
+            world_to_eye: self.input.camera.world_to_eye,
+            body,
+            body_len: pts.len(),
+        })
+    }
+}
+
+/// B's vertex nearest the camera (smallest eye depth; ties within 10⁻¹² relative go to the
+/// largest x + y, OGRE's top-right near corner of the frustum).
+fn nearest_vertex<const N: usize>(fl: &FrustumInLight<N>, n: usize) -> usize {
+    let dmin = fl.depth[..n].iter().copied().fold(f64::INFINITY, f64::min);
+    let tol = 1e-12 * dmin.abs().max(f64::MIN_POSITIVE);
+    let mut best = 0;
+    let mut key = f64::NEG_INFINITY;
+    for i in 0..n {
+        if fl.depth[i] <= dmin + tol {
+            let k = fl.corners[i].x + fl.corners[i].y;
+            if k > key {
+                key = k;
+                best = i;
+            }
+        }
+    }
+    best
+}
+
+/// The prism of B's light-space footprint: the side planes through the edges of the convex hull
+/// of B's vertices' (x, z), parallel to the light.
+struct Prism {
+    planes: [DVec4; 2 * MAX_BODY_VERTICES],
+    n: usize,
+}
+
+impl Prism {
+    fn new<const N: usize>(fl: &FrustumInLight<N>, n: usize) -> Self {
+        let mut pts = [DVec2::ZERO; MAX_BODY_VERTICES];
+        for (p, q) in pts.iter_mut().zip(&fl.q).take(n) {
+            *p = DVec2::new(q.x, q.z);
+        }
+        let mut hull = [DVec2::ZERO; 2 * MAX_BODY_VERTICES];
+        let h = crate::geom::hull::convex_hull(&mut pts[..n], &mut hull);
+        let mut planes = [DVec4::ZERO; 2 * MAX_BODY_VERTICES];
+        let ls = fl.ls;
+        for i in 0..h {
+            let (a, b) = (hull[i], hull[(i + 1) % h]);
+            let e = b - a;
+            // Counter-clockwise hull: the outside is to the right, normal (e.y, −e.x).
+            let n2 = DVec2::new(e.y, -e.x);
+            let n3 = ls.x * n2.x + ls.z * n2.y;
+            planes[i] = n3.extend(-n2.dot(a));
+        }
+        Self { planes, n: h }
+    }
+
+    fn clip<const F: usize, const V: usize>(&self, cb: &mut ConvexBody<F, V>, tol: f64) -> bool {
+        self.planes[..self.n].iter().all(|p| cb.clip(*p, tol))
+    }
+
+    /// Whether `p` lies inside the prism (within `tol` of its planes, which have unit normals
+    /// up to the hull edge's length).
+    fn contains(&self, p: DVec3, tol: f64) -> bool {
+        self.planes[..self.n]
+            .iter()
+            .all(|pl| pl.truncate().dot(p) + pl.w <= tol * pl.truncate().length())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::polytope::{frustum_planes, polytope_vertices};
+
+    #[test]
+    fn frustum_planes_agree_with_the_body() {
+        // The frustum's own planes keep every corner of the frustum body.
+        let v = ViewFrustum::new(1.0, 10.0, 0.5).unwrap();
+        for p in frustum_planes(&v, v.far()) {
+            for c in v.corners() {
+                assert!(p.truncate().dot(c) + p.w <= 1e-12 * 10.0);
+            }
+        }
+    }
+
+    /// The clipper's vertices against the triple-plane enumeration of `polytope_vertices` (an
+    /// independent algorithm), for random boxes across, inside and around random frusta.
+    #[test]
+    fn clipped_body_matches_plane_triples() {
+        let mut seed = 99u64;
+        let mut rnd = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut nonempty = 0;
+        for _ in 0..500 {
+            let near = 0.1 + rnd();
+            let view = ViewFrustum::with_aspect(
+                near,
+                near * (2.0 + 50.0 * rnd()),
+                0.2 + rnd(),
+                0.5 + rnd(),
+            )
+            .unwrap();
+            let f = view.far();
+            let lo = DVec3::new((rnd() - 0.7) * f, (rnd() - 0.7) * f, -rnd() * 1.2 * f);
+            let hi = lo + DVec3::new(rnd(), rnd(), rnd()) * f;
+            let cam = Camera::new(
+                DMat4::IDENTITY,
+                view.near(),
+                view.far(),
+                view.half_fov(),
+                view.aspect(),
+            )
+            .unwrap();
+            let boxes = [Aabb::new(lo, hi).unwrap()];
+            let input = FrameInput::new(cam, DVec3::new(0.3, -1.0, 0.2), 1024, 1024)
+                .receivers(Bound::Boxes(&boxes))
+                .scheme(FrameScheme::Single(WarpRule::Uniform));
+            let planes = receiver_planes(&cam, &input.receivers).unwrap();
+            let ctx = Ctx {
+                input: &input,
+                view: &view,
+                l: DVec3::NEG_Y,
+                lw: DVec3::NEG_Y,
+                planes,
+            };
+            let body = ctx.body(view.near(), view.far(), None).unwrap();
+            let mut all = [DVec4::ZERO; 12];
+            all[..6].copy_from_slice(&frustum_planes(&view, f));
+            all[6..].copy_from_slice(&planes.p[..6]);
+            let scale = ctx.scale();
+            let mut want = [DVec3::ZERO; 64];
+            let n = polytope_vertices(&all, scale, &mut want);
+            if body.focus == Focus::Empty {
+                // No solid: the enumeration finds no body with volume either.
+                let (_, _, thick) = extents(&want[..n]);
+                assert!(thick <= 1e-6 * scale, "{lo} {hi}");
+                continue;
+            }
+            nonempty += 1;
+            let got = &body.v[..body.n];
+            for w in &want[..n] {
+                assert!(
+                    got.iter().any(|g| (*g - *w).length() <= 1e-7 * scale),
+                    "missing {w}"
+                );
+            }
+            for g in got {
+                assert!(
+                    want[..n].iter().any(|w| (*g - *w).length() <= 1e-7 * scale),
+                    "extra {g}"
+                );
+            }
+        }
+        assert!(nonempty > 100, "{nonempty}");
+    }
+}

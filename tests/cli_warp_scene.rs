@@ -1,0 +1,194 @@
+//! `shadow-aliasing warp` with a scene (issue 9): `--receivers`, `--casters`, `--depth-range`,
+//! `--splits`, `--fractions`, `--bevy`. Expected values are hand computations (the uniform map
+//! over a box by hand, Bevy's bounds) or the frustum-only command's own output.
+#![cfg(feature = "cli")]
+
+use serde_json::Value;
+
+mod common;
+use common::cli::run;
+
+fn warp(extra: &[&str]) -> (i32, Value) {
+    let mut args = vec![
+        "warp",
+        "--near",
+        "1",
+        "--far",
+        "100",
+        "--half-fov",
+        "0.7853981633974483", // π/4: tan θ = 1
+        "--json",
+    ];
+    args.extend_from_slice(extra);
+    let (code, out, err) = run(&args);
+    assert_eq!(code, 0, "{err}");
+    (code, serde_json::from_str(&out).expect("JSON"))
+}
+
+#[test]
+fn receivers_focus_the_map_and_report_over_b() {
+    // The lower half of the view between depths 2 and 5, light straight down, uniform: s spans
+    // x ∈ [−5, 5], t depth [2, 5]; M_x = 10/(2·2) = 2.5, M_z = 3/(2·2) = 0.75, S̄ = 1.875.
+    // The value after a space begins with '-'.
+    let (_, v) = warp(&[
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "uniform",
+        "--receivers",
+        "-100,-100,-5,100,0,-2",
+    ]);
+    assert_eq!(v["focus"], "body");
+    let close = |a: &Value, b: f64| (a.as_f64().unwrap() - b).abs() < 1e-9 * b.max(1.0);
+    assert!(close(&v["storage_factor"], 1.875), "{v}");
+    assert!(close(&v["max_mx"], 2.5));
+    assert!(close(&v["max_mz"], 0.75));
+    assert_eq!(v["n_prime"], "inf");
+    let p = &v["partitions"][0];
+    assert!(close(&p["storage_factor"], 1.875));
+    assert!(close(&p["near"], 2.0) && close(&p["far"], 5.0));
+    assert_eq!(p["body_vertices"], 8);
+}
+
+#[test]
+fn out_of_view_is_exit_0_with_focus_empty_and_no_storage_factor() {
+    let (_, v) = warp(&[
+        "--light-dir",
+        "0.3,-1,0.2",
+        "--warp",
+        "lispsm",
+        "--receivers",
+        "-10,-10,1,10,10,5",
+    ]);
+    assert_eq!(v["focus"], "empty");
+    assert!(v.get("storage_factor").is_none());
+    assert_eq!(v["partitions"].as_array().unwrap().len(), 0);
+}
+
+#[test]
+fn a_receiver_box_containing_the_frustum_gives_the_frustum_only_matrix() {
+    let base = ["--light-dir", "0.3,-1,0.2", "--warp", "lispsm"];
+    let (_, plain) = warp(&base);
+    let mut args = base.to_vec();
+    args.extend_from_slice(&["--receivers", "-1000,-1000,-1000,1000,1000,1000"]);
+    let (_, scene) = warp(&args);
+    assert_eq!(
+        plain["partitions"][0]["matrix"],
+        scene["partitions"][0]["matrix"]
+    );
+    assert_eq!(plain["storage_factor"], scene["storage_factor"]);
+}
+
+#[test]
+fn casters_and_depth_range_and_new_splits() {
+    // Casters change only the depth row (rows 0, 1, 3 of the column-major matrix unchanged).
+    let base = [
+        "--light-dir",
+        "0.05,-1,0.05",
+        "--warp",
+        "lispsm",
+        "--receivers",
+        "-20,-1,-9,20,0,-1",
+    ];
+    let (_, a) = warp(&base);
+    let mut args = base.to_vec();
+    args.extend_from_slice(&[
+        "--casters",
+        "-1,0,-6,1,30,-4",
+        "--casters",
+        "-20,-1,-9,20,0,-1",
+    ]);
+    let (_, b) = warp(&args);
+    assert_eq!(a["storage_factor"], b["storage_factor"]);
+    let (ma, mb) = (&a["partitions"][0]["matrix"], &b["partitions"][0]["matrix"]);
+    for col in 0..4 {
+        for row in [0, 1, 3] {
+            let i = 4 * col + row;
+            let d = (ma[i].as_f64().unwrap() - mb[i].as_f64().unwrap()).abs();
+            assert!(d < 1e-12, "entry {i}");
+        }
+    }
+    assert_ne!(ma, mb);
+    // The visible depth range cuts the map to [2, 40].
+    let (_, d) = warp(&[
+        "--light-dir",
+        "0.3,-1,0.2",
+        "--warp",
+        "lispsm",
+        "--depth-range",
+        "2,40",
+    ]);
+    assert_eq!(d["partitions"][0]["split"][0], 2.0);
+    assert_eq!(d["partitions"][0]["split"][1], 40.0);
+    // Absolute splits, fractions and Bevy's cascades.
+    let (_, s) = warp(&[
+        "--light-dir",
+        "0.3,-1,0.2",
+        "--warp",
+        "lispsm",
+        "--splits",
+        "1,4,20,100",
+    ]);
+    assert_eq!(s["partitions"].as_array().unwrap().len(), 3);
+    assert_eq!(s["partitions"][1]["split"][0], 4.0);
+    let (_, f) = warp(&[
+        "--light-dir",
+        "0.3,-1,0.2",
+        "--warp",
+        "lispsm",
+        "--fractions",
+        "0.25,0.5",
+    ]);
+    assert_eq!(f["partitions"][1]["split"][0], 1.0 + 0.25 * 99.0);
+    let (_, bv) = warp(&[
+        "--light-dir",
+        "0.3,-1,0.2",
+        "--warp",
+        "uniform",
+        "--bevy",
+        "4,0.1,10,150,0.2",
+    ]);
+    let parts = bv["partitions"].as_array().unwrap();
+    assert_eq!(parts.len(), 4);
+    // Bevy's far bounds 10 · 15^{i/3} (the last one cut at the camera's far plane, 100).
+    let far1 = 10.0 * 15f64.cbrt();
+    assert!((parts[1]["split"][1].as_f64().unwrap() - far1).abs() < 1e-9 * far1);
+    assert!((parts[1]["blend"][0].as_f64().unwrap() - 0.8 * far1).abs() < 1e-9 * far1);
+    assert_eq!(parts[3]["split"][1], 100.0);
+}
+
+#[test]
+fn bad_scene_arguments_are_errors() {
+    for extra in [
+        &["--receivers", "1,2,3"][..],
+        &["--receivers", "1,0,0,0,1,1"],
+        &["--depth-range", "5,4"],
+        &[
+            "--partition",
+            "faces",
+            "--k",
+            "2",
+            "--receivers",
+            "-1,-1,-5,1,1,-2",
+        ],
+        &["--splits", "1,50,40,100"],
+    ] {
+        let mut args = vec![
+            "warp",
+            "--near",
+            "1",
+            "--far",
+            "100",
+            "--half-fov",
+            "0.5",
+            "--light-dir",
+            "0.3,-1,0.2",
+            "--warp",
+            "lispsm",
+        ];
+        args.extend_from_slice(extra);
+        let (code, _, err) = run(&args);
+        assert_ne!(code, 0, "{extra:?}");
+        assert!(err.starts_with("error:"), "{err}");
+    }
+}
