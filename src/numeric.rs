@@ -1,5 +1,9 @@
 //! The numeric ground rules shared by every layer: NaN-free `fmin`/`fmax` for the inner loops and
-//! the tolerances, each a named constant with the reason for its value.
+//! the tolerances, each a named constant with the reason for its value; [`lane`], the lane type
+//! the scalar code and the four-direction sweep share.
+
+#[allow(dead_code)] // F4 and the rest are used by the sweep's lanes (next step)
+pub(crate) mod lane;
 
 /// `min(a, b)` for values that are never NaN (finite corner coordinates): one `minsd`, where
 /// `f64::min`'s NaN handling costs three more instructions on x86-64, in loops that run 8 to 40

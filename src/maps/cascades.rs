@@ -49,7 +49,8 @@ use crate::error::{finite_result, fmt_num, in_closed, Error, Result};
 use crate::frustum::{unit_light_dir, NPrime, ViewFrustum};
 use crate::maps::warp::{warp_prepared, PreparedLight};
 use crate::maps::{light_space, warp, ShadowMatrix, WarpRule};
-use crate::measure::vertex::{vertex_max, VertexMax};
+use crate::measure::vertex::vertex_max;
+use crate::measure::FrustumError;
 use glam::{DMat4, DVec3, DVec4};
 
 /// One z-partition: its fitted map, the depth range it covers, and its measured maximum error.
@@ -63,14 +64,14 @@ pub struct Cascade {
     /// Where the next partition starts, z_{i+1} (without the overlap).
     pub split_far: f64,
     /// M_x, M_z over the fitted sub-frustum's eight corners (unit resolutions).
-    pub error: VertexMax,
+    pub error: FrustumError,
 }
 
 impl Cascade {
     /// S̄ = M_x M_z of this partition.
     #[must_use]
     pub fn storage_factor(&self) -> f64 {
-        self.error.storage_factor()
+        self.error.storage_factor
     }
 }
 
@@ -371,8 +372,8 @@ pub fn stable_cascade(
         center: center_eye,
         radius: r,
         texel,
-        storage_factor: stable.storage_factor(),
-        tight_storage_factor: tight.storage_factor(),
+        storage_factor: stable.storage_factor,
+        tight_storage_factor: tight.storage_factor,
     })
 }
 

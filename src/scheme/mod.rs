@@ -335,7 +335,7 @@ fn fill(
                 far: view.far(),
                 max_mx: e.max_mx,
                 max_mz: e.max_mz,
-                storage_factor: e.storage_factor(),
+                storage_factor: e.storage_factor,
                 region: Region::Frustum,
             });
             return Ok(());
@@ -361,7 +361,7 @@ fn fill(
                 far: p.shadow.far,
                 max_mx: p.error.max_mx,
                 max_mz: p.error.max_mz,
-                storage_factor: p.error.storage_factor(),
+                storage_factor: p.error.storage_factor,
                 region: Region::Face(p.face),
             });
         })
@@ -375,7 +375,7 @@ fn fill(
                 far: c.shadow.far,
                 max_mx: c.error.max_mx,
                 max_mz: c.error.max_mz,
-                storage_factor: c.error.storage_factor(),
+                storage_factor: c.error.storage_factor,
                 region: Region::Frustum,
             });
         })
