@@ -2,7 +2,6 @@
 //! the tolerances, each a named constant with the reason for its value; [`lane`], the lane type
 //! the scalar code and the four-direction sweep share.
 
-#[allow(dead_code)] // F4 and the rest are used by the sweep's lanes (next step)
 pub(crate) mod lane;
 
 /// `min(a, b)` for values that are never NaN (finite corner coordinates): one `minsd`, where

@@ -125,9 +125,10 @@ impl<T: Lane> Kernel<T> {
         let w2 = hw * hw;
         let w4 = w2 * w2;
         let inv = T::splat(1.0) / (d2 * gtp2 * z * z);
+        let zero = T::splat(0.0);
         let ok = T::and(
-            T::and(hw.gt_zero(), z.gt_zero()),
-            T::and(inv.finite(), gtp2.gt_zero()),
+            T::and(hw.gt(zero), z.gt(zero)),
+            T::and(inv.finite(), gtp2.gt(zero)),
         );
         Widths {
             mx2: w4 * gtp2 * gtp2 * inv,

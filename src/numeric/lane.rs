@@ -28,12 +28,21 @@ pub(crate) trait Lane:
     fn min(self, o: Self) -> Self;
     /// The crate's `fmax`, `if a > b { a } else { b }` (one `maxpd`).
     fn max(self, o: Self) -> Self;
-    /// `x > 0` per lane (false for NaN).
-    fn gt_zero(self) -> Self::Mask;
-    /// `x ≥ 0` per lane (false for NaN).
-    fn ge_zero(self) -> Self::Mask;
+    /// `a > b` per lane (false for NaN).
+    fn gt(self, o: Self) -> Self::Mask;
+    /// `a ≥ b` per lane (false for NaN).
+    fn ge(self, o: Self) -> Self::Mask;
+    /// `a < b` per lane (false for NaN).
+    fn lt(self, o: Self) -> Self::Mask;
+    /// `a ≤ b` per lane (false for NaN).
+    fn le(self, o: Self) -> Self::Mask;
+    /// Whether every lane is exactly 0 (so a caller may take the scalar code's shortcut for 0,
+    /// whose values are the general path's).
+    fn all_zero(self) -> bool;
     /// `x` finite per lane.
     fn finite(self) -> Self::Mask;
+    /// The flag that is set in every lane.
+    fn all_set() -> Self::Mask;
     /// Both flags per lane.
     fn and(a: Self::Mask, b: Self::Mask) -> Self::Mask;
     /// `if m { a } else { b }` per lane.
@@ -63,16 +72,32 @@ impl Lane for f64 {
         crate::numeric::fmax(self, o)
     }
     #[inline(always)]
-    fn gt_zero(self) -> bool {
-        self > 0.0
+    fn gt(self, o: Self) -> bool {
+        self > o
     }
     #[inline(always)]
-    fn ge_zero(self) -> bool {
-        self >= 0.0
+    fn ge(self, o: Self) -> bool {
+        self >= o
+    }
+    #[inline(always)]
+    fn lt(self, o: Self) -> bool {
+        self < o
+    }
+    #[inline(always)]
+    fn le(self, o: Self) -> bool {
+        self <= o
+    }
+    #[inline(always)]
+    fn all_zero(self) -> bool {
+        self == 0.0
     }
     #[inline(always)]
     fn finite(self) -> bool {
         self.is_finite()
+    }
+    #[inline(always)]
+    fn all_set() -> bool {
+        true
     }
     #[inline(always)]
     fn and(a: bool, b: bool) -> bool {
@@ -108,6 +133,10 @@ impl F4 {
     fn test(self, f: impl Fn(f64) -> bool) -> [bool; LANES] {
         self.0.map(f)
     }
+    #[inline(always)]
+    fn cmp(self, o: Self, f: impl Fn(f64, f64) -> bool) -> [bool; LANES] {
+        std::array::from_fn(|i| f(self.0[i], o.0[i]))
+    }
 }
 
 impl Lane for F4 {
@@ -133,16 +162,32 @@ impl Lane for F4 {
         self.zip(o, <f64 as Lane>::max)
     }
     #[inline(always)]
-    fn gt_zero(self) -> Self::Mask {
-        self.test(<f64 as Lane>::gt_zero)
+    fn gt(self, o: Self) -> Self::Mask {
+        self.cmp(o, |a, b| a > b)
     }
     #[inline(always)]
-    fn ge_zero(self) -> Self::Mask {
-        self.test(<f64 as Lane>::ge_zero)
+    fn ge(self, o: Self) -> Self::Mask {
+        self.cmp(o, |a, b| a >= b)
+    }
+    #[inline(always)]
+    fn lt(self, o: Self) -> Self::Mask {
+        self.cmp(o, |a, b| a < b)
+    }
+    #[inline(always)]
+    fn le(self, o: Self) -> Self::Mask {
+        self.cmp(o, |a, b| a <= b)
+    }
+    #[inline(always)]
+    fn all_zero(self) -> bool {
+        self.0.iter().all(|&v| v == 0.0)
     }
     #[inline(always)]
     fn finite(self) -> Self::Mask {
         self.test(f64::is_finite)
+    }
+    #[inline(always)]
+    fn all_set() -> Self::Mask {
+        [true; LANES]
     }
     #[inline(always)]
     fn and(a: Self::Mask, b: Self::Mask) -> Self::Mask {
@@ -310,8 +355,10 @@ mod tests {
                 for i in 0..LANES {
                     assert_eq!(x.sqrt().0[i].to_bits(), x.0[i].sqrt().to_bits());
                     assert_eq!((-x).0[i].to_bits(), (-x.0[i]).to_bits());
-                    assert_eq!(x.gt_zero()[i], x.0[i] > 0.0);
-                    assert_eq!(x.ge_zero()[i], x.0[i] >= 0.0);
+                    assert_eq!(x.gt(y)[i], x.0[i] > y.0[i]);
+                    assert_eq!(x.ge(y)[i], x.0[i] >= y.0[i]);
+                    assert_eq!(x.lt(y)[i], x.0[i] < y.0[i]);
+                    assert_eq!(x.le(y)[i], x.0[i] <= y.0[i]);
                     assert_eq!(x.finite()[i], x.0[i].is_finite());
                 }
             }
