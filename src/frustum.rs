@@ -134,20 +134,29 @@ impl ViewFrustum {
         Ok(Self { near, far, ..*self })
     }
 
-    /// The eight corners in eye space: near plane first (−x−y, +x−y, +x+y, −x+y), then far.
+    /// The eight corners in eye space: near plane first (−x−y, +x−y, +x+y, −x+y), then far
+    /// ([`ViewFrustum::corners_at`] at both depths).
     #[must_use]
     pub fn corners(&self) -> [DVec3; 8] {
-        let t = self.tan_half_fov();
-        let mut out = [DVec3::ZERO; 8];
-        for (k, d) in [self.near, self.far].into_iter().enumerate() {
-            let h = d * t;
-            let w = h * self.aspect;
-            out[4 * k] = DVec3::new(-w, -h, -d);
-            out[4 * k + 1] = DVec3::new(w, -h, -d);
-            out[4 * k + 2] = DVec3::new(w, h, -d);
-            out[4 * k + 3] = DVec3::new(-w, h, -d);
-        }
-        out
+        let [a, b, c, d] = self.corners_at(self.near);
+        let [e, f, g, h] = self.corners_at(self.far);
+        [a, b, c, d, e, f, g, h]
+    }
+
+    /// The four corners `(±w, ±h, −d)` of the cross-section at eye depth `d`, with h = d tan θ
+    /// and w = h · aspect (in this order, so that a frustum whose tan θ · aspect overflows still
+    /// has finite corners), in the order of [`ViewFrustum::corners`]. Every builder and
+    /// measurement of the crate forms the frustum's corners here.
+    #[must_use]
+    pub fn corners_at(&self, d: f64) -> [DVec3; 4] {
+        let h = d * self.tan_half_fov();
+        let w = h * self.aspect;
+        [
+            DVec3::new(-w, -h, -d),
+            DVec3::new(w, -h, -d),
+            DVec3::new(w, h, -d),
+            DVec3::new(-w, h, -d),
+        ]
     }
 
     /// Whether an eye-space point lies inside the frustum, with a relative tolerance `tol`.

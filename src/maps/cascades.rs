@@ -201,14 +201,6 @@ pub(crate) fn visit_cascades(
     // `warp(&sub, light_dir, rule)` for every partition, with the light space computed once.
     let light = PreparedLight::new(light_dir)?;
     let tan = view.tan_half_fov();
-    let ta = tan * view.aspect();
-    // Corner directions at unit depth, near-plane order of `ViewFrustum::corners`.
-    let dirs = [
-        DVec3::new(-ta, -tan, -1.0),
-        DVec3::new(ta, -tan, -1.0),
-        DVec3::new(ta, tan, -1.0),
-        DVec3::new(-ta, tan, -1.0),
-    ];
     for i in 0..k {
         let (a, b) = splits.range(i);
         let end = if i + 1 < k {
@@ -218,11 +210,7 @@ pub(crate) fn visit_cascades(
         };
         let sub = view.with_depth_range(a, end)?;
         let shadow = warp_prepared(&sub, &light, rule)?;
-        let mut corners = [DVec3::ZERO; 8];
-        for (j, d) in dirs.iter().enumerate() {
-            corners[j] = *d * a;
-            corners[j + 4] = *d * end;
-        }
+        let corners = sub.corners();
         let error =
             vertex_max(&shadow.matrix, shadow.light_dir, tan, &corners).ok_or_else(|| {
                 Error::Degenerate(format!(

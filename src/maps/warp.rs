@@ -188,15 +188,13 @@ impl FrustumInLight {
         // `e·c = (e.x c.x + e.y c.y) + e.z c.z` for e = x, y, z share the products e.x w, e.y h,
         // e.z (−d) up to sign (negation is exact), so computing the products once per depth gives
         // the dot products of `LightSpace::to_light` bit for bit, in a third of the multiplications.
-        let t = view.tan_half_fov();
         let (x, y, z) = (V3::from(ls.x), V3::from(ls.y), V3::from(ls.z));
         let mut q = [DVec3::ZERO; 8];
         let mut depth = [0.0; 8];
         let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
-        for (k, d) in [view.near(), view.far()].into_iter().enumerate() {
-            let h = d * t;
-            let w = h * view.aspect();
-            for (j, qj) in light_corners(x, y, z, (w, h, d)).into_iter().enumerate() {
+        for (k, slice) in slices(&corners).into_iter().enumerate() {
+            let d = slice.2;
+            for (j, qj) in light_corners(x, y, z, slice).into_iter().enumerate() {
                 q[4 * k + j] = qj.into();
                 depth[4 * k + j] = d;
                 z0 = fmin(z0, qj.z);
@@ -214,6 +212,13 @@ impl FrustumInLight {
             sin_gamma: sin_gamma(V3::from(l)),
         }
     }
+}
+
+/// `(w, h, d)` of a view frustum's four corners `(±w, ±h, −d)` at the depths near and far, from
+/// its corners in [`ViewFrustum::corners`] order (corner 2 of each depth is `(+w, +h, −d)`).
+#[inline(always)]
+pub(crate) fn slices(corners: &[DVec3; 8]) -> [(f64, f64, f64); 2] {
+    [corners[2], corners[6]].map(|c| (c.x, c.y, -c.z))
 }
 
 /// sin γ = |l × (0, 0, −1)| = √(l.x² + l.y²) for the unit light direction l (accurate near 0),
@@ -603,8 +608,7 @@ fn clip_ok_at_corners(m: &DMat4, corners: &[DVec3; 8]) -> bool {
         let r = m.row(i);
         (V3::from(r.truncate()), r.w)
     });
-    let slice = |c: DVec3| (c.x, c.y, -c.z); // corner 2 of a depth: (+w, +h, −d)
-    clip_at_slices(&rows, &[slice(corners[2]), slice(corners[6])]).1
+    clip_at_slices(&rows, &slices(corners)).1
 }
 
 /// `M (c, 1)` for the four corners `c = (±w, ±h, −d)` of one depth (`ViewFrustum::corners`

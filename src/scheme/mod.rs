@@ -273,15 +273,7 @@ pub(crate) struct Prepared {
 impl Prepared {
     pub(crate) fn new(view: &ViewFrustum) -> Self {
         let tan = view.tan_half_fov();
-        let ta = tan * view.aspect();
-        let mut corners = [DVec3::ZERO; 8];
-        for (j, d) in [(-ta, -tan), (ta, -tan), (ta, tan), (-ta, tan)]
-            .iter()
-            .enumerate()
-        {
-            corners[j] = DVec3::new(d.0 * view.near(), d.1 * view.near(), -view.near());
-            corners[j + 4] = DVec3::new(d.0 * view.far(), d.1 * view.far(), -view.far());
-        }
+        let corners = view.corners();
         Self {
             view: *view,
             tan,

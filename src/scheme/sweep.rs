@@ -232,7 +232,7 @@ pub fn sweep_into(
     // bit the scalar values (`lanes`).
     let lanes = if partition == Partition::Single {
         let fixed = crate::maps::n_prime_for(view, DVec3::NEG_Y, rule).ok();
-        LaneSweep::new(view, rule, fixed, &prep.corners, prep.tan)
+        LaneSweep::new(view, rule, fixed)
     } else {
         None
     };

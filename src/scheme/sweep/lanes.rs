@@ -15,13 +15,12 @@
 //! light parallel to the view axis, a warp with no extent, a point outside the clip volume, a
 //! singular map at a vertex, a non-finite value), the lane is marked, and the caller evaluates that
 //! direction with the scalar code, which takes the path or reports the error. The clip check and
-//! the measurement share `M (c, 1)` at the eight corners when the two corner sets are the same
-//! points.
+//! the measurement share `M (c, 1)` at the eight corners (both use [`ViewFrustum::corners`]).
 
 use crate::frustum::{NPrime, ViewFrustum};
 use crate::maps::lightspace::{frame_from_projected, project_axis};
 use crate::maps::warp::{
-    clip_at_slices, light_corners, lispsm_sin_n_prime, reference_n_prime, row_at_slice, sin_gamma,
+    clip_at_slices, light_corners, lispsm_sin_n_prime, reference_n_prime, sin_gamma, slices,
     warp_rows, Ranges,
 };
 use crate::maps::WarpRule;
@@ -50,12 +49,9 @@ enum LaneRule {
 #[derive(Clone, Copy)]
 pub(crate) struct LaneSweep {
     rule: LaneRule,
-    /// `(w, h, d)` of the corners at d = near, far as `ViewFrustum::corners` forms them (the clip
-    /// check's points).
-    clip: [(f64, f64, f64); 2],
-    /// The same for the measurement's corners (`Prepared`'s), and whether they are the same.
-    meas: [(f64, f64, f64); 2],
-    same: bool,
+    /// `(w, h, d)` of the view's corners `(±w, ±h, −d)` at d = near, far
+    /// ([`ViewFrustum::corners`]): the points of the fit, the clip check and the measurement.
+    corners: [(f64, f64, f64); 2],
     /// tan θ of the measurement.
     tan: f64,
     /// A bound on every light-space coordinate of the corners, whatever the direction: their
@@ -66,14 +62,8 @@ pub(crate) struct LaneSweep {
 impl LaneSweep {
     /// `None` for rules whose n′ is not one of the lane forms (they run the scalar code).
     /// `fixed` is the rule's n′ when it does not depend on the direction (computed by the scalar
-    /// rule, so validated and bit for bit the same); `meas_corners` are the measurement's.
-    pub(crate) fn new(
-        view: &ViewFrustum,
-        rule: WarpRule,
-        fixed: Option<NPrime>,
-        meas_corners: &[DVec3; 8],
-        tan: f64,
-    ) -> Option<Self> {
+    /// rule, so validated and bit for bit the same).
+    pub(crate) fn new(view: &ViewFrustum, rule: WarpRule, fixed: Option<NPrime>) -> Option<Self> {
         let rule = match rule {
             WarpRule::Uniform | WarpRule::Psm | WarpRule::LispsmFixed | WarpRule::Eta(_) => {
                 match fixed? {
@@ -86,35 +76,12 @@ impl LaneSweep {
             WarpRule::LispsmReference => LaneRule::Reference(view.near()),
             _ => return None,
         };
-        let t = view.tan_half_fov();
-        let clip = [view.near(), view.far()].map(|d| {
-            let h = d * t;
-            (h * view.aspect(), h, d)
-        });
-        // `Prepared`'s corners, (±ta d, ±tan d, −d) with ta = tan · aspect: they must have the
-        // layout of `ViewFrustum::corners` (four sign patterns at two depths) for the shared
-        // products.
-        let meas = [meas_corners[2], meas_corners[6]].map(|c| (c.x, c.y, -c.z));
-        let layout_ok = (0..2).all(|k| {
-            let (w, h, d) = meas[k];
-            let c = &meas_corners[4 * k..4 * k + 4];
-            c[0] == DVec3::new(-w, -h, -d)
-                && c[1] == DVec3::new(w, -h, -d)
-                && c[2] == DVec3::new(w, h, -d)
-                && c[3] == DVec3::new(-w, h, -d)
-        });
-        // The measurement's depths z = −p.z must be > 0 (`vertex_max`'s check, the same at
-        // every direction).
-        if !layout_ok || !meas.iter().all(|m| m.2 > 0.0) {
-            return None;
-        }
+        let corners = slices(&view.corners());
         Some(Self {
             rule,
-            clip,
-            meas,
-            same: clip == meas,
-            tan,
-            extent: clip
+            corners,
+            tan: view.tan_half_fov(),
+            extent: corners
                 .iter()
                 .map(|&(w, h, d)| (w * w + h * h + d * d).sqrt())
                 .fold(f64::MIN_POSITIVE, f64::max)
@@ -145,7 +112,7 @@ impl LaneSweep {
         ok = and(ok, zl.ge(splat(PARALLEL_TOLERANCE)));
         let (x, z) = frame_from_projected(y, z, zl);
         // `FrustumInLight::in_light_space`: the corners in light space, z₀, Δ, sin γ.
-        let [qn, qf] = self.clip.map(|slice| light_corners(x, y, z, slice));
+        let [qn, qf] = self.corners.map(|slice| light_corners(x, y, z, slice));
         let q = [qn[0], qn[1], qn[2], qn[3], qf[0], qf[1], qf[2], qf[3]];
         let mut z0 = splat(f64::INFINITY);
         let mut z1 = splat(f64::NEG_INFINITY);
@@ -181,19 +148,13 @@ impl LaneSweep {
         ok = and(ok, sum.finite());
         // `clip_ok_at_corners`, then `vertex_max` (light direction `−ls.y` = l) corner by corner,
         // with `M (c, 1)` once for both when their corners are the same points.
-        let (hc, clip_ok) = clip_at_slices(&rows, &self.clip);
+        let (hc, clip_ok) = clip_at_slices(&rows, &self.corners);
         ok = and(ok, clip_ok);
         let kernel = Kernel::from_rows([rows[0], rows[1], rows[3]], l);
         let mut max = Maxima::new();
-        for (k, slice) in self.meas.iter().enumerate() {
-            let hm: [[F4; 3]; 4] = if self.same {
-                hc[k].map(|[hx, hy, _, hw]| [hx, hy, hw])
-            } else {
-                let [rx, ry, rw] = [&rows[0], &rows[1], &rows[3]].map(|r| row_at_slice(r, *slice));
-                std::array::from_fn(|j| [rx[j], ry[j], rw[j]])
-            };
-            for h in hm {
-                let w = kernel.widths(h, splat(slice.2));
+        for (hk, slice) in hc.iter().zip(&self.corners) {
+            for &[hx, hy, _, hw] in hk {
+                let w = kernel.widths([hx, hy, hw], splat(slice.2));
                 ok = and(ok, w.ok);
                 max.add(&w);
             }
@@ -213,7 +174,7 @@ impl LaneSweep {
 mod tests {
     use super::*;
     use crate::scheme::sweep::light_dir_from_angles;
-    use crate::scheme::{scheme, Partition, Prepared};
+    use crate::scheme::{scheme, Partition};
 
     /// The lanes take ordinary directions themselves (the bit-for-bit tests in tests/sweep.rs
     /// would also pass if every lane went to the scalar code) and send the light exactly along the
@@ -221,8 +182,7 @@ mod tests {
     #[test]
     fn lanes_take_ordinary_directions_and_refuse_the_parallel_one() {
         let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
-        let prep = Prepared::new(&view);
-        let lanes = LaneSweep::new(&view, WarpRule::Lispsm, None, &prep.corners, prep.tan).unwrap();
+        let lanes = LaneSweep::new(&view, WarpRule::Lispsm, None).unwrap();
         let azs = [0.0, 1.0, 2.5, std::f64::consts::PI];
         for el in [0.0, 0.4, std::f64::consts::FRAC_PI_2] {
             let (s, ok) = lanes.run(el.sin_cos(), &azs.map(f64::sin_cos));
@@ -239,9 +199,7 @@ mod tests {
             }
         }
         // Rules the lanes do not compute, and fixed rules without their n′, run the scalar code.
-        assert!(LaneSweep::new(&view, WarpRule::Minimax, None, &prep.corners, prep.tan).is_none());
-        assert!(
-            LaneSweep::new(&view, WarpRule::LispsmFixed, None, &prep.corners, prep.tan).is_none()
-        );
+        assert!(LaneSweep::new(&view, WarpRule::Minimax, None).is_none());
+        assert!(LaneSweep::new(&view, WarpRule::LispsmFixed, None).is_none());
     }
 }
