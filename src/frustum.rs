@@ -61,7 +61,7 @@ impl ViewFrustum {
     /// `f64`, and `near` or `half_fov` when tan θ or the near plane's half extent
     /// `n tan θ · min(aspect, 1)` is zero or subnormal (the type's domain).
     pub fn with_aspect(near: f64, far: f64, half_fov: f64, aspect: f64) -> Result<Self> {
-        let (near, far) = depths(near, far)?;
+        let (near, far) = depth_range(near, far)?;
         let half_fov = in_open("half_fov", half_fov, 0.0, std::f64::consts::FRAC_PI_2)?;
         let aspect = positive("aspect", aspect)?;
         let tan_half_fov = half_fov.tan();
@@ -129,7 +129,7 @@ impl ViewFrustum {
     /// As [`ViewFrustum::with_aspect`].
     #[inline]
     pub fn with_depth_range(&self, near: f64, far: f64) -> Result<Self> {
-        let (near, far) = depths(near, far)?;
+        let (near, far) = depth_range(near, far)?;
         check_extent(near, far, self.tan_half_fov, self.aspect)?;
         Ok(Self { near, far, ..*self })
     }
@@ -173,9 +173,10 @@ impl ViewFrustum {
     }
 }
 
-/// `0 < near < far`, both finite (the checks of [`ViewFrustum::with_aspect`], in its order).
-#[inline]
-fn depths(near: f64, far: f64) -> Result<(f64, f64)> {
+/// `0 < near < far`, both finite: the crate's one depth-range check (the constructors of
+/// [`ViewFrustum`], and `analytic::eta::near_far` for the closed forms on bare depths).
+#[inline(always)]
+pub(crate) fn depth_range(near: f64, far: f64) -> Result<(f64, f64)> {
     let near = positive("near", near)?;
     let far = positive("far", far)?;
     if far <= near {

@@ -20,7 +20,7 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::analytic::eta::near_far;
+use crate::analytic::eta::near_far_ratio;
 use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::ViewFrustum;
 
@@ -298,20 +298,6 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
         }
     }
     Ok(Splits { planes: p, k })
-}
-
-/// [`near_far`] that also returns f/n, the quotient its check computes (one division, not
-/// two); any invalid input goes to [`near_far`] for its error.
-#[inline(always)]
-fn near_far_ratio(near: f64, far: f64) -> Result<(f64, f64, f64)> {
-    if near.is_finite() && near > 0.0 && far.is_finite() && far > near {
-        let alpha = far / near;
-        if alpha.is_finite() {
-            return Ok((near, far, alpha));
-        }
-    }
-    let (n, f) = near_far(near, far)?;
-    Ok((n, f, f / n))
 }
 
 /// Four partitions (the usual cascade count) from their planes: the checks on the values and
