@@ -166,8 +166,7 @@ pub(crate) struct FrustumInLight {
 }
 
 impl FrustumInLight {
-    // Always inlined: as a call, its 600-byte `Result<Self>` is built on the callee's stack and
-    // copied out with `memcpy` (11 % of the LiSPSM builder's instructions).
+    // Always inlined (docs/performance.md, "Code-generation notes").
     #[inline(always)]
     pub(crate) fn new(view: &ViewFrustum, light_dir: DVec3) -> Result<Self> {
         let l = unit_light_dir(light_dir)?;
@@ -300,7 +299,7 @@ pub fn fit_warp(points: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DM
         if !p.is_finite() {
             return Err(not_finite_point(*p));
         }
-        // Finite values: the one-instruction min/max are `f64::min`/`max`.
+        // Finite values: `fmin`/`fmax` are `f64::min`/`max` here.
         let z = ls.z.dot(*p);
         z0 = fmin(z0, z);
         z1 = fmax(z1, z);
@@ -906,4 +905,45 @@ fn filament_n_prime(
     let nopt0 = (z0 + (vz0 * vz1).sqrt()) / sin_lv;
     let nopt1 = dzn / (2.0 - 3.0 * (dzn / (zf - zn)));
     Ok(finite_or_unwarped(nopt0.max(nopt1)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+        /// The shared-product clip check at a frustum's eight corners is the plain point-by-point
+        /// `verify_clip` (both clip-depth forms), accepting and refusing alike: fitted maps over
+        /// views, lights and n′, and the same maps with one row scaled so that some corners leave
+        /// the clip volume.
+        #[test]
+        fn clip_ok_at_corners_is_verify_clip(
+            ln_n in -5.0f64..5.0,
+            ln_alpha in 0.01f64..14.0,
+            theta in 0.05f64..1.5,
+            aspect in 0.3f64..3.0,
+            el in -1.5f64..1.5,
+            az in 0.0f64..std::f64::consts::TAU,
+            ln_np in -3.0f64..6.0,
+            row in 0usize..4,
+            scale in prop::sample::select(vec![1.0, 1.0 + 2e-6, 0.999_999, 1.5, 0.4, -1.0]),
+        ) {
+            let n = ln_n.exp();
+            let view = ViewFrustum::with_aspect(n, n * ln_alpha.exp(), theta, aspect).unwrap();
+            let l = -DVec3::new(el.cos() * az.sin(), el.sin(), el.cos() * az.cos());
+            let Ok(fl) = FrustumInLight::new(&view, l) else { return Ok(()) };
+            let Ok(m) = fit_frustum(&fl, NPrime::Finite(n * ln_np.exp())) else { return Ok(()) };
+            let mut t = m.transpose();
+            let r = t.col_mut(row);
+            *r *= scale;
+            let m = t.transpose();
+            let corners = view.corners();
+            prop_assert_eq!(
+                clip_ok_at_corners(&m, &corners),
+                verify_clip(&m, corners.iter()).is_ok()
+            );
+        }
+    }
 }

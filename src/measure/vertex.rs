@@ -2,7 +2,7 @@
 //! [`crate::measure::frustum_max`] (with its validation beside it), the schemes' own measurement
 //! ([`crate::scheme`], [`crate::maps::cascades`], [`crate::maps::faces`]) and the hemisphere
 //! sweep ([`crate::scheme::sweep`], four directions at a time) all compute the widths with
-//! [`Kernel`]; [`super::point_error`] is the validated single-point oracle it agrees with.
+//! `Kernel`; [`super::point_error`] is the validated single-point oracle it agrees with.
 
 use super::FrustumError;
 use crate::numeric::lane::{Lane, V3};
@@ -26,7 +26,7 @@ use glam::{DMat4, DVec3};
 /// `m_z² = h.w⁴ D² / (D² |G_t⊥|² z²) / tan²θ`, with one division per point and one square root per
 /// maximum; since G_s, G_t are linear in (h.x, h.y, h.w), `D = h.w (h.w a − h.y b + h.x c)` with
 /// `a = (g₀ × g₁)·L`, `b = (g₀ × g₃)·L`, `c = (g₁ × g₃)·L` and `G_t⊥ = h.w g₁⊥ − h.y g₃⊥` are set
-/// up once per matrix ([`Kernel::new`]).
+/// up once per matrix (`Kernel::new`).
 ///
 /// `light_dir` must be a unit vector (the direction light travels) and `tan_half_fov` = tan θ of
 /// the camera. No validation is done beyond what keeps the answer honest: the function returns
@@ -154,7 +154,7 @@ impl<T: Lane> Maxima<T> {
         }
     }
     /// `fmax`: the values are finite wherever they count (a point that is not `ok` makes the
-    /// result unusable), so the one-instruction max is `f64::max`.
+    /// result unusable), so `fmax` is `f64::max` there.
     #[inline(always)]
     pub(crate) fn add(&mut self, w: &Widths<T>) {
         self.mx2 = self.mx2.max(w.mx2);

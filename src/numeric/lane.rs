@@ -2,7 +2,8 @@
 //! builders and measurement, [`F4`] (four `f64`, one per light direction) for the hemisphere
 //! sweep. Every operation is one IEEE operation per lane, in the order the code writes it (no
 //! reassociation, no fused multiply-add), so a lane of [`F4`] is the `f64` code's value bit for
-//! bit by construction; on baseline x86-64 the compiler evaluates two lanes per SSE2 instruction.
+//! bit by construction (docs/performance.md, "Code-generation notes", for what the compiler makes
+//! of it).
 
 use glam::DVec3;
 use std::ops::{Add, Div, Mul, Neg, Sub};
@@ -24,9 +25,9 @@ pub(crate) trait Lane:
     fn sqrt(self) -> Self;
     /// `|x|` per lane.
     fn abs(self) -> Self;
-    /// The crate's `fmin`, `if a < b { a } else { b }` (one `minpd`).
+    /// The crate's `fmin`, `if a < b { a } else { b }`.
     fn min(self, o: Self) -> Self;
-    /// The crate's `fmax`, `if a > b { a } else { b }` (one `maxpd`).
+    /// The crate's `fmax`, `if a > b { a } else { b }`.
     fn max(self, o: Self) -> Self;
     /// `a > b` per lane (false for NaN).
     fn gt(self, o: Self) -> Self::Mask;
@@ -116,7 +117,7 @@ impl Lane for f64 {
 /// Lanes per [`F4`].
 pub(crate) const LANES: usize = 4;
 
-/// Four `f64`, one per lane (two SSE2 registers).
+/// Four `f64`, one per lane.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct F4(pub(crate) [f64; LANES]);
 
