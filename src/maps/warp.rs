@@ -284,15 +284,7 @@ pub fn fit_warp(points: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DM
     if points.is_empty() {
         return Err(Error::invalid("points", "must not be empty"));
     }
-    let rho = match n_prime {
-        NPrime::Unwarped => 0.0,
-        NPrime::Finite(v) => {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(bad_n_prime(v));
-            }
-            1.0 / v
-        }
-    };
+    let rho = inverse_n_prime(n_prime)?;
     let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
     let mut extent = 0.0f64;
     for p in points {
@@ -573,18 +565,23 @@ fn warp_fitted(view: &ViewFrustum, fl: &FrustumInLight, rule: WarpRule) -> Resul
     })
 }
 
+/// ρ = 1/n′ of the module docs (0 for [`NPrime::Unwarped`]).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `n_prime` when a finite value is not finite and positive.
+#[inline(always)]
+fn inverse_n_prime(n_prime: NPrime) -> Result<f64> {
+    match n_prime {
+        NPrime::Unwarped => Ok(0.0),
+        NPrime::Finite(v) if v.is_finite() && v > 0.0 => Ok(1.0 / v),
+        NPrime::Finite(v) => Err(bad_n_prime(v)),
+    }
+}
+
 /// [`fit_warp`] on the frustum already in light space.
 #[inline]
 pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4> {
-    let rho = match n_prime {
-        NPrime::Unwarped => 0.0,
-        NPrime::Finite(v) => {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(bad_n_prime(v));
-            }
-            1.0 / v
-        }
-    };
+    let rho = inverse_n_prime(n_prime)?;
     let r = Ranges::of_warped(&fl.q.map(V3::from), fl.z0, rho);
     let extent = fl.q.iter().fold(0.0f64, |m, q| {
         let a = q.abs();
