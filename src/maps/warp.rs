@@ -217,7 +217,8 @@ impl FrustumInLight {
 /// its corners in [`ViewFrustum::corners`] order (corner 2 of each depth is `(+w, +h, −d)`).
 #[inline(always)]
 pub(crate) fn slices(corners: &[DVec3; 8]) -> [(f64, f64, f64); 2] {
-    [corners[2], corners[6]].map(|c| (c.x, c.y, -c.z))
+    let (a, b) = (corners[2], corners[6]);
+    [(a.x, a.y, -a.z), (b.x, b.y, -b.z)]
 }
 
 /// sin γ = |l × (0, 0, −1)| = √(l.x² + l.y²) for the unit light direction l (accurate near 0),
@@ -365,7 +366,7 @@ impl<T: Lane> Ranges<T> {
     /// one division per point (within an ulp of x/w and y/w); where ρ is 0 in every lane, `w = 1`
     /// exactly and the points' x, y are taken as they are (the same values).
     #[inline(always)]
-    pub(crate) fn of_warped(q: &[V3<T>], z0: T, rho: T) -> Self {
+    pub(crate) fn of_warped(q: impl IntoIterator<Item = V3<T>>, z0: T, rho: T) -> Self {
         let mut r = Self::new();
         if rho.all_zero() {
             for q in q {
@@ -443,7 +444,9 @@ pub(crate) fn warp_matrix(
     let v_h = v_h.max(1e-9 * extent.max(f64::MIN_POSITIVE));
     let frame = (V3::from(ls.x), V3::from(ls.y), V3::from(ls.z));
     let rows = warp_rows(frame, z0, delta, rho, (u_h, u_m, v_h, v_m));
-    let [row0, row1, row2, row3] = rows.map(|(v, w)| DVec3::from(v).extend(w));
+    let [r0, r1, r2, r3] = rows;
+    let row = |(v, w): Row<f64>| DVec3::from(v).extend(w);
+    let (row0, row1, row2, row3) = (row(r0), row(r1), row(r2), row(r3));
     let m = DMat4::from_cols(row0, row1, row2, row3).transpose();
     if !m.is_finite() {
         return Err(not_finite_warp());
@@ -582,7 +585,7 @@ fn inverse_n_prime(n_prime: NPrime) -> Result<f64> {
 #[inline]
 pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4> {
     let rho = inverse_n_prime(n_prime)?;
-    let r = Ranges::of_warped(&fl.q.map(V3::from), fl.z0, rho);
+    let r = Ranges::of_warped(fl.q.iter().map(|&q| V3::from(q)), fl.z0, rho);
     let extent = fl.q.iter().fold(0.0f64, |m, q| {
         let a = q.abs();
         fmax(m, fmax(fmax(a.x, a.y), a.z))
@@ -600,10 +603,11 @@ pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4>
 /// order), bit for bit, through [`clip_at_slices`].
 #[inline]
 fn clip_ok_at_corners(m: &DMat4, corners: &[DVec3; 8]) -> bool {
-    let rows = [0, 1, 2, 3].map(|i| {
+    let row = |i: usize| {
         let r = m.row(i);
         (V3::from(r.truncate()), r.w)
-    });
+    };
+    let rows = [row(0), row(1), row(2), row(3)];
     clip_at_slices(&rows, &slices(corners)).1
 }
 
@@ -636,16 +640,21 @@ pub(crate) fn clip_at_slices<T: Lane>(
     let half = T::splat(0.5);
     let (r2, r3) = (&rows[2], &rows[3]);
     let row01 = ((r2.0 + r3.0).scale(half), (r2.1 + r3.1) * half);
+    // Plain loops, not `array::map`/`from_fn` closures (which do not always inline).
     let mut ok = T::all_set();
-    let h = slices.map(|slice| {
-        let r = rows.each_ref().map(|row| row_at_slice(row, slice));
+    let mut h = [[[T::splat(0.0); 4]; 4]; 2];
+    for (hk, &slice) in h.iter_mut().zip(slices) {
+        let r0 = row_at_slice(&rows[0], slice);
+        let r1 = row_at_slice(&rows[1], slice);
+        let r2 = row_at_slice(&rows[2], slice);
+        let r3 = row_at_slice(&rows[3], slice);
         let z01 = row_at_slice(&row01, slice);
-        std::array::from_fn(|j| {
-            let h = [r[0][j], r[1][j], r[2][j], r[3][j]];
-            ok = T::and(ok, T::and(in_clip(h), in_unit_depth(z01[j], h[3])));
-            h
-        })
-    });
+        for j in 0..4 {
+            let hj = [r0[j], r1[j], r2[j], r3[j]];
+            ok = T::and(ok, T::and(in_clip(hj), in_unit_depth(z01[j], hj[3])));
+            hk[j] = hj;
+        }
+    }
     (h, ok)
 }
 

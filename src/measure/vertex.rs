@@ -93,8 +93,8 @@ impl Kernel<f64> {
     /// `(h.x, h.y, h.w)` of `M (p, 1)`, `((r.x p.x + r.y p.y) + r.z p.z) + r.w` (glam's order).
     #[inline(always)]
     pub(crate) fn homogeneous(&self, p: DVec3) -> [f64; 3] {
-        self.rows
-            .map(|(v, w)| ((v.x * p.x + v.y * p.y) + v.z * p.z) + w)
+        let at = |(v, w): (V3<f64>, f64)| ((v.x * p.x + v.y * p.y) + v.z * p.z) + w;
+        [at(self.rows[0]), at(self.rows[1]), at(self.rows[2])]
     }
 }
 

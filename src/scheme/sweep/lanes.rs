@@ -112,7 +112,8 @@ impl LaneSweep {
         ok = and(ok, zl.ge(splat(PARALLEL_TOLERANCE)));
         let (x, z) = frame_from_projected(y, z, zl);
         // `FrustumInLight::in_light_space`: the corners in light space, z₀, Δ, sin γ.
-        let [qn, qf] = self.corners.map(|slice| light_corners(x, y, z, slice));
+        let qn = light_corners(x, y, z, self.corners[0]);
+        let qf = light_corners(x, y, z, self.corners[1]);
         let q = [qn[0], qn[1], qn[2], qn[3], qf[0], qf[1], qf[2], qf[3]];
         let mut z0 = splat(f64::INFINITY);
         let mut z1 = splat(f64::NEG_INFINITY);
@@ -134,7 +135,7 @@ impl LaneSweep {
         // on it the same for every direction. `delta > 1e−12 · bound` implies the scalar
         // `delta > 1e−12 · extent`, and `v_h > 1e−9 · bound` that the scalar's `max` picks v_h: a
         // lane where either fails goes to the scalar code.
-        let (u_h, u_m, v_h, v_m) = Ranges::of_warped(&q, z0, rho).halves();
+        let (u_h, u_m, v_h, v_m) = Ranges::of_warped(q, z0, rho).halves();
         let tiny = splat(1e-12 * self.extent);
         ok = and(ok, and(delta.gt(tiny), u_h.gt(tiny)));
         ok = and(ok, v_h.gt(splat(1e-9 * self.extent)));
