@@ -131,17 +131,37 @@ impl F4 {
         F4(std::array::from_fn(|i| f(self.0[i], o.0[i])))
     }
     #[inline(always)]
-    fn test(self, f: impl Fn(f64) -> bool) -> [bool; LANES] {
-        self.0.map(f)
+    fn test(self, f: impl Fn(f64) -> bool) -> M4 {
+        let b = |i: usize| if f(self.0[i]) { !0u64 } else { 0 };
+        M4([b(0), b(1), b(2), b(3)])
     }
     #[inline(always)]
-    fn cmp(self, o: Self, f: impl Fn(f64, f64) -> bool) -> [bool; LANES] {
-        std::array::from_fn(|i| f(self.0[i], o.0[i]))
+    fn cmp(self, o: Self, f: impl Fn(f64, f64) -> bool) -> M4 {
+        let b = |i: usize| if f(self.0[i], o.0[i]) { !0u64 } else { 0 };
+        M4([b(0), b(1), b(2), b(3)])
+    }
+}
+
+/// One flag per lane of [`F4`], all bits set or clear (so that `and` is one `andpd` per two
+/// lanes, where `[bool; 4]` is packed and unpacked around every operation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct M4(pub(crate) [u64; LANES]);
+
+impl M4 {
+    /// The flags as booleans.
+    #[inline(always)]
+    pub(crate) fn to_bools(self) -> [bool; LANES] {
+        [
+            self.0[0] != 0,
+            self.0[1] != 0,
+            self.0[2] != 0,
+            self.0[3] != 0,
+        ]
     }
 }
 
 impl Lane for F4 {
-    type Mask = [bool; LANES];
+    type Mask = M4;
     #[inline(always)]
     fn splat(v: f64) -> Self {
         F4([v; LANES])
@@ -184,19 +204,26 @@ impl Lane for F4 {
     }
     #[inline(always)]
     fn finite(self) -> Self::Mask {
-        self.test(f64::is_finite)
+        self.test(|x| x.abs() < f64::INFINITY)
     }
     #[inline(always)]
     fn all_set() -> Self::Mask {
-        [true; LANES]
+        M4([!0; LANES])
     }
     #[inline(always)]
     fn and(a: Self::Mask, b: Self::Mask) -> Self::Mask {
-        std::array::from_fn(|i| a[i] && b[i])
+        M4([
+            a.0[0] & b.0[0],
+            a.0[1] & b.0[1],
+            a.0[2] & b.0[2],
+            a.0[3] & b.0[3],
+        ])
     }
     #[inline(always)]
     fn select(m: Self::Mask, a: Self, b: Self) -> Self {
-        F4(std::array::from_fn(|i| if m[i] { a.0[i] } else { b.0[i] }))
+        let s =
+            |i: usize| f64::from_bits((a.0[i].to_bits() & m.0[i]) | (b.0[i].to_bits() & !m.0[i]));
+        F4([s(0), s(1), s(2), s(3)])
     }
 }
 
@@ -356,11 +383,11 @@ mod tests {
                 for i in 0..LANES {
                     assert_eq!(x.sqrt().0[i].to_bits(), x.0[i].sqrt().to_bits());
                     assert_eq!((-x).0[i].to_bits(), (-x.0[i]).to_bits());
-                    assert_eq!(x.gt(y)[i], x.0[i] > y.0[i]);
-                    assert_eq!(x.ge(y)[i], x.0[i] >= y.0[i]);
-                    assert_eq!(x.lt(y)[i], x.0[i] < y.0[i]);
-                    assert_eq!(x.le(y)[i], x.0[i] <= y.0[i]);
-                    assert_eq!(x.finite()[i], x.0[i].is_finite());
+                    assert_eq!(x.gt(y).to_bools()[i], x.0[i] > y.0[i]);
+                    assert_eq!(x.ge(y).to_bools()[i], x.0[i] >= y.0[i]);
+                    assert_eq!(x.lt(y).to_bools()[i], x.0[i] < y.0[i]);
+                    assert_eq!(x.le(y).to_bools()[i], x.0[i] <= y.0[i]);
+                    assert_eq!(x.finite().to_bools()[i], x.0[i].is_finite());
                 }
             }
         }

@@ -25,7 +25,7 @@ use crate::maps::warp::{
 };
 use crate::maps::WarpRule;
 use crate::measure::vertex::{Kernel, Maxima};
-use crate::numeric::lane::{Lane, F4, V3};
+use crate::numeric::lane::{Lane, F4, M4, V3};
 use crate::numeric::PARALLEL_TOLERANCE;
 use glam::DVec3;
 
@@ -124,7 +124,7 @@ impl LaneSweep {
         let delta = z1 - z0;
         let sin_g = sin_gamma(l);
         // The rule's 1/n′ (0 for the orthographic map), as `rule_n_prime` + `fit_frustum`.
-        let warp = |(v, finite): (F4, Mask)| F4::select(finite, splat(1.0) / v, splat(0.0));
+        let warp = |(v, finite): (F4, M4)| F4::select(finite, splat(1.0) / v, splat(0.0));
         let rho = match self.rule {
             LaneRule::Fixed(rho) => splat(rho),
             LaneRule::SinScaled(nl) => warp(lispsm_sin_n_prime(splat(nl), sin_g)),
@@ -167,7 +167,7 @@ impl LaneSweep {
             ok,
             and(and(mx.finite(), mx.gt(zero)), and(mz.finite(), mz.gt(zero))),
         );
-        ((zero + mx * mz).0, ok)
+        ((zero + mx * mz).0, ok.to_bools())
     }
 }
 
