@@ -61,7 +61,7 @@ impl ViewFrustum {
     /// `f64`, and `near` or `half_fov` when tan θ or the near plane's half extent
     /// `n tan θ · min(aspect, 1)` is zero or subnormal (the type's domain).
     pub fn with_aspect(near: f64, far: f64, half_fov: f64, aspect: f64) -> Result<Self> {
-        let (near, far) = depths(near, far)?;
+        let (near, far) = depth_range(near, far)?;
         let half_fov = in_open("half_fov", half_fov, 0.0, std::f64::consts::FRAC_PI_2)?;
         let aspect = positive("aspect", aspect)?;
         let tan_half_fov = half_fov.tan();
@@ -129,25 +129,34 @@ impl ViewFrustum {
     /// As [`ViewFrustum::with_aspect`].
     #[inline]
     pub fn with_depth_range(&self, near: f64, far: f64) -> Result<Self> {
-        let (near, far) = depths(near, far)?;
+        let (near, far) = depth_range(near, far)?;
         check_extent(near, far, self.tan_half_fov, self.aspect)?;
         Ok(Self { near, far, ..*self })
     }
 
-    /// The eight corners in eye space: near plane first (−x−y, +x−y, +x+y, −x+y), then far.
+    /// The eight corners in eye space: near plane first (−x−y, +x−y, +x+y, −x+y), then far
+    /// ([`ViewFrustum::corners_at`] at both depths).
     #[must_use]
     pub fn corners(&self) -> [DVec3; 8] {
-        let t = self.tan_half_fov();
-        let mut out = [DVec3::ZERO; 8];
-        for (k, d) in [self.near, self.far].into_iter().enumerate() {
-            let h = d * t;
-            let w = h * self.aspect;
-            out[4 * k] = DVec3::new(-w, -h, -d);
-            out[4 * k + 1] = DVec3::new(w, -h, -d);
-            out[4 * k + 2] = DVec3::new(w, h, -d);
-            out[4 * k + 3] = DVec3::new(-w, h, -d);
-        }
-        out
+        let [a, b, c, d] = self.corners_at(self.near);
+        let [e, f, g, h] = self.corners_at(self.far);
+        [a, b, c, d, e, f, g, h]
+    }
+
+    /// The four corners `(±w, ±h, −d)` of the cross-section at eye depth `d`, with h = d tan θ
+    /// and w = h · aspect (in this order, so that a frustum whose tan θ · aspect overflows still
+    /// has finite corners), in the order of [`ViewFrustum::corners`]. Every builder and
+    /// measurement of the crate forms the frustum's corners here.
+    #[must_use]
+    pub fn corners_at(&self, d: f64) -> [DVec3; 4] {
+        let h = d * self.tan_half_fov();
+        let w = h * self.aspect;
+        [
+            DVec3::new(-w, -h, -d),
+            DVec3::new(w, -h, -d),
+            DVec3::new(w, h, -d),
+            DVec3::new(-w, h, -d),
+        ]
     }
 
     /// Whether an eye-space point lies inside the frustum, with a relative tolerance `tol`.
@@ -164,9 +173,10 @@ impl ViewFrustum {
     }
 }
 
-/// `0 < near < far`, both finite (the checks of [`ViewFrustum::with_aspect`], in its order).
-#[inline]
-fn depths(near: f64, far: f64) -> Result<(f64, f64)> {
+/// `0 < near < far`, both finite: the crate's one depth-range check (the constructors of
+/// [`ViewFrustum`], and `analytic::eta::near_far` for the closed forms on bare depths).
+#[inline(always)]
+pub(crate) fn depth_range(near: f64, far: f64) -> Result<(f64, f64)> {
     let near = positive("near", near)?;
     let far = positive("far", far)?;
     if far <= near {

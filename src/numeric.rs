@@ -1,10 +1,13 @@
 //! The numeric ground rules shared by every layer: NaN-free `fmin`/`fmax` for the inner loops and
-//! the tolerances, each a named constant with the reason for its value.
+//! the tolerances, each a named constant with the reason for its value; `lane`, the lane type
+//! the scalar code and the four-direction sweep share.
 
-/// `min(a, b)` for values that are never NaN (finite corner coordinates): one `minsd`, where
-/// `f64::min`'s NaN handling costs three more instructions on x86-64, in loops that run 8 to 40
-/// times per map. Equal to `a.min(b)` whenever neither is NaN (a NaN `b` is returned, so it is not
-/// silently dropped either).
+pub(crate) mod lane;
+
+/// `min(a, b)` for values that are never NaN (finite corner coordinates), in loops that run 8 to
+/// 40 times per map (cheaper than `f64::min`: docs/performance.md, "Code-generation notes").
+/// Equal to `a.min(b)` whenever neither is NaN (a NaN `b` is returned, so it is not silently
+/// dropped either).
 #[inline(always)]
 pub(crate) fn fmin(a: f64, b: f64) -> f64 {
     if a < b {

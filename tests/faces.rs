@@ -432,7 +432,7 @@ fn errata_s5_1_face_n_prime_is_the_faces_own() {
             pts.push(q - 3.0 * f * l);
         }
         let m = fit_warp(&pts, &ls, NPrime::finite(n_view).unwrap()).unwrap();
-        let e = vertex_max(&m, l, t, &v).unwrap().storage_factor();
+        let e = vertex_max(&m, l, t, &v).unwrap().storage_factor;
         assert!(
             (e - per_face).abs() < 1e-9 * per_face,
             "{face:?}: {e} vs {per_face}"

@@ -22,43 +22,38 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
-use crate::frustum::NPrime;
+use crate::error::{finite_result, fmt_num, in_closed, Error, Result};
+use crate::frustum::{depth_range, NPrime};
 use crate::numeric::sqrt_fn;
 
-/// Validates a depth range `0 < near < far`, both finite.
+/// Validates a depth range `0 < near < far`, both finite ([`depth_range`]), with f/n finite.
 #[inline]
 pub(crate) fn near_far(near: f64, far: f64) -> Result<(f64, f64)> {
-    let n = positive("near", near)?;
-    let f = positive("far", far)?;
-    if f <= n || !(f / n).is_finite() {
-        return Err(bad_near_far(n, f));
+    near_far_ratio(near, far).map(|(n, f, _)| (n, f))
+}
+
+/// [`near_far`] that also returns f/n, the quotient its check computes.
+#[inline(always)]
+pub(crate) fn near_far_ratio(near: f64, far: f64) -> Result<(f64, f64, f64)> {
+    let (n, f) = depth_range(near, far)?;
+    let alpha = f / n;
+    if !alpha.is_finite() {
+        return Err(ratio_not_finite(n, f));
     }
-    Ok((n, f))
+    Ok((n, f, alpha))
 }
 
 #[cold]
 #[inline(never)]
-fn bad_near_far(n: f64, f: f64) -> Error {
-    if f <= n {
-        Error::invalid(
-            "far",
-            format!(
-                "must be greater than near (got near={}, far={})",
-                fmt_num(n),
-                fmt_num(f)
-            ),
-        )
-    } else {
-        Error::invalid(
-            "far",
-            format!(
-                "must be small enough that far/near is finite (got near={}, far={})",
-                fmt_num(n),
-                fmt_num(f)
-            ),
-        )
-    }
+fn ratio_not_finite(n: f64, f: f64) -> Error {
+    Error::invalid(
+        "far",
+        format!(
+            "must be small enough that far/near is finite (got near={}, far={})",
+            fmt_num(n),
+            fmt_num(f)
+        ),
+    )
 }
 
 /// Validates Lloyd's light-overhead domain n′ ≥ near; returns n′ or `None` for n′ = ∞.
@@ -211,5 +206,34 @@ mod tests {
         assert!(n_prime_from_eta(1.0, 100.0, 1.5).is_err());
         assert_eq!(n_prime_lispsm(1.0, 100.0), Ok(11.0));
         assert_eq!(n_prime_psm(3.0, 100.0), Ok(3.0));
+    }
+}
+
+#[cfg(test)]
+mod depth_range_tests {
+    use super::*;
+    use crate::frustum::ViewFrustum;
+
+    /// The closed forms on bare depths and `ViewFrustum` refuse a bad depth range with the same
+    /// error (one check); f/n overflowing is near_far's own.
+    #[test]
+    fn near_far_and_view_frustum_agree_on_bad_depths() {
+        for (n, f) in [
+            (2.0, 1.0),
+            (1.0, 1.0),
+            (0.0, 1.0),
+            (-1.0, 2.0),
+            (1.0, f64::NAN),
+        ] {
+            let a = near_far(n, f).unwrap_err().to_string();
+            let b = ViewFrustum::new(n, f, 0.5).unwrap_err().to_string();
+            assert_eq!(a, b, "near={n}, far={f}");
+        }
+        assert_eq!(
+            near_far(2.0, 1.0).unwrap_err().to_string(),
+            "far must be greater than near (got near=2, far=1)"
+        );
+        assert!(near_far(1e-300, 1e300).is_err());
+        assert_eq!(near_far_ratio(2.0, 5.0).unwrap(), (2.0, 5.0, 2.5));
     }
 }

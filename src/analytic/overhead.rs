@@ -283,6 +283,13 @@ pub fn budget_resolution(
         return Ok(MapResolution { res_s, res_t });
     }
     // Overflow or underflow of the one fraction: from M_x, M_z themselves.
+    budget_from_critical(s0, &c)
+}
+
+/// The plain form of [`budget_resolution`]: res_s = √(S₀ r), res_t = √(S₀/r) with r = res*_s /
+/// res*_t the ratio of the critical resolutions (Eq 9, 10). The fast path above is its fallback's
+/// reference too (tested against it within a few ulps, `budget_fast_path_is_the_plain_form`).
+fn budget_from_critical(s0: f64, c: &MapResolution) -> Result<MapResolution> {
     let ratio = c.res_s / c.res_t;
     Ok(MapResolution {
         res_s: finite_result("res_s", (s0 * ratio).sqrt())?,
@@ -312,6 +319,42 @@ pub fn budget_error(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+        /// The one-fraction path of `budget_resolution` is its plain form from the critical
+        /// resolutions, within 8 ulps, over n, f/n, θ, n′ (below and above n′_LSPSM, and ∞) and
+        /// the budget.
+        #[test]
+        fn budget_fast_path_is_the_plain_form(
+            ln_n in -20.0f64..20.0,
+            ln_alpha in 1e-3f64..25.0,
+            theta in 0.01f64..1.55,
+            np_scale in -6.0f64..6.0,
+            unwarped in any::<bool>(),
+            ln_budget in 0.0f64..40.0,
+        ) {
+            let n = ln_n.exp();
+            let view = ViewFrustum::new(n, n * ln_alpha.exp(), theta).unwrap();
+            let np = if unwarped {
+                NPrime::UNWARPED
+            } else {
+                NPrime::finite(view.n_prime_lispsm() * np_scale.exp()).unwrap()
+            };
+            let s0 = ln_budget.exp();
+            let (Ok(fast), Ok(c)) = (
+                budget_resolution(&view, np, s0),
+                critical_resolution(&view, np, 1.0),
+            ) else {
+                return Ok(());
+            };
+            let plain = budget_from_critical(s0, &c).unwrap();
+            for (a, b) in [(fast.res_s, plain.res_s), (fast.res_t, plain.res_t)] {
+                prop_assert!((a - b).abs() <= 8.0 * f64::EPSILON * b, "{a} vs {b}");
+            }
+        }
+    }
 
     /// Hand values at n = 1, f = 100, θ = 45° (tan θ = 1), n′ = 11 (LiSPSM).
     #[test]

@@ -20,7 +20,7 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::analytic::eta::near_far;
+use crate::analytic::eta::near_far_ratio;
 use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::ViewFrustum;
 
@@ -298,20 +298,6 @@ pub fn z_splits(near: f64, far: f64, k: usize, scheme: SplitScheme) -> Result<Sp
         }
     }
     Ok(Splits { planes: p, k })
-}
-
-/// [`near_far`] that also returns f/n, the quotient its check computes (one division, not
-/// two); any invalid input goes to [`near_far`] for its error.
-#[inline(always)]
-fn near_far_ratio(near: f64, far: f64) -> Result<(f64, f64, f64)> {
-    if near.is_finite() && near > 0.0 && far.is_finite() && far > near {
-        let alpha = far / near;
-        if alpha.is_finite() {
-            return Ok((near, far, alpha));
-        }
-    }
-    let (n, f) = near_far(near, far)?;
-    Ok((n, f, f / n))
 }
 
 /// Four partitions (the usual cascade count) from their planes: the checks on the values and
@@ -713,6 +699,78 @@ pub fn splits_storage_factor(
         };
     }
     finite_result("storage factor", sum)
+}
+
+/// The plain reference of [`z_splits`]'s self-similar and adaptive planes: Lloyd 2006 Eq 15
+/// (n (f/n)^{i/k}) and Barroso & Celes Eq 19 (u_{i−1} = λ u_i^{(i−1)/i} + ((1 − λ)/α) u_i,
+/// u_k = f/n, z = n u) as written, with `powf`, one plane at a time: no k = 4 path, no root
+/// shortcuts, no bit-trick cube root. The fast paths are tested against it.
+#[cfg(test)]
+fn z_splits_reference(n: f64, f: f64, k: usize, scheme: SplitScheme) -> Vec<f64> {
+    let kf = k as f64;
+    match scheme {
+        SplitScheme::SelfSimilar => (0..=k).map(|i| n * (f / n).powf(i as f64 / kf)).collect(),
+        SplitScheme::Adaptive { light_angle, ratio } => {
+            let l = light_angle / std::f64::consts::FRAC_PI_2;
+            let mut p = vec![0.0; k + 1];
+            let mut u = f / n;
+            p[k] = f;
+            for i in (2..=k).rev() {
+                u = l * u.powf((i - 1) as f64 / i as f64) + (1.0 - l) / ratio * u;
+                p[i - 1] = n * u;
+            }
+            p[0] = n;
+            p
+        }
+        _ => unreachable!("the reference covers the schemes with fast paths"),
+    }
+}
+
+#[cfg(test)]
+mod reference_tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+        /// The bit-trick x^{−1/3} is the plain 1/∛x within 4 ulps over every binade of normal
+        /// f64 (and `powf` below them).
+        #[test]
+        fn inv_cbrt_is_the_plain_form(e in -1021i32..1023, m in 1.0f64..2.0) {
+            let x = m * 2f64.powi(e);
+            let plain = 1.0 / x.cbrt();
+            let fast = inv_cbrt(x);
+            prop_assert!((fast - plain).abs() <= 4.0 * f64::EPSILON * plain, "x={x}: {fast} vs {plain}");
+        }
+
+        /// The self-similar and adaptive planes (the k = 4 paths, the square-root shortcuts and
+        /// the bit-trick cube root included) are the plain formulas' within 10⁻¹³, relative, for
+        /// every k, over f/n from 1.01 to 10¹², γ over [0, π/2] and α over (1, 10].
+        #[test]
+        fn z_splits_fast_paths_are_the_plain_formulas(
+            ln_n in -10.0f64..10.0,
+            ln_alpha in 0.01f64..27.6,
+            k in 1usize..=MAX_PARTITIONS,
+            gamma in 0.0f64..=std::f64::consts::FRAC_PI_2,
+            ratio in 1.01f64..10.0,
+            adaptive in any::<bool>(),
+        ) {
+            let n = ln_n.exp();
+            let f = n * ln_alpha.exp();
+            let scheme = if adaptive {
+                SplitScheme::Adaptive { light_angle: gamma, ratio }
+            } else {
+                SplitScheme::SelfSimilar
+            };
+            let Ok(s) = z_splits(n, f, k, scheme) else {
+                return Ok(());
+            };
+            let plain = z_splits_reference(n, f, k, scheme);
+            for (a, b) in s.planes().iter().zip(&plain) {
+                prop_assert!((a - b).abs() <= 1e-13 * b, "k={k} {scheme:?}: {a} vs {b}");
+            }
+        }
+    }
 }
 
 #[cfg(test)]

@@ -1436,7 +1436,7 @@ impl Ctx<'_, '_> {
             texel_world: texel,
             max_mx: err.max_mx,
             max_mz: err.max_mz,
-            storage_factor: err.storage_factor(),
+            storage_factor: err.storage_factor,
             max_error_pixels: err.max_mx.max(err.max_mz) * image / res,
             focus,
             world_to_eye: self.input.camera.world_to_eye,

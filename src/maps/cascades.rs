@@ -50,7 +50,8 @@ use crate::frustum::{LightDir, NPrime, ViewFrustum};
 use crate::maps::lightspace::light_space_dir;
 use crate::maps::warp::{warp_prepared, PreparedLight};
 use crate::maps::{warp, ShadowMatrix, WarpRule};
-use crate::measure::vertex::{vertex_max, VertexMax};
+use crate::measure::vertex::vertex_max;
+use crate::measure::FrustumError;
 use glam::{DMat4, DVec3, DVec4};
 
 /// One z-partition: its fitted map, the depth range it covers, and its measured maximum error.
@@ -64,14 +65,14 @@ pub struct Cascade {
     /// Where the next partition starts, z_{i+1} (without the overlap).
     pub split_far: f64,
     /// M_x, M_z over the fitted sub-frustum's eight corners (unit resolutions).
-    pub error: VertexMax,
+    pub error: FrustumError,
 }
 
 impl Cascade {
     /// S̄ = M_x M_z of this partition.
     #[must_use]
     pub fn storage_factor(&self) -> f64 {
-        self.error.storage_factor()
+        self.error.storage_factor
     }
 }
 
@@ -207,14 +208,6 @@ pub(crate) fn visit_cascades(
     // `warp(&sub, light_dir, rule)` for every partition, with the light space computed once.
     let light = PreparedLight::new(light_dir);
     let tan = view.tan_half_fov();
-    let ta = tan * view.aspect();
-    // Corner directions at unit depth, near-plane order of `ViewFrustum::corners`.
-    let dirs = [
-        DVec3::new(-ta, -tan, -1.0),
-        DVec3::new(ta, -tan, -1.0),
-        DVec3::new(ta, tan, -1.0),
-        DVec3::new(-ta, tan, -1.0),
-    ];
     for i in 0..k {
         let (a, b) = splits.range(i);
         let end = if i + 1 < k {
@@ -224,11 +217,7 @@ pub(crate) fn visit_cascades(
         };
         let sub = view.with_depth_range(a, end)?;
         let shadow = warp_prepared(&sub, &light, rule)?;
-        let mut corners = [DVec3::ZERO; 8];
-        for (j, d) in dirs.iter().enumerate() {
-            corners[j] = *d * a;
-            corners[j + 4] = *d * end;
-        }
+        let corners = sub.corners();
         let error =
             vertex_max(&shadow.matrix(), shadow.light_dir(), tan, &corners).ok_or_else(|| {
                 Error::Degenerate(format!(
@@ -384,8 +373,8 @@ pub fn stable_cascade(
         center: center_eye,
         radius: r,
         texel,
-        storage_factor: stable.storage_factor(),
-        tight_storage_factor: tight.storage_factor(),
+        storage_factor: stable.storage_factor,
+        tight_storage_factor: tight.storage_factor,
     })
 }
 

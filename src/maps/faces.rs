@@ -123,7 +123,8 @@ use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{LightDir, NPrime, ViewFrustum};
 use crate::maps::lightspace::light_space_dir;
 use crate::maps::{fit_warp, ShadowMatrix};
-use crate::measure::vertex::{vertex_max, VertexMax};
+use crate::measure::vertex::vertex_max;
+use crate::measure::FrustumError;
 use crate::numeric::EDGE_ON;
 use glam::{DMat4, DVec3};
 
@@ -410,14 +411,14 @@ pub struct FacePartition {
     /// The four vertices of this part of the face (where its error is measured).
     pub vertices: [DVec3; 4],
     /// M_x, M_z over `vertices` (unit resolutions).
-    pub error: VertexMax,
+    pub error: FrustumError,
 }
 
 impl FacePartition {
     /// S̄ = M_x M_z of this partition.
     #[must_use]
     pub fn storage_factor(&self) -> f64 {
-        self.error.storage_factor()
+        self.error.storage_factor
     }
 }
 
@@ -558,12 +559,12 @@ pub(crate) fn visit_face_partitions(
                 (view.near(), view.near())
             };
             let vertices = face.vertices_with(view, tan, ta, a, b);
-            let mut best: Option<(DMat4, NPrime, VertexMax)> = None;
+            let mut best: Option<(DMat4, NPrime, FrustumError)> = None;
             let mut err = first_err.clone();
             for ls in spaces.iter().flatten() {
                 match fitter.fit(ls, &vertices, face, (a, b)) {
                     Ok(c) => {
-                        if best.is_none_or(|b| c.2.storage_factor() < b.2.storage_factor()) {
+                        if best.is_none_or(|b| c.2.storage_factor < b.2.storage_factor) {
                             best = Some(c);
                         }
                     }
@@ -617,7 +618,7 @@ impl PartFitter {
         vertices: &[DVec3; 4],
         face: Face,
         (a, b): (f64, f64),
-    ) -> Result<(DMat4, NPrime, VertexMax)> {
+    ) -> Result<(DMat4, NPrime, FrustumError)> {
         let (y_lo, y_hi) = self.y_range;
         let (mut d_n, mut d_f) = (f64::INFINITY, f64::NEG_INFINITY);
         let mut swept = [DVec3::ZERO; 12];

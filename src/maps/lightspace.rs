@@ -23,6 +23,7 @@
 
 use crate::error::{Error, Result};
 use crate::frustum::LightDir;
+use crate::numeric::lane::{Lane, V3};
 use crate::numeric::PARALLEL_TOLERANCE;
 use glam::{DMat4, DVec3, DVec4};
 
@@ -126,23 +127,44 @@ fn scaled(v: DVec3) -> DVec3 {
 /// [`light_space`] for a unit light direction `l` and a unit axis `a`, already validated.
 #[inline]
 pub(crate) fn light_space_unit(l: LightDir, a: DVec3) -> LightSpace {
-    let y = -l.as_dvec3();
-    let mut z = a - a.dot(y) * y;
-    let mut len = z.length();
+    let y = V3::from(-l.as_dvec3());
+    let (mut z, mut len) = project_axis(y, V3::from(a));
     if len < PARALLEL_TOLERANCE {
-        z = DVec3::Y - y.y * y;
-        len = z.length();
+        let y = DVec3::from(y);
+        let mut zf = DVec3::Y - y.y * y;
+        len = zf.length();
         if len < 0.5 {
-            z = DVec3::X - y.x * y;
-            len = z.length();
+            zf = DVec3::X - y.x * y;
+            len = zf.length();
         }
+        z = V3::from(zf);
     }
-    // `z.normalize()` without its second square root (the same arithmetic: z · (1/|z|)).
-    let z = z * (1.0 / len);
-    let x = y.cross(z).normalize();
-    // Re-orthogonalise so the frame is orthonormal to rounding.
-    let z = x.cross(y);
-    LightSpace { x, y, z }
+    let (x, z) = frame_from_projected(y, z, len);
+    LightSpace {
+        x: x.into(),
+        y: y.into(),
+        z: z.into(),
+    }
+}
+
+/// The axis `a` projected perpendicular to `y`, `a − (a·y) y`, and its length: the warp axis of
+/// [`light_space_unit`] before the parallel test (the scalar builders and the sweep's lanes).
+#[inline(always)]
+pub(crate) fn project_axis<T: Lane>(y: V3<T>, a: V3<T>) -> (V3<T>, T) {
+    let z = a.perp(y);
+    (z, z.length())
+}
+
+/// The frame's x and z from `y` and the projected axis `z` of length `len`: `z · (1/|z|)` (glam's
+/// `normalize` without its second square root), `x = (y × z)` normalised, and z re-orthogonalised
+/// as `x × y` so the frame is orthonormal to rounding.
+#[inline(always)]
+pub(crate) fn frame_from_projected<T: Lane>(y: V3<T>, z: V3<T>, len: T) -> (V3<T>, V3<T>) {
+    let one = T::splat(1.0);
+    let z = z.scale(one / len);
+    let x = y.cross(z);
+    let x = x.scale(one / x.length());
+    (x, x.cross(y))
 }
 
 fn unit_axis(axis: DVec3) -> Result<DVec3> {

@@ -37,8 +37,9 @@ use crate::frustum::{LightAngle, LightDir, NPrime, ViewFrustum};
 use crate::maps::lightspace::{light_space_unit, LightSpace};
 use crate::maps::matrix::{zero_to_one, ShadowMatrix};
 use crate::maps::minimax;
+use crate::numeric::lane::{Lane, V3};
 use crate::numeric::{fmax, fmin, CLIP_SLACK};
-use glam::{DMat4, DVec3, DVec4};
+use glam::{DMat4, DVec3};
 
 pub use crate::analytic::tilted::Falloff;
 
@@ -167,8 +168,7 @@ pub(crate) struct FrustumInLight<const N: usize = 8> {
 }
 
 impl FrustumInLight {
-    // Always inlined: as a call, its 600-byte `Result<Self>` is built on the callee's stack and
-    // copied out with `memcpy` (11 % of the LiSPSM builder's instructions).
+    // Always inlined (docs/performance.md, "Code-generation notes").
     #[inline(always)]
     pub(crate) fn new(view: &ViewFrustum, light_dir: DVec3) -> Result<Self> {
         Ok(Self::from_dir(view, LightDir::new(light_dir)?))
@@ -201,25 +201,14 @@ impl FrustumInLight {
         // `e·c = (e.x c.x + e.y c.y) + e.z c.z` for e = x, y, z share the products e.x w, e.y h,
         // e.z (−d) up to sign (negation is exact), so computing the products once per depth gives
         // the dot products of `LightSpace::to_light` bit for bit, in a third of the multiplications.
-        let t = view.tan_half_fov();
+        let (x, y, z) = (V3::from(ls.x), V3::from(ls.y), V3::from(ls.z));
         let mut q = [DVec3::ZERO; 8];
         let mut depth = [0.0; 8];
         let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
-        for (k, d) in [view.near(), view.far()].into_iter().enumerate() {
-            let h = d * t;
-            let w = h * view.aspect();
-            let px = DVec3::new(ls.x.x, ls.y.x, ls.z.x) * w;
-            let py = DVec3::new(ls.x.y, ls.y.y, ls.z.y) * h;
-            let pz = DVec3::new(ls.x.z, ls.y.z, ls.z.z) * -d;
-            // Corner order of `ViewFrustum::corners`: (−w, −h), (w, −h), (w, h), (−w, h).
-            let c = [
-                (-px - py) + pz,
-                (px - py) + pz,
-                (px + py) + pz,
-                (-px + py) + pz,
-            ];
-            for (j, qj) in c.into_iter().enumerate() {
-                q[4 * k + j] = qj;
+        for (k, slice) in slices(&corners).into_iter().enumerate() {
+            let d = slice.2;
+            for (j, qj) in light_corners(x, y, z, slice).into_iter().enumerate() {
+                q[4 * k + j] = qj.into();
                 depth[4 * k + j] = d;
                 z0 = fmin(z0, qj.z);
                 z1 = fmax(z1, qj.z);
@@ -233,10 +222,7 @@ impl FrustumInLight {
             depth,
             z0,
             delta: z1 - z0,
-            sin_gamma: {
-                let l = l.as_dvec3();
-                (l.x * l.x + l.y * l.y).sqrt().min(1.0)
-            },
+            sin_gamma: sin_gamma(V3::from(l.as_dvec3())),
         }
     }
 }
@@ -271,6 +257,45 @@ impl<const N: usize> FrustumInLight<N> {
             sin_gamma: (l.x * l.x + l.y * l.y).sqrt().min(1.0),
         })
     }
+}
+
+/// `(w, h, d)` of a view frustum's four corners `(±w, ±h, −d)` at the depths near and far, from
+/// its corners in [`ViewFrustum::corners`] order (corner 2 of each depth is `(+w, +h, −d)`).
+#[inline(always)]
+pub(crate) fn slices(corners: &[DVec3; 8]) -> [(f64, f64, f64); 2] {
+    let (a, b) = (corners[2], corners[6]);
+    [(a.x, a.y, -a.z), (b.x, b.y, -b.z)]
+}
+
+/// sin γ = |l × (0, 0, −1)| = √(l.x² + l.y²) for the unit light direction l (accurate near 0),
+/// at most 1.
+#[inline(always)]
+pub(crate) fn sin_gamma<T: Lane>(l: V3<T>) -> T {
+    (l.x * l.x + l.y * l.y).sqrt().min(T::splat(1.0))
+}
+
+/// The light-space coordinates `(x·c, y·c, z·c)` of the four corners `(±w, ±h, −d)` of one depth
+/// of a view frustum, in `ViewFrustum::corners` order: `e·c = (e.x c.x + e.y c.y) + e.z c.z` for
+/// e = x, y, z share the products e.x w, e.y h, e.z (−d) up to sign (negation is exact), so
+/// computing them once per depth gives [`LightSpace::to_light`]'s dot products bit for bit, in a
+/// third of the multiplications.
+#[inline(always)]
+pub(crate) fn light_corners<T: Lane>(
+    x: V3<T>,
+    y: V3<T>,
+    z: V3<T>,
+    (w, h, d): (f64, f64, f64),
+) -> [V3<T>; 4] {
+    let (w, h, nd) = (T::splat(w), T::splat(h), T::splat(-d));
+    let px = V3::new(x.x * w, y.x * w, z.x * w);
+    let py = V3::new(x.y * h, y.y * h, z.y * h);
+    let pz = V3::new(x.z * nd, y.z * nd, z.z * nd);
+    [
+        (-px - py) + pz,
+        (px - py) + pz,
+        (px + py) + pz,
+        (-px + py) + pz,
+    ]
 }
 
 /// The perspective warp of the module docs along `ls.z` with parameter `n_prime`, fitted tightly
@@ -312,7 +337,7 @@ pub fn fit_warp(points: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DM
         if !p.is_finite() {
             return Err(not_finite_point(*p));
         }
-        // Finite values: the one-instruction min/max are `f64::min`/`max`.
+        // Finite values: `fmin`/`fmax` are `f64::min`/`max` here.
         let z = ls.z.dot(*p);
         z0 = fmin(z0, z);
         z1 = fmax(z1, z);
@@ -349,7 +374,7 @@ pub(crate) fn verify_clip<'a>(m: &DMat4, points: impl Iterator<Item = &'a DVec3>
     let m01 = zero_to_one(m);
     for p in points {
         let h = *m * p.extend(1.0);
-        let ok = in_clip(h) && in_unit_depth((m01 * p.extend(1.0)).z, h.w);
+        let ok = in_clip(h.to_array()) && in_unit_depth((m01 * p.extend(1.0)).z, h.w);
         if !ok {
             return Err(Error::Degenerate(format!(
                 "the map cannot be represented in f64 for this frustum (a point maps to {h}): \
@@ -362,23 +387,84 @@ pub(crate) fn verify_clip<'a>(m: &DMat4, points: impl Iterator<Item = &'a DVec3>
 
 /// Running min/max of u = x/w and v = y/w.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Ranges {
-    pub u: (f64, f64),
-    pub v: (f64, f64),
+pub(crate) struct Ranges<T = f64> {
+    pub u: (T, T),
+    pub v: (T, T),
 }
 
-impl Ranges {
+impl<T: Lane> Ranges<T> {
+    #[inline(always)]
     pub(crate) fn new() -> Self {
+        let (lo, hi) = (T::splat(f64::INFINITY), T::splat(f64::NEG_INFINITY));
         Self {
-            u: (f64::INFINITY, f64::NEG_INFINITY),
-            v: (f64::INFINITY, f64::NEG_INFINITY),
+            u: (lo, hi),
+            v: (lo, hi),
         }
     }
-    #[inline]
-    pub(crate) fn add(&mut self, u: f64, v: f64) {
-        self.u = (fmin(self.u.0, u), fmax(self.u.1, u));
-        self.v = (fmin(self.v.0, v), fmax(self.v.1, v));
+    #[inline(always)]
+    pub(crate) fn add(&mut self, u: T, v: T) {
+        self.u = (self.u.0.min(u), self.u.1.max(u));
+        self.v = (self.v.0.min(v), self.v.1.max(v));
     }
+
+    /// The ranges of `x/w`, `y/w` over light-space points `q` for the warp `w = 1 + ρ (z − z₀)`:
+    /// one division per point (within an ulp of x/w and y/w); where ρ is 0 in every lane, `w = 1`
+    /// exactly and the points' x, y are taken as they are (the same values).
+    #[inline(always)]
+    pub(crate) fn of_warped(q: impl IntoIterator<Item = V3<T>>, z0: T, rho: T) -> Self {
+        let mut r = Self::new();
+        if rho.all_zero() {
+            for q in q {
+                r.add(q.x, q.y);
+            }
+        } else {
+            let one = T::splat(1.0);
+            for q in q {
+                let iw = one / (one + rho * (q.z - z0));
+                r.add(q.x * iw, q.y * iw);
+            }
+        }
+        r
+    }
+
+    /// `(u_h, u_m, v_h, v_m)`: the half-widths and middles of the ranges, `½ (hi − lo)`,
+    /// `½ (hi + lo)` (v_h before [`warp_matrix`]'s floor).
+    #[inline(always)]
+    pub(crate) fn halves(&self) -> (T, T, T, T) {
+        let half = T::splat(0.5);
+        (
+            half * (self.u.1 - self.u.0),
+            half * (self.u.1 + self.u.0),
+            half * (self.v.1 - self.v.0),
+            half * (self.v.1 + self.v.0),
+        )
+    }
+}
+
+/// One row of a shadow matrix: its eye-space part and its constant.
+pub(crate) type Row<T> = (V3<T>, T);
+
+/// The rows of the module docs' warp matrix for the frame `(x, y, z)`, composed with the rotation
+/// (rows x, y, z of eye space) directly: `row · (x·p, y·p, z·p, 1) = (row.x x + row.y y + row.z z)
+/// · p + row.w`. `w = ρ z + a` with `a = 1 − ρ z₀`.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn warp_rows<T: Lane>(
+    (x, y, z): (V3<T>, V3<T>, V3<T>),
+    z0: T,
+    delta: T,
+    rho: T,
+    (u_h, u_m, v_h, v_m): (T, T, T, T),
+) -> [Row<T>; 4] {
+    let a = T::splat(1.0) - rho * z0;
+    let k = T::splat(2.0) / delta + rho;
+    let (um_rho, vm_rho) = (u_m * rho, v_m * rho);
+    [
+        ((x - z.scale(um_rho)).div(u_h), -u_m * a / u_h),
+        (z.scale(k), T::splat(-1.0) - k * z0),
+        ((z.scale(vm_rho) - y).div(v_h), v_m * a / v_h),
+        (z.scale(rho), a),
+    ]
 }
 
 /// Assembles the matrix of the module docs. `extent` is the points' largest coordinate magnitude
@@ -396,22 +482,16 @@ pub(crate) fn warp_matrix(
     if delta.is_nan() || delta <= tiny {
         return Err(no_extent("along", delta));
     }
-    let u_h = 0.5 * (r.u.1 - r.u.0);
-    let u_m = 0.5 * (r.u.1 + r.u.0);
+    let (u_h, u_m, v_h, v_m) = r.halves();
     if u_h.is_nan() || u_h <= tiny {
         return Err(no_extent("across", 2.0 * u_h));
     }
-    let v_h = (0.5 * (r.v.1 - r.v.0)).max(1e-9 * extent.max(f64::MIN_POSITIVE));
-    let v_m = 0.5 * (r.v.1 + r.v.0);
-    let a = 1.0 - rho * z0; // w = rho z + a
-    let k = 2.0 / delta + rho;
-    // Rows in light space, composed with the rotation (rows x, y, z of eye space) directly:
-    // row · (x·p, y·p, z·p, 1) = (row.x x + row.y y + row.z z) · p + row.w.
-    let (ex, ey, ez) = (ls.x, ls.y, ls.z);
-    let row0 = ((ex - u_m * rho * ez) / u_h).extend(-u_m * a / u_h);
-    let row1 = (k * ez).extend(-1.0 - k * z0);
-    let row2 = ((v_m * rho * ez - ey) / v_h).extend(v_m * a / v_h);
-    let row3 = (rho * ez).extend(a);
+    let v_h = v_h.max(1e-9 * extent.max(f64::MIN_POSITIVE));
+    let frame = (V3::from(ls.x), V3::from(ls.y), V3::from(ls.z));
+    let rows = warp_rows(frame, z0, delta, rho, (u_h, u_m, v_h, v_m));
+    let [r0, r1, r2, r3] = rows;
+    let row = |(v, w): Row<f64>| DVec3::from(v).extend(w);
+    let (row0, row1, row2, row3) = (row(r0), row(r1), row(r2), row(r3));
     let m = DMat4::from_cols(row0, row1, row2, row3).transpose();
     if !m.is_finite() {
         return Err(not_finite_warp());
@@ -519,17 +599,7 @@ fn warp_fitted(view: &ViewFrustum, fl: &FrustumInLight, rule: WarpRule) -> Resul
 #[inline]
 pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4> {
     let rho = n_prime.recip();
-    let mut r = Ranges::new();
-    if rho == 0.0 {
-        for q in &fl.q {
-            r.add(q.x, q.y);
-        }
-    } else {
-        for q in &fl.q {
-            let iw = 1.0 / (1.0 + rho * (q.z - fl.z0));
-            r.add(q.x * iw, q.y * iw);
-        }
-    }
+    let r = Ranges::of_warped(fl.q.iter().map(|&q| V3::from(q)), fl.z0, rho);
     let extent = fl.q.iter().fold(0.0f64, |m, q| {
         let a = q.abs();
         fmax(m, fmax(fmax(a.x, a.y), a.z))
@@ -544,50 +614,82 @@ pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4>
 }
 
 /// [`verify_clip`]'s test at the eight corners of a view frustum (`ViewFrustum::corners`
-/// order), bit for bit: `M (c, 1)` is `((M₀ c.x + M₁ c.y) + M₂ c.z) + M₃` (glam's order), and with
-/// c = (±w, ±h, −d) the products M₀ w, M₁ h, M₂ (−d) are shared by the four corners of a depth up
-/// to exact sign changes: 6 vector products instead of 32.
+/// order), bit for bit, through [`clip_at_slices`].
 #[inline]
 fn clip_ok_at_corners(m: &DMat4, corners: &[DVec3; 8]) -> bool {
-    let m01 = zero_to_one(m);
-    let mut ok = true;
-    for k in 0..2 {
-        let c = corners[4 * k + 2]; // (+w, +h, −d)
-        let a = m.x_axis * c.x;
-        let b = m.y_axis * c.y;
-        let z = m.z_axis * c.z;
-        let (a1, b1, z1) = (m01.x_axis.z * c.x, m01.y_axis.z * c.y, m01.z_axis.z * c.z);
-        let z01 = [
-            (-a1 - b1) + z1,
-            (a1 - b1) + z1,
-            (a1 + b1) + z1,
-            (-a1 + b1) + z1,
-        ];
-        for (h, z01) in [(-a - b) + z, (a - b) + z, (a + b) + z, (-a + b) + z]
-            .into_iter()
-            .zip(z01)
-        {
-            let h = h + m.w_axis;
-            ok &= in_clip(h) && in_unit_depth(z01 + m01.w_axis.z, h.w);
+    let row = |i: usize| {
+        let r = m.row(i);
+        (V3::from(r.truncate()), r.w)
+    };
+    let rows = [row(0), row(1), row(2), row(3)];
+    clip_at_slices(&rows, &slices(corners)).1
+}
+
+/// `M (c, 1)` for the four corners `c = (±w, ±h, −d)` of one depth (`ViewFrustum::corners`
+/// order), one row of M at a time: `((M₀ c.x + M₁ c.y) + M₂ c.z) + M₃` is glam's order, and the
+/// products `M₀ w`, `M₁ h`, `M₂ (−d)` are shared by the four corners up to exact sign changes, so
+/// the four values are glam's `M · (c, 1)` bit for bit from a quarter of the multiplications.
+#[inline(always)]
+pub(crate) fn row_at_slice<T: Lane>((v, w0): &Row<T>, (w, h, d): (f64, f64, f64)) -> [T; 4] {
+    let a = v.x * T::splat(w);
+    let b = v.y * T::splat(h);
+    let c = v.z * T::splat(-d);
+    [
+        ((-a - b) + c) + *w0,
+        ((a - b) + c) + *w0,
+        ((a + b) + c) + *w0,
+        ((-a + b) + c) + *w0,
+    ]
+}
+
+/// [`verify_clip`]'s test (both clip-depth forms) at the eight corners of two depths
+/// `(w, h, d)` of a view frustum, and `M (c, 1)` at each (`[depth][corner][x, y, z, w]`), for
+/// the rows of M: the scalar builders' check at `f64` and the sweep's at four directions.
+#[inline(always)]
+pub(crate) fn clip_at_slices<T: Lane>(
+    rows: &[Row<T>; 4],
+    slices: &[(f64, f64, f64); 2],
+) -> ([[[T; 4]; 4]; 2], T::Mask) {
+    // The `[0, 1]`-depth form's depth row, `(M₂ + M₃)/2` as `zero_to_one` forms it.
+    let half = T::splat(0.5);
+    let (r2, r3) = (&rows[2], &rows[3]);
+    let row01 = ((r2.0 + r3.0).scale(half), (r2.1 + r3.1) * half);
+    // Plain loops, not `array::map`/`from_fn` closures (which do not always inline).
+    let mut ok = T::all_set();
+    let mut h = [[[T::splat(0.0); 4]; 4]; 2];
+    for (hk, &slice) in h.iter_mut().zip(slices) {
+        let r0 = row_at_slice(&rows[0], slice);
+        let r1 = row_at_slice(&rows[1], slice);
+        let r2 = row_at_slice(&rows[2], slice);
+        let r3 = row_at_slice(&rows[3], slice);
+        let z01 = row_at_slice(&row01, slice);
+        for j in 0..4 {
+            let hj = [r0[j], r1[j], r2[j], r3[j]];
+            ok = T::and(ok, T::and(in_clip(hj), in_unit_depth(z01[j], hj[3])));
+            hk[j] = hj;
         }
     }
-    ok
+    (h, ok)
 }
 
 /// `h` (OpenGL depth) inside the clip volume, within [`CLIP_SLACK`], with w ∈ [1/2, ∞) finite
 /// (an infinite w would admit infinite x, y, z).
 #[inline(always)]
-fn in_clip(h: DVec4) -> bool {
-    let s = (1.0 + CLIP_SLACK) * h.w;
-    h.w >= 0.5 && h.w < f64::INFINITY && h.x.abs() <= s && h.y.abs() <= s && h.z.abs() <= s
+fn in_clip<T: Lane>([x, y, z, w]: [T; 4]) -> T::Mask {
+    let s = T::splat(1.0 + CLIP_SLACK) * w;
+    let and = T::and;
+    and(
+        and(w.ge(T::splat(0.5)), w.lt(T::splat(f64::INFINITY))),
+        and(x.abs().le(s), and(y.abs().le(s), z.abs().le(s))),
+    )
 }
 
 /// The `[0, 1]`-depth form's z of the same point inside [0, w], within [`CLIP_SLACK`] of its
 /// half-width w/2.
 #[inline(always)]
-fn in_unit_depth(z01: f64, w: f64) -> bool {
-    let s = 0.5 * CLIP_SLACK * w;
-    z01 >= -s && z01 <= w + s
+fn in_unit_depth<T: Lane>(z01: T, w: T) -> T::Mask {
+    let s = T::splat(0.5 * CLIP_SLACK) * w;
+    T::and(z01.ge(-s), z01.le(w + s))
 }
 
 /// The n′ that `rule` chooses for the whole view frustum and this light (see [`WarpRule`]).
@@ -643,26 +745,13 @@ pub(crate) fn rule_n_prime_on<const N: usize>(
         WarpRule::Eta(eta) => crate::analytic::eta::n_prime_from_eta(n, f, eta)?,
         WarpRule::Psm => NPrime::finite_unchecked(n),
         WarpRule::LispsmFixed => NPrime::finite_unchecked(view.n_prime_lispsm()),
-        WarpRule::Lispsm => {
-            if sin_g > 0.0 {
-                NPrime::finite_or_unwarped(view.n_prime_lispsm() / sin_g)
-            } else {
-                NPrime::UNWARPED
-            }
-        }
+        WarpRule::Lispsm => lane_n_prime(lispsm_sin_n_prime(view.n_prime_lispsm(), sin_g)),
         WarpRule::Barroso(falloff) => {
             let gamma = LightAngle::from_light_dir(fl.ls.light_dir())?;
             crate::analytic::tilted::generalized_n_prime(view, gamma, falloff)
         }
         WarpRule::Tsm { focus } => tsm_rule(view, fl, focus)?,
-        WarpRule::LispsmReference => {
-            let x = fl.delta * sin_g / n;
-            if x > 0.0 {
-                NPrime::finite_or_unwarped(fl.delta * ((1.0 + x).sqrt() + 1.0) / x)
-            } else {
-                NPrime::UNWARPED
-            }
-        }
+        WarpRule::LispsmReference => lane_n_prime(reference_n_prime(fl.delta, sin_g, n)),
         WarpRule::Filament => filament_n_prime(camera, view, fl, 1.0, 100.0)?,
         WarpRule::FilamentHints {
             near_hint,
@@ -676,6 +765,37 @@ pub(crate) fn rule_n_prime_on<const N: usize>(
         WarpRule::Minimax => minimax::min_storage(view, fl).n_prime,
         WarpRule::MinimaxMz => minimax::minimax_mz(view, fl).n_prime,
     })
+}
+
+/// The n′ of a rule the sweep's lanes also compute: `Finite(v)` where the rule's guard holds,
+/// else `Unwarped`.
+#[inline(always)]
+fn lane_n_prime((v, ok): (f64, bool)) -> NPrime {
+    if ok {
+        NPrime::finite_unchecked(v)
+    } else {
+        NPrime::UNWARPED
+    }
+}
+
+/// [`WarpRule::Lispsm`]'s n′ = n′_LSPSM / sin γ and whether it is a warp: sin γ > 0 and the
+/// quotient finite and positive (else the map is unwarped).
+#[inline(always)]
+pub(crate) fn lispsm_sin_n_prime<T: Lane>(n_lispsm: T, sin_g: T) -> (T, T::Mask) {
+    let v = n_lispsm / sin_g;
+    let zero = T::splat(0.0);
+    (v, T::and(sin_g.gt(zero), T::and(v.finite(), v.gt(zero))))
+}
+
+/// [`WarpRule::LispsmReference`]'s n′ = Δ(√(1 + x) + 1)/x with x = Δ sin γ/n, and whether it is a
+/// warp: x > 0 and n′ finite and positive.
+#[inline(always)]
+pub(crate) fn reference_n_prime<T: Lane>(delta: T, sin_g: T, n: T) -> (T, T::Mask) {
+    let one = T::splat(1.0);
+    let x = delta * sin_g / n;
+    let v = delta * ((one + x).sqrt() + one) / x;
+    let zero = T::splat(0.0);
+    (v, T::and(x.gt(zero), T::and(v.finite(), v.gt(zero))))
 }
 
 /// OGRE's `calculateNOptSimple` with `getShadowCamera`'s ramp (see [`WarpRule::Ogre`]).
@@ -889,4 +1009,45 @@ fn filament_n_prime<const N: usize>(
     let nopt0 = (z0 + (vz0 * vz1).sqrt()) / sin_lv;
     let nopt1 = dzn / (2.0 - 3.0 * (dzn / (zf - zn)));
     Ok(NPrime::finite_or_unwarped(nopt0.max(nopt1)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+        /// The shared-product clip check at a frustum's eight corners is the plain point-by-point
+        /// `verify_clip` (both clip-depth forms), accepting and refusing alike: fitted maps over
+        /// views, lights and n′, and the same maps with one row scaled so that some corners leave
+        /// the clip volume.
+        #[test]
+        fn clip_ok_at_corners_is_verify_clip(
+            ln_n in -5.0f64..5.0,
+            ln_alpha in 0.01f64..14.0,
+            theta in 0.05f64..1.5,
+            aspect in 0.3f64..3.0,
+            el in -1.5f64..1.5,
+            az in 0.0f64..std::f64::consts::TAU,
+            ln_np in -3.0f64..6.0,
+            row in 0usize..4,
+            scale in prop::sample::select(vec![1.0, 1.0 + 2e-6, 0.999_999, 1.5, 0.4, -1.0]),
+        ) {
+            let n = ln_n.exp();
+            let view = ViewFrustum::with_aspect(n, n * ln_alpha.exp(), theta, aspect).unwrap();
+            let l = -DVec3::new(el.cos() * az.sin(), el.sin(), el.cos() * az.cos());
+            let Ok(fl) = FrustumInLight::new(&view, l) else { return Ok(()) };
+            let Ok(m) = fit_frustum(&fl, NPrime::finite(n * ln_np.exp()).unwrap()) else { return Ok(()) };
+            let mut t = m.transpose();
+            let r = t.col_mut(row);
+            *r *= scale;
+            let m = t.transpose();
+            let corners = view.corners();
+            prop_assert_eq!(
+                clip_ok_at_corners(&m, &corners),
+                verify_clip(&m, corners.iter()).is_ok()
+            );
+        }
+    }
 }

@@ -341,7 +341,7 @@ pub struct FrustumError {
 /// [`Error::Degenerate`] when M_x, M_z or their product overflows `f64`.
 pub fn frustum_max(view: &ViewFrustum, shadow: &ShadowMap) -> Result<FrustumError> {
     let corners = view.corners();
-    match vertex_max_fast(view, shadow, &corners) {
+    match vertex_max_checked(view, shadow, &corners) {
         Some(e) => Ok(e),
         // Anything the fast pass is not sure of (an error, or a value near a tolerance) is
         // measured point by point, which reports the same error `point_error` does.
@@ -349,23 +349,16 @@ pub fn frustum_max(view: &ViewFrustum, shadow: &ShadowMap) -> Result<FrustumErro
     }
 }
 
-/// [`max_over`] at the frustum's eight corners without a division or square root per gradient:
+/// [`max_over`] at the frustum's eight corners with the one vertex kernel
+/// ([`vertex::vertex_max`]'s [`vertex::Kernel`]) and, beside it, what [`point_error`] validates:
 /// `None` whenever [`point_error`] could fail at a corner (or the light direction is not unit
 /// length), so the caller falls back to it. With `h = M (p, 1)`, `G_s = h.w M₀ − h.x M₃`,
 /// `G_t = h.w M₁ − h.y M₃` (rows of M, first three entries; `∇s = G_s/(2 h.w²)`,
-/// `∇t = G_t/(2 h.w²)`), `D = (G_s × G_t)·L` and `g = |G_t − (G_t·L) L|`, the widths of the module
-/// docs give, with unit resolutions,
-///
-/// ```text
-/// m_x = h.w² g / (|D| z tan θ),   m_z = h.w² |D| / (|D| g z tan θ)     (z = −p.z)
-/// ```
-///
-/// one square root and one division per corner; `None` too when S̄ = M_x M_z overflows. The
-/// light-ray test `|∇s·L| ≤ 10⁻⁷ |∇s|` is
-/// scale-free, so it is made on `G_s`, `G_t` in squares, with a 10⁻⁹ relative margin inside
-/// which the point-by-point path decides.
+/// `∇t = G_t/(2 h.w²)`), the light-ray test `|∇s·L| ≤ 10⁻⁷ |∇s|` is scale-free, so it is made
+/// on `G_s`, `G_t` in squares, with a 10⁻⁹ relative margin inside which the point-by-point path
+/// decides; likewise the rounding bound. `None` too when S̄ = M_x M_z overflows.
 #[inline]
-fn vertex_max_fast(
+fn vertex_max_checked(
     view: &ViewFrustum,
     shadow: &ShadowMap,
     corners: &[DVec3; 8],
@@ -376,47 +369,33 @@ fn vertex_max_fast(
         return None;
     }
     let m = &shadow.matrix;
+    let kernel = vertex::Kernel::new(m, l);
     let r0 = m.row(0).truncate();
     let r1 = m.row(1).truncate();
+    let r2 = m.row(2);
     let r3 = m.row(3).truncate();
     let tol2 = LIGHT_RAY_TOLERANCE * LIGHT_RAY_TOLERANCE * (1.0 - 1e-9);
     let rounding = Rounding::new(m, l);
-    let t = view.tan_half_fov();
-    let (mut mx, mut mz) = (0.0f64, 0.0f64);
+    let mut max = vertex::Maxima::new();
     let mut ok = true;
     for p in corners {
-        let h = *m * p.extend(1.0);
-        let z = -p.z;
+        let [hx, hy, hw] = kernel.homogeneous(*p);
+        let hz = ((r2.x * p.x + r2.y * p.y) + r2.z * p.z) + r2.w;
+        let h = DVec4::new(hx, hy, hz, hw);
+        let w = kernel.widths([hx, hy, hw], -p.z);
         let gs = h.w * r0 - h.x * r3;
         let gt = h.w * r1 - h.y * r3;
         let (gsl, gtl) = (gs.dot(l), gt.dot(l));
-        let gt2 = gt.length_squared();
-        let g = (gt2 - gtl * gtl).max(0.0).sqrt();
-        let d = gs.cross(gt).dot(l).abs();
-        let w2 = h.w * h.w;
-        let inv = 1.0 / (d * g * z * t);
-        let (px, pz) = (w2 * g * g * inv, w2 * d * inv);
-        ok &= h.is_finite()
-            && h.w > 0.0
-            && z > 0.0
+        ok &= w.ok
+            && h.is_finite()
             && gsl * gsl <= tol2 * gs.length_squared()
-            && gtl * gtl <= tol2 * gt2
-            && px.is_finite()
-            && pz.is_finite()
-            && px > 0.0
-            && pz > 0.0
+            && gtl * gtl <= tol2 * gt.length_squared()
             && rounding.bound(*p, h, gs, gt, l) <= ROUNDING_TOLERANCE * (1.0 - 1e-9);
-        // A NaN here fails `ok`, so the one-instruction max is `f64::max` for every kept value.
-        mx = crate::numeric::fmax(mx, px);
-        mz = crate::numeric::fmax(mz, pz);
+        max.add(&w);
     }
     // An overflowing S̄ is an error `max_over` reports.
-    ok &= (mx * mz).is_finite();
-    ok.then_some(FrustumError {
-        max_mx: mx,
-        max_mz: mz,
-        storage_factor: mx * mz,
-    })
+    let e = max.finish(view.tan_half_fov())?;
+    (ok && e.storage_factor.is_finite()).then_some(e)
 }
 
 /// As [`frustum_max`], but over a dense `n × n × n` grid of the frustum (in depth, and in the

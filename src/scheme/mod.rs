@@ -273,15 +273,7 @@ pub(crate) struct Prepared {
 impl Prepared {
     pub(crate) fn new(view: &ViewFrustum) -> Self {
         let tan = view.tan_half_fov();
-        let ta = tan * view.aspect();
-        let mut corners = [DVec3::ZERO; 8];
-        for (j, d) in [(-ta, -tan), (ta, -tan), (ta, tan), (-ta, tan)]
-            .iter()
-            .enumerate()
-        {
-            corners[j] = DVec3::new(d.0 * view.near(), d.1 * view.near(), -view.near());
-            corners[j + 4] = DVec3::new(d.0 * view.far(), d.1 * view.far(), -view.far());
-        }
+        let corners = view.corners();
         Self {
             view: *view,
             tan,
@@ -334,7 +326,7 @@ fn fill(
                 far: view.far(),
                 max_mx: e.max_mx,
                 max_mz: e.max_mz,
-                storage_factor: e.storage_factor(),
+                storage_factor: e.storage_factor,
                 region: Region::Frustum,
             });
             return Ok(());
@@ -360,7 +352,7 @@ fn fill(
                 far: p.shadow.far(),
                 max_mx: p.error.max_mx,
                 max_mz: p.error.max_mz,
-                storage_factor: p.error.storage_factor(),
+                storage_factor: p.error.storage_factor,
                 region: Region::Face(p.face),
             });
         })
@@ -374,7 +366,7 @@ fn fill(
                 far: c.shadow.far(),
                 max_mx: c.error.max_mx,
                 max_mz: c.error.max_mz,
-                storage_factor: c.error.storage_factor(),
+                storage_factor: c.error.storage_factor,
                 region: Region::Frustum,
             });
         })

@@ -28,9 +28,9 @@
 //! [`sweep`] measures the scheme's own matrices at the vertices of each partition only, with
 //! [`vertex_max`](crate::measure::vertex::vertex_max) (no validation, no allocation); each elevation row reuses one stack-allocated
 //! [`SchemeResult`]. A single map ([`Partition::Single`]) of the uniform, PSM, LiSPSM, η, 1/sin γ
-//! LiSPSM or reference LiSPSM rule is evaluated four directions at a time: the same IEEE
-//! operations in the same order as the scalar builder and [`vertex_max`](crate::measure::vertex::vertex_max), laid out across
-//! directions so that one SSE2 instruction serves two of them, and every value is the scalar
+//! LiSPSM or reference LiSPSM rule is evaluated four directions at a time: the scalar builder's
+//! and [`vertex_max`](crate::measure::vertex::vertex_max)'s own functions, generic over
+//! `numeric::lane`, run on four directions laid out side by side, so every value is the scalar
 //! scheme's bit for bit; a direction the lane code does not take (the light parallel to the view
 //! axis, a degenerate fit, any doubt) goes through the scalar code. With the `parallel` feature
 //! the rows are spread over all cores with rayon; without it the same code runs serially.
@@ -232,7 +232,7 @@ pub fn sweep_into(
     // bit the scalar values (`lanes`).
     let lanes = if partition == Partition::Single {
         let fixed = crate::maps::n_prime_for(view, DVec3::NEG_Y, rule).ok();
-        LaneSweep::new(view, rule, fixed, &prep.corners, prep.tan)
+        LaneSweep::new(view, rule, fixed)
     } else {
         None
     };

@@ -49,7 +49,7 @@ pub fn faces_with_axis(view: &ViewFrustum, l: DVec3, unit: bool) -> Option<f64> 
             pts.push(q - 3.0 * view.far() * l);
         }
         let m = fit_warp(&pts, &ls, NPrime::finite(dn + (dn * df).sqrt()).unwrap()).unwrap();
-        total += vertex_max(&m, l, t, &v).unwrap().storage_factor();
+        total += vertex_max(&m, l, t, &v).unwrap().storage_factor;
     }
     Some(total)
 }

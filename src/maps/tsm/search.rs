@@ -384,9 +384,9 @@ impl<const N: usize, const H: usize> FastArea<N, H> {
         if hn < 3 {
             return 0.0;
         }
-        // The divisions two at a time (independent, so the compiler can pair them in one SSE2
-        // `divpd`), the min/max and the sum in the same order as one at a time: bit for bit.
-        // η > 0 and d ≥ 0, so no value is NaN and the one-instruction min/max are exact.
+        // The divisions two at a time (docs/performance.md, "Code-generation notes"), the
+        // min/max and the sum in the same order as one at a time: bit for bit. η > 0 and d ≥ 0,
+        // so no value is NaN and `fmin`/`fmax` are exact.
         let (mut s_min, mut s_max) = (f64::INFINITY, f64::NEG_INFINITY);
         let m = self.m;
         let mut j = 0;
