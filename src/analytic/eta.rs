@@ -101,7 +101,16 @@ fn n_prime_below_near(v: f64, near: f64) -> Error {
 #[inline]
 pub fn n_prime_lispsm(near: f64, far: f64) -> Result<f64> {
     let (n, f) = near_far(near, far)?;
-    finite_result("n_prime", n + sqrt_fn(n, f))
+    finite_result("n_prime", n_prime_lispsm_unchecked(n, f))
+}
+
+/// [`n_prime_lispsm`] without validation, n + √(f n), for callers that have checked the domain
+/// (the Python bindings' array path). Equal, bit for bit, to [`n_prime_lispsm`] wherever it
+/// returns `Ok`; meaningless outside that domain.
+#[inline(always)]
+#[must_use]
+pub fn n_prime_lispsm_unchecked(near: f64, far: f64) -> f64 {
+    near + sqrt_fn(near, far)
 }
 
 /// PSM's warp parameter: n′ = n, the warping frustum's centre of projection at the eye
@@ -132,20 +141,40 @@ pub fn n_prime_psm(near: f64, far: f64) -> Result<f64> {
 pub fn n_prime_from_eta(near: f64, far: f64, eta: f64) -> Result<NPrime> {
     let (n, f) = near_far(near, far)?;
     let eta = in_closed("eta", eta, -1.0, 1.0)?;
-    let alpha = f / n;
-    let ra = alpha.sqrt();
+    let v = n_prime_from_eta_unchecked(n, f, eta);
     if eta <= 0.0 {
-        if eta == -1.0 {
-            return Ok(NPrime::Unwarped);
-        }
-        let v = n * ((ra + 1.0 - eta * (alpha - 1.0)) / (eta + 1.0));
         if v.is_finite() {
             Ok(NPrime::Finite(v))
         } else {
             Ok(NPrime::Unwarped)
         }
     } else {
-        finite_result("n_prime", n * ((ra + 1.0) / (eta * ra + 1.0))).map(NPrime::Finite)
+        finite_result("n_prime", v).map(NPrime::Finite)
+    }
+}
+
+/// [`n_prime_from_eta`] without validation, n′ as an `f64`: `f64::INFINITY` for η = −1 and
+/// wherever n′ overflows for η ≤ 0 (the unwarped map). Equal, bit for bit, to
+/// `n_prime_from_eta(..)?.value()` wherever that returns `Ok` (for η > 0 it requires a finite
+/// result); meaningless outside the domain.
+#[inline(always)]
+#[must_use]
+pub fn n_prime_from_eta_unchecked(near: f64, far: f64, eta: f64) -> f64 {
+    let n = near;
+    let alpha = far / n;
+    let ra = alpha.sqrt();
+    if eta <= 0.0 {
+        if eta == -1.0 {
+            return f64::INFINITY;
+        }
+        let v = n * ((ra + 1.0 - eta * (alpha - 1.0)) / (eta + 1.0));
+        if v.is_finite() {
+            v
+        } else {
+            f64::INFINITY
+        }
+    } else {
+        n * ((ra + 1.0) / (eta * ra + 1.0))
     }
 }
 
@@ -170,11 +199,20 @@ pub fn eta_from_n_prime(near: f64, far: f64, n_prime: NPrime) -> Result<f64> {
     let Some(np) = n_prime_at_least(n_prime, n)? else {
         return Ok(-1.0);
     };
+    Ok(eta_from_n_prime_unchecked(n, f, np))
+}
+
+/// [`eta_from_n_prime`] without validation, n′ as an `f64` (`f64::INFINITY` unwarped). Equal,
+/// bit for bit, to [`eta_from_n_prime`] wherever it returns `Ok`; meaningless outside the domain.
+#[inline(always)]
+#[must_use]
+pub fn eta_from_n_prime_unchecked(near: f64, far: f64, n_prime: f64) -> f64 {
+    let (n, f, np) = (near, far, n_prime);
     let alpha = f / n;
     let ra = alpha.sqrt();
     let nu = np / n;
     if !nu.is_finite() {
-        return Ok(-1.0);
+        return -1.0;
     }
     let eta = if nu >= 1.0 + ra {
         let den = nu + alpha - 1.0;
@@ -187,7 +225,7 @@ pub fn eta_from_n_prime(near: f64, far: f64, n_prime: NPrime) -> Result<f64> {
     } else {
         (ra + 1.0 - nu) / (nu * ra)
     };
-    Ok(eta.clamp(-1.0, 1.0))
+    eta.clamp(-1.0, 1.0)
 }
 
 #[cfg(test)]
@@ -214,5 +252,33 @@ mod tests {
         assert!(n_prime_from_eta(1.0, 100.0, 1.5).is_err());
         assert_eq!(n_prime_lispsm(1.0, 100.0), Ok(11.0));
         assert_eq!(n_prime_psm(3.0, 100.0), Ok(3.0));
+    }
+
+    /// The `*_unchecked` twins give the checked forms' values bit for bit over their domain,
+    /// both branches of Eq 11 and of its inverse, the unwarped ends and n′ overflowing to ∞.
+    #[test]
+    fn unchecked_twins_agree() {
+        for &(n, f) in &[(1.0, 100.0), (0.1, 0.3), (2.5, 4e5), (1e-3, 1e6), (1e300, 1e308)] {
+            let l = n_prime_lispsm(n, f).unwrap();
+            assert_eq!(l.to_bits(), n_prime_lispsm_unchecked(n, f).to_bits());
+            for eta in [-1.0, -1.0 + 1e-300, -0.999, -0.5, 0.0, 1e-9, 0.3, 1.0] {
+                let want = n_prime_from_eta(n, f, eta).unwrap().value();
+                let got = n_prime_from_eta_unchecked(n, f, eta);
+                assert_eq!(want.to_bits(), got.to_bits(), "{n} {f} {eta}");
+            }
+            for np in [n, 0.5 * (n + l), l, 2.0 * l, 1e3 * f, f64::MAX, f64::INFINITY] {
+                let npv = if np == f64::INFINITY {
+                    NPrime::Unwarped
+                } else {
+                    NPrime::Finite(np)
+                };
+                let want = eta_from_n_prime(n, f, npv).unwrap();
+                let got = eta_from_n_prime_unchecked(n, f, np);
+                assert_eq!(want.to_bits(), got.to_bits(), "{n} {f} {np}");
+            }
+        }
+        // By hand (Eq 11, α = 100): η = −0.5 gives n′ = (11 + 49.5)/0.5 = 121, and back.
+        assert_eq!(n_prime_from_eta_unchecked(1.0, 100.0, -0.5), 121.0);
+        assert_eq!(eta_from_n_prime_unchecked(1.0, 100.0, 121.0), -0.5);
     }
 }

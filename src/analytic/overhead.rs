@@ -82,11 +82,27 @@ pub fn mx(near: f64, far: f64, n_prime: NPrime, z: f64, res: Resolutions) -> Res
     let (n, f) = near_far(near, far)?;
     let np = n_prime_at_least(n_prime, n)?;
     let z = depth_in(z, n, f)?;
-    let shape = match np {
-        None => f / z,
-        Some(np) => f / z * ((np + z - n) / (np + f - n)),
+    finite_result(
+        "m_x",
+        mx_unchecked(n, f, np.unwrap_or(f64::INFINITY), z, res.image(), res.s()),
+    )
+}
+
+/// [`mx`] without validation, for callers that have checked the domain themselves (the Python
+/// bindings' array path): `n_prime` is n′ as an `f64`, `f64::INFINITY` for the unwarped map.
+///
+/// Equal, bit for bit, to [`mx`] wherever `mx` returns `Ok` (which computes its value here);
+/// outside that domain the result is meaningless (it may be NaN or infinite).
+#[inline(always)]
+#[must_use]
+pub fn mx_unchecked(near: f64, far: f64, n_prime: f64, z: f64, res_image: f64, res_s: f64) -> f64 {
+    let (n, f, np) = (near, far, n_prime);
+    let shape = if np == f64::INFINITY {
+        f / z
+    } else {
+        f / z * ((np + z - n) / (np + f - n))
     };
-    finite_result("m_x", res.image() / res.s() * shape)
+    res_image / res_s * shape
 }
 
 /// The z error at depth z (Lloyd 2006 Eq 8; Lloyd 2005 Eq 2, 3 with n = 1, f = α).
@@ -107,18 +123,44 @@ pub fn mz(view: &ViewFrustum, n_prime: NPrime, z: f64, res: Resolutions) -> Resu
     let (n, f) = (view.near(), view.far());
     let np = n_prime_at_least(n_prime, n)?;
     let z = depth_in(z, n, f)?;
-    let shape = match np {
-        None => 1.0 / z,
-        Some(np) => {
-            let zp = np + z - n;
-            // (n′ + z − n)² / (z n′ (n′ + f − n)), arranged to avoid overflow at large n′.
-            (zp / (np + f - n)) * (zp / np) / z
-        }
-    };
     finite_result(
         "m_z",
-        res.image() / res.t() * (f - n) / (2.0 * view.tan_half_fov()) * shape,
+        mz_unchecked(
+            n,
+            f,
+            view.tan_half_fov(),
+            np.unwrap_or(f64::INFINITY),
+            z,
+            res.image(),
+            res.t(),
+        ),
     )
+}
+
+/// [`mz`] without validation: n = `near`, f = `far`, tan θ = `tan_half_fov` (as
+/// [`ViewFrustum::tan_half_fov`] computes it), `n_prime` as an `f64` (`f64::INFINITY` unwarped).
+///
+/// Equal, bit for bit, to [`mz`] wherever `mz` returns `Ok`; meaningless outside that domain.
+#[inline(always)]
+#[must_use]
+pub fn mz_unchecked(
+    near: f64,
+    far: f64,
+    tan_half_fov: f64,
+    n_prime: f64,
+    z: f64,
+    res_image: f64,
+    res_t: f64,
+) -> f64 {
+    let (n, f, np) = (near, far, n_prime);
+    let shape = if np == f64::INFINITY {
+        1.0 / z
+    } else {
+        let zp = np + z - n;
+        // (n′ + z − n)² / (z n′ (n′ + f − n)), arranged to avoid overflow at large n′.
+        (zp / (np + f - n)) * (zp / np) / z
+    };
+    res_image / res_t * (f - n) / (2.0 * tan_half_fov) * shape
 }
 
 /// The maximum x error over the view frustum, at z = n (Lloyd 2006 Eq 9; Lloyd 2005 Eq 9).
@@ -159,15 +201,41 @@ pub fn max_mx(near: f64, far: f64, n_prime: NPrime, res: Resolutions) -> Result<
 pub fn max_mz(view: &ViewFrustum, n_prime: NPrime, res: Resolutions) -> Result<f64> {
     let (n, f) = (view.near(), view.far());
     let np = n_prime_at_least(n_prime, n)?;
-    let shape = match np {
-        None => 1.0 / n,
-        Some(np) if np <= lispsm(view) => (np + f - n) / f / np,
-        Some(np) => np / (np + f - n) / n,
-    };
     finite_result(
         "M_z",
-        res.image() / res.t() * (f - n) / (2.0 * view.tan_half_fov()) * shape,
+        max_mz_unchecked(
+            n,
+            f,
+            view.tan_half_fov(),
+            np.unwrap_or(f64::INFINITY),
+            res.image(),
+            res.t(),
+        ),
     )
+}
+
+/// [`max_mz`] without validation; arguments as [`mz_unchecked`].
+///
+/// Equal, bit for bit, to [`max_mz`] wherever `max_mz` returns `Ok`; meaningless outside it.
+#[inline(always)]
+#[must_use]
+pub fn max_mz_unchecked(
+    near: f64,
+    far: f64,
+    tan_half_fov: f64,
+    n_prime: f64,
+    res_image: f64,
+    res_t: f64,
+) -> f64 {
+    let (n, f, np) = (near, far, n_prime);
+    let shape = if np == f64::INFINITY {
+        1.0 / n
+    } else if np <= n + sqrt_fn(n, f) {
+        (np + f - n) / f / np
+    } else {
+        np / (np + f - n) / n
+    };
+    res_image / res_t * (f - n) / (2.0 * tan_half_fov) * shape
 }
 
 /// The storage factor S̄ = M_x M_z with unit resolutions (Lloyd 2006 Eq 12): how many times
@@ -187,16 +255,29 @@ pub fn max_mz(view: &ViewFrustum, n_prime: NPrime, res: Resolutions) -> Result<f
 pub fn storage_factor(view: &ViewFrustum, n_prime: NPrime) -> Result<f64> {
     let (n, f) = (view.near(), view.far());
     let np = n_prime_at_least(n_prime, n)?;
-    let base = (f / n - 1.0) / (2.0 * view.tan_half_fov());
-    let factor = match np {
-        None => f / n,
-        Some(np) if np <= lispsm(view) => 1.0,
-        Some(np) => {
-            let r = np / (np + f - n);
-            r * r * f / n
-        }
+    finite_result(
+        "storage factor",
+        storage_factor_unchecked(n, f, view.tan_half_fov(), np.unwrap_or(f64::INFINITY)),
+    )
+}
+
+/// [`storage_factor`] without validation; arguments as [`mz_unchecked`].
+///
+/// Equal, bit for bit, to [`storage_factor`] wherever it returns `Ok`; meaningless outside it.
+#[inline(always)]
+#[must_use]
+pub fn storage_factor_unchecked(near: f64, far: f64, tan_half_fov: f64, n_prime: f64) -> f64 {
+    let (n, f, np) = (near, far, n_prime);
+    let base = (f / n - 1.0) / (2.0 * tan_half_fov);
+    let factor = if np == f64::INFINITY {
+        f / n
+    } else if np <= n + sqrt_fn(n, f) {
+        1.0
+    } else {
+        let r = np / (np + f - n);
+        r * r * f / n
     };
-    finite_result("storage factor", base * factor)
+    base * factor
 }
 
 /// A shadow-map resolution pair, texels along s (the eye's x) and t (the view direction).
@@ -328,5 +409,47 @@ mod tests {
         assert!((budget_error(&v, l, 4.0 * s, 1.0).unwrap() - 0.5).abs() < 1e-14);
         assert!(mx(1.0, 100.0, l, 0.5, r).is_err());
         assert!(mx(1.0, 100.0, NPrime::Finite(0.5), 2.0, r).is_err());
+    }
+
+    /// The `*_unchecked` twins give the checked forms' values bit for bit over their domain:
+    /// both warp branches (n′ below and above n′_LSPSM, n′ exactly at it), the unwarped map,
+    /// z on the near and far planes and inside, and resolutions other than one.
+    #[test]
+    fn unchecked_twins_agree() {
+        let mut cases = 0;
+        for &(n, f) in &[(1.0, 100.0), (0.1, 0.3), (2.5, 4e5), (1e-3, 1e6)] {
+            for &th in &[0.01, 0.5, std::f64::consts::FRAC_PI_4, 1.5] {
+                let v = ViewFrustum::new(n, f, th).unwrap();
+                let t = v.tan_half_fov();
+                let l = v.n_prime_lispsm();
+                for np in [n, 0.5 * (n + l), l, 2.0 * l, 1e3 * f, f64::INFINITY] {
+                    let npv = if np == f64::INFINITY {
+                        NPrime::Unwarped
+                    } else {
+                        NPrime::Finite(np)
+                    };
+                    for &(ri, rt) in &[(1.0, 1.0), (1920.0, 700.0)] {
+                        let r = Resolutions::new(ri, rt, rt / 3.0).unwrap();
+                        for z in [n, 0.3 * n + 0.7 * f, f] {
+                            let a = mx(n, f, npv, z, r).unwrap();
+                            assert_eq!(a.to_bits(), mx_unchecked(n, f, np, z, ri, rt).to_bits());
+                            let b = mz(&v, npv, z, r).unwrap();
+                            let bu = mz_unchecked(n, f, t, np, z, ri, rt / 3.0);
+                            assert_eq!(b.to_bits(), bu.to_bits());
+                            cases += 1;
+                        }
+                        let c = max_mz(&v, npv, r).unwrap();
+                        let cu = max_mz_unchecked(n, f, t, np, ri, rt / 3.0);
+                        assert_eq!(c.to_bits(), cu.to_bits());
+                    }
+                    let s = storage_factor(&v, npv).unwrap();
+                    assert_eq!(s.to_bits(), storage_factor_unchecked(n, f, t, np).to_bits());
+                }
+            }
+        }
+        assert_eq!(cases, 4 * 4 * 6 * 2 * 3);
+        // S̄ of LiSPSM by hand: (f/n − 1)/(2 tan θ) = 99/2 at f/n = 100, θ = 45°.
+        let t = std::f64::consts::FRAC_PI_4.tan();
+        assert!((storage_factor_unchecked(1.0, 100.0, t, 11.0) - 49.5 / t).abs() < 1e-12);
     }
 }
