@@ -258,7 +258,13 @@ mod tests {
     /// both branches of Eq 11 and of its inverse, the unwarped ends and n′ overflowing to ∞.
     #[test]
     fn unchecked_twins_agree() {
-        for &(n, f) in &[(1.0, 100.0), (0.1, 0.3), (2.5, 4e5), (1e-3, 1e6), (1e300, 1e308)] {
+        for &(n, f) in &[
+            (1.0, 100.0),
+            (0.1, 0.3),
+            (2.5, 4e5),
+            (1e-3, 1e6),
+            (1e300, 1e308),
+        ] {
             let l = n_prime_lispsm(n, f).unwrap();
             assert_eq!(l.to_bits(), n_prime_lispsm_unchecked(n, f).to_bits());
             for eta in [-1.0, -1.0 + 1e-300, -0.999, -0.5, 0.0, 1e-9, 0.3, 1.0] {
@@ -266,7 +272,15 @@ mod tests {
                 let got = n_prime_from_eta_unchecked(n, f, eta);
                 assert_eq!(want.to_bits(), got.to_bits(), "{n} {f} {eta}");
             }
-            for np in [n, 0.5 * (n + l), l, 2.0 * l, 1e3 * f, f64::MAX, f64::INFINITY] {
+            for np in [
+                n,
+                0.5 * (n + l),
+                l,
+                2.0 * l,
+                1e3 * f,
+                f64::MAX,
+                f64::INFINITY,
+            ] {
                 let npv = if np == f64::INFINITY {
                     NPrime::Unwarped
                 } else {

@@ -97,10 +97,13 @@ pub fn mx(near: f64, far: f64, n_prime: NPrime, z: f64, res: Resolutions) -> Res
 #[must_use]
 pub fn mx_unchecked(near: f64, far: f64, n_prime: f64, z: f64, res_image: f64, res_s: f64) -> f64 {
     let (n, f, np) = (near, far, n_prime);
+    // Both branches, then a select: no jump, so that a loop over arrays vectorises.
+    let unwarped = f / z;
+    let warped = f / z * ((np + z - n) / (np + f - n));
     let shape = if np == f64::INFINITY {
-        f / z
+        unwarped
     } else {
-        f / z * ((np + z - n) / (np + f - n))
+        warped
     };
     res_image / res_s * shape
 }
@@ -153,13 +156,11 @@ pub fn mz_unchecked(
     res_t: f64,
 ) -> f64 {
     let (n, f, np) = (near, far, n_prime);
-    let shape = if np == f64::INFINITY {
-        1.0 / z
-    } else {
-        let zp = np + z - n;
-        // (n′ + z − n)² / (z n′ (n′ + f − n)), arranged to avoid overflow at large n′.
-        (zp / (np + f - n)) * (zp / np) / z
-    };
+    let zp = np + z - n;
+    // (n′ + z − n)² / (z n′ (n′ + f − n)), arranged to avoid overflow at large n′; both
+    // branches, then a select (see `mx_unchecked`).
+    let warped = (zp / (np + f - n)) * (zp / np) / z;
+    let shape = if np == f64::INFINITY { 1.0 / z } else { warped };
     res_image / res_t * (f - n) / (2.0 * tan_half_fov) * shape
 }
 
@@ -228,12 +229,14 @@ pub fn max_mz_unchecked(
     res_t: f64,
 ) -> f64 {
     let (n, f, np) = (near, far, n_prime);
+    // All three branches, then selects (see `mx_unchecked`).
+    let (unwarped, far_plane, near_plane) = (1.0 / n, (np + f - n) / f / np, np / (np + f - n) / n);
     let shape = if np == f64::INFINITY {
-        1.0 / n
+        unwarped
     } else if np <= n + sqrt_fn(n, f) {
-        (np + f - n) / f / np
+        far_plane
     } else {
-        np / (np + f - n) / n
+        near_plane
     };
     res_image / res_t * (f - n) / (2.0 * tan_half_fov) * shape
 }
@@ -269,13 +272,15 @@ pub fn storage_factor(view: &ViewFrustum, n_prime: NPrime) -> Result<f64> {
 pub fn storage_factor_unchecked(near: f64, far: f64, tan_half_fov: f64, n_prime: f64) -> f64 {
     let (n, f, np) = (near, far, n_prime);
     let base = (f / n - 1.0) / (2.0 * tan_half_fov);
+    // All three branches, then selects (see `mx_unchecked`).
+    let r = np / (np + f - n);
+    let above = r * r * f / n;
     let factor = if np == f64::INFINITY {
         f / n
     } else if np <= n + sqrt_fn(n, f) {
         1.0
     } else {
-        let r = np / (np + f - n);
-        r * r * f / n
+        above
     };
     base * factor
 }
