@@ -167,7 +167,7 @@ pub fn _set_fast_path(enabled: bool) -> bool {
 /// The one transcendental most forms need per element, tan θ, remembered for the last θ: a θ
 /// that is one number, or repeats along a row, costs one `tan` per run (the same value, since
 /// `tan` is a function of its argument's bits).
-pub struct TanMemo {
+struct TanMemo {
     bits: u64,
     tan: f64,
 }
@@ -183,7 +183,7 @@ impl TanMemo {
 
     /// tan θ, as `f64::tan` computes it.
     #[inline(always)]
-    pub fn tan(&mut self, theta: f64) -> f64 {
+    fn tan(&mut self, theta: f64) -> f64 {
         if theta.to_bits() != self.bits {
             self.bits = theta.to_bits();
             self.tan = theta.tan();
@@ -213,10 +213,11 @@ pub const N_PRIME: OutSpec = OutSpec {
     allow_inf: true,
 };
 
-/// The fast kernel of a scalar closed form: for the arguments of one element, the value computed
-/// without validation (the library's `*_unchecked` twin) and whether the element certainly lies
-/// in the domain. Where it says so, the value must be the validated form's, bit for bit.
-pub type NoFast<const N: usize> = fn(&[f64; N], &mut TanMemo) -> (f64, bool);
+/// The fast kernel of a scalar closed form: for the arguments of one element (and tan θ of the
+/// argument `tan_of` names, or 0), the value computed without validation (the library's
+/// `*_unchecked` twin) and whether the element certainly lies in the domain. Where it says so,
+/// the value must be the validated form's, bit for bit.
+pub type NoFast<const N: usize> = fn(&[f64; N], f64) -> (f64, bool);
 
 /// Evaluates `f` on every element of the broadcast of `args` (each `(name, object)`).
 ///
@@ -230,13 +231,14 @@ pub fn map_into<'py, const N: usize, F>(
 where
     F: Fn(&[f64; N], &mut [f64]) -> Result<(), Error> + Sync,
 {
-    drive(py, args, spec, f, None::<NoFast<N>>)
+    drive(py, args, spec, f, None::<Fast<NoFast<N>>>)
 }
 
 /// A scalar closed form with a fast kernel `g` beside its validated form `f`.
 ///
-/// Each block of [`BLOCK`] elements runs `g` over plain slices (no validation, no `Result`;
-/// the compiler vectorises what has no transcendental call) and collects the domain checks; a
+/// Each block of [`BLOCK`] elements first takes tan of argument `tan_of` (if any; one call per
+/// run of equal values, [`TanMemo`]), then runs `g` over plain slices (no validation, no
+/// `Result`, no call: the compiler vectorises it) and collects the domain checks; a
 /// block with any element outside `g`'s domain, or with a non-finite value, is computed again
 /// element by element with `f`, which gives the values and the first error exactly as without
 /// the fast path.
@@ -246,12 +248,15 @@ pub fn map_fast<'py, const N: usize, F, G>(
     spec: OutSpec,
     f: F,
     g: G,
+    tan_of: Option<usize>,
 ) -> PyResult<Bound<'py, PyAny>>
 where
     F: Fn(&[f64; N]) -> Result<f64, Error> + Sync,
-    G: Fn(&[f64; N], &mut TanMemo) -> (f64, bool) + Sync,
+    G: Fn(&[f64; N], f64) -> (f64, bool) + Sync,
 {
-    let fast = FAST_PATH.load(Ordering::Relaxed).then_some(g);
+    let fast = FAST_PATH
+        .load(Ordering::Relaxed)
+        .then_some(Fast { g, tan_of });
     drive(
         py,
         args,
@@ -264,16 +269,22 @@ where
     )
 }
 
+/// A fast kernel and the argument whose tangent it needs.
+pub struct Fast<G> {
+    g: G,
+    tan_of: Option<usize>,
+}
+
 fn drive<'py, const N: usize, F, G>(
     py: Python<'py>,
     args: [(&'static str, &Bound<'py, PyAny>); N],
     spec: OutSpec,
     f: F,
-    g: Option<G>,
+    g: Option<Fast<G>>,
 ) -> PyResult<Bound<'py, PyAny>>
 where
     F: Fn(&[f64; N], &mut [f64]) -> Result<(), Error> + Sync,
-    G: Fn(&[f64; N], &mut TanMemo) -> (f64, bool) + Sync,
+    G: Fn(&[f64; N], f64) -> (f64, bool) + Sync,
 {
     let names: [&'static str; N] = std::array::from_fn(|k| args[k].0);
     let mut conv = Vec::with_capacity(N);
@@ -365,11 +376,11 @@ fn run<const N: usize, F, G>(
     width: usize,
     allow_inf: bool,
     f: &F,
-    g: Option<&G>,
+    g: Option<&Fast<G>>,
 ) -> Option<(usize, Error)>
 where
     F: Fn(&[f64; N], &mut [f64]) -> Result<(), Error> + Sync,
-    G: Fn(&[f64; N], &mut TanMemo) -> (f64, bool) + Sync,
+    G: Fn(&[f64; N], f64) -> (f64, bool) + Sync,
 {
     let checked = |start: usize, out: &mut [f64]| -> Option<(usize, Error)> {
         for (j, o) in out.chunks_exact_mut(width).enumerate() {
@@ -393,14 +404,20 @@ where
         None
     };
     let chunk = |start: usize, out: &mut [f64]| -> Option<(usize, Error)> {
-        let Some(g) = g else {
+        let Some(Fast { g, tan_of }) = g else {
             return checked(start, out);
         };
         let mut memo = TanMemo::new();
+        let mut tans = [0.0f64; BLOCK];
         for (b, ob) in out.chunks_mut(BLOCK).enumerate() {
             let s0 = start + b * BLOCK;
             let len = ob.len();
             let cols: [&[f64]; N] = std::array::from_fn(|k| data[k].block(s0, len));
+            if let Some(k) = *tan_of {
+                for (t, &th) in tans.iter_mut().zip(cols[k]) {
+                    *t = memo.tan(th);
+                }
+            }
             // A full block as fixed-length arrays, so that the loop has no bounds checks and
             // vectorises where the kernel allows; the last, shorter block as slices.
             let mut full = [&UNUSED; N];
@@ -412,8 +429,8 @@ where
                 }
             }
             let ok = match ob.first_chunk_mut::<BLOCK>() {
-                Some(o) if is_full => kernel_full(&full, o, allow_inf, g, &mut memo),
-                _ => kernel_tail(&cols, ob, allow_inf, g, &mut memo),
+                Some(o) if is_full => kernel_full(&full, &tans, o, allow_inf, g),
+                _ => kernel_tail(&cols, &tans[..len], ob, allow_inf, g),
             };
             if !ok {
                 if let Some(failure) = checked(s0, ob) {
@@ -439,25 +456,34 @@ static UNUSED: [f64; BLOCK] = [0.0; BLOCK];
 /// Whether an element's value is admitted: finite, or +∞ where allowed.
 #[inline(always)]
 fn admitted(v: f64, good: bool, allow_inf: bool) -> bool {
-    good & (v.is_finite() | (allow_inf & (v == f64::INFINITY)))
+    good & (finite(v) | (allow_inf & (v == f64::INFINITY)))
+}
+
+/// `v.is_finite()` as two float operations: v − v is +0 exactly for a finite v and NaN for ±∞
+/// and NaN. (`is_finite` compiles to integer compares of the bits, which without SSE4.2's 64-bit
+/// compare cost several instructions per lane.)
+#[inline(always)]
+#[allow(clippy::eq_op)] // v − v is the test, not a mistake.
+pub fn finite(v: f64) -> bool {
+    v - v == 0.0
 }
 
 /// `g` over one full block: writes the values, returns whether every element was admitted.
 #[inline(always)]
 fn kernel_full<const N: usize, G>(
     cols: &[&[f64; BLOCK]; N],
+    tans: &[f64; BLOCK],
     out: &mut [f64; BLOCK],
     allow_inf: bool,
     g: &G,
-    memo: &mut TanMemo,
 ) -> bool
 where
-    G: Fn(&[f64; N], &mut TanMemo) -> (f64, bool),
+    G: Fn(&[f64; N], f64) -> (f64, bool),
 {
     let mut ok = true;
     for j in 0..BLOCK {
         let x: [f64; N] = std::array::from_fn(|k| cols[k][j]);
-        let (v, good) = g(&x, memo);
+        let (v, good) = g(&x, tans[j]);
         out[j] = v;
         ok &= admitted(v, good, allow_inf);
     }
@@ -468,18 +494,18 @@ where
 #[inline(always)]
 fn kernel_tail<const N: usize, G>(
     cols: &[&[f64]; N],
+    tans: &[f64],
     out: &mut [f64],
     allow_inf: bool,
     g: &G,
-    memo: &mut TanMemo,
 ) -> bool
 where
-    G: Fn(&[f64; N], &mut TanMemo) -> (f64, bool),
+    G: Fn(&[f64; N], f64) -> (f64, bool),
 {
     let mut ok = true;
     for (j, o) in out.iter_mut().enumerate() {
         let x: [f64; N] = std::array::from_fn(|k| cols[k][j]);
-        let (v, good) = g(&x, memo);
+        let (v, good) = g(&x, tans[j]);
         *o = v;
         ok &= admitted(v, good, allow_inf);
     }

@@ -3,7 +3,8 @@
 //! Argument names are the contract's, except Zhang's and Martin–Tan's `lambda`, a Python keyword,
 //! spelled `lambda_`. Angles in radians.
 
-use crate::broadcast::{count, map, map_fast, map_into, OutSpec, TanMemo, N_PRIME, SCALAR};
+use crate::broadcast::finite;
+use crate::broadcast::{count, map, map_fast, map_into, OutSpec, N_PRIME, SCALAR};
 use numpy::PyUntypedArrayMethods;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -55,13 +56,13 @@ fn view(x: &[f64]) -> Result<ViewFrustum, Error> {
 /// `positive`: finite and > 0.
 #[inline(always)]
 fn pos(v: f64) -> bool {
-    v.is_finite() & (v > 0.0)
+    finite(v) & (v > 0.0)
 }
 
 /// `analytic::eta::near_far`: 0 < n < f, both finite, f/n finite.
 #[inline(always)]
 fn near_far_ok(n: f64, f: f64) -> bool {
-    pos(n) & pos(f) & (f > n) & (f / n).is_finite()
+    pos(n) & pos(f) & (f > n) & finite(f / n)
 }
 
 /// `NPrime::new` then `n_prime_at_least`: ∞, or finite with near ≤ n′.
@@ -73,27 +74,32 @@ fn n_prime_ok(np: f64, n: f64) -> bool {
 /// `depth_in`: z finite in [n, f].
 #[inline(always)]
 fn depth_ok(z: f64, n: f64, f: f64) -> bool {
-    z.is_finite() & (z >= n) & (z <= f)
+    finite(z) & (z >= n) & (z <= f)
 }
 
-/// `ViewFrustum::new(n, f, θ)` (`with_aspect` at aspect 1): tan θ and whether the frustum is in
-/// the type's domain.
+/// `ViewFrustum::new(n, f, θ)` (`with_aspect` at aspect 1), given t = tan θ: whether the
+/// frustum is in the type's domain.
 #[inline(always)]
-fn view_ok(n: f64, f: f64, th: f64, memo: &mut TanMemo) -> (f64, bool) {
-    let t = memo.tan(th);
-    let ok = pos(n)
+fn view_ok(n: f64, f: f64, th: f64, t: f64) -> bool {
+    pos(n)
         & pos(f)
         & (f > n)
-        & th.is_finite()
+        & finite(th)
         & (th > 0.0)
         & (th < std::f64::consts::FRAC_PI_2)
-        & t.is_normal()
+        & normal(t)
         & (t > 0.0)
-        & (f * t).is_finite()
-        & (f / n).is_finite()
-        & eta::n_prime_lispsm_unchecked(n, f).is_finite()
-        & (n * t).is_normal();
-    (t, ok)
+        & finite(f * t)
+        & finite(f / n)
+        & finite(eta::n_prime_lispsm_unchecked(n, f))
+        & normal(n * t)
+}
+
+/// `v.is_normal()` with float compares only (see `broadcast::finite`).
+#[inline(always)]
+fn normal(v: f64) -> bool {
+    let a = v.abs();
+    finite(a) & (a >= f64::MIN_POSITIVE)
 }
 
 /// The argument's name in messages: a Rust parameter `lambda_` is the contract's `lambda`.
@@ -109,7 +115,7 @@ macro_rules! elementwise {
         $(#[$meta:meta])*
         fn $name:ident($($req:ident),+ $(; $($opt:ident),+)?) -> $spec:expr;
         checked = $checked:expr;
-        $(fast = $fast:expr;)?
+        $(fast $(($tan:ident))? = $fast:expr;)?
     ) => {
         $(#[$meta])*
         #[pyfunction]
@@ -127,14 +133,25 @@ macro_rules! elementwise {
                 $((arg_name(stringify!($req)), $req),)+
                 $($((arg_name(stringify!($opt)), $opt),)+)?
             ];
-            elementwise!(@call py, args, $spec, $checked $(, $fast)?)
+            elementwise!(@call py, args, $spec, $checked $(, $fast, tan_of!($($tan)?))?)
         }
     };
     (@call $py:ident, $args:ident, $spec:expr, $checked:expr) => {
         map($py, $args, $spec, $checked)
     };
-    (@call $py:ident, $args:ident, $spec:expr, $checked:expr, $fast:expr) => {
-        map_fast($py, $args, $spec, $checked, $fast)
+    (@call $py:ident, $args:ident, $spec:expr, $checked:expr, $fast:expr, $tan:expr) => {
+        map_fast($py, $args, $spec, $checked, $fast, $tan)
+    };
+}
+
+/// `fast(half_fov)`: the kernel receives tan θ of argument 2 (every form with a `ViewFrustum`
+/// has near, far, half_fov first); `fast`: it receives 0.
+macro_rules! tan_of {
+    () => {
+        None
+    };
+    (half_fov) => {
+        Some(2)
     };
 }
 
@@ -148,7 +165,7 @@ elementwise! {
     checked = |&[n, f, np, z, ri, rs]: &[f64; 6]| {
         overhead::mx(n, f, n_prime_arg("n_prime", np)?, z, Resolutions::new(ri, rs, 1.0)?)
     };
-    fast = |&[n, f, np, z, ri, rs]: &[f64; 6], _: &mut TanMemo| {
+    fast = |&[n, f, np, z, ri, rs]: &[f64; 6], _: f64| {
         let ok = near_far_ok(n, f) & n_prime_ok(np, n) & depth_ok(z, n, f) & pos(ri) & pos(rs);
         (overhead::mx_unchecked(n, f, np, z, ri, rs), ok)
     };
@@ -170,8 +187,8 @@ elementwise! {
             Resolutions::new(ri, 1.0, rt)?,
         )
     };
-    fast = |&[n, f, th, np, z, ri, rt]: &[f64; 7], memo: &mut TanMemo| {
-        let (t, vok) = view_ok(n, f, th, memo);
+    fast(half_fov) = |&[n, f, th, np, z, ri, rt]: &[f64; 7], t: f64| {
+        let vok = view_ok(n, f, th, t);
         let ok = vok & n_prime_ok(np, n) & depth_ok(z, n, f) & pos(ri) & pos(rt);
         (overhead::mz_unchecked(n, f, t, np, z, ri, rt), ok)
     };
@@ -185,7 +202,7 @@ elementwise! {
     checked = |&[n, f, np, ri, rs]: &[f64; 5]| {
         overhead::max_mx(n, f, n_prime_arg("n_prime", np)?, Resolutions::new(ri, rs, 1.0)?)
     };
-    fast = |&[n, f, np, ri, rs]: &[f64; 5], _: &mut TanMemo| {
+    fast = |&[n, f, np, ri, rs]: &[f64; 5], _: f64| {
         // max_mx is mx at z = near, which depth_in always admits.
         let ok = near_far_ok(n, f) & n_prime_ok(np, n) & pos(ri) & pos(rs);
         (overhead::mx_unchecked(n, f, np, n, ri, rs), ok)
@@ -206,8 +223,8 @@ elementwise! {
             Resolutions::new(ri, 1.0, rt)?,
         )
     };
-    fast = |&[n, f, th, np, ri, rt]: &[f64; 6], memo: &mut TanMemo| {
-        let (t, vok) = view_ok(n, f, th, memo);
+    fast(half_fov) = |&[n, f, th, np, ri, rt]: &[f64; 6], t: f64| {
+        let vok = view_ok(n, f, th, t);
         let ok = vok & n_prime_ok(np, n) & pos(ri) & pos(rt);
         (overhead::max_mz_unchecked(n, f, t, np, ri, rt), ok)
     };
@@ -223,8 +240,8 @@ elementwise! {
     checked = |&[n, f, th, np]: &[f64; 4]| {
         overhead::storage_factor(&view(&[n, f, th])?, n_prime_arg("n_prime", np)?)
     };
-    fast = |&[n, f, th, np]: &[f64; 4], memo: &mut TanMemo| {
-        let (t, vok) = view_ok(n, f, th, memo);
+    fast(half_fov) = |&[n, f, th, np]: &[f64; 4], t: f64| {
+        let vok = view_ok(n, f, th, t);
         (overhead::storage_factor_unchecked(n, f, t, np), vok & n_prime_ok(np, n))
     };
 }
@@ -280,7 +297,7 @@ elementwise! {
     ///     n′ = n + √(f n)
     fn n_prime_lispsm(near, far) -> SCALAR;
     checked = |&[n, f]: &[f64; 2]| eta::n_prime_lispsm(n, f);
-    fast = |&[n, f]: &[f64; 2], _: &mut TanMemo| {
+    fast = |&[n, f]: &[f64; 2], _: f64| {
         (eta::n_prime_lispsm_unchecked(n, f), near_far_ok(n, f))
     };
 }
@@ -292,14 +309,13 @@ elementwise! {
     ///     n′ = n (√α + 1) / (η √α + 1)              0 < η ≤ 1
     fn n_prime_from_eta(near, far, eta) -> N_PRIME;
     checked = |&[n, f, e]: &[f64; 3]| Ok(eta::n_prime_from_eta(n, f, e)?.value());
-    fast = |&[n, f, e]: &[f64; 3], _: &mut TanMemo| {
+    fast = |&[n, f, e]: &[f64; 3], _: f64| {
         let v = eta::n_prime_from_eta_unchecked(n, f, e);
         // in_closed("eta", −1, 1); for η > 0 an overflow to ∞ is an error, not the unwarped map.
         let ok = near_far_ok(n, f)
-            & e.is_finite()
-            & (e >= -1.0)
-            & (e <= 1.0)
-            & ((e <= 0.0) | v.is_finite());
+            & finite(e)
+            & (-1.0..=1.0).contains(&e)
+            & ((e <= 0.0) | finite(v));
         (v, ok)
     };
 }
@@ -308,7 +324,7 @@ elementwise! {
     /// η from n′, the inverse of Lloyd 2006 Eq 11 (App. B); n_prime ≥ near, ``inf`` gives η = −1.
     fn eta_from_n_prime(near, far, n_prime) -> SCALAR;
     checked = |&[n, f, np]: &[f64; 3]| eta::eta_from_n_prime(n, f, n_prime_arg("n_prime", np)?);
-    fast = |&[n, f, np]: &[f64; 3], _: &mut TanMemo| {
+    fast = |&[n, f, np]: &[f64; 3], _: f64| {
         (eta::eta_from_n_prime_unchecked(n, f, np), near_far_ok(n, f) & n_prime_ok(np, n))
     };
 }
@@ -322,11 +338,11 @@ elementwise! {
     checked = |&[a, nw, z]: &[f64; 3]| {
         subdivided::distribution_g(a, n_prime_arg("n_warp", nw)?, z)
     };
-    fast = |&[a, nw, z]: &[f64; 3], _: &mut TanMemo| {
+    fast = |&[a, nw, z]: &[f64; 3], _: f64| {
         let ok = pos(a)
             & (a > 1.0)
             & ((nw == f64::INFINITY) | (pos(nw) & (nw >= 1.0)))
-            & z.is_finite()
+            & finite(z)
             & (z >= 1.0)
             & (z <= a);
         (subdivided::distribution_g_unchecked(a, nw, z), ok)

@@ -24,7 +24,8 @@
 
 use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::NPrime;
-use crate::numeric::sqrt_fn;
+use crate::numeric::sqrt_fn_select;
+use std::hint::select_unpredictable as select;
 
 /// Validates a depth range `0 < near < far`, both finite.
 #[inline]
@@ -110,7 +111,7 @@ pub fn n_prime_lispsm(near: f64, far: f64) -> Result<f64> {
 #[inline(always)]
 #[must_use]
 pub fn n_prime_lispsm_unchecked(near: f64, far: f64) -> f64 {
-    near + sqrt_fn(near, far)
+    near + sqrt_fn_select(near, far)
 }
 
 /// PSM's warp parameter: n′ = n, the warping frustum's centre of projection at the eye
@@ -163,19 +164,11 @@ pub fn n_prime_from_eta_unchecked(near: f64, far: f64, eta: f64) -> f64 {
     let n = near;
     let alpha = far / n;
     let ra = alpha.sqrt();
-    if eta <= 0.0 {
-        if eta == -1.0 {
-            return f64::INFINITY;
-        }
-        let v = n * ((ra + 1.0 - eta * (alpha - 1.0)) / (eta + 1.0));
-        if v.is_finite() {
-            v
-        } else {
-            f64::INFINITY
-        }
-    } else {
-        n * ((ra + 1.0) / (eta * ra + 1.0))
-    }
+    // Every branch, then selects without a jump, so that a loop over arrays vectorises.
+    let below = n * ((ra + 1.0 - eta * (alpha - 1.0)) / (eta + 1.0));
+    let below = select(eta == -1.0 || !below.is_finite(), f64::INFINITY, below);
+    let above = n * ((ra + 1.0) / (eta * ra + 1.0));
+    select(eta <= 0.0, below, above)
 }
 
 /// η from n′, the inverse of [`n_prime_from_eta`] (Lloyd 2006 App. B; Lloyd 2005 §3.2 ξ with
@@ -211,21 +204,17 @@ pub fn eta_from_n_prime_unchecked(near: f64, far: f64, n_prime: f64) -> f64 {
     let alpha = f / n;
     let ra = alpha.sqrt();
     let nu = np / n;
-    if !nu.is_finite() {
-        return -1.0;
-    }
-    let eta = if nu >= 1.0 + ra {
-        let den = nu + alpha - 1.0;
-        if den.is_finite() {
-            (ra + 1.0 - nu) / den
-        } else {
-            // Divided through by ν so that a huge ν cannot overflow.
-            ((ra + 1.0) / nu - 1.0) / (1.0 + (alpha - 1.0) / nu)
-        }
-    } else {
-        (ra + 1.0 - nu) / (nu * ra)
-    };
-    eta.clamp(-1.0, 1.0)
+    // Every branch, then selects without a jump, so that a loop over arrays vectorises.
+    let den = nu + alpha - 1.0;
+    let far_side = select(
+        den.is_finite(),
+        (ra + 1.0 - nu) / den,
+        // Divided through by ν so that a huge ν cannot overflow.
+        ((ra + 1.0) / nu - 1.0) / (1.0 + (alpha - 1.0) / nu),
+    );
+    let near_side = (ra + 1.0 - nu) / (nu * ra);
+    let eta = select(nu >= 1.0 + ra, far_side, near_side);
+    select(nu.is_finite(), eta.clamp(-1.0, 1.0), -1.0)
 }
 
 #[cfg(test)]

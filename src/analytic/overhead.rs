@@ -27,7 +27,8 @@
 use crate::analytic::eta::{n_prime_at_least, near_far};
 use crate::error::{finite_result, fmt_num, positive, Error, Result};
 use crate::frustum::{NPrime, Resolutions, ViewFrustum};
-use crate::numeric::sqrt_fn;
+use crate::numeric::{sqrt_fn, sqrt_fn_select};
+use std::hint::select_unpredictable as select;
 
 /// n′_LSPSM = n + √f √n (without overflow of f n).
 #[inline]
@@ -97,14 +98,11 @@ pub fn mx(near: f64, far: f64, n_prime: NPrime, z: f64, res: Resolutions) -> Res
 #[must_use]
 pub fn mx_unchecked(near: f64, far: f64, n_prime: f64, z: f64, res_image: f64, res_s: f64) -> f64 {
     let (n, f, np) = (near, far, n_prime);
-    // Both branches, then a select: no jump, so that a loop over arrays vectorises.
+    // Both branches, then a select without a jump (`select_unpredictable`), so that a loop
+    // over arrays vectorises.
     let unwarped = f / z;
     let warped = f / z * ((np + z - n) / (np + f - n));
-    let shape = if np == f64::INFINITY {
-        unwarped
-    } else {
-        warped
-    };
+    let shape = select(np == f64::INFINITY, unwarped, warped);
     res_image / res_s * shape
 }
 
@@ -160,7 +158,7 @@ pub fn mz_unchecked(
     // (n′ + z − n)² / (z n′ (n′ + f − n)), arranged to avoid overflow at large n′; both
     // branches, then a select (see `mx_unchecked`).
     let warped = (zp / (np + f - n)) * (zp / np) / z;
-    let shape = if np == f64::INFINITY { 1.0 / z } else { warped };
+    let shape = select(np == f64::INFINITY, 1.0 / z, warped);
     res_image / res_t * (f - n) / (2.0 * tan_half_fov) * shape
 }
 
@@ -231,13 +229,12 @@ pub fn max_mz_unchecked(
     let (n, f, np) = (near, far, n_prime);
     // All three branches, then selects (see `mx_unchecked`).
     let (unwarped, far_plane, near_plane) = (1.0 / n, (np + f - n) / f / np, np / (np + f - n) / n);
-    let shape = if np == f64::INFINITY {
-        unwarped
-    } else if np <= n + sqrt_fn(n, f) {
-        far_plane
-    } else {
-        near_plane
-    };
+    let below = np <= n + sqrt_fn_select(n, f);
+    let shape = select(
+        np == f64::INFINITY,
+        unwarped,
+        select(below, far_plane, near_plane),
+    );
     res_image / res_t * (f - n) / (2.0 * tan_half_fov) * shape
 }
 
@@ -275,13 +272,8 @@ pub fn storage_factor_unchecked(near: f64, far: f64, tan_half_fov: f64, n_prime:
     // All three branches, then selects (see `mx_unchecked`).
     let r = np / (np + f - n);
     let above = r * r * f / n;
-    let factor = if np == f64::INFINITY {
-        f / n
-    } else if np <= n + sqrt_fn(n, f) {
-        1.0
-    } else {
-        above
-    };
+    let below = np <= n + sqrt_fn_select(n, f);
+    let factor = select(np == f64::INFINITY, f / n, select(below, 1.0, above));
     base * factor
 }
 

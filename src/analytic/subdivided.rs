@@ -157,14 +157,11 @@ pub fn distribution_g(alpha: f64, n_warp: NPrime, z: f64) -> Result<f64> {
 #[must_use]
 pub fn distribution_g_unchecked(alpha: f64, n_warp: f64, z: f64) -> f64 {
     let (a, n) = (alpha, n_warp);
-    // Both branches, then a select: no jump, so that a loop over arrays vectorises.
+    // Both branches, then a select without a jump (`select_unpredictable`), so that a loop
+    // over arrays vectorises.
     let zp = z - 1.0 + n;
     let warped = (zp / (n + a - 1.0)) * (zp / n) / z;
-    if n == f64::INFINITY {
-        1.0 / z
-    } else {
-        warped
-    }
+    std::hint::select_unpredictable(n == f64::INFINITY, 1.0 / z, warped)
 }
 
 /// The perspective aliasing error m along the warp direction (Lloyd 2005 Eq 2).
