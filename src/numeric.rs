@@ -35,12 +35,13 @@ pub(crate) fn sqrt_fn(n: f64, f: f64) -> f64 {
     }
 }
 
-/// [`sqrt_fn`] computed both ways and selected without a jump, so that a loop over arrays using
-/// it vectorises (the closed forms' `*_unchecked` twins); the same value bit for bit.
+/// `v.is_finite()` as float operations for vectorised loops (the closed forms' `*_unchecked`
+/// twins): v − v is +0 exactly for a finite v and NaN for ±∞ and NaN. (`is_finite` compiles to
+/// integer compares of the bits, which SSE2 lacks for 64-bit lanes.)
 #[inline(always)]
-pub(crate) fn sqrt_fn_select(n: f64, f: f64) -> f64 {
-    let p = f * n;
-    std::hint::select_unpredictable(p.is_normal(), p.sqrt(), f.sqrt() * n.sqrt())
+#[allow(clippy::eq_op)] // v − v is the test.
+pub(crate) fn finite_select(v: f64) -> bool {
+    v - v == 0.0
 }
 
 /// How far outside the clip volume rounding may put a point: 10⁻⁶ of its half-width.

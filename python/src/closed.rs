@@ -91,7 +91,8 @@ fn view_ok(n: f64, f: f64, th: f64, t: f64) -> bool {
         & (t > 0.0)
         & finite(f * t)
         & finite(f / n)
-        & finite(eta::n_prime_lispsm_unchecked(n, f))
+        // n + √(f n) finite; f·n normal also lets the twins take √(f n) as one square root.
+        & normal(f * n)
         & normal(n * t)
 }
 
@@ -298,7 +299,8 @@ elementwise! {
     fn n_prime_lispsm(near, far) -> SCALAR;
     checked = |&[n, f]: &[f64; 2]| eta::n_prime_lispsm(n, f);
     fast = |&[n, f]: &[f64; 2], _: f64| {
-        (eta::n_prime_lispsm_unchecked(n, f), near_far_ok(n, f))
+        // The twin's precondition: f·n normal.
+        (eta::n_prime_lispsm_unchecked(n, f), near_far_ok(n, f) & normal(f * n))
     };
 }
 

@@ -27,7 +27,7 @@
 use crate::analytic::eta::{n_prime_at_least, near_far};
 use crate::error::{finite_result, fmt_num, positive, Error, Result};
 use crate::frustum::{NPrime, Resolutions, ViewFrustum};
-use crate::numeric::{sqrt_fn, sqrt_fn_select};
+use crate::numeric::sqrt_fn;
 use std::hint::select_unpredictable as select;
 
 /// n′_LSPSM = n + √f √n (without overflow of f n).
@@ -215,7 +215,9 @@ pub fn max_mz(view: &ViewFrustum, n_prime: NPrime, res: Resolutions) -> Result<f
 
 /// [`max_mz`] without validation; arguments as [`mz_unchecked`].
 ///
-/// Equal, bit for bit, to [`max_mz`] wherever `max_mz` returns `Ok`; meaningless outside it.
+/// Equal, bit for bit, to [`max_mz`] wherever `max_mz` returns `Ok` and f·n is a normal `f64`
+/// (n′_LSPSM = n + √(f n) is then taken as one square root, as `ViewFrustum::n_prime_lispsm`
+/// does; a subnormal or overflowing product is left to the checked form); meaningless outside.
 #[inline(always)]
 #[must_use]
 pub fn max_mz_unchecked(
@@ -229,7 +231,7 @@ pub fn max_mz_unchecked(
     let (n, f, np) = (near, far, n_prime);
     // All three branches, then selects (see `mx_unchecked`).
     let (unwarped, far_plane, near_plane) = (1.0 / n, (np + f - n) / f / np, np / (np + f - n) / n);
-    let below = np <= n + sqrt_fn_select(n, f);
+    let below = np <= n + (f * n).sqrt();
     let shape = select(
         np == f64::INFINITY,
         unwarped,
@@ -263,7 +265,8 @@ pub fn storage_factor(view: &ViewFrustum, n_prime: NPrime) -> Result<f64> {
 
 /// [`storage_factor`] without validation; arguments as [`mz_unchecked`].
 ///
-/// Equal, bit for bit, to [`storage_factor`] wherever it returns `Ok`; meaningless outside it.
+/// Equal, bit for bit, to [`storage_factor`] wherever it returns `Ok` and f·n is a normal `f64`
+/// (as [`max_mz_unchecked`]); meaningless outside it.
 #[inline(always)]
 #[must_use]
 pub fn storage_factor_unchecked(near: f64, far: f64, tan_half_fov: f64, n_prime: f64) -> f64 {
@@ -272,7 +275,7 @@ pub fn storage_factor_unchecked(near: f64, far: f64, tan_half_fov: f64, n_prime:
     // All three branches, then selects (see `mx_unchecked`).
     let r = np / (np + f - n);
     let above = r * r * f / n;
-    let below = np <= n + sqrt_fn_select(n, f);
+    let below = np <= n + (f * n).sqrt();
     let factor = select(np == f64::INFINITY, f / n, select(below, 1.0, above));
     base * factor
 }
