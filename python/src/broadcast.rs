@@ -3,7 +3,9 @@
 //! Every float argument is converted to a float64 array (Python numbers, lists, integer and float32
 //! arrays alike; booleans, complex numbers, strings and objects are refused), the arguments'
 //! shapes are broadcast against each other as NumPy broadcasts them, and the closed form runs once
-//! per element of the broadcast shape with the GIL released, over all cores for large arrays.
+//! per element of the broadcast shape with the GIL released, over all cores for large arrays —
+//! through a vectorised fast kernel in blocks ([`map_fast`]) where the form has one, with the
+//! validated form for any block holding an element the kernel's checks do not admit.
 //! The first element (in C order) whose arguments the crate refuses raises `ValueError` with the
 //! crate's message and, for an array, the element's index.
 
