@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """Times the Python bindings against NumPy, in one run (docs/python.md reports the numbers).
 
-1. A 1M-element closed-form call: ``storage_factor`` over arrays of near, far, half_fov, n′
-   against benches/reference/closed_numpy.py (the same formula and domain checks in NumPy).
+1. Every closed form with a fast path, 1M elements, every argument an array (random, inside the
+   domain; n′ = ∞ for every 7th element), against benches/reference/closed_numpy.py (the same
+   formula and domain checks in NumPy); the forms with tan θ also with θ one number.
 2. The 360 × 1440 hemisphere sweep of the lispsm (1/sin γ) map, f/n = 1000, half fov 30°,
    against benches/reference/sweep_numpy.py (vectorised, blocks of 4096 directions).
 
-Both pairs are checked to agree (relative 1e-12 and 1e-9) before they are timed. Best and median
+Each pair is checked to agree (relative 1e-12, sweep 1e-9) before it is timed. Best and median
 of repeated runs after a warm-up; the bindings use all cores (rayon), NumPy one.
 
     python python/bench.py [--repeats N]
@@ -38,11 +39,27 @@ def timed(f, repeats):
     return min(ts), float(np.median(ts))
 
 
+def compare(label, ours, theirs, args, repeats, rtol=1e-12):
+    a = ours(*args)
+    b = theirs(*args)
+    both = np.isfinite(b)
+    assert np.array_equal(np.isinf(a), np.isinf(b)), label
+    assert np.allclose(a[both], b[both], rtol=rtol, atol=0), (label, np.max(np.abs(a / b - 1)))
+    rs, rm = timed(lambda: ours(*args), repeats)
+    ns, nm = timed(lambda: theirs(*args), repeats)
+    print(f"| {label} | {rs * 1e3:.2f} ms ({rm * 1e3:.2f}) | {ns * 1e3:.2f} ms ({nm * 1e3:.2f}) "
+          f"| {ns / rs:.1f}x |", flush=True)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--repeats", type=int, default=11)
     args = p.parse_args()
-    print(f"numpy {np.__version__}, {os.cpu_count()} cores")
+    r = args.repeats
+    print(f"numpy {np.__version__}, {os.cpu_count()} cores, load average "
+          f"{' '.join(f'{x:.2f}' for x in os.getloadavg())}")
+    print("| call, 1M elements | bindings best (median) | NumPy best (median) | ratio |")
+    print("|---|---|---|---|")
 
     rng = np.random.default_rng(1)
     n = 1_000_000
@@ -51,34 +68,44 @@ def main():
     half_fov = rng.uniform(0.1, 1.4, n)
     n_prime = near * rng.uniform(1.0, 100.0, n)
     n_prime[::7] = np.inf
-    a = sa.storage_factor(near, far, half_fov, n_prime)
-    b = closed_numpy.storage_factor(near, far, half_fov, n_prime)
-    assert np.allclose(a, b, rtol=1e-12, atol=0), np.max(np.abs(a / b - 1))
-    rs, rm = timed(lambda: sa.storage_factor(near, far, half_fov, n_prime), args.repeats)
-    ns, nm = timed(lambda: closed_numpy.storage_factor(near, far, half_fov, n_prime), args.repeats)
-    print(f"storage_factor, 1M elements: bindings best {rs * 1e3:.2f} ms (median {rm * 1e3:.2f}), "
-          f"numpy best {ns * 1e3:.2f} ms (median {nm * 1e3:.2f}): {ns / rs:.1f}x")
-
     z = near + (far - near) * rng.uniform(0.0, 1.0, n)
-    a = sa.mx(near, far, n_prime, z)
-    b = closed_numpy.mx(near, far, n_prime, z)
-    assert np.allclose(a, b, rtol=1e-12, atol=0), np.max(np.abs(a / b - 1))
-    rs, rm = timed(lambda: sa.mx(near, far, n_prime, z), args.repeats)
-    ns, nm = timed(lambda: closed_numpy.mx(near, far, n_prime, z), args.repeats)
-    print(f"mx, 1M elements: bindings best {rs * 1e3:.2f} ms (median {rm * 1e3:.2f}), "
-          f"numpy best {ns * 1e3:.2f} ms (median {nm * 1e3:.2f}): {ns / rs:.1f}x")
+    eta = rng.uniform(-1.0, 1.0, n)
+    alpha = far / near
+    n_warp = n_prime / near
+    zg = 1.0 + (alpha - 1.0) * rng.uniform(0.0, 1.0, n)
+    c = closed_numpy
+    for label, ours, theirs, a in [
+        ("`mx`", sa.mx, c.mx, (near, far, n_prime, z)),
+        ("`max_mx`", sa.max_mx, c.max_mx, (near, far, n_prime)),
+        ("`n_prime_lispsm`", sa.n_prime_lispsm, c.n_prime_lispsm, (near, far)),
+        ("`n_prime_from_eta`", sa.n_prime_from_eta, c.n_prime_from_eta, (near, far, eta)),
+        ("`eta_from_n_prime`", sa.eta_from_n_prime, c.eta_from_n_prime, (near, far, n_prime)),
+        ("`distribution_g`", sa.distribution_g, c.distribution_g, (alpha, n_warp, zg)),
+        ("`mz`", sa.mz, c.mz, (near, far, half_fov, n_prime, z)),
+        ("`max_mz`", sa.max_mz, c.max_mz, (near, far, half_fov, n_prime)),
+        ("`storage_factor`", sa.storage_factor, c.storage_factor, (near, far, half_fov, n_prime)),
+        ("`mz`, θ one number", sa.mz, c.mz, (near, far, 0.5, n_prime, z)),
+        ("`max_mz`, θ one number", sa.max_mz, c.max_mz, (near, far, 0.5, n_prime)),
+        ("`storage_factor`, θ one number", sa.storage_factor, c.storage_factor,
+         (near, far, 0.5, n_prime)),
+    ]:
+        compare(label, ours, theirs, a, r)
+    t = np.empty(n)
+    ts, tm = timed(lambda: np.tan(half_fov, out=t), r)
+    print(f"(NumPy's np.tan alone, 1M elements: {ts * 1e3:.2f} ms; f64::tan (libm) is the "
+          f"bindings' tan)")
 
     e, az = 360, 1440
     el_flat, az_flat = sweep_numpy.grid(e, az)
     s_rust = sa.sweep(1.0, 1000.0, np.pi / 6, "lispsm", elevations=e, azimuths=az)
     s_np = sweep_numpy.sweep_chunked(el_flat, az_flat, 4096).reshape(e, az)
     assert np.allclose(s_rust, s_np, rtol=1e-9, atol=0), np.max(np.abs(s_rust / s_np - 1))
-    sweep_repeats = max(3, args.repeats // 2)
+    sweep_repeats = max(3, r // 2)
     rs, rm = timed(lambda: sa.sweep(1.0, 1000.0, np.pi / 6, "lispsm", elevations=e, azimuths=az),
                    sweep_repeats)
     ns, nm = timed(lambda: sweep_numpy.sweep_chunked(el_flat, az_flat, 4096), sweep_repeats)
-    print(f"sweep {e} x {az}: bindings best {rs * 1e3:.2f} ms (median {rm * 1e3:.2f}), "
-          f"numpy best {ns * 1e3:.2f} ms (median {nm * 1e3:.2f}): {ns / rs:.1f}x")
+    print(f"| `sweep` {e} x {az} | {rs * 1e3:.2f} ms ({rm * 1e3:.2f}) | "
+          f"{ns * 1e3:.2f} ms ({nm * 1e3:.2f}) | {ns / rs:.1f}x |")
 
 
 if __name__ == "__main__":

@@ -38,6 +38,15 @@ pub(crate) fn sqrt_fn(n: f64, f: f64) -> f64 {
     }
 }
 
+/// `v.is_finite()` as float operations for vectorised loops (the closed forms' `*_unchecked`
+/// twins): v − v is +0 exactly for a finite v and NaN for ±∞ and NaN. (`is_finite` compiles to
+/// integer compares of the bits, which SSE2 lacks for 64-bit lanes.)
+#[inline(always)]
+#[allow(clippy::eq_op)] // v − v is the test.
+pub(crate) fn finite_select(v: f64) -> bool {
+    v - v == 0.0
+}
+
 /// How far outside the clip volume rounding may put a point: 10⁻⁶ of its half-width.
 pub const CLIP_SLACK: f64 = 1e-6;
 

@@ -20,10 +20,11 @@ def mz(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, n_prime: ArrayLike,
     """m_z = (res_image/res_t) (f − n)/(2 tan θ) (n′ + z − n)²/(z n′ (n′ + f − n)) (Lloyd 2006 Eq 8)."""
 def max_mx(near: ArrayLike, far: ArrayLike, n_prime: ArrayLike,
            res_image: Optional[ArrayLike] = ..., res_s: Optional[ArrayLike] = ...) -> F64:
-    """M_x = m_x at z = near (Lloyd 2006 Eq 9)."""
+    """M_x = (res_image/res_s) f n′/(n (n′ + f − n)), f/n for n′ = ∞: m_x at z = near (Lloyd 2006 Eq 9)."""
 def max_mz(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, n_prime: ArrayLike,
            res_image: Optional[ArrayLike] = ..., res_t: Optional[ArrayLike] = ...) -> F64:
-    """M_z (Lloyd 2006 Eq 10)."""
+    """M_z = (res_image/res_t) (f − n)/(2 tan θ) · {(n′ + f − n)/(f n′) for n′ ≤ n + √(f n);
+    n′/((n′ + f − n) n) above; 1/n for n′ = ∞} (Lloyd 2006 Eq 10)."""
 def storage_factor(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, n_prime: ArrayLike) -> F64:
     """S̄ = (f/n − 1)/(2 tan θ) · {1; n′² f/(n (n′ + f − n)²); f/n} (Lloyd 2006 Eq 12)."""
 def critical_resolution(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, n_prime: ArrayLike,
@@ -32,42 +33,50 @@ def critical_resolution(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, n_
 def n_prime_lispsm(near: ArrayLike, far: ArrayLike) -> F64:
     """n′ = n + √(f n) (Lloyd 2006 §4.1)."""
 def n_prime_from_eta(near: ArrayLike, far: ArrayLike, eta: ArrayLike) -> F64:
-    """n′(η) (Lloyd 2006 Eq 11); inf for η = −1."""
+    """n′ = n (√α + 1 − η (α − 1))/(η + 1) for −1 ≤ η ≤ 0, n (√α + 1)/(η √α + 1) for 0 < η ≤ 1,
+    α = f/n (Lloyd 2006 Eq 11); inf for η = −1."""
 def eta_from_n_prime(near: ArrayLike, far: ArrayLike, n_prime: ArrayLike) -> F64:
-    """η(n′) (Lloyd 2006 App. B)."""
+    """η = (√α + 1 − ν)/(ν + α − 1) for ν ≥ 1 + √α, (√α + 1 − ν)/(ν √α) below, ν = n′/n, α = f/n;
+    −1 for n′ = ∞ (Lloyd 2006 App. B, the inverse of Eq 11)."""
 def distribution_g(alpha: ArrayLike, n_warp: ArrayLike, z: ArrayLike) -> F64:
     """g(z) = (z − 1 + n)²/(z n (n + α − 1)) (Lloyd 2005 Eq 3)."""
 def subdivided_max_error(alpha: ArrayLike, k: ArrayLike, eta: ArrayLike, half_fov: ArrayLike,
                          res_image: Optional[ArrayLike] = ..., res_s: Optional[ArrayLike] = ...) -> F64:
-    """m_max with k face subdivisions (Lloyd 2005 Eq 7)."""
+    """m_max = k (res_image/res_s)/(2 tan θ) · (α^(1/k) − 1)/α^(1/2k) · (1 + |ξ| (α^(1/2k) − 1)),
+    ξ = eta, k whole ≥ 1 (Lloyd 2005 Eq 7)."""
 def allocate_texels(errors: ArrayLike, total: float) -> npt.NDArray[np.float64]:
     """r_si = total e_i/Σ e_j (Lloyd 2005 Eq 6)."""
 def z_partition(near: ArrayLike, far: ArrayLike, k: int,
                 scheme: Literal["self_similar", "uniform", "practical", "adaptive"],
                 lambda_: Optional[ArrayLike] = ..., light_angle: Optional[ArrayLike] = ...,
                 ratio: Optional[ArrayLike] = ...) -> npt.NDArray[np.float64]:
-    """The k + 1 split planes (last axis) (Lloyd 2006 Eq 15, 16; Barroso Eq 19)."""
+    """The k + 1 split planes (last axis): z_i = n (f/n)^(i/k) ("self_similar", Lloyd 2006 Eq 15, 16),
+    n + (f − n) i/k ("uniform"), λ of the first plus 1 − λ of the second ("practical"), Barroso
+    Eq 19 ("adaptive")."""
 def scheme_storage_factor(scheme: Literal["zp", "zp_w", "fp_zp_w", "optimal"],
                           light: Literal["overhead", "behind"], near: ArrayLike, far: ArrayLike,
                           half_fov: ArrayLike, k: ArrayLike) -> F64:
-    """S̄ of a partitioning scheme (Lloyd 2006 Eq 17–21, App. C)."""
+    """S̄ of a partitioning scheme summed over its maps (Lloyd 2006 Eq 17–21, App. C), e.g. ZP+W
+    overhead S̄ = k (α^(1/k) − 1)/(2 tan θ) (Eq 18), optimal S̄ = ln α/(2 tan θ) (App. C)."""
 def tilted_mz(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, n_prime: ArrayLike,
               light_angle: ArrayLike, z: ArrayLike, res_image: Optional[ArrayLike] = ...,
               res_t: Optional[ArrayLike] = ...) -> F64:
-    """m_z for a tilted light (Barroso Eq 10–12)."""
+    """m_z = (res_image/res_t) (f′ − n′) ψ²/(2 tan θ n′ f′ z sin γ), ψ the warp depth of the point
+    (Barroso Eq 10–12); μ/(2 tan θ z sin γ) unwarped."""
 def generalized_n_prime(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, light_angle: ArrayLike,
                         falloff: Literal["barroso", "zhang"]) -> F64:
-    """Barroso's generalised n′ (Eq 13–18); inf at γ = 0."""
+    """Barroso's generalised n′: n′₁(γ) for γ ≥ γ_lim, else n′₁(γ_lim)/r(γ) with r of Eq 18
+    ("barroso") or Eq 17 ("zhang") (Barroso Eq 13–18); inf at γ = 0."""
 def gamma_lim(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike) -> F64:
     """γ_lim = atan((f + n) tan θ/(f − n)) (Barroso Eq 15)."""
 def tsm_eta(lambda_: ArrayLike, delta_prime: ArrayLike, xi: ArrayLike) -> F64:
     """η = λ δ′ (1 + ξ)/(λ (1 − ξ) − 2 δ′) (Martin–Tan §6.2)."""
 def zhang_eq(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_: ArrayLike,
              light_angle: ArrayLike, y: ArrayLike, z: ArrayLike) -> F64:
-    """E_q, global representation (Zhang Eq 13)."""
+    """E_q = 2 tan φ_w z_w/(tan φ z) = F_q (z + G)/z, 2 f/z for λ = ∞ (Zhang Eq 13, Appendix)."""
 def zhang_ep(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_: ArrayLike,
              light_angle: ArrayLike, y: ArrayLike, z: ArrayLike) -> F64:
-    """E_p, global representation (Zhang Eq 14)."""
+    """E_p = μ z_w²/(tan φ (λ + μ) λ z) = F_p (z + G)²/z, μ/(tan φ z) for λ = ∞ (Zhang Eq 14, Appendix)."""
 def zhang_eq_local(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_: ArrayLike, z: ArrayLike) -> F64:
     """E_q = 2 f (z − n + λ)/((f − n + λ) z) (Zhang Eq 8)."""
 def zhang_ep_local(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_: ArrayLike, z: ArrayLike) -> F64:

@@ -3,7 +3,9 @@
 //! Every float argument is converted to a float64 array (Python numbers, lists, integer and float32
 //! arrays alike; booleans, complex numbers, strings and objects are refused), the arguments'
 //! shapes are broadcast against each other as NumPy broadcasts them, and the closed form runs once
-//! per element of the broadcast shape with the GIL released, over all cores for large arrays.
+//! per element of the broadcast shape with the GIL released, over all cores for large arrays —
+//! through a vectorised fast kernel in blocks ([`map_fast`]) where the form has one, with the
+//! validated form for any block holding an element the kernel's checks do not admit.
 //! The first element (in C order) whose arguments the crate refuses raises `ValueError` with the
 //! crate's message and, for an array, the element's index.
 
@@ -17,6 +19,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyFloat, PyInt};
 use rayon::prelude::*;
 use shadow_aliasing::Error;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Elements per parallel task; calls below twice this run on one thread.
 const CHUNK: usize = 16 * 1024;
@@ -117,9 +120,14 @@ pub fn fmt_shape(s: &[usize]) -> String {
     }
 }
 
+/// Elements per block of the fast path: each argument is read as one slice of this length
+/// (an argument with one value as a block of copies), so the kernel runs over plain slices.
+const BLOCK: usize = 512;
+
 /// The values of one argument over the broadcast shape, in C order.
 enum Data<'a> {
-    Scalar(f64),
+    /// One value for every element, and a block of copies of it for the fast path.
+    Scalar(f64, Vec<f64>),
     Slice(&'a [f64]),
 }
 
@@ -127,9 +135,62 @@ impl Data<'_> {
     #[inline(always)]
     fn at(&self, i: usize) -> f64 {
         match self {
-            Data::Scalar(v) => *v,
+            Data::Scalar(v, _) => *v,
             Data::Slice(s) => s[i],
         }
+    }
+
+    /// Elements `start .. start + len` (`len` ≤ [`BLOCK`]).
+    #[inline(always)]
+    fn block(&self, start: usize, len: usize) -> &[f64] {
+        match self {
+            Data::Scalar(_, copies) => &copies[..len],
+            Data::Slice(s) => &s[start..start + len],
+        }
+    }
+}
+
+fn scalar(v: f64) -> Data<'static> {
+    Data::Scalar(v, vec![v; BLOCK])
+}
+
+/// Whether the fast path is used (the default); `_native._set_fast_path(False)` turns it off, so
+/// that the tests can compare it with the validated element-by-element path.
+static FAST_PATH: AtomicBool = AtomicBool::new(true);
+
+/// Turns the fast path of the element-wise closed forms on or off (a test hook); returns the
+/// previous setting. With it off every element goes through the crate's validated closed form,
+/// as the fast path does for any block holding an element its domain check does not admit.
+#[pyfunction]
+pub fn _set_fast_path(enabled: bool) -> bool {
+    FAST_PATH.swap(enabled, Ordering::Relaxed)
+}
+
+/// The one transcendental most forms need per element, tan θ, remembered for the last θ: a θ
+/// that is one number, or repeats along a row, costs one `tan` per run (the same value, since
+/// `tan` is a function of its argument's bits).
+struct TanMemo {
+    bits: u64,
+    tan: f64,
+}
+
+impl TanMemo {
+    fn new() -> Self {
+        // A NaN's bits: `tan` is computed on the first call.
+        Self {
+            bits: f64::NAN.to_bits(),
+            tan: f64::NAN,
+        }
+    }
+
+    /// tan θ, as `f64::tan` computes it.
+    #[inline(always)]
+    fn tan(&mut self, theta: f64) -> f64 {
+        if theta.to_bits() != self.bits {
+            self.bits = theta.to_bits();
+            self.tan = theta.tan();
+        }
+        self.tan
     }
 }
 
@@ -154,6 +215,12 @@ pub const N_PRIME: OutSpec = OutSpec {
     allow_inf: true,
 };
 
+/// The fast kernel of a scalar closed form: for the arguments of one element (and tan θ of the
+/// argument `tan_of` names, or 0), the value computed without validation (the library's
+/// `*_unchecked` twin) and whether the element certainly lies in the domain. Where it says so,
+/// the value must be the validated form's, bit for bit.
+pub type NoFast<const N: usize> = fn(&[f64; N], f64) -> (f64, bool);
+
 /// Evaluates `f` on every element of the broadcast of `args` (each `(name, object)`).
 ///
 /// `f` writes its `width` numbers (one for a scalar quantity) into its output slice.
@@ -165,6 +232,61 @@ pub fn map_into<'py, const N: usize, F>(
 ) -> PyResult<Bound<'py, PyAny>>
 where
     F: Fn(&[f64; N], &mut [f64]) -> Result<(), Error> + Sync,
+{
+    drive(py, args, spec, f, None::<Fast<NoFast<N>>>)
+}
+
+/// A scalar closed form with a fast kernel `g` beside its validated form `f`.
+///
+/// Each block of [`BLOCK`] elements first takes tan of argument `tan_of` (if any; one call per
+/// run of equal values, [`TanMemo`]), then runs `g` over plain slices (no validation, no
+/// `Result`, no call: the compiler vectorises it) and collects the domain checks; a
+/// block with any element outside `g`'s domain, or with a non-finite value, is computed again
+/// element by element with `f`, which gives the values and the first error exactly as without
+/// the fast path.
+pub fn map_fast<'py, const N: usize, F, G>(
+    py: Python<'py>,
+    args: [(&'static str, &Bound<'py, PyAny>); N],
+    spec: OutSpec,
+    f: F,
+    g: G,
+    tan_of: Option<usize>,
+) -> PyResult<Bound<'py, PyAny>>
+where
+    F: Fn(&[f64; N]) -> Result<f64, Error> + Sync,
+    G: Fn(&[f64; N], f64) -> (f64, bool) + Sync,
+{
+    let fast = FAST_PATH
+        .load(Ordering::Relaxed)
+        .then_some(Fast { g, tan_of });
+    drive(
+        py,
+        args,
+        spec,
+        |x, o| {
+            o[0] = f(x)?;
+            Ok(())
+        },
+        fast,
+    )
+}
+
+/// A fast kernel and the argument whose tangent it needs.
+pub struct Fast<G> {
+    g: G,
+    tan_of: Option<usize>,
+}
+
+fn drive<'py, const N: usize, F, G>(
+    py: Python<'py>,
+    args: [(&'static str, &Bound<'py, PyAny>); N],
+    spec: OutSpec,
+    f: F,
+    g: Option<Fast<G>>,
+) -> PyResult<Bound<'py, PyAny>>
+where
+    F: Fn(&[f64; N], &mut [f64]) -> Result<(), Error> + Sync,
+    G: Fn(&[f64; N], f64) -> (f64, bool) + Sync,
 {
     let names: [&'static str; N] = std::array::from_fn(|k| args[k].0);
     let mut conv = Vec::with_capacity(N);
@@ -199,11 +321,11 @@ where
     for (a, o) in conv.iter().zip(&owned) {
         data.push(match (a, o) {
             (_, Some(v)) => Data::Slice(v.as_slice()),
-            (FloatArg::Number(v), None) => Data::Scalar(*v),
+            (FloatArg::Number(v), None) => scalar(*v),
             (FloatArg::Array(arr), None) => {
                 let view = arr.as_array();
                 if view.len() == 1 {
-                    Data::Scalar(view.iter().next().copied().unwrap_or(f64::NAN))
+                    scalar(view.iter().next().copied().unwrap_or(f64::NAN))
                 } else {
                     Data::Slice(
                         arr.as_slice()
@@ -215,7 +337,9 @@ where
     }
     let width = spec.width.unwrap_or(1);
     let mut out = vec![0.0f64; n * width];
-    let failure = py.detach(|| run(&data, &mut out, width, spec.allow_inf, &f));
+    // The fast kernel writes one number per element.
+    let g = g.filter(|_| width == 1);
+    let failure = py.detach(|| run(&data, &mut out, width, spec.allow_inf, &f, g.as_ref()));
     if let Some((i, e)) = failure {
         let msg = e.to_string();
         return Err(PyValueError::new_err(if shape.is_empty() {
@@ -248,17 +372,19 @@ where
 }
 
 /// The computation proper, without the GIL: the first failing element (lowest index), if any.
-fn run<const N: usize, F>(
+fn run<const N: usize, F, G>(
     data: &[Data<'_>],
     out: &mut [f64],
     width: usize,
     allow_inf: bool,
     f: &F,
+    g: Option<&Fast<G>>,
 ) -> Option<(usize, Error)>
 where
     F: Fn(&[f64; N], &mut [f64]) -> Result<(), Error> + Sync,
+    G: Fn(&[f64; N], f64) -> (f64, bool) + Sync,
 {
-    let chunk = |start: usize, out: &mut [f64]| -> Option<(usize, Error)> {
+    let checked = |start: usize, out: &mut [f64]| -> Option<(usize, Error)> {
         for (j, o) in out.chunks_exact_mut(width).enumerate() {
             let i = start + j;
             let x: [f64; N] = std::array::from_fn(|k| data[k].at(i));
@@ -279,6 +405,43 @@ where
         }
         None
     };
+    let chunk = |start: usize, out: &mut [f64]| -> Option<(usize, Error)> {
+        let Some(Fast { g, tan_of }) = g else {
+            return checked(start, out);
+        };
+        let mut memo = TanMemo::new();
+        let mut tans = [0.0f64; BLOCK];
+        for (b, ob) in out.chunks_mut(BLOCK).enumerate() {
+            let s0 = start + b * BLOCK;
+            let len = ob.len();
+            let cols: [&[f64]; N] = std::array::from_fn(|k| data[k].block(s0, len));
+            if let Some(k) = *tan_of {
+                for (t, &th) in tans.iter_mut().zip(cols[k]) {
+                    *t = memo.tan(th);
+                }
+            }
+            // A full block as fixed-length arrays, so that the loop has no bounds checks and
+            // vectorises where the kernel allows; the last, shorter block as slices.
+            let mut full = [&UNUSED; N];
+            let mut is_full = true;
+            for (f, c) in full.iter_mut().zip(&cols) {
+                match c.first_chunk::<BLOCK>() {
+                    Some(c) => *f = c,
+                    None => is_full = false,
+                }
+            }
+            let ok = match ob.first_chunk_mut::<BLOCK>() {
+                Some(o) if is_full => kernel_full(&full, &tans, o, allow_inf, g),
+                _ => kernel_tail(&cols, &tans[..len], ob, allow_inf, g),
+            };
+            if !ok {
+                if let Some(failure) = checked(s0, ob) {
+                    return Some(failure);
+                }
+            }
+        }
+        None
+    };
     let elements = out.len() / width.max(1);
     if elements < 2 * CHUNK {
         return chunk(0, out);
@@ -287,6 +450,68 @@ where
         .enumerate()
         .filter_map(|(c, o)| chunk(c * CHUNK, o))
         .min_by_key(|(i, _)| *i)
+}
+
+/// The placeholder of a column before it is set (never read).
+static UNUSED: [f64; BLOCK] = [0.0; BLOCK];
+
+/// Whether an element's value is admitted: finite, or +∞ where allowed.
+#[inline(always)]
+fn admitted(v: f64, good: bool, allow_inf: bool) -> bool {
+    good & (finite(v) | (allow_inf & (v == f64::INFINITY)))
+}
+
+/// `v.is_finite()` as two float operations: v − v is +0 exactly for a finite v and NaN for ±∞
+/// and NaN. (`is_finite` compiles to integer compares of the bits, which without SSE4.2's 64-bit
+/// compare cost several instructions per lane.)
+#[inline(always)]
+#[allow(clippy::eq_op)] // v − v is the test, not a mistake.
+pub fn finite(v: f64) -> bool {
+    v - v == 0.0
+}
+
+/// `g` over one full block: writes the values, returns whether every element was admitted.
+#[inline(always)]
+fn kernel_full<const N: usize, G>(
+    cols: &[&[f64; BLOCK]; N],
+    tans: &[f64; BLOCK],
+    out: &mut [f64; BLOCK],
+    allow_inf: bool,
+    g: &G,
+) -> bool
+where
+    G: Fn(&[f64; N], f64) -> (f64, bool),
+{
+    let mut ok = true;
+    for j in 0..BLOCK {
+        let x: [f64; N] = std::array::from_fn(|k| cols[k][j]);
+        let (v, good) = g(&x, tans[j]);
+        out[j] = v;
+        ok &= admitted(v, good, allow_inf);
+    }
+    ok
+}
+
+/// [`kernel_full`] over a shorter block (`out.len()` elements of each column).
+#[inline(always)]
+fn kernel_tail<const N: usize, G>(
+    cols: &[&[f64]; N],
+    tans: &[f64],
+    out: &mut [f64],
+    allow_inf: bool,
+    g: &G,
+) -> bool
+where
+    G: Fn(&[f64; N], f64) -> (f64, bool),
+{
+    let mut ok = true;
+    for (j, o) in out.iter_mut().enumerate() {
+        let x: [f64; N] = std::array::from_fn(|k| cols[k][j]);
+        let (v, good) = g(&x, tans[j]);
+        *o = v;
+        ok &= admitted(v, good, allow_inf);
+    }
+    ok
 }
 
 /// A flat C-order index as NumPy's multi-index `(i, j, …)`.

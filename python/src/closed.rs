@@ -3,7 +3,8 @@
 //! Argument names are the contract's, except Zhang's and Martin–Tan's `lambda`, a Python keyword,
 //! spelled `lambda_`. Angles in radians.
 
-use crate::broadcast::{count, map, map_into, OutSpec, N_PRIME, SCALAR};
+use crate::broadcast::finite;
+use crate::broadcast::{count, map, map_fast, map_into, OutSpec, N_PRIME, SCALAR};
 use numpy::PyUntypedArrayMethods;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -38,190 +39,202 @@ fn view(x: &[f64]) -> Result<ViewFrustum, Error> {
     ViewFrustum::new(x[0], x[1], x[2])
 }
 
-/// The x error at depth z, light overhead (Lloyd 2006 Eq 7; Lloyd 2005 Eq 8).
-///
-///     m_x = (res_image / res_s) · f (n′ + z − n) / (z (n′ + f − n)),   m_x = (res_image / res_s) f / z for n′ = ∞
-///
-/// n = near, f = far, n′ = n_prime (≥ near; ``inf`` for the unwarped map), z = depth in [near, far].
-#[pyfunction]
-#[pyo3(signature = (near, far, n_prime, z, res_image=None, res_s=None))]
-pub fn mx<'py>(
-    py: Python<'py>,
-    near: &Any<'py>,
-    far: &Any<'py>,
-    n_prime: &Any<'py>,
-    z: &Any<'py>,
-    res_image: Option<&Any<'py>>,
-    res_s: Option<&Any<'py>>,
-) -> PyResult<Any<'py>> {
-    let one = one(py);
-    let (ri, rs) = (res_image.unwrap_or(&one), res_s.unwrap_or(&one));
-    map(
-        py,
-        [
-            ("near", near),
-            ("far", far),
-            ("n_prime", n_prime),
-            ("z", z),
-            ("res_image", ri),
-            ("res_s", rs),
-        ],
-        SCALAR,
-        |x| {
-            overhead::mx(
-                x[0],
-                x[1],
-                n_prime_arg("n_prime", x[2])?,
-                x[3],
-                Resolutions::new(x[4], x[5], 1.0)?,
-            )
-        },
-    )
+// The domain checks of the fast kernels: the crate's validation as comparisons combined with `&`
+// (no branch, no `Result`), each mirroring the check it names. An element they admit is one the
+// validated form accepts; the tests compare both paths (`_set_fast_path`).
+
+/// `positive`: finite and > 0.
+#[inline(always)]
+fn pos(v: f64) -> bool {
+    finite(v) & (v > 0.0)
 }
 
-/// The z error at depth z, light overhead (Lloyd 2006 Eq 8).
-///
-///     m_z = (res_image / res_t) · (f − n)/(2 tan θ) · (n′ + z − n)² / (z n′ (n′ + f − n))
-///     m_z = (res_image / res_t) · (f − n)/(2 tan θ) · 1/z                 for n′ = ∞
-///
-/// n = near, f = far, θ = half_fov, n′ = n_prime (≥ near, or ``inf``), z in [near, far].
-#[pyfunction]
-#[pyo3(signature = (near, far, half_fov, n_prime, z, res_image=None, res_t=None))]
-#[allow(clippy::too_many_arguments)]
-pub fn mz<'py>(
-    py: Python<'py>,
-    near: &Any<'py>,
-    far: &Any<'py>,
-    half_fov: &Any<'py>,
-    n_prime: &Any<'py>,
-    z: &Any<'py>,
-    res_image: Option<&Any<'py>>,
-    res_t: Option<&Any<'py>>,
-) -> PyResult<Any<'py>> {
-    let one = one(py);
-    let (ri, rt) = (res_image.unwrap_or(&one), res_t.unwrap_or(&one));
-    map(
-        py,
-        [
-            ("near", near),
-            ("far", far),
-            ("half_fov", half_fov),
-            ("n_prime", n_prime),
-            ("z", z),
-            ("res_image", ri),
-            ("res_t", rt),
-        ],
-        SCALAR,
-        |x| {
-            overhead::mz(
-                &view(x)?,
-                n_prime_arg("n_prime", x[3])?,
-                x[4],
-                Resolutions::new(x[5], 1.0, x[6])?,
-            )
-        },
-    )
+/// `analytic::eta::near_far`: 0 < n < f, both finite, f/n finite.
+#[inline(always)]
+fn near_far_ok(n: f64, f: f64) -> bool {
+    pos(n) & pos(f) & (f > n) & finite(f / n)
 }
 
-/// The maximum x error over the frustum, light overhead (Lloyd 2006 Eq 9): m_x at z = near,
-///
-///     M_x = (res_image / res_s) · f n′ / (n (n′ + f − n)),   M_x = (res_image / res_s) f / n for n′ = ∞
-#[pyfunction]
-#[pyo3(signature = (near, far, n_prime, res_image=None, res_s=None))]
-pub fn max_mx<'py>(
-    py: Python<'py>,
-    near: &Any<'py>,
-    far: &Any<'py>,
-    n_prime: &Any<'py>,
-    res_image: Option<&Any<'py>>,
-    res_s: Option<&Any<'py>>,
-) -> PyResult<Any<'py>> {
-    let one = one(py);
-    let (ri, rs) = (res_image.unwrap_or(&one), res_s.unwrap_or(&one));
-    map(
-        py,
-        [
-            ("near", near),
-            ("far", far),
-            ("n_prime", n_prime),
-            ("res_image", ri),
-            ("res_s", rs),
-        ],
-        SCALAR,
-        |x| {
-            overhead::max_mx(
-                x[0],
-                x[1],
-                n_prime_arg("n_prime", x[2])?,
-                Resolutions::new(x[3], x[4], 1.0)?,
-            )
-        },
-    )
+/// `NPrime::new` then `n_prime_at_least`: ∞, or finite with near ≤ n′.
+#[inline(always)]
+fn n_prime_ok(np: f64, n: f64) -> bool {
+    (np == f64::INFINITY) | (pos(np) & (np >= n))
 }
 
-/// The maximum z error over the frustum, light overhead (Lloyd 2006 Eq 10):
-///
-///     M_z = (res_image / res_t) · (f − n)/(2 tan θ) · (n′ + f − n)/(f n′)     n ≤ n′ ≤ n + √(f n)
-///     M_z = (res_image / res_t) · (f − n)/(2 tan θ) · n′/((n′ + f − n) n)     n′ > n + √(f n)
-///     M_z = (res_image / res_t) · (f − n)/(2 tan θ n)                          n′ = ∞
-#[pyfunction]
-#[pyo3(signature = (near, far, half_fov, n_prime, res_image=None, res_t=None))]
-pub fn max_mz<'py>(
-    py: Python<'py>,
-    near: &Any<'py>,
-    far: &Any<'py>,
-    half_fov: &Any<'py>,
-    n_prime: &Any<'py>,
-    res_image: Option<&Any<'py>>,
-    res_t: Option<&Any<'py>>,
-) -> PyResult<Any<'py>> {
-    let one = one(py);
-    let (ri, rt) = (res_image.unwrap_or(&one), res_t.unwrap_or(&one));
-    map(
-        py,
-        [
-            ("near", near),
-            ("far", far),
-            ("half_fov", half_fov),
-            ("n_prime", n_prime),
-            ("res_image", ri),
-            ("res_t", rt),
-        ],
-        SCALAR,
-        |x| {
-            overhead::max_mz(
-                &view(x)?,
-                n_prime_arg("n_prime", x[3])?,
-                Resolutions::new(x[4], 1.0, x[5])?,
-            )
-        },
-    )
+/// `depth_in`: z finite in [n, f].
+#[inline(always)]
+fn depth_ok(z: f64, n: f64, f: f64) -> bool {
+    finite(z) & (z >= n) & (z <= f)
 }
 
-/// The storage factor S̄ = M_x M_z, light overhead (Lloyd 2006 Eq 12):
-///
-///     S̄ = (f/n − 1) / (2 tan θ)                                  n ≤ n′ ≤ n + √(f n)
-///     S̄ = (f/n − 1) / (2 tan θ) · n′² f / (n (n′ + f − n)²)      n′ > n + √(f n)
-///     S̄ = (f/n − 1) / (2 tan θ) · f / n                          n′ = ∞
-#[pyfunction]
-pub fn storage_factor<'py>(
-    py: Python<'py>,
-    near: &Any<'py>,
-    far: &Any<'py>,
-    half_fov: &Any<'py>,
-    n_prime: &Any<'py>,
-) -> PyResult<Any<'py>> {
-    map(
-        py,
-        [
-            ("near", near),
-            ("far", far),
-            ("half_fov", half_fov),
-            ("n_prime", n_prime),
-        ],
-        SCALAR,
-        |x| overhead::storage_factor(&view(x)?, n_prime_arg("n_prime", x[3])?),
-    )
+/// `ViewFrustum::new(n, f, θ)` (`with_aspect` at aspect 1), given t = tan θ: whether the
+/// frustum is in the type's domain.
+#[inline(always)]
+fn view_ok(n: f64, f: f64, th: f64, t: f64) -> bool {
+    pos(n)
+        & pos(f)
+        & (f > n)
+        & finite(th)
+        & (th > 0.0)
+        & (th < std::f64::consts::FRAC_PI_2)
+        & normal(t)
+        & (t > 0.0)
+        & finite(f * t)
+        & finite(f / n)
+        // n + √(f n) finite; f·n normal also lets the twins take √(f n) as one square root.
+        & normal(f * n)
+        & normal(n * t)
+}
+
+/// `v.is_normal()` with float compares only (see `broadcast::finite`).
+#[inline(always)]
+fn normal(v: f64) -> bool {
+    let a = v.abs();
+    finite(a) & (a >= f64::MIN_POSITIVE)
+}
+
+/// The argument's name in messages: a Rust parameter `lambda_` is the contract's `lambda`.
+fn arg_name(rust: &'static str) -> &'static str {
+    rust.strip_suffix('_').unwrap_or(rust)
+}
+
+/// One element-wise closed form as a Python function: its float arguments (required, then the
+/// optional resolutions defaulting to 1), the output spec, the validated form (`checked`, over
+/// the arguments in order) and optionally the fast kernel (`fast`, see `broadcast::map_fast`).
+macro_rules! elementwise {
+    (
+        $(#[$meta:meta])*
+        fn $name:ident($($req:ident),+ $(; $($opt:ident),+)?) -> $spec:expr;
+        checked = $checked:expr;
+        $(fast $(($tan:ident))? = $fast:expr;)?
+    ) => {
+        $(#[$meta])*
+        #[pyfunction]
+        #[pyo3(signature = ($($req),+ $(, $($opt = None),+)?))]
+        #[allow(clippy::too_many_arguments)]
+        pub fn $name<'py>(
+            py: Python<'py>,
+            $($req: &Any<'py>,)+
+            $($($opt: Option<&Any<'py>>,)+)?
+        ) -> PyResult<Any<'py>> {
+            #[allow(unused_variables)]
+            let one = one(py);
+            $($(let $opt = $opt.unwrap_or(&one);)+)?
+            let args = [
+                $((arg_name(stringify!($req)), $req),)+
+                $($((arg_name(stringify!($opt)), $opt),)+)?
+            ];
+            elementwise!(@call py, args, $spec, $checked $(, $fast, tan_of!($($tan)?))?)
+        }
+    };
+    (@call $py:ident, $args:ident, $spec:expr, $checked:expr) => {
+        map($py, $args, $spec, $checked)
+    };
+    (@call $py:ident, $args:ident, $spec:expr, $checked:expr, $fast:expr, $tan:expr) => {
+        map_fast($py, $args, $spec, $checked, $fast, $tan)
+    };
+}
+
+/// `fast(half_fov)`: the kernel receives tan θ of argument 2 (every form with a `ViewFrustum`
+/// has near, far, half_fov first); `fast`: it receives 0.
+macro_rules! tan_of {
+    () => {
+        None
+    };
+    (half_fov) => {
+        Some(2)
+    };
+}
+
+elementwise! {
+    /// The x error at depth z, light overhead (Lloyd 2006 Eq 7; Lloyd 2005 Eq 8).
+    ///
+    ///     m_x = (res_image / res_s) · f (n′ + z − n) / (z (n′ + f − n)),   m_x = (res_image / res_s) f / z for n′ = ∞
+    ///
+    /// n = near, f = far, n′ = n_prime (≥ near; ``inf`` for the unwarped map), z = depth in [near, far].
+    fn mx(near, far, n_prime, z; res_image, res_s) -> SCALAR;
+    checked = |&[n, f, np, z, ri, rs]: &[f64; 6]| {
+        overhead::mx(n, f, n_prime_arg("n_prime", np)?, z, Resolutions::new(ri, rs, 1.0)?)
+    };
+    fast = |&[n, f, np, z, ri, rs]: &[f64; 6], _: f64| {
+        let ok = near_far_ok(n, f) & n_prime_ok(np, n) & depth_ok(z, n, f) & pos(ri) & pos(rs);
+        (overhead::mx_unchecked(n, f, np, z, ri, rs), ok)
+    };
+}
+
+elementwise! {
+    /// The z error at depth z, light overhead (Lloyd 2006 Eq 8).
+    ///
+    ///     m_z = (res_image / res_t) · (f − n)/(2 tan θ) · (n′ + z − n)² / (z n′ (n′ + f − n))
+    ///     m_z = (res_image / res_t) · (f − n)/(2 tan θ) · 1/z                 for n′ = ∞
+    ///
+    /// n = near, f = far, θ = half_fov, n′ = n_prime (≥ near, or ``inf``), z in [near, far].
+    fn mz(near, far, half_fov, n_prime, z; res_image, res_t) -> SCALAR;
+    checked = |&[n, f, th, np, z, ri, rt]: &[f64; 7]| {
+        overhead::mz(
+            &view(&[n, f, th])?,
+            n_prime_arg("n_prime", np)?,
+            z,
+            Resolutions::new(ri, 1.0, rt)?,
+        )
+    };
+    fast(half_fov) = |&[n, f, th, np, z, ri, rt]: &[f64; 7], t: f64| {
+        let vok = view_ok(n, f, th, t);
+        let ok = vok & n_prime_ok(np, n) & depth_ok(z, n, f) & pos(ri) & pos(rt);
+        (overhead::mz_unchecked(n, f, t, np, z, ri, rt), ok)
+    };
+}
+
+elementwise! {
+    /// The maximum x error over the frustum, light overhead (Lloyd 2006 Eq 9): m_x at z = near,
+    ///
+    ///     M_x = (res_image / res_s) · f n′ / (n (n′ + f − n)),   M_x = (res_image / res_s) f / n for n′ = ∞
+    fn max_mx(near, far, n_prime; res_image, res_s) -> SCALAR;
+    checked = |&[n, f, np, ri, rs]: &[f64; 5]| {
+        overhead::max_mx(n, f, n_prime_arg("n_prime", np)?, Resolutions::new(ri, rs, 1.0)?)
+    };
+    fast = |&[n, f, np, ri, rs]: &[f64; 5], _: f64| {
+        // max_mx is mx at z = near, which depth_in always admits.
+        let ok = near_far_ok(n, f) & n_prime_ok(np, n) & pos(ri) & pos(rs);
+        (overhead::mx_unchecked(n, f, np, n, ri, rs), ok)
+    };
+}
+
+elementwise! {
+    /// The maximum z error over the frustum, light overhead (Lloyd 2006 Eq 10):
+    ///
+    ///     M_z = (res_image / res_t) · (f − n)/(2 tan θ) · (n′ + f − n)/(f n′)     n ≤ n′ ≤ n + √(f n)
+    ///     M_z = (res_image / res_t) · (f − n)/(2 tan θ) · n′/((n′ + f − n) n)     n′ > n + √(f n)
+    ///     M_z = (res_image / res_t) · (f − n)/(2 tan θ n)                          n′ = ∞
+    fn max_mz(near, far, half_fov, n_prime; res_image, res_t) -> SCALAR;
+    checked = |&[n, f, th, np, ri, rt]: &[f64; 6]| {
+        overhead::max_mz(
+            &view(&[n, f, th])?,
+            n_prime_arg("n_prime", np)?,
+            Resolutions::new(ri, 1.0, rt)?,
+        )
+    };
+    fast(half_fov) = |&[n, f, th, np, ri, rt]: &[f64; 6], t: f64| {
+        let vok = view_ok(n, f, th, t);
+        let ok = vok & n_prime_ok(np, n) & pos(ri) & pos(rt);
+        (overhead::max_mz_unchecked(n, f, t, np, ri, rt), ok)
+    };
+}
+
+elementwise! {
+    /// The storage factor S̄ = M_x M_z, light overhead (Lloyd 2006 Eq 12):
+    ///
+    ///     S̄ = (f/n − 1) / (2 tan θ)                                  n ≤ n′ ≤ n + √(f n)
+    ///     S̄ = (f/n − 1) / (2 tan θ) · n′² f / (n (n′ + f − n)²)      n′ > n + √(f n)
+    ///     S̄ = (f/n − 1) / (2 tan θ) · f / n                          n′ = ∞
+    fn storage_factor(near, far, half_fov, n_prime) -> SCALAR;
+    checked = |&[n, f, th, np]: &[f64; 4]| {
+        overhead::storage_factor(&view(&[n, f, th])?, n_prime_arg("n_prime", np)?)
+    };
+    fast(half_fov) = |&[n, f, th, np]: &[f64; 4], t: f64| {
+        let vok = view_ok(n, f, th, t);
+        (overhead::storage_factor_unchecked(n, f, t, np), vok & n_prime_ok(np, n))
+    };
 }
 
 /// The shadow-map resolution ``[res_s, res_t]`` (last axis) for a texel budget S₀ = budget with
@@ -269,101 +282,75 @@ pub fn critical_resolution<'py>(
     )
 }
 
-/// LiSPSM's warp parameter for the light overhead (Lloyd 2006 §4.1; Wimmer et al. 2004):
-///
-///     n′ = n + √(f n)
-#[pyfunction]
-pub fn n_prime_lispsm<'py>(py: Python<'py>, near: &Any<'py>, far: &Any<'py>) -> PyResult<Any<'py>> {
-    map(py, [("near", near), ("far", far)], SCALAR, |x| {
-        eta::n_prime_lispsm(x[0], x[1])
-    })
+elementwise! {
+    /// LiSPSM's warp parameter for the light overhead (Lloyd 2006 §4.1; Wimmer et al. 2004):
+    ///
+    ///     n′ = n + √(f n)
+    fn n_prime_lispsm(near, far) -> SCALAR;
+    checked = |&[n, f]: &[f64; 2]| eta::n_prime_lispsm(n, f);
+    fast = |&[n, f]: &[f64; 2], _: f64| {
+        // The twin's precondition: f·n normal.
+        (eta::n_prime_lispsm_unchecked(n, f), near_far_ok(n, f) & normal(f * n))
+    };
 }
 
-/// n′ from η ∈ [−1, 1] (Lloyd 2006 Eq 11), α = f/n; ``inf`` for η = −1 (unwarped):
-///
-///     n′ = n (√α + 1 − η (α − 1)) / (η + 1)     −1 ≤ η ≤ 0
-///     n′ = n (√α + 1) / (η √α + 1)              0 < η ≤ 1
-#[pyfunction]
-pub fn n_prime_from_eta<'py>(
-    py: Python<'py>,
-    near: &Any<'py>,
-    far: &Any<'py>,
-    eta: &Any<'py>,
-) -> PyResult<Any<'py>> {
-    map(
-        py,
-        [("near", near), ("far", far), ("eta", eta)],
-        N_PRIME,
-        |x| Ok(eta::n_prime_from_eta(x[0], x[1], x[2])?.value()),
-    )
+elementwise! {
+    /// n′ from η ∈ [−1, 1] (Lloyd 2006 Eq 11), α = f/n; ``inf`` for η = −1 (unwarped):
+    ///
+    ///     n′ = n (√α + 1 − η (α − 1)) / (η + 1)     −1 ≤ η ≤ 0
+    ///     n′ = n (√α + 1) / (η √α + 1)              0 < η ≤ 1
+    fn n_prime_from_eta(near, far, eta) -> N_PRIME;
+    checked = |&[n, f, e]: &[f64; 3]| Ok(eta::n_prime_from_eta(n, f, e)?.value());
+    fast = |&[n, f, e]: &[f64; 3], _: f64| {
+        let v = eta::n_prime_from_eta_unchecked(n, f, e);
+        // in_closed("eta", −1, 1); for η > 0 an overflow to ∞ is an error, not the unwarped map.
+        let ok = near_far_ok(n, f)
+            & finite(e)
+            & (-1.0..=1.0).contains(&e)
+            & ((e <= 0.0) | finite(v));
+        (v, ok)
+    };
 }
 
-/// η from n′, the inverse of Lloyd 2006 Eq 11 (App. B); n_prime ≥ near, ``inf`` gives η = −1.
-#[pyfunction]
-pub fn eta_from_n_prime<'py>(
-    py: Python<'py>,
-    near: &Any<'py>,
-    far: &Any<'py>,
-    n_prime: &Any<'py>,
-) -> PyResult<Any<'py>> {
-    map(
-        py,
-        [("near", near), ("far", far), ("n_prime", n_prime)],
-        SCALAR,
-        |x| eta::eta_from_n_prime(x[0], x[1], n_prime_arg("n_prime", x[2])?),
-    )
+elementwise! {
+    /// η from n′, the inverse of Lloyd 2006 Eq 11 (App. B); n_prime ≥ near, ``inf`` gives η = −1.
+    fn eta_from_n_prime(near, far, n_prime) -> SCALAR;
+    checked = |&[n, f, np]: &[f64; 3]| eta::eta_from_n_prime(n, f, n_prime_arg("n_prime", np)?);
+    fast = |&[n, f, np]: &[f64; 3], _: f64| {
+        (eta::eta_from_n_prime_unchecked(n, f, np), near_far_ok(n, f) & n_prime_ok(np, n))
+    };
 }
 
-/// Lloyd 2005's distribution g(z) with the frustum normalised to near = 1, far = alpha
-/// (Lloyd 2005 Eq 3), warp parameter n_warp (``inf``: unwarped), z in [1, alpha]:
-///
-///     g(z) = (z − 1 + n)² / (z n (n + α − 1)),   g(z) = 1/z for n = ∞   (n = n_warp ≥ 1)
-#[pyfunction]
-pub fn distribution_g<'py>(
-    py: Python<'py>,
-    alpha: &Any<'py>,
-    n_warp: &Any<'py>,
-    z: &Any<'py>,
-) -> PyResult<Any<'py>> {
-    map(
-        py,
-        [("alpha", alpha), ("n_warp", n_warp), ("z", z)],
-        SCALAR,
-        |x| subdivided::distribution_g(x[0], n_prime_arg("n_warp", x[1])?, x[2]),
-    )
+elementwise! {
+    /// Lloyd 2005's distribution g(z) with the frustum normalised to near = 1, far = alpha
+    /// (Lloyd 2005 Eq 3), warp parameter n_warp (``inf``: unwarped), z in [1, alpha]:
+    ///
+    ///     g(z) = (z − 1 + n)² / (z n (n + α − 1)),   g(z) = 1/z for n = ∞   (n = n_warp ≥ 1)
+    fn distribution_g(alpha, n_warp, z) -> SCALAR;
+    checked = |&[a, nw, z]: &[f64; 3]| {
+        subdivided::distribution_g(a, n_prime_arg("n_warp", nw)?, z)
+    };
+    fast = |&[a, nw, z]: &[f64; 3], _: f64| {
+        let ok = pos(a)
+            & (a > 1.0)
+            & ((nw == f64::INFINITY) | (pos(nw) & (nw >= 1.0)))
+            & finite(z)
+            & (z >= 1.0)
+            & (z <= a);
+        (subdivided::distribution_g_unchecked(a, nw, z), ok)
+    };
 }
 
-/// The maximum error with k face subdivisions (Lloyd 2005 Eq 7), α = alpha = f/n, ξ = eta:
-///
-///     m_max = k (res_image / res_s) / (2 tan θ) · (α^{1/k} − 1)/α^{1/2k} · (1 + |ξ| (α^{1/2k} − 1))
-///
-/// k is a whole number ≥ 1 (an integer array broadcasts like the others).
-#[pyfunction]
-#[pyo3(signature = (alpha, k, eta, half_fov, res_image=None, res_s=None))]
-pub fn subdivided_max_error<'py>(
-    py: Python<'py>,
-    alpha: &Any<'py>,
-    k: &Any<'py>,
-    eta: &Any<'py>,
-    half_fov: &Any<'py>,
-    res_image: Option<&Any<'py>>,
-    res_s: Option<&Any<'py>>,
-) -> PyResult<Any<'py>> {
-    let one = one(py);
-    let (ri, rs) = (res_image.unwrap_or(&one), res_s.unwrap_or(&one));
-    map(
-        py,
-        [
-            ("alpha", alpha),
-            ("k", k),
-            ("eta", eta),
-            ("half_fov", half_fov),
-            ("res_image", ri),
-            ("res_s", rs),
-        ],
-        SCALAR,
-        |x| subdivided::subdivided_max_error(x[0], count("k", x[1])?, x[2], x[3], x[4], x[5]),
-    )
+elementwise! {
+    /// The maximum error with k face subdivisions (Lloyd 2005 Eq 7), α = alpha = f/n, ξ = eta:
+    ///
+    ///     m_max = k (res_image / res_s) / (2 tan θ) · (α^{1/k} − 1)/α^{1/2k} · (1 + |ξ| (α^{1/2k} − 1))
+    ///
+    /// k is a whole number ≥ 1 (an integer array broadcasts like the others).
+    fn subdivided_max_error(alpha, k, eta, half_fov; res_image, res_s) -> SCALAR;
+    checked = |&[a, k, e, th, ri, rs]: &[f64; 6]| {
+        subdivided::subdivided_max_error(a, count("k", k)?, e, th, ri, rs)
+    };
 }
 
 /// Texels per subdivision (along the split direction) in proportion to each subdivision's
@@ -524,55 +511,27 @@ pub fn scheme_storage_factor<'py>(
     )
 }
 
-/// m_z for a tilted light (Barroso Eq 10–12), the texel width measured along the view axis
-/// (his Eq 6), light_angle γ ∈ (0, π/2] between light and view direction:
-///
-///     m_z(z, n′, γ) = (res_image/res_t) · (f′ − n′) ψ² / (2 tan θ · n′ f′ · z · sin γ)
-///
-/// with ψ the warp depth of the point (Barroso Eq 10), f′ − n′ = μ the warp's depth range
-/// (Eq 11); unwarped (n′ = ∞): (res_image/res_t) μ / (2 tan θ z sin γ). At γ = π/2 it is
-/// Lloyd 2006 Eq 8.
-///
-/// n_prime > 0 (any, since a tilted light can put the centre closer than near).
-#[pyfunction]
-#[pyo3(signature = (near, far, half_fov, n_prime, light_angle, z, res_image=None, res_t=None))]
-#[allow(clippy::too_many_arguments)]
-pub fn tilted_mz<'py>(
-    py: Python<'py>,
-    near: &Any<'py>,
-    far: &Any<'py>,
-    half_fov: &Any<'py>,
-    n_prime: &Any<'py>,
-    light_angle: &Any<'py>,
-    z: &Any<'py>,
-    res_image: Option<&Any<'py>>,
-    res_t: Option<&Any<'py>>,
-) -> PyResult<Any<'py>> {
-    let one = one(py);
-    let (ri, rt) = (res_image.unwrap_or(&one), res_t.unwrap_or(&one));
-    map(
-        py,
-        [
-            ("near", near),
-            ("far", far),
-            ("half_fov", half_fov),
-            ("n_prime", n_prime),
-            ("light_angle", light_angle),
-            ("z", z),
-            ("res_image", ri),
-            ("res_t", rt),
-        ],
-        SCALAR,
-        |x| {
-            tilted::tilted_mz(
-                &view(x)?,
-                n_prime_arg("n_prime", x[3])?,
-                LightAngle::new(x[4])?,
-                x[5],
-                Resolutions::new(x[6], 1.0, x[7])?,
-            )
-        },
-    )
+elementwise! {
+    /// m_z for a tilted light (Barroso Eq 10–12), the texel width measured along the view axis
+    /// (his Eq 6), light_angle γ ∈ (0, π/2] between light and view direction:
+    ///
+    ///     m_z(z, n′, γ) = (res_image/res_t) · (f′ − n′) ψ² / (2 tan θ · n′ f′ · z · sin γ)
+    ///
+    /// with ψ the warp depth of the point (Barroso Eq 10), f′ − n′ = μ the warp's depth range
+    /// (Eq 11); unwarped (n′ = ∞): (res_image/res_t) μ / (2 tan θ z sin γ). At γ = π/2 it is
+    /// Lloyd 2006 Eq 8.
+    ///
+    /// n_prime > 0 (any, since a tilted light can put the centre closer than near).
+    fn tilted_mz(near, far, half_fov, n_prime, light_angle, z; res_image, res_t) -> SCALAR;
+    checked = |&[n, f, th, np, g, z, ri, rt]: &[f64; 8]| {
+        tilted::tilted_mz(
+            &view(&[n, f, th])?,
+            n_prime_arg("n_prime", np)?,
+            LightAngle::new(g)?,
+            z,
+            Resolutions::new(ri, 1.0, rt)?,
+        )
+    };
 }
 
 /// Barroso & Celes' generalised n′ for a tilted light (Barroso Eq 13–18): n′₁(γ) for
@@ -606,152 +565,77 @@ pub fn generalized_n_prime<'py>(
     )
 }
 
-/// The light angle below which Barroso's n′₁ is replaced by the fall-off (Barroso Eq 15):
-///
-///     γ_lim = atan((f + n) tan θ / (f − n))   radians
-#[pyfunction]
-pub fn gamma_lim<'py>(
-    py: Python<'py>,
-    near: &Any<'py>,
-    far: &Any<'py>,
-    half_fov: &Any<'py>,
-) -> PyResult<Any<'py>> {
-    map(
-        py,
-        [("near", near), ("far", far), ("half_fov", half_fov)],
-        SCALAR,
-        |x| Ok(tilted::gamma_lim(&view(x)?)),
-    )
+elementwise! {
+    /// The light angle below which Barroso's n′₁ is replaced by the fall-off (Barroso Eq 15):
+    ///
+    ///     γ_lim = atan((f + n) tan θ / (f − n))   radians
+    fn gamma_lim(near, far, half_fov) -> SCALAR;
+    checked = |x: &[f64; 3]| Ok(tilted::gamma_lim(&view(x)?));
 }
 
-/// TSM's η (Martin–Tan §6.2): the distance of the projection centre q from the top line that
-/// maps the focus point, δ′ below the top line of a trapezoid of height λ, to the line ξ
-/// (ξ = −0.6 is the 80 % line):
-///
-///     η = λ δ′ (1 + ξ) / (λ (1 − ξ) − 2 δ′)
-///
-/// ``inf`` on the unwarped line ξ = 1 − 2δ′/λ; ValueError above it (no solution).
-#[pyfunction]
-pub fn tsm_eta<'py>(
-    py: Python<'py>,
-    lambda_: &Any<'py>,
-    delta_prime: &Any<'py>,
-    xi: &Any<'py>,
-) -> PyResult<Any<'py>> {
-    map(
-        py,
-        [
-            ("lambda", lambda_),
-            ("delta_prime", delta_prime),
-            ("xi", xi),
-        ],
-        N_PRIME,
-        |x| Ok(tsm::tsm_eta(x[0], x[1], x[2])?.value()),
-    )
+elementwise! {
+    /// TSM's η (Martin–Tan §6.2): the distance of the projection centre q from the top line that
+    /// maps the focus point, δ′ below the top line of a trapezoid of height λ, to the line ξ
+    /// (ξ = −0.6 is the 80 % line):
+    ///
+    ///     η = λ δ′ (1 + ξ) / (λ (1 − ξ) − 2 δ′)
+    ///
+    /// ``inf`` on the unwarped line ξ = 1 − 2δ′/λ; ValueError above it (no solution).
+    fn tsm_eta(lambda_, delta_prime, xi) -> N_PRIME;
+    checked = |&[l, d, xi]: &[f64; 3]| Ok(tsm::tsm_eta(l, d, xi)?.value());
 }
 
-macro_rules! zhang_global {
-    ($name:ident, $f:path, $doc:literal) => {
-        #[doc = $doc]
-        #[pyfunction]
-        #[allow(clippy::too_many_arguments)]
-        pub fn $name<'py>(
-            py: Python<'py>,
-            near: &Any<'py>,
-            far: &Any<'py>,
-            half_fov: &Any<'py>,
-            lambda_: &Any<'py>,
-            light_angle: &Any<'py>,
-            y: &Any<'py>,
-            z: &Any<'py>,
-        ) -> PyResult<Any<'py>> {
-            map(
-                py,
-                [
-                    ("near", near),
-                    ("far", far),
-                    ("half_fov", half_fov),
-                    ("lambda", lambda_),
-                    ("light_angle", light_angle),
-                    ("y", y),
-                    ("z", z),
-                ],
-                SCALAR,
-                |x| {
-                    $f(
-                        &view(x)?,
-                        n_prime_arg("lambda", x[3])?,
-                        LightAngle::new(x[4])?,
-                        x[5],
-                        x[6],
-                    )
-                },
-            )
-        }
+elementwise! {
+    /// Zhang's E_q, the perspective part of the aliasing along s, in the global representation
+    /// (Zhang Eq 13 and Appendix), at eye-space (y, z) for light angle θ, warp parameter λ
+    /// (`lambda_`; ``inf`` unwarped), |y| ≤ z tan φ:
+    ///
+    ///     E_q = 2 tan φ_w z_w / (tan φ z) = F_q (z + G)/z,   E_q = 2 f / z for λ = ∞
+    ///
+    /// On a [−1, 1] screen: twice the m_x the crate measures.
+    fn zhang_eq(near, far, half_fov, lambda_, light_angle, y, z) -> SCALAR;
+    checked = |&[n, f, th, l, g, y, z]: &[f64; 7]| {
+        global::zhang_eq(&view(&[n, f, th])?, n_prime_arg("lambda", l)?, LightAngle::new(g)?, y, z)
     };
 }
 
-zhang_global!(
-    zhang_eq,
-    global::zhang_eq,
-    "Zhang's E_q, the perspective part of the aliasing along s, in the global representation \
-     (Zhang Eq 13 and Appendix), at eye-space (y, z) for light angle θ, warp parameter λ \
-     (`lambda_`; ``inf`` unwarped), |y| ≤ z tan φ:\n\n    E_q = 2 tan φ_w z_w / (tan φ z) = F_q (z + G)/z,   \
-     E_q = 2 f / z for λ = ∞\n\n\
-     On a [−1, 1] screen: twice the m_x the crate measures."
-);
-zhang_global!(
-    zhang_ep,
-    global::zhang_ep,
-    "Zhang's E_p, the perspective part of the aliasing along t, in the global representation \
-     (Zhang Eq 14 and Appendix), at eye-space (y, z) for light angle θ, warp parameter λ \
-     (`lambda_`; ``inf`` unwarped), |y| ≤ z tan φ:\n\n    E_p = μ z_w² / (tan φ (λ + μ) λ z) = F_p (z + G)²/z,   \
-     E_p = μ / (tan φ z) for λ = ∞\n\n\
-     On a [−1, 1] screen: twice the m_z the crate measures."
-);
-
-macro_rules! zhang_local {
-    ($name:ident, $f:path, $doc:literal) => {
-        #[doc = $doc]
-        #[pyfunction]
-        pub fn $name<'py>(
-            py: Python<'py>,
-            near: &Any<'py>,
-            far: &Any<'py>,
-            half_fov: &Any<'py>,
-            lambda_: &Any<'py>,
-            z: &Any<'py>,
-        ) -> PyResult<Any<'py>> {
-            map(
-                py,
-                [
-                    ("near", near),
-                    ("far", far),
-                    ("half_fov", half_fov),
-                    ("lambda", lambda_),
-                    ("z", z),
-                ],
-                SCALAR,
-                |x| $f(&view(x)?, n_prime_arg("lambda", x[3])?, x[4]),
-            )
-        }
+elementwise! {
+    /// Zhang's E_p, the perspective part of the aliasing along t, in the global representation
+    /// (Zhang Eq 14 and Appendix), at eye-space (y, z) for light angle θ, warp parameter λ
+    /// (`lambda_`; ``inf`` unwarped), |y| ≤ z tan φ:
+    ///
+    ///     E_p = μ z_w² / (tan φ (λ + μ) λ z) = F_p (z + G)²/z,   E_p = μ / (tan φ z) for λ = ∞
+    ///
+    /// On a [−1, 1] screen: twice the m_z the crate measures.
+    fn zhang_ep(near, far, half_fov, lambda_, light_angle, y, z) -> SCALAR;
+    checked = |&[n, f, th, l, g, y, z]: &[f64; 7]| {
+        global::zhang_ep(&view(&[n, f, th])?, n_prime_arg("lambda", l)?, LightAngle::new(g)?, y, z)
     };
 }
 
-zhang_local!(
-    zhang_eq_local,
-    global::zhang_eq_local,
-    "Zhang's E_q in the local representation, light perpendicular to the view, on the view \
-     axis (Zhang Eq 8):\n\n    E_q = 2 f (z − n + λ) / ((f − n + λ) z)   for λ ≥ n\n    \
-     E_q = 2 n (z − n + λ) / (λ z)             for λ < n\n    E_q = 2 f / z for λ = ∞"
-);
-zhang_local!(
-    zhang_ep_local,
-    global::zhang_ep_local,
-    "Zhang's E_p in the local representation, light perpendicular to the view, on the view \
-     axis (Zhang Eq 9):\n\n    E_p = (f − n)(z − n + λ)² / ((f − n + λ) λ tan φ z)   \
-     (twice Lloyd 2006 Eq 8),   E_p = (f − n)/(tan φ z) for λ = ∞"
-);
+elementwise! {
+    /// Zhang's E_q in the local representation, light perpendicular to the view, on the view
+    /// axis (Zhang Eq 8):
+    ///
+    ///     E_q = 2 f (z − n + λ) / ((f − n + λ) z)   for λ ≥ n
+    ///     E_q = 2 n (z − n + λ) / (λ z)             for λ < n
+    ///     E_q = 2 f / z for λ = ∞
+    fn zhang_eq_local(near, far, half_fov, lambda_, z) -> SCALAR;
+    checked = |&[n, f, th, l, z]: &[f64; 5]| {
+        global::zhang_eq_local(&view(&[n, f, th])?, n_prime_arg("lambda", l)?, z)
+    };
+}
+
+elementwise! {
+    /// Zhang's E_p in the local representation, light perpendicular to the view, on the view
+    /// axis (Zhang Eq 9):
+    ///
+    ///     E_p = (f − n)(z − n + λ)² / ((f − n + λ) λ tan φ z)   (twice Lloyd 2006 Eq 8),   E_p = (f − n)/(tan φ z) for λ = ∞
+    fn zhang_ep_local(near, far, half_fov, lambda_, z) -> SCALAR;
+    checked = |&[n, f, th, l, z]: &[f64; 5]| {
+        global::zhang_ep_local(&view(&[n, f, th])?, n_prime_arg("lambda", l)?, z)
+    };
+}
 
 /// The Python float 1.0, the default of the resolutions.
 fn one(py: Python<'_>) -> Bound<'_, PyAny> {

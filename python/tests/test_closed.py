@@ -203,3 +203,22 @@ def test_error_names_the_element():
         sa.n_prime_lispsm(1.0, [10.0, 20.0, 0.5, np.nan])
     # The first failing element in C order.
     assert str(e.value) == "far must be greater than near (got near=1, far=0.5) (at index (2,))"
+
+
+def _stub_docstrings():
+    import ast
+    path = os.path.join(os.path.dirname(sa.__file__), "__init__.pyi")
+    if not os.path.exists(path):
+        path = os.path.join(os.path.dirname(__file__), "..", "shadow_aliasing", "__init__.pyi")
+    tree = ast.parse(open(path, encoding="utf-8").read())
+    return {f.name: ast.get_docstring(f) for f in tree.body if isinstance(f, ast.FunctionDef)}
+
+
+@pytest.mark.parametrize("name", sorted({q for q, _ in REQUESTS} | {"allocate_texels"}))
+def test_stub_and_docstring_carry_formula_and_equation(name):
+    stub = _stub_docstrings()[name]
+    doc = getattr(sa, name).__doc__
+    for text in (stub, doc):
+        # A formula (an equals sign) and the paper's equation or section.
+        assert "=" in text, (name, text)
+        assert any(w in text for w in ("Eq", "§", "App.")), (name, text)

@@ -24,7 +24,8 @@
 
 use crate::error::{finite_result, fmt_num, in_closed, Error, Result};
 use crate::frustum::{depth_range, NPrime};
-use crate::numeric::sqrt_fn;
+use crate::numeric::{finite_select, sqrt_fn};
+use std::hint::select_unpredictable as select;
 
 /// Validates a depth range `0 < near < far`, both finite ([`depth_range`]), with f/n finite.
 #[inline]
@@ -93,6 +94,17 @@ pub fn n_prime_lispsm(near: f64, far: f64) -> Result<f64> {
     finite_result("n_prime", n + sqrt_fn(n, f))
 }
 
+/// [`n_prime_lispsm`] without validation, n + √(f n) as one square root, for callers that have
+/// checked the domain (the Python bindings' array path). Equal, bit for bit, to
+/// [`n_prime_lispsm`] wherever it returns `Ok` and f·n is a normal `f64` (a subnormal or
+/// overflowing product, which `n_prime_lispsm` takes as √f √n, is left to the checked form);
+/// meaningless outside that domain.
+#[inline(always)]
+#[must_use]
+pub fn n_prime_lispsm_unchecked(near: f64, far: f64) -> f64 {
+    near + (far * near).sqrt()
+}
+
 /// PSM's warp parameter: n′ = n, the warping frustum's centre of projection at the eye
 /// (Stamminger & Drettakis 2002; Lloyd 2006 §4.1). η = +1.
 ///
@@ -121,18 +133,31 @@ pub fn n_prime_psm(near: f64, far: f64) -> Result<f64> {
 pub fn n_prime_from_eta(near: f64, far: f64, eta: f64) -> Result<NPrime> {
     let (n, f) = near_far(near, far)?;
     let eta = in_closed("eta", eta, -1.0, 1.0)?;
-    let alpha = f / n;
-    let ra = alpha.sqrt();
+    let v = n_prime_from_eta_unchecked(n, f, eta);
     if eta <= 0.0 {
-        if eta == -1.0 {
-            return Ok(NPrime::UNWARPED);
-        }
-        let v = n * ((ra + 1.0 - eta * (alpha - 1.0)) / (eta + 1.0));
+        // n′ = ∞ for η = −1 and where it overflows: the unwarped map.
         Ok(NPrime::finite_or_unwarped(v))
     } else {
         // n′ ≥ n > 0 for η ∈ (0, 1].
-        finite_result("n_prime", n * ((ra + 1.0) / (eta * ra + 1.0))).map(NPrime::finite_unchecked)
+        finite_result("n_prime", v).map(NPrime::finite_unchecked)
     }
+}
+
+/// [`n_prime_from_eta`] without validation, n′ as an `f64`: `f64::INFINITY` for η = −1 and
+/// wherever n′ overflows for η ≤ 0 (the unwarped map). Equal, bit for bit, to
+/// `n_prime_from_eta(..)?.value()` wherever that returns `Ok` (for η > 0 it requires a finite
+/// result); meaningless outside the domain.
+#[inline(always)]
+#[must_use]
+pub fn n_prime_from_eta_unchecked(near: f64, far: f64, eta: f64) -> f64 {
+    let n = near;
+    let alpha = far / n;
+    let ra = alpha.sqrt();
+    // Every branch, then selects without a jump, so that a loop over arrays vectorises.
+    let below = n * ((ra + 1.0 - eta * (alpha - 1.0)) / (eta + 1.0));
+    let below = select((eta == -1.0) | !finite_select(below), f64::INFINITY, below);
+    let above = n * ((ra + 1.0) / (eta * ra + 1.0));
+    select(eta <= 0.0, below, above)
 }
 
 /// η from n′, the inverse of [`n_prime_from_eta`] (Lloyd 2006 App. B; Lloyd 2005 §3.2 ξ with
@@ -156,24 +181,29 @@ pub fn eta_from_n_prime(near: f64, far: f64, n_prime: NPrime) -> Result<f64> {
     let Some(np) = n_prime_at_least(n_prime, n)? else {
         return Ok(-1.0);
     };
+    Ok(eta_from_n_prime_unchecked(n, f, np))
+}
+
+/// [`eta_from_n_prime`] without validation, n′ as an `f64` (`f64::INFINITY` unwarped). Equal,
+/// bit for bit, to [`eta_from_n_prime`] wherever it returns `Ok`; meaningless outside the domain.
+#[inline(always)]
+#[must_use]
+pub fn eta_from_n_prime_unchecked(near: f64, far: f64, n_prime: f64) -> f64 {
+    let (n, f, np) = (near, far, n_prime);
     let alpha = f / n;
     let ra = alpha.sqrt();
     let nu = np / n;
-    if !nu.is_finite() {
-        return Ok(-1.0);
-    }
-    let eta = if nu >= 1.0 + ra {
-        let den = nu + alpha - 1.0;
-        if den.is_finite() {
-            (ra + 1.0 - nu) / den
-        } else {
-            // Divided through by ν so that a huge ν cannot overflow.
-            ((ra + 1.0) / nu - 1.0) / (1.0 + (alpha - 1.0) / nu)
-        }
-    } else {
-        (ra + 1.0 - nu) / (nu * ra)
-    };
-    Ok(eta.clamp(-1.0, 1.0))
+    // Every branch, then selects without a jump, so that a loop over arrays vectorises.
+    let den = nu + alpha - 1.0;
+    let far_side = select(
+        finite_select(den),
+        (ra + 1.0 - nu) / den,
+        // Divided through by ν so that a huge ν cannot overflow.
+        ((ra + 1.0) / nu - 1.0) / (1.0 + (alpha - 1.0) / nu),
+    );
+    let near_side = (ra + 1.0 - nu) / (nu * ra);
+    let eta = select(nu >= 1.0 + ra, far_side, near_side);
+    select(finite_select(nu), eta.clamp(-1.0, 1.0), -1.0)
 }
 
 #[cfg(test)]
@@ -206,6 +236,47 @@ mod tests {
         assert!(n_prime_from_eta(1.0, 100.0, 1.5).is_err());
         assert_eq!(n_prime_lispsm(1.0, 100.0), Ok(11.0));
         assert_eq!(n_prime_psm(3.0, 100.0), Ok(3.0));
+    }
+
+    /// The `*_unchecked` twins give the checked forms' values bit for bit over their domain,
+    /// both branches of Eq 11 and of its inverse, the unwarped ends and n′ overflowing to ∞.
+    #[test]
+    fn unchecked_twins_agree() {
+        for &(n, f) in &[
+            (1.0, 100.0),
+            (0.1, 0.3),
+            (2.5, 4e5),
+            (1e-3, 1e6),
+            (1e300, 1e308),
+        ] {
+            let l = n_prime_lispsm(n, f).unwrap();
+            // The twin's precondition: f·n normal (1e300 · 1e308 overflows: the checked form's).
+            if (f * n).is_normal() {
+                assert_eq!(l.to_bits(), n_prime_lispsm_unchecked(n, f).to_bits());
+            }
+            for eta in [-1.0, -1.0 + 1e-300, -0.999, -0.5, 0.0, 1e-9, 0.3, 1.0] {
+                let want = n_prime_from_eta(n, f, eta).unwrap().value();
+                let got = n_prime_from_eta_unchecked(n, f, eta);
+                assert_eq!(want.to_bits(), got.to_bits(), "{n} {f} {eta}");
+            }
+            for np in [
+                n,
+                0.5 * (n + l),
+                l,
+                2.0 * l,
+                1e3 * f,
+                f64::MAX,
+                f64::INFINITY,
+            ] {
+                let npv = NPrime::new(np).unwrap();
+                let want = eta_from_n_prime(n, f, npv).unwrap();
+                let got = eta_from_n_prime_unchecked(n, f, np);
+                assert_eq!(want.to_bits(), got.to_bits(), "{n} {f} {np}");
+            }
+        }
+        // By hand (Eq 11, α = 100): η = −0.5 gives n′ = (11 + 49.5)/0.5 = 121, and back.
+        assert_eq!(n_prime_from_eta_unchecked(1.0, 100.0, -0.5), 121.0);
+        assert_eq!(eta_from_n_prime_unchecked(1.0, 100.0, 121.0), -0.5);
     }
 }
 

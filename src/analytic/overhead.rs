@@ -28,6 +28,7 @@ use crate::analytic::eta::{n_prime_at_least, near_far};
 use crate::error::{finite_result, fmt_num, positive, Error, Result};
 use crate::frustum::{NPrime, Resolutions, ViewFrustum};
 use crate::numeric::sqrt_fn;
+use std::hint::select_unpredictable as select;
 
 /// n′_LSPSM = n + √f √n (without overflow of f n).
 #[inline]
@@ -82,18 +83,27 @@ pub fn mx(near: f64, far: f64, n_prime: NPrime, z: f64, res: Resolutions) -> Res
     let (n, f) = near_far(near, far)?;
     let np = n_prime_at_least(n_prime, n)?;
     let z = depth_in(z, n, f)?;
-    finite_result("m_x", mx_unchecked(n, f, np, z, res))
+    finite_result(
+        "m_x",
+        mx_unchecked(n, f, np.unwrap_or(f64::INFINITY), z, res.image(), res.s()),
+    )
 }
 
-/// [`mx`] for inputs already checked: 0 < n < f (a [`ViewFrustum`]'s), n′ ≥ n (`None` for ∞),
-/// n ≤ z ≤ f. The same arithmetic; the result may be ∞ where [`mx`] reports `Degenerate`.
-#[inline]
-fn mx_unchecked(n: f64, f: f64, np: Option<f64>, z: f64, res: Resolutions) -> f64 {
-    let shape = match np {
-        None => f / z,
-        Some(np) => f / z * ((np + z - n) / (np + f - n)),
-    };
-    res.image() / res.s() * shape
+/// [`mx`] without validation, for callers that have checked the domain themselves (the Python
+/// bindings' array path): `n_prime` is n′ as an `f64`, `f64::INFINITY` for the unwarped map.
+///
+/// Equal, bit for bit, to [`mx`] wherever `mx` returns `Ok` (which computes its value here);
+/// outside that domain the result is meaningless (it may be NaN or infinite).
+#[inline(always)]
+#[must_use]
+pub fn mx_unchecked(near: f64, far: f64, n_prime: f64, z: f64, res_image: f64, res_s: f64) -> f64 {
+    let (n, f, np) = (near, far, n_prime);
+    // Both branches, then a select without a jump (`select_unpredictable`), so that a loop
+    // over arrays vectorises.
+    let unwarped = f / z;
+    let warped = f / z * ((np + z - n) / (np + f - n));
+    let shape = select(np == f64::INFINITY, unwarped, warped);
+    res_image / res_s * shape
 }
 
 /// The z error at depth z (Lloyd 2006 Eq 8; Lloyd 2005 Eq 2, 3 with n = 1, f = α).
@@ -114,18 +124,42 @@ pub fn mz(view: &ViewFrustum, n_prime: NPrime, z: f64, res: Resolutions) -> Resu
     let (n, f) = (view.near(), view.far());
     let np = n_prime_at_least(n_prime, n)?;
     let z = depth_in(z, n, f)?;
-    let shape = match np {
-        None => 1.0 / z,
-        Some(np) => {
-            let zp = np + z - n;
-            // (n′ + z − n)² / (z n′ (n′ + f − n)), arranged to avoid overflow at large n′.
-            (zp / (np + f - n)) * (zp / np) / z
-        }
-    };
     finite_result(
         "m_z",
-        res.image() / res.t() * (f - n) / (2.0 * view.tan_half_fov()) * shape,
+        mz_unchecked(
+            n,
+            f,
+            view.tan_half_fov(),
+            np.unwrap_or(f64::INFINITY),
+            z,
+            res.image(),
+            res.t(),
+        ),
     )
+}
+
+/// [`mz`] without validation: n = `near`, f = `far`, tan θ = `tan_half_fov` (as
+/// [`ViewFrustum::tan_half_fov`] computes it), `n_prime` as an `f64` (`f64::INFINITY` unwarped).
+///
+/// Equal, bit for bit, to [`mz`] wherever `mz` returns `Ok`; meaningless outside that domain.
+#[inline(always)]
+#[must_use]
+pub fn mz_unchecked(
+    near: f64,
+    far: f64,
+    tan_half_fov: f64,
+    n_prime: f64,
+    z: f64,
+    res_image: f64,
+    res_t: f64,
+) -> f64 {
+    let (n, f, np) = (near, far, n_prime);
+    let zp = np + z - n;
+    // (n′ + z − n)² / (z n′ (n′ + f − n)), arranged to avoid overflow at large n′; both
+    // branches, then a select (see `mx_unchecked`).
+    let warped = (zp / (np + f - n)) * (zp / np) / z;
+    let shape = select(np == f64::INFINITY, 1.0 / z, warped);
+    res_image / res_t * (f - n) / (2.0 * tan_half_fov) * shape
 }
 
 /// The maximum x error over the view frustum, at z = n (Lloyd 2006 Eq 9; Lloyd 2005 Eq 9).
@@ -166,15 +200,44 @@ pub fn max_mx(near: f64, far: f64, n_prime: NPrime, res: Resolutions) -> Result<
 pub fn max_mz(view: &ViewFrustum, n_prime: NPrime, res: Resolutions) -> Result<f64> {
     let (n, f) = (view.near(), view.far());
     let np = n_prime_at_least(n_prime, n)?;
-    let shape = match np {
-        None => 1.0 / n,
-        Some(np) if np <= lispsm(view) => (np + f - n) / f / np,
-        Some(np) => np / (np + f - n) / n,
-    };
     finite_result(
         "M_z",
-        res.image() / res.t() * (f - n) / (2.0 * view.tan_half_fov()) * shape,
+        max_mz_unchecked(
+            n,
+            f,
+            view.tan_half_fov(),
+            np.unwrap_or(f64::INFINITY),
+            res.image(),
+            res.t(),
+        ),
     )
+}
+
+/// [`max_mz`] without validation; arguments as [`mz_unchecked`].
+///
+/// Equal, bit for bit, to [`max_mz`] wherever `max_mz` returns `Ok` and f·n is a normal `f64`
+/// (n′_LSPSM = n + √(f n) is then taken as one square root, as `ViewFrustum::n_prime_lispsm`
+/// does; a subnormal or overflowing product is left to the checked form); meaningless outside.
+#[inline(always)]
+#[must_use]
+pub fn max_mz_unchecked(
+    near: f64,
+    far: f64,
+    tan_half_fov: f64,
+    n_prime: f64,
+    res_image: f64,
+    res_t: f64,
+) -> f64 {
+    let (n, f, np) = (near, far, n_prime);
+    // All three branches, then selects (see `mx_unchecked`).
+    let (unwarped, far_plane, near_plane) = (1.0 / n, (np + f - n) / f / np, np / (np + f - n) / n);
+    let below = np <= n + (f * n).sqrt();
+    let shape = select(
+        np == f64::INFINITY,
+        unwarped,
+        select(below, far_plane, near_plane),
+    );
+    res_image / res_t * (f - n) / (2.0 * tan_half_fov) * shape
 }
 
 /// The storage factor S̄ = M_x M_z with unit resolutions (Lloyd 2006 Eq 12): how many times
@@ -194,16 +257,27 @@ pub fn max_mz(view: &ViewFrustum, n_prime: NPrime, res: Resolutions) -> Result<f
 pub fn storage_factor(view: &ViewFrustum, n_prime: NPrime) -> Result<f64> {
     let (n, f) = (view.near(), view.far());
     let np = n_prime_at_least(n_prime, n)?;
-    let base = (f / n - 1.0) / (2.0 * view.tan_half_fov());
-    let factor = match np {
-        None => f / n,
-        Some(np) if np <= lispsm(view) => 1.0,
-        Some(np) => {
-            let r = np / (np + f - n);
-            r * r * f / n
-        }
-    };
-    finite_result("storage factor", base * factor)
+    finite_result(
+        "storage factor",
+        storage_factor_unchecked(n, f, view.tan_half_fov(), np.unwrap_or(f64::INFINITY)),
+    )
+}
+
+/// [`storage_factor`] without validation; arguments as [`mz_unchecked`].
+///
+/// Equal, bit for bit, to [`storage_factor`] wherever it returns `Ok` and f·n is a normal `f64`
+/// (as [`max_mz_unchecked`]); meaningless outside it.
+#[inline(always)]
+#[must_use]
+pub fn storage_factor_unchecked(near: f64, far: f64, tan_half_fov: f64, n_prime: f64) -> f64 {
+    let (n, f, np) = (near, far, n_prime);
+    let base = (f / n - 1.0) / (2.0 * tan_half_fov);
+    // All three branches, then selects (see `mx_unchecked`).
+    let r = np / (np + f - n);
+    let above = r * r * f / n;
+    let below = np <= n + (f * n).sqrt();
+    let factor = select(np == f64::INFINITY, f / n, select(below, 1.0, above));
+    base * factor
 }
 
 /// A shadow-map resolution pair, texels along s (the eye's x) and t (the view direction).
@@ -237,7 +311,17 @@ pub fn critical_resolution(
     // M_x of Eq 9 on the view's depths, which the type has validated: only n′ ≥ n is checked.
     let n = view.near();
     let np = n_prime_at_least(n_prime, n)?;
-    let max_mx = finite_result("m_x", mx_unchecked(n, view.far(), np, n, unit))?;
+    let max_mx = finite_result(
+        "m_x",
+        mx_unchecked(
+            n,
+            view.far(),
+            np.unwrap_or(f64::INFINITY),
+            n,
+            unit.image(),
+            unit.s(),
+        ),
+    )?;
     Ok(MapResolution {
         res_s: finite_result("res_s", ri * max_mx)?,
         res_t: finite_result("res_t", ri * max_mz(view, n_prime, unit)?)?,
@@ -379,5 +463,43 @@ mod tests {
         assert!((budget_error(&v, l, 4.0 * s, 1.0).unwrap() - 0.5).abs() < 1e-14);
         assert!(mx(1.0, 100.0, l, 0.5, r).is_err());
         assert!(mx(1.0, 100.0, NPrime::finite(0.5).unwrap(), 2.0, r).is_err());
+    }
+
+    /// The `*_unchecked` twins give the checked forms' values bit for bit over their domain:
+    /// both warp branches (n′ below and above n′_LSPSM, n′ exactly at it), the unwarped map,
+    /// z on the near and far planes and inside, and resolutions other than one.
+    #[test]
+    fn unchecked_twins_agree() {
+        let mut cases = 0;
+        for &(n, f) in &[(1.0, 100.0), (0.1, 0.3), (2.5, 4e5), (1e-3, 1e6)] {
+            for &th in &[0.01, 0.5, std::f64::consts::FRAC_PI_4, 1.5] {
+                let v = ViewFrustum::new(n, f, th).unwrap();
+                let t = v.tan_half_fov();
+                let l = v.n_prime_lispsm();
+                for np in [n, 0.5 * (n + l), l, 2.0 * l, 1e3 * f, f64::INFINITY] {
+                    let npv = NPrime::new(np).unwrap();
+                    for &(ri, rt) in &[(1.0, 1.0), (1920.0, 700.0)] {
+                        let r = Resolutions::new(ri, rt, rt / 3.0).unwrap();
+                        for z in [n, 0.3 * n + 0.7 * f, f] {
+                            let a = mx(n, f, npv, z, r).unwrap();
+                            assert_eq!(a.to_bits(), mx_unchecked(n, f, np, z, ri, rt).to_bits());
+                            let b = mz(&v, npv, z, r).unwrap();
+                            let bu = mz_unchecked(n, f, t, np, z, ri, rt / 3.0);
+                            assert_eq!(b.to_bits(), bu.to_bits());
+                            cases += 1;
+                        }
+                        let c = max_mz(&v, npv, r).unwrap();
+                        let cu = max_mz_unchecked(n, f, t, np, ri, rt / 3.0);
+                        assert_eq!(c.to_bits(), cu.to_bits());
+                    }
+                    let s = storage_factor(&v, npv).unwrap();
+                    assert_eq!(s.to_bits(), storage_factor_unchecked(n, f, t, np).to_bits());
+                }
+            }
+        }
+        assert_eq!(cases, 4 * 4 * 6 * 2 * 3);
+        // S̄ of LiSPSM by hand: (f/n − 1)/(2 tan θ) = 99/2 at f/n = 100, θ = 45°.
+        let t = std::f64::consts::FRAC_PI_4.tan();
+        assert!((storage_factor_unchecked(1.0, 100.0, t, 11.0) - 49.5 / t).abs() < 1e-12);
     }
 }
