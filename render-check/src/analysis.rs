@@ -40,9 +40,14 @@ pub struct Analysis {
 /// The exact eye-space point seen through pixel `(x, y)` on the plane `(n, p0)` (eye space), or
 /// `None` when the ray is parallel to the plane or the point is behind the eye.
 fn pixel_point(view: &View, w: u32, h: u32, x: u32, y: u32, n: DVec3, p0: DVec3) -> Option<DVec3> {
+    pixel_point_at(view, w, h, f64::from(x) + 0.5, f64::from(y) + 0.5, n, p0)
+}
+
+/// As [`pixel_point`] at the screen position `(u, v)` (pixel units, from the top left).
+fn pixel_point_at(view: &View, w: u32, h: u32, u: f64, v: f64, n: DVec3, p0: DVec3) -> Option<DVec3> {
     let [_, _, t, ta] = view.frustum_params();
-    let xn = 2.0 * (f64::from(x) + 0.5) / f64::from(w) - 1.0;
-    let yn = 1.0 - 2.0 * (f64::from(y) + 0.5) / f64::from(h);
+    let xn = 2.0 * u / f64::from(w) - 1.0;
+    let yn = 1.0 - 2.0 * v / f64::from(h);
     let d = DVec3::new(xn * ta, yn * t, -1.0);
     let den = n.dot(d);
     if den.abs() < 1e-12 {
@@ -163,6 +168,10 @@ pub fn analyse(
     let mut predicted: Vec<Option<Footprint>> = vec![None; n];
     let mut exact_lit = vec![false; n];
     let mut visible = vec![false; n];
+    let mut lights = vec![false; n];
+    // Whether the exact shadow changes inside the pixel (its four corners on the pixel's plane
+    // against its centre): a shadow thinner than a pixel is never interior.
+    let mut mixed = vec![false; n];
     for y in 0..h {
         for x in 0..w {
             let i = y * w + x;
@@ -183,7 +192,16 @@ pub fn analyse(
             }
             let pw = eye_to_world.transform_point3(p);
             let facing = surf.normal.dot(-view.light_world) > FACING;
+            lights[i] = facing;
             exact_lit[i] = facing && !ray_occluded(scene, pw, surf.normal, view.light_world);
+            if facing {
+                let occ = !exact_lit[i];
+                mixed[i] = [(-0.5, -0.5), (0.5, -0.5), (-0.5, 0.5), (0.5, 0.5)].iter().any(|&(dx, dy)| {
+                    pixel_point_at(view, width, height, x as f64 + 0.5 + dx, y as f64 + 0.5 + dy, ne, pe0)
+                        .map(|q| ray_occluded(scene, eye_to_world.transform_point3(q), surf.normal, view.light_world))
+                        .is_some_and(|o| o != occ)
+                });
+            }
         }
     }
     // Rendered Jacobians: central differences where the 3×3 neighbourhood is one surface and
@@ -230,10 +248,10 @@ pub fn analyse(
             let (er, ep) = (error_of(jr), error_of(fp.jacobian));
             rendered_error[i] = er;
             predicted_error[i] = ep;
-            if er.is_finite() {
+            // The maxima over surfaces the light can reach (a face turned away or edge-on is dark
+            // whatever its texels; edge-on, its texels are unbounded).
+            if lights[i] && er.is_finite() && ep.is_finite() {
                 max_r = max_r.max(er);
-            }
-            if ep.is_finite() {
                 max_p = max_p.max(ep);
             }
         }
@@ -242,12 +260,40 @@ pub fn analyse(
         return Err("no pixel could be compared (empty frame?)".into());
     }
     rels.sort_by(f64::total_cmp);
-    // Shadow correctness: distance to the nearest pixel of the other exact state (sky and the
-    // screen's border count as both).
-    let lit_or_sky: Vec<bool> = (0..n).map(|i| !visible[i] || exact_lit[i]).collect();
-    let dark_or_sky: Vec<bool> = (0..n).map(|i| !visible[i] || !exact_lit[i]).collect();
-    let d_lit = distance_to(&lit_or_sky, w, h);
-    let d_dark = distance_to(&dark_or_sky, w, h);
+    // Shadow correctness. A pixel is interior when no pixel within 2 of its texel footprints
+    // (plus one pixel for where the exact boundary lies between pixel centres) differs from it in
+    // surface or in exact class (lit, in cast shadow, turned away from the light), and none is sky
+    // or off screen: the surroundings of the texel on the pixel's own surface are all of the
+    // pixel's exact state.
+    let class: Vec<u8> = (0..n)
+        .map(|i| {
+            if !visible[i] {
+                0
+            } else if exact_lit[i] {
+                1
+            } else if lights[i] {
+                2
+            } else {
+                3
+            }
+        })
+        .collect();
+    let boundary: Vec<bool> = (0..n)
+        .map(|i| {
+            let (x, y) = (i % w, i / w);
+            let key = (out.id[i], class[i]);
+            class[i] == 0
+                || mixed[i]
+                || x == 0
+                || y == 0
+                || x + 1 == w
+                || y + 1 == h
+                || [i - 1, i + 1, i - w, i + w]
+                    .iter()
+                    .any(|&j| (out.id[j], class[j]) != key)
+        })
+        .collect();
+    let dist_b = distance_to(&boundary, w, h);
     let (mut misses, mut falses, mut interior, mut band, mut band_mis) = (0, 0, 0, 0, 0);
     for y in 0..h {
         for x in 0..w {
@@ -255,11 +301,10 @@ pub fn analyse(
             if !visible[i] {
                 continue;
             }
-            let border = (x + 1).min(w - x).min(y + 1).min(h - y) as f64;
-            let dist = if exact_lit[i] { d_dark[i] } else { d_lit[i] }.min(border);
+            let dist = dist_b[i];
             let reach = predicted[i]
                 .and_then(|f| f.error().ok())
-                .map_or(f64::INFINITY, |e| 2.0 * e);
+                .map_or(f64::INFINITY, |e| 2.0 * e + 1.0);
             let rendered_lit = out.texel[i][3] > 0.5;
             if dist > reach {
                 interior += 1;
@@ -268,6 +313,19 @@ pub fn analyse(
                 }
                 if exact_lit[i] && !rendered_lit {
                     falses += 1;
+                }
+                if exact_lit[i] != rendered_lit && std::env::var_os("RENDER_CHECK_DEBUG").is_some() {
+                    let id = out.id[i] - 1;
+                    let sn = mesh.surfaces[id as usize].normal;
+                    let pw = {
+                        let ne = view.world_to_eye.transform_vector3(sn);
+                        let pe0 = view.world_to_eye.transform_point3(mesh.surfaces[id as usize].point);
+                        pixel_point(view, width, height, x as u32, y as u32, ne, pe0).map(|p| eye_to_world.transform_point3(p))
+                    };
+                    eprintln!(
+                        "  interior mismatch at ({x}, {y}) world {pw:?}: surface {id} n {sn} n.l {:.4} exact_lit {} part {} dist {dist:.1} reach {reach:.2} texel {:?}",
+                        sn.dot(-view.light_world), exact_lit[i], out.texel[i][2], out.texel[i]
+                    );
                 }
             } else {
                 band += 1;

@@ -97,9 +97,9 @@ struct Vertex {
 const SHADER: &str = include_str!("shaders.wgsl");
 /// Slope-scaled depth bias of the shadow pass (in units of the depth slope per texel) and its
 /// constant part (in units of the depth format's resolution at the primitive's depth).
-pub const SLOPE_BIAS: f32 = 2.0;
+pub const SLOPE_BIAS: f32 = 0.5;
 /// See [`SLOPE_BIAS`].
-pub const CONSTANT_BIAS: i32 = 64;
+pub const CONSTANT_BIAS: i32 = 16;
 
 fn mat(m: DMat4) -> [f32; 16] {
     m.as_mat4().to_cols_array()
@@ -141,7 +141,7 @@ impl Gpu {
             label: Some("shadow"),
             entries: &[wgpu::BindGroupLayoutEntry {
                 binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX,
+                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
                 ty: wgpu::BindingType::Buffer {
                     ty: wgpu::BufferBindingType::Uniform,
                     has_dynamic_offset: false,
@@ -205,7 +205,7 @@ impl Gpu {
                 buffers: &[Some(wgpu::VertexBufferLayout {
                     array_stride: std::mem::size_of::<Vertex>() as u64,
                     step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &wgpu::vertex_attr_array![0 => Float32x3],
+                    attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
                 })],
             },
             primitive: wgpu::PrimitiveState::default(),
@@ -215,13 +215,18 @@ impl Gpu {
                 depth_compare: Some(wgpu::CompareFunction::Less),
                 stencil: Default::default(),
                 bias: wgpu::DepthBiasState {
-                    constant: CONSTANT_BIAS,
-                    slope_scale: SLOPE_BIAS,
+                    constant: std::env::var("RC_CB").ok().and_then(|v| v.parse().ok()).unwrap_or(CONSTANT_BIAS),
+                    slope_scale: std::env::var("RC_SB").ok().and_then(|v| v.parse().ok()).unwrap_or(SLOPE_BIAS),
                     clamp: 0.0,
                 },
             }),
             multisample: Default::default(),
-            fragment: None,
+            fragment: Some(wgpu::FragmentState {
+                module: &module,
+                entry_point: Some("fs_shadow"),
+                compilation_options: Default::default(),
+                targets: &[],
+            }),
             multiview_mask: None,
             cache: None,
         });
@@ -301,6 +306,7 @@ impl Gpu {
         n_vertices: u32,
         parts: &[GpuPart],
         res: u32,
+        light: DVec3,
     ) -> wgpu::Texture {
         let tex = self.device.create_texture(&wgpu::TextureDescriptor {
             label: Some("shadow maps"),
@@ -319,10 +325,10 @@ impl Gpu {
             view_formats: &[],
         });
         for (i, p) in parts.iter().enumerate() {
-            let ub = self.buffer(
-                bytemuck::cast_slice(&mat(p.matrix)),
-                wgpu::BufferUsages::UNIFORM,
-            );
+            let mut u = [0f32; 20];
+            u[..16].copy_from_slice(&mat(p.matrix));
+            u[16..].copy_from_slice(&[light.x as f32, light.y as f32, light.z as f32, crate::scene::FACING as f32]);
+            let ub = self.buffer(bytemuck::cast_slice(&u), wgpu::BufferUsages::UNIFORM);
             let bg = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: None,
                 layout: &self.shadow_bgl,
@@ -446,7 +452,7 @@ impl Gpu {
     pub fn render_maps(&self, f: &FrameInput) -> Result<Vec<f32>, String> {
         let vb = self.vertices(f);
         let mut enc = self.device.create_command_encoder(&Default::default());
-        let tex = self.shadow_maps(&mut enc, &vb, f.positions.len() as u32, f.parts, f.res);
+        let tex = self.shadow_maps(&mut enc, &vb, f.positions.len() as u32, f.parts, f.res, f.light);
         let layers = f.parts.len() as u32;
         let (buf, row) = self.copy_out(&mut enc, &tex, f.res, f.res, layers, 4, wgpu::TextureAspect::DepthOnly);
         self.queue.submit([enc.finish()]);
@@ -461,7 +467,7 @@ impl Gpu {
     pub fn render(&self, f: &FrameInput) -> Result<FrameOutput, String> {
         let vb = self.vertices(f);
         let mut enc = self.device.create_command_encoder(&Default::default());
-        let maps = self.shadow_maps(&mut enc, &vb, f.positions.len() as u32, f.parts, f.res);
+        let maps = self.shadow_maps(&mut enc, &vb, f.positions.len() as u32, f.parts, f.res, f.light);
         let maps_view = maps.create_view(&wgpu::TextureViewDescriptor {
             dimension: Some(wgpu::TextureViewDimension::D2Array),
             ..Default::default()

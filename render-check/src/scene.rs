@@ -237,6 +237,11 @@ impl Mesh {
                 (DVec3::NEG_Z, [(false, false, false), (false, true, false), (true, true, false), (true, false, false)]),
             ];
             for (normal, cs) in faces {
+                // A bottom face resting on the ground is never seen and covers only ground the
+                // box hides: left out, so that no stored face is coplanar with a lit receiver.
+                if normal == DVec3::NEG_Y && lo.y <= y {
+                    continue;
+                }
                 let q = cs.map(|(x, y, z)| corner(x, y, z));
                 let id = m.surfaces.len() as u32;
                 m.surfaces.push(Surface { normal, point: q[0] });

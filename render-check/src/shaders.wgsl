@@ -21,13 +21,33 @@ struct Globals {
 
 struct ShadowUniform {
     m: mat4x4<f32>,
+    // xyz: light direction (eye space, travel); w: facing threshold.
+    light: vec4<f32>,
 };
 
 @group(0) @binding(0) var<uniform> su: ShadowUniform;
 
+struct SOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) @interpolate(flat) facing: f32,
+};
+
 @vertex
-fn vs_shadow(@location(0) pos: vec3<f32>) -> @builtin(position) vec4<f32> {
-    return su.m * vec4<f32>(pos, 1.0);
+fn vs_shadow(@location(0) pos: vec3<f32>, @location(1) normal: vec3<f32>) -> SOut {
+    var o: SOut;
+    o.clip = su.m * vec4<f32>(pos, 1.0);
+    o.facing = dot(normal, -su.light.xyz);
+    return o;
+}
+
+// Second-depth shadow maps (Wang & Molnar 1994): only faces turned away from the light (or
+// edge-on) are stored, so a lit face is compared with the far side of its own closed box and
+// never with itself; faces turned away are dark by the facing test anyway.
+@fragment
+fn fs_shadow(v: SOut) {
+    if (v.facing > su.light.w) {
+        discard;
+    }
 }
 
 @group(0) @binding(0) var<uniform> g: Globals;
