@@ -58,6 +58,10 @@ pub struct Sizes {
     pub frames: usize,
     /// Sample points of the shimmer test (at most).
     pub shimmer_points: usize,
+    /// Render with each builder's own depth row (fitted to the view frustum, `ZeroToOne`)
+    /// instead of the near-plane pull-back: casters nearer the light than the frustum are then
+    /// clipped (the check that the correctness test can fail).
+    pub depth_as_built: bool,
 }
 
 /// A case's full result.
@@ -155,7 +159,14 @@ pub fn run_case(
     let res = sizes.res.unwrap_or(scene.map_resolution);
     let view = View::new(&scene.camera, scene.light(), sizes.width, sizes.height)?;
     let mesh = Mesh::build(scene);
-    let built = build(scheme, &view, scene, res)?;
+    let mut built = build(scheme, &view, scene, res)?;
+    if sizes.depth_as_built {
+        for m in &mut built.maps {
+            let mut t = m.built.transpose();
+            t.z_axis = 0.5 * (t.z_axis + t.w_axis);
+            m.gpu = t.transpose();
+        }
+    }
     let eye = EyeMesh::new(&mesh, view.world_to_eye);
     let parts = gpu_parts(&built);
     let out = gpu.render(&input(&view, &mesh, &eye, &built, &parts, res, sizes))?;
