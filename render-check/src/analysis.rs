@@ -44,7 +44,15 @@ fn pixel_point(view: &View, w: u32, h: u32, x: u32, y: u32, n: DVec3, p0: DVec3)
 }
 
 /// As [`pixel_point`] at the screen position `(u, v)` (pixel units, from the top left).
-fn pixel_point_at(view: &View, w: u32, h: u32, u: f64, v: f64, n: DVec3, p0: DVec3) -> Option<DVec3> {
+fn pixel_point_at(
+    view: &View,
+    w: u32,
+    h: u32,
+    u: f64,
+    v: f64,
+    n: DVec3,
+    p0: DVec3,
+) -> Option<DVec3> {
     let [_, _, t, ta] = view.frustum_params();
     let xn = 2.0 * u / f64::from(w) - 1.0;
     let yn = 1.0 - 2.0 * v / f64::from(h);
@@ -56,6 +64,23 @@ fn pixel_point_at(view: &View, w: u32, h: u32, u: f64, v: f64, n: DVec3, p0: DVe
     let s = n.dot(p0) / den;
     (s > 0.0).then_some(d * s)
 }
+
+/// Where the exact shadow is sampled inside a pixel besides its centre: a 5 × 5 grid a quarter
+/// of a pixel apart, corners included, so that a shadow a quarter of a pixel wide (the built-in
+/// scene's poles far away) marks the pixel as containing an edge.
+const SUBSAMPLES: [(f64, f64); 24] = {
+    let mut s = [(0.0, 0.0); 24];
+    let mut k = 0;
+    let mut i = 0;
+    while i < 25 {
+        if i != 12 {
+            s[k] = ((i % 5) as f64 * 0.25 - 0.5, (i / 5) as f64 * 0.25 - 0.5);
+            k += 1;
+        }
+        i += 1;
+    }
+    s
+};
 
 /// Squared Euclidean distance transform in 1D (Felzenszwalb & Huttenlocher).
 fn edt_1d(f: &[f64], out: &mut [f64]) {
@@ -69,7 +94,8 @@ fn edt_1d(f: &[f64], out: &mut [f64]) {
     for q in 1..n {
         loop {
             let p = v[k];
-            let s = ((f[q] + (q * q) as f64) - (f[p] + (p * p) as f64)) / (2.0 * (q as f64 - p as f64));
+            let s =
+                ((f[q] + (q * q) as f64) - (f[p] + (p * p) as f64)) / (2.0 * (q as f64 - p as f64));
             if s <= z[k] {
                 if k == 0 {
                     v[0] = q;
@@ -118,7 +144,11 @@ pub fn distance_to(set: &[bool], w: usize, h: usize) -> Vec<f64> {
     for y in 0..h {
         edt_1d(&g[y * w..(y + 1) * w], &mut row_out);
         for x in 0..w {
-            d[y * w + x] = if row_out[x] >= big { f64::INFINITY } else { row_out[x].sqrt() };
+            d[y * w + x] = if row_out[x] >= big {
+                f64::INFINITY
+            } else {
+                row_out[x].sqrt()
+            };
         }
     }
     d
@@ -169,7 +199,7 @@ pub fn analyse(
     let mut exact_lit = vec![false; n];
     let mut visible = vec![false; n];
     let mut lights = vec![false; n];
-    // Whether the exact shadow changes inside the pixel (its four corners on the pixel's plane
+    // Whether the exact shadow changes inside the pixel ([`SUBSAMPLES`] on the pixel's plane
     // against its centre): a shadow thinner than a pixel is never interior.
     let mut mixed = vec![false; n];
     for y in 0..h {
@@ -196,10 +226,25 @@ pub fn analyse(
             exact_lit[i] = facing && !ray_occluded(scene, pw, surf.normal, view.light_world);
             if facing {
                 let occ = !exact_lit[i];
-                mixed[i] = [(-0.5, -0.5), (0.5, -0.5), (-0.5, 0.5), (0.5, 0.5)].iter().any(|&(dx, dy)| {
-                    pixel_point_at(view, width, height, x as f64 + 0.5 + dx, y as f64 + 0.5 + dy, ne, pe0)
-                        .map(|q| ray_occluded(scene, eye_to_world.transform_point3(q), surf.normal, view.light_world))
-                        .is_some_and(|o| o != occ)
+                mixed[i] = SUBSAMPLES.iter().any(|&(dx, dy)| {
+                    pixel_point_at(
+                        view,
+                        width,
+                        height,
+                        x as f64 + 0.5 + dx,
+                        y as f64 + 0.5 + dy,
+                        ne,
+                        pe0,
+                    )
+                    .map(|q| {
+                        ray_occluded(
+                            scene,
+                            eye_to_world.transform_point3(q),
+                            surf.normal,
+                            view.light_world,
+                        )
+                    })
+                    .is_some_and(|o| o != occ)
                 });
             }
         }
@@ -314,13 +359,17 @@ pub fn analyse(
                 if exact_lit[i] && !rendered_lit {
                     falses += 1;
                 }
-                if exact_lit[i] != rendered_lit && std::env::var_os("RENDER_CHECK_DEBUG").is_some() {
+                if exact_lit[i] != rendered_lit && std::env::var_os("RENDER_CHECK_DEBUG").is_some()
+                {
                     let id = out.id[i] - 1;
                     let sn = mesh.surfaces[id as usize].normal;
                     let pw = {
                         let ne = view.world_to_eye.transform_vector3(sn);
-                        let pe0 = view.world_to_eye.transform_point3(mesh.surfaces[id as usize].point);
-                        pixel_point(view, width, height, x as u32, y as u32, ne, pe0).map(|p| eye_to_world.transform_point3(p))
+                        let pe0 = view
+                            .world_to_eye
+                            .transform_point3(mesh.surfaces[id as usize].point);
+                        pixel_point(view, width, height, x as u32, y as u32, ne, pe0)
+                            .map(|p| eye_to_world.transform_point3(p))
                     };
                     eprintln!(
                         "  interior mismatch at ({x}, {y}) world {pw:?}: surface {id} n {sn} n.l {:.4} exact_lit {} part {} dist {dist:.1} reach {reach:.2} texel {:?}",

@@ -215,8 +215,14 @@ impl Gpu {
                 depth_compare: Some(wgpu::CompareFunction::Less),
                 stencil: Default::default(),
                 bias: wgpu::DepthBiasState {
-                    constant: std::env::var("RC_CB").ok().and_then(|v| v.parse().ok()).unwrap_or(CONSTANT_BIAS),
-                    slope_scale: std::env::var("RC_SB").ok().and_then(|v| v.parse().ok()).unwrap_or(SLOPE_BIAS),
+                    constant: std::env::var("RC_CB")
+                        .ok()
+                        .and_then(|v| v.parse().ok())
+                        .unwrap_or(CONSTANT_BIAS),
+                    slope_scale: std::env::var("RC_SB")
+                        .ok()
+                        .and_then(|v| v.parse().ok())
+                        .unwrap_or(SLOPE_BIAS),
                     clamp: 0.0,
                 },
             }),
@@ -327,7 +333,12 @@ impl Gpu {
         for (i, p) in parts.iter().enumerate() {
             let mut u = [0f32; 20];
             u[..16].copy_from_slice(&mat(p.matrix));
-            u[16..].copy_from_slice(&[light.x as f32, light.y as f32, light.z as f32, crate::scene::FACING as f32]);
+            u[16..].copy_from_slice(&[
+                light.x as f32,
+                light.y as f32,
+                light.z as f32,
+                crate::scene::FACING as f32,
+            ]);
             let ub = self.buffer(bytemuck::cast_slice(&u), wgpu::BufferUsages::UNIFORM);
             let bg = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: None,
@@ -425,7 +436,15 @@ impl Gpu {
         (buf, row)
     }
 
-    fn read(&self, buf: &wgpu::Buffer, row: u32, w: u32, h: u32, layers: u32, bpp: u32) -> Result<Vec<u8>, String> {
+    fn read(
+        &self,
+        buf: &wgpu::Buffer,
+        row: u32,
+        w: u32,
+        h: u32,
+        layers: u32,
+        bpp: u32,
+    ) -> Result<Vec<u8>, String> {
         let slice = buf.slice(..);
         slice.map_async(wgpu::MapMode::Read, |_| {});
         self.device
@@ -452,9 +471,24 @@ impl Gpu {
     pub fn render_maps(&self, f: &FrameInput) -> Result<Vec<f32>, String> {
         let vb = self.vertices(f);
         let mut enc = self.device.create_command_encoder(&Default::default());
-        let tex = self.shadow_maps(&mut enc, &vb, f.positions.len() as u32, f.parts, f.res, f.light);
+        let tex = self.shadow_maps(
+            &mut enc,
+            &vb,
+            f.positions.len() as u32,
+            f.parts,
+            f.res,
+            f.light,
+        );
         let layers = f.parts.len() as u32;
-        let (buf, row) = self.copy_out(&mut enc, &tex, f.res, f.res, layers, 4, wgpu::TextureAspect::DepthOnly);
+        let (buf, row) = self.copy_out(
+            &mut enc,
+            &tex,
+            f.res,
+            f.res,
+            layers,
+            4,
+            wgpu::TextureAspect::DepthOnly,
+        );
         self.queue.submit([enc.finish()]);
         let bytes = self.read(&buf, row, f.res, f.res, layers, 4)?;
         Ok(bytemuck::cast_slice(&bytes).to_vec())
@@ -467,16 +501,33 @@ impl Gpu {
     pub fn render(&self, f: &FrameInput) -> Result<FrameOutput, String> {
         let vb = self.vertices(f);
         let mut enc = self.device.create_command_encoder(&Default::default());
-        let maps = self.shadow_maps(&mut enc, &vb, f.positions.len() as u32, f.parts, f.res, f.light);
+        let maps = self.shadow_maps(
+            &mut enc,
+            &vb,
+            f.positions.len() as u32,
+            f.parts,
+            f.res,
+            f.light,
+        );
         let maps_view = maps.create_view(&wgpu::TextureViewDescriptor {
             dimension: Some(wgpu::TextureViewDimension::D2Array),
             ..Default::default()
         });
         let globals = GlobalsRaw {
             proj: mat(f.proj),
-            light: [f.light.x as f32, f.light.y as f32, f.light.z as f32, f.mode as f32],
+            light: [
+                f.light.x as f32,
+                f.light.y as f32,
+                f.light.z as f32,
+                f.mode as f32,
+            ],
             frustum: f.frustum.map(|x| x as f32),
-            misc: [f.res as f32, f.parts.len() as f32, crate::scene::FACING as f32, 0.0],
+            misc: [
+                f.res as f32,
+                f.parts.len() as f32,
+                crate::scene::FACING as f32,
+                0.0,
+            ],
         };
         let parts: Vec<PartRaw> = f
             .parts
@@ -511,7 +562,8 @@ impl Gpu {
         let t_id = self.target(w, h, wgpu::TextureFormat::R32Uint);
         let t_color = self.target(w, h, wgpu::TextureFormat::Rgba8Unorm);
         let t_depth = self.target(w, h, wgpu::TextureFormat::Depth32Float);
-        let views = [&t_texel, &t_id, &t_color, &t_depth].map(|t| t.create_view(&Default::default()));
+        let views =
+            [&t_texel, &t_id, &t_color, &t_depth].map(|t| t.create_view(&Default::default()));
         {
             let clear = |c: wgpu::Color| wgpu::Operations {
                 load: wgpu::LoadOp::Clear(c),
@@ -576,4 +628,3 @@ impl Gpu {
         })
     }
 }
-

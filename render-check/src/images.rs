@@ -119,7 +119,14 @@ pub fn heat_map(rendered: &[f64], predicted: &[f64], w: u32, h: u32) -> RgbImage
         for x in x0 + 14..x0 + 18 {
             img.put_pixel(x, y, black);
         }
-        text(&mut img, x0 + 20, y.saturating_sub(5).max(top), label, 2, black);
+        text(
+            &mut img,
+            x0 + 20,
+            y.saturating_sub(5).max(top),
+            label,
+            2,
+            black,
+        );
     }
     text(&mut img, x0 - 2, 2, "px/texel", 1, black);
     img

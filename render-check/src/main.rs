@@ -58,7 +58,9 @@ fn real_main() -> Result<(), String> {
     }
     let cases: Vec<Setup> = match &scene_file {
         Some(f) => vec![Setup {
-            name: f.file_stem().map_or("scene".into(), |s| s.to_string_lossy().into_owned()),
+            name: f
+                .file_stem()
+                .map_or("scene".into(), |s| s.to_string_lossy().into_owned()),
             scene: Scene::load(f)?,
         }],
         None => setups(),
@@ -76,16 +78,25 @@ fn real_main() -> Result<(), String> {
             let t = Instant::now();
             let mut r = run_case(&gpu, &setup.name, &setup.scene, scheme, sizes)?;
             if matches!(scheme, Scheme::Cascades | Scheme::StableCascades) {
-                r.summary.shimmer_changed_fraction = Some(shimmer(&gpu, &setup.scene, scheme, sizes)?);
+                r.summary.shimmer_changed_fraction =
+                    Some(shimmer(&gpu, &setup.scene, scheme, sizes)?);
             }
             let stem = format!("{}_{}", setup.name, scheme.name());
             let save = |img: image::RgbImage, name: String| {
                 let p = out.join(&name);
                 img.save(&p).map_err(|e| format!("{}: {e}", p.display()))
             };
-            save(shaded(&r.color, sizes.width, sizes.height), format!("{stem}.png"))?;
             save(
-                heat_map(&r.analysis.rendered_error, &r.analysis.predicted_error, sizes.width, sizes.height),
+                shaded(&r.color, sizes.width, sizes.height),
+                format!("{stem}.png"),
+            )?;
+            save(
+                heat_map(
+                    &r.analysis.rendered_error,
+                    &r.analysis.predicted_error,
+                    sizes.width,
+                    sizes.height,
+                ),
                 format!("{stem}_error.png"),
             )?;
             let s = &r.summary;
@@ -101,6 +112,11 @@ fn real_main() -> Result<(), String> {
     let p = out.join("summary.json");
     let json = serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?;
     std::fs::write(&p, json + "\n").map_err(|e| format!("{}: {e}", p.display()))?;
-    eprintln!("wrote {} cases to {} in {:.1} s", summary.cases.len(), out.display(), start.elapsed().as_secs_f64());
+    eprintln!(
+        "wrote {} cases to {} in {:.1} s",
+        summary.cases.len(),
+        out.display(),
+        start.elapsed().as_secs_f64()
+    );
     Ok(())
 }

@@ -170,8 +170,17 @@ pub fn run_case(
     let eye = EyeMesh::new(&mesh, view.world_to_eye);
     let parts = gpu_parts(&built);
     let out = gpu.render(&input(&view, &mesh, &eye, &built, &parts, res, sizes))?;
-    let a = analyse(&out, &view, scene, &mesh, &built, res, sizes.width, sizes.height)
-        .map_err(|e| format!("{setup}/{}: {e}", scheme.name()))?;
+    let a = analyse(
+        &out,
+        &view,
+        scene,
+        &mesh,
+        &built,
+        res,
+        sizes.width,
+        sizes.height,
+    )
+    .map_err(|e| format!("{setup}/{}: {e}", scheme.name()))?;
     let diagnostics = format!(
         "excluded (discontinuity or no prediction) {}, interior {}, edge band {}",
         a.excluded_discontinuity, a.interior_pixels, a.edge_band_pixels
@@ -237,7 +246,16 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
     let eye0 = EyeMesh::new(&mesh, view0.world_to_eye);
     let parts0 = gpu_parts(&built0);
     let out0 = gpu.render(&input(&view0, &mesh, &eye0, &built0, &parts0, res, sizes))?;
-    let a0 = analyse(&out0, &view0, scene, &mesh, &built0, res, sizes.width, sizes.height)?;
+    let a0 = analyse(
+        &out0,
+        &view0,
+        scene,
+        &mesh,
+        &built0,
+        res,
+        sizes.width,
+        sizes.height,
+    )?;
     drop(a0);
     let points = edge_points(&out0, &view0, scene, &mesh, sizes)?;
     let mut prev: Option<Vec<Option<bool>>> = None;
@@ -332,7 +350,14 @@ fn edge_points(
 
 /// The shader's lookup of a world point in the read-back maps (f64), or `None` outside the view
 /// frustum or every map.
-fn lookup(view: &View, built: &Built, depth: &[f32], res: u32, pw: DVec3, nw: DVec3) -> Option<bool> {
+fn lookup(
+    view: &View,
+    built: &Built,
+    depth: &[f32],
+    res: u32,
+    pw: DVec3,
+    nw: DVec3,
+) -> Option<bool> {
     let p = view.world_to_eye.transform_point3(pw);
     if !view.frustum.contains(p, 0.0) {
         return None;

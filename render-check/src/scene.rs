@@ -54,23 +54,29 @@ fn v(a: [f64; 3]) -> DVec3 {
 impl Scene {
     /// Reads and checks a scene file.
     pub fn load(path: &std::path::Path) -> Result<Self, String> {
-        let text =
-            std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
         let s: Scene =
             serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
-        s.validate().map_err(|e| format!("{}: {e}", path.display()))?;
+        s.validate()
+            .map_err(|e| format!("{}: {e}", path.display()))?;
         Ok(s)
     }
 
     /// Checks every number (finite, boxes non-empty, camera valid, light pointing down).
     pub fn validate(&self) -> Result<(), String> {
         let c = &self.camera;
-        let all = [self.ground_y, self.ground_half_extent, c.near, c.far, c.fov_y_deg]
-            .into_iter()
-            .chain(c.eye)
-            .chain(c.target)
-            .chain(c.up)
-            .chain(self.light_dir);
+        let all = [
+            self.ground_y,
+            self.ground_half_extent,
+            c.near,
+            c.far,
+            c.fov_y_deg,
+        ]
+        .into_iter()
+        .chain(c.eye)
+        .chain(c.target)
+        .chain(c.up)
+        .chain(self.light_dir);
         if all.into_iter().any(|x| !x.is_finite()) {
             return Err("every number must be finite".into());
         }
@@ -91,8 +97,7 @@ impl Scene {
             return Err("camera fov_y_deg must lie in (0, 179)".into());
         }
         let f = v(c.target) - v(c.eye);
-        if f.length() == 0.0 || f.cross(v(c.up)).length() < 1e-9 * f.length() * v(c.up).length()
-        {
+        if f.length() == 0.0 || f.cross(v(c.up)).length() < 1e-9 * f.length() * v(c.up).length() {
             return Err("camera target must differ from eye and not lie along up".into());
         }
         let l = v(self.light_dir);
@@ -132,7 +137,13 @@ impl Scene {
             }
         }
         // Thin poles.
-        for (x, z) in [(-9.0, -12.0), (0.5, -14.0), (8.0, -24.0), (-2.0, -38.0), (18.0, -55.0)] {
+        for (x, z) in [
+            (-9.0, -12.0),
+            (0.5, -14.0),
+            (8.0, -24.0),
+            (-2.0, -38.0),
+            (18.0, -55.0),
+        ] {
             boxes.push(Aabb {
                 min: [x - 0.12, 0.0, z - 0.12],
                 max: [x + 0.12, 6.0, z + 0.12],
@@ -229,12 +240,60 @@ impl Mesh {
             };
             // (normal, four corners counter-clockwise seen from outside)
             let faces = [
-                (DVec3::X, [(true, false, false), (true, true, false), (true, true, true), (true, false, true)]),
-                (DVec3::NEG_X, [(false, false, true), (false, true, true), (false, true, false), (false, false, false)]),
-                (DVec3::Y, [(false, true, false), (false, true, true), (true, true, true), (true, true, false)]),
-                (DVec3::NEG_Y, [(false, false, true), (false, false, false), (true, false, false), (true, false, true)]),
-                (DVec3::Z, [(true, false, true), (true, true, true), (false, true, true), (false, false, true)]),
-                (DVec3::NEG_Z, [(false, false, false), (false, true, false), (true, true, false), (true, false, false)]),
+                (
+                    DVec3::X,
+                    [
+                        (true, false, false),
+                        (true, true, false),
+                        (true, true, true),
+                        (true, false, true),
+                    ],
+                ),
+                (
+                    DVec3::NEG_X,
+                    [
+                        (false, false, true),
+                        (false, true, true),
+                        (false, true, false),
+                        (false, false, false),
+                    ],
+                ),
+                (
+                    DVec3::Y,
+                    [
+                        (false, true, false),
+                        (false, true, true),
+                        (true, true, true),
+                        (true, true, false),
+                    ],
+                ),
+                (
+                    DVec3::NEG_Y,
+                    [
+                        (false, false, true),
+                        (false, false, false),
+                        (true, false, false),
+                        (true, false, true),
+                    ],
+                ),
+                (
+                    DVec3::Z,
+                    [
+                        (true, false, true),
+                        (true, true, true),
+                        (false, true, true),
+                        (false, false, true),
+                    ],
+                ),
+                (
+                    DVec3::NEG_Z,
+                    [
+                        (false, false, false),
+                        (false, true, false),
+                        (true, true, false),
+                        (true, false, false),
+                    ],
+                ),
             ];
             for (normal, cs) in faces {
                 // A bottom face resting on the ground is never seen and covers only ground the
@@ -244,7 +303,10 @@ impl Mesh {
                 }
                 let q = cs.map(|(x, y, z)| corner(x, y, z));
                 let id = m.surfaces.len() as u32;
-                m.surfaces.push(Surface { normal, point: q[0] });
+                m.surfaces.push(Surface {
+                    normal,
+                    point: q[0],
+                });
                 m.quad(q, id);
             }
         }

@@ -116,7 +116,12 @@ impl View {
     ///
     /// # Errors
     /// The crate's error for an invalid frustum.
-    pub fn new(camera: &Camera, light_world: DVec3, width: u32, height: u32) -> Result<Self, String> {
+    pub fn new(
+        camera: &Camera,
+        light_world: DVec3,
+        width: u32,
+        height: u32,
+    ) -> Result<Self, String> {
         let aspect = f64::from(width) / f64::from(height);
         let half = 0.5 * camera.fov_y_deg.to_radians();
         let frustum = ViewFrustum::with_aspect(camera.near, camera.far, half, aspect)
@@ -126,7 +131,12 @@ impl View {
             DVec3::from_array(camera.target),
             DVec3::from_array(camera.up),
         );
-        let proj = glam::dcamera::rh::proj::directx::perspective(2.0 * half, aspect, camera.near, camera.far);
+        let proj = glam::dcamera::rh::proj::directx::perspective(
+            2.0 * half,
+            aspect,
+            camera.near,
+            camera.far,
+        );
         let light_world = light_world.normalize();
         Ok(Self {
             world_to_eye,
@@ -140,7 +150,12 @@ impl View {
     /// near, far, tan θ, tan θ · aspect.
     pub fn frustum_params(&self) -> [f64; 4] {
         let t = self.frustum.tan_half_fov();
-        [self.frustum.near(), self.frustum.far(), t, t * self.frustum.aspect()]
+        [
+            self.frustum.near(),
+            self.frustum.far(),
+            t,
+            t * self.frustum.aspect(),
+        ]
     }
 }
 
@@ -206,20 +221,20 @@ fn face_id(f: Face) -> i32 {
 
 /// The split planes of the cascades (practical, λ = 0.75, 4 partitions).
 pub fn splits(view: &ViewFrustum) -> Result<shadow_aliasing::analytic::partition::Splits, String> {
-    z_splits(view.near(), view.far(), 4, SplitScheme::Practical { lambda: 0.75 })
-        .map_err(|e| e.to_string())
+    z_splits(
+        view.near(),
+        view.far(),
+        4,
+        SplitScheme::Practical { lambda: 0.75 },
+    )
+    .map_err(|e| e.to_string())
 }
 
 /// Builds `scheme` for `view` (eye-space casters: every box corner), `res` texels per map side.
 ///
 /// # Errors
 /// The crate's error, as text.
-pub fn build(
-    scheme_: Scheme,
-    view: &View,
-    scene: &Scene,
-    res: u32,
-) -> Result<Built, String> {
+pub fn build(scheme_: Scheme, view: &View, scene: &Scene, res: u32) -> Result<Built, String> {
     let e = |e: shadow_aliasing::Error| format!("{}: {e}", scheme_.name());
     let fr = &view.frustum;
     let l = view.light_eye;
@@ -283,7 +298,8 @@ pub fn build(
         }
         Scheme::StableCascades => {
             let sp = splits(fr)?;
-            let c = stable_cascades(fr, view.world_to_eye, view.light_world, &sp, res).map_err(e)?;
+            let c =
+                stable_cascades(fr, view.world_to_eye, view.light_world, &sp, res).map_err(e)?;
             let maps = c
                 .iter()
                 .enumerate()
