@@ -181,6 +181,7 @@ fn percentile(sorted: &[f64], q: f64) -> f64 {
 ///
 /// # Errors
 /// When nothing could be compared (an empty result is not a success).
+#[allow(clippy::too_many_arguments)] // the frame, its inputs and its sizes, each needed once
 pub fn analyse(
     out: &FrameOutput,
     view: &View,

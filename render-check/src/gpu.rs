@@ -395,6 +395,7 @@ impl Gpu {
     }
 
     /// Copies `layers` of a texture (`bpp` bytes per texel) into a buffer, rows padded to 256.
+    #[allow(clippy::too_many_arguments)] // a texture copy's parameters
     fn copy_out(
         &self,
         enc: &mut wgpu::CommandEncoder,

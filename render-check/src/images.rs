@@ -122,7 +122,7 @@ pub fn heat_map(rendered: &[f64], predicted: &[f64], w: u32, h: u32) -> RgbImage
         text(
             &mut img,
             x0 + 20,
-            y.saturating_sub(5).max(top),
+            y.saturating_sub(5).clamp(top, top + h - 10),
             label,
             2,
             black,

@@ -101,7 +101,7 @@ impl Scene {
             return Err("camera target must differ from eye and not lie along up".into());
         }
         let l = v(self.light_dir);
-        if !(l.length() > 0.0) || l.y >= 0.0 {
+        if l.length() <= 0.0 || l.y >= 0.0 {
             return Err("light_dir must be non-zero and travel downwards (y < 0)".into());
         }
         if self.map_resolution < 16 || self.map_resolution > 8192 {
