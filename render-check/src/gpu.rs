@@ -215,14 +215,8 @@ impl Gpu {
                 depth_compare: Some(wgpu::CompareFunction::Less),
                 stencil: Default::default(),
                 bias: wgpu::DepthBiasState {
-                    constant: std::env::var("RC_CB")
-                        .ok()
-                        .and_then(|v| v.parse().ok())
-                        .unwrap_or(CONSTANT_BIAS),
-                    slope_scale: std::env::var("RC_SB")
-                        .ok()
-                        .and_then(|v| v.parse().ok())
-                        .unwrap_or(SLOPE_BIAS),
+                    constant: CONSTANT_BIAS,
+                    slope_scale: SLOPE_BIAS,
                     clamp: 0.0,
                 },
             }),
