@@ -133,6 +133,9 @@ impl Gpu {
             ..Default::default()
         }))
         .map_err(|e| format!("requesting a device of {name}: {e}"))?;
+        // wgpu panics on an uncaptured validation error: every call below is scoped, so that an
+        // error is returned instead.
+        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("shaders"),
             source: wgpu::ShaderSource::Wgsl(SHADER.into()),
@@ -265,6 +268,9 @@ impl Gpu {
             multiview_mask: None,
             cache: None,
         });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(format!("creating the pipelines on {name}: {e}"));
+        }
         Ok(Self {
             device,
             queue,
@@ -464,6 +470,20 @@ impl Gpu {
     /// # Errors
     /// A GPU error.
     pub fn render_maps(&self, f: &FrameInput) -> Result<Vec<f32>, String> {
+        self.scoped(|| self.render_maps_inner(f))
+    }
+
+    /// Runs `f` inside a validation error scope: a wgpu validation error becomes `Err`.
+    fn scoped<T>(&self, f: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let r = f();
+        match pollster::block_on(scope.pop()) {
+            Some(e) => Err(format!("GPU validation error on {}: {e}", self.name)),
+            None => r,
+        }
+    }
+
+    fn render_maps_inner(&self, f: &FrameInput) -> Result<Vec<f32>, String> {
         let vb = self.vertices(f);
         let mut enc = self.device.create_command_encoder(&Default::default());
         let tex = self.shadow_maps(
@@ -494,6 +514,13 @@ impl Gpu {
     /// # Errors
     /// A GPU error.
     pub fn render(&self, f: &FrameInput) -> Result<FrameOutput, String> {
+        if f.parts.is_empty() || f.positions.is_empty() {
+            return Err("nothing to render (no map or no triangle)".into());
+        }
+        self.scoped(|| self.render_inner(f))
+    }
+
+    fn render_inner(&self, f: &FrameInput) -> Result<FrameOutput, String> {
         let vb = self.vertices(f);
         let mut enc = self.device.create_command_encoder(&Default::default());
         let maps = self.shadow_maps(
