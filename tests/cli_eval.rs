@@ -792,7 +792,8 @@ proptest! {
     }
 }
 
-/// The README's promises: exactly two commands under "Two commands" (the main job and the tests),
+/// The README's promises: exactly two commands under "Two commands" (the main job and the tests,
+/// `scripts/test.sh`),
 /// and every relative link resolves to a file of the repository.
 #[test]
 fn readme_two_commands_and_links() {
@@ -810,9 +811,22 @@ fn readme_two_commands_and_links() {
         commands,
         [
             "cargo run --release --locked --features cli -- figures",
-            "cargo test --locked --all-features"
+            "scripts/test.sh"
         ]
     );
+    // The test command is the script, which runs every workspace member's tests.
+    let script = std::fs::read_to_string(format!("{root}/scripts/test.sh")).unwrap();
+    assert!(script.contains("cargo test --locked --workspace --all-features"));
+    assert!(script.contains("apt-get install -y mesa-vulkan-drivers"));
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mode = std::fs::metadata(format!("{root}/scripts/test.sh"))
+            .unwrap()
+            .permissions()
+            .mode();
+        assert!(mode & 0o111 != 0, "scripts/test.sh must be executable");
+    }
     for (i, _) in md.match_indices("](") {
         let target = md[i + 2..].split(')').next().unwrap_or("");
         if target.starts_with("http") || target.starts_with('#') {

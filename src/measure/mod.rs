@@ -26,9 +26,12 @@
 //! Zhang et al.'s perspective aliasing uses screen coordinates in `[−1, 1]` and texture
 //! coordinates in `[0, 1]`, so `E_q^pers = 2 m_x`, `E_p^pers = 2 m_z` with unit resolutions.
 
+pub mod footprint;
 pub mod tilted_twin;
 pub mod twin;
 pub mod vertex;
+
+pub use footprint::{surface_footprint, Footprint, Grids};
 
 use crate::error::{finite_result, Error, Result};
 use crate::frustum::{LightDir, Resolutions, ViewFrustum};

@@ -1,0 +1,652 @@
+//! wgpu on its Vulkan backend, headless: the shadow pass (one depth layer per map) and the
+//! camera pass (texel coordinates, surface id, shaded colour), read back to the CPU.
+
+use bytemuck::{Pod, Zeroable};
+use glam::{DMat4, DVec3};
+
+/// What to do when no adapter exists: the message names the package.
+pub const NO_ADAPTER: &str = "no Vulkan adapter found: install a Vulkan driver; without a GPU, \
+     Debian's software rasterizer: `apt-get update && apt-get install -y mesa-vulkan-drivers` \
+     (scripts/test.sh does this)";
+
+/// The device.
+pub struct Gpu {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    /// The adapter's name, driver and backend.
+    pub name: String,
+    shadow_pipeline: wgpu::RenderPipeline,
+    camera_pipeline: wgpu::RenderPipeline,
+    shadow_bgl: wgpu::BindGroupLayout,
+    camera_bgl: wgpu::BindGroupLayout,
+}
+
+/// One map as the GPU takes it.
+#[derive(Debug, Clone, Copy)]
+pub struct GpuPart {
+    /// Eye → light clip, depth in [0, 1].
+    pub matrix: DMat4,
+    /// -1: a depth range of the frustum; 0..5: a face (bottom, right, top, left, near, far).
+    pub region: f32,
+    /// Near end of the part's depth range.
+    pub near: f64,
+    /// Far end.
+    pub far: f64,
+}
+
+/// A camera-pass frame.
+pub struct FrameInput<'a> {
+    /// Eye-space triangle vertices.
+    pub positions: &'a [DVec3],
+    /// Eye-space normal of each vertex's surface.
+    pub normals: &'a [DVec3],
+    /// Surface id of each vertex.
+    pub surface: &'a [u32],
+    /// Eye → clip (wgpu: depth [0, 1], NDC y up).
+    pub proj: DMat4,
+    /// Unit eye-space light direction (travel).
+    pub light: DVec3,
+    /// 0 single, 1 z-partitions, 2 faces.
+    pub mode: u32,
+    /// near, far, tan(θ), tan(θ)·aspect.
+    pub frustum: [f64; 4],
+    /// The maps.
+    pub parts: &'a [GpuPart],
+    /// Map resolution (square).
+    pub res: u32,
+    /// Screen size.
+    pub width: u32,
+    /// Screen size.
+    pub height: u32,
+}
+
+/// What the camera pass wrote.
+pub struct FrameOutput {
+    /// Per pixel (row-major from the top): s·res, t·res, part, lit (0/1).
+    pub texel: Vec<[f32; 4]>,
+    /// Surface id + 1 (0: sky).
+    pub id: Vec<u32>,
+    /// Shaded colour, RGBA8.
+    pub color: Vec<[u8; 4]>,
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct PartRaw {
+    m: [f32; 16],
+    region: [f32; 4],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct GlobalsRaw {
+    proj: [f32; 16],
+    light: [f32; 4],
+    frustum: [f32; 4],
+    misc: [f32; 4],
+}
+
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct Vertex {
+    pos: [f32; 3],
+    normal: [f32; 3],
+    id: u32,
+}
+
+const SHADER: &str = include_str!("shaders.wgsl");
+/// Slope-scaled depth bias of the shadow pass (in units of the depth slope per texel) and its
+/// constant part (in units of the depth format's resolution at the primitive's depth).
+pub const SLOPE_BIAS: f32 = 0.5;
+/// See [`SLOPE_BIAS`].
+pub const CONSTANT_BIAS: i32 = 16;
+
+fn mat(m: DMat4) -> [f32; 16] {
+    m.as_mat4().to_cols_array()
+}
+
+impl Gpu {
+    /// The first Vulkan adapter (a GPU if there is one, else lavapipe).
+    ///
+    /// # Errors
+    /// [`NO_ADAPTER`] when none is found; the device's error otherwise.
+    pub fn new() -> Result<Self, String> {
+        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+        desc.backends = wgpu::Backends::VULKAN;
+        let instance = wgpu::Instance::new(desc);
+        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            force_fallback_adapter: false,
+            compatible_surface: None,
+            ..Default::default()
+        }))
+        .map_err(|e| format!("{NO_ADAPTER} ({e})"))?;
+        let info = adapter.get_info();
+        let name = format!(
+            "{} ({}, {:?}, {:?})",
+            info.name, info.driver_info, info.device_type, info.backend
+        );
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("render-check"),
+            required_features: wgpu::Features::empty(),
+            required_limits: adapter.limits(),
+            ..Default::default()
+        }))
+        .map_err(|e| format!("requesting a device of {name}: {e}"))?;
+        // wgpu panics on an uncaptured validation error: every call below is scoped, so that an
+        // error is returned instead.
+        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("shaders"),
+            source: wgpu::ShaderSource::Wgsl(SHADER.into()),
+        });
+        let shadow_bgl = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("shadow"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            }],
+        });
+        let camera_bgl = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("camera"),
+            entries: &[
+                wgpu::BindGroupLayoutEntry {
+                    binding: 0,
+                    visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Uniform,
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 1,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Storage { read_only: true },
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: 2,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Depth,
+                        view_dimension: wgpu::TextureViewDimension::D2Array,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+            ],
+        });
+        let shadow_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("shadow"),
+            bind_group_layouts: &[Some(&shadow_bgl)],
+            immediate_size: 0,
+        });
+        let camera_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("camera"),
+            bind_group_layouts: &[Some(&camera_bgl)],
+            immediate_size: 0,
+        });
+        let shadow_pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("shadow"),
+            layout: Some(&shadow_layout),
+            vertex: wgpu::VertexState {
+                module: &module,
+                entry_point: Some("vs_shadow"),
+                compilation_options: Default::default(),
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: std::mem::size_of::<Vertex>() as u64,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
+                })],
+            },
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: wgpu::TextureFormat::Depth32Float,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: Default::default(),
+                bias: wgpu::DepthBiasState {
+                    constant: CONSTANT_BIAS,
+                    slope_scale: SLOPE_BIAS,
+                    clamp: 0.0,
+                },
+            }),
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &module,
+                entry_point: Some("fs_shadow"),
+                compilation_options: Default::default(),
+                targets: &[],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        let camera_pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("camera"),
+            layout: Some(&camera_layout),
+            vertex: wgpu::VertexState {
+                module: &module,
+                entry_point: Some("vs_camera"),
+                compilation_options: Default::default(),
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: std::mem::size_of::<Vertex>() as u64,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Uint32],
+                })],
+            },
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: wgpu::TextureFormat::Depth32Float,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &module,
+                entry_point: Some("fs_camera"),
+                compilation_options: Default::default(),
+                targets: &[
+                    Some(wgpu::TextureFormat::Rgba32Float.into()),
+                    Some(wgpu::TextureFormat::R32Uint.into()),
+                    Some(wgpu::TextureFormat::Rgba8Unorm.into()),
+                ],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(format!("creating the pipelines on {name}: {e}"));
+        }
+        Ok(Self {
+            device,
+            queue,
+            name,
+            shadow_pipeline,
+            camera_pipeline,
+            shadow_bgl,
+            camera_bgl,
+        })
+    }
+
+    fn buffer(&self, bytes: &[u8], usage: wgpu::BufferUsages) -> wgpu::Buffer {
+        let b = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: None,
+            size: (bytes.len() as u64).max(16).next_multiple_of(16),
+            usage: usage | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        self.queue.write_buffer(&b, 0, bytes);
+        b
+    }
+
+    fn vertices(&self, f: &FrameInput) -> wgpu::Buffer {
+        let v: Vec<Vertex> = (0..f.positions.len())
+            .map(|i| Vertex {
+                pos: f.positions[i].as_vec3().to_array(),
+                normal: f.normals[i].as_vec3().to_array(),
+                id: f.surface[i],
+            })
+            .collect();
+        self.buffer(bytemuck::cast_slice(&v), wgpu::BufferUsages::VERTEX)
+    }
+
+    /// Renders the maps into a depth array texture.
+    fn shadow_maps(
+        &self,
+        enc: &mut wgpu::CommandEncoder,
+        vb: &wgpu::Buffer,
+        n_vertices: u32,
+        parts: &[GpuPart],
+        res: u32,
+        light: DVec3,
+    ) -> wgpu::Texture {
+        let tex = self.device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("shadow maps"),
+            size: wgpu::Extent3d {
+                width: res,
+                height: res,
+                depth_or_array_layers: parts.len() as u32,
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: wgpu::TextureFormat::Depth32Float,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                | wgpu::TextureUsages::TEXTURE_BINDING
+                | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[],
+        });
+        for (i, p) in parts.iter().enumerate() {
+            let mut u = [0f32; 20];
+            u[..16].copy_from_slice(&mat(p.matrix));
+            u[16..].copy_from_slice(&[
+                light.x as f32,
+                light.y as f32,
+                light.z as f32,
+                crate::scene::FACING as f32,
+            ]);
+            let ub = self.buffer(bytemuck::cast_slice(&u), wgpu::BufferUsages::UNIFORM);
+            let bg = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: None,
+                layout: &self.shadow_bgl,
+                entries: &[wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: ub.as_entire_binding(),
+                }],
+            });
+            let view = tex.create_view(&wgpu::TextureViewDescriptor {
+                dimension: Some(wgpu::TextureViewDimension::D2),
+                base_array_layer: i as u32,
+                array_layer_count: Some(1),
+                ..Default::default()
+            });
+            let mut pass = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("shadow"),
+                color_attachments: &[],
+                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &view,
+                    depth_ops: Some(wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(1.0),
+                        store: wgpu::StoreOp::Store,
+                    }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_pipeline(&self.shadow_pipeline);
+            pass.set_bind_group(0, &bg, &[]);
+            pass.set_vertex_buffer(0, vb.slice(..));
+            pass.draw(0..n_vertices, 0..1);
+        }
+        tex
+    }
+
+    fn target(&self, w: u32, h: u32, format: wgpu::TextureFormat) -> wgpu::Texture {
+        self.device.create_texture(&wgpu::TextureDescriptor {
+            label: None,
+            size: wgpu::Extent3d {
+                width: w,
+                height: h,
+                depth_or_array_layers: 1,
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[],
+        })
+    }
+
+    /// Copies `layers` of a texture (`bpp` bytes per texel) into a buffer, rows padded to 256.
+    #[allow(clippy::too_many_arguments)] // a texture copy's parameters
+    fn copy_out(
+        &self,
+        enc: &mut wgpu::CommandEncoder,
+        tex: &wgpu::Texture,
+        w: u32,
+        h: u32,
+        layers: u32,
+        bpp: u32,
+        aspect: wgpu::TextureAspect,
+    ) -> (wgpu::Buffer, u32) {
+        let row = (w * bpp).next_multiple_of(256);
+        let buf = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: None,
+            size: u64::from(row) * u64::from(h) * u64::from(layers),
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        enc.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture: tex,
+                mip_level: 0,
+                origin: wgpu::Origin3d::ZERO,
+                aspect,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &buf,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(row),
+                    rows_per_image: Some(h),
+                },
+            },
+            wgpu::Extent3d {
+                width: w,
+                height: h,
+                depth_or_array_layers: layers,
+            },
+        );
+        (buf, row)
+    }
+
+    fn read(
+        &self,
+        buf: &wgpu::Buffer,
+        row: u32,
+        w: u32,
+        h: u32,
+        layers: u32,
+        bpp: u32,
+    ) -> Result<Vec<u8>, String> {
+        let slice = buf.slice(..);
+        slice.map_async(wgpu::MapMode::Read, |_| {});
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| format!("waiting for the GPU: {e}"))?;
+        let data = slice
+            .get_mapped_range()
+            .map_err(|e| format!("reading back: {e}"))?;
+        let mut out = Vec::with_capacity((w * h * layers * bpp) as usize);
+        for r in 0..(h * layers) as usize {
+            let start = r * row as usize;
+            out.extend_from_slice(&data[start..start + (w * bpp) as usize]);
+        }
+        drop(data);
+        buf.unmap();
+        Ok(out)
+    }
+
+    /// The shadow maps alone, read back (for the shimmer test): depth per texel, layer by layer,
+    /// rows from the top (t = 1).
+    ///
+    /// # Errors
+    /// A GPU error.
+    pub fn render_maps(&self, f: &FrameInput) -> Result<Vec<f32>, String> {
+        self.scoped(|| self.render_maps_inner(f))
+    }
+
+    /// Runs `f` inside a validation error scope: a wgpu validation error becomes `Err`.
+    fn scoped<T>(&self, f: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let r = f();
+        match pollster::block_on(scope.pop()) {
+            Some(e) => Err(format!("GPU validation error on {}: {e}", self.name)),
+            None => r,
+        }
+    }
+
+    fn render_maps_inner(&self, f: &FrameInput) -> Result<Vec<f32>, String> {
+        let vb = self.vertices(f);
+        let mut enc = self.device.create_command_encoder(&Default::default());
+        let tex = self.shadow_maps(
+            &mut enc,
+            &vb,
+            f.positions.len() as u32,
+            f.parts,
+            f.res,
+            f.light,
+        );
+        let layers = f.parts.len() as u32;
+        let (buf, row) = self.copy_out(
+            &mut enc,
+            &tex,
+            f.res,
+            f.res,
+            layers,
+            4,
+            wgpu::TextureAspect::DepthOnly,
+        );
+        self.queue.submit([enc.finish()]);
+        let bytes = self.read(&buf, row, f.res, f.res, layers, 4)?;
+        Ok(bytemuck::cast_slice(&bytes).to_vec())
+    }
+
+    /// Shadow maps and the camera pass, read back.
+    ///
+    /// # Errors
+    /// A GPU error.
+    pub fn render(&self, f: &FrameInput) -> Result<FrameOutput, String> {
+        if f.parts.is_empty() || f.positions.is_empty() {
+            return Err("nothing to render (no map or no triangle)".into());
+        }
+        self.scoped(|| self.render_inner(f))
+    }
+
+    fn render_inner(&self, f: &FrameInput) -> Result<FrameOutput, String> {
+        let vb = self.vertices(f);
+        let mut enc = self.device.create_command_encoder(&Default::default());
+        let maps = self.shadow_maps(
+            &mut enc,
+            &vb,
+            f.positions.len() as u32,
+            f.parts,
+            f.res,
+            f.light,
+        );
+        let maps_view = maps.create_view(&wgpu::TextureViewDescriptor {
+            dimension: Some(wgpu::TextureViewDimension::D2Array),
+            ..Default::default()
+        });
+        let globals = GlobalsRaw {
+            proj: mat(f.proj),
+            light: [
+                f.light.x as f32,
+                f.light.y as f32,
+                f.light.z as f32,
+                f.mode as f32,
+            ],
+            frustum: f.frustum.map(|x| x as f32),
+            misc: [
+                f.res as f32,
+                f.parts.len() as f32,
+                crate::scene::FACING as f32,
+                0.0,
+            ],
+        };
+        let parts: Vec<PartRaw> = f
+            .parts
+            .iter()
+            .map(|p| PartRaw {
+                m: mat(p.matrix),
+                region: [p.region, p.near as f32, p.far as f32, 0.0],
+            })
+            .collect();
+        let gb = self.buffer(bytemuck::bytes_of(&globals), wgpu::BufferUsages::UNIFORM);
+        let pb = self.buffer(bytemuck::cast_slice(&parts), wgpu::BufferUsages::STORAGE);
+        let bg = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: None,
+            layout: &self.camera_bgl,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: gb.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: pb.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: wgpu::BindingResource::TextureView(&maps_view),
+                },
+            ],
+        });
+        let (w, h) = (f.width, f.height);
+        let t_texel = self.target(w, h, wgpu::TextureFormat::Rgba32Float);
+        let t_id = self.target(w, h, wgpu::TextureFormat::R32Uint);
+        let t_color = self.target(w, h, wgpu::TextureFormat::Rgba8Unorm);
+        let t_depth = self.target(w, h, wgpu::TextureFormat::Depth32Float);
+        let views =
+            [&t_texel, &t_id, &t_color, &t_depth].map(|t| t.create_view(&Default::default()));
+        {
+            let clear = |c: wgpu::Color| wgpu::Operations {
+                load: wgpu::LoadOp::Clear(c),
+                store: wgpu::StoreOp::Store,
+            };
+            let mut pass = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("camera"),
+                color_attachments: &[
+                    Some(wgpu::RenderPassColorAttachment {
+                        view: &views[0],
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: clear(wgpu::Color::TRANSPARENT),
+                    }),
+                    Some(wgpu::RenderPassColorAttachment {
+                        view: &views[1],
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: clear(wgpu::Color::TRANSPARENT),
+                    }),
+                    Some(wgpu::RenderPassColorAttachment {
+                        view: &views[2],
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: clear(wgpu::Color {
+                            r: 0.55,
+                            g: 0.7,
+                            b: 0.9,
+                            a: 1.0,
+                        }),
+                    }),
+                ],
+                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &views[3],
+                    depth_ops: Some(wgpu::Operations {
+                        load: wgpu::LoadOp::Clear(1.0),
+                        store: wgpu::StoreOp::Store,
+                    }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_pipeline(&self.camera_pipeline);
+            pass.set_bind_group(0, &bg, &[]);
+            pass.set_vertex_buffer(0, vb.slice(..));
+            pass.draw(0..f.positions.len() as u32, 0..1);
+        }
+        let all = wgpu::TextureAspect::All;
+        let (b0, r0) = self.copy_out(&mut enc, &t_texel, w, h, 1, 16, all);
+        let (b1, r1) = self.copy_out(&mut enc, &t_id, w, h, 1, 4, all);
+        let (b2, r2) = self.copy_out(&mut enc, &t_color, w, h, 1, 4, all);
+        self.queue.submit([enc.finish()]);
+        let texel = self.read(&b0, r0, w, h, 1, 16)?;
+        let id = self.read(&b1, r1, w, h, 1, 4)?;
+        let color = self.read(&b2, r2, w, h, 1, 4)?;
+        Ok(FrameOutput {
+            texel: bytemuck::cast_slice(&texel).to_vec(),
+            id: bytemuck::cast_slice(&id).to_vec(),
+            color: bytemuck::cast_slice(&color).to_vec(),
+        })
+    }
+}

@@ -1,0 +1,11 @@
+//! render-check: shadow-aliasing's matrices drawn by a real rasterizer (wgpu on Vulkan; Debian's
+//! lavapipe where there is no GPU), the error seen on screen compared with
+//! `measure::surface_footprint`, and every shadow compared with an exact ray cast.
+//! docs/rendered.md describes what is measured and the scene format.
+
+pub mod analysis;
+pub mod gpu;
+pub mod images;
+pub mod run;
+pub mod scene;
+pub mod schemes;

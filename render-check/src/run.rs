@@ -1,0 +1,390 @@
+//! One case (set-up × scheme) end to end, the shimmer test, and summary.json.
+
+use crate::analysis::{analyse, Analysis};
+use crate::gpu::{FrameInput, Gpu, GpuPart};
+use crate::scene::{Mesh, Scene, FACING};
+use crate::schemes::{build, Built, Scheme, Select, View};
+use glam::{DMat4, DVec3};
+use serde::Serialize;
+
+/// One row of summary.json (exactly the fields).
+#[derive(Debug, Clone, Serialize)]
+pub struct CaseSummary {
+    /// Set-up name.
+    pub setup: String,
+    /// Scheme name.
+    pub scheme: String,
+    /// Texels of all the scheme's maps together.
+    pub map_texels: u64,
+    /// Pixels whose Jacobians were compared.
+    pub pixels_compared: usize,
+    /// Median relative difference, rendered vs predicted Jacobian.
+    pub median_rel_diff: f64,
+    /// 99th percentile.
+    pub p99_rel_diff: f64,
+    /// Interior pixels in exact shadow rendered lit.
+    pub interior_misses: usize,
+    /// Interior pixels exactly lit rendered in shadow.
+    pub interior_false_shadows: usize,
+    /// Mismatch fraction in the edge band.
+    pub edge_band_mismatch_fraction: f64,
+    /// Largest rendered error, pixels per texel.
+    pub max_rendered_error: f64,
+    /// Largest predicted error, pixels per texel.
+    pub max_predicted_error: f64,
+    /// Fraction of sampled edge points whose state changed between frames (cascade schemes).
+    pub shimmer_changed_fraction: Option<f64>,
+}
+
+/// summary.json.
+#[derive(Debug, Clone, Serialize)]
+pub struct Summary {
+    /// The adapter.
+    pub device: String,
+    /// Every case.
+    pub cases: Vec<CaseSummary>,
+}
+
+/// Sizes of a run.
+#[derive(Debug, Clone, Copy)]
+pub struct Sizes {
+    /// Screen width.
+    pub width: u32,
+    /// Screen height.
+    pub height: u32,
+    /// Map resolution (per map), overriding the scene's when set.
+    pub res: Option<u32>,
+    /// Frames of the shimmer test.
+    pub frames: usize,
+    /// Sample points of the shimmer test (at most).
+    pub shimmer_points: usize,
+    /// Render with each builder's own depth row (fitted to the view frustum, `ZeroToOne`)
+    /// instead of the near-plane pull-back: casters nearer the light than the frustum are then
+    /// clipped (the check that the correctness test can fail).
+    pub depth_as_built: bool,
+}
+
+/// A case's full result.
+pub struct CaseResult {
+    /// The summary row.
+    pub summary: CaseSummary,
+    /// The analysis (heat-map data).
+    pub analysis: Analysis,
+    /// Shaded colour.
+    pub color: Vec<[u8; 4]>,
+    /// Diagnostics: excluded pixels, interior and edge-band sizes.
+    pub diagnostics: String,
+}
+
+/// The mesh in eye space.
+pub struct EyeMesh {
+    positions: Vec<DVec3>,
+    normals: Vec<DVec3>,
+}
+
+impl EyeMesh {
+    /// Transforms `mesh` by `world_to_eye` (f64).
+    pub fn new(mesh: &Mesh, world_to_eye: DMat4) -> Self {
+        Self {
+            positions: mesh
+                .positions
+                .iter()
+                .map(|&p| world_to_eye.transform_point3(p))
+                .collect(),
+            normals: mesh
+                .surface
+                .iter()
+                .map(|&s| world_to_eye.transform_vector3(mesh.surfaces[s as usize].normal))
+                .collect(),
+        }
+    }
+}
+
+fn gpu_parts(built: &Built) -> Vec<GpuPart> {
+    built
+        .maps
+        .iter()
+        .map(|m| GpuPart {
+            matrix: m.gpu,
+            region: m.region as f32,
+            near: m.near,
+            far: m.far,
+        })
+        .collect()
+}
+
+fn mode(s: Select) -> u32 {
+    match s {
+        Select::Single => 0,
+        Select::Depth => 1,
+        Select::Faces => 2,
+    }
+}
+
+fn input<'a>(
+    view: &View,
+    mesh: &'a Mesh,
+    eye: &'a EyeMesh,
+    built: &Built,
+    parts: &'a [GpuPart],
+    res: u32,
+    sizes: Sizes,
+) -> FrameInput<'a> {
+    FrameInput {
+        positions: &eye.positions,
+        normals: &eye.normals,
+        surface: &mesh.surface,
+        proj: view.proj,
+        light: view.light_eye,
+        mode: mode(built.select),
+        frustum: view.frustum_params(),
+        parts,
+        res,
+        width: sizes.width,
+        height: sizes.height,
+    }
+}
+
+/// Renders and analyses one case.
+///
+/// # Errors
+/// Building, rendering or an empty analysis.
+pub fn run_case(
+    gpu: &Gpu,
+    setup: &str,
+    scene: &Scene,
+    scheme: Scheme,
+    sizes: Sizes,
+) -> Result<CaseResult, String> {
+    let res = sizes.res.unwrap_or(scene.map_resolution);
+    let view = View::new(&scene.camera, scene.light(), sizes.width, sizes.height)?;
+    let mesh = Mesh::build(scene);
+    let mut built = build(scheme, &view, scene, res)?;
+    if sizes.depth_as_built {
+        for m in &mut built.maps {
+            let mut t = m.built.transpose();
+            t.z_axis = 0.5 * (t.z_axis + t.w_axis);
+            m.gpu = t.transpose();
+        }
+    }
+    let eye = EyeMesh::new(&mesh, view.world_to_eye);
+    let parts = gpu_parts(&built);
+    let out = gpu.render(&input(&view, &mesh, &eye, &built, &parts, res, sizes))?;
+    let a = analyse(
+        &out,
+        &view,
+        scene,
+        &mesh,
+        &built,
+        res,
+        sizes.width,
+        sizes.height,
+    )
+    .map_err(|e| format!("{setup}/{}: {e}", scheme.name()))?;
+    let diagnostics = format!(
+        "excluded (discontinuity or no prediction) {}, interior {}, edge band {}",
+        a.excluded_discontinuity, a.interior_pixels, a.edge_band_pixels
+    );
+    Ok(CaseResult {
+        summary: CaseSummary {
+            setup: setup.into(),
+            scheme: scheme.name().into(),
+            map_texels: built.maps.len() as u64 * u64::from(res) * u64::from(res),
+            pixels_compared: a.pixels_compared,
+            median_rel_diff: a.median_rel_diff,
+            p99_rel_diff: a.p99_rel_diff,
+            interior_misses: a.interior_misses,
+            interior_false_shadows: a.interior_false_shadows,
+            edge_band_mismatch_fraction: a.edge_band_mismatch_fraction,
+            max_rendered_error: a.max_rendered_error,
+            max_predicted_error: a.max_predicted_error,
+            shimmer_changed_fraction: None,
+        },
+        color: out.color,
+        analysis: a,
+        diagnostics,
+    })
+}
+
+/// The camera of shimmer frame `i`: translated by `i` sub-texel steps (0.37 of a texel of the
+/// first stable cascade, along a fixed horizontal direction) and turned by `i` × 0.05° about the
+/// vertical.
+fn moved(scene: &Scene, i: usize, step: f64) -> Scene {
+    let mut s = scene.clone();
+    let c = &mut s.camera;
+    let d = DVec3::new(1.0, 0.0, -0.6).normalize() * step * i as f64;
+    let eye = DVec3::from_array(c.eye) + d;
+    let target = DVec3::from_array(c.target) + d;
+    let yaw = glam::DQuat::from_rotation_y((0.05 * i as f64).to_radians());
+    let f = yaw * (target - eye);
+    c.eye = eye.to_array();
+    c.target = (eye + f).to_array();
+    s
+}
+
+/// The shimmer test: the fraction of sampled world points near shadow edges whose lit/shadow
+/// state, looked up in the rendered maps of each frame (read back, the shader's lookup in f64),
+/// changes between consecutive frames. Points are taken from frame 0's visible pixels within 3
+/// pixels of an exact shadow boundary, and counted in a frame pair only when inside the view
+/// frustum in both frames.
+///
+/// # Errors
+/// Building or rendering; no sample point.
+pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result<f64, String> {
+    let res = sizes.res.unwrap_or(scene.map_resolution);
+    let mesh = Mesh::build(scene);
+    let view0 = View::new(&scene.camera, scene.light(), sizes.width, sizes.height)?;
+    // Texel of the first stable cascade: 2 R res/(res − 2) / res.
+    let sp = crate::schemes::splits(&view0.frustum)?;
+    let (a, b) = sp.range(0);
+    let (_, r) = shadow_aliasing::maps::cascades::bounding_sphere(&view0.frustum, a, b)
+        .map_err(|e| e.to_string())?;
+    let texel = 2.0 * r / f64::from(res - 2);
+    let step = 0.37 * texel;
+    // Sample points from frame 0.
+    let built0 = build(scheme, &view0, scene, res)?;
+    let eye0 = EyeMesh::new(&mesh, view0.world_to_eye);
+    let parts0 = gpu_parts(&built0);
+    let out0 = gpu.render(&input(&view0, &mesh, &eye0, &built0, &parts0, res, sizes))?;
+    let a0 = analyse(
+        &out0,
+        &view0,
+        scene,
+        &mesh,
+        &built0,
+        res,
+        sizes.width,
+        sizes.height,
+    )?;
+    drop(a0);
+    let points = edge_points(&out0, &view0, scene, &mesh, sizes)?;
+    let mut prev: Option<Vec<Option<bool>>> = None;
+    let (mut changed, mut counted) = (0usize, 0usize);
+    for i in 0..sizes.frames {
+        let s = moved(scene, i, step);
+        let view = View::new(&s.camera, s.light(), sizes.width, sizes.height)?;
+        let built = build(scheme, &view, &s, res)?;
+        let eye = EyeMesh::new(&mesh, view.world_to_eye);
+        let parts = gpu_parts(&built);
+        let depth = gpu.render_maps(&input(&view, &mesh, &eye, &built, &parts, res, sizes))?;
+        let states: Vec<Option<bool>> = points
+            .iter()
+            .map(|&(p, n)| lookup(&view, &built, &depth, res, p, n))
+            .collect();
+        if let Some(prev) = &prev {
+            for (a, b) in prev.iter().zip(&states) {
+                if let (Some(a), Some(b)) = (a, b) {
+                    counted += 1;
+                    if a != b {
+                        changed += 1;
+                    }
+                }
+            }
+        }
+        prev = Some(states);
+    }
+    if counted == 0 {
+        return Err("shimmer: no sample point stayed in view".into());
+    }
+    Ok(changed as f64 / counted as f64)
+}
+
+/// World points (with normals) of frame 0's visible pixels within 3 pixels of an exact shadow
+/// boundary, at most `sizes.shimmer_points`, evenly thinned.
+fn edge_points(
+    out: &crate::gpu::FrameOutput,
+    view: &View,
+    scene: &Scene,
+    mesh: &Mesh,
+    sizes: Sizes,
+) -> Result<Vec<(DVec3, DVec3)>, String> {
+    let (w, h) = (sizes.width as usize, sizes.height as usize);
+    let inv = view.world_to_eye.inverse();
+    let [_, _, t, ta] = view.frustum_params();
+    let mut state = vec![None; w * h];
+    let mut pts = vec![None; w * h];
+    for y in 0..h {
+        for x in 0..w {
+            let i = y * w + x;
+            if out.id[i] == 0 {
+                continue;
+            }
+            let surf = mesh.surfaces[(out.id[i] - 1) as usize];
+            let ne = view.world_to_eye.transform_vector3(surf.normal);
+            let p0 = view.world_to_eye.transform_point3(surf.point);
+            let xn = 2.0 * (x as f64 + 0.5) / w as f64 - 1.0;
+            let yn = 1.0 - 2.0 * (y as f64 + 0.5) / h as f64;
+            let d = DVec3::new(xn * ta, yn * t, -1.0);
+            let den = ne.dot(d);
+            if den.abs() < 1e-9 {
+                continue;
+            }
+            let pw = inv.transform_point3(d * (ne.dot(p0) / den));
+            let lit = surf.normal.dot(-view.light_world) > FACING
+                && !crate::scene::ray_occluded(scene, pw, surf.normal, view.light_world);
+            state[i] = Some(lit);
+            pts[i] = Some((pw, surf.normal));
+        }
+    }
+    let mut out_pts = Vec::new();
+    for y in 3..h.saturating_sub(3) {
+        for x in 3..w.saturating_sub(3) {
+            let i = y * w + x;
+            let Some(s) = state[i] else { continue };
+            let edge = (0..7).any(|dy| {
+                (0..7).any(|dx| state[(y + dy - 3) * w + (x + dx - 3)].is_some_and(|o| o != s))
+            });
+            if edge {
+                if let Some(p) = pts[i] {
+                    out_pts.push(p);
+                }
+            }
+        }
+    }
+    if out_pts.is_empty() {
+        return Err("shimmer: no shadow edge in view".into());
+    }
+    let stride = out_pts.len().div_ceil(sizes.shimmer_points.max(1));
+    Ok(out_pts.into_iter().step_by(stride).collect())
+}
+
+/// The shader's lookup of a world point in the read-back maps (f64), or `None` outside the view
+/// frustum or every map.
+fn lookup(
+    view: &View,
+    built: &Built,
+    depth: &[f32],
+    res: u32,
+    pw: DVec3,
+    nw: DVec3,
+) -> Option<bool> {
+    let p = view.world_to_eye.transform_point3(pw);
+    if !view.frustum.contains(p, 0.0) {
+        return None;
+    }
+    let z = -p.z;
+    let part = match built.select {
+        Select::Single => 0,
+        Select::Depth => built
+            .maps
+            .iter()
+            .position(|m| z < m.far)
+            .unwrap_or(built.maps.len() - 1),
+        Select::Faces => return None,
+    };
+    let m = built.maps[part].gpu;
+    let h = m * p.extend(1.0);
+    if h.w <= 0.0 {
+        return None;
+    }
+    let (s, t) = ((h.x / h.w + 1.0) * 0.5, (h.y / h.w + 1.0) * 0.5);
+    if !(0.0..1.0).contains(&s) || !(0.0..1.0).contains(&t) {
+        return None;
+    }
+    let r = f64::from(res);
+    let (ix, iy) = ((s * r).floor() as usize, ((1.0 - t) * r).floor() as usize);
+    let stored = f64::from(depth[part * (res * res) as usize + iy * res as usize + ix]);
+    let d = (h.z / h.w).clamp(0.0, 1.0);
+    let facing = nw.dot(-view.light_world) > FACING;
+    Some(facing && d <= stored)
+}

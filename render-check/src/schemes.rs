@@ -1,0 +1,405 @@
+//! The set-ups (camera and light) and the schemes, built with the crate's eye-space builders.
+//!
+//! The scene is in world space; every builder takes the camera's eye space (right-handed, −Z
+//! forward, Y up), so the light is carried into eye space with the world → eye matrix `V` and
+//! each map's matrix `S` (eye → light clip) is used as is with eye-space vertices (the GPU gets
+//! eye-space positions, transformed in `f64`). Until the scene-aware world-space frame API lands
+//! (issue 9), this is what a renderer would write.
+
+use crate::scene::{Camera, Scene};
+use glam::{DMat4, DVec3, DVec4};
+use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
+use shadow_aliasing::maps::cascades::{cascades, stable_cascades};
+use shadow_aliasing::maps::faces::Face;
+use shadow_aliasing::maps::tsm::{tsm, TsmOptions, TsmSearch};
+use shadow_aliasing::maps::{uniform, warp, WarpRule};
+use shadow_aliasing::scheme::{scheme, Partition, Region};
+use shadow_aliasing::ViewFrustum;
+
+/// The schemes compared.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scheme {
+    /// The tight orthographic map.
+    Uniform,
+    /// LiSPSM with n′ from 1/sin γ.
+    Lispsm,
+    /// The crate's minimax n′.
+    Minimax,
+    /// Trapezoidal shadow maps (80 % rule).
+    Tsm,
+    /// 4 z-partitions, LiSPSM each (practical split, λ = 0.75).
+    Cascades,
+    /// 4 stable cascades (bounding spheres, snapped to texels).
+    StableCascades,
+    /// Face partitions (LiSPSM per face, k = 1).
+    Faces,
+}
+
+impl Scheme {
+    /// All schemes, in the order of the gallery.
+    pub const ALL: [Scheme; 7] = [
+        Scheme::Uniform,
+        Scheme::Lispsm,
+        Scheme::Minimax,
+        Scheme::Tsm,
+        Scheme::Cascades,
+        Scheme::StableCascades,
+        Scheme::Faces,
+    ];
+    /// The name in summary.json.
+    pub fn name(self) -> &'static str {
+        match self {
+            Scheme::Uniform => "uniform",
+            Scheme::Lispsm => "lispsm",
+            Scheme::Minimax => "minimax",
+            Scheme::Tsm => "tsm",
+            Scheme::Cascades => "cascades4_lispsm",
+            Scheme::StableCascades => "stable_cascades4",
+            Scheme::Faces => "face_partitions",
+        }
+    }
+}
+
+/// How the fragment picks its map.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Select {
+    /// One map.
+    Single,
+    /// By eye depth, in the parts' `[near, far)`.
+    Depth,
+    /// By the frustum face the point's light ray passes (Lloyd 2005 §4; see the shader).
+    Faces,
+}
+
+/// One map: its eye → light clip matrix (OpenGL depth, as built) and the GPU's (depth [0, 1],
+/// pulled back over the casters).
+#[derive(Debug, Clone, Copy)]
+pub struct Map {
+    /// As built (eye → light clip, OpenGL depth): what the measurement takes.
+    pub built: DMat4,
+    /// What the GPU renders with.
+    pub gpu: DMat4,
+    /// −1 for a depth range, else the face (bottom, right, top, left, near, far).
+    pub region: i32,
+    /// Depth range covered.
+    pub near: f64,
+    /// Depth range covered.
+    pub far: f64,
+}
+
+/// A scheme built for one frame.
+#[derive(Debug, Clone)]
+pub struct Built {
+    /// The maps.
+    pub maps: Vec<Map>,
+    /// How fragments choose.
+    pub select: Select,
+}
+
+/// The camera's frustum and matrices.
+#[derive(Debug, Clone, Copy)]
+pub struct View {
+    /// World → eye.
+    pub world_to_eye: DMat4,
+    /// Eye → clip (wgpu: depth [0, 1], NDC y up).
+    pub proj: DMat4,
+    /// The validated frustum.
+    pub frustum: ViewFrustum,
+    /// Unit light direction (travel), eye space.
+    pub light_eye: DVec3,
+    /// Unit light direction, world space.
+    pub light_world: DVec3,
+}
+
+impl View {
+    /// The view of `camera` with a `width × height` image.
+    ///
+    /// # Errors
+    /// The crate's error for an invalid frustum.
+    pub fn new(
+        camera: &Camera,
+        light_world: DVec3,
+        width: u32,
+        height: u32,
+    ) -> Result<Self, String> {
+        let aspect = f64::from(width) / f64::from(height);
+        let half = 0.5 * camera.fov_y_deg.to_radians();
+        let frustum = ViewFrustum::with_aspect(camera.near, camera.far, half, aspect)
+            .map_err(|e| e.to_string())?;
+        let world_to_eye = glam::dcamera::rh::view::look_at_mat4(
+            DVec3::from_array(camera.eye),
+            DVec3::from_array(camera.target),
+            DVec3::from_array(camera.up),
+        );
+        let proj = glam::dcamera::rh::proj::directx::perspective(
+            2.0 * half,
+            aspect,
+            camera.near,
+            camera.far,
+        );
+        let light_world = light_world.normalize();
+        Ok(Self {
+            world_to_eye,
+            proj,
+            frustum,
+            light_eye: world_to_eye.transform_vector3(light_world).normalize(),
+            light_world,
+        })
+    }
+
+    /// near, far, tan θ, tan θ · aspect.
+    pub fn frustum_params(&self) -> [f64; 4] {
+        let t = self.frustum.tan_half_fov();
+        [
+            self.frustum.near(),
+            self.frustum.far(),
+            t,
+            t * self.frustum.aspect(),
+        ]
+    }
+}
+
+/// The near-plane pull-back: the map's depth row replaced by `k (L·p − λ₀)` (eye space), so that
+/// clip depth `z/w = k (λ − λ₀)/w` with `λ = L·p` the distance along the light. Along a light
+/// ray `w` is constant for every map the crate builds (s, t and w do not vary along the light),
+/// so depth stays monotonic along each ray and the shadow test is unchanged in kind; x, y, w,
+/// hence every texel, are exactly the builder's. `λ₀` is the smallest λ of every caster corner
+/// (the tower behind the camera included) and of the receivers' region, so no caster is cut at
+/// the near end; `k` makes the largest `(λ − λ₀)/w` over the receivers' region 1/1.02 (receivers
+/// are sampled on a 5³ grid of the map's sub-frustum, corners included, where `w > 0`). Casters
+/// beyond the far end are clipped: they lie behind every receiver. This is the depth-only
+/// equivalent of `with_casters(…, CasterDepth::Enclose)` (which refits x and y too) and of
+/// Lloyd 2006 §6.4's clamp to the near plane.
+pub fn pull_back(built: DMat4, light_eye: DVec3, casters: &[DVec3], region: &ViewFrustum) -> DMat4 {
+    let lam = |p: DVec3| light_eye.dot(p);
+    let mut samples = Vec::new();
+    let t = region.tan_half_fov();
+    let ta = t * region.aspect();
+    for i in 0..5 {
+        let z = region.near() + (region.far() - region.near()) * f64::from(i) / 4.0;
+        for j in 0..5 {
+            for k in 0..5 {
+                let u = -1.0 + 0.5 * f64::from(j);
+                let v = -1.0 + 0.5 * f64::from(k);
+                samples.push(DVec3::new(u * z * ta, v * z * t, -z));
+            }
+        }
+    }
+    let lam0 = casters
+        .iter()
+        .chain(&samples)
+        .map(|&p| lam(p))
+        .fold(f64::INFINITY, f64::min);
+    let lam0 = lam0 - 1e-3 * (1.0 + lam0.abs());
+    let mut worst = 0.0f64;
+    for &p in &samples {
+        let h = built * p.extend(1.0);
+        if h.w > 0.0 {
+            worst = worst.max((lam(p) - lam0) / h.w);
+        }
+    }
+    let k = 1.0 / (1.02 * worst);
+    let row = DVec4::new(k * light_eye.x, k * light_eye.y, k * light_eye.z, -k * lam0);
+    let mut m = built;
+    m.x_axis.z = row.x;
+    m.y_axis.z = row.y;
+    m.z_axis.z = row.z;
+    m.w_axis.z = row.w;
+    m
+}
+
+fn face_id(f: Face) -> i32 {
+    match f {
+        Face::Bottom => 0,
+        Face::Right => 1,
+        Face::Top => 2,
+        Face::Left => 3,
+        Face::Near => 4,
+        Face::Far => 5,
+    }
+}
+
+/// The split planes of the cascades (practical, λ = 0.75, 4 partitions).
+pub fn splits(view: &ViewFrustum) -> Result<shadow_aliasing::analytic::partition::Splits, String> {
+    z_splits(
+        view.near(),
+        view.far(),
+        4,
+        SplitScheme::Practical { lambda: 0.75 },
+    )
+    .map_err(|e| e.to_string())
+}
+
+/// Builds `scheme` for `view` (eye-space casters: every box corner), `res` texels per map side.
+///
+/// # Errors
+/// The crate's error, as text.
+pub fn build(scheme_: Scheme, view: &View, scene: &Scene, res: u32) -> Result<Built, String> {
+    let e = |e: shadow_aliasing::Error| format!("{}: {e}", scheme_.name());
+    let fr = &view.frustum;
+    let l = view.light_eye;
+    let casters: Vec<DVec3> = scene
+        .boxes
+        .iter()
+        .flat_map(|b| {
+            (0..8).map(move |i| {
+                DVec3::new(
+                    if i & 1 == 0 { b.min[0] } else { b.max[0] },
+                    if i & 2 == 0 { b.min[1] } else { b.max[1] },
+                    if i & 4 == 0 { b.min[2] } else { b.max[2] },
+                )
+            })
+        })
+        .map(|p| view.world_to_eye.transform_point3(p))
+        .collect();
+    let single = |m: DMat4| -> Result<Built, String> {
+        Ok(Built {
+            maps: vec![Map {
+                built: m,
+                gpu: pull_back(m, l, &casters, fr),
+                region: -1,
+                near: fr.near(),
+                far: fr.far(),
+            }],
+            select: Select::Single,
+        })
+    };
+    match scheme_ {
+        Scheme::Uniform => single(uniform(fr, l).map_err(e)?.matrix()),
+        Scheme::Lispsm => single(warp(fr, l, WarpRule::Lispsm).map_err(e)?.matrix()),
+        Scheme::Minimax => single(warp(fr, l, WarpRule::Minimax).map_err(e)?.matrix()),
+        Scheme::Tsm => {
+            let opts = TsmOptions {
+                focus: 0.25 * (fr.far() - fr.near()),
+                search: TsmSearch::EightyPercent,
+            };
+            single(tsm(fr, l, opts).map_err(e)?.shadow.matrix())
+        }
+        Scheme::Cascades => {
+            let sp = splits(fr)?;
+            let c = cascades(fr, l, &sp, WarpRule::Lispsm, 0.0).map_err(e)?;
+            let maps = c
+                .iter()
+                .map(|c| {
+                    let sub = fr.with_depth_range(c.split_near, c.split_far).map_err(e)?;
+                    Ok(Map {
+                        built: c.shadow.matrix(),
+                        gpu: pull_back(c.shadow.matrix(), l, &casters, &sub),
+                        region: -1,
+                        near: c.split_near,
+                        far: c.split_far,
+                    })
+                })
+                .collect::<Result<Vec<_>, String>>()?;
+            Ok(Built {
+                maps,
+                select: Select::Depth,
+            })
+        }
+        Scheme::StableCascades => {
+            let sp = splits(fr)?;
+            let c =
+                stable_cascades(fr, view.world_to_eye, view.light_world, &sp, res).map_err(e)?;
+            let maps = c
+                .iter()
+                .enumerate()
+                .map(|(i, c)| {
+                    let (a, b) = sp.range(i);
+                    let sub = fr.with_depth_range(a, b).map_err(e)?;
+                    Ok(Map {
+                        built: c.shadow.matrix(),
+                        gpu: pull_back(c.shadow.matrix(), l, &casters, &sub),
+                        region: -1,
+                        near: a,
+                        far: b,
+                    })
+                })
+                .collect::<Result<Vec<_>, String>>()?;
+            Ok(Built {
+                maps,
+                select: Select::Depth,
+            })
+        }
+        Scheme::Faces => {
+            let r = scheme(fr, l, WarpRule::Lispsm, Partition::Faces, 1).map_err(e)?;
+            let maps = r
+                .partitions()
+                .iter()
+                .map(|p| Map {
+                    built: p.matrix,
+                    gpu: pull_back(p.matrix, l, &casters, fr),
+                    region: match p.region {
+                        Region::Frustum => -1,
+                        Region::Face(f) => face_id(f),
+                    },
+                    near: p.near,
+                    far: p.far,
+                })
+                .collect();
+            Ok(Built {
+                maps,
+                select: Select::Faces,
+            })
+        }
+    }
+}
+
+/// A named camera and light.
+#[derive(Debug, Clone)]
+pub struct Setup {
+    /// Name in summary.json.
+    pub name: String,
+    /// The scene with this camera and light.
+    pub scene: Scene,
+}
+
+fn rotate_toward(v: DVec3, u: DVec3, deg: f64) -> DVec3 {
+    let a = deg.to_radians();
+    (v * a.cos() + u * a.sin()).normalize()
+}
+
+/// The six set-ups of the built-in scene. With `v` the view direction and `u` the camera's up
+/// (both unit, orthogonal), γ the angle between view and light:
+///
+/// - `overhead`: light straight down;
+/// - `tilted_45`: 45° elevation, travelling forward and to the right;
+/// - `behind_5`: γ = 5°, the light from behind the viewer (`L = cos5° v − sin5° u`);
+/// - `front_5`: γ = 175°, the light from in front, towards the viewer (the camera pitched up 3°
+///   so that this light still comes from above: 8° elevation);
+/// - `grazing_10`: 10° elevation, across the view;
+/// - `parallel_1`: γ = 1°, the light from behind, 1° from parallel to the view direction.
+pub fn setups() -> Vec<Setup> {
+    let base = Scene::builtin();
+    let cam = base.camera;
+    let dir = |c: &Camera| (DVec3::from_array(c.target) - DVec3::from_array(c.eye)).normalize();
+    let up_of = |c: &Camera| {
+        let f = dir(c);
+        let r = f.cross(DVec3::from_array(c.up)).normalize();
+        r.cross(f)
+    };
+    let mut out = Vec::new();
+    let mut push = |name: &str, camera: Camera, l: DVec3| {
+        let mut s = base.clone();
+        s.camera = camera;
+        s.light_dir = l.to_array();
+        out.push(Setup {
+            name: name.into(),
+            scene: s,
+        });
+    };
+    let (v, u) = (dir(&cam), up_of(&cam));
+    let elev = |deg: f64, h: DVec3| {
+        let a = deg.to_radians();
+        (DVec3::NEG_Y * a.sin() + h.normalize() * a.cos()).normalize()
+    };
+    push("overhead", cam, DVec3::NEG_Y);
+    push("tilted_45", cam, elev(45.0, DVec3::new(0.5, 0.0, -1.0)));
+    push("behind_5", cam, rotate_toward(v, -u, 5.0));
+    let mut up_cam = cam;
+    up_cam.target = [0.0, 6.0 + 40.0 * 3f64.to_radians().tan(), -40.0];
+    let (v2, u2) = (dir(&up_cam), up_of(&up_cam));
+    push("front_5", up_cam, rotate_toward(-v2, -u2, 5.0));
+    push("grazing_10", cam, elev(10.0, DVec3::new(1.0, 0.0, -0.3)));
+    push("parallel_1", cam, rotate_toward(v, -u, 1.0));
+    out
+}
