@@ -67,7 +67,7 @@ use crate::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
 use crate::error::{fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::{LightDir, NPrime, ViewFrustum};
 use crate::geom::polytope::{extents, ConvexBody};
-use crate::maps::cascades::bounding_sphere;
+use crate::maps::cascades::{bounding_sphere, splits_between};
 use crate::maps::lightspace::{light_space_unit, LightSpace};
 use crate::maps::matrix::zero_to_one;
 use crate::maps::tsm::{tsm_on_points, validate as validate_tsm};
@@ -900,30 +900,7 @@ fn cascade_slices(
             crate_overlap(&s, overlap, out)
         }
         CascadeSplits::Fractions { fractions, overlap } => {
-            if fractions.len() >= MAX_PARTITIONS {
-                return Err(Error::invalid(
-                    "fractions",
-                    format!("must hold at most {} values", MAX_PARTITIONS - 1),
-                ));
-            }
-            let mut planes = [0.0; MAX_PARTITIONS + 1];
-            planes[0] = zn;
-            let mut prev = 0.0;
-            for (i, &phi) in fractions.iter().enumerate() {
-                if !(phi.is_finite() && phi > prev && phi < 1.0) {
-                    return Err(Error::invalid(
-                        "fractions",
-                        format!(
-                            "must be finite, strictly increasing and inside (0, 1) (got {} at index {i})",
-                            fmt_num(phi)
-                        ),
-                    ));
-                }
-                prev = phi;
-                planes[i + 1] = zn + phi * (zf - zn);
-            }
-            planes[fractions.len() + 1] = zf;
-            let s = Splits::from_planes(&planes[..fractions.len() + 2])?;
+            let s = splits_between(zn, zf, fractions)?;
             crate_overlap(&s, overlap, out)
         }
         CascadeSplits::Bevy {
@@ -1197,11 +1174,7 @@ impl Ctx<'_, '_> {
             return Ok(Built::None(Focus::Empty));
         }
         let pts = &body.v[..body.n];
-        let (mut n_b, mut f_b) = (f64::INFINITY, f64::NEG_INFINITY);
-        for p in pts {
-            n_b = n_b.min(-p.z);
-            f_b = f_b.max(-p.z);
-        }
+        let (n_b, f_b) = depth_extent(pts);
         let cam = self.view;
         let sub_full = cam.with_depth_range(s.cover.0, s.cover.1)?;
         let l = self.l;
@@ -1280,11 +1253,7 @@ impl Ctx<'_, '_> {
             return Ok(Built::None(Focus::Empty));
         }
         let pts = &body.v[..body.n];
-        let (mut n_b, mut f_b) = (f64::INFINITY, f64::NEG_INFINITY);
-        for p in pts {
-            n_b = n_b.min(-p.z);
-            f_b = f_b.max(-p.z);
-        }
+        let (n_b, f_b) = depth_extent(pts);
         let l = self.l;
         let ls = light_space_unit(LightDir::from_unit_unchecked(l), DVec3::NEG_Z);
         let fl = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, l, ls)
@@ -1399,8 +1368,8 @@ impl Ctx<'_, '_> {
             matrix,
             LightDir::from_unit_unchecked(self.l),
             NPrime::UNWARPED,
-            -pts.iter().map(|p| p.z).fold(f64::NEG_INFINITY, f64::max),
-            -pts.iter().map(|p| p.z).fold(f64::INFINITY, f64::min),
+            depth_extent(pts).0,
+            depth_extent(pts).1,
         );
         self.finish(shadow, pts, s, body.focus).map(Built::Map)
     }
@@ -1504,6 +1473,16 @@ impl Prism {
             .iter()
             .all(|pl| pl.truncate().dot(p) + pl.w <= tol * pl.truncate().length())
     }
+}
+
+/// The nearest and farthest eye depth −z of a body's vertices.
+fn depth_extent(pts: &[DVec3]) -> (f64, f64) {
+    let (mut near, mut far) = (f64::INFINITY, f64::NEG_INFINITY);
+    for p in pts {
+        near = near.min(-p.z);
+        far = far.max(-p.z);
+    }
+    (near, far)
 }
 
 #[cfg(test)]

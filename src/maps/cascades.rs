@@ -123,6 +123,12 @@ impl Cascades {
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
 pub fn splits_from_fractions(view: &ViewFrustum, fractions: &[f64]) -> Result<Splits> {
+    splits_between(view.near(), view.far(), fractions)
+}
+
+/// [`splits_from_fractions`] between any depths `near < far` (a frame's visible depth range):
+/// planes `near + φ_i (far − near)`.
+pub(crate) fn splits_between(near: f64, far: f64, fractions: &[f64]) -> Result<Splits> {
     if fractions.len() >= MAX_PARTITIONS {
         return Err(Error::invalid(
             "fractions",
@@ -133,7 +139,7 @@ pub fn splits_from_fractions(view: &ViewFrustum, fractions: &[f64]) -> Result<Sp
             ),
         ));
     }
-    let (n, f) = (view.near(), view.far());
+    let (n, f) = (near, far);
     let mut planes = [0.0; MAX_PARTITIONS + 1];
     planes[0] = n;
     let mut prev = 0.0;
