@@ -1004,6 +1004,28 @@ struct Body {
 }
 
 impl Ctx<'_, '_> {
+    /// B's vertices `pts` in the light space `ls`; `None` when B is edge-on to the light (no
+    /// extent across the map or along the warp axis, relative to the frustum's size).
+    fn in_light(
+        &self,
+        pts: &[DVec3],
+        ls: LightSpace,
+    ) -> Result<Option<FrustumInLight<MAX_BODY_VERTICES>>> {
+        let fl = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, self.l, ls)
+            .ok_or_else(|| Error::Degenerate("the focus body has no vertices".into()))?;
+        let (mut xl, mut xh) = (f64::INFINITY, f64::NEG_INFINITY);
+        for q in &fl.q {
+            xl = xl.min(q.x);
+            xh = xh.max(q.x);
+        }
+        let small = 1e-9 * self.scale();
+        Ok(if xh - xl <= small || fl.delta <= small {
+            None
+        } else {
+            Some(fl)
+        })
+    }
+
     fn scale(&self) -> f64 {
         let v = self.view;
         v.far() * (1.0 + v.tan_half_fov() * (1.0 + v.aspect()))
@@ -1194,18 +1216,9 @@ impl Ctx<'_, '_> {
             r => r,
         };
         let ls = light_space_unit(LightDir::from_unit_unchecked(l), rule_axis(l, rule));
-        let fl = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, l, ls)
-            .ok_or_else(|| Error::Degenerate("the focus body has no vertices".into()))?;
-        // Extent across and along the warp axis as the light sees B.
-        let (mut xl, mut xh) = (f64::INFINITY, f64::NEG_INFINITY);
-        for q in &fl.q {
-            xl = xl.min(q.x);
-            xh = xh.max(q.x);
-        }
-        let small = 1e-9 * self.scale();
-        if xh - xl <= small || fl.delta <= small {
+        let Some(fl) = self.in_light(pts, ls)? else {
             return Ok(Built::None(Focus::EdgeOn));
-        }
+        };
         let mut focus = body.focus;
         let zero_depth = f_b - n_b <= 1e-9 * f_b;
         if zero_depth {
@@ -1256,17 +1269,9 @@ impl Ctx<'_, '_> {
         let (n_b, f_b) = depth_extent(pts);
         let l = self.l;
         let ls = light_space_unit(LightDir::from_unit_unchecked(l), DVec3::NEG_Z);
-        let fl = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, l, ls)
-            .ok_or_else(|| Error::Degenerate("the focus body has no vertices".into()))?;
-        let (mut xl, mut xh) = (f64::INFINITY, f64::NEG_INFINITY);
-        for q in &fl.q {
-            xl = xl.min(q.x);
-            xh = xh.max(q.x);
-        }
-        let small = 1e-9 * self.scale();
-        if xh - xl <= small || fl.delta <= small {
+        let Some(fl) = self.in_light(pts, ls)? else {
             return Ok(Built::None(Focus::EdgeOn));
-        }
+        };
         let focus = opts.focus * (f_b - n_b) / (s.cover.1 - s.cover.0);
         let focus_depth = n_b + focus;
         let region = self.body(
