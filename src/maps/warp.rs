@@ -254,7 +254,7 @@ impl<const N: usize> FrustumInLight<N> {
             depth,
             z0,
             delta: z1 - z0,
-            sin_gamma: (l.x * l.x + l.y * l.y).sqrt().min(1.0),
+            sin_gamma: sin_gamma(V3::from(l)),
         })
     }
 }
