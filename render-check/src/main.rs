@@ -30,7 +30,7 @@ fn real_main() -> Result<(), String> {
         res: None,
         frames: 64,
         shimmer_points: 4000,
-        depth_as_built: false,
+        without_casters: false,
     };
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {

@@ -58,10 +58,10 @@ pub struct Sizes {
     pub frames: usize,
     /// Sample points of the shimmer test (at most).
     pub shimmer_points: usize,
-    /// Render with each builder's own depth row (fitted to the view frustum, `ZeroToOne`)
-    /// instead of the near-plane pull-back: casters nearer the light than the frustum are then
-    /// clipped (the check that the correctness test can fail).
-    pub depth_as_built: bool,
+    /// Leave the casters out of the maps' depth range (the frame API without `.casters`, the
+    /// face partitions without the pull-back): casters nearer the light than the focus body are
+    /// then clipped (the check that the correctness test can fail).
+    pub without_casters: bool,
 }
 
 /// A case's full result.
@@ -159,14 +159,7 @@ pub fn run_case(
     let res = sizes.res.unwrap_or(scene.map_resolution);
     let view = View::new(&scene.camera, scene.light(), sizes.width, sizes.height)?;
     let mesh = Mesh::build(scene);
-    let mut built = build(scheme, &view, scene, res)?;
-    if sizes.depth_as_built {
-        for m in &mut built.maps {
-            let mut t = m.built.transpose();
-            t.z_axis = 0.5 * (t.z_axis + t.w_axis);
-            m.gpu = t.transpose();
-        }
-    }
+    let built = build(scheme, &view, scene, res, !sizes.without_casters)?;
     let eye = EyeMesh::new(&mesh, view.world_to_eye);
     let parts = gpu_parts(&built);
     let out = gpu.render(&input(&view, &mesh, &eye, &built, &parts, res, sizes))?;
@@ -242,7 +235,7 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
     let texel = 2.0 * r / f64::from(res - 2);
     let step = 0.37 * texel;
     // Sample points from frame 0.
-    let built0 = build(scheme, &view0, scene, res)?;
+    let built0 = build(scheme, &view0, scene, res, !sizes.without_casters)?;
     let eye0 = EyeMesh::new(&mesh, view0.world_to_eye);
     let parts0 = gpu_parts(&built0);
     let out0 = gpu.render(&input(&view0, &mesh, &eye0, &built0, &parts0, res, sizes))?;
@@ -263,7 +256,7 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
     for i in 0..sizes.frames {
         let s = moved(scene, i, step);
         let view = View::new(&s.camera, s.light(), sizes.width, sizes.height)?;
-        let built = build(scheme, &view, &s, res)?;
+        let built = build(scheme, &view, &s, res, !sizes.without_casters)?;
         let eye = EyeMesh::new(&mesh, view.world_to_eye);
         let parts = gpu_parts(&built);
         let depth = gpu.render_maps(&input(&view, &mesh, &eye, &built, &parts, res, sizes))?;

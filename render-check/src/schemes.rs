@@ -1,18 +1,20 @@
-//! The set-ups (camera and light) and the schemes, built with the crate's eye-space builders.
+//! The set-ups (camera and light) and the schemes, built as a renderer builds them.
 //!
-//! The scene is in world space; every builder takes the camera's eye space (right-handed, −Z
-//! forward, Y up), so the light is carried into eye space with the world → eye matrix `V` and
-//! each map's matrix `S` (eye → light clip) is used as is with eye-space vertices (the GPU gets
-//! eye-space positions, transformed in `f64`). Until the scene-aware world-space frame API lands
-//! (issue 9), this is what a renderer would write.
+//! The scene is in world space. Every scheme but the face partitions is built by the crate's
+//! world-space frame API ([`shadow_aliasing::frame`]) from the camera's world → eye matrix `V`,
+//! the light's world direction and the scene's receiver and caster boxes. Each map's matrix `S`
+//! (eye → light clip; the frame's world → light clip is `S V`) is used with eye-space vertices
+//! (the GPU gets eye-space positions, transformed in `f64`). The face partitions, which the
+//! frame API does not build yet, use the eye-space builder [`shadow_aliasing::scheme::scheme`].
 
 use crate::scene::{Camera, Scene};
 use glam::{DMat4, DVec3, DVec4};
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
-use shadow_aliasing::maps::cascades::{cascades, stable_cascades};
+use shadow_aliasing::frame::{
+    frame, Aabb, Bound, Camera as FrameCamera, CascadeSplits, FrameInput, FrameScheme,
+};
 use shadow_aliasing::maps::faces::Face;
-use shadow_aliasing::maps::tsm::{tsm, TsmOptions, TsmSearch};
-use shadow_aliasing::maps::{uniform, warp, WarpRule};
+use shadow_aliasing::maps::{ClipDepth, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::scheme::{scheme, Partition, Region};
 use shadow_aliasing::ViewFrustum;
 
@@ -230,15 +232,117 @@ pub fn splits(view: &ViewFrustum) -> Result<shadow_aliasing::analytic::partition
     .map_err(|e| e.to_string())
 }
 
-/// Builds `scheme` for `view` (eye-space casters: every box corner), `res` texels per map side.
+/// The scene's bounds for the frame API: receivers are the drawn ground square (zero thickness)
+/// and every box, merged by the frame into one bounding box; casters are the boxes (the tower
+/// outside the view included).
+fn bounds(scene: &Scene) -> Result<(Vec<Aabb>, Vec<Aabb>), String> {
+    let aabb = |min: DVec3, max: DVec3| Aabb::new(min, max).map_err(|e| e.to_string());
+    let casters = scene
+        .boxes
+        .iter()
+        .map(|b| aabb(DVec3::from_array(b.min), DVec3::from_array(b.max)))
+        .collect::<Result<Vec<_>, String>>()?;
+    let c = DVec3::from_array(scene.camera.eye);
+    let e = scene.ground_half_extent;
+    let ground = aabb(
+        DVec3::new(c.x - e, scene.ground_y, c.z - e),
+        DVec3::new(c.x + e, scene.ground_y, c.z + e),
+    )?;
+    let mut receivers = vec![ground];
+    receivers.extend_from_slice(&casters);
+    Ok((receivers, casters))
+}
+
+/// The frame API's scheme for `scheme_` (every scheme but the face partitions).
+fn frame_scheme(scheme_: Scheme, view: &ViewFrustum) -> Option<FrameScheme<'static>> {
+    let practical = CascadeSplits::Scheme {
+        scheme: SplitScheme::Practical { lambda: 0.75 },
+        k: 4,
+        overlap: 0.0,
+    };
+    Some(match scheme_ {
+        Scheme::Uniform => FrameScheme::Single(WarpRule::Uniform),
+        Scheme::Lispsm => FrameScheme::Single(WarpRule::Lispsm),
+        Scheme::Minimax => FrameScheme::Single(WarpRule::Minimax),
+        Scheme::Tsm => FrameScheme::Tsm(TsmOptions {
+            focus: 0.25 * (view.far() - view.near()),
+            search: TsmSearch::EightyPercent,
+        }),
+        Scheme::Cascades => FrameScheme::Cascades {
+            splits: practical,
+            rule: WarpRule::Lispsm,
+        },
+        Scheme::StableCascades => FrameScheme::Stable(practical),
+        Scheme::Faces => return None,
+    })
+}
+
+/// Builds `scheme` for `view`, `res` texels per map side; with `casters` false the casters are
+/// left out of the depth range (see [`crate::run::Sizes::without_casters`]).
+///
+/// Every scheme but the face partitions goes through the crate's world-space frame API
+/// ([`shadow_aliasing::frame::frame`]): the map is focused on the receivers in view, its depth
+/// range reaches every caster that can shadow them, and the GPU renders with the frame's own
+/// matrix in depth \[0, 1\] (no pull-back). The face partitions, which the frame API does not
+/// build yet, use the eye-space builder with the casters pulled in by [`pull_back`].
 ///
 /// # Errors
-/// The crate's error, as text.
-pub fn build(scheme_: Scheme, view: &View, scene: &Scene, res: u32) -> Result<Built, String> {
+/// The crate's error, as text; a frame with no map (the scene out of view) is an error here.
+pub fn build(
+    scheme_: Scheme,
+    view: &View,
+    scene: &Scene,
+    res: u32,
+    casters: bool,
+) -> Result<Built, String> {
     let e = |e: shadow_aliasing::Error| format!("{}: {e}", scheme_.name());
     let fr = &view.frustum;
+    if let Some(fs) = frame_scheme(scheme_, fr) {
+        let (receivers, boxes) = bounds(scene)?;
+        let camera = FrameCamera::new(
+            view.world_to_eye,
+            fr.near(),
+            fr.far(),
+            fr.half_fov(),
+            fr.aspect(),
+        )
+        .map_err(e)?;
+        let input = FrameInput::new(camera, view.light_world, res, 1)
+            .receivers(Bound::Boxes(&receivers))
+            .casters(if casters {
+                Bound::Boxes(&boxes)
+            } else {
+                Bound::Unbounded
+            })
+            .scheme(fs);
+        let f = frame(&input).map_err(e)?;
+        if f.is_empty() {
+            return Err(format!(
+                "{}: the frame built no map ({:?})",
+                scheme_.name(),
+                f.focus()
+            ));
+        }
+        let maps = f
+            .maps()
+            .iter()
+            .map(|m| Map {
+                built: m.shadow.matrix(),
+                gpu: m.shadow.with_clip_depth(ClipDepth::ZeroToOne),
+                region: -1,
+                near: m.split.0,
+                far: m.split.1,
+            })
+            .collect();
+        let select = if matches!(scheme_, Scheme::Cascades | Scheme::StableCascades) {
+            Select::Depth
+        } else {
+            Select::Single
+        };
+        return Ok(Built { maps, select });
+    }
     let l = view.light_eye;
-    let casters: Vec<DVec3> = scene
+    let corners: Vec<DVec3> = scene
         .boxes
         .iter()
         .flat_map(|b| {
@@ -252,96 +356,36 @@ pub fn build(scheme_: Scheme, view: &View, scene: &Scene, res: u32) -> Result<Bu
         })
         .map(|p| view.world_to_eye.transform_point3(p))
         .collect();
-    let single = |m: DMat4| -> Result<Built, String> {
-        Ok(Built {
-            maps: vec![Map {
-                built: m,
-                gpu: pull_back(m, l, &casters, fr),
-                region: -1,
-                near: fr.near(),
-                far: fr.far(),
-            }],
-            select: Select::Single,
+    let r = scheme(fr, l, WarpRule::Lispsm, Partition::Faces, 1).map_err(e)?;
+    let maps = r
+        .partitions()
+        .iter()
+        .map(|p| Map {
+            built: p.matrix,
+            gpu: if casters {
+                pull_back(p.matrix, l, &corners, fr)
+            } else {
+                zero_to_one(p.matrix)
+            },
+            region: match p.region {
+                Region::Frustum => -1,
+                Region::Face(f) => face_id(f),
+            },
+            near: p.near,
+            far: p.far,
         })
-    };
-    match scheme_ {
-        Scheme::Uniform => single(uniform(fr, l).map_err(e)?.matrix()),
-        Scheme::Lispsm => single(warp(fr, l, WarpRule::Lispsm).map_err(e)?.matrix()),
-        Scheme::Minimax => single(warp(fr, l, WarpRule::Minimax).map_err(e)?.matrix()),
-        Scheme::Tsm => {
-            let opts = TsmOptions {
-                focus: 0.25 * (fr.far() - fr.near()),
-                search: TsmSearch::EightyPercent,
-            };
-            single(tsm(fr, l, opts).map_err(e)?.shadow.matrix())
-        }
-        Scheme::Cascades => {
-            let sp = splits(fr)?;
-            let c = cascades(fr, l, &sp, WarpRule::Lispsm, 0.0).map_err(e)?;
-            let maps = c
-                .iter()
-                .map(|c| {
-                    let sub = fr.with_depth_range(c.split_near, c.split_far).map_err(e)?;
-                    Ok(Map {
-                        built: c.shadow.matrix(),
-                        gpu: pull_back(c.shadow.matrix(), l, &casters, &sub),
-                        region: -1,
-                        near: c.split_near,
-                        far: c.split_far,
-                    })
-                })
-                .collect::<Result<Vec<_>, String>>()?;
-            Ok(Built {
-                maps,
-                select: Select::Depth,
-            })
-        }
-        Scheme::StableCascades => {
-            let sp = splits(fr)?;
-            let c =
-                stable_cascades(fr, view.world_to_eye, view.light_world, &sp, res).map_err(e)?;
-            let maps = c
-                .iter()
-                .enumerate()
-                .map(|(i, c)| {
-                    let (a, b) = sp.range(i);
-                    let sub = fr.with_depth_range(a, b).map_err(e)?;
-                    Ok(Map {
-                        built: c.shadow.matrix(),
-                        gpu: pull_back(c.shadow.matrix(), l, &casters, &sub),
-                        region: -1,
-                        near: a,
-                        far: b,
-                    })
-                })
-                .collect::<Result<Vec<_>, String>>()?;
-            Ok(Built {
-                maps,
-                select: Select::Depth,
-            })
-        }
-        Scheme::Faces => {
-            let r = scheme(fr, l, WarpRule::Lispsm, Partition::Faces, 1).map_err(e)?;
-            let maps = r
-                .partitions()
-                .iter()
-                .map(|p| Map {
-                    built: p.matrix,
-                    gpu: pull_back(p.matrix, l, &casters, fr),
-                    region: match p.region {
-                        Region::Frustum => -1,
-                        Region::Face(f) => face_id(f),
-                    },
-                    near: p.near,
-                    far: p.far,
-                })
-                .collect();
-            Ok(Built {
-                maps,
-                select: Select::Faces,
-            })
-        }
-    }
+        .collect();
+    Ok(Built {
+        maps,
+        select: Select::Faces,
+    })
+}
+
+/// `m` (OpenGL depth) with depth [0, 1]: the depth row `(z + w)/2`.
+fn zero_to_one(m: DMat4) -> DMat4 {
+    let mut t = m.transpose();
+    t.z_axis = 0.5 * (t.z_axis + t.w_axis);
+    t.transpose()
 }
 
 /// A named camera and light.

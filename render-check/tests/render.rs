@@ -13,7 +13,7 @@ const SIZES: Sizes = Sizes {
     res: Some(1024),
     frames: 64,
     shimmer_points: 1500,
-    depth_as_built: false,
+    without_casters: false,
 };
 
 fn gpu() -> Gpu {
@@ -58,15 +58,15 @@ fn behind_5_every_scheme_meets_the_targets() {
     check_setup("behind_5");
 }
 
-/// The same set-up with the builders' own depth range (fitted to the view frustum): the tower
-/// behind the camera is clipped out of the map and its shadow is lost, which the interior-miss
-/// count catches.
+/// The same set-up with the casters left out of the frame (the depth range fitted to the focus
+/// body alone): the tower behind the camera is clipped out of the map and its shadow is lost,
+/// which the interior-miss count catches.
 #[test]
 fn depth_range_without_the_casters_is_caught() {
     let gpu = gpu();
     let setup = setups().into_iter().find(|s| s.name == "behind_5").unwrap();
     let sizes = Sizes {
-        depth_as_built: true,
+        without_casters: true,
         ..SIZES
     };
     let r = run_case(&gpu, &setup.name, &setup.scene, Scheme::Uniform, sizes).unwrap();
