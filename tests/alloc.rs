@@ -194,6 +194,10 @@ fn frame_api_does_not_allocate() {
             first_far_bound: 1e-3,
             overlap_proportion: 0.2,
         }),
+        FrameScheme::Faces {
+            rule: shadow_aliasing::maps::faces::FaceWarp::Lispsm,
+            k: 3,
+        },
     ] {
         assert_no_allocation("frame", |v, l| {
             let cam = Camera::new(

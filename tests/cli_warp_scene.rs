@@ -80,6 +80,61 @@ fn a_receiver_box_containing_the_frustum_gives_the_frustum_only_matrix() {
 }
 
 #[test]
+fn face_partitions_on_a_scene() {
+    // The light straight down sees only the bottom face; every light ray through B leaves through
+    // it, so its part's body is all of B (the lower half between depths 2 and 5) and the
+    // orthographic face map along the bisector (the view axis here) is the uniform map over B by
+    // hand: M_x = 2.5, M_z = 0.75, S̄ = 1.875.
+    let (_, v) = warp(&[
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "uniform",
+        "--partition",
+        "faces",
+        "--k",
+        "1",
+        "--receivers",
+        "-100,-100,-5,100,0,-2",
+    ]);
+    let close = |a: &Value, b: f64| (a.as_f64().unwrap() - b).abs() < 1e-9 * b.max(1.0);
+    let parts = v["partitions"].as_array().unwrap();
+    assert_eq!(parts.len(), 1, "{v}");
+    assert_eq!(parts[0]["face"], "bottom");
+    assert!(close(&v["storage_factor"], 1.875), "{v}");
+    assert!(close(&v["max_mx"], 2.5) && close(&v["max_mz"], 0.75), "{v}");
+    // A receivers' box containing the frustum: the frustum-only face partitions' S̄.
+    let base = [
+        "--light-dir",
+        "0.2,-0.5,-1",
+        "--warp",
+        "lispsm",
+        "--partition",
+        "faces",
+        "--k",
+        "2",
+    ];
+    let (_, plain) = warp(&base);
+    let mut args = base.to_vec();
+    args.extend_from_slice(&["--receivers", "-1e4,-1e4,-1e4,1e4,1e4,1e4"]);
+    let (_, scene) = warp(&args);
+    let want = plain["storage_factor"].as_f64().unwrap();
+    assert!(close(&scene["storage_factor"], want), "{scene} vs {want}");
+    assert_eq!(
+        scene["partitions"].as_array().unwrap().len(),
+        plain["partitions"].as_array().unwrap().len()
+    );
+    // A ground slab: the maps focus on it and cost less.
+    args.truncate(base.len());
+    args.extend_from_slice(&["--receivers", "-20,-2,-60,20,0,0"]);
+    let (_, ground) = warp(&args);
+    assert!(
+        ground["storage_factor"].as_f64().unwrap() < 0.5 * want,
+        "{ground}"
+    );
+}
+
+#[test]
 fn casters_and_depth_range_and_new_splits() {
     // Casters change only the depth row (rows 0, 1, 3 of the column-major matrix unchanged).
     let base = [
@@ -167,7 +222,7 @@ fn bad_scene_arguments_are_errors() {
             "--partition",
             "faces",
             "--k",
-            "2",
+            "4",
             "--receivers",
             "-1,-1,-5,1,1,-2",
         ],

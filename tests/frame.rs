@@ -15,6 +15,9 @@ use shadow_aliasing::maps::{tsm, warp, ClipDepth, Falloff, TsmOptions, TsmSearch
 use shadow_aliasing::measure::{point_error, ShadowMap};
 use shadow_aliasing::{Resolutions, ViewFrustum};
 
+mod common;
+use common::scene::{aabb, box_planes_eye, frustum_planes, random_scene, ray_meets, scene_params};
+
 /// Every rule, the engines' included.
 fn rules() -> Vec<WarpRule> {
     vec![
@@ -45,11 +48,6 @@ fn identity_camera() -> Camera {
     Camera::new(DMat4::IDENTITY, 1.0, 10.0, std::f64::consts::FRAC_PI_4, 1.0).unwrap()
 }
 
-fn aabb(min: [f64; 3], max: [f64; 3]) -> Aabb {
-    Aabb::new(DVec3::from(min), DVec3::from(max)).unwrap()
-}
-
-/// `got` and `want` hold the same points (to `tol`), in any order.
 fn same_points(got: &[DVec3], want: &[DVec3], tol: f64) {
     assert_eq!(got.len(), want.len(), "got {got:?}, want {want:?}");
     for w in want {
@@ -497,52 +495,6 @@ fn stable_cascades_with_scene_bounds() {
     }
 }
 
-/// Whether the ray from `c` along the light `l` (t ≥ 0) meets the convex set `{p: πᵢ·(p, 1) ≤ 0}`
-/// (Cyrus–Beck on t ∈ [0, ∞)), independently of the frame's clipper.
-fn ray_meets(c: DVec3, l: DVec3, planes: &[DVec4], tol: f64) -> bool {
-    let (mut lo, mut hi) = (0.0f64, f64::INFINITY);
-    for p in planes {
-        let n = p.truncate();
-        let (num, den) = (n.dot(c) + p.w, n.dot(l));
-        if den.abs() < 1e-300 {
-            if num > -tol {
-                return false;
-            }
-        } else if den > 0.0 {
-            hi = hi.min(-num / den);
-        } else {
-            lo = lo.max(-num / den);
-        }
-    }
-    lo + tol < hi
-}
-
-fn frustum_planes(v: &ViewFrustum) -> [DVec4; 6] {
-    let t = v.tan_half_fov();
-    let ta = t * v.aspect();
-    [
-        DVec4::new(0.0, 0.0, 1.0, v.near()),
-        DVec4::new(0.0, 0.0, -1.0, -v.far()),
-        DVec4::new(1.0, 0.0, ta, 0.0),
-        DVec4::new(-1.0, 0.0, ta, 0.0),
-        DVec4::new(0.0, 1.0, t, 0.0),
-        DVec4::new(0.0, -1.0, t, 0.0),
-    ]
-}
-
-fn box_planes_eye(b: &Aabb, w2e: DMat4) -> [DVec4; 6] {
-    let it = w2e.inverse().transpose();
-    [
-        DVec4::new(1.0, 0.0, 0.0, -b.max.x),
-        DVec4::new(-1.0, 0.0, 0.0, b.min.x),
-        DVec4::new(0.0, 1.0, 0.0, -b.max.y),
-        DVec4::new(0.0, -1.0, 0.0, b.min.y),
-        DVec4::new(0.0, 0.0, 1.0, -b.max.z),
-        DVec4::new(0.0, 0.0, -1.0, b.min.z),
-    ]
-    .map(|p| it * p)
-}
-
 proptest! {
     #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
 
@@ -552,39 +504,20 @@ proptest! {
     /// with depth clamp); no NaN, no panic. About 7 600 caster points per run can shadow B.
     #[test]
     fn random_scenes_map_inside(
-        eye in prop::array::uniform3(-20.0f64..20.0),
-        target in prop::array::uniform3(-20.0f64..20.0),
-        near in 0.05f64..2.0,
-        ratio in 2.0f64..2000.0,
-        fov in 10.0f64..70.0,
-        aspect in 0.6f64..2.0,
-        light in prop::array::uniform3(-1.0f64..1.0),
-        rmin in prop::array::uniform3(-40.0f64..40.0),
-        rsize in prop::array::uniform3(0.0f64..60.0),
-        cmin in prop::array::uniform3(-40.0f64..40.0),
-        csize in prop::array::uniform3(0.1f64..40.0),
+        params in scene_params(),
         rule_i in 0usize..14,
         clamp in any::<bool>(),
         cascaded in any::<bool>(),
         samples in prop::collection::vec(prop::array::uniform3(0.0f64..1.0), 100),
     ) {
-        // The camera looks at a point of the receivers' box, the casters hover around another.
-        let (rmin, rsize) = (DVec3::from(rmin), DVec3::from(rsize));
-        let target = rmin + rsize * DVec3::from(target).abs() / 20.0;
-        let cmin = rmin + rsize * DVec3::from(cmin).abs() / 40.0 - DVec3::new(0.5, 0.0, 0.5) * DVec3::from(csize);
-        let eye = target + DVec3::from(eye);
-        prop_assume!((target - eye).length() > 1e-3);
-        let dir = (target - eye).normalize();
-        prop_assume!(dir.y.abs() < 0.999);
-        let l = DVec3::from(light);
-        prop_assume!(l.length() > 1e-3);
-        let view = glam::dcamera::rh::view::look_at_mat4(eye, target, DVec3::Y);
-        let cam = Camera::new(view, near, near * ratio, fov.to_radians(), aspect).unwrap();
-        let r = [Aabb::new(rmin, rmin + rsize).unwrap()];
-        let c = [Aabb::new(cmin, cmin + DVec3::from(csize)).unwrap()];
+        let Some(sc) = random_scene(&params) else {
+            return Ok(());
+        };
+        let (view, cam, l) = (sc.view, sc.camera, sc.light);
+        let (r, c) = ([sc.receivers], [sc.casters]);
         let rule = rules()[rule_i];
         // TSM's focus within the smallest slice (the first of three self-similar cascades).
-        let rule = match rule { WarpRule::Tsm { .. } => WarpRule::Tsm { focus: 0.3 * near * (ratio.cbrt() - 1.0) }, r => r };
+        let rule = match rule { WarpRule::Tsm { .. } => WarpRule::Tsm { focus: 0.3 * params.near * (params.ratio.cbrt() - 1.0) }, r => r };
         let scheme = if let (false, WarpRule::Tsm { focus }) = (cascaded, rule) {
             // The trapezoidal map itself (not only its n′ rule) on B.
             FrameScheme::Tsm(TsmOptions { focus, search: TsmSearch::EightyPercent })
@@ -648,16 +581,8 @@ proptest! {
 fn polytope_bounds_agree_with_boxes() {
     let ground = aabb([-20.0, -1.0, -9.0], [20.0, 0.0, -1.0]);
     let tower = aabb([-1.0, 0.0, -6.0], [1.0, 30.0, -4.0]);
-    let planes = |b: &Aabb| {
-        [
-            DVec4::new(1.0, 0.0, 0.0, -b.max.x),
-            DVec4::new(-1.0, 0.0, 0.0, b.min.x),
-            DVec4::new(0.0, 1.0, 0.0, -b.max.y),
-            DVec4::new(0.0, -1.0, 0.0, b.min.y),
-            DVec4::new(0.0, 0.0, 1.0, -b.max.z),
-            DVec4::new(0.0, 0.0, -1.0, b.min.z),
-        ]
-    };
+    // World = eye (identity camera): the boxes' planes are the same in both spaces.
+    let planes = |b: &Aabb| box_planes_eye(b, DMat4::IDENTITY);
     let (gp, tp) = (planes(&ground), planes(&tower));
     let (gb, tb) = ([ground], [tower]);
     let lw = DVec3::new(0.05, -1.0, 0.05);
@@ -680,6 +605,19 @@ fn polytope_bounds_agree_with_boxes() {
     // The tower reaches into the depth range in both (the casters moved depth).
     let plain = frame(&base.receivers(Bound::Boxes(&gb))).unwrap();
     assert_ne!(plain.maps()[0].shadow.matrix().row(2), mb.row(2));
+    // A flat ground (zero thickness) as a box and as its six planes: both flat, the same map.
+    let flat = aabb([-20.0, 0.0, -9.0], [20.0, 0.0, -1.0]);
+    let fp = planes(&flat);
+    let fa = frame(&base.receivers(Bound::Boxes(&[flat]))).unwrap();
+    let fb = frame(&base.receivers(Bound::Polytope(&fp))).unwrap();
+    assert_eq!(fa.focus(), Focus::Flat);
+    assert_eq!(fb.focus(), Focus::Flat);
+    let d = (fa.maps()[0].shadow.matrix() - fb.maps()[0].shadow.matrix())
+        .abs()
+        .to_cols_array()
+        .into_iter()
+        .fold(0.0, f64::max);
+    assert!(d < 1e-9, "{d:e}");
     // Half-space casters (y ≥ 0): unbounded toward the light, a typed error.
     let half = [DVec4::new(0.0, -1.0, 0.0, 0.0)];
     assert!(frame(

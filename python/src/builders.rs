@@ -12,7 +12,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyList;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
 use shadow_aliasing::maps::cascades::cascades as build_cascades;
-use shadow_aliasing::maps::faces::{face_partitions, Face, FaceWarp};
+use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
 use shadow_aliasing::maps::{
     self, ClipDepth, Falloff, ShadowMatrix, TsmOptions, TsmSearch, WarpRule,
 };
@@ -334,17 +334,6 @@ pub fn cascades<'py>(
     stack(py, &ms)
 }
 
-fn face_name(f: Face) -> &'static str {
-    match f {
-        Face::Bottom => "bottom",
-        Face::Right => "right",
-        Face::Top => "top",
-        Face::Left => "left",
-        Face::Near => "near",
-        Face::Far => "far",
-    }
-}
-
 /// Face partitions (Lloyd 2006 §5.1): one map per visible face of the view frustum, each side
 /// face z-partitioned k times (self-similar planes), warped by ``warp`` "uniform", "psm" or
 /// "lispsm" (n′ = d_n + √(d_n d_f) of its face, which reproduces Lloyd 2006 Eq 19, 21).
@@ -375,7 +364,7 @@ pub fn faces<'py>(
     let depth = self::clip_depth(clip_depth)?;
     let fp = face_partitions(&view, l, w, k).map_err(err)?;
     let ms: Vec<DMat4> = fp.iter().map(|p| p.shadow.with_clip_depth(depth)).collect();
-    let names: Vec<&str> = fp.iter().map(|p| face_name(p.face)).collect();
+    let names: Vec<&str> = fp.iter().map(|p| p.face.name()).collect();
     Ok((stack(py, &ms)?, PyList::new(py, names)?))
 }
 

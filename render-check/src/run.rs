@@ -58,9 +58,9 @@ pub struct Sizes {
     pub frames: usize,
     /// Sample points of the shimmer test (at most).
     pub shimmer_points: usize,
-    /// Leave the casters out of the maps' depth range (the frame API without `.casters`, the
-    /// face partitions without the pull-back): casters nearer the light than the focus body are
-    /// then clipped (the check that the correctness test can fail).
+    /// Leave the casters out of the maps' depth range (the frame API without `.casters`):
+    /// casters nearer the light than the focus body are then clipped (the check that the
+    /// correctness test can fail).
     pub without_casters: bool,
 }
 

@@ -1,21 +1,19 @@
 //! The set-ups (camera and light) and the schemes, built as a renderer builds them.
 //!
-//! The scene is in world space. Every scheme but the face partitions is built by the crate's
-//! world-space frame API ([`shadow_aliasing::frame`]) from the camera's world → eye matrix `V`,
-//! the light's world direction and the scene's receiver and caster boxes. Each map's matrix `S`
-//! (eye → light clip; the frame's world → light clip is `S V`) is used with eye-space vertices
-//! (the GPU gets eye-space positions, transformed in `f64`). The face partitions, which the
-//! frame API does not build yet, use the eye-space builder [`shadow_aliasing::scheme::scheme`].
+//! The scene is in world space. Every scheme is built by the crate's world-space frame API
+//! ([`shadow_aliasing::frame`]) from the camera's world → eye matrix `V`, the light's world
+//! direction and the scene's receiver and caster boxes. Each map's matrix `S` (eye → light clip;
+//! the frame's world → light clip is `S V`) is used with eye-space vertices (the GPU gets
+//! eye-space positions, transformed in `f64`).
 
 use crate::scene::{Camera, Scene};
-use glam::{DMat4, DVec3, DVec4};
+use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
 use shadow_aliasing::frame::{
     frame, Aabb, Bound, Camera as FrameCamera, CascadeSplits, FrameInput, FrameScheme,
 };
-use shadow_aliasing::maps::faces::Face;
+use shadow_aliasing::maps::faces::{Face, FaceWarp};
 use shadow_aliasing::maps::{ClipDepth, TsmOptions, TsmSearch, WarpRule};
-use shadow_aliasing::scheme::{scheme, Partition, Region};
 use shadow_aliasing::ViewFrustum;
 
 /// The schemes compared.
@@ -73,8 +71,8 @@ pub enum Select {
     Faces,
 }
 
-/// One map: its eye → light clip matrix (OpenGL depth, as built) and the GPU's (depth [0, 1],
-/// pulled back over the casters).
+/// One map: its eye → light clip matrix (OpenGL depth, as built) and the GPU's (the same map
+/// with depth [0, 1]).
 #[derive(Debug, Clone, Copy)]
 pub struct Map {
     /// As built (eye → light clip, OpenGL depth): what the measurement takes.
@@ -161,55 +159,6 @@ impl View {
     }
 }
 
-/// The near-plane pull-back: the map's depth row replaced by `k (L·p − λ₀)` (eye space), so that
-/// clip depth `z/w = k (λ − λ₀)/w` with `λ = L·p` the distance along the light. Along a light
-/// ray `w` is constant for every map the crate builds (s, t and w do not vary along the light),
-/// so depth stays monotonic along each ray and the shadow test is unchanged in kind; x, y, w,
-/// hence every texel, are exactly the builder's. `λ₀` is the smallest λ of every caster corner
-/// (the tower behind the camera included) and of the receivers' region, so no caster is cut at
-/// the near end; `k` makes the largest `(λ − λ₀)/w` over the receivers' region 1/1.02 (receivers
-/// are sampled on a 5³ grid of the map's sub-frustum, corners included, where `w > 0`). Casters
-/// beyond the far end are clipped: they lie behind every receiver. This is the depth-only
-/// equivalent of `with_casters(…, CasterDepth::Enclose)` (which refits x and y too) and of
-/// Lloyd 2006 §6.4's clamp to the near plane.
-pub fn pull_back(built: DMat4, light_eye: DVec3, casters: &[DVec3], region: &ViewFrustum) -> DMat4 {
-    let lam = |p: DVec3| light_eye.dot(p);
-    let mut samples = Vec::new();
-    let t = region.tan_half_fov();
-    let ta = t * region.aspect();
-    for i in 0..5 {
-        let z = region.near() + (region.far() - region.near()) * f64::from(i) / 4.0;
-        for j in 0..5 {
-            for k in 0..5 {
-                let u = -1.0 + 0.5 * f64::from(j);
-                let v = -1.0 + 0.5 * f64::from(k);
-                samples.push(DVec3::new(u * z * ta, v * z * t, -z));
-            }
-        }
-    }
-    let lam0 = casters
-        .iter()
-        .chain(&samples)
-        .map(|&p| lam(p))
-        .fold(f64::INFINITY, f64::min);
-    let lam0 = lam0 - 1e-3 * (1.0 + lam0.abs());
-    let mut worst = 0.0f64;
-    for &p in &samples {
-        let h = built * p.extend(1.0);
-        if h.w > 0.0 {
-            worst = worst.max((lam(p) - lam0) / h.w);
-        }
-    }
-    let k = 1.0 / (1.02 * worst);
-    let row = DVec4::new(k * light_eye.x, k * light_eye.y, k * light_eye.z, -k * lam0);
-    let mut m = built;
-    m.x_axis.z = row.x;
-    m.y_axis.z = row.y;
-    m.z_axis.z = row.z;
-    m.w_axis.z = row.w;
-    m
-}
-
 fn face_id(f: Face) -> i32 {
     match f {
         Face::Bottom => 0,
@@ -253,14 +202,14 @@ fn bounds(scene: &Scene) -> Result<(Vec<Aabb>, Vec<Aabb>), String> {
     Ok((receivers, casters))
 }
 
-/// The frame API's scheme for `scheme_` (every scheme but the face partitions).
-fn frame_scheme(scheme_: Scheme, view: &ViewFrustum) -> Option<FrameScheme<'static>> {
+/// The frame API's scheme for `scheme_`.
+fn frame_scheme(scheme_: Scheme, view: &ViewFrustum) -> FrameScheme<'static> {
     let practical = CascadeSplits::Scheme {
         scheme: SplitScheme::Practical { lambda: 0.75 },
         k: 4,
         overlap: 0.0,
     };
-    Some(match scheme_ {
+    match scheme_ {
         Scheme::Uniform => FrameScheme::Single(WarpRule::Uniform),
         Scheme::Lispsm => FrameScheme::Single(WarpRule::Lispsm),
         Scheme::Minimax => FrameScheme::Single(WarpRule::Minimax),
@@ -273,18 +222,18 @@ fn frame_scheme(scheme_: Scheme, view: &ViewFrustum) -> Option<FrameScheme<'stat
             rule: WarpRule::Lispsm,
         },
         Scheme::StableCascades => FrameScheme::Stable(practical),
-        Scheme::Faces => return None,
-    })
+        Scheme::Faces => FrameScheme::Faces {
+            rule: FaceWarp::Lispsm,
+            k: 1,
+        },
+    }
 }
 
-/// Builds `scheme` for `view`, `res` texels per map side; with `casters` false the casters are
-/// left out of the depth range (see [`crate::run::Sizes::without_casters`]).
-///
-/// Every scheme but the face partitions goes through the crate's world-space frame API
-/// ([`shadow_aliasing::frame::frame`]): the map is focused on the receivers in view, its depth
-/// range reaches every caster that can shadow them, and the GPU renders with the frame's own
-/// matrix in depth \[0, 1\] (no pull-back). The face partitions, which the frame API does not
-/// build yet, use the eye-space builder with the casters pulled in by [`pull_back`].
+/// Builds `scheme` for `view`, `res` texels per map side, through the crate's world-space frame
+/// API ([`shadow_aliasing::frame::frame`]): each map is focused on the receivers in view, its
+/// depth range reaches every caster that can shadow them (unless `casters` is false: the check
+/// that a lost caster is caught, [`crate::run::Sizes::without_casters`]), and the GPU renders with
+/// the frame's own matrix in depth \[0, 1\].
 ///
 /// # Errors
 /// The crate's error, as text; a frame with no map (the scene out of view) is an error here.
@@ -297,95 +246,48 @@ pub fn build(
 ) -> Result<Built, String> {
     let e = |e: shadow_aliasing::Error| format!("{}: {e}", scheme_.name());
     let fr = &view.frustum;
-    if let Some(fs) = frame_scheme(scheme_, fr) {
-        let (receivers, boxes) = bounds(scene)?;
-        let camera = FrameCamera::new(
-            view.world_to_eye,
-            fr.near(),
-            fr.far(),
-            fr.half_fov(),
-            fr.aspect(),
-        )
-        .map_err(e)?;
-        let input = FrameInput::new(camera, view.light_world, res, 1)
-            .receivers(Bound::Boxes(&receivers))
-            .casters(if casters {
-                Bound::Boxes(&boxes)
-            } else {
-                Bound::Unbounded
-            })
-            .scheme(fs);
-        let f = frame(&input).map_err(e)?;
-        if f.is_empty() {
-            return Err(format!(
-                "{}: the frame built no map ({:?})",
-                scheme_.name(),
-                f.focus()
-            ));
-        }
-        let maps = f
-            .maps()
-            .iter()
-            .map(|m| Map {
-                built: m.shadow.matrix(),
-                gpu: m.shadow.with_clip_depth(ClipDepth::ZeroToOne),
-                region: -1,
-                near: m.split.0,
-                far: m.split.1,
-            })
-            .collect();
-        let select = if matches!(scheme_, Scheme::Cascades | Scheme::StableCascades) {
-            Select::Depth
+    let (receivers, boxes) = bounds(scene)?;
+    let camera = FrameCamera::new(
+        view.world_to_eye,
+        fr.near(),
+        fr.far(),
+        fr.half_fov(),
+        fr.aspect(),
+    )
+    .map_err(e)?;
+    let input = FrameInput::new(camera, view.light_world, res, 1)
+        .receivers(Bound::Boxes(&receivers))
+        .casters(if casters {
+            Bound::Boxes(&boxes)
         } else {
-            Select::Single
-        };
-        return Ok(Built { maps, select });
+            Bound::Unbounded
+        })
+        .scheme(frame_scheme(scheme_, fr));
+    let f = frame(&input).map_err(e)?;
+    if f.is_empty() {
+        return Err(format!(
+            "{}: the frame built no map ({:?})",
+            scheme_.name(),
+            f.focus()
+        ));
     }
-    let l = view.light_eye;
-    let corners: Vec<DVec3> = scene
-        .boxes
+    let maps = f
+        .maps()
         .iter()
-        .flat_map(|b| {
-            (0..8).map(move |i| {
-                DVec3::new(
-                    if i & 1 == 0 { b.min[0] } else { b.max[0] },
-                    if i & 2 == 0 { b.min[1] } else { b.max[1] },
-                    if i & 4 == 0 { b.min[2] } else { b.max[2] },
-                )
-            })
-        })
-        .map(|p| view.world_to_eye.transform_point3(p))
-        .collect();
-    let r = scheme(fr, l, WarpRule::Lispsm, Partition::Faces, 1).map_err(e)?;
-    let maps = r
-        .partitions()
-        .iter()
-        .map(|p| Map {
-            built: p.matrix,
-            gpu: if casters {
-                pull_back(p.matrix, l, &corners, fr)
-            } else {
-                zero_to_one(p.matrix)
-            },
-            region: match p.region {
-                Region::Frustum => -1,
-                Region::Face(f) => face_id(f),
-            },
-            near: p.near,
-            far: p.far,
+        .map(|m| Map {
+            built: m.shadow.matrix(),
+            gpu: m.shadow.with_clip_depth(ClipDepth::ZeroToOne),
+            region: m.face.map_or(-1, face_id),
+            near: m.split.0,
+            far: m.split.1,
         })
         .collect();
-    Ok(Built {
-        maps,
-        select: Select::Faces,
-    })
-}
-
-/// `m` (OpenGL depth) with depth [0, 1]: the depth row `(z + w)/2`.
-fn zero_to_one(m: DMat4) -> DMat4 {
-    let mut t = m.transpose();
-    t.z_axis = 0.5 * (t.z_axis + t.w_axis);
-    t.transpose()
+    let select = match scheme_ {
+        Scheme::Cascades | Scheme::StableCascades => Select::Depth,
+        Scheme::Faces => Select::Faces,
+        _ => Select::Single,
+    };
+    Ok(Built { maps, select })
 }
 
 /// A named camera and light.

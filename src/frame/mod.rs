@@ -41,8 +41,13 @@
 //! - The error is measured over B's vertices ([`crate::measure::vertex::vertex_max`]): the papers'
 //!   warps have m_x quasi-linear and m_z convex over a convex body, so the maxima lie at vertices
 //!   (tests/frame.rs checks it densely).
+//! - Face partitions ([`FrameScheme::Faces`]): the part B_i of B whose light rays pass a face
+//!   part is B clipped by the prism of that part along the light; n′ and s, t come from B_i's
+//!   vertices on the face's own warp axes ([`crate::maps::faces`]), the depth covers B's extent
+//!   along the light (as the frustum-only builder covers the frustum's) and the casters of B_i.
 //! - A receivers' bound that contains the frustum (slice) gives the frustum-only builders'
-//!   matrices: [`crate::maps::warp()`], [`crate::maps::cascades::cascades`] bit for bit.
+//!   matrices: [`crate::maps::warp()`], [`crate::maps::cascades::cascades`] bit for bit,
+//!   [`crate::maps::faces::face_partitions`] to 10⁻¹² (B_i's vertices come from the clipper).
 //!
 //! ```
 //! use glam::{DMat4, DVec3};
@@ -68,6 +73,7 @@ use crate::error::{fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::{LightDir, NPrime, ViewFrustum};
 use crate::geom::polytope::{extents, ConvexBody};
 use crate::maps::cascades::{bounding_sphere, splits_between};
+use crate::maps::faces::{face_spaces, visible_with, Face, FaceSpaces, FaceWarp, PartFitter};
 use crate::maps::lightspace::{light_space_unit, LightSpace};
 use crate::maps::matrix::zero_to_one;
 use crate::maps::tsm::{tsm_on_points, validate as validate_tsm};
@@ -77,6 +83,7 @@ use crate::maps::warp::{
 };
 use crate::maps::{ClipDepth, ShadowMatrix, TsmOptions, WarpRule};
 use crate::measure::vertex::vertex_max;
+use crate::numeric::EDGE_ON;
 use glam::{DMat3, DMat4, DVec2, DVec3, DVec4, Mat4};
 
 /// The largest number of vertices of a focus body (a frustum slice cut by up to 6 planes has at
@@ -85,6 +92,15 @@ pub const MAX_BODY_VERTICES: usize = 32;
 
 /// The largest number of planes of a [`Bound::Polytope`].
 pub const MAX_BOUND_PLANES: usize = 12;
+
+/// The largest k of [`FrameScheme::Faces`]: 4 side faces × k parts + the near face fit the
+/// frame's [`MAX_PARTITIONS`] slots.
+pub const MAX_FACE_K: usize = (MAX_PARTITIONS - 1) / 4;
+
+/// The largest number of planes of a receivers' [`Bound::Polytope`] with [`FrameScheme::Faces`]:
+/// with the frustum's 6 and a face part's 4 prism planes, B_i has at most 2·18 − 4 = 32 vertices,
+/// what a map holds.
+pub const MAX_FACE_BOUND_PLANES: usize = 8;
 
 /// The receivers' body: 6 frustum faces + 12 bound planes, a face at most 4 + 12 vertices.
 type BodyClip = ConvexBody<18, 18>;
@@ -270,8 +286,10 @@ pub enum CascadeSplits<'a> {
     /// Bevy's `CascadeShadowConfigBuilder`: far bounds `first_far_bound · b^i` with
     /// `b = (maximum_distance/first_far_bound)^{1/(k−1)}` (`calculate_cascade_bounds`), the first
     /// cascade starting at `minimum_distance`, cascade i > 0 at `(1 − overlap_proportion)` times
-    /// the previous far bound (the band cross-faded with the previous cascade). Distances are
-    /// clamped to the visible depth range.
+    /// the previous far bound (the band cross-faded with the previous cascade), as
+    /// `bevy_light/src/cascade.rs` computes them. Distances are clamped to the visible depth
+    /// range (the crate's addition: Bevy does not clamp); k may reach 16 (Bevy renders at most
+    /// `MAX_CASCADES_PER_LIGHT` = 4).
     Bevy {
         /// Number of cascades, 1..=16.
         k: usize,
@@ -307,6 +325,20 @@ pub enum FrameScheme<'a> {
     /// (the focus distance scaled to B's depth, as [`crate::maps::tsm::tsm_general`] does), the
     /// depth row refitted to B and the casters.
     Tsm(TsmOptions),
+    /// Face partitions (Lloyd 2006 §5.1, Lloyd 2005 §4; [`crate::maps::faces`]) of the visible
+    /// frustum, each side face cut at k self-similar depths, the near face whole: one map per face
+    /// part, fitted to its own focus body B_i = B ∩ the prism of the face part along the light
+    /// (the points of B whose light ray passes through that part of the face). The face rule's n′
+    /// comes from B_i's extent along the face's warp axis (the face's own extent when B is the
+    /// frustum), each part keeps the better of its two candidate axes, the depth covers B along
+    /// the light and every caster that can shadow B_i, and the error is measured over B_i's
+    /// vertices. A part whose B_i is empty gets no map.
+    Faces {
+        /// The face rule.
+        rule: FaceWarp,
+        /// Z-partitions per side face, 1..=[`MAX_FACE_K`] (4k + 1 maps fit the frame's slots).
+        k: usize,
+    },
 }
 
 /// Everything the frame needs (see the module docs). Build with [`FrameInput::new`] and the
@@ -403,7 +435,8 @@ pub enum Focus {
     Body,
     /// The scene is out of view (B has no volume, touching included): no map needed.
     Empty,
-    /// The receivers' bound is flat (zero thickness) and B is a polygon: mapped.
+    /// The receivers' bound is flat (zero thickness: a box with min = max in one coordinate, or a
+    /// polytope with two opposite planes at the same place) and B is a polygon: mapped.
     Flat,
     /// B has no extent across or along the warp axis as the light sees it (an edge-on flat
     /// receiver): no map can be fitted and none is needed.
@@ -453,6 +486,10 @@ pub struct FrameMap {
     pub max_error_pixels: f64,
     /// What the body is (Body, Flat or ZeroDepth for a built map).
     pub focus: Focus,
+    /// The frustum face of a face partition (the shader picks the map by the face its light ray
+    /// passes and, for a side face, by `split`, the depths of that part of the face); `None` for
+    /// every other scheme.
+    pub face: Option<Face>,
     world_to_eye: DMat4,
     body: [DVec3; MAX_BODY_VERTICES],
     body_len: usize,
@@ -486,6 +523,8 @@ pub struct Frame {
     /// Slot i of the scheme's partitions (None where its body is empty).
     k: usize,
     len: usize,
+    /// A partition without a map was edge-on to the light.
+    none_edge_on: bool,
     focus: Focus,
     light: LightCase,
     light_dir_eye: DVec3,
@@ -498,6 +537,7 @@ impl Default for Frame {
             maps: [None; MAX_PARTITIONS],
             k: 0,
             len: 0,
+            none_edge_on: false,
             focus: Focus::Empty,
             light: LightCase::General,
             light_dir_eye: DVec3::NEG_Y,
@@ -579,6 +619,34 @@ impl std::ops::Index<usize> for FrameMaps<'_> {
     }
 }
 
+impl Frame {
+    /// Puts the next partition's outcome into slot `k` (`None` where no map is needed).
+    fn push(&mut self, m: Built) {
+        self.maps[self.k] = match m {
+            Built::Map(m) => {
+                self.len += 1;
+                Some(m)
+            }
+            Built::None(f) => {
+                self.none_edge_on |= f == Focus::EdgeOn;
+                None
+            }
+        };
+        self.k += 1;
+    }
+
+    /// The frame's focus once every partition is in: the first built map's, or why none was
+    /// built (edge-on if any partition was, else empty).
+    fn settle(&mut self) {
+        let first = self.maps().iter().next().map(|m| m.focus);
+        self.focus = match first {
+            Some(f) => f,
+            None if self.none_edge_on => Focus::EdgeOn,
+            None => Focus::Empty,
+        };
+    }
+}
+
 /// One slice to map: covered depth range, selection range, blend band.
 #[derive(Debug, Clone, Copy)]
 struct Slice {
@@ -616,6 +684,7 @@ pub fn frame(input: &FrameInput<'_>) -> Result<Frame> {
 pub fn frame_into(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
     out.k = 0;
     out.len = 0;
+    out.none_edge_on = false;
     out.focus = Focus::Empty;
     let cam = &input.camera;
     let lw = LightDir::new(input.light_dir_world)
@@ -644,6 +713,16 @@ pub fn frame_into(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
     let (zn, zf) = visible_range(view, input.depth_range)?;
     let planes = receiver_planes(cam, &input.receivers)?;
     validate_casters(&input.casters)?;
+    if let FrameScheme::Faces { rule, k } = input.scheme {
+        let ctx = Ctx {
+            input,
+            view,
+            l,
+            lw,
+            planes,
+        };
+        return ctx.faces_into(rule, k, (zn, zf), out);
+    }
     let mut slices = [Slice {
         cover: (0.0, 0.0),
         split: (0.0, 0.0),
@@ -674,6 +753,7 @@ pub fn frame_into(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
             };
             (1, WarpRule::Uniform, false)
         }
+        FrameScheme::Faces { .. } => unreachable!("face partitions are built above"),
     };
     let ctx = Ctx {
         input,
@@ -682,32 +762,15 @@ pub fn frame_into(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
         lw,
         planes,
     };
-    let mut first_focus = None;
-    let mut any_edge_on = false;
-    for (i, s) in slices[..k].iter().enumerate() {
+    for s in &slices[..k] {
         let m = match input.scheme {
             FrameScheme::Stable(_) => ctx.stable_map(s)?,
             FrameScheme::Tsm(opts) => ctx.tsm_map(s, opts)?,
             _ => ctx.map(s, rule)?,
         };
-        match m {
-            Built::Map(m) => {
-                first_focus.get_or_insert(m.focus);
-                out.maps[i] = Some(m);
-                out.len += 1;
-            }
-            Built::None(f) => {
-                any_edge_on |= f == Focus::EdgeOn;
-                out.maps[i] = None;
-            }
-        }
+        out.push(m);
     }
-    out.k = k;
-    out.focus = match first_focus {
-        Some(f) => f,
-        None if any_edge_on => Focus::EdgeOn,
-        None => Focus::Empty,
-    };
+    out.settle();
     Ok(())
 }
 
@@ -796,9 +859,24 @@ fn receiver_planes(cam: &Camera, b: &Bound<'_>) -> Result<Planes> {
                 out.p[k] = it * *p;
             }
             out.n = planes.len();
+            out.flat = has_zero_thickness(planes);
         }
     }
     Ok(out)
+}
+
+/// Whether two of a polytope's planes bound it to zero thickness: opposite unit normals at the
+/// same place (within 10⁻¹², relative to the offsets), as a flat box's top and bottom planes.
+fn has_zero_thickness(planes: &[DVec4]) -> bool {
+    let unit = |p: &DVec4| *p / p.truncate().length();
+    planes.iter().enumerate().any(|(i, a)| {
+        let a = unit(a);
+        planes[i + 1..].iter().any(|b| {
+            let b = unit(b);
+            let scale = 1.0 + a.w.abs().max(b.w.abs());
+            (a.truncate() + b.truncate()).length() <= 1e-12 && (a.w + b.w).abs() <= 1e-12 * scale
+        })
+    })
 }
 
 fn bad_box(name: &'static str, b: &Aabb) -> Error {
@@ -1032,7 +1110,7 @@ impl Ctx<'_, '_> {
     }
 
     /// B for the slice `[a, b]`.
-    fn body(&self, a: f64, b: f64, extra: Option<DVec4>) -> Result<Body> {
+    fn body(&self, a: f64, b: f64, extra: &[DVec4]) -> Result<Body> {
         let sub = self.view.with_depth_range(a, b)?;
         let corners = sub.corners();
         let scale = self.scale();
@@ -1049,14 +1127,14 @@ impl Ctx<'_, '_> {
                 .iter()
                 .all(|pl| pl.truncate().dot(*p) + pl.w <= tol * pl.truncate().length())
         };
-        if extra.is_none() && corners.iter().all(inside) {
+        if extra.is_empty() && corners.iter().all(inside) {
             body.v[..8].copy_from_slice(&corners);
             body.n = 8;
             return Ok(body);
         }
         body.whole = false;
         let mut cb = BodyClip::hexahedron(&corners);
-        for pl in planes.iter().chain(extra.as_ref()) {
+        for pl in planes.iter().chain(extra) {
             if !cb.clip(*pl, tol) {
                 return Err(Error::Degenerate(
                     "the focus body has more faces than the clipper holds".into(),
@@ -1191,7 +1269,7 @@ impl Ctx<'_, '_> {
     }
 
     fn map(&self, s: &Slice, rule: WarpRule) -> Result<Built> {
-        let body = self.body(s.cover.0, s.cover.1, None)?;
+        let body = self.body(s.cover.0, s.cover.1, &[])?;
         if body.focus == Focus::Empty || body.n == 0 {
             return Ok(Built::None(Focus::Empty));
         }
@@ -1261,7 +1339,7 @@ impl Ctx<'_, '_> {
     fn tsm_map(&self, s: &Slice, opts: TsmOptions) -> Result<Built> {
         let sub_full = self.view.with_depth_range(s.cover.0, s.cover.1)?;
         validate_tsm(&sub_full, &opts)?;
-        let body = self.body(s.cover.0, s.cover.1, None)?;
+        let body = self.body(s.cover.0, s.cover.1, &[])?;
         if body.focus == Focus::Empty || body.n == 0 {
             return Ok(Built::None(Focus::Empty));
         }
@@ -1277,7 +1355,7 @@ impl Ctx<'_, '_> {
         let region = self.body(
             s.cover.0,
             s.cover.1,
-            Some(DVec4::new(0.0, 0.0, -1.0, -focus_depth)),
+            &[DVec4::new(0.0, 0.0, -1.0, -focus_depth)],
         )?;
         let focus_region: &[DVec3] = if region.n > 0 {
             &region.v[..region.n]
@@ -1323,7 +1401,7 @@ impl Ctx<'_, '_> {
 
     /// A stable cascade with its depth range from B and the casters.
     fn stable_map(&self, s: &Slice) -> Result<Built> {
-        let body = self.body(s.cover.0, s.cover.1, None)?;
+        let body = self.body(s.cover.0, s.cover.1, &[])?;
         if body.focus == Focus::Empty || body.n == 0 {
             return Ok(Built::None(Focus::Empty));
         }
@@ -1379,6 +1457,130 @@ impl Ctx<'_, '_> {
         self.finish(shadow, pts, s, body.focus).map(Built::Map)
     }
 
+    /// The face partitions of the visible frustum `[zn, zf]` (see [`FrameScheme::Faces`]).
+    fn faces_into(
+        &self,
+        rule: FaceWarp,
+        k: usize,
+        (zn, zf): (f64, f64),
+        out: &mut Frame,
+    ) -> Result<()> {
+        if !(1..=MAX_FACE_K).contains(&k) {
+            return Err(Error::invalid(
+                "k",
+                format!(
+                    "must be in 1..={MAX_FACE_K} for face partitions (4k + 1 maps fill at most \
+                     the frame's {MAX_PARTITIONS} slots; got {k})"
+                ),
+            ));
+        }
+        if self.planes.n > MAX_FACE_BOUND_PLANES {
+            return Err(Error::invalid(
+                "receivers",
+                format!(
+                    "must be a polytope of at most {MAX_FACE_BOUND_PLANES} planes for face \
+                     partitions (got {})",
+                    self.planes.n
+                ),
+            ));
+        }
+        let view = self.view.with_depth_range(zn, zf)?;
+        let splits = z_splits(zn, zf, k, SplitScheme::SelfSimilar)?;
+        let l = self.l;
+        let light = LightDir::from_unit_unchecked(l);
+        let tan = view.tan_half_fov();
+        let ta = tan * view.aspect();
+        let faces = visible_with(tan, ta, zn / zf, l);
+        if faces.faces().is_empty() {
+            return Err(Error::Degenerate(format!(
+                "no face of the view frustum is seen by the light {l}"
+            )));
+        }
+        // B of the whole visible range: its extent along the light is every part's depth range.
+        let whole = self.body(zn, zf, &[])?;
+        if whole.focus == Focus::Empty || whole.n == 0 {
+            return Ok(());
+        }
+        let (mut y_lo, mut y_hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in &whole.v[..whole.n] {
+            let y = -l.dot(*p);
+            y_lo = y_lo.min(y);
+            y_hi = y_hi.max(y);
+        }
+        for &face in faces.faces() {
+            let spaces = face_spaces(face, tan, ta, light);
+            let count = if face.is_side() { k } else { 1 };
+            for j in 0..count {
+                let (a, b) = if face.is_side() {
+                    splits.range(j)
+                } else {
+                    (zn, zn)
+                };
+                let part = FacePart {
+                    face,
+                    quad: face.vertices_with(&view, tan, ta, a, b),
+                    depths: (a, b),
+                    spaces: &spaces,
+                };
+                out.push(self.face_part(&part, (zn, zf), (y_lo, y_hi), rule)?);
+            }
+        }
+        out.settle();
+        Ok(())
+    }
+
+    /// One face part's map: B_i = B ∩ the prism of the part's quad along the light (B of the
+    /// visible range `[zn, zf]`), fitted with the face's candidate axes over B's extent `y` along
+    /// the light and the casters of B_i.
+    fn face_part(
+        &self,
+        part: &FacePart<'_>,
+        (zn, zf): (f64, f64),
+        (y_lo, y_hi): (f64, f64),
+        rule: FaceWarp,
+    ) -> Result<Built> {
+        let FacePart {
+            face,
+            quad,
+            depths: (a, b),
+            spaces,
+        } = *part;
+        let l = self.l;
+        let prism = quad_prism(&quad, l);
+        let body = self.body(zn, zf, prism.as_slice())?;
+        if body.focus == Focus::Empty || body.n == 0 {
+            return Ok(Built::None(Focus::Empty));
+        }
+        let pts = &body.v[..body.n];
+        // Any light space with y toward the light serves the casters' prism and depth.
+        let ls = light_space_unit(LightDir::from_unit_unchecked(l), DVec3::NEG_Z);
+        let Some(fl) = self.in_light(pts, ls)? else {
+            return Ok(Built::None(Focus::EdgeOn));
+        };
+        let mut y_hi = y_hi;
+        if let Some(p) = self.caster_extreme(&fl, body.n, |_| 1.0, 0.0)? {
+            y_hi = y_hi.max(ls.y.dot(p));
+        }
+        let fitter = PartFitter {
+            rule,
+            y_range: (y_lo, y_hi),
+            l,
+            tan: self.view.tan_half_fov(),
+        };
+        let (matrix, n_prime, _) =
+            fitter.best::<{ 3 * MAX_BODY_VERTICES }>(spaces, pts, pts, face, (a, b))?;
+        let (n_b, f_b) = depth_extent(pts);
+        let shadow = ShadowMatrix::new(matrix, LightDir::from_unit_unchecked(l), n_prime, n_b, f_b);
+        let slice = Slice {
+            cover: (n_b, f_b),
+            split: (a, b),
+            blend: (b, b),
+        };
+        let mut m = self.finish(shadow, pts, &slice, body.focus)?;
+        m.face = Some(face);
+        Ok(Built::Map(m))
+    }
+
     fn finish(
         &self,
         shadow: ShadowMatrix,
@@ -1413,6 +1615,7 @@ impl Ctx<'_, '_> {
             storage_factor: err.storage_factor,
             max_error_pixels: err.max_mx.max(err.max_mz) * image / res,
             focus,
+            face: None,
             world_to_eye: self.input.camera.world_to_eye,
             body,
             body_len: pts.len(),
@@ -1477,6 +1680,51 @@ impl Prism {
         self.planes[..self.n]
             .iter()
             .all(|pl| pl.truncate().dot(p) + pl.w <= tol * pl.truncate().length())
+    }
+}
+
+/// The side planes of the prism of a planar quad along the light: each contains an edge and the
+/// light direction, outward from the quad. An edge within [`EDGE_ON`] of parallel to the light
+/// gives no plane (its neighbours bound the quad's projection, a triangle then).
+fn quad_prism(quad: &[DVec3; 4], l: DVec3) -> PlaneList<4> {
+    let centre = 0.25 * (quad[0] + quad[1] + quad[2] + quad[3]);
+    let mut out = PlaneList {
+        p: [DVec4::ZERO; 4],
+        n: 0,
+    };
+    for i in 0..4 {
+        let (p, q) = (quad[i], quad[(i + 1) % 4]);
+        let e = q - p;
+        let n = e.cross(l);
+        if n.length() <= EDGE_ON * e.length() {
+            continue;
+        }
+        let n = if n.dot(centre - p) > 0.0 { -n } else { n };
+        out.p[out.n] = n.extend(-n.dot(p));
+        out.n += 1;
+    }
+    out
+}
+
+/// One part of a frustum face to map: the face, its quad between the part's depths, and the
+/// face's candidate light spaces.
+#[derive(Clone, Copy)]
+struct FacePart<'s> {
+    face: Face,
+    quad: [DVec3; 4],
+    depths: (f64, f64),
+    spaces: &'s FaceSpaces,
+}
+
+/// Up to `N` planes.
+struct PlaneList<const N: usize> {
+    p: [DVec4; N],
+    n: usize,
+}
+
+impl<const N: usize> PlaneList<N> {
+    fn as_slice(&self) -> &[DVec4] {
+        &self.p[..self.n]
     }
 }
 
@@ -1550,7 +1798,7 @@ mod tests {
                 lw: DVec3::NEG_Y,
                 planes,
             };
-            let body = ctx.body(view.near(), view.far(), None).unwrap();
+            let body = ctx.body(view.near(), view.far(), &[]).unwrap();
             let mut all = [DVec4::ZERO; 12];
             all[..6].copy_from_slice(&frustum_planes(&view, f));
             all[6..].copy_from_slice(&planes.p[..6]);

@@ -121,7 +121,7 @@
 use crate::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{LightDir, NPrime, ViewFrustum};
-use crate::maps::lightspace::light_space_dir;
+use crate::maps::lightspace::{light_space_dir, LightSpace};
 use crate::maps::{fit_warp, ShadowMatrix};
 use crate::measure::vertex::vertex_max;
 use crate::measure::FrustumError;
@@ -219,8 +219,35 @@ impl Face {
         self.vertices_with(view, t, t * view.aspect(), near, far)
     }
 
+    /// The face's name in lower case (`"bottom"`, `"right"`, `"top"`, `"left"`, `"near"`,
+    /// `"far"`), as the command line's JSON and the Python package spell it.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Face::Bottom => "bottom",
+            Face::Right => "right",
+            Face::Top => "top",
+            Face::Left => "left",
+            Face::Near => "near",
+            Face::Far => "far",
+        }
+    }
+
+    /// Whether this is one of the four side faces.
+    #[must_use]
+    pub(crate) fn is_side(self) -> bool {
+        !matches!(self, Face::Near | Face::Far)
+    }
+
     #[inline]
-    fn vertices_with(self, view: &ViewFrustum, t: f64, ta: f64, near: f64, far: f64) -> [DVec3; 4] {
+    pub(crate) fn vertices_with(
+        self,
+        view: &ViewFrustum,
+        t: f64,
+        ta: f64,
+        near: f64,
+        far: f64,
+    ) -> [DVec3; 4] {
         match self.edges_with(t, ta) {
             Some([e0, e1]) => [e0 * near, e1 * near, e1 * far, e0 * far],
             None => {
@@ -291,7 +318,7 @@ pub fn visible_faces(view: &ViewFrustum, light_dir: DVec3) -> Result<VisibleFace
     ))
 }
 
-fn visible_with(t: f64, ta: f64, near_over_far: f64, l: DVec3) -> VisibleFaces {
+pub(crate) fn visible_with(t: f64, ta: f64, near_over_far: f64, l: DVec3) -> VisibleFaces {
     // v·y = (−Z)·(−L) = L.z; front faces when it is negative.
     let front = l.z < 0.0;
     let sign = if front { -1.0 } else { 1.0 };
@@ -534,50 +561,17 @@ pub(crate) fn visit_face_partitions(
         tan,
     };
     for &face in faces.faces() {
-        let is_side = !matches!(face, Face::Near | Face::Far);
-        // The candidate warp axes: Lloyd's bisector, and for a side face its depth axis. A
-        // candidate that cannot be built (a side edge along the light, the light along the near
-        // edge) is dropped; its error is reported only when no candidate is left.
-        let mut first_err = None;
-        let mut spaces = [None; 2];
-        match axis_with(face, tan, ta, l).and_then(|a| light_space_dir(light, a)) {
-            Ok(ls) => spaces[0] = Some(ls),
-            Err(e) => first_err = Some(e),
-        }
-        if is_side {
-            if let Some(ls) =
-                depth_axis_with(face, tan, ta, l).and_then(|a| light_space_dir(light, a).ok())
-            {
-                spaces[1] = Some(ls);
-            }
-        }
-        let count = if is_side { splits.k() } else { 1 };
+        let spaces = face_spaces(face, tan, ta, light);
+        let count = if face.is_side() { splits.k() } else { 1 };
         for j in 0..count {
-            let (a, b) = if is_side {
+            let (a, b) = if face.is_side() {
                 splits.range(j)
             } else {
                 (view.near(), view.near())
             };
             let vertices = face.vertices_with(view, tan, ta, a, b);
-            let mut best: Option<(DMat4, NPrime, FrustumError)> = None;
-            let mut err = first_err.clone();
-            for ls in spaces.iter().flatten() {
-                match fitter.fit(ls, &vertices, face, (a, b)) {
-                    Ok(c) => {
-                        if best.is_none_or(|b| c.2.storage_factor < b.2.storage_factor) {
-                            best = Some(c);
-                        }
-                    }
-                    Err(e) => {
-                        err.get_or_insert(e);
-                    }
-                }
-            }
-            let (matrix, n_prime, error) = best.ok_or_else(|| {
-                err.unwrap_or_else(|| {
-                    Error::Degenerate(format!("no warp axis for the {face:?} face"))
-                })
-            })?;
+            let (matrix, n_prime, error) =
+                fitter.best::<12>(&spaces, &vertices, &vertices, face, (a, b))?;
             visit(&FacePartition {
                 face,
                 shadow: ShadowMatrix::new(matrix, light, n_prime, a, b),
@@ -599,30 +593,93 @@ fn singular(face: Face, a: f64, b: f64) -> Error {
     ))
 }
 
-/// What every face part's fit shares: the face rule, the frustum's extent along the light
+/// The candidate warp axes of a face as light spaces: Lloyd's bisector, and for a side face its
+/// depth axis (module docs). A candidate that cannot be built (a side edge along the light, the
+/// light along the near edge) is left out; the bisector's error is kept to report when no
+/// candidate is left.
+pub(crate) struct FaceSpaces {
+    spaces: [Option<LightSpace>; 2],
+    first_err: Option<Error>,
+}
+
+pub(crate) fn face_spaces(face: Face, tan: f64, ta: f64, light: LightDir) -> FaceSpaces {
+    let l = light.as_dvec3();
+    let mut out = FaceSpaces {
+        spaces: [None; 2],
+        first_err: None,
+    };
+    match axis_with(face, tan, ta, l).and_then(|a| light_space_dir(light, a)) {
+        Ok(ls) => out.spaces[0] = Some(ls),
+        Err(e) => out.first_err = Some(e),
+    }
+    if face.is_side() {
+        out.spaces[1] =
+            depth_axis_with(face, tan, ta, l).and_then(|a| light_space_dir(light, a).ok());
+    }
+    out
+}
+
+/// What every face part's fit shares: the face rule, the extent along the light to cover
 /// (toward-the-light coordinate), the unit light direction and tan θ.
-struct PartFitter {
-    rule: FaceWarp,
-    y_range: (f64, f64),
-    l: DVec3,
-    tan: f64,
+pub(crate) struct PartFitter {
+    pub(crate) rule: FaceWarp,
+    pub(crate) y_range: (f64, f64),
+    pub(crate) l: DVec3,
+    pub(crate) tan: f64,
 }
 
 impl PartFitter {
-    /// One face part's map in the light space `ls`: the face rule's n′ from the part's extent
-    /// `[d_n, d_f]` along `ls.z`, the warp fitted to the part's vertices swept along the light
-    /// over the frustum's extent, and its error at the vertices.
-    fn fit(
+    /// The face part's map with the candidate axis of smaller measured S̄ (either is a valid map
+    /// of the part). `points` set n′ (their extent `[d_n, d_f]` along the axis) and s, t (swept
+    /// along the light over `y_range` for the depth); the error is measured at `measured`.
+    /// `S` holds the swept points: at least `3 × points.len()`.
+    pub(crate) fn best<const S: usize>(
         &self,
-        ls: &crate::maps::LightSpace,
-        vertices: &[DVec3; 4],
+        spaces: &FaceSpaces,
+        points: &[DVec3],
+        measured: &[DVec3],
+        face: Face,
+        (a, b): (f64, f64),
+    ) -> Result<(DMat4, NPrime, FrustumError)> {
+        let mut best: Option<(DMat4, NPrime, FrustumError)> = None;
+        let mut err = spaces.first_err.clone();
+        for ls in spaces.spaces.iter().flatten() {
+            match self.fit::<S>(ls, points, measured, face, (a, b)) {
+                Ok(c) => {
+                    if best.is_none_or(|b| c.2.storage_factor < b.2.storage_factor) {
+                        best = Some(c);
+                    }
+                }
+                Err(e) => {
+                    err.get_or_insert(e);
+                }
+            }
+        }
+        best.ok_or_else(|| {
+            err.unwrap_or_else(|| Error::Degenerate(format!("no warp axis for the {face:?} face")))
+        })
+    }
+
+    /// One face part's map in the light space `ls`: the face rule's n′ from the extent
+    /// `[d_n, d_f]` of `points` along `ls.z`, the warp fitted to `points` swept along the light
+    /// over `y_range`, and its error at `measured`.
+    fn fit<const S: usize>(
+        &self,
+        ls: &LightSpace,
+        points: &[DVec3],
+        measured: &[DVec3],
         face: Face,
         (a, b): (f64, f64),
     ) -> Result<(DMat4, NPrime, FrustumError)> {
         let (y_lo, y_hi) = self.y_range;
         let (mut d_n, mut d_f) = (f64::INFINITY, f64::NEG_INFINITY);
-        let mut swept = [DVec3::ZERO; 12];
-        for (i, v) in vertices.iter().enumerate() {
+        let mut swept = [DVec3::ZERO; S];
+        if 3 * points.len() > S {
+            return Err(Error::Degenerate(format!(
+                "the {face:?} face part has more vertices than the fit holds"
+            )));
+        }
+        for (i, v) in points.iter().enumerate() {
             let d = ls.z.dot(*v);
             d_n = d_n.min(d);
             d_f = d_f.max(d);
@@ -631,9 +688,7 @@ impl PartFitter {
             swept[3 * i + 1] = *v + (y_lo - y) * ls.y;
             swept[3 * i + 2] = *v + (y_hi - y) * ls.y;
         }
-        let n_prime = if matches!(face, Face::Near | Face::Far) {
-            NPrime::UNWARPED
-        } else {
+        let n_prime = if face.is_side() {
             match self.rule {
                 FaceWarp::Uniform => NPrime::UNWARPED,
                 FaceWarp::Psm => NPrime::try_finite(d_n).unwrap_or(NPrime::UNWARPED),
@@ -641,10 +696,12 @@ impl PartFitter {
                     NPrime::try_finite(d_n + (d_n * d_f).sqrt()).unwrap_or(NPrime::UNWARPED)
                 }
             }
+        } else {
+            NPrime::UNWARPED
         };
-        let matrix = fit_warp(&swept, ls, n_prime)?;
+        let matrix = fit_warp(&swept[..3 * points.len()], ls, n_prime)?;
         let error =
-            vertex_max(&matrix, self.l, self.tan, vertices).ok_or_else(|| singular(face, a, b))?;
+            vertex_max(&matrix, self.l, self.tan, measured).ok_or_else(|| singular(face, a, b))?;
         Ok((matrix, n_prime, error))
     }
 }

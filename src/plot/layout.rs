@@ -7,7 +7,6 @@
 use super::chart::{build_chart, frame, Axis, FONT, PALETTE};
 use super::{Fail, Figure};
 use crate::maps::atlas::Viewport;
-use crate::maps::faces::Face;
 use crate::maps::WarpRule;
 use crate::scheme::{scheme, Partition, Region};
 use crate::ViewFrustum;
@@ -28,12 +27,7 @@ pub(super) struct Fig8 {
 fn face_name(r: Region) -> &'static str {
     match r {
         Region::Frustum => "frustum",
-        Region::Face(Face::Bottom) => "bottom",
-        Region::Face(Face::Right) => "right",
-        Region::Face(Face::Top) => "top",
-        Region::Face(Face::Left) => "left",
-        Region::Face(Face::Near) => "near",
-        Region::Face(_) => "face",
+        Region::Face(f) => f.name(),
     }
 }
 

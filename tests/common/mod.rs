@@ -7,6 +7,7 @@
 #[cfg(feature = "cli")]
 pub mod cli;
 pub mod faces;
+pub mod scene;
 
 use glam::DVec3;
 use proptest::prelude::*;

@@ -10,7 +10,7 @@ use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::frame::{
     frame, Aabb, Bound, Camera, CascadeSplits, Focus, FrameInput, FrameScheme, LightCase,
 };
-use shadow_aliasing::scheme::ADAPTIVE_RATIO;
+use shadow_aliasing::scheme::{face_rule, ADAPTIVE_RATIO};
 use shadow_aliasing::{Error, LightAngle, ViewFrustum};
 use std::fmt::Write as _;
 
@@ -113,14 +113,25 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
         (Some(s), _) => FrameScheme::Cascades { splits: s, rule: r },
         (None, PartitionName::Single) => {
             if sc.overlap.is_some() {
-                return Err(Error::invalid("overlap", "needs cascades (--partition, --splits or --fractions)"));
+                return Err(Error::invalid(
+                    "overlap",
+                    "needs cascades (--partition, --splits or --fractions)",
+                ));
             }
             FrameScheme::Single(r)
         }
-        (None, PartitionName::Uniform) => FrameScheme::Cascades { splits: scheme_of(SplitScheme::Uniform), rule: r },
-        (None, PartitionName::Log) => FrameScheme::Cascades { splits: scheme_of(SplitScheme::SelfSimilar), rule: r },
+        (None, PartitionName::Uniform) => FrameScheme::Cascades {
+            splits: scheme_of(SplitScheme::Uniform),
+            rule: r,
+        },
+        (None, PartitionName::Log) => FrameScheme::Cascades {
+            splits: scheme_of(SplitScheme::SelfSimilar),
+            rule: r,
+        },
         (None, PartitionName::Practical) => FrameScheme::Cascades {
-            splits: scheme_of(SplitScheme::Practical { lambda: sch.lambda.unwrap_or(DEFAULT_LAMBDA) }),
+            splits: scheme_of(SplitScheme::Practical {
+                lambda: sch.lambda.unwrap_or(DEFAULT_LAMBDA),
+            }),
             rule: r,
         },
         (None, PartitionName::Adaptive) => FrameScheme::Cascades {
@@ -130,12 +141,10 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
             }),
             rule: r,
         },
-        (None, PartitionName::Faces) => {
-            return Err(Error::invalid(
-                "partition",
-                "faces is not yet focused on a scene: use it without --receivers, --casters and --depth-range",
-            ))
-        }
+        (None, PartitionName::Faces) => FrameScheme::Faces {
+            rule: face_rule(r),
+            k,
+        },
     };
     let receivers = boxes(&sc.receivers, "receivers")?;
     let casters = boxes(&sc.casters, "casters")?;
@@ -188,7 +197,9 @@ fn json(f: &shadow_aliasing::frame::Frame) -> String {
             .collect();
         let _ = writeln!(
             s,
-            "    {{\"near\": {}, \"far\": {}, \"split\": [{}, {}], \"blend\": [{}, {}], \"n_prime\": {}, \"max_mx\": {}, \"max_mz\": {}, \"storage_factor\": {}, \"texel_world\": {}, \"body_vertices\": {}, \"matrix\": [{}]}}{}",
+            "    {{{}\"near\": {}, \"far\": {}, \"split\": [{}, {}], \"blend\": [{}, {}], \"n_prime\": {}, \"max_mx\": {}, \"max_mz\": {}, \"storage_factor\": {}, \"texel_world\": {}, \"body_vertices\": {}, \"matrix\": [{}]}}{}",
+            m.face
+                .map_or(String::new(), |f| format!("\"face\": \"{}\", ", f.name())),
             json_num(m.shadow.near()),
             json_num(m.shadow.far()),
             json_num(m.split.0),
@@ -238,9 +249,11 @@ fn text(a: &WarpArgs, f: &shadow_aliasing::frame::Frame) -> String {
     for (i, m) in f.maps().iter().enumerate() {
         let _ = writeln!(
             s,
-            "\nmap {} of {}: B's depth [{}, {}] ({} vertices), split [{}, {}], n′ = {}",
+            "\nmap {} of {}{}: B's depth [{}, {}] ({} vertices), split [{}, {}], n′ = {}",
             i + 1,
             f.len(),
+            m.face
+                .map_or(String::new(), |f| format!(" ({} face)", f.name())),
             sig(m.shadow.near()),
             sig(m.shadow.far()),
             m.body().len(),

@@ -239,7 +239,7 @@ pub fn partitions(
             storage_factor: p.storage_factor,
             face: match p.region {
                 Region::Frustum => None,
-                Region::Face(face) => Some(format!("{face:?}").to_ascii_lowercase()),
+                Region::Face(face) => Some(face.name().to_owned()),
             },
         })
         .collect())
