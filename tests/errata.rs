@@ -11,7 +11,7 @@
 
 mod common;
 use common::faces::faces_with_axis;
-use common::{close, top_line_crossing_x};
+use common::{close, top_line_crossing_x, zhang_printed};
 use glam::DVec3;
 use shadow_aliasing::analytic::global::{zhang_ep, zhang_ep_local, zhang_eq, zhang_eq_local};
 use shadow_aliasing::analytic::partition::{
@@ -1296,52 +1296,6 @@ mod checks {
         tilted(v, theta, TiltSide::InFront, NPrime::finite(lambda).unwrap())
     }
 
-    /// Zhang's printed Appendix forms, as printed.
-    mod printed {
-        pub fn mu(n: f64, f: f64, phi: f64, theta: f64) -> f64 {
-            let (tp, tt) = (phi.tan(), theta.tan());
-            if theta >= phi {
-                (n * tp / tt + f - n + f * tp / tt) * theta.sin()
-            } else {
-                2.0 * f * tp * theta.cos()
-            }
-        }
-        pub fn tan_phi_w(n: f64, f: f64, phi: f64, lambda: f64, theta: f64) -> f64 {
-            if theta >= phi {
-                f * phi.tan() / (mu(n, f, phi, theta) + lambda)
-            } else {
-                f * phi.tan() / lambda
-            }
-        }
-        pub fn f_p(n: f64, f: f64, phi: f64, lambda: f64, theta: f64) -> f64 {
-            let (tp, tt, s) = (phi.tan(), theta.tan(), theta.sin());
-            if theta >= phi {
-                let k = f - n + (f + n) * tp / tt;
-                s * s * k / (tp * lambda * (lambda + k * s))
-            } else {
-                2.0 * f * s * s / (lambda * (lambda + 2.0 * f * tp * theta.cos()) * tp)
-            }
-        }
-        pub fn f_q(n: f64, f: f64, phi: f64, lambda: f64, theta: f64) -> f64 {
-            let (tp, tt, s) = (phi.tan(), theta.tan(), theta.sin());
-            if theta >= phi {
-                2.0 * f * s / (lambda + (f - n) * (1.0 - tp / tt) * s)
-            } else {
-                2.0 * f * s / lambda
-            }
-        }
-        pub fn g(n: f64, f: f64, phi: f64, lambda: f64, theta: f64, y: f64) -> f64 {
-            let (tp, tt, s) = (phi.tan(), theta.tan(), theta.sin());
-            let r = if theta >= phi { n } else { f };
-            lambda / s - r + (r * tp - y) / tt
-        }
-        /// The θ ∈ [φ, π/2] form.
-        pub fn z_w(n: f64, phi: f64, lambda: f64, theta: f64, y: f64, z: f64) -> f64 {
-            let (tp, tt) = (phi.tan(), theta.tan());
-            (z - n + n * tp / tt - y / tt) * theta.sin() + lambda
-        }
-    }
-
     pub fn zh_eq8_eq9() -> usize {
         let e = Entry::bullet(ZH, "§2.1, Eq 8 \"≈\"");
         let v = view(1.0, 100.0, FRAC_PI_6);
@@ -1373,14 +1327,14 @@ mod checks {
         let (n, f, phi, theta, lambda) = (1.0, 100.0, FRAC_PI_6, 60f64.to_radians(), 11.0);
         let v = view(n, f, phi);
         let w = zt(&v, theta, lambda);
-        let pr = printed::tan_phi_w(n, f, phi, lambda, theta);
+        let pr = zhang_printed::tan_phi_w(n, f, phi, lambda, theta);
         e.has(format!(
             "printed {}, fitted (twin) {}",
             d(pr, 4),
             d(w.half_extent_x, 4)
         ));
         let b = f * phi.tan();
-        let zw = printed::z_w(n, phi, lambda, theta, b, f);
+        let zw = zhang_printed::z_w(n, f, phi, lambda, theta, b, f);
         e.has(format!(
             "the far-top corner has s = {}",
             d(0.5 * b / (zw * pr) + 0.5, 3)
@@ -1394,8 +1348,8 @@ mod checks {
         let v = view(n, f, phi);
         for (deg, digits) in [(60.0f64, 3usize), (20.0, 2)] {
             let th = deg.to_radians();
-            let g = printed::g(n, f, phi, lambda, th, 0.0);
-            let pr = printed::f_p(n, f, phi, lambda, th) * (z + g).powi(2) / z;
+            let g = zhang_printed::g(n, f, phi, lambda, th, 0.0);
+            let pr = zhang_printed::f_p(n, f, phi, lambda, th) * (z + g).powi(2) / z;
             let m = 2.0 * at(&v, &zt(&v, th, lambda).shadow, 0.0, 0.0, z).mz;
             if deg == 60.0 {
                 e.has(format!(
@@ -1426,8 +1380,8 @@ mod checks {
             d(m, 3)
         ));
         let th = 60f64.to_radians();
-        let g = printed::g(n, f, phi, 0.2, th, 0.0);
-        let pr = printed::f_q(n, f, phi, 0.2, th) * (1.0 + g);
+        let g = zhang_printed::g(n, f, phi, 0.2, th, 0.0);
+        let pr = zhang_printed::f_q(n, f, phi, 0.2, th) * (1.0 + g);
         let m = 2.0 * at(&v, &zt(&v, th, 0.2).shadow, 0.0, 0.0, 1.0).mx;
         e.has(format!(
             "printed F_q(z + G)/z = {}, measured {}",

@@ -2,6 +2,7 @@
 //! matrix (`measure::tilted_twin`) and measured with exact derivatives.
 
 mod common;
+use common::zhang_printed;
 use common::{config, rel, tilted_view};
 use glam::DVec3;
 use proptest::prelude::*;
@@ -241,56 +242,6 @@ prop_assert!(v.is_finite());
     }
 }
 
-/// The printed Appendix forms, written out from the paper, for the errata comparisons.
-mod printed {
-    pub fn tan_phi_w(n: f64, f: f64, phi: f64, lambda: f64, theta: f64) -> f64 {
-        let mu = mu(n, f, phi, theta);
-        if theta >= phi {
-            f * phi.tan() / (mu + lambda)
-        } else {
-            f * phi.tan() / lambda
-        }
-    }
-    pub fn mu(n: f64, f: f64, phi: f64, theta: f64) -> f64 {
-        let (tp, tt) = (phi.tan(), theta.tan());
-        if theta >= phi {
-            (n * tp / tt + f - n + f * tp / tt) * theta.sin()
-        } else {
-            2.0 * f * tp * theta.cos()
-        }
-    }
-    pub fn f_p(n: f64, f: f64, phi: f64, lambda: f64, theta: f64) -> f64 {
-        let (tp, tt, s) = (phi.tan(), theta.tan(), theta.sin());
-        if theta >= phi {
-            let k = f - n + (f + n) * tp / tt;
-            s * s * k / (tp * lambda * (lambda + k * s))
-        } else {
-            2.0 * f * s * s / (lambda * (lambda + 2.0 * f * tp * theta.cos()) * tp)
-        }
-    }
-    pub fn f_q(n: f64, f: f64, phi: f64, lambda: f64, theta: f64) -> f64 {
-        let (tp, tt, s) = (phi.tan(), theta.tan(), theta.sin());
-        if theta >= phi {
-            2.0 * f * s / (lambda + (f - n) * (1.0 - tp / tt) * s)
-        } else {
-            2.0 * f * s / lambda
-        }
-    }
-    pub fn g(n: f64, f: f64, phi: f64, lambda: f64, theta: f64, y: f64) -> f64 {
-        let (tp, tt, s) = (phi.tan(), theta.tan(), theta.sin());
-        let r = if theta >= phi { n } else { f };
-        lambda / s - r + (r * tp - y) / tt
-    }
-    pub fn z_w(n: f64, f: f64, phi: f64, lambda: f64, theta: f64, y: f64, z: f64) -> f64 {
-        let (tp, tt) = (phi.tan(), theta.tan());
-        if theta >= phi {
-            (z - n + n * tp / tt - y / tt) * theta.sin() + lambda
-        } else {
-            (f * tp - (f - z) * tt - y) * theta.cos() + lambda
-        }
-    }
-}
-
 /// Printed μ, z_w, G agree with the twin; printed F_q agrees while the far corners bound W.
 #[test]
 fn printed_mu_z_w_g_f_q_agree_with_the_twin() {
@@ -299,17 +250,17 @@ fn printed_mu_z_w_g_f_q_agree_with_the_twin() {
     for theta in [0.2, 0.5, 0.9, 1.2, 1.5] {
         let lambda = 11.0;
         let w = twin(&view, theta, NPrime::finite(lambda).unwrap());
-        assert!(rel(printed::mu(n, f, phi, theta), w.depth_range) < 1e-12);
+        assert!(rel(zhang_printed::mu(n, f, phi, theta), w.depth_range) < 1e-12);
         for (y, z) in [(0.0, 1.0), (-20.0, 40.0), (57.0, 99.0)] {
             let p = DVec3::new(0.0, y, -z);
             let zw = p.dot(w.warp_axis) - w.z_min + lambda;
-            assert!(rel(printed::z_w(n, f, phi, lambda, theta, y, z), zw) < 1e-12);
-            let g = printed::g(n, f, phi, lambda, theta, y);
+            assert!(rel(zhang_printed::z_w(n, f, phi, lambda, theta, y, z), zw) < 1e-12);
+            let g = zhang_printed::g(n, f, phi, lambda, theta, y);
             assert!(rel((z + g) * theta.sin(), zw) < 1e-12);
             let m = measured(&view, &w, 0.0, y, z);
             assert!(
                 rel(
-                    printed::f_q(n, f, phi, lambda, theta) * (z + g) / z,
+                    zhang_printed::f_q(n, f, phi, lambda, theta) * (z + g) / z,
                     2.0 * m.mx
                 ) < 1e-9
             );
@@ -325,20 +276,20 @@ fn printed_tan_phi_w_cuts_off_the_far_top_corners() {
     let (n, f, phi, theta, lambda) = (1.0, 100.0, FRAC_PI_6, 60f64.to_radians(), 11.0);
     let view = ViewFrustum::new(n, f, phi).unwrap();
     let w = twin(&view, theta, NPrime::finite(lambda).unwrap());
-    let printed = printed::tan_phi_w(n, f, phi, lambda, theta);
+    let printed = zhang_printed::tan_phi_w(n, f, phi, lambda, theta);
     let fitted = zhang_tan_phi_w(&view, lambda, LightAngle::new(theta).unwrap()).unwrap();
     assert!(rel(fitted, w.half_extent_x) < 1e-12);
     assert!((printed - 0.4586).abs() < 5e-5, "{printed}");
     assert!((fitted - 0.8471).abs() < 5e-5, "{fitted}");
     // The far-top corner (x = f tan φ, y = f tan φ) under the printed W: s = ½ x/(z_w tan φ_w) + ½.
     let b = f * phi.tan();
-    let zw = printed::z_w(n, f, phi, lambda, theta, b, f);
+    let zw = zhang_printed::z_w(n, f, phi, lambda, theta, b, f);
     let s = 0.5 * b / (zw * printed) + 0.5;
     assert!((s - 1.4235).abs() < 5e-4, "{s}");
     // Overhead they agree.
     assert!(
         rel(
-            printed::tan_phi_w(n, f, phi, lambda, FRAC_PI_2),
+            zhang_printed::tan_phi_w(n, f, phi, lambda, FRAC_PI_2),
             zhang_tan_phi_w(&view, lambda, LightAngle::new(FRAC_PI_2).unwrap()).unwrap()
         ) < 1e-12
     );
@@ -361,8 +312,8 @@ fn printed_f_p_disagrees_with_the_twin() {
         ),
     ] {
         let theta = deg.to_radians();
-        let g = printed::g(n, f, phi, lambda, theta, 0.0);
-        let pr = printed::f_p(n, f, phi, lambda, theta) * (z + g).powi(2) / z;
+        let g = zhang_printed::g(n, f, phi, lambda, theta, 0.0);
+        let pr = zhang_printed::f_p(n, f, phi, lambda, theta) * (z + g).powi(2) / z;
         let m = measured(
             &view,
             &twin(&view, theta, NPrime::finite(lambda).unwrap()),
@@ -409,8 +360,8 @@ fn printed_f_q_and_eq8_need_far_corners_to_bound_w() {
     );
     let theta = 60f64.to_radians();
     let (lambda, y, z) = (0.2, 0.0, 1.0);
-    let g = printed::g(n, f, phi, lambda, theta, y);
-    let pr = printed::f_q(n, f, phi, lambda, theta) * (z + g) / z;
+    let g = zhang_printed::g(n, f, phi, lambda, theta, y);
+    let pr = zhang_printed::f_q(n, f, phi, lambda, theta) * (z + g) / z;
     let m = measured(
         &view,
         &twin(&view, theta, NPrime::finite(lambda).unwrap()),
@@ -426,7 +377,7 @@ fn printed_f_q_and_eq8_need_far_corners_to_bound_w() {
     let th = LightAngle::new(theta).unwrap();
     assert!(
         rel(
-            printed::f_q(n, f, phi, l, theta),
+            zhang_printed::f_q(n, f, phi, l, theta),
             zhang_f_q(&view, l, th).unwrap()
         ) < 1e-12
     );

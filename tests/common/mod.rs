@@ -8,6 +8,7 @@
 pub mod cli;
 pub mod faces;
 pub mod scene;
+pub mod zhang_printed;
 
 use glam::DVec3;
 use proptest::prelude::*;
