@@ -795,6 +795,18 @@ mod checks {
         (worse, all)
     }
 
+    /// [`worse_than_uniform`] at f/n = 100 and 1000 (n = 1, θ = 30°): the two counts and the
+    /// number of directions.
+    fn worse_at_100_and_1000<R: Fn(DVec3) -> FrustumError>(
+        rule: impl Fn(ViewFrustum) -> R,
+    ) -> (usize, usize, usize) {
+        let v1 = view(1.0, 100.0, 30f64.to_radians());
+        let v2 = view(1.0, 1000.0, 30f64.to_radians());
+        let (a, all) = worse_than_uniform(&v1, rule(v1));
+        let (b, _) = worse_than_uniform(&v2, rule(v2));
+        (a, b, all)
+    }
+
     pub fn l06_11_counts() -> usize {
         let e = Entry::numbered(L06, 11);
         let sin_rule = |v: ViewFrustum| {
@@ -808,10 +820,7 @@ mod checks {
                 fitted(&v, l, np)
             }
         };
-        let v1 = view(1.0, 100.0, 30f64.to_radians());
-        let v2 = view(1.0, 1000.0, 30f64.to_radians());
-        let (a, all) = worse_than_uniform(&v1, sin_rule(v1));
-        let (b, _) = worse_than_uniform(&v2, sin_rule(v2));
+        let (a, b, all) = worse_at_100_and_1000(sin_rule);
         formatted();
         formatted();
         formatted();
@@ -951,10 +960,7 @@ mod checks {
                 frustum_max(&v, &b.shadow_map()).unwrap()
             }
         };
-        let v1 = view(1.0, 100.0, 30f64.to_radians());
-        let v2 = view(1.0, 1000.0, 30f64.to_radians());
-        let (a, all) = worse_than_uniform(&v1, rule(v1));
-        let (b, _) = worse_than_uniform(&v2, rule(v2));
+        let (a, b, all) = worse_at_100_and_1000(rule);
         formatted();
         formatted();
         formatted();

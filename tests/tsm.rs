@@ -421,47 +421,16 @@ fn general_case_restricts_to_the_bound() {
 #[test]
 fn invalid_options() {
     let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
-    let l = DVec3::NEG_Y;
-    let e = tsm(
-        &view,
-        l,
-        TsmOptions {
-            focus: 0.0,
-            search: TsmSearch::EightyPercent,
-        },
-    )
-    .unwrap_err();
-    assert!(e.to_string().starts_with("focus "), "{e}");
-    let e = tsm(
-        &view,
-        l,
-        TsmOptions {
-            focus: 200.0,
-            search: TsmSearch::EightyPercent,
-        },
-    )
-    .unwrap_err();
-    assert!(e.to_string().starts_with("focus "), "{e}");
-    let e = tsm(
-        &view,
-        l,
-        TsmOptions {
-            focus: 10.0,
-            search: TsmSearch::Line(1.0),
-        },
-    )
-    .unwrap_err();
-    assert!(e.to_string().starts_with("xi "), "{e}");
-    let e = tsm(
-        &view,
-        l,
-        TsmOptions {
-            focus: 10.0,
-            search: TsmSearch::Iterative { map_lines: 1 },
-        },
-    )
-    .unwrap_err();
-    assert!(e.to_string().starts_with("map_lines "), "{e}");
+    let cases = [
+        (0.0, TsmSearch::EightyPercent, "focus "),
+        (200.0, TsmSearch::EightyPercent, "focus "),
+        (10.0, TsmSearch::Line(1.0), "xi "),
+        (10.0, TsmSearch::Iterative { map_lines: 1 }, "map_lines "),
+    ];
+    for (focus, search, name) in cases {
+        let e = tsm(&view, DVec3::NEG_Y, TsmOptions { focus, search }).unwrap_err();
+        assert!(e.to_string().starts_with(name), "{e}");
+    }
 }
 
 /// Martin & Tan's rule near the dueling-frusta configuration: 0.1° from straight behind the 80 %
