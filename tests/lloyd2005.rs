@@ -15,7 +15,7 @@ use shadow_aliasing::measure::twin::overhead_map;
 use shadow_aliasing::measure::{frustum_max, point_error};
 use shadow_aliasing::{NPrime, Resolutions, ViewFrustum};
 mod common;
-use common::{close, config, REL};
+use common::{any_f64, close, config, REL};
 
 /// α log-uniform in [1.01, 10⁴].
 fn alpha() -> impl Strategy<Value = f64> {
@@ -326,16 +326,6 @@ fn errata_s3_1_log_parameterisation_unnormalised() {
     // that any map covering [1, α] with one s-unit can reach.
     let unnormalised = 1.0 / (2.0 * th.tan());
     assert!(close(unnormalised, 0.5, 1e-15) && unnormalised < limit);
-}
-
-fn any_f64() -> impl Strategy<Value = f64> {
-    prop_oneof![
-        prop::num::f64::ANY,
-        (-300.0f64..300.0).prop_map(|e| 10f64.powf(e)),
-        Just(f64::INFINITY),
-        Just(1.0),
-        Just(-1.0),
-    ]
 }
 
 proptest! {

@@ -13,7 +13,7 @@ use shadow_aliasing::measure::twin::overhead_map;
 use shadow_aliasing::measure::{frustum_max, frustum_max_sampled, point_error};
 use shadow_aliasing::{NPrime, Resolutions, ViewFrustum};
 mod common;
-use common::{close, config, frustum, REL};
+use common::{any_f64, close, config, frustum, REL};
 
 fn resolutions() -> impl Strategy<Value = Resolutions> {
     (1.0f64..4096.0, 1.0f64..4096.0, 1.0f64..4096.0)
@@ -323,16 +323,6 @@ fn errata_app_c_drops_res_i() {
         1.0,
         1e-15
     ));
-}
-
-fn any_f64() -> impl Strategy<Value = f64> {
-    prop_oneof![
-        prop::num::f64::ANY,
-        (-300.0f64..300.0).prop_map(|e| 10f64.powf(e)),
-        Just(f64::INFINITY),
-        Just(0.0),
-        Just(1.0),
-    ]
 }
 
 proptest! {

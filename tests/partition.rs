@@ -15,7 +15,7 @@ use shadow_aliasing::measure::twin::{
 use shadow_aliasing::{Error, ViewFrustum};
 use std::f64::consts::FRAC_PI_2;
 mod common;
-use common::{close, config, frustum, REL};
+use common::{any_f64, close, config, frustum, REL};
 
 fn scheme() -> impl Strategy<Value = SplitScheme> {
     prop_oneof![
@@ -393,15 +393,6 @@ fn errata_eq22_eq23_drop_constant_factors() {
             assert!((printed22 - 252.9822).abs() < 1e-3 && printed23 == 8000.0);
         }
     }
-}
-
-fn any_f64() -> impl Strategy<Value = f64> {
-    prop_oneof![
-        prop::num::f64::ANY,
-        (-300.0f64..300.0).prop_map(|e| 10f64.powf(e)),
-        Just(f64::INFINITY),
-        Just(1.0),
-    ]
 }
 
 proptest! {

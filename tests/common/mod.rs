@@ -145,3 +145,16 @@ pub fn top_line_crossing_x(view: &ViewFrustum, eps: f64) -> f64 {
         .fold(f64::INFINITY, f64::min);
     (cn + (m - cn.dot(l)) * l).x
 }
+
+/// Any `f64` (NaN and infinities included) with the values where formulas break weighted in:
+/// powers of ten over the whole range, ∞, 0, 1 and −1. The robustness tests' inputs.
+pub fn any_f64() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        prop::num::f64::ANY,
+        (-300.0f64..300.0).prop_map(|e| 10f64.powf(e)),
+        Just(f64::INFINITY),
+        Just(0.0),
+        Just(1.0),
+        Just(-1.0),
+    ]
+}
