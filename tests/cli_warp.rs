@@ -6,28 +6,28 @@
 use serde_json::Value;
 
 mod common;
-use common::cli::run;
+use common::cli::{
+    assert_error, assert_infinite_view_refused, assert_lambda_refused, run, run_failing, set,
+    warp_args,
+};
 use common::close;
 
 #[allow(clippy::approx_constant)] // the command line's 0.5236 of issue 3, not π/6
 const HALF_FOV: f64 = 0.5236;
 
-fn warp_json(extra: &[&str]) -> Value {
-    let mut args = vec![
-        "warp",
-        "--near",
-        "1",
-        "--far",
-        "100",
-        "--half-fov",
-        "0.5236",
-        "--json",
-    ];
-    args.extend_from_slice(extra);
-    let (code, out, err) = run(&args);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    assert!(err.is_empty(), "{err}");
-    serde_json::from_str(&out).unwrap_or_else(|e| panic!("{out}: {e}"))
+/// Two logarithmic partitions; with the light straight down and LiSPSM, docs/cli.md's example.
+const LOG_2: [&str; 4] = ["--partition", "log", "--k", "2"];
+
+/// `warp --json` at issue 3's view (n = 1, f = 100, θ = 0.5236), the light along `dir`, the
+/// warp `warp`, then `extra`: exit 0, nothing on stderr, the output parsed.
+fn warp_json(dir: &str, warp: &str, extra: &[&str]) -> Value {
+    common::cli::warp_json("0.5236", dir, warp, extra)
+}
+
+/// `warp` at n = 1, f = 100, θ = 0.5 with the light straight down and the warp `warp`, then
+/// `extra`: the base of the refused calls.
+fn overhead<'a>(warp: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
+    warp_args("0.5", "0,-1,0", warp, extra)
 }
 
 fn num(v: &Value) -> f64 {
@@ -98,7 +98,7 @@ fn check_shape_with(v: &Value, corners_inside: bool) -> Vec<Value> {
 
 #[test]
 fn lispsm_light_overhead_is_lloyd_2006_eq_12() {
-    let v = warp_json(&["--light-dir", "0,-1,0", "--warp", "lispsm"]);
+    let v = warp_json("0,-1,0", "lispsm", &[]);
     let parts = check_shape(&v);
     assert_eq!(parts.len(), 1);
     assert_eq!(
@@ -116,16 +116,7 @@ fn lispsm_light_overhead_is_lloyd_2006_eq_12() {
 
 #[test]
 fn log_partitions_with_lispsm_are_lloyd_2006_eq_18() {
-    let v = warp_json(&[
-        "--light-dir",
-        "0,-1,0",
-        "--warp",
-        "lispsm",
-        "--partition",
-        "log",
-        "--k",
-        "4",
-    ]);
+    let v = warp_json("0,-1,0", "lispsm", &["--partition", "log", "--k", "4"]);
     let parts = check_shape(&v);
     assert_eq!(parts.len(), 4);
     // Planes n (f/n)^{i/k}: 1, √10, 10, 10√10, 100.
@@ -142,21 +133,12 @@ fn log_partitions_with_lispsm_are_lloyd_2006_eq_18() {
 #[test]
 fn uniform_map_with_the_light_behind_is_lloyd_2006_eq_20() {
     // Light travelling along the view direction: S̄ = (f/n)² (Eq 20 with k = 1).
-    let v = warp_json(&["--light-dir", "0,0,-1", "--warp", "uniform"]);
+    let v = warp_json("0,0,-1", "uniform", &[]);
     check_shape(&v);
     assert!(close(num(&v["storage_factor"]), 1e4, 1e-9), "{v}");
     assert_eq!(v["partitions"][0]["n_prime"], "inf");
     // And with self-similar z-partitions: k (f/n)^{2/k} = 2 · 100 at k = 2.
-    let v = warp_json(&[
-        "--light-dir",
-        "0,0,-1",
-        "--warp",
-        "uniform",
-        "--partition",
-        "log",
-        "--k",
-        "2",
-    ]);
+    let v = warp_json("0,0,-1", "uniform", &LOG_2);
     check_shape(&v);
     assert!(close(num(&v["storage_factor"]), 200.0, 1e-9), "{v}");
 }
@@ -164,32 +146,15 @@ fn uniform_map_with_the_light_behind_is_lloyd_2006_eq_20() {
 #[test]
 fn face_partitions_are_lloyd_2006_eq_19_and_21() {
     // Overhead the light sees one face: S̄ = k ((f/n)^{1/k} − 1)/(2 tan θ) (Eq 19) = 2·9/(2 tan θ).
-    let v = warp_json(&[
-        "--light-dir",
-        "0,-1,0",
-        "--warp",
-        "lispsm",
-        "--partition",
-        "faces",
-        "--k",
-        "2",
-    ]);
+    let faces_2 = ["--partition", "faces", "--k", "2"];
+    let v = warp_json("0,-1,0", "lispsm", &faces_2);
     check_shape_with(&v, false);
     assert!(
         close(num(&v["storage_factor"]), 9.0 / HALF_FOV.tan(), 1e-9),
         "{v}"
     );
     // Behind: four side faces of k maps each and the near face, 4 k (a − 1)/2 + 1 = 37 (Eq 21).
-    let v = warp_json(&[
-        "--light-dir",
-        "0,0,-1",
-        "--warp",
-        "lispsm",
-        "--partition",
-        "faces",
-        "--k",
-        "2",
-    ]);
+    let v = warp_json("0,0,-1", "lispsm", &faces_2);
     let parts = check_shape_with(&v, false);
     assert_eq!(parts.len(), 9);
     assert!(close(num(&v["storage_factor"]), 37.0, 1e-9), "{v}");
@@ -222,16 +187,7 @@ fn every_warp_and_partition_gives_finite_matrices_for_a_tilted_light() {
     ];
     for w in warps {
         for (part, k) in [("single", "1"), ("practical", "3"), ("faces", "2")] {
-            let v = warp_json(&[
-                "--light-dir",
-                "0.3,-0.8,-0.4",
-                "--warp",
-                w,
-                "--partition",
-                part,
-                "--k",
-                k,
-            ]);
+            let v = warp_json("0.3,-0.8,-0.4", w, &["--partition", part, "--k", k]);
             let parts = check_shape_with(&v, part != "faces");
             assert!(num(&v["storage_factor"]) > 0.0, "{w} {part}: {v}");
             if part == "practical" {
@@ -239,29 +195,13 @@ fn every_warp_and_partition_gives_finite_matrices_for_a_tilted_light() {
             }
         }
     }
-    let v = warp_json(&["--light-dir", "0,-1,0", "--warp", "eta", "--eta", "-1"]);
+    let v = warp_json("0,-1,0", "eta", &["--eta", "-1"]);
     assert_eq!(v["partitions"][0]["n_prime"], "inf");
 }
 
 #[test]
 fn text_output_is_readable() {
-    let (code, out, err) = run(&[
-        "warp",
-        "--near",
-        "1",
-        "--far",
-        "100",
-        "--half-fov",
-        "0.5236",
-        "--light-dir",
-        "0,-1,0",
-        "--warp",
-        "lispsm",
-        "--partition",
-        "log",
-        "--k",
-        "2",
-    ]);
+    let (code, out, err) = run(&warp_args("0.5236", "0,-1,0", "lispsm", &LOG_2));
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("storage factor"), "{out}");
     assert!(out.contains("partition 1 of 2"), "{out}");
@@ -273,61 +213,16 @@ fn text_output_is_readable() {
 
 #[test]
 fn bad_arguments_are_one_line_and_a_non_zero_exit() {
-    let base = ["warp", "--far", "100", "--half-fov", "0.5"];
-    for (extra, needle) in [
-        (
-            vec!["--near", "-1", "--light-dir", "0,-1,0", "--warp", "lispsm"],
-            "near",
-        ),
-        (
-            vec!["--near", "1", "--light-dir", "0,0,0", "--warp", "lispsm"],
-            "light_dir",
-        ),
-        (
-            vec!["--near", "1", "--light-dir", "0,-1", "--warp", "lispsm"],
-            "--light-dir",
-        ),
-        (
-            vec!["--near", "1", "--light-dir", "0,-1,0", "--warp", "lsm"],
-            "--warp",
-        ),
-        (
-            vec![
-                "--near",
-                "1",
-                "--light-dir",
-                "0,-1,0",
-                "--warp",
-                "lispsm",
-                "--k",
-                "0",
-            ],
-            "k",
-        ),
-        (
-            vec!["--near", "1", "--light-dir", "0,-1,0", "--warp", "eta"],
-            "--eta",
-        ),
-        (
-            vec![
-                "--near",
-                "1",
-                "--light-dir",
-                "0,-1,0",
-                "--warp",
-                "eta",
-                "--eta",
-                "2",
-            ],
-            "eta",
-        ),
+    for (args, needle) in [
+        (set(overhead("lispsm", &[]), "--near", "-1"), "near"),
+        (warp_args("0.5", "0,0,0", "lispsm", &[]), "light_dir"),
+        (warp_args("0.5", "0,-1", "lispsm", &[]), "--light-dir"),
+        (overhead("lsm", &[]), "--warp"),
+        (overhead("lispsm", &["--k", "0"]), "k"),
+        (overhead("eta", &[]), "--eta"),
+        (overhead("eta", &["--eta", "2"]), "eta"),
     ] {
-        let mut args: Vec<&str> = base.to_vec();
-        args.extend(extra.iter());
-        let (code, out, err) = run(&args);
-        assert_ne!(code, 0, "{args:?}");
-        assert!(out.is_empty(), "{args:?}: {out}");
-        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        let (_, err) = run_failing(&args, "");
         assert!(err.contains(needle), "{args:?}: {err}");
     }
 }
@@ -359,16 +254,7 @@ fn docs_show_the_binarys_output() {
     assert_eq!(code, 0);
     assert_eq!(shown, out, "docs/cli.md's text example is stale");
     let shown: Value = serde_json::from_str(&block("```json\n")).unwrap();
-    let now = warp_json(&[
-        "--light-dir",
-        "0,-1,0",
-        "--warp",
-        "lispsm",
-        "--partition",
-        "log",
-        "--k",
-        "2",
-    ]);
+    let now = warp_json("0,-1,0", "lispsm", &LOG_2);
     fn same(a: &Value, b: &Value) -> bool {
         match (a, b) {
             (Value::Number(x), Value::Number(y)) => {
@@ -392,44 +278,20 @@ fn docs_show_the_binarys_output() {
 
 #[test]
 fn lambda_is_refused_unless_the_partition_is_practical() {
-    let base = [
-        "warp",
-        "--near",
-        "1",
-        "--far",
-        "100",
-        "--half-fov",
-        "0.5",
-        "--light-dir",
-        "0,-1,0",
-        "--warp",
-        "lispsm",
-    ];
     // It used to be ignored silently: `--lambda 0.3` printed the single map's S̄.
-    for (partition, k) in [
-        ("single", "1"),
-        ("uniform", "2"),
-        ("log", "2"),
-        ("adaptive", "2"),
-        ("faces", "2"),
-    ] {
-        let mut args = base.to_vec();
-        args.extend(["--partition", partition, "--k", k, "--lambda", "0.3"]);
-        let (code, out, err) = run(&args);
-        assert_eq!(code, 1, "{args:?}");
-        assert!(out.is_empty(), "{out}");
-        assert_eq!(
-            err,
-            format!(
-                "error: lambda is not an argument of --partition {partition} (only of --partition practical)\n"
-            )
-        );
-    }
+    assert_lambda_refused(
+        &overhead("lispsm", &[]),
+        &[
+            ("single", "1"),
+            ("uniform", "2"),
+            ("log", "2"),
+            ("adaptive", "2"),
+            ("faces", "2"),
+        ],
+    );
     // Practical: λ = 0 is the uniform partition, λ = 1 the logarithmic one, absent is 0.5.
     let sf = |extra: &[&str]| {
-        let mut a = vec!["--light-dir", "0,-1,0", "--warp", "lispsm", "--k", "2"];
-        a.extend_from_slice(extra);
-        num(&warp_json(&a)["storage_factor"])
+        num(&warp_json("0,-1,0", "lispsm", &[&["--k", "2"], extra].concat())["storage_factor"])
     };
     assert_eq!(
         sf(&["--partition", "practical", "--lambda", "0"]),
@@ -448,99 +310,46 @@ fn lambda_is_refused_unless_the_partition_is_practical() {
 
 #[test]
 fn negative_values_reach_the_domain_checks() {
-    let base = ["warp", "--near", "1", "--far", "100", "--half-fov", "0.5"];
-    for (extra, want) in [
+    for (args, want) in [
         (
-            vec!["--light-dir", "0,-1,0", "--warp", "eta", "--eta", "-inf"],
+            overhead("eta", &["--eta", "-inf"]),
             "error: eta must be a finite number (got -inf)",
         ),
         (
-            vec!["--light-dir", "0,-1,0", "--warp", "eta", "--eta", "-2"],
+            overhead("eta", &["--eta", "-2"]),
             "error: eta must lie in [-1, 1] (got -2)",
         ),
         (
-            vec![
-                "--light-dir",
-                "0,-1,0",
-                "--warp",
-                "lispsm",
-                "--partition",
-                "log",
-                "--k",
-                "-1",
-            ],
+            overhead("lispsm", &["--partition", "log", "--k", "-1"]),
             "error: k must lie in [1, 16] (got -1)",
         ),
         (
-            vec!["--light-dir", "0,-1,0", "--warp", "tsm", "--focus", "-2"],
+            overhead("tsm", &["--focus", "-2"]),
             "error: focus must be greater than 0 (got -2)",
         ),
         (
-            vec!["--light-dir", "0,-1,0", "--warp", "tsm", "--focus", "-inf"],
+            overhead("tsm", &["--focus", "-inf"]),
             "error: focus must be a finite number (got -inf)",
         ),
         (
-            vec![
-                "--light-dir",
-                "0,-1,0",
-                "--warp",
+            overhead(
                 "lispsm",
-                "--partition",
-                "practical",
-                "--k",
-                "2",
-                "--lambda",
-                "-1e-3",
-            ],
+                &["--partition", "practical", "--k", "2", "--lambda", "-1e-3"],
+            ),
             "error: lambda must lie in [0, 1] (got -0.001)",
         ),
     ] {
-        let mut args: Vec<&str> = base.to_vec();
-        args.extend(extra.iter());
-        let (code, out, err) = run(&args);
-        assert_eq!(
-            (code, out.as_str(), err.trim_end()),
-            (1, "", want),
-            "{args:?}"
-        );
+        assert_error(&args, want);
     }
-    for (flag, name) in [
-        ("--near", "near"),
-        ("--far", "far"),
-        ("--half-fov", "half_fov"),
-    ] {
-        let mut args = vec!["warp", "--near", "1", "--far", "100", "--half-fov", "0.5"];
-        let i = args.iter().position(|a| *a == flag).unwrap();
-        args[i + 1] = "-inf";
-        args.extend(["--light-dir", "0,-1,0", "--warp", "lispsm"]);
-        let (code, _, err) = run(&args);
-        assert_eq!(code, 1, "{args:?}");
-        assert_eq!(
-            err.trim_end(),
-            format!("error: {name} must be a finite number (got -inf)")
-        );
-    }
+    assert_infinite_view_refused("warp", &["--light-dir", "0,-1,0", "--warp", "lispsm"]);
     // η = −1 is a value, the unwarped map (Lloyd 2006 Eq 11); negative hints reach Filament's
     // rule; negative light components are a direction.
-    let v = warp_json(&["--light-dir", "-1,-1,-0.5", "--warp", "eta", "--eta", "-1"]);
+    let v = warp_json("-1,-1,-0.5", "eta", &["--eta", "-1"]);
     assert_eq!(v["partitions"][0]["n_prime"], "inf");
-    let (_, _, err) = run(&[
-        "warp",
-        "--near",
-        "1",
-        "--far",
-        "100",
-        "--half-fov",
-        "0.5",
-        "--light-dir",
-        "0,-1,0",
-        "--warp",
+    let (_, _, err) = run(&overhead(
         "filament",
-        "--near-hint",
-        "-1",
-        "--far-hint",
-        "-0.5",
-    ]);
+        &["--near-hint", "-1", "--far-hint", "-0.5"],
+    ));
     assert!(!err.contains("unexpected argument"), "{err}");
 }
 
@@ -548,27 +357,14 @@ fn negative_values_reach_the_domain_checks() {
 fn huge_light_directions_are_directions_and_numbers_in_messages_are_short() {
     // (1e308, 1e308, 1e308) is the direction (1, 1, 1): its squared length overflows, and it
     // used to be refused as a zero vector with three 309-digit numbers.
-    let huge = warp_json(&["--light-dir", "1e308,1e308,1e308", "--warp", "lispsm"]);
-    let unit = warp_json(&["--light-dir", "1,1,1", "--warp", "lispsm"]);
+    let huge = warp_json("1e308,1e308,1e308", "lispsm", &[]);
+    let unit = warp_json("1,1,1", "lispsm", &[]);
     let (a, b) = (num(&huge["storage_factor"]), num(&unit["storage_factor"]));
     assert!(a.is_finite() && close(a, b, 1e-12), "{a} {b}");
-    let (code, _, err) = run(&[
-        "warp",
-        "--near",
-        "1e300",
-        "--far",
-        "1e-300",
-        "--half-fov",
-        "0.5",
-        "--light-dir",
-        "0,-1,0",
-        "--warp",
-        "lispsm",
-    ]);
-    assert_eq!(code, 1);
-    assert_eq!(
-        err,
-        "error: far must be greater than near (got near=1e300, far=1e-300)\n"
+    let huge_near = set(overhead("lispsm", &[]), "--near", "1e300");
+    assert_error(
+        &set(huge_near, "--far", "1e-300"),
+        "error: far must be greater than near (got near=1e300, far=1e-300)",
     );
 }
 
@@ -579,57 +375,25 @@ fn huge_light_directions_are_directions_and_numbers_in_messages_are_short() {
 #[test]
 fn lispsm_and_ogre_names() {
     for name in ["lispsm", "lispsm-sin"] {
-        let v = warp_json(&["--light-dir", "0,0,-1", "--warp", name]);
+        let v = warp_json("0,0,-1", name, &[]);
         assert_eq!(v["partitions"][0]["n_prime"], "inf", "{name}");
     }
-    let v = warp_json(&["--light-dir", "0,0,-1", "--warp", "lispsm-fixed"]);
+    let v = warp_json("0,0,-1", "lispsm-fixed", &[]);
     assert_eq!(v["partitions"][0]["n_prime"], 11.0);
-    let v = warp_json(&["--light-dir", "0.3,-0.5,-0.8", "--warp", "ogre-ortho"]);
+    let v = warp_json("0.3,-0.5,-0.8", "ogre-ortho", &[]);
     assert!(close(num(&v["partitions"][0]["n_prime"]), 330.0, 1e-12));
-    let v = warp_json(&[
-        "--light-dir",
-        "0.3,-0.5,-0.8",
-        "--warp",
-        "ogre-ortho",
-        "--shadow-distance",
-        "50",
-    ]);
+    let v = warp_json("0.3,-0.5,-0.8", "ogre-ortho", &["--shadow-distance", "50"]);
     assert!(close(num(&v["partitions"][0]["n_prime"]), 55.0, 1e-12));
-    let (code, _, err) = run(&[
-        "warp",
-        "--near",
-        "1",
-        "--far",
-        "100",
-        "--half-fov",
-        "0.5",
-        "--light-dir",
-        "0,-1,0",
-        "--warp",
-        "ogre",
-        "--shadow-distance",
-        "50",
-    ]);
-    assert_eq!(code, 1, "{err}");
-    assert!(
-        err.contains("shadow_distance is only used by --warp ogre-ortho"),
-        "{err}"
-    );
-    let (code, _, err) = run(&[
-        "warp",
-        "--near",
-        "1",
-        "--far",
-        "100",
-        "--half-fov",
-        "0.5",
-        "--light-dir",
-        "0,-1,0",
-        "--warp",
-        "ogre-ortho",
-        "--shadow-distance",
-        "-2",
-    ]);
-    assert_eq!(code, 1, "{err}");
-    assert!(err.contains("shadow_distance"), "{err}");
+    for (warp, distance, needle) in [
+        (
+            "ogre",
+            "50",
+            "shadow_distance is only used by --warp ogre-ortho",
+        ),
+        ("ogre-ortho", "-2", "shadow_distance"),
+    ] {
+        let (code, err) = run_failing(&overhead(warp, &["--shadow-distance", distance]), "");
+        assert_eq!(code, 1, "{err}");
+        assert!(err.contains(needle), "{err}");
+    }
 }
