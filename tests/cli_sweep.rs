@@ -8,15 +8,27 @@ use std::path::Path;
 use std::process::Command;
 
 mod common;
-use common::cli::run;
+use common::cli::{
+    assert_error, assert_infinite_view_refused, assert_lambda_refused, run, run_bytes, run_failing,
+    set, view_args, warp_json,
+};
 use common::close;
+
+/// `sweep --near 1 --far 100 --half-fov 0.5` followed by `extra`.
+fn sweep_args<'a>(extra: &[&'a str]) -> Vec<&'a str> {
+    view_args("sweep", "0.5", extra)
+}
 
 /// Runs a sweep with n = 1, f = 100, θ = 0.5 and returns the rows.
 fn sweep(extra: &[&str]) -> Vec<(f64, f64, f64)> {
-    let mut args = vec!["sweep", "--near", "1", "--far", "100", "--half-fov", "0.5"];
-    args.extend_from_slice(extra);
+    let args = sweep_args(extra);
     let (code, out, err) = run(&args);
     assert_eq!(code, 0, "{args:?}: {err}");
+    csv_rows(&out)
+}
+
+/// The rows of a sweep's CSV, after its header line (which must be the documented one).
+fn csv_rows(out: &str) -> Vec<(f64, f64, f64)> {
     let mut lines = out.lines();
     assert_eq!(lines.next(), Some("elevation,azimuth,storage_factor"));
     lines
@@ -82,14 +94,7 @@ fn zenith_and_behind_match_lloyd_2006() {
 #[test]
 fn thread_count_does_not_change_a_byte() {
     let args = |t: &'static str| {
-        [
-            "sweep",
-            "--near",
-            "1",
-            "--far",
-            "1000",
-            "--half-fov",
-            "0.5236",
+        let grid = [
             "--warp",
             "lispsm-sin",
             "--elevations",
@@ -98,7 +103,8 @@ fn thread_count_does_not_change_a_byte() {
             "36",
             "--threads",
             t,
-        ]
+        ];
+        set(view_args("sweep", "0.5236", &grid), "--far", "1000")
     };
     let (c1, one, _) = run(&args("1"));
     let (c2, two, _) = run(&args("2"));
@@ -109,33 +115,19 @@ fn thread_count_does_not_change_a_byte() {
 
 #[test]
 fn bad_arguments_are_one_line_and_a_non_zero_exit() {
-    let base = ["sweep", "--near", "1", "--far", "100", "--half-fov", "0.5"];
     for (extra, needle) in [
-        (vec!["--warp", "lispsm", "--threads", "0"], "threads"),
-        (vec!["--warp", "lispsm", "--elevations", "0"], "elevations"),
-        (vec!["--warp", "lispsm", "--azimuths", "0"], "azimuths"),
-        (vec!["--warp", "lispsm", "--k", "99"], "k"),
-        (vec!["--warp", "nope"], "--warp"),
+        (&["--warp", "lispsm", "--threads", "0"][..], "threads"),
+        (&["--warp", "lispsm", "--elevations", "0"], "elevations"),
+        (&["--warp", "lispsm", "--azimuths", "0"], "azimuths"),
+        (&["--warp", "lispsm", "--k", "99"], "k"),
+        (&["--warp", "nope"], "--warp"),
     ] {
-        let mut args: Vec<&str> = base.to_vec();
-        args.extend(extra.iter());
-        let (code, out, err) = run(&args);
-        assert_ne!(code, 0, "{args:?}");
-        assert!(out.is_empty(), "{args:?}: {out}");
-        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        let args = sweep_args(extra);
+        let (_, err) = run_failing(&args, "");
         assert!(err.contains(needle), "{args:?}: {err}");
     }
-    let (code, _, err) = run(&[
-        "sweep",
-        "--near",
-        "2",
-        "--far",
-        "1",
-        "--half-fov",
-        "0.5",
-        "--warp",
-        "uniform",
-    ]);
+    let args = set(sweep_args(&["--warp", "uniform"]), "--near", "2");
+    let (code, _, err) = run(&set(args, "--far", "1"));
     assert_ne!(code, 0);
     assert_eq!(
         err.trim(),
@@ -193,14 +185,7 @@ fn run_within(args: &[&str], secs: u64) -> (i32, String, String) {
 
 #[test]
 fn thread_counts_outside_1_to_1024_are_refused_with_exit_2() {
-    let base = [
-        "sweep",
-        "--near",
-        "1",
-        "--far",
-        "100",
-        "--half-fov",
-        "0.5",
+    let base = sweep_args(&[
         "--warp",
         "lispsm",
         "--elevations",
@@ -208,7 +193,7 @@ fn thread_counts_outside_1_to_1024_are_refused_with_exit_2() {
         "--azimuths",
         "3",
         "--threads",
-    ];
+    ]);
     // 20000 used to panic in a worker and hang; u64::MAX used to hang.
     for t in ["20000", "18446744073709551615", "1025", "0", "-1"] {
         let mut args = base.to_vec();
@@ -283,28 +268,12 @@ fn tsm_default_focus_fits_the_adaptive_partitions_of_every_direction() {
     // The sweep's directions: −(cos el sin az, sin el, cos el cos az) at (0, 0) and (π/2, 0).
     let zenith = format!("-0,-1,{}", -FRAC_PI_2.cos());
     for (row, dir) in rows.iter().zip(["-0,-0,-1", zenith.as_str()]) {
-        let (code, out, err) = run(&[
-            "warp",
-            "--near",
-            "1",
-            "--far",
-            "100",
-            "--half-fov",
+        let v = warp_json(
             "0.5",
-            "--light-dir",
             dir,
-            "--warp",
             "tsm",
-            "--focus",
-            "4.5",
-            "--partition",
-            "adaptive",
-            "--k",
-            "2",
-            "--json",
-        ]);
-        assert_eq!(code, 0, "{dir}: {err}");
-        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+            &["--focus", "4.5", "--partition", "adaptive", "--k", "2"],
+        );
         let want = v["storage_factor"].as_f64().unwrap();
         assert!(close(row.2, want, 1e-12), "{row:?} want {want} ({dir})");
     }
@@ -312,38 +281,37 @@ fn tsm_default_focus_fits_the_adaptive_partitions_of_every_direction() {
 
 #[test]
 fn negative_numbers_get_the_domain_error_not_unexpected_argument() {
-    let base = ["sweep", "--near", "1", "--far", "100", "--half-fov", "0.5"];
     for (extra, want) in [
         (
-            vec!["--warp", "lispsm", "--elevations", "-3"],
+            &["--warp", "lispsm", "--elevations", "-3"][..],
             "error: elevations must be at least 1 (got -3)",
         ),
         (
-            vec!["--warp", "lispsm", "--azimuths", "-1"],
+            &["--warp", "lispsm", "--azimuths", "-1"],
             "error: azimuths must be at least 1 (got -1)",
         ),
         (
-            vec!["--warp", "lispsm", "--partition", "log", "--k", "-1"],
+            &["--warp", "lispsm", "--partition", "log", "--k", "-1"],
             "error: k must lie in [1, 16] (got -1)",
         ),
         (
-            vec!["--warp", "lispsm", "--partition", "log", "--k", "0"],
+            &["--warp", "lispsm", "--partition", "log", "--k", "0"],
             "error: k must lie in [1, 16] (got 0)",
         ),
         (
-            vec!["--warp", "eta", "--eta", "-inf"],
+            &["--warp", "eta", "--eta", "-inf"],
             "error: eta must be a finite number (got -inf)",
         ),
         (
-            vec!["--warp", "eta", "--eta", "-1.5"],
+            &["--warp", "eta", "--eta", "-1.5"],
             "error: eta must lie in [-1, 1] (got -1.5)",
         ),
         (
-            vec!["--warp", "tsm", "--focus", "-2"],
+            &["--warp", "tsm", "--focus", "-2"],
             "error: focus must be greater than 0 (got -2)",
         ),
         (
-            vec![
+            &[
                 "--warp",
                 "lispsm",
                 "--partition",
@@ -356,67 +324,23 @@ fn negative_numbers_get_the_domain_error_not_unexpected_argument() {
             "error: lambda must lie in [0, 1] (got -0.5)",
         ),
     ] {
-        let mut args: Vec<&str> = base.to_vec();
-        args.extend(extra.iter());
-        let (code, out, err) = run(&args);
-        assert_eq!(
-            (code, out.as_str(), err.trim_end()),
-            (1, "", want),
-            "{args:?}"
-        );
+        assert_error(&sweep_args(extra), want);
     }
-    for (flag, want) in [
-        ("--near", "error: near must be a finite number (got -inf)"),
-        ("--far", "error: far must be a finite number (got -inf)"),
-        (
-            "--half-fov",
-            "error: half_fov must be a finite number (got -inf)",
-        ),
-    ] {
-        let mut args = vec!["sweep", "--near", "1", "--far", "100", "--half-fov", "0.5"];
-        let i = args.iter().position(|a| *a == flag).unwrap();
-        args[i + 1] = "-inf";
-        args.extend(["--warp", "lispsm"]);
-        let (code, _, err) = run(&args);
-        assert_eq!((code, err.trim_end()), (1, want), "{args:?}");
-    }
+    assert_infinite_view_refused("sweep", &["--warp", "lispsm"]);
 }
 
 #[test]
 fn lambda_only_with_practical_partitions() {
-    let base = [
-        "sweep",
-        "--near",
-        "1",
-        "--far",
-        "100",
-        "--half-fov",
-        "0.5",
-        "--warp",
-        "lispsm",
-        "--elevations",
-        "2",
-        "--azimuths",
-        "3",
-    ];
-    for (partition, k) in [
-        ("single", "1"),
-        ("log", "2"),
-        ("adaptive", "2"),
-        ("faces", "2"),
-    ] {
-        let mut args = base.to_vec();
-        args.extend(["--partition", partition, "--k", k, "--lambda", "0.3"]);
-        let (code, out, err) = run(&args);
-        assert_eq!(code, 1, "{args:?}");
-        assert!(out.is_empty());
-        assert_eq!(
-            err,
-            format!(
-                "error: lambda is not an argument of --partition {partition} (only of --partition practical)\n"
-            )
-        );
-    }
+    let base = sweep_args(&["--warp", "lispsm", "--elevations", "2", "--azimuths", "3"]);
+    assert_lambda_refused(
+        &base,
+        &[
+            ("single", "1"),
+            ("log", "2"),
+            ("adaptive", "2"),
+            ("faces", "2"),
+        ],
+    );
     // With practical: given, or its default 0.5.
     let mut given = base.to_vec();
     given.extend(["--partition", "practical", "--k", "2", "--lambda", "0.5"]);
@@ -434,19 +358,6 @@ fn temp_dir(tag: &str) -> std::path::PathBuf {
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
-}
-
-/// Runs the binary and returns its exit status and the raw bytes of its standard output.
-fn run_bytes(args: &[&str]) -> (i32, Vec<u8>, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
-        .args(args)
-        .output()
-        .expect("the binary runs");
-    (
-        out.status.code().expect("exited normally"),
-        out.stdout,
-        String::from_utf8(out.stderr).unwrap(),
-    )
 }
 
 /// Reads a `.npy` file as NumPy's format specification (version 1.0) lays it out, written here
@@ -506,39 +417,23 @@ fn read_npy(bytes: &[u8]) -> (Vec<usize>, Vec<f64>) {
     (shape, values)
 }
 
-const BASE: [&str; 13] = [
-    "sweep",
-    "--near",
-    "1",
-    "--far",
-    "100",
-    "--half-fov",
-    "0.5",
-    "--warp",
-    "lispsm",
-    "--partition",
-    "log",
-    "--k",
-    "2",
-];
+/// `sweep --near 1 --far 100 --half-fov 0.5 --warp lispsm --partition log --k 2` followed by
+/// `extra`: the base of the output-format calls.
+fn log_2(extra: &[&'static str]) -> Vec<&'static str> {
+    let mut args = sweep_args(&["--warp", "lispsm", "--partition", "log", "--k", "2"]);
+    args.extend_from_slice(extra);
+    args
+}
 
 #[test]
 fn npy_holds_the_csv_values_bit_for_bit_with_its_axes() {
     let dir = temp_dir("npy");
     let file = dir.join("s.npy");
-    let grid = ["--elevations", "7", "--azimuths", "12"];
-    let mut csv_args = BASE.to_vec();
-    csv_args.extend(grid);
+    let csv_args = log_2(&["--elevations", "7", "--azimuths", "12"]);
     let rows = {
         let (code, out, err) = run(&csv_args);
         assert_eq!(code, 0, "{err}");
-        out.lines()
-            .skip(1)
-            .map(|l| {
-                let f: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
-                (f[0], f[1], f[2])
-            })
-            .collect::<Vec<_>>()
+        csv_rows(&out)
     };
     assert_eq!(rows.len(), 7 * 12);
     let mut npy_args = csv_args.clone();
@@ -578,8 +473,7 @@ fn npy_holds_the_csv_values_bit_for_bit_with_its_axes() {
 fn npy_to_standard_output_is_the_file_without_axes() {
     let dir = temp_dir("npy-stdout");
     let file = dir.join("s.npy");
-    let mut args = BASE.to_vec();
-    args.extend(["--elevations", "3", "--azimuths", "5", "--format", "npy"]);
+    let mut args = log_2(&["--elevations", "3", "--azimuths", "5", "--format", "npy"]);
     let (code, stdout, err) = run_bytes(&args);
     assert_eq!(code, 0, "{err}");
     let (shape, values) = read_npy(&stdout);
@@ -601,8 +495,7 @@ fn npy_to_standard_output_is_the_file_without_axes() {
 fn output_writes_the_csv_to_a_file() {
     let dir = temp_dir("csv");
     let file = dir.join("s.csv");
-    let mut args = BASE.to_vec();
-    args.extend(["--elevations", "4", "--azimuths", "9"]);
+    let args = log_2(&["--elevations", "4", "--azimuths", "9"]);
     let (code, stdout, _) = run_bytes(&args);
     assert_eq!(code, 0);
     assert_eq!(stdout.iter().filter(|&&b| b == b'\n').count(), 1 + 4 * 9);
@@ -619,10 +512,9 @@ fn output_writes_the_csv_to_a_file() {
 #[cfg(target_os = "linux")]
 #[test]
 fn write_errors_exit_1_with_a_message() {
-    use std::process::Stdio;
+    use common::cli::run_to_full;
     let dir = temp_dir("errors");
-    let mut grid = BASE.to_vec();
-    grid.extend(["--elevations", "3", "--azimuths", "4"]);
+    let grid = log_2(&["--elevations", "3", "--azimuths", "4"]);
     let full = "No space left on device (os error 28)";
     for format in ["csv", "npy"] {
         // A file that cannot take the data.
@@ -657,19 +549,10 @@ fn write_errors_exit_1_with_a_message() {
         // Standard output that fails.
         let mut args = grid.clone();
         args.extend(["--format", format]);
-        let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
-            .args(&args)
-            .stdout(Stdio::from(
-                std::fs::OpenOptions::new()
-                    .write(true)
-                    .open("/dev/full")
-                    .unwrap(),
-            ))
-            .output()
-            .unwrap();
-        assert_eq!(out.status.code(), Some(1), "{format}");
+        let (code, err) = run_to_full(&args, "");
+        assert_eq!(code, 1, "{format}");
         assert_eq!(
-            String::from_utf8(out.stderr).unwrap(),
+            err,
             format!("error: cannot write to standard output: {full}\n")
         );
     }
@@ -695,7 +578,10 @@ fn write_errors_exit_1_with_a_message() {
 #[test]
 fn npy_to_a_terminal_is_refused() {
     let bin = env!("CARGO_BIN_EXE_shadow-aliasing");
-    let cmd = format!("{bin} {} --format npy; echo \"status $?\"", BASE.join(" "));
+    let cmd = format!(
+        "{bin} {} --format npy; echo \"status $?\"",
+        log_2(&[]).join(" ")
+    );
     let out = Command::new("script")
         .args(["-qec", &cmd, "/dev/null"])
         .output()
