@@ -6,23 +6,17 @@
 use serde_json::Value;
 
 mod common;
-use common::cli::run;
+use common::cli::{run_failing, warp_args};
 
-fn warp(extra: &[&str]) -> (i32, Value) {
-    let mut args = vec![
-        "warp",
-        "--near",
-        "1",
-        "--far",
-        "100",
-        "--half-fov",
-        "0.7853981633974483", // π/4: tan θ = 1
-        "--json",
-    ];
-    args.extend_from_slice(extra);
-    let (code, out, err) = run(&args);
-    assert_eq!(code, 0, "{err}");
-    (code, serde_json::from_str(&out).expect("JSON"))
+/// `warp --json` at n = 1, f = 100, θ = π/4 (tan θ = 1), the light along `dir`, the warp `warp`,
+/// then `extra`: exit 0, nothing on stderr, the output parsed.
+fn warp(dir: &str, warp: &str, extra: &[&str]) -> Value {
+    common::cli::warp_json("0.7853981633974483", dir, warp, extra)
+}
+
+/// `a` is a number within 1e-9 · max(b, 1) of `b`.
+fn close(a: &Value, b: f64) -> bool {
+    (a.as_f64().unwrap() - b).abs() < 1e-9 * b.max(1.0)
 }
 
 #[test]
@@ -30,16 +24,12 @@ fn receivers_focus_the_map_and_report_over_b() {
     // The lower half of the view between depths 2 and 5, light straight down, uniform: s spans
     // x ∈ [−5, 5], t depth [2, 5]; M_x = 10/(2·2) = 2.5, M_z = 3/(2·2) = 0.75, S̄ = 1.875.
     // The value after a space begins with '-'.
-    let (_, v) = warp(&[
-        "--light-dir",
+    let v = warp(
         "0,-1,0",
-        "--warp",
         "uniform",
-        "--receivers",
-        "-100,-100,-5,100,0,-2",
-    ]);
+        &["--receivers", "-100,-100,-5,100,0,-2"],
+    );
     assert_eq!(v["focus"], "body");
-    let close = |a: &Value, b: f64| (a.as_f64().unwrap() - b).abs() < 1e-9 * b.max(1.0);
     assert!(close(&v["storage_factor"], 1.875), "{v}");
     assert!(close(&v["max_mx"], 2.5));
     assert!(close(&v["max_mz"], 0.75));
@@ -52,14 +42,11 @@ fn receivers_focus_the_map_and_report_over_b() {
 
 #[test]
 fn out_of_view_is_exit_0_with_focus_empty_and_no_storage_factor() {
-    let (_, v) = warp(&[
-        "--light-dir",
+    let v = warp(
         "0.3,-1,0.2",
-        "--warp",
         "lispsm",
-        "--receivers",
-        "-10,-10,1,10,10,5",
-    ]);
+        &["--receivers", "-10,-10,1,10,10,5"],
+    );
     assert_eq!(v["focus"], "empty");
     assert!(v.get("storage_factor").is_none());
     assert_eq!(v["partitions"].as_array().unwrap().len(), 0);
@@ -67,11 +54,12 @@ fn out_of_view_is_exit_0_with_focus_empty_and_no_storage_factor() {
 
 #[test]
 fn a_receiver_box_containing_the_frustum_gives_the_frustum_only_matrix() {
-    let base = ["--light-dir", "0.3,-1,0.2", "--warp", "lispsm"];
-    let (_, plain) = warp(&base);
-    let mut args = base.to_vec();
-    args.extend_from_slice(&["--receivers", "-1000,-1000,-1000,1000,1000,1000"]);
-    let (_, scene) = warp(&args);
+    let plain = warp("0.3,-1,0.2", "lispsm", &[]);
+    let scene = warp(
+        "0.3,-1,0.2",
+        "lispsm",
+        &["--receivers", "-1000,-1000,-1000,1000,1000,1000"],
+    );
     assert_eq!(
         plain["partitions"][0]["matrix"],
         scene["partitions"][0]["matrix"]
@@ -85,39 +73,30 @@ fn face_partitions_on_a_scene() {
     // it, so its part's body is all of B (the lower half between depths 2 and 5) and the
     // orthographic face map along the bisector (the view axis here) is the uniform map over B by
     // hand: M_x = 2.5, M_z = 0.75, S̄ = 1.875.
-    let (_, v) = warp(&[
-        "--light-dir",
+    let v = warp(
         "0,-1,0",
-        "--warp",
         "uniform",
-        "--partition",
-        "faces",
-        "--k",
-        "1",
-        "--receivers",
-        "-100,-100,-5,100,0,-2",
-    ]);
-    let close = |a: &Value, b: f64| (a.as_f64().unwrap() - b).abs() < 1e-9 * b.max(1.0);
+        &[
+            "--partition",
+            "faces",
+            "--k",
+            "1",
+            "--receivers",
+            "-100,-100,-5,100,0,-2",
+        ],
+    );
     let parts = v["partitions"].as_array().unwrap();
     assert_eq!(parts.len(), 1, "{v}");
     assert_eq!(parts[0]["face"], "bottom");
     assert!(close(&v["storage_factor"], 1.875), "{v}");
     assert!(close(&v["max_mx"], 2.5) && close(&v["max_mz"], 0.75), "{v}");
     // A receivers' box containing the frustum: the frustum-only face partitions' S̄.
-    let base = [
-        "--light-dir",
-        "0.2,-0.5,-1",
-        "--warp",
-        "lispsm",
-        "--partition",
-        "faces",
-        "--k",
-        "2",
-    ];
-    let (_, plain) = warp(&base);
-    let mut args = base.to_vec();
-    args.extend_from_slice(&["--receivers", "-1e4,-1e4,-1e4,1e4,1e4,1e4"]);
-    let (_, scene) = warp(&args);
+    let faces = |extra: &[&str]| {
+        let args = [&["--partition", "faces", "--k", "2"], extra].concat();
+        warp("0.2,-0.5,-1", "lispsm", &args)
+    };
+    let plain = faces(&[]);
+    let scene = faces(&["--receivers", "-1e4,-1e4,-1e4,1e4,1e4,1e4"]);
     let want = plain["storage_factor"].as_f64().unwrap();
     assert!(close(&scene["storage_factor"], want), "{scene} vs {want}");
     assert_eq!(
@@ -125,9 +104,7 @@ fn face_partitions_on_a_scene() {
         plain["partitions"].as_array().unwrap().len()
     );
     // A ground slab: the maps focus on it and cost less.
-    args.truncate(base.len());
-    args.extend_from_slice(&["--receivers", "-20,-2,-60,20,0,0"]);
-    let (_, ground) = warp(&args);
+    let ground = faces(&["--receivers", "-20,-2,-60,20,0,0"]);
     assert!(
         ground["storage_factor"].as_f64().unwrap() < 0.5 * want,
         "{ground}"
@@ -137,23 +114,19 @@ fn face_partitions_on_a_scene() {
 #[test]
 fn casters_and_depth_range_and_new_splits() {
     // Casters change only the depth row (rows 0, 1, 3 of the column-major matrix unchanged).
-    let base = [
-        "--light-dir",
-        "0.05,-1,0.05",
-        "--warp",
-        "lispsm",
-        "--receivers",
-        "-20,-1,-9,20,0,-1",
-    ];
-    let (_, a) = warp(&base);
-    let mut args = base.to_vec();
-    args.extend_from_slice(&[
+    let receivers = ["--receivers", "-20,-1,-9,20,0,-1"];
+    let a = warp("0.05,-1,0.05", "lispsm", &receivers);
+    let casters = [
         "--casters",
         "-1,0,-6,1,30,-4",
         "--casters",
         "-20,-1,-9,20,0,-1",
-    ]);
-    let (_, b) = warp(&args);
+    ];
+    let b = warp(
+        "0.05,-1,0.05",
+        "lispsm",
+        &[&receivers[..], &casters].concat(),
+    );
     assert_eq!(a["storage_factor"], b["storage_factor"]);
     let (ma, mb) = (&a["partitions"][0]["matrix"], &b["partitions"][0]["matrix"]);
     for col in 0..4 {
@@ -165,44 +138,16 @@ fn casters_and_depth_range_and_new_splits() {
     }
     assert_ne!(ma, mb);
     // The visible depth range cuts the map to [2, 40].
-    let (_, d) = warp(&[
-        "--light-dir",
-        "0.3,-1,0.2",
-        "--warp",
-        "lispsm",
-        "--depth-range",
-        "2,40",
-    ]);
+    let d = warp("0.3,-1,0.2", "lispsm", &["--depth-range", "2,40"]);
     assert_eq!(d["partitions"][0]["split"][0], 2.0);
     assert_eq!(d["partitions"][0]["split"][1], 40.0);
     // Absolute splits, fractions and Bevy's cascades.
-    let (_, s) = warp(&[
-        "--light-dir",
-        "0.3,-1,0.2",
-        "--warp",
-        "lispsm",
-        "--splits",
-        "1,4,20,100",
-    ]);
+    let s = warp("0.3,-1,0.2", "lispsm", &["--splits", "1,4,20,100"]);
     assert_eq!(s["partitions"].as_array().unwrap().len(), 3);
     assert_eq!(s["partitions"][1]["split"][0], 4.0);
-    let (_, f) = warp(&[
-        "--light-dir",
-        "0.3,-1,0.2",
-        "--warp",
-        "lispsm",
-        "--fractions",
-        "0.25,0.5",
-    ]);
+    let f = warp("0.3,-1,0.2", "lispsm", &["--fractions", "0.25,0.5"]);
     assert_eq!(f["partitions"][1]["split"][0], 1.0 + 0.25 * 99.0);
-    let (_, bv) = warp(&[
-        "--light-dir",
-        "0.3,-1,0.2",
-        "--warp",
-        "uniform",
-        "--bevy",
-        "4,0.1,10,150,0.2",
-    ]);
+    let bv = warp("0.3,-1,0.2", "uniform", &["--bevy", "4,0.1,10,150,0.2"]);
     let parts = bv["partitions"].as_array().unwrap();
     assert_eq!(parts.len(), 4);
     // Bevy's far bounds 10 · 15^{i/3} (the last one cut at the camera's far plane, 100).
@@ -228,22 +173,7 @@ fn bad_scene_arguments_are_errors() {
         ],
         &["--splits", "1,50,40,100"],
     ] {
-        let mut args = vec![
-            "warp",
-            "--near",
-            "1",
-            "--far",
-            "100",
-            "--half-fov",
-            "0.5",
-            "--light-dir",
-            "0.3,-1,0.2",
-            "--warp",
-            "lispsm",
-        ];
-        args.extend_from_slice(extra);
-        let (code, _, err) = run(&args);
-        assert_ne!(code, 0, "{extra:?}");
+        let (_, err) = run_failing(&warp_args("0.5", "0.3,-1,0.2", "lispsm", extra), "");
         assert!(err.starts_with("error:"), "{err}");
     }
 }
