@@ -6,17 +6,31 @@
 use proptest::prelude::*;
 use serde_json::{json, Value};
 use shadow_aliasing::eval::{eval_json, ArgKind, Presence, QUANTITIES};
-use std::io::Write;
-use std::process::{Command, Stdio};
 
 mod common;
 use common::cli::run_with_stdin as run;
+use common::cli::{run_failing, view_args, warp_args};
 use common::config;
 
 fn eval_stdin(input: &str) -> (i32, Value, String) {
     let (code, out, err) = run(&["eval"], input);
     let v = serde_json::from_str(&out).unwrap_or_else(|e| panic!("stdout {out:?} is JSON: {e}"));
     (code, v, err)
+}
+
+/// `eval` on one array of the requests `cases` (each the first of its pair); returns (exit code,
+/// the answers, stderr), after checking that there is one answer a request.
+fn eval_cases<T>(cases: &[(&str, T)]) -> (i32, Vec<Value>, String) {
+    let input = Value::Array(
+        cases
+            .iter()
+            .map(|(req, _)| serde_json::from_str(req).unwrap())
+            .collect(),
+    );
+    let (code, v, err) = eval_stdin(&input.to_string());
+    let answers = v.as_array().unwrap_or_else(|| panic!("{v} is an array"));
+    assert_eq!(answers.len(), cases.len(), "{v}");
+    (code, answers.clone(), err)
 }
 
 fn error_of(v: &Value) -> &str {
@@ -308,15 +322,8 @@ fn values_match_hand_calculations() {
             &[1.0, 8.0, 16.0, 32.0],
         ),
     ]);
-    let input = Value::Array(
-        cases
-            .iter()
-            .map(|(req, _)| serde_json::from_str(req).unwrap())
-            .collect(),
-    );
-    let (code, v, err) = eval_stdin(&input.to_string());
-    let answers = v.as_array().unwrap();
-    for ((req, want), got) in cases.iter().zip(answers) {
+    let (code, answers, err) = eval_cases(&cases);
+    for ((req, want), got) in cases.iter().zip(&answers) {
         let values: Vec<f64> = match &got["value"] {
             Value::Array(xs) => xs.iter().map(|x| x.as_f64().unwrap()).collect(),
             Value::Number(n) => vec![n.as_f64().unwrap()],
@@ -547,18 +554,10 @@ fn every_kind_of_bad_request_is_an_error_naming_the_argument() {
             "errors must be an array of numbers (got number 1)",
         ),
     ];
-    let input = Value::Array(
-        cases
-            .iter()
-            .map(|(req, _)| serde_json::from_str(req).unwrap())
-            .collect(),
-    );
-    let (code, v, err) = eval_stdin(&input.to_string());
+    let (code, answers, err) = eval_cases(cases);
     assert_eq!(code, 1);
     assert!(err.is_empty(), "{err}");
-    let answers = v.as_array().unwrap();
-    assert_eq!(answers.len(), cases.len());
-    for ((req, want), got) in cases.iter().zip(answers) {
+    for ((req, want), got) in cases.iter().zip(&answers) {
         let msg = error_of(got);
         assert!(
             msg.starts_with(want),
@@ -584,10 +583,8 @@ fn malformed_input_exits_2_with_one_line_and_no_stdout() {
         "{\"near\": 1e400}",
         "{} {}",
     ] {
-        let (code, out, err) = run(&["eval"], input);
-        assert_eq!(code, 2, "{input:?}: {out}");
-        assert!(out.is_empty(), "{input:?}: {out}");
-        assert_eq!(err.lines().count(), 1, "{input:?}: {err}");
+        let (code, err) = run_failing(&["eval"], input);
+        assert_eq!(code, 2, "{input:?}: {err}");
         assert!(err.starts_with("error: "), "{input:?}: {err}");
     }
 }
@@ -839,69 +836,19 @@ fn readme_two_commands_and_links() {
     }
 }
 
-/// Runs the binary with standard output on /dev/full (every write fails with ENOSPC).
-#[cfg(target_os = "linux")]
-fn run_to_full(args: &[&str], stdin: &str) -> (i32, String) {
-    let full = std::fs::OpenOptions::new()
-        .write(true)
-        .open("/dev/full")
-        .expect("/dev/full opens");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::from(full))
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary starts");
-    let _ = child
-        .stdin
-        .take()
-        .expect("stdin is piped")
-        .write_all(stdin.as_bytes());
-    let out = child.wait_with_output().expect("the binary finishes");
-    (
-        out.status.code().expect("exited normally"),
-        String::from_utf8(out.stderr).expect("stderr is UTF-8"),
-    )
-}
-
 /// A failing standard output is exit status 1 with a message, as for `warp` and `sweep` (2 is
 /// malformed input); it used to be status 2 and silence.
 #[cfg(target_os = "linux")]
 #[test]
 fn a_write_error_is_status_1_with_a_message() {
+    use common::cli::run_to_full;
     let want = "error: cannot write to standard output: No space left on device (os error 28)\n";
     let request = r#"{"quantity": "n_prime_lispsm", "near": 1, "far": 100}"#;
+    let sweep = ["--warp", "lispsm", "--elevations", "2", "--azimuths", "2"];
     for args in [
         vec!["eval"],
-        vec![
-            "warp",
-            "--near",
-            "1",
-            "--far",
-            "100",
-            "--half-fov",
-            "0.5",
-            "--light-dir",
-            "0,-1,0",
-            "--warp",
-            "lispsm",
-        ],
-        vec![
-            "sweep",
-            "--near",
-            "1",
-            "--far",
-            "100",
-            "--half-fov",
-            "0.5",
-            "--warp",
-            "lispsm",
-            "--elevations",
-            "2",
-            "--azimuths",
-            "2",
-        ],
+        warp_args("0.5", "0,-1,0", "lispsm", &[]),
+        view_args("sweep", "0.5", &sweep),
     ] {
         let (code, err) = run_to_full(&args, request);
         assert_eq!((code, err.as_str()), (1, want), "{args:?}");
