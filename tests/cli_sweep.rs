@@ -9,8 +9,8 @@ use std::process::Command;
 
 mod common;
 use common::cli::{
-    assert_error, assert_infinite_view_refused, assert_lambda_refused, run, run_bytes, run_failing,
-    set, view_args, warp_json,
+    assert_error, assert_infinite_view_refused, assert_lambda_refused, help, run, run_bytes,
+    run_failing, set, view_args, warp_json,
 };
 use common::close;
 
@@ -137,8 +137,7 @@ fn bad_arguments_are_one_line_and_a_non_zero_exit() {
 
 #[test]
 fn help_has_an_example_and_the_grid() {
-    let (code, out, _) = run(&["sweep", "--help"]);
-    assert_eq!(code, 0);
+    let out = help("sweep");
     assert!(out.contains("shadow-aliasing sweep --near"), "{out}");
     assert!(out.contains("elevation,azimuth,storage_factor"), "{out}");
     assert!(out.contains("--format npy --output sweep.npy"), "{out}");
@@ -232,8 +231,8 @@ fn thread_counts_outside_1_to_1024_are_refused_with_exit_2() {
 fn tsm_default_focus_fits_the_adaptive_partitions_of_every_direction() {
     // Issue 11: every k ≥ 2 failed with "focus must be at most far − near", the default focus
     // having been taken from γ = 0 although γ = π/2 has the shallower first partition.
-    for k in ["2", "3", "4"] {
-        let rows = sweep(&[
+    let tsm = |k, elevations, azimuths| {
+        sweep(&[
             "--warp",
             "tsm",
             "--partition",
@@ -241,10 +240,13 @@ fn tsm_default_focus_fits_the_adaptive_partitions_of_every_direction() {
             "--k",
             k,
             "--elevations",
-            "3",
+            elevations,
             "--azimuths",
-            "8",
-        ]);
+            azimuths,
+        ])
+    };
+    for k in ["2", "3", "4"] {
+        let rows = tsm(k, "3", "8");
         assert_eq!(rows.len(), 24, "k {k}");
         assert!(rows.iter().all(|r| r.2.is_finite() && r.2 > 0.0), "k {k}");
     }
@@ -252,18 +254,7 @@ fn tsm_default_focus_fits_the_adaptive_partitions_of_every_direction() {
     // by hand): γ = 0 gives planes 1, 100/2 = 50, 100 (depths 49 and 50), γ = π/2 the
     // self-similar 1, √100 = 10, 100 (depths 9 and 90). The shallowest is 9, so the focus is
     // 4.5 for the whole sweep, and each row is `warp --focus 4.5` at that direction.
-    let rows = sweep(&[
-        "--warp",
-        "tsm",
-        "--partition",
-        "adaptive",
-        "--k",
-        "2",
-        "--elevations",
-        "2",
-        "--azimuths",
-        "1",
-    ]);
+    let rows = tsm("2", "2", "1");
     assert_eq!(rows.len(), 2);
     // The sweep's directions: −(cos el sin az, sin el, cos el cos az) at (0, 0) and (π/2, 0).
     let zenith = format!("-0,-1,{}", -FRAC_PI_2.cos());

@@ -58,6 +58,13 @@ fn run_raw(args: &[&str], stdin: &str, stdout: Stdio) -> (i32, Vec<u8>, String) 
     )
 }
 
+/// `command --help`: asserts exit 0 and returns stdout.
+pub fn help(command: &str) -> String {
+    let (code, out, err) = run(&[command, "--help"]);
+    assert_eq!(code, 0, "{err}");
+    out
+}
+
 /// `command --near 1 --far 100 --half-fov <half_fov>` followed by `extra`: the view most calls
 /// of `warp` and `sweep` use.
 pub fn view_args<'a>(command: &'a str, half_fov: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
