@@ -3,31 +3,20 @@
 //! non-zero exit.
 #![cfg(feature = "cli")]
 
+// The file names issue 4 fixes, so that links and scripts can rely on them: the library's list,
+// which tests/figures.rs (`the_figure_list_is_the_issue_list`) pins name by name.
+use shadow_aliasing::plot::FIGURES;
 use std::path::{Path, PathBuf};
 
 mod common;
-use common::cli::run;
+use common::cli::{help, run, run_failing};
 
-/// The file names issue 4 fixes, so that links and scripts can rely on them.
-const NAMES: [&str; 17] = [
-    "lloyd2005-fig4",
-    "lloyd2005-fig7",
-    "lloyd2006-fig5",
-    "lloyd2006-fig6",
-    "lloyd2006-fig7",
-    "lloyd2006-fig10",
-    "lloyd2006-fig12",
-    "lloyd2006-fig13",
-    "barroso-fig7",
-    "zhang-fig3",
-    "martin-tan-fig6",
-    "lloyd2006-worst-case",
-    "lloyd2006-fig4",
-    "martin-tan-fig3",
-    "barroso-fig5",
-    "lloyd2006-fig11",
-    "lloyd2005-fig8",
-];
+/// `figures --out <out>` followed by `extra`; returns (exit code, stdout, stderr).
+fn figures(out: &Path, extra: &[&str]) -> (i32, String, String) {
+    let mut args = vec!["figures", "--out", out.to_str().unwrap()];
+    args.extend_from_slice(extra);
+    run(&args)
+}
 
 fn temp_dir(tag: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("sa-cli-figures-{tag}-{}", std::process::id()));
@@ -76,16 +65,10 @@ fn check_svg(path: &Path) {
 #[test]
 fn only_and_format_select_the_files() {
     let dir = temp_dir("only");
-    let (code, out, err) = run(&[
-        "figures",
-        "--out",
-        dir.to_str().unwrap(),
-        "--format",
-        "svg",
-        "--only",
-        "zhang-fig3",
-        "barroso-fig7",
-    ]);
+    let (code, out, err) = figures(
+        &dir,
+        &["--format", "svg", "--only", "zhang-fig3", "barroso-fig7"],
+    );
     assert_eq!(code, 0, "{err}");
     let mut files: Vec<String> = std::fs::read_dir(&dir)
         .unwrap()
@@ -100,15 +83,7 @@ fn only_and_format_select_the_files() {
     assert_eq!(out.lines().count(), 1, "{out}");
     assert!(out.contains("2 files"), "{out}");
     assert!(err.is_empty(), "{err}");
-    let (code, _, err) = run(&[
-        "figures",
-        "--out",
-        dir.to_str().unwrap(),
-        "--format",
-        "png",
-        "--only",
-        "barroso-fig7",
-    ]);
+    let (code, _, err) = figures(&dir, &["--format", "png", "--only", "barroso-fig7"]);
     assert_eq!(code, 0, "{err}");
     check_png(&dir.join("barroso-fig7.png"));
     std::fs::remove_dir_all(&dir).unwrap();
@@ -126,10 +101,7 @@ fn bad_arguments_are_one_line_and_a_non_zero_exit() {
         (vec!["figures", "--out", d, "--format", "gif"], "--format"),
         (vec!["figures", "--out", "/dev/null/x"], "/dev/null/x"),
     ] {
-        let (code, out, err) = run(&args);
-        assert_ne!(code, 0, "{args:?}");
-        assert!(out.is_empty(), "{args:?}: {out}");
-        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        let (_, err) = run_failing(&args, "");
         assert!(err.contains(needle), "{args:?}: {err}");
     }
     let _ = std::fs::remove_dir_all(&dir);
@@ -138,10 +110,10 @@ fn bad_arguments_are_one_line_and_a_non_zero_exit() {
 #[test]
 fn every_figure_in_both_formats() {
     let dir = temp_dir("all");
-    let (code, out, err) = run(&["figures", "--out", dir.to_str().unwrap()]);
+    let (code, out, err) = figures(&dir, &[]);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("34 files"), "{out}");
-    for name in NAMES {
+    for name in FIGURES {
         check_png(&dir.join(format!("{name}.png")));
         check_svg(&dir.join(format!("{name}.svg")));
     }
@@ -150,10 +122,9 @@ fn every_figure_in_both_formats() {
 
 #[test]
 fn help_has_an_example_and_the_names() {
-    let (code, out, _) = run(&["figures", "--help"]);
-    assert_eq!(code, 0);
+    let out = help("figures");
     assert!(out.contains("shadow-aliasing figures --out"), "{out}");
-    for name in NAMES {
+    for name in FIGURES {
         assert!(out.contains(name), "{name} not in --help");
     }
 }
@@ -166,15 +137,7 @@ fn an_unwritable_file_is_named_with_the_os_error() {
         let dir = temp_dir(&format!("blocked-{format}"));
         let blocked = dir.join(format!("zhang-fig3.{ext}"));
         std::fs::create_dir_all(&blocked).unwrap();
-        let (code, out, err) = run(&[
-            "figures",
-            "--out",
-            dir.to_str().unwrap(),
-            "--only",
-            "zhang-fig3",
-            "--format",
-            format,
-        ]);
+        let (code, out, err) = figures(&dir, &["--only", "zhang-fig3", "--format", format]);
         assert_eq!(code, 1, "{err}");
         assert!(out.is_empty(), "{out}");
         let want = format!("error: cannot write {}: ", blocked.display());
@@ -193,13 +156,7 @@ fn an_unwritable_file_is_named_with_the_os_error() {
     let file = dir.join("plain");
     std::fs::write(&file, b"x").unwrap();
     let under = file.join("figures");
-    let (code, _, err) = run(&[
-        "figures",
-        "--out",
-        under.to_str().unwrap(),
-        "--only",
-        "zhang-fig3",
-    ]);
+    let (code, _, err) = figures(&under, &["--only", "zhang-fig3"]);
     assert_eq!(code, 1, "{err}");
     assert!(
         err.starts_with(&format!("error: cannot write {}: ", under.display()))
@@ -209,7 +166,7 @@ fn an_unwritable_file_is_named_with_the_os_error() {
     let _ = std::fs::remove_dir_all(&dir);
     // procfs accepts no new files, even from root.
     if Path::new("/proc/self").is_dir() {
-        let (code, _, err) = run(&["figures", "--out", "/proc", "--only", "zhang-fig3"]);
+        let (code, _, err) = figures(Path::new("/proc"), &["--only", "zhang-fig3"]);
         assert_eq!(code, 1, "{err}");
         assert!(
             err.starts_with("error: cannot write /proc/zhang-fig3.png: ")
