@@ -14,6 +14,10 @@ fn warp(dir: &str, warp: &str, extra: &[&str]) -> Value {
     common::cli::warp_json("0.7853981633974483", dir, warp, extra)
 }
 
+/// The receivers' box of the hand computations: the lower half of the view (y ≤ 0) between
+/// depths 2 and 5.
+const LOWER_HALF: [&str; 2] = ["--receivers", "-100,-100,-5,100,0,-2"];
+
 /// `a` is a number within 1e-9 · max(b, 1) of `b`.
 fn close(a: &Value, b: f64) -> bool {
     (a.as_f64().unwrap() - b).abs() < 1e-9 * b.max(1.0)
@@ -24,11 +28,7 @@ fn receivers_focus_the_map_and_report_over_b() {
     // The lower half of the view between depths 2 and 5, light straight down, uniform: s spans
     // x ∈ [−5, 5], t depth [2, 5]; M_x = 10/(2·2) = 2.5, M_z = 3/(2·2) = 0.75, S̄ = 1.875.
     // The value after a space begins with '-'.
-    let v = warp(
-        "0,-1,0",
-        "uniform",
-        &["--receivers", "-100,-100,-5,100,0,-2"],
-    );
+    let v = warp("0,-1,0", "uniform", &LOWER_HALF);
     assert_eq!(v["focus"], "body");
     assert!(close(&v["storage_factor"], 1.875), "{v}");
     assert!(close(&v["max_mx"], 2.5));
@@ -73,18 +73,8 @@ fn face_partitions_on_a_scene() {
     // it, so its part's body is all of B (the lower half between depths 2 and 5) and the
     // orthographic face map along the bisector (the view axis here) is the uniform map over B by
     // hand: M_x = 2.5, M_z = 0.75, S̄ = 1.875.
-    let v = warp(
-        "0,-1,0",
-        "uniform",
-        &[
-            "--partition",
-            "faces",
-            "--k",
-            "1",
-            "--receivers",
-            "-100,-100,-5,100,0,-2",
-        ],
-    );
+    let faces_1 = [&["--partition", "faces", "--k", "1"][..], &LOWER_HALF].concat();
+    let v = warp("0,-1,0", "uniform", &faces_1);
     let parts = v["partitions"].as_array().unwrap();
     assert_eq!(parts.len(), 1, "{v}");
     assert_eq!(parts[0]["face"], "bottom");
