@@ -1,6 +1,8 @@
-//! Running the `shadow-aliasing` binary from the command-line tests (feature `cli`): the runners,
-//! the view most calls share (`view_args`), JSON output (`run_json`, `warp_json`), and the two
-//! shapes of a refused call (`run_failing`, `assert_error`).
+//! Running the `shadow-aliasing` binary from the command-line tests (feature `cli`): the runners
+//! (`run`, `run_with_stdin`, `run_bytes`, `run_to_full`), the argument vectors most calls share
+//! (`view_args`, `warp_args`, `set`), JSON output (`run_json`, `warp_json`), `help`, and the
+//! checks of a refused call (`run_failing`, `assert_error`, `assert_infinite_view_refused`,
+//! `assert_lambda_refused`).
 
 use serde_json::Value;
 use std::io::Write;
