@@ -107,6 +107,12 @@ fn builders(c: &mut Criterion) {
         overlap: 0.0,
     }));
     g.bench_function("frame_cascades4_scene", |b| b.iter(|| frame(bb(&stable))));
+    // Face partitions (LiSPSM per face, k = 1) of the same scene; the counterpart is `faces`.
+    let faces = scene.scheme(FrameScheme::Faces {
+        rule: FaceWarp::Lispsm,
+        k: 1,
+    });
+    g.bench_function("frame_faces_scene", |b| b.iter(|| frame(bb(&faces))));
     g.bench_function("stable_cascades4", |b| {
         b.iter(|| {
             let splits = z_splits(
