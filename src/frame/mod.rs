@@ -669,8 +669,10 @@ struct Planes {
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir_world`, `map_resolution` (< 3), `image_height`
 /// (0), `depth_range` (not finite, z_min ≥ z_max), `receivers`/`casters` (a bad box, an empty
-/// list, too many planes, a polytope unbounded toward the light), `overlap`, `k`, the splits or
-/// the rule's parameter; [`Error::Degenerate`] when a map cannot be represented in `f64`.
+/// list, too many planes — more than [`MAX_FACE_BOUND_PLANES`] with face partitions — a
+/// polytope unbounded toward the light), `overlap`, `k` (1..=[`MAX_FACE_K`] for face
+/// partitions), the splits or the rule's parameter; [`Error::Degenerate`] when a map cannot be
+/// represented in `f64`.
 pub fn frame(input: &FrameInput<'_>) -> Result<Frame> {
     let mut out = Frame::default();
     frame_into(input, &mut out)?;
