@@ -16,7 +16,9 @@ use shadow_aliasing::measure::{point_error, ShadowMap};
 use shadow_aliasing::{Resolutions, ViewFrustum};
 
 mod common;
-use common::scene::{aabb, box_planes_eye, frustum_planes, random_scene, ray_meets, scene_params};
+use common::scene::{
+    aabb, box_planes_eye, clip_coords, frustum_planes, random_scene, scene_params, shadowing_points,
+};
 
 /// Every rule, the engines' included.
 fn rules() -> Vec<WarpRule> {
@@ -543,10 +545,8 @@ proptest! {
             prop_assert!(m.world_to_clip.is_finite() && m.storage_factor.is_finite() && m.storage_factor > 0.0);
             prop_assert!(m.texel_world.is_finite() && m.texel_world > 0.0);
             for p in m.body() {
-                let h = m.shadow.matrix() * p.extend(1.0);
-                prop_assert!(h.w > 0.0);
-                let q = h.truncate() / h.w;
-                prop_assert!(q.abs().max_element() <= 1.0 + 1e-7, "B vertex {p} → {q}");
+                let q = clip_coords(m.shadow.matrix(), *p);
+                prop_assert!(q.is_some_and(|q| q.abs().max_element() <= 1.0 + 1e-7), "B vertex {p} → {q:?}");
             }
             // The slice ∩ receivers as planes, for the ray test.
             let sub = vf.with_depth_range(m.shadow.near().max(vf.near()), m.shadow.far().min(vf.far()));
@@ -555,15 +555,10 @@ proptest! {
             planes.extend_from_slice(&frustum_planes(&sub));
             planes.extend_from_slice(&box_planes_eye(&r[0], view));
             let scale = vf.far();
-            for s in &samples {
-                let pw = c[0].min + (c[0].max - c[0].min) * DVec3::from(*s);
-                let pe = view.transform_point3(pw);
-                if !ray_meets(pe, le, &planes, 1e-9 * scale) {
-                    continue;
-                }
-                let h = m.shadow.matrix() * pe.extend(1.0);
-                prop_assert!(h.w > 0.0);
-                let q = h.truncate() / h.w;
+            for pe in shadowing_points(&samples, &c[0], view, le, &planes, 1e-9 * scale) {
+                let q = clip_coords(m.shadow.matrix(), pe);
+                prop_assert!(q.is_some(), "caster {pe} behind the map");
+                let q = q.unwrap();
                 prop_assert!(q.x.abs() <= 1.0 + 1e-6 && q.y.abs() <= 1.0 + 1e-6, "caster {pe} → {q}");
                 if clamp {
                     prop_assert!(q.z <= 1.0 + 1e-6);

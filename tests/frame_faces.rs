@@ -13,7 +13,9 @@ use shadow_aliasing::maps::faces::{face_partitions, Face, FaceWarp};
 use shadow_aliasing::{Error, ViewFrustum};
 
 mod common;
-use common::scene::{aabb, box_planes_eye, frustum_planes, random_scene, ray_meets, scene_params};
+use common::scene::{
+    aabb, box_planes_eye, clip_coords, frustum_planes, random_scene, scene_params, shadowing_points,
+};
 
 fn faces_input(cam: Camera, l: DVec3, rule: FaceWarp, k: usize) -> FrameInput<'static> {
     FrameInput::new(cam, l, 1024, 1024).scheme(FrameScheme::Faces { rule, k })
@@ -248,25 +250,16 @@ proptest! {
             let face = m.face.unwrap();
             prop_assert!(face != Face::Far);
             for p in m.body() {
-                let h = m.shadow.matrix() * p.extend(1.0);
-                prop_assert!(h.w > 0.0);
-                let q = h.truncate() / h.w;
-                prop_assert!(q.abs().max_element() <= 1.0 + 1e-7, "B_i vertex {p} → {q}");
+                let q = clip_coords(m.shadow.matrix(), *p);
+                prop_assert!(q.is_some_and(|q| q.abs().max_element() <= 1.0 + 1e-7), "B_i vertex {p} → {q:?}");
             }
             let quad = face.vertices(&vf, m.split.0, m.split.1);
             let mut planes = b_planes.clone();
             planes.extend(prism_planes(&quad, le));
             let scale = vf.far();
-            for s in &samples {
-                let pw = c[0].min + (c[0].max - c[0].min) * DVec3::from(*s);
-                let pe = view.transform_point3(pw);
-                if !ray_meets(pe, le, &planes, 1e-9 * scale) {
-                    continue;
-                }
-                let h = m.shadow.matrix() * pe.extend(1.0);
-                prop_assert!(h.w > 0.0);
-                let q = h.truncate() / h.w;
-                prop_assert!(q.abs().max_element() <= 1.0 + 1e-6, "caster {pe} → {q} ({face:?})");
+            for pe in shadowing_points(&samples, &c[0], view, le, &planes, 1e-9 * scale) {
+                let q = clip_coords(m.shadow.matrix(), pe);
+                prop_assert!(q.is_some_and(|q| q.abs().max_element() <= 1.0 + 1e-6), "caster {pe} → {q:?} ({face:?})");
             }
         }
     }

@@ -60,6 +60,30 @@ pub fn ray_meets(c: DVec3, l: DVec3, planes: &[DVec4], tol: f64) -> bool {
     lo + tol < hi
 }
 
+/// `p` in the clip coordinates of `m` (x/w, y/w, z/w), `None` where w ≤ 0.
+pub fn clip_coords(m: DMat4, p: DVec3) -> Option<DVec3> {
+    let h = m * p.extend(1.0);
+    (h.w > 0.0).then(|| h.truncate() / h.w)
+}
+
+/// The sample points of the world box `casters` (`samples` in [0, 1]³ across it), in eye space,
+/// whose ray along the light `l` meets the body of `planes`: the caster points that can shadow it.
+pub fn shadowing_points<'a>(
+    samples: &'a [[f64; 3]],
+    casters: &'a Aabb,
+    w2e: DMat4,
+    l: DVec3,
+    planes: &'a [DVec4],
+    tol: f64,
+) -> impl Iterator<Item = DVec3> + 'a {
+    samples
+        .iter()
+        .map(move |s| {
+            w2e.transform_point3(casters.min + (casters.max - casters.min) * DVec3::from(*s))
+        })
+        .filter(move |p| ray_meets(*p, l, planes, tol))
+}
+
 /// A random scene of the property tests.
 pub struct RandomScene {
     /// World → eye.
