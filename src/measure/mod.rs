@@ -429,7 +429,8 @@ pub fn frustum_max_sampled(
     max_over(view, shadow, points)
 }
 
-fn max_over(
+/// M_x, M_z and S̄ over `points` by [`point_error`] at each (unit resolutions).
+pub(crate) fn max_over(
     view: &ViewFrustum,
     shadow: &ShadowMap,
     points: impl Iterator<Item = DVec3>,

@@ -250,17 +250,7 @@ pub fn behind_face_map(view: &ViewFrustum, face: SideFace, n_prime: NPrime) -> R
 /// # Errors
 /// As [`point_error`]; [`Error::Degenerate`] when a maximum or their product overflows.
 pub fn face_max(view: &ViewFrustum, face: SideFace, map: &ShadowMap) -> Result<FrustumError> {
-    let (mut mx, mut mz) = (0.0f64, 0.0f64);
-    for p in face.corners(view)? {
-        let e = point_error(view, map, p, Resolutions::default())?;
-        mx = mx.max(e.mx);
-        mz = mz.max(e.mz);
-    }
-    Ok(FrustumError {
-        max_mx: finite_result("M_x", mx)?,
-        max_mz: finite_result("M_z", mz)?,
-        storage_factor: finite_result("storage factor", mx * mz)?,
-    })
+    crate::measure::max_over(view, map, face.corners(view)?.into_iter())
 }
 
 /// How each partition of a twin cascade chooses its warp.
