@@ -715,16 +715,13 @@ pub fn frame_into(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
     let (zn, zf) = visible_range(view, input.depth_range)?;
     let planes = receiver_planes(cam, &input.receivers)?;
     validate_casters(&input.casters)?;
-    if let FrameScheme::Faces { rule, k } = input.scheme {
-        let ctx = Ctx {
-            input,
-            view,
-            l,
-            lw,
-            planes,
-        };
-        return ctx.faces_into(rule, k, (zn, zf), out);
-    }
+    let ctx = Ctx {
+        input,
+        view,
+        l,
+        lw,
+        planes,
+    };
     let mut slices = [Slice {
         cover: (0.0, 0.0),
         split: (0.0, 0.0),
@@ -755,14 +752,7 @@ pub fn frame_into(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
             };
             (1, WarpRule::Uniform, false)
         }
-        FrameScheme::Faces { .. } => unreachable!("face partitions are built above"),
-    };
-    let ctx = Ctx {
-        input,
-        view,
-        l,
-        lw,
-        planes,
+        FrameScheme::Faces { rule, k } => return ctx.faces_into(rule, k, (zn, zf), out),
     };
     for s in &slices[..k] {
         let m = match input.scheme {
