@@ -250,7 +250,9 @@ pub enum WarpCentre {
     /// On the eye's own light-space line (`fit_warp`, Filament).
     Eye,
     /// On the light-space x and y of B's vertex nearest the camera (ties: the largest x + y, the
-    /// top right of OGRE's `ConvexBody::define` order), as the LiSPSM reference code and OGRE.
+    /// top right of OGRE's `ConvexBody::define` order), as the LiSPSM reference code. OGRE
+    /// (`OgreShadowCameraSetupLiSPSM.cpp`) takes the camera-nearest point of V ∩ S, the view
+    /// frustum ∩ the scene's box, which is B's vertex when the receivers' bound is the scene's.
     NearestVertex,
 }
 
