@@ -83,6 +83,7 @@ use crate::maps::warp::{
 };
 use crate::maps::{ClipDepth, ShadowMatrix, TsmOptions, WarpRule};
 use crate::measure::vertex::vertex_max;
+use crate::measure::FrustumError;
 use crate::numeric::EDGE_ON;
 use glam::{DMat3, DMat4, DVec2, DVec3, DVec4, Mat4};
 
@@ -1561,7 +1562,9 @@ impl Ctx<'_, '_> {
             l,
             tan: self.view.tan_half_fov(),
         };
-        let (matrix, n_prime, _) =
+        // The fit measures each candidate over B_i's vertices with the frame's light and tan θ:
+        // the chosen one's error is the map's.
+        let (matrix, n_prime, err) =
             fitter.best::<{ 3 * MAX_BODY_VERTICES }>(spaces, pts, pts, face, (a, b))?;
         let (n_b, f_b) = depth_extent(pts);
         let shadow = ShadowMatrix::new(matrix, LightDir::from_unit_unchecked(l), n_prime, n_b, f_b);
@@ -1570,7 +1573,7 @@ impl Ctx<'_, '_> {
             split: (a, b),
             blend: (b, b),
         };
-        let mut m = self.finish(shadow, pts, &slice, body.focus)?;
+        let mut m = self.finish_measured(shadow, err, pts, &slice, body.focus)?;
         m.face = Some(face);
         Ok(Built::Map(m))
     }
@@ -1582,10 +1585,23 @@ impl Ctx<'_, '_> {
         s: &Slice,
         focus: Focus,
     ) -> Result<FrameMap> {
+        let err = vertex_max(&shadow.matrix(), self.l, self.view.tan_half_fov(), pts).ok_or_else(
+            || Error::Degenerate("the map is singular at a vertex of the focus body".into()),
+        )?;
+        self.finish_measured(shadow, err, pts, s, focus)
+    }
+
+    /// [`Ctx::finish`] with the map's error over `pts` already measured (by `vertex_max` with
+    /// the frame's light and tan θ, as `finish` would).
+    fn finish_measured(
+        &self,
+        shadow: ShadowMatrix,
+        err: FrustumError,
+        pts: &[DVec3],
+        s: &Slice,
+        focus: Focus,
+    ) -> Result<FrameMap> {
         let tan = self.view.tan_half_fov();
-        let err = vertex_max(&shadow.matrix(), self.l, tan, pts).ok_or_else(|| {
-            Error::Degenerate("the map is singular at a vertex of the focus body".into())
-        })?;
         // The largest texel edge over B: m · (image beam width 2 z tan θ) / resolution.
         let res = f64::from(self.input.map_resolution);
         let mut texel = 0.0f64;
