@@ -170,15 +170,13 @@ fn face_id(f: Face) -> i32 {
     }
 }
 
-/// The split planes of the cascades (practical, λ = 0.75, 4 partitions).
+/// The cascades' split scheme (practical, λ = 0.75) and count, for both cascade schemes.
+const CASCADE_SPLIT: SplitScheme = SplitScheme::Practical { lambda: 0.75 };
+const CASCADES: usize = 4;
+
+/// The split planes of the cascades (practical, λ = 0.75, 4 partitions: the frame schemes' own).
 pub fn splits(view: &ViewFrustum) -> Result<shadow_aliasing::analytic::partition::Splits, String> {
-    z_splits(
-        view.near(),
-        view.far(),
-        4,
-        SplitScheme::Practical { lambda: 0.75 },
-    )
-    .map_err(|e| e.to_string())
+    z_splits(view.near(), view.far(), CASCADES, CASCADE_SPLIT).map_err(|e| e.to_string())
 }
 
 /// The scene's bounds for the frame API: receivers are the drawn ground square (zero thickness)
@@ -205,8 +203,8 @@ fn bounds(scene: &Scene) -> Result<(Vec<Aabb>, Vec<Aabb>), String> {
 /// The frame API's scheme for `scheme_`.
 fn frame_scheme(scheme_: Scheme, view: &ViewFrustum) -> FrameScheme<'static> {
     let practical = CascadeSplits::Scheme {
-        scheme: SplitScheme::Practical { lambda: 0.75 },
-        k: 4,
+        scheme: CASCADE_SPLIT,
+        k: CASCADES,
         overlap: 0.0,
     };
     match scheme_ {
