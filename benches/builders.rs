@@ -11,7 +11,9 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use glam::DVec3;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
-use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme};
+use shadow_aliasing::frame::{
+    frame_into, Aabb, Bound, Camera, CascadeSplits, Frame, FrameInput, FrameScheme,
+};
 use shadow_aliasing::maps::atlas::{layout, AtlasEntry};
 use shadow_aliasing::maps::cascades::{cascades, stable_cascades};
 use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
@@ -96,9 +98,14 @@ fn builders(c: &mut Criterion) {
     let scene = FrameInput::new(cam, light, 2048, 1080)
         .receivers(Bound::Boxes(&receivers))
         .casters(Bound::Boxes(&casters));
+    // The renderer's loop: one `Frame` reused by `frame_into` every frame (`frame` returns a new
+    // one by value, a 20 KB copy).
+    let mut out = Frame::default();
     // One LiSPSM map focused on the ground, casters in its depth range, measured over B.
     let single = scene.scheme(FrameScheme::Single(WarpRule::Lispsm));
-    g.bench_function("frame_lispsm_scene", |b| b.iter(|| frame(bb(&single))));
+    g.bench_function("frame_lispsm_scene", |b| {
+        b.iter(|| frame_into(bb(&single), &mut out))
+    });
     // Four stable cascades (practical λ = 0.8) with the same scene bounds; the counterpart is
     // `stable_cascades4`, the frustum-only stable cascades.
     let stable = scene.scheme(FrameScheme::Stable(CascadeSplits::Scheme {
@@ -106,13 +113,17 @@ fn builders(c: &mut Criterion) {
         k: 4,
         overlap: 0.0,
     }));
-    g.bench_function("frame_cascades4_scene", |b| b.iter(|| frame(bb(&stable))));
+    g.bench_function("frame_cascades4_scene", |b| {
+        b.iter(|| frame_into(bb(&stable), &mut out))
+    });
     // Face partitions (LiSPSM per face, k = 1) of the same scene; the counterpart is `faces`.
     let faces = scene.scheme(FrameScheme::Faces {
         rule: FaceWarp::Lispsm,
         k: 1,
     });
-    g.bench_function("frame_faces_scene", |b| b.iter(|| frame(bb(&faces))));
+    g.bench_function("frame_faces_scene", |b| {
+        b.iter(|| frame_into(bb(&faces), &mut out))
+    });
     g.bench_function("stable_cascades4", |b| {
         b.iter(|| {
             let splits = z_splits(

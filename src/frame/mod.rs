@@ -103,12 +103,14 @@ pub const MAX_FACE_K: usize = (MAX_PARTITIONS - 1) / 4;
 /// what a map holds.
 pub const MAX_FACE_BOUND_PLANES: usize = 8;
 
-/// The receivers' body: 6 frustum faces + 12 bound planes, a face at most 4 + 12 vertices.
-type BodyClip = ConvexBody<18, 18>;
-/// A caster box cut by the prism of B's footprint (at most 20 edges): 26 faces of at most 24.
-type CasterClip = ConvexBody<28, 28>;
+/// The receivers' body: 6 frustum faces + 12 bound planes, a face at most 4 + 12 vertices, at
+/// most 2·18 − 4 = 32 vertices (a margin for points that coincide within the tolerance).
+type BodyClip = ConvexBody<18, 18, 48>;
+/// A caster box cut by the prism of B's footprint (at most 20 edges): 26 faces of at most 24,
+/// at most 48 vertices.
+type CasterClip = ConvexBody<28, 28, 64>;
 /// A caster polytope: a box, 12 planes and the prism.
-type PolytopeClip = ConvexBody<40, 40>;
+type PolytopeClip = ConvexBody<40, 40, 96>;
 
 /// A world-space axis-aligned box.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -1680,7 +1682,11 @@ impl Prism {
         Self { planes, n: h }
     }
 
-    fn clip<const F: usize, const V: usize>(&self, cb: &mut ConvexBody<F, V>, tol: f64) -> bool {
+    fn clip<const F: usize, const V: usize, const P: usize>(
+        &self,
+        cb: &mut ConvexBody<F, V, P>,
+        tol: f64,
+    ) -> bool {
         self.planes[..self.n].iter().all(|p| cb.clip(*p, tol))
     }
 
