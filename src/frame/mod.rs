@@ -1106,18 +1106,11 @@ impl Ctx<'_, '_> {
         v.far() * (1.0 + v.tan_half_fov() * (1.0 + v.aspect()))
     }
 
-    /// B for the slice `[a, b]`.
+    /// B for the slice `[a, b]`, cut by the planes `extra` as well.
     fn body(&self, a: f64, b: f64, extra: &[DVec4]) -> Result<Body> {
         let sub = self.view.with_depth_range(a, b)?;
         let corners = sub.corners();
-        let scale = self.scale();
-        let tol = 1e-10 * scale;
-        let mut body = Body {
-            v: [DVec3::ZERO; MAX_BODY_VERTICES],
-            n: 0,
-            whole: true,
-            focus: Focus::Body,
-        };
+        let tol = self.clip_tol();
         let planes = &self.planes.p[..self.planes.n];
         let inside = |p: &DVec3| {
             planes
@@ -1125,25 +1118,56 @@ impl Ctx<'_, '_> {
                 .all(|pl| pl.truncate().dot(*p) + pl.w <= tol * pl.truncate().length())
         };
         if extra.is_empty() && corners.iter().all(inside) {
+            let mut body = Body {
+                v: [DVec3::ZERO; MAX_BODY_VERTICES],
+                n: 8,
+                whole: true,
+                focus: Focus::Body,
+            };
             body.v[..8].copy_from_slice(&corners);
-            body.n = 8;
             return Ok(body);
         }
-        body.whole = false;
-        let mut cb = BodyClip::hexahedron(&corners);
-        for pl in planes.iter().chain(extra) {
+        self.body_cut(self.receivers_clip(&corners)?, extra)
+    }
+
+    /// The clipper's tolerance, relative to the frustum's size.
+    fn clip_tol(&self) -> f64 {
+        1e-10 * self.scale()
+    }
+
+    /// The hexahedron `corners` (a slice of the frustum) cut by the receivers' planes.
+    fn receivers_clip(&self, corners: &[DVec3; 8]) -> Result<BodyClip> {
+        let mut cb = BodyClip::hexahedron(corners);
+        let tol = self.clip_tol();
+        for pl in &self.planes.p[..self.planes.n] {
             if !cb.clip(*pl, tol) {
-                return Err(Error::Degenerate(
-                    "the focus body has more faces than the clipper holds".into(),
-                ));
+                return Err(too_many_faces());
             }
         }
+        Ok(cb)
+    }
+
+    /// B from the slice already cut by the receivers' planes (`Ctx::receivers_clip`), cut by
+    /// `extra` as well: the same cuts in the same order as [`Ctx::body`] makes.
+    fn body_cut(&self, mut cb: BodyClip, extra: &[DVec4]) -> Result<Body> {
+        let tol = self.clip_tol();
+        for pl in extra {
+            if !cb.clip(*pl, tol) {
+                return Err(too_many_faces());
+            }
+        }
+        let mut body = Body {
+            v: [DVec3::ZERO; MAX_BODY_VERTICES],
+            n: 0,
+            whole: false,
+            focus: Focus::Body,
+        };
         let n = cb.vertices(tol, &mut body.v).ok_or_else(|| {
             Error::Degenerate("the focus body has more vertices than the frame holds".into())
         })?;
         body.n = n;
         let (len, width, thick) = extents(&body.v[..n]);
-        let small = 1e-9 * scale;
+        let small = 1e-9 * self.scale();
         body.focus = if self.planes.flat {
             if width <= small || len <= small {
                 Focus::Empty
@@ -1498,6 +1522,8 @@ impl Ctx<'_, '_> {
         if whole.focus == Focus::Empty || whole.n == 0 {
             return Ok(());
         }
+        // B's clipper, cut by the receivers once for every part (each part adds its prism).
+        let receivers = self.receivers_clip(&view.corners())?;
         let (mut y_lo, mut y_hi) = (f64::INFINITY, f64::NEG_INFINITY);
         for p in &whole.v[..whole.n] {
             let y = -l.dot(*p);
@@ -1519,7 +1545,7 @@ impl Ctx<'_, '_> {
                     depths: (a, b),
                     spaces: &spaces,
                 };
-                out.push(self.face_part(&part, (zn, zf), (y_lo, y_hi), rule)?);
+                out.push(self.face_part(&part, &receivers, (y_lo, y_hi), rule)?);
             }
         }
         out.settle();
@@ -1527,12 +1553,12 @@ impl Ctx<'_, '_> {
     }
 
     /// One face part's map: B_i = B ∩ the prism of the part's quad along the light (B of the
-    /// visible range `[zn, zf]`), fitted with the face's candidate axes over B's extent `y` along
-    /// the light and the casters of B_i.
+    /// visible range, `receivers` its clipper cut by the receivers' planes), fitted with the
+    /// face's candidate axes over B's extent `y` along the light and the casters of B_i.
     fn face_part(
         &self,
         part: &FacePart<'_>,
-        (zn, zf): (f64, f64),
+        receivers: &BodyClip,
         (y_lo, y_hi): (f64, f64),
         rule: FaceWarp,
     ) -> Result<Built> {
@@ -1544,7 +1570,7 @@ impl Ctx<'_, '_> {
         } = *part;
         let l = self.l;
         let prism = quad_prism(&quad, l);
-        let body = self.body(zn, zf, prism.as_slice())?;
+        let body = self.body_cut(*receivers, prism.as_slice())?;
         if body.focus == Focus::Empty || body.n == 0 {
             return Ok(Built::None(Focus::Empty));
         }
@@ -1633,6 +1659,11 @@ impl Ctx<'_, '_> {
             body_len: pts.len(),
         })
     }
+}
+
+/// The focus body's clipper overflowed (more faces than it holds).
+fn too_many_faces() -> Error {
+    Error::Degenerate("the focus body has more faces than the clipper holds".into())
 }
 
 /// B's vertex nearest the camera (smallest eye depth; ties within 10⁻¹² relative go to the
