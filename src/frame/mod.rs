@@ -1517,13 +1517,13 @@ impl Ctx<'_, '_> {
                 "no face of the view frustum is seen by the light {l}"
             )));
         }
-        // B of the whole visible range: its extent along the light is every part's depth range.
-        let whole = self.body(zn, zf, &[])?;
+        // B of the whole visible range (its extent along the light is every part's depth range)
+        // and its clipper, cut by the receivers once for every part (each part adds its prism).
+        let receivers = self.receivers_clip(&view.corners())?;
+        let whole = self.body_cut(receivers, &[])?;
         if whole.focus == Focus::Empty || whole.n == 0 {
             return Ok(());
         }
-        // B's clipper, cut by the receivers once for every part (each part adds its prism).
-        let receivers = self.receivers_clip(&view.corners())?;
         let (mut y_lo, mut y_hi) = (f64::INFINITY, f64::NEG_INFINITY);
         for p in &whole.v[..whole.n] {
             let y = -l.dot(*p);
