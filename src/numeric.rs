@@ -47,6 +47,20 @@ pub(crate) fn finite_select(v: f64) -> bool {
     v - v == 0.0
 }
 
+/// Sorts `keys` ascending and applies the same swaps to `values` (an insertion sort: stable, no
+/// allocation, for the few dozen elements of a fixed array). Panics if `values` is shorter than
+/// `keys` (a programming error of the caller, never an input).
+pub(crate) fn sort_by_keys<K: PartialOrd, T>(keys: &mut [K], values: &mut [T]) {
+    for i in 1..keys.len() {
+        let mut j = i;
+        while j > 0 && keys[j - 1] > keys[j] {
+            keys.swap(j - 1, j);
+            values.swap(j - 1, j);
+            j -= 1;
+        }
+    }
+}
+
 /// How far outside the clip volume rounding may put a point: 10⁻⁶ of its half-width.
 pub const CLIP_SLACK: f64 = 1e-6;
 

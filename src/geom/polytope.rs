@@ -3,6 +3,7 @@
 
 use crate::error::{Error, Result};
 use crate::frustum::ViewFrustum;
+use crate::numeric::sort_by_keys;
 use glam::{DMat3, DMat4, DVec3, DVec4};
 
 /// A convex region of eye space bounded by up to six planes `a x + b y + c z + d ≤ 0`, stored as
@@ -310,15 +311,7 @@ impl<const F: usize, const V: usize, const P: usize> ConvexBody<F, V, P> {
                     t
                 };
             }
-            // Insertion sort by angle (a few dozen points at most).
-            for i in 1..ncap {
-                let mut j = i;
-                while j > 0 && ang[j - 1] > ang[j] {
-                    ang.swap(j - 1, j);
-                    cap.swap(j - 1, j);
-                    j -= 1;
-                }
-            }
+            sort_by_keys(&mut ang[..ncap], &mut cap[..ncap]);
             if self.count == F {
                 return false;
             }

@@ -46,6 +46,7 @@
 
 use crate::analytic::partition::MAX_PARTITIONS;
 use crate::error::{fmt_num, Error, Result};
+use crate::numeric::sort_by_keys;
 use glam::DMat4;
 
 /// The largest number of partitions one atlas holds: four side faces of [`MAX_PARTITIONS`]
@@ -228,15 +229,7 @@ pub fn layout(width: u32, height: u32, entries: &[AtlasEntry]) -> Result<Atlas> 
             }
         }
     }
-    // Sort the groups (insertion sort on a tiny fixed array).
-    for i in 1..ng {
-        let mut j = i;
-        while j > 0 && groups[j - 1] > groups[j] {
-            groups.swap(j - 1, j);
-            gx.swap(j - 1, j);
-            j -= 1;
-        }
-    }
+    sort_by_keys(&mut groups[..ng], &mut gx[..ng]);
     let mut widths = [0u32; MAX_ATLAS_ENTRIES];
     allocate_texels(&gx[..ng], width, &mut widths)?;
     let mut viewports = [Viewport::default(); MAX_ATLAS_ENTRIES];
