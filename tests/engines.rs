@@ -241,3 +241,103 @@ fn ogre_ortho_with_a_vanishing_shadow_distance_is_degenerate() {
         Err(e) => panic!("{e:?}"),
     }
 }
+
+/// The world-space size of a texel of `m` (eye → light clip, `res` texels across) at `p`,
+/// measured in the plane perpendicular to the light `l` as Filament's `texelSizeWorldSpace`
+/// does: the columns of the inverse Jacobian of that plane → (s, t), the longer one, times
+/// 2/res (clip spans 2 over the map). Written from the map's rows here, not from the crate's
+/// kernel.
+fn texel_at(m: &glam::DMat4, l: DVec3, res: f64, p: DVec3) -> f64 {
+    let (_, j) = plane_jacobian(m, l, p);
+    let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+    // Inverse of [[a, b], [c, d]] (rows s, t; columns e1, e2): [[d, −b], [−c, a]] / det; its
+    // columns are the plane displacement per unit s and per unit t.
+    let col_s = (j[1][1].hypot(-j[1][0])) / det.abs();
+    let col_t = ((-j[0][1]).hypot(j[0][0])) / det.abs();
+    col_s.max(col_t) * 2.0 / res
+}
+
+/// (s, t) at `p` and the Jacobian rows ∂(s, t)/∂(e1, e2) in an orthonormal basis of the plane
+/// perpendicular to `l`.
+fn plane_jacobian(m: &glam::DMat4, l: DVec3, p: DVec3) -> ((f64, f64), [[f64; 2]; 2]) {
+    let r = |i: usize| m.row(i);
+    let h = *m * p.extend(1.0);
+    let grad = |i: usize| {
+        (r(i).truncate() * h.w - r(3).truncate() * r(i).dot(p.extend(1.0))) / (h.w * h.w)
+    };
+    let e1 = l.any_orthonormal_vector();
+    let e2 = l.cross(e1);
+    let (gs, gt) = (grad(0), grad(1));
+    (
+        (h.x / h.w, h.y / h.w),
+        [[gs.dot(e1), gs.dot(e2)], [gt.dot(e1), gt.dot(e2)]],
+    )
+}
+
+/// Filament's `ShadowMap::texelSizeWorldSpace(Wp, MbMtF, dim)` evaluates the LiSPSM map's
+/// Jacobian once, at the texture centre (0.5, 0.5), and the shader scales every fragment's
+/// normal-offset bias by that one number. The texel of a warped map is not that size over B:
+/// smaller near the camera, larger far away. docs/errata.md (Engines, Filament 1) quotes these
+/// numbers; the crate's `FrameMap::texel_world` is the largest over B.
+#[test]
+fn filaments_centre_texel_size_is_not_the_texel_size_over_b() {
+    use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, FrameInput, FrameScheme};
+    let cam = Camera::new(glam::DMat4::IDENTITY, 1.0, 1000.0, 30f64.to_radians(), 1.0).unwrap();
+    let ground = Aabb::new(DVec3::new(-50.0, -5.0, -100.0), DVec3::new(50.0, 0.0, 0.0)).unwrap();
+    let tower = Aabb::new(DVec3::new(-10.0, 0.0, -60.0), DVec3::new(10.0, 20.0, -40.0)).unwrap();
+    let (receivers, casters) = ([ground], [ground, tower]);
+    let res = 2048.0;
+    for rule in [WarpRule::Filament, WarpRule::Uniform] {
+        let input = FrameInput::new(cam, DVec3::new(0.3, -0.8, -0.4), 2048, 1080)
+            .receivers(Bound::Boxes(&receivers))
+            .casters(Bound::Boxes(&casters))
+            .scheme(FrameScheme::Single(rule));
+        let f = frame(&input).unwrap();
+        let map = &f.maps()[0];
+        let m = map.shadow.matrix();
+        let l = f.light_dir_eye();
+        // The texture centre: s = t = 0 where rows 0 and 1 of M vanish, on the plane through
+        // B's centroid perpendicular to l (three linear equations).
+        let b = map.body();
+        let c = b.iter().fold(DVec3::ZERO, |a, q| a + *q) / b.len() as f64;
+        let (r0, r1) = (m.row(0), m.row(1));
+        let a = glam::DMat3::from_cols(r0.truncate(), r1.truncate(), l).transpose();
+        let p = a.inverse() * DVec3::new(-r0.w, -r1.w, c.dot(l));
+        let ((s, t), _) = plane_jacobian(&m, l, p);
+        assert!(
+            s.abs() < 1e-12 && t.abs() < 1e-12,
+            "centre not found: {s} {t}"
+        );
+        let centre = texel_at(&m, l, res, p);
+        // Constant along the light ray (a texel is a light ray's cross-section).
+        let along = texel_at(&m, l, res, p + 7.0 * l);
+        assert!((along - centre).abs() <= 1e-9 * centre);
+        let (lo, hi) = b
+            .iter()
+            .map(|q| texel_at(&m, l, res, *q))
+            .fold((f64::INFINITY, 0.0f64), |(lo, hi), t| {
+                (lo.min(t), hi.max(t))
+            });
+        // The crate's texel size is the largest edge over B (by its own code).
+        assert!(
+            (map.texel_world - hi).abs() <= 1e-12 * hi,
+            "{rule:?}: texel_world {} against {hi}",
+            map.texel_world
+        );
+        match rule {
+            // One texel size everywhere: the centre is every point's.
+            WarpRule::Uniform => {
+                assert!((hi - lo).abs() <= 1e-12 * hi && (centre - hi).abs() <= 1e-12 * hi);
+                assert_eq!(format!("{centre:.4e}"), "4.7568e-2");
+            }
+            // docs/errata.md's numbers.
+            _ => {
+                assert_eq!(format!("{centre:.3e}"), "1.648e-2");
+                assert_eq!(format!("{lo:.3e}"), "6.103e-3");
+                assert_eq!(format!("{hi:.3e}"), "4.891e-1");
+                assert_eq!(format!("{:.1}", hi / centre), "29.7");
+                assert_eq!(format!("{:.2}", centre / lo), "2.70");
+            }
+        }
+    }
+}

@@ -1629,16 +1629,15 @@ impl Ctx<'_, '_> {
         s: &Slice,
         focus: Focus,
     ) -> Result<FrameMap> {
-        let tan = self.view.tan_half_fov();
-        // The largest texel edge over B: m · (image beam width 2 z tan θ) / resolution.
+        // The largest texel edge over B: clip spans 2 over the map's `res` texels.
         let res = f64::from(self.input.map_resolution);
-        let mut texel = 0.0f64;
-        for p in pts {
-            if let Some(e) = vertex_max(&shadow.matrix(), self.l, tan, std::slice::from_ref(p)) {
-                let wi = 2.0 * -p.z * tan;
-                texel = texel.max(e.max_mx.max(e.max_mz) * wi / res);
-            }
-        }
+        let matrix = shadow.matrix();
+        let texel = pts
+            .iter()
+            .filter_map(|p| texel_edges(&matrix, self.l, *p))
+            .fold(0.0f64, |a, (es, et)| a.max(es).max(et))
+            * 2.0
+            / res;
         let mut body = [DVec3::ZERO; MAX_BODY_VERTICES];
         body[..pts.len()].copy_from_slice(pts);
         let image = f64::from(self.input.image_height);
@@ -1659,6 +1658,27 @@ impl Ctx<'_, '_> {
             body_len: pts.len(),
         })
     }
+}
+
+/// The edges of a texel of `m` (eye → light clip) at `p`, in the plane perpendicular to the unit
+/// light direction `l`, per unit of clip s and t: the columns of the inverse of the Jacobian of
+/// that plane → (s, t), `(|∇t⊥| / |D|, |∇s⊥| / |D|)` with `D = (∇s × ∇t)·l` (a texel is a light
+/// ray's cross-section, so the edges do not depend on where along the ray `p` lies). Filament's
+/// `texelSizeWorldSpace` takes the same columns, at the map's centre only. `None` behind the
+/// map's centre of projection or where the map is singular.
+fn texel_edges(m: &DMat4, l: DVec3, p: DVec3) -> Option<(f64, f64)> {
+    let h = *m * p.extend(1.0);
+    if h.w.is_nan() || h.w <= 0.0 {
+        return None;
+    }
+    let r3 = m.row(3).truncate();
+    let grad = |row: DVec3, v: f64| (row * h.w - r3 * v) / (h.w * h.w);
+    let gs = grad(m.row(0).truncate(), h.x);
+    let gt = grad(m.row(1).truncate(), h.y);
+    let (gs, gt) = (gs - gs.dot(l) * l, gt - gt.dot(l) * l);
+    let d = gs.cross(gt).dot(l).abs();
+    let edges = (gt.length() / d, gs.length() / d);
+    (edges.0.is_finite() && edges.1.is_finite()).then_some(edges)
 }
 
 /// The focus body's clipper overflowed (more faces than it holds).
