@@ -327,6 +327,36 @@ fn degenerate_bodies_and_lights_have_typed_outcomes() {
     .unwrap();
     assert_eq!(f.focus(), Focus::EdgeOn);
     assert!(f.is_empty());
+    // Stable cascades fit a world-fixed square (the slice's bounding sphere), not B: the same
+    // edge-on plane is mapped (Flat), and its corners and centre land inside every map built.
+    let f = frame(
+        &FrameInput::new(cam, DVec3::new(1.0, 0.0, 0.0), 1024, 1024)
+            .receivers(Bound::Boxes(&plane))
+            .scheme(FrameScheme::Stable(CascadeSplits::Scheme {
+                scheme: SplitScheme::Practical { lambda: 0.5 },
+                k: 2,
+                overlap: 0.0,
+            })),
+    )
+    .unwrap();
+    assert_eq!(f.focus(), Focus::Flat);
+    assert!(!f.is_empty());
+    for m in f.maps().iter() {
+        assert_eq!(m.focus, Focus::Flat);
+        // Points of the plane inside the slice (half field of view 45°: |x| ≤ depth).
+        let (a, b) = (m.split.0.max(1.0), m.split.1.min(9.0));
+        for d in [a, 0.5 * (a + b), b] {
+            for x in [-0.9 * d, 0.0, 0.9 * d] {
+                let h = m.world_to_clip * DVec3::new(x, -1.0, -d).extend(1.0);
+                let (s, t) = (h.x / h.w, h.y / h.w);
+                assert!(
+                    s.abs() <= 1.0 && t.abs() <= 1.0,
+                    "({x}, −1, {}): {s} {t}",
+                    -d
+                );
+            }
+        }
+    }
     // A wall facing the camera at depth 5: zero depth, mapped unwarped.
     let wall = [aabb([-2.0, -2.0, -5.0], [2.0, 2.0, -5.0])];
     let f = frame(

@@ -324,6 +324,8 @@ pub enum FrameScheme<'a> {
     /// Stable cascades: each cascade's s, t from its slice's bounding sphere in a world-fixed
     /// light space, snapped to whole texels ([`crate::maps::cascades::stable_cascade`]); the
     /// depth range from its focus body and the casters; no map for a slice whose body is empty.
+    /// Since s, t do not come from B, a flat B seen edge-on by the light still gets its map
+    /// ([`Focus::Flat`], where the other schemes say [`Focus::EdgeOn`]).
     Stable(CascadeSplits<'a>),
     /// One trapezoidal map (Martin & Tan) of the focus body: the view-axis light space, B's
     /// vertices as E, the focus region B cut `focus × (f_B − n_B)/(f − n)` beyond B's nearest depth
@@ -444,7 +446,8 @@ pub enum Focus {
     /// polytope with two opposite planes at the same place) and B is a polygon: mapped.
     Flat,
     /// B has no extent across or along the warp axis as the light sees it (an edge-on flat
-    /// receiver): no map can be fitted and none is needed.
+    /// receiver): no map can be fitted to it and none is needed (stable cascades, whose square
+    /// does not depend on B, map it anyway).
     EdgeOn,
     /// B has no extent in eye depth (f_B = n_B, a wall facing the camera): mapped with n′ = ∞,
     /// since every warp rule needs a depth range.
