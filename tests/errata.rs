@@ -11,7 +11,7 @@
 
 mod common;
 use common::faces::faces_with_axis;
-use common::{close, top_line_crossing_x, zhang_printed};
+use common::{adaptive_limit, close, top_line_crossing_x, tsm_80_percent_sbar, zhang_printed};
 use glam::DVec3;
 use shadow_aliasing::analytic::global::{zhang_ep, zhang_ep_local, zhang_eq, zhang_eq_local};
 use shadow_aliasing::analytic::partition::{
@@ -795,16 +795,23 @@ mod checks {
         (worse, all)
     }
 
-    /// [`worse_than_uniform`] at f/n = 100 and 1000 (n = 1, θ = 30°): the two counts and the
-    /// number of directions.
-    fn worse_at_100_and_1000<R: Fn(DVec3) -> FrustumError>(
+    /// Checks entry `e`'s "({a} and {b} of {all} {directions})": `a` and `b` are
+    /// [`worse_than_uniform`]'s counts at f/n = 100 and 1000 (n = 1, θ = 30°) for the map `rule`
+    /// builds for a view, `all` the number of directions.
+    fn has_worse_counts<R: Fn(DVec3) -> FrustumError>(
+        e: Entry,
+        directions: &str,
         rule: impl Fn(ViewFrustum) -> R,
-    ) -> (usize, usize, usize) {
+    ) -> usize {
         let v1 = view(1.0, 100.0, 30f64.to_radians());
         let v2 = view(1.0, 1000.0, 30f64.to_radians());
         let (a, all) = worse_than_uniform(&v1, rule(v1));
         let (b, _) = worse_than_uniform(&v2, rule(v2));
-        (a, b, all)
+        formatted();
+        formatted();
+        formatted();
+        e.has(format!("({a} and {b} of {all} {directions})"));
+        e.done()
     }
 
     pub fn l06_11_counts() -> usize {
@@ -820,12 +827,7 @@ mod checks {
                 fitted(&v, l, np)
             }
         };
-        let (a, b, all) = worse_at_100_and_1000(sin_rule);
-        formatted();
-        formatted();
-        formatted();
-        e.has(format!("({a} and {b} of {all} grid directions)"));
-        e.done()
+        has_worse_counts(e, "grid directions", sin_rule)
     }
 
     // ----- Martin & Tan 2004 -----
@@ -875,17 +877,7 @@ mod checks {
     pub fn mt_square_fallback() -> usize {
         let e = Entry::bullet(MT, "§5, §6.1, §6.3, continuity");
         let v = view(1.0, 100.0, 30f64.to_radians());
-        let opts = TsmOptions {
-            focus: 20.0,
-            search: TsmSearch::EightyPercent,
-        };
-        let sbar = |deg: f64| {
-            let r = deg.to_radians();
-            let t = tsm(&v, DVec3::new(0.0, -r.sin(), -r.cos()), opts).unwrap();
-            frustum_max(&v, &t.shadow.shadow_map())
-                .unwrap()
-                .storage_factor
-        };
+        let sbar = |deg: f64| tsm_80_percent_sbar(&v, deg);
         let (off, boxed) = (sbar(0.1), sbar(0.05));
         e.has(format!(
             "the 80 % trapezoid has S̄ = {}, {} × the box's {}",
@@ -960,12 +952,7 @@ mod checks {
                 frustum_max(&v, &b.shadow_map()).unwrap()
             }
         };
-        let (a, b, all) = worse_at_100_and_1000(rule);
-        formatted();
-        formatted();
-        formatted();
-        e.has(format!("({a} and {b} of {all} hemisphere directions)"));
-        e.done()
+        has_worse_counts(e, "hemisphere directions", rule)
     }
 
     // ----- Barroso & Celes 2007 -----
@@ -1164,16 +1151,7 @@ mod checks {
 
     pub fn bc_eq19_alpha() -> usize {
         let e = Entry::bullet(BC, "Eq 19, \"α_i\"");
-        let s = z_splits(
-            1.0,
-            1000.0,
-            4,
-            SplitScheme::Adaptive {
-                light_angle: 0.0,
-                ratio: 2.0,
-            },
-        )
-        .unwrap();
+        let s = adaptive_limit(4);
         let p = s.planes();
         let r: Vec<f64> = p.windows(2).map(|w| w[1] / w[0]).collect();
         e.has(format!(
@@ -1200,16 +1178,7 @@ mod checks {
 
     pub fn bc_f1_f2() -> usize {
         let e = Entry::bullet(BC, "§3.2 after Eq 19, \"f_1 = f_2\"");
-        let s = z_splits(
-            1.0,
-            1000.0,
-            4,
-            SplitScheme::Adaptive {
-                light_angle: 0.0,
-                ratio: 2.0,
-            },
-        )
-        .unwrap();
+        let s = adaptive_limit(4);
         let (a, b) = s.range(0);
         let (_, f2) = s.range(1);
         e.has(format!(

@@ -15,7 +15,7 @@ use shadow_aliasing::measure::twin::{
 use shadow_aliasing::{Error, ViewFrustum};
 use std::f64::consts::FRAC_PI_2;
 mod common;
-use common::{any_f64, close, config, frustum, REL};
+use common::{adaptive_limit, any_f64, close, config, frustum, REL};
 
 fn scheme() -> impl Strategy<Value = SplitScheme> {
     prop_oneof![
@@ -285,16 +285,7 @@ fn hand_values_fig12() {
 /// partition runs from n to the second's near plane (the paper's "f_1 = f_2" must be f_1 = n_2).
 #[test]
 fn adaptive_parallel_light() {
-    let s = z_splits(
-        1.0,
-        1000.0,
-        4,
-        SplitScheme::Adaptive {
-            light_angle: 0.0,
-            ratio: 2.0,
-        },
-    )
-    .unwrap();
+    let s = adaptive_limit(4);
     assert_eq!(s.planes(), &[1.0, 125.0, 250.0, 500.0, 1000.0]);
     assert_eq!(s.range(0), (1.0, 125.0));
 }
@@ -326,16 +317,7 @@ fn adaptive_interpolates_plane_by_plane() {
         p[1]
     );
     let optimal = z_splits(1.0, 1000.0, 3, SplitScheme::SelfSimilar).unwrap();
-    let limit = z_splits(
-        1.0,
-        1000.0,
-        3,
-        SplitScheme::Adaptive {
-            light_angle: 0.0,
-            ratio: 2.0,
-        },
-    )
-    .unwrap();
+    let limit = adaptive_limit(3);
     let blend = 0.5 * optimal.planes()[1] + 0.5 * limit.planes()[1];
     assert!((blend - 130.0).abs() < 1e-9);
     assert!(p[1] < 0.65 * blend);

@@ -3,7 +3,7 @@
 //! parameter η, Lloyd 2006's closed forms overhead, the fallbacks and the general case.
 
 mod common;
-use common::config;
+use common::{config, tsm_80_percent_sbar};
 use glam::{DMat4, DVec2, DVec3, DVec4};
 use proptest::prelude::*;
 use shadow_aliasing::maps::tsm::{
@@ -440,17 +440,7 @@ fn invalid_options() {
 #[test]
 fn tsm_80_percent_rule_jumps_at_the_square_fallback() {
     let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians()).unwrap();
-    let opts = TsmOptions {
-        focus: 20.0,
-        search: TsmSearch::EightyPercent,
-    };
-    let sbar = |deg: f64| {
-        let e = deg.to_radians();
-        let t = tsm(&view, DVec3::new(0.0, -e.sin(), -e.cos()), opts).unwrap();
-        frustum_max(&view, &t.shadow.shadow_map())
-            .unwrap()
-            .storage_factor
-    };
+    let sbar = |deg: f64| tsm_80_percent_sbar(&view, deg);
     let on_axis = sbar(0.0);
     let inside_tolerance = sbar(0.05);
     let off = sbar(0.1);

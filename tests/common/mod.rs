@@ -12,6 +12,9 @@ pub mod zhang_printed;
 
 use glam::DVec3;
 use proptest::prelude::*;
+use shadow_aliasing::analytic::partition::{z_splits, SplitScheme, Splits};
+use shadow_aliasing::maps::{tsm, TsmOptions, TsmSearch};
+use shadow_aliasing::measure::frustum_max;
 use shadow_aliasing::ViewFrustum;
 use std::ops::Range;
 
@@ -83,6 +86,35 @@ pub fn n_ln_alpha_theta_k() -> impl Strategy<Value = (f64, f64, f64, usize)> {
         5f64.to_radians()..75f64.to_radians(),
         1usize..=8,
     )
+}
+
+/// The adaptive partition's limit at γ = 0 with ratio α = 2 (Barroso & Celes Eq 19) of
+/// n = 1, f = 1000 into `k` parts.
+pub fn adaptive_limit(k: usize) -> Splits {
+    z_splits(
+        1.0,
+        1000.0,
+        k,
+        SplitScheme::Adaptive {
+            light_angle: 0.0,
+            ratio: 2.0,
+        },
+    )
+    .unwrap()
+}
+
+/// S̄ (measured) of Martin & Tan's trapezoid with the 80 % rule and focus 20, the light
+/// travelling along (0, −sin ε, −cos ε) for ε = `deg` degrees (straight behind at ε = 0).
+pub fn tsm_80_percent_sbar(view: &ViewFrustum, deg: f64) -> f64 {
+    let opts = TsmOptions {
+        focus: 20.0,
+        search: TsmSearch::EightyPercent,
+    };
+    let e = deg.to_radians();
+    let t = tsm(view, DVec3::new(0.0, -e.sin(), -e.cos()), opts).unwrap();
+    frustum_max(view, &t.shadow.shadow_map())
+        .unwrap()
+        .storage_factor
 }
 
 /// The eye-space points a scheme's partition covers: its sub-frustum's corners, or its face's
