@@ -54,17 +54,19 @@ fn bevy_split_beyond_the_far_plane_is_not_inverted() {
 /// (0, 0, 1), `Single(Uniform)`.)
 #[test]
 #[ignore = "fuzz finding, fix pending (undocumented: an Err, or a documented limit)"]
-fn to_mat4_of_a_camera_far_from_the_origin_is_finite() {
+fn to_mat4_of_a_camera_far_from_the_origin_is_finite_or_refused() {
     let view = DMat4::from_translation(DVec3::new(0.0, 0.0, 1e150));
     let cam = Camera::new(view, 1.0, 100.0, 0.5, 1.0).unwrap();
     let input = FrameInput::new(cam, DVec3::new(0.3, -1.0, 0.2), 2048, 1080)
         .scheme(FrameScheme::Single(WarpRule::Uniform));
-    let f = frame(&input).unwrap();
-    let m = &f.maps()[0];
-    assert!(m.world_to_clip(ClipDepth::NegOneToOne).is_finite());
-    // Fails: an entry of the translation column is inf in f32.
-    let g = m.to_mat4(ClipDepth::NegOneToOne);
-    assert!(g.is_finite(), "{g:?}");
+    // A typed refusal is a fix too.
+    if let Ok(f) = frame(&input) {
+        let m = &f.maps()[0];
+        assert!(m.world_to_clip(ClipDepth::NegOneToOne).is_finite());
+        // Fails: an entry of the translation column is inf in f32.
+        let g = m.to_mat4(ClipDepth::NegOneToOne);
+        assert!(g.is_finite(), "{g:?}");
+    }
 }
 
 /// Finding 3: a rigid camera far from the world origin gives an `Ok` map whose f64
