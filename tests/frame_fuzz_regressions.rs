@@ -1,5 +1,5 @@
 //! Findings of the `frame` fuzz target (fuzz/fuzz_targets/frame.rs, docs/fuzzing.md), decoded
-//! into plain calls of the public API. Ignored until fixed: each shows the wrong value.
+//! into plain calls of the public API, each fixed: a typed refusal or the right value.
 
 use glam::{DMat4, DVec3};
 use shadow_aliasing::frame::{frame, Bound, Camera, CascadeSplits, FrameInput, FrameScheme};
@@ -12,7 +12,7 @@ use shadow_aliasing::maps::{ClipDepth, WarpRule};
 /// far 2526.4, Bevy k = 5, minimum 2309.2, maximum 5052.8, first far bound 4875.5, overlap
 /// 0.936, `FrameScheme::Stable`: map 1's split (4875.5, 2526.4).)
 #[test]
-#[ignore = "fuzz finding, fix pending"]
+
 fn bevy_split_beyond_the_far_plane_is_not_inverted() {
     let cam = Camera::new(DMat4::IDENTITY, 1.0, 100.0, 0.7, 1.0).unwrap();
     let splits = CascadeSplits::Bevy {
@@ -53,7 +53,7 @@ fn bevy_split_beyond_the_far_plane_is_not_inverted() {
 /// (π/2 − 1 ulp, π/2 − 1 ulp, 10¹⁵⁰), near 570.75, far 170 320, half FOV 1.5585, light
 /// (0, 0, 1), `Single(Uniform)`.)
 #[test]
-#[ignore = "fuzz finding, fix pending (undocumented: an Err, or a documented limit)"]
+
 fn to_mat4_of_a_camera_far_from_the_origin_is_finite_or_refused() {
     let view = DMat4::from_translation(DVec3::new(0.0, 0.0, 1e150));
     let cam = Camera::new(view, 1.0, 100.0, 0.5, 1.0).unwrap();
@@ -77,7 +77,7 @@ fn to_mat4_of_a_camera_far_from_the_origin_is_finite_or_refused() {
 /// 0.0058232, far 0.0059589, half FOV 2.3968e-5, light (0, 0, 1), 4 texels, depth clamp,
 /// `Single(Uniform)`: world_to_clip's w column (0.0012, −inf, 86.9, 1).)
 #[test]
-#[ignore = "fuzz finding, fix pending"]
+
 fn world_to_clip_of_a_camera_far_from_the_origin_is_finite_or_refused() {
     let view = DMat4::from_translation(DVec3::new(0.0, 1e305, 0.0));
     let cam = Camera::new(view, 0.001, 0.002, 1e-4, 1.0).unwrap();
@@ -101,28 +101,39 @@ fn world_to_clip_of_a_camera_far_from_the_origin_is_finite_or_refused() {
 /// (−0.0611, −0.0611, −10) to (0.011, 1.83, 0.48). Here the translation is −10²⁰: the vertex
 /// goes to y = −2046; at 10¹² it passes.)
 #[test]
-#[ignore = "fuzz finding, fix pending"]
+
 fn stable_cascades_of_a_camera_far_from_the_origin_cover_their_body() {
-    let view = DMat4::from_translation(DVec3::new(0.0, 0.0, -1e20));
-    let cam = Camera::new(view, 10.0, 1920.3510901774164, 0.006111954701731852, 1.0).unwrap();
     let splits = CascadeSplits::Scheme {
         scheme: shadow_aliasing::analytic::partition::SplitScheme::SelfSimilar,
         k: 8,
         overlap: 0.17268134584573128,
     };
-    let input = FrameInput::new(cam, DVec3::new(0.0, -1.0, 0.0), 1024, 1024)
-        .depth_clamp(true)
-        .scheme(FrameScheme::Stable(splits));
-    let f = frame(&input).unwrap();
-    for (i, m) in f.maps().iter().enumerate() {
-        for p in m.body() {
-            let h = m.shadow.matrix() * p.extend(1.0);
-            let c = h.truncate() / h.w;
-            // Fails: map 0's body vertices land well outside [−1, 1] in x or y.
-            assert!(
-                h.w > 0.0 && c.abs().max_element() <= 1.0 + 1e-6,
-                "map {i}: {p} -> {c}"
-            );
+    // At 10¹² the maps are built and cover B; at 10²⁰ the rounding of the world position is
+    // larger than the cascade and the frame refuses it (it mapped B to y = −2046 before).
+    for (t, built) in [(-1e12, true), (-1e20, false)] {
+        let view = DMat4::from_translation(DVec3::new(0.0, 0.0, t));
+        let cam = Camera::new(view, 10.0, 1920.3510901774164, 0.006111954701731852, 1.0).unwrap();
+        let input = FrameInput::new(cam, DVec3::new(0.0, -1.0, 0.0), 1024, 1024)
+            .depth_clamp(true)
+            .scheme(FrameScheme::Stable(splits));
+        match frame(&input) {
+            Ok(f) => {
+                assert!(built, "translation {t}: built");
+                for (i, m) in f.maps().iter().enumerate() {
+                    for p in m.body() {
+                        let h = m.shadow.matrix() * p.extend(1.0);
+                        let c = h.truncate() / h.w;
+                        assert!(
+                            h.w > 0.0 && c.abs().max_element() <= 1.0 + 1e-6,
+                            "map {i}: {p} -> {c}"
+                        );
+                    }
+                }
+            }
+            Err(e) => {
+                assert!(!built, "translation {t}: {e}");
+                assert!(matches!(e, shadow_aliasing::Error::Degenerate(_)), "{e}");
+            }
         }
     }
 }
@@ -135,7 +146,7 @@ fn stable_cascades_of_a_camera_far_from_the_origin_cover_their_body() {
 /// (0, 0, 1), 128 texels, depth clamp, `Stable(Distances { planes: [2.08e305, 5.38e307,
 /// 1.06e308, 1.51e308], overlap: 0.0078 })`.)
 #[test]
-#[ignore = "fuzz finding, fix pending"]
+
 fn stable_cascades_reaching_f64_max_are_finite_or_refused() {
     let view = DMat4::from_translation(DVec3::new(-24.0, 51.0, 51.0));
     let cam = Camera::new(

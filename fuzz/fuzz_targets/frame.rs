@@ -669,18 +669,8 @@ fn check(input: &FrameInput<'_>, f: &Frame) {
             what,
             i,
         );
-        // Finding 2 (open, tests/frame_fuzz_regressions.rs): Bevy's selection near, the previous
-        // far bound, is not clamped to the visible far: a cascade past it has split.0 > split.1.
-        // Skipped for Bevy splits so the run can go on; remove the skip once it is fixed.
-        let bevy = matches!(
-            input.scheme,
-            FrameScheme::Cascades {
-                splits: CascadeSplits::Bevy { .. },
-                ..
-            } | FrameScheme::Stable(CascadeSplits::Bevy { .. })
-        );
         assert!(
-            bevy || m.split.0 <= m.split.1,
+            m.split.0 <= m.split.1,
             "{what} map {i}: split {:?}",
             m.split
         );
@@ -692,7 +682,7 @@ fn check(input: &FrameInput<'_>, f: &Frame) {
         if cascades {
             if let Some(p) = prev_split {
                 assert!(
-                    p.0 <= m.split.0 && (bevy || p.1 <= m.split.1),
+                    p.0 <= m.split.0 && p.1 <= m.split.1,
                     "{what} map {i}: splits out of order {p:?} then {:?}",
                     m.split
                 );

@@ -78,8 +78,8 @@ use crate::maps::lightspace::{light_space_unit, LightSpace};
 use crate::maps::matrix::zero_to_one;
 use crate::maps::tsm::{tsm_on_points, validate as validate_tsm};
 use crate::maps::warp::{
-    fit_body, focus_in_range, rule_axis, rule_n_prime_on, warp_prepared, FrustumInLight,
-    PreparedLight,
+    fit_body, focus_in_range, rule_axis, rule_n_prime_on, verify_clip, warp_prepared,
+    FrustumInLight, PreparedLight,
 };
 use crate::maps::{ClipDepth, ShadowMatrix, TsmOptions, WarpRule};
 use crate::measure::vertex::vertex_max;
@@ -680,7 +680,8 @@ struct Planes {
 /// list, too many planes — more than [`MAX_FACE_BOUND_PLANES`] with face partitions — a
 /// polytope unbounded toward the light), `overlap`, `k` (1..=[`MAX_FACE_K`] for face
 /// partitions), the splits or the rule's parameter; [`Error::Degenerate`] when a map cannot be
-/// represented in `f64`.
+/// represented in `f64`, or its world → clip matrix (either depth convention) not in `f32`
+/// (a camera very far from the world origin: its translation times the map's scale overflows).
 pub fn frame(input: &FrameInput<'_>) -> Result<Frame> {
     let mut out = Frame::default();
     frame_into(input, &mut out)?;
@@ -1038,6 +1039,15 @@ fn cascade_slices(
                 if a >= b {
                     // Wholly outside the visible range: nothing to map there.
                     continue;
+                }
+                if sel_near.max(zn) >= b {
+                    // The previous cascade already reaches the visible far plane: the shader never
+                    // selects this one (nor any later), and the previous has nothing to blend into.
+                    if n > 0 {
+                        let end = out[n - 1].split.1;
+                        out[n - 1].blend = (end, end);
+                    }
+                    break;
                 }
                 out[n] = Slice {
                     cover: (a, b),
@@ -1471,6 +1481,14 @@ impl Ctx<'_, '_> {
         // Depth from the eye-space light y over B and the casters, −1 nearest the light.
         m.z_axis = (-ls_e.y / v_h).extend(v_m / v_h);
         let matrix = m.transpose();
+        // The world-fixed square is built from world positions: far from the world origin (or
+        // near f64's range) their rounding, amplified by 1/half, can leave B outside the map.
+        if !matrix.is_finite() {
+            return Err(Error::Degenerate(
+                "the stable cascade's matrix overflows f64 for this frustum".into(),
+            ));
+        }
+        verify_clip(&matrix, pts.iter())?;
         let shadow = ShadowMatrix::new(
             matrix,
             LightDir::from_unit_unchecked(self.l),
@@ -1644,8 +1662,23 @@ impl Ctx<'_, '_> {
         let mut body = [DVec3::ZERO; MAX_BODY_VERTICES];
         body[..pts.len()].copy_from_slice(pts);
         let image = f64::from(self.input.image_height);
+        // The matrices a renderer uploads, in both depth conventions, must be finite in f64 and
+        // in the GPU's f32 (a camera far from the world origin scales its translation past them).
+        let world_to_eye = self.input.camera.world_to_eye;
+        let world_to_clip = shadow.matrix() * world_to_eye;
+        let zero_one = zero_to_one(&shadow.matrix()) * world_to_eye;
+        if ![world_to_clip, zero_one]
+            .iter()
+            .all(|m| m.is_finite() && m.as_mat4().is_finite())
+        {
+            return Err(Error::Degenerate(
+                "the map's world → clip matrix overflows f32 or f64 (the camera is too far from \
+                 the world origin for the map's scale)"
+                    .into(),
+            ));
+        }
         Ok(FrameMap {
-            world_to_clip: shadow.matrix() * self.input.camera.world_to_eye,
+            world_to_clip,
             shadow,
             split: s.split,
             blend: s.blend,
