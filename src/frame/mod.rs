@@ -1665,8 +1665,8 @@ impl Ctx<'_, '_> {
         // The matrices a renderer uploads, in both depth conventions, must be finite in f64 and
         // in the GPU's f32 (a camera far from the world origin scales its translation past them).
         let world_to_eye = self.input.camera.world_to_eye;
-        let world_to_clip = shadow.matrix() * world_to_eye;
-        let zero_one = zero_to_one(&shadow.matrix()) * world_to_eye;
+        let world_to_clip = matrix * world_to_eye;
+        let zero_one = zero_to_one(&matrix) * world_to_eye;
         if ![world_to_clip, zero_one]
             .iter()
             .all(|m| m.is_finite() && m.as_mat4().is_finite())
