@@ -5,104 +5,19 @@
 #![no_main]
 
 use arbitrary::{Result, Unstructured};
-use glam::{DMat4, DVec3, DVec4};
+use glam::DVec3;
 use libfuzzer_sys::fuzz_target;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
 use shadow_aliasing::maps::cascades::{bounding_sphere, cascades};
 use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
 use shadow_aliasing::maps::minimax::{minimax_mz_n_prime, minimax_n_prime};
-use shadow_aliasing::maps::{
-    light_space, tsm, warp, ClipDepth, Falloff, TsmOptions, TsmSearch, WarpRule,
-};
+use shadow_aliasing::maps::{light_space, tsm, warp, ClipDepth, TsmOptions, TsmSearch};
 use shadow_aliasing::measure::{frustum_max, FrustumError, ShadowMap};
-use shadow_aliasing::{Error, ViewFrustum};
+use shadow_aliasing::ViewFrustum;
 
-const SLACK: f64 = 1e-6;
+mod input;
 
-/// A number: often a raw bit pattern, often an edge, mostly a "reasonable" value.
-fn num(u: &mut Unstructured) -> Result<f64> {
-    const EDGES: [f64; 16] = [
-        0.0,
-        -0.0,
-        5e-324,
-        1e-310,
-        f64::MIN_POSITIVE,
-        1e-300,
-        1e-150,
-        1.0,
-        std::f64::consts::FRAC_PI_2,
-        1.5707963267948963, // π/2 − 1 ulp
-        1e150,
-        1e300,
-        f64::MAX,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::NAN,
-    ];
-    Ok(match u.int_in_range(0u8..=7)? {
-        0 => f64::from_bits(u.arbitrary()?),
-        1 => EDGES[u.choose_index(EDGES.len())?],
-        _ => {
-            let m = f64::from(u.arbitrary::<u16>()?) / 65536.0 * 10.0;
-            let e = i32::from(u.int_in_range(-8i8..=8)?);
-            let s = if u.arbitrary::<bool>()? { -1.0 } else { 1.0 };
-            s * m * 10f64.powi(e)
-        }
-    })
-}
-
-/// A half field of view: mostly inside (0, π/2), by a fraction of it.
-fn fov(u: &mut Unstructured) -> Result<f64> {
-    if u.ratio(1u8, 4)? {
-        num(u)
-    } else {
-        Ok(f64::from(u.arbitrary::<u16>()?.max(1)) / 65536.0 * std::f64::consts::FRAC_PI_2)
-    }
-}
-
-fn rule(u: &mut Unstructured) -> Result<WarpRule> {
-    Ok(match u.int_in_range(0u8..=14)? {
-        0 => WarpRule::Uniform,
-        1 => WarpRule::Eta(num(u)?),
-        2 => WarpRule::Psm,
-        3 => WarpRule::LispsmFixed,
-        4 => WarpRule::Lispsm,
-        5 => WarpRule::Barroso(Falloff::Barroso),
-        6 => WarpRule::Barroso(Falloff::Zhang),
-        7 => WarpRule::Tsm { focus: num(u)? },
-        8 => WarpRule::LispsmReference,
-        9 => WarpRule::Filament,
-        10 => WarpRule::FilamentHints {
-            near_hint: num(u)?,
-            far_hint: num(u)?,
-        },
-        11 => WarpRule::Ogre,
-        12 => WarpRule::Minimax,
-        13 => WarpRule::OgreOrtho {
-            shadow_distance: num(u)?,
-        },
-        _ => WarpRule::MinimaxMz,
-    })
-}
-
-fn typed(e: &Error) {
-    assert!(!e.to_string().is_empty(), "an error without a message: {e:?}");
-}
-
-/// Every point maps inside the clip volume (x, y ∈ [−1, 1], z ∈ [lo_z, 1]) within the slack.
-fn in_clip(m: &DMat4, points: &[DVec3], lo_z: f64, what: &str) {
-    assert!(m.is_finite(), "{what}: matrix not finite {m:?}");
-    for p in points {
-        let h = *m * DVec4::new(p.x, p.y, p.z, 1.0);
-        assert!(h.is_finite() && h.w > 0.0, "{what}: {p} maps to {h}");
-        let c = h.truncate() / h.w;
-        let s = 1.0 + SLACK;
-        assert!(
-            c.x.abs() <= s && c.y.abs() <= s && c.z >= lo_z - SLACK && c.z <= s,
-            "{what}: {p} maps to {c} (outside the clip volume)"
-        );
-    }
-}
+use input::{fov, in_clip, num, rule, typed};
 
 fn finite_error(e: &FrustumError, what: &str) {
     for x in [e.max_mx, e.max_mz, e.storage_factor] {
@@ -111,7 +26,7 @@ fn finite_error(e: &FrustumError, what: &str) {
 }
 
 fn run(u: &mut Unstructured) -> Result<()> {
-    let (near, far, half_fov) = (num(u)?, num(u)?, fov(u)?);
+    let (near, far, half_fov) = (num(u)?, num(u)?, fov(u, 4)?);
     let aspect = if u.arbitrary()? { 1.0 } else { num(u)? };
     let view = match ViewFrustum::with_aspect(near, far, half_fov, aspect) {
         Ok(v) => v,
@@ -128,13 +43,18 @@ fn run(u: &mut Unstructured) -> Result<()> {
     }
     match u.int_in_range(0u8..=5)? {
         0 | 1 => {
-            let r = rule(u)?;
+            let r = rule(u, num)?;
             let what = format!("{what} {r:?}");
             match warp(&view, light, r) {
                 Ok(s) => {
                     in_clip(&s.matrix(), &corners, -1.0, &what);
                     let z01 = format!("{what} [0, 1] depth");
-                    in_clip(&s.with_clip_depth(ClipDepth::ZeroToOne), &corners, 0.0, &z01);
+                    in_clip(
+                        &s.with_clip_depth(ClipDepth::ZeroToOne),
+                        &corners,
+                        0.0,
+                        &z01,
+                    );
                     match frustum_max(&view, &s.shadow_map()) {
                         Ok(e) => finite_error(&e, &what),
                         Err(e) => typed(&e),
@@ -144,7 +64,10 @@ fn run(u: &mut Unstructured) -> Result<()> {
             }
         }
         2 => {
-            for r in [minimax_n_prime(&view, light), minimax_mz_n_prime(&view, light)] {
+            for r in [
+                minimax_n_prime(&view, light),
+                minimax_mz_n_prime(&view, light),
+            ] {
                 match r {
                     Ok(o) => {
                         for x in [o.max_mx, o.max_mz, o.storage_factor()] {
@@ -158,7 +81,10 @@ fn run(u: &mut Unstructured) -> Result<()> {
             match light_space(light, axis) {
                 Ok(ls) => {
                     for v in [ls.x, ls.y, ls.z] {
-                        assert!((v.length() - 1.0).abs() < 1e-12, "{what} axis {axis}: {ls:?}");
+                        assert!(
+                            (v.length() - 1.0).abs() < 1e-12,
+                            "{what} axis {axis}: {ls:?}"
+                        );
                     }
                     assert!((ls.x.cross(ls.y) - ls.z).length() < 1e-12, "{what}: {ls:?}");
                 }
@@ -167,8 +93,13 @@ fn run(u: &mut Unstructured) -> Result<()> {
             let (a, b) = (num(u)?, num(u)?);
             match bounding_sphere(&view, a, b) {
                 Ok((c, r)) => {
-                    assert!(c.is_finite() && r.is_finite() && r > 0.0, "{what}: sphere {c} {r}");
-                    let sub = view.with_depth_range(a, b).expect("sphere of an invalid range");
+                    assert!(
+                        c.is_finite() && r.is_finite() && r > 0.0,
+                        "{what}: sphere {c} {r}"
+                    );
+                    let sub = view
+                        .with_depth_range(a, b)
+                        .expect("sphere of an invalid range");
                     // In units of r: the distance itself can overflow where r does not.
                     for p in sub.corners() {
                         let d = (p / r - DVec3::new(0.0, 0.0, -c / r)).length();
@@ -189,7 +120,7 @@ fn run(u: &mut Unstructured) -> Result<()> {
                     ratio: num(u)?,
                 },
             };
-            let r = rule(u)?;
+            let r = rule(u, num)?;
             let overlap = num(u)?;
             let splits = match z_splits(view.near(), view.far(), k, scheme) {
                 Ok(s) => s,
@@ -202,7 +133,8 @@ fn run(u: &mut Unstructured) -> Result<()> {
                 Ok(cs) => {
                     assert!(cs.k() > 0, "{what}: empty cascades");
                     for c in cs.iter() {
-                        let what = format!("{what} {r:?} cascade [{}, {}]", c.split_near, c.split_far);
+                        let what =
+                            format!("{what} {r:?} cascade [{}, {}]", c.split_near, c.split_far);
                         let sub = view
                             .with_depth_range(c.split_near, c.split_far)
                             .expect("cascade of an invalid range");

@@ -68,7 +68,12 @@ fuzz_target!(|data: &[u8]| {
             let any_error = match (&input, &v) {
                 (Value::Object(_), Value::Object(_)) => check_answer(&v),
                 (Value::Array(items), Value::Array(answers)) => {
-                    assert_eq!(items.len(), answers.len(), "answers for {} requests", items.len());
+                    assert_eq!(
+                        items.len(),
+                        answers.len(),
+                        "answers for {} requests",
+                        items.len()
+                    );
                     answers.iter().fold(false, |e, a| check_answer(a) | e)
                 }
                 _ => panic!("output shape does not match the input's: {}", out.stdout),

@@ -15,42 +15,11 @@ use shadow_aliasing::frame::{
     WarpCentre, MAX_BOUND_PLANES, MAX_FACE_K,
 };
 use shadow_aliasing::maps::faces::FaceWarp;
-use shadow_aliasing::maps::{ClipDepth, Falloff, TsmOptions, TsmSearch, WarpRule};
-use shadow_aliasing::Error;
+use shadow_aliasing::maps::{ClipDepth, TsmOptions, TsmSearch, WarpRule};
 
-const SLACK: f64 = 1e-6;
+mod input;
 
-/// A number: often a raw bit pattern, often an edge, mostly a "reasonable" value (as `builders`).
-fn num(u: &mut Unstructured) -> Result<f64> {
-    const EDGES: [f64; 16] = [
-        0.0,
-        -0.0,
-        5e-324,
-        1e-310,
-        f64::MIN_POSITIVE,
-        1e-300,
-        1e-150,
-        1.0,
-        std::f64::consts::FRAC_PI_2,
-        1.5707963267948963, // π/2 − 1 ulp
-        1e150,
-        1e300,
-        f64::MAX,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::NAN,
-    ];
-    Ok(match u.int_in_range(0u8..=7)? {
-        0 => f64::from_bits(u.arbitrary()?),
-        1 => EDGES[u.choose_index(EDGES.len())?],
-        _ => {
-            let m = f64::from(u.arbitrary::<u16>()?) / 65536.0 * 10.0;
-            let e = i32::from(u.int_in_range(-8i8..=8)?);
-            let s = if u.arbitrary::<bool>()? { -1.0 } else { 1.0 };
-            s * m * 10f64.powi(e)
-        }
-    })
-}
+use input::{fov, in_clip, num, rule, typed};
 
 /// A fraction in [0, 1] (16 bits; 0 and 1 reachable).
 fn frac(u: &mut Unstructured) -> Result<f64> {
@@ -66,42 +35,13 @@ fn between(u: &mut Unstructured, lo: f64, hi: f64) -> Result<f64> {
     }
 }
 
-/// A half field of view: mostly inside (0, π/2), by a fraction of it.
-fn fov(u: &mut Unstructured) -> Result<f64> {
-    if u.ratio(1u8, 8)? {
-        num(u)
+/// The η of `WarpRule::Eta`: half the time inside [−1, 1] (mostly), half any number.
+fn eta(u: &mut Unstructured) -> Result<f64> {
+    if u.arbitrary()? {
+        between(u, -1.0, 1.0)
     } else {
-        Ok(f64::from(u.arbitrary::<u16>()?.max(1)) / 65536.0 * std::f64::consts::FRAC_PI_2)
+        num(u)
     }
-}
-
-fn rule(u: &mut Unstructured) -> Result<WarpRule> {
-    Ok(match u.int_in_range(0u8..=14)? {
-        0 => WarpRule::Uniform,
-        1 => WarpRule::Eta(if u.arbitrary()? {
-            between(u, -1.0, 1.0)?
-        } else {
-            num(u)?
-        }),
-        2 => WarpRule::Psm,
-        3 => WarpRule::LispsmFixed,
-        4 => WarpRule::Lispsm,
-        5 => WarpRule::Barroso(Falloff::Barroso),
-        6 => WarpRule::Barroso(Falloff::Zhang),
-        7 => WarpRule::Tsm { focus: num(u)? },
-        8 => WarpRule::LispsmReference,
-        9 => WarpRule::Filament,
-        10 => WarpRule::FilamentHints {
-            near_hint: num(u)?,
-            far_hint: num(u)?,
-        },
-        11 => WarpRule::Ogre,
-        12 => WarpRule::Minimax,
-        13 => WarpRule::OgreOrtho {
-            shadow_distance: num(u)?,
-        },
-        _ => WarpRule::MinimaxMz,
-    })
 }
 
 fn split_scheme(u: &mut Unstructured) -> Result<SplitScheme> {
@@ -264,7 +204,7 @@ fn camera(u: &mut Unstructured) -> Result<Option<Camera>> {
         let ratio = 10f64.powf(0.01 + 6.0 * frac(u)?);
         (n, n * ratio)
     };
-    let half_fov = fov(u)?;
+    let half_fov = fov(u, 8)?;
     let aspect = match u.int_in_range(0u8..=3)? {
         0 => 1.0,
         1 => num(u)?,
@@ -534,13 +474,6 @@ fn make_bound(kind: u8, s: &BoundStore) -> Bound<'_> {
     }
 }
 
-fn typed(e: &Error) {
-    assert!(
-        !e.to_string().is_empty(),
-        "an error without a message: {e:?}"
-    );
-}
-
 /// The input, formatted only when an assertion fails.
 struct What<'i, 'a>(&'i FrameInput<'a>);
 
@@ -555,25 +488,6 @@ fn pos(x: f64, what: &What, i: usize, name: &str) {
         x.is_finite() && x > 0.0,
         "{what} map {i}: {name} = {x}, not finite and positive"
     );
-}
-
-/// Every eye-space point maps inside the clip volume (x, y ∈ [−1, 1], z ∈ [lo_z, 1]) within the
-/// slack, w > 0.
-fn in_clip(m: &DMat4, points: &[DVec3], lo_z: f64, what: &What, i: usize) {
-    assert!(m.is_finite(), "{what} map {i}: matrix not finite {m:?}");
-    for p in points {
-        let h = *m * p.extend(1.0);
-        assert!(
-            h.is_finite() && h.w > 0.0,
-            "{what} map {i}, depth from {lo_z}: {p} maps to {h}"
-        );
-        let c = h.truncate() / h.w;
-        let s = 1.0 + SLACK;
-        assert!(
-            c.x.abs() <= s && c.y.abs() <= s && c.z >= lo_z - SLACK && c.z <= s,
-            "{what} map {i}, depth from {lo_z}: {p} maps to {c} (outside the clip volume)"
-        );
-    }
 }
 
 // `len() == 0` on purpose: `is_empty` and `storage_factor` are checked against `len`.
@@ -661,13 +575,17 @@ fn check(input: &FrameInput<'_>, f: &Frame) {
         for p in body {
             assert!(p.is_finite(), "{what} map {i}: body vertex {p}");
         }
-        in_clip(&m.shadow.matrix(), body, -1.0, what, i);
+        in_clip(
+            &m.shadow.matrix(),
+            body,
+            -1.0,
+            format_args!("{what} map {i}"),
+        );
         in_clip(
             &m.shadow.with_clip_depth(ClipDepth::ZeroToOne),
             body,
             0.0,
-            what,
-            i,
+            format_args!("{what} map {i}"),
         );
         assert!(
             m.split.0 <= m.split.1,
@@ -749,9 +667,9 @@ fn run(u: &mut Unstructured) -> Result<()> {
     let image_height = res(u)?;
     let mut planes = Vec::new();
     let scheme = match u.int_in_range(0u8..=5)? {
-        0 | 1 => FrameScheme::Single(rule(u)?),
+        0 | 1 => FrameScheme::Single(rule(u, eta)?),
         2 => {
-            let r = rule(u)?;
+            let r = rule(u, eta)?;
             FrameScheme::Cascades {
                 splits: splits(u, near, far, &mut planes)?,
                 rule: r,
