@@ -182,8 +182,12 @@ impl Axis {
                     }
                     if decades <= 2.0 + 1e-9 {
                         // Two decades or less: label 2 and 5 as well; less than one decade:
-                        // every mantissa.
-                        let mantissas: &[f64] = if decades < 1.0 - 1e-9 {
+                        // every mantissa; less than half a decade (a colour bar over one
+                        // panel's own range): 1.2, 1.5 and 2.5 too, so that its upper part has
+                        // labels.
+                        let mantissas: &[f64] = if decades < 0.5 - 1e-9 {
+                            &[1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]
+                        } else if decades < 1.0 - 1e-9 {
                             &[2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]
                         } else {
                             &[2.0, 5.0]
@@ -219,6 +223,12 @@ impl Axis {
             && self.max <= 1000.0 * (1.0 + 1e-9)
     }
 
+    /// Whether a base-10 axis labels mantissas between its decades (two decades or less).
+    fn labels_mantissas(&self) -> bool {
+        let (lo, hi) = self.range();
+        hi - lo <= 2.0 + 1e-9
+    }
+
     /// The label of a tick at axis-space position `a`.
     pub fn tick_label(&self, a: f64) -> String {
         match self.scale {
@@ -228,6 +238,12 @@ impl Axis {
             }
             Scale::Log(b) => {
                 let e = a.round();
+                let ten = (b - 10.0).abs() < 1e-12;
+                if ten && self.labels_mantissas() && !self.plain_decades() {
+                    // Decades and mantissas in one format: 900, 1000, 1200 or 9×10⁵, 10⁶,
+                    // 1.2×10⁶ (never 900 beside 10³).
+                    return fmt_times_ten(self.to_data(a));
+                }
                 if (a - e).abs() < 1e-9 {
                     let e = e as i64;
                     if (b - 10.0).abs() < 1e-12 && self.plain_decades() {
@@ -431,7 +447,23 @@ mod tests {
         // Less than a decade: every mantissa, written as m×10ᵉ on a large axis.
         let sub = Axis::log10("S", 8.65e5, 2e6);
         let labels: Vec<String> = sub.ticks().0.iter().map(|&t| sub.tick_label(t)).collect();
-        assert_eq!(labels, vec!["9×10⁵", "10⁶", "2×10⁶"]);
+        assert_eq!(labels, vec!["9×10⁵", "10⁶", "1.2×10⁶", "1.5×10⁶", "2×10⁶"]);
+        // Lloyd 2006 Fig 7's face-partition panel (865.2 to 1999): one format, labels up the bar.
+        let faces = Axis::log10("S", 865.2, 1999.0);
+        let labels: Vec<String> = faces
+            .ticks()
+            .0
+            .iter()
+            .map(|&t| faces.tick_label(t))
+            .collect();
+        assert_eq!(labels, vec!["900", "1000", "1200", "1500"]);
+        // Between half a decade and one: every whole mantissa, no 1.2 or 1.5.
+        let mid = Axis::log10("S", 2e3, 9e3);
+        let labels: Vec<String> = mid.ticks().0.iter().map(|&t| mid.tick_label(t)).collect();
+        assert_eq!(
+            labels,
+            vec!["2000", "3000", "4000", "5000", "6000", "7000", "8000", "9000"]
+        );
         assert_eq!(fmt_times_ten(8.6523e5), "8.652×10⁵");
         assert_eq!(fmt_times_ten(9.99999e5), "10⁶");
         assert_eq!(fmt_times_ten(1999.0), "1999");
