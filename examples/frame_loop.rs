@@ -25,8 +25,9 @@ struct Upload {
 }
 
 fn main() -> Result<()> {
-    let sun = DVec3::new(0.3, -1.0, 0.2); // travelling down and slightly sideways
-                                          // The scene: a ground 200 units across and a tower on it (world space).
+    // The sun's light travels down and slightly sideways.
+    let sun = DVec3::new(0.3, -1.0, 0.2);
+    // The scene: a ground 200 units across and a tower on it (world space).
     let ground = Aabb::new(
         DVec3::new(-100.0, -1.0, -100.0),
         DVec3::new(100.0, 0.0, 100.0),
@@ -34,8 +35,10 @@ fn main() -> Result<()> {
     let tower = Aabb::new(DVec3::new(-5.0, 0.0, -5.0), DVec3::new(5.0, 40.0, 5.0))?;
     let receivers = [ground, tower];
     let casters = [ground, tower];
-    // Reused every frame: no heap allocation per frame.
+    // Both reused every frame: after the first, no heap allocation per frame (the frame API
+    // allocates nothing; the upload list keeps its capacity).
     let mut out = Frame::default();
+    let mut uploads: Vec<Upload> = Vec::with_capacity(4);
     for n in 0..8 {
         // The camera orbits the tower 60 units away, 5 up; far plane 1000 (far beyond the scene).
         let a = f64::from(n) * std::f64::consts::TAU / 8.0;
@@ -58,16 +61,13 @@ fn main() -> Result<()> {
             println!("frame {n}: scene out of view, no shadow map");
             continue;
         }
-        let uploads: Vec<Upload> = out
-            .maps()
-            .iter()
-            .map(|m| Upload {
-                world_to_light: m.to_mat4(ClipDepth::ZeroToOne),
-                split: (m.split.0 as f32, m.split.1 as f32),
-                blend: (m.blend.0 as f32, m.blend.1 as f32),
-                normal_bias: (1.5 * m.texel_world) as f32,
-            })
-            .collect();
+        uploads.clear();
+        uploads.extend(out.maps().iter().map(|m| Upload {
+            world_to_light: m.to_mat4(ClipDepth::ZeroToOne),
+            split: (m.split.0 as f32, m.split.1 as f32),
+            blend: (m.blend.0 as f32, m.blend.1 as f32),
+            normal_bias: (1.5 * m.texel_world) as f32,
+        }));
         println!(
             "frame {n}: {} maps, S̄ over the scene = {:8.2}, worst predicted error {:5.2} px (1080p, 2048² maps)",
             out.len(),

@@ -96,3 +96,8 @@ pub use frustum::{LightAngle, LightDir, NPrime, Resolutions, ViewFrustum};
 #[doc = include_str!("../README.md")]
 #[cfg(doctest)]
 pub struct ReadmeDoctests;
+
+/// docs/renderer.md's frame loop, compiled as a doc-test for the same reason.
+#[doc = include_str!("../docs/renderer.md")]
+#[cfg(doctest)]
+pub struct RendererGuideDoctests;

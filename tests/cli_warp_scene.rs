@@ -162,6 +162,8 @@ fn bad_scene_arguments_are_errors() {
             "-1,-1,-5,1,1,-2",
         ],
         &["--splits", "1,50,40,100"],
+        // --bevy carries its own overlap proportion; a second one was ignored silently.
+        &["--bevy", "4,0.1,10,150,0.2", "--overlap", "0.7"],
     ] {
         let (_, err) = run_failing(&warp_args("0.5", "0.3,-1,0.2", "lispsm", extra), "");
         assert!(err.starts_with("error:"), "{err}");

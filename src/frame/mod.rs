@@ -17,7 +17,8 @@
 //! every point of B lies in the sweep), so each caster box is clipped by the prism's side planes
 //! and its vertex nearest the light (in the warp's depth, y/w) extends the depth range. With
 //! `depth_clamp` the casters are not looked at: the map's depth covers B alone and casters nearer
-//! the light fall below depth 0, which the device clamps ("pancaking").
+//! the light fall below the map's near depth (0, or −1 in OpenGL's convention), which the device
+//! clamps ("pancaking").
 //!
 //! # Conventions (the tests and the command line rely on them)
 //!
@@ -36,7 +37,9 @@
 //!   = Δ_B and its hints measured from the camera's planes; OGRE's e_z is n_B with the camera's
 //!   √(n f); TSM's focus distance is scaled by (f_B − n_B)/(slice depth), as
 //!   [`crate::maps::tsm::tsm_general`] does; minimax minimises S̄ over B's vertices with the eye's
-//!   centre, so it is never above the uniform map over B.
+//!   centre, so with that centre ([`WarpCentre::Rule`], [`WarpCentre::Eye`]) it is never above the
+//!   uniform map over B. With [`WarpCentre::NearestVertex`] the map is built around another centre
+//!   than the one its n′ was chosen for, and can be worse than uniform.
 //! - Casters only extend the light-depth range (or rely on depth clamp), never s, t or S̄.
 //! - The error is measured over B's vertices ([`crate::measure::vertex::vertex_max`]): the papers'
 //!   warps have m_x quasi-linear and m_z convex over a convex body, so the maxima lie at vertices
@@ -184,8 +187,9 @@ impl Camera {
     /// down −Z) and the projection's near, far, half vertical field of view and aspect.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] naming `world_to_eye` (not finite, or not rigid to 10⁻⁶), or as
-    /// [`ViewFrustum::with_aspect`].
+    /// [`Error::InvalidArgument`] naming `world_to_eye` (not finite, or not a proper rigid
+    /// transform: its 3 × 3 part a rotation to 10⁻⁶, no reflection, the bottom row (0, 0, 0, 1)
+    /// to 10⁻¹²), or as [`ViewFrustum::with_aspect`].
     pub fn new(
         world_to_eye: DMat4,
         near: f64,
@@ -252,7 +256,8 @@ pub enum WarpCentre {
     Rule,
     /// On the eye's own light-space line (`fit_warp`, Filament).
     Eye,
-    /// On the light-space x and y of B's vertex nearest the camera (ties: the largest x + y, the
+    /// On the light-space x and y of B's vertex nearest the camera (ties: the largest eye-space
+    /// x + y, the
     /// top right of OGRE's `ConvexBody::define` order), as the LiSPSM reference code. OGRE
     /// (`OgreShadowCameraSetupLiSPSM.cpp`) takes the camera-nearest point of V ∩ S, the view
     /// frustum ∩ the scene's box, which is B's vertex when the receivers' bound is the scene's.
@@ -262,7 +267,7 @@ pub enum WarpCentre {
 /// How the view's depth range is split into cascades.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum CascadeSplits<'a> {
-    /// k planes of a [`SplitScheme`] over the visible depth range; each partition but the last
+    /// k cascades of a [`SplitScheme`] over the visible depth range; each partition but the last
     /// reaches `overlap` of its own depth into the next (the crate's overlap,
     /// [`crate::maps::cascades`]).
     Scheme {
@@ -450,7 +455,9 @@ pub enum Focus {
     /// does not depend on B, map it anyway).
     EdgeOn,
     /// B has no extent in eye depth (f_B = n_B, a wall facing the camera): mapped with n′ = ∞,
-    /// since every warp rule needs a depth range.
+    /// since every warp rule needs a depth range. Single maps and cascades report it; TSM,
+    /// stable cascades and face partitions fit such a B with their own construction and report
+    /// it as `Body` or `Flat`.
     ZeroDepth,
 }
 
@@ -554,7 +561,9 @@ impl Default for Frame {
 }
 
 impl Frame {
-    /// The built maps, near to far (cascades whose body is empty are left out).
+    /// The built maps: near to far for cascades (those whose body is empty are left out), in
+    /// face order (bottom, right, top, left, then the near or far face; each side face's parts near
+    /// to far) for face partitions.
     pub fn maps(&self) -> FrameMaps<'_> {
         FrameMaps(&self.maps[..self.k])
     }
@@ -676,9 +685,10 @@ struct Planes {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir_world`, `map_resolution` (< 3), `image_height`
-/// (0), `depth_range` (not finite, z_min ≥ z_max), `receivers`/`casters` (a bad box, an empty
-/// list, too many planes — more than [`MAX_FACE_BOUND_PLANES`] with face partitions — a
-/// polytope unbounded toward the light), `overlap`, `k` (1..=[`MAX_FACE_K`] for face
+/// (0), `depth_range` (not finite, z_min ≥ z_max, or no overlap with the camera's [near, far]),
+/// `receivers`/`casters` (a bad box, too many planes — more than [`MAX_FACE_BOUND_PLANES`] with
+/// face partitions — a polytope unbounded toward the light; for receivers also an empty list of
+/// boxes, while an empty list of casters is no caster), `overlap`, `k` (1..=[`MAX_FACE_K`] for face
 /// partitions), the splits or the rule's parameter; [`Error::Degenerate`] when a map cannot be
 /// represented in `f64`, or its world → clip matrix (either depth convention) not in `f32`
 /// (a camera very far from the world origin: its translation times the map's scale overflows).

@@ -230,8 +230,9 @@ pub struct SceneArgs {
     /// Bevy's cascades: K,MINIMUM_DISTANCE,FIRST_FAR_BOUND,MAXIMUM_DISTANCE,OVERLAP_PROPORTION.
     #[arg(long, value_name = "K,MIN,FIRST_FAR,MAX,OVERLAP", allow_hyphen_values = true, value_parser = parse_list)]
     pub bevy: Option<NumList>,
-    /// Cascade overlap fraction in [0, 1) (with --partition, --splits or --fractions).
-    #[arg(long, allow_hyphen_values = true)]
+    /// Cascade overlap fraction in [0, 1) (with --partition, --splits or --fractions; --bevy
+    /// takes its own OVERLAP_PROPORTION).
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "bevy")]
     pub overlap: Option<f64>,
 }
 
