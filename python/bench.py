@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Times the Python bindings against NumPy, in one run (docs/python.md reports the numbers).
 
-1. Every closed form with a fast path, 1M elements, every argument an array (random, inside the
-   domain; n′ = ∞ for every 7th element), against benches/reference/closed_numpy.py (the same
-   formula and domain checks in NumPy); the forms with tan θ also with θ one number.
+1. Every element-wise closed form with a NumPy reference, 1M elements, every argument an array
+   (random, inside the domain; n′ and Zhang's λ = ∞ for every 7th element), against
+   benches/reference/closed_numpy.py (the same formula and domain checks in NumPy); the forms
+   with tan θ also with θ one number.
 2. The 360 × 1440 hemisphere sweep of the lispsm (1/sin γ) map, f/n = 1000, half fov 30°,
    against benches/reference/sweep_numpy.py (vectorised, blocks of 4096 directions).
 
@@ -73,6 +74,21 @@ def main():
     alpha = far / near
     n_warp = n_prime / near
     zg = 1.0 + (alpha - 1.0) * rng.uniform(0.0, 1.0, n)
+    # TSM: height λ, focus δ′ ∈ (0, λ), ξ ∈ (−1, 1) below the unwarped line 1 − 2δ′/λ.
+    lam = rng.uniform(0.1, 100.0, n)
+    frac = rng.uniform(0.01, 0.99, n)
+    delta = lam * frac
+    xi = -1.0 + (2.0 - 2.0 * frac) * rng.uniform(0.01, 0.99, n)
+    # Zhang's λ: any λ > 0 (below near too), ∞ for every 7th; light angles in [0, π/2] (tilted
+    # m_z: > 0); y across the frustum's vertical section at z, for θ an array and θ = 0.5.
+    zl = near * 10.0 ** rng.uniform(-1.0, 2.0, n)
+    zl[::7] = np.inf
+    light = rng.uniform(0.0, np.pi / 2, n)
+    light_pos = rng.uniform(0.01, np.pi / 2, n)
+    u = rng.uniform(-1.0, 1.0, n)
+    y = z * np.tan(half_fov) * u
+    y_one = z * np.tan(0.5) * u
+    k = rng.integers(1, 17, n).astype(np.float64)
     c = closed_numpy
     for label, ours, theirs, a in [
         ("`mx`", sa.mx, c.mx, (near, far, n_prime, z)),
@@ -88,6 +104,26 @@ def main():
         ("`max_mz`, θ one number", sa.max_mz, c.max_mz, (near, far, 0.5, n_prime)),
         ("`storage_factor`, θ one number", sa.storage_factor, c.storage_factor,
          (near, far, 0.5, n_prime)),
+        ("`tsm_eta`", sa.tsm_eta, c.tsm_eta, (lam, delta, xi)),
+        ("`zhang_eq_local`", sa.zhang_eq_local, c.zhang_eq_local, (near, far, half_fov, zl, z)),
+        ("`zhang_ep_local`", sa.zhang_ep_local, c.zhang_ep_local, (near, far, half_fov, zl, z)),
+        ("`zhang_ep_local`, θ one number", sa.zhang_ep_local, c.zhang_ep_local,
+         (near, far, 0.5, zl, z)),
+        ("`subdivided_max_error`", sa.subdivided_max_error, c.subdivided_max_error,
+         (alpha, k, eta, half_fov)),
+        ("`subdivided_max_error`, θ one number", sa.subdivided_max_error,
+         c.subdivided_max_error, (alpha, k, eta, 0.5)),
+        ("`gamma_lim`", sa.gamma_lim, c.gamma_lim, (near, far, half_fov)),
+        ("`gamma_lim`, θ one number", sa.gamma_lim, c.gamma_lim, (near, far, 0.5)),
+        ("`zhang_eq`", sa.zhang_eq, c.zhang_eq, (near, far, half_fov, zl, light, y, z)),
+        ("`zhang_eq`, θ one number", sa.zhang_eq, c.zhang_eq,
+         (near, far, 0.5, zl, light, y_one, z)),
+        ("`zhang_ep`", sa.zhang_ep, c.zhang_ep, (near, far, half_fov, zl, light, y, z)),
+        ("`zhang_ep`, θ one number", sa.zhang_ep, c.zhang_ep,
+         (near, far, 0.5, zl, light, y_one, z)),
+        ("`tilted_mz`", sa.tilted_mz, c.tilted_mz, (near, far, half_fov, n_prime, light_pos, z)),
+        ("`tilted_mz`, θ one number", sa.tilted_mz, c.tilted_mz,
+         (near, far, 0.5, n_prime, light_pos, z)),
     ]:
         compare(label, ours, theirs, a, r)
     t = np.empty(n)

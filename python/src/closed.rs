@@ -86,6 +86,40 @@ fn view_ok(n: f64, f: f64, th: f64, t: f64) -> bool {
         & normal(n * t)
 }
 
+/// A conservative subset of [`view_ok`]'s domain that needs no tan θ (for the forms whose value
+/// does not use it): every frustum it admits, `ViewFrustum::new` accepts. tan θ ≥ θ on (0, π/2),
+/// so θ ≥ 1e-300 and n θ ≥ 1e-290 keep tan θ and n tan θ normal; tan θ < 1.7e16 for every f64
+/// below π/2, so f ≤ 1e290 keeps f tan θ and n + √(f n) finite.
+#[inline(always)]
+fn view_ok_no_tan(n: f64, f: f64, th: f64) -> bool {
+    pos(n)
+        & pos(f)
+        & (f > n)
+        & (f <= 1e290)
+        & finite(f / n)
+        & (1e-300..std::f64::consts::FRAC_PI_2).contains(&th)
+        & (n * th >= 1e-290)
+}
+
+/// `NPrime::named`: ∞, or finite and > 0 (Zhang's λ, a tilted light's n′: no bound by near).
+#[inline(always)]
+fn warp_ok(v: f64) -> bool {
+    (v == f64::INFINITY) | pos(v)
+}
+
+/// `LightAngle::new`: γ finite in [0, π/2].
+#[inline(always)]
+fn angle_ok(g: f64) -> bool {
+    finite(g) & (0.0..=std::f64::consts::FRAC_PI_2).contains(&g)
+}
+
+/// `point_in_view` of `analytic::global` given t = tan θ: z in [n, f], y finite with
+/// |y| ≤ z tan θ (1 + 1e-12), the same product as the check.
+#[inline(always)]
+fn point_ok(y: f64, z: f64, n: f64, f: f64, t: f64) -> bool {
+    depth_ok(z, n, f) & finite(y) & (y.abs() <= z * t * (1.0 + 1e-12))
+}
+
 /// `v.is_normal()` with float compares only (see `broadcast::finite`).
 #[inline(always)]
 fn normal(v: f64) -> bool {
@@ -532,6 +566,18 @@ elementwise! {
             Resolutions::new(ri, 1.0, rt)?,
         )
     };
+    fast(half_fov) = |&[n, f, th, np, g, z, ri, rt]: &[f64; 8], t: f64| {
+        // sin γ > 0 for γ > 0 (`positive_sin`); an overflow of μ makes the value non-finite,
+        // which sends the block to the validated form.
+        let ok = view_ok(n, f, th, t)
+            & warp_ok(np)
+            & angle_ok(g)
+            & (g > 0.0)
+            & depth_ok(z, n, f)
+            & pos(ri)
+            & pos(rt);
+        (tilted::tilted_mz_unchecked(n, f, th, t, np, g, z, ri, rt), ok)
+    };
 }
 
 /// Barroso & Celes' generalised n′ for a tilted light (Barroso Eq 13–18): n′₁(γ) for
@@ -571,6 +617,9 @@ elementwise! {
     ///     γ_lim = atan((f + n) tan θ / (f − n))   radians
     fn gamma_lim(near, far, half_fov) -> SCALAR;
     checked = |x: &[f64; 3]| Ok(tilted::gamma_lim(&view(x)?));
+    fast(half_fov) = |&[n, f, th]: &[f64; 3], t: f64| {
+        (tilted::gamma_lim_unchecked(n, f, t), view_ok(n, f, th, t))
+    };
 }
 
 elementwise! {
@@ -583,6 +632,13 @@ elementwise! {
     /// ``inf`` on the unwarped line ξ = 1 − 2δ′/λ; ValueError above it (no solution).
     fn tsm_eta(lambda_, delta_prime, xi) -> N_PRIME;
     checked = |&[l, d, xi]: &[f64; 3]| Ok(tsm::tsm_eta(l, d, xi)?.value());
+    fast = |&[l, d, xi]: &[f64; 3], _: f64| {
+        let v = tsm::tsm_eta_unchecked(l, d, xi);
+        // λ finite > 0, δ′ in (0, λ), ξ in (−1, 1), and a finite η > 0: the unwarped line (∞)
+        // and no solution (η < 0) are left to the validated form.
+        let ok = pos(l) & (d > 0.0) & (d < l) & (xi > -1.0) & (xi < 1.0) & pos(v);
+        (v, ok)
+    };
 }
 
 elementwise! {
@@ -596,6 +652,10 @@ elementwise! {
     fn zhang_eq(near, far, half_fov, lambda_, light_angle, y, z) -> SCALAR;
     checked = |&[n, f, th, l, g, y, z]: &[f64; 7]| {
         global::zhang_eq(&view(&[n, f, th])?, n_prime_arg("lambda", l)?, LightAngle::new(g)?, y, z)
+    };
+    fast(half_fov) = |&[n, f, th, l, g, y, z]: &[f64; 7], t: f64| {
+        let ok = view_ok(n, f, th, t) & warp_ok(l) & angle_ok(g) & point_ok(y, z, n, f, t);
+        (global::zhang_eq_unchecked(n, f, th, t, l, g, y, z), ok)
     };
 }
 
@@ -611,6 +671,11 @@ elementwise! {
     checked = |&[n, f, th, l, g, y, z]: &[f64; 7]| {
         global::zhang_ep(&view(&[n, f, th])?, n_prime_arg("lambda", l)?, LightAngle::new(g)?, y, z)
     };
+    fast(half_fov) = |&[n, f, th, l, g, y, z]: &[f64; 7], t: f64| {
+        // An overflow of μ makes the value non-finite: the validated form then reports it.
+        let ok = view_ok(n, f, th, t) & warp_ok(l) & angle_ok(g) & point_ok(y, z, n, f, t);
+        (global::zhang_ep_unchecked(n, f, th, t, l, g, y, z), ok)
+    };
 }
 
 elementwise! {
@@ -624,6 +689,11 @@ elementwise! {
     checked = |&[n, f, th, l, z]: &[f64; 5]| {
         global::zhang_eq_local(&view(&[n, f, th])?, n_prime_arg("lambda", l)?, z)
     };
+    fast = |&[n, f, th, l, z]: &[f64; 5], _: f64| {
+        // The value does not use tan θ: the frustum is checked without it (conservatively).
+        let ok = view_ok_no_tan(n, f, th) & warp_ok(l) & depth_ok(z, n, f);
+        (global::zhang_eq_local_unchecked(n, f, l, z), ok)
+    };
 }
 
 elementwise! {
@@ -634,6 +704,10 @@ elementwise! {
     fn zhang_ep_local(near, far, half_fov, lambda_, z) -> SCALAR;
     checked = |&[n, f, th, l, z]: &[f64; 5]| {
         global::zhang_ep_local(&view(&[n, f, th])?, n_prime_arg("lambda", l)?, z)
+    };
+    fast(half_fov) = |&[n, f, th, l, z]: &[f64; 5], t: f64| {
+        let ok = view_ok(n, f, th, t) & warp_ok(l) & depth_ok(z, n, f);
+        (global::zhang_ep_local_unchecked(n, f, t, l, z), ok)
     };
 }
 

@@ -69,11 +69,44 @@ def _edge_args(name, rng, n):
                                     * (rng.random(n) < 0.5), 1.0 + (alpha - 1.0) * rng.random(n)),
                    0.1)
         return [alpha, n_warp, zg]
+    # Zhang's λ and a tilted light's n′: any value > 0 (below near too) or ∞.
+    zl = np.where(rng.random(n) < 0.25, _pick(rng, n, near * 10.0 ** rng.uniform(-3, 0, n)), np_)
+    # Light angles at and beyond both ends of [0, π/2], and inside.
+    g = _pick(rng, n, np.where(rng.random(n) < 0.3,
+                               rng.choice([0.0, -0.0, 5e-324, 1e-300, HALF_PI,
+                                           np.nextafter(HALF_PI, 4), -1e-300], n),
+                               rng.uniform(0, HALF_PI, n)), 0.1)
+    if name == "tsm_eta":
+        lam = _pick(rng, n, 10.0 ** rng.uniform(-3, 3, n))
+        frac = np.where(rng.random(n) < 0.2, rng.choice([0.0, 1e-12, 0.25, 1.0, 1.2], n),
+                        rng.random(n))
+        d = _pick(rng, n, lam * frac)
+        # ξ: the ends of (−1, 1), the unwarped line 1 − 2δ′/λ (exact at δ′/λ = 1/4), above it.
+        xi = _pick(rng, n, np.select(
+            [rng.random(n) < 0.15, rng.random(n) < 0.15, rng.random(n) < 0.1],
+            [rng.choice([-1.0, 1.0, -1.0 + 1e-16, 1.0 - 1e-16], n), 1.0 - 2.0 * frac,
+             rng.uniform(1.0 - 2.0 * frac, 1.0)],
+            -1.0 + (2.0 - 2.0 * frac) * rng.random(n)))
+        return [lam, d, xi]
+    if name in ("zhang_eq_local", "zhang_ep_local"):
+        return [near, far, th, zl, z]
+    if name == "gamma_lim":
+        return [near, far, th]
+    if name in ("zhang_eq", "zhang_ep"):
+        # y on and just beyond the side planes (the check's relative slack is 1e-12), inside.
+        h = z * np.tan(th)
+        y = _pick(rng, n, np.select(
+            [t < 0.1, t < 0.2, t < 0.25, t < 0.3, t < 0.35],
+            [h, -h, h * (1 + 1e-12), -h * (1 + 3e-12), 0.0], h * rng.uniform(-1, 1, n)), 0.1)
+        return [near, far, th, zl, g, y, z]
+    if name == "tilted_mz":
+        return [near, far, th, zl, g, z, res(), res()]
     raise KeyError(name)
 
 
 FAST_FORMS = ["mx", "mz", "max_mx", "max_mz", "storage_factor", "n_prime_lispsm",
-              "n_prime_from_eta", "eta_from_n_prime", "distribution_g"]
+              "n_prime_from_eta", "eta_from_n_prime", "distribution_g", "tsm_eta",
+              "zhang_eq_local", "zhang_ep_local", "gamma_lim", "zhang_eq", "zhang_ep", "tilted_mz"]
 
 
 def _outcome(f, args):
@@ -140,6 +173,11 @@ def test_large_array_over_threads_equals_small_calls(name):
     np_ = np.where(rng.random(n) < 0.2, np.inf, near * 10.0 ** rng.uniform(0, 4, n))
     z = near + (far - near) * rng.random(n)
     alpha = far / near
+    lam = 10.0 ** rng.uniform(-2, 2, n)
+    frac = rng.uniform(0.01, 0.99, n)
+    zl = np.where(rng.random(n) < 0.2, np.inf, near * 10.0 ** rng.uniform(-2, 3, n))
+    g = rng.uniform(0, HALF_PI, n)
+    y = z * np.tan(th) * rng.uniform(-1, 1, n)
     args = {
         "mx": [near, far, np_, z, 3.0, near],
         "mz": [near, far, th, np_, z, far, 2.0],
@@ -151,6 +189,13 @@ def test_large_array_over_threads_equals_small_calls(name):
         "eta_from_n_prime": [near, far, np_],
         "distribution_g": [alpha, np.where(np_ == np.inf, np.inf, np_ / near),
                            1.0 + (alpha - 1.0) * rng.random(n)],
+        "tsm_eta": [lam, lam * frac, -1.0 + (2.0 - 2.0 * frac) * rng.uniform(0.01, 0.99, n)],
+        "zhang_eq_local": [near, far, th, zl, z],
+        "zhang_ep_local": [near, far, 0.3, zl, z],
+        "gamma_lim": [near, far, th],
+        "zhang_eq": [near, far, th, zl, g, y, z],
+        "zhang_ep": [near, far, th, zl, g, y, z],
+        "tilted_mz": [near, far, th, zl, np.maximum(g, 1e-3), z, 2.0, far],
     }[name]
     f = getattr(sa, name)
     big = f(*args)
@@ -187,11 +232,31 @@ def test_one_theta_equals_theta_array():
                                      "(got 1.5707963267948966)"),
     ("mx", (3, 1000.0), "z must lie in [near, far] = [1, 100] (got 1000)"),
     ("n_prime_lispsm", (1, math.nan), "far must be a finite number (got NaN)"),
+    ("tsm_eta", (1, 10.0), "delta_prime must lie in (0, 10) (got 10)"),
+    ("tsm_eta", (2, 0.9), "no solution: no centre of projection above the top line maps the "
+                          "focus point (delta_prime=3) of a trapezoid of height lambda=10 to the "
+                          "line xi=0.9: without warping it already lies at 0.4, and a centre "
+                          "above the top line only moves it towards the base (-1)"),
+    ("zhang_eq_local", (4, 1000.0), "z must lie in [1, 100] (got 1000)"),
+    ("zhang_ep_local", (2, 0.0), "half_fov must lie in (0, 1.5707963267948966) (got 0)"),
+    ("gamma_lim", (2, 1e-320), "half_fov is too small: tan θ must be a normal f64, at least "
+                               "2.2250738585072014e-308 (got half_fov=1e-320)"),
+    ("zhang_eq", (4, 2.0), "light_angle must lie in [0, 1.5707963267948966] (got 2)"),
+    ("zhang_ep", (5, 40.0), "y must lie in the view frustum, |y| ≤ z tan(half_fov) = "
+                            "27.315124492189526 (got 40)"),
+    ("tilted_mz", (4, 0.0), "light_angle must be greater than 0 for Barroso's m_z, which "
+                            "measures texels along the view axis and is infinite when light and "
+                            "view are parallel (got 0)"),
 ])
 def test_bad_element_deep_in_a_large_array(name, bad, message):
     n = 1_000_000
     base = {"storage_factor": [1.0, 100.0, 0.5, 11.0], "mx": [1.0, 100.0, 11.0, 50.0],
-            "n_prime_lispsm": [1.0, 100.0]}[name]
+            "n_prime_lispsm": [1.0, 100.0], "tsm_eta": [10.0, 3.0, -0.6],
+            "zhang_eq_local": [1.0, 100.0, 0.5, 11.0, 50.0],
+            "zhang_ep_local": [1.0, 100.0, 0.5, 0.3, 50.0], "gamma_lim": [1.0, 100.0, 0.5],
+            "zhang_eq": [1.0, 100.0, 0.5, 11.0, 1.0, 0.0, 50.0],
+            "zhang_ep": [1.0, 100.0, 0.5, np.inf, 1.0, 10.0, 50.0],
+            "tilted_mz": [1.0, 100.0, 0.5, 11.0, 1.0, 50.0]}[name]
     args = [np.full(n, v) for v in base]
     k, v = bad
     args[k][777_777] = v

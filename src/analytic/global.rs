@@ -47,6 +47,7 @@
 use crate::analytic::tilted::{depth_in_view, warp_depth_range};
 use crate::error::{finite, finite_result, fmt_num, positive, Error, Result};
 use crate::frustum::{LightAngle, NPrime, ViewFrustum};
+use std::hint::select_unpredictable as select;
 
 /// μ, the depth range of the warping frustum W (Zhang Appendix; the same as Barroso's f′ − n′):
 ///
@@ -273,18 +274,59 @@ pub fn zhang_eq(
     y: f64,
     z: f64,
 ) -> Result<f64> {
-    let lambda = lambda.as_finite();
     let (y, z) = point_in_view(view, y, z)?;
-    let t = view.tan_half_fov();
     finite_result(
         "E_q",
-        match lambda {
-            Some(l) => {
-                let zw = l + z_w_offset(view, light_angle, y, z);
-                2.0 * tan_phi_w_unchecked(view, l, light_angle) * zw / (t * z)
-            }
-            None => 2.0 * view.far() / z,
-        },
+        zhang_eq_unchecked(
+            view.near(),
+            view.far(),
+            view.half_fov(),
+            view.tan_half_fov(),
+            lambda.value(),
+            light_angle.radians(),
+            y,
+            z,
+        ),
+    )
+}
+
+/// [`zhang_eq`] without validation (Zhang Eq 13 and Appendix, `E_q^pers = 2 tan φ_w z_w /
+/// (tan φ z)`, `2 f / z` for λ = ∞), for callers that have checked the domain themselves (the
+/// Python bindings' array path): n = `near`, f = `far`, φ = `half_fov` with tan φ =
+/// `tan_half_fov` (as [`ViewFrustum::tan_half_fov`] computes it), λ = `lambda` as an `f64`
+/// (`f64::INFINITY` unwarped), θ = `light_angle` in radians.
+///
+/// Equal, bit for bit, to [`zhang_eq`] wherever `zhang_eq` returns `Ok` (which computes its
+/// value here); meaningless outside that domain.
+#[inline(always)]
+#[must_use]
+#[allow(clippy::too_many_arguments)]
+pub fn zhang_eq_unchecked(
+    near: f64,
+    far: f64,
+    half_fov: f64,
+    tan_half_fov: f64,
+    lambda: f64,
+    light_angle: f64,
+    y: f64,
+    z: f64,
+) -> f64 {
+    let (n, f, t, l) = (near, far, tan_half_fov, lambda);
+    let (s, c) = light_angle.sin_cos();
+    // Every branch, then selects without a jump (`select_unpredictable`), so that a loop over
+    // arrays vectorises. z_w − λ (`z_w_offset`) and tan φ_w (`tan_phi_w_unchecked`).
+    let upper = light_angle >= half_fov;
+    let zw = l + select(
+        upper,
+        (z - n) * s + (n * t - y) * c,
+        (z - f) * s + (f * t - y) * c,
+    );
+    let d = (f - n) * (s - t * c);
+    let tan_phi_w = (n * t / (l + (-d).max(0.0))).max(f * t / (l + d.max(0.0)));
+    select(
+        l == f64::INFINITY,
+        2.0 * f / z,
+        2.0 * tan_phi_w * zw / (t * z),
     )
 }
 
@@ -310,21 +352,63 @@ pub fn zhang_ep(
     y: f64,
     z: f64,
 ) -> Result<f64> {
-    let lambda = lambda.as_finite();
     let (y, z) = point_in_view(view, y, z)?;
-    let t = view.tan_half_fov();
-    // One sin_cos of θ for μ and z_w (zhang_mu and z_w_offset would take it twice).
-    let (s, c) = light_angle.radians().sin_cos();
-    let mu = crate::analytic::tilted::warp_depth_range_sc(view, light_angle, s, c)?;
+    // μ's own error first (an overflow), then the value from the twin, which takes μ again.
+    warp_depth_range(view, light_angle)?;
     finite_result(
         "E_p",
-        match lambda {
-            Some(l) => {
-                let zw = l + z_w_offset_sc(view, light_angle, s, c, y, z);
-                mu / (t * z) * (zw / l) * (zw / (l + mu))
-            }
-            None => mu / (t * z),
-        },
+        zhang_ep_unchecked(
+            view.near(),
+            view.far(),
+            view.half_fov(),
+            view.tan_half_fov(),
+            lambda.value(),
+            light_angle.radians(),
+            y,
+            z,
+        ),
+    )
+}
+
+/// [`zhang_ep`] without validation (Zhang Eq 14 and Appendix, `E_p^pers = μ z_w² / (tan φ
+/// (λ + μ) λ z)`, `μ / (tan φ z)` for λ = ∞); arguments as [`zhang_eq_unchecked`].
+///
+/// Equal, bit for bit, to [`zhang_ep`] wherever `zhang_ep` returns `Ok` (which computes its
+/// value here); meaningless outside that domain (where μ overflows the value is not finite).
+#[inline(always)]
+#[must_use]
+#[allow(clippy::too_many_arguments)]
+pub fn zhang_ep_unchecked(
+    near: f64,
+    far: f64,
+    half_fov: f64,
+    tan_half_fov: f64,
+    lambda: f64,
+    light_angle: f64,
+    y: f64,
+    z: f64,
+) -> f64 {
+    let (n, f, t, l) = (near, far, tan_half_fov, lambda);
+    let (s, c) = light_angle.sin_cos();
+    // Every branch, then selects (see `zhang_eq_unchecked`): μ (`warp_depth_range_sc`) and
+    // z_w − λ (`z_w_offset_sc`).
+    let upper = light_angle >= half_fov;
+    let tc = t * c;
+    let mu = select(
+        upper,
+        f * ((1.0 + n / f) * tc) + (f - n) * s,
+        f * (2.0 * tc),
+    );
+    let zw = l + select(
+        upper,
+        (z - n) * s + (n * t - y) * c,
+        (z - f) * s + (f * t - y) * c,
+    );
+    let unwarped = mu / (t * z);
+    select(
+        l == f64::INFINITY,
+        unwarped,
+        unwarped * (zw / l) * (zw / (l + mu)),
     )
 }
 
@@ -342,16 +426,32 @@ pub fn zhang_ep(
 /// [`Error::InvalidArgument`] naming `z` (outside `[near, far]`).
 #[inline]
 pub fn zhang_eq_local(view: &ViewFrustum, lambda: NPrime, z: f64) -> Result<f64> {
-    let lambda = lambda.as_finite();
     let z = depth_in_view(view, z)?;
-    let (n, f) = (view.near(), view.far());
     finite_result(
         "E_q",
-        match lambda {
-            Some(l) if l >= n => 2.0 * f * (z - n + l) / ((f - n + l) * z),
-            Some(l) => 2.0 * n * (z - n + l) / (l * z),
-            None => 2.0 * f / z,
-        },
+        zhang_eq_local_unchecked(view.near(), view.far(), lambda.value(), z),
+    )
+}
+
+/// [`zhang_eq_local`] without validation (Zhang Eq 8: `2 f (z − n + λ) / ((f − n + λ) z)` for
+/// λ ≥ n, `2 n (z − n + λ) / (λ z)` for λ < n, `2 f / z` for λ = ∞), for callers that have
+/// checked the domain themselves (the Python bindings' array path): n = `near`, f = `far`,
+/// λ = `lambda` as an `f64` (`f64::INFINITY` unwarped). It does not depend on the field of view.
+///
+/// Equal, bit for bit, to [`zhang_eq_local`] wherever it returns `Ok` (which computes its value
+/// here); meaningless outside that domain.
+#[inline(always)]
+#[must_use]
+pub fn zhang_eq_local_unchecked(near: f64, far: f64, lambda: f64, z: f64) -> f64 {
+    let (n, f, l) = (near, far, lambda);
+    // Every branch, then selects without a jump (`select_unpredictable`), so that a loop over
+    // arrays vectorises.
+    let far_bound = 2.0 * f * (z - n + l) / ((f - n + l) * z);
+    let near_bound = 2.0 * n * (z - n + l) / (l * z);
+    select(
+        l == f64::INFINITY,
+        2.0 * f / z,
+        select(l >= n, far_bound, near_bound),
     )
 }
 
@@ -366,16 +466,40 @@ pub fn zhang_eq_local(view: &ViewFrustum, lambda: NPrime, z: f64) -> Result<f64>
 /// [`Error::InvalidArgument`] naming `z` (outside `[near, far]`).
 #[inline]
 pub fn zhang_ep_local(view: &ViewFrustum, lambda: NPrime, z: f64) -> Result<f64> {
-    let lambda = lambda.as_finite();
     let z = depth_in_view(view, z)?;
-    let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
     finite_result(
         "E_p",
-        match lambda {
-            Some(l) => (f - n) / (t * z) * ((z - n + l) / l) * ((z - n + l) / (f - n + l)),
-            None => (f - n) / (t * z),
-        },
+        zhang_ep_local_unchecked(
+            view.near(),
+            view.far(),
+            view.tan_half_fov(),
+            lambda.value(),
+            z,
+        ),
     )
+}
+
+/// [`zhang_ep_local`] without validation (Zhang Eq 9: `(f − n)(z − n + λ)² / ((f − n + λ) λ
+/// tan φ z)`, `(f − n)/(tan φ z)` for λ = ∞): n = `near`, f = `far`, tan φ = `tan_half_fov` (as
+/// [`ViewFrustum::tan_half_fov`] computes it), λ = `lambda` as an `f64` (`f64::INFINITY`
+/// unwarped).
+///
+/// Equal, bit for bit, to [`zhang_ep_local`] wherever it returns `Ok` (which computes its value
+/// here); meaningless outside that domain.
+#[inline(always)]
+#[must_use]
+pub fn zhang_ep_local_unchecked(
+    near: f64,
+    far: f64,
+    tan_half_fov: f64,
+    lambda: f64,
+    z: f64,
+) -> f64 {
+    let (n, f, t, l) = (near, far, tan_half_fov, lambda);
+    // Both branches, then a select (see `zhang_eq_local_unchecked`).
+    let unwarped = (f - n) / (t * z);
+    let warped = unwarped * ((z - n + l) / l) * ((z - n + l) / (f - n + l));
+    select(l == f64::INFINITY, unwarped, warped)
 }
 
 /// The slopes of Zhang's small shaft through a point: `x = k_x z − b_x`, `y = k_y z − b_y`
@@ -480,4 +604,70 @@ pub fn zhang_factorisation(
     finite_result("E_q", f.e_q())?;
     finite_result("E_p", f.e_p())?;
     Ok(f)
+}
+
+#[cfg(test)]
+mod unchecked_tests {
+    use super::*;
+
+    /// The `*_unchecked` twins give the checked forms' values bit for bit wherever those return
+    /// `Ok`: λ below near, at it, above it and unwarped; θ = 0, below φ, at φ, above it and π/2;
+    /// y on both side planes (with the relative slack) and inside; z on both planes and inside.
+    #[test]
+    fn unchecked_twins_agree() {
+        let mut cases = 0;
+        for &(n, f) in &[(1.0, 100.0), (0.1, 0.3), (2.5, 4e5), (1e-3, 1e6)] {
+            for &phi in &[0.01, 0.5, std::f64::consts::FRAC_PI_4, 1.5] {
+                let v = ViewFrustum::new(n, f, phi).unwrap();
+                let t = v.tan_half_fov();
+                for l in [0.25 * n, n, v.n_prime_lispsm(), 1e3 * f, f64::INFINITY] {
+                    let lv = NPrime::named("lambda", l).unwrap();
+                    for z in [n, 0.3 * n + 0.7 * f, f] {
+                        let a = zhang_eq_local(&v, lv, z).unwrap();
+                        assert_eq!(a.to_bits(), zhang_eq_local_unchecked(n, f, l, z).to_bits());
+                        let b = zhang_ep_local(&v, lv, z).unwrap();
+                        let bu = zhang_ep_local_unchecked(n, f, t, l, z);
+                        assert_eq!(b.to_bits(), bu.to_bits());
+                        for g in [
+                            0.0,
+                            0.5 * phi,
+                            phi,
+                            0.5 * (phi + 1.5),
+                            1.5,
+                            std::f64::consts::FRAC_PI_2,
+                        ] {
+                            let la = LightAngle::new(g).unwrap();
+                            let h = z * t * (1.0 + 1e-12);
+                            for y in [-h, -0.5 * z * t, 0.0, 0.9 * z * t, h] {
+                                let c = zhang_eq(&v, lv, la, y, z).unwrap();
+                                let cu = zhang_eq_unchecked(n, f, phi, t, l, g, y, z);
+                                assert_eq!(
+                                    c.to_bits(),
+                                    cu.to_bits(),
+                                    "{n} {f} {phi} {l} {g} {y} {z}"
+                                );
+                                let d = zhang_ep(&v, lv, la, y, z).unwrap();
+                                let du = zhang_ep_unchecked(n, f, phi, t, l, g, y, z);
+                                assert_eq!(
+                                    d.to_bits(),
+                                    du.to_bits(),
+                                    "{n} {f} {phi} {l} {g} {y} {z}"
+                                );
+                                cases += 1;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert_eq!(cases, 4 * 4 * 5 * 3 * 6 * 5);
+        // By hand (Eq 8, 9): n = 1, f = 100, λ = 11, z = 10, tan φ = 1 (φ = π/4):
+        // E_q = 2 · 100 · 20 / (110 · 10), E_p = 99 · 400 / (110 · 11 · 10).
+        let t = std::f64::consts::FRAC_PI_4.tan();
+        assert!((zhang_eq_local_unchecked(1.0, 100.0, 11.0, 10.0) - 4000.0 / 1100.0).abs() < 1e-14);
+        let ep = zhang_ep_local_unchecked(1.0, 100.0, t, 11.0, 10.0);
+        assert!((ep - 39600.0 / 12100.0 / t).abs() < 1e-13);
+        // λ < n: 2 n (z − n + λ)/(λ z) = 2 · 9.5 / 5 at n = 1, λ = 0.5, z = 10.
+        assert!((zhang_eq_local_unchecked(1.0, 100.0, 0.5, 10.0) - 3.8).abs() < 1e-14);
+    }
 }

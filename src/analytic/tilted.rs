@@ -45,6 +45,7 @@
 use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};
 use crate::numeric::sqrt_fn;
+use std::hint::select_unpredictable as select;
 
 /// Validates a depth on the view axis, `near ≤ z ≤ far`.
 #[inline]
@@ -241,10 +242,65 @@ pub fn tilted_mz(
     z: f64,
     res: Resolutions,
 ) -> Result<f64> {
-    let np = n_prime.as_finite();
-    let s = positive_sin(light_angle)?;
+    positive_sin(light_angle)?;
     let z = depth_in_view(view, z)?;
-    finite_result("m_z", mz_perp_unchecked(view, np, light_angle, z, res)? / s)
+    // μ's own error first (an overflow), then the value from the twin, which takes μ again.
+    warp_depth_range(view, light_angle)?;
+    finite_result(
+        "m_z",
+        tilted_mz_unchecked(
+            view.near(),
+            view.far(),
+            view.half_fov(),
+            view.tan_half_fov(),
+            n_prime.value(),
+            light_angle.radians(),
+            z,
+            res.image(),
+            res.t(),
+        ),
+    )
+}
+
+/// [`tilted_mz`] without validation (Barroso Eq 10–12, `m_z = (res_i/res_t) · μ ψ² / (2 tan φ_y
+/// · n′ (n′ + μ) · z · sin γ)`, `(res_i/res_t) μ / (2 tan φ_y z sin γ)` for n′ = ∞), for callers
+/// that have checked the domain themselves (the Python bindings' array path): n = `near`,
+/// f = `far`, φ_y = `half_fov` with tan φ_y = `tan_half_fov` (as
+/// [`ViewFrustum::tan_half_fov`] computes it), n′ = `n_prime` as an `f64` (`f64::INFINITY`
+/// unwarped), γ = `light_angle` in radians.
+///
+/// Equal, bit for bit, to [`tilted_mz`] wherever `tilted_mz` returns `Ok` (which computes its
+/// value here); meaningless outside that domain (where μ overflows the value is not finite).
+#[inline(always)]
+#[must_use]
+#[allow(clippy::too_many_arguments)]
+pub fn tilted_mz_unchecked(
+    near: f64,
+    far: f64,
+    half_fov: f64,
+    tan_half_fov: f64,
+    n_prime: f64,
+    light_angle: f64,
+    z: f64,
+    res_image: f64,
+    res_t: f64,
+) -> f64 {
+    let (n, f, t, np) = (near, far, tan_half_fov, n_prime);
+    let (s, c) = light_angle.sin_cos();
+    // Every branch, then selects without a jump (`select_unpredictable`), so that a loop over
+    // arrays vectorises: μ (`warp_depth_range_sc`), ψ − n′ (`psi_offset`) and the
+    // perpendicular m_z (`mz_perp_unchecked`), over sin γ.
+    let upper = light_angle >= half_fov;
+    let tc = t * c;
+    let mu = select(
+        upper,
+        f * ((1.0 + n / f) * tc) + (f - n) * s,
+        f * (2.0 * tc),
+    );
+    let k = res_image / res_t / (2.0 * t) * mu / z;
+    let psi = np + select(upper, n * tc + (z - n) * s, f * tc + (z - f) * s);
+    let perp = select(np == f64::INFINITY, k, k * (psi / np) * (psi / (np + mu)));
+    perp / s
 }
 
 /// The tilted-light m_z measured perpendicular to the light, as the crate measures every map
@@ -408,8 +464,21 @@ pub fn n_prime_axis_minimax(view: &ViewFrustum, light_angle: LightAngle) -> NPri
 #[inline]
 #[must_use]
 pub fn gamma_lim(view: &ViewFrustum) -> f64 {
-    let (n, f) = (view.near(), view.far());
-    ((1.0 + n / f) * view.tan_half_fov() / ((f - n) / f)).atan()
+    gamma_lim_unchecked(view.near(), view.far(), view.tan_half_fov())
+}
+
+/// [`gamma_lim`] on bare numbers (Barroso Eq 15, `γ_lim = atan((f + n) tan φ_y / (f − n))`,
+/// evaluated as `atan((1 + n/f) tan φ_y / ((f − n)/f))`), for callers that have checked the
+/// view frustum's domain themselves (the Python bindings' array path): n = `near`, f = `far`,
+/// tan φ_y = `tan_half_fov` (as [`ViewFrustum::tan_half_fov`] computes it).
+///
+/// Equal, bit for bit, to [`gamma_lim`] of `ViewFrustum::new(near, far, φ_y)` wherever that
+/// frustum is valid (which computes its value here); meaningless otherwise. Radians.
+#[inline(always)]
+#[must_use]
+pub fn gamma_lim_unchecked(near: f64, far: f64, tan_half_fov: f64) -> f64 {
+    let (n, f) = (near, far);
+    ((1.0 + n / f) * tan_half_fov / ((f - n) / f)).atan()
 }
 
 /// The fall-off r(γ) of Barroso's generalised n′ below γ_lim (Eq 16–18).
@@ -497,6 +566,67 @@ pub fn generalized_n_prime(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// [`tilted_mz_unchecked`] and [`gamma_lim_unchecked`] give [`tilted_mz`]'s and
+    /// [`gamma_lim`]'s values bit for bit wherever those return `Ok`: n′ below near, above it and
+    /// unwarped; γ just above 0, below φ_y, at it, above it and π/2; z on both planes and inside;
+    /// resolutions other than one.
+    #[test]
+    fn unchecked_twins_agree() {
+        let mut cases = 0;
+        for &(n, f) in &[(1.0, 100.0), (0.1, 0.3), (2.5, 4e5), (1e-3, 1e6)] {
+            for &phi in &[0.01, 0.5, std::f64::consts::FRAC_PI_4, 1.5] {
+                let v = ViewFrustum::new(n, f, phi).unwrap();
+                let t = v.tan_half_fov();
+                assert_eq!(
+                    gamma_lim(&v).to_bits(),
+                    gamma_lim_unchecked(n, f, t).to_bits()
+                );
+                for np in [0.25 * n, n, v.n_prime_lispsm(), 1e3 * f, f64::INFINITY] {
+                    let npv = NPrime::new(np).unwrap();
+                    for g in [
+                        1e-300,
+                        0.5 * phi,
+                        phi,
+                        0.5 * (phi + 1.5),
+                        std::f64::consts::FRAC_PI_2,
+                    ] {
+                        let la = LightAngle::new(g).unwrap();
+                        for &(ri, rt) in &[(1.0, 1.0), (1920.0, 700.0)] {
+                            let r = Resolutions::new(ri, 1.0, rt).unwrap();
+                            for z in [n, 0.3 * n + 0.7 * f, f] {
+                                let Ok(a) = tilted_mz(&v, npv, la, z, r) else {
+                                    // Only an overflow at γ → 0 (1/sin γ) is refused here.
+                                    assert!(g < 1e-200);
+                                    continue;
+                                };
+                                let au = tilted_mz_unchecked(n, f, phi, t, np, g, z, ri, rt);
+                                assert_eq!(a.to_bits(), au.to_bits(), "{n} {f} {phi} {np} {g} {z}");
+                                cases += 1;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        assert!(cases >= 4 * 4 * 5 * 4 * 2 * 3, "{cases}");
+        // Overhead with n′ = n (PSM): (f − n) z / (2 tan θ f n) = 99 · 50/200 at z = 50, θ = π/4.
+        let t = std::f64::consts::FRAC_PI_4.tan();
+        let m = tilted_mz_unchecked(
+            1.0,
+            100.0,
+            std::f64::consts::FRAC_PI_4,
+            t,
+            1.0,
+            std::f64::consts::FRAC_PI_2,
+            50.0,
+            1.0,
+            1.0,
+        );
+        assert!((m - 99.0 * 50.0 / 200.0 / t).abs() < 1e-12);
+        // γ_lim = atan(101/99) at n = 1, f = 100, θ = π/4.
+        assert!((gamma_lim_unchecked(1.0, 100.0, t) - (101.0f64 / 99.0 * t).atan()).abs() < 1e-15);
+    }
 
     #[test]
     fn branches_meet_at_half_fov() {

@@ -71,13 +71,34 @@ pub fn tsm_eta(lambda: f64, delta_prime: f64, xi: f64) -> Result<NPrime> {
     let xi = in_open("xi", xi, -1.0, 1.0)?;
     let den = eta_denominator(lambda, d, xi);
     if den == 0.0 {
+        // tsm_eta_unchecked gives ∞ here, the value of NPrime::UNWARPED.
         return Ok(NPrime::UNWARPED);
     }
     if den < 0.0 {
         return Err(eta_no_solution(lambda, d, xi));
     }
-    let eta = finite_result("tsm_eta", eta_over(lambda, d, xi, den))?;
+    let eta = finite_result("tsm_eta", tsm_eta_unchecked(lambda, d, xi))?;
     NPrime::new(eta)
+}
+
+/// [`tsm_eta`] without validation, η as an `f64` (Martin & Tan §6.2):
+///
+/// `η = λ δ′ (1 + ξ) / (λ (1 − ξ) − 2 δ′)`, `f64::INFINITY` on the unwarped line (denominator 0),
+///
+/// for callers that have checked the domain themselves (the Python bindings' array path).
+/// Equal, bit for bit, to `tsm_eta(..)?.value()` wherever that returns `Ok` (which computes its
+/// finite value here); outside that domain the result is meaningless (negative, NaN or ∞ where
+/// `tsm_eta` refuses).
+#[inline(always)]
+#[must_use]
+pub fn tsm_eta_unchecked(lambda: f64, delta_prime: f64, xi: f64) -> f64 {
+    let den = eta_denominator(lambda, delta_prime, xi);
+    // Both branches, then a select without a jump, so that a loop over arrays vectorises.
+    std::hint::select_unpredictable(
+        den == 0.0,
+        f64::INFINITY,
+        eta_over(lambda, delta_prime, xi, den),
+    )
 }
 
 /// λ (1 − ξ) − 2 δ′, the denominator of η: positive exactly when ξ lies below the unwarped line.
@@ -201,5 +222,40 @@ mod finite_tests {
             }
         }
         assert!(finite > 20, "{finite}");
+    }
+
+    /// [`tsm_eta_unchecked`] is `tsm_eta(..)?.value()` bit for bit wherever `tsm_eta` returns
+    /// `Ok`: finite η over a grid of heights, focus depths and lines (ξ at both ends of (−1, 1)),
+    /// and ∞ exactly on the unwarped line; by hand at the 80 % line.
+    #[test]
+    fn unchecked_twin_agrees() {
+        let mut finite = 0;
+        for l in [1e-300, 1e-3, 0.5, 1.0, 37.0, 1e6, 1e300] {
+            for fr in [1e-12, 0.01, 0.2, 0.5, 0.7, 0.999_999] {
+                let d = fr * l;
+                for xi in [
+                    -0.999_999_999,
+                    -0.6,
+                    -0.3,
+                    0.0,
+                    0.3,
+                    0.6,
+                    0.999,
+                    1.0 - 2.0 * fr,
+                ] {
+                    if let Ok(e) = tsm_eta(l, d, xi) {
+                        let got = tsm_eta_unchecked(l, d, xi);
+                        assert_eq!(got.to_bits(), e.value().to_bits(), "{l} {d} {xi}");
+                        finite += usize::from(e.as_finite().is_some());
+                    }
+                }
+            }
+        }
+        assert!(finite > 100, "{finite}");
+        // The unwarped line ξ = 1 − 2δ′/λ (exact at δ′/λ = 1/4): ∞ on both.
+        assert_eq!(tsm_eta(8.0, 2.0, 0.5), Ok(NPrime::UNWARPED));
+        assert_eq!(tsm_eta_unchecked(8.0, 2.0, 0.5), f64::INFINITY);
+        // λ = 10, δ′ = 3, ξ = −0.6: 10 · 3 · 0.4 / (16 − 6) = 1.2.
+        assert!((tsm_eta_unchecked(10.0, 3.0, EIGHTY_PERCENT_LINE) - 1.2).abs() < 1e-15);
     }
 }
