@@ -37,9 +37,8 @@
 //!   = Δ_B and its hints measured from the camera's planes; OGRE's e_z is n_B with the camera's
 //!   √(n f); TSM's focus distance is scaled by (f_B − n_B)/(slice depth), as
 //!   [`crate::maps::tsm::tsm_general`] does; minimax minimises S̄ over B's vertices with the eye's
-//!   centre, so with that centre ([`WarpCentre::Rule`], [`WarpCentre::Eye`]) it is never above the
-//!   uniform map over B. With [`WarpCentre::NearestVertex`] the map is built around another centre
-//!   than the one its n′ was chosen for, and can be worse than uniform.
+//!   centre, or with B's nearest vertex's under [`WarpCentre::NearestVertex`] (the centre of the
+//!   map that is built), so it is never above the uniform map over B.
 //! - Casters only extend the light-depth range (or rely on depth clamp), never s, t or S̄.
 //! - The error is measured over B's vertices ([`crate::measure::vertex::vertex_max`]): the papers'
 //!   warps have m_x quasi-linear and m_z convex over a convex body, so the maxima lie at vertices
@@ -1356,7 +1355,21 @@ impl Ctx<'_, '_> {
             NPrime::UNWARPED
         } else {
             let sub = cam.with_depth_range(n_b, f_b)?;
-            rule_n_prime_on(cam, &sub, &fl, rule)?
+            match (rule, centre) {
+                // Minimax chooses n′ for the map that is built: around a centre off the eye's
+                // line the map's s is (x − x_c)/w (`fit_body`), so its search sees each vertex's
+                // x from the centre. (For the eye's centre it minimised a map that is not built,
+                // up to 6× the uniform map's S̄.) M_z, and so `MinimaxMz`, does not depend on x.
+                (WarpRule::Minimax, Some(i)) => {
+                    let mut from_centre = fl;
+                    let xc = fl.q[i].x;
+                    for q in &mut from_centre.q {
+                        q.x -= xc;
+                    }
+                    rule_n_prime_on(cam, &sub, &from_centre, rule)?
+                }
+                _ => rule_n_prime_on(cam, &sub, &fl, rule)?,
+            }
         };
         let rho = n_prime.recip();
         let w_of = |p: DVec3| 1.0 + rho * (fl.ls.z.dot(p) - fl.z0);
