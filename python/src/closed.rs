@@ -140,7 +140,7 @@ macro_rules! elementwise {
         $(#[$meta:meta])*
         fn $name:ident($($req:ident),+ $(; $($opt:ident),+)?) -> $spec:expr;
         checked = $checked:expr;
-        $(fast $(($tan:ident))? = $fast:expr;)?
+        $(fast $(($($tan:tt)+))? = $fast:expr;)?
     ) => {
         $(#[$meta])*
         #[pyfunction]
@@ -158,7 +158,7 @@ macro_rules! elementwise {
                 $((arg_name(stringify!($req)), $req),)+
                 $($((arg_name(stringify!($opt)), $opt),)+)?
             ];
-            elementwise!(@call py, args, $spec, $checked $(, $fast, tan_of!($($tan)?))?)
+            elementwise!(@call py, args, $spec, $checked $(, $fast, tan_of!($($($tan)+)?))?)
         }
     };
     (@call $py:ident, $args:ident, $spec:expr, $checked:expr) => {
@@ -170,13 +170,16 @@ macro_rules! elementwise {
 }
 
 /// `fast(half_fov)`: the kernel receives tan θ of argument 2 (every form with a `ViewFrustum`
-/// has near, far, half_fov first); `fast`: it receives 0.
+/// has near, far, half_fov first); `fast(half_fov at i)`: of argument i; `fast`: it receives 0.
 macro_rules! tan_of {
     () => {
         None
     };
     (half_fov) => {
         Some(2)
+    };
+    (half_fov at $i:literal) => {
+        Some($i)
     };
 }
 
@@ -384,6 +387,22 @@ elementwise! {
     fn subdivided_max_error(alpha, k, eta, half_fov; res_image, res_s) -> SCALAR;
     checked = |&[a, k, e, th, ri, rs]: &[f64; 6]| {
         subdivided::subdivided_max_error(a, count("k", k)?, e, th, ri, rs)
+    };
+    fast(half_fov at 3) = |&[a, k, e, th, ri, rs]: &[f64; 6], t: f64| {
+        // `count`: k whole in [1, 10⁶] (the cast is exact there and truncates a fraction).
+        let ku = k as usize;
+        let ok = pos(a)
+            & (a > 1.0)
+            & (1.0..=1e6).contains(&k)
+            & (ku as f64 == k)
+            & finite(th)
+            & (th > 0.0)
+            & (th < std::f64::consts::FRAC_PI_2)
+            & finite(e)
+            & (-1.0..=1.0).contains(&e)
+            & pos(ri)
+            & pos(rs);
+        (subdivided::subdivided_max_error_unchecked(a, ku, e, t, ri, rs), ok)
     };
 }
 

@@ -101,12 +101,23 @@ def _edge_args(name, rng, n):
         return [near, far, th, zl, g, y, z]
     if name == "tilted_mz":
         return [near, far, th, zl, g, z, res(), res()]
+    if name == "subdivided_max_error":
+        # k: powers of two up to 16 (square roots) and beyond, other whole numbers, the ends of
+        # [1, 10⁶], fractions and values outside; ξ at and beyond ±1.
+        k = np.where(rng.random(n) < 0.5, rng.integers(1, 40, n).astype(np.float64),
+                     rng.choice([0.0, 1.0, 16.0, 32.0, 1e6, 1e6 + 1, 2.5, 1.0 - 1e-16, -2.0,
+                                 math.nan, math.inf], n))
+        eta = _pick(rng, n, np.where(rng.random(n) < 0.3,
+                                     rng.choice([-1.0, 1.0, 0.0, -1.0 - 1e-15, 1.0 + 1e-15], n),
+                                     rng.uniform(-1, 1, n)))
+        return [alpha, k, eta, th, res(), res()]
     raise KeyError(name)
 
 
 FAST_FORMS = ["mx", "mz", "max_mx", "max_mz", "storage_factor", "n_prime_lispsm",
               "n_prime_from_eta", "eta_from_n_prime", "distribution_g", "tsm_eta",
-              "zhang_eq_local", "zhang_ep_local", "gamma_lim", "zhang_eq", "zhang_ep", "tilted_mz"]
+              "zhang_eq_local", "zhang_ep_local", "gamma_lim", "zhang_eq", "zhang_ep", "tilted_mz",
+              "subdivided_max_error"]
 
 
 def _outcome(f, args):
@@ -196,6 +207,8 @@ def test_large_array_over_threads_equals_small_calls(name):
         "zhang_eq": [near, far, th, zl, g, y, z],
         "zhang_ep": [near, far, th, zl, g, y, z],
         "tilted_mz": [near, far, th, zl, np.maximum(g, 1e-3), z, 2.0, far],
+        "subdivided_max_error": [alpha, rng.integers(1, 40, n).astype(np.float64),
+                                 rng.uniform(-1, 1, n), th, 3.0, far],
     }[name]
     f = getattr(sa, name)
     big = f(*args)
@@ -244,6 +257,8 @@ def test_one_theta_equals_theta_array():
     ("zhang_eq", (4, 2.0), "light_angle must lie in [0, 1.5707963267948966] (got 2)"),
     ("zhang_ep", (5, 40.0), "y must lie in the view frustum, |y| ≤ z tan(half_fov) = "
                             "27.315124492189526 (got 40)"),
+    ("subdivided_max_error", (1, 2.5), "k must be a whole number of at least 1 (got 2.5)"),
+    ("subdivided_max_error", (3, 1.6), "half_fov must lie in (0, 1.5707963267948966) (got 1.6)"),
     ("tilted_mz", (4, 0.0), "light_angle must be greater than 0 for Barroso's m_z, which "
                             "measures texels along the view axis and is infinite when light and "
                             "view are parallel (got 0)"),
@@ -256,7 +271,8 @@ def test_bad_element_deep_in_a_large_array(name, bad, message):
             "zhang_ep_local": [1.0, 100.0, 0.5, 0.3, 50.0], "gamma_lim": [1.0, 100.0, 0.5],
             "zhang_eq": [1.0, 100.0, 0.5, 11.0, 1.0, 0.0, 50.0],
             "zhang_ep": [1.0, 100.0, 0.5, np.inf, 1.0, 10.0, 50.0],
-            "tilted_mz": [1.0, 100.0, 0.5, 11.0, 1.0, 50.0]}[name]
+            "tilted_mz": [1.0, 100.0, 0.5, 11.0, 1.0, 50.0],
+            "subdivided_max_error": [100.0, 4.0, 0.0, 0.5]}[name]
     args = [np.full(n, v) for v in base]
     k, v = bad
     args[k][777_777] = v

@@ -410,9 +410,35 @@ pub fn subdivided_max_error(
     if k == 0 {
         return Err(Error::invalid("k", "must be at least 1 (got 0)"));
     }
+    let t = tan_ok(half_fov)?;
+    let eta = in_closed("eta", eta, -1.0, 1.0)?;
+    let rp = positive("res_image", res_image)?;
+    let rs = positive("res_s", res_s)?;
+    finite_result(
+        "m_max",
+        subdivided_max_error_unchecked(a, k, eta, t, rp, rs),
+    )
+}
+
+/// [`subdivided_max_error`] without validation (Lloyd 2005 Eq 7,
+/// `m_max = k (r_p/r_s) (α^{1/k} − 1)/(2 tan θ) · (1 + |ξ| (α^{1/2k} − 1))/α^{1/2k}`), for callers
+/// that have checked the domain themselves (the Python bindings' array path): tan θ =
+/// `tan_half_fov` (as `half_fov.tan()`), the other arguments as [`subdivided_max_error`].
+///
+/// Equal, bit for bit, to [`subdivided_max_error`] wherever it returns `Ok` (which computes its
+/// value here); meaningless outside that domain (k = 0 included; it does not panic).
+#[inline]
+#[must_use]
+pub fn subdivided_max_error_unchecked(
+    alpha: f64,
+    k: usize,
+    eta: f64,
+    tan_half_fov: f64,
+    res_image: f64,
+    res_s: f64,
+) -> f64 {
+    let a = alpha;
     let kf = k as f64;
-    // s = √(α^{1/k}) = α^{1/2k} and α^{1/k} − 1, each within a few ulps, without cancellation
-    // near α = 1 (α − 1 is exact there) and for large k.
     // e = (α^{1/k} − 1)/s with s = √(α^{1/k}) = α^{1/2k}, each within a few ulps, without
     // cancellation near α = 1 (α − 1 is exact there) and for large k, and without an
     // intermediate overflow for huge α (e ≤ √α).
@@ -437,14 +463,10 @@ pub fn subdivided_max_error(
         let rak = 1.0 + rak_m1;
         (rak_m1 * (rak_m1 + 2.0) / rak, rak)
     };
-    let t = tan_ok(half_fov)?;
-    let eta = in_closed("eta", eta, -1.0, 1.0)?;
-    let rp = positive("res_image", res_image)?;
-    let rs = positive("res_s", res_s)?;
     // k (r_p/r_s)/(2 tan θ) is ready before e; 1 + |ξ|(s − 1) is 1 or more, so s − 1 needs no
     // care there.
-    let q = kf * rp / (rs * (2.0 * t));
-    finite_result("m_max", q * e * (1.0 + eta.abs() * (rak - 1.0)))
+    let q = kf * res_image / (res_s * (2.0 * tan_half_fov));
+    q * e * (1.0 + eta.abs() * (rak - 1.0))
 }
 
 /// The x error (Lloyd 2005 Eq 8; Lloyd 2006 Eq 7 with n = 1, f = α).
@@ -521,6 +543,39 @@ mod tests {
         }
         // Eq 3, α = 100, n = 11, z = 10: (10 − 1 + 11)² / (10 · 11 · 110) = 400/12100.
         assert!((distribution_g_unchecked(100.0, 11.0, 10.0) - 400.0 / 12100.0).abs() < 1e-16);
+    }
+
+    /// [`subdivided_max_error_unchecked`] gives [`subdivided_max_error`]'s values bit for bit:
+    /// k a power of two up to 16 (square roots), 3, 17 and large k (logarithm); α near 1, large
+    /// and huge; ξ at both ends and 0; θ at both ends; resolutions other than one.
+    #[test]
+    fn subdivided_max_error_unchecked_agrees() {
+        let mut cases = 0;
+        for a in [1.0 + 1e-12, 1.5, 100.0, 1e6, 1e300] {
+            for k in [1, 2, 3, 4, 8, 16, 17, 32, 1000, 1_000_000] {
+                for eta in [-1.0, -0.3, 0.0, 0.7, 1.0] {
+                    // The largest f64 below π/2 too.
+                    let below = f64::from_bits(std::f64::consts::FRAC_PI_2.to_bits() - 1);
+                    for th in [1e-300, 0.01, 0.5, 1.5, below] {
+                        for &(ri, rs) in &[(1.0, 1.0), (1920.0, 700.0)] {
+                            let Ok(want) = subdivided_max_error(a, k, eta, th, ri, rs) else {
+                                // Only an overflow of 1/tan θ at θ = 1e-300 with a large α.
+                                assert!(th < 1e-200, "{a} {k} {eta} {th}");
+                                continue;
+                            };
+                            let got = subdivided_max_error_unchecked(a, k, eta, th.tan(), ri, rs);
+                            assert_eq!(want.to_bits(), got.to_bits(), "{a} {k} {eta} {th}");
+                            cases += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(cases > 2000, "{cases}");
+        // Eq 7 with k = 2, ξ = 0, α = 100, θ = 45°: 2 · 9/2 / √10 / tan θ.
+        let t = std::f64::consts::FRAC_PI_4.tan();
+        let e = subdivided_max_error_unchecked(100.0, 2, 0.0, t, 1.0, 1.0);
+        assert!((e - 9.0 / 10f64.sqrt() / t).abs() < 1e-12);
     }
 
     #[test]
