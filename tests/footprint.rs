@@ -8,6 +8,9 @@ use shadow_aliasing::maps::{warp, WarpRule};
 use shadow_aliasing::measure::{point_error, surface_footprint, Grids, ShadowMap};
 use shadow_aliasing::{Error, Resolutions, ViewFrustum};
 
+mod common;
+use common::Lcg;
+
 fn rel_mat(a: DMat2, b: DMat2) -> f64 {
     let d = a - b;
     let n = |m: DMat2| (m.x_axis.length_squared() + m.y_axis.length_squared()).sqrt();
@@ -86,21 +89,6 @@ fn pipeline(camera: &DMat4, light: &DMat4, g: &Grids, p0: DVec3, n: DVec3, uv: D
         (h.x / h.w + 1.0) * 0.5 * g.res_s(),
         (h.y / h.w + 1.0) * 0.5 * g.res_t(),
     )
-}
-
-/// A small deterministic generator (no dependency on the code under test).
-struct Lcg(u64);
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn unit(&mut self) -> DVec3 {
-        DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5).normalize()
-    }
 }
 
 /// A general camera (look-at from an arbitrary eye), perspective light matrices (LiSPSM and

@@ -243,13 +243,8 @@ fn minimax_over_the_body_is_never_above_uniform_over_it() {
 #[test]
 fn minimax_around_the_nearest_vertex_is_never_above_uniform() {
     let cam = Camera::new(DMat4::IDENTITY, 1.0, 100.0, 0.5, 1.0).unwrap();
-    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-    let mut rnd = || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = common::Lcg(0x9e37_79b9_7f4a_7c15);
+    let mut rnd = || rng.next();
     let mut checked = 0;
     for _ in 0..400 {
         let c = DVec3::new(60.0 * rnd() - 30.0, 40.0 * rnd() - 20.0, -100.0 * rnd());
@@ -290,13 +285,8 @@ fn body_maxima_lie_at_its_vertices() {
         let body = m.body();
         let view = *identity_camera().view();
         let sm = ShadowMap::new(m.shadow.matrix(), f.light_dir_eye()).unwrap();
-        let mut seed = 12345u64;
-        let mut rnd = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = common::Lcg(12345);
+        let mut rnd = || rng.next();
         for _ in 0..2000 {
             let mut w = [0.0; 32];
             let mut sum = 0.0;

@@ -18,6 +18,26 @@ use shadow_aliasing::measure::frustum_max;
 use shadow_aliasing::ViewFrustum;
 use std::ops::Range;
 
+/// A small deterministic generator (Knuth's MMIX LCG; no dependency on the code under test), for
+/// tests that sample many random cases with a fixed seed.
+pub struct Lcg(pub u64);
+
+impl Lcg {
+    /// A number in [0, 1).
+    pub fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// A unit vector (normalised from a cube, not uniform on the sphere).
+    pub fn unit(&mut self) -> DVec3 {
+        DVec3::new(self.next() - 0.5, self.next() - 0.5, self.next() - 0.5).normalize()
+    }
+}
+
 /// Closed form against its numeric twin: relative 1e-9 (docs/architecture.md, tolerance policy).
 pub const REL: f64 = 1e-9;
 
