@@ -44,7 +44,7 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::analytic::tilted::{depth_in_view, warp_depth_range};
+use crate::analytic::tilted::{depth_in_view, mu_unchecked, warp_depth_range};
 use crate::error::{finite, finite_result, fmt_num, positive, Error, Result};
 use crate::frustum::{LightAngle, NPrime, ViewFrustum};
 use std::hint::select_unpredictable as select;
@@ -90,12 +90,9 @@ fn z_w_offset_sc(
     y: f64,
     z: f64,
 ) -> f64 {
-    let t = view.tan_half_fov();
-    if light_angle.radians() >= view.half_fov() {
-        (z - view.near()) * s + (view.near() * t - y) * c
-    } else {
-        (z - view.far()) * s + (view.far() * t - y) * c
-    }
+    let upper = light_angle.radians() >= view.half_fov();
+    let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
+    z_w_offset_unchecked(n, f, t, upper, s, c, y, z)
 }
 
 /// Validates a point (y, z) of the view frustum's vertical section: `near ≤ z ≤ far` and
@@ -316,17 +313,34 @@ pub fn zhang_eq_unchecked(
     // Every branch, then selects without a jump (`select_unpredictable`), so that a loop over
     // arrays vectorises. z_w − λ (`z_w_offset`) and tan φ_w (`tan_phi_w_unchecked`).
     let upper = light_angle >= half_fov;
-    let zw = l + select(
-        upper,
-        (z - n) * s + (n * t - y) * c,
-        (z - f) * s + (f * t - y) * c,
-    );
+    let zw = l + z_w_offset_unchecked(n, f, t, upper, s, c, y, z);
     let d = (f - n) * (s - t * c);
     let tan_phi_w = (n * t / (l + (-d).max(0.0))).max(f * t / (l + d.max(0.0)));
     select(
         l == f64::INFINITY,
         2.0 * f / z,
         2.0 * tan_phi_w * zw / (t * z),
+    )
+}
+
+/// z_w − λ of the point (y, z) ([`z_w_offset_sc`]) without validation, both branches computed and
+/// one selected without a jump: `upper` is θ ≥ φ, `s`, `c` the sine and cosine of θ.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn z_w_offset_unchecked(
+    n: f64,
+    f: f64,
+    t: f64,
+    upper: bool,
+    s: f64,
+    c: f64,
+    y: f64,
+    z: f64,
+) -> f64 {
+    select(
+        upper,
+        (z - n) * s + (n * t - y) * c,
+        (z - f) * s + (f * t - y) * c,
     )
 }
 
@@ -393,17 +407,8 @@ pub fn zhang_ep_unchecked(
     // Every branch, then selects (see `zhang_eq_unchecked`): μ (`warp_depth_range_sc`) and
     // z_w − λ (`z_w_offset_sc`).
     let upper = light_angle >= half_fov;
-    let tc = t * c;
-    let mu = select(
-        upper,
-        f * ((1.0 + n / f) * tc) + (f - n) * s,
-        f * (2.0 * tc),
-    );
-    let zw = l + select(
-        upper,
-        (z - n) * s + (n * t - y) * c,
-        (z - f) * s + (f * t - y) * c,
-    );
+    let mu = mu_unchecked(n, f, t, upper, s, c);
+    let zw = l + z_w_offset_unchecked(n, f, t, upper, s, c, y, z);
     let unwarped = mu / (t * z);
     select(
         l == f64::INFINITY,

@@ -90,14 +90,31 @@ pub(crate) fn warp_depth_range_sc(
     s: f64,
     c: f64,
 ) -> Result<f64> {
-    let (n, f) = (view.near(), view.far());
-    let tc = view.tan_half_fov() * c;
-    let mu = if light_angle.radians() >= view.half_fov() {
-        f * ((1.0 + n / f) * tc) + (f - n) * s
-    } else {
-        f * (2.0 * tc)
-    };
-    finite_result("mu", mu)
+    let upper = light_angle.radians() >= view.half_fov();
+    finite_result(
+        "mu",
+        mu_unchecked(view.near(), view.far(), view.tan_half_fov(), upper, s, c),
+    )
+}
+
+/// μ of [`warp_depth_range_sc`] without validation, both branches computed and one selected
+/// without a jump (so that the twins' array loops vectorise): `upper` is γ ≥ φ_y.
+#[inline(always)]
+pub(crate) fn mu_unchecked(
+    near: f64,
+    far: f64,
+    tan_half_fov: f64,
+    upper: bool,
+    s: f64,
+    c: f64,
+) -> f64 {
+    let (n, f) = (near, far);
+    let tc = tan_half_fov * c;
+    select(
+        upper,
+        f * ((1.0 + n / f) * tc) + (f - n) * s,
+        f * (2.0 * tc),
+    )
 }
 
 /// ψ(z, n′, γ) = z′, the warp depth of the point at depth z on the view axis (Barroso Eq 10 and
@@ -292,11 +309,7 @@ pub fn tilted_mz_unchecked(
     // perpendicular m_z (`mz_perp_unchecked`), over sin γ.
     let upper = light_angle >= half_fov;
     let tc = t * c;
-    let mu = select(
-        upper,
-        f * ((1.0 + n / f) * tc) + (f - n) * s,
-        f * (2.0 * tc),
-    );
+    let mu = mu_unchecked(n, f, t, upper, s, c);
     let k = res_image / res_t / (2.0 * t) * mu / z;
     let psi = np + select(upper, n * tc + (z - n) * s, f * tc + (z - f) * s);
     let perp = select(np == f64::INFINITY, k, k * (psi / np) * (psi / (np + mu)));
