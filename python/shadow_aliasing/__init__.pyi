@@ -78,7 +78,8 @@ def zhang_ep(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_: Arra
              light_angle: ArrayLike, y: ArrayLike, z: ArrayLike) -> F64:
     """E_p = μ z_w²/(tan φ (λ + μ) λ z) = F_p (z + G)²/z, μ/(tan φ z) for λ = ∞ (Zhang Eq 14, Appendix)."""
 def zhang_eq_local(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_: ArrayLike, z: ArrayLike) -> F64:
-    """E_q = 2 f (z − n + λ)/((f − n + λ) z) (Zhang Eq 8)."""
+    """E_q = 2 f (z − n + λ)/((f − n + λ) z) for λ ≥ n, 2 n (z − n + λ)/(λ z) for λ < n,
+    2 f / z for λ = ∞ (Zhang Eq 8)."""
 def zhang_ep_local(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_: ArrayLike, z: ArrayLike) -> F64:
     """E_p = (f − n)(z − n + λ)²/((f − n + λ) λ tan φ z) (Zhang Eq 9)."""
 

@@ -371,7 +371,9 @@ pub fn faces<'py>(
 /// The trapezoidal shadow map (Martin & Tan 2004): the focus point ``focus`` beyond the near
 /// plane on the view axis (default (f − n)/2) is mapped to the 80 % line ξ = −0.6 (§6.2), or to
 /// the line ``xi`` ∈ (−1, 1), or, with ``iterative`` = the map's texel lines along t, the line of
-/// largest focus area (§6.3). Returns the 4×4 float64 matrix eye → light clip space.
+/// largest focus area (§6.2's iterative variant, searched fast as the crate's
+/// ``TsmSearch::Iterative``: 33 sampled lines refined, which can miss a peak narrower than the
+/// sampling step). Returns the 4×4 float64 matrix eye → light clip space.
 #[pyfunction]
 #[pyo3(signature = (near, far, half_fov, light_dir, focus=None, *, xi=None, iterative=None,
     clip_depth="neg_one_to_one", aspect=1.0))]
