@@ -749,7 +749,7 @@ mod checks {
             d(mz, 3)
         ));
         e.has(format!(
-            "z/log(f/n) the line gives {}, and with a trailing /n (Eq 2's stray factor) {}",
+            "z/log(f/n) the line gives dz/dt = {}, and with a trailing /n (Eq 2's stray factor) {}",
             d(z / (f / n).ln(), 3),
             d(z * (f / n).ln() / n, 2)
         ));
