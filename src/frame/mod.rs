@@ -86,7 +86,7 @@ use crate::maps::warp::{
 use crate::maps::{ClipDepth, ShadowMatrix, TsmOptions, WarpRule};
 use crate::measure::vertex::vertex_max;
 use crate::measure::FrustumError;
-use crate::numeric::EDGE_ON;
+use crate::numeric::{fmax, EDGE_ON};
 use glam::{DMat3, DMat4, DVec2, DVec3, DVec4, Mat4};
 
 /// The largest number of vertices of a focus body (a frustum slice cut by up to 6 planes has at
@@ -446,8 +446,9 @@ pub enum Focus {
     Body,
     /// The scene is out of view (B has no volume, touching included): no map needed.
     Empty,
-    /// The receivers' bound is flat (zero thickness: a box with min = max in one coordinate, or a
-    /// polytope with two opposite planes at the same place) and B is a polygon: mapped.
+    /// The receivers' bound is flat (no thicker than 10⁻⁹ of the frustum's size: a box with
+    /// min = max in one coordinate or nearly, or a polytope with two opposite planes at the same
+    /// place) and B is a polygon: mapped.
     Flat,
     /// B has no extent across or along the warp axis as the light sees it (an edge-on flat
     /// receiver): no map can be fitted to it and none is needed (stable cascades, whose square
@@ -814,8 +815,17 @@ fn visible_range(view: &ViewFrustum, range: Option<(f64, f64)>) -> Result<(f64, 
     Ok((a, b))
 }
 
-/// The receivers' bound as eye-space planes; `n = 0` for no bound.
+/// The frustum's size, the unit of the frame's "no extent" tests (10⁻⁹ of it).
+fn frustum_scale(v: &ViewFrustum) -> f64 {
+    v.far() * (1.0 + v.tan_half_fov() * (1.0 + v.aspect()))
+}
+
+/// The receivers' bound as eye-space planes; `n = 0` for no bound. The bound is flat when it is
+/// no thicker than 10⁻⁹ of the frustum's size (B's own "no thickness", so that a thin bound in
+/// view is mapped as flat, never taken for one that only touches the frustum) or 10⁻¹² of its own
+/// size.
 fn receiver_planes(cam: &Camera, b: &Bound<'_>) -> Result<Planes> {
+    let small = 1e-9 * frustum_scale(&cam.view);
     let mut out = Planes {
         p: [DVec4::ZERO; MAX_BOUND_PLANES],
         n: 0,
@@ -847,7 +857,7 @@ fn receiver_planes(cam: &Camera, b: &Bound<'_>) -> Result<Planes> {
             }
             out.n = 6;
             let size = (hi - lo).abs().max_element().max(1.0);
-            out.flat = (hi - lo).min_element() <= 1e-12 * size;
+            out.flat = (hi - lo).min_element() <= small.max(1e-12 * size);
         }
         Bound::Polytope(planes) => {
             if planes.is_empty() || planes.len() > MAX_BOUND_PLANES {
@@ -869,22 +879,24 @@ fn receiver_planes(cam: &Camera, b: &Bound<'_>) -> Result<Planes> {
                 out.p[k] = it * *p;
             }
             out.n = planes.len();
-            out.flat = has_zero_thickness(planes);
+            out.flat = has_zero_thickness(planes, small);
         }
     }
     Ok(out)
 }
 
 /// Whether two of a polytope's planes bound it to zero thickness: opposite unit normals at the
-/// same place (within 10⁻¹², relative to the offsets), as a flat box's top and bottom planes.
-fn has_zero_thickness(planes: &[DVec4]) -> bool {
+/// same place (within `small` or 10⁻¹² relative to the offsets), as a flat box's top and bottom
+/// planes.
+fn has_zero_thickness(planes: &[DVec4], small: f64) -> bool {
     let unit = |p: &DVec4| *p / p.truncate().length();
     planes.iter().enumerate().any(|(i, a)| {
         let a = unit(a);
         planes[i + 1..].iter().any(|b| {
             let b = unit(b);
             let scale = 1.0 + a.w.abs().max(b.w.abs());
-            (a.truncate() + b.truncate()).length() <= 1e-12 && (a.w + b.w).abs() <= 1e-12 * scale
+            (a.truncate() + b.truncate()).length() <= 1e-12
+                && (a.w + b.w).abs() <= small.max(1e-12 * scale)
         })
     })
 }
@@ -1124,8 +1136,7 @@ impl Ctx<'_, '_> {
     }
 
     fn scale(&self) -> f64 {
-        let v = self.view;
-        v.far() * (1.0 + v.tan_half_fov() * (1.0 + v.aspect()))
+        frustum_scale(&self.view)
     }
 
     /// B for the slice `[a, b]`, cut by the planes `extra` as well.
@@ -1779,6 +1790,26 @@ impl Prism {
         }
         let mut hull = [DVec2::ZERO; 2 * MAX_BODY_VERTICES];
         let h = crate::geom::hull::convex_hull(&mut pts[..n], &mut hull);
+        // Vertices of B on one light ray (a vertical edge under a sun straight down) project to
+        // points within rounding of each other, and the hull can keep both: a plane on such an
+        // edge (10⁻¹³ long) has an arbitrary direction and cuts the casters away. Hull vertices
+        // within 10⁻⁹ of the footprint's size of the previous one are dropped (the prism moves
+        // by no more than that).
+        let size = hull[..h]
+            .iter()
+            .fold(0.0f64, |m, v| fmax(m, fmax(v.x.abs(), v.y.abs())));
+        let eps = 1e-9 * size;
+        let mut k = 0;
+        for i in 0..h {
+            if k == 0 || (hull[i] - hull[k - 1]).length() > eps {
+                hull[k] = hull[i];
+                k += 1;
+            }
+        }
+        while k > 1 && (hull[k - 1] - hull[0]).length() <= eps {
+            k -= 1;
+        }
+        let h = k;
         let mut planes = [DVec4::ZERO; 2 * MAX_BODY_VERTICES];
         let ls = fl.ls;
         for i in 0..h {
