@@ -1136,7 +1136,7 @@ impl Ctx<'_, '_> {
     }
 
     fn scale(&self) -> f64 {
-        frustum_scale(&self.view)
+        frustum_scale(self.view)
     }
 
     /// B for the slice `[a, b]`, cut by the planes `extra` as well.
