@@ -109,3 +109,62 @@ fn a_thin_ground_in_view_is_mapped_whatever_its_thickness() {
         );
     }
 }
+
+/// Finding 3: a wall of zero thickness lit straight down is a line segment to the light, but
+/// along a diagonal of the map (the camera turned), so neither its extent across nor along the
+/// warp axis vanished: it was mapped as `Focus::Flat`, and `WarpRule::Minimax` (which put the
+/// centre of projection on the segment's line) failed with "no extent across the warp axis"
+/// where `Uniform` built a map. Its footprint has no area: every rule must say `Focus::EdgeOn`
+/// (no map needed), with no error, for the wall and for a wall 10⁻¹² thick.
+#[test]
+fn a_wall_seen_edge_on_along_a_diagonal_is_edge_on_for_every_rule() {
+    let fwd = DVec3::new(
+        0.44386681492589997,
+        -0.07887130145701045,
+        -0.8926150169104339,
+    );
+    let view = glam::dcamera::rh::view::look_at_mat4(DVec3::ZERO, fwd, DVec3::Y);
+    let cam = Camera::new(
+        view,
+        0.016337416071001577,
+        35.17620801991576,
+        1.075507340923025,
+        1.7671325050002888,
+    )
+    .unwrap();
+    for th in [0.0, 1e-12] {
+        let z = -4.969247159826888;
+        let wall = [Aabb::new(
+            DVec3::new(-10.042282828794841, -0.3317972217681957, z),
+            DVec3::new(12.784994574556945, 2.7691201563350587, z + th),
+        )
+        .unwrap()];
+        for rule in [
+            WarpRule::Uniform,
+            WarpRule::Minimax,
+            WarpRule::MinimaxMz,
+            WarpRule::Lispsm,
+        ] {
+            for fractions in [&[0.5][..], &[][..]] {
+                let input = FrameInput::new(cam, DVec3::NEG_Y, 1024, 1080)
+                    .receivers(Bound::Boxes(&wall))
+                    .depth_range(0.023971319929335103, 12.169599008573467)
+                    .scheme(FrameScheme::Cascades {
+                        splits: shadow_aliasing::frame::CascadeSplits::Fractions {
+                            fractions,
+                            overlap: 0.0,
+                        },
+                        rule,
+                    });
+                let f =
+                    frame(&input).unwrap_or_else(|e| panic!("{th:e} {rule:?} {fractions:?}: {e}"));
+                assert!(
+                    f.is_empty() && f.focus() == Focus::EdgeOn,
+                    "{th:e} {rule:?} {fractions:?}: {:?}, {} maps",
+                    f.focus(),
+                    f.len()
+                );
+            }
+        }
+    }
+}

@@ -450,8 +450,8 @@ pub enum Focus {
     /// min = max in one coordinate or nearly, or a polytope with two opposite planes at the same
     /// place) and B is a polygon: mapped.
     Flat,
-    /// B has no extent across or along the warp axis as the light sees it (an edge-on flat
-    /// receiver): no map can be fitted to it and none is needed (stable cascades, whose square
+    /// B has no area as the light sees it (no extent across or along the warp axis, or its
+    /// footprint a line in any direction: an edge-on flat receiver): no map can be fitted to it and none is needed (stable cascades, whose square
     /// does not depend on B, map it anyway).
     EdgeOn,
     /// B has no extent in eye depth (f_B = n_B, a wall facing the camera): mapped with n′ = ∞,
@@ -1128,11 +1128,17 @@ impl Ctx<'_, '_> {
             xh = xh.max(q.x);
         }
         let small = 1e-9 * self.scale();
-        Ok(if xh - xl <= small || fl.delta <= small {
-            None
-        } else {
-            Some(fl)
-        })
+        if xh - xl <= small || fl.delta <= small {
+            return Ok(None);
+        }
+        // A footprint with no area in any direction (a flat B seen edge-on along a diagonal of
+        // the map: a vertical wall under a sun straight down, the camera turned) is edge-on too.
+        let mut foot = [DVec3::ZERO; MAX_BODY_VERTICES];
+        for (f, q) in foot.iter_mut().zip(&fl.q) {
+            *f = DVec3::new(q.x, 0.0, q.z);
+        }
+        let (_, width, _) = extents(&foot);
+        Ok((width > small).then_some(fl))
     }
 
     fn scale(&self) -> f64 {
