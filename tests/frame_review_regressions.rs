@@ -168,3 +168,20 @@ fn a_wall_seen_edge_on_along_a_diagonal_is_edge_on_for_every_rule() {
         }
     }
 }
+
+/// Finding 4: with no receivers' bound (B is the frustum) the frame's TSM map must be the
+/// frustum-only `warp` bit for bit, as for every other rule; it scaled the focus distance by
+/// (f_B − n_B)/(slice depth), a ratio that is 1 but does not round-trip, and differed by 10⁻¹⁶.
+#[test]
+fn the_tsm_rule_without_a_bound_is_the_frustum_only_map_bit_for_bit() {
+    let cam = Camera::new(glam::DMat4::IDENTITY, 1.0, 100.0, 0.5, 1.0).unwrap();
+    let rule = WarpRule::Tsm { focus: 7.3 };
+    let f = frame(
+        &FrameInput::new(cam, DVec3::new(0.2, -0.5, -0.6), 2048, 1080)
+            .scheme(FrameScheme::Single(rule)),
+    )
+    .unwrap();
+    let view = shadow_aliasing::ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let want = shadow_aliasing::maps::warp(&view, f.light_dir_eye(), rule).unwrap();
+    assert_eq!(f.maps()[0].shadow.matrix(), want.matrix());
+}

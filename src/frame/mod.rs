@@ -1343,7 +1343,9 @@ impl Ctx<'_, '_> {
             WarpCentre::Eye => false,
             WarpCentre::NearestVertex => true,
         };
-        // TSM's focus distance, checked against the slice, scaled to B's depth.
+        // TSM's focus distance, checked against the slice, scaled to B's depth (the slice's own
+        // rule is kept for the frustum-only builder below, which scales nothing).
+        let slice_rule = rule;
         let rule = match rule {
             WarpRule::Tsm { focus } => {
                 let focus = focus_in_range(&sub_full, focus)?;
@@ -1396,7 +1398,11 @@ impl Ctx<'_, '_> {
         let shadow = if body.whole && caster.is_none() && default_centre {
             // `warp(&slice, l, rule)` itself, l normalised at the entry as `warp` does: B is the
             // slice and nothing extends its depth.
-            warp_prepared(&sub_full, &PreparedLight::new(LightDir::new(l)?), rule)?
+            warp_prepared(
+                &sub_full,
+                &PreparedLight::new(LightDir::new(l)?),
+                slice_rule,
+            )?
         } else {
             ShadowMatrix::new(
                 fit_body(&fl, n_prime, centre, caster.as_slice())?,
