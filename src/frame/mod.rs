@@ -49,7 +49,10 @@
 //!   along the light (as the frustum-only builder covers the frustum's) and the casters of B_i.
 //! - A receivers' bound that contains the frustum (slice) gives the frustum-only builders'
 //!   matrices: [`crate::maps::warp()`], [`crate::maps::cascades::cascades`] bit for bit,
-//!   [`crate::maps::faces::face_partitions`] to 10⁻¹² (B_i's vertices come from the clipper).
+//!   [`crate::maps::faces::face_partitions`] to within the clipper's rounding (B_i's vertices come
+//!   from the clipper): 10⁻¹² relative at ordinary depth ratios (tests/frame_faces.rs), more where
+//!   the face warp is ill-conditioned (1.4·10⁻⁹ at f/n = 3274, half field of view 55°, PSM, k = 2,
+//!   a review found).
 //!
 //! ```
 //! use glam::{DMat4, DVec3};
