@@ -145,12 +145,22 @@ pub fn tilted_psi(
 #[inline]
 fn psi_offset(view: &ViewFrustum, light_angle: LightAngle, z: f64) -> f64 {
     let (s, c) = light_angle.radians().sin_cos();
-    let tc = view.tan_half_fov() * c;
-    if light_angle.radians() >= view.half_fov() {
-        view.near() * tc + (z - view.near()) * s
-    } else {
-        view.far() * tc + (z - view.far()) * s
-    }
+    let upper = light_angle.radians() >= view.half_fov();
+    psi_offset_parts(
+        view.near(),
+        view.far(),
+        view.tan_half_fov() * c,
+        upper,
+        s,
+        z,
+    )
+}
+
+/// ψ − n′ of [`psi_offset`] from its parts (`upper`: γ ≥ φ_y, `tc` = tan φ_y cos γ, `s` = sin γ),
+/// both branches computed and one selected without a jump.
+#[inline(always)]
+fn psi_offset_parts(n: f64, f: f64, tc: f64, upper: bool, s: f64, z: f64) -> f64 {
+    select(upper, n * tc + (z - n) * s, f * tc + (z - f) * s)
 }
 
 /// ξ(n′, γ), the factor of Barroso's m_z (Eq 12):
@@ -212,16 +222,41 @@ fn mz_perp_unchecked(
     z: f64,
     res: Resolutions,
 ) -> Result<f64> {
-    let mu = warp_depth_range(view, light_angle)?;
-    let k = res.image() / res.t() / (2.0 * view.tan_half_fov()) * mu / z;
-    match n_prime {
-        Some(np) => {
-            let psi = np + psi_offset(view, light_angle, z);
-            // ψ²/(n′(n′ + μ)), written so that it stays accurate for large n′.
-            Ok(k * (psi / np) * (psi / (np + mu)))
-        }
-        None => Ok(k),
-    }
+    // μ's own error (an overflow) first; the parts take μ again.
+    warp_depth_range(view, light_angle)?;
+    let (s, c) = light_angle.radians().sin_cos();
+    Ok(mz_perp_parts(
+        view.near(),
+        view.far(),
+        view.tan_half_fov(),
+        light_angle.radians() >= view.half_fov(),
+        (s, c),
+        n_prime.unwrap_or(f64::INFINITY),
+        z,
+        res.image() / res.t(),
+    ))
+}
+
+/// The perpendicular m_z of [`mz_perp_unchecked`] from its parts, every branch computed and
+/// selected without a jump: `upper` is γ ≥ φ_y, `(s, c)` the sine and cosine of γ, n′ = ∞
+/// unwarped, `res` = res_i/res_t.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn mz_perp_parts(
+    n: f64,
+    f: f64,
+    t: f64,
+    upper: bool,
+    (s, c): (f64, f64),
+    np: f64,
+    z: f64,
+    res: f64,
+) -> f64 {
+    let mu = mu_unchecked(n, f, t, upper, s, c);
+    let k = res / (2.0 * t) * mu / z;
+    let psi = np + psi_offset_parts(n, f, t * c, upper, s, z);
+    // ψ²/(n′(n′ + μ)), written so that it stays accurate for large n′.
+    select(np == f64::INFINITY, k, k * (psi / np) * (psi / (np + mu)))
 }
 
 /// Barroso & Celes's generalised error in the z direction for a tilted light (Eq 12), the texel
@@ -302,18 +337,20 @@ pub fn tilted_mz_unchecked(
     res_image: f64,
     res_t: f64,
 ) -> f64 {
-    let (n, f, t, np) = (near, far, tan_half_fov, n_prime);
-    let (s, c) = light_angle.sin_cos();
     // Every branch, then selects without a jump (`select_unpredictable`), so that a loop over
-    // arrays vectorises: μ (`warp_depth_range_sc`), ψ − n′ (`psi_offset`) and the
-    // perpendicular m_z (`mz_perp_unchecked`), over sin γ.
+    // arrays vectorises: the perpendicular m_z (`mz_perp_parts`) over sin γ.
+    let sc = light_angle.sin_cos();
     let upper = light_angle >= half_fov;
-    let tc = t * c;
-    let mu = mu_unchecked(n, f, t, upper, s, c);
-    let k = res_image / res_t / (2.0 * t) * mu / z;
-    let psi = np + select(upper, n * tc + (z - n) * s, f * tc + (z - f) * s);
-    let perp = select(np == f64::INFINITY, k, k * (psi / np) * (psi / (np + mu)));
-    perp / s
+    mz_perp_parts(
+        near,
+        far,
+        tan_half_fov,
+        upper,
+        sc,
+        n_prime,
+        z,
+        res_image / res_t,
+    ) / sc.0
 }
 
 /// The tilted-light m_z measured perpendicular to the light, as the crate measures every map
