@@ -243,15 +243,23 @@ def _zhang_parts(n, f, th, t, g, y, zz):
     return s, c, upper, mu, offset
 
 
-def zhang_eq(near, far, half_fov, lambda_, light_angle, y, z):
-    """Zhang Eq 13: E_q = 2 tan φ_w z_w/(tan φ z), 2 f/z for λ = ∞, with tan φ_w the fitted
-    warping frustum's (the crate's form, docs/errata.md)."""
+def _zhang_point(near, far, half_fov, lambda_, light_angle, y, z):
+    """The arguments of Zhang's global forms as arrays, checked as the bindings check them, and
+    their parts: (n, f, tan φ, λ, z, sin θ, cos θ, μ, z_w − λ)."""
     n, f, th, lam, g, yy, zz = _arrays(near, far, half_fov, lambda_, light_angle, y, z)
     ok, t = _view_ok(n, f, th)
     ok &= (lam > 0) & _angle_ok(g) & _point_ok(n, f, t, yy, zz)
     if not ok.all():
         raise ValueError("argument outside the domain")
-    s, c, _, _, offset = _zhang_parts(n, f, th, t, g, yy, zz)
+    s, c, _, mu, offset = _zhang_parts(n, f, th, t, g, yy, zz)
+    return n, f, t, lam, zz, s, c, mu, offset
+
+
+def zhang_eq(near, far, half_fov, lambda_, light_angle, y, z):
+    """Zhang Eq 13: E_q = 2 tan φ_w z_w/(tan φ z), 2 f/z for λ = ∞, with tan φ_w the fitted
+    warping frustum's (the crate's form, docs/errata.md)."""
+    n, f, t, lam, zz, s, c, _, offset = _zhang_point(near, far, half_fov, lambda_,
+                                                     light_angle, y, z)
     with np.errstate(invalid="ignore"):
         zw = lam + offset
         d = (f - n) * (s - t * c)
@@ -263,12 +271,8 @@ def zhang_eq(near, far, half_fov, lambda_, light_angle, y, z):
 
 def zhang_ep(near, far, half_fov, lambda_, light_angle, y, z):
     """Zhang Eq 14: E_p = μ z_w²/(tan φ (λ + μ) λ z), μ/(tan φ z) for λ = ∞."""
-    n, f, th, lam, g, yy, zz = _arrays(near, far, half_fov, lambda_, light_angle, y, z)
-    ok, t = _view_ok(n, f, th)
-    ok &= (lam > 0) & _angle_ok(g) & _point_ok(n, f, t, yy, zz)
-    if not ok.all():
-        raise ValueError("argument outside the domain")
-    _, _, _, mu, offset = _zhang_parts(n, f, th, t, g, yy, zz)
+    n, f, t, lam, zz, _, _, mu, offset = _zhang_point(near, far, half_fov, lambda_,
+                                                      light_angle, y, z)
     _finite_or_raise(mu, "mu")
     unwarped = mu / (t * zz)
     with np.errstate(invalid="ignore"):
