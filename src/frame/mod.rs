@@ -259,9 +259,8 @@ pub enum WarpCentre {
     /// On the eye's own light-space line (`fit_warp`, Filament).
     Eye,
     /// On the light-space x and y of B's vertex nearest the camera (ties: the largest eye-space
-    /// x + y, the
-    /// top right of OGRE's `ConvexBody::define` order), as the LiSPSM reference code. OGRE
-    /// (`OgreShadowCameraSetupLiSPSM.cpp`) takes the camera-nearest point of V ∩ S, the view
+    /// x + y, the top right of OGRE's `ConvexBody::define` order), as the LiSPSM reference code.
+    /// OGRE (`OgreShadowCameraSetupLiSPSM.cpp`) takes the camera-nearest point of V ∩ S, the view
     /// frustum ∩ the scene's box, which is B's vertex when the receivers' bound is the scene's.
     NearestVertex,
 }
@@ -454,8 +453,8 @@ pub enum Focus {
     /// place) and B is a polygon: mapped.
     Flat,
     /// B has no area as the light sees it (no extent across or along the warp axis, or its
-    /// footprint a line in any direction: an edge-on flat receiver): no map can be fitted to it and none is needed (stable cascades, whose square
-    /// does not depend on B, map it anyway).
+    /// footprint a line in any direction: an edge-on flat receiver): no map can be fitted to it
+    /// and none is needed (stable cascades, whose square does not depend on B, map it anyway).
     EdgeOn,
     /// B has no extent in eye depth (f_B = n_B, a wall facing the camera): mapped with n′ = ∞,
     /// since every warp rule needs a depth range. Single maps and cascades report it; TSM,
