@@ -64,15 +64,6 @@ pub fn zhang_mu(view: &ViewFrustum, light_angle: LightAngle) -> Result<f64> {
     warp_depth_range(view, light_angle)
 }
 
-/// The offset `D = (f − n)(sin θ − tan φ cos θ)` of the far-top corner's warp depth from the
-/// near-top corner's: the near-top corner is nearest W's centre of projection when D ≥ 0
-/// (θ ≥ φ), the far-top corner otherwise.
-#[inline]
-fn far_top_offset(view: &ViewFrustum, light_angle: LightAngle) -> f64 {
-    let (s, c) = light_angle.radians().sin_cos();
-    (view.far() - view.near()) * (s - view.tan_half_fov() * c)
-}
-
 /// z_w − λ, the point's warp depth from the frustum's nearest extent.
 #[inline]
 fn z_w_offset(view: &ViewFrustum, light_angle: LightAngle, y: f64, z: f64) -> f64 {
@@ -169,10 +160,19 @@ pub fn zhang_tan_phi_w(view: &ViewFrustum, lambda: f64, light_angle: LightAngle)
 
 #[inline]
 fn tan_phi_w_unchecked(view: &ViewFrustum, lambda: f64, light_angle: LightAngle) -> f64 {
-    let t = view.tan_half_fov();
-    let d = far_top_offset(view, light_angle);
-    let near = view.near() * t / (lambda + (-d).max(0.0));
-    let far = view.far() * t / (lambda + d.max(0.0));
+    let (s, c) = light_angle.radians().sin_cos();
+    tan_phi_w_parts(view.near(), view.far(), view.tan_half_fov(), lambda, s, c)
+}
+
+/// tan φ_w of [`tan_phi_w_unchecked`] from its parts: n, f, t = tan φ, λ and the sine and cosine
+/// of θ. `D = (f − n)(sin θ − tan φ cos θ)` is the offset of the far-top corner's warp depth from
+/// the near-top corner's: the near-top corner is nearest W's centre of projection when D ≥ 0
+/// (θ ≥ φ), the far-top corner otherwise.
+#[inline(always)]
+fn tan_phi_w_parts(n: f64, f: f64, t: f64, lambda: f64, s: f64, c: f64) -> f64 {
+    let d = (f - n) * (s - t * c);
+    let near = n * t / (lambda + (-d).max(0.0));
+    let far = f * t / (lambda + d.max(0.0));
     near.max(far)
 }
 
@@ -311,11 +311,10 @@ pub fn zhang_eq_unchecked(
     let (n, f, t, l) = (near, far, tan_half_fov, lambda);
     let (s, c) = light_angle.sin_cos();
     // Every branch, then selects without a jump (`select_unpredictable`), so that a loop over
-    // arrays vectorises. z_w − λ (`z_w_offset`) and tan φ_w (`tan_phi_w_unchecked`).
+    // arrays vectorises. z_w − λ (`z_w_offset`) and tan φ_w (`tan_phi_w_parts`).
     let upper = light_angle >= half_fov;
     let zw = l + z_w_offset_unchecked(n, f, t, upper, s, c, y, z);
-    let d = (f - n) * (s - t * c);
-    let tan_phi_w = (n * t / (l + (-d).max(0.0))).max(f * t / (l + d.max(0.0)));
+    let tan_phi_w = tan_phi_w_parts(n, f, t, l, s, c);
     select(
         l == f64::INFINITY,
         2.0 * f / z,
