@@ -9,6 +9,7 @@
 //! The first element (in C order) whose arguments the crate refuses raises `ValueError` with the
 //! crate's message and, for an array, the element's index.
 
+use multiversion::multiversion;
 use numpy::ndarray::{ArrayD, IxDyn};
 use numpy::{
     AllowTypeChange, PyArrayDescrMethods, PyArrayDyn, PyArrayLikeDyn, PyUntypedArray,
@@ -164,6 +165,18 @@ static FAST_PATH: AtomicBool = AtomicBool::new(true);
 #[pyfunction]
 pub fn _set_fast_path(enabled: bool) -> bool {
     FAST_PATH.swap(enabled, Ordering::Relaxed)
+}
+
+/// Whether the fast kernels may use the processor's wider vectors where it has them (the
+/// default; [`kernel_full_wide`]); `_native._set_wide_simd(False)` keeps them on the baseline
+/// target's, so that the tests can compare both.
+static WIDE_SIMD: AtomicBool = AtomicBool::new(true);
+
+/// Turns the fast kernels' wider vectors (AVX2 on x86-64) on or off (a test hook); returns the
+/// previous setting. Either way the values are the same bit for bit.
+#[pyfunction]
+pub fn _set_wide_simd(enabled: bool) -> bool {
+    WIDE_SIMD.swap(enabled, Ordering::Relaxed)
 }
 
 /// The one transcendental most forms need per element, tan θ, remembered for the last θ: a θ
@@ -409,6 +422,7 @@ where
         let Some(Fast { g, tan_of }) = g else {
             return checked(start, out);
         };
+        let wide = WIDE_SIMD.load(Ordering::Relaxed);
         let mut memo = TanMemo::new();
         let mut tans = [0.0f64; BLOCK];
         for (b, ob) in out.chunks_mut(BLOCK).enumerate() {
@@ -431,6 +445,7 @@ where
                 }
             }
             let ok = match ob.first_chunk_mut::<BLOCK>() {
+                Some(o) if is_full && wide => kernel_full_wide(&full, &tans, o, allow_inf, g),
                 Some(o) if is_full => kernel_full(&full, &tans, o, allow_inf, g),
                 _ => kernel_tail(&cols, &tans[..len], ob, allow_inf, g),
             };
@@ -490,6 +505,27 @@ where
         ok &= admitted(v, good, allow_inf);
     }
     ok
+}
+
+/// [`kernel_full`], compiled once more for AVX2 (four f64 lanes where the baseline x86-64 target
+/// has SSE2's two) and chosen at run time where the processor has it (`multiversion`); elsewhere
+/// it is [`kernel_full`]. Only the vector width differs: IEEE 754 +, −, ×, ÷, √ and comparisons
+/// give the same bits at any width, Rust never fuses a multiply and an add, and libm calls
+/// (`tan`, `atan`, …) are the same functions, so both versions write the same values
+/// (python/tests/test_fast_path.py compares them, `_set_wide_simd`). The arithmetic forms run
+/// about twice as fast with it (docs/python.md).
+#[multiversion(targets("x86_64+avx2"))]
+fn kernel_full_wide<const N: usize, G>(
+    cols: &[&[f64; BLOCK]; N],
+    tans: &[f64; BLOCK],
+    out: &mut [f64; BLOCK],
+    allow_inf: bool,
+    g: &G,
+) -> bool
+where
+    G: Fn(&[f64; N], f64) -> (f64, bool),
+{
+    kernel_full(cols, tans, out, allow_inf, g)
 }
 
 /// [`kernel_full`] over a shorter block (`out.len()` elements of each column).

@@ -16,6 +16,7 @@ use pyo3::prelude::*;
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     use closed::*;
     m.add_function(wrap_pyfunction!(broadcast::_set_fast_path, m)?)?;
+    m.add_function(wrap_pyfunction!(broadcast::_set_wide_simd, m)?)?;
     m.add_function(wrap_pyfunction!(mx, m)?)?;
     m.add_function(wrap_pyfunction!(mz, m)?)?;
     m.add_function(wrap_pyfunction!(max_mx, m)?)?;

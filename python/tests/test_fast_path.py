@@ -2,7 +2,8 @@
 unchecked twins over blocks, split over threads) against the validated element-by-element path
 (`_native._set_fast_path(False)`, the crate's checked closed forms, which `eval` also answers):
 the same numbers bit for bit and the same errors, at domain edges, for large arrays split over
-threads, and for a bad element deep in a large array."""
+threads, with and without the wider vectors (`_native._set_wide_simd`), and for a bad element
+deep in a large array."""
 import math
 import zlib
 
@@ -173,6 +174,46 @@ def test_fast_path_agrees_with_validated_path_at_domain_edges(name):
     assert outcomes["value"] > 100 and outcomes["error"] > 100, outcomes
 
 
+def _wide_and_baseline(f, args):
+    """f(*args) with the fast kernels' wider vectors (AVX2 where the processor has it) and with
+    the baseline target's, then on the validated path."""
+    assert _native._set_wide_simd(True) is True
+    wide = f(*args)
+    _native._set_wide_simd(False)
+    try:
+        baseline = f(*args)
+    finally:
+        _native._set_wide_simd(True)
+    _native._set_fast_path(False)
+    try:
+        slow = f(*args)
+    finally:
+        _native._set_fast_path(True)
+    return wide, baseline, slow
+
+
+@pytest.mark.parametrize("name", FAST_FORMS)
+def test_wide_vectors_agree_with_baseline_at_domain_edges(name):
+    # The edge arguments the validated form accepts, as one array of whole blocks (512 elements),
+    # which the fast kernel computes in one vector loop: with AVX2 and with SSE2 the same bits as
+    # the validated path. (One element per call, as above, runs the scalar tail loop instead.)
+    rng = np.random.default_rng(zlib.crc32(b"wide " + name.encode()))
+    f = getattr(sa, name)
+    with np.errstate(all="ignore"):
+        cols = _edge_args(name, rng, 1500)
+    _native._set_fast_path(False)
+    try:
+        accepted = [i for i in range(cols[0].size)
+                    if _outcome(f, [float(c[i]) for c in cols])[0] == "value"]
+    finally:
+        _native._set_fast_path(True)
+    assert len(accepted) > 100, len(accepted)
+    take = np.resize(np.array(accepted), 4 * 512)
+    wide, baseline, slow = _wide_and_baseline(f, [c[take] for c in cols])
+    assert wide.tobytes() == slow.tobytes() and baseline.tobytes() == slow.tobytes()
+    assert not np.isnan(wide).any()
+
+
 @pytest.mark.parametrize("name", FAST_FORMS)
 def test_large_array_over_threads_equals_small_calls(name):
     # 300 000 elements: many blocks, split over the threads; valid arguments only.
@@ -220,6 +261,8 @@ def test_large_array_over_threads_equals_small_calls(name):
     np.testing.assert_array_equal(big, pieces)
     fast, slow = _both_paths(f, args)
     np.testing.assert_array_equal(fast, slow)
+    wide, baseline, slow = _wide_and_baseline(f, args)
+    assert wide.tobytes() == slow.tobytes() and baseline.tobytes() == slow.tobytes()
     # Element 123 456 by itself.
     i = 123_456
     one = f(*[float(a[i]) if isinstance(a, np.ndarray) else a for a in args])
