@@ -4,6 +4,7 @@ unchecked twins over blocks, split over threads) against the validated element-b
 the same numbers bit for bit and the same errors, at domain edges, for large arrays split over
 threads, with and without the wider vectors (`_native._set_wide_simd`), and for a bad element
 deep in a large array."""
+import contextlib
 import math
 import zlib
 
@@ -136,14 +137,22 @@ def validated_path():
     _native._set_fast_path(previous)
 
 
+@contextlib.contextmanager
+def _hook(setter, value):
+    """Runs the body with a test hook (`_native._set_fast_path`, `_set_wide_simd`) at `value`,
+    then restores the previous setting."""
+    previous = setter(value)
+    try:
+        yield
+    finally:
+        setter(previous)
+
+
 def _both_paths(f, args):
     assert _native._set_fast_path(True) is True
     fast = f(*args)
-    _native._set_fast_path(False)
-    try:
+    with _hook(_native._set_fast_path, False):
         slow = f(*args)
-    finally:
-        _native._set_fast_path(True)
     return fast, slow
 
 
@@ -175,20 +184,12 @@ def test_fast_path_agrees_with_validated_path_at_domain_edges(name):
 
 
 def _wide_and_baseline(f, args):
-    """f(*args) with the fast kernels' wider vectors (AVX2 where the processor has it) and with
-    the baseline target's, then on the validated path."""
+    """f(*args) with the fast kernels' wider vectors (AVX2 where the processor has it), with the
+    baseline target's, and on the validated path."""
     assert _native._set_wide_simd(True) is True
-    wide = f(*args)
-    _native._set_wide_simd(False)
-    try:
+    with _hook(_native._set_wide_simd, False):
         baseline = f(*args)
-    finally:
-        _native._set_wide_simd(True)
-    _native._set_fast_path(False)
-    try:
-        slow = f(*args)
-    finally:
-        _native._set_fast_path(True)
+    wide, slow = _both_paths(f, args)
     return wide, baseline, slow
 
 
@@ -201,12 +202,9 @@ def test_wide_vectors_agree_with_baseline_at_domain_edges(name):
     f = getattr(sa, name)
     with np.errstate(all="ignore"):
         cols = _edge_args(name, rng, 1500)
-    _native._set_fast_path(False)
-    try:
+    with _hook(_native._set_fast_path, False):
         accepted = [i for i in range(cols[0].size)
                     if _outcome(f, [float(c[i]) for c in cols])[0] == "value"]
-    finally:
-        _native._set_fast_path(True)
     assert len(accepted) > 100, len(accepted)
     take = np.resize(np.array(accepted), 4 * 512)
     wide, baseline, slow = _wide_and_baseline(f, [c[take] for c in cols])
