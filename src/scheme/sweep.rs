@@ -218,10 +218,51 @@ pub fn sweep_into(
     grid: SweepGrid,
     out: &mut [f64],
 ) -> Result<()> {
-    if out.len() != grid.len() {
+    let (rows, cols) = (0..grid.elevations, 0..grid.azimuths);
+    sweep_block_into(view, rule, partition, k, grid, rows, cols, out)
+}
+
+/// As [`sweep_into`], for one block of the grid only: the rows `rows` (elevations) and columns
+/// `cols` (azimuths), written row by row into `out` of `rows.len() × cols.len()` values (the
+/// value of grid cell `(i, j)` at `(i − rows.start) · cols.len() + (j − cols.start)`). Each value
+/// is bit for bit the one [`sweep_into`] writes for that cell, so a caller can cover the grid
+/// in blocks, e.g. to stay responsive between them (the Python bindings check for Ctrl-C between
+/// blocks); tests/sweep_rows.rs compares both.
+///
+/// # Errors
+/// As [`sweep`], the failing direction being the first of the block in grid order;
+/// [`Error::InvalidArgument`] naming `rows` or `cols` when the range is not within the grid, or
+/// `out` when its length is not `rows.len() × cols.len()`.
+#[allow(clippy::too_many_arguments)]
+pub fn sweep_block_into(
+    view: &ViewFrustum,
+    rule: WarpRule,
+    partition: Partition,
+    k: usize,
+    grid: SweepGrid,
+    rows: std::ops::Range<usize>,
+    cols: std::ops::Range<usize>,
+    out: &mut [f64],
+) -> Result<()> {
+    for (name, r, end) in [
+        ("rows", &rows, grid.elevations),
+        ("cols", &cols, grid.azimuths),
+    ] {
+        if r.start > r.end || r.end > end {
+            return Err(Error::invalid(
+                name,
+                format!(
+                    "must be a range within 0..{end} (got {}..{})",
+                    r.start, r.end
+                ),
+            ));
+        }
+    }
+    let len = rows.len() * cols.len();
+    if out.len() != len {
         return Err(Error::invalid(
             "out",
-            format!("must hold {} values (got {})", grid.len(), out.len()),
+            format!("must hold {len} values (got {})", out.len()),
         ));
     }
     // Validate the scheme once, at the zenith, so argument errors are reported as such.
@@ -246,16 +287,17 @@ pub fn sweep_into(
     // per direction (the same values: the same `sin_cos` of the same azimuth), in a stack table.
     const BLOCK: usize = 512;
     let mut table = [(0.0, 0.0); BLOCK];
-    let a = grid.azimuths;
+    // The block's width; `first` below counts its columns from `cols.start`.
+    let a = cols.len();
     let mut ok = true;
     for first in (0..a).step_by(BLOCK) {
         let n = BLOCK.min(a - first);
         for (j, t) in table[..n].iter_mut().enumerate() {
-            *t = grid.azimuth(first + j).sin_cos();
+            *t = grid.azimuth(cols.start + first + j).sin_cos();
         }
         let table = &table[..n];
         let row = |i: usize, values: &mut [f64]| -> bool {
-            let el = grid.elevation(i).sin_cos();
+            let el = grid.elevation(rows.start + i).sin_cos();
             let values = &mut values[first..first + n];
             if let Some(lanes) = &lanes {
                 // The scalar code's result buffer (several KB) only for a row that needs it.
@@ -312,9 +354,9 @@ pub fn sweep_into(
     }
     // Some direction failed: find the first in grid order, serially, and report it.
     let mut buf = SchemeResult::default();
-    for i in 0..grid.elevations {
+    for i in rows.clone() {
         let el = grid.elevation(i);
-        for j in 0..a {
+        for j in cols.clone() {
             let az = grid.azimuth(j);
             one(el.sin_cos(), az.sin_cos(), &mut buf).map_err(|e| {
                 Error::Degenerate(format!(
