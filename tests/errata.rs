@@ -6,11 +6,9 @@
 //! entry gives, and the entry's text must contain them. `independent_check_paragraph_counts`
 //! checks that the paragraph "Independent check of these entries" states how many entries and
 //! numbers this file checks.
-//!
-//! Lloyd 2006 entry 17 is being rewritten elsewhere and is not checked here.
 
 mod common;
-use common::faces::faces_with_axis;
+use common::faces::{faces_with_axis, side_face_with_axis};
 use common::{adaptive_limit, close, top_line_crossing_x, tsm_80_percent_sbar, zhang_printed};
 use glam::DVec3;
 use shadow_aliasing::analytic::global::{zhang_ep, zhang_ep_local, zhang_eq, zhang_eq_local};
@@ -756,6 +754,110 @@ mod checks {
         e.done()
     }
 
+    /// #13's 30 × 72 grid (elevation 3i°, azimuth 5j°; f/n = 100, θ = 30°): every direction in
+    /// exactly one category, the counts summing to the grid.
+    pub fn l06_13_grid() -> usize {
+        let e = Entry::numbered(L06, 13);
+        let v = view(1.0, 100.0, 30f64.to_radians());
+        let (mut fails, mut worse, mut ties, mut better) = (0usize, 0usize, 0usize, 0usize);
+        let mut rounding = Vec::new();
+        for i in 0..30 {
+            for j in 0..72 {
+                let (el, az) = (3.0 * f64::from(i), 5.0 * f64::from(j));
+                let l = light_dir_from_angles(el.to_radians(), az.to_radians());
+                let unit = faces_with_axis(&v, l, true).unwrap_or_else(|| panic!("({el}, {az})"));
+                let Some(raw) = faces_with_axis(&v, l, false) else {
+                    fails += 1;
+                    continue;
+                };
+                if raw > unit * (1.0 + 1e-9) {
+                    worse += 1;
+                } else if raw > unit {
+                    rounding.push((el, az, raw / unit - 1.0));
+                } else if raw == unit {
+                    ties += 1;
+                } else {
+                    better += 1;
+                }
+            }
+        }
+        assert_eq!(fails + worse + rounding.len() + ties + better, 30 * 72);
+        let [(el, az, rel)] = rounding[..] else {
+            panic!("{rounding:?}")
+        };
+        for _ in 0..6 {
+            formatted();
+        }
+        e.has(format!(
+            "the sum fails at {fails} directions and, of the other {}, is worse by more than \
+             10⁻⁹ at {worse}, worse by a rounding difference (relative {}, at elevation {}°, \
+             azimuth {}°) at {}, equal at {ties} and better at {better})",
+            30 * 72 - fails,
+            sci(rel, 1),
+            d(el, 0),
+            d(az, 0),
+            rounding.len()
+        ));
+        e.done()
+    }
+
+    /// #17: Lloyd's unit-vector bisector alone (k = 1, f/n = 1000, θ = 30°) at azimuth 150° and
+    /// elevation arctan ½ − δ, just below the frustum's +x+y side edge. Without the edge-on
+    /// cut-off (the skipped face's map added back) Σ S̄ grows as δ^(−1/2); with it (the crate's
+    /// `visible_faces`) it drops to its value on the edge once the face is skipped.
+    pub fn l06_17_edge() -> usize {
+        use shadow_aliasing::maps::faces::visible_faces;
+        let e = Entry::numbered(L06, 17);
+        let v = view(1.0, 1000.0, 30f64.to_radians());
+        let at =
+            |deg: f64| light_dir_from_angles(0.5f64.atan() - deg.to_radians(), 150f64.to_radians());
+        let faces = |deg: f64| visible_faces(&v, at(deg)).unwrap().faces().to_vec();
+        // The faces seen just below the edge, before any is skipped.
+        let seen = faces(1e-3);
+        let uncut = |deg: f64| {
+            let kept = faces(deg);
+            let skipped: f64 = seen
+                .iter()
+                .filter(|f| !kept.contains(f))
+                .map(|&f| side_face_with_axis(&v, at(deg), f, true).unwrap())
+                .sum();
+            faces_with_axis(&v, at(deg), true).unwrap() + skipped
+        };
+        let s: Vec<f64> = [1e-4, 1e-5, 1e-6, 1e-7, 1e-8].map(uncut).to_vec();
+        // Unbounded: √10 per decade of δ towards the edge.
+        for w in s[2..].windows(2) {
+            let r = w[1] / w[0];
+            assert!((r - 10f64.sqrt()).abs() < 0.1, "{s:?}");
+        }
+        e.has(format!(
+            "it is {} at δ = 10⁻⁴°, {} at 10⁻⁵°, {} at 10⁻⁶°, {} at 10⁻⁷° (√10 per decade)",
+            d(s[0], 0),
+            d(s[1], 0),
+            d(s[2], 0),
+            d(s[3], 0)
+        ));
+        // Where EDGE_ON skips the face: the largest δ at which one of `seen` is gone.
+        let (mut lo, mut hi) = (1e-8f64, 1e-3f64);
+        for _ in 0..200 {
+            let m = (lo * hi).sqrt();
+            if faces(m).len() < seen.len() {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+        let cut = faces_with_axis(&v, at(hi), true).unwrap();
+        let on_edge = faces_with_axis(&v, at(0.0), true).unwrap();
+        // Below the cut-off the crate's Σ S̄ is the on-edge value.
+        assert!((faces_with_axis(&v, at(lo), true).unwrap() - on_edge).abs() < 1e-3 * on_edge);
+        e.has(format!(
+            "skips that face from δ = {}° on, where Σ S̄ = {},",
+            sci(lo, 3),
+            d(cut, 0)
+        ));
+        e.done()
+    }
+
     pub fn l06_13_sum() -> usize {
         let e = Entry::numbered(L06, 13);
         let v = view(1.0, 100.0, 30f64.to_radians());
@@ -1191,6 +1293,113 @@ mod checks {
         e.done()
     }
 
+    /// Barroso's Eq 19 as printed (one α), in units of n: plane 1 u_1 from u_k = f/n by
+    /// u_{i−1} = λ u_i^{(i−1)/i} + (1 − λ) u_i/α, λ = γ/(π/2); all k + 1 planes, near to far.
+    fn eq19_by_hand(ratio: f64, k: usize, gamma: f64, alpha: f64) -> Vec<f64> {
+        let l = gamma / FRAC_PI_2;
+        let mut p = vec![ratio];
+        for i in (2..=k).rev() {
+            let u = *p.last().unwrap();
+            let e = (i - 1) as f64 / i as f64;
+            p.push(l * u.powf(e) + (1.0 - l) * u / alpha);
+        }
+        p.push(1.0);
+        p.reverse();
+        p
+    }
+
+    /// The f/n at which Eq 19's plane 1 reaches n (bisection; plane 1 increases with f/n).
+    fn eq19_threshold(k: usize, gamma: f64, alpha: f64) -> f64 {
+        let (mut lo, mut hi) = (1.0f64, 1e6f64);
+        for _ in 0..200 {
+            let m = (lo * hi).sqrt();
+            if eq19_by_hand(m, k, gamma, alpha)[1] <= 1.0 {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+        0.5 * (lo + hi)
+    }
+
+    pub fn bc_eq19_no_planes() -> usize {
+        use shadow_aliasing::Error;
+        let e = Entry::bullet(BC, "Eq 19, planes at or below n");
+        let adaptive = |f: f64, k: usize, g: f64| {
+            z_splits(
+                1.0,
+                f,
+                k,
+                SplitScheme::Adaptive {
+                    light_angle: g,
+                    ratio: 2.0,
+                },
+            )
+        };
+        let p = eq19_by_hand(10.0, 5, 0.0, 2.0);
+        e.has(format!(
+            "γ = 0 gives the planes {}, plane 1 below n",
+            list(&p[1..], &[3, 2, 1, 0, 0])
+        ));
+        match adaptive(10.0, 5, 0.0) {
+            Err(Error::NoSolution(m)) => {
+                assert!(m.contains(&format!("plane 1 at {}", p[1])), "{m}")
+            }
+            other => panic!("{other:?}"),
+        }
+        // The γ below which f/n = 10, k = 5 has no planes.
+        let (mut lo, mut hi) = (0.0f64, FRAC_PI_2);
+        for _ in 0..200 {
+            let m = 0.5 * (lo + hi);
+            if eq19_by_hand(10.0, 5, m, 2.0)[1] <= 1.0 {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+        assert!(matches!(
+            adaptive(10.0, 5, lo * 0.999),
+            Err(Error::NoSolution(_))
+        ));
+        assert!(adaptive(10.0, 5, hi * 1.001).is_ok());
+        e.has(format!(
+            "no planes for every γ below {}°",
+            d(lo.to_degrees(), 2)
+        ));
+        for k in [2, 3, 4, 5, 8] {
+            let mut row = format!("| {k} |");
+            for (j, deg) in [0.0f64, 15.0, 30.0, 45.0, 60.0, 75.0]
+                .into_iter()
+                .enumerate()
+            {
+                let g = deg.to_radians();
+                let t = eq19_threshold(k, g, 2.0);
+                if j == 0 {
+                    assert!((t - 2f64.powi(k as i32 - 1)).abs() < 1e-9 * t);
+                }
+                assert!(
+                    matches!(adaptive(t / 1.01, k, g), Err(Error::NoSolution(_))),
+                    "k {k}, γ {deg}°, f/n {}",
+                    t / 1.01
+                );
+                let ok = adaptive(1.01 * t, k, g).unwrap();
+                for (a, b) in ok.planes().iter().zip(eq19_by_hand(1.01 * t, k, g, 2.0)) {
+                    assert!((a - b).abs() < 1e-12 * b, "k {k}, γ {deg}°: {a} vs {b}");
+                }
+                row += &format!(" {} |", d(t, if j == 0 { 0 } else { 2 }));
+            }
+            e.has(row);
+        }
+        let four: Vec<f64> = [2, 3, 4, 5, 8]
+            .map(|k| eq19_threshold(k, 0.0, 4.0))
+            .to_vec();
+        e.has(format!(
+            "T at γ = 0 is {} for these k",
+            list(&four, &[0; 5])
+        ));
+        e.done()
+    }
+
     pub fn bc_plane_by_plane() -> usize {
         let e = Entry::bullet(BC, "§3.2, Eq 19 \"linearly interpolating");
         let adaptive = |g: f64| {
@@ -1523,9 +1732,11 @@ entries!(
     l06_12,
     l06_13,
     l06_13_sum,
+    l06_13_grid,
     l06_14,
     l06_15,
     l06_16,
+    l06_17_edge,
     l06_18,
     l06_19,
     l06_20,
@@ -1542,6 +1753,7 @@ entries!(
     bc_eq14_eq16,
     bc_eq19_alpha,
     bc_f1_f2,
+    bc_eq19_no_planes,
     bc_plane_by_plane,
     bc_transition,
     bc_transition_counts,
