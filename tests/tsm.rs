@@ -7,7 +7,8 @@ use common::{config, tsm_80_percent_sbar};
 use glam::{DMat4, DVec2, DVec3, DVec4};
 use proptest::prelude::*;
 use shadow_aliasing::maps::tsm::{
-    quad_to_square, tsm, tsm_general, ConvexBound, TsmOptions, TsmSearch, SQUARE_TOLERANCE,
+    quad_to_square, tsm, tsm_general, ConvexBound, TsmOptions, TsmSearch, MAX_MAP_LINES,
+    SQUARE_TOLERANCE,
 };
 use shadow_aliasing::maps::{fit_warp, light_space, warp, WarpRule};
 use shadow_aliasing::measure::{frustum_max, ShadowMap};
@@ -430,6 +431,86 @@ fn invalid_options() {
     for (focus, search, name) in cases {
         let e = tsm(&view, DVec3::NEG_Y, TsmOptions { focus, search }).unwrap_err();
         assert!(e.to_string().starts_with(name), "{e}");
+    }
+}
+
+/// Issue 21 item 7: `map_lines` is bounded, in `tsm` and in the frame API's trapezoidal map
+/// alike (`IterativeExhaustive { map_lines: u32::MAX }` took 72 s for one frame). Above
+/// [`MAX_MAP_LINES`] it is refused naming `map_lines` and its range; at the bound both searches
+/// are accepted and each map takes well under a second (about 0.8 × 65 536 evaluations).
+#[test]
+fn map_lines_is_bounded_and_the_bound_is_cheap() {
+    use shadow_aliasing::frame::{frame, Camera, FrameInput, FrameScheme};
+    use std::time::{Duration, Instant};
+    assert_eq!(MAX_MAP_LINES, 65_536);
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let l = DVec3::new(0.3, -1.0, -0.4);
+    let cam = Camera::new(DMat4::IDENTITY, 1.0, 100.0, 0.5, 1.0).unwrap();
+    let in_frame = |search| {
+        let scheme = FrameScheme::Tsm(TsmOptions {
+            focus: 20.0,
+            search,
+        });
+        frame(&FrameInput::new(cam, l, 2048, 2048).scheme(scheme)).map(|f| f.len())
+    };
+    let in_tsm = |search| {
+        tsm(
+            &view,
+            l,
+            TsmOptions {
+                focus: 20.0,
+                search,
+            },
+        )
+        .map(|t| t.xi)
+    };
+    for lines in [MAX_MAP_LINES + 1, u32::MAX] {
+        for search in [
+            TsmSearch::Iterative { map_lines: lines },
+            TsmSearch::IterativeExhaustive { map_lines: lines },
+        ] {
+            let start = Instant::now();
+            let errors = [in_tsm(search).unwrap_err(), in_frame(search).unwrap_err()];
+            assert!(start.elapsed() < Duration::from_secs(1), "{search:?}");
+            for e in errors {
+                let text = e.to_string();
+                assert!(
+                    matches!(
+                        e,
+                        shadow_aliasing::Error::InvalidArgument {
+                            name: "map_lines",
+                            ..
+                        }
+                    ) && text
+                        .starts_with(&format!("map_lines must lie in [2, 65536] (got {lines})")),
+                    "{search:?}: {text}"
+                );
+            }
+        }
+    }
+    for search in [
+        TsmSearch::Iterative {
+            map_lines: MAX_MAP_LINES,
+        },
+        TsmSearch::IterativeExhaustive {
+            map_lines: MAX_MAP_LINES,
+        },
+    ] {
+        let start = Instant::now();
+        let xi = in_tsm(search).unwrap();
+        assert_eq!(in_frame(search).unwrap(), 1);
+        // One of the map's lines 1 − 2k/65536 with 1 ≤ k ≤ round(0.8 × 65536) = 52429.
+        let k = (1.0 - xi) * f64::from(MAX_MAP_LINES) / 2.0;
+        assert!(
+            (k - k.round()).abs() < 1e-6 && (1.0..=52429.0).contains(&k.round()),
+            "{xi}"
+        );
+        // About 1.4 ms (10 ms in a debug build) against 72 s at u32::MAX.
+        assert!(
+            start.elapsed() < Duration::from_secs(5),
+            "{search:?}: {:?}",
+            start.elapsed()
+        );
     }
 }
 

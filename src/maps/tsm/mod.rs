@@ -82,6 +82,13 @@ use search::Core;
 /// length is below this fraction of the trapezoid's height λ. 10⁻³: one texel in a 1024-line map.
 pub const SQUARE_TOLERANCE: f64 = 1e-3;
 
+/// The largest `map_lines` of [`TsmSearch::Iterative`] and [`TsmSearch::IterativeExhaustive`]:
+/// 65 536, four times the largest texture side of current GPUs (16 384 in Direct3D 12; Vulkan
+/// and OpenGL devices report at most 32 768). The exhaustive search evaluates about
+/// 0.8 × `map_lines` trapezoids, about 20 ns each: about 1 ms at this bound, where
+/// `u32::MAX` lines took 72 s for one frame.
+pub const MAX_MAP_LINES: u32 = 1 << 16;
+
 /// Which line the focus point is mapped to (Martin & Tan §6.2).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub enum TsmSearch {
@@ -100,13 +107,15 @@ pub enum TsmSearch {
     /// be missed (seen: ξ = −0.598 against the exhaustive 0.145 at 433 lines). tests/tsm.rs
     /// checks the bounds on random configurations.
     Iterative {
-        /// Number of texel lines of the shadow map along t (1024 or 2048 in the paper).
+        /// Number of texel lines of the shadow map along t (1024 or 2048 in the paper), in
+        /// [2, [`MAX_MAP_LINES`]].
         map_lines: u32,
     },
     /// The iterative variant exactly as printed: every line from the 80 % line up to the top.
-    /// About 0.8 × `map_lines` evaluations.
+    /// About 0.8 × `map_lines` evaluations, so `map_lines` is bounded by [`MAX_MAP_LINES`]
+    /// (about 1 ms of search there; `u32::MAX` lines would take over a minute per map).
     IterativeExhaustive {
-        /// Number of texel lines of the shadow map along t.
+        /// Number of texel lines of the shadow map along t, in [2, [`MAX_MAP_LINES`]].
         map_lines: u32,
     },
 }
@@ -158,7 +167,8 @@ pub struct TsmMap {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir`, `focus` (not in (0, f − n]), `xi` (not in
-/// (−1, 1)) or `map_lines` (< 2); [`Error::Degenerate`] when the trapezoid is near-degenerate.
+/// (−1, 1)) or `map_lines` (not in [2, [`MAX_MAP_LINES`]]); [`Error::Degenerate`] when the
+/// trapezoid is near-degenerate.
 ///
 /// ```
 /// # use shadow_aliasing::maps::tsm::{tsm, TsmOptions, TsmSearch};
@@ -230,10 +240,15 @@ pub(crate) fn validate(view: &ViewFrustum, opts: &TsmOptions) -> Result<()> {
             in_open("xi", xi, -1.0, 1.0)?;
         }
         TsmSearch::Iterative { map_lines } | TsmSearch::IterativeExhaustive { map_lines } => {
-            if map_lines < 2 {
+            if !(2..=MAX_MAP_LINES).contains(&map_lines) {
                 return Err(Error::invalid(
                     "map_lines",
-                    format!("must be at least 2 (got {map_lines})"),
+                    format!(
+                        "must lie in [2, {MAX_MAP_LINES}] (got {map_lines}): the number of the \
+                         shadow map's texel lines, searched one by one (beyond {MAX_MAP_LINES}, \
+                         four times the largest texture GPUs allow, the search costs more than a \
+                         millisecond per map and grows without bound)"
+                    ),
                 ));
             }
         }
