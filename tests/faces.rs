@@ -7,6 +7,7 @@ use common::faces::faces_with_axis;
 use common::{config, n_ln_alpha_theta_k};
 use glam::{DMat4, DVec3, DVec4};
 use proptest::prelude::*;
+use shadow_aliasing::analytic::partition::{scheme_storage_factor, Scheme, SchemeLight};
 use shadow_aliasing::maps::faces::{face_axis, face_partitions, visible_faces, Face, FaceWarp};
 use shadow_aliasing::maps::WarpRule;
 use shadow_aliasing::measure::{point_error, ShadowMap};
@@ -222,9 +223,15 @@ proptest! {
         let zpw = k as f64 * (r - 1.0) / (2.0 * t);
         let zp = k as f64 * r * (r - 1.0) / (2.0 * t);
         let l = DVec3::NEG_Y;
+        // The closed form, `scheme_storage_factor(FpZpW, Overhead, …)`, against the measured
+        // face partitions of both warping rules.
+        let eq19 = scheme_storage_factor(Scheme::FpZpW, SchemeLight::Overhead, &view, k).unwrap();
         for (rule, expect) in [(FaceWarp::Lispsm, zpw), (FaceWarp::Psm, zpw), (FaceWarp::Uniform, zp)] {
             let got = measured_sum(&view, l, rule, k);
             prop_assert!((got - expect).abs() <= 1e-9 * expect, "{rule:?}: {got} vs {expect}");
+            if !matches!(rule, FaceWarp::Uniform) {
+                prop_assert!((eq19 - got).abs() <= 1e-9 * got, "{rule:?}: Eq 19 {eq19} vs measured {got}");
+            }
         }
         // The scheme layer gives the same for every warping rule.
         let s = scheme(&view, l, WarpRule::Lispsm, Partition::Faces, k).unwrap();
@@ -630,31 +637,73 @@ fn behind_closed_form(alpha: f64, k: usize) -> f64 {
     2.0 * k as f64 * (alpha.powf(1.0 / k as f64) - 1.0) + 1.0
 }
 
+/// The worst case over the hemisphere that docs/partitions.md and docs/errata.md (Lloyd 2006 §5.3,
+/// #17) state, per (f/n, θ in degrees): the smallest and largest worst/behind ratio over
+/// k = 1..8 and half a unit of the last digit they print. At θ ≥ 30° the light behind (or in
+/// front) is the worst direction, 1.000×; at θ = 10° the ratio grows from 2.19 (k = 1) to 2.32
+/// (k = 8).
+const DOCUMENTED_WORST: [(f64, f64, f64, f64, f64); 5] = [
+    (1000.0, 30.0, 1.000, 1.000, 5e-4),
+    (100.0, 45.0, 1.000, 1.000, 5e-4),
+    (1e4, 60.0, 1.000, 1.000, 5e-4),
+    (1e6, 30.0, 1.000, 1.000, 5e-4),
+    (1000.0, 10.0, 2.19, 2.32, 5e-3),
+];
+
+/// docs/partitions.md's table, f/n = 1000, θ = 30°: the worst Σ S̄ (= the light-behind value) for
+/// k = 1..8, to the digits printed.
+const DOCUMENTED_WORST_1000_30: [f64; 8] =
+    [1999.0, 123.49, 55.00, 37.99, 30.81, 26.95, 24.56, 22.94];
+
+/// Searches the worst Σ S̄ of FP+ZP+W (`worst_case`, a `step_deg` grid and Nelder–Mead from its
+/// `starts` largest values) for k = 1..8 at each `(f/n, θ°, smallest, largest ratio, tolerance)`
+/// of `cases` and asserts the ratios to the light-behind value the docs print: the smallest and
+/// largest over k each to the tolerance, none above the largest, and at f/n = 1000, θ = 30° the
+/// worst S̄ of the table. Prints what it measures.
+fn assert_documented_worst(cases: &[(f64, f64, f64, f64, f64)], step_deg: f64, starts: usize) {
+    for &(alpha, deg, lo, hi, tol) in cases {
+        let view = ViewFrustum::new(1.0, alpha, deg.to_radians()).unwrap();
+        let (mut min, mut max) = (f64::INFINITY, 0.0f64);
+        for k in 1..=8 {
+            let behind = fp_storage(&view, k, 0.0, 0.0);
+            let expect = behind_closed_form(alpha, k);
+            assert!((behind - expect).abs() < 1e-9 * expect, "k = {k}: {behind}");
+            let (worst, el, az) = worst_case(&view, k, step_deg, starts);
+            let ratio = worst / behind;
+            let at = format!(
+                "f/n {alpha}, θ {deg}°, k {k}: worst {worst:.4} at ({:.3}°, {:.3}°), {ratio:.4} × behind {behind:.4}",
+                el.to_degrees(),
+                az.to_degrees()
+            );
+            println!("{at}");
+            assert!(ratio >= 1.0 - 1e-12 && ratio < hi + tol, "{at}");
+            if (alpha, deg) == (1000.0, 30.0) {
+                let table = DOCUMENTED_WORST_1000_30[k - 1];
+                assert!((worst - table).abs() < 0.005, "{at}: table {table}");
+            }
+            (min, max) = (min.min(ratio), max.max(ratio));
+        }
+        assert!(
+            (min - lo).abs() < tol && (max - hi).abs() < tol,
+            "f/n {alpha}, θ {deg}°: {min}–{max}"
+        );
+    }
+}
+
 /// Lloyd 2006 §5.3: "the worst case S̄ was within a factor of 2–3" of the light-behind value. With
 /// Lloyd's bisector alone a face seen nearly edge-on next to a side edge along the light (source
 /// at elevation 26.565°, azimuth 150°, f/n = 1000, θ = 30°) had its vertices on the near-parallel
 /// edge collapse onto the projected eye: d_n → 0, n′ → 0, and Σ S̄ reached 19072 (k = 1, 9.5×),
 /// 4835 (k = 4, 127×), 6241 (k = 8, 272×) in a sliver a 1° grid misses
 /// (`errata_s5_3_bisector_alone_worst_case`). With the face's depth axis among the
-/// candidates the worst case over the hemisphere, found by Nelder–Mead from a 5° grid, is the
-/// light-behind (or in-front) value itself for every k = 1..8.
+/// candidates the worst case over the hemisphere is the light-behind (or in-front) value itself,
+/// 1.000×, for every k = 1..8 at f/n = 1000, θ = 30° and the other wide fields of view of
+/// `DOCUMENTED_WORST`, and 2.19× to 2.32× at θ = 10°. Checked here with a reduced search (a 10°
+/// grid, Nelder–Mead from its two largest values; a few seconds unoptimised), which finds the
+/// same as `worst_case_within_3x_of_behind_exhaustive`.
 #[test]
 fn worst_case_within_3x_of_behind() {
-    let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians()).unwrap();
-    for k in 1..=8 {
-        let behind = fp_storage(&view, k, 0.0, 0.0);
-        let expect = behind_closed_form(1000.0, k);
-        assert!((behind - expect).abs() < 1e-9 * expect, "k = {k}: {behind}");
-        let (worst, el, az) = worst_case(&view, k, 5.0, 4);
-        let ratio = worst / behind;
-        assert!(
-            ratio <= 3.0,
-            "k = {k}: S̄ = {worst} at el {}°, az {}°: {ratio} × behind",
-            el.to_degrees(),
-            az.to_degrees()
-        );
-        assert!(ratio >= 1.0);
-    }
+    assert_documented_worst(&DOCUMENTED_WORST, 10.0, 2);
 }
 
 /// Σ S̄ of FP+ZP+W with Lloyd's bisector alone, the construction before the depth axis: every side
@@ -863,31 +912,27 @@ fn half_fov_near_a_right_angle_gives_maps_or_a_typed_error() {
 }
 
 /// The exhaustive variant of `worst_case_within_3x_of_behind`: a 2° grid and Nelder–Mead from
-/// its 12 largest values, k = 1..8, for several f/n and θ (≈ 1 min unoptimised). Measured
-/// worst/behind: 1.000 at θ ≥ 30° (the light behind or in front is the worst direction), 2.32 at
-/// θ = 10° (k = 8, elevation 36°, azimuth 47°).
+/// its 12 largest values, k = 1..8, for the same (f/n, θ) and documented ratios, and the narrower
+/// fields of view docs/partitions.md quotes (largest ratio over k): 2.75 at θ = 8°, 3.06 at 7°,
+/// 4.1 at 5°, 10 at 2° (f/n = 1000). About 75 s unoptimised; run it with
+/// `cargo test --locked --all-features --test faces worst_case_within_3x_of_behind_exhaustive -- --ignored --nocapture`.
 #[test]
-#[ignore = "exhaustive: about a minute in a debug build"]
+#[ignore = "exhaustive: about 75 s in a debug build"]
 fn worst_case_within_3x_of_behind_exhaustive() {
-    for (alpha, deg) in [
-        (1000.0, 30.0),
-        (100.0, 45.0),
-        (1e4, 60.0),
-        (1e6, 30.0),
-        (1000.0, 10.0),
+    assert_documented_worst(&DOCUMENTED_WORST, 2.0, 12);
+    // (θ°, the largest ratio as printed, half a unit of its last digit)
+    for (deg, hi, digit) in [
+        (8.0, 2.75, 0.005),
+        (7.0, 3.06, 0.005),
+        (5.0, 4.1, 0.05),
+        (2.0, 10.0, 0.5),
     ] {
-        let view = ViewFrustum::new(1.0, alpha, f64::to_radians(deg)).unwrap();
-        for k in 1..=8 {
-            let behind = behind_closed_form(alpha, k);
-            let (worst, el, az) = worst_case(&view, k, 2.0, 12);
-            let ratio = worst / behind;
-            println!(
-                "f/n {alpha}, θ {deg}°, k {k}: worst {worst:.4} at ({:.3}°, {:.3}°), {ratio:.3} × behind {behind:.4}",
-                el.to_degrees(),
-                az.to_degrees()
-            );
-            assert!(ratio <= 3.0);
-        }
+        let view = ViewFrustum::new(1.0, 1000.0, f64::to_radians(deg)).unwrap();
+        let max = (1..=8)
+            .map(|k| worst_case(&view, k, 2.0, 12).0 / behind_closed_form(1000.0, k))
+            .fold(0.0, f64::max);
+        println!("f/n 1000, θ {deg}°: largest worst/behind over k = 1..8 {max:.4}");
+        assert!((max - hi).abs() < digit, "θ {deg}°: {max} vs {hi}");
     }
 }
 

@@ -3,8 +3,7 @@
 //! general-n forms, and the errata.
 
 use proptest::prelude::*;
-use shadow_aliasing::analytic::eta::{eta_from_n_prime, n_prime_from_eta};
-use shadow_aliasing::analytic::overhead;
+use shadow_aliasing::analytic::eta::n_prime_from_eta;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
 use shadow_aliasing::analytic::subdivided::{
     allocate_texels, allocate_texels_whole, distribution_g, error_m, face_subdivision_planes,
@@ -12,7 +11,7 @@ use shadow_aliasing::analytic::subdivided::{
     subdivided_max_error, xi_from_n,
 };
 use shadow_aliasing::measure::twin::overhead_map;
-use shadow_aliasing::measure::{frustum_max, point_error};
+use shadow_aliasing::measure::{frustum_max, point_error, ShadowMap};
 use shadow_aliasing::{NPrime, Resolutions, ViewFrustum};
 mod common;
 use common::{any_f64, close, config, REL};
@@ -72,46 +71,68 @@ proptest! {
         prop_assert!(close(e9, m.max_mx, REL), "Eq 9 {e9} measured {}", m.max_mx);
     }
 
-    /// §3.2: ξ(n(ξ)) = ξ; ξ is the linear interpolation of max g that defines it (computed here
-    /// from g on the two planes); and 2005's ξ ↔ n is 2006's η ↔ n′ with n′ = n·near.
+    /// §3.2: ξ(n(ξ)) = ξ; and ξ is the linear interpolation of max g that defines it, with g
+    /// measured: g = m_z 2 tan θ/(α − 1) (Eq 2, unit resolutions) on the view axis at the near
+    /// plane (n ≥ n_opt, ξ ≤ 0) or the far plane (ξ > 0) of the frustum [near, near·α] warped
+    /// with n′ = n(ξ)·near, and g₀ = 1/√α (§3.1), for any near: n(ξ) scaled by near has the
+    /// measured ξ at every scale.
     #[test]
-    fn xi_roundtrip_definition_and_2006_agreement(a in alpha(), x in xi(), near in 0.01f64..10.0) {
+    fn xi_roundtrip_and_definition_from_the_measured_g(
+        a in alpha(), th in half_fov(), x in xi(), near in 0.01f64..10.0,
+    ) {
         let n = n_from_xi(a, x).unwrap();
         prop_assert!((xi_from_n(a, n).unwrap() - x).abs() < 1e-9);
-        let g0 = g_min(a).unwrap();
-        let def = if x <= 0.0 {
-            (g0 - distribution_g(a, n, 1.0).unwrap()) / (1.0 - g0)
-        } else {
-            (distribution_g(a, n, a).unwrap() - g0) / (1.0 - g0)
+        let np = match n.as_finite() {
+            Some(v) => NPrime::finite(v * near).unwrap(),
+            None => n,
         };
-        prop_assert!((def - x).abs() < 1e-9, "definition {def} vs ξ {x}");
-        let np = n_prime_from_eta(near, near * a, x).unwrap();
-        match (n.as_finite(), np.as_finite()) {
-            (None, None) => {}
-            (Some(a1), Some(b1)) => prop_assert!(close(a1 * near, b1, 1e-12)),
-            other => prop_assert!(false, "{other:?}"),
+        let v = ViewFrustum::new(near, near * a, th).unwrap();
+        let g_at = |map: &ShadowMap, z: f64| {
+            let m = point_error(&v, map, glam::DVec3::new(0.0, 0.0, -z), Resolutions::default());
+            m.unwrap().mz * 2.0 * th.tan() / (a - 1.0)
+        };
+        let map = overhead_map(&v, np).unwrap();
+        let g0 = 1.0 / a.sqrt();
+        let def = if x <= 0.0 {
+            (g0 - g_at(&map, v.near())) / (1.0 - g0)
+        } else {
+            (g_at(&map, v.far()) - g0) / (1.0 - g0)
+        };
+        prop_assert!((def - x).abs() < 1e-6, "definition from the measured g {def} vs ξ {x}");
+        // g₀ and n_opt (§3.1): warped with n′ = n_opt·near, the measured g is g₀ on both planes.
+        let opt = overhead_map(&v, NPrime::finite(n_opt(a).unwrap() * near).unwrap()).unwrap();
+        for z in [v.near(), v.far()] {
+            let g = g_at(&opt, z);
+            prop_assert!(close(g, g_min(a).unwrap(), REL) && close(g, g0, REL), "z = {z}: g {g}, g₀ {g0}");
         }
-        prop_assert!((eta_from_n_prime(near, near * a, np).unwrap() - x).abs() < 1e-9);
     }
 
-    /// Lloyd 2005 (near = 1, far = α) and Lloyd 2006 (general n) agree: Eq 8 vs 2006 Eq 7 and
-    /// Eq 2 vs 2006 Eq 8 at depth z·n with n′ = n_warp·n, Eq 5 vs 2006 Eq 10.
+    /// Lloyd 2005's normalised forms (near = 1, far = α) describe every frustum of ratio α:
+    /// Eq 8 (m_x) and Eq 2 (m, here m_z) at depth z equal the errors measured at depth z·near
+    /// (any x, y) on the frustum [near, near·α] warped with n′ = n·near, and Eq 5 its measured
+    /// maximum M_z over the vertices (= Lloyd 2006 Eq 7, 8, 10, whose own twins are in
+    /// tests/lloyd2006.rs).
     #[test]
-    fn lloyd2005_agrees_with_lloyd2006_at_any_near(
+    fn normalised_forms_equal_the_measured_warp_at_any_near(
         a in alpha(), th in half_fov(), x in xi(), near in 0.01f64..10.0, fz in 0.0f64..=1.0,
+        fx in -1.0f64..=1.0, fy in -1.0f64..=1.0,
     ) {
         let n = n_from_xi(a, x).unwrap();
         let np = match n.as_finite() { Some(v) => NPrime::finite(v * near).unwrap(), None => n };
         let z = (1.0 + fz * (a - 1.0)).min(a);
         let v = ViewFrustum::new(near, near * a, th).unwrap();
-        let r = Resolutions::default();
+        let map = overhead_map(&v, np).unwrap();
         let zz = (z * near).clamp(v.near(), v.far());
-        let m6 = overhead::mx(near, near * a, np, zz, r).unwrap();
-        prop_assert!(close(mx_normalised(a, n, z, 1.0, 1.0).unwrap(), m6, 1e-9));
-        let z6 = overhead::mz(&v, np, zz, r).unwrap();
-        prop_assert!(close(error_m(a, th, n, z, 1.0, 1.0).unwrap(), z6, 1e-9));
-        let mm = overhead::max_mz(&v, np, r).unwrap();
-        prop_assert!(close(max_error(a, th, x, 1.0, 1.0).unwrap(), mm, 1e-9));
+        let h = zz * v.tan_half_fov();
+        let r = Resolutions::default();
+        let m = point_error(&v, &map, glam::DVec3::new(fx * h, fy * h, -zz), r).unwrap();
+        let eq8 = mx_normalised(a, n, z, 1.0, 1.0).unwrap();
+        prop_assert!(close(eq8, m.mx, REL), "Eq 8 {eq8} measured {}", m.mx);
+        let eq2 = error_m(a, th, n, z, 1.0, 1.0).unwrap();
+        prop_assert!(close(eq2, m.mz, REL), "Eq 2 {eq2} measured {}", m.mz);
+        let eq5 = max_error(a, th, x, 1.0, 1.0).unwrap();
+        let measured = frustum_max(&v, &map).unwrap().max_mz;
+        prop_assert!(close(eq5, measured, REL), "Eq 5 {eq5} measured {measured}");
     }
 
     /// Eq 7: k self-similar face subdivisions, each warped with the same ξ over its own range

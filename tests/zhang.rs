@@ -114,21 +114,24 @@ proptest! {
         prop_assert!(rel(zhang_ep(&c.view, NPrime::UNWARPED, th, c.y, c.z).unwrap(), 2.0 * m.mz) < 1e-9);
     }
 
-    /// The factored form F·(z + G)^k/z (crate's F_q, F_p, G) equals the direct E^pers for θ > 0.
+    /// The Appendix's factored form F·(z + G)^k/z (crate's F_q, F_p, G) is the measured
+    /// perspective aliasing of the twin, E_q^pers = 2 m_x (k = 1) and E_p^pers = 2 m_z (k = 2),
+    /// for θ > 0; and z + G is the twin's warp-axis depth z_w over sin θ.
     #[test]
     fn f_and_g_factor_the_global_representation(c in configs()) {
         prop_assume!(c.theta > 1e-3);
         let th = LightAngle::new(c.theta).unwrap();
-        let l = NPrime::finite(c.lambda).unwrap();
+        let w = twin(&c.view, c.theta, NPrime::finite(c.lambda).unwrap());
+        let m = measured(&c.view, &w, c.x, c.y, c.z);
         let g = zhang_g(&c.view, c.lambda, th, c.y).unwrap();
         let fq = zhang_f_q(&c.view, c.lambda, th).unwrap();
         let fp = zhang_f_p(&c.view, c.lambda, th).unwrap();
         let zg = c.z + g;
-        let eq = zhang_eq(&c.view, l, th, c.y, c.z).unwrap();
-        let ep = zhang_ep(&c.view, l, th, c.y, c.z).unwrap();
-        // z + G = z_w / sin θ: compare with the twin's z_w to the same tolerance.
-        prop_assert!(rel(fq * zg / c.z, eq) < 1e-8, "{} vs {eq}", fq * zg / c.z);
-        prop_assert!(rel(fp * zg * zg / c.z, ep) < 1e-8, "{} vs {ep}", fp * zg * zg / c.z);
+        let zw_twin = DVec3::new(c.x, c.y, -c.z).dot(w.warp_axis) - w.z_min + c.lambda;
+        prop_assert!(rel(zg * c.theta.sin(), zw_twin) < 1e-9, "(z + G) sin θ {} vs twin z_w {zw_twin}", zg * c.theta.sin());
+        let (eq, ep) = (fq * zg / c.z, fp * zg * zg / c.z);
+        prop_assert!(rel(eq, 2.0 * m.mx) < 1e-8, "F_q (z + G)/z {eq} vs measured {}", 2.0 * m.mx);
+        prop_assert!(rel(ep, 2.0 * m.mz) < 1e-8, "F_p (z + G)²/z {ep} vs measured {}", 2.0 * m.mz);
     }
 
     /// Eq 10, 11 and the Appendix: E^pers × |E^proj| equals Zhang's full aliasing functions
