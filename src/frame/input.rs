@@ -222,7 +222,8 @@ pub enum FrameScheme<'a> {
     /// light space, snapped to whole texels ([`crate::maps::cascades::stable_cascade`]); the
     /// depth range from its focus body and the casters; no map for a slice whose body is empty.
     /// Since s, t do not come from B, a flat B seen edge-on by the light still gets its map
-    /// ([`Focus::Flat`], where the other schemes say [`Focus::EdgeOn`]).
+    /// ([`Focus::Flat`](crate::frame::Focus::Flat), where the other schemes say
+    /// [`Focus::EdgeOn`](crate::frame::Focus::EdgeOn)).
     Stable(CascadeSplits<'a>),
     /// One trapezoidal map (Martin & Tan) of the focus body: the view-axis light space, B's
     /// vertices as E, the focus region B cut `focus × (f_B − n_B)/(f − n)` beyond B's nearest depth
@@ -240,7 +241,7 @@ pub enum FrameScheme<'a> {
     Faces {
         /// The face rule.
         rule: FaceWarp,
-        /// Z-partitions per side face, 1..=[`MAX_FACE_K`] (4k + 1 maps fit the frame's slots).
+        /// Z-partitions per side face, 1..=[`MAX_FACE_K`](crate::frame::MAX_FACE_K) (4k + 1 maps fit the frame's slots).
         k: usize,
     },
 }

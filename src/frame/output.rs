@@ -119,7 +119,7 @@ pub struct Frame {
 }
 
 impl Default for Frame {
-    /// An empty frame, for [`frame_into`] to fill.
+    /// An empty frame, for [`frame_into`](crate::frame::frame_into) to fill.
     fn default() -> Self {
         Self {
             maps: [None; MAX_PARTITIONS],
