@@ -10,7 +10,7 @@ use crate::error::{fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::{LightDir, NPrime};
 use crate::maps::cascades::{bounding_sphere, splits_between};
 use crate::maps::lightspace::{light_space_unit, LightSpace};
-use crate::maps::warp::{verify_clip, FrustumInLight};
+use crate::maps::fit::{verify_clip, FrustumInLight};
 use crate::maps::ShadowMatrix;
 use glam::{DMat4, DVec3, DVec4};
 

@@ -5,7 +5,7 @@ use super::input::{Aabb, Bound};
 use super::{Ctx, MAX_BODY_VERTICES};
 use crate::error::{Error, Result};
 use crate::geom::polytope::ConvexBody;
-use crate::maps::warp::FrustumInLight;
+use crate::maps::fit::FrustumInLight;
 use crate::numeric::fmax;
 use glam::{DVec2, DVec3, DVec4};
 

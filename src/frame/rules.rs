@@ -6,11 +6,10 @@ use super::output::Focus;
 use super::{Built, Ctx, Slice};
 use crate::error::Result;
 use crate::frustum::{LightDir, NPrime};
+use crate::maps::fit::fit_body;
 use crate::maps::lightspace::light_space_unit;
 use crate::maps::tsm::{tsm_on_points, validate as validate_tsm};
-use crate::maps::warp::{
-    fit_body, focus_in_range, rule_axis, rule_n_prime_on, warp_prepared, PreparedLight,
-};
+use crate::maps::warp::{focus_in_range, rule_axis, rule_n_prime_on, warp_prepared, PreparedLight};
 use crate::maps::{ShadowMatrix, TsmOptions, WarpRule};
 use glam::{DVec3, DVec4};
 

@@ -16,8 +16,8 @@ pub use crate::analytic::tilted::Falloff;
 pub use crate::maps::fit::fit_warp;
 // The fit's pieces, at the paths the crate's other modules use.
 pub(crate) use crate::maps::fit::{
-    clip_at_slices, fit_body, light_corners, sin_gamma, slices, verify_clip, warp_matrix,
-    warp_rows, FrustumInLight, Ranges,
+    clip_at_slices, light_corners, sin_gamma, slices, verify_clip, warp_matrix, warp_rows,
+    FrustumInLight, Ranges,
 };
 
 /// How the warp parameter n′ is chosen. Each rule names its source; the engines' rules reproduce
