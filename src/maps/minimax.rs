@@ -42,7 +42,7 @@
 
 use crate::error::{finite_result, fmt_num, Error, Result};
 use crate::frustum::{NPrime, ViewFrustum};
-use crate::maps::warp::FrustumInLight;
+use crate::maps::fit::FrustumInLight;
 use glam::DVec3;
 
 /// A chosen n′ and the frustum maximum it achieves.

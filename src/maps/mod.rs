@@ -28,6 +28,7 @@
 pub mod atlas;
 pub mod cascades;
 pub mod faces;
+pub mod fit;
 pub mod lightspace;
 pub mod matrix;
 pub mod minimax;

@@ -1,0 +1,230 @@
+//! Cascades: the slices of the visible depth range (the crate's split schemes, distances,
+//! fractions, Bevy's splits) and the stable cascade of a slice.
+
+use super::body::depth_extent;
+use super::input::CascadeSplits;
+use super::output::Focus;
+use super::{Built, Ctx, Slice, MAX_BODY_VERTICES};
+use crate::analytic::partition::{z_splits, Splits, MAX_PARTITIONS};
+use crate::error::{fmt_num, in_closed, positive, Error, Result};
+use crate::frustum::{LightDir, NPrime};
+use crate::maps::cascades::{bounding_sphere, splits_between};
+use crate::maps::lightspace::{light_space_unit, LightSpace};
+use crate::maps::fit::{verify_clip, FrustumInLight};
+use crate::maps::ShadowMatrix;
+use glam::{DMat4, DVec3, DVec4};
+
+fn overlap_ok(o: f64) -> Result<f64> {
+    let o = in_closed("overlap", o, 0.0, 1.0)?;
+    if o >= 1.0 {
+        return Err(Error::invalid("overlap", "must be smaller than 1 (got 1)"));
+    }
+    Ok(o)
+}
+
+/// The cascades' slices over the visible range `[zn, zf]`; returns k.
+pub(super) fn cascade_slices(
+    splits: CascadeSplits<'_>,
+    zn: f64,
+    zf: f64,
+    out: &mut [Slice; MAX_PARTITIONS],
+) -> Result<usize> {
+    let crate_overlap =
+        |s: &Splits, overlap: f64, out: &mut [Slice; MAX_PARTITIONS]| -> Result<usize> {
+            let o = overlap_ok(overlap)?;
+            let planes = s.planes();
+            let (first, last) = (planes[0], planes[planes.len() - 1]);
+            let slack = 1e-12 * zf;
+            if first < zn - slack || last > zf + slack {
+                return Err(Error::invalid(
+                    "splits",
+                    format!(
+                        "must lie within the visible depth range [{}, {}] (got [{}, {}])",
+                        fmt_num(zn),
+                        fmt_num(zf),
+                        fmt_num(first),
+                        fmt_num(last)
+                    ),
+                ));
+            }
+            let k = s.k();
+            for (i, slot) in out.iter_mut().enumerate().take(k) {
+                let (a, b) = s.range(i);
+                let end = if i + 1 < k {
+                    (b + o * (b - a)).min(last)
+                } else {
+                    b
+                };
+                *slot = Slice {
+                    cover: (a.max(zn), end.min(zf)),
+                    split: (a, b),
+                    blend: (b, end),
+                };
+            }
+            Ok(k)
+        };
+    match splits {
+        CascadeSplits::Scheme { scheme, k, overlap } => {
+            let s = z_splits(zn, zf, k, scheme)?;
+            crate_overlap(&s, overlap, out)
+        }
+        CascadeSplits::Distances { planes, overlap } => {
+            let s = Splits::from_planes(planes)?;
+            crate_overlap(&s, overlap, out)
+        }
+        CascadeSplits::Fractions { fractions, overlap } => {
+            let s = splits_between(zn, zf, fractions)?;
+            crate_overlap(&s, overlap, out)
+        }
+        CascadeSplits::Bevy {
+            k,
+            minimum_distance,
+            maximum_distance,
+            first_far_bound,
+            overlap_proportion,
+        } => {
+            if k == 0 || k > MAX_PARTITIONS {
+                return Err(Error::invalid(
+                    "k",
+                    format!("must be in 1..={MAX_PARTITIONS} (got {k})"),
+                ));
+            }
+            let o = overlap_ok(overlap_proportion)?;
+            let max_d = positive("maximum_distance", maximum_distance)?;
+            let min_d = in_closed("minimum_distance", minimum_distance, 0.0, max_d)?;
+            let first = if k > 1 {
+                let f = positive("first_far_bound", first_far_bound)?;
+                if !(f > min_d && f < max_d) {
+                    return Err(Error::invalid(
+                        "first_far_bound",
+                        format!(
+                            "must lie between minimum_distance and maximum_distance (got {})",
+                            fmt_num(f)
+                        ),
+                    ));
+                }
+                f
+            } else {
+                max_d
+            };
+            // Bevy's `calculate_cascade_bounds`, in f64.
+            let base = if k > 1 {
+                (max_d / first).powf(1.0 / (k - 1) as f64)
+            } else {
+                1.0
+            };
+            let mut prev_far = 0.0;
+            let mut n = 0;
+            for i in 0..k {
+                let far_b = if k == 1 {
+                    max_d
+                } else {
+                    first * base.powi(i as i32)
+                };
+                let near_b = if i == 0 { min_d } else { (1.0 - o) * prev_far };
+                let sel_near = if i == 0 { min_d } else { prev_far };
+                let blend = if i + 1 < k {
+                    ((1.0 - o) * far_b, far_b)
+                } else {
+                    (far_b, far_b)
+                };
+                prev_far = far_b;
+                let (a, b) = (near_b.max(zn), far_b.min(zf));
+                if a >= b {
+                    // Wholly outside the visible range: nothing to map there.
+                    continue;
+                }
+                if sel_near.max(zn) >= b {
+                    // The previous cascade already reaches the visible far plane: the shader never
+                    // selects this one (nor any later), and the previous has nothing to blend into.
+                    if n > 0 {
+                        let end = out[n - 1].split.1;
+                        out[n - 1].blend = (end, end);
+                    }
+                    break;
+                }
+                out[n] = Slice {
+                    cover: (a, b),
+                    split: (sel_near.max(zn), b),
+                    blend: (blend.0.clamp(zn, zf), blend.1.clamp(zn, zf)),
+                };
+                n += 1;
+            }
+            if n == 0 {
+                return Err(Error::invalid(
+                    "minimum_distance",
+                    "Bevy's cascades do not meet the visible depth range",
+                ));
+            }
+            Ok(n)
+        }
+    }
+}
+
+impl Ctx<'_, '_> {
+    /// A stable cascade with its depth range from B and the casters.
+    pub(super) fn stable_map(&self, s: &Slice) -> Result<Built> {
+        let body = self.body(s.cover.0, s.cover.1, &[])?;
+        if body.focus == Focus::Empty || body.n == 0 {
+            return Ok(Built::None(Focus::Empty));
+        }
+        let pts = &body.v[..body.n];
+        let cam = &self.input.camera;
+        let res = f64::from(self.input.map_resolution);
+        let (c, r) = bounding_sphere(self.view, s.cover.0, s.cover.1)?;
+        // World-fixed light space (y toward the light, z the world −Z projected).
+        let ls_w = light_space_unit(LightDir::from_unit_unchecked(self.lw), DVec3::NEG_Z);
+        let half = r * res / (res - 2.0);
+        let texel = 2.0 * half / res;
+        let cw = cam.eye_to_world.transform_point3(DVec3::new(0.0, 0.0, -c));
+        let q = ls_w.to_light(cw);
+        let sx = (q.x / texel).round() * texel;
+        let sz = (q.z / texel).round() * texel;
+        // The light space in eye coordinates (rotation only; offsets cancel in the fit).
+        let rot = |v: DVec3| cam.world_to_eye.transform_vector3(v);
+        let ls_e = LightSpace {
+            x: rot(ls_w.x),
+            y: rot(ls_w.y),
+            z: rot(ls_w.z),
+        };
+        let fl = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, self.l, ls_e)
+            .ok_or_else(|| Error::Degenerate("the focus body has no vertices".into()))?;
+        let (mut ylo, mut yhi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for q in &fl.q {
+            ylo = ylo.min(q.y);
+            yhi = yhi.max(q.y);
+        }
+        if let Some(p) = self.caster_extreme(&fl, body.n, |_| 1.0, 0.0)? {
+            yhi = yhi.max(ls_e.y.dot(p));
+        }
+        let v_m = 0.5 * (ylo + yhi);
+        let v_h = (0.5 * (yhi - ylo)).max(1e-9 * self.scale());
+        // s, t as `stable_cascade`: world light space, the snapped centre, half-width `half`.
+        let ortho = DMat4::from_cols(
+            DVec4::new(1.0 / half, 0.0, 0.0, 0.0),
+            DVec4::new(0.0, 0.0, 0.0, 0.0),
+            DVec4::new(0.0, 1.0 / half, 0.0, 0.0),
+            DVec4::new(-sx / half, -sz / half, 0.0, 1.0),
+        );
+        let mut m = (ortho * ls_w.rotation() * cam.eye_to_world).transpose();
+        // Depth from the eye-space light y over B and the casters, −1 nearest the light.
+        m.z_axis = (-ls_e.y / v_h).extend(v_m / v_h);
+        let matrix = m.transpose();
+        // The world-fixed square is built from world positions: far from the world origin (or
+        // near f64's range) their rounding, amplified by 1/half, can leave B outside the map.
+        if !matrix.is_finite() {
+            return Err(Error::Degenerate(
+                "the stable cascade's matrix overflows f64 for this frustum".into(),
+            ));
+        }
+        verify_clip(&matrix, pts.iter())?;
+        let shadow = ShadowMatrix::new(
+            matrix,
+            LightDir::from_unit_unchecked(self.l),
+            NPrime::UNWARPED,
+            depth_extent(pts).0,
+            depth_extent(pts).1,
+        );
+        self.finish(shadow, pts, s, body.focus).map(Built::Map)
+    }
+}

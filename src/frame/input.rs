@@ -1,0 +1,403 @@
+//! The frame's inputs: the camera, the scene's bounds, the scheme, and their validation.
+
+use super::MAX_BOUND_PLANES;
+use crate::analytic::partition::SplitScheme;
+use crate::error::{fmt_num, Error, Result};
+use crate::frustum::ViewFrustum;
+use crate::maps::faces::FaceWarp;
+use crate::maps::{TsmOptions, WarpRule};
+use glam::{DMat3, DMat4, DVec3, DVec4, Mat4};
+
+/// A world-space axis-aligned box.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Aabb {
+    /// Smallest corner.
+    pub min: DVec3,
+    /// Largest corner.
+    pub max: DVec3,
+}
+
+impl Aabb {
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `min` when a coordinate is not finite or min > max.
+    pub fn new(min: DVec3, max: DVec3) -> Result<Self> {
+        let b = Self { min, max };
+        b.check()?;
+        Ok(b)
+    }
+
+    pub(super) fn check(&self) -> Result<()> {
+        if !self.min.is_finite() || !self.max.is_finite() || self.min.cmpgt(self.max).any() {
+            return Err(Error::invalid(
+                "min",
+                format!(
+                    "must be finite and not above max (got min={}, max={})",
+                    self.min, self.max
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The eight corners in the order of [`ViewFrustum::corners`] (min z face first).
+    pub(super) fn corners(&self) -> [DVec3; 8] {
+        let (a, b) = (self.min, self.max);
+        let mut c = [DVec3::ZERO; 8];
+        for (k, z) in [a.z, b.z].into_iter().enumerate() {
+            c[4 * k] = DVec3::new(a.x, a.y, z);
+            c[4 * k + 1] = DVec3::new(b.x, a.y, z);
+            c[4 * k + 2] = DVec3::new(b.x, b.y, z);
+            c[4 * k + 3] = DVec3::new(a.x, b.y, z);
+        }
+        c
+    }
+}
+
+/// A world-space bound of receivers or casters.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Bound<'a> {
+    /// No bound: receivers everywhere (B is the frustum); for casters, none known beyond B (the
+    /// depth range is B's, as the frustum-only builders fit it; nearer casters need depth clamp).
+    #[default]
+    Unbounded,
+    /// One or many boxes. Receivers: their merged bounding box (as OGRE). Casters: each box.
+    Boxes(&'a [Aabb]),
+    /// A bounded convex polytope, at most [`MAX_BOUND_PLANES`] world planes `(a, b, c, d)`,
+    /// inside where `a x + b y + c z + d ≤ 0`.
+    Polytope(&'a [DVec4]),
+}
+
+/// The camera: world → eye (rigid) and its projection.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Camera {
+    pub(super) world_to_eye: DMat4,
+    pub(super) eye_to_world: DMat4,
+    pub(super) view: ViewFrustum,
+}
+
+impl Camera {
+    /// From the world → eye matrix (glam `dcamera::rh::view::look_at_mat4`: right-handed, looking
+    /// down −Z) and the projection's near, far, half vertical field of view and aspect.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `world_to_eye` (not finite, or not a proper rigid
+    /// transform: its 3 × 3 part a rotation to 10⁻⁶, no reflection, the bottom row (0, 0, 0, 1)
+    /// to 10⁻¹²), or as [`ViewFrustum::with_aspect`].
+    pub fn new(
+        world_to_eye: DMat4,
+        near: f64,
+        far: f64,
+        half_fov: f64,
+        aspect: f64,
+    ) -> Result<Self> {
+        let view = ViewFrustum::with_aspect(near, far, half_fov, aspect)?;
+        if !world_to_eye.is_finite() {
+            return Err(Error::invalid("world_to_eye", "must have finite entries"));
+        }
+        let r = DMat3::from_mat4(world_to_eye);
+        let off = (r * r.transpose() - DMat3::IDENTITY).to_cols_array();
+        let bottom = world_to_eye.row(3);
+        if off.iter().any(|v| v.abs() > 1e-6)
+            || (bottom - DVec4::W).abs().max_element() > 1e-12
+            || r.determinant() <= 0.0
+        {
+            return Err(Error::invalid(
+                "world_to_eye",
+                "must be a rigid transform (rotation and translation)",
+            ));
+        }
+        Ok(Self {
+            world_to_eye,
+            eye_to_world: world_to_eye.inverse(),
+            view,
+        })
+    }
+
+    /// As [`Camera::new`] for a single-precision view matrix.
+    ///
+    /// # Errors
+    /// As [`Camera::new`].
+    pub fn from_mat4(
+        world_to_eye: Mat4,
+        near: f64,
+        far: f64,
+        half_fov: f64,
+        aspect: f64,
+    ) -> Result<Self> {
+        Self::new(world_to_eye.as_dmat4(), near, far, half_fov, aspect)
+    }
+
+    /// The camera's view frustum.
+    #[must_use]
+    pub fn view(&self) -> &ViewFrustum {
+        &self.view
+    }
+
+    /// World → eye.
+    #[must_use]
+    pub fn world_to_eye(&self) -> DMat4 {
+        self.world_to_eye
+    }
+}
+
+/// Where a warp's centre of projection lies across the warp axis (module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum WarpCentre {
+    /// As [`crate::maps::warp()`] builds each rule: on B's vertex nearest the camera for
+    /// [`WarpRule::Ogre`] and [`WarpRule::OgreOrtho`], on the eye's light-space line otherwise.
+    #[default]
+    Rule,
+    /// On the eye's own light-space line (`fit_warp`, Filament).
+    Eye,
+    /// On the light-space x and y of B's vertex nearest the camera (ties: the largest eye-space
+    /// x + y, the top right of OGRE's `ConvexBody::define` order), as the LiSPSM reference code.
+    /// OGRE (`OgreShadowCameraSetupLiSPSM.cpp`) takes the camera-nearest point of V ∩ S, the view
+    /// frustum ∩ the scene's box, which is B's vertex when the receivers' bound is the scene's.
+    NearestVertex,
+}
+
+/// How the view's depth range is split into cascades.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CascadeSplits<'a> {
+    /// k cascades of a [`SplitScheme`] over the visible depth range; each partition but the last
+    /// reaches `overlap` of its own depth into the next (the crate's overlap,
+    /// [`crate::maps::cascades`]).
+    Scheme {
+        /// The split scheme.
+        scheme: SplitScheme,
+        /// Number of cascades, 1..=16.
+        k: usize,
+        /// Overlap fraction in [0, 1).
+        overlap: f64,
+    },
+    /// Absolute split distances: every plane from the first cascade's near to the last's far,
+    /// strictly increasing, inside the visible depth range.
+    Distances {
+        /// The planes z₀ < z₁ < … < z_k.
+        planes: &'a [f64],
+        /// Overlap fraction in [0, 1).
+        overlap: f64,
+    },
+    /// Fractions 0 < φ₁ < … < φ_{k−1} < 1 of the visible depth range.
+    Fractions {
+        /// The interior fractions.
+        fractions: &'a [f64],
+        /// Overlap fraction in [0, 1).
+        overlap: f64,
+    },
+    /// Bevy's `CascadeShadowConfigBuilder`: far bounds `first_far_bound · b^i` with
+    /// `b = (maximum_distance/first_far_bound)^{1/(k−1)}` (`calculate_cascade_bounds`), the first
+    /// cascade starting at `minimum_distance`, cascade i > 0 at `(1 − overlap_proportion)` times
+    /// the previous far bound (the band cross-faded with the previous cascade), as
+    /// `bevy_light/src/cascade.rs` computes them. Distances are clamped to the visible depth
+    /// range (the crate's addition: Bevy does not clamp); k may reach 16 (Bevy renders at most
+    /// `MAX_CASCADES_PER_LIGHT` = 4).
+    Bevy {
+        /// Number of cascades, 1..=16.
+        k: usize,
+        /// Near bound of the first cascade.
+        minimum_distance: f64,
+        /// Far bound of the last cascade.
+        maximum_distance: f64,
+        /// Far bound of the first cascade (ignored for k = 1).
+        first_far_bound: f64,
+        /// Overlap proportion in [0, 1).
+        overlap_proportion: f64,
+    },
+}
+
+/// What the frame builds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum FrameScheme<'a> {
+    /// One map with any warp rule.
+    Single(WarpRule),
+    /// Cascades, each fitted with the rule to its own focus body.
+    Cascades {
+        /// The splits.
+        splits: CascadeSplits<'a>,
+        /// The rule of every cascade.
+        rule: WarpRule,
+    },
+    /// Stable cascades: each cascade's s, t from its slice's bounding sphere in a world-fixed
+    /// light space, snapped to whole texels ([`crate::maps::cascades::stable_cascade`]); the
+    /// depth range from its focus body and the casters; no map for a slice whose body is empty.
+    /// Since s, t do not come from B, a flat B seen edge-on by the light still gets its map
+    /// ([`Focus::Flat`](crate::frame::Focus::Flat), where the other schemes say
+    /// [`Focus::EdgeOn`](crate::frame::Focus::EdgeOn)).
+    Stable(CascadeSplits<'a>),
+    /// One trapezoidal map (Martin & Tan) of the focus body: the view-axis light space, B's
+    /// vertices as E, the focus region B cut `focus × (f_B − n_B)/(f − n)` beyond B's nearest depth
+    /// (the focus distance scaled to B's depth, as [`crate::maps::tsm::tsm_general`] does), the
+    /// depth row refitted to B and the casters.
+    Tsm(TsmOptions),
+    /// Face partitions (Lloyd 2006 §5.1, Lloyd 2005 §4; [`crate::maps::faces`]) of the visible
+    /// frustum, each side face cut at k self-similar depths, the near face whole: one map per face
+    /// part, fitted to its own focus body B_i = B ∩ the prism of the face part along the light
+    /// (the points of B whose light ray passes through that part of the face). The face rule's n′
+    /// comes from B_i's extent along the face's warp axis (the face's own extent when B is the
+    /// frustum), each part keeps the better of its two candidate axes, the depth covers B along
+    /// the light and every caster that can shadow B_i, and the error is measured over B_i's
+    /// vertices. A part whose B_i is empty gets no map.
+    Faces {
+        /// The face rule.
+        rule: FaceWarp,
+        /// Z-partitions per side face, 1..=[`MAX_FACE_K`](crate::frame::MAX_FACE_K) (4k + 1 maps fit the frame's slots).
+        k: usize,
+    },
+}
+
+/// Everything the frame needs (see the module docs). Build with [`FrameInput::new`] and the
+/// setters.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrameInput<'a> {
+    /// The camera.
+    pub camera: Camera,
+    /// The direction light travels, world space.
+    pub light_dir_world: DVec3,
+    /// The receivers' bound.
+    pub receivers: Bound<'a>,
+    /// The casters' bound.
+    pub casters: Bound<'a>,
+    /// The visible receivers' depth range `[z_min, z_max]` (a depth-buffer min/max reduction).
+    pub depth_range: Option<(f64, f64)>,
+    /// The map's texels per side.
+    pub map_resolution: u32,
+    /// The image's height in pixels (the predicted error is in these pixels).
+    pub image_height: u32,
+    /// The device clamps depth: casters are not needed in the depth range.
+    pub depth_clamp: bool,
+    /// The scheme.
+    pub scheme: FrameScheme<'a>,
+    /// Where warps put their centre of projection.
+    pub centre: WarpCentre,
+}
+
+impl<'a> FrameInput<'a> {
+    /// A single minimax map of the whole frustum, no scene bounds, no depth clamp.
+    #[must_use]
+    pub fn new(
+        camera: Camera,
+        light_dir_world: DVec3,
+        map_resolution: u32,
+        image_height: u32,
+    ) -> Self {
+        Self {
+            camera,
+            light_dir_world,
+            receivers: Bound::Unbounded,
+            casters: Bound::Unbounded,
+            depth_range: None,
+            map_resolution,
+            image_height,
+            depth_clamp: false,
+            scheme: FrameScheme::Single(WarpRule::Minimax),
+            centre: WarpCentre::Rule,
+        }
+    }
+    /// Sets the receivers' bound.
+    #[must_use]
+    pub fn receivers(mut self, b: Bound<'a>) -> Self {
+        self.receivers = b;
+        self
+    }
+    /// Sets the casters' bound.
+    #[must_use]
+    pub fn casters(mut self, b: Bound<'a>) -> Self {
+        self.casters = b;
+        self
+    }
+    /// Sets the visible depth range.
+    #[must_use]
+    pub fn depth_range(mut self, z_min: f64, z_max: f64) -> Self {
+        self.depth_range = Some((z_min, z_max));
+        self
+    }
+    /// Says whether the device clamps depth.
+    #[must_use]
+    pub fn depth_clamp(mut self, on: bool) -> Self {
+        self.depth_clamp = on;
+        self
+    }
+    /// Sets the scheme.
+    #[must_use]
+    pub fn scheme(mut self, s: FrameScheme<'a>) -> Self {
+        self.scheme = s;
+        self
+    }
+    /// Sets the warp centre.
+    #[must_use]
+    pub fn centre(mut self, c: WarpCentre) -> Self {
+        self.centre = c;
+        self
+    }
+}
+
+/// The visible depth range: the camera's, cut to `[z_min, z_max]`.
+pub(super) fn visible_range(view: &ViewFrustum, range: Option<(f64, f64)>) -> Result<(f64, f64)> {
+    let (n, f) = (view.near(), view.far());
+    let Some((a, b)) = range else {
+        return Ok((n, f));
+    };
+    if !(a.is_finite() && b.is_finite() && a < b) {
+        return Err(Error::invalid(
+            "depth_range",
+            format!(
+                "must be finite with z_min < z_max (got [{}, {}])",
+                fmt_num(a),
+                fmt_num(b)
+            ),
+        ));
+    }
+    let (a, b) = (a.max(n), b.min(f));
+    if a >= b {
+        return Err(Error::invalid(
+            "depth_range",
+            format!(
+                "must overlap the camera's [near, far] = [{}, {}] in a range",
+                fmt_num(n),
+                fmt_num(f)
+            ),
+        ));
+    }
+    Ok((a, b))
+}
+
+pub(super) fn bad_box(name: &'static str, b: &Aabb) -> Error {
+    Error::invalid(
+        name,
+        format!(
+            "boxes must be finite with min not above max (got min={}, max={})",
+            b.min, b.max
+        ),
+    )
+}
+
+pub(super) fn validate_casters(b: &Bound<'_>) -> Result<()> {
+    match b {
+        Bound::Unbounded => Ok(()),
+        Bound::Boxes(boxes) => {
+            for bx in *boxes {
+                bx.check().map_err(|_| bad_box("casters", bx))?;
+            }
+            Ok(())
+        }
+        Bound::Polytope(planes) => {
+            if planes.is_empty() || planes.len() > MAX_BOUND_PLANES {
+                return Err(Error::invalid(
+                    "casters",
+                    format!("a polytope must have 1 to {MAX_BOUND_PLANES} planes"),
+                ));
+            }
+            if planes
+                .iter()
+                .any(|p| !p.is_finite() || p.truncate().length() <= 0.0)
+            {
+                return Err(Error::invalid(
+                    "casters",
+                    "planes must be finite with a non-zero normal",
+                ));
+            }
+            Ok(())
+        }
+    }
+}

@@ -1,0 +1,329 @@
+//! The frame's outputs: a frame's maps and their focus, and how a built map is finished (its
+//! error, texel size and world → clip matrices).
+
+use super::{Built, Ctx, Slice, MAX_BODY_VERTICES};
+use crate::analytic::partition::MAX_PARTITIONS;
+use crate::error::{Error, Result};
+use crate::maps::faces::Face;
+use crate::maps::matrix::zero_to_one;
+use crate::maps::{ClipDepth, ShadowMatrix};
+use crate::measure::vertex::vertex_max;
+use crate::measure::FrustumError;
+use glam::{DMat4, DVec3, Mat4};
+
+/// What the focus body is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Focus {
+    /// A body with volume: maps built.
+    #[default]
+    Body,
+    /// The scene is out of view (B has no volume, touching included): no map needed.
+    Empty,
+    /// The receivers' bound is flat (no thicker than 10⁻⁹ of the frustum's size: a box with
+    /// min = max in one coordinate or nearly, or a polytope with two opposite planes at the same
+    /// place) and B is a polygon: mapped.
+    Flat,
+    /// B has no area as the light sees it (no extent across or along the warp axis, or its
+    /// footprint a line in any direction: an edge-on flat receiver): no map can be fitted to it
+    /// and none is needed (stable cascades, whose square does not depend on B, map it anyway).
+    EdgeOn,
+    /// B has no extent in eye depth (f_B = n_B, a wall facing the camera): mapped with n′ = ∞,
+    /// since every warp rule needs a depth range. Single maps and cascades report it; TSM,
+    /// stable cascades and face partitions fit such a B with their own construction and report
+    /// it as `Body` or `Flat`.
+    ZeroDepth,
+}
+
+/// The light's relation to the camera and the world.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum LightCase {
+    /// Nothing special.
+    #[default]
+    General,
+    /// The light travels straight down the world's −Y (no world-up vector is used: the warp axis is
+    /// the view direction projected, so nothing degenerates).
+    SunStraightDown,
+    /// The light is parallel to the view direction (sin γ < 10⁻⁶): every rule's map is (close to)
+    /// the uniform map, in the fallback light space of [`crate::maps::lightspace`].
+    ParallelToView,
+}
+
+/// One map of a frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrameMap {
+    /// Eye → light clip (OpenGL depth), with n′ and the eye-depth range of its body.
+    pub shadow: ShadowMatrix,
+    /// World → light clip, OpenGL depth [−1, 1].
+    pub world_to_clip: DMat4,
+    /// The view-depth range where the shader selects this map.
+    pub split: (f64, f64),
+    /// The band at the far end of `split` (or beyond it) that this map and the next both cover,
+    /// to cross-fade over; `(split.1, split.1)` when there is none.
+    pub blend: (f64, f64),
+    /// The largest world-space texel edge over the body at the map's resolution (normal-offset
+    /// bias: Bevy's `texel_size`, Filament's `texelSizeWorldSpace`).
+    pub texel_world: f64,
+    /// M_x over the body's vertices (unit resolutions).
+    pub max_mx: f64,
+    /// M_z over the body's vertices (unit resolutions).
+    pub max_mz: f64,
+    /// S̄ = M_x M_z over the body.
+    pub storage_factor: f64,
+    /// The predicted maximum error in screen pixels, `max(M_x, M_z) · image_height /
+    /// map_resolution`.
+    pub max_error_pixels: f64,
+    /// What the body is (Body, Flat or ZeroDepth for a built map).
+    pub focus: Focus,
+    /// The frustum face of a face partition (the shader picks the map by the face its light ray
+    /// passes and, for a side face, by `split`, the depths of that part of the face); `None` for
+    /// every other scheme.
+    pub face: Option<Face>,
+    world_to_eye: DMat4,
+    body: [DVec3; MAX_BODY_VERTICES],
+    body_len: usize,
+}
+
+impl FrameMap {
+    /// World → light clip in the requested clip-depth convention.
+    #[must_use]
+    pub fn world_to_clip(&self, depth: ClipDepth) -> DMat4 {
+        match depth {
+            ClipDepth::NegOneToOne => self.world_to_clip,
+            ClipDepth::ZeroToOne => zero_to_one(&self.shadow.matrix()) * self.world_to_eye,
+        }
+    }
+    /// [`FrameMap::world_to_clip`] in single precision for the GPU.
+    #[must_use]
+    pub fn to_mat4(&self, depth: ClipDepth) -> Mat4 {
+        self.world_to_clip(depth).as_mat4()
+    }
+    /// The focus body's vertices, eye space.
+    #[must_use]
+    pub fn body(&self) -> &[DVec3] {
+        &self.body[..self.body_len]
+    }
+}
+
+/// A frame's maps, in a fixed array (no heap allocation).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Frame {
+    maps: [Option<FrameMap>; MAX_PARTITIONS],
+    /// Slot i of the scheme's partitions (None where its body is empty).
+    pub(super) k: usize,
+    pub(super) len: usize,
+    /// A partition without a map was edge-on to the light.
+    pub(super) none_edge_on: bool,
+    pub(super) focus: Focus,
+    pub(super) light: LightCase,
+    pub(super) light_dir_eye: DVec3,
+}
+
+impl Default for Frame {
+    /// An empty frame, for [`frame_into`](crate::frame::frame_into) to fill.
+    fn default() -> Self {
+        Self {
+            maps: [None; MAX_PARTITIONS],
+            k: 0,
+            len: 0,
+            none_edge_on: false,
+            focus: Focus::Empty,
+            light: LightCase::General,
+            light_dir_eye: DVec3::NEG_Y,
+        }
+    }
+}
+
+impl Frame {
+    /// The built maps: near to far for cascades (those whose body is empty are left out), in
+    /// face order (bottom, right, top, left, then the near or far face; each side face's parts near
+    /// to far) for face partitions.
+    pub fn maps(&self) -> FrameMaps<'_> {
+        FrameMaps(&self.maps[..self.k])
+    }
+    /// The partition slots, `None` where the slice's body is empty (no map needed).
+    #[must_use]
+    pub fn slots(&self) -> &[Option<FrameMap>] {
+        &self.maps[..self.k]
+    }
+    /// The number of maps built.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+    /// No map built: the scene is out of view (or edge-on to the light).
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+    /// The focus of the whole frame: the first built map's, or why none was built.
+    #[must_use]
+    pub fn focus(&self) -> Focus {
+        self.focus
+    }
+    /// The light's case.
+    #[must_use]
+    pub fn light_case(&self) -> LightCase {
+        self.light
+    }
+    /// The unit direction light travels, eye space.
+    #[must_use]
+    pub fn light_dir_eye(&self) -> DVec3 {
+        self.light_dir_eye
+    }
+    /// Σ S̄ over the built maps, `None` when none was built.
+    #[must_use]
+    pub fn storage_factor(&self) -> Option<f64> {
+        (self.len > 0).then(|| self.maps().iter().map(|m| m.storage_factor).sum())
+    }
+}
+
+/// The built maps of a [`Frame`], indexable and iterable.
+#[derive(Debug, Clone, Copy)]
+pub struct FrameMaps<'f>(&'f [Option<FrameMap>]);
+
+impl<'f> FrameMaps<'f> {
+    /// The built maps in order.
+    pub fn iter(&self) -> impl Iterator<Item = &'f FrameMap> {
+        self.0.iter().flatten()
+    }
+    /// The number of built maps.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.iter().count()
+    }
+    /// Whether no map was built.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+impl std::ops::Index<usize> for FrameMaps<'_> {
+    type Output = FrameMap;
+    fn index(&self, i: usize) -> &FrameMap {
+        self.0
+            .iter()
+            .flatten()
+            .nth(i)
+            .expect("map index out of range")
+    }
+}
+
+impl Frame {
+    /// Puts the next partition's outcome into slot `k` (`None` where no map is needed).
+    pub(super) fn push(&mut self, m: Built) {
+        self.maps[self.k] = match m {
+            Built::Map(m) => {
+                self.len += 1;
+                Some(m)
+            }
+            Built::None(f) => {
+                self.none_edge_on |= f == Focus::EdgeOn;
+                None
+            }
+        };
+        self.k += 1;
+    }
+
+    /// The frame's focus once every partition is in: the first built map's, or why none was
+    /// built (edge-on if any partition was, else empty).
+    pub(super) fn settle(&mut self) {
+        let first = self.maps().iter().next().map(|m| m.focus);
+        self.focus = match first {
+            Some(f) => f,
+            None if self.none_edge_on => Focus::EdgeOn,
+            None => Focus::Empty,
+        };
+    }
+}
+
+impl Ctx<'_, '_> {
+    pub(super) fn finish(
+        &self,
+        shadow: ShadowMatrix,
+        pts: &[DVec3],
+        s: &Slice,
+        focus: Focus,
+    ) -> Result<FrameMap> {
+        let err = vertex_max(&shadow.matrix(), self.l, self.view.tan_half_fov(), pts).ok_or_else(
+            || Error::Degenerate("the map is singular at a vertex of the focus body".into()),
+        )?;
+        self.finish_measured(shadow, err, pts, s, focus)
+    }
+
+    /// [`Ctx::finish`] with the map's error over `pts` already measured (by `vertex_max` with
+    /// the frame's light and tan θ, as `finish` would).
+    pub(super) fn finish_measured(
+        &self,
+        shadow: ShadowMatrix,
+        err: FrustumError,
+        pts: &[DVec3],
+        s: &Slice,
+        focus: Focus,
+    ) -> Result<FrameMap> {
+        // The largest texel edge over B: clip spans 2 over the map's `res` texels.
+        let res = f64::from(self.input.map_resolution);
+        let matrix = shadow.matrix();
+        let texel = pts
+            .iter()
+            .filter_map(|p| texel_edges(&matrix, self.l, *p))
+            .fold(0.0f64, |a, (es, et)| a.max(es).max(et))
+            * 2.0
+            / res;
+        let mut body = [DVec3::ZERO; MAX_BODY_VERTICES];
+        body[..pts.len()].copy_from_slice(pts);
+        let image = f64::from(self.input.image_height);
+        // The matrices a renderer uploads, in both depth conventions, must be finite in f64 and
+        // in the GPU's f32 (a camera far from the world origin scales its translation past them).
+        let world_to_eye = self.input.camera.world_to_eye;
+        let world_to_clip = matrix * world_to_eye;
+        let zero_one = zero_to_one(&matrix) * world_to_eye;
+        if ![world_to_clip, zero_one]
+            .iter()
+            .all(|m| m.is_finite() && m.as_mat4().is_finite())
+        {
+            return Err(Error::Degenerate(
+                "the map's world → clip matrix overflows f32 or f64 (the camera is too far from \
+                 the world origin for the map's scale)"
+                    .into(),
+            ));
+        }
+        Ok(FrameMap {
+            world_to_clip,
+            shadow,
+            split: s.split,
+            blend: s.blend,
+            texel_world: texel,
+            max_mx: err.max_mx,
+            max_mz: err.max_mz,
+            storage_factor: err.storage_factor,
+            max_error_pixels: err.max_mx.max(err.max_mz) * image / res,
+            focus,
+            face: None,
+            world_to_eye: self.input.camera.world_to_eye,
+            body,
+            body_len: pts.len(),
+        })
+    }
+}
+
+/// The edges of a texel of `m` (eye → light clip) at `p`, in the plane perpendicular to the unit
+/// light direction `l`, per unit of clip s and t: the columns of the inverse of the Jacobian of
+/// that plane → (s, t), `(|∇t⊥| / |D|, |∇s⊥| / |D|)` with `D = (∇s × ∇t)·l` (a texel is a light
+/// ray's cross-section, so the edges do not depend on where along the ray `p` lies). Filament's
+/// `texelSizeWorldSpace` takes the same columns, at the map's centre only. `None` behind the
+/// map's centre of projection or where the map is singular.
+fn texel_edges(m: &DMat4, l: DVec3, p: DVec3) -> Option<(f64, f64)> {
+    let h = *m * p.extend(1.0);
+    if h.w.is_nan() || h.w <= 0.0 {
+        return None;
+    }
+    let r3 = m.row(3).truncate();
+    let grad = |row: DVec3, v: f64| (row * h.w - r3 * v) / (h.w * h.w);
+    let gs = grad(m.row(0).truncate(), h.x);
+    let gt = grad(m.row(1).truncate(), h.y);
+    let (gs, gt) = (gs - gs.dot(l) * l, gt - gt.dot(l) * l);
+    let d = gs.cross(gt).dot(l).abs();
+    let edges = (gt.length() / d, gs.length() / d);
+    (edges.0.is_finite() && edges.1.is_finite()).then_some(edges)
+}
