@@ -235,6 +235,37 @@ prop_assert!(v.is_finite());
     }
 }
 
+proptest! {
+    #![proptest_config(common::config(256))]
+
+    /// Eq 15 to 18 as printed, evaluated here: γ_lim = atan((f + n) tan φ/(f − n)); Zhang's
+    /// r = sin((γ/γ_lim) π/2) (Eq 17) and Barroso's r = [1 + sin((γ/γ_lim − 1) π/2)]² (Eq 18,
+    /// which the crate evaluates as 4 sin⁴(γ π/(4 γ_lim))); n′ = (n + √(fn)) sin γ − n tan φ cos γ
+    /// above γ_lim and n′₁(γ_lim)/r(γ) below it (Eq 16). γ/γ_lim ≥ 0.01, where the printed
+    /// Eq 18 loses at most 10⁻¹² to cancellation.
+    #[test]
+    fn eq15_to_eq18_by_hand(view in tilted_view(), u in 0.01f64..=1.0, w in 0.0f64..=1.0) {
+        let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
+        let gl = ((f + n) * t / (f - n)).atan();
+        prop_assert!(rel(gamma_lim(&view), gl) < 1e-13, "γ_lim {} vs {gl}", gamma_lim(&view));
+        let n1 = |g: f64| (n + (f * n).sqrt()) * g.sin() - n * t * g.cos();
+        let gamma = u * gl;
+        let zhang = (u * FRAC_PI_2).sin();
+        let barroso = (1.0 + ((u - 1.0) * FRAC_PI_2).sin()).powi(2);
+        prop_assert!(rel(falloff_r(Falloff::Zhang, gamma, gl), zhang) < 1e-12);
+        prop_assert!(rel(falloff_r(Falloff::Barroso, gamma, gl), barroso) < 1e-12);
+        for (fo, r) in [(Falloff::Zhang, zhang), (Falloff::Barroso, barroso)] {
+            let below = generalized_n_prime(&view, LightAngle::new(gamma).unwrap(), fo);
+            if u < 1.0 {
+                prop_assert!(rel(below.value(), n1(gl) / r) < 1e-9, "{fo:?} γ = {gamma}: {below:?} vs {}", n1(gl) / r);
+            }
+            let above = gl + w * (FRAC_PI_2 - gl);
+            let n_above = generalized_n_prime(&view, LightAngle::new(above).unwrap(), fo);
+            prop_assert!(rel(n_above.value(), n1(above)) < 1e-9, "{fo:?} γ = {above}: {n_above:?} vs {}", n1(above));
+        }
+    }
+}
+
 /// γ_lim (Eq 15) is where, in the light's view, the near face's far edge meets the far face's
 /// near edge: with the light behind the viewer, the near-top and far-bottom corners have the same
 /// coordinate along the warp axis. And it exceeds φ, as Barroso requires.

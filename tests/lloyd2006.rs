@@ -73,20 +73,28 @@ proptest! {
     }
 
     /// App. B defines η by interpolating the *measured* maximum z error M_z linearly between
-    /// n′ = ∞ (η = −1), n′_LSPSM (0) and n′ = n (1). Computed from the twin, it is Eq 11's η.
+    /// n′ = ∞ (η = −1), n′_LSPSM (0) and n′ = n (1). Computed from the twin, it is Eq 11's η
+    /// (n′ from η), and App. B's η(n′) of any n′ ≥ n.
     #[test]
-    fn app_b_definition_from_measured_mz_gives_eq11(v in frustum(), e in eta()) {
+    fn app_b_definition_from_measured_mz_gives_eq11(v in frustum(), e in eta(), nu in 1.0f64..1e6) {
         let (n, f) = (v.near(), v.far());
         let mz_of = |np: NPrime| frustum_max(&v, &overhead_map(&v, np).unwrap()).unwrap().max_mz;
-        let np = n_prime_from_eta(n, f, e).unwrap();
-        let l = NPrime::finite(n_prime_lispsm(n, f).unwrap()).unwrap();
-        let (m, ml, minf, mn) = (mz_of(np), mz_of(l), mz_of(NPrime::UNWARPED), mz_of(NPrime::finite(n).unwrap()));
-        let eta_b = if np.value() > l.value() {
-            (ml - m) / (minf - ml)
-        } else {
-            (m - ml) / (mn - ml)
+        let l = NPrime::finite(n + (f * n).sqrt()).unwrap();
+        let (ml, minf, mn) = (mz_of(l), mz_of(NPrime::UNWARPED), mz_of(NPrime::finite(n).unwrap()));
+        let eta_b = |np: NPrime| {
+            let m = mz_of(np);
+            if np.value() > l.value() {
+                (ml - m) / (minf - ml)
+            } else {
+                (m - ml) / (mn - ml)
+            }
         };
-        prop_assert!((eta_b - e).abs() < 1e-6, "App. B η = {eta_b}, Eq 11 η = {e}");
+        let np = n_prime_from_eta(n, f, e).unwrap();
+        let measured = eta_b(np);
+        prop_assert!((measured - e).abs() < 1e-6, "App. B η = {measured}, Eq 11 η = {e}");
+        let np = NPrime::finite(n * nu).unwrap();
+        let (measured, closed) = (eta_b(np), eta_from_n_prime(n, f, np).unwrap());
+        prop_assert!((measured - closed).abs() < 1e-6, "n′ = {np:?}: App. B η = {measured}, η(n′) = {closed}");
     }
 
     /// §4.3: S̄ does not depend on n′ for n ≤ n′ ≤ n′_LSPSM (η ∈ [0, 1]): measured S̄ is
@@ -103,7 +111,7 @@ proptest! {
     /// regimes meet), and it is the smallest M_z of all n′.
     #[test]
     fn mz_equal_on_near_and_far_planes_at_lispsm(v in frustum(), e in eta()) {
-        let l = NPrime::finite(v.n_prime_lispsm()).unwrap();
+        let l = NPrime::finite(n_prime_lispsm(v.near(), v.far()).unwrap()).unwrap();
         let map = overhead_map(&v, l).unwrap();
         let r = Resolutions::default();
         let near = point_error(&v, &map, glam::DVec3::new(0.0, 0.0, -v.near()), r).unwrap().mz;
@@ -112,6 +120,23 @@ proptest! {
         let other = n_prime_from_eta(v.near(), v.far(), e).unwrap();
         let m_other = frustum_max(&v, &overhead_map(&v, other).unwrap()).unwrap().max_mz;
         prop_assert!(m_other >= near * (1.0 - REL));
+    }
+
+    /// PSM (§4.1, n′_PSM = n, the warping frustum's centre of projection at the eye): the
+    /// measured m_x is 1 (res_i = res_s) at every vertex of the frustum and at any point inside.
+    #[test]
+    fn psm_measured_mx_is_one_everywhere(
+        v in frustum(), fz in 0.0f64..=1.0, fx in -1.0f64..=1.0, fy in -1.0f64..=1.0,
+    ) {
+        let psm = NPrime::finite(n_prime_psm(v.near(), v.far()).unwrap()).unwrap();
+        let map = overhead_map(&v, psm).unwrap();
+        let z = (v.near() + fz * (v.far() - v.near())).min(v.far());
+        let h = z * v.tan_half_fov();
+        let inside = glam::DVec3::new(fx * h, fy * h, -z);
+        for p in v.corners().into_iter().chain([inside]) {
+            let m = point_error(&v, &map, p, Resolutions::default()).unwrap();
+            prop_assert!(close(m.mx, 1.0, REL), "{p}: m_x = {}", m.mx);
+        }
     }
 
     /// Eq 10's regimes: the measured maximum of m_z lies on the far plane for n′ ≤ n′_LSPSM
@@ -163,6 +188,7 @@ fn n_prime_special_values() {
     for (n, f) in [(1.0, 100.0), (0.3, 7.0), (2.0, 2000.0)] {
         let l = n_prime_lispsm(n, f).unwrap();
         assert_eq!(l, n + (f * n).sqrt());
+        assert_eq!(n_prime_psm(n, f).unwrap(), n);
         match n_prime_from_eta(n, f, 0.0).unwrap().as_finite() {
             Some(v) => assert!(close(v, l, 1e-15)),
             None => panic!("η = 0 is finite"),

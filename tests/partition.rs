@@ -81,6 +81,35 @@ proptest! {
         prop_assert!(same(&ad, &ss), "{:?} vs {:?}", ad.planes(), ss.planes());
     }
 
+    /// The split schemes' planes evaluated by hand from their definitions (uniform
+    /// n + (f − n) i/k; self-similar n (f/n)^{i/k}; practical λ·self-similar + (1 − λ)·uniform;
+    /// exponent n + (f − n)(e^i − 1)/(e^k − 1), written with `exp_m1` so that e near 1 stays
+    /// exact).
+    #[test]
+    fn splits_by_hand(
+        n in 0.01f64..10.0, a in 1.5f64..1e5, k in 1usize..=MAX_PARTITIONS,
+        lambda in 0.0f64..=1.0, e in 0.2f64..4.0,
+    ) {
+        let f = n * a;
+        let (kf, le) = (k as f64, e.ln());
+        for i in 0..=k {
+            let t = i as f64 / kf;
+            let uniform = n + (f - n) * t;
+            let log = n * a.powf(t);
+            let practical = lambda * log + (1.0 - lambda) * uniform;
+            let exponent = if le == 0.0 { uniform } else { n + (f - n) * (i as f64 * le).exp_m1() / (kf * le).exp_m1() };
+            for (s, want) in [
+                (SplitScheme::Uniform, uniform),
+                (SplitScheme::SelfSimilar, log),
+                (SplitScheme::Practical { lambda }, practical),
+                (SplitScheme::Exponent { exponent: e }, exponent),
+            ] {
+                let got = z_splits(n, f, k, s).unwrap().planes()[i];
+                prop_assert!(close(got, want, 1e-12), "{s:?} plane {i}: {got} vs {want}");
+            }
+        }
+    }
+
     /// Unreal's exponent e: each partition is e times as deep as the one before it.
     #[test]
     fn exponent_depths_grow_geometrically(n in 0.01f64..10.0, a in 1.5f64..1e4, k in 2usize..=8, e in 0.2f64..4.0) {
