@@ -369,3 +369,73 @@ fn errata_s5_3_worst_case_factor() {
     let minimax = s(d(12.0, 356.0), WarpRule::Minimax, Partition::Single, 1);
     assert!(minimax / single_behind < 3.0);
 }
+
+/// Issue 21 items 4 and 5: a direction without a solution fails the sweep with the scheme's own
+/// error kind and the direction named once (it was "degenerate geometry: at …: no solution: …"),
+/// and Barroso's ratio α is the caller's (`Partition::AdaptiveRatio`), so that the library's
+/// advice "lower the ratio or k" can be followed.
+#[test]
+fn adaptive_ratio_and_the_failing_cell_named_once() {
+    use shadow_aliasing::Error;
+    let view = ViewFrustum::new(1.0, 100.0, 0.5236).unwrap();
+    let grid = SweepGrid::new(5, 8).unwrap();
+    // α = 2, k = 8, light along the view (cell (0, 0), γ = 0): Eq 19 gives z₇ = 100/2, …,
+    // z₁ = 100/2⁷ = 0.78125, before the near plane.
+    let e = sweep(&view, WarpRule::Lispsm, Partition::Adaptive, 8, grid).unwrap_err();
+    let text = e.to_string();
+    assert!(matches!(e, Error::NoSolution(_)), "{e:?}");
+    assert!(
+        text.starts_with(
+            "no solution: at elevation=0, azimuth=0 (row 0, column 0 of the sweep): adaptive \
+             z-partitioning (Barroso & Celes Eq 19) with ratio=2, light_angle=0, k=8 puts plane \
+             1 at 0.78125"
+        ) && text.ends_with("lower the ratio or k"),
+        "{text}"
+    );
+    for kind in ["no solution", "degenerate geometry"] {
+        assert!(text.matches(kind).count() <= 1, "{text}");
+    }
+    // α = 1.5: 1.5⁷ = 17.1 < 100, every direction has its planes, no value is unset.
+    let s = sweep(
+        &view,
+        WarpRule::Lispsm,
+        Partition::AdaptiveRatio(1.5),
+        8,
+        grid,
+    )
+    .unwrap();
+    assert!(s.storage_factor.iter().all(|v| v.is_finite() && *v > 0.0));
+    // The planes of AdaptiveRatio(4) at γ = 0, k = 3, by hand (Eq 19 at λ = 0: z_{i−1} = z_i/α):
+    // 100, 25, 6.25, 1; and `Adaptive` is `AdaptiveRatio(2)` (100, 50, 25, 1).
+    let depths = |p| {
+        scheme(&view, DVec3::NEG_Z, WarpRule::Lispsm, p, 3)
+            .unwrap()
+            .partitions()
+            .iter()
+            .map(|r| (r.near, r.far))
+            .collect::<Vec<_>>()
+    };
+    let four = depths(Partition::AdaptiveRatio(4.0));
+    let want = [(1.0, 6.25), (6.25, 25.0), (25.0, 100.0)];
+    for (got, want) in four.iter().zip(want) {
+        assert!(
+            (got.0 - want.0).abs() < 1e-12 * want.1 && (got.1 - want.1).abs() < 1e-12 * want.1,
+            "{four:?}"
+        );
+    }
+    assert_eq!(
+        depths(Partition::Adaptive),
+        depths(Partition::AdaptiveRatio(2.0))
+    );
+    assert!((depths(Partition::Adaptive)[1].0 - 25.0).abs() < 1e-12);
+    // A ratio of 1 or less is refused by name.
+    let e = sweep(
+        &view,
+        WarpRule::Lispsm,
+        Partition::AdaptiveRatio(1.0),
+        3,
+        grid,
+    )
+    .unwrap_err();
+    assert_eq!(e.to_string(), "ratio must be greater than 1 (got 1)");
+}

@@ -9,6 +9,7 @@
 //! | `Log` | k | z_i = n (f/n)^{i/k} (Lloyd 2006 Eq 15, 16) |
 //! | `Practical(λ)` | k | λ-blend of the two |
 //! | `Adaptive` | k | Barroso & Celes Eq 19 with γ from the light and α = [`ADAPTIVE_RATIO`] |
+//! | `AdaptiveRatio(α)` | k | the same with a chosen α > 1 |
 //! | `Faces` | k per visible side face, + near face | self-similar along each face ([`crate::maps::faces`]) |
 //!
 //! Every z-partition is fitted with the scheme's [`WarpRule`] applied to its own sub-frustum.
@@ -66,8 +67,14 @@ pub enum Partition {
     Log,
     /// k z-partitions, the practical λ-blend (λ ∈ [0, 1]: 0 uniform, 1 logarithmic).
     Practical(f64),
-    /// k z-partitions by Barroso & Celes Eq 19, γ from the light, α = [`ADAPTIVE_RATIO`].
+    /// k z-partitions by Barroso & Celes Eq 19, γ from the light, α = [`ADAPTIVE_RATIO`]
+    /// (the same as `AdaptiveRatio(ADAPTIVE_RATIO)`).
     Adaptive,
+    /// k z-partitions by Barroso & Celes Eq 19, γ from the light, with the far-partition ratio
+    /// α > 1 given (the `ratio` of [`SplitScheme::Adaptive`]). The planes exist only while α is
+    /// small enough for f/n at the light's γ (at γ = 0, α^{k−1} < f/n): otherwise
+    /// [`Error::NoSolution`] advises a lower ratio or k.
+    AdaptiveRatio(f64),
     /// Face partitions with k self-similar z-partitions along each side face.
     Faces,
 }
@@ -231,8 +238,9 @@ impl SchemeResult {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir`, `k` (outside `1..=MAX_PARTITIONS` for a
-/// partitioned scheme), `lambda` (outside [0, 1]) or the rule's parameter;
-/// [`Error::NoSolution`] when Barroso's adaptive planes do not exist for this f/n and k;
+/// partitioned scheme), `lambda` (outside [0, 1]), `ratio` (not finite or not above 1) or the
+/// rule's parameter; [`Error::NoSolution`] when Barroso's adaptive planes do not exist for this
+/// f/n, light, ratio and k;
 /// [`Error::Degenerate`] when planes coincide in `f64` or a fitted map is singular at a vertex.
 pub fn scheme(
     view: &ViewFrustum,
@@ -334,13 +342,13 @@ fn fill(
         Partition::Uniform => splits(SplitScheme::Uniform)?,
         Partition::Log | Partition::Faces => splits(SplitScheme::SelfSimilar)?,
         Partition::Practical(lambda) => splits(SplitScheme::Practical { lambda })?,
-        Partition::Adaptive => {
-            let gamma = LightAngle::from_unit(l).radians();
-            splits(SplitScheme::Adaptive {
-                light_angle: gamma,
-                ratio: ADAPTIVE_RATIO,
-            })?
-        }
+        Partition::Adaptive | Partition::AdaptiveRatio(_) => splits(SplitScheme::Adaptive {
+            light_angle: LightAngle::from_unit(l).radians(),
+            ratio: match partition {
+                Partition::AdaptiveRatio(ratio) => ratio,
+                _ => ADAPTIVE_RATIO,
+            },
+        })?,
     };
     if partition == Partition::Faces {
         let face_rule = face_rule(rule);

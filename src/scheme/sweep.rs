@@ -175,10 +175,12 @@ impl Sweep {
 /// set its size with `RAYON_NUM_THREADS` or a `rayon::ThreadPool::install`), serial without.
 ///
 /// # Errors
-/// An error of [`crate::scheme::scheme`] at some direction, with the direction that
-/// caused it ([`Error::Degenerate`] wrapping the builder's message): serially the first in grid
-/// order, in parallel the first any row reports. Validation errors of the rule, `partition` or
-/// `k` are found first, at the zenith, and reported as the scheme reports them.
+/// An error of [`crate::scheme::scheme`] at some direction, of the same kind and with that
+/// direction named once (`no solution: at elevation=0, azimuth=0 (row 0, column 0 of the
+/// sweep): …`): the first in grid order, whether serial or parallel. Validation errors of the
+/// rule, `partition` or `k` are found first, at the zenith, and reported as the scheme reports
+/// them. A direction without a solution (for instance [`Partition::AdaptiveRatio`]'s planes at a
+/// light near the view axis) fails the whole sweep, naming it: no value is left unset or NaN.
 ///
 /// ```
 /// use shadow_aliasing::scheme::Partition;
@@ -358,14 +360,28 @@ pub fn sweep_block_into(
         let el = grid.elevation(i);
         for j in cols.clone() {
             let az = grid.azimuth(j);
-            one(el.sin_cos(), az.sin_cos(), &mut buf).map_err(|e| {
-                Error::Degenerate(format!(
-                    "at elevation={}, azimuth={}: {e}",
-                    fmt_num(el),
-                    fmt_num(az)
-                ))
-            })?;
+            one(el.sin_cos(), az.sin_cos(), &mut buf).map_err(|e| at_cell(e, &grid, i, j))?;
         }
     }
     Ok(())
+}
+
+/// The scheme's error `e` at grid cell `(i, j)`, its kind kept and the cell named once:
+/// `no solution: at elevation=0, azimuth=0 (row 0, column 0 of the sweep): adaptive …`.
+#[cold]
+fn at_cell(e: Error, grid: &SweepGrid, i: usize, j: usize) -> Error {
+    let at = format!(
+        "at elevation={}, azimuth={} (row {i}, column {j} of the sweep)",
+        fmt_num(grid.elevation(i)),
+        fmt_num(grid.azimuth(j))
+    );
+    match e {
+        Error::InvalidArgument { name, reason } => Error::InvalidArgument {
+            name,
+            reason: format!("{reason}, {at}"),
+        },
+        Error::NoSolution(m) => Error::NoSolution(format!("{at}: {m}")),
+        Error::NoClosedForm(m) => Error::NoClosedForm(format!("{at}: {m}")),
+        Error::Degenerate(m) => Error::Degenerate(format!("{at}: {m}")),
+    }
 }
