@@ -514,6 +514,46 @@ fn map_lines_is_bounded_and_the_bound_is_cheap() {
     }
 }
 
+/// Issue 21 item 4: the bound's errors give the offending value (the plane and its index, the
+/// determinant, the number of vertices of the intersection) and what to give instead.
+#[test]
+fn bound_errors_name_the_offending_value() {
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
+    let mut planes = [DVec4::new(1.0, 0.0, 0.0, -5.0); 6];
+    planes[2] = DVec4::new(0.0, 0.0, 0.0, 1.0);
+    assert_eq!(
+        ConvexBound::from_planes(planes).unwrap_err().to_string(),
+        "planes must be finite (a, b, c, d) with a non-zero normal (a, b, c) (got [0, 0, 0, 1] \
+         at index 2)"
+    );
+    // A singular view matrix: determinant 0.
+    let flat = DMat4::from_scale(DVec3::new(1.0, 0.0, 1.0));
+    let e = ConvexBound::from_aabb(DVec3::ZERO, DVec3::ONE, flat).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "view_matrix must be invertible: a finite world → eye matrix of non-zero determinant (got \
+         determinant 0)"
+    );
+    // A box behind the camera (depths −10 to −20 are z = 10 to 20, behind the eye): the
+    // intersection with the view frustum is empty, no vertex.
+    let away = ConvexBound::from_aabb(
+        DVec3::new(-1.0, -1.0, 10.0),
+        DVec3::new(1.0, 1.0, 20.0),
+        DMat4::IDENTITY,
+    )
+    .unwrap();
+    let opts = TsmOptions {
+        focus: 20.0,
+        search: TsmSearch::EightyPercent,
+    };
+    let e = tsm_general(&view, DVec3::new(0.3, -1.0, 0.2), &away, opts).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "no solution: the bound does not meet the view frustum in a solid region (their \
+         intersection has 0 vertices, a solid at least 4): give a bound that overlaps the view"
+    );
+}
+
 /// Martin & Tan's rule near the dueling-frusta configuration: 0.1° from straight behind the 80 %
 /// trapezoid has 3.98 times the storage factor of the bounding rectangle that §6.1's special
 /// case uses on the axis (n = 1, f = 100, θ = 30°, focus 20): the switch is a jump, and the rule

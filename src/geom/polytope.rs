@@ -1,7 +1,7 @@
 //! Convex polytopes of eye space bounded by planes: a bound given by planes or by a world box,
 //! the view frustum's planes, and the vertices of their intersection.
 
-use crate::error::{Error, Result};
+use crate::error::{fmt_num, Error, Result};
 use crate::frustum::ViewFrustum;
 use crate::numeric::sort_by_keys;
 use glam::{DMat3, DMat4, DVec3, DVec4};
@@ -17,13 +17,17 @@ impl ConvexBound {
     /// From six eye-space planes `(a, b, c, d)`, inside where `a x + b y + c z + d ≤ 0`.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] naming `planes` for a non-finite plane or a zero normal.
+    /// [`Error::InvalidArgument`] naming `planes` for a non-finite plane or a zero normal, with
+    /// the plane and its index.
     pub fn from_planes(planes: [DVec4; 6]) -> Result<Self> {
-        for p in &planes {
+        for (i, p) in planes.iter().enumerate() {
             if !p.is_finite() || p.truncate().length() <= 0.0 {
                 return Err(Error::invalid(
                     "planes",
-                    format!("must be finite with a non-zero normal (got {p})"),
+                    format!(
+                        "must be finite (a, b, c, d) with a non-zero normal (a, b, c) (got {p} at \
+                         index {i})"
+                    ),
                 ));
             }
         }
@@ -44,7 +48,14 @@ impl ConvexBound {
         }
         let det = view_matrix.determinant();
         if !det.is_finite() || det.abs() < 1e-300 {
-            return Err(Error::invalid("view_matrix", "must be invertible"));
+            return Err(Error::invalid(
+                "view_matrix",
+                format!(
+                    "must be invertible: a finite world → eye matrix of non-zero determinant \
+                     (got determinant {})",
+                    fmt_num(det)
+                ),
+            ));
         }
         // A world plane π (π·(x, 1) ≤ 0) is V⁻ᵀ π in eye space.
         let it = view_matrix.inverse().transpose();

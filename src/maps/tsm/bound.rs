@@ -3,7 +3,7 @@
 
 use super::search::Core;
 use super::{validate, ConvexBound, TsmMap, TsmOptions};
-use crate::error::{Error, Result};
+use crate::error::{fmt_num, Error, Result};
 use crate::frustum::ViewFrustum;
 use crate::geom::polytope::{frustum_planes, polytope_vertices};
 use crate::maps::lightspace::light_space;
@@ -43,9 +43,10 @@ pub fn tsm_general(
     let mut verts = [DVec3::ZERO; 64];
     let count = polytope_vertices(&planes[..12], scale, &mut verts);
     if count < 4 {
-        return Err(Error::NoSolution(
-            "the bound does not meet the view frustum in a solid region".into(),
-        ));
+        return Err(Error::NoSolution(format!(
+            "the bound does not meet the view frustum in a solid region (their intersection \
+             has {count} vertices, a solid at least 4): give a bound that overlaps the view"
+        )));
     }
     let pts = &verts[..count];
     let e = pts.iter().fold(DVec3::ZERO, |a, p| a + *p) / count as f64;
@@ -55,9 +56,12 @@ pub fn tsm_general(
         f_i = f_i.max(-p.z);
     }
     if f_i - n_i <= 1e-12 * scale {
-        return Err(Error::NoSolution(
-            "the bound meets the view frustum in a region without depth".into(),
-        ));
+        return Err(Error::NoSolution(format!(
+            "the bound meets the view frustum in a region without depth (got depths [{}, {}]): \
+             give a bound that overlaps the view in depth",
+            fmt_num(n_i),
+            fmt_num(f_i)
+        )));
     }
     let ls = light_space(light_dir, e)?;
     let focus = opts.focus * (f_i - n_i) / (f - n);
