@@ -8,7 +8,9 @@ use std::path::Path;
 /// The `a::b` spans in backticks of `text` (identifiers of lower-case letters, digits and `_`).
 fn cited_paths(text: &str) -> Vec<(String, String)> {
     let mut out = Vec::new();
-    for span in text.split('`').skip(1).step_by(2) {
+    // Line by line, so that a code fence or an odd backtick cannot shift the pairing for the
+    // rest of the page.
+    for span in text.lines().flat_map(|l| l.split('`').skip(1).step_by(2)) {
         let ident = |s: &str| {
             !s.is_empty()
                 && s.bytes()
