@@ -377,7 +377,7 @@ fn errata_s5_3_worst_case_factor() {
 #[test]
 fn adaptive_ratio_and_the_failing_cell_named_once() {
     use shadow_aliasing::Error;
-    let view = ViewFrustum::new(1.0, 100.0, 0.5236).unwrap();
+    let view = ViewFrustum::new(1.0, 100.0, 0.5).unwrap();
     let grid = SweepGrid::new(5, 8).unwrap();
     // α = 2, k = 8, light along the view (cell (0, 0), γ = 0): Eq 19 gives z₇ = 100/2, …,
     // z₁ = 100/2⁷ = 0.78125, before the near plane.
