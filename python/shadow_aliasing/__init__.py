@@ -1,7 +1,9 @@
 """The perspective aliasing error of shadow maps, from the Rust crate ``shadow-aliasing``.
 
-Closed forms (NumPy broadcasting over every float argument, float64 out, ``ValueError`` with
-the crate's message for any input outside the domain, never NaN): ``mx``, ``mz``, ``max_mx``,
+Errors name the argument: ``TypeError`` for a wrong type, ``ValueError`` for a value outside
+the domain (the crate's message). No function returns NaN.
+
+Closed forms (NumPy broadcasting over every float argument, float64 out): ``mx``, ``mz``, ``max_mx``,
 ``max_mz``, ``storage_factor``, ``critical_resolution``, ``n_prime_lispsm``,
 ``n_prime_from_eta``, ``eta_from_n_prime``, ``distribution_g``, ``subdivided_max_error``,
 ``allocate_texels``, ``z_partition``, ``scheme_storage_factor``, ``tilted_mz``,
@@ -11,7 +13,8 @@ spelled ``lambda_``).
 
 Builders (4×4 float64 matrices, eye space → light clip space, ``clip = M @ (x, y, z, 1)``):
 ``warp``, ``n_prime_for``, ``cascades``, ``faces``, ``tsm``. Measurement: ``frustum_max``,
-``point_error``. Hemisphere sweep: ``sweep``, ``sweep_angles``.
+``point_error``. Hemisphere sweep: ``sweep`` (all cores; Ctrl-C interrupts it),
+``sweep_angles``.
 """
 
 from ._native import (

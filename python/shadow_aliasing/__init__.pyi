@@ -122,4 +122,5 @@ def sweep(near: float, far: float, half_fov: float, rule: str = ...,
           eta: Optional[float] = ..., focus: Optional[float] = ..., near_hint: Optional[float] = ...,
           far_hint: Optional[float] = ..., shadow_distance: Optional[float] = ...,
           aspect: float = ...) -> npt.NDArray[np.float64]:
-    """(elevations, azimuths) storage factor over the hemisphere, all cores, GIL released."""
+    """(elevations, azimuths) storage factor over the hemisphere, all cores, GIL released, in
+    blocks of about 20 ms: Ctrl-C raises KeyboardInterrupt between two blocks."""

@@ -15,7 +15,7 @@ use numpy::{
     AllowTypeChange, PyArrayDescrMethods, PyArrayDyn, PyArrayLikeDyn, PyUntypedArray,
     PyUntypedArrayMethods,
 };
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyFloat, PyInt};
 use rayon::prelude::*;
@@ -38,34 +38,72 @@ pub enum FloatArg<'py> {
 
 impl<'py> FloatArg<'py> {
     /// Converts `ob` (a number or anything `numpy.asarray` takes) to float64, refusing dtypes
-    /// that are not real numbers.
+    /// that are not real numbers. Every error names the argument: `TypeError` for what is not
+    /// a real number or an array of them (`None`, a string, a bool, a ragged nested list),
+    /// `ValueError` for an integer too large for a float.
     pub fn extract(name: &str, ob: &Bound<'py, PyAny>) -> PyResult<Self> {
+        Self::extract_as(name, ob, "a real number or an array of real numbers")
+    }
+
+    /// [`FloatArg::extract`], the message saying that `name` must be `expected`.
+    pub fn extract_as(name: &str, ob: &Bound<'py, PyAny>, expected: &str) -> PyResult<Self> {
+        let wrong = |got: &dyn std::fmt::Display| {
+            PyTypeError::new_err(format!("{name} must be {expected} (got {got})"))
+        };
         if ob.is_instance_of::<PyBool>() {
-            return Err(PyTypeError::new_err(format!(
-                "{name} must be a real number or an array of real numbers (got a bool)"
-            )));
+            return Err(wrong(&"a bool"));
+        }
+        if ob.is_none() {
+            return Err(wrong(&"None"));
         }
         if ob.is_instance_of::<PyFloat>() || ob.is_instance_of::<PyInt>() {
-            return Ok(FloatArg::Number(ob.extract::<f64>()?));
+            // Only an int can fail: beyond the largest float.
+            return ob.extract::<f64>().map(FloatArg::Number).map_err(|_| {
+                PyValueError::new_err(format!(
+                    "{name} must be a finite number (got an integer too large for a float)"
+                ))
+            });
         }
         let py = ob.py();
+        // Errors of NumPy's conversion that say what the object is (a ragged nested list, an
+        // object that is not a number); others (KeyboardInterrupt, MemoryError) pass through.
+        let refused = |e: PyErr| {
+            if e.is_instance_of::<PyTypeError>(py)
+                || e.is_instance_of::<PyValueError>(py)
+                || e.is_instance_of::<PyOverflowError>(py)
+            {
+                let why = e.value(py).to_string();
+                wrong(&format_args!(
+                    "{}, which NumPy refuses: {why}",
+                    crate::args::kind(ob)
+                ))
+            } else {
+                e
+            }
+        };
         // numpy.asarray first, so that the dtype of lists and scalars is checked too.
-        let arr = if ob.cast::<PyUntypedArray>().is_ok() {
+        let is_array = ob.cast::<PyUntypedArray>().is_ok();
+        let arr = if is_array {
             ob.clone()
         } else {
-            py.import("numpy")?.getattr("asarray")?.call1((ob,))?
+            py.import("numpy")?
+                .getattr("asarray")?
+                .call1((ob,))
+                .map_err(refused)?
         };
-        let untyped = arr.cast::<PyUntypedArray>().map_err(|_| {
-            PyTypeError::new_err(format!("{name} must be a number or an array of numbers"))
-        })?;
+        let untyped = arr
+            .cast::<PyUntypedArray>()
+            .map_err(|_| wrong(&crate::args::kind(ob)))?;
         let kind = untyped.dtype().kind();
         if !matches!(kind, b'f' | b'i' | b'u') {
-            return Err(PyTypeError::new_err(format!(
-                "{name} must be a real number or an array of real numbers (got dtype {})",
-                untyped.dtype()
-            )));
+            let dtype = untyped.dtype();
+            return Err(match (is_array, untyped.ndim()) {
+                (true, _) => wrong(&format_args!("an array of dtype {dtype}")),
+                (false, 0) => wrong(&crate::args::kind(ob)),
+                (false, _) => wrong(&format_args!("{} of dtype {dtype}", crate::args::kind(ob))),
+            });
         }
-        let a: PyArrayLikeDyn<'py, f64, AllowTypeChange> = arr.extract()?;
+        let a: PyArrayLikeDyn<'py, f64, AllowTypeChange> = arr.extract().map_err(refused)?;
         Ok(FloatArg::Array(a))
     }
 

@@ -1,8 +1,9 @@
-//! Shadow-matrix builders, the measurement of any 4×4 matrix, and the hemisphere sweep.
+//! Shadow-matrix builders and the measurement of any 4×4 matrix (the hemisphere sweep: `sweep`).
 //!
 //! Matrices cross the boundary as NumPy (row-major) 4×4 float64 arrays `M` with
 //! `clip = M @ (x, y, z, 1)`: eye space (right-handed, looking down −Z, Y up) → light clip space.
 
+use crate::args;
 use crate::broadcast::{fmt_shape, to_python, value_error, FloatArg};
 use crate::closed::choice;
 use glam::{DMat4, DVec3};
@@ -19,8 +20,7 @@ use shadow_aliasing::maps::{
 use shadow_aliasing::measure::{
     frustum_max as measure_frustum_max, point_error as measure_point_error, ShadowMap,
 };
-use shadow_aliasing::scheme::sweep::{sweep_into, SweepGrid};
-use shadow_aliasing::scheme::{Partition, ADAPTIVE_RATIO};
+use shadow_aliasing::scheme::ADAPTIVE_RATIO;
 use shadow_aliasing::{Error, LightAngle, Resolutions, ViewFrustum};
 
 type Any<'py> = Bound<'py, PyAny>;
@@ -43,11 +43,11 @@ pub const WARP_RULES: &[&str] = &[
     "ogre-ortho",
 ];
 
-fn err(e: Error) -> PyErr {
+pub fn err(e: Error) -> PyErr {
     value_error(&e)
 }
 
-fn view_of(near: f64, far: f64, half_fov: f64, aspect: f64) -> PyResult<ViewFrustum> {
+pub fn view_of(near: f64, far: f64, half_fov: f64, aspect: f64) -> PyResult<ViewFrustum> {
     ViewFrustum::with_aspect(near, far, half_fov, aspect).map_err(err)
 }
 
@@ -195,18 +195,18 @@ pub fn rule(view: &ViewFrustum, name: &str, p: RuleParams) -> PyResult<WarpRule>
 #[allow(clippy::too_many_arguments)]
 pub fn warp<'py>(
     py: Python<'py>,
-    near: f64,
-    far: f64,
-    half_fov: f64,
+    #[pyo3(from_py_with = args::near)] near: f64,
+    #[pyo3(from_py_with = args::far)] far: f64,
+    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
     light_dir: &Any<'py>,
-    rule: &str,
-    eta: Option<f64>,
-    focus: Option<f64>,
-    near_hint: Option<f64>,
-    far_hint: Option<f64>,
-    shadow_distance: Option<f64>,
-    clip_depth: &str,
-    aspect: f64,
+    #[pyo3(from_py_with = args::rule)] rule: &str,
+    #[pyo3(from_py_with = args::eta)] eta: Option<f64>,
+    #[pyo3(from_py_with = args::focus)] focus: Option<f64>,
+    #[pyo3(from_py_with = args::near_hint)] near_hint: Option<f64>,
+    #[pyo3(from_py_with = args::far_hint)] far_hint: Option<f64>,
+    #[pyo3(from_py_with = args::shadow_distance)] shadow_distance: Option<f64>,
+    #[pyo3(from_py_with = args::clip_depth)] clip_depth: &str,
+    #[pyo3(from_py_with = args::aspect)] aspect: f64,
 ) -> PyResult<Any<'py>> {
     let view = view_of(near, far, half_fov, aspect)?;
     let l = vec3("light_dir", light_dir)?;
@@ -233,17 +233,17 @@ pub fn warp<'py>(
     near_hint=None, far_hint=None, shadow_distance=None, aspect=1.0))]
 #[allow(clippy::too_many_arguments)]
 pub fn n_prime_for(
-    near: f64,
-    far: f64,
-    half_fov: f64,
+    #[pyo3(from_py_with = args::near)] near: f64,
+    #[pyo3(from_py_with = args::far)] far: f64,
+    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
     light_dir: &Bound<'_, PyAny>,
-    rule: &str,
-    eta: Option<f64>,
-    focus: Option<f64>,
-    near_hint: Option<f64>,
-    far_hint: Option<f64>,
-    shadow_distance: Option<f64>,
-    aspect: f64,
+    #[pyo3(from_py_with = args::rule)] rule: &str,
+    #[pyo3(from_py_with = args::eta)] eta: Option<f64>,
+    #[pyo3(from_py_with = args::focus)] focus: Option<f64>,
+    #[pyo3(from_py_with = args::near_hint)] near_hint: Option<f64>,
+    #[pyo3(from_py_with = args::far_hint)] far_hint: Option<f64>,
+    #[pyo3(from_py_with = args::shadow_distance)] shadow_distance: Option<f64>,
+    #[pyo3(from_py_with = args::aspect)] aspect: f64,
 ) -> PyResult<f64> {
     let view = view_of(near, far, half_fov, aspect)?;
     let l = vec3("light_dir", light_dir)?;
@@ -301,19 +301,19 @@ fn split_scheme(name: &str, lambda_: Option<f64>, light_dir: DVec3) -> PyResult<
 #[allow(clippy::too_many_arguments)]
 pub fn cascades<'py>(
     py: Python<'py>,
-    near: f64,
-    far: f64,
-    half_fov: f64,
+    #[pyo3(from_py_with = args::near)] near: f64,
+    #[pyo3(from_py_with = args::far)] far: f64,
+    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
     light_dir: &Any<'py>,
-    k: usize,
-    partition: &str,
-    rule: &str,
-    lambda_: Option<f64>,
-    overlap: f64,
-    eta: Option<f64>,
-    focus: Option<f64>,
-    clip_depth: &str,
-    aspect: f64,
+    #[pyo3(from_py_with = args::k)] k: usize,
+    #[pyo3(from_py_with = args::partition)] partition: &str,
+    #[pyo3(from_py_with = args::rule)] rule: &str,
+    #[pyo3(from_py_with = args::lambda_)] lambda_: Option<f64>,
+    #[pyo3(from_py_with = args::overlap)] overlap: f64,
+    #[pyo3(from_py_with = args::eta)] eta: Option<f64>,
+    #[pyo3(from_py_with = args::focus)] focus: Option<f64>,
+    #[pyo3(from_py_with = args::clip_depth)] clip_depth: &str,
+    #[pyo3(from_py_with = args::aspect)] aspect: f64,
 ) -> PyResult<Any<'py>> {
     let view = view_of(near, far, half_fov, aspect)?;
     let l = vec3("light_dir", light_dir)?;
@@ -345,14 +345,14 @@ pub fn cascades<'py>(
 #[allow(clippy::too_many_arguments)]
 pub fn faces<'py>(
     py: Python<'py>,
-    near: f64,
-    far: f64,
-    half_fov: f64,
+    #[pyo3(from_py_with = args::near)] near: f64,
+    #[pyo3(from_py_with = args::far)] far: f64,
+    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
     light_dir: &Any<'py>,
-    k: usize,
-    warp: &str,
-    clip_depth: &str,
-    aspect: f64,
+    #[pyo3(from_py_with = args::k)] k: usize,
+    #[pyo3(from_py_with = args::warp)] warp: &str,
+    #[pyo3(from_py_with = args::clip_depth)] clip_depth: &str,
+    #[pyo3(from_py_with = args::aspect)] aspect: f64,
 ) -> PyResult<(Any<'py>, Bound<'py, PyList>)> {
     let view = view_of(near, far, half_fov, aspect)?;
     let l = vec3("light_dir", light_dir)?;
@@ -380,15 +380,15 @@ pub fn faces<'py>(
 #[allow(clippy::too_many_arguments)]
 pub fn tsm<'py>(
     py: Python<'py>,
-    near: f64,
-    far: f64,
-    half_fov: f64,
+    #[pyo3(from_py_with = args::near)] near: f64,
+    #[pyo3(from_py_with = args::far)] far: f64,
+    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
     light_dir: &Any<'py>,
-    focus: Option<f64>,
-    xi: Option<f64>,
-    iterative: Option<u32>,
-    clip_depth: &str,
-    aspect: f64,
+    #[pyo3(from_py_with = args::focus)] focus: Option<f64>,
+    #[pyo3(from_py_with = args::xi)] xi: Option<f64>,
+    #[pyo3(from_py_with = args::iterative)] iterative: Option<u32>,
+    #[pyo3(from_py_with = args::clip_depth)] clip_depth: &str,
+    #[pyo3(from_py_with = args::aspect)] aspect: f64,
 ) -> PyResult<Any<'py>> {
     let view = view_of(near, far, half_fov, aspect)?;
     let l = vec3("light_dir", light_dir)?;
@@ -407,7 +407,14 @@ pub fn tsm<'py>(
         search,
     };
     let depth = self::clip_depth(clip_depth)?;
-    let m = maps::tsm(&view, l, opts).map_err(err)?;
+    let m = maps::tsm(&view, l, opts).map_err(|e| match e {
+        // The crate's name for what Python calls `iterative`.
+        Error::InvalidArgument {
+            name: "map_lines",
+            reason,
+        } => PyValueError::new_err(format!("iterative {reason}")),
+        e => err(e),
+    })?;
     one_matrix(py, &m.shadow.with_clip_depth(depth))
 }
 
@@ -434,10 +441,10 @@ pub fn frustum_max<'py>(
     py: Python<'py>,
     matrix: &Any<'py>,
     light_dir: &Any<'py>,
-    near: f64,
-    far: f64,
-    half_fov: f64,
-    aspect: f64,
+    #[pyo3(from_py_with = args::near)] near: f64,
+    #[pyo3(from_py_with = args::far)] far: f64,
+    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
+    #[pyo3(from_py_with = args::aspect)] aspect: f64,
 ) -> PyResult<Any<'py>> {
     let view = view_of(near, far, half_fov, aspect)?;
     let (ms, mv) = shape_of("matrix", matrix)?;
@@ -454,9 +461,13 @@ pub fn frustum_max<'py>(
     } else if ls.len() == lead.len() + 1 && ls[..lead.len()] == *lead && ls[lead.len()] == 3 {
         true
     } else {
+        let per = if lead.is_empty() {
+            String::new()
+        } else {
+            format!(" or {}", fmt_shape(&[lead, &[3]].concat()))
+        };
         return Err(PyValueError::new_err(format!(
-            "light_dir must have shape (3,) or {} for matrix of shape {} (got {})",
-            fmt_shape(&[lead, &[3]].concat()),
+            "light_dir must have shape (3,){per} for matrix of shape {} (got {})",
             fmt_shape(&ms),
             fmt_shape(&ls)
         )));
@@ -497,13 +508,13 @@ pub fn point_error<'py>(
     matrix: &Any<'py>,
     light_dir: &Any<'py>,
     point: &Any<'py>,
-    near: f64,
-    far: f64,
-    half_fov: f64,
-    res_image: f64,
-    res_s: f64,
-    res_t: f64,
-    aspect: f64,
+    #[pyo3(from_py_with = args::near)] near: f64,
+    #[pyo3(from_py_with = args::far)] far: f64,
+    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
+    #[pyo3(from_py_with = args::res_image)] res_image: f64,
+    #[pyo3(from_py_with = args::res_s)] res_s: f64,
+    #[pyo3(from_py_with = args::res_t)] res_t: f64,
+    #[pyo3(from_py_with = args::aspect)] aspect: f64,
 ) -> PyResult<Any<'py>> {
     let view = view_of(near, far, half_fov, aspect)?;
     let m = from_rows(&values("matrix", matrix, &[4, 4])?);
@@ -535,100 +546,4 @@ pub fn point_error<'py>(
         out.extend_from_slice(&[e.mx, e.mz]);
     }
     to_python(py, [lead, &[2]].concat(), out)
-}
-
-/// The elevations and azimuths of a sweep's grid: el_i = i (π/2)/(E − 1), both ends included
-/// (π/2 alone for E = 1), and az_j = j 2π/A, 2π excluded. Returns ``(el, az)``, 1-D float64.
-#[pyfunction]
-pub fn sweep_angles<'py>(
-    py: Python<'py>,
-    elevations: usize,
-    azimuths: usize,
-) -> PyResult<(Any<'py>, Any<'py>)> {
-    let g = SweepGrid::new(elevations, azimuths).map_err(err)?;
-    let el: Vec<f64> = (0..elevations).map(|i| g.elevation(i)).collect();
-    let az: Vec<f64> = (0..azimuths).map(|j| g.azimuth(j)).collect();
-    Ok((
-        to_python(py, vec![elevations], el)?,
-        to_python(py, vec![azimuths], az)?,
-    ))
-}
-
-/// The storage factor S̄ (summed over the scheme's maps) for every light direction of the
-/// hemisphere (Lloyd 2006 Fig 7's layout): light travels −D with
-/// D = (cos el sin az, sin el, cos el cos az); az = 0 is the light behind the viewer, el = π/2
-/// overhead. The scheme is ``rule`` (as in :func:`warp`) with ``partition`` "single", "uniform",
-/// "log", "practical" (``lambda_``), "adaptive" or "faces" and ``k`` partitions, each map measured
-/// at its partition's vertices. Runs without the GIL, over all cores (rayon; set
-/// ``RAYON_NUM_THREADS`` to limit). Returns an (elevations, azimuths) float64 array.
-#[pyfunction]
-#[pyo3(signature = (near, far, half_fov, rule="minimax", partition="single", k=1, *,
-    elevations=90, azimuths=360, lambda_=None, eta=None, focus=None, near_hint=None,
-    far_hint=None, shadow_distance=None, aspect=1.0))]
-#[allow(clippy::too_many_arguments)]
-pub fn sweep<'py>(
-    py: Python<'py>,
-    near: f64,
-    far: f64,
-    half_fov: f64,
-    rule: &str,
-    partition: &str,
-    k: usize,
-    elevations: usize,
-    azimuths: usize,
-    lambda_: Option<f64>,
-    eta: Option<f64>,
-    focus: Option<f64>,
-    near_hint: Option<f64>,
-    far_hint: Option<f64>,
-    shadow_distance: Option<f64>,
-    aspect: f64,
-) -> PyResult<Any<'py>> {
-    let view = view_of(near, far, half_fov, aspect)?;
-    let part = choice(
-        "partition",
-        partition,
-        &["single", "uniform", "log", "practical", "adaptive", "faces"],
-    )?;
-    if lambda_.is_some() && part != "practical" {
-        return Err(PyValueError::new_err(format!(
-            "lambda_ is not an argument of partition \"{part}\" (only of partition \"practical\")"
-        )));
-    }
-    if part == "single" && k != 1 {
-        return Err(PyValueError::new_err(format!(
-            "k must be 1 with partition \"single\" (got {k})"
-        )));
-    }
-    if part != "single" && focus.is_none() && rule.replace('_', "-") == "tsm" {
-        return Err(PyValueError::new_err(
-            "focus is missing: rule \"tsm\" with partitions needs focus (world units beyond each partition's near plane)",
-        ));
-    }
-    let p = match part {
-        "single" => Partition::Single,
-        "uniform" => Partition::Uniform,
-        "log" => Partition::Log,
-        "practical" => Partition::Practical(lambda_.ok_or_else(|| {
-            PyValueError::new_err("lambda_ is missing (partition \"practical\" needs it)")
-        })?),
-        "adaptive" => Partition::Adaptive,
-        _ => Partition::Faces,
-    };
-    let r = self::rule(
-        &view,
-        rule,
-        RuleParams {
-            eta,
-            focus,
-            near_hint,
-            far_hint,
-            shadow_distance,
-        },
-    )?;
-    let grid = SweepGrid::new(elevations, azimuths).map_err(err)?;
-    let mut out = vec![0.0; grid.len()];
-    py.detach(|| sweep_into(&view, r, p, k, grid, &mut out))
-        .map_err(err)?;
-    to_python(py, vec![elevations, azimuths], out)
 }

@@ -3,6 +3,7 @@
 //! Argument names are the contract's, except Zhang's and Martin–Tan's `lambda`, a Python keyword,
 //! spelled `lambda_`. Angles in radians.
 
+use crate::args;
 use crate::broadcast::finite;
 use crate::broadcast::{count, map, map_fast, map_into, OutSpec, N_PRIME, SCALAR};
 use numpy::PyUntypedArrayMethods;
@@ -413,7 +414,11 @@ elementwise! {
 ///
 /// errors: a 1-D array (each > 0); total: a number > 0. Returns a 1-D float64 array.
 #[pyfunction]
-pub fn allocate_texels<'py>(py: Python<'py>, errors: &Any<'py>, total: f64) -> PyResult<Any<'py>> {
+pub fn allocate_texels<'py>(
+    py: Python<'py>,
+    errors: &Any<'py>,
+    #[pyo3(from_py_with = args::total)] total: f64,
+) -> PyResult<Any<'py>> {
     let e = crate::broadcast::FloatArg::extract("errors", errors)?;
     let values: Vec<f64> = match &e {
         crate::broadcast::FloatArg::Number(_) => {
@@ -457,8 +462,8 @@ pub fn z_partition<'py>(
     py: Python<'py>,
     near: &Any<'py>,
     far: &Any<'py>,
-    k: f64,
-    scheme: &str,
+    #[pyo3(from_py_with = args::k_real)] k: f64,
+    #[pyo3(from_py_with = args::scheme)] scheme: &str,
     lambda_: Option<&Any<'py>>,
     light_angle: Option<&Any<'py>>,
     ratio: Option<&Any<'py>>,
@@ -534,8 +539,8 @@ pub fn z_partition<'py>(
 #[pyfunction]
 pub fn scheme_storage_factor<'py>(
     py: Python<'py>,
-    scheme: &str,
-    light: &str,
+    #[pyo3(from_py_with = args::scheme)] scheme: &str,
+    #[pyo3(from_py_with = args::light)] light: &str,
     near: &Any<'py>,
     far: &Any<'py>,
     half_fov: &Any<'py>,
@@ -609,7 +614,7 @@ pub fn generalized_n_prime<'py>(
     far: &Any<'py>,
     half_fov: &Any<'py>,
     light_angle: &Any<'py>,
-    falloff: &str,
+    #[pyo3(from_py_with = args::falloff)] falloff: &str,
 ) -> PyResult<Any<'py>> {
     let falloff = match choice("falloff", falloff, &["barroso", "zhang"])? {
         "barroso" => tilted::Falloff::Barroso,

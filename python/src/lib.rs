@@ -2,18 +2,36 @@
 //!
 //! The closed forms of the eval contract element-wise on NumPy arrays with broadcasting
 //! (`closed`, over `broadcast`), the shadow-matrix builders, the measurement of any 4×4 matrix
-//! and the hemisphere sweep (`builders`). Every error of the crate becomes `ValueError` with the
-//! crate's message; no function returns NaN.
+//! (`builders`) and the hemisphere sweep (`sweep`). Every argument that is one number or string
+//! is converted by `args`, naming it in any error: `TypeError` for a wrong type, `ValueError` for
+//! a value outside the domain (the crate's message). No function returns NaN or panics.
 
+mod args;
 mod broadcast;
 mod builders;
 mod closed;
+mod sweep;
 
 use pyo3::prelude::*;
+
+/// Acquires NumPy's C API at import, where a failure (a `KeyboardInterrupt` while NumPy's
+/// modules load) is an ordinary exception. rust-numpy otherwise acquires it at the first array
+/// a function makes, runs Python code to do so (NumPy's version check), and panics if that code
+/// raises: a Ctrl-C pending then became a `PanicException`. Once NumPy's modules are imported
+/// (by `get_array_module`, which returns the error), the API capsule and the borrow-checking
+/// capsule are found in `sys.modules` without running Python code, so they cannot fail.
+fn acquire_numpy(py: Python<'_>) -> PyResult<()> {
+    numpy::get_array_module(py)?;
+    let probe = numpy::PyArray1::<f64>::zeros(py, 0, false);
+    // The shared borrow-checking API, acquired at the first borrow.
+    drop(numpy::PyArrayMethods::try_readonly(&probe));
+    Ok(())
+}
 
 /// The native module; `shadow_aliasing/__init__.py` re-exports it.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    acquire_numpy(m.py())?;
     use closed::*;
     m.add_function(wrap_pyfunction!(broadcast::_set_fast_path, m)?)?;
     m.add_function(wrap_pyfunction!(broadcast::_set_wide_simd, m)?)?;
@@ -47,8 +65,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(tsm, m)?)?;
     m.add_function(wrap_pyfunction!(frustum_max, m)?)?;
     m.add_function(wrap_pyfunction!(point_error, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep_angles, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep_angles, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
     m.add("WARP_RULES", builders::WARP_RULES.to_vec())?;
     Ok(())
 }

@@ -1,0 +1,189 @@
+"""The error contract, argument by argument, for every public function: a wrong type raises
+TypeError, a value outside the domain raises ValueError, and either names the argument in
+str(e); no bad input gives another exception class (OverflowError, PanicException, …) or a NaN.
+
+The functions and their arguments are read from the module (``inspect.signature`` of each
+function in ``__all__``) and their kinds from the stubs (``__init__.pyi``); CALLS gives one valid
+call per function, and CONTEXT the other arguments an argument needs to be used at all (``eta``
+only with rule "eta", …). A function or argument missing from these tables fails the test."""
+import ast
+import inspect
+import math
+import os
+import re
+
+import numpy as np
+import pytest
+
+import shadow_aliasing as sa
+
+VIEW = {"near": 1.0, "far": 100.0, "half_fov": 0.5}
+LIGHT = [0.3, -1.0, 0.2]
+M = sa.warp(1.0, 100.0, 0.5, LIGHT, "lispsm")
+
+# One valid call per function (keyword arguments).
+CALLS = {
+    "mx": dict(near=1.0, far=100.0, n_prime=11.0, z=10.0),
+    "mz": dict(VIEW, n_prime=11.0, z=10.0),
+    "max_mx": dict(near=1.0, far=100.0, n_prime=11.0),
+    "max_mz": dict(VIEW, n_prime=11.0),
+    "storage_factor": dict(VIEW, n_prime=11.0),
+    "critical_resolution": dict(VIEW, n_prime=11.0, budget=1e6),
+    "n_prime_lispsm": dict(near=1.0, far=100.0),
+    "n_prime_from_eta": dict(near=1.0, far=100.0, eta=0.2),
+    "eta_from_n_prime": dict(near=1.0, far=100.0, n_prime=11.0),
+    "distribution_g": dict(alpha=100.0, n_warp=11.0, z=10.0),
+    "subdivided_max_error": dict(alpha=100.0, k=2, eta=0.2, half_fov=0.5),
+    "allocate_texels": dict(errors=[1.0, 2.0, 3.0], total=1024.0),
+    "z_partition": dict(near=1.0, far=100.0, k=3, scheme="uniform"),
+    "scheme_storage_factor": dict(scheme="zp_w", light="overhead", k=3, **VIEW),
+    "tilted_mz": dict(VIEW, n_prime=11.0, light_angle=0.7, z=10.0),
+    "generalized_n_prime": dict(VIEW, light_angle=0.7, falloff="barroso"),
+    "gamma_lim": dict(VIEW),
+    "tsm_eta": dict(lambda_=1.0, delta_prime=0.2, xi=-0.6),
+    "zhang_eq": dict(VIEW, lambda_=11.0, light_angle=0.7, y=0.5, z=10.0),
+    "zhang_ep": dict(VIEW, lambda_=11.0, light_angle=0.7, y=0.5, z=10.0),
+    "zhang_eq_local": dict(VIEW, lambda_=11.0, z=10.0),
+    "zhang_ep_local": dict(VIEW, lambda_=11.0, z=10.0),
+    "warp": dict(VIEW, light_dir=LIGHT),
+    "n_prime_for": dict(VIEW, light_dir=LIGHT),
+    "cascades": dict(VIEW, light_dir=LIGHT, k=3),
+    "faces": dict(VIEW, light_dir=LIGHT),
+    "tsm": dict(VIEW, light_dir=LIGHT),
+    "frustum_max": dict(VIEW, matrix=M, light_dir=LIGHT),
+    "point_error": dict(VIEW, matrix=M, light_dir=LIGHT, point=[0.0, 0.0, -10.0]),
+    "sweep_angles": dict(elevations=3, azimuths=4),
+    "sweep": dict(VIEW, elevations=3, azimuths=4),
+}
+
+# The arguments an argument needs beside it to be used (so that its own check is reached).
+_RULE_ARGS = {"eta": {"rule": "eta", "eta": 0.2}, "focus": {"rule": "tsm", "focus": 30.0},
+              "near_hint": {"rule": "filament", "near_hint": 2.0, "far_hint": 50.0},
+              "far_hint": {"rule": "filament", "near_hint": 2.0, "far_hint": 50.0},
+              "shadow_distance": {"rule": "ogre-ortho", "shadow_distance": 300.0}}
+CONTEXT = {
+    "warp": _RULE_ARGS,
+    "n_prime_for": _RULE_ARGS,
+    "cascades": {"eta": _RULE_ARGS["eta"], "focus": {"rule": "tsm", "focus": 1.0},
+                 "lambda_": {"partition": "practical", "lambda_": 0.5}},
+    "sweep": {**_RULE_ARGS, "lambda_": {"partition": "practical", "k": 2, "lambda_": 0.5}},
+    "tsm": {"xi": {"xi": -0.2}, "iterative": {"iterative": 64}},
+    "z_partition": {"lambda_": {"scheme": "practical", "lambda_": 0.5},
+                    "light_angle": {"scheme": "adaptive", "light_angle": 1.0, "ratio": 2.0},
+                    "ratio": {"scheme": "adaptive", "light_angle": 1.0, "ratio": 2.0}},
+    "critical_resolution": {},
+}
+
+RAGGED = [[1.0], [1.0, 2.0]]
+# The crate's errors about a combination of valid values rather than one argument (a frustum
+# whose map cannot be represented in f64, a focus no trapezoid reaches): they name no argument.
+COMBINATION = ("degenerate geometry:", "no solution:", "no closed form:")
+
+
+def _stubs():
+    path = os.path.join(os.path.dirname(sa.__file__), "__init__.pyi")
+    tree = ast.parse(open(path, encoding="utf-8").read())
+    out = {}
+    for f in tree.body:
+        if isinstance(f, ast.FunctionDef):
+            args = f.args.args + f.args.kwonlyargs
+            out[f.name] = {a.arg: ast.unparse(a.annotation) for a in args}
+    return out
+
+
+STUBS = _stubs()
+FUNCTIONS = sorted(n for n in sa.__all__ if callable(getattr(sa, n)))
+
+
+def _kind(annotation):
+    """'str', 'int', 'float' (one number) or 'array' (anything numpy.asarray takes)."""
+    if "Literal" in annotation or "str" in annotation or annotation == "ClipDepth":
+        return "str"
+    if "int" in annotation:
+        return "int"
+    if annotation in ("float", "Optional[float]"):
+        return "float"
+    return "array"
+
+
+def _optional(fn, arg):
+    p = inspect.signature(getattr(sa, fn)).parameters[arg]
+    return p.default is None
+
+
+def _cases():
+    for fn in FUNCTIONS:
+        for arg in inspect.signature(getattr(sa, fn)).parameters:
+            kind = _kind(STUBS[fn][arg])
+            wrong = [("a str", "abc"), ("a ragged list", RAGGED)] if kind != "str" else \
+                [("a float", 1.5), ("a list", ["uniform"])]
+            if not _optional(fn, arg):
+                wrong.append(("None", None))
+            if kind == "float":
+                wrong.append(("an array", np.array([1.0, 2.0])))
+            for label, v in wrong:
+                yield pytest.param(fn, arg, v, TypeError, id=f"{fn}-{arg}-{label}")
+            if kind == "str":
+                bad = [("unknown", "no-such-choice", True)]
+            elif kind == "int":
+                bad = [("-1", -1, True), ("2**40", 2**40, True), ("2**70", 2**70, True),
+                       ("0", 0, False)]
+            else:
+                bad = [("nan", math.nan, True), ("-1", -1, False), ("2**40", 2**40, False),
+                       ("inf", math.inf, False), ("-inf", -math.inf, False),
+                       ("10**400", 10**400, False)]
+                if kind == "array":
+                    bad.append(("[1, nan]", [1.0, math.nan], True))
+            for label, v, must in bad:
+                yield pytest.param(fn, arg, v, ValueError if must else None,
+                                   id=f"{fn}-{arg}-{label}")
+
+
+def test_tables_cover_every_function_and_the_stubs_match():
+    assert sorted(CALLS) == FUNCTIONS
+    for fn in FUNCTIONS:
+        params = list(inspect.signature(getattr(sa, fn)).parameters)
+        assert list(STUBS[fn]) == params, fn
+        required = [a for a, p in inspect.signature(getattr(sa, fn)).parameters.items()
+                    if p.default is inspect.Parameter.empty]
+        assert set(required) <= set(CALLS[fn]), fn
+        for arg in CONTEXT.get(fn, {}):
+            assert arg in params, (fn, arg)
+
+
+def _names(arg):
+    """The argument's name as messages spell it (the eval contract's ``lambda`` for ``lambda_``)."""
+    return {arg, arg.rstrip("_")}
+
+
+def _named(message, names):
+    """Whether one of `names` is a word of `message` (``k`` in "k must …", not in "like")."""
+    return any(re.search(rf"(?<![\w.]){re.escape(n)}(?!\w)", message) for n in names)
+
+
+@pytest.mark.parametrize("fn, arg, value, expected", list(_cases()))
+def test_every_argument_of_every_function(fn, arg, value, expected):
+    kwargs = {**CALLS[fn], **CONTEXT.get(fn, {}).get(arg, {})}
+    f = getattr(sa, fn)
+    f(**kwargs)  # the call is valid before the argument is spoiled
+    kwargs[arg] = value
+    try:
+        out = f(**kwargs)
+    except (TypeError, ValueError) as e:
+        # The class the contract gives: TypeError for a wrong type, ValueError for a value.
+        want = expected or ValueError
+        assert type(e) is want, f"{fn}({arg}={value!r}): {type(e).__name__}: {e}"
+        if expected is None:
+            # A value inside its own domain that the rest of the call cannot take: the crate
+            # names the combination, or another argument of it (a matrix measured over a frustum
+            # it was not built for).
+            others = {n for p in inspect.signature(f).parameters for n in _names(p)}
+            if str(e).startswith(COMBINATION) or _named(str(e), others):
+                return
+        assert _named(str(e), _names(arg)), \
+            f"{fn}({arg}={value!r}): {arg!r} not in str(e): {e}"
+        return
+    assert expected is None, f"{fn}({arg}={value!r}) returned {out!r}, expected {expected}"
+    # Accepted: the value lies in the domain, and the answer holds no NaN.
+    values = out[0] if fn == "faces" else out
+    assert not np.isnan(np.asarray(values, dtype=np.float64)).any(), (fn, arg, value, out)
