@@ -164,6 +164,23 @@ fn an_unwritable_file_is_named_with_the_os_error() {
         "{err}"
     );
     let _ = std::fs::remove_dir_all(&dir);
+    // Issue 21 item 4: an existing file as --out is "not a directory", not "File exists".
+    let dir = temp_dir("out-is-a-file");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("plain");
+    std::fs::write(&file, b"x").unwrap();
+    let (code, out, err) = figures(&file, &["--only", "zhang-fig3"]);
+    assert_eq!((code, out.as_str()), (1, ""), "{err}");
+    assert_eq!(
+        err,
+        format!(
+            "error: out {} is not a directory but an existing file: give --out a directory \
+             (created when missing)\n",
+            file.display()
+        )
+    );
+    assert_eq!(std::fs::read(&file).unwrap(), b"x");
+    let _ = std::fs::remove_dir_all(&dir);
     // procfs accepts no new files, even from root.
     if Path::new("/proc/self").is_dir() {
         let (code, _, err) = figures(Path::new("/proc"), &["--only", "zhang-fig3"]);

@@ -560,7 +560,145 @@ fn write_errors_exit_1_with_a_message() {
             && err.ends_with("(os error 21)\n"),
         "{err}"
     );
+    // Issue 21 item 6: nothing is left behind, neither the main file (it used to be) nor the
+    // other axis nor a temporary: the directory holds the blocking directory alone.
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left, ["s.azimuths.npy"], "{left:?}");
+    // The same with the elevations blocked (renamed first) and an older main file: it is kept.
+    std::fs::remove_dir(&blocked).unwrap();
+    std::fs::create_dir(dir.join("s.elevations.npy")).unwrap();
+    std::fs::write(&file, b"older").unwrap();
+    assert_eq!(run(&args).0, 1);
+    let mut left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    left.sort();
+    assert_eq!(left, ["s.elevations.npy", "s.npy"], "{left:?}");
+    assert_eq!(std::fs::read(&file).unwrap(), b"older");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The base of the `--output` calls of a 3 × 4 npy sweep, `--output` last, its value to add.
+fn npy_3_by_4() -> Vec<&'static str> {
+    log_2(&[
+        "--elevations",
+        "3",
+        "--azimuths",
+        "4",
+        "--format",
+        "npy",
+        "--output",
+    ])
+}
+
+/// Issue 21 item 6: the axes go only beside a regular file. `--output` on a device (here a
+/// link to /dev/null, and /dev/null itself) writes the array into it and no `NAME.elevations.npy`
+/// beside it (it used to create `/dev/null.elevations.npy`); a link to a regular file is
+/// written through, with the axes beside the link.
+#[cfg(target_os = "linux")]
+#[test]
+fn npy_axes_only_beside_a_regular_file() {
+    let dir = temp_dir("devnull");
+    let link = dir.join("null.npy");
+    std::os::unix::fs::symlink("/dev/null", &link).unwrap();
+    for out in [link.to_str().unwrap(), "/dev/null"] {
+        let mut args: Vec<&str> = npy_3_by_4();
+        args.push(out);
+        let (code, stdout, err) = run(&args);
+        assert_eq!((code, stdout.as_str(), err.as_str()), (0, "", ""), "{out}");
+    }
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left, ["null.npy"], "{left:?}");
+    assert!(std::fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    // A link to a regular file: the file gets the array, the link stays a link.
+    let target = dir.join("target.npy");
+    std::fs::write(&target, b"").unwrap();
+    let to_file = dir.join("via.npy");
+    std::os::unix::fs::symlink(&target, &to_file).unwrap();
+    let mut args: Vec<&str> = npy_3_by_4();
+    args.push(to_file.to_str().unwrap());
+    assert_eq!(run(&args).0, 0);
+    assert!(std::fs::symlink_metadata(&to_file)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert_eq!(read_npy(&std::fs::read(&target).unwrap()).0, [3, 4]);
+    assert_eq!(
+        read_npy(&std::fs::read(dir.join("via.elevations.npy")).unwrap()).0,
+        [3]
+    );
+    assert_eq!(
+        read_npy(&std::fs::read(dir.join("via.azimuths.npy")).unwrap()).0,
+        [4]
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 21 item 5: `--ratio` is Barroso & Celes' α (it was fixed at 2, and the advice "lower
+/// the ratio or k" named no flag). A direction without planes fails the sweep, naming that
+/// direction once (it was "degenerate geometry: … no solution: …"), with nothing on stdout;
+/// with the advice followed every direction has a finite value.
+#[test]
+fn adaptive_ratio_and_a_direction_without_planes() {
+    let base = ["--warp", "lispsm", "--partition", "adaptive", "--k", "8"];
+    let grid = ["--elevations", "5", "--azimuths", "8"];
+    let args = sweep_args(&[&base[..], &grid].concat());
+    let (code, err) = run_failing(&args, "");
+    assert_eq!(code, 1);
+    // Elevation 0, azimuth 0: the light along the view (γ = 0), where z₁ = 100/2⁷ = 0.78125.
+    assert!(
+        err.starts_with(
+            "error: no solution: at elevation=0, azimuth=0 (row 0, column 0 of the sweep): \
+             adaptive z-partitioning (Barroso & Celes Eq 19) with ratio=2, light_angle=0, k=8 \
+             puts plane 1 at 0.78125"
+        ) && err.ends_with(": lower the ratio or k\n"),
+        "{err}"
+    );
+    assert!(!err.contains("degenerate"), "{err}");
+    let mut args = sweep_args(&[&base[..], &grid, &["--ratio", "1.5"]].concat());
+    let rows = {
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 0, "{err}");
+        csv_rows(&out)
+    };
+    assert_eq!(rows.len(), 40);
+    assert!(rows.iter().all(|r| r.2.is_finite() && r.2 > 0.0));
+    // Each value is `warp --ratio 1.5` at its direction: behind, the planes of α = 1.5.
+    let v = warp_json(
+        "0.5",
+        "-0,-0,-1",
+        "lispsm",
+        &["--partition", "adaptive", "--k", "8", "--ratio", "1.5"],
+    );
+    assert!(close(
+        rows[0].2,
+        v["storage_factor"].as_f64().unwrap(),
+        1e-12
+    ));
+    // Out of its domain, or with another partition: refused by name before the sweep.
+    args = set(args, "--ratio", "0.5");
+    assert_error(&args, "error: ratio must be greater than 1 (got 0.5)");
+    common::cli::assert_parameter_refused(
+        &sweep_args(&["--warp", "lispsm", "--elevations", "2", "--azimuths", "3"]),
+        ("ratio", "3", "adaptive"),
+        &[
+            ("single", "1"),
+            ("log", "2"),
+            ("practical", "2"),
+            ("faces", "2"),
+        ],
+    );
+    assert!(help("sweep").contains("--ratio"));
 }
 
 /// `--format npy` to a terminal is refused before the sweep runs. The terminal is a

@@ -7,8 +7,8 @@ use serde_json::Value;
 
 mod common;
 use common::cli::{
-    assert_error, assert_infinite_view_refused, assert_lambda_refused, help, run, run_failing, set,
-    warp_args,
+    assert_error, assert_infinite_view_refused, assert_lambda_refused, assert_parameter_refused,
+    help, run, run_failing, set, warp_args,
 };
 use common::close;
 
@@ -305,6 +305,74 @@ fn lambda_is_refused_unless_the_partition_is_practical() {
         sf(&["--partition", "practical"]),
         sf(&["--partition", "practical", "--lambda", "0.5"])
     );
+}
+
+/// Issue 21 item 5: `--ratio` is Barroso & Celes' α of `adaptive` partitions (it was fixed at
+/// 2). With the light along the view (γ = 0), Eq 19 is z_{i−1} = z_i/α from z_k = f: α = 4,
+/// k = 3 over [1, 100] gives 1, 6.25, 25, 100 (by hand), the default α = 2 gives 1, 25, 50, 100.
+#[test]
+fn ratio_sets_the_adaptive_planes() {
+    let ranges = |extra: &[&str]| -> Vec<(f64, f64)> {
+        let args = [&["--partition", "adaptive", "--k", "3"][..], extra].concat();
+        warp_json("0,0,-1", "lispsm", &args)["partitions"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| (num(&p["near"]), num(&p["far"])))
+            .collect()
+    };
+    for (extra, planes) in [
+        (&["--ratio", "4"][..], [1.0, 6.25, 25.0, 100.0]),
+        (&[], [1.0, 25.0, 50.0, 100.0]),
+        (&["--ratio", "2"], [1.0, 25.0, 50.0, 100.0]),
+    ] {
+        let got = ranges(extra);
+        assert_eq!(got.len(), 3, "{extra:?}");
+        for (i, (a, b)) in got.iter().enumerate() {
+            assert!(
+                close(*a, planes[i], 1e-12) && close(*b, planes[i + 1], 1e-12),
+                "{extra:?}: {got:?}"
+            );
+        }
+    }
+    // α = 2 with k = 8 has no planes at γ = 0 (2⁷ = 128 > f/n = 100): the message's advice
+    // names the flag that now exists, and following it works.
+    let mut args = overhead("lispsm", &["--partition", "adaptive", "--k", "8"]);
+    args = set(args, "--light-dir", "0,0,-1");
+    let (code, err) = run_failing(&args, "");
+    assert_eq!(code, 1);
+    assert!(
+        err.starts_with(
+            "error: no solution: adaptive z-partitioning (Barroso & Celes Eq 19) with ratio=2"
+        ) && err.ends_with(": lower the ratio or k\n"),
+        "{err}"
+    );
+    args.extend(["--ratio", "1.5"]);
+    let (code, _, err) = run(&args);
+    assert_eq!(code, 0, "{err}");
+    // Out of its domain, or with another partition: refused by name.
+    for (value, want) in [
+        ("1", "error: ratio must be greater than 1 (got 1)"),
+        ("-2", "error: ratio must be greater than 0 (got -2)"),
+        ("inf", "error: ratio must be a finite number (got inf)"),
+    ] {
+        let args = overhead(
+            "lispsm",
+            &["--partition", "adaptive", "--k", "2", "--ratio", value],
+        );
+        assert_error(&args, want);
+    }
+    assert_parameter_refused(
+        &overhead("lispsm", &[]),
+        ("ratio", "1.5", "adaptive"),
+        &[
+            ("single", "1"),
+            ("log", "2"),
+            ("practical", "2"),
+            ("faces", "2"),
+        ],
+    );
+    assert!(help("warp").contains("--ratio"));
 }
 
 #[test]

@@ -169,3 +169,67 @@ fn bad_scene_arguments_are_errors() {
         assert!(err.starts_with("error:"), "{err}");
     }
 }
+
+/// Issue 21 item 4: errors of the cascades the user gives speak of the user's flags: `--splits`
+/// (not the library's "planes"), which flags cannot be combined and which to drop, Bevy's K.
+/// Issue 21 item 5: `--ratio` reaches the scene's adaptive cascades.
+#[test]
+fn cascade_flags_are_named_in_their_errors() {
+    for (extra, want) in [
+        (
+            &["--splits", "5"][..],
+            "error: splits must hold 2 to 17 depths (got 1)",
+        ),
+        (
+            &["--splits", "1,5,3,100"],
+            "error: splits must be strictly increasing (got 3 after 5 at index 2)",
+        ),
+        (
+            &["--splits", "0,5,100"],
+            "error: splits must be finite and positive (got 0 at index 0)",
+        ),
+        (
+            &["--splits", "1,5,100", "--partition", "log", "--k", "2"],
+            "error: partition log cannot be combined with --splits, which gives the cascades \
+             itself: drop --partition (and --k), or drop --splits",
+        ),
+        (
+            &["--fractions", "0.5", "--k", "3"],
+            "error: k 3 cannot be combined with --fractions, which gives the number of cascades \
+             itself: drop --k, or drop --fractions",
+        ),
+        (
+            &["--bevy", "20,0.1,5,100,0.2"],
+            "error: bevy needs a whole number of cascades K in [1, 16] first (got 20)",
+        ),
+    ] {
+        let (code, err) = run_failing(&warp_args("0.5", "0,-1,0", "lispsm", extra), "");
+        assert_eq!(
+            (code, err.as_str()),
+            (1, format!("{want}\n").as_str()),
+            "{extra:?}"
+        );
+        assert!(!err.contains("planes"), "{err}");
+    }
+    // The adaptive cascades of the scene take --ratio: light along the view (γ = 0), α = 4,
+    // k = 3 over the receivers' depths [1, 100] gives splits at 6.25 and 25 (Eq 19 by hand).
+    let v = warp(
+        "0,0,-1",
+        "lispsm",
+        &[
+            "--partition",
+            "adaptive",
+            "--k",
+            "3",
+            "--ratio",
+            "4",
+            "--receivers",
+            "-1000,-1000,-100,1000,1000,-1",
+        ],
+    );
+    let parts = v["partitions"].as_array().unwrap();
+    assert_eq!(parts.len(), 3);
+    for (p, (a, b)) in parts.iter().zip([(1.0, 6.25), (6.25, 25.0), (25.0, 100.0)]) {
+        assert!(close(&p["split"][0], a) && close(&p["split"][1], b), "{p}");
+    }
+}

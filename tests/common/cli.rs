@@ -2,7 +2,7 @@
 //! (`run`, `run_with_stdin`, `run_bytes`, `run_to_full`), the argument vectors most calls share
 //! (`view_args`, `warp_args`, `set`), JSON output (`run_json`, `warp_json`), `help`, and the
 //! checks of a refused call (`run_failing`, `assert_error`, `assert_infinite_view_refused`,
-//! `assert_lambda_refused`).
+//! `assert_lambda_refused`, `assert_parameter_refused`).
 
 use serde_json::Value;
 use std::io::Write;
@@ -159,13 +159,24 @@ pub fn assert_infinite_view_refused(command: &str, extra: &[&str]) {
 /// `--lambda 0.3` after `base` with each of `partitions` (`--partition` name, `--k`) is refused:
 /// exit 1, nothing on stdout, and the message that λ belongs to the practical partition only.
 pub fn assert_lambda_refused(base: &[&str], partitions: &[(&str, &str)]) {
+    assert_parameter_refused(base, ("lambda", "0.3", "practical"), partitions);
+}
+
+/// `--NAME VALUE` after `base` with each of `partitions` (`--partition` name, `--k`) is refused:
+/// exit 1, nothing on stdout, and the message that NAME belongs to `--partition OWNER` only.
+pub fn assert_parameter_refused(
+    base: &[&str],
+    (name, value, owner): (&str, &str, &str),
+    partitions: &[(&str, &str)],
+) {
+    let flag = format!("--{name}");
     for (partition, k) in partitions {
         let mut args = base.to_vec();
-        args.extend(["--partition", partition, "--k", k, "--lambda", "0.3"]);
+        args.extend(["--partition", partition, "--k", k, &flag, value]);
         assert_error(
             &args,
             &format!(
-                "error: lambda is not an argument of --partition {partition} (only of --partition practical)"
+                "error: {name} is not an argument of --partition {partition} (only of --partition {owner})"
             ),
         );
     }

@@ -39,7 +39,7 @@ pub enum Command {
     Warp(WarpArgs),
     /// The storage factor over the hemisphere of light directions, as CSV or a NumPy array.
     #[command(
-        after_help = "Examples:\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm --elevations 90 --azimuths 360 > sweep.csv\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm --format npy --output sweep.npy\n\nnpy: float64 array of shape (E, A), row i elevation i, column j azimuth j; with --output sweep.npy\nalso sweep.elevations.npy (E) and sweep.azimuths.npy (A), radians.\n\nColumns: elevation,azimuth,storage_factor (radians). Elevation rows i = 0..E-1 at i·(π/2)/(E-1)\n(0 the horizon, π/2 overhead; both ends included; E = 1 is the zenith); azimuth columns j = 0..A-1 at j·2π/A\n(0 behind the viewer, π in front; 2π excluded)."
+        after_help = "Examples:\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm --elevations 90 --azimuths 360 > sweep.csv\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm --format npy --output sweep.npy\n\nnpy: float64 array of shape (E, A), row i elevation i, column j azimuth j; with --output sweep.npy\nalso sweep.elevations.npy (E) and sweep.azimuths.npy (A), radians (only beside a regular file:\nnot beside /dev/null). Files are written whole or not at all.\n\nA direction without a solution (adaptive planes that do not exist: lower --ratio or --k) fails\nthe sweep, naming the first such direction.\n\nColumns: elevation,azimuth,storage_factor (radians). Elevation rows i = 0..E-1 at i·(π/2)/(E-1)\n(0 the horizon, π/2 overhead; both ends included; E = 1 is the zenith); azimuth columns j = 0..A-1 at j·2π/A\n(0 behind the viewer, π in front; 2π excluded)."
     )]
     Sweep(SweepArgs),
 }
@@ -132,6 +132,13 @@ pub struct SchemeArgs {
     /// `--partition practical`).
     #[arg(long, allow_hyphen_values = true)]
     pub lambda: Option<f64>,
+    /// Barroso & Celes' far-partition ratio α > 1 of `adaptive` partitions: the depth ratio
+    /// f_i/n_i of partitions 2..k when the light is parallel to the view (default 2, their
+    /// Fig 9; only with `--partition adaptive`). The planes exist only while α is small enough
+    /// for far/near at the light's angle (α^(k-1) < far/near with the light along the view):
+    /// lower it, or --k, when told there is no solution.
+    #[arg(long, allow_hyphen_values = true)]
+    pub ratio: Option<f64>,
 }
 
 /// Warp rules by name.
@@ -182,7 +189,8 @@ pub enum PartitionName {
     Log,
     /// The λ-blend of uniform and logarithmic (`--lambda`).
     Practical,
-    /// Barroso & Celes' adaptive z-partitions (Eq 19), γ from the light, α = 2.
+    /// Barroso & Celes' adaptive z-partitions (Eq 19), γ from the light, α from `--ratio`
+    /// (default 2).
     Adaptive,
     /// Face partitions (Lloyd 2006 §5.1), with `--k` z-partitions inside each face.
     Faces,
@@ -270,7 +278,8 @@ pub struct SweepArgs {
     #[arg(long, value_enum, default_value_t = SweepFormat::Csv)]
     pub format: SweepFormat,
     /// Write to FILE instead of standard output ("-" is standard output). With `--format npy`,
-    /// the axes go beside it: FILE.npy gives FILE.elevations.npy and FILE.azimuths.npy.
+    /// the axes go beside a regular FILE: FILE.npy gives FILE.elevations.npy and
+    /// FILE.azimuths.npy. Files are replaced whole or left as they were.
     #[arg(long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 }

@@ -2,8 +2,8 @@
 
 use crate::args::{Cli, Command, EvalArgs, FiguresArgs, Format, SweepArgs, SweepFormat, WarpArgs};
 use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
-use crate::scheme::{k, partition, partitions, rule, Lights, PartitionReport};
-use crate::sweep_out::{self, write_to, Sink, WriteError};
+use crate::scheme::{k, partition, partitions, rule, value_name, Lights, PartitionReport};
+use crate::sweep_out::{self, Sink, WriteError};
 use glam::DVec3;
 use shadow_aliasing::scheme::sweep::SweepGrid;
 use shadow_aliasing::{LightAngle, ViewFrustum};
@@ -221,15 +221,17 @@ fn warp_text(a: &WarpArgs, gamma: f64, total: f64, parts: &[PartitionReport]) ->
     s
 }
 
-/// The command-line spelling of a value (`lispsm-fixed`).
-fn value_name<T: clap::ValueEnum>(v: &T) -> String {
-    v.to_possible_value()
-        .map_or_else(|| "?".to_string(), |p| p.get_name().to_string())
-}
-
 fn figures(a: &FiguresArgs) -> ExitCode {
     use shadow_aliasing::plot::{self, FIGURES};
     use std::io::IsTerminal;
+    // An existing non-directory: say so (creating the directory would fail with "File exists").
+    if std::fs::metadata(&a.out).is_ok_and(|m| !m.is_dir()) {
+        return fail(format!(
+            "out {} is not a directory but an existing file: give --out a directory (created \
+             when missing)",
+            a.out.display()
+        ));
+    }
     let format = match a.format {
         Format::Png => plot::Format::Png,
         Format::Svg => plot::Format::Svg,
@@ -336,27 +338,23 @@ fn sweep(a: &SweepArgs) -> ExitCode {
 }
 
 /// Writes a sweep's result in `--format` to `--output`; with `--output FILE --format npy`, the
-/// axes beside it.
+/// axes beside it when FILE is (or will be) a regular file, all or nothing
+/// ([`sweep_out::write_output`]).
 fn write_sweep(a: &SweepArgs, sink: &Sink, grid: SweepGrid, values: &[f64]) -> ExitCode {
-    let done = match a.format {
-        SweepFormat::Csv => write_to(sink, |w| sweep_out::write_csv(w, grid, values)),
-        SweepFormat::Npy => {
-            let shape = [grid.elevations(), grid.azimuths()];
-            write_to(sink, |w| sweep_out::write_npy(w, &shape, values)).and_then(|()| {
-                let Sink::File(path) = sink else {
-                    return Ok(());
-                };
-                let (el_path, az_path) = sweep_out::axis_paths(path);
-                let el: Vec<f64> = (0..grid.elevations()).map(|i| grid.elevation(i)).collect();
-                let az: Vec<f64> = (0..grid.azimuths()).map(|j| grid.azimuth(j)).collect();
-                write_to(&Sink::File(el_path), |w| {
-                    sweep_out::write_npy(w, &[el.len()], &el)
-                })?;
-                write_to(&Sink::File(az_path), |w| {
-                    sweep_out::write_npy(w, &[az.len()], &az)
-                })
-            })
+    let shape = [grid.elevations(), grid.azimuths()];
+    let el: Vec<f64> = (0..grid.elevations()).map(|i| grid.elevation(i)).collect();
+    let az: Vec<f64> = (0..grid.azimuths()).map(|j| grid.azimuth(j)).collect();
+    let csv = |w: &mut dyn Write| sweep_out::write_csv(w, grid, values);
+    let npy = |w: &mut dyn Write| sweep_out::write_npy(w, &shape, values);
+    let el_npy = |w: &mut dyn Write| sweep_out::write_npy(w, &[el.len()], &el);
+    let az_npy = |w: &mut dyn Write| sweep_out::write_npy(w, &[az.len()], &az);
+    let done = match (a.format, sink) {
+        (SweepFormat::Csv, _) => sweep_out::write_output(sink, &csv, &[]),
+        (SweepFormat::Npy, Sink::File(path)) => {
+            let (el_path, az_path) = sweep_out::axis_paths(path);
+            sweep_out::write_output(sink, &npy, &[(el_path, &el_npy), (az_path, &az_npy)])
         }
+        (SweepFormat::Npy, Sink::Stdout) => sweep_out::write_output(sink, &npy, &[]),
     };
     match done {
         Ok(()) => ExitCode::SUCCESS,

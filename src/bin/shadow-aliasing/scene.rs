@@ -4,13 +4,13 @@
 
 use crate::args::{PartitionName, WarpArgs};
 use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
-use crate::scheme::{k, rule, Lights, DEFAULT_LAMBDA};
+use crate::scheme::{k, ratio, rule, value_name, Lights, DEFAULT_LAMBDA};
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::frame::{
     frame, Aabb, Bound, Camera, CascadeSplits, Focus, FrameInput, FrameScheme, LightCase,
 };
-use shadow_aliasing::scheme::{face_rule, ADAPTIVE_RATIO};
+use shadow_aliasing::scheme::face_rule;
 use shadow_aliasing::{Error, LightAngle, ViewFrustum};
 use std::fmt::Write as _;
 
@@ -52,6 +52,42 @@ fn light_name(l: LightCase) -> &'static str {
     }
 }
 
+/// `--splits`, `--fractions` or `--bevy` give the cascades, their count included: refused with
+/// `--partition` (other than single) or `--k`, naming both flags and which to drop.
+fn cascades_given_once(a: &WarpArgs) -> Result<(), Error> {
+    let (sc, sch) = (&a.scene, &a.scheme);
+    let flag = if sc.splits.is_some() {
+        "--splits"
+    } else if sc.fractions.is_some() {
+        "--fractions"
+    } else if sc.bevy.is_some() {
+        "--bevy"
+    } else {
+        return Ok(());
+    };
+    if sch.partition != PartitionName::Single {
+        return Err(Error::invalid(
+            "partition",
+            format!(
+                "{} cannot be combined with {flag}, which gives the cascades itself: drop \
+                 --partition (and --k), or drop {flag}",
+                value_name(&sch.partition)
+            ),
+        ));
+    }
+    if sch.k != 1 {
+        return Err(Error::invalid(
+            "k",
+            format!(
+                "{} cannot be combined with {flag}, which gives the number of cascades itself: \
+                 drop --k, or drop {flag}",
+                sch.k
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// The text or JSON of `warp` with a scene.
 pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
     let c = &a.camera;
@@ -59,6 +95,7 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
     let light = DVec3::from_array(a.light_dir);
     let sc = &a.scene;
     let sch = &a.scheme;
+    cascades_given_once(a)?;
     let r = rule(&view, Lights::One(light), sch)?;
     let k = k(sch)?;
     let overlap = sc.overlap.unwrap_or(0.0);
@@ -87,8 +124,11 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
         })?;
         if !((1.0..=16.0).contains(&kb) && kb.fract() == 0.0) {
             return Err(Error::invalid(
-                "k",
-                format!("must lie in [1, 16] (got {})", sig(kb)),
+                "bevy",
+                format!(
+                    "needs a whole number of cascades K in [1, 16] first (got {})",
+                    sig(kb)
+                ),
             ));
         }
         bevy = CascadeSplits::Bevy {
@@ -102,13 +142,6 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
     } else {
         None
     };
-    let has_splits = splits.is_some();
-    if has_splits && sch.partition != PartitionName::Single {
-        return Err(Error::invalid(
-            "partition",
-            "is single when --splits, --fractions or --bevy give the cascades",
-        ));
-    }
     let fs = match (splits, sch.partition) {
         (Some(s), _) => FrameScheme::Cascades { splits: s, rule: r },
         (None, PartitionName::Single) => {
@@ -137,7 +170,7 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
         (None, PartitionName::Adaptive) => FrameScheme::Cascades {
             splits: scheme_of(SplitScheme::Adaptive {
                 light_angle: LightAngle::from_light_dir(light)?.radians(),
-                ratio: ADAPTIVE_RATIO,
+                ratio: ratio(sch),
             }),
             rule: r,
         },
@@ -161,7 +194,14 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
     if let Some([z0, z1]) = sc.depth_range {
         input = input.depth_range(z0, z1);
     }
-    let f = frame(&input)?;
+    // The cascades' planes are the user's --splits: named so.
+    let f = frame(&input).map_err(|e| match e {
+        Error::InvalidArgument {
+            name: "planes",
+            reason,
+        } if sc.splits.is_some() => Error::invalid("splits", reason),
+        e => e,
+    })?;
     Ok(if a.json { json(&f) } else { text(a, &f) })
 }
 

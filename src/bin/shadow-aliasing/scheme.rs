@@ -50,9 +50,15 @@ pub fn partition(a: &SchemeArgs) -> Partition {
         PartitionName::Uniform => Partition::Uniform,
         PartitionName::Log => Partition::Log,
         PartitionName::Practical => Partition::Practical(a.lambda.unwrap_or(DEFAULT_LAMBDA)),
-        PartitionName::Adaptive => Partition::Adaptive,
+        PartitionName::Adaptive => Partition::AdaptiveRatio(ratio(a)),
         PartitionName::Faces => Partition::Faces,
     }
+}
+
+/// `--ratio`, or Barroso & Celes' α = 2 when it is not given (validated by the library, which
+/// names `ratio`).
+pub fn ratio(a: &SchemeArgs) -> f64 {
+    a.ratio.unwrap_or(ADAPTIVE_RATIO)
 }
 
 /// `--k` as the library's count: 1 with `single`, otherwise in [1, 16] (a negative or zero
@@ -77,15 +83,15 @@ pub fn k(a: &SchemeArgs) -> Result<usize, Error> {
 }
 
 /// The depth range of the shallowest of the adaptive z-partitions (Barroso Eq 19) for one light
-/// angle γ.
-fn shallowest_adaptive(n: f64, f: f64, k: usize, gamma: f64) -> Result<f64, Error> {
+/// angle γ and ratio α.
+fn shallowest_adaptive(n: f64, f: f64, k: usize, gamma: f64, ratio: f64) -> Result<f64, Error> {
     let s = z_splits(
         n,
         f,
         k,
         SplitScheme::Adaptive {
             light_angle: gamma,
-            ratio: ADAPTIVE_RATIO,
+            ratio,
         },
     )?;
     Ok(shallowest(&s))
@@ -111,7 +117,7 @@ fn shallowest(s: &Splits) -> f64 {
 /// partitions do not exist (Eq 19's planes not increasing) is left to the sweep, which reports
 /// it with the direction.
 fn shallowest_partition(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> Result<f64, Error> {
-    let (n, f, k) = (view.near(), view.far(), k(a)?);
+    let (n, f, k, ratio) = (view.near(), view.far(), k(a)?, ratio(a));
     let split = match a.partition {
         PartitionName::Single | PartitionName::Faces => return Ok(f - n),
         PartitionName::Uniform => SplitScheme::Uniform,
@@ -122,7 +128,7 @@ fn shallowest_partition(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> R
         PartitionName::Adaptive => {
             return match lights {
                 Lights::One(l) => {
-                    shallowest_adaptive(n, f, k, LightAngle::from_light_dir(l)?.radians())
+                    shallowest_adaptive(n, f, k, LightAngle::from_light_dir(l)?.radians(), ratio)
                 }
                 Lights::Sweep(grid) => {
                     let mut min = f64::INFINITY;
@@ -131,7 +137,7 @@ fn shallowest_partition(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> R
                         for j in 0..grid.azimuths() {
                             let l = light_dir_from_angles(grid.elevation(i), grid.azimuth(j));
                             match LightAngle::from_light_dir(l)
-                                .and_then(|g| shallowest_adaptive(n, f, k, g.radians()))
+                                .and_then(|g| shallowest_adaptive(n, f, k, g.radians(), ratio))
                             {
                                 Ok(d) => min = min.min(d),
                                 Err(e) => {
@@ -149,6 +155,12 @@ fn shallowest_partition(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> R
         }
     };
     Ok(shallowest(&z_splits(n, f, k, split)?))
+}
+
+/// The command-line spelling of a value (`lispsm-fixed`).
+pub fn value_name<T: ValueEnum>(v: &T) -> String {
+    v.to_possible_value()
+        .map_or_else(|| "?".to_string(), |p| p.get_name().to_string())
 }
 
 /// The library's rule for `--warp` (and its parameters), checking that every parameter given is
@@ -172,17 +184,21 @@ pub fn rule(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> Result<WarpRu
             "is only used by --warp ogre-ortho",
         ));
     }
-    if a.lambda.is_some() && a.partition != PartitionName::Practical {
-        // eval's wording for z_partition's lambda with another scheme.
-        return Err(Error::invalid(
-            "lambda",
-            format!(
-                "is not an argument of --partition {} (only of --partition practical)",
-                a.partition
-                    .to_possible_value()
-                    .map_or_else(|| "?".to_string(), |p| p.get_name().to_string())
-            ),
-        ));
+    // eval's wording for z_partition's lambda with another scheme.
+    for (name, given, owner) in [
+        ("lambda", a.lambda.is_some(), PartitionName::Practical),
+        ("ratio", a.ratio.is_some(), PartitionName::Adaptive),
+    ] {
+        if given && a.partition != owner {
+            return Err(Error::invalid(
+                name,
+                format!(
+                    "is not an argument of --partition {} (only of --partition {})",
+                    value_name(&a.partition),
+                    value_name(&owner)
+                ),
+            ));
+        }
     }
     k(a)?;
     Ok(match a.warp {

@@ -27,41 +27,113 @@ impl Sink {
             Some(p) => Sink::File(p.to_path_buf()),
         }
     }
-
-    /// The sink's name in an error message: "to standard output" or the file's path.
-    fn describe(&self) -> String {
-        match self {
-            Sink::Stdout => "to standard output".to_string(),
-            Sink::File(p) => p.display().to_string(),
-        }
-    }
 }
 
 /// A failed write, as the one line the user sees: `cannot write sweep.npy: …`.
 #[derive(Debug)]
 pub struct WriteError(pub String);
 
-/// Runs `body` on the sink's writer and flushes it. A closed standard output (the reader has
-/// gone) is not an error, as for the other subcommands.
-pub fn write_to(
+/// What writes one output's bytes.
+pub type Body<'a> = dyn Fn(&mut dyn Write) -> io::Result<()> + 'a;
+
+/// Writes `main` to the sink and, beside a regular file, each of `beside` (its axes) too.
+///
+/// - Standard output: `main` only. A closed standard output (the reader has gone) is not an
+///   error, as for the other subcommands.
+/// - A path that exists and is not a regular file (a device such as `/dev/null` or `/dev/full`,
+///   a FIFO; symbolic links followed): `main` is written into it directly and `beside` is not
+///   written (no `/dev/null.elevations.npy`).
+/// - A regular file, or a path that does not exist yet: all or nothing. Each output is written
+///   to a temporary file beside its destination (`main` first, so that its errors name it), then
+///   the temporaries are renamed onto their destinations, `beside` first and `main` last; on any
+///   failure every temporary and every destination already renamed are removed, so nothing
+///   half-written or out of step is left.
+pub fn write_output(
     sink: &Sink,
-    body: impl FnOnce(&mut dyn Write) -> io::Result<()>,
+    main: &Body<'_>,
+    beside: &[(PathBuf, &Body<'_>)],
 ) -> Result<(), WriteError> {
-    let err = |e: io::Error| WriteError(format!("cannot write {}: {e}", sink.describe()));
+    let err = |p: &Path, e: io::Error| WriteError(format!("cannot write {}: {e}", p.display()));
     match sink {
         Sink::Stdout => {
             let mut out = io::stdout().lock();
-            match body(&mut out).and_then(|()| out.flush()) {
+            match main(&mut out).and_then(|()| out.flush()) {
                 Ok(()) => Ok(()),
                 Err(e) if e.kind() == io::ErrorKind::BrokenPipe => Ok(()),
-                Err(e) => Err(err(e)),
+                Err(e) => Err(WriteError(format!("cannot write to standard output: {e}"))),
             }
         }
+        Sink::File(p) if std::fs::metadata(p).is_ok_and(|m| !m.is_file()) => {
+            let mut f = std::fs::File::create(p).map_err(|e| err(p, e))?;
+            main(&mut f).and_then(|()| f.flush()).map_err(|e| err(p, e))
+        }
         Sink::File(p) => {
-            let mut f = std::fs::File::create(p).map_err(err)?;
-            body(&mut f).and_then(|()| f.flush()).map_err(err)
+            let mut files: Vec<(PathBuf, &Body<'_>)> = vec![(through_link(p), main)];
+            files.extend_from_slice(beside);
+            write_all_or_nothing(&files).map_err(|(i, e)| {
+                // The user's name for the main file, not its link's target.
+                err(if i == 0 { p } else { &files[i].0 }, e)
+            })
         }
     }
+}
+
+/// The file a symbolic link at `p` points to (so that the rename replaces the file, not the
+/// link), or `p` itself.
+fn through_link(p: &Path) -> PathBuf {
+    match std::fs::symlink_metadata(p) {
+        Ok(m) if m.file_type().is_symlink() => {
+            std::fs::canonicalize(p).unwrap_or_else(|_| p.to_path_buf())
+        }
+        _ => p.to_path_buf(),
+    }
+}
+
+/// The temporary file of `dest`: `.NAME.PID.tmp` in the same directory (so that the rename
+/// stays within one file system).
+fn temporary(dest: &Path) -> PathBuf {
+    let mut name = std::ffi::OsString::from(".");
+    name.push(dest.file_name().unwrap_or(dest.as_os_str()));
+    name.push(format!(".{}.tmp", std::process::id()));
+    dest.with_file_name(name)
+}
+
+/// Writes every `(destination, body)` to its temporary file, then renames them, the first
+/// (the main file) last; on a failure removes what it wrote and returns the failing file's index
+/// with the error.
+fn write_all_or_nothing(files: &[(PathBuf, &Body<'_>)]) -> Result<(), (usize, io::Error)> {
+    let temps: Vec<PathBuf> = files.iter().map(|(d, _)| temporary(d)).collect();
+    let remove = |paths: &mut dyn Iterator<Item = &PathBuf>| {
+        for p in paths {
+            let _ = std::fs::remove_file(p);
+        }
+    };
+    for (i, ((_, body), tmp)) in files.iter().zip(&temps).enumerate() {
+        let written = std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(tmp)
+            .and_then(|mut f| body(&mut f).and_then(|()| f.flush()));
+        if let Err(e) = written {
+            // The failing temporary too, if it was created.
+            remove(&mut temps[..=i].iter());
+            return Err((i, e));
+        }
+    }
+    let order: Vec<usize> = (1..files.len()).chain([0]).collect();
+    for (n, &i) in order.iter().enumerate() {
+        if let Err(e) = std::fs::rename(&temps[i], &files[i].0) {
+            let (done, left) = order.split_at(n);
+            remove(
+                &mut left
+                    .iter()
+                    .map(|&j| &temps[j])
+                    .chain(done.iter().map(|&j| &files[j].0)),
+            );
+            return Err((i, e));
+        }
+    }
+    Ok(())
 }
 
 /// Appends the shortest decimal that parses back to `v` (the formatter serde_json uses, so the
