@@ -15,7 +15,7 @@ use numpy::{
     AllowTypeChange, PyArrayDescrMethods, PyArrayDyn, PyArrayLikeDyn, PyUntypedArray,
     PyUntypedArrayMethods,
 };
-use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
+use pyo3::exceptions::{PyMemoryError, PyOverflowError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyFloat, PyInt};
 use rayon::prelude::*;
@@ -142,6 +142,40 @@ pub fn broadcast_shapes(names: &[&str], shapes: &[Vec<usize>]) -> PyResult<Vec<u
         }
     }
     Ok(out)
+}
+
+/// The `MemoryError` of a shape with more elements than memory holds.
+fn too_large(shape: &[usize]) -> PyErr {
+    PyMemoryError::new_err(format!(
+        "an array of shape {} does not fit in memory",
+        fmt_shape(shape)
+    ))
+}
+
+/// The number of elements of `shape`, or `MemoryError` if it overflows.
+pub fn elements(shape: &[usize]) -> PyResult<usize> {
+    shape
+        .iter()
+        .try_fold(1usize, |n, &d| n.checked_mul(d))
+        .ok_or_else(|| too_large(shape))
+}
+
+/// Room for `len` float64 values (for an array of `shape`), or `MemoryError`. A NumPy broadcast
+/// view (`numpy.broadcast_to`) describes any number of elements without holding them, and the
+/// broadcast of several arguments multiplies their lengths: a copy or a result of that size
+/// must fail as Python's `MemoryError`, as NumPy's own allocations do, not abort the process.
+pub fn buffer(len: usize, shape: &[usize]) -> PyResult<Vec<f64>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(len).map_err(|_| too_large(shape))?;
+    Ok(v)
+}
+
+/// The values of an array argument in C order, copied into a [`buffer`].
+pub fn values_of(a: &PyArrayLikeDyn<'_, f64, AllowTypeChange>) -> PyResult<Vec<f64>> {
+    let view = a.as_array();
+    let mut v = buffer(view.len(), view.shape())?;
+    v.extend(view.iter().copied());
+    Ok(v)
 }
 
 /// A shape as Python prints it: `()`, `(3,)`, `(2, 3)`.
@@ -346,7 +380,14 @@ where
     }
     let shapes: Vec<Vec<usize>> = conv.iter().map(FloatArg::shape).collect();
     let shape = broadcast_shapes(&names, &shapes)?;
-    let n: usize = shape.iter().product();
+    let width = spec.width.unwrap_or(1);
+    // The result's room first: a broadcast can describe more elements than memory holds.
+    let mut out_shape = shape.clone();
+    out_shape.extend(spec.width);
+    let n = elements(&shape)?;
+    let len = elements(&out_shape)?;
+    let mut out = buffer(len, &out_shape)?;
+    out.resize(len, 0.0);
     // Arguments that are neither one value nor already C-contiguous in the broadcast shape are
     // copied out in C order (NumPy's broadcast views, transposes, slices with steps).
     let mut owned: Vec<Option<Vec<f64>>> = Vec::with_capacity(N);
@@ -363,7 +404,9 @@ where
                     let b = view.broadcast(IxDyn(&shape)).ok_or_else(|| {
                         PyValueError::new_err("internal error: broadcast of a checked shape")
                     })?;
-                    Some(b.iter().copied().collect())
+                    let mut copy = buffer(n, &shape)?;
+                    copy.extend(b.iter().copied());
+                    Some(copy)
                 }
             }
         });
@@ -386,8 +429,6 @@ where
             }
         });
     }
-    let width = spec.width.unwrap_or(1);
-    let mut out = vec![0.0f64; n * width];
     // The fast kernel writes one number per element.
     let g = g.filter(|_| width == 1);
     let failure = py.detach(|| run(&data, &mut out, width, spec.allow_inf, &f, g.as_ref()));
@@ -398,10 +439,6 @@ where
         } else {
             format!("{msg} (at index {})", fmt_index(i, &shape))
         }));
-    }
-    let mut out_shape = shape;
-    if let Some(w) = spec.width {
-        out_shape.push(w);
     }
     to_python(py, out_shape, out)
 }

@@ -4,7 +4,7 @@
 //! `clip = M @ (x, y, z, 1)`: eye space (right-handed, looking down −Z, Y up) → light clip space.
 
 use crate::args;
-use crate::broadcast::{fmt_shape, to_python, value_error, FloatArg};
+use crate::broadcast::{buffer, fmt_shape, to_python, value_error, values_of, FloatArg};
 use crate::closed::choice;
 use glam::{DMat4, DVec3};
 use numpy::PyUntypedArrayMethods;
@@ -72,7 +72,7 @@ fn values<'py>(name: &str, ob: &Any<'py>, shape: &[usize]) -> PyResult<Vec<f64>>
                     fmt_shape(a.shape())
                 )));
             }
-            Ok(a.as_array().iter().copied().collect())
+            values_of(&a)
         }
     }
 }
@@ -424,7 +424,7 @@ fn shape_of(name: &str, ob: &Any<'_>) -> PyResult<(Vec<usize>, Vec<f64>)> {
         FloatArg::Number(_) => Err(PyValueError::new_err(format!(
             "{name} must be an array (got a number)"
         ))),
-        FloatArg::Array(a) => Ok((a.shape().to_vec(), a.as_array().iter().copied().collect())),
+        FloatArg::Array(a) => Ok((a.shape().to_vec(), values_of(&a)?)),
     }
 }
 
@@ -472,8 +472,9 @@ pub fn frustum_max<'py>(
             fmt_shape(&ls)
         )));
     };
-    let count: usize = lead.iter().product();
-    let mut out = Vec::with_capacity(3 * count);
+    let count = mv.len() / 16;
+    let out_shape = [lead, &[3]].concat();
+    let mut out = buffer(3 * count, &out_shape)?;
     for i in 0..count {
         let m = from_rows(&mv[16 * i..16 * i + 16]);
         let o = if per_matrix { 3 * i } else { 0 };
@@ -492,7 +493,7 @@ pub fn frustum_max<'py>(
             })?;
         out.extend_from_slice(&[r.max_mx, r.max_mz, r.storage_factor]);
     }
-    to_python(py, [lead, &[3]].concat(), out)
+    to_python(py, out_shape, out)
 }
 
 /// The perspective aliasing error ``[m_x, m_z]`` of one shadow matrix at eye-space points
@@ -529,7 +530,8 @@ pub fn point_error<'py>(
         )));
     }
     let lead = &ps[..ps.len() - 1];
-    let mut out = Vec::with_capacity(pv.len() / 3 * 2);
+    let out_shape = [lead, &[2]].concat();
+    let mut out = buffer(pv.len() / 3 * 2, &out_shape)?;
     for (i, p) in pv.chunks_exact(3).enumerate() {
         let e = measure_point_error(&view, &shadow, DVec3::new(p[0], p[1], p[2]), res).map_err(
             |e| {
@@ -545,5 +547,5 @@ pub fn point_error<'py>(
         )?;
         out.extend_from_slice(&[e.mx, e.mz]);
     }
-    to_python(py, [lead, &[2]].concat(), out)
+    to_python(py, out_shape, out)
 }

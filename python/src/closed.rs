@@ -433,7 +433,7 @@ pub fn allocate_texels<'py>(
                     crate::broadcast::fmt_shape(a.shape())
                 )));
             }
-            a.as_array().iter().copied().collect()
+            crate::broadcast::values_of(a)?
         }
     };
     if let Some((i, v)) = values.iter().enumerate().find(|(_, v)| !v.is_finite()) {
@@ -441,7 +441,8 @@ pub fn allocate_texels<'py>(
             "errors must hold finite numbers (errors[{i}] is {v})"
         )));
     }
-    let mut out = vec![0.0; values.len()];
+    let mut out = crate::broadcast::buffer(values.len(), &[values.len()])?;
+    out.resize(values.len(), 0.0);
     subdivided::allocate_texels(&values, total, &mut out)
         .map_err(|e| crate::broadcast::value_error(&e))?;
     crate::broadcast::to_python(py, vec![out.len()], out)

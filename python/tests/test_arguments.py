@@ -11,6 +11,8 @@ import inspect
 import math
 import os
 import re
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -187,3 +189,46 @@ def test_every_argument_of_every_function(fn, arg, value, expected):
     # Accepted: the value lies in the domain, and the answer holds no NaN.
     values = out[0] if fn == "faces" else out
     assert not np.isnan(np.asarray(values, dtype=np.float64)).any(), (fn, arg, value, out)
+
+
+# Shapes with more elements than memory holds, which cost NumPy nothing to describe: a broadcast
+# view of one value (2**40 elements), and two arguments whose broadcast has 2**80. Each must raise
+# MemoryError, as NumPy's own allocations do; before, the first aborted the interpreter
+# ("memory allocation of 8796093022208 bytes failed") and the second raised an "internal error".
+# In a fresh interpreter whose address space is capped at 64 GiB, so that no allocation of that
+# size can succeed whatever the machine's overcommit policy.
+HUGE = r"""
+import resource, sys
+resource.setrlimit(resource.RLIMIT_AS, (64 << 30, 64 << 30))
+import numpy as np
+import shadow_aliasing as sa
+one = np.broadcast_to(np.ones(1), (2**40,))
+wide = np.broadcast_to(np.ones((1, 1)), (2**40, 1))
+tall = np.broadcast_to(np.full((1, 1), 10.0), (1, 2**40))
+calls = {
+    "closed form": lambda: sa.n_prime_lispsm(one, 1e3),
+    "broadcast of two": lambda: sa.n_prime_lispsm(wide, tall),
+    "critical_resolution": lambda: sa.critical_resolution(one, 1e3, 0.5, 11.0, 1e6),
+    "point_error": lambda: sa.point_error(np.eye(4), [0.0, -1.0, 0.0],
+                                          np.broadcast_to(np.ones(3), (2**40, 3)), 1.0, 10.0, 0.5),
+    "frustum_max": lambda: sa.frustum_max(np.broadcast_to(np.eye(4), (2**40, 4, 4)),
+                                          [0.0, -1.0, 0.0], 1.0, 10.0, 0.5),
+    "allocate_texels": lambda: sa.allocate_texels(one, 100.0),
+}
+for name, call in calls.items():
+    try:
+        call()
+        print(name, "returned")
+    except BaseException as e:
+        print(name, type(e).__name__, str(e)[:120])
+"""
+
+
+def test_shapes_beyond_memory_raise_memory_error(tmp_path):
+    run = subprocess.run([sys.executable, "-c", HUGE], capture_output=True, text=True,
+                         timeout=300, cwd=tmp_path)
+    assert run.returncode == 0, run.stderr[-2000:]
+    lines = run.stdout.strip().splitlines()
+    assert len(lines) == 6, run.stdout
+    for line in lines:
+        assert " MemoryError " in line and "does not fit in memory" in line, line
