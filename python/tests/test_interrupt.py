@@ -8,6 +8,7 @@ pending Ctrl-C there became `pyo3_runtime.PanicException`, which `except Excepti
 catch)."""
 import json
 import math
+import os
 import subprocess
 import sys
 
@@ -75,3 +76,43 @@ def test_sweep_in_blocks_is_the_measured_map_in_every_cell():
             m = sa.warp(*view, -d, "lispsm")
             want = sa.frustum_max(m, -d, *view)[2]
             assert s[i, j] == pytest.approx(want, rel=1e-9), (i, j)
+
+
+# PSM at f/n = 10¹⁰ on 9 × 100 directions cannot be represented at some directions: in row 0
+# first at column 94, in row 1 already at column 3. With two threads the sweep's first block is
+# rows 0–1 × columns 0–31, which fails (row 1); the error must still be row 0's, the first
+# failing direction in grid order, as the whole-grid sweep (and the command line) reports it.
+FIRST_FAILURE = r"""
+import json, math, re
+import numpy as np
+import shadow_aliasing as sa
+view = (1.0, 1e10, 0.5)
+el, az = sa.sweep_angles(9, 100)
+def fails(i, j):
+    d = np.array([math.cos(el[i]) * math.sin(az[j]), math.sin(el[i]),
+                  math.cos(el[i]) * math.cos(az[j])])
+    try:
+        sa.warp(*view, -d, "psm")
+        return False
+    except ValueError:
+        return True
+first = next((i, j) for i in range(9) for j in range(100) if fails(i, j))
+try:
+    sa.sweep(*view, "psm", elevations=9, azimuths=100)
+    message = None
+except ValueError as e:
+    message = str(e)
+m = re.search(r"elevation=([^,]+), azimuth=([^ :]+)", message or "")
+print(json.dumps({"first": first, "want": [el[first[0]], az[first[1]]], "message": message,
+                  "got": [float(m.group(1)), float(m.group(2))] if m else None}))
+"""
+
+
+def test_a_failing_sweep_names_the_first_failing_direction_in_grid_order(tmp_path):
+    env = {**os.environ, "RAYON_NUM_THREADS": "2"}
+    run = subprocess.run([sys.executable, "-c", FIRST_FAILURE], capture_output=True, text=True,
+                         timeout=300, cwd=tmp_path, env=env)
+    assert run.returncode == 0, run.stderr[-2000:]
+    r = json.loads(run.stdout.strip().splitlines()[-1])
+    assert r["first"] == [0, 94], r  # the case this test is built on (row 1 fails at column 3)
+    assert r["got"] == r["want"], r
