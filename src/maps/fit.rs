@@ -296,12 +296,15 @@ pub(crate) enum FitFailure {
     NoPoints,
     /// A point with a non-finite coordinate.
     NotFinitePoint(DVec3),
-    /// The points have no extent along (`across: false`) or across the warp axis.
+    /// The points have no extent along (`across: false`) or across the warp axis, or one
+    /// below 10⁻¹² of their largest coordinate (`scale`), which f64 cannot resolve.
     NoExtent {
-        /// Across the axis (along s) rather than along it.
+        /// Across the axis (along s, after the warp) rather than along it.
         across: bool,
         /// The extent found.
         extent: f64,
+        /// The points' largest coordinate magnitude.
+        scale: f64,
     },
     /// The matrix has a non-finite entry.
     NotFiniteWarp,
@@ -318,11 +321,30 @@ impl From<FitFailure> for Error {
             FitFailure::NotFinitePoint(p) => {
                 Error::invalid("points", format!("must be finite (got {p})"))
             }
-            FitFailure::NoExtent { across, extent } => Error::Degenerate(format!(
-                "the points have no extent {} the warp axis (extent {})",
-                if across { "across" } else { "along" },
-                fmt_num(extent)
-            )),
+            FitFailure::NoExtent {
+                across,
+                extent,
+                scale,
+            } => {
+                let dir = if across { "across" } else { "along" };
+                if extent > 0.0 {
+                    Error::Degenerate(format!(
+                        "the points' extent {dir} the warp axis{} ({}) is below 10⁻¹² of their \
+                         largest coordinate ({}), finer than f64 resolves: the points span too \
+                         many orders of magnitude (a depth ratio far/near too large for this \
+                         warp, or one bound far larger than the rest); reduce far/near, use \
+                         z-partitions or a weaker warp, or tighten the largest bound",
+                        if across { " after the warp" } else { "" },
+                        fmt_num(extent),
+                        fmt_num(scale)
+                    ))
+                } else {
+                    Error::Degenerate(format!(
+                        "the points have no extent {dir} the warp axis (extent {})",
+                        fmt_num(extent)
+                    ))
+                }
+            }
             FitFailure::NotFiniteWarp => {
                 Error::Degenerate("the fitted warp is not finite for these points".into())
             }
@@ -432,6 +454,7 @@ pub(crate) fn warp_matrix(
         return Err(FitFailure::NoExtent {
             across: false,
             extent: delta,
+            scale: extent,
         });
     }
     let (u_h, u_m, v_h, v_m) = r.halves();
@@ -439,6 +462,7 @@ pub(crate) fn warp_matrix(
         return Err(FitFailure::NoExtent {
             across: true,
             extent: 2.0 * u_h,
+            scale: extent,
         });
     }
     let v_h = v_h.max(1e-9 * extent.max(f64::MIN_POSITIVE));
