@@ -504,9 +504,9 @@ pub fn face_partitions(
 /// [`Error::InvalidArgument`] naming `light_dir` (zero or not finite) or `splits` (planes outside
 /// the view's depth range); [`Error::Degenerate`] when no face is seen (not reachable for a
 /// valid frustum and light, checked all the same) or when neither warp axis of a face part gives
-/// a map [`fit_warp`] accepts (a face part with no extent along or across the axis beyond 10⁻¹²
-/// of the swept points' extent: met with a half field of view within about 10⁻² of π/2 and a
-/// grazing light) and regular at the part's vertices.
+/// a map [`fit_warp`](crate::maps::fit_warp) accepts (a face part with no extent along or across
+/// the axis beyond 10⁻¹² of the swept points' extent: met with a half field of view within about
+/// 10⁻² of π/2 and a grazing light) and regular at the part's vertices.
 pub fn face_partitions_with(
     view: &ViewFrustum,
     light_dir: DVec3,
