@@ -244,3 +244,62 @@ fn frame_api_does_not_allocate() {
         });
     }
 }
+
+/// Face partitions at f/n up to 10⁷ (issue 21, item 2): a candidate warp axis that fails and is
+/// discarded for the other must not allocate its error message. Every `FaceWarp` × k, through the
+/// frame (`frame_into`, reused) and the frustum-only builder, for f/n from 10 to 10⁷ and lights
+/// tilted, overhead, grazing and the one the issue found (PSM, k = 1, f/n = 10⁷: 218 bytes on the
+/// second call). Only `Ok` results are counted (an error's message is allowed to allocate), and
+/// most must be `Ok`.
+#[test]
+fn face_partitions_at_deep_frusta_do_not_allocate() {
+    use shadow_aliasing::frame::{frame_into, Camera, Frame, FrameInput, FrameScheme, MAX_FACE_K};
+    let lights = [
+        DVec3::new(
+            -0.785_215_254_286_591_6,
+            -0.443_948_106_965_519_73,
+            -0.431_679_374_956_176_3,
+        ),
+        DVec3::new(0.3, -0.8, -0.4),
+        DVec3::new(0.0, -1.0, -0.3),
+        DVec3::new(0.0, -1.0, 0.0),
+        DVec3::new(-0.7, -0.1, 0.7),
+        DVec3::new(0.05, -0.02, -1.0),
+    ];
+    let (mut ok, mut calls) = (0, 0);
+    let mut failures = Vec::new();
+    let mut out = Frame::default();
+    for far in [10.0, 1e3, 1e5, 1e6, 1e7] {
+        for half_fov in [0.3, 0.8, 1.2] {
+            let cam = Camera::new(glam::DMat4::IDENTITY, 1.0, far, half_fov, 1.0).unwrap();
+            let view = *cam.view();
+            for &l in &lights {
+                for rule in [FaceWarp::Uniform, FaceWarp::Psm, FaceWarp::Lispsm] {
+                    for k in 1..=MAX_FACE_K {
+                        let input = FrameInput::new(cam, l, 2048, 1080)
+                            .scheme(FrameScheme::Faces { rule, k });
+                        // Warm-up, then the counted call.
+                        let _ = frame_into(&input, &mut out);
+                        let (r, n) = allocations(|| frame_into(black_box(&input), &mut out));
+                        calls += 2;
+                        if r.is_ok() {
+                            ok += 1;
+                            if n > 0 {
+                                failures.push(format!("frame_into {rule:?} k={k} f/n={far} θ={half_fov} light={l}: {n} allocations"));
+                            }
+                        }
+                        let (r, n) = allocations(|| face_partitions(black_box(&view), l, rule, k));
+                        if r.is_ok() {
+                            ok += 1;
+                            if n > 0 {
+                                failures.push(format!("face_partitions {rule:?} k={k} f/n={far} θ={half_fov} light={l}: {n} allocations"));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(ok * 10 >= calls * 9, "only {ok} of {calls} calls succeeded");
+}

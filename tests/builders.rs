@@ -757,3 +757,45 @@ fn eta_ends_are_uniform_and_psm() {
     let sbar = (f / n - 1.0) / (2.0 * th.tan());
     assert!((e.storage_factor - sbar).abs() <= 1e-12 * sbar);
 }
+
+/// The depth ratios from which the builders refuse a warp, as docs/builders.md and `warp()`'s
+/// docs state them (measured by bisection on f/n; issue 21, item 12): near 1, half field of view
+/// 0.5 rad, light (0, −1, −0.3): PSM from f/n = 6.1·10¹¹, LiSPSM from 4.1·10²³. Each is accepted
+/// at half its threshold and refused (`Degenerate`, with a remedy) at twice it.
+#[test]
+fn degenerate_from_the_documented_depth_ratios() {
+    let docs = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/builders.md"))
+        .expect("docs/builders.md");
+    let l = DVec3::new(0.0, -1.0, -0.3);
+    for (rule, threshold, written) in [
+        (WarpRule::Psm, 6.1e11, "PSM is refused from f/n = 6.1·10¹¹"),
+        (WarpRule::Lispsm, 4.1e23, "LiSPSM from 4.1·10²³"),
+    ] {
+        assert!(
+            docs.contains(written),
+            "docs/builders.md states {written:?}"
+        );
+        let at = |ratio: f64| warp(&ViewFrustum::new(1.0, ratio, 0.5).unwrap(), l, rule);
+        assert!(
+            at(0.5 * threshold).is_ok(),
+            "{rule:?} at f/n = {:e}",
+            0.5 * threshold
+        );
+        assert!(
+            at(0.98 * threshold).is_ok(),
+            "{rule:?} at f/n = {:e}",
+            0.98 * threshold
+        );
+        match at(2.0 * threshold) {
+            Err(shadow_aliasing::Error::Degenerate(m)) => {
+                assert!(m.contains("reduce far/near"), "{rule:?}: {m}");
+            }
+            other => panic!("{rule:?} at f/n = {:e}: {other:?}", 2.0 * threshold),
+        }
+        assert!(
+            at(1.03 * threshold).is_err(),
+            "{rule:?} at f/n = {:e}",
+            1.03 * threshold
+        );
+    }
+}

@@ -876,3 +876,62 @@ fn error_messages_name_each_argument_once_with_short_numbers() {
     // f64::MAX/1 is finite: a value, not an error.
     assert!(value_of(&v[2]).is_finite());
 }
+
+/// A nonzero value that the resolutions scale below f64's normal range is an error naming the
+/// resolutions, never 0 or a subnormal (issue 21, item 8). m_x at z = 10 of near 1, far 100,
+/// n′ = 11 is (res_i/res_s) · 100 · 20/(10 · 110) = (res_i/res_s) · 1.8181…, by hand: 1.818e-600
+/// for res_i = 10⁻³⁰⁰, res_s = 10³⁰⁰.
+#[test]
+fn a_value_the_resolutions_scale_below_f64_is_an_error() {
+    let issue = r#"{"quantity":"mx","near":1,"far":100,"n_prime":11,"z":10,"res_image":1e-300,"res_s":1e300}"#;
+    let (code, v, _) = eval_stdin(issue);
+    assert_eq!(code, 1, "{v}");
+    let e = error_of(&v);
+    for part in [
+        "mx underflows f64",
+        "res_image/res_s (res_image=1e-300, res_s=1e300)",
+        "about 1.818e-600",
+        "returned as 0",
+        "res_image=1, res_s=res_s/res_image",
+        "value 1.8181818181818183",
+    ] {
+        assert!(e.contains(part), "{part:?} not in {e}");
+    }
+    // Every quantity that scales with the resolutions, the map's along s or t.
+    let scaled = [
+        r#"{"quantity":"mz","near":1,"far":100,"half_fov":0.5,"n_prime":11,"z":10,"res_image":1e-300,"res_t":1e300}"#,
+        r#"{"quantity":"max_mx","near":1,"far":100,"n_prime":11,"res_image":1e-300,"res_s":1e300}"#,
+        r#"{"quantity":"max_mz","near":1,"far":100,"half_fov":0.5,"n_prime":11,"res_image":1e-300,"res_t":1e300}"#,
+        r#"{"quantity":"tilted_mz","near":1,"far":100,"half_fov":0.5,"n_prime":11,"light_angle":1,"z":10,"res_image":1e-300,"res_t":1e300}"#,
+        r#"{"quantity":"subdivided_max_error","alpha":100,"k":2,"eta":0,"half_fov":0.5,"res_image":1e-300,"res_s":1e300}"#,
+    ];
+    for req in scaled {
+        let out = eval_json(req);
+        assert_eq!(out.exit_code, 1, "{req}: {}", out.stdout);
+        let v: Value = serde_json::from_str(&out.stdout).unwrap();
+        let e = error_of(&v);
+        let map = if req.contains("res_t") {
+            "res_t"
+        } else {
+            "res_s"
+        };
+        assert!(
+            e.contains("underflows f64") && e.contains(&format!("res_image/{map}")),
+            "{req}: {e}"
+        );
+    }
+    // A subnormal result (1.8e-310, with about 3 digits left) is refused as well.
+    let out = eval_json(
+        r#"{"quantity":"mx","near":1,"far":100,"n_prime":11,"z":10,"res_image":1e-300,"res_s":1e10}"#,
+    );
+    assert_eq!(out.exit_code, 1, "{}", out.stdout);
+    assert!(out.stdout.contains("about 1.818e-310") && out.stdout.contains("subnormal"));
+    // A small normal value is answered: 1.8181…e-305.
+    let out = eval_json(
+        r#"{"quantity":"mx","near":1,"far":100,"n_prime":11,"z":10,"res_image":1e-300,"res_s":1e5}"#,
+    );
+    assert_eq!(out.exit_code, 0, "{}", out.stdout);
+    let v: Value = serde_json::from_str(&out.stdout).unwrap();
+    let x = value_of(&v);
+    assert!((x - 2000.0 / 1100.0 * 1e-305).abs() <= 1e-12 * x, "{x}");
+}

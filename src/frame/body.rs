@@ -7,8 +7,8 @@ use super::{Ctx, MAX_BODY_VERTICES, MAX_BOUND_PLANES};
 use crate::error::{Error, Result};
 use crate::frustum::ViewFrustum;
 use crate::geom::polytope::{extents, ConvexBody};
-use crate::maps::lightspace::LightSpace;
 use crate::maps::fit::FrustumInLight;
+use crate::maps::lightspace::LightSpace;
 use glam::{DVec3, DVec4};
 
 /// The receivers' body: 6 frustum faces + 12 bound planes, a face at most 4 + 12 vertices, at

@@ -9,8 +9,8 @@ use crate::analytic::partition::{z_splits, Splits, MAX_PARTITIONS};
 use crate::error::{fmt_num, in_closed, positive, Error, Result};
 use crate::frustum::{LightDir, NPrime};
 use crate::maps::cascades::{bounding_sphere, splits_between};
-use crate::maps::lightspace::{light_space_unit, LightSpace};
 use crate::maps::fit::{verify_clip, FrustumInLight};
+use crate::maps::lightspace::{light_space_unit, LightSpace};
 use crate::maps::ShadowMatrix;
 use glam::{DMat4, DVec3, DVec4};
 
@@ -153,7 +153,15 @@ pub(super) fn cascade_slices(
             if n == 0 {
                 return Err(Error::invalid(
                     "minimum_distance",
-                    "Bevy's cascades do not meet the visible depth range",
+                    format!(
+                        "and maximum_distance must overlap the visible depth range [{}, {}] \
+                         (got minimum_distance={}, maximum_distance={}: every Bevy cascade \
+                         would lie outside it)",
+                        fmt_num(zn),
+                        fmt_num(zf),
+                        fmt_num(min_d),
+                        fmt_num(max_d)
+                    ),
                 ));
             }
             Ok(n)
@@ -217,7 +225,17 @@ impl Ctx<'_, '_> {
                 "the stable cascade's matrix overflows f64 for this frustum".into(),
             ));
         }
-        verify_clip(&matrix, pts.iter())?;
+        if let Err(f) = verify_clip(&matrix, pts.iter()) {
+            // World positions round by about |p| ε; amplified by 1/half they move B's vertices
+            // in the map by that over the clip slack (10⁻⁶) when the camera is far from the
+            // origin: then the offset, not the depth ratio, is the cause.
+            let dist = cw.length();
+            return Err(if dist * f64::EPSILON / half > 1e-8 {
+                stable_far_from_origin(dist, half)
+            } else {
+                f.into()
+            });
+        }
         let shadow = ShadowMatrix::new(
             matrix,
             LightDir::from_unit_unchecked(self.l),
@@ -227,4 +245,22 @@ impl Ctx<'_, '_> {
         );
         self.finish(shadow, pts, s, body.focus).map(Built::Map)
     }
+}
+
+/// A stable cascade whose world-fixed square cannot hold its focus body because the camera is
+/// far from the world origin (world positions round by |p| ε there).
+#[cold]
+#[inline(never)]
+fn stable_far_from_origin(dist: f64, half: f64) -> Error {
+    Error::Degenerate(format!(
+        "a stable cascade of half-width {} lies {} from the world origin, where f64 rounds world \
+         positions by about {:.1e} ({:.0e} of the half-width), too coarse to snap its world-fixed \
+         square and keep the focus body inside it: move the world origin near the camera \
+         (render relative to the camera or rebase the scene), or use cascades that are not \
+         stable (FrameScheme::Cascades)",
+        fmt_num(half),
+        fmt_num(dist),
+        dist * f64::EPSILON,
+        dist * f64::EPSILON / half
+    ))
 }

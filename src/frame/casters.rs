@@ -3,7 +3,7 @@
 
 use super::input::{Aabb, Bound};
 use super::{Ctx, MAX_BODY_VERTICES};
-use crate::error::{Error, Result};
+use crate::error::{fmt_num, Error, Result};
 use crate::geom::polytope::ConvexBody;
 use crate::maps::fit::FrustumInLight;
 use crate::numeric::fmax;
@@ -187,4 +187,28 @@ impl Prism {
             .iter()
             .all(|pl| pl.truncate().dot(p) + pl.w <= tol * pl.truncate().length())
     }
+}
+
+/// The casters' point `p` that extends the depth range is so far from the focus body `pts` that
+/// the map cannot be fitted with it, while it can without: the error names the casters, the
+/// distances and the remedies.
+#[cold]
+#[inline(never)]
+pub(super) fn casters_too_far(pts: &[DVec3], p: DVec3) -> Error {
+    let centre = pts.iter().fold(DVec3::ZERO, |a, q| a + *q) / pts.len().max(1) as f64;
+    let size = pts
+        .iter()
+        .fold(0.0f64, |m, q| m.max((*q - centre).length()));
+    Error::invalid(
+        "casters",
+        format!(
+            "reach {} from the focus body (of radius {}), beyond what the map's fit resolves in \
+             f64 (the depth range they add is {:.0e} times the body's size): bound the casters \
+             to the region that can shadow the visible receivers, or let the device clamp depth \
+             (depth_clamp, `--depth-clamp`) so that casters nearer the light are not needed",
+            fmt_num((p - centre).length()),
+            fmt_num(size),
+            (p - centre).length() / size.max(f64::MIN_POSITIVE)
+        ),
+    )
 }

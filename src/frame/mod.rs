@@ -124,10 +124,13 @@ struct Slice {
 /// (0), `depth_range` (not finite, z_min ≥ z_max, or no overlap with the camera's [near, far]),
 /// `receivers`/`casters` (a bad box, too many planes — more than [`MAX_FACE_BOUND_PLANES`] with
 /// face partitions — a polytope unbounded toward the light; for receivers also an empty list of
-/// boxes, while an empty list of casters is no caster), `overlap`, `k` (1..=[`MAX_FACE_K`] for face
-/// partitions), the splits or the rule's parameter; [`Error::Degenerate`] when a map cannot be
-/// represented in `f64`, or its world → clip matrix (either depth convention) not in `f32`
-/// (a camera very far from the world origin: its translation times the map's scale overflows).
+/// boxes, while an empty list of casters is no caster; for casters also a bound reaching so far
+/// beyond the focus body that the map cannot be fitted with it), `overlap`, `k`
+/// (1..=[`MAX_FACE_K`] for face partitions), the splits or the rule's parameter;
+/// [`Error::Degenerate`] when a map cannot be represented in `f64`, or its world → clip matrix
+/// (either depth convention) not in `f32` (a camera very far from the world origin: its
+/// translation times the map's scale overflows, or a stable cascade's world-fixed square cannot
+/// be snapped around its focus body; the message names the offset).
 pub fn frame(input: &FrameInput<'_>) -> Result<Frame> {
     let mut out = Frame::default();
     frame_into(input, &mut out)?;

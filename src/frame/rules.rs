@@ -1,6 +1,7 @@
 //! One map of a slice's focus body with a warp rule, and the trapezoidal map of B.
 
 use super::body::{depth_extent, nearest_vertex};
+use super::casters::casters_too_far;
 use super::input::WarpCentre;
 use super::output::Focus;
 use super::{Built, Ctx, Slice};
@@ -90,13 +91,16 @@ impl Ctx<'_, '_> {
                 slice_rule,
             )?
         } else {
-            ShadowMatrix::new(
-                fit_body(&fl, n_prime, centre, caster.as_slice())?,
-                LightDir::from_unit_unchecked(l),
-                n_prime,
-                n_b,
-                f_b,
-            )
+            let fitted = fit_body(&fl, n_prime, centre, caster.as_slice());
+            let matrix = match (fitted, caster) {
+                (Ok(m), _) => m,
+                // The same fit without the casters succeeds: they are the cause.
+                (Err(_), Some(p)) if fit_body(&fl, n_prime, centre, &[]).is_ok() => {
+                    return Err(casters_too_far(pts, p));
+                }
+                (Err(e), _) => return Err(e),
+            };
+            ShadowMatrix::new(matrix, LightDir::from_unit_unchecked(l), n_prime, n_b, f_b)
         };
         self.finish(shadow, pts, s, focus).map(Built::Map)
     }

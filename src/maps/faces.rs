@@ -121,8 +121,9 @@
 use crate::analytic::partition::{z_splits, SplitScheme, Splits, MAX_PARTITIONS};
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{LightDir, NPrime, ViewFrustum};
+use crate::maps::fit::{fit_points, FitFailure};
 use crate::maps::lightspace::{light_space_dir, LightSpace};
-use crate::maps::{fit_warp, ShadowMatrix};
+use crate::maps::ShadowMatrix;
 use crate::measure::vertex::vertex_max;
 use crate::measure::FrustumError;
 use crate::numeric::EDGE_ON;
@@ -503,9 +504,9 @@ pub fn face_partitions(
 /// [`Error::InvalidArgument`] naming `light_dir` (zero or not finite) or `splits` (planes outside
 /// the view's depth range); [`Error::Degenerate`] when no face is seen (not reachable for a
 /// valid frustum and light, checked all the same) or when neither warp axis of a face part gives
-/// a map [`fit_warp`] accepts (a face part with no extent along or across the axis beyond 10⁻¹²
-/// of the swept points' extent: met with a half field of view within about 10⁻² of π/2 and a
-/// grazing light) and regular at the part's vertices.
+/// a map [`fit_warp`](crate::maps::fit_warp) accepts (a face part with no extent along or across
+/// the axis beyond 10⁻¹² of the swept points' extent: met with a half field of view within about
+/// 10⁻² of π/2 and a grazing light) and regular at the part's vertices.
 pub fn face_partitions_with(
     view: &ViewFrustum,
     light_dir: DVec3,
@@ -595,28 +596,71 @@ fn singular(face: Face, a: f64, b: f64) -> Error {
 
 /// The candidate warp axes of a face as light spaces: Lloyd's bisector, and for a side face its
 /// depth axis (module docs). A candidate that cannot be built (a side edge along the light, the
-/// light along the near edge) is left out; the bisector's error is kept to report when no
-/// candidate is left.
+/// light along the near edge) is left out; the bisector's error is reported when no candidate is
+/// left ([`FaceSpaces::first_err`], written only then: no allocation while a map is built).
 pub(crate) struct FaceSpaces {
     spaces: [Option<LightSpace>; 2],
-    first_err: Option<Error>,
+    face: Face,
+    tan: f64,
+    ta: f64,
+    light: LightDir,
 }
 
 pub(crate) fn face_spaces(face: Face, tan: f64, ta: f64, light: LightDir) -> FaceSpaces {
     let l = light.as_dvec3();
     let mut out = FaceSpaces {
         spaces: [None; 2],
-        first_err: None,
+        face,
+        tan,
+        ta,
+        light,
     };
-    match axis_with(face, tan, ta, l).and_then(|a| light_space_dir(light, a)) {
-        Ok(ls) => out.spaces[0] = Some(ls),
-        Err(e) => out.first_err = Some(e),
-    }
+    out.spaces[0] = out.bisector().ok();
     if face.is_side() {
         out.spaces[1] =
             depth_axis_with(face, tan, ta, l).and_then(|a| light_space_dir(light, a).ok());
     }
     out
+}
+
+impl FaceSpaces {
+    /// The light space of Lloyd's bisector, or why it cannot be built.
+    fn bisector(&self) -> Result<LightSpace> {
+        axis_with(self.face, self.tan, self.ta, self.light.as_dvec3())
+            .and_then(|a| light_space_dir(self.light, a))
+    }
+
+    /// Why the bisector's light space cannot be built, `None` when it can.
+    #[cold]
+    fn first_err(&self) -> Option<Error> {
+        self.bisector().err()
+    }
+}
+
+/// Why a face part's fit in one candidate light space failed, as a value that costs nothing to
+/// make: the other candidate may succeed, and then nothing is written (or allocated).
+#[derive(Debug, Clone, Copy)]
+enum PartFailure {
+    /// More vertices than the fit holds.
+    TooManyVertices,
+    /// The warp could not be fitted.
+    Fit(FitFailure),
+    /// The fitted map is singular at a vertex.
+    Singular,
+}
+
+impl PartFailure {
+    #[cold]
+    #[inline(never)]
+    fn into_error(self, face: Face, (a, b): (f64, f64)) -> Error {
+        match self {
+            PartFailure::TooManyVertices => Error::Degenerate(format!(
+                "the {face:?} face part has more vertices than the fit holds"
+            )),
+            PartFailure::Fit(f) => f.into(),
+            PartFailure::Singular => singular(face, a, b),
+        }
+    }
 }
 
 /// What every face part's fit shares: the face rule, the extent along the light to cover
@@ -642,21 +686,26 @@ impl PartFitter {
         (a, b): (f64, f64),
     ) -> Result<(DMat4, NPrime, FrustumError)> {
         let mut best: Option<(DMat4, NPrime, FrustumError)> = None;
-        let mut err = spaces.first_err.clone();
+        let mut failure = None;
         for ls in spaces.spaces.iter().flatten() {
-            match self.fit::<S>(ls, points, measured, face, (a, b)) {
+            match self.fit::<S>(ls, points, measured, face) {
                 Ok(c) => {
                     if best.is_none_or(|b| c.2.storage_factor < b.2.storage_factor) {
                         best = Some(c);
                     }
                 }
                 Err(e) => {
-                    err.get_or_insert(e);
+                    failure.get_or_insert(e);
                 }
             }
         }
+        // The messages are written only here, when no candidate gave a map: the bisector's
+        // failure first, then the first fit's.
         best.ok_or_else(|| {
-            err.unwrap_or_else(|| Error::Degenerate(format!("no warp axis for the {face:?} face")))
+            spaces
+                .first_err()
+                .or_else(|| failure.map(|f| f.into_error(face, (a, b))))
+                .unwrap_or_else(|| Error::Degenerate(format!("no warp axis for the {face:?} face")))
         })
     }
 
@@ -669,15 +718,12 @@ impl PartFitter {
         points: &[DVec3],
         measured: &[DVec3],
         face: Face,
-        (a, b): (f64, f64),
-    ) -> Result<(DMat4, NPrime, FrustumError)> {
+    ) -> std::result::Result<(DMat4, NPrime, FrustumError), PartFailure> {
         let (y_lo, y_hi) = self.y_range;
         let (mut d_n, mut d_f) = (f64::INFINITY, f64::NEG_INFINITY);
         let mut swept = [DVec3::ZERO; S];
         if 3 * points.len() > S {
-            return Err(Error::Degenerate(format!(
-                "the {face:?} face part has more vertices than the fit holds"
-            )));
+            return Err(PartFailure::TooManyVertices);
         }
         for (i, v) in points.iter().enumerate() {
             let d = ls.z.dot(*v);
@@ -699,9 +745,9 @@ impl PartFitter {
         } else {
             NPrime::UNWARPED
         };
-        let matrix = fit_warp(&swept[..3 * points.len()], ls, n_prime)?;
-        let error =
-            vertex_max(&matrix, self.l, self.tan, measured).ok_or_else(|| singular(face, a, b))?;
+        let matrix =
+            fit_points(&swept[..3 * points.len()], ls, n_prime).map_err(PartFailure::Fit)?;
+        let error = vertex_max(&matrix, self.l, self.tan, measured).ok_or(PartFailure::Singular)?;
         Ok((matrix, n_prime, error))
     }
 }

@@ -37,7 +37,7 @@ use crate::maps::lightspace::{light_space_unit, LightSpace};
 use crate::maps::matrix::{zero_to_one, ShadowMatrix};
 use crate::numeric::lane::{Lane, V3};
 use crate::numeric::{fmax, fmin, CLIP_SLACK};
-use glam::{DMat4, DVec3};
+use glam::{DMat4, DVec3, DVec4};
 
 /// The view frustum's corners in light space with what the rules need: no allocation. With
 /// `N ≠ 8`, any convex body's vertices ([`FrustumInLight::from_points`], the frame API's focus
@@ -219,15 +219,25 @@ pub(crate) fn light_corners<T: Lane>(
 /// # Ok::<(), shadow_aliasing::Error>(())
 /// ```
 pub fn fit_warp(points: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DMat4> {
+    fit_points(points, ls, n_prime).map_err(Error::from)
+}
+
+/// [`fit_warp`] with its failure as a [`FitFailure`], whose message is written only if it is
+/// returned to the caller (a fit that is tried and discarded formats nothing).
+pub(crate) fn fit_points(
+    points: &[DVec3],
+    ls: &LightSpace,
+    n_prime: NPrime,
+) -> std::result::Result<DMat4, FitFailure> {
     if points.is_empty() {
-        return Err(Error::invalid("points", "must not be empty"));
+        return Err(FitFailure::NoPoints);
     }
     let rho = n_prime.recip();
     let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
     let mut extent = 0.0f64;
     for p in points {
         if !p.is_finite() {
-            return Err(not_finite_point(*p));
+            return Err(FitFailure::NotFinitePoint(*p));
         }
         // Finite values: `fmin`/`fmax` are `f64::min`/`max` here.
         let z = ls.z.dot(*p);
@@ -262,19 +272,88 @@ pub fn fit_warp(points: &[DVec3], ls: &LightSpace, n_prime: NPrime) -> Result<DM
 /// for f/n up to 10⁶; a point at w < ½ or more than 10⁻⁶ outside the clip volume means the
 /// frustum's depth ratio is beyond what f64 can warp (for the LiSPSM warp the error of w at the far
 /// end is about √(f/n) · 10⁻¹⁶, for PSM's n′ = n about (f/n) · 10⁻¹⁶), and the matrix is refused.
-pub(crate) fn verify_clip<'a>(m: &DMat4, points: impl Iterator<Item = &'a DVec3>) -> Result<()> {
+pub(crate) fn verify_clip<'a>(
+    m: &DMat4,
+    points: impl Iterator<Item = &'a DVec3>,
+) -> std::result::Result<(), FitFailure> {
     let m01 = zero_to_one(m);
     for p in points {
         let h = *m * p.extend(1.0);
         let ok = in_clip(h.to_array()) && in_unit_depth((m01 * p.extend(1.0)).z, h.w);
         if !ok {
-            return Err(Error::Degenerate(format!(
-                "the map cannot be represented in f64 for this frustum (a point maps to {h}): \
-                 reduce far/near or use z-partitions"
-            )));
+            return Err(FitFailure::OutsideClip(h));
         }
     }
     Ok(())
+}
+
+/// Why a warp could not be fitted, as a value that costs nothing to make: a candidate fit that
+/// fails and is discarded for another (the face partitions' two axes) must not allocate, so the
+/// message is written only when the failure becomes the returned [`Error`] (`Error::from`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum FitFailure {
+    /// No points to fit.
+    NoPoints,
+    /// A point with a non-finite coordinate.
+    NotFinitePoint(DVec3),
+    /// The points have no extent along (`across: false`) or across the warp axis, or one
+    /// below 10⁻¹² of their largest coordinate (`scale`), which f64 cannot resolve.
+    NoExtent {
+        /// Across the axis (along s, after the warp) rather than along it.
+        across: bool,
+        /// The extent found.
+        extent: f64,
+        /// The points' largest coordinate magnitude.
+        scale: f64,
+    },
+    /// The matrix has a non-finite entry.
+    NotFiniteWarp,
+    /// A point maps outside the clip volume (homogeneous clip coordinates, OpenGL depth).
+    OutsideClip(DVec4),
+}
+
+impl From<FitFailure> for Error {
+    #[cold]
+    #[inline(never)]
+    fn from(f: FitFailure) -> Error {
+        match f {
+            FitFailure::NoPoints => Error::invalid("points", "must not be empty"),
+            FitFailure::NotFinitePoint(p) => {
+                Error::invalid("points", format!("must be finite (got {p})"))
+            }
+            FitFailure::NoExtent {
+                across,
+                extent,
+                scale,
+            } => {
+                let dir = if across { "across" } else { "along" };
+                if extent > 0.0 {
+                    Error::Degenerate(format!(
+                        "the points' extent {dir} the warp axis{} ({}) is below 10⁻¹² of their \
+                         largest coordinate ({}), finer than f64 resolves: the points span too \
+                         many orders of magnitude (a depth ratio far/near too large for this \
+                         warp, or one bound far larger than the rest); reduce far/near, use \
+                         z-partitions or a weaker warp, or tighten the largest bound",
+                        if across { " after the warp" } else { "" },
+                        fmt_num(extent),
+                        fmt_num(scale)
+                    ))
+                } else {
+                    Error::Degenerate(format!(
+                        "the points have no extent {dir} the warp axis (extent {})",
+                        fmt_num(extent)
+                    ))
+                }
+            }
+            FitFailure::NotFiniteWarp => {
+                Error::Degenerate("the fitted warp is not finite for these points".into())
+            }
+            FitFailure::OutsideClip(h) => Error::Degenerate(format!(
+                "the map cannot be represented in f64 for this frustum (a point maps to {h}): \
+                 reduce far/near or use z-partitions"
+            )),
+        }
+    }
 }
 
 /// Running min/max of u = x/w and v = y/w.
@@ -369,14 +448,22 @@ pub(crate) fn warp_matrix(
     rho: f64,
     r: &Ranges,
     extent: f64,
-) -> Result<DMat4> {
+) -> std::result::Result<DMat4, FitFailure> {
     let tiny = 1e-12 * extent.max(f64::MIN_POSITIVE);
     if delta.is_nan() || delta <= tiny {
-        return Err(no_extent("along", delta));
+        return Err(FitFailure::NoExtent {
+            across: false,
+            extent: delta,
+            scale: extent,
+        });
     }
     let (u_h, u_m, v_h, v_m) = r.halves();
     if u_h.is_nan() || u_h <= tiny {
-        return Err(no_extent("across", 2.0 * u_h));
+        return Err(FitFailure::NoExtent {
+            across: true,
+            extent: 2.0 * u_h,
+            scale: extent,
+        });
     }
     let v_h = v_h.max(1e-9 * extent.max(f64::MIN_POSITIVE));
     let frame = (V3::from(ls.x), V3::from(ls.y), V3::from(ls.z));
@@ -386,30 +473,9 @@ pub(crate) fn warp_matrix(
     let (row0, row1, row2, row3) = (row(r0), row(r1), row(r2), row(r3));
     let m = DMat4::from_cols(row0, row1, row2, row3).transpose();
     if !m.is_finite() {
-        return Err(not_finite_warp());
+        return Err(FitFailure::NotFiniteWarp);
     }
     Ok(m)
-}
-
-#[cold]
-#[inline(never)]
-fn no_extent(dir: &str, v: f64) -> Error {
-    Error::Degenerate(format!(
-        "the points have no extent {dir} the warp axis (extent {})",
-        fmt_num(v)
-    ))
-}
-
-#[cold]
-#[inline(never)]
-fn not_finite_point(p: DVec3) -> Error {
-    Error::invalid("points", format!("must be finite (got {p})"))
-}
-
-#[cold]
-#[inline(never)]
-fn not_finite_warp() -> Error {
-    Error::Degenerate("the fitted warp is not finite for these points".into())
 }
 
 /// [`fit_warp`] on the frustum already in light space.
@@ -426,7 +492,8 @@ pub(crate) fn fit_frustum(fl: &FrustumInLight, n_prime: NPrime) -> Result<DMat4>
         Ok(m)
     } else {
         // The generic check finds the same corner and reports it.
-        verify_clip(&m, fl.corners.iter()).map(|()| m)
+        verify_clip(&m, fl.corners.iter())?;
+        Ok(m)
     }
 }
 
@@ -526,7 +593,8 @@ pub(crate) fn fit_frustum_from_corner(
         *c -= offset;
     }
     let m = fit_frustum(&moved, n_prime)? * DMat4::from_translation(-offset);
-    verify_clip(&m, fl.corners.iter()).map(|()| m)
+    verify_clip(&m, fl.corners.iter())?;
+    Ok(m)
 }
 
 /// The warp of parameter `n_prime` fitted to a body in light space (`fl`, the frame API's focus
@@ -560,7 +628,7 @@ pub(crate) fn fit_body<const N: usize>(
     let mut depth = r;
     for p in depth_points {
         if !p.is_finite() {
-            return Err(not_finite_point(*p));
+            return Err(FitFailure::NotFinitePoint(*p).into());
         }
         let q = fl.ls.to_light(*p);
         let iw = 1.0 / (1.0 + rho * (q.z - fl.z0));

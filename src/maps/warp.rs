@@ -133,7 +133,10 @@ pub enum WarpRule {
 /// [`Error::InvalidArgument`] naming `light_dir` for a zero or non-finite vector, or the rule's
 /// parameter (`eta`, `focus`, `near_hint`, `far_hint`) outside its domain; [`Error::Degenerate`]
 /// when the frustum's depth ratio is beyond what f64 can warp with this n′ (every corner is checked
-/// to land in the clip volume; in practice from f/n ≈ 10¹⁵ for PSM, ≈ 10³⁰ for LiSPSM).
+/// to land in the clip volume; near 1, half field of view 0.5 rad and light (0, −1, −0.3), from
+/// f/n = 6.1·10¹¹ for PSM and 4.1·10²³ for LiSPSM; from 2·10¹¹ to 4·10¹² and 5·10²² to 2·10²⁵ over
+/// half fields of view 0.2 to 1.2 rad, and lower, from about 3·10⁹ and 5·10¹⁷, where the light's
+/// direction lies inside a wide field of view: docs/builders.md).
 ///
 /// ```
 /// # use shadow_aliasing::maps::{warp, WarpRule};
