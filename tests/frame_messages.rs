@@ -95,3 +95,30 @@ fn bevy_splits_outside_the_view_read_as_a_sentence() {
          (got minimum_distance=200, maximum_distance=400: every Bevy cascade would lie outside it)"
     );
 }
+
+/// A bound's polytope with too many planes, or a bad plane, says how many and which, for the
+/// receivers and the casters alike (the casters' messages gave no "(got N)").
+#[test]
+fn polytope_errors_give_the_count_and_the_bad_plane() {
+    use glam::DVec4;
+    let cam = Camera::new(DMat4::IDENTITY, 1.0, 100.0, 0.5, 1.0).unwrap();
+    let input = FrameInput::new(cam, DVec3::new(0.3, -1.0, 0.2), 2048, 1080);
+    let many = [DVec4::new(0.0, 1.0, 0.0, 0.0); 17];
+    let mut bad = [DVec4::new(0.0, 1.0, 0.0, 0.0); 3];
+    bad[2] = DVec4::new(0.0, 0.0, 0.0, 1.0);
+    for name in ["receivers", "casters"] {
+        let with = |planes| match name {
+            "receivers" => input.receivers(Bound::Polytope(planes)),
+            _ => input.casters(Bound::Polytope(planes)),
+        };
+        for (planes, part) in [(&many[..], "(got 17)"), (&bad[..], "at index 2)")] {
+            match frame(&with(planes)) {
+                Err(Error::InvalidArgument { name: n, reason }) => {
+                    assert_eq!(n, name);
+                    assert!(reason.contains(part), "{part:?} not in {reason}");
+                }
+                other => panic!("{name}: {other:?}"),
+            }
+        }
+    }
+}

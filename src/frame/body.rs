@@ -1,7 +1,7 @@
 //! The focus body B: the receivers' bound as eye-space planes, the slice of the frustum cut by
 //! them (exact convex clipping), and B in light space.
 
-use super::input::{bad_box, Bound, Camera};
+use super::input::{bad_box, validate_polytope, Bound, Camera};
 use super::output::Focus;
 use super::{Ctx, MAX_BODY_VERTICES, MAX_BOUND_PLANES};
 use crate::error::{Error, Result};
@@ -69,22 +69,8 @@ pub(super) fn receiver_planes(cam: &Camera, b: &Bound<'_>) -> Result<Planes> {
             out.flat = (hi - lo).min_element() <= small.max(1e-12 * size);
         }
         Bound::Polytope(planes) => {
-            if planes.is_empty() || planes.len() > MAX_BOUND_PLANES {
-                return Err(Error::invalid(
-                    "receivers",
-                    format!(
-                        "a polytope must have 1 to {MAX_BOUND_PLANES} planes (got {})",
-                        planes.len()
-                    ),
-                ));
-            }
+            validate_polytope("receivers", planes)?;
             for (k, p) in planes.iter().enumerate() {
-                if !p.is_finite() || p.truncate().length() <= 0.0 {
-                    return Err(Error::invalid(
-                        "receivers",
-                        format!("planes must be finite with a non-zero normal (got {p})"),
-                    ));
-                }
                 out.p[k] = it * *p;
             }
             out.n = planes.len();

@@ -381,23 +381,35 @@ pub(super) fn validate_casters(b: &Bound<'_>) -> Result<()> {
             }
             Ok(())
         }
-        Bound::Polytope(planes) => {
-            if planes.is_empty() || planes.len() > MAX_BOUND_PLANES {
-                return Err(Error::invalid(
-                    "casters",
-                    format!("a polytope must have 1 to {MAX_BOUND_PLANES} planes"),
-                ));
-            }
-            if planes
-                .iter()
-                .any(|p| !p.is_finite() || p.truncate().length() <= 0.0)
-            {
-                return Err(Error::invalid(
-                    "casters",
-                    "planes must be finite with a non-zero normal",
-                ));
-            }
-            Ok(())
-        }
+        Bound::Polytope(planes) => validate_polytope("casters", planes),
+    }
+}
+
+/// A bound's polytope, for the argument `name` (`receivers` or `casters`): 1 to
+/// [`MAX_BOUND_PLANES`] planes, each finite with a non-zero normal. The error gives the count,
+/// or the first bad plane and its index.
+pub(super) fn validate_polytope(name: &'static str, planes: &[DVec4]) -> Result<()> {
+    if planes.is_empty() || planes.len() > MAX_BOUND_PLANES {
+        return Err(Error::invalid(
+            name,
+            format!(
+                "a polytope must have 1 to {MAX_BOUND_PLANES} planes (got {}): merge or drop \
+                 planes, or give boxes instead",
+                planes.len()
+            ),
+        ));
+    }
+    match planes
+        .iter()
+        .position(|p| !p.is_finite() || p.truncate().length() <= 0.0)
+    {
+        Some(i) => Err(Error::invalid(
+            name,
+            format!(
+                "planes must be finite with a non-zero normal (got {} at index {i})",
+                planes[i]
+            ),
+        )),
+        None => Ok(()),
     }
 }

@@ -61,7 +61,7 @@ pub struct FrameMap {
     /// to cross-fade over; `(split.1, split.1)` when there is none.
     pub blend: (f64, f64),
     /// The largest world-space texel edge over the body at the map's resolution (normal-offset
-    /// bias: Bevy's `texel_size`, Filament's `texelSizeWorldSpace`).
+    /// bias: Bevy's `texel_size`; Filament's `texelSizeWorldSpaceAt` gives both edges at one point).
     pub texel_world: f64,
     /// M_x over the body's vertices (unit resolutions).
     pub max_mx: f64,
@@ -311,7 +311,8 @@ impl Ctx<'_, '_> {
 /// light direction `l`, per unit of clip s and t: the columns of the inverse of the Jacobian of
 /// that plane → (s, t), `(|∇t⊥| / |D|, |∇s⊥| / |D|)` with `D = (∇s × ∇t)·l` (a texel is a light
 /// ray's cross-section, so the edges do not depend on where along the ray `p` lies). Filament's
-/// `texelSizeWorldSpace` takes the same columns, at the map's centre only. `None` behind the
+/// `texelSizeWorldSpaceAt` (ShadowMap.cpp at commit 0362f36e) takes the same columns at the one
+/// point it is given; its 2023 releases' `texelSizeWorldSpace` took their larger. `None` behind the
 /// map's centre of projection or where the map is singular.
 fn texel_edges(m: &DMat4, l: DVec3, p: DVec3) -> Option<(f64, f64)> {
     let h = *m * p.extend(1.0);
