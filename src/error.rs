@@ -179,6 +179,113 @@ fn not_finite_result(what: &str, v: f64) -> Error {
     ))
 }
 
+/// The resolutions a closed form's value is proportional to: `image / map`, with `map` the
+/// shadow map's resolution named as the form's argument (`res_s`, `res_t`, `res_x`).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ResRatio {
+    /// Pixels across the image (`res_image`).
+    pub(crate) image: f64,
+    /// The map resolution's argument name.
+    pub(crate) map_name: &'static str,
+    /// Texels along the map's axis.
+    pub(crate) map: f64,
+}
+
+impl ResRatio {
+    /// `res_image / <map_name>`.
+    #[inline]
+    pub(crate) fn new(image: f64, map_name: &'static str, map: f64) -> Self {
+        Self {
+            image,
+            map_name,
+            map,
+        }
+    }
+}
+
+/// Checks the computed value `v` of a closed form that is strictly positive on its domain and
+/// proportional to `res.image / res.map`: a normal `f64` is returned; a non-finite one is
+/// reported as by [`finite_result`]; 0 or a subnormal (the true value underflowed: 0 would be
+/// wrong, a subnormal has lost digits) is [`Error::InvalidArgument`] naming `res_image` and the
+/// map's resolution, with an estimate of the true value from `unit`, the form's value at unit
+/// resolutions (called only on that path), and the remedy. Where even `unit` is not a normal
+/// number the resolutions are not the cause: [`Error::Degenerate`].
+#[inline]
+pub(crate) fn positive_result(
+    what: &str,
+    v: f64,
+    res: ResRatio,
+    unit: impl FnOnce() -> f64,
+) -> Result<f64> {
+    if v.is_normal() {
+        Ok(v)
+    } else {
+        Err(not_positive_result(what, v, res, unit))
+    }
+}
+
+/// The smallest positive normal `f64`, as messages print it.
+const MIN_NORMAL: &str = "2.2e-308";
+
+#[cold]
+#[inline(never)]
+fn not_positive_result(what: &str, v: f64, res: ResRatio, unit: impl FnOnce() -> f64) -> Error {
+    if !v.is_finite() {
+        return not_finite_result(what, v);
+    }
+    let got = if v == 0.0 {
+        "0".to_string()
+    } else {
+        format!("the subnormal {}", fmt_num(v))
+    };
+    let unit = unit();
+    let ResRatio {
+        image,
+        map_name,
+        map,
+    } = res;
+    if !unit.is_normal() || (image == 1.0 && map == 1.0) {
+        return Error::Degenerate(format!(
+            "{what} is positive but would be returned as {got} for these inputs: at \
+             res_image={map_name}=1 it is {}, outside f64's normal range (from {MIN_NORMAL})",
+            fmt_num(unit)
+        ));
+    }
+    // The true value, unit × image / map, in logarithms (its ratio may itself underflow).
+    let log = unit.log10() + image.log10() - map.log10();
+    let (mut mantissa, mut exponent) = (10f64.powf(log - log.floor()), log.floor());
+    if (mantissa * 1e3).round() >= 1e4 {
+        // 9.9996 would print as 10.000.
+        (mantissa, exponent) = (mantissa / 10.0, exponent + 1.0);
+    }
+    let estimate = format!("{mantissa:.3}e{exponent}");
+    let head = format!(
+        "and {map_name} make {what} underflow f64: {what} is proportional to res_image/{map_name} \
+         (res_image={}, {map_name}={})",
+        fmt_num(image),
+        fmt_num(map)
+    );
+    let at_unit = format!(
+        "evaluate it at res_image={map_name}=1 ({what} = {})",
+        fmt_num(unit)
+    );
+    let reason = if log < f64::MIN_POSITIVE.log10() {
+        format!(
+            "{head} and would be returned as {got}, but its value, about {estimate}, is below \
+             the smallest normal f64 ({MIN_NORMAL}); {at_unit} and scale by res_image/{map_name} \
+             yourself, in logarithms"
+        )
+    } else {
+        format!(
+            "{head}, a ratio below the smallest normal f64 ({MIN_NORMAL}), and would be returned \
+             as {got} though its value is about {estimate}; {at_unit} and scale by \
+             res_image/{map_name} yourself, multiplying by res_image before dividing by \
+             {map_name}"
+        )
+    };
+    Error::invalid("res_image", reason)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -203,6 +310,43 @@ mod tests {
             positive("near", -1e300).unwrap_err().to_string(),
             "near must be greater than 0 (got -1e300)"
         );
+    }
+
+    #[test]
+    fn positive_result_refuses_what_is_not_a_normal_number() {
+        let res = ResRatio::new(1e-300, "res_s", 1e300);
+        assert_eq!(positive_result("m", 2.5, res, || unreachable!()), Ok(2.5));
+        // Non-finite: as `finite_result`.
+        assert_eq!(
+            positive_result("m", f64::INFINITY, res, || 1.0),
+            finite_result("m", f64::INFINITY)
+        );
+        // An estimate whose mantissa rounds to 10 moves to the next power: 9.99996e-600 (unit
+        // value 9.99996 at a ratio of 1e-600) is "about 1.000e-599", never "10.000e-600".
+        let e = positive_result("m", 0.0, res, || 9.99996).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::InvalidArgument {
+                    name: "res_image",
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        assert!(e.to_string().contains("about 1.000e-599,"), "{e}");
+        // At unit resolutions, or where the unit value is itself not normal, the resolutions are
+        // not the cause.
+        let unit = ResRatio::new(1.0, "res_t", 1.0);
+        let e = positive_result("m_z", 1e-320, unit, || 1e-320).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "degenerate geometry: m_z is positive but would be returned as the subnormal 1e-320 \
+             for these inputs: at res_image=res_t=1 it is 1e-320, outside f64's normal range \
+             (from 2.2e-308)"
+        );
+        let e = positive_result("m_z", 0.0, res, || 0.0).unwrap_err();
+        assert!(matches!(e, Error::Degenerate(_)), "{e}");
     }
 
     #[test]

@@ -25,7 +25,7 @@
 //! ```
 
 use crate::analytic::eta::{n_prime_at_least, near_far};
-use crate::error::{finite_result, fmt_num, positive, Error, Result};
+use crate::error::{finite_result, fmt_num, positive, positive_result, Error, ResRatio, Result};
 use crate::frustum::{NPrime, Resolutions, ViewFrustum};
 use crate::numeric::sqrt_fn;
 use std::hint::select_unpredictable as select;
@@ -76,16 +76,40 @@ fn depth_outside(z: f64, n: f64, f: f64) -> Error {
 /// s = x / (2 z′ tan θ′) + ½, z′ = n′ + z − n, tan θ′ = (f / f′) tan θ, f′ = n′ + f − n.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far), `n_prime` (n′ ≥ near) or
-/// `z` (near ≤ z ≤ far).
+/// [`Error::InvalidArgument`] naming `near`, `far` (0 < near < far), `n_prime` (n′ ≥ near),
+/// `z` (near ≤ z ≤ far), or
+/// `res_image` and `res_s` when they scale the value, which is positive, below f64's normal range
+/// (0 or a subnormal is never returned; the message estimates the value and says how to get
+/// it); [`Error::Degenerate`] when the value is not finite.
 #[inline]
 pub fn mx(near: f64, far: f64, n_prime: NPrime, z: f64, res: Resolutions) -> Result<f64> {
+    mx_scaled(
+        near,
+        far,
+        n_prime,
+        z,
+        ResRatio::new(res.image(), "res_s", res.s()),
+    )
+}
+
+/// [`mx`] with the map's resolution named by the caller (Lloyd 2005's `res_x` is the crate's
+/// `res_s`).
+#[inline]
+pub(crate) fn mx_scaled(
+    near: f64,
+    far: f64,
+    n_prime: NPrime,
+    z: f64,
+    res: ResRatio,
+) -> Result<f64> {
     let (n, f) = near_far(near, far)?;
-    let np = n_prime_at_least(n_prime, n)?;
+    let np = n_prime_at_least(n_prime, n)?.unwrap_or(f64::INFINITY);
     let z = depth_in(z, n, f)?;
-    finite_result(
+    positive_result(
         "m_x",
-        mx_unchecked(n, f, np.unwrap_or(f64::INFINITY), z, res.image(), res.s()),
+        mx_unchecked(n, f, np, z, res.image, res.map),
+        res,
+        || mx_unchecked(n, f, np, z, 1.0, 1.0),
     )
 }
 
@@ -118,23 +142,20 @@ pub fn mx_unchecked(near: f64, far: f64, n_prime: f64, z: f64, res_image: f64, r
 /// t(z′) = (f′ + n′)/(2 (f′ − n′)) − f′ n′ / (z′ (f′ − n′)) + ½.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `n_prime` (n′ ≥ near) or `z` (near ≤ z ≤ far).
+/// [`Error::InvalidArgument`] naming `n_prime` (n′ ≥ near), `z` (near ≤ z ≤ far), or
+/// `res_image` and `res_t` when they scale the value, which is positive, below f64's normal range
+/// (0 or a subnormal is never returned; the message estimates the value and says how to get
+/// it); [`Error::Degenerate`] when the value is not finite.
 #[inline]
 pub fn mz(view: &ViewFrustum, n_prime: NPrime, z: f64, res: Resolutions) -> Result<f64> {
-    let (n, f) = (view.near(), view.far());
-    let np = n_prime_at_least(n_prime, n)?;
+    let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
+    let np = n_prime_at_least(n_prime, n)?.unwrap_or(f64::INFINITY);
     let z = depth_in(z, n, f)?;
-    finite_result(
+    positive_result(
         "m_z",
-        mz_unchecked(
-            n,
-            f,
-            view.tan_half_fov(),
-            np.unwrap_or(f64::INFINITY),
-            z,
-            res.image(),
-            res.t(),
-        ),
+        mz_unchecked(n, f, t, np, z, res.image(), res.t()),
+        ResRatio::new(res.image(), "res_t", res.t()),
+        || mz_unchecked(n, f, t, np, z, 1.0, 1.0),
     )
 }
 
@@ -195,21 +216,19 @@ pub fn max_mx(near: f64, far: f64, n_prime: NPrime, res: Resolutions) -> Result<
 /// Dimensionless.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `n_prime` (n′ ≥ near).
+/// [`Error::InvalidArgument`] naming `n_prime` (n′ ≥ near), or
+/// `res_image` and `res_t` when they scale the value, which is positive, below f64's normal range
+/// (0 or a subnormal is never returned; the message estimates the value and says how to get
+/// it); [`Error::Degenerate`] when the value is not finite.
 #[inline]
 pub fn max_mz(view: &ViewFrustum, n_prime: NPrime, res: Resolutions) -> Result<f64> {
-    let (n, f) = (view.near(), view.far());
-    let np = n_prime_at_least(n_prime, n)?;
-    finite_result(
+    let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
+    let np = n_prime_at_least(n_prime, n)?.unwrap_or(f64::INFINITY);
+    positive_result(
         "M_z",
-        max_mz_unchecked(
-            n,
-            f,
-            view.tan_half_fov(),
-            np.unwrap_or(f64::INFINITY),
-            res.image(),
-            res.t(),
-        ),
+        max_mz_unchecked(n, f, t, np, res.image(), res.t()),
+        ResRatio::new(res.image(), "res_t", res.t()),
+        || max_mz_unchecked(n, f, t, np, 1.0, 1.0),
     )
 }
 

@@ -34,8 +34,10 @@
 
 use crate::analytic::eta::{eta_from_n_prime, n_prime_from_eta};
 use crate::analytic::partition::{z_splits, SplitScheme, Splits};
-use crate::error::{finite_result, fmt_num, in_closed, in_open, positive, Error, Result};
-use crate::frustum::{NPrime, Resolutions};
+use crate::error::{
+    finite_result, fmt_num, in_closed, in_open, positive, positive_result, Error, ResRatio, Result,
+};
+use crate::frustum::NPrime;
 
 /// Validates α > 1, finite.
 #[inline]
@@ -174,7 +176,10 @@ pub fn distribution_g_unchecked(alpha: f64, n_warp: f64, z: f64) -> f64 {
 /// Lloyd 2006's m_z (Eq 8) at depth z·near for n′ = n·near.
 ///
 /// # Errors
-/// As [`distribution_g`], and `half_fov` (∈ (0, π/2)), `res_image`, `res_s` (> 0).
+/// As [`distribution_g`], and `half_fov` (∈ (0, π/2)), `res_image`, `res_s` (> 0), and
+/// `res_image` and `res_s` when they
+/// scale the value, which is positive, below f64's normal range (0 or a subnormal is never
+/// returned; the message estimates the value and says how to get it).
 pub fn error_m(
     alpha: f64,
     half_fov: f64,
@@ -187,7 +192,14 @@ pub fn error_m(
     let rp = positive("res_image", res_image)?;
     let rs = positive("res_s", res_s)?;
     let g = distribution_g(alpha, n_warp, z)?;
-    finite_result("m", rp / rs * (alpha - 1.0) / (2.0 * t) * g)
+    let m = |ratio: f64| ratio * (alpha - 1.0) / (2.0 * t) * g;
+    positive_result("m", m(rp / rs), warp_res(rp, rs), || m(1.0))
+}
+
+/// The resolutions of Lloyd 2005's error along the warp: `res_image / res_s`.
+#[inline]
+fn warp_res(res_image: f64, res_s: f64) -> ResRatio {
+    ResRatio::new(res_image, "res_s", res_s)
 }
 
 /// ξ from the warp distance n (Lloyd 2005 §3.2).
@@ -252,7 +264,10 @@ pub fn max_error_depth(alpha: f64, eta: f64) -> Result<f64> {
 /// Symbols as in [`error_m`]; ξ = `eta` ∈ [−1, 1]. Dimensionless.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `alpha`, `half_fov`, `eta`, `res_image` or `res_s`.
+/// [`Error::InvalidArgument`] naming `alpha`, `half_fov`, `eta`, `res_image` or `res_s`, and
+/// `res_image` and `res_s` when they
+/// scale the value, which is positive, below f64's normal range (0 or a subnormal is never
+/// returned; the message estimates the value and says how to get it).
 pub fn max_error(alpha: f64, half_fov: f64, eta: f64, res_image: f64, res_s: f64) -> Result<f64> {
     let a = alpha_ok(alpha)?;
     let t = tan_ok(half_fov)?;
@@ -260,10 +275,8 @@ pub fn max_error(alpha: f64, half_fov: f64, eta: f64, res_image: f64, res_s: f64
     let rp = positive("res_image", res_image)?;
     let rs = positive("res_s", res_s)?;
     let ra = a.sqrt();
-    finite_result(
-        "m_max",
-        rp / rs * (a - 1.0) / (2.0 * t) * (1.0 + eta.abs() * (ra - 1.0)) / ra,
-    )
+    let m = |ratio: f64| ratio * (a - 1.0) / (2.0 * t) * (1.0 + eta.abs() * (ra - 1.0)) / ra;
+    positive_result("m_max", m(rp / rs), warp_res(rp, rs), || m(1.0))
 }
 
 fn check_errors(errors: &[f64]) -> Result<f64> {
@@ -397,7 +410,9 @@ pub fn face_subdivision_planes(alpha: f64, k: usize) -> Result<Splits> {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `alpha`, `k` (≥ 1), `half_fov`, `eta`, `res_image` or
-/// `res_s`.
+/// `res_s`, and `res_image` and `res_s` when they
+/// scale the value, which is positive, below f64's normal range (0 or a subnormal is never
+/// returned; the message estimates the value and says how to get it).
 pub fn subdivided_max_error(
     alpha: f64,
     k: usize,
@@ -414,9 +429,11 @@ pub fn subdivided_max_error(
     let eta = in_closed("eta", eta, -1.0, 1.0)?;
     let rp = positive("res_image", res_image)?;
     let rs = positive("res_s", res_s)?;
-    finite_result(
+    positive_result(
         "m_max",
         subdivided_max_error_unchecked(a, k, eta, t, rp, rs),
+        warp_res(rp, rs),
+        || subdivided_max_error_unchecked(a, k, eta, t, 1.0, 1.0),
     )
 }
 
@@ -479,7 +496,10 @@ pub fn subdivided_max_error_unchecked(
 /// [`distribution_g`]. Dimensionless.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `alpha`, `n_warp`, `z`, `res_image` or `res_x`.
+/// [`Error::InvalidArgument`] naming `alpha`, `n_warp`, `z`, `res_image` or `res_x`, and
+/// `res_image` and `res_x` when they
+/// scale the value, which is positive, below f64's normal range (0 or a subnormal is never
+/// returned; the message estimates the value and says how to get it).
 pub fn mx_normalised(
     alpha: f64,
     n_warp: NPrime,
@@ -493,7 +513,7 @@ pub fn mx_normalised(
     let rp = positive("res_image", res_image)?;
     let rt = positive("res_x", res_x)?;
     // Lloyd 2006 Eq 7 with near = 1, far = α (one implementation, in `overhead`).
-    crate::analytic::overhead::mx(1.0, a, n_warp, z, Resolutions::new(rp, rt, 1.0)?)
+    crate::analytic::overhead::mx_scaled(1.0, a, n_warp, z, ResRatio::new(rp, "res_x", rt))
 }
 
 /// The maximum x error, on the near plane z = 1, in terms of ξ (Lloyd 2005 Eq 9).
@@ -509,7 +529,10 @@ pub fn mx_normalised(
 /// Dimensionless.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `alpha`, `eta`, `res_image` or `res_x`.
+/// [`Error::InvalidArgument`] naming `alpha`, `eta`, `res_image` or `res_x`, and
+/// `res_image` and `res_x` when they
+/// scale the value, which is positive, below f64's normal range (0 or a subnormal is never
+/// returned; the message estimates the value and says how to get it).
 pub fn max_mx_normalised(alpha: f64, eta: f64, res_image: f64, res_x: f64) -> Result<f64> {
     let a = alpha_ok(alpha)?;
     let eta = in_closed("eta", eta, -1.0, 1.0)?;
@@ -521,7 +544,12 @@ pub fn max_mx_normalised(alpha: f64, eta: f64, res_image: f64, res_x: f64) -> Re
     } else {
         a / (ra * (1.0 + eta * (ra - 1.0)))
     };
-    finite_result("m_x,max", rp / rt * shape)
+    positive_result(
+        "m_x,max",
+        rp / rt * shape,
+        ResRatio::new(rp, "res_x", rt),
+        || shape,
+    )
 }
 
 #[cfg(test)]

@@ -42,7 +42,9 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
-use crate::error::{finite_result, fmt_num, in_closed, positive, Error, Result};
+use crate::error::{
+    finite_result, fmt_num, in_closed, positive, positive_result, Error, ResRatio, Result,
+};
 use crate::frustum::{LightAngle, NPrime, Resolutions, ViewFrustum};
 use crate::numeric::sqrt_fn;
 use std::hint::select_unpredictable as select;
@@ -171,9 +173,11 @@ fn psi_offset_parts(n: f64, f: f64, tc: f64, upper: bool, s: f64, z: f64) -> f64
 /// Domain: n′ > 0, 0 < γ ≤ π/2. Unit: 1 / eye-space distance.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `n_prime` (not finite and positive) or `light_angle`
-/// (γ = 0, where ξ is infinite: t does not change along the view axis); [`Error::Degenerate`]
-/// when μ or ξ overflows.
+/// [`Error::InvalidArgument`] naming `n_prime` (not finite and positive), `light_angle`
+/// (γ = 0, where ξ is infinite: t does not change along the view axis), or
+/// `res_image` and `res_t` when they scale the value, which is positive, below f64's normal
+/// range (0 or a subnormal is never returned; the message estimates the value and says how to
+/// get it); [`Error::Degenerate`] when μ or ξ overflows.
 #[inline]
 pub fn tilted_xi(
     view: &ViewFrustum,
@@ -184,10 +188,14 @@ pub fn tilted_xi(
     let np = positive("n_prime", n_prime)?;
     let s = positive_sin(light_angle)?;
     let mu = warp_depth_range(view, light_angle)?;
-    finite_result(
-        "xi",
-        res.image() / res.t() / (2.0 * view.tan_half_fov()) * mu / (np * (np + mu)) / s,
-    )
+    let xi = |ratio: f64| ratio / (2.0 * view.tan_half_fov()) * mu / (np * (np + mu)) / s;
+    positive_result("xi", xi(res.image() / res.t()), res_t(res), || xi(1.0))
+}
+
+/// The resolutions of an m_z: `res_image / res_t`.
+#[inline]
+fn res_t(res: Resolutions) -> ResRatio {
+    ResRatio::new(res.image(), "res_t", res.t())
 }
 
 #[inline]
@@ -212,32 +220,7 @@ fn parallel_light(light_angle: LightAngle) -> Error {
     )
 }
 
-/// Perpendicular m_z without validation of n′ and z: `res_i/res_t · μ ψ² / (2 tan φ_y · n′ (n′ + μ)
-/// · z)`, and `res_i/res_t · μ / (2 tan φ_y z)` unwarped. Errors only when μ overflows.
-#[inline]
-fn mz_perp_unchecked(
-    view: &ViewFrustum,
-    n_prime: Option<f64>,
-    light_angle: LightAngle,
-    z: f64,
-    res: Resolutions,
-) -> Result<f64> {
-    // μ's own error (an overflow) first; the parts take μ again.
-    warp_depth_range(view, light_angle)?;
-    let (s, c) = light_angle.radians().sin_cos();
-    Ok(mz_perp_parts(
-        view.near(),
-        view.far(),
-        view.tan_half_fov(),
-        light_angle.radians() >= view.half_fov(),
-        (s, c),
-        n_prime.unwrap_or(f64::INFINITY),
-        z,
-        res.image() / res.t(),
-    ))
-}
-
-/// The perpendicular m_z of [`mz_perp_unchecked`] from its parts, every branch computed and
+/// The perpendicular m_z of [`tilted_mz_perpendicular`] from its parts, every branch computed and
 /// selected without a jump: `upper` is γ ≥ φ_y, `(s, c)` the sine and cosine of γ, n′ = ∞
 /// unwarped, `res` = res_i/res_t.
 #[inline(always)]
@@ -274,7 +257,10 @@ fn mz_perp_parts(
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_angle` (γ = 0, where this along-axis width is
-/// infinite) or `z` (outside `[near, far]`);
+/// infinite), `z` (outside `[near, far]`), or
+/// `res_image` and `res_t` when they scale the value, which is positive, below f64's normal
+/// range (0 or a subnormal is never returned; the message estimates the value and says how to
+/// get it);
 /// [`Error::Degenerate`] when the value (or μ) overflows.
 ///
 /// ```
@@ -298,8 +284,7 @@ pub fn tilted_mz(
     let z = depth_in_view(view, z)?;
     // μ's own error first (an overflow), then the value from the twin, which takes μ again.
     warp_depth_range(view, light_angle)?;
-    finite_result(
-        "m_z",
+    let m = |ri: f64, rt: f64| {
         tilted_mz_unchecked(
             view.near(),
             view.far(),
@@ -308,10 +293,11 @@ pub fn tilted_mz(
             n_prime.value(),
             light_angle.radians(),
             z,
-            res.image(),
-            res.t(),
-        ),
-    )
+            ri,
+            rt,
+        )
+    };
+    positive_result("m_z", m(res.image(), res.t()), res_t(res), || m(1.0, 1.0))
 }
 
 /// [`tilted_mz`] without validation (Barroso Eq 10–12, `m_z = (res_i/res_t) · μ ψ² / (2 tan φ_y
@@ -363,8 +349,10 @@ pub fn tilted_mz_unchecked(
 /// resolutions. Defined for every γ ∈ [0, π/2].
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] naming `z` (outside `[near, far]`); [`Error::Degenerate`] when the
-/// value (or μ) overflows.
+/// [`Error::InvalidArgument`] naming `z` (outside `[near, far]`), or
+/// `res_image` and `res_t` when they scale the value, which is positive, below f64's normal
+/// range (0 or a subnormal is never returned; the message estimates the value and says how to
+/// get it); [`Error::Degenerate`] when the value (or μ) overflows.
 #[inline]
 pub fn tilted_mz_perpendicular(
     view: &ViewFrustum,
@@ -373,9 +361,14 @@ pub fn tilted_mz_perpendicular(
     z: f64,
     res: Resolutions,
 ) -> Result<f64> {
-    let np = n_prime.as_finite();
     let z = depth_in_view(view, z)?;
-    finite_result("m_z", mz_perp_unchecked(view, np, light_angle, z, res)?)
+    // μ's own error (an overflow) first; the parts take μ again.
+    warp_depth_range(view, light_angle)?;
+    let sc = light_angle.radians().sin_cos();
+    let upper = light_angle.radians() >= view.half_fov();
+    let (n, f, t) = (view.near(), view.far(), view.tan_half_fov());
+    let m = |ratio: f64| mz_perp_parts(n, f, t, upper, sc, n_prime.value(), z, ratio);
+    positive_result("m_z", m(res.image() / res.t()), res_t(res), || m(1.0))
 }
 
 /// Barroso's n′₁(γ) (Eq 13, first branch): the n′ that makes m_z equal on the near and far

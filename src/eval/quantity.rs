@@ -37,66 +37,13 @@ impl Quantity {
     ///
     /// # Errors
     /// A message naming the argument that is missing, unknown, of the wrong type, NaN or
-    /// infinite, or outside the closed form's domain; or naming the resolutions when they scale
-    /// a nonzero value below f64's normal range (it would print as 0 or lose its digits).
+    /// infinite, or outside the closed form's domain; or the closed form's own error, which for
+    /// a quantity with resolution arguments names them when they scale its (positive) value
+    /// below f64's normal range (it would print as 0 or lose its digits).
     pub fn evaluate(&self, request: &Map<String, Value>) -> std::result::Result<Output, String> {
         let args = self.parse_args(request)?;
         let out = (self.compute)(&args).map_err(|e| e.to_string())?;
-        let out = out.check(self.name)?;
-        self.check_underflow(&args, &out)?;
-        Ok(out)
-    }
-
-    /// Every quantity with resolution arguments is proportional to `res_image/res_s` (or
-    /// `/res_t`): where a value of `out` is 0 or subnormal but the same request at unit
-    /// resolutions gives a normal value, the resolutions made a nonzero value underflow, and the
-    /// answer says so instead of printing 0 (or a subnormal with few digits left).
-    fn check_underflow(&self, args: &Args, out: &Output) -> std::result::Result<(), String> {
-        let lost = |v: f64| v == 0.0 || v.is_subnormal();
-        let values: &[f64] = match out {
-            Output::Number(v) => std::slice::from_ref(v),
-            Output::Numbers(vs) => vs,
-            Output::NPrime(_) => return Ok(()),
-        };
-        if !values.iter().copied().any(lost) {
-            return Ok(());
-        }
-        let res = |name: &'static str| match args.get(name) {
-            Some(Parsed::Number(v)) => Some(*v),
-            _ => None,
-        };
-        let image = res("res_image").unwrap_or(1.0);
-        let Some((map_name, map)) = ["res_s", "res_t"]
-            .into_iter()
-            .find_map(|n| res(n).map(|v| (n, v)))
-        else {
-            return Ok(());
-        };
-        if image == 1.0 && map == 1.0 {
-            return Ok(());
-        }
-        let mut unit_args = args.clone();
-        for (name, value) in &mut unit_args.values {
-            if name.starts_with("res_") {
-                *value = Parsed::Number(1.0);
-            }
-        }
-        let Ok(unit) = (self.compute)(&unit_args) else {
-            return Ok(());
-        };
-        let unit_values: &[f64] = match &unit {
-            Output::Number(v) => std::slice::from_ref(v),
-            Output::Numbers(vs) => vs,
-            Output::NPrime(_) => return Ok(()),
-        };
-        let Some((v, u)) = values
-            .iter()
-            .zip(unit_values)
-            .find(|(v, u)| lost(**v) && u.is_normal())
-        else {
-            return Ok(());
-        };
-        Err(underflow_message(self.name, (map_name, image, map), *v, *u))
+        out.check(self.name)
     }
 
     fn parse_args(&self, request: &Map<String, Value>) -> std::result::Result<Args, String> {
@@ -206,38 +153,6 @@ impl Output {
             }
         }
     }
-}
-
-/// The message for a value `v` that underflowed where the same request at unit resolutions
-/// gives `unit`: the value it should have been (unit × res_image/res_map, in logarithms), the
-/// arguments that scaled it and what to do.
-#[cold]
-#[inline(never)]
-fn underflow_message(
-    quantity: &str,
-    (map_name, image, map): (&str, f64, f64),
-    v: f64,
-    unit: f64,
-) -> String {
-    let log = unit.abs().log10() + image.log10() - map.log10();
-    let exponent = log.floor();
-    let mantissa = 10f64.powf(log - exponent).copysign(unit);
-    let got = if v == 0.0 {
-        "0".to_string()
-    } else {
-        format!("the subnormal {}", fmt_num(v))
-    };
-    format!(
-        "{quantity} underflows f64 for these arguments: it is proportional to \
-         res_image/{map_name} (res_image={}, {map_name}={}), and its value, about {mantissa:.3}e{exponent}, \
-         is below the smallest normal f64 (2.2e-308), so it would be returned as {got}; give \
-         res_image and {map_name} in proportion (for instance res_image=1, \
-         {map_name}={map_name}/res_image), or evaluate with res_image={map_name}=1 (value {}) and \
-         scale by res_image/{map_name} in logarithms",
-        fmt_num(image),
-        fmt_num(map),
-        fmt_num(unit),
-    )
 }
 
 /// Shortest representation that parses back to the same `f64`; `"inf"`/`"-inf"`/`"nan"` strings
