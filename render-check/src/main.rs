@@ -30,7 +30,7 @@ fn real_main() -> Result<(), String> {
         res: None,
         frames: 64,
         shimmer_points: 4000,
-        without_casters: false,
+        fault: None,
     };
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {

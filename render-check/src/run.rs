@@ -58,10 +58,9 @@ pub struct Sizes {
     pub frames: usize,
     /// Sample points of the shimmer test (at most).
     pub shimmer_points: usize,
-    /// Leave the casters out of the maps' depth range (the frame API without `.casters`):
-    /// casters nearer the light than the focus body are then clipped (the check that the
-    /// correctness test can fail).
-    pub without_casters: bool,
+    /// One deliberate fault injected into every frame built ([`crate::faults::Fault`]; the check
+    /// that the targets can fail), or none.
+    pub fault: Option<crate::faults::Fault>,
 }
 
 /// A case's full result.
@@ -159,7 +158,7 @@ pub fn run_case(
     let res = sizes.res.unwrap_or(scene.map_resolution);
     let view = View::new(&scene.camera, scene.light(), sizes.width, sizes.height)?;
     let mesh = Mesh::build(scene);
-    let built = build(scheme, &view, scene, res, !sizes.without_casters)?;
+    let built = build(scheme, &view, scene, res, sizes.fault)?;
     let eye = EyeMesh::new(&mesh, view.world_to_eye);
     let parts = gpu_parts(&built);
     let out = gpu.render(&input(&view, &mesh, &eye, &built, &parts, res, sizes))?;
@@ -235,7 +234,7 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
     let texel = 2.0 * r / f64::from(res - 2);
     let step = 0.37 * texel;
     // Sample points from frame 0.
-    let built0 = build(scheme, &view0, scene, res, !sizes.without_casters)?;
+    let built0 = build(scheme, &view0, scene, res, sizes.fault)?;
     let eye0 = EyeMesh::new(&mesh, view0.world_to_eye);
     let parts0 = gpu_parts(&built0);
     let out0 = gpu.render(&input(&view0, &mesh, &eye0, &built0, &parts0, res, sizes))?;
@@ -256,7 +255,7 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
     for i in 0..sizes.frames {
         let s = moved(scene, i, step);
         let view = View::new(&s.camera, s.light(), sizes.width, sizes.height)?;
-        let built = build(scheme, &view, &s, res, !sizes.without_casters)?;
+        let built = build(scheme, &view, &s, res, sizes.fault)?;
         let eye = EyeMesh::new(&mesh, view.world_to_eye);
         let parts = gpu_parts(&built);
         let depth = gpu.render_maps(&input(&view, &mesh, &eye, &built, &parts, res, sizes))?;

@@ -6,6 +6,7 @@
 //! the frame's world → light clip is `S V`) is used with eye-space vertices (the GPU gets
 //! eye-space positions, transformed in `f64`).
 
+use crate::faults::Fault;
 use crate::scene::{Camera, Scene};
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
@@ -72,7 +73,7 @@ pub enum Select {
 }
 
 /// One map: its eye → light clip matrix (OpenGL depth, as built) and the GPU's (the same map
-/// with depth [0, 1]).
+/// with depth [0, 1]), how the shader selects it, and what the frame reported for it.
 #[derive(Debug, Clone, Copy)]
 pub struct Map {
     /// As built (eye → light clip, OpenGL depth): what the measurement takes.
@@ -85,6 +86,26 @@ pub struct Map {
     pub near: f64,
     /// Depth range covered.
     pub far: f64,
+    /// What the frame reported for this map (`FrameMap`'s numbers), kept as reported when a
+    /// fault changes the matrix.
+    pub reported: Reported,
+}
+
+/// A map's numbers as the frame reported them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Reported {
+    /// `FrameMap::max_error_pixels`: max(M_x, M_z) · image height / map resolution.
+    pub max_error_pixels: f64,
+    /// `FrameMap::max_mx` (unit resolutions).
+    pub max_mx: f64,
+    /// `FrameMap::max_mz` (unit resolutions).
+    pub max_mz: f64,
+    /// The warp's n′ (infinite for an orthographic map).
+    pub n_prime: f64,
+    /// `FrameMap::texel_world`.
+    pub texel_world: f64,
+    /// `FrameMap::blend`.
+    pub blend: (f64, f64),
 }
 
 /// A scheme built for one frame.
@@ -229,9 +250,9 @@ fn frame_scheme(scheme_: Scheme, view: &ViewFrustum) -> FrameScheme<'static> {
 
 /// Builds `scheme` for `view`, `res` texels per map side, through the crate's world-space frame
 /// API ([`shadow_aliasing::frame::frame`]): each map is focused on the receivers in view, its
-/// depth range reaches every caster that can shadow them (unless `casters` is false: the check
-/// that a lost caster is caught, [`crate::run::Sizes::without_casters`]), and the GPU renders with
-/// the frame's own matrix in depth \[0, 1\].
+/// depth range reaches every caster that can shadow them, and the GPU renders with the frame's
+/// own matrix in depth \[0, 1\]. `fault` injects one deliberate fault ([`Fault`], the check that
+/// the targets can fail) into the frame's input, its matrices or the maps' selection.
 ///
 /// # Errors
 /// The crate's error, as text; a frame with no map (the scene out of view) is an error here.
@@ -240,7 +261,7 @@ pub fn build(
     view: &View,
     scene: &Scene,
     res: u32,
-    casters: bool,
+    fault: Option<Fault>,
 ) -> Result<Built, String> {
     let e = |e: shadow_aliasing::Error| format!("{}: {e}", scheme_.name());
     let fr = &view.frustum;
@@ -253,9 +274,10 @@ pub fn build(
         fr.aspect(),
     )
     .map_err(e)?;
-    let input = FrameInput::new(camera, view.light_world, res, 1)
+    let light = Fault::frame_light(fault, view.light_world);
+    let input = FrameInput::new(camera, light, res, 1)
         .receivers(Bound::Boxes(&receivers))
-        .casters(if casters {
+        .casters(if Fault::keeps_casters(fault) {
             Bound::Boxes(&boxes)
         } else {
             Bound::Unbounded
@@ -269,17 +291,33 @@ pub fn build(
             f.focus()
         ));
     }
-    let maps = f
+    let mut maps: Vec<Map> = f
         .maps()
         .iter()
-        .map(|m| Map {
-            built: m.shadow.matrix(),
-            gpu: m.shadow.with_clip_depth(ClipDepth::ZeroToOne),
-            region: m.face.map_or(-1, face_id),
-            near: m.split.0,
-            far: m.split.1,
+        .map(|m| {
+            let clean = m.shadow.matrix();
+            let (built, gpu) = match fault.and_then(|x| x.matrix(m, clean, view)) {
+                Some(b) => (b, Fault::gpu_matrix(b)),
+                None => (clean, m.shadow.with_clip_depth(ClipDepth::ZeroToOne)),
+            };
+            Map {
+                built,
+                gpu,
+                region: m.face.map_or(-1, face_id),
+                near: m.split.0,
+                far: m.split.1,
+                reported: Reported {
+                    max_error_pixels: m.max_error_pixels,
+                    max_mx: m.max_mx,
+                    max_mz: m.max_mz,
+                    n_prime: m.shadow.n_prime().value(),
+                    texel_world: m.texel_world,
+                    blend: m.blend,
+                },
+            }
         })
         .collect();
+    Fault::selection(fault, &mut maps);
     let select = match scheme_ {
         Scheme::Cascades | Scheme::StableCascades => Select::Depth,
         Scheme::Faces => Select::Faces,

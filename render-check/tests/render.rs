@@ -2,6 +2,7 @@
 //! two set-ups at a small resolution, asserting the targets, and the shimmer test. With no
 //! Vulkan adapter these tests fail, naming `mesa-vulkan-drivers`; they never skip.
 
+use render_check::faults::Fault;
 use render_check::gpu::Gpu;
 use render_check::run::{run_case, shimmer, Sizes};
 use render_check::schemes::{setups, Scheme};
@@ -13,7 +14,7 @@ const SIZES: Sizes = Sizes {
     res: Some(1024),
     frames: 64,
     shimmer_points: 1500,
-    without_casters: false,
+    fault: None,
 };
 
 fn gpu() -> Gpu {
@@ -66,7 +67,7 @@ fn depth_range_without_the_casters_is_caught() {
     let gpu = gpu();
     let setup = setups().into_iter().find(|s| s.name == "behind_5").unwrap();
     let sizes = Sizes {
-        without_casters: true,
+        fault: Some(Fault::NoCasters),
         ..SIZES
     };
     let r = run_case(&gpu, &setup.name, &setup.scene, Scheme::Uniform, sizes).unwrap();

@@ -1,0 +1,349 @@
+//! Deliberate faults (`render-check --fault NAME`, `render-check --self-test`): each changes what
+//! the frame returns, or how the renderer uses it, in one way a real bug could, so that the
+//! targets ([`crate::targets`]) can be seen to fail. A fault is applied where render-check builds
+//! the frame ([`crate::schemes::build`]): to the frame's input (the casters, the light), to each
+//! map's matrix (both the matrix the measurement takes and the GPU's, so that the two stay
+//! consistent and only the frame's own reported numbers, the ray cast and the coverage can tell),
+//! or to the split ranges and faces the shader selects maps by.
+//!
+//! The renderer does not cross-fade cascades (the frame's cascades are built with overlap 0, so
+//! their blend band is empty), so there is no "blend band ignored" fault.
+
+use crate::schemes::{Map, Scheme, View};
+use glam::{DMat4, DVec3, DVec4};
+use shadow_aliasing::frame::FrameMap;
+
+/// One deliberate fault.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Fault {
+    /// Every map's matrix scaled by 1.01 about the map centre (clip x and y × 1.01).
+    MatrixScale,
+    /// Every map's light depth shifted by two texels' worth: the scene moved 2 × the frame's
+    /// `texel_world` along the light (away from it) before the matrix.
+    DepthShift,
+    /// Every warped map's n′ doubled, the map refitted to its focus body (s and t tight, the
+    /// depth range kept).
+    NPrimeDouble,
+    /// The casters left out of the frame (its depth range fitted to the focus body alone).
+    NoCasters,
+    /// The frame built for a light rotated by 0.5° (the scene lit by the true light).
+    LightRotated,
+    /// Cascade selection off by one: a fragment in split i takes map i + 1 (the last split keeps
+    /// the last map).
+    CascadeOffByOne,
+    /// Stable cascades not snapped: each map's square centred on its bounding sphere exactly.
+    Unsnapped,
+    /// Face partitions: every map given to the wrong face (each face's maps labelled with the
+    /// next face present, cyclically).
+    WrongFace,
+}
+
+/// clip x, y scale of [`Fault::MatrixScale`].
+const SCALE: f64 = 1.01;
+/// The rotation of [`Fault::LightRotated`], degrees.
+const LIGHT_DEG: f64 = 0.5;
+/// The depth shift of [`Fault::DepthShift`], in the frame's world-space texel edges.
+const DEPTH_TEXELS: f64 = 2.0;
+
+/// OpenGL depth → depth [0, 1] (`ShadowMatrix::with_clip_depth`: row 2 becomes (row 2 + row 3)/2).
+const GL_TO_01: DMat4 = DMat4::from_cols(
+    DVec4::new(1.0, 0.0, 0.0, 0.0),
+    DVec4::new(0.0, 1.0, 0.0, 0.0),
+    DVec4::new(0.0, 0.0, 0.5, 0.0),
+    DVec4::new(0.0, 0.0, 0.5, 1.0),
+);
+
+impl Fault {
+    /// Every fault, in the order of the self-test.
+    pub const ALL: [Fault; 8] = [
+        Fault::MatrixScale,
+        Fault::DepthShift,
+        Fault::NPrimeDouble,
+        Fault::NoCasters,
+        Fault::LightRotated,
+        Fault::CascadeOffByOne,
+        Fault::Unsnapped,
+        Fault::WrongFace,
+    ];
+
+    /// The name `--fault` takes.
+    pub fn name(self) -> &'static str {
+        match self {
+            Fault::MatrixScale => "matrix-scale",
+            Fault::DepthShift => "depth-shift",
+            Fault::NPrimeDouble => "n-prime-x2",
+            Fault::NoCasters => "no-casters",
+            Fault::LightRotated => "light-rotated",
+            Fault::CascadeOffByOne => "cascade-off-by-one",
+            Fault::Unsnapped => "unsnapped",
+            Fault::WrongFace => "wrong-face",
+        }
+    }
+
+    /// One line for `--help` and the docs.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Fault::MatrixScale => "every matrix scaled by 1.01 about the map centre",
+            Fault::DepthShift => "light depth shifted by two texels' worth (2 texel_world)",
+            Fault::NPrimeDouble => "n' x 2 in every warped map (refitted to its body)",
+            Fault::NoCasters => "casters left out of the depth range",
+            Fault::LightRotated => "the frame built for the light rotated 0.5 deg",
+            Fault::CascadeOffByOne => "cascade selection off by one",
+            Fault::Unsnapped => "stable cascades not snapped to texels",
+            Fault::WrongFace => "face partitions: every map given to the wrong face",
+        }
+    }
+
+    /// The fault named `s`.
+    ///
+    /// # Errors
+    /// An unknown name, with the list of names.
+    pub fn parse(s: &str) -> Result<Fault, String> {
+        Fault::ALL
+            .into_iter()
+            .find(|f| f.name() == s)
+            .ok_or_else(|| {
+                let names: Vec<&str> = Fault::ALL.iter().map(|f| f.name()).collect();
+                format!("--fault: unknown fault {s:?}; one of {}", names.join(", "))
+            })
+    }
+
+    /// Whether the fault can change `scheme` at all (the self-test runs only those).
+    pub fn applies_to(self, scheme: Scheme) -> bool {
+        match self {
+            Fault::NPrimeDouble => !matches!(scheme, Scheme::Uniform | Scheme::StableCascades),
+            Fault::CascadeOffByOne => matches!(scheme, Scheme::Cascades | Scheme::StableCascades),
+            Fault::Unsnapped => scheme == Scheme::StableCascades,
+            Fault::WrongFace => scheme == Scheme::Faces,
+            _ => true,
+        }
+    }
+
+    /// Whether the frame is given the casters.
+    pub fn keeps_casters(fault: Option<Fault>) -> bool {
+        fault != Some(Fault::NoCasters)
+    }
+
+    /// The light the frame is built for (unit, world space), given the scene's `light`.
+    pub fn frame_light(fault: Option<Fault>, light: DVec3) -> DVec3 {
+        if fault != Some(Fault::LightRotated) {
+            return light;
+        }
+        let axis = light.cross(DVec3::Y);
+        let axis = if axis.length() < 1e-6 {
+            DVec3::X
+        } else {
+            axis.normalize()
+        };
+        glam::DQuat::from_axis_angle(axis, LIGHT_DEG.to_radians()) * light
+    }
+
+    /// The faulted OpenGL-depth matrix of `map` (its frame map `fm`, as built `built`), or
+    /// `None` when this fault leaves the matrix alone.
+    pub fn matrix(self, fm: &FrameMap, built: DMat4, view: &View) -> Option<DMat4> {
+        match self {
+            Fault::MatrixScale => Some(DMat4::from_scale(DVec3::new(SCALE, SCALE, 1.0)) * built),
+            Fault::DepthShift => Some(
+                built * DMat4::from_translation(view.light_eye * (DEPTH_TEXELS * fm.texel_world)),
+            ),
+            Fault::NPrimeDouble => n_prime_scaled(built, fm.body(), 2.0),
+            Fault::Unsnapped => {
+                let (c, _) = shadow_aliasing::maps::cascades::bounding_sphere(
+                    &view.frustum,
+                    fm.split.0,
+                    fm.split.1,
+                )
+                .ok()?;
+                let h = built * DVec4::new(0.0, 0.0, -c, 1.0);
+                let (x, y) = (h.x / h.w, h.y / h.w);
+                Some(
+                    DMat4::from_cols(DVec4::X, DVec4::Y, DVec4::Z, DVec4::new(-x, -y, 0.0, 1.0))
+                        * built,
+                )
+            }
+            _ => None,
+        }
+    }
+
+    /// The GPU's matrix (depth [0, 1]) of a faulted OpenGL-depth matrix.
+    pub fn gpu_matrix(built: DMat4) -> DMat4 {
+        GL_TO_01 * built
+    }
+
+    /// Changes how the renderer selects the maps (split ranges, faces).
+    pub fn selection(fault: Option<Fault>, maps: &mut [Map]) {
+        match fault {
+            Some(Fault::CascadeOffByOne) => {
+                // The shader takes the first map whose far exceeds the fragment's depth: each
+                // map given the previous one's range takes the fragments of the split before it.
+                for i in (0..maps.len()).rev() {
+                    let (near, far) = if i == 0 {
+                        (maps[0].near, maps[0].near)
+                    } else {
+                        (maps[i - 1].near, maps[i - 1].far)
+                    };
+                    maps[i].near = near;
+                    maps[i].far = far;
+                }
+                if let Some(last) = maps.last_mut() {
+                    last.far = f64::INFINITY;
+                }
+            }
+            Some(Fault::WrongFace) => {
+                let mut faces: Vec<i32> = maps.iter().map(|m| m.region).collect();
+                faces.sort_unstable();
+                faces.dedup();
+                for m in maps.iter_mut() {
+                    let k = faces.iter().position(|&f| f == m.region).unwrap_or(0);
+                    m.region = faces[(k + 1) % faces.len()];
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+/// `built` with its warp's n′ multiplied by `k`, refitted to `body` (eye space) as the builders
+/// fit a warp: t spans [−1, 1] over the body's range along the warp axis, s is refitted tightly
+/// about the same centre line, and the depth keeps the original range (scaled conservatively so
+/// that every point the original map held in depth, casters included, stays in it). `None` for an
+/// orthographic map (w constant over the body).
+///
+/// A perspective warp along the axis z with centre of projection n′ before the body's near end
+/// has w ∝ u + ν (u ∈ [0, 1] the position along the body, ν = n′/Δ) and
+/// t = −1 + 2u(1 + ν)/(u + ν); so ν follows from w's ratio between t = 1 and t = −1,
+/// `w₊/w₋ = 1 + 1/ν`, and the axis is the gradient of w.
+pub fn n_prime_scaled(built: DMat4, body: &[DVec3], k: f64) -> Option<DMat4> {
+    let rows = [built.row(0), built.row(1), built.row(2), built.row(3)];
+    let eval = |r: DVec4, p: DVec3| r.dot(p.extend(1.0));
+    // 1/w is affine in t: fit it through the body's extreme vertices in t.
+    let tw: Vec<(f64, f64)> = body
+        .iter()
+        .map(|&p| {
+            let w = eval(rows[3], p);
+            (eval(rows[1], p) / w, w)
+        })
+        .collect();
+    let lo = tw.iter().min_by(|a, b| a.0.total_cmp(&b.0))?;
+    let hi = tw.iter().max_by(|a, b| a.0.total_cmp(&b.0))?;
+    if hi.0 - lo.0 < 1e-9 {
+        return None;
+    }
+    let inv_at = |t: f64| 1.0 / lo.1 + (t - lo.0) * (1.0 / hi.1 - 1.0 / lo.1) / (hi.0 - lo.0);
+    let (w_m, w_p) = (1.0 / inv_at(-1.0), 1.0 / inv_at(1.0));
+    // The warp runs toward larger w: flip t when w falls with it.
+    let sigma = if w_p >= w_m { 1.0 } else { -1.0 };
+    let (w_near, w_far) = if sigma > 0.0 { (w_m, w_p) } else { (w_p, w_m) };
+    let ratio = w_far / w_near;
+    if !(ratio > 1.0 + 1e-9) || !ratio.is_finite() {
+        return None;
+    }
+    let nu = 1.0 / (ratio - 1.0);
+    let nu2 = k * nu;
+    let c_delta = w_far - w_near;
+    let e_w = DVec4::W;
+    let w_row = rows[3];
+    // u (c Δ) = w − ν c Δ; w₂ = c Δ (u + ν₂); y₂ = c Δ ((1 + 2ν₂) u − ν₂).
+    let w2 = w_row + e_w * ((nu2 - nu) * c_delta);
+    let y2 = (w_row * (1.0 + 2.0 * nu2) - e_w * (c_delta * ((1.0 + 2.0 * nu2) * nu + nu2))) * sigma;
+    // Remove the part of x and depth that follows w (their offsets), keep the rest.
+    let g = w_row.truncate();
+    let pure = |r: DVec4| r - w_row * (r.truncate().dot(g) / g.length_squared());
+    let x_pure = pure(rows[0]);
+    let z_pure = pure(rows[2]);
+    // s refitted over the body.
+    let (mut slo, mut shi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for &p in body {
+        let s = eval(x_pure, p) / eval(w2, p);
+        slo = slo.min(s);
+        shi = shi.max(s);
+    }
+    if !(shi - slo > 0.0) {
+        return None;
+    }
+    let x2 = (x_pure * 2.0 - w2 * (slo + shi)) / (shi - slo);
+    // Depth: z_pure/w ∈ [−1 − β, 1 − β] held the original range (β the offset removed); over
+    // u ∈ [0, 1] w/w₂ lies between ν/ν₂ and (1 + ν)/(1 + ν₂) (times the same c Δ).
+    let beta = rows[2].truncate().dot(g) / g.length_squared();
+    let (r0, r1) = (nu / nu2, (1.0 + nu) / (1.0 + nu2));
+    let ends = [
+        r0 * (-1.0 - beta),
+        r1 * (-1.0 - beta),
+        r0 * (1.0 - beta),
+        r1 * (1.0 - beta),
+    ];
+    let zlo = ends.iter().copied().fold(f64::INFINITY, f64::min);
+    let zhi = ends.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let z2 = (z_pure * 2.0 - w2 * (zlo + zhi)) / (zhi - zlo);
+    Some(DMat4::from_cols(x2, y2, z2, w2).transpose())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use shadow_aliasing::maps::{fit_warp, light_space};
+    use shadow_aliasing::{NPrime, ViewFrustum};
+
+    /// The doubled-n′ map equals the crate's own `fit_warp` with 2 n′ in s and t on the body,
+    /// for a map `fit_warp` built with n′ (an independent construction of the same warp).
+    #[test]
+    fn n_prime_doubled_matches_fit_warp() {
+        let view = ViewFrustum::new(1.0, 60.0, 0.6).unwrap();
+        let ls = light_space(DVec3::new(0.3, -1.0, -0.4), DVec3::NEG_Z).unwrap();
+        let body = view.corners();
+        let n = 7.5;
+        let m1 = fit_warp(&body, &ls, NPrime::finite(n).unwrap()).unwrap();
+        let m2 = fit_warp(&body, &ls, NPrime::finite(2.0 * n).unwrap()).unwrap();
+        let f = n_prime_scaled(m1, &body, 2.0).unwrap();
+        let st = |m: DMat4, p: DVec3| {
+            let h = m * p.extend(1.0);
+            (h.x / h.w, h.y / h.w, h.z / h.w)
+        };
+        for p in body {
+            let (a, b) = (st(f, p), st(m2, p));
+            assert!(
+                (a.0 - b.0).abs() < 1e-9 && (a.1 - b.1).abs() < 1e-9,
+                "{a:?} {b:?}"
+            );
+            assert!(a.2.abs() <= 1.0 + 1e-9, "{a:?}");
+        }
+        // An orthographic map has no n′ to scale.
+        let u = fit_warp(&body, &ls, NPrime::UNWARPED).unwrap();
+        assert!(n_prime_scaled(u, &body, 2.0).is_none());
+    }
+
+    /// Every map given to the wrong face: no map keeps its face.
+    #[test]
+    fn wrong_face_moves_every_map() {
+        let m = |region| Map {
+            built: DMat4::IDENTITY,
+            gpu: DMat4::IDENTITY,
+            region,
+            near: 1.0,
+            far: 2.0,
+            reported: crate::schemes::Reported {
+                max_error_pixels: 1.0,
+                max_mx: 1.0,
+                max_mz: 1.0,
+                n_prime: f64::INFINITY,
+                texel_world: 1.0,
+                blend: (2.0, 2.0),
+            },
+        };
+        let mut maps = vec![m(0), m(1), m(1), m(4)];
+        let before: Vec<i32> = maps.iter().map(|m| m.region).collect();
+        Fault::selection(Some(Fault::WrongFace), &mut maps);
+        for (a, b) in before.iter().zip(&maps) {
+            assert_ne!(*a, b.region);
+        }
+    }
+
+    #[test]
+    fn names_parse_back() {
+        for f in Fault::ALL {
+            assert_eq!(Fault::parse(f.name()), Ok(f));
+        }
+        let e = Fault::parse("nope").unwrap_err();
+        assert!(e.contains("nope") && e.contains("matrix-scale"), "{e}");
+    }
+}
