@@ -115,6 +115,9 @@ pub struct Built {
     pub maps: Vec<Map>,
     /// How fragments choose.
     pub select: Select,
+    /// Each map's focus body as the frame returned it (`FrameMap::body`, eye space): where the
+    /// reported maximum error lies (docs/rendered.md).
+    pub bodies: Vec<Vec<DVec3>>,
 }
 
 /// The camera's frustum and matrices.
@@ -323,7 +326,12 @@ pub fn build(
         Scheme::Faces => Select::Faces,
         _ => Select::Single,
     };
-    Ok(Built { maps, select })
+    let bodies = f.maps().iter().map(|m| m.body().to_vec()).collect();
+    Ok(Built {
+        maps,
+        select,
+        bodies,
+    })
 }
 
 /// A named camera and light.
@@ -340,7 +348,7 @@ fn rotate_toward(v: DVec3, u: DVec3, deg: f64) -> DVec3 {
     (v * a.cos() + u * a.sin()).normalize()
 }
 
-/// The six set-ups of the built-in scene. With `v` the view direction and `u` the camera's up
+/// The seven set-ups of the built-in scene. With `v` the view direction and `u` the camera's up
 /// (both unit, orthogonal), γ the angle between view and light:
 ///
 /// - `overhead`: light straight down;
@@ -349,7 +357,12 @@ fn rotate_toward(v: DVec3, u: DVec3, deg: f64) -> DVec3 {
 /// - `front_5`: γ = 175°, the light from in front, towards the viewer (the camera pitched up 3°
 ///   so that this light still comes from above: 8° elevation);
 /// - `grazing_10`: 10° elevation, across the view;
-/// - `parallel_1`: γ = 1°, the light from behind, 1° from parallel to the view direction.
+/// - `parallel_1`: γ = 1°, the light from behind, 1° from parallel to the view direction;
+/// - `level_overhead`: Lloyd 2006's overhead case (γ = 90°): the camera level, 0.896 n tan θ
+///   above the ground (so the ground meets the near plane 0.896 of the way down the screen, just
+///   below a row of pixel centres at 180, 240 and 480 rows), the light straight down; every
+///   map's focus body then has the frustum's (or its slice's) footprint, and the rendered M_x,
+///   M_z over the ground are compared with Eq 7–10 (`analysis`).
 pub fn setups() -> Vec<Setup> {
     let base = Scene::builtin();
     let cam = base.camera;
@@ -383,5 +396,10 @@ pub fn setups() -> Vec<Setup> {
     push("front_5", up_cam, rotate_toward(-v2, -u2, 5.0));
     push("grazing_10", cam, elev(10.0, DVec3::new(1.0, 0.0, -0.3)));
     push("parallel_1", cam, rotate_toward(v, -u, 1.0));
+    let mut level = cam;
+    let h = 0.896 * cam.near * (0.5 * cam.fov_y_deg).to_radians().tan();
+    level.eye = [0.0, h, 0.0];
+    level.target = [0.0, h, -40.0];
+    push("level_overhead", level, DVec3::NEG_Y);
     out
 }
