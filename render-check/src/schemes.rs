@@ -205,13 +205,17 @@ pub fn splits(view: &ViewFrustum) -> Result<shadow_aliasing::analytic::partition
 
 /// The scene's bounds for the frame API: receivers are the drawn ground square (zero thickness)
 /// and every box, merged by the frame into one bounding box; casters are the boxes (the tower
-/// outside the view included).
+/// outside the view included). A rotated box is given as its world-space bounding box (the
+/// frame takes axis-aligned boxes, or one polytope for the receivers).
 fn bounds(scene: &Scene) -> Result<(Vec<Aabb>, Vec<Aabb>), String> {
     let aabb = |min: DVec3, max: DVec3| Aabb::new(min, max).map_err(|e| e.to_string());
     let casters = scene
         .boxes
         .iter()
-        .map(|b| aabb(DVec3::from_array(b.min), DVec3::from_array(b.max)))
+        .map(|b| {
+            let (min, max) = b.world_bounds();
+            aabb(min, max)
+        })
         .collect::<Result<Vec<_>, String>>()?;
     let c = DVec3::from_array(scene.camera.eye);
     let e = scene.ground_half_extent;
@@ -348,8 +352,8 @@ fn rotate_toward(v: DVec3, u: DVec3, deg: f64) -> DVec3 {
     (v * a.cos() + u * a.sin()).normalize()
 }
 
-/// The seven set-ups of the built-in scene. With `v` the view direction and `u` the camera's up
-/// (both unit, orthogonal), γ the angle between view and light:
+/// The set-ups: seven of the built-in scene and the thin-caster scene. With `v` the view
+/// direction and `u` the camera's up (both unit, orthogonal), γ the angle between view and light:
 ///
 /// - `overhead`: light straight down;
 /// - `tilted_45`: 45° elevation, travelling forward and to the right;
@@ -362,7 +366,10 @@ fn rotate_toward(v: DVec3, u: DVec3, deg: f64) -> DVec3 {
 ///   above the ground (so the ground meets the near plane 0.896 of the way down the screen, just
 ///   below a row of pixel centres at 180, 240 and 480 rows), the light straight down; every
 ///   map's focus body then has the frustum's (or its slice's) footprint, and the rendered M_x,
-///   M_z over the ground are compared with Eq 7–10 (`analysis`).
+///   M_z over the ground are compared with Eq 7–10 (`analysis`);
+///
+/// and `thin_casters`, the thin-caster scene ([`Scene::thin_casters`], also
+/// `render-check/scenes/thin_casters.json`) under its own 20° sun.
 pub fn setups() -> Vec<Setup> {
     let base = Scene::builtin();
     let cam = base.camera;
@@ -401,5 +408,9 @@ pub fn setups() -> Vec<Setup> {
     level.eye = [0.0, h, 0.0];
     level.target = [0.0, h, -40.0];
     push("level_overhead", level, DVec3::NEG_Y);
+    out.push(Setup {
+        name: "thin_casters".into(),
+        scene: Scene::thin_casters(),
+    });
     out
 }
