@@ -72,7 +72,10 @@
 //! - F. Zhang, C. Zhao, H. Sun. *An Aliasing Theory of Shadow Mapping*. 2009.
 //!
 //! Each paper has known errors; docs/errata.md lists every one the crate found, with numbers.
-#![forbid(unsafe_code)]
+// No unsafe code; the one exception is the `bytemuck` feature's derived `Pod`/`Zeroable` impls
+// of `frame::GpuShadowMap` (allowed in that module alone), so the lint is `deny` there.
+#![cfg_attr(not(feature = "bytemuck"), forbid(unsafe_code))]
+#![cfg_attr(feature = "bytemuck", deny(unsafe_code))]
 
 pub mod analytic;
 pub mod error;
@@ -90,6 +93,17 @@ pub mod scheme;
 
 pub use error::{Error, Result};
 pub use frustum::{LightAngle, LightDir, NPrime, Resolutions, ViewFrustum};
+
+/// The glam the crate's API speaks (0.34), re-exported so a renderer on another glam version can
+/// name these types without a second dependency line and convert at the boundary: through plain
+/// arrays (`glam::DMat4::from_cols_array_2d(&m.to_cols_array_2d())`, and every upload value as
+/// arrays, [`frame::FrameMap::world_to_clip_cols`]) or through [`mint`] (feature `mint`).
+pub use glam;
+
+/// The mint version whose types the `mint` feature's conversions take and give (glam's own
+/// `mint-05` conversions: `glam::DMat4: From<mint::ColumnMatrix4<f64>>`, and back).
+#[cfg(feature = "mint")]
+pub use mint;
 
 /// The README's Rust example, compiled and run as a doc-test by `cargo test` in every feature
 /// set, so that the README cannot drift from the API.

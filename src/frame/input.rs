@@ -18,10 +18,16 @@ pub struct Aabb {
 }
 
 impl Aabb {
+    /// From any value that converts into a [`DVec3`]: glam's own, `[f64; 3]`, or with the `mint`
+    /// feature a `mint::Vector3<f64>` (another glam version's `DVec3` converts into one).
+    ///
     /// # Errors
     /// [`Error::InvalidArgument`] naming `min` when a coordinate is not finite or min > max.
-    pub fn new(min: DVec3, max: DVec3) -> Result<Self> {
-        let b = Self { min, max };
+    pub fn new(min: impl Into<DVec3>, max: impl Into<DVec3>) -> Result<Self> {
+        let b = Self {
+            min: min.into(),
+            max: max.into(),
+        };
         b.check()?;
         Ok(b)
     }
@@ -78,18 +84,22 @@ pub struct Camera {
 impl Camera {
     /// From the world → eye matrix (glam `dcamera::rh::view::look_at_mat4`: right-handed, looking
     /// down −Z) and the projection's near, far, half vertical field of view and aspect.
+    /// `world_to_eye` is any value that converts into a [`DMat4`]: glam's own, or with the `mint`
+    /// feature a `mint::ColumnMatrix4<f64>` (another glam version's `DMat4` converts into one;
+    /// from plain arrays, [`DMat4::from_cols_array_2d`]).
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] naming `world_to_eye` (not finite, or not a proper rigid
     /// transform: its 3 × 3 part a rotation to 10⁻⁶, no reflection, the bottom row (0, 0, 0, 1)
     /// to 10⁻¹²), or as [`ViewFrustum::with_aspect`].
     pub fn new(
-        world_to_eye: DMat4,
+        world_to_eye: impl Into<DMat4>,
         near: f64,
         far: f64,
         half_fov: f64,
         aspect: f64,
     ) -> Result<Self> {
+        let world_to_eye: DMat4 = world_to_eye.into();
         let view = ViewFrustum::with_aspect(near, far, half_fov, aspect)?;
         if !world_to_eye.is_finite() {
             return Err(Error::invalid("world_to_eye", "must have finite entries"));
@@ -113,18 +123,19 @@ impl Camera {
         })
     }
 
-    /// As [`Camera::new`] for a single-precision view matrix.
+    /// As [`Camera::new`] for a single-precision view matrix (a [`Mat4`], or with the `mint`
+    /// feature a `mint::ColumnMatrix4<f32>`), widened exactly to `f64`.
     ///
     /// # Errors
     /// As [`Camera::new`].
     pub fn from_mat4(
-        world_to_eye: Mat4,
+        world_to_eye: impl Into<Mat4>,
         near: f64,
         far: f64,
         half_fov: f64,
         aspect: f64,
     ) -> Result<Self> {
-        Self::new(world_to_eye.as_dmat4(), near, far, half_fov, aspect)
+        Self::new(world_to_eye.into().as_dmat4(), near, far, half_fov, aspect)
     }
 
     /// The camera's view frustum.
@@ -274,16 +285,18 @@ pub struct FrameInput<'a> {
 
 impl<'a> FrameInput<'a> {
     /// A single minimax map of the whole frustum, no scene bounds, no depth clamp.
+    /// `light_dir_world` is any value that converts into a [`DVec3`] (glam's own, `[f64; 3]`, or
+    /// with the `mint` feature a `mint::Vector3<f64>`).
     #[must_use]
     pub fn new(
         camera: Camera,
-        light_dir_world: DVec3,
+        light_dir_world: impl Into<DVec3>,
         map_resolution: u32,
         image_height: u32,
     ) -> Self {
         Self {
             camera,
-            light_dir_world,
+            light_dir_world: light_dir_world.into(),
             receivers: Bound::Unbounded,
             casters: Bound::Unbounded,
             depth_range: None,

@@ -80,9 +80,11 @@ mod faces;
 mod input;
 mod output;
 mod rules;
+mod upload;
 
 pub use input::{Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme, WarpCentre};
 pub use output::{Focus, Frame, FrameMap, FrameMaps, LightCase};
+pub use upload::{GpuShadowMap, GPU_SHADOW_MAP_WGSL};
 
 use crate::analytic::partition::MAX_PARTITIONS;
 use crate::error::{Error, Result};

@@ -78,7 +78,8 @@ pub struct FrameMap {
     /// passes and, for a side face, by `split`, the depths of that part of the face); `None` for
     /// every other scheme.
     pub face: Option<Face>,
-    world_to_eye: DMat4,
+    /// The camera's world → eye (the upload forms in `upload.rs` compose it with the map).
+    pub(super) world_to_eye: DMat4,
     body: [DVec3; MAX_BODY_VERTICES],
     body_len: usize,
 }

@@ -121,6 +121,13 @@ impl ShadowMatrix {
         self.with_clip_depth(depth).as_mat4()
     }
 
+    /// [`ShadowMatrix::to_mat4`] as plain column-major arrays (`[column][row]`), for a renderer on
+    /// any math library.
+    #[must_use]
+    pub fn to_cols(&self, depth: ClipDepth) -> [[f32; 4]; 4] {
+        self.to_mat4(depth).to_cols_array_2d()
+    }
+
     /// World space → light clip space for a renderer: `S · view`, where `view` is the camera's
     /// world → eye matrix (glam `dcamera::rh::view::look_at_mat4`).
     #[must_use]

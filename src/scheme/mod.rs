@@ -143,6 +143,12 @@ impl PartitionResult {
     pub fn to_mat4(&self, depth: ClipDepth) -> Mat4 {
         self.matrix_with_clip_depth(depth).as_mat4()
     }
+
+    /// [`PartitionResult::to_mat4`] as plain column-major arrays (`[column][row]`).
+    #[must_use]
+    pub fn to_cols(&self, depth: ClipDepth) -> [[f32; 4]; 4] {
+        self.to_mat4(depth).to_cols_array_2d()
+    }
 }
 
 /// A scheme's maps in a fixed array (no heap allocation) and their summed storage factor.

@@ -1,0 +1,176 @@
+//! What a renderer uploads, in forms that do not depend on the glam version: every matrix as
+//! plain column-major `f32` arrays, one `#[repr(C)]` plain-data record per map
+//! ([`GpuShadowMap`]) whose WGSL/std140 layout is [`GPU_SHADOW_MAP_WGSL`], and, with the `mint`
+//! feature, the matrices as mint types. docs/renderer.md ("Uploading") tabulates every value.
+//
+// The only unsafe code of the crate: bytemuck's derive of `Pod` and `Zeroable` (feature
+// `bytemuck`) writes `unsafe impl`s for the record, whose fields are all 4-byte scalars with no
+// padding between them (tests/upload.rs checks every offset).
+#![cfg_attr(feature = "bytemuck", allow(unsafe_code))]
+
+use super::output::FrameMap;
+use crate::maps::ClipDepth;
+
+/// One map as a GPU uniform or storage-buffer element: `#[repr(C)]`, 112 bytes, every field a
+/// 4-byte scalar or an array of them, laid out exactly as the WGSL struct
+/// [`GPU_SHADOW_MAP_WGSL`] in the `uniform` and `storage` address spaces and as the same block in
+/// GLSL's std140 and std430 (tests/upload.rs computes each offset by those rules), so an array of
+/// them has a 112-byte stride in every one of these layouts. Write it with
+/// [`GpuShadowMap::to_bytes`] or, with the `bytemuck` feature, `bytemuck::bytes_of`.
+///
+/// | field | byte offset | WGSL type |
+/// |---|---|---|
+/// | `world_to_clip` | 0 | `mat4x4<f32>` |
+/// | `split` | 64 | `vec2<f32>` |
+/// | `blend` | 72 | `vec2<f32>` |
+/// | `texel_world` | 80 | `f32` |
+/// | `max_error_pixels` | 84 | `f32` |
+/// | `max_mx` | 88 | `f32` |
+/// | `max_mz` | 92 | `f32` |
+/// | `face` | 96 | `u32` |
+/// | `clip_depth` | 100 | `u32` |
+/// | `pad` | 104 | `vec2<u32>` |
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "bytemuck", derive(bytemuck::Pod, bytemuck::Zeroable))]
+pub struct GpuShadowMap {
+    /// World → light clip, column-major (`world_to_clip[c][r]` is row r of column c, glam's
+    /// `to_cols_array_2d`, WGSL's `m[c][r]`), in the convention `clip_depth` names.
+    pub world_to_clip: [[f32; 4]; 4],
+    /// [`FrameMap::split`]: the view-depth range (positive eye depth, world units) where the
+    /// shader selects this map.
+    pub split: [f32; 2],
+    /// [`FrameMap::blend`]: the band, in view depth, to cross-fade over with the next map.
+    pub blend: [f32; 2],
+    /// [`FrameMap::texel_world`]: the largest world-space texel edge over the map's body.
+    pub texel_world: f32,
+    /// [`FrameMap::max_error_pixels`]: the predicted largest texel-to-pixel ratio.
+    pub max_error_pixels: f32,
+    /// [`FrameMap::max_mx`]: M_x over the body (unit resolutions).
+    pub max_mx: f32,
+    /// [`FrameMap::max_mz`]: M_z over the body (unit resolutions).
+    pub max_mz: f32,
+    /// [`FrameMap::face`]: the index of the face in [`crate::maps::faces::Face::ALL`] (bottom 0,
+    /// right 1, top 2, left 3, near 4, far 5), or [`GpuShadowMap::NO_FACE`].
+    pub face: u32,
+    /// The clip-depth convention of `world_to_clip`: [`GpuShadowMap::clip_depth_code`].
+    pub clip_depth: u32,
+    /// Zero: pads the record to a multiple of 16 bytes, the alignment of `mat4x4<f32>`.
+    pub pad: [u32; 2],
+}
+
+impl GpuShadowMap {
+    /// The record's size in bytes.
+    pub const SIZE: usize = 112;
+
+    /// `face` of a map that is not a face partition's.
+    pub const NO_FACE: u32 = u32::MAX;
+
+    /// The number `clip_depth` holds for a convention: 0 for [`ClipDepth::NegOneToOne`], 1 for
+    /// [`ClipDepth::ZeroToOne`] (the WGSL constants `CLIP_DEPTH_NEG_ONE_TO_ONE`, … of
+    /// [`GPU_SHADOW_MAP_WGSL`]).
+    #[must_use]
+    pub const fn clip_depth_code(depth: ClipDepth) -> u32 {
+        match depth {
+            ClipDepth::NegOneToOne => 0,
+            ClipDepth::ZeroToOne => 1,
+        }
+    }
+
+    /// The record's bytes, little-endian (the byte order of every GPU wgpu and Vulkan run on;
+    /// on a little-endian host the same bytes as `bytemuck::bytes_of`).
+    #[must_use]
+    pub fn to_bytes(&self) -> [u8; Self::SIZE] {
+        let scalars = [
+            self.texel_world,
+            self.max_error_pixels,
+            self.max_mx,
+            self.max_mz,
+        ];
+        let words = self
+            .world_to_clip
+            .iter()
+            .flatten()
+            .chain(&self.split)
+            .chain(&self.blend)
+            .chain(&scalars)
+            .map(|v| v.to_bits())
+            .chain([self.face, self.clip_depth])
+            .chain(self.pad);
+        let mut out = [0u8; Self::SIZE];
+        for (chunk, w) in out.chunks_exact_mut(4).zip(words) {
+            chunk.copy_from_slice(&w.to_le_bytes());
+        }
+        out
+    }
+}
+
+/// The WGSL declaration of [`GpuShadowMap`] and of its `clip_depth` codes, to paste or
+/// concatenate into a shader: bind it as `var<uniform> maps: array<GpuShadowMap, N>` or in a
+/// storage buffer.
+pub const GPU_SHADOW_MAP_WGSL: &str = "\
+// shadow-aliasing's GpuShadowMap (112 bytes; the same offsets in std140 and std430).
+const CLIP_DEPTH_NEG_ONE_TO_ONE: u32 = 0u;
+const CLIP_DEPTH_ZERO_TO_ONE: u32 = 1u;
+const NO_FACE: u32 = 0xffffffffu;
+struct GpuShadowMap {
+    world_to_clip: mat4x4<f32>,
+    split: vec2<f32>,
+    blend: vec2<f32>,
+    texel_world: f32,
+    max_error_pixels: f32,
+    max_mx: f32,
+    max_mz: f32,
+    face: u32,
+    clip_depth: u32,
+    pad: vec2<u32>,
+}
+";
+
+impl FrameMap {
+    /// [`FrameMap::to_mat4`] as plain column-major arrays (`[column][row]`), for a renderer on
+    /// any math library.
+    #[must_use]
+    pub fn world_to_clip_cols(&self, depth: ClipDepth) -> [[f32; 4]; 4] {
+        self.to_mat4(depth).to_cols_array_2d()
+    }
+
+    /// The map's [`GpuShadowMap`] with the world → clip matrix in `depth`'s convention. Every
+    /// `f64` is rounded once to `f32`.
+    #[must_use]
+    pub fn gpu(&self, depth: ClipDepth) -> GpuShadowMap {
+        self.record(self.world_to_clip_cols(depth), depth)
+    }
+
+    pub(super) fn record(&self, world_to_clip: [[f32; 4]; 4], depth: ClipDepth) -> GpuShadowMap {
+        let pair = |p: (f64, f64)| [p.0 as f32, p.1 as f32];
+        GpuShadowMap {
+            world_to_clip,
+            split: pair(self.split),
+            blend: pair(self.blend),
+            texel_world: self.texel_world as f32,
+            max_error_pixels: self.max_error_pixels as f32,
+            max_mx: self.max_mx as f32,
+            max_mz: self.max_mz as f32,
+            // `Face`'s declaration order is `Face::ALL`'s (tests/upload.rs).
+            face: self.face.map_or(GpuShadowMap::NO_FACE, |f| f as u32),
+            clip_depth: GpuShadowMap::clip_depth_code(depth),
+            pad: [0; 2],
+        }
+    }
+
+    /// [`FrameMap::to_mat4`] as a mint matrix (feature `mint`), which any glam version with its
+    /// own mint feature (and cgmath, nalgebra, …) converts from.
+    #[cfg(feature = "mint")]
+    #[must_use]
+    pub fn to_mint(&self, depth: ClipDepth) -> mint::ColumnMatrix4<f32> {
+        self.to_mat4(depth).into()
+    }
+
+    /// [`FrameMap::world_to_clip`] (`f64`) as a mint matrix (feature `mint`).
+    #[cfg(feature = "mint")]
+    #[must_use]
+    pub fn world_to_clip_mint(&self, depth: ClipDepth) -> mint::ColumnMatrix4<f64> {
+        self.world_to_clip(depth).into()
+    }
+}
