@@ -303,3 +303,78 @@ fn face_partitions_at_deep_frusta_do_not_allocate() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(ok * 10 >= calls * 9, "only {ok} of {calls} calls succeeded");
 }
+
+/// The frame's per-map outputs of issue 23 (culling volumes, `unchanged`) through `frame_into` on
+/// a reused `Frame`, and every query on them, allocate nothing: the counted call compares each map
+/// with the previous frame's and tests boxes and points against both volumes.
+#[test]
+fn frame_into_culling_and_unchanged_do_not_allocate() {
+    use shadow_aliasing::frame::{
+        frame_into, Aabb, Bound, Camera, CascadeSplits, Frame, FrameInput, FrameScheme,
+    };
+    let out = std::cell::RefCell::new(Frame::default());
+    for scheme in [
+        FrameScheme::Single(WarpRule::Lispsm),
+        FrameScheme::Stable(CascadeSplits::Scheme {
+            scheme: SplitScheme::Practical { lambda: 0.8 },
+            k: 4,
+            overlap: 0.0,
+        }),
+        FrameScheme::Faces {
+            rule: FaceWarp::Lispsm,
+            k: 2,
+        },
+        FrameScheme::Tsm(TsmOptions {
+            focus: 0.5,
+            search: TsmSearch::EightyPercent,
+        }),
+    ] {
+        assert_no_allocation("frame_into + culling + unchanged", |v, l| {
+            let cam = Camera::new(
+                glam::DMat4::IDENTITY,
+                v.near(),
+                v.far(),
+                v.half_fov(),
+                v.aspect(),
+            )
+            .unwrap();
+            let f = v.far();
+            let r = [Aabb::new(DVec3::new(-f, -f, -0.6 * f), DVec3::new(f, 0.0, 0.0)).unwrap()];
+            let c = [
+                Aabb::new(
+                    DVec3::new(-0.1 * f, 0.0, -0.3 * f),
+                    DVec3::new(0.1 * f, 0.5 * f, -0.2 * f),
+                )
+                .unwrap(),
+                r[0],
+            ];
+            let scheme = match scheme {
+                FrameScheme::Tsm(o) => FrameScheme::Tsm(TsmOptions {
+                    focus: o.focus * (v.far() - v.near()),
+                    ..o
+                }),
+                s => s,
+            };
+            let input = FrameInput::new(cam, l, 2048, 1080)
+                .receivers(Bound::Boxes(&r))
+                .casters(Bound::Boxes(&c))
+                .scheme(scheme);
+            // Twice: the second call compares every map with the first's.
+            let mut o = out.borrow_mut();
+            for _ in 0..2 {
+                if let Err(e) = frame_into(&input, &mut o) {
+                    panic!("{e} at near={}, far={}, light={l}", v.near(), v.far());
+                }
+            }
+            let mut kept = 0;
+            for m in o.maps().iter() {
+                kept += usize::from(m.unchanged());
+                kept += usize::from(m.casters_volume().intersects_aabb(&c[0]));
+                kept += usize::from(m.receivers_volume().contains(DVec3::new(0.0, -1.0, -f)));
+                kept += m.casters_volume().grown(1.0).unwrap().planes().len();
+            }
+            assert!(o.maps().iter().all(|m| m.unchanged()));
+            black_box(kept);
+        });
+    }
+}

@@ -178,8 +178,17 @@ fn a_box_containing_the_frustum_reproduces_the_frustum_only_matrices() {
                 assert!(worst <= 1e-12 * scale, "{rule:?}: {worst:e}");
             }
             assert_eq!(got.world_to_clip, got.shadow.matrix() * view);
+            // The [0, 1] form is a function of `world_to_clip` alone (depth row (M₂ + M₃)/2, so
+            // that a map `unchanged` is so in every form), the eye-space form's to rounding.
             let zo = got.world_to_clip(ClipDepth::ZeroToOne);
-            assert_eq!(zo, got.shadow.with_clip_depth(ClipDepth::ZeroToOne) * view);
+            let w = got.world_to_clip;
+            for r in [0, 1, 3] {
+                assert_eq!(zo.row(r), w.row(r));
+            }
+            assert_eq!(zo.row(2), 0.5 * (w.row(2) + w.row(3)));
+            let eye = got.shadow.with_clip_depth(ClipDepth::ZeroToOne) * view;
+            let d = (zo - eye).abs().to_cols_array().into_iter().fold(0.0, f64::max);
+            assert!(d <= 1e-12 * eye.abs().to_cols_array().into_iter().fold(0.0, f64::max));
         }
     }
     // Cascades: the crate's cascades, bit for bit.

@@ -205,8 +205,16 @@ impl Ctx<'_, '_> {
         if let Some(p) = self.caster_extreme(&fl, body.n, |_| 1.0, 0.0)? {
             yhi = yhi.max(ls_e.y.dot(p));
         }
-        let v_m = 0.5 * (ylo + yhi);
-        let v_h = (0.5 * (yhi - ylo)).max(1e-9 * self.scale());
+        // The depth range in world light y, snapped outward to whole texels of a world-fixed grid
+        // offset by half a texel (round scene coordinates, a ground at y = 0, lie inside a cell,
+        // not on its edge): a camera move that keeps B's and the casters' extent within the same
+        // cells keeps the whole matrix bit for bit, as the snapped square keeps s, t
+        // (`FrameMap::unchanged`). It widens the range by at most a texel at each end.
+        let y_off = ls_w.y.dot(cam.eye_to_world.w_axis.truncate());
+        let lo = (((ylo + y_off) / texel + 0.5).floor() - 0.5) * texel;
+        let hi = (((yhi + y_off) / texel - 0.5).ceil() + 0.5) * texel;
+        let v_m = 0.5 * (lo + hi);
+        let v_h = (0.5 * (hi - lo)).max(1e-9 * self.scale());
         // s, t as `stable_cascade`: world light space, the snapped centre, half-width `half`.
         let ortho = DMat4::from_cols(
             DVec4::new(1.0 / half, 0.0, 0.0, 0.0),
@@ -214,10 +222,11 @@ impl Ctx<'_, '_> {
             DVec4::new(0.0, 1.0 / half, 0.0, 0.0),
             DVec4::new(-sx / half, -sz / half, 0.0, 1.0),
         );
-        let mut m = (ortho * ls_w.rotation() * cam.eye_to_world).transpose();
-        // Depth from the eye-space light y over B and the casters, −1 nearest the light.
-        m.z_axis = (-ls_e.y / v_h).extend(v_m / v_h);
-        let matrix = m.transpose();
+        // World → clip from world-fixed quantities only; depth −1 nearest the light.
+        let mut w = (ortho * ls_w.rotation()).transpose();
+        w.z_axis = (-ls_w.y / v_h).extend(v_m / v_h);
+        let world = w.transpose();
+        let matrix = world * cam.eye_to_world;
         // The world-fixed square is built from world positions: far from the world origin (or
         // near f64's range) their rounding, amplified by 1/half, can leave B outside the map.
         if !matrix.is_finite() {
@@ -243,7 +252,10 @@ impl Ctx<'_, '_> {
             depth_extent(pts).0,
             depth_extent(pts).1,
         );
-        self.finish(shadow, pts, s, body.focus).map(Built::Map)
+        self.finish(shadow, pts, s, body.focus).map(|mut m| {
+            m.world_to_clip = world;
+            Built::Map(m)
+        })
     }
 }
 

@@ -125,14 +125,15 @@ impl Ctx<'_, '_> {
 }
 
 /// The prism of B's light-space footprint: the side planes through the edges of the convex hull
-/// of B's vertices' (x, z), parallel to the light.
-struct Prism {
+/// of B's vertices' (x, z), parallel to the light (also the side of the casters' culling volume,
+/// `super::culling`).
+pub(super) struct Prism {
     planes: [DVec4; 2 * MAX_BODY_VERTICES],
     n: usize,
 }
 
 impl Prism {
-    fn new<const N: usize>(fl: &FrustumInLight<N>, n: usize) -> Self {
+    pub(super) fn new<const N: usize>(fl: &FrustumInLight<N>, n: usize) -> Self {
         let mut pts = [DVec2::ZERO; MAX_BODY_VERTICES];
         for (p, q) in pts.iter_mut().zip(&fl.q).take(n) {
             *p = DVec2::new(q.x, q.z);
@@ -170,6 +171,12 @@ impl Prism {
             planes[i] = n3.extend(-n2.dot(a));
         }
         Self { planes, n: h }
+    }
+
+    /// The side planes `(n, d)` (normals as long as their hull edge), outside where
+    /// `n·p + d > 0`.
+    pub(super) fn planes(&self) -> &[DVec4] {
+        &self.planes[..self.n]
     }
 
     fn clip<const F: usize, const V: usize, const P: usize>(

@@ -76,12 +76,14 @@
 mod body;
 mod cascade;
 mod casters;
+mod culling;
 mod faces;
 mod input;
 mod output;
 mod rules;
 mod upload;
 
+pub use culling::{CullVolume, MAX_CULL_PLANES};
 pub use input::{Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme, WarpCentre};
 pub use output::{Focus, Frame, FrameMap, FrameMaps, LightCase};
 pub use upload::{GpuShadowMap, GPU_SHADOW_MAP_WGSL};
@@ -139,11 +141,25 @@ pub fn frame(input: &FrameInput<'_>) -> Result<Frame> {
     Ok(out)
 }
 
-/// As [`frame`], writing into `out` (reused between frames).
+/// As [`frame`], writing into `out` (reused between frames). Each map says whether it is bit
+/// for bit the one the same slot held before ([`FrameMap::unchanged`]: the same map resolution
+/// and world → clip matrix as after the previous successful call on `out`).
 ///
 /// # Errors
-/// As [`frame`].
+/// As [`frame`]. After an error `out` holds no map (and the next call reports every map changed).
 pub fn frame_into(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
+    out.begin(input.map_resolution);
+    let r = fill(input, out);
+    if r.is_err() {
+        out.k = 0;
+        out.len = 0;
+        out.focus = Focus::Empty;
+    }
+    r
+}
+
+/// [`frame_into`]'s work, `out` begun.
+fn fill(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
     out.k = 0;
     out.len = 0;
     out.none_edge_on = false;

@@ -1,6 +1,7 @@
 //! The frame's outputs: a frame's maps and their focus, and how a built map is finished (its
 //! error, texel size and world → clip matrices).
 
+use super::culling::CullVolume;
 use super::{Built, Ctx, Slice, MAX_BODY_VERTICES};
 use crate::analytic::partition::MAX_PARTITIONS;
 use crate::error::{Error, Result};
@@ -9,7 +10,7 @@ use crate::maps::matrix::zero_to_one;
 use crate::maps::{ClipDepth, ShadowMatrix};
 use crate::measure::vertex::vertex_max;
 use crate::measure::FrustumError;
-use glam::{DMat4, DVec3, Mat4};
+use glam::{DMat4, DVec3, DVec4, Mat4};
 
 /// What the focus body is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -82,6 +83,9 @@ pub struct FrameMap {
     pub(super) world_to_eye: DMat4,
     body: [DVec3; MAX_BODY_VERTICES],
     body_len: usize,
+    casters_volume: CullVolume,
+    receivers_volume: CullVolume,
+    unchanged: bool,
 }
 
 impl FrameMap {
@@ -90,7 +94,8 @@ impl FrameMap {
     pub fn world_to_clip(&self, depth: ClipDepth) -> DMat4 {
         match depth {
             ClipDepth::NegOneToOne => self.world_to_clip,
-            ClipDepth::ZeroToOne => zero_to_one(&self.shadow.matrix()) * self.world_to_eye,
+            // A function of `world_to_clip` alone, so that a map `unchanged` is so in every form.
+            ClipDepth::ZeroToOne => zero_to_one(&self.world_to_clip),
         }
     }
     /// [`FrameMap::world_to_clip`] in single precision for the GPU.
@@ -102,6 +107,30 @@ impl FrameMap {
     #[must_use]
     pub fn body(&self) -> &[DVec3] {
         &self.body[..self.body_len]
+    }
+    /// The casters' culling volume, world space: B swept toward the light, cut by the map's
+    /// depth range (unbounded toward the light with `depth_clamp`). An object outside it
+    /// ([`CullVolume::intersects_aabb`] false) casts no shadow on B that the map holds: it
+    /// need not be drawn into this map.
+    #[must_use]
+    pub fn casters_volume(&self) -> &CullVolume {
+        &self.casters_volume
+    }
+    /// The receivers' culling volume, world space: the slice ∩ the receivers' bound (∩ the face
+    /// part's prism for face partitions), whose intersection is B.
+    #[must_use]
+    pub fn receivers_volume(&self) -> &CullVolume {
+        &self.receivers_volume
+    }
+    /// Whether this map is bit for bit the one the same slot held after the previous successful
+    /// [`frame_into`](crate::frame::frame_into) on this [`Frame`]: the same map resolution and
+    /// every bit of [`FrameMap::world_to_clip`] (OpenGL depth, `f64`) equal; every other form of
+    /// the matrix is a function of it. A map that is unchanged need not be rendered again unless
+    /// what is drawn into it moved. `false` for a fresh `Frame`, after an error, and for a slot
+    /// that was empty.
+    #[must_use]
+    pub fn unchanged(&self) -> bool {
+        self.unchanged
     }
 }
 
@@ -117,6 +146,11 @@ pub struct Frame {
     pub(super) focus: Focus,
     pub(super) light: LightCase,
     pub(super) light_dir_eye: DVec3,
+    /// The slots of the previous frame that a new map may be compared with (0 after an error
+    /// or a change of resolution).
+    prev_k: usize,
+    /// The map resolution of the maps held.
+    resolution: u32,
 }
 
 impl Default for Frame {
@@ -130,6 +164,8 @@ impl Default for Frame {
             focus: Focus::Empty,
             light: LightCase::General,
             light_dir_eye: DVec3::NEG_Y,
+            prev_k: 0,
+            resolution: 0,
         }
     }
 }
@@ -211,11 +247,28 @@ impl std::ops::Index<usize> for FrameMaps<'_> {
 }
 
 impl Frame {
-    /// Puts the next partition's outcome into slot `k` (`None` where no map is needed).
+    /// Starts a frame of maps of `resolution` texels: the slots held so far are the previous
+    /// frame's, to compare the new maps with.
+    pub(super) fn begin(&mut self, resolution: u32) {
+        self.prev_k = if resolution == self.resolution {
+            self.k
+        } else {
+            0
+        };
+        self.resolution = resolution;
+    }
+
+    /// Puts the next partition's outcome into slot `k` (`None` where no map is needed), saying
+    /// whether a map is bit for bit the slot's previous one.
     pub(super) fn push(&mut self, m: Built) {
+        let prev = match &self.maps[self.k] {
+            Some(p) if self.k < self.prev_k => Some(p.world_to_clip),
+            _ => None,
+        };
         self.maps[self.k] = match m {
-            Built::Map(m) => {
+            Built::Map(mut m) => {
                 self.len += 1;
+                m.unchanged = prev.is_some_and(|p| same_bits(&p, &m.world_to_clip));
                 Some(m)
             }
             Built::None(f) => {
@@ -249,11 +302,12 @@ impl Ctx<'_, '_> {
         let err = vertex_max(&shadow.matrix(), self.l, self.view.tan_half_fov(), pts).ok_or_else(
             || Error::Degenerate("the map is singular at a vertex of the focus body".into()),
         )?;
-        self.finish_measured(shadow, err, pts, s, focus)
+        self.finish_measured(shadow, err, pts, s, focus, &[])
     }
 
     /// [`Ctx::finish`] with the map's error over `pts` already measured (by `vertex_max` with
-    /// the frame's light and tan θ, as `finish` would).
+    /// the frame's light and tan θ, as `finish` would), B being the slice `s.cover` ∩ the
+    /// receivers' bound ∩ the planes `extra` (a face part's prism).
     pub(super) fn finish_measured(
         &self,
         shadow: ShadowMatrix,
@@ -261,6 +315,7 @@ impl Ctx<'_, '_> {
         pts: &[DVec3],
         s: &Slice,
         focus: Focus,
+        extra: &[DVec4],
     ) -> Result<FrameMap> {
         // The largest texel edge over B: clip spans 2 over the map's `res` texels.
         let res = f64::from(self.input.map_resolution);
@@ -289,6 +344,7 @@ impl Ctx<'_, '_> {
                     .into(),
             ));
         }
+        let (casters_volume, receivers_volume) = self.cull_volumes(pts, &matrix, s.cover, extra);
         Ok(FrameMap {
             world_to_clip,
             shadow,
@@ -304,8 +360,19 @@ impl Ctx<'_, '_> {
             world_to_eye: self.input.camera.world_to_eye,
             body,
             body_len: pts.len(),
+            casters_volume,
+            receivers_volume,
+            unchanged: false,
         })
     }
+}
+
+/// Whether `a` and `b` are equal bit for bit.
+fn same_bits(a: &DMat4, b: &DMat4) -> bool {
+    a.to_cols_array()
+        .iter()
+        .zip(b.to_cols_array().iter())
+        .all(|(x, y)| x.to_bits() == y.to_bits())
 }
 
 /// The edges of a texel of `m` (eye → light clip) at `p`, in the plane perpendicular to the unit
