@@ -9,7 +9,7 @@ use glam::{DMat4, DVec3, DVec4};
 use proptest::prelude::*;
 use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::frame::{
-    frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme, MAX_CULL_PLANES,
+    frame, Bound, Camera, CascadeSplits, FrameInput, FrameScheme, MAX_CULL_PLANES,
 };
 use shadow_aliasing::maps::faces::FaceWarp;
 use shadow_aliasing::maps::{TsmOptions, TsmSearch, WarpRule};

@@ -137,8 +137,7 @@ impl Ctx<'_, '_> {
             split: (a, b),
             blend: (b, b),
         };
-        let mut m =
-            self.finish_measured(shadow, err, pts, &slice, body.focus, prism.as_slice())?;
+        let mut m = self.finish_measured(shadow, err, pts, &slice, body.focus, prism.as_slice())?;
         m.face = Some(face);
         Ok(Built::Map(m))
     }
