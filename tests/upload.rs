@@ -105,6 +105,7 @@ fn wgsl_constants_match_the_codes() {
     for (name, depth) in [
         ("CLIP_DEPTH_NEG_ONE_TO_ONE", ClipDepth::NegOneToOne),
         ("CLIP_DEPTH_ZERO_TO_ONE", ClipDepth::ZeroToOne),
+        ("CLIP_DEPTH_REVERSED", ClipDepth::Reversed),
     ] {
         let decl = format!(
             "const {name}: u32 = {}u;",
@@ -156,7 +157,7 @@ fn record_and_arrays_carry_the_maps_values() {
         let f = frame(&input).unwrap();
         assert!(!f.is_empty());
         for m in f.maps().iter() {
-            for depth in [ClipDepth::NegOneToOne, ClipDepth::ZeroToOne] {
+            for depth in ClipDepth::ALL {
                 let mat: Mat4 = m.world_to_clip(depth).as_mat4();
                 let cols = m.world_to_clip_cols(depth);
                 assert_eq!(cols, mat.to_cols_array_2d());

@@ -7,7 +7,7 @@ import numpy.typing as npt
 ArrayLike = npt.ArrayLike
 F64 = Union[np.float64, npt.NDArray[np.float64]]
 Vec3 = Union[Sequence[float], npt.NDArray[np.floating]]
-ClipDepth = Literal["neg_one_to_one", "zero_to_one"]
+ClipDepth = Literal["neg_one_to_one", "zero_to_one", "reversed"]
 
 WARP_RULES: list[str]
 __version__: str

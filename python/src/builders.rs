@@ -90,9 +90,14 @@ fn to_rows(m: &DMat4) -> [f64; 16] {
 
 fn clip_depth(name: &str) -> PyResult<ClipDepth> {
     Ok(
-        match choice("clip_depth", name, &["neg_one_to_one", "zero_to_one"])? {
+        match choice(
+            "clip_depth",
+            name,
+            &["neg_one_to_one", "zero_to_one", "reversed"],
+        )? {
             "neg_one_to_one" => ClipDepth::NegOneToOne,
-            _ => ClipDepth::ZeroToOne,
+            "zero_to_one" => ClipDepth::ZeroToOne,
+            _ => ClipDepth::Reversed,
         },
     )
 }
@@ -188,7 +193,8 @@ pub fn rule(view: &ViewFrustum, name: &str, p: RuleParams) -> PyResult<WarpRule>
 /// 300 near)). The warp is Lloyd 2006 §4's perspective along the light-space axis (Fig 3).
 ///
 /// light_dir: the direction light travels, eye space. Returns the 4×4 float64 matrix eye → light
-/// clip space (``clip_depth`` "neg_one_to_one", OpenGL, or "zero_to_one", Vulkan/D3D).
+/// clip space (``clip_depth`` "neg_one_to_one", OpenGL, "zero_to_one", Vulkan/D3D, or "reversed",
+/// 1 nearest the light and 0 farthest, Bevy's cascades).
 #[pyfunction]
 #[pyo3(signature = (near, far, half_fov, light_dir, rule="minimax", *, eta=None, focus=None,
     near_hint=None, far_hint=None, shadow_distance=None, clip_depth="neg_one_to_one", aspect=1.0))]

@@ -51,6 +51,24 @@ def test_clip_depth_zero_to_one_is_row_average():
     np.testing.assert_array_equal(b[[0, 1, 3]], a[[0, 1, 3]])
 
 
+def test_clip_depth_reversed_is_one_minus_zero_to_one():
+    a = sa.warp(*VIEW, OVERHEAD, "psm")
+    b = sa.warp(*VIEW, OVERHEAD, "psm", clip_depth="reversed")
+    np.testing.assert_allclose(b[2], 0.5 * (a[3] - a[2]), rtol=1e-15)
+    np.testing.assert_array_equal(b[[0, 1, 3]], a[[0, 1, 3]])
+    # The frustum's corners: depth 1 at the end nearest the light, 0 at the farthest.
+    near, far, half_fov = VIEW
+    t = np.tan(half_fov)
+    corners = np.array(
+        [[sx * z * t, sy * z * t, -z, 1.0] for z in (near, far) for sx in (-1, 1) for sy in (-1, 1)]
+    )
+    za, zb = corners @ a.T, corners @ b.T
+    np.testing.assert_allclose(zb[:, 2] / zb[:, 3], 0.5 * (1.0 - za[:, 2] / za[:, 3]), atol=1e-12)
+    assert zb[:, 2].max() / zb[zb[:, 2].argmax(), 3] <= 1.0 + 1e-9
+    with pytest.raises(ValueError, match="clip_depth"):
+        sa.warp(*VIEW, OVERHEAD, "psm", clip_depth="reverse")
+
+
 def test_cascades_zp_w_overhead_is_lloyd_eq_18():
     k = 4
     ms = sa.cascades(*VIEW, OVERHEAD, k, "self_similar", "lispsm")

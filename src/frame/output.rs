@@ -6,7 +6,7 @@ use super::{Built, Ctx, Slice, MAX_BODY_VERTICES};
 use crate::analytic::partition::MAX_PARTITIONS;
 use crate::error::{Error, Result};
 use crate::maps::faces::Face;
-use crate::maps::matrix::zero_to_one;
+use crate::maps::matrix::in_clip_depth;
 use crate::maps::{ClipDepth, ShadowMatrix};
 use crate::measure::vertex::vertex_max;
 use crate::measure::FrustumError;
@@ -92,11 +92,8 @@ impl FrameMap {
     /// World → light clip in the requested clip-depth convention.
     #[must_use]
     pub fn world_to_clip(&self, depth: ClipDepth) -> DMat4 {
-        match depth {
-            ClipDepth::NegOneToOne => self.world_to_clip,
-            // A function of `world_to_clip` alone, so that a map `unchanged` is so in every form.
-            ClipDepth::ZeroToOne => zero_to_one(&self.world_to_clip),
-        }
+        // A function of `world_to_clip` alone, so that a map `unchanged` is so in every form.
+        in_clip_depth(&self.world_to_clip, depth)
     }
     /// [`FrameMap::world_to_clip`] in single precision for the GPU.
     #[must_use]
@@ -329,15 +326,14 @@ impl Ctx<'_, '_> {
         let mut body = [DVec3::ZERO; MAX_BODY_VERTICES];
         body[..pts.len()].copy_from_slice(pts);
         let image = f64::from(self.input.image_height);
-        // The matrices a renderer uploads, in both depth conventions, must be finite in f64 and
+        // The matrices a renderer uploads, in every depth convention, must be finite in f64 and
         // in the GPU's f32 (a camera far from the world origin scales its translation past them).
         let world_to_eye = self.input.camera.world_to_eye;
         let world_to_clip = matrix * world_to_eye;
-        let zero_one = zero_to_one(&matrix) * world_to_eye;
-        if ![world_to_clip, zero_one]
-            .iter()
-            .all(|m| m.is_finite() && m.as_mat4().is_finite())
-        {
+        if !ClipDepth::ALL.iter().all(|d| {
+            let m = in_clip_depth(&world_to_clip, *d);
+            m.is_finite() && m.as_mat4().is_finite()
+        }) {
             return Err(Error::Degenerate(
                 "the map's world → clip matrix overflows f32 or f64 (the camera is too far from \
                  the world origin for the map's scale)"

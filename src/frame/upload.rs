@@ -67,13 +67,15 @@ impl GpuShadowMap {
     pub const NO_FACE: u32 = u32::MAX;
 
     /// The number `clip_depth` holds for a convention: 0 for [`ClipDepth::NegOneToOne`], 1 for
-    /// [`ClipDepth::ZeroToOne`] (the WGSL constants `CLIP_DEPTH_NEG_ONE_TO_ONE`, … of
+    /// [`ClipDepth::ZeroToOne`], 2 for [`ClipDepth::Reversed`] (the WGSL constants
+    /// `CLIP_DEPTH_NEG_ONE_TO_ONE`, `CLIP_DEPTH_ZERO_TO_ONE`, `CLIP_DEPTH_REVERSED` of
     /// [`GPU_SHADOW_MAP_WGSL`]).
     #[must_use]
     pub const fn clip_depth_code(depth: ClipDepth) -> u32 {
         match depth {
             ClipDepth::NegOneToOne => 0,
             ClipDepth::ZeroToOne => 1,
+            ClipDepth::Reversed => 2,
         }
     }
 
@@ -112,6 +114,7 @@ pub const GPU_SHADOW_MAP_WGSL: &str = "\
 // shadow-aliasing's GpuShadowMap (112 bytes; the same offsets in std140 and std430).
 const CLIP_DEPTH_NEG_ONE_TO_ONE: u32 = 0u;
 const CLIP_DEPTH_ZERO_TO_ONE: u32 = 1u;
+const CLIP_DEPTH_REVERSED: u32 = 2u;
 const NO_FACE: u32 = 0xffffffffu;
 struct GpuShadowMap {
     world_to_clip: mat4x4<f32>,

@@ -34,7 +34,7 @@
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::{LightDir, NPrime, ViewFrustum};
 use crate::maps::lightspace::{light_space_unit, LightSpace};
-use crate::maps::matrix::{zero_to_one, ShadowMatrix};
+use crate::maps::matrix::{reversed, zero_to_one, ShadowMatrix};
 use crate::numeric::lane::{Lane, V3};
 use crate::numeric::{fmax, fmin, CLIP_SLACK};
 use glam::{DMat4, DVec3, DVec4};
@@ -272,14 +272,18 @@ pub(crate) fn fit_points(
 /// for f/n up to 10⁶; a point at w < ½ or more than 10⁻⁶ outside the clip volume means the
 /// frustum's depth ratio is beyond what f64 can warp (for the LiSPSM warp the error of w at the far
 /// end is about √(f/n) · 10⁻¹⁶, for PSM's n′ = n about (f/n) · 10⁻¹⁶), and the matrix is refused.
+/// The depth is checked in every [`crate::maps::ClipDepth`] form (each form's depth row rounds
+/// on its own).
 pub(crate) fn verify_clip<'a>(
     m: &DMat4,
     points: impl Iterator<Item = &'a DVec3>,
 ) -> std::result::Result<(), FitFailure> {
-    let m01 = zero_to_one(m);
+    let (m01, mrev) = (zero_to_one(m), reversed(m));
     for p in points {
         let h = *m * p.extend(1.0);
-        let ok = in_clip(h.to_array()) && in_unit_depth((m01 * p.extend(1.0)).z, h.w);
+        let ok = in_clip(h.to_array())
+            && in_unit_depth((m01 * p.extend(1.0)).z, h.w)
+            && in_unit_depth((mrev * p.extend(1.0)).z, h.w);
         if !ok {
             return Err(FitFailure::OutsideClip(h));
         }
@@ -526,7 +530,7 @@ pub(crate) fn row_at_slice<T: Lane>((v, w0): &Row<T>, (w, h, d): (f64, f64, f64)
     ]
 }
 
-/// [`verify_clip`]'s test (both clip-depth forms) at the eight corners of two depths
+/// [`verify_clip`]'s test (every clip-depth form) at the eight corners of two depths
 /// `(w, h, d)` of a view frustum, and `M (c, 1)` at each (`[depth][corner][x, y, z, w]`), for
 /// the rows of M: the scalar builders' check at `f64` and the sweep's at four directions.
 #[inline(always)]
@@ -538,6 +542,8 @@ pub(crate) fn clip_at_slices<T: Lane>(
     let half = T::splat(0.5);
     let (r2, r3) = (&rows[2], &rows[3]);
     let row01 = ((r2.0 + r3.0).scale(half), (r2.1 + r3.1) * half);
+    // The reversed form's, `(M₃ − M₂)/2` as `reversed` forms it.
+    let rowrev = ((r3.0 - r2.0).scale(half), (r3.1 - r2.1) * half);
     // Plain loops, not `array::map`/`from_fn` closures (which do not always inline).
     let mut ok = T::all_set();
     let mut h = [[[T::splat(0.0); 4]; 4]; 2];
@@ -547,9 +553,11 @@ pub(crate) fn clip_at_slices<T: Lane>(
         let r2 = row_at_slice(&rows[2], slice);
         let r3 = row_at_slice(&rows[3], slice);
         let z01 = row_at_slice(&row01, slice);
+        let zrev = row_at_slice(&rowrev, slice);
         for j in 0..4 {
             let hj = [r0[j], r1[j], r2[j], r3[j]];
-            ok = T::and(ok, T::and(in_clip(hj), in_unit_depth(z01[j], hj[3])));
+            let depths = T::and(in_unit_depth(z01[j], hj[3]), in_unit_depth(zrev[j], hj[3]));
+            ok = T::and(ok, T::and(in_clip(hj), depths));
             hk[j] = hj;
         }
     }

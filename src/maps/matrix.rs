@@ -8,10 +8,12 @@
 //! | light clip space (output) | x, y ∈ [−1, 1] span the map after the divide by w; s = (x/w + 1)/2 along light-space x, t = (y/w + 1)/2 along the warp axis |
 //! | clip depth, [`ClipDepth::NegOneToOne`] | z/w ∈ [−1, 1], −1 nearest the light (OpenGL) |
 //! | clip depth, [`ClipDepth::ZeroToOne`] | z/w ∈ [0, 1], 0 nearest the light (Vulkan, wgpu, Direct3D, Metal) |
+//! | clip depth, [`ClipDepth::Reversed`] | z/w ∈ [0, 1], 1 nearest the light, 0 farthest (reversed depth: Bevy's cascades; compare greater-equal, clear to 0) |
 //!
 //! The stored matrix is always the OpenGL one; [`ShadowMatrix::with_clip_depth`] converts, by
-//! `z₀₁ = (z + w)/2` (row 2 becomes (row 2 + row 3)/2), which leaves x, y and w, hence the texel
-//! a point lands in, unchanged.
+//! `z₀₁ = (z + w)/2` (row 2 becomes (row 2 + row 3)/2) or `z_rev = (w − z)/2 = w − z₀₁` (row 2
+//! becomes (row 3 − row 2)/2), which leave x, y and w, hence the texel a point lands in,
+//! unchanged.
 
 use crate::measure::ShadowMap;
 use crate::{LightDir, NPrime};
@@ -25,6 +27,29 @@ pub enum ClipDepth {
     NegOneToOne,
     /// z/w ∈ [0, 1] (Vulkan, wgpu, Direct3D, Metal).
     ZeroToOne,
+    /// Reversed depth: z/w ∈ [0, 1] with 1 nearest the light and 0 farthest (Bevy's cascades and
+    /// most engines' reversed-Z passes): the depth test compares greater-equal and the map is
+    /// cleared to 0; a caster nearer the light than the map's range has z/w > 1 (clamped to 1 by
+    /// depth clamping).
+    Reversed,
+}
+
+impl ClipDepth {
+    /// Every convention.
+    pub const ALL: [ClipDepth; 3] = [
+        ClipDepth::NegOneToOne,
+        ClipDepth::ZeroToOne,
+        ClipDepth::Reversed,
+    ];
+
+    /// An OpenGL-depth matrix (any → light clip, such as [`ShadowMatrix::matrix`] or a
+    /// command-line answer's `matrix`) in this convention: its depth row replaced by
+    /// `(row 2 + row 3)/2` for [`ClipDepth::ZeroToOne`], `(row 3 − row 2)/2` for
+    /// [`ClipDepth::Reversed`]; x, y and w unchanged.
+    #[must_use]
+    pub fn convert(self, opengl: &DMat4) -> DMat4 {
+        in_clip_depth(opengl, self)
+    }
 }
 
 /// A shadow matrix for one directional light and one view (sub)frustum, as a builder made it:
@@ -109,10 +134,7 @@ impl ShadowMatrix {
     /// ```
     #[must_use]
     pub fn with_clip_depth(&self, depth: ClipDepth) -> DMat4 {
-        match depth {
-            ClipDepth::NegOneToOne => self.matrix(),
-            ClipDepth::ZeroToOne => zero_to_one(&self.matrix()),
-        }
+        in_clip_depth(&self.matrix(), depth)
     }
 
     /// The matrix in single precision for the GPU.
@@ -159,6 +181,28 @@ pub(crate) fn project(m: &DMat4, p: DVec3) -> Option<DVec3> {
     } else {
         None
     }
+}
+
+/// An OpenGL-depth map `m` in the clip-depth convention `depth`: [`zero_to_one`] or
+/// [`reversed`] of it, or `m` itself.
+#[inline]
+pub(crate) fn in_clip_depth(m: &DMat4, depth: ClipDepth) -> DMat4 {
+    match depth {
+        ClipDepth::NegOneToOne => *m,
+        ClipDepth::ZeroToOne => zero_to_one(m),
+        ClipDepth::Reversed => reversed(m),
+    }
+}
+
+/// The reversed-depth form of an OpenGL-depth map: depth row `(M₃ − M₂)/2`, so that
+/// `z_rev = (w − z)/2`, 1 at the near end (z = −w) and 0 at the far end (z = w). Every builder
+/// checks this form too (`maps::fit::verify_clip`, `clip_at_slices`), as it does the `[0, 1]` one.
+#[inline]
+pub(crate) fn reversed(m: &DMat4) -> DMat4 {
+    let z = 0.5 * (m.row(3) - m.row(2));
+    let mut t = m.transpose();
+    t.z_axis = z;
+    t.transpose()
 }
 
 /// The `[0, 1]`-depth form of an OpenGL-depth map: depth row `(M₂ + M₃)/2`. Every builder checks

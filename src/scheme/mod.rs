@@ -41,6 +41,7 @@ use crate::frustum::{LightAngle, LightDir, NPrime, ViewFrustum};
 use crate::maps::atlas::{layout, Atlas, AtlasEntry, MAX_ATLAS_ENTRIES};
 use crate::maps::cascades::visit_cascades;
 use crate::maps::faces::{visit_face_partitions, Face, FaceWarp, MAX_FACE_PARTITIONS};
+use crate::maps::matrix::in_clip_depth;
 use crate::maps::warp::{warp_prepared, PreparedLight};
 use crate::maps::{ClipDepth, WarpRule};
 use crate::measure::vertex::vertex_max;
@@ -128,14 +129,7 @@ impl PartitionResult {
     /// The matrix in the requested clip-depth convention (see [`crate::maps::ClipDepth`]).
     #[must_use]
     pub fn matrix_with_clip_depth(&self, depth: ClipDepth) -> DMat4 {
-        match depth {
-            ClipDepth::NegOneToOne => self.matrix,
-            ClipDepth::ZeroToOne => {
-                let mut t = self.matrix.transpose();
-                t.z_axis = 0.5 * (t.z_axis + t.w_axis);
-                t.transpose()
-            }
-        }
+        in_clip_depth(&self.matrix, depth)
     }
 
     /// The matrix in single precision for the GPU, in the requested clip-depth convention.

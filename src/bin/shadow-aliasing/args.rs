@@ -208,9 +208,45 @@ pub struct WarpArgs {
     pub scheme: SchemeArgs,
     #[command(flatten)]
     pub scene: SceneArgs,
+    /// The printed matrices' clip depth: OpenGL [-1, 1], [0, 1] (Vulkan, wgpu, Direct3D), or
+    /// reversed [1, 0] (1 nearest the light, Bevy's cascades).
+    #[arg(long = "clip-depth", value_enum, default_value_t = ClipDepthName::NegOneToOne)]
+    pub clip_depth: ClipDepthName,
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
+}
+
+/// `--clip-depth`: the library's [`shadow_aliasing::maps::ClipDepth`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ClipDepthName {
+    /// z/w in [-1, 1], -1 nearest the light (OpenGL).
+    NegOneToOne,
+    /// z/w in [0, 1], 0 nearest the light (Vulkan, wgpu, Direct3D, Metal).
+    ZeroToOne,
+    /// z/w in [0, 1], 1 nearest the light (reversed depth).
+    Reversed,
+}
+
+impl ClipDepthName {
+    /// The library's convention.
+    pub fn depth(self) -> shadow_aliasing::maps::ClipDepth {
+        use shadow_aliasing::maps::ClipDepth;
+        match self {
+            Self::NegOneToOne => ClipDepth::NegOneToOne,
+            Self::ZeroToOne => ClipDepth::ZeroToOne,
+            Self::Reversed => ClipDepth::Reversed,
+        }
+    }
+
+    /// The printed matrix's depth, in words.
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::NegOneToOne => "OpenGL depth [-1, 1]",
+            Self::ZeroToOne => "depth [0, 1]",
+            Self::Reversed => "reversed depth [1, 0], 1 nearest the light",
+        }
+    }
 }
 
 /// `warp`'s scene: the maps focused on receivers ∩ the view (the library's frame API), with the

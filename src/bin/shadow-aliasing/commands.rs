@@ -107,7 +107,7 @@ fn warp(a: &WarpArgs) -> ExitCode {
     };
     let total: f64 = parts.iter().map(|p| p.storage_factor).sum();
     let text = if a.json {
-        warp_json(total, &parts)
+        warp_json(a, total, &parts)
     } else {
         let gamma = LightAngle::from_light_dir(light)
             .map(LightAngle::radians)
@@ -118,14 +118,16 @@ fn warp(a: &WarpArgs) -> ExitCode {
 }
 
 /// The JSON of issue 3: `storage_factor` summed, and one object per partition.
-fn warp_json(total: f64, parts: &[PartitionReport]) -> String {
+fn warp_json(a: &WarpArgs, total: f64, parts: &[PartitionReport]) -> String {
     let mut s = format!(
         "{{\n  \"storage_factor\": {},\n  \"partitions\": [\n",
         json_num(total)
     );
     for (i, p) in parts.iter().enumerate() {
-        let m: Vec<String> = p
-            .matrix
+        let m: Vec<String> = a
+            .clip_depth
+            .depth()
+            .convert(&p.matrix)
             .to_cols_array()
             .iter()
             .map(|v| json_num(*v))
@@ -202,10 +204,12 @@ fn warp_text(a: &WarpArgs, gamma: f64, total: f64, parts: &[PartitionReport]) ->
         );
         let _ = writeln!(
             s,
-            "  matrix (eye space → light clip space, OpenGL depth [-1, 1]), by rows:"
+            "  matrix (eye space → light clip space, {}), by rows:",
+            a.clip_depth.label()
         );
+        let matrix = a.clip_depth.depth().convert(&p.matrix);
         let cells: Vec<Vec<String>> = (0..4)
-            .map(|r| p.matrix.row(r).to_array().iter().map(|v| sig(*v)).collect())
+            .map(|r| matrix.row(r).to_array().iter().map(|v| sig(*v)).collect())
             .collect();
         let width = cells
             .iter()

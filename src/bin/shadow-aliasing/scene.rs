@@ -202,10 +202,10 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
         } if sc.splits.is_some() => Error::invalid("splits", reason),
         e => e,
     })?;
-    Ok(if a.json { json(&f) } else { text(a, &f) })
+    Ok(if a.json { json(a, &f) } else { text(a, &f) })
 }
 
-fn json(f: &shadow_aliasing::frame::Frame) -> String {
+fn json(a: &WarpArgs, f: &shadow_aliasing::frame::Frame) -> String {
     let mut s = format!(
         "{{\n  \"focus\": \"{}\",\n  \"light\": \"{}\",\n",
         focus_name(f.focus()),
@@ -230,7 +230,7 @@ fn json(f: &shadow_aliasing::frame::Frame) -> String {
     for (i, m) in maps.iter().enumerate() {
         let mat: Vec<String> = m
             .shadow
-            .matrix()
+            .with_clip_depth(a.clip_depth.depth())
             .to_cols_array()
             .iter()
             .map(|v| json_num(*v))
@@ -310,10 +310,12 @@ fn text(a: &WarpArgs, f: &shadow_aliasing::frame::Frame) -> String {
         );
         let _ = writeln!(
             s,
-            "  matrix (eye space → light clip space, OpenGL depth [-1, 1]), by rows:"
+            "  matrix (eye space → light clip space, {}), by rows:",
+            a.clip_depth.label()
         );
+        let matrix = m.shadow.with_clip_depth(a.clip_depth.depth());
         for r in 0..4 {
-            let row = m.shadow.matrix().row(r);
+            let row = matrix.row(r);
             let _ = writeln!(
                 s,
                 "    [ {:>10} {:>10} {:>10} {:>10} ]",
