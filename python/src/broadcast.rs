@@ -287,17 +287,29 @@ pub struct OutSpec {
     pub width: Option<usize>,
     /// Whether +∞ is a legitimate value (an n′ of an unwarped map).
     pub allow_inf: bool,
+    /// Whether the value is strictly positive wherever the form is defined, so that only a
+    /// normal `f64` is admitted by the fast path: a 0 or a subnormal is an underflow, which the
+    /// validated form reports (the closed forms proportional to res_image/res_s or /res_t).
+    pub positive: bool,
 }
 
 /// A scalar quantity: one finite number per element.
 pub const SCALAR: OutSpec = OutSpec {
     width: None,
     allow_inf: false,
+    positive: false,
+};
+/// A scalar quantity that is strictly positive: one normal, positive number per element.
+pub const POSITIVE: OutSpec = OutSpec {
+    width: None,
+    allow_inf: false,
+    positive: true,
 };
 /// An n′: one number per element, +∞ for the unwarped map.
 pub const N_PRIME: OutSpec = OutSpec {
     width: None,
     allow_inf: true,
+    positive: false,
 };
 
 /// The fast kernel of a scalar closed form: for the arguments of one element (and tan θ of the
@@ -326,8 +338,9 @@ where
 /// Each block of [`BLOCK`] elements first takes tan of argument `tan_of` (if any; one call per
 /// run of equal values, [`TanMemo`]), then runs `g` over plain slices (no validation, no
 /// `Result`, no call: the compiler vectorises it) and collects the domain checks; a
-/// block with any element outside `g`'s domain, or with a non-finite value, is computed again
-/// element by element with `f`, which gives the values and the first error exactly as without
+/// block with any element outside `g`'s domain, or with a value [`OutSpec`] does not admit (not
+/// finite; for a strictly positive form, 0 or subnormal), is computed again element by element
+/// with `f`, which gives the values and the first error exactly as without
 /// the fast path.
 pub fn map_fast<'py, const N: usize, F, G>(
     py: Python<'py>,
@@ -431,7 +444,7 @@ where
     }
     // The fast kernel writes one number per element.
     let g = g.filter(|_| width == 1);
-    let failure = py.detach(|| run(&data, &mut out, width, spec.allow_inf, &f, g.as_ref()));
+    let failure = py.detach(|| run(&data, &mut out, width, spec, &f, g.as_ref()));
     if let Some((i, e)) = failure {
         let msg = e.to_string();
         return Err(PyValueError::new_err(if shape.is_empty() {
@@ -464,7 +477,7 @@ fn run<const N: usize, F, G>(
     data: &[Data<'_>],
     out: &mut [f64],
     width: usize,
-    allow_inf: bool,
+    spec: OutSpec,
     f: &F,
     g: Option<&Fast<G>>,
 ) -> Option<(usize, Error)>
@@ -481,7 +494,7 @@ where
             }
             if let Some(bad) = o
                 .iter()
-                .find(|v| !(v.is_finite() || (allow_inf && **v == f64::INFINITY)))
+                .find(|v| !(v.is_finite() || (spec.allow_inf && **v == f64::INFINITY)))
             {
                 return Some((
                     i,
@@ -520,9 +533,9 @@ where
                 }
             }
             let ok = match ob.first_chunk_mut::<BLOCK>() {
-                Some(o) if is_full && wide => kernel_full_wide(&full, &tans, o, allow_inf, g),
-                Some(o) if is_full => kernel_full(&full, &tans, o, allow_inf, g),
-                _ => kernel_tail(&cols, &tans[..len], ob, allow_inf, g),
+                Some(o) if is_full && wide => kernel_full_wide(&full, &tans, o, spec, g),
+                Some(o) if is_full => kernel_full(&full, &tans, o, spec, g),
+                _ => kernel_tail(&cols, &tans[..len], ob, spec, g),
             };
             if !ok {
                 if let Some(failure) = checked(s0, ob) {
@@ -545,10 +558,12 @@ where
 /// The placeholder of a column before it is set (never read).
 static UNUSED: [f64; BLOCK] = [0.0; BLOCK];
 
-/// Whether an element's value is admitted: finite, or +∞ where allowed.
+/// Whether an element's value is admitted: finite, or +∞ where allowed; for a strictly positive
+/// form also normal (≥ `f64::MIN_POSITIVE`: 0 and subnormals are underflows, NaN fails both).
 #[inline(always)]
-fn admitted(v: f64, good: bool, allow_inf: bool) -> bool {
-    good & (finite(v) | (allow_inf & (v == f64::INFINITY)))
+fn admitted(v: f64, good: bool, spec: OutSpec) -> bool {
+    good & (finite(v) | (spec.allow_inf & (v == f64::INFINITY)))
+        & (!spec.positive | (v >= f64::MIN_POSITIVE))
 }
 
 /// `v.is_finite()` as two float operations: v − v is +0 exactly for a finite v and NaN for ±∞
@@ -566,7 +581,7 @@ fn kernel_full<const N: usize, G>(
     cols: &[&[f64; BLOCK]; N],
     tans: &[f64; BLOCK],
     out: &mut [f64; BLOCK],
-    allow_inf: bool,
+    spec: OutSpec,
     g: &G,
 ) -> bool
 where
@@ -577,7 +592,7 @@ where
         let x: [f64; N] = std::array::from_fn(|k| cols[k][j]);
         let (v, good) = g(&x, tans[j]);
         out[j] = v;
-        ok &= admitted(v, good, allow_inf);
+        ok &= admitted(v, good, spec);
     }
     ok
 }
@@ -594,13 +609,13 @@ fn kernel_full_wide<const N: usize, G>(
     cols: &[&[f64; BLOCK]; N],
     tans: &[f64; BLOCK],
     out: &mut [f64; BLOCK],
-    allow_inf: bool,
+    spec: OutSpec,
     g: &G,
 ) -> bool
 where
     G: Fn(&[f64; N], f64) -> (f64, bool),
 {
-    kernel_full(cols, tans, out, allow_inf, g)
+    kernel_full(cols, tans, out, spec, g)
 }
 
 /// [`kernel_full`] over a shorter block (`out.len()` elements of each column).
@@ -609,7 +624,7 @@ fn kernel_tail<const N: usize, G>(
     cols: &[&[f64]; N],
     tans: &[f64],
     out: &mut [f64],
-    allow_inf: bool,
+    spec: OutSpec,
     g: &G,
 ) -> bool
 where
@@ -620,7 +635,7 @@ where
         let x: [f64; N] = std::array::from_fn(|k| cols[k][j]);
         let (v, good) = g(&x, tans[j]);
         *o = v;
-        ok &= admitted(v, good, allow_inf);
+        ok &= admitted(v, good, spec);
     }
     ok
 }

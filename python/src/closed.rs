@@ -5,7 +5,7 @@
 
 use crate::args;
 use crate::broadcast::finite;
-use crate::broadcast::{count, map, map_fast, map_into, OutSpec, N_PRIME, SCALAR};
+use crate::broadcast::{count, map, map_fast, map_into, OutSpec, N_PRIME, POSITIVE, SCALAR};
 use numpy::PyUntypedArrayMethods;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -190,7 +190,7 @@ elementwise! {
     ///     m_x = (res_image / res_s) · f (n′ + z − n) / (z (n′ + f − n)),   m_x = (res_image / res_s) f / z for n′ = ∞
     ///
     /// n = near, f = far, n′ = n_prime (≥ near; ``inf`` for the unwarped map), z = depth in [near, far].
-    fn mx(near, far, n_prime, z; res_image, res_s) -> SCALAR;
+    fn mx(near, far, n_prime, z; res_image, res_s) -> POSITIVE;
     checked = |&[n, f, np, z, ri, rs]: &[f64; 6]| {
         overhead::mx(n, f, n_prime_arg("n_prime", np)?, z, Resolutions::new(ri, rs, 1.0)?)
     };
@@ -207,7 +207,7 @@ elementwise! {
     ///     m_z = (res_image / res_t) · (f − n)/(2 tan θ) · 1/z                 for n′ = ∞
     ///
     /// n = near, f = far, θ = half_fov, n′ = n_prime (≥ near, or ``inf``), z in [near, far].
-    fn mz(near, far, half_fov, n_prime, z; res_image, res_t) -> SCALAR;
+    fn mz(near, far, half_fov, n_prime, z; res_image, res_t) -> POSITIVE;
     checked = |&[n, f, th, np, z, ri, rt]: &[f64; 7]| {
         overhead::mz(
             &view(&[n, f, th])?,
@@ -227,7 +227,7 @@ elementwise! {
     /// The maximum x error over the frustum, light overhead (Lloyd 2006 Eq 9): m_x at z = near,
     ///
     ///     M_x = (res_image / res_s) · f n′ / (n (n′ + f − n)),   M_x = (res_image / res_s) f / n for n′ = ∞
-    fn max_mx(near, far, n_prime; res_image, res_s) -> SCALAR;
+    fn max_mx(near, far, n_prime; res_image, res_s) -> POSITIVE;
     checked = |&[n, f, np, ri, rs]: &[f64; 5]| {
         overhead::max_mx(n, f, n_prime_arg("n_prime", np)?, Resolutions::new(ri, rs, 1.0)?)
     };
@@ -244,7 +244,7 @@ elementwise! {
     ///     M_z = (res_image / res_t) · (f − n)/(2 tan θ) · (n′ + f − n)/(f n′)     n ≤ n′ ≤ n + √(f n)
     ///     M_z = (res_image / res_t) · (f − n)/(2 tan θ) · n′/((n′ + f − n) n)     n′ > n + √(f n)
     ///     M_z = (res_image / res_t) · (f − n)/(2 tan θ n)                          n′ = ∞
-    fn max_mz(near, far, half_fov, n_prime; res_image, res_t) -> SCALAR;
+    fn max_mz(near, far, half_fov, n_prime; res_image, res_t) -> POSITIVE;
     checked = |&[n, f, th, np, ri, rt]: &[f64; 6]| {
         overhead::max_mz(
             &view(&[n, f, th])?,
@@ -307,6 +307,7 @@ pub fn critical_resolution<'py>(
         OutSpec {
             width: Some(2),
             allow_inf: false,
+            positive: false,
         },
         |x, o| {
             let v = view(x)?;
@@ -385,7 +386,7 @@ elementwise! {
     ///     m_max = k (res_image / res_s) / (2 tan θ) · (α^{1/k} − 1)/α^{1/2k} · (1 + |ξ| (α^{1/2k} − 1))
     ///
     /// k is a whole number ≥ 1 (an integer array broadcasts like the others).
-    fn subdivided_max_error(alpha, k, eta, half_fov; res_image, res_s) -> SCALAR;
+    fn subdivided_max_error(alpha, k, eta, half_fov; res_image, res_s) -> POSITIVE;
     checked = |&[a, k, e, th, ri, rs]: &[f64; 6]| {
         subdivided::subdivided_max_error(a, count("k", k)?, e, th, ri, rs)
     };
@@ -504,6 +505,7 @@ pub fn z_partition<'py>(
     let spec = OutSpec {
         width: Some(k + 1),
         allow_inf: false,
+        positive: false,
     };
     let a = lambda_.or(light_angle).unwrap_or(&zero);
     let b = ratio.unwrap_or(&zero);
@@ -581,7 +583,7 @@ elementwise! {
     /// Lloyd 2006 Eq 8.
     ///
     /// n_prime > 0 (any, since a tilted light can put the centre closer than near).
-    fn tilted_mz(near, far, half_fov, n_prime, light_angle, z; res_image, res_t) -> SCALAR;
+    fn tilted_mz(near, far, half_fov, n_prime, light_angle, z; res_image, res_t) -> POSITIVE;
     checked = |&[n, f, th, np, g, z, ri, rt]: &[f64; 8]| {
         tilted::tilted_mz(
             &view(&[n, f, th])?,
