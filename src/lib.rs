@@ -40,7 +40,8 @@
 //! `look_at_rh`); the depth of a point `p` is `z = −p.z`. Angles are in radians; `half_fov` is half
 //! the vertical field of view. A light direction is the direction light travels, in eye space.
 //! Shadow matrices map eye space to light clip space with x, y ∈ [−1, 1] over the map; depth in
-//! [−1, 1] (OpenGL) or [0, 1] (Vulkan, wgpu, D3D) by [`maps::ClipDepth`]. All analysis is `f64`;
+//! [−1, 1] (OpenGL), [0, 1] (Vulkan, wgpu, D3D) or reversed [1, 0] (1 nearest the light) by
+//! [`maps::ClipDepth`]. All analysis is `f64`;
 //! [`maps::ShadowMatrix::to_mat4`] gives `f32` for the GPU.
 //!
 //! # Example

@@ -9,7 +9,9 @@
 #![cfg_attr(feature = "bytemuck", allow(unsafe_code))]
 
 use super::output::FrameMap;
+use crate::maps::matrix::in_clip_depth;
 use crate::maps::ClipDepth;
+use glam::{DMat4, DVec3, Mat4};
 
 /// One map as a GPU uniform or storage-buffer element: `#[repr(C)]`, 112 bytes, every field a
 /// 4-byte scalar or an array of them, laid out exactly as the WGSL struct
@@ -145,7 +147,48 @@ impl FrameMap {
         self.record(self.world_to_clip_cols(depth), depth)
     }
 
-    pub(super) fn record(&self, world_to_clip: [[f32; 4]; 4], depth: ClipDepth) -> GpuShadowMap {
+    /// World → light clip for points given relative to `origin` (the camera's position, or the
+    /// engine's floating origin), `clip = M_rel · (p − origin, 1)`, in `f64`: the map's eye → clip
+    /// matrix times the camera's world → eye composed with the translation by `origin`, whose
+    /// translation column is the eye-space position of `origin` (small when `origin` is near the
+    /// camera, however far both are from the world origin).
+    #[must_use]
+    pub fn world_to_clip_relative_f64(&self, origin: impl Into<DVec3>, depth: ClipDepth) -> DMat4 {
+        let mut to_eye = self.world_to_eye;
+        to_eye.w_axis = self
+            .world_to_eye
+            .transform_point3(origin.into())
+            .extend(1.0);
+        in_clip_depth(&self.shadow.matrix(), depth) * to_eye
+    }
+
+    /// [`FrameMap::world_to_clip_relative_f64`] rounded once to `f32`: the matrix to upload with
+    /// vertices relative to `origin`. Far from the world origin it keeps the map to within 0.01
+    /// texel at B's vertices (tests/upload_precision.rs: cameras up to 10⁶ from it), where the
+    /// plain [`FrameMap::to_mat4`] loses texels (docs/renderer.md, "Uploading").
+    #[must_use]
+    pub fn world_to_clip_relative(&self, origin: impl Into<DVec3>, depth: ClipDepth) -> Mat4 {
+        self.world_to_clip_relative_f64(origin, depth).as_mat4()
+    }
+
+    /// [`FrameMap::world_to_clip_relative`] as plain column-major arrays.
+    #[must_use]
+    pub fn world_to_clip_relative_cols(
+        &self,
+        origin: impl Into<DVec3>,
+        depth: ClipDepth,
+    ) -> [[f32; 4]; 4] {
+        self.world_to_clip_relative(origin, depth)
+            .to_cols_array_2d()
+    }
+
+    /// [`FrameMap::gpu`] with [`FrameMap::world_to_clip_relative`] as its matrix.
+    #[must_use]
+    pub fn gpu_relative(&self, origin: impl Into<DVec3>, depth: ClipDepth) -> GpuShadowMap {
+        self.record(self.world_to_clip_relative_cols(origin, depth), depth)
+    }
+
+    fn record(&self, world_to_clip: [[f32; 4]; 4], depth: ClipDepth) -> GpuShadowMap {
         let pair = |p: (f64, f64)| [p.0 as f32, p.1 as f32];
         GpuShadowMap {
             world_to_clip,
