@@ -116,6 +116,26 @@ fn builders(c: &mut Criterion) {
     g.bench_function("frame_cascades4_scene", |b| {
         b.iter(|| frame_into(bb(&stable), &mut out))
     });
+    // Four LiSPSM cascades of the same scene, practical λ = 0.8 against equal-error splits
+    // (issue 24: the root search measures a few hundred slices' maps per frame).
+    let practical = scene.scheme(FrameScheme::Cascades {
+        splits: CascadeSplits::Scheme {
+            scheme: SplitScheme::Practical { lambda: 0.8 },
+            k: 4,
+            overlap: 0.0,
+        },
+        rule: WarpRule::Lispsm,
+    });
+    g.bench_function("frame_practical4_scene", |b| {
+        b.iter(|| frame_into(bb(&practical), &mut out))
+    });
+    let equal = scene.scheme(FrameScheme::Cascades {
+        splits: CascadeSplits::EqualError { k: 4 },
+        rule: WarpRule::Lispsm,
+    });
+    g.bench_function("frame_equal_error4_scene", |b| {
+        b.iter(|| frame_into(bb(&equal), &mut out))
+    });
     // Face partitions (LiSPSM per face, k = 1) of the same scene; the counterpart is `faces`.
     let faces = scene.scheme(FrameScheme::Faces {
         rule: FaceWarp::Lispsm,

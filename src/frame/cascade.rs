@@ -2,6 +2,7 @@
 //! fractions, Bevy's splits) and the stable cascade of a slice.
 
 use super::body::depth_extent;
+use super::equal_error::SliceMap;
 use super::input::CascadeSplits;
 use super::output::Focus;
 use super::{Built, Ctx, Slice, MAX_BODY_VERTICES};
@@ -22,8 +23,27 @@ fn overlap_ok(o: f64) -> Result<f64> {
     Ok(o)
 }
 
-/// The cascades' slices over the visible range `[zn, zf]`; returns k.
-pub(super) fn cascade_slices(
+impl Ctx<'_, '_> {
+    /// The cascades' slices over the visible range `[zn, zf]`, each mapped as `how` (which the
+    /// equal-error splits measure); returns k.
+    pub(super) fn cascade_slices(
+        &self,
+        splits: CascadeSplits<'_>,
+        how: SliceMap,
+        zn: f64,
+        zf: f64,
+        out: &mut [Slice; MAX_PARTITIONS],
+    ) -> Result<usize> {
+        match splits {
+            CascadeSplits::EqualError { k } => self.equal_error_slices(k, how, zn, zf, out),
+            s => cascade_slices(s, zn, zf, out),
+        }
+    }
+}
+
+/// The slices of the splits that do not depend on the maps (every [`CascadeSplits`] but
+/// `EqualError`, which [`Ctx::cascade_slices`] places); returns k.
+fn cascade_slices(
     splits: CascadeSplits<'_>,
     zn: f64,
     zf: f64,
@@ -166,6 +186,11 @@ pub(super) fn cascade_slices(
             }
             Ok(n)
         }
+        // Placed by measuring the maps (`Ctx::cascade_slices`), never here.
+        CascadeSplits::EqualError { .. } => Err(Error::invalid(
+            "splits",
+            "EqualError is placed by the frame's measured errors, not by depth alone",
+        )),
     }
 }
 

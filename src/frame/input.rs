@@ -215,6 +215,17 @@ pub enum CascadeSplits<'a> {
         /// Overlap proportion in [0, 1).
         overlap_proportion: f64,
     },
+    /// k cascades whose measured maximum errors over their focus bodies are equal (issue 24):
+    /// the k − 1 planes found by a bounded root search on the measured error, over B's depth
+    /// range within the visible one (SDSM), for the frame's rule (or the stable cascade) and
+    /// light. With monotone errors no other splits of k cascades have a smaller largest error;
+    /// for a frustum-only body they are the logarithmic splits (Lloyd 2006 Eq 15–16). No overlap
+    /// (no blend band): each map covers its selection range's part of B's depth range. The
+    /// search: `frame/equal_error.rs` and docs/planning.md.
+    EqualError {
+        /// Number of cascades, 1..=16.
+        k: usize,
+    },
 }
 
 /// What the frame builds.

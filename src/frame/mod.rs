@@ -77,6 +77,7 @@ mod body;
 mod cascade;
 mod casters;
 mod culling;
+mod equal_error;
 mod faces;
 mod input;
 mod output;
@@ -93,7 +94,7 @@ use crate::error::{Error, Result};
 use crate::frustum::{LightDir, ViewFrustum};
 use crate::maps::WarpRule;
 use body::{receiver_planes, Planes};
-use cascade::cascade_slices;
+use equal_error::SliceMap;
 use glam::DVec3;
 use input::{validate_casters, visible_range};
 
@@ -212,11 +213,13 @@ fn fill(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
             };
             (1, rule, false)
         }
-        FrameScheme::Cascades { splits, rule } => {
-            (cascade_slices(splits, zn, zf, &mut slices)?, rule, false)
-        }
+        FrameScheme::Cascades { splits, rule } => (
+            ctx.cascade_slices(splits, SliceMap::Rule(rule), zn, zf, &mut slices)?,
+            rule,
+            false,
+        ),
         FrameScheme::Stable(splits) => (
-            cascade_slices(splits, zn, zf, &mut slices)?,
+            ctx.cascade_slices(splits, SliceMap::Stable, zn, zf, &mut slices)?,
             WarpRule::Uniform,
             true,
         ),

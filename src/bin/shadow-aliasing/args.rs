@@ -194,6 +194,10 @@ pub enum PartitionName {
     Adaptive,
     /// Face partitions (Lloyd 2006 §5.1), with `--k` z-partitions inside each face.
     Faces,
+    /// `--k` cascades whose measured maximum errors over their focus bodies are equal
+    /// (`CascadeSplits::EqualError`; `warp` only, through the frame API: the logarithmic splits
+    /// for the frustum alone).
+    EqualError,
 }
 
 /// `warp` arguments.

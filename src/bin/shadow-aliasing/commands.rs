@@ -1,6 +1,8 @@
 //! What each subcommand does.
 
-use crate::args::{Cli, Command, EvalArgs, FiguresArgs, Format, SweepArgs, SweepFormat, WarpArgs};
+use crate::args::{
+    Cli, Command, EvalArgs, FiguresArgs, Format, PartitionName, SweepArgs, SweepFormat, WarpArgs,
+};
 use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
 use crate::scheme::{k, partition, partitions, rule, value_name, Lights, PartitionReport};
 use crate::sweep_out::{self, Sink, WriteError};
@@ -89,7 +91,9 @@ fn print_bytes(bytes: &[u8]) -> ExitCode {
 }
 
 fn warp(a: &WarpArgs) -> ExitCode {
-    if a.scene.any() {
+    // Equal-error splits are measured on the frame's maps: the scene path, with the frustum
+    // alone when no scene is given.
+    if a.scene.any() || a.scheme.partition == PartitionName::EqualError {
         return match crate::scene::warp_scene(a) {
             Ok(text) => print(&text),
             Err(e) => fail(e),
@@ -325,7 +329,11 @@ fn sweep(a: &SweepArgs) -> ExitCode {
             Ok(rk) => rk,
             Err(e) => return fail(e),
         };
-    let run = || sweep(&view, r, partition(&a.scheme), k, grid);
+    let part = match partition(&a.scheme) {
+        Ok(p) => p,
+        Err(e) => return fail(e),
+    };
+    let run = || sweep(&view, r, part, k, grid);
     // `--threads` is in [1, MAX_THREADS] (args::parse_threads).
     let result = match a.threads {
         None => run(),

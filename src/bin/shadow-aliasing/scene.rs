@@ -178,6 +178,19 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
             rule: face_rule(r),
             k,
         },
+        (None, PartitionName::EqualError) => {
+            if sc.overlap.is_some() {
+                return Err(Error::invalid(
+                    "overlap",
+                    "is not used by --partition equal-error, whose maps cover exactly their \
+                     splits: drop --overlap",
+                ));
+            }
+            FrameScheme::Cascades {
+                splits: CascadeSplits::EqualError { k },
+                rule: r,
+            }
+        }
     };
     let receivers = boxes(&sc.receivers, "receivers")?;
     let casters = boxes(&sc.casters, "casters")?;

@@ -44,15 +44,26 @@ pub enum Lights {
 }
 
 /// The library's partition for `--partition` (and `--lambda`).
-pub fn partition(a: &SchemeArgs) -> Partition {
-    match a.partition {
+///
+/// # Errors
+/// `partition` for `equal-error`, whose splits are measured on one light's maps (`warp` only).
+pub fn partition(a: &SchemeArgs) -> Result<Partition, Error> {
+    Ok(match a.partition {
         PartitionName::Single => Partition::Single,
         PartitionName::Uniform => Partition::Uniform,
         PartitionName::Log => Partition::Log,
         PartitionName::Practical => Partition::Practical(a.lambda.unwrap_or(DEFAULT_LAMBDA)),
         PartitionName::Adaptive => Partition::AdaptiveRatio(ratio(a)),
         PartitionName::Faces => Partition::Faces,
-    }
+        PartitionName::EqualError => {
+            return Err(Error::invalid(
+                "partition",
+                "equal-error places its splits by measuring one light's maps: use it with warp, \
+                 or sweep --partition log (the frustum's own equal-error splits for the rules \
+                 whose map scales with its slice)",
+            ))
+        }
+    })
 }
 
 /// `--ratio`, or Barroso & Celes' α = 2 when it is not given (validated by the library, which
@@ -121,7 +132,9 @@ fn shallowest_partition(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> R
     let split = match a.partition {
         PartitionName::Single | PartitionName::Faces => return Ok(f - n),
         PartitionName::Uniform => SplitScheme::Uniform,
-        PartitionName::Log => SplitScheme::SelfSimilar,
+        // Equal-error planes are not known before the maps: the logarithmic ones, which they are
+        // for the frustum alone, estimate the shallowest.
+        PartitionName::Log | PartitionName::EqualError => SplitScheme::SelfSimilar,
         PartitionName::Practical => SplitScheme::Practical {
             lambda: a.lambda.unwrap_or(DEFAULT_LAMBDA),
         },
@@ -241,7 +254,7 @@ pub fn partitions(
     a: &SchemeArgs,
 ) -> Result<Vec<PartitionReport>, Error> {
     let r = rule(view, Lights::One(light_dir), a)?;
-    let result = scheme(view, light_dir, r, partition(a), k(a)?)?;
+    let result = scheme(view, light_dir, r, partition(a)?, k(a)?)?;
     Ok(result
         .partitions()
         .iter()
