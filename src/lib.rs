@@ -88,6 +88,7 @@ pub mod geom;
 pub mod maps;
 pub mod measure;
 pub mod numeric;
+pub mod plan;
 #[cfg(feature = "plot")]
 pub mod plot;
 pub mod scheme;
@@ -116,3 +117,8 @@ pub struct ReadmeDoctests;
 #[doc = include_str!("../docs/renderer.md")]
 #[cfg(doctest)]
 pub struct RendererGuideDoctests;
+
+/// docs/planning.md's examples (equal-error splits, texel allocation), compiled as doc-tests.
+#[doc = include_str!("../docs/planning.md")]
+#[cfg(doctest)]
+pub struct PlanningDoctests;
