@@ -101,7 +101,10 @@ fn root_reexports() -> BTreeMap<String, String> {
     let mut map = BTreeMap::new();
     for line in lib.lines() {
         if let Some(rest) = line.strip_prefix("pub use ") {
-            let (module, names) = rest.split_once("::").expect("pub use module::…");
+            // `pub use glam;` (an external crate re-exported whole) names no module of ours.
+            let Some((module, names)) = rest.split_once("::") else {
+                continue;
+            };
             for name in names
                 .trim_end_matches(';')
                 .trim_matches(['{', '}'])
