@@ -9,9 +9,13 @@
 //! The renderer does not cross-fade cascades (the frame's cascades are built with overlap 0, so
 //! their blend band is empty), so there is no "blend band ignored" fault.
 
-use crate::schemes::{Map, Scheme, View};
+use crate::gpu::Gpu;
+use crate::run::{run_full, Sizes};
+use crate::schemes::{setups, Map, Scheme, View};
+use crate::targets::violations;
 use glam::{DMat4, DVec3, DVec4};
 use shadow_aliasing::frame::FrameMap;
+use std::collections::BTreeMap;
 
 /// One deliberate fault.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -203,6 +207,126 @@ impl Fault {
     }
 }
 
+/// The sizes of `render-check --self-test`: 320 × 240, the scenes' own map resolution, 16
+/// shimmer frames.
+pub const SELF_TEST_SIZES: Sizes = Sizes {
+    width: 320,
+    height: 240,
+    res: None,
+    frames: 16,
+    shimmer_points: 1500,
+    fault: None,
+};
+
+/// One run of the self-test: the clean build (`fault` `None`) or one fault, over every built-in
+/// set-up (the thin-caster scene included) and every scheme the fault can change.
+#[derive(Debug, Clone, Default)]
+pub struct SelfTestRow {
+    /// The fault, or `None` for the clean build.
+    pub fault: Option<Fault>,
+    /// Cases run.
+    pub cases: usize,
+    /// Cases that violate a target: for the clean build any; for a fault, one the clean build
+    /// of the same case meets (a fault is caught only by what it changes).
+    pub failing: usize,
+    /// Cases that could not be run (their error), not counted as caught.
+    pub errors: usize,
+    /// Each target counted in `failing` (its name, as [`violations`] words it) with the number of
+    /// cases.
+    pub targets: BTreeMap<String, usize>,
+    /// The first counted violation or error, with its case.
+    pub example: String,
+}
+
+/// The target a line of [`violations`] names (the text before its value).
+pub fn target_name(violation: &str) -> String {
+    let head = violation.split(" = ").next().unwrap_or(violation);
+    head.split(": ").next().unwrap_or(head).to_string()
+}
+
+/// Runs the clean build and every fault at [`SELF_TEST_SIZES`], calling `log` with one line per
+/// run.
+///
+/// # Errors
+/// Only when no built-in set-up exists; a case that fails to run is counted in
+/// [`SelfTestRow::errors`].
+pub fn self_test(gpu: &Gpu, log: impl Fn(&str)) -> Result<Vec<SelfTestRow>, String> {
+    let all = setups();
+    if all.is_empty() {
+        return Err("no built-in set-up".into());
+    }
+    let mut rows = Vec::new();
+    // The targets each clean case violates (none when the clean build passes).
+    let mut clean: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    for fault in std::iter::once(None).chain(Fault::ALL.map(Some)) {
+        let sizes = Sizes {
+            fault,
+            ..SELF_TEST_SIZES
+        };
+        let mut row = SelfTestRow {
+            fault,
+            ..SelfTestRow::default()
+        };
+        let t = std::time::Instant::now();
+        for setup in &all {
+            for scheme in Scheme::ALL {
+                if fault.is_some_and(|f| !f.applies_to(scheme)) {
+                    continue;
+                }
+                row.cases += 1;
+                let case = format!("{}/{}", setup.name, scheme.name());
+                match run_full(gpu, &setup.name, &setup.scene, scheme, sizes) {
+                    Ok(r) => {
+                        let before = clean.get(&case).cloned().unwrap_or_default();
+                        let v: Vec<String> = violations(&r.summary)
+                            .into_iter()
+                            .filter(|x| !before.contains(&target_name(x)))
+                            .collect();
+                        if fault.is_none() {
+                            clean.insert(case.clone(), v.iter().map(|x| target_name(x)).collect());
+                        }
+                        if !v.is_empty() {
+                            row.failing += 1;
+                            for x in &v {
+                                *row.targets.entry(target_name(x)).or_default() += 1;
+                            }
+                            if row.example.is_empty() {
+                                row.example = format!("{case}: {}", v.join("; "));
+                            }
+                        }
+                    }
+                    Err(e) => {
+                        row.errors += 1;
+                        if row.example.is_empty() {
+                            row.example = format!("{case}: error {e}");
+                        }
+                    }
+                }
+            }
+        }
+        log(&format!(
+            "{}: {} of {} cases violate a target{}, {} errors ({:.1} s){}",
+            fault.map_or("clean build", |f| f.name()),
+            row.failing,
+            row.cases,
+            if fault.is_some() {
+                " the clean case meets"
+            } else {
+                ""
+            },
+            row.errors,
+            t.elapsed().as_secs_f64(),
+            if row.example.is_empty() {
+                String::new()
+            } else {
+                format!("; first: {}", row.example)
+            }
+        ));
+        rows.push(row);
+    }
+    Ok(rows)
+}
+
 /// `built` with its warp's n′ multiplied by `k`, refitted to `body` (eye space) as the builders
 /// fit a warp: t spans [−1, 1] over the body's range along the warp axis, s is refitted tightly
 /// about the same centre line, and the depth keeps the original range (scaled conservatively so
@@ -235,7 +359,8 @@ pub fn n_prime_scaled(built: DMat4, body: &[DVec3], k: f64) -> Option<DMat4> {
     let sigma = if w_p >= w_m { 1.0 } else { -1.0 };
     let (w_near, w_far) = if sigma > 0.0 { (w_m, w_p) } else { (w_p, w_m) };
     let ratio = w_far / w_near;
-    if !(ratio > 1.0 + 1e-9) || !ratio.is_finite() {
+    // Also refuses NaN: an orthographic map, or no usable w.
+    if ratio.is_nan() || ratio <= 1.0 + 1e-9 || !ratio.is_finite() {
         return None;
     }
     let nu = 1.0 / (ratio - 1.0);
@@ -258,7 +383,7 @@ pub fn n_prime_scaled(built: DMat4, body: &[DVec3], k: f64) -> Option<DMat4> {
         slo = slo.min(s);
         shi = shi.max(s);
     }
-    if !(shi - slo > 0.0) {
+    if shi - slo <= 0.0 || (shi - slo).is_nan() {
         return None;
     }
     let x2 = (x_pure * 2.0 - w2 * (slo + shi)) / (shi - slo);
@@ -310,6 +435,55 @@ mod tests {
         // An orthographic map has no n′ to scale.
         let u = fit_warp(&body, &ls, NPrime::UNWARPED).unwrap();
         assert!(n_prime_scaled(u, &body, 2.0).is_none());
+    }
+
+    /// On the frame's own warped maps, n′ × 2 doubles the n′ the frame reports: the n′ read back
+    /// from the faulted matrix (w's ratio across the body and the body's extent along the warp
+    /// axis, the gradient of w) is twice `ShadowMatrix::n_prime`.
+    #[test]
+    fn n_prime_doubled_on_frame_maps() {
+        let setup = &crate::schemes::setups()[1];
+        let view = View::new(&setup.scene.camera, setup.scene.light(), 320, 240).unwrap();
+        let mut checked = 0;
+        for scheme in [Scheme::Lispsm, Scheme::Cascades, Scheme::Faces] {
+            let clean = crate::schemes::build(scheme, &view, &setup.scene, 1024, None).unwrap();
+            let fault = Some(Fault::NPrimeDouble);
+            let f = crate::schemes::build(scheme, &view, &setup.scene, 1024, fault).unwrap();
+            for ((m, mf), body) in clean.maps.iter().zip(&f.maps).zip(&clean.bodies) {
+                let n = m.reported.n_prime;
+                if !n.is_finite() {
+                    continue;
+                }
+                let read = |mat: DMat4| {
+                    let w = mat.row(3);
+                    let axis = w.truncate().normalize();
+                    let z: Vec<f64> = body.iter().map(|p| axis.dot(*p)).collect();
+                    let ws: Vec<f64> = body.iter().map(|p| w.dot(p.extend(1.0))).collect();
+                    let (wlo, whi) = ws
+                        .iter()
+                        .fold((f64::INFINITY, 0.0f64), |(a, b), &x| (a.min(x), b.max(x)));
+                    let (zlo, zhi) = z
+                        .iter()
+                        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+                            (a.min(x), b.max(x))
+                        });
+                    (zhi - zlo) / (whi / wlo - 1.0)
+                };
+                let (n1, n2) = (read(m.built), read(mf.built));
+                assert!(
+                    (n1 / n - 1.0).abs() < 1e-6,
+                    "{}: read {n1}, reported {n}",
+                    scheme.name()
+                );
+                assert!(
+                    (n2 / (2.0 * n) - 1.0).abs() < 1e-6,
+                    "{}: {n2} vs 2 × {n}",
+                    scheme.name()
+                );
+                checked += 1;
+            }
+        }
+        assert!(checked >= 3, "{checked}");
     }
 
     /// Every map given to the wrong face: no map keeps its face.

@@ -1,7 +1,11 @@
-//! PNG output: the shaded frame, and the error heat maps (rendered beside predicted, log scale,
-//! viridis, with a colour bar labelled in pixels per texel).
+//! PNG output, every image titled with its case: the shaded frame; the rendered error (log scale,
+//! viridis) beside the ratio rendered / predicted (diverging, ±1 %), each with its colour bar and
+//! the "not compared" swatch; and the close-up of a shadow edge (the jaggies beside the predicted
+//! error, as Lloyd 2006 Fig 1). Text is DejaVu Sans (compiled in), rasterized by `ab_glyph`.
 
+use ab_glyph::{point, Font, FontRef, PxScale, ScaleFont};
 use image::{Rgb, RgbImage};
+use std::sync::OnceLock;
 
 /// matplotlib's viridis at 9 evenly spaced stops (perceptually uniform), interpolated linearly.
 const VIRIDIS: [[f64; 3]; 9] = [
@@ -16,126 +20,296 @@ const VIRIDIS: [[f64; 3]; 9] = [
     [253.0, 231.0, 37.0],
 ];
 
-/// Viridis at `t` ∈ [0, 1].
-pub fn viridis(t: f64) -> Rgb<u8> {
-    let t = t.clamp(0.0, 1.0) * 8.0;
-    let i = (t.floor() as usize).min(7);
+/// A diverging map (Moreland's cool–warm end points, white centre) for the ratio.
+const DIVERGING: [[f64; 3]; 3] = [
+    [59.0, 76.0, 192.0],
+    [247.0, 247.0, 247.0],
+    [180.0, 4.0, 38.0],
+];
+
+/// Pixels not compared (sky, discontinuities, no prediction).
+pub const NOT_COMPARED: Rgb<u8> = Rgb([110, 110, 110]);
+
+/// The log10 range of the error maps: 10⁻² to 10² pixels per texel.
+pub const LOG_RANGE: (f64, f64) = (-2.0, 2.0);
+
+/// Half the range of the ratio map around 1 (the targets' 1 %).
+pub const RATIO_HALF_RANGE: f64 = 0.01;
+
+const WHITE: Rgb<u8> = Rgb([255, 255, 255]);
+const BLACK: Rgb<u8> = Rgb([0, 0, 0]);
+/// Heights of the title bar, the caption row and the legend row; width of a colour-bar column.
+const TITLE: u32 = 30;
+const CAPTION: u32 = 24;
+const LEGEND: u32 = 28;
+const BAR: u32 = 100;
+
+fn ramp(stops: &[[f64; 3]], t: f64) -> Rgb<u8> {
+    let n = stops.len() - 1;
+    let t = t.clamp(0.0, 1.0) * n as f64;
+    let i = (t.floor() as usize).min(n - 1);
     let f = t - i as f64;
-    let c = |k: usize| (VIRIDIS[i][k] * (1.0 - f) + VIRIDIS[i + 1][k] * f).round() as u8;
+    let c = |k: usize| (stops[i][k] * (1.0 - f) + stops[i + 1][k] * f).round() as u8;
     Rgb([c(0), c(1), c(2)])
 }
 
-/// The log10 range of the heat maps: 10⁻² to 10² pixels per texel.
-pub const LOG_RANGE: (f64, f64) = (-2.0, 2.0);
-
-/// 3×5 bitmap glyphs for the colour bar's labels.
-fn glyph(c: char) -> [u8; 5] {
-    match c {
-        '0' => [7, 5, 5, 5, 7],
-        '1' => [2, 6, 2, 2, 7],
-        '2' => [7, 1, 7, 4, 7],
-        '3' => [7, 1, 7, 1, 7],
-        '4' => [5, 5, 7, 1, 1],
-        '5' => [7, 4, 7, 1, 7],
-        '6' => [7, 4, 7, 5, 7],
-        '7' => [7, 1, 1, 1, 1],
-        '8' => [7, 5, 7, 5, 7],
-        '9' => [7, 5, 7, 1, 7],
-        '.' => [0, 0, 0, 0, 2],
-        '-' => [0, 0, 7, 0, 0],
-        'p' => [0, 7, 5, 7, 4],
-        'x' => [0, 5, 2, 5, 0],
-        '/' => [1, 1, 2, 4, 4],
-        't' => [2, 7, 2, 2, 3],
-        'e' => [0, 7, 7, 4, 7],
-        'l' => [6, 2, 2, 2, 7],
-        'r' => [0, 6, 5, 4, 4],
-        'd' => [1, 1, 7, 5, 7],
-        'i' => [2, 0, 2, 2, 2],
-        'c' => [0, 7, 4, 4, 7],
-        'n' => [0, 6, 5, 5, 5],
-        'a' => [0, 7, 1, 7, 7],
-        ' ' => [0; 5],
-        _ => [7, 7, 7, 7, 7],
-    }
+/// Viridis at `t` ∈ [0, 1].
+pub fn viridis(t: f64) -> Rgb<u8> {
+    ramp(&VIRIDIS, t)
 }
 
-/// Draws `text` at `(x, y)` with glyph pixels `scale` wide.
-pub fn text(img: &mut RgbImage, x: u32, y: u32, s: &str, scale: u32, col: Rgb<u8>) {
-    for (k, c) in s.chars().enumerate() {
-        let g = glyph(c);
-        for (r, bits) in g.iter().enumerate() {
-            for b in 0..3u32 {
-                if bits & (4 >> b) != 0 {
-                    for dy in 0..scale {
-                        for dx in 0..scale {
-                            let px = x + (k as u32 * 4 + b) * scale + dx;
-                            let py = y + r as u32 * scale + dy;
-                            if px < img.width() && py < img.height() {
-                                img.put_pixel(px, py, col);
-                            }
-                        }
-                    }
-                }
-            }
-        }
-    }
-}
-
-/// The heat map: rendered error (left), predicted error (right), colour bar (far right).
-/// Pixels not compared are dark grey.
-pub fn heat_map(rendered: &[f64], predicted: &[f64], w: u32, h: u32) -> RgbImage {
-    let bar = 70;
-    let top = 14;
-    let mut img = RgbImage::from_pixel(2 * w + 8 + bar, h + top, Rgb([255, 255, 255]));
+/// The error colour of `e` pixels per texel (log scale, [`LOG_RANGE`]), [`NOT_COMPARED`] when
+/// not a positive number.
+pub fn error_colour(e: f64) -> Rgb<u8> {
     let (lo, hi) = LOG_RANGE;
-    let col = |e: f64| {
-        if e.is_finite() && e > 0.0 {
-            viridis((e.log10() - lo) / (hi - lo))
-        } else {
-            Rgb([60, 60, 60])
+    if e.is_finite() && e > 0.0 {
+        viridis((e.log10() - lo) / (hi - lo))
+    } else {
+        NOT_COMPARED
+    }
+}
+
+/// The ratio colour of `r` (1 white, ±[`RATIO_HALF_RANGE`] saturated), [`NOT_COMPARED`] when not
+/// a number.
+pub fn ratio_colour(r: f64) -> Rgb<u8> {
+    if r.is_finite() {
+        ramp(&DIVERGING, 0.5 + 0.5 * (r - 1.0) / RATIO_HALF_RANGE)
+    } else {
+        NOT_COMPARED
+    }
+}
+
+fn font() -> &'static FontRef<'static> {
+    static FONT: OnceLock<FontRef<'static>> = OnceLock::new();
+    FONT.get_or_init(|| {
+        // The compiled-in font parses (a build problem otherwise, not an input error).
+        FontRef::try_from_slice(dejavu::sans::regular()).expect("DejaVu Sans is a valid font")
+    })
+}
+
+/// Draws `s` with its top left at `(x, y)`, `px` pixels high, anti-aliased over the image.
+pub fn text(img: &mut RgbImage, x: i32, y: i32, px: f32, s: &str, col: Rgb<u8>) {
+    let f = font();
+    let scaled = f.as_scaled(PxScale::from(px));
+    let mut caret = point(x as f32, y as f32 + scaled.ascent());
+    let mut prev = None;
+    for c in s.chars() {
+        let id = scaled.glyph_id(c);
+        if let Some(p) = prev {
+            caret.x += scaled.kern(p, id);
         }
-    };
+        prev = Some(id);
+        let g = id.with_scale_and_position(px, caret);
+        caret.x += scaled.h_advance(id);
+        let Some(o) = f.outline_glyph(g) else {
+            continue;
+        };
+        let b = o.px_bounds();
+        o.draw(|gx, gy, cov| {
+            let (px_, py_) = (b.min.x as i32 + gx as i32, b.min.y as i32 + gy as i32);
+            if px_ < 0 || py_ < 0 || px_ >= img.width() as i32 || py_ >= img.height() as i32 {
+                return;
+            }
+            let p = img.get_pixel_mut(px_ as u32, py_ as u32);
+            for k in 0..3 {
+                p[k] = (f32::from(p[k]) * (1.0 - cov) + f32::from(col[k]) * cov).round() as u8;
+            }
+        });
+    }
+}
+
+/// The width of `s` at `px` pixels high.
+fn text_width(px: f32, s: &str) -> f32 {
+    let scaled = font().as_scaled(PxScale::from(px));
+    s.chars()
+        .map(|c| scaled.h_advance(scaled.glyph_id(c)))
+        .sum()
+}
+
+fn title_bar(img: &mut RgbImage, title: &str) {
+    for y in 0..TITLE {
+        for x in 0..img.width() {
+            img.put_pixel(x, y, Rgb([32, 32, 40]));
+        }
+    }
+    text(img, 8, 6, 17.0, title, WHITE);
+}
+
+/// A vertical colour bar at `(x, y)`, `h` high, with labels at the given fractions (0 bottom).
+fn colour_bar(
+    img: &mut RgbImage,
+    (x, y, h): (u32, u32, u32),
+    colour: impl Fn(f64) -> Rgb<u8>,
+    ticks: &[(f64, &str)],
+) {
+    for dy in 0..h {
+        let t = 1.0 - f64::from(dy) / f64::from(h - 1);
+        for dx in 0..16 {
+            img.put_pixel(x + dx, y + dy, colour(t));
+        }
+    }
+    for &(t, label) in ticks {
+        let ty = y + ((1.0 - t) * f64::from(h - 1)).round() as u32;
+        for dx in 16..21 {
+            img.put_pixel(x + dx, ty, BLACK);
+        }
+        let ly = (ty as i32 - 8).clamp(y as i32, (y + h) as i32 - 16);
+        text(img, (x + 24) as i32, ly, 13.0, label, BLACK);
+    }
+}
+
+/// The "not compared" swatch and its words at `(x, y)`.
+fn not_compared_swatch(img: &mut RgbImage, x: u32, y: u32) {
+    for dy in 0..14 {
+        for dx in 0..22 {
+            img.put_pixel(x + dx, y + dy, NOT_COMPARED);
+        }
+    }
+    text(
+        img,
+        (x + 28) as i32,
+        y as i32 - 2,
+        14.0,
+        "not compared",
+        BLACK,
+    );
+}
+
+/// The shaded frame with a title bar (partitions faintly tinted by the shader).
+pub fn shaded(color: &[[u8; 4]], w: u32, h: u32, title: &str) -> RgbImage {
+    let mut img = RgbImage::from_pixel(w, h + TITLE, WHITE);
     for y in 0..h {
         for x in 0..w {
-            let i = (y * w + x) as usize;
-            img.put_pixel(x, y + top, col(rendered[i]));
-            img.put_pixel(w + 8 + x, y + top, col(predicted[i]));
+            let c = color[(y * w + x) as usize];
+            img.put_pixel(x, y + TITLE, Rgb([c[0], c[1], c[2]]));
         }
     }
-    let black = Rgb([0, 0, 0]);
-    text(&mut img, 2, 2, "rendered", 2, black);
-    text(&mut img, w + 10, 2, "predicted", 2, black);
-    // Colour bar.
-    let x0 = 2 * w + 16;
-    for y in 0..h {
-        let t = 1.0 - f64::from(y) / f64::from(h - 1);
-        for x in x0..x0 + 14 {
-            img.put_pixel(x, y + top, viridis(t));
-        }
-    }
-    for (k, label) in ["0.01", "0.1", "1", "10", "100"].iter().enumerate() {
-        let y = top + ((h - 1) as f64 * (1.0 - k as f64 / 4.0)) as u32;
-        for x in x0 + 14..x0 + 18 {
-            img.put_pixel(x, y, black);
-        }
-        text(
-            &mut img,
-            x0 + 20,
-            y.saturating_sub(5).clamp(top, top + h - 10),
-            label,
-            2,
-            black,
-        );
-    }
-    text(&mut img, x0 - 2, 2, "px/texel", 1, black);
+    title_bar(&mut img, title);
     img
 }
 
-/// The shaded frame as an image.
-pub fn shaded(color: &[[u8; 4]], w: u32, h: u32) -> RgbImage {
-    RgbImage::from_fn(w, h, |x, y| {
-        let c = color[(y * w + x) as usize];
-        Rgb([c[0], c[1], c[2]])
-    })
+const ERROR_TICKS: [(f64, &str); 5] = [
+    (0.0, "0.01"),
+    (0.25, "0.1"),
+    (0.5, "1"),
+    (0.75, "10"),
+    (1.0, "100"),
+];
+
+/// The rendered error (left, pixels per texel, log scale) beside the ratio rendered / predicted
+/// (right, 1 ± 1 %), each with its colour bar, under a title bar; the legend row has the
+/// "not compared" swatch.
+pub fn error_panels(rendered: &[f64], predicted: &[f64], w: u32, h: u32, title: &str) -> RgbImage {
+    let top = TITLE + CAPTION;
+    let mut img = RgbImage::from_pixel(2 * (w + BAR), top + h + LEGEND, WHITE);
+    let x2 = w + BAR;
+    for y in 0..h {
+        for x in 0..w {
+            let i = (y * w + x) as usize;
+            let (r, p) = (rendered[i], predicted[i]);
+            img.put_pixel(x, y + top, error_colour(r));
+            let ratio = if r.is_finite() && p.is_finite() && p > 0.0 {
+                r / p
+            } else {
+                f64::NAN
+            };
+            img.put_pixel(x2 + x, y + top, ratio_colour(ratio));
+        }
+    }
+    title_bar(&mut img, title);
+    text(
+        &mut img,
+        4,
+        TITLE as i32 + 3,
+        15.0,
+        "rendered error, pixels per texel (log)",
+        BLACK,
+    );
+    text(
+        &mut img,
+        x2 as i32 + 4,
+        TITLE as i32 + 3,
+        15.0,
+        "rendered / predicted error",
+        BLACK,
+    );
+    colour_bar(&mut img, (w + 8, top, h), viridis, &ERROR_TICKS);
+    let d = RATIO_HALF_RANGE;
+    let labels = [
+        format!("{:.3}", 1.0 - d),
+        format!("{:.3}", 1.0 - d / 2.0),
+        "1".to_string(),
+        format!("{:.3}", 1.0 + d / 2.0),
+        format!("{:.3}", 1.0 + d),
+    ];
+    let ticks: Vec<(f64, &str)> = labels
+        .iter()
+        .enumerate()
+        .map(|(k, l)| (k as f64 / 4.0, l.as_str()))
+        .collect();
+    colour_bar(
+        &mut img,
+        (x2 + w + 8, top, h),
+        |t| ramp(&DIVERGING, t),
+        &ticks,
+    );
+    not_compared_swatch(&mut img, 6, top + h + 8);
+    text(
+        &mut img,
+        200,
+        (top + h + 6) as i32,
+        14.0,
+        "ratios beyond the bar's ends are drawn at its end colours",
+        BLACK,
+    );
+    img
+}
+
+/// A rectangle of the screen: left, top, width, height (pixels).
+pub type Crop = (u32, u32, u32, u32);
+
+/// The close-up of a shadow edge: the shaded crop (left) beside the predicted error over the same
+/// pixels (right), each pixel drawn `zoom × zoom`, with the error's colour bar, under a title bar.
+pub fn close_up(
+    color: &[[u8; 4]],
+    predicted: &[f64],
+    w: u32,
+    crop: Crop,
+    zoom: u32,
+    title: &str,
+) -> RgbImage {
+    let (cx, cy, cw, ch) = crop;
+    let (pw, ph) = (cw * zoom, ch * zoom);
+    let top = TITLE + CAPTION;
+    let gap = 12;
+    let mut img = RgbImage::from_pixel(2 * pw + gap + BAR, top + ph + LEGEND, WHITE);
+    for y in 0..ph {
+        for x in 0..pw {
+            let i = ((cy + y / zoom) * w + cx + x / zoom) as usize;
+            let c = color[i];
+            img.put_pixel(x, y + top, Rgb([c[0], c[1], c[2]]));
+            img.put_pixel(pw + gap + x, y + top, error_colour(predicted[i]));
+        }
+    }
+    title_bar(&mut img, title);
+    let cap = format!(
+        "shaded, pixels {cx}..{} × {cy}..{}, each drawn {zoom}×{zoom}",
+        cx + cw,
+        cy + ch
+    );
+    text(&mut img, 4, TITLE as i32 + 3, 15.0, &cap, BLACK);
+    text(
+        &mut img,
+        (pw + gap + 4) as i32,
+        TITLE as i32 + 3,
+        15.0,
+        "predicted error, pixels per texel (log)",
+        BLACK,
+    );
+    colour_bar(&mut img, (2 * pw + gap + 8, top, ph), viridis, &ERROR_TICKS);
+    not_compared_swatch(&mut img, pw + gap + 6, top + ph + 8);
+    let note = "an error of e pixels per texel: one texel covers up to e pixels";
+    let nx = (pw as f32 - text_width(14.0, note)).max(0.0) as i32 / 2;
+    text(&mut img, nx, (top + ph + 6) as i32, 14.0, note, BLACK);
+    img
 }

@@ -1,12 +1,16 @@
-//! `render-check [--out DIR] [--scene FILE.json] [--width W] [--height H] [--res N] [--frames N]`:
-//! renders every set-up × scheme, writes per case `<setup>_<scheme>.png` (shaded) and
-//! `<setup>_<scheme>_error.png` (rendered and predicted error), and `summary.json`.
+//! `render-check`: renders every set-up × scheme, writes per case `<setup>_<scheme>.png` (shaded)
+//! and `<setup>_<scheme>_error.png` (rendered error beside rendered/predicted), with `--gallery`
+//! also `<setup>_<scheme>_edge.png` (a shadow edge at 512² texels), and `summary.json`.
+//! `--fault NAME` injects one deliberate fault; `--self-test` runs the clean build and every fault.
+//! `render-check --help` lists the options.
 
+use render_check::faults::{self_test, Fault};
 use render_check::gpu::Gpu;
-use render_check::images::{heat_map, shaded};
-use render_check::run::{run_case, shimmer, Sizes, Summary};
+use render_check::images::{close_up, error_panels, shaded, Crop};
+use render_check::run::{run_case, run_full, Sizes, Summary};
 use render_check::scene::Scene;
 use render_check::schemes::{setups, Scheme, Setup};
+use render_check::targets::violations;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -21,9 +25,39 @@ fn main() -> ExitCode {
     }
 }
 
+/// The map resolution of the gallery's close-ups.
+const EDGE_RES: u32 = 512;
+
+fn help() -> String {
+    let mut s = String::from(
+        "render-check [--out DIR] [--scene FILE.json | --setup NAME] [--width W] [--height H]\n\
+         \x20            [--res N] [--frames N] [--fault NAME] [--gallery]\n\
+         render-check --self-test\n\n\
+         --out DIR        where the images and summary.json go (default render-check-out)\n\
+         --scene FILE     one scene file (docs/rendered.md has the format) instead of the built-in set\n\
+         --setup NAME     only this built-in set-up (overhead, tilted_45, behind_5, front_5,\n\
+         \x20                grazing_10, parallel_1, level_overhead, thin_casters)\n\
+         --width, --height  screen size (default 640 x 480)\n\
+         --res N          texels per map side, overriding the scene's\n\
+         --frames N       frames of the shimmer test (default 64)\n\
+         --gallery        also write <setup>_<scheme>_edge.png: a shadow edge at 512^2 texels\n\
+         --self-test      the clean build and every fault over the built-in set-ups (320 x 240):\n\
+         \x20                exits 0 only when the clean build meets every target and every fault\n\
+         \x20                violates at least one\n\
+         --fault NAME     inject one deliberate fault:\n",
+    );
+    for f in Fault::ALL {
+        s += &format!("                   {:<20} {}\n", f.name(), f.describe());
+    }
+    s
+}
+
 fn real_main() -> Result<(), String> {
     let mut out = PathBuf::from("render-check-out");
     let mut scene_file = None;
+    let mut only = None;
+    let mut gallery = false;
+    let mut self_check = false;
     let mut sizes = Sizes {
         width: 640,
         height: 480,
@@ -34,20 +68,30 @@ fn real_main() -> Result<(), String> {
     };
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
-        let mut val = |name: &str| args.next().ok_or(format!("{name} needs a value"));
-        let num = |v: String, name: &str| v.parse::<u32>().map_err(|e| format!("{name}: {e}"));
+        let mut val = |name: &str| {
+            args.next()
+                .ok_or(format!("{name} needs a value (see --help)"))
+        };
+        let num = |v: String, name: &str| {
+            v.parse::<u32>()
+                .map_err(|e| format!("{name} {v:?}: {e} (a whole number)"))
+        };
         match a.as_str() {
             "--out" => out = PathBuf::from(val("--out")?),
             "--scene" => scene_file = Some(PathBuf::from(val("--scene")?)),
+            "--setup" => only = Some(val("--setup")?),
             "--width" => sizes.width = num(val("--width")?, "--width")?,
             "--height" => sizes.height = num(val("--height")?, "--height")?,
             "--res" => sizes.res = Some(num(val("--res")?, "--res")?),
             "--frames" => sizes.frames = num(val("--frames")?, "--frames")? as usize,
+            "--fault" => sizes.fault = Some(Fault::parse(&val("--fault")?)?),
+            "--gallery" => gallery = true,
+            "--self-test" => self_check = true,
             "--help" | "-h" => {
-                println!("render-check [--out DIR] [--scene FILE.json] [--width W] [--height H] [--res N] [--frames N]");
+                print!("{}", help());
                 return Ok(());
             }
-            other => return Err(format!("unknown argument {other} (see --help)")),
+            other => return Err(format!("unknown argument {other:?} (see --help)")),
         }
     }
     if sizes.width < 16 || sizes.height < 16 {
@@ -56,56 +100,118 @@ fn real_main() -> Result<(), String> {
     if sizes.frames < 2 {
         return Err("--frames must be at least 2".into());
     }
-    let cases: Vec<Setup> = match &scene_file {
-        Some(f) => vec![Setup {
+    if let Some(r) = sizes.res {
+        if !(16..=8192).contains(&r) {
+            return Err(format!("--res {r}: must lie in [16, 8192]"));
+        }
+    }
+    if scene_file.is_some() && only.is_some() {
+        return Err("--scene and --setup exclude each other: give one".into());
+    }
+    if self_check {
+        return run_self_test();
+    }
+    let cases: Vec<Setup> = match (&scene_file, &only) {
+        (Some(f), _) => vec![Setup {
             name: f
                 .file_stem()
                 .map_or("scene".into(), |s| s.to_string_lossy().into_owned()),
             scene: Scene::load(f)?,
         }],
-        None => setups(),
+        (None, Some(name)) => {
+            let all = setups();
+            let names: Vec<String> = all.iter().map(|s| s.name.clone()).collect();
+            let found: Vec<Setup> = all.into_iter().filter(|s| &s.name == name).collect();
+            if found.is_empty() {
+                return Err(format!(
+                    "--setup: unknown set-up {name:?}; one of {}",
+                    names.join(", ")
+                ));
+            }
+            found
+        }
+        (None, None) => setups(),
     };
     std::fs::create_dir_all(&out).map_err(|e| format!("{}: {e}", out.display()))?;
     let start = Instant::now();
     let gpu = Gpu::new()?;
     eprintln!("device: {}", gpu.name);
+    if let Some(f) = sizes.fault {
+        eprintln!("fault injected: {} ({})", f.name(), f.describe());
+    }
     let mut summary = Summary {
         device: gpu.name.clone(),
         cases: Vec::new(),
     };
+    let save = |img: image::RgbImage, name: String| {
+        let p = out.join(&name);
+        img.save(&p).map_err(|e| format!("{}: {e}", p.display()))
+    };
+    let mut violated = 0usize;
     for setup in &cases {
         for scheme in Scheme::ALL {
             let t = Instant::now();
-            let mut r = run_case(&gpu, &setup.name, &setup.scene, scheme, sizes)?;
-            if matches!(scheme, Scheme::Cascades | Scheme::StableCascades) {
-                r.summary.shimmer_changed_fraction =
-                    Some(shimmer(&gpu, &setup.scene, scheme, sizes)?);
-            }
+            let r = run_full(&gpu, &setup.name, &setup.scene, scheme, sizes)?;
             let stem = format!("{}_{}", setup.name, scheme.name());
-            let save = |img: image::RgbImage, name: String| {
-                let p = out.join(&name);
-                img.save(&p).map_err(|e| format!("{}: {e}", p.display()))
-            };
+            let res = sizes.res.unwrap_or(setup.scene.map_resolution);
+            let case = format!(
+                "{} / {}: {res}² texels per map, {} × {}{}",
+                setup.name,
+                scheme.label(),
+                sizes.width,
+                sizes.height,
+                sizes
+                    .fault
+                    .map_or(String::new(), |f| format!(", fault {}", f.name()))
+            );
             save(
-                shaded(&r.color, sizes.width, sizes.height),
+                shaded(&r.color, sizes.width, sizes.height, &case),
                 format!("{stem}.png"),
             )?;
             save(
-                heat_map(
+                error_panels(
                     &r.analysis.rendered_error,
                     &r.analysis.predicted_error,
                     sizes.width,
                     sizes.height,
+                    &case,
                 ),
                 format!("{stem}_error.png"),
             )?;
-            let s = &r.summary;
+            if gallery {
+                let low = Sizes {
+                    res: Some(EDGE_RES),
+                    ..sizes
+                };
+                let e = run_case(&gpu, &setup.name, &setup.scene, scheme, low)?;
+                let crop = edge_crop(&setup.name, sizes.width, sizes.height);
+                let title = format!(
+                    "{} / {}: shadow edge, {EDGE_RES}² texels per map",
+                    setup.name,
+                    scheme.label()
+                );
+                save(
+                    close_up(
+                        &e.color,
+                        &e.analysis.predicted_error,
+                        sizes.width,
+                        crop,
+                        4,
+                        &title,
+                    ),
+                    format!("{stem}_edge.png"),
+                )?;
+            }
             eprintln!(
-                "{stem}: compared {} median {:.2e} p99 {:.2e} misses {} false {} band {:.3} max err {:.3}/{:.3} shimmer {:?} ({}; {:.1} s)",
-                s.pixels_compared, s.median_rel_diff, s.p99_rel_diff, s.interior_misses,
-                s.interior_false_shadows, s.edge_band_mismatch_fraction, s.max_rendered_error,
-                s.max_predicted_error, s.shimmer_changed_fraction, r.diagnostics, t.elapsed().as_secs_f64()
+                "{stem}: {} ({:.1} s)",
+                serde_json::to_string(&r.summary).map_err(|e| e.to_string())?,
+                t.elapsed().as_secs_f64()
             );
+            let v = violations(&r.summary);
+            for line in &v {
+                eprintln!("  TARGET VIOLATED {stem}: {line}");
+            }
+            violated += usize::from(!v.is_empty());
             summary.cases.push(r.summary);
         }
     }
@@ -118,5 +224,77 @@ fn real_main() -> Result<(), String> {
         out.display(),
         start.elapsed().as_secs_f64()
     );
+    if violated > 0 {
+        return Err(format!(
+            "{violated} of {} cases violate a target (the lines TARGET VIOLATED above; \
+             docs/rendered.md lists the targets)",
+            summary.cases.len()
+        ));
+    }
     Ok(())
+}
+
+/// The close-up's rectangle (a quarter of the screen's width and height): for `behind_5` the
+/// tower's shadow edge nearest the camera, else the bottom centre.
+fn edge_crop(setup: &str, w: u32, h: u32) -> Crop {
+    let (cw, ch) = (w / 4, h / 4);
+    let (fx, fy) = match setup {
+        "behind_5" => (0.50, 0.66),
+        _ => (0.375, 0.70),
+    };
+    let x = ((f64::from(w) * fx) as u32).min(w - cw);
+    let y = ((f64::from(h) * fy) as u32).min(h - ch);
+    (x, y, cw, ch)
+}
+
+/// `--self-test`: prints one line per fault (cases run, cases caught, the targets that caught
+/// it) and fails unless the clean build passes and every fault is caught.
+fn run_self_test() -> Result<(), String> {
+    let start = Instant::now();
+    let gpu = Gpu::new()?;
+    eprintln!("device: {}", gpu.name);
+    let rows = self_test(&gpu, |line| eprintln!("{line}"))?;
+    println!("| fault | cases caught / run | targets violated (cases) |");
+    println!("|---|---|---|");
+    let mut ok = true;
+    for r in &rows {
+        let name = r.fault.map_or("none (clean)", |f| f.name());
+        let targets: Vec<String> = r
+            .targets
+            .iter()
+            .map(|(t, n)| format!("{t} ({n})"))
+            .collect();
+        println!(
+            "| {name} | {} / {} | {} |",
+            r.failing,
+            r.cases,
+            if targets.is_empty() {
+                "—".to_string()
+            } else {
+                targets.join(", ")
+            }
+        );
+        let pass = match r.fault {
+            None => r.failing == 0 && r.errors == 0,
+            Some(_) => r.failing > 0,
+        };
+        if !pass {
+            ok = false;
+            eprintln!(
+                "self-test: {} {}",
+                name,
+                if r.fault.is_none() {
+                    format!("violates targets: {}", r.example)
+                } else {
+                    "is not caught by any target (a hole)".into()
+                }
+            );
+        }
+    }
+    eprintln!("self-test took {:.1} s", start.elapsed().as_secs_f64());
+    if ok {
+        Ok(())
+    } else {
+        Err("self-test failed".into())
+    }
 }

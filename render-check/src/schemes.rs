@@ -47,6 +47,18 @@ impl Scheme {
         Scheme::StableCascades,
         Scheme::Faces,
     ];
+    /// The name in images' titles.
+    pub fn label(self) -> &'static str {
+        match self {
+            Scheme::Uniform => "uniform",
+            Scheme::Lispsm => "LiSPSM, n′ = (n + √(f n))/sin γ",
+            Scheme::Minimax => "minimax n′",
+            Scheme::Tsm => "TSM (80 % rule)",
+            Scheme::Cascades => "4 cascades, LiSPSM each",
+            Scheme::StableCascades => "4 stable cascades",
+            Scheme::Faces => "face partitions (LiSPSM, k = 1)",
+        }
+    }
     /// The name in summary.json.
     pub fn name(self) -> &'static str {
         match self {
