@@ -1,36 +1,95 @@
-//! What is measured on the read-back frame: the rendered Jacobian against
-//! `measure::surface_footprint`, and every pixel's shadow against the exact ray cast.
+//! What is measured on the read-back frame (docs/rendered.md, "What is measured"):
+//!
+//! 1. the rendered Jacobian (exact derivatives of the texel image, [`crate::perspective`])
+//!    against `measure::surface_footprint`;
+//! 2. every visible pixel's rendered shadow against the exact ray cast, except within a band of
+//!    the true boundary measured in shadow-map texels ([`shadow_decidable`]);
+//! 3. coverage: every visible pixel inside the clip volume of the map the shader selected;
+//! 4. the rendered perspective error against the frame's reported M_x, M_z, and, in Lloyd 2006's
+//!    overhead case, against its Eq 7–10.
 
 use crate::gpu::FrameOutput;
-use crate::scene::{ray_occluded, Mesh, Scene, FACING};
-use crate::schemes::{Built, View};
-use glam::{DMat2, DVec2, DVec3};
+use crate::perspective::{centred, lloyd2006, one_sided, perspective_error};
+use crate::scene::{ray_occluded, Mesh, Scene, SceneBox, FACING};
+use crate::schemes::{Built, Scheme, View};
+use glam::{DMat2, DMat4, DVec2, DVec3};
+use shadow_aliasing::measure::vertex::vertex_max;
 use shadow_aliasing::measure::{surface_footprint, Footprint, Grids};
+
+/// The contact band, in shadow-map texels: a pixel in a cast shadow is left out of the shadow
+/// comparison when, along the light ray the shader reads, the caster's face lies within this
+/// many texels' depth slope of it (the face's depth change over one texel step along s or t,
+/// the larger; [`crate::gpu::SLOPE_BIAS`] is half of it). There the depth bias lets light leak
+/// onto a receiver behind a caster standing on it.
+pub const CONTACT_TEXELS: f64 = 1.0;
+
+/// A map as the shadow test needs it: world ↔ light clip (depth [0, 1]).
+struct MapGeom {
+    world_to_clip: DMat4,
+    clip_to_world: DMat4,
+}
+
+/// The texel centre is sampled also this far (texels) from it along each map axis: where the
+/// exact boundary passes within it of the centre, the rasterizer's `f32` coverage decides either
+/// way.
+const CENTRE_TOLERANCE: f64 = 0.02;
+
+/// How close to a texel edge (in texels) a pixel's map position must be for the neighbouring
+/// texel to be taken as a lookup the GPU may have made instead (its `f32` position is within
+/// about 10⁻⁴ texel of the exact one).
+const TEXEL_TIE: f64 = 2e-3;
+
+/// Surfaces nearly edge-on to the light (|n·L| below this) are left out of the perspective-error
+/// maxima: dividing out their projection factor amplifies the GPU's rounding without bound.
+pub const EDGE_ON_LIGHT: f64 = 0.05;
+
+/// A rendered maximum counts as reaching the reported one when the body's worst point is within
+/// this many pixel widths of a visible pixel's surface point.
+const VISIBLE_PIXELS: f64 = 3.0;
 
 /// Per-pixel results (for the heat maps) and the case's numbers.
 pub struct Analysis {
+    /// Visible pixels (not sky).
+    pub visible_pixels: usize,
     /// Pixels whose rendered and predicted Jacobians were compared.
     pub pixels_compared: usize,
-    /// Visible pixels excluded because a neighbour is on another surface or map.
-    pub excluded_discontinuity: usize,
+    /// Visible pixels not compared: no two same-surface, same-map neighbours along an axis (a
+    /// discontinuity; counted, never differenced across), or no prediction.
+    pub pixels_not_compared: usize,
     /// Median of ‖J_rendered − J_predicted‖_F / ‖J_predicted‖_F.
     pub median_rel_diff: f64,
     /// 99th percentile of the same.
     pub p99_rel_diff: f64,
-    /// Interior pixels in exact shadow rendered lit.
-    pub interior_misses: usize,
-    /// Interior pixels exactly lit rendered in shadow.
-    pub interior_false_shadows: usize,
-    /// Interior pixels.
-    pub interior_pixels: usize,
-    /// Mismatching fraction of the visible pixels outside the interior (the edge band).
-    pub edge_band_mismatch_fraction: f64,
-    /// Edge-band pixels.
-    pub edge_band_pixels: usize,
-    /// Largest rendered error (pixels per texel, 1/σ_min of the rendered J) over compared pixels.
+    /// Largest rendered error (pixels per texel, 1/σ_min of the rendered J) over compared pixels
+    /// facing the light.
     pub max_rendered_error: f64,
     /// Largest predicted error over the same pixels.
     pub max_predicted_error: f64,
+    /// Visible pixels facing the light that the exact ray cast shadows.
+    pub shadow_pixels: usize,
+    /// Of those, the ones compared (outside the texel band of the boundary).
+    pub shadow_pixels_checked: usize,
+    /// Visible pixels facing the light that the exact ray cast lights.
+    pub lit_pixels: usize,
+    /// Of those, the ones compared.
+    pub lit_pixels_checked: usize,
+    /// Compared pixels in exact shadow rendered lit.
+    pub shadow_misses: usize,
+    /// Compared pixels exactly lit rendered in shadow.
+    pub false_shadows: usize,
+    /// Mismatching fraction of the pixels facing the light that were not compared (the band).
+    pub band_mismatch_fraction: f64,
+    /// Visible pixels outside the clip volume (x, y or depth) of the map the shader selected.
+    pub uncovered_pixels: usize,
+    /// The largest ratio, over maps and over x and z, of the rendered perspective error's maximum
+    /// to the frame's reported maximum (M_x, M_z in pixels per texel).
+    pub frame_error_ratio: f64,
+    /// The smallest such ratio where the body's worst point is visible (`None` where it is not).
+    pub frame_error_ratio_worst_visible: Option<f64>,
+    /// Lloyd 2006's overhead case: the largest relative difference between the rendered m_x, m_z
+    /// of a ground pixel and Eq 7–8 at its depth, and between the rendered maxima and Eq 9–10
+    /// (maps whose near end is the camera's near plane). `None` where the case does not apply.
+    pub lloyd_rel_diff: Option<f64>,
     /// Rendered error per pixel (NaN where not compared).
     pub rendered_error: Vec<f64>,
     /// Predicted error per pixel (NaN where not compared).
@@ -39,23 +98,18 @@ pub struct Analysis {
 
 /// The exact eye-space point seen through pixel `(x, y)` on the plane `(n, p0)` (eye space), or
 /// `None` when the ray is parallel to the plane or the point is behind the eye.
-fn pixel_point(view: &View, w: u32, h: u32, x: u32, y: u32, n: DVec3, p0: DVec3) -> Option<DVec3> {
-    pixel_point_at(view, w, h, f64::from(x) + 0.5, f64::from(y) + 0.5, n, p0)
-}
-
-/// As [`pixel_point`] at the screen position `(u, v)` (pixel units, from the top left).
-fn pixel_point_at(
+pub fn pixel_point(
     view: &View,
     w: u32,
     h: u32,
-    u: f64,
-    v: f64,
+    x: usize,
+    y: usize,
     n: DVec3,
     p0: DVec3,
 ) -> Option<DVec3> {
     let [_, _, t, ta] = view.frustum_params();
-    let xn = 2.0 * u / f64::from(w) - 1.0;
-    let yn = 1.0 - 2.0 * v / f64::from(h);
+    let xn = 2.0 * (x as f64 + 0.5) / f64::from(w) - 1.0;
+    let yn = 1.0 - 2.0 * (y as f64 + 0.5) / f64::from(h);
     let d = DVec3::new(xn * ta, yn * t, -1.0);
     let den = n.dot(d);
     if den.abs() < 1e-12 {
@@ -65,93 +119,337 @@ fn pixel_point_at(
     (s > 0.0).then_some(d * s)
 }
 
-/// Where the exact shadow is sampled inside a pixel besides its centre: a 5 × 5 grid a quarter
-/// of a pixel apart, corners included, so that a shadow a quarter of a pixel wide (the built-in
-/// scene's poles far away) marks the pixel as containing an edge.
-const SUBSAMPLES: [(f64, f64); 24] = {
-    let mut s = [(0.0, 0.0); 24];
-    let mut k = 0;
-    let mut i = 0;
-    while i < 25 {
-        if i != 12 {
-            s[k] = ((i % 5) as f64 * 0.25 - 0.5, (i / 5) as f64 * 0.25 - 0.5);
-            k += 1;
-        }
-        i += 1;
-    }
-    s
-};
-
-/// Squared Euclidean distance transform in 1D (Felzenszwalb & Huttenlocher).
-fn edt_1d(f: &[f64], out: &mut [f64]) {
-    let n = f.len();
-    let mut v = vec![0usize; n];
-    let mut z = vec![0f64; n + 1];
-    let mut k = 0usize;
-    v[0] = 0;
-    z[0] = f64::NEG_INFINITY;
-    z[1] = f64::INFINITY;
-    for q in 1..n {
-        loop {
-            let p = v[k];
-            let s =
-                ((f[q] + (q * q) as f64) - (f[p] + (p * p) as f64)) / (2.0 * (q as f64 - p as f64));
-            if s <= z[k] {
-                if k == 0 {
-                    v[0] = q;
-                    z[0] = f64::NEG_INFINITY;
-                    z[1] = f64::INFINITY;
-                    break;
-                }
-                k -= 1;
-            } else {
-                k += 1;
-                v[k] = q;
-                z[k] = s;
-                z[k + 1] = f64::INFINITY;
-                break;
-            }
-        }
-    }
-    k = 0;
-    for (q, o) in out.iter_mut().enumerate() {
-        while z[k + 1] < q as f64 {
-            k += 1;
-        }
-        let d = q as f64 - v[k] as f64;
-        *o = d * d + f[v[k]];
-    }
+/// The exact state of a visible pixel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Class {
+    /// Sky.
+    Sky,
+    /// Facing the light, not occluded.
+    Lit,
+    /// Facing the light, occluded (a cast shadow).
+    Shadow,
+    /// Turned away from the light (or edge-on): dark whatever the map.
+    Away,
 }
 
-/// Distance from each pixel to the nearest pixel of `set` (Euclidean, pixels); infinite when the
-/// set is empty.
-pub fn distance_to(set: &[bool], w: usize, h: usize) -> Vec<f64> {
-    let big = 1e20;
-    let mut g = vec![0f64; w * h];
-    let mut col = vec![0f64; h];
-    let mut out_col = vec![0f64; h];
-    for x in 0..w {
-        for y in 0..h {
-            col[y] = if set[y * w + x] { 0.0 } else { big };
-        }
-        edt_1d(&col, &mut out_col);
-        for y in 0..h {
-            g[y * w + x] = out_col[y];
-        }
+/// What the first pass finds at one pixel.
+#[derive(Debug, Clone, Copy)]
+struct Pixel {
+    class: Class,
+    /// Exact eye-space point.
+    p: DVec3,
+    /// Eye-space unit normal.
+    n: DVec3,
+    /// The map the shader selected (`usize::MAX` when it named none of the built maps).
+    part: usize,
+    predicted: Option<Footprint>,
+    /// Whether the shadow comparison decides this pixel (outside the texel band).
+    decidable: bool,
+}
+
+const SKY: Pixel = Pixel {
+    class: Class::Sky,
+    p: DVec3::ZERO,
+    n: DVec3::ZERO,
+    part: usize::MAX,
+    predicted: None,
+    decidable: false,
+};
+
+/// The texel-band test of one pixel facing the light (docs/rendered.md, "Shadow correctness").
+///
+/// The shader reads one texel, nearest, and compares the pixel's light depth with the depth
+/// stored there: the first caster face turned away from the light along the light ray through
+/// the texel's centre (second-depth maps). Its verdict is the exact one except where the exact
+/// shadow changes between the pixel and that ray, or a caster stands on the receiver there (the
+/// ray then leaves the caster through its bottom, which is not drawn, or within the depth bias
+/// of the receiver). So a pixel is compared unless, for the centre `c` of the texel its map
+/// position falls in (and of the neighbouring texel when that position is within
+/// [`TEXEL_TIE`] of an edge, where the GPU's `f32` may round across):
+///
+/// - the point `q` where c's light ray meets the pixel's surface plane is inside a box, or its
+///   exact state differs from the pixel's; or
+/// - the point `r` on c's light ray at the pixel's light depth is inside a box other than the
+///   one the pixel lies on, or (outside every box) its exact state differs from the pixel's.
+///
+/// Both points lie within half a texel of the pixel along each map axis: the pixels left out
+/// are those whose texel straddles the exact boundary or a caster's foot, within half a texel
+/// of it along each map axis (on average an eighth of a texel on each side of a boundary). The
+/// light rays are the map's own (its matrix, so a wrong light direction is not excused); the
+/// exact states are ray casts toward the true light.
+#[allow(clippy::too_many_arguments)] // one pixel and its map, each needed once
+fn shadow_decidable(
+    scene: &Scene,
+    map: &MapGeom,
+    res: f64,
+    pw: DVec3,
+    nw: DVec3,
+    light: DVec3,
+    occluded: bool,
+) -> bool {
+    let (wc, inv) = (&map.world_to_clip, &map.clip_to_world);
+    let h = *wc * pw.extend(1.0);
+    if h.w <= 0.0 {
+        return false;
     }
-    let mut row_out = vec![0f64; w];
-    let mut d = vec![0f64; w * h];
-    for y in 0..h {
-        edt_1d(&g[y * w..(y + 1) * w], &mut row_out);
+    let s = (h.x / h.w + 1.0) * 0.5 * res;
+    let t = (h.y / h.w + 1.0) * 0.5 * res;
+    let depth = h.z / h.w;
+    if !(0.0..res).contains(&s) || !(0.0..res).contains(&t) {
+        return false;
+    }
+    let lift = 1e-6 * (1.0 + pw.abs().max_element());
+    // The box the pixel lies on (its point just inside, against the normal).
+    let own = scene
+        .boxes
+        .iter()
+        .position(|b| box_contains(b, pw - nw * lift));
+    let inside = |q: DVec3, skip: Option<usize>| {
+        scene
+            .boxes
+            .iter()
+            .enumerate()
+            .any(|(k, b)| Some(k) != skip && box_contains(b, q))
+    };
+    // The texel-centre ray through map position (a, b): its points at light depths 0 and 1.
+    let ray = |a: f64, b: f64| -> Option<(DVec3, DVec3)> {
+        let (x, y) = (2.0 * a / res - 1.0, 2.0 * b / res - 1.0);
+        let q0 = inv.project_point3(DVec3::new(x, y, 0.0));
+        let q1 = inv.project_point3(DVec3::new(x, y, 1.0));
+        (q0.is_finite() && q1.is_finite()).then_some((q0, q1))
+    };
+    let agrees = |a: f64, b: f64| -> bool {
+        let Some((q0, q1)) = ray(a, b) else {
+            return false;
+        };
+        let d = q1 - q0;
+        let den = d.dot(nw);
+        if den.abs() < 1e-300 {
+            return false;
+        }
+        // q: on the pixel's plane (lifted off it as the ray cast lifts the pixel).
+        let q = q0 + d * ((pw - q0).dot(nw) / den) + nw * lift;
+        if inside(q, None) || ray_occluded(scene, q, DVec3::ZERO, light) != occluded {
+            return false;
+        }
+        // r: at the pixel's light depth.
+        let (x, y) = (2.0 * a / res - 1.0, 2.0 * b / res - 1.0);
+        let r = inv.project_point3(DVec3::new(x, y, depth));
+        if !r.is_finite() {
+            return false;
+        }
+        if own.is_some_and(|k| box_contains(&scene.boxes[k], r)) {
+            return true;
+        }
+        if inside(r, own) || ray_occluded(scene, r, DVec3::ZERO, light) != occluded {
+            return false;
+        }
+        // The depth bias: the caster face the ray from r meets first must lie farther toward
+        // the light than its slope-scaled bias, or the stored depth passes r.
+        match first_face(scene, r, light) {
+            Some((e, n)) if occluded => {
+                // One texel's step along s and t at r's light depth (world), and the face's
+                // depth change over it: (Δ·n)/(L·n) along the light.
+                let ds = inv.project_point3(DVec3::new(x + 2.0 / res, y, depth)) - r;
+                let dt = inv.project_point3(DVec3::new(x, y + 2.0 / res, depth)) - r;
+                let slope = ds.dot(n).abs().max(dt.dot(n).abs()) / n.dot(light).abs();
+                e > CONTACT_TEXELS * slope
+            }
+            _ => true,
+        }
+    };
+    let centres = |v: f64| -> ([f64; 2], usize) {
+        let c = v.floor() + 0.5;
+        let f = v - v.floor();
+        if f < TEXEL_TIE {
+            ([c, c - 1.0], 2)
+        } else if f > 1.0 - TEXEL_TIE {
+            ([c, c + 1.0], 2)
+        } else {
+            ([c, c], 1)
+        }
+    };
+    let (cs, ns) = centres(s);
+    let (ct, nt) = centres(t);
+    let e = CENTRE_TOLERANCE;
+    cs[..ns].iter().all(|&a| {
+        ct[..nt].iter().all(|&b| {
+            [(0.0, 0.0), (e, 0.0), (-e, 0.0), (0.0, e), (0.0, -e)]
+                .iter()
+                .all(|&(da, db)| agrees(a + da, b + db))
+        })
+    })
+}
+
+/// The first box face the ray from `x` toward the light (against `light`, the direction it
+/// travels) meets from outside: its distance and outward world normal (a face turned away from
+/// the light: the one a second-depth map stores).
+fn first_face(scene: &Scene, x: DVec3, light: DVec3) -> Option<(f64, DVec3)> {
+    let mut best: Option<(f64, DVec3)> = None;
+    for b in &scene.boxes {
+        let (c, rot) = (b.centre(), b.rotation());
+        let (o, d) = if b.is_rotated() {
+            (c + rot.inverse() * (x - c), rot.inverse() * -light)
+        } else {
+            (x, -light)
+        };
+        let (mut t0, mut t1, mut axis) = (f64::NEG_INFINITY, f64::INFINITY, None);
+        let mut miss = false;
+        for k in 0..3 {
+            if d[k].abs() < 1e-300 {
+                miss |= o[k] < b.min[k] || o[k] > b.max[k];
+                continue;
+            }
+            let (a, e) = ((b.min[k] - o[k]) / d[k], (b.max[k] - o[k]) / d[k]);
+            let (a, e) = if a < e { (a, e) } else { (e, a) };
+            if a > t0 {
+                t0 = a;
+                axis = Some(k);
+            }
+            t1 = t1.min(e);
+        }
+        let Some(k) = axis else { continue };
+        if miss || t0 > t1 || t0 <= 0.0 || best.is_some_and(|(t, _)| t <= t0) {
+            continue;
+        }
+        let mut n = DVec3::ZERO;
+        n[k] = -d[k].signum();
+        best = Some((t0, if b.is_rotated() { rot * n } else { n }));
+    }
+    best
+}
+
+/// Whether the world point `q` lies in the (possibly rotated) box `b`, boundary included.
+fn box_contains(b: &SceneBox, q: DVec3) -> bool {
+    let l = if b.is_rotated() {
+        let c = b.centre();
+        c + b.rotation().inverse() * (q - c)
+    } else {
+        q
+    };
+    (0..3).all(|k| l[k] >= b.min[k] && l[k] <= b.max[k])
+}
+
+/// The first pass over rows `rows` (exact points, classes, predictions, the texel band).
+#[allow(clippy::too_many_arguments)] // the frame's inputs, each needed once
+fn first_pass(
+    out: &FrameOutput,
+    view: &View,
+    scene: &Scene,
+    mesh: &Mesh,
+    built: &Built,
+    grids: Grids,
+    (width, height, res): (u32, u32, u32),
+    rows: std::ops::Range<usize>,
+) -> Vec<Pixel> {
+    let w = width as usize;
+    let eye_to_world = view.world_to_eye.inverse();
+    let maps: Vec<MapGeom> = built
+        .maps
+        .iter()
+        .map(|m| {
+            let wc = m.gpu * view.world_to_eye;
+            MapGeom {
+                world_to_clip: wc,
+                clip_to_world: wc.inverse(),
+            }
+        })
+        .collect();
+    let mut px = Vec::with_capacity(rows.len() * w);
+    for y in rows {
         for x in 0..w {
-            d[y * w + x] = if row_out[x] >= big {
-                f64::INFINITY
-            } else {
-                row_out[x].sqrt()
+            let i = y * w + x;
+            let id = out.id[i];
+            if id == 0 {
+                px.push(SKY);
+                continue;
+            }
+            let surf = mesh.surfaces[(id - 1) as usize];
+            let ne = view.world_to_eye.transform_vector3(surf.normal);
+            let pe0 = view.world_to_eye.transform_point3(surf.point);
+            let Some(p) = pixel_point(view, width, height, x, y, ne, pe0) else {
+                px.push(SKY);
+                continue;
             };
+            let k = out.texel[i][2];
+            let part = if k >= 0.0 && (k as usize) < built.maps.len() {
+                k as usize
+            } else {
+                usize::MAX
+            };
+            let predicted = built
+                .maps
+                .get(part)
+                .and_then(|m| surface_footprint(&view.proj, &m.built, grids, p, ne).ok());
+            let pw = eye_to_world.transform_point3(p);
+            let facing = surf.normal.dot(-view.light_world) > FACING;
+            let (class, decidable) = if facing {
+                let occ = ray_occluded(scene, pw, surf.normal, view.light_world);
+                let decidable = maps.get(part).is_some_and(|m| {
+                    shadow_decidable(
+                        scene,
+                        m,
+                        f64::from(res),
+                        pw,
+                        surf.normal,
+                        view.light_world,
+                        occ,
+                    )
+                });
+                (if occ { Class::Shadow } else { Class::Lit }, decidable)
+            } else {
+                (Class::Away, false)
+            };
+            px.push(Pixel {
+                class,
+                p,
+                n: ne,
+                part,
+                predicted,
+                decidable,
+            });
         }
     }
-    d
+    px
+}
+
+/// The widest stencil step, pixels: the three samples of a derivative are at most this far
+/// apart on each side (centred) or 2 × this on one side.
+pub const STENCIL: isize = 4;
+
+/// The rendered Jacobian at pixel `i` from exact three-sample derivatives along the row and the
+/// column ([`crate::perspective`]), or `None` when an axis has no two neighbours on the pixel's
+/// surface and map.
+fn rendered_jacobian(out: &FrameOutput, w: usize, h: usize, i: usize) -> Option<DMat2> {
+    let (x, y) = ((i % w) as isize, (i / w) as isize);
+    let same = |dx: isize, dy: isize| {
+        let (xx, yy) = (x + dx, y + dy);
+        if xx < 0 || yy < 0 || xx >= w as isize || yy >= h as isize {
+            return None;
+        }
+        let j = yy as usize * w + xx as usize;
+        (out.id[j] == out.id[i] && out.texel[j][2] == out.texel[i][2]).then_some(j)
+    };
+    let t = |j: usize| DVec2::new(f64::from(out.texel[j][0]), f64::from(out.texel[j][1]));
+    // The widest step (up to STENCIL pixels) whose samples lie on the pixel's surface and map:
+    // the formulas are exact at any step, and a wider one divides the GPU's f32 rounding by it.
+    let axis = |dx: isize, dy: isize| -> Option<DVec2> {
+        for k in (1..=STENCIL).rev() {
+            if let (Some(m), Some(p)) = (same(-k * dx, -k * dy), same(k * dx, k * dy)) {
+                return Some(centred(t(m), t(i), t(p)) / k as f64);
+            }
+        }
+        for k in (1..=STENCIL).rev() {
+            if let (Some(p1), Some(p2)) = (same(k * dx, k * dy), same(2 * k * dx, 2 * k * dy)) {
+                return Some(one_sided(t(i), t(p1), t(p2), true) / k as f64);
+            }
+            if let (Some(m1), Some(m2)) = (same(-k * dx, -k * dy), same(-2 * k * dx, -2 * k * dy)) {
+                return Some(one_sided(t(i), t(m1), t(m2), false) / k as f64);
+            }
+        }
+        None
+    };
+    Some(DMat2::from_cols(axis(1, 0)?, axis(0, 1)?))
 }
 
 fn rel_diff(a: DMat2, b: DMat2) -> f64 {
@@ -177,7 +475,23 @@ fn percentile(sorted: &[f64], q: f64) -> f64 {
     sorted[i]
 }
 
-/// Analyses one frame.
+/// How far outside the clip volume (texels along s and t; depth) the GPU's `f32` position of a
+/// pixel may fall and still count as covered: a receiver on the focus body's boundary (the
+/// ground under an overhead light is all at depth 1) lands there within a few `f32` ulps.
+pub const COVERAGE_TOLERANCE: (f64, f64) = (1e-3, 1e-6);
+
+/// Whether the pixel's light clip position in the map it selected lies in the clip volume: x, y
+/// within the map (texel coordinates in [0, res]) and depth in [0, 1], to
+/// [`COVERAGE_TOLERANCE`].
+fn covered(out: &FrameOutput, i: usize, res: f64) -> bool {
+    let [s, t, _, _] = out.texel[i];
+    let d = out.depth[i];
+    let (et, ed) = COVERAGE_TOLERANCE;
+    let inside = |v: f32, hi: f64, e: f64| (-e..=hi + e).contains(&f64::from(v));
+    inside(s, res, et) && inside(t, res, et) && inside(d, 1.0, ed)
+}
+
+/// Analyses one frame of `scheme`.
 ///
 /// # Errors
 /// When nothing could be compared (an empty result is not a success).
@@ -188,117 +502,128 @@ pub fn analyse(
     scene: &Scene,
     mesh: &Mesh,
     built: &Built,
+    scheme: Scheme,
     res: u32,
     width: u32,
     height: u32,
 ) -> Result<Analysis, String> {
     let (w, h) = (width as usize, height as usize);
     let grids = Grids::new(width, height, res, res).map_err(|e| e.to_string())?;
-    let eye_to_world = view.world_to_eye.inverse();
+    // The first pass (a ray cast and its texel band per pixel) in two halves.
+    let sizes = (width, height, res);
+    let mid = h / 2;
+    let px: Vec<Pixel> = std::thread::scope(|sc| {
+        let a = sc.spawn(|| first_pass(out, view, scene, mesh, built, grids, sizes, 0..mid));
+        let b = first_pass(out, view, scene, mesh, built, grids, sizes, mid..h);
+        let mut a = a.join().expect("first pass");
+        a.extend(b);
+        a
+    });
     let n = w * h;
-    let mut predicted: Vec<Option<Footprint>> = vec![None; n];
-    let mut exact_lit = vec![false; n];
-    let mut visible = vec![false; n];
-    let mut lights = vec![false; n];
-    // Whether the exact shadow changes inside the pixel ([`SUBSAMPLES`] on the pixel's plane
-    // against its centre): a shadow thinner than a pixel is never interior.
-    let mut mixed = vec![false; n];
-    for y in 0..h {
-        for x in 0..w {
-            let i = y * w + x;
-            let id = out.id[i];
-            if id == 0 {
-                continue;
-            }
-            let surf = mesh.surfaces[(id - 1) as usize];
-            let ne = view.world_to_eye.transform_vector3(surf.normal);
-            let pe0 = view.world_to_eye.transform_point3(surf.point);
-            let Some(p) = pixel_point(view, width, height, x as u32, y as u32, ne, pe0) else {
-                continue;
-            };
-            visible[i] = true;
-            let part = out.texel[i][2] as usize;
-            if let Some(map) = built.maps.get(part) {
-                predicted[i] = surface_footprint(&view.proj, &map.built, grids, p, ne).ok();
-            }
-            let pw = eye_to_world.transform_point3(p);
-            let facing = surf.normal.dot(-view.light_world) > FACING;
-            lights[i] = facing;
-            exact_lit[i] = facing && !ray_occluded(scene, pw, surf.normal, view.light_world);
-            if facing {
-                let occ = !exact_lit[i];
-                mixed[i] = SUBSAMPLES.iter().any(|&(dx, dy)| {
-                    pixel_point_at(
-                        view,
-                        width,
-                        height,
-                        x as f64 + 0.5 + dx,
-                        y as f64 + 0.5 + dy,
-                        ne,
-                        pe0,
-                    )
-                    .map(|q| {
-                        ray_occluded(
-                            scene,
-                            eye_to_world.transform_point3(q),
-                            surf.normal,
-                            view.light_world,
-                        )
-                    })
-                    .is_some_and(|o| o != occ)
-                });
-            }
-        }
-    }
-    // Rendered Jacobians: central differences where the 3×3 neighbourhood is one surface and
-    // one map.
+    let nmaps = built.maps.len();
     let mut rels = Vec::new();
     let mut rendered_error = vec![f64::NAN; n];
     let mut predicted_error = vec![f64::NAN; n];
-    let mut excluded = 0usize;
+    let (mut visible, mut not_compared) = (0usize, 0usize);
     let (mut max_r, mut max_p) = (0.0f64, 0.0f64);
-    for y in 0..h {
-        for x in 0..w {
-            let i = y * w + x;
-            if !visible[i] {
-                continue;
+    // Per map: the rendered maxima of m_x, m_z.
+    let mut rendered_m = vec![(0.0f64, 0.0f64); nmaps];
+    // Lloyd's overhead case.
+    let lloyd = lloyd_applies(view, built, scheme);
+    let mut lloyd_diff = 0.0f64;
+    let mut ground_m = vec![(0.0f64, 0.0f64); nmaps];
+    let (mut shadow, mut shadow_checked, mut lit, mut lit_checked) = (0, 0, 0, 0);
+    let (mut misses, mut falses, mut band, mut band_mis, mut uncovered) = (0, 0, 0, 0, 0);
+    let debug = std::env::var_os("RENDER_CHECK_DEBUG").is_some();
+    for (i, q) in px.iter().enumerate() {
+        if q.class == Class::Sky {
+            continue;
+        }
+        visible += 1;
+        if q.part == usize::MAX || !covered(out, i, f64::from(res)) {
+            uncovered += 1;
+            if debug && uncovered < 6 {
+                eprintln!(
+                    "  uncovered ({}, {}): texel {:?} depth {} surface {}",
+                    i % w,
+                    i / w,
+                    out.texel[i],
+                    out.depth[i],
+                    out.id[i] - 1
+                );
             }
-            let same = x > 0
-                && y > 0
-                && x + 1 < w
-                && y + 1 < h
-                && (0..3).all(|dy| {
-                    (0..3).all(|dx| {
-                        let j = (y + dy - 1) * w + (x + dx - 1);
-                        out.id[j] == out.id[i] && out.texel[j][2] == out.texel[i][2]
-                    })
-                });
-            let Some(fp) = predicted[i] else {
-                excluded += 1;
-                continue;
-            };
-            if !same {
-                excluded += 1;
-                continue;
+        }
+        // Shadows.
+        let rendered_lit = out.texel[i][3] > 0.5;
+        match q.class {
+            Class::Lit | Class::Shadow => {
+                let exact_lit = q.class == Class::Lit;
+                if exact_lit {
+                    lit += 1;
+                } else {
+                    shadow += 1;
+                }
+                if q.decidable {
+                    if exact_lit {
+                        lit_checked += 1;
+                        falses += usize::from(!rendered_lit);
+                    } else {
+                        shadow_checked += 1;
+                        misses += usize::from(rendered_lit);
+                    }
+                    if debug && exact_lit != rendered_lit {
+                        eprintln!(
+                            "  shadow mismatch at ({}, {}) eye {:?}: surface {} exact_lit {exact_lit} part {} texel {:?}",
+                            i % w, i / w, q.p, out.id[i] - 1, q.part, out.texel[i]
+                        );
+                        debug_pixel(scene, view, built, res, q);
+                    }
+                } else {
+                    band += 1;
+                    band_mis += usize::from(exact_lit != rendered_lit);
+                }
             }
-            let t = |j: usize| DVec2::new(f64::from(out.texel[j][0]), f64::from(out.texel[j][1]));
-            let c0 = (t(i + 1) - t(i - 1)) * 0.5;
-            let c1 = (t(i + w) - t(i - w)) * 0.5;
-            let jr = DMat2::from_cols(c0, c1);
-            let r = rel_diff(jr, fp.jacobian);
-            if !r.is_finite() {
-                excluded += 1;
-                continue;
-            }
-            rels.push(r);
-            let (er, ep) = (error_of(jr), error_of(fp.jacobian));
-            rendered_error[i] = er;
-            predicted_error[i] = ep;
-            // The maxima over surfaces the light can reach (a face turned away or edge-on is dark
-            // whatever its texels; edge-on, its texels are unbounded).
-            if lights[i] && er.is_finite() && ep.is_finite() {
-                max_r = max_r.max(er);
-                max_p = max_p.max(ep);
+            _ => {}
+        }
+        // Jacobians.
+        let (Some(fp), Some(jr)) = (q.predicted, rendered_jacobian(out, w, h, i)) else {
+            not_compared += 1;
+            continue;
+        };
+        let r = rel_diff(jr, fp.jacobian);
+        if !r.is_finite() {
+            not_compared += 1;
+            continue;
+        }
+        rels.push(r);
+        let (er, ep) = (error_of(jr), error_of(fp.jacobian));
+        rendered_error[i] = er;
+        predicted_error[i] = ep;
+        // The maxima over surfaces the light can reach (a face turned away or edge-on is dark
+        // whatever its texels; edge-on, its texels are unbounded).
+        if q.class != Class::Away && er.is_finite() && ep.is_finite() {
+            max_r = max_r.max(er);
+            max_p = max_p.max(ep);
+        }
+        // The perspective error, projection factor divided out.
+        if q.n.dot(view.light_eye).abs() >= EDGE_ON_LIGHT {
+            if let Some((mx, mz)) = perspective_error(view, width, height, jr, q.p, q.n) {
+                let m = &mut rendered_m[q.part];
+                *m = (m.0.max(mx), m.1.max(mz));
+                if let (Some(l), 1) = (&lloyd, out.id[i]) {
+                    let d = l.pixel_diff(q.part, -q.p.z, mx, mz, width, height, res);
+                    if debug && d > 0.005 {
+                        eprintln!(
+                            "  lloyd ({}, {}) z {} m {mx} {mz} diff {d}",
+                            i % w,
+                            i / w,
+                            -q.p.z
+                        );
+                    }
+                    lloyd_diff = lloyd_diff.max(d);
+                    let g = &mut ground_m[q.part];
+                    *g = (g.0.max(mx), g.1.max(mz));
+                }
             }
         }
     }
@@ -306,102 +631,234 @@ pub fn analyse(
         return Err("no pixel could be compared (empty frame?)".into());
     }
     rels.sort_by(f64::total_cmp);
-    // Shadow correctness. A pixel is interior when no pixel within 2 of its texel footprints
-    // (plus one pixel for where the exact boundary lies between pixel centres) differs from it in
-    // surface or in exact class (lit, in cast shadow, turned away from the light), and none is sky
-    // or off screen: the surroundings of the texel on the pixel's own surface are all of the
-    // pixel's exact state.
-    let class: Vec<u8> = (0..n)
-        .map(|i| {
-            if !visible[i] {
-                0
-            } else if exact_lit[i] {
-                1
-            } else if lights[i] {
-                2
-            } else {
-                3
-            }
-        })
-        .collect();
-    let boundary: Vec<bool> = (0..n)
-        .map(|i| {
-            let (x, y) = (i % w, i / w);
-            let key = (out.id[i], class[i]);
-            class[i] == 0
-                || mixed[i]
-                || x == 0
-                || y == 0
-                || x + 1 == w
-                || y + 1 == h
-                || [i - 1, i + 1, i - w, i + w]
-                    .iter()
-                    .any(|&j| (out.id[j], class[j]) != key)
-        })
-        .collect();
-    let dist_b = distance_to(&boundary, w, h);
-    let (mut misses, mut falses, mut interior, mut band, mut band_mis) = (0, 0, 0, 0, 0);
-    for y in 0..h {
-        for x in 0..w {
-            let i = y * w + x;
-            if !visible[i] {
-                continue;
-            }
-            let dist = dist_b[i];
-            let reach = predicted[i]
-                .and_then(|f| f.error().ok())
-                .map_or(f64::INFINITY, |e| 2.0 * e + 1.0);
-            let rendered_lit = out.texel[i][3] > 0.5;
-            if dist > reach {
-                interior += 1;
-                if !exact_lit[i] && rendered_lit {
-                    misses += 1;
-                }
-                if exact_lit[i] && !rendered_lit {
-                    falses += 1;
-                }
-                if exact_lit[i] != rendered_lit && std::env::var_os("RENDER_CHECK_DEBUG").is_some()
-                {
-                    let id = out.id[i] - 1;
-                    let sn = mesh.surfaces[id as usize].normal;
-                    let pw = {
-                        let ne = view.world_to_eye.transform_vector3(sn);
-                        let pe0 = view
-                            .world_to_eye
-                            .transform_point3(mesh.surfaces[id as usize].point);
-                        pixel_point(view, width, height, x as u32, y as u32, ne, pe0)
-                            .map(|p| eye_to_world.transform_point3(p))
-                    };
-                    eprintln!(
-                        "  interior mismatch at ({x}, {y}) world {pw:?}: surface {id} n {sn} n.l {:.4} exact_lit {} part {} dist {dist:.1} reach {reach:.2} texel {:?}",
-                        sn.dot(-view.light_world), exact_lit[i], out.texel[i][2], out.texel[i]
-                    );
-                }
-            } else {
-                band += 1;
-                if exact_lit[i] != rendered_lit {
-                    band_mis += 1;
-                }
-            }
-        }
+    let (ratio, worst) = frame_ratios(&px, view, built, &rendered_m, (width, height, res));
+    if let Some(l) = &lloyd {
+        lloyd_diff = lloyd_diff.max(l.maxima_diff(&ground_m, width, height, res));
     }
     Ok(Analysis {
+        visible_pixels: visible,
         pixels_compared: rels.len(),
-        excluded_discontinuity: excluded,
+        pixels_not_compared: not_compared,
         median_rel_diff: percentile(&rels, 0.5),
         p99_rel_diff: percentile(&rels, 0.99),
-        interior_misses: misses,
-        interior_false_shadows: falses,
-        interior_pixels: interior,
-        edge_band_mismatch_fraction: if band > 0 {
+        max_rendered_error: max_r,
+        max_predicted_error: max_p,
+        shadow_pixels: shadow,
+        shadow_pixels_checked: shadow_checked,
+        lit_pixels: lit,
+        lit_pixels_checked: lit_checked,
+        shadow_misses: misses,
+        false_shadows: falses,
+        band_mismatch_fraction: if band > 0 {
             band_mis as f64 / band as f64
         } else {
             0.0
         },
-        edge_band_pixels: band,
-        max_rendered_error: max_r,
-        max_predicted_error: max_p,
+        uncovered_pixels: uncovered,
+        frame_error_ratio: ratio,
+        frame_error_ratio_worst_visible: worst,
+        lloyd_rel_diff: lloyd.map(|_| lloyd_diff),
         rendered_error,
         predicted_error,
     })
+}
+
+/// The frame's reported maxima against the rendered ones: the largest rendered/reported ratio
+/// over maps and over x and z, and the smallest where the body's worst point is visible.
+fn frame_ratios(
+    px: &[Pixel],
+    view: &View,
+    built: &Built,
+    rendered_m: &[(f64, f64)],
+    (width, height, res): (u32, u32, u32),
+) -> (f64, Option<f64>) {
+    let to_pixels = f64::from(height) / f64::from(res);
+    let tan = view.frustum.tan_half_fov();
+    let (mut ratio, mut worst) = (0.0f64, None::<f64>);
+    for (k, map) in built.maps.iter().enumerate() {
+        let reported = (
+            map.reported.max_mx * to_pixels,
+            map.reported.max_mz * to_pixels,
+        );
+        let got = rendered_m[k];
+        ratio = ratio.max(got.0 / reported.0).max(got.1 / reported.1);
+        // Each body vertex's m_x, m_z under the map as rendered; the worst ones, and whether any
+        // of them is a visible surface point.
+        let body = built.bodies.get(k).map_or(&[][..], Vec::as_slice);
+        let per: Vec<(DVec3, f64, f64)> = body
+            .iter()
+            .filter_map(|&v| {
+                vertex_max(&map.built, view.light_eye, tan, &[v]).map(|e| (v, e.max_mx, e.max_mz))
+            })
+            .collect();
+        for (axis, rep, got) in [(0, reported.0, got.0), (1, reported.1, got.1)] {
+            let top = per
+                .iter()
+                .map(|e| if axis == 0 { e.1 } else { e.2 })
+                .fold(0.0f64, f64::max);
+            let seen = per.iter().any(|e| {
+                let m = if axis == 0 { e.1 } else { e.2 };
+                m >= top * (1.0 - 1e-6) && visible_point(px, view, width, height, e.0)
+            });
+            if seen {
+                let r = got / rep;
+                worst = Some(worst.map_or(r, |w| w.min(r)));
+            }
+        }
+    }
+    (ratio, worst)
+}
+
+/// Whether the eye-space point `v` is (within [`VISIBLE_PIXELS`] pixel widths) the surface point
+/// of a visible pixel.
+fn visible_point(px: &[Pixel], view: &View, width: u32, height: u32, v: DVec3) -> bool {
+    let c = view.proj * v.extend(1.0);
+    if c.w <= 0.0 {
+        return false;
+    }
+    let (w, h) = (f64::from(width), f64::from(height));
+    let u = (c.x / c.w + 1.0) * 0.5 * w;
+    let r = (1.0 - c.y / c.w) * 0.5 * h;
+    let reach = VISIBLE_PIXELS * 2.0 * (-v.z) * view.frustum.tan_half_fov() / h;
+    let span = VISIBLE_PIXELS.ceil() as isize;
+    for dy in -span..=span {
+        for dx in -span..=span {
+            let (x, y) = (u.floor() as isize + dx, r.floor() as isize + dy);
+            if x < 0 || y < 0 || x >= width as isize || y >= height as isize {
+                continue;
+            }
+            let q = px[y as usize * width as usize + x as usize];
+            if q.class != Class::Sky && (q.p - v).length() <= reach {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// Lloyd 2006's overhead case, where it applies: the camera level, the light straight down
+/// (γ = 90°, light-space z along the view), a scheme whose maps are Lloyd's warps (uniform,
+/// LiSPSM, minimax n′, z-partitions of LiSPSM), and every map's focus body with the footprint of
+/// its frustum slice (its depth range `split`, its width z tan θ_x at both ends).
+struct Lloyd {
+    /// Per map: near, far, n′.
+    maps: Vec<(f64, f64, f64)>,
+    tan: f64,
+    near: f64,
+}
+
+fn lloyd_applies(view: &View, built: &Built, scheme: Scheme) -> Option<Lloyd> {
+    if !matches!(
+        scheme,
+        Scheme::Uniform | Scheme::Lispsm | Scheme::Minimax | Scheme::Cascades
+    ) || (view.light_eye - DVec3::NEG_Y).length() > 1e-9
+    {
+        return None;
+    }
+    let tan = view.frustum.tan_half_fov();
+    let tan_x = tan * view.frustum.aspect();
+    let mut maps = Vec::new();
+    for (k, m) in built.maps.iter().enumerate() {
+        let (n, f) = (m.near, m.far);
+        let body = built.bodies.get(k)?;
+        let full = |z: f64| {
+            let wide = body
+                .iter()
+                .filter(|v| (-v.z - z).abs() <= 1e-9 * z)
+                .map(|v| v.x.abs())
+                .fold(0.0f64, f64::max);
+            (wide - z * tan_x).abs() <= 1e-9 * z * tan_x
+        };
+        if !(full(n) && full(f)) {
+            return None;
+        }
+        maps.push((n, f, m.reported.n_prime));
+    }
+    Some(Lloyd {
+        maps,
+        tan,
+        near: view.frustum.near(),
+    })
+}
+
+impl Lloyd {
+    /// The relative difference of a ground pixel's rendered (m_x, m_z) at depth `z` in map `k`
+    /// from Eq 7–8.
+    #[allow(clippy::too_many_arguments)] // one pixel's values and the sizes
+    fn pixel_diff(
+        &self,
+        k: usize,
+        z: f64,
+        mx: f64,
+        mz: f64,
+        width: u32,
+        height: u32,
+        res: u32,
+    ) -> f64 {
+        let (n, f, np) = self.maps[k];
+        let r = f64::from(res);
+        let ex = lloyd2006::m_x(z, n, f, np, f64::from(width), r);
+        let ez = lloyd2006::m_z(z, n, f, np, self.tan, f64::from(height), r);
+        (mx / ex - 1.0).abs().max((mz / ez - 1.0).abs())
+    }
+
+    /// The relative difference of the rendered maxima over the ground from Eq 9–10, for the maps
+    /// whose near end is the camera's near plane (where the level set-up shows the ground).
+    fn maxima_diff(&self, ground: &[(f64, f64)], width: u32, height: u32, res: u32) -> f64 {
+        let mut d = 0.0f64;
+        for (k, &(n, f, np)) in self.maps.iter().enumerate() {
+            if (n - self.near).abs() > 1e-12 * n || ground[k].0 == 0.0 {
+                continue;
+            }
+            let sizes = (f64::from(width), f64::from(height));
+            let (ex, ez) = lloyd2006::maxima(n, f, np, self.tan, sizes, f64::from(res));
+            d = d
+                .max((ground[k].0 / ex - 1.0).abs())
+                .max((ground[k].1 / ez - 1.0).abs());
+        }
+        d
+    }
+}
+
+/// `RENDER_CHECK_DEBUG`: where a compared pixel's shadow disagrees, the texel-centre ray's
+/// points and the boxes the exact ray casts meet.
+fn debug_pixel(scene: &Scene, view: &View, built: &Built, res: u32, q: &Pixel) {
+    let to_world = view.world_to_eye.inverse();
+    let (pw, nw) = (
+        to_world.transform_point3(q.p),
+        to_world.transform_vector3(q.n),
+    );
+    let wc = built.maps[q.part].gpu * view.world_to_eye;
+    let inv = wc.inverse();
+    let h = wc * pw.extend(1.0);
+    let r = f64::from(res);
+    let (s, t, d) = (
+        (h.x / h.w + 1.0) * 0.5 * r,
+        (h.y / h.w + 1.0) * 0.5 * r,
+        h.z / h.w,
+    );
+    let (x, y) = (
+        2.0 * (s.floor() + 0.5) / r - 1.0,
+        2.0 * (t.floor() + 0.5) / r - 1.0,
+    );
+    let q0 = inv.project_point3(DVec3::new(x, y, 0.0));
+    let dd = inv.project_point3(DVec3::new(x, y, 1.0)) - q0;
+    let qc = q0 + dd * ((pw - q0).dot(nw) / dd.dot(nw));
+    let rc = inv.project_point3(DVec3::new(x, y, d));
+    let hits = |x: DVec3| -> Vec<usize> {
+        (0..scene.boxes.len())
+            .filter(|&k| {
+                let mut one = scene.clone();
+                one.boxes = vec![scene.boxes[k]];
+                ray_occluded(&one, x, DVec3::ZERO, view.light_world)
+            })
+            .collect()
+    };
+    eprintln!(
+        "    world {pw:.4} map ({s:.3}, {t:.3}) depth {d:.6}; on the plane {qc:.4} hits boxes {:?}; \
+         at its depth {rc:.4} hits {:?}; the pixel's ray hits {:?}",
+        hits(qc),
+        hits(rc),
+        hits(pw + nw * 1e-5),
+    );
 }

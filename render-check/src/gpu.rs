@@ -1,5 +1,6 @@
 //! wgpu on its Vulkan backend, headless: the shadow pass (one depth layer per map) and the
-//! camera pass (texel coordinates, surface id, shaded colour), read back to the CPU.
+//! camera pass (texel coordinates, surface id, shaded colour, light clip depth), read back to
+//! the CPU.
 
 use bytemuck::{Pod, Zeroable};
 use glam::{DMat4, DVec3};
@@ -68,6 +69,9 @@ pub struct FrameOutput {
     pub id: Vec<u32>,
     /// Shaded colour, RGBA8.
     pub color: Vec<[u8; 4]>,
+    /// Light clip depth z/w in the selected map, unclamped (inside its depth range: [0, 1];
+    /// −10³⁰ behind its centre of projection).
+    pub depth: Vec<f32>,
 }
 
 #[repr(C)]
@@ -263,6 +267,7 @@ impl Gpu {
                     Some(wgpu::TextureFormat::Rgba32Float.into()),
                     Some(wgpu::TextureFormat::R32Uint.into()),
                     Some(wgpu::TextureFormat::Rgba8Unorm.into()),
+                    Some(wgpu::TextureFormat::R32Float.into()),
                 ],
             }),
             multiview_mask: None,
@@ -583,9 +588,10 @@ impl Gpu {
         let t_texel = self.target(w, h, wgpu::TextureFormat::Rgba32Float);
         let t_id = self.target(w, h, wgpu::TextureFormat::R32Uint);
         let t_color = self.target(w, h, wgpu::TextureFormat::Rgba8Unorm);
+        let t_light = self.target(w, h, wgpu::TextureFormat::R32Float);
         let t_depth = self.target(w, h, wgpu::TextureFormat::Depth32Float);
-        let views =
-            [&t_texel, &t_id, &t_color, &t_depth].map(|t| t.create_view(&Default::default()));
+        let views = [&t_texel, &t_id, &t_color, &t_light, &t_depth]
+            .map(|t| t.create_view(&Default::default()));
         {
             let clear = |c: wgpu::Color| wgpu::Operations {
                 load: wgpu::LoadOp::Clear(c),
@@ -617,9 +623,15 @@ impl Gpu {
                             a: 1.0,
                         }),
                     }),
+                    Some(wgpu::RenderPassColorAttachment {
+                        view: &views[3],
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: clear(wgpu::Color::TRANSPARENT),
+                    }),
                 ],
                 depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &views[3],
+                    view: &views[4],
                     depth_ops: Some(wgpu::Operations {
                         load: wgpu::LoadOp::Clear(1.0),
                         store: wgpu::StoreOp::Store,
@@ -639,14 +651,17 @@ impl Gpu {
         let (b0, r0) = self.copy_out(&mut enc, &t_texel, w, h, 1, 16, all);
         let (b1, r1) = self.copy_out(&mut enc, &t_id, w, h, 1, 4, all);
         let (b2, r2) = self.copy_out(&mut enc, &t_color, w, h, 1, 4, all);
+        let (b3, r3) = self.copy_out(&mut enc, &t_light, w, h, 1, 4, all);
         self.queue.submit([enc.finish()]);
         let texel = self.read(&b0, r0, w, h, 1, 16)?;
         let id = self.read(&b1, r1, w, h, 1, 4)?;
         let color = self.read(&b2, r2, w, h, 1, 4)?;
+        let depth = self.read(&b3, r3, w, h, 1, 4)?;
         Ok(FrameOutput {
             texel: bytemuck::cast_slice(&texel).to_vec(),
             id: bytemuck::cast_slice(&id).to_vec(),
             color: bytemuck::cast_slice(&color).to_vec(),
+            depth: bytemuck::cast_slice(&depth).to_vec(),
         })
     }
 }

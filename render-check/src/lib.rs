@@ -7,6 +7,8 @@ pub mod analysis;
 pub mod faults;
 pub mod gpu;
 pub mod images;
+pub mod perspective;
 pub mod run;
 pub mod scene;
 pub mod schemes;
+pub mod targets;

@@ -1,39 +1,70 @@
 //! One case (set-up × scheme) end to end, the shimmer test, and summary.json.
 
-use crate::analysis::{analyse, Analysis};
+use crate::analysis::{analyse, pixel_point, Analysis};
 use crate::gpu::{FrameInput, Gpu, GpuPart};
 use crate::scene::{Mesh, Scene, FACING};
 use crate::schemes::{build, Built, Scheme, Select, View};
 use glam::{DMat4, DVec3};
 use serde::Serialize;
 
-/// One row of summary.json (exactly the fields).
+/// One row of summary.json (docs/rendered.md lists the fields; [`crate::targets`] the limits).
 #[derive(Debug, Clone, Serialize)]
 pub struct CaseSummary {
     /// Set-up name.
     pub setup: String,
     /// Scheme name.
     pub scheme: String,
+    /// Screen width, pixels.
+    pub width: u32,
+    /// Screen height, pixels.
+    pub height: u32,
     /// Texels of all the scheme's maps together.
     pub map_texels: u64,
+    /// Visible pixels (not sky).
+    pub visible_pixels: usize,
     /// Pixels whose Jacobians were compared.
     pub pixels_compared: usize,
+    /// Visible pixels not compared (no two neighbours on the pixel's surface and map along an
+    /// axis, or no prediction).
+    pub pixels_not_compared: usize,
     /// Median relative difference, rendered vs predicted Jacobian.
     pub median_rel_diff: f64,
     /// 99th percentile.
     pub p99_rel_diff: f64,
-    /// Interior pixels in exact shadow rendered lit.
-    pub interior_misses: usize,
-    /// Interior pixels exactly lit rendered in shadow.
-    pub interior_false_shadows: usize,
-    /// Mismatch fraction in the edge band.
-    pub edge_band_mismatch_fraction: f64,
     /// Largest rendered error, pixels per texel.
     pub max_rendered_error: f64,
     /// Largest predicted error, pixels per texel.
     pub max_predicted_error: f64,
-    /// Fraction of sampled edge points whose state changed between frames (cascade schemes).
+    /// Visible pixels facing the light that the exact ray cast shadows.
+    pub shadow_pixels: usize,
+    /// Of those, the ones compared (outside the texel band of the boundary).
+    pub shadow_pixels_checked: usize,
+    /// Visible pixels facing the light that the exact ray cast lights.
+    pub lit_pixels: usize,
+    /// Of those, the ones compared.
+    pub lit_pixels_checked: usize,
+    /// Compared pixels in exact shadow rendered lit.
+    pub shadow_misses: usize,
+    /// Compared pixels exactly lit rendered in shadow.
+    pub false_shadows: usize,
+    /// Mismatch fraction of the pixels facing the light within the band (not compared).
+    pub band_mismatch_fraction: f64,
+    /// Visible pixels outside the clip volume of the map the shader selected.
+    pub uncovered_pixels: usize,
+    /// Largest ratio of the rendered perspective error's maximum to the frame's reported M_x or
+    /// M_z, over maps.
+    pub frame_error_ratio: f64,
+    /// Smallest such ratio where the body's worst point is visible (null where it is not).
+    pub frame_error_ratio_worst_visible: Option<f64>,
+    /// Lloyd 2006's overhead case (level set-up): the largest relative difference of the
+    /// rendered m_x, m_z over the ground from Eq 7–8, and of their maxima from Eq 9–10 (null
+    /// where the case does not apply).
+    pub lloyd_rel_diff: Option<f64>,
+    /// Fraction of sampled shadow-edge points whose state changed between frames (cascade
+    /// schemes).
     pub shimmer_changed_fraction: Option<f64>,
+    /// The shadow-edge points the shimmer test followed (cascade schemes).
+    pub shimmer_points: Option<usize>,
 }
 
 /// summary.json.
@@ -77,8 +108,10 @@ pub struct CaseResult {
 
 /// The mesh in eye space.
 pub struct EyeMesh {
-    positions: Vec<DVec3>,
-    normals: Vec<DVec3>,
+    /// Triangle vertices, eye space.
+    pub positions: Vec<DVec3>,
+    /// Each vertex's surface normal, eye space.
+    pub normals: Vec<DVec3>,
 }
 
 impl EyeMesh {
@@ -168,29 +201,43 @@ pub fn run_case(
         scene,
         &mesh,
         &built,
+        scheme,
         res,
         sizes.width,
         sizes.height,
     )
     .map_err(|e| format!("{setup}/{}: {e}", scheme.name()))?;
     let diagnostics = format!(
-        "excluded (discontinuity or no prediction) {}, interior {}, edge band {}",
-        a.excluded_discontinuity, a.interior_pixels, a.edge_band_pixels
+        "visible {}, not compared {}, band mismatches {:.4}",
+        a.visible_pixels, a.pixels_not_compared, a.band_mismatch_fraction
     );
     Ok(CaseResult {
         summary: CaseSummary {
             setup: setup.into(),
             scheme: scheme.name().into(),
+            width: sizes.width,
+            height: sizes.height,
             map_texels: built.maps.len() as u64 * u64::from(res) * u64::from(res),
+            visible_pixels: a.visible_pixels,
             pixels_compared: a.pixels_compared,
+            pixels_not_compared: a.pixels_not_compared,
             median_rel_diff: a.median_rel_diff,
             p99_rel_diff: a.p99_rel_diff,
-            interior_misses: a.interior_misses,
-            interior_false_shadows: a.interior_false_shadows,
-            edge_band_mismatch_fraction: a.edge_band_mismatch_fraction,
             max_rendered_error: a.max_rendered_error,
             max_predicted_error: a.max_predicted_error,
+            shadow_pixels: a.shadow_pixels,
+            shadow_pixels_checked: a.shadow_pixels_checked,
+            lit_pixels: a.lit_pixels,
+            lit_pixels_checked: a.lit_pixels_checked,
+            shadow_misses: a.shadow_misses,
+            false_shadows: a.false_shadows,
+            band_mismatch_fraction: a.band_mismatch_fraction,
+            uncovered_pixels: a.uncovered_pixels,
+            frame_error_ratio: a.frame_error_ratio,
+            frame_error_ratio_worst_visible: a.frame_error_ratio_worst_visible,
+            lloyd_rel_diff: a.lloyd_rel_diff,
             shimmer_changed_fraction: None,
+            shimmer_points: None,
         },
         color: out.color,
         analysis: a,
@@ -214,15 +261,26 @@ fn moved(scene: &Scene, i: usize, step: f64) -> Scene {
     s
 }
 
-/// The shimmer test: the fraction of sampled world points near shadow edges whose lit/shadow
+/// The shimmer test's result.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Shimmer {
+    /// The fraction of (point, consecutive frame pair) whose state changed.
+    pub changed_fraction: f64,
+    /// The shadow-edge points followed.
+    pub points: usize,
+}
+
+/// The shimmer test: the fraction of sampled world points on shadow edges whose lit/shadow
 /// state, looked up in the rendered maps of each frame (read back, the shader's lookup in f64),
-/// changes between consecutive frames. Points are taken from frame 0's visible pixels within 3
-/// pixels of an exact shadow boundary, and counted in a frame pair only when inside the view
-/// frustum in both frames.
+/// changes between consecutive frames. Points are taken from frame 0's visible pixels on
+/// surfaces facing the light within 3 pixels of a pixel of the same surface whose exact
+/// occlusion differs: shadow boundaries on receivers, which can flip, and no silhouette (a face
+/// turned away beside a lit one), which cannot. They are counted in a frame pair only when inside
+/// the view frustum in both frames.
 ///
 /// # Errors
 /// Building or rendering; no sample point.
-pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result<f64, String> {
+pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result<Shimmer, String> {
     let res = sizes.res.unwrap_or(scene.map_resolution);
     let mesh = Mesh::build(scene);
     let view0 = View::new(&scene.camera, scene.light(), sizes.width, sizes.height)?;
@@ -238,17 +296,6 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
     let eye0 = EyeMesh::new(&mesh, view0.world_to_eye);
     let parts0 = gpu_parts(&built0);
     let out0 = gpu.render(&input(&view0, &mesh, &eye0, &built0, &parts0, res, sizes))?;
-    let a0 = analyse(
-        &out0,
-        &view0,
-        scene,
-        &mesh,
-        &built0,
-        res,
-        sizes.width,
-        sizes.height,
-    )?;
-    drop(a0);
     let points = edge_points(&out0, &view0, scene, &mesh, sizes)?;
     let mut prev: Option<Vec<Option<bool>>> = None;
     let (mut changed, mut counted) = (0usize, 0usize);
@@ -278,11 +325,15 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
     if counted == 0 {
         return Err("shimmer: no sample point stayed in view".into());
     }
-    Ok(changed as f64 / counted as f64)
+    Ok(Shimmer {
+        changed_fraction: changed as f64 / counted as f64,
+        points: points.len(),
+    })
 }
 
-/// World points (with normals) of frame 0's visible pixels within 3 pixels of an exact shadow
-/// boundary, at most `sizes.shimmer_points`, evenly thinned.
+/// World points (with normals) of frame 0's visible pixels on surfaces facing the light within
+/// 3 pixels of a pixel of the same surface whose exact occlusion differs, at most
+/// `sizes.shimmer_points`, evenly thinned.
 fn edge_points(
     out: &crate::gpu::FrameOutput,
     view: &View,
@@ -292,8 +343,8 @@ fn edge_points(
 ) -> Result<Vec<(DVec3, DVec3)>, String> {
     let (w, h) = (sizes.width as usize, sizes.height as usize);
     let inv = view.world_to_eye.inverse();
-    let [_, _, t, ta] = view.frustum_params();
-    let mut state = vec![None; w * h];
+    // Per pixel: (surface id, occluded) on surfaces facing the light.
+    let mut state: Vec<Option<(u32, bool)>> = vec![None; w * h];
     let mut pts = vec![None; w * h];
     for y in 0..h {
         for x in 0..w {
@@ -302,19 +353,17 @@ fn edge_points(
                 continue;
             }
             let surf = mesh.surfaces[(out.id[i] - 1) as usize];
-            let ne = view.world_to_eye.transform_vector3(surf.normal);
-            let p0 = view.world_to_eye.transform_point3(surf.point);
-            let xn = 2.0 * (x as f64 + 0.5) / w as f64 - 1.0;
-            let yn = 1.0 - 2.0 * (y as f64 + 0.5) / h as f64;
-            let d = DVec3::new(xn * ta, yn * t, -1.0);
-            let den = ne.dot(d);
-            if den.abs() < 1e-9 {
+            if surf.normal.dot(-view.light_world) <= FACING {
                 continue;
             }
-            let pw = inv.transform_point3(d * (ne.dot(p0) / den));
-            let lit = surf.normal.dot(-view.light_world) > FACING
-                && !crate::scene::ray_occluded(scene, pw, surf.normal, view.light_world);
-            state[i] = Some(lit);
+            let ne = view.world_to_eye.transform_vector3(surf.normal);
+            let p0 = view.world_to_eye.transform_point3(surf.point);
+            let Some(p) = pixel_point(view, sizes.width, sizes.height, x, y, ne, p0) else {
+                continue;
+            };
+            let pw = inv.transform_point3(p);
+            let occ = crate::scene::ray_occluded(scene, pw, surf.normal, view.light_world);
+            state[i] = Some((out.id[i], occ));
             pts[i] = Some((pw, surf.normal));
         }
     }
@@ -322,9 +371,11 @@ fn edge_points(
     for y in 3..h.saturating_sub(3) {
         for x in 3..w.saturating_sub(3) {
             let i = y * w + x;
-            let Some(s) = state[i] else { continue };
+            let Some((id, occ)) = state[i] else { continue };
             let edge = (0..7).any(|dy| {
-                (0..7).any(|dx| state[(y + dy - 3) * w + (x + dx - 3)].is_some_and(|o| o != s))
+                (0..7).any(|dx| {
+                    state[(y + dy - 3) * w + (x + dx - 3)].is_some_and(|o| o.0 == id && o.1 != occ)
+                })
             });
             if edge {
                 if let Some(p) = pts[i] {
@@ -334,10 +385,32 @@ fn edge_points(
         }
     }
     if out_pts.is_empty() {
-        return Err("shimmer: no shadow edge in view".into());
+        return Err("shimmer: no shadow edge on a receiver in view".into());
     }
     let stride = out_pts.len().div_ceil(sizes.shimmer_points.max(1));
     Ok(out_pts.into_iter().step_by(stride).collect())
+}
+
+/// [`run_case`], and for the cascade schemes the shimmer test ([`shimmer`]) with its result in
+/// the summary: everything `render-check` measures for one case.
+///
+/// # Errors
+/// As [`run_case`] and [`shimmer`].
+pub fn run_full(
+    gpu: &Gpu,
+    setup: &str,
+    scene: &Scene,
+    scheme: Scheme,
+    sizes: Sizes,
+) -> Result<CaseResult, String> {
+    let mut r = run_case(gpu, setup, scene, scheme, sizes)?;
+    if matches!(scheme, Scheme::Cascades | Scheme::StableCascades) {
+        let s = shimmer(gpu, scene, scheme, sizes)
+            .map_err(|e| format!("{setup}/{}: {e}", scheme.name()))?;
+        r.summary.shimmer_changed_fraction = Some(s.changed_fraction);
+        r.summary.shimmer_points = Some(s.points);
+    }
+    Ok(r)
 }
 
 /// The shader's lookup of a world point in the read-back maps (f64), or `None` outside the view

@@ -75,6 +75,9 @@ struct FOut {
     @location(0) texel: vec4<f32>,
     @location(1) id: u32,
     @location(2) color: vec4<f32>,
+    // The light clip depth z/w in the selected map, unclamped ([0, 1] inside its depth range;
+    // -1e30 behind its centre of projection): the coverage check reads it.
+    @location(3) depth: f32,
 };
 
 // The face of the frustum where the ray from p along d leaves it (p inside).
@@ -165,6 +168,7 @@ fn fs_camera(v: VOut) -> FOut {
     }
     var o: FOut;
     o.texel = vec4<f32>(st * res, f32(part), select(0.0, 1.0, lit));
+    o.depth = select(-1e30, h.z / h.w, h.w > 0.0);
     o.id = v.id + 1u;
     // Shading: a colour per surface kind, Lambert when lit, ambient in shadow.
     var base = vec3<f32>(0.62, 0.6, 0.55);

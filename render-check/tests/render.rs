@@ -1,18 +1,22 @@
-//! The reduced set, rendered for real (wgpu on Vulkan; lavapipe without a GPU): every scheme on
-//! two set-ups at a small resolution, asserting the issue's targets, and the shimmer test. With no
+//! Every built-in set-up and every scene file in render-check/scenes/, rendered for real (wgpu on
+//! Vulkan; lavapipe without a GPU) at a reduced size, held to every target of
+//! `render_check::targets` (the binary's exit status holds the full run to the same). With no
 //! Vulkan adapter these tests fail, naming `mesa-vulkan-drivers`; they never skip.
 
-use render_check::faults::Fault;
 use render_check::gpu::Gpu;
-use render_check::run::{run_case, shimmer, Sizes};
+use render_check::run::{run_full, CaseSummary, Sizes};
+use render_check::scene::Scene;
 use render_check::schemes::{setups, Scheme};
+use render_check::targets::violations;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
+/// The tests' size: 240 × 180 pixels, each scene's own map resolution, 16 shimmer frames.
 const SIZES: Sizes = Sizes {
     width: 240,
     height: 180,
-    res: Some(1024),
-    frames: 64,
+    res: None,
+    frames: 16,
     shimmer_points: 1500,
     fault: None,
 };
@@ -21,90 +25,141 @@ fn gpu() -> Gpu {
     Gpu::new().unwrap_or_else(|e| panic!("{e}"))
 }
 
-fn check_setup(name: &str) {
-    let gpu = gpu();
-    let setup = setups().into_iter().find(|s| s.name == name).unwrap();
-    for scheme in Scheme::ALL {
-        let r = run_case(&gpu, &setup.name, &setup.scene, scheme, SIZES).unwrap();
-        let s = &r.summary;
-        let what = format!("{name}/{}: {s:?} ({})", scheme.name(), r.diagnostics);
-        // At least a third of the screen compared (the rest: sky, and pixels next to discontinuities).
-        assert!(s.pixels_compared > 240 * 180 / 3, "{what}");
-        assert!(s.median_rel_diff <= 0.01, "{what}");
-        assert!(s.p99_rel_diff <= 0.05, "{what}");
-        assert_eq!(s.interior_misses, 0, "{what}");
-        assert_eq!(s.interior_false_shadows, 0, "{what}");
-        // Some pixels are interior (a check over none would pass vacuously).
-        assert!(r.analysis.interior_pixels > 240 * 180 / 100, "{what}");
-        assert!(
-            s.max_predicted_error > 0.0 && s.max_rendered_error > 0.0,
-            "{what}"
-        );
-        assert!(
-            (s.max_rendered_error - s.max_predicted_error).abs() <= 0.05 * s.max_predicted_error,
-            "{what}"
-        );
-    }
+/// Every scheme of `scene` at `sizes`, asserting that no target is violated; the summaries.
+fn meets_every_target(gpu: &Gpu, name: &str, scene: &Scene, sizes: Sizes) -> Vec<CaseSummary> {
+    Scheme::ALL
+        .iter()
+        .map(|&scheme| {
+            let r = run_full(gpu, name, scene, scheme, sizes)
+                .unwrap_or_else(|e| panic!("{name}/{}: {e}", scheme.name()));
+            let v = violations(&r.summary);
+            assert!(
+                v.is_empty(),
+                "{name}/{} at {} × {}: {v:?}\n{:?}",
+                scheme.name(),
+                sizes.width,
+                sizes.height,
+                r.summary
+            );
+            r.summary
+        })
+        .collect()
+}
+
+fn setup(name: &str) -> Scene {
+    setups()
+        .into_iter()
+        .find(|s| s.name == name)
+        .unwrap_or_else(|| panic!("no built-in set-up {name}"))
+        .scene
 }
 
 #[test]
-fn tilted_45_every_scheme_meets_the_targets() {
-    check_setup("tilted_45");
+fn overhead_meets_every_target() {
+    meets_every_target(&gpu(), "overhead", &setup("overhead"), SIZES);
+}
+
+#[test]
+fn tilted_45_meets_every_target() {
+    meets_every_target(&gpu(), "tilted_45", &setup("tilted_45"), SIZES);
 }
 
 /// The light 5° from behind: the tower behind the camera, outside the view frustum, shadows the
-/// view; a depth range cut at the frustum would lose that shadow (interior misses).
+/// view (a depth range cut at the frustum loses it: the fault suite's no-casters).
 #[test]
-fn behind_5_every_scheme_meets_the_targets() {
-    check_setup("behind_5");
+fn behind_5_meets_every_target() {
+    meets_every_target(&gpu(), "behind_5", &setup("behind_5"), SIZES);
 }
 
-/// The same set-up with the casters left out of the frame (the depth range fitted to the focus
-/// body alone): the tower behind the camera is clipped out of the map and its shadow is lost,
-/// which the interior-miss count catches.
 #[test]
-fn depth_range_without_the_casters_is_caught() {
+fn front_5_meets_every_target() {
+    meets_every_target(&gpu(), "front_5", &setup("front_5"), SIZES);
+}
+
+#[test]
+fn grazing_10_meets_every_target() {
+    meets_every_target(&gpu(), "grazing_10", &setup("grazing_10"), SIZES);
+}
+
+#[test]
+fn parallel_1_meets_every_target() {
+    meets_every_target(&gpu(), "parallel_1", &setup("parallel_1"), SIZES);
+}
+
+/// Lloyd 2006's overhead case: the rendered m_x, m_z over the ground equal Eq 7–8 at every
+/// compared ground pixel and Eq 9–10 at their maxima, within 1 % (a target), for the schemes
+/// that are Lloyd's warps; the others are not held to it.
+#[test]
+fn level_overhead_meets_lloyd_2006() {
+    let cases = meets_every_target(&gpu(), "level_overhead", &setup("level_overhead"), SIZES);
+    for c in &cases {
+        let lloyd = matches!(
+            c.scheme.as_str(),
+            "uniform" | "lispsm" | "minimax" | "cascades4_lispsm"
+        );
+        assert_eq!(c.lloyd_rel_diff.is_some(), lloyd, "{c:?}");
+        // The near end of the ground is visible: the frame's worst point is reached.
+        assert!(c.frame_error_ratio_worst_visible.is_some(), "{c:?}");
+    }
+}
+
+/// The thin-caster scene (built in as `thin_casters`): its long thin shadow and the poles'
+/// shadows are compared with the ray cast (at least 80 % of the shadowed pixels, a target),
+/// where eroding the screen image compared none of a 2-pixel shadow.
+#[test]
+fn thin_casters_meet_every_target() {
+    meets_every_target(&gpu(), "thin_casters", &setup("thin_casters"), SIZES);
+}
+
+/// The scene files in render-check/scenes/ (there is at least one).
+fn scene_files() -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    files.sort();
+    assert!(!files.is_empty(), "no scene file in {}", dir.display());
+    files
+}
+
+/// Every scene file at 320 × 240, and at 640 × 480: the rendered-error statistics use exact
+/// derivatives, so a scene that passes at one size passes at the other (before, finite
+/// differences below the horizon put a thin-caster scene's p99 at 8.9 % at 320 × 240).
+#[test]
+fn every_scene_file_meets_every_target_at_two_sizes() {
     let gpu = gpu();
-    let setup = setups().into_iter().find(|s| s.name == "behind_5").unwrap();
-    let sizes = Sizes {
-        fault: Some(Fault::NoCasters),
-        ..SIZES
-    };
-    let r = run_case(&gpu, &setup.name, &setup.scene, Scheme::Uniform, sizes).unwrap();
-    assert!(r.summary.interior_misses > 100, "{:?}", r.summary);
+    for f in scene_files() {
+        let scene = Scene::load(&f).unwrap();
+        let name = f.file_stem().unwrap().to_string_lossy().into_owned();
+        for (width, height) in [(320, 240), (640, 480)] {
+            let sizes = Sizes {
+                width,
+                height,
+                ..SIZES
+            };
+            meets_every_target(&gpu, &name, &scene, sizes);
+        }
+    }
 }
 
-/// Stable cascades keep every edge point's state over 64 frames of sub-texel moves and 0.05°
-/// turns; the plain LiSPSM cascades do not (the test can fail).
-#[test]
-fn stable_cascades_do_not_shimmer_and_plain_ones_do() {
-    let gpu = gpu();
-    let setup = setups()
-        .into_iter()
-        .find(|s| s.name == "tilted_45")
-        .unwrap();
-    let stable = shimmer(&gpu, &setup.scene, Scheme::StableCascades, SIZES).unwrap();
-    let plain = shimmer(&gpu, &setup.scene, Scheme::Cascades, SIZES).unwrap();
-    assert!(stable <= 0.001, "stable {stable}, plain {plain}");
-    assert!(plain > 0.001, "stable {stable}, plain {plain}");
+fn scene_file_text() -> &'static str {
+    r#"{"ground_y": 0.0, "ground_half_extent": 100.0,
+        "boxes": [{"min": [-2, 0, -12], "max": [2, 3, -8]}, {"min": [3, 0, -20], "max": [4, 6, -19]}],
+        "camera": {"eye": [0, 4, 0], "target": [0, 0, -20], "up": [0, 1, 0],
+                   "near": 0.5, "far": 60, "fov_y_deg": 55},
+        "light_dir": [0.4, -1.0, -0.3], "map_resolution": 256}"#
 }
 
-/// The binary with a scene file: summary.json has exactly the issue's fields, and the images
-/// are written.
+/// The binary with a scene file: exit 0, summary.json has exactly the documented fields, the
+/// images are written.
 #[test]
 fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
     let dir = std::env::temp_dir().join(format!("render-check-test-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let scene = dir.join("small.json");
-    std::fs::write(
-        &scene,
-        r#"{"ground_y": 0.0, "ground_half_extent": 100.0,
-            "boxes": [{"min": [-2, 0, -12], "max": [2, 3, -8]}, {"min": [3, 0, -20], "max": [4, 6, -19]}],
-            "camera": {"eye": [0, 4, 0], "target": [0, 0, -20], "up": [0, 1, 0],
-                       "near": 0.5, "far": 60, "fov_y_deg": 55},
-            "light_dir": [0.4, -1.0, -0.3], "map_resolution": 256}"#,
-    )
-    .unwrap();
+    std::fs::write(&scene, scene_file_text()).unwrap();
     let out = dir.join("out");
     let o = Command::new(env!("CARGO_BIN_EXE_render-check"))
         .args([
@@ -133,30 +188,72 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
     let mut expect = [
         "setup",
         "scheme",
+        "width",
+        "height",
         "map_texels",
+        "visible_pixels",
         "pixels_compared",
+        "pixels_not_compared",
         "median_rel_diff",
         "p99_rel_diff",
-        "interior_misses",
-        "interior_false_shadows",
-        "edge_band_mismatch_fraction",
         "max_rendered_error",
         "max_predicted_error",
+        "shadow_pixels",
+        "shadow_pixels_checked",
+        "lit_pixels",
+        "lit_pixels_checked",
+        "shadow_misses",
+        "false_shadows",
+        "band_mismatch_fraction",
+        "uncovered_pixels",
+        "frame_error_ratio",
+        "frame_error_ratio_worst_visible",
+        "lloyd_rel_diff",
         "shimmer_changed_fraction",
+        "shimmer_points",
     ];
     expect.sort_unstable();
     assert_eq!(keys, expect);
     for c in cases {
         assert_eq!(c["setup"], "small");
-        assert_eq!(c["interior_misses"], 0, "{c}");
-        assert_eq!(c["interior_false_shadows"], 0, "{c}");
-        let shimmer = &c["shimmer_changed_fraction"];
+        assert_eq!(c["shadow_misses"], 0, "{c}");
+        assert_eq!(c["false_shadows"], 0, "{c}");
+        assert_eq!(c["uncovered_pixels"], 0, "{c}");
         let cascaded = c["scheme"].as_str().unwrap().contains("cascades");
-        assert_eq!(shimmer.is_null(), !cascaded, "{c}");
+        for k in ["shimmer_changed_fraction", "shimmer_points"] {
+            assert_eq!(c[k].is_null(), !cascaded, "{k}: {c}");
+        }
         let stem = format!("small_{}", c["scheme"].as_str().unwrap());
         assert!(out.join(format!("{stem}.png")).is_file());
         assert!(out.join(format!("{stem}_error.png")).is_file());
     }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A violated target makes the binary fail, naming the case and the target: here the casters
+/// left out of the depth range (`--fault no-casters`) lose the shadows of the boxes nearer the
+/// light than the focus body.
+#[test]
+fn a_violated_target_fails_the_binary_naming_it() {
+    let dir = std::env::temp_dir().join(format!("render-check-fail-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/thin_casters.json");
+    let o = Command::new(env!("CARGO_BIN_EXE_render-check"))
+        .args([
+            "--out",
+            dir.join("o").to_str().unwrap(),
+            "--scene",
+            scene.to_str().unwrap(),
+        ])
+        .args(["--width", "160", "--height", "120", "--frames", "4"])
+        .args(["--fault", "no-casters"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success(), "{err}");
+    assert!(err.contains("TARGET VIOLATED thin_casters_"), "{err}");
+    assert!(err.contains("shadow_misses"), "{err}");
+    assert!(err.contains("cases violate a target"), "{err}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

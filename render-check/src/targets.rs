@@ -1,0 +1,102 @@
+//! Every target of render-check, in one place: [`violations`] is what the binary's exit status,
+//! `--self-test` and `cargo test -p render-check` hold each case to (docs/rendered.md,
+//! "Targets").
+
+use crate::run::CaseSummary;
+
+/// Median of ‖J_rendered − J_predicted‖_F / ‖J_predicted‖_F, at most.
+pub const MEDIAN_REL_DIFF: f64 = 0.01;
+/// 99th percentile of the same, at most.
+pub const P99_REL_DIFF: f64 = 0.05;
+/// The rendered and predicted maximum errors agree to this, relatively.
+pub const MAX_ERROR_REL_DIFF: f64 = 0.05;
+/// At least this fraction of the visible pixels has its Jacobian compared (a comparison over
+/// almost nothing would pass vacuously).
+pub const MIN_COMPARED_FRACTION: f64 = 0.5;
+/// At least this fraction of the pixels the ray cast shadows is compared with the render.
+pub const MIN_SHADOW_CHECKED_FRACTION: f64 = 0.8;
+/// The rendered perspective error's maximum exceeds the frame's reported M_x or M_z by at most
+/// this, relatively.
+pub const FRAME_EXCESS: f64 = 0.01;
+/// Where the body's worst point is visible, the rendered maximum reaches at least this fraction
+/// of the reported one.
+pub const FRAME_REACH: f64 = 0.95;
+/// Lloyd 2006 Eq 7–10 against the rendered m_x, m_z over the ground (level set-up), relatively.
+pub const LLOYD_REL_DIFF: f64 = 0.01;
+/// Stable cascades: at most this fraction of the shadow-edge points' states change between
+/// frames.
+pub const STABLE_SHIMMER: f64 = 0.001;
+/// The shimmer test follows at least this many shadow-edge points.
+pub const MIN_SHIMMER_POINTS: usize = 100;
+
+/// The targets `case` violates, one line each naming the target, the measured value and the
+/// limit; empty when it meets them all.
+pub fn violations(case: &CaseSummary) -> Vec<String> {
+    let mut v = Vec::new();
+    let mut at_most = |name: &str, got: f64, limit: f64| {
+        // NaN fails (a measurement that is not a number meets no target).
+        if got.is_nan() || got > limit {
+            v.push(format!("{name} = {got:.4e}, limit ≤ {limit:e}"));
+        }
+    };
+    at_most("median_rel_diff", case.median_rel_diff, MEDIAN_REL_DIFF);
+    at_most("p99_rel_diff", case.p99_rel_diff, P99_REL_DIFF);
+    at_most(
+        "|max_rendered_error / max_predicted_error − 1|",
+        (case.max_rendered_error / case.max_predicted_error - 1.0).abs(),
+        MAX_ERROR_REL_DIFF,
+    );
+    at_most("shadow_misses", case.shadow_misses as f64, 0.0);
+    at_most("false_shadows", case.false_shadows as f64, 0.0);
+    at_most("uncovered_pixels", case.uncovered_pixels as f64, 0.0);
+    at_most(
+        "frame_error_ratio − 1 (rendered M_x, M_z over the frame's reported)",
+        case.frame_error_ratio - 1.0,
+        FRAME_EXCESS,
+    );
+    if let Some(d) = case.lloyd_rel_diff {
+        at_most(
+            "lloyd_rel_diff (rendered m_x, m_z against Lloyd 2006 Eq 7-10)",
+            d,
+            LLOYD_REL_DIFF,
+        );
+    }
+    if case.scheme == crate::schemes::Scheme::StableCascades.name() {
+        match case.shimmer_changed_fraction {
+            Some(f) => at_most(
+                "shimmer_changed_fraction (stable cascades)",
+                f,
+                STABLE_SHIMMER,
+            ),
+            None => v.push("shimmer_changed_fraction: not measured (stable cascades)".into()),
+        }
+    }
+    let mut at_least = |name: &str, got: f64, limit: f64| {
+        if got.is_nan() || got < limit {
+            v.push(format!("{name} = {got:.4}, limit ≥ {limit}"));
+        }
+    };
+    at_least(
+        "pixels_compared / visible_pixels",
+        case.pixels_compared as f64 / case.visible_pixels.max(1) as f64,
+        MIN_COMPARED_FRACTION,
+    );
+    if case.shadow_pixels > 0 {
+        at_least(
+            "shadow_pixels_checked / shadow_pixels",
+            case.shadow_pixels_checked as f64 / case.shadow_pixels as f64,
+            MIN_SHADOW_CHECKED_FRACTION,
+        );
+    }
+    if let Some(r) = case.frame_error_ratio_worst_visible {
+        at_least(
+            "frame_error_ratio_worst_visible (rendered over reported where the worst point shows)",
+            r,
+            FRAME_REACH,
+        );
+    }
+    if let Some(n) = case.shimmer_points {
+        at_least("shimmer_points", n as f64, MIN_SHIMMER_POINTS as f64);
+    }
+    v
+}
