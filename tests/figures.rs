@@ -192,6 +192,112 @@ fn check_svg(path: &Path, name: &str) {
         text.matches("<text").count() >= 10,
         "{name}: too few labels"
     );
+    for (attrs, _) in texts(&text) {
+        assert!(
+            attrs.contains("xml:space=\"preserve\""),
+            "{name}: a <text> collapses spaces: {attrs}"
+        );
+        assert!(
+            attrs.contains("font-family=\"'DejaVu Sans', ") && attrs.contains("sans-serif\""),
+            "{name}: a <text> without the family list: {attrs}"
+        );
+    }
+}
+
+/// Every `<text>` element of an SVG: its attributes and its content (with any `<tspan>`s).
+fn texts(svg: &str) -> Vec<(&str, &str)> {
+    let mut out = Vec::new();
+    let mut rest = svg;
+    while let Some(at) = rest.find("<text ") {
+        rest = &rest[at + 6..];
+        let gt = rest.find('>').unwrap();
+        let end = rest.find("</text>").unwrap();
+        out.push((&rest[..gt], &rest[gt + 1..end]));
+        rest = &rest[end..];
+    }
+    out
+}
+
+/// The characters a reader sees: the content without its tags, entities decoded.
+fn visible(content: &str) -> String {
+    let mut s = String::new();
+    let mut in_tag = false;
+    for c in content.chars() {
+        match c {
+            '<' => in_tag = true,
+            '>' => in_tag = false,
+            c if !in_tag => s.push(c),
+            _ => {}
+        }
+    }
+    s.replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&quot;", "\"")
+        .replace("&apos;", "'")
+        .replace("&amp;", "&")
+}
+
+#[test]
+fn svg_labels_are_one_text_each_with_tspan_subscripts_and_bars() {
+    let dir = out_dir("figures-svg-text");
+    render_all(&dir, Format::Svg, &["lloyd2006-fig6"], |_| {}).unwrap();
+    let svg = std::fs::read_to_string(dir.join("lloyd2006-fig6.svg")).unwrap();
+    let all = texts(&svg);
+    // The legend's labels, as written in src/plot/lloyd2006.rs: each is one <text> whose
+    // subscripts are <tspan>s shifted down and whose S̄ is an overlined <tspan>.
+    let find = |seen: &str| {
+        all.iter()
+            .find(|(_, c)| visible(c) == seen)
+            .unwrap_or_else(|| panic!("no single <text> reads {seen:?}"))
+            .1
+    };
+    let mx = find("Mx (maximum 100)");
+    assert!(mx.starts_with("M<tspan dy=\""), "{mx}");
+    let s = find("S = Mx Mz (maximum 8574 at θ = 30°)");
+    assert!(
+        s.starts_with("<tspan text-decoration=\"overline\">S</tspan>"),
+        "{s}"
+    );
+    assert_eq!(s.matches("<tspan dy=\"").count(), 4, "{s}");
+    // No <text> is a subscript alone (the old layout placed each subscript by itself).
+    for (attrs, c) in &all {
+        assert!(
+            !c.starts_with("<tspan dy="),
+            "a lone subscript: {attrs} {c}"
+        );
+        assert!(!visible(c).trim().is_empty(), "an empty <text>: {attrs}");
+    }
+}
+
+#[test]
+fn heat_maps_are_one_embedded_image_per_panel() {
+    let dir = out_dir("figures-svg-heat");
+    // (figure, heat-map panels)
+    let heat = [
+        ("lloyd2006-fig7", 4),
+        ("zhang-fig3", 27),
+        ("martin-tan-fig6", 1),
+    ];
+    let names: Vec<&str> = heat.iter().map(|(n, _)| *n).collect();
+    render_all(&dir, Format::Svg, &names, |_| {}).unwrap();
+    for (name, panels) in heat {
+        let svg = std::fs::read_to_string(dir.join(format!("{name}.svg"))).unwrap();
+        assert_eq!(
+            svg.matches("<image ").count(),
+            panels,
+            "{name}: one image per heat map"
+        );
+        assert_eq!(
+            svg.matches("href=\"data:image/png;base64,iVBORw0KGgo")
+                .count(),
+            panels,
+            "{name}: embedded PNGs"
+        );
+        // Formerly thousands of cells (17 380 polygons in lloyd2006-fig7, 1.6–2 MB files).
+        let shapes = svg.matches("<polygon").count() + svg.matches("<rect").count();
+        assert!(shapes < 1500, "{name}: {shapes} shapes");
+        assert!(svg.len() < 700_000, "{name}: {} bytes", svg.len());
+    }
 }
 
 fn check_png(path: &Path) {

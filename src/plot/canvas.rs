@@ -28,6 +28,9 @@ pub(crate) struct Metrics {
     pub em: f64,
     /// Width actually drawn per width estimated by plotters' layout.
     pub advance: f64,
+    /// The backend typesets a whole text itself ([`super::svg::Svg`]: one `<text>` with
+    /// `<tspan>`s), so the text is handed over in one piece instead of run by run.
+    pub whole: bool,
 }
 
 /// plotters' bitmap text: ab_glyph at pixel height `s` (DejaVu's ascent − descent is 1.164 em),
@@ -36,13 +39,16 @@ pub(crate) const BITMAP_TEXT: Metrics = Metrics {
     baseline: 0.5,
     em: 1.0 / 1.164,
     advance: 1.0,
+    whole: false,
 };
 
-/// plotters' SVG text: `font-size = s/1.24`, baseline 0.76 em below a top anchor.
+/// The SVG's text ([`super::svg::Svg`], as plotters' SVG backend): `font-size = s/1.24`,
+/// baseline 0.76 em below a top anchor.
 pub(crate) const SVG_TEXT: Metrics = Metrics {
     baseline: 0.76 / 1.24,
     em: 1.0 / 1.24,
     advance: 1.164 / 1.24,
+    whole: true,
 };
 
 /// Height of DejaVu Sans' capitals, in em.
@@ -342,7 +348,7 @@ impl<B: DrawingBackend> DrawingBackend for Canvas<B> {
         let pos = self.up(pos);
         let runs = typeset(text);
         let anchor = style.anchor();
-        if is_plain(&runs) {
+        if is_plain(&runs) || self.metrics.whole {
             let st = run_style(style, s).pos(anchor);
             return self.inner.draw_text(text, &st, pos);
         }
@@ -388,6 +394,32 @@ impl<B: DrawingBackend> DrawingBackend for Canvas<B> {
             x += w;
         }
         Ok(())
+    }
+
+    /// The bitmap is enlarged `scale` times (each pixel a block) and handed on whole, so that an
+    /// SVG embeds it as one image.
+    fn blit_bitmap(
+        &mut self,
+        pos: BackendCoord,
+        (w, h): (u32, u32),
+        src: &[u8],
+    ) -> Res<B::ErrorType> {
+        let s = self.scale as usize;
+        let pos = self.up(pos);
+        if s == 1 {
+            return self.inner.blit_bitmap(pos, (w, h), src);
+        }
+        let (w, h) = (w as usize, h as usize);
+        let mut big = vec![0u8; w * h * s * s * 3];
+        for y in 0..h * s {
+            for x in 0..w * s {
+                let from = ((y / s) * w + x / s) * 3;
+                let to = (y * w * s + x) * 3;
+                big[to..to + 3].copy_from_slice(&src[from..from + 3]);
+            }
+        }
+        self.inner
+            .blit_bitmap(pos, ((w * s) as u32, (h * s) as u32), &big)
     }
 
     fn estimate_text_size<T: BackendTextStyle>(

@@ -46,6 +46,7 @@ mod layout;
 mod lloyd2005;
 mod lloyd2006;
 mod martin_tan;
+mod svg;
 mod trapezoid;
 mod warp_grid;
 mod worst;
@@ -271,12 +272,9 @@ fn emit<F: Figure>(
         } else {
             let mut svg = String::new();
             {
-                let root = canvas::Canvas::new(
-                    SVGBackend::with_string(&mut svg, (w, h)),
-                    1,
-                    canvas::SVG_TEXT,
-                )
-                .into_drawing_area();
+                let root =
+                    canvas::Canvas::new(svg::Svg::new(&mut svg, (w, h)), 1, canvas::SVG_TEXT)
+                        .into_drawing_area();
                 fig.draw(&root).map_err(|e| e.named(name))?;
                 root.present().map_err(|e| Fail::from(e).named(name))?;
             }

@@ -2,6 +2,7 @@
 
 use super::super::Fail;
 use super::axis::{Axis, Chart2d, Ticked};
+use super::raster::draw_cells;
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -205,8 +206,13 @@ pub(crate) fn draw_grid<DB: DrawingBackend>(
 ) -> Result<(), Fail> {
     let nx = grid.x_edges.len() - 1;
     let ny = grid.y_edges.len() - 1;
-    let mut rects = Vec::new();
-    let mut polys = Vec::new();
+    // Cells in the plotting area's pixels.
+    let base = chart.plotting_area().get_base_pixel();
+    let px = |(x, y): (f64, f64)| {
+        let (u, v) = chart.backend_coord(&(x, y));
+        (f64::from(u - base.0), f64::from(v - base.1))
+    };
+    let mut cells = Vec::new();
     let level_at = |i: usize, j: usize| grid.values[j * nx + i].and_then(|v| scale.level(v));
     for j in 0..ny {
         let mut i = 0;
@@ -218,7 +224,8 @@ pub(crate) fn draw_grid<DB: DrawingBackend>(
             let (poly, was_cut) = grid.cell(i, j);
             if was_cut {
                 if poly.len() >= 3 {
-                    polys.push(Polygon::new(poly, scale.level_colour(level).filled()));
+                    let poly = poly.into_iter().map(px).collect();
+                    cells.push((poly, scale.level_colour(level)));
                 }
                 i += 1;
                 continue;
@@ -227,19 +234,17 @@ pub(crate) fn draw_grid<DB: DrawingBackend>(
             while i + 1 < nx && level_at(i + 1, j) == Some(level) && !grid.cell(i + 1, j).1 {
                 i += 1;
             }
-            rects.push(Rectangle::new(
-                [
-                    (grid.x_edges[start], grid.y_edges[j]),
-                    (grid.x_edges[i + 1], grid.y_edges[j + 1]),
-                ],
-                scale.level_colour(level).filled(),
+            let (xa, xb) = (grid.x_edges[start], grid.x_edges[i + 1]);
+            let (ya, yb) = (grid.y_edges[j], grid.y_edges[j + 1]);
+            let rect = [(xa, ya), (xb, ya), (xb, yb), (xa, yb)];
+            cells.push((
+                rect.into_iter().map(px).collect(),
+                scale.level_colour(level),
             ));
             i += 1;
         }
     }
-    chart.draw_series(rects)?;
-    chart.draw_series(polys)?;
-    Ok(())
+    draw_cells(&chart.plotting_area().strip_coord_spec(), &cells)
 }
 
 /// A field over the hemisphere of light directions: `values[i * n_az + j]` for the cell between
@@ -307,6 +312,7 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
         }
         v
     };
+    let mut cells = Vec::new();
     for i in 0..n_el {
         let (e0, e1) = (grid.elev_edges[i], grid.elev_edges[i + 1]);
         let mut j = 0;
@@ -337,10 +343,15 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
             let mut poly = arc(lo, a0, a1, false);
             poly.extend(arc(hi, a0, a1, true));
             poly.dedup();
-            area.draw(&Polygon::new(poly, scale.level_colour(level).filled()))?;
+            let poly = poly
+                .into_iter()
+                .map(|(x, y)| (f64::from(x), f64::from(y)))
+                .collect();
+            cells.push((poly, scale.level_colour(level)));
             j += 1;
         }
     }
+    draw_cells(area, &cells)?;
     // Elevation rings at 0°, 30°, 60° and the axis from behind to in front.
     let ring_style = ShapeStyle {
         color: RGBColor(60, 60, 60).to_rgba(),

@@ -12,6 +12,7 @@ mod axis;
 mod heat;
 mod line;
 mod page;
+mod raster;
 
 pub(crate) use axis::*;
 pub(crate) use heat::*;

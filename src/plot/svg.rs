@@ -1,0 +1,372 @@
+//! The SVG writer every figure's SVG is drawn with (in place of plotters' own SVG backend):
+//!
+//! - each text is ONE `<text>` element with `xml:space="preserve"`: subscripts and superscripts
+//!   are `<tspan>`s moved by `dy` and smaller, a barred letter (`S̄`) is a `<tspan>` with
+//!   `text-decoration="overline"`, so the text stays one flow whatever font the viewer
+//!   substitutes;
+//! - the family is a list, [`FAMILY`], led by the DejaVu Sans whose metrics the layout uses;
+//! - a bitmap ([`DrawingBackend::blit_bitmap`], used for heat maps) is one embedded PNG
+//!   `<image>`, not one rectangle per pixel.
+
+use super::canvas::{typeset, Run};
+use image::ImageEncoder;
+use plotters::style::text_anchor::{HPos, VPos};
+use plotters::style::{FontStyle, FontTransform};
+use plotters_backend::{
+    BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingBackend, DrawingErrorKind,
+};
+use std::fmt::Write;
+
+/// The font families an SVG asks for, first the one its layout was measured with.
+pub(crate) const FAMILY: &str = "'DejaVu Sans', 'Liberation Sans', Arial, Helvetica, sans-serif";
+
+/// plotters' text size `s` is drawn as `font-size = s / 1.24` (DejaVu's line height), as
+/// plotters' own SVG backend does, so that the layout measured with DejaVu fits.
+const FONT_SIZE: f64 = 1.0 / 1.24;
+
+/// Why an SVG could not be written.
+#[derive(Debug)]
+pub(crate) struct SvgError(String);
+
+impl std::fmt::Display for SvgError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for SvgError {}
+
+/// An SVG document drawn into a string.
+pub(crate) struct Svg<'a> {
+    out: &'a mut String,
+    size: (u32, u32),
+    body: String,
+}
+
+impl<'a> Svg<'a> {
+    pub fn new(out: &'a mut String, size: (u32, u32)) -> Self {
+        Self {
+            out,
+            size,
+            body: String::new(),
+        }
+    }
+}
+
+fn colour(c: BackendColor) -> String {
+    let (r, g, b) = c.rgb;
+    format!("#{r:02X}{g:02X}{b:02X}")
+}
+
+fn opacity(c: BackendColor) -> String {
+    if c.alpha >= 1.0 {
+        String::new()
+    } else {
+        format!(" opacity=\"{}\"", c.alpha)
+    }
+}
+
+/// Escapes text for XML character data and attribute values.
+pub(crate) fn escape(text: &str) -> String {
+    let mut s = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => s.push_str("&amp;"),
+            '<' => s.push_str("&lt;"),
+            '>' => s.push_str("&gt;"),
+            '"' => s.push_str("&quot;"),
+            '\'' => s.push_str("&apos;"),
+            c => s.push(c),
+        }
+    }
+    s
+}
+
+/// Standard base64 (RFC 4648, with padding), for the data URLs of embedded images.
+pub(crate) fn base64(bytes: &[u8]) -> String {
+    const A: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut s = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for chunk in bytes.chunks(3) {
+        let b = [
+            chunk[0],
+            chunk.get(1).copied().unwrap_or(0),
+            chunk.get(2).copied().unwrap_or(0),
+        ];
+        let n = (u32::from(b[0]) << 16) | (u32::from(b[1]) << 8) | u32::from(b[2]);
+        for k in 0..4 {
+            if k <= chunk.len() {
+                s.push(A[((n >> (18 - 6 * k)) & 63) as usize] as char);
+            } else {
+                s.push('=');
+            }
+        }
+    }
+    s
+}
+
+/// The `<tspan>`s of typeset runs at font size `f`: each shifted run moves the baseline by `dy`
+/// and the next run moves it back.
+pub(crate) fn tspans(runs: &[Run], f: f64) -> String {
+    let mut s = String::new();
+    let mut shift = 0.0;
+    for r in runs {
+        let plain = r.size == 1.0 && r.shift == 0.0 && !r.bar;
+        let dy = (r.shift - shift) * f;
+        shift = r.shift;
+        if plain && dy == 0.0 {
+            s.push_str(&escape(&r.text));
+            continue;
+        }
+        s.push_str("<tspan");
+        if dy != 0.0 {
+            let _ = write!(s, " dy=\"{}\"", round(dy));
+        }
+        if r.size != 1.0 {
+            let _ = write!(s, " font-size=\"{}\"", round(f * r.size));
+        }
+        if r.bar {
+            s.push_str(" text-decoration=\"overline\"");
+        }
+        let _ = write!(s, ">{}</tspan>", escape(&r.text));
+    }
+    s
+}
+
+fn round(v: f64) -> f64 {
+    (v * 1000.0).round() / 1000.0
+}
+
+type Res = Result<(), DrawingErrorKind<SvgError>>;
+
+impl DrawingBackend for Svg<'_> {
+    type ErrorType = SvgError;
+
+    fn get_size(&self) -> (u32, u32) {
+        self.size
+    }
+
+    fn ensure_prepared(&mut self) -> Res {
+        Ok(())
+    }
+
+    fn present(&mut self) -> Res {
+        let (w, h) = self.size;
+        self.out.clear();
+        let _ = write!(
+            self.out,
+            "<svg width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" \
+             xmlns=\"http://www.w3.org/2000/svg\">\n{}</svg>\n",
+            self.body
+        );
+        Ok(())
+    }
+
+    fn draw_pixel(&mut self, (x, y): BackendCoord, c: BackendColor) -> Res {
+        let _ = writeln!(
+            self.body,
+            "<rect x=\"{x}\" y=\"{y}\" width=\"1\" height=\"1\" fill=\"{}\"{}/>",
+            colour(c),
+            opacity(c)
+        );
+        Ok(())
+    }
+
+    fn draw_line<S: BackendStyle>(&mut self, a: BackendCoord, b: BackendCoord, st: &S) -> Res {
+        let c = st.color();
+        let _ = writeln!(
+            self.body,
+            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"{}\"{}/>",
+            a.0,
+            a.1,
+            b.0,
+            b.1,
+            colour(c),
+            st.stroke_width(),
+            opacity(c)
+        );
+        Ok(())
+    }
+
+    fn draw_rect<S: BackendStyle>(
+        &mut self,
+        a: BackendCoord,
+        b: BackendCoord,
+        st: &S,
+        fill: bool,
+    ) -> Res {
+        let c = st.color();
+        let paint = if fill {
+            format!("fill=\"{}\" stroke=\"none\"", colour(c))
+        } else {
+            format!(
+                "fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"",
+                colour(c),
+                st.stroke_width()
+            )
+        };
+        let _ = writeln!(
+            self.body,
+            "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" {paint}{}/>",
+            a.0,
+            a.1,
+            b.0 - a.0,
+            b.1 - a.1,
+            opacity(c)
+        );
+        Ok(())
+    }
+
+    fn draw_path<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
+        &mut self,
+        path: I,
+        st: &S,
+    ) -> Res {
+        let c = st.color();
+        let pts: String = path.into_iter().map(|(x, y)| format!("{x},{y} ")).collect();
+        let _ = writeln!(
+            self.body,
+            "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"{} points=\"{}\"/>",
+            colour(c),
+            st.stroke_width(),
+            opacity(c),
+            pts.trim_end()
+        );
+        Ok(())
+    }
+
+    fn draw_circle<S: BackendStyle>(
+        &mut self,
+        (x, y): BackendCoord,
+        r: u32,
+        st: &S,
+        fill: bool,
+    ) -> Res {
+        let c = st.color();
+        let paint = if fill {
+            format!("fill=\"{}\" stroke=\"none\"", colour(c))
+        } else {
+            format!(
+                "fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"",
+                colour(c),
+                st.stroke_width()
+            )
+        };
+        let _ = writeln!(
+            self.body,
+            "<circle cx=\"{x}\" cy=\"{y}\" r=\"{r}\" {paint}{}/>",
+            opacity(c)
+        );
+        Ok(())
+    }
+
+    fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
+        &mut self,
+        vert: I,
+        st: &S,
+    ) -> Res {
+        let c = st.color();
+        let pts: String = vert.into_iter().map(|(x, y)| format!("{x},{y} ")).collect();
+        let _ = writeln!(
+            self.body,
+            "<polygon fill=\"{}\"{} points=\"{}\"/>",
+            colour(c),
+            opacity(c),
+            pts.trim_end()
+        );
+        Ok(())
+    }
+
+    fn draw_text<T: BackendTextStyle>(&mut self, text: &str, st: &T, (x, y): BackendCoord) -> Res {
+        let c = st.color();
+        if c.alpha == 0.0 {
+            return Ok(());
+        }
+        let anchor = st.anchor();
+        let h = match anchor.h_pos {
+            HPos::Left => "start",
+            HPos::Center => "middle",
+            HPos::Right => "end",
+        };
+        let dy = match anchor.v_pos {
+            VPos::Top => "0.76em",
+            VPos::Center => "0.5ex",
+            VPos::Bottom => "-0.5ex",
+        };
+        let f = round(st.size() * FONT_SIZE);
+        let mut attrs = format!(
+            "x=\"{x}\" y=\"{y}\" dy=\"{dy}\" text-anchor=\"{h}\" font-family=\"{FAMILY}\" \
+             font-size=\"{f}\" fill=\"{}\"{}",
+            colour(c),
+            opacity(c)
+        );
+        match st.style() {
+            FontStyle::Normal => {}
+            FontStyle::Bold => attrs.push_str(" font-weight=\"bold\""),
+            other => {
+                let _ = write!(attrs, " font-style=\"{}\"", other.as_str());
+            }
+        }
+        let angle = match st.transform() {
+            FontTransform::Rotate90 => 90,
+            FontTransform::Rotate180 => 180,
+            FontTransform::Rotate270 => 270,
+            _ => 0,
+        };
+        if angle != 0 {
+            let _ = write!(attrs, " transform=\"rotate({angle}, {x}, {y})\"");
+        }
+        let _ = writeln!(
+            self.body,
+            "<text xml:space=\"preserve\" {attrs}>{}</text>",
+            tspans(&typeset(text), f)
+        );
+        Ok(())
+    }
+
+    fn blit_bitmap(&mut self, (x, y): BackendCoord, (w, h): (u32, u32), src: &[u8]) -> Res {
+        let mut png = Vec::new();
+        image::codecs::png::PngEncoder::new(&mut png)
+            .write_image(src, w, h, image::ColorType::Rgb8)
+            .map_err(|e| DrawingErrorKind::DrawingError(SvgError(e.to_string())))?;
+        let _ = writeln!(
+            self.body,
+            "<image x=\"{x}\" y=\"{y}\" width=\"{w}\" height=\"{h}\" \
+             preserveAspectRatio=\"none\" href=\"data:image/png;base64,{}\"/>",
+            base64(&png)
+        );
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn base64_matches_rfc4648_examples() {
+        // RFC 4648 §10 test vectors.
+        for (plain, coded) in [
+            ("", ""),
+            ("f", "Zg=="),
+            ("fo", "Zm8="),
+            ("foo", "Zm9v"),
+            ("foob", "Zm9vYg=="),
+            ("fooba", "Zm9vYmE="),
+            ("foobar", "Zm9vYmFy"),
+        ] {
+            assert_eq!(base64(plain.as_bytes()), coded, "{plain}");
+        }
+    }
+
+    #[test]
+    fn subscripts_and_bars_are_tspans_of_one_text() {
+        let s = tspans(&typeset("S\u{304} = M_x M_z"), 10.0);
+        assert_eq!(
+            s,
+            "<tspan text-decoration=\"overline\">S</tspan> = M<tspan dy=\"2\" \
+             font-size=\"7.2\">x</tspan><tspan dy=\"-2\"> M</tspan><tspan dy=\"2\" \
+             font-size=\"7.2\">z</tspan>"
+        );
+        assert_eq!(tspans(&typeset("a < b & c"), 10.0), "a &lt; b &amp; c");
+    }
+}
