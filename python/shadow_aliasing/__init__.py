@@ -12,7 +12,8 @@ Closed forms (NumPy broadcasting over every float argument, float64 out): ``mx``
 spelled ``lambda_``).
 
 Builders (4×4 float64 matrices, eye space → light clip space, ``clip = M @ (x, y, z, 1)``):
-``warp``, ``n_prime_for``, ``cascades``, ``faces``, ``tsm``. Measurement: ``frustum_max``,
+``warp``, ``n_prime_for``, ``cascades``, ``faces``, ``tsm``. World-space frame API (the renderer's path: a view matrix,
+scene boxes, every scheme; dict of arrays): ``frame``. Measurement: ``frustum_max``,
 ``point_error``. Hemisphere sweep: ``sweep`` (all cores; Ctrl-C interrupts it),
 ``sweep_angles``.
 """
@@ -25,6 +26,7 @@ from ._native import (
     distribution_g,
     eta_from_n_prime,
     faces,
+    frame,
     frustum_max,
     gamma_lim,
     generalized_n_prime,
@@ -62,6 +64,7 @@ __all__ = [
     "distribution_g",
     "eta_from_n_prime",
     "faces",
+    "frame",
     "frustum_max",
     "gamma_lim",
     "generalized_n_prime",

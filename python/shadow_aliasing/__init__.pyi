@@ -1,5 +1,5 @@
 """Type stubs of shadow_aliasing (the closed forms broadcast over every float argument)."""
-from typing import Literal, Optional, Sequence, Tuple, Union
+from typing import List, Literal, Optional, Sequence, Tuple, TypedDict, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -8,6 +8,39 @@ ArrayLike = npt.ArrayLike
 F64 = Union[np.float64, npt.NDArray[np.float64]]
 Vec3 = Union[Sequence[float], npt.NDArray[np.floating]]
 ClipDepth = Literal["neg_one_to_one", "zero_to_one", "reversed"]
+
+
+class BevySplits(TypedDict):
+    """Bevy's ``CascadeShadowConfigBuilder`` fields (``frame(..., bevy=...)``)."""
+    num_cascades: int
+    minimum_distance: float
+    maximum_distance: float
+    first_cascade_far_bound: float
+    overlap_proportion: float
+
+
+class FrameResult(TypedDict):
+    """``frame``'s maps, one per entry along the first axis (m maps)."""
+    focus: Literal["body", "empty", "flat", "edge_on", "zero_depth"]
+    light: Literal["general", "sun_straight_down", "parallel_to_view"]
+    light_dir_eye: npt.NDArray[np.float64]
+    world_to_clip: npt.NDArray[np.floating]
+    eye_to_clip: npt.NDArray[np.floating]
+    n_prime: npt.NDArray[np.float64]
+    depth: npt.NDArray[np.float64]
+    split: npt.NDArray[np.float64]
+    blend: npt.NDArray[np.float64]
+    texel_world: npt.NDArray[np.float64]
+    max_mx: npt.NDArray[np.float64]
+    max_mz: npt.NDArray[np.float64]
+    storage_factor: npt.NDArray[np.float64]
+    max_error_pixels: npt.NDArray[np.float64]
+    slot: npt.NDArray[np.int64]
+    map_focus: List[str]
+    face: List[Optional[str]]
+    body: List[npt.NDArray[np.float64]]
+    casters_volume: List[npt.NDArray[np.float64]]
+    receivers_volume: List[npt.NDArray[np.float64]]
 
 WARP_RULES: list[str]
 __version__: str
@@ -114,6 +147,23 @@ def point_error(matrix: ArrayLike, light_dir: Vec3, point: ArrayLike, near: floa
                 half_fov: float, *, res_image: float = ..., res_s: float = ..., res_t: float = ...,
                 aspect: float = ...) -> npt.NDArray[np.float64]:
     """[m_x, m_z] (last axis) of one matrix at (..., 3) eye-space points."""
+def frame(view: ArrayLike, near: float, far: float, half_fov: float, light_dir: Vec3, *,
+          aspect: float = ..., receivers: Optional[ArrayLike] = ..., casters: Optional[ArrayLike] = ...,
+          depth_range: Optional[ArrayLike] = ..., depth_clamp: bool = ..., map_resolution: int = ...,
+          image_height: int = ...,
+          scheme: Literal["single", "cascades", "stable", "tsm", "faces"] = ...,
+          rule: Optional[str] = ..., k: Optional[int] = ...,
+          partition: Optional[Literal["self_similar", "log", "uniform", "practical", "adaptive",
+                                      "equal_error"]] = ...,
+          splits: Optional[ArrayLike] = ..., fractions: Optional[ArrayLike] = ...,
+          bevy: Optional[BevySplits] = ..., lambda_: Optional[float] = ...,
+          overlap: Optional[float] = ..., eta: Optional[float] = ..., focus: Optional[float] = ...,
+          near_hint: Optional[float] = ..., far_hint: Optional[float] = ...,
+          shadow_distance: Optional[float] = ..., xi: Optional[float] = ...,
+          iterative: Optional[int] = ..., centre: Literal["rule", "eye", "nearest_vertex"] = ...,
+          clip_depth: ClipDepth = ...,
+          dtype: Union[type, np.dtype, Literal["float64", "float32"], None] = ...) -> FrameResult:
+    """The shadow maps of one frame in world space, fitted to the scene (the crate's frame API)."""
 def sweep_angles(elevations: int, azimuths: int) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """The grid's elevations (both ends) and azimuths (2π excluded)."""
 def sweep(near: float, far: float, half_fov: float, rule: str = ...,

@@ -122,7 +122,15 @@ fn count_u32_or_none(name: &str, ob: &Any<'_>) -> PyResult<Option<u32>> {
     whole(name, ob, u64::from(u32::MAX)).map(|v| Some(v as u32))
 }
 
+/// A `u32` count (`map_resolution`, `image_height`).
+fn count_u32(name: &str, ob: &Any<'_>) -> PyResult<u32> {
+    // At most u32::MAX: the cast is exact.
+    whole(name, ob, u64::from(u32::MAX)).map(|v| v as u32)
+}
+
 named! {
+    fn map_resolution = count_u32() -> u32;
+    fn image_height = count_u32() -> u32;
     fn near = real() -> f64;
     fn far = real() -> f64;
     fn half_fov = real() -> f64;
@@ -145,6 +153,11 @@ named! {
     fn iterative = count_u32_or_none() -> Option<u32>;
 }
 
+/// `overlap` where its default is `None` (`frame`).
+pub fn overlap_or_none(ob: &Any<'_>) -> PyResult<Option<f64>> {
+    real_or_none("overlap", ob)
+}
+
 /// `k` of `z_partition`: one real number (a whole one, which the closed form's `count` checks).
 pub fn k_real(ob: &Any<'_>) -> PyResult<f64> {
     real("k", ob)
@@ -160,4 +173,4 @@ macro_rules! named_text {
     )+};
 }
 
-named_text!(rule, partition, warp, clip_depth, scheme, light, falloff);
+named_text!(rule, partition, warp, clip_depth, scheme, light, falloff, centre);

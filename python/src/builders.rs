@@ -52,13 +52,13 @@ pub fn view_of(near: f64, far: f64, half_fov: f64, aspect: f64) -> PyResult<View
 }
 
 /// A 3-vector from any sequence or array of three real numbers.
-fn vec3<'py>(name: &str, ob: &Any<'py>) -> PyResult<DVec3> {
+pub(crate) fn vec3<'py>(name: &str, ob: &Any<'py>) -> PyResult<DVec3> {
     let v = values(name, ob, &[3])?;
     Ok(DVec3::new(v[0], v[1], v[2]))
 }
 
 /// The values of an array argument of exactly `shape`, C order.
-fn values<'py>(name: &str, ob: &Any<'py>, shape: &[usize]) -> PyResult<Vec<f64>> {
+pub(crate) fn values<'py>(name: &str, ob: &Any<'py>, shape: &[usize]) -> PyResult<Vec<f64>> {
     match FloatArg::extract(name, ob)? {
         FloatArg::Number(_) => Err(PyValueError::new_err(format!(
             "{name} must be an array of shape {} (got a number)",
@@ -78,17 +78,17 @@ fn values<'py>(name: &str, ob: &Any<'py>, shape: &[usize]) -> PyResult<Vec<f64>>
 }
 
 /// Row-major 16 values → glam's column-major matrix.
-fn from_rows(v: &[f64]) -> DMat4 {
+pub(crate) fn from_rows(v: &[f64]) -> DMat4 {
     DMat4::from_cols_array(&std::array::from_fn(|k| v[(k % 4) * 4 + k / 4]))
 }
 
 /// glam's matrix → row-major 16 values.
-fn to_rows(m: &DMat4) -> [f64; 16] {
+pub(crate) fn to_rows(m: &DMat4) -> [f64; 16] {
     let c = m.to_cols_array();
     std::array::from_fn(|k| c[(k % 4) * 4 + k / 4])
 }
 
-fn clip_depth(name: &str) -> PyResult<ClipDepth> {
+pub(crate) fn clip_depth(name: &str) -> PyResult<ClipDepth> {
     Ok(
         match choice(
             "clip_depth",
@@ -103,7 +103,7 @@ fn clip_depth(name: &str) -> PyResult<ClipDepth> {
 }
 
 /// Several matrices as an (m, 4, 4) array.
-fn stack<'py>(py: Python<'py>, ms: &[DMat4]) -> PyResult<Any<'py>> {
+pub(crate) fn stack<'py>(py: Python<'py>, ms: &[DMat4]) -> PyResult<Any<'py>> {
     let mut v = Vec::with_capacity(16 * ms.len());
     for m in ms {
         v.extend_from_slice(&to_rows(m));
@@ -267,7 +267,11 @@ pub fn n_prime_for(
     Ok(maps::n_prime_for(&view, l, r).map_err(err)?.value())
 }
 
-fn split_scheme(name: &str, lambda_: Option<f64>, light_dir: DVec3) -> PyResult<SplitScheme> {
+pub(crate) fn split_scheme(
+    name: &str,
+    lambda_: Option<f64>,
+    light_dir: DVec3,
+) -> PyResult<SplitScheme> {
     let name = choice(
         "partition",
         name,

@@ -10,6 +10,7 @@ mod args;
 mod broadcast;
 mod builders;
 mod closed;
+mod frame;
 mod sweep;
 
 use pyo3::prelude::*;
@@ -65,6 +66,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(tsm, m)?)?;
     m.add_function(wrap_pyfunction!(frustum_max, m)?)?;
     m.add_function(wrap_pyfunction!(point_error, m)?)?;
+    m.add_function(wrap_pyfunction!(frame::frame, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_angles, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
     m.add("WARP_RULES", builders::WARP_RULES.to_vec())?;

@@ -54,9 +54,13 @@ CALLS = {
     "tsm": dict(VIEW, light_dir=LIGHT),
     "frustum_max": dict(VIEW, matrix=M, light_dir=LIGHT),
     "point_error": dict(VIEW, matrix=M, light_dir=LIGHT, point=[0.0, 0.0, -10.0]),
+    "frame": dict(VIEW, view=np.eye(4), light_dir=LIGHT),
     "sweep_angles": dict(elevations=3, azimuths=4),
     "sweep": dict(VIEW, elevations=3, azimuths=4),
 }
+
+BEVY = dict(num_cascades=3, minimum_distance=1.0, maximum_distance=80.0,
+            first_cascade_far_bound=5.0, overlap_proportion=0.2)
 
 # The arguments an argument needs beside it to be used (so that its own check is reached).
 _RULE_ARGS = {"eta": {"rule": "eta", "eta": 0.2}, "focus": {"rule": "tsm", "focus": 30.0},
@@ -74,6 +78,20 @@ CONTEXT = {
                     "light_angle": {"scheme": "adaptive", "light_angle": 1.0, "ratio": 2.0},
                     "ratio": {"scheme": "adaptive", "light_angle": 1.0, "ratio": 2.0}},
     "critical_resolution": {},
+    "frame": {**_RULE_ARGS,
+              "k": {"scheme": "cascades", "partition": "log", "k": 2},
+              "partition": {"scheme": "cascades", "partition": "log", "k": 2},
+              "lambda_": {"scheme": "cascades", "partition": "practical", "k": 2, "lambda_": 0.5},
+              "overlap": {"scheme": "cascades", "partition": "log", "k": 2, "overlap": 0.1},
+              "splits": {"scheme": "cascades", "splits": [1.0, 10.0, 100.0]},
+              "fractions": {"scheme": "cascades", "fractions": [0.1]},
+              "bevy": {"scheme": "cascades", "bevy": BEVY},
+              "xi": {"scheme": "tsm", "xi": -0.2},
+              "iterative": {"scheme": "tsm", "iterative": 64},
+              "receivers": {"receivers": [[[-5.0, -2.0, -50.0], [5.0, 0.0, -2.0]]]},
+              "casters": {"receivers": [[[-5.0, -2.0, -50.0], [5.0, 0.0, -2.0]]],
+                          "casters": [[[-1.0, 0.0, -20.0], [1.0, 3.0, -15.0]]]},
+              "depth_range": {"depth_range": [2.0, 50.0]}},
 }
 
 RAGGED = [[1.0], [1.0, 2.0]]
@@ -99,6 +117,10 @@ FUNCTIONS = sorted(n for n in sa.__all__ if callable(getattr(sa, n)))
 
 def _kind(annotation):
     """'str', 'int', 'float' (one number) or 'array' (anything numpy.asarray takes)."""
+    if annotation == "bool":
+        return "bool"
+    if "BevySplits" in annotation:
+        return "dict"
     if "Literal" in annotation or "str" in annotation or annotation == "ClipDepth":
         return "str"
     if "int" in annotation:
@@ -119,13 +141,24 @@ def _cases():
             kind = _kind(STUBS[fn][arg])
             wrong = [("a str", "abc"), ("a ragged list", RAGGED)] if kind != "str" else \
                 [("a float", 1.5), ("a list", ["uniform"])]
+            if kind in ("bool", "dict"):
+                wrong.append(("a float", 1.5))
             if not _optional(fn, arg):
                 wrong.append(("None", None))
             if kind == "float":
                 wrong.append(("an array", np.array([1.0, 2.0])))
             for label, v in wrong:
                 yield pytest.param(fn, arg, v, TypeError, id=f"{fn}-{arg}-{label}")
-            if kind == "str":
+            if kind == "bool":
+                bad = []
+            elif kind == "dict":
+                bad = [("empty", {}, True), ("unknown key", {**BEVY, "other": 1.0}, True)]
+                bad += [(f"{key}={v}", {**BEVY, key: v}, True)
+                        for key in BEVY for v in (math.nan, -1.0)]
+                for key in BEVY:
+                    yield pytest.param(fn, arg, {**BEVY, key: "abc"}, TypeError,
+                                       id=f"{fn}-{arg}-{key}=abc")
+            elif kind == "str":
                 bad = [("unknown", "no-such-choice", True)]
             elif kind == "int":
                 bad = [("-1", -1, True), ("2**40", 2**40, True), ("2**70", 2**70, True),
@@ -188,6 +221,8 @@ def test_every_argument_of_every_function(fn, arg, value, expected):
     assert expected is None, f"{fn}({arg}={value!r}) returned {out!r}, expected {expected}"
     # Accepted: the value lies in the domain, and the answer holds no NaN.
     values = out[0] if fn == "faces" else out
+    if fn == "frame":
+        values = np.concatenate([np.ravel(v) for v in out.values() if isinstance(v, np.ndarray)])
     assert not np.isnan(np.asarray(values, dtype=np.float64)).any(), (fn, arg, value, out)
 
 

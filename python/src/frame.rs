@@ -1,0 +1,625 @@
+//! `frame`: the crate's world-space frame API (`shadow_aliasing::frame`), one call per light per
+//! frame, its maps returned as NumPy arrays.
+
+use crate::args;
+use crate::broadcast::{fmt_shape, to_python, values_of, FloatArg};
+use crate::builders::{err, from_rows, rule, split_scheme, to_rows, vec3, RuleParams};
+use crate::closed::choice;
+use glam::{DMat4, DVec3};
+use numpy::PyUntypedArrayMethods;
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyDict, PyList, PyString};
+use shadow_aliasing::frame::{
+    frame as build_frame, Aabb, Bound as SceneBound, Camera, CascadeSplits, Focus, FrameInput,
+    FrameScheme, LightCase, WarpCentre,
+};
+use shadow_aliasing::maps::faces::FaceWarp;
+use shadow_aliasing::maps::{ClipDepth, TsmOptions, TsmSearch, WarpRule};
+use shadow_aliasing::Error;
+
+type Any<'py> = Bound<'py, PyAny>;
+
+/// The keys of `bevy`, Bevy's `CascadeShadowConfigBuilder` fields.
+const BEVY_KEYS: [&str; 5] = [
+    "num_cascades",
+    "minimum_distance",
+    "maximum_distance",
+    "first_cascade_far_bound",
+    "overlap_proportion",
+];
+
+fn focus_name(f: Focus) -> &'static str {
+    match f {
+        Focus::Body => "body",
+        Focus::Empty => "empty",
+        Focus::Flat => "flat",
+        Focus::EdgeOn => "edge_on",
+        Focus::ZeroDepth => "zero_depth",
+    }
+}
+
+fn light_name(l: LightCase) -> &'static str {
+    match l {
+        LightCase::General => "general",
+        LightCase::SunStraightDown => "sun_straight_down",
+        LightCase::ParallelToView => "parallel_to_view",
+    }
+}
+
+/// World-space boxes from an `(n, 2, 3)` array (each `[min, max]`), or `None` for no bound.
+fn boxes(name: &'static str, ob: Option<&Any<'_>>) -> PyResult<Option<Vec<Aabb>>> {
+    let Some(ob) = ob.filter(|o| !o.is_none()) else {
+        return Ok(None);
+    };
+    let a = match FloatArg::extract(name, ob)? {
+        FloatArg::Number(_) => {
+            return Err(PyValueError::new_err(format!(
+                "{name} must be an array of shape (n, 2, 3) of boxes [min, max] (got a number)"
+            )))
+        }
+        FloatArg::Array(a) => a,
+    };
+    let shape = a.shape().to_vec();
+    if !(shape.len() == 3 && shape[1] == 2 && shape[2] == 3) {
+        return Err(PyValueError::new_err(format!(
+            "{name} must be an array of shape (n, 2, 3) of boxes [min, max] (got shape {})",
+            fmt_shape(&shape)
+        )));
+    }
+    let v = values_of(&a)?;
+    v.chunks_exact(6)
+        .enumerate()
+        .map(|(i, b)| {
+            Aabb::new([b[0], b[1], b[2]], [b[3], b[4], b[5]]).map_err(|_| {
+                PyValueError::new_err(format!(
+                    "{name} boxes must be finite with min not above max (got min={:?}, max={:?} \
+                     at index {i})",
+                    &b[..3],
+                    &b[3..]
+                ))
+            })
+        })
+        .collect::<PyResult<Vec<_>>>()
+        .map(Some)
+}
+
+/// A one-dimensional array of real numbers (`splits`, `fractions`), or `None`.
+fn list(name: &str, ob: Option<&Any<'_>>) -> PyResult<Option<Vec<f64>>> {
+    let Some(ob) = ob.filter(|o| !o.is_none()) else {
+        return Ok(None);
+    };
+    match FloatArg::extract(name, ob)? {
+        FloatArg::Number(_) => Err(PyValueError::new_err(format!(
+            "{name} must be a one-dimensional array of numbers (got a number)"
+        ))),
+        FloatArg::Array(a) if a.ndim() == 1 => values_of(&a).map(Some),
+        FloatArg::Array(a) => Err(PyValueError::new_err(format!(
+            "{name} must be a one-dimensional array of numbers (got shape {})",
+            fmt_shape(a.shape())
+        ))),
+    }
+}
+
+/// `depth_range`: two numbers `(z_min, z_max)`, or `None`.
+fn pair(name: &str, ob: Option<&Any<'_>>) -> PyResult<Option<(f64, f64)>> {
+    match list(name, ob)? {
+        None => Ok(None),
+        Some(v) if v.len() == 2 => Ok(Some((v[0], v[1]))),
+        Some(v) => Err(PyValueError::new_err(format!(
+            "{name} must hold two numbers (z_min, z_max) (got {})",
+            v.len()
+        ))),
+    }
+}
+
+/// A bool (Python's or NumPy's); anything else is a `TypeError`.
+fn depth_clamp_arg(ob: &Any<'_>) -> PyResult<bool> {
+    let name = "depth_clamp";
+    let is_numpy_bool = ob.is_instance(&ob.py().import("numpy")?.getattr("bool_")?)?;
+    if ob.is_instance_of::<PyBool>() || is_numpy_bool {
+        return ob.is_truthy();
+    }
+    Err(PyTypeError::new_err(format!(
+        "{name} must be a bool (got {})",
+        args::kind(ob)
+    )))
+}
+
+/// `dtype`: float64 (the default) or float32, as a NumPy type, dtype or its name.
+fn dtype(ob: Option<&Any<'_>>) -> PyResult<bool> {
+    let Some(ob) = ob.filter(|o| !o.is_none()) else {
+        return Ok(false);
+    };
+    let name = if let Ok(s) = ob.cast::<PyString>() {
+        s.to_str()?.to_string()
+    } else {
+        let np = ob.py().import("numpy")?;
+        let is_type = ob.is(&np.getattr("float32")?) || ob.is(&np.getattr("float64")?);
+        let is_dtype = ob.is_instance(&np.getattr("dtype")?)?;
+        if !(is_type || is_dtype) {
+            return Err(PyTypeError::new_err(format!(
+                "dtype must be numpy.float64 or numpy.float32 (got {})",
+                args::kind(ob)
+            )));
+        }
+        np.getattr("dtype")?
+            .call1((ob,))?
+            .getattr("name")?
+            .extract::<String>()?
+    };
+    Ok(choice("dtype", &name, &["float64", "float32"])? == "float32")
+}
+
+/// `bevy`: a mapping with Bevy's `CascadeShadowConfigBuilder` fields.
+fn bevy_splits(ob: &Any<'_>) -> PyResult<CascadeSplits<'static>> {
+    let d = ob.cast::<PyDict>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "bevy must be a dict with the keys {} (got {})",
+            BEVY_KEYS.join(", "),
+            args::kind(ob)
+        ))
+    })?;
+    let mut v = [0.0; 5];
+    for (slot, key) in v.iter_mut().zip(BEVY_KEYS) {
+        let item = d.get_item(key)?.ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "bevy must have the keys {} (missing {key})",
+                BEVY_KEYS.join(", ")
+            ))
+        })?;
+        *slot = args::real(&format!("bevy[{key:?}]"), &item)?;
+    }
+    for key in d.keys() {
+        let k: String = key.str()?.extract()?;
+        if !BEVY_KEYS.contains(&k.as_str()) {
+            return Err(PyValueError::new_err(format!(
+                "bevy has an unknown key {k:?} (the keys: {})",
+                BEVY_KEYS.join(", ")
+            )));
+        }
+    }
+    let k = v[0];
+    if !(k.fract() == 0.0 && (1.0..=16.0).contains(&k)) {
+        return Err(PyValueError::new_err(format!(
+            "bevy[\"num_cascades\"] must be a whole number in [1, 16] (got {k})"
+        )));
+    }
+    Ok(CascadeSplits::Bevy {
+        k: k as usize,
+        minimum_distance: v[1],
+        maximum_distance: v[2],
+        first_far_bound: v[3],
+        overlap_proportion: v[4],
+    })
+}
+
+/// The frame's error for Python: the crate's names of `bevy`'s fields and of the view matrix
+/// spelled as Python's arguments.
+fn frame_err(e: Error, bevy: bool) -> PyErr {
+    match e {
+        Error::InvalidArgument { name, reason } => {
+            let py_name = match name {
+                "world_to_eye" => "view".to_string(),
+                "light_dir_world" => "light_dir".to_string(),
+                "minimum_distance" | "maximum_distance" | "overlap" | "k" if bevy => {
+                    let key = match name {
+                        "overlap" => "overlap_proportion",
+                        "k" => "num_cascades",
+                        n => n,
+                    };
+                    format!("bevy[{key:?}]")
+                }
+                "first_far_bound" => "bevy[\"first_cascade_far_bound\"]".to_string(),
+                "planes" => "splits".to_string(),
+                "map_lines" => "iterative".to_string(),
+                n => n.to_string(),
+            };
+            PyValueError::new_err(format!("{py_name} {reason}"))
+        }
+        e => err(e),
+    }
+}
+
+/// The scheme's argument `name` given where the scheme does not use it.
+fn unused(name: &str, scheme: &str) -> PyErr {
+    PyValueError::new_err(format!(
+        "{name} is not used by scheme \"{scheme}\": drop it"
+    ))
+}
+
+/// The shadow maps of one frame, fitted to the scene (``shadow_aliasing::frame``): see
+/// docs/python.md. Returns a dict of NumPy arrays, one entry per built map along the first axis.
+#[pyfunction]
+#[pyo3(signature = (view, near, far, half_fov, light_dir, *, aspect=1.0, receivers=None,
+    casters=None, depth_range=None, depth_clamp=false, map_resolution=2048, image_height=2048,
+    scheme="single", rule=None, k=None, partition=None, splits=None, fractions=None, bevy=None,
+    lambda_=None, overlap=None, eta=None, focus=None, near_hint=None, far_hint=None,
+    shadow_distance=None, xi=None, iterative=None, centre="rule", clip_depth="neg_one_to_one",
+    dtype=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn frame<'py>(
+    py: Python<'py>,
+    view: &Any<'py>,
+    #[pyo3(from_py_with = args::near)] near: f64,
+    #[pyo3(from_py_with = args::far)] far: f64,
+    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
+    light_dir: &Any<'py>,
+    #[pyo3(from_py_with = args::aspect)] aspect: f64,
+    receivers: Option<&Any<'py>>,
+    casters: Option<&Any<'py>>,
+    depth_range: Option<&Any<'py>>,
+    #[pyo3(from_py_with = depth_clamp_arg)] depth_clamp: bool,
+    #[pyo3(from_py_with = args::map_resolution)] map_resolution: u32,
+    #[pyo3(from_py_with = args::image_height)] image_height: u32,
+    #[pyo3(from_py_with = args::scheme)] scheme: &str,
+    rule: Option<&Any<'py>>,
+    k: Option<&Any<'py>>,
+    partition: Option<&Any<'py>>,
+    splits: Option<&Any<'py>>,
+    fractions: Option<&Any<'py>>,
+    bevy: Option<&Any<'py>>,
+    #[pyo3(from_py_with = args::lambda_)] lambda_: Option<f64>,
+    #[pyo3(from_py_with = args::overlap_or_none)] overlap: Option<f64>,
+    #[pyo3(from_py_with = args::eta)] eta: Option<f64>,
+    #[pyo3(from_py_with = args::focus)] focus: Option<f64>,
+    #[pyo3(from_py_with = args::near_hint)] near_hint: Option<f64>,
+    #[pyo3(from_py_with = args::far_hint)] far_hint: Option<f64>,
+    #[pyo3(from_py_with = args::shadow_distance)] shadow_distance: Option<f64>,
+    #[pyo3(from_py_with = args::xi)] xi: Option<f64>,
+    #[pyo3(from_py_with = args::iterative)] iterative: Option<u32>,
+    #[pyo3(from_py_with = args::centre)] centre: &str,
+    #[pyo3(from_py_with = args::clip_depth)] clip_depth: &str,
+    dtype: Option<&Any<'py>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    // Every argument converted and checked before the frame is built.
+    let view_m = from_rows(&crate::builders::values("view", view, &[4, 4])?);
+    let camera =
+        Camera::new(view_m, near, far, half_fov, aspect).map_err(|e| frame_err(e, false))?;
+    let light = vec3("light_dir", light_dir)?;
+    let receivers = boxes("receivers", receivers)?;
+    let casters = boxes("casters", casters)?;
+    let depth_range = pair("depth_range", depth_range)?;
+    let rule_name = rule
+        .filter(|r| !r.is_none())
+        .map(|r| args::rule(r))
+        .transpose()?;
+    let k = k.filter(|v| !v.is_none()).map(|v| args::k(v)).transpose()?;
+    let partition = partition
+        .filter(|v| !v.is_none())
+        .map(|v| args::partition(v))
+        .transpose()?;
+    let splits = list("splits", splits)?;
+    let fractions = list("fractions", fractions)?;
+    let bevy = bevy.filter(|b| !b.is_none()).map(bevy_splits).transpose()?;
+    let bevy_given = bevy.is_some();
+    let depth = crate::builders::clip_depth(clip_depth)?;
+    let f32_out = self::dtype(dtype)?;
+    let centre = match choice("centre", centre, &["rule", "eye", "nearest_vertex"])? {
+        "rule" => WarpCentre::Rule,
+        "eye" => WarpCentre::Eye,
+        _ => WarpCentre::NearestVertex,
+    };
+    let scheme = choice(
+        "scheme",
+        scheme,
+        &["single", "cascades", "stable", "tsm", "faces"],
+    )?;
+    let eye_light = camera.world_to_eye().transform_vector3(light);
+    let rp = RuleParams {
+        eta,
+        focus,
+        near_hint,
+        far_hint,
+        shadow_distance,
+    };
+    let cam_view = *camera.view();
+    let warp_rule = |name: Option<&str>| -> PyResult<WarpRule> {
+        self::rule(&cam_view, name.unwrap_or("minimax"), rp)
+    };
+    // The cascades' splits (cascades and stable).
+    let cascade_splits = || -> PyResult<CascadeSplits<'_>> {
+        let given = [splits.is_some(), fractions.is_some(), bevy.is_some()];
+        if given.iter().filter(|g| **g).count() + usize::from(partition.is_some()) > 1 {
+            return Err(PyValueError::new_err(
+                "partition, splits, fractions and bevy are alternatives: give one",
+            ));
+        }
+        if bevy.is_some() && overlap.is_some() {
+            return Err(PyValueError::new_err(
+                "overlap is not used with bevy, which has its own overlap_proportion: drop it",
+            ));
+        }
+        if lambda_.is_some() && partition != Some("practical") {
+            return Err(PyValueError::new_err(
+                "lambda_ is only used by partition \"practical\"",
+            ));
+        }
+        if k.is_some() && partition.is_none() {
+            return Err(PyValueError::new_err(
+                "k is only used with partition (splits, fractions and bevy give the count)",
+            ));
+        }
+        let overlap_v = overlap.unwrap_or(0.0);
+        if let Some(planes) = splits.as_deref() {
+            return Ok(CascadeSplits::Distances {
+                planes,
+                overlap: overlap_v,
+            });
+        }
+        if let Some(fr) = fractions.as_deref() {
+            return Ok(CascadeSplits::Fractions {
+                fractions: fr,
+                overlap: overlap_v,
+            });
+        }
+        if let Some(b) = bevy {
+            return Ok(b);
+        }
+        let k = k.ok_or_else(|| {
+            PyValueError::new_err(
+                "k is missing: cascades need k with partition (or splits, fractions or bevy)",
+            )
+        })?;
+        match partition.unwrap_or("self_similar") {
+            "equal_error" => {
+                if overlap.is_some() {
+                    return Err(PyValueError::new_err(
+                        "overlap is not used by partition \"equal_error\", whose maps cover \
+                         exactly their splits: drop it",
+                    ));
+                }
+                Ok(CascadeSplits::EqualError { k })
+            }
+            p => Ok(CascadeSplits::Scheme {
+                scheme: split_scheme(p, lambda_, eye_light).map_err(|e| {
+                    if e.to_string().contains("partition must be") {
+                        PyValueError::new_err(format!("{} or \"equal_error\"", e.value(py)))
+                    } else {
+                        e
+                    }
+                })?,
+                k,
+                overlap: overlap_v,
+            }),
+        }
+    };
+    let no_cascades = |s: &str| -> PyResult<()> {
+        for (given, name) in [
+            (partition.is_some(), "partition"),
+            (splits.is_some(), "splits"),
+            (fractions.is_some(), "fractions"),
+            (bevy.is_some(), "bevy"),
+            (lambda_.is_some(), "lambda_"),
+            (overlap.is_some(), "overlap"),
+        ] {
+            if given {
+                return Err(unused(name, s));
+            }
+        }
+        Ok(())
+    };
+    let no_tsm = |s: &str| -> PyResult<()> {
+        if xi.is_some() {
+            return Err(unused("xi", s));
+        }
+        if iterative.is_some() {
+            return Err(unused("iterative", s));
+        }
+        Ok(())
+    };
+    let fs: FrameScheme<'_> = match scheme {
+        "single" => {
+            no_cascades(scheme)?;
+            no_tsm(scheme)?;
+            if k.is_some() {
+                return Err(unused("k", scheme));
+            }
+            FrameScheme::Single(warp_rule(rule_name)?)
+        }
+        "cascades" => {
+            no_tsm(scheme)?;
+            let r = warp_rule(rule_name)?;
+            FrameScheme::Cascades {
+                splits: cascade_splits()?,
+                rule: r,
+            }
+        }
+        "stable" => {
+            no_tsm(scheme)?;
+            if rule_name.is_some() {
+                return Err(unused("rule", scheme));
+            }
+            for (given, name) in [
+                (eta.is_some(), "eta"),
+                (focus.is_some(), "focus"),
+                (near_hint.is_some(), "near_hint"),
+                (far_hint.is_some(), "far_hint"),
+                (shadow_distance.is_some(), "shadow_distance"),
+            ] {
+                if given {
+                    return Err(unused(name, scheme));
+                }
+            }
+            FrameScheme::Stable(cascade_splits()?)
+        }
+        "tsm" => {
+            no_cascades(scheme)?;
+            if rule_name.is_some() {
+                return Err(unused("rule", scheme));
+            }
+            if k.is_some() {
+                return Err(unused("k", scheme));
+            }
+            for (given, name) in [
+                (eta.is_some(), "eta"),
+                (near_hint.is_some(), "near_hint"),
+                (far_hint.is_some(), "far_hint"),
+                (shadow_distance.is_some(), "shadow_distance"),
+            ] {
+                if given {
+                    return Err(unused(name, scheme));
+                }
+            }
+            let search = match (xi, iterative) {
+                (None, None) => TsmSearch::EightyPercent,
+                (Some(x), None) => TsmSearch::Line(x),
+                (None, Some(map_lines)) => TsmSearch::Iterative { map_lines },
+                _ => {
+                    return Err(PyValueError::new_err(
+                        "xi and iterative are alternatives: give at most one",
+                    ))
+                }
+            };
+            FrameScheme::Tsm(TsmOptions {
+                focus: focus.unwrap_or(0.5 * (far - near)),
+                search,
+            })
+        }
+        _ => {
+            no_cascades(scheme)?;
+            no_tsm(scheme)?;
+            for (given, name) in [
+                (eta.is_some(), "eta"),
+                (focus.is_some(), "focus"),
+                (near_hint.is_some(), "near_hint"),
+                (far_hint.is_some(), "far_hint"),
+                (shadow_distance.is_some(), "shadow_distance"),
+            ] {
+                if given {
+                    return Err(unused(name, scheme));
+                }
+            }
+            let rule = match choice(
+                "rule",
+                rule_name.unwrap_or("lispsm"),
+                &["uniform", "psm", "lispsm"],
+            )? {
+                "uniform" => FaceWarp::Uniform,
+                "psm" => FaceWarp::Psm,
+                _ => FaceWarp::Lispsm,
+            };
+            FrameScheme::Faces {
+                rule,
+                k: k.unwrap_or(1),
+            }
+        }
+    };
+    let mut input = FrameInput::new(camera, light, map_resolution, image_height)
+        .scheme(fs)
+        .depth_clamp(depth_clamp)
+        .centre(centre);
+    if let Some(b) = receivers.as_deref() {
+        input = input.receivers(SceneBound::Boxes(b));
+    }
+    if let Some(b) = casters.as_deref() {
+        input = input.casters(SceneBound::Boxes(b));
+    }
+    if let Some((a, b)) = depth_range {
+        input = input.depth_range(a, b);
+    }
+    let f = py
+        .detach(|| build_frame(&input))
+        .map_err(|e| frame_err(e, bevy_given))?;
+    result(py, &f, depth, f32_out)
+}
+
+/// The frame as a dict of arrays.
+fn result<'py>(
+    py: Python<'py>,
+    f: &shadow_aliasing::frame::Frame,
+    depth: ClipDepth,
+    f32_out: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let maps: Vec<(usize, &shadow_aliasing::frame::FrameMap)> = f
+        .slots()
+        .iter()
+        .enumerate()
+        .filter_map(|(i, m)| m.as_ref().map(|m| (i, m)))
+        .collect();
+    let m = maps.len();
+    let matrices = |g: &dyn Fn(&shadow_aliasing::frame::FrameMap) -> DMat4| -> PyResult<Any<'py>> {
+        let mut v = Vec::with_capacity(16 * m);
+        for (_, map) in &maps {
+            v.extend_from_slice(&to_rows(&g(map)));
+        }
+        let a = to_python(py, vec![m, 4, 4], v)?;
+        if f32_out {
+            a.call_method1("astype", ("float32",))
+        } else {
+            Ok(a)
+        }
+    };
+    let column = |g: &dyn Fn(&shadow_aliasing::frame::FrameMap) -> f64| -> PyResult<Any<'py>> {
+        to_python(py, vec![m], maps.iter().map(|(_, x)| g(x)).collect())
+    };
+    let pairs =
+        |g: &dyn Fn(&shadow_aliasing::frame::FrameMap) -> (f64, f64)| -> PyResult<Any<'py>> {
+            to_python(
+                py,
+                vec![m, 2],
+                maps.iter()
+                    .flat_map(|(_, x)| {
+                        let (a, b) = g(x);
+                        [a, b]
+                    })
+                    .collect(),
+            )
+        };
+    let planes = |vol: &shadow_aliasing::frame::CullVolume| -> PyResult<Any<'py>> {
+        let p = vol.planes();
+        to_python(
+            py,
+            vec![p.len(), 4],
+            p.iter().flat_map(|q| q.to_array()).collect(),
+        )
+    };
+    let d = PyDict::new(py);
+    d.set_item("focus", focus_name(f.focus()))?;
+    d.set_item("light", light_name(f.light_case()))?;
+    d.set_item(
+        "light_dir_eye",
+        to_python(py, vec![3], f.light_dir_eye().to_array().to_vec())?,
+    )?;
+    d.set_item("world_to_clip", matrices(&|x| x.world_to_clip(depth))?)?;
+    d.set_item(
+        "eye_to_clip",
+        matrices(&|x| x.shadow.with_clip_depth(depth))?,
+    )?;
+    d.set_item("n_prime", column(&|x| x.shadow.n_prime().value())?)?;
+    d.set_item("depth", pairs(&|x| (x.shadow.near(), x.shadow.far()))?)?;
+    d.set_item("split", pairs(&|x| x.split)?)?;
+    d.set_item("blend", pairs(&|x| x.blend)?)?;
+    d.set_item("texel_world", column(&|x| x.texel_world)?)?;
+    d.set_item("max_mx", column(&|x| x.max_mx)?)?;
+    d.set_item("max_mz", column(&|x| x.max_mz)?)?;
+    d.set_item("storage_factor", column(&|x| x.storage_factor)?)?;
+    d.set_item("max_error_pixels", column(&|x| x.max_error_pixels)?)?;
+    let slot: Vec<i64> = maps.iter().map(|(i, _)| *i as i64).collect();
+    d.set_item("slot", numpy::PyArray1::from_vec(py, slot))?;
+    d.set_item(
+        "map_focus",
+        PyList::new(py, maps.iter().map(|(_, x)| focus_name(x.focus)))?,
+    )?;
+    d.set_item(
+        "face",
+        PyList::new(py, maps.iter().map(|(_, x)| x.face.map(|f| f.name())))?,
+    )?;
+    let mut bodies = Vec::with_capacity(m);
+    let mut casters = Vec::with_capacity(m);
+    let mut receivers = Vec::with_capacity(m);
+    for (_, x) in &maps {
+        let b = x.body();
+        bodies.push(to_python(
+            py,
+            vec![b.len(), 3],
+            b.iter().flat_map(|p: &DVec3| p.to_array()).collect(),
+        )?);
+        casters.push(planes(x.casters_volume())?);
+        receivers.push(planes(x.receivers_volume())?);
+    }
+    d.set_item("body", PyList::new(py, bodies)?)?;
+    d.set_item("casters_volume", PyList::new(py, casters)?)?;
+    d.set_item("receivers_volume", PyList::new(py, receivers)?)?;
+    Ok(d)
+}
