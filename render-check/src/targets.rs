@@ -4,10 +4,14 @@
 
 use crate::run::CaseSummary;
 
-/// Median of ‖J_rendered − J_predicted‖_F / ‖J_predicted‖_F, at most.
-pub const MEDIAN_REL_DIFF: f64 = 0.01;
-/// 99th percentile of the same, at most.
-pub const P99_REL_DIFF: f64 = 0.05;
+/// Median of ‖J_rendered − J_predicted‖_F / ‖J_predicted‖_F, at most. The issue asked for 1 %;
+/// the exact derivatives ([`crate::perspective`]) leave only the GPU's `f32` rounding (medians
+/// up to 2.2·10⁻⁵ measured), so the target is ten times tighter: a matrix 1 % off on the GPU alone
+/// fails it.
+pub const MEDIAN_REL_DIFF: f64 = 1e-3;
+/// 99th percentile of the same, at most (the issue's 5 %, tightened likewise: measured up to
+/// 2.8·10⁻⁴ at 640 × 480, 1.4·10⁻⁴ at 320 × 240; central differences gave 1.8 % and 3.7 %).
+pub const P99_REL_DIFF: f64 = 5e-3;
 /// The rendered and predicted maximum errors agree to this, relatively.
 pub const MAX_ERROR_REL_DIFF: f64 = 0.05;
 /// At least this fraction of the visible pixels has its Jacobian compared (a comparison over
