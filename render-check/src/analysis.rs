@@ -13,6 +13,7 @@ use crate::perspective::{centred, lloyd2006, one_sided, perspective_error};
 use crate::scene::{ray_occluded, Mesh, Scene, SceneBox, FACING};
 use crate::schemes::{Built, Scheme, View};
 use glam::{DMat2, DMat4, DVec2, DVec3};
+use serde::Serialize;
 use shadow_aliasing::measure::vertex::vertex_max;
 use shadow_aliasing::measure::{surface_footprint, Footprint, Grids};
 
@@ -47,8 +48,10 @@ pub const EDGE_ON_LIGHT: f64 = 0.05;
 /// this many pixel widths of a visible pixel's surface point.
 const VISIBLE_PIXELS: f64 = 3.0;
 
-/// Per-pixel results (for the heat maps) and the case's numbers.
-pub struct Analysis {
+/// A frame's numbers (the fields of summary.json that the analysis measures; docs/rendered.md,
+/// "What is measured").
+#[derive(Debug, Clone, Serialize)]
+pub struct Measured {
     /// Visible pixels (not sky).
     pub visible_pixels: usize,
     /// Pixels whose rendered and predicted Jacobians were compared.
@@ -90,6 +93,12 @@ pub struct Analysis {
     /// of a ground pixel and Eq 7–8 at its depth, and between the rendered maxima and Eq 9–10
     /// (maps whose near end is the camera's near plane). `None` where the case does not apply.
     pub lloyd_rel_diff: Option<f64>,
+}
+
+/// Per-pixel results (for the heat maps) and the case's numbers.
+pub struct Analysis {
+    /// The numbers.
+    pub measured: Measured,
     /// Rendered error per pixel (NaN where not compared).
     pub rendered_error: Vec<f64>,
     /// Predicted error per pixel (NaN where not compared).
@@ -635,7 +644,7 @@ pub fn analyse(
     if let Some(l) = &lloyd {
         lloyd_diff = lloyd_diff.max(l.maxima_diff(&ground_m, width, height, res));
     }
-    Ok(Analysis {
+    let measured = Measured {
         visible_pixels: visible,
         pixels_compared: rels.len(),
         pixels_not_compared: not_compared,
@@ -658,6 +667,9 @@ pub fn analyse(
         frame_error_ratio: ratio,
         frame_error_ratio_worst_visible: worst,
         lloyd_rel_diff: lloyd.map(|_| lloyd_diff),
+    };
+    Ok(Analysis {
+        measured,
         rendered_error,
         predicted_error,
     })

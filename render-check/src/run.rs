@@ -1,6 +1,6 @@
 //! One case (set-up × scheme) end to end, the shimmer test, and summary.json.
 
-use crate::analysis::{analyse, pixel_point, Analysis};
+use crate::analysis::{analyse, pixel_point, Analysis, Measured};
 use crate::gpu::{FrameInput, Gpu, GpuPart};
 use crate::scene::{Mesh, Scene, FACING};
 use crate::schemes::{build, Built, Scheme, Select, View};
@@ -20,46 +20,9 @@ pub struct CaseSummary {
     pub height: u32,
     /// Texels of all the scheme's maps together.
     pub map_texels: u64,
-    /// Visible pixels (not sky).
-    pub visible_pixels: usize,
-    /// Pixels whose Jacobians were compared.
-    pub pixels_compared: usize,
-    /// Visible pixels not compared (no two neighbours on the pixel's surface and map along an
-    /// axis, or no prediction).
-    pub pixels_not_compared: usize,
-    /// Median relative difference, rendered vs predicted Jacobian.
-    pub median_rel_diff: f64,
-    /// 99th percentile.
-    pub p99_rel_diff: f64,
-    /// Largest rendered error, pixels per texel.
-    pub max_rendered_error: f64,
-    /// Largest predicted error, pixels per texel.
-    pub max_predicted_error: f64,
-    /// Visible pixels facing the light that the exact ray cast shadows.
-    pub shadow_pixels: usize,
-    /// Of those, the ones compared (outside the texel band of the boundary).
-    pub shadow_pixels_checked: usize,
-    /// Visible pixels facing the light that the exact ray cast lights.
-    pub lit_pixels: usize,
-    /// Of those, the ones compared.
-    pub lit_pixels_checked: usize,
-    /// Compared pixels in exact shadow rendered lit.
-    pub shadow_misses: usize,
-    /// Compared pixels exactly lit rendered in shadow.
-    pub false_shadows: usize,
-    /// Mismatch fraction of the pixels facing the light within the band (not compared).
-    pub band_mismatch_fraction: f64,
-    /// Visible pixels outside the clip volume of the map the shader selected.
-    pub uncovered_pixels: usize,
-    /// Largest ratio of the rendered perspective error's maximum to the frame's reported M_x or
-    /// M_z, over maps.
-    pub frame_error_ratio: f64,
-    /// Smallest such ratio where the body's worst point is visible (null where it is not).
-    pub frame_error_ratio_worst_visible: Option<f64>,
-    /// Lloyd 2006's overhead case (level set-up): the largest relative difference of the
-    /// rendered m_x, m_z over the ground from Eq 7–8, and of their maxima from Eq 9–10 (null
-    /// where the case does not apply).
-    pub lloyd_rel_diff: Option<f64>,
+    /// What the analysis measured (flattened into the row).
+    #[serde(flatten)]
+    pub measured: Measured,
     /// Fraction of sampled shadow-edge points whose state changed between frames (cascade
     /// schemes).
     pub shimmer_changed_fraction: Option<f64>,
@@ -209,7 +172,9 @@ pub fn run_case(
     .map_err(|e| format!("{setup}/{}: {e}", scheme.name()))?;
     let diagnostics = format!(
         "visible {}, not compared {}, band mismatches {:.4}",
-        a.visible_pixels, a.pixels_not_compared, a.band_mismatch_fraction
+        a.measured.visible_pixels,
+        a.measured.pixels_not_compared,
+        a.measured.band_mismatch_fraction
     );
     Ok(CaseResult {
         summary: CaseSummary {
@@ -218,24 +183,7 @@ pub fn run_case(
             width: sizes.width,
             height: sizes.height,
             map_texels: built.maps.len() as u64 * u64::from(res) * u64::from(res),
-            visible_pixels: a.visible_pixels,
-            pixels_compared: a.pixels_compared,
-            pixels_not_compared: a.pixels_not_compared,
-            median_rel_diff: a.median_rel_diff,
-            p99_rel_diff: a.p99_rel_diff,
-            max_rendered_error: a.max_rendered_error,
-            max_predicted_error: a.max_predicted_error,
-            shadow_pixels: a.shadow_pixels,
-            shadow_pixels_checked: a.shadow_pixels_checked,
-            lit_pixels: a.lit_pixels,
-            lit_pixels_checked: a.lit_pixels_checked,
-            shadow_misses: a.shadow_misses,
-            false_shadows: a.false_shadows,
-            band_mismatch_fraction: a.band_mismatch_fraction,
-            uncovered_pixels: a.uncovered_pixels,
-            frame_error_ratio: a.frame_error_ratio,
-            frame_error_ratio_worst_visible: a.frame_error_ratio_worst_visible,
-            lloyd_rel_diff: a.lloyd_rel_diff,
+            measured: a.measured.clone(),
             shimmer_changed_fraction: None,
             shimmer_points: None,
         },

@@ -36,6 +36,7 @@ pub const MIN_SHIMMER_POINTS: usize = 100;
 /// The targets `case` violates, one line each naming the target, the measured value and the
 /// limit; empty when it meets them all.
 pub fn violations(case: &CaseSummary) -> Vec<String> {
+    let m = &case.measured;
     let mut v = Vec::new();
     let mut at_most = |name: &str, got: f64, limit: f64| {
         // NaN fails (a measurement that is not a number meets no target).
@@ -43,22 +44,22 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
             v.push(format!("{name} = {got:.4e}, limit ≤ {limit:e}"));
         }
     };
-    at_most("median_rel_diff", case.median_rel_diff, MEDIAN_REL_DIFF);
-    at_most("p99_rel_diff", case.p99_rel_diff, P99_REL_DIFF);
+    at_most("median_rel_diff", m.median_rel_diff, MEDIAN_REL_DIFF);
+    at_most("p99_rel_diff", m.p99_rel_diff, P99_REL_DIFF);
     at_most(
         "|max_rendered_error / max_predicted_error − 1|",
-        (case.max_rendered_error / case.max_predicted_error - 1.0).abs(),
+        (m.max_rendered_error / m.max_predicted_error - 1.0).abs(),
         MAX_ERROR_REL_DIFF,
     );
-    at_most("shadow_misses", case.shadow_misses as f64, 0.0);
-    at_most("false_shadows", case.false_shadows as f64, 0.0);
-    at_most("uncovered_pixels", case.uncovered_pixels as f64, 0.0);
+    at_most("shadow_misses", m.shadow_misses as f64, 0.0);
+    at_most("false_shadows", m.false_shadows as f64, 0.0);
+    at_most("uncovered_pixels", m.uncovered_pixels as f64, 0.0);
     at_most(
         "frame_error_ratio − 1 (rendered M_x, M_z over the frame's reported)",
-        case.frame_error_ratio - 1.0,
+        m.frame_error_ratio - 1.0,
         FRAME_EXCESS,
     );
-    if let Some(d) = case.lloyd_rel_diff {
+    if let Some(d) = m.lloyd_rel_diff {
         at_most(
             "lloyd_rel_diff (rendered m_x, m_z against Lloyd 2006 Eq 7-10)",
             d,
@@ -82,17 +83,17 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
     };
     at_least(
         "pixels_compared / visible_pixels",
-        case.pixels_compared as f64 / case.visible_pixels.max(1) as f64,
+        m.pixels_compared as f64 / m.visible_pixels.max(1) as f64,
         MIN_COMPARED_FRACTION,
     );
-    if case.shadow_pixels > 0 {
+    if m.shadow_pixels > 0 {
         at_least(
             "shadow_pixels_checked / shadow_pixels",
-            case.shadow_pixels_checked as f64 / case.shadow_pixels as f64,
+            m.shadow_pixels_checked as f64 / m.shadow_pixels as f64,
             MIN_SHADOW_CHECKED_FRACTION,
         );
     }
-    if let Some(r) = case.frame_error_ratio_worst_visible {
+    if let Some(r) = m.frame_error_ratio_worst_visible {
         at_least(
             "frame_error_ratio_worst_visible (rendered over reported where the worst point shows)",
             r,

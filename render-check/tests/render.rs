@@ -54,36 +54,28 @@ fn setup(name: &str) -> Scene {
         .scene
 }
 
-#[test]
-fn overhead_meets_every_target() {
-    meets_every_target(&gpu(), "overhead", &setup("overhead"), SIZES);
+/// One test per built-in set-up (run in parallel): every scheme meets every target.
+macro_rules! every_target {
+    ($($test:ident: $setup:literal,)*) => {$(
+        #[test]
+        fn $test() {
+            meets_every_target(&gpu(), $setup, &setup($setup), SIZES);
+        }
+    )*};
 }
 
-#[test]
-fn tilted_45_meets_every_target() {
-    meets_every_target(&gpu(), "tilted_45", &setup("tilted_45"), SIZES);
-}
-
-/// The light 5° from behind: the tower behind the camera, outside the view frustum, shadows the
-/// view (a depth range cut at the frustum loses it: the fault suite's no-casters).
-#[test]
-fn behind_5_meets_every_target() {
-    meets_every_target(&gpu(), "behind_5", &setup("behind_5"), SIZES);
-}
-
-#[test]
-fn front_5_meets_every_target() {
-    meets_every_target(&gpu(), "front_5", &setup("front_5"), SIZES);
-}
-
-#[test]
-fn grazing_10_meets_every_target() {
-    meets_every_target(&gpu(), "grazing_10", &setup("grazing_10"), SIZES);
-}
-
-#[test]
-fn parallel_1_meets_every_target() {
-    meets_every_target(&gpu(), "parallel_1", &setup("parallel_1"), SIZES);
+// `behind_5`: the tower behind the camera, outside the view frustum, shadows the view (a depth
+// range cut at the frustum loses it: the fault suite's no-casters). `thin_casters`: its long thin
+// shadow and the poles' shadows are compared with the ray cast (at least 80 % of the shadowed
+// pixels, a target), where eroding the screen image compared none of a 2-pixel shadow.
+every_target! {
+    overhead_meets_every_target: "overhead",
+    tilted_45_meets_every_target: "tilted_45",
+    behind_5_meets_every_target: "behind_5",
+    front_5_meets_every_target: "front_5",
+    grazing_10_meets_every_target: "grazing_10",
+    parallel_1_meets_every_target: "parallel_1",
+    thin_casters_meet_every_target: "thin_casters",
 }
 
 /// Lloyd 2006's overhead case: the rendered m_x, m_z over the ground equal Eq 7–8 at every
@@ -97,18 +89,13 @@ fn level_overhead_meets_lloyd_2006() {
             c.scheme.as_str(),
             "uniform" | "lispsm" | "minimax" | "cascades4_lispsm"
         );
-        assert_eq!(c.lloyd_rel_diff.is_some(), lloyd, "{c:?}");
+        assert_eq!(c.measured.lloyd_rel_diff.is_some(), lloyd, "{c:?}");
         // The near end of the ground is visible: the frame's worst point is reached.
-        assert!(c.frame_error_ratio_worst_visible.is_some(), "{c:?}");
+        assert!(
+            c.measured.frame_error_ratio_worst_visible.is_some(),
+            "{c:?}"
+        );
     }
-}
-
-/// The thin-caster scene (built in as `thin_casters`): its long thin shadow and the poles'
-/// shadows are compared with the ray cast (at least 80 % of the shadowed pixels, a target),
-/// where eroding the screen image compared none of a 2-pixel shadow.
-#[test]
-fn thin_casters_meet_every_target() {
-    meets_every_target(&gpu(), "thin_casters", &setup("thin_casters"), SIZES);
 }
 
 /// The scene files in render-check/scenes/ (there is at least one).
