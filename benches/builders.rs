@@ -106,6 +106,11 @@ fn builders(c: &mut Criterion) {
     g.bench_function("frame_lispsm_scene", |b| {
         b.iter(|| frame_into(bb(&single), &mut out))
     });
+    // The same map without measuring its error (`FrameInput::measure(false)`, issue 23 item 7).
+    let unmeasured = single.measure(false);
+    g.bench_function("frame_lispsm_scene_unmeasured", |b| {
+        b.iter(|| frame_into(bb(&unmeasured), &mut out))
+    });
     // Four stable cascades (practical λ = 0.8) with the same scene bounds; the counterpart is
     // `stable_cascades4`, the frustum-only stable cascades.
     let stable = scene.scheme(FrameScheme::Stable(CascadeSplits::Scheme {

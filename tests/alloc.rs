@@ -235,11 +235,14 @@ fn frame_api_does_not_allocate() {
                 .receivers(Bound::Boxes(&r))
                 .casters(Bound::Boxes(&c))
                 .scheme(scheme);
-            match frame(&input) {
-                Ok(fr) => {
-                    black_box(fr);
+            // With and without measuring the error (issue 23 item 7).
+            for input in [input, input.measure(false)] {
+                match frame(&input) {
+                    Ok(fr) => {
+                        black_box(fr);
+                    }
+                    Err(e) => panic!("{e} at near={}, far={}, light={l}", v.near(), v.far()),
                 }
-                Err(e) => panic!("{e} at near={}, far={}, light={l}", v.near(), v.far()),
             }
         });
     }

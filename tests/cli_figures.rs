@@ -192,3 +192,72 @@ fn an_unwritable_file_is_named_with_the_os_error() {
         );
     }
 }
+
+/// The `pHYs` chunk of a PNG: (pixels per unit x, y, unit), if present.
+fn phys(png: &[u8]) -> Option<(u32, u32, u8)> {
+    let mut at = 8;
+    while at + 8 <= png.len() {
+        let len = u32::from_be_bytes(png[at..at + 4].try_into().unwrap()) as usize;
+        let kind = &png[at + 4..at + 8];
+        let data = &png[at + 8..at + 8 + len];
+        if kind == b"pHYs" {
+            let x = u32::from_be_bytes(data[0..4].try_into().unwrap());
+            let y = u32::from_be_bytes(data[4..8].try_into().unwrap());
+            return Some((x, y, data[8]));
+        }
+        at += 12 + len;
+    }
+    None
+}
+
+#[test]
+fn bare_scale_and_dpi_for_publication() {
+    let dir = temp_dir("publication");
+    let only = ["--only", "lloyd2006-fig6"];
+    let (code, _, err) = figures(&dir, &only);
+    assert_eq!(code, 0, "{err}");
+    let plain_svg = std::fs::read_to_string(dir.join("lloyd2006-fig6.svg")).unwrap();
+    let plain_png = std::fs::read(dir.join("lloyd2006-fig6.png")).unwrap();
+    // The title and the caption as src/plot/lloyd2006.rs writes them.
+    let title = "Maximum error and storage factor against the warp parameter η";
+    let caption = "Lloyd et al. 2006, Fig. 6";
+    assert!(plain_svg.contains(title) && plain_svg.contains(caption));
+    // 96 dpi by default: 96 / 0.0254 = 3779.5 → 3780 pixels per metre.
+    assert_eq!(phys(&plain_png), Some((3780, 3780, 1)));
+    // Tick labels of the η axis (−1 to 1) use the minus sign U+2212, never the hyphen-minus.
+    assert!(plain_svg.contains(">−1</text>"), "no −1 tick");
+    assert!(plain_svg.contains(">−0.5</text>"), "no −0.5 tick");
+    assert!(!plain_svg.contains(">-"), "a hyphen-minus label");
+
+    let (code, _, err) = figures(
+        &dir,
+        &[&only[..], &["--bare", "--scale", "2", "--dpi", "300"]].concat(),
+    );
+    assert_eq!(code, 0, "{err}");
+    let svg = std::fs::read_to_string(dir.join("lloyd2006-fig6.svg")).unwrap();
+    let png = std::fs::read(dir.join("lloyd2006-fig6.png")).unwrap();
+    assert!(
+        !svg.contains(title) && !svg.contains(caption),
+        "bare keeps title or caption"
+    );
+    assert!(svg.contains("M<tspan"), "bare lost the axis labels");
+    // Twice the pixels (the figure is 1000 × 640), and 300 dpi = 11 811 pixels per metre.
+    let size = |b: &[u8]| {
+        (
+            u32::from_be_bytes(b[16..20].try_into().unwrap()),
+            u32::from_be_bytes(b[20..24].try_into().unwrap()),
+        )
+    };
+    assert_eq!(size(&plain_png), (1000, 640));
+    assert_eq!(size(&png), (2000, 1280));
+    assert_eq!(phys(&png), Some((11_811, 11_811, 1)));
+    assert!(svg.contains("<svg width=\"2000\" height=\"1280\" viewBox=\"0 0 1000 640\""));
+    check_png(&dir.join("lloyd2006-fig6.png"));
+
+    for (flag, value) in [("--scale", "0"), ("--scale", "9"), ("--dpi", "0")] {
+        let d = dir.to_str().unwrap();
+        let (_, err) = run_failing(&["figures", "--out", d, flag, value], "");
+        assert!(err.contains(&flag[2..]), "{flag} {value}: {err}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -137,7 +137,9 @@ impl Ctx<'_, '_> {
             split: (a, b),
             blend: (b, b),
         };
-        let mut m = self.finish_measured(shadow, err, pts, &slice, body.focus, prism.as_slice())?;
+        // The fit measured the map anyway: its figures are reported with measurement off too.
+        let mut m =
+            self.finish_measured(shadow, Some(err), pts, &slice, body.focus, prism.as_slice())?;
         m.face = Some(face);
         Ok(Built::Map(m))
     }

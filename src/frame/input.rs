@@ -292,6 +292,12 @@ pub struct FrameInput<'a> {
     pub scheme: FrameScheme<'a>,
     /// Where warps put their centre of projection.
     pub centre: WarpCentre,
+    /// Measure each map's error over its focus body (the default). `false` skips the
+    /// measurement: [`FrameMap::error`](super::FrameMap::error) is then `None` and the figures'
+    /// fields hold +∞ (no bound known), unless the frame measured anyway to build the map (face
+    /// partitions fit each part by its measured error; equal-error splits are placed by it). The
+    /// matrices are the same bit for bit either way.
+    pub measure: bool,
 }
 
 impl<'a> FrameInput<'a> {
@@ -316,6 +322,7 @@ impl<'a> FrameInput<'a> {
             depth_clamp: false,
             scheme: FrameScheme::Single(WarpRule::Minimax),
             centre: WarpCentre::Rule,
+            measure: true,
         }
     }
     /// Sets the receivers' bound.
@@ -353,6 +360,23 @@ impl<'a> FrameInput<'a> {
     pub fn centre(mut self, c: WarpCentre) -> Self {
         self.centre = c;
         self
+    }
+    /// Says whether to measure each map's error ([`FrameInput::measure`]; on by default).
+    #[must_use]
+    pub fn measure(mut self, on: bool) -> Self {
+        self.measure = on;
+        self
+    }
+    /// Whether the maps' error is measured: asked for, or needed to place equal-error splits.
+    pub(super) fn measures(&self) -> bool {
+        self.measure
+            || matches!(
+                self.scheme,
+                FrameScheme::Cascades {
+                    splits: CascadeSplits::EqualError { .. },
+                    ..
+                } | FrameScheme::Stable(CascadeSplits::EqualError { .. })
+            )
     }
 }
 

@@ -86,7 +86,7 @@ mod upload;
 
 pub use culling::{CullVolume, MAX_CULL_PLANES};
 pub use input::{Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme, WarpCentre};
-pub use output::{Focus, Frame, FrameMap, FrameMaps, LightCase};
+pub use output::{Focus, Frame, FrameMap, FrameMaps, LightCase, MapError};
 pub use upload::{GpuShadowMap, GPU_SHADOW_MAP_WGSL};
 
 use crate::analytic::partition::MAX_PARTITIONS;

@@ -64,14 +64,16 @@ pub struct FrameMap {
     /// The largest world-space texel edge over the body at the map's resolution (normal-offset
     /// bias: Bevy's `texel_size`; Filament's `texelSizeWorldSpaceAt` gives both edges at one point).
     pub texel_world: f64,
-    /// M_x over the body's vertices (unit resolutions).
+    /// M_x over the body's vertices (unit resolutions); +∞ (no bound known) where the error was
+    /// not measured ([`FrameInput::measure`](super::FrameInput::measure) off): read it through
+    /// [`FrameMap::error`] to tell.
     pub max_mx: f64,
-    /// M_z over the body's vertices (unit resolutions).
+    /// M_z over the body's vertices (unit resolutions); +∞ where not measured.
     pub max_mz: f64,
-    /// S̄ = M_x M_z over the body.
+    /// S̄ = M_x M_z over the body; +∞ where not measured.
     pub storage_factor: f64,
     /// The predicted maximum error in screen pixels, `max(M_x, M_z) · image_height /
-    /// map_resolution`.
+    /// map_resolution`; +∞ where not measured.
     pub max_error_pixels: f64,
     /// What the body is (Body, Flat or ZeroDepth for a built map).
     pub focus: Focus,
@@ -86,6 +88,22 @@ pub struct FrameMap {
     casters_volume: CullVolume,
     receivers_volume: CullVolume,
     unchanged: bool,
+    measured: bool,
+}
+
+/// A map's measured error figures ([`FrameMap::error`]): the fields of the same names of
+/// [`FrameMap`], each finite.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MapError {
+    /// M_x over the body's vertices (unit resolutions).
+    pub max_mx: f64,
+    /// M_z over the body's vertices (unit resolutions).
+    pub max_mz: f64,
+    /// S̄ = M_x M_z over the body.
+    pub storage_factor: f64,
+    /// The predicted maximum error in screen pixels, `max(M_x, M_z) · image_height /
+    /// map_resolution`.
+    pub max_error_pixels: f64,
 }
 
 impl FrameMap {
@@ -128,6 +146,19 @@ impl FrameMap {
     #[must_use]
     pub fn unchanged(&self) -> bool {
         self.unchanged
+    }
+    /// The map's measured error, `None` where it was not measured
+    /// ([`FrameInput::measure`](super::FrameInput::measure) off, and the scheme did not measure to
+    /// build the map): the fields `max_mx`, `max_mz`, `storage_factor` and `max_error_pixels`
+    /// then hold +∞, no bound known.
+    #[must_use]
+    pub fn error(&self) -> Option<MapError> {
+        self.measured.then_some(MapError {
+            max_mx: self.max_mx,
+            max_mz: self.max_mz,
+            storage_factor: self.storage_factor,
+            max_error_pixels: self.max_error_pixels,
+        })
     }
 }
 
@@ -204,10 +235,12 @@ impl Frame {
     pub fn light_dir_eye(&self) -> DVec3 {
         self.light_dir_eye
     }
-    /// Σ S̄ over the built maps, `None` when none was built.
+    /// Σ S̄ over the built maps, `None` when none was built or a map's error was not measured
+    /// ([`FrameMap::error`]).
     #[must_use]
     pub fn storage_factor(&self) -> Option<f64> {
-        (self.len > 0).then(|| self.maps().iter().map(|m| m.storage_factor).sum())
+        let measured = self.maps().iter().all(|m| m.error().is_some());
+        (self.len > 0 && measured).then(|| self.maps().iter().map(|m| m.storage_factor).sum())
     }
 }
 
@@ -296,19 +329,25 @@ impl Ctx<'_, '_> {
         s: &Slice,
         focus: Focus,
     ) -> Result<FrameMap> {
-        let err = vertex_max(&shadow.matrix(), self.l, self.view.tan_half_fov(), pts).ok_or_else(
-            || Error::Degenerate("the map is singular at a vertex of the focus body".into()),
-        )?;
+        let singular =
+            || Error::Degenerate("the map is singular at a vertex of the focus body".into());
+        let err = match self.input.measures() {
+            true => Some(
+                vertex_max(&shadow.matrix(), self.l, self.view.tan_half_fov(), pts)
+                    .ok_or_else(singular)?,
+            ),
+            false => None,
+        };
         self.finish_measured(shadow, err, pts, s, focus, &[])
     }
 
     /// [`Ctx::finish`] with the map's error over `pts` already measured (by `vertex_max` with
-    /// the frame's light and tan θ, as `finish` would), B being the slice `s.cover` ∩ the
+    /// the frame's light and tan θ, as `finish` would; `None`: not measured), B being the slice `s.cover` ∩ the
     /// receivers' bound ∩ the planes `extra` (a face part's prism).
     pub(super) fn finish_measured(
         &self,
         shadow: ShadowMatrix,
-        err: FrustumError,
+        err: Option<FrustumError>,
         pts: &[DVec3],
         s: &Slice,
         focus: Focus,
@@ -341,16 +380,21 @@ impl Ctx<'_, '_> {
             ));
         }
         let (casters_volume, receivers_volume) = self.cull_volumes(pts, &matrix, s.cover, extra);
+        let none = FrustumError {
+            max_mx: f64::INFINITY,
+            max_mz: f64::INFINITY,
+            storage_factor: f64::INFINITY,
+        };
         Ok(FrameMap {
             world_to_clip,
             shadow,
             split: s.split,
             blend: s.blend,
             texel_world: texel,
-            max_mx: err.max_mx,
-            max_mz: err.max_mz,
-            storage_factor: err.storage_factor,
-            max_error_pixels: err.max_mx.max(err.max_mz) * image / res,
+            max_mx: err.unwrap_or(none).max_mx,
+            max_mz: err.unwrap_or(none).max_mz,
+            storage_factor: err.unwrap_or(none).storage_factor,
+            max_error_pixels: err.map_or(f64::INFINITY, |e| e.max_mx.max(e.max_mz) * image / res),
             focus,
             face: None,
             world_to_eye: self.input.camera.world_to_eye,
@@ -359,6 +403,7 @@ impl Ctx<'_, '_> {
             casters_volume,
             receivers_volume,
             unchanged: false,
+            measured: err.is_some(),
         })
     }
 }

@@ -46,11 +46,12 @@ pub struct GpuShadowMap {
     pub blend: [f32; 2],
     /// [`FrameMap::texel_world`]: the largest world-space texel edge over the map's body.
     pub texel_world: f32,
-    /// [`FrameMap::max_error_pixels`]: the predicted largest texel-to-pixel ratio.
+    /// [`FrameMap::max_error_pixels`]: the predicted largest texel-to-pixel ratio; +∞ (no bound
+    /// known) where the error was not measured ([`FrameMap::error`] `None`).
     pub max_error_pixels: f32,
-    /// [`FrameMap::max_mx`]: M_x over the body (unit resolutions).
+    /// [`FrameMap::max_mx`]: M_x over the body (unit resolutions); +∞ where not measured.
     pub max_mx: f32,
-    /// [`FrameMap::max_mz`]: M_z over the body (unit resolutions).
+    /// [`FrameMap::max_mz`]: M_z over the body (unit resolutions); +∞ where not measured.
     pub max_mz: f32,
     /// [`FrameMap::face`]: the index of the face in [`crate::maps::faces::Face::ALL`] (bottom 0,
     /// right 1, top 2, left 3, near 4, far 5), or [`GpuShadowMap::NO_FACE`].

@@ -46,6 +46,7 @@ mod layout;
 mod lloyd2005;
 mod lloyd2006;
 mod martin_tan;
+mod options;
 mod svg;
 mod trapezoid;
 mod warp_grid;
@@ -53,6 +54,7 @@ mod worst;
 mod zhang;
 
 use image::ImageEncoder;
+pub use options::{Options, MAX_SCALE};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::fmt;
@@ -137,6 +139,9 @@ pub enum PlotError {
     /// The name is not one of [`FIGURES`]. Fix: use one of the names listed in the message.
     #[error("unknown figure {0:?} (known figures: {known})", known = FIGURES.join(", "))]
     UnknownFigure(String),
+    /// An [`Options`] value is out of range; the message names it and its range.
+    #[error("invalid option: {0}")]
+    InvalidOption(String),
     /// The format is not `png`, `svg` or `both`.
     #[error("unknown format {0:?} (expected png, svg or both)")]
     UnknownFormat(String),
@@ -238,48 +243,51 @@ fn emit<F: Figure>(
     name: &'static str,
     fig: &F,
     out_dir: &Path,
-    format: Format,
+    out: &Output,
 ) -> Result<Vec<PathBuf>, PlotError> {
     // Each figure is drawn into memory and written with `std::fs`, so that a file that cannot be
     // created or written is reported with its path and the operating system's error (plotters'
     // own file backends report it as a debug dump without the path), and nothing is written
     // for a figure whose drawing fails.
     let mut written = Vec::new();
-    for ext in format.extensions() {
+    let opts = out.options;
+    for ext in out.format.extensions() {
         let path = out_dir.join(format!("{name}.{ext}"));
         let (w, h) = fig.size();
-        let bytes = if *ext == "png" {
-            // Drawn at twice the size and box-filtered down: anti-aliased lines and edges.
-            let mut big =
-                vec![0u8; (SUPERSAMPLE * SUPERSAMPLE) as usize * w as usize * h as usize * 3];
-            {
-                let bitmap =
-                    BitMapBackend::with_buffer(&mut big, (SUPERSAMPLE * w, SUPERSAMPLE * h));
-                let root = canvas::Canvas::new(bitmap, SUPERSAMPLE, canvas::BITMAP_TEXT)
-                    .into_drawing_area();
-                fig.draw(&root).map_err(|e| e.named(name))?;
-                root.present().map_err(|e| Fail::from(e).named(name))?;
+        let bytes = chart::with_bare(opts.bare, || -> Result<Vec<u8>, PlotError> {
+            if *ext == "png" {
+                // Drawn at twice the (scaled) size and box-filtered down: anti-aliased lines
+                // and edges.
+                let k = SUPERSAMPLE * opts.scale;
+                let (pw, ph) = (w * opts.scale, h * opts.scale);
+                let mut big = vec![0u8; (k * k) as usize * w as usize * h as usize * 3];
+                {
+                    let bitmap = BitMapBackend::with_buffer(&mut big, (k * w, k * h));
+                    let root =
+                        canvas::Canvas::new(bitmap, k, canvas::BITMAP_TEXT).into_drawing_area();
+                    fig.draw(&root).map_err(|e| e.named(name))?;
+                    root.present().map_err(|e| Fail::from(e).named(name))?;
+                }
+                let rgb = canvas::downsample(&big, pw, ph, SUPERSAMPLE);
+                let mut png = Vec::new();
+                image::codecs::png::PngEncoder::new(&mut png)
+                    .write_image(&rgb, pw, ph, image::ColorType::Rgb8)
+                    .map_err(|e| PlotError::Io {
+                        path: path.clone(),
+                        source: std::io::Error::other(e),
+                    })?;
+                Ok(options::with_phys(&png, opts.pixels_per_metre()))
+            } else {
+                let mut svg = String::new();
+                {
+                    let doc = svg::Svg::new(&mut svg, (w, h), opts.scale);
+                    let root = canvas::Canvas::new(doc, 1, canvas::SVG_TEXT).into_drawing_area();
+                    fig.draw(&root).map_err(|e| e.named(name))?;
+                    root.present().map_err(|e| Fail::from(e).named(name))?;
+                }
+                Ok(svg.into_bytes())
             }
-            let rgb = canvas::downsample(&big, w, h, SUPERSAMPLE);
-            let mut png = Vec::new();
-            image::codecs::png::PngEncoder::new(&mut png)
-                .write_image(&rgb, w, h, image::ColorType::Rgb8)
-                .map_err(|e| PlotError::Io {
-                    path: path.clone(),
-                    source: std::io::Error::other(e),
-                })?;
-            png
-        } else {
-            let mut svg = String::new();
-            {
-                let root =
-                    canvas::Canvas::new(svg::Svg::new(&mut svg, (w, h)), 1, canvas::SVG_TEXT)
-                        .into_drawing_area();
-                fig.draw(&root).map_err(|e| e.named(name))?;
-                root.present().map_err(|e| Fail::from(e).named(name))?;
-            }
-            svg.into_bytes()
-        };
+        })?;
         std::fs::write(&path, bytes).map_err(|source| PlotError::Io {
             path: path.clone(),
             source,
@@ -296,6 +304,21 @@ fn emit<F: Figure>(
 /// directory cannot be created; [`PlotError::Data`] or [`PlotError::Drawing`] when computing or
 /// drawing the figure fails.
 pub fn render(name: &str, out_dir: &Path, format: Format) -> Result<Vec<PathBuf>, PlotError> {
+    render_with(name, out_dir, format, &Options::default())
+}
+
+/// [`render`] with publication [`Options`]: bare (no title or caption), scaled, with the PNG's
+/// physical size.
+///
+/// # Errors
+/// As [`render`], and [`PlotError::InvalidOption`] for an option out of range.
+pub fn render_with(
+    name: &str,
+    out_dir: &Path,
+    format: Format,
+    options: &Options,
+) -> Result<Vec<PathBuf>, PlotError> {
+    options.validate()?;
     let Some(&name) = FIGURES.iter().find(|&&n| n == name) else {
         return Err(PlotError::UnknownFigure(name.to_string()));
     };
@@ -304,40 +327,53 @@ pub fn render(name: &str, out_dir: &Path, format: Format) -> Result<Vec<PathBuf>
         path: out_dir.to_path_buf(),
         source,
     })?;
-    dispatch(name, out_dir, format)
+    dispatch(
+        name,
+        out_dir,
+        &Output {
+            format,
+            options: *options,
+        },
+    )
+}
+
+/// What [`emit`] writes.
+struct Output {
+    format: Format,
+    options: Options,
 }
 
 /// Computes and writes the figure `name` (one of [`FIGURES`]).
-fn dispatch(name: &'static str, out_dir: &Path, format: Format) -> Result<Vec<PathBuf>, PlotError> {
+fn dispatch(name: &'static str, out_dir: &Path, out: &Output) -> Result<Vec<PathBuf>, PlotError> {
     let data = |e: Fail| e.named(name);
     match name {
-        "lloyd2005-fig4" => emit(name, &lloyd2005::fig4().map_err(data)?, out_dir, format),
-        "lloyd2005-fig7" => emit(name, &lloyd2005::fig7().map_err(data)?, out_dir, format),
-        "lloyd2006-fig5" => emit(name, &lloyd2006::fig5().map_err(data)?, out_dir, format),
-        "lloyd2006-fig6" => emit(name, &lloyd2006::fig6().map_err(data)?, out_dir, format),
-        "lloyd2006-fig7" => emit(name, &hemisphere::fig7().map_err(data)?, out_dir, format),
-        "lloyd2006-fig10" => emit(name, &lloyd2006::fig10().map_err(data)?, out_dir, format),
-        "lloyd2006-fig12" => emit(name, &lloyd2006::fig12().map_err(data)?, out_dir, format),
-        "lloyd2006-fig13" => emit(name, &lloyd2006::fig13().map_err(data)?, out_dir, format),
-        "barroso-fig7" => emit(name, &barroso::fig7().map_err(data)?, out_dir, format),
-        "zhang-fig3" => emit(name, &zhang::fig3().map_err(data)?, out_dir, format),
-        "martin-tan-fig6" => emit(name, &martin_tan::fig6().map_err(data)?, out_dir, format),
-        "lloyd2006-worst-case" => emit(name, &worst::worst_case().map_err(data)?, out_dir, format),
-        "lloyd2006-fig4" => emit(name, &warp_grid::fig4().map_err(data)?, out_dir, format),
-        "martin-tan-fig3" => emit(name, &trapezoid::fig3().map_err(data)?, out_dir, format),
+        "lloyd2005-fig4" => emit(name, &lloyd2005::fig4().map_err(data)?, out_dir, out),
+        "lloyd2005-fig7" => emit(name, &lloyd2005::fig7().map_err(data)?, out_dir, out),
+        "lloyd2006-fig5" => emit(name, &lloyd2006::fig5().map_err(data)?, out_dir, out),
+        "lloyd2006-fig6" => emit(name, &lloyd2006::fig6().map_err(data)?, out_dir, out),
+        "lloyd2006-fig7" => emit(name, &hemisphere::fig7().map_err(data)?, out_dir, out),
+        "lloyd2006-fig10" => emit(name, &lloyd2006::fig10().map_err(data)?, out_dir, out),
+        "lloyd2006-fig12" => emit(name, &lloyd2006::fig12().map_err(data)?, out_dir, out),
+        "lloyd2006-fig13" => emit(name, &lloyd2006::fig13().map_err(data)?, out_dir, out),
+        "barroso-fig7" => emit(name, &barroso::fig7().map_err(data)?, out_dir, out),
+        "zhang-fig3" => emit(name, &zhang::fig3().map_err(data)?, out_dir, out),
+        "martin-tan-fig6" => emit(name, &martin_tan::fig6().map_err(data)?, out_dir, out),
+        "lloyd2006-worst-case" => emit(name, &worst::worst_case().map_err(data)?, out_dir, out),
+        "lloyd2006-fig4" => emit(name, &warp_grid::fig4().map_err(data)?, out_dir, out),
+        "martin-tan-fig3" => emit(name, &trapezoid::fig3().map_err(data)?, out_dir, out),
         "barroso-fig5" => emit(
             name,
             &from_light::barroso_fig5().map_err(data)?,
             out_dir,
-            format,
+            out,
         ),
         "lloyd2006-fig11" => emit(
             name,
             &from_light::lloyd2006_fig11().map_err(data)?,
             out_dir,
-            format,
+            out,
         ),
-        "lloyd2005-fig8" => emit(name, &layout::fig8().map_err(data)?, out_dir, format),
+        "lloyd2005-fig8" => emit(name, &layout::fig8().map_err(data)?, out_dir, out),
         _ => Err(PlotError::UnknownFigure(name.to_string())),
     }
 }
@@ -540,13 +576,18 @@ mod tests {
         ensure_font().unwrap();
         let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/plot-selftest");
         std::fs::create_dir_all(&dir).unwrap();
-        let files = emit("demo", &Demo, &dir, Format::Both).unwrap();
+        let out = Output {
+            format: Format::Both,
+            options: Options::default(),
+        };
+        let files = emit("demo", &Demo, &dir, &out).unwrap();
         assert_eq!(files.len(), 2);
         let png = std::fs::read(&files[0]).unwrap();
         assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
         assert!(png.len() > 20_000, "PNG of {} bytes", png.len());
         let svg = std::fs::read_to_string(&files[1]).unwrap();
-        assert!(svg.contains("<svg") && svg.matches("<rect").count() > 50);
+        // The grid and the hemisphere heat maps are one embedded image each.
+        assert!(svg.contains("<svg") && svg.matches("<image ").count() == 2);
         assert!(svg.contains("Self-test of the drawing helpers"));
     }
 

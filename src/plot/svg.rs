@@ -40,14 +40,17 @@ impl std::error::Error for SvgError {}
 pub(crate) struct Svg<'a> {
     out: &'a mut String,
     size: (u32, u32),
+    /// The document's `width` and `height` are `zoom` times its view box.
+    zoom: u32,
     body: String,
 }
 
 impl<'a> Svg<'a> {
-    pub fn new(out: &'a mut String, size: (u32, u32)) -> Self {
+    pub fn new(out: &'a mut String, size: (u32, u32), zoom: u32) -> Self {
         Self {
             out,
             size,
+            zoom,
             body: String::new(),
         }
     }
@@ -151,10 +154,11 @@ impl DrawingBackend for Svg<'_> {
 
     fn present(&mut self) -> Res {
         let (w, h) = self.size;
+        let (zw, zh) = (w * self.zoom, h * self.zoom);
         self.out.clear();
         let _ = write!(
             self.out,
-            "<svg width=\"{w}\" height=\"{h}\" viewBox=\"0 0 {w} {h}\" \
+            "<svg width=\"{zw}\" height=\"{zh}\" viewBox=\"0 0 {w} {h}\" \
              xmlns=\"http://www.w3.org/2000/svg\">\n{}</svg>\n",
             self.body
         );

@@ -61,6 +61,15 @@ pub struct FiguresArgs {
         value_parser = clap::builder::PossibleValuesParser::new(shadow_aliasing::plot::FIGURES)
     )]
     pub only: Vec<String>,
+    /// No title and no caption in the figures (for a document that sets its own caption).
+    #[arg(long)]
+    pub bare: bool,
+    /// Multiply the PNG's pixel size (and the SVG's width and height) by this whole number, 1 to 8.
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub scale: u32,
+    /// Pixels per inch recorded in the PNG (its pHYs chunk): printed size = pixels / DPI.
+    #[arg(long, value_name = "DPI", default_value_t = 96.0)]
+    pub dpi: f64,
 }
 
 /// Image formats of `figures`.

@@ -245,6 +245,14 @@ fn figures(a: &FiguresArgs) -> ExitCode {
         Format::Svg => plot::Format::Svg,
         Format::Both => plot::Format::Both,
     };
+    let options = plot::Options {
+        bare: a.bare,
+        scale: a.scale,
+        dpi: a.dpi,
+    };
+    if let Err(e) = options.validate() {
+        return fail(e.to_string());
+    }
     let names: Vec<&str> = FIGURES
         .iter()
         .copied()
@@ -269,7 +277,7 @@ fn figures(a: &FiguresArgs) -> ExitCode {
         if let Some(b) = &bar {
             b.set_message(*name);
         }
-        match plot::render(name, &a.out, format).map_err(|e| e.to_string()) {
+        match plot::render_with(name, &a.out, format, &options).map_err(|e| e.to_string()) {
             Ok(files) => {
                 if let Ok(all) = &mut result {
                     all.extend(files);

@@ -229,8 +229,13 @@ impl Axis {
         hi - lo <= 2.0 + 1e-9
     }
 
-    /// The label of a tick at axis-space position `a`.
+    /// The label of a tick at axis-space position `a`, negative numbers with the minus sign
+    /// U+2212 (not the hyphen-minus).
     pub fn tick_label(&self, a: f64) -> String {
+        self.tick_text(a).replace('-', "\u{2212}")
+    }
+
+    fn tick_text(&self, a: f64) -> String {
         match self.scale {
             Scale::Linear => {
                 let (lo, hi) = self.range();
@@ -498,7 +503,8 @@ mod tests {
         assert_eq!(small.tick_label(0.4), "0.4");
         let b = Axis::linear("η", -1.0, 1.0);
         assert_eq!(b.ticks().0, vec![-1.0, -0.5, 0.0, 0.5, 1.0]);
-        assert_eq!(b.tick_label(-0.5), "-0.5");
+        // The minus sign U+2212, not the hyphen-minus.
+        assert_eq!(b.tick_label(-0.5), "\u{2212}0.5");
         assert_eq!(b.tick_label(0.0), "0");
     }
 }

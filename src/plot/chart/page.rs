@@ -7,15 +7,34 @@ use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
+use std::cell::Cell;
+
+thread_local! {
+    /// Whether the figure being drawn on this thread is bare (see [`with_bare`]).
+    static BARE: Cell<bool> = const { Cell::new(false) };
+}
+
+/// Runs `draw` with every page it draws bare (no title, no caption) or not: the page option of
+/// `Options::bare`, set for the one figure being drawn on this thread and restored afterwards.
+pub(crate) fn with_bare<R>(bare: bool, draw: impl FnOnce() -> R) -> R {
+    let before = BARE.with(|b| b.replace(bare));
+    let r = draw();
+    BARE.with(|b| b.set(before));
+    r
+}
 
 /// Fills the page white, writes the title at the top and the caption (its lines joined into one
-/// paragraph, wrapped to the page width) at the bottom, and returns the area left between them.
+/// paragraph, wrapped to the page width) at the bottom, and returns the area left between them;
+/// a bare page (see [`with_bare`]) has neither and keeps a small margin.
 pub(crate) fn frame<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     title: &str,
     caption: &[&str],
 ) -> Result<DrawingArea<DB, Shift>, Fail> {
     root.fill(&WHITE)?;
+    if BARE.with(Cell::get) {
+        return Ok(root.margin(10, 10, 6, 6));
+    }
     let (w, h) = root.dim_in_pixel();
     root.draw(&Text::new(
         title.to_string(),

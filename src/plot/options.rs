@@ -1,0 +1,126 @@
+//! How a figure is written for publication: without its title and caption (`bare`), at an
+//! integer multiple of its pixel size (`scale`), and with the PNG's physical size recorded
+//! (`dpi`, as a PNG `pHYs` chunk).
+
+use super::PlotError;
+
+/// Options of the written files; [`Options::default`] is what [`super::render`] uses.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// No title and no caption in the figure (for a document that sets its own caption).
+    pub bare: bool,
+    /// The PNG's pixel size is `scale` times the figure's (lines and text scale with it); the
+    /// SVG's `width` and `height` too (its view box stays). 1 to [`MAX_SCALE`].
+    pub scale: u32,
+    /// Pixels per inch recorded in the PNG (`pHYs`), so that the printed size is the pixel size
+    /// divided by `dpi`. Finite, 1 to 10 000.
+    pub dpi: f64,
+}
+
+/// The largest [`Options::scale`].
+pub const MAX_SCALE: u32 = 8;
+
+impl Default for Options {
+    fn default() -> Self {
+        Self {
+            bare: false,
+            scale: 1,
+            dpi: 96.0,
+        }
+    }
+}
+
+impl Options {
+    /// Checks the ranges.
+    ///
+    /// # Errors
+    /// [`PlotError::InvalidOption`] naming the option and its accepted range.
+    pub fn validate(&self) -> Result<(), PlotError> {
+        if !(1..=MAX_SCALE).contains(&self.scale) {
+            return Err(PlotError::InvalidOption(format!(
+                "scale {} is outside 1..={MAX_SCALE}: give a whole number from 1 to {MAX_SCALE}",
+                self.scale
+            )));
+        }
+        if !(self.dpi.is_finite() && (1.0..=10_000.0).contains(&self.dpi)) {
+            return Err(PlotError::InvalidOption(format!(
+                "dpi {} is outside 1..=10000: give the pixels per inch of the printed figure, \
+                 for instance 300",
+                self.dpi
+            )));
+        }
+        Ok(())
+    }
+
+    /// Pixels per metre, as the `pHYs` chunk records them.
+    pub(crate) fn pixels_per_metre(&self) -> u32 {
+        (self.dpi / 0.0254).round() as u32
+    }
+}
+
+/// CRC-32 (ISO-HDLC, as PNG uses) of `data`.
+fn crc32(data: &[u8]) -> u32 {
+    let mut c = 0xFFFF_FFFFu32;
+    for &b in data {
+        c ^= u32::from(b);
+        for _ in 0..8 {
+            c = if c & 1 != 0 {
+                0xEDB8_8320 ^ (c >> 1)
+            } else {
+                c >> 1
+            };
+        }
+    }
+    !c
+}
+
+/// Inserts a `pHYs` chunk (`ppm` pixels per metre in both directions) right after the IHDR
+/// chunk of an encoded PNG (the encoder writes none).
+pub(crate) fn with_phys(png: &[u8], ppm: u32) -> Vec<u8> {
+    // Signature (8) and IHDR (length 4, type 4, data 13, CRC 4).
+    let at = 8 + 25;
+    let mut chunk = Vec::with_capacity(21);
+    chunk.extend_from_slice(&9u32.to_be_bytes());
+    let mut body = b"pHYs".to_vec();
+    body.extend_from_slice(&ppm.to_be_bytes());
+    body.extend_from_slice(&ppm.to_be_bytes());
+    body.push(1); // unit: metre
+    chunk.extend_from_slice(&body);
+    chunk.extend_from_slice(&crc32(&body).to_be_bytes());
+    let mut out = Vec::with_capacity(png.len() + chunk.len());
+    out.extend_from_slice(&png[..at]);
+    out.extend_from_slice(&chunk);
+    out.extend_from_slice(&png[at..]);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn crc32_of_the_check_string() {
+        // The standard check value of CRC-32/ISO-HDLC.
+        assert_eq!(crc32(b"123456789"), 0xCBF4_3926);
+        // PNG's IEND chunk, whose CRC every PNG carries: AE 42 60 82.
+        assert_eq!(crc32(b"IEND"), 0xAE42_6082);
+    }
+
+    #[test]
+    fn three_hundred_dpi_is_11811_pixels_per_metre() {
+        let o = Options {
+            dpi: 300.0,
+            ..Options::default()
+        };
+        assert_eq!(o.pixels_per_metre(), 11_811); // 300 / 0.0254 = 11 811.02
+        assert!(o.validate().is_ok());
+        for bad in [
+            Options { scale: 0, ..o },
+            Options { scale: 9, ..o },
+            Options { dpi: f64::NAN, ..o },
+            Options { dpi: 0.5, ..o },
+        ] {
+            assert!(matches!(bad.validate(), Err(PlotError::InvalidOption(_))));
+        }
+    }
+}
