@@ -3,7 +3,7 @@
 //! 1. the rendered Jacobian (exact derivatives of the texel image, [`crate::perspective`])
 //!    against `measure::surface_footprint`;
 //! 2. every visible pixel's rendered shadow against the exact ray cast, except within a band of
-//!    the true boundary measured in shadow-map texels ([`shadow_decidable`]);
+//!    the true boundary measured in shadow-map texels (docs/rendered.md, "Shadow correctness");
 //! 3. coverage: every visible pixel inside the clip volume of the map the shader selected;
 //! 4. the rendered perspective error against the frame's reported M_x, M_z, and, in Lloyd 2006's
 //!    overhead case, against its Eq 7–10.
