@@ -116,16 +116,17 @@ def zhang_eq_local(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_
 def zhang_ep_local(near: ArrayLike, far: ArrayLike, half_fov: ArrayLike, lambda_: ArrayLike, z: ArrayLike) -> F64:
     """E_p = (f − n)(z − n + λ)²/((f − n + λ) λ tan φ z) (Zhang Eq 9)."""
 
-def warp(near: float, far: float, half_fov: float, light_dir: Vec3, rule: str = ..., *,
+def warp(near: float, far: float, half_fov: float, light_dir: ArrayLike, rule: str = ..., *,
          eta: Optional[float] = ..., focus: Optional[float] = ..., near_hint: Optional[float] = ...,
          far_hint: Optional[float] = ..., shadow_distance: Optional[float] = ...,
          clip_depth: ClipDepth = ..., aspect: float = ...) -> npt.NDArray[np.float64]:
-    """The (4, 4) shadow matrix of one map, n′ by the named rule (Lloyd 2006 §4)."""
-def n_prime_for(near: float, far: float, half_fov: float, light_dir: Vec3, rule: str = ..., *,
+    """The (4, 4) shadow matrix of one map, n′ by the named rule (Lloyd 2006 §4); (..., 4, 4)
+    for light directions (..., 3)."""
+def n_prime_for(near: float, far: float, half_fov: float, light_dir: ArrayLike, rule: str = ..., *,
                 eta: Optional[float] = ..., focus: Optional[float] = ..., near_hint: Optional[float] = ...,
                 far_hint: Optional[float] = ..., shadow_distance: Optional[float] = ...,
-                aspect: float = ...) -> float:
-    """The n′ the rule chooses (inf: unwarped)."""
+                aspect: float = ...) -> F64:
+    """The n′ the rule chooses (inf: unwarped); (...,) for light directions (..., 3)."""
 def cascades(near: float, far: float, half_fov: float, light_dir: Vec3, k: int,
              partition: Literal["self_similar", "log", "uniform", "practical", "adaptive"] = ...,
              rule: str = ..., *, lambda_: Optional[float] = ..., overlap: float = ...,

@@ -115,6 +115,60 @@ fn one_matrix<'py>(py: Python<'py>, m: &DMat4) -> PyResult<Any<'py>> {
     to_python(py, vec![4, 4], to_rows(m).to_vec())
 }
 
+/// `light_dir` of the builders: one direction (3,) → `None`, or a stack (..., 3) → its leading
+/// shape; with the values, C order.
+fn light_dirs(ob: &Any<'_>) -> PyResult<(Option<Vec<usize>>, Vec<f64>)> {
+    let (shape, v) = shape_of("light_dir", ob)?;
+    match shape.split_last() {
+        Some((3, [])) => Ok((None, v)),
+        Some((3, lead)) => Ok((Some(lead.to_vec()), v)),
+        _ => Err(PyValueError::new_err(format!(
+            "light_dir must have shape (3,) or (..., 3) (got {})",
+            fmt_shape(&shape)
+        ))),
+    }
+}
+
+/// `f` at each light direction of `dirs` (C order, 3 values each), `width` values per direction,
+/// without the GIL and over all cores; the first direction (in C order) that fails raises its
+/// error with its index in `lead`.
+fn per_light<F>(
+    py: Python<'_>,
+    lead: &[usize],
+    dirs: &[f64],
+    width: usize,
+    f: F,
+) -> PyResult<Vec<f64>>
+where
+    F: Fn(DVec3, &mut [f64]) -> Result<(), Error> + Sync,
+{
+    use rayon::prelude::*;
+    let n = dirs.len() / 3;
+    let shape = [lead, &[width]].concat();
+    let mut out = buffer(n * width, &shape)?;
+    out.resize(n * width, 0.0);
+    let failed: Option<(usize, Error)> = py.detach(|| {
+        out.par_chunks_mut(width * 256)
+            .zip(dirs.par_chunks(3 * 256))
+            .enumerate()
+            .find_map_first(|(block, (o, d))| {
+                for (j, (oo, dd)) in o.chunks_exact_mut(width).zip(d.chunks_exact(3)).enumerate() {
+                    if let Err(e) = f(DVec3::new(dd[0], dd[1], dd[2]), oo) {
+                        return Some((block * 256 + j, e));
+                    }
+                }
+                None
+            })
+    });
+    match failed {
+        Some((i, e)) => Err(PyValueError::new_err(format!(
+            "{e} (light_dir at index {})",
+            crate::broadcast::fmt_index(i, lead)
+        ))),
+        None => Ok(out),
+    }
+}
+
 /// The parameters of the named rules, as keyword arguments.
 #[derive(Clone, Copy, Default)]
 pub struct RuleParams {
@@ -215,7 +269,7 @@ pub fn warp<'py>(
     #[pyo3(from_py_with = args::aspect)] aspect: f64,
 ) -> PyResult<Any<'py>> {
     let view = view_of(near, far, half_fov, aspect)?;
-    let l = vec3("light_dir", light_dir)?;
+    let (lead, dirs) = light_dirs(light_dir)?;
     let r = self::rule(
         &view,
         rule,
@@ -228,8 +282,21 @@ pub fn warp<'py>(
         },
     )?;
     let depth = self::clip_depth(clip_depth)?;
-    let s: ShadowMatrix = py.detach(|| maps::warp(&view, l, r)).map_err(err)?;
-    one_matrix(py, &s.with_clip_depth(depth))
+    match lead {
+        None => {
+            let l = DVec3::new(dirs[0], dirs[1], dirs[2]);
+            let s: ShadowMatrix = py.detach(|| maps::warp(&view, l, r)).map_err(err)?;
+            one_matrix(py, &s.with_clip_depth(depth))
+        }
+        Some(lead) => {
+            let out = per_light(py, &lead, &dirs, 16, |l, o| {
+                let s = maps::warp(&view, l, r)?;
+                o.copy_from_slice(&to_rows(&s.with_clip_depth(depth)));
+                Ok(())
+            })?;
+            to_python(py, [&lead[..], &[4, 4]].concat(), out)
+        }
+    }
 }
 
 /// The n′ the rule chooses for this camera and light (``inf`` for an unwarped map); the same
@@ -238,11 +305,12 @@ pub fn warp<'py>(
 #[pyo3(signature = (near, far, half_fov, light_dir, rule="minimax", *, eta=None, focus=None,
     near_hint=None, far_hint=None, shadow_distance=None, aspect=1.0))]
 #[allow(clippy::too_many_arguments)]
-pub fn n_prime_for(
+pub fn n_prime_for<'py>(
+    py: Python<'py>,
     #[pyo3(from_py_with = args::near)] near: f64,
     #[pyo3(from_py_with = args::far)] far: f64,
     #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
-    light_dir: &Bound<'_, PyAny>,
+    light_dir: &Any<'py>,
     #[pyo3(from_py_with = args::rule)] rule: &str,
     #[pyo3(from_py_with = args::eta)] eta: Option<f64>,
     #[pyo3(from_py_with = args::focus)] focus: Option<f64>,
@@ -250,9 +318,9 @@ pub fn n_prime_for(
     #[pyo3(from_py_with = args::far_hint)] far_hint: Option<f64>,
     #[pyo3(from_py_with = args::shadow_distance)] shadow_distance: Option<f64>,
     #[pyo3(from_py_with = args::aspect)] aspect: f64,
-) -> PyResult<f64> {
+) -> PyResult<Any<'py>> {
     let view = view_of(near, far, half_fov, aspect)?;
-    let l = vec3("light_dir", light_dir)?;
+    let (lead, dirs) = light_dirs(light_dir)?;
     let r = self::rule(
         &view,
         rule,
@@ -264,7 +332,23 @@ pub fn n_prime_for(
             shadow_distance,
         },
     )?;
-    Ok(maps::n_prime_for(&view, l, r).map_err(err)?.value())
+    match lead {
+        None => {
+            let l = DVec3::new(dirs[0], dirs[1], dirs[2]);
+            to_python(
+                py,
+                vec![],
+                vec![maps::n_prime_for(&view, l, r).map_err(err)?.value()],
+            )
+        }
+        Some(lead) => {
+            let out = per_light(py, &lead, &dirs, 1, |l, o| {
+                o[0] = maps::n_prime_for(&view, l, r)?.value();
+                Ok(())
+            })?;
+            to_python(py, lead, out)
+        }
+    }
 }
 
 pub(crate) fn split_scheme(
