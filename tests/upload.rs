@@ -25,6 +25,13 @@ fn rust_offsets() -> Vec<(&'static str, usize)> {
         ("max_mz", offset_of!(GpuShadowMap, max_mz)),
         ("face", offset_of!(GpuShadowMap, face)),
         ("clip_depth", offset_of!(GpuShadowMap, clip_depth)),
+        ("normal_offset", offset_of!(GpuShadowMap, normal_offset)),
+        (
+            "slope_scaled_depth",
+            offset_of!(GpuShadowMap, slope_scaled_depth),
+        ),
+        ("texel_extent", offset_of!(GpuShadowMap, texel_extent)),
+        ("constant_depth", offset_of!(GpuShadowMap, constant_depth)),
         ("pad", offset_of!(GpuShadowMap, pad)),
     ]
 }
@@ -86,7 +93,7 @@ fn record_layout_is_the_wgsl_and_std140_layout() {
     let rust = rust_offsets();
     for std140 in [false, true] {
         let (offsets, size) = struct_layout(std140);
-        assert_eq!(size, 112);
+        assert_eq!(size, 128);
         assert_eq!(size_of::<GpuShadowMap>(), size, "std140 {std140}");
         assert_eq!(GpuShadowMap::SIZE, size);
         assert_eq!(offsets.len(), rust.len(), "every field in the WGSL struct");
@@ -95,7 +102,7 @@ fn record_layout_is_the_wgsl_and_std140_layout() {
         }
     }
     // An array element's stride is its size in both layouts: a multiple of 16.
-    assert_eq!(size_of::<[GpuShadowMap; 3]>(), 3 * 112);
+    assert_eq!(size_of::<[GpuShadowMap; 3]>(), 3 * 128);
     // Every field is made of 4-byte words, so `#[repr(C)]` adds no padding of its own.
     assert_eq!(std::mem::align_of::<GpuShadowMap>(), 4);
 }
@@ -200,7 +207,25 @@ fn record_and_arrays_carry_the_maps_values() {
                 assert_eq!(f32::from_bits(word(&b, 92)), g.max_mz);
                 assert_eq!(word(&b, 96), face);
                 assert_eq!(word(&b, 100), g.clip_depth);
-                assert_eq!(&b[104..], &[0u8; 8]);
+                // The bias values (issue 23 item 5): r = 0's, and r = 2's from `gpu_with_pcf`.
+                let bias = m.bias(0.0, depth).unwrap();
+                assert_eq!(g.normal_offset, bias.normal_offset as f32);
+                assert_eq!(g.slope_scaled_depth, bias.slope_scaled_depth as f32);
+                assert_eq!(
+                    g.texel_extent,
+                    [bias.texel_extent.0 as f32, bias.texel_extent.1 as f32]
+                );
+                assert_eq!(g.constant_depth, bias.constant_depth as f32);
+                let g2 = m.gpu_with_pcf(depth, 2.0).unwrap();
+                let b2 = m.bias(2.0, depth).unwrap();
+                assert_eq!(g2.normal_offset, b2.normal_offset as f32);
+                assert_eq!(g2.constant_depth, b2.constant_depth as f32);
+                assert_eq!(f32::from_bits(word(&b, 104)), g.normal_offset);
+                assert_eq!(f32::from_bits(word(&b, 108)), g.slope_scaled_depth);
+                assert_eq!(f32::from_bits(word(&b, 112)), g.texel_extent[0]);
+                assert_eq!(f32::from_bits(word(&b, 116)), g.texel_extent[1]);
+                assert_eq!(f32::from_bits(word(&b, 120)), g.constant_depth);
+                assert_eq!(&b[124..], &[0u8; 4]);
                 #[cfg(feature = "bytemuck")]
                 if cfg!(target_endian = "little") {
                     assert_eq!(bytemuck::bytes_of(&g), &b[..]);

@@ -73,6 +73,7 @@
 //! # Ok::<(), shadow_aliasing::Error>(())
 //! ```
 
+pub mod bias;
 mod body;
 mod cascade;
 mod casters;
@@ -84,6 +85,7 @@ mod output;
 mod rules;
 mod upload;
 
+pub use bias::Bias;
 pub use culling::{CullVolume, MAX_CULL_PLANES};
 pub use input::{Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme, WarpCentre};
 pub use output::{Focus, Frame, FrameMap, FrameMaps, LightCase, MapError};

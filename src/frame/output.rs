@@ -89,6 +89,8 @@ pub struct FrameMap {
     receivers_volume: CullVolume,
     unchanged: bool,
     measured: bool,
+    /// The map's texels per side.
+    pub(super) resolution: u32,
 }
 
 /// A map's measured error figures ([`FrameMap::error`]): the fields of the same names of
@@ -342,8 +344,8 @@ impl Ctx<'_, '_> {
     }
 
     /// [`Ctx::finish`] with the map's error over `pts` already measured (by `vertex_max` with
-    /// the frame's light and tan θ, as `finish` would; `None`: not measured), B being the slice `s.cover` ∩ the
-    /// receivers' bound ∩ the planes `extra` (a face part's prism).
+    /// the frame's light and tan θ, as `finish` would; `None`: not measured), B being the slice
+    /// `s.cover` ∩ the receivers' bound ∩ the planes `extra` (a face part's prism).
     pub(super) fn finish_measured(
         &self,
         shadow: ShadowMatrix,
@@ -404,6 +406,7 @@ impl Ctx<'_, '_> {
             receivers_volume,
             unchanged: false,
             measured: err.is_some(),
+            resolution: self.input.map_resolution,
         })
     }
 }
@@ -424,6 +427,12 @@ fn same_bits(a: &DMat4, b: &DMat4) -> bool {
 /// point it is given; its 2023 releases' `texelSizeWorldSpace` took their larger. `None` behind the
 /// map's centre of projection or where the map is singular.
 fn texel_edges(m: &DMat4, l: DVec3, p: DVec3) -> Option<(f64, f64)> {
+    texel_vectors(m, l, p).map(|(es, et)| (es.length(), et.length()))
+}
+
+/// The edge vectors of [`texel_edges`]: `E_s = (∇t⊥ × l) / D` and `E_t = (l × ∇s⊥) / D`, the
+/// vectors in the plane ⊥ `l` that move clip s (t) by 1 and t (s) by 0.
+pub(super) fn texel_vectors(m: &DMat4, l: DVec3, p: DVec3) -> Option<(DVec3, DVec3)> {
     let h = *m * p.extend(1.0);
     if h.w.is_nan() || h.w <= 0.0 {
         return None;
@@ -433,7 +442,7 @@ fn texel_edges(m: &DMat4, l: DVec3, p: DVec3) -> Option<(f64, f64)> {
     let gs = grad(m.row(0).truncate(), h.x);
     let gt = grad(m.row(1).truncate(), h.y);
     let (gs, gt) = (gs - gs.dot(l) * l, gt - gt.dot(l) * l);
-    let d = gs.cross(gt).dot(l).abs();
-    let edges = (gt.length() / d, gs.length() / d);
+    let d = gs.cross(gt).dot(l);
+    let edges = (gt.cross(l) / d, l.cross(gs) / d);
     (edges.0.is_finite() && edges.1.is_finite()).then_some(edges)
 }

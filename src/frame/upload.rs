@@ -13,11 +13,11 @@ use crate::maps::matrix::in_clip_depth;
 use crate::maps::ClipDepth;
 use glam::{DMat4, DVec3, Mat4};
 
-/// One map as a GPU uniform or storage-buffer element: `#[repr(C)]`, 112 bytes, every field a
+/// One map as a GPU uniform or storage-buffer element: `#[repr(C)]`, 128 bytes, every field a
 /// 4-byte scalar or an array of them, laid out exactly as the WGSL struct
 /// [`GPU_SHADOW_MAP_WGSL`] in the `uniform` and `storage` address spaces and as the same block in
 /// GLSL's std140 and std430 (tests/upload.rs computes each offset by those rules), so an array of
-/// them has a 112-byte stride in every one of these layouts. Write it with
+/// them has a 128-byte stride in every one of these layouts. Write it with
 /// [`GpuShadowMap::to_bytes`] or, with the `bytemuck` feature, `bytemuck::bytes_of`.
 ///
 /// | field | byte offset | WGSL type |
@@ -31,7 +31,16 @@ use glam::{DMat4, DVec3, Mat4};
 /// | `max_mz` | 92 | `f32` |
 /// | `face` | 96 | `u32` |
 /// | `clip_depth` | 100 | `u32` |
-/// | `pad` | 104 | `vec2<u32>` |
+/// | `normal_offset` | 104 | `f32` |
+/// | `slope_scaled_depth` | 108 | `f32` |
+/// | `texel_extent` | 112 | `vec2<f32>` |
+/// | `constant_depth` | 120 | `f32` |
+/// | `pad` | 124 | `u32` |
+///
+/// The bias values are [`FrameMap::bias`]'s for a single lookup (r = 0); for a PCF kernel of
+/// radius r texels multiply `normal_offset`, `slope_scaled_depth` and `constant_depth` by
+/// 2r + 1 (each is proportional to r + ½, but for the constant's 8 `f32` ulps, which the
+/// factor only enlarges), or upload [`FrameMap::gpu_with_pcf`]'s.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 #[cfg_attr(feature = "bytemuck", derive(bytemuck::Pod, bytemuck::Zeroable))]
@@ -58,13 +67,26 @@ pub struct GpuShadowMap {
     pub face: u32,
     /// The clip-depth convention of `world_to_clip`: [`GpuShadowMap::clip_depth_code`].
     pub clip_depth: u32,
+    /// [`Bias::normal_offset`](super::Bias::normal_offset): world units along the surface's
+    /// normal to move the lookup point.
+    pub normal_offset: f32,
+    /// [`Bias::slope_scaled_depth`](super::Bias::slope_scaled_depth): depth units per unit of
+    /// tan α, to add to the receiver's depth in `clip_depth`'s convention (negative for codes 0
+    /// and 1, positive for 2).
+    pub slope_scaled_depth: f32,
+    /// [`Bias::texel_extent`](super::Bias::texel_extent): the texel's largest world-space edges
+    /// along s and t over B.
+    pub texel_extent: [f32; 2],
+    /// [`Bias::constant_depth`](super::Bias::constant_depth): depth units to add to the
+    /// receiver's depth at any slope.
+    pub constant_depth: f32,
     /// Zero: pads the record to a multiple of 16 bytes, the alignment of `mat4x4<f32>`.
-    pub pad: [u32; 2],
+    pub pad: u32,
 }
 
 impl GpuShadowMap {
     /// The record's size in bytes.
-    pub const SIZE: usize = 112;
+    pub const SIZE: usize = 128;
 
     /// `face` of a map that is not a face partition's.
     pub const NO_FACE: u32 = u32::MAX;
@@ -92,6 +114,13 @@ impl GpuShadowMap {
             self.max_mx,
             self.max_mz,
         ];
+        let bias = [
+            self.normal_offset,
+            self.slope_scaled_depth,
+            self.texel_extent[0],
+            self.texel_extent[1],
+            self.constant_depth,
+        ];
         let words = self
             .world_to_clip
             .iter()
@@ -101,7 +130,8 @@ impl GpuShadowMap {
             .chain(&scalars)
             .map(|v| v.to_bits())
             .chain([self.face, self.clip_depth])
-            .chain(self.pad);
+            .chain(bias.map(f32::to_bits))
+            .chain([self.pad]);
         let mut out = [0u8; Self::SIZE];
         for (chunk, w) in out.chunks_exact_mut(4).zip(words) {
             chunk.copy_from_slice(&w.to_le_bytes());
@@ -114,7 +144,7 @@ impl GpuShadowMap {
 /// concatenate into a shader: bind it as `var<uniform> maps: array<GpuShadowMap, N>` or in a
 /// storage buffer.
 pub const GPU_SHADOW_MAP_WGSL: &str = "\
-// shadow-aliasing's GpuShadowMap (112 bytes; the same offsets in std140 and std430).
+// shadow-aliasing's GpuShadowMap (128 bytes; the same offsets in std140 and std430).
 const CLIP_DEPTH_NEG_ONE_TO_ONE: u32 = 0u;
 const CLIP_DEPTH_ZERO_TO_ONE: u32 = 1u;
 const CLIP_DEPTH_REVERSED: u32 = 2u;
@@ -129,7 +159,11 @@ struct GpuShadowMap {
     max_mz: f32,
     face: u32,
     clip_depth: u32,
-    pad: vec2<u32>,
+    normal_offset: f32,
+    slope_scaled_depth: f32,
+    texel_extent: vec2<f32>,
+    constant_depth: f32,
+    pad: u32,
 }
 ";
 
@@ -145,7 +179,18 @@ impl FrameMap {
     /// `f64` is rounded once to `f32`.
     #[must_use]
     pub fn gpu(&self, depth: ClipDepth) -> GpuShadowMap {
-        self.record(self.world_to_clip_cols(depth), depth)
+        self.record(self.world_to_clip_cols(depth), depth, 0.0)
+    }
+
+    /// [`FrameMap::gpu`] with the bias values for a PCF kernel of radius `r` texels
+    /// ([`FrameMap::bias`]).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`](crate::Error::InvalidArgument) naming `r` when it is negative
+    /// or not finite.
+    pub fn gpu_with_pcf(&self, depth: ClipDepth, r: f64) -> crate::Result<GpuShadowMap> {
+        self.bias(r, depth)?;
+        Ok(self.record(self.world_to_clip_cols(depth), depth, r))
     }
 
     /// World → light clip for points given relative to `origin` (the camera's position, or the
@@ -186,11 +231,12 @@ impl FrameMap {
     /// [`FrameMap::gpu`] with [`FrameMap::world_to_clip_relative`] as its matrix.
     #[must_use]
     pub fn gpu_relative(&self, origin: impl Into<DVec3>, depth: ClipDepth) -> GpuShadowMap {
-        self.record(self.world_to_clip_relative_cols(origin, depth), depth)
+        self.record(self.world_to_clip_relative_cols(origin, depth), depth, 0.0)
     }
 
-    fn record(&self, world_to_clip: [[f32; 4]; 4], depth: ClipDepth) -> GpuShadowMap {
+    fn record(&self, world_to_clip: [[f32; 4]; 4], depth: ClipDepth, r: f64) -> GpuShadowMap {
         let pair = |p: (f64, f64)| [p.0 as f32, p.1 as f32];
+        let bias = self.bias_unchecked(r, depth);
         GpuShadowMap {
             world_to_clip,
             split: pair(self.split),
@@ -202,7 +248,11 @@ impl FrameMap {
             // `Face`'s declaration order is `Face::ALL`'s (tests/upload.rs).
             face: self.face.map_or(GpuShadowMap::NO_FACE, |f| f as u32),
             clip_depth: GpuShadowMap::clip_depth_code(depth),
-            pad: [0; 2],
+            normal_offset: bias.normal_offset as f32,
+            slope_scaled_depth: bias.slope_scaled_depth as f32,
+            texel_extent: pair(bias.texel_extent),
+            constant_depth: bias.constant_depth as f32,
+            pad: 0,
         }
     }
 

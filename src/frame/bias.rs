@@ -1,0 +1,299 @@
+//! Depth bias, normal offset and texel extents of a map for a PCF kernel, from the exact texel
+//! footprint over the map's focus body B ([`FrameMap::bias`]).
+//!
+//! # The geometry
+//!
+//! Every map of the frame projects along the light: its clip w is constant along a light ray, so
+//! a texel is a light ray's cross-section, a parallelogram ⊥ l with edge vectors `E_s`, `E_t`
+//! (world units per unit of clip s, t; `output::texel_vectors`, the columns of the inverse
+//! Jacobian of the plane ⊥ l → (s, t)). A texel of a map of `res` texels spans 2/res of clip.
+//!
+//! A lookup at a point p reads the texels whose centres lie within ρ = r + ½ texels of p's
+//! projection in s and in t (r = 0: the one texel holding p; taps at whole-texel offsets up to r:
+//! r + ½; hardware 2×2 comparison filtering reaches ½ texel further, so pass r + ½ for it). The
+//! depth a texel stores is that of the surface on the ray through its centre. The map is
+//! projective, so the depth d of a plane is affine in (s, t), and a tap (a, b) texels of 2/res
+//! away (|a|, |b| ≤ ρ) stores, exactly,
+//!
+//! ```text
+//! d_tap − d(p) = (2/res) · (a · (c_s + ∂d/∂λ · τ_s) + b · (c_t + ∂d/∂λ · τ_t)),
+//! c_e = ∇d · E_e,   τ_e = (n · E_e) / cos α,
+//! ```
+//!
+//! with n the surface's unit normal, lit (n · l = −cos α < 0, α the angle between the normal and
+//! the direction to the light), `∂d/∂λ = ∇d · l` the depth's rate along the light, and c_e the
+//! depth's step across a texel edge at constant distance along the light (not 0 for a warped
+//! map, whose depth y/w varies across a plane ⊥ l). The worst tap is at most
+//!
+//! ```text
+//! ρ · (2/res) · ((|c_s| + |c_t|) + |∂d/∂λ| · diag · tan α),   diag = max(|E_s + E_t|, |E_s − E_t|)
+//! ```
+//!
+//! ahead of p, since |n⊥ · E_s| + |n⊥ · E_t| ≤ sin α · diag (|u · a| + |u · b| = max(|u · (a + b)|,
+//! |u · (a − b)|) for a unit u): the texel's longer diagonal, reached when n⊥ lies along it and p
+//! is at a texel corner. So:
+//!
+//! - **Depth bias**, `constant_depth + slope_scaled_depth · tan α` with
+//!   `constant_depth = ρ · (2/res) · max_B(|c_s| + |c_t|)` (plus 8 `f32` ulps at depth 1 for the
+//!   rounding of the two depths compared) and `slope_scaled_depth = ρ · (2/res) · max_B(diag ·
+//!   |∂d/∂λ|)`, in the map's depth units.
+//! - **Normal offset.** Looking up at p + o n raises the point o / cos α above the surface
+//!   along the light, worth `|∂d/∂λ| · o / cos α` of depth; it suffices when
+//!   `o ≥ ρ · (2/res) · (A cos α + diag · sin α)`, `A = (|c_s| + |c_t|) / |∂d/∂λ|` (the texel's
+//!   depth step as a distance along the light), for every α when
+//!   `o = ρ · (2/res) · hypot(max_B A, max_B diag)`. The offset point leaves B by o, and the bound
+//!   holds where the footprint there is B's: o small against the distance to the map's centre of
+//!   projection (tests/bias.rs checks lookups whose clip w is within 5 % of the surface point's;
+//!   with texels so coarse that p + o n passes the centre, w < 0, no normal offset can help).
+//! - **Texel extents.** `(2/res) · |E_s|` and `(2/res) · |E_t|`, the texel's two world-space
+//!   edges, for PCF or PCSS radii in world units (anisotropic for warped maps).
+//!
+//! # The maximum over B
+//!
+//! Each value is a maximum over B, taken exactly from B's vertices:
+//!
+//! - c_e is affine in position (d = (affine in σ) + (row₂ · l) · λ · w′(σ), so ∂d/∂s at constant λ
+//!   is affine in λ, a linear function of position): `|c_s| + |c_t|` is convex, its maximum at
+//!   a vertex.
+//! - Along a light ray nothing else changes, so the rest are maxima over B's projection, the
+//!   convex polygon of its vertices' projections. In map coordinates σ = (s, t) the plane ⊥ l is
+//!   reached through a homography whose denominator w′ = 1/w is affine in σ: an edge vector is
+//!   `N(σ) / w′(σ)²` with N affine in σ, and `∂d/∂λ = (row₂ · l) · w′` is affine. The depth
+//!   slope's `diag · |∂d/∂λ| ∝ |N(σ)| / w′(σ)` has convex sublevel sets `|N| ≤ c · w′`: its
+//!   maximum is at a vertex.
+//! - The edges and the diagonal, `|N| / w′²`, are not quasi-convex (for LiSPSM `|E_t| ∝ z · |(x,
+//!   z)|`, whose sublevel sets are not convex beyond 54.7° off the warp axis). Along a level line
+//!   of w′ the function is convex, so a maximum is on the polygon's boundary; on a segment
+//!   `|N(τ)|² / w′(τ)⁴` has its interior critical points at the roots of a quadratic
+//!   (`(dQ/dτ) w′ − 4 Q (dw′/dτ) = 0`, Q = |N|²), taken on every chord between two vertices
+//!   (every chord lies in B, and the polygon's edges are among them).
+//! - `A = (|c_s| + |c_t|) · w / |row₂ · l|` is the largest of the four products `(±c_s ± c_t) · w`
+//!   of affine functions, each a quadratic with no interior maximum in B unless along a whole line
+//!   or plane: its maximum is on a chord between two vertices, at an end or the parabola's apex.
+//!
+//! Signs: each depth value is what to *add* to the receiver's depth in the map's convention
+//! before comparing it with the stored depth (less-equal for [`ClipDepth::NegOneToOne`] and
+//! [`ClipDepth::ZeroToOne`], whose depth grows away from the light: negative; greater-equal for
+//! [`ClipDepth::Reversed`]: positive).
+
+use super::output::{texel_vectors, FrameMap};
+use crate::error::{fmt_num, Error, Result};
+use crate::maps::matrix::in_clip_depth;
+use crate::maps::ClipDepth;
+use glam::DVec3;
+
+/// A map's bias and filtering values for a PCF kernel ([`FrameMap::bias`]; the module docs
+/// derive them).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bias {
+    /// World units to move the lookup point along the surface's unit normal: with it alone no
+    /// lit surface (angle to the light below 90°) shadows itself (where the offset point's
+    /// footprint is B's: module docs).
+    pub normal_offset: f64,
+    /// The map's depth units per unit of tan α (α the angle between the surface's normal and the
+    /// direction to the light), to add to the receiver's depth: `constant_depth +
+    /// slope_scaled_depth · tan α` alone keeps a lit surface from shadowing itself. Negative for
+    /// [`ClipDepth::NegOneToOne`] and [`ClipDepth::ZeroToOne`], positive for
+    /// [`ClipDepth::Reversed`].
+    pub slope_scaled_depth: f64,
+    /// The map's depth units to add to the receiver's depth at any slope: the depth's largest
+    /// step across the kernel's reach at a constant distance along the light (0 for an
+    /// orthographic map), and the `f32` rounding of the depths compared (8 ulps at depth 1),
+    /// signed as `slope_scaled_depth`.
+    pub constant_depth: f64,
+    /// The largest world-space extents over B of the texel's two edges, along clip s and t.
+    pub texel_extent: (f64, f64),
+}
+
+impl FrameMap {
+    /// The normal offset, depth bias and texel extents for a PCF kernel of radius `r` texels
+    /// (taps at whole-texel offsets −r..=r in s and t; 0 for a single lookup; add ½ for hardware
+    /// comparison filtering), each the maximum over the map's focus body B, the depth values in
+    /// `depth`'s convention (see the module [`crate::frame::bias`] for the derivation).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `r` when it is negative or not finite.
+    pub fn bias(&self, r: f64, depth: ClipDepth) -> Result<Bias> {
+        if !(r.is_finite() && r >= 0.0) {
+            return Err(Error::invalid(
+                "r",
+                format!(
+                    "the PCF radius must be finite and ≥ 0 texels (got {}); use 0 for a single \
+                     lookup",
+                    fmt_num(r)
+                ),
+            ));
+        }
+        Ok(self.bias_unchecked(r, depth))
+    }
+
+    /// [`FrameMap::bias`] for a valid `r`.
+    pub(super) fn bias_unchecked(&self, r: f64, depth: ClipDepth) -> Bias {
+        let m = self.shadow.matrix();
+        let l = self.shadow.light_dir();
+        let m_c = in_clip_depth(&m, depth);
+        let texel = 2.0 / f64::from(self.resolution);
+        let reach = (r + 0.5) * texel;
+        // Per vertex: (w, E_s, E_t), the depth's steps across the texel (c_s, c_t) and its rate
+        // along the light.
+        let mut at = [(0.0, DVec3::ZERO, DVec3::ZERO); super::MAX_BODY_VERTICES];
+        let mut steps = [(0.0, 0.0, 0.0); super::MAX_BODY_VERTICES];
+        let mut n = 0;
+        let (mut slope, mut across, mut k, mut sign) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+        for p in self.body() {
+            let Some((es, et)) = texel_vectors(&m, l, *p) else {
+                continue;
+            };
+            let h = m_c * p.extend(1.0);
+            let grad = (m_c.row(2).truncate() * h.w - m_c.row(3).truncate() * h.z) / (h.w * h.w);
+            let rate = grad.dot(l);
+            let (cs, ct) = (grad.dot(es), grad.dot(et));
+            slope = slope.max(diagonal(es, et) * rate.abs());
+            across = across.max(cs.abs() + ct.abs());
+            k = k.max((rate * h.w).abs());
+            sign = rate.signum();
+            at[n] = (h.w, es, et);
+            steps[n] = (h.w, cs, ct);
+            n += 1;
+        }
+        let at = &at[..n];
+        let ext_s = chord_max(at, |es, _| es);
+        let ext_t = chord_max(at, |_, et| et);
+        let diag = chord_max(at, |es, et| es + et).max(chord_max(at, |es, et| es - et));
+        // max over B of (|c_s| + |c_t|) / |∂d/∂λ| = (|c_s| + |c_t|) · w / |k|.
+        let along = steps_max(&steps[..n]) / k;
+        Bias {
+            normal_offset: reach * along.hypot(diag),
+            slope_scaled_depth: -sign * reach * slope,
+            constant_depth: -sign * (reach * across + 8.0 * f64::from(f32::EPSILON)),
+            texel_extent: (texel * ext_s, texel * ext_t),
+        }
+    }
+}
+
+/// The largest `(|c_s| + |c_t|) · w` over B from its vertices' `(w, c_s, c_t)`, each affine in
+/// position: the maximum of the four products `(±c_s ± c_t) · w`, each a quadratic along a chord
+/// whose maximum over B is on a chord between two vertices (module docs), at an end or at the
+/// parabola's apex.
+fn steps_max(steps: &[(f64, f64, f64)]) -> f64 {
+    let mut best = 0.0f64;
+    for (i, &(wi, si, ti)) in steps.iter().enumerate() {
+        for &(wj, sj, tj) in &steps[i..] {
+            for (a, b) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
+                let (u0, u1) = (a * si + b * ti, a * (sj - si) + b * (tj - ti));
+                let (w0, w1) = (wi, wj - wi);
+                let q = |t: f64| (u0 + u1 * t) * (w0 + w1 * t);
+                best = best.max(q(0.0)).max(q(1.0));
+                if u1 * w1 < 0.0 {
+                    let apex = -(u0 * w1 + u1 * w0) / (2.0 * u1 * w1);
+                    if apex > 0.0 && apex < 1.0 {
+                        best = best.max(q(apex));
+                    }
+                }
+            }
+        }
+    }
+    best
+}
+
+/// The texel's longer diagonal.
+fn diagonal(es: DVec3, et: DVec3) -> f64 {
+    (es + et).length().max((es - et).length())
+}
+
+/// The largest length of the edge vector `f(E_s, E_t)` over B, from its values at B's vertices
+/// `(w, E_s, E_t)`: at the vertices and at the interior critical points of every chord between
+/// two (module docs: `N = E / w²` and `w′ = 1 / w` are affine along a chord in map coordinates).
+fn chord_max(at: &[(f64, DVec3, DVec3)], f: impl Fn(DVec3, DVec3) -> DVec3) -> f64 {
+    let mut best = at
+        .iter()
+        .map(|&(_, es, et)| f(es, et).length())
+        .fold(0.0f64, f64::max);
+    for (i, &(wi, esi, eti)) in at.iter().enumerate() {
+        for &(wj, esj, etj) in &at[i + 1..] {
+            let (li, lj) = (1.0 / wi, 1.0 / wj);
+            let (ni, nj) = (f(esi, eti) / (wi * wi), f(esj, etj) / (wj * wj));
+            let dn = nj - ni;
+            let dl = lj - li;
+            // Q(τ) = a τ² + b τ + c = |N(τ)|²; w′(τ) = li + dl τ; roots of Q′ w′ − 4 Q dl.
+            let (a, b, c) = (dn.length_squared(), 2.0 * ni.dot(dn), ni.length_squared());
+            let (qa, qb, qc) = (
+                -2.0 * a * dl,
+                2.0 * a * li - 3.0 * b * dl,
+                b * li - 4.0 * c * dl,
+            );
+            for tau in quadratic_roots(qa, qb, qc).into_iter().flatten() {
+                if tau > 0.0 && tau < 1.0 {
+                    let w = li + dl * tau;
+                    best = best.max((ni + dn * tau).length() / (w * w));
+                }
+            }
+        }
+    }
+    best
+}
+
+/// The real roots of `a x² + b x + c` (a linear equation when `a` is 0; none when degenerate).
+fn quadratic_roots(a: f64, b: f64, c: f64) -> [Option<f64>; 2] {
+    if a == 0.0 {
+        return [(b != 0.0).then(|| -c / b), None];
+    }
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 {
+        return [None, None];
+    }
+    // The cancellation-free pair.
+    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    [Some(q / a), (q != 0.0).then(|| c / q)]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quadratic_roots_are_roots() {
+        for (a, b, c) in [
+            (1.0, -3.0, 2.0),
+            (2.0, 0.0, -8.0),
+            (0.0, 2.0, -1.0),
+            (1e-9, 1.0, -1.0),
+        ] {
+            for x in quadratic_roots(a, b, c).into_iter().flatten() {
+                let v: f64 = a * x * x + b * x + c;
+                assert!(
+                    v.abs() < 1e-9 * (1.0 + x.abs() * x.abs()),
+                    "{a} {b} {c}: {x} gives {v}"
+                );
+            }
+        }
+        assert_eq!(quadratic_roots(1.0, 0.0, 1.0), [None, None]);
+    }
+
+    /// The chord maximum finds an interior maximum of |N|/w′² that no vertex has (a dense scan of
+    /// the chord agrees).
+    #[test]
+    fn chord_max_finds_an_interior_maximum() {
+        // Vertex values: w and E chosen so that |E(τ)| = |N(τ)| / w′(τ)² peaks inside.
+        let at = [
+            (1.0, DVec3::new(1.0, 0.0, 0.0), DVec3::ZERO),
+            (4.0, DVec3::new(-0.05, 0.1, 0.0), DVec3::ZERO),
+        ];
+        let got = chord_max(&at, |es, _| es);
+        let (li, lj) = (1.0, 0.25);
+        let (ni, nj) = (at[0].1, at[1].1 / 16.0);
+        let scan = (0..=100_000)
+            .map(|k| {
+                let t = f64::from(k) / 100_000.0;
+                let w = li + (lj - li) * t;
+                (ni + (nj - ni) * t).length() / (w * w)
+            })
+            .fold(0.0f64, f64::max);
+        let vertices = at[0].1.length().max(at[1].1.length());
+        assert!(
+            scan > 1.2 * vertices,
+            "the example's maximum is interior ({scan} vs {vertices})"
+        );
+        assert!((got - scan).abs() <= 1e-6 * scan, "{got} vs scan {scan}");
+    }
+}
