@@ -10,35 +10,13 @@
 
 use crate::gpu::FrameOutput;
 use crate::perspective::{centred, lloyd2006, one_sided, perspective_error};
-use crate::scene::{ray_occluded, Mesh, Scene, SceneBox, FACING};
+use crate::scene::{ray_occluded, Mesh, Scene, FACING};
 use crate::schemes::{Built, Scheme, View};
-use glam::{DMat2, DMat4, DVec2, DVec3};
+use crate::shadows::{debug_pixel, shadow_decidable, MapGeom};
+use glam::{DMat2, DVec2, DVec3};
 use serde::Serialize;
 use shadow_aliasing::measure::vertex::vertex_max;
 use shadow_aliasing::measure::{surface_footprint, Footprint, Grids};
-
-/// The contact band, in shadow-map texels: a pixel in a cast shadow is left out of the shadow
-/// comparison when, along the light ray the shader reads, the caster's face lies within this
-/// many texels' depth slope of it (the face's depth change over one texel step along s or t,
-/// the larger; [`crate::gpu::SLOPE_BIAS`] is half of it). There the depth bias lets light leak
-/// onto a receiver behind a caster standing on it.
-pub const CONTACT_TEXELS: f64 = 1.0;
-
-/// A map as the shadow test needs it: world ↔ light clip (depth [0, 1]).
-struct MapGeom {
-    world_to_clip: DMat4,
-    clip_to_world: DMat4,
-}
-
-/// The texel centre is sampled also this far (texels) from it along each map axis: where the
-/// exact boundary passes within it of the centre, the rasterizer's `f32` coverage decides either
-/// way.
-const CENTRE_TOLERANCE: f64 = 0.02;
-
-/// How close to a texel edge (in texels) a pixel's map position must be for the neighbouring
-/// texel to be taken as a lookup the GPU may have made instead (its `f32` position is within
-/// about 10⁻⁴ texel of the exact one).
-const TEXEL_TIE: f64 = 2e-3;
 
 /// Surfaces nearly edge-on to the light (|n·L| below this) are left out of the perspective-error
 /// maxima: dividing out their projection factor amplifies the GPU's rounding without bound.
@@ -164,180 +142,6 @@ const SKY: Pixel = Pixel {
     predicted: None,
     decidable: false,
 };
-
-/// The texel-band test of one pixel facing the light (docs/rendered.md, "Shadow correctness").
-///
-/// The shader reads one texel, nearest, and compares the pixel's light depth with the depth
-/// stored there: the first caster face turned away from the light along the light ray through
-/// the texel's centre (second-depth maps). Its verdict is the exact one except where the exact
-/// shadow changes between the pixel and that ray, or a caster stands on the receiver there (the
-/// ray then leaves the caster through its bottom, which is not drawn, or within the depth bias
-/// of the receiver). So a pixel is compared unless, for the centre `c` of the texel its map
-/// position falls in (and of the neighbouring texel when that position is within
-/// [`TEXEL_TIE`] of an edge, where the GPU's `f32` may round across):
-///
-/// - the point `q` where c's light ray meets the pixel's surface plane is inside a box, or its
-///   exact state differs from the pixel's; or
-/// - the point `r` on c's light ray at the pixel's light depth is inside a box other than the
-///   one the pixel lies on, or (outside every box) its exact state differs from the pixel's.
-///
-/// Both points lie within half a texel of the pixel along each map axis: the pixels left out
-/// are those whose texel straddles the exact boundary or a caster's foot, within half a texel
-/// of it along each map axis (on average an eighth of a texel on each side of a boundary). The
-/// light rays are the map's own (its matrix, so a wrong light direction is not excused); the
-/// exact states are ray casts toward the true light.
-#[allow(clippy::too_many_arguments)] // one pixel and its map, each needed once
-fn shadow_decidable(
-    scene: &Scene,
-    map: &MapGeom,
-    res: f64,
-    pw: DVec3,
-    nw: DVec3,
-    light: DVec3,
-    occluded: bool,
-) -> bool {
-    let (wc, inv) = (&map.world_to_clip, &map.clip_to_world);
-    let h = *wc * pw.extend(1.0);
-    if h.w <= 0.0 {
-        return false;
-    }
-    let s = (h.x / h.w + 1.0) * 0.5 * res;
-    let t = (h.y / h.w + 1.0) * 0.5 * res;
-    let depth = h.z / h.w;
-    if !(0.0..res).contains(&s) || !(0.0..res).contains(&t) {
-        return false;
-    }
-    let lift = 1e-6 * (1.0 + pw.abs().max_element());
-    // The box the pixel lies on (its point just inside, against the normal).
-    let own = scene
-        .boxes
-        .iter()
-        .position(|b| box_contains(b, pw - nw * lift));
-    let inside = |q: DVec3, skip: Option<usize>| {
-        scene
-            .boxes
-            .iter()
-            .enumerate()
-            .any(|(k, b)| Some(k) != skip && box_contains(b, q))
-    };
-    // The texel-centre ray through map position (a, b): its points at light depths 0 and 1.
-    let ray = |a: f64, b: f64| -> Option<(DVec3, DVec3)> {
-        let (x, y) = (2.0 * a / res - 1.0, 2.0 * b / res - 1.0);
-        let q0 = inv.project_point3(DVec3::new(x, y, 0.0));
-        let q1 = inv.project_point3(DVec3::new(x, y, 1.0));
-        (q0.is_finite() && q1.is_finite()).then_some((q0, q1))
-    };
-    let agrees = |a: f64, b: f64| -> bool {
-        let Some((q0, q1)) = ray(a, b) else {
-            return false;
-        };
-        let d = q1 - q0;
-        let den = d.dot(nw);
-        if den.abs() < 1e-300 {
-            return false;
-        }
-        // q: on the pixel's plane (lifted off it as the ray cast lifts the pixel).
-        let q = q0 + d * ((pw - q0).dot(nw) / den) + nw * lift;
-        if inside(q, None) || ray_occluded(scene, q, DVec3::ZERO, light) != occluded {
-            return false;
-        }
-        // r: at the pixel's light depth.
-        let (x, y) = (2.0 * a / res - 1.0, 2.0 * b / res - 1.0);
-        let r = inv.project_point3(DVec3::new(x, y, depth));
-        if !r.is_finite() {
-            return false;
-        }
-        if own.is_some_and(|k| box_contains(&scene.boxes[k], r)) {
-            return true;
-        }
-        if inside(r, own) || ray_occluded(scene, r, DVec3::ZERO, light) != occluded {
-            return false;
-        }
-        // The depth bias: the caster face the ray from r meets first must lie farther toward
-        // the light than its slope-scaled bias, or the stored depth passes r.
-        match first_face(scene, r, light) {
-            Some((e, n)) if occluded => {
-                // One texel's step along s and t at r's light depth (world), and the face's
-                // depth change over it: (Δ·n)/(L·n) along the light.
-                let ds = inv.project_point3(DVec3::new(x + 2.0 / res, y, depth)) - r;
-                let dt = inv.project_point3(DVec3::new(x, y + 2.0 / res, depth)) - r;
-                let slope = ds.dot(n).abs().max(dt.dot(n).abs()) / n.dot(light).abs();
-                e > CONTACT_TEXELS * slope
-            }
-            _ => true,
-        }
-    };
-    let centres = |v: f64| -> ([f64; 2], usize) {
-        let c = v.floor() + 0.5;
-        let f = v - v.floor();
-        if f < TEXEL_TIE {
-            ([c, c - 1.0], 2)
-        } else if f > 1.0 - TEXEL_TIE {
-            ([c, c + 1.0], 2)
-        } else {
-            ([c, c], 1)
-        }
-    };
-    let (cs, ns) = centres(s);
-    let (ct, nt) = centres(t);
-    let e = CENTRE_TOLERANCE;
-    cs[..ns].iter().all(|&a| {
-        ct[..nt].iter().all(|&b| {
-            [(0.0, 0.0), (e, 0.0), (-e, 0.0), (0.0, e), (0.0, -e)]
-                .iter()
-                .all(|&(da, db)| agrees(a + da, b + db))
-        })
-    })
-}
-
-/// The first box face the ray from `x` toward the light (against `light`, the direction it
-/// travels) meets from outside: its distance and outward world normal (a face turned away from
-/// the light: the one a second-depth map stores).
-fn first_face(scene: &Scene, x: DVec3, light: DVec3) -> Option<(f64, DVec3)> {
-    let mut best: Option<(f64, DVec3)> = None;
-    for b in &scene.boxes {
-        let (c, rot) = (b.centre(), b.rotation());
-        let (o, d) = if b.is_rotated() {
-            (c + rot.inverse() * (x - c), rot.inverse() * -light)
-        } else {
-            (x, -light)
-        };
-        let (mut t0, mut t1, mut axis) = (f64::NEG_INFINITY, f64::INFINITY, None);
-        let mut miss = false;
-        for k in 0..3 {
-            if d[k].abs() < 1e-300 {
-                miss |= o[k] < b.min[k] || o[k] > b.max[k];
-                continue;
-            }
-            let (a, e) = ((b.min[k] - o[k]) / d[k], (b.max[k] - o[k]) / d[k]);
-            let (a, e) = if a < e { (a, e) } else { (e, a) };
-            if a > t0 {
-                t0 = a;
-                axis = Some(k);
-            }
-            t1 = t1.min(e);
-        }
-        let Some(k) = axis else { continue };
-        if miss || t0 > t1 || t0 <= 0.0 || best.is_some_and(|(t, _)| t <= t0) {
-            continue;
-        }
-        let mut n = DVec3::ZERO;
-        n[k] = -d[k].signum();
-        best = Some((t0, if b.is_rotated() { rot * n } else { n }));
-    }
-    best
-}
-
-/// Whether the world point `q` lies in the (possibly rotated) box `b`, boundary included.
-fn box_contains(b: &SceneBox, q: DVec3) -> bool {
-    let l = if b.is_rotated() {
-        let c = b.centre();
-        c + b.rotation().inverse() * (q - c)
-    } else {
-        q
-    };
-    (0..3).all(|k| l[k] >= b.min[k] && l[k] <= b.max[k])
-}
 
 /// The first pass over rows `rows` (exact points, classes, predictions, the texel band).
 #[allow(clippy::too_many_arguments)] // the frame's inputs, each needed once
@@ -585,7 +389,7 @@ pub fn analyse(
                             "  shadow mismatch at ({}, {}) eye {:?}: surface {} exact_lit {exact_lit} part {} texel {:?}",
                             i % w, i / w, q.p, out.id[i] - 1, q.part, out.texel[i]
                         );
-                        debug_pixel(scene, view, built, res, q);
+                        debug_pixel(scene, view, built, res, q.p, q.n, q.part);
                     }
                 } else {
                     band += 1;
@@ -830,47 +634,4 @@ impl Lloyd {
         }
         d
     }
-}
-
-/// `RENDER_CHECK_DEBUG`: where a compared pixel's shadow disagrees, the texel-centre ray's
-/// points and the boxes the exact ray casts meet.
-fn debug_pixel(scene: &Scene, view: &View, built: &Built, res: u32, q: &Pixel) {
-    let to_world = view.world_to_eye.inverse();
-    let (pw, nw) = (
-        to_world.transform_point3(q.p),
-        to_world.transform_vector3(q.n),
-    );
-    let wc = built.maps[q.part].gpu * view.world_to_eye;
-    let inv = wc.inverse();
-    let h = wc * pw.extend(1.0);
-    let r = f64::from(res);
-    let (s, t, d) = (
-        (h.x / h.w + 1.0) * 0.5 * r,
-        (h.y / h.w + 1.0) * 0.5 * r,
-        h.z / h.w,
-    );
-    let (x, y) = (
-        2.0 * (s.floor() + 0.5) / r - 1.0,
-        2.0 * (t.floor() + 0.5) / r - 1.0,
-    );
-    let q0 = inv.project_point3(DVec3::new(x, y, 0.0));
-    let dd = inv.project_point3(DVec3::new(x, y, 1.0)) - q0;
-    let qc = q0 + dd * ((pw - q0).dot(nw) / dd.dot(nw));
-    let rc = inv.project_point3(DVec3::new(x, y, d));
-    let hits = |x: DVec3| -> Vec<usize> {
-        (0..scene.boxes.len())
-            .filter(|&k| {
-                let mut one = scene.clone();
-                one.boxes = vec![scene.boxes[k]];
-                ray_occluded(&one, x, DVec3::ZERO, view.light_world)
-            })
-            .collect()
-    };
-    eprintln!(
-        "    world {pw:.4} map ({s:.3}, {t:.3}) depth {d:.6}; on the plane {qc:.4} hits boxes {:?}; \
-         at its depth {rc:.4} hits {:?}; the pixel's ray hits {:?}",
-        hits(qc),
-        hits(rc),
-        hits(pw + nw * 1e-5),
-    );
 }

@@ -11,4 +11,5 @@ pub mod perspective;
 pub mod run;
 pub mod scene;
 pub mod schemes;
+pub mod shadows;
 pub mod targets;
