@@ -725,3 +725,28 @@ fn an_unwritable_file_is_io_with_its_path() {
     assert_eq!(files, vec![dir.join("lloyd2006-fig5.svg")]);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Where a figure deliberately departs from the paper, its caption says so (issue 25): the
+/// departures as the papers show them (Barroso & Celes' Fig 5 panels are perpendicular and
+/// parallel light; Martin & Tan's box may rotate; Zhang et al.'s rows have scene insets).
+#[test]
+fn captions_say_where_a_figure_differs_from_the_paper() {
+    let dir = out_dir("figures-differ");
+    let says = [
+        ("barroso-fig5", "perpendicular"),
+        ("martin-tan-fig3", "may be rotated"),
+        ("zhang-fig3", "scene insets"),
+    ];
+    let names: Vec<&str> = says.iter().map(|(n, _)| *n).collect();
+    render_all(&dir, Format::Svg, &names, |_| {}).unwrap();
+    for (name, phrase) in says {
+        let svg = std::fs::read_to_string(dir.join(format!("{name}.svg"))).unwrap();
+        let caption: String = texts(&svg)
+            .iter()
+            .map(|(_, c)| visible(c))
+            .collect::<Vec<_>>()
+            .join(" ");
+        assert!(caption.contains("Unlike the paper"), "{name}");
+        assert!(caption.contains(phrase), "{name}: no {phrase:?}");
+    }
+}

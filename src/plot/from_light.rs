@@ -117,7 +117,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         )?,
     ];
     let caption = format!(
-        "Barroso & Celes 2007, Fig. 5: the view frustum as seen by the light with k = 4 z-partitions (n = 1, f = 100, φ = 30°; light 45° above the view direction, from behind the viewer's back: it travels forward and down). Split depths from analytic::partition::z_splits: (a) {}; (b) {}. Solid: the frustum's edges and the split planes' cross-sections; dashed: each partition's orthographic map (its light-space bounding rectangle). Computed; the paper's figure is a sketch.",
+        "Barroso & Celes 2007, Fig. 5: the view frustum as seen by the light with k = 4 z-partitions (n = 1, f = 100, φ = 30°; light 45° above the view direction, from behind the viewer's back: it travels forward and down). Split depths from analytic::partition::z_splits: (a) {}; (b) {}. Solid: the frustum's edges and the split planes' cross-sections; dashed: each partition's orthographic map (its light-space bounding rectangle). Computed; the paper's figure is a sketch. Unlike the paper, whose panels are (a) light perpendicular and (b) light parallel to the view direction, both panels here share one light at 45° and compare self-similar partitions (a) with the adaptive partitions of Eq 19 (b, not in the paper's figure).",
         fmt_planes(panels[0].planes.as_slice()),
         fmt_planes(panels[1].planes.as_slice())
     );

@@ -129,7 +129,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         .map(|(q, (lo, hi))| format!("{q} {lo:.3} to {hi:.1}"))
         .collect();
     let caption = vec![
-        "Zhang et al. 2009, Fig. 3, measured: E_p = 2 m_z, E_q = 2 m_x of each scheme's built matrix (maps::warp, measure::point_error) on the frustum's vertical plane x = 0.".to_string(),
+        "Zhang et al. 2009, Fig. 3, measured: E_p = 2 m_z, E_q = 2 m_x of each scheme's built matrix (maps::warp, measure::point_error) on the frustum's vertical plane x = 0. Unlike the paper, the scene insets beside each row are omitted.".to_string(),
         format!(
             "n = 1, f = 100, φ = π/6; light above and in front of the viewer at angle θ to the view direction. LiSPSM: λ = (n + √(fn))/sin θ; TSM: 80 % rule, focus δ = {TSM_FOCUS}. Ranges: {}.",
             range_text.join(", ")
