@@ -35,6 +35,10 @@ class FrameResult(TypedDict):
     max_mz: npt.NDArray[np.float64]
     storage_factor: npt.NDArray[np.float64]
     max_error_pixels: npt.NDArray[np.float64]
+    normal_offset: npt.NDArray[np.float64]
+    slope_scaled_depth: npt.NDArray[np.float64]
+    constant_depth: npt.NDArray[np.float64]
+    texel_extent: npt.NDArray[np.float64]
     slot: npt.NDArray[np.int64]
     map_focus: List[str]
     face: List[Optional[str]]
@@ -150,8 +154,8 @@ def point_error(matrix: ArrayLike, light_dir: Vec3, point: ArrayLike, near: floa
     """[m_x, m_z] (last axis) of one matrix at (..., 3) eye-space points."""
 def frame(view: ArrayLike, near: float, far: float, half_fov: float, light_dir: Vec3, *,
           aspect: float = ..., receivers: Optional[ArrayLike] = ..., casters: Optional[ArrayLike] = ...,
-          depth_range: Optional[ArrayLike] = ..., depth_clamp: bool = ..., map_resolution: int = ...,
-          image_height: int = ...,
+          depth_range: Optional[ArrayLike] = ..., depth_clamp: bool = ..., measure: bool = ...,
+          map_resolution: int = ..., image_height: int = ..., pcf_radius: float = ...,
           scheme: Literal["single", "cascades", "stable", "tsm", "faces"] = ...,
           rule: Optional[str] = ..., k: Optional[int] = ...,
           partition: Optional[Literal["self_similar", "log", "uniform", "practical", "adaptive",

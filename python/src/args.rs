@@ -130,6 +130,7 @@ fn count_u32(name: &str, ob: &Any<'_>) -> PyResult<u32> {
 
 named! {
     fn map_resolution = count_u32() -> u32;
+    fn pcf_radius = real() -> f64;
     fn image_height = count_u32() -> u32;
     fn near = real() -> f64;
     fn far = real() -> f64;

@@ -11,8 +11,8 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyList, PyString};
 use shadow_aliasing::frame::{
-    frame as build_frame, Aabb, Bound as SceneBound, Camera, CascadeSplits, Focus, FrameInput,
-    FrameScheme, LightCase, WarpCentre,
+    frame as build_frame, Aabb, Bias, Bound as SceneBound, Camera, CascadeSplits, Focus,
+    FrameInput, FrameScheme, LightCase, WarpCentre,
 };
 use shadow_aliasing::maps::faces::FaceWarp;
 use shadow_aliasing::maps::{ClipDepth, TsmOptions, TsmSearch, WarpRule};
@@ -114,8 +114,7 @@ fn pair(name: &str, ob: Option<&Any<'_>>) -> PyResult<Option<(f64, f64)>> {
 }
 
 /// A bool (Python's or NumPy's); anything else is a `TypeError`.
-fn depth_clamp_arg(ob: &Any<'_>) -> PyResult<bool> {
-    let name = "depth_clamp";
+fn flag(name: &str, ob: &Any<'_>) -> PyResult<bool> {
     let is_numpy_bool = ob.is_instance(&ob.py().import("numpy")?.getattr("bool_")?)?;
     if ob.is_instance_of::<PyBool>() || is_numpy_bool {
         return ob.is_truthy();
@@ -124,6 +123,16 @@ fn depth_clamp_arg(ob: &Any<'_>) -> PyResult<bool> {
         "{name} must be a bool (got {})",
         args::kind(ob)
     )))
+}
+
+/// `depth_clamp`, by [`flag`].
+fn depth_clamp_arg(ob: &Any<'_>) -> PyResult<bool> {
+    flag("depth_clamp", ob)
+}
+
+/// `measure`, by [`flag`].
+fn measure_arg(ob: &Any<'_>) -> PyResult<bool> {
+    flag("measure", ob)
 }
 
 /// `dtype`: float64 (the default) or float32, as a NumPy type, dtype or its name.
@@ -232,7 +241,8 @@ fn unused(name: &str, scheme: &str) -> PyErr {
 /// docs/python.md. Returns a dict of NumPy arrays, one entry per built map along the first axis.
 #[pyfunction]
 #[pyo3(signature = (view, near, far, half_fov, light_dir, *, aspect=1.0, receivers=None,
-    casters=None, depth_range=None, depth_clamp=false, map_resolution=2048, image_height=2048,
+    casters=None, depth_range=None, depth_clamp=false, measure=true, map_resolution=2048,
+    image_height=2048, pcf_radius=0.0,
     scheme="single", rule=None, k=None, partition=None, splits=None, fractions=None, bevy=None,
     lambda_=None, overlap=None, eta=None, focus=None, near_hint=None, far_hint=None,
     shadow_distance=None, xi=None, iterative=None, centre="rule", clip_depth="neg_one_to_one",
@@ -250,8 +260,10 @@ pub fn frame<'py>(
     casters: Option<&Any<'py>>,
     depth_range: Option<&Any<'py>>,
     #[pyo3(from_py_with = depth_clamp_arg)] depth_clamp: bool,
+    #[pyo3(from_py_with = measure_arg)] measure: bool,
     #[pyo3(from_py_with = args::map_resolution)] map_resolution: u32,
     #[pyo3(from_py_with = args::image_height)] image_height: u32,
+    #[pyo3(from_py_with = args::pcf_radius)] pcf_radius: f64,
     #[pyo3(from_py_with = args::scheme)] scheme: &str,
     rule: Option<&Any<'py>>,
     k: Option<&Any<'py>>,
@@ -508,6 +520,7 @@ pub fn frame<'py>(
     let mut input = FrameInput::new(camera, light, map_resolution, image_height)
         .scheme(fs)
         .depth_clamp(depth_clamp)
+        .measure(measure)
         .centre(centre);
     if let Some(b) = receivers.as_deref() {
         input = input.receivers(SceneBound::Boxes(b));
@@ -521,7 +534,7 @@ pub fn frame<'py>(
     let f = py
         .detach(|| build_frame(&input))
         .map_err(|e| frame_err(e, bevy_given))?;
-    result(py, &f, depth, f32_out)
+    result(py, &f, depth, f32_out, pcf_radius)
 }
 
 /// The frame as a dict of arrays.
@@ -530,6 +543,7 @@ fn result<'py>(
     f: &shadow_aliasing::frame::Frame,
     depth: ClipDepth,
     f32_out: bool,
+    pcf_radius: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let maps: Vec<(usize, &shadow_aliasing::frame::FrameMap)> = f
         .slots()
@@ -595,6 +609,37 @@ fn result<'py>(
     d.set_item("max_mz", column(&|x| x.max_mz)?)?;
     d.set_item("storage_factor", column(&|x| x.storage_factor)?)?;
     d.set_item("max_error_pixels", column(&|x| x.max_error_pixels)?)?;
+    let biases = maps
+        .iter()
+        .map(|(_, x)| {
+            x.bias(pcf_radius, depth).map_err(|e| match e {
+                Error::InvalidArgument { name: "r", reason } => {
+                    PyValueError::new_err(format!("pcf_radius {reason}"))
+                }
+                e => err(e),
+            })
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    let bias_column = |g: &dyn Fn(&Bias) -> f64| -> PyResult<Any<'py>> {
+        to_python(py, vec![m], biases.iter().map(g).collect())
+    };
+    d.set_item("normal_offset", bias_column(&|b| b.normal_offset)?)?;
+    d.set_item(
+        "slope_scaled_depth",
+        bias_column(&|b| b.slope_scaled_depth)?,
+    )?;
+    d.set_item("constant_depth", bias_column(&|b| b.constant_depth)?)?;
+    d.set_item(
+        "texel_extent",
+        to_python(
+            py,
+            vec![m, 2],
+            biases
+                .iter()
+                .flat_map(|b| [b.texel_extent.0, b.texel_extent.1])
+                .collect(),
+        )?,
+    )?;
     let slot: Vec<i64> = maps.iter().map(|(i, _)| *i as i64).collect();
     d.set_item("slot", numpy::PyArray1::from_vec(py, slot))?;
     d.set_item(

@@ -250,6 +250,8 @@ def test_out_of_view_receivers_give_no_map():
     (dict(xi=0.1), "xi"),
     (dict(dtype=np.int32), "dtype"),
     (dict(dtype="float16"), "dtype"),
+    (dict(pcf_radius=-1.0), "pcf_radius"),
+    (dict(measure=1), "measure"),
 ])
 def test_bad_arguments_name_themselves(kwargs, name):
     args = dict(view=np.eye(4), **CAM, light_dir=LIGHT)
@@ -257,3 +259,34 @@ def test_bad_arguments_name_themselves(kwargs, name):
     with pytest.raises((ValueError, TypeError)) as e:
         sa.frame(**args)
     assert name in str(e.value), str(e.value)
+
+
+def test_bias_values_follow_the_clip_depth_convention():
+    # frame::bias: depth values are what to add to the receiver's depth, negative where depth
+    # grows away from the light, positive for reversed depth; [0, 1] depth is half of [-1, 1].
+    kw = dict(**CAM, light_dir=LIGHT, rule="lispsm", receivers=[GROUND])
+    gl = sa.frame(np.eye(4), **kw)
+    zo = sa.frame(np.eye(4), **kw, clip_depth="zero_to_one")
+    rv = sa.frame(np.eye(4), **kw, clip_depth="reversed")
+    assert (gl["slope_scaled_depth"] < 0).all() and (rv["slope_scaled_depth"] > 0).all()
+    np.testing.assert_allclose(zo["slope_scaled_depth"], 0.5 * gl["slope_scaled_depth"], rtol=1e-12)
+    np.testing.assert_array_equal(rv["slope_scaled_depth"], -zo["slope_scaled_depth"])
+    # The texel's extents over B reach at least the largest edge at B's vertices.
+    assert gl["texel_extent"].max() >= gl["texel_world"][0] * (1 - 1e-12)
+    # A wider PCF kernel needs a larger normal offset; the matrices do not change.
+    wide = sa.frame(np.eye(4), **kw, pcf_radius=2.0)
+    assert wide["normal_offset"][0] > gl["normal_offset"][0] > 0
+    np.testing.assert_array_equal(wide["world_to_clip"], gl["world_to_clip"])
+
+
+def test_an_orthographic_map_has_one_texel_size():
+    r = sa.frame(np.eye(4), **CAM, light_dir=LIGHT, rule="uniform", receivers=[GROUND])
+    np.testing.assert_allclose(r["texel_extent"][0].max(), r["texel_world"][0], rtol=1e-9)
+
+
+def test_unmeasured_frames_keep_the_matrices_and_report_no_bound():
+    kw = dict(**CAM, light_dir=LIGHT, receivers=[GROUND], scheme="cascades", k=3, partition="log")
+    a = sa.frame(np.eye(4), **kw)
+    b = sa.frame(np.eye(4), **kw, measure=False)
+    np.testing.assert_array_equal(a["world_to_clip"], b["world_to_clip"])
+    assert np.isinf(b["max_mx"]).all() and np.isfinite(a["max_mx"]).all()
