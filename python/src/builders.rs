@@ -486,16 +486,7 @@ pub fn tsm<'py>(
 ) -> PyResult<Any<'py>> {
     let view = view_of(near, far, half_fov, aspect)?;
     let l = vec3("light_dir", light_dir)?;
-    let search = match (xi, iterative) {
-        (None, None) => TsmSearch::EightyPercent,
-        (Some(x), None) => TsmSearch::Line(x),
-        (None, Some(map_lines)) => TsmSearch::Iterative { map_lines },
-        _ => {
-            return Err(PyValueError::new_err(
-                "xi and iterative are alternatives: give at most one",
-            ))
-        }
-    };
+    let search = tsm_search(xi, iterative)?;
     let opts = TsmOptions {
         focus: focus.unwrap_or(0.5 * (far - near)),
         search,
@@ -510,6 +501,18 @@ pub fn tsm<'py>(
         e => err(e),
     })?;
     one_matrix(py, &m.shadow.with_clip_depth(depth))
+}
+
+/// TSM's line rule from `xi` and `iterative` (alternatives; neither: the 80 % rule).
+pub(crate) fn tsm_search(xi: Option<f64>, iterative: Option<u32>) -> PyResult<TsmSearch> {
+    match (xi, iterative) {
+        (None, None) => Ok(TsmSearch::EightyPercent),
+        (Some(x), None) => Ok(TsmSearch::Line(x)),
+        (None, Some(map_lines)) => Ok(TsmSearch::Iterative { map_lines }),
+        _ => Err(PyValueError::new_err(
+            "xi and iterative are alternatives: give at most one",
+        )),
+    }
 }
 
 /// The shape of `ob` if it is an array-like.

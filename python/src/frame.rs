@@ -3,7 +3,7 @@
 
 use crate::args;
 use crate::broadcast::{fmt_shape, to_python, values_of, FloatArg};
-use crate::builders::{err, from_rows, rule, split_scheme, to_rows, vec3, RuleParams};
+use crate::builders::{err, from_rows, rule, split_scheme, to_rows, tsm_search, vec3, RuleParams};
 use crate::closed::choice;
 use glam::{DMat4, DVec3};
 use numpy::PyUntypedArrayMethods;
@@ -15,7 +15,7 @@ use shadow_aliasing::frame::{
     FrameInput, FrameScheme, LightCase, WarpCentre,
 };
 use shadow_aliasing::maps::faces::FaceWarp;
-use shadow_aliasing::maps::{ClipDepth, TsmOptions, TsmSearch, WarpRule};
+use shadow_aliasing::maps::{ClipDepth, TsmOptions, WarpRule};
 use shadow_aliasing::Error;
 
 type Any<'py> = Bound<'py, PyAny>;
@@ -396,41 +396,42 @@ pub fn frame<'py>(
             }),
         }
     };
-    let no_cascades = |s: &str| -> PyResult<()> {
-        for (given, name) in [
-            (partition.is_some(), "partition"),
-            (splits.is_some(), "splits"),
-            (fractions.is_some(), "fractions"),
-            (bevy.is_some(), "bevy"),
-            (lambda_.is_some(), "lambda_"),
-            (overlap.is_some(), "overlap"),
-        ] {
-            if given {
-                return Err(unused(name, s));
-            }
+    // The arguments each scheme does not use: given, they are refused by name.
+    let refuse = |s: &str, given: &[(bool, &'static str)]| -> PyResult<()> {
+        match given.iter().find(|(g, _)| *g) {
+            Some((_, name)) => Err(unused(name, s)),
+            None => Ok(()),
         }
-        Ok(())
     };
-    let no_tsm = |s: &str| -> PyResult<()> {
-        if xi.is_some() {
-            return Err(unused("xi", s));
-        }
-        if iterative.is_some() {
-            return Err(unused("iterative", s));
-        }
-        Ok(())
-    };
+    let cascade_args = [
+        (partition.is_some(), "partition"),
+        (splits.is_some(), "splits"),
+        (fractions.is_some(), "fractions"),
+        (bevy.is_some(), "bevy"),
+        (lambda_.is_some(), "lambda_"),
+        (overlap.is_some(), "overlap"),
+    ];
+    let tsm_args = [(xi.is_some(), "xi"), (iterative.is_some(), "iterative")];
+    let hint_args = [
+        (eta.is_some(), "eta"),
+        (near_hint.is_some(), "near_hint"),
+        (far_hint.is_some(), "far_hint"),
+        (shadow_distance.is_some(), "shadow_distance"),
+    ];
+    let (k_arg, rule_arg, focus_arg) = (
+        [(k.is_some(), "k")],
+        [(rule_name.is_some(), "rule")],
+        [(focus.is_some(), "focus")],
+    );
     let fs: FrameScheme<'_> = match scheme {
         "single" => {
-            no_cascades(scheme)?;
-            no_tsm(scheme)?;
-            if k.is_some() {
-                return Err(unused("k", scheme));
+            for given in [&cascade_args[..], &tsm_args, &k_arg] {
+                refuse(scheme, given)?;
             }
             FrameScheme::Single(warp_rule(rule_name)?)
         }
         "cascades" => {
-            no_tsm(scheme)?;
+            refuse(scheme, &tsm_args)?;
             let r = warp_rule(rule_name)?;
             FrameScheme::Cascades {
                 splits: cascade_splits()?,
@@ -438,69 +439,23 @@ pub fn frame<'py>(
             }
         }
         "stable" => {
-            no_tsm(scheme)?;
-            if rule_name.is_some() {
-                return Err(unused("rule", scheme));
-            }
-            for (given, name) in [
-                (eta.is_some(), "eta"),
-                (focus.is_some(), "focus"),
-                (near_hint.is_some(), "near_hint"),
-                (far_hint.is_some(), "far_hint"),
-                (shadow_distance.is_some(), "shadow_distance"),
-            ] {
-                if given {
-                    return Err(unused(name, scheme));
-                }
+            for given in [&tsm_args[..], &rule_arg, &focus_arg, &hint_args] {
+                refuse(scheme, given)?;
             }
             FrameScheme::Stable(cascade_splits()?)
         }
         "tsm" => {
-            no_cascades(scheme)?;
-            if rule_name.is_some() {
-                return Err(unused("rule", scheme));
+            for given in [&cascade_args[..], &k_arg, &rule_arg, &hint_args] {
+                refuse(scheme, given)?;
             }
-            if k.is_some() {
-                return Err(unused("k", scheme));
-            }
-            for (given, name) in [
-                (eta.is_some(), "eta"),
-                (near_hint.is_some(), "near_hint"),
-                (far_hint.is_some(), "far_hint"),
-                (shadow_distance.is_some(), "shadow_distance"),
-            ] {
-                if given {
-                    return Err(unused(name, scheme));
-                }
-            }
-            let search = match (xi, iterative) {
-                (None, None) => TsmSearch::EightyPercent,
-                (Some(x), None) => TsmSearch::Line(x),
-                (None, Some(map_lines)) => TsmSearch::Iterative { map_lines },
-                _ => {
-                    return Err(PyValueError::new_err(
-                        "xi and iterative are alternatives: give at most one",
-                    ))
-                }
-            };
             FrameScheme::Tsm(TsmOptions {
                 focus: focus.unwrap_or(0.5 * (far - near)),
-                search,
+                search: tsm_search(xi, iterative)?,
             })
         }
         _ => {
-            no_cascades(scheme)?;
-            no_tsm(scheme)?;
-            for (given, name) in [
-                (eta.is_some(), "eta"),
-                (focus.is_some(), "focus"),
-                (near_hint.is_some(), "near_hint"),
-                (far_hint.is_some(), "far_hint"),
-                (shadow_distance.is_some(), "shadow_distance"),
-            ] {
-                if given {
-                    return Err(unused(name, scheme));
-                }
+            for given in [&cascade_args[..], &tsm_args, &focus_arg, &hint_args] {
+                refuse(scheme, given)?;
             }
             let rule = match choice(
                 "rule",
