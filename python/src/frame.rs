@@ -237,8 +237,32 @@ fn unused(name: &str, scheme: &str) -> PyErr {
     ))
 }
 
-/// The shadow maps of one frame, fitted to the scene (``shadow_aliasing::frame``): see
-/// docs/python.md. Returns a dict of NumPy arrays, one entry per built map along the first axis.
+/// The shadow maps of one frame in world space, fitted to the scene (the crate's
+/// ``shadow_aliasing::frame``, bit for bit).
+///
+/// view: the camera's (4, 4) world → eye matrix (rigid, row-major, looking down −Z), with the
+/// projection's ``near``, ``far``, ``half_fov`` (radians, vertical) and ``aspect``; light_dir: the
+/// world direction light travels. ``receivers``, ``casters``: (n, 2, 3) boxes [min, max] (None:
+/// unbounded); ``depth_range``: (z_min, z_max) of the visible receivers; ``depth_clamp``;
+/// ``measure`` (False: no error measurement, errors +inf); ``map_resolution``, ``image_height``;
+/// ``pcf_radius`` (texels, for the bias values).
+///
+/// scheme: "single" (``rule``, any of WARP_RULES, default "minimax", with its keywords),
+/// "cascades" (``rule`` and ``partition`` with ``k`` — "self_similar"/"log", "uniform",
+/// "practical" with ``lambda_``, "adaptive", "equal_error" — or ``splits`` [z0, …, zk], or
+/// ``fractions``, or ``bevy`` {num_cascades, minimum_distance, maximum_distance,
+/// first_cascade_far_bound, overlap_proportion}; ``overlap``), "stable" (the same splits),
+/// "tsm" (``focus``, ``xi`` or ``iterative``), "faces" (``rule`` "uniform", "psm", "lispsm";
+/// ``k``). An argument the scheme does not use is refused.
+///
+/// Returns a dict, one entry per built map along the first axis: ``world_to_clip`` and
+/// ``eye_to_clip`` (m, 4, 4) in ``clip_depth``'s convention (float64, or float32 with
+/// ``dtype=numpy.float32``), ``n_prime``, ``texel_world``, ``max_mx``, ``max_mz``,
+/// ``storage_factor``, ``max_error_pixels``, ``normal_offset``, ``slope_scaled_depth``,
+/// ``constant_depth`` (m,), ``texel_extent``, ``depth``, ``split``, ``blend`` (m, 2), ``slot``,
+/// ``map_focus``, ``face``, ``body`` (eye-space vertices), ``casters_volume`` and
+/// ``receivers_volume`` ((p, 4) world planes, inside where a x + b y + c z + d ≤ 0), and the
+/// frame's ``focus``, ``light`` and ``light_dir_eye``. The GIL is released while it is built.
 #[pyfunction]
 #[pyo3(signature = (view, near, far, half_fov, light_dir, *, aspect=1.0, receivers=None,
     casters=None, depth_range=None, depth_clamp=false, measure=true, map_resolution=2048,
