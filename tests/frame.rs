@@ -187,7 +187,11 @@ fn a_box_containing_the_frustum_reproduces_the_frustum_only_matrices() {
             }
             assert_eq!(zo.row(2), 0.5 * (w.row(2) + w.row(3)));
             let eye = got.shadow.with_clip_depth(ClipDepth::ZeroToOne) * view;
-            let d = (zo - eye).abs().to_cols_array().into_iter().fold(0.0, f64::max);
+            let d = (zo - eye)
+                .abs()
+                .to_cols_array()
+                .into_iter()
+                .fold(0.0, f64::max);
             assert!(d <= 1e-12 * eye.abs().to_cols_array().into_iter().fold(0.0, f64::max));
         }
     }
