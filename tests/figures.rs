@@ -750,3 +750,64 @@ fn captions_say_where_a_figure_differs_from_the_paper() {
         assert!(caption.contains(phrase), "{name}: no {phrase:?}");
     }
 }
+
+/// Geometric diagrams have equal aspect (issue 25: lloyd2006-fig11 was stretched 1.27×,
+/// lloyd2006-fig4 1.16×), measured on shapes that are squares in the data: lloyd2006-fig11's
+/// partition maps (each the square of its far plane, seen from a light behind the viewer) and
+/// lloyd2006-fig4's shadow-map outline [−1, 1]².
+#[test]
+fn geometric_diagrams_have_equal_aspect() {
+    let dir = out_dir("figures-aspect");
+    render_all(
+        &dir,
+        Format::Svg,
+        &["lloyd2006-fig11", "lloyd2006-fig4"],
+        |_| {},
+    )
+    .unwrap();
+    let attr = |tag: &str, name: &str| -> f64 {
+        let at = tag.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
+        tag[at..at + tag[at..].find('"').unwrap()].parse().unwrap()
+    };
+    let svg = std::fs::read_to_string(dir.join("lloyd2006-fig11.svg")).unwrap();
+    let maps: Vec<(f64, f64)> = svg
+        .split("<rect ")
+        .skip(2) // the page's background
+        .map(|t| (attr(t, "width"), attr(t, "height")))
+        .collect();
+    assert_eq!(maps.len(), 3, "three partition maps");
+    for (w, h) in maps {
+        assert!(
+            (w / h - 1.0).abs() < 0.02,
+            "lloyd2006-fig11: a square map drawn {w} × {h}"
+        );
+    }
+    let svg = std::fs::read_to_string(dir.join("lloyd2006-fig4.svg")).unwrap();
+    let mut squares = 0;
+    for t in svg.split("<polyline ").skip(1) {
+        let at = t.find("points=\"").unwrap() + 8;
+        let pts: Vec<(f64, f64)> = t[at..at + t[at..].find('"').unwrap()]
+            .split_whitespace()
+            .map(|p| {
+                let (x, y) = p.split_once(',').unwrap();
+                (x.parse().unwrap(), y.parse().unwrap())
+            })
+            .collect();
+        // The map's outline: a closed axis-aligned rectangle of five points.
+        let rect = pts.len() == 5
+            && pts[0] == pts[4]
+            && pts[0].1 == pts[1].1
+            && pts[1].0 == pts[2].0
+            && pts[2].1 == pts[3].1
+            && pts[3].0 == pts[0].0;
+        if rect {
+            let (w, h) = ((pts[1].0 - pts[0].0).abs(), (pts[2].1 - pts[1].1).abs());
+            assert!(
+                (w / h - 1.0).abs() < 0.02,
+                "lloyd2006-fig4: the map drawn {w} × {h}"
+            );
+            squares += 1;
+        }
+    }
+    assert_eq!(squares, 4, "one map outline per column");
+}

@@ -9,7 +9,7 @@
 //! map (ZP) is the light-space bounding rectangle of its corners, drawn dashed, so that the
 //! overlap of the maps shows.
 
-use super::chart::{build_chart, frame, Axis, PALETTE};
+use super::chart::{build_chart, equal_aspect, frame, Axis, ChartStyle, PALETTE};
 use super::{Fail, Figure};
 use crate::analytic::partition::{z_splits, SplitScheme};
 use crate::maps::light_space;
@@ -173,13 +173,15 @@ impl Figure for FromLight {
                 mid - DVec2::splat(span / 2.0),
                 mid + DVec2::splat(span / 2.0),
             );
-            let mut chart = build_chart(
+            // Equal aspect: a light-space unit as long across as up.
+            let (xa, ya) = equal_aspect(
                 cell,
                 &p.title,
                 &Axis::linear("light x", lo.x, hi.x),
                 &Axis::linear("light z (towards the view direction)", lo.y, hi.y),
-                false,
+                &ChartStyle::default(),
             )?;
+            let mut chart = build_chart(cell, &p.title, &xa, &ya, false)?;
             for (i, &(a, b)) in p.maps.iter().enumerate() {
                 let c = PALETTE[i % PALETTE.len()];
                 chart.draw_series(std::iter::once(Rectangle::new(

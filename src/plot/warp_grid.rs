@@ -8,7 +8,9 @@
 //! line is straight and maps to a straight line; its ends are carried over with the map or its
 //! inverse.
 
-use super::chart::{build_chart, clip_polyline, frame, linspace, Axis, PALETTE};
+use super::chart::{
+    build_chart, clip_polyline, equal_aspect, frame, linspace, Axis, ChartStyle, PALETTE,
+};
 use super::{Fail, Figure, UNIT_SQUARE};
 use crate::analytic::eta::n_prime_from_eta;
 use crate::maps::{warp, WarpRule};
@@ -134,7 +136,10 @@ impl Figure for Fig4 {
             (n, -n * t),
         ];
         for (k, col) in self.columns.iter().enumerate() {
-            let mut chart = build_chart(&rows[k], &col.title, &depth, &across, false)?;
+            // Equal aspect in both rows: the frustum and the map undistorted.
+            let st = ChartStyle::default();
+            let (dx, dy) = equal_aspect(&rows[k], &col.title, &depth, &across, &st)?;
+            let mut chart = build_chart(&rows[k], &col.title, &dx, &dy, false)?;
             let bounds = (0.0, f * 1.05, -f * t * 1.1, f * t * 1.1);
             for seg in &col.light_space {
                 for piece in clip_polyline(&[Some(seg[0]), Some(seg[1])], bounds) {
@@ -142,7 +147,9 @@ impl Figure for Fig4 {
                 }
             }
             chart.draw_series(LineSeries::new(frustum, BLACK.stroke_width(2)))?;
-            let mut chart = build_chart(&rows[self.columns.len() + k], "", &u, &v, false)?;
+            let below = &rows[self.columns.len() + k];
+            let (ux, vy) = equal_aspect(below, "", &u, &v, &st)?;
+            let mut chart = build_chart(below, "", &ux, &vy, false)?;
             chart.draw_series(LineSeries::new(UNIT_SQUARE, BLACK.stroke_width(2)))?;
             for (i, seg) in col.map.iter().enumerate() {
                 let colour = if i < LINES + 1 {

@@ -8,7 +8,8 @@
 //! [0, 1]; unit resolutions).
 
 use super::chart::{
-    build_chart_styled, draw_colour_bar, frame, Axis, ChartStyle, ColourScale, Grid, FONT,
+    build_chart_styled, draw_colour_bar, equal_aspect, frame, Axis, ChartStyle, ColourScale, Grid,
+    FONT,
 };
 use super::{Fail, Figure};
 use crate::maps::{warp, WarpRule};
@@ -212,8 +213,10 @@ impl Figure for Fig3 {
             for (s, scheme) in row.iter().enumerate() {
                 for (q, panel) in scheme.iter().enumerate() {
                     let cell = &cells[3 * s + q];
+                    // Equal aspect: the frustum's side view undistorted.
+                    let (za, ya) = equal_aspect(cell, QUANTITIES[q], &z_axis, &y_axis, &style)?;
                     let mut chart =
-                        build_chart_styled(cell, QUANTITIES[q], &z_axis, &y_axis, false, &style)?;
+                        build_chart_styled(cell, QUANTITIES[q], &za, &ya, false, &style)?;
                     super::chart::draw_grid(&mut chart, &panel.grid, &self.scales[q])?;
                     // The frustum's outline.
                     let (n, f, t) = (1.0, self.far, self.tan_phi);

@@ -8,12 +8,14 @@
 //! over log_b of the data, with tick marks placed and labelled by [`Axis`]. That keeps one
 //! concrete chart type for every combination of linear and logarithmic axes.
 
+mod aspect;
 mod axis;
 mod heat;
 mod line;
 mod page;
 mod raster;
 
+pub(crate) use aspect::*;
 pub(crate) use axis::*;
 pub(crate) use heat::*;
 pub(crate) use line::*;
