@@ -11,8 +11,8 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyList, PyString};
 use shadow_aliasing::frame::{
-    frame as build_frame, Aabb, Bias, Bound as SceneBound, Camera, CascadeSplits, Focus,
-    FrameInput, FrameScheme, LightCase, WarpCentre,
+    frame as build_frame, Aabb, Bias, Bound as SceneBound, Camera, CascadeSplits, FrameInput,
+    FrameScheme, WarpCentre,
 };
 use shadow_aliasing::maps::faces::FaceWarp;
 use shadow_aliasing::maps::{ClipDepth, TsmOptions, WarpRule};
@@ -28,24 +28,6 @@ const BEVY_KEYS: [&str; 5] = [
     "first_cascade_far_bound",
     "overlap_proportion",
 ];
-
-fn focus_name(f: Focus) -> &'static str {
-    match f {
-        Focus::Body => "body",
-        Focus::Empty => "empty",
-        Focus::Flat => "flat",
-        Focus::EdgeOn => "edge_on",
-        Focus::ZeroDepth => "zero_depth",
-    }
-}
-
-fn light_name(l: LightCase) -> &'static str {
-    match l {
-        LightCase::General => "general",
-        LightCase::SunStraightDown => "sun_straight_down",
-        LightCase::ParallelToView => "parallel_to_view",
-    }
-}
 
 /// World-space boxes from an `(n, 2, 3)` array (each `[min, max]`), or `None` for no bound.
 fn boxes(name: &'static str, ob: Option<&Any<'_>>) -> PyResult<Option<Vec<Aabb>>> {
@@ -568,8 +550,8 @@ fn result<'py>(
         )
     };
     let d = PyDict::new(py);
-    d.set_item("focus", focus_name(f.focus()))?;
-    d.set_item("light", light_name(f.light_case()))?;
+    d.set_item("focus", f.focus().name())?;
+    d.set_item("light", f.light_case().name())?;
     d.set_item(
         "light_dir_eye",
         to_python(py, vec![3], f.light_dir_eye().to_array().to_vec())?,
@@ -623,7 +605,7 @@ fn result<'py>(
     d.set_item("slot", numpy::PyArray1::from_vec(py, slot))?;
     d.set_item(
         "map_focus",
-        PyList::new(py, maps.iter().map(|(_, x)| focus_name(x.focus)))?,
+        PyList::new(py, maps.iter().map(|(_, x)| x.focus.name()))?,
     )?;
     d.set_item(
         "face",

@@ -49,6 +49,34 @@ pub enum LightCase {
     ParallelToView,
 }
 
+impl Focus {
+    /// The focus in lower case, as the command line's JSON and the Python package spell it:
+    /// `body`, `empty`, `flat`, `edge_on`, `zero_depth`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Focus::Body => "body",
+            Focus::Empty => "empty",
+            Focus::Flat => "flat",
+            Focus::EdgeOn => "edge_on",
+            Focus::ZeroDepth => "zero_depth",
+        }
+    }
+}
+
+impl LightCase {
+    /// The case in lower case, as the command line's JSON and the Python package spell it:
+    /// `general`, `sun_straight_down`, `parallel_to_view`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            LightCase::General => "general",
+            LightCase::SunStraightDown => "sun_straight_down",
+            LightCase::ParallelToView => "parallel_to_view",
+        }
+    }
+}
+
 /// One map of a frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FrameMap {

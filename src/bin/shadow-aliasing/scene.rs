@@ -7,9 +7,7 @@ use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
 use crate::scheme::{k, ratio, rule, value_name, Lights, DEFAULT_LAMBDA};
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::SplitScheme;
-use shadow_aliasing::frame::{
-    frame, Aabb, Bound, Camera, CascadeSplits, Focus, FrameInput, FrameScheme, LightCase,
-};
+use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme};
 use shadow_aliasing::scheme::face_rule;
 use shadow_aliasing::{Error, LightAngle, ViewFrustum};
 use std::fmt::Write as _;
@@ -32,24 +30,6 @@ fn boxes(list: &[[f64; 6]], name: &'static str) -> Result<Vec<Aabb>, Error> {
             })
         })
         .collect()
-}
-
-fn focus_name(f: Focus) -> &'static str {
-    match f {
-        Focus::Body => "body",
-        Focus::Empty => "empty",
-        Focus::Flat => "flat",
-        Focus::EdgeOn => "edge_on",
-        Focus::ZeroDepth => "zero_depth",
-    }
-}
-
-fn light_name(l: LightCase) -> &'static str {
-    match l {
-        LightCase::General => "general",
-        LightCase::SunStraightDown => "sun_straight_down",
-        LightCase::ParallelToView => "parallel_to_view",
-    }
 }
 
 /// `--splits`, `--fractions` or `--bevy` give the cascades, their count included: refused with
@@ -221,8 +201,8 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
 fn json(a: &WarpArgs, f: &shadow_aliasing::frame::Frame) -> String {
     let mut s = format!(
         "{{\n  \"focus\": \"{}\",\n  \"light\": \"{}\",\n",
-        focus_name(f.focus()),
-        light_name(f.light_case())
+        f.focus().name(),
+        f.light_case().name()
     );
     let maps: Vec<_> = f.maps().iter().collect();
     if let Some(total) = f.storage_factor() {
@@ -285,9 +265,9 @@ fn text(a: &WarpArgs, f: &shadow_aliasing::frame::Frame) -> String {
         sig(lx),
         sig(ly),
         sig(lz),
-        light_name(f.light_case())
+        f.light_case().name()
     );
-    let _ = writeln!(s, "focus: {}", focus_name(f.focus()));
+    let _ = writeln!(s, "focus: {}", f.focus().name());
     let Some(total) = f.storage_factor() else {
         s.push_str("no map needed: the receivers are out of view (or edge-on to the light)\n");
         return s;
