@@ -67,7 +67,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     };
     let mut c = LineChart::new(
         "",
-        Axis::linear("number of face subdivisions k", 1.0, 10.0),
+        Axis::integer("number of face subdivisions k", 1.0, 10.0),
         Axis::log10("m_{max}(k) / m_{max}(1) (log scale)", 1e-3, 1.0),
     );
     c.legend = SeriesLabelPosition::LowerLeft;

@@ -136,7 +136,7 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
     let theta = 30f64.to_radians();
     let mut c = LineChart::new(
         "",
-        Axis::linear("number of z-partitions k", 1.0, 16.0),
+        Axis::integer("number of z-partitions k", 1.0, 16.0),
         Axis::log10("storage factor S̄ (texels per image pixel²)", 1.0, 1e4),
     );
     c.legend = SeriesLabelPosition::UpperRight;
@@ -183,7 +183,7 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
     let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians())?;
     let mut c = LineChart::new(
         "",
-        Axis::linear("number of shadow maps", 0.0, 40.0),
+        Axis::integer("number of shadow maps", 0.0, 40.0),
         Axis::log10("storage factor S̄ (texels per image pixel²)", 1.0, 1e7),
     );
     c.legend = SeriesLabelPosition::UpperRight;

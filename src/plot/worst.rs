@@ -31,7 +31,7 @@ pub(super) const SCHEMES: [(&str, Scheme, WarpRule, Partition); 3] = [
 pub(super) fn worst_case() -> Result<Charts, Fail> {
     let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians())?;
     let grid = SweepGrid::new(ELEVATIONS, AZIMUTHS)?;
-    let k_axis = Axis::linear("number of z-partitions k", 1.0, 8.0);
+    let k_axis = Axis::integer("number of z-partitions k", 1.0, 8.0);
     let mut abs = LineChart::new(
         "worst case over the hemisphere and light behind",
         k_axis.clone(),

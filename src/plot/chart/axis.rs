@@ -64,6 +64,8 @@ impl Ranged for Ticked {
 pub(crate) enum Scale {
     /// Position proportional to the value.
     Linear,
+    /// Linear, for a count: labelled and grid ticks only at whole numbers.
+    Integer,
     /// Position proportional to log_b of the value (b > 1).
     Log(f64),
 }
@@ -85,6 +87,16 @@ impl Axis {
             min,
             max,
             scale: Scale::Linear,
+        }
+    }
+
+    /// A linear axis of a count over `[min, max]`: ticks and grid lines only at whole numbers.
+    pub fn integer(label: impl Into<String>, min: f64, max: f64) -> Self {
+        Self {
+            label: label.into(),
+            min,
+            max,
+            scale: Scale::Integer,
         }
     }
 
@@ -116,7 +128,7 @@ impl Axis {
             return None;
         }
         match self.scale {
-            Scale::Linear => Some(v),
+            Scale::Linear | Scale::Integer => Some(v),
             Scale::Log(b) => (v > 0.0).then(|| v.ln() / b.ln()),
         }
     }
@@ -124,7 +136,7 @@ impl Axis {
     /// Axis space → data value.
     pub fn to_data(&self, a: f64) -> f64 {
         match self.scale {
-            Scale::Linear => a,
+            Scale::Linear | Scale::Integer => a,
             Scale::Log(b) => b.powf(a),
         }
     }
@@ -142,6 +154,12 @@ impl Axis {
         let eps = 1e-9 * (hi - lo).abs().max(1e-300);
         let inside = |v: f64| v >= lo - eps && v <= hi + eps;
         match self.scale {
+            Scale::Integer => {
+                let step = nice_step((hi - lo) / 8.0).max(1.0);
+                let bold = multiples(lo, hi, step, eps);
+                let light = multiples(lo, hi, 1.0, eps);
+                (bold, light)
+            }
             Scale::Linear => {
                 let step = nice_step((hi - lo) / 8.0);
                 let bold = multiples(lo, hi, step, eps);
@@ -237,7 +255,7 @@ impl Axis {
 
     fn tick_text(&self, a: f64) -> String {
         match self.scale {
-            Scale::Linear => {
+            Scale::Linear | Scale::Integer => {
                 let (lo, hi) = self.range();
                 fmt_linear(a, nice_step((hi - lo) / 8.0))
             }
@@ -486,6 +504,32 @@ mod tests {
         // Less than a decade: 2 and 5 are labelled too.
         let short = Axis::log10("g", 0.1, 1.0);
         assert_eq!(short.ticks().0.len(), 4);
+    }
+
+    #[test]
+    fn integer_axes_tick_only_whole_numbers() {
+        // A count from 1 to 3: a linear axis would label 1.5 and 2.5 (step 0.5).
+        assert!(Axis::linear("k", 1.0, 3.0).ticks().0.contains(&1.5));
+        let k = Axis::integer("k", 1.0, 3.0);
+        assert_eq!(k.ticks(), (vec![1.0, 2.0, 3.0], vec![1.0, 2.0, 3.0]));
+        assert_eq!(k.tick_label(2.0), "2");
+        // 1 to 8: labels every whole number, and no grid line between them (linear: every 0.2).
+        let k = Axis::integer("k", 1.0, 8.0);
+        let (bold, light) = k.ticks();
+        assert_eq!(bold, (1..=8).map(f64::from).collect::<Vec<_>>());
+        assert!(light.iter().all(|v| v.fract() == 0.0), "{light:?}");
+        assert!(Axis::linear("k", 1.0, 8.0)
+            .ticks()
+            .1
+            .iter()
+            .any(|v| v.fract() != 0.0));
+        // 0 to 40: labels every 5, grid lines every 1.
+        let n = Axis::integer("maps", 0.0, 40.0);
+        assert_eq!(
+            n.ticks().0,
+            vec![0.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0]
+        );
+        assert_eq!(n.ticks().1.len(), 41);
     }
 
     #[test]
