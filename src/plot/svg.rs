@@ -61,6 +61,19 @@ fn colour(c: BackendColor) -> String {
     format!("#{r:02X}{g:02X}{b:02X}")
 }
 
+/// A shape's fill or outline attributes: filled without a stroke, or stroked without a fill.
+fn paint<S: BackendStyle>(st: &S, fill: bool) -> String {
+    let c = colour(st.color());
+    if fill {
+        format!("fill=\"{c}\" stroke=\"none\"")
+    } else {
+        format!(
+            "fill=\"none\" stroke=\"{c}\" stroke-width=\"{}\"",
+            st.stroke_width()
+        )
+    }
+}
+
 fn opacity(c: BackendColor) -> String {
     if c.alpha >= 1.0 {
         String::new()
@@ -199,15 +212,7 @@ impl DrawingBackend for Svg<'_> {
         fill: bool,
     ) -> Res {
         let c = st.color();
-        let paint = if fill {
-            format!("fill=\"{}\" stroke=\"none\"", colour(c))
-        } else {
-            format!(
-                "fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"",
-                colour(c),
-                st.stroke_width()
-            )
-        };
+        let paint = paint(st, fill);
         let _ = writeln!(
             self.body,
             "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" {paint}{}/>",
@@ -246,15 +251,7 @@ impl DrawingBackend for Svg<'_> {
         fill: bool,
     ) -> Res {
         let c = st.color();
-        let paint = if fill {
-            format!("fill=\"{}\" stroke=\"none\"", colour(c))
-        } else {
-            format!(
-                "fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"",
-                colour(c),
-                st.stroke_width()
-            )
-        };
+        let paint = paint(st, fill);
         let _ = writeln!(
             self.body,
             "<circle cx=\"{x}\" cy=\"{y}\" r=\"{r}\" {paint}{}/>",
