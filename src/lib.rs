@@ -99,7 +99,7 @@ pub use frustum::{LightAngle, LightDir, NPrime, Resolutions, ViewFrustum};
 /// The glam the crate's API speaks (0.34), re-exported so a renderer on another glam version can
 /// name these types without a second dependency line and convert at the boundary: through plain
 /// arrays (`glam::DMat4::from_cols_array_2d(&m.to_cols_array_2d())`, and every upload value as
-/// arrays, [`frame::FrameMap::world_to_clip_cols`]) or through [`mint`] (feature `mint`).
+/// arrays, [`frame::FrameMap::world_to_clip_cols`]) or through the `mint` crate (feature `mint`).
 pub use glam;
 
 /// The mint version whose types the `mint` feature's conversions take and give (glam's own
