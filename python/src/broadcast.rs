@@ -9,11 +9,12 @@
 //! The first element (in C order) whose arguments the crate refuses raises `ValueError` with the
 //! crate's message and, for an array, the element's index.
 
+use crate::out::Out;
 use multiversion::multiversion;
 use numpy::ndarray::{ArrayD, IxDyn};
 use numpy::{
-    AllowTypeChange, PyArrayDescrMethods, PyArrayDyn, PyArrayLikeDyn, PyUntypedArray,
-    PyUntypedArrayMethods,
+    AllowTypeChange, PyArrayDescrMethods, PyArrayDyn, PyArrayLikeDyn, PyArrayMethods,
+    PyUntypedArray, PyUntypedArrayMethods,
 };
 use pyo3::exceptions::{PyMemoryError, PyOverflowError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
@@ -326,11 +327,12 @@ pub fn map_into<'py, const N: usize, F>(
     args: [(&'static str, &Bound<'py, PyAny>); N],
     spec: OutSpec,
     f: F,
+    out: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>>
 where
     F: Fn(&[f64; N], &mut [f64]) -> Result<(), Error> + Sync,
 {
-    drive(py, args, spec, f, None::<Fast<NoFast<N>>>)
+    drive(py, args, spec, f, None::<Fast<NoFast<N>>>, out)
 }
 
 /// A scalar closed form with a fast kernel `g` beside its validated form `f`.
@@ -349,6 +351,7 @@ pub fn map_fast<'py, const N: usize, F, G>(
     f: F,
     g: G,
     tan_of: Option<usize>,
+    out: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>>
 where
     F: Fn(&[f64; N]) -> Result<f64, Error> + Sync,
@@ -366,6 +369,7 @@ where
             Ok(())
         },
         fast,
+        out,
     )
 }
 
@@ -381,6 +385,7 @@ fn drive<'py, const N: usize, F, G>(
     spec: OutSpec,
     f: F,
     g: Option<Fast<G>>,
+    out: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>>
 where
     F: Fn(&[f64; N], &mut [f64]) -> Result<(), Error> + Sync,
@@ -394,13 +399,24 @@ where
     let shapes: Vec<Vec<usize>> = conv.iter().map(FloatArg::shape).collect();
     let shape = broadcast_shapes(&names, &shapes)?;
     let width = spec.width.unwrap_or(1);
-    // The result's room first: a broadcast can describe more elements than memory holds.
     let mut out_shape = shape.clone();
     out_shape.extend(spec.width);
     let n = elements(&shape)?;
     let len = elements(&out_shape)?;
-    let mut out = buffer(len, &out_shape)?;
-    out.resize(len, 0.0);
+    let target = Out::new(out, &out_shape, false)?;
+    // A C-contiguous `out` that is none of the arguments is written directly; otherwise the
+    // result's room first: a broadcast can describe more elements than memory holds.
+    let direct = target.contiguous_f64();
+    let mut writer = direct.as_ref().and_then(|d| d.try_readwrite().ok());
+    let mut room = Vec::new();
+    let into: &mut [f64] = match writer.as_mut().and_then(|w| w.as_slice_mut().ok()) {
+        Some(s) => s,
+        None => {
+            room = buffer(len, &out_shape)?;
+            room.resize(len, 0.0);
+            &mut room
+        }
+    };
     // Arguments that are neither one value nor already C-contiguous in the broadcast shape are
     // copied out in C order (NumPy's broadcast views, transposes, slices with steps).
     let mut owned: Vec<Option<Vec<f64>>> = Vec::with_capacity(N);
@@ -444,7 +460,7 @@ where
     }
     // The fast kernel writes one number per element.
     let g = g.filter(|_| width == 1);
-    let failure = py.detach(|| run(&data, &mut out, width, spec, &f, g.as_ref()));
+    let failure = py.detach(|| run(&data, into, width, spec, &f, g.as_ref()));
     if let Some((i, e)) = failure {
         let msg = e.to_string();
         return Err(PyValueError::new_err(if shape.is_empty() {
@@ -453,7 +469,13 @@ where
             format!("{msg} (at index {})", fmt_index(i, &shape))
         }));
     }
-    to_python(py, out_shape, out)
+    // The arguments' borrows end here, so that an `out` that is one of them can be written.
+    drop(data);
+    drop(conv);
+    match (writer, direct) {
+        (Some(_), Some(d)) => Ok(d.into_any()),
+        _ => target.deliver(py, out_shape, room),
+    }
 }
 
 /// A scalar quantity of `N` broadcast arguments.
@@ -462,14 +484,21 @@ pub fn map<'py, const N: usize, F>(
     args: [(&'static str, &Bound<'py, PyAny>); N],
     spec: OutSpec,
     f: F,
+    out: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>>
 where
     F: Fn(&[f64; N]) -> Result<f64, Error> + Sync,
 {
-    map_into(py, args, spec, |x, o| {
-        o[0] = f(x)?;
-        Ok(())
-    })
+    map_into(
+        py,
+        args,
+        spec,
+        |x, o| {
+            o[0] = f(x)?;
+            Ok(())
+        },
+        out,
+    )
 }
 
 /// The computation proper, without the GIL: the first failing element (lowest index), if any.

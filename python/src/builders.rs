@@ -4,8 +4,10 @@
 //! `clip = M @ (x, y, z, 1)`: eye space (right-handed, looking down −Z, Y up) → light clip space.
 
 use crate::args;
-use crate::broadcast::{buffer, fmt_shape, to_python, value_error, values_of, FloatArg};
+use crate::broadcast::{fmt_shape, value_error, values_of, FloatArg};
 use crate::closed::choice;
+use crate::out::Out;
+use crate::stacked::{each, lead_shape, message, Operand};
 use glam::{DMat4, DVec3};
 use numpy::PyUntypedArrayMethods;
 use pyo3::exceptions::PyValueError;
@@ -14,14 +16,9 @@ use pyo3::types::PyList;
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
 use shadow_aliasing::maps::cascades::cascades as build_cascades;
 use shadow_aliasing::maps::faces::{face_partitions, FaceWarp};
-use shadow_aliasing::maps::{
-    self, ClipDepth, Falloff, ShadowMatrix, TsmOptions, TsmSearch, WarpRule,
-};
-use shadow_aliasing::measure::{
-    frustum_max as measure_frustum_max, point_error as measure_point_error, ShadowMap,
-};
+use shadow_aliasing::maps::{self, ClipDepth, Falloff, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::scheme::ADAPTIVE_RATIO;
-use shadow_aliasing::{Error, LightAngle, Resolutions, ViewFrustum};
+use shadow_aliasing::{Error, LightAngle, ViewFrustum};
 
 type Any<'py> = Bound<'py, PyAny>;
 
@@ -102,71 +99,13 @@ pub(crate) fn clip_depth(name: &str) -> PyResult<ClipDepth> {
     )
 }
 
-/// Several matrices as an (m, 4, 4) array.
-pub(crate) fn stack<'py>(py: Python<'py>, ms: &[DMat4]) -> PyResult<Any<'py>> {
+/// Several matrices as an (m, 4, 4) array, float32 if `f32`.
+fn stack<'py>(py: Python<'py>, ms: &[DMat4], f32: bool) -> PyResult<Any<'py>> {
     let mut v = Vec::with_capacity(16 * ms.len());
     for m in ms {
         v.extend_from_slice(&to_rows(m));
     }
-    to_python(py, vec![ms.len(), 4, 4], v)
-}
-
-fn one_matrix<'py>(py: Python<'py>, m: &DMat4) -> PyResult<Any<'py>> {
-    to_python(py, vec![4, 4], to_rows(m).to_vec())
-}
-
-/// `light_dir` of the builders: one direction (3,) → `None`, or a stack (..., 3) → its leading
-/// shape; with the values, C order.
-fn light_dirs(ob: &Any<'_>) -> PyResult<(Option<Vec<usize>>, Vec<f64>)> {
-    let (shape, v) = shape_of("light_dir", ob)?;
-    match shape.split_last() {
-        Some((3, [])) => Ok((None, v)),
-        Some((3, lead)) => Ok((Some(lead.to_vec()), v)),
-        _ => Err(PyValueError::new_err(format!(
-            "light_dir must have shape (3,) or (..., 3) (got {})",
-            fmt_shape(&shape)
-        ))),
-    }
-}
-
-/// `f` at each light direction of `dirs` (C order, 3 values each), `width` values per direction,
-/// without the GIL and over all cores; the first direction (in C order) that fails raises its
-/// error with its index in `lead`.
-fn per_light<F>(
-    py: Python<'_>,
-    lead: &[usize],
-    dirs: &[f64],
-    width: usize,
-    f: F,
-) -> PyResult<Vec<f64>>
-where
-    F: Fn(DVec3, &mut [f64]) -> Result<(), Error> + Sync,
-{
-    use rayon::prelude::*;
-    let n = dirs.len() / 3;
-    let shape = [lead, &[width]].concat();
-    let mut out = buffer(n * width, &shape)?;
-    out.resize(n * width, 0.0);
-    let failed: Option<(usize, Error)> = py.detach(|| {
-        out.par_chunks_mut(width * 256)
-            .zip(dirs.par_chunks(3 * 256))
-            .enumerate()
-            .find_map_first(|(block, (o, d))| {
-                for (j, (oo, dd)) in o.chunks_exact_mut(width).zip(d.chunks_exact(3)).enumerate() {
-                    if let Err(e) = f(DVec3::new(dd[0], dd[1], dd[2]), oo) {
-                        return Some((block * 256 + j, e));
-                    }
-                }
-                None
-            })
-    });
-    match failed {
-        Some((i, e)) => Err(PyValueError::new_err(format!(
-            "{e} (light_dir at index {})",
-            crate::broadcast::fmt_index(i, lead)
-        ))),
-        None => Ok(out),
-    }
+    Out::new(None, &[], f32)?.deliver(py, vec![ms.len(), 4, 4], v)
 }
 
 /// The parameters of the named rules, as keyword arguments.
@@ -182,6 +121,19 @@ pub struct RuleParams {
 /// The library's rule for a name, checking that every parameter given is one the rule uses
 /// (the command line's checks and defaults).
 pub fn rule(view: &ViewFrustum, name: &str, p: RuleParams) -> PyResult<WarpRule> {
+    Ok(rule_spec(name, p)?.at(view))
+}
+
+/// A rule's name checked with its parameters; the defaults that depend on the camera (TSM's
+/// focus, OGRE's shadow distance) are filled in per camera by [`RuleSpec::at`].
+#[derive(Clone, Copy)]
+pub struct RuleSpec {
+    name: &'static str,
+    p: RuleParams,
+}
+
+/// [`RuleSpec`] for a name, checking that every parameter given is one the rule uses.
+pub fn rule_spec(name: &str, p: RuleParams) -> PyResult<RuleSpec> {
     let spelled = name.replace('_', "-");
     let spelled = if spelled == "lispsm-sin" {
         "lispsm".to_string()
@@ -203,39 +155,50 @@ pub fn rule(view: &ViewFrustum, name: &str, p: RuleParams) -> PyResult<WarpRule>
     only(p.near_hint.is_some(), "near_hint", "filament")?;
     only(p.far_hint.is_some(), "far_hint", "filament")?;
     only(p.shadow_distance.is_some(), "shadow_distance", "ogre-ortho")?;
-    Ok(match name {
-        "uniform" => WarpRule::Uniform,
-        "eta" => WarpRule::Eta(p.eta.ok_or_else(|| {
-            PyValueError::new_err("eta is missing: rule \"eta\" needs eta in [-1, 1]")
-        })?),
-        "psm" => WarpRule::Psm,
-        "lispsm" => WarpRule::Lispsm,
-        "lispsm-fixed" => WarpRule::LispsmFixed,
-        "barroso" => WarpRule::Barroso(Falloff::Barroso),
-        "barroso-zhang" => WarpRule::Barroso(Falloff::Zhang),
-        "minimax" => WarpRule::Minimax,
-        "minimax-mz" => WarpRule::MinimaxMz,
-        "tsm" => WarpRule::Tsm {
-            focus: p.focus.unwrap_or(0.5 * (view.far() - view.near())),
-        },
-        "lispsm-reference" => WarpRule::LispsmReference,
-        "filament" => match (p.near_hint, p.far_hint) {
-            (Some(near_hint), Some(far_hint)) => WarpRule::FilamentHints {
-                near_hint,
-                far_hint,
+    if name == "eta" && p.eta.is_none() {
+        return Err(PyValueError::new_err(
+            "eta is missing: rule \"eta\" needs eta in [-1, 1]",
+        ));
+    }
+    if name == "filament" && p.near_hint.is_some() != p.far_hint.is_some() {
+        return Err(PyValueError::new_err(
+            "near_hint and far_hint are given together (rule \"filament\")",
+        ));
+    }
+    Ok(RuleSpec { name, p })
+}
+
+impl RuleSpec {
+    /// The library's rule for this camera.
+    pub fn at(&self, view: &ViewFrustum) -> WarpRule {
+        let p = self.p;
+        match self.name {
+            "uniform" => WarpRule::Uniform,
+            "eta" => WarpRule::Eta(p.eta.unwrap_or(0.0)),
+            "psm" => WarpRule::Psm,
+            "lispsm" => WarpRule::Lispsm,
+            "lispsm-fixed" => WarpRule::LispsmFixed,
+            "barroso" => WarpRule::Barroso(Falloff::Barroso),
+            "barroso-zhang" => WarpRule::Barroso(Falloff::Zhang),
+            "minimax" => WarpRule::Minimax,
+            "minimax-mz" => WarpRule::MinimaxMz,
+            "tsm" => WarpRule::Tsm {
+                focus: p.focus.unwrap_or(0.5 * (view.far() - view.near())),
             },
-            (None, None) => WarpRule::Filament,
-            _ => {
-                return Err(PyValueError::new_err(
-                    "near_hint and far_hint are given together (rule \"filament\")",
-                ))
-            }
-        },
-        "ogre" => WarpRule::Ogre,
-        _ => WarpRule::OgreOrtho {
-            shadow_distance: p.shadow_distance.unwrap_or(300.0 * view.near()),
-        },
-    })
+            "lispsm-reference" => WarpRule::LispsmReference,
+            "filament" => match (p.near_hint, p.far_hint) {
+                (Some(near_hint), Some(far_hint)) => WarpRule::FilamentHints {
+                    near_hint,
+                    far_hint,
+                },
+                _ => WarpRule::Filament,
+            },
+            "ogre" => WarpRule::Ogre,
+            _ => WarpRule::OgreOrtho {
+                shadow_distance: p.shadow_distance.unwrap_or(300.0 * view.near()),
+            },
+        }
+    }
 }
 
 /// One shadow map fitted to the whole view frustum, its n′ chosen by `rule` (a name as the
@@ -248,16 +211,24 @@ pub fn rule(view: &ViewFrustum, name: &str, p: RuleParams) -> PyResult<WarpRule>
 ///
 /// light_dir: the direction light travels, eye space. Returns the 4×4 float64 matrix eye → light
 /// clip space (``clip_depth`` "neg_one_to_one", OpenGL, "zero_to_one", Vulkan/D3D, or "reversed",
-/// 1 nearest the light and 0 farthest, Bevy's cascades).
+/// 1 nearest the light and 0 farthest, Bevy's cascades); float32 with ``dtype=numpy.float32``
+/// (rounded once from float64), (..., 4, 4) for stacks.
+///
+/// Stacks: ``near``, ``far``, ``half_fov`` (each a number or an array) and ``light_dir`` ((3,) or
+/// (..., 3)) broadcast as NumPy broadcasts (the light's last axis aside); the result has the
+/// broadcast shape in front, each entry the one-camera call's value bit for bit, computed
+/// without the GIL on all cores. ``out``: an array of the result's shape and dtype to write
+/// into (returned).
 #[pyfunction]
 #[pyo3(signature = (near, far, half_fov, light_dir, rule="minimax", *, eta=None, focus=None,
-    near_hint=None, far_hint=None, shadow_distance=None, clip_depth="neg_one_to_one", aspect=1.0))]
+    near_hint=None, far_hint=None, shadow_distance=None, clip_depth="neg_one_to_one", aspect=1.0,
+    dtype=None, out=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn warp<'py>(
     py: Python<'py>,
-    #[pyo3(from_py_with = args::near)] near: f64,
-    #[pyo3(from_py_with = args::far)] far: f64,
-    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
+    near: &Any<'py>,
+    far: &Any<'py>,
+    half_fov: &Any<'py>,
     light_dir: &Any<'py>,
     #[pyo3(from_py_with = args::rule)] rule: &str,
     #[pyo3(from_py_with = args::eta)] eta: Option<f64>,
@@ -267,11 +238,11 @@ pub fn warp<'py>(
     #[pyo3(from_py_with = args::shadow_distance)] shadow_distance: Option<f64>,
     #[pyo3(from_py_with = args::clip_depth)] clip_depth: &str,
     #[pyo3(from_py_with = args::aspect)] aspect: f64,
+    dtype: Option<&Any<'py>>,
+    out: Option<&Any<'py>>,
 ) -> PyResult<Any<'py>> {
-    let view = view_of(near, far, half_fov, aspect)?;
-    let (lead, dirs) = light_dirs(light_dir)?;
-    let r = self::rule(
-        &view,
+    let cam = Cameras::new(near, far, half_fov, light_dir)?;
+    let spec = rule_spec(
         rule,
         RuleParams {
             eta,
@@ -282,34 +253,34 @@ pub fn warp<'py>(
         },
     )?;
     let depth = self::clip_depth(clip_depth)?;
-    match lead {
-        None => {
-            let l = DVec3::new(dirs[0], dirs[1], dirs[2]);
-            let s: ShadowMatrix = py.detach(|| maps::warp(&view, l, r)).map_err(err)?;
-            one_matrix(py, &s.with_clip_depth(depth))
-        }
-        Some(lead) => {
-            let out = per_light(py, &lead, &dirs, 16, |l, o| {
-                let s = maps::warp(&view, l, r)?;
-                o.copy_from_slice(&to_rows(&s.with_clip_depth(depth)));
-                Ok(())
-            })?;
-            to_python(py, [&lead[..], &[4, 4]].concat(), out)
-        }
-    }
+    let f32 = crate::out::dtype(dtype)?;
+    let shape = [&cam.lead[..], &[4, 4]].concat();
+    let target = Out::new(out, &shape, f32)?;
+    let v = cam.each(py, aspect, 16, message, |view, l, o| {
+        let s = maps::warp(&view, l, spec.at(&view))?;
+        o.copy_from_slice(&to_rows(&s.with_clip_depth(depth)));
+        Ok(())
+    })?;
+    target.deliver(py, shape, v)
 }
 
 /// The n′ the rule chooses for this camera and light (``inf`` for an unwarped map); the same
-/// rules and keywords as :func:`warp`.
+/// rules and keywords as :func:`warp`; (...,) for stacks.
+///
+/// Stacks: ``near``, ``far``, ``half_fov`` (each a number or an array) and ``light_dir`` ((3,) or
+/// (..., 3)) broadcast as NumPy broadcasts (the light's last axis aside); the result has the
+/// broadcast shape in front, each entry the one-camera call's value bit for bit, computed
+/// without the GIL on all cores. ``out``: an array of the result's shape and dtype to write
+/// into (returned).
 #[pyfunction]
 #[pyo3(signature = (near, far, half_fov, light_dir, rule="minimax", *, eta=None, focus=None,
-    near_hint=None, far_hint=None, shadow_distance=None, aspect=1.0))]
+    near_hint=None, far_hint=None, shadow_distance=None, aspect=1.0, out=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn n_prime_for<'py>(
     py: Python<'py>,
-    #[pyo3(from_py_with = args::near)] near: f64,
-    #[pyo3(from_py_with = args::far)] far: f64,
-    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
+    near: &Any<'py>,
+    far: &Any<'py>,
+    half_fov: &Any<'py>,
     light_dir: &Any<'py>,
     #[pyo3(from_py_with = args::rule)] rule: &str,
     #[pyo3(from_py_with = args::eta)] eta: Option<f64>,
@@ -318,11 +289,10 @@ pub fn n_prime_for<'py>(
     #[pyo3(from_py_with = args::far_hint)] far_hint: Option<f64>,
     #[pyo3(from_py_with = args::shadow_distance)] shadow_distance: Option<f64>,
     #[pyo3(from_py_with = args::aspect)] aspect: f64,
+    out: Option<&Any<'py>>,
 ) -> PyResult<Any<'py>> {
-    let view = view_of(near, far, half_fov, aspect)?;
-    let (lead, dirs) = light_dirs(light_dir)?;
-    let r = self::rule(
-        &view,
+    let cam = Cameras::new(near, far, half_fov, light_dir)?;
+    let spec = rule_spec(
         rule,
         RuleParams {
             eta,
@@ -332,22 +302,62 @@ pub fn n_prime_for<'py>(
             shadow_distance,
         },
     )?;
-    match lead {
-        None => {
-            let l = DVec3::new(dirs[0], dirs[1], dirs[2]);
-            to_python(
-                py,
-                vec![],
-                vec![maps::n_prime_for(&view, l, r).map_err(err)?.value()],
-            )
-        }
-        Some(lead) => {
-            let out = per_light(py, &lead, &dirs, 1, |l, o| {
-                o[0] = maps::n_prime_for(&view, l, r)?.value();
-                Ok(())
-            })?;
-            to_python(py, lead, out)
-        }
+    let target = Out::new(out, &cam.lead, false)?;
+    let v = cam.each(py, aspect, 1, message, |view, l, o| {
+        o[0] = maps::n_prime_for(&view, l, spec.at(&view))?.value();
+        Ok(())
+    })?;
+    target.deliver(py, cam.lead.clone(), v)
+}
+
+/// The stacked camera arguments of the builders: near, far, half_fov and light_dir (..., 3).
+struct Cameras {
+    ops: [Operand; 4],
+    lead: Vec<usize>,
+}
+
+impl Cameras {
+    fn new(
+        near: &Any<'_>,
+        far: &Any<'_>,
+        half_fov: &Any<'_>,
+        light_dir: &Any<'_>,
+    ) -> PyResult<Self> {
+        let ops = [
+            Operand::new("near", near, &[])?,
+            Operand::new("far", far, &[])?,
+            Operand::new("half_fov", half_fov, &[])?,
+            Operand::new("light_dir", light_dir, &[3])?,
+        ];
+        let lead = lead_shape(&[&ops[0], &ops[1], &ops[2], &ops[3]])?;
+        Ok(Self { ops, lead })
+    }
+
+    /// `f(view, light_dir, out)` per camera of the stack, `width` values each (see
+    /// [`crate::stacked::each`]).
+    fn each<F>(
+        &self,
+        py: Python<'_>,
+        aspect: f64,
+        width: usize,
+        msg: fn(Error) -> String,
+        f: F,
+    ) -> PyResult<Vec<f64>>
+    where
+        F: Fn(ViewFrustum, DVec3, &mut [f64]) -> Result<(), Error> + Sync,
+    {
+        let [n, fa, h, l] = &self.ops;
+        each(
+            py,
+            [n, fa, h, l],
+            &self.lead,
+            width,
+            |[n, fa, h, l], o| {
+                let view = ViewFrustum::with_aspect(n[0], fa[0], h[0], aspect)?;
+                f(view, DVec3::new(l[0], l[1], l[2]), o)
+            },
+            msg,
+        )
     }
 }
 
@@ -356,6 +366,18 @@ pub(crate) fn split_scheme(
     lambda_: Option<f64>,
     light_dir: DVec3,
 ) -> PyResult<SplitScheme> {
+    split_spec(name, lambda_)?.at(light_dir).map_err(err)
+}
+
+/// A partition's name checked with `lambda_`; the adaptive planes' light angle is taken per
+/// light by [`SplitSpec::at`].
+#[derive(Clone, Copy)]
+pub(crate) enum SplitSpec {
+    Fixed(SplitScheme),
+    Adaptive,
+}
+
+pub(crate) fn split_spec(name: &str, lambda_: Option<f64>) -> PyResult<SplitSpec> {
     let name = choice(
         "partition",
         name,
@@ -367,20 +389,28 @@ pub(crate) fn split_scheme(
         )));
     }
     Ok(match name {
-        "self_similar" | "log" => SplitScheme::SelfSimilar,
-        "uniform" => SplitScheme::Uniform,
-        "practical" => SplitScheme::Practical {
+        "self_similar" | "log" => SplitSpec::Fixed(SplitScheme::SelfSimilar),
+        "uniform" => SplitSpec::Fixed(SplitScheme::Uniform),
+        "practical" => SplitSpec::Fixed(SplitScheme::Practical {
             lambda: lambda_.ok_or_else(|| {
                 PyValueError::new_err("lambda_ is missing (partition \"practical\" needs it)")
             })?,
-        },
-        _ => SplitScheme::Adaptive {
-            light_angle: LightAngle::from_light_dir(light_dir)
-                .map_err(err)?
-                .radians(),
-            ratio: ADAPTIVE_RATIO,
-        },
+        }),
+        _ => SplitSpec::Adaptive,
     })
+}
+
+impl SplitSpec {
+    /// The split scheme for this light.
+    pub(crate) fn at(&self, light_dir: DVec3) -> Result<SplitScheme, Error> {
+        Ok(match *self {
+            SplitSpec::Fixed(s) => s,
+            SplitSpec::Adaptive => SplitScheme::Adaptive {
+                light_angle: LightAngle::from_light_dir(light_dir)?.radians(),
+                ratio: ADAPTIVE_RATIO,
+            },
+        })
+    }
 }
 
 /// k z-partitions (cascades) of the view frustum, each with its own map fitted by `rule`
@@ -388,16 +418,24 @@ pub(crate) fn split_scheme(
 /// z_i = n (f/n)^{i/k}, Lloyd 2006 Eq 15, 16), "uniform", "practical" (``lambda_`` ∈ [0, 1])
 /// or "adaptive" (Barroso Eq 19, γ from the light, α = 2). ``overlap`` ∈ [0, 1) widens each
 /// partition's far end by that fraction of its depth. Returns a (k, 4, 4) float64 array, near to
-/// far; :func:`z_partition` gives the planes.
+/// far ((..., k, 4, 4) for stacks; float32 with ``dtype=numpy.float32``); :func:`z_partition`
+/// gives the planes.
+///
+/// Stacks: ``near``, ``far``, ``half_fov`` (each a number or an array) and ``light_dir`` ((3,) or
+/// (..., 3)) broadcast as NumPy broadcasts (the light's last axis aside); the result has the
+/// broadcast shape in front, each entry the one-camera call's value bit for bit, computed
+/// without the GIL on all cores. ``out``: an array of the result's shape and dtype to write
+/// into (returned).
 #[pyfunction]
 #[pyo3(signature = (near, far, half_fov, light_dir, k, partition="self_similar", rule="minimax",
-    *, lambda_=None, overlap=0.0, eta=None, focus=None, clip_depth="neg_one_to_one", aspect=1.0))]
+    *, lambda_=None, overlap=0.0, eta=None, focus=None, clip_depth="neg_one_to_one", aspect=1.0,
+    dtype=None, out=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn cascades<'py>(
     py: Python<'py>,
-    #[pyo3(from_py_with = args::near)] near: f64,
-    #[pyo3(from_py_with = args::far)] far: f64,
-    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
+    near: &Any<'py>,
+    far: &Any<'py>,
+    half_fov: &Any<'py>,
     light_dir: &Any<'py>,
     #[pyo3(from_py_with = args::k)] k: usize,
     #[pyo3(from_py_with = args::partition)] partition: &str,
@@ -408,11 +446,11 @@ pub fn cascades<'py>(
     #[pyo3(from_py_with = args::focus)] focus: Option<f64>,
     #[pyo3(from_py_with = args::clip_depth)] clip_depth: &str,
     #[pyo3(from_py_with = args::aspect)] aspect: f64,
+    dtype: Option<&Any<'py>>,
+    out: Option<&Any<'py>>,
 ) -> PyResult<Any<'py>> {
-    let view = view_of(near, far, half_fov, aspect)?;
-    let l = vec3("light_dir", light_dir)?;
-    let r = self::rule(
-        &view,
+    let cam = Cameras::new(near, far, half_fov, light_dir)?;
+    let spec = rule_spec(
         rule,
         RuleParams {
             eta,
@@ -420,22 +458,39 @@ pub fn cascades<'py>(
             ..RuleParams::default()
         },
     )?;
-    let s = split_scheme(partition, lambda_, l)?;
+    let splits_of = split_spec(partition, lambda_)?;
+    // k's own check (1 to MAX_PARTITIONS) before k sizes the result.
+    z_splits(1.0, 2.0, k, SplitScheme::Uniform).map_err(err)?;
     let depth = self::clip_depth(clip_depth)?;
-    let splits = z_splits(near, far, k, s).map_err(err)?;
-    let c = build_cascades(&view, l, &splits, r, overlap).map_err(err)?;
-    let ms: Vec<DMat4> = c.iter().map(|p| p.shadow.with_clip_depth(depth)).collect();
-    stack(py, &ms)
+    let f32 = crate::out::dtype(dtype)?;
+    let shape = [&cam.lead[..], &[k, 4, 4]].concat();
+    let target = Out::new(out, &shape, f32)?;
+    let v = cam.each(py, aspect, 16 * k, message, |view, l, o| {
+        let splits = z_splits(view.near(), view.far(), k, splits_of.at(l)?)?;
+        let c = build_cascades(&view, l, &splits, spec.at(&view), overlap)?;
+        if c.k() != k {
+            return Err(Error::Degenerate(format!(
+                "{} cascades built where {k} were asked for",
+                c.k()
+            )));
+        }
+        for (p, o) in c.iter().zip(o.chunks_exact_mut(16)) {
+            o.copy_from_slice(&to_rows(&p.shadow.with_clip_depth(depth)));
+        }
+        Ok(())
+    })?;
+    target.deliver(py, shape, v)
 }
 
 /// Face partitions (Lloyd 2006 §5.1): one map per visible face of the view frustum, each side
 /// face z-partitioned k times (self-similar planes), warped by ``warp`` "uniform", "psm" or
 /// "lispsm" (n′ = d_n + √(d_n d_f) of its face, which reproduces Lloyd 2006 Eq 19, 21).
 /// Returns ``(matrices, faces)``: an (m, 4, 4) float64 array and the face of each ("bottom",
-/// "right", "top", "left", "near").
+/// "right", "top", "left", "near"); float32 matrices with ``dtype=numpy.float32``. (No stacks
+/// and no ``out``: the number of maps depends on the light.)
 #[pyfunction]
 #[pyo3(signature = (near, far, half_fov, light_dir, k=1, warp="lispsm", *,
-    clip_depth="neg_one_to_one", aspect=1.0))]
+    clip_depth="neg_one_to_one", aspect=1.0, dtype=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn faces<'py>(
     py: Python<'py>,
@@ -447,7 +502,9 @@ pub fn faces<'py>(
     #[pyo3(from_py_with = args::warp)] warp: &str,
     #[pyo3(from_py_with = args::clip_depth)] clip_depth: &str,
     #[pyo3(from_py_with = args::aspect)] aspect: f64,
+    dtype: Option<&Any<'py>>,
 ) -> PyResult<(Any<'py>, Bound<'py, PyList>)> {
+    let f32 = crate::out::dtype(dtype)?;
     let view = view_of(near, far, half_fov, aspect)?;
     let l = vec3("light_dir", light_dir)?;
     let w = match choice("warp", warp, &["uniform", "psm", "lispsm"])? {
@@ -459,7 +516,7 @@ pub fn faces<'py>(
     let fp = face_partitions(&view, l, w, k).map_err(err)?;
     let ms: Vec<DMat4> = fp.iter().map(|p| p.shadow.with_clip_depth(depth)).collect();
     let names: Vec<&str> = fp.iter().map(|p| p.face.name()).collect();
-    Ok((stack(py, &ms)?, PyList::new(py, names)?))
+    Ok((stack(py, &ms, f32)?, PyList::new(py, names)?))
 }
 
 /// The trapezoidal shadow map (Martin & Tan 2004): the focus point ``focus`` beyond the near
@@ -467,40 +524,56 @@ pub fn faces<'py>(
 /// the line ``xi`` ∈ (−1, 1), or, with ``iterative`` = the map's texel lines along t, the line of
 /// largest focus area (§6.2's iterative variant, searched fast as the crate's
 /// ``TsmSearch::Iterative``: 33 sampled lines refined, which can miss a peak narrower than the
-/// sampling step). Returns the 4×4 float64 matrix eye → light clip space.
+/// sampling step). Returns the 4×4 float64 matrix eye → light clip space ((..., 4, 4) for
+/// stacks; float32 with ``dtype=numpy.float32``).
+///
+/// Stacks: ``near``, ``far``, ``half_fov`` (each a number or an array) and ``light_dir`` ((3,) or
+/// (..., 3)) broadcast as NumPy broadcasts (the light's last axis aside); the result has the
+/// broadcast shape in front, each entry the one-camera call's value bit for bit, computed
+/// without the GIL on all cores. ``out``: an array of the result's shape and dtype to write
+/// into (returned).
 #[pyfunction]
 #[pyo3(signature = (near, far, half_fov, light_dir, focus=None, *, xi=None, iterative=None,
-    clip_depth="neg_one_to_one", aspect=1.0))]
+    clip_depth="neg_one_to_one", aspect=1.0, dtype=None, out=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn tsm<'py>(
     py: Python<'py>,
-    #[pyo3(from_py_with = args::near)] near: f64,
-    #[pyo3(from_py_with = args::far)] far: f64,
-    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
+    near: &Any<'py>,
+    far: &Any<'py>,
+    half_fov: &Any<'py>,
     light_dir: &Any<'py>,
     #[pyo3(from_py_with = args::focus)] focus: Option<f64>,
     #[pyo3(from_py_with = args::xi)] xi: Option<f64>,
     #[pyo3(from_py_with = args::iterative)] iterative: Option<u32>,
     #[pyo3(from_py_with = args::clip_depth)] clip_depth: &str,
     #[pyo3(from_py_with = args::aspect)] aspect: f64,
+    dtype: Option<&Any<'py>>,
+    out: Option<&Any<'py>>,
 ) -> PyResult<Any<'py>> {
-    let view = view_of(near, far, half_fov, aspect)?;
-    let l = vec3("light_dir", light_dir)?;
+    let cam = Cameras::new(near, far, half_fov, light_dir)?;
     let search = tsm_search(xi, iterative)?;
-    let opts = TsmOptions {
-        focus: focus.unwrap_or(0.5 * (far - near)),
-        search,
-    };
     let depth = self::clip_depth(clip_depth)?;
-    let m = maps::tsm(&view, l, opts).map_err(|e| match e {
-        // The crate's name for what Python calls `iterative`.
+    let f32 = crate::out::dtype(dtype)?;
+    let shape = [&cam.lead[..], &[4, 4]].concat();
+    let target = Out::new(out, &shape, f32)?;
+    // The crate's name for what Python calls `iterative`.
+    let msg: fn(Error) -> String = |e| match e {
         Error::InvalidArgument {
             name: "map_lines",
             reason,
-        } => PyValueError::new_err(format!("iterative {reason}")),
-        e => err(e),
+        } => format!("iterative {reason}"),
+        e => e.to_string(),
+    };
+    let v = cam.each(py, aspect, 16, msg, |view, l, o| {
+        let opts = TsmOptions {
+            focus: focus.unwrap_or(0.5 * (view.far() - view.near())),
+            search,
+        };
+        let m = maps::tsm(&view, l, opts)?;
+        o.copy_from_slice(&to_rows(&m.shadow.with_clip_depth(depth)));
+        Ok(())
     })?;
-    one_matrix(py, &m.shadow.with_clip_depth(depth))
+    target.deliver(py, shape, v)
 }
 
 /// TSM's line rule from `xi` and `iterative` (alternatives; neither: the 80 % rule).
@@ -513,136 +586,4 @@ pub(crate) fn tsm_search(xi: Option<f64>, iterative: Option<u32>) -> PyResult<Ts
             "xi and iterative are alternatives: give at most one",
         )),
     }
-}
-
-/// The shape of `ob` if it is an array-like.
-fn shape_of(name: &str, ob: &Any<'_>) -> PyResult<(Vec<usize>, Vec<f64>)> {
-    match FloatArg::extract(name, ob)? {
-        FloatArg::Number(_) => Err(PyValueError::new_err(format!(
-            "{name} must be an array (got a number)"
-        ))),
-        FloatArg::Array(a) => Ok((a.shape().to_vec(), values_of(&a)?)),
-    }
-}
-
-/// M_x, M_z and S̄ = M_x M_z of any shadow matrix over the view frustum, measured from the
-/// exact derivatives of the projective map at the frustum's eight vertices (Lloyd 2006 §4.4):
-///
-///     m_x = w_ls / w_i,  m_z = w_lt / w_i,  w_i = 2 z tan θ / res_image  (unit resolutions)
-///
-/// matrix: (..., 4, 4) (row-major, clip = M @ (x, y, z, 1)); light_dir: (3,) or (..., 3), the
-/// direction light travels. Returns (..., 3) float64: ``[M_x, M_z, S̄]`` for each matrix.
-#[pyfunction]
-#[pyo3(signature = (matrix, light_dir, near, far, half_fov, *, aspect=1.0))]
-pub fn frustum_max<'py>(
-    py: Python<'py>,
-    matrix: &Any<'py>,
-    light_dir: &Any<'py>,
-    #[pyo3(from_py_with = args::near)] near: f64,
-    #[pyo3(from_py_with = args::far)] far: f64,
-    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
-    #[pyo3(from_py_with = args::aspect)] aspect: f64,
-) -> PyResult<Any<'py>> {
-    let view = view_of(near, far, half_fov, aspect)?;
-    let (ms, mv) = shape_of("matrix", matrix)?;
-    if ms.len() < 2 || ms[ms.len() - 2..] != [4, 4] {
-        return Err(PyValueError::new_err(format!(
-            "matrix must have shape (4, 4) or (..., 4, 4) (got {})",
-            fmt_shape(&ms)
-        )));
-    }
-    let lead = &ms[..ms.len() - 2];
-    let (ls, lv) = shape_of("light_dir", light_dir)?;
-    let per_matrix = if ls == [3] {
-        false
-    } else if ls.len() == lead.len() + 1 && ls[..lead.len()] == *lead && ls[lead.len()] == 3 {
-        true
-    } else {
-        let per = if lead.is_empty() {
-            String::new()
-        } else {
-            format!(" or {}", fmt_shape(&[lead, &[3]].concat()))
-        };
-        return Err(PyValueError::new_err(format!(
-            "light_dir must have shape (3,){per} for matrix of shape {} (got {})",
-            fmt_shape(&ms),
-            fmt_shape(&ls)
-        )));
-    };
-    let count = mv.len() / 16;
-    let out_shape = [lead, &[3]].concat();
-    let mut out = buffer(3 * count, &out_shape)?;
-    for i in 0..count {
-        let m = from_rows(&mv[16 * i..16 * i + 16]);
-        let o = if per_matrix { 3 * i } else { 0 };
-        let l = DVec3::new(lv[o], lv[o + 1], lv[o + 2]);
-        let r = ShadowMap::new(m, l)
-            .and_then(|s| measure_frustum_max(&view, &s))
-            .map_err(|e| {
-                if lead.is_empty() {
-                    err(e)
-                } else {
-                    PyValueError::new_err(format!(
-                        "{e} (matrix at index {})",
-                        crate::broadcast::fmt_index(i, lead)
-                    ))
-                }
-            })?;
-        out.extend_from_slice(&[r.max_mx, r.max_mz, r.storage_factor]);
-    }
-    to_python(py, out_shape, out)
-}
-
-/// The perspective aliasing error ``[m_x, m_z]`` of one shadow matrix at eye-space points
-/// (depth −z > 0), from the exact derivatives of s and t: the light beam widths across and
-/// along the map over the image beam width 2 z tan θ / res_image (Lloyd 2006 Eq 7, 8 for any
-/// matrix). point: (3,) or (..., 3); returns (..., 2) float64.
-#[pyfunction]
-#[pyo3(signature = (matrix, light_dir, point, near, far, half_fov, *, res_image=1.0, res_s=1.0,
-    res_t=1.0, aspect=1.0))]
-#[allow(clippy::too_many_arguments)]
-pub fn point_error<'py>(
-    py: Python<'py>,
-    matrix: &Any<'py>,
-    light_dir: &Any<'py>,
-    point: &Any<'py>,
-    #[pyo3(from_py_with = args::near)] near: f64,
-    #[pyo3(from_py_with = args::far)] far: f64,
-    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
-    #[pyo3(from_py_with = args::res_image)] res_image: f64,
-    #[pyo3(from_py_with = args::res_s)] res_s: f64,
-    #[pyo3(from_py_with = args::res_t)] res_t: f64,
-    #[pyo3(from_py_with = args::aspect)] aspect: f64,
-) -> PyResult<Any<'py>> {
-    let view = view_of(near, far, half_fov, aspect)?;
-    let m = from_rows(&values("matrix", matrix, &[4, 4])?);
-    let l = vec3("light_dir", light_dir)?;
-    let shadow = ShadowMap::new(m, l).map_err(err)?;
-    let res = Resolutions::new(res_image, res_s, res_t).map_err(err)?;
-    let (ps, pv) = shape_of("point", point)?;
-    if ps.last() != Some(&3) {
-        return Err(PyValueError::new_err(format!(
-            "point must have shape (3,) or (..., 3) (got {})",
-            fmt_shape(&ps)
-        )));
-    }
-    let lead = &ps[..ps.len() - 1];
-    let out_shape = [lead, &[2]].concat();
-    let mut out = buffer(pv.len() / 3 * 2, &out_shape)?;
-    for (i, p) in pv.chunks_exact(3).enumerate() {
-        let e = measure_point_error(&view, &shadow, DVec3::new(p[0], p[1], p[2]), res).map_err(
-            |e| {
-                if lead.is_empty() {
-                    err(e)
-                } else {
-                    PyValueError::new_err(format!(
-                        "{e} (point at index {})",
-                        crate::broadcast::fmt_index(i, lead)
-                    ))
-                }
-            },
-        )?;
-        out.extend_from_slice(&[e.mx, e.mz]);
-    }
-    to_python(py, out_shape, out)
 }

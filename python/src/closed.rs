@@ -145,12 +145,13 @@ macro_rules! elementwise {
     ) => {
         $(#[$meta])*
         #[pyfunction]
-        #[pyo3(signature = ($($req),+ $(, $($opt = None),+)?))]
+        #[pyo3(signature = ($($req),+ $(, $($opt = None),+)?, *, out = None))]
         #[allow(clippy::too_many_arguments)]
         pub fn $name<'py>(
             py: Python<'py>,
             $($req: &Any<'py>,)+
             $($($opt: Option<&Any<'py>>,)+)?
+            out: Option<&Any<'py>>,
         ) -> PyResult<Any<'py>> {
             #[allow(unused_variables)]
             let one = one(py);
@@ -159,14 +160,14 @@ macro_rules! elementwise {
                 $((arg_name(stringify!($req)), $req),)+
                 $($((arg_name(stringify!($opt)), $opt),)+)?
             ];
-            elementwise!(@call py, args, $spec, $checked $(, $fast, tan_of!($($($tan)+)?))?)
+            elementwise!(@call py, args, out, $spec, $checked $(, $fast, tan_of!($($($tan)+)?))?)
         }
     };
-    (@call $py:ident, $args:ident, $spec:expr, $checked:expr) => {
-        map($py, $args, $spec, $checked)
+    (@call $py:ident, $args:ident, $out:ident, $spec:expr, $checked:expr) => {
+        map($py, $args, $spec, $checked, $out)
     };
-    (@call $py:ident, $args:ident, $spec:expr, $checked:expr, $fast:expr, $tan:expr) => {
-        map_fast($py, $args, $spec, $checked, $fast, $tan)
+    (@call $py:ident, $args:ident, $out:ident, $spec:expr, $checked:expr, $fast:expr, $tan:expr) => {
+        map_fast($py, $args, $spec, $checked, $fast, $tan, $out)
     };
 }
 
@@ -282,7 +283,8 @@ elementwise! {
 ///
 /// res_image is validated but does not change the answer (only the ratio enters).
 #[pyfunction]
-#[pyo3(signature = (near, far, half_fov, n_prime, budget, res_image=None))]
+#[pyo3(signature = (near, far, half_fov, n_prime, budget, res_image=None, *, out=None))]
+#[allow(clippy::too_many_arguments)]
 pub fn critical_resolution<'py>(
     py: Python<'py>,
     near: &Any<'py>,
@@ -291,6 +293,7 @@ pub fn critical_resolution<'py>(
     n_prime: &Any<'py>,
     budget: &Any<'py>,
     res_image: Option<&Any<'py>>,
+    out: Option<&Any<'py>>,
 ) -> PyResult<Any<'py>> {
     let one = one(py);
     let ri = res_image.unwrap_or(&one);
@@ -318,6 +321,7 @@ pub fn critical_resolution<'py>(
             o[1] = r.res_t;
             Ok(())
         },
+        out,
     )
 }
 
@@ -415,10 +419,12 @@ elementwise! {
 ///
 /// errors: a 1-D array (each > 0); total: a number > 0. Returns a 1-D float64 array.
 #[pyfunction]
+#[pyo3(signature = (errors, total, *, out=None))]
 pub fn allocate_texels<'py>(
     py: Python<'py>,
     errors: &Any<'py>,
     #[pyo3(from_py_with = args::total)] total: f64,
+    out: Option<&Any<'py>>,
 ) -> PyResult<Any<'py>> {
     let e = crate::broadcast::FloatArg::extract("errors", errors)?;
     let values: Vec<f64> = match &e {
@@ -437,6 +443,7 @@ pub fn allocate_texels<'py>(
             crate::broadcast::values_of(a)?
         }
     };
+    let target = crate::out::Out::new(out, &[values.len()], false)?;
     if let Some((i, v)) = values.iter().enumerate().find(|(_, v)| !v.is_finite()) {
         return Err(PyValueError::new_err(format!(
             "errors must hold finite numbers (errors[{i}] is {v})"
@@ -446,7 +453,8 @@ pub fn allocate_texels<'py>(
     out.resize(values.len(), 0.0);
     subdivided::allocate_texels(&values, total, &mut out)
         .map_err(|e| crate::broadcast::value_error(&e))?;
-    crate::broadcast::to_python(py, vec![out.len()], out)
+    drop(e);
+    target.deliver(py, vec![out.len()], out)
 }
 
 /// The k + 1 split planes from near to far (last axis), near and far broadcast:
@@ -458,7 +466,7 @@ pub fn allocate_texels<'py>(
 ///
 /// k (a whole number ≥ 1, at most 16) is one number, since it sets the length of the last axis.
 #[pyfunction]
-#[pyo3(signature = (near, far, k, scheme, lambda_=None, light_angle=None, ratio=None))]
+#[pyo3(signature = (near, far, k, scheme, lambda_=None, light_angle=None, ratio=None, *, out=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn z_partition<'py>(
     py: Python<'py>,
@@ -469,6 +477,7 @@ pub fn z_partition<'py>(
     lambda_: Option<&Any<'py>>,
     light_angle: Option<&Any<'py>>,
     ratio: Option<&Any<'py>>,
+    out: Option<&Any<'py>>,
 ) -> PyResult<Any<'py>> {
     let scheme = choice(
         "scheme",
@@ -532,6 +541,7 @@ pub fn z_partition<'py>(
             o.copy_from_slice(splits.planes());
             Ok(())
         },
+        out,
     )
 }
 
@@ -540,6 +550,8 @@ pub fn z_partition<'py>(
 /// overhead (Eq 18): S̄ = k (α^{1/k} − 1)/(2 tan θ); optimal (App. C): S̄ = ln α/(2 tan θ).
 /// Where the paper gives no closed form for a pair, ValueError says so. k broadcasts.
 #[pyfunction]
+#[pyo3(signature = (scheme, light, near, far, half_fov, k, *, out=None))]
+#[allow(clippy::too_many_arguments)]
 pub fn scheme_storage_factor<'py>(
     py: Python<'py>,
     #[pyo3(from_py_with = args::scheme)] scheme: &str,
@@ -548,6 +560,7 @@ pub fn scheme_storage_factor<'py>(
     far: &Any<'py>,
     half_fov: &Any<'py>,
     k: &Any<'py>,
+    out: Option<&Any<'py>>,
 ) -> PyResult<Any<'py>> {
     let scheme = match choice("scheme", scheme, &["zp", "zp_w", "fp_zp_w", "optimal"])? {
         "zp" => Scheme::Zp,
@@ -569,6 +582,7 @@ pub fn scheme_storage_factor<'py>(
         ],
         SCALAR,
         move |x| partition::scheme_storage_factor(scheme, light, &view(x)?, count("k", x[3])?),
+        out,
     )
 }
 
@@ -611,6 +625,7 @@ elementwise! {
 /// γ ≥ γ_lim, else n′₁(γ_lim)/r(γ) with the fall-off r of Eq 18 ("barroso") or Eq 17 ("zhang");
 /// ``inf`` at γ = 0.
 #[pyfunction]
+#[pyo3(signature = (near, far, half_fov, light_angle, falloff, *, out=None))]
 pub fn generalized_n_prime<'py>(
     py: Python<'py>,
     near: &Any<'py>,
@@ -618,6 +633,7 @@ pub fn generalized_n_prime<'py>(
     half_fov: &Any<'py>,
     light_angle: &Any<'py>,
     #[pyo3(from_py_with = args::falloff)] falloff: &str,
+    out: Option<&Any<'py>>,
 ) -> PyResult<Any<'py>> {
     let falloff = match choice("falloff", falloff, &["barroso", "zhang"])? {
         "barroso" => tilted::Falloff::Barroso,
@@ -635,6 +651,7 @@ pub fn generalized_n_prime<'py>(
         move |x| {
             Ok(tilted::generalized_n_prime(&view(x)?, LightAngle::new(x[3])?, falloff).value())
         },
+        out,
     )
 }
 

@@ -9,7 +9,7 @@ use glam::{DMat4, DVec3};
 use numpy::PyUntypedArrayMethods;
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyDict, PyList, PyString};
+use pyo3::types::{PyBool, PyDict, PyList};
 use shadow_aliasing::frame::{
     frame as build_frame, Aabb, Bias, Bound as SceneBound, Camera, CascadeSplits, FrameInput,
     FrameScheme, WarpCentre,
@@ -115,31 +115,6 @@ fn depth_clamp_arg(ob: &Any<'_>) -> PyResult<bool> {
 /// `measure`, by [`flag`].
 fn measure_arg(ob: &Any<'_>) -> PyResult<bool> {
     flag("measure", ob)
-}
-
-/// `dtype`: float64 (the default) or float32, as a NumPy type, dtype or its name.
-fn dtype(ob: Option<&Any<'_>>) -> PyResult<bool> {
-    let Some(ob) = ob.filter(|o| !o.is_none()) else {
-        return Ok(false);
-    };
-    let name = if let Ok(s) = ob.cast::<PyString>() {
-        s.to_str()?.to_string()
-    } else {
-        let np = ob.py().import("numpy")?;
-        let is_type = ob.is(&np.getattr("float32")?) || ob.is(&np.getattr("float64")?);
-        let is_dtype = ob.is_instance(&np.getattr("dtype")?)?;
-        if !(is_type || is_dtype) {
-            return Err(PyTypeError::new_err(format!(
-                "dtype must be numpy.float64 or numpy.float32 (got {})",
-                args::kind(ob)
-            )));
-        }
-        np.getattr("dtype")?
-            .call1((ob,))?
-            .getattr("name")?
-            .extract::<String>()?
-    };
-    Ok(choice("dtype", &name, &["float64", "float32"])? == "float32")
 }
 
 /// `bevy`: a mapping with Bevy's `CascadeShadowConfigBuilder` fields.
@@ -312,7 +287,7 @@ pub fn frame<'py>(
     let bevy = bevy.filter(|b| !b.is_none()).map(bevy_splits).transpose()?;
     let bevy_given = bevy.is_some();
     let depth = crate::builders::clip_depth(clip_depth)?;
-    let f32_out = self::dtype(dtype)?;
+    let f32_out = crate::out::dtype(dtype)?;
     let centre = match choice("centre", centre, &["rule", "eye", "nearest_vertex"])? {
         "rule" => WarpCentre::Rule,
         "eye" => WarpCentre::Eye,

@@ -11,6 +11,9 @@ mod broadcast;
 mod builders;
 mod closed;
 mod frame;
+mod measure;
+mod out;
+mod stacked;
 mod sweep;
 
 use pyo3::prelude::*;
@@ -64,8 +67,8 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(cascades, m)?)?;
     m.add_function(wrap_pyfunction!(faces, m)?)?;
     m.add_function(wrap_pyfunction!(tsm, m)?)?;
-    m.add_function(wrap_pyfunction!(frustum_max, m)?)?;
-    m.add_function(wrap_pyfunction!(point_error, m)?)?;
+    m.add_function(wrap_pyfunction!(measure::frustum_max, m)?)?;
+    m.add_function(wrap_pyfunction!(measure::point_error, m)?)?;
     m.add_function(wrap_pyfunction!(frame::frame, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_angles, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;

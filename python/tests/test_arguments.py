@@ -116,7 +116,12 @@ FUNCTIONS = sorted(n for n in sa.__all__ if callable(getattr(sa, n)))
 
 
 def _kind(annotation):
-    """'str', 'int', 'float' (one number) or 'array' (anything numpy.asarray takes)."""
+    """'str', 'int', 'float' (one number), 'array' (anything numpy.asarray takes) or 'out' (an
+    existing array that receives the result)."""
+    if annotation == "OutArray":
+        return "out"
+    if annotation == "DType":
+        return "str"
     if annotation == "bool":
         return "bool"
     if "BevySplits" in annotation:
@@ -135,10 +140,27 @@ def _optional(fn, arg):
     return p.default is None
 
 
+def _out_cases(fn):
+    """``out``: anything but a writeable ndarray of the result's shape and dtype is refused."""
+    right = np.asarray(getattr(sa, fn)(**CALLS[fn]))
+    frozen = np.zeros_like(right)
+    frozen.flags.writeable = False
+    yield from [("a str", "abc", TypeError), ("a ragged list", RAGGED, TypeError),
+                ("a float", 1.5, TypeError), ("a list", right.tolist(), TypeError),
+                ("float32", right.astype(np.float32), TypeError),
+                ("int64", right.astype(np.int64), TypeError),
+                ("a wrong shape", np.zeros(right.shape + (2,)), ValueError),
+                ("read-only", frozen, ValueError)]
+
+
 def _cases():
     for fn in FUNCTIONS:
         for arg in inspect.signature(getattr(sa, fn)).parameters:
             kind = _kind(STUBS[fn][arg])
+            if kind == "out":
+                for label, v, cls in _out_cases(fn):
+                    yield pytest.param(fn, arg, v, cls, id=f"{fn}-{arg}-{label}")
+                continue
             wrong = [("a str", "abc"), ("a ragged list", RAGGED)] if kind != "str" else \
                 [("a float", 1.5), ("a list", ["uniform"])]
             if kind in ("bool", "dict"):
