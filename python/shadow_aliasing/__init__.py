@@ -1,7 +1,8 @@
 """The perspective aliasing error of shadow maps, from the Rust crate ``shadow-aliasing``.
 
 Errors name the argument: ``TypeError`` for a wrong type, ``ValueError`` for a value outside
-the domain (the crate's message). No function returns NaN.
+the domain (the crate's message). No function returns NaN (but ``error_image``'s ``fill``,
+NaN by default, for pixels without a prediction).
 
 Closed forms (NumPy broadcasting over every float argument, float64 out): ``mx``, ``mz``, ``max_mx``,
 ``max_mz``, ``storage_factor``, ``critical_resolution``, ``n_prime_lispsm``,
@@ -14,7 +15,7 @@ spelled ``lambda_``).
 Builders (4×4 float64 matrices, eye space → light clip space, ``clip = M @ (x, y, z, 1)``):
 ``warp``, ``n_prime_for``, ``cascades``, ``faces``, ``tsm``. World-space frame API (the renderer's path: a view matrix,
 scene boxes, every scheme; dict of arrays): ``frame``. Measurement: ``frustum_max``,
-``point_error``. Hemisphere sweep: ``sweep`` (all cores; Ctrl-C interrupts it),
+``point_error``; a captured frame's per-pixel error: ``error_image``. Hemisphere sweep: ``sweep`` (all cores; Ctrl-C interrupts it),
 ``sweep_angles``.
 """
 
@@ -24,6 +25,7 @@ from ._native import (
     cascades,
     critical_resolution,
     distribution_g,
+    error_image,
     eta_from_n_prime,
     faces,
     frame,
@@ -62,6 +64,7 @@ __all__ = [
     "cascades",
     "critical_resolution",
     "distribution_g",
+    "error_image",
     "eta_from_n_prime",
     "faces",
     "frame",

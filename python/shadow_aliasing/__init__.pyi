@@ -1,5 +1,5 @@
 """Type stubs of shadow_aliasing (the closed forms broadcast over every float argument)."""
-from typing import List, Literal, Optional, Sequence, Tuple, TypedDict, Union
+from typing import List, Literal, Optional, Sequence, Tuple, TypedDict, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -164,6 +164,23 @@ def point_error(matrix: ArrayLike, light_dir: ArrayLike, point: ArrayLike, near:
                 out: OutArray = ...) -> npt.NDArray[np.float64]:
     """[m_x, m_z] (last axis) at (..., 3) eye-space points; every argument but the
     resolutions broadcasts."""
+@overload
+def error_image(depth: ArrayLike, projection: ArrayLike, view: ArrayLike,
+                shadow_matrix: ArrayLike, *, map_resolution: int = ...,
+                clip_depth: ClipDepth = ..., normals: Optional[ArrayLike] = ...,
+                map_index: Optional[ArrayLike] = ..., background: Optional[float] = ...,
+                fill: float = ..., return_jacobian: Literal[False] = ...,
+                out: OutArray = ...) -> npt.NDArray[np.float64]:
+    """(H, W) predicted error, pixels per texel (1/σ_min of the exact footprint J), of every
+    pixel of a depth buffer (H, W); ``fill`` where there is no prediction, inf edge-on to the light."""
+@overload
+def error_image(depth: ArrayLike, projection: ArrayLike, view: ArrayLike,
+                shadow_matrix: ArrayLike, *, map_resolution: int = ...,
+                clip_depth: ClipDepth = ..., normals: Optional[ArrayLike] = ...,
+                map_index: Optional[ArrayLike] = ..., background: Optional[float] = ...,
+                fill: float = ..., return_jacobian: Literal[True],
+                out: OutArray = ...) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
+    """``(error (H, W), jacobian (H, W, 2, 2))``."""
 def frame(view: ArrayLike, near: float, far: float, half_fov: float, light_dir: Vec3, *,
           aspect: float = ..., receivers: Optional[ArrayLike] = ..., casters: Optional[ArrayLike] = ...,
           depth_range: Optional[ArrayLike] = ..., depth_clamp: bool = ..., measure: bool = ...,

@@ -148,10 +148,24 @@ named! {
     fn shadow_distance = real_or_none() -> Option<f64>;
     fn lambda_ = real_or_none() -> Option<f64>;
     fn xi = real_or_none() -> Option<f64>;
+    fn background = real_or_none() -> Option<f64>;
+    fn fill = real() -> f64;
     fn k = count() -> usize;
     fn elevations = count() -> usize;
     fn azimuths = count() -> usize;
     fn iterative = count_u32_or_none() -> Option<u32>;
+}
+
+/// `return_jacobian` of `error_image`: `True` or `False` only.
+pub fn return_jacobian(ob: &Any<'_>) -> PyResult<bool> {
+    if ob.is_instance_of::<PyBool>() {
+        ob.is_truthy()
+    } else {
+        Err(PyTypeError::new_err(format!(
+            "return_jacobian must be True or False (got {})",
+            kind(ob)
+        )))
+    }
 }
 
 /// `overlap` where its default is `None` (`frame`).

@@ -10,6 +10,7 @@ mod args;
 mod broadcast;
 mod builders;
 mod closed;
+mod error_image;
 mod frame;
 mod measure;
 mod out;
@@ -69,6 +70,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(tsm, m)?)?;
     m.add_function(wrap_pyfunction!(measure::frustum_max, m)?)?;
     m.add_function(wrap_pyfunction!(measure::point_error, m)?)?;
+    m.add_function(wrap_pyfunction!(error_image::error_image, m)?)?;
     m.add_function(wrap_pyfunction!(frame::frame, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_angles, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
