@@ -84,12 +84,14 @@ mod input;
 mod output;
 mod rules;
 mod upload;
+mod wgsl;
 
 pub use bias::Bias;
 pub use culling::{CullVolume, MAX_CULL_PLANES};
 pub use input::{Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme, WarpCentre};
 pub use output::{Focus, Frame, FrameMap, FrameMaps, LightCase, MapError};
 pub use upload::{GpuShadowMap, GPU_SHADOW_MAP_WGSL};
+pub use wgsl::SHADOW_WGSL;
 
 use crate::analytic::partition::MAX_PARTITIONS;
 use crate::error::{Error, Result};

@@ -1,0 +1,243 @@
+// shadow-aliasing's shadow lookup for the frame's maps. The Rust constant
+// shadow_aliasing::frame::SHADOW_WGSL is GPU_SHADOW_MAP_WGSL (the GpuShadowMap record and its
+// clip_depth codes) followed by this text; concatenate it before your own shader.
+//
+// The including shader declares these four functions, over whatever bindings it has:
+//
+//   fn sa_map(i: u32) -> GpuShadowMap          // map i's record (FrameMap::gpu or gpu_relative)
+//   fn sa_map_count() -> u32                   // how many maps (at least 1)
+//   fn sa_map_resolution() -> f32              // texels per side of every map
+//   fn sa_stored_depth(i: u32, texel: vec2<i32>) -> f32
+//       // the depth map i stores at a texel (x from s = 0, y down from t = 1: texture rows),
+//       // as its depth attachment holds it (textureLoad of a texture_depth_2d_array)
+//
+// Points p are in the space the records' world_to_clip takes (world space, or relative to the
+// upload origin with gpu_relative); n is the surface's unit normal and l the direction the light
+// travels, both in that space's axes.
+
+// Bias flags of sa_visibility.
+const SA_NORMAL_OFFSET: u32 = 1u;
+const SA_DEPTH_BIAS: u32 = 2u;
+
+// Where p falls in map m: xy = (s, t) in [0, 1] across the map (t up), z = the depth the depth
+// attachment stores for it (OpenGL's [-1, 1] mapped to [0, 1], as glDepthRange(0, 1) does; the
+// other conventions as they are), w = clip w (> 0 in front of the map's centre of projection; a
+// warped map's lookup divides by it).
+fn sa_project(m: GpuShadowMap, p: vec3<f32>) -> vec4<f32> {
+    let h = m.world_to_clip * vec4<f32>(p, 1.0);
+    let ndc = h.xyz / h.w;
+    var depth = ndc.z;
+    if (m.clip_depth == CLIP_DEPTH_NEG_ONE_TO_ONE) {
+        depth = 0.5 * depth + 0.5;
+    }
+    return vec4<f32>(0.5 * ndc.xy + vec2<f32>(0.5), depth, h.w);
+}
+
+// Whether a projected point (sa_project) lies on its map: in front of the centre of projection,
+// s and t in [0, 1).
+fn sa_on_map(q: vec4<f32>) -> bool {
+    return q.w > 0.0 && all(q.xy >= vec2<f32>(0.0)) && all(q.xy < vec2<f32>(1.0));
+}
+
+// The texel holding map position st (texture rows run down from t = 1).
+fn sa_texel(st: vec2<f32>) -> vec2<i32> {
+    let res = sa_map_resolution();
+    return vec2<i32>(i32(floor(st.x * res)), i32(floor((1.0 - st.y) * res)));
+}
+
+// Whether a receiver at `depth` (depth-attachment units) is lit against the stored depth:
+// less-equal, greater-equal for reversed depth. The receiver's depth is clamped to [0, 1] first:
+// a receiver beyond the map's far depth counts as at it (lit where nothing was drawn).
+fn sa_depth_lit(m: GpuShadowMap, depth: f32, stored: f32) -> bool {
+    let d = clamp(depth, 0.0, 1.0);
+    if (m.clip_depth == CLIP_DEPTH_REVERSED) {
+        return d >= stored;
+    }
+    return d <= stored;
+}
+
+// The factor of a record's bias values for a PCF kernel of radius r texels: a record holds them
+// for one lookup (r = 0: FrameMap::gpu, gpu_relative), a kernel of radius r needs 2r + 1 times
+// them (GpuShadowMap's docs).
+fn sa_kernel_scale(r: i32) -> f32 {
+    return f32(2 * max(r, 0) + 1);
+}
+
+// The lookup point: p moved along its unit normal n by the record's normal offset (world units)
+// for a kernel of radius r.
+fn sa_offset_point(m: GpuShadowMap, p: vec3<f32>, n: vec3<f32>, r: i32) -> vec3<f32> {
+    return p + n * (m.normal_offset * sa_kernel_scale(r));
+}
+
+// The depth bias to add to the receiver's depth (depth-attachment units, signed for the
+// convention) at a surface of unit normal n under light l, for a kernel of radius r:
+// (2r + 1) (constant_depth + slope_scaled_depth tan a), a the angle between n and the direction
+// to the light (cos a clamped at 1e-3; a surface turned away from the light is dark anyway).
+fn sa_depth_bias(m: GpuShadowMap, n: vec3<f32>, l: vec3<f32>, r: i32) -> f32 {
+    let c = clamp(dot(n, -l), 1e-3, 1.0);
+    let tan_a = sqrt(max(1.0 - c * c, 0.0)) / c;
+    var b = (m.constant_depth + m.slope_scaled_depth * tan_a) * sa_kernel_scale(r);
+    if (m.clip_depth == CLIP_DEPTH_NEG_ONE_TO_ONE) {
+        b = 0.5 * b;
+    }
+    return b;
+}
+
+// The fraction of the (2r + 1)^2 taps of map i (whole-texel offsets -r..r in s and t around the
+// lookup point's texel, clamped to the map) that find p lit: 1 lit, 0 in shadow. `bias` says
+// which of the record's biases to apply: SA_NORMAL_OFFSET, SA_DEPTH_BIAS, both, or 0u for maps
+// that keep a surface from shadowing itself otherwise (second-depth maps). 1 where the lookup
+// point is not on the map: no shadow is known there.
+fn sa_visibility(i: u32, p: vec3<f32>, n: vec3<f32>, l: vec3<f32>, r: i32, bias: u32) -> f32 {
+    let m = sa_map(i);
+    var q = p;
+    if ((bias & SA_NORMAL_OFFSET) != 0u) {
+        q = sa_offset_point(m, p, n, r);
+    }
+    let pos = sa_project(m, q);
+    if (!sa_on_map(pos)) {
+        return 1.0;
+    }
+    var depth = pos.z;
+    if ((bias & SA_DEPTH_BIAS) != 0u) {
+        depth = depth + sa_depth_bias(m, n, l, r);
+    }
+    let centre = sa_texel(pos.xy);
+    let last = vec2<i32>(i32(sa_map_resolution()) - 1);
+    let k = max(r, 0);
+    var lit = 0.0;
+    for (var dy = -k; dy <= k; dy++) {
+        for (var dx = -k; dx <= k; dx++) {
+            let t = clamp(centre + vec2<i32>(dx, dy), vec2<i32>(0), last);
+            if (sa_depth_lit(m, depth, sa_stored_depth(i, t))) {
+                lit = lit + 1.0;
+            }
+        }
+    }
+    let taps = f32(2 * k + 1);
+    return lit / (taps * taps);
+}
+
+// A choice of maps: `first`, with `second` cross-faded in at `weight` (0: `first` alone).
+struct SaPick {
+    first: u32,
+    second: u32,
+    weight: f32,
+}
+
+// Cascades (z-partitions, stable cascades): the first map whose split ends beyond the view depth
+// (positive distance along the view direction; the last map beyond them all), and the cross-fade
+// over the blend band that holds the depth, the selected map's own (a band inside its split's far
+// end, Bevy's overlap) or the previous map's (a band beyond its split's far end, the frame's
+// overlap), the later map's weight rising linearly across the band.
+fn sa_pick_cascade(view_depth: f32) -> SaPick {
+    let n = sa_map_count();
+    var i = 0u;
+    loop {
+        if (i + 1u >= n || view_depth < sa_map(i).split.y) {
+            break;
+        }
+        i = i + 1u;
+    }
+    var j = i;
+    if (i > 0u) {
+        j = i - 1u;
+    }
+    for (; j <= i && j + 1u < n; j++) {
+        let b = sa_map(j).blend;
+        if (b.y > b.x && view_depth >= b.x && view_depth < b.y) {
+            return SaPick(j, j + 1u, (view_depth - b.x) / (b.y - b.x));
+        }
+    }
+    return SaPick(i, i, 0.0);
+}
+
+// The visibility (sa_visibility) of a cascaded frame at a view depth, cross-faded over the blend
+// bands (sa_pick_cascade).
+fn sa_cascaded_visibility(
+    view_depth: f32,
+    p: vec3<f32>,
+    n: vec3<f32>,
+    l: vec3<f32>,
+    r: i32,
+    bias: u32,
+) -> f32 {
+    let pick = sa_pick_cascade(view_depth);
+    let v = sa_visibility(pick.first, p, n, l, r, bias);
+    if (pick.weight <= 0.0) {
+        return v;
+    }
+    return mix(v, sa_visibility(pick.second, p, n, l, r, bias), pick.weight);
+}
+
+// Face partitions: the face of the view frustum that the light ray through the eye-space point
+// p_eye passes (index in Face::ALL: bottom 0, right 1, top 2, left 3, near 4, far 5), entering the
+// frustum when the light travels along the view (light_eye.z < 0) and leaving it otherwise, and
+// the view depth where it crosses that face; x = -1 when the ray meets none. frustum = (near,
+// far, tan of the half field of view in y, the same in x).
+fn sa_face_crossing(p_eye: vec3<f32>, light_eye: vec3<f32>, frustum: vec4<f32>) -> vec2<f32> {
+    var d = light_eye;
+    if (d.z < 0.0) {
+        d = -d;
+    }
+    let ty = frustum.z;
+    let tx = frustum.w;
+    // Outward normals N and offsets c, inside where N.x + c <= 0, in Face::ALL's order.
+    var normals = array<vec3<f32>, 6>(
+        vec3<f32>(0.0, -1.0, ty), vec3<f32>(1.0, 0.0, tx), vec3<f32>(0.0, 1.0, ty),
+        vec3<f32>(-1.0, 0.0, tx), vec3<f32>(0.0, 0.0, 1.0), vec3<f32>(0.0, 0.0, -1.0));
+    var offsets = array<f32, 6>(0.0, 0.0, 0.0, 0.0, frustum.x, -frustum.y);
+    var best = 3.4e38;
+    var face = -1;
+    for (var k = 0; k < 6; k++) {
+        let nd = dot(normals[k], d);
+        if (nd > 0.0) {
+            let t = -(dot(normals[k], p_eye) + offsets[k]) / nd;
+            if (t < best) {
+                best = t;
+                face = k;
+            }
+        }
+    }
+    if (face < 0) {
+        return vec2<f32>(-1.0, 0.0);
+    }
+    return vec2<f32>(f32(face), -(p_eye.z + best * d.z));
+}
+
+// Face partitions: the map of the face the point's light ray passes (sa_face_crossing) whose
+// split holds the crossing's depth (a split with split.x == split.y, the near or far face's one
+// map, holds every depth; where none holds it, the face's map nearest to it); where no map has
+// that face, the first map p lies on; sa_map_count() where there is none. p is in the records'
+// space, p_eye the same point in eye space.
+fn sa_pick_face(p: vec3<f32>, p_eye: vec3<f32>, light_eye: vec3<f32>, frustum: vec4<f32>) -> u32 {
+    let n = sa_map_count();
+    let crossing = sa_face_crossing(p_eye, light_eye, frustum);
+    var pick = n;
+    if (crossing.x >= 0.0) {
+        let face = u32(crossing.x);
+        var gap = 3.4e38;
+        for (var i = 0u; i < n; i++) {
+            let m = sa_map(i);
+            if (m.face == face) {
+                var g = 0.0;
+                if (m.split.x != m.split.y) {
+                    g = max(max(m.split.x - crossing.y, crossing.y - m.split.y), 0.0);
+                }
+                if (g < gap) {
+                    gap = g;
+                    pick = i;
+                }
+            }
+        }
+    }
+    if (pick < n) {
+        return pick;
+    }
+    for (var i = 0u; i < n; i++) {
+        if (sa_on_map(sa_project(sa_map(i), p))) {
+            return i;
+        }
+    }
+    return n;
+}
