@@ -8,7 +8,7 @@
 //! 4. the rendered perspective error against the frame's reported M_x, M_z, and, in Lloyd 2006's
 //!    overhead case, against its Eq 7–10.
 
-use crate::gpu::FrameOutput;
+use crate::gpu::{FrameOutput, Lookup};
 use crate::perspective::{centred, lloyd2006, one_sided, perspective_error};
 use crate::scene::{ray_occluded, Mesh, Scene, FACING};
 use crate::schemes::{Built, Scheme, View};
@@ -151,6 +151,7 @@ fn first_pass(
     scene: &Scene,
     mesh: &Mesh,
     built: &Built,
+    lookup: Lookup,
     grids: Grids,
     (width, height, res): (u32, u32, u32),
     rows: std::ops::Range<usize>,
@@ -165,6 +166,10 @@ fn first_pass(
             MapGeom {
                 world_to_clip: wc,
                 clip_to_world: wc.inverse(),
+                normal_offset: match lookup {
+                    Lookup::SecondDepth => None,
+                    Lookup::FirstSurface => Some(f64::from(m.record.normal_offset)),
+                },
             }
         })
         .collect();
@@ -315,7 +320,7 @@ pub fn analyse(
     scene: &Scene,
     mesh: &Mesh,
     built: &Built,
-    scheme: Scheme,
+    (scheme, lookup): (Scheme, Lookup),
     res: u32,
     width: u32,
     height: u32,
@@ -326,8 +331,9 @@ pub fn analyse(
     let sizes = (width, height, res);
     let mid = h / 2;
     let px: Vec<Pixel> = std::thread::scope(|sc| {
-        let a = sc.spawn(|| first_pass(out, view, scene, mesh, built, grids, sizes, 0..mid));
-        let b = first_pass(out, view, scene, mesh, built, grids, sizes, mid..h);
+        let a =
+            sc.spawn(|| first_pass(out, view, scene, mesh, built, lookup, grids, sizes, 0..mid));
+        let b = first_pass(out, view, scene, mesh, built, lookup, grids, sizes, mid..h);
         let mut a = a.join().expect("first pass");
         a.extend(b);
         a

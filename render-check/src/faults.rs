@@ -4,13 +4,14 @@
 //! the frame ([`crate::schemes::build`]): to the frame's input (the casters, the light), to each
 //! map's matrix (both the matrix the measurement takes and the GPU's, so that the two stay
 //! consistent and only the frame's own reported numbers, the ray cast and the coverage can tell),
-//! or to the split ranges and faces the shader selects maps by.
+//! to the split ranges and faces the shader selects maps by, to how the maps are uploaded (the
+//! plain world matrix in place of the relative path) or to what is drawn into them (culling).
 //!
 //! The renderer does not cross-fade cascades (the frame's cascades are built with overlap 0, so
-//! their blend band is empty), so there is no "blend band ignored" fault.
+//! their blend band is empty), so there is no "blend band ignored" fault (docs/rendered.md).
 
 use crate::gpu::Gpu;
-use crate::run::{run_full, Sizes};
+use crate::run::{run_full, Render, Sizes};
 use crate::schemes::{setups, Map, Scheme, View};
 use crate::targets::violations;
 use glam::{DMat4, DVec3, DVec4};
@@ -40,7 +41,17 @@ pub enum Fault {
     /// Face partitions: every map given to the wrong face (each face's maps labelled with the
     /// next face present, cyclically).
     WrongFace,
+    /// The plain `f32` world matrix (`FrameMap::gpu`, world positions in `f32`) in place of the
+    /// relative upload path: only set-ups far from the world origin can tell.
+    PlainWorld,
+    /// Culling too tight: each map draws only the objects that may meet its casters' volume cut
+    /// by its receivers' volume (the view slice), so casters outside the view are dropped.
+    CullTight,
 }
+
+/// How far from the world origin a set-up's camera must be for [`Fault::PlainWorld`] to apply
+/// (the self-test runs it only there; nearer, the plain matrix loses nothing measurable).
+pub const FAR_FROM_ORIGIN: f64 = 1e4;
 
 /// clip x, y scale of [`Fault::MatrixScale`].
 const SCALE: f64 = 1.01;
@@ -59,7 +70,7 @@ const GL_TO_01: DMat4 = DMat4::from_cols(
 
 impl Fault {
     /// Every fault, in the order of the self-test.
-    pub const ALL: [Fault; 8] = [
+    pub const ALL: [Fault; 10] = [
         Fault::MatrixScale,
         Fault::DepthShift,
         Fault::NPrimeDouble,
@@ -68,6 +79,8 @@ impl Fault {
         Fault::CascadeOffByOne,
         Fault::Unsnapped,
         Fault::WrongFace,
+        Fault::PlainWorld,
+        Fault::CullTight,
     ];
 
     /// The name `--fault` takes.
@@ -81,6 +94,8 @@ impl Fault {
             Fault::CascadeOffByOne => "cascade-off-by-one",
             Fault::Unsnapped => "unsnapped",
             Fault::WrongFace => "wrong-face",
+            Fault::PlainWorld => "plain-world",
+            Fault::CullTight => "cull-tight",
         }
     }
 
@@ -95,6 +110,8 @@ impl Fault {
             Fault::CascadeOffByOne => "cascade selection off by one",
             Fault::Unsnapped => "stable cascades not snapped to texels",
             Fault::WrongFace => "face partitions: every map given to the wrong face",
+            Fault::PlainWorld => "the plain f32 world matrix in place of the relative upload path",
+            Fault::CullTight => "culling too tight: casters' volume cut to the view slice",
         }
     }
 
@@ -120,6 +137,22 @@ impl Fault {
             Fault::Unsnapped => scheme == Scheme::StableCascades,
             Fault::WrongFace => scheme == Scheme::Faces,
             _ => true,
+        }
+    }
+
+    /// Whether the fault can change a case of `scene` at all: the plain world matrix only far
+    /// from the world origin ([`FAR_FROM_ORIGIN`]).
+    pub fn applies_to_scene(self, scene: &crate::scene::Scene) -> bool {
+        self != Fault::PlainWorld || DVec3::from_array(scene.camera.eye).length() >= FAR_FROM_ORIGIN
+    }
+
+    /// How the maps are culled when `cull` asks for culling.
+    pub fn cull(fault: Option<Fault>, cull: bool) -> crate::schemes::Cull {
+        use crate::schemes::Cull;
+        match (cull, fault) {
+            (_, Some(Fault::CullTight)) => Cull::Tight,
+            (true, _) => Cull::Casters,
+            (false, _) => Cull::Off,
         }
     }
 
@@ -174,8 +207,8 @@ impl Fault {
         GL_TO_01 * built
     }
 
-    /// Changes how the renderer selects the maps (split ranges, faces).
-    pub fn selection(fault: Option<Fault>, maps: &mut [Map]) {
+    /// Changes how the renderer selects the maps (split ranges, faces); whether it did.
+    pub fn selection(fault: Option<Fault>, maps: &mut [Map]) -> bool {
         match fault {
             Some(Fault::CascadeOffByOne) => {
                 // The shader takes the first map whose far exceeds the fragment's depth: each
@@ -192,6 +225,7 @@ impl Fault {
                 if let Some(last) = maps.last_mut() {
                     last.far = f64::INFINITY;
                 }
+                true
             }
             Some(Fault::WrongFace) => {
                 let mut faces: Vec<i32> = maps.iter().map(|m| m.region).collect();
@@ -201,8 +235,9 @@ impl Fault {
                     let k = faces.iter().position(|&f| f == m.region).unwrap_or(0);
                     m.region = faces[(k + 1) % faces.len()];
                 }
+                true
             }
-            _ => {}
+            _ => false,
         }
     }
 }
@@ -216,6 +251,7 @@ pub const SELF_TEST_SIZES: Sizes = Sizes {
     frames: 16,
     shimmer_points: 1500,
     fault: None,
+    render: Render::DEFAULT,
 };
 
 /// One run of the self-test: the clean build (`fault` `None`) or one fault, over every built-in
@@ -270,7 +306,8 @@ pub fn self_test(gpu: &Gpu, log: impl Fn(&str)) -> Result<Vec<SelfTestRow>, Stri
         let t = std::time::Instant::now();
         for setup in &all {
             for scheme in Scheme::ALL {
-                if fault.is_some_and(|f| !f.applies_to(scheme)) {
+                if fault.is_some_and(|f| !f.applies_to(scheme) || !f.applies_to_scene(&setup.scene))
+                {
                     continue;
                 }
                 row.cases += 1;
@@ -446,9 +483,10 @@ mod tests {
         let view = View::new(&setup.scene.camera, setup.scene.light(), 320, 240).unwrap();
         let mut checked = 0;
         for scheme in [Scheme::Lispsm, Scheme::Cascades, Scheme::Faces] {
-            let clean = crate::schemes::build(scheme, &view, &setup.scene, 1024, None).unwrap();
+            let zo = shadow_aliasing::maps::ClipDepth::ZeroToOne;
+            let clean = crate::schemes::build(scheme, &view, &setup.scene, 1024, None, zo).unwrap();
             let fault = Some(Fault::NPrimeDouble);
-            let f = crate::schemes::build(scheme, &view, &setup.scene, 1024, fault).unwrap();
+            let f = crate::schemes::build(scheme, &view, &setup.scene, 1024, fault, zo).unwrap();
             for ((m, mf), body) in clean.maps.iter().zip(&f.maps).zip(&clean.bodies) {
                 let n = m.reported.n_prime;
                 if !n.is_finite() {
@@ -486,29 +524,30 @@ mod tests {
         assert!(checked >= 3, "{checked}");
     }
 
-    /// Every map given to the wrong face: no map keeps its face.
+    /// Every map given to the wrong face: no map keeps its face, and the records the shader
+    /// selects by carry the wrong faces.
     #[test]
     fn wrong_face_moves_every_map() {
-        let m = |region| Map {
-            built: DMat4::IDENTITY,
-            gpu: DMat4::IDENTITY,
-            region,
-            near: 1.0,
-            far: 2.0,
-            reported: crate::schemes::Reported {
-                max_error_pixels: 1.0,
-                max_mx: 1.0,
-                max_mz: 1.0,
-                n_prime: f64::INFINITY,
-                texel_world: 1.0,
-                blend: (2.0, 2.0),
-            },
+        let setup = &crate::schemes::setups()[1];
+        let view = View::new(&setup.scene.camera, setup.scene.light(), 320, 240).unwrap();
+        let build = |fault| {
+            crate::schemes::build(
+                Scheme::Faces,
+                &view,
+                &setup.scene,
+                1024,
+                fault,
+                shadow_aliasing::maps::ClipDepth::ZeroToOne,
+            )
+            .unwrap()
         };
-        let mut maps = vec![m(0), m(1), m(1), m(4)];
-        let before: Vec<i32> = maps.iter().map(|m| m.region).collect();
-        Fault::selection(Some(Fault::WrongFace), &mut maps);
-        for (a, b) in before.iter().zip(&maps) {
-            assert_ne!(*a, b.region);
+        let (clean, wrong) = (build(None), build(Some(Fault::WrongFace)));
+        let faces: std::collections::BTreeSet<i32> = clean.maps.iter().map(|m| m.region).collect();
+        assert!(faces.len() >= 2, "{faces:?}");
+        for (a, b) in clean.maps.iter().zip(&wrong.maps) {
+            assert_eq!(a.record.face, a.region as u32);
+            assert_ne!(a.region, b.region);
+            assert_eq!(b.record.face, b.region as u32);
         }
     }
 

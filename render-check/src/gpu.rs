@@ -4,6 +4,8 @@
 
 use bytemuck::{Pod, Zeroable};
 use glam::{DMat4, DVec3};
+use shadow_aliasing::frame::{GpuShadowMap, SHADOW_WGSL};
+use std::ops::Range;
 
 /// What to do when no adapter exists: the message names the package.
 pub const NO_ADAPTER: &str = "no Vulkan adapter found: install a Vulkan driver; without a GPU, \
@@ -16,43 +18,52 @@ pub struct Gpu {
     queue: wgpu::Queue,
     /// The adapter's name, driver and backend.
     pub name: String,
-    shadow_pipeline: wgpu::RenderPipeline,
+    /// Shadow pipelines by `[reversed depth][first-surface maps]`.
+    shadow_pipelines: [[wgpu::RenderPipeline; 2]; 2],
     camera_pipeline: wgpu::RenderPipeline,
     shadow_bgl: wgpu::BindGroupLayout,
     camera_bgl: wgpu::BindGroupLayout,
 }
 
-/// One map as the GPU takes it.
-#[derive(Debug, Clone, Copy)]
-pub struct GpuPart {
-    /// Eye → light clip, depth in [0, 1].
-    pub matrix: DMat4,
-    /// -1: a depth range of the frustum; 0..5: a face (bottom, right, top, left, near, far).
-    pub region: f32,
-    /// Near end of the part's depth range.
-    pub near: f64,
-    /// Far end.
-    pub far: f64,
+/// What the shadow maps store and how the lookup keeps a lit surface from shadowing itself.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Lookup {
+    /// Second-depth maps (only faces turned away from the light are stored) with the hand-set
+    /// rasterizer bias [`SLOPE_BIAS`], [`CONSTANT_BIAS`]; no receiver-side bias.
+    SecondDepth,
+    /// Ordinary first-surface maps (every face stored, no rasterizer bias): the lookup point moved
+    /// by the record's normal offset (`FrameMap::bias`, the crate's module's `SA_NORMAL_OFFSET`).
+    FirstSurface,
 }
 
 /// A camera-pass frame.
 pub struct FrameInput<'a> {
-    /// Eye-space triangle vertices.
+    /// Triangle vertices relative to the upload origin (world axes).
     pub positions: &'a [DVec3],
-    /// Eye-space normal of each vertex's surface.
+    /// World-space normal of each vertex's surface.
     pub normals: &'a [DVec3],
     /// Surface id of each vertex.
     pub surface: &'a [u32],
-    /// Eye → clip (wgpu: depth [0, 1], NDC y up).
-    pub proj: DMat4,
-    /// Unit eye-space light direction (travel).
+    /// Relative position → camera clip (wgpu: depth [0, 1], NDC y up).
+    pub rel_to_clip: DMat4,
+    /// Relative position → eye space.
+    pub rel_to_eye: DMat4,
+    /// Unit world-space light direction (travel).
     pub light: DVec3,
-    /// 0 single, 1 z-partitions, 2 faces.
+    /// Unit eye-space light direction (travel).
+    pub light_eye: DVec3,
+    /// 0 single, 1 cascades, 2 faces.
     pub mode: u32,
     /// near, far, tan(θ), tan(θ)·aspect.
     pub frustum: [f64; 4],
-    /// The maps.
-    pub parts: &'a [GpuPart],
+    /// The maps' records as uploaded (one clip-depth convention for all).
+    pub maps: &'a [GpuShadowMap],
+    /// Per map: the vertex ranges drawn into it (culling).
+    pub draws: &'a [Vec<Range<u32>>],
+    /// Added (in `f32`) to a relative position before a map's matrix.
+    pub offset: DVec3,
+    /// The maps' kind and bias.
+    pub lookup: Lookup,
     /// Map resolution (square).
     pub res: u32,
     /// Screen size.
@@ -61,33 +72,39 @@ pub struct FrameInput<'a> {
     pub height: u32,
 }
 
+impl FrameInput<'_> {
+    /// Whether the maps use reversed depth (greater-equal).
+    fn reversed(&self) -> bool {
+        self.maps.first().is_some_and(|m| {
+            m.clip_depth
+                == GpuShadowMap::clip_depth_code(shadow_aliasing::maps::ClipDepth::Reversed)
+        })
+    }
+}
+
 /// What the camera pass wrote.
 pub struct FrameOutput {
-    /// Per pixel (row-major from the top): s·res, t·res, part, lit (0/1).
+    /// Per pixel (row-major from the top): s·res, t·res, map (the number of maps: none), lit (0/1).
     pub texel: Vec<[f32; 4]>,
     /// Surface id + 1 (0: sky).
     pub id: Vec<u32>,
     /// Shaded colour, RGBA8.
     pub color: Vec<[u8; 4]>,
-    /// Light clip depth z/w in the selected map, unclamped (inside its depth range: [0, 1];
-    /// −10³⁰ behind its centre of projection).
+    /// Depth (depth-attachment units) in the selected map, unclamped (inside its depth range:
+    /// [0, 1]; −10³⁰ behind its centre of projection or with no map).
     pub depth: Vec<f32>,
 }
 
 #[repr(C)]
 #[derive(Clone, Copy, Pod, Zeroable)]
-struct PartRaw {
-    m: [f32; 16],
-    region: [f32; 4],
-}
-
-#[repr(C)]
-#[derive(Clone, Copy, Pod, Zeroable)]
 struct GlobalsRaw {
-    proj: [f32; 16],
+    rel_to_clip: [f32; 16],
+    rel_to_eye: [f32; 16],
     light: [f32; 4],
+    light_eye: [f32; 4],
     frustum: [f32; 4],
     misc: [f32; 4],
+    offset: [f32; 4],
 }
 
 #[repr(C)]
@@ -98,15 +115,33 @@ struct Vertex {
     id: u32,
 }
 
-const SHADER: &str = include_str!("shaders.wgsl");
-/// Slope-scaled depth bias of the shadow pass (in units of the depth slope per texel) and its
-/// constant part (in units of the depth format's resolution at the primitive's depth).
+/// The shaders' source: the crate's WGSL module ([`SHADOW_WGSL`]) followed by render-check's
+/// own passes (`shaders.wgsl`), which select and look up the maps with the module's functions.
+pub fn shader_source() -> String {
+    format!("{SHADOW_WGSL}\n{}", include_str!("shaders.wgsl"))
+}
+
+/// Slope-scaled depth bias of the second-depth shadow pass (in units of the depth slope per
+/// texel) and its constant part (in units of the depth format's resolution at the primitive's
+/// depth); negated for reversed depth. First-surface maps have none (the crate's bias instead).
 pub const SLOPE_BIAS: f32 = 0.5;
 /// See [`SLOPE_BIAS`].
 pub const CONSTANT_BIAS: i32 = 16;
 
+/// The bias flag of `sa_visibility` (the crate's module) for a lookup.
+fn bias_flags(lookup: Lookup) -> f32 {
+    match lookup {
+        Lookup::SecondDepth => 0.0,
+        Lookup::FirstSurface => 1.0, // SA_NORMAL_OFFSET
+    }
+}
+
 fn mat(m: DMat4) -> [f32; 16] {
     m.as_mat4().to_cols_array()
+}
+
+fn vec4(v: DVec3, w: f32) -> [f32; 4] {
+    [v.x as f32, v.y as f32, v.z as f32, w]
 }
 
 impl Gpu {
@@ -142,7 +177,7 @@ impl Gpu {
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("shaders"),
-            source: wgpu::ShaderSource::Wgsl(SHADER.into()),
+            source: wgpu::ShaderSource::Wgsl(shader_source().into()),
         });
         let shadow_bgl = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("shadow"),
@@ -202,41 +237,60 @@ impl Gpu {
             bind_group_layouts: &[Some(&camera_bgl)],
             immediate_size: 0,
         });
-        let shadow_pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("shadow"),
-            layout: Some(&shadow_layout),
-            vertex: wgpu::VertexState {
-                module: &module,
-                entry_point: Some("vs_shadow"),
-                compilation_options: Default::default(),
-                buffers: &[Some(wgpu::VertexBufferLayout {
-                    array_stride: std::mem::size_of::<Vertex>() as u64,
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
-                })],
-            },
-            primitive: wgpu::PrimitiveState::default(),
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: wgpu::TextureFormat::Depth32Float,
-                depth_write_enabled: Some(true),
-                depth_compare: Some(wgpu::CompareFunction::Less),
-                stencil: Default::default(),
-                bias: wgpu::DepthBiasState {
-                    constant: CONSTANT_BIAS,
-                    slope_scale: SLOPE_BIAS,
+        // Second-depth maps draw back faces only (`fs_shadow`) with the hand-set rasterizer bias;
+        // first-surface maps draw every face, no fragment stage, no bias. Reversed depth compares
+        // greater-equal, its bias pushing away from the light (toward 0).
+        let shadow_pipeline = |reversed: bool, first_surface: bool| {
+            let sign = if reversed { -1 } else { 1 };
+            let bias = if first_surface {
+                wgpu::DepthBiasState::default()
+            } else {
+                wgpu::DepthBiasState {
+                    constant: sign * CONSTANT_BIAS,
+                    slope_scale: sign as f32 * SLOPE_BIAS,
                     clamp: 0.0,
+                }
+            };
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("shadow"),
+                layout: Some(&shadow_layout),
+                vertex: wgpu::VertexState {
+                    module: &module,
+                    entry_point: Some("vs_shadow"),
+                    compilation_options: Default::default(),
+                    buffers: &[Some(wgpu::VertexBufferLayout {
+                        array_stride: std::mem::size_of::<Vertex>() as u64,
+                        step_mode: wgpu::VertexStepMode::Vertex,
+                        attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
+                    })],
                 },
-            }),
-            multisample: Default::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &module,
-                entry_point: Some("fs_shadow"),
-                compilation_options: Default::default(),
-                targets: &[],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+                primitive: wgpu::PrimitiveState::default(),
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: wgpu::TextureFormat::Depth32Float,
+                    depth_write_enabled: Some(true),
+                    depth_compare: Some(if reversed {
+                        wgpu::CompareFunction::GreaterEqual
+                    } else {
+                        wgpu::CompareFunction::Less
+                    }),
+                    stencil: Default::default(),
+                    bias,
+                }),
+                multisample: Default::default(),
+                fragment: (!first_surface).then_some(wgpu::FragmentState {
+                    module: &module,
+                    entry_point: Some("fs_shadow"),
+                    compilation_options: Default::default(),
+                    targets: &[],
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+        };
+        let shadow_pipelines = [
+            [shadow_pipeline(false, false), shadow_pipeline(false, true)],
+            [shadow_pipeline(true, false), shadow_pipeline(true, true)],
+        ];
         let camera_pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some("camera"),
             layout: Some(&camera_layout),
@@ -280,7 +334,7 @@ impl Gpu {
             device,
             queue,
             name,
-            shadow_pipeline,
+            shadow_pipelines,
             camera_pipeline,
             shadow_bgl,
             camera_bgl,
@@ -309,22 +363,20 @@ impl Gpu {
         self.buffer(bytemuck::cast_slice(&v), wgpu::BufferUsages::VERTEX)
     }
 
-    /// Renders the maps into a depth array texture.
+    /// Renders the maps into a depth array texture: map i draws the vertex ranges `draws[i]`.
     fn shadow_maps(
         &self,
         enc: &mut wgpu::CommandEncoder,
         vb: &wgpu::Buffer,
-        n_vertices: u32,
-        parts: &[GpuPart],
-        res: u32,
-        light: DVec3,
+        f: &FrameInput,
     ) -> wgpu::Texture {
+        let reversed = f.reversed();
         let tex = self.device.create_texture(&wgpu::TextureDescriptor {
             label: Some("shadow maps"),
             size: wgpu::Extent3d {
-                width: res,
-                height: res,
-                depth_or_array_layers: parts.len() as u32,
+                width: f.res,
+                height: f.res,
+                depth_or_array_layers: f.maps.len() as u32,
             },
             mip_level_count: 1,
             sample_count: 1,
@@ -335,16 +387,16 @@ impl Gpu {
                 | wgpu::TextureUsages::COPY_SRC,
             view_formats: &[],
         });
-        for (i, p) in parts.iter().enumerate() {
-            let mut u = [0f32; 20];
-            u[..16].copy_from_slice(&mat(p.matrix));
-            u[16..].copy_from_slice(&[
-                light.x as f32,
-                light.y as f32,
-                light.z as f32,
+        let pipeline = &self.shadow_pipelines[usize::from(reversed)]
+            [usize::from(f.lookup == Lookup::FirstSurface)];
+        for (i, m) in f.maps.iter().enumerate() {
+            let mut u = m.to_bytes().to_vec();
+            u.extend_from_slice(bytemuck::cast_slice(&vec4(
+                f.light,
                 crate::scene::FACING as f32,
-            ]);
-            let ub = self.buffer(bytemuck::cast_slice(&u), wgpu::BufferUsages::UNIFORM);
+            )));
+            u.extend_from_slice(bytemuck::cast_slice(&vec4(f.offset, 0.0)));
+            let ub = self.buffer(&u, wgpu::BufferUsages::UNIFORM);
             let bg = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: None,
                 layout: &self.shadow_bgl,
@@ -365,7 +417,7 @@ impl Gpu {
                 depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                     view: &view,
                     depth_ops: Some(wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(1.0),
+                        load: wgpu::LoadOp::Clear(if reversed { 0.0 } else { 1.0 }),
                         store: wgpu::StoreOp::Store,
                     }),
                     stencil_ops: None,
@@ -374,10 +426,12 @@ impl Gpu {
                 occlusion_query_set: None,
                 multiview_mask: None,
             });
-            pass.set_pipeline(&self.shadow_pipeline);
+            pass.set_pipeline(pipeline);
             pass.set_bind_group(0, &bg, &[]);
             pass.set_vertex_buffer(0, vb.slice(..));
-            pass.draw(0..n_vertices, 0..1);
+            for r in f.draws.get(i).map_or(&[][..], Vec::as_slice) {
+                pass.draw(r.clone(), 0..1);
+            }
         }
         tex
     }
@@ -491,15 +545,8 @@ impl Gpu {
     fn render_maps_inner(&self, f: &FrameInput) -> Result<Vec<f32>, String> {
         let vb = self.vertices(f);
         let mut enc = self.device.create_command_encoder(&Default::default());
-        let tex = self.shadow_maps(
-            &mut enc,
-            &vb,
-            f.positions.len() as u32,
-            f.parts,
-            f.res,
-            f.light,
-        );
-        let layers = f.parts.len() as u32;
+        let tex = self.shadow_maps(&mut enc, &vb, f);
+        let layers = f.maps.len() as u32;
         let (buf, row) = self.copy_out(
             &mut enc,
             &tex,
@@ -519,7 +566,7 @@ impl Gpu {
     /// # Errors
     /// A GPU error.
     pub fn render(&self, f: &FrameInput) -> Result<FrameOutput, String> {
-        if f.parts.is_empty() || f.positions.is_empty() {
+        if f.maps.is_empty() || f.positions.is_empty() {
             return Err("nothing to render (no map or no triangle)".into());
         }
         self.scoped(|| self.render_inner(f))
@@ -528,44 +575,23 @@ impl Gpu {
     fn render_inner(&self, f: &FrameInput) -> Result<FrameOutput, String> {
         let vb = self.vertices(f);
         let mut enc = self.device.create_command_encoder(&Default::default());
-        let maps = self.shadow_maps(
-            &mut enc,
-            &vb,
-            f.positions.len() as u32,
-            f.parts,
-            f.res,
-            f.light,
-        );
+        let maps = self.shadow_maps(&mut enc, &vb, f);
         let maps_view = maps.create_view(&wgpu::TextureViewDescriptor {
             dimension: Some(wgpu::TextureViewDimension::D2Array),
             ..Default::default()
         });
         let globals = GlobalsRaw {
-            proj: mat(f.proj),
-            light: [
-                f.light.x as f32,
-                f.light.y as f32,
-                f.light.z as f32,
-                f.mode as f32,
-            ],
+            rel_to_clip: mat(f.rel_to_clip),
+            rel_to_eye: mat(f.rel_to_eye),
+            light: vec4(f.light, crate::scene::FACING as f32),
+            light_eye: vec4(f.light_eye, f.mode as f32),
             frustum: f.frustum.map(|x| x as f32),
-            misc: [
-                f.res as f32,
-                f.parts.len() as f32,
-                crate::scene::FACING as f32,
-                0.0,
-            ],
+            misc: [f.res as f32, f.maps.len() as f32, bias_flags(f.lookup), 0.0],
+            offset: vec4(f.offset, 0.0),
         };
-        let parts: Vec<PartRaw> = f
-            .parts
-            .iter()
-            .map(|p| PartRaw {
-                m: mat(p.matrix),
-                region: [p.region, p.near as f32, p.far as f32, 0.0],
-            })
-            .collect();
+        let records: Vec<u8> = f.maps.iter().flat_map(|m| m.to_bytes()).collect();
         let gb = self.buffer(bytemuck::bytes_of(&globals), wgpu::BufferUsages::UNIFORM);
-        let pb = self.buffer(bytemuck::cast_slice(&parts), wgpu::BufferUsages::STORAGE);
+        let pb = self.buffer(&records, wgpu::BufferUsages::STORAGE);
         let bg = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: None,
             layout: &self.camera_bgl,

@@ -5,12 +5,13 @@
 //! `render-check --help` lists the options.
 
 use render_check::faults::{self_test, Fault};
-use render_check::gpu::Gpu;
+use render_check::gpu::{Gpu, Lookup};
 use render_check::images::{close_up, error_panels, shaded, Crop};
-use render_check::run::{run_case, run_full, Sizes, Summary};
+use render_check::run::{run_case, run_full, Render, Sizes, Summary};
 use render_check::scene::Scene;
 use render_check::schemes::{setups, Scheme, Setup};
 use render_check::targets::violations;
+use shadow_aliasing::maps::ClipDepth;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -31,16 +32,22 @@ const EDGE_RES: u32 = 512;
 fn help() -> String {
     let mut s = String::from(
         "render-check [--out DIR] [--scene FILE.json | --setup NAME] [--width W] [--height H]\n\
-         \x20            [--res N] [--frames N] [--fault NAME] [--gallery]\n\
+         \x20            [--res N] [--frames N] [--fault NAME] [--gallery] [--reversed]\n\
+         \x20            [--first-surface] [--no-cull]\n\
          render-check --self-test\n\n\
          --out DIR        where the images and summary.json go (default render-check-out)\n\
          --scene FILE     one scene file (docs/rendered.md has the format) instead of the built-in set\n\
          --setup NAME     only this built-in set-up (overhead, tilted_45, behind_5, front_5,\n\
-         \x20                grazing_10, parallel_1, level_overhead, thin_casters)\n\
+         \x20                grazing_10, parallel_1, level_overhead, thin_casters, far_1e5)\n\
          --width, --height  screen size (default 640 x 480)\n\
          --res N          texels per map side, overriding the scene's\n\
          --frames N       frames of the shimmer test (default 64)\n\
          --gallery        also write <setup>_<scheme>_edge.png: a shadow edge at 512^2 texels\n\
+         --reversed       maps in reversed depth (1 nearest the light), compared greater-equal\n\
+         --first-surface  ordinary first-surface maps looked up at the crate's normal offset\n\
+         \x20                (default: second-depth maps with a hand-set rasterizer bias)\n\
+         --no-cull        draw every object into every map (default: culled by each map's\n\
+         \x20                casters' volume)\n\
          --self-test      the clean build and every fault over the built-in set-ups (320 x 240):\n\
          \x20                exits 0 only when the clean build meets every target and every fault\n\
          \x20                violates at least one\n\
@@ -65,6 +72,7 @@ fn real_main() -> Result<(), String> {
         frames: 64,
         shimmer_points: 4000,
         fault: None,
+        render: Render::DEFAULT,
     };
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
@@ -86,6 +94,9 @@ fn real_main() -> Result<(), String> {
             "--frames" => sizes.frames = num(val("--frames")?, "--frames")? as usize,
             "--fault" => sizes.fault = Some(Fault::parse(&val("--fault")?)?),
             "--gallery" => gallery = true,
+            "--reversed" => sizes.render.clip_depth = ClipDepth::Reversed,
+            "--first-surface" => sizes.render.lookup = Lookup::FirstSurface,
+            "--no-cull" => sizes.render.cull = false,
             "--self-test" => self_check = true,
             "--help" | "-h" => {
                 print!("{}", help());

@@ -1,11 +1,15 @@
 //! One case (set-up × scheme) end to end, the shimmer test, and summary.json.
 
 use crate::analysis::{analyse, pixel_point, Analysis, Measured};
-use crate::gpu::{FrameInput, Gpu, GpuPart};
+use crate::faults::Fault;
+use crate::gpu::{FrameInput, Gpu, Lookup};
 use crate::scene::{Mesh, Scene, FACING};
 use crate::schemes::{build, Built, Scheme, Select, View};
 use glam::{DMat4, DVec3};
 use serde::Serialize;
+use shadow_aliasing::frame::GpuShadowMap;
+use shadow_aliasing::maps::ClipDepth;
+use std::ops::Range;
 
 /// One row of summary.json (docs/rendered.md lists the fields; [`crate::targets`] the limits).
 #[derive(Debug, Clone, Serialize)]
@@ -55,6 +59,30 @@ pub struct Sizes {
     /// One deliberate fault injected into every frame built ([`crate::faults::Fault`]; the check
     /// that the targets can fail), or none.
     pub fault: Option<crate::faults::Fault>,
+    /// How the maps are uploaded, culled and looked up.
+    pub render: Render,
+}
+
+/// How a run uploads, culls and looks up the maps.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Render {
+    /// The records' clip-depth convention: [`ClipDepth::ZeroToOne`] (the shadow pass compares
+    /// less, the lookup less-equal) or [`ClipDepth::Reversed`] (greater-equal both).
+    pub clip_depth: ClipDepth,
+    /// Second-depth maps with the hand-set rasterizer bias, or first-surface maps with the
+    /// crate's normal offset.
+    pub lookup: Lookup,
+    /// Whether each object is drawn only into the maps whose casters' volume it may meet.
+    pub cull: bool,
+}
+
+impl Render {
+    /// What `render-check` does unless told otherwise: depth [0, 1], second-depth maps, culling.
+    pub const DEFAULT: Render = Render {
+        clip_depth: ClipDepth::ZeroToOne,
+        lookup: Lookup::SecondDepth,
+        cull: true,
+    };
 }
 
 /// A case's full result.
@@ -69,43 +97,27 @@ pub struct CaseResult {
     pub diagnostics: String,
 }
 
-/// The mesh in eye space.
-pub struct EyeMesh {
-    /// Triangle vertices, eye space.
+/// The mesh as uploaded: positions relative to the upload origin (the `f64` difference, rounded
+/// once to `f32` on upload), world-space normals.
+pub struct UploadMesh {
+    /// Triangle vertices relative to the origin.
     pub positions: Vec<DVec3>,
-    /// Each vertex's surface normal, eye space.
+    /// Each vertex's surface normal, world space.
     pub normals: Vec<DVec3>,
 }
 
-impl EyeMesh {
-    /// Transforms `mesh` by `world_to_eye` (f64).
-    pub fn new(mesh: &Mesh, world_to_eye: DMat4) -> Self {
+impl UploadMesh {
+    /// `mesh` relative to `origin`.
+    pub fn new(mesh: &Mesh, origin: DVec3) -> Self {
         Self {
-            positions: mesh
-                .positions
-                .iter()
-                .map(|&p| world_to_eye.transform_point3(p))
-                .collect(),
+            positions: mesh.positions.iter().map(|&p| p - origin).collect(),
             normals: mesh
                 .surface
                 .iter()
-                .map(|&s| world_to_eye.transform_vector3(mesh.surfaces[s as usize].normal))
+                .map(|&s| mesh.surfaces[s as usize].normal)
                 .collect(),
         }
     }
-}
-
-fn gpu_parts(built: &Built) -> Vec<GpuPart> {
-    built
-        .maps
-        .iter()
-        .map(|m| GpuPart {
-            matrix: m.gpu,
-            region: m.region as f32,
-            near: m.near,
-            far: m.far,
-        })
-        .collect()
 }
 
 fn mode(s: Select) -> u32 {
@@ -116,27 +128,67 @@ fn mode(s: Select) -> u32 {
     }
 }
 
-fn input<'a>(
-    view: &View,
-    mesh: &'a Mesh,
-    eye: &'a EyeMesh,
-    built: &Built,
-    parts: &'a [GpuPart],
-    res: u32,
-    sizes: Sizes,
-) -> FrameInput<'a> {
-    FrameInput {
-        positions: &eye.positions,
-        normals: &eye.normals,
-        surface: &mesh.surface,
-        proj: view.proj,
-        light: view.light_eye,
-        mode: mode(built.select),
-        frustum: view.frustum_params(),
-        parts,
-        res,
-        width: sizes.width,
-        height: sizes.height,
+/// Per map, the vertex ranges of the objects drawn into it.
+pub fn draws(built: &Built, mesh: &Mesh, sizes: Sizes) -> Vec<Vec<Range<u32>>> {
+    let cull = Fault::cull(sizes.fault, sizes.render.cull);
+    built
+        .maps
+        .iter()
+        .map(|m| {
+            mesh.objects
+                .iter()
+                .filter(|o| m.draws(o.min, o.max, cull))
+                .map(|o| o.vertices.clone())
+                .collect()
+        })
+        .collect()
+}
+
+/// One frame's upload: the records, the draws and the mesh.
+pub struct Upload {
+    records: Vec<GpuShadowMap>,
+    draws: Vec<Vec<Range<u32>>>,
+    mesh: UploadMesh,
+}
+
+impl Upload {
+    /// The upload of `built` with `mesh`.
+    pub fn new(built: &Built, mesh: &Mesh, sizes: Sizes) -> Self {
+        Self {
+            records: built.maps.iter().map(|m| m.record).collect(),
+            draws: draws(built, mesh, sizes),
+            mesh: UploadMesh::new(mesh, built.origin),
+        }
+    }
+
+    /// The GPU's frame.
+    pub fn input<'a>(
+        &'a self,
+        view: &View,
+        mesh: &'a Mesh,
+        built: &Built,
+        res: u32,
+        sizes: Sizes,
+    ) -> FrameInput<'a> {
+        let rel_to_eye = view.world_to_eye * DMat4::from_translation(built.origin);
+        FrameInput {
+            positions: &self.mesh.positions,
+            normals: &self.mesh.normals,
+            surface: &mesh.surface,
+            rel_to_clip: view.proj * rel_to_eye,
+            rel_to_eye,
+            light: view.light_world,
+            light_eye: view.light_eye,
+            mode: mode(built.select),
+            frustum: view.frustum_params(),
+            maps: &self.records,
+            draws: &self.draws,
+            offset: built.offset,
+            lookup: sizes.render.lookup,
+            res,
+            width: sizes.width,
+            height: sizes.height,
+        }
     }
 }
 
@@ -154,17 +206,23 @@ pub fn run_case(
     let res = sizes.res.unwrap_or(scene.map_resolution);
     let view = View::new(&scene.camera, scene.light(), sizes.width, sizes.height)?;
     let mesh = Mesh::build(scene);
-    let built = build(scheme, &view, scene, res, sizes.fault)?;
-    let eye = EyeMesh::new(&mesh, view.world_to_eye);
-    let parts = gpu_parts(&built);
-    let out = gpu.render(&input(&view, &mesh, &eye, &built, &parts, res, sizes))?;
+    let built = build(
+        scheme,
+        &view,
+        scene,
+        res,
+        sizes.fault,
+        sizes.render.clip_depth,
+    )?;
+    let up = Upload::new(&built, &mesh, sizes);
+    let out = gpu.render(&up.input(&view, &mesh, &built, res, sizes))?;
     let a = analyse(
         &out,
         &view,
         scene,
         &mesh,
         &built,
-        scheme,
+        (scheme, sizes.render.lookup),
         res,
         sizes.width,
         sizes.height,
@@ -240,23 +298,22 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
     let texel = 2.0 * r / f64::from(res - 2);
     let step = 0.37 * texel;
     // Sample points from frame 0.
-    let built0 = build(scheme, &view0, scene, res, sizes.fault)?;
-    let eye0 = EyeMesh::new(&mesh, view0.world_to_eye);
-    let parts0 = gpu_parts(&built0);
-    let out0 = gpu.render(&input(&view0, &mesh, &eye0, &built0, &parts0, res, sizes))?;
+    let depth_conv = sizes.render.clip_depth;
+    let built0 = build(scheme, &view0, scene, res, sizes.fault, depth_conv)?;
+    let up0 = Upload::new(&built0, &mesh, sizes);
+    let out0 = gpu.render(&up0.input(&view0, &mesh, &built0, res, sizes))?;
     let points = edge_points(&out0, &view0, scene, &mesh, sizes)?;
     let mut prev: Option<Vec<Option<bool>>> = None;
     let (mut changed, mut counted) = (0usize, 0usize);
     for i in 0..sizes.frames {
         let s = moved(scene, i, step);
         let view = View::new(&s.camera, s.light(), sizes.width, sizes.height)?;
-        let built = build(scheme, &view, &s, res, sizes.fault)?;
-        let eye = EyeMesh::new(&mesh, view.world_to_eye);
-        let parts = gpu_parts(&built);
-        let depth = gpu.render_maps(&input(&view, &mesh, &eye, &built, &parts, res, sizes))?;
+        let built = build(scheme, &view, &s, res, sizes.fault, depth_conv)?;
+        let up = Upload::new(&built, &mesh, sizes);
+        let depth = gpu.render_maps(&up.input(&view, &mesh, &built, res, sizes))?;
         let states: Vec<Option<bool>> = points
             .iter()
-            .map(|&(p, n)| lookup(&view, &built, &depth, res, p, n))
+            .map(|&(p, n)| lookup(&view, &built, &depth, res, sizes.render, p, n))
             .collect();
         if let Some(prev) = &prev {
             for (a, b) in prev.iter().zip(&states) {
@@ -361,13 +418,15 @@ pub fn run_full(
     Ok(r)
 }
 
-/// The shader's lookup of a world point in the read-back maps (f64), or `None` outside the view
+/// The shader's lookup of a world point in the read-back maps (f64: the normal offset of
+/// first-surface maps, the clip-depth convention's comparison), or `None` outside the view
 /// frustum or every map.
 fn lookup(
     view: &View,
     built: &Built,
     depth: &[f32],
     res: u32,
+    render: Render,
     pw: DVec3,
     nw: DVec3,
 ) -> Option<bool> {
@@ -385,8 +444,13 @@ fn lookup(
             .unwrap_or(built.maps.len() - 1),
         Select::Faces => return None,
     };
-    let m = built.maps[part].gpu;
-    let h = m * p.extend(1.0);
+    let map = &built.maps[part];
+    let offset = match render.lookup {
+        Lookup::SecondDepth => 0.0,
+        Lookup::FirstSurface => f64::from(map.record.normal_offset),
+    };
+    let q = view.world_to_eye.transform_point3(pw + nw * offset);
+    let h = map.gpu * q.extend(1.0);
     if h.w <= 0.0 {
         return None;
     }
@@ -397,7 +461,13 @@ fn lookup(
     let r = f64::from(res);
     let (ix, iy) = ((s * r).floor() as usize, ((1.0 - t) * r).floor() as usize);
     let stored = f64::from(depth[part * (res * res) as usize + iy * res as usize + ix]);
+    // Depth [0, 1] of `map.gpu`; reversed depth is 1 minus it.
     let d = (h.z / h.w).clamp(0.0, 1.0);
+    let lit = if render.clip_depth == ClipDepth::Reversed {
+        1.0 - d >= stored
+    } else {
+        d <= stored
+    };
     let facing = nw.dot(-view.light_world) > FACING;
-    Some(facing && d <= stored)
+    Some(facing && lit)
 }

@@ -243,6 +243,21 @@ impl Scene {
         }
     }
 
+    /// The scene moved by `offset`: every box and the camera (the ground stays at `ground_y`
+    /// when `offset.y` is 0, and is drawn centred below the camera).
+    pub fn translated(&self, offset: DVec3) -> Self {
+        let mut s = self.clone();
+        let add = |a: [f64; 3]| (v(a) + offset).to_array();
+        for b in &mut s.boxes {
+            b.min = add(b.min);
+            b.max = add(b.max);
+        }
+        s.camera.eye = add(s.camera.eye);
+        s.camera.target = add(s.camera.target);
+        s.ground_y += offset.y;
+        s
+    }
+
     /// The thin-caster scene (also `render-check/scenes/thin_casters.json`): under a sun 20°
     /// above the horizon, a tower 40 units tall and 1 wide outside the view whose shadow, 110
     /// units long and 1 wide, crosses the visible ground; three poles 0.2 wide leaning 10° (their
@@ -292,6 +307,17 @@ pub struct Surface {
     pub point: DVec3,
 }
 
+/// One object of the mesh: the ground or one box, its vertices contiguous.
+#[derive(Debug, Clone)]
+pub struct Object {
+    /// Its vertices in [`Mesh::positions`].
+    pub vertices: std::ops::Range<u32>,
+    /// Its world-space bounds (smallest corner).
+    pub min: DVec3,
+    /// Its world-space bounds (largest corner).
+    pub max: DVec3,
+}
+
 /// The scene's triangles (world space), one surface id per face (id 0 is the ground; the GPU
 /// target stores id + 1, 0 meaning sky).
 pub struct Mesh {
@@ -301,6 +327,9 @@ pub struct Mesh {
     pub surface: Vec<u32>,
     /// The surfaces.
     pub surfaces: Vec<Surface>,
+    /// The objects, the ground first and then each box in the scene's order (what culling
+    /// decides about).
+    pub objects: Vec<Object>,
 }
 
 impl Mesh {
@@ -311,6 +340,7 @@ impl Mesh {
             positions: Vec::new(),
             surface: Vec::new(),
             surfaces: Vec::new(),
+            objects: Vec::new(),
         };
         let y = scene.ground_y;
         let e = scene.ground_half_extent;
@@ -335,7 +365,13 @@ impl Mesh {
                 m.quad(q, 0);
             }
         }
+        m.objects.push(Object {
+            vertices: 0..m.positions.len() as u32,
+            min: DVec3::new(c[0] - e, y, c[2] - e),
+            max: DVec3::new(c[0] + e, y, c[2] + e),
+        });
         for b in &scene.boxes {
+            let first = m.positions.len() as u32;
             let (lo, hi) = (v(b.min), v(b.max));
             let corner = |x: bool, y: bool, z: bool| {
                 b.place(DVec3::new(
@@ -420,6 +456,12 @@ impl Mesh {
                 });
                 m.quad(q, id);
             }
+            let (min, max) = b.world_bounds();
+            m.objects.push(Object {
+                vertices: first..m.positions.len() as u32,
+                min,
+                max,
+            });
         }
         m
     }

@@ -11,7 +11,8 @@ use crate::scene::{Camera, Scene};
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
 use shadow_aliasing::frame::{
-    frame, Aabb, Bound, Camera as FrameCamera, CascadeSplits, FrameInput, FrameScheme,
+    frame, Aabb, Bound, Camera as FrameCamera, CascadeSplits, CullVolume, FrameInput, FrameScheme,
+    GpuShadowMap,
 };
 use shadow_aliasing::maps::faces::{Face, FaceWarp};
 use shadow_aliasing::maps::{ClipDepth, TsmOptions, TsmSearch, WarpRule};
@@ -84,14 +85,23 @@ pub enum Select {
     Faces,
 }
 
-/// One map: its eye → light clip matrix (OpenGL depth, as built) and the GPU's (the same map
-/// with depth [0, 1]), how the shader selects it, and what the frame reported for it.
+/// One map: its eye → light clip matrix (OpenGL depth, as built), the same map with depth
+/// [0, 1], the record the GPU takes, how the shader selects it, what the frame reported for it
+/// and its culling volumes.
 #[derive(Debug, Clone, Copy)]
 pub struct Map {
     /// As built (eye → light clip, OpenGL depth): what the measurement takes.
     pub built: DMat4,
-    /// What the GPU renders with.
+    /// The same map, eye → light clip with depth [0, 1]: what the analysis looks up with.
     pub gpu: DMat4,
+    /// The record uploaded (`FrameMap::gpu_relative` for the build's origin and clip-depth
+    /// convention; its matrix, split and face faulted where a fault changes them): the shader's
+    /// map, selected and looked up by the crate's WGSL module.
+    pub record: GpuShadowMap,
+    /// `FrameMap::casters_volume`: what culling draws into the map.
+    pub casters: CullVolume,
+    /// `FrameMap::receivers_volume` (the cull-tight fault cuts the casters' volume by it).
+    pub receivers: CullVolume,
     /// −1 for a depth range, else the face (bottom, right, top, left, near, far).
     pub region: i32,
     /// Depth range covered.
@@ -120,11 +130,43 @@ pub struct Reported {
     pub blend: (f64, f64),
 }
 
+/// Which objects each map draws.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Cull {
+    /// Every object into every map.
+    Off,
+    /// An object only into the maps whose casters' volume it may meet
+    /// (`CullVolume::intersects_aabb`).
+    Casters,
+    /// A fault: the casters' volume cut by the receivers' volume (the view slice), which drops
+    /// the casters outside the view.
+    Tight,
+}
+
+impl Map {
+    /// Whether the world box `min`..`max` is drawn into this map under `cull`.
+    pub fn draws(&self, min: DVec3, max: DVec3, cull: Cull) -> bool {
+        let Ok(b) = Aabb::new(min, max) else {
+            return true;
+        };
+        match cull {
+            Cull::Off => true,
+            Cull::Casters => self.casters.intersects_aabb(&b),
+            Cull::Tight => self.casters.intersects_aabb(&b) && self.receivers.intersects_aabb(&b),
+        }
+    }
+}
+
 /// A scheme built for one frame.
 #[derive(Debug, Clone)]
 pub struct Built {
     /// The maps.
     pub maps: Vec<Map>,
+    /// The upload origin: vertex positions go to the GPU relative to it (the camera's position).
+    pub origin: DVec3,
+    /// Added to a relative position (in `f32`) before a map's matrix: 0 on the relative path;
+    /// the origin for the plain world matrix (a fault).
+    pub offset: DVec3,
     /// How fragments choose.
     pub select: Select,
     /// Each map's focus body as the frame returned it (`FrameMap::body`, eye space): where the
@@ -145,6 +187,8 @@ pub struct View {
     pub light_eye: DVec3,
     /// Unit light direction, world space.
     pub light_world: DVec3,
+    /// The camera's position, world space: the upload origin.
+    pub origin: DVec3,
 }
 
 impl View {
@@ -180,6 +224,7 @@ impl View {
             frustum,
             light_eye: world_to_eye.transform_vector3(light_world).normalize(),
             light_world,
+            origin: DVec3::from_array(camera.eye),
         })
     }
 
@@ -281,8 +326,13 @@ pub fn build(
     scene: &Scene,
     res: u32,
     fault: Option<Fault>,
+    clip_depth: ClipDepth,
 ) -> Result<Built, String> {
     let e = |e: shadow_aliasing::Error| format!("{}: {e}", scheme_.name());
+    let origin = view.origin;
+    let plain = fault == Some(Fault::PlainWorld);
+    // What a relative position, as the GPU holds it, is in world space: origin + position.
+    let rel_to_eye = view.world_to_eye * DMat4::from_translation(origin);
     let fr = &view.frustum;
     let (receivers, boxes) = bounds(scene)?;
     let camera = FrameCamera::new(
@@ -315,13 +365,26 @@ pub fn build(
         .iter()
         .map(|m| {
             let clean = m.shadow.matrix();
+            let mut record = if plain {
+                m.gpu(clip_depth)
+            } else {
+                m.gpu_relative(origin, clip_depth)
+            };
             let (built, gpu) = match fault.and_then(|x| x.matrix(m, clean, view)) {
-                Some(b) => (b, Fault::gpu_matrix(b)),
+                Some(b) => {
+                    record.world_to_clip = (clip_depth.convert(&b) * rel_to_eye)
+                        .as_mat4()
+                        .to_cols_array_2d();
+                    (b, Fault::gpu_matrix(b))
+                }
                 None => (clean, m.shadow.with_clip_depth(ClipDepth::ZeroToOne)),
             };
             Map {
                 built,
                 gpu,
+                record,
+                casters: *m.casters_volume(),
+                receivers: *m.receivers_volume(),
                 region: m.face.map_or(-1, face_id),
                 near: m.split.0,
                 far: m.split.1,
@@ -336,7 +399,13 @@ pub fn build(
             }
         })
         .collect();
-    Fault::selection(fault, &mut maps);
+    if Fault::selection(fault, &mut maps) {
+        // The shader selects by the record: give it the faulted ranges and faces.
+        for m in &mut maps {
+            m.record.split = [m.near as f32, m.far as f32];
+            m.record.face = u32::try_from(m.region).unwrap_or(GpuShadowMap::NO_FACE);
+        }
+    }
     let select = match scheme_ {
         Scheme::Cascades | Scheme::StableCascades => Select::Depth,
         Scheme::Faces => Select::Faces,
@@ -345,6 +414,8 @@ pub fn build(
     let bodies = f.maps().iter().map(|m| m.body().to_vec()).collect();
     Ok(Built {
         maps,
+        origin,
+        offset: if plain { origin } else { DVec3::ZERO },
         select,
         bodies,
     })
@@ -381,7 +452,10 @@ fn rotate_toward(v: DVec3, u: DVec3, deg: f64) -> DVec3 {
 ///   M_z over the ground are compared with Eq 7–10 (`analysis`);
 ///
 /// and `thin_casters`, the thin-caster scene ([`Scene::thin_casters`], also
-/// `render-check/scenes/thin_casters.json`) under its own 20° sun.
+/// `render-check/scenes/thin_casters.json`) under its own 20° sun, and `far_1e5`, the same scene
+/// moved 10⁵ from the world origin ([`FAR_OFFSET`]): drawn through the relative upload path it
+/// meets every target as at the origin, and the plain `f32` world matrix fails there (the fault
+/// suite's `plain-world`).
 pub fn setups() -> Vec<Setup> {
     let base = Scene::builtin();
     let cam = base.camera;
@@ -424,5 +498,13 @@ pub fn setups() -> Vec<Setup> {
         name: "thin_casters".into(),
         scene: Scene::thin_casters(),
     });
+    out.push(Setup {
+        name: "far_1e5".into(),
+        scene: Scene::thin_casters().translated(FAR_OFFSET),
+    });
     out
 }
+
+/// The offset of the set-up `far_1e5` from the thin-caster scene: 10⁵ from the world origin,
+/// horizontally.
+pub const FAR_OFFSET: DVec3 = DVec3::new(6e4, 0.0, -8e4);

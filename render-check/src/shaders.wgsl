@@ -1,28 +1,35 @@
-// render-check's two passes. Positions arrive in eye space (transformed on the CPU in f64), so
-// the interpolated position is accurate near the camera where pixels are smallest.
-
-struct Part {
-    // Eye → light clip, depth in [0, 1] (pulled back to cover the casters).
-    m: mat4x4<f32>,
-    // x: region (-1 = frustum depth range, 0..5 = frustum face), y: near, z: far.
-    region: vec4<f32>,
-};
+// render-check's two passes. `gpu::shader_source` puts the crate's module
+// (shadow_aliasing::frame::SHADOW_WGSL: the GpuShadowMap record and the sa_ lookup functions)
+// before this text: the maps are selected and looked up by the crate's own WGSL.
+//
+// Positions arrive relative to the upload origin (the camera's position), the f64 difference
+// rounded once, and the maps' records are FrameMap::gpu_relative's; `offset` is added to a
+// position before a map's matrix (0 on that path; the plain-world fault sets it to the origin).
 
 struct Globals {
-    proj: mat4x4<f32>,
-    // xyz: light direction (eye space, unit, the way light travels); w: selection mode
-    // (0 single, 1 z-partitions, 2 faces).
+    // Relative position -> camera clip (wgpu: depth [0, 1], NDC y up).
+    rel_to_clip: mat4x4<f32>,
+    // Relative position -> eye space (view depth, face choice).
+    rel_to_eye: mat4x4<f32>,
+    // xyz: light direction (world axes, unit, the way light travels); w: facing threshold.
     light: vec4<f32>,
+    // xyz: the light direction in eye space; w: selection mode (0 single, 1 cascades, 2 faces).
+    light_eye: vec4<f32>,
     // near, far, tan(half fov y), tan(half fov y) * aspect.
     frustum: vec4<f32>,
-    // x: map resolution, y: number of parts, z: facing threshold.
+    // x: map resolution, y: number of maps, z: sa_visibility's bias flags (0: second-depth maps,
+    // SA_NORMAL_OFFSET: first-surface maps with the crate's normal offset).
     misc: vec4<f32>,
+    // xyz: added to a position before a map's matrix.
+    offset: vec4<f32>,
 };
 
 struct ShadowUniform {
-    m: mat4x4<f32>,
-    // xyz: light direction (eye space, travel); w: facing threshold.
+    map: GpuShadowMap,
+    // xyz: light direction (world axes, travel); w: facing threshold.
     light: vec4<f32>,
+    // xyz: added to a position before the map's matrix.
+    offset: vec4<f32>,
 };
 
 @group(0) @binding(0) var<uniform> su: ShadowUniform;
@@ -35,14 +42,15 @@ struct SOut {
 @vertex
 fn vs_shadow(@location(0) pos: vec3<f32>, @location(1) normal: vec3<f32>) -> SOut {
     var o: SOut;
-    o.clip = su.m * vec4<f32>(pos, 1.0);
+    o.clip = su.map.world_to_clip * vec4<f32>(pos + su.offset.xyz, 1.0);
     o.facing = dot(normal, -su.light.xyz);
     return o;
 }
 
 // Second-depth shadow maps (Wang & Molnar 1994): only faces turned away from the light (or
 // edge-on) are stored, so a lit face is compared with the far side of its own closed box and
-// never with itself; faces turned away are dark by the facing test anyway.
+// never with itself; faces turned away are dark by the facing test anyway. (First-surface maps
+// have no fragment stage: every face is stored.)
 @fragment
 fn fs_shadow(v: SOut) {
     if (v.facing > su.light.w) {
@@ -51,124 +59,84 @@ fn fs_shadow(v: SOut) {
 }
 
 @group(0) @binding(0) var<uniform> g: Globals;
-@group(0) @binding(1) var<storage, read> parts: array<Part>;
+@group(0) @binding(1) var<storage, read> maps: array<GpuShadowMap>;
 @group(0) @binding(2) var shadow_maps: texture_depth_2d_array;
+
+// The four functions the crate's module reads the maps through.
+fn sa_map(i: u32) -> GpuShadowMap {
+    return maps[i];
+}
+
+fn sa_map_count() -> u32 {
+    return u32(g.misc.y);
+}
+
+fn sa_map_resolution() -> f32 {
+    return g.misc.x;
+}
+
+fn sa_stored_depth(i: u32, texel: vec2<i32>) -> f32 {
+    return textureLoad(shadow_maps, texel, i32(i), 0);
+}
 
 struct VOut {
     @builtin(position) clip: vec4<f32>,
-    @location(0) eye: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-    @location(2) @interpolate(flat) id: u32,
+    @location(0) rel: vec3<f32>,
+    @location(1) eye: vec3<f32>,
+    @location(2) normal: vec3<f32>,
+    @location(3) @interpolate(flat) id: u32,
 };
 
 @vertex
 fn vs_camera(@location(0) pos: vec3<f32>, @location(1) normal: vec3<f32>, @location(2) id: u32) -> VOut {
     var o: VOut;
-    o.clip = g.proj * vec4<f32>(pos, 1.0);
-    o.eye = pos;
+    o.clip = g.rel_to_clip * vec4<f32>(pos, 1.0);
+    o.rel = pos;
+    o.eye = (g.rel_to_eye * vec4<f32>(pos, 1.0)).xyz;
     o.normal = normal;
     o.id = id;
     return o;
 }
 
 struct FOut {
+    // s·res, t·res in the selected map, the map (the number of maps: none), lit (0/1).
     @location(0) texel: vec4<f32>,
     @location(1) id: u32,
     @location(2) color: vec4<f32>,
-    // The light clip depth z/w in the selected map, unclamped ([0, 1] inside its depth range;
-    // -1e30 behind its centre of projection): the coverage check reads it.
+    // The depth (depth-attachment units) in the selected map, unclamped ([0, 1] inside its depth
+    // range; -1e30 behind its centre of projection or with no map): the coverage check reads it.
     @location(3) depth: f32,
 };
 
-// The face of the frustum where the ray from p along d leaves it (p inside).
-fn exit_face(p: vec3<f32>, d: vec3<f32>) -> i32 {
-    let t = g.frustum.z;
-    let ta = g.frustum.w;
-    // Outward normals and offsets: N·x + c <= 0 inside. Order: bottom, right, top, left, near, far.
-    var ns = array<vec3<f32>, 6>(
-        vec3<f32>(0.0, -1.0, t), vec3<f32>(1.0, 0.0, ta), vec3<f32>(0.0, 1.0, t),
-        vec3<f32>(-1.0, 0.0, ta), vec3<f32>(0.0, 0.0, 1.0), vec3<f32>(0.0, 0.0, -1.0));
-    var cs = array<f32, 6>(0.0, 0.0, 0.0, 0.0, g.frustum.x, -g.frustum.y);
-    var best = 1e30;
-    var face = -1;
-    for (var i = 0; i < 6; i++) {
-        let nd = dot(ns[i], d);
-        if (nd > 0.0) {
-            let tt = -(dot(ns[i], p) + cs[i]) / nd;
-            if (tt < best) {
-                best = tt;
-                face = i;
-            }
-        }
-    }
-    return face;
-}
-
-fn inside_map(m: mat4x4<f32>, p: vec3<f32>) -> bool {
-    let h = m * vec4<f32>(p, 1.0);
-    let st = h.xy / h.w;
-    return h.w > 0.0 && all(abs(st) <= vec2<f32>(1.0));
-}
-
-fn select_part(p: vec3<f32>) -> u32 {
-    let mode = i32(g.light.w);
-    let n = u32(g.misc.y);
-    if (mode == 0) {
-        return 0u;
-    }
-    if (mode == 1) {
-        let z = -p.z;
-        for (var i = 0u; i < n; i++) {
-            if (z < parts[i].region.z) {
-                return i;
-            }
-        }
-        return n - 1u;
-    }
-    var d = g.light.xyz;
-    if (d.z < 0.0) {
-        d = -d;
-    }
-    let face = exit_face(p, d);
-    for (var i = 0u; i < n; i++) {
-        let r = parts[i].region;
-        if (i32(r.x) == face) {
-            let z = -p.z;
-            if (r.y == r.z || (z >= r.y && z <= r.z)) {
-                return i;
-            }
-        }
-    }
-    for (var i = 0u; i < n; i++) {
-        if (inside_map(parts[i].m, p)) {
-            return i;
-        }
-    }
-    return 0u;
-}
-
 @fragment
 fn fs_camera(v: VOut) -> FOut {
-    let p = v.eye;
+    let p = v.rel + g.offset.xyz;
     let n = normalize(v.normal);
-    let part = select_part(p);
-    let m = parts[part].m;
-    let h = m * vec4<f32>(p, 1.0);
-    let st = (h.xy / h.w + vec2<f32>(1.0)) * 0.5;
-    let res = g.misc.x;
-    let depth = clamp(h.z / h.w, 0.0, 1.0);
-    let facing = dot(n, -g.light.xyz);
-    var lit = facing > g.misc.z;
-    if (lit && h.w > 0.0 && all(st >= vec2<f32>(0.0)) && all(st < vec2<f32>(1.0))) {
-        let ix = vec2<i32>(i32(floor(st.x * res)), i32(floor((1.0 - st.y) * res)));
-        let stored = textureLoad(shadow_maps, ix, i32(part), 0);
-        if (depth > stored) {
-            lit = false;
+    let l = g.light.xyz;
+    let count = sa_map_count();
+    let mode = i32(g.light_eye.w);
+    var part = 0u;
+    if (mode == 1) {
+        part = sa_pick_cascade(-v.eye.z).first;
+    } else if (mode == 2) {
+        part = sa_pick_face(p, v.eye, g.light_eye.xyz, g.frustum);
+    }
+    let facing = dot(n, -l);
+    var lit = facing > g.light.w;
+    var st = vec2<f32>(0.0);
+    var depth = -1e30;
+    if (part < count) {
+        let q = sa_project(sa_map(part), p);
+        st = q.xy;
+        depth = select(-1e30, q.z, q.w > 0.0);
+        if (lit) {
+            lit = sa_visibility(part, p, n, l, 0, u32(g.misc.z)) > 0.5;
         }
     }
+    let res = g.misc.x;
     var o: FOut;
     o.texel = vec4<f32>(st * res, f32(part), select(0.0, 1.0, lit));
-    o.depth = select(-1e30, h.z / h.w, h.w > 0.0);
+    o.depth = depth;
     o.id = v.id + 1u;
     // Shading: a colour per surface kind, Lambert when lit, ambient in shadow.
     var base = vec3<f32>(0.62, 0.6, 0.55);

@@ -1,6 +1,7 @@
 //! The shadow comparison's band (docs/rendered.md, "Shadow correctness"): which pixels the
 //! shader's one nearest-texel lookup must get right, decided in shadow-map texels from the map's
-//! own light rays and exact ray casts.
+//! own light rays and exact ray casts, for second-depth maps and for first-surface maps looked up
+//! at the crate's normal offset.
 
 use crate::scene::{ray_occluded, Scene, SceneBox};
 use crate::schemes::{Built, View};
@@ -13,10 +14,12 @@ use glam::{DMat4, DVec3};
 /// onto a receiver behind a caster standing on it.
 pub const CONTACT_TEXELS: f64 = 1.0;
 
-/// A map as the shadow test needs it: world ↔ light clip (depth [0, 1]).
+/// A map as the shadow test needs it: world ↔ light clip (depth [0, 1]), and for first-surface
+/// maps the normal offset of the lookup (world units; `None`: second-depth maps).
 pub(crate) struct MapGeom {
     pub(crate) world_to_clip: DMat4,
     pub(crate) clip_to_world: DMat4,
+    pub(crate) normal_offset: Option<f64>,
 }
 
 /// The texel centre is sampled also this far (texels) from it along each map axis: where the
@@ -52,6 +55,18 @@ const TEXEL_TIE: f64 = 2e-3;
 /// are those whose texel straddles the exact boundary or a caster's foot (on average an eighth
 /// of a texel on each side of a boundary). The light rays are the map's own (its matrix, so a
 /// wrong light direction is not excused); the exact states are ray casts toward the true light.
+///
+/// First-surface maps (`map.normal_offset` set) store the surface nearest the light along each
+/// texel's ray, and the shader looks up the point p + o n (o the crate's normal offset) at its
+/// own depth, with no other bias. Their texel is the one holding p + o n, `r` is at p + o n's
+/// light depth, and there is no contact band: the shadow of a caster standing on the receiver is
+/// decided (a caster within the offset of the receiver along the texel's ray is inside a box or
+/// changes an exact state, and is left out by the tests above). `q` must also lie on the pixel's
+/// own face: where the texel's ray passes beyond an edge of a box's face it meets another
+/// surface first (the ground at the box's foot, or where a sunk box's face goes below it), and
+/// the texel straddles that edge. A lit pixel that the lookup
+/// shadows because the offset is too small (acne: `r` below the pixel's own surface, where the ray
+/// cast finds light) is compared, and counts as a false shadow.
 #[allow(clippy::too_many_arguments)] // one pixel and its map, each needed once
 pub(crate) fn shadow_decidable(
     scene: &Scene,
@@ -63,7 +78,7 @@ pub(crate) fn shadow_decidable(
     occluded: bool,
 ) -> bool {
     let (wc, inv) = (&map.world_to_clip, &map.clip_to_world);
-    let h = *wc * pw.extend(1.0);
+    let h = *wc * (pw + nw * map.normal_offset.unwrap_or(0.0)).extend(1.0);
     if h.w <= 0.0 {
         return false;
     }
@@ -107,6 +122,16 @@ pub(crate) fn shadow_decidable(
         if inside(q, None) || ray_occluded(scene, q, DVec3::ZERO, light) != occluded {
             return false;
         }
+        // First-surface maps store whatever surface the ray meets first: the texel's ray must
+        // meet the pixel's own face (its box's face; the ground is unbounded), not pass beyond an
+        // edge of it to another surface (the ground at a box's foot).
+        if map.normal_offset.is_some()
+            && own.is_some_and(|k| {
+                !box_contains(&scene.boxes[k], q - nw * (2.0 * lift)) || q.y < scene.ground_y
+            })
+        {
+            return false;
+        }
         // r: at the pixel's light depth.
         let (x, y) = (2.0 * a / res - 1.0, 2.0 * b / res - 1.0);
         let r = inv.project_point3(DVec3::new(x, y, depth));
@@ -122,7 +147,7 @@ pub(crate) fn shadow_decidable(
         // The depth bias: the caster face the ray from r meets first must lie farther toward
         // the light than its slope-scaled bias, or the stored depth passes r.
         match first_face(scene, r, light) {
-            Some((e, n)) if occluded => {
+            Some((e, n)) if occluded && map.normal_offset.is_none() => {
                 // One texel's step along s and t at r's light depth (world), and the face's
                 // depth change over it: (Δ·n)/(L·n) along the light.
                 let ds = inv.project_point3(DVec3::new(x + 2.0 / res, y, depth)) - r;

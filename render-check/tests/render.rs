@@ -3,11 +3,13 @@
 //! `render_check::targets` (the binary's exit status holds the full run to the same). With no
 //! Vulkan adapter these tests fail, naming `mesa-vulkan-drivers`; they never skip.
 
-use render_check::gpu::Gpu;
-use render_check::run::{run_full, CaseSummary, Sizes};
-use render_check::scene::Scene;
-use render_check::schemes::{setups, Scheme};
+use glam::DVec3;
+use render_check::gpu::{Gpu, Lookup};
+use render_check::run::{draws, run_full, CaseSummary, Render, Sizes, Upload};
+use render_check::scene::{Mesh, Scene};
+use render_check::schemes::{build, setups, Scheme, View};
 use render_check::targets::violations;
+use shadow_aliasing::maps::ClipDepth;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -19,6 +21,7 @@ const SIZES: Sizes = Sizes {
     frames: 16,
     shimmer_points: 1500,
     fault: None,
+    render: Render::DEFAULT,
 };
 
 fn gpu() -> Gpu {
@@ -76,6 +79,188 @@ every_target! {
     grazing_10_meets_every_target: "grazing_10",
     parallel_1_meets_every_target: "parallel_1",
     thin_casters_meet_every_target: "thin_casters",
+}
+
+/// Issue 23's relative upload path: the thin-caster scene moved 10⁵ from the world origin, its
+/// positions uploaded relative to the camera and its maps as `FrameMap::gpu_relative` gives them,
+/// meets every target, and its numbers are the same scene's at the origin to within the GPU's
+/// rounding (the plain world matrix fails there: tests/faults.rs).
+#[test]
+fn far_from_the_origin_meets_every_target_as_at_the_origin() {
+    let gpu = gpu();
+    let far = meets_every_target(&gpu, "far_1e5", &setup("far_1e5"), SIZES);
+    let near = meets_every_target(&gpu, "thin_casters", &setup("thin_casters"), SIZES);
+    assert!(
+        (DVec3::from_array(setup("far_1e5").camera.eye).length() - 1e5).abs() < 1e3,
+        "the set-up is 10^5 from the origin"
+    );
+    for (f, n) in far.iter().zip(&near) {
+        let (a, b) = (&f.measured, &n.measured);
+        // The same pixels are visible and shadowed, up to 1 % (the ray cast lifts its point off the
+        // surface by 10⁻⁶ of its coordinates: 0.1 unit at 10⁵).
+        let close = |x: usize, y: usize| x.abs_diff(y) <= 2 + y / 100;
+        assert!(close(a.visible_pixels, b.visible_pixels), "{f:?}\n{n:?}");
+        assert!(close(a.shadow_pixels, b.shadow_pixels), "{f:?}\n{n:?}");
+        assert!(
+            (a.max_rendered_error / b.max_rendered_error - 1.0).abs() < 1e-3,
+            "{f:?}\n{n:?}"
+        );
+    }
+}
+
+/// Every scheme of `name` with `render` at the tests' size meets every target; the summaries.
+fn meets_with(gpu: &Gpu, name: &str, render: Render) -> Vec<CaseSummary> {
+    let sizes = Sizes { render, ..SIZES };
+    meets_every_target(gpu, name, &setup(name), sizes)
+}
+
+/// Issue 23's reversed depth: the records in `ClipDepth::Reversed` (depth 1 nearest the light),
+/// the shadow pass cleared to 0 and compared greater-equal, the crate's module comparing the
+/// lookup greater-equal: every target met, with the same shadows as depth [0, 1].
+#[test]
+fn reversed_depth_meets_every_target() {
+    let gpu = gpu();
+    let reversed = Render {
+        clip_depth: ClipDepth::Reversed,
+        ..Render::DEFAULT
+    };
+    for name in ["tilted_45", "thin_casters"] {
+        let r = meets_with(&gpu, name, reversed);
+        let z = meets_with(&gpu, name, Render::DEFAULT);
+        for (a, b) in r.iter().zip(&z) {
+            assert!(a.measured.shadow_pixels_checked > 0, "{a:?}");
+            assert_eq!(a.measured.shadow_pixels, b.measured.shadow_pixels, "{a:?}");
+        }
+    }
+}
+
+/// Issue 23's bias: ordinary first-surface maps (every face stored, no rasterizer bias), looked
+/// up at the crate's normal offset (`FrameMap::bias` in the record, the module's
+/// `SA_NORMAL_OFFSET`). The orthographic maps (uniform, 4 stable cascades) and the LiSPSM
+/// cascades meet every target: no acne (no false shadow on a compared lit pixel, at least 90 % of
+/// the lit pixels compared) and no missing contact shadow (no miss, at least 80 % of the shadowed
+/// pixels compared, with no contact band: the shadows at the feet of the poles and boxes are
+/// compared). The single warped maps and face partitions have no miss and no false shadow
+/// either, but their offset (the maximum over the map's body, set by its coarsest texels) moves
+/// the lookup many of their finest texels, so fewer shadowed pixels are decidable
+/// (docs/rendered.md).
+#[test]
+fn first_surface_maps_with_the_crates_bias_meet_every_target() {
+    let gpu = gpu();
+    let sizes = Sizes {
+        render: Render {
+            lookup: Lookup::FirstSurface,
+            ..Render::DEFAULT
+        },
+        ..SIZES
+    };
+    for name in ["tilted_45", "thin_casters", "grazing_10"] {
+        let scene = setup(name);
+        for scheme in Scheme::ALL {
+            let r = run_full(&gpu, name, &scene, scheme, sizes)
+                .unwrap_or_else(|e| panic!("{name}/{}: {e}", scheme.name()));
+            let m = &r.summary.measured;
+            let every = matches!(
+                scheme,
+                Scheme::Uniform | Scheme::Cascades | Scheme::StableCascades
+            );
+            if every {
+                let v = violations(&r.summary);
+                assert!(v.is_empty(), "{name}/{}: {v:?}", scheme.name());
+                assert!(
+                    m.lit_pixels_checked as f64 >= 0.9 * m.lit_pixels as f64,
+                    "{:?}",
+                    r.summary
+                );
+            }
+            assert_eq!(
+                (m.shadow_misses, m.false_shadows),
+                (0, 0),
+                "{:?}",
+                r.summary
+            );
+            assert!(
+                m.shadow_pixels_checked > m.shadow_pixels / 10,
+                "{:?}",
+                r.summary
+            );
+        }
+    }
+}
+
+/// Issue 23's culling: drawing each object only into the maps whose casters' volume
+/// (`FrameMap::casters_volume`) it may meet changes no pixel (every output of the camera pass
+/// bit for bit), in set-ups whose shadows come from casters outside the view; the tower behind
+/// the camera is culled from every map under the overhead light (its footprint lies behind the
+/// camera, the light straight down: a hand check) and drawn under the light from behind, whose
+/// long shadow it casts.
+#[test]
+fn culling_by_the_casters_volume_changes_no_pixel() {
+    let gpu = gpu();
+    let tower = Scene::builtin().boxes.len(); // the last object (the ground is object 0)
+    for (name, tower_culled) in [
+        ("overhead", true),
+        ("behind_5", false),
+        ("thin_casters", false),
+    ] {
+        let scene = setup(name);
+        let mesh = Mesh::build(&scene);
+        for scheme in Scheme::ALL {
+            let view = View::new(&scene.camera, scene.light(), SIZES.width, SIZES.height).unwrap();
+            let res = scene.map_resolution;
+            let built = build(scheme, &view, &scene, res, None, ClipDepth::ZeroToOne).unwrap();
+            let render = |cull: bool| {
+                let sizes = Sizes {
+                    render: Render {
+                        cull,
+                        ..Render::DEFAULT
+                    },
+                    ..SIZES
+                };
+                let up = Upload::new(&built, &mesh, sizes);
+                let out = gpu
+                    .render(&up.input(&view, &mesh, &built, res, sizes))
+                    .unwrap();
+                (out, draws(&built, &mesh, sizes))
+            };
+            let (all, drawn_all) = render(false);
+            let (culled, drawn) = render(true);
+            let objects = mesh.objects.len();
+            assert!(drawn_all.iter().all(|d| d.len() == objects));
+            let culled_count: usize = drawn.iter().map(|d| objects - d.len()).sum();
+            if name != "thin_casters" {
+                let has_tower =
+                    |d: &Vec<std::ops::Range<u32>>| d.contains(&mesh.objects[tower].vertices);
+                if tower_culled {
+                    assert!(
+                        drawn.iter().all(|d| !has_tower(d)),
+                        "{name}/{}",
+                        scheme.name()
+                    );
+                } else {
+                    assert!(drawn.iter().any(has_tower), "{name}/{}", scheme.name());
+                }
+            }
+            assert!(
+                culled_count > 0 || !tower_culled,
+                "{name}/{}: nothing culled",
+                scheme.name()
+            );
+            let same = all
+                .texel
+                .iter()
+                .zip(&culled.texel)
+                .all(|(a, b)| a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits()))
+                && all.id == culled.id
+                && all.color == culled.color
+                && all
+                    .depth
+                    .iter()
+                    .zip(&culled.depth)
+                    .all(|(x, y)| x.to_bits() == y.to_bits());
+            assert!(same, "{name}/{}: culling changed a pixel", scheme.name());
+        }
+    }
 }
 
 /// Lloyd 2006's overhead case: the rendered m_x, m_z over the ground equal Eq 7–8 at every
