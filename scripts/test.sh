@@ -6,7 +6,8 @@
 # render-check renders with wgpu on Vulkan; a machine without a Vulkan driver gets Debian's
 # software rasterizer (lavapipe, package mesa-vulkan-drivers) first. render-check's tests fail,
 # naming that package, when no adapter is found; they never skip. The Python step needs python3
-# with venv and pip, and PyPI (maturin, numpy, pytest).
+# with venv and pip, and PyPI (maturin, numpy, pytest; mypy for the stub checks, matplotlib for
+# the examples, which python/tests/test_examples.py runs).
 #
 # Arguments are passed to `cargo test` (e.g. a test name filter).
 set -euo pipefail
@@ -51,5 +52,12 @@ echo "== Python package (python/): pip install into a fresh venv, pytest"
 cargo build --locked --features cli --bin shadow-aliasing
 python3 -m venv "$scratch/venv"
 "$scratch/venv/bin/python" -m pip install --quiet --upgrade pip
-"$scratch/venv/bin/python" -m pip install --quiet ./python pytest numpy
+"$scratch/venv/bin/python" -m pip install --quiet ./python pytest numpy mypy matplotlib
+echo "== Python stubs: stubtest against the installed module, mypy --strict on the stubs and examples"
+# From the scratch directory, so that the module imported is the installed one (with its
+# compiled extension), never the source tree python/shadow_aliasing.
+allowlist="$PWD/python/stubtest-allowlist.txt"
+(cd "$scratch" && "$scratch/venv/bin/python" -m mypy.stubtest shadow_aliasing --allowlist "$allowlist")
+"$scratch/venv/bin/python" -m mypy --strict --cache-dir "$scratch/mypy-cache" \
+  python/shadow_aliasing/__init__.pyi
 SHADOW_ALIASING_BIN="$PWD/target/debug/shadow-aliasing" "$scratch/venv/bin/python" -m pytest -q python/tests

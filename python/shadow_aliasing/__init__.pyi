@@ -52,6 +52,42 @@ class FrameResult(TypedDict):
 
 WARP_RULES: list[str]
 __version__: str
+__all__ = [
+    "WARP_RULES",
+    "allocate_texels",
+    "cascades",
+    "critical_resolution",
+    "distribution_g",
+    "error_image",
+    "eta_from_n_prime",
+    "faces",
+    "frame",
+    "frustum_max",
+    "gamma_lim",
+    "generalized_n_prime",
+    "max_mx",
+    "max_mz",
+    "mx",
+    "mz",
+    "n_prime_for",
+    "n_prime_from_eta",
+    "n_prime_lispsm",
+    "point_error",
+    "scheme_storage_factor",
+    "storage_factor",
+    "subdivided_max_error",
+    "sweep",
+    "sweep_angles",
+    "tilted_mz",
+    "tsm",
+    "tsm_eta",
+    "warp",
+    "z_partition",
+    "zhang_ep",
+    "zhang_ep_local",
+    "zhang_eq",
+    "zhang_eq_local",
+]
 
 def mx(near: ArrayLike, far: ArrayLike, n_prime: ArrayLike, z: ArrayLike,
        res_image: Optional[ArrayLike] = ..., res_s: Optional[ArrayLike] = ..., *, out: OutArray = ...) -> F64:
