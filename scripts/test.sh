@@ -59,5 +59,5 @@ echo "== Python stubs: stubtest against the installed module, mypy --strict on t
 allowlist="$PWD/python/stubtest-allowlist.txt"
 (cd "$scratch" && "$scratch/venv/bin/python" -m mypy.stubtest shadow_aliasing --allowlist "$allowlist")
 "$scratch/venv/bin/python" -m mypy --strict --cache-dir "$scratch/mypy-cache" \
-  python/shadow_aliasing/__init__.pyi
+  python/shadow_aliasing/__init__.pyi python/examples
 SHADOW_ALIASING_BIN="$PWD/target/debug/shadow-aliasing" "$scratch/venv/bin/python" -m pytest -q python/tests

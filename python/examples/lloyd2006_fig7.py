@@ -8,6 +8,8 @@ uniform against LiSPSM, f/n = 1000, half fov 30°) from the Python API, with mat
 Each panel is log10 S̄ over elevation (rows, 0 at the horizon to 90° overhead) and azimuth
 (columns, 0 = light behind the viewer, 180° = in front), as `shadow_aliasing.sweep` returns it.
 """
+from __future__ import annotations
+
 import sys
 
 import matplotlib
@@ -21,7 +23,7 @@ import shadow_aliasing as sa  # noqa: E402
 NEAR, FAR, HALF_FOV = 1.0, 1000.0, np.pi / 6
 
 
-def main(out="lloyd2006_fig7.png"):
+def main(out: str = "lloyd2006_fig7.png") -> None:
     el, az = sa.sweep_angles(91, 360)
     panels = [("uniform", "Uniform (n′ = ∞)"), ("lispsm", "LiSPSM, n′ = (n + √(fn))/sin γ")]
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
