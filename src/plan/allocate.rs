@@ -245,6 +245,48 @@ pub fn allocate(
     })
 }
 
+/// The cheapest resolutions of `maps` whose largest error is at most `max_error` pixels (module
+/// docs): each axis the least resolution `rounding` allows at or above `M H / max_error`.
+/// `texels` is their total; `max_error_pixels` the largest error they give (≤ `max_error`).
+///
+/// # Errors
+/// As [`allocate`] for `maps`, `image_height` and `rounding`; `max_error` when it is not finite
+/// and positive, or so small that a map would need more than [`MAX_RESOLUTION`] texels along an
+/// axis.
+pub fn allocate_for_error(
+    maps: &[MapError],
+    image_height: u32,
+    max_error: f64,
+    rounding: Rounding,
+) -> Result<Allocation> {
+    let h = check(maps, image_height)?;
+    let e = positive("max_error", max_error)?;
+    if rounding == Rounding::Multiple(0) {
+        return Err(Error::invalid(
+            "rounding",
+            "must be a multiple of at least 1 texel (got Multiple(0))",
+        ));
+    }
+    let mut out = [MapResolution::default(); MAX_ATLAS_ENTRIES];
+    let n = maps.len();
+    let texels = cheapest(maps, h, e, rounding, &mut out[..n]).ok_or_else(|| {
+        Error::invalid(
+            "max_error",
+            format!(
+                "{} px needs more than {MAX_RESOLUTION} texels along an axis of a map: allow a \
+                 larger error",
+                fmt_num(e)
+            ),
+        )
+    })?;
+    Ok(Allocation {
+        maps: out,
+        len: n,
+        max_error_pixels: out[..n].iter().map(|m| m.error_pixels).fold(0.0, f64::max),
+        texels,
+    })
+}
+
 /// The maps side by side in a `width × height` atlas (module docs): each map a column of the
 /// whole height, the widths the least-largest-error split of `width` in whole texels. Returns the
 /// allocation (each map's `res_s` its column's width, `res_t` the atlas height) and the

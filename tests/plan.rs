@@ -1,0 +1,314 @@
+//! The planner (issue 24 item 3): its choice against a brute force over the same candidates
+//! through the public frame API, monotonicity in the target and the budget, determinism, the
+//! candidate list, and the errors for bad input.
+
+use glam::{DMat4, DVec3};
+use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme};
+use shadow_aliasing::plan::allocate::{allocate, MapError, Rounding};
+use shadow_aliasing::plan::candidates::{
+    candidates, is_searched, CASCADE_RULES, FACE_RULES, MAX_CASCADES, SINGLE_RULES,
+};
+use shadow_aliasing::plan::{plan, plan_among, Goal, Plan};
+use shadow_aliasing::Error;
+
+const H: u32 = 1080;
+
+/// Three scenes: the benchmark's ground with a tower, the frustum alone with the light
+/// overhead, and a ground seen through an SDSM depth range with a grazing light.
+fn scene(i: usize, boxes: &[Aabb]) -> FrameInput<'_> {
+    let cam = Camera::new(DMat4::IDENTITY, 1.0, 400.0, 30f64.to_radians(), 1.5).unwrap();
+    match i {
+        0 => FrameInput::new(cam, DVec3::new(0.3, -0.8, -0.4), 2048, H)
+            .receivers(Bound::Boxes(&boxes[..1]))
+            .casters(Bound::Boxes(boxes)),
+        1 => FrameInput::new(cam, DVec3::new(0.0, -1.0, 0.0), 2048, H),
+        _ => FrameInput::new(cam, DVec3::new(-0.6, -0.3, 0.5), 2048, H)
+            .receivers(Bound::Boxes(&boxes[..1]))
+            .depth_range(3.0, 150.0),
+    }
+}
+
+fn boxes() -> [Aabb; 2] {
+    [
+        Aabb::new([-50.0, -5.0, -100.0], [50.0, 0.0, 0.0]).unwrap(),
+        Aabb::new([-10.0, 0.0, -60.0], [10.0, 20.0, -40.0]).unwrap(),
+    ]
+}
+
+/// The cheap candidates (no equal-error search), for the tests that plan many times.
+fn cheap(input: &FrameInput<'_>) -> Vec<FrameScheme<'static>> {
+    candidates(input)
+        .into_iter()
+        .filter(|s| !is_searched(s))
+        .collect()
+}
+
+/// Each candidate's maps' (M_x, M_z) through the public frame API, or None where it fails.
+fn measured(input: &FrameInput<'_>, list: &[FrameScheme<'static>]) -> Vec<Option<Vec<(f64, f64)>>> {
+    list.iter()
+        .map(|s| {
+            frame(&input.scheme(*s))
+                .ok()
+                .map(|f| f.maps().iter().map(|m| (m.max_mx, m.max_mz)).collect())
+        })
+        .collect()
+}
+
+/// Whole texels for the target `e` by hand: each axis ⌈M H / e⌉, the error of those.
+fn by_hand(maps: &[(f64, f64)], e: f64) -> (u64, f64) {
+    let h = f64::from(H);
+    maps.iter().fold((0, 0.0), |(t, err), &(mx, mz)| {
+        let (rs, rt) = ((mx * h / e).ceil(), (mz * h / e).ceil());
+        (
+            t + (rs * rt) as u64,
+            f64::max(err, (mx * h / rs).max(mz * h / rt)),
+        )
+    })
+}
+
+#[test]
+fn target_choice_is_the_brute_force_fewest_texels() {
+    let b = boxes();
+    for i in 0..3 {
+        let input = scene(i, &b);
+        let list = candidates(&input);
+        let all = measured(&input, &list);
+        for target in [0.5, 1.0, 3.0] {
+            let p = plan(&input, Goal::MaxError(target), Rounding::Whole).unwrap();
+            assert_eq!(p.candidates.len(), list.len());
+            let mut best: Option<(u64, f64, usize)> = None;
+            for (j, m) in all.iter().enumerate() {
+                let row = &p.candidates[j];
+                assert_eq!(row.scheme, list[j]);
+                let Some(maps) = m else {
+                    assert!(row.outcome.is_err(), "scene {i} {j}: the frame failed");
+                    continue;
+                };
+                let (t, e) = by_hand(maps, target);
+                let got = row.outcome.as_ref().unwrap();
+                assert_eq!((got.texels, got.maps), (t, maps.len()), "scene {i} {j}");
+                assert!(
+                    (got.max_error_pixels - e).abs() <= 1e-12 * e,
+                    "scene {i} {j}"
+                );
+                assert!(e <= target);
+                if best.is_none_or(|(bt, be, _)| (t, e) < (bt, be)) {
+                    best = Some((t, e, j));
+                }
+            }
+            let (t, e, j) = best.unwrap();
+            assert_eq!((p.chosen, p.texels), (j, t), "scene {i} target {target}");
+            assert!((p.max_error_pixels - e).abs() <= 1e-12 * e);
+            check_resolutions(&p);
+        }
+    }
+}
+
+/// The plan's resolutions give its error from its own frame's maps, in order.
+fn check_resolutions(p: &Plan) {
+    let maps: Vec<_> = p.frame.maps().iter().collect();
+    assert_eq!(maps.len(), p.resolutions.len());
+    let h = f64::from(H);
+    let mut worst = 0.0f64;
+    let mut texels = 0;
+    for (m, r) in maps.iter().zip(&p.resolutions) {
+        let e = (m.max_mx * h / r.res_s as f64).max(m.max_mz * h / r.res_t as f64);
+        worst = worst.max(e);
+        texels += r.res_s * r.res_t;
+    }
+    assert_eq!(texels, p.texels);
+    assert!((worst - p.max_error_pixels).abs() <= 1e-12 * worst);
+}
+
+#[test]
+fn budget_choice_is_the_brute_force_least_error() {
+    let b = boxes();
+    for i in 0..3 {
+        let input = scene(i, &b);
+        let list = cheap(&input);
+        let all = measured(&input, &list);
+        for (budget, max_maps) in [(1u64 << 20, 1), (4 << 20, 4), (16 << 20, 8), (64 << 20, 13)] {
+            let goal = Goal::Budget {
+                texels: budget,
+                max_maps,
+            };
+            let p = plan_among(&input, goal, Rounding::PowerOfTwo, &list).unwrap();
+            let mut best: Option<(f64, u64, usize)> = None;
+            for (j, m) in all.iter().enumerate() {
+                let Some(maps) = m else { continue };
+                if maps.len() > max_maps {
+                    let e = p.candidates[j].outcome.as_ref().unwrap_err();
+                    assert!(matches!(
+                        e,
+                        Error::InvalidArgument {
+                            name: "max_maps",
+                            ..
+                        }
+                    ));
+                    continue;
+                }
+                let me: Vec<MapError> = maps
+                    .iter()
+                    .map(|&(max_mx, max_mz)| MapError { max_mx, max_mz })
+                    .collect();
+                let Ok(a) = allocate(&me, H, budget, Rounding::PowerOfTwo) else {
+                    continue;
+                };
+                assert!(a.texels <= budget);
+                let key = (a.max_error_pixels, a.texels, j);
+                if best.is_none_or(|b| (key.0, key.1) < (b.0, b.1)) {
+                    best = Some(key);
+                }
+            }
+            let (e, t, j) = best.unwrap();
+            assert_eq!((p.chosen, p.texels), (j, t), "scene {i} budget {budget}");
+            assert_eq!(p.max_error_pixels, e);
+            assert!(p.frame.maps().len() <= max_maps);
+            check_resolutions(&p);
+        }
+    }
+}
+
+#[test]
+fn a_looser_target_never_costs_more_texels_and_a_larger_budget_never_more_error() {
+    let b = boxes();
+    for i in 0..3 {
+        let input = scene(i, &b);
+        let list = cheap(&input);
+        let mut last = u64::MAX;
+        for j in 0..24 {
+            let target = 0.25 * 1.25f64.powi(j);
+            let p = plan_among(&input, Goal::MaxError(target), Rounding::Whole, &list).unwrap();
+            assert!(p.max_error_pixels <= target);
+            assert!(
+                p.texels <= last,
+                "scene {i}: {target} px costs {} > {last}",
+                p.texels
+            );
+            last = p.texels;
+        }
+        let mut last = f64::INFINITY;
+        for j in 0..16 {
+            let goal = Goal::Budget {
+                texels: (1u64 << 16) << j,
+                max_maps: 8,
+            };
+            let p = plan_among(&input, goal, Rounding::Whole, &list).unwrap();
+            assert!(p.max_error_pixels <= last, "scene {i} step {j}");
+            last = p.max_error_pixels;
+        }
+    }
+}
+
+#[test]
+fn the_plan_is_deterministic() {
+    let b = boxes();
+    let input = scene(0, &b);
+    let a = plan(&input, Goal::MaxError(1.0), Rounding::Whole).unwrap();
+    let c = plan(&input, Goal::MaxError(1.0), Rounding::Whole).unwrap();
+    assert_eq!(a.candidates, c.candidates);
+    assert_eq!((a.chosen, a.texels), (c.chosen, c.texels));
+    assert_eq!(a.max_error_pixels.to_bits(), c.max_error_pixels.to_bits());
+    assert_eq!(a.resolutions, c.resolutions);
+    assert_eq!(a.frame.slots(), c.frame.slots());
+}
+
+#[test]
+fn the_candidates_are_the_issues_list() {
+    let b = boxes();
+    let input = scene(0, &b);
+    let list = candidates(&input);
+    for r in SINGLE_RULES {
+        assert!(list.contains(&FrameScheme::Single(r)));
+    }
+    assert!(list.iter().any(|s| matches!(s, FrameScheme::Tsm(_))));
+    for rule in CASCADE_RULES {
+        for k in 2..=MAX_CASCADES {
+            let n = list
+                .iter()
+                .filter(|s| matches!(s, FrameScheme::Cascades { splits, rule: r } if *r == rule && k_of(splits) == k))
+                .count();
+            assert_eq!(n, 5, "{rule:?} k={k}");
+            assert!(list.contains(&FrameScheme::Cascades {
+                splits: CascadeSplits::EqualError { k },
+                rule
+            }));
+        }
+    }
+    for k in 1..=MAX_CASCADES {
+        assert!(list
+            .iter()
+            .any(|s| matches!(s, FrameScheme::Stable(sp) if k_of(sp) == k)));
+    }
+    for rule in FACE_RULES {
+        assert!(list.contains(&FrameScheme::Faces { rule, k: 1 }));
+    }
+    assert_eq!(list.iter().filter(|s| is_searched(s)).count(), 21);
+}
+
+fn k_of(s: &CascadeSplits<'_>) -> usize {
+    shadow_aliasing::plan::candidates::splits_name(s).1
+}
+
+#[test]
+fn nothing_in_view_plans_no_map() {
+    let far_away = [Aabb::new([500.0, 0.0, 0.0], [600.0, 1.0, 10.0]).unwrap()];
+    let cam = Camera::new(DMat4::IDENTITY, 1.0, 100.0, 0.5, 1.0).unwrap();
+    let input = FrameInput::new(cam, DVec3::NEG_Y, 2048, H).receivers(Bound::Boxes(&far_away));
+    let p = plan_among(&input, Goal::MaxError(1.0), Rounding::Whole, &cheap(&input)).unwrap();
+    assert_eq!((p.chosen, p.texels, p.max_error_pixels), (0, 0, 0.0));
+    assert!(p.resolutions.is_empty() && p.frame.is_empty());
+}
+
+fn refused(r: Result<Plan, Error>, name: &str) -> String {
+    match r {
+        Err(Error::InvalidArgument { name: n, reason }) if n == name => reason,
+        other => panic!("expected {name} refused, got {other:?}"),
+    }
+}
+
+#[test]
+fn bad_input_is_refused_by_name() {
+    let b = boxes();
+    let input = scene(0, &b);
+    let one = [FrameScheme::Single(
+        shadow_aliasing::maps::WarpRule::Uniform,
+    )];
+    let w = Rounding::Whole;
+    for e in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        refused(plan_among(&input, Goal::MaxError(e), w, &one), "max_error");
+    }
+    let budget = |texels, max_maps| Goal::Budget { texels, max_maps };
+    refused(plan_among(&input, budget(0, 4), w, &one), "budget_texels");
+    refused(plan_among(&input, budget(1 << 20, 0), w, &one), "max_maps");
+    refused(
+        plan_among(&input, budget(1 << 20, 1000), w, &one),
+        "max_maps",
+    );
+    refused(
+        plan_among(&input, Goal::MaxError(1.0), Rounding::Multiple(0), &one),
+        "rounding",
+    );
+    refused(
+        plan_among(&input, Goal::MaxError(1.0), w, &[]),
+        "candidates",
+    );
+    // A tile of 64 texels: the least map is 64 × 64.
+    let tiles = Rounding::Multiple(64);
+    let reason = refused(
+        plan_among(&input, budget(3, 4), tiles, &one),
+        "budget_texels",
+    );
+    assert!(reason.contains("give at least 4096 texels"), "{reason}");
+    let reason = refused(
+        plan_among(&input, Goal::MaxError(1e-12), w, &one),
+        "max_error",
+    );
+    assert!(reason.contains("allow a larger error"), "{reason}");
+    let dark = input.scheme(one[0]);
+    let dark = FrameInput {
+        light_dir_world: DVec3::ZERO,
+        ..dark
+    };
+    refused(plan(&dark, Goal::MaxError(1.0), w), "light_dir_world");
+}
