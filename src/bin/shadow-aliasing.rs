@@ -1,6 +1,7 @@
 //! The `shadow-aliasing` command line: `figures` (the main job), `eval` (the JSON contract of
 //! docs/eval.md), `warp` (a camera's shadow matrices with their measured error) and `sweep`
-//! (the storage factor over the hemisphere of light directions, as CSV or a NumPy `.npy` array).
+//! (the storage factor over the hemisphere of light directions, as CSV or a NumPy `.npy` array)
+//! and `plan` (the cheapest shadow set-up for a target error, or the least error for a budget).
 //!
 //! Errors are one line on standard error and a non-zero exit status.
 
@@ -10,6 +11,8 @@ mod args;
 mod commands;
 #[path = "shadow-aliasing/output.rs"]
 mod output;
+#[path = "shadow-aliasing/plan.rs"]
+mod plan;
 #[path = "shadow-aliasing/scene.rs"]
 mod scene;
 #[path = "shadow-aliasing/scheme.rs"]

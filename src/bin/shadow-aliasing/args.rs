@@ -42,6 +42,57 @@ pub enum Command {
         after_help = "Examples:\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm --elevations 90 --azimuths 360 > sweep.csv\n  shadow-aliasing sweep --near 1 --far 1000 --half-fov 0.5236 --warp lispsm --format npy --output sweep.npy\n\nnpy: float64 array of shape (E, A), row i elevation i, column j azimuth j; with --output sweep.npy\nalso sweep.elevations.npy (E) and sweep.azimuths.npy (A), radians (only beside a regular file:\nnot beside /dev/null). Files are written whole or not at all.\n\nA direction without a solution (adaptive planes that do not exist: lower --ratio or --k) fails\nthe sweep, naming the first such direction.\n\nColumns: elevation,azimuth,storage_factor (radians). Elevation rows i = 0..E-1 at i·(π/2)/(E-1)\n(0 the horizon, π/2 overhead; both ends included; E = 1 is the zenith); azimuth columns j = 0..A-1 at j·2π/A\n(0 behind the viewer, π in front; 2π excluded)."
     )]
     Sweep(SweepArgs),
+    /// The cheapest shadow set-up that meets a target error, or the least error within a texel
+    /// budget, every candidate measured over the scene (docs/planning.md).
+    #[command(
+        after_help = "Examples:\n  shadow-aliasing plan --near 1 --far 1000 --half-fov 0.5236 --light-dir 0.3,-0.8,-0.4 --receivers=-50,-5,-100,50,0,0 --image-height 1080 --max-error 1\n  shadow-aliasing plan --near 1 --far 1000 --half-fov 0.5236 --light-dir 0.3,-0.8,-0.4 --image-height 1080 --budget-texels 16777216 --max-maps 4 --json\n\nwarp_args in the JSON are warp's flags for the chosen scheme: `warp` with the same camera and\nscene flags and these reproduces each map's M_x and M_z, and so the error\nmax(M_x H/res_s, M_z H/res_t) at the planned resolutions."
+    )]
+    Plan(PlanArgs),
+}
+
+/// `plan` arguments.
+#[derive(Debug, clap::Args)]
+pub struct PlanArgs {
+    #[command(flatten)]
+    pub camera: CameraArgs,
+    /// Direction the light travels, eye space (camera at the origin looking down −Z, Y up): x,y,z.
+    #[arg(long = "light-dir", value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = parse_vec3)]
+    pub light_dir: [f64; 3],
+    #[command(flatten)]
+    pub bounds: BoundsArgs,
+    /// The image's height in pixels: errors are in these pixels per texel.
+    #[arg(long = "image-height", value_name = "N", allow_hyphen_values = true)]
+    pub image_height: i64,
+    /// The target: the largest error allowed, pixels per texel (the plan is the fewest texels
+    /// that meet it).
+    #[arg(
+        long = "max-error",
+        value_name = "PX",
+        allow_hyphen_values = true,
+        conflicts_with = "budget_texels"
+    )]
+    pub max_error: Option<f64>,
+    /// The budget: texels of all maps together (the plan is the least error within it).
+    #[arg(long = "budget-texels", value_name = "N", allow_hyphen_values = true)]
+    pub budget_texels: Option<i64>,
+    /// With --budget-texels: the most maps a scheme may have (default 8).
+    #[arg(long = "max-maps", value_name = "K", allow_hyphen_values = true)]
+    pub max_maps: Option<i64>,
+    /// Each map's resolution along each axis: any whole number of texels, or a power of two.
+    #[arg(long, value_enum, default_value_t = RoundingName::Whole)]
+    pub rounding: RoundingName,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// `--rounding`: the library's [`shadow_aliasing::plan::allocate::Rounding`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum RoundingName {
+    /// Any whole number of texels.
+    Whole,
+    /// Powers of two.
+    PowerOfTwo,
 }
 
 /// `figures` arguments.
@@ -185,6 +236,10 @@ pub enum WarpName {
     Ogre,
     /// OGRE 13.6 and later: n′ × shadowDist (`--shadow-distance`), from the orthographic camera.
     OgreOrtho,
+    /// Martin & Tan's trapezoidal map of the focus body in its own view-axis light space, the
+    /// 80 % rule, focus `--focus` (default half of far − near) (`warp` only, through the frame
+    /// API: `FrameScheme::Tsm`).
+    Trapezoid,
 }
 
 /// Partition schemes by name.
@@ -262,10 +317,14 @@ impl ClipDepthName {
     }
 }
 
-/// `warp`'s scene: the maps focused on receivers ∩ the view (the library's frame API), with the
-/// camera at the origin of eye space (world = eye) and a square image.
+/// The scene of `warp` and `plan`: the maps focused on receivers ∩ the view (the library's frame
+/// API), with the camera at the origin of eye space (world = eye).
 #[derive(Debug, Clone, clap::Args)]
-pub struct SceneArgs {
+pub struct BoundsArgs {
+    /// The image's width over its height (default 1, a square image); given, `warp` builds its
+    /// maps with the frame API.
+    #[arg(long, allow_hyphen_values = true)]
+    pub aspect: Option<f64>,
     /// A receivers' box in eye space (repeatable; several merge into their bounding box).
     #[arg(long, value_name = "MINX,MINY,MINZ,MAXX,MAXY,MAXZ", allow_hyphen_values = true, value_parser = parse_box)]
     pub receivers: Vec<[f64; 6]>,
@@ -278,6 +337,28 @@ pub struct SceneArgs {
     /// The device clamps depth: casters are not put in the depth range.
     #[arg(long = "depth-clamp")]
     pub depth_clamp: bool,
+}
+
+impl BoundsArgs {
+    /// Whether any of these options is given.
+    pub fn any(&self) -> bool {
+        self.aspect.is_some()
+            || !self.receivers.is_empty()
+            || !self.casters.is_empty()
+            || self.depth_range.is_some()
+            || self.depth_clamp
+    }
+}
+
+/// `warp`'s scene: the bounds, and cascades given by their planes (the library's frame API).
+#[derive(Debug, Clone, clap::Args)]
+pub struct SceneArgs {
+    #[command(flatten)]
+    pub bounds: BoundsArgs,
+    /// Stable cascades (world-fixed, texel-snapped squares; unwarped: with --warp uniform) with
+    /// the splits of --partition, --splits, --fractions or --bevy (one map with none of them).
+    #[arg(long)]
+    pub stable: bool,
     /// Cascades at absolute split distances Z0,Z1,...,ZK (first near to last far).
     #[arg(long, value_name = "Z0,...,ZK", allow_hyphen_values = true, value_parser = parse_list, conflicts_with_all = ["fractions", "bevy"])]
     pub splits: Option<NumList>,
@@ -296,10 +377,8 @@ pub struct SceneArgs {
 impl SceneArgs {
     /// Whether any scene option is given (then `warp` uses the frame API).
     pub fn any(&self) -> bool {
-        !self.receivers.is_empty()
-            || !self.casters.is_empty()
-            || self.depth_range.is_some()
-            || self.depth_clamp
+        self.bounds.any()
+            || self.stable
             || self.splits.is_some()
             || self.fractions.is_some()
             || self.bevy.is_some()

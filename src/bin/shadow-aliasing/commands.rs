@@ -2,6 +2,7 @@
 
 use crate::args::{
     Cli, Command, EvalArgs, FiguresArgs, Format, PartitionName, SweepArgs, SweepFormat, WarpArgs,
+    WarpName,
 };
 use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
 use crate::scheme::{k, partition, partitions, rule, value_name, Lights, PartitionReport};
@@ -20,6 +21,10 @@ pub fn run(cli: Cli) -> ExitCode {
         Command::Warp(a) => warp(&a),
         Command::Sweep(a) => sweep(&a),
         Command::Figures(a) => figures(&a),
+        Command::Plan(a) => match crate::plan::plan(&a) {
+            Ok(text) => print(&text),
+            Err(e) => fail(e),
+        },
     }
 }
 
@@ -93,7 +98,10 @@ fn print_bytes(bytes: &[u8]) -> ExitCode {
 fn warp(a: &WarpArgs) -> ExitCode {
     // Equal-error splits are measured on the frame's maps: the scene path, with the frustum
     // alone when no scene is given.
-    if a.scene.any() || a.scheme.partition == PartitionName::EqualError {
+    if a.scene.any()
+        || a.scheme.partition == PartitionName::EqualError
+        || a.scheme.warp == WarpName::Trapezoid
+    {
         return match crate::scene::warp_scene(a) {
             Ok(text) => print(&text),
             Err(e) => fail(e),

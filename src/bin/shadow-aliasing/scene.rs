@@ -2,19 +2,20 @@
 //! `--bevy`): the library's frame API with the camera at the origin of eye space (world = eye),
 //! a square image, maps measured over each focus body B.
 
-use crate::args::{PartitionName, WarpArgs};
+use crate::args::{BoundsArgs, CameraArgs, PartitionName, WarpArgs, WarpName};
 use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
 use crate::scheme::{k, ratio, rule, value_name, Lights, DEFAULT_LAMBDA};
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme};
+use shadow_aliasing::maps::{TsmOptions, TsmSearch};
 use shadow_aliasing::scheme::face_rule;
 use shadow_aliasing::{Error, LightAngle, ViewFrustum};
 use std::fmt::Write as _;
 
 /// The map resolution and image height the frame API is given (the measured M_x, M_z, S̄ are
 /// for unit resolutions, as everywhere in `warp`).
-const RESOLUTION: u32 = 2048;
+pub const RESOLUTION: u32 = 2048;
 
 fn boxes(list: &[[f64; 6]], name: &'static str) -> Result<Vec<Aabb>, Error> {
     list.iter()
@@ -68,6 +69,82 @@ fn cascades_given_once(a: &WarpArgs) -> Result<(), Error> {
     Ok(())
 }
 
+/// The scene's boxes, owned (the frame input borrows them).
+pub struct Boxes {
+    receivers: Vec<Aabb>,
+    casters: Vec<Aabb>,
+}
+
+impl Boxes {
+    /// `--receivers` and `--casters` as boxes, each checked.
+    pub fn new(b: &BoundsArgs) -> Result<Self, Error> {
+        Ok(Self {
+            receivers: boxes(&b.receivers, "receivers")?,
+            casters: boxes(&b.casters, "casters")?,
+        })
+    }
+}
+
+/// The frame input of the camera (world = eye), the light and the bounds, with [`RESOLUTION`]
+/// texels per map and an image `image_height` pixels high; its scheme is set by the caller.
+pub fn frame_input<'a>(
+    c: &CameraArgs,
+    light: DVec3,
+    b: &BoundsArgs,
+    boxes: &'a Boxes,
+    image_height: u32,
+) -> Result<FrameInput<'a>, Error> {
+    let cam = Camera::new(
+        DMat4::IDENTITY,
+        c.near,
+        c.far,
+        c.half_fov,
+        b.aspect.unwrap_or(1.0),
+    )?;
+    let mut input =
+        FrameInput::new(cam, light, RESOLUTION, image_height).depth_clamp(b.depth_clamp);
+    if !boxes.receivers.is_empty() {
+        input = input.receivers(Bound::Boxes(&boxes.receivers));
+    }
+    if !boxes.casters.is_empty() {
+        input = input.casters(Bound::Boxes(&boxes.casters));
+    }
+    if let Some([z0, z1]) = b.depth_range {
+        input = input.depth_range(z0, z1);
+    }
+    Ok(input)
+}
+
+/// `--warp trapezoid`: the frame's trapezoidal map, which takes `--focus` alone.
+fn trapezoid(a: &WarpArgs) -> Result<FrameScheme<'static>, Error> {
+    let (sc, sch) = (&a.scene, &a.scheme);
+    let extra = [
+        (sch.eta.is_some(), "eta"),
+        (sch.near_hint.is_some(), "near_hint"),
+        (sch.shadow_distance.is_some(), "shadow_distance"),
+        (sch.lambda.is_some(), "lambda"),
+        (sch.ratio.is_some(), "ratio"),
+        (sch.partition != PartitionName::Single, "partition"),
+        (sch.k != 1, "k"),
+        (sc.stable, "stable"),
+        (sc.splits.is_some(), "splits"),
+        (sc.fractions.is_some(), "fractions"),
+        (sc.bevy.is_some(), "bevy"),
+        (sc.overlap.is_some(), "overlap"),
+    ];
+    if let Some((_, name)) = extra.iter().find(|(given, _)| *given) {
+        return Err(Error::invalid(
+            name,
+            "is not used by --warp trapezoid, one trapezoidal map (its only parameter is \
+             --focus): drop it",
+        ));
+    }
+    Ok(FrameScheme::Tsm(TsmOptions {
+        focus: sch.focus.unwrap_or(0.5 * (a.camera.far - a.camera.near)),
+        search: TsmSearch::EightyPercent,
+    }))
+}
+
 /// The text or JSON of `warp` with a scene.
 pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
     let c = &a.camera;
@@ -75,7 +152,22 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
     let light = DVec3::from_array(a.light_dir);
     let sc = &a.scene;
     let sch = &a.scheme;
+    let boxes = Boxes::new(&sc.bounds)?;
+    if sch.warp == WarpName::Trapezoid {
+        let input = frame_input(c, light, &sc.bounds, &boxes, RESOLUTION)?.scheme(trapezoid(a)?);
+        let f = frame(&input)?;
+        return Ok(if a.json { json(a, &f) } else { text(a, &f) });
+    }
     cascades_given_once(a)?;
+    if sc.stable && sch.warp != WarpName::Uniform {
+        return Err(Error::invalid(
+            "stable",
+            format!(
+                "cascades are unwarped (world-fixed squares): give --warp uniform (got --warp {})",
+                value_name(&sch.warp)
+            ),
+        ));
+    }
     let r = rule(&view, Lights::One(light), sch)?;
     let k = k(sch)?;
     let overlap = sc.overlap.unwrap_or(0.0);
@@ -172,21 +264,23 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
             }
         }
     };
-    let receivers = boxes(&sc.receivers, "receivers")?;
-    let casters = boxes(&sc.casters, "casters")?;
-    let cam = Camera::new(DMat4::IDENTITY, c.near, c.far, c.half_fov, 1.0)?;
-    let mut input = FrameInput::new(cam, light, RESOLUTION, RESOLUTION)
-        .scheme(fs)
-        .depth_clamp(sc.depth_clamp);
-    if !receivers.is_empty() {
-        input = input.receivers(Bound::Boxes(&receivers));
-    }
-    if !casters.is_empty() {
-        input = input.casters(Bound::Boxes(&casters));
-    }
-    if let Some([z0, z1]) = sc.depth_range {
-        input = input.depth_range(z0, z1);
-    }
+    let fs = match (sc.stable, fs) {
+        (false, fs) => fs,
+        (true, FrameScheme::Cascades { splits, .. }) => FrameScheme::Stable(splits),
+        (true, FrameScheme::Single(_)) => FrameScheme::Stable(CascadeSplits::Scheme {
+            scheme: SplitScheme::SelfSimilar,
+            k: 1,
+            overlap: 0.0,
+        }),
+        (true, _) => {
+            return Err(Error::invalid(
+                "stable",
+                "needs cascades (--partition other than faces, --splits, --fractions or \
+                 --bevy) or none: drop --stable or --partition faces",
+            ))
+        }
+    };
+    let input = frame_input(c, light, &sc.bounds, &boxes, RESOLUTION)?.scheme(fs);
     // The cascades' planes are the user's --splits: named so.
     let f = frame(&input).map_err(|e| match e {
         Error::InvalidArgument {

@@ -182,8 +182,11 @@ pub fn rule(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> Result<WarpRu
     if a.eta.is_some() && a.warp != WarpName::Eta {
         return Err(Error::invalid("eta", "is only used by --warp eta"));
     }
-    if a.focus.is_some() && a.warp != WarpName::Tsm {
-        return Err(Error::invalid("focus", "is only used by --warp tsm"));
+    if a.focus.is_some() && !matches!(a.warp, WarpName::Tsm | WarpName::Trapezoid) {
+        return Err(Error::invalid(
+            "focus",
+            "is only used by --warp tsm and --warp trapezoid",
+        ));
     }
     if a.near_hint.is_some() && a.warp != WarpName::Filament {
         return Err(Error::invalid(
@@ -244,6 +247,13 @@ pub fn rule(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> Result<WarpRu
         WarpName::OgreOrtho => WarpRule::OgreOrtho {
             shadow_distance: a.shadow_distance.unwrap_or(300.0 * view.near()),
         },
+        WarpName::Trapezoid => {
+            return Err(Error::invalid(
+                "warp",
+                "trapezoid is one trapezoidal map of the scene built by the frame API: use it \
+                 with warp alone, or --warp tsm (TSM's n′ rule) here",
+            ))
+        }
     })
 }
 
