@@ -1,0 +1,295 @@
+//! The engine ports of `benches/reference/` (issue 23 item 9) against values derived by hand and
+//! against the engines' documented properties, not against their own arithmetic: Bevy's cascade
+//! holds its whole frustum slice in its clip volume (reversed depth), its size is the slice's
+//! larger diagonal rounded up, its centre lies on whole texels; Filament's frustum–box
+//! intersection yields the hull's vertices, its LiSPSM n_opt is (z₀ + √(z₀ z₁))/sin γ, and its
+//! focused map holds every visible receiver point.
+
+#[allow(dead_code)]
+#[path = "../benches/reference/bevy_cascade.rs"]
+mod bevy_cascade;
+#[allow(dead_code)]
+#[path = "../benches/reference/filament_directional.rs"]
+mod filament_directional;
+
+use bevy_cascade::{
+    build_directional_light_cascades, light_rotation_looking_to, Cascade, CascadeShadowConfig,
+    PerspectiveProjection,
+};
+use filament_directional::{
+    intersect_frustum_with_box, update_cascade_shadow_maps, Aabb, CameraInfo, DirectionalMap,
+    Renderable, ShadowMapInfo, ShadowOptions,
+};
+use glam::{DMat4, DVec3, Mat4, Vec3};
+use shadow_aliasing::frame::{self, Bound, Camera, FrameInput, FrameScheme};
+use shadow_aliasing::maps::WarpRule;
+
+/// The eight corners of the frustum slice [near, far] of a camera at the origin looking down −Z
+/// (half field of view 30°, square), in f64.
+fn slice_corners(near: f64, far: f64) -> Vec<DVec3> {
+    let t = 30f64.to_radians().tan();
+    let mut v = Vec::new();
+    for z in [near, far] {
+        for (sx, sy) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
+            v.push(DVec3::new(sx * z * t, sy * z * t, -z));
+        }
+    }
+    v
+}
+
+fn clip(m: &Mat4, p: DVec3) -> Vec3 {
+    let h = *m * p.as_vec3().extend(1.0);
+    h.truncate() / h.w
+}
+
+/// Bevy: each cascade's clip volume holds its slice (x, y in [−1, 1], reversed depth in [0, 1]
+/// with the slice's extreme points at 0 and 1), the first cascade's diameter is the hand value,
+/// and the cascade's centre lies on whole texels of the light's frame.
+#[test]
+fn bevy_cascades_hold_their_slices_and_snap_to_texels() {
+    let projection = PerspectiveProjection {
+        fov: 60f32.to_radians(),
+        aspect_ratio: 1.0,
+    };
+    let config = CascadeShadowConfig {
+        bounds: [100.0, 200.0, 400.0, 1000.0],
+        count: 4,
+        overlap_proportion: 0.2,
+        minimum_distance: 1.0,
+    };
+    let dir = Vec3::new(0.3, -0.8, -0.4);
+    let rot = light_rotation_looking_to(dir);
+    let mut out = [Cascade::default(); 4];
+    build_directional_light_cascades(rot, Mat4::IDENTITY, &projection, &config, 2048, &mut out);
+    // Slice [1, 100] at half field of view 30° (tan = 0.57735): body diagonal² = 2 (0.57735 +
+    // 57.735)² + 99² = 16 601.7, far-plane diagonal² = 2 (2 · 57.735)² = 26 666.7: diameter
+    // ⌈163.30⌉ = 164, texel 164 / 2048.
+    assert_eq!(out[0].texel_size, 164.0 / 2048.0);
+    let nears = [1.0, 80.0, 160.0, 320.0];
+    let fars = [100.0, 200.0, 400.0, 1000.0];
+    let world_from_light = Mat4::from_quat(rot);
+    for (i, c) in out.iter().enumerate() {
+        let pts = slice_corners(nears[i], fars[i]);
+        let (mut zmin, mut zmax) = (f32::INFINITY, f32::NEG_INFINITY);
+        for p in &pts {
+            let q = clip(&c.clip_from_world, *p);
+            assert!(
+                q.x.abs() <= 1.0 + 1e-5 && q.y.abs() <= 1.0 + 1e-5,
+                "cascade {i}: {q}"
+            );
+            zmin = zmin.min(q.z);
+            zmax = zmax.max(q.z);
+        }
+        assert!(
+            zmin.abs() < 1e-4 && (zmax - 1.0).abs() < 1e-4,
+            "cascade {i}: depth {zmin}..{zmax}"
+        );
+        // The light travels along the cascade's −Z: a point further along the light is deeper
+        // (smaller reversed depth).
+        let p = DVec3::new(0.0, 0.0, -0.5 * (nears[i] + fars[i]));
+        let d = (0.1 * dir.normalize()).as_dvec3();
+        assert!(clip(&c.clip_from_world, p + d).z < clip(&c.clip_from_world, p).z);
+        // The centre in the light's frame, in texels: a whole number (stability).
+        let centre = world_from_light.transpose() * c.world_from_cascade.w_axis;
+        for v in [centre.x, centre.y] {
+            let t = v / c.texel_size;
+            assert!(
+                (t - t.round()).abs() < 1e-3,
+                "cascade {i}: centre {v} = {t} texels"
+            );
+        }
+    }
+}
+
+/// Filament's `intersectFrustumWithBox`: a thin box through the near plane gives its four far
+/// corners (step b) and its four edges' crossings of the near plane (step c), and nothing else.
+#[test]
+fn filament_frustum_box_intersection_is_the_hull_by_hand() {
+    let cam = CameraInfo::perspective(Mat4::IDENTITY, 60.0, 1.0, 1.0, 100.0);
+    let projection = cam.culling_projection * cam.view;
+    let bx = Aabb {
+        min: Vec3::new(-0.1, -0.1, -2.0),
+        max: Vec3::new(0.1, 0.1, 0.5),
+    };
+    let mut out = [Vec3::ZERO; 64];
+    let n = intersect_frustum_with_box(&mut out, &projection, &bx);
+    let mut expected = Vec::new();
+    for z in [-2.0, -1.0] {
+        for (x, y) in [(0.1, 0.1), (0.1, -0.1), (-0.1, 0.1), (-0.1, -0.1)] {
+            expected.push(Vec3::new(x, y, z));
+        }
+    }
+    assert_eq!(n, 8, "{:?}", &out[..n]);
+    for e in &expected {
+        assert!(
+            out[..n].iter().any(|p| (*p - *e).length() < 1e-5),
+            "{e} missing: {:?}",
+            &out[..n]
+        );
+    }
+}
+
+/// Filament's whole directional path on a hand case: light straight down (sin γ = 1), a box
+/// [−2, 2] × [−2, 0] × [−20, −10] inside the frustum as receiver and caster, camera n = 1,
+/// f = 100, default hints (1, 100). Then dzn = dzf = 0, z₀ = 10, z₁ = z₀ + d sin γ = 20 (d = 10,
+/// the box's depth along the view) and n_opt = z₀ + √(z₀ z₁) = 10 + √200 (Filament's
+/// `applyLISPSM`, Wimmer et al.'s formula). The crate's `WarpRule::Filament` gives the same n′ on
+/// the same focus body. The focused map holds the box's corners in clip range and touches its
+/// x and y edges; the texture matrix puts them inside the 1-texel border.
+#[test]
+fn filament_lispsm_by_hand() {
+    let cam = CameraInfo::perspective(Mat4::IDENTITY, 60.0, 1.0, 1.0, 100.0);
+    let bx = Aabb {
+        min: Vec3::new(-2.0, -2.0, -20.0),
+        max: Vec3::new(2.0, 0.0, -10.0),
+    };
+    let scene = [Renderable {
+        aabb: bx,
+        cast_shadows: true,
+        receive_shadows: true,
+    }];
+    let info = ShadowMapInfo::new(2048);
+    let mut out: [Option<DirectionalMap>; 4] = [None; 4];
+    let dir = Vec3::new(0.0, -1.0, 0.0);
+    let visible = update_cascade_shadow_maps(
+        dir,
+        &cam,
+        &ShadowOptions::default(),
+        &info,
+        &scene,
+        &[],
+        true,
+        false,
+        &mut out,
+    );
+    assert_eq!(visible, 1);
+    let m = out[0].unwrap();
+    let n_opt = 10.0 + 200f32.sqrt();
+    assert!(
+        (m.wp.x_axis.x - n_opt).abs() < 1e-4 * n_opt,
+        "{} vs {n_opt}",
+        m.wp.x_axis.x
+    );
+
+    // The crate's Filament rule on the same body (B = the box: it lies inside the frustum).
+    let camera = Camera::new(DMat4::IDENTITY, 1.0, 100.0, 30f64.to_radians(), 1.0).unwrap();
+    let boxes =
+        [frame::Aabb::new(DVec3::new(-2.0, -2.0, -20.0), DVec3::new(2.0, 0.0, -10.0)).unwrap()];
+    let input = FrameInput::new(camera, DVec3::new(0.0, -1.0, 0.0), 2048, 1080)
+        .receivers(Bound::Boxes(&boxes))
+        .casters(Bound::Boxes(&boxes))
+        .scheme(FrameScheme::Single(WarpRule::Filament));
+    let f = frame::frame(&input).unwrap();
+    let crate_n = f.maps().iter().next().unwrap().shadow.n_prime().value();
+    assert!(
+        (crate_n - f64::from(n_opt)).abs() < 1e-9 * crate_n,
+        "{crate_n}"
+    );
+
+    let (mut mx, mut my) = (0f32, 0f32);
+    let border = 1.0 / 2048.0;
+    for c in bx.corners() {
+        let q = m.s * c.extend(1.0);
+        let q = q.truncate() / q.w;
+        assert!(q.abs().max_element() <= 1.0 + 1e-5, "{c}: {q}");
+        mx = mx.max(q.x.abs());
+        my = my.max(q.y.abs());
+        let t = m.light_space * c.extend(1.0);
+        let t = t.truncate() / t.w;
+        for u in [t.x, t.y] {
+            assert!(
+                (border - 1e-6..=1.0 - border + 1e-6).contains(&u),
+                "{c}: {t}"
+            );
+        }
+        assert!((-1e-6..=1.0 + 1e-6).contains(&t.z), "{c}: {t}");
+    }
+    assert!(
+        (mx - 1.0).abs() < 1e-4 && (my - 1.0).abs() < 1e-4,
+        "{mx} {my}"
+    );
+}
+
+/// Filament on the benchmark scene (a ground box 100 × 5 × 100 in front of the camera, a tower,
+/// camera n = 1, f = 1000): every point of the ground that the camera sees lies in the focused
+/// map's clip range, for one map and for four cascades (those with visible shadows).
+#[test]
+fn filament_focus_holds_the_visible_receivers() {
+    let cam = CameraInfo::perspective(Mat4::IDENTITY, 60.0, 1.0, 1.0, 1000.0);
+    let ground = Aabb {
+        min: Vec3::new(-50.0, -5.0, -100.0),
+        max: Vec3::new(50.0, 0.0, 0.0),
+    };
+    let tower = Aabb {
+        min: Vec3::new(-10.0, 0.0, -60.0),
+        max: Vec3::new(10.0, 20.0, -40.0),
+    };
+    let scene = [
+        Renderable {
+            aabb: ground,
+            cast_shadows: true,
+            receive_shadows: true,
+        },
+        Renderable {
+            aabb: tower,
+            cast_shadows: true,
+            receive_shadows: false,
+        },
+    ];
+    let info = ShadowMapInfo::new(2048);
+    let dir = Vec3::new(0.3, -0.8, -0.4).normalize();
+    let t = 30f32.to_radians().tan();
+    for splits in [&[][..], &[0.05, 0.125, 0.3][..]] {
+        let mut out: [Option<DirectionalMap>; 4] = [None; 4];
+        let visible = update_cascade_shadow_maps(
+            dir,
+            &cam,
+            &ShadowOptions::default(),
+            &info,
+            &scene,
+            splits,
+            true,
+            false,
+            &mut out,
+        );
+        assert!(visible >= 1);
+        let bounds: Vec<f32> = std::iter::once(1.0)
+            .chain(splits.iter().map(|s| 1.0 + 999.0 * s))
+            .chain(std::iter::once(1000.0))
+            .collect();
+        let mut checked = 0;
+        for (i, m) in out.iter().enumerate().take(splits.len() + 1) {
+            let (zn, zf) = (bounds[i], bounds[i + 1]);
+            let Some(m) = m else {
+                // No shadows only where the slice misses the ground (beyond z = −100).
+                assert!(zn > 100.0, "slice {zn}..{zf} has no map");
+                continue;
+            };
+            for ix in 0..=20 {
+                for iy in 0..=5 {
+                    for iz in 0..=40 {
+                        let p = Vec3::new(
+                            -50.0 + 5.0 * ix as f32,
+                            -(iy as f32),
+                            -(zn + (zf.min(100.0) - zn) * iz as f32 / 40.0),
+                        );
+                        let d = -p.z;
+                        if d < zn || d > zf || p.x.abs() > d * t || p.y.abs() > d * t {
+                            continue;
+                        }
+                        let q = m.s * p.extend(1.0);
+                        let q = q.truncate() / q.w;
+                        assert!(
+                            q.x.abs() <= 1.0 + 1e-4
+                                && q.y.abs() <= 1.0 + 1e-4
+                                && q.z.abs() <= 1.0 + 1e-4,
+                            "slice {zn}..{zf}: {p} maps to {q}"
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+        }
+        assert!(checked > 1000, "{checked}");
+    }
+}
