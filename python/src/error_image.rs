@@ -22,6 +22,12 @@ use shadow_aliasing::Error;
 
 type Any<'py> = Bound<'py, PyAny>;
 
+/// One pixel's answer: the error and J's four entries (row-major).
+type Pixel = [f64; 5];
+
+/// The first pixel (index, argument to blame, reason) the crate refuses.
+type Failure = (usize, &'static str, String);
+
 /// An array argument's shape and values (C order); a number is refused, naming the argument.
 fn array(name: &str, ob: &Any<'_>) -> PyResult<(Vec<usize>, Vec<f64>)> {
     match FloatArg::extract(name, ob)? {
@@ -190,7 +196,7 @@ pub fn error_image<'py>(
     let camera = proj * view_m;
     let eye = inv_view.transform_point3(DVec3::ZERO);
     let n = h * w;
-    let image: Result<Vec<[f64; 5]>, (usize, &'static str, String)> = py.detach(|| {
+    let image: Result<Vec<Pixel>, Failure> = py.detach(|| {
         // Pass 1: each pixel's world point (NaN where there is none).
         let mut points = vec![DVec3::NAN; n];
         points.par_chunks_mut(w).enumerate().for_each(|(y, row)| {
@@ -221,7 +227,7 @@ pub fn error_image<'py>(
         });
         // Pass 2: normal, map and footprint.
         let none = [fill, f64::NAN, f64::NAN, f64::NAN, f64::NAN];
-        let result: Vec<Result<[f64; 5], (usize, &'static str, String)>> = (0..n)
+        let result: Vec<Result<Pixel, Failure>> = (0..n)
             .into_par_iter()
             .map(|i| {
                 let p = points[i];
