@@ -2,6 +2,7 @@
 //! fractions, Bevy's splits) and the stable cascade of a slice.
 
 use super::body::depth_extent;
+use super::body::Body;
 use super::equal_error::SliceMap;
 use super::input::CascadeSplits;
 use super::output::Focus;
@@ -201,18 +202,40 @@ impl Ctx<'_, '_> {
         if body.focus == Focus::Empty || body.n == 0 {
             return Ok(Built::None(Focus::Empty));
         }
+        let res = f64::from(self.input.map_resolution);
+        let (c, r) = bounding_sphere(self.view, s.cover.0, s.cover.1)?;
+        let half = r * res / (res - 2.0);
+        let texel = 2.0 * half / res;
+        let cw = self
+            .input
+            .camera
+            .eye_to_world
+            .transform_point3(DVec3::new(0.0, 0.0, -c));
+        self.square_map(s, &body, cw, half, texel)
+    }
+
+    /// The map of `body` (the slice `s`'s B, not empty) on the square of half-width `half` of
+    /// the world-fixed light space (y toward the light, z the world −Z projected), centred on
+    /// the world point `centre`'s light-space x, z snapped to whole multiples of `snap`; its depth
+    /// range from B and the casters, snapped to whole texels. Stable cascades snap to a texel,
+    /// clipmap levels to a page (`frame/clipmap.rs`).
+    pub(super) fn square_map(
+        &self,
+        s: &Slice,
+        body: &Body,
+        centre: DVec3,
+        half: f64,
+        snap: f64,
+    ) -> Result<Built> {
         let pts = &body.v[..body.n];
         let cam = &self.input.camera;
         let res = f64::from(self.input.map_resolution);
-        let (c, r) = bounding_sphere(self.view, s.cover.0, s.cover.1)?;
         // World-fixed light space (y toward the light, z the world −Z projected).
         let ls_w = light_space_unit(LightDir::from_unit_unchecked(self.lw), DVec3::NEG_Z);
-        let half = r * res / (res - 2.0);
         let texel = 2.0 * half / res;
-        let cw = cam.eye_to_world.transform_point3(DVec3::new(0.0, 0.0, -c));
-        let q = ls_w.to_light(cw);
-        let sx = (q.x / texel).round() * texel;
-        let sz = (q.z / texel).round() * texel;
+        let q = ls_w.to_light(centre);
+        let sx = (q.x / snap).round() * snap;
+        let sz = (q.z / snap).round() * snap;
         // The light space in eye coordinates (rotation only; offsets cancel in the fit).
         let rot = |v: DVec3| cam.world_to_eye.transform_vector3(v);
         let ls_e = LightSpace {
@@ -256,14 +279,14 @@ impl Ctx<'_, '_> {
         // near f64's range) their rounding, amplified by 1/half, can leave B outside the map.
         if !matrix.is_finite() {
             return Err(Error::Degenerate(
-                "the stable cascade's matrix overflows f64 for this frustum".into(),
+                "the world-fixed map's matrix (stable cascade or clipmap level) overflows f64 for this frustum".into(),
             ));
         }
         if let Err(f) = verify_clip(&matrix, pts.iter()) {
             // World positions round by about |p| ε; amplified by 1/half they move B's vertices
             // in the map by that over the clip slack (10⁻⁶) when the camera is far from the
             // origin: then the offset, not the depth ratio, is the cause.
-            let dist = cw.length();
+            let dist = centre.length();
             return Err(if dist * f64::EPSILON / half > 1e-8 {
                 stable_far_from_origin(dist, half)
             } else {
@@ -284,13 +307,13 @@ impl Ctx<'_, '_> {
     }
 }
 
-/// A stable cascade whose world-fixed square cannot hold its focus body because the camera is
-/// far from the world origin (world positions round by |p| ε there).
+/// A world-fixed square (a stable cascade or a clipmap level) that cannot hold its focus body
+/// because the camera is far from the world origin (world positions round by |p| ε there).
 #[cold]
 #[inline(never)]
 fn stable_far_from_origin(dist: f64, half: f64) -> Error {
     Error::Degenerate(format!(
-        "a stable cascade of half-width {} lies {} from the world origin, where f64 rounds world \
+        "a stable cascade or clipmap level of half-width {} lies {} from the world origin, where f64 rounds world \
          positions by about {:.1e} ({:.0e} of the half-width), too coarse to snap its world-fixed \
          square and keep the focus body inside it: move the world origin near the camera \
          (render relative to the camera or rebase the scene), or use cascades that are not \

@@ -1,5 +1,6 @@
 //! The frame's inputs: the camera, the scene's bounds, the scheme, and their validation.
 
+use super::clipmap::ClipmapOptions;
 use super::MAX_BOUND_PLANES;
 use crate::analytic::partition::SplitScheme;
 use crate::error::{fmt_num, Error, Result};
@@ -266,6 +267,12 @@ pub enum FrameScheme<'a> {
         /// Z-partitions per side face, 1..=[`MAX_FACE_K`](crate::frame::MAX_FACE_K) (4k + 1 maps fit the frame's slots).
         k: usize,
     },
+    /// A clipmap, as Unreal 5's virtual shadow maps for a directional light (issue 24): nested,
+    /// camera-centred orthographic levels of `map_resolution` texels, the radius doubling per
+    /// level, each snapped to its pages; one map per level the visible depths need, finest
+    /// first, each covering the depths where the shader picks it
+    /// ([`LevelChoice`](crate::frame::LevelChoice), `frame/clipmap.rs`).
+    Clipmap(ClipmapOptions),
 }
 
 /// Everything the frame needs (see the module docs). Build with [`FrameInput::new`] and the

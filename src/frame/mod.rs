@@ -77,6 +77,7 @@ pub mod bias;
 mod body;
 mod cascade;
 mod casters;
+mod clipmap;
 mod culling;
 mod equal_error;
 mod faces;
@@ -87,6 +88,7 @@ mod upload;
 mod wgsl;
 
 pub use bias::Bias;
+pub use clipmap::{ClipmapOptions, LevelChoice};
 pub use culling::{CullVolume, MAX_CULL_PLANES};
 pub use input::{Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme, WarpCentre};
 pub use output::{Focus, Frame, FrameMap, FrameMaps, LightCase, MapError};
@@ -236,6 +238,7 @@ fn fill(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
             (1, WarpRule::Uniform, false)
         }
         FrameScheme::Faces { rule, k } => return ctx.faces_into(rule, k, (zn, zf), out),
+        FrameScheme::Clipmap(opts) => return ctx.clipmap_into(opts, (zn, zf), out),
     };
     for s in &slices[..k] {
         let m = match input.scheme {

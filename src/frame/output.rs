@@ -109,6 +109,9 @@ pub struct FrameMap {
     /// passes and, for a side face, by `split`, the depths of that part of the face); `None` for
     /// every other scheme.
     pub face: Option<Face>,
+    /// The level of a clipmap ([`FrameScheme::Clipmap`](super::FrameScheme::Clipmap)); `None`
+    /// for every other scheme.
+    pub clipmap_level: Option<i32>,
     /// The camera's world → eye (the upload forms in `upload.rs` compose it with the map).
     pub(super) world_to_eye: DMat4,
     body: [DVec3; MAX_BODY_VERTICES],
@@ -427,6 +430,7 @@ impl Ctx<'_, '_> {
             max_error_pixels: err.map_or(f64::INFINITY, |e| e.max_mx.max(e.max_mz) * image / res),
             focus,
             face: None,
+            clipmap_level: None,
             world_to_eye: self.input.camera.world_to_eye,
             body,
             body_len: pts.len(),

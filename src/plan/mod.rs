@@ -13,6 +13,7 @@
 
 pub mod allocate;
 pub mod candidates;
+pub mod clipmap;
 pub mod planner;
 
 pub use planner::{plan, plan_among, Candidate, Goal, Measured, Plan};

@@ -1,0 +1,359 @@
+//! Clipmaps, as Unreal 5's virtual shadow maps lay them out for a directional light
+//! ([`FrameScheme::Clipmap`](super::FrameScheme::Clipmap), issue 24 item 4).
+//!
+//! # The levels
+//!
+//! Level i is an orthographic map of `map_resolution` texels per side (Unreal: 16 384, 128 × 128
+//! pages of 128² texels). Its square, in a world-fixed light space, has half-width
+//! `2^{i+2} · unit` and covers the disc of radius `2^{i+1} · unit` around the camera. The radius
+//! doubles per level. The square is centred on the camera, snapped to whole pages, so the page
+//! grid is fixed in the world. Unreal's `VirtualShadowMapClipmap.cpp` sets the same sizes:
+//! `GetLevelRadius(Level) = 2^(Level+1)` and `HalfLevelDim = 2 · RawLevelRadius`, in
+//! centimetres. It snaps coarser, to the radius (a quarter of the level, 32 pages). That choice
+//! moves the square less often but leaves the page grid and the page counts unchanged.
+//!
+//! # The level choice ([`LevelChoice`])
+//!
+//! The shader picks, at eye depth z, the coarsest level whose texel is no coarser than `2^b`
+//! pixels, b the LOD bias. Every finer level meets the bound too, but it costs more pages. The
+//! issue's "finest level whose texel is no coarser than a pixel" means this level: read
+//! literally, the finest such level would always be the first. A pixel at depth z is
+//! `w(z) = 2 z tan θ / H` wide (θ the half vertical field of view, H the image's height), and
+//! level i's texel is `t_i = 2^{i+3} · unit / R`. So
+//!
+//! ```text
+//! level(z) = clamp(⌊log₂ z + L⌋, first_level, last_level),  L = b + log₂(tan θ · R / (4 · unit · H))
+//! ```
+//!
+//! and at depths where no clamp applies the level's error, `t_i / w(z)`, lies in
+//! `(2^{b−1}, 2^b]`. Each level must also cover what it is chosen for. A point at depth z lies
+//! within `k z` of the camera, `k = √(1 + tan²θ (1 + aspect²))` (the frustum's corner ray). Level
+//! `⌊log₂ z + log₂(k/unit)⌋` covers that distance, so L is raised to at least `log₂(k / unit)`.
+//! This is Unreal's clamp of its total LOD bias at 0, in the crate's terms. Above that bound
+//! the effective bias ([`LevelChoice::bias`]) is larger than the one asked for.
+//!
+//! Each level is a map of the frame ([`FrameMap`](super::FrameMap)). Its focus body is B cut to
+//! the depths where the level is chosen (its `split`). Its error, culling volumes and bias are
+//! those of any other map. Its depth range covers B and the casters, snapped to whole texels, as
+//! a stable cascade's is. `FrameMap::clipmap_level` names the level.
+
+use super::output::Focus;
+use super::{Built, Ctx, Frame, Slice};
+use crate::analytic::partition::MAX_PARTITIONS;
+use crate::error::{fmt_num, Error, Result};
+use crate::frustum::ViewFrustum;
+
+/// The levels that [`ClipmapOptions`] accepts: −64..=64 (radii 2^−63 to 2^65 units).
+const LEVEL_RANGE: std::ops::RangeInclusive<i32> = -64..=64;
+
+/// The LOD biases that [`ClipmapOptions`] accepts: a texel 2^±32 pixels wide is not a shadow.
+const MAX_LOD_BIAS: f64 = 32.0;
+
+/// The layout of a clipmap ([`FrameScheme::Clipmap`](super::FrameScheme::Clipmap)); the levels'
+/// resolution is the frame's `map_resolution`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ClipmapOptions {
+    /// The finest level (Unreal `r.Shadow.Virtual.Clipmap.FirstLevel`, 6).
+    pub first_level: i32,
+    /// The coarsest level (Unreal `r.Shadow.Virtual.Clipmap.LastLevel`, 22).
+    pub last_level: i32,
+    /// The LOD bias b: the chosen level's texel is at most 2^b pixels, and more than 2^{b−1}
+    /// (Unreal `r.Shadow.Virtual.ResolutionLodBiasDirectional`, −0.5; −1 doubles the
+    /// resolution).
+    pub lod_bias: f64,
+    /// The world length of one unit of the level sizes: level i covers radius 2^{i+1} units.
+    /// Unreal's unit is the centimetre, so 0.01 for a world in metres.
+    pub unit: f64,
+    /// Texels per page side (Unreal 128); divides the map resolution, at least 2 pages a side.
+    pub page_texels: u32,
+}
+
+impl ClipmapOptions {
+    /// Unreal 5's defaults for a world in metres: levels 6 to 22 of radius 2^{i+1} cm, LOD bias
+    /// −0.5, pages of 128² texels (with a `map_resolution` of 16 384: 128 × 128 pages).
+    pub const UNREAL: Self = Self {
+        first_level: 6,
+        last_level: 22,
+        lod_bias: -0.5,
+        unit: 0.01,
+        page_texels: 128,
+    };
+
+    /// The half-width of level `level`'s square, world units: `2^{level+2} · unit`.
+    #[must_use]
+    pub fn half_width(&self, level: i32) -> f64 {
+        self.unit * f64::from(level + 2).exp2()
+    }
+
+    /// The radius around the camera that level `level` covers, world units: `2^{level+1} · unit`.
+    #[must_use]
+    pub fn radius(&self, level: i32) -> f64 {
+        self.unit * f64::from(level + 1).exp2()
+    }
+
+    /// Every field in its domain, for levels of `resolution` texels.
+    fn check(&self, resolution: u32) -> Result<()> {
+        for (name, l) in [
+            ("first_level", self.first_level),
+            ("last_level", self.last_level),
+        ] {
+            if !LEVEL_RANGE.contains(&l) {
+                return Err(Error::invalid(
+                    name,
+                    format!(
+                        "must be in {}..={} (got {l}): the levels' radii 2^(level+1) · unit \
+                         must be finite; change unit instead",
+                        LEVEL_RANGE.start(),
+                        LEVEL_RANGE.end()
+                    ),
+                ));
+            }
+        }
+        if self.first_level > self.last_level {
+            return Err(Error::invalid(
+                "first_level",
+                format!(
+                    "must not exceed last_level (got first_level={}, last_level={})",
+                    self.first_level, self.last_level
+                ),
+            ));
+        }
+        if !(self.lod_bias.is_finite() && self.lod_bias.abs() <= MAX_LOD_BIAS) {
+            return Err(Error::invalid(
+                "lod_bias",
+                format!(
+                    "must be finite and within ±{MAX_LOD_BIAS} (got {}); Unreal's default is -0.5",
+                    fmt_num(self.lod_bias)
+                ),
+            ));
+        }
+        if !(self.unit.is_finite() && self.unit > 0.0) {
+            return Err(Error::invalid(
+                "unit",
+                format!(
+                    "must be a finite length > 0 (got {}): 0.01 for a world in metres (Unreal's \
+                     levels are in centimetres)",
+                    fmt_num(self.unit)
+                ),
+            ));
+        }
+        let p = self.page_texels;
+        if p == 0 || resolution % p != 0 || resolution / p < 2 {
+            return Err(Error::invalid(
+                "page_texels",
+                format!(
+                    "must divide map_resolution into at least 2 pages a side (got page_texels={p}, \
+                     map_resolution={resolution}); Unreal's pages are 128 texels of 16384"
+                ),
+            ));
+        }
+        Ok(())
+    }
+}
+
+impl Default for ClipmapOptions {
+    /// [`ClipmapOptions::UNREAL`].
+    fn default() -> Self {
+        Self::UNREAL
+    }
+}
+
+/// The shader's level choice for a camera, an image and a clipmap (module docs): `level(z) =
+/// clamp(⌊log₂ z + offset⌋, first_level, last_level)` at eye depth z.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LevelChoice {
+    /// L of `level(z) = clamp(⌊log₂ z + L⌋, first_level, last_level)`.
+    pub offset: f64,
+    /// The finest level.
+    pub first_level: i32,
+    /// The coarsest level.
+    pub last_level: i32,
+    /// The LOD bias in effect: the one asked for, or larger where the levels could not cover
+    /// what they are chosen for with it (module docs). Unclamped levels' errors lie in
+    /// `(2^{bias−1}, 2^bias]` pixels.
+    pub bias: f64,
+    /// The clipmap's layout.
+    pub options: ClipmapOptions,
+    /// The levels' texels per side.
+    pub resolution: u32,
+    /// tan θ of the camera.
+    pub tan_half_fov: f64,
+    /// The image's height in pixels.
+    pub image_height: u32,
+}
+
+impl LevelChoice {
+    /// The level choice for the camera `view`, an image `image_height` pixels high and levels of
+    /// `resolution` texels laid out as `options`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `image_height` (0), `map_resolution` (< 3), or a field of
+    /// [`ClipmapOptions`] out of its domain.
+    pub fn new(
+        view: &ViewFrustum,
+        image_height: u32,
+        resolution: u32,
+        options: &ClipmapOptions,
+    ) -> Result<Self> {
+        if image_height == 0 {
+            return Err(Error::invalid("image_height", "must be at least 1 pixel"));
+        }
+        if resolution < 3 {
+            return Err(Error::invalid(
+                "map_resolution",
+                format!("must be at least 3 texels (got {resolution})"),
+            ));
+        }
+        options.check(resolution)?;
+        let t = view.tan_half_fov();
+        let a = view.aspect();
+        let matched =
+            (t * f64::from(resolution) / (4.0 * options.unit * f64::from(image_height))).log2();
+        let covered = ((1.0 + t * t * (1.0 + a * a)).sqrt() / options.unit).log2();
+        let offset = (options.lod_bias + matched).max(covered);
+        Ok(Self {
+            offset,
+            first_level: options.first_level,
+            last_level: options.last_level,
+            bias: offset - matched,
+            options: *options,
+            resolution,
+            tan_half_fov: t,
+            image_height,
+        })
+    }
+
+    /// The level the shader picks at eye depth `depth` > 0 (the WGSL function of docs/planning.md
+    /// computes the same in `f32`).
+    #[must_use]
+    pub fn level(&self, depth: f64) -> i32 {
+        let l = (depth.log2() + self.offset).floor();
+        // Clamped in f64 first: a depth of 0 or +∞ gives ∓∞, which `as` would saturate anyway.
+        l.clamp(f64::from(self.first_level), f64::from(self.last_level)) as i32
+    }
+
+    /// The depth from which `level` is chosen when no clamp applies, `2^{level − offset}`.
+    #[must_use]
+    pub fn level_start(&self, level: i32) -> f64 {
+        (f64::from(level) - self.offset).exp2()
+    }
+
+    /// Level `level`'s texel edge, world units: `2 · half_width / resolution`.
+    #[must_use]
+    pub fn texel(&self, level: i32) -> f64 {
+        2.0 * self.options.half_width(level) / f64::from(self.resolution)
+    }
+
+    /// Level `level`'s page edge, world units.
+    #[must_use]
+    pub fn page(&self, level: i32) -> f64 {
+        self.texel(level) * f64::from(self.options.page_texels)
+    }
+
+    /// The error of level `level` at eye depth `depth`, in pixels: its texel over the pixel's
+    /// width there, `t_i H / (2 z tan θ)`; M_x and M_z of the level's map at that depth (an
+    /// orthographic map's texel, measured across the light, against a pixel measured across the
+    /// view, Lloyd 2006 Eq 7–8).
+    #[must_use]
+    pub fn error_at(&self, level: i32, depth: f64) -> f64 {
+        self.texel(level) * f64::from(self.image_height) / (2.0 * depth * self.tan_half_fov)
+    }
+
+    /// The first and last level the visible depths `[z_near, z_far]` need.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `last_level` when the farthest depth needs a coarser
+    /// level than the last (no level would cover it), with the level that would.
+    pub fn levels_needed(&self, z_near: f64, z_far: f64) -> Result<(i32, i32)> {
+        let top = z_far.log2() + self.offset;
+        if top > f64::from(self.last_level) + 1.0 {
+            let needed = top.ceil() - 1.0;
+            return Err(Error::invalid(
+                "last_level",
+                format!(
+                    "is {} but the visible depth {} needs level {needed} (radius {}): raise \
+                     last_level to {needed}, or cut the visible depths to {} (depth_range or far)",
+                    self.last_level,
+                    fmt_num(z_far),
+                    fmt_num(self.options.unit * (needed + 1.0).exp2()),
+                    fmt_num(self.level_start(self.last_level + 1))
+                ),
+            ));
+        }
+        let first = self.level(z_near);
+        let last = ((top.ceil() - 1.0) as i32).clamp(first, self.last_level);
+        Ok((first, last))
+    }
+
+    /// The depths where `level` is chosen within `[z_near, z_far]`, for `level` in
+    /// [`LevelChoice::levels_needed`]'s range.
+    #[must_use]
+    pub fn level_depths(&self, level: i32, z_near: f64, z_far: f64) -> (f64, f64) {
+        let a = if level <= self.first_level {
+            z_near
+        } else {
+            self.level_start(level).max(z_near)
+        };
+        (a, self.level_start(level + 1).min(z_far))
+    }
+}
+
+impl Ctx<'_, '_> {
+    /// The clipmap's levels over the visible depths `[zn, zf]` into `out`, finest first, one
+    /// slot per level needed (`None` where B has no volume at its depths).
+    pub(super) fn clipmap_into(
+        &self,
+        opts: ClipmapOptions,
+        (zn, zf): (f64, f64),
+        out: &mut Frame,
+    ) -> Result<()> {
+        let choice = LevelChoice::new(
+            self.view,
+            self.input.image_height,
+            self.input.map_resolution,
+            &opts,
+        )?;
+        let (first, last) = choice.levels_needed(zn, zf)?;
+        let count = (last - first + 1) as usize;
+        if count > MAX_PARTITIONS {
+            return Err(Error::invalid(
+                "depth_range",
+                format!(
+                    "needs {count} clipmap levels ({first} to {last}), more than the frame's \
+                     {MAX_PARTITIONS} maps: cut the visible depths (depth_range), raise \
+                     first_level, or raise lod_bias"
+                ),
+            ));
+        }
+        let camera = self.input.camera.eye_to_world.w_axis.truncate();
+        for level in first..=last {
+            let (a, b) = choice.level_depths(level, zn, zf);
+            let s = Slice {
+                cover: (a, b),
+                split: (a, b),
+                blend: (b, b),
+            };
+            let body = self.body(a, b, &[])?;
+            let built = if body.focus == Focus::Empty || body.n == 0 {
+                Built::None(Focus::Empty)
+            } else {
+                match self.square_map(
+                    &s,
+                    &body,
+                    camera,
+                    opts.half_width(level),
+                    choice.page(level),
+                )? {
+                    Built::Map(mut m) => {
+                        m.clipmap_level = Some(level);
+                        Built::Map(m)
+                    }
+                    none => none,
+                }
+            };
+            out.push(built);
+        }
+        out.settle();
+        Ok(())
+    }
+}
