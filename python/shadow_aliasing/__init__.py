@@ -14,7 +14,8 @@ spelled ``lambda_``).
 
 Builders (4×4 float64 matrices, eye space → light clip space, ``clip = M @ (x, y, z, 1)``):
 ``warp``, ``n_prime_for``, ``cascades``, ``faces``, ``tsm``. World-space frame API (the renderer's path: a view matrix,
-scene boxes, every scheme; dict of arrays): ``frame``. Measurement: ``frustum_max``,
+scene boxes, every scheme; dict of arrays): ``frame``; the cheapest scheme for a target error or
+a texel budget: ``plan``. Measurement: ``frustum_max``,
 ``point_error``; a captured frame's per-pixel error: ``error_image``. Hemisphere sweep: ``sweep`` (all cores; Ctrl-C interrupts it),
 ``sweep_angles``.
 """
@@ -39,6 +40,7 @@ from ._native import (
     n_prime_for,
     n_prime_from_eta,
     n_prime_lispsm,
+    plan,
     point_error,
     scheme_storage_factor,
     storage_factor,
@@ -78,6 +80,7 @@ __all__ = [
     "n_prime_for",
     "n_prime_from_eta",
     "n_prime_lispsm",
+    "plan",
     "point_error",
     "scheme_storage_factor",
     "storage_factor",

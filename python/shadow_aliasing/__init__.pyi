@@ -72,6 +72,7 @@ __all__ = [
     "n_prime_for",
     "n_prime_from_eta",
     "n_prime_lispsm",
+    "plan",
     "point_error",
     "scheme_storage_factor",
     "storage_factor",
@@ -234,6 +235,15 @@ def frame(view: ArrayLike, near: float, far: float, half_fov: float, light_dir: 
           clip_depth: ClipDepth = ...,
           dtype: DType = ...) -> FrameResult:
     """The shadow maps of one frame in world space, fitted to the scene (the crate's frame API)."""
+def plan(view: ArrayLike, near: float, far: float, half_fov: float, light_dir: Vec3, *,
+         image_height: int, max_error: Optional[float] = ..., budget_texels: Optional[int] = ...,
+         max_maps: Optional[int] = ...,
+         rounding: Union[Literal["whole", "power_of_two"], int, None] = ...,
+         aspect: float = ..., receivers: Optional[ArrayLike] = ...,
+         casters: Optional[ArrayLike] = ..., depth_range: Optional[ArrayLike] = ...,
+         depth_clamp: bool = ..., map_resolution: int = ...) -> dict[str, object]:
+    """The cheapest scheme for a target error, or the least error for a texel budget: scheme,
+    frame_kwargs, warp_args, resolutions (m, 2), max_error_pixels, texels, focus, candidates."""
 def sweep_angles(elevations: int, azimuths: int) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """The grid's elevations (both ends) and azimuths (2π excluded)."""
 def sweep(near: float, far: float, half_fov: float, rule: str = ...,

@@ -30,7 +30,7 @@ const BEVY_KEYS: [&str; 5] = [
 ];
 
 /// World-space boxes from an `(n, 2, 3)` array (each `[min, max]`), or `None` for no bound.
-fn boxes(name: &'static str, ob: Option<&Any<'_>>) -> PyResult<Option<Vec<Aabb>>> {
+pub(crate) fn boxes(name: &'static str, ob: Option<&Any<'_>>) -> PyResult<Option<Vec<Aabb>>> {
     let Some(ob) = ob.filter(|o| !o.is_none()) else {
         return Ok(None);
     };
@@ -84,7 +84,7 @@ fn list(name: &str, ob: Option<&Any<'_>>) -> PyResult<Option<Vec<f64>>> {
 }
 
 /// `depth_range`: two numbers `(z_min, z_max)`, or `None`.
-fn pair(name: &str, ob: Option<&Any<'_>>) -> PyResult<Option<(f64, f64)>> {
+pub(crate) fn pair(name: &str, ob: Option<&Any<'_>>) -> PyResult<Option<(f64, f64)>> {
     match list(name, ob)? {
         None => Ok(None),
         Some(v) if v.len() == 2 => Ok(Some((v[0], v[1]))),
@@ -108,7 +108,7 @@ fn flag(name: &str, ob: &Any<'_>) -> PyResult<bool> {
 }
 
 /// `depth_clamp`, by [`flag`].
-fn depth_clamp_arg(ob: &Any<'_>) -> PyResult<bool> {
+pub(crate) fn depth_clamp_arg(ob: &Any<'_>) -> PyResult<bool> {
     flag("depth_clamp", ob)
 }
 
@@ -162,7 +162,7 @@ fn bevy_splits(ob: &Any<'_>) -> PyResult<CascadeSplits<'static>> {
 
 /// The frame's error for Python: the crate's names of `bevy`'s fields and of the view matrix
 /// spelled as Python's arguments.
-fn frame_err(e: Error, bevy: bool) -> PyErr {
+pub(crate) fn frame_err(e: Error, bevy: bool) -> PyErr {
     match e {
         Error::InvalidArgument { name, reason } => {
             let py_name = match name {

@@ -12,6 +12,7 @@ mod builders;
 mod closed;
 mod error_image;
 mod frame;
+mod plan;
 mod measure;
 mod out;
 mod stacked;
@@ -72,6 +73,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(measure::point_error, m)?)?;
     m.add_function(wrap_pyfunction!(error_image::error_image, m)?)?;
     m.add_function(wrap_pyfunction!(frame::frame, m)?)?;
+    m.add_function(wrap_pyfunction!(plan::plan, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_angles, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
     m.add("WARP_RULES", builders::WARP_RULES.to_vec())?;
