@@ -55,6 +55,7 @@ CALLS = {
     "frustum_max": dict(VIEW, matrix=M, light_dir=LIGHT),
     "point_error": dict(VIEW, matrix=M, light_dir=LIGHT, point=[0.0, 0.0, -10.0]),
     "frame": dict(VIEW, view=np.eye(4), light_dir=LIGHT),
+    "plan": dict(VIEW, view=np.eye(4), light_dir=LIGHT, image_height=1080, max_error=2.0),
     # A wall at depth 0.9 of a Vulkan-style camera (near 1, far 100), world = eye space.
     "error_image": dict(depth=np.full((3, 4), 0.9), view=np.eye(4), shadow_matrix=M,
                         projection=np.array([[1 / math.tan(0.5), 0, 0, 0], [0, 1 / math.tan(0.5), 0, 0],
@@ -82,6 +83,8 @@ CONTEXT = {
                     "light_angle": {"scheme": "adaptive", "light_angle": 1.0, "ratio": 2.0},
                     "ratio": {"scheme": "adaptive", "light_angle": 1.0, "ratio": 2.0}},
     "critical_resolution": {},
+    "plan": {"budget_texels": {"max_error": None, "budget_texels": 1 << 24},
+             "max_maps": {"max_error": None, "budget_texels": 1 << 24, "max_maps": 4}},
     "frame": {**_RULE_ARGS,
               "k": {"scheme": "cascades", "partition": "log", "k": 2},
               "partition": {"scheme": "cascades", "partition": "log", "k": 2},
@@ -101,6 +104,9 @@ CONTEXT = {
 # Arguments where NaN is a value: error_image's fill (its default) marks pixels without a
 # prediction. Any value is accepted there.
 NAN_VALID = {("error_image", "fill")}
+# Whole numbers whose domain reaches 2**40: plan's texel budget (a count of texels, not of maps
+# or cells). Such a value is accepted or refused naming the argument.
+HUGE_INT_VALID = {("plan", "budget_texels")}
 
 RAGGED = [[1.0], [1.0, 2.0]]
 # The crate's errors about a combination of valid values rather than one argument (a frustum
@@ -191,8 +197,8 @@ def _cases():
             elif kind == "str":
                 bad = [("unknown", "no-such-choice", True)]
             elif kind == "int":
-                bad = [("-1", -1, True), ("2**40", 2**40, True), ("2**70", 2**70, True),
-                       ("0", 0, False)]
+                bad = [("-1", -1, True), ("2**40", 2**40, (fn, arg) not in HUGE_INT_VALID),
+                       ("2**70", 2**70, True), ("0", 0, False)]
             else:
                 bad = [("nan", math.nan, True), ("-1", -1, False), ("2**40", 2**40, False),
                        ("inf", math.inf, False), ("-inf", -math.inf, False),
@@ -253,8 +259,10 @@ def test_every_argument_of_every_function(fn, arg, value, expected):
     assert expected is None, f"{fn}({arg}={value!r}) returned {out!r}, expected {expected}"
     # Accepted: the value lies in the domain, and the answer holds no NaN.
     values = out[0] if fn == "faces" else out
-    if fn == "frame":
-        values = np.concatenate([np.ravel(v) for v in out.values() if isinstance(v, np.ndarray)])
+    if fn in ("frame", "plan"):
+        values = np.concatenate([np.ravel(v).astype(np.float64) for v in out.values()
+                                 if isinstance(v, (np.ndarray, float))
+                                 and np.asarray(v).dtype.kind in "fiu"])
         if kwargs.get("measure") is False:  # unmeasured errors are +inf, never NaN
             values = values[np.isfinite(values)]
     if fn == "error_image" and not (arg == "fill" and not math.isnan(value)):
