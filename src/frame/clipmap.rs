@@ -138,7 +138,7 @@ impl ClipmapOptions {
             ));
         }
         let p = self.page_texels;
-        if p == 0 || resolution % p != 0 || resolution / p < 2 {
+        if p == 0 || !resolution.is_multiple_of(p) || resolution / p < 2 {
             return Err(Error::invalid(
                 "page_texels",
                 format!(

@@ -112,9 +112,8 @@ pub fn plan_clipmap(input: &FrameInput<'_>, options: &ClipmapOptions) -> Result<
     // The frame's slots are the levels needed, finest first, `None` where B is empty.
     let (zn, zf) = visible(&input);
     let (first, _) = choice.levels_needed(zn, zf)?;
-    let mut level = first;
     let per_side = input.map_resolution / options.page_texels;
-    for slot in f.slots() {
+    for (level, slot) in (first..).zip(f.slots()) {
         let (depths, max_error_pixels, pages) = match slot {
             Some(m) => (
                 m.split,
@@ -135,7 +134,6 @@ pub fn plan_clipmap(input: &FrameInput<'_>, options: &ClipmapOptions) -> Result<
             pages,
         });
         plan.len += 1;
-        level += 1;
     }
     if plan.len == 0 {
         // No slot at all cannot happen (one level at least is needed); kept typed.
