@@ -262,6 +262,10 @@ pub enum PartitionName {
     /// (`CascadeSplits::EqualError`; `warp` only, through the frame API: the logarithmic splits
     /// for the frustum alone).
     EqualError,
+    /// A clipmap, Unreal-style virtual shadow maps (`FrameScheme::Clipmap`; `warp` only): one
+    /// orthographic level per depth range it is chosen for, options --lod-bias, --levels,
+    /// --level-unit, --page-texels, --virtual-resolution, --image-height.
+    Clipmap,
 }
 
 /// `warp` arguments.
@@ -372,6 +376,51 @@ pub struct SceneArgs {
     /// takes its own OVERLAP_PROPORTION).
     #[arg(long, allow_hyphen_values = true, conflicts_with = "bevy")]
     pub overlap: Option<f64>,
+    #[command(flatten)]
+    pub clipmap: ClipmapArgs,
+}
+
+/// `--partition clipmap`'s options (defaults: Unreal 5's, for a world in metres).
+#[derive(Debug, Clone, clap::Args)]
+pub struct ClipmapArgs {
+    /// The LOD bias b: the chosen level's texel is at most 2^b pixels (Unreal -0.5).
+    #[arg(long = "lod-bias", value_name = "B", allow_hyphen_values = true, default_value_t = -0.5)]
+    pub lod_bias: f64,
+    /// The finest and coarsest levels, level i covering radius 2^(i+1) units (Unreal 6,22).
+    #[arg(long, value_name = "FIRST,LAST", allow_hyphen_values = true, value_parser = parse_list)]
+    pub levels: Option<NumList>,
+    /// The world length of a level unit (0.01: metres, Unreal's levels being in centimetres).
+    #[arg(
+        long = "level-unit",
+        value_name = "U",
+        allow_hyphen_values = true,
+        default_value_t = 0.01
+    )]
+    pub level_unit: f64,
+    /// Texels per page side (Unreal 128).
+    #[arg(
+        long = "page-texels",
+        value_name = "P",
+        allow_hyphen_values = true,
+        default_value_t = 128
+    )]
+    pub page_texels: i64,
+    /// Texels per level side (Unreal 16384).
+    #[arg(
+        long = "virtual-resolution",
+        value_name = "R",
+        allow_hyphen_values = true,
+        default_value_t = 16384
+    )]
+    pub virtual_resolution: i64,
+    /// The image's height in pixels that the levels are chosen for.
+    #[arg(
+        long = "image-height",
+        value_name = "H",
+        allow_hyphen_values = true,
+        default_value_t = 1080
+    )]
+    pub image_height: i64,
 }
 
 impl SceneArgs {

@@ -100,6 +100,7 @@ fn warp(a: &WarpArgs) -> ExitCode {
     // alone when no scene is given.
     if a.scene.any()
         || a.scheme.partition == PartitionName::EqualError
+        || a.scheme.partition == PartitionName::Clipmap
         || a.scheme.warp == WarpName::Trapezoid
     {
         return match crate::scene::warp_scene(a) {

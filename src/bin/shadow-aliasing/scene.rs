@@ -2,12 +2,14 @@
 //! `--bevy`): the library's frame API with the camera at the origin of eye space (world = eye),
 //! a square image, maps measured over each focus body B.
 
-use crate::args::{BoundsArgs, CameraArgs, PartitionName, WarpArgs, WarpName};
+use crate::args::{BoundsArgs, CameraArgs, ClipmapArgs, PartitionName, WarpArgs, WarpName};
 use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
 use crate::scheme::{k, ratio, rule, value_name, Lights, DEFAULT_LAMBDA};
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::SplitScheme;
-use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme};
+use shadow_aliasing::frame::{
+    frame, Aabb, Bound, Camera, CascadeSplits, ClipmapOptions, FrameInput, FrameScheme,
+};
 use shadow_aliasing::maps::{TsmOptions, TsmSearch};
 use shadow_aliasing::scheme::face_rule;
 use shadow_aliasing::{Error, LightAngle, ViewFrustum};
@@ -250,6 +252,16 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
             rule: face_rule(r),
             k,
         },
+        (None, PartitionName::Clipmap) => {
+            if sc.overlap.is_some() {
+                return Err(Error::invalid(
+                    "overlap",
+                    "is not used by --partition clipmap, whose levels cover exactly the depths \
+                     they are chosen for: drop --overlap",
+                ));
+            }
+            FrameScheme::Clipmap(clipmap(&sc.clipmap)?.0)
+        }
         (None, PartitionName::EqualError) => {
             if sc.overlap.is_some() {
                 return Err(Error::invalid(
@@ -280,7 +292,10 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
             ))
         }
     };
-    let input = frame_input(c, light, &sc.bounds, &boxes, RESOLUTION)?.scheme(fs);
+    let mut input = frame_input(c, light, &sc.bounds, &boxes, RESOLUTION)?.scheme(fs);
+    if let FrameScheme::Clipmap(_) = fs {
+        (_, input.map_resolution, input.image_height) = clipmap(&sc.clipmap)?;
+    }
     // The cascades' planes are the user's --splits: named so.
     let f = frame(&input).map_err(|e| match e {
         Error::InvalidArgument {
@@ -326,7 +341,9 @@ fn json(a: &WarpArgs, f: &shadow_aliasing::frame::Frame) -> String {
             s,
             "    {{{}\"near\": {}, \"far\": {}, \"split\": [{}, {}], \"blend\": [{}, {}], \"n_prime\": {}, \"max_mx\": {}, \"max_mz\": {}, \"storage_factor\": {}, \"texel_world\": {}, \"body_vertices\": {}, \"matrix\": [{}]}}{}",
             m.face
-                .map_or(String::new(), |f| format!("\"face\": \"{}\", ", f.name())),
+                .map_or(String::new(), |f| format!("\"face\": \"{}\", ", f.name()))
+                + &m.clipmap_level
+                    .map_or(String::new(), |l| format!("\"clipmap_level\": {l}, ")),
             json_num(m.shadow.near()),
             json_num(m.shadow.far()),
             json_num(m.split.0),
@@ -380,7 +397,9 @@ fn text(a: &WarpArgs, f: &shadow_aliasing::frame::Frame) -> String {
             i + 1,
             f.len(),
             m.face
-                .map_or(String::new(), |f| format!(" ({} face)", f.name())),
+                .map_or(String::new(), |f| format!(" ({} face)", f.name()))
+                + &m.clipmap_level
+                    .map_or(String::new(), |l| format!(" (clipmap level {l})")),
             sig(m.shadow.near()),
             sig(m.shadow.far()),
             m.body().len(),
@@ -414,4 +433,53 @@ fn text(a: &WarpArgs, f: &shadow_aliasing::frame::Frame) -> String {
         }
     }
     s
+}
+
+/// `--partition clipmap`'s options: the layout, the levels' resolution and the image's height.
+fn clipmap(a: &ClipmapArgs) -> Result<(ClipmapOptions, u32, u32), Error> {
+    let whole = |name: &'static str, v: i64, min: i64| -> Result<u32, Error> {
+        u32::try_from(v)
+            .ok()
+            .filter(|&u| i64::from(u) >= min)
+            .ok_or_else(|| {
+                Error::invalid(
+                    name,
+                    format!(
+                        "must be a whole number from {min} to {} (got {v})",
+                        u32::MAX
+                    ),
+                )
+            })
+    };
+    let (first_level, last_level) = match &a.levels {
+        None => (
+            ClipmapOptions::UNREAL.first_level,
+            ClipmapOptions::UNREAL.last_level,
+        ),
+        Some(l) => match l.0.as_slice() {
+            [f, t]
+                if f.fract() == 0.0 && t.fract() == 0.0 && f.abs() <= 64.0 && t.abs() <= 64.0 =>
+            {
+                (*f as i32, *t as i32)
+            }
+            _ => {
+                return Err(Error::invalid(
+                    "levels",
+                    "needs FIRST,LAST, two whole numbers in [-64, 64] (Unreal 6,22)",
+                ))
+            }
+        },
+    };
+    let opts = ClipmapOptions {
+        first_level,
+        last_level,
+        lod_bias: a.lod_bias,
+        unit: a.level_unit,
+        page_texels: whole("page_texels", a.page_texels, 1)?,
+    };
+    Ok((
+        opts,
+        whole("virtual_resolution", a.virtual_resolution, 3)?,
+        whole("image_height", a.image_height, 1)?,
+    ))
 }

@@ -63,6 +63,12 @@ pub fn partition(a: &SchemeArgs) -> Result<Partition, Error> {
                  whose map scales with its slice)",
             ))
         }
+        PartitionName::Clipmap => {
+            return Err(Error::invalid(
+                "partition",
+                "clipmap's levels are the frame API's (FrameScheme::Clipmap): use it with warp",
+            ))
+        }
     })
 }
 
@@ -130,7 +136,7 @@ fn shallowest(s: &Splits) -> f64 {
 fn shallowest_partition(view: &ViewFrustum, lights: Lights, a: &SchemeArgs) -> Result<f64, Error> {
     let (n, f, k, ratio) = (view.near(), view.far(), k(a)?, ratio(a));
     let split = match a.partition {
-        PartitionName::Single | PartitionName::Faces => return Ok(f - n),
+        PartitionName::Single | PartitionName::Faces | PartitionName::Clipmap => return Ok(f - n),
         PartitionName::Uniform => SplitScheme::Uniform,
         // Equal-error planes are not known before the maps: the logarithmic ones, which they are
         // for the frustum alone, estimate the shallowest.
