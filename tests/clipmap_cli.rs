@@ -16,7 +16,7 @@ fn warp(extra: &[&str]) -> (bool, String) {
         "--far",
         "1000",
         "--half-fov",
-        "0.5236",
+        "0.5",
         "--light-dir",
         "0.3,-0.8,-0.4",
         "--partition",
@@ -38,7 +38,7 @@ fn warp(extra: &[&str]) -> (bool, String) {
 fn warp_builds_the_clipmap_levels() {
     let (ok, json) = warp(&["--json"]);
     assert!(ok, "{json}");
-    let cam = Camera::new(DMat4::IDENTITY, 0.1, 1000.0, 0.5236, 1.0).unwrap();
+    let cam = Camera::new(DMat4::IDENTITY, 0.1, 1000.0, 0.5, 1.0).unwrap();
     let input = FrameInput::new(cam, DVec3::new(0.3, -0.8, -0.4), 16384, 1080);
     let p = plan_clipmap(&input, &ClipmapOptions::UNREAL).unwrap();
     let (first, last) = p.level_range();

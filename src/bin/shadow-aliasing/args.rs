@@ -377,7 +377,7 @@ pub struct SceneArgs {
     #[arg(long, allow_hyphen_values = true, conflicts_with = "bevy")]
     pub overlap: Option<f64>,
     #[command(flatten)]
-    pub clipmap: ClipmapArgs,
+    pub clipmap: Box<ClipmapArgs>,
 }
 
 /// `--partition clipmap`'s options (defaults: Unreal 5's, for a world in metres).
