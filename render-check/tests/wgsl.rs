@@ -33,7 +33,8 @@ fn main(@location(0) p: vec3<f32>, @location(1) n: vec3<f32>, @location(2) e: ve
     let a = sa_cascaded_visibility(-e.z, p, n, l, 1, SA_NORMAL_OFFSET | SA_DEPTH_BIAS);
     let f = sa_pick_face(p, e, l, vec4<f32>(0.1, 100.0, 0.5, 0.7));
     let b = sa_visibility(min(f, sa_map_count() - 1u), p, n, l, 0, 0u);
-    return vec4<f32>(a, b, 0.0, 1.0);
+    let c = sa_clipmap_level(-e.z, 3.2, 6, 22);
+    return vec4<f32>(a, b, f32(c), 1.0);
 }
 ";
 
@@ -56,6 +57,7 @@ fn the_module_validates_with_naga() {
         "sa_cascaded_visibility",
         "sa_face_crossing",
         "sa_pick_face",
+        "sa_clipmap_level",
     ] {
         assert!(
             module

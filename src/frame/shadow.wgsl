@@ -152,6 +152,15 @@ fn sa_pick_cascade(view_depth: f32) -> SaPick {
     return SaPick(i, i, 0.0);
 }
 
+// Clipmaps (FrameScheme::Clipmap): the level at eye depth `depth` > 0, the coarsest level whose
+// texel is at most 2^bias pixels there, clamp(floor(log2(depth) + offset), first, last), with
+// `offset` = LevelChoice::offset and the clipmap's first and last level (LevelChoice::level in
+// f32). The frame's map of that level is slot `level - (the first map's FrameMap::clipmap_level)`.
+fn sa_clipmap_level(depth: f32, offset: f32, first_level: i32, last_level: i32) -> i32 {
+    let l = floor(log2(depth) + offset);
+    return i32(clamp(l, f32(first_level), f32(last_level)));
+}
+
 // The visibility (sa_visibility) of a cascaded frame at a view depth, cross-faded over the blend
 // bands (sa_pick_cascade).
 fn sa_cascaded_visibility(
