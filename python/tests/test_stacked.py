@@ -60,14 +60,17 @@ def test_a_last_axis_other_than_three_is_refused(shape):
 def test_a_stack_is_much_faster_than_a_loop():
     # Issue 25's target is 50x over 1e5 directions; on a shared two-core machine the test only
     # asserts a clear gain (the measured figure is in docs/python.md).
+    # The best of three of each, so that a loaded machine's pauses do not decide it.
     d = _directions((20000,))
-    t0 = time.perf_counter()
-    for v in d[:2000]:
-        sa.warp(*CAM, v, "lispsm")
-    loop = (time.perf_counter() - t0) * 10
-    t0 = time.perf_counter()
-    sa.warp(*CAM, d, "lispsm")
-    stacked = time.perf_counter() - t0
+    loop = stacked = float("inf")
+    for _ in range(3):
+        t0 = time.perf_counter()
+        for v in d[:2000]:
+            sa.warp(*CAM, v, "lispsm")
+        loop = min(loop, (time.perf_counter() - t0) * 10)
+        t0 = time.perf_counter()
+        sa.warp(*CAM, d, "lispsm")
+        stacked = min(stacked, time.perf_counter() - t0)
     assert stacked * 2 < loop, (stacked, loop)
 
 
