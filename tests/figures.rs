@@ -192,6 +192,29 @@ fn check_svg(path: &Path, name: &str) {
         text.matches("<text").count() >= 10,
         "{name}: too few labels"
     );
+    // Text at least 2 % of the figure's width (issue 25): every <text>'s font-size against the
+    // view box's width, both read from the SVG. (Sub- and superscripts are <tspan>s at 72 % of
+    // their line, as in TeX.)
+    let view_width: f64 = text
+        .split("viewBox=\"0 0 ")
+        .nth(1)
+        .and_then(|v| v.split(' ').next())
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("{name}: no view box"));
+    for (attrs, content) in texts(&text) {
+        let size: f64 = attrs
+            .split("font-size=\"")
+            .nth(1)
+            .and_then(|v| v.split('"').next())
+            .and_then(|v| v.parse().ok())
+            .unwrap_or_else(|| panic!("{name}: a <text> without font-size: {attrs}"));
+        assert!(
+            size >= 0.02 * view_width,
+            "{name}: text {:?} of {size} px is {:.2} % of the width {view_width} (at least 2 %)",
+            visible(content),
+            100.0 * size / view_width
+        );
+    }
     for (attrs, _) in texts(&text) {
         assert!(
             attrs.contains("xml:space=\"preserve\""),
@@ -732,8 +755,9 @@ fn an_unwritable_file_is_io_with_its_path() {
 #[test]
 fn captions_say_where_a_figure_differs_from_the_paper() {
     let dir = out_dir("figures-differ");
+    // barroso-fig5 now draws the paper's panels (a) and (b); its panel (c) is marked.
     let says = [
-        ("barroso-fig5", "perpendicular"),
+        ("barroso-fig5", "(c) Eq 19, not in the paper"),
         ("martin-tan-fig3", "may be rotated"),
         ("zhang-fig3", "scene insets"),
     ];
@@ -746,7 +770,13 @@ fn captions_say_where_a_figure_differs_from_the_paper() {
             .map(|(_, c)| visible(c))
             .collect::<Vec<_>>()
             .join(" ");
-        assert!(caption.contains("Unlike the paper"), "{name}");
+        if name == "barroso-fig5" {
+            for panel in ["(a) perpendicular light", "(b) parallel light"] {
+                assert!(caption.contains(panel), "{name}: no {panel:?}");
+            }
+        } else {
+            assert!(caption.contains("Unlike the paper"), "{name}");
+        }
         assert!(caption.contains(phrase), "{name}: no {phrase:?}");
     }
 }

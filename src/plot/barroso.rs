@@ -128,7 +128,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         colour: grey,
     });
     Ok(Charts {
-        size: (1100, 680),
+        size: (520, 560),
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![
             "Barroso & Celes 2007, Fig. 7 (n = 1, f = 100, φ_y = π/6), from analytic::tilted::generalized_n_prime, n_prime_1, n_prime_2, gamma_lim;".into(),

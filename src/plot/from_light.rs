@@ -9,7 +9,9 @@
 //! map (ZP) is the light-space bounding rectangle of its corners, drawn dashed, so that the
 //! overlap of the maps shows.
 
-use super::chart::{build_chart, equal_aspect, frame, Axis, ChartStyle, PALETTE};
+use super::chart::{
+    build_chart_styled, clip_polyline, equal_aspect, frame, Axis, ChartStyle, FONT, PALETTE,
+};
 use super::{Fail, Figure};
 use crate::analytic::partition::{z_splits, SplitScheme};
 use crate::maps::light_space;
@@ -18,6 +20,7 @@ use crate::ViewFrustum;
 use glam::{DVec2, DVec3};
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// One panel: a light, its split depths and what it shows.
 pub(super) struct Panel {
@@ -27,6 +30,8 @@ pub(super) struct Panel {
     /// Each partition's bounding rectangle in light space (min, max).
     pub maps: Vec<(DVec2, DVec2)>,
     pub planes: Vec<f64>,
+    /// The light-space window shown (min, max); `None`: the whole frustum.
+    pub window: Option<(DVec2, DVec2)>,
 }
 
 pub(super) struct FromLight {
@@ -71,6 +76,7 @@ fn panel(view: &ViewFrustum, light: DVec3, planes: &[f64], title: String) -> Res
         sections,
         maps,
         planes: planes.to_vec(),
+        window: None,
     })
 }
 
@@ -86,13 +92,16 @@ fn fmt_planes(p: &[f64]) -> String {
         .join(", ")
 }
 
-/// Barroso & Celes 2007 Fig 5: k = 4, n = 1, f = 100, φ = 30°, light 45° above, in front.
+/// Barroso & Celes 2007 Fig 5: k = 4 self-similar z-partitions (Eq 5) of n = 1, f = 100,
+/// φ = 30°, seen by (a) a light perpendicular to the view direction (overhead) and (b) one
+/// parallel to it (behind the viewer); (c) the adaptive partitions of Eq 19 for a light 45°
+/// above the view direction, which the paper's figure does not have; (d) the near partitions of
+/// (a) enlarged.
 pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians())?;
-    let gamma = 45f64.to_radians();
-    let light = DVec3::new(0.0, -gamma.sin(), -gamma.cos());
     let k = 4;
     let ss = z_splits(view.near(), view.far(), k, SplitScheme::SelfSimilar)?;
+    let gamma = 45f64.to_radians();
     let ad = z_splits(
         view.near(),
         view.far(),
@@ -102,30 +111,50 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
             ratio: ADAPTIVE_RATIO,
         },
     )?;
+    // Light directions are the direction light travels; the view looks down −Z.
+    let overhead = DVec3::NEG_Y;
+    let behind = DVec3::NEG_Z;
+    let tilted = DVec3::new(0.0, -gamma.sin(), -gamma.cos());
+    let perpendicular = panel(
+        &view,
+        overhead,
+        ss.planes(),
+        "(a) perpendicular light".into(),
+    )?;
+    // (d): the two nearest partitions of (a), enlarged.
+    let near = &perpendicular.sections[..3];
+    let (lo, hi) = near.iter().flatten().fold(
+        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+        |(lo, hi), &p| (lo.min(p), hi.max(p)),
+    );
+    let mut zoom = panel(
+        &view,
+        overhead,
+        ss.planes(),
+        "(d) (a) near the eye, enlarged".into(),
+    )?;
+    zoom.window = Some((lo, hi));
     let panels = vec![
+        perpendicular,
+        panel(&view, behind, ss.planes(), "(b) parallel light".into())?,
         panel(
             &view,
-            light,
-            ss.planes(),
-            "(a) self-similar partitions, Eq 5".into(),
-        )?,
-        panel(
-            &view,
-            light,
+            tilted,
             ad.planes(),
-            format!("(b) adaptive partitions, Eq 19 (γ = 45°, α = {ADAPTIVE_RATIO})"),
+            "(c) Eq 19, not in the paper".into(),
         )?,
+        zoom,
     ];
     let caption = format!(
-        "Barroso & Celes 2007, Fig. 5: the view frustum as seen by the light with k = 4 z-partitions (n = 1, f = 100, φ = 30°; light 45° above the view direction, from behind the viewer's back: it travels forward and down). Split depths from analytic::partition::z_splits: (a) {}; (b) {}. Solid: the frustum's edges and the split planes' cross-sections; dashed: each partition's orthographic map (its light-space bounding rectangle). Computed; the paper's figure is a sketch. Unlike the paper, whose panels are (a) light perpendicular and (b) light parallel to the view direction, both panels here share one light at 45° and compare self-similar partitions (a) with the adaptive partitions of Eq 19 (b, not in the paper's figure).",
-        fmt_planes(panels[0].planes.as_slice()),
-        fmt_planes(panels[1].planes.as_slice())
+        "Barroso & Celes 2007, Fig. 5: the view frustum seen by the light, with k = 4 z-partitions (n = 1, f = 100, φ = 30°). (a) Light perpendicular to the view direction (overhead) and (b) parallel to it (behind the viewer), with the self-similar partitions of Eq 5, as in the paper: split planes z = {}. (c) Not in the paper's figure: the adaptive partitions of Eq 19 for a light 45° above the view direction (from behind, travelling forward and down; α = {ADAPTIVE_RATIO}): z = {}. (d) The nearest two partitions of (a) enlarged. Solid: the frustum's edges and the split planes' cross-sections, labelled with their depth z; dashed: each partition's orthographic map (its light-space bounding rectangle). Computed from analytic::partition::z_splits; the paper's figure is a sketch.",
+        fmt_planes(ss.planes()),
+        fmt_planes(ad.planes())
     );
     Ok(FromLight {
         title: "The view frustum seen from the light, with z-partitions",
         caption,
         panels,
-        size: (1400, 700),
+        size: (520, 860),
     })
 }
 
@@ -149,7 +178,7 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
         title: "The view frustum seen from a light behind the viewer",
         caption,
         panels: vec![p],
-        size: (900, 860),
+        size: (520, 640),
     })
 }
 
@@ -160,14 +189,20 @@ impl Figure for FromLight {
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let body = frame(root, self.title, &[self.caption.as_str()])?;
-        let cells = body.split_evenly((1, self.panels.len()));
+        let columns = self.panels.len().min(2);
+        let cells = body.split_evenly((self.panels.len().div_ceil(columns), columns));
+        let style = ChartStyle {
+            title_size: 15,
+            ..ChartStyle::default()
+        };
         for (cell, p) in cells.iter().zip(&self.panels) {
-            let all = p.sections.iter().flatten();
-            let lo = all
-                .clone()
-                .fold(DVec2::splat(f64::INFINITY), |a, &q| a.min(q));
-            let hi = all.fold(DVec2::splat(f64::NEG_INFINITY), |a, &q| a.max(q));
-            let span = (hi - lo).max_element() * 1.08;
+            let (lo, hi) = p.window.unwrap_or_else(|| {
+                p.sections.iter().flatten().fold(
+                    (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+                    |(lo, hi), &q| (lo.min(q), hi.max(q)),
+                )
+            });
+            let span = (hi - lo).max_element() * 1.12;
             let mid = 0.5 * (lo + hi);
             let (lo, hi) = (
                 mid - DVec2::splat(span / 2.0),
@@ -178,38 +213,75 @@ impl Figure for FromLight {
                 cell,
                 &p.title,
                 &Axis::linear("light x", lo.x, hi.x),
-                &Axis::linear("light z (towards the view direction)", lo.y, hi.y),
-                &ChartStyle::default(),
+                &Axis::linear("light z", lo.y, hi.y),
+                &style,
             )?;
-            let mut chart = build_chart(cell, &p.title, &xa, &ya, false)?;
+            let mut chart = build_chart_styled(cell, &p.title, &xa, &ya, false, &style)?;
+            let inside =
+                |q: DVec2| q.x >= xa.min && q.x <= xa.max && q.y >= ya.min && q.y <= ya.max;
+            // Everything clipped to the window (plotters would draw points outside it on the
+            // border).
+            let bounds = (xa.min, xa.max, ya.min, ya.max);
+            let clip = |pts: &[DVec2]| {
+                let pts: Vec<Option<(f64, f64)>> = pts.iter().map(|q| Some((q.x, q.y))).collect();
+                clip_polyline(&pts, bounds)
+            };
             for (i, &(a, b)) in p.maps.iter().enumerate() {
                 let c = PALETTE[i % PALETTE.len()];
-                chart.draw_series(std::iter::once(Rectangle::new(
-                    [(a.x, a.y), (b.x, b.y)],
-                    c.mix(0.08).filled(),
-                )))?;
-                chart.draw_series(DashedLineSeries::new(
-                    [(a.x, a.y), (b.x, a.y), (b.x, b.y), (a.x, b.y), (a.x, a.y)],
-                    7,
-                    5,
-                    c.stroke_width(2),
-                ))?;
-            }
-            let line = |a: DVec2, b: DVec2| [(a.x, a.y), (b.x, b.y)];
-            for s in &p.sections {
-                for i in 0..4 {
-                    chart.draw_series(LineSeries::new(
-                        line(s[i], s[(i + 1) % 4]),
-                        BLACK.stroke_width(1),
-                    ))?;
+                let (ca, cb) = (
+                    a.max(DVec2::new(xa.min, ya.min)),
+                    b.min(DVec2::new(xa.max, ya.max)),
+                );
+                if ca.x < cb.x && ca.y < cb.y {
+                    chart.draw_series(std::iter::once(Rectangle::new(
+                        [(ca.x, ca.y), (cb.x, cb.y)],
+                        c.mix(0.08).filled(),
+                    )))?;
                 }
+            }
+            let mut solid = |pts: &[DVec2], width: u32| -> Result<(), Fail> {
+                for piece in clip(pts) {
+                    chart.draw_series(LineSeries::new(piece, BLACK.stroke_width(width)))?;
+                }
+                Ok(())
+            };
+            for s in &p.sections {
+                solid(&[s[0], s[1], s[2], s[3], s[0]], 1)?;
             }
             let (first, last) = (p.sections[0], p.sections[p.sections.len() - 1]);
             for i in 0..4 {
-                chart.draw_series(LineSeries::new(
-                    line(first[i], last[i]),
-                    BLACK.stroke_width(2),
-                ))?;
+                solid(&[first[i], last[i]], 2)?;
+            }
+            // The maps' outlines on top of the frustum's, so that a map whose edge coincides
+            // with a cross-section (every map of a light behind) still shows.
+            for (i, &(a, b)) in p.maps.iter().enumerate() {
+                let c = PALETTE[i % PALETTE.len()];
+                let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
+                for piece in clip(&corners) {
+                    chart.draw_series(DashedLineSeries::new(piece, 7, 5, c.stroke_width(2)))?;
+                }
+            }
+            // Each split plane labelled with its depth, at its cross-section's right end, where
+            // that lies in the window and the section is not too small to tell apart.
+            for (sec, &z) in p.sections.iter().zip(&p.planes) {
+                let right = sec.iter().copied().fold(sec[0], |a, q| {
+                    if q.x > a.x || (q.x == a.x && q.y > a.y) {
+                        q
+                    } else {
+                        a
+                    }
+                });
+                let size = sec
+                    .iter()
+                    .fold(0.0f64, |m, q| m.max((*q - sec[0]).length()));
+                if inside(right) && size > 0.06 * (xa.max - xa.min) {
+                    chart.draw_series(std::iter::once(Text::new(
+                        format!(" {}", fmt_planes(&[z])),
+                        (right.x, right.y),
+                        TextStyle::from((FONT, 13).into_font())
+                            .pos(Pos::new(HPos::Left, VPos::Center)),
+                    )))?;
+                }
             }
         }
         Ok(())
@@ -243,9 +315,38 @@ mod tests {
             let want = 100f64.powf(i as f64 / 4.0);
             assert!((z - want).abs() < 1e-9 * want, "{z} vs {want}");
         }
-        // The adaptive planes start at n and end at f, and differ from the self-similar ones.
-        let ad = &b.panels[1].planes;
+        // The paper's panels: (a) light perpendicular to the view (overhead): each split
+        // plane's cross-section is seen edge-on, a segment at light depth ∝ z, half as long as
+        // 2 z tan φ; (b) light parallel (behind): centred squares of half-side z tan φ.
+        let t = 30f64.to_radians().tan();
+        for (s, &z) in b.panels[0].sections.iter().zip(&b.panels[0].planes) {
+            let ys: Vec<f64> = s.iter().map(|c| c.y).collect();
+            let xs: Vec<f64> = s.iter().map(|c| c.x.abs()).collect();
+            assert!(
+                ys.iter().all(|&y| (y.abs() - z).abs() < 1e-9),
+                "{ys:?} at z = {z}"
+            );
+            assert!(
+                xs.iter().all(|&x| (x - z * t).abs() < 1e-9),
+                "{xs:?} at z = {z}"
+            );
+        }
+        for (s, &z) in b.panels[1].sections.iter().zip(&b.panels[1].planes) {
+            for c in s {
+                assert!((c.x.abs() - z * t).abs() < 1e-9 && (c.y.abs() - z * t).abs() < 1e-9);
+            }
+        }
+        assert_eq!(b.panels[0].planes, b.panels[1].planes);
+        // (c): the adaptive planes start at n and end at f, and differ from the self-similar
+        // ones; (d) is (a) shown in a window around the three nearest planes (z ≤ 10).
+        let ad = &b.panels[2].planes;
         assert_eq!((ad[0], ad[4]), (1.0, 100.0));
         assert!((ad[1] - b.panels[0].planes[1]).abs() > 1e-3);
+        let (lo, hi) = b.panels[3].window.unwrap();
+        assert!(
+            (hi.y.abs().max(lo.y.abs()) - 10.0).abs() < 1e-9,
+            "{lo} {hi}"
+        );
+        assert!((hi.x - 10.0 * t).abs() < 1e-9);
     }
 }

@@ -46,13 +46,14 @@ struct Panel {
     grid: PolarGrid,
     max: f64,
     min: f64,
-    /// The panel's own colour scale: log₁₀, exactly over its range.
-    scale: ColourScale,
 }
 
-/// Fig 7 with four panels, each with its own log₁₀ colour bar.
+/// Fig 7 with four panels on one log₁₀ colour scale, as in the paper.
 pub(super) struct Fig7 {
     panels: Vec<Panel>,
+    /// The one colour scale of every panel: log₁₀, from the smallest to the largest S̄ of all
+    /// four.
+    scale: ColourScale,
     caption: Vec<String>,
 }
 
@@ -65,19 +66,19 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let view = fig7_view()?;
     let grid = SweepGrid::new(ELEVATIONS, AZIMUTHS)?;
     let schemes = [
-        ("No warping (n′ = ∞)", WarpRule::Uniform, Partition::Single),
         (
-            "LiSPSM warping, n′ = (n + √(fn))/sin γ",
-            WarpRule::Lispsm,
+            "(a) no warping, n′ = ∞",
+            WarpRule::Uniform,
             Partition::Single,
         ),
+        ("(b) LiSPSM warping", WarpRule::Lispsm, Partition::Single),
         (
-            "Face partitioning + warping",
+            "(c) face partitions, warped",
             WarpRule::Lispsm,
             Partition::Faces,
         ),
         (
-            "Minimax n′ (this crate)",
+            "(d) minimax n′ (this crate)",
             WarpRule::Minimax,
             Partition::Single,
         ),
@@ -100,15 +101,17 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
             grid: polar_grid(&s, values),
             max,
             min,
-            scale: ColourScale::smooth(Axis::log10("S̄ (log scale)", min, max)),
         });
     }
+    let lo = panels.iter().map(|p| p.min).fold(f64::INFINITY, f64::min);
+    let hi = panels.iter().map(|p| p.max).fold(0.0, f64::max);
+    let scale = ColourScale::smooth(Axis::log10("S̄ (texels per image pixel)", lo, hi));
     let summary: Vec<String> = panels
         .iter()
         .map(|p| {
             format!(
-                "{}: {} to {}",
-                p.title,
+                "{} {} to {}",
+                p.title.split(' ').next().unwrap_or(""),
                 fmt_times_ten(p.min),
                 fmt_times_ten(p.max)
             )
@@ -116,19 +119,22 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         .collect();
     let caption = vec![
         format!(
-            "Lloyd et al. 2006, Fig. 7, measured: S̄ = M_x M_z (summed over partitions) of each scheme's own matrices at every light direction, n = 1, f = 1000, θ = 30°, {}° grid.",
+            "Lloyd et al. 2006, Fig. 7, measured: S̄ = M_x M_z (summed over partitions) of each scheme's own matrices at every light direction, n = 1, f = 1000, θ = 30°, {}° grid; (b) uses Wimmer's n′ = (n + √(fn))/sin γ.",
             90 / (ELEVATIONS - 1)
         ),
-        "Hemisphere seen from above: overhead at the centre, light from behind the viewer on the left, from in front on the right; rings at 0°, 30°, 60° elevation.".to_string(),
-        format!("Range of S̄ — {}.", summary.join("; ")),
-        "Unlike the paper's, each panel has its own colour scale, spanning exactly its range, so that the shape of every panel shows; compare panels by their bars.".to_string(),
+        "The hemisphere seen from above: overhead at the centre, light from behind the viewer on the left, from in front on the right, from the viewer's right at the bottom; rings every 10° of elevation up to 30° (the horizon band), then at 60°. The horizontal diameter is the vertical plane through the view direction: lights straight behind, overhead and straight in front.".to_string(),
+        format!("One log₁₀ colour scale for all panels, as in the paper. Range of S̄: {}.", summary.join("; ")),
     ];
-    Ok(Fig7 { panels, caption })
+    Ok(Fig7 {
+        panels,
+        scale,
+        caption,
+    })
 }
 
 impl Figure for Fig7 {
     fn size(&self) -> (u32, u32) {
-        (1800, 620)
+        (520, 760)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -138,13 +144,13 @@ impl Figure for Fig7 {
             "Storage factor over the hemisphere of light directions",
             &caption,
         )?;
-        let cells = body.split_evenly((1, self.panels.len()));
+        let (w, _) = body.dim_in_pixel();
+        let (maps, bar) = body.split_horizontally(w.saturating_sub(84));
+        let cells = maps.split_evenly((2, 2));
         for (cell, p) in cells.iter().zip(&self.panels) {
-            let (w, _) = cell.dim_in_pixel();
-            let (map, bar) = cell.split_horizontally(w.saturating_sub(92));
-            draw_hemisphere(&map, &p.title, &p.grid, &p.scale)?;
-            draw_colour_bar(&bar, &p.scale)?;
+            draw_hemisphere(cell, &p.title, &p.grid, &self.scale)?;
         }
+        draw_colour_bar(&bar, &self.scale)?;
         Ok(())
     }
 }
@@ -192,23 +198,38 @@ mod tests {
         assert_eq!(g.elev_edges.last(), Some(&FRAC_PI_2));
         let turn = g.az_edges[a] - g.az_edges[0];
         assert!((turn - TAU).abs() < 1e-12);
-        // Each panel's colour scale spans exactly its own values: the smallest and largest
-        // value found here fall in the first and last band, and the unwarped panel (10³ … 10⁶,
-        // by the closed forms above and Eq 12 overhead) uses the whole scale, not 2–3 bands.
-        for p in &fig.panels {
-            let vals: Vec<f64> = p.grid.values.iter().flatten().copied().collect();
-            let lo = vals.iter().copied().fold(f64::INFINITY, f64::min);
-            let hi = vals.iter().copied().fold(0.0, f64::max);
-            assert_eq!(p.scale.level(lo), Some(0), "{}", p.title);
-            assert_eq!(p.scale.level(hi), Some(p.scale.levels - 1), "{}", p.title);
-        }
-        let unwarped: HashSet<usize> = fig.panels[0]
-            .grid
-            .values
+        // One colour scale for all four panels (issue 25): its range is the smallest and the
+        // largest S̄ of any panel, found here from the sweeps' values; the extremes fall in the
+        // first and last band. The smallest is LiSPSM overhead (Eq 12, 865), the largest the
+        // 1/sin γ rule near the horizon (errata item 11: 4.7·10⁶).
+        let vals: Vec<f64> = fig
+            .panels
             .iter()
-            .flatten()
-            .filter_map(|&v| fig.panels[0].scale.level(v))
+            .flat_map(|p| p.grid.values.iter().flatten().copied())
             .collect();
-        assert!(unwarped.len() > 40, "{} bands", unwarped.len());
+        let lo = vals.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = vals.iter().copied().fold(0.0, f64::max);
+        let (a, b) = fig.scale.axis.range();
+        assert!((a - lo.log10()).abs() < 1e-12 && (b - hi.log10()).abs() < 1e-12);
+        assert!((lo - overhead).abs() < 1e-9 * overhead, "{lo}");
+        assert!((4.6e6..4.8e6).contains(&hi), "{hi}");
+        assert_eq!(fig.scale.level(lo), Some(0));
+        assert_eq!(fig.scale.level(hi), Some(fig.scale.levels - 1));
+        // Face partitioning (865 … 1999) spans far fewer bands than LiSPSM: the paper's point.
+        let bands = |k: usize| -> HashSet<usize> {
+            fig.panels[k]
+                .grid
+                .values
+                .iter()
+                .flatten()
+                .filter_map(|&v| fig.scale.level(v))
+                .collect()
+        };
+        assert!(
+            bands(2).len() * 3 < bands(1).len(),
+            "{} vs {}",
+            bands(2).len(),
+            bands(1).len()
+        );
     }
 }

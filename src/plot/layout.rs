@@ -63,7 +63,7 @@ pub(super) fn fig8() -> Result<Fig8, Fail> {
 
 impl Figure for Fig8 {
     fn size(&self) -> (u32, u32) {
-        (900, 960)
+        (520, 640)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -93,7 +93,7 @@ impl Figure for Fig8 {
                 Rectangle::new([(x0, y0), (x1, y1)], BLACK.stroke_width(1)),
             ])?;
             let style =
-                TextStyle::from((FONT, 12).into_font()).pos(Pos::new(HPos::Center, VPos::Center));
+                TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Center));
             let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
             let dy = 0.02 * n;
             chart.draw_series([

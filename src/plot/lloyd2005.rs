@@ -46,7 +46,7 @@ pub(super) fn fig4() -> Result<Charts, Fail> {
         colour: grey,
     });
     Ok(Charts {
-        size: (1000, 640),
+        size: (520, 500),
         title: "Error distribution function g for several warp distances n".into(),
         caption: vec![
             format!("Lloyd et al. 2005, Fig. 4 (α = {alpha}), from Eq 3 and 4 (analytic::subdivided::distribution_g, n_from_xi). ξ = 1 is PSM (n = 1), ξ = 0 LiSPSM"),
@@ -86,7 +86,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     let gain = |xi: f64, k: usize| -> Result<f64, crate::Error> { Ok(1.0 / ratio(100.0, k, xi)?) };
     let (g0_2, g0_10, g1_2) = (gain(0.0, 2)?, gain(0.0, 10)?, gain(1.0, 2)?);
     Ok(Charts {
-        size: (1000, 660),
+        size: (520, 520),
         title: "Maximum error against the number of face subdivisions".into(),
         caption: vec![
             "Lloyd et al. 2005, Fig. 7, from Eq 7 (analytic::subdivided::subdivided_max_error): self-similar subdivisions z_i = α^{i/k}, texels shared by Eq 6.".into(),

@@ -62,7 +62,7 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
         cz.series.push(sz);
     }
     Ok(Charts {
-        size: (1300, 620),
+        size: (520, 860),
         title: "Error distribution along the view frustum, light overhead".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 5 (n = 1, f = 20), from Eq 7 and 8 (analytic::overhead::mx, mz): the last term of each, as the paper plots, i.e. m_x divided by f and m_z by (f − n)/(2 tan θ).".into(),
@@ -120,7 +120,7 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
         .dashed(),
     );
     Ok(Charts {
-        size: (1000, 640),
+        size: (520, 520),
         title: "Maximum error and storage factor against the warp parameter η".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 6 (n = 1, f = 100), from Eq 9, 10, 11, 12 (analytic::overhead, analytic::eta::n_prime_from_eta).".into(),
@@ -163,7 +163,7 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
         );
     }
     Ok(Charts {
-        size: (1000, 660),
+        size: (520, 540),
         title: "Storage factor of warped z-partitions against the number of partitions, light overhead".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 10 (θ = 30°), from Eq 18 and App. C (analytic::partition::scheme_storage_factor with Scheme::ZpW and Scheme::Optimal).".into(),
@@ -224,7 +224,7 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
         colour: PALETTE[6],
     });
     Ok(Charts {
-        size: (1000, 660),
+        size: (520, 540),
         title: "Storage factor against the number of shadow maps".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 12 (f/n = 1000, θ = 30°), from Eq 17–21 (analytic::partition::scheme_storage_factor). k z-partitions use k maps; FP+ZP+W uses 4k + 1".into(),
@@ -291,7 +291,7 @@ pub(super) fn fig13() -> Result<Fig13, Fail> {
 
 impl Figure for Fig13 {
     fn size(&self) -> (u32, u32) {
-        (1000, 660)
+        (520, 540)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {

@@ -135,7 +135,7 @@ fn profile_floor(a: &[(f64, f64)], b: &[(f64, f64)]) -> f64 {
 
 impl Figure for Fig6 {
     fn size(&self) -> (u32, u32) {
-        (1300, 600)
+        (520, 1000)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -145,8 +145,10 @@ impl Figure for Fig6 {
             "Area of the focus region in the trapezoidal shadow map against the light direction",
             &caption,
         )?;
-        let (left, right) = body.split_horizontally(560);
-        let (disk, bar) = left.split_horizontally(450);
+        let (_, h) = body.dim_in_pixel();
+        let (left, right) = body.split_vertically(h * 11 / 20);
+        let (w, _) = left.dim_in_pixel();
+        let (disk, bar) = left.split_horizontally(w.saturating_sub(96));
         draw_hemisphere(&disk, "over the hemisphere", &self.grid, &self.scale)?;
         draw_colour_bar(&bar, &self.scale)?;
         draw_line_chart(&right, &self.profile)?;

@@ -229,6 +229,12 @@ fn ensure_font() -> Result<(), PlotError> {
 /// The PNG is drawn at this many times its size in each direction and averaged down.
 const SUPERSAMPLE: u32 = 2;
 
+/// A PNG has this many pixels per unit of the figure's size (the SVG's view box) in each
+/// direction, before [`Options::scale`]: figures are laid out at a size where their smallest text
+/// is at least 2 % of the width, and written at twice that size as pixels (as a screen with a
+/// device pixel ratio of 2 shows them).
+pub const PNG_ZOOM: u32 = 2;
+
 /// The outline of a map's normalised space [−1, 1]², closed, for the figures that draw it.
 pub(crate) const UNIT_SQUARE: [(f64, f64); 5] = [
     (-1.0, -1.0),
@@ -258,8 +264,9 @@ fn emit<F: Figure>(
             if *ext == "png" {
                 // Drawn at twice the (scaled) size and box-filtered down: anti-aliased lines
                 // and edges.
-                let k = SUPERSAMPLE * opts.scale;
-                let (pw, ph) = (w * opts.scale, h * opts.scale);
+                let zoom = PNG_ZOOM * opts.scale;
+                let k = SUPERSAMPLE * zoom;
+                let (pw, ph) = (w * zoom, h * zoom);
                 let mut big = vec![0u8; (k * k) as usize * w as usize * h as usize * 3];
                 {
                     let bitmap = BitMapBackend::with_buffer(&mut big, (k * w, k * h));

@@ -132,12 +132,12 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
 
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
-        (1500, 620)
+        (520, 1300)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let caption = format!(
-            "Martin & Tan 2004, Figs. 3 and 4, from maps::tsm::tsm (80 % rule, focus δ = {FOCUS}; n = 1, f = 100, θ = 30°; light 40° above the horizon, in front and 30° to the right). Left: the eye's frustum E seen from the light (grey edges), its hull C, the focus region (orange), the trapezoid T (blue) and the smallest axis-aligned bounding box B (dashed). Middle: C in the trapezoidal space N_T: it covers {:.1} % of the map. Right: C in the bounding box's space: {:.1} %. The unused rest is the paper's wastage. The paper's figures are sketches for a chosen view; ours are computed. Unlike the paper, whose smallest bounding box may be rotated, B here is the axis-aligned box of the light's view, and the light is ours, not the paper's, so the two coverages can be close.",
+            "Martin & Tan 2004, Figs. 3 and 4, from maps::tsm::tsm (80 % rule, focus δ = {FOCUS}; n = 1, f = 100, θ = 30°; light 40° above the horizon, in front and 30° to the right). Top: the eye's frustum E seen from the light (grey edges), its hull C, the focus region (orange), the trapezoid T (blue) and the smallest axis-aligned bounding box B (dashed). Middle: C in the trapezoidal space N_T: it covers {:.1} % of the map. Bottom: C in the bounding box's space: {:.1} %. The unused rest is the paper's wastage. The paper's figures are sketches for a chosen view; ours are computed. Unlike the paper, whose smallest bounding box may be rotated, B here is the axis-aligned box of the light's view, and the light is ours, not the paper's, so the two coverages can be close.",
             100.0 * self.covered_t,
             100.0 * self.covered_b
         );
@@ -146,7 +146,7 @@ impl Figure for Fig3 {
             "Trapezoidal approximation against the bounding box",
             &[caption.as_str()],
         )?;
-        let panels = body.split_evenly((1, 3));
+        let panels = body.split_evenly((3, 1));
         // Left: light space.
         let pts: Vec<DVec2> = self.eye.iter().chain(&self.trapezoid).copied().collect();
         let lo = pts

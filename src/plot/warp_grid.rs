@@ -1,6 +1,6 @@
 //! Lloyd et al. 2006 Fig 4: the perspective warp's grid as n′ decreases from ∞ to n, light
 //! overhead. Top: in light space (seen from the light), the shadow map's texel grid over the
-//! view frustum. Bottom: in the shadow map, the view frustum's own grid (planes of constant
+//! view frustum. Right: in the shadow map, the view frustum's own grid (planes of constant
 //! depth and rays of constant x/z), stretched to fill the map.
 //!
 //! Both come from the crate's built matrix ([`crate::maps::warp`] with [`WarpRule::Eta`]): on
@@ -95,7 +95,7 @@ pub(super) fn fig4() -> Result<Fig4, Fail> {
         }
         let name = match np.as_finite() {
             None => "n′ = ∞ (η = −1, uniform)".to_string(),
-            Some(v) if eta == 0.0 => format!("n′ = n + √(fn) = {v:.2} (η = 0, LiSPSM)"),
+            Some(v) if eta == 0.0 => format!("n′ = {v:.2} (η = 0, LiSPSM)"),
             Some(v) if eta == 1.0 => format!("n′ = n = {v:.0} (η = 1, PSM)"),
             Some(v) => format!("n′ = {v:.2} (η = {eta})"),
         };
@@ -111,7 +111,7 @@ pub(super) fn fig4() -> Result<Fig4, Fail> {
 
 impl Figure for Fig4 {
     fn size(&self) -> (u32, u32) {
-        (1600, 900)
+        (520, 1560)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -119,10 +119,11 @@ impl Figure for Fig4 {
             root,
             "Perspective warping: the shadow map's grid as n′ decreases from ∞ to n, light overhead",
             &[
-                "Lloyd et al. 2006, Fig. 4 (n = 1, f = 10, θ = 30°), from the crate's built matrices (maps::warp with WarpRule::Eta) on the plane y = 0. Top: seen from the light, the map's 12 × 12 texel grid (blue) over the view frustum (black); the warp compresses it towards the near plane. Bottom: in the shadow map, the frustum's own grid (planes of constant depth, orange, and rays from the eye, green) stretched to fill the map. The paper draws the same two rows as sketches.",
+                "Lloyd et al. 2006, Fig. 4 (n = 1, f = 10, θ = 30°), from the crate's built matrices (maps::warp with WarpRule::Eta) on the plane y = 0. Left: seen from the light, the map's 12 × 12 texel grid (blue) over the view frustum (black); the warp compresses it towards the near plane. Right: in the shadow map, the frustum's own grid (planes of constant depth, orange, and rays from the eye, green) stretched to fill the map. The paper draws the same two rows (here columns) as sketches.",
             ],
         )?;
-        let rows = body.split_evenly((2, self.columns.len()));
+        // One row per n′: the light's view on the left, the map on the right.
+        let rows = body.split_evenly((self.columns.len(), 2));
         let (n, f, t) = (self.view.near(), self.view.far(), self.view.tan_half_fov());
         let depth = Axis::linear("depth z (eye-space units)", 0.0, f * 1.05);
         let across = Axis::linear("x (eye space)", -f * t * 1.1, f * t * 1.1);
@@ -138,8 +139,8 @@ impl Figure for Fig4 {
         for (k, col) in self.columns.iter().enumerate() {
             // Equal aspect in both rows: the frustum and the map undistorted.
             let st = ChartStyle::default();
-            let (dx, dy) = equal_aspect(&rows[k], &col.title, &depth, &across, &st)?;
-            let mut chart = build_chart(&rows[k], &col.title, &dx, &dy, false)?;
+            let (dx, dy) = equal_aspect(&rows[2 * k], &col.title, &depth, &across, &st)?;
+            let mut chart = build_chart(&rows[2 * k], &col.title, &dx, &dy, false)?;
             let bounds = (0.0, f * 1.05, -f * t * 1.1, f * t * 1.1);
             for seg in &col.light_space {
                 for piece in clip_polyline(&[Some(seg[0]), Some(seg[1])], bounds) {
@@ -147,7 +148,7 @@ impl Figure for Fig4 {
                 }
             }
             chart.draw_series(LineSeries::new(frustum, BLACK.stroke_width(2)))?;
-            let below = &rows[self.columns.len() + k];
+            let below = &rows[2 * k + 1];
             let (ux, vy) = equal_aspect(below, "", &u, &v, &st)?;
             let mut chart = build_chart(below, "", &ux, &vy, false)?;
             chart.draw_series(LineSeries::new(UNIT_SQUARE, BLACK.stroke_width(2)))?;

@@ -79,7 +79,7 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
         ratio.series.push(s);
     }
     Ok(Charts {
-        size: (1300, 640),
+        size: (520, 860),
         title: "Worst case over all light directions against the light-behind closed form".into(),
         caption: vec![
             "Lloyd et al. 2006, §5.3 (no figure in the paper; its claim: the worst S̄ over all light directions is within 2–3 times the light-behind value). f/n = 1000, θ = 30°.".into(),

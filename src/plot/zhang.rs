@@ -168,7 +168,7 @@ fn fmt_lambda(n: NPrime) -> String {
 
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
-        (2200, 1240)
+        (520, 1900)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -179,25 +179,17 @@ impl Figure for Fig3 {
             &caption,
         )?;
         let (w, _) = body.dim_in_pixel();
-        let (maps, bars) = body.split_horizontally(w - 300);
-        let (header, maps) = maps.split_vertically(24);
-        let (hw, _) = header.dim_in_pixel();
-        let group_w = hw as i32 / 3;
-        for (g, label) in self.scheme_labels.iter().enumerate() {
-            header.draw(&Text::new(
-                label.clone(),
-                (g as i32 * group_w + group_w / 2, 2),
-                TextStyle::from((FONT, 18).into_font()).pos(Pos::new(HPos::Center, VPos::Top)),
-            ))?;
-        }
+        // Per angle θ a 3 × 3 block: a row per scheme, a column per quantity; one colour bar
+        // per quantity, beside the blocks.
+        let (maps, bars) = body.split_horizontally(w - 90);
         let row_areas = maps.split_evenly((self.rows.len(), 1));
         let style = ChartStyle {
-            title_size: 15,
+            title_size: 13,
             x_label_area: 34,
             y_label_area: 40,
-            tick_size: 12,
+            tick_size: 13,
             desc_size: 13,
-            margin: 4,
+            margin: 3,
         };
         let z_axis = Axis::linear("z", 0.0, self.far);
         let y_axis = Axis::linear("y", -self.far * self.tan_phi, self.far * self.tan_phi);
@@ -209,14 +201,14 @@ impl Figure for Fig3 {
                 (6, 1),
                 TextStyle::from((FONT, 15).into_font()).pos(Pos::new(HPos::Left, VPos::Top)),
             ))?;
-            let cells = cells.split_evenly((1, 9));
+            let cells = cells.split_evenly((3, 3));
             for (s, scheme) in row.iter().enumerate() {
                 for (q, panel) in scheme.iter().enumerate() {
                     let cell = &cells[3 * s + q];
                     // Equal aspect: the frustum's side view undistorted.
-                    let (za, ya) = equal_aspect(cell, QUANTITIES[q], &z_axis, &y_axis, &style)?;
-                    let mut chart =
-                        build_chart_styled(cell, QUANTITIES[q], &za, &ya, false, &style)?;
+                    let title = format!("{} {}", self.scheme_labels[s], QUANTITIES[q]);
+                    let (za, ya) = equal_aspect(cell, &title, &z_axis, &y_axis, &style)?;
+                    let mut chart = build_chart_styled(cell, &title, &za, &ya, false, &style)?;
                     super::chart::draw_grid(&mut chart, &panel.grid, &self.scales[q])?;
                     // The frustum's outline.
                     let (n, f, t) = (1.0, self.far, self.tan_phi);
@@ -234,7 +226,7 @@ impl Figure for Fig3 {
             }
         }
         for (bar, scale) in bars
-            .split_evenly((1, self.scales.len()))
+            .split_evenly((self.scales.len(), 1))
             .iter()
             .zip(&self.scales)
         {

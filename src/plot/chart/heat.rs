@@ -352,7 +352,8 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
         }
     }
     draw_cells(area, &cells)?;
-    // Elevation rings at 0°, 30°, 60° and the axis from behind to in front.
+    // Elevation rings at 0°, 30°, 60° and the axis from behind to in front (the vertical plane
+    // through the view direction).
     let ring_style = ShapeStyle {
         color: RGBColor(60, 60, 60).to_rgba(),
         filled: false,
@@ -362,6 +363,18 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
         let mut ring = arc(deg.to_radians(), 0.0, std::f64::consts::TAU, false);
         ring.push(ring[0]);
         area.draw(&PathElement::new(ring, ring_style))?;
+    }
+    // A finer grid near the rim, where the horizon band is squeezed: rings at 10° and 20°.
+    for deg in [10.0f64, 20.0] {
+        let mut ring = arc(deg.to_radians(), 0.0, std::f64::consts::TAU, false);
+        ring.push(ring[0]);
+        area.draw(&PathElement::new(
+            ring,
+            ShapeStyle {
+                color: RGBColor(60, 60, 60).mix(0.45),
+                ..ring_style
+            },
+        ))?;
     }
     area.draw(&PathElement::new(
         vec![to_px((-1.0, 0.0)), to_px((1.0, 0.0))],
@@ -375,7 +388,7 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
         area.draw(&Text::new(
             text.to_string(),
             to_px(at),
-            TextStyle::from((FONT, 12).into_font()).pos(pos),
+            TextStyle::from((FONT, 13).into_font()).pos(pos),
         ))
     };
     label("← behind", (-1.0, 0.97), Pos::new(HPos::Left, VPos::Top))?;
@@ -420,7 +433,7 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
         .y_desc(scale.axis.label.as_str())
         .y_label_formatter(&yf)
         .axis_desc_style((FONT, 14))
-        .label_style((FONT, 12))
+        .label_style((FONT, 13))
         .draw()?;
     let n = scale.levels;
     chart.draw_series((0..n).map(|k| {

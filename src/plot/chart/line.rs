@@ -15,6 +15,72 @@ pub(crate) enum Dash {
     Dotted,
 }
 
+/// The marker of a series, so that lines of different colours stay apart in greyscale: the
+/// `i`-th colour of [`PALETTE`] has the `i`-th shape.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Marker {
+    Circle,
+    Square,
+    TriangleUp,
+    Diamond,
+    TriangleDown,
+    WideBar,
+    TallBar,
+    Hexagon,
+}
+
+impl Marker {
+    const ALL: [Marker; 8] = [
+        Marker::Circle,
+        Marker::Square,
+        Marker::TriangleUp,
+        Marker::Diamond,
+        Marker::TriangleDown,
+        Marker::WideBar,
+        Marker::TallBar,
+        Marker::Hexagon,
+    ];
+
+    /// The shape of a colour: the `i`-th of [`PALETTE`] gets the `i`-th shape, any other colour
+    /// a circle.
+    pub fn of(colour: RGBColor) -> Marker {
+        PALETTE
+            .iter()
+            .position(|&c| c == colour)
+            .map_or(Marker::Circle, |i| Self::ALL[i])
+    }
+
+    /// The marker's outline in pixels about its centre, for a radius `r`.
+    pub fn outline(self, r: i32) -> Vec<(i32, i32)> {
+        let ngon = |n: u32, phase: f64| -> Vec<(i32, i32)> {
+            (0..n)
+                .map(|k| {
+                    let a = phase + f64::from(k) * std::f64::consts::TAU / f64::from(n);
+                    (
+                        (f64::from(r) * a.cos()).round() as i32,
+                        (f64::from(r) * a.sin()).round() as i32,
+                    )
+                })
+                .collect()
+        };
+        let h = r / 2;
+        match self {
+            Marker::Circle => ngon(12, 0.0),
+            Marker::Square => vec![(-r, -r), (r, -r), (r, r), (-r, r)],
+            Marker::TriangleUp => vec![(0, -r - 1), (r + 1, r), (-r - 1, r)],
+            Marker::TriangleDown => vec![(0, r + 1), (r + 1, -r), (-r - 1, -r)],
+            Marker::Diamond => vec![(0, -r - 1), (r + 1, 0), (0, r + 1), (-r - 1, 0)],
+            Marker::WideBar => vec![(-r - 1, -h), (r + 1, -h), (r + 1, h), (-r - 1, h)],
+            Marker::TallBar => vec![(-h, -r - 1), (h, -r - 1), (h, r + 1), (-h, r + 1)],
+            Marker::Hexagon => ngon(6, std::f64::consts::FRAC_PI_6),
+        }
+    }
+}
+
+/// Where a line without a marker at every point carries its shape: at these fractions of its
+/// points, shifted a little per series so that the markers of lines that meet do not coincide.
+const MARKER_AT: [f64; 5] = [0.08, 0.29, 0.5, 0.71, 0.92];
+
 /// One line of a line chart, in data coordinates.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Series {
@@ -176,7 +242,19 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
     let (y0, y1) = c.y.range();
     let bounds = (x0, x1, y0, y1);
     let mut any_label = false;
-    for s in &c.series {
+    let colours = {
+        let mut cs: Vec<RGBColor> = c
+            .series
+            .iter()
+            .filter(|s| s.label.is_some())
+            .map(|s| s.colour)
+            .collect();
+        cs.dedup();
+        cs.sort_by_key(|c| (c.0, c.1, c.2));
+        cs.dedup();
+        cs.len()
+    };
+    for (k, s) in c.series.iter().enumerate() {
         let pts: Vec<Option<(f64, f64)>> = s
             .points
             .iter()
@@ -194,20 +272,34 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
                 Dash::Dotted => chart.draw_series(DashedLineSeries::new(piece, 2, 4, style))?,
             };
         }
-        if s.markers {
-            let inside = pts.iter().flatten().filter(|&&(x, y)| {
-                x >= x0 && x <= x1 && y >= y0 && y <= y1 && x.is_finite() && y.is_finite()
-            });
-            let marker_style = s.colour.filled();
-            chart.draw_series(
-                inside.map(|&(x, y)| Circle::new((x, y), s.width + 2, marker_style)),
-            )?;
-        }
+        // Markers: at every point of a series that asks for them, and a few along every other
+        // labelled line of a chart with more than one colour (greyscale print).
+        let shape = Marker::of(s.colour);
+        let along: Vec<(f64, f64)> = if s.markers {
+            pts.iter().flatten().copied().collect()
+        } else if s.label.is_some() && colours > 1 && pts.len() > 1 {
+            let shift = 0.035 * (k % 3) as f64;
+            MARKER_AT
+                .iter()
+                .filter_map(|f| {
+                    pts[((f + shift - 0.035) * (pts.len() - 1) as f64).round() as usize]
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let r = s.width as i32 + 2;
+        chart.draw_series(
+            along
+                .into_iter()
+                .filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1)
+                .map(|at| EmptyElement::at(at) + Polygon::new(shape.outline(r), s.colour.filled())),
+        )?;
         if let Some(label) = &s.label {
             let colour = s.colour;
             let width = s.width;
             let dash = s.dash;
-            let markers = s.markers;
+            let markers = s.markers || colours > 1;
             chart
                 .draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())?
                 .label(label.as_str())
@@ -224,11 +316,16 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
                     } else {
                         TRANSPARENT.filled()
                     };
+                    let outline: Vec<(i32, i32)> = shape
+                        .outline(width as i32 + 2)
+                        .into_iter()
+                        .map(|(x, y)| (x + 12, y))
+                        .collect();
                     EmptyElement::at(at)
                         + seg(p[0])
                         + seg(p[1])
                         + seg(p[2])
-                        + Circle::new((12, 0), width + 2, marker)
+                        + Polygon::new(outline, marker)
                 });
             any_label = true;
         }
@@ -281,6 +378,47 @@ pub(crate) const PALETTE: [RGBColor; 8] = [
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Greyscale (issue 25): each palette colour has its own marker shape, and a chart of two
+    /// solid lines of different colours draws that many marker polygons along each (counted in
+    /// the SVG), and none for a chart of one colour.
+    #[test]
+    fn lines_of_different_colours_carry_different_markers() {
+        super::super::super::ensure_font().unwrap();
+        let shapes: Vec<Vec<(i32, i32)>> =
+            PALETTE.iter().map(|&c| Marker::of(c).outline(4)).collect();
+        for i in 0..shapes.len() {
+            for j in 0..i {
+                assert_ne!(shapes[i], shapes[j], "colours {i} and {j}");
+            }
+        }
+        let polygons = |colours: &[RGBColor]| {
+            let mut c = LineChart::new(
+                "t",
+                Axis::linear("x", 0.0, 1.0),
+                Axis::linear("y", 0.0, 1.0),
+            );
+            for (k, &col) in colours.iter().enumerate() {
+                let y = 0.2 + 0.3 * k as f64;
+                let pts = (0..=100).map(|i| (f64::from(i) / 100.0, y)).collect();
+                c.series.push(Series::line(format!("s{k}"), pts, col));
+            }
+            let mut svg = String::new();
+            {
+                let area =
+                    super::super::super::svg::Svg::new(&mut svg, (400, 300), 1).into_drawing_area();
+                draw_line_chart(&area, &c).unwrap();
+                area.present().unwrap();
+            }
+            svg.matches("<polygon").count()
+        };
+        // Five along each line and one in each legend entry.
+        assert_eq!(
+            polygons(&[PALETTE[0], PALETTE[1]]),
+            2 * (MARKER_AT.len() + 1)
+        );
+        assert_eq!(polygons(&[PALETTE[0]]), 1);
+    }
 
     #[test]
     fn clipping_keeps_inside_and_cuts_at_the_border() {

@@ -36,14 +36,25 @@ pub(crate) fn frame<DB: DrawingBackend>(
         return Ok(root.margin(10, 10, 6, 6));
     }
     let (w, h) = root.dim_in_pixel();
-    root.draw(&Text::new(
-        title.to_string(),
-        (w as i32 / 2, 10),
-        TextStyle::from((FONT, 22).into_font()).pos(Pos::new(HPos::Center, VPos::Top)),
-    ))?;
+    let width = f64::from(w) - 28.0;
+    // The title, wrapped to the page like the caption.
+    let title_style =
+        TextStyle::from((FONT, 20).into_font()).pos(Pos::new(HPos::Center, VPos::Top));
+    let title_lines = wrap(title, width, |t| {
+        root.estimate_text_size(t, &title_style)
+            .map(|(tw, _)| f64::from(tw))
+            .unwrap_or(f64::INFINITY)
+    });
+    for (k, line) in title_lines.iter().enumerate() {
+        root.draw(&Text::new(
+            line.clone(),
+            (w as i32 / 2, 8 + 24 * k as i32),
+            title_style.clone(),
+        ))?;
+    }
+    let top = 20 + 24 * title_lines.len() as u32;
     let line_h = 18;
     let style = TextStyle::from((FONT, 14).into_font());
-    let width = f64::from(w) - 28.0;
     // The caption is one paragraph, wrapped to the page.
     let lines = wrap(&caption.join(" "), width, |t| {
         root.estimate_text_size(t, &style)
@@ -60,7 +71,7 @@ pub(crate) fn frame<DB: DrawingBackend>(
                 .pos(Pos::new(HPos::Left, VPos::Top)),
         ))?;
     }
-    Ok(root.margin(44, bottom, 6, 6))
+    Ok(root.margin(top, bottom as u32, 6, 6))
 }
 
 /// Breaks `text` at spaces into lines no wider than `width` (as measured by `measure`); a single
@@ -103,7 +114,10 @@ impl super::super::Figure for Charts {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let caption: Vec<&str> = self.caption.iter().map(String::as_str).collect();
         let body = frame(root, &self.title, &caption)?;
-        let panels = body.split_evenly((1, self.charts.len().max(1)));
+        // Side by side where each chart gets at least 380 units of width, stacked otherwise.
+        let n = self.charts.len().max(1);
+        let columns = (body.dim_in_pixel().0 as usize / 380).clamp(1, n);
+        let panels = body.split_evenly((n.div_ceil(columns), columns));
         for (panel, chart) in panels.iter().zip(&self.charts) {
             draw_line_chart(panel, chart)?;
         }
