@@ -27,8 +27,8 @@ fn warp(extra: &[&str]) -> (bool, String) {
         .args(&args)
         .output()
         .unwrap();
-    let text = String::from_utf8_lossy(&out.stdout).to_string()
-        + &String::from_utf8_lossy(&out.stderr);
+    let text =
+        String::from_utf8_lossy(&out.stdout).to_string() + &String::from_utf8_lossy(&out.stderr);
     (out.status.success(), text)
 }
 
@@ -66,4 +66,34 @@ fn bad_clipmap_options_are_named() {
         let (ok, text) = warp(extra);
         assert!(!ok && text.contains(name), "{extra:?}: {text}");
     }
+}
+
+/// Clipmap levels are orthographic: a warp rule other than uniform is refused by name, not
+/// silently dropped.
+#[test]
+fn a_warped_clipmap_is_refused() {
+    let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
+        .args([
+            "warp",
+            "--warp",
+            "lispsm",
+            "--near",
+            "0.1",
+            "--far",
+            "1000",
+            "--half-fov",
+            "0.5",
+            "--light-dir",
+            "0.3,-0.8,-0.4",
+            "--partition",
+            "clipmap",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{text}");
+    assert!(
+        text.contains("partition") && text.contains("--warp uniform") && text.contains("lispsm"),
+        "{text}"
+    );
 }

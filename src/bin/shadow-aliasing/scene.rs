@@ -170,6 +170,16 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
             ),
         ));
     }
+    if sch.partition == PartitionName::Clipmap && sch.warp != WarpName::Uniform {
+        return Err(Error::invalid(
+            "partition",
+            format!(
+                "clipmap levels are unwarped (camera-centred orthographic squares): give --warp \
+                 uniform (got --warp {})",
+                value_name(&sch.warp)
+            ),
+        ));
+    }
     let r = rule(&view, Lights::One(light), sch)?;
     let k = k(sch)?;
     let overlap = sc.overlap.unwrap_or(0.0);
