@@ -9,8 +9,9 @@ use super::PlotError;
 pub struct Options {
     /// No title and no caption in the figure (for a document that sets its own caption).
     pub bare: bool,
-    /// The PNG's pixel size is `scale` times the figure's (lines and text scale with it); the
-    /// SVG's `width` and `height` too (its view box stays). 1 to [`MAX_SCALE`].
+    /// The PNG's pixel size is `scale` × [`super::PNG_ZOOM`] times the figure's (lines and text
+    /// scale with it); the SVG's `width` and `height` are `scale` times its view box. 1 to
+    /// [`MAX_SCALE`].
     pub scale: u32,
     /// Pixels per inch recorded in the PNG (`pHYs`), so that the printed size is the pixel size
     /// divided by `dpi`. Finite, 1 to 10 000.
