@@ -12,9 +12,9 @@ mod builders;
 mod closed;
 mod error_image;
 mod frame;
-mod plan;
 mod measure;
 mod out;
+mod plan;
 mod stacked;
 mod sweep;
 
