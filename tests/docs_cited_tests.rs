@@ -63,7 +63,12 @@ fn every_cited_test_exists() {
             checked += 1;
             let is_library_fn = library.contains(&format!("pub fn {test}("))
                 || library.contains(&format!("pub fn {test}<"));
-            if !source.contains(&format!("fn {test}(")) && !is_library_fn {
+            // `plan::clipmap` names the library's module src/plan/clipmap.rs, not a test of
+            // tests/plan.rs.
+            let src = root.join("src").join(&file);
+            let is_module = src.join(format!("{test}.rs")).is_file()
+                || src.join(&test).join("mod.rs").is_file();
+            if !source.contains(&format!("fn {test}(")) && !is_library_fn && !is_module {
                 missing.push(format!("{}: {file}::{test}", page.display()));
             }
         }

@@ -37,126 +37,12 @@
 //! those of any other map. Its depth range covers B and the casters, snapped to whole texels, as
 //! a stable cascade's is. `FrameMap::clipmap_level` names the level.
 
+use super::input::ClipmapOptions;
 use super::output::Focus;
 use super::{Built, Ctx, Frame, Slice};
 use crate::analytic::partition::MAX_PARTITIONS;
 use crate::error::{fmt_num, Error, Result};
 use crate::frustum::ViewFrustum;
-
-/// The levels that [`ClipmapOptions`] accepts: −64..=64 (radii 2^−63 to 2^65 units).
-const LEVEL_RANGE: std::ops::RangeInclusive<i32> = -64..=64;
-
-/// The LOD biases that [`ClipmapOptions`] accepts: a texel 2^±32 pixels wide is not a shadow.
-const MAX_LOD_BIAS: f64 = 32.0;
-
-/// The layout of a clipmap ([`FrameScheme::Clipmap`](super::FrameScheme::Clipmap)); the levels'
-/// resolution is the frame's `map_resolution`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ClipmapOptions {
-    /// The finest level (Unreal `r.Shadow.Virtual.Clipmap.FirstLevel`, 6).
-    pub first_level: i32,
-    /// The coarsest level (Unreal `r.Shadow.Virtual.Clipmap.LastLevel`, 22).
-    pub last_level: i32,
-    /// The LOD bias b: the chosen level's texel is at most 2^b pixels, and more than 2^{b−1}
-    /// (Unreal `r.Shadow.Virtual.ResolutionLodBiasDirectional`, −0.5; −1 doubles the
-    /// resolution).
-    pub lod_bias: f64,
-    /// The world length of one unit of the level sizes: level i covers radius 2^{i+1} units.
-    /// Unreal's unit is the centimetre, so 0.01 for a world in metres.
-    pub unit: f64,
-    /// Texels per page side (Unreal 128); divides the map resolution, at least 2 pages a side.
-    pub page_texels: u32,
-}
-
-impl ClipmapOptions {
-    /// Unreal 5's defaults for a world in metres: levels 6 to 22 of radius 2^{i+1} cm, LOD bias
-    /// −0.5, pages of 128² texels (with a `map_resolution` of 16 384: 128 × 128 pages).
-    pub const UNREAL: Self = Self {
-        first_level: 6,
-        last_level: 22,
-        lod_bias: -0.5,
-        unit: 0.01,
-        page_texels: 128,
-    };
-
-    /// The half-width of level `level`'s square, world units: `2^{level+2} · unit`.
-    #[must_use]
-    pub fn half_width(&self, level: i32) -> f64 {
-        self.unit * f64::from(level + 2).exp2()
-    }
-
-    /// The radius around the camera that level `level` covers, world units: `2^{level+1} · unit`.
-    #[must_use]
-    pub fn radius(&self, level: i32) -> f64 {
-        self.unit * f64::from(level + 1).exp2()
-    }
-
-    /// Every field in its domain, for levels of `resolution` texels.
-    fn check(&self, resolution: u32) -> Result<()> {
-        for (name, l) in [
-            ("first_level", self.first_level),
-            ("last_level", self.last_level),
-        ] {
-            if !LEVEL_RANGE.contains(&l) {
-                return Err(Error::invalid(
-                    name,
-                    format!(
-                        "must be in {}..={} (got {l}): the levels' radii 2^(level+1) · unit \
-                         must be finite; change unit instead",
-                        LEVEL_RANGE.start(),
-                        LEVEL_RANGE.end()
-                    ),
-                ));
-            }
-        }
-        if self.first_level > self.last_level {
-            return Err(Error::invalid(
-                "first_level",
-                format!(
-                    "must not exceed last_level (got first_level={}, last_level={})",
-                    self.first_level, self.last_level
-                ),
-            ));
-        }
-        if !(self.lod_bias.is_finite() && self.lod_bias.abs() <= MAX_LOD_BIAS) {
-            return Err(Error::invalid(
-                "lod_bias",
-                format!(
-                    "must be finite and within ±{MAX_LOD_BIAS} (got {}); Unreal's default is -0.5",
-                    fmt_num(self.lod_bias)
-                ),
-            ));
-        }
-        if !(self.unit.is_finite() && self.unit > 0.0) {
-            return Err(Error::invalid(
-                "unit",
-                format!(
-                    "must be a finite length > 0 (got {}): 0.01 for a world in metres (Unreal's \
-                     levels are in centimetres)",
-                    fmt_num(self.unit)
-                ),
-            ));
-        }
-        let p = self.page_texels;
-        if p == 0 || !resolution.is_multiple_of(p) || resolution / p < 2 {
-            return Err(Error::invalid(
-                "page_texels",
-                format!(
-                    "must divide map_resolution into at least 2 pages a side (got page_texels={p}, \
-                     map_resolution={resolution}); Unreal's pages are 128 texels of 16384"
-                ),
-            ));
-        }
-        Ok(())
-    }
-}
-
-impl Default for ClipmapOptions {
-    /// [`ClipmapOptions::UNREAL`].
-    fn default() -> Self {
-        Self::UNREAL
-    }
-}
 
 /// The shader's level choice for a camera, an image and a clipmap (module docs): `level(z) =
 /// clamp(⌊log₂ z + offset⌋, first_level, last_level)` at eye depth z.

@@ -88,9 +88,11 @@ mod upload;
 mod wgsl;
 
 pub use bias::Bias;
-pub use clipmap::{ClipmapOptions, LevelChoice};
+pub use clipmap::LevelChoice;
 pub use culling::{CullVolume, MAX_CULL_PLANES};
-pub use input::{Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme, WarpCentre};
+pub use input::{
+    Aabb, Bound, Camera, CascadeSplits, ClipmapOptions, FrameInput, FrameScheme, WarpCentre,
+};
 pub use output::{Focus, Frame, FrameMap, FrameMaps, LightCase, MapError};
 pub use upload::{GpuShadowMap, GPU_SHADOW_MAP_WGSL};
 pub use wgsl::SHADOW_WGSL;
