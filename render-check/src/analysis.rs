@@ -6,7 +6,10 @@
 //!    the true boundary measured in shadow-map texels (docs/rendered.md, "Shadow correctness");
 //! 3. coverage: every visible pixel inside the clip volume of the map the shader selected;
 //! 4. the rendered perspective error against the frame's reported M_x, M_z, and, in Lloyd 2006's
-//!    overhead case, against its Eq 7–10.
+//!    overhead case, against its Eq 7–10;
+//! 5. cascades' cross-fade: in each blend band, the weights the shader applied against the
+//!    frame's `blend` at the pixel's exact depth, and the shaded visibility against the weighted
+//!    pair of both maps' lookups.
 
 use crate::gpu::{FrameOutput, Lookup};
 use crate::perspective::{centred, lloyd2006, one_sided, perspective_error};
@@ -71,6 +74,83 @@ pub struct Measured {
     /// of a ground pixel and Eq 7–8 at its depth, and between the rendered maxima and Eq 9–10
     /// (maps whose near end is the camera's near plane). `None` where the case does not apply.
     pub lloyd_rel_diff: Option<f64>,
+    /// Visible pixels in a blend band (the frame's `blend` at the pixel's exact view depth, or
+    /// the shader's pick cross-fading two maps); `None` for a frame with no band.
+    pub blend_pixels: Option<usize>,
+    /// Of those, the pixels whose cross-fade is wrong: weights off the frame's by more than
+    /// [`BLEND_WEIGHT_TOLERANCE`], or a shaded visibility off the weighted pair of the two maps'
+    /// lookups by more than [`BLEND_VALUE_TOLERANCE`]; `None` for a frame with no band.
+    pub blend_mismatches: Option<usize>,
+}
+
+/// How far the shader's weight of a map in a blend band may lie from the frame's at the pixel's
+/// exact depth: the GPU's view depth is interpolated in `f32` (about 10⁻⁵ of a band's width).
+pub const BLEND_WEIGHT_TOLERANCE: f64 = 1e-3;
+
+/// How far the shaded visibility may lie from `(1 − w) v₁ + w v₂` (the two maps' lookups and the
+/// weight the shader applied): `f32` rounding of the mix.
+pub const BLEND_VALUE_TOLERANCE: f64 = 1e-4;
+
+/// The blend band of `built` holding view depth `z`: its first map j and the weight of map
+/// j + 1, from the frame's own `blend` (`FrameMap::blend`, as reported: a fault does not move
+/// it).
+fn band_at(built: &Built, z: f64) -> Option<(usize, f64)> {
+    let n = built.maps.len();
+    built.maps.iter().enumerate().find_map(|(j, m)| {
+        let (b, e) = m.reported.blend;
+        (j + 1 < n && b < e && z >= b && z < e).then(|| (j, (z - b) / (e - b)))
+    })
+}
+
+/// The maps a pixel at view depth `z` is shaded from with a weight above
+/// [`BLEND_WEIGHT_TOLERANCE`], by the frame's bands: the pair of its band, or none outside one.
+fn band_maps(built: &Built, z: f64) -> Vec<usize> {
+    match band_at(built, z) {
+        Some((j, w)) => [(j, 1.0 - w), (j + 1, w)]
+            .into_iter()
+            .filter(|&(_, x)| x > BLEND_WEIGHT_TOLERANCE)
+            .map(|(k, _)| k)
+            .collect(),
+        None => Vec::new(),
+    }
+}
+
+/// Whether the cross-fade at pixel `i` is right: the shader's weights (first map `part`, second
+/// map and its weight from [`FrameOutput::blend`]) against the frame's band at the exact depth
+/// `z`, and the shaded visibility against the weighted pair of the two maps' lookups.
+fn blend_agrees(out: &FrameOutput, i: usize, part: usize, built: &Built, z: f64) -> bool {
+    let [second, wg, v1, v2] = out.blend[i].map(f64::from);
+    let vis = f64::from(out.texel[i][3]);
+    if (vis - ((1.0 - wg) * v1 + wg * v2)).abs() > BLEND_VALUE_TOLERANCE {
+        return false;
+    }
+    let second = second as usize;
+    let weight_of = |k: usize| {
+        let mut x = 0.0;
+        if part == k {
+            x += 1.0 - wg;
+        }
+        if second == k {
+            x += wg;
+        }
+        x
+    };
+    match band_at(built, z) {
+        Some((j, w)) => {
+            (weight_of(j) - (1.0 - w)).abs() <= BLEND_WEIGHT_TOLERANCE
+                && (weight_of(j + 1) - w).abs() <= BLEND_WEIGHT_TOLERANCE
+        }
+        // Outside every band: one map (which one, the coverage tells).
+        None => second == part || wg.min(1.0 - wg) <= BLEND_WEIGHT_TOLERANCE,
+    }
+}
+
+/// Whether pixel `i` lies in a blend band: by the frame's bands at the exact depth `z`, or by the
+/// shader's pick.
+fn in_band(out: &FrameOutput, i: usize, part: usize, built: &Built, z: f64) -> bool {
+    let [second, wg, _, _] = out.blend[i];
+    band_at(built, z).is_some()
+        || (second as usize != part && f64::from(wg.min(1.0 - wg)) > BLEND_WEIGHT_TOLERANCE)
 }
 
 /// Per-pixel results (for the heat maps) and the case's numbers.
@@ -130,8 +210,12 @@ struct Pixel {
     /// The map the shader selected (`usize::MAX` when it named none of the built maps).
     part: usize,
     predicted: Option<Footprint>,
-    /// Whether the shadow comparison decides this pixel (outside the texel band).
+    /// Whether the shadow comparison decides this pixel (outside the texel band; in a blend
+    /// band, outside the texel band of both its maps).
     decidable: bool,
+    /// Whether every map of the pixel's blend band by the frame ([`band_maps`]) holds its exact
+    /// point in its clip volume (true outside a band).
+    band_covered: bool,
 }
 
 const SKY: Pixel = Pixel {
@@ -141,6 +225,7 @@ const SKY: Pixel = Pixel {
     part: usize::MAX,
     predicted: None,
     decidable: false,
+    band_covered: true,
 };
 
 /// The first pass over rows `rows` (exact points, classes, predictions, the texel band).
@@ -201,18 +286,28 @@ fn first_pass(
                 .and_then(|m| surface_footprint(&view.proj, &m.built, grids, p, ne).ok());
             let pw = eye_to_world.transform_point3(p);
             let facing = surf.normal.dot(-view.light_world) > FACING;
+            // The shader's map, and in a blend band both of the band's maps.
+            let mut used = band_maps(built, -p.z);
+            let band_covered = used
+                .iter()
+                .all(|&k| clip_covers(&maps[k], pw, f64::from(res)));
+            if !used.contains(&part) {
+                used.push(part);
+            }
             let (class, decidable) = if facing {
                 let occ = ray_occluded(scene, pw, surf.normal, view.light_world);
-                let decidable = maps.get(part).is_some_and(|m| {
-                    shadow_decidable(
-                        scene,
-                        m,
-                        f64::from(res),
-                        pw,
-                        surf.normal,
-                        view.light_world,
-                        occ,
-                    )
+                let decidable = used.iter().all(|&k| {
+                    maps.get(k).is_some_and(|m| {
+                        shadow_decidable(
+                            scene,
+                            m,
+                            f64::from(res),
+                            pw,
+                            surf.normal,
+                            view.light_world,
+                            occ,
+                        )
+                    })
                 });
                 (if occ { Class::Shadow } else { Class::Lit }, decidable)
             } else {
@@ -225,6 +320,7 @@ fn first_pass(
                 part,
                 predicted,
                 decidable,
+                band_covered,
             });
         }
     }
@@ -298,6 +394,21 @@ fn percentile(sorted: &[f64], q: f64) -> f64 {
 /// ground under an overhead light is all at depth 1) lands there within a few `f32` ulps.
 pub const COVERAGE_TOLERANCE: (f64, f64) = (1e-3, 1e-6);
 
+/// Whether the world point `pw`'s exact (`f64`) light clip position in `map` lies in its clip
+/// volume, to [`COVERAGE_TOLERANCE`]: a blend band's second map, which the shader's texel output
+/// does not hold.
+fn clip_covers(map: &MapGeom, pw: DVec3, res: f64) -> bool {
+    let h = map.world_to_clip * pw.extend(1.0);
+    if h.w <= 0.0 {
+        return false;
+    }
+    let (et, ed) = COVERAGE_TOLERANCE;
+    let inside = |v: f64, hi: f64, e: f64| (-e..=hi + e).contains(&v);
+    inside((h.x / h.w + 1.0) * 0.5 * res, res, et)
+        && inside((h.y / h.w + 1.0) * 0.5 * res, res, et)
+        && inside(h.z / h.w, 1.0, ed)
+}
+
 /// Whether the pixel's light clip position in the map it selected lies in the clip volume: x, y
 /// within the map (texel coordinates in [0, res]) and depth in [0, 1], to
 /// [`COVERAGE_TOLERANCE`].
@@ -347,19 +458,44 @@ pub fn analyse(
     let (mut max_r, mut max_p) = (0.0f64, 0.0f64);
     // Per map: the rendered maxima of m_x, m_z.
     let mut rendered_m = vec![(0.0f64, 0.0f64); nmaps];
+    // The pixels whose rendered perspective error entered `rendered_m`.
+    let mut measured_px = vec![false; n];
     // Lloyd's overhead case.
     let lloyd = lloyd_applies(view, built, scheme);
     let mut lloyd_diff = 0.0f64;
     let mut ground_m = vec![(0.0f64, 0.0f64); nmaps];
     let (mut shadow, mut shadow_checked, mut lit, mut lit_checked) = (0, 0, 0, 0);
     let (mut misses, mut falses, mut band, mut band_mis, mut uncovered) = (0, 0, 0, 0, 0);
+    let blended = built
+        .maps
+        .iter()
+        .any(|m| m.reported.blend.0 < m.reported.blend.1);
+    let (mut blend_px, mut blend_mis) = (0usize, 0usize);
     let debug = std::env::var_os("RENDER_CHECK_DEBUG").is_some();
     for (i, q) in px.iter().enumerate() {
         if q.class == Class::Sky {
             continue;
         }
         visible += 1;
-        if q.part == usize::MAX || !covered(out, i, f64::from(res)) {
+        if blended && in_band(out, i, q.part, built, -q.p.z) {
+            blend_px += 1;
+            if !blend_agrees(out, i, q.part, built, -q.p.z) {
+                blend_mis += 1;
+                if debug && blend_mis < 6 {
+                    eprintln!(
+                        "  blend mismatch ({}, {}) depth {}: part {} blend {:?} shaded {} frame's band {:?}",
+                        i % w,
+                        i / w,
+                        -q.p.z,
+                        q.part,
+                        out.blend[i],
+                        out.texel[i][3],
+                        band_at(built, -q.p.z)
+                    );
+                }
+            }
+        }
+        if q.part == usize::MAX || !covered(out, i, f64::from(res)) || !q.band_covered {
             uncovered += 1;
             if debug && uncovered < 6 {
                 eprintln!(
@@ -429,6 +565,7 @@ pub fn analyse(
             if let Some((mx, mz)) = perspective_error(view, width, height, jr, q.p, q.n) {
                 let m = &mut rendered_m[q.part];
                 *m = (m.0.max(mx), m.1.max(mz));
+                measured_px[i] = true;
                 if let (Some(l), 1) = (&lloyd, out.id[i]) {
                     let d = l.pixel_diff(q.part, -q.p.z, mx, mz, width, height, res);
                     if debug && d > 0.005 {
@@ -450,7 +587,13 @@ pub fn analyse(
         return Err("no pixel could be compared (empty frame?)".into());
     }
     rels.sort_by(f64::total_cmp);
-    let (ratio, worst) = frame_ratios(&px, view, built, &rendered_m, (width, height, res));
+    let (ratio, worst) = frame_ratios(
+        (&px, &measured_px),
+        view,
+        built,
+        &rendered_m,
+        (width, height, res),
+    );
     if let Some(l) = &lloyd {
         lloyd_diff = lloyd_diff.max(l.maxima_diff(&ground_m, width, height, res));
     }
@@ -477,6 +620,8 @@ pub fn analyse(
         frame_error_ratio: ratio,
         frame_error_ratio_worst_visible: worst,
         lloyd_rel_diff: lloyd.map(|_| lloyd_diff),
+        blend_pixels: blended.then_some(blend_px),
+        blend_mismatches: blended.then_some(blend_mis),
     };
     Ok(Analysis {
         measured,
@@ -488,7 +633,7 @@ pub fn analyse(
 /// The frame's reported maxima against the rendered ones: the largest rendered/reported ratio
 /// over maps and over x and z, and the smallest where the body's worst point is visible.
 fn frame_ratios(
-    px: &[Pixel],
+    px: (&[Pixel], &[bool]),
     view: &View,
     built: &Built,
     rendered_m: &[(f64, f64)],
@@ -520,7 +665,7 @@ fn frame_ratios(
                 .fold(0.0f64, f64::max);
             let seen = per.iter().any(|e| {
                 let m = if axis == 0 { e.1 } else { e.2 };
-                m >= top * (1.0 - 1e-6) && visible_point(px, view, width, height, e.0)
+                m >= top * (1.0 - 1e-6) && visible_point(px, view, (width, height), e.0, k)
             });
             if seen {
                 let r = got / rep;
@@ -532,8 +677,17 @@ fn frame_ratios(
 }
 
 /// Whether the eye-space point `v` is (within [`VISIBLE_PIXELS`] pixel widths) the surface point
-/// of a visible pixel.
-fn visible_point(px: &[Pixel], view: &View, width: u32, height: u32, v: DVec3) -> bool {
+/// of a visible pixel looked up in map `map` whose rendered perspective error was measured
+/// (`measured`): where the body's worst point shows only on pixels of another map, or on none
+/// measured (a clipmap's last level, a sliver at the horizon), the map's rendered maximum says
+/// nothing about it.
+fn visible_point(
+    (px, measured): (&[Pixel], &[bool]),
+    view: &View,
+    (width, height): (u32, u32),
+    v: DVec3,
+    map: usize,
+) -> bool {
     let c = view.proj * v.extend(1.0);
     if c.w <= 0.0 {
         return false;
@@ -549,8 +703,9 @@ fn visible_point(px: &[Pixel], view: &View, width: u32, height: u32, v: DVec3) -
             if x < 0 || y < 0 || x >= width as isize || y >= height as isize {
                 continue;
             }
-            let q = px[y as usize * width as usize + x as usize];
-            if q.class != Class::Sky && (q.p - v).length() <= reach {
+            let j = y as usize * width as usize + x as usize;
+            let q = px[j];
+            if measured[j] && q.part == map && (q.p - v).length() <= reach {
                 return true;
             }
         }

@@ -5,10 +5,8 @@
 //! map's matrix (both the matrix the measurement takes and the GPU's, so that the two stay
 //! consistent and only the frame's own reported numbers, the ray cast and the coverage can tell),
 //! to the split ranges and faces the shader selects maps by, to how the maps are uploaded (the
-//! plain world matrix in place of the relative path) or to what is drawn into them (culling).
-//!
-//! The renderer does not cross-fade cascades (the frame's cascades are built with overlap 0, so
-//! their blend band is empty), so there is no "blend band ignored" fault (docs/rendered.md).
+//! plain world matrix in place of the relative path), to what is drawn into them (culling), or
+//! to how the shader cross-fades cascades over their blend band.
 
 use crate::gpu::Gpu;
 use crate::run::{run_full, Render, Sizes};
@@ -47,6 +45,9 @@ pub enum Fault {
     /// Culling too tight: each map draws only the objects that may meet its casters' volume cut
     /// by its receivers' volume (the view slice), so casters outside the view are dropped.
     CullTight,
+    /// The blend band ignored: inside a cascade's band the shader shades with the band's first
+    /// map alone (its visibility, not the cross-fade `sa_cascaded_visibility` computes).
+    BlendIgnored,
 }
 
 /// How far from the world origin a set-up's camera must be for [`Fault::PlainWorld`] to apply
@@ -70,7 +71,7 @@ const GL_TO_01: DMat4 = DMat4::from_cols(
 
 impl Fault {
     /// Every fault, in the order of the self-test.
-    pub const ALL: [Fault; 10] = [
+    pub const ALL: [Fault; 11] = [
         Fault::MatrixScale,
         Fault::DepthShift,
         Fault::NPrimeDouble,
@@ -81,6 +82,7 @@ impl Fault {
         Fault::WrongFace,
         Fault::PlainWorld,
         Fault::CullTight,
+        Fault::BlendIgnored,
     ];
 
     /// The name `--fault` takes.
@@ -96,6 +98,7 @@ impl Fault {
             Fault::WrongFace => "wrong-face",
             Fault::PlainWorld => "plain-world",
             Fault::CullTight => "cull-tight",
+            Fault::BlendIgnored => "blend-ignored",
         }
     }
 
@@ -112,6 +115,7 @@ impl Fault {
             Fault::WrongFace => "face partitions: every map given to the wrong face",
             Fault::PlainWorld => "the plain f32 world matrix in place of the relative upload path",
             Fault::CullTight => "culling too tight: casters' volume cut to the view slice",
+            Fault::BlendIgnored => "the blend band ignored: one map shades the band",
         }
     }
 
@@ -132,10 +136,14 @@ impl Fault {
     /// Whether the fault can change `scheme` at all (the self-test runs only those).
     pub fn applies_to(self, scheme: Scheme) -> bool {
         match self {
-            Fault::NPrimeDouble => !matches!(scheme, Scheme::Uniform | Scheme::StableCascades),
+            Fault::NPrimeDouble => !matches!(
+                scheme,
+                Scheme::Uniform | Scheme::StableCascades | Scheme::Clipmap
+            ),
             Fault::CascadeOffByOne => matches!(scheme, Scheme::Cascades | Scheme::StableCascades),
             Fault::Unsnapped => scheme == Scheme::StableCascades,
             Fault::WrongFace => scheme == Scheme::Faces,
+            Fault::BlendIgnored => scheme == Scheme::BlendedCascades,
             _ => true,
         }
     }
@@ -154,6 +162,11 @@ impl Fault {
             (true, _) => Cull::Casters,
             (false, _) => Cull::Off,
         }
+    }
+
+    /// Whether the shader shades a cascade by its first map alone inside the blend band.
+    pub fn shades_one_map(fault: Option<Fault>) -> bool {
+        fault == Some(Fault::BlendIgnored)
     }
 
     /// Whether the frame is given the casters.

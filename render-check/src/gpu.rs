@@ -52,8 +52,13 @@ pub struct FrameInput<'a> {
     pub light: DVec3,
     /// Unit eye-space light direction (travel).
     pub light_eye: DVec3,
-    /// 0 single, 1 cascades, 2 faces.
+    /// 0 single, 1 cascades, 2 faces, 3 clipmap.
     pub mode: u32,
+    /// Clipmaps: `sa_clipmap_level`'s offset (`LevelChoice::offset`), the first and the last
+    /// map's level (`FrameMap::clipmap_level`); unused by the other modes.
+    pub clipmap: [f64; 3],
+    /// The fault `blend-ignored`: a cascade shaded by its first map alone inside the blend band.
+    pub one_map_in_band: bool,
     /// near, far, tan(θ), tan(θ)·aspect.
     pub frustum: [f64; 4],
     /// The maps' records as uploaded (one clip-depth convention for all).
@@ -84,7 +89,8 @@ impl FrameInput<'_> {
 
 /// What the camera pass wrote.
 pub struct FrameOutput {
-    /// Per pixel (row-major from the top): s·res, t·res, map (the number of maps: none), lit (0/1).
+    /// Per pixel (row-major from the top): s·res, t·res, map (the number of maps: none), the
+    /// visibility shaded (0 in shadow, 1 lit; between them in a cascade's blend band).
     pub texel: Vec<[f32; 4]>,
     /// Surface id + 1 (0: sky).
     pub id: Vec<u32>,
@@ -93,6 +99,10 @@ pub struct FrameOutput {
     /// Depth (depth-attachment units) in the selected map, unclamped (inside its depth range:
     /// [0, 1]; −10³⁰ behind its centre of projection or with no map).
     pub depth: Vec<f32>,
+    /// Per pixel: the second map (`sa_pick_cascade`'s; the first map elsewhere), its weight, the
+    /// visibility of the first map alone and of the second alone (`texel`'s last component is
+    /// the visibility shaded: cross-faded in a cascade's blend band).
+    pub blend: Vec<[f32; 4]>,
 }
 
 #[repr(C)]
@@ -105,6 +115,8 @@ struct GlobalsRaw {
     frustum: [f32; 4],
     misc: [f32; 4],
     offset: [f32; 4],
+    clipmap: [f32; 4],
+    faults: [f32; 4],
 }
 
 #[repr(C)]
@@ -322,6 +334,7 @@ impl Gpu {
                     Some(wgpu::TextureFormat::R32Uint.into()),
                     Some(wgpu::TextureFormat::Rgba8Unorm.into()),
                     Some(wgpu::TextureFormat::R32Float.into()),
+                    Some(wgpu::TextureFormat::Rgba32Float.into()),
                 ],
             }),
             multiview_mask: None,
@@ -588,6 +601,13 @@ impl Gpu {
             frustum: f.frustum.map(|x| x as f32),
             misc: [f.res as f32, f.maps.len() as f32, bias_flags(f.lookup), 0.0],
             offset: vec4(f.offset, 0.0),
+            clipmap: [
+                f.clipmap[0] as f32,
+                f.clipmap[1] as f32,
+                f.clipmap[2] as f32,
+                0.0,
+            ],
+            faults: [f32::from(u8::from(f.one_map_in_band)), 0.0, 0.0, 0.0],
         };
         let records: Vec<u8> = f.maps.iter().flat_map(|m| m.to_bytes()).collect();
         let gb = self.buffer(bytemuck::bytes_of(&globals), wgpu::BufferUsages::UNIFORM);
@@ -615,8 +635,9 @@ impl Gpu {
         let t_id = self.target(w, h, wgpu::TextureFormat::R32Uint);
         let t_color = self.target(w, h, wgpu::TextureFormat::Rgba8Unorm);
         let t_light = self.target(w, h, wgpu::TextureFormat::R32Float);
+        let t_blend = self.target(w, h, wgpu::TextureFormat::Rgba32Float);
         let t_depth = self.target(w, h, wgpu::TextureFormat::Depth32Float);
-        let views = [&t_texel, &t_id, &t_color, &t_light, &t_depth]
+        let views = [&t_texel, &t_id, &t_color, &t_light, &t_blend, &t_depth]
             .map(|t| t.create_view(&Default::default()));
         {
             let clear = |c: wgpu::Color| wgpu::Operations {
@@ -655,9 +676,15 @@ impl Gpu {
                         resolve_target: None,
                         ops: clear(wgpu::Color::TRANSPARENT),
                     }),
+                    Some(wgpu::RenderPassColorAttachment {
+                        view: &views[4],
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: clear(wgpu::Color::TRANSPARENT),
+                    }),
                 ],
                 depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &views[4],
+                    view: &views[5],
                     depth_ops: Some(wgpu::Operations {
                         load: wgpu::LoadOp::Clear(1.0),
                         store: wgpu::StoreOp::Store,
@@ -678,16 +705,19 @@ impl Gpu {
         let (b1, r1) = self.copy_out(&mut enc, &t_id, w, h, 1, 4, all);
         let (b2, r2) = self.copy_out(&mut enc, &t_color, w, h, 1, 4, all);
         let (b3, r3) = self.copy_out(&mut enc, &t_light, w, h, 1, 4, all);
+        let (b4, r4) = self.copy_out(&mut enc, &t_blend, w, h, 1, 16, all);
         self.queue.submit([enc.finish()]);
         let texel = self.read(&b0, r0, w, h, 1, 16)?;
         let id = self.read(&b1, r1, w, h, 1, 4)?;
         let color = self.read(&b2, r2, w, h, 1, 4)?;
         let depth = self.read(&b3, r3, w, h, 1, 4)?;
+        let blend = self.read(&b4, r4, w, h, 1, 16)?;
         Ok(FrameOutput {
             texel: bytemuck::cast_slice(&texel).to_vec(),
             id: bytemuck::cast_slice(&id).to_vec(),
             color: bytemuck::cast_slice(&color).to_vec(),
             depth: bytemuck::cast_slice(&depth).to_vec(),
+            blend: bytemuck::cast_slice(&blend).to_vec(),
         })
     }
 }

@@ -125,6 +125,7 @@ fn mode(s: Select) -> u32 {
         Select::Single => 0,
         Select::Depth => 1,
         Select::Faces => 2,
+        Select::Clipmap => 3,
     }
 }
 
@@ -180,6 +181,8 @@ impl Upload {
             light: view.light_world,
             light_eye: view.light_eye,
             mode: mode(built.select),
+            clipmap: built.clipmap,
+            one_map_in_band: built.one_map_in_band,
             frustum: view.frustum_params(),
             maps: &self.records,
             draws: &self.draws,
@@ -442,7 +445,7 @@ fn lookup(
             .iter()
             .position(|m| z < m.far)
             .unwrap_or(built.maps.len() - 1),
-        Select::Faces => return None,
+        Select::Faces | Select::Clipmap => return None,
     };
     let map = &built.maps[part];
     let offset = match render.lookup {

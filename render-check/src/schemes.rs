@@ -11,8 +11,8 @@ use crate::scene::{Camera, Scene};
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
 use shadow_aliasing::frame::{
-    frame, Aabb, Bound, Camera as FrameCamera, CascadeSplits, CullVolume, FrameInput, FrameScheme,
-    GpuShadowMap,
+    frame, Aabb, Bound, Camera as FrameCamera, CascadeSplits, ClipmapOptions, CullVolume,
+    FrameInput, FrameScheme, GpuShadowMap, LevelChoice,
 };
 use shadow_aliasing::maps::faces::{Face, FaceWarp};
 use shadow_aliasing::maps::{ClipDepth, TsmOptions, TsmSearch, WarpRule};
@@ -35,11 +35,17 @@ pub enum Scheme {
     StableCascades,
     /// Face partitions (LiSPSM per face, k = 1).
     Faces,
+    /// 4 z-partitions as [`Scheme::Cascades`], each reaching [`BLEND_OVERLAP`] of its depth into
+    /// the next: cross-faded over that band by the crate's `sa_cascaded_visibility`.
+    BlendedCascades,
+    /// A clipmap ([`ClipmapOptions::UNREAL`]'s levels and LOD bias, the scene's map resolution):
+    /// the level picked by the crate's `sa_clipmap_level`.
+    Clipmap,
 }
 
 impl Scheme {
     /// All schemes, in the order of the gallery.
-    pub const ALL: [Scheme; 7] = [
+    pub const ALL: [Scheme; 9] = [
         Scheme::Uniform,
         Scheme::Lispsm,
         Scheme::Minimax,
@@ -47,6 +53,8 @@ impl Scheme {
         Scheme::Cascades,
         Scheme::StableCascades,
         Scheme::Faces,
+        Scheme::BlendedCascades,
+        Scheme::Clipmap,
     ];
     /// The name in images' titles.
     pub fn label(self) -> &'static str {
@@ -58,6 +66,8 @@ impl Scheme {
             Scheme::Cascades => "4 cascades, LiSPSM each",
             Scheme::StableCascades => "4 stable cascades",
             Scheme::Faces => "face partitions (LiSPSM, k = 1)",
+            Scheme::BlendedCascades => "4 cascades, LiSPSM, cross-faded over 25 %",
+            Scheme::Clipmap => "clipmap (Unreal's levels)",
         }
     }
     /// The name in summary.json.
@@ -70,6 +80,8 @@ impl Scheme {
             Scheme::Cascades => "cascades4_lispsm",
             Scheme::StableCascades => "stable_cascades4",
             Scheme::Faces => "face_partitions",
+            Scheme::BlendedCascades => "cascades4_blend",
+            Scheme::Clipmap => "clipmap",
         }
     }
 }
@@ -83,6 +95,8 @@ pub enum Select {
     Depth,
     /// By the frustum face the point's light ray passes (Lloyd 2005 §4; see the shader).
     Faces,
+    /// By the clipmap level at the eye depth (`sa_clipmap_level`, [`Built::clipmap`]).
+    Clipmap,
 }
 
 /// One map: its eye → light clip matrix (OpenGL depth, as built), the same map with depth
@@ -172,6 +186,12 @@ pub struct Built {
     /// Each map's focus body as the frame returned it (`FrameMap::body`, eye space): where the
     /// reported maximum error lies (docs/rendered.md).
     pub bodies: Vec<Vec<DVec3>>,
+    /// Clipmaps: the level choice's offset (`LevelChoice::offset`) and the first and the last
+    /// map's level; zero for the other schemes.
+    pub clipmap: [f64; 3],
+    /// The fault `blend-ignored`: the shader shades a cascade by its first map alone inside the
+    /// blend band.
+    pub one_map_in_band: bool,
 }
 
 /// The camera's frustum and matrices.
@@ -189,6 +209,8 @@ pub struct View {
     pub light_world: DVec3,
     /// The camera's position, world space: the upload origin.
     pub origin: DVec3,
+    /// The image's height, pixels (the frame's `image_height`: a clipmap's level choice).
+    pub image_height: u32,
 }
 
 impl View {
@@ -225,6 +247,7 @@ impl View {
             light_eye: world_to_eye.transform_vector3(light_world).normalize(),
             light_world,
             origin: DVec3::from_array(camera.eye),
+            image_height: height,
         })
     }
 
@@ -254,6 +277,9 @@ fn face_id(f: Face) -> i32 {
 /// The cascades' split scheme (practical, λ = 0.75) and count, for both cascade schemes.
 const CASCADE_SPLIT: SplitScheme = SplitScheme::Practical { lambda: 0.75 };
 const CASCADES: usize = 4;
+/// [`Scheme::BlendedCascades`]: each cascade but the last reaches this fraction of its own depth
+/// into the next (`CascadeSplits::Scheme`'s overlap), the band cross-faded.
+pub const BLEND_OVERLAP: f64 = 0.25;
 
 /// The split planes of the cascades (practical, λ = 0.75, 4 partitions: the frame schemes' own).
 pub fn splits(view: &ViewFrustum) -> Result<shadow_aliasing::analytic::partition::Splits, String> {
@@ -286,7 +312,7 @@ fn bounds(scene: &Scene) -> Result<(Vec<Aabb>, Vec<Aabb>), String> {
 }
 
 /// The frame API's scheme for `scheme_`.
-fn frame_scheme(scheme_: Scheme, view: &ViewFrustum) -> FrameScheme<'static> {
+fn frame_scheme(scheme_: Scheme, view: &ViewFrustum, res: u32) -> FrameScheme<'static> {
     let practical = CascadeSplits::Scheme {
         scheme: CASCADE_SPLIT,
         k: CASCADES,
@@ -309,6 +335,29 @@ fn frame_scheme(scheme_: Scheme, view: &ViewFrustum) -> FrameScheme<'static> {
             rule: FaceWarp::Lispsm,
             k: 1,
         },
+        Scheme::BlendedCascades => FrameScheme::Cascades {
+            splits: CascadeSplits::Scheme {
+                scheme: CASCADE_SPLIT,
+                k: CASCADES,
+                overlap: BLEND_OVERLAP,
+            },
+            rule: WarpRule::Lispsm,
+        },
+        Scheme::Clipmap => FrameScheme::Clipmap(clipmap_options(res)),
+    }
+}
+
+/// Unreal's clipmap layout ([`ClipmapOptions::UNREAL`]: levels 6 to 22 of radius 2^(i+1) cm,
+/// LOD bias −0.5) with pages of 128 texels where `res` holds at least two of them, else the
+/// largest that divides it into at least two.
+pub fn clipmap_options(res: u32) -> ClipmapOptions {
+    let page = (1..=ClipmapOptions::UNREAL.page_texels)
+        .rev()
+        .find(|&p| res.is_multiple_of(p) && res / p >= 2)
+        .unwrap_or(1);
+    ClipmapOptions {
+        page_texels: page,
+        ..ClipmapOptions::UNREAL
     }
 }
 
@@ -344,14 +393,14 @@ pub fn build(
     )
     .map_err(e)?;
     let light = Fault::frame_light(fault, view.light_world);
-    let input = FrameInput::new(camera, light, res, 1)
+    let input = FrameInput::new(camera, light, res, view.image_height)
         .receivers(Bound::Boxes(&receivers))
         .casters(if Fault::keeps_casters(fault) {
             Bound::Boxes(&boxes)
         } else {
             Bound::Unbounded
         })
-        .scheme(frame_scheme(scheme_, fr));
+        .scheme(frame_scheme(scheme_, fr, res));
     let f = frame(&input).map_err(e)?;
     if f.is_empty() {
         return Err(format!(
@@ -407,9 +456,15 @@ pub fn build(
         }
     }
     let select = match scheme_ {
-        Scheme::Cascades | Scheme::StableCascades => Select::Depth,
+        Scheme::Cascades | Scheme::StableCascades | Scheme::BlendedCascades => Select::Depth,
         Scheme::Faces => Select::Faces,
+        Scheme::Clipmap => Select::Clipmap,
         _ => Select::Single,
+    };
+    let clipmap = if scheme_ == Scheme::Clipmap {
+        clipmap_choice(&f, view, res)?
+    } else {
+        [0.0; 3]
     };
     let bodies = f.maps().iter().map(|m| m.body().to_vec()).collect();
     Ok(Built {
@@ -418,7 +473,43 @@ pub fn build(
         offset: if plain { origin } else { DVec3::ZERO },
         select,
         bodies,
+        clipmap,
+        one_map_in_band: Fault::shades_one_map(fault),
     })
+}
+
+/// The shader's clipmap level choice: `LevelChoice::offset` and the first and the last map's
+/// level. The shader's slot is the level less the first map's, so the maps must be one per
+/// level, finest first, with no level missing.
+///
+/// # Errors
+/// The crate's error; a level missing among the maps.
+fn clipmap_choice(
+    f: &shadow_aliasing::frame::Frame,
+    view: &View,
+    res: u32,
+) -> Result<[f64; 3], String> {
+    let choice = LevelChoice::new(&view.frustum, view.image_height, res, &clipmap_options(res))
+        .map_err(|e| format!("clipmap: {e}"))?;
+    let levels: Vec<Option<i32>> = f.maps().iter().map(|m| m.clipmap_level).collect();
+    let first = levels
+        .first()
+        .copied()
+        .flatten()
+        .ok_or("clipmap: no level")?;
+    for (i, l) in levels.iter().enumerate() {
+        if *l != Some(first + i as i32) {
+            return Err(format!(
+                "clipmap: the maps' levels {levels:?} are not one per level from {first}: the \
+                 shader's slot (level − {first}) would name the wrong map"
+            ));
+        }
+    }
+    Ok([
+        choice.offset,
+        f64::from(first),
+        f64::from(first + levels.len() as i32 - 1),
+    ])
 }
 
 /// A named camera and light.

@@ -22,6 +22,10 @@ struct Globals {
     misc: vec4<f32>,
     // xyz: added to a position before a map's matrix.
     offset: vec4<f32>,
+    // Clipmaps (mode 3): sa_clipmap_level's offset, the first and the last map's level.
+    clipmap: vec4<f32>,
+    // x: 1 for the fault blend-ignored (a cascade shaded by its first map alone in the band).
+    faults: vec4<f32>,
 };
 
 struct ShadowUniform {
@@ -99,13 +103,17 @@ fn vs_camera(@location(0) pos: vec3<f32>, @location(1) normal: vec3<f32>, @locat
 }
 
 struct FOut {
-    // s·res, t·res in the selected map, the map (the number of maps: none), lit (0/1).
+    // s·res, t·res in the selected map, the map (the number of maps: none), the visibility
+    // shaded (0 in shadow, 1 lit; between them in a cascade's blend band).
     @location(0) texel: vec4<f32>,
     @location(1) id: u32,
     @location(2) color: vec4<f32>,
     // The depth (depth-attachment units) in the selected map, unclamped ([0, 1] inside its depth
     // range; -1e30 behind its centre of projection or with no map): the coverage check reads it.
     @location(3) depth: f32,
+    // The second map (sa_pick_cascade's; the first elsewhere), its weight, and the visibility of
+    // the first and of the second map alone: the analysis recomputes the cross-fade.
+    @location(4) blend: vec4<f32>,
 };
 
 @fragment
@@ -115,27 +123,46 @@ fn fs_camera(v: VOut) -> FOut {
     let l = g.light.xyz;
     let count = sa_map_count();
     let mode = i32(g.light_eye.w);
-    var part = 0u;
+    let view_depth = -v.eye.z;
+    var pick = SaPick(0u, 0u, 0.0);
     if (mode == 1) {
-        part = sa_pick_cascade(-v.eye.z).first;
+        pick = sa_pick_cascade(view_depth);
     } else if (mode == 2) {
-        part = sa_pick_face(p, v.eye, g.light_eye.xyz, g.frustum);
+        let f = sa_pick_face(p, v.eye, g.light_eye.xyz, g.frustum);
+        pick = SaPick(f, f, 0.0);
+    } else if (mode == 3) {
+        let level = sa_clipmap_level(view_depth, g.clipmap.x, i32(g.clipmap.y), i32(g.clipmap.z));
+        let slot = u32(level - i32(g.clipmap.y));
+        pick = SaPick(slot, slot, 0.0);
     }
+    let part = pick.first;
     let facing = dot(n, -l);
-    var lit = facing > g.light.w;
+    // The visibility shaded (cascades: cross-faded over the band), and each map's alone.
+    var vis = select(0.0, 1.0, facing > g.light.w);
+    var v1 = vis;
+    var v2 = vis;
     var st = vec2<f32>(0.0);
     var depth = -1e30;
     if (part < count) {
         let q = sa_project(sa_map(part), p);
         st = q.xy;
         depth = select(-1e30, q.z, q.w > 0.0);
-        if (lit) {
-            lit = sa_visibility(part, p, n, l, 0, u32(g.misc.z)) > 0.5;
+        if (vis > 0.0) {
+            v1 = sa_visibility(part, p, n, l, 0, u32(g.misc.z));
+            v2 = v1;
+            vis = v1;
+            if (mode == 1) {
+                v2 = sa_visibility(pick.second, p, n, l, 0, u32(g.misc.z));
+                if (g.faults.x < 0.5) {
+                    vis = sa_cascaded_visibility(view_depth, p, n, l, 0, u32(g.misc.z));
+                }
+            }
         }
     }
     let res = g.misc.x;
     var o: FOut;
-    o.texel = vec4<f32>(st * res, f32(part), select(0.0, 1.0, lit));
+    o.texel = vec4<f32>(st * res, f32(part), vis);
+    o.blend = vec4<f32>(f32(pick.second), pick.weight, v1, v2);
     o.depth = depth;
     o.id = v.id + 1u;
     // Shading: a colour per surface kind, Lambert when lit, ambient in shadow.
@@ -144,7 +171,7 @@ fn fs_camera(v: VOut) -> FOut {
         let k = f32((v.id / 6u) % 7u);
         base = vec3<f32>(0.55 + 0.06 * k, 0.45 + 0.04 * (6.0 - k), 0.35 + 0.05 * k);
     }
-    let light = 0.25 + select(0.0, 0.75 * max(facing, 0.0), lit);
+    let light = 0.25 + 0.75 * max(facing, 0.0) * vis;
     // Tint by partition so the seams are visible.
     let tint = 0.9 + 0.1 * vec3<f32>(f32(part % 2u), f32((part / 2u) % 2u), f32((part / 4u) % 2u));
     o.color = vec4<f32>(base * light * tint, 1.0);

@@ -59,6 +59,13 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
         m.frame_error_ratio - 1.0,
         FRAME_EXCESS,
     );
+    if let Some(n) = m.blend_mismatches {
+        at_most(
+            "blend_mismatches (the cross-fade against the frame's blend)",
+            n as f64,
+            0.0,
+        );
+    }
     if let Some(d) = m.lloyd_rel_diff {
         at_most(
             "lloyd_rel_diff (rendered m_x, m_z against Lloyd 2006 Eq 7-10)",

@@ -116,3 +116,16 @@ fn culling_too_tight_drops_a_caster() {
         "shadow_misses",
     );
 }
+
+/// The blend band ignored (the band shaded by its first map alone, not cross-faded): where the
+/// band's two maps' lookups differ, the shaded visibility is not their weighted pair (15 pixels
+/// of the thin-caster scene's blended cascades at 240 × 180; the clean build: 0).
+#[test]
+fn blend_band_ignored_is_caught() {
+    caught(
+        "thin_casters",
+        Scheme::BlendedCascades,
+        Fault::BlendIgnored,
+        "blend_mismatches (the cross-fade against the frame's blend)",
+    );
+}

@@ -388,6 +388,8 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
         "frame_error_ratio",
         "frame_error_ratio_worst_visible",
         "lloyd_rel_diff",
+        "blend_pixels",
+        "blend_mismatches",
         "shimmer_changed_fraction",
         "shimmer_points",
     ];
