@@ -474,13 +474,22 @@ impl Mesh {
     }
 }
 
+/// How far the exact tests move a surface point `p` off its surface (world units): 10⁻⁶ of its
+/// distance from the camera (plus 10⁻⁶), so a surface never shadows itself where it faces the
+/// light. Relative to the camera, not the world origin: 10⁵ from the origin a lift of 10⁻⁶ of
+/// the coordinates (0.1 unit) moved the exact shadow boundary by a visible amount and widened
+/// the band left out of the shadow comparison.
+pub fn lift(scene: &Scene, p: DVec3) -> f64 {
+    1e-6 * (1.0 + (p - v(scene.camera.eye)).abs().max_element())
+}
+
 /// Exact shadow test against the analytic scene: does the ray from `p` toward the light (against
 /// `light`, the direction it travels) hit a box? `p` is first moved off its own surface along
-/// `normal` by 10⁻⁶ of its distance scale, so a surface never shadows itself where it faces the
-/// light. Slab tests (a rotated box: in its own frame, the ray turned back by its rotation),
-/// independent of any shadow map. The ground cannot occlude (the light comes from above it).
+/// `normal` by [`lift`]. Slab tests (a rotated box: in its own frame, the ray turned back by its
+/// rotation), independent of any shadow map. The ground cannot occlude (the light comes from
+/// above it).
 pub fn ray_occluded(scene: &Scene, p: DVec3, normal: DVec3, light: DVec3) -> bool {
-    let o = p + normal * 1e-6 * (1.0 + p.abs().max_element());
+    let o = p + normal * lift(scene, p);
     let d = -light;
     scene.boxes.iter().any(|b| {
         let (lo, hi) = (v(b.min), v(b.max));

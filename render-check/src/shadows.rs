@@ -88,7 +88,7 @@ pub(crate) fn shadow_decidable(
     if !(0.0..res).contains(&s) || !(0.0..res).contains(&t) {
         return false;
     }
-    let lift = 1e-6 * (1.0 + pw.abs().max_element());
+    let lift = crate::scene::lift(scene, pw);
     // The box the pixel lies on (its point just inside, against the normal).
     let own = scene
         .boxes

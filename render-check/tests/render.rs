@@ -104,11 +104,19 @@ fn far_from_the_origin_meets_every_target_as_at_the_origin() {
     );
     for (f, n) in far.iter().zip(&near) {
         let (a, b) = (&f.measured, &n.measured);
-        // The same pixels are visible and shadowed, up to 1 % (the ray cast lifts its point off the
-        // surface by 10⁻⁶ of its coordinates: 0.1 unit at 10⁵).
-        let close = |x: usize, y: usize| x.abs_diff(y) <= 2 + y / 100;
+        // The same pixels are visible and shadowed, up to 0.1 % (the exact tests lift a point off
+        // its surface by 10⁻⁶ of its distance from the camera: with 10⁻⁶ of its world coordinates,
+        // 0.1 unit there, 0.9 % of the shadowed pixels changed).
+        let close = |x: usize, y: usize| x.abs_diff(y) <= 2 + y / 1000;
         assert!(close(a.visible_pixels, b.visible_pixels), "{f:?}\n{n:?}");
         assert!(close(a.shadow_pixels, b.shadow_pixels), "{f:?}\n{n:?}");
+        // As many shadowed pixels compared as at the origin, to 2 % (the stable cascades' and the
+        // clipmap's texel grids are fixed in the world, so they fall differently there): with the
+        // lift of the world coordinates, 4 % fewer (93.7 % of them against 96.8 %, uniform).
+        assert!(
+            a.shadow_pixels_checked as f64 >= 0.98 * b.shadow_pixels_checked as f64,
+            "{f:?}\n{n:?}"
+        );
         assert!(
             (a.max_rendered_error / b.max_rendered_error - 1.0).abs() < 1e-3,
             "{f:?}\n{n:?}"
