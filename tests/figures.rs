@@ -841,3 +841,129 @@ fn geometric_diagrams_have_equal_aspect() {
     }
     assert_eq!(squares, 4, "one map outline per column");
 }
+
+/// A number attribute of an element's attributes (`x="12.5"`).
+fn attr_num(attrs: &str, name: &str) -> Option<f64> {
+    let key = format!(" {name}=\"");
+    let at = format!(" {attrs}").find(&key)? + key.len() - 1;
+    let rest = &attrs[at..];
+    rest[..rest.find('"')?].parse().ok()
+}
+
+/// The SVG's elements in order, each as (tag, attributes).
+fn elements(svg: &str) -> Vec<(&str, &str)> {
+    svg.split('<')
+        .skip(1)
+        .filter(|e| !e.starts_with('/'))
+        .map(|e| {
+            let end = e.find(['>', '/']).unwrap_or(e.len());
+            let (tag, attrs) = e[..end].split_once(' ').unwrap_or((&e[..end], ""));
+            (tag, attrs)
+        })
+        .collect()
+}
+
+/// Colour-bar tick labels clear the bar (issue 25: they started 4 units right of its edge,
+/// after a 2-unit tick mark, and read as touching it): in every heat-map figure each label
+/// right of a vertical axis, followed by its tick mark, starts at least 8 units right of the
+/// axis.
+#[test]
+fn colour_bar_labels_clear_the_bar() {
+    let dir = out_dir("figures-colour-bars");
+    let names = ["lloyd2006-fig7", "martin-tan-fig6", "zhang-fig3"];
+    render_all(&dir, Format::Svg, &names, |_| {}).unwrap();
+    for name in names {
+        let svg = std::fs::read_to_string(dir.join(format!("{name}.svg"))).unwrap();
+        let els = elements(&svg);
+        let mut labels = 0;
+        for w in els.windows(2) {
+            let ((t, text), (p, line)) = (w[0], w[1]);
+            if t != "text" || p != "polyline" || !text.contains("text-anchor=\"start\"") {
+                continue;
+            }
+            let at = line.find("points=\"").unwrap() + 8;
+            let pts: Vec<(f64, f64)> = line[at..at + line[at..].find('"').unwrap()]
+                .split_whitespace()
+                .map(|p| {
+                    let (x, y) = p.split_once(',').unwrap();
+                    (x.parse().unwrap(), y.parse().unwrap())
+                })
+                .collect();
+            let y = attr_num(text, "y").unwrap();
+            // A tick mark: short, horizontal, pointing right, at the label's height.
+            if pts.len() == 2
+                && pts[0].1 == y
+                && pts[1].1 == y
+                && (1.0..=8.0).contains(&(pts[1].0 - pts[0].0))
+            {
+                let x = attr_num(text, "x").unwrap();
+                assert!(
+                    x - pts[0].0 >= 8.0,
+                    "{name}: a colour-bar label {} from the bar: {text}",
+                    x - pts[0].0
+                );
+                labels += 1;
+            }
+        }
+        assert!(labels >= 3, "{name}: {labels} colour-bar labels found");
+    }
+}
+
+/// zhang-fig3 (issue 25): each quantity's colour bar sits beside its own block of panels (the
+/// bars used to sit beside the blocks of light angles θ, a misleading pairing), and the z tick
+/// labels of a row do not run together (they read "80100"): between neighbouring labels at
+/// least 3 units, with DejaVu Sans' digit width (0.636 em).
+#[test]
+fn zhang_fig3_bars_beside_their_blocks_and_apart_labels() {
+    let dir = out_dir("figures-zhang");
+    render_all(&dir, Format::Svg, &["zhang-fig3"], |_| {}).unwrap();
+    let svg = std::fs::read_to_string(dir.join("zhang-fig3.svg")).unwrap();
+    let all = texts(&svg);
+    let y_of = |pred: &dyn Fn(&str, &str) -> bool| -> Vec<f64> {
+        all.iter()
+            .filter(|(a, c)| pred(a, &visible(c)))
+            .map(|(a, _)| attr_num(a, "y").unwrap())
+            .collect()
+    };
+    let quantities = ["Ep", "Eq", "Ep × Eq"];
+    let mut order = Vec::new();
+    for (k, q) in quantities.iter().enumerate() {
+        let block = y_of(&|_, v| {
+            v.starts_with(&format!("({}) {q}", ['a', 'b', 'c'][k])) && (k == 2 || !v.contains('×'))
+        });
+        let bar = y_of(&|a, v| a.contains("rotate(") && v == format!("{q} (log₅)"));
+        assert_eq!((block.len(), bar.len()), (1, 1), "{q}: {block:?} {bar:?}");
+        order.push((block[0], bar[0]));
+    }
+    for k in 0..3 {
+        let next = order.get(k + 1).map_or(f64::INFINITY, |o| o.0);
+        assert!(order[k].0 < order[k].1 && order[k].1 < next, "{order:?}");
+    }
+    // The z labels: numbers centred under the panels, grouped by row.
+    let mut rows: std::collections::BTreeMap<i64, Vec<(f64, f64)>> = Default::default();
+    for (a, c) in &all {
+        let v = visible(c);
+        if a.contains("text-anchor=\"middle\"")
+            && !a.contains("rotate(")
+            && v.parse::<f64>().is_ok()
+        {
+            let half = 0.5 * 0.636 * attr_num(a, "font-size").unwrap() * v.chars().count() as f64;
+            let x = attr_num(a, "x").unwrap();
+            rows.entry(attr_num(a, "y").unwrap().round() as i64)
+                .or_default()
+                .push((x - half, x + half));
+        }
+    }
+    assert!(rows.values().map(Vec::len).sum::<usize>() >= 27, "{rows:?}");
+    for labels in rows.values_mut() {
+        labels.sort_by(|a, b| a.0.total_cmp(&b.0));
+        for w in labels.windows(2) {
+            assert!(
+                w[1].0 - w[0].1 >= 3.0,
+                "z labels {:?} and {:?} run together",
+                w[0],
+                w[1]
+            );
+        }
+    }
+}

@@ -8,8 +8,7 @@
 //! [0, 1]; unit resolutions).
 
 use super::chart::{
-    build_chart_styled, draw_colour_bar, equal_aspect, frame, Axis, ChartStyle, ColourScale, Grid,
-    FONT,
+    build_chart_styled, draw_colour_bar, frame, Axis, ChartStyle, ColourScale, Grid, FONT,
 };
 use super::{Fail, Figure};
 use crate::maps::{warp, WarpRule};
@@ -39,7 +38,9 @@ struct Panel {
 pub(super) struct Fig3 {
     /// rows[θ][scheme][quantity]
     rows: Vec<Vec<Vec<Panel>>>,
-    row_labels: Vec<String>,
+    /// "θ = 90°" per row, and each scheme's λ per row.
+    row_angles: Vec<String>,
+    lambdas: Vec<Vec<String>>,
     scheme_labels: Vec<String>,
     /// One scale per quantity (E_p, E_q, E_p × E_q), over its range in all nine panels.
     scales: Vec<ColourScale>,
@@ -61,7 +62,8 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         ("TSM", WarpRule::Tsm { focus: TSM_FOCUS }),
     ];
     let mut rows = Vec::new();
-    let mut row_labels = Vec::new();
+    let mut row_angles = Vec::new();
+    let mut lambdas_all = Vec::new();
     let mut scheme_labels: Vec<String> = Vec::new();
     let mut ranges = [(f64::INFINITY, 0.0f64); 3];
     for (r, theta_deg) in [90.0f64, 60.0, 30.0].into_iter().enumerate() {
@@ -74,7 +76,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         for (name, rule) in rules {
             let m = warp(&view, light, rule)?;
             let shadow: ShadowMap = m.shadow_map();
-            lambdas.push(format!("{name} λ = {}", fmt_lambda(m.n_prime())));
+            lambdas.push(fmt_lambda(m.n_prime()));
             if r == 0 {
                 scheme_labels.push(name.to_string());
             }
@@ -114,7 +116,8 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
             row.push(panels);
         }
         rows.push(row);
-        row_labels.push(format!("θ = {theta_deg:.0}°: {}", lambdas.join(", ")));
+        row_angles.push(format!("θ = {theta_deg:.0}°"));
+        lambdas_all.push(lambdas);
     }
     // Each quantity's colour bar spans exactly its measured range over its nine panels.
     let scales: Vec<ColourScale> = QUANTITIES
@@ -130,7 +133,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         .map(|(q, (lo, hi))| format!("{q} {lo:.3} to {hi:.1}"))
         .collect();
     let caption = vec![
-        "Zhang et al. 2009, Fig. 3, measured: E_p = 2 m_z, E_q = 2 m_x of each scheme's built matrix (maps::warp, measure::point_error) on the frustum's vertical plane x = 0. Unlike the paper, the scene insets beside each row are omitted.".to_string(),
+        "Zhang et al. 2009, Fig. 3, measured: E_p = 2 m_z, E_q = 2 m_x of each scheme's built matrix (maps::warp, measure::point_error) on the frustum's vertical plane x = 0. (a)–(c) one block per quantity with its colour bar beside it; in each, as in the paper, a column per scheme and a row per light angle θ (each panel gives θ and the scheme's warp parameter λ). Unlike the paper, the scene insets beside each row are omitted.".to_string(),
         format!(
             "n = 1, f = 100, φ = π/6; light above and in front of the viewer at angle θ to the view direction. LiSPSM: λ = (n + √(fn))/sin θ; TSM: 80 % rule, focus δ = {TSM_FOCUS}. Ranges: {}.",
             range_text.join(", ")
@@ -139,7 +142,8 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     ];
     Ok(Fig3 {
         rows,
-        row_labels,
+        row_angles,
+        lambdas: lambdas_all,
         scheme_labels,
         scales,
         caption,
@@ -166,6 +170,18 @@ fn fmt_lambda(n: NPrime) -> String {
     }
 }
 
+/// The layout of one quantity's block, in pixels: the y-label column, the x-label row, the gap
+/// between panels, the colour bar's width, the block's title and the schemes' headings.
+const Y_LABELS: u32 = 44;
+const X_LABELS: u32 = 36;
+const GAP: u32 = 10;
+const BAR: u32 = 86;
+const BLOCK_TITLE: u32 = 24;
+const HEADINGS: u32 = 20;
+/// A panel's height over its width: the z range [−5, 105] across (so that the labels 100 and 0
+/// of neighbouring panels stay apart) and y over ±0.6 of it up.
+const PANEL_RATIO: f64 = 1.2;
+
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
         (520, 1900)
@@ -178,39 +194,64 @@ impl Figure for Fig3 {
             "Side views of the aliasing error inside the view frustum",
             &caption,
         )?;
-        let (w, _) = body.dim_in_pixel();
-        // Per angle θ a 3 × 3 block: a row per scheme, a column per quantity; one colour bar
-        // per quantity, beside the blocks.
-        let (maps, bars) = body.split_horizontally(w - 90);
-        let row_areas = maps.split_evenly((self.rows.len(), 1));
-        let style = ChartStyle {
-            title_size: 13,
-            x_label_area: 34,
-            y_label_area: 40,
-            tick_size: 13,
-            desc_size: 13,
-            margin: 3,
-        };
-        let z_axis = Axis::linear("z", 0.0, self.far);
-        let y_axis = Axis::linear("y", -self.far * self.tan_phi, self.far * self.tan_phi);
-        for (row_area, (row, label)) in row_areas.iter().zip(self.rows.iter().zip(&self.row_labels))
-        {
-            let (row_title, cells) = row_area.split_vertically(22);
-            row_title.draw(&Text::new(
-                label.clone(),
-                (6, 1),
-                TextStyle::from((FONT, 15).into_font()).pos(Pos::new(HPos::Left, VPos::Top)),
+        let (w, h) = body.dim_in_pixel();
+        // One block per quantity, its colour bar beside it; in each block a row per angle θ and
+        // a column per scheme (the paper's arrangement), panels sharing their axes: z labels
+        // under the last row, y labels left of the first column.
+        let pw = (w - BAR - Y_LABELS - 2 * GAP) / 3;
+        let ph = (f64::from(pw) * PANEL_RATIO).round() as u32;
+        let block_h = BLOCK_TITLE + HEADINGS + 3 * ph + 2 * GAP + X_LABELS;
+        let spare = h.saturating_sub(3 * block_h) / 3;
+        let z = Axis::linear("z (eye depth)", -5.0, 105.0);
+        let half = 0.5 * (z.max - z.min) * f64::from(ph) / f64::from(pw);
+        let y = Axis::linear("y", -half, half);
+        let text = |size: u32| TextStyle::from((FONT, size).into_font());
+        for (q, scale) in self.scales.iter().enumerate() {
+            let top = q as u32 * (block_h + spare);
+            let block = body.clone().shrink((0, top), (w, block_h));
+            block.draw(&Text::new(
+                format!(
+                    "({}) {}",
+                    ['a', 'b', 'c'][q],
+                    ["E_p = 2 m_z", "E_q = 2 m_x", "E_p × E_q"][q]
+                ),
+                (4, 2),
+                text(15).pos(Pos::new(HPos::Left, VPos::Top)),
             ))?;
-            let cells = cells.split_evenly((3, 3));
-            for (s, scheme) in row.iter().enumerate() {
-                for (q, panel) in scheme.iter().enumerate() {
-                    let cell = &cells[3 * s + q];
-                    // Equal aspect: the frustum's side view undistorted.
-                    let title = format!("{} {}", self.scheme_labels[s], QUANTITIES[q]);
-                    let (za, ya) = equal_aspect(cell, &title, &z_axis, &y_axis, &style)?;
-                    let mut chart = build_chart_styled(cell, &title, &za, &ya, false, &style)?;
-                    super::chart::draw_grid(&mut chart, &panel.grid, &self.scales[q])?;
-                    // The frustum's outline.
+            for (s, name) in self.scheme_labels.iter().enumerate() {
+                let x = Y_LABELS + s as u32 * (pw + GAP) + pw / 2;
+                block.draw(&Text::new(
+                    name.clone(),
+                    (x as i32, (BLOCK_TITLE + HEADINGS - 2) as i32),
+                    text(13).pos(Pos::new(HPos::Center, VPos::Bottom)),
+                ))?;
+            }
+            let grid_top = BLOCK_TITLE + HEADINGS;
+            for (r, row) in self.rows.iter().enumerate() {
+                for (s, scheme) in row.iter().enumerate() {
+                    let first_col = s == 0;
+                    let last_row = r + 1 == self.rows.len();
+                    let x0 = if first_col {
+                        0
+                    } else {
+                        Y_LABELS + s as u32 * (pw + GAP)
+                    };
+                    let cw = pw + if first_col { Y_LABELS } else { 0 };
+                    let ch = ph + if last_row { X_LABELS } else { 0 };
+                    let cell = block
+                        .clone()
+                        .shrink((x0, grid_top + r as u32 * (ph + GAP)), (cw, ch));
+                    let style = ChartStyle {
+                        title_size: 13,
+                        x_label_area: if last_row { X_LABELS } else { 0 },
+                        y_label_area: if first_col { Y_LABELS } else { 0 },
+                        tick_size: 13,
+                        desc_size: 13,
+                        margin: 0,
+                    };
+                    let mut chart = build_chart_styled(&cell, "", &z, &y, false, &style)?;
+                    super::chart::draw_grid(&mut chart, &scheme[q].grid, scale)?;
+                    // The frustum's outline and the panel's frame.
                     let (n, f, t) = (1.0, self.far, self.tan_phi);
                     chart.draw_series(std::iter::once(PathElement::new(
                         vec![
@@ -222,15 +263,28 @@ impl Figure for Fig3 {
                         ],
                         RGBColor(40, 40, 40).stroke_width(1),
                     )))?;
+                    chart.draw_series(std::iter::once(Rectangle::new(
+                        [(z.min, y.min), (z.max, y.max)],
+                        RGBColor(150, 150, 150).stroke_width(1),
+                    )))?;
+                    // The angle and the warp's λ in the corners the frustum leaves empty.
+                    let area = chart.plotting_area();
+                    area.draw(&Text::new(
+                        self.row_angles[r].clone(),
+                        (z.min + 2.0, y.max - 2.0),
+                        text(13).pos(Pos::new(HPos::Left, VPos::Top)),
+                    ))?;
+                    area.draw(&Text::new(
+                        format!("λ = {}", self.lambdas[r][s]),
+                        (z.min + 2.0, y.min + 2.0),
+                        text(13).pos(Pos::new(HPos::Left, VPos::Bottom)),
+                    ))?;
                 }
             }
-        }
-        for (bar, scale) in bars
-            .split_evenly((self.scales.len(), 1))
-            .iter()
-            .zip(&self.scales)
-        {
-            draw_colour_bar(bar, scale)?;
+            let bar = block
+                .clone()
+                .shrink((w - BAR, grid_top), (BAR, 3 * ph + 2 * GAP));
+            draw_colour_bar(&bar, scale)?;
         }
         Ok(())
     }

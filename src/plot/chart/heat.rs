@@ -408,6 +408,9 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
     Ok(())
 }
 
+/// The length of a colour bar's tick marks, in pixels; its labels start twice that from the bar.
+pub(crate) const COLOUR_BAR_TICK: i32 = 5;
+
 /// Draws a vertical colour bar for `scale` into `area`.
 pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
@@ -420,7 +423,7 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
         .margin_bottom(30)
         .margin_right(6)
         .y_label_area_size(0)
-        .right_y_label_area_size(58)
+        .right_y_label_area_size(62)
         .build_cartesian_2d(
             Ticked::new(0.0, 1.0, vec![], vec![]),
             Ticked::new(lo, hi, yb, vec![]),
@@ -432,6 +435,9 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
         .disable_x_axis()
         .y_desc(scale.axis.label.as_str())
         .y_label_formatter(&yf)
+        // Tick marks 5 px long outside the bar, the labels twice that from it (plotters' own
+        // default put them about 3 px from the bar's edge).
+        .set_tick_mark_size(LabelAreaPosition::Right, COLOUR_BAR_TICK)
         .axis_desc_style((FONT, 14))
         .label_style((FONT, 13))
         .draw()?;
