@@ -4,11 +4,13 @@
 //! Vulkan adapter these tests fail, naming `mesa-vulkan-drivers`; they never skip.
 
 use glam::DVec3;
+use render_check::analysis::pixel_point;
 use render_check::gpu::{Gpu, Lookup};
 use render_check::run::{draws, run_case, run_full, CaseSummary, Render, Sizes, Upload};
 use render_check::scene::{Mesh, Scene};
-use render_check::schemes::{build, setups, Scheme, View};
+use render_check::schemes::{build, clipmap_options, setups, Scheme, View};
 use render_check::targets::violations;
+use shadow_aliasing::frame::LevelChoice;
 use shadow_aliasing::maps::ClipDepth;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -296,6 +298,78 @@ fn level_overhead_meets_lloyd_2006() {
             "{c:?}"
         );
     }
+}
+
+/// The clipmap (issue 24 item 4): the level the shader picks (`sa_clipmap_level` in `f32`) is the
+/// library's (`LevelChoice::level`) at every visible pixel's exact depth, away from a level's
+/// boundary; and where no clamp applies, the level's texel is at most 2^b and more than 2^(b−1)
+/// pixels wide there (b the level choice's bias), computed by hand from the level's half-width
+/// 2^(i+2) · unit.
+#[test]
+fn clipmap_levels_are_the_level_choice() {
+    let gpu = gpu();
+    let scene = setup("tilted_45");
+    let (w, h) = (SIZES.width, SIZES.height);
+    let view = View::new(&scene.camera, scene.light(), w, h).unwrap();
+    let res = scene.map_resolution;
+    let built = build(
+        Scheme::Clipmap,
+        &view,
+        &scene,
+        res,
+        None,
+        ClipDepth::ZeroToOne,
+    )
+    .unwrap();
+    let mesh = Mesh::build(&scene);
+    let up = Upload::new(&built, &mesh, SIZES);
+    let out = gpu
+        .render(&up.input(&view, &mesh, &built, res, SIZES))
+        .unwrap();
+    let opts = clipmap_options(res);
+    let choice = LevelChoice::new(&view.frustum, h, res, &opts).unwrap();
+    let (first, last) = (built.clipmap[1] as i32, built.clipmap[2] as i32);
+    let tan = view.frustum.tan_half_fov();
+    let mut levels = std::collections::BTreeSet::new();
+    let mut checked = 0;
+    for (i, &id) in out.id.iter().enumerate() {
+        if id == 0 {
+            continue;
+        }
+        let surf = mesh.surfaces[(id - 1) as usize];
+        let n = view.world_to_eye.transform_vector3(surf.normal);
+        let p0 = view.world_to_eye.transform_point3(surf.point);
+        let (x, y) = (i % w as usize, i / w as usize);
+        let Some(p) = pixel_point(&view, w, h, x, y, n, p0) else {
+            continue;
+        };
+        let z = -p.z;
+        let u = z.log2() + choice.offset;
+        if (u - u.round()).abs() < 1e-4 {
+            continue; // on a level's boundary: f32 may pick either
+        }
+        let level = choice.level(z);
+        assert_eq!(
+            out.texel[i][2] as i32,
+            level - first,
+            "pixel ({x}, {y}) at depth {z}"
+        );
+        if level > opts.first_level && level < last {
+            let texel = 2.0 * opts.unit * f64::from(level + 2).exp2() / f64::from(res);
+            let pixel = 2.0 * z * tan / f64::from(h);
+            let e = (texel / pixel).log2();
+            assert!(
+                e <= choice.bias + 1e-9 && e > choice.bias - 1.0 - 1e-9,
+                "level {level} at depth {z}: texel / pixel 2^{e}, bias {}",
+                choice.bias
+            );
+        }
+        levels.insert(level);
+        checked += 1;
+    }
+    assert!(levels.len() >= 4, "{levels:?}");
+    assert!(*levels.first().unwrap() >= first && *levels.last().unwrap() <= last);
+    assert!(checked > (w * h / 2) as usize, "{checked}");
 }
 
 /// The scene files in render-check/scenes/ (there is at least one).
