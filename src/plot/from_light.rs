@@ -10,7 +10,7 @@
 //! overlap of the maps shows.
 
 use super::chart::{
-    build_chart_styled, clip_polyline, equal_aspect, frame, Axis, ChartStyle, FONT, PALETTE,
+    boxed_text, build_chart_styled, clip_polyline, equal_aspect, frame, Axis, ChartStyle, PALETTE,
 };
 use super::{Fail, Figure};
 use crate::analytic::partition::{z_splits, SplitScheme};
@@ -32,6 +32,10 @@ pub(super) struct Panel {
     pub planes: Vec<f64>,
     /// The light-space window shown (min, max); `None`: the whole frustum.
     pub window: Option<(DVec2, DVec2)>,
+    /// Each split plane's label (its depth z by default).
+    pub plane_labels: Vec<String>,
+    /// Dimension lines: from, to, the label (centred under the line).
+    pub dims: Vec<(DVec2, DVec2, String)>,
 }
 
 pub(super) struct FromLight {
@@ -75,8 +79,10 @@ fn panel(view: &ViewFrustum, light: DVec3, planes: &[f64], title: String) -> Res
         title,
         sections,
         maps,
+        plane_labels: planes.iter().map(|&z| fmt_planes(&[z])).collect(),
         planes: planes.to_vec(),
         window: None,
+        dims: Vec::new(),
     })
 }
 
@@ -164,14 +170,42 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
     let k = 3;
     let ss = z_splits(view.near(), view.far(), k, SplitScheme::SelfSimilar)?;
     // The light travels along the view direction (−Z): it is behind the viewer.
-    let p = panel(
+    let mut p = panel(
         &view,
         DVec3::NEG_Z,
         ss.planes(),
         "light behind the viewer".into(),
     )?;
+    // The paper's labels: the near and far planes by name, the middle ones by depth, and the
+    // near and far faces' sides 2n tan θ and 2f tan θ as dimension lines under them.
+    let last = p.planes.len() - 1;
+    for (i, label) in p.plane_labels.iter_mut().enumerate() {
+        let z = fmt_planes(&[p.planes[i]]);
+        *label = match i {
+            0 => format!("n = {z}"),
+            i if i == last => format!("f = {z}"),
+            _ => format!("z = {z}"),
+        };
+    }
+    let (sn, sf) = (
+        view.near() * view.tan_half_fov(),
+        view.far() * view.tan_half_fov(),
+    );
+    p.dims = vec![
+        (
+            DVec2::new(-sn, -sn - 0.25),
+            DVec2::new(sn, -sn - 0.25),
+            "2n tan θ".into(),
+        ),
+        (
+            DVec2::new(-sf, -sf - 0.35),
+            DVec2::new(sf, -sf - 0.35),
+            "2f tan θ".into(),
+        ),
+    ];
+    p.window = Some((DVec2::new(-sf, -sf - 1.2), DVec2::new(sf, sf)));
     let caption = format!(
-        "Lloyd et al. 2006, Fig. 11: the view frustum seen by the light behind the viewer (n = 1, f = 8, θ = 30°): the near face (side 2n tan θ) inside the far face (2f tan θ), the four side faces as trapezoids between them. With k = 3 self-similar z-partitions (planes {}) each partition's map (dashed) is the square of its far plane, so the maps overlap: the nearer ones lie inside the farther ones, the overlap §5.3 blames for ZP's growth behind. A face partitioning gives each side face its own map (FP+ZP+W). The paper's axes mark n, f, 2n, 2f; here f/n = 8 so that the near face shows.",
+        "Lloyd et al. 2006, Fig. 11: the view frustum seen by the light behind the viewer (n = 1, f = 8, θ = 30°): the near face (side 2n tan θ) inside the far face (2f tan θ), the four side faces as trapezoids between them. With k = 3 self-similar z-partitions (planes {}) each partition's map (dashed) is the square of its far plane, so the maps overlap: the nearer ones lie inside the farther ones, the overlap §5.3 blames for ZP's growth behind. A face partitioning gives each side face its own map (FP+ZP+W). Labelled as the paper's sketch: the near and far planes n and f, the split planes by depth, and the faces' sides 2n tan θ and 2f tan θ (the paper writes 2n and 2f, their values at θ = 45°). Unlike the paper, the figure is to scale and f/n = 8, so that the near face shows.",
         fmt_planes(p.planes.as_slice())
     );
     Ok(FromLight {
@@ -263,7 +297,7 @@ impl Figure for FromLight {
             }
             // Each split plane labelled with its depth, at its cross-section's right end, where
             // that lies in the window and the section is not too small to tell apart.
-            for (sec, &z) in p.sections.iter().zip(&p.planes) {
+            for (sec, label) in p.sections.iter().zip(&p.plane_labels) {
                 let right = sec.iter().copied().fold(sec[0], |a, q| {
                     if q.x > a.x || (q.x == a.x && q.y > a.y) {
                         q
@@ -275,13 +309,35 @@ impl Figure for FromLight {
                     .iter()
                     .fold(0.0f64, |m, q| m.max((*q - sec[0]).length()));
                 if inside(right) && size > 0.06 * (xa.max - xa.min) {
-                    chart.draw_series(std::iter::once(Text::new(
-                        format!(" {}", fmt_planes(&[z])),
+                    boxed_text(
+                        &mut chart,
                         (right.x, right.y),
-                        TextStyle::from((FONT, 13).into_font())
-                            .pos(Pos::new(HPos::Left, VPos::Center)),
-                    )))?;
+                        &format!(" {label}"),
+                        Pos::new(HPos::Left, VPos::Center),
+                        13,
+                        BLACK,
+                    )?;
                 }
+            }
+            // Dimension lines: the line with a bar at each end, its label centred below.
+            for (a, b, text) in &p.dims {
+                let bar = 0.12 * (xa.max - xa.min) / 10.0;
+                let n = (*b - *a).perp().normalize_or_zero() * bar;
+                for (from, to) in [(*a, *b), (*a - n, *a + n), (*b - n, *b + n)] {
+                    chart.draw_series(LineSeries::new(
+                        [(from.x, from.y), (to.x, to.y)],
+                        BLACK.stroke_width(1),
+                    ))?;
+                }
+                let mid = 0.5 * (*a + *b) - n;
+                boxed_text(
+                    &mut chart,
+                    (mid.x, mid.y),
+                    text,
+                    Pos::new(HPos::Center, VPos::Top),
+                    13,
+                    BLACK,
+                )?;
             }
         }
         Ok(())
@@ -348,5 +404,31 @@ mod tests {
             "{lo} {hi}"
         );
         assert!((hi.x - 10.0 * t).abs() < 1e-9);
+    }
+
+    /// Lloyd Fig 11's labels (issue 25): the near and far planes by name and the middle split
+    /// planes by depth (self-similar: 1, 2, 4, 8 for f/n = 8, k = 3), and dimension lines as
+    /// long as the near and far faces' sides, 2n tan θ = 1.1547 and 2f tan θ = 9.2376 (by hand,
+    /// tan 30° = 0.57735), each under its face.
+    #[test]
+    fn fig11_labels_name_n_f_and_the_faces_sides() {
+        let fig = lloyd2006_fig11()
+            .map_err(|e| e.named("lloyd2006-fig11"))
+            .unwrap();
+        let p = &fig.panels[0];
+        assert_eq!(p.plane_labels, ["n = 1", "z = 2", "z = 4", "f = 8"]);
+        let dims: Vec<(f64, f64, &str)> = p
+            .dims
+            .iter()
+            .map(|(a, b, t)| ((*b - *a).length(), a.y, t.as_str()))
+            .collect();
+        assert_eq!(dims.len(), 2);
+        assert!((dims[0].0 - 1.1547).abs() < 1e-4 && dims[0].2 == "2n tan θ");
+        assert!((dims[1].0 - 9.2376).abs() < 1e-4 && dims[1].2 == "2f tan θ");
+        // Under their faces: below the near face's lower edge (−0.577) and the far face's
+        // (−4.619), and inside the window.
+        assert!(dims[0].1 < -0.5774 && dims[1].1 < -4.6188);
+        let (lo, _) = p.window.unwrap();
+        assert!(lo.y < dims[1].1 - 0.5);
     }
 }

@@ -11,6 +11,7 @@
 mod aspect;
 mod axis;
 mod heat;
+mod label;
 mod line;
 mod page;
 mod raster;
@@ -18,6 +19,7 @@ mod raster;
 pub(crate) use aspect::*;
 pub(crate) use axis::*;
 pub(crate) use heat::*;
+pub(crate) use label::*;
 pub(crate) use line::*;
 pub(crate) use page::*;
 
