@@ -20,6 +20,14 @@
 //!   error lies between the least and largest cascade errors of *any* splits), widened by factors
 //!   of 2 when it does not bracket.
 //!
+//! - *Best found*: every complete sweep (reaching the far end: [`Sweep::Last`], or
+//!   [`Sweep::TooLarge`] with its logarithmic tail measured) has a measured largest cascade error;
+//!   the answer is the least of them and of the logarithmic splits'. A sweep's planes depend on
+//!   where its root searches start (the previous sweep's planes), so where h jumps from +∞ to −∞
+//!   (a cascade's error with a floor equal to the target: a box's near edge fixing the first
+//!   cascade's error) the converged E swept again can fall on the other side; the best complete
+//!   sweep is kept instead, and a search without a bracket keeps it too.
+//!
 //! With monotone errors the equal-error splits minimise the largest cascade error over all splits
 //! of k cascades (any other splits have a cascade that contains an equal-error cascade). The
 //! frame's first cascade starts at the visible range's near end and its last ends at the far end
@@ -29,8 +37,9 @@
 //! scaled is the same map), so equal errors are equal ratios: the logarithmic splits of Lloyd
 //! 2006 Eq 15–16, `z_i = n (f/n)^{i/k}` (tests/equal_error.rs).
 //!
-//! Every search is bounded ([`MAX_ITERATIONS`] evaluations per root); a search that does not
-//! converge is [`Error::NoSolution`]. No heap allocation on success.
+//! Every search is bounded ([`MAX_ITERATIONS`] evaluations per root); a split's root search that
+//! does not converge (a NaN error) is [`Error::NoSolution`]. The result is never worse than the
+//! logarithmic splits. No heap allocation on success.
 
 use super::{Built, Ctx, Slice};
 use crate::analytic::partition::{z_splits, SplitScheme, MAX_PARTITIONS};
@@ -70,8 +79,8 @@ enum Sweep {
     /// A cascade's error exceeds the target at its least depth.
     TooSmall,
     /// A cascade before the last reaches the far end within the target (the planes after it
-    /// split it logarithmically).
-    TooLarge,
+    /// split it logarithmically): the largest measured error of those logarithmic cascades.
+    TooLarge(f64),
     /// The last cascade's error.
     Last(f64),
 }
@@ -131,7 +140,11 @@ impl Ctx<'_, '_> {
                     for (j, plane) in planes.iter_mut().enumerate().take(k).skip(i + 1) {
                         *plane = a * (hi / a).powf((j - i) as f64 / m);
                     }
-                    return Ok(Sweep::TooLarge);
+                    let mut tail = 0.0f64;
+                    for j in i..k {
+                        tail = tail.max(self.slice_error(planes[j], planes[j + 1], how)?);
+                    }
+                    return Ok(Sweep::TooLarge(tail));
                 }
                 Bracket::Between(lo_pt, hi_pt) => (lo_pt, hi_pt),
             };
@@ -142,7 +155,8 @@ impl Ctx<'_, '_> {
         Ok(Sweep::Last(self.slice_error(a, hi, how)?))
     }
 
-    /// h(E) of the module docs for ln E = `v`.
+    /// h(E) of the module docs for ln E = `v`; a complete sweep's planes replace `best`'s when
+    /// their largest cascade error (the target, or the last cascade's if larger) is less.
     fn imbalance(
         &self,
         v: f64,
@@ -150,12 +164,19 @@ impl Ctx<'_, '_> {
         range: (f64, f64),
         how: SliceMap,
         planes: &mut [f64; MAX_PARTITIONS + 1],
+        best: &mut Best,
     ) -> Result<f64> {
-        Ok(match self.sweep(v.exp(), k, range, how, planes)? {
-            Sweep::TooSmall => f64::INFINITY,
-            Sweep::TooLarge => f64::NEG_INFINITY,
-            Sweep::Last(e) => e.ln() - v,
-        })
+        let e = v.exp();
+        let (h, largest) = match self.sweep(e, k, range, how, planes)? {
+            Sweep::TooSmall => return Ok(f64::INFINITY),
+            Sweep::TooLarge(tail) => (f64::NEG_INFINITY, tail.max(e)),
+            Sweep::Last(last) => (last.ln() - v, last.max(e)),
+        };
+        if largest < best.largest {
+            best.largest = largest;
+            best.planes = *planes;
+        }
+        Ok(h)
     }
 
     /// The equal-error slices of the visible range `[zn, zf]` (module docs); returns k.
@@ -213,6 +234,7 @@ impl Ctx<'_, '_> {
         // The bracket: the least and largest cascade errors of the logarithmic splits of B's range.
         let log = z_splits(lo, hi, k, SplitScheme::SelfSimilar)?;
         let (mut e_lo, mut e_hi) = (f64::INFINITY, 0.0f64);
+        let log_planes = *planes;
         for i in 0..k {
             let (a, b) = log.range(i);
             let e = self.slice_error(a, b, how)?;
@@ -225,58 +247,67 @@ impl Ctx<'_, '_> {
             return Ok(());
         }
         e_lo = e_lo.clamp(f64::MIN_POSITIVE, whole);
+        // The logarithmic splits themselves are the first candidate.
+        let mut best = Best {
+            largest: e_hi,
+            planes: log_planes,
+        };
         e_hi = e_hi.clamp(e_lo, whole);
+        let mut h = |v: f64, planes: &mut [f64; MAX_PARTITIONS + 1]| {
+            self.imbalance(v, k, (lo, hi), how, planes, &mut best)
+        };
         // v0: E too small (h > 0); v1: E large enough (h ≤ 0).
         let (mut v0, mut v1) = (e_lo.ln(), e_hi.ln());
-        let mut h0 = self.imbalance(v0, k, (lo, hi), how, planes)?;
+        let mut h0 = h(v0, planes)?;
         let mut h1 = f64::NAN;
         let mut widen = 0;
         while h0 <= 0.0 && widen < MAX_ITERATIONS {
             if h0 == 0.0 {
-                // v0's sweep, the last one run, left its planes.
-                return Ok(());
+                break;
             }
             (v1, h1) = (v0, h0);
             v0 -= std::f64::consts::LN_2;
-            h0 = self.imbalance(v0, k, (lo, hi), how, planes)?;
+            h0 = h(v0, planes)?;
             widen += 1;
         }
-        if h1.is_nan() {
-            h1 = self.imbalance(v1, k, (lo, hi), how, planes)?;
+        if h0 > 0.0 {
+            if h1.is_nan() {
+                h1 = h(v1, planes)?;
+            }
+            while h1 > 0.0 && v1 < whole.ln() && widen < MAX_ITERATIONS {
+                (v0, h0) = (v1, h1);
+                v1 = (v1 + std::f64::consts::LN_2).min(whole.ln());
+                h1 = h(v1, planes)?;
+                widen += 1;
+            }
         }
-        while h1 > 0.0 && widen < MAX_ITERATIONS {
-            (v0, h0) = (v1, h1);
-            v1 = (v1 + std::f64::consts::LN_2).min(whole.ln());
-            h1 = self.imbalance(v1, k, (lo, hi), how, planes)?;
-            widen += 1;
+        // Without a bracket (h > 0 even for the whole range's error: the sweep's planes from
+        // its root searches leave the last cascade no depth) the best sweep run is the answer.
+        if h0 > 0.0 && h1 <= 0.0 {
+            itp(
+                |v| h(v, planes),
+                (v1, h1),
+                (v0, h0),
+                EQUAL_MATCH,
+                "the equal error",
+            )?;
         }
-        if h0 <= 0.0 || h1 > 0.0 {
-            return Err(no_convergence("the equal error (no bracket)"));
-        }
-        let mut last = f64::NAN;
-        let v = itp(
-            |v| {
-                last = v;
-                self.imbalance(v, k, (lo, hi), how, planes)
-            },
-            (v1, h1),
-            (v0, h0),
-            EQUAL_MATCH,
-            "the equal error",
-        )?;
-        // The converged E's own sweep (the bracket's end where h ≤ 0, or where |h| is within
-        // EQUAL_MATCH): its planes are the answer (still in `planes` when it was the last one
-        // run). It reaches the far end early where the least largest error is a cascade's error
-        // at its least depth or over a flat stretch (a plateau of the error: any planes whose
-        // errors stay within it are as good, and the sweep's are among them).
-        if v == last {
-            return Ok(());
-        }
-        match self.sweep(v.exp(), k, (lo, hi), how, planes)? {
-            Sweep::Last(_) | Sweep::TooLarge => Ok(()),
-            Sweep::TooSmall => Err(no_convergence("the equal error (the last sweep)")),
-        }
+        // The answer is the best complete sweep that the search ran (every sweep's planes depend
+        // on its bracket's start, the previous sweep's planes: where h jumps from +∞ to −∞, as
+        // where a cascade's error has a floor equal to the target, the sweep at the converged E
+        // run again can fall on the other side; issue 24). With monotone errors it is the
+        // converged E's; it is never worse than the logarithmic splits.
+        *planes = best.planes;
+        Ok(())
     }
+}
+
+/// The planes of the least largest cascade error among the sweeps run (and the logarithmic
+/// splits'), with that error (the target where the sweep reached the far end early: its
+/// logarithmic tail is no worse with monotone errors).
+struct Best {
+    largest: f64,
+    planes: [f64; MAX_PARTITIONS + 1],
 }
 
 /// Where a rising `g` crosses 0 on `[x_min, x_max]`, seen from a guess.
