@@ -51,9 +51,9 @@ struct Harness {
 }
 
 impl Harness {
-    /// The scene on Vulkan; `clip_control: false` disables the device feature
-    /// `DEPTH_CLIP_CONTROL`, so that Bevy emulates unclipped depth in the shadow pass.
-    fn new(clip_control: bool) -> Self {
+    /// The scene on Vulkan with `res`² shadow maps; `clip_control: false` disables the device
+    /// feature `DEPTH_CLIP_CONTROL`, so that Bevy emulates unclipped depth in the shadow pass.
+    fn new(clip_control: bool, res: usize) -> Self {
         let disabled = if clip_control {
             WgpuFeatures::empty()
         } else {
@@ -72,7 +72,7 @@ impl Harness {
             }),
             ShadowAliasingPlugin,
         ))
-        .insert_resource(DirectionalLightShadowMap { size: RES })
+        .insert_resource(DirectionalLightShadowMap { size: res })
         .insert_resource(GlobalAmbientLight {
             brightness: 0.0,
             ..default()
@@ -292,10 +292,16 @@ fn normal(h: &Hit) -> DVec3 {
     n
 }
 
-/// Whether `q` lies on the face `h` hit (inside its rectangle).
+/// Whether `q` lies on the open part of the face `h` hit: inside its rectangle and not under
+/// another box standing on it (the ground beneath a box is no surface the light can reach, yet a
+/// ray cast from inside that box would leave it unblocked: `ray_box` counts only entries ahead).
 fn on_face(q: DVec3, h: &Hit) -> bool {
     let b = &BOXES[h.bx];
+    let lifted = q + normal(h) * 1e-6;
     (0..3).all(|k| k == h.axis || (q[k] >= b.min[k] && q[k] <= b.max[k]))
+        && !BOXES
+            .iter()
+            .any(|o| (0..3).all(|k| lifted[k] > o.min[k] && lifted[k] < o.max[k]))
 }
 
 struct Eye {
@@ -415,10 +421,33 @@ fn save(name: &str, cap: &Capture) {
         .unwrap_or_else(|e| panic!("writing {}: {e}", path.display()));
 }
 
+/// The part of the image around the near boxes' shadows (`CROP`: x, y, width, height), enlarged
+/// `ZOOM` times with each pixel kept square (no filtering), so that texels show as they are drawn.
+const CROP: (u32, u32, u32, u32) = (220, 140, 200, 150);
+const ZOOM: u32 = 3;
+
+fn save_crop(name: &str, cap: &Capture) {
+    let Ok(dir) = std::env::var("SHADOW_ALIASING_BEVY_IMAGES") else {
+        return;
+    };
+    let full = image::RgbaImage::from_raw(W, H, cap.pixels.clone()).expect("W × H RGBA8");
+    let (x, y, w, h) = CROP;
+    let crop = image::imageops::crop_imm(&full, x, y, w, h).to_image();
+    let big = image::imageops::resize(
+        &crop,
+        w * ZOOM,
+        h * ZOOM,
+        image::imageops::FilterType::Nearest,
+    );
+    let path = std::path::Path::new(&dir).join(format!("{name}.png"));
+    big.save(&path)
+        .unwrap_or_else(|e| panic!("writing {}: {e}", path.display()));
+}
+
 #[test]
 fn bevy_and_replaced_cascades_render_exact_shadows_and_replacements_measure_lower() {
     let start = Instant::now();
-    let mut h = Harness::new(true);
+    let mut h = Harness::new(true, RES);
     let reference = h.render(None);
     save("reference", &reference);
     let cam = Eye::new();
@@ -549,7 +578,7 @@ fn bevy_and_replaced_cascades_render_exact_shadows_and_replacements_measure_lowe
 fn without_depth_clip_control_warped_maps_are_refused_and_orthographic_ones_stay_exact() {
     // Bevy's emulation of unclipped depth writes the undivided clip z: drawn with it, the
     // LiSPSM cascades disagreed with the ray cast at 29923 of 38801 compared pixels.
-    let mut h = Harness::new(false);
+    let mut h = Harness::new(false, RES);
     let reference = h.render(None);
     let cam = Eye::new();
     let bevy = h.render(Some(CascadeMode::Measure));
@@ -585,4 +614,59 @@ fn without_depth_clip_control_warped_maps_are_refused_and_orthographic_ones_stay
             "{name} with emulated unclipped depth: {tally:?}"
         );
     }
+}
+
+#[test]
+fn small_maps_show_the_difference_and_both_stay_exact() {
+    // 512² maps (a sixteenth of Bevy's default texels): Bevy's cascades and the plugin's
+    // equal-error ones, each checked against the ray cast like the 2048² ones (the band left
+    // out scales with the texel). The crops are docs/bevy.md's screenshot pair.
+    const SMALL: usize = 512;
+    let mut h = Harness::new(true, SMALL);
+    let reference = h.render(None);
+    let cam = Eye::new();
+    let mut errors = Vec::new();
+    for (name, mode) in [
+        ("bevy_512", CascadeMode::Measure),
+        (
+            "equal_error_512",
+            CascadeMode::Replace(Replace {
+                fit: Fit::Focused(WarpRule::Uniform),
+                splits: Splits::EqualError { k: 4 },
+                depth_range: None,
+            }),
+        ),
+    ] {
+        let cap = h.render(Some(mode));
+        save_crop(name, &cap);
+        let e = cap
+            .errors
+            .clone()
+            .expect("the camera's cascades were measured");
+        assert_eq!((e.map_resolution, e.image_height), (SMALL as u32, H));
+        let max = e.max_error_pixels().unwrap();
+        let tally = compare(&cap, &reference, &cam);
+        println!(
+            "{name}: max error {max:.3} px, compared {}, shadowed {}, pole {}",
+            tally.compared, tally.shadowed, tally.by_pole
+        );
+        assert!(
+            tally.wrong.is_empty(),
+            "{name}: {} of {} compared pixels disagree with the ray cast: {:?}",
+            tally.wrong.len(),
+            tally.compared,
+            &tally.wrong[..tally.wrong.len().min(10)]
+        );
+        assert!(
+            tally.compared > 10_000 && tally.shadowed > 200 && tally.by_pole > 100,
+            "{name}: {tally:?}"
+        );
+        errors.push(max);
+    }
+    assert!(
+        errors[1] < errors[0],
+        "equal-error {} px is not below Bevy's {} px at {SMALL}²",
+        errors[1],
+        errors[0]
+    );
 }
