@@ -60,7 +60,7 @@ fn warp_builds_the_clipmap_levels() {
 fn bad_clipmap_options_are_named() {
     for (extra, name) in [
         (&["--levels", "6"][..], "levels"),
-        (&["--levels", "6,9"][..], "last_level"),
+        (&["--levels", "9,6"][..], "--levels needs FIRST,LAST"),
         (&["--page-texels", "100"][..], "page_texels"),
         (&["--page-texels", "-1"][..], "page_texels"),
         (&["--image-height", "0"][..], "image_height"),
@@ -71,6 +71,36 @@ fn bad_clipmap_options_are_named() {
         let (ok, text) = warp(extra);
         assert!(!ok && text.contains(name), "{extra:?}: {text}");
     }
+}
+
+/// `--levels` whose LAST is too fine for the visible depths names `--levels` (not the library's
+/// `last_level`) and the LAST that covers them: the depth 1000 at Unreal's layout, 16 384 texels
+/// and 1080 pixels is level 17's (the library's plan of the same camera, computed separately), and
+/// `--levels 6,17` then works.
+#[test]
+fn too_few_levels_name_the_flag_and_the_last_level_needed() {
+    let cam = Camera::new(DMat4::IDENTITY, 0.1, 1000.0, 0.5, 1.0).unwrap();
+    let input = FrameInput::new(cam, DVec3::new(0.3, -0.8, -0.4), 16384, 1080);
+    let (_, last) = plan_clipmap(&input, &ClipmapOptions::UNREAL)
+        .unwrap()
+        .level_range();
+    let (ok, text) = warp(&["--levels", "6,9"]);
+    assert!(!ok, "{text}");
+    assert!(
+        text.contains("--levels") && !text.contains("last_level"),
+        "{text}"
+    );
+    assert!(
+        text.contains(&format!("give --levels 6,{last}")) && text.contains("--far"),
+        "{text}"
+    );
+    let (ok, text) = warp(&["--levels", &format!("6,{last}"), "--json"]);
+    assert!(ok, "{text}");
+    let (ok, text) = warp(&["--levels", &format!("6,{}", last - 1)]);
+    assert!(
+        !ok && text.contains(&format!("give --levels 6,{last}")),
+        "{text}"
+    );
 }
 
 /// Clipmap levels are orthographic: a warp rule other than uniform is refused by name, not

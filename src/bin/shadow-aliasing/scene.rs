@@ -8,7 +8,7 @@ use crate::scheme::{k, ratio, rule, value_name, Lights, DEFAULT_LAMBDA};
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::frame::{
-    frame, Aabb, Bound, Camera, CascadeSplits, ClipmapOptions, FrameInput, FrameScheme,
+    frame, Aabb, Bound, Camera, CascadeSplits, ClipmapOptions, FrameInput, FrameScheme, LevelChoice,
 };
 use shadow_aliasing::maps::{TsmOptions, TsmSearch};
 use shadow_aliasing::scheme::face_rule;
@@ -306,12 +306,18 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
     if let FrameScheme::Clipmap(_) = fs {
         (_, input.map_resolution, input.image_height) = clipmap(&sc.clipmap)?;
     }
-    // The cascades' planes are the user's --splits: named so.
+    // The cascades' planes are the user's --splits, the clipmap's levels its --levels: named so.
     let f = frame(&input).map_err(|e| match e {
         Error::InvalidArgument {
             name: "planes",
             reason,
         } if sc.splits.is_some() => Error::invalid("splits", reason),
+        Error::InvalidArgument {
+            name: "last_level", ..
+        } => match input.scheme {
+            FrameScheme::Clipmap(opts) => levels_too_few(&input, &opts),
+            _ => e,
+        },
         e => e,
     })?;
     Ok(if a.json { json(a, &f) } else { text(a, &f) })
@@ -445,6 +451,43 @@ fn text(a: &WarpArgs, f: &shadow_aliasing::frame::Frame) -> String {
     s
 }
 
+/// `--levels FIRST,LAST` whose LAST is too fine for the visible depths: the error names the
+/// flag, the LAST that covers them (the frame built again with the coarsest LAST that
+/// `--levels` accepts) and the depth that the given LAST covers.
+fn levels_too_few(input: &FrameInput<'_>, opts: &ClipmapOptions) -> Error {
+    let (first, last) = (opts.first_level, opts.last_level);
+    let wide = ClipmapOptions {
+        last_level: MAX_LEVEL,
+        ..*opts
+    };
+    let needed = frame(&input.scheme(FrameScheme::Clipmap(wide)))
+        .ok()
+        .and_then(|f| f.maps().iter().filter_map(|m| m.clipmap_level).max());
+    let remedy = match needed {
+        Some(n) => format!("give --levels {first},{n}"),
+        None => format!("raise LAST above {last}"),
+    };
+    let reach = LevelChoice::new(
+        input.camera.view(),
+        input.image_height,
+        input.map_resolution,
+        opts,
+    )
+    .map(|c| format!(" to {}", sig(c.level_start(last + 1))))
+    .unwrap_or_default();
+    Error::invalid(
+        "--levels",
+        format!(
+            "has LAST = {last}, too fine to cover the visible depths (each level covers twice the \
+             depths of the one before): {remedy}, or cut the visible depths{reach} with --far or \
+             --depth-range"
+        ),
+    )
+}
+
+/// The largest |level| that `--levels` accepts.
+const MAX_LEVEL: i32 = 64;
+
 /// `--partition clipmap`'s options: the layout, the levels' resolution and the image's height.
 fn clipmap(a: &ClipmapArgs) -> Result<(ClipmapOptions, u32, u32), Error> {
     let whole = |name: &'static str, v: i64, min: i64| -> Result<u32, Error> {
@@ -468,14 +511,22 @@ fn clipmap(a: &ClipmapArgs) -> Result<(ClipmapOptions, u32, u32), Error> {
         ),
         Some(l) => match l.0.as_slice() {
             [f, t]
-                if f.fract() == 0.0 && t.fract() == 0.0 && f.abs() <= 64.0 && t.abs() <= 64.0 =>
+                if f.fract() == 0.0
+                    && t.fract() == 0.0
+                    && f.abs() <= f64::from(MAX_LEVEL)
+                    && t.abs() <= f64::from(MAX_LEVEL)
+                    && f <= t =>
             {
                 (*f as i32, *t as i32)
             }
             _ => {
                 return Err(Error::invalid(
-                    "levels",
-                    "needs FIRST,LAST, two whole numbers in [-64, 64] (Unreal 6,22)",
+                    "--levels",
+                    format!(
+                        "needs FIRST,LAST, two whole numbers in [-{MAX_LEVEL}, {MAX_LEVEL}], FIRST \
+                         no larger than LAST (Unreal 6,22; got {})",
+                        l.0.iter().map(|v| sig(*v)).collect::<Vec<_>>().join(",")
+                    ),
                 ))
             }
         },
