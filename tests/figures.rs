@@ -969,3 +969,21 @@ fn zhang_fig3_bars_beside_their_blocks_and_apart_labels() {
         }
     }
 }
+
+/// The storage factor's unit is texels per image pixel (issue 25: figs 10 and 12 wrote
+/// "texels per image pixel²"; S̄ = M_x M_z is a ratio of texel counts per pixel).
+#[test]
+fn storage_factor_is_in_texels_per_image_pixel() {
+    let dir = out_dir("figures-units");
+    let names = ["lloyd2006-fig7", "lloyd2006-fig10", "lloyd2006-fig12"];
+    render_all(&dir, Format::Svg, &names, |_| {}).unwrap();
+    for name in names {
+        let svg = std::fs::read_to_string(dir.join(format!("{name}.svg"))).unwrap();
+        let all: Vec<String> = texts(&svg).iter().map(|(_, c)| visible(c)).collect();
+        assert!(
+            all.iter().any(|t| t.contains("texels per image pixel)")),
+            "{name}: no axis in texels per image pixel"
+        );
+        assert!(!svg.contains("pixel²"), "{name}: per pixel²");
+    }
+}

@@ -135,11 +135,18 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
 pub(super) fn fig10() -> Result<Charts, Fail> {
     let theta = 30f64.to_radians();
     let mut c = LineChart::new(
-        "",
+        "(a) S̄, as in the paper; dashed: each optimum",
         Axis::integer("number of z-partitions k", 1.0, 16.0),
-        Axis::log10("storage factor S̄ (texels per image pixel²)", 1.0, 1e4),
+        Axis::log10("storage factor S̄ (texels per image pixel)", 1.0, 1e4),
     );
     c.legend = SeriesLabelPosition::UpperRight;
+    let mut r = LineChart::new(
+        "(b) S̄ over the optimum: every curve tends to 1",
+        Axis::integer("number of z-partitions k", 1.0, 16.0),
+        Axis::log10("S̄ / S̄_{opt}", 0.8, 2000.0),
+    );
+    r.legend = SeriesLabelPosition::UpperRight;
+    let mut optima = Vec::new();
     for (i, ratio) in [10.0, 100.0, 1000.0, 10_000.0].into_iter().enumerate() {
         let view = ViewFrustum::new(1.0, ratio, theta)?;
         let pts = (1..=16usize)
@@ -150,26 +157,52 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
                 ))
             })
             .collect::<Result<Vec<_>, crate::Error>>()?;
-        c.series
-            .push(Series::line(format!("ZP+W, f/n = {ratio}"), pts, PALETTE[i]).with_markers());
         let opt = scheme_storage_factor(Scheme::Optimal, SchemeLight::Overhead, &view, 1)?;
-        c.series.push(
+        let label = format!("ZP+W, f/n = {}", fmt_plain(ratio));
+        r.series.push(
             Series::line(
-                format!("optimal ln(f/n)/(2 tan θ) = {opt:.2}"),
-                vec![(1.0, opt), (16.0, opt)],
+                label.clone(),
+                pts.iter().map(|&(k, v)| (k, v / opt)).collect(),
                 PALETTE[i],
             )
-            .dashed(),
+            .with_markers(),
         );
+        c.series
+            .push(Series::line(label, pts, PALETTE[i]).with_markers());
+        // The asymptote, unlabelled: the legend's last entry names all four.
+        let mut asymptote = Series::line(String::new(), vec![(1.0, opt), (16.0, opt)], PALETTE[i])
+            .dashed()
+            .reference();
+        asymptote.label = None;
+        c.series.push(asymptote);
+        optima.push(format!("{opt:.2} (f/n = {})", fmt_plain(ratio)));
     }
+    c.series.push(
+        Series::line(
+            "optimum ln(f/n)/(2 tan θ)",
+            Vec::new(),
+            RGBColor(90, 90, 90),
+        )
+        .dashed()
+        .reference(),
+    );
+    r.series.push(
+        Series::line(
+            "optimum",
+            vec![(1.0, 1.0), (16.0, 1.0)],
+            RGBColor(90, 90, 90),
+        )
+        .dashed()
+        .reference(),
+    );
     Ok(Charts {
-        size: (520, 540),
+        size: (520, 980),
         title: "Storage factor of warped z-partitions against the number of partitions, light overhead".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 10 (θ = 30°), from Eq 18 and App. C (analytic::partition::scheme_storage_factor with Scheme::ZpW and Scheme::Optimal).".into(),
-            "S̄ = k((f/n)^{1/k} − 1)/(2 tan θ) decreases with k towards the optimal logarithmic parameterisation (dashed).".into(),
+            format!("S̄ = k((f/n)^{{1/k}} − 1)/(2 tan θ) decreases with k towards the optimal logarithmic parameterisation ln(f/n)/(2 tan θ) (dashed, in each curve's colour): {}. Panel (b), not in the paper, divides each curve by its optimum so that the approach shows on one scale; the paper plots one frustum it does not name, we plot four.", optima.join(", ")),
         ],
-        charts: vec![c],
+        charts: vec![c, r],
     })
 }
 
@@ -184,7 +217,7 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
     let mut c = LineChart::new(
         "",
         Axis::integer("number of shadow maps", 0.0, 40.0),
-        Axis::log10("storage factor S̄ (texels per image pixel²)", 1.0, 1e7),
+        Axis::log10("storage factor S̄ (texels per image pixel)", 1.0, 1e7),
     );
     c.legend = SeriesLabelPosition::UpperRight;
     let schemes = [
@@ -218,19 +251,47 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
             c.series.push(s);
         }
     }
-    c.notes.push(Note {
-        at: (15.5, 90.0),
-        text: "light behind: FP+ZP+W below ZP from 17 maps on".into(),
+    // (b): the light-behind crossover enlarged, ZP (equal to ZP+W there) against FP+ZP+W.
+    let mut zoom = LineChart::new(
+        "(b) light behind, enlarged around the crossover",
+        Axis::integer("number of shadow maps", 11.0, 23.0),
+        Axis::linear("S̄ (texels per image pixel)", 25.0, 65.0),
+    );
+    zoom.legend = SeriesLabelPosition::UpperRight;
+    for (scheme, name, colour) in [
+        (Scheme::Zp, "ZP = ZP+W, light behind", 0),
+        (Scheme::FpZpW, "FP+ZP+W, light behind", 2),
+    ] {
+        let mut pts = Vec::new();
+        for k in 1..=23usize {
+            let maps = shadow_map_count(scheme, SchemeLight::Behind, k)?;
+            if (11..=23).contains(&maps) {
+                pts.push((
+                    maps as f64,
+                    scheme_storage_factor(scheme, SchemeLight::Behind, &view, k)?,
+                ));
+            }
+        }
+        zoom.series.push(
+            Series::line(name, pts, PALETTE[colour])
+                .dashed()
+                .with_markers(),
+        );
+    }
+    zoom.notes.push(Note {
+        at: (11.4, 33.0),
+        text: "FP+ZP+W below ZP from 17 maps on".into(),
         colour: PALETTE[6],
     });
+    c.title = "(a) overhead (solid) and behind (dashed)".into();
     Ok(Charts {
-        size: (520, 540),
+        size: (520, 980),
         title: "Storage factor against the number of shadow maps".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 12 (f/n = 1000, θ = 30°), from Eq 17–21 (analytic::partition::scheme_storage_factor). k z-partitions use k maps; FP+ZP+W uses 4k + 1".into(),
-            "(four side faces and the near face). Behind, ZP+W equals ZP (a square frustum cannot be warped); FP+ZP+W behind is Eq 21 with each face at 45° whatever θ (docs/errata.md). Up to 40 maps, so that the light-behind crossover of §5.3 (between 13 and 17 maps) shows.".into(),
+            "(four side faces and the near face). Behind, ZP+W equals ZP (a square frustum cannot be warped); FP+ZP+W behind is Eq 21 with each face at 45° whatever θ (docs/errata.md). Up to 40 maps, so that the light-behind crossover of §5.3 shows; (b), not in the paper, enlarges it: at 13 maps ZP is lower (37.6 against 55.0), at 17 FP+ZP+W (37.99 against 38.32).".into(),
         ],
-        charts: vec![c],
+        charts: vec![c, zoom],
     })
 }
 
@@ -467,5 +528,50 @@ mod tests {
             assert_eq!(series[s].points.last().unwrap().0, 40.0, "series {s}");
         }
         assert_eq!(series[5].points.last().unwrap().0, 37.0);
+    }
+
+    /// Fig 12 (b) (issue 25: an inset around the 17-map crossover): its window holds 13 and 17
+    /// maps, and its curves are Eq 20 and 21 by hand there (ZP behind j (f/n)^{2/j}, FP+ZP+W
+    /// 4k((f/n)^{1/k} − 1)/2 + 1), crossing between them.
+    #[test]
+    fn fig12_enlarges_the_crossover() {
+        let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
+        let zoom = &fig.charts[1];
+        assert!(zoom.x.min <= 13.0 && zoom.x.max >= 17.0);
+        let r = 1000f64;
+        let at = |s: usize, maps: f64| {
+            zoom.series[s]
+                .points
+                .iter()
+                .find(|p| p.0 == maps)
+                .unwrap()
+                .1
+        };
+        assert!((at(0, 17.0) - 17.0 * r.powf(2.0 / 17.0)).abs() < 1e-9);
+        assert!((at(1, 17.0) - (8.0 * (r.powf(0.25) - 1.0) + 1.0)).abs() < 1e-9);
+        assert!(at(0, 13.0) < at(1, 13.0) && at(0, 17.0) > at(1, 17.0));
+        for s in &zoom.series {
+            for &(_, v) in &s.points {
+                assert!(v > zoom.y.min && v < zoom.y.max, "{v} outside the window");
+            }
+        }
+    }
+
+    /// Fig 10 (b) divides each curve by its optimum: at k = 1, Eq 18 over App. C is
+    /// (f/n − 1)/ln(f/n) (θ cancels: 999/ln 1000 = 144.62 for f/n = 1000), and every ratio falls
+    /// towards 1 and stays above it.
+    #[test]
+    fn fig10_ratio_panel_tends_to_one() {
+        let fig = fig10().map_err(|e| e.named("lloyd2006-fig10")).unwrap();
+        let ratio = &fig.charts[1];
+        let f1000 = &ratio.series[2].points;
+        assert!(
+            (f1000[0].1 - 999.0 / 1000f64.ln()).abs() < 1e-9,
+            "{}",
+            f1000[0].1
+        );
+        for s in &ratio.series[..4] {
+            assert!(s.points.windows(2).all(|w| w[1].1 < w[0].1 && w[1].1 > 1.0));
+        }
     }
 }

@@ -3,9 +3,11 @@
 
 use super::super::Fail;
 use super::axis::{build_chart, Axis};
+use super::label::boxed_text;
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// How a series' line is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -90,6 +92,8 @@ pub(crate) struct Series {
     pub dash: Dash,
     pub width: u32,
     pub markers: bool,
+    /// A reference line (an asymptote, an optimum): never markers, in the chart or its legend.
+    pub reference: bool,
 }
 
 impl Series {
@@ -102,7 +106,13 @@ impl Series {
             dash: Dash::Solid,
             width: 2,
             markers: false,
+            reference: false,
         }
+    }
+    /// The same series as a reference line: no markers.
+    pub fn reference(mut self) -> Self {
+        self.reference = true;
+        self
     }
     /// The same series, dashed.
     pub fn dashed(mut self) -> Self {
@@ -275,7 +285,9 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
         // Markers: at every point of a series that asks for them, and a few along every other
         // labelled line of a chart with more than one colour (greyscale print).
         let shape = Marker::of(s.colour);
-        let along: Vec<(f64, f64)> = if s.markers {
+        let along: Vec<(f64, f64)> = if s.reference {
+            Vec::new()
+        } else if s.markers {
             pts.iter().flatten().copied().collect()
         } else if s.label.is_some() && colours > 1 && pts.len() > 1 {
             let shift = 0.035 * (k % 3) as f64;
@@ -299,7 +311,7 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
             let colour = s.colour;
             let width = s.width;
             let dash = s.dash;
-            let markers = s.markers || colours > 1;
+            let markers = !s.reference && (s.markers || colours > 1);
             chart
                 .draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())?
                 .label(label.as_str())
@@ -330,14 +342,18 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
             any_label = true;
         }
     }
+    // Notes on a white box, so that they read over the lines and the grid.
     for n in &c.notes {
         if let (Some(x), Some(y)) = (c.x.to_axis(n.at.0), c.y.to_axis(n.at.1)) {
             if x >= x0 && x <= x1 && y >= y0 && y <= y1 {
-                chart.draw_series(std::iter::once(Text::new(
-                    n.text.clone(),
+                boxed_text(
+                    &mut chart,
                     (x, y),
-                    (FONT, 13).into_font().color(&n.colour),
-                )))?;
+                    &n.text,
+                    Pos::new(HPos::Left, VPos::Top),
+                    13,
+                    n.colour,
+                )?;
             }
         }
     }
