@@ -410,7 +410,7 @@ fn scene_file_text() -> &'static str {
         "boxes": [{"min": [-2, 0, -12], "max": [2, 3, -8]}, {"min": [3, 0, -20], "max": [4, 6, -19]}],
         "camera": {"eye": [0, 4, 0], "target": [0, 0, -20], "up": [0, 1, 0],
                    "near": 0.5, "far": 60, "fov_y_deg": 55},
-        "light_dir": [0.4, -1.0, -0.3], "map_resolution": 256}"#
+        "light_dir": [0.4, -1.0, -0.3], "map_resolution": 1024}"#
 }
 
 /// The binary with a scene file: exit 0, summary.json has exactly the documented fields, the
@@ -482,7 +482,17 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
         assert_eq!(c["shadow_misses"], 0, "{c}");
         assert_eq!(c["false_shadows"], 0, "{c}");
         assert_eq!(c["uncovered_pixels"], 0, "{c}");
-        let cascaded = c["scheme"].as_str().unwrap().contains("cascades");
+        // The shimmer test runs for the plain and the stable cascades.
+        let cascaded = matches!(
+            c["scheme"].as_str().unwrap(),
+            "cascades4_lispsm" | "stable_cascades4"
+        );
+        let blended = c["scheme"] == "cascades4_blend";
+        assert_eq!(c["blend_pixels"].is_null(), !blended, "{c}");
+        if blended {
+            assert!(c["blend_pixels"].as_u64().unwrap() > 0, "{c}");
+            assert_eq!(c["blend_mismatches"], 0, "{c}");
+        }
         for k in ["shimmer_changed_fraction", "shimmer_points"] {
             assert_eq!(c[k].is_null(), !cascaded, "{k}: {c}");
         }
