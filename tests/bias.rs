@@ -8,6 +8,7 @@
 use glam::{DMat4, DVec3, DVec4};
 use proptest::prelude::*;
 use shadow_aliasing::analytic::partition::SplitScheme;
+use shadow_aliasing::frame::bias::{normal_offset_at, TEXEL_SLACK};
 use shadow_aliasing::frame::{frame, Bound, CascadeSplits, FrameInput, FrameMap, FrameScheme};
 use shadow_aliasing::maps::faces::FaceWarp;
 use shadow_aliasing::maps::{ClipDepth, TsmOptions, TsmSearch, WarpRule};
@@ -245,6 +246,171 @@ fn bias_is_within_a_factor_two_of_the_need() {
     }
 }
 
+/// The continuous model of a lookup's reach: the largest amount by which the plane
+/// `n · (x − p0) = 0` stored anywhere within `rho` texels (in s and in t) of `look`'s map position
+/// is in front of `look`'s own depth, in depth-attachment units (OpenGL's clip depth halved): the
+/// depths from unprojecting the map positions and cutting the rays with the plane.
+fn reach_worst(lk: &Lookup, look: DVec3, p0: DVec3, n: DVec3, rho: f64, half: bool) -> f64 {
+    let q = lk.project(look);
+    let d = rho * 2.0 / lk.res;
+    let mut worst = f64::NEG_INFINITY;
+    for (a, b) in [(-d, -d), (-d, d), (d, -d), (d, d)] {
+        let un = |z: f64| {
+            let h = lk.inv * DVec4::new(q.x + a, q.y + b, z, 1.0);
+            h.truncate() / h.w
+        };
+        let (x0, x1) = (un(q.z - 0.1), un(q.z + 0.1));
+        let tt = n.dot(p0 - x0) / n.dot(x1 - x0);
+        let stored = lk.project(x0 + (x1 - x0) * tt).z;
+        let ahead = if lk.reversed {
+            stored - q.z
+        } else {
+            q.z - stored
+        };
+        worst = worst.max(if half { 0.5 * ahead } else { ahead });
+    }
+    worst
+}
+
+/// Checks the per-point normal offset on one map against the lookup model: every tap of the
+/// texels read lit, and the offset the least that keeps the kernel's whole reach lit with the
+/// `f32` margin (bisection on the continuous model). Returns (points checked, the mean ratio of
+/// the per-point offset to the map's maximum).
+fn check_local(map: &FrameMap, l: DVec3, res: u32, seed: u64) -> (usize, f64) {
+    let body = map.body();
+    let centroid = body.iter().copied().sum::<DVec3>() / body.len() as f64;
+    let mut rng = Lcg(seed);
+    let (mut checked, mut ratio) = (0usize, 0.0);
+    let margin = 8.0 * f64::from(f32::EPSILON);
+    for depth in ClipDepth::ALL {
+        let look = Lookup::new(map, depth, res);
+        let half = depth == ClipDepth::NegOneToOne;
+        for r in 0..=1 {
+            let max = map.bias(f64::from(r), depth).unwrap().normal_offset;
+            for _ in 0..40 {
+                let v = body[(rng.next() * body.len() as f64) as usize % body.len()];
+                let p = v + (centroid - v) * (0.3 * rng.next());
+                let alpha = 85f64.to_radians() * rng.next();
+                let n = normal(l, alpha, std::f64::consts::TAU * rng.next());
+                let Some(o) = normal_offset_at(&look.m, depth, res, p, n, l, f64::from(r)) else {
+                    continue;
+                };
+                assert!(o > 0.0 && o.is_finite(), "{o}");
+                let q = p + n * o;
+                let worst = look.worst(q, look.project(q).z, p, n, r);
+                assert!(
+                    worst <= 1e-12,
+                    "per-point offset {o}: tap {worst} ahead at α = {alpha}, r = {r}, {depth:?}"
+                );
+                // The least offset with the reach (r + ½ + TEXEL_SLACK texels) lit by the margin.
+                let rho = f64::from(r) + 0.5 + TEXEL_SLACK;
+                let need = |o: f64| reach_worst(&look, p + n * o, p, n, rho, half) + margin;
+                assert!(need(o) <= 1e-3 * margin, "{o}: {}", need(o));
+                let (mut lo, mut hi) = (0.0, o);
+                for _ in 0..60 {
+                    let mid = 0.5 * (lo + hi);
+                    if need(mid) > 0.0 {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                assert!(
+                    (hi - o).abs() <= 1e-6 * o,
+                    "per-point offset {o}, least by the model {hi}, α = {alpha}, r = {r}, {depth:?}"
+                );
+                checked += 1;
+                ratio += o / max;
+            }
+        }
+    }
+    (checked, ratio / checked.max(1) as f64)
+}
+
+proptest! {
+    #![proptest_config(common::config(24))]
+
+    /// Random scenes, every scheme: the per-point normal offset
+    /// (`frame::bias::normal_offset_at`) leaves every tap lit and is the least offset that keeps
+    /// the kernel's reach lit, by the depths stored on the texels' rays.
+    #[test]
+    fn local_normal_offset_is_the_least_that_keeps_the_reach_lit(
+        params in scene_params(),
+        scheme_i in 0usize..7,
+        seed in any::<u64>(),
+    ) {
+        let Some(sc) = random_scene(&params) else {
+            return Ok(());
+        };
+        let (r, c) = ([sc.receivers], [sc.casters]);
+        let input = FrameInput::new(sc.camera, sc.light, 1024, 1024)
+            .receivers(Bound::Boxes(&r))
+            .casters(Bound::Boxes(&c))
+            .scheme(schemes(scheme_i));
+        let Ok(f) = frame(&input) else {
+            return Ok(());
+        };
+        for m in f.maps().iter() {
+            check_local(m, f.light_dir_eye(), 1024, seed);
+        }
+    }
+}
+
+/// On a fixed scene the per-point offset is checked at most points of every map, and for the
+/// warped maps it is on average well below the maximum over B (what makes first-surface lookups
+/// decidable near the camera); `FrameMap::normal_offset_at` (world space) is the same value.
+#[test]
+fn local_normal_offset_on_a_fixed_scene() {
+    use glam::dcamera::rh::view::look_at_mat4;
+    use shadow_aliasing::frame::{Aabb, Camera};
+    let ground = [Aabb::new([-60.0, -1.0, -60.0], [60.0, 0.0, 60.0]).unwrap()];
+    let light = DVec3::new(0.3, -0.8, -0.4);
+    let view = look_at_mat4(
+        DVec3::new(0.0, 6.0, 20.0),
+        DVec3::new(2.0, 0.0, -10.0),
+        DVec3::Y,
+    );
+    let cam = Camera::new(view, 0.5, 120.0, 0.6, 1.5).unwrap();
+    for s in [0, 2, 6] {
+        let input = FrameInput::new(cam, light, 1024, 512)
+            .receivers(Bound::Boxes(&ground))
+            .casters(Bound::Boxes(&ground))
+            .scheme(schemes(s));
+        let f = frame(&input).unwrap();
+        for m in f.maps().iter() {
+            let (checked, ratio) = check_local(m, f.light_dir_eye(), 1024, 11);
+            println!("scheme {s}: {checked} points, per-point / maximum {ratio:.3}");
+            assert!(checked >= 200, "scheme {s}: {checked} of 240");
+            assert!(ratio < 0.6, "scheme {s}: per-point / maximum {ratio}");
+            // World space through the FrameMap agrees with the eye-space form.
+            let eye_to_world = view.inverse();
+            let p = m.body()[0] * 0.9 + m.body()[1] * 0.1;
+            let n = normal(f.light_dir_eye(), 0.4, 1.0);
+            let lk = Lookup::new(m, ClipDepth::ZeroToOne, 1024);
+            let want = normal_offset_at(
+                &lk.m,
+                ClipDepth::ZeroToOne,
+                1024,
+                p,
+                n,
+                f.light_dir_eye(),
+                0.0,
+            )
+            .unwrap();
+            let got = m
+                .normal_offset_at(
+                    eye_to_world.transform_point3(p),
+                    eye_to_world.transform_vector3(n),
+                    0.0,
+                    ClipDepth::ZeroToOne,
+                )
+                .unwrap()
+                .unwrap();
+            assert!((got - want).abs() <= 1e-9 * want, "{got} vs {want}");
+        }
+    }
+}
+
 /// A bad radius is an error naming `r`.
 #[test]
 fn bad_radius_is_refused() {
@@ -255,6 +421,24 @@ fn bad_radius_is_refused() {
         match f.maps()[0].bias(r, ClipDepth::ZeroToOne) {
             Err(Error::InvalidArgument { name, .. }) => assert_eq!(name, "r"),
             other => panic!("{r}: {other:?}"),
+        }
+    }
+    let m = &f.maps()[0];
+    let (p, n) = (DVec3::new(0.0, 0.0, -10.0), DVec3::Y);
+    for (got, name) in [
+        (m.normal_offset_at(p, n, -1.0, ClipDepth::ZeroToOne), "r"),
+        (
+            m.normal_offset_at(p * f64::NAN, n, 0.0, ClipDepth::ZeroToOne),
+            "p",
+        ),
+        (
+            m.normal_offset_at(p, DVec3::ZERO, 0.0, ClipDepth::ZeroToOne),
+            "n",
+        ),
+    ] {
+        match got {
+            Err(Error::InvalidArgument { name: got, .. }) => assert_eq!(got, name),
+            other => panic!("{name}: {other:?}"),
         }
     }
 }

@@ -48,6 +48,31 @@
 //! - **Texel extents.** `(2/res) · |E_s|` and `(2/res) · |E_t|`, the texel's two world-space
 //!   edges, for PCF or PCSS radii in world units (anisotropic for warped maps).
 //!
+//! # Per point
+//!
+//! The values above are maxima over B, set by B's coarsest texels; a shader can instead offset each
+//! lookup by what its own point needs ([`normal_offset_at`], the WGSL module's
+//! `sa_local_normal_offset`). On the lit plane through p with unit normal n the stored depth is
+//! affine in (s, t) (a projective map keeps planes), so its step across the kernel is the same
+//! anywhere on the plane, `ρ · (2/res) · (|g_s| + |g_t|)` with `g_e = c_e + ∂d/∂λ · τ_e` taken at p
+//! itself. The lookup point q = p + o n lies o / cos α above the plane along the light, worth
+//! `|∂d/∂λ(q)| · o / cos α` of depth, and `∂d/∂λ = (row₂ · l) / w` is constant along a light ray (w
+//! is), with `w(q) = w(p) + o · (row₃ · n)`. Asking that depth to cover the step plus the `f32`
+//! rounding δ of the two depths compared gives the least offset in closed form,
+//!
+//! ```text
+//! Y = ρ · (2/res) · (|c_s cos α + ∂d/∂λ (n · E_s)| + |c_t cos α + ∂d/∂λ (n · E_t)|) + δ cos α,
+//! o(p, n) = Y / (|∂d/∂λ(p)| − Y · (row₃ · n) / w(p)),
+//! ```
+//!
+//! every quantity at p (the same `E_s`, `E_t`, `c_e` as above), finite and continuous at grazing
+//! light (cos α → 0 leaves `ρ (2/res) |∂d/∂λ| (|n · E_s| + |n · E_t|)`). Where the denominator is not
+//! positive the lookup point would pass the map's centre of projection: no offset suffices. ρ here
+//! is `r + ½ + 1/64`: the 1/64 texel covers the GPU's `f32` choice of texel near a texel's edge.
+//! Unlike the maximum it needs no bound over B, so it holds wherever the plane's own texels are the
+//! ones read (tests/bias.rs checks it against the depths stored on the texels' rays, and that it is
+//! the least offset that leaves the kernel's whole reach lit).
+//!
 //! # The maximum over B
 //!
 //! Each value is a maximum over B, taken exactly from B's vertices:
@@ -80,7 +105,16 @@ use super::output::{texel_vectors, FrameMap};
 use crate::error::{fmt_num, Error, Result};
 use crate::maps::matrix::in_clip_depth;
 use crate::maps::ClipDepth;
-use glam::DVec3;
+use glam::{DMat4, DVec3};
+
+/// The texels added to a kernel's reach r + ½ by [`normal_offset_at`]: the GPU's `f32` lookup
+/// may take the neighbouring texel when the point is within a small fraction of a texel of an
+/// edge (`SA_TEXEL_SLACK` in the WGSL module).
+pub const TEXEL_SLACK: f64 = 1.0 / 64.0;
+
+/// The `f32` rounding of the two depths a lookup compares, in depth-attachment units (8 ulps at
+/// depth 1, as [`Bias::constant_depth`] allows).
+const DEPTH_ROUNDING: f64 = 8.0 * f32::EPSILON as f64;
 
 /// A map's bias and filtering values for a PCF kernel ([`FrameMap::bias`]; the module docs
 /// derive them).
@@ -127,6 +161,47 @@ impl FrameMap {
         Ok(self.bias_unchecked(r, depth))
     }
 
+    /// The normal offset this point needs (module docs, "Per point"): world units along the
+    /// unit surface normal `n` (world space) at the world point `p` for a PCF kernel of radius
+    /// `r` texels, for the map in `depth`'s convention. Much smaller than
+    /// [`Bias::normal_offset`], the maximum over B, where the map's texels are finer than its
+    /// coarsest. `Some(0.0)` for a surface turned away from the light (in shadow anyway); `None`
+    /// where no offset suffices (the lookup point would pass the map's centre of projection, or
+    /// `p` is behind it).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming `r` (negative or not finite), `p` (not finite) or `n`
+    /// (not a finite non-zero vector).
+    pub fn normal_offset_at(
+        &self,
+        p: impl Into<DVec3>,
+        n: impl Into<DVec3>,
+        r: f64,
+        depth: ClipDepth,
+    ) -> Result<Option<f64>> {
+        let (p, n) = (p.into(), n.into());
+        self.bias(r, depth)?;
+        if !p.is_finite() {
+            return Err(Error::invalid("p", "the surface point must be finite"));
+        }
+        let n = n.try_normalize().ok_or_else(|| {
+            Error::invalid("n", "the surface normal must be a finite, non-zero vector")
+        })?;
+        let eye_to_world = self.world_to_eye.inverse();
+        let l = eye_to_world
+            .transform_vector3(self.shadow.light_dir())
+            .normalize();
+        Ok(normal_offset_at(
+            &self.world_to_clip(depth),
+            depth,
+            self.resolution,
+            p,
+            n,
+            l,
+            r,
+        ))
+    }
+
     /// [`FrameMap::bias`] for a valid `r`.
     pub(super) fn bias_unchecked(&self, r: f64, depth: ClipDepth) -> Bias {
         let m = self.shadow.matrix();
@@ -169,6 +244,44 @@ impl FrameMap {
             texel_extent: (texel * ext_s, texel * ext_t),
         }
     }
+}
+
+/// The normal offset the point `p` with unit normal `n` needs (module docs, "Per point") in a
+/// map of `resolution` texels with matrix `m` (any space → clip, `depth`'s convention; a map that
+/// projects along `l`, the unit direction light travels, in the same space: clip w constant
+/// along it), for a PCF kernel of radius `r` texels. What the WGSL module's
+/// `sa_local_normal_offset` computes in `f32`. `Some(0.0)` for a surface turned away from the
+/// light; `None` where no offset suffices or p is behind the map's centre of projection.
+#[must_use]
+pub fn normal_offset_at(
+    m: &DMat4,
+    depth: ClipDepth,
+    resolution: u32,
+    p: DVec3,
+    n: DVec3,
+    l: DVec3,
+    r: f64,
+) -> Option<f64> {
+    let cos_a = -n.dot(l);
+    if cos_a <= 0.0 {
+        return Some(0.0);
+    }
+    let (es, et) = texel_vectors(m, l, p)?;
+    let h = *m * p.extend(1.0);
+    // Depth-attachment units: OpenGL's [−1, 1] is stored as its half plus ½.
+    let scale = if depth == ClipDepth::NegOneToOne {
+        0.5
+    } else {
+        1.0
+    };
+    let grad = (m.row(2).truncate() * h.w - m.row(3).truncate() * h.z) * (scale / (h.w * h.w));
+    let k = grad.dot(l);
+    let reach = (r + 0.5 + TEXEL_SLACK) * 2.0 / f64::from(resolution);
+    let step = |e: DVec3| (grad.dot(e) * cos_a + k * n.dot(e)).abs();
+    let y = reach * (step(es) + step(et)) + DEPTH_ROUNDING * cos_a;
+    let den = k.abs() - y * m.row(3).truncate().dot(n) / h.w;
+    let o = y / den;
+    (den > 0.0 && o.is_finite()).then_some(o)
 }
 
 /// The largest `(|c_s| + |c_t|) · w` over B from its vertices' `(w, c_s, c_t)`, each affine in

@@ -15,9 +15,17 @@
 // upload origin with gpu_relative); n is the surface's unit normal and l the direction the light
 // travels, both in that space's axes.
 
-// Bias flags of sa_visibility.
+// Bias flags of sa_visibility: SA_NORMAL_OFFSET moves the lookup point by the record's normal
+// offset (the maximum over the map's focus body, set by its coarsest texels),
+// SA_LOCAL_NORMAL_OFFSET by what the point itself needs (sa_local_normal_offset; it takes
+// precedence over SA_NORMAL_OFFSET), SA_DEPTH_BIAS adds the record's depth bias.
 const SA_NORMAL_OFFSET: u32 = 1u;
 const SA_DEPTH_BIAS: u32 = 2u;
+const SA_LOCAL_NORMAL_OFFSET: u32 = 4u;
+
+// Texels added to a kernel's reach r + 1/2 by sa_local_normal_offset: the f32 lookup may take the
+// neighbouring texel near a texel's edge (shadow_aliasing::frame::bias::TEXEL_SLACK).
+const SA_TEXEL_SLACK: f32 = 0.015625;
 
 // Where p falls in map m: xy = (s, t) in [0, 1] across the map (t up), z = the depth the depth
 // attachment stores for it (OpenGL's [-1, 1] mapped to [0, 1], as glDepthRange(0, 1) does; the
@@ -69,6 +77,52 @@ fn sa_offset_point(m: GpuShadowMap, p: vec3<f32>, n: vec3<f32>, r: i32) -> vec3<
     return p + n * (m.normal_offset * sa_kernel_scale(r));
 }
 
+// The normal offset (world units) the point p with unit normal n needs in map m for a kernel of
+// radius r, from the map matrix's local Jacobian at p (shadow_aliasing::frame::bias, "Per point";
+// FrameMap::normal_offset_at in f64): on the lit plane through p the stored depth is affine in
+// the map position, and the lookup point p + o n must lie above the plane by the depth step
+// across the kernel's reach plus the f32 rounding of the two depths. 0 for a surface turned away
+// from the light; the record's normal offset for the kernel where no offset suffices.
+fn sa_local_normal_offset(m: GpuShadowMap, p: vec3<f32>, n: vec3<f32>, l: vec3<f32>, r: i32) -> f32 {
+    let cos_a = -dot(n, l);
+    if (cos_a <= 0.0) {
+        return 0.0;
+    }
+    let fallback = m.normal_offset * sa_kernel_scale(r);
+    let h = m.world_to_clip * vec4<f32>(p, 1.0);
+    if (!(h.w > 0.0)) {
+        return fallback;
+    }
+    let rows = transpose(m.world_to_clip);
+    let r3 = rows[3].xyz;
+    let iw2 = 1.0 / (h.w * h.w);
+    // The gradients of s and t across the light, and the texel's edge vectors E_s, E_t (per unit
+    // of clip s, t) in the plane perpendicular to it.
+    var gs = (rows[0].xyz * h.w - r3 * h.x) * iw2;
+    var gt = (rows[1].xyz * h.w - r3 * h.y) * iw2;
+    gs = gs - dot(gs, l) * l;
+    gt = gt - dot(gt, l) * l;
+    let det = dot(cross(gs, gt), l);
+    let es = cross(gt, l) / det;
+    let et = cross(l, gs) / det;
+    // The stored depth's gradient (OpenGL's [-1, 1] is stored halved) and its rate along the light.
+    var scale = 1.0;
+    if (m.clip_depth == CLIP_DEPTH_NEG_ONE_TO_ONE) {
+        scale = 0.5;
+    }
+    let grad = (rows[2].xyz * h.w - r3 * h.z) * (scale * iw2);
+    let k = dot(grad, l);
+    let reach = (f32(max(r, 0)) + 0.5 + SA_TEXEL_SLACK) * 2.0 / sa_map_resolution();
+    let y = reach * (abs(dot(grad, es) * cos_a + k * dot(n, es))
+        + abs(dot(grad, et) * cos_a + k * dot(n, et))) + 9.536743e-7 * cos_a;
+    let den = abs(k) - y * dot(r3, n) / h.w;
+    let o = y / den;
+    if (!(den > 0.0) || !(o >= 0.0) || !(o < 3.4e38)) {
+        return fallback;
+    }
+    return o;
+}
+
 // The depth bias to add to the receiver's depth (depth-attachment units, signed for the
 // convention) at a surface of unit normal n under light l, for a kernel of radius r:
 // (2r + 1) (constant_depth + slope_scaled_depth tan a), a the angle between n and the direction
@@ -85,13 +139,15 @@ fn sa_depth_bias(m: GpuShadowMap, n: vec3<f32>, l: vec3<f32>, r: i32) -> f32 {
 
 // The fraction of the (2r + 1)^2 taps of map i (whole-texel offsets -r..r in s and t around the
 // lookup point's texel, clamped to the map) that find p lit: 1 lit, 0 in shadow. `bias` says
-// which of the record's biases to apply: SA_NORMAL_OFFSET, SA_DEPTH_BIAS, both, or 0u for maps
+// which biases to apply: SA_NORMAL_OFFSET or SA_LOCAL_NORMAL_OFFSET, SA_DEPTH_BIAS, or 0u for maps
 // that keep a surface from shadowing itself otherwise (second-depth maps). 1 where the lookup
 // point is not on the map: no shadow is known there.
 fn sa_visibility(i: u32, p: vec3<f32>, n: vec3<f32>, l: vec3<f32>, r: i32, bias: u32) -> f32 {
     let m = sa_map(i);
     var q = p;
-    if ((bias & SA_NORMAL_OFFSET) != 0u) {
+    if ((bias & SA_LOCAL_NORMAL_OFFSET) != 0u) {
+        q = p + n * sa_local_normal_offset(m, p, n, l, r);
+    } else if ((bias & SA_NORMAL_OFFSET) != 0u) {
         q = sa_offset_point(m, p, n, r);
     }
     let pos = sa_project(m, q);
