@@ -99,6 +99,55 @@ fn warp_with_warp_args_reproduces_the_planned_error() {
     }
 }
 
+/// The clipmap candidate (its LOD bias chosen for the goal): `warp` with its `warp_args` builds
+/// as many levels, each of 16 384² texels (the plan's resolutions), and the error from warp's
+/// own M_x and M_z, max(M H / 16 384), is the plan's; its texels are whole pages of 128², no more
+/// than its levels hold; at a target it meets the target, within a budget it fits it.
+#[test]
+fn clipmap_candidate_reproduces_its_error() {
+    let goals: [&[&str]; 3] = [
+        &["--max-error", "1"],
+        &["--max-error", "2"],
+        &["--budget-texels", "33554432", "--max-maps", "16"],
+    ];
+    for scene in SCENES {
+        for goal in goals {
+            let p = plan_json(scene, goal);
+            let row = p["candidates"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .find(|r| r["scheme"].as_str().unwrap().starts_with("clipmap"))
+                .unwrap_or_else(|| panic!("{scene:?} {goal:?}: no clipmap row"));
+            let want = row["max_error_pixels"]
+                .as_f64()
+                .unwrap_or_else(|| panic!("{scene:?} {goal:?}: {row}"));
+            let args = strings(&row["warp_args"]);
+            assert!(
+                args.join(" ").contains("--partition clipmap --lod-bias"),
+                "{args:?}"
+            );
+            let maps = warp_maps(scene, &args);
+            assert_eq!(maps.len() as u64, row["maps"].as_u64().unwrap(), "{row}");
+            let worst = maps
+                .iter()
+                .map(|(mx, mz)| mx.max(*mz) * 1080.0 / 16384.0)
+                .fold(0.0, f64::max);
+            assert!(
+                (worst - want).abs() <= 1e-12 * want,
+                "{scene:?} {goal:?}: warp gives {worst}, plan {want}"
+            );
+            let texels = row["texels"].as_u64().unwrap();
+            assert_eq!(texels % (128 * 128), 0, "{row}");
+            assert!(texels <= maps.len() as u64 * 16384 * 16384, "{row}");
+            match goal[0] {
+                "--max-error" => assert!(want <= goal[1].parse::<f64>().unwrap(), "{row}"),
+                _ => assert!(texels <= goal[1].parse::<u64>().unwrap(), "{row}"),
+            }
+        }
+    }
+}
+
 /// Every candidate's `warp_args` build its maps: as many, and at the target their whole-texel
 /// cost ⌈M H/E⌉ per axis, by hand from warp's M_x and M_z, is the candidate's texels.
 #[test]
@@ -106,11 +155,15 @@ fn every_candidates_warp_args_build_its_maps() {
     let scene = SCENES[1];
     let p = plan_json(scene, &["--max-error", "1"]);
     let rows = p["candidates"].as_array().unwrap();
-    assert_eq!(rows.len(), 128);
+    assert_eq!(rows.len(), 129);
     for row in rows {
         let Some(texels) = row["texels"].as_u64() else {
             continue;
         };
+        if row["scheme"].as_str().unwrap().starts_with("clipmap") {
+            // Its texels are pages (clipmap_candidate_reproduces_its_error).
+            continue;
+        }
         let maps = warp_maps(scene, &strings(&row["warp_args"]));
         assert_eq!(maps.len() as u64, row["maps"].as_u64().unwrap(), "{row}");
         let hand: u64 = maps

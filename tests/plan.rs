@@ -8,7 +8,7 @@ use shadow_aliasing::plan::allocate::{allocate, MapError, Rounding};
 use shadow_aliasing::plan::candidates::{
     candidates, is_searched, CASCADE_RULES, FACE_RULES, MAX_CASCADES, SINGLE_RULES,
 };
-use shadow_aliasing::plan::{plan, plan_among, Goal, Plan};
+use shadow_aliasing::plan::{plan, plan_among, Candidate, Goal, Plan};
 use shadow_aliasing::Error;
 
 const H: u32 = 1080;
@@ -43,15 +43,42 @@ fn cheap(input: &FrameInput<'_>) -> Vec<FrameScheme<'static>> {
         .collect()
 }
 
-/// Each candidate's maps' (M_x, M_z) through the public frame API, or None where it fails.
+/// Each candidate's maps' (M_x, M_z) through the public frame API, or None where it fails or
+/// is the clipmap (whose bias the plan chooses: [`clipmap_row`]).
 fn measured(input: &FrameInput<'_>, list: &[FrameScheme<'static>]) -> Vec<Option<Vec<(f64, f64)>>> {
     list.iter()
         .map(|s| {
+            if matches!(s, FrameScheme::Clipmap(_)) {
+                return None;
+            }
             frame(&input.scheme(*s))
                 .ok()
                 .map(|f| f.maps().iter().map(|m| (m.max_mx, m.max_mz)).collect())
         })
         .collect()
+}
+
+/// The clipmap row's figures checked by hand: its scheme (the bias the plan chose) framed at
+/// 16 384 texels gives its maps and error max(M H / 16 384); its texels are whole pages of 128²
+/// and no more than its levels hold. `None` where the plan found no bias for the goal.
+fn clipmap_row(input: &FrameInput<'_>, row: &Candidate) -> Option<(u64, f64)> {
+    let FrameScheme::Clipmap(_) = row.scheme else {
+        return None;
+    };
+    let got = row.outcome.as_ref().ok()?;
+    let mut at = *input;
+    at.map_resolution = 16384;
+    let f = frame(&at.scheme(row.scheme)).unwrap();
+    let e = f
+        .maps()
+        .iter()
+        .map(|m| m.max_mx.max(m.max_mz) * f64::from(H) / 16384.0)
+        .fold(0.0, f64::max);
+    assert_eq!(got.maps, f.len());
+    assert!((got.max_error_pixels - e).abs() <= 1e-12 * e);
+    assert_eq!(got.texels % (128 * 128), 0);
+    assert!(got.texels <= f.len() as u64 * 16384 * 16384);
+    Some((got.texels, e))
 }
 
 /// Whole texels for the target `e` by hand: each axis ⌈M H / e⌉, the error of those.
@@ -79,6 +106,16 @@ fn target_choice_is_the_brute_force_fewest_texels() {
             let mut best: Option<(u64, f64, usize)> = None;
             for (j, m) in all.iter().enumerate() {
                 let row = &p.candidates[j];
+                if let Some((t, e)) = clipmap_row(&input, row) {
+                    assert!(e <= target, "scene {i} clipmap {e} > {target}");
+                    if best.is_none_or(|(bt, be, _)| (t, e) < (bt, be)) {
+                        best = Some((t, e, j));
+                    }
+                    continue;
+                }
+                if let FrameScheme::Clipmap(_) = row.scheme {
+                    continue;
+                }
                 assert_eq!(row.scheme, list[j]);
                 let Some(maps) = m else {
                     assert!(row.outcome.is_err(), "scene {i} {j}: the frame failed");
@@ -116,7 +153,12 @@ fn check_resolutions(p: &Plan) {
         worst = worst.max(e);
         texels += r.res_s * r.res_t;
     }
-    assert_eq!(texels, p.texels);
+    if let FrameScheme::Clipmap(_) = p.scheme() {
+        // Its texels are its pages' ([`clipmap_row`]), not its levels' whole squares.
+        assert!(p.texels <= texels && p.texels % (128 * 128) == 0);
+    } else {
+        assert_eq!(texels, p.texels);
+    }
     assert!((worst - p.max_error_pixels).abs() <= 1e-12 * worst);
 }
 
@@ -135,6 +177,15 @@ fn budget_choice_is_the_brute_force_least_error() {
             let p = plan_among(&input, goal, Rounding::PowerOfTwo, &list).unwrap();
             let mut best: Option<(f64, u64, usize)> = None;
             for (j, m) in all.iter().enumerate() {
+                if let Some((t, e)) = clipmap_row(&input, &p.candidates[j]) {
+                    assert!(
+                        t <= budget && p.candidates[j].outcome.as_ref().unwrap().maps <= max_maps
+                    );
+                    if best.is_none_or(|b| (e, t) < (b.0, b.1)) {
+                        best = Some((e, t, j));
+                    }
+                    continue;
+                }
                 let Some(maps) = m else { continue };
                 if maps.len() > max_maps {
                     let e = p.candidates[j].outcome.as_ref().unwrap_err();

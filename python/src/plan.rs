@@ -98,10 +98,10 @@ fn frame_kwargs<'py>(py: Python<'py>, s: &FrameScheme<'_>) -> PyResult<Bound<'py
 }
 
 /// A candidate's or the plan's scheme entries: its label, `sa.frame`'s keywords, `warp`'s flags.
-fn scheme_entries(d: &Bound<'_, PyDict>, s: &FrameScheme<'_>) -> PyResult<()> {
+fn scheme_entries(d: &Bound<'_, PyDict>, s: &FrameScheme<'_>, image_height: u32) -> PyResult<()> {
     d.set_item("scheme", label(s))?;
     d.set_item("frame_kwargs", frame_kwargs(d.py(), s)?)?;
-    d.set_item("warp_args", warp_args(s))?;
+    d.set_item("warp_args", warp_args(s, image_height))?;
     Ok(())
 }
 
@@ -207,13 +207,13 @@ pub fn plan<'py>(
     let p = py
         .detach(|| plan_frame(&input, goal, rounding))
         .map_err(|e| frame_err(e, false))?;
-    result(py, &p)
+    result(py, &p, image_height)
 }
 
 /// The plan as a dict.
-fn result<'py>(py: Python<'py>, p: &Plan) -> PyResult<Bound<'py, PyDict>> {
+fn result<'py>(py: Python<'py>, p: &Plan, image_height: u32) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
-    scheme_entries(&d, &p.scheme())?;
+    scheme_entries(&d, &p.scheme(), image_height)?;
     let res: Vec<i64> = p
         .resolutions
         .iter()
@@ -230,7 +230,7 @@ fn result<'py>(py: Python<'py>, p: &Plan) -> PyResult<Bound<'py, PyDict>> {
     let rows = PyList::empty(py);
     for c in &p.candidates {
         let r = PyDict::new(py);
-        scheme_entries(&r, &c.scheme)?;
+        scheme_entries(&r, &c.scheme, image_height)?;
         match &c.outcome {
             Ok(m) => {
                 r.set_item("maps", m.maps)?;

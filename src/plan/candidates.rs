@@ -11,13 +11,17 @@
 //!    [`ADAPTIVE_RATIO`], equal-error), unwarped and warped ([`CASCADE_RULES`]); one cascade is
 //!    the single map above;
 //! 3. stable cascades: k = 1, and k = 2 … [`MAX_CASCADES`] for each split scheme;
-//! 4. face partitions with each face rule and k = 1 … [`MAX_FACE_K`].
+//! 4. face partitions with each face rule and k = 1 … [`MAX_FACE_K`];
+//! 5. the clipmap ([`FrameScheme::Clipmap`], [`ClipmapOptions::UNREAL`]'s layout, levels of
+//!    [`CLIPMAP_RESOLUTION`] texels): its knob is the LOD bias, which the planner chooses for the
+//!    goal ([`clipmap_for_error`](super::clipmap::clipmap_for_error),
+//!    [`clipmap_for_pool`](super::clipmap::clipmap_for_pool)); its texels are its pages × the
+//!    page's texels.
 //!
-//! Adding a candidate (a clipmap, once the frame has one) is one entry in [`candidates`] and one
-//! arm in [`label`].
+//! Adding a candidate is one entry in [`candidates`] and one arm in [`label`].
 
 use crate::analytic::partition::SplitScheme;
-use crate::frame::{CascadeSplits, FrameInput, FrameScheme, MAX_FACE_K};
+use crate::frame::{CascadeSplits, ClipmapOptions, FrameInput, FrameScheme, MAX_FACE_K};
 use crate::maps::faces::FaceWarp;
 use crate::maps::{Falloff, TsmOptions, TsmSearch, WarpRule};
 use crate::scheme::ADAPTIVE_RATIO;
@@ -48,6 +52,9 @@ pub const MAX_CASCADES: usize = 8;
 
 /// The λ of the practical split scheme tried (the command line's default).
 pub const PRACTICAL_LAMBDA: f64 = 0.5;
+
+/// The clipmap candidate's levels' resolution (Unreal's 16k² virtual levels).
+pub const CLIPMAP_RESOLUTION: u32 = 16384;
 
 /// The face rules tried.
 pub const FACE_RULES: [FaceWarp; 3] = [FaceWarp::Uniform, FaceWarp::Psm, FaceWarp::Lispsm];
@@ -122,6 +129,7 @@ pub fn candidates(input: &FrameInput<'_>) -> Vec<FrameScheme<'static>> {
             c.push(FrameScheme::Faces { rule, k });
         }
     }
+    c.push(FrameScheme::Clipmap(ClipmapOptions::UNREAL));
     c
 }
 
@@ -208,7 +216,7 @@ pub fn label(s: &FrameScheme<'_>) -> String {
             format!("stable {name} k={k}")
         }
         FrameScheme::Faces { rule, k } => format!("faces {} k={k}", face_rule_name(*rule)),
-        FrameScheme::Clipmap(o) => format!("clipmap bias={}", o.lod_bias),
+        FrameScheme::Clipmap(o) => format!("clipmap bias={}", num(o.lod_bias)),
     }
 }
 
@@ -246,10 +254,11 @@ fn splits_args(s: &CascadeSplits<'_>) -> Option<Vec<String>> {
 }
 
 /// The command line's `warp` flags that build `s` (besides the camera, light and scene flags:
-/// `--warp`, `--partition`, `--k`, `--lambda`, `--ratio`, `--focus`, `--stable`); `None` for a
-/// scheme that `warp` cannot name. Numbers are written in the shortest form that reads back
-/// exactly.
-pub fn warp_args(s: &FrameScheme<'_>) -> Option<Vec<String>> {
+/// `--warp`, `--partition`, `--k`, `--lambda`, `--ratio`, `--focus`, `--stable`; for a clipmap
+/// its layout, `--virtual-resolution` [`CLIPMAP_RESOLUTION`] and `--image-height`
+/// `image_height`, which choose its levels); `None` for a scheme that `warp` cannot name.
+/// Numbers are written in the shortest form that reads back exactly.
+pub fn warp_args(s: &FrameScheme<'_>, image_height: u32) -> Option<Vec<String>> {
     let warp = |r: &str| vec!["--warp".to_string(), r.to_string()];
     Some(match s {
         FrameScheme::Single(WarpRule::Tsm { focus }) => {
@@ -283,6 +292,26 @@ pub fn warp_args(s: &FrameScheme<'_>) -> Option<Vec<String>> {
                 "faces".into(),
                 "--k".into(),
                 k.to_string(),
+            ]);
+            v
+        }
+        FrameScheme::Clipmap(o) => {
+            let mut v = warp("uniform");
+            v.extend([
+                "--partition".into(),
+                "clipmap".into(),
+                "--lod-bias".into(),
+                num(o.lod_bias),
+                "--levels".into(),
+                format!("{},{}", o.first_level, o.last_level),
+                "--level-unit".into(),
+                num(o.unit),
+                "--page-texels".into(),
+                o.page_texels.to_string(),
+                "--virtual-resolution".into(),
+                CLIPMAP_RESOLUTION.to_string(),
+                "--image-height".into(),
+                image_height.to_string(),
             ]);
             v
         }

@@ -13,6 +13,8 @@
 //!   that marks pages from its depth buffer asks for at most these.
 //! - **Pool**: the least LOD bias (the finest levels) whose pages fit a pool, by bisection on the
 //!   bias ([`clipmap_for_pool`]).
+//! - **Target**: the fewest pages whose measured error meets a target ([`clipmap_for_error`]),
+//!   the planner's clipmap candidate.
 //!
 //! docs/planning.md gives the measured figures.
 
@@ -244,14 +246,9 @@ pub fn clipmap_for_pool(
         lod_bias: b,
         ..*options
     };
-    // The least bias in effect: below it the levels' coverage fixes them.
-    let view = input.camera.view();
-    let lo_choice = LevelChoice::new(view, input.image_height, input.map_resolution, &with(-32.0))?;
-    let mut lo = lo_choice.bias;
-    // The largest bias whose levels reach the visible far depth: log₂ z_f + L ≤ last + 1.
-    let (_, zf) = visible(input);
-    let matched = lo_choice.offset - lo_choice.bias;
-    let hi = (f64::from(options.last_level) + 1.0 - zf.log2() - matched).min(32.0);
+    // The least bias in effect (below it the levels' coverage fixes them) and the largest whose
+    // levels reach the visible far depth: log₂ z_f + L ≤ last + 1.
+    let (mut lo, hi) = bias_range(input, options)?;
     let plan_at = |b: f64| plan_clipmap(input, &with(b));
     let at_hi = plan_at(hi)?;
     if at_hi.pages() > pool {
@@ -289,6 +286,112 @@ pub fn clipmap_for_pool(
         b += GRID;
     }
     Ok(best)
+}
+
+/// The bracket on the LOD bias of [`clipmap_for_error`] stops once this narrow (the pages
+/// change in steps of whole pages; 1/1024 of a bias step moves a level's boundary by 0.07 %).
+const ERROR_BIAS_TOLERANCE: f64 = 1.0 / 1024.0;
+
+/// The least and largest LOD bias in effect for `options` and `input`: below the least the
+/// levels' coverage fixes them ([`LevelChoice::bias`]); above the largest `last_level` no longer
+/// reaches the visible far depth.
+fn bias_range(input: &FrameInput<'_>, options: &ClipmapOptions) -> Result<(f64, f64)> {
+    let finest = ClipmapOptions {
+        lod_bias: -32.0,
+        ..*options
+    };
+    let c = LevelChoice::new(
+        input.camera.view(),
+        input.image_height,
+        input.map_resolution,
+        &finest,
+    )?;
+    let (_, zf) = visible(input);
+    let matched = c.offset - c.bias;
+    let hi = (f64::from(options.last_level) + 1.0 - zf.log2() - matched).min(32.0);
+    Ok((c.bias, hi.max(c.bias)))
+}
+
+/// The clipmap with the fewest pages whose error measured over its levels' focus bodies
+/// ([`ClipmapPlan::max_error_pixels`]) is at most `max_error` pixels, `options.lod_bias` ignored:
+/// the LOD bias is the knob. The search starts from the closed form (resolution-matched levels
+/// bound the error by 2^b, so b = log₂ max_error), then narrows the bracket between a bias that
+/// meets the target and one that does not by bisection to 1/1024; every bias tried is measured,
+/// and the answer is the one of those meeting the target with the fewest pages (ties: the least
+/// error). The error grows with the bias but not strictly (clamped levels, B's extent), so a
+/// bias above the answer may meet it too; none tried does with fewer pages.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming `max_error` when it is not a positive number or the finest
+/// bias in effect does not meet it (the message gives that bias's error), or as
+/// [`plan_clipmap`].
+pub fn clipmap_for_error(
+    input: &FrameInput<'_>,
+    options: &ClipmapOptions,
+    max_error: f64,
+) -> Result<ClipmapPlan> {
+    if !(max_error.is_finite() && max_error > 0.0) {
+        return Err(Error::invalid(
+            "max_error",
+            format!("must be a finite, positive number of pixels (got {max_error})"),
+        ));
+    }
+    let (lo, hi) = bias_range(input, options)?;
+    let plan_at = |b: f64| {
+        plan_clipmap(
+            input,
+            &ClipmapOptions {
+                lod_bias: b,
+                ..*options
+            },
+        )
+    };
+    let mut best: Option<ClipmapPlan> = None;
+    let mut keep = |p: ClipmapPlan| {
+        let fits = p.max_error_pixels() <= max_error;
+        if fits
+            && best.map_or(true, |b| {
+                (p.pages(), p.max_error_pixels()) < (b.pages(), b.max_error_pixels())
+            })
+        {
+            best = Some(p);
+        }
+        fits
+    };
+    let finest = plan_at(lo)?;
+    if !keep(finest) {
+        return Err(Error::invalid(
+            "max_error",
+            format!(
+                "of {} px cannot be met by the clipmap: at its finest LOD bias in effect, {}, \
+                 its measured error is {} px; allow a larger error or a larger resolution",
+                fmt_num(max_error),
+                fmt_num(lo),
+                fmt_num(finest.max_error_pixels())
+            ),
+        ));
+    }
+    // ok: a bias that meets the target; bad: one that does not (or the largest, untried).
+    let (mut ok, mut bad) = (lo, hi);
+    let guess = max_error.log2().clamp(lo, hi);
+    if keep(plan_at(hi)?) {
+        ok = hi;
+    } else if guess > lo && guess < hi {
+        if keep(plan_at(guess)?) {
+            ok = guess;
+        } else {
+            bad = guess;
+        }
+    }
+    while bad - ok > ERROR_BIAS_TOLERANCE {
+        let mid = 0.5 * (ok + bad);
+        if keep(plan_at(mid)?) {
+            ok = mid;
+        } else {
+            bad = mid;
+        }
+    }
+    best.ok_or_else(|| Error::Degenerate("the clipmap search kept no plan".into()))
 }
 
 /// Narrows `[lo, ok]` (`lo` too fine for `pool`, `ok` fitting with the plan `best`) to

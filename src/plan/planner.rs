@@ -18,9 +18,10 @@
 //! measured cost is in docs/planning.md.
 
 use super::allocate::{allocate, allocate_for_error, MapError, MapResolution, Rounding};
-use super::candidates::candidates;
+use super::candidates::{candidates, CLIPMAP_RESOLUTION};
+use super::clipmap::{clipmap_for_error, clipmap_for_pool};
 use crate::error::{Error, Result};
-use crate::frame::{frame_into, Frame, FrameInput, FrameMap, FrameScheme};
+use crate::frame::{frame_into, ClipmapOptions, Frame, FrameInput, FrameMap, FrameScheme};
 use crate::maps::atlas::MAX_ATLAS_ENTRIES;
 
 /// What the plan is asked for.
@@ -154,18 +155,23 @@ pub fn plan_among(
     let mut best: Option<(usize, Box<Frame>, Vec<MapResolution>)> = None;
     let mut best_key = (f64::INFINITY, f64::INFINITY);
     for (i, scheme) in candidates.iter().enumerate() {
-        let one = input.scheme(*scheme).measure(true);
-        if let Err(e) = frame_into(&one, &mut cur) {
-            if i == 0 {
-                return Err(e);
+        let (scheme, sized) = match scheme {
+            FrameScheme::Clipmap(opts) => clipmap(input, opts, goal, &mut cur),
+            _ => {
+                let one = input.scheme(*scheme).measure(true);
+                if let Err(e) = frame_into(&one, &mut cur) {
+                    if i == 0 {
+                        return Err(e);
+                    }
+                    rows.push(Candidate {
+                        scheme: *scheme,
+                        outcome: Err(e),
+                    });
+                    continue;
+                }
+                (*scheme, size(&cur, goal, rounding, input.image_height))
             }
-            rows.push(Candidate {
-                scheme: *scheme,
-                outcome: Err(e),
-            });
-            continue;
-        }
-        let sized = size(&cur, goal, rounding, input.image_height);
+        };
         let outcome = sized.as_ref().map(|(m, _)| *m).map_err(Clone::clone);
         if let Ok((m, res)) = sized {
             // Fewest texels then least error for a target; least error then fewest texels for
@@ -181,10 +187,7 @@ pub fn plan_among(
                 best = Some((i, taken, res));
             }
         }
-        rows.push(Candidate {
-            scheme: *scheme,
-            outcome,
-        });
+        rows.push(Candidate { scheme, outcome });
     }
     let Some((chosen, frame, resolutions)) = best else {
         return Err(unmet(goal, &rows));
@@ -249,6 +252,67 @@ fn least_texels(reason: &str) -> Option<u64> {
     reason
         .split_whitespace()
         .find_map(|w| w.parse::<u64>().ok())
+}
+
+/// The clipmap candidate `opts` for the goal, built into `out`: the LOD bias with the fewest
+/// pages that meets a target ([`clipmap_for_error`]), or the least within a budget of pages
+/// ([`clipmap_for_pool`], the budget's texels over the page's), at most `max_maps` levels. Its
+/// levels are [`CLIPMAP_RESOLUTION`] texels a side (their error measured at that resolution);
+/// its texels are its pages × the page's texels. Returns the scheme with the bias chosen.
+fn clipmap(
+    input: &FrameInput<'_>,
+    opts: &ClipmapOptions,
+    goal: Goal,
+    out: &mut Frame,
+) -> (FrameScheme<'static>, Result<(Measured, Vec<MapResolution>)>) {
+    let mut input = *input;
+    input.map_resolution = CLIPMAP_RESOLUTION;
+    let page = u64::from(opts.page_texels).pow(2);
+    let planned = match goal {
+        Goal::MaxError(e) => clipmap_for_error(&input, opts, e),
+        Goal::Budget { texels, .. } => clipmap_for_pool(&input, opts, texels / page),
+    };
+    let p = match planned {
+        Ok(p) => p,
+        Err(e) => return (FrameScheme::Clipmap(*opts), Err(e)),
+    };
+    let chosen = FrameScheme::Clipmap(ClipmapOptions {
+        lod_bias: p.choice.options.lod_bias,
+        ..*opts
+    });
+    if let Err(e) = frame_into(&input.scheme(chosen).measure(true), out) {
+        return (chosen, Err(e));
+    }
+    let h = f64::from(input.image_height);
+    let r = f64::from(CLIPMAP_RESOLUTION);
+    let res: Vec<MapResolution> = out
+        .maps()
+        .iter()
+        .map(|m| MapResolution {
+            res_s: u64::from(CLIPMAP_RESOLUTION),
+            res_t: u64::from(CLIPMAP_RESOLUTION),
+            error_pixels: (m.max_mx * h / r).max(m.max_mz * h / r),
+        })
+        .collect();
+    if let Goal::Budget { max_maps, .. } = goal {
+        if res.len() > max_maps {
+            let e = Error::invalid(
+                "max_maps",
+                format!(
+                    "is {max_maps}, and this clipmap has {} levels: allow more maps",
+                    res.len()
+                ),
+            );
+            return (chosen, Err(e));
+        }
+    }
+    let m = Measured {
+        maps: res.len(),
+        texels: p.pages() * page,
+        max_error_pixels: res.iter().map(|r| r.error_pixels).fold(0.0, f64::max),
+        storage_factor: out.storage_factor().unwrap_or(0.0),
+    };
+    (chosen, Ok((m, res)))
 }
 
 /// A built frame's figures and resolutions for the goal.

@@ -70,11 +70,15 @@ pub fn plan(a: &PlanArgs) -> Result<String, Error> {
         } => Error::invalid("light_dir", reason),
         e => e,
     })?;
-    Ok(if a.json { json(&p) } else { text(&p, goal) })
+    Ok(if a.json {
+        json(&p, h)
+    } else {
+        text(&p, goal, h)
+    })
 }
 
 /// `plan --json`.
-fn json(p: &Plan) -> String {
+fn json(p: &Plan, h: u32) -> String {
     let resolutions: Vec<Value> = p
         .resolutions
         .iter()
@@ -86,7 +90,7 @@ fn json(p: &Plan) -> String {
         .map(|c| {
             let mut v = json!({
                 "scheme": label(&c.scheme),
-                "warp_args": warp_args(&c.scheme),
+                "warp_args": warp_args(&c.scheme, h),
             });
             match &c.outcome {
                 Ok(m) => {
@@ -102,7 +106,7 @@ fn json(p: &Plan) -> String {
         .collect();
     let out = json!({
         "scheme": label(&p.scheme()),
-        "warp_args": warp_args(&p.scheme()),
+        "warp_args": warp_args(&p.scheme(), h),
         "focus": p.frame.focus().name(),
         "resolutions": resolutions,
         "max_error_pixels": p.max_error_pixels,
@@ -115,7 +119,7 @@ fn json(p: &Plan) -> String {
 }
 
 /// `plan` for people: the choice, its maps, and the table.
-fn text(p: &Plan, goal: Goal) -> String {
+fn text(p: &Plan, goal: Goal, h: u32) -> String {
     let mut s = String::new();
     let asked = match goal {
         Goal::MaxError(e) => format!("the fewest texels with at most {} px per texel", sig(e)),
@@ -132,7 +136,7 @@ fn text(p: &Plan, goal: Goal) -> String {
         sig(p.max_error_pixels),
         p.frame.focus().name()
     );
-    if let Some(w) = warp_args(&p.scheme()) {
+    if let Some(w) = warp_args(&p.scheme(), h) {
         let _ = writeln!(s, "warp flags: {}", w.join(" "));
     }
     for (i, r) in p.resolutions.iter().enumerate() {
