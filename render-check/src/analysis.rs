@@ -458,8 +458,6 @@ pub fn analyse(
     let (mut max_r, mut max_p) = (0.0f64, 0.0f64);
     // Per map: the rendered maxima of m_x, m_z.
     let mut rendered_m = vec![(0.0f64, 0.0f64); nmaps];
-    // The pixels whose rendered perspective error entered `rendered_m`.
-    let mut measured_px = vec![false; n];
     // Lloyd's overhead case.
     let lloyd = lloyd_applies(view, built, scheme);
     let mut lloyd_diff = 0.0f64;
@@ -565,7 +563,6 @@ pub fn analyse(
             if let Some((mx, mz)) = perspective_error(view, width, height, jr, q.p, q.n) {
                 let m = &mut rendered_m[q.part];
                 *m = (m.0.max(mx), m.1.max(mz));
-                measured_px[i] = true;
                 if let (Some(l), 1) = (&lloyd, out.id[i]) {
                     let d = l.pixel_diff(q.part, -q.p.z, mx, mz, width, height, res);
                     if debug && d > 0.005 {
@@ -587,13 +584,7 @@ pub fn analyse(
         return Err("no pixel could be compared (empty frame?)".into());
     }
     rels.sort_by(f64::total_cmp);
-    let (ratio, worst) = frame_ratios(
-        (&px, &measured_px),
-        view,
-        built,
-        &rendered_m,
-        (width, height, res),
-    );
+    let (ratio, worst) = frame_ratios(&px, view, built, &rendered_m, (width, height, res));
     if let Some(l) = &lloyd {
         lloyd_diff = lloyd_diff.max(l.maxima_diff(&ground_m, width, height, res));
     }
@@ -633,7 +624,7 @@ pub fn analyse(
 /// The frame's reported maxima against the rendered ones: the largest rendered/reported ratio
 /// over maps and over x and z, and the smallest where the body's worst point is visible.
 fn frame_ratios(
-    px: (&[Pixel], &[bool]),
+    px: &[Pixel],
     view: &View,
     built: &Built,
     rendered_m: &[(f64, f64)],
@@ -658,6 +649,11 @@ fn frame_ratios(
                 vertex_max(&map.built, view.light_eye, tan, &[v]).map(|e| (v, e.max_mx, e.max_mz))
             })
             .collect();
+        if got == (0.0, 0.0) {
+            // No rendered error measured in this map (a clipmap's last level can be a sliver at
+            // the horizon, no pixel of it with two neighbours in it): nothing to compare.
+            continue;
+        }
         for (axis, rep, got) in [(0, reported.0, got.0), (1, reported.1, got.1)] {
             let top = per
                 .iter()
@@ -677,12 +673,10 @@ fn frame_ratios(
 }
 
 /// Whether the eye-space point `v` is (within [`VISIBLE_PIXELS`] pixel widths) the surface point
-/// of a visible pixel looked up in map `map` whose rendered perspective error was measured
-/// (`measured`): where the body's worst point shows only on pixels of another map, or on none
-/// measured (a clipmap's last level, a sliver at the horizon), the map's rendered maximum says
-/// nothing about it.
+/// of a visible pixel looked up in map `map` (where it shows only on pixels of another map, the
+/// map's rendered maximum says nothing about it).
 fn visible_point(
-    (px, measured): (&[Pixel], &[bool]),
+    px: &[Pixel],
     view: &View,
     (width, height): (u32, u32),
     v: DVec3,
@@ -703,9 +697,8 @@ fn visible_point(
             if x < 0 || y < 0 || x >= width as isize || y >= height as isize {
                 continue;
             }
-            let j = y as usize * width as usize + x as usize;
-            let q = px[j];
-            if measured[j] && q.part == map && (q.p - v).length() <= reach {
+            let q = px[y as usize * width as usize + x as usize];
+            if q.class != Class::Sky && q.part == map && (q.p - v).length() <= reach {
                 return true;
             }
         }
