@@ -72,30 +72,21 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         ),
         Axis::log10("warp parameter n′ (eye-space units, n = 1)", 1.0, 1e4),
     );
+    // Short legend labels, so that the legend fits above the curves' common tail (γ > 35°).
     c.legend = SeriesLabelPosition::UpperRight;
-    c.series.push(Series::line(
-        "generalised n′, Barroso fall-off r(γ) (Eq 16, 18)",
-        barroso,
-        PALETTE[0],
-    ));
-    c.series.push(Series::line(
-        "generalised n′, Zhang fall-off r(γ) (Eq 16, 17)",
-        zhang,
-        PALETTE[1],
-    ));
+    // The paper's curve, bold.
+    let mut paper = Series::line("the paper: Barroso r(γ), Eq 16, 18", barroso, PALETTE[0]);
+    paper.width = 4;
+    c.series.push(paper);
     c.series
-        .push(Series::line("LiSPSM: n′ = (n + √(fn))/sin γ", lispsm, PALETTE[2]).dashed());
-    c.series.push(
-        Series::line(
-            "n′ minimising M_z over the 3D frustum (this crate)",
-            minimax,
-            PALETTE[3],
-        )
-        .dashed(),
-    );
+        .push(Series::line("Zhang r(γ), Eq 16, 17", zhang, PALETTE[1]));
     c.series
-        .push(Series::line("n′₁(γ), Eq 13, φ_y ≤ γ ≤ 90°", n1, PALETTE[6]).dotted());
-    let mut s2 = Series::line("n′₂(γ), Eq 13, γ < φ_y (where > 0)", n2, PALETTE[7]).dotted();
+        .push(Series::line("LiSPSM (n + √(fn))/sin γ", lispsm, PALETTE[2]).dashed());
+    c.series
+        .push(Series::line("least M_z over the frustum (crate)", minimax, PALETTE[3]).dashed());
+    c.series
+        .push(Series::line("n′₁, Eq 13, γ ≥ φ_y", n1, PALETTE[6]).dotted());
+    let mut s2 = Series::line("n′₂, Eq 13, γ < φ_y (> 0)", n2, PALETTE[7]).dotted();
     s2.width = 3;
     c.series.push(s2);
     let gl_deg = gl.to_degrees();
@@ -117,21 +108,22 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     phi_line.label = None;
     phi_line.width = 1;
     c.series.push(phi_line);
+    // Each angle labelled near the bottom, beside its line, with an arrow pointing at it.
     c.notes.push(Note {
-        at: (gl_deg + 0.8, 2.2),
-        text: format!("γ_{{lim}} = {gl_deg:.1}° (Eq 15) →"),
+        at: (gl_deg + 0.6, 2.6),
+        text: format!("← γ_{{lim}} = {gl_deg:.1}° (Eq 15)"),
         colour: PALETTE[6],
     });
     c.notes.push(Note {
-        at: (phi_deg - 9.0, 1.4),
-        text: format!("← φ_y = {phi_deg:.0}°"),
+        at: (phi_deg - 15.0, 1.55),
+        text: format!("φ_y = {phi_deg:.0}° →"),
         colour: grey,
     });
     Ok(Charts {
         size: (520, 560),
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![
-            "Barroso & Celes 2007, Fig. 7 (n = 1, f = 100, φ_y = π/6), from analytic::tilted::generalized_n_prime, n_prime_1, n_prime_2, gamma_lim;".into(),
+            "Barroso & Celes 2007, Fig. 7 (n = 1, f = 100, φ_y = π/6), from analytic::tilted::generalized_n_prime, n_prime_1, n_prime_2, gamma_lim; bold: the paper's curve (Barroso's fall-off), the others for comparison;".into(),
             "LiSPSM's 1/sin γ rule and the M_z-minimising n′ (WarpRule::MinimaxMz) from maps::n_prime_for. Logarithmic n′ axis: every rule tends to n′ = ∞ (no warp) as γ → 0. Each branch of Eq 13 is drawn only on its domain.".into(),
             "The M_z-minimising curve has corners near γ = φ_y: there the frustum corner nearest the warp's centre of projection switches between the near-bottom and the far-bottom one (the switch between Eq 13's branches), so the point where m_z is largest jumps and the minimising n′ follows another formula.".into(),
         ],
@@ -178,5 +170,21 @@ mod tests {
         assert!((start - 27.69).abs() < 0.01);
         assert!(!n2.is_empty());
         assert!(n2.iter().all(|&d| d > start && d < 30.0), "{n2:?}");
+    }
+
+    /// The paper's curve (Barroso's fall-off, Eq 16 with Eq 18) is the bold one (issue 25), and
+    /// each angle's label ends at its line with an arrow pointing at it: γ_lim's starts just
+    /// right of γ_lim = 30.5° with "←", φ_y's ends left of 30° with "→".
+    #[test]
+    fn the_papers_curve_is_bold_and_labels_point_at_their_lines() {
+        let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
+        let c = &fig.charts[0];
+        let bold = &c.series[0];
+        assert!(bold.label.as_deref().unwrap().starts_with("the paper"));
+        assert!(c.series[1..].iter().all(|s| s.width < bold.width));
+        let gl = c.notes.iter().find(|n| n.text.contains("lim")).unwrap();
+        assert!(gl.text.starts_with('←') && gl.at.0 > 30.5 && gl.at.0 < 32.0);
+        let phi = c.notes.iter().find(|n| n.text.contains("φ")).unwrap();
+        assert!(phi.text.ends_with('→') && phi.at.0 < 30.0);
     }
 }

@@ -2,7 +2,8 @@
 //! the closed-form figures (Fig 5, 6, 10, 12, 13). Fig 7 is in [`super::hemisphere`].
 
 use super::chart::{
-    build_chart, fmt_plain, frame, linspace, Axis, Charts, LineChart, Note, Series, FONT, PALETTE,
+    boxed_text, build_chart, fmt_plain, frame, linspace, Axis, Charts, LineChart, Note, Series,
+    PALETTE,
 };
 use super::{Fail, Figure};
 use crate::analytic::eta::{n_prime_from_eta, n_prime_lispsm};
@@ -11,6 +12,7 @@ use crate::analytic::partition::{scheme_storage_factor, shadow_map_count, Scheme
 use crate::{NPrime, Resolutions, ViewFrustum};
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// Fig 5: m_x and the distribution term of m_z along the frustum for several n′ (n = 1, f = 20).
 ///
@@ -341,14 +343,21 @@ pub(super) fn fig13() -> Result<Fig13, Fail> {
     }
     Ok(Fig13 {
         crossover: pts,
-        x: Axis::linear(
+        x: Axis::every(
             "number of shadow maps j = 4k + 1 (k z-partitions per face)",
             3.0,
             43.0,
+            5.0,
+            4.0,
         ),
         y: Axis::log10("depth ratio f/n", 1.0, 1e6),
     })
 }
+
+/// Fig 13's fills: dark blue where z-partitioning is lowest, light orange where face
+/// partitioning is, so that the two read apart in greyscale too.
+const ZP_FILL: RGBColor = RGBColor(62, 122, 178);
+const FP_FILL: RGBColor = RGBColor(246, 214, 170);
 
 impl Figure for Fig13 {
     fn size(&self) -> (u32, u32) {
@@ -373,14 +382,8 @@ impl Figure for Fig13 {
             };
             let mid = ry.clamp(y0, y1);
             chart.draw_series([
-                Rectangle::new(
-                    [(j - half, mid), (j + half, y1)],
-                    PALETTE[0].mix(0.35).filled(),
-                ),
-                Rectangle::new(
-                    [(j - half, y0), (j + half, mid)],
-                    PALETTE[1].mix(0.35).filled(),
-                ),
+                Rectangle::new([(j - half, mid), (j + half, y1)], ZP_FILL.filled()),
+                Rectangle::new([(j - half, y0), (j + half, mid)], FP_FILL.filled()),
             ])?;
             if ry <= y1 {
                 chart.draw_series(std::iter::once(Circle::new(
@@ -390,25 +393,22 @@ impl Figure for Fig13 {
                 )))?;
             }
         }
-        let label = |text: &str, x: f64, y: f64, colour: &'static RGBColor| {
-            Text::new(
-                text.to_string(),
-                (x, y),
-                TextStyle::from((FONT, 17).into_font()).color(colour),
-            )
-        };
-        chart.draw_series(std::iter::once(label(
-            "ZP / ZP+W lowest (high depth range, few maps)",
-            4.0,
-            y0 + 0.95 * (y1 - y0),
-            &PALETTE[0],
-        )))?;
-        chart.draw_series(std::iter::once(label(
-            "FP+ZP+W lowest",
-            30.0,
-            y0 + 0.1 * (y1 - y0),
-            &PALETTE[1],
-        )))?;
+        boxed_text(
+            &mut chart,
+            (4.0, y0 + 0.97 * (y1 - y0)),
+            "dark: ZP / ZP+W lowest (high depth range, few maps)",
+            Pos::new(HPos::Left, VPos::Top),
+            15,
+            BLACK,
+        )?;
+        boxed_text(
+            &mut chart,
+            (42.0, y0 + 0.04 * (y1 - y0)),
+            "light: FP+ZP+W lowest",
+            Pos::new(HPos::Right, VPos::Bottom),
+            15,
+            BLACK,
+        )?;
         Ok(())
     }
 }

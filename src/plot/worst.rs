@@ -13,7 +13,7 @@ use crate::maps::WarpRule;
 use crate::scheme::sweep::{sweep, SweepGrid};
 use crate::scheme::Partition;
 use crate::ViewFrustum;
-use plotters::prelude::SeriesLabelPosition;
+use plotters::prelude::{RGBColor, SeriesLabelPosition};
 
 /// Elevation rows and azimuth columns of each sweep (every 6° and 7.5°).
 pub(super) const ELEVATIONS: usize = 16;
@@ -60,18 +60,34 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
             (a.min(p.1), b.max(p.1))
         });
         extremes.push(format!("{name} {} to {}", fmt_plain(lo), fmt_plain(hi)));
-        abs.series.push(
-            Series::line(format!("{name}, worst case (measured)"), worst, PALETTE[c])
-                .with_markers(),
-        );
+        // Behind, ZP+W equals ZP (drawn over it) and FP+ZP+W's worst case is its value
+        // behind: one legend entry each for what shows.
+        let (worst_label, behind_label) = match scheme {
+            Scheme::Zp => (format!("{name}, worst case (measured)"), None),
+            Scheme::ZpW => (
+                format!("{name}, worst case (measured)"),
+                Some("ZP and ZP+W, behind (Eq 20)".to_string()),
+            ),
+            _ => (format!("{name}, worst case = behind (Eq 21)"), None),
+        };
         abs.series
-            .push(Series::line(format!("{name}, behind (Eq 20, 21)"), behind, PALETTE[c]).dashed());
+            .push(Series::line(worst_label, worst, PALETTE[c]).with_markers());
+        let mut b = Series::line(String::new(), behind, PALETTE[c]).dashed();
+        b.label = behind_label;
+        if scheme == Scheme::Zp {
+            // Under ZP+W's equal curve: wider, so that it shows at its edges.
+            b.width = 5;
+        }
+        abs.series.push(b);
         ratio
             .series
             .push(Series::line(name.to_string(), r, PALETTE[c]).with_markers());
     }
-    for (v, label) in [(2.0, "the paper's 2–3×"), (3.0, "")] {
-        let mut s = Series::line(label, vec![(1.0, v), (8.0, v)], PALETTE[6]).dotted();
+    ratio.bands.push((2.0, 3.0, RGBColor(225, 225, 225)));
+    for (v, label) in [(2.0, "the paper's 2–3× (shaded)"), (3.0, "")] {
+        let mut s = Series::line(label, vec![(1.0, v), (8.0, v)], PALETTE[6])
+            .dotted()
+            .reference();
         if label.is_empty() {
             s.label = None;
         }
@@ -84,7 +100,7 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
         caption: vec![
             "Lloyd et al. 2006, §5.3 (no figure in the paper; its claim: the worst S̄ over all light directions is within 2–3 times the light-behind value). f/n = 1000, θ = 30°.".into(),
             format!(
-                "Worst case measured by measure::sweep on each scheme's own matrices (ZP: unwarped log partitions; ZP+W: LiSPSM-warped; FP+ZP+W: faces, warped) over {ELEVATIONS} × {AZIMUTHS} light directions; behind from Eq 20, 21. Ratios: {}; a ratio outside the dotted band (2 and 3) disagrees with the paper's claim.",
+                "Worst case measured by measure::sweep on each scheme's own matrices (ZP: unwarped log partitions; ZP+W: LiSPSM-warped; FP+ZP+W: faces, warped) over {ELEVATIONS} × {AZIMUTHS} light directions; behind from Eq 20, 21. Ratios: {}; a ratio outside the shaded band (2 to 3) disagrees with the paper's claim. Behind, ZP+W equals ZP (one dashed curve, ZP's wider under it) and FP+ZP+W's worst case is its value behind (one curve).",
                 extremes.join(", ")
             ),
         ],
@@ -119,5 +135,31 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// No legend entry for a hidden line (issue 25): two labelled series of a chart never have
+    /// the same points (behind, ZP+W equals ZP, and FP+ZP+W's worst case is its value behind, so
+    /// each of those pairs has one entry), and the paper's band 2–3 is shaded.
+    #[test]
+    fn labelled_lines_are_distinct_and_the_band_is_shaded() {
+        let fig = worst_case()
+            .map_err(|e| e.named("lloyd2006-worst-case"))
+            .unwrap();
+        for chart in &fig.charts {
+            let labelled: Vec<_> = chart.series.iter().filter(|s| s.label.is_some()).collect();
+            for (i, a) in labelled.iter().enumerate() {
+                for b in &labelled[..i] {
+                    let same = a.points.len() == b.points.len()
+                        && a.points
+                            .iter()
+                            .zip(&b.points)
+                            .all(|(p, q)| p.0 == q.0 && (p.1 - q.1).abs() <= 1e-9 * p.1.abs());
+                    assert!(!same, "{:?} hides {:?}", a.label, b.label);
+                }
+            }
+        }
+        let band = &fig.charts[1].bands;
+        assert_eq!(band.len(), 1);
+        assert_eq!((band[0].0, band[0].1), (2.0, 3.0));
     }
 }

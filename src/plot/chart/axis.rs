@@ -66,6 +66,9 @@ pub(crate) enum Scale {
     Linear,
     /// Linear, for a count: labelled and grid ticks only at whole numbers.
     Integer,
+    /// Linear, labelled and grid ticks only at `first + i · step` (a count defined only there,
+    /// such as 4k + 1 maps).
+    Every { first: f64, step: f64 },
     /// Position proportional to log_b of the value (b > 1).
     Log(f64),
 }
@@ -100,6 +103,16 @@ impl Axis {
         }
     }
 
+    /// A linear axis over `[min, max]` with ticks and grid lines only at `first + i · step`.
+    pub fn every(label: impl Into<String>, min: f64, max: f64, first: f64, step: f64) -> Self {
+        Self {
+            label: label.into(),
+            min,
+            max,
+            scale: Scale::Every { first, step },
+        }
+    }
+
     /// A base-10 logarithmic axis over `[min, max]`, `0 < min < max`.
     pub fn log10(label: impl Into<String>, min: f64, max: f64) -> Self {
         Self {
@@ -128,7 +141,7 @@ impl Axis {
             return None;
         }
         match self.scale {
-            Scale::Linear | Scale::Integer => Some(v),
+            Scale::Linear | Scale::Integer | Scale::Every { .. } => Some(v),
             Scale::Log(b) => (v > 0.0).then(|| v.ln() / b.ln()),
         }
     }
@@ -136,7 +149,7 @@ impl Axis {
     /// Axis space → data value.
     pub fn to_data(&self, a: f64) -> f64 {
         match self.scale {
-            Scale::Linear | Scale::Integer => a,
+            Scale::Linear | Scale::Integer | Scale::Every { .. } => a,
             Scale::Log(b) => b.powf(a),
         }
     }
@@ -154,6 +167,13 @@ impl Axis {
         let eps = 1e-9 * (hi - lo).abs().max(1e-300);
         let inside = |v: f64| v >= lo - eps && v <= hi + eps;
         match self.scale {
+            Scale::Every { first, step } => {
+                let ticks: Vec<f64> = multiples(lo - first, hi - first, step, eps)
+                    .into_iter()
+                    .map(|v| v + first)
+                    .collect();
+                (ticks.clone(), ticks)
+            }
             Scale::Integer => {
                 let step = nice_step((hi - lo) / 8.0).max(1.0);
                 let bold = multiples(lo, hi, step, eps);
@@ -257,6 +277,7 @@ impl Axis {
 
     fn tick_text(&self, a: f64) -> String {
         match self.scale {
+            Scale::Every { step, .. } => fmt_linear(a, step),
             Scale::Linear | Scale::Integer => {
                 let (lo, hi) = self.range();
                 fmt_linear(a, nice_step((hi - lo) / 8.0))
@@ -533,6 +554,11 @@ mod tests {
             vec![0.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0]
         );
         assert_eq!(n.ticks().1.len(), 41);
+        // Lloyd 2006 Fig 13's 4k + 1 maps: ticks and grid at 5, 9, …, 41 only.
+        let j = Axis::every("maps", 3.0, 43.0, 5.0, 4.0);
+        let want: Vec<f64> = (1..=10).map(|k| f64::from(4 * k + 1)).collect();
+        assert_eq!(j.ticks(), (want.clone(), want));
+        assert_eq!(j.tick_label(13.0), "13");
     }
 
     #[test]

@@ -148,6 +148,8 @@ pub(crate) struct LineChart {
     pub series: Vec<Series>,
     pub legend: SeriesLabelPosition,
     pub notes: Vec<Note>,
+    /// Horizontal bands shaded behind the series: from, to (data units of y), colour.
+    pub bands: Vec<(f64, f64, RGBColor)>,
 }
 
 impl LineChart {
@@ -160,6 +162,7 @@ impl LineChart {
             series: Vec::new(),
             legend: SeriesLabelPosition::UpperRight,
             notes: Vec::new(),
+            bands: Vec::new(),
         }
     }
 }
@@ -264,6 +267,15 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
         cs.dedup();
         cs.len()
     };
+    for &(from, to, colour) in &c.bands {
+        if let (Some(a), Some(b)) = (c.y.to_axis(from), c.y.to_axis(to)) {
+            let (a, b) = (a.clamp(y0, y1), b.clamp(y0, y1));
+            chart.draw_series(std::iter::once(Rectangle::new(
+                [(x0, a), (x1, b)],
+                colour.filled(),
+            )))?;
+        }
+    }
     for (k, s) in c.series.iter().enumerate() {
         let pts: Vec<Option<(f64, f64)>> = s
             .points
