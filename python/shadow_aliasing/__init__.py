@@ -15,7 +15,7 @@ spelled ``lambda_``).
 Builders (4×4 float64 matrices, eye space → light clip space, ``clip = M @ (x, y, z, 1)``):
 ``warp``, ``n_prime_for``, ``cascades``, ``faces``, ``tsm``. World-space frame API (the renderer's path: a view matrix,
 scene boxes, every scheme; dict of arrays): ``frame``; the cheapest scheme for a target error or
-a texel budget: ``plan``. Measurement: ``frustum_max``,
+a texel budget: ``plan``; a clipmap's levels, pages and LOD bias: ``plan_clipmap``. Measurement: ``frustum_max``,
 ``point_error``; a captured frame's per-pixel error: ``error_image``. Hemisphere sweep: ``sweep`` (all cores; Ctrl-C interrupts it),
 ``sweep_angles``.
 """
@@ -41,6 +41,7 @@ from ._native import (
     n_prime_from_eta,
     n_prime_lispsm,
     plan,
+    plan_clipmap,
     point_error,
     scheme_storage_factor,
     storage_factor,
@@ -81,6 +82,7 @@ __all__ = [
     "n_prime_from_eta",
     "n_prime_lispsm",
     "plan",
+    "plan_clipmap",
     "point_error",
     "scheme_storage_factor",
     "storage_factor",

@@ -46,6 +46,7 @@ class FrameResult(TypedDict):
     slot: npt.NDArray[np.int64]
     map_focus: List[str]
     face: List[Optional[str]]
+    clipmap_level: List[Optional[int]]
     body: List[npt.NDArray[np.float64]]
     casters_volume: List[npt.NDArray[np.float64]]
     receivers_volume: List[npt.NDArray[np.float64]]
@@ -73,6 +74,7 @@ __all__ = [
     "n_prime_from_eta",
     "n_prime_lispsm",
     "plan",
+    "plan_clipmap",
     "point_error",
     "scheme_storage_factor",
     "storage_factor",
@@ -222,7 +224,7 @@ def frame(view: ArrayLike, near: float, far: float, half_fov: float, light_dir: 
           aspect: float = ..., receivers: Optional[ArrayLike] = ..., casters: Optional[ArrayLike] = ...,
           depth_range: Optional[ArrayLike] = ..., depth_clamp: bool = ..., measure: bool = ...,
           map_resolution: int = ..., image_height: int = ..., pcf_radius: float = ...,
-          scheme: Literal["single", "cascades", "stable", "tsm", "faces"] = ...,
+          scheme: Literal["single", "cascades", "stable", "tsm", "faces", "clipmap"] = ...,
           rule: Optional[str] = ..., k: Optional[int] = ...,
           partition: Optional[Literal["self_similar", "log", "uniform", "practical", "adaptive",
                                       "equal_error"]] = ...,
@@ -231,7 +233,9 @@ def frame(view: ArrayLike, near: float, far: float, half_fov: float, light_dir: 
           overlap: Optional[float] = ..., eta: Optional[float] = ..., focus: Optional[float] = ...,
           near_hint: Optional[float] = ..., far_hint: Optional[float] = ...,
           shadow_distance: Optional[float] = ..., xi: Optional[float] = ...,
-          iterative: Optional[int] = ..., centre: Literal["rule", "eye", "nearest_vertex"] = ...,
+          iterative: Optional[int] = ..., lod_bias: Optional[float] = ...,
+          levels: Optional[Tuple[int, int]] = ..., level_unit: Optional[float] = ...,
+          page_texels: Optional[int] = ..., centre: Literal["rule", "eye", "nearest_vertex"] = ...,
           clip_depth: ClipDepth = ...,
           dtype: DType = ...) -> FrameResult:
     """The shadow maps of one frame in world space, fitted to the scene (the crate's frame API)."""
@@ -244,6 +248,16 @@ def plan(view: ArrayLike, near: float, far: float, half_fov: float, light_dir: V
          depth_clamp: bool = ..., map_resolution: int = ...) -> dict[str, object]:
     """The cheapest scheme for a target error, or the least error for a texel budget: scheme,
     frame_kwargs, warp_args, resolutions (m, 2), max_error_pixels, texels, focus, candidates."""
+def plan_clipmap(view: ArrayLike, near: float, far: float, half_fov: float, light_dir: Vec3, *,
+                 image_height: int, aspect: float = ..., receivers: Optional[ArrayLike] = ...,
+                 casters: Optional[ArrayLike] = ..., depth_range: Optional[ArrayLike] = ...,
+                 depth_clamp: bool = ..., map_resolution: int = ...,
+                 lod_bias: Optional[float] = ..., levels: Optional[Tuple[int, int]] = ...,
+                 level_unit: Optional[float] = ..., page_texels: Optional[int] = ...,
+                 pool: Optional[int] = ..., max_error: Optional[float] = ...) -> dict[str, object]:
+    """A clipmap's levels for the scene: lod_bias, bias_in_effect, first_level, last_level,
+    pages, max_error_pixels, frame_kwargs, levels (level, depths, error_bound, texel,
+    max_error_pixels, pages)."""
 def sweep_angles(elevations: int, azimuths: int) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """The grid's elevations (both ends) and azimuths (2π excluded)."""
 def sweep(near: float, far: float, half_fov: float, rule: str = ...,

@@ -11,8 +11,8 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyList};
 use shadow_aliasing::frame::{
-    frame as build_frame, Aabb, Bias, Bound as SceneBound, Camera, CascadeSplits, FrameInput,
-    FrameScheme, WarpCentre,
+    frame as build_frame, Aabb, Bias, Bound as SceneBound, Camera, CascadeSplits, ClipmapOptions,
+    FrameInput, FrameScheme, WarpCentre,
 };
 use shadow_aliasing::maps::faces::FaceWarp;
 use shadow_aliasing::maps::{ClipDepth, TsmOptions, WarpRule};
@@ -179,6 +179,9 @@ pub(crate) fn frame_err(e: Error, bevy: bool) -> PyErr {
                 "first_far_bound" => "bevy[\"first_cascade_far_bound\"]".to_string(),
                 "planes" => "splits".to_string(),
                 "map_lines" => "iterative".to_string(),
+                // The clipmap's (FIRST, LAST) are one argument, `levels`; its `unit`, `level_unit`.
+                "first_level" | "last_level" => format!("levels ({name})"),
+                "unit" => "level_unit".to_string(),
                 n => n.to_string(),
             };
             PyValueError::new_err(format!("{py_name} {reason}"))
@@ -210,14 +213,16 @@ fn unused(name: &str, scheme: &str) -> PyErr {
 /// ``fractions``, or ``bevy`` {num_cascades, minimum_distance, maximum_distance,
 /// first_cascade_far_bound, overlap_proportion}; ``overlap``), "stable" (the same splits),
 /// "tsm" (``focus``, ``xi`` or ``iterative``), "faces" (``rule`` "uniform", "psm", "lispsm";
-/// ``k``). An argument the scheme does not use is refused.
+/// ``k``), "clipmap" (Unreal-style virtual shadow maps, levels of ``map_resolution`` texels
+/// chosen for ``image_height``: ``lod_bias`` −0.5, ``levels`` (6, 22), ``level_unit`` 0.01,
+/// ``page_texels`` 128 by default). An argument the scheme does not use is refused.
 ///
 /// Returns a dict, one entry per built map along the first axis: ``world_to_clip`` and
 /// ``eye_to_clip`` (m, 4, 4) in ``clip_depth``'s convention (float64, or float32 with
 /// ``dtype=numpy.float32``), ``n_prime``, ``texel_world``, ``max_mx``, ``max_mz``,
 /// ``storage_factor``, ``max_error_pixels``, ``normal_offset``, ``slope_scaled_depth``,
 /// ``constant_depth`` (m,), ``texel_extent``, ``depth``, ``split``, ``blend`` (m, 2), ``slot``,
-/// ``map_focus``, ``face``, ``body`` (eye-space vertices), ``casters_volume`` and
+/// ``map_focus``, ``face``, ``clipmap_level`` (None except for a clipmap), ``body`` (eye-space vertices), ``casters_volume`` and
 /// ``receivers_volume`` ((p, 4) world planes, inside where a x + b y + c z + d ≤ 0), and the
 /// frame's ``focus``, ``light`` and ``light_dir_eye``. The GIL is released while it is built.
 #[pyfunction]
@@ -226,8 +231,8 @@ fn unused(name: &str, scheme: &str) -> PyErr {
     image_height=2048, pcf_radius=0.0,
     scheme="single", rule=None, k=None, partition=None, splits=None, fractions=None, bevy=None,
     lambda_=None, overlap=None, eta=None, focus=None, near_hint=None, far_hint=None,
-    shadow_distance=None, xi=None, iterative=None, centre="rule", clip_depth="neg_one_to_one",
-    dtype=None))]
+    shadow_distance=None, xi=None, iterative=None, lod_bias=None, levels=None, level_unit=None,
+    page_texels=None, centre="rule", clip_depth="neg_one_to_one", dtype=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn frame<'py>(
     py: Python<'py>,
@@ -261,6 +266,10 @@ pub fn frame<'py>(
     #[pyo3(from_py_with = args::shadow_distance)] shadow_distance: Option<f64>,
     #[pyo3(from_py_with = args::xi)] xi: Option<f64>,
     #[pyo3(from_py_with = args::iterative)] iterative: Option<u32>,
+    lod_bias: Option<&Any<'py>>,
+    levels: Option<&Any<'py>>,
+    level_unit: Option<&Any<'py>>,
+    page_texels: Option<&Any<'py>>,
     #[pyo3(from_py_with = args::centre)] centre: &str,
     #[pyo3(from_py_with = args::clip_depth)] clip_depth: &str,
     dtype: Option<&Any<'py>>,
@@ -296,8 +305,9 @@ pub fn frame<'py>(
     let scheme = choice(
         "scheme",
         scheme,
-        &["single", "cascades", "stable", "tsm", "faces"],
+        &["single", "cascades", "stable", "tsm", "faces", "clipmap"],
     )?;
+    let clip = clipmap_options(lod_bias, levels, level_unit, page_texels)?;
     let eye_light = camera.world_to_eye().transform_vector3(light);
     let rp = RuleParams {
         eta,
@@ -399,6 +409,7 @@ pub fn frame<'py>(
         (far_hint.is_some(), "far_hint"),
         (shadow_distance.is_some(), "shadow_distance"),
     ];
+    let clip_args = [(clip.given, "lod_bias, levels, level_unit or page_texels")];
     let (k_arg, rule_arg, focus_arg) = (
         [(k.is_some(), "k")],
         [(rule_name.is_some(), "rule")],
@@ -406,13 +417,14 @@ pub fn frame<'py>(
     );
     let fs: FrameScheme<'_> = match scheme {
         "single" => {
-            for given in [&cascade_args[..], &tsm_args, &k_arg] {
+            for given in [&cascade_args[..], &tsm_args, &k_arg, &clip_args] {
                 refuse(scheme, given)?;
             }
             FrameScheme::Single(warp_rule(rule_name)?)
         }
         "cascades" => {
             refuse(scheme, &tsm_args)?;
+            refuse(scheme, &clip_args)?;
             let r = warp_rule(rule_name)?;
             FrameScheme::Cascades {
                 splits: cascade_splits()?,
@@ -420,13 +432,13 @@ pub fn frame<'py>(
             }
         }
         "stable" => {
-            for given in [&tsm_args[..], &rule_arg, &focus_arg, &hint_args] {
+            for given in [&tsm_args[..], &rule_arg, &focus_arg, &hint_args, &clip_args] {
                 refuse(scheme, given)?;
             }
             FrameScheme::Stable(cascade_splits()?)
         }
         "tsm" => {
-            for given in [&cascade_args[..], &k_arg, &rule_arg, &hint_args] {
+            for given in [&cascade_args[..], &k_arg, &rule_arg, &hint_args, &clip_args] {
                 refuse(scheme, given)?;
             }
             FrameScheme::Tsm(TsmOptions {
@@ -434,8 +446,26 @@ pub fn frame<'py>(
                 search: tsm_search(xi, iterative)?,
             })
         }
+        "clipmap" => {
+            for given in [&cascade_args[..], &tsm_args, &k_arg, &focus_arg, &hint_args] {
+                refuse(scheme, given)?;
+            }
+            if let Some(r) = rule_name.filter(|r| *r != "uniform") {
+                return Err(PyValueError::new_err(format!(
+                    "rule must be \"uniform\" for scheme \"clipmap\", whose levels are \
+                     camera-centred orthographic squares (got \"{r}\"): drop it"
+                )));
+            }
+            FrameScheme::Clipmap(clip.options)
+        }
         _ => {
-            for given in [&cascade_args[..], &tsm_args, &focus_arg, &hint_args] {
+            for given in [
+                &cascade_args[..],
+                &tsm_args,
+                &focus_arg,
+                &hint_args,
+                &clip_args,
+            ] {
                 refuse(scheme, given)?;
             }
             let rule = match choice(
@@ -471,6 +501,63 @@ pub fn frame<'py>(
         .detach(|| build_frame(&input))
         .map_err(|e| frame_err(e, bevy_given))?;
     result(py, &f, depth, f32_out, pcf_radius)
+}
+
+/// A clipmap's layout from the keywords (Unreal's defaults where `None`), and whether any was
+/// given.
+pub struct ClipArgs {
+    pub options: ClipmapOptions,
+    pub given: bool,
+}
+
+/// `lod_bias`, `levels` (FIRST, LAST), `level_unit`, `page_texels` over
+/// [`ClipmapOptions::UNREAL`]; each checked by name (the library checks their domains).
+pub fn clipmap_options<'py>(
+    lod_bias: Option<&Any<'py>>,
+    levels: Option<&Any<'py>>,
+    level_unit: Option<&Any<'py>>,
+    page_texels: Option<&Any<'py>>,
+) -> PyResult<ClipArgs> {
+    let some = |v: Option<&Any<'py>>| v.filter(|v| !v.is_none()).cloned();
+    let (lod_bias, levels, level_unit, page_texels) = (
+        some(lod_bias),
+        some(levels),
+        some(level_unit),
+        some(page_texels),
+    );
+    let given =
+        lod_bias.is_some() || levels.is_some() || level_unit.is_some() || page_texels.is_some();
+    let mut o = ClipmapOptions::UNREAL;
+    if let Some(v) = lod_bias {
+        o.lod_bias = args::real("lod_bias", &v)?;
+    }
+    if let Some(v) = level_unit {
+        o.unit = args::real("level_unit", &v)?;
+    }
+    if let Some(v) = page_texels {
+        o.page_texels =
+            u32::try_from(args::whole("page_texels", &v, u64::from(u32::MAX))?).unwrap_or(u32::MAX);
+    }
+    if let Some(v) = levels {
+        let pair: Vec<i64> = v.extract().map_err(|_| {
+            PyTypeError::new_err(format!(
+                "levels must be a pair of whole numbers (FIRST, LAST) (got {})",
+                args::kind(&v)
+            ))
+        })?;
+        match pair.as_slice() {
+            [f, l] if f.abs() <= 64 && l.abs() <= 64 => {
+                (o.first_level, o.last_level) = (*f as i32, *l as i32);
+            }
+            _ => {
+                return Err(PyValueError::new_err(format!(
+                    "levels must be (FIRST, LAST), two whole numbers in [-64, 64] (got {pair:?}; \
+                     Unreal (6, 22))"
+                )))
+            }
+        }
+    }
+    Ok(ClipArgs { options: o, given })
 }
 
 /// The frame as a dict of arrays.
@@ -585,6 +672,10 @@ fn result<'py>(
     d.set_item(
         "face",
         PyList::new(py, maps.iter().map(|(_, x)| x.face.map(|f| f.name())))?,
+    )?;
+    d.set_item(
+        "clipmap_level",
+        PyList::new(py, maps.iter().map(|(_, x)| x.clipmap_level))?,
     )?;
     let mut bodies = Vec::with_capacity(m);
     let mut casters = Vec::with_capacity(m);

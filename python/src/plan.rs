@@ -4,7 +4,7 @@
 use crate::args;
 use crate::builders::{from_rows, vec3};
 use crate::closed::choice;
-use crate::frame::{boxes, depth_clamp_arg, frame_err, pair};
+use crate::frame::{boxes, clipmap_options, depth_clamp_arg, frame_err, pair};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -12,7 +12,12 @@ use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::frame::{Bound as SceneBound, Camera, CascadeSplits, FrameInput, FrameScheme};
 use shadow_aliasing::maps::WarpRule;
 use shadow_aliasing::plan::allocate::Rounding;
-use shadow_aliasing::plan::candidates::{face_rule_name, label, rule_name, splits_name, warp_args};
+use shadow_aliasing::plan::candidates::{
+    face_rule_name, label, rule_name, splits_name, warp_args, CLIPMAP_RESOLUTION,
+};
+use shadow_aliasing::plan::clipmap::{
+    clipmap_for_error, clipmap_for_pool, plan_clipmap as plan_levels, ClipmapPlan,
+};
 use shadow_aliasing::plan::{plan as plan_frame, Goal, Plan};
 
 type Any<'py> = Bound<'py, PyAny>;
@@ -90,6 +95,14 @@ fn frame_kwargs<'py>(py: Python<'py>, s: &FrameScheme<'_>) -> PyResult<Bound<'py
             d.set_item("scheme", "faces")?;
             d.set_item("rule", face_rule_name(*rule))?;
             d.set_item("k", *k)?;
+        }
+        FrameScheme::Clipmap(o) => {
+            d.set_item("scheme", "clipmap")?;
+            d.set_item("lod_bias", o.lod_bias)?;
+            d.set_item("levels", (o.first_level, o.last_level))?;
+            d.set_item("level_unit", o.unit)?;
+            d.set_item("page_texels", o.page_texels)?;
+            d.set_item("map_resolution", CLIPMAP_RESOLUTION)?;
         }
         #[allow(unreachable_patterns)]
         _ => d.set_item("scheme", label(s))?,
@@ -243,5 +256,127 @@ fn result<'py>(py: Python<'py>, p: &Plan, image_height: u32) -> PyResult<Bound<'
         rows.append(r)?;
     }
     d.set_item("candidates", rows)?;
+    Ok(d)
+}
+
+/// A clipmap's levels for the scene (the crate's ``shadow_aliasing::plan::clipmap``): the first
+/// and last level the visible depths need, each level's depths, error bound, texel, measured
+/// error and pages, and the LOD bias, as given (``lod_bias``), or the least whose pages fit
+/// ``pool`` pages, or the one with the fewest pages whose measured error is at most
+/// ``max_error`` pixels (alternatives). The scene as ``sa.frame`` takes it; ``map_resolution``
+/// (default 16384) is the levels' texels a side; ``levels``, ``level_unit``, ``page_texels`` as
+/// ``sa.frame``'s clipmap.
+///
+/// Returns a dict: ``lod_bias`` (the bias asked for: the one to give ``sa.frame``),
+/// ``bias_in_effect``, ``first_level``, ``last_level``, ``pages``, ``max_error_pixels``,
+/// ``frame_kwargs`` (``sa.frame``'s keywords that build it) and ``levels``: a list of dicts
+/// ``level``, ``depths`` (a, b), ``error_bound`` (least, largest), ``texel``,
+/// ``max_error_pixels`` (None where its body is empty), ``pages``. The GIL is released.
+#[pyfunction]
+#[pyo3(signature = (view, near, far, half_fov, light_dir, *, image_height, aspect=1.0,
+    receivers=None, casters=None, depth_range=None, depth_clamp=false, map_resolution=16384,
+    lod_bias=None, levels=None, level_unit=None, page_texels=None, pool=None, max_error=None))]
+#[allow(clippy::too_many_arguments)]
+pub fn plan_clipmap<'py>(
+    py: Python<'py>,
+    view: &Any<'py>,
+    #[pyo3(from_py_with = args::near)] near: f64,
+    #[pyo3(from_py_with = args::far)] far: f64,
+    #[pyo3(from_py_with = args::half_fov)] half_fov: f64,
+    light_dir: &Any<'py>,
+    #[pyo3(from_py_with = args::image_height)] image_height: u32,
+    #[pyo3(from_py_with = args::aspect)] aspect: f64,
+    receivers: Option<&Any<'py>>,
+    casters: Option<&Any<'py>>,
+    depth_range: Option<&Any<'py>>,
+    #[pyo3(from_py_with = depth_clamp_arg)] depth_clamp: bool,
+    #[pyo3(from_py_with = args::map_resolution)] map_resolution: u32,
+    lod_bias: Option<&Any<'py>>,
+    levels: Option<&Any<'py>>,
+    level_unit: Option<&Any<'py>>,
+    page_texels: Option<&Any<'py>>,
+    pool: Option<&Any<'py>>,
+    max_error: Option<&Any<'py>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let view_m = from_rows(&crate::builders::values("view", view, &[4, 4])?);
+    let camera =
+        Camera::new(view_m, near, far, half_fov, aspect).map_err(|e| frame_err(e, false))?;
+    let light = vec3("light_dir", light_dir)?;
+    let receivers = boxes("receivers", receivers)?;
+    let casters = boxes("casters", casters)?;
+    let depth_range = pair("depth_range", depth_range)?;
+    let bias_given = lod_bias.is_some_and(|v| !v.is_none());
+    let opts = clipmap_options(lod_bias, levels, level_unit, page_texels)?.options;
+    let pool = pool
+        .filter(|v| !v.is_none())
+        .map(|v| args::whole("pool", v, u64::MAX))
+        .transpose()?;
+    let max_error = max_error
+        .filter(|v| !v.is_none())
+        .map(|v| args::real("max_error", v))
+        .transpose()?;
+    if usize::from(bias_given) + usize::from(pool.is_some()) + usize::from(max_error.is_some()) > 1
+    {
+        return Err(PyValueError::new_err(
+            "lod_bias, pool and max_error are alternatives (the bias given, or chosen for a \
+             page pool or a target error): give one",
+        ));
+    }
+    let mut input =
+        FrameInput::new(camera, light, map_resolution, image_height).depth_clamp(depth_clamp);
+    if let Some(b) = receivers.as_deref() {
+        input = input.receivers(SceneBound::Boxes(b));
+    }
+    if let Some(b) = casters.as_deref() {
+        input = input.casters(SceneBound::Boxes(b));
+    }
+    if let Some((a, b)) = depth_range {
+        input = input.depth_range(a, b);
+    }
+    let p = py
+        .detach(|| match (pool, max_error) {
+            (Some(n), _) => clipmap_for_pool(&input, &opts, n),
+            (_, Some(e)) => clipmap_for_error(&input, &opts, e),
+            _ => plan_levels(&input, &opts),
+        })
+        .map_err(|e| frame_err(e, false))?;
+    clipmap_result(py, &p, map_resolution)
+}
+
+/// A clipmap plan as a dict.
+fn clipmap_result<'py>(
+    py: Python<'py>,
+    p: &ClipmapPlan,
+    map_resolution: u32,
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    let o = p.choice.options;
+    let (first, last) = p.level_range();
+    d.set_item("lod_bias", o.lod_bias)?;
+    d.set_item("bias_in_effect", p.choice.bias)?;
+    d.set_item("first_level", first)?;
+    d.set_item("last_level", last)?;
+    d.set_item("pages", p.pages())?;
+    d.set_item("max_error_pixels", p.max_error_pixels())?;
+    let kw = PyDict::new(py);
+    kw.set_item("scheme", "clipmap")?;
+    kw.set_item("lod_bias", o.lod_bias)?;
+    kw.set_item("levels", (o.first_level, o.last_level))?;
+    kw.set_item("level_unit", o.unit)?;
+    kw.set_item("page_texels", o.page_texels)?;
+    kw.set_item("map_resolution", map_resolution)?;
+    d.set_item("frame_kwargs", kw)?;
+    let rows = PyList::empty(py);
+    for l in p.levels() {
+        let r = PyDict::new(py);
+        r.set_item("level", l.level)?;
+        r.set_item("depths", l.depths)?;
+        r.set_item("error_bound", l.error_bound)?;
+        r.set_item("texel", l.texel)?;
+        r.set_item("max_error_pixels", l.max_error_pixels)?;
+        r.set_item("pages", l.pages)?;
+        rows.append(r)?;
+    }
+    d.set_item("levels", rows)?;
     Ok(d)
 }

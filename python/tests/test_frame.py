@@ -69,6 +69,11 @@ CASES = [
      dict(scheme="faces", rule="lispsm", k=2, receivers=[GROUND])),
     (["--warp", "psm", "--partition", "faces", "--receivers", _box_flag(GROUND)],
      dict(scheme="faces", rule="psm", receivers=[GROUND])),
+    (["--warp", "uniform", "--lod-bias", "-1", "--partition", "clipmap", "--levels", "2,12",
+      "--level-unit", "0.1", "--page-texels", "64", "--virtual-resolution", "2048",
+      "--image-height", "2048", "--receivers", _box_flag(GROUND)],
+     dict(scheme="clipmap", lod_bias=-1.0, levels=(2, 12), level_unit=0.1, page_texels=64,
+          receivers=[GROUND])),
 ]
 
 
@@ -100,6 +105,7 @@ def test_agrees_with_the_command_line_bit_for_bit(flags, kwargs):
         assert tuple(got["split"][i]) == tuple(p["split"])
         assert tuple(got["blend"][i]) == tuple(p["blend"])
         assert got["face"][i] == p.get("face")
+        assert got["clipmap_level"][i] == p.get("clipmap_level")
         assert len(got["body"][i]) == p["body_vertices"]
         # The map resolution equals the image height: the error in pixels is max(M_x, M_z).
         assert got["max_error_pixels"][i] == max(p["max_mx"], p["max_mz"])
@@ -252,6 +258,15 @@ def test_out_of_view_receivers_give_no_map():
     (dict(dtype="float16"), "dtype"),
     (dict(pcf_radius=-1.0), "pcf_radius"),
     (dict(measure=1), "measure"),
+    (dict(scheme="clipmap", rule="lispsm"), "rule"),
+    (dict(scheme="clipmap", k=2), "k"),
+    (dict(lod_bias=-1.0), "lod_bias"),
+    (dict(scheme="clipmap", levels=(9,)), "levels"),
+    (dict(scheme="clipmap", levels="ab"), "levels"),
+    (dict(scheme="clipmap", levels=(6, 8)), "levels"),
+    (dict(scheme="clipmap", page_texels=100), "page_texels"),
+    (dict(scheme="clipmap", lod_bias=float("nan")), "lod_bias"),
+    (dict(scheme="clipmap", level_unit=0.0), "level_unit"),
 ])
 def test_bad_arguments_name_themselves(kwargs, name):
     args = dict(view=np.eye(4), **CAM, light_dir=LIGHT)

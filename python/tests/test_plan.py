@@ -39,7 +39,7 @@ def _by_hand(maps, target):
 
 def test_target_choice_is_the_brute_force_over_sa_frame():
     p = _plan(max_error=1.0)
-    assert len(p["candidates"]) == 128
+    assert len(p["candidates"]) == 129
     best = None
     for i, c in enumerate(p["candidates"]):
         try:
@@ -49,6 +49,15 @@ def test_target_choice_is_the_brute_force_over_sa_frame():
             assert "error" in c, c["scheme"]
             continue
         maps = list(zip(f["max_mx"], f["max_mz"]))
+        if c["frame_kwargs"]["scheme"] == "clipmap":
+            # Levels of 16384 texels, its LOD bias chosen for the target; texels are pages.
+            e = max(max(mx, mz) * H / 16384 for mx, mz in maps)
+            assert c["max_error_pixels"] == pytest.approx(e, rel=1e-12) and e <= 1.0
+            t = c["texels"]
+            assert t % (128 * 128) == 0 and c["maps"] == len(maps)
+            if best is None or (t, e) < best[:2]:
+                best = (t, e, i)
+            continue
         t, e = _by_hand(maps, 1.0)
         assert (c["texels"], c["maps"]) == (t, len(maps)), c["scheme"]
         assert c["max_error_pixels"] == pytest.approx(e, rel=1e-12)
@@ -71,7 +80,10 @@ def test_the_plans_scheme_rebuilt_by_sa_frame_gives_its_error():
         err = max(max(mx * H / rs, mz * H / rt)
                   for mx, mz, (rs, rt) in zip(f["max_mx"], f["max_mz"], res))
         assert err == pytest.approx(p["max_error_pixels"], rel=1e-12)
-        assert int(np.prod(res, axis=1).sum()) == p["texels"]
+        if p["frame_kwargs"]["scheme"] == "clipmap":
+            assert p["texels"] % (128 * 128) == 0  # pages, not whole levels
+        else:
+            assert int(np.prod(res, axis=1).sum()) == p["texels"]
         if "rounding" in kw:
             assert all(v & (v - 1) == 0 for v in res.ravel())
 
@@ -128,3 +140,56 @@ def test_bad_arguments_are_named(kw, exc, name):
 def test_bad_light_is_named():
     with pytest.raises(ValueError, match="light_dir"):
         sa.plan(VIEW, 1.0, 400.0, 0.5236, [0.0, 0.0, 0.0], image_height=H, max_error=1.0)
+
+
+def _clipmap(**kw):
+    args = dict(SCENE, image_height=H)
+    args.update(kw)
+    return sa.plan_clipmap(VIEW, CAM["near"], CAM["far"], CAM["half_fov"], LIGHT, **args)
+
+
+def test_plan_clipmap_levels_by_hand_and_rebuilt_by_sa_frame():
+    """Each level's error bound is t H / (2 z tan θ) at its depths' ends with t = 2 · 2^(i+2)
+    unit / R (level i's square has half-width 2^(i+2) units, twice the radius it covers), by
+    hand; sa.frame with its frame_kwargs builds
+    the same levels with the same largest error."""
+    t = math.tan(CAM["half_fov"])
+    for kw in [dict(), dict(lod_bias=-1.5), dict(pool=2000), dict(max_error=2.0)]:
+        p = _clipmap(**kw)
+        levels = p["levels"]
+        assert [l["level"] for l in levels] == list(range(p["first_level"], p["last_level"] + 1))
+        assert p["pages"] == sum(l["pages"] for l in levels)
+        for l in levels:
+            texel = 2 * 2.0 ** (l["level"] + 2) * 0.01 / 16384
+            assert l["texel"] == pytest.approx(texel, rel=1e-15)
+            a, b = l["depths"]
+            assert l["error_bound"] == pytest.approx(
+                (texel * H / (2 * b * t), texel * H / (2 * a * t)), rel=1e-12)
+        f = sa.frame(VIEW, CAM["near"], CAM["far"], CAM["half_fov"], LIGHT, **SCENE,
+                     image_height=H, **p["frame_kwargs"])
+        assert [v for v in f["clipmap_level"]] == [l["level"] for l in levels
+                                                   if l["max_error_pixels"] is not None]
+        assert max(f["max_error_pixels"]) == p["max_error_pixels"]
+        if "pool" in kw:
+            assert p["pages"] <= kw["pool"]
+        if "max_error" in kw:
+            assert p["max_error_pixels"] <= kw["max_error"]
+        if "lod_bias" in kw:
+            assert p["lod_bias"] == kw["lod_bias"]
+
+
+@pytest.mark.parametrize("kw, exc, name", [
+    (dict(pool=10, max_error=1.0), ValueError, "max_error"),
+    (dict(lod_bias=-1.0, pool=10), ValueError, "pool"),
+    (dict(pool=0), ValueError, "pool"),
+    (dict(max_error=-1.0), ValueError, "max_error"),
+    (dict(max_error=0.01), ValueError, "max_error"),
+    (dict(levels=(6, 8)), ValueError, "levels"),
+    (dict(levels=3), TypeError, "levels"),
+    (dict(page_texels=100), ValueError, "page_texels"),
+    (dict(lod_bias="x"), TypeError, "lod_bias"),
+])
+def test_plan_clipmap_bad_arguments_name_themselves(kw, exc, name):
+    with pytest.raises(exc) as e:
+        _clipmap(**kw)
+    assert name in str(e.value), str(e.value)

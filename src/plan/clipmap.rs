@@ -350,7 +350,7 @@ pub fn clipmap_for_error(
     let mut keep = |p: ClipmapPlan| {
         let fits = p.max_error_pixels() <= max_error;
         if fits
-            && best.map_or(true, |b| {
+            && best.is_none_or(|b| {
                 (p.pages(), p.max_error_pixels()) < (b.pages(), b.max_error_pixels())
             })
         {
