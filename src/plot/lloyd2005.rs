@@ -1,12 +1,17 @@
 //! Lloyd, Yoon, Tuft, Manocha 2005, *Subdivided Shadow Maps*: Fig 4 and Fig 7.
 
-use super::chart::{fmt_times_ten, linspace, Axis, Charts, LineChart, Note, Series, PALETTE};
+use super::chart::{fmt_times_ten, linspace, Axis, Charts, LineChart, Series, PALETTE};
 use super::Fail;
 use crate::analytic::subdivided::{distribution_g, g_min, n_from_xi, subdivided_max_error};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 
 /// α of Fig 4 (the paper does not print it).
 pub(super) const FIG4_ALPHA: f64 = 10.0;
+
+/// ξ with the minus sign U+2212.
+fn fmt_signed(v: f64) -> String {
+    format!("{v}").replace('-', "\u{2212}")
+}
 
 /// Fig 4: the error distribution g(z) over z ∈ [1, α] for n chosen by ξ = 1, ½, 0, −½, −1.
 pub(super) fn fig4() -> Result<Charts, Fail> {
@@ -25,14 +30,15 @@ pub(super) fn fig4() -> Result<Charts, Fail> {
     for (i, xi) in [1.0, 0.5, 0.0, -0.5, -1.0].into_iter().enumerate() {
         let n = n_from_xi(alpha, xi)?;
         let label = match n.as_finite() {
-            Some(v) => format!("n = {v:.3} (ξ = {xi})"),
-            None => format!("n = ∞ (ξ = {xi})"),
+            Some(v) => format!("n = {v:.3} (ξ = {})", fmt_signed(xi)),
+            None => format!("n = ∞ (ξ = {})", fmt_signed(xi)),
         };
         let pts = zs
             .iter()
             .map(|&z| Ok((z, distribution_g(alpha, n, z)?)))
             .collect::<Result<Vec<_>, crate::Error>>()?;
-        c.series.push(Series::line(label, pts, PALETTE[i]));
+        // Labelled at the curve's right end (the far plane), where the five are apart.
+        c.series.push(Series::line(label, pts, PALETTE[i]).direct());
     }
     let g0 = g_min(alpha)?;
     let grey = RGBColor(90, 90, 90);
@@ -40,17 +46,12 @@ pub(super) fn fig4() -> Result<Charts, Fail> {
     s.label = None;
     s.width = 1;
     c.series.push(s);
-    c.notes.push(Note {
-        at: (1.3, 0.8),
-        text: format!("dotted: g₀ = 1/√α = {g0:.3}, the least maximum (n = 1 + √α)"),
-        colour: grey,
-    });
     Ok(Charts {
         size: (520, 500),
         title: "Error distribution function g for several warp distances n".into(),
         caption: vec![
             format!("Lloyd et al. 2005, Fig. 4 (α = {alpha}), from Eq 3 and 4 (analytic::subdivided::distribution_g, n_from_xi). ξ = 1 is PSM (n = 1), ξ = 0 LiSPSM"),
-            "(n = 1 + √α), ξ = −1 the uniform map (n = ∞). The maximum of g is on the near plane for ξ ≤ 0 and on the far plane for ξ > 0 (§3.2 prints these swapped).".into(),
+            format!("(n = 1 + √α), ξ = −1 the uniform map (n = ∞); each curve labelled at the far plane. Dotted: g₀ = 1/√α = {g0:.3}, the least maximum (n = 1 + √α). The maximum of g is on the near plane for ξ ≤ 0 and on the far plane for ξ > 0 (§3.2 prints these swapped)."),
         ],
         charts: vec![c],
     })

@@ -113,11 +113,13 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         .push(Series::line("iterative variant, 1024 lines", iterative, PALETTE[1]).dashed());
     Ok(Fig6 {
         grid,
-        scale: ColourScale::smooth(Axis::linear("share of the map (colour)", lo, hi)),
+        // Logarithmic, as the profile: the dueling-frusta band near the horizon (0.003 to
+        // 0.01) is two decades below overhead (0.49) and would be one colour on a linear bar.
+        scale: ColourScale::smooth(Axis::log10("share of the map (colour, log scale)", lo, hi)),
         profile,
         caption: vec![
             format!("Martin & Tan 2004, Fig. 6, measured: the area the focus region (the eye frustum from n to n + δ, δ = {FOCUS}) covers in the trapezoidal map (maps::tsm::tsm, TsmMap::focus_area),"),
-            "for every light direction above the viewer (left: overhead at the centre, behind on the left, in front on the right; the colour scale spans the values found) and in the vertical plane (right, logarithmic, so that the 80 % rule's jump where the light leaves the view's cone shows). n = 1, f = 100, θ = 30°.".to_string(),
+            "for every light direction above the viewer (top: overhead at the centre, behind on the left, in front on the right; a logarithmic colour scale over the values found) and in the vertical plane (bottom, logarithmic, so that the 80 % rule's jump where the light leaves the view's cone shows). n = 1, f = 100, θ = 30°.".to_string(),
         ],
     })
 }
@@ -178,5 +180,28 @@ mod tests {
         let behind = fig.grid.values[0].unwrap();
         let front = fig.grid.values[AZIMUTHS / 2].unwrap();
         assert!((behind - want).abs() < 1e-9 && (front - want).abs() < 1e-9);
+    }
+
+    /// The hemisphere's colour bar is logarithmic (issue 25): the dueling-frusta value 0.0121
+    /// and the overhead one (about 0.49) lie 1.6 decades apart, and on the bar's log₁₀ axis the
+    /// dueling value sits at (log 0.0121 − log lo)/(log hi − log lo) of its height (a linear bar
+    /// would put it in the bottom 3 %, one colour with everything below).
+    #[test]
+    fn hemisphere_colour_bar_is_logarithmic() {
+        let fig = fig6().map_err(|e| e.named("martin-tan-fig6")).unwrap();
+        let v: Vec<f64> = fig.grid.values.iter().flatten().copied().collect();
+        let (lo, hi) = v
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(a, b), &x| (a.min(x), b.max(x)));
+        let axis = &fig.scale.axis;
+        let (a, b) = axis.range();
+        assert!((a - lo.log10()).abs() < 1e-12 && (b - hi.log10()).abs() < 1e-12);
+        let t = (0.0121f64.log10() - lo.log10()) / (hi.log10() - lo.log10());
+        let level = fig.scale.level(0.0121).unwrap() as f64 / fig.scale.levels as f64;
+        assert!(
+            (level - t).abs() < 1.5 / fig.scale.levels as f64,
+            "{level} vs {t}"
+        );
+        assert!(t > 0.2, "{t}");
     }
 }

@@ -94,6 +94,8 @@ pub(crate) struct Series {
     pub markers: bool,
     /// A reference line (an asymptote, an optimum): never markers, in the chart or its legend.
     pub reference: bool,
+    /// The label is written at the line's right end, just above it, instead of in the legend.
+    pub direct: bool,
 }
 
 impl Series {
@@ -107,7 +109,13 @@ impl Series {
             width: 2,
             markers: false,
             reference: false,
+            direct: false,
         }
+    }
+    /// The same series labelled directly at its right end instead of in the legend.
+    pub fn direct(mut self) -> Self {
+        self.direct = true;
+        self
     }
     /// The same series as a reference line: no markers.
     pub fn reference(mut self) -> Self {
@@ -319,7 +327,18 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
                 .filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1)
                 .map(|at| EmptyElement::at(at) + Polygon::new(shape.outline(r), s.colour.filled())),
         )?;
-        if let Some(label) = &s.label {
+        if let (true, Some(label), Some(&Some(end))) = (s.direct, &s.label, pts.last()) {
+            if end.0 >= x0 && end.0 <= x1 && end.1 >= y0 && end.1 <= y1 {
+                boxed_text(
+                    &mut chart,
+                    end,
+                    label,
+                    Pos::new(HPos::Right, VPos::Bottom),
+                    13,
+                    s.colour,
+                )?;
+            }
+        } else if let Some(label) = &s.label {
             let colour = s.colour;
             let width = s.width;
             let dash = s.dash;
