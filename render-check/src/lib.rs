@@ -4,6 +4,7 @@
 //! docs/rendered.md describes what is measured and the scene format.
 
 pub mod analysis;
+pub mod blend;
 pub mod faults;
 pub mod gpu;
 pub mod images;
