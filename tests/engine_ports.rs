@@ -293,3 +293,115 @@ fn filament_focus_holds_the_visible_receivers() {
         assert!(checked > 1000, "{checked}");
     }
 }
+
+/// Filament's `applyLISPSM` takes its hints' dzn, dzf from the (cascade) camera's planes but
+/// everything else from the shadow volume's depth range [zn, zf] (the receivers' clamped to the
+/// camera's): the orthographic test 3 dzn/(zf − zn) < 2, nopt1 = dzn/(2 − 3 dzn/(zf − zn)) and
+/// the virtual far plane. Two hand cases with the light straight down (sin γ = 1), camera near
+/// 0.1, far 100 (dzf = 0), a box [−2, 2] × [−2, 0] × [−10, −1.2] as receiver and caster (its
+/// depth range [1.2, 10] within the frustum):
+///
+/// - near hint 5: dzn = 4.9, 3 dzn/(zf − zn) = 14.7/8.8 < 2, nopt1 = 4.9/(2 − 14.7/8.8)
+///   = 14.8686…, nopt0 = z₀ + √(vz₀ vz₁) = 1.2 + √(5 · 10) = 8.271…, so n′ = nopt1. (With the
+///   camera's range in the test and nopt1, as the crate had it, n′ was nopt0.)
+/// - default hints and the box cut to z ∈ [−10, −9.2]: dzn = 0.9, 3 dzn/0.8 ≥ 2, so Filament
+///   draws an orthographic map (the crate had warped it).
+///
+/// The crate's rule agrees with the hand values and with the port; so do four cascades at
+/// Filament's linear split positions, whose cameras' near planes differ (dzn > 0 only in the
+/// first).
+#[test]
+fn filament_rule_takes_zn_zf_from_the_shadow_volume() {
+    let run = |near_hint: f32, zmax: f64, splits: &[f32]| {
+        let cam = CameraInfo::perspective(Mat4::IDENTITY, 60.0, 1.0, 0.1, 100.0);
+        let bx = Aabb {
+            min: Vec3::new(-2.0, -2.0, -10.0),
+            max: Vec3::new(2.0, 0.0, zmax as f32),
+        };
+        let scene = [Renderable {
+            aabb: bx,
+            cast_shadows: true,
+            receive_shadows: true,
+        }];
+        let options = ShadowOptions {
+            shadow_near_hint: near_hint,
+            ..ShadowOptions::default()
+        };
+        let mut out: [Option<DirectionalMap>; 4] = [None; 4];
+        update_cascade_shadow_maps(
+            Vec3::new(0.0, -1.0, 0.0),
+            &cam,
+            &options,
+            &ShadowMapInfo::new(2048),
+            &scene,
+            splits,
+            true,
+            false,
+            &mut out,
+        );
+        // The port's n′ per cascade: None where LiSPSM was cancelled (Wp the identity).
+        let port: Vec<Option<f64>> = out[..=splits.len()]
+            .iter()
+            .map(|m| {
+                let m = m.expect("every cascade holds part of the box");
+                (m.wp.w_axis.y != 0.0).then_some(f64::from(m.wp.x_axis.x))
+            })
+            .collect();
+
+        let camera = Camera::new(DMat4::IDENTITY, 0.1, 100.0, 30f64.to_radians(), 1.0).unwrap();
+        let boxes = [
+            frame::Aabb::new(DVec3::new(-2.0, -2.0, -10.0), DVec3::new(2.0, 0.0, zmax)).unwrap(),
+        ];
+        let rule = WarpRule::FilamentHints {
+            near_hint: f64::from(near_hint),
+            far_hint: 100.0,
+        };
+        let fractions: Vec<f64> = splits.iter().map(|&p| f64::from(p)).collect();
+        let scheme = if splits.is_empty() {
+            FrameScheme::Single(rule)
+        } else {
+            FrameScheme::Cascades {
+                splits: frame::CascadeSplits::Fractions {
+                    fractions: &fractions,
+                    overlap: 0.0,
+                },
+                rule,
+            }
+        };
+        let input = FrameInput::new(camera, DVec3::new(0.0, -1.0, 0.0), 2048, 1080)
+            .receivers(Bound::Boxes(&boxes))
+            .casters(Bound::Boxes(&boxes))
+            .scheme(scheme);
+        let f = frame::frame(&input).unwrap();
+        let ours: Vec<Option<f64>> = f
+            .maps()
+            .iter()
+            .map(|m| m.shadow.n_prime().as_finite())
+            .collect();
+        (port, ours)
+    };
+
+    let nopt1 = 4.9 / (2.0 - 3.0 * 4.9 / 8.8);
+    assert!(nopt1 > 1.2 + 50f64.sqrt());
+    let (port, ours) = run(5.0, -1.2, &[]);
+    let (p, o) = (port[0].unwrap(), ours[0].unwrap());
+    assert!((p - nopt1).abs() < 1e-4 * nopt1, "port {p} vs {nopt1}");
+    assert!((o - nopt1).abs() < 1e-9 * nopt1, "crate {o} vs {nopt1}");
+
+    let (port, ours) = run(1.0, -9.2, &[]);
+    assert_eq!(port, vec![None], "Filament: orthographic");
+    assert_eq!(ours, vec![None], "the crate: orthographic");
+
+    let (port, ours) = run(5.0, -1.2, &[0.02, 0.05, 0.09]);
+    assert_eq!(port.len(), ours.len());
+    for (i, (p, o)) in port.iter().zip(&ours).enumerate() {
+        match (p, o) {
+            (Some(p), Some(o)) => assert!((p - o).abs() < 2e-4 * o, "cascade {i}: {p} vs {o}"),
+            _ => assert_eq!(
+                p.is_some(),
+                o.is_some(),
+                "cascade {i}: {port:?} vs {ours:?}"
+            ),
+        }
+    }
+}

@@ -72,9 +72,11 @@ impl Ctx<'_, '_> {
                     for q in &mut from_centre.q {
                         q.x -= xc;
                     }
-                    rule_n_prime_on(cam, &sub, &from_centre, rule)?
+                    rule_n_prime_on(&sub_full, &sub, &from_centre, rule)?
                 }
-                _ => rule_n_prime_on(cam, &sub, &fl, rule)?,
+                // The engines' rules see the slice's planes as their camera's: Filament's and
+                // OGRE's cascades set the cascade camera's near and far to the split planes.
+                _ => rule_n_prime_on(&sub_full, &sub, &fl, rule)?,
             }
         };
         let rho = n_prime.recip();

@@ -79,6 +79,9 @@ pub enum WarpRule {
     /// Filament's rule with explicit hints: n′ = max((z₀ + √(v₀ v₁))/sin γ, dzn/(2 − 3 dzn/(f − n)))
     /// with dzn = max(0, near_hint − n), dzf = max(0, f − far_hint), z₀ = n, z₁ = n + Δ sin γ,
     /// v₀ = n + dzn, v₁ = min(f − dzf, z₁); orthographic when sin γ ≤ 0.02 or 3 dzn/(f − n) ≥ 2.
+    /// For a focus body B (the frame API) dzn and dzf come from the camera's planes (a cascade's
+    /// split planes, as Filament's `updateCascadeShadowMaps` sets the cascade camera's), and n, f
+    /// everywhere else are B's depth range, as in `ShadowMap::applyLISPSM`.
     FilamentHints {
         /// `ShadowOptions::shadowNearHint`.
         near_hint: f64,
@@ -236,10 +239,12 @@ pub(crate) fn rule_n_prime(
 
 /// The n′ of `rule` for a body in light space `fl` whose eye-depth range is `view`'s
 /// `[near, far]` (a sub-frustum `[n_B, f_B]` for the frame API's focus body B), seen by a camera
-/// with near and far planes `camera`'s: the rules of the papers see the body's depth range as their
+/// with near and far planes `camera`'s (the frame API passes its slice's: the camera's for one
+/// map, the split planes for a cascade, as Filament's and OGRE's cascades set them): the rules of the papers see the body's depth range as their
 /// frustum (as a z-partition's rule sees its partition); Filament's hints are measured from the
-/// camera's planes and its z₀ is the body's nearest depth (`ShadowMap::applyLISPSM`: `zn`, `zf`
-/// the camera's, `z0` the receivers' nearest); OGRE's n_opt is `|e_z| + √(n f)` with e the body's
+/// camera's planes, and its z₀, the orthographic test, nopt1 and the virtual far plane use the
+/// body's depth range (`ShadowMap::applyLISPSM`: `dzn`, `dzf` from `camera.zn`, `camera.zf`;
+/// `zn`, `zf` the shadow volume's range clamped to the camera's, `z0 = zn`); OGRE's n_opt is `|e_z| + √(n f)` with e the body's
 /// vertex nearest the camera and n, f the camera's (`calculateNOptSimple`). With
 /// `camera == view` and the frustum's corners this is [`rule_n_prime`] bit for bit.
 pub(crate) fn rule_n_prime_on<const N: usize>(
@@ -437,18 +442,23 @@ fn filament_n_prime<const N: usize>(
             ),
         ));
     }
-    let (zn, zf) = (camera.near(), camera.far());
+    // `applyLISPSM`: the hints' dzn, dzf from the camera's planes (`camera.zn`, `camera.zf`);
+    // zn, zf the shadow volume's depth range clamped to them (`max(camera.zn, znf[0])`,
+    // `min(camera.zf, znf[1])`: the body's depths, which lie inside the camera's), used in the
+    // orthographic test, in nopt1 and in the virtual far plane.
+    let (czn, czf) = (camera.near(), camera.far());
+    let (zn, zf) = (view.near().max(czn), view.far().min(czf));
     let sin_lv = fl.sin_gamma;
-    let dzn = (near_hint - zn).max(0.0);
-    let dzf = (zf - far_hint).max(0.0);
-    let z0 = view.near();
+    let dzn = (near_hint - czn).max(0.0);
+    let dzf = (czf - far_hint).max(0.0);
+    let z0 = zn;
     let z1 = z0 + fl.delta * sin_lv;
     const EPSILON: f64 = 0.02;
     if !(sin_lv > EPSILON && 3.0 * (dzn / (zf - zn)) < 2.0) {
         return Ok(NPrime::UNWARPED);
     }
-    let vz0 = zn.max(zn + dzn).max(z0).max(0.0);
-    let vz1 = zf.min(zf - dzf).min(z1).max(0.0);
+    let vz0 = zn.max(czn + dzn).max(z0).max(0.0);
+    let vz1 = zf.min(czf - dzf).min(z1).max(0.0);
     let nopt0 = (z0 + (vz0 * vz1).sqrt()) / sin_lv;
     let nopt1 = dzn / (2.0 - 3.0 * (dzn / (zf - zn)));
     Ok(NPrime::finite_or_unwarped(nopt0.max(nopt1)))
