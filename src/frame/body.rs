@@ -115,8 +115,11 @@ impl Ctx<'_, '_> {
     ) -> Result<Option<FrustumInLight<MAX_BODY_VERTICES>>> {
         let fl = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, self.l, ls)
             .ok_or_else(|| Error::Degenerate("the focus body has no vertices".into()))?;
+        // `fl.q` past the body's vertices repeats the first (`FrustumInLight::from_points`), which
+        // changes no minimum, maximum or extent: only the vertices are read.
+        let q = &fl.q[..pts.len()];
         let (mut xl, mut xh) = (f64::INFINITY, f64::NEG_INFINITY);
-        for q in &fl.q {
+        for q in q {
             xl = xl.min(q.x);
             xh = xh.max(q.x);
         }
@@ -127,10 +130,10 @@ impl Ctx<'_, '_> {
         // A footprint with no area in any direction (a flat B seen edge-on along a diagonal of
         // the map: a vertical wall under a sun straight down, the camera turned) is edge-on too.
         let mut foot = [DVec3::ZERO; MAX_BODY_VERTICES];
-        for (f, q) in foot.iter_mut().zip(&fl.q) {
+        for (f, q) in foot.iter_mut().zip(q) {
             *f = DVec3::new(q.x, 0.0, q.z);
         }
-        let (_, width, _) = extents(&foot);
+        let (_, width, _) = extents(&foot[..q.len()]);
         Ok((width > small).then_some(fl))
     }
 

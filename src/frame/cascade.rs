@@ -246,7 +246,8 @@ impl Ctx<'_, '_> {
         let fl = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, self.l, ls_e)
             .ok_or_else(|| Error::Degenerate("the focus body has no vertices".into()))?;
         let (mut ylo, mut yhi) = (f64::INFINITY, f64::NEG_INFINITY);
-        for q in &fl.q {
+        // Past B's vertices `fl.q` repeats the first: only the vertices are read.
+        for q in &fl.q[..body.n] {
             ylo = ylo.min(q.y);
             yhi = yhi.max(q.y);
         }

@@ -127,12 +127,12 @@ impl Ctx<'_, '_> {
         let scale = self.scale();
         let keep = 1e-6 * scale;
         let slack = 1e-9 * scale;
-        let w2e = self.input.camera.world_to_eye;
+        let w2e_t = self.input.camera.world_to_eye.transpose();
         // An eye plane π is W2Eᵀ π in world space (π·(W2E p, 1) = (W2Eᵀ π)·(p, 1)), pushed
         // outward by the slack and its offset's rounding.
         let to_world = |p: DVec4| -> Option<DVec4> {
             let p = unit(p)?;
-            let w = unit(w2e.transpose() * (p - DVec4::new(0.0, 0.0, 0.0, slack)))?;
+            let w = unit(w2e_t * (p - DVec4::new(0.0, 0.0, 0.0, slack)))?;
             Some(w - DVec4::new(0.0, 0.0, 0.0, 4.0 * f64::EPSILON * w.w.abs()))
         };
         let mut slice = frustum_planes(self.view, cover.1);

@@ -186,15 +186,14 @@ impl<const F: usize, const V: usize, const P: usize> ConvexBody<F, V, P> {
             return false;
         }
         let (n, d) = (n / len, plane.w / len);
-        // Each vertex's signed distance, once; quick accept (every vertex inside) and reject
-        // (none).
-        let mut dist = [0.0f64; P];
+        // Quick accept (every vertex inside) and reject (none), before any working array is
+        // set up: most planes of a frame cut nothing.
         let mut all_in = true;
         let mut any_in = false;
-        for (s, p) in dist.iter_mut().zip(&self.pts[..self.npts]) {
-            *s = n.dot(*p) + d;
-            all_in &= *s <= tol;
-            any_in |= *s <= tol;
+        for p in &self.pts[..self.npts] {
+            let s = n.dot(*p) + d;
+            all_in &= s <= tol;
+            any_in |= s <= tol;
         }
         if all_in {
             return true;
@@ -203,6 +202,11 @@ impl<const F: usize, const V: usize, const P: usize> ConvexBody<F, V, P> {
             self.count = 0;
             self.npts = 0;
             return true;
+        }
+        // Each vertex's signed distance (the same expression as above).
+        let mut dist = [0.0f64; P];
+        for (s, p) in dist.iter_mut().zip(&self.pts[..self.npts]) {
+            *s = n.dot(*p) + d;
         }
         // The kept vertices' new indices, in order; the cut edges' points follow them.
         let mut remap = [0u8; P];
@@ -285,7 +289,9 @@ impl<const F: usize, const V: usize, const P: usize> ConvexBody<F, V, P> {
                 }
             }
             if m > 0 {
-                self.faces[w][..m].copy_from_slice(&poly[..m]);
+                // The whole fixed row (entries past `m` are never read): a few register moves
+                // where a slice copy of `m` bytes is a `memcpy` call.
+                self.faces[w] = poly;
                 self.lens[w] = m;
                 w += 1;
             }
@@ -298,7 +304,9 @@ impl<const F: usize, const V: usize, const P: usize> ConvexBody<F, V, P> {
                 self.pts[usize::from(remap[i])] = self.pts[i];
             }
         }
-        self.pts[kept..kept + ncut].copy_from_slice(&cut[..ncut]);
+        for (p, c) in self.pts[kept..kept + ncut].iter_mut().zip(&cut) {
+            *p = *c;
+        }
         self.npts = kept + ncut;
         if ncap >= 3 {
             // The cap is convex: order its points by angle about their centroid in the plane.
@@ -326,7 +334,7 @@ impl<const F: usize, const V: usize, const P: usize> ConvexBody<F, V, P> {
             if self.count == F {
                 return false;
             }
-            self.faces[self.count][..ncap].copy_from_slice(&cap[..ncap]);
+            self.faces[self.count] = cap;
             self.lens[self.count] = ncap;
             self.count += 1;
         }
