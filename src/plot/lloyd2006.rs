@@ -110,9 +110,18 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
     ));
     c.series.push(Series::line(
         format!("M_z (maximum {} at θ = 30°)", fmt_plain(top_z)),
-        m_z,
+        m_z.clone(),
         PALETTE[1],
     ));
+    // (b): M_z on a linear axis, where its V (linear in η on each side of 0, App. B) shows.
+    let mut v = LineChart::new(
+        "(b) M_z on a linear axis: the V",
+        c.x.clone(),
+        Axis::linear("M_z (unit resolutions)", 0.0, 1.05 * top_z),
+    );
+    v.series.push(Series::line("M_z", m_z, PALETTE[1]));
+    v.legend = SeriesLabelPosition::UpperMiddle;
+    c.title = "(a) as they are, logarithmic".into();
     c.series.push(
         Series::line(
             format!("S̄ = M_x M_z (maximum {} at θ = 30°)", fmt_plain(top_s)),
@@ -122,13 +131,13 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
         .dashed(),
     );
     Ok(Charts {
-        size: (520, 520),
+        size: (520, 900),
         title: "Maximum error and storage factor against the warp parameter η".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 6 (n = 1, f = 100), from Eq 9, 10, 11, 12 (analytic::overhead, analytic::eta::n_prime_from_eta).".into(),
-            "θ = 30°, unit resolutions. Unlike the paper, which normalises each curve to fit one linear scale, the values are drawn as they are on a logarithmic axis: for η ≤ 0 M_x and M_z are both ∝ n′/(n′ + f − n) and run parallel; for η ≥ 0 S̄ stays constant while M_x falls and M_z rises (§4.3).".into(),
+            "θ = 30°, unit resolutions. Unlike the paper, which normalises each curve to fit one linear scale, the values are drawn as they are on a logarithmic axis: for η ≤ 0 M_x and M_z are both ∝ n′/(n′ + f − n) and run parallel; for η ≥ 0 S̄ stays constant while M_x falls and M_z rises (§4.3). (b) M_z alone on a linear axis: the paper's V, falling linearly to its minimum at η = 0 and rising linearly to η = 1.".into(),
         ],
-        charts: vec![c],
+        charts: vec![c, v],
     })
 }
 
@@ -416,6 +425,7 @@ impl Figure for Fig13 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::plot::chart::Scale;
 
     /// Fig 13's first point: with one partition per face (5 maps) Eq 20 gives 5 r^{2/5} and
     /// Eq 21 gives 2(r − 1) + 1; the plotted crossover is where they are equal (by hand:
@@ -493,6 +503,21 @@ mod tests {
             .fold((0.0, f64::INFINITY), |a, p| if p.1 < a.1 { p } else { a });
         assert!(min.0.abs() < 1e-12, "minimum at η = {}", min.0);
         assert!((min.1 - c / 10.0).abs() < 1e-9 * c, "{}", min.1);
+        // (b), the V on a linear axis: M_z linear in η on each side of 0 (App. B defines η by
+        // that interpolation): at η = ±0.5 halfway between the minimum c/10 and the end value c.
+        let v = &fig.charts[1];
+        assert_eq!(v.y.scale, Scale::Linear);
+        for p in &v.series[0].points {
+            if (p.0.abs() - 0.5).abs() < 1e-12 {
+                let want = 0.5 * (c / 10.0 + c);
+                assert!(
+                    (p.1 - want).abs() < 1e-6 * c,
+                    "η = {}: {} vs {want}",
+                    p.0,
+                    p.1
+                );
+            }
+        }
     }
 
     /// Fig 12 reaches 40 maps and so shows the light-behind crossover (§5.3, Fig 13), by hand
