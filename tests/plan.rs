@@ -76,7 +76,7 @@ fn clipmap_row(input: &FrameInput<'_>, row: &Candidate) -> Option<(u64, f64)> {
         .fold(0.0, f64::max);
     assert_eq!(got.maps, f.len());
     assert!((got.max_error_pixels - e).abs() <= 1e-12 * e);
-    assert_eq!(got.texels % (128 * 128), 0);
+    assert!(got.texels.is_multiple_of(128 * 128));
     assert!(got.texels <= f.len() as u64 * 16384 * 16384);
     Some((got.texels, e))
 }
@@ -155,7 +155,7 @@ fn check_resolutions(p: &Plan) {
     }
     if let FrameScheme::Clipmap(_) = p.scheme() {
         // Its texels are its pages' ([`clipmap_row`]), not its levels' whole squares.
-        assert!(p.texels <= texels && p.texels % (128 * 128) == 0);
+        assert!(p.texels <= texels && p.texels.is_multiple_of(128 * 128));
     } else {
         assert_eq!(texels, p.texels);
     }
