@@ -9,13 +9,15 @@ use glam::{DMat4, DVec3, DVec4};
 use proptest::prelude::*;
 use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::frame::bias::{normal_offset_at, TEXEL_SLACK};
-use shadow_aliasing::frame::{frame, Bound, CascadeSplits, FrameInput, FrameMap, FrameScheme};
+use shadow_aliasing::frame::{
+    frame, Bound, CascadeSplits, Frame, FrameInput, FrameMap, FrameScheme,
+};
 use shadow_aliasing::maps::faces::FaceWarp;
 use shadow_aliasing::maps::{ClipDepth, TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::Error;
 
 mod common;
-use common::scene::{random_scene, scene_params};
+use common::scene::{random_scene, scene_params, SceneParams};
 use common::Lcg;
 
 fn schemes(i: usize) -> FrameScheme<'static> {
@@ -45,6 +47,18 @@ fn schemes(i: usize) -> FrameScheme<'static> {
             k: 2,
         },
     }
+}
+
+/// The frame of a random scene (receivers and casters its boxes, 1024² maps) with scheme
+/// `scheme_i`; `None` where the scene or the frame is refused.
+fn random_frame(params: &SceneParams, scheme_i: usize) -> Option<Frame> {
+    let sc = random_scene(params)?;
+    let (r, c) = ([sc.receivers], [sc.casters]);
+    let input = FrameInput::new(sc.camera, sc.light, 1024, 1024)
+        .receivers(Bound::Boxes(&r))
+        .casters(Bound::Boxes(&c))
+        .scheme(schemes(scheme_i));
+    frame(&input).ok()
 }
 
 /// One map's exact lookup model, eye space.
@@ -193,15 +207,7 @@ proptest! {
         scheme_i in 0usize..7,
         seed in any::<u64>(),
     ) {
-        let Some(sc) = random_scene(&params) else {
-            return Ok(());
-        };
-        let (r, c) = ([sc.receivers], [sc.casters]);
-        let input = FrameInput::new(sc.camera, sc.light, 1024, 1024)
-            .receivers(Bound::Boxes(&r))
-            .casters(Bound::Boxes(&c))
-            .scheme(schemes(scheme_i));
-        let Ok(f) = frame(&input) else {
+        let Some(f) = random_frame(&params, scheme_i) else {
             return Ok(());
         };
         for m in f.maps().iter() {
@@ -339,15 +345,7 @@ proptest! {
         scheme_i in 0usize..7,
         seed in any::<u64>(),
     ) {
-        let Some(sc) = random_scene(&params) else {
-            return Ok(());
-        };
-        let (r, c) = ([sc.receivers], [sc.casters]);
-        let input = FrameInput::new(sc.camera, sc.light, 1024, 1024)
-            .receivers(Bound::Boxes(&r))
-            .casters(Bound::Boxes(&c))
-            .scheme(schemes(scheme_i));
-        let Ok(f) = frame(&input) else {
+        let Some(f) = random_frame(&params, scheme_i) else {
             return Ok(());
         };
         for m in f.maps().iter() {
