@@ -59,16 +59,17 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
             .map(|&z| Ok((z, mz(&view, *np, z, res)? / z_factor)))
             .collect::<Result<Vec<_>, crate::Error>>()?;
         cx.series.push(Series::line(label.clone(), px, PALETTE[i]));
-        let mut sz = Series::line(String::new(), pz, PALETTE[i]);
-        sz.label = None; // one legend, in the left panel, for both
-        cz.series.push(sz);
+        // The lower panel's curves labelled directly at the far plane with their n′ (and with
+        // the upper panel's markers, so that both read in greyscale).
+        let short = label.split(" (").next().unwrap_or(label).to_string();
+        cz.series.push(Series::line(short, pz, PALETTE[i]).direct());
     }
     Ok(Charts {
         size: (520, 860),
         title: "Error distribution along the view frustum, light overhead".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 5 (n = 1, f = 20), from Eq 7 and 8 (analytic::overhead::mx, mz): the last term of each, as the paper plots, i.e. m_x divided by f and m_z by (f − n)/(2 tan θ).".into(),
-            "m_x is the largest at z = n; m_z at z = f for n′ ≤ n + √(fn) and at z = n beyond it. Unit image and shadow-map resolutions; the legend holds for both panels.".into(),
+            "m_x is the largest at z = n; m_z at z = f for n′ ≤ n + √(fn) and at z = n beyond it. Unit image and shadow-map resolutions; the legend of the upper panel holds for both, the lower panel's curves carry the same markers and their n′ at the far plane.".into(),
         ],
         charts: vec![cx, cz],
     })
@@ -597,6 +598,22 @@ mod tests {
         );
         for s in &ratio.series[..4] {
             assert!(s.points.windows(2).all(|w| w[1].1 < w[0].1 && w[1].1 > 1.0));
+        }
+    }
+
+    /// Fig 5's lower panel (issue 25: its curves had neither legend nor markers) labels each
+    /// curve directly with the n′ of the upper panel's legend entry of the same colour.
+    #[test]
+    fn fig5_lower_panel_labels_its_curves() {
+        let fig = fig5().map_err(|e| e.named("lloyd2006-fig5")).unwrap();
+        let (upper, lower) = (&fig.charts[0].series, &fig.charts[1].series);
+        assert_eq!(upper.len(), lower.len());
+        for (u, l) in upper.iter().zip(lower) {
+            let (ul, ll) = (u.label.as_deref().unwrap(), l.label.as_deref().unwrap());
+            assert!(
+                l.direct && ul.starts_with(ll) && u.colour == l.colour,
+                "{ul} / {ll}"
+            );
         }
     }
 }
