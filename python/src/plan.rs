@@ -121,7 +121,8 @@ fn scheme_entries(d: &Bound<'_, PyDict>, s: &FrameScheme<'_>, image_height: u32)
 /// The cheapest shadow set-up for a target error, or the least error within a texel budget (the
 /// crate's ``shadow_aliasing::plan::plan``): every candidate — a single map with each warp rule,
 /// TSM, cascades k = 2…8 with each split scheme (equal-error included) unwarped and LiSPSM,
-/// stable cascades, face partitions — built for the scene and measured over its focus body.
+/// stable cascades, face partitions, the clipmap (its LOD bias chosen for the goal, levels of
+/// 16384 texels, texels its pages × 128²) — built for the scene and measured over its focus body.
 ///
 /// The scene as ``sa.frame`` takes it: ``view`` (4, 4) world → eye, ``near``, ``far``,
 /// ``half_fov``, ``light_dir``, ``aspect``, ``receivers``, ``casters``, ``depth_range``,

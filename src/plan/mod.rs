@@ -4,7 +4,7 @@
 //! - [`allocate`]: each map's resolution for a texel budget or an atlas, the largest error least
 //!   (Lloyd 2005 Eq 6 generalised), or the cheapest for a target error.
 //! - [`planner`]: the cheapest scheme (single maps, TSM, cascades, stable cascades, face
-//!   partitions) that meets a target error, or the least error within a texel budget, every
+//!   partitions, the clipmap) that meets a target error, or the least error within a texel budget, every
 //!   candidate ([`candidates`]) measured over the scene's focus body.
 //! - Error-equalising cascade splits live with the frame that measures them:
 //!   [`CascadeSplits::EqualError`](crate::frame::CascadeSplits::EqualError).
