@@ -234,7 +234,7 @@ def frame(view: ArrayLike, near: float, far: float, half_fov: float, light_dir: 
           near_hint: Optional[float] = ..., far_hint: Optional[float] = ...,
           shadow_distance: Optional[float] = ..., xi: Optional[float] = ...,
           iterative: Optional[int] = ..., lod_bias: Optional[float] = ...,
-          levels: Optional[Tuple[int, int]] = ..., level_unit: Optional[float] = ...,
+          levels: Optional[ArrayLike] = ..., level_unit: Optional[float] = ...,
           page_texels: Optional[int] = ..., centre: Literal["rule", "eye", "nearest_vertex"] = ...,
           clip_depth: ClipDepth = ...,
           dtype: DType = ...) -> FrameResult:
@@ -252,7 +252,7 @@ def plan_clipmap(view: ArrayLike, near: float, far: float, half_fov: float, ligh
                  image_height: int, aspect: float = ..., receivers: Optional[ArrayLike] = ...,
                  casters: Optional[ArrayLike] = ..., depth_range: Optional[ArrayLike] = ...,
                  depth_clamp: bool = ..., map_resolution: int = ...,
-                 lod_bias: Optional[float] = ..., levels: Optional[Tuple[int, int]] = ...,
+                 lod_bias: Optional[float] = ..., levels: Optional[ArrayLike] = ...,
                  level_unit: Optional[float] = ..., page_texels: Optional[int] = ...,
                  pool: Optional[int] = ..., max_error: Optional[float] = ...) -> dict[str, object]:
     """A clipmap's levels for the scene: lod_bias, bias_in_effect, first_level, last_level,

@@ -538,15 +538,10 @@ pub fn clipmap_options<'py>(
         o.page_texels =
             u32::try_from(args::whole("page_texels", &v, u64::from(u32::MAX))?).unwrap_or(u32::MAX);
     }
-    if let Some(v) = levels {
-        let pair: Vec<i64> = v.extract().map_err(|_| {
-            PyTypeError::new_err(format!(
-                "levels must be a pair of whole numbers (FIRST, LAST) (got {})",
-                args::kind(&v)
-            ))
-        })?;
+    if let Some(pair) = list("levels", levels.as_ref())? {
+        let whole = |v: f64| v.fract() == 0.0 && v.abs() <= 64.0;
         match pair.as_slice() {
-            [f, l] if f.abs() <= 64 && l.abs() <= 64 => {
+            [f, l] if whole(*f) && whole(*l) => {
                 (o.first_level, o.last_level) = (*f as i32, *l as i32);
             }
             _ => {

@@ -56,6 +56,7 @@ CALLS = {
     "point_error": dict(VIEW, matrix=M, light_dir=LIGHT, point=[0.0, 0.0, -10.0]),
     "frame": dict(VIEW, view=np.eye(4), light_dir=LIGHT),
     "plan": dict(VIEW, view=np.eye(4), light_dir=LIGHT, image_height=1080, max_error=2.0),
+    "plan_clipmap": dict(VIEW, view=np.eye(4), light_dir=LIGHT, image_height=1080),
     # A wall at depth 0.9 of a Vulkan-style camera (near 1, far 100), world = eye space.
     "error_image": dict(depth=np.full((3, 4), 0.9), view=np.eye(4), shadow_matrix=M,
                         projection=np.array([[1 / math.tan(0.5), 0, 0, 0], [0, 1 / math.tan(0.5), 0, 0],
@@ -98,7 +99,11 @@ CONTEXT = {
               "receivers": {"receivers": [[[-5.0, -2.0, -50.0], [5.0, 0.0, -2.0]]]},
               "casters": {"receivers": [[[-5.0, -2.0, -50.0], [5.0, 0.0, -2.0]]],
                           "casters": [[[-1.0, 0.0, -20.0], [1.0, 3.0, -15.0]]]},
-              "depth_range": {"depth_range": [2.0, 50.0]}},
+              "depth_range": {"depth_range": [2.0, 50.0]},
+              "lod_bias": {"scheme": "clipmap", "lod_bias": -1.0},
+              "levels": {"scheme": "clipmap", "levels": [6, 22]},
+              "level_unit": {"scheme": "clipmap", "level_unit": 0.01},
+              "page_texels": {"scheme": "clipmap", "page_texels": 128}},
 }
 
 # Arguments where NaN is a value: error_image's fill (its default) marks pixels without a
@@ -106,7 +111,7 @@ CONTEXT = {
 NAN_VALID = {("error_image", "fill")}
 # Whole numbers whose domain reaches 2**40: plan's texel budget (a count of texels, not of maps
 # or cells). Such a value is accepted or refused naming the argument.
-HUGE_INT_VALID = {("plan", "budget_texels")}
+HUGE_INT_VALID = {("plan", "budget_texels"), ("plan_clipmap", "pool")}
 
 RAGGED = [[1.0], [1.0, 2.0]]
 # The crate's errors about a combination of valid values rather than one argument (a frustum
@@ -259,7 +264,7 @@ def test_every_argument_of_every_function(fn, arg, value, expected):
     assert expected is None, f"{fn}({arg}={value!r}) returned {out!r}, expected {expected}"
     # Accepted: the value lies in the domain, and the answer holds no NaN.
     values = out[0] if fn == "faces" else out
-    if fn in ("frame", "plan"):
+    if fn in ("frame", "plan", "plan_clipmap"):
         values = np.concatenate([np.ravel(v).astype(np.float64) for v in out.values()
                                  if isinstance(v, (np.ndarray, float))
                                  and np.asarray(v).dtype.kind in "fiu"])

@@ -185,7 +185,8 @@ def test_plan_clipmap_levels_by_hand_and_rebuilt_by_sa_frame():
     (dict(max_error=-1.0), ValueError, "max_error"),
     (dict(max_error=0.01), ValueError, "max_error"),
     (dict(levels=(6, 8)), ValueError, "levels"),
-    (dict(levels=3), TypeError, "levels"),
+    (dict(levels=3), ValueError, "levels"),
+    (dict(levels="ab"), TypeError, "levels"),
     (dict(page_texels=100), ValueError, "page_texels"),
     (dict(lod_bias="x"), TypeError, "lod_bias"),
 ])
