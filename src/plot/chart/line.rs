@@ -96,6 +96,8 @@ pub(crate) struct Series {
     pub reference: bool,
     /// The label is written at the line's right end, just above it, instead of in the legend.
     pub direct: bool,
+    /// With `direct`: the label's point is the one at this x instead of the last.
+    pub direct_at: Option<f64>,
 }
 
 impl Series {
@@ -110,7 +112,14 @@ impl Series {
             markers: false,
             reference: false,
             direct: false,
+            direct_at: None,
         }
+    }
+    /// The same series labelled directly at its point at `x` (its right end if it has none).
+    pub fn direct_at(mut self, x: f64) -> Self {
+        self.direct = true;
+        self.direct_at = Some(x);
+        self
     }
     /// The same series labelled directly at its right end instead of in the legend.
     pub fn direct(mut self) -> Self {
@@ -327,7 +336,17 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
                 .filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1)
                 .map(|at| EmptyElement::at(at) + Polygon::new(shape.outline(r), s.colour.filled())),
         )?;
-        if let (true, Some(label), Some(&Some(end))) = (s.direct, &s.label, pts.last()) {
+        let anchor = s
+            .direct_at
+            .and_then(|x| {
+                let a = c.x.to_axis(x)?;
+                pts.iter()
+                    .flatten()
+                    .find(|p| (p.0 - a).abs() < 1e-9)
+                    .copied()
+            })
+            .or_else(|| pts.last().copied().flatten());
+        if let (true, Some(label), Some(end)) = (s.direct, &s.label, anchor) {
             if end.0 >= x0 && end.0 <= x1 && end.1 >= y0 && end.1 <= y1 {
                 boxed_text(
                     &mut chart,
