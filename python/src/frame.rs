@@ -483,24 +483,35 @@ pub fn frame<'py>(
             }
         }
     };
-    let mut input = FrameInput::new(camera, light, map_resolution, image_height)
+    let input = FrameInput::new(camera, light, map_resolution, image_height)
         .scheme(fs)
         .depth_clamp(depth_clamp)
         .measure(measure)
         .centre(centre);
-    if let Some(b) = receivers.as_deref() {
+    let input = with_scene(input, receivers.as_deref(), casters.as_deref(), depth_range);
+    let f = py
+        .detach(|| build_frame(&input))
+        .map_err(|e| frame_err(e, bevy_given))?;
+    result(py, &f, depth, f32_out, pcf_radius)
+}
+
+/// `input` with the scene's receivers' and casters' boxes and depth range, where given.
+pub(crate) fn with_scene<'a>(
+    mut input: FrameInput<'a>,
+    receivers: Option<&'a [Aabb]>,
+    casters: Option<&'a [Aabb]>,
+    depth_range: Option<(f64, f64)>,
+) -> FrameInput<'a> {
+    if let Some(b) = receivers {
         input = input.receivers(SceneBound::Boxes(b));
     }
-    if let Some(b) = casters.as_deref() {
+    if let Some(b) = casters {
         input = input.casters(SceneBound::Boxes(b));
     }
     if let Some((a, b)) = depth_range {
         input = input.depth_range(a, b);
     }
-    let f = py
-        .detach(|| build_frame(&input))
-        .map_err(|e| frame_err(e, bevy_given))?;
-    result(py, &f, depth, f32_out, pcf_radius)
+    input
 }
 
 /// A clipmap's layout from the keywords (Unreal's defaults where `None`), and whether any was

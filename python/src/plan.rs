@@ -4,12 +4,12 @@
 use crate::args;
 use crate::builders::{from_rows, vec3};
 use crate::closed::choice;
-use crate::frame::{boxes, clipmap_options, depth_clamp_arg, frame_err, pair};
+use crate::frame::{boxes, clipmap_options, depth_clamp_arg, frame_err, pair, with_scene};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use shadow_aliasing::analytic::partition::SplitScheme;
-use shadow_aliasing::frame::{Bound as SceneBound, Camera, CascadeSplits, FrameInput, FrameScheme};
+use shadow_aliasing::frame::{Camera, CascadeSplits, FrameInput, FrameScheme};
 use shadow_aliasing::maps::WarpRule;
 use shadow_aliasing::plan::allocate::Rounding;
 use shadow_aliasing::plan::candidates::{
@@ -207,17 +207,9 @@ pub fn plan<'py>(
         }
     };
     let rounding = self::rounding(rounding)?;
-    let mut input =
+    let input =
         FrameInput::new(camera, light, map_resolution, image_height).depth_clamp(depth_clamp);
-    if let Some(b) = receivers.as_deref() {
-        input = input.receivers(SceneBound::Boxes(b));
-    }
-    if let Some(b) = casters.as_deref() {
-        input = input.casters(SceneBound::Boxes(b));
-    }
-    if let Some((a, b)) = depth_range {
-        input = input.depth_range(a, b);
-    }
+    let input = with_scene(input, receivers.as_deref(), casters.as_deref(), depth_range);
     let p = py
         .detach(|| plan_frame(&input, goal, rounding))
         .map_err(|e| frame_err(e, false))?;
@@ -323,17 +315,9 @@ pub fn plan_clipmap<'py>(
              page pool or a target error): give one",
         ));
     }
-    let mut input =
+    let input =
         FrameInput::new(camera, light, map_resolution, image_height).depth_clamp(depth_clamp);
-    if let Some(b) = receivers.as_deref() {
-        input = input.receivers(SceneBound::Boxes(b));
-    }
-    if let Some(b) = casters.as_deref() {
-        input = input.casters(SceneBound::Boxes(b));
-    }
-    if let Some((a, b)) = depth_range {
-        input = input.depth_range(a, b);
-    }
+    let input = with_scene(input, receivers.as_deref(), casters.as_deref(), depth_range);
     let p = py
         .detach(|| match (pool, max_error) {
             (Some(n), _) => clipmap_for_pool(&input, &opts, n),
