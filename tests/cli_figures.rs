@@ -245,18 +245,18 @@ fn bare_scale_and_dpi_for_publication() {
         "bare keeps title or caption"
     );
     assert!(svg.contains("M<tspan"), "bare lost the axis labels");
-    // Twice the pixels (the figure is 520 × 520 units, drawn at plot::PNG_ZOOM = 2 pixels per
-    // unit: 1040 × 1040), and 300 dpi = 11 811 pixels per metre.
+    // Twice the pixels (the figure is 520 × 900 units, drawn at plot::PNG_ZOOM = 2 pixels per
+    // unit: 1040 × 1800), and 300 dpi = 11 811 pixels per metre.
     let size = |b: &[u8]| {
         (
             u32::from_be_bytes(b[16..20].try_into().unwrap()),
             u32::from_be_bytes(b[20..24].try_into().unwrap()),
         )
     };
-    assert_eq!(size(&plain_png), (1040, 1040));
-    assert_eq!(size(&png), (2080, 2080));
+    assert_eq!(size(&plain_png), (1040, 1800));
+    assert_eq!(size(&png), (2080, 3600));
     assert_eq!(phys(&png), Some((11_811, 11_811, 1)));
-    assert!(svg.contains("<svg width=\"1040\" height=\"1040\" viewBox=\"0 0 520 520\""));
+    assert!(svg.contains("<svg width=\"1040\" height=\"1800\" viewBox=\"0 0 520 900\""));
     check_png(&dir.join("lloyd2006-fig6.png"));
 
     for (flag, value) in [("--scale", "0"), ("--scale", "9"), ("--dpi", "0")] {
