@@ -817,14 +817,7 @@ fn geometric_diagrams_have_equal_aspect() {
     let svg = std::fs::read_to_string(dir.join("lloyd2006-fig4.svg")).unwrap();
     let mut squares = 0;
     for t in svg.split("<polyline ").skip(1) {
-        let at = t.find("points=\"").unwrap() + 8;
-        let pts: Vec<(f64, f64)> = t[at..at + t[at..].find('"').unwrap()]
-            .split_whitespace()
-            .map(|p| {
-                let (x, y) = p.split_once(',').unwrap();
-                (x.parse().unwrap(), y.parse().unwrap())
-            })
-            .collect();
+        let pts = polyline_points(t);
         // The map's outline: a closed axis-aligned rectangle of five points.
         let rect = pts.len() == 5
             && pts[0] == pts[4]
@@ -842,6 +835,33 @@ fn geometric_diagrams_have_equal_aspect() {
         }
     }
     assert_eq!(squares, 4, "one map outline per column");
+}
+
+/// The SVGs of the figures `names`, rendered into a fresh directory `sub`.
+fn svgs(sub: &str, names: &[&'static str]) -> Vec<(&'static str, String)> {
+    let dir = out_dir(sub);
+    render_all(&dir, Format::Svg, names, |_| {}).unwrap();
+    names
+        .iter()
+        .map(|n| {
+            (
+                *n,
+                std::fs::read_to_string(dir.join(format!("{n}.svg"))).unwrap(),
+            )
+        })
+        .collect()
+}
+
+/// The points of a `<polyline>` from its attributes (`points="x,y x,y …"`).
+fn polyline_points(attrs: &str) -> Vec<(f64, f64)> {
+    let at = attrs.find("points=\"").unwrap() + 8;
+    attrs[at..at + attrs[at..].find('"').unwrap()]
+        .split_whitespace()
+        .map(|p| {
+            let (x, y) = p.split_once(',').unwrap();
+            (x.parse().unwrap(), y.parse().unwrap())
+        })
+        .collect()
 }
 
 /// A number attribute of an element's attributes (`x="12.5"`).
@@ -871,11 +891,8 @@ fn elements(svg: &str) -> Vec<(&str, &str)> {
 /// axis.
 #[test]
 fn colour_bar_labels_clear_the_bar() {
-    let dir = out_dir("figures-colour-bars");
     let names = ["lloyd2006-fig7", "martin-tan-fig6", "zhang-fig3"];
-    render_all(&dir, Format::Svg, &names, |_| {}).unwrap();
-    for name in names {
-        let svg = std::fs::read_to_string(dir.join(format!("{name}.svg"))).unwrap();
+    for (name, svg) in svgs("figures-colour-bars", &names) {
         let els = elements(&svg);
         let mut labels = 0;
         for w in els.windows(2) {
@@ -884,14 +901,7 @@ fn colour_bar_labels_clear_the_bar() {
             if t != "text" || p != "polyline" || !(start || text.contains("text-anchor=\"end\"")) {
                 continue;
             }
-            let at = line.find("points=\"").unwrap() + 8;
-            let pts: Vec<(f64, f64)> = line[at..at + line[at..].find('"').unwrap()]
-                .split_whitespace()
-                .map(|p| {
-                    let (x, y) = p.split_once(',').unwrap();
-                    (x.parse().unwrap(), y.parse().unwrap())
-                })
-                .collect();
+            let pts = polyline_points(line);
             let y = attr_num(text, "y").unwrap();
             // A tick mark: short, horizontal, pointing right, at the label's height, the label's
             // anchor right of it (a left axis's labels are left of their ticks).
@@ -987,11 +997,8 @@ fn zhang_fig3_bars_beside_their_blocks_and_apart_labels() {
 /// "texels per image pixel²"; S̄ = M_x M_z is a ratio of texel counts per pixel).
 #[test]
 fn storage_factor_is_in_texels_per_image_pixel() {
-    let dir = out_dir("figures-units");
     let names = ["lloyd2006-fig7", "lloyd2006-fig10", "lloyd2006-fig12"];
-    render_all(&dir, Format::Svg, &names, |_| {}).unwrap();
-    for name in names {
-        let svg = std::fs::read_to_string(dir.join(format!("{name}.svg"))).unwrap();
+    for (name, svg) in svgs("figures-units", &names) {
         let all: Vec<String> = texts(&svg).iter().map(|(_, c)| visible(c)).collect();
         assert!(
             all.iter().any(|t| t.contains("texels per image pixel)")),

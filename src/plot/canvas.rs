@@ -165,6 +165,22 @@ impl BackendStyle for Stroke {
 
 /// The backend of every figure: `inner` drawn at `scale` times the size the figure sees, with
 /// math typeset in text.
+/// Where a box of `w` × `h` starts relative to its anchor point: (0, 0) for the top left,
+/// (−w/2, −h/2) for the centre, (−w, −h) for the bottom right.
+pub(crate) fn anchor_offset(anchor: Pos, w: f64, h: f64) -> (f64, f64) {
+    let dx = match anchor.h_pos {
+        HPos::Left => 0.0,
+        HPos::Center => -w / 2.0,
+        HPos::Right => -w,
+    };
+    let dy = match anchor.v_pos {
+        VPos::Top => 0.0,
+        VPos::Center => -h / 2.0,
+        VPos::Bottom => -h,
+    };
+    (dx, dy)
+}
+
 pub(crate) struct Canvas<B> {
     inner: B,
     scale: i32,
@@ -354,16 +370,7 @@ impl<B: DrawingBackend> DrawingBackend for Canvas<B> {
         }
         let m = self.metrics;
         let (widths, total, height) = layout(&runs, style, s, m.advance)?;
-        let dx0 = match anchor.h_pos {
-            HPos::Left => 0.0,
-            HPos::Center => -total / 2.0,
-            HPos::Right => -total,
-        };
-        let dy0 = match anchor.v_pos {
-            VPos::Top => 0.0,
-            VPos::Center => -height / 2.0,
-            VPos::Bottom => -height,
-        };
+        let (dx0, dy0) = anchor_offset(anchor, total, height);
         let trans = style.transform();
         let place = |x: f64, y: f64| -> BackendCoord {
             let (u, v) = trans.transform((dx0 + x).round() as i32, (dy0 + y).round() as i32);

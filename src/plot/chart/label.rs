@@ -1,11 +1,12 @@
 //! Text placed at a data position of a chart on a white box, so that it stays readable over
 //! lines and fills (annotations, dimension labels).
 
+use super::super::canvas::anchor_offset;
 use super::super::Fail;
 use super::axis::Chart2d;
 use super::FONT;
 use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
+use plotters::style::text_anchor::Pos;
 
 /// The white margin around a boxed label's text, in pixels.
 pub(crate) const LABEL_PAD: i32 = 2;
@@ -28,17 +29,8 @@ pub(crate) fn boxed_text<DB: DrawingBackend>(
         .plotting_area()
         .estimate_text_size(text, &style)
         .map_err(|e| Fail::Draw(e.to_string()))?;
-    let (w, h) = (w as i32, h as i32);
-    let x0 = match pos.h_pos {
-        HPos::Left => 0,
-        HPos::Center => -w / 2,
-        HPos::Right => -w,
-    };
-    let y0 = match pos.v_pos {
-        VPos::Top => 0,
-        VPos::Center => -h / 2,
-        VPos::Bottom => -h,
-    };
+    let (dx, dy) = anchor_offset(pos, f64::from(w), f64::from(h));
+    let (x0, y0, w, h) = (dx.round() as i32, dy.round() as i32, w as i32, h as i32);
     let p = LABEL_PAD;
     chart.draw_series(std::iter::once(
         EmptyElement::at(at)
