@@ -144,7 +144,7 @@ pub const CONSTANT_BIAS: i32 = 16;
 fn bias_flags(lookup: Lookup) -> f32 {
     match lookup {
         Lookup::SecondDepth => 0.0,
-        Lookup::FirstSurface => 1.0, // SA_NORMAL_OFFSET
+        Lookup::FirstSurface => 4.0, // SA_LOCAL_NORMAL_OFFSET
     }
 }
 

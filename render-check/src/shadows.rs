@@ -6,6 +6,8 @@
 use crate::scene::{ray_occluded, Scene, SceneBox};
 use crate::schemes::{Built, View};
 use glam::{DMat4, DVec3};
+use shadow_aliasing::frame::bias::normal_offset_at;
+use shadow_aliasing::maps::ClipDepth;
 
 /// The contact band, in shadow-map texels: a pixel in a cast shadow is left out of the shadow
 /// comparison when, along the light ray the shader reads, the caster's face lies within this
@@ -78,7 +80,12 @@ pub(crate) fn shadow_decidable(
     occluded: bool,
 ) -> bool {
     let (wc, inv) = (&map.world_to_clip, &map.clip_to_world);
-    let h = *wc * (pw + nw * map.normal_offset.unwrap_or(0.0)).extend(1.0);
+    // First-surface maps: the offset this point needs (the shader's sa_local_normal_offset),
+    // the map's maximum where none suffices.
+    let offset = map.normal_offset.map_or(0.0, |max| {
+        normal_offset_at(wc, ClipDepth::ZeroToOne, res as u32, pw, nw, light, 0.0).unwrap_or(max)
+    });
+    let h = *wc * (pw + nw * offset).extend(1.0);
     if h.w <= 0.0 {
         return false;
     }

@@ -181,9 +181,13 @@ fn first_surface_maps_with_the_crates_bias_meet_every_target() {
             let r = run(&gpu, name, &scene, scheme, sizes)
                 .unwrap_or_else(|e| panic!("{name}/{}: {e}", scheme.name()));
             let m = &r.summary.measured;
+            // Every target (80 % of the shadowed pixels checked included) for every scheme: the
+            // warped maps and face partitions at the per-point normal offset
+            // (`sa_local_normal_offset`); at the record's maximum offset 21 of 36 such cases
+            // fell below 80 %.
+            let v = violations(&r.summary);
+            assert!(v.is_empty(), "{name}/{}: {v:?}", scheme.name());
             if every {
-                let v = violations(&r.summary);
-                assert!(v.is_empty(), "{name}/{}: {v:?}", scheme.name());
                 assert!(
                     m.lit_pixels_checked as f64 >= 0.9 * m.lit_pixels as f64,
                     "{:?}",
