@@ -450,16 +450,14 @@ fn lookup(
     let map = &built.maps[part];
     let offset = match render.lookup {
         Lookup::SecondDepth => 0.0,
-        Lookup::FirstSurface => shadow_aliasing::frame::bias::normal_offset_at(
+        Lookup::FirstSurface => crate::shadows::first_surface_offset(
             &(map.gpu * view.world_to_eye),
-            ClipDepth::ZeroToOne,
             res,
             pw,
             nw,
             view.light_world,
-            0.0,
-        )
-        .unwrap_or(f64::from(map.record.normal_offset)),
+            f64::from(map.record.normal_offset),
+        ),
     };
     let q = view.world_to_eye.transform_point3(pw + nw * offset);
     let h = map.gpu * q.extend(1.0);

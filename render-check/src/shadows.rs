@@ -59,8 +59,8 @@ const TEXEL_TIE: f64 = 2e-3;
 /// wrong light direction is not excused); the exact states are ray casts toward the true light.
 ///
 /// First-surface maps (`map.normal_offset` set) store the surface nearest the light along each
-/// texel's ray, and the shader looks up the point p + o n (o the crate's normal offset) at its
-/// own depth, with no other bias. Their texel is the one holding p + o n, `r` is at p + o n's
+/// texel's ray, and the shader looks up the point p + o n (o the per-point normal offset,
+/// [`first_surface_offset`]) at its own depth, with no other bias. Their texel is the one holding p + o n, `r` is at p + o n's
 /// light depth, and there is no contact band: the shadow of a caster standing on the receiver is
 /// decided (a caster within the offset of the receiver along the texel's ray is inside a box or
 /// changes an exact state, and is left out by the tests above). `q` must also lie on the pixel's
@@ -69,6 +69,21 @@ const TEXEL_TIE: f64 = 2e-3;
 /// the texel straddles that edge. A lit pixel that the lookup
 /// shadows because the offset is too small (acne: `r` below the pixel's own surface, where the ray
 /// cast finds light) is compared, and counts as a false shadow.
+/// The normal offset a first-surface lookup of the map `world_to_clip` (world or camera-relative
+/// positions, as `pw` is given) uses at `pw`: the least that keeps the lookup lit there (the
+/// shader's `sa_local_normal_offset`, `frame::bias::normal_offset_at`), the map's maximum `max`
+/// where none suffices (the shader's fallback to the record's value).
+pub(crate) fn first_surface_offset(
+    world_to_clip: &DMat4,
+    res: u32,
+    pw: DVec3,
+    nw: DVec3,
+    light: DVec3,
+    max: f64,
+) -> f64 {
+    normal_offset_at(world_to_clip, ClipDepth::ZeroToOne, res, pw, nw, light, 0.0).unwrap_or(max)
+}
+
 #[allow(clippy::too_many_arguments)] // one pixel and its map, each needed once
 pub(crate) fn shadow_decidable(
     scene: &Scene,
@@ -80,10 +95,8 @@ pub(crate) fn shadow_decidable(
     occluded: bool,
 ) -> bool {
     let (wc, inv) = (&map.world_to_clip, &map.clip_to_world);
-    // First-surface maps: the offset this point needs (the shader's sa_local_normal_offset),
-    // the map's maximum where none suffices.
     let offset = map.normal_offset.map_or(0.0, |max| {
-        normal_offset_at(wc, ClipDepth::ZeroToOne, res as u32, pw, nw, light, 0.0).unwrap_or(max)
+        first_surface_offset(wc, res as u32, pw, nw, light, max)
     });
     let h = *wc * (pw + nw * offset).extend(1.0);
     if h.w <= 0.0 {

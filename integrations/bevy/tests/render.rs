@@ -412,11 +412,16 @@ fn compare(cap: &Capture, reference: &Capture, cam: &Eye) -> Tally {
     tally
 }
 
+/// Where the PNG `name` goes: in `SHADOW_ALIASING_BEVY_IMAGES`, if it is set.
+fn image_path(name: &str) -> Option<std::path::PathBuf> {
+    let dir = std::env::var_os("SHADOW_ALIASING_BEVY_IMAGES")?;
+    Some(std::path::Path::new(&dir).join(format!("{name}.png")))
+}
+
 fn save(name: &str, cap: &Capture) {
-    let Ok(dir) = std::env::var("SHADOW_ALIASING_BEVY_IMAGES") else {
+    let Some(path) = image_path(name) else {
         return;
     };
-    let path = std::path::Path::new(&dir).join(format!("{name}.png"));
     image::save_buffer(&path, &cap.pixels, W, H, image::ExtendedColorType::Rgba8)
         .unwrap_or_else(|e| panic!("writing {}: {e}", path.display()));
 }
@@ -427,7 +432,7 @@ const CROP: (u32, u32, u32, u32) = (220, 140, 200, 150);
 const ZOOM: u32 = 3;
 
 fn save_crop(name: &str, cap: &Capture) {
-    let Ok(dir) = std::env::var("SHADOW_ALIASING_BEVY_IMAGES") else {
+    let Some(path) = image_path(name) else {
         return;
     };
     let full = image::RgbaImage::from_raw(W, H, cap.pixels.clone()).expect("W × H RGBA8");
@@ -439,7 +444,6 @@ fn save_crop(name: &str, cap: &Capture) {
         h * ZOOM,
         image::imageops::FilterType::Nearest,
     );
-    let path = std::path::Path::new(&dir).join(format!("{name}.png"));
     big.save(&path)
         .unwrap_or_else(|e| panic!("writing {}: {e}", path.display()));
 }
