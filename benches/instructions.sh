@@ -14,8 +14,8 @@ cd "$(dirname "$0")/.."
 bench=$1 filter=$2
 out=$(mktemp -d)
 # Line tables so callgrind attributes inlined code to files; a separate target dir so the
-# ordinary bench build is not invalidated.
-export CARGO_PROFILE_BENCH_DEBUG=line-tables-only CARGO_TARGET_DIR=target/prof
+# ordinary bench build is not invalidated (under $CARGO_TARGET_DIR when set, else target/).
+export CARGO_PROFILE_BENCH_DEBUG=line-tables-only CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-target}/prof"
 exe=$(cargo bench --bench "$bench" ${FEATURES:+--features "$FEATURES"} --no-run --message-format=json 2>/dev/null |
   python3 -c 'import json,sys
 for l in sys.stdin:
