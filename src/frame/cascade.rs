@@ -251,7 +251,7 @@ impl Ctx<'_, '_> {
             ylo = ylo.min(q.y);
             yhi = yhi.max(q.y);
         }
-        if let Some(p) = self.caster_extreme(&fl, body.n, |_| 1.0, 0.0)? {
+        if let Some(p) = self.caster_extreme(&fl, body.n, |_| 1.0, 0.0, &mut None)? {
             yhi = yhi.max(ls_e.y.dot(p));
         }
         // The depth range in world light y, snapped outward to whole texels of a world-fixed grid
@@ -301,7 +301,8 @@ impl Ctx<'_, '_> {
             depth_extent(pts).0,
             depth_extent(pts).1,
         );
-        self.finish(shadow, pts, s, body.focus).map(|mut m| {
+        // The world-fixed light space is not the casters' volume's.
+        self.finish(shadow, pts, s, body.focus, None).map(|mut m| {
             m.world_to_clip = world;
             Built::Map(m)
         })

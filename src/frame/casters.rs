@@ -17,13 +17,16 @@ type PolytopeClip = ConvexBody<40, 40, 96>;
 
 impl Ctx<'_, '_> {
     /// The point that can shadow B nearest the light in the warp's depth (largest (y − y₀)/w),
-    /// over every caster; `None` when there is none or casters are not needed.
+    /// over every caster; `None` when there is none or casters are not needed. `prism` holds
+    /// the prism of `fl`'s footprint once built (here, where a caster needs it, or by the caller
+    /// before), so that the caller can use it again.
     pub(super) fn caster_extreme<const N: usize>(
         &self,
         fl: &FrustumInLight<N>,
         body_len: usize,
         w_of: impl Fn(DVec3) -> f64,
         y0: f64,
+        prism: &mut Option<Prism>,
     ) -> Result<Option<DVec3>> {
         if self.input.depth_clamp {
             return Ok(None);
@@ -48,7 +51,6 @@ impl Ctx<'_, '_> {
                 }
             }
         };
-        let mut prism: Option<Prism> = None;
         let w2e = self.input.camera.world_to_eye;
         for bx in boxes {
             let c = bx.corners().map(|p| w2e.transform_point3(p));
@@ -104,7 +106,9 @@ impl Ctx<'_, '_> {
             for p in world {
                 ok &= cb.clip(it * *p, tol);
             }
-            ok &= Prism::new(fl, body_len).clip(&mut cb, tol);
+            ok &= prism
+                .get_or_insert_with(|| Prism::new(fl, body_len))
+                .clip(&mut cb, tol);
             if !ok {
                 return Err(Error::Degenerate(
                     "the casters' clipped body has more faces than the clipper holds".into(),

@@ -24,7 +24,7 @@ use crate::error::{fmt_num, Error, Result};
 use crate::frustum::LightDir;
 use crate::geom::polytope::frustum_planes;
 use crate::maps::fit::FrustumInLight;
-use crate::maps::lightspace::light_space_unit;
+use crate::maps::lightspace::{light_space_unit, LightSpace};
 use glam::{DMat4, DVec3, DVec4};
 
 /// The most planes a [`CullVolume`] holds: the casters' volume has a side plane per vertex of
@@ -114,15 +114,24 @@ fn unit(p: DVec4) -> Option<DVec4> {
 }
 
 impl Ctx<'_, '_> {
+    /// The light space the casters' volume takes B's footprint in: y toward the light, z the
+    /// view direction projected (as most warps' own, `maps::warp::rule_axis`, and the face
+    /// partitions' and TSM's casters), so that a caller's prism in it serves the volume too.
+    pub(super) fn sweep_space(&self) -> LightSpace {
+        light_space_unit(LightDir::from_unit_unchecked(self.l), DVec3::NEG_Z)
+    }
+
     /// The casters' and the receivers' culling volumes (module docs) of the map `eye_to_clip`
     /// (OpenGL depth) of the focus body `pts` (eye space), B being the slice `cover` ∩ the
-    /// receivers' bound ∩ `extra`.
+    /// receivers' bound ∩ `extra`. `prism`: the prism of B's footprint in
+    /// [`Ctx::sweep_space`] if the caller has built it (the same value this would build).
     pub(super) fn cull_volumes(
         &self,
         pts: &[DVec3],
         eye_to_clip: &DMat4,
         cover: (f64, f64),
         extra: &[DVec4],
+        prism: Option<&Prism>,
     ) -> (CullVolume, CullVolume) {
         let scale = self.scale();
         let keep = 1e-6 * scale;
@@ -160,12 +169,22 @@ impl Ctx<'_, '_> {
             }
         }
         // The sweep's sides: the prism of B's footprint, in any light space.
-        let ls = light_space_unit(LightDir::from_unit_unchecked(self.l), DVec3::NEG_Z);
-        if let Some(fl) = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, self.l, ls) {
-            for p in Prism::new(&fl, pts.len()).planes() {
-                if let Some(w) = to_world(*p) {
-                    casters.push(w);
-                }
+        let own;
+        let prism = match prism {
+            Some(p) => Some(p),
+            None => {
+                own = FrustumInLight::<MAX_BODY_VERTICES>::from_points(
+                    pts,
+                    self.l,
+                    self.sweep_space(),
+                )
+                .map(|fl| Prism::new(&fl, pts.len()));
+                own.as_ref()
+            }
+        };
+        for p in prism.map_or(&[][..], Prism::planes) {
+            if let Some(w) = to_world(*p) {
+                casters.push(w);
             }
         }
         // The map's depth range: w − z ≥ 0 (far) and, unless the device clamps depth, w + z ≥ 0.

@@ -2,6 +2,7 @@
 //! the part along the light) and its map.
 
 use super::body::{depth_extent, BodyClip};
+use super::casters::Prism;
 use super::output::{Focus, Frame};
 use super::{Built, Ctx, Slice, MAX_BODY_VERTICES, MAX_FACE_BOUND_PLANES, MAX_FACE_K};
 use crate::analytic::partition::{z_splits, SplitScheme, MAX_PARTITIONS};
@@ -117,7 +118,8 @@ impl Ctx<'_, '_> {
             return Ok(Built::None(Focus::EdgeOn));
         };
         let mut y_hi = y_hi;
-        if let Some(p) = self.caster_extreme(&fl, body.n, |_| 1.0, 0.0)? {
+        let mut sides = None;
+        if let Some(p) = self.caster_extreme(&fl, body.n, |_| 1.0, 0.0, &mut sides)? {
             y_hi = y_hi.max(ls.y.dot(p));
         }
         let fitter = PartFitter {
@@ -138,8 +140,17 @@ impl Ctx<'_, '_> {
             blend: (b, b),
         };
         // The fit measured the map anyway: its figures are reported with measurement off too.
-        let mut m =
-            self.finish_measured(shadow, Some(err), pts, &slice, body.focus, prism.as_slice())?;
+        // `ls` is the casters' volume's light space: the prism of B_i's footprint is its sides.
+        let sides = sides.get_or_insert_with(|| Prism::new(&fl, body.n));
+        let mut m = self.finish_measured(
+            shadow,
+            Some(err),
+            pts,
+            &slice,
+            body.focus,
+            prism.as_slice(),
+            Some(sides),
+        )?;
         m.face = Some(face);
         Ok(Built::Map(m))
     }

@@ -1,6 +1,7 @@
 //! The frame's outputs: a frame's maps and their focus, and how a built map is finished (its
 //! error, texel size and world → clip matrices).
 
+use super::casters::Prism;
 use super::culling::CullVolume;
 use super::{Built, Ctx, Slice, MAX_BODY_VERTICES};
 use crate::analytic::partition::MAX_PARTITIONS;
@@ -361,6 +362,7 @@ impl Ctx<'_, '_> {
         pts: &[DVec3],
         s: &Slice,
         focus: Focus,
+        prism: Option<&Prism>,
     ) -> Result<FrameMap> {
         let singular =
             || Error::Degenerate("the map is singular at a vertex of the focus body".into());
@@ -371,12 +373,15 @@ impl Ctx<'_, '_> {
             ),
             false => None,
         };
-        self.finish_measured(shadow, err, pts, s, focus, &[])
+        self.finish_measured(shadow, err, pts, s, focus, &[], prism)
     }
 
     /// [`Ctx::finish`] with the map's error over `pts` already measured (by `vertex_max` with
     /// the frame's light and tan θ, as `finish` would; `None`: not measured), B being the slice
-    /// `s.cover` ∩ the receivers' bound ∩ the planes `extra` (a face part's prism).
+    /// `s.cover` ∩ the receivers' bound ∩ the planes `extra` (a face part's prism). `prism`:
+    /// the prism of B's footprint in [`Ctx::sweep_space`] where the caller has it (the casters'
+    /// volume's sides; built here otherwise).
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn finish_measured(
         &self,
         shadow: ShadowMatrix,
@@ -385,6 +390,7 @@ impl Ctx<'_, '_> {
         s: &Slice,
         focus: Focus,
         extra: &[DVec4],
+        prism: Option<&Prism>,
     ) -> Result<FrameMap> {
         // The largest texel edge over B: clip spans 2 over the map's `res` texels.
         let res = f64::from(self.input.map_resolution);
@@ -412,7 +418,8 @@ impl Ctx<'_, '_> {
                     .into(),
             ));
         }
-        let (casters_volume, receivers_volume) = self.cull_volumes(pts, &matrix, s.cover, extra);
+        let (casters_volume, receivers_volume) =
+            self.cull_volumes(pts, &matrix, s.cover, extra, prism);
         let none = FrustumError {
             max_mx: f64::INFINITY,
             max_mz: f64::INFINITY,

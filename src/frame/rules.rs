@@ -1,7 +1,7 @@
 //! One map of a slice's focus body with a warp rule, and the trapezoidal map of B.
 
 use super::body::{depth_extent, nearest_vertex};
-use super::casters::casters_too_far;
+use super::casters::{casters_too_far, Prism};
 use super::input::WarpCentre;
 use super::output::Focus;
 use super::{Built, Ctx, Slice};
@@ -82,7 +82,8 @@ impl Ctx<'_, '_> {
         let rho = n_prime.recip();
         let w_of = |p: DVec3| 1.0 + rho * (fl.ls.z.dot(p) - fl.z0);
         let y0 = centre.map_or(0.0, |i| fl.q[i].y);
-        let caster = self.caster_extreme(&fl, body.n, w_of, y0)?;
+        let mut prism = None;
+        let caster = self.caster_extreme(&fl, body.n, w_of, y0, &mut prism)?;
         let default_centre = self.input.centre == WarpCentre::Rule;
         let shadow = if body.whole && caster.is_none() && default_centre {
             // `warp(&slice, l, rule)` itself, l normalised at the entry as `warp` does: B is the
@@ -104,7 +105,10 @@ impl Ctx<'_, '_> {
             };
             ShadowMatrix::new(matrix, LightDir::from_unit_unchecked(l), n_prime, n_b, f_b)
         };
-        self.finish(shadow, pts, s, focus).map(Built::Map)
+        // `fl` is in the casters' volume's light space unless the rule chose another axis.
+        let prism = (rule_axis(l, rule) == DVec3::NEG_Z)
+            .then(|| &*prism.get_or_insert_with(|| Prism::new(&fl, body.n)));
+        self.finish(shadow, pts, s, focus, prism).map(Built::Map)
     }
 
     /// The trapezoidal map of B, its depth row refitted to B and the casters.
@@ -150,7 +154,8 @@ impl Ctx<'_, '_> {
         // crate's warps; monotonic along each light ray, whose w is constant).
         let row3 = m.row(3);
         let w_of = |p: DVec3| row3.dot(p.extend(1.0));
-        let caster = self.caster_extreme(&fl, body.n, w_of, 0.0)?;
+        let mut prism = None;
+        let caster = self.caster_extreme(&fl, body.n, w_of, 0.0, &mut prism)?;
         let mut r = (f64::INFINITY, f64::NEG_INFINITY);
         for p in pts.iter().chain(caster.as_slice()) {
             let v = ls.y.dot(*p) / w_of(*p);
@@ -168,6 +173,9 @@ impl Ctx<'_, '_> {
             n_b,
             f_b,
         );
-        self.finish(shadow, pts, s, body.focus).map(Built::Map)
+        // `ls` is the casters' volume's light space.
+        let prism = prism.get_or_insert_with(|| Prism::new(&fl, body.n));
+        self.finish(shadow, pts, s, body.focus, Some(prism))
+            .map(Built::Map)
     }
 }
