@@ -5,7 +5,7 @@ use super::body::depth_extent;
 use super::body::Body;
 use super::equal_error::SliceMap;
 use super::input::CascadeSplits;
-use super::output::Focus;
+use super::output::{Focus, FrameMap};
 use super::{Built, Ctx, Slice, MAX_BODY_VERTICES};
 use crate::analytic::partition::{z_splits, Splits, MAX_PARTITIONS};
 use crate::error::{fmt_num, in_closed, positive, Error, Result};
@@ -197,7 +197,7 @@ fn cascade_slices(
 
 impl Ctx<'_, '_> {
     /// A stable cascade with its depth range from B and the casters.
-    pub(super) fn stable_map(&self, s: &Slice) -> Result<Built> {
+    pub(super) fn stable_map(&self, s: &Slice, dst: &mut Option<FrameMap>) -> Result<Built> {
         let body = self.body(s.cover.0, s.cover.1, &[])?;
         if body.focus == Focus::Empty || body.n == 0 {
             return Ok(Built::None(Focus::Empty));
@@ -211,7 +211,7 @@ impl Ctx<'_, '_> {
             .camera
             .eye_to_world
             .transform_point3(DVec3::new(0.0, 0.0, -c));
-        self.square_map(s, &body, cw, half, texel)
+        self.square_map(s, &body, (cw, half, texel), dst)
     }
 
     /// The map of `body` (the slice `s`'s B, not empty) on the square of half-width `half` of
@@ -223,9 +223,8 @@ impl Ctx<'_, '_> {
         &self,
         s: &Slice,
         body: &Body,
-        centre: DVec3,
-        half: f64,
-        snap: f64,
+        (centre, half, snap): (DVec3, f64, f64),
+        dst: &mut Option<FrameMap>,
     ) -> Result<Built> {
         let pts = &body.v[..body.n];
         let cam = &self.input.camera;
@@ -302,10 +301,9 @@ impl Ctx<'_, '_> {
             depth_extent(pts).1,
         );
         // The world-fixed light space is not the casters' volume's.
-        self.finish(shadow, pts, s, body.focus, None).map(|mut m| {
-            m.world_to_clip = world;
-            Built::Map(m)
-        })
+        self.finish(shadow, pts, s, body.focus, None, dst)?
+            .world_to_clip = world;
+        Ok(Built::Map)
     }
 }
 

@@ -220,24 +220,17 @@ impl Ctx<'_, '_> {
                 blend: (b, b),
             };
             let body = self.body(a, b, &[])?;
-            let built = if body.focus == Focus::Empty || body.n == 0 {
-                Built::None(Focus::Empty)
-            } else {
-                match self.square_map(
-                    &s,
-                    &body,
-                    camera,
-                    opts.half_width(level),
-                    choice.page(level),
-                )? {
-                    Built::Map(mut m) => {
-                        m.clipmap_level = Some(level);
-                        Built::Map(m)
-                    }
-                    none => none,
+            out.push_with(|dst| {
+                if body.focus == Focus::Empty || body.n == 0 {
+                    return Ok(Built::None(Focus::Empty));
                 }
-            };
-            out.push(built);
+                let square = (camera, opts.half_width(level), choice.page(level));
+                let built = self.square_map(&s, &body, square, dst)?;
+                if let (Built::Map, Some(m)) = (&built, dst) {
+                    m.clipmap_level = Some(level);
+                }
+                Ok(built)
+            })?;
         }
         out.settle();
         Ok(())

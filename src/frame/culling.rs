@@ -44,7 +44,7 @@ pub struct CullVolume {
 }
 
 impl CullVolume {
-    const EMPTY: Self = Self {
+    pub(super) const EMPTY: Self = Self {
         planes: [DVec4::ZERO; MAX_CULL_PLANES],
         len: 0,
     };
@@ -99,6 +99,18 @@ impl CullVolume {
         Ok(out)
     }
 
+    /// Starts the volume over in place (the planes are written by [`CullVolume::push`], the
+    /// unused tail zeroed by [`CullVolume::seal`]).
+    fn clear(&mut self) {
+        self.len = 0;
+    }
+
+    /// Zeroes the planes past `len`: the volume is then the one pushed onto [`CullVolume::EMPTY`],
+    /// whatever it held before.
+    fn seal(&mut self) {
+        self.planes[self.len..].fill(DVec4::ZERO);
+    }
+
     fn push(&mut self, p: DVec4) {
         if self.len < MAX_CULL_PLANES && p.is_finite() {
             self.planes[self.len] = p;
@@ -123,16 +135,17 @@ impl Ctx<'_, '_> {
 
     /// The casters' and the receivers' culling volumes (module docs) of the map `eye_to_clip`
     /// (OpenGL depth) of the focus body `pts` (eye space), B being the slice `cover` ∩ the
-    /// receivers' bound ∩ `extra`. `prism`: the prism of B's footprint in
+    /// receivers' bound ∩ `extra`, into `casters` and `receivers` (in place: whatever they held
+    /// before, the result is the same). `prism`: the prism of B's footprint in
     /// [`Ctx::sweep_space`] if the caller has built it (the same value this would build).
     pub(super) fn cull_volumes(
         &self,
         pts: &[DVec3],
         eye_to_clip: &DMat4,
-        cover: (f64, f64),
-        extra: &[DVec4],
-        prism: Option<&Prism>,
-    ) -> (CullVolume, CullVolume) {
+        (cover, extra, prism): ((f64, f64), &[DVec4], Option<&Prism>),
+        casters: &mut CullVolume,
+        receivers: &mut CullVolume,
+    ) {
         let scale = self.scale();
         let keep = 1e-6 * scale;
         let slack = 1e-9 * scale;
@@ -151,7 +164,8 @@ impl Ctx<'_, '_> {
             .chain(&self.planes.p[..self.planes.n])
             .chain(extra)
             .filter_map(|p| unit(*p));
-        let (mut casters, mut receivers) = (CullVolume::EMPTY, CullVolume::EMPTY);
+        casters.clear();
+        receivers.clear();
         for p in bounds {
             let n = p.truncate();
             let nearest = pts
@@ -197,6 +211,7 @@ impl Ctx<'_, '_> {
                 casters.push(w);
             }
         }
-        (casters, receivers)
+        casters.seal();
+        receivers.seal();
     }
 }

@@ -94,13 +94,14 @@ impl Ctx<'_, '_> {
             split: (a, b),
             blend: (b, b),
         };
+        let mut map = None;
         let built = match how {
-            SliceMap::Rule(rule) => self.map(&s, rule)?,
-            SliceMap::Stable => self.stable_map(&s)?,
+            SliceMap::Rule(rule) => self.map(&s, rule, &mut map)?,
+            SliceMap::Stable => self.stable_map(&s, &mut map)?,
         };
-        Ok(match built {
-            Built::Map(m) => m.max_mx.max(m.max_mz),
-            Built::None(_) => 0.0,
+        Ok(match (built, map) {
+            (Built::Map, Some(m)) => m.max_mx.max(m.max_mz),
+            _ => 0.0,
         })
     }
 

@@ -3,7 +3,7 @@
 
 use super::body::{depth_extent, BodyClip};
 use super::casters::Prism;
-use super::output::{Focus, Frame};
+use super::output::{Focus, Frame, FrameMap};
 use super::{Built, Ctx, Slice, MAX_BODY_VERTICES, MAX_FACE_BOUND_PLANES, MAX_FACE_K};
 use crate::analytic::partition::{z_splits, SplitScheme, MAX_PARTITIONS};
 use crate::error::{Error, Result};
@@ -82,7 +82,7 @@ impl Ctx<'_, '_> {
                     depths: (a, b),
                     spaces: &spaces,
                 };
-                out.push(self.face_part(&part, &receivers, (y_lo, y_hi), rule)?);
+                out.push_with(|dst| self.face_part(&part, &receivers, (y_lo, y_hi), rule, dst))?;
             }
         }
         out.settle();
@@ -98,6 +98,7 @@ impl Ctx<'_, '_> {
         receivers: &BodyClip,
         (y_lo, y_hi): (f64, f64),
         rule: FaceWarp,
+        dst: &mut Option<FrameMap>,
     ) -> Result<Built> {
         let FacePart {
             face,
@@ -142,7 +143,7 @@ impl Ctx<'_, '_> {
         // The fit measured the map anyway: its figures are reported with measurement off too.
         // `ls` is the casters' volume's light space: the prism of B_i's footprint is its sides.
         let sides = sides.get_or_insert_with(|| Prism::new(&fl, body.n));
-        let mut m = self.finish_measured(
+        self.finish_measured(
             shadow,
             Some(err),
             pts,
@@ -150,9 +151,10 @@ impl Ctx<'_, '_> {
             body.focus,
             prism.as_slice(),
             Some(sides),
-        )?;
-        m.face = Some(face);
-        Ok(Built::Map(m))
+            dst,
+        )?
+        .face = Some(face);
+        Ok(Built::Map)
     }
 }
 

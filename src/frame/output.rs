@@ -322,25 +322,31 @@ impl Frame {
         self.resolution = resolution;
     }
 
-    /// Puts the next partition's outcome into slot `k` (`None` where no map is needed), saying
-    /// whether a map is bit for bit the slot's previous one.
-    pub(super) fn push(&mut self, m: Built) {
+    /// Builds the next partition's outcome into slot `k` (`build` writes a map into the slot it
+    /// is given and says so with [`Built::Map`]; `None` where no map is needed), saying whether a
+    /// map is bit for bit the slot's previous one. Built in place: a [`FrameMap`] is 4.8 KB.
+    pub(super) fn push_with(
+        &mut self,
+        build: impl FnOnce(&mut Option<FrameMap>) -> Result<Built>,
+    ) -> Result<()> {
         let prev = match &self.maps[self.k] {
             Some(p) if self.k < self.prev_k => Some(p.world_to_clip),
             _ => None,
         };
-        self.maps[self.k] = match m {
-            Built::Map(mut m) => {
+        let slot = &mut self.maps[self.k];
+        match (build(slot)?, slot) {
+            (Built::Map, Some(m)) => {
                 self.len += 1;
                 m.unchanged = prev.is_some_and(|p| same_bits(&p, &m.world_to_clip));
-                Some(m)
             }
-            Built::None(f) => {
-                self.none_edge_on |= f == Focus::EdgeOn;
-                None
+            // (A builder that says `Map` has filled the slot: only `None` comes here.)
+            (built, slot) => {
+                *slot = None;
+                self.none_edge_on |= matches!(built, Built::None(Focus::EdgeOn));
             }
-        };
+        }
         self.k += 1;
+        Ok(())
     }
 
     /// The frame's focus once every partition is in: the first built map's, or why none was
@@ -356,14 +362,15 @@ impl Frame {
 }
 
 impl Ctx<'_, '_> {
-    pub(super) fn finish(
+    pub(super) fn finish<'d>(
         &self,
         shadow: ShadowMatrix,
         pts: &[DVec3],
         s: &Slice,
         focus: Focus,
         prism: Option<&Prism>,
-    ) -> Result<FrameMap> {
+        dst: &'d mut Option<FrameMap>,
+    ) -> Result<&'d mut FrameMap> {
         let singular =
             || Error::Degenerate("the map is singular at a vertex of the focus body".into());
         let err = match self.input.measures() {
@@ -373,7 +380,7 @@ impl Ctx<'_, '_> {
             ),
             false => None,
         };
-        self.finish_measured(shadow, err, pts, s, focus, &[], prism)
+        self.finish_measured(shadow, err, pts, s, focus, &[], prism, dst)
     }
 
     /// [`Ctx::finish`] with the map's error over `pts` already measured (by `vertex_max` with
@@ -382,7 +389,7 @@ impl Ctx<'_, '_> {
     /// the prism of B's footprint in [`Ctx::sweep_space`] where the caller has it (the casters'
     /// volume's sides; built here otherwise).
     #[allow(clippy::too_many_arguments)]
-    pub(super) fn finish_measured(
+    pub(super) fn finish_measured<'d>(
         &self,
         shadow: ShadowMatrix,
         err: Option<FrustumError>,
@@ -391,7 +398,8 @@ impl Ctx<'_, '_> {
         focus: Focus,
         extra: &[DVec4],
         prism: Option<&Prism>,
-    ) -> Result<FrameMap> {
+        dst: &'d mut Option<FrameMap>,
+    ) -> Result<&'d mut FrameMap> {
         // The largest texel edge over B: clip spans 2 over the map's `res` texels.
         let res = f64::from(self.input.map_resolution);
         let matrix = shadow.matrix();
@@ -401,8 +409,6 @@ impl Ctx<'_, '_> {
             .fold(0.0f64, |a, (es, et)| a.max(es).max(et))
             * 2.0
             / res;
-        let mut body = [DVec3::ZERO; MAX_BODY_VERTICES];
-        body[..pts.len()].copy_from_slice(pts);
         let image = f64::from(self.input.image_height);
         // The matrices a renderer uploads, in every depth convention, must be finite in f64 and
         // in the GPU's f32 (a camera far from the world origin scales its translation past them).
@@ -418,35 +424,62 @@ impl Ctx<'_, '_> {
                     .into(),
             ));
         }
-        let (casters_volume, receivers_volume) =
-            self.cull_volumes(pts, &matrix, s.cover, extra, prism);
         let none = FrustumError {
             max_mx: f64::INFINITY,
             max_mz: f64::INFINITY,
             storage_factor: f64::INFINITY,
         };
-        Ok(FrameMap {
-            world_to_clip,
+        // Written into the slot field by field (a reused `Frame` holds one already): every field,
+        // and the arrays' unused tails zeroed, so that the map is the same whatever the slot held.
+        let m = dst.get_or_insert_with(|| FrameMap {
             shadow,
+            world_to_clip,
             split: s.split,
             blend: s.blend,
             texel_world: texel,
-            max_mx: err.unwrap_or(none).max_mx,
-            max_mz: err.unwrap_or(none).max_mz,
-            storage_factor: err.unwrap_or(none).storage_factor,
-            max_error_pixels: err.map_or(f64::INFINITY, |e| e.max_mx.max(e.max_mz) * image / res),
+            max_mx: f64::INFINITY,
+            max_mz: f64::INFINITY,
+            storage_factor: f64::INFINITY,
+            max_error_pixels: f64::INFINITY,
             focus,
             face: None,
             clipmap_level: None,
-            world_to_eye: self.input.camera.world_to_eye,
-            body,
-            body_len: pts.len(),
-            casters_volume,
-            receivers_volume,
+            world_to_eye,
+            body: [DVec3::ZERO; MAX_BODY_VERTICES],
+            body_len: 0,
+            casters_volume: CullVolume::EMPTY,
+            receivers_volume: CullVolume::EMPTY,
             unchanged: false,
-            measured: err.is_some(),
+            measured: false,
             resolution: self.input.map_resolution,
-        })
+        });
+        m.shadow = shadow;
+        m.world_to_clip = world_to_clip;
+        m.split = s.split;
+        m.blend = s.blend;
+        m.texel_world = texel;
+        m.max_mx = err.unwrap_or(none).max_mx;
+        m.max_mz = err.unwrap_or(none).max_mz;
+        m.storage_factor = err.unwrap_or(none).storage_factor;
+        m.max_error_pixels = err.map_or(f64::INFINITY, |e| e.max_mx.max(e.max_mz) * image / res);
+        m.focus = focus;
+        m.face = None;
+        m.clipmap_level = None;
+        m.world_to_eye = world_to_eye;
+        m.body[..pts.len()].copy_from_slice(pts);
+        m.body[pts.len()..].fill(DVec3::ZERO);
+        m.body_len = pts.len();
+        self.cull_volumes(
+            pts,
+            &matrix,
+            (s.cover, extra, prism),
+            &mut m.casters_volume,
+            &mut m.receivers_volume,
+        );
+        m.unchanged = false;
+        m.measured = err.is_some();
+        m.resolution = self.input.map_resolution;
+        Ok(m)
     }
 }
 

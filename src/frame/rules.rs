@@ -3,7 +3,7 @@
 use super::body::{depth_extent, nearest_vertex};
 use super::casters::{casters_too_far, Prism};
 use super::input::WarpCentre;
-use super::output::Focus;
+use super::output::{Focus, FrameMap};
 use super::{Built, Ctx, Slice};
 use crate::error::Result;
 use crate::frustum::{LightDir, NPrime};
@@ -15,7 +15,12 @@ use crate::maps::{ShadowMatrix, TsmOptions, WarpRule};
 use glam::{DVec3, DVec4};
 
 impl Ctx<'_, '_> {
-    pub(super) fn map(&self, s: &Slice, rule: WarpRule) -> Result<Built> {
+    pub(super) fn map(
+        &self,
+        s: &Slice,
+        rule: WarpRule,
+        dst: &mut Option<FrameMap>,
+    ) -> Result<Built> {
         let body = self.body(s.cover.0, s.cover.1, &[])?;
         if body.focus == Focus::Empty || body.n == 0 {
             return Ok(Built::None(Focus::Empty));
@@ -108,11 +113,17 @@ impl Ctx<'_, '_> {
         // `fl` is in the casters' volume's light space unless the rule chose another axis.
         let prism = (rule_axis(l, rule) == DVec3::NEG_Z)
             .then(|| &*prism.get_or_insert_with(|| Prism::new(&fl, body.n)));
-        self.finish(shadow, pts, s, focus, prism).map(Built::Map)
+        self.finish(shadow, pts, s, focus, prism, dst)?;
+        Ok(Built::Map)
     }
 
     /// The trapezoidal map of B, its depth row refitted to B and the casters.
-    pub(super) fn tsm_map(&self, s: &Slice, opts: TsmOptions) -> Result<Built> {
+    pub(super) fn tsm_map(
+        &self,
+        s: &Slice,
+        opts: TsmOptions,
+        dst: &mut Option<FrameMap>,
+    ) -> Result<Built> {
         let sub_full = self.view.with_depth_range(s.cover.0, s.cover.1)?;
         validate_tsm(&sub_full, &opts)?;
         let body = self.body(s.cover.0, s.cover.1, &[])?;
@@ -175,7 +186,7 @@ impl Ctx<'_, '_> {
         );
         // `ls` is the casters' volume's light space.
         let prism = prism.get_or_insert_with(|| Prism::new(&fl, body.n));
-        self.finish(shadow, pts, s, body.focus, Some(prism))
-            .map(Built::Map)
+        self.finish(shadow, pts, s, body.focus, Some(prism), dst)?;
+        Ok(Built::Map)
     }
 }
