@@ -1030,3 +1030,247 @@ fn lloyd2005_fig4_labels_its_curves_directly() {
         assert!(attrs.contains("text-anchor=\"end\""), "{label}: {attrs}");
     }
 }
+
+/// A text's box in SVG units (x0, y0, x1, y1) from its anchor, baseline shift and size, with
+/// DejaVu Sans' advances (digits 0.636 em, a space 0.318 em, other characters about 0.6 em) and
+/// the line from 0.76 em above the baseline to 0.24 em below it.
+fn text_box(attrs: &str, content: &str) -> (f64, f64, f64, f64) {
+    let fs = attr_num(attrs, "font-size").unwrap();
+    let (x, y) = (attr_num(attrs, "x").unwrap(), attr_num(attrs, "y").unwrap());
+    let base = y + match attrs
+        .split("dy=\"")
+        .nth(1)
+        .and_then(|v| v.split('"').next())
+    {
+        Some("0.76em") => 0.76 * fs,
+        Some("0.5ex") => 0.27 * fs,
+        Some("-0.5ex") => -0.27 * fs,
+        other => panic!("unknown baseline shift {other:?}"),
+    };
+    let w: f64 = content
+        .chars()
+        .map(|c| match c {
+            '0'..='9' => 0.636,
+            ' ' => 0.318,
+            _ => 0.6,
+        })
+        .sum::<f64>()
+        * fs;
+    let x0 = if attrs.contains("text-anchor=\"middle\"") {
+        x - w / 2.0
+    } else if attrs.contains("text-anchor=\"end\"") {
+        x - w
+    } else {
+        x
+    };
+    (x0, base - 0.76 * fs, x0 + w, base + 0.24 * fs)
+}
+
+/// Every straight piece of line an SVG draws: its polylines' segments and its lines.
+fn line_segments(svg: &str) -> Vec<((f64, f64), (f64, f64))> {
+    let mut out = Vec::new();
+    for (tag, attrs) in elements(svg) {
+        if tag == "polyline" {
+            let pts = polyline_points(attrs);
+            out.extend(pts.windows(2).map(|w| (w[0], w[1])));
+        } else if tag == "line" {
+            let n = |k: &str| attr_num(attrs, k).unwrap();
+            out.push(((n("x1"), n("y1")), (n("x2"), n("y2"))));
+        }
+    }
+    out
+}
+
+/// Whether the segment meets the box (Liang–Barsky clipping).
+fn crosses(((x1, y1), (x2, y2)): ((f64, f64), (f64, f64)), b: (f64, f64, f64, f64)) -> bool {
+    let (dx, dy) = (x2 - x1, y2 - y1);
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-dx, x1 - b.0),
+        (dx, b.2 - x1),
+        (-dy, y1 - b.1),
+        (dy, b.3 - y1),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return false;
+            }
+        } else if p < 0.0 {
+            t0 = t0.max(q / p);
+        } else {
+            t1 = t1.min(q / p);
+        }
+    }
+    t0 <= t1
+}
+
+/// The boxes of the texts of `svg` that read as one of `labels` (not rotated), with the text;
+/// with `left_aligned`, only those anchored at their start (not the axes' tick labels, which
+/// are centred or right-aligned).
+fn label_boxes(
+    svg: &str,
+    labels: &[&str],
+    left_aligned: bool,
+) -> Vec<(String, (f64, f64, f64, f64))> {
+    texts(svg)
+        .into_iter()
+        .filter(|(a, _)| !a.contains("rotate("))
+        .filter(|(a, _)| !left_aligned || a.contains("text-anchor=\"start\""))
+        .filter_map(|(a, c)| {
+            let v = visible(c);
+            labels
+                .contains(&v.trim())
+                .then(|| (v.trim().to_string(), text_box(a, &v)))
+        })
+        .collect()
+}
+
+/// Issue 25: labels cover no line and no other label. lloyd2006-fig11's plane and dimension
+/// labels (2n tan θ sat on the nearest map's outline and the frustum's edges, the planes'
+/// labels on the edges at the sections' corners), barroso-fig5's plane labels (on the maps'
+/// outlines), and martin-tan-fig3's legend entries (drawn over panel (a), the axis-aligned
+/// box's dotted outline ran under them).
+#[test]
+fn labels_cover_no_line_and_no_label() {
+    let cases: [(&str, &[&str]); 3] = [
+        (
+            "lloyd2006-fig11",
+            &["n = 1", "z = 2", "z = 4", "f = 8", "2n tan θ", "2f tan θ"],
+        ),
+        (
+            "barroso-fig5",
+            &["31.623", "10", "3.162", "40.811", "16.13", "6.041"],
+        ),
+        (
+            "martin-tan-fig3",
+            &[
+                "frustum E",
+                "hull C",
+                "focus region",
+                "trapezoid T",
+                "min-area box B",
+                "axis-aligned box",
+            ],
+        ),
+    ];
+    let names: Vec<&'static str> = cases.iter().map(|c| c.0).collect();
+    for ((name, svg), (_, labels)) in svgs("figures-label-lines", &names).iter().zip(cases) {
+        // barroso-fig5's labels are numbers: only the left-aligned ones, not the tick labels.
+        let boxes = label_boxes(svg, labels, *name == "barroso-fig5");
+        assert!(boxes.len() >= labels.len(), "{name}: {boxes:?}");
+        let segments = line_segments(svg);
+        for (text, b) in &boxes {
+            for s in &segments {
+                assert!(
+                    !crosses(*s, *b),
+                    "{name}: {text:?} at {b:?} covers the line {s:?}"
+                );
+            }
+        }
+        for (i, (t, a)) in boxes.iter().enumerate() {
+            for (u, b) in &boxes[i + 1..] {
+                let apart = a.2 <= b.0 || b.2 <= a.0 || a.3 <= b.1 || b.3 <= a.1;
+                assert!(apart, "{name}: {t:?} {a:?} overlaps {u:?} {b:?}");
+            }
+        }
+    }
+}
+
+/// Issue 25: lloyd2005-fig8's 2048 × 2048 texture is drawn square (it was 1.46 : 1): the
+/// partitions' outlined rectangles tile a region as wide as it is high.
+#[test]
+fn lloyd2005_fig8_texture_is_square() {
+    let (_, svg) = &svgs("figures-fig8", &["lloyd2005-fig8"])[0];
+    let rects: Vec<(f64, f64, f64, f64)> = elements(svg)
+        .into_iter()
+        .filter(|(t, a)| *t == "rect" && a.contains("fill=\"none\" stroke=\"#000000\""))
+        .map(|(_, a)| {
+            let n = |k: &str| attr_num(a, k).unwrap();
+            (n("x"), n("y"), n("x") + n("width"), n("y") + n("height"))
+        })
+        .collect();
+    assert!(rects.len() >= 7, "{rects:?}");
+    let x0 = rects.iter().map(|r| r.0).fold(f64::INFINITY, f64::min);
+    let y0 = rects.iter().map(|r| r.1).fold(f64::INFINITY, f64::min);
+    let x1 = rects.iter().map(|r| r.2).fold(f64::NEG_INFINITY, f64::max);
+    let y1 = rects.iter().map(|r| r.3).fold(f64::NEG_INFINITY, f64::max);
+    let ratio = (x1 - x0) / (y1 - y0);
+    assert!((ratio - 1.0).abs() < 0.01, "the texture drawn {ratio} : 1");
+}
+
+/// Issue 25: no ASCII hyphen-minus stands for a minus sign ("η = -0.6" in lloyd2006-fig4): in
+/// these figures no text has a hyphen-minus before a digit; and barroso-fig5's panel titles
+/// carry one letter each (its zoom was titled "(d) (a) …").
+#[test]
+fn minus_signs_and_panel_letters() {
+    let names = [
+        "lloyd2005-fig8",
+        "lloyd2006-fig4",
+        "martin-tan-fig3",
+        "lloyd2006-fig11",
+        "barroso-fig5",
+        "barroso-fig7",
+        "zhang-fig3",
+    ];
+    for (name, svg) in svgs("figures-minus", &names) {
+        for (_, c) in texts(&svg) {
+            let v = visible(c);
+            let chars: Vec<char> = v.chars().collect();
+            assert!(
+                !chars
+                    .windows(2)
+                    .any(|w| w[0] == '-' && w[1].is_ascii_digit()),
+                "{name}: {v:?} has a hyphen-minus for a minus sign"
+            );
+        }
+        if name == "barroso-fig5" {
+            let titles: Vec<String> = texts(&svg)
+                .iter()
+                .map(|(_, c)| visible(c))
+                .filter(|v| v.starts_with('('))
+                .collect();
+            for letter in ["(a)", "(b)", "(c)", "(d)"] {
+                let n = titles.iter().filter(|t| t.starts_with(letter)).count();
+                assert_eq!(n, 1, "{letter}: {titles:?}");
+            }
+            assert!(titles.iter().all(|t| !t.contains(") (")), "{titles:?}");
+        }
+    }
+}
+
+/// Issue 25: lloyd2006-fig4 in two rows of four (the paper's arrangement; it was four rows of
+/// two, 520 × 1560): the four maps' square outlines side by side in one row, the page no taller
+/// than 1.2 times its width.
+#[test]
+fn lloyd2006_fig4_two_rows_of_four() {
+    let (_, svg) = &svgs("figures-fig4", &["lloyd2006-fig4"])[0];
+    let view: Vec<f64> = svg
+        .split("viewBox=\"")
+        .nth(1)
+        .unwrap()
+        .split('"')
+        .next()
+        .unwrap()
+        .split(' ')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    assert!(view[3] <= 1.2 * view[2], "{view:?}");
+    let mut tops = Vec::new();
+    for t in svg.split("<polyline ").skip(1) {
+        let pts = polyline_points(t);
+        let square = pts.len() == 5
+            && pts[0] == pts[4]
+            && pts[0].1 == pts[1].1
+            && pts[1].0 == pts[2].0
+            && (pts[1].0 - pts[0].0).abs() > 40.0;
+        if square {
+            tops.push((pts[0].0.min(pts[1].0), pts[0].1.min(pts[2].1)));
+        }
+    }
+    assert_eq!(tops.len(), 4, "{tops:?}");
+    assert!(
+        tops.iter().all(|t| (t.1 - tops[0].1).abs() < 1.0),
+        "{tops:?}"
+    );
+    assert!(tops.windows(2).all(|w| w[1].0 > w[0].0 + 40.0), "{tops:?}");
+}

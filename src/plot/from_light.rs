@@ -10,7 +10,8 @@
 //! overlap of the maps shows.
 
 use super::chart::{
-    boxed_text, build_chart_styled, clip_polyline, equal_aspect, frame, Axis, ChartStyle, PALETTE,
+    boxed_text, build_chart_styled, clip_polyline, equal_aspect, frame, Axis, ChartStyle, FONT,
+    PALETTE,
 };
 use super::{Fail, Figure};
 use crate::analytic::partition::{z_splits, SplitScheme};
@@ -36,6 +37,8 @@ pub(super) struct Panel {
     pub plane_labels: Vec<String>,
     /// Dimension lines: from, to, the label (centred under the line).
     pub dims: Vec<(DVec2, DVec2, String)>,
+    /// Extension lines from the measured feature to its dimension line.
+    pub extensions: Vec<[DVec2; 2]>,
 }
 
 pub(super) struct FromLight {
@@ -83,6 +86,7 @@ fn panel(view: &ViewFrustum, light: DVec3, planes: &[f64], title: String) -> Res
         planes: planes.to_vec(),
         window: None,
         dims: Vec::new(),
+        extensions: Vec::new(),
     })
 }
 
@@ -137,7 +141,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         &view,
         overhead,
         ss.planes(),
-        "(d) (a) near the eye, enlarged".into(),
+        "(d) detail of (a): z ≤ 10".into(),
     )?;
     zoom.window = Some((lo, hi));
     let panels = vec![
@@ -152,7 +156,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         zoom,
     ];
     let caption = format!(
-        "Barroso & Celes 2007, Fig. 5: the view frustum seen by the light, with k = 4 z-partitions (n = 1, f = 100, φ = 30°). (a) Light perpendicular to the view direction (overhead) and (b) parallel to it (behind the viewer), with the self-similar partitions of Eq 5, as in the paper: split planes z = {}. (c) Not in the paper's figure: the adaptive partitions of Eq 19 for a light 45° above the view direction (from behind, travelling forward and down; α = {ADAPTIVE_RATIO}): z = {}. (d) The nearest two partitions of (a) enlarged. Solid: the frustum's edges and the split planes' cross-sections, labelled with their depth z; dashed: each partition's orthographic map (its light-space bounding rectangle). Computed from analytic::partition::z_splits; the paper's figure is a sketch.",
+        "Barroso & Celes 2007, Fig. 5: the view frustum seen by the light, with k = 4 z-partitions (n = 1, f = 100, φ = 30°). (a) Light perpendicular to the view direction (overhead) and (b) parallel to it (behind the viewer), with the self-similar partitions of Eq 5, as in the paper: split planes z = {}. (c) Not in the paper's figure: the adaptive partitions of Eq 19 for a light 45° above the view direction (from behind, travelling forward and down; α = {ADAPTIVE_RATIO}): z = {}. (d) Detail of (a) near the eye: the nearest two partitions enlarged. Solid: the frustum's edges and the split planes' cross-sections, each labelled with its depth z right of the panel at the height of its right end; dashed: each partition's orthographic map (its light-space bounding rectangle). Computed from analytic::partition::z_splits; the paper's figure is a sketch.",
         fmt_planes(ss.planes()),
         fmt_planes(ad.planes())
     );
@@ -160,7 +164,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         title: "The view frustum seen from the light, with z-partitions",
         caption,
         panels,
-        size: (520, 860),
+        size: (520, 760),
     })
 }
 
@@ -191,10 +195,18 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
         view.near() * view.tan_half_fov(),
         view.far() * view.tan_half_fov(),
     );
+    // The near face's dimension line lies in the band between the planes z = 2 and z = 4,
+    // carried there by extension lines from the face's corners, so that its label covers no
+    // line (issue 25: under the face it sat on the frustum's edges and the nearest map).
+    let near_dim = -1.35;
+    p.extensions = vec![
+        [DVec2::new(-sn, -sn), DVec2::new(-sn, near_dim)],
+        [DVec2::new(sn, -sn), DVec2::new(sn, near_dim)],
+    ];
     p.dims = vec![
         (
-            DVec2::new(-sn, -sn - 0.25),
-            DVec2::new(sn, -sn - 0.25),
+            DVec2::new(-sn, near_dim),
+            DVec2::new(sn, near_dim),
             "2n tan θ".into(),
         ),
         (
@@ -205,15 +217,48 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
     ];
     p.window = Some((DVec2::new(-sf, -sf - 1.2), DVec2::new(sf, sf)));
     let caption = format!(
-        "Lloyd et al. 2006, Fig. 11: the view frustum seen by the light behind the viewer (n = 1, f = 8, θ = 30°): the near face (side 2n tan θ) inside the far face (2f tan θ), the four side faces as trapezoids between them. With k = 3 self-similar z-partitions (planes {}) each partition's map (dashed) is the square of its far plane, so the maps overlap: the nearer ones lie inside the farther ones, the overlap §5.3 blames for ZP's growth behind. A face partitioning gives each side face its own map (FP+ZP+W). Labelled as the paper's sketch: the near and far planes n and f, the split planes by depth, and the faces' sides 2n tan θ and 2f tan θ (the paper writes 2n and 2f, their values at θ = 45°). Unlike the paper, the figure is to scale and f/n = 8, so that the near face shows.",
+        "Lloyd et al. 2006, Fig. 11: the view frustum seen by the light behind the viewer (n = 1, f = 8, θ = 30°): the near face (side 2n tan θ) inside the far face (2f tan θ), the four side faces as trapezoids between them. With k = 3 self-similar z-partitions (planes {}) each partition's map (dashed) is the square of its far plane, so the maps overlap: the nearer ones lie inside the farther ones, the overlap §5.3 blames for ZP's growth behind. A face partitioning gives each side face its own map (FP+ZP+W). Labelled as the paper's sketch: the near and far planes n and f and the split planes by depth (right of the panel, at the height of each square's top edge), and the faces' sides 2n tan θ and 2f tan θ (the paper writes 2n and 2f, their values at θ = 45°). Unlike the paper, the figure is to scale and f/n = 8, so that the near face shows.",
         fmt_planes(p.planes.as_slice())
     );
     Ok(FromLight {
         title: "The view frustum seen from a light behind the viewer",
         caption,
         panels: vec![p],
-        size: (520, 640),
+        size: (520, 700),
     })
+}
+
+/// The width of the gutter right of each panel that holds the split planes' labels.
+const GUTTER: u32 = 50;
+
+/// The least vertical distance between two labels in the gutter, in pixels.
+const LABEL_STEP: i32 = 16;
+
+/// The labels' heights (backend pixels, `wanted`, any order) moved apart so that neighbours are
+/// at least `step` apart, each as close to its wanted height as that allows, all within
+/// `range` (relative to `base`, the gutter's top): the wanted heights are clamped, then pushed
+/// down from the top and back up from the bottom.
+fn spread(wanted: &[i32], step: i32, range: (i32, i32), base: i32) -> Vec<i32> {
+    let mut order: Vec<usize> = (0..wanted.len()).collect();
+    order.sort_by_key(|&i| wanted[i]);
+    let (lo, hi) = (base + range.0, base + range.1);
+    let mut ys: Vec<i32> = order.iter().map(|&i| wanted[i].clamp(lo, hi)).collect();
+    for k in 1..ys.len() {
+        ys[k] = ys[k].max(ys[k - 1] + step);
+    }
+    for k in (0..ys.len()).rev() {
+        let cap = if k + 1 < ys.len() {
+            ys[k + 1] - step
+        } else {
+            hi
+        };
+        ys[k] = ys[k].min(cap);
+    }
+    let mut out = vec![0; wanted.len()];
+    for (k, &i) in order.iter().enumerate() {
+        out[i] = ys[k];
+    }
+    out
 }
 
 impl Figure for FromLight {
@@ -227,9 +272,16 @@ impl Figure for FromLight {
         let cells = body.split_evenly((self.panels.len().div_ceil(columns), columns));
         let style = ChartStyle {
             title_size: 15,
+            y_label_area: 50,
             ..ChartStyle::default()
         };
-        for (cell, p) in cells.iter().zip(&self.panels) {
+        for (whole, p) in cells.iter().zip(&self.panels) {
+            // The split planes' labels go in a gutter right of the plot, where they cover no
+            // line (issue 25: at the sections' ends they sat on the frustum's edges and the
+            // maps' outlines).
+            let (cw, _) = whole.dim_in_pixel();
+            let (cell, gutter) = whole.split_horizontally(cw - GUTTER);
+            let cell = &cell;
             let (lo, hi) = p.window.unwrap_or_else(|| {
                 p.sections.iter().flatten().fold(
                     (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
@@ -295,8 +347,10 @@ impl Figure for FromLight {
                     chart.draw_series(DashedLineSeries::new(piece, 7, 5, c.stroke_width(2)))?;
                 }
             }
-            // Each split plane labelled with its depth, at its cross-section's right end, where
-            // that lies in the window and the section is not too small to tell apart.
+            // Each split plane labelled in the gutter at the height of its cross-section's
+            // right end (its top-right corner where two ends tie), marked by a tick on the
+            // plot's right edge; labels too close are spread apart, each joined to its tick.
+            let mut marks = Vec::new();
             for (sec, label) in p.sections.iter().zip(&p.plane_labels) {
                 let right = sec.iter().copied().fold(sec[0], |a, q| {
                     if q.x > a.x || (q.x == a.x && q.y > a.y) {
@@ -309,15 +363,51 @@ impl Figure for FromLight {
                     .iter()
                     .fold(0.0f64, |m, q| m.max((*q - sec[0]).length()));
                 if inside(right) && size > 0.06 * (xa.max - xa.min) {
-                    boxed_text(
-                        &mut chart,
-                        (right.x, right.y),
-                        &format!(" {label}"),
-                        Pos::new(HPos::Left, VPos::Center),
-                        13,
-                        BLACK,
-                    )?;
+                    marks.push((chart.backend_coord(&(xa.max, right.y)).1, label.clone()));
                 }
+            }
+            // Where the drawing ends on the right: a light leader runs from there to each tick,
+            // through empty space.
+            let drawn = p
+                .sections
+                .iter()
+                .flatten()
+                .map(|q| q.x)
+                .chain(p.maps.iter().map(|m| m.1.x))
+                .fold(f64::NEG_INFINITY, f64::max)
+                .min(xa.max);
+            let (gx, gy) = gutter.get_base_pixel();
+            let (wx, wy) = whole.get_base_pixel();
+            let (_, gh) = gutter.dim_in_pixel();
+            let ys = spread(
+                &marks.iter().map(|m| m.0).collect::<Vec<_>>(),
+                LABEL_STEP,
+                (8, gh as i32 - 8),
+                gy,
+            );
+            let style =
+                TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+            let grey = RGBColor(90, 90, 90);
+            for ((tick_y, label), y) in marks.iter().zip(ys) {
+                let ty = tick_y - gy;
+                let from = chart.backend_coord(&(drawn, ya.min)).0 + 4;
+                if from < gx {
+                    whole.draw(&PathElement::new(
+                        vec![(from - wx, tick_y - wy), (gx - wx, tick_y - wy)],
+                        RGBColor(175, 175, 175).stroke_width(1),
+                    ))?;
+                }
+                gutter.draw(&PathElement::new(
+                    vec![(0, ty), (5, ty), (11, y - gy)],
+                    grey.stroke_width(1),
+                ))?;
+                gutter.draw(&Text::new(label.clone(), (13, y - gy), style.clone()))?;
+            }
+            for [from, to] in &p.extensions {
+                chart.draw_series(LineSeries::new(
+                    [(from.x, from.y), (to.x, to.y)],
+                    RGBColor(90, 90, 90).stroke_width(1),
+                ))?;
             }
             // Dimension lines: the line with a bar at each end, its label centred below.
             for (a, b, text) in &p.dims {
@@ -329,7 +419,8 @@ impl Figure for FromLight {
                         BLACK.stroke_width(1),
                     ))?;
                 }
-                let mid = 0.5 * (*a + *b) - n;
+                // The label below the bars' ends, with room for its white margin.
+                let mid = 0.5 * (*a + *b) - 1.6 * n;
                 boxed_text(
                     &mut chart,
                     (mid.x, mid.y),

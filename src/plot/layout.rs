@@ -1,16 +1,20 @@
-//! Lloyd et al. 2005 Fig 8(c): the texture layout of a face-partitioned, z-partitioned scheme.
-//! The crate's scheme ([`crate::scheme::scheme`], face partitions with k z-partitions
-//! each, LiSPSM-warped) is measured per partition and packed into one texture by
-//! [`crate::scheme::SchemeResult::atlas`] (Lloyd 2005 Eq 6: the width split among the
-//! face pairs by their largest M_x, each column's height among its members by M_z).
+//! Lloyd et al. 2005 Fig 8: (a) the face partitions seen from the light, (b) one partition's
+//! warped map over it, (c) the texture layout. The crate's scheme ([`crate::scheme::scheme`], face
+//! partitions with k z-partitions each, LiSPSM-warped) is measured per partition and packed into
+//! one texture by [`crate::scheme::SchemeResult::atlas`] (Lloyd 2005 Eq 6: the width split among
+//! the face pairs by their largest M_x, each column's height among its members by M_z).
 
-use super::chart::{build_chart, frame, Axis, FONT, PALETTE};
+use super::chart::{
+    build_chart_styled, equal_aspect, frame, linspace, Axis, ChartStyle, FONT, PALETTE,
+};
+use super::warp_grid::minus;
 use super::{Fail, Figure};
 use crate::maps::atlas::Viewport;
-use crate::maps::WarpRule;
+use crate::maps::faces::Face;
+use crate::maps::{light_space, WarpRule};
 use crate::scheme::{scheme, Partition, Region};
 use crate::ViewFrustum;
-use glam::DVec3;
+use glam::{DMat3, DMat4, DVec2, DVec3};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -18,10 +22,45 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 /// Texture size in texels.
 pub(super) const SIZE: u32 = 2048;
 
+/// The light: elevation above the horizon and azimuth round from straight behind the viewer
+/// towards its right, in degrees. Nearly behind, so that the left and right faces are both seen
+/// and have different M_z (the paper's "trade off between opposite sides").
+pub(super) const LIGHT: (f64, f64) = (35.0, 10.0);
+
+/// The far plane (n = 1): f/n = 10, so that the near z-partitions, a factor √10 smaller than
+/// the far ones, still show in panel (a).
+const FAR: f64 = 10.0;
+
+/// Lines of the map's texel grid drawn in panel (b), per direction.
+const GRID: usize = 9;
+
+/// One partition: where it lies in the texture and seen from the light.
+pub(super) struct Cell {
+    pub viewport: Viewport,
+    /// Its short tag (R1, L2, N: face initial and z-partition) and its face and depth range.
+    pub tag: String,
+    pub label: String,
+    pub mx: f64,
+    pub mz: f64,
+    /// Its face part's corners seen from the light (light-space x, z).
+    pub outline: Vec<DVec2>,
+    /// Its map (eye → light clip).
+    pub matrix: DMat4,
+}
+
 pub(super) struct Fig8 {
-    /// (viewport, label, M_x, M_z) per partition.
-    pub cells: Vec<(Viewport, String, f64, f64)>,
+    pub cells: Vec<Cell>,
     pub k: usize,
+    /// The light-space frame of panels (a) and (b): eye-space x, y (toward the light), z axes.
+    pub frame: [DVec3; 3],
+    /// The partition whose map panel (b) draws.
+    pub shown: usize,
+}
+
+/// A depth with at most two decimals, trailing zeros dropped.
+fn fmt_depth(z: f64) -> String {
+    let s = format!("{z:.2}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
 fn face_name(r: Region) -> &'static str {
@@ -32,64 +71,243 @@ fn face_name(r: Region) -> &'static str {
 }
 
 pub(super) fn fig8() -> Result<Fig8, Fail> {
-    let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians())?;
-    // A light in general position: 35° above the horizon, 60° to the viewer's right of straight
-    // behind.
-    let (el, az) = (35f64.to_radians(), 60f64.to_radians());
+    let view = ViewFrustum::new(1.0, FAR, 30f64.to_radians())?;
+    let (el, az) = (LIGHT.0.to_radians(), LIGHT.1.to_radians());
     let light = -DVec3::new(el.cos() * az.sin(), el.sin(), el.cos() * az.cos());
     let k = 2;
     let s = scheme(&view, light, WarpRule::Lispsm, Partition::Faces, k)?;
     let atlas = s.atlas(SIZE, SIZE)?;
-    let cells = s
-        .partitions()
-        .iter()
-        .zip(atlas.viewports())
-        .map(|(p, v)| {
-            let depth = if p.far > p.near {
-                format!("z {:.3}–{:.3}", p.near, p.far).replace(".000", "")
-            } else {
-                String::new()
-            };
+    let ls = light_space(light, DVec3::NEG_Z)?;
+    let mut count = std::collections::HashMap::new();
+    let mut cells = Vec::new();
+    for (p, v) in s.partitions().iter().zip(atlas.viewports()) {
+        let face = match p.region {
+            Region::Face(f) => f,
+            Region::Frustum => Face::Near,
+        };
+        let name = face_name(p.region);
+        let (tag, label) = if p.far > p.near {
+            let i = count.entry(name).or_insert(0);
+            *i += 1;
             (
-                *v,
-                format!("{} {depth}", face_name(p.region)),
-                p.max_mx,
-                p.max_mz,
+                format!("{}{i}", name[..1].to_uppercase()),
+                minus(&format!(
+                    "{name}, z {}–{}",
+                    fmt_depth(p.near),
+                    fmt_depth(p.far)
+                )),
             )
-        })
-        .collect();
-    Ok(Fig8 { cells, k })
+        } else {
+            ("N".to_string(), format!("{name} face"))
+        };
+        let outline = face
+            .vertices(&view, p.near, p.far)
+            .iter()
+            .map(|&c| {
+                let l = ls.to_light(c);
+                DVec2::new(l.x, l.z)
+            })
+            .collect();
+        cells.push(Cell {
+            viewport: *v,
+            tag,
+            label,
+            mx: p.max_mx,
+            mz: p.max_mz,
+            outline,
+            matrix: p.matrix,
+        });
+    }
+    // Panel (b) shows the far part of the right face.
+    let shown = cells.iter().position(|c| c.tag == "R2").unwrap_or(0);
+    Ok(Fig8 {
+        cells,
+        k,
+        frame: [ls.x, ls.y, ls.z],
+        shown,
+    })
+}
+
+impl Fig8 {
+    /// The map of partition `i` on the light's view: light-space (x, z) ↦ its map's (u, v), a
+    /// 2D projective map (the map's u and v are constant along the light, so any light-space
+    /// height gives the same one; the eye's, 0, is used).
+    pub(super) fn light_to_map(&self, i: usize) -> DMat3 {
+        let m = self.cells[i].matrix;
+        let [x, _, z] = self.frame;
+        let col = |v: glam::DVec4| DVec3::new(v.x, v.y, v.w);
+        DMat3::from_cols(
+            col(m * x.extend(0.0)),
+            col(m * z.extend(0.0)),
+            col(m * glam::DVec4::W),
+        )
+    }
+}
+
+fn apply(h: &DMat3, p: DVec2) -> DVec2 {
+    let q = *h * p.extend(1.0);
+    DVec2::new(q.x / q.z, q.y / q.z)
 }
 
 impl Figure for Fig8 {
     fn size(&self) -> (u32, u32) {
-        (520, 640)
+        (520, 1180)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let shown = &self.cells[self.shown];
         let caption = format!(
-            "Lloyd et al. 2005, Fig. 8(c): the texture layout of face partitioning with k = {} z-partitions per face, LiSPSM-warped (n = 1, f = 100, θ = 30°; light 35° above the horizon, 60° to the right of straight behind), from scheme::scheme and SchemeResult::atlas ({SIZE} × {SIZE} texels). Eq 6: the width is shared among the face pairs (left/right, bottom/top, near) by their largest M_x, each column's height among its partitions by M_z, so that the error after allocation is equal. Each rectangle gives its face, depth range, M_x and M_z (unit resolutions), its share of the texture's width × height and the error after allocation, M_x and M_z over those shares: the x error is equal in every rectangle, the z error within each column. Unlike the paper, the self-similar z-partitions of a face have equal M_z, so a column's heights are equal here. Panels (a) and (b) of the paper are sketches; the frustum seen from the light is drawn in barroso-fig5 and lloyd2006-fig11, the warped grids in lloyd2006-fig4.",
-            self.k
+            "Lloyd et al. 2005, Fig. 8, computed: face partitioning with k = {} z-partitions per face, LiSPSM-warped (n = 1, f = {FAR}, θ = 30°; light {}° above the horizon, {}° to the right of straight behind, so that the left, right, top and near faces are seen), from scheme::scheme and SchemeResult::atlas. (a) The partitions seen from the light (R: right, L: left, T: top, N: near face; 1 near, 2 far), coloured as in (c). (b) {}: its map's texel grid over it (every eighth of the map, blue; the outermost lines are the map's border): the warp's perspective makes the texels converge. (c) The {SIZE} × {SIZE} texture by Eq 6: the width is shared among the face pairs (left/right, bottom/top, near) by their largest M_x, each column's height among its partitions by M_z, so that the error after allocation is equal. Each rectangle gives its partition, M_x and M_z (unit resolutions), its share of the texture's width × height and the error after allocation (M_x and M_z over those shares): the z error is equal within each column, and the x error is equal across columns for each column's largest M_x (a column's partition of smaller M_x, here the right face's, is below it). The left and right faces differ in M_z, so their heights differ; the self-similar z-partitions of one face have equal M_z and equal heights. Unlike the paper, whose panels are sketches, (a) and (b) are drawn to scale in the light's view, (b) shows one partition in light space instead of each in a canonical space, and the texture's width, not its height, is shared by M_x (the paper splits its t direction by M_x first, then s by M_z: the same rule with the axes named the other way).",
+            self.k,
+            LIGHT.0,
+            LIGHT.1,
+            shown.tag,
         );
         let body = frame(
             root,
-            "Texture layout of the subdivisions",
+            "Partitions, warp and texture layout",
             &[caption.as_str()],
         )?;
+        let (bw, _) = body.dim_in_pixel();
+        let (top, bottom) = body.split_vertically(bw / 2);
+        let halves = top.split_evenly((1, 2));
+        let style = ChartStyle {
+            title_size: 15,
+            x_label_area: 40,
+            y_label_area: 48,
+            tick_size: 13,
+            desc_size: 13,
+            margin: 6,
+        };
+        self.draw_faces(&halves[0], &style)?;
+        self.draw_warp(&halves[1], &style)?;
+        self.draw_texture(&bottom)
+    }
+}
+
+impl Fig8 {
+    /// The bounding box of some light-space points, widened by 6 % on each side.
+    fn window(points: impl Iterator<Item = DVec2>) -> (DVec2, DVec2) {
+        let (lo, hi) = points.fold(
+            (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+            |(lo, hi), p| (lo.min(p), hi.max(p)),
+        );
+        let pad = 0.06 * (hi - lo).max_element();
+        (lo - pad, hi + pad)
+    }
+
+    /// (a): every partition's face part seen from the light, filled in its colour, with its tag.
+    fn draw_faces<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        style: &ChartStyle,
+    ) -> Result<(), Fail> {
+        let (lo, hi) = Self::window(self.cells.iter().flat_map(|c| c.outline.iter().copied()));
+        let title = "(a) seen from the light";
+        let (xa, ya) = equal_aspect(
+            area,
+            title,
+            &Axis::linear("light x", lo.x, hi.x),
+            &Axis::linear("light z", lo.y, hi.y),
+            style,
+        )?;
+        let mut chart = build_chart_styled(area, title, &xa, &ya, false, style)?;
+        for (i, c) in self.cells.iter().enumerate() {
+            let pts: Vec<(f64, f64)> = c.outline.iter().map(|p| (p.x, p.y)).collect();
+            let colour = PALETTE[i % PALETTE.len()];
+            chart.draw_series(std::iter::once(Polygon::new(
+                pts.clone(),
+                colour.mix(0.35).filled(),
+            )))?;
+            let mut closed = pts;
+            closed.push(closed[0]);
+            chart.draw_series(LineSeries::new(closed, BLACK.stroke_width(1)))?;
+        }
+        // Tags at the parts' centres, last so that no fill covers them.
+        let tag_style =
+            TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Center));
+        for c in &self.cells {
+            let mid = c.outline.iter().copied().sum::<DVec2>() / c.outline.len() as f64;
+            chart.draw_series(std::iter::once(Text::new(
+                c.tag.clone(),
+                (mid.x, mid.y),
+                tag_style.clone(),
+            )))?;
+        }
+        Ok(())
+    }
+
+    /// (b): one partition with its map's texel grid and border, in the light's view.
+    fn draw_warp<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        style: &ChartStyle,
+    ) -> Result<(), Fail> {
+        let cell = &self.cells[self.shown];
+        let to_map = self.light_to_map(self.shown);
+        let to_light = to_map.inverse();
+        let border: Vec<DVec2> = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+            .iter()
+            .map(|&(u, v)| apply(&to_light, DVec2::new(u, v)))
+            .collect();
+        let (lo, hi) = Self::window(cell.outline.iter().chain(&border).copied());
+        let title = format!("(b) the map of {}", cell.tag);
+        let (xa, ya) = equal_aspect(
+            area,
+            &title,
+            &Axis::linear("light x", lo.x, hi.x),
+            &Axis::linear("light z", lo.y, hi.y),
+            style,
+        )?;
+        let mut chart = build_chart_styled(area, &title, &xa, &ya, false, style)?;
+        let pts: Vec<(f64, f64)> = cell.outline.iter().map(|p| (p.x, p.y)).collect();
+        chart.draw_series(std::iter::once(Polygon::new(
+            pts.clone(),
+            PALETTE[self.shown % PALETTE.len()].mix(0.35).filled(),
+        )))?;
+        for c in linspace(-1.0, 1.0, GRID) {
+            for (a, b) in [((c, -1.0), (c, 1.0)), ((-1.0, c), (1.0, c))] {
+                let (p, q) = (
+                    apply(&to_light, DVec2::new(a.0, a.1)),
+                    apply(&to_light, DVec2::new(b.0, b.1)),
+                );
+                chart.draw_series(LineSeries::new(
+                    [(p.x, p.y), (q.x, q.y)],
+                    PALETTE[0].stroke_width(1),
+                ))?;
+            }
+        }
+        let mut closed = pts;
+        closed.push(closed[0]);
+        chart.draw_series(LineSeries::new(closed, BLACK.stroke_width(2)))?;
+        Ok(())
+    }
+
+    /// (c): the texture, square, each partition's rectangle with its numbers.
+    fn draw_texture<DB: DrawingBackend>(&self, body: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let n = f64::from(SIZE);
-        let mut chart = build_chart(
-            &body,
-            "",
+        let style = ChartStyle {
+            title_size: 15,
+            ..ChartStyle::default()
+        };
+        let title = "(c) the texture layout by Eq 6";
+        // Equal aspect: the square texture drawn square.
+        let (xa, ya) = equal_aspect(
+            body,
+            title,
             &Axis::linear("s (texels)", 0.0, n),
             &Axis::linear("t (texels)", 0.0, n),
-            false,
+            &style,
         )?;
-        for (i, (v, label, mx, mz)) in self.cells.iter().enumerate() {
+        let mut chart = build_chart_styled(body, title, &xa, &ya, false, &style)?;
+        for (i, c) in self.cells.iter().enumerate() {
+            let v = c.viewport;
+            let (mx, mz) = (c.mx, c.mz);
             let (x0, y0) = (f64::from(v.x), f64::from(v.y));
             let (x1, y1) = (x0 + f64::from(v.width), y0 + f64::from(v.height));
-            let c = PALETTE[i % PALETTE.len()];
+            let colour = PALETTE[i % PALETTE.len()];
             chart.draw_series([
-                Rectangle::new([(x0, y0), (x1, y1)], c.mix(0.25).filled()),
+                Rectangle::new([(x0, y0), (x1, y1)], colour.mix(0.35).filled()),
                 Rectangle::new([(x0, y0), (x1, y1)], BLACK.stroke_width(1)),
             ])?;
             // The error after allocation: each partition's M_x and M_z over its share of the
@@ -97,7 +315,7 @@ impl Figure for Fig8 {
             // second within a column).
             let (sw, sh) = ((x1 - x0) / n, (y1 - y0) / n);
             let mut lines = vec![
-                label.clone(),
+                format!("{}: {}", c.tag, c.label),
                 format!("M_x {mx:.2}, M_z {mz:.2}"),
                 format!("share {:.0} % × {:.0} %", 100.0 * sw, 100.0 * sh),
                 format!("after: {:.2} × {:.2}", mx / sw, mz / sh),
@@ -106,7 +324,7 @@ impl Figure for Fig8 {
             let narrow = sw < 0.25;
             if narrow {
                 lines = vec![
-                    format!("{}: M_x {mx:.2}, M_z {mz:.2}", label.trim()),
+                    format!("{}: {}, M_x {mx:.2}, M_z {mz:.2}", c.tag, c.label),
                     format!(
                         "share {:.0} % × {:.0} %, after: {:.2} × {:.2}",
                         100.0 * sw,
@@ -116,22 +334,22 @@ impl Figure for Fig8 {
                     ),
                 ];
             }
-            let mut style =
+            let mut text =
                 TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Center));
             if narrow {
-                style = style.transform(FontTransform::Rotate270);
+                text = text.transform(FontTransform::Rotate270);
             }
             let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
-            let step = 0.045 * n;
+            // Lines 16 pixels apart, in texels.
+            let step = 16.0 * n / f64::from(chart.plotting_area().dim_in_pixel().1);
             for (j, line) in lines.iter().enumerate() {
                 let off = (0.5 * (lines.len() - 1) as f64 - j as f64) * step;
                 let at = if narrow {
-                    // Rotated: successive lines step to the right.
-                    (cx - off * 0.8, cy)
+                    (cx - off, cy)
                 } else {
                     (cx, cy + off)
                 };
-                chart.draw_series(std::iter::once(Text::new(line.clone(), at, style.clone())))?;
+                chart.draw_series(std::iter::once(Text::new(minus(line), at, text.clone())))?;
             }
         }
         Ok(())
@@ -151,12 +369,15 @@ mod tests {
         let total: u64 = fig
             .cells
             .iter()
-            .map(|c| u64::from(c.0.width) * u64::from(c.0.height))
+            .map(|c| u64::from(c.viewport.width) * u64::from(c.viewport.height))
             .sum();
         assert_eq!(total, u64::from(SIZE) * u64::from(SIZE));
         let mut columns: std::collections::BTreeMap<u32, Vec<(u32, f64)>> = Default::default();
-        for (v, _, _, mz) in &fig.cells {
-            columns.entry(v.x).or_default().push((v.height, *mz));
+        for c in &fig.cells {
+            columns
+                .entry(c.viewport.x)
+                .or_default()
+                .push((c.viewport.height, c.mz));
         }
         assert!(columns.len() >= 2);
         for members in columns.values() {
@@ -176,13 +397,14 @@ mod tests {
         let fig = fig8().map_err(|e| e.named("lloyd2005-fig8")).unwrap();
         let n = f64::from(SIZE);
         let mut columns: std::collections::BTreeMap<u32, (f64, Vec<f64>)> = Default::default();
-        for (v, _, mx, mz) in &fig.cells {
-            let e = columns.entry(v.x).or_insert((0.0, Vec::new()));
-            e.0 = e.0.max(*mx);
-            e.1.push(mz / (f64::from(v.height) / n));
+        for c in &fig.cells {
+            let e = columns.entry(c.viewport.x).or_insert((0.0, Vec::new()));
+            e.0 = e.0.max(c.mx);
+            e.1.push(c.mz / (f64::from(c.viewport.height) / n));
         }
         let want_x: f64 = columns.values().map(|c| c.0).sum();
-        for (v, _, mx, _) in &fig.cells {
+        for c in &fig.cells {
+            let (v, mx) = (&c.viewport, &c.mx);
             let col_max = columns[&v.x].0;
             let after = col_max / (f64::from(v.width) / n);
             assert!(
@@ -196,6 +418,63 @@ mod tests {
                 zs.iter().all(|z| (z - zs[0]).abs() < 0.01 * zs[0]),
                 "{zs:?}"
             );
+        }
+    }
+
+    /// Issue 25: the paper's rule (heights by each partition's error) shows: the light sees the
+    /// left and right faces, whose M_z differ, so the left/right column's heights differ by
+    /// more than a third, and each column's heights still sum to the texture (Eq 6's shares).
+    #[test]
+    fn heights_differ_where_m_z_differs() {
+        let fig = fig8().map_err(|e| e.named("lloyd2005-fig8")).unwrap();
+        let mut columns: std::collections::BTreeMap<u32, Vec<&Cell>> = Default::default();
+        for c in &fig.cells {
+            columns.entry(c.viewport.x).or_default().push(c);
+        }
+        let pair = columns
+            .values()
+            .find(|m| {
+                m.iter().any(|c| c.tag.starts_with('L')) && m.iter().any(|c| c.tag.starts_with('R'))
+            })
+            .expect("a column with the left and right faces");
+        let (l, r) = (
+            pair.iter().find(|c| c.tag == "L1").unwrap(),
+            pair.iter().find(|c| c.tag == "R1").unwrap(),
+        );
+        let (hl, hr) = (f64::from(l.viewport.height), f64::from(r.viewport.height));
+        assert!(hr > 1.33 * hl, "right {hr} vs left {hl}");
+        // Eq 6 by hand: height ∝ M_z within the column.
+        assert!((hr / hl - r.mz / l.mz).abs() < 0.01 * r.mz / l.mz);
+        for members in columns.values() {
+            let sum: u32 = members.iter().map(|c| c.viewport.height).sum();
+            assert_eq!(sum, SIZE);
+        }
+        let widths: u32 = columns.values().map(|m| m[0].viewport.width).sum();
+        assert_eq!(widths, SIZE);
+    }
+
+    /// Panel (b)'s map of light-space (x, z) to (u, v) is the partition's matrix: a point and
+    /// the same point moved along the light map to one (u, v) (computed with the matrix here),
+    /// the map equals the matrix's at the part's corners, and the part lies inside the map.
+    #[test]
+    fn panel_b_map_is_the_partitions_matrix() {
+        let fig = fig8().map_err(|e| e.named("lloyd2005-fig8")).unwrap();
+        let view = ViewFrustum::new(1.0, FAR, 30f64.to_radians()).unwrap();
+        let h = fig.light_to_map(fig.shown);
+        let cell = &fig.cells[fig.shown];
+        assert_eq!(cell.tag, "R2");
+        let [x, y, z] = fig.frame;
+        for corner in Face::Right.vertices(&view, FAR.sqrt(), FAR) {
+            let clip = |p: DVec3| {
+                let c = cell.matrix * p.extend(1.0);
+                DVec2::new(c.x / c.w, c.y / c.w)
+            };
+            let along = clip(corner - 5.0 * y);
+            let direct = clip(corner);
+            assert!((along - direct).length() < 1e-9, "{along} vs {direct}");
+            let via = apply(&h, DVec2::new(x.dot(corner), z.dot(corner)));
+            assert!((via - direct).length() < 1e-9, "{via} vs {direct}");
+            assert!(direct.abs().max_element() <= 1.0 + 1e-9);
         }
     }
 }

@@ -11,6 +11,7 @@ use crate::ViewFrustum;
 use glam::{DMat3, DVec2, DVec3};
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// The focus distance δ beyond the near plane (as in Martin–Tan Fig 6).
 const FOCUS: f64 = super::zhang::TSM_FOCUS;
@@ -258,9 +259,52 @@ impl Fig3 {
     }
 }
 
+/// The legend strip's height: two rows of entries.
+const LEGEND_H: u32 = 44;
+
+/// The legend, one entry per shape in the colours and strokes of every panel, in two rows of
+/// three under panel (a) (issue 25: drawn inside (a), its box covered part of the drawing).
+fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+    let entries: [(&str, RGBColor, Option<Stroke>); 6] = [
+        ("frustum E", EDGE, Some(Stroke::Solid)),
+        ("hull C", HULL, None),
+        ("focus region", FOCUS_C, Some(Stroke::Solid)),
+        ("trapezoid T", TRAP, Some(Stroke::Solid)),
+        ("min-area box B", MIN_BOX, Some(Stroke::Dashed)),
+        ("axis-aligned box", AXIS_BOX, Some(Stroke::Dotted)),
+    ];
+    let (w, _) = area.dim_in_pixel();
+    let col_w = (w as i32 - 20) / 3;
+    let style = TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+    for (i, (label, colour, stroke)) in entries.into_iter().enumerate() {
+        let (x, y) = (10 + (i as i32 % 3) * col_w, 11 + (i as i32 / 3) * 20);
+        let pieces: [(i32, i32); 4] = match stroke {
+            None => [(0, 0); 4],
+            Some(Stroke::Solid) => [(0, 22); 4],
+            Some(Stroke::Dashed) => [(0, 8), (13, 22), (13, 22), (13, 22)],
+            Some(Stroke::Dotted) => [(0, 2), (7, 9), (14, 16), (20, 22)],
+        };
+        if stroke.is_none() {
+            area.draw(&Rectangle::new(
+                [(x, y - 6), (x + 22, y + 6)],
+                HULL.mix(0.45).filled(),
+            ))?;
+        } else {
+            for (a, b) in pieces {
+                area.draw(&PathElement::new(
+                    vec![(x + a, y), (x + b, y)],
+                    colour.stroke_width(2),
+                ))?;
+            }
+        }
+        area.draw(&Text::new(label, (x + 28, y), style.clone()))?;
+    }
+    Ok(())
+}
+
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
-        (520, 1420)
+        (520, 1460)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -281,6 +325,8 @@ impl Figure for Fig3 {
             &[caption.as_str()],
         )?;
         let (top, rest) = body.split_vertically(body.dim_in_pixel().1 * 2 / 5);
+        // The legend in a strip of its own under (a), where it covers nothing.
+        let (strip, rest) = rest.split_vertically(LEGEND_H);
         let panels = rest.split_evenly((2, 1));
         let style = ChartStyle::default();
         // (a) Light space, equal aspect.
@@ -313,51 +359,7 @@ impl Figure for Fig3 {
         let (b0, b1) = self.bbox;
         let axis_box = [b0, DVec2::new(b1.x, b0.y), b1, DVec2::new(b0.x, b1.y)];
         outline(&mut chart, &axis_box, AXIS_BOX, Stroke::Dotted)?;
-        // The legend: one entry per shape, in the colours and strokes of every panel.
-        let entries: [(&str, RGBColor, Option<Stroke>); 6] = [
-            ("frustum E", EDGE, Some(Stroke::Solid)),
-            ("hull C", HULL, None),
-            ("focus region", FOCUS_C, Some(Stroke::Solid)),
-            ("trapezoid T", TRAP, Some(Stroke::Solid)),
-            ("min-area box B", MIN_BOX, Some(Stroke::Dashed)),
-            ("axis-aligned box", AXIS_BOX, Some(Stroke::Dotted)),
-        ];
-        for (label, colour, stroke) in entries {
-            chart
-                .draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())?
-                .label(label)
-                .legend(move |at| {
-                    let pieces: [(i32, i32); 4] = match stroke {
-                        None => [(0, 0); 4],
-                        Some(Stroke::Solid) => [(0, 22), (0, 22), (0, 22), (0, 22)],
-                        Some(Stroke::Dashed) => [(0, 8), (13, 22), (13, 22), (13, 22)],
-                        Some(Stroke::Dotted) => [(0, 2), (7, 9), (14, 16), (20, 22)],
-                    };
-                    let line = if stroke.is_some() { colour } else { HULL };
-                    let seg = |(a, b): (i32, i32)| {
-                        PathElement::new(vec![(a, 0), (b, 0)], line.stroke_width(2))
-                    };
-                    let fill = if stroke.is_none() {
-                        HULL.mix(0.45).filled()
-                    } else {
-                        TRANSPARENT.filled()
-                    };
-                    EmptyElement::at(at)
-                        + Rectangle::new([(0, -6), (22, 6)], fill)
-                        + seg(pieces[0])
-                        + seg(pieces[1])
-                        + seg(pieces[2])
-                        + seg(pieces[3])
-                });
-        }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.9))
-            .border_style(RGBColor(120, 120, 120))
-            .label_font((FONT, 13))
-            .margin(6)
-            .draw()?;
+        draw_legend(&strip)?;
         // (b), (c): the two normalised spaces; the map square in the colour of its shape.
         for (panel, h, title, colour, stroke) in [
             (

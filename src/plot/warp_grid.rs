@@ -9,7 +9,8 @@
 //! inverse.
 
 use super::chart::{
-    build_chart, clip_polyline, equal_aspect, frame, linspace, Axis, ChartStyle, PALETTE,
+    build_chart_styled, clip_polyline, equal_aspect, frame, linspace, Axis, ChartStyle, FONT,
+    PALETTE,
 };
 use super::{Fail, Figure, UNIT_SQUARE};
 use crate::analytic::eta::n_prime_from_eta;
@@ -18,6 +19,7 @@ use crate::ViewFrustum;
 use glam::{DMat3, DVec3};
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// Grid lines per direction.
 const LINES: usize = 12;
@@ -93,11 +95,12 @@ pub(super) fn fig4() -> Result<Fig4, Fail> {
                 map.push([p, q]);
             }
         }
+        // Two heading lines (split at "\n"); negative η with the minus sign U+2212.
         let name = match np.as_finite() {
-            None => "n′ = ∞ (η = −1, uniform)".to_string(),
-            Some(v) if eta == 0.0 => format!("n′ = {v:.2} (η = 0, LiSPSM)"),
-            Some(v) if eta == 1.0 => format!("n′ = n = {v:.0} (η = 1, PSM)"),
-            Some(v) => format!("n′ = {v:.2} (η = {eta})"),
+            None => "η = −1 (uniform)\nn′ = ∞".to_string(),
+            Some(v) if eta == 0.0 => format!("η = 0 (LiSPSM)\nn′ = {v:.2}"),
+            Some(v) if eta == 1.0 => format!("η = 1 (PSM)\nn′ = n = {v:.0}"),
+            Some(v) => minus(&format!("η = {eta}\nn′ = {v:.2}")),
         };
         columns.push(Column {
             title: name,
@@ -109,9 +112,23 @@ pub(super) fn fig4() -> Result<Fig4, Fail> {
     Ok(Fig4 { view, columns })
 }
 
+/// The figure's text with every hyphen-minus before a digit written as the minus sign U+2212.
+pub(super) fn minus(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut chars = text.chars().peekable();
+    while let Some(c) = chars.next() {
+        if c == '-' && chars.peek().is_some_and(char::is_ascii_digit) {
+            out.push('−');
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
 impl Figure for Fig4 {
     fn size(&self) -> (u32, u32) {
-        (520, 1560)
+        (520, 600)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -119,16 +136,24 @@ impl Figure for Fig4 {
             root,
             "Perspective warping: the shadow map's grid as n′ decreases from ∞ to n, light overhead",
             &[
-                "Lloyd et al. 2006, Fig. 4 (n = 1, f = 10, θ = 30°), from the crate's built matrices (maps::warp with WarpRule::Eta) on the plane y = 0. Left: seen from the light, the map's 12 × 12 texel grid (blue) over the view frustum (black); the warp compresses it towards the near plane. Right: in the shadow map, the frustum's own grid (planes of constant depth, orange, and rays from the eye, green) stretched to fill the map. The paper draws the same two rows (here columns) as sketches.",
+                "Lloyd et al. 2006, Fig. 4 (n = 1, f = 10, θ = 30°), from the crate's built matrices (maps::warp with WarpRule::Eta) on the plane y = 0; one column per n′. Top row: seen from the light (depth z across, eye-space x up), the map's 12 × 12 texel grid (blue) over the view frustum (black); the warp compresses it towards the near plane. Bottom row: in the shadow map (u across, v up), the frustum's own grid (planes of constant depth, orange, and rays from the eye, green) stretched to fill the map. The paper draws the same two rows as sketches.",
             ],
         )?;
-        // One row per n′: the light's view on the left, the map on the right.
-        let rows = body.split_evenly((self.columns.len(), 2));
+        // Two rows (the light's view, the map), one column per n′, as in the paper; each column
+        // headed by its η and n′ on two lines. The columns share their axes: only the first has
+        // the y labels, and it is that much wider, so that every panel has the same scale.
+        let (bw, bh) = body.dim_in_pixel();
+        let head = 40;
+        let label_w = 44;
+        let count = self.columns.len() as u32;
+        let pw = (bw - label_w) / count;
         let (n, f, t) = (self.view.near(), self.view.far(), self.view.tan_half_fov());
-        let depth = Axis::linear("depth z (eye-space units)", 0.0, f * 1.05);
-        let across = Axis::linear("x (eye space)", -f * t * 1.1, f * t * 1.1);
+        let depth = Axis::linear("depth z", 0.0, f * 1.05);
+        let across = Axis::linear("x", -f * t * 1.1, f * t * 1.1);
         let u = Axis::linear("map u", -1.1, 1.1);
         let v = Axis::linear("map v", -1.1, 1.1);
+        // Ticks every 5 eye-space units and every map unit: the panels are narrow.
+        let every = |a: Axis, step: f64| Axis::every(a.label, a.min, a.max, 0.0, step);
         let frustum = [
             (n, -n * t),
             (f, -f * t),
@@ -136,11 +161,36 @@ impl Figure for Fig4 {
             (n, n * t),
             (n, -n * t),
         ];
+        let heading =
+            TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Top));
         for (k, col) in self.columns.iter().enumerate() {
+            let k = k as u32;
+            let first = k == 0;
+            let x0 = if first { 0 } else { label_w + k * pw };
+            let cw = pw + if first { label_w } else { 0 };
+            let area = body.clone().shrink((x0, 0), (cw, bh));
+            let st = ChartStyle {
+                title_size: 13,
+                x_label_area: 36,
+                y_label_area: if first { label_w } else { 0 },
+                tick_size: 13,
+                desc_size: 13,
+                margin: 7,
+            };
+            let x_mid = (cw - pw + pw / 2) as i32;
+            for (i, line) in col.title.split('\n').enumerate() {
+                area.draw(&Text::new(
+                    line.to_string(),
+                    (x_mid, 16 * i as i32),
+                    heading.clone(),
+                ))?;
+            }
+            let rest = area.clone().shrink((0, head), (cw, bh - head));
+            let rows = rest.split_evenly((2, 1));
             // Equal aspect in both rows: the frustum and the map undistorted.
-            let st = ChartStyle::default();
-            let (dx, dy) = equal_aspect(&rows[2 * k], &col.title, &depth, &across, &st)?;
-            let mut chart = build_chart(&rows[2 * k], &col.title, &dx, &dy, false)?;
+            let (dx, dy) = equal_aspect(&rows[0], "", &depth, &across, &st)?;
+            let (dx, dy) = (every(dx, 5.0), every(dy, 5.0));
+            let mut chart = build_chart_styled(&rows[0], "", &dx, &dy, false, &st)?;
             let bounds = (0.0, f * 1.05, -f * t * 1.1, f * t * 1.1);
             for seg in &col.light_space {
                 for piece in clip_polyline(&[Some(seg[0]), Some(seg[1])], bounds) {
@@ -148,9 +198,9 @@ impl Figure for Fig4 {
                 }
             }
             chart.draw_series(LineSeries::new(frustum, BLACK.stroke_width(2)))?;
-            let below = &rows[2 * k + 1];
-            let (ux, vy) = equal_aspect(below, "", &u, &v, &st)?;
-            let mut chart = build_chart(below, "", &ux, &vy, false)?;
+            let (ux, vy) = equal_aspect(&rows[1], "", &u, &v, &st)?;
+            let (ux, vy) = (every(ux, 1.0), every(vy, 1.0));
+            let mut chart = build_chart_styled(&rows[1], "", &ux, &vy, false, &st)?;
             chart.draw_series(LineSeries::new(UNIT_SQUARE, BLACK.stroke_width(2)))?;
             for (i, seg) in col.map.iter().enumerate() {
                 let colour = if i < LINES + 1 {
