@@ -14,9 +14,9 @@ use plotters::prelude::*;
 use std::f64::consts::{FRAC_PI_2, TAU};
 
 /// Elevation rows of the sweeps (both ends, every 2°).
-const ELEVATIONS: usize = 46;
+pub(super) const ELEVATIONS: usize = 46;
 /// Azimuth columns of the sweeps (every 2°).
-const AZIMUTHS: usize = 180;
+pub(super) const AZIMUTHS: usize = 180;
 
 /// The cells of a sweep: each sample owns the band of elevations and azimuths halfway to its
 /// neighbours (the horizon and zenith rows half bands).
@@ -122,7 +122,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
             "Lloyd et al. 2006, Fig. 7, measured: S̄ = M_x M_z (summed over partitions) of each scheme's own matrices at every light direction, n = 1, f = 1000, θ = 30°, {}° grid; (b) uses Wimmer's n′ = (n + √(fn))/sin γ.",
             90 / (ELEVATIONS - 1)
         ),
-        "The hemisphere seen from above: overhead at the centre, light from behind the viewer on the left, from in front on the right, from the viewer's right at the bottom; rings every 10° of elevation up to 30° (the horizon band), then at 60°. The horizontal diameter is the vertical plane through the view direction: lights straight behind, overhead and straight in front.".to_string(),
+        "The hemisphere seen from above in the azimuthal equidistant projection (the distance from the centre proportional to 90° − elevation, so that the horizon band, 0° to 30°, fills the outer third of the radius): overhead at the centre, light from behind the viewer on the left, from in front on the right, from the viewer's right at the bottom; rings every 10° of elevation up to 30°, then at 60°. The horizontal diameter is the vertical plane through the view direction: lights straight behind, overhead and straight in front.".to_string(),
         format!("One log₁₀ colour scale for all panels, as in the paper. Range of S̄: {}.", summary.join("; ")),
     ];
     Ok(Fig7 {
@@ -130,6 +130,14 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         scale,
         caption,
     })
+}
+
+impl Fig7 {
+    /// The largest S̄ of panel `k` ((a) 0 … (d) 3).
+    #[cfg(test)]
+    pub(super) fn panel_max(&self, k: usize) -> f64 {
+        self.panels[k].max
+    }
 }
 
 impl Figure for Fig7 {

@@ -119,7 +119,7 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         profile,
         caption: vec![
             format!("Martin & Tan 2004, Fig. 6, measured: the area the focus region (the eye frustum from n to n + δ, δ = {FOCUS}) covers in the trapezoidal map (maps::tsm::tsm, TsmMap::focus_area),"),
-            "for every light direction above the viewer (top: overhead at the centre, behind on the left, in front on the right; a logarithmic colour scale over the values found) and in the vertical plane (bottom, logarithmic, so that the 80 % rule's jump where the light leaves the view's cone shows). n = 1, f = 100, θ = 30°.".to_string(),
+            "for every light direction above the viewer (top, azimuthal equidistant: overhead at the centre, the horizon at the rim, behind on the left, in front on the right; a logarithmic colour scale over the values found, its ends labelled) and in the vertical plane (bottom, logarithmic, so that the 80 % rule's jump where the light leaves the view's cone shows). n = 1, f = 100, θ = 30°.".to_string(),
         ],
     })
 }

@@ -15,9 +15,9 @@ use crate::scheme::Partition;
 use crate::ViewFrustum;
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 
-/// Elevation rows and azimuth columns of each sweep (every 6° and 7.5°).
-pub(super) const ELEVATIONS: usize = 16;
-pub(super) const AZIMUTHS: usize = 48;
+/// Elevation rows and azimuth columns of each sweep: Fig 7's directions (every 2° of elevation
+/// and of azimuth), so that the worst case of a scheme drawn in both is the same number.
+pub(super) use super::hemisphere::{AZIMUTHS, ELEVATIONS};
 /// The numbers of z-partitions compared.
 pub(super) const KS: [usize; 6] = [1, 2, 3, 4, 6, 8];
 
@@ -59,7 +59,7 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
         let (lo, hi) = r.iter().fold((f64::INFINITY, 0.0f64), |(a, b), p| {
             (a.min(p.1), b.max(p.1))
         });
-        extremes.push(format!("{name} {} to {}", fmt_plain(lo), fmt_plain(hi)));
+        extremes.push(ratio_range(name, lo, hi));
         // Behind, ZP+W equals ZP (drawn over it) and FP+ZP+W's worst case is its value
         // behind: one legend entry each for what shows.
         let (worst_label, behind_label) = match scheme {
@@ -100,12 +100,26 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
         caption: vec![
             "Lloyd et al. 2006, §5.3 (no figure in the paper; its claim: the worst S̄ over all light directions is within 2–3 times the light-behind value). f/n = 1000, θ = 30°.".into(),
             format!(
-                "Worst case measured by measure::sweep on each scheme's own matrices (ZP: unwarped log partitions; ZP+W: LiSPSM-warped; FP+ZP+W: faces, warped) over {ELEVATIONS} × {AZIMUTHS} light directions; behind from Eq 20, 21. Ratios: {}; a ratio outside the shaded band (2 to 3) disagrees with the paper's claim. Behind, ZP+W equals ZP (one dashed curve, ZP's wider under it) and FP+ZP+W's worst case is its value behind (one curve).",
-                extremes.join(", ")
+                "Worst case measured by scheme::sweep on each scheme's own matrices (ZP: unwarped log partitions; ZP+W: LiSPSM-warped; FP+ZP+W: faces, warped) over the {} light directions of lloyd2006-fig7 (every {}° of elevation and {}° of azimuth; ZP+W at k = 1 is Fig 7's LiSPSM panel, with the same maximum); behind from Eq 20, 21. Worst case / behind: {}; a ratio outside the shaded band (2 to 3) disagrees with the paper's claim. Behind, ZP+W equals ZP (one dashed curve, ZP's wider under it) and FP+ZP+W's worst case is its value behind (one curve).",
+                ELEVATIONS * AZIMUTHS,
+                90 / (ELEVATIONS - 1),
+                360 / AZIMUTHS,
+                extremes.join("; ")
             ),
         ],
         charts: vec![abs, ratio],
     })
+}
+
+/// A scheme's range of ratios over k as the caption writes it: "ZP+W 1.874 to 4.338", or, where
+/// both ends print the same, "ZP 1.949 at every k" (never a range with equal ends).
+fn ratio_range(name: &str, lo: f64, hi: f64) -> String {
+    let (a, b) = (fmt_plain(lo), fmt_plain(hi));
+    if a == b {
+        format!("{name} {a} at every k")
+    } else {
+        format!("{name} {a} to {b}")
+    }
 }
 
 #[cfg(test)]
@@ -161,5 +175,53 @@ mod tests {
         let band = &fig.charts[1].bands;
         assert_eq!(band.len(), 1);
         assert_eq!((band[0].0, band[0].1), (2.0, 3.0));
+    }
+
+    /// The caption never prints a degenerate range "X to X" (issue 25: "ZP 1.949 to 1.949",
+    /// "FP+ZP+W 1 to 1"): every "A to B" in it has A ≠ B.
+    #[test]
+    fn caption_has_no_range_with_equal_ends() {
+        let fig = worst_case()
+            .map_err(|e| e.named("lloyd2006-worst-case"))
+            .unwrap();
+        let text = fig.caption.join(" ");
+        let words: Vec<&str> = text
+            .split(|c: char| c.is_whitespace() || c == ',' || c == ';')
+            .filter(|w| !w.is_empty())
+            .collect();
+        let mut ranges = 0;
+        for w in words.windows(3) {
+            if w[1] == "to" && w[0].parse::<f64>().is_ok() && w[2].parse::<f64>().is_ok() {
+                assert_ne!(w[0], w[2], "a range with equal ends in: {text}");
+                ranges += 1;
+            }
+        }
+        assert!(ranges >= 1, "{text}");
+        assert_eq!(ratio_range("ZP", 1.9491, 1.9494), "ZP 1.949 at every k");
+    }
+
+    /// The worst case agrees with lloyd2006-fig7 (issue 25: 4.34× here against 4.7× there for
+    /// the same scheme, from a coarser grid): ZP+W with one partition is Fig 7's LiSPSM panel,
+    /// and its worst case over the hemisphere is that panel's largest value (4.735·10⁶,
+    /// errata item 11), over the behind value (f/n)² = 10⁶ (Eq 20, k = 1).
+    #[test]
+    fn worst_case_is_fig7s_maximum() {
+        let fig = worst_case()
+            .map_err(|e| e.named("lloyd2006-worst-case"))
+            .unwrap();
+        let fig7 = super::super::hemisphere::fig7()
+            .map_err(|e| e.named("lloyd2006-fig7"))
+            .unwrap();
+        let lispsm = fig7.panel_max(1);
+        let zpw = fig.charts[0].series[2].points[0];
+        assert_eq!(zpw.0, 1.0);
+        assert!(
+            (zpw.1 - lispsm).abs() <= 1e-9 * lispsm,
+            "{} vs {lispsm}",
+            zpw.1
+        );
+        assert!((4.6e6..4.8e6).contains(&lispsm), "{lispsm}");
+        let ratio = fig.charts[1].series[1].points[0].1;
+        assert!((ratio - lispsm / 1e6).abs() < 1e-9, "{ratio}");
     }
 }

@@ -1,12 +1,14 @@
 //! Heat maps: quantised colour scales, rectangular and hemispherical grids, colour bars.
 
+use super::super::canvas::Fine;
 use super::super::Fail;
 use super::axis::{Axis, Chart2d, Ticked};
-use super::raster::draw_cells;
+use super::raster::Raster;
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
+use plotters_backend::BackendColor;
 
 /// A colour scale: a value range on an axis (linear or logarithmic), quantised into `levels`
 /// bands of the viridis colour map (dark blue low, yellow high: perceptually uniform, and
@@ -195,56 +197,72 @@ impl Grid {
     }
 }
 
-/// Draws a grid into a chart whose axes are linear in the grid's coordinates. Runs of
-/// neighbouring whole cells in one row that fall in the same colour band are merged into one
-/// rectangle, which keeps the SVG small; cells cut by the clip region are drawn as the
-/// polygons they are, so that a slanted border is straight, not stair-stepped.
+/// The index of the cell `[edges[i], edges[i+1]]` holding `v` (edges increasing or
+/// decreasing), or `None` outside them.
+fn cell_index(edges: &[f64], v: f64) -> Option<usize> {
+    let n = edges.len().checked_sub(1)?;
+    let (lo, hi) = (edges[0].min(edges[n]), edges[0].max(edges[n]));
+    if n == 0 || !(lo..=hi).contains(&v) {
+        return None;
+    }
+    let i = if edges[0] <= edges[n] {
+        edges.partition_point(|&e| e <= v)
+    } else {
+        edges.partition_point(|&e| e >= v)
+    };
+    Some(i.saturating_sub(1).min(n - 1))
+}
+
+/// Draws a grid into a chart whose axes are linear in the grid's coordinates, as one raster
+/// ([`Raster`]): each sample takes the colour of the cell it falls in, and is transparent
+/// outside the grid or its clip region, so that a slanted border is cut, not stair-stepped.
 pub(crate) fn draw_grid<DB: DrawingBackend>(
     chart: &mut Chart2d<'_, DB>,
     grid: &Grid,
     scale: &ColourScale,
 ) -> Result<(), Fail> {
-    let nx = grid.x_edges.len() - 1;
-    let ny = grid.y_edges.len() - 1;
-    // Cells in the plotting area's pixels.
+    let nx = grid.x_edges.len().saturating_sub(1);
+    let (Some(&gx0), Some(&gx1), Some(&gy0), Some(&gy1)) = (
+        grid.x_edges.first(),
+        grid.x_edges.last(),
+        grid.y_edges.first(),
+        grid.y_edges.last(),
+    ) else {
+        return Ok(());
+    };
+    // The plotting area's units against the data (both axes linear): two corners fix the map.
     let base = chart.plotting_area().get_base_pixel();
-    let px = |(x, y): (f64, f64)| {
+    let unit = |(x, y): (f64, f64)| {
         let (u, v) = chart.backend_coord(&(x, y));
         (f64::from(u - base.0), f64::from(v - base.1))
     };
-    let mut cells = Vec::new();
-    let level_at = |i: usize, j: usize| grid.values[j * nx + i].and_then(|v| scale.level(v));
-    for j in 0..ny {
-        let mut i = 0;
-        while i < nx {
-            let Some(level) = level_at(i, j) else {
-                i += 1;
-                continue;
-            };
-            let (poly, was_cut) = grid.cell(i, j);
-            if was_cut {
-                if poly.len() >= 3 {
-                    let poly = poly.into_iter().map(px).collect();
-                    cells.push((poly, scale.level_colour(level)));
-                }
-                i += 1;
-                continue;
-            }
-            let start = i;
-            while i + 1 < nx && level_at(i + 1, j) == Some(level) && !grid.cell(i + 1, j).1 {
-                i += 1;
-            }
-            let (xa, xb) = (grid.x_edges[start], grid.x_edges[i + 1]);
-            let (ya, yb) = (grid.y_edges[j], grid.y_edges[j + 1]);
-            let rect = [(xa, ya), (xb, ya), (xb, yb), (xa, yb)];
-            cells.push((
-                rect.into_iter().map(px).collect(),
-                scale.level_colour(level),
-            ));
-            i += 1;
-        }
+    let (a, b) = (unit((gx0, gy0)), unit((gx1, gy1)));
+    if a.0 == b.0 || a.1 == b.1 {
+        return Ok(());
     }
-    draw_cells(&chart.plotting_area().strip_coord_spec(), &cells)
+    let to_data = |u: f64, v: f64| {
+        (
+            gx0 + (u - a.0) / (b.0 - a.0) * (gx1 - gx0),
+            gy0 + (v - a.1) / (b.1 - a.1) * (gy1 - gy0),
+        )
+    };
+    let colour_at = |u: f64, v: f64| {
+        let (x, y) = to_data(u, v);
+        if !grid.clip.iter().all(|h| h.0 * x + h.1 * y <= h.2) {
+            return None;
+        }
+        let (i, j) = (cell_index(&grid.x_edges, x)?, cell_index(&grid.y_edges, y)?);
+        let level = grid.values[j * nx + i].and_then(|v| scale.level(v))?;
+        Some(scale.level_colour(level))
+    };
+    let (w, h) = chart.plotting_area().dim_in_pixel();
+    let bbox = (
+        (a.0.min(b.0).floor() as i32).max(0),
+        (a.1.min(b.1).floor() as i32).max(0),
+        (a.0.max(b.0).ceil() as i32).min(w as i32),
+        (a.1.max(b.1).ceil() as i32).min(h as i32),
+    );
+    Raster::sample(bbox, colour_at).draw(&chart.plotting_area().strip_coord_spec())
 }
 
 /// A field over the hemisphere of light directions: `values[i * n_az + j]` for the cell between
@@ -257,19 +275,59 @@ pub(crate) struct PolarGrid {
     pub values: Vec<Option<f64>>,
 }
 
-/// Where a light direction lands in the hemisphere disk: the hemisphere seen from above
-/// (orthographic), overhead at the centre, the source behind the viewer on the left (−x), in
-/// front on the right (+x), and to the viewer's right (azimuth π/2, eye-space +X) at the bottom,
-/// as a map seen from above with the viewer facing right. Azimuth and elevation as in
-/// [`crate::scheme::sweep`]: the source lies towards (cos el · sin az, sin el, cos el · cos az).
+/// The distance from the disk's centre of the light directions at `elevation` (radians): the
+/// azimuthal equidistant projection, 1 at the horizon, 0 overhead, linear in between, so that
+/// every 10° of elevation is a ring of the same width (the orthographic view from above
+/// squeezed the horizon band, where the storage factor changes the most, into the outer 13 % of
+/// the radius).
+pub(crate) fn hemisphere_radius(elevation: f64) -> f64 {
+    1.0 - elevation / std::f64::consts::FRAC_PI_2
+}
+
+/// Where a light direction lands in the hemisphere disk (radius 1): the hemisphere seen from
+/// above in the azimuthal equidistant projection ([`hemisphere_radius`]), overhead at the
+/// centre, the source behind the viewer on the left (−x), in front on the right (+x), and to
+/// the viewer's right (azimuth π/2, eye-space +X) at the bottom, as a map seen from above with
+/// the viewer facing right. Azimuth and elevation as in [`crate::scheme::sweep`]: the source
+/// lies towards (cos el · sin az, sin el, cos el · cos az).
 pub(crate) fn hemisphere_xy(elevation: f64, azimuth: f64) -> (f64, f64) {
-    let r = elevation.cos();
+    let r = hemisphere_radius(elevation);
     (-r * azimuth.cos(), -r * azimuth.sin())
 }
 
-/// Draws a hemisphere panel: a disk of radius 1 with the field, elevation rings every 30°, and
-/// the directions named. Runs of cells in one elevation ring that fall in the same colour band
-/// are merged into one polygon.
+/// The light direction (elevation, azimuth in `[0, 2π)`) drawn at `(x, y)` of the disk; `None`
+/// outside it. The inverse of [`hemisphere_xy`].
+pub(crate) fn hemisphere_direction(x: f64, y: f64) -> Option<(f64, f64)> {
+    let r = x.hypot(y);
+    if r > 1.0 {
+        return None;
+    }
+    let elevation = (1.0 - r) * std::f64::consts::FRAC_PI_2;
+    let azimuth = (-y).atan2(-x).rem_euclid(std::f64::consts::TAU);
+    Some((elevation, azimuth))
+}
+
+/// The elevation rings of a hemisphere panel (degrees): every 10° over the horizon band, then
+/// 60°; the labelled ones (30°, 60°) drawn darker.
+pub(crate) const RINGS: [(f64, bool); 5] = [
+    (0.0, false),
+    (10.0, false),
+    (20.0, false),
+    (30.0, true),
+    (60.0, true),
+];
+
+/// Where a ring's label is centred, in disk coordinates: on the ring itself, up and to the left
+/// of the centre (towards behind the viewer and to its left), so that each label sits on its
+/// own ring and nowhere near another.
+pub(crate) fn ring_label_at(elevation_deg: f64) -> (f64, f64) {
+    let r = hemisphere_radius(elevation_deg.to_radians());
+    let a = 112f64.to_radians();
+    (r * a.cos(), r * a.sin())
+}
+
+/// Draws a hemisphere panel: a disk of radius 1 with the field (one raster, transparent outside
+/// the disk), the elevation rings of [`RINGS`], and the directions named.
 pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
@@ -288,108 +346,64 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
         TextStyle::from((FONT, 16).into_font()).pos(Pos::new(HPos::Center, VPos::Top)),
     ))?;
     let pad = 0.16;
-    let to_px = |(x, y): (f64, f64)| -> (i32, i32) {
-        let u = (x + 1.0 + pad) / (2.0 + 2.0 * pad);
-        let v = (1.0 + pad - y) / (2.0 + 2.0 * pad);
+    let span = 2.0 + 2.0 * pad;
+    let to_units = |(x, y): (f64, f64)| -> (f64, f64) {
         (
-            ox + (u * side as f64).round() as i32,
-            oy + (v * side as f64).round() as i32,
+            f64::from(ox) + (x + 1.0 + pad) / span * f64::from(side),
+            f64::from(oy) + (1.0 + pad - y) / span * f64::from(side),
         )
     };
-    let n_el = grid.elev_edges.len() - 1;
-    let n_az = grid.az_edges.len() - 1;
-    const OVERLAP: f64 = 0.25 * std::f64::consts::PI / 180.0;
-    let arc = |el: f64, a0: f64, a1: f64, reverse: bool| -> Vec<(i32, i32)> {
-        let steps = (((a1 - a0).abs() / 4f64.to_radians()).ceil() as usize).max(1);
-        let mut v: Vec<(i32, i32)> = (0..=steps)
-            .map(|k| {
-                let a = a0 + (a1 - a0) * k as f64 / steps as f64;
-                to_px(hemisphere_xy(el, a))
-            })
-            .collect();
-        if reverse {
-            v.reverse();
-        }
-        v
+    let to_px = |p: (f64, f64)| -> (i32, i32) {
+        let (u, v) = to_units(p);
+        (u.round() as i32, v.round() as i32)
     };
-    let mut cells = Vec::new();
-    for i in 0..n_el {
-        let (e0, e1) = (grid.elev_edges[i], grid.elev_edges[i + 1]);
-        let mut j = 0;
-        while j < n_az {
-            let Some(level) = grid.values[i * n_az + j].and_then(|v| scale.level(v)) else {
-                j += 1;
-                continue;
-            };
-            let start = j;
-            while j + 1 < n_az
-                && grid.values[i * n_az + j + 1].and_then(|v| scale.level(v)) == Some(level)
-            {
-                j += 1;
-            }
-            // A hair of overlap (0.25°) so that neighbouring polygons leave no unfilled pixels.
-            let (a0, a1) = if start == 0 && j + 1 == n_az {
-                // A whole ring: exactly one turn, or the polygon would overlap itself at the
-                // seam and the overlap would be left unfilled.
-                (grid.az_edges[0], grid.az_edges[0] + std::f64::consts::TAU)
-            } else {
-                (
-                    grid.az_edges[start] - OVERLAP,
-                    grid.az_edges[j + 1] + OVERLAP,
-                )
-            };
-            let lo = (e0 - OVERLAP).max(0.0);
-            let hi = (e1 + OVERLAP).min(std::f64::consts::FRAC_PI_2);
-            let mut poly = arc(lo, a0, a1, false);
-            poly.extend(arc(hi, a0, a1, true));
-            poly.dedup();
-            let poly = poly
-                .into_iter()
-                .map(|(x, y)| (f64::from(x), f64::from(y)))
-                .collect();
-            cells.push((poly, scale.level_colour(level)));
-            j += 1;
-        }
-    }
-    draw_cells(area, &cells)?;
-    // Elevation rings at 0°, 30°, 60° and the axis from behind to in front (the vertical plane
-    // through the view direction).
-    let ring_style = ShapeStyle {
-        color: RGBColor(60, 60, 60).to_rgba(),
-        filled: false,
-        stroke_width: 1,
+    let n_az = grid.az_edges.len().saturating_sub(1);
+    let a0 = grid.az_edges.first().copied().unwrap_or(0.0);
+    let colour_at = |u: f64, v: f64| {
+        let x = (u - f64::from(ox)) / f64::from(side) * span - 1.0 - pad;
+        let y = 1.0 + pad - (v - f64::from(oy)) / f64::from(side) * span;
+        let (el, az) = hemisphere_direction(x, y)?;
+        let i = cell_index(&grid.elev_edges, el)?;
+        // Azimuths wrap: the first cell starts half a cell before 0.
+        let j = cell_index(
+            &grid.az_edges,
+            a0 + (az - a0).rem_euclid(std::f64::consts::TAU),
+        )?;
+        let level = grid.values[i * n_az + j].and_then(|v| scale.level(v))?;
+        Some(scale.level_colour(level))
     };
-    for deg in [0.0f64, 30.0, 60.0] {
-        let mut ring = arc(deg.to_radians(), 0.0, std::f64::consts::TAU, false);
-        ring.push(ring[0]);
-        area.draw(&PathElement::new(ring, ring_style))?;
-    }
-    // A finer grid near the rim, where the horizon band is squeezed: rings at 10° and 20°.
-    for deg in [10.0f64, 20.0] {
-        let mut ring = arc(deg.to_radians(), 0.0, std::f64::consts::TAU, false);
-        ring.push(ring[0]);
-        area.draw(&PathElement::new(
-            ring,
-            ShapeStyle {
-                color: RGBColor(60, 60, 60).mix(0.45),
-                ..ring_style
+    let (left, top) = to_px((-1.0, 1.0));
+    let (right, bottom) = to_px((1.0, -1.0));
+    Raster::sample((left - 1, top - 1, right + 1, bottom + 1), colour_at).draw(area)?;
+    // Rings and the diameter at sub-unit positions (absolute backend units), so that they are
+    // round, not stepped.
+    let base = area.get_base_pixel();
+    let abs = |p: (f64, f64)| {
+        let (u, v) = to_units(p);
+        (u + f64::from(base.0), v + f64::from(base.1))
+    };
+    let stroke = |points: Vec<(f64, f64)>, alpha: f64| {
+        area.draw(&Fine {
+            points,
+            colour: BackendColor {
+                alpha,
+                rgb: (60, 60, 60),
             },
-        ))?;
+            stroke: Some(1),
+        })
+    };
+    for (deg, labelled) in RINGS {
+        let el = deg.to_radians();
+        let ring = (0..=360)
+            .map(|k| abs(hemisphere_xy(el, f64::from(k).to_radians())))
+            .collect();
+        stroke(ring, if labelled || deg == 0.0 { 1.0 } else { 0.45 })?;
     }
-    area.draw(&PathElement::new(
-        vec![to_px((-1.0, 0.0)), to_px((1.0, 0.0))],
-        ShapeStyle {
-            color: RGBColor(60, 60, 60).mix(0.5),
-            filled: false,
-            stroke_width: 1,
-        },
-    ))?;
+    // The vertical plane through the view direction: behind, overhead, in front.
+    stroke(vec![abs((-1.0, 0.0)), abs((1.0, 0.0))], 0.5)?;
+    let style = TextStyle::from((FONT, 13).into_font());
     let label = |text: &str, at: (f64, f64), pos: Pos| {
-        area.draw(&Text::new(
-            text.to_string(),
-            to_px(at),
-            TextStyle::from((FONT, 13).into_font()).pos(pos),
-        ))
+        area.draw(&Text::new(text.to_string(), to_px(at), style.pos(pos)))
     };
     label("← behind", (-1.0, 0.97), Pos::new(HPos::Left, VPos::Top))?;
     label("in front →", (1.0, 0.97), Pos::new(HPos::Right, VPos::Top))?;
@@ -403,21 +417,72 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
         (0.0, 0.03),
         Pos::new(HPos::Center, VPos::Bottom),
     )?;
-    label("30°", (0.02, 0.87), Pos::new(HPos::Left, VPos::Bottom))?;
-    label("60°", (0.02, 0.5), Pos::new(HPos::Left, VPos::Bottom))?;
+    // Ring labels centred on their rings, on a white ground so that they read over any colour.
+    for (deg, labelled) in RINGS {
+        if !labelled {
+            continue;
+        }
+        let text = format!("{deg}°");
+        let (tw, th) = area.estimate_text_size(&text, &style)?;
+        let (cx, cy) = to_px(ring_label_at(deg));
+        let (hw, hh) = (tw as i32 / 2 + 2, th as i32 / 2 + 1);
+        area.draw(&Rectangle::new(
+            [(cx - hw, cy - hh), (cx + hw, cy + hh)],
+            WHITE.mix(0.85).filled(),
+        ))?;
+        area.draw(&Text::new(
+            text,
+            (cx, cy),
+            style.pos(Pos::new(HPos::Center, VPos::Center)),
+        ))?;
+    }
     Ok(())
 }
 
 /// The length of a colour bar's tick marks, in pixels; its labels start twice that from the bar.
 pub(crate) const COLOUR_BAR_TICK: i32 = 5;
 
-/// Draws a vertical colour bar for `scale` into `area`.
+/// Three significant digits.
+fn three_digits(v: f64) -> f64 {
+    if v == 0.0 || !v.is_finite() {
+        return v;
+    }
+    let p = 10f64.powf(v.abs().log10().floor() - 2.0);
+    (v / p).round() * p
+}
+
+/// The labelled ticks of a colour bar (axis space) with their labels: both ends of its range,
+/// written to three significant digits, so that the range can be read off the bar, and the
+/// axis's own ticks (decades on a log scale) that keep clear of the ends (at least 7 % of the
+/// bar from either).
+pub(crate) fn colour_bar_ticks(axis: &Axis) -> Vec<(f64, String)> {
+    let (lo, hi) = axis.range();
+    let clear = 0.07 * (hi - lo).abs();
+    let end = |a: f64| {
+        let v = three_digits(axis.to_data(a));
+        (a, axis.tick_label(axis.to_axis(v).unwrap_or(a)))
+    };
+    let mut ticks = vec![end(lo)];
+    ticks.extend(
+        axis.ticks()
+            .0
+            .into_iter()
+            .filter(|&t| (t - lo).abs() >= clear && (t - hi).abs() >= clear)
+            .map(|t| (t, axis.tick_label(t))),
+    );
+    ticks.push(end(hi));
+    ticks
+}
+
+/// Draws a vertical colour bar for `scale` into `area`, its ends labelled
+/// ([`colour_bar_ticks`]).
 pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     scale: &ColourScale,
 ) -> Result<(), Fail> {
     let (lo, hi) = scale.axis.range();
-    let (yb, _) = scale.axis.ticks();
+    let ticks = colour_bar_ticks(&scale.axis);
+    let yb: Vec<f64> = ticks.iter().map(|t| t.0).collect();
     let mut chart = ChartBuilder::on(area)
         .margin_top(30)
         .margin_bottom(30)
@@ -426,9 +491,14 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
         .right_y_label_area_size(62)
         .build_cartesian_2d(
             Ticked::new(0.0, 1.0, vec![], vec![]),
-            Ticked::new(lo, hi, yb, vec![]),
+            Ticked::new(lo, hi, yb.clone(), vec![]),
         )?;
-    let yf = |v: &f64| scale.axis.tick_label(*v);
+    let yf = |v: &f64| {
+        ticks
+            .iter()
+            .min_by(|a, b| (a.0 - v).abs().total_cmp(&(b.0 - v).abs()))
+            .map_or_else(String::new, |t| t.1.clone())
+    };
     chart
         .configure_mesh()
         .disable_mesh()
@@ -451,12 +521,27 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
         [(0.0, lo), (1.0, hi)],
         RGBColor(60, 60, 60).stroke_width(1),
     )))?;
+    // Unlabelled minor ticks (2 … 9 times each decade on a log bar), half as long.
+    let (_, light) = scale.axis.ticks();
+    chart.draw_series(
+        light
+            .into_iter()
+            .filter(|t| yb.iter().all(|b| (b - t).abs() > 1e-9))
+            .map(|t| {
+                EmptyElement::at((1.0, t))
+                    + PathElement::new(
+                        vec![(0, 0), (COLOUR_BAR_TICK / 2 + 1, 0)],
+                        RGBColor(60, 60, 60).stroke_width(1),
+                    )
+            }),
+    )?;
     Ok(())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::f64::consts::FRAC_PI_2;
 
     #[test]
     fn colour_scale_bands_clamp_and_are_ordered() {
@@ -534,5 +619,184 @@ mod tests {
         // The source on the viewer's right is drawn below the behind–front axis.
         let (x, y) = hemisphere_xy(0.0, std::f64::consts::FRAC_PI_2);
         assert!(x.abs() < 1e-15 && (y + 1.0).abs() < 1e-15);
+        // Azimuthal equidistant: 30° of elevation is a third of the radius in from the rim
+        // (orthographic: cos 30° = 0.866), and the drawing inverts.
+        let (x, y) = hemisphere_xy(30f64.to_radians(), 0.7);
+        assert!((x.hypot(y) - 2.0 / 3.0).abs() < 1e-15);
+        let (el, az) = hemisphere_direction(x, y).unwrap();
+        assert!((el - 30f64.to_radians()).abs() < 1e-12 && (az - 0.7).abs() < 1e-12);
+        assert_eq!(hemisphere_direction(0.8, 0.7), None);
+    }
+
+    /// The numbers of an attribute list `name="v"`.
+    fn attr(el: &str, name: &str) -> Option<f64> {
+        let at = el.find(&format!(" {name}=\""))? + name.len() + 3;
+        el[at..at + el[at..].find('"')?].parse().ok()
+    }
+
+    fn unbase64(s: &str) -> Vec<u8> {
+        let val = |c: u8| match c {
+            b'A'..=b'Z' => c - b'A',
+            b'a'..=b'z' => c - b'a' + 26,
+            b'0'..=b'9' => c - b'0' + 52,
+            b'+' => 62,
+            _ => 63,
+        };
+        let digits: Vec<u8> = s.bytes().filter(|&c| c != b'=').map(val).collect();
+        let mut out = Vec::new();
+        for ch in digits.chunks(4) {
+            let n = ch
+                .iter()
+                .enumerate()
+                .fold(0u32, |a, (i, &d)| a | u32::from(d) << (18 - 6 * i));
+            out.extend(&n.to_be_bytes()[1..ch.len()]);
+        }
+        out
+    }
+
+    /// A hemisphere panel as the figures draw it (issue 25, lloyd2006-fig7 and G2), read back
+    /// from its SVG:
+    /// - the rings lie where the azimuthal equidistant projection puts them, at (90° − el)/90°
+    ///   of the horizon's radius (the orthographic view had the 30° ring at cos 30° = 0.87);
+    /// - each ring label is centred on its own ring;
+    /// - the heat map is one RGBA image of at least 4 pixels per unit, transparent outside the
+    ///   disk (nothing bleeds past the horizon ring) and opaque inside it.
+    #[test]
+    fn hemisphere_rings_labels_and_raster_by_the_projection() {
+        super::super::super::ensure_font().unwrap();
+        let n = 12;
+        let grid = PolarGrid {
+            elev_edges: (0..=n).map(|i| FRAC_PI_2 * i as f64 / n as f64).collect(),
+            az_edges: (0..=2 * n)
+                .map(|j| std::f64::consts::PI * j as f64 / n as f64)
+                .collect(),
+            values: (0..2 * n * n).map(|k| Some(1.0 + k as f64)).collect(),
+        };
+        let scale = ColourScale::smooth(Axis::linear("v", 1.0, (2 * n * n) as f64));
+        let mut svg = String::new();
+        {
+            let area =
+                super::super::super::svg::Svg::new(&mut svg, (300, 330), 1).into_drawing_area();
+            draw_hemisphere(&area, "t", &grid, &scale).unwrap();
+            area.present().unwrap();
+        }
+        let lines: Vec<&str> = svg.lines().collect();
+        // The rings: closed polylines of many points; centre and radius of each.
+        let mut rings: Vec<((f64, f64), f64)> = lines
+            .iter()
+            .filter(|l| l.starts_with("<polyline"))
+            .filter_map(|l| {
+                let at = l.find("points=\"")? + 8;
+                let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
+                    .split_whitespace()
+                    .filter_map(|p| {
+                        let (x, y) = p.split_once(',')?;
+                        Some((x.parse().ok()?, y.parse().ok()?))
+                    })
+                    .collect();
+                (pts.len() > 100).then(|| {
+                    let k = pts.len() as f64;
+                    let c = (
+                        pts.iter().map(|p| p.0).sum::<f64>() / k,
+                        pts.iter().map(|p| p.1).sum::<f64>() / k,
+                    );
+                    let r = pts
+                        .iter()
+                        .map(|p| (p.0 - c.0).hypot(p.1 - c.1))
+                        .sum::<f64>()
+                        / k;
+                    (c, r)
+                })
+            })
+            .collect();
+        rings.sort_by(|a, b| b.1.total_cmp(&a.1));
+        assert_eq!(rings.len(), RINGS.len());
+        let (centre, horizon) = rings[0];
+        for (&(deg, _), &(_, r)) in RINGS.iter().zip(&rings) {
+            let want = horizon * (90.0 - deg) / 90.0;
+            assert!((r - want).abs() < 0.6, "{deg}° ring at {r}, want {want}");
+        }
+        // The ring labels: centred vertically and horizontally on their ring.
+        for (deg, labelled) in RINGS {
+            let text = format!(">{deg}°</text>");
+            let el = lines.iter().find(|l| l.contains(&text));
+            assert_eq!(el.is_some(), labelled, "{deg}°");
+            if let Some(el) = el {
+                assert!(el.contains("dy=\"0.5ex\"") && el.contains("text-anchor=\"middle\""));
+                let (x, y) = (attr(el, "x").unwrap(), attr(el, "y").unwrap());
+                let r = (x - centre.0).hypot(y - centre.1);
+                let want = horizon * (90.0 - deg) / 90.0;
+                assert!(
+                    (r - want).abs() < 1.0,
+                    "{deg}° label at {r}, ring at {want}"
+                );
+            }
+        }
+        // The heat map: one RGBA image, dense, clipped to the disk.
+        let images: Vec<&&str> = lines.iter().filter(|l| l.starts_with("<image")).collect();
+        assert_eq!(images.len(), 1);
+        let el = images[0];
+        let (x0, y0) = (attr(el, "x").unwrap(), attr(el, "y").unwrap());
+        let width = attr(el, "width").unwrap();
+        let at = el.find("base64,").unwrap() + 7;
+        let png = unbase64(&el[at..at + el[at..].find('"').unwrap()]);
+        let img = image::load_from_memory(&png).unwrap().to_rgba8();
+        let density = f64::from(img.width()) / width;
+        assert!(density >= 4.0 - 1e-9, "{density} pixels per unit");
+        assert_eq!(png[25], 6, "colour type RGBA");
+        let (mut outside, mut inside) = (0, 0);
+        for (px, py, p) in img.enumerate_pixels() {
+            let u = x0 + (f64::from(px) + 0.5) / density;
+            let v = y0 + (f64::from(py) + 0.5) / density;
+            let r = (u - centre.0).hypot(v - centre.1);
+            if r > horizon + 0.5 {
+                assert_eq!(p[3], 0, "pixel ({px}, {py}) outside the disk");
+                outside += 1;
+            } else if r < horizon - 0.5 {
+                assert_eq!(p[3], 255, "pixel ({px}, {py}) inside the disk");
+                inside += 1;
+            }
+        }
+        assert!(outside > 1000 && inside > 10_000, "{outside} {inside}");
+    }
+
+    /// A colour bar's ends are labelled (issue 25: Fig 7's shared bar, 865 … 4.7·10⁶, had no
+    /// tick at its top): the bar of Fig 7's range, read back from its SVG, has the labels
+    /// "865" and "4.74×10⁶" (three significant digits) level with its bottom and top edges, and
+    /// the decades between them that keep clear of the ends (10³ lies 0.06 decades from 865:
+    /// left out; 10⁴, 10⁵, 10⁶ labelled).
+    #[test]
+    fn colour_bar_labels_its_ends() {
+        super::super::super::ensure_font().unwrap();
+        let scale = ColourScale::smooth(Axis::log10("S", 865.159, 4.7354e6));
+        let mut svg = String::new();
+        {
+            let area =
+                super::super::super::svg::Svg::new(&mut svg, (90, 500), 1).into_drawing_area();
+            draw_colour_bar(&area, &scale).unwrap();
+            area.present().unwrap();
+        }
+        // The bar's outline: the one unfilled rectangle.
+        let outline = svg
+            .lines()
+            .find(|l| l.starts_with("<rect") && l.contains("fill=\"none\""))
+            .unwrap();
+        let top = attr(outline, "y").unwrap();
+        let bottom = top + attr(outline, "height").unwrap();
+        let label_y = |text: &str| {
+            svg.lines()
+                .find(|l| l.starts_with("<text") && l.contains(&format!(">{text}</text>")))
+                .and_then(|l| attr(l, "y"))
+        };
+        let hi = label_y("4.74×10⁶").unwrap_or_else(|| panic!("no label at the top: {svg}"));
+        let lo = label_y("865").expect("a label at the bottom");
+        assert!(
+            (hi - top).abs() <= 1.0 && (lo - bottom).abs() <= 1.0,
+            "{hi} {lo}"
+        );
+        for d in ["10⁴", "10⁵", "10⁶"] {
+            assert!(label_y(d).is_some(), "{d}");
+        }
+        assert!(label_y("10³").is_none());
     }
 }

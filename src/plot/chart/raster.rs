@@ -1,62 +1,186 @@
-//! Heat maps as one bitmap: their cells are filled polygons, rasterised together (with 4 × 4
-//! supersampling for smooth slanted borders) into one image that is drawn in one piece, so that
-//! the SVG embeds one PNG `<image>` instead of thousands of shapes whose anti-aliased edges
-//! leave hairline seams between neighbouring cells.
+//! Heat maps as one bitmap: the field is sampled at every pixel of a raster of [`DENSITY`]
+//! pixels per unit of the figure ([`SUB`] × [`SUB`] samples per pixel, averaged), so that cells
+//! meet exactly (no seams: nothing is rasterised polygon by polygon) and a border cuts pixels
+//! partially. The raster is RGBA: where the field is not defined (outside a hemisphere's disk,
+//! outside a clip region) it is transparent, so nothing bleeds past the border. It is handed to
+//! the backend in one piece, so that the SVG embeds one PNG `<image>` instead of thousands of
+//! shapes.
+//!
+//! The backends learn of the density through [`bitmap_density`]: while a raster is drawn it is
+//! [`DENSITY`] and the bitmap is RGBA; the SVG writes the image at `1/DENSITY` units per pixel
+//! ([`super::super::svg`]), the PNG canvas fits it to its own pixels over white
+//! ([`fit_to_scale`]).
 
-use super::super::canvas::downsample;
 use super::super::Fail;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use std::cell::Cell;
 
-/// Supersampling of the raster in each direction.
-const RASTER_SCALE: u32 = 4;
+/// Pixels of a heat-map raster per unit of the figure (an SVG unit; at least 4, issue 25).
+pub(crate) const DENSITY: u32 = 4;
 
-/// Fills `cells` (polygons in `area`'s pixels, fractional, each with its colour) into one bitmap over their
-/// bounding box on a white background, and draws it into `area`. Pixels of the bounding box
-/// that no cell covers are white, so the area below must be white there too (heat maps are
-/// drawn on a white page without a grid mesh).
-pub(crate) fn draw_cells<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    cells: &[(Vec<(f64, f64)>, RGBColor)],
-) -> Result<(), Fail> {
-    let (aw, ah) = area.dim_in_pixel();
-    let pts = || cells.iter().flat_map(|(p, _)| p.iter().copied());
-    let (Some(x0), Some(y0), Some(x1), Some(y1)) = (
-        pts().map(|p| p.0.floor() as i32).min(),
-        pts().map(|p| p.1.floor() as i32).min(),
-        pts().map(|p| p.0.ceil() as i32).max(),
-        pts().map(|p| p.1.ceil() as i32).max(),
-    ) else {
-        return Ok(());
-    };
-    let (x0, y0) = (x0.max(0), y0.max(0));
-    let (x1, y1) = (x1.min(aw as i32), y1.min(ah as i32));
-    if x1 <= x0 || y1 <= y0 {
-        return Ok(());
-    }
-    let (w, h) = ((x1 - x0) as u32, (y1 - y0) as u32);
-    let s = RASTER_SCALE;
-    let mut big = vec![255u8; (w * s) as usize * (h * s) as usize * 3];
-    {
-        let root = BitMapBackend::with_buffer(&mut big, (w * s, h * s)).into_drawing_area();
-        let f = f64::from(s);
-        for (poly, colour) in cells {
-            let moved: Vec<(i32, i32)> = poly
-                .iter()
-                .map(|&(x, y)| {
-                    (
-                        ((x - f64::from(x0)) * f).round() as i32,
-                        ((y - f64::from(y0)) * f).round() as i32,
-                    )
-                })
-                .collect();
-            root.draw(&Polygon::new(moved, colour.filled()))?;
+/// Samples per raster pixel in each direction.
+const SUB: u32 = 2;
+
+thread_local! {
+    static DRAWING: Cell<u32> = const { Cell::new(1) };
+}
+
+/// Pixels per unit of the bitmap now being handed to a backend: [`DENSITY`] while a heat map's
+/// raster is drawn (its pixels then RGBA, four bytes each), 1 for any other bitmap (RGB).
+pub(crate) fn bitmap_density() -> u32 {
+    DRAWING.with(Cell::get)
+}
+
+/// A field rasterised over a box of whole units of a drawing area.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Raster {
+    /// The box's top-left corner, in the area's units.
+    pub origin: (i32, i32),
+    /// Its size in pixels: [`DENSITY`] times its size in units.
+    pub size: (u32, u32),
+    /// Row-major RGBA pixels; alpha is the share of the pixel's samples where the field is
+    /// defined, the colour their average.
+    pub rgba: Vec<u8>,
+}
+
+impl Raster {
+    /// Samples `colour_at(x, y)` (the area's units, fractional; `None`: nothing there) over the
+    /// box `[x0, x1] × [y0, y1]` of whole units.
+    pub fn sample(
+        (x0, y0, x1, y1): (i32, i32, i32, i32),
+        colour_at: impl Fn(f64, f64) -> Option<RGBColor>,
+    ) -> Self {
+        let d = DENSITY;
+        let (w, h) = ((x1 - x0).max(0) as u32 * d, (y1 - y0).max(0) as u32 * d);
+        let mut rgba = vec![0u8; (w * h * 4) as usize];
+        let step = 1.0 / f64::from(d * SUB);
+        let n = f64::from(SUB * SUB);
+        for py in 0..h {
+            for px in 0..w {
+                let (mut r, mut g, mut b, mut hits) = (0.0, 0.0, 0.0, 0.0);
+                for sy in 0..SUB {
+                    for sx in 0..SUB {
+                        let x = f64::from(x0) + (f64::from(px * SUB + sx) + 0.5) * step;
+                        let y = f64::from(y0) + (f64::from(py * SUB + sy) + 0.5) * step;
+                        if let Some(c) = colour_at(x, y) {
+                            r += f64::from(c.0);
+                            g += f64::from(c.1);
+                            b += f64::from(c.2);
+                            hits += 1.0;
+                        }
+                    }
+                }
+                if hits > 0.0 {
+                    let k = ((py * w + px) * 4) as usize;
+                    rgba[k] = (r / hits).round() as u8;
+                    rgba[k + 1] = (g / hits).round() as u8;
+                    rgba[k + 2] = (b / hits).round() as u8;
+                    rgba[k + 3] = (255.0 * hits / n).round() as u8;
+                }
+            }
         }
-        root.present()?;
+        Self {
+            origin: (x0, y0),
+            size: (w, h),
+            rgba,
+        }
     }
-    let small = downsample(&big, w, h, s);
-    let image = BitMapElement::with_owned_buffer((x0, y0), (w, h), small)
-        .ok_or_else(|| Fail::Draw("heat-map raster of the wrong size".into()))?;
-    area.draw(&image)?;
-    Ok(())
+
+    /// The pixel at `(px, py)`, RGBA.
+    #[cfg(test)]
+    pub fn pixel(&self, px: u32, py: u32) -> [u8; 4] {
+        let k = ((py * self.size.0 + px) * 4) as usize;
+        [
+            self.rgba[k],
+            self.rgba[k + 1],
+            self.rgba[k + 2],
+            self.rgba[k + 3],
+        ]
+    }
+
+    /// Draws the raster into `area` in one piece.
+    pub fn draw<DB: DrawingBackend>(self, area: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        if self.size.0 == 0 || self.size.1 == 0 {
+            return Ok(());
+        }
+        let image = BitMapElement::with_owned_buffer(self.origin, self.size, self.rgba)
+            .ok_or_else(|| Fail::Draw("heat-map raster of the wrong size".into()))?;
+        DRAWING.with(|c| c.set(DENSITY));
+        let drawn = area.draw(&image);
+        DRAWING.with(|c| c.set(1));
+        drawn?;
+        Ok(())
+    }
+}
+
+/// A raster of `d` pixels per unit (`w × h` RGBA pixels) fitted to a bitmap of `s` pixels per
+/// unit and laid over white (the page under every heat map): RGB, `(w s/d) × (h s/d)` pixels.
+/// Each pixel takes the average of the raster's pixels it covers (or the one it lies in, where
+/// the bitmap is the finer).
+pub(crate) fn fit_to_scale(
+    src: &[u8],
+    (w, h): (u32, u32),
+    d: u32,
+    s: u32,
+) -> (Vec<u8>, (u32, u32)) {
+    let (tw, th) = (w * s / d.max(1), h * s / d.max(1));
+    let mut out = vec![255u8; (tw * th * 3) as usize];
+    // The raster's pixels under one bitmap pixel: a block of b × b, or one.
+    let b = (d / s.max(1)).max(1);
+    for ty in 0..th {
+        for tx in 0..tw {
+            let (sx, sy) = (tx * d / s, ty * d / s);
+            let mut acc = [0.0f64; 3];
+            let mut cover = 0.0;
+            for y in sy..(sy + b).min(h) {
+                for x in sx..(sx + b).min(w) {
+                    let k = ((y * w + x) * 4) as usize;
+                    let a = f64::from(src[k + 3]) / 255.0;
+                    for c in 0..3 {
+                        acc[c] += a * f64::from(src[k + c]) + (1.0 - a) * 255.0;
+                    }
+                    cover += 1.0;
+                }
+            }
+            let k = ((ty * tw + tx) * 3) as usize;
+            for c in 0..3 {
+                out[k + c] = (acc[c] / cover).round() as u8;
+            }
+        }
+    }
+    (out, (tw, th))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A disk of radius 2 units about (2, 2) in a 4 × 4 box: [`DENSITY`] pixels per unit (at
+    /// least 4, issue 25), opaque inside, zero alpha outside (nothing bleeds), partial on the
+    /// border; and laid over white for a bitmap of 8 pixels per unit, the corner is white.
+    #[test]
+    fn rasters_are_dense_and_transparent_outside_the_field() {
+        let red = RGBColor(200, 0, 0);
+        let r = Raster::sample((0, 0, 4, 4), |x, y| {
+            ((x - 2.0).powi(2) + (y - 2.0).powi(2) <= 4.0).then_some(red)
+        });
+        assert!(DENSITY >= 4);
+        assert_eq!(r.size, (4 * DENSITY, 4 * DENSITY));
+        let c = 2 * DENSITY;
+        assert_eq!(r.pixel(c, c), [200, 0, 0, 255]);
+        assert_eq!(r.pixel(0, 0)[3], 0, "a corner outside the disk");
+        // A pixel the circle cuts: the one holding (2 + √2, 2 + √2), on the circle.
+        let p = ((2.0 + std::f64::consts::SQRT_2) * f64::from(DENSITY)) as u32;
+        let edge = r.pixel(p, p);
+        assert!(edge[3] > 0 && edge[3] < 255, "{edge:?}");
+        let (rgb, (w, h)) = fit_to_scale(&r.rgba, r.size, DENSITY, 8);
+        assert_eq!((w, h), (32, 32));
+        assert_eq!(&rgb[..3], &[255, 255, 255]);
+        let k = ((16 * 32 + 16) * 3) as usize;
+        assert_eq!(&rgb[k..k + 3], &[200, 0, 0]);
+        // Fitted to 2 pixels per unit: blocks of 2 × 2 averaged.
+        let (_, size) = fit_to_scale(&r.rgba, r.size, DENSITY, 2);
+        assert_eq!(size, (8, 8));
+    }
 }
