@@ -13,11 +13,13 @@
 //! A single-character subscript `_c` is recognised only after a one-letter name (`M_x`, `E_p`,
 //! `z_i`), so that code names in captions (`n_prime_from_eta`, `distribution_g`) stay as they are.
 
+use plotters::element::{Drawable, PointCollection};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters_backend::{
     BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingErrorKind,
 };
+use std::cell::Cell;
 
 /// Where a backend puts the text it is given (as fractions of plotters' font size `s`).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -185,7 +187,26 @@ pub(crate) struct Canvas<B> {
     inner: B,
     scale: i32,
     metrics: Metrics,
+    /// `inner` is a vector backend ([`super::svg::Svg`]): a rectangle from `a` to `b` covers
+    /// `b − a` units (not `b − a + 1` pixels), and a bitmap is handed on at its own resolution,
+    /// not enlarged.
+    vector: bool,
 }
+
+/// A figure unit is split into this many steps for the shapes drawn with [`Fine`]: plotters
+/// hands its backends whole units ([`BackendCoord`] is integer), which shows as steps along a
+/// smooth curve; a [`Fine`] shape keeps its positions to 1/`SUBUNIT` of a unit.
+pub(crate) const SUBUNIT: i32 = 10;
+
+thread_local! {
+    /// Set while a [`Fine`] shape is drawn: coordinates are in 1/[`SUBUNIT`] figure units.
+    static FINE: Cell<bool> = const { Cell::new(false) };
+    /// Set by a [`Canvas`] that answers [`Fine`]'s probe.
+    static FINE_OK: Cell<bool> = const { Cell::new(false) };
+}
+
+/// The pixel [`Fine`] probes its backend with: a [`Canvas`] answers it and draws nothing.
+const PROBE: BackendCoord = (i32::MIN, i32::MIN);
 
 impl<B: DrawingBackend> Canvas<B> {
     /// `inner` must be `scale` times the figure's size in both directions.
@@ -194,11 +215,35 @@ impl<B: DrawingBackend> Canvas<B> {
             inner,
             scale: scale.max(1) as i32,
             metrics,
+            vector: false,
         }
     }
 
+    /// The same canvas over a vector backend (see the field `vector`).
+    pub fn vector(mut self) -> Self {
+        self.vector = true;
+        self
+    }
+
+    /// The inner position of a figure position, or of a [`Fine`] one (in 1/[`SUBUNIT`] units).
     fn up(&self, (x, y): BackendCoord) -> BackendCoord {
-        (x * self.scale, y * self.scale)
+        if FINE.get() {
+            let k = f64::from(self.scale) / f64::from(SUBUNIT);
+            let f = |v: i32| (f64::from(v) * k).round() as i32;
+            (f(x), f(y))
+        } else {
+            (x * self.scale, y * self.scale)
+        }
+    }
+
+    /// The end of a rectangle's inner extent: `scale − 1` pixels further on a bitmap (its last
+    /// pixel), none on a vector backend.
+    fn far(&self) -> i32 {
+        if self.vector {
+            0
+        } else {
+            self.scale - 1
+        }
     }
 
     fn stroke<S: BackendStyle>(&self, style: &S) -> Stroke {
@@ -289,8 +334,16 @@ impl<B: DrawingBackend> DrawingBackend for Canvas<B> {
     }
 
     fn draw_pixel(&mut self, point: BackendCoord, color: BackendColor) -> Res<B::ErrorType> {
+        if point == PROBE && color.alpha == 0.0 {
+            FINE_OK.set(true);
+            return Ok(());
+        }
         let (x, y) = self.up(point);
-        let s = self.scale - 1;
+        let s = if self.vector {
+            self.scale
+        } else {
+            self.scale - 1
+        };
         self.inner.draw_rect((x, y), (x + s, y + s), &color, true)
     }
 
@@ -315,7 +368,7 @@ impl<B: DrawingBackend> DrawingBackend for Canvas<B> {
         let st = self.stroke(style);
         let a = self.up(upper_left);
         let b = self.up(bottom_right);
-        let s = self.scale - 1;
+        let s = self.far();
         self.inner.draw_rect(a, (b.0 + s, b.1 + s), &st, fill)
     }
 
@@ -413,6 +466,12 @@ impl<B: DrawingBackend> DrawingBackend for Canvas<B> {
     ) -> Res<B::ErrorType> {
         let s = self.scale as usize;
         let pos = self.up(pos);
+        if self.vector {
+            // A vector backend at `scale` units per figure unit takes the bitmap as it is, at
+            // one pixel per figure unit ([`super::svg::Svg::blit_bitmap`]).
+            let k = self.scale as u32;
+            return self.inner.blit_bitmap(pos, (w * k, h * k), src);
+        }
         if s == 1 {
             return self.inner.blit_bitmap(pos, (w, h), src);
         }
@@ -437,6 +496,63 @@ impl<B: DrawingBackend> DrawingBackend for Canvas<B> {
         let runs = typeset(text);
         let (_, total, height) = layout(&runs, style, style.size(), 1.0)?;
         Ok((total.ceil() as u32, height.ceil() as u32))
+    }
+}
+
+/// A polyline or a filled polygon at positions finer than a figure unit (plotters' own elements
+/// are placed at whole units), in the backend's figure coordinates (absolute, not relative to
+/// a drawing area). On a [`Canvas`] its positions are kept to 1/[`SUBUNIT`] of a unit; any other
+/// backend gets them rounded.
+pub(crate) struct Fine {
+    pub points: Vec<(f64, f64)>,
+    pub colour: BackendColor,
+    /// The stroke width of a polyline; `None` fills the polygon.
+    pub stroke: Option<u32>,
+}
+
+impl<'a> PointCollection<'a, BackendCoord> for &'a Fine {
+    type Point = &'a BackendCoord;
+    type IntoIter = [&'a BackendCoord; 0];
+    fn point_iter(self) -> Self::IntoIter {
+        []
+    }
+}
+
+impl<DB: DrawingBackend> Drawable<DB> for Fine {
+    fn draw<I: Iterator<Item = BackendCoord>>(
+        &self,
+        _: I,
+        backend: &mut DB,
+        _: (u32, u32),
+    ) -> Result<(), DrawingErrorKind<DB::ErrorType>> {
+        FINE_OK.set(false);
+        backend.draw_pixel(
+            PROBE,
+            BackendColor {
+                alpha: 0.0,
+                rgb: (0, 0, 0),
+            },
+        )?;
+        let fine = FINE_OK.replace(false);
+        let k = if fine { f64::from(SUBUNIT) } else { 1.0 };
+        let pts: Vec<BackendCoord> = self
+            .points
+            .iter()
+            .map(|&(x, y)| ((x * k).round() as i32, (y * k).round() as i32))
+            .collect();
+        FINE.set(fine);
+        let done = match self.stroke {
+            Some(width) => backend.draw_path(
+                pts,
+                &Stroke {
+                    color: self.colour,
+                    width,
+                },
+            ),
+            None => backend.fill_polygon(pts, &self.colour),
+        };
+        FINE.set(false);
+        done
     }
 }
 

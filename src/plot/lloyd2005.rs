@@ -69,7 +69,9 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     let mut c = LineChart::new(
         "solid: ξ = 0, dashed: |ξ| = 1",
         Axis::integer("number of face subdivisions k", 1.0, 10.0),
-        Axis::log10("m_{max}(k) / m_{max}(1) (log scale)", 1e-3, 1.0),
+        // Up to 2, so that the top curve's label fits above it (the curves are too close for a
+        // label between them).
+        Axis::log10("m_{max}(k) / m_{max}(1) (log scale)", 1e-3, 2.0),
     );
     c.legend = SeriesLabelPosition::LowerLeft;
     for (i, alpha) in [10.0, 100.0, 1000.0, 10_000.0].into_iter().enumerate() {
@@ -83,8 +85,9 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
             } else {
                 format!("α = {}, ξ = 0", fmt_times_ten(alpha))
             };
-            // Labelled directly (a legend covered the dashed curves): the solid ones at k = 10,
-            // the dashed ones at k = 6, so that neighbours' labels stay apart.
+            // Labelled directly (a legend covered the dashed curves), preferably the solid ones
+            // near k = 10 and the dashed ones near k = 6; each label goes where it covers no
+            // other curve (chart::place_label).
             let at = if dashed { 6.0 } else { 10.0 };
             let s = Series::line(label, pts, PALETTE[i])
                 .with_markers()

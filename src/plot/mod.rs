@@ -47,6 +47,8 @@ mod lloyd2005;
 mod lloyd2006;
 mod martin_tan;
 mod options;
+#[cfg(feature = "pdf")]
+mod pdf;
 mod svg;
 mod trapezoid;
 mod warp_grid;
@@ -72,6 +74,9 @@ pub enum Format {
     /// Both `NAME.png` and `NAME.svg`.
     #[default]
     Both,
+    /// `NAME.pdf` only: the SVG as a vector PDF with its font embedded. Needs the crate's
+    /// feature `pdf`; without it, rendering refuses with [`PlotError::PdfDisabled`].
+    Pdf,
 }
 
 impl Format {
@@ -82,6 +87,7 @@ impl Format {
             Format::Png => &["png"],
             Format::Svg => &["svg"],
             Format::Both => &["png", "svg"],
+            Format::Pdf => &["pdf"],
         }
     }
 }
@@ -89,12 +95,13 @@ impl Format {
 impl FromStr for Format {
     type Err = PlotError;
 
-    /// Parses `png`, `svg` or `both` (case-insensitive).
+    /// Parses `png`, `svg`, `both` or `pdf` (case-insensitive).
     fn from_str(s: &str) -> Result<Self, PlotError> {
         match s.to_ascii_lowercase().as_str() {
             "png" => Ok(Format::Png),
             "svg" => Ok(Format::Svg),
             "both" => Ok(Format::Both),
+            "pdf" => Ok(Format::Pdf),
             _ => Err(PlotError::UnknownFormat(s.to_string())),
         }
     }
@@ -106,6 +113,7 @@ impl fmt::Display for Format {
             Format::Png => "png",
             Format::Svg => "svg",
             Format::Both => "both",
+            Format::Pdf => "pdf",
         })
     }
 }
@@ -142,9 +150,16 @@ pub enum PlotError {
     /// An [`Options`] value is out of range; the message names it and its range.
     #[error("invalid option: {0}")]
     InvalidOption(String),
-    /// The format is not `png`, `svg` or `both`.
-    #[error("unknown format {0:?} (expected png, svg or both)")]
+    /// The format is not `png`, `svg`, `both` or `pdf`.
+    #[error("unknown format {0:?} (expected png, svg, both or pdf)")]
     UnknownFormat(String),
+    /// [`Format::Pdf`] was asked of a build without the feature `pdf`. Fix: build with it
+    /// (`--features pdf`, or `--features cli,pdf` for the command line).
+    #[error(
+        "PDF output needs the crate's feature `pdf`: build with `--features pdf` \
+         (the command line: `cargo install shadow-aliasing --features cli,pdf`)"
+    )]
+    PdfDisabled,
     /// The output directory could not be created or a file could not be written.
     /// Fix: choose a writable directory.
     #[error("cannot write {path}: {source}")]
@@ -278,7 +293,7 @@ fn emit<F: Figure>(
                 let rgb = canvas::downsample(&big, pw, ph, SUPERSAMPLE);
                 let mut png = Vec::new();
                 image::codecs::png::PngEncoder::new(&mut png)
-                    .write_image(&rgb, pw, ph, image::ColorType::Rgb8)
+                    .write_image(&rgb, pw, ph, image::ExtendedColorType::Rgb8)
                     .map_err(|e| PlotError::Io {
                         path: path.clone(),
                         source: std::io::Error::other(e),
@@ -287,12 +302,24 @@ fn emit<F: Figure>(
             } else {
                 let mut svg = String::new();
                 {
-                    let doc = svg::Svg::new(&mut svg, (w, h), opts.scale);
-                    let root = canvas::Canvas::new(doc, 1, canvas::SVG_TEXT).into_drawing_area();
+                    // Drawn at SUBUNIT units per view-box unit, so that shapes placed finer
+                    // than a unit (curves, rims) keep their positions in the file.
+                    let k = canvas::SUBUNIT as u32;
+                    let doc = svg::Svg::new(&mut svg, (w, h), opts.scale).units(k);
+                    let root = canvas::Canvas::new(doc, k, canvas::SVG_TEXT)
+                        .vector()
+                        .into_drawing_area();
                     fig.draw(&root).map_err(|e| e.named(name))?;
                     root.present().map_err(|e| Fail::from(e).named(name))?;
                 }
-                Ok(svg.into_bytes())
+                if *ext == "pdf" {
+                    to_pdf(&svg).map_err(|message| PlotError::Drawing {
+                        figure: name,
+                        message,
+                    })
+                } else {
+                    Ok(svg.into_bytes())
+                }
             }
         })?;
         std::fs::write(&path, bytes).map_err(|source| PlotError::Io {
@@ -302,6 +329,18 @@ fn emit<F: Figure>(
         written.push(path);
     }
     Ok(written)
+}
+
+/// A PDF of the SVG `svg` ([`pdf::from_svg`]).
+#[cfg(feature = "pdf")]
+fn to_pdf(svg: &str) -> Result<Vec<u8>, String> {
+    pdf::from_svg(svg)
+}
+
+/// Never called: [`render_with`] refuses [`Format::Pdf`] first without the feature.
+#[cfg(not(feature = "pdf"))]
+fn to_pdf(_: &str) -> Result<Vec<u8>, String> {
+    Err(PlotError::PdfDisabled.to_string())
 }
 
 /// Renders one figure by name into `out_dir` (created if missing) and returns the files written.
@@ -326,6 +365,9 @@ pub fn render_with(
     options: &Options,
 ) -> Result<Vec<PathBuf>, PlotError> {
     options.validate()?;
+    if format == Format::Pdf && !cfg!(feature = "pdf") {
+        return Err(PlotError::PdfDisabled);
+    }
     let Some(&name) = FIGURES.iter().find(|&&n| n == name) else {
         return Err(PlotError::UnknownFigure(name.to_string()));
     };

@@ -6,7 +6,10 @@
 //!   substitutes;
 //! - the family is a list, [`FAMILY`], led by the DejaVu Sans whose metrics the layout uses;
 //! - a bitmap ([`DrawingBackend::blit_bitmap`], used for heat maps) is one embedded PNG
-//!   `<image>`, not one rectangle per pixel.
+//!   `<image>`, not one rectangle per pixel;
+//! - it can be drawn at `k` units per unit of its view box ([`Svg::units`]): positions, sizes
+//!   and stroke widths are written divided by `k`, so that shapes placed finer than a unit
+//!   ([`super::canvas::Fine`]) keep their positions.
 
 use super::canvas::{typeset, Run};
 use image::ImageEncoder;
@@ -42,6 +45,8 @@ pub(crate) struct Svg<'a> {
     size: (u32, u32),
     /// The document's `width` and `height` are `zoom` times its view box.
     zoom: u32,
+    /// Backend units per unit of the view box.
+    k: u32,
     body: String,
 }
 
@@ -51,27 +56,55 @@ impl<'a> Svg<'a> {
             out,
             size,
             zoom,
+            k: 1,
             body: String::new(),
         }
+    }
+
+    /// The same document drawn at `k` backend units per unit of its view box: its size as a
+    /// backend is `k` times `size`, and everything is written divided by `k`.
+    pub fn units(mut self, k: u32) -> Self {
+        self.k = k.max(1);
+        self
+    }
+
+    /// A length or position in view-box units (to 1/1000).
+    fn u(&self, v: i32) -> f64 {
+        round(f64::from(v) / f64::from(self.k))
+    }
+
+    /// A list of points as `x,y x,y …` in view-box units.
+    fn points(&self, pts: impl IntoIterator<Item = BackendCoord>) -> String {
+        let mut s = String::new();
+        for (x, y) in pts {
+            let _ = write!(s, "{},{} ", self.u(x), self.u(y));
+        }
+        s.truncate(s.trim_end().len());
+        s
+    }
+
+    /// A shape's fill or outline attributes: filled without a stroke, or stroked without a fill.
+    fn paint<S: BackendStyle>(&self, st: &S, fill: bool) -> String {
+        let c = colour(st.color());
+        if fill {
+            format!("fill=\"{c}\" stroke=\"none\"")
+        } else {
+            format!(
+                "fill=\"none\" stroke=\"{c}\" stroke-width=\"{}\"",
+                self.width(st)
+            )
+        }
+    }
+
+    /// A style's stroke width in view-box units.
+    fn width<S: BackendStyle>(&self, st: &S) -> f64 {
+        self.u(st.stroke_width() as i32)
     }
 }
 
 fn colour(c: BackendColor) -> String {
     let (r, g, b) = c.rgb;
     format!("#{r:02X}{g:02X}{b:02X}")
-}
-
-/// A shape's fill or outline attributes: filled without a stroke, or stroked without a fill.
-fn paint<S: BackendStyle>(st: &S, fill: bool) -> String {
-    let c = colour(st.color());
-    if fill {
-        format!("fill=\"{c}\" stroke=\"none\"")
-    } else {
-        format!(
-            "fill=\"none\" stroke=\"{c}\" stroke-width=\"{}\"",
-            st.stroke_width()
-        )
-    }
 }
 
 fn opacity(c: BackendColor) -> String {
@@ -158,7 +191,7 @@ impl DrawingBackend for Svg<'_> {
     type ErrorType = SvgError;
 
     fn get_size(&self) -> (u32, u32) {
-        self.size
+        (self.size.0 * self.k, self.size.1 * self.k)
     }
 
     fn ensure_prepared(&mut self) -> Res {
@@ -179,9 +212,14 @@ impl DrawingBackend for Svg<'_> {
     }
 
     fn draw_pixel(&mut self, (x, y): BackendCoord, c: BackendColor) -> Res {
+        if c.alpha == 0.0 {
+            return Ok(());
+        }
         let _ = writeln!(
             self.body,
-            "<rect x=\"{x}\" y=\"{y}\" width=\"1\" height=\"1\" fill=\"{}\"{}/>",
+            "<rect x=\"{}\" y=\"{}\" width=\"1\" height=\"1\" fill=\"{}\"{}/>",
+            self.u(x),
+            self.u(y),
             colour(c),
             opacity(c)
         );
@@ -193,12 +231,12 @@ impl DrawingBackend for Svg<'_> {
         let _ = writeln!(
             self.body,
             "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"{}\"{}/>",
-            a.0,
-            a.1,
-            b.0,
-            b.1,
+            self.u(a.0),
+            self.u(a.1),
+            self.u(b.0),
+            self.u(b.1),
             colour(c),
-            st.stroke_width(),
+            self.width(st),
             opacity(c)
         );
         Ok(())
@@ -212,14 +250,14 @@ impl DrawingBackend for Svg<'_> {
         fill: bool,
     ) -> Res {
         let c = st.color();
-        let paint = paint(st, fill);
+        let paint = self.paint(st, fill);
         let _ = writeln!(
             self.body,
             "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" {paint}{}/>",
-            a.0,
-            a.1,
-            b.0 - a.0,
-            b.1 - a.1,
+            self.u(a.0),
+            self.u(a.1),
+            self.u(b.0 - a.0),
+            self.u(b.1 - a.1),
             opacity(c)
         );
         Ok(())
@@ -231,14 +269,13 @@ impl DrawingBackend for Svg<'_> {
         st: &S,
     ) -> Res {
         let c = st.color();
-        let pts: String = path.into_iter().map(|(x, y)| format!("{x},{y} ")).collect();
+        let pts = self.points(path);
         let _ = writeln!(
             self.body,
-            "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"{} points=\"{}\"/>",
+            "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"{}\"{} points=\"{pts}\"/>",
             colour(c),
-            st.stroke_width(),
+            self.width(st),
             opacity(c),
-            pts.trim_end()
         );
         Ok(())
     }
@@ -251,10 +288,13 @@ impl DrawingBackend for Svg<'_> {
         fill: bool,
     ) -> Res {
         let c = st.color();
-        let paint = paint(st, fill);
+        let paint = self.paint(st, fill);
         let _ = writeln!(
             self.body,
-            "<circle cx=\"{x}\" cy=\"{y}\" r=\"{r}\" {paint}{}/>",
+            "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" {paint}{}/>",
+            self.u(x),
+            self.u(y),
+            self.u(r as i32),
             opacity(c)
         );
         Ok(())
@@ -266,13 +306,12 @@ impl DrawingBackend for Svg<'_> {
         st: &S,
     ) -> Res {
         let c = st.color();
-        let pts: String = vert.into_iter().map(|(x, y)| format!("{x},{y} ")).collect();
+        let pts = self.points(vert);
         let _ = writeln!(
             self.body,
-            "<polygon fill=\"{}\"{} points=\"{}\"/>",
+            "<polygon fill=\"{}\"{} points=\"{pts}\"/>",
             colour(c),
             opacity(c),
-            pts.trim_end()
         );
         Ok(())
     }
@@ -293,7 +332,8 @@ impl DrawingBackend for Svg<'_> {
             VPos::Center => "0.5ex",
             VPos::Bottom => "-0.5ex",
         };
-        let f = round(st.size() * FONT_SIZE);
+        let f = round(st.size() / f64::from(self.k) * FONT_SIZE);
+        let (x, y) = (self.u(x), self.u(y));
         let mut attrs = format!(
             "x=\"{x}\" y=\"{y}\" dy=\"{dy}\" text-anchor=\"{h}\" font-family=\"{FAMILY}\" \
              font-size=\"{f}\" fill=\"{}\"{}",
@@ -324,15 +364,27 @@ impl DrawingBackend for Svg<'_> {
         Ok(())
     }
 
+    /// The bitmap's pixels are view-box units: at `k` units per view-box unit, `(w, h)` is `k`
+    /// times the bitmap's size in pixels (as [`super::canvas::Canvas`] hands it on).
     fn blit_bitmap(&mut self, (x, y): BackendCoord, (w, h): (u32, u32), src: &[u8]) -> Res {
+        let (w, h) = (w / self.k, h / self.k);
+        if src.len() != (w * h * 3) as usize {
+            return Err(DrawingErrorKind::DrawingError(SvgError(format!(
+                "a bitmap of {} bytes is not {w} × {h} RGB pixels",
+                src.len()
+            ))));
+        }
+        let (x, y) = (self.u(x), self.u(y));
         let mut png = Vec::new();
         image::codecs::png::PngEncoder::new(&mut png)
-            .write_image(src, w, h, image::ColorType::Rgb8)
+            .write_image(src, w, h, image::ExtendedColorType::Rgb8)
             .map_err(|e| DrawingErrorKind::DrawingError(SvgError(e.to_string())))?;
         let _ = writeln!(
             self.body,
-            "<image x=\"{x}\" y=\"{y}\" width=\"{w}\" height=\"{h}\" \
+            "<image x=\"{x}\" y=\"{y}\" width=\"{}\" height=\"{}\" \
              preserveAspectRatio=\"none\" href=\"data:image/png;base64,{}\"/>",
+            w,
+            h,
             base64(&png)
         );
         Ok(())

@@ -132,6 +132,9 @@ pub enum Format {
     Svg,
     /// PNG and SVG.
     Both,
+    /// PDF only (vector, font embedded): needs the crate's feature `pdf`
+    /// (`cargo install shadow-aliasing --features cli,pdf`).
+    Pdf,
 }
 
 /// `eval` arguments.

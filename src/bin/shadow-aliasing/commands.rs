@@ -253,6 +253,7 @@ fn figures(a: &FiguresArgs) -> ExitCode {
         Format::Png => plot::Format::Png,
         Format::Svg => plot::Format::Svg,
         Format::Both => plot::Format::Both,
+        Format::Pdf => plot::Format::Pdf,
     };
     let options = plot::Options {
         bare: a.bare,

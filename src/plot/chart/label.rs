@@ -4,6 +4,7 @@
 use super::super::canvas::anchor_offset;
 use super::super::Fail;
 use super::axis::Chart2d;
+use super::line::clip_segment;
 use super::FONT;
 use plotters::prelude::*;
 use plotters::style::text_anchor::Pos;
@@ -40,5 +41,239 @@ pub(crate) fn boxed_text<DB: DrawingBackend>(
             )
             + Text::new(text.to_string(), (0, 0), style.clone()),
     ))?;
+    Ok(())
+}
+
+/// A box in backend units: left, top, right, bottom.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Rect {
+    pub x0: f64,
+    pub y0: f64,
+    pub x1: f64,
+    pub y1: f64,
+}
+
+impl Rect {
+    /// The box `w` × `h` whose anchor `pos` is at `at`.
+    pub fn anchored(at: (f64, f64), pos: Pos, w: f64, h: f64) -> Self {
+        let (dx, dy) = anchor_offset(pos, w, h);
+        Self {
+            x0: at.0 + dx,
+            y0: at.1 + dy,
+            x1: at.0 + dx + w,
+            y1: at.1 + dy + h,
+        }
+    }
+
+    /// The box grown by `d` on every side.
+    pub fn grown(self, d: f64) -> Self {
+        Self {
+            x0: self.x0 - d,
+            y0: self.y0 - d,
+            x1: self.x1 + d,
+            y1: self.y1 + d,
+        }
+    }
+
+    pub fn overlaps(&self, o: &Rect) -> bool {
+        self.x0 < o.x1 && o.x0 < self.x1 && self.y0 < o.y1 && o.y0 < self.y1
+    }
+
+    pub fn contains(&self, o: &Rect) -> bool {
+        self.x0 <= o.x0 && o.x1 <= self.x1 && self.y0 <= o.y0 && o.y1 <= self.y1
+    }
+
+    /// Whether the segment `a`–`b` passes through the box.
+    pub fn crosses(&self, a: (f64, f64), b: (f64, f64)) -> bool {
+        clip_segment(a, b, (self.x0, self.x1, self.y0, self.y1)).is_some()
+    }
+}
+
+/// What a label must not cover: the drawn lines and markers of a chart's series (backend
+/// units), each with the index of its series, and the boxes already placed.
+#[derive(Debug, Default)]
+pub(crate) struct Obstacles {
+    pub segments: Vec<((f64, f64), (f64, f64), usize)>,
+    pub markers: Vec<(Rect, usize)>,
+    pub boxes: Vec<Rect>,
+}
+
+impl Obstacles {
+    /// How many lines, markers and boxes of series other than `own` the box touches, and how
+    /// many segments of `own`.
+    pub fn hits(&self, r: &Rect, own: Option<usize>) -> (usize, usize) {
+        let mut other = 0;
+        let mut mine = 0;
+        for &(a, b, s) in &self.segments {
+            if r.crosses(a, b) {
+                if Some(s) == own {
+                    mine += 1;
+                } else {
+                    other += 1;
+                }
+            }
+        }
+        other += self
+            .markers
+            .iter()
+            .filter(|(m, s)| Some(*s) != own && r.overlaps(m))
+            .count();
+        other += self.boxes.iter().filter(|b| r.overlaps(b)).count();
+        (other, mine)
+    }
+}
+
+/// Where a series' direct label goes: among boxes of `w` × `h` beside each of `points` (its
+/// drawn points, backend units; `preferred` is the index of the point asked for), the one inside
+/// `area` that covers no other series' line or marker nor a placed box, crosses its own line
+/// least, and lies nearest the preferred point. Returns the box.
+pub(crate) fn place_label(
+    points: &[(f64, f64)],
+    preferred: usize,
+    (w, h): (f64, f64),
+    area: &Rect,
+    own: usize,
+    obstacles: &Obstacles,
+) -> Option<Rect> {
+    use plotters::style::text_anchor::{HPos, VPos};
+    let gap = 3.0;
+    let p0 = *points.get(preferred)?;
+    let corners = [
+        (HPos::Right, VPos::Bottom, (-gap, -gap)),
+        (HPos::Left, VPos::Bottom, (gap, -gap)),
+        (HPos::Right, VPos::Top, (-gap, gap)),
+        (HPos::Left, VPos::Top, (gap, gap)),
+        (HPos::Center, VPos::Bottom, (0.0, -gap)),
+        (HPos::Center, VPos::Top, (0.0, gap)),
+        // On the line itself (covering a piece of its own line only).
+        (HPos::Center, VPos::Center, (0.0, 0.0)),
+    ];
+    // Beside every drawn point, and every 4 units along the line between them.
+    let mut along = vec![p0];
+    for w2 in points.windows(2) {
+        let (a, b) = (w2[0], w2[1]);
+        let n = ((b.0 - a.0).hypot(b.1 - a.1) / 4.0).ceil().max(1.0);
+        along.extend((0..n as usize).map(|j| {
+            let t = j as f64 / n;
+            (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
+        }));
+    }
+    along.extend(points.last());
+    let mut candidates = Vec::new();
+    for p in along {
+        for (k, &(hp, vp, (dx, dy))) in corners.iter().enumerate() {
+            let r = Rect::anchored((p.0 + dx, p.1 + dy), Pos::new(hp, vp), w, h);
+            let far = (p.0 - p0.0).hypot(p.1 - p0.1);
+            // A label nearer another line than its own would be read as that line's.
+            let c = (0.5 * (r.x0 + r.x1), 0.5 * (r.y0 + r.y1));
+            let nearest = |mine: bool| {
+                obstacles
+                    .segments
+                    .iter()
+                    .filter(|s| (s.2 == own) == mine)
+                    .map(|&(a, b, _)| distance(c, a, b))
+                    .fold(f64::INFINITY, f64::min)
+            };
+            let ambiguous = if nearest(false) < nearest(true) {
+                1e3
+            } else {
+                0.0
+            };
+            candidates.push((r, far + k as f64 + ambiguous));
+        }
+    }
+    best_box(candidates, area, Some(own), obstacles)
+}
+
+/// The distance from `p` to the segment `a`–`b`.
+fn distance(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 > 0.0 {
+        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+}
+
+/// The best of `candidates` (boxes with a cost of their own): inside `area`, covering the fewest
+/// lines, markers and boxes of other series than `own`, then crossing `own`'s line least, then
+/// the cheapest.
+pub(crate) fn best_box(
+    candidates: Vec<(Rect, f64)>,
+    area: &Rect,
+    own: Option<usize>,
+    obstacles: &Obstacles,
+) -> Option<Rect> {
+    let mut best: Option<(f64, Rect)> = None;
+    for (r, base) in candidates {
+        if !area.contains(&r) {
+            continue;
+        }
+        let (other, mine) = obstacles.hits(&r, own);
+        let cost = 1e6 * other as f64 + 40.0 * mine as f64 + base;
+        if best.is_none_or(|(c, _)| cost < c) {
+            best = Some((cost, r));
+        }
+    }
+    best.map(|(_, r)| r)
+}
+
+/// Where a note goes whose text's top left is asked at `at`: its box (text `w` × `h` and the
+/// padding) there, or moved by the least distance (up to 24 units) that clears every line,
+/// marker and box, inside `area`; where nothing is clear, where it was asked.
+pub(crate) fn place_note(
+    at: (f64, f64),
+    (w, h): (f64, f64),
+    area: &Rect,
+    obstacles: &Obstacles,
+) -> Rect {
+    use plotters::style::text_anchor::{HPos, VPos};
+    let p = f64::from(LABEL_PAD);
+    let asked = Rect::anchored(at, Pos::new(HPos::Left, VPos::Top), w, h).grown(p);
+    let mut candidates = Vec::new();
+    for i in -12..=12 {
+        for j in -12..=12 {
+            let (dx, dy) = (2.0 * f64::from(i), 2.0 * f64::from(j));
+            let r = Rect {
+                x0: asked.x0 + dx,
+                y0: asked.y0 + dy,
+                x1: asked.x1 + dx,
+                y1: asked.y1 + dy,
+            };
+            candidates.push((r, dx.hypot(dy)));
+        }
+    }
+    match best_box(candidates, area, None, obstacles) {
+        Some(r) if obstacles.hits(&r, None).0 == 0 => r,
+        _ => asked,
+    }
+}
+
+/// Writes `text` in `colour` at `size` pixels on a white box (as [`boxed_text`]) filling the
+/// box `r` of backend units (a box from [`place_label`]).
+pub(crate) fn text_in_box<DB: DrawingBackend>(
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+    r: &Rect,
+    text: &str,
+    size: u32,
+    colour: RGBColor,
+) -> Result<(), Fail> {
+    use plotters::style::text_anchor::{HPos, VPos};
+    let (bx, by) = area.get_base_pixel();
+    let x0 = r.x0.round() as i32 - bx;
+    let y0 = r.y0.round() as i32 - by;
+    let x1 = r.x1.round() as i32 - bx;
+    let y1 = r.y1.round() as i32 - by;
+    let p = LABEL_PAD;
+    area.draw(&Rectangle::new(
+        [(x0, y0), (x1, y1)],
+        WHITE.mix(0.8).filled(),
+    ))?;
+    let style = TextStyle::from((FONT, size).into_font())
+        .color(&colour)
+        .pos(Pos::new(HPos::Left, VPos::Top));
+    area.draw(&Text::new(text.to_string(), (x0 + p, y0 + p), style))?;
     Ok(())
 }

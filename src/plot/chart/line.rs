@@ -3,11 +3,16 @@
 
 use super::super::Fail;
 use super::axis::{build_chart, Axis};
-use super::label::boxed_text;
+use super::fine::{draw_fine_line, fill_fine_polygon, to_backend};
+use super::label::{place_label, place_note, text_in_box, Obstacles, Rect, LABEL_PAD};
+use super::legend::{draw_legend, Entry};
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+/// The size of direct labels, notes and legend texts.
+const LABEL_SIZE: u32 = 13;
 
 /// How a series' line is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -185,7 +190,7 @@ impl LineChart {
 }
 
 /// Clips the segment `a`–`b` to the box `[x0, x1] × [y0, y1]` (Liang–Barsky).
-fn clip_segment(
+pub(crate) fn clip_segment(
     a: (f64, f64),
     b: (f64, f64),
     (x0, x1, y0, y1): (f64, f64, f64, f64),
@@ -271,7 +276,6 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
     let (x0, x1) = c.x.range();
     let (y0, y1) = c.y.range();
     let bounds = (x0, x1, y0, y1);
-    let mut any_label = false;
     let colours = {
         let mut cs: Vec<RGBColor> = c
             .series
@@ -293,23 +297,24 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
             )))?;
         }
     }
+    let to = to_backend(&chart);
+    let plot = chart.plotting_area().strip_coord_spec();
+    let mut obstacles = Obstacles::default();
+    let mut entries = Vec::new();
+    // Each direct label: its series, its drawn points (backend units) and the one asked for.
+    let mut direct = Vec::new();
     for (k, s) in c.series.iter().enumerate() {
         let pts: Vec<Option<(f64, f64)>> = s
             .points
             .iter()
             .map(|&(x, y)| Some((c.x.to_axis(x)?, c.y.to_axis(y)?)))
             .collect();
-        let style = ShapeStyle {
-            color: s.colour.to_rgba(),
-            filled: false,
-            stroke_width: s.width,
-        };
         for piece in clip_polyline(&pts, bounds) {
-            match s.dash {
-                Dash::Solid => chart.draw_series(LineSeries::new(piece, style))?,
-                Dash::Dashed => chart.draw_series(DashedLineSeries::new(piece, 9, 6, style))?,
-                Dash::Dotted => chart.draw_series(DashedLineSeries::new(piece, 2, 4, style))?,
-            };
+            draw_fine_line(&chart, &piece, s.colour, s.width, s.dash)?;
+            let px: Vec<(f64, f64)> = piece.iter().map(|&p| to(p)).collect();
+            obstacles
+                .segments
+                .extend(px.windows(2).map(|w| (w[0], w[1], k)));
         }
         // Markers: at every point of a series that asks for them, and a few along every other
         // labelled line of a chart with more than one colour (greyscale print).
@@ -330,103 +335,86 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
             Vec::new()
         };
         let r = s.width as i32 + 2;
-        chart.draw_series(
-            along
-                .into_iter()
-                .filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1)
-                .map(|at| EmptyElement::at(at) + Polygon::new(shape.outline(r), s.colour.filled())),
-        )?;
+        let outline = shape.outline(r);
+        for at in along
+            .into_iter()
+            .filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1)
+        {
+            let p = to(at);
+            fill_fine_polygon(&plot, p, &outline, s.colour)?;
+            let m = Rect::anchored(p, Pos::new(HPos::Center, VPos::Center), 0.0, 0.0);
+            obstacles.markers.push((m.grown(f64::from(r + 1)), k));
+        }
+        let inside = |p: &(f64, f64)| p.0 >= x0 && p.0 <= x1 && p.1 >= y0 && p.1 <= y1;
+        let shown: Vec<(f64, f64)> = pts.iter().flatten().copied().filter(inside).collect();
         let anchor = s
             .direct_at
             .and_then(|x| {
                 let a = c.x.to_axis(x)?;
-                pts.iter()
-                    .flatten()
-                    .find(|p| (p.0 - a).abs() < 1e-9)
-                    .copied()
+                shown.iter().position(|p| (p.0 - a).abs() < 1e-9)
             })
-            .or_else(|| pts.last().copied().flatten());
-        if let (true, Some(label), Some(end)) = (s.direct, &s.label, anchor) {
-            if end.0 >= x0 && end.0 <= x1 && end.1 >= y0 && end.1 <= y1 {
-                boxed_text(
-                    &mut chart,
-                    end,
-                    label,
-                    Pos::new(HPos::Right, VPos::Bottom),
-                    13,
-                    s.colour,
-                )?;
+            .or_else(|| {
+                pts.last()
+                    .copied()
+                    .flatten()
+                    .filter(inside)
+                    .map(|_| shown.len() - 1)
+            });
+        match (&s.label, s.direct) {
+            (Some(label), true) => {
+                if let Some(i) = anchor {
+                    direct.push((
+                        k,
+                        label,
+                        shown.iter().map(|&p| to(p)).collect::<Vec<_>>(),
+                        i,
+                    ));
+                }
             }
-        } else if let Some(label) = &s.label {
-            let colour = s.colour;
-            let width = s.width;
-            let dash = s.dash;
-            let markers = !s.reference && (s.markers || colours > 1);
-            chart
-                .draw_series(std::iter::empty::<Circle<(f64, f64), u32>>())?
-                .label(label.as_str())
-                .legend(move |at| {
-                    let style = ShapeStyle {
-                        color: colour.to_rgba(),
-                        filled: false,
-                        stroke_width: width,
-                    };
-                    let p = legend_pieces(dash);
-                    let seg = |(a, b): (i32, i32)| PathElement::new(vec![(a, 0), (b, 0)], style);
-                    let marker = if markers {
-                        colour.filled()
-                    } else {
-                        TRANSPARENT.filled()
-                    };
-                    let outline: Vec<(i32, i32)> = shape
-                        .outline(width as i32 + 2)
-                        .into_iter()
-                        .map(|(x, y)| (x + 12, y))
-                        .collect();
-                    EmptyElement::at(at)
-                        + seg(p[0])
-                        + seg(p[1])
-                        + seg(p[2])
-                        + Polygon::new(outline, marker)
-                });
-            any_label = true;
+            (Some(label), false) => entries.push(Entry {
+                label: label.clone(),
+                colour: s.colour,
+                width: s.width,
+                dash: s.dash,
+                marker: (!s.reference && (s.markers || colours > 1)).then_some(shape),
+            }),
+            (None, _) => {}
         }
     }
-    // Notes on a white box, so that they read over the lines and the grid.
+    // Direct labels beside their own line, clear of every other line, marker and label, near
+    // the point asked for (its right end by default).
+    let (xr, yr) = plot.get_pixel_range();
+    let area = Rect {
+        x0: f64::from(xr.start),
+        y0: f64::from(yr.start),
+        x1: f64::from(xr.end),
+        y1: f64::from(yr.end),
+    };
+    for (k, label, points, i) in direct {
+        let style = TextStyle::from((FONT, LABEL_SIZE).into_font());
+        let (w, h) = plot.estimate_text_size(label, &style)?;
+        let pad = f64::from(2 * LABEL_PAD);
+        let size = (f64::from(w) + pad, f64::from(h) + pad);
+        if let Some(r) = place_label(&points, i, size, &area, k, &obstacles) {
+            text_in_box(&plot, &r, label, LABEL_SIZE, c.series[k].colour)?;
+            obstacles.boxes.push(r);
+        }
+    }
+    // Notes on a white box, so that they read over the lines and the grid, moved a little
+    // where they would cover a line or marker.
     for n in &c.notes {
         if let (Some(x), Some(y)) = (c.x.to_axis(n.at.0), c.y.to_axis(n.at.1)) {
             if x >= x0 && x <= x1 && y >= y0 && y <= y1 {
-                boxed_text(
-                    &mut chart,
-                    (x, y),
-                    &n.text,
-                    Pos::new(HPos::Left, VPos::Top),
-                    13,
-                    n.colour,
-                )?;
+                let style = TextStyle::from((FONT, LABEL_SIZE).into_font());
+                let (w, h) = plot.estimate_text_size(&n.text, &style)?;
+                let size = (f64::from(w), f64::from(h));
+                let r = place_note(to((x, y)), size, &area, &obstacles);
+                text_in_box(&plot, &r, &n.text, LABEL_SIZE, n.colour)?;
+                obstacles.boxes.push(r);
             }
         }
     }
-    if any_label {
-        chart
-            .configure_series_labels()
-            .position(c.legend.clone())
-            .background_style(WHITE.mix(0.9))
-            .border_style(RGBColor(120, 120, 120))
-            .label_font((FONT, 13))
-            .margin(8)
-            .draw()?;
-    }
-    Ok(())
-}
-
-/// The three segments of a legend sample: its line, dashes drawn as gaps.
-fn legend_pieces(dash: Dash) -> [(i32, i32); 3] {
-    match dash {
-        Dash::Solid => [(0, 8), (8, 16), (16, 24)],
-        Dash::Dashed => [(0, 6), (9, 15), (18, 24)],
-        Dash::Dotted => [(0, 2), (11, 13), (22, 24)],
-    }
+    draw_legend(&plot, &entries, &c.legend, &obstacles)
 }
 
 /// The eight colours the line charts cycle through (colour-blind friendly, Okabe–Ito order).
@@ -447,7 +435,7 @@ mod tests {
 
     /// Greyscale (issue 25): each palette colour has its own marker shape, and a chart of two
     /// solid lines of different colours draws that many marker polygons along each (counted in
-    /// the SVG), and none for a chart of one colour.
+    /// the SVG), and none for a chart of one colour (nor in its legend).
     #[test]
     fn lines_of_different_colours_carry_different_markers() {
         super::super::super::ensure_font().unwrap();
@@ -483,7 +471,7 @@ mod tests {
             polygons(&[PALETTE[0], PALETTE[1]]),
             2 * (MARKER_AT.len() + 1)
         );
-        assert_eq!(polygons(&[PALETTE[0]]), 1);
+        assert_eq!(polygons(&[PALETTE[0]]), 0);
     }
 
     #[test]

@@ -10,8 +10,10 @@
 
 mod aspect;
 mod axis;
+mod fine;
 mod heat;
 mod label;
+mod legend;
 mod line;
 mod page;
 mod raster;
