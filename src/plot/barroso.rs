@@ -119,16 +119,70 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         text: format!("φ_y = {phi_deg:.0}° →"),
         colour: grey,
     });
+    let zoom = magnified(&c, (20.0, 40.0), (0.3, 100.0), gl_deg, phi_deg, grey);
+    c.title = "(a) γ from 0° to 90°".into();
     Ok(Charts {
-        size: (520, 560),
+        size: (520, 940),
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![
-            "Barroso & Celes 2007, Fig. 7 (n = 1, f = 100, φ_y = π/6), from analytic::tilted::generalized_n_prime, n_prime_1, n_prime_2, gamma_lim; bold: the paper's curve (Barroso's fall-off), the others for comparison;".into(),
+            "Barroso & Celes 2007, Fig. 7 (n = 1, f = 100, φ_y = π/6), from analytic::tilted::generalized_n_prime, n_prime_1, n_prime_2, gamma_lim; bold: the paper's curve (Barroso's fall-off), the others for comparison; (b) magnifies γ from 20° to 40°, where the curves separate;".into(),
             "LiSPSM's 1/sin γ rule and the M_z-minimising n′ (WarpRule::MinimaxMz) from maps::n_prime_for. Logarithmic n′ axis: every rule tends to n′ = ∞ (no warp) as γ → 0. Each branch of Eq 13 is drawn only on its domain.".into(),
             "The M_z-minimising curve has corners near γ = φ_y: there the frustum corner nearest the warp's centre of projection switches between the near-bottom and the far-bottom one (the switch between Eq 13's branches), so the point where m_z is largest jumps and the minimising n′ follows another formula.".into(),
         ],
-        charts: vec![c],
+        charts: vec![c, zoom],
     })
+}
+
+/// `c` magnified to γ in `x` and n′ in `y`, where the curves separate (issue 25): the same
+/// series (each cut to the window, so that its markers fall inside it) with short legend labels,
+/// and the two angles labelled at the top, where no curve runs.
+fn magnified(
+    c: &LineChart,
+    x: (f64, f64),
+    y: (f64, f64),
+    gl_deg: f64,
+    phi_deg: f64,
+    grey: RGBColor,
+) -> LineChart {
+    let mut z = LineChart::new(
+        format!("(b) magnified: γ from {:.0}° to {:.0}°", x.0, x.1),
+        Axis::linear(c.x.label.clone(), x.0, x.1),
+        Axis::log10(c.y.label.clone(), y.0, y.1),
+    );
+    // Short legend labels, in the empty lower right (the curves run above n′ = 5 there).
+    let short = [
+        "Barroso (paper)",
+        "Zhang",
+        "LiSPSM",
+        "least M_z",
+        "n′₁",
+        "n′₂",
+    ];
+    z.legend = SeriesLabelPosition::LowerRight;
+    z.series = c
+        .series
+        .iter()
+        .enumerate()
+        .map(|(k, s)| {
+            let mut s = s.clone();
+            s.label = short.get(k).map(|l| (*l).to_string());
+            s.points.retain(|p| p.0 >= x.0 && p.0 <= x.1);
+            s
+        })
+        .collect();
+    z.notes = vec![
+        Note {
+            at: (gl_deg + 0.3, 0.6 * y.1),
+            text: format!("← γ_{{lim}} = {gl_deg:.1}°"),
+            colour: PALETTE[6],
+        },
+        Note {
+            at: (phi_deg - 4.0, 0.6 * y.1),
+            text: format!("φ_y = {phi_deg:.0}° →"),
+            colour: grey,
+        },
+    ];
+    z
 }
 
 #[cfg(test)]
@@ -186,5 +240,32 @@ mod tests {
         assert!(gl.text.starts_with('←') && gl.at.0 > 30.5 && gl.at.0 < 32.0);
         let phi = c.notes.iter().find(|n| n.text.contains("φ")).unwrap();
         assert!(phi.text.ends_with('→') && phi.at.0 < 30.0);
+    }
+
+    /// Issue 25: a second panel magnifies γ from 20° to 40°, where the curves separate: every
+    /// curve of (a) is there, cut to the window (the four rules sampled every 0.25°: 81 points
+    /// each), and the four rules lie within n′ ∈ [1, 100] (the axis reaches down to 0.3 for Eq
+    /// 13's n′₂, which falls to 0 at 27.69°, by hand in `eq13_branches_only_on_their_domains`).
+    #[test]
+    fn panel_b_magnifies_20_to_40_degrees() {
+        let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
+        assert_eq!(fig.charts.len(), 2);
+        let (a, b) = (&fig.charts[0], &fig.charts[1]);
+        assert_eq!((b.x.min, b.x.max), (20.0, 40.0));
+        assert_eq!(a.series.len(), b.series.len());
+        for s in &b.series[..4] {
+            assert_eq!(s.points.len(), 81, "{:?}", s.label);
+            assert!(s.points.iter().all(|p| (20.0..=40.0).contains(&p.0)));
+            assert!(
+                s.points.iter().all(|p| (1.0..=100.0).contains(&p.1)),
+                "{:?}",
+                s.points
+            );
+        }
+        // Where they separate: at γ = 25° LiSPSM's n′ is (n + √(fn))/sin γ = 11/sin 25° = 26.03
+        // (by hand), more than three times Zhang's.
+        let at = |k: usize, g: f64| b.series[k].points.iter().find(|p| p.0 == g).unwrap().1;
+        assert!((at(2, 25.0) - 26.028).abs() < 1e-3, "{}", at(2, 25.0));
+        assert!(at(2, 25.0) > 3.0 * at(1, 25.0), "{}", at(1, 25.0));
     }
 }
