@@ -241,22 +241,26 @@ impl<const F: usize, const V: usize, const P: usize> ConvexBody<F, V, P> {
             true
         };
         // In place: face f's clipped polygon goes to slot w ≤ f (faces are only removed), the
-        // cap to the end.
+        // cap to the end. Each index is stored into its slot as it is found (the face's row read
+        // whole first, as slot w may be its own): a row built in a local array and then copied
+        // whole is loaded as a vector right after its bytes were stored, which stalls the CPU's
+        // store forwarding once per face.
         let mut w = 0usize;
-        let mut poly = [0u8; V];
         for f in 0..self.count {
             let fl = self.lens[f];
+            let row = self.faces[f];
+            let out = &mut self.faces[w];
             let mut m = 0usize;
             for i in 0..fl {
-                let ia = usize::from(self.faces[f][i]);
-                let ib = usize::from(self.faces[f][if i + 1 == fl { 0 } else { i + 1 }]);
+                let ia = usize::from(row[i]);
+                let ib = usize::from(row[if i + 1 == fl { 0 } else { i + 1 }]);
                 let (da, db) = (dist[ia], dist[ib]);
                 if da <= tol {
                     if m == V {
                         return false;
                     }
                     let k = usize::from(remap[ia]);
-                    poly[m] = k as u8;
+                    out[m] = k as u8;
                     m += 1;
                     if da >= -tol && !push_cap(k, self.pts[ia], &mut ncap) {
                         return false;
@@ -281,7 +285,7 @@ impl<const F: usize, const V: usize, const P: usize> ConvexBody<F, V, P> {
                     if m == V {
                         return false;
                     }
-                    poly[m] = (kept + j) as u8;
+                    out[m] = (kept + j) as u8;
                     m += 1;
                     if !push_cap(kept + j, cut[j], &mut ncap) {
                         return false;
@@ -289,9 +293,6 @@ impl<const F: usize, const V: usize, const P: usize> ConvexBody<F, V, P> {
                 }
             }
             if m > 0 {
-                // The whole fixed row (entries past `m` are never read): a few register moves
-                // where a slice copy of `m` bytes is a `memcpy` call.
-                self.faces[w] = poly;
                 self.lens[w] = m;
                 w += 1;
             }
