@@ -1,9 +1,9 @@
 //! Lloyd, Tuft, Yoon, Manocha 2006, *Warping and Partitioning for Low Error Shadow Maps*:
 //! the closed-form figures (Fig 5, 6, 10, 12, 13). Fig 7 is in [`super::hemisphere`].
 
+use super::chart::FONT;
 use super::chart::{
-    boxed_text, build_chart, fmt_plain, frame, linspace, Axis, Charts, LineChart, Note, Series,
-    PALETTE,
+    build_chart, fmt_plain, frame, linspace, Axis, Charts, LineChart, Note, Series, PALETTE,
 };
 use super::{Fail, Figure};
 use crate::analytic::eta::{n_prime_from_eta, n_prime_lispsm};
@@ -181,11 +181,19 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
         );
         c.series
             .push(Series::line(label, pts, PALETTE[i]).with_markers());
-        // The asymptote, unlabelled: the legend's last entry names all four.
-        let mut asymptote = Series::line(String::new(), vec![(1.0, opt), (16.0, opt)], PALETTE[i])
-            .dashed()
-            .reference();
-        asymptote.label = None;
+        // The asymptote, labelled on the line with its value (placed clear of the curves; the
+        // legend's last entry says what the dashed lines are).
+        let asymptote = Series::line(
+            format!("{opt:.2}"),
+            linspace(1.0, 16.0, 61)
+                .into_iter()
+                .map(|k| (k, opt))
+                .collect(),
+            PALETTE[i],
+        )
+        .dashed()
+        .reference()
+        .direct_at(3.0);
         c.series.push(asymptote);
         optima.push(format!("{opt:.2} (f/n = {})", fmt_plain(ratio)));
     }
@@ -212,7 +220,7 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
         title: "Storage factor of warped z-partitions against the number of partitions, light overhead".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 10 (θ = 30°), from Eq 18 and App. C (analytic::partition::scheme_storage_factor with Scheme::ZpW and Scheme::Optimal).".into(),
-            format!("S̄ = k((f/n)^{{1/k}} − 1)/(2 tan θ) decreases with k towards the optimal logarithmic parameterisation ln(f/n)/(2 tan θ) (dashed, in each curve's colour): {}. Panel (b), not in the paper, divides each curve by its optimum so that the approach shows on one scale; the paper plots one frustum it does not name, we plot four.", optima.join(", ")),
+            format!("S̄ = k((f/n)^{{1/k}} − 1)/(2 tan θ) decreases with k towards the optimal logarithmic parameterisation ln(f/n)/(2 tan θ) (dashed, in each curve's colour, its value written on it): {}. Panel (b), not in the paper, divides each curve by its optimum so that the approach shows on one scale; the paper plots one frustum it does not name, we plot four.", optima.join(", ")),
         ],
         charts: vec![c, r],
     })
@@ -250,8 +258,26 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
                 }
                 pts.push((maps as f64, scheme_storage_factor(scheme, light, &view, k)?));
             }
-            let s = Series::line(format!("{name}, light {light_name}"), pts, PALETTE[colour])
-                .with_markers();
+            let s = if scheme == Scheme::FpZpW {
+                // Defined only at 4k + 1 maps: markers, not joined across the counts between
+                // (overhead green triangles, behind olive hexagons).
+                let colour = match light {
+                    SchemeLight::Overhead => PALETTE[colour],
+                    SchemeLight::Behind => PALETTE[7],
+                };
+                with_width(
+                    Series::line(
+                        format!("{name}, light {light_name} (4k + 1 maps only)"),
+                        unjoined(&pts),
+                        colour,
+                    )
+                    .with_markers(),
+                    3,
+                )
+            } else {
+                // Every count: a line, with a few markers along it (not one per count).
+                Series::line(format!("{name}, light {light_name}"), pts, PALETTE[colour])
+            };
             let mut s = match light {
                 SchemeLight::Overhead => s,
                 SchemeLight::Behind => s.dashed(),
@@ -272,7 +298,7 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
     zoom.legend = SeriesLabelPosition::UpperRight;
     for (scheme, name, colour) in [
         (Scheme::Zp, "ZP = ZP+W, light behind", 0),
-        (Scheme::FpZpW, "FP+ZP+W, light behind", 2),
+        (Scheme::FpZpW, "FP+ZP+W, light behind (4k + 1 maps only)", 7),
     ] {
         let mut pts = Vec::new();
         for k in 1..=23usize {
@@ -284,11 +310,19 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
                 ));
             }
         }
-        zoom.series.push(
-            Series::line(name, pts, PALETTE[colour])
-                .dashed()
-                .with_markers(),
-        );
+        let pts = if scheme == Scheme::FpZpW {
+            unjoined(&pts)
+        } else {
+            pts
+        };
+        let s = Series::line(name, pts, PALETTE[colour])
+            .dashed()
+            .with_markers();
+        zoom.series.push(if scheme == Scheme::FpZpW {
+            with_width(s, 3)
+        } else {
+            s
+        });
     }
     zoom.notes.push(Note {
         at: (11.4, 33.0),
@@ -301,10 +335,30 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
         title: "Storage factor against the number of shadow maps".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 12 (f/n = 1000, θ = 30°), from Eq 17–21 (analytic::partition::scheme_storage_factor). k z-partitions use k maps; FP+ZP+W uses 4k + 1".into(),
-            "(four side faces and the near face). Behind, ZP+W equals ZP (a square frustum cannot be warped); FP+ZP+W behind is Eq 21 with each face at 45° whatever θ (docs/errata.md). Up to 40 maps, so that the light-behind crossover of §5.3 shows; (b), not in the paper, enlarges it: at 13 maps ZP is lower (37.6 against 55.0), at 17 FP+ZP+W (37.99 against 38.32).".into(),
+            "(four side faces and the near face), so its values are markers, not joined across the counts between. Behind, ZP+W equals ZP (a square frustum cannot be warped); FP+ZP+W behind is Eq 21 with each face at 45° whatever θ (docs/errata.md). Up to 40 maps, so that the light-behind crossover of §5.3 shows; (b), not in the paper, enlarges it: at 13 maps ZP is lower (37.6 against 55.0), at 17 FP+ZP+W (37.99 against 38.32).".into(),
         ],
         charts: vec![c, zoom],
     })
+}
+
+/// Points of a quantity defined only at its own x values (FP+ZP+W at 4k + 1 maps), drawn as
+/// markers without a line: a gap (a non-finite y, which a line chart never joins across)
+/// between each two.
+fn unjoined(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let mut out = Vec::with_capacity(2 * points.len());
+    for (i, &p) in points.iter().enumerate() {
+        if i > 0 {
+            out.push((0.5 * (points[i - 1].0 + p.0), f64::NAN));
+        }
+        out.push(p);
+    }
+    out
+}
+
+/// The same series drawn `width` wide (its markers grow with it).
+fn with_width(mut s: Series, width: u32) -> Series {
+    s.width = width;
+    s
 }
 
 /// Fig 13 data: for each number of maps 4k + 1, the f/n above which z-partitioning (ZP, ZP+W)
@@ -369,9 +423,50 @@ pub(super) fn fig13() -> Result<Fig13, Fail> {
 const ZP_FILL: RGBColor = RGBColor(62, 122, 178);
 const FP_FILL: RGBColor = RGBColor(246, 214, 170);
 
+/// Height of Fig 13's key row, above the chart.
+const KEY_HEIGHT: u32 = 30;
+
+/// Fig 13's key: a swatch of each fill and the crossover dot, each with its meaning, in one row
+/// (it was two boxes inside the chart, over the fills).
+fn draw_fig13_key<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+    let style = TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+    let (w, h) = area.dim_in_pixel();
+    let y = h as i32 / 2;
+    let entries: [(&str, Option<RGBColor>); 3] = [
+        ("ZP / ZP+W lowest", Some(ZP_FILL)),
+        ("FP+ZP+W lowest", Some(FP_FILL)),
+        ("equal S̄", None),
+    ];
+    let widths = entries
+        .iter()
+        .map(|(t, _)| area.estimate_text_size(t, &style).map(|s| s.0 as i32))
+        .collect::<Result<Vec<_>, _>>()?;
+    let (swatch, gap, between) = (14, 5, 18);
+    let total: i32 = widths.iter().map(|t| swatch + gap + t).sum::<i32>() + between * 2;
+    let mut x = (w as i32 - total) / 2;
+    for ((text, fill), tw) in entries.into_iter().zip(widths) {
+        match fill {
+            Some(c) => {
+                area.draw(&Rectangle::new(
+                    [(x, y - swatch / 2), (x + swatch, y + swatch / 2)],
+                    c.filled(),
+                ))?;
+                area.draw(&Rectangle::new(
+                    [(x, y - swatch / 2), (x + swatch, y + swatch / 2)],
+                    RGBColor(120, 120, 120).stroke_width(1),
+                ))?;
+            }
+            None => area.draw(&Circle::new((x + swatch / 2, y), 4, PALETTE[6].filled()))?,
+        }
+        area.draw(&Text::new(text, (x + swatch + gap, y), style.clone()))?;
+        x += swatch + gap + tw + between;
+    }
+    Ok(())
+}
+
 impl Figure for Fig13 {
     fn size(&self) -> (u32, u32) {
-        (520, 540)
+        (520, 570)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -383,7 +478,10 @@ impl Figure for Fig13 {
                 "z-partitioning (ZP, or ZP+W: the same behind) with j maps against face partitioning with k warped z-partitions per face. The comparison exists only at j = 4k + 1, so each j is a column: FP+ZP+W is lowest below the dot (where S̄ is equal), ZP above it (the paper draws continuous regions). f/n up to 10⁶ (the dot at 17 maps is just above f/n = 1000, Fig 12's crossover).",
             ],
         )?;
-        let mut chart = build_chart(&body, "", &self.x, &self.y, true)?;
+        // The key above the chart, where it covers nothing.
+        let (key, plot) = body.split_vertically(KEY_HEIGHT);
+        draw_fig13_key(&key)?;
+        let mut chart = build_chart(&plot, "", &self.x, &self.y, true)?;
         let (y0, y1) = self.y.range();
         let half = 1.3;
         for &(j, r) in &self.crossover {
@@ -403,22 +501,6 @@ impl Figure for Fig13 {
                 )))?;
             }
         }
-        boxed_text(
-            &mut chart,
-            (4.0, y0 + 0.97 * (y1 - y0)),
-            "dark: ZP / ZP+W lowest (high depth range, few maps)",
-            Pos::new(HPos::Left, VPos::Top),
-            15,
-            BLACK,
-        )?;
-        boxed_text(
-            &mut chart,
-            (42.0, y0 + 0.04 * (y1 - y0)),
-            "light: FP+ZP+W lowest",
-            Pos::new(HPos::Right, VPos::Bottom),
-            15,
-            BLACK,
-        )?;
         Ok(())
     }
 }
@@ -458,6 +540,75 @@ mod tests {
             .crossover
             .windows(2)
             .all(|w| w[1].1 > w[0].1 && w[1].0 > w[0].0));
+    }
+
+    /// The visible text of an SVG `<text>` line, tags removed and superscript digits written
+    /// as digits (a backend may set them as `<tspan>`s).
+    fn visible(line: &str) -> String {
+        let Some(body) = line.find('>').map(|i| &line[i + 1..]) else {
+            return String::new();
+        };
+        let body = body.strip_suffix("</text>").unwrap_or(body);
+        let mut out = String::new();
+        let mut tag = false;
+        for c in body.chars() {
+            match c {
+                '<' => tag = true,
+                '>' => tag = false,
+                _ if tag => {}
+                _ => out.push(match "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().position(|d| d == c) {
+                    Some(d) => char::from(b'0' + d as u8),
+                    None => c,
+                }),
+            }
+        }
+        out
+    }
+
+    /// Fig 13's key covers nothing (issue 25: its two boxes lay over the fills): drawn as the
+    /// figure is, into an SVG, every key text lies above the chart's top, the y of its top tick
+    /// label 10⁶, and left of nothing drawn in the chart.
+    #[test]
+    fn fig13_key_lies_above_the_chart() {
+        crate::plot::ensure_font().unwrap();
+        let fig = fig13().map_err(|e| e.named("lloyd2006-fig13")).unwrap();
+        let mut svg = String::new();
+        {
+            let area = crate::plot::svg::Svg::new(&mut svg, fig.size(), 1).into_drawing_area();
+            fig.draw(&area).unwrap();
+            area.present().unwrap();
+        }
+        let y_of = |text: &str| -> Vec<f64> {
+            svg.lines()
+                .filter(|l| {
+                    l.starts_with("<text")
+                        && visible(l).contains(&visible(&format!(">{text}</text>")))
+                })
+                .filter_map(|l| {
+                    let at = l.find(" y=\"")? + 4;
+                    l[at..at + l[at..].find('"')?].parse().ok()
+                })
+                .collect()
+        };
+        let top: Vec<f64> = svg
+            .lines()
+            .filter(|l| l.starts_with("<text") && visible(l) == "106")
+            .filter_map(|l| {
+                let at = l.find(" y=\"")? + 4;
+                l[at..at + l[at..].find('"')?].parse().ok()
+            })
+            .collect();
+        assert_eq!(top.len(), 1, "{svg}");
+        for key in ["ZP / ZP+W lowest", "FP+ZP+W lowest"] {
+            let ys = y_of(key);
+            assert_eq!(ys.len(), 1, "{key}");
+            assert!(
+                ys[0] < top[0] - 8.0,
+                "{key} at y {} in the chart (top {})",
+                ys[0],
+                top[0]
+            );
+        }
     }
 
     /// Fig 5 at LiSPSM's n′ = 1 + √20: the z-error term is equal on the near and far planes,
@@ -577,9 +728,99 @@ mod tests {
         assert!((at(1, 17.0) - (8.0 * (r.powf(0.25) - 1.0) + 1.0)).abs() < 1e-9);
         assert!(at(0, 13.0) < at(1, 13.0) && at(0, 17.0) > at(1, 17.0));
         for s in &zoom.series {
-            for &(_, v) in &s.points {
+            for &(_, v) in s.points.iter().filter(|p| p.1.is_finite()) {
                 assert!(v > zoom.y.min && v < zoom.y.max, "{v} outside the window");
             }
+        }
+    }
+
+    /// Fig 12 (issue 25: marker clutter, and FP+ZP+W's points joined by a line across the
+    /// counts where it has no value): FP+ZP+W has values only at 4k + 1 maps and is drawn as
+    /// markers with a gap between each two (a line chart joins no non-finite point), in both
+    /// panels; the ZP and ZP+W lines of (a), defined at every count, carry no marker per point.
+    #[test]
+    fn fig12_face_partitions_are_unjoined_markers() {
+        let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
+        let mut fp = 0;
+        for chart in &fig.charts {
+            for s in &chart.series {
+                let label = s.label.as_deref().unwrap_or("");
+                let finite: Vec<f64> = s
+                    .points
+                    .iter()
+                    .filter(|p| p.1.is_finite())
+                    .map(|p| p.0)
+                    .collect();
+                if label.starts_with("FP+ZP+W") {
+                    fp += 1;
+                    assert!(s.markers, "{label}");
+                    assert!(finite.iter().all(|&j| (j as usize - 1) % 4 == 0), "{label}");
+                    for w in s.points.windows(2) {
+                        assert!(
+                            !(w[0].1.is_finite() && w[1].1.is_finite()),
+                            "{label}: {:?} joined to {:?}",
+                            w[0],
+                            w[1]
+                        );
+                    }
+                } else if chart.title.starts_with("(a)") {
+                    assert!(!s.markers, "{label}: a marker at each of its counts");
+                }
+            }
+        }
+        assert_eq!(fp, 3);
+    }
+
+    /// Fig 10 (a) labels each curve's optimum (issue 25): drawn into an SVG, the value of
+    /// App. C's ln(f/n)/(2 tan 30°) for f/n = 10, 100, 1000, 10⁴ (by hand: 1.99, 3.99, 5.98,
+    /// 7.98) is written once in its curve's colour, level with its dashed line (within 20
+    /// units, the label's box, on the panel's log axis read from its 10⁰ and 10⁴ labels).
+    #[test]
+    fn fig10_labels_each_optimum() {
+        crate::plot::ensure_font().unwrap();
+        let fig = fig10().map_err(|e| e.named("lloyd2006-fig10")).unwrap();
+        let mut svg = String::new();
+        {
+            let area = crate::plot::svg::Svg::new(&mut svg, fig.size(), 1).into_drawing_area();
+            fig.draw(&area).unwrap();
+            area.present().unwrap();
+        }
+        let texts: Vec<(&str, f64)> = svg
+            .lines()
+            .filter(|l| l.starts_with("<text"))
+            .filter_map(|l| {
+                let at = l.find(" y=\"")? + 4;
+                Some((l, l[at..at + l[at..].find('"')?].parse().ok()?))
+            })
+            .collect();
+        let first_y = |content: &str| {
+            texts
+                .iter()
+                .find(|(l, _)| visible(l) == visible(&format!(">{content}</text>")))
+                .map(|t| t.1)
+                .unwrap()
+        };
+        let (y0, y4) = (first_y("10⁰"), first_y("10⁴"));
+        let tan = 30f64.to_radians().tan();
+        for (i, ratio) in [10f64, 100.0, 1000.0, 10_000.0].into_iter().enumerate() {
+            let opt = ratio.ln() / (2.0 * tan);
+            let text = format!("{opt:.2}");
+            let colour = {
+                let c = PALETTE[i];
+                format!("fill=\"#{:02X}{:02X}{:02X}\"", c.0, c.1, c.2)
+            };
+            let found: Vec<f64> = texts
+                .iter()
+                .filter(|(l, _)| visible(l) == text && l.contains(&colour))
+                .map(|t| t.1)
+                .collect();
+            assert_eq!(found.len(), 1, "{text} in {colour}");
+            let line = y0 + (y4 - y0) * opt.log10() / 4.0;
+            assert!(
+                (found[0] - line).abs() < 20.0,
+                "{text} at {} for a line at {line}",
+                found[0]
+            );
         }
     }
 
