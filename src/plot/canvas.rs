@@ -472,6 +472,12 @@ impl<B: DrawingBackend> DrawingBackend for Canvas<B> {
             let k = self.scale as u32;
             return self.inner.blit_bitmap(pos, (w * k, h * k), src);
         }
+        let d = super::chart::bitmap_density();
+        if d > 1 {
+            // A heat map's RGBA raster at `d` pixels per unit, fitted to this bitmap's scale.
+            let (rgb, size) = super::chart::fit_to_scale(src, (w, h), d, s as u32);
+            return self.inner.blit_bitmap(pos, size, &rgb);
+        }
         if s == 1 {
             return self.inner.blit_bitmap(pos, (w, h), src);
         }

@@ -368,23 +368,31 @@ impl DrawingBackend for Svg<'_> {
     /// times the bitmap's size in pixels (as [`super::canvas::Canvas`] hands it on).
     fn blit_bitmap(&mut self, (x, y): BackendCoord, (w, h): (u32, u32), src: &[u8]) -> Res {
         let (w, h) = (w / self.k, h / self.k);
-        if src.len() != (w * h * 3) as usize {
+        // A heat map's raster: RGBA at `d` pixels per view-box unit
+        // (super::chart::bitmap_density); any other bitmap RGB at one.
+        let d = super::chart::bitmap_density();
+        let (bytes, kind) = if d > 1 {
+            (4, image::ExtendedColorType::Rgba8)
+        } else {
+            (3, image::ExtendedColorType::Rgb8)
+        };
+        if src.len() != (w * h * bytes) as usize {
             return Err(DrawingErrorKind::DrawingError(SvgError(format!(
-                "a bitmap of {} bytes is not {w} × {h} RGB pixels",
+                "a bitmap of {} bytes is not {w} × {h} pixels of {bytes} bytes",
                 src.len()
             ))));
         }
         let (x, y) = (self.u(x), self.u(y));
         let mut png = Vec::new();
         image::codecs::png::PngEncoder::new(&mut png)
-            .write_image(src, w, h, image::ExtendedColorType::Rgb8)
+            .write_image(src, w, h, kind)
             .map_err(|e| DrawingErrorKind::DrawingError(SvgError(e.to_string())))?;
         let _ = writeln!(
             self.body,
             "<image x=\"{x}\" y=\"{y}\" width=\"{}\" height=\"{}\" \
              preserveAspectRatio=\"none\" href=\"data:image/png;base64,{}\"/>",
-            w,
-            h,
+            round(f64::from(w) / f64::from(d)),
+            round(f64::from(h) / f64::from(d)),
             base64(&png)
         );
         Ok(())

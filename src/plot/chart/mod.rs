@@ -24,6 +24,7 @@ pub(crate) use heat::*;
 pub(crate) use label::*;
 pub(crate) use line::*;
 pub(crate) use page::*;
+pub(crate) use raster::{bitmap_density, fit_to_scale};
 
 /// The font family every figure uses; registered from the compiled-in DejaVu Sans.
 pub(crate) const FONT: &str = "sans-serif";
