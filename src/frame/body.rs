@@ -106,15 +106,18 @@ pub(super) struct Body {
 }
 
 impl Ctx<'_, '_> {
-    /// B's vertices `pts` in the light space `ls`; `None` when B is edge-on to the light (no
-    /// extent across the map or along the warp axis, relative to the frustum's size).
+    /// B's vertices `pts` in the light space `ls`, into `fl` (in place: a 2 KB value); `false`
+    /// when B is edge-on to the light (no extent across the map or along the warp axis,
+    /// relative to the frustum's size).
     pub(super) fn in_light(
         &self,
         pts: &[DVec3],
         ls: LightSpace,
-    ) -> Result<Option<FrustumInLight<MAX_BODY_VERTICES>>> {
-        let fl = FrustumInLight::<MAX_BODY_VERTICES>::from_points(pts, self.l, ls)
-            .ok_or_else(|| Error::Degenerate("the focus body has no vertices".into()))?;
+        fl: &mut FrustumInLight<MAX_BODY_VERTICES>,
+    ) -> Result<bool> {
+        if !fl.set_points(pts, self.l, ls) {
+            return Err(Error::Degenerate("the focus body has no vertices".into()));
+        }
         // `fl.q` past the body's vertices repeats the first (`FrustumInLight::from_points`), which
         // changes no minimum, maximum or extent: only the vertices are read.
         let q = &fl.q[..pts.len()];
@@ -125,7 +128,7 @@ impl Ctx<'_, '_> {
         }
         let small = 1e-9 * self.scale();
         if xh - xl <= small || fl.delta <= small {
-            return Ok(None);
+            return Ok(false);
         }
         // A footprint with no area in any direction (a flat B seen edge-on along a diagonal of
         // the map: a vertical wall under a sun straight down, the camera turned) is edge-on too.
@@ -134,7 +137,7 @@ impl Ctx<'_, '_> {
             *f = DVec3::new(q.x, 0.0, q.z);
         }
         let (_, width, _) = extents(&foot[..q.len()]);
-        Ok((width > small).then_some(fl))
+        Ok(width > small)
     }
 
     pub(super) fn scale(&self) -> f64 {

@@ -9,6 +9,7 @@ use crate::analytic::partition::{z_splits, SplitScheme, MAX_PARTITIONS};
 use crate::error::{Error, Result};
 use crate::frustum::LightDir;
 use crate::maps::faces::{face_spaces, visible_with, Face, FaceSpaces, FaceWarp, PartFitter};
+use crate::maps::fit::FrustumInLight;
 use crate::maps::lightspace::light_space_unit;
 use crate::maps::ShadowMatrix;
 use crate::numeric::EDGE_ON;
@@ -115,9 +116,10 @@ impl Ctx<'_, '_> {
         let pts = &body.v[..body.n];
         // Any light space with y toward the light serves the casters' prism and depth.
         let ls = light_space_unit(LightDir::from_unit_unchecked(l), DVec3::NEG_Z);
-        let Some(fl) = self.in_light(pts, ls)? else {
+        let mut fl = FrustumInLight::blank(ls);
+        if !self.in_light(pts, ls, &mut fl)? {
             return Ok(Built::None(Focus::EdgeOn));
-        };
+        }
         let mut y_hi = y_hi;
         let mut sides = None;
         if let Some(p) = self.caster_extreme(&fl, body.n, |_| 1.0, 0.0, &mut sides)? {

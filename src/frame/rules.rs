@@ -7,7 +7,7 @@ use super::output::{Focus, FrameMap};
 use super::{Built, Ctx, Slice};
 use crate::error::Result;
 use crate::frustum::{LightDir, NPrime};
-use crate::maps::fit::fit_body;
+use crate::maps::fit::{fit_body, FrustumInLight};
 use crate::maps::lightspace::light_space_unit;
 use crate::maps::tsm::{tsm_on_points, validate as validate_tsm};
 use crate::maps::warp::{focus_in_range, rule_axis, rule_n_prime_on, warp_prepared, PreparedLight};
@@ -48,9 +48,10 @@ impl Ctx<'_, '_> {
             r => r,
         };
         let ls = light_space_unit(LightDir::from_unit_unchecked(l), rule_axis(l, rule));
-        let Some(fl) = self.in_light(pts, ls)? else {
+        let mut fl = FrustumInLight::blank(ls);
+        if !self.in_light(pts, ls, &mut fl)? {
             return Ok(Built::None(Focus::EdgeOn));
-        };
+        }
         let mut focus = body.focus;
         let zero_depth = f_b - n_b <= 1e-9 * f_b;
         if zero_depth {
@@ -134,9 +135,10 @@ impl Ctx<'_, '_> {
         let (n_b, f_b) = depth_extent(pts);
         let l = self.l;
         let ls = light_space_unit(LightDir::from_unit_unchecked(l), DVec3::NEG_Z);
-        let Some(fl) = self.in_light(pts, ls)? else {
+        let mut fl = FrustumInLight::blank(ls);
+        if !self.in_light(pts, ls, &mut fl)? {
             return Ok(Built::None(Focus::EdgeOn));
-        };
+        }
         let focus = opts.focus * (f_b - n_b) / (s.cover.1 - s.cover.0);
         let focus_depth = n_b + focus;
         let region = self.body(

@@ -125,29 +125,44 @@ impl<const N: usize> FrustumInLight<N> {
     /// `points[0]`; `None` when `points` is empty or longer than `N`. sin γ is the view
     /// direction's, as for the frustum: the warp axis is the view direction's whatever the body.
     pub(crate) fn from_points(points: &[DVec3], l: DVec3, ls: LightSpace) -> Option<Self> {
-        if points.is_empty() || points.len() > N {
-            return None;
+        let mut fl = Self::blank(ls);
+        fl.set_points(points, l, ls).then_some(fl)
+    }
+
+    /// A value for [`FrustumInLight::set_points`] to fill (every number 0).
+    pub(crate) fn blank(ls: LightSpace) -> Self {
+        Self {
+            ls,
+            corners: [DVec3::ZERO; N],
+            q: [DVec3::ZERO; N],
+            depth: [0.0; N],
+            z0: 0.0,
+            delta: 0.0,
+            sin_gamma: 0.0,
         }
-        let mut corners = [points[0]; N];
-        corners[..points.len()].copy_from_slice(points);
-        let mut q = [DVec3::ZERO; N];
-        let mut depth = [0.0; N];
+    }
+
+    /// [`FrustumInLight::from_points`] written into `self` (a 2 KB value for N = 32, which a
+    /// caller may keep in place instead of receiving it moved); `false`, and `self` unchanged,
+    /// where that gives `None`.
+    pub(crate) fn set_points(&mut self, points: &[DVec3], l: DVec3, ls: LightSpace) -> bool {
+        if points.is_empty() || points.len() > N {
+            return false;
+        }
+        self.corners = [points[0]; N];
+        self.corners[..points.len()].copy_from_slice(points);
         let (mut z0, mut z1) = (f64::INFINITY, f64::NEG_INFINITY);
         for i in 0..N {
-            q[i] = ls.to_light(corners[i]);
-            depth[i] = -corners[i].z;
-            z0 = fmin(z0, q[i].z);
-            z1 = fmax(z1, q[i].z);
+            self.q[i] = ls.to_light(self.corners[i]);
+            self.depth[i] = -self.corners[i].z;
+            z0 = fmin(z0, self.q[i].z);
+            z1 = fmax(z1, self.q[i].z);
         }
-        Some(Self {
-            ls,
-            corners,
-            q,
-            depth,
-            z0,
-            delta: z1 - z0,
-            sin_gamma: sin_gamma(V3::from(l)),
-        })
+        self.ls = ls;
+        self.z0 = z0;
+        self.delta = z1 - z0;
+        self.sin_gamma = sin_gamma(V3::from(l));
+        true
     }
 }
 
