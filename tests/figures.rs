@@ -891,7 +891,8 @@ fn elements(svg: &str) -> Vec<(&str, &str)> {
 /// axis.
 #[test]
 fn colour_bar_labels_clear_the_bar() {
-    let names = ["lloyd2006-fig7", "martin-tan-fig6", "zhang-fig3"];
+    // zhang-fig3's bars are horizontal: checked in zhang_fig3_landscape_with_bars_under_blocks.
+    let names = ["lloyd2006-fig7", "martin-tan-fig6"];
     for (name, svg) in svgs("figures-colour-bars", &names) {
         let els = elements(&svg);
         let mut labels = 0;
@@ -934,36 +935,106 @@ fn colour_bar_labels_clear_the_bar() {
     }
 }
 
-/// zhang-fig3 (issue 25): each quantity's colour bar sits beside its own block of panels (the
-/// bars used to sit beside the blocks of light angles θ, a misleading pairing), and the z tick
-/// labels of a row do not run together (they read "80100"): between neighbouring labels at
-/// least 3 units, with DejaVu Sans' digit width (0.636 em).
+/// zhang-fig3 (issue 25): landscape, the three quantity blocks side by side (the page was
+/// 520 × 1900, 1 : 3.65, the blocks stacked), each quantity's colour bar under its own block
+/// (centred under the block's title; the bars once sat beside the blocks of light angles θ),
+/// its tick labels clear of the bar (their tops at least 8 units below it), the panels to scale
+/// (the frustum's outline 99 across and 2 · 100 tan 30° = 115.47 up), and the z tick labels of a
+/// row apart (they read "80100"): between neighbouring labels at least 3 units, with DejaVu
+/// Sans' digit width (0.636 em).
 #[test]
-fn zhang_fig3_bars_beside_their_blocks_and_apart_labels() {
+fn zhang_fig3_landscape_with_bars_under_blocks() {
     let dir = out_dir("figures-zhang");
     render_all(&dir, Format::Svg, &["zhang-fig3"], |_| {}).unwrap();
     let svg = std::fs::read_to_string(dir.join("zhang-fig3.svg")).unwrap();
     let all = texts(&svg);
-    let y_of = |pred: &dyn Fn(&str, &str) -> bool| -> Vec<f64> {
+    let view: Vec<f64> = svg
+        .split("viewBox=\"")
+        .nth(1)
+        .unwrap()
+        .split('"')
+        .next()
+        .unwrap()
+        .split(' ')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    assert!(
+        view[2] / view[3] >= 0.85,
+        "zhang-fig3 is {} × {}",
+        view[2],
+        view[3]
+    );
+    let at = |pred: &dyn Fn(&str, &str) -> bool| -> Vec<(f64, f64)> {
         all.iter()
             .filter(|(a, c)| pred(a, &visible(c)))
-            .map(|(a, _)| attr_num(a, "y").unwrap())
+            .map(|(a, _)| (attr_num(a, "x").unwrap(), attr_num(a, "y").unwrap()))
             .collect()
     };
     let quantities = ["Ep", "Eq", "Ep × Eq"];
-    let mut order = Vec::new();
+    let mut blocks = Vec::new();
     for (k, q) in quantities.iter().enumerate() {
-        let block = y_of(&|_, v| {
+        let block = at(&|_, v| {
             v.starts_with(&format!("({}) {q}", ['a', 'b', 'c'][k])) && (k == 2 || !v.contains('×'))
         });
-        let bar = y_of(&|a, v| a.contains("rotate(") && v == format!("{q} (log₅)"));
+        let bar = at(&|a, v| !a.contains("rotate(") && v == format!("{q} (log₅)"));
         assert_eq!((block.len(), bar.len()), (1, 1), "{q}: {block:?} {bar:?}");
-        order.push((block[0], bar[0]));
+        assert!(
+            (block[0].0 - bar[0].0).abs() < 40.0 && bar[0].1 > block[0].1,
+            "{q}: {block:?} {bar:?}"
+        );
+        blocks.push(block[0]);
     }
-    for k in 0..3 {
-        let next = order.get(k + 1).map_or(f64::INFINITY, |o| o.0);
-        assert!(order[k].0 < order[k].1 && order[k].1 < next, "{order:?}");
+    assert!(
+        blocks
+            .windows(2)
+            .all(|w| w[1].0 > w[0].0 + 100.0 && (w[1].1 - w[0].1).abs() < 1.0),
+        "{blocks:?}"
+    );
+    // The bars' outlines (dark grey, unfilled) and the tick labels under them.
+    let els = elements(&svg);
+    let bars: Vec<(f64, f64, f64)> = els
+        .iter()
+        .filter(|(t, a)| *t == "rect" && a.contains("fill=\"none\" stroke=\"#3C3C3C\""))
+        .map(|(_, a)| {
+            let n = |k: &str| attr_num(a, k).unwrap();
+            (n("x"), n("x") + n("width"), n("y") + n("height"))
+        })
+        .collect();
+    assert_eq!(bars.len(), 3, "{bars:?}");
+    for (x0, x1, bottom) in &bars {
+        let labels: Vec<f64> = all
+            .iter()
+            .filter(|(a, _)| a.contains("dy=\"0.76em\"") && a.contains("text-anchor=\"middle\""))
+            .map(|(a, _)| (attr_num(a, "x").unwrap(), attr_num(a, "y").unwrap()))
+            .filter(|(x, y)| x >= x0 && x <= x1 && *y > *bottom && *y < bottom + 30.0)
+            .map(|p| p.1)
+            .collect();
+        assert!(labels.len() >= 3, "{labels:?}");
+        assert!(
+            labels.iter().all(|y| y - bottom >= 8.0),
+            "{labels:?} under {bottom}"
+        );
     }
+    // The panels to scale: each frustum outline (five points, closed) 99 : 115.47.
+    let mut frusta = 0;
+    for (t, a) in &els {
+        if *t != "polyline" || !a.contains("stroke=\"#282828\"") {
+            continue;
+        }
+        let pts = polyline_points(a);
+        let xs = pts.iter().map(|p| p.0);
+        let ys = pts.iter().map(|p| p.1);
+        let w = xs.clone().fold(f64::MIN, f64::max) - xs.fold(f64::MAX, f64::min);
+        let h = ys.clone().fold(f64::MIN, f64::max) - ys.fold(f64::MAX, f64::min);
+        let want = 99.0 / (200.0 * 30f64.to_radians().tan());
+        assert!(
+            (w / h / want - 1.0).abs() < 0.04,
+            "a frustum drawn {w} × {h}"
+        );
+        frusta += 1;
+    }
+    assert_eq!(frusta, 27);
+    let all = texts(&svg);
     // The z labels: numbers centred under the panels, grouped by row.
     let mut rows: std::collections::BTreeMap<i64, Vec<(f64, f64)>> = Default::default();
     for (a, c) in &all {
@@ -979,7 +1050,7 @@ fn zhang_fig3_bars_beside_their_blocks_and_apart_labels() {
                 .push((x - half, x + half));
         }
     }
-    assert!(rows.values().map(Vec::len).sum::<usize>() >= 27, "{rows:?}");
+    assert!(rows.values().map(Vec::len).sum::<usize>() >= 9, "{rows:?}");
     for labels in rows.values_mut() {
         labels.sort_by(|a, b| a.0.total_cmp(&b.0));
         for w in labels.windows(2) {

@@ -8,7 +8,8 @@
 //! [0, 1]; unit resolutions).
 
 use super::chart::{
-    build_chart_styled, draw_colour_bar, frame, Axis, ChartStyle, ColourScale, Grid, FONT,
+    build_chart_styled, colour_bar_ticks, frame, Axis, ChartStyle, ColourScale, Grid, Ticked,
+    COLOUR_BAR_TICK, FONT,
 };
 use super::{Fail, Figure};
 use crate::maps::{warp, WarpRule};
@@ -38,9 +39,8 @@ struct Panel {
 pub(super) struct Fig3 {
     /// rows[θ][scheme][quantity]
     rows: Vec<Vec<Vec<Panel>>>,
-    /// "θ = 90°" per row, and each scheme's λ per row.
+    /// "θ = 90°" per row.
     row_angles: Vec<String>,
-    lambdas: Vec<Vec<String>>,
     scheme_labels: Vec<String>,
     /// One scale per quantity (E_p, E_q, E_p × E_q), over its range in all nine panels.
     scales: Vec<ColourScale>,
@@ -132,10 +132,17 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         .zip(ranges)
         .map(|(q, (lo, hi))| format!("{q} {lo:.3} to {hi:.1}"))
         .collect();
+    // λ per angle θ (rows) and scheme, for the caption.
+    let lambda_text: Vec<String> = row_angles
+        .iter()
+        .zip(&lambdas_all)
+        .map(|(theta, ls)| format!("{theta}: {}", ls.join(", ")))
+        .collect();
     let caption = vec![
-        "Zhang et al. 2009, Fig. 3, measured: E_p = 2 m_z, E_q = 2 m_x of each scheme's built matrix (maps::warp, measure::point_error) on the frustum's vertical plane x = 0. (a)–(c) one block per quantity with its colour bar beside it; in each, as in the paper, a column per scheme and a row per light angle θ (each panel gives θ and the scheme's warp parameter λ). Unlike the paper, the scene insets beside each row are omitted.".to_string(),
+        "Zhang et al. 2009, Fig. 3, measured: E_p = 2 m_z, E_q = 2 m_x of each scheme's built matrix (maps::warp, measure::point_error) on the frustum's vertical plane x = 0 (z across, y up, to scale). (a)–(c) one block per quantity with its colour bar under it; in each, as in the paper, a column per scheme and a row per light angle θ. Unlike the paper, the scene insets beside each row are omitted.".to_string(),
         format!(
-            "n = 1, f = 100, φ = π/6; light above and in front of the viewer at angle θ to the view direction. LiSPSM: λ = (n + √(fn))/sin θ; TSM: 80 % rule, focus δ = {TSM_FOCUS}. Ranges: {}.",
+            "n = 1, f = 100, φ = π/6; light above and in front of the viewer at angle θ to the view direction. Warp parameter λ (SSM, LiSPSM, TSM) at {}; LiSPSM: λ = (n + √(fn))/sin θ; TSM: 80 % rule, focus δ = {TSM_FOCUS}. Ranges: {}.",
+            lambda_text.join("; "),
             range_text.join(", ")
         ),
         format!("Unlike the paper's single log₅ scale, each quantity has its own colour bar over its range. Each cell is cut to the frustum and sampled at the centroid of what is left; the first column starts at the near plane ({NZ} × {NY} cells per panel)."),
@@ -143,7 +150,6 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     Ok(Fig3 {
         rows,
         row_angles,
-        lambdas: lambdas_all,
         scheme_labels,
         scales,
         caption,
@@ -170,21 +176,104 @@ fn fmt_lambda(n: NPrime) -> String {
     }
 }
 
-/// The layout of one quantity's block, in pixels: the y-label column, the x-label row, the gap
-/// between panels, the colour bar's width, the block's title and the schemes' headings.
-const Y_LABELS: u32 = 44;
-const X_LABELS: u32 = 36;
-const GAP: u32 = 10;
-const BAR: u32 = 86;
-const BLOCK_TITLE: u32 = 24;
-const HEADINGS: u32 = 20;
-/// A panel's height over its width: the z range [−5, 105] across (so that the labels 100 and 0
-/// of neighbouring panels stay apart) and y over ±0.6 of it up.
-const PANEL_RATIO: f64 = 1.2;
+/// The layout, in pixels: the row labels' column (θ, left of the first panel), the z labels'
+/// row under the last row of panels, the gaps between panels and between blocks, each block's
+/// title and the schemes' headings, and the horizontal colour bar under each block.
+const ROW_LABEL: u32 = 20;
+const X_LABELS: u32 = 30;
+const GAP: u32 = 4;
+const BLOCK_GAP: u32 = 16;
+const BLOCK_TITLE: u32 = 22;
+const HEADINGS: u32 = 18;
+const BAR: u32 = 52;
+/// The colour bar's margins at its ends (room for the end labels).
+const BAR_MARGIN: u32 = 14;
+/// A panel's height over its width: the z range [−5, 105] across and y over ±0.535 of it up
+/// (the frustum's far plane reaches ±57.7).
+const PANEL_RATIO: f64 = 1.07;
+
+/// The page's size: three blocks of 3 × 3 panels side by side (landscape drawing), the caption
+/// under them.
+pub(super) const SIZE: (u32, u32) = (520, 580);
+
+/// Draws a horizontal colour bar for `scale` into `area`: the bands, an outline, tick marks
+/// under it with the labels of [`colour_bar_ticks`] (its ends and the decades), thinned so that
+/// no two labels touch, and the quantity's name under them.
+fn draw_bar<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    scale: &ColourScale,
+) -> Result<(), Fail> {
+    let (lo, hi) = scale.axis.range();
+    let all = colour_bar_ticks(&scale.axis);
+    let (w, _) = area.dim_in_pixel();
+    let span = f64::from(w - 2 * BAR_MARGIN);
+    let px = |a: f64| f64::from(BAR_MARGIN) + (a - lo) / (hi - lo) * span;
+    let style = TextStyle::from((FONT, 13).into_font());
+    let half = |t: &str| -> Result<f64, Fail> {
+        let (tw, _) = area
+            .estimate_text_size(t, &style)
+            .map_err(|e| Fail::Draw(e.to_string()))?;
+        Ok(0.5 * f64::from(tw))
+    };
+    // The ends first, then each decade that keeps 6 pixels from the labels kept so far.
+    let mut kept: Vec<(f64, String, f64)> = Vec::new();
+    let order = [0, all.len() - 1]
+        .into_iter()
+        .chain(1..all.len().saturating_sub(1));
+    for i in order {
+        let (a, t) = &all[i];
+        let (x, hw) = (px(*a), half(t)?);
+        if kept.iter().all(|k| (k.0 - x).abs() >= k.2 + hw + 6.0) {
+            kept.push((x, t.clone(), hw));
+        }
+    }
+    let ticks: Vec<(f64, String)> = all
+        .iter()
+        .filter(|(a, _)| kept.iter().any(|k| (k.0 - px(*a)).abs() < 1e-9))
+        .cloned()
+        .collect();
+    let xb: Vec<f64> = ticks.iter().map(|t| t.0).collect();
+    let mut chart = ChartBuilder::on(area)
+        .margin_left(BAR_MARGIN)
+        .margin_right(BAR_MARGIN)
+        .x_label_area_size(BAR - 14)
+        .y_label_area_size(0)
+        .build_cartesian_2d(
+            Ticked::new(lo, hi, xb, vec![]),
+            Ticked::new(0.0, 1.0, vec![], vec![]),
+        )?;
+    let xf = |v: &f64| {
+        ticks
+            .iter()
+            .min_by(|a, b| (a.0 - v).abs().total_cmp(&(b.0 - v).abs()))
+            .map_or_else(String::new, |t| t.1.clone())
+    };
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .disable_y_axis()
+        .x_desc(scale.axis.label.as_str())
+        .x_label_formatter(&xf)
+        .set_tick_mark_size(LabelAreaPosition::Bottom, COLOUR_BAR_TICK)
+        .axis_desc_style((FONT, 13))
+        .label_style((FONT, 13))
+        .draw()?;
+    let n = scale.levels;
+    chart.draw_series((0..n).map(|k| {
+        let a = lo + (hi - lo) * k as f64 / n as f64;
+        let b = lo + (hi - lo) * (k + 1) as f64 / n as f64;
+        Rectangle::new([(a, 0.0), (b, 1.0)], scale.level_colour(k).filled())
+    }))?;
+    chart.draw_series(std::iter::once(Rectangle::new(
+        [(lo, 0.0), (hi, 1.0)],
+        RGBColor(60, 60, 60).stroke_width(1),
+    )))?;
+    Ok(())
+}
 
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
-        (520, 1900)
+        SIZE
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -194,62 +283,73 @@ impl Figure for Fig3 {
             "Side views of the aliasing error inside the view frustum",
             &caption,
         )?;
-        let (w, h) = body.dim_in_pixel();
-        // One block per quantity, its colour bar beside it; in each block a row per angle θ and
-        // a column per scheme (the paper's arrangement), panels sharing their axes: z labels
-        // under the last row, y labels left of the first column.
-        let pw = (w - BAR - Y_LABELS - 2 * GAP) / 3;
+        let (w, _) = body.dim_in_pixel();
+        // Three blocks side by side, one per quantity, each with its colour bar under it; in
+        // each block a row per angle θ and a column per scheme (the paper's arrangement),
+        // panels sharing their axes: θ left of each row, z labels under each block's first
+        // column.
+        let pw = (w - ROW_LABEL - 6 * GAP - 2 * BLOCK_GAP) / 9;
         let ph = (f64::from(pw) * PANEL_RATIO).round() as u32;
-        let block_h = BLOCK_TITLE + HEADINGS + 3 * ph + 2 * GAP + X_LABELS;
-        let spare = h.saturating_sub(3 * block_h) / 3;
-        let z = Axis::linear("z (eye depth)", -5.0, 105.0);
+        let block_w = 3 * pw + 2 * GAP;
+        let z = Axis::every("z (eye depth)", -5.0, 105.0, 0.0, 50.0);
+        // No tick inside the range: the first would be at 500.
+        let blank = Axis::every("", -5.0, 105.0, 500.0, 1000.0);
         let half = 0.5 * (z.max - z.min) * f64::from(ph) / f64::from(pw);
-        let y = Axis::linear("y", -half, half);
         let text = |size: u32| TextStyle::from((FONT, size).into_font());
+        let grid_top = BLOCK_TITLE + HEADINGS;
         for (q, scale) in self.scales.iter().enumerate() {
-            let top = q as u32 * (block_h + spare);
-            let block = body.clone().shrink((0, top), (w, block_h));
-            block.draw(&Text::new(
+            let bx = ROW_LABEL + q as u32 * (block_w + BLOCK_GAP);
+            body.draw(&Text::new(
                 format!(
                     "({}) {}",
                     ['a', 'b', 'c'][q],
                     ["E_p = 2 m_z", "E_q = 2 m_x", "E_p × E_q"][q]
                 ),
-                (4, 2),
-                text(15).pos(Pos::new(HPos::Left, VPos::Top)),
+                ((bx + block_w / 2) as i32, 2),
+                text(13).pos(Pos::new(HPos::Center, VPos::Top)),
             ))?;
             for (s, name) in self.scheme_labels.iter().enumerate() {
-                let x = Y_LABELS + s as u32 * (pw + GAP) + pw / 2;
-                block.draw(&Text::new(
+                let x = bx + s as u32 * (pw + GAP) + pw / 2;
+                body.draw(&Text::new(
                     name.clone(),
-                    (x as i32, (BLOCK_TITLE + HEADINGS - 2) as i32),
+                    (x as i32, (grid_top - 2) as i32),
                     text(13).pos(Pos::new(HPos::Center, VPos::Bottom)),
                 ))?;
             }
-            let grid_top = BLOCK_TITLE + HEADINGS;
             for (r, row) in self.rows.iter().enumerate() {
                 for (s, scheme) in row.iter().enumerate() {
-                    let first_col = s == 0;
+                    let row_label = q == 0 && s == 0;
                     let last_row = r + 1 == self.rows.len();
-                    let x0 = if first_col {
-                        0
-                    } else {
-                        Y_LABELS + s as u32 * (pw + GAP)
-                    };
-                    let cw = pw + if first_col { Y_LABELS } else { 0 };
+                    let x0 = bx + s as u32 * (pw + GAP) - if row_label { ROW_LABEL } else { 0 };
+                    let cw = pw + if row_label { ROW_LABEL } else { 0 };
                     let ch = ph + if last_row { X_LABELS } else { 0 };
-                    let cell = block
+                    let cell = body
                         .clone()
                         .shrink((x0, grid_top + r as u32 * (ph + GAP)), (cw, ch));
                     let style = ChartStyle {
                         title_size: 13,
                         x_label_area: if last_row { X_LABELS } else { 0 },
-                        y_label_area: if first_col { Y_LABELS } else { 0 },
+                        y_label_area: if row_label { ROW_LABEL } else { 0 },
                         tick_size: 13,
                         desc_size: 13,
                         margin: 0,
                     };
-                    let mut chart = build_chart_styled(&cell, "", &z, &y, false, &style)?;
+                    // θ as the first panel's y description; no y ticks (the frustum's
+                    // height is its depth times tan φ); z labelled under each block's first
+                    // column only.
+                    let y = Axis::every(
+                        if row_label {
+                            self.row_angles[r].as_str()
+                        } else {
+                            ""
+                        },
+                        -half,
+                        half,
+                        500.0,
+                        1000.0,
+                    );
+                    let x = if s == 0 { &z } else { &blank };
+                    let mut chart = build_chart_styled(&cell, "", x, &y, false, &style)?;
                     super::chart::draw_grid(&mut chart, &scheme[q].grid, scale)?;
                     // The frustum's outline and the panel's frame.
                     let (n, f, t) = (1.0, self.far, self.tan_phi);
@@ -264,27 +364,14 @@ impl Figure for Fig3 {
                         RGBColor(40, 40, 40).stroke_width(1),
                     )))?;
                     chart.draw_series(std::iter::once(Rectangle::new(
-                        [(z.min, y.min), (z.max, y.max)],
+                        [(z.min, -half), (z.max, half)],
                         RGBColor(150, 150, 150).stroke_width(1),
                     )))?;
-                    // The angle and the warp's λ in the corners the frustum leaves empty.
-                    let area = chart.plotting_area();
-                    area.draw(&Text::new(
-                        self.row_angles[r].clone(),
-                        (z.min + 2.0, y.max - 2.0),
-                        text(13).pos(Pos::new(HPos::Left, VPos::Top)),
-                    ))?;
-                    area.draw(&Text::new(
-                        format!("λ = {}", self.lambdas[r][s]),
-                        (z.min + 2.0, y.min + 2.0),
-                        text(13).pos(Pos::new(HPos::Left, VPos::Bottom)),
-                    ))?;
                 }
             }
-            let bar = block
-                .clone()
-                .shrink((w - BAR, grid_top), (BAR, 3 * ph + 2 * GAP));
-            draw_colour_bar(&bar, scale)?;
+            let bar_top = grid_top + 3 * ph + 2 * GAP + X_LABELS + 6;
+            let bar = body.clone().shrink((bx, bar_top), (block_w, BAR));
+            draw_bar(&bar, scale)?;
         }
         Ok(())
     }
