@@ -297,7 +297,8 @@ fn heat_maps_are_one_embedded_image_per_panel() {
     let dir = out_dir("figures-svg-heat");
     // (figure, heat-map panels)
     let heat = [
-        ("lloyd2006-fig7", 4),
+        // (a)–(d) and the ratio panel (e).
+        ("lloyd2006-fig7", 5),
         ("zhang-fig3", 27),
         ("martin-tan-fig6", 1),
     ];

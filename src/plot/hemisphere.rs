@@ -2,7 +2,7 @@
 //! the crate's measurement of each scheme's own matrices ([`crate::scheme::sweep::sweep`]).
 
 use super::chart::{
-    draw_colour_bar, draw_hemisphere, fmt_times_ten, frame, Axis, ColourScale, PolarGrid,
+    draw_colour_bar, draw_hemisphere, fmt_times_ten, frame, Axis, ColourScale, PolarGrid, FONT,
 };
 use super::{Fail, Figure};
 use crate::maps::WarpRule;
@@ -54,6 +54,10 @@ pub(super) struct Fig7 {
     /// The one colour scale of every panel: log₁₀, from the smallest to the largest S̄ of all
     /// four.
     scale: ColourScale,
+    /// (e), not in the paper: LiSPSM's S̄ over face partitioning's at each direction, on its own
+    /// log₁₀ scale.
+    ratio: Panel,
+    ratio_scale: ColourScale,
     caption: Vec<String>,
 }
 
@@ -103,6 +107,33 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
             min,
         });
     }
+    // (e): how many times more texels LiSPSM needs than face partitioning, direction by direction.
+    let ratios: Vec<Option<f64>> = panels[1]
+        .grid
+        .values
+        .iter()
+        .zip(&panels[2].grid.values)
+        .map(|(b, c)| Some(b.as_ref()? / c.as_ref()?))
+        .collect();
+    let (rmin, rmax) = extent(ratios.iter().flatten().copied()).ok_or_else(|| {
+        Fail::Data(crate::Error::Degenerate(
+            "LiSPSM over face partitioning has no finite value".into(),
+        ))
+    })?;
+    let ratio = Panel {
+        title: "(e) (b) ÷ (c), not in the paper".into(),
+        grid: PolarGrid {
+            values: ratios,
+            ..panels[1].grid.clone()
+        },
+        max: rmax,
+        min: rmin,
+    };
+    let ratio_scale = ColourScale::smooth(Axis::log10(
+        "S̄ of LiSPSM ÷ S̄ of face partitions",
+        rmin,
+        rmax,
+    ));
     let lo = panels.iter().map(|p| p.min).fold(f64::INFINITY, f64::min);
     let hi = panels.iter().map(|p| p.max).fold(0.0, f64::max);
     let scale = ColourScale::smooth(Axis::log10("S̄ (texels per image pixel)", lo, hi));
@@ -123,11 +154,14 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
             90 / (ELEVATIONS - 1)
         ),
         "The hemisphere seen from above in the azimuthal equidistant projection (the distance from the centre proportional to 90° − elevation, so that the horizon band, 0° to 30°, fills the outer third of the radius): overhead at the centre, light from behind the viewer on the left, from in front on the right, from the viewer's right at the bottom; rings every 10° of elevation up to 30°, then at 60°. The horizontal diameter is the vertical plane through the view direction: lights straight behind, overhead and straight in front.".to_string(),
-        format!("One log₁₀ colour scale for all panels, as in the paper. Range of S̄: {}.", summary.join("; ")),
+        format!("One log₁₀ colour scale for panels (a)–(d), as in the paper. Range of S̄: {}.", summary.join("; ")),
+        format!("(e), not in the paper, on its own log₁₀ scale: LiSPSM's S̄ divided by face partitioning's at each direction, {} to {}: the paper's point, that face partitioning removes LiSPSM's error behind and in front of the viewer and near the horizon, while overhead both are Eq 12's 865 (ratio 1) and nowhere is face partitioning more than {:.2} times worse.", fmt_times_ten(ratio.min), fmt_times_ten(ratio.max), 1.0 / ratio.min),
     ];
     Ok(Fig7 {
         panels,
         scale,
+        ratio,
+        ratio_scale,
         caption,
     })
 }
@@ -142,7 +176,7 @@ impl Fig7 {
 
 impl Figure for Fig7 {
     fn size(&self) -> (u32, u32) {
-        (520, 760)
+        (520, 1090)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -152,13 +186,41 @@ impl Figure for Fig7 {
             "Storage factor over the hemisphere of light directions",
             &caption,
         )?;
-        let (w, _) = body.dim_in_pixel();
-        let (maps, bar) = body.split_horizontally(w.saturating_sub(84));
+        let (w, h) = body.dim_in_pixel();
+        let (top, bottom) = body.split_vertically(h * 2 / 3);
+        let (maps, bar) = top.split_horizontally(w.saturating_sub(84));
         let cells = maps.split_evenly((2, 2));
         for (cell, p) in cells.iter().zip(&self.panels) {
             draw_hemisphere(cell, &p.title, &p.grid, &self.scale)?;
         }
         draw_colour_bar(&bar, &self.scale)?;
+        // (e) under (a), its own bar beside it, and what it shows in the space left.
+        let half = w.saturating_sub(84) / 2;
+        let (cell, rest) = bottom.split_horizontally(half);
+        let (ratio_bar, note) = rest.split_horizontally(96);
+        draw_hemisphere(
+            &cell,
+            &self.ratio.title,
+            &self.ratio.grid,
+            &self.ratio_scale,
+        )?;
+        draw_colour_bar(&ratio_bar, &self.ratio_scale)?;
+        let style = TextStyle::from((FONT, 13).into_font());
+        let lines = [
+            "How many times fewer",
+            "texels face partitioning",
+            "needs than LiSPSM for",
+            "the same error, at each",
+            "light direction: 1",
+            "overhead, most behind,",
+            "in front and near the",
+            "horizon; below 1 (at",
+            "least 0.9) where face",
+            "partitioning is worse.",
+        ];
+        for (i, line) in lines.iter().enumerate() {
+            note.draw(&Text::new(*line, (12, 60 + 18 * i as i32), style.clone()))?;
+        }
         Ok(())
     }
 }
@@ -233,6 +295,15 @@ mod tests {
                 .filter_map(|&v| fig.scale.level(v))
                 .collect()
         };
+        // (e) is (b) ÷ (c) at every direction: behind, LiSPSM falls back to the orthographic
+        // map, (f/n)² = 10⁶ (Eq 20, k = 1), and face partitioning is Eq 21's 1999, so 500.25;
+        // overhead both are Eq 12's 865.159, so 1.
+        let r = &fig.ratio.grid.values;
+        assert!((r[0].unwrap() - 1e6 / 1999.0).abs() < 1e-6, "{:?}", r[0]);
+        let top = r[(ELEVATIONS - 1) * AZIMUTHS].unwrap();
+        assert!((top - 1.0).abs() < 1e-9, "{top}");
+        assert_eq!(r.len(), fig.panels[1].grid.values.len());
+        assert!(fig.ratio.min > 0.9 && fig.ratio.max > 2000.0);
         assert!(
             bands(2).len() * 3 < bands(1).len(),
             "{} vs {}",
