@@ -2,15 +2,14 @@
 //! speed-up of the clipper or of the frame's bookkeeping): 20 000 random frames over every scheme,
 //! measured and not, with fixed seeds, each output hashed bit for bit (every map's matrices,
 //! figures, body, culling volumes, bias and GPU record; the frame's bookkeeping; each error's
-//! message). Ignored by default (it takes seconds in a release build); run it before and after
-//! the change and compare the printed hash:
+//! message). Run it before and after the change and compare the printed hash:
 //!
 //! ```text
-//! cargo test --release --test frame_bits -- --ignored --nocapture
+//! cargo run --release --example frame_fingerprint
 //! ```
 //!
-//! The hash depends on the platform's floating-point library (`sin`, `powf`), so it is printed,
-//! not asserted.
+//! The hash depends on the platform's floating-point library (`sin`, `powf`) and on the standard
+//! library's `DefaultHasher`, so it is a tool printed for comparison on one machine, not a test.
 
 use glam::{DMat4, DVec3, DVec4};
 use shadow_aliasing::analytic::partition::SplitScheme;
@@ -196,9 +195,7 @@ fn hash_frame(h: &mut DefaultHasher, res: &shadow_aliasing::Result<()>, f: &Fram
     f.len()
 }
 
-#[test]
-#[ignore = "a fingerprint to compare before and after a change: run with --ignored --nocapture"]
-fn frame_outputs_fingerprint() {
+fn main() {
     let mut r = Rng(0x5EED_F4A3_0023_0009);
     let mut h = DefaultHasher::new();
     let mut out = Frame::default();
