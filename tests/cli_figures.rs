@@ -89,6 +89,33 @@ fn only_and_format_select_the_files() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// `--format pdf` (issue 25): with the feature `pdf`, one vector PDF per figure with its font
+/// embedded; without it, one line naming the feature and a non-zero exit, and no file.
+#[test]
+fn format_pdf_writes_pdfs_or_names_the_feature() {
+    let dir = temp_dir("pdf");
+    let (code, out, err) = figures(&dir, &["--format", "pdf", "--only", "lloyd2006-fig6"]);
+    let pdf = dir.join("lloyd2006-fig6.pdf");
+    if cfg!(feature = "pdf") {
+        assert_eq!(code, 0, "{err}");
+        assert!(out.contains("1 files"), "{out}");
+        let b = std::fs::read(&pdf).unwrap();
+        assert!(b.starts_with(b"%PDF-"));
+        let text = String::from_utf8_lossy(&b);
+        assert!(text.contains("/FontFile2") || text.contains("/FontFile3"));
+        assert!(b.len() > 10_000, "{} bytes", b.len());
+    } else {
+        assert_ne!(code, 0);
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(
+            err.contains("feature `pdf`") && err.contains("--features"),
+            "{err}"
+        );
+        assert!(!pdf.exists());
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn bad_arguments_are_one_line_and_a_non_zero_exit() {
     let dir = temp_dir("bad");

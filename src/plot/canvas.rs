@@ -69,7 +69,7 @@ pub(crate) struct Run {
 }
 
 const SUB: (f64, f64) = (0.72, 0.2);
-const SUP: (f64, f64) = (0.72, -0.36);
+pub(crate) const SUP: (f64, f64) = (0.72, -0.36);
 const MACRON: char = '\u{304}';
 
 /// Splits a text into runs of plain text, subscripts, superscripts and barred letters.

@@ -252,11 +252,12 @@ pub(crate) fn place_note(
 }
 
 /// Writes `text` in `colour` at `size` pixels on a white box (as [`boxed_text`]) filling the
-/// box `r` of backend units (a box from [`place_label`]).
+/// box `r` of backend units (a box from [`place_label`]), aligned to the box's left or right
+/// (`h`: a series' label ends at its right, as a label written left of its line's end).
 pub(crate) fn text_in_box<DB: DrawingBackend>(
     area: &DrawingArea<DB, plotters::coord::Shift>,
     r: &Rect,
-    text: &str,
+    (text, h): (&str, plotters::style::text_anchor::HPos),
     size: u32,
     colour: RGBColor,
 ) -> Result<(), Fail> {
@@ -273,7 +274,12 @@ pub(crate) fn text_in_box<DB: DrawingBackend>(
     ))?;
     let style = TextStyle::from((FONT, size).into_font())
         .color(&colour)
-        .pos(Pos::new(HPos::Left, VPos::Top));
-    area.draw(&Text::new(text.to_string(), (x0 + p, y0 + p), style))?;
+        .pos(Pos::new(h, VPos::Top));
+    let x = if matches!(h, HPos::Right) {
+        x1 - p
+    } else {
+        x0 + p
+    };
+    area.draw(&Text::new(text.to_string(), (x, y0 + p), style))?;
     Ok(())
 }

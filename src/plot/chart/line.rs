@@ -396,7 +396,13 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
         let pad = f64::from(2 * LABEL_PAD);
         let size = (f64::from(w) + pad, f64::from(h) + pad);
         if let Some(r) = place_label(&points, i, size, &area, k, &obstacles) {
-            text_in_box(&plot, &r, label, LABEL_SIZE, c.series[k].colour)?;
+            text_in_box(
+                &plot,
+                &r,
+                (label, HPos::Right),
+                LABEL_SIZE,
+                c.series[k].colour,
+            )?;
             obstacles.boxes.push(r);
         }
     }
@@ -409,7 +415,7 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
                 let (w, h) = plot.estimate_text_size(&n.text, &style)?;
                 let size = (f64::from(w), f64::from(h));
                 let r = place_note(to((x, y)), size, &area, &obstacles);
-                text_in_box(&plot, &r, &n.text, LABEL_SIZE, n.colour)?;
+                text_in_box(&plot, &r, (&n.text, HPos::Left), LABEL_SIZE, n.colour)?;
                 obstacles.boxes.push(r);
             }
         }
