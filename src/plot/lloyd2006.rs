@@ -754,7 +754,10 @@ mod tests {
                 if label.starts_with("FP+ZP+W") {
                     fp += 1;
                     assert!(s.markers, "{label}");
-                    assert!(finite.iter().all(|&j| (j as usize - 1) % 4 == 0), "{label}");
+                    assert!(
+                        finite.iter().all(|&j| (j as usize - 1).is_multiple_of(4)),
+                        "{label}"
+                    );
                     for w in s.points.windows(2) {
                         assert!(
                             !(w[0].1.is_finite() && w[1].1.is_finite()),

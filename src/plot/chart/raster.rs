@@ -168,7 +168,7 @@ mod tests {
         let r = Raster::sample((0, 0, 4, 4), |x, y| {
             ((x - 2.0).powi(2) + (y - 2.0).powi(2) <= 4.0).then_some(red)
         });
-        assert!(DENSITY >= 4);
+        const { assert!(DENSITY >= 4) };
         assert_eq!(r.size, (4 * DENSITY, 4 * DENSITY));
         let c = 2 * DENSITY;
         assert_eq!(r.pixel(c, c), [200, 0, 0, 255]);
