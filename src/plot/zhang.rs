@@ -8,8 +8,8 @@
 //! [0, 1]; unit resolutions).
 
 use super::chart::{
-    build_chart_styled, colour_bar_ticks, frame, Axis, ChartStyle, ColourScale, Grid, Ticked,
-    COLOUR_BAR_TICK, FONT,
+    build_chart_styled, colour_bar_ticks, frame, linspace, Axis, ChartStyle, ColourScale, Grid,
+    Ticked, COLOUR_BAR_TICK, FONT,
 };
 use super::{Fail, Figure};
 use crate::maps::{warp, WarpRule};
@@ -242,11 +242,13 @@ fn draw_bar<DB: DrawingBackend>(
             Ticked::new(lo, hi, xb, vec![]),
             Ticked::new(0.0, 1.0, vec![], vec![]),
         )?;
+    // The labels of exactly the ticks handed to the axis.
     let xf = |v: &f64| {
         ticks
             .iter()
-            .min_by(|a, b| (a.0 - v).abs().total_cmp(&(b.0 - v).abs()))
-            .map_or_else(String::new, |t| t.1.clone())
+            .find(|t| (t.0 - v).abs() < 1e-9)
+            .map(|t| t.1.clone())
+            .unwrap_or_default()
     };
     chart
         .configure_mesh()
@@ -258,11 +260,10 @@ fn draw_bar<DB: DrawingBackend>(
         .axis_desc_style((FONT, 13))
         .label_style((FONT, 13))
         .draw()?;
-    let n = scale.levels;
-    chart.draw_series((0..n).map(|k| {
-        let a = lo + (hi - lo) * k as f64 / n as f64;
-        let b = lo + (hi - lo) * (k + 1) as f64 / n as f64;
-        Rectangle::new([(a, 0.0), (b, 1.0)], scale.level_colour(k).filled())
+    // One band per level, left to right.
+    let edges = linspace(lo, hi, scale.levels + 1);
+    chart.draw_series(edges.windows(2).enumerate().map(|(k, e)| {
+        Rectangle::new([(e[0], 0.0), (e[1], 1.0)], scale.level_colour(k).filled())
     }))?;
     chart.draw_series(std::iter::once(Rectangle::new(
         [(lo, 0.0), (hi, 1.0)],
