@@ -265,15 +265,15 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
                     SchemeLight::Overhead => PALETTE[colour],
                     SchemeLight::Behind => PALETTE[7],
                 };
-                with_width(
-                    Series::line(
+                Series {
+                    width: 3,
+                    ..Series::line(
                         format!("{name}, light {light_name} (4k + 1 maps only)"),
                         unjoined(&pts),
                         colour,
                     )
-                    .with_markers(),
-                    3,
-                )
+                    .with_markers()
+                }
             } else {
                 // Every count: a line, with a few markers along it (not one per count).
                 Series::line(format!("{name}, light {light_name}"), pts, PALETTE[colour])
@@ -319,7 +319,7 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
             .dashed()
             .with_markers();
         zoom.series.push(if scheme == Scheme::FpZpW {
-            with_width(s, 3)
+            Series { width: 3, ..s }
         } else {
             s
         });
@@ -353,12 +353,6 @@ fn unjoined(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
         out.push(p);
     }
     out
-}
-
-/// The same series drawn `width` wide (its markers grow with it).
-fn with_width(mut s: Series, width: u32) -> Series {
-    s.width = width;
-    s
 }
 
 /// Fig 13 data: for each number of maps 4k + 1, the f/n above which z-partitioning (ZP, ZP+W)
@@ -508,6 +502,7 @@ impl Figure for Fig13 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::plot::chart::read_svg::{draw_svg, texts};
     use crate::plot::chart::Scale;
 
     /// Fig 13's first point: with one partition per face (5 maps) Eq 20 gives 5 r^{2/5} and
@@ -542,65 +537,21 @@ mod tests {
             .all(|w| w[1].1 > w[0].1 && w[1].0 > w[0].0));
     }
 
-    /// The visible text of an SVG `<text>` line, tags removed and superscript digits written
-    /// as digits (a backend may set them as `<tspan>`s).
-    fn visible(line: &str) -> String {
-        let Some(body) = line.find('>').map(|i| &line[i + 1..]) else {
-            return String::new();
-        };
-        let body = body.strip_suffix("</text>").unwrap_or(body);
-        let mut out = String::new();
-        let mut tag = false;
-        for c in body.chars() {
-            match c {
-                '<' => tag = true,
-                '>' => tag = false,
-                _ if tag => {}
-                _ => out.push(match "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().position(|d| d == c) {
-                    Some(d) => char::from(b'0' + d as u8),
-                    None => c,
-                }),
-            }
-        }
-        out
-    }
-
     /// Fig 13's key covers nothing (issue 25: its two boxes lay over the fills): drawn as the
     /// figure is, into an SVG, every key text lies above the chart's top, the y of its top tick
     /// label 10⁶, and left of nothing drawn in the chart.
     #[test]
     fn fig13_key_lies_above_the_chart() {
-        crate::plot::ensure_font().unwrap();
         let fig = fig13().map_err(|e| e.named("lloyd2006-fig13")).unwrap();
-        let mut svg = String::new();
-        {
-            let area = crate::plot::svg::Svg::new(&mut svg, fig.size(), 1).into_drawing_area();
-            fig.draw(&area).unwrap();
-            area.present().unwrap();
-        }
-        let y_of = |text: &str| -> Vec<f64> {
-            svg.lines()
-                .filter(|l| {
-                    l.starts_with("<text")
-                        && visible(l).contains(&visible(&format!(">{text}</text>")))
-                })
-                .filter_map(|l| {
-                    let at = l.find(" y=\"")? + 4;
-                    l[at..at + l[at..].find('"')?].parse().ok()
-                })
-                .collect()
+        let svg = draw_svg(fig.size(), |area| fig.draw(area).unwrap());
+        let texts = texts(&svg);
+        let y_of = |pred: &dyn Fn(&str) -> bool| -> Vec<f64> {
+            texts.iter().filter(|t| pred(&t.1)).map(|t| t.2).collect()
         };
-        let top: Vec<f64> = svg
-            .lines()
-            .filter(|l| l.starts_with("<text") && visible(l) == "106")
-            .filter_map(|l| {
-                let at = l.find(" y=\"")? + 4;
-                l[at..at + l[at..].find('"')?].parse().ok()
-            })
-            .collect();
+        let top = y_of(&|t| t == "106");
         assert_eq!(top.len(), 1, "{svg}");
         for key in ["ZP / ZP+W lowest", "FP+ZP+W lowest"] {
-            let ys = y_of(key);
+            let ys = y_of(&|t| t.contains(key));
             assert_eq!(ys.len(), 1, "{key}");
             assert!(
                 ys[0] < top[0] - 8.0,
@@ -780,30 +731,11 @@ mod tests {
     /// units, the label's box, on the panel's log axis read from its 10⁰ and 10⁴ labels).
     #[test]
     fn fig10_labels_each_optimum() {
-        crate::plot::ensure_font().unwrap();
         let fig = fig10().map_err(|e| e.named("lloyd2006-fig10")).unwrap();
-        let mut svg = String::new();
-        {
-            let area = crate::plot::svg::Svg::new(&mut svg, fig.size(), 1).into_drawing_area();
-            fig.draw(&area).unwrap();
-            area.present().unwrap();
-        }
-        let texts: Vec<(&str, f64)> = svg
-            .lines()
-            .filter(|l| l.starts_with("<text"))
-            .filter_map(|l| {
-                let at = l.find(" y=\"")? + 4;
-                Some((l, l[at..at + l[at..].find('"')?].parse().ok()?))
-            })
-            .collect();
-        let first_y = |content: &str| {
-            texts
-                .iter()
-                .find(|(l, _)| visible(l) == visible(&format!(">{content}</text>")))
-                .map(|t| t.1)
-                .unwrap()
-        };
-        let (y0, y4) = (first_y("10⁰"), first_y("10⁴"));
+        let svg = draw_svg(fig.size(), |area| fig.draw(area).unwrap());
+        let texts = texts(&svg);
+        let first_y = |content: &str| texts.iter().find(|t| t.1 == content).unwrap().2;
+        let (y0, y4) = (first_y("100"), first_y("104"));
         let tan = 30f64.to_radians().tan();
         for (i, ratio) in [10f64, 100.0, 1000.0, 10_000.0].into_iter().enumerate() {
             let opt = ratio.ln() / (2.0 * tan);
@@ -814,8 +746,8 @@ mod tests {
             };
             let found: Vec<f64> = texts
                 .iter()
-                .filter(|(l, _)| visible(l) == text && l.contains(&colour))
-                .map(|t| t.1)
+                .filter(|t| t.1 == text && t.0.contains(&colour))
+                .map(|t| t.2)
                 .collect();
             assert_eq!(found.len(), 1, "{text} in {colour}");
             let line = y0 + (y4 - y0) * opt.log10() / 4.0;

@@ -540,6 +540,7 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
 
 #[cfg(test)]
 mod tests {
+    use super::super::read_svg::{attr, draw_svg, visible};
     use super::*;
     use std::f64::consts::FRAC_PI_2;
 
@@ -628,35 +629,6 @@ mod tests {
         assert_eq!(hemisphere_direction(0.8, 0.7), None);
     }
 
-    /// The visible text of an SVG `<text>` line, tags removed and superscript digits written
-    /// as digits (a backend may set them as `<tspan>`s).
-    fn visible(line: &str) -> String {
-        let Some(body) = line.find('>').map(|i| &line[i + 1..]) else {
-            return String::new();
-        };
-        let body = body.strip_suffix("</text>").unwrap_or(body);
-        let mut out = String::new();
-        let mut tag = false;
-        for c in body.chars() {
-            match c {
-                '<' => tag = true,
-                '>' => tag = false,
-                _ if tag => {}
-                _ => out.push(match "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().position(|d| d == c) {
-                    Some(d) => char::from(b'0' + d as u8),
-                    None => c,
-                }),
-            }
-        }
-        out
-    }
-
-    /// The numbers of an attribute list `name="v"`.
-    fn attr(el: &str, name: &str) -> Option<f64> {
-        let at = el.find(&format!(" {name}=\""))? + name.len() + 3;
-        el[at..at + el[at..].find('"')?].parse().ok()
-    }
-
     fn unbase64(s: &str) -> Vec<u8> {
         let val = |c: u8| match c {
             b'A'..=b'Z' => c - b'A',
@@ -686,7 +658,6 @@ mod tests {
     ///   disk (nothing bleeds past the horizon ring) and opaque inside it.
     #[test]
     fn hemisphere_rings_labels_and_raster_by_the_projection() {
-        super::super::super::ensure_font().unwrap();
         let n = 12;
         let grid = PolarGrid {
             elev_edges: (0..=n).map(|i| FRAC_PI_2 * i as f64 / n as f64).collect(),
@@ -696,13 +667,9 @@ mod tests {
             values: (0..2 * n * n).map(|k| Some(1.0 + k as f64)).collect(),
         };
         let scale = ColourScale::smooth(Axis::linear("v", 1.0, (2 * n * n) as f64));
-        let mut svg = String::new();
-        {
-            let area =
-                super::super::super::svg::Svg::new(&mut svg, (300, 330), 1).into_drawing_area();
-            draw_hemisphere(&area, "t", &grid, &scale).unwrap();
-            area.present().unwrap();
-        }
+        let svg = draw_svg((300, 330), |area| {
+            draw_hemisphere(area, "t", &grid, &scale).unwrap();
+        });
         let lines: Vec<&str> = svg.lines().collect();
         // The rings: closed polylines of many points; centre and radius of each.
         let mut rings: Vec<((f64, f64), f64)> = lines
@@ -792,15 +759,8 @@ mod tests {
     /// left out; 10⁴, 10⁵, 10⁶ labelled).
     #[test]
     fn colour_bar_labels_its_ends() {
-        super::super::super::ensure_font().unwrap();
         let scale = ColourScale::smooth(Axis::log10("S", 865.159, 4.7354e6));
-        let mut svg = String::new();
-        {
-            let area =
-                super::super::super::svg::Svg::new(&mut svg, (90, 500), 1).into_drawing_area();
-            draw_colour_bar(&area, &scale).unwrap();
-            area.present().unwrap();
-        }
+        let svg = draw_svg((90, 500), |area| draw_colour_bar(area, &scale).unwrap());
         // The bar's outline: the one unfilled rectangle.
         let outline = svg
             .lines()

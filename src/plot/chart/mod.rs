@@ -17,6 +17,8 @@ mod legend;
 mod line;
 mod page;
 mod raster;
+#[cfg(test)]
+pub(crate) mod read_svg;
 
 pub(crate) use aspect::*;
 pub(crate) use axis::*;
