@@ -89,11 +89,14 @@ impl Rect {
     }
 }
 
+/// A drawn segment (backend units) and the index of its series.
+pub(crate) type Segment = ((f64, f64), (f64, f64), usize);
+
 /// What a label must not cover: the drawn lines and markers of a chart's series (backend
 /// units), each with the index of its series, and the boxes already placed.
 #[derive(Debug, Default)]
 pub(crate) struct Obstacles {
-    pub segments: Vec<((f64, f64), (f64, f64), usize)>,
+    pub segments: Vec<Segment>,
     pub markers: Vec<(Rect, usize)>,
     pub boxes: Vec<Rect>,
 }
