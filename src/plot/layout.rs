@@ -144,6 +144,15 @@ impl Fig8 {
     }
 }
 
+/// Whether `p` lies inside the convex polygon `poly` (either orientation).
+fn inside(poly: &[DVec2], p: DVec2) -> bool {
+    let n = poly.len();
+    let sides: Vec<f64> = (0..n)
+        .map(|i| (poly[(i + 1) % n] - poly[i]).perp_dot(p - poly[i]))
+        .collect();
+    sides.iter().all(|&s| s >= 0.0) || sides.iter().all(|&s| s <= 0.0)
+}
+
 fn apply(h: &DMat3, p: DVec2) -> DVec2 {
     let q = *h * p.extend(1.0);
     DVec2::new(q.x / q.z, q.y / q.z)
@@ -203,6 +212,8 @@ impl Fig8 {
         style: &ChartStyle,
     ) -> Result<(), Fail> {
         let (lo, hi) = Self::window(self.cells.iter().flat_map(|c| c.outline.iter().copied()));
+        // Room under the drawing for the tags of parts too small to hold them.
+        let lo = lo - DVec2::new(0.0, 0.1 * (hi.y - lo.y));
         let title = "(a) seen from the light";
         let (xa, ya) = equal_aspect(
             area,
@@ -223,15 +234,55 @@ impl Fig8 {
             closed.push(closed[0]);
             chart.draw_series(LineSeries::new(closed, BLACK.stroke_width(1)))?;
         }
-        // Tags at the parts' centres, last so that no fill covers them.
+        // Tags at the parts' centres where they fit inside the part (with a margin), last so
+        // that no fill covers them; a part too small for its tag gets it outside the drawing,
+        // away from the drawing's centre, joined to the part by a leader.
         let tag_style =
             TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Center));
+        let (pw, _) = chart.plotting_area().dim_in_pixel();
+        let per_px = (xa.max - xa.min) / f64::from(pw);
+        // The row under the drawing for the tags that do not fit.
+        let bottom = self
+            .cells
+            .iter()
+            .flat_map(|c| c.outline.iter().map(|p| p.y))
+            .fold(f64::INFINITY, f64::min);
+        let mut outside: Vec<(DVec2, f64, &str)> = Vec::new();
         for c in &self.cells {
             let mid = c.outline.iter().copied().sum::<DVec2>() / c.outline.len() as f64;
+            let (tw, th) = area
+                .estimate_text_size(&c.tag, &tag_style)
+                .map_err(|e| Fail::Draw(e.to_string()))?;
+            let half = DVec2::new(f64::from(tw) + 4.0, f64::from(th) + 2.0) * 0.5 * per_px;
+            let fits = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+                .iter()
+                .all(|&(sx, sy)| inside(&c.outline, mid + DVec2::new(sx * half.x, sy * half.y)));
+            if fits {
+                chart.draw_series(std::iter::once(Text::new(
+                    c.tag.clone(),
+                    (mid.x, mid.y),
+                    tag_style.clone(),
+                )))?;
+            } else {
+                outside.push((mid, half.x, c.tag.as_str()));
+            }
+        }
+        // Left to right under the drawing, each at least its width from the one before,
+        // joined to its part by a leader.
+        outside.sort_by(|a, b| a.0.x.total_cmp(&b.0.x));
+        let y = bottom - 12.0 * per_px;
+        let mut next = f64::NEG_INFINITY;
+        for (mid, hw, tag) in outside {
+            let x = mid.x.max(next + hw);
+            next = x + hw + 6.0 * per_px;
+            chart.draw_series(LineSeries::new(
+                [(mid.x, mid.y), (x, y + 6.0 * per_px)],
+                RGBColor(90, 90, 90).stroke_width(1),
+            ))?;
             chart.draw_series(std::iter::once(Text::new(
-                c.tag.clone(),
-                (mid.x, mid.y),
-                tag_style.clone(),
+                tag.to_string(),
+                (x, y),
+                tag_style.pos(Pos::new(HPos::Center, VPos::Top)),
             )))?;
         }
         Ok(())
