@@ -540,7 +540,7 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
 
 #[cfg(test)]
 mod tests {
-    use super::super::read_svg::{attr, draw_svg, visible};
+    use super::super::read_svg::{attr, draw_svg, embedded_images, visible, Image};
     use super::*;
     use std::f64::consts::FRAC_PI_2;
 
@@ -629,26 +629,6 @@ mod tests {
         assert_eq!(hemisphere_direction(0.8, 0.7), None);
     }
 
-    fn unbase64(s: &str) -> Vec<u8> {
-        let val = |c: u8| match c {
-            b'A'..=b'Z' => c - b'A',
-            b'a'..=b'z' => c - b'a' + 26,
-            b'0'..=b'9' => c - b'0' + 52,
-            b'+' => 62,
-            _ => 63,
-        };
-        let digits: Vec<u8> = s.bytes().filter(|&c| c != b'=').map(val).collect();
-        let mut out = Vec::new();
-        for ch in digits.chunks(4) {
-            let n = ch
-                .iter()
-                .enumerate()
-                .fold(0u32, |a, (i, &d)| a | u32::from(d) << (18 - 6 * i));
-            out.extend(&n.to_be_bytes()[1..ch.len()]);
-        }
-        out
-    }
-
     /// A hemisphere panel as the figures draw it (issue 25, lloyd2006-fig7 and G2), read back
     /// from its SVG:
     /// - the rings lie where the azimuthal equidistant projection puts them, at (90° − el)/90°
@@ -725,17 +705,16 @@ mod tests {
             }
         }
         // The heat map: one RGBA image, dense, clipped to the disk.
-        let images: Vec<&&str> = lines.iter().filter(|l| l.starts_with("<image")).collect();
+        let images = embedded_images(&svg);
         assert_eq!(images.len(), 1);
-        let el = images[0];
-        let (x0, y0) = (attr(el, "x").unwrap(), attr(el, "y").unwrap());
-        let width = attr(el, "width").unwrap();
-        let at = el.find("base64,").unwrap() + 7;
-        let png = unbase64(&el[at..at + el[at..].find('"').unwrap()]);
-        let img = image::load_from_memory(&png).unwrap().to_rgba8();
-        let density = f64::from(img.width()) / width;
+        let Image {
+            at: (x0, y0),
+            density,
+            rgba: ref img,
+            colour_type,
+        } = images[0];
         assert!(density >= 4.0 - 1e-9, "{density} pixels per unit");
-        assert_eq!(png[25], 6, "colour type RGBA");
+        assert_eq!(colour_type, 6, "colour type RGBA");
         let (mut outside, mut inside) = (0, 0);
         for (px, py, p) in img.enumerate_pixels() {
             let u = x0 + (f64::from(px) + 0.5) / density;

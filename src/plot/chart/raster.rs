@@ -189,4 +189,52 @@ mod tests {
         let (_, size) = fit_to_scale(&r.rgba, r.size, DENSITY, 2);
         assert_eq!(size, (8, 8));
     }
+
+    /// A rectangular grid's heat map (issue 25, G2: zhang-fig3 draws its panels so) is one
+    /// dense RGBA image too, transparent outside its clip region: a 4 × 4 grid over [0, 2]² cut
+    /// to y ≤ x, drawn on a chart into an SVG and decoded, has at least 4 pixels per unit,
+    /// zero alpha above the diagonal and full alpha below it (more than a pixel away).
+    #[test]
+    fn grid_rasters_are_dense_and_clipped() {
+        use super::super::read_svg::{draw_svg, embedded_images, Image};
+        use super::super::{build_chart, draw_grid, Axis, ColourScale, Grid};
+        let grid = Grid::sample_clipped(
+            (0.0, 2.0, 4),
+            (0.0, 2.0, 4),
+            vec![(-1.0, 1.0, 0.0)],
+            |x, y| Some(1.0 + x + y),
+        );
+        let scale = ColourScale::smooth(Axis::linear("v", 1.0, 5.0));
+        let (x, y) = (Axis::linear("x", 0.0, 2.0), Axis::linear("y", 0.0, 2.0));
+        let svg = draw_svg((300, 300), |area| {
+            let mut chart = build_chart(area, "", &x, &y, false).unwrap();
+            draw_grid(&mut chart, &grid, &scale).unwrap();
+        });
+        let images = embedded_images(&svg);
+        assert_eq!(images.len(), 1);
+        let Image {
+            density,
+            rgba: ref img,
+            colour_type,
+            ..
+        } = images[0];
+        assert!(density >= 4.0 - 1e-9, "{density}");
+        assert_eq!(colour_type, 6);
+        // The image spans the grid: its pixel (i, j) lies at data (2(i + ½)/w, 2(1 − (j + ½)/h)).
+        let (w, h) = (f64::from(img.width()), f64::from(img.height()));
+        let margin = 2.0 * 2.0 / w.min(h);
+        let (mut above, mut below) = (0, 0);
+        for (i, j, p) in img.enumerate_pixels() {
+            let dx = 2.0 * (f64::from(i) + 0.5) / w;
+            let dy = 2.0 * (1.0 - (f64::from(j) + 0.5) / h);
+            if dy > dx + margin {
+                assert_eq!(p[3], 0, "({dx}, {dy}) above the diagonal");
+                above += 1;
+            } else if dy < dx - margin {
+                assert_eq!(p[3], 255, "({dx}, {dy}) below the diagonal");
+                below += 1;
+            }
+        }
+        assert!(above > 1000 && below > 1000, "{above} {below}");
+    }
 }

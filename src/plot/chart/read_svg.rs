@@ -55,3 +55,52 @@ pub(crate) fn texts(svg: &str) -> Vec<(&str, String, f64)> {
         .filter_map(|l| Some((l, visible(l), attr(l, "y")?)))
         .collect()
 }
+
+fn unbase64(s: &str) -> Vec<u8> {
+    let val = |c: u8| match c {
+        b'A'..=b'Z' => c - b'A',
+        b'a'..=b'z' => c - b'a' + 26,
+        b'0'..=b'9' => c - b'0' + 52,
+        b'+' => 62,
+        _ => 63,
+    };
+    let digits: Vec<u8> = s.bytes().filter(|&c| c != b'=').map(val).collect();
+    let mut out = Vec::new();
+    for ch in digits.chunks(4) {
+        let n = ch
+            .iter()
+            .enumerate()
+            .fold(0u32, |a, (i, &d)| a | u32::from(d) << (18 - 6 * i));
+        out.extend(&n.to_be_bytes()[1..ch.len()]);
+    }
+    out
+}
+
+/// An embedded PNG `<image>` of an SVG, decoded.
+pub(crate) struct Image {
+    /// Its top-left corner, in view-box units.
+    pub at: (f64, f64),
+    /// Its pixels per view-box unit (across).
+    pub density: f64,
+    pub rgba: image::RgbaImage,
+    /// The PNG's colour type (2 RGB, 6 RGBA).
+    pub colour_type: u8,
+}
+
+/// Every embedded PNG image of an SVG.
+pub(crate) fn embedded_images(svg: &str) -> Vec<Image> {
+    svg.lines()
+        .filter(|l| l.starts_with("<image"))
+        .map(|el| {
+            let at = el.find("base64,").unwrap() + 7;
+            let png = unbase64(&el[at..at + el[at..].find('"').unwrap()]);
+            let rgba = image::load_from_memory(&png).unwrap().to_rgba8();
+            Image {
+                at: (attr(el, "x").unwrap(), attr(el, "y").unwrap()),
+                density: f64::from(rgba.width()) / attr(el, "width").unwrap(),
+                rgba,
+                colour_type: png[25],
+            }
+        })
+        .collect()
+}
