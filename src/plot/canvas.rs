@@ -68,7 +68,7 @@ pub(crate) struct Run {
     pub bar: bool,
 }
 
-const SUB: (f64, f64) = (0.72, 0.2);
+pub(crate) const SUB: (f64, f64) = (0.72, 0.2);
 pub(crate) const SUP: (f64, f64) = (0.72, -0.36);
 const MACRON: char = '\u{304}';
 

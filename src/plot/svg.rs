@@ -11,7 +11,7 @@
 //!   and stroke widths are written divided by `k`, so that shapes placed finer than a unit
 //!   ([`super::canvas::Fine`]) keep their positions.
 
-use super::canvas::{typeset, Run, SUP};
+use super::canvas::{typeset, Run, SUB, SUP};
 use image::ImageEncoder;
 use plotters::style::text_anchor::{HPos, VPos};
 use plotters::style::{FontStyle, FontTransform};
@@ -153,42 +153,41 @@ pub(crate) fn base64(bytes: &[u8]) -> String {
     s
 }
 
-/// The digit or sign a Unicode superscript character stands for.
-fn unsuperscript(c: char) -> Option<char> {
-    Some(match c {
-        '⁰' => '0',
-        '¹' => '1',
-        '²' => '2',
-        '³' => '3',
-        '⁴' => '4',
-        '⁵' => '5',
-        '⁶' => '6',
-        '⁷' => '7',
-        '⁸' => '8',
-        '⁹' => '9',
-        '⁻' => '\u{2212}',
-        '⁺' => '+',
-        _ => return None,
-    })
+/// The digit or sign a Unicode superscript or subscript character stands for, and which.
+fn unscript(c: char) -> Option<(char, (f64, f64))> {
+    const DIGITS: &str = "0123456789";
+    if let Some(i) = "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().position(|d| d == c) {
+        return DIGITS.chars().nth(i).map(|d| (d, SUP));
+    }
+    if let Some(i) = "₀₁₂₃₄₅₆₇₈₉".chars().position(|d| d == c) {
+        return DIGITS.chars().nth(i).map(|d| (d, SUB));
+    }
+    match c {
+        '⁻' => Some(('\u{2212}', SUP)),
+        '⁺' => Some(('+', SUP)),
+        '₋' => Some(('\u{2212}', SUB)),
+        '₊' => Some(('+', SUB)),
+        _ => None,
+    }
 }
 
-/// The runs with every Unicode superscript (10⁴, 10⁻⁶, 5²) written as a raised, smaller plain
-/// digit or sign: Liberation Sans and Arial, which a viewer without DejaVu Sans substitutes,
-/// have no glyphs for ⁰ and ⁴–⁹.
-pub(crate) fn plain_superscripts(runs: Vec<Run>) -> Vec<Run> {
+/// The runs with every Unicode superscript or subscript digit (10⁴, 10⁻⁶, 5², log₁₀, g₀)
+/// written as a raised or lowered, smaller plain digit or sign: Liberation Sans and Arial,
+/// which a viewer without DejaVu Sans substitutes, have no glyphs for ⁰, ⁴–⁹ or the subscripts.
+pub(crate) fn plain_scripts(runs: Vec<Run>) -> Vec<Run> {
     let mut out: Vec<Run> = Vec::with_capacity(runs.len());
     for r in runs {
-        if r.bar || !r.text.chars().any(|c| unsuperscript(c).is_some()) {
+        if r.bar || !r.text.chars().any(|c| unscript(c).is_some()) {
             out.push(r);
             continue;
         }
-        let mut cur: Option<(bool, String)> = None;
-        let flush = |cur: &mut Option<(bool, String)>, out: &mut Vec<Run>| {
-            if let Some((sup, text)) = cur.take() {
-                let (size, shift) = if sup {
-                    (r.size * SUP.0, r.shift + SUP.1 * r.size)
-                } else {
-                    (r.size, r.shift)
+        // Pieces of the run: the script of each (none for plain text) and its text.
+        let mut cur: Option<(Option<(f64, f64)>, String)> = None;
+        let flush = |cur: &mut Option<(Option<(f64, f64)>, String)>, out: &mut Vec<Run>| {
+            if let Some((script, text)) = cur.take() {
+                let (size, shift) = match script {
+                    Some((size, shift)) => (r.size * size, r.shift + shift * r.size),
+                    None => (r.size, r.shift),
                 };
                 out.push(Run {
                     text,
@@ -199,12 +198,15 @@ pub(crate) fn plain_superscripts(runs: Vec<Run>) -> Vec<Run> {
             }
         };
         for c in r.text.chars() {
-            let (sup, c) = unsuperscript(c).map_or((false, c), |d| (true, d));
+            let (script, c) = match unscript(c) {
+                Some((d, s)) => (Some(s), d),
+                None => (None, c),
+            };
             match &mut cur {
-                Some((s, text)) if *s == sup => text.push(c),
+                Some((s, text)) if *s == script => text.push(c),
                 _ => {
                     flush(&mut cur, &mut out);
-                    cur = Some((sup, c.to_string()));
+                    cur = Some((script, c.to_string()));
                 }
             }
         }
@@ -419,7 +421,7 @@ impl DrawingBackend for Svg<'_> {
         let _ = writeln!(
             self.body,
             "<text xml:space=\"preserve\" {attrs}>{}</text>",
-            tspans(&plain_superscripts(typeset(text)), f)
+            tspans(&plain_scripts(typeset(text)), f)
         );
         Ok(())
     }
@@ -491,11 +493,12 @@ mod tests {
         assert_eq!(tspans(&typeset("a < b & c"), 10.0), "a &lt; b &amp; c");
     }
 
-    /// Unicode superscripts are raised plain digits (Liberation Sans has no ⁰ or ⁴–⁹: checked
-    /// with rsvg-convert under a fontconfig holding only Liberation, they showed as boxes).
+    /// Unicode superscripts and subscripts are raised or lowered plain digits (Liberation Sans
+    /// has no ⁰, ⁴–⁹ or ₀–₉: rendered with rsvg-convert under a fontconfig holding only
+    /// Liberation, they showed as boxes).
     #[test]
-    fn superscripts_are_raised_plain_digits() {
-        let s = tspans(&plain_superscripts(typeset("α = 10⁴, 10⁻⁶ of 2")), 10.0);
+    fn scripts_are_raised_or_lowered_plain_digits() {
+        let s = tspans(&plain_scripts(typeset("α = 10⁴, 10⁻⁶ of 2")), 10.0);
         assert_eq!(
             s,
             "α = 10<tspan dy=\"-3.6\" font-size=\"7.2\">4</tspan><tspan dy=\"3.6\">, \
@@ -503,9 +506,14 @@ mod tests {
              dy=\"3.6\"> of 2</tspan>"
         );
         // Inside a subscript, raised from the subscript's baseline at its size.
-        let r = plain_superscripts(typeset("x_{a²}"));
+        let r = plain_scripts(typeset("x_{a²}"));
         assert_eq!(r.last().unwrap().text, "2");
         assert!((r.last().unwrap().shift - (0.2 - 0.36 * 0.72)).abs() < 1e-12);
-        assert!(!tspans(&plain_superscripts(typeset("10⁰ ⁹")), 10.0).contains('⁰'));
+        assert!(!tspans(&plain_scripts(typeset("10⁰ ⁹")), 10.0).contains('⁰'));
+        // Subscript digits are lowered plain digits.
+        assert_eq!(
+            tspans(&plain_scripts(typeset("log₁₀ S")), 10.0),
+            "log<tspan dy=\"2\" font-size=\"7.2\">10</tspan><tspan dy=\"-2\"> S</tspan>"
+        );
     }
 }
