@@ -136,7 +136,7 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
         title: "Maximum error and storage factor against the warp parameter η".into(),
         caption: vec![
             "Lloyd et al. 2006, Fig. 6 (n = 1, f = 100), from Eq 9, 10, 11, 12 (analytic::overhead, analytic::eta::n_prime_from_eta).".into(),
-            "θ = 30°, unit resolutions. Unlike the paper, which normalises each curve to fit one linear scale, the values are drawn as they are on a logarithmic axis: for η ≤ 0 M_x and M_z are both ∝ n′/(n′ + f − n) and run parallel; for η ≥ 0 S̄ stays constant while M_x falls and M_z rises (§4.3). (b) M_z alone on a linear axis: the paper's V, falling linearly to its minimum at η = 0 and rising linearly to η = 1.".into(),
+            "θ = 30°, unit resolutions. Unlike the paper, which normalises each curve to fit one linear scale, the values are drawn as they are on a logarithmic axis: for η ≤ 0 M_x and M_z are both proportional to n′/(n′ + f − n) and run parallel; for η ≥ 0 S̄ stays constant while M_x falls and M_z rises (§4.3). (b) M_z alone on a linear axis: the paper's V, falling linearly to its minimum at η = 0 and rising linearly to η = 1.".into(),
         ],
         charts: vec![c, v],
     })

@@ -26,7 +26,7 @@
 //! | `martin-tan-fig3` | Martin & Tan 2004, Figs 3–4: the trapezoid against the bounding box |
 //! | `barroso-fig5` | Barroso & Celes 2007, Fig 5: the frustum seen from the light with z-partitions |
 //! | `lloyd2006-fig11` | Lloyd et al. 2006, Fig 11: the frustum seen from a light behind the viewer |
-//! | `lloyd2005-fig8` | Lloyd et al. 2005, Fig 8(c): the texture layout of the subdivisions |
+//! | `lloyd2005-fig8` | Lloyd et al. 2005, Fig 8: the partitions seen from the light, one partition's warped map, the texture layout |
 //! | `lloyd2006-worst-case` | Lloyd et al. 2006, §5.3: worst case over all light directions against the light-behind value |
 //!
 //! ```no_run
@@ -492,8 +492,8 @@ figure_fns! {
     /// Lloyd et al. 2006 Fig 11 (`lloyd2006-fig11`): the view frustum seen from a light behind
     /// the viewer, with z-partitions and their overlapping maps.
     lloyd2006_fig11 => "lloyd2006-fig11";
-    /// Lloyd et al. 2005 Fig 8(c) (`lloyd2005-fig8`): the texture layout of face partitions
-    /// with z-partitions, by Eq 6.
+    /// Lloyd et al. 2005 Fig 8 (`lloyd2005-fig8`): (a) face partitions with z-partitions seen
+    /// from the light, (b) one partition's warped texel grid, (c) their texture layout by Eq 6.
     lloyd2005_fig8 => "lloyd2005-fig8";
 }
 

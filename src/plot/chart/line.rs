@@ -377,6 +377,10 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
                 width: s.width,
                 dash: s.dash,
                 marker: (!s.reference && (s.markers || colours > 1)).then_some(shape),
+                line: s
+                    .points
+                    .windows(2)
+                    .any(|w| w[0].1.is_finite() && w[1].1.is_finite()),
             }),
             (None, _) => {}
         }
