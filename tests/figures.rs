@@ -1071,7 +1071,8 @@ fn storage_factor_is_in_texels_per_image_pixel() {
         // A superscript ² is written as a raised plain digit (a `<tspan>`), so the visible
         // text reads "pixel2".
         assert!(
-            !all.iter().any(|t| t.contains("pixel²") || t.contains("pixel2")),
+            !all.iter()
+                .any(|t| t.contains("pixel²") || t.contains("pixel2")),
             "{name}: per pixel²"
         );
     }
