@@ -8,8 +8,8 @@
 //! [0, 1]; unit resolutions).
 
 use super::chart::{
-    build_chart_styled, colour_bar_ticks, frame, linspace, Axis, ChartStyle, ColourScale, Grid,
-    Ticked, COLOUR_BAR_TICK, FONT,
+    build_chart_styled, colour_bar_ticks, draw_bar_bands, frame, Axis, ChartStyle, ColourScale,
+    Grid, Ticked, COLOUR_BAR_TICK, FONT,
 };
 use super::{Fail, Figure};
 use crate::maps::{warp, WarpRule};
@@ -260,11 +260,8 @@ fn draw_bar<DB: DrawingBackend>(
         .axis_desc_style((FONT, 13))
         .label_style((FONT, 13))
         .draw()?;
-    // One band per level, left to right.
-    let edges = linspace(lo, hi, scale.levels + 1);
-    chart.draw_series(edges.windows(2).enumerate().map(|(k, e)| {
-        Rectangle::new([(e[0], 0.0), (e[1], 1.0)], scale.level_colour(k).filled())
-    }))?;
+    // The bands, left to right, as one raster (no seams).
+    draw_bar_bands(&chart, scale, false)?;
     chart.draw_series(std::iter::once(Rectangle::new(
         [(lo, 0.0), (hi, 1.0)],
         RGBColor(60, 60, 60).stroke_width(1),
@@ -387,6 +384,29 @@ mod tests {
     /// The measured side view at θ = 90° and 60° (LiSPSM row) equals Zhang's global
     /// representation (Eq 13, 14 with the corrected Appendix, `analytic::global`) at every
     /// cell centre inside the frustum; E_p × E_q is their product.
+    /// A horizontal colour bar is one embedded image (abutting rectangles left seams, issue
+    /// 25), its lowest band at the left and its highest at the right.
+    #[test]
+    fn colour_bar_is_one_seamless_raster() {
+        use super::super::chart::read_svg::{draw_svg, embedded_images};
+        use super::super::chart::SMOOTH_LEVELS;
+        let scale = ColourScale::smooth(Axis::log10("E", 2.0, 16400.0));
+        let svg = draw_svg((160, BAR), |area| draw_bar(area, &scale).unwrap());
+        assert!(!svg
+            .lines()
+            .any(|l| l.starts_with("<rect") && !l.contains("fill=\"none\"")));
+        let images = embedded_images(&svg);
+        assert_eq!(images.len(), 1);
+        let img = &images[0].rgba;
+        let (w, h) = img.dimensions();
+        let at = |x: u32| {
+            let p = img.get_pixel(x, h / 2).0;
+            RGBColor(p[0], p[1], p[2])
+        };
+        assert_eq!(at(0), scale.level_colour(0));
+        assert_eq!(at(w - 1), scale.level_colour(SMOOTH_LEVELS - 1));
+    }
+
     #[test]
     fn lispsm_cells_equal_zhangs_global_representation() {
         let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();

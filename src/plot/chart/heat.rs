@@ -474,6 +474,40 @@ pub(crate) fn colour_bar_ticks(axis: &Axis) -> Vec<(f64, String)> {
     ticks
 }
 
+/// Fills a colour bar with the bands of `scale` as one raster ([`Raster`]): abutting
+/// rectangles at whole units left anti-aliased hairline seams between the bands (issue 25).
+/// The chart spans the scale's axis along y (`vertical`) or x, and 0 to 1 across.
+pub(crate) fn draw_bar_bands<DB: DrawingBackend>(
+    chart: &Chart2d<'_, DB>,
+    scale: &ColourScale,
+    vertical: bool,
+) -> Result<(), Fail> {
+    let (lo, hi) = scale.axis.range();
+    let base = chart.plotting_area().get_base_pixel();
+    let unit = |p: (f64, f64)| {
+        let (u, v) = chart.backend_coord(&p);
+        (u - base.0, v - base.1)
+    };
+    let (a, b) = if vertical {
+        (unit((0.0, lo)), unit((1.0, hi)))
+    } else {
+        (unit((lo, 0.0)), unit((hi, 1.0)))
+    };
+    let (from, to) = if vertical { (a.1, b.1) } else { (a.0, b.0) };
+    if from == to {
+        return Ok(());
+    }
+    let levels = scale.levels;
+    let colour_at = |u: f64, v: f64| {
+        let along = if vertical { v } else { u };
+        let t = (along - f64::from(from)) / f64::from(to - from);
+        let k = (t * levels as f64).floor().clamp(0.0, (levels - 1) as f64) as usize;
+        Some(scale.level_colour(k))
+    };
+    let bbox = (a.0.min(b.0), a.1.min(b.1), a.0.max(b.0), a.1.max(b.1));
+    Raster::sample(bbox, colour_at).draw(&chart.plotting_area().strip_coord_spec())
+}
+
 /// Draws a vertical colour bar for `scale` into `area`, its ends labelled
 /// ([`colour_bar_ticks`]).
 pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
@@ -511,12 +545,7 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
         .axis_desc_style((FONT, 14))
         .label_style((FONT, 13))
         .draw()?;
-    let n = scale.levels;
-    chart.draw_series((0..n).map(|k| {
-        let a = lo + (hi - lo) * k as f64 / n as f64;
-        let b = lo + (hi - lo) * (k + 1) as f64 / n as f64;
-        Rectangle::new([(0.0, a), (1.0, b)], scale.level_colour(k).filled())
-    }))?;
+    draw_bar_bands(&chart, scale, true)?;
     chart.draw_series(std::iter::once(Rectangle::new(
         [(0.0, lo), (1.0, hi)],
         RGBColor(60, 60, 60).stroke_width(1),
@@ -736,6 +765,33 @@ mod tests {
     /// "865" and "4.74×10⁶" (three significant digits) level with its bottom and top edges, and
     /// the decades between them that keep clear of the ends (10³ lies 0.06 decades from 865:
     /// left out; 10⁴, 10⁵, 10⁶ labelled).
+    /// A colour bar is one embedded image, not abutting filled rectangles (whose anti-aliased
+    /// edges left hairline seams, issue 25): its pixels run from the scale's lowest band at the
+    /// bottom to its highest at the top (viridis ends), and no band's colour is left white.
+    #[test]
+    fn colour_bar_is_one_seamless_raster() {
+        let scale = ColourScale::smooth(Axis::log10("S", 865.159, 4.7354e6));
+        let svg = draw_svg((90, 500), |area| draw_colour_bar(area, &scale).unwrap());
+        let filled = svg
+            .lines()
+            .filter(|l| l.starts_with("<rect") && !l.contains("fill=\"none\""))
+            .count();
+        assert_eq!(filled, 0, "{svg}");
+        let images = embedded_images(&svg);
+        assert_eq!(images.len(), 1);
+        let img = &images[0].rgba;
+        let (w, h) = img.dimensions();
+        let at = |y: u32| {
+            let p = img.get_pixel(w / 2, y).0;
+            RGBColor(p[0], p[1], p[2])
+        };
+        assert_eq!(at(h - 1), scale.level_colour(0));
+        assert_eq!(at(0), scale.level_colour(SMOOTH_LEVELS - 1));
+        assert!(img
+            .pixels()
+            .all(|p| p.0[3] == 255 && p.0[..3] != [255, 255, 255]));
+    }
+
     #[test]
     fn colour_bar_labels_its_ends() {
         let scale = ColourScale::smooth(Axis::log10("S", 865.159, 4.7354e6));
