@@ -2,7 +2,7 @@
 //! the crate's measurement of each scheme's own matrices ([`crate::scheme::sweep::sweep`]).
 
 use super::chart::{
-    draw_colour_bar, draw_hemisphere, fmt_times_ten, frame, Axis, ColourScale, PolarGrid, FONT,
+    draw_colour_bar, draw_hemisphere, fmt_three_digits, frame, Axis, ColourScale, PolarGrid, FONT,
 };
 use super::{Fail, Figure};
 use crate::maps::WarpRule;
@@ -143,8 +143,8 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
             format!(
                 "{} {} to {}",
                 p.title.split(' ').next().unwrap_or(""),
-                fmt_times_ten(p.min),
-                fmt_times_ten(p.max)
+                fmt_three_digits(p.min),
+                fmt_three_digits(p.max)
             )
         })
         .collect();
@@ -155,7 +155,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         ),
         "The hemisphere seen from above in the azimuthal equidistant projection (the distance from the centre proportional to 90° − elevation, so that the horizon band, 0° to 30°, fills the outer third of the radius): overhead at the centre, light from behind the viewer on the left, from in front on the right, from the viewer's right at the bottom; rings every 10° of elevation up to 30°, then at 60°. The horizontal diameter is the vertical plane through the view direction: lights straight behind, overhead and straight in front.".to_string(),
         format!("One log₁₀ colour scale for panels (a)–(d), as in the paper. Range of S̄: {}.", summary.join("; ")),
-        format!("(e), not in the paper, on its own log₁₀ scale: LiSPSM's S̄ divided by face partitioning's at each direction, {} to {}: the paper's point, that face partitioning removes LiSPSM's error behind and in front of the viewer and near the horizon, while overhead both are Eq 12's 865 (ratio 1) and nowhere is face partitioning more than {:.2} times worse.", fmt_times_ten(ratio.min), fmt_times_ten(ratio.max), 1.0 / ratio.min),
+        format!("(e), not in the paper, on its own log₁₀ scale: LiSPSM's S̄ divided by face partitioning's at each direction, {} to {}: the paper's point, that face partitioning removes LiSPSM's error behind and in front of the viewer and near the horizon, while overhead both are Eq 12's 865 (ratio 1) and nowhere is face partitioning more than {:.2} times worse.", fmt_three_digits(ratio.min), fmt_three_digits(ratio.max), 1.0 / ratio.min),
     ];
     Ok(Fig7 {
         panels,
@@ -239,6 +239,23 @@ fn extent(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
 mod tests {
     use super::*;
     use std::collections::HashSet;
+
+    /// The caption gives each colour bar's range as the bar labels its ends (it said 2428 where
+    /// the (e) bar read 2430, issue 25): the first and last labels of the (e) bar and of the
+    /// shared bar appear in the caption, "… to …".
+    #[test]
+    fn fig7_caption_ranges_match_the_bar_labels() {
+        use super::super::chart::colour_bar_ticks;
+        let fig = fig7().map_err(|e| e.named("lloyd2006-fig7")).unwrap();
+        let caption = fig.caption.join(" ");
+        for scale in [&fig.ratio_scale, &fig.scale] {
+            let ticks = colour_bar_ticks(&scale.axis);
+            let lo = &ticks[0].1;
+            let hi = &ticks[ticks.len() - 1].1;
+            assert!(caption.contains(&format!(" {lo} to ")), "{lo}: {caption}");
+            assert!(caption.contains(&format!(" to {hi}")), "{hi}: {caption}");
+        }
+    }
 
     /// The plotted sweeps hit the paper's closed forms where the paper has them: LiSPSM overhead
     /// is Lloyd 2006 Eq 12, (f/n − 1)/(2 tan θ) = 999/(2 tan 30°) = 865.159; the unwarped map

@@ -2,7 +2,7 @@
 
 use super::super::canvas::Fine;
 use super::super::Fail;
-use super::axis::{Axis, Chart2d, Ticked};
+use super::axis::{fmt_times_ten, Axis, Chart2d, Ticked};
 use super::raster::Raster;
 use super::FONT;
 use plotters::coord::Shift;
@@ -405,8 +405,9 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
     let label = |text: &str, at: (f64, f64), pos: Pos| {
         area.draw(&Text::new(text.to_string(), to_px(at), style.pos(pos)))
     };
-    label("← behind", (-1.0, 0.97), Pos::new(HPos::Left, VPos::Top))?;
-    label("in front →", (1.0, 0.97), Pos::new(HPos::Right, VPos::Top))?;
+    // In the square's top corners, clear of the rim (at 0.97 they touched it).
+    label("← behind", (-1.0, 1.14), Pos::new(HPos::Left, VPos::Top))?;
+    label("in front →", (1.0, 1.14), Pos::new(HPos::Right, VPos::Top))?;
     label(
         "viewer's right",
         (0.0, -1.02),
@@ -449,6 +450,12 @@ fn three_digits(v: f64) -> f64 {
     }
     let p = 10f64.powf(v.abs().log10().floor() - 2.0);
     (v / p).round() * p
+}
+
+/// A value as a colour bar labels its ends: three significant digits, written as
+/// [`fmt_times_ten`] writes them (so that a caption's range agrees with its bar).
+pub(crate) fn fmt_three_digits(v: f64) -> String {
+    fmt_times_ten(three_digits(v))
 }
 
 /// The labelled ticks of a colour bar (axis space) with their labels: both ends of its range,
@@ -656,6 +663,61 @@ mod tests {
         let (el, az) = hemisphere_direction(x, y).unwrap();
         assert!((el - 30f64.to_radians()).abs() < 1e-12 && (az - 0.7).abs() < 1e-12);
         assert_eq!(hemisphere_direction(0.8, 0.7), None);
+    }
+
+    /// The direction labels "← behind" and "in front →" keep clear of the disk's rim (they
+    /// touched it, issue 25): every point of their text boxes (top at the SVG's y, 13 units
+    /// tall, as wide as the font measures) lies at least 3 units outside the horizon ring.
+    #[test]
+    fn hemisphere_direction_labels_clear_the_rim() {
+        let grid = PolarGrid {
+            elev_edges: vec![0.0, FRAC_PI_2],
+            az_edges: vec![0.0, std::f64::consts::TAU],
+            values: vec![Some(1.0)],
+        };
+        let scale = ColourScale::smooth(Axis::linear("v", 0.0, 2.0));
+        let mut widths = Vec::new();
+        let svg = draw_svg((240, 270), |area| {
+            draw_hemisphere(area, "t", &grid, &scale).unwrap();
+            let style = TextStyle::from((FONT, 13).into_font());
+            for t in ["← behind", "in front →"] {
+                widths.push(f64::from(area.estimate_text_size(t, &style).unwrap().0));
+            }
+        });
+        // The horizon: the widest polyline, its centre and radius.
+        let min = |v: &[f64]| v.iter().copied().fold(f64::INFINITY, f64::min);
+        let max = |v: &[f64]| v.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let (c, r) = svg
+            .lines()
+            .filter(|l| l.starts_with("<polyline"))
+            .map(|l| {
+                let at = l.find("points=\"").unwrap() + 8;
+                let (mut xs, mut ys) = (Vec::new(), Vec::new());
+                for p in l[at..at + l[at..].find('"').unwrap()].split_whitespace() {
+                    let (x, y) = p.split_once(',').unwrap();
+                    xs.push(x.parse::<f64>().unwrap());
+                    ys.push(y.parse::<f64>().unwrap());
+                }
+                let c = ((min(&xs) + max(&xs)) / 2.0, (min(&ys) + max(&ys)) / 2.0);
+                (c, (max(&ys) - min(&ys)) / 2.0)
+            })
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+            .unwrap();
+        for (t, w) in ["← behind", "in front →"].iter().zip(widths) {
+            let el = svg
+                .lines()
+                .find(|l| l.starts_with("<text") && visible(l) == *t)
+                .unwrap();
+            let (x, y) = (attr(el, "x").unwrap(), attr(el, "y").unwrap());
+            let x0 = if el.contains("text-anchor=\"end\"") {
+                x - w
+            } else {
+                x
+            };
+            let near = (c.0.clamp(x0, x0 + w), c.1.clamp(y, y + 13.0));
+            let d = (near.0 - c.0).hypot(near.1 - c.1);
+            assert!(d >= r + 3.0, "{t}: {d} from the centre, rim at {r}");
+        }
     }
 
     /// A hemisphere panel as the figures draw it (issue 25, lloyd2006-fig7 and G2), read back
