@@ -377,10 +377,12 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
                 width: s.width,
                 dash: s.dash,
                 marker: (!s.reference && (s.markers || colours > 1)).then_some(shape),
-                line: s
-                    .points
-                    .windows(2)
-                    .any(|w| w[0].1.is_finite() && w[1].1.is_finite()),
+                // A reference line always shows its line (it has no marker; with no points of
+                // its own, a key for lines drawn elsewhere, the sample was empty).
+                line: s.reference
+                    || s.points
+                        .windows(2)
+                        .any(|w| w[0].1.is_finite() && w[1].1.is_finite()),
             }),
             (None, _) => {}
         }
@@ -482,6 +484,32 @@ mod tests {
             2 * (MARKER_AT.len() + 1)
         );
         assert_eq!(polygons(&[PALETTE[0]]), 0);
+    }
+
+    /// A legend-only reference series (no points: the key for dashed optima drawn in other
+    /// colours, lloyd2006-fig10) shows its dashed line in the legend (it had an empty key):
+    /// its colour is stroked in the SVG although no data of it is drawn.
+    #[test]
+    fn a_reference_key_without_points_shows_its_line() {
+        super::super::super::ensure_font().unwrap();
+        let mut c = LineChart::new(
+            "t",
+            Axis::linear("x", 0.0, 1.0),
+            Axis::linear("y", 0.0, 1.0),
+        );
+        c.series.push(
+            Series::line("optimum", Vec::new(), RGBColor(90, 90, 90))
+                .dashed()
+                .reference(),
+        );
+        let mut svg = String::new();
+        {
+            let area =
+                super::super::super::svg::Svg::new(&mut svg, (400, 300), 1).into_drawing_area();
+            draw_line_chart(&area, &c).unwrap();
+            area.present().unwrap();
+        }
+        assert!(svg.contains("stroke=\"#5A5A5A\""), "{svg}");
     }
 
     #[test]
