@@ -62,10 +62,7 @@ fn section(view: &ViewFrustum, to: &impl Fn(DVec3) -> DVec2, z: f64) -> [DVec2; 
 
 fn panel(view: &ViewFrustum, light: DVec3, planes: &[f64], title: String) -> Result<Panel, Fail> {
     let ls = light_space(light, DVec3::NEG_Z)?;
-    let to = |p: DVec3| {
-        let l = ls.to_light(p);
-        DVec2::new(l.x, l.z)
-    };
+    let to = |p: DVec3| seen_from_light(ls.to_light(p));
     let sections: Vec<[DVec2; 4]> = planes.iter().map(|&z| section(view, &to, z)).collect();
     let maps = sections
         .windows(2)
@@ -90,13 +87,38 @@ fn panel(view: &ViewFrustum, light: DVec3, planes: &[f64], title: String) -> Res
     })
 }
 
+/// A light-space point as the light sees it: `(−x, z)`, right and up in the light's view.
+///
+/// Light space's `x = y × z` with `y` toward the light, so an observer at the light looking
+/// along `−y` with `z` up has `z × y = −x` on their right: drawing `x` to the right would show
+/// the mirror image (figure review 2). Every diagram "seen from the light" draws this.
+pub(super) fn seen_from_light(l: DVec3) -> DVec2 {
+    DVec2::new(-l.x, l.z)
+}
+
+/// The label of the horizontal axis of a diagram drawn by [`seen_from_light`].
+pub(super) const SEEN_X: &str = "light −x";
+
+/// Depths to 4 significant figures, trailing zeros dropped (31.62, 3.162, 1, 100).
+/// The light-space bounding box (min, max) of some cross-sections.
+fn bounds(sections: &[[DVec2; 4]]) -> (DVec2, DVec2) {
+    sections.iter().flatten().fold(
+        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+        |(lo, hi), &p| (lo.min(p), hi.max(p)),
+    )
+}
+
 fn fmt_planes(p: &[f64]) -> String {
     p.iter()
-        .map(|z| {
-            format!("{z:.3}")
-                .trim_end_matches('0')
-                .trim_end_matches('.')
-                .to_string()
+        .map(|&z| {
+            let digits = 3 - z.abs().max(1e-300).log10().floor().clamp(-20.0, 3.0) as i32;
+            let d = digits.max(0) as usize;
+            let s = format!("{z:.d$}");
+            if s.contains('.') {
+                s.trim_end_matches('0').trim_end_matches('.').to_string()
+            } else {
+                s
+            }
         })
         .collect::<Vec<_>>()
         .join(", ")
@@ -132,11 +154,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         "(a) perpendicular light".into(),
     )?;
     // (d): the two nearest partitions of (a), enlarged.
-    let near = &perpendicular.sections[..3];
-    let (lo, hi) = near.iter().flatten().fold(
-        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
-        |(lo, hi), &p| (lo.min(p), hi.max(p)),
-    );
+    let (lo, hi) = bounds(&perpendicular.sections[..3]);
     let mut zoom = panel(
         &view,
         overhead,
@@ -144,19 +162,33 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         "(d) detail of (a): z ≤ 10".into(),
     )?;
     zoom.window = Some((lo, hi));
-    let panels = vec![
-        perpendicular,
-        panel(&view, behind, ss.planes(), "(b) parallel light".into())?,
-        panel(
-            &view,
-            tilted,
-            ad.planes(),
-            "(c) Eq 19, not in the paper".into(),
-        )?,
-        zoom,
-    ];
+    let parallel = panel(&view, behind, ss.planes(), "(b) parallel light".into())?;
+    let eq19 = panel(
+        &view,
+        tilted,
+        ad.planes(),
+        "(c) Eq 19, not in the paper".into(),
+    )?;
+    // (e), (f): (b) and (c) near the eye, where their inner partitions are sub-pixel or their
+    // maps overlap in a tangle (figure review 2): the windows round the nearest three and four
+    // planes (z ≤ 10 and z ≤ 40.81).
+    let mut zoom_b = panel(
+        &view,
+        behind,
+        ss.planes(),
+        "(e) detail of (b): z ≤ 10".into(),
+    )?;
+    zoom_b.window = Some(bounds(&parallel.sections[..3]));
+    let mut zoom_c = panel(
+        &view,
+        tilted,
+        ad.planes(),
+        format!("(f) detail of (c): z ≤ {}", fmt_planes(&ad.planes()[3..4])),
+    )?;
+    zoom_c.window = Some(bounds(&eq19.sections[..4]));
+    let panels = vec![perpendicular, parallel, eq19, zoom, zoom_b, zoom_c];
     let caption = format!(
-        "Barroso & Celes 2007, Fig. 5: the view frustum seen by the light, with k = 4 z-partitions (n = 1, f = 100, φ = 30°). (a) Light perpendicular to the view direction (overhead) and (b) parallel to it (behind the viewer), with the self-similar partitions of Eq 5, as in the paper: split planes z = {}. (c) Not in the paper's figure: the adaptive partitions of Eq 19 for a light 45° above the view direction (from behind, travelling forward and down; α = {ADAPTIVE_RATIO}): z = {}. (d) Detail of (a) near the eye: the nearest two partitions enlarged. Solid: the frustum's edges and the split planes' cross-sections, each labelled with its depth z right of the panel at the height of its right end; dashed: each partition's orthographic map (its light-space bounding rectangle). Computed from analytic::partition::z_splits; the paper's figure is a sketch.",
+        "Barroso & Celes 2007, Fig. 5: the view frustum seen by the light, with k = 4 z-partitions (n = 1, f = 100, φ = 30°). (a) Light perpendicular to the view direction (overhead) and (b) parallel to it (behind the viewer), with the self-similar partitions of Eq 5, as in the paper: split planes z = {}. (c) Not in the paper's figure: the adaptive partitions of Eq 19 for a light 45° above the view direction (from behind, travelling forward and down; α = {ADAPTIVE_RATIO}): z = {}. (d), (e), (f) Details of (a), (b) and (c) near the eye: the nearest two partitions of (a) and (b) and the nearest three of (c) enlarged. Drawn as the light sees them (horizontal axis −x of light space, to the light's right). Split depths to 4 significant figures. Solid: the frustum's edges and the split planes' cross-sections, each labelled with its depth z right of the panel at the height of its right end; dashed: each partition's orthographic map (its light-space bounding rectangle). Computed from analytic::partition::z_splits; the paper's figure is a sketch.",
         fmt_planes(ss.planes()),
         fmt_planes(ad.planes())
     );
@@ -164,7 +196,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         title: "The view frustum seen from the light, with z-partitions",
         caption,
         panels,
-        size: (520, 760),
+        size: (520, 1120),
     })
 }
 
@@ -298,7 +330,7 @@ impl Figure for FromLight {
             let (xa, ya) = equal_aspect(
                 cell,
                 &p.title,
-                &Axis::linear("light x", lo.x, hi.x),
+                &Axis::linear(SEEN_X, lo.x, hi.x),
                 &Axis::linear("light z", lo.y, hi.y),
                 &style,
             )?;
@@ -521,5 +553,54 @@ mod tests {
         assert!(dims[0].1 < -0.5774 && dims[1].1 < -4.6188);
         let (lo, _) = p.window.unwrap();
         assert!(lo.y < dims[1].1 - 0.5);
+    }
+
+    /// The light's view is not mirrored (figure review 2): for a light behind, right of and
+    /// above the eye, travelling along (−1, −1, −1), an observer at the light looking along it
+    /// with the view direction −Z up has d × up ∝ (−1, −1, −1) × (1, 1, −2) = (3, −3, 0) on
+    /// their right, by hand. So the far section's corner (s, −s, −z) lies √2 s right of the
+    /// centre and (−s, s, −z) √2 s left (s = z tan θ); the old (x, z) drawing had them swapped.
+    #[test]
+    fn the_light_sees_the_eyes_right_on_its_right() {
+        let view = ViewFrustum::new(1.0, 10.0, 30f64.to_radians()).unwrap();
+        let p = panel(
+            &view,
+            DVec3::new(-1.0, -1.0, -1.0),
+            &[1.0, 10.0],
+            String::new(),
+        )
+        .map_err(|e| e.named("panel"))
+        .unwrap();
+        let s = 10.0 * 30f64.to_radians().tan();
+        let far = p.sections[1];
+        assert!((far[1].x - 2f64.sqrt() * s).abs() < 1e-9, "{far:?}");
+        assert!((far[3].x + 2f64.sqrt() * s).abs() < 1e-9, "{far:?}");
+    }
+
+    /// Barroso Fig 5's split depths to 4 significant figures (figure review 2): Eq 5's
+    /// 100^{i/4} = 3.162, 10, 31.62 and Eq 19's (the paper's f₁..f₃ by hand: 6.0405, 16.1297,
+    /// 40.8114); and (e), (f) enlarge (b) and (c) near the eye, to z ≤ 10 and z ≤ 40.81.
+    #[test]
+    fn barroso_split_labels_have_four_significant_figures() {
+        let b = barroso_fig5().map_err(|e| e.named("barroso-fig5")).unwrap();
+        assert_eq!(
+            b.panels[0].plane_labels,
+            ["1", "3.162", "10", "31.62", "100"]
+        );
+        assert_eq!(
+            b.panels[2].plane_labels,
+            ["1", "6.041", "16.13", "40.81", "100"]
+        );
+        assert_eq!(b.panels.len(), 6);
+        let t = 30f64.to_radians().tan();
+        let (lo, hi) = b.panels[4].window.unwrap();
+        assert!((hi.x - 10.0 * t).abs() < 1e-9 && (lo.y + 10.0 * t).abs() < 1e-9);
+        // (f): light z of the corner (z tan θ, z tan θ, −z) at z = 40.8114 is
+        // z (1 + tan θ)/√2 = 45.519 (light 45° up: light z = (Y + z)/√2).
+        let (_, hi) = b.panels[5].window.unwrap();
+        assert!(
+            (hi.y - 40.8114 * (1.0 + t) / 2f64.sqrt()).abs() < 1e-3,
+            "{hi}"
+        );
     }
 }

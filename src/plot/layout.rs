@@ -7,6 +7,7 @@
 use super::chart::{
     build_chart_styled, equal_aspect, frame, linspace, Axis, ChartStyle, FONT, PALETTE,
 };
+use super::from_light::{seen_from_light, SEEN_X};
 use super::warp_grid::minus;
 use super::{Fail, Figure};
 use crate::maps::atlas::Viewport;
@@ -42,7 +43,7 @@ pub(super) struct Cell {
     pub label: String,
     pub mx: f64,
     pub mz: f64,
-    /// Its face part's corners seen from the light (light-space x, z).
+    /// Its face part's corners seen from the light (light-space −x, z: [`seen_from_light`]).
     pub outline: Vec<DVec2>,
     /// Its map (eye → light clip).
     pub matrix: DMat4,
@@ -103,10 +104,7 @@ pub(super) fn fig8() -> Result<Fig8, Fail> {
         let outline = face
             .vertices(&view, p.near, p.far)
             .iter()
-            .map(|&c| {
-                let l = ls.to_light(c);
-                DVec2::new(l.x, l.z)
-            })
+            .map(|&c| seen_from_light(ls.to_light(c)))
             .collect();
         cells.push(Cell {
             viewport: *v,
@@ -129,12 +127,14 @@ pub(super) fn fig8() -> Result<Fig8, Fail> {
 }
 
 impl Fig8 {
-    /// The map of partition `i` on the light's view: light-space (x, z) ↦ its map's (u, v), a
-    /// 2D projective map (the map's u and v are constant along the light, so any light-space
-    /// height gives the same one; the eye's, 0, is used).
+    /// The map of partition `i` on the light's view: the light's (right, up) = light-space
+    /// (−x, z) of [`seen_from_light`] ↦ its map's (u, v), a 2D projective map (the map's u and
+    /// v are constant along the light, so any light-space height gives the same one; the eye's,
+    /// 0, is used).
     pub(super) fn light_to_map(&self, i: usize) -> DMat3 {
         let m = self.cells[i].matrix;
         let [x, _, z] = self.frame;
+        let x = -x;
         let col = |v: glam::DVec4| DVec3::new(v.x, v.y, v.w);
         DMat3::from_cols(
             col(m * x.extend(0.0)),
@@ -166,7 +166,7 @@ impl Figure for Fig8 {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let shown = &self.cells[self.shown];
         let caption = format!(
-            "Lloyd et al. 2005, Fig. 8, computed: face partitioning with k = {} z-partitions per face, LiSPSM-warped (n = 1, f = {FAR}, θ = 30°; light {}° above the horizon, {}° to the right of straight behind, so that the left, right, top and near faces are seen), from scheme::scheme and SchemeResult::atlas. (a) The partitions seen from the light (R: right, L: left, T: top, N: near face; 1 near, 2 far), coloured as in (c). (b) {}: its map's texel grid over it (every eighth of the map, blue; the outermost lines are the map's border): the warp's perspective makes the texels converge. (c) The {SIZE} × {SIZE} texture by Eq 6: the width is shared among the face pairs (left/right, bottom/top, near) by their largest M_x, each column's height among its partitions by M_z, so that the error after allocation is equal. Each rectangle gives its partition, M_x and M_z (unit resolutions), its share of the texture's width × height and the error after allocation (M_x and M_z over those shares): the z error is equal within each column, and the x error is equal across columns for each column's largest M_x (a column's partition of smaller M_x, here the right face's, is below it). The left and right faces differ in M_z, so their heights differ; the self-similar z-partitions of one face have equal M_z and equal heights. Unlike the paper, whose panels are sketches, (a) and (b) are drawn to scale in the light's view, (b) shows one partition in light space instead of each in a canonical space, and the texture's width, not its height, is shared by M_x (the paper splits its t direction by M_x first, then s by M_z: the same rule with the axes named the other way).",
+            "Lloyd et al. 2005, Fig. 8, computed: face partitioning with k = {} z-partitions per face, LiSPSM-warped (n = 1, f = {FAR}, θ = 30°; light {}° above the horizon, {}° to the right of straight behind, so that the left, right, top and near faces are seen), from scheme::scheme and SchemeResult::atlas. (a) The partitions seen from the light (R: right, L: left, T: top, N: near face; 1 near, 2 far), coloured as in (c). (b) {}: its map's texel grid over it (every eighth of the map, blue; the outermost lines are the map's border): the warp's perspective makes the texels converge. The map is larger than the part: its border is the bounding rectangle of the part's corners in the warped map's (u, v), and the part's edges do not run along u and v there. (a) and (b) are drawn as the light sees them (horizontal axis −x of light space, to the light's right). (c) The {SIZE} × {SIZE} texture by Eq 6: the width is shared among the face pairs (left/right, bottom/top, near) by their largest M_x, each column's height among its partitions by M_z, so that the error after allocation is equal. Each rectangle gives its partition, M_x and M_z (unit resolutions), its share of the texture's width × height and the error after allocation (M_x and M_z over those shares): the z error is equal within each column, and the x error is equal across columns for each column's largest M_x (a column's partition of smaller M_x, here the right face's, is below it). The left and right faces differ in M_z, so their heights differ; the self-similar z-partitions of one face have equal M_z and equal heights. Unlike the paper, whose panels are sketches, (a) and (b) are drawn to scale in the light's view, (b) shows one partition in light space instead of each in a canonical space, and the texture's width, not its height, is shared by M_x (the paper splits its t direction by M_x first, then s by M_z: the same rule with the axes named the other way).",
             self.k,
             LIGHT.0,
             LIGHT.1,
@@ -218,7 +218,7 @@ impl Fig8 {
         let (xa, ya) = equal_aspect(
             area,
             title,
-            &Axis::linear("light x", lo.x, hi.x),
+            &Axis::linear(SEEN_X, lo.x, hi.x),
             &Axis::linear("light z", lo.y, hi.y),
             style,
         )?;
@@ -306,7 +306,7 @@ impl Fig8 {
         let (xa, ya) = equal_aspect(
             area,
             &title,
-            &Axis::linear("light x", lo.x, hi.x),
+            &Axis::linear(SEEN_X, lo.x, hi.x),
             &Axis::linear("light z", lo.y, hi.y),
             style,
         )?;
@@ -504,7 +504,32 @@ mod tests {
         assert_eq!(widths, SIZE);
     }
 
-    /// Panel (b)'s map of light-space (x, z) to (u, v) is the partition's matrix: a point and
+    /// Panel (a) is not mirrored (figure review 2): the light is behind the viewer, 10° round
+    /// towards its right and 35° up, so an observer at the light faces roughly along the view
+    /// direction and sees the eye's right face (R1, R2) right of its left face (L1, L2), by
+    /// hand; the old (x, z) drawing put R left of L.
+    #[test]
+    fn the_right_face_is_on_the_lights_right() {
+        let fig = fig8().map_err(|e| e.named("lloyd2005-fig8")).unwrap();
+        let mean_x = |face: char| {
+            let xs: Vec<f64> = fig
+                .cells
+                .iter()
+                .filter(|c| c.tag.starts_with(face))
+                .flat_map(|c| c.outline.iter().map(|p| p.x))
+                .collect();
+            assert!(!xs.is_empty(), "no {face} cells");
+            xs.iter().sum::<f64>() / xs.len() as f64
+        };
+        assert!(
+            mean_x('R') > 0.0 && mean_x('L') < 0.0,
+            "{} {}",
+            mean_x('R'),
+            mean_x('L')
+        );
+    }
+
+    /// Panel (b)'s map of the light's view (−x, z) to (u, v) is the partition's matrix: a point and
     /// the same point moved along the light map to one (u, v) (computed with the matrix here),
     /// the map equals the matrix's at the part's corners, and the part lies inside the map.
     #[test]
@@ -523,7 +548,7 @@ mod tests {
             let along = clip(corner - 5.0 * y);
             let direct = clip(corner);
             assert!((along - direct).length() < 1e-9, "{along} vs {direct}");
-            let via = apply(&h, DVec2::new(x.dot(corner), z.dot(corner)));
+            let via = apply(&h, DVec2::new(-x.dot(corner), z.dot(corner)));
             assert!((via - direct).length() < 1e-9, "{via} vs {direct}");
             assert!(direct.abs().max_element() <= 1.0 + 1e-9);
         }

@@ -30,6 +30,7 @@ pub(super) fn fig4() -> Result<Charts, Fail> {
     for (i, xi) in [1.0, 0.5, 0.0, -0.5, -1.0].into_iter().enumerate() {
         let n = n_from_xi(alpha, xi)?;
         let label = match n.as_finite() {
+            Some(v) if v == v.round() => format!("n = {v} (ξ = {})", fmt_signed(xi)),
             Some(v) => format!("n = {v:.3} (ξ = {})", fmt_signed(xi)),
             None => format!("n = ∞ (ξ = {})", fmt_signed(xi)),
         };
@@ -88,7 +89,15 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
             // Labelled directly (a legend covered the dashed curves), preferably the solid ones
             // near k = 10 and the dashed ones near k = 6; each label goes where it covers no
             // other curve (chart::place_label).
-            let at = if dashed { 6.0 } else { 10.0 };
+            // α = 100, ξ = 0 at k = 5 (at k = 10 its box covered its own line and marker) and
+            // α = 10, |ξ| = 1 at k = 7, away from k ≤ 3 where every curve meets (figure review
+            // 2: there its label named no line).
+            let at = match (i, dashed) {
+                (1, false) => 5.0,
+                (0, true) => 7.0,
+                (_, true) => 6.0,
+                (_, false) => 10.0,
+            };
             let s = Series::line(label, pts, PALETTE[i])
                 .with_markers()
                 .direct_at(at);
@@ -99,7 +108,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     let gain = |xi: f64, k: usize| -> Result<f64, crate::Error> { Ok(1.0 / ratio(100.0, k, xi)?) };
     let (g0_2, g0_10, g1_2) = (gain(0.0, 2)?, gain(0.0, 10)?, gain(1.0, 2)?);
     Ok(Charts {
-        size: (520, 520),
+        size: (520, 700),
         title: "Maximum error against the number of face subdivisions".into(),
         caption: vec![
             "Lloyd et al. 2005, Fig. 7, from Eq 7 (analytic::subdivided::subdivided_max_error): self-similar subdivisions z_i = α^{i/k}, texels shared by Eq 6.".into(),
@@ -174,5 +183,38 @@ mod tests {
                 assert!(a.0 != b.0 || (a.1 - b.1).abs() > 0.2, "{a:?} {b:?}");
             }
         }
+    }
+
+    /// Direct labels at the points chosen for them (figure review 2): α = 100, ξ = 0 at k = 5
+    /// (at k = 10 its box covered its own line) and α = 10, |ξ| = 1 at k = 7 (at k = 6 it was
+    /// placed at k ≈ 2, where every curve meets), each with at least 0.19 decade free above its
+    /// line (Eq 7: 0.23 and 0.20; the chart is 700 units tall so that a label fits there); and
+    /// Fig 4's PSM curve is "n = 1" (ξ = 1 gives n = 1 exactly, Eq 4), not "n = 1.000".
+    #[test]
+    fn labels_name_their_own_lines() {
+        let fig = fig7().map_err(|e| e.named("lloyd2005-fig7")).unwrap();
+        let series = &fig.charts[0].series;
+        let find = |l: &str| {
+            series
+                .iter()
+                .find(|s| s.label.as_deref() == Some(l))
+                .unwrap()
+        };
+        for (label, k) in [("α = 100, ξ = 0", 5.0), ("α = 10, |ξ| = 1", 7.0)] {
+            let s = find(label);
+            assert_eq!(s.direct_at, Some(k), "{label}");
+            let y = s.points.iter().find(|p| p.0 == k).unwrap().1.log10();
+            for o in series.iter().filter(|o| o.label != s.label) {
+                let yo = o.points.iter().find(|p| p.0 == k).unwrap().1.log10();
+                assert!(yo < y || yo > y + 0.19, "{label} near {:?}", o.label);
+            }
+        }
+        let f4 = fig4().map_err(|e| e.named("lloyd2005-fig4")).unwrap();
+        let labels: Vec<&str> = f4.charts[0]
+            .series
+            .iter()
+            .filter_map(|s| s.label.as_deref())
+            .collect();
+        assert!(labels.contains(&"n = 1 (ξ = 1)"), "{labels:?}");
     }
 }

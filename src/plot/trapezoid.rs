@@ -5,6 +5,7 @@
 //! the share of the map each leaves unused (the paper's *wastage*).
 
 use super::chart::{build_chart_styled, equal_aspect, frame, Axis, ChartStyle, FONT, PALETTE};
+use super::from_light::{seen_from_light, SEEN_X};
 use super::{Fail, Figure, UNIT_SQUARE};
 use crate::maps::tsm::{tsm, TsmOptions, TsmSearch};
 use crate::ViewFrustum;
@@ -34,7 +35,8 @@ const EDGES: [(usize, usize); 12] = [
 ];
 
 pub(super) struct Fig3 {
-    /// Light-space (x, z) of the frustum's and the focus region's corners.
+    /// The frustum's and the focus region's corners as the light sees them (light-space −x, z:
+    /// [`seen_from_light`]); the trapezoid and the box likewise, and N_T maps these.
     pub eye: Vec<DVec2>,
     pub focus: Vec<DVec2>,
     pub trapezoid: [DVec2; 4],
@@ -178,10 +180,11 @@ pub(super) fn fig3_at(el_deg: f64, az_deg: f64) -> Result<Fig3, Fail> {
             search: TsmSearch::EightyPercent,
         },
     )?;
-    let to_xz = |p: DVec3| {
-        let l = map.light_space.to_light(p);
-        DVec2::new(l.x, l.z)
-    };
+    // As the light sees it (−x, z): the trapezoid and N_T, built in light-space (x, z), are
+    // carried over by the mirror image.
+    let to_xz = |p: DVec3| seen_from_light(map.light_space.to_light(p));
+    let mirror = DMat3::from_diagonal(DVec3::new(-1.0, 1.0, 1.0));
+    let trapezoid = map.trapezoid.corners.map(|p| DVec2::new(-p.x, p.y));
     let eye: Vec<DVec2> = view.corners().iter().map(|&c| to_xz(c)).collect();
     let focus_view = ViewFrustum::new(view.near(), view.near() + FOCUS, view.half_fov())?;
     let focus: Vec<DVec2> = focus_view.corners().iter().map(|&c| to_xz(c)).collect();
@@ -203,9 +206,9 @@ pub(super) fn fig3_at(el_deg: f64, az_deg: f64) -> Result<Fig3, Fail> {
         wins: None,
         eye,
         focus,
-        trapezoid: map.trapezoid.corners,
+        trapezoid,
         bbox: (lo, hi),
-        n_t: map.n_t,
+        n_t: map.n_t * mirror,
         covered_t,
         covered_b,
     })
@@ -304,7 +307,7 @@ fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), 
 
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
-        (520, 1460)
+        (520, 1140)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -324,10 +327,13 @@ impl Figure for Fig3 {
             "Trapezoidal approximation against the smallest bounding box",
             &[caption.as_str()],
         )?;
-        let (top, rest) = body.split_vertically(body.dim_in_pixel().1 * 2 / 5);
+        // (b) and (c), both square, side by side under (a) (figure review 2: stacked, the
+        // figure was a 1 : 2.8 strip).
+        let (bw, bh) = body.dim_in_pixel();
+        let (top, rest) = body.split_vertically(bh - LEGEND_H - bw / 2 - 10);
         // The legend in a strip of its own under (a), where it covers nothing.
         let (strip, rest) = rest.split_vertically(LEGEND_H);
-        let panels = rest.split_evenly((2, 1));
+        let panels = rest.split_evenly((1, 2));
         let style = ChartStyle::default();
         // (a) Light space, equal aspect.
         let pts: Vec<DVec2> = self
@@ -348,7 +354,7 @@ impl Figure for Fig3 {
         let (xa, ya) = equal_aspect(
             &top,
             title,
-            &Axis::linear("light x", lo.x - pad, hi.x + pad),
+            &Axis::linear(SEEN_X, lo.x - pad, hi.x + pad),
             &Axis::linear("light z (T's axis)", lo.y - pad, hi.y + pad),
             &style,
         )?;
@@ -599,5 +605,24 @@ mod tests {
         assert!((area(&sq) - 1.0).abs() < 1e-15);
         assert!(fig.covered_t > 0.0 && fig.covered_t <= 1.0 + 1e-9);
         assert!(fig.covered_b > 0.0 && fig.covered_b <= 1.0 + 1e-9);
+    }
+
+    /// (a) is drawn as the light sees it, not mirrored (figure review 2): for the light 80° up
+    /// and 70° round to the right, an observer at it looking along d with −Z up has d × up =
+    /// (0.98655, −0.16346, 0) on their right (by hand, numpy), so the far corner (s, −s, −f),
+    /// s = f tan 30° = 57.735, lies 57.735 (0.98655 + 0.16346) = 66.396 to the right and
+    /// (−s, s, −f) as far to the left; the old drawing had the signs swapped. N_T still maps the
+    /// hull inside the map square.
+    #[test]
+    fn panel_a_is_not_mirrored() {
+        let f = fig3_at(80.0, 70.0)
+            .map_err(|e| e.named("martin-tan-fig3"))
+            .unwrap();
+        assert!((f.eye[5].x - 66.396).abs() < 1e-3, "{}", f.eye[5]);
+        assert!((f.eye[7].x + 66.396).abs() < 1e-3, "{}", f.eye[7]);
+        for &p in &hull(&f.eye) {
+            let q = through(&f.n_t, p);
+            assert!(q.abs().max_element() <= 1.0 + 1e-9, "{q}");
+        }
     }
 }

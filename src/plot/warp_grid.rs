@@ -149,7 +149,7 @@ impl Figure for Fig4 {
         let pw = (bw - label_w) / count;
         let (n, f, t) = (self.view.near(), self.view.far(), self.view.tan_half_fov());
         let depth = Axis::linear("depth z", 0.0, f * 1.05);
-        let across = Axis::linear("x", -f * t * 1.1, f * t * 1.1);
+        let across = Axis::linear("eye x", -f * t * 1.1, f * t * 1.1);
         let u = Axis::linear("map u", -1.1, 1.1);
         let v = Axis::linear("map v", -1.1, 1.1);
         // Ticks every 5 eye-space units and every map unit: the panels are narrow.
