@@ -120,7 +120,11 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
         c.x.clone(),
         Axis::linear("M_z (unit resolutions)", 0.0, 1.05 * top_z),
     );
-    v.series.push(Series::line("M_z", m_z, PALETTE[1]));
+    // No legend: the panel's title names its one curve.
+    v.series.push(Series {
+        label: None,
+        ..Series::line("M_z", m_z, PALETTE[1])
+    });
     v.legend = SeriesLabelPosition::UpperMiddle;
     c.title = "(a) as they are, logarithmic".into();
     c.series.push(
@@ -250,6 +254,10 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
         (SchemeLight::Behind, "behind"),
     ] {
         for (scheme, name, colour) in schemes {
+            if light == SchemeLight::Behind && scheme == Scheme::ZpW {
+                // Equal to ZP behind (a square frustum cannot be warped): one line, one entry.
+                continue;
+            }
             let mut pts = Vec::new();
             for k in 1..=40usize {
                 let maps = shadow_map_count(scheme, SchemeLight::Behind, k)?;
@@ -276,23 +284,23 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
                 }
             } else {
                 // Every count: a line, with a few markers along it (not one per count).
+                let name = match light {
+                    SchemeLight::Behind => "ZP = ZP+W",
+                    SchemeLight::Overhead => name,
+                };
                 Series::line(format!("{name}, light {light_name}"), pts, PALETTE[colour])
             };
-            let mut s = match light {
+            c.series.push(match light {
                 SchemeLight::Overhead => s,
                 SchemeLight::Behind => s.dashed(),
-            };
-            if light == SchemeLight::Behind && scheme == Scheme::Zp {
-                // ZP+W equals ZP behind and is drawn over it: keep ZP visible around it.
-                s.width = 5;
-            }
-            c.series.push(s);
+            });
         }
     }
     // (b): the light-behind crossover enlarged, ZP (equal to ZP+W there) against FP+ZP+W.
     let mut zoom = LineChart::new(
         "(b) light behind, enlarged around the crossover",
-        Axis::integer("number of shadow maps", 11.0, 23.0),
+        // Padded by half a count, so that the markers at 11 and 23 maps are whole.
+        Axis::integer("number of shadow maps", 10.5, 23.5),
         Axis::linear("S̄ (texels per image pixel)", 25.0, 65.0),
     );
     zoom.legend = SeriesLabelPosition::UpperRight;
@@ -315,18 +323,28 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
         } else {
             pts
         };
-        let s = Series::line(name, pts, PALETTE[colour])
-            .dashed()
-            .with_markers();
-        zoom.series.push(if scheme == Scheme::FpZpW {
-            Series { width: 3, ..s }
+        if scheme == Scheme::FpZpW {
+            let s = Series::line(name, pts, PALETTE[colour])
+                .dashed()
+                .with_markers();
+            zoom.series.push(Series { width: 3, ..s });
         } else {
-            s
-        });
+            // ZP without markers (at 17 maps its marker lay under FP+ZP+W's, 38.32 against
+            // 37.99): the line unlabelled, its legend key a line sample; the values are written.
+            zoom.series.push(Series {
+                label: None,
+                ..Series::line(name, pts, PALETTE[colour]).dashed()
+            });
+            zoom.series.push(
+                Series::line(name, Vec::new(), PALETTE[colour])
+                    .dashed()
+                    .reference(),
+            );
+        }
     }
     zoom.notes.push(Note {
         at: (11.4, 33.0),
-        text: "FP+ZP+W below ZP from 17 maps on".into(),
+        text: "from 17 maps FP+ZP+W is lower: 37.99 against ZP's 38.32".into(),
         colour: PALETTE[6],
     });
     c.title = "(a) overhead (solid) and behind (dashed)".into();
@@ -643,19 +661,60 @@ mod tests {
         let r = 1000f64;
         let zp = |j: f64| j * r.powf(2.0 / j);
         let fp = |k: f64| 4.0 * k * (r.powf(1.0 / k) - 1.0) / 2.0 + 1.0;
-        // Series 3 is ZP behind, 5 FP+ZP+W behind.
+        // Series 3 is ZP (= ZP+W) behind, 4 FP+ZP+W behind.
         for (j, k) in [(13.0, 3.0), (17.0, 4.0)] {
             assert!((at(3, j) - zp(j)).abs() < 1e-9 * zp(j), "ZP at {j}");
-            assert!((at(5, j) - fp(k)).abs() < 1e-9 * fp(k), "FP at {j}");
+            assert!((at(4, j) - fp(k)).abs() < 1e-9 * fp(k), "FP at {j}");
         }
-        assert!(at(3, 13.0) < at(5, 13.0));
-        assert!(at(3, 17.0) > at(5, 17.0));
+        assert!(at(3, 13.0) < at(4, 13.0));
+        assert!(at(3, 17.0) > at(4, 17.0));
         assert!((fp(4.0) - 37.987).abs() < 0.001 && (zp(17.0) - 38.317).abs() < 0.001);
         // Every ZP curve runs to 40 maps, FP+ZP+W to 4 · 9 + 1 = 37.
-        for s in [0, 1, 3, 4] {
+        for s in [0, 1, 3] {
             assert_eq!(series[s].points.last().unwrap().0, 40.0, "series {s}");
         }
-        assert_eq!(series[5].points.last().unwrap().0, 37.0);
+        assert_eq!(series[4].points.last().unwrap().0, 37.0);
+    }
+
+    /// Fig 6 (b) has no legend (its one entry, "M_z", repeated the panel's title): no series of
+    /// it is labelled.
+    #[test]
+    fn fig6_linear_panel_has_no_legend() {
+        let fig = fig6().map_err(|e| e.named("lloyd2006-fig6")).unwrap();
+        let b = &fig.charts[1];
+        assert!(b.title.contains("M_z"));
+        assert!(b.series.iter().all(|s| s.label.is_none()), "{:?}", b.series);
+    }
+
+    /// Fig 12 (issue 25 review): the coincident behind lines ZP and ZP+W are one legend entry,
+    /// "ZP = ZP+W, light behind", drawn at the normal width in (a) (a second entry with a width-5
+    /// line had an oversized marker); in (b) the ZP line carries no marker (at 17 maps it lay
+    /// under FP+ZP+W's: 38.32 against 37.99, Eq 20 and 21 by hand in the test above), both
+    /// values are written, and the x range is padded so that the edge markers are whole.
+    #[test]
+    fn fig12_one_entry_for_the_coincident_lines_and_a_visible_crossover() {
+        let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
+        for chart in &fig.charts {
+            let behind: Vec<&str> = chart
+                .series
+                .iter()
+                .filter_map(|s| s.label.as_deref())
+                .filter(|l| l.starts_with("ZP") && l.contains("behind"))
+                .collect();
+            assert_eq!(behind, ["ZP = ZP+W, light behind"], "{}", chart.title);
+            assert!(chart.series.iter().all(|s| s.width <= 3), "{}", chart.title);
+        }
+        let zoom = &fig.charts[1];
+        for s in &zoom.series {
+            let zp_line = s.colour == PALETTE[0] && !s.points.is_empty();
+            assert!(!(zp_line && (s.markers || s.label.is_some())), "{s:?}");
+        }
+        let notes: String = zoom.notes.iter().map(|n| n.text.as_str()).collect();
+        assert!(
+            notes.contains("37.99") && notes.contains("38.32"),
+            "{notes}"
+        );
+        assert!(zoom.x.min <= 10.5 && zoom.x.max >= 23.5);
     }
 
     /// Fig 12 (b) (issue 25: an inset around the 17-map crossover): its window holds 13 and 17
@@ -676,8 +735,9 @@ mod tests {
                 .1
         };
         assert!((at(0, 17.0) - 17.0 * r.powf(2.0 / 17.0)).abs() < 1e-9);
-        assert!((at(1, 17.0) - (8.0 * (r.powf(0.25) - 1.0) + 1.0)).abs() < 1e-9);
-        assert!(at(0, 13.0) < at(1, 13.0) && at(0, 17.0) > at(1, 17.0));
+        // Series 0 is ZP's line, 1 its legend key, 2 FP+ZP+W.
+        assert!((at(2, 17.0) - (8.0 * (r.powf(0.25) - 1.0) + 1.0)).abs() < 1e-9);
+        assert!(at(0, 13.0) < at(2, 13.0) && at(0, 17.0) > at(2, 17.0));
         for s in &zoom.series {
             for &(_, v) in s.points.iter().filter(|p| p.1.is_finite()) {
                 assert!(v > zoom.y.min && v < zoom.y.max, "{v} outside the window");
