@@ -28,6 +28,9 @@ pub(super) const SCHEMES: [(&str, Scheme, WarpRule, Partition); 3] = [
     ("FP+ZP+W", Scheme::FpZpW, WarpRule::Lispsm, Partition::Faces),
 ];
 
+/// The grey of the paper's band 2–3 in the ratio panel.
+const BAND: RGBColor = RGBColor(225, 225, 225);
+
 pub(super) fn worst_case() -> Result<Charts, Fail> {
     let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians())?;
     let grid = SweepGrid::new(ELEVATIONS, AZIMUTHS)?;
@@ -40,7 +43,7 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
     let mut ratio = LineChart::new(
         "worst case / light behind",
         k_axis,
-        Axis::log10("ratio (log scale)", 0.5, 20.0),
+        Axis::log10("ratio (log scale)", 0.8, 6.0),
     );
     abs.legend = SeriesLabelPosition::UpperRight;
     ratio.legend = SeriesLabelPosition::UpperRight;
@@ -75,32 +78,38 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
         let mut b = Series::line(String::new(), behind, PALETTE[c]).dashed();
         b.label = behind_label;
         if scheme == Scheme::Zp {
-            // Under ZP+W's equal curve: wider, so that it shows at its edges.
-            b.width = 5;
+            // Equal to ZP+W's curve behind and drawn as it is (ZP+W's colour, width and
+            // dashes, under it): what shows is what the key "ZP and ZP+W, behind" shows.
+            b.colour = PALETTE[1];
         }
         abs.series.push(b);
         ratio
             .series
             .push(Series::line(name.to_string(), r, PALETTE[c]).with_markers());
     }
-    ratio.bands.push((2.0, 3.0, RGBColor(225, 225, 225)));
-    for (v, label) in [(2.0, "the paper's 2–3× (shaded)"), (3.0, "")] {
-        let mut s = Series::line(label, vec![(1.0, v), (8.0, v)], PALETTE[6])
-            .dotted()
-            .reference();
-        if label.is_empty() {
-            s.label = None;
-        }
-        s.width = 1;
-        ratio.series.push(s);
+    ratio.bands.push((2.0, 3.0, BAND));
+    // The band's edges, dotted in black over the data (ZP's ratio, 1.998, lies on the lower
+    // edge), unlabelled; the key is a swatch of the band's grey (a wide line sample).
+    for v in [2.0, 3.0] {
+        ratio.series.push(Series {
+            label: None,
+            width: 1,
+            ..Series::line("", vec![(1.0, v), (8.0, v)], RGBColor(0, 0, 0))
+                .dotted()
+                .reference()
+        });
     }
+    ratio.series.push(Series {
+        width: 10,
+        ..Series::line("the paper's 2–3× (shaded)", Vec::new(), BAND).reference()
+    });
     Ok(Charts {
         size: (520, 860),
         title: "Worst case over all light directions against the light-behind closed form".into(),
         caption: vec![
             "Lloyd et al. 2006, §5.3 (no figure in the paper; its claim: the worst S̄ over all light directions is within 2–3 times the light-behind value). f/n = 1000, θ = 30°.".into(),
             format!(
-                "Worst case measured by scheme::sweep on each scheme's own matrices (ZP: unwarped log partitions; ZP+W: LiSPSM-warped; FP+ZP+W: faces, warped) over the {} light directions of lloyd2006-fig7 (every {}° of elevation and {}° of azimuth; ZP+W at k = 1 is Fig 7's LiSPSM panel, with the same maximum); behind from Eq 20, 21. Worst case / behind: {}; a ratio outside the shaded band (2 to 3) disagrees with the paper's claim. Behind, ZP+W equals ZP (one dashed curve, ZP's wider under it) and FP+ZP+W's worst case is its value behind (one curve).",
+                "Worst case measured by scheme::sweep on each scheme's own matrices (ZP: unwarped log partitions; ZP+W: LiSPSM-warped; FP+ZP+W: faces, warped) over the {} light directions of lloyd2006-fig7 (every {}° of elevation and {}° of azimuth; ZP+W at k = 1 is Fig 7's LiSPSM panel, with the same maximum); behind from Eq 20, 21. Worst case / behind: {}; a ratio outside the shaded band (2 to 3) disagrees with the paper's claim. Behind, ZP+W equals ZP (one dashed curve) and FP+ZP+W's worst case is its value behind (one curve).",
                 ELEVATIONS * AZIMUTHS,
                 90 / (ELEVATIONS - 1),
                 360 / AZIMUTHS,
@@ -175,6 +184,51 @@ mod tests {
         let band = &fig.charts[1].bands;
         assert_eq!(band.len(), 1);
         assert_eq!((band[0].0, band[0].1), (2.0, 3.0));
+    }
+
+    /// The review's items (issue 25): the ratio panel's range holds its data without a mostly
+    /// empty decade (0.8 to 6, every ratio inside); the band's key is a swatch (a wide sample in
+    /// the band's own grey) and its edges are drawn after the data in a colour no data line
+    /// has; every dashed behind curve of the upper panel is drawn as its one key shows it.
+    #[test]
+    fn ratio_panel_fits_and_keys_match_the_drawing() {
+        let fig = worst_case()
+            .map_err(|e| e.named("lloyd2006-worst-case"))
+            .unwrap();
+        let (abs, ratio) = (&fig.charts[0], &fig.charts[1]);
+        assert!(ratio.y.min >= 0.8 && ratio.y.max <= 6.0, "{:?}", ratio.y);
+        let data: Vec<&Series> = ratio.series.iter().filter(|s| !s.reference).collect();
+        for s in &data {
+            for p in &s.points {
+                assert!(p.1 > ratio.y.min && p.1 < ratio.y.max, "{p:?}");
+            }
+        }
+        let band = ratio.bands[0].2;
+        let key = ratio
+            .series
+            .iter()
+            .find(|s| s.label.as_deref() == Some("the paper's 2–3× (shaded)"))
+            .unwrap();
+        assert!(key.colour == band && key.width >= 8 && key.points.is_empty());
+        let last_data = ratio.series.iter().rposition(|s| !s.reference).unwrap();
+        for (i, s) in ratio.series.iter().enumerate() {
+            if s.reference && !s.points.is_empty() {
+                assert!(i > last_data && s.label.is_none());
+                assert!(data.iter().all(|d| d.colour != s.colour) && s.colour != band);
+            }
+        }
+        let key = abs
+            .series
+            .iter()
+            .find(|s| s.label.as_deref() == Some("ZP and ZP+W, behind (Eq 20)"))
+            .unwrap();
+        // Series 1 is ZP behind, equal to ZP+W's (the key's) curve: drawn as the key shows
+        // (it was a wider blue line under the orange dashes).
+        let zp = &abs.series[1];
+        assert_eq!(
+            (zp.colour, zp.width, zp.dash),
+            (key.colour, key.width, key.dash)
+        );
     }
 
     /// The caption never prints a degenerate range "X to X" (issue 25: "ZP 1.949 to 1.949",
