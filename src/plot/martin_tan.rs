@@ -103,11 +103,18 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         ),
     );
     profile.legend = SeriesLabelPosition::LowerMiddle;
+    // The 80 % rule jumps back to the dueling-frusta value exactly behind and in front (0° and
+    // 180°, on the plot's border): those two points marked, unjoined and unlabelled.
+    let (first, last) = (eighty[0], eighty[eighty.len() - 1]);
     profile.series.push(Series::line(
         format!("80 % rule, δ = {FOCUS}"),
         eighty,
         PALETTE[0],
     ));
+    profile.series.push(Series {
+        label: None,
+        ..Series::line("", vec![first, (90.0, f64::NAN), last], PALETTE[0]).with_markers()
+    });
     profile
         .series
         .push(Series::line("iterative variant, 1024 lines", iterative, PALETTE[1]).dashed());
@@ -119,7 +126,7 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         profile,
         caption: vec![
             format!("Martin & Tan 2004, Fig. 6, measured: the area the focus region (the eye frustum from n to n + δ, δ = {FOCUS}) covers in the trapezoidal map (maps::tsm::tsm, TsmMap::focus_area),"),
-            "for every light direction above the viewer (top, azimuthal equidistant: overhead at the centre, the horizon at the rim, behind on the left, in front on the right; a logarithmic colour scale over the values found, its ends labelled) and in the vertical plane (bottom, logarithmic, so that the 80 % rule's jump where the light leaves the view's cone shows). n = 1, f = 100, θ = 30°.".to_string(),
+            "for every light direction above the viewer (top, azimuthal equidistant: overhead at the centre, the horizon at the rim, behind on the left, in front on the right; a logarithmic colour scale over the values found, its ends labelled) and in the vertical plane (bottom, logarithmic, so that the 80 % rule's jump where the light leaves the view's cone shows). n = 1, f = 100, θ = 30°. Unlike the paper, which plots the area as a 3D surface over one angle, this shows the whole hemisphere of light directions and a profile in the vertical plane; the markers at 0° and 180° are the 80 % rule's values exactly behind and in front.".to_string(),
         ],
     })
 }
@@ -165,6 +172,30 @@ mod tests {
     /// Light exactly behind or in front: the frustum looks square and the map is its bounding
     /// rectangle, the far face (side 2 f tan θ); the focus region is seen as its own far face at
     /// depth n + δ, so its share of the map is ((n + δ)/f)² = (11/100)² = 0.0121 by hand.
+    /// The caption says how the figure differs from the paper (issue 25), and the 80 % rule's
+    /// jumps at exactly 0° and 180° are marked: an unlabelled marker series at those two angles
+    /// with the rule's values there, (11/100)² behind (the dueling-frusta share, by hand).
+    #[test]
+    fn caption_states_the_difference_and_the_jumps_are_marked() {
+        let fig = fig6().map_err(|e| e.named("martin-tan-fig6")).unwrap();
+        assert!(fig.caption.join(" ").contains("Unlike the paper"));
+        let marks = fig
+            .profile
+            .series
+            .iter()
+            .find(|s| s.markers && s.label.is_none())
+            .expect("a marker series");
+        let finite: Vec<(f64, f64)> = marks
+            .points
+            .iter()
+            .copied()
+            .filter(|p| p.1.is_finite())
+            .collect();
+        assert_eq!(finite.len(), 2);
+        assert_eq!((finite[0].0, finite[1].0), (0.0, 180.0));
+        assert!((finite[0].1 - 0.0121).abs() < 1e-9, "{finite:?}");
+    }
+
     #[test]
     fn dueling_frusta_area_by_hand() {
         let fig = fig6().map_err(|e| e.named("martin-tan-fig6")).unwrap();

@@ -289,7 +289,8 @@ impl Figure for Fig3 {
         let pw = (w - ROW_LABEL - 6 * GAP - 2 * BLOCK_GAP) / 9;
         let ph = (f64::from(pw) * PANEL_RATIO).round() as u32;
         let block_w = 3 * pw + 2 * GAP;
-        let z = Axis::every("z (eye depth)", -5.0, 105.0, 0.0, 50.0);
+        // Ticks at 0 and 100 only: "50" and "100" collided under a panel.
+        let z = Axis::every("z (eye depth)", -5.0, 105.0, 0.0, 100.0);
         // No tick inside the range: the first would be at 500.
         let blank = Axis::every("", -5.0, 105.0, 500.0, 1000.0);
         let half = 0.5 * (z.max - z.min) * f64::from(ph) / f64::from(pw);
@@ -405,6 +406,26 @@ mod tests {
         };
         assert_eq!(at(0), scale.level_colour(0));
         assert_eq!(at(w - 1), scale.level_colour(SMOOTH_LEVELS - 1));
+    }
+
+    /// The z ticks under each block's first column are 0 and 100 only ("50" and "100" were
+    /// about a unit apart and collided): each block's z axis is labelled "0", "100" only.
+    #[test]
+    fn z_ticks_are_zero_and_a_hundred() {
+        use super::super::chart::read_svg::{draw_svg, texts};
+        let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
+        let svg = draw_svg(SIZE, |area| fig.draw(area).unwrap());
+        let labels: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
+        // Each block's z axis: its description, then its tick labels.
+        let mut blocks = 0;
+        for (i, t) in labels.iter().enumerate() {
+            if t == "z (eye depth)" {
+                assert_eq!(labels[i + 1..i + 3], ["0", "100"], "{labels:?}");
+                assert_ne!(labels[i + 3], "100", "{labels:?}");
+                blocks += 1;
+            }
+        }
+        assert_eq!(blocks, 3);
     }
 
     #[test]
