@@ -295,12 +295,12 @@ fn svg_labels_are_one_text_each_with_tspan_subscripts_and_bars() {
 #[test]
 fn heat_maps_are_one_embedded_image_per_panel() {
     let dir = out_dir("figures-svg-heat");
-    // (figure, heat-map panels)
+    // (figure, heat-map panels and colour bars: each bar is one image too, no seams)
     let heat = [
-        // (a)–(d) and the ratio panel (e).
-        ("lloyd2006-fig7", 5),
-        ("zhang-fig3", 27),
-        ("martin-tan-fig6", 1),
+        // (a)–(d) and the ratio panel (e), their two bars.
+        ("lloyd2006-fig7", 5 + 2),
+        ("zhang-fig3", 27 + 3),
+        ("martin-tan-fig6", 1 + 1),
     ];
     let names: Vec<&str> = heat.iter().map(|(n, _)| *n).collect();
     render_all(&dir, Format::Svg, &names, |_| {}).unwrap();

@@ -635,8 +635,9 @@ mod tests {
         assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
         assert!(png.len() > 20_000, "PNG of {} bytes", png.len());
         let svg = std::fs::read_to_string(&files[1]).unwrap();
-        // The grid and the hemisphere heat maps are one embedded image each.
-        assert!(svg.contains("<svg") && svg.matches("<image ").count() == 2);
+        // The grid and the hemisphere heat maps are one embedded image each, and so is the
+        // colour bar.
+        assert!(svg.contains("<svg") && svg.matches("<image ").count() == 3);
         assert!(svg.contains("Self-test of the drawing helpers"));
     }
 
