@@ -10,6 +10,7 @@
 
 mod aspect;
 mod axis;
+mod bar;
 mod fine;
 mod heat;
 mod label;
@@ -22,6 +23,7 @@ pub(crate) mod read_svg;
 
 pub(crate) use aspect::*;
 pub(crate) use axis::*;
+pub(crate) use bar::*;
 pub(crate) use heat::*;
 pub(crate) use label::*;
 pub(crate) use line::*;
