@@ -1,6 +1,6 @@
-//! Figure review 2 (issue 25): martin-tan-fig3's panels (b) and (c) side by side under (a), not
-//! a 1 : 2.8 strip; lloyd2006-fig4's top row names its axis "eye x" like "depth z". Checked on
-//! the SVGs as written.
+//! Figure layout (issue 25, second review): martin-tan-fig3's panels (b) and (c) side by side
+//! under (a), not a 1 : 2.8 strip; lloyd2006-fig4's top row names its axis "eye x" like
+//! "depth z". Checked on the SVGs as written.
 #![cfg(feature = "plot")]
 
 use shadow_aliasing::plot::{render, Format};
@@ -17,7 +17,9 @@ fn svg(name: &str) -> String {
 fn attr(text: &str, name: &str) -> f64 {
     let key = format!(" {name}=\"");
     let at = text.find(&key).unwrap() + key.len();
-    text[at..at + text[at..].find('"').unwrap()].parse().unwrap()
+    text[at..at + text[at..].find('"').unwrap()]
+        .parse()
+        .unwrap()
 }
 
 /// Two square panels side by side are each half the width, so the figure is at most about
