@@ -405,3 +405,106 @@ fn filament_rule_takes_zn_zf_from_the_shadow_volume() {
         }
     }
 }
+
+/// One map of Filament's port for the light straight down (0, −1, 0) on a box [−2, 2] × `y` ×
+/// [−20, −10] inside the camera's frustum (camera at the origin looking down −Z, 60° vertical
+/// field of view, n = 1, f = 100), receiver and caster, 2048² (shadowDimension 2046).
+fn filament_down_on_box(y: (f32, f32), lispsm: bool) -> DirectionalMap {
+    let cam = CameraInfo::perspective(Mat4::IDENTITY, 60.0, 1.0, 1.0, 100.0);
+    let scene = [Renderable {
+        aabb: Aabb {
+            min: Vec3::new(-2.0, y.0, -20.0),
+            max: Vec3::new(2.0, y.1, -10.0),
+        },
+        cast_shadows: true,
+        receive_shadows: true,
+    }];
+    let options = ShadowOptions {
+        lispsm,
+        ..ShadowOptions::default()
+    };
+    let mut out: [Option<DirectionalMap>; 4] = [None; 4];
+    let visible = update_cascade_shadow_maps(
+        Vec3::new(0.0, -1.0, 0.0),
+        &cam,
+        &options,
+        &ShadowMapInfo::new(2048),
+        &scene,
+        &[],
+        true,
+        false,
+        &mut out,
+    );
+    assert_eq!(visible, 1);
+    out[0].unwrap()
+}
+
+/// Filament's current `ShadowMap.cpp` (commit 0362f36e) keeps the light's view at the world
+/// origin: near and far are −max z and −min z of the light-space bounds, and the shadow camera's
+/// model matrix holds only the constant bias. The light straight down with the x axis as up puts
+/// light z = world y, so a box between heights 1 and 3 gives znear = −3, zfar = −1 and the
+/// model's translation (0, 0.001, 0) (the bias 0.001 against the light's travel). The earlier
+/// revision the port followed moved the view to −max z · direction and shifted the vertices:
+/// znear = 0, zfar = 2, the model's translation (0, 3.001, 0).
+#[test]
+fn filament_current_revision_keeps_the_light_view_at_the_origin() {
+    let m = filament_down_on_box((1.0, 3.0), true);
+    assert!(
+        (m.znear - -3.0).abs() < 1e-6 && (m.zfar - -1.0).abs() < 1e-6,
+        "znear {} zfar {}",
+        m.znear,
+        m.zfar
+    );
+    let t = m.model.w_axis.truncate();
+    assert!((t - DVec3::new(0.0, 0.001, 0.0)).length() < 1e-9, "{t}");
+}
+
+/// Filament's current texel size, `texelSizeWorldSpaceAt(S, {0, 0, 0}, shadowDimension)`: both
+/// edges of one texel, at the world origin's place in the map, from the Jacobian of inverse(S).
+/// Hand values for the light straight down on the box [−2, 2] × [−2, 0] × [−20, −10]
+/// (`filament_lispsm_by_hand`'s scene). In the aligned light space X = world x,
+/// Y = −world z ∈ [10, 20] (the warp axis, n = 10, d = 10), Z = −world y − 1 (znear 0, zfar 2).
+///
+/// - LiSPSM: n_opt = 10 + √200, Y′ = Y − n + n_opt; u = n_opt X/(2 Y′) (the focus halves x),
+///   v = A + B/Y′ (B = −2 n_opt (n_opt + d)/d), depth n_opt Z/Y′. The world origin has
+///   Y′ = √200, u = 0; there ∂world/∂u = 2 Y′/n_opt and |∂world/∂v| = (Y′²/|B|) √(1 + 1/Y′²), times
+///   one texel 2/2046: (1.145233·10⁻³, 1.188888·10⁻³).
+/// - Orthographic (`lispsm` false): u = X/2, v = (Y − 15)/5: (4/2046, 10/2046).
+///
+/// Recomputed independently with NumPy (the matrices Mv, L, Mp, W, F written out from the
+/// derivation above, inverse(S) differentiated by central differences at the origin's NDC):
+/// 1.1452325·10⁻³, 1.1888882·10⁻³ and 1.9550342·10⁻³, 4.8875855·10⁻³. The earlier revision's
+/// `texelSizeWorldSpace`, which the port followed before, gives one number: the longer edge at
+/// the texture's centre, 4.752·10⁻³ for LiSPSM, and 10 · 2048/2046² = 4.8924·10⁻³ (texture
+/// units over 1/shadowDimension) for the orthographic map.
+#[test]
+fn filament_texel_size_is_both_edges_at_the_world_origin() {
+    let lispsm = filament_down_on_box((-2.0, 0.0), true).texel_size_at_one_meter_ws;
+    let n_opt = 10f64 + 200f64.sqrt();
+    let yp = 200f64.sqrt();
+    let b = 2.0 * n_opt * (n_opt + 10.0) / 10.0;
+    let texel = 2.0 / 2046.0;
+    let hand = [
+        2.0 * yp / n_opt * texel,
+        yp * yp / b * (1.0 + 1.0 / (yp * yp)).sqrt() * texel,
+    ];
+    assert!((hand[0] - 1.145_233e-3).abs() < 1e-9 && (hand[1] - 1.188_888e-3).abs() < 1e-9);
+    for (got, want) in [lispsm.x, lispsm.y].into_iter().zip(hand) {
+        assert!(
+            (f64::from(got) - want).abs() < 1e-4 * want,
+            "LiSPSM {lispsm} vs {hand:?}"
+        );
+    }
+    let ortho = filament_down_on_box((-2.0, 0.0), false).texel_size_at_one_meter_ws;
+    for (got, want) in [ortho.x, ortho.y]
+        .into_iter()
+        .zip([4.0 / 2046.0, 10.0 / 2046.0])
+    {
+        assert!(
+            (f64::from(got) - want).abs() < 1e-5 * want,
+            "orthographic {ortho} vs ({}, {})",
+            4.0 / 2046.0,
+            10.0 / 2046.0
+        );
+    }
+}

@@ -1,13 +1,19 @@
 //! A Rust port of Filament's directional shadow focus with LiSPSM, for side-by-side benchmarks
-//! (issue 23 item 9).
+//! (issue 23 item 9) and for the engines' defaults (examples/engine_defaults.rs).
 //!
-//! Follows Filament's `main` as stored in the public-code index in 2026 (the newest stored
-//! `filament/src/ShadowMap.cpp`, the version with `computeDirectionalShadowBounds`,
-//! `getDirectionalLightViewMatrix(direction, up, position)` and
-//! `ShadowMapDescriptorSet::Transaction`; Filament 1.6x, 2025; the index stores no tag for it):
+//! Follows `filament/src/ShadowMap.cpp` at google/filament commit
+//! `0362f36ef6e6017426730cbbb68e7af1fda2f38c`, the revision docs/errata.md calls current (read
+//! from the public-code index, which records no commit date for it; its two-edge
+//! `texelSizeWorldSpaceAt` is what google/filament pull request #9734, "Improve shadow normal
+//! bias calculation", opened 2026-02-20, describes, so the revision is of 2026). Each function
+//! names the lines of that file it ports (`ShadowMap.cpp:L1–L2`). This revision keeps the light's
+//! view matrix at the world origin (near = −max z, far = −min z of the light-space bounds; no
+//! shift of the clipped volume's 64 vertices) and computes the texel size with
+//! `texelSizeWorldSpaceAt(S, {0, 0, 0}, shadowDimension)` (the Jacobian of `inverse(S)`, a 4×4
+//! inverse, at the world origin's NDC: both texel edges). Ported:
 //!
-//! - `ShadowMap::updateDirectional` (non-stable path: light frustum alignment `L`, LiSPSM,
-//!   focus, texture mapping, texel size, the shadow camera's projection and model matrix);
+//! - `ShadowMap::updateDirectional` (not stable: light frustum alignment `L`, LiSPSM, focus,
+//!   texture mapping, texel size, the shadow camera's projection and model matrix);
 //! - `ShadowMap::computeDirectionalShadowBounds`, `computeLightFrustumBounds` (receivers'
 //!   light-space bounds ∩ casters', far from receivers, near from casters),
 //!   `intersectFrustumWithBox` (steps a–d), `intersectFrustum`,
@@ -15,25 +21,31 @@
 //! - `ShadowMap::applyLISPSM`, `computeLightRotation`, `computeFocusParams`, `warpFrustum`,
 //!   `directionalLightFrustum`, `computeNearFar`, `computeNearFarOfWarpSpace`,
 //!   `compute2DBounds` (points and box), `computeFrustumCorners`, `getTextureCoordsMapping`,
-//!   `texelSizeWorldSpace` (both);
-//! - `ShadowMap::SceneInfo::SceneInfo` and `updateSceneInfoDirectional` (scene bounds, light-space
-//!   near/far of casters and receivers);
+//!   `getViewport`, the file's static `jacobian` and `texelSizeWorldSpaceAt`;
+//! - `ShadowMap::SceneInfo::SceneInfo` and `updateSceneInfoDirectional` (scene bounds,
+//!   light-space near/far of casters and receivers);
 //! - `ShadowMapManager::updateCascadeShadowMaps` (the culling pass over the whole frustum, then one
-//!   `updateDirectional` per cascade) and `ShadowMapManager::updateNearFarPlanes`;
+//!   `updateDirectional` per cascade) and `ShadowMapManager::updateNearFarPlanes`, from the index's
+//!   `filament/src/ShadowMapManager.cpp` (commit `003e5005713cba55cbd3f3a423c472000b96b868`; the
+//!   index holds no ShadowMapManager.cpp at `0362f36e`: the geometry ported here, the splits and
+//!   the per-cascade near/far, is the same in both);
 //! - helpers: `Frustum::setProjection` (normalised planes), `Aabb::getCorners`,
-//!   `Aabb::transform` (Arvo), `mat4f::project`, `FCamera::rigidTransformInverse`, the 4×4
-//!   `inverse` (`gaussJordanInverse`, libs/math TMatHelpers.h) and the 3×3 `fastInverse3`.
-//!   `mat4::lookTo` is not in the stored libs/math snapshot: it is `lookAt`'s body with
-//!   `direction` in place of `center − eye` (in `double`, as Filament calls it).
+//!   `Aabb::transform` (Arvo), `mat4f::project`, `mat4f * float3` (`{v, 1}`, libs/math mat4.h),
+//!   `FCamera::rigidTransformInverse`, the 4×4 `inverse` (`gaussJordanInverse`, libs/math
+//!   TMatHelpers.h). `mat4::lookTo` is `lookAt`'s body with `direction` in place of
+//!   `center − eye` (in `double`, as Filament calls it); `getDirectionalLightViewMatrix`'s
+//!   `position` defaults to `{}` (filament/src/ShadowMap.h).
 //!
 //! Options are Filament's defaults: `shadowNearHint` 1, `shadowFarHint` 100, `stable` false,
 //! `shadowFar` 0, debug `focus_shadowcasters` and `far_uses_shadowcasters` true,
-//! `disable_light_frustum_align` false; `lispsm` true (the LiSPSM path this port exists for).
-//! Depth clamp is a parameter (Filament uses it for cascades where the device supports it).
-//! Not ported (no value of the map depends on them): the debug-build `dzn`/`dzf` overrides, the
-//! stable mode, VSM, the debug camera's matrix, `FCamera::setCustomProjection`'s own bookkeeping,
-//! the renderable culling and the uniform-buffer writes. Arithmetic is `float` as Filament's
-//! (`double` where Filament uses `mat4`: `lookTo`, `highPrecisionMultiply`).
+//! `disable_light_frustum_align` false; `lispsm` true by default (the LiSPSM path this port exists
+//! for; [`ShadowOptions::lispsm`] false gives the orthographic, view-aligned map). Depth clamp is a
+//! parameter (Filament uses it for cascades where the device supports it). Not ported (no value of
+//! the map depends on them): the debug-build `dzn`/`dzf` overrides, the stable mode, VSM, the
+//! debug camera's matrix, `FCamera::setCustomProjection`'s own bookkeeping, the renderable culling,
+//! the clamp-to-edge scissor and the uniform-buffer writes; every renderable counts as visible to
+//! the camera (`updateSceneInfoDirectional` skips receivers the camera culled). Arithmetic is
+//! `float` as Filament's (`double` where Filament uses `mat4`: `lookTo`, `highPrecisionMultiply`).
 
 use glam::{DMat4, DVec3, DVec4, Mat3, Mat4, Vec2, Vec3, Vec4};
 
@@ -107,8 +119,8 @@ pub struct SceneInfo {
 }
 
 impl SceneInfo {
-    /// `SceneInfo::SceneInfo(scene, visibleLayers)` then `updateSceneInfoDirectional(Mv, …)`,
-    /// every renderable visible to the camera.
+    /// `SceneInfo::SceneInfo(scene, visibleLayers)` (ShadowMap.cpp:1177–1202) then
+    /// `updateSceneInfoDirectional(Mv, …)` (1204–1230), every renderable visible to the camera.
     pub fn directional(renderables: &[Renderable], mv: &Mat4) -> SceneInfo {
         let mut s = SceneInfo::default();
         for r in renderables {
@@ -236,7 +248,8 @@ impl ShadowMapInfo {
         }
     }
 
-    /// `ShadowMap::getViewport()`: the map inside a 1-texel border (left, bottom, width, height).
+    /// `ShadowMap::getViewport()` (ShadowMap.cpp:1258–1274): the map inside a 1-texel border
+    /// (left, bottom, width, height).
     fn viewport(&self) -> [f32; 4] {
         let dim = f32::from(self.texture_dimension);
         [1.0, 1.0, dim - 2.0, dim - 2.0]
@@ -248,8 +261,9 @@ impl ShadowMapInfo {
 pub struct DirectionalMap {
     /// `lightSpace`: world → shadow texture coordinates (u, v, depth), homogeneous.
     pub light_space: Mat4,
-    /// `texelSizeAtOneMeterWs`.
-    pub texel_size_at_one_meter_ws: f32,
+    /// `texelSizeAtOneMeterWs`: `texelSizeWorldSpaceAt(S, {0, 0, 0}, shadowDimension)`, the
+    /// world-space lengths of one texel's two edges (along u, along v) at the world origin.
+    pub texel_size_at_one_meter_ws: Vec2,
     /// The shadow camera's projection `Mn · F · W · L · Mp` (light view → clip).
     pub projection: Mat4,
     /// The shadow camera's model matrix (world from light view, constant bias applied).
@@ -314,7 +328,7 @@ fn look_to(direction: DVec3, position: DVec3, up: DVec3) -> DMat4 {
     )
 }
 
-/// `ShadowMap::getDirectionalLightViewMatrix(direction, up, position)`.
+/// `ShadowMap::getDirectionalLightViewMatrix(direction, up, position)` (ShadowMap.cpp:104–111).
 pub fn directional_light_view_matrix(direction: Vec3, up: Vec3, position: Vec3) -> Mat4 {
     let mm = look_to(direction.as_dvec3(), position.as_dvec3(), up.as_dvec3()).as_mat4();
     rigid_transform_inverse(&mm)
@@ -356,22 +370,6 @@ fn inverse(src: &Mat4) -> Mat4 {
     Mat4::from_cols_array_2d(&inv)
 }
 
-/// `fastInverse3`.
-fn inverse3(x: &Mat3) -> Mat3 {
-    let (a, b, c) = (x.x_axis.x, x.y_axis.x, x.z_axis.x);
-    let (d, e, f) = (x.x_axis.y, x.y_axis.y, x.z_axis.y);
-    let (g, h, i) = (x.x_axis.z, x.y_axis.z, x.z_axis.z);
-    let aa = e * i - f * h;
-    let bb = f * g - d * i;
-    let cc = d * h - e * g;
-    let det = a * aa + b * bb + c * cc;
-    Mat3::from_cols(
-        Vec3::new(aa, bb, cc) / det,
-        Vec3::new(c * h - b * i, a * i - c * g, b * g - a * h) / det,
-        Vec3::new(b * f - c * e, c * d - a * f, a * e - b * d) / det,
-    )
-}
-
 /// `Frustum::setProjection`: normalised planes l, r, b, t, f, n (inside: negative distance).
 fn frustum_planes(pv: &Mat4) -> [Vec4; 6] {
     let m = pv.transpose();
@@ -387,7 +385,8 @@ fn frustum_planes(pv: &Mat4) -> [Vec4; 6] {
     ]
 }
 
-/// `computeFrustumCorners(projectionInverse)`: NDC corners, far (z = 1) first.
+/// `computeFrustumCorners(projectionInverse)` (ShadowMap.cpp:795–823): NDC corners, far (z = 1)
+/// first.
 fn compute_frustum_corners(projection_inverse: &Mat4) -> [Vec3; 8] {
     let c = [
         Vec3::new(-1.0, -1.0, 1.0),
@@ -402,7 +401,7 @@ fn compute_frustum_corners(projection_inverse: &Mat4) -> [Vec3; 8] {
     c.map(|p| project(projection_inverse, p))
 }
 
-/// `sBoxSegments`.
+/// `sBoxSegments` (filament/src/ShadowMap.h).
 const BOX_SEGMENTS: [(usize, usize); 12] = [
     (0, 1),
     (1, 3),
@@ -418,7 +417,7 @@ const BOX_SEGMENTS: [(usize, usize); 12] = [
     (2, 6),
 ];
 
-/// `sBoxQuads`: far, near, left, right, bottom, top.
+/// `sBoxQuads` (filament/src/ShadowMap.h): far, near, left, right, bottom, top.
 const BOX_QUADS: [[usize; 4]; 6] = [
     [2, 0, 1, 3],
     [6, 4, 5, 7],
@@ -428,7 +427,8 @@ const BOX_QUADS: [[usize; 4]; 6] = [
     [2, 6, 7, 3],
 ];
 
-/// `intersectSegmentWithTriangle` (Real-Time Rendering's segment/triangle test).
+/// `intersectSegmentWithTriangle` (ShadowMap.cpp:1050–1086; Real-Time Rendering's
+/// segment/triangle test), with `intersectSegmentWithPlanarQuad` (1088–1093) at its call.
 #[inline(always)]
 fn intersect_segment_with_triangle(
     s0: Vec3,
@@ -461,8 +461,8 @@ fn intersect_segment_with_triangle(
     Some(s0 + d * (t / a.abs()))
 }
 
-/// `intersectFrustum`: each segment of `segments` against the quads of `quads`, at most two
-/// hits per segment, appended at `out[count..]`.
+/// `intersectFrustum` (ShadowMap.cpp:1023–1048): each segment of `segments` against the quads
+/// of `quads`, at most two hits per segment, appended at `out[count..]`.
 #[inline(never)]
 fn intersect_frustum(
     out: &mut FrustumBoxIntersection,
@@ -489,8 +489,9 @@ fn intersect_frustum(
     count
 }
 
-/// `ShadowMap::intersectFrustumWithBox(out, projection, box)`: points on the hull of the frustum
-/// of `projection` (OpenGL clip) ∩ `bx`, in the space `projection` maps from.
+/// `ShadowMap::intersectFrustumWithBox(out, projection, box)` (ShadowMap.cpp:894–1021): points
+/// on the hull of the frustum of `projection` (OpenGL clip) ∩ `bx`, in the space `projection`
+/// maps from.
 pub fn intersect_frustum_with_box(
     out: &mut FrustumBoxIntersection,
     projection: &Mat4,
@@ -501,7 +502,7 @@ pub fn intersect_frustum_with_box(
     const EPSILON: f32 = 1.0 / 8192.0;
     let mut count = 0;
     let box_corners = bx.corners();
-    // a) the frustum's vertices inside the box
+    // a) the frustum's vertices inside the box (920–930)
     for p in frustum_vertices {
         out[count] = p;
         if p.x >= bx.min.x
@@ -516,7 +517,7 @@ pub fn intersect_frustum_with_box(
     }
     if count < 8 {
         let frustum_inside_box = count;
-        // b) the box's vertices inside the frustum (with a small tolerance)
+        // b) the box's vertices inside the frustum, with a small tolerance (933–956)
         for p in box_corners {
             out[count] = p;
             if planes
@@ -527,16 +528,16 @@ pub fn intersect_frustum_with_box(
             }
         }
         if count - frustum_inside_box < 8 {
-            // c) the box's edges against the frustum's faces
+            // c) the box's edges against the frustum's faces (998–1003)
             count = intersect_frustum(out, count, &box_corners, &frustum_vertices);
-            // d) the frustum's edges against the box's faces
+            // d) the frustum's edges against the box's faces (1005–1007)
             count = intersect_frustum(out, count, &frustum_vertices, &box_corners);
         }
     }
     count
 }
 
-/// `compute2DBounds(lightView, vertices)`.
+/// `compute2DBounds(lightView, vertices)` (ShadowMap.cpp:771–781).
 fn compute_2d_bounds(light_view: &Mat4, vertices: &[Vec3]) -> Aabb {
     let mut b = Aabb::default();
     for &v in vertices {
@@ -547,7 +548,7 @@ fn compute_2d_bounds(light_view: &Mat4, vertices: &[Vec3]) -> Aabb {
     b
 }
 
-/// `compute2DBounds(lightView, volume)` (all three axes).
+/// `compute2DBounds(lightView, volume)` (ShadowMap.cpp:783–793; all three axes).
 fn compute_2d_bounds_box(light_view: &Mat4, volume: &Aabb) -> Aabb {
     let mut b = Aabb::default();
     for c in volume.corners() {
@@ -558,7 +559,8 @@ fn compute_2d_bounds_box(light_view: &Mat4, volume: &Aabb) -> Aabb {
     b
 }
 
-/// `computeLightFrustumBounds` (not stable, focus on casters, far from casters).
+/// `computeLightFrustumBounds` (ShadowMap.cpp:825–856; not stable, focus on casters, far from
+/// casters).
 fn compute_light_frustum_bounds(light_view: &Mat4, scene: &SceneInfo) -> Aabb {
     let receivers_far = scene.ls_receivers_near_far.y;
     let casters_near = scene.ls_casters_near_far.x;
@@ -577,7 +579,7 @@ fn compute_light_frustum_bounds(light_view: &Mat4, scene: &SceneInfo) -> Aabb {
     b
 }
 
-/// `computeNearFar(view, vertices)`: (max z, min z).
+/// `computeNearFar(view, vertices)` (ShadowMap.cpp:733–743): (max z, min z).
 fn compute_near_far(view: &Mat4, vertices: &[Vec3]) -> Vec2 {
     let mut nf = Vec2::new(f32::MIN, f32::MAX);
     for &v in vertices {
@@ -588,7 +590,7 @@ fn compute_near_far(view: &Mat4, vertices: &[Vec3]) -> Vec2 {
     nf
 }
 
-/// `computeNearFarOfWarpSpace(lightView, vertices)`: (min y, max y).
+/// `computeNearFarOfWarpSpace(lightView, vertices)` (ShadowMap.cpp:745–756): (min y, max y).
 fn compute_near_far_of_warp_space(light_view: &Mat4, vertices: &[Vec3]) -> Vec2 {
     let mut nf = Vec2::new(f32::MAX, f32::MIN);
     for &v in vertices {
@@ -599,7 +601,7 @@ fn compute_near_far_of_warp_space(light_view: &Mat4, vertices: &[Vec3]) -> Vec2 
     nf
 }
 
-/// `warpFrustum(n, f)`: a frustum looking down +y.
+/// `warpFrustum(n, f)` (ShadowMap.cpp:709–723): a frustum looking down +y.
 fn warp_frustum(n: f32, f: f32) -> Mat4 {
     let d = 1.0 / (f - n);
     let a = (f + n) * d;
@@ -613,7 +615,7 @@ fn warp_frustum(n: f32, f: f32) -> Mat4 {
     )
 }
 
-/// `directionalLightFrustum(near, far)`.
+/// `directionalLightFrustum(near, far)` (ShadowMap.cpp:725–731).
 fn directional_light_frustum(near: f32, far: f32) -> Mat4 {
     let d = far - near;
     let mut m = Mat4::IDENTITY;
@@ -622,7 +624,7 @@ fn directional_light_frustum(near: f32, far: f32) -> Mat4 {
     m
 }
 
-/// `computeLightRotation(lsDirection)`.
+/// `computeLightRotation(lsDirection)` (ShadowMap.cpp:591–607).
 fn compute_light_rotation(ls_direction: Vec3) -> Mat4 {
     if ls_direction.z.abs() < 0.9997 {
         let vp = ls_direction.truncate().normalize().extend(0.0);
@@ -647,7 +649,8 @@ struct DirectionalShadowBounds {
     vertex_count: usize,
 }
 
-/// `ShadowMap::computeDirectionalShadowBounds` (non-stable, debug flags at their defaults).
+/// `ShadowMap::computeDirectionalShadowBounds` (ShadowMap.cpp:387–506; not stable, debug flags
+/// at their defaults).
 // `!(znear < zfar)` is Filament's NaN-safe test, kept as written.
 #[allow(clippy::neg_cmp_op_on_partial_ord)]
 fn compute_directional_shadow_bounds(
@@ -656,6 +659,7 @@ fn compute_directional_shadow_bounds(
     scene: &SceneInfo,
     use_depth_clamp: bool,
 ) -> Option<DirectionalShadowBounds> {
+    // 399–414: no receivers, no casters, or an empty volume: no shadows.
     if scene.ls_receivers_near_far.x <= scene.ls_receivers_near_far.y {
         return None;
     }
@@ -665,12 +669,14 @@ fn compute_directional_shadow_bounds(
     if scene.ws_shadow_casters_volume.is_empty() || scene.ws_shadow_receivers_volume.is_empty() {
         return None;
     }
+    // 431–445: the light's view at the origin, the light-frustum bounds, NaN-safe emptiness.
     let up = camera.world_x.normalize();
     let mv_at_origin = directional_light_view_matrix(direction, up, Vec3::ZERO);
     let mut b = compute_light_frustum_bounds(&mv_at_origin, scene);
     if !(b.min.x < b.max.x && b.min.y < b.max.y) {
         return None;
     }
+    // 447–453: the view volume ∩ that box, in the light's space at the origin.
     let projection =
         camera.culling_projection * (camera.view * rigid_transform_inverse(&mv_at_origin));
     let mut v = [Vec3::ZERO; 64];
@@ -678,6 +684,8 @@ fn compute_directional_shadow_bounds(
     if n < 4 {
         return None;
     }
+    // 473–489: far to the farthest clipped vertex (and, with depth clamp, near to the nearest);
+    // far_uses_shadowcasters.
     let mut farthest = f32::MAX;
     let mut nearest = f32::MIN;
     for p in &v[..n] {
@@ -688,19 +696,17 @@ fn compute_directional_shadow_bounds(
     if use_depth_clamp {
         b.max.z = b.max.z.min(nearest);
     }
-    // far_uses_shadowcasters
     b.min.z = b.min.z.max(scene.ls_casters_near_far.y);
-    let znear = 0.0f32;
-    let zfar = b.max.z - b.min.z;
+    // 491–498: near and far along the light's −z; none when znear ≥ zfar (or NaN).
+    let znear = -b.max.z;
+    let zfar = -b.min.z;
     if !(znear < zfar) {
         // handles NaNs
         return None;
     }
-    // Filament shifts every entry of the array (all 64), not only the `n` in use.
-    for p in v.iter_mut() {
-        p.z -= b.max.z;
-    }
-    let mv = directional_light_view_matrix(direction, up, direction * -b.max.z);
+    // 500–505: Mv is the light's view at the origin again (`position` defaults to {}); the 64
+    // vertices stay as `intersectFrustumWithBox` wrote them.
+    let mv = directional_light_view_matrix(direction, up, Vec3::ZERO);
     Some(DirectionalShadowBounds {
         mv,
         znear,
@@ -710,7 +716,8 @@ fn compute_directional_shadow_bounds(
     })
 }
 
-/// `ShadowMap::applyLISPSM`: W, and `Wp` (identity when LiSPSM is cancelled).
+/// `ShadowMap::applyLISPSM` (ShadowMap.cpp:508–589): W, and `Wp` (identity when LiSPSM is
+/// cancelled).
 #[allow(clippy::too_many_arguments)]
 fn apply_lispsm(
     camera: &CameraInfo,
@@ -721,28 +728,34 @@ fn apply_lispsm(
     ls_shadow_volume: &[Vec3],
     dir: Vec3,
 ) -> (Mat4, Mat4) {
+    // 516–523: sin γ and the hints' dzn, dzf.
     let lov = camera.forward().dot(dir);
     let sin_lv = (1.0 - lov * lov).max(0.0).sqrt();
     let dzn = (options.shadow_near_hint - camera.zn).max(0.0);
     let dzf = (camera.zf - options.shadow_far_hint).max(0.0);
+    // 527–533: the shadow volume's view-depth range, clamped to the camera's.
     let znf = -compute_near_far(
         &(camera.view * rigid_transform_inverse(mv)),
         ls_shadow_volume,
     );
     let zn = camera.zn.max(znf.x);
     let zf = camera.zf.min(znf.y);
+    // 539–546: the warp axis's extent n, f, d; z₀, z₁.
     let nf = compute_near_far_of_warp_space(lmp, ls_shadow_volume);
     let (n, f) = (nf.x, nf.y);
     let d = (f - n).abs();
     let z0 = zn;
     let z1 = z0 + d * sin_lv;
+    // 548–552: LiSPSM only where it helps (else W and Wp stay the identity).
     const EPSILON: f32 = 0.02;
     if f > n && sin_lv > EPSILON && 3.0 * (dzn / (zf - zn)) < 2.0 {
+        // 556–568: the virtual planes and n_opt = max(nopt0, nopt1).
         let vz0 = zn.max(camera.zn + dzn).max(z0).max(0.0);
         let vz1 = zf.min(camera.zf - dzf).min(z1).max(0.0);
         let nopt0 = (1.0 / sin_lv) * (z0 + (vz0 * vz1).sqrt());
         let nopt1 = dzn / (2.0 - 3.0 * (dzn / (zf - zn)));
         let nopt = nopt0.max(nopt1);
+        // 570–586: the centre of projection and W = Wp · Wv.
         let ls_camera_position = project(lmpmv, camera.position());
         let p = Vec3::new(ls_camera_position.x, n - nopt, 0.0);
         let wv = Mat4::from_translation(-p);
@@ -753,7 +766,8 @@ fn apply_lispsm(
     }
 }
 
-/// `getTextureCoordsMapping(info, viewport)`: (clip → texture, clip → the viewport's NDC).
+/// `getTextureCoordsMapping(info, viewport)` (ShadowMap.cpp:651–688): (clip → texture, clip →
+/// the viewport's NDC).
 fn texture_coords_mapping(info: &ShadowMapInfo) -> (Mat4, Mat4) {
     // Mt: x, y from [−1, 1] to [0, 1], depth to [1, 0]; its inverse is a `constexpr` in Filament.
     let mt = Mat4::from_cols(
@@ -783,36 +797,30 @@ fn texture_coords_mapping(info: &ShadowMapInfo) -> (Mat4, Mat4) {
     (vmt, mt_inverse * vmt)
 }
 
-/// `texelSizeWorldSpace(worldToShadowTexture, shadowDimension)` (orthographic maps).
-fn texel_size_world_space_ortho(world_to_shadow_texture: &Mat3, dim: u16) -> f32 {
-    let res = 1.0 / f32::from(dim);
-    let inv = inverse3(world_to_shadow_texture);
-    (inv.x_axis.length() * res).max(inv.y_axis.length() * res)
+/// The static `jacobian(M, p)` of ShadowMap.cpp (1124–1134): J = ∂(X/W, Y/W, Z/W)/∂(x, y, z) of
+/// `M · (p, 1)`, `(M_sub − (T ⊗ w_grad)/T.w)/T.w` with `T = M · (p, 1)`, `M_sub` M's upper-left
+/// 3×3 and `w_grad` the first three entries of M's last row; column j is ∂/∂(x, y, z)ⱼ.
+fn jacobian(m: &Mat4, p: Vec3) -> Mat3 {
+    let t = *m * p.extend(1.0);
+    let m_sub = Mat3::from_mat4(*m);
+    let w_grad = Vec3::new(m.x_axis.w, m.y_axis.w, m.z_axis.w);
+    let t3 = t.truncate();
+    let t_cross_w = Mat3::from_cols(w_grad.x * t3, w_grad.y * t3, w_grad.z * t3);
+    (m_sub - t_cross_w / t.w) / t.w
 }
 
-/// `texelSizeWorldSpace(Wp, MbMtF, shadowDimension)` (LiSPSM maps, at the map's centre).
-fn texel_size_world_space_lispsm(wp: &Mat4, mbmtf: &Mat4, dim: u16) -> f32 {
-    let p = Vec3::new(0.5, 0.5, 0.0);
-    let res = 1.0 / f32::from(dim);
-    let n = wp.x_axis.x;
-    let a = wp.y_axis.y;
-    let b = wp.w_axis.y;
-    let (sx, sy, sz) = (mbmtf.x_axis.x, mbmtf.y_axis.y, mbmtf.z_axis.z);
-    let (ox, oy, oz) = (mbmtf.w_axis.x, mbmtf.w_axis.y, mbmtf.w_axis.z);
-    let x = p.x - ox;
-    let y = p.y - oy;
-    let z = p.z - oz;
-    let dz = a * sy - y;
-    let nsxsz = n * sx * sz;
-    let j = -(b * sy) / (nsxsz * dz * dz);
-    // row major: (j dz sz, j X sz, 0), (0, j nsxsz, 0), (0, j Z sx, j dz sx); J[0], J[1] columns
-    let jx = Vec3::new(j * dz * sz, 0.0, 0.0) * res;
-    let jy = Vec3::new(j * x * sz, j * nsxsz, j * z * sx) * res;
-    jx.length().max(jy.length())
+/// `ShadowMap::texelSizeWorldSpaceAt(S, p, shadowDimension)` (ShadowMap.cpp:1143–1153): the
+/// world-space lengths of one texel's edges along u and v at the world point `p`, from the
+/// Jacobian of `inverse(S)` (clip → world) at `p`'s NDC, times one texel, 2/shadowDimension.
+fn texel_size_world_space_at(s: &Mat4, p: Vec3, shadow_dimension: u16) -> Vec2 {
+    let p_ndc = project(s, p);
+    let one_texel = 2.0 / f32::from(shadow_dimension);
+    let j = jacobian(&inverse(s), p_ndc);
+    Vec2::new(j.x_axis.length(), j.y_axis.length()) * one_texel
 }
 
-/// `ShadowMap::updateDirectional` with `camera` the cascade's (its `zn`, `zf` and culling
-/// projection), `None` when the map has no visible shadows.
+/// `ShadowMap::updateDirectional` (ShadowMap.cpp:128–266) with `camera` the cascade's (its `zn`,
+/// `zf` and culling projection), `None` when the map has no visible shadows.
 pub fn update_directional(
     direction: Vec3,
     camera: &CameraInfo,
@@ -821,45 +829,48 @@ pub fn update_directional(
     scene: &SceneInfo,
     use_depth_clamp: bool,
 ) -> Option<DirectionalMap> {
+    // 145–150
     let bounds = compute_directional_shadow_bounds(direction, camera, scene, use_depth_clamp)?;
     let mv = bounds.mv;
     let verts = &bounds.ls_clipped_shadow_volume[..bounds.vertex_count];
-    // Filament applies Mv to the (already light-space) vertices for this emptiness test.
+    // 152–156: Filament applies Mv to the (already light-space) vertices for this emptiness test.
     let b = compute_2d_bounds(&mv, verts);
     if !(b.min.x < b.max.x && b.min.y < b.max.y) {
         return None;
     }
+    // 164–166
     let mp = directional_light_frustum(bounds.znear, bounds.zfar);
-    // useLispsm || !disable_light_frustum_align: align the map with the view
+    // 172–182: useLispsm || !disable_light_frustum_align: align the map with the view.
     let ls_camera_fwd = Mat3::from_mat4(mv) * camera.forward();
     let l = compute_light_rotation(ls_camera_fwd);
     let lmp = l * mp;
     let lmpmv = lmp * mv;
+    // 184–186
     let (w, wp) = if options.lispsm {
         apply_lispsm(camera, options, &lmp, &mv, &lmpmv, verts, direction)
     } else {
         (Mat4::IDENTITY, Mat4::IDENTITY)
     };
+    // 192: WLMp; 199–200 and 609–649: computeFocusParams (not stable).
     let wlmp = w * lmp;
-    // computeFocusParams (not stable)
     let fb = compute_2d_bounds(&wlmp, verts);
     let s = Vec2::new(2.0 / (fb.max.x - fb.min.x), 2.0 / (fb.max.y - fb.min.y));
     let o = -s * (Vec2::new(fb.max.x + fb.min.x, fb.max.y + fb.min.y) * 0.5);
+    // 207–212
     let f = Mat4::from_cols(
         Vec4::new(s.x, 0.0, 0.0, 0.0),
         Vec4::new(0.0, s.y, 0.0, 0.0),
         Vec4::Z,
         Vec4::new(o.x, o.y, 0.0, 1.0),
     );
+    // 219: S = F · (W · LMpMv)
     let s_mat = f * (w * lmpmv);
+    // 223–226: St = highPrecisionMultiply(Mt, S)
     let (mt, mn) = texture_coords_mapping(info);
-    // highPrecisionMultiply
     let st = (mt.as_dmat4() * s_mat.as_dmat4()).as_mat4();
-    let texel = if options.lispsm && wp.w_axis.y != 0.0 {
-        texel_size_world_space_lispsm(&wp, &(mt * f), info.shadow_dimension)
-    } else {
-        texel_size_world_space_ortho(&Mat3::from_mat4(st), info.shadow_dimension)
-    };
+    // 234: the texel size at the world origin, both edges.
+    let texel = texel_size_world_space_at(&s_mat, Vec3::ZERO, info.shadow_dimension);
+    // 246–247, 257–258: the constant bias in the shadow camera's model; its projection.
     let bias = DMat4::from_translation((direction * options.constant_bias).as_dvec3());
     let model = rigid_transform_inverse_d(&(mv.as_dmat4() * bias));
     Some(DirectionalMap {
