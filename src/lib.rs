@@ -31,8 +31,16 @@
 //!    derivatives of the projective map; its maximum over the frustum; the storage factor over the
 //!    hemisphere of light directions. Every closed form has a numeric twin here, and the tests hold
 //!    each closed form to its twin to a relative 1e-9.
-//! 5. `plot` (feature `plot`) and the `shadow-aliasing` command line (feature `cli`): the papers'
-//!    figures, JSON evaluation for CI pipelines in any language, matrices and sweeps.
+//! 5. [`scheme`]: a scheme's partitions built and measured together, and the hemisphere sweep.
+//! 6. [`frame`]: **the renderer's call, once per light per frame**, in world space: the camera,
+//!    the light, the scene's receivers and casters in, every map's world → clip matrix, splits,
+//!    blend bands, culling volumes, bias and measured error out, with the GPU record and the WGSL
+//!    lookup module (docs/renderer.md). Start here to put the crate in a renderer:
+//!    [`frame::frame`], [`frame::FrameInput`].
+//! 7. [`plan`]: choices made from the measured error: the cheapest set-up for a target error, the
+//!    least error for a texel budget, texel allocation, clipmap levels (docs/planning.md).
+//! 8. `plot` (feature `plot`) and the `shadow-aliasing` command line (feature `cli`): the papers'
+//!    figures, JSON evaluation for CI pipelines in any language, matrices, plans and sweeps.
 //!
 //! # Conventions
 //!

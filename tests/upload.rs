@@ -32,7 +32,7 @@ fn rust_offsets() -> Vec<(&'static str, usize)> {
         ),
         ("texel_extent", offset_of!(GpuShadowMap, texel_extent)),
         ("constant_depth", offset_of!(GpuShadowMap, constant_depth)),
-        ("pad", offset_of!(GpuShadowMap, pad)),
+        ("bias_radius", offset_of!(GpuShadowMap, bias_radius)),
     ]
 }
 
@@ -220,12 +220,22 @@ fn record_and_arrays_carry_the_maps_values() {
                 let b2 = m.bias(2.0, depth).unwrap();
                 assert_eq!(g2.normal_offset, b2.normal_offset as f32);
                 assert_eq!(g2.constant_depth, b2.constant_depth as f32);
+                // The record says which kernel its bias values are for, so that the shader's
+                // `sa_kernel_scale` does not count a `gpu_with_pcf` kernel twice.
+                assert_eq!(g.bias_radius, 0.0);
+                assert_eq!(g2.bias_radius, 2.0);
+                assert_eq!(f32::from_bits(word(&g2.to_bytes(), 124)), 2.0);
+                // Bias values ∝ r + ½ (docs/renderer.md): the record for r = 2 is the r = 0
+                // record times 5 = (2r + 1)/(2·0 + 1), the factor `sa_kernel_scale(m, 2)` applies
+                // to an r = 0 record and that it does not apply again to an r = 2 record.
+                let (n0, n2) = (bias.normal_offset, b2.normal_offset);
+                assert!((n2 - 5.0 * n0).abs() <= 1e-9 * n2, "{n2} against 5 × {n0}");
                 assert_eq!(f32::from_bits(word(&b, 104)), g.normal_offset);
                 assert_eq!(f32::from_bits(word(&b, 108)), g.slope_scaled_depth);
                 assert_eq!(f32::from_bits(word(&b, 112)), g.texel_extent[0]);
                 assert_eq!(f32::from_bits(word(&b, 116)), g.texel_extent[1]);
                 assert_eq!(f32::from_bits(word(&b, 120)), g.constant_depth);
-                assert_eq!(&b[124..], &[0u8; 4]);
+                assert_eq!(&b[124..], &[0u8; 4]); // bias_radius 0.0
                 #[cfg(feature = "bytemuck")]
                 if cfg!(target_endian = "little") {
                     assert_eq!(bytemuck::bytes_of(&g), &b[..]);

@@ -64,17 +64,19 @@ fn sa_depth_lit(m: GpuShadowMap, depth: f32, stored: f32) -> bool {
     return d <= stored;
 }
 
-// The factor of a record's bias values for a PCF kernel of radius r texels: a record holds them
-// for one lookup (r = 0: FrameMap::gpu, gpu_relative), a kernel of radius r needs 2r + 1 times
-// them (GpuShadowMap's docs).
-fn sa_kernel_scale(r: i32) -> f32 {
-    return f32(2 * max(r, 0) + 1);
+// The factor of a record's bias values for a PCF kernel of radius r texels: the record holds them
+// for a kernel of radius m.bias_radius (0: FrameMap::gpu, gpu_relative; r: gpu_with_pcf), and each
+// is proportional to r + 1/2, so a kernel of radius r needs (2r + 1)/(2 bias_radius + 1) times
+// them; never less than the record's own (GpuShadowMap's docs). A record from gpu_with_pcf(r)
+// filtered with the same r is used as it is: the kernel is counted once.
+fn sa_kernel_scale(m: GpuShadowMap, r: i32) -> f32 {
+    return max(f32(2 * max(r, 0) + 1) / (2.0 * max(m.bias_radius, 0.0) + 1.0), 1.0);
 }
 
 // The lookup point: p moved along its unit normal n by the record's normal offset (world units)
 // for a kernel of radius r.
 fn sa_offset_point(m: GpuShadowMap, p: vec3<f32>, n: vec3<f32>, r: i32) -> vec3<f32> {
-    return p + n * (m.normal_offset * sa_kernel_scale(r));
+    return p + n * (m.normal_offset * sa_kernel_scale(m, r));
 }
 
 // The normal offset (world units) the point p with unit normal n needs in map m for a kernel of
@@ -88,7 +90,7 @@ fn sa_local_normal_offset(m: GpuShadowMap, p: vec3<f32>, n: vec3<f32>, l: vec3<f
     if (cos_a <= 0.0) {
         return 0.0;
     }
-    let fallback = m.normal_offset * sa_kernel_scale(r);
+    let fallback = m.normal_offset * sa_kernel_scale(m, r);
     let h = m.world_to_clip * vec4<f32>(p, 1.0);
     if (!(h.w > 0.0)) {
         return fallback;
@@ -125,12 +127,12 @@ fn sa_local_normal_offset(m: GpuShadowMap, p: vec3<f32>, n: vec3<f32>, l: vec3<f
 
 // The depth bias to add to the receiver's depth (depth-attachment units, signed for the
 // convention) at a surface of unit normal n under light l, for a kernel of radius r:
-// (2r + 1) (constant_depth + slope_scaled_depth tan a), a the angle between n and the direction
+// sa_kernel_scale(m, r) (constant_depth + slope_scaled_depth tan a), a the angle between n and the direction
 // to the light (cos a clamped at 1e-3; a surface turned away from the light is dark anyway).
 fn sa_depth_bias(m: GpuShadowMap, n: vec3<f32>, l: vec3<f32>, r: i32) -> f32 {
     let c = clamp(dot(n, -l), 1e-3, 1.0);
     let tan_a = sqrt(max(1.0 - c * c, 0.0)) / c;
-    var b = (m.constant_depth + m.slope_scaled_depth * tan_a) * sa_kernel_scale(r);
+    var b = (m.constant_depth + m.slope_scaled_depth * tan_a) * sa_kernel_scale(m, r);
     if (m.clip_depth == CLIP_DEPTH_NEG_ONE_TO_ONE) {
         b = 0.5 * b;
     }

@@ -35,12 +35,15 @@ use glam::{DMat4, DVec3, Mat4};
 /// | `slope_scaled_depth` | 108 | `f32` |
 /// | `texel_extent` | 112 | `vec2<f32>` |
 /// | `constant_depth` | 120 | `f32` |
-/// | `pad` | 124 | `u32` |
+/// | `bias_radius` | 124 | `f32` |
 ///
-/// The bias values are [`FrameMap::bias`]'s for a single lookup (r = 0); for a PCF kernel of
-/// radius r texels multiply `normal_offset`, `slope_scaled_depth` and `constant_depth` by
-/// 2r + 1 (each is proportional to r + ½, but for the constant's 8 `f32` ulps, which the
-/// factor only enlarges), or upload [`FrameMap::gpu_with_pcf`]'s.
+/// The bias values are [`FrameMap::bias`]'s for a PCF kernel of radius `bias_radius` texels:
+/// 0 (a single lookup) from [`FrameMap::gpu`] and [`FrameMap::gpu_relative`], r from
+/// [`FrameMap::gpu_with_pcf`]. Each value is proportional to r + ½ (but for the constant's 8
+/// `f32` ulps, which enlarging only enlarges), so a shader filtering with radius r scales them by
+/// (2r + 1)/(2 `bias_radius` + 1), and by 1 where that is below 1 (a record built for a larger
+/// kernel is kept, never shrunk): the WGSL module's `sa_kernel_scale(m, r)`. Uploading
+/// `gpu_with_pcf(depth, r)` and filtering with the same r therefore counts the kernel once.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 #[cfg_attr(feature = "bytemuck", derive(bytemuck::Pod, bytemuck::Zeroable))]
@@ -80,8 +83,10 @@ pub struct GpuShadowMap {
     /// [`Bias::constant_depth`](super::Bias::constant_depth): depth units to add to the
     /// receiver's depth at any slope.
     pub constant_depth: f32,
-    /// Zero: pads the record to a multiple of 16 bytes, the alignment of `mat4x4<f32>`.
-    pub pad: u32,
+    /// The PCF radius r (texels) the bias values were computed for: 0 from [`FrameMap::gpu`],
+    /// r from [`FrameMap::gpu_with_pcf`]. It also brings the record to 128 bytes, a multiple
+    /// of 16, the alignment of `mat4x4<f32>`.
+    pub bias_radius: f32,
 }
 
 impl GpuShadowMap {
@@ -131,7 +136,7 @@ impl GpuShadowMap {
             .map(|v| v.to_bits())
             .chain([self.face, self.clip_depth])
             .chain(bias.map(f32::to_bits))
-            .chain([self.pad]);
+            .chain([self.bias_radius.to_bits()]);
         let mut out = [0u8; Self::SIZE];
         for (chunk, w) in out.chunks_exact_mut(4).zip(words) {
             chunk.copy_from_slice(&w.to_le_bytes());
@@ -163,7 +168,7 @@ struct GpuShadowMap {
     slope_scaled_depth: f32,
     texel_extent: vec2<f32>,
     constant_depth: f32,
-    pad: u32,
+    bias_radius: f32,
 }
 ";
 
@@ -217,6 +222,44 @@ impl FrameMap {
         self.world_to_clip_relative_f64(origin, depth).as_mat4()
     }
 
+    /// What rounding to `f32` costs this map, in texels: the largest difference in s or t, over
+    /// the focus body's vertices, between the `f64` map and the GPU's `f32` path, the matrix
+    /// [`FrameMap::world_to_clip_relative`]`(origin, depth)` times the vertex's position
+    /// `p − origin` rounded to `f32` as a vertex buffer holds it, in `f32` arithmetic.
+    /// `origin = DVec3::ZERO` measures the plain [`FrameMap::to_mat4`]. The truth is the map's
+    /// eye → clip matrix at B's eye-space vertices, in which no large number enters.
+    ///
+    /// Near the world origin the loss is the map's own conditioning: strongly warped parts (a
+    /// texel far smaller than a pixel, M_x or M_z near 0) lose most (docs/renderer.md, "Far from
+    /// the origin", tabulates it by scheme). Far from it, the plain matrix loses texels and the
+    /// relative one does not. It costs one 4×4 product per vertex of B: call it when choosing an
+    /// upload path or in a debug overlay, not every frame.
+    #[must_use]
+    pub fn upload_error_texels(&self, origin: impl Into<DVec3>, depth: ClipDepth) -> f64 {
+        let origin = origin.into();
+        let half = f64::from(self.resolution) / 2.0;
+        let truth = self.shadow.matrix();
+        let eye_to_world = self.world_to_eye.inverse();
+        let m32 = self.world_to_clip_relative(origin, depth);
+        self.body()
+            .iter()
+            .map(|p| {
+                let h = truth * p.extend(1.0);
+                let rel = (eye_to_world.transform_point3(*p) - origin).as_vec3();
+                let g = m32 * rel.extend(1.0);
+                let (gx, gy, gw) = (f64::from(g.x), f64::from(g.y), f64::from(g.w));
+                let ds = (gx / gw - h.x / h.w).abs() * half;
+                let dt = (gy / gw - h.y / h.w).abs() * half;
+                // A vertex the f32 path sends to w = 0 or to a NaN has lost the map: infinite.
+                if ds.is_nan() || dt.is_nan() {
+                    f64::INFINITY
+                } else {
+                    ds.max(dt)
+                }
+            })
+            .fold(0.0, f64::max)
+    }
+
     /// [`FrameMap::world_to_clip_relative`] as plain column-major arrays.
     #[must_use]
     pub fn world_to_clip_relative_cols(
@@ -252,7 +295,7 @@ impl FrameMap {
             slope_scaled_depth: bias.slope_scaled_depth as f32,
             texel_extent: pair(bias.texel_extent),
             constant_depth: bias.constant_depth as f32,
-            pad: 0,
+            bias_radius: r as f32,
         }
     }
 
