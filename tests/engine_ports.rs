@@ -11,6 +11,9 @@ mod bevy_cascade;
 #[allow(dead_code)]
 #[path = "../benches/reference/filament_directional.rs"]
 mod filament_directional;
+#[allow(dead_code)]
+#[path = "../benches/reference/threejs_csm.rs"]
+mod threejs_csm;
 
 use bevy_cascade::{
     build_directional_light_cascades, light_rotation_looking_to, Cascade, CascadeShadowConfig,
@@ -506,5 +509,126 @@ fn filament_texel_size_is_both_edges_at_the_world_origin() {
             4.0 / 2046.0,
             10.0 / 2046.0
         );
+    }
+}
+
+/// three.js's CSM (`threejs_csm`) on a camera at the origin looking down −Z, near 1, far 100,
+/// three practical cascades (CSM.js's defaults). By hand: uniform breaks (1 + 99 i/3)/100 = 0.34,
+/// 0.67, logarithmic 100^{i/3}/100 = 0.046416, 0.215443, practical their mean 0.193208, 0.442722.
+/// `CSMFrustum.split` lerps the frustum's edges by them, so the cascades end at view depths
+/// 1 + 99 b = 20.127 6 and 44.829 5 (not b · far = 19.32, 44.27), then 100. `updateShadowBounds`'
+/// square is the larger of the far-plane diagonal 2 √2 D tan θ and the body diagonal from near[2]
+/// to far[0], √(2 tan²θ (n + D)² + (D − n)²), unrounded (Bevy rounds up; the crate's model was a
+/// bounding sphere): at 60° the far-plane diagonal, 32.868 2 for the first cascade and 163.299 3
+/// for the last; at 20° (tan θ = 0.176 327) the body diagonal, 19.839 9 for the first.
+#[test]
+fn threejs_csm_breaks_and_squares_by_hand() {
+    use threejs_csm::{update, Cascade, CsmOptions, PerspectiveCamera, MAX_CASCADES};
+    let run = |fov: f64| {
+        let camera = PerspectiveCamera {
+            fov,
+            aspect: 1.0,
+            near: 1.0,
+            far: 100.0,
+            matrix_world: DMat4::IDENTITY,
+        };
+        let mut out = [Cascade::default(); MAX_CASCADES];
+        update(
+            &camera,
+            DVec3::new(0.3, -0.8, -0.4),
+            &CsmOptions::default(),
+            &mut out,
+        );
+        out
+    };
+    let b1 = 0.5 * (0.34 + 100f64.powf(1.0 / 3.0) / 100.0);
+    let b2 = 0.5 * (0.67 + 100f64.powf(2.0 / 3.0) / 100.0);
+    assert!((b1 - 0.193_208).abs() < 1e-6 && (b2 - 0.442_722).abs() < 1e-6);
+    let (d1, d2) = (1.0 + 99.0 * b1, 1.0 + 99.0 * b2);
+    let out = run(60.0);
+    let want = [(1.0, d1), (d1, d2), (d2, 100.0)];
+    for (c, w) in out.iter().zip(want) {
+        assert!(
+            (c.depths.0 - w.0).abs() < 1e-9 && (c.depths.1 - w.1).abs() < 1e-9,
+            "{:?} vs {w:?}",
+            c.depths
+        );
+    }
+    assert!((d1 - 20.127_6).abs() < 1e-4, "{d1}");
+    let t = 30f64.to_radians().tan();
+    let far_diagonal = |d: f64| 2.0 * 2f64.sqrt() * d * t;
+    assert!(
+        (out[0].width - far_diagonal(d1)).abs() < 1e-9 * d1,
+        "{}",
+        out[0].width
+    );
+    assert!((out[0].width - 32.868_2).abs() < 1e-4, "{}", out[0].width);
+    assert!((out[2].width - 163.299_3).abs() < 1e-4, "{}", out[2].width);
+    // At 20°: the body diagonal is the longer.
+    let t = 10f64.to_radians().tan();
+    let body = (2.0 * t * t * (1.0 + d1).powi(2) + (d1 - 1.0).powi(2)).sqrt();
+    assert!(body > 2.0 * 2f64.sqrt() * d1 * t);
+    let out = run(20.0);
+    assert!(
+        (out[0].width - body).abs() < 1e-9 * body,
+        "{} vs {body}",
+        out[0].width
+    );
+    assert!((body - 19.839_9).abs() < 1e-4, "{body}");
+}
+
+/// three.js's CSM: each cascade's square holds its whole frustum slice (clip x, y in [−1, 1]),
+/// its depth range is [lightNear, lightFar] = [1, 2000] from a light `lightMargin` = 200 beyond
+/// the slice's light-space box, the light travels along the shadow camera's −Z, and the square's
+/// centre lies on whole texels of the light's frame anchored at the world origin
+/// (`updateBefore`'s floor).
+#[test]
+fn threejs_csm_squares_hold_their_slices_and_snap_to_texels() {
+    use threejs_csm::{look_at_rotation, update, Cascade, CsmOptions, PerspectiveCamera};
+    let camera = PerspectiveCamera {
+        fov: 45.0,
+        aspect: 16.0 / 9.0,
+        near: 0.1,
+        far: 1000.0,
+        matrix_world: glam::dcamera::rh::view::look_at_mat4(
+            DVec3::new(3.0, 1.8, 2.0),
+            DVec3::new(0.0, 0.0, -60.0),
+            DVec3::Y,
+        )
+        .inverse(),
+    };
+    let dir = DVec3::new(-0.47, -0.34, 0.81).normalize();
+    let mut out = [Cascade::default(); 4];
+    let options = CsmOptions::default();
+    update(&camera, dir, &options, &mut out);
+    let t = 22.5f64.to_radians().tan();
+    let orientation = look_at_rotation(DVec3::ZERO, dir, DVec3::Y);
+    for c in &out[..3] {
+        let (zn, zf) = c.depths;
+        for z in [zn, zf] {
+            for (sx, sy) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
+                let eye = DVec3::new(sx * z * t * 16.0 / 9.0, sy * z * t, -z);
+                let world = camera.matrix_world.transform_point3(eye);
+                let q = c.clip_from_world * world.extend(1.0);
+                let q = q.truncate() / q.w;
+                assert!(
+                    q.x.abs() <= 1.0 + 1e-9 && q.y.abs() <= 1.0 + 1e-9 && q.z.abs() < 1.0,
+                    "{:?}: {q}",
+                    c.depths
+                );
+                // 200 beyond the slice's light-space box, within 2000 of the light.
+                let depth = (c.view * world.extend(1.0)).z;
+                assert!((-2000.0..=-200.0 + 1e-9).contains(&depth), "{depth}");
+            }
+        }
+        let p = c.clip_from_world * DVec3::ZERO.extend(1.0);
+        let q = c.clip_from_world * dir.extend(1.0);
+        assert!(q.z / q.w > p.z / p.w, "deeper along the light");
+        let texel = c.width / 2048.0;
+        let centre = orientation.transpose().transform_point3(c.position);
+        for v in [centre.x, centre.y] {
+            let n = v / texel;
+            assert!((n - n.round()).abs() < 1e-6, "{v} is {n} texels");
+        }
     }
 }
