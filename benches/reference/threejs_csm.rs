@@ -126,7 +126,7 @@ impl CsmFrustum {
     }
 
     /// `toSpace(cameraMatrix, target)`.
-    pub fn to_space(&self, m: &DMat4) -> CsmFrustum {
+    pub fn in_space(&self, m: &DMat4) -> CsmFrustum {
         CsmFrustum {
             near: self.near.map(|v| apply_matrix4(v, m)),
             far: self.far.map(|v| apply_matrix4(v, m)),
@@ -293,7 +293,7 @@ pub fn update(
         let (left, right, top, bottom) = (-width / 2.0, width / 2.0, width / 2.0, -width / 2.0);
         let texel_width = (right - left) / f64::from(options.shadow_map_size);
         let texel_height = (top - bottom) / f64::from(options.shadow_map_size);
-        let ls = frustum.to_space(&camera_to_light);
+        let ls = frustum.in_space(&camera_to_light);
         let (mut min, mut max) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
         for v in ls.near.iter().chain(&ls.far) {
             min = min.min(*v);
