@@ -6,7 +6,13 @@
 use shadow_aliasing::plot::{render, Format};
 
 fn svg(name: &str) -> String {
-    let dir = std::env::temp_dir().join(format!("figures-r2-{}-{name}", std::process::id()));
+    // One folder per call: two tests rendering the same figure at once must not share it.
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!(
+        "figures-layout-{}-{call}-{name}",
+        std::process::id()
+    ));
     std::fs::create_dir_all(&dir).unwrap();
     let files = render(name, &dir, Format::Svg).unwrap();
     let text = std::fs::read_to_string(&files[0]).unwrap();
@@ -29,6 +35,35 @@ fn martin_tan_fig3_is_not_a_tall_strip() {
     let s = svg("martin-tan-fig3");
     let (w, h) = (attr(&s, "width"), attr(&s, "height"));
     assert!(h / w <= 2.3, "{w} × {h}");
+}
+
+/// The (x, y) of the `<text>` element whose content starts with `label`.
+fn text_position(svg: &str, label: &str) -> (f64, f64) {
+    let at = svg
+        .find(&format!(">{label}"))
+        .unwrap_or_else(|| panic!("no text {label:?}"));
+    let open = svg[..at].rfind("<text").expect("a <text> element");
+    let tag = &svg[open..at];
+    (attr(tag, "x"), attr(tag, "y"))
+}
+
+/// Panels (b) and (c) of martin-tan-fig3 are one row under (a): their titles share a baseline,
+/// (c)'s is at least a third of the figure's width right of (b)'s, and both are below (a)'s.
+#[test]
+fn martin_tan_fig3_panels_b_and_c_are_side_by_side() {
+    let s = svg("martin-tan-fig3");
+    let w = attr(&s, "width");
+    let (a, b, c) = (
+        text_position(&s, "(a)"),
+        text_position(&s, "(b)"),
+        text_position(&s, "(c)"),
+    );
+    assert_eq!(b.1, c.1, "(b) at {b:?}, (c) at {c:?}: not one row");
+    assert!(
+        c.0 - b.0 >= w / 3.0,
+        "(b) at {b:?}, (c) at {c:?}: not side by side"
+    );
+    assert!(b.1 > a.1, "(a) at {a:?} is not above (b) at {b:?}");
 }
 
 #[test]
