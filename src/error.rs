@@ -49,8 +49,8 @@ impl Error {
 /// Formats a number for an error message: the shortest decimal that parses back to the same
 /// `f64`, positional for 10⁻⁵ ≤ |v| < 10¹⁶ (`2`, `0.1`, `-0.00012`) and in exponent form outside
 /// it (`1e300`, `-2.5e-7`), so that no number takes more than 24 characters (positional `{}`
-/// alone would print 1e300 with 301 digits).
-pub(crate) fn fmt_num(v: f64) -> String {
+/// alone would print 1e300 with 301 digits). The command line's messages use it too (docs/cli.md).
+pub fn fmt_num(v: f64) -> String {
     if v.is_nan() {
         "NaN".into()
     } else if v == f64::INFINITY {

@@ -145,6 +145,32 @@ impl LevelChoice {
         self.texel(level) * f64::from(self.image_height) / (2.0 * depth * self.tan_half_fov)
     }
 
+    /// The deepest eye depth that `last_level` covers: the largest `f64` z that
+    /// [`LevelChoice::levels_needed`] accepts as the visible far depth. That is
+    /// [`LevelChoice::level_start`]`(last_level + 1)`, found among the floats themselves (a
+    /// bisection on their bits), since `log₂` and `exp2` round: a far plane at this depth or
+    /// nearer is covered. 0 when no positive depth is covered, `f64::MAX` when every finite
+    /// one is.
+    #[must_use]
+    pub fn deepest_covered(&self) -> f64 {
+        let limit = f64::from(self.last_level) + 1.0;
+        let covers = |z: f64| z.log2() + self.offset <= limit;
+        // Positive floats are ordered as their bits: bisect between one covered and one not.
+        let (mut ok, mut bad) = (0u64, f64::INFINITY.to_bits());
+        if covers(f64::MAX) {
+            return f64::MAX;
+        }
+        while bad - ok > 1 {
+            let mid = ok + (bad - ok) / 2;
+            if covers(f64::from_bits(mid)) {
+                ok = mid;
+            } else {
+                bad = mid;
+            }
+        }
+        f64::from_bits(ok)
+    }
+
     /// The first and last level the visible depths `[z_near, z_far]` need.
     ///
     /// # Errors
@@ -154,15 +180,24 @@ impl LevelChoice {
         let top = z_far.log2() + self.offset;
         if top > f64::from(self.last_level) + 1.0 {
             let needed = top.ceil() - 1.0;
+            // Cutting the far depth helps only where it would stay beyond the near one.
+            let deepest = self.deepest_covered();
+            let cut = if deepest > z_near {
+                format!(
+                    ", or cut the visible depths to {} (depth_range or far)",
+                    fmt_num(deepest)
+                )
+            } else {
+                String::new()
+            };
             return Err(Error::invalid(
                 "last_level",
                 format!(
                     "is {} but the visible depth {} needs level {needed} (radius {}): raise \
-                     last_level to {needed}, or cut the visible depths to {} (depth_range or far)",
+                     last_level to {needed}{cut}",
                     self.last_level,
                     fmt_num(z_far),
                     fmt_num(self.options.unit * (needed + 1.0).exp2()),
-                    fmt_num(self.level_start(self.last_level + 1))
                 ),
             ));
         }

@@ -333,7 +333,10 @@ pub fn clipmap_for_error(
     if !(max_error.is_finite() && max_error > 0.0) {
         return Err(Error::invalid(
             "max_error",
-            format!("must be a finite, positive number of pixels (got {max_error})"),
+            format!(
+                "must be a finite, positive number of pixels (got {})",
+                fmt_num(max_error)
+            ),
         ));
     }
     let (lo, hi) = bias_range(input, options)?;

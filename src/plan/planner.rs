@@ -20,7 +20,7 @@
 use super::allocate::{allocate, allocate_for_error, MapError, MapResolution, Rounding};
 use super::candidates::{candidates, CLIPMAP_RESOLUTION};
 use super::clipmap::{clipmap_for_error, clipmap_for_pool};
-use crate::error::{Error, Result};
+use crate::error::{fmt_num, Error, Result};
 use crate::frame::{frame_into, ClipmapOptions, Frame, FrameInput, FrameMap, FrameScheme};
 use crate::maps::atlas::MAX_ATLAS_ENTRIES;
 
@@ -95,7 +95,10 @@ fn check(goal: Goal) -> Result<()> {
     match goal {
         Goal::MaxError(e) if !(e.is_finite() && e > 0.0) => Err(Error::invalid(
             "max_error",
-            format!("must be a finite, positive number of pixels per texel (got {e})"),
+            format!(
+                "must be a finite, positive number of pixels per texel (got {})",
+                fmt_num(e)
+            ),
         )),
         Goal::Budget { texels: 0, .. } => Err(Error::invalid(
             "budget_texels",
@@ -217,8 +220,9 @@ fn unmet(goal: Goal, rows: &[Candidate]) -> Error {
         Goal::MaxError(e) => Error::invalid(
             "max_error",
             format!(
-                "cannot be met by any candidate (got {e} px): each needs more than 2^30 texels \
-                 along an axis of a map; allow a larger error"
+                "cannot be met by any candidate (got {} px): each needs more than 2^30 texels \
+                 along an axis of a map; allow a larger error",
+                fmt_num(e)
             ),
         ),
         Goal::Budget { texels, max_maps } => {

@@ -56,7 +56,7 @@ mod worst;
 mod zhang;
 
 use image::ImageEncoder;
-pub use options::{Options, MAX_SCALE};
+pub use options::{scale, Options, MAX_SCALE};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::fmt;
@@ -154,10 +154,12 @@ pub enum PlotError {
     #[error("unknown format {0:?} (expected png, svg, both or pdf)")]
     UnknownFormat(String),
     /// [`Format::Pdf`] was asked of a build without the feature `pdf`. Fix: build with it
-    /// (`--features pdf`, or `--features cli,pdf` for the command line).
+    /// (`--features pdf`, or `--features cli,pdf` for the command line, from the clone as the
+    /// README installs it).
     #[error(
-        "PDF output needs the crate's feature `pdf`: build with `--features pdf` \
-         (the command line: `cargo install shadow-aliasing --features cli,pdf`)"
+        "PDF output needs the crate's feature `pdf`: build with `--features pdf` (the command \
+         line, in the clone: `cargo install --path . --features cli,pdf --locked`, or \
+         `cargo run --release --locked --features cli,pdf -- figures --format pdf`)"
     )]
     PdfDisabled,
     /// The output directory could not be created or a file could not be written.

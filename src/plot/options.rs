@@ -3,6 +3,7 @@
 //! (`dpi`, as a PNG `pHYs` chunk).
 
 use super::PlotError;
+use crate::error::fmt_num;
 
 /// Options of the written files; [`Options::default`] is what [`super::render`] uses.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -37,17 +38,12 @@ impl Options {
     /// # Errors
     /// [`PlotError::InvalidOption`] naming the option and its accepted range.
     pub fn validate(&self) -> Result<(), PlotError> {
-        if !(1..=MAX_SCALE).contains(&self.scale) {
-            return Err(PlotError::InvalidOption(format!(
-                "scale {} is outside 1..={MAX_SCALE}: give a whole number from 1 to {MAX_SCALE}",
-                self.scale
-            )));
-        }
+        scale(i64::from(self.scale))?;
         if !(self.dpi.is_finite() && (1.0..=10_000.0).contains(&self.dpi)) {
             return Err(PlotError::InvalidOption(format!(
                 "dpi {} is outside 1..=10000: give the pixels per inch of the printed figure, \
                  for instance 300",
-                self.dpi
+                fmt_num(self.dpi)
             )));
         }
         Ok(())
@@ -57,6 +53,23 @@ impl Options {
     pub(crate) fn pixels_per_metre(&self) -> u32 {
         (self.dpi / 0.0254).round() as u32
     }
+}
+
+/// A scale given as any whole number (the command line reads negative ones too), as
+/// [`Options::scale`].
+///
+/// # Errors
+/// [`PlotError::InvalidOption`] naming `scale` and its range when `v` is outside 1 to
+/// [`MAX_SCALE`].
+pub fn scale(v: i64) -> Result<u32, PlotError> {
+    u32::try_from(v)
+        .ok()
+        .filter(|s| (1..=MAX_SCALE).contains(s))
+        .ok_or_else(|| {
+            PlotError::InvalidOption(format!(
+                "scale {v} is outside 1..={MAX_SCALE}: give a whole number from 1 to {MAX_SCALE}"
+            ))
+        })
 }
 
 /// CRC-32 (ISO-HDLC, as PNG uses) of `data`.

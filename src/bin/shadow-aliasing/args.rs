@@ -116,10 +116,23 @@ pub struct FiguresArgs {
     #[arg(long)]
     pub bare: bool,
     /// Multiply the PNG's pixel size (and the SVG's width and height) by this whole number, 1 to 8.
-    #[arg(long, value_name = "N", default_value_t = 1)]
-    pub scale: u32,
+    ///
+    /// Signed, so that a negative scale reaches the range check instead of clap's "unexpected
+    /// argument".
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 1,
+        allow_hyphen_values = true
+    )]
+    pub scale: i64,
     /// Pixels per inch recorded in the PNG (its pHYs chunk): printed size = pixels / DPI.
-    #[arg(long, value_name = "DPI", default_value_t = 96.0)]
+    #[arg(
+        long,
+        value_name = "DPI",
+        default_value_t = 96.0,
+        allow_hyphen_values = true
+    )]
     pub dpi: f64,
 }
 
@@ -133,7 +146,7 @@ pub enum Format {
     /// PNG and SVG.
     Both,
     /// PDF only (vector, font embedded): needs the crate's feature `pdf`
-    /// (`cargo install shadow-aliasing --features cli,pdf`).
+    /// (in the clone: `cargo install --path . --features cli,pdf --locked`).
     Pdf,
 }
 
@@ -383,47 +396,48 @@ pub struct SceneArgs {
     pub clipmap: Box<ClipmapArgs>,
 }
 
-/// `--partition clipmap`'s options (defaults: Unreal 5's, for a world in metres).
+/// `--partition clipmap`'s options (defaults: Unreal 5's, for a world in metres), each refused
+/// without `--partition clipmap`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct ClipmapArgs {
-    /// The LOD bias b: the chosen level's texel is at most 2^b pixels (Unreal -0.5).
-    #[arg(long = "lod-bias", value_name = "B", allow_hyphen_values = true, default_value_t = -0.5)]
-    pub lod_bias: f64,
-    /// The finest and coarsest levels, level i covering radius 2^(i+1) units (Unreal 6,22).
+    /// The LOD bias b: the chosen level's texel is at most 2^b pixels (default: Unreal's -0.5).
+    #[arg(long = "lod-bias", value_name = "B", allow_hyphen_values = true)]
+    pub lod_bias: Option<f64>,
+    /// The finest and coarsest levels, level i covering radius 2^(i+1) units (default: Unreal's
+    /// 6,22).
     #[arg(long, value_name = "FIRST,LAST", allow_hyphen_values = true, value_parser = parse_list)]
     pub levels: Option<NumList>,
-    /// The world length of a level unit (0.01: metres, Unreal's levels being in centimetres).
-    #[arg(
-        long = "level-unit",
-        value_name = "U",
-        allow_hyphen_values = true,
-        default_value_t = 0.01
-    )]
-    pub level_unit: f64,
-    /// Texels per page side (Unreal 128).
-    #[arg(
-        long = "page-texels",
-        value_name = "P",
-        allow_hyphen_values = true,
-        default_value_t = 128
-    )]
-    pub page_texels: i64,
-    /// Texels per level side (Unreal 16384).
+    /// The world length of a level unit (default 0.01: metres, Unreal's levels being in
+    /// centimetres).
+    #[arg(long = "level-unit", value_name = "U", allow_hyphen_values = true)]
+    pub level_unit: Option<f64>,
+    /// Texels per page side (default: Unreal's 128).
+    #[arg(long = "page-texels", value_name = "P", allow_hyphen_values = true)]
+    pub page_texels: Option<i64>,
+    /// Texels per level side (default: Unreal's 16384).
     #[arg(
         long = "virtual-resolution",
         value_name = "R",
-        allow_hyphen_values = true,
-        default_value_t = 16384
+        allow_hyphen_values = true
     )]
-    pub virtual_resolution: i64,
-    /// The image's height in pixels that the levels are chosen for.
-    #[arg(
-        long = "image-height",
-        value_name = "H",
-        allow_hyphen_values = true,
-        default_value_t = 1080
-    )]
-    pub image_height: i64,
+    pub virtual_resolution: Option<i64>,
+    /// The image's height in pixels that the levels are chosen for (default 1080).
+    #[arg(long = "image-height", value_name = "H", allow_hyphen_values = true)]
+    pub image_height: Option<i64>,
+}
+
+impl ClipmapArgs {
+    /// The options given, by the names their messages use, with whether each is given.
+    pub fn given(&self) -> [(&'static str, bool); 6] {
+        [
+            ("lod_bias", self.lod_bias.is_some()),
+            ("levels", self.levels.is_some()),
+            ("level_unit", self.level_unit.is_some()),
+            ("page_texels", self.page_texels.is_some()),
+            ("virtual_resolution", self.virtual_resolution.is_some()),
+            ("image_height", self.image_height.is_some()),
+        ]
+    }
 }
 
 impl SceneArgs {
@@ -632,6 +646,98 @@ mod tests {
             parse_threads("18446744073709551616000000000000000000000000"),
             Err("must lie in [1, 1024] (got 18446744073709551616000000000000000000000000)".into())
         );
+    }
+
+    /// docs/cli.md: negative numbers are values wherever a number is expected. Every option of
+    /// every subcommand that takes a value, other than the named non-numeric ones, reads `-1`
+    /// as its value: parsed, or refused by its own parser with the value, never clap's
+    /// "unexpected argument".
+    #[test]
+    fn every_numeric_option_takes_a_negative_number() {
+        use clap::CommandFactory;
+        // Options whose values are names or paths, not numbers.
+        const NOT_NUMBERS: [&str; 4] = ["out", "only", "output", "file"];
+        // Each subcommand's required options, then options that others need beside them.
+        let base = |sub: &str| -> Vec<(&'static str, &'static str)> {
+            let view = [("near", "1"), ("far", "100"), ("half-fov", "0.5")];
+            let mut v = view.to_vec();
+            match sub {
+                "warp" => v.extend([("light-dir", "0,-1,0"), ("warp", "uniform")]),
+                "sweep" => v.push(("warp", "uniform")),
+                "plan" => v.extend([
+                    ("light-dir", "0,-1,0"),
+                    ("image-height", "1080"),
+                    ("max-error", "1"),
+                ]),
+                _ => v.clear(),
+            }
+            v
+        };
+        let companions: [(&str, &[(&str, &str)]); 4] = [
+            ("near-hint", &[("far-hint", "1")]),
+            ("far-hint", &[("near-hint", "1")]),
+            ("budget-texels", &[]),
+            ("max-maps", &[("budget-texels", "100")]),
+        ];
+        let cli = Cli::command();
+        let mut checked = Vec::new();
+        for sub in cli.get_subcommands() {
+            let name = sub.get_name();
+            for arg in sub.get_arguments() {
+                let Some(long) = arg.get_long() else { continue };
+                let takes_value = arg.get_action().takes_values();
+                let enumerated = !arg.get_possible_values().is_empty();
+                if !takes_value || enumerated || NOT_NUMBERS.contains(&long) {
+                    continue;
+                }
+                let mut pairs = base(name);
+                let extra = companions
+                    .iter()
+                    .find(|(c, _)| *c == long)
+                    .map_or(&[][..], |(_, e)| *e);
+                if !extra.is_empty() || long == "budget-texels" {
+                    // `--max-error` conflicts with the budget's options.
+                    pairs.retain(|(f, _)| *f != "max-error");
+                }
+                pairs.extend_from_slice(extra);
+                pairs.retain(|(f, _)| *f != long);
+                let mut argv = vec!["shadow-aliasing".to_string(), name.to_string()];
+                for (f, v) in &pairs {
+                    argv.extend([format!("--{f}"), (*v).to_string()]);
+                }
+                argv.extend([format!("--{long}"), "-1".to_string()]);
+                let id = arg.get_id().as_str();
+                match cli.clone().try_get_matches_from(&argv) {
+                    Ok(m) => {
+                        let (_, sm) = m.subcommand().expect("a subcommand");
+                        let raw: Vec<_> = sm.get_raw(id).expect("given").collect();
+                        assert_eq!(raw, ["-1"], "{argv:?}");
+                    }
+                    Err(e) => {
+                        assert_eq!(e.kind(), ErrorKind::ValueValidation, "{argv:?}: {e}");
+                        assert!(e.to_string().contains("-1"), "{argv:?}: {e}");
+                    }
+                }
+                checked.push(format!("{name} --{long}"));
+            }
+        }
+        // The iteration reached the options issue 31 names, and those of every subcommand.
+        for must in [
+            "figures --scale",
+            "figures --dpi",
+            "warp --k",
+            "warp --lod-bias",
+            "warp --levels",
+            "warp --light-dir",
+            "sweep --threads",
+            "plan --max-maps",
+            "plan --image-height",
+        ] {
+            assert!(
+                checked.iter().any(|c| c == must),
+                "{must} not checked: {checked:?}"
+            );
+        }
     }
 
     #[test]

@@ -96,6 +96,9 @@ fn print_bytes(bytes: &[u8]) -> ExitCode {
 }
 
 fn warp(a: &WarpArgs) -> ExitCode {
+    if let Err(e) = crate::scene::clipmap_options_unused(a) {
+        return fail(e);
+    }
     // Equal-error splits are measured on the frame's maps: the scene path, with the frustum
     // alone when no scene is given.
     if a.scene.any()
@@ -255,9 +258,14 @@ fn figures(a: &FiguresArgs) -> ExitCode {
         Format::Both => plot::Format::Both,
         Format::Pdf => plot::Format::Pdf,
     };
+    // `--scale` is read signed, so that a negative one gets the range's message.
+    let scale = match plot::scale(a.scale) {
+        Ok(s) => s,
+        Err(e) => return fail(e),
+    };
     let options = plot::Options {
         bare: a.bare,
-        scale: a.scale,
+        scale,
         dpi: a.dpi,
     };
     if let Err(e) = options.validate() {

@@ -7,10 +7,13 @@ use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
 use crate::scheme::{k, ratio, rule, value_name, Lights, DEFAULT_LAMBDA};
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::SplitScheme;
+use shadow_aliasing::analytic::partition::MAX_PARTITIONS;
+use shadow_aliasing::error::fmt_num;
 use shadow_aliasing::frame::{
     frame, Aabb, Bound, Camera, CascadeSplits, ClipmapOptions, FrameInput, FrameScheme, LevelChoice,
 };
 use shadow_aliasing::maps::{TsmOptions, TsmSearch};
+use shadow_aliasing::plan::candidates::CLIPMAP_RESOLUTION;
 use shadow_aliasing::scheme::face_rule;
 use shadow_aliasing::{Error, LightAngle, ViewFrustum};
 use std::fmt::Write as _;
@@ -452,37 +455,117 @@ fn text(a: &WarpArgs, f: &shadow_aliasing::frame::Frame) -> String {
 }
 
 /// `--levels FIRST,LAST` whose LAST is too fine for the visible depths: the error names the
-/// flag, the LAST that covers them (the frame built again with the coarsest LAST that
-/// `--levels` accepts) and the depth that the given LAST covers.
+/// flag and what to change, each remedy checked before it is advised: the `--levels` that cover
+/// the depths (the frame built with them), or a far depth that LAST covers, rounded down to six
+/// digits so that giving it works, and only where it stays beyond the near depth. Where neither
+/// works, a larger `--level-unit` (each level's radius scales with it).
 fn levels_too_few(input: &FrameInput<'_>, opts: &ClipmapOptions) -> Error {
     let (first, last) = (opts.first_level, opts.last_level);
+    let view = input.camera.view();
+    let (zn, zf) = match input.depth_range {
+        Some((a, b)) => (a.max(view.near()), b.min(view.far())),
+        None => (view.near(), view.far()),
+    };
+    let choice = |o: &ClipmapOptions| {
+        LevelChoice::new(view, input.image_height, input.map_resolution, o).ok()
+    };
+    let builds = |first_level: i32, last_level: i32| {
+        let o = ClipmapOptions {
+            first_level,
+            last_level,
+            ..*opts
+        };
+        frame(&input.scheme(FrameScheme::Clipmap(o))).is_ok()
+    };
+    // The coarsest level the depths need (offset does not depend on LAST), then FIRST raised
+    // where the levels would be more than a frame holds.
     let wide = ClipmapOptions {
         last_level: MAX_LEVEL,
         ..*opts
     };
-    let needed = frame(&input.scheme(FrameScheme::Clipmap(wide)))
-        .ok()
-        .and_then(|f| f.maps().iter().filter_map(|m| m.clipmap_level).max());
-    let remedy = match needed {
-        Some(n) => format!("give --levels {first},{n}"),
-        None => format!("raise LAST above {last}"),
+    let levels = choice(&wide)
+        .and_then(|c| c.levels_needed(zn, zf).ok())
+        .and_then(|(_, l)| {
+            let most = i32::try_from(MAX_PARTITIONS).unwrap_or(i32::MAX);
+            [first, first.max(l - most + 1)]
+                .into_iter()
+                .find(|&f| builds(f, l))
+                .map(|f| format!("give --levels {f},{l}"))
+        });
+    // The deepest far depth LAST covers, rounded down to six significant digits.
+    let cut = choice(opts)
+        .map(|c| round_down_6(c.deepest_covered()))
+        .filter(|&z| z > zn && z > view.near())
+        .map(|z| {
+            format!(
+                "cut the visible depths to {} with --far or --depth-range",
+                fmt_num(z)
+            )
+        });
+    let remedy = match (levels, cut) {
+        (Some(l), Some(c)) => format!("{l}, or {c}"),
+        (Some(l), None) => format!(
+            "{l} (cutting the visible depths cannot help: LAST covers no depth beyond the near \
+             one, {})",
+            fmt_num(zn)
+        ),
+        (None, Some(c)) => c,
+        (None, None) => format!(
+            "no --levels within [-{MAX_LEVEL}, {MAX_LEVEL}] covers them: raise --level-unit \
+             (level i covers radius 2^(i+1) units; got {})",
+            fmt_num(opts.unit)
+        ),
     };
-    let reach = LevelChoice::new(
-        input.camera.view(),
-        input.image_height,
-        input.map_resolution,
-        opts,
-    )
-    .map(|c| format!(" to {}", sig(c.level_start(last + 1))))
-    .unwrap_or_default();
     Error::invalid(
         "--levels",
         format!(
             "has LAST = {last}, too fine to cover the visible depths (each level covers twice the \
-             depths of the one before): {remedy}, or cut the visible depths{reach} with --far or \
-             --depth-range"
+             depths of the one before): {remedy}"
         ),
     )
+}
+
+/// The largest number of six significant digits at most `z` (finite, positive): advice that
+/// rounds up would be refused again when followed.
+fn round_down_6(z: f64) -> f64 {
+    let nearest: f64 = format!("{z:.5e}").parse().unwrap_or(z);
+    if nearest <= z {
+        return nearest;
+    }
+    // Rounded up: one unit of the sixth digit less (its f64 is at most z, as rounding is
+    // monotonic and the decimal lies below z).
+    let text = format!("{z:.5e}");
+    let Some((mantissa, exponent)) = text.split_once('e') else {
+        return z;
+    };
+    let digits = mantissa.replace('.', "").parse::<i64>().unwrap_or(0) - 1;
+    let exponent = exponent.parse::<i32>().unwrap_or(0) - 5;
+    format!("{digits}e{exponent}").parse().unwrap_or(z)
+}
+
+/// `--image-height` of `--partition clipmap` when it is not given.
+const CLIPMAP_IMAGE_HEIGHT: u32 = 1080;
+
+/// The clipmap's options (`--lod-bias`, `--levels`, …) given without `--partition clipmap`:
+/// refused by name, as every other option that the scheme does not use.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming the first such option.
+pub fn clipmap_options_unused(a: &WarpArgs) -> Result<(), Error> {
+    if a.scheme.partition == PartitionName::Clipmap {
+        return Ok(());
+    }
+    match a.scene.clipmap.given().iter().find(|(_, given)| *given) {
+        Some((name, _)) => Err(Error::invalid(
+            name,
+            format!(
+                "is only used by --partition clipmap: drop it, or give --partition clipmap (got \
+                 --partition {})",
+                value_name(&a.scheme.partition)
+            ),
+        )),
+        None => Ok(()),
+    }
 }
 
 /// The largest |level| that `--levels` accepts.
@@ -531,16 +614,26 @@ fn clipmap(a: &ClipmapArgs) -> Result<(ClipmapOptions, u32, u32), Error> {
             }
         },
     };
+    let unreal = ClipmapOptions::UNREAL;
     let opts = ClipmapOptions {
         first_level,
         last_level,
-        lod_bias: a.lod_bias,
-        unit: a.level_unit,
-        page_texels: whole("page_texels", a.page_texels, 1)?,
+        lod_bias: a.lod_bias.unwrap_or(unreal.lod_bias),
+        unit: a.level_unit.unwrap_or(unreal.unit),
+        page_texels: match a.page_texels {
+            Some(p) => whole("page_texels", p, 1)?,
+            None => unreal.page_texels,
+        },
     };
     Ok((
         opts,
-        whole("virtual_resolution", a.virtual_resolution, 3)?,
-        whole("image_height", a.image_height, 1)?,
+        match a.virtual_resolution {
+            Some(r) => whole("virtual_resolution", r, 3)?,
+            None => CLIPMAP_RESOLUTION,
+        },
+        match a.image_height {
+            Some(h) => whole("image_height", h, 1)?,
+            None => CLIPMAP_IMAGE_HEIGHT,
+        },
     ))
 }
