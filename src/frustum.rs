@@ -59,7 +59,9 @@ impl ViewFrustum {
     /// As [`ViewFrustum::new`], `aspect` when it is not finite and positive, `far` when the far
     /// plane's half extent `f tan θ · max(aspect, 1)`, the ratio f/n or n + √(f n) overflows
     /// `f64`, and `near` or `half_fov` when tan θ or the near plane's half extent
-    /// `n tan θ · min(aspect, 1)` is zero or subnormal (the type's domain).
+    /// `n tan θ · min(aspect, 1)` is zero or subnormal (the type's domain); `aspect` instead of
+    /// `far` or `near` when the square frustum's half extent `f tan θ` or `n tan θ` is in the
+    /// domain and the aspect takes it out.
     pub fn with_aspect(near: f64, far: f64, half_fov: f64, aspect: f64) -> Result<Self> {
         let (near, far) = depth_range(near, far)?;
         let half_fov = in_open("half_fov", half_fov, 0.0, std::f64::consts::FRAC_PI_2)?;
@@ -190,15 +192,62 @@ pub(crate) fn depth_range(near: f64, far: f64) -> Result<(f64, f64)> {
 #[inline]
 fn check_extent(near: f64, far: f64, tan_half_fov: f64, aspect: f64) -> Result<()> {
     if !(far * tan_half_fov * aspect.max(1.0)).is_finite() {
-        return Err(far_too_large(far));
+        // The square frustum's half extent is finite: the aspect is the cause.
+        return Err(if (far * tan_half_fov).is_finite() {
+            aspect_out_of_range(aspect, far * tan_half_fov)
+        } else {
+            far_too_large(far)
+        });
     }
     if !(far / near).is_finite() || !(near + crate::numeric::sqrt_fn(near, far)).is_finite() {
         return Err(ratio_too_large(near, far));
     }
     if !(near * tan_half_fov * aspect.min(1.0)).is_normal() {
-        return Err(near_too_small(near, tan_half_fov));
+        return Err(if (near * tan_half_fov).is_normal() {
+            aspect_out_of_range(aspect, near * tan_half_fov)
+        } else {
+            near_too_small(near, tan_half_fov)
+        });
     }
     Ok(())
+}
+
+/// The positive, finite `v` rounded up or down to 3 significant digits: the `f64` nearest that
+/// decimal, which [`fmt_num`] prints as it (an error's advice, rounded inward so that following
+/// it works).
+pub(crate) fn round3(v: f64, up: bool) -> f64 {
+    let e = v.log10().floor();
+    let m = v / 10f64.powf(e) * 100.0;
+    let m = if up { m.ceil() } else { m.floor() };
+    format!("{m}e{}", e - 2.0).parse().unwrap_or(v)
+}
+
+/// An aspect whose half width `extent · aspect` (the far plane's, `extent` = far tan θ, for a
+/// large one; the near plane's, `extent` = near tan θ, for a small one) overflows or is not a
+/// normal `f64`, with the range of aspects that keeps it one (rounded inward to 3 digits).
+#[cold]
+#[inline(never)]
+fn aspect_out_of_range(aspect: f64, extent: f64) -> Error {
+    let (what, bound) = if aspect > 1.0 {
+        (
+            "large: the far plane's half width far tan θ aspect overflows; give aspect at most",
+            round3(f64::MAX / extent, false),
+        )
+    } else {
+        (
+            "small: the near plane's half width near tan θ aspect must be a normal f64; give \
+             aspect at least",
+            round3(f64::MIN_POSITIVE / extent, true),
+        )
+    };
+    Error::invalid(
+        "aspect",
+        format!(
+            "is too {what} {} for this near, far and field of view (got aspect={})",
+            fmt_num(bound),
+            fmt_num(aspect)
+        ),
+    )
 }
 
 #[cold]

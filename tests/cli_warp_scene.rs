@@ -233,3 +233,73 @@ fn cascade_flags_are_named_in_their_errors() {
         assert!(close(&p["split"][0], a) && close(&p["split"][1], b), "{p}");
     }
 }
+
+/// Issue 31 defect 2: the issue's command printed 7 maps, the slice [0.1, 1.778] in front of the
+/// camera without one, and 5 of 8 at far/near = 10¹⁵. Every slice is mapped: the splits are the
+/// hand values n (f/n)^(i/8), 0.1 · 10^(10 i/8), ground box or not.
+#[test]
+fn log_cascades_at_far_near_1e10_map_every_slice() {
+    for extra in [
+        &["--aspect", "1"][..],
+        &["--receivers=-1e9,-1,-1e9,1e9,0,0"][..],
+    ] {
+        let mut args = vec![
+            "warp",
+            "--near",
+            "0.1",
+            "--far",
+            "1e9",
+            "--half-fov",
+            "0.5236",
+            "--light-dir",
+            "0.3,-0.8,-0.4",
+            "--warp",
+            "lispsm",
+            "--partition",
+            "log",
+            "--k",
+            "8",
+            "--json",
+        ];
+        args.extend_from_slice(extra);
+        let v = common::cli::run_json(&args);
+        let parts = v["partitions"].as_array().unwrap();
+        assert_eq!(parts.len(), 8, "{extra:?}");
+        for (i, p) in parts.iter().enumerate() {
+            let a = 0.1 * 10f64.powf(10.0 * i as f64 / 8.0);
+            assert!(close(&p["split"][0], a), "{extra:?} {i}: {}", p["split"]);
+        }
+    }
+}
+
+/// Issue 31 defects 4 and 5: a frustum too thin for the frame was "no map needed" (and `plan`
+/// offered a 0-texel plan); an aspect out of f64's range was blamed on the far or near plane.
+/// Each names `aspect` or `half_fov`, in `warp` and `plan` alike.
+#[test]
+fn degenerate_frusta_are_refused_naming_the_argument() {
+    for (flags, name) in [
+        (["--half-fov", "0.5236", "--aspect", "1e10"], "aspect"),
+        (["--half-fov", "0.5236", "--aspect", "1e-10"], "aspect"),
+        (["--half-fov", "1e-10", "--aspect", "1"], "half_fov"),
+        (["--half-fov", "0.5236", "--aspect", "1e308"], "aspect"),
+        (["--half-fov", "0.5236", "--aspect", "5e-324"], "aspect"),
+    ] {
+        let base = ["--near", "1", "--far", "100", "--light-dir", "0,-1,0"];
+        let mut warp = vec!["warp", "--warp", "uniform"];
+        warp.extend_from_slice(&base);
+        warp.extend_from_slice(&flags);
+        let (_, err) = run_failing(&warp, "");
+        assert!(
+            err.starts_with(&format!("error: {name} is too ")),
+            "{flags:?}: {err}"
+        );
+        let mut plan = vec!["plan", "--image-height", "1080", "--max-error", "1"];
+        plan.extend_from_slice(&base);
+        plan.extend_from_slice(&flags);
+        let (_, err) = run_failing(&plan, "");
+        assert!(
+            err.starts_with(&format!("error: {name} is too ")),
+            "{flags:?}: {err}"
+        );
+    }
+}

@@ -301,14 +301,14 @@ fn k_of(s: &CascadeSplits<'_>) -> usize {
     shadow_aliasing::plan::candidates::splits_name(s).1
 }
 
+/// Issue 31 defect 4: nothing in view is no plan (it was a 0-texel, 0-pixel plan).
 #[test]
-fn nothing_in_view_plans_no_map() {
+fn nothing_in_view_is_refused_naming_the_receivers() {
     let far_away = [Aabb::new([500.0, 0.0, 0.0], [600.0, 1.0, 10.0]).unwrap()];
     let cam = Camera::new(DMat4::IDENTITY, 1.0, 100.0, 0.5, 1.0).unwrap();
     let input = FrameInput::new(cam, DVec3::NEG_Y, 2048, H).receivers(Bound::Boxes(&far_away));
-    let p = plan_among(&input, Goal::MaxError(1.0), Rounding::Whole, &cheap(&input)).unwrap();
-    assert_eq!((p.chosen, p.texels, p.max_error_pixels), (0, 0, 0.0));
-    assert!(p.resolutions.is_empty() && p.frame.is_empty());
+    let r = plan_among(&input, Goal::MaxError(1.0), Rounding::Whole, &cheap(&input));
+    assert!(refused(r, "receivers").contains("nothing to plan"));
 }
 
 fn refused(r: Result<Plan, Error>, name: &str) -> String {

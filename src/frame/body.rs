@@ -11,6 +11,10 @@ use crate::maps::fit::FrustumInLight;
 use crate::maps::lightspace::LightSpace;
 use glam::{DVec3, DVec4};
 
+/// A clipped B whose far depth is below this fraction of its slice's is cut again from the slice
+/// ended just past it ([`Ctx::body`]).
+const REFINE: f64 = 1e-3;
+
 /// The receivers' body: 6 frustum faces + 12 bound planes, a face at most 4 + 12 vertices, at
 /// most 2·18 − 4 = 32 vertices (a margin for points that coincide within the tolerance).
 pub(super) type BodyClip = ConvexBody<18, 18, 48>;
@@ -24,9 +28,17 @@ pub(super) struct Planes {
     pub(super) flat: bool,
 }
 
-/// The frustum's size, the unit of the frame's "no extent" tests (10⁻⁹ of it).
+/// The frustum's size.
 fn frustum_scale(v: &ViewFrustum) -> f64 {
     v.far() * (1.0 + v.tan_half_fov() * (1.0 + v.aspect()))
+}
+
+/// 10⁻⁹ of the size of the frustum's slice that ends at depth `far`: the unit of the frame's
+/// "no extent" tests on that slice's focus body, 10 times the clipper's tolerance. Relative to
+/// the slice, not to the whole frustum: at far/near = 10¹⁰ the nearest cascades are smaller
+/// than 10⁻⁹ of the frustum. Computed as (10⁻⁹ far)(…), finite for every far a frustum holds.
+fn slice_unit(v: &ViewFrustum, far: f64) -> f64 {
+    (1e-9 * far) * (1.0 + v.tan_half_fov() * (1.0 + v.aspect()))
 }
 
 /// The receivers' bound as eye-space planes; `n = 0` for no bound. The bound is flat when it is
@@ -103,15 +115,18 @@ pub(super) struct Body {
     /// B is the slice itself (no receivers' plane cut it).
     pub(super) whole: bool,
     pub(super) focus: Focus,
+    /// The unit of the "no extent" tests on B: 10⁻⁹ of its slice's size (`slice_unit`).
+    pub(super) unit: f64,
 }
 
 impl Ctx<'_, '_> {
     /// B's vertices `pts` in the light space `ls`, into `fl` (in place: a 2 KB value); `false`
-    /// when B is edge-on to the light (no extent across the map or along the warp axis,
-    /// relative to the frustum's size).
+    /// when B is edge-on to the light (no extent across the map or along the warp axis beyond
+    /// `small`, B's [`Body::unit`]).
     pub(super) fn in_light(
         &self,
         pts: &[DVec3],
+        small: f64,
         ls: LightSpace,
         fl: &mut FrustumInLight<MAX_BODY_VERTICES>,
     ) -> Result<bool> {
@@ -126,7 +141,6 @@ impl Ctx<'_, '_> {
             xl = xl.min(q.x);
             xh = xh.max(q.x);
         }
-        let small = 1e-9 * self.scale();
         if xh - xl <= small || fl.delta <= small {
             return Ok(false);
         }
@@ -148,7 +162,7 @@ impl Ctx<'_, '_> {
     pub(super) fn body(&self, a: f64, b: f64, extra: &[DVec4]) -> Result<Body> {
         let sub = self.view.with_depth_range(a, b)?;
         let corners = sub.corners();
-        let tol = self.clip_tol();
+        let tol = self.clip_tol(b);
         let planes = &self.planes.p[..self.planes.n];
         let inside = |p: &DVec3| {
             planes
@@ -161,22 +175,39 @@ impl Ctx<'_, '_> {
                 n: 8,
                 whole: true,
                 focus: Focus::Body,
+                unit: slice_unit(self.view, b),
             };
             body.v[..8].copy_from_slice(&corners);
             return Ok(body);
         }
-        self.body_cut(self.receivers_clip(&corners)?, extra)
+        let mut body = self.body_cut(self.receivers_clip(&corners)?, b, extra)?;
+        // A B far smaller than its slice (a ground box near the camera, far/near = 10¹⁰) is cut
+        // again from the slice ended just past it, at that slice's tolerance and unit: the
+        // clipper's tolerance, 10⁻¹⁰ of the whole slice, would exceed B itself and judge it
+        // empty. Each cut ends the slice at least 1/REFINE nearer: a few cuts at most.
+        let mut end = b;
+        while body.n > 0 {
+            let far = depth_extent(&body.v[..body.n]).1 + 10.0 * self.clip_tol(end);
+            if !(far < REFINE * end && far > a) {
+                break;
+            }
+            end = far;
+            let sub = self.view.with_depth_range(a, end)?;
+            body = self.body_cut(self.receivers_clip(&sub.corners())?, end, extra)?;
+        }
+        Ok(body)
     }
 
-    /// The clipper's tolerance, relative to the frustum's size.
-    fn clip_tol(&self) -> f64 {
-        1e-10 * self.scale()
+    /// The clipper's tolerance on the slice that ends at depth `far`: 10⁻¹⁰ of its size.
+    fn clip_tol(&self, far: f64) -> f64 {
+        0.1 * slice_unit(self.view, far)
     }
 
-    /// The hexahedron `corners` (a slice of the frustum) cut by the receivers' planes.
+    /// The hexahedron `corners` (a slice of the frustum: near face, then far face) cut by the
+    /// receivers' planes.
     pub(super) fn receivers_clip(&self, corners: &[DVec3; 8]) -> Result<BodyClip> {
         let mut cb = BodyClip::hexahedron(corners);
-        let tol = self.clip_tol();
+        let tol = self.clip_tol(-corners[4].z);
         for pl in &self.planes.p[..self.planes.n] {
             if !cb.clip(*pl, tol) {
                 return Err(too_many_faces());
@@ -185,10 +216,11 @@ impl Ctx<'_, '_> {
         Ok(cb)
     }
 
-    /// B from the slice already cut by the receivers' planes (`Ctx::receivers_clip`), cut by
-    /// `extra` as well: the same cuts in the same order as [`Ctx::body`] makes.
-    pub(super) fn body_cut(&self, mut cb: BodyClip, extra: &[DVec4]) -> Result<Body> {
-        let tol = self.clip_tol();
+    /// B from the slice that ends at depth `far` already cut by the receivers' planes
+    /// (`Ctx::receivers_clip`), cut by `extra` as well: the same cuts in the same order as
+    /// [`Ctx::body`] makes.
+    pub(super) fn body_cut(&self, mut cb: BodyClip, far: f64, extra: &[DVec4]) -> Result<Body> {
+        let tol = self.clip_tol(far);
         for pl in extra {
             if !cb.clip(*pl, tol) {
                 return Err(too_many_faces());
@@ -199,13 +231,14 @@ impl Ctx<'_, '_> {
             n: 0,
             whole: false,
             focus: Focus::Body,
+            unit: slice_unit(self.view, far),
         };
         let n = cb.vertices(tol, &mut body.v).ok_or_else(|| {
             Error::Degenerate("the focus body has more vertices than the frame holds".into())
         })?;
         body.n = n;
         let (len, width, thick) = extents(&body.v[..n]);
-        let small = 1e-9 * self.scale();
+        let small = body.unit;
         body.focus = if self.planes.flat {
             if width <= small || len <= small {
                 Focus::Empty

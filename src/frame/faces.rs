@@ -58,7 +58,7 @@ impl Ctx<'_, '_> {
         // B of the whole visible range (its extent along the light is every part's depth range)
         // and its clipper, cut by the receivers once for every part (each part adds its prism).
         let receivers = self.receivers_clip(&view.corners())?;
-        let whole = self.body_cut(receivers, &[])?;
+        let whole = self.body_cut(receivers, zf, &[])?;
         if whole.focus == Focus::Empty || whole.n == 0 {
             return Ok(());
         }
@@ -81,6 +81,7 @@ impl Ctx<'_, '_> {
                     face,
                     quad: face.vertices_with(&view, tan, ta, a, b),
                     depths: (a, b),
+                    far: zf,
                     spaces: &spaces,
                 };
                 out.push_with(|dst| self.face_part(&part, &receivers, (y_lo, y_hi), rule, dst))?;
@@ -105,11 +106,12 @@ impl Ctx<'_, '_> {
             face,
             quad,
             depths: (a, b),
+            far,
             spaces,
         } = *part;
         let l = self.l;
         let prism = quad_prism(&quad, l);
-        let body = self.body_cut(*receivers, prism.as_slice())?;
+        let body = self.body_cut(*receivers, far, prism.as_slice())?;
         if body.focus == Focus::Empty || body.n == 0 {
             return Ok(Built::None(Focus::Empty));
         }
@@ -117,7 +119,7 @@ impl Ctx<'_, '_> {
         // Any light space with y toward the light serves the casters' prism and depth.
         let ls = light_space_unit(LightDir::from_unit_unchecked(l), DVec3::NEG_Z);
         let mut fl = FrustumInLight::blank(ls);
-        if !self.in_light(pts, ls, &mut fl)? {
+        if !self.in_light(pts, body.unit, ls, &mut fl)? {
             return Ok(Built::None(Focus::EdgeOn));
         }
         let mut y_hi = y_hi;
@@ -190,6 +192,8 @@ struct FacePart<'s> {
     face: Face,
     quad: [DVec3; 4],
     depths: (f64, f64),
+    /// The far depth of the visible range (B's slice).
+    far: f64,
     spaces: &'s FaceSpaces,
 }
 

@@ -3,7 +3,7 @@
 use super::MAX_BOUND_PLANES;
 use crate::analytic::partition::SplitScheme;
 use crate::error::{fmt_num, Error, Result};
-use crate::frustum::ViewFrustum;
+use crate::frustum::{round3, ViewFrustum};
 use crate::maps::faces::FaceWarp;
 use crate::maps::{TsmOptions, WarpRule};
 use glam::{DMat3, DMat4, DVec3, DVec4, Mat4};
@@ -298,11 +298,13 @@ pub struct FrameInput<'a> {
     pub scheme: FrameScheme<'a>,
     /// Where warps put their centre of projection.
     pub centre: WarpCentre,
-    /// Measure each map's error over its focus body (the default). `false` skips the
-    /// measurement: [`FrameMap::error`](super::FrameMap::error) is then `None` and the figures'
-    /// fields hold +∞ (no bound known), unless the frame measured anyway to build the map (face
-    /// partitions fit each part by its measured error; equal-error splits are placed by it). The
-    /// matrices are the same bit for bit either way.
+    /// Report each map's error over its focus body (the default). `false` leaves the figures
+    /// out: [`FrameMap::error`](super::FrameMap::error) is then `None` and the figures' fields
+    /// hold +∞ (no bound known), unless the frame measured to build the map (face partitions fit
+    /// each part by its measured error; equal-error splits are placed by it). The frame
+    /// evaluates the map at B's vertices either way, since that is also its check that the map
+    /// is regular there: whether a frame is built, and its matrices bit for bit, do not depend
+    /// on `measure`.
     pub measure: bool,
 }
 
@@ -384,6 +386,74 @@ impl<'a> FrameInput<'a> {
                 } | FrameScheme::Stable(CascadeSplits::EqualError { .. })
             )
     }
+}
+
+/// The frame resolves extents down to 10⁻⁹ of a slice's size (`frame/body.rs`): a frustum
+/// whose narrowest cross-section (2 tan θ min(aspect, 1) per unit depth) or whose depth is below
+/// [`MIN_PROPORTION`] of its size (1 + tan θ (1 + aspect) per unit depth) is too thin for it to
+/// tell a body in view from none.
+pub(super) const MIN_PROPORTION: f64 = 1e-6;
+
+/// Whether the frustum of `tan θ` and `aspect` is within the frame's resolution
+/// ([`MIN_PROPORTION`]).
+fn proportions_ok(t: f64, aspect: f64) -> bool {
+    let size = MIN_PROPORTION * (1.0 + t * (1.0 + aspect));
+    2.0 * t * aspect.min(1.0) >= size && 1.0 >= size
+}
+
+/// The camera's frustum within what the frame resolves ([`MIN_PROPORTION`]): an error naming
+/// `half_fov` (when even a square frustum of it is too thin or too wide) or `aspect`, with the
+/// range that is resolved.
+pub(super) fn check_proportions(view: &ViewFrustum) -> Result<()> {
+    let (t, a) = (view.tan_half_fov(), view.aspect());
+    if proportions_ok(t, a) {
+        return Ok(());
+    }
+    Err(proportions_error(t, a, view.half_fov()))
+}
+
+#[cold]
+#[inline(never)]
+fn proportions_error(t: f64, a: f64, half_fov: f64) -> Error {
+    let why = "the frame tells a body in view from none down to 10⁻⁹ of the frustum's size, so \
+               its narrowest cross-section and its depth must be at least 10⁻⁶ of that size";
+    if proportions_ok(t, 1.0) {
+        // 2 t a ≥ p (1 + t + t a) for a < 1; 2 t ≥ p (1 + t (1 + a)) and 1 ≥ p (1 + t (1 + a))
+        // for a > 1 (p = MIN_PROPORTION), each bound rounded inward.
+        let p = MIN_PROPORTION;
+        let lo = round3(p * (1.0 + t) / (t * (2.0 - p)), true);
+        let hi = round3(
+            ((2.0 * t / p - 1.0) / t - 1.0).min((1.0 / p - 1.0) / t - 1.0),
+            false,
+        );
+        return Error::invalid(
+            "aspect",
+            format!(
+                "is too {} for this field of view: {why}; give aspect within [{}, {}] at \
+                 half_fov {} (got aspect={})",
+                if a < 1.0 { "small" } else { "large" },
+                fmt_num(lo),
+                fmt_num(hi),
+                fmt_num(half_fov),
+                fmt_num(a)
+            ),
+        );
+    }
+    // For a square frustum: 2 t ≥ p (1 + 2 t) and 1 ≥ p (1 + 2 t).
+    let p = MIN_PROPORTION;
+    let lo = round3((p / (2.0 - 2.0 * p)).atan(), true);
+    let hi = round3(((1.0 / p - 1.0) / 2.0).atan(), false);
+    Error::invalid(
+        "half_fov",
+        format!(
+            "is too {}: {why}; give half_fov within [{}, {}] radians (at aspect 1; an aspect far \
+             from 1 narrows it) (got half_fov={})",
+            if t < 1.0 { "small" } else { "large" },
+            fmt_num(lo),
+            fmt_num(hi),
+            fmt_num(half_fov)
+        ),
+    )
 }
 
 /// The visible depth range: the camera's, cut to `[z_min, z_max]`.

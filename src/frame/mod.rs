@@ -84,6 +84,7 @@ mod faces;
 mod input;
 mod output;
 mod rules;
+mod stable_splits;
 mod upload;
 mod wgsl;
 
@@ -104,7 +105,7 @@ use crate::maps::WarpRule;
 use body::{receiver_planes, Planes};
 use equal_error::SliceMap;
 use glam::DVec3;
-use input::{validate_casters, visible_range};
+use input::{check_proportions, validate_casters, visible_range};
 
 /// The largest number of vertices of a focus body (a frustum slice cut by up to 6 planes has at
 /// most 2·12 − 4 = 20; the rest is room for a polytope bound's extra planes).
@@ -134,7 +135,8 @@ struct Slice {
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] naming `light_dir_world`, `map_resolution` (< 3), `image_height`
-/// (0), `depth_range` (not finite, z_min ≥ z_max, or no overlap with the camera's [near, far]),
+/// (0), `half_fov` or `aspect` (a frustum whose narrowest cross-section or depth is below 10⁻⁶ of
+/// its size, too thin for the frame's 10⁻⁹ test of what is in view), `depth_range` (not finite, z_min ≥ z_max, or no overlap with the camera's [near, far]),
 /// `receivers`/`casters` (a bad box, too many planes — more than [`MAX_FACE_BOUND_PLANES`] with
 /// face partitions — a polytope unbounded toward the light; for receivers also an empty list of
 /// boxes, while an empty list of casters is no caster; for casters also a bound reaching so far
@@ -186,6 +188,7 @@ fn fill(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
     if input.image_height == 0 {
         return Err(Error::invalid("image_height", "must be at least 1 pixel"));
     }
+    check_proportions(&cam.view)?;
     let l = cam.world_to_eye.transform_vector3(lw).normalize();
     out.light_dir_eye = l;
     let sin_gamma = (l.x * l.x + l.y * l.y).sqrt();

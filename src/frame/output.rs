@@ -371,15 +371,13 @@ impl Ctx<'_, '_> {
         prism: Option<&Prism>,
         dst: &'d mut Option<FrameMap>,
     ) -> Result<&'d mut FrameMap> {
-        let singular =
-            || Error::Degenerate("the map is singular at a vertex of the focus body".into());
-        let err = match self.input.measures() {
-            true => Some(
-                vertex_max(&shadow.matrix(), self.l, self.view.tan_half_fov(), pts)
-                    .ok_or_else(singular)?,
-            ),
-            false => None,
-        };
+        // Measured whether or not the figures are reported: the measurement is also the check
+        // that the map is regular at every vertex of B, and whether a frame is built must not
+        // depend on `measure` (a map it refuses has a zero texel and NaN bias unmeasured).
+        let err = vertex_max(&shadow.matrix(), self.l, self.view.tan_half_fov(), pts).ok_or_else(
+            || Error::Degenerate("the map is singular at a vertex of the focus body".into()),
+        )?;
+        let err = self.input.measures().then_some(err);
         self.finish_measured(shadow, err, pts, s, focus, &[], prism, dst)
     }
 

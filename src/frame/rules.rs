@@ -49,7 +49,10 @@ impl Ctx<'_, '_> {
         };
         let ls = light_space_unit(LightDir::from_unit_unchecked(l), rule_axis(l, rule));
         let mut fl = FrustumInLight::blank(ls);
-        if !self.in_light(pts, ls, &mut fl)? {
+        // A whole slice is a frustum with volume, never edge-on: where its extents are below
+        // the unit the frustum is the cause, and the builders decide (as the frustum-only
+        // builder does) whether its map can be represented.
+        if !self.in_light(pts, body.unit, ls, &mut fl)? && !body.whole {
             return Ok(Built::None(Focus::EdgeOn));
         }
         let mut focus = body.focus;
@@ -136,7 +139,10 @@ impl Ctx<'_, '_> {
         let l = self.l;
         let ls = light_space_unit(LightDir::from_unit_unchecked(l), DVec3::NEG_Z);
         let mut fl = FrustumInLight::blank(ls);
-        if !self.in_light(pts, ls, &mut fl)? {
+        // A whole slice is a frustum with volume, never edge-on: where its extents are below
+        // the unit the frustum is the cause, and the builders decide (as the frustum-only
+        // builder does) whether its map can be represented.
+        if !self.in_light(pts, body.unit, ls, &mut fl)? && !body.whole {
             return Ok(Built::None(Focus::EdgeOn));
         }
         let focus = opts.focus * (f_b - n_b) / (s.cover.1 - s.cover.0);

@@ -123,7 +123,8 @@ fn check(goal: Goal) -> Result<()> {
 /// `rounding` (a multiple of 0), or any argument of the input the frame refuses (its first
 /// candidate, a single uniform map, is built first and its error returned); `max_error` when no
 /// candidate can meet it, `budget_texels` when no candidate fits it (the message gives the least
-/// budget that would).
+/// budget that would); `receivers` when no candidate builds a map (the receivers are out of
+/// view or edge-on to the light: nothing to plan).
 pub fn plan(input: &FrameInput<'_>, goal: Goal, rounding: Rounding) -> Result<Plan> {
     plan_among(input, goal, rounding, &candidates(input))
 }
@@ -175,6 +176,14 @@ pub fn plan_among(
                 (*scheme, size(&cur, goal, rounding, input.image_height))
             }
         };
+        // No map: no plan (a 0-texel plan is not one).
+        let sized = sized.and_then(|s| {
+            if s.0.maps == 0 {
+                Err(nothing_to_plan())
+            } else {
+                Ok(s)
+            }
+        });
         let outcome = sized.as_ref().map(|(m, _)| *m).map_err(Clone::clone);
         if let Ok((m, res)) = sized {
             // Fewest texels then least error for a target; least error then fewest texels for
@@ -193,6 +202,9 @@ pub fn plan_among(
         rows.push(Candidate { scheme, outcome });
     }
     let Some((chosen, frame, resolutions)) = best else {
+        if rows.iter().all(|r| r.outcome == Err(nothing_to_plan())) {
+            return Err(nothing_to_plan());
+        }
         return Err(unmet(goal, &rows));
     };
     let m = rows[chosen].outcome.as_ref().map_or(
@@ -212,6 +224,15 @@ pub fn plan_among(
         texels: m.texels,
         frame,
     })
+}
+
+/// A candidate whose frame builds no map: the receivers are out of view or edge-on to the light.
+fn nothing_to_plan() -> Error {
+    Error::invalid(
+        "receivers",
+        "need no map (they are out of view or edge-on to the light): there is nothing to plan; \
+         check the receivers' boxes and the camera",
+    )
 }
 
 /// The error when no candidate meets the goal.
