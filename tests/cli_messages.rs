@@ -35,6 +35,25 @@ fn plan<'a>(extra: &[&'a str]) -> Vec<&'a str> {
     v
 }
 
+/// `warp` at n = 1, f = 100, θ = 0.5, the light straight down, unwarped, then `extra`.
+fn warp<'a>(extra: &[&'a str]) -> Vec<&'a str> {
+    let mut v = vec![
+        "warp",
+        "--near",
+        "1",
+        "--far",
+        "100",
+        "--half-fov",
+        "0.5",
+        "--light-dir",
+        "0,-1,0",
+        "--warp",
+        "uniform",
+    ];
+    v.extend_from_slice(extra);
+    v
+}
+
 /// docs/cli.md: numbers in messages are the shortest decimal that round-trips, in exponent form
 /// below 10⁻⁵ and from 10¹⁶. The expected strings are written by hand.
 #[test]
@@ -56,6 +75,15 @@ fn numbers_in_messages_have_the_docs_format() {
         (
             vec!["figures", "--out", out, "--dpi", "10000.5"],
             "dpi 10000.5 is outside",
+        ),
+        (
+            warp(&["--receivers", "1e300,0,0,0,1,1.00000001"]),
+            "(got 1e300,0,0,0,1,1.00000001)",
+        ),
+        (warp(&["--bevy", "1e-20,0.1,10,150,0.2"]), "(got 1e-20)"),
+        (
+            warp(&["--partition", "clipmap", "--levels", "6.5,1e20"]),
+            "got 6.5,1e20)",
         ),
     ] {
         let err = refused(&args);

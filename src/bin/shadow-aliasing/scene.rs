@@ -30,7 +30,7 @@ fn boxes(list: &[[f64; 6]], name: &'static str) -> Result<Vec<Aabb>, Error> {
                     name,
                     format!(
                         "boxes must have MINX ≤ MAXX, MINY ≤ MAXY, MINZ ≤ MAXZ (got {})",
-                        b.map(sig).join(",")
+                        b.map(fmt_num).join(",")
                     ),
                 )
             })
@@ -214,7 +214,7 @@ pub fn warp_scene(a: &WarpArgs) -> Result<String, Error> {
                 "bevy",
                 format!(
                     "needs a whole number of cascades K in [1, 16] first (got {})",
-                    sig(kb)
+                    fmt_num(kb)
                 ),
             ));
         }
@@ -608,7 +608,7 @@ fn clipmap(a: &ClipmapArgs) -> Result<(ClipmapOptions, u32, u32), Error> {
                     format!(
                         "needs FIRST,LAST, two whole numbers in [-{MAX_LEVEL}, {MAX_LEVEL}], FIRST \
                          no larger than LAST (Unreal 6,22; got {})",
-                        l.0.iter().map(|v| sig(*v)).collect::<Vec<_>>().join(",")
+                        l.0.iter().map(|v| fmt_num(*v)).collect::<Vec<_>>().join(",")
                     ),
                 ))
             }
