@@ -6,7 +6,9 @@
 //!   `Vec3A`/`Mat4` as Bevy), and the per-view body of `build_directional_light_cascades` (the
 //!   light's `Mat4::from_quat`, its transpose, `light_from_world * world_from_view`, the near
 //!   bounds `[minimum_distance, (1 − overlap) · bounds…]`);
-//! - `crates/bevy_camera/src/projection.rs`, `PerspectiveProjection::get_frustum_corners`.
+//! - `crates/bevy_camera/src/projection.rs`, `PerspectiveProjection::get_frustum_corners`;
+//! - `calculate_cascade_bounds` (bevy_light's cascade.rs), the far bounds of
+//!   `CascadeShadowConfigBuilder` (examples/engine_defaults.rs builds Bevy's default config).
 //!
 //! Differences, none of which changes a value: the ECS queries are gone (one light, one view);
 //! the light's rotation is passed as Bevy's `GlobalTransform::rotation()` would return it; the
@@ -72,6 +74,28 @@ pub struct CascadeShadowConfig {
     pub overlap_proportion: f32,
     /// The (positive) distance to the near boundary of the first cascade.
     pub minimum_distance: f32,
+}
+
+/// Bevy's `calculate_cascade_bounds(num_cascades, nearest_bound, shadow_maximum_distance)`
+/// (`crates/bevy_light/src/cascade.rs`, used by `CascadeShadowConfigBuilder::build`): far bounds
+/// `nearest_bound · base^i`, `base = (maximum/nearest)^{1/(n−1)}`, in f32 (`ops::powf` is
+/// `f32::powf` without Bevy's `libm` feature); `[maximum]` for one cascade. Into a fixed array
+/// (Bevy collects a `Vec`); `num_cascades` is 1..=4.
+pub fn calculate_cascade_bounds(
+    num_cascades: usize,
+    nearest_bound: f32,
+    shadow_maximum_distance: f32,
+) -> [f32; 4] {
+    let mut bounds = [0.0; 4];
+    if num_cascades == 1 {
+        bounds[0] = shadow_maximum_distance;
+        return bounds;
+    }
+    let base = (shadow_maximum_distance / nearest_bound).powf(1.0 / (num_cascades - 1) as f32);
+    for (i, b) in bounds.iter_mut().enumerate().take(num_cascades) {
+        *b = nearest_bound * base.powf(i as f32);
+    }
+    bounds
 }
 
 /// The per-view body of `build_directional_light_cascades` for one light: fills
