@@ -116,9 +116,8 @@ pub struct FiguresArgs {
     #[arg(long)]
     pub bare: bool,
     /// Multiply the PNG's pixel size (and the SVG's width and height) by this whole number, 1 to 8.
-    ///
-    /// Signed, so that a negative scale reaches the range check instead of clap's "unexpected
-    /// argument".
+    // Signed, so that a negative scale reaches the range check instead of clap's "unexpected
+    // argument".
     #[arg(
         long,
         value_name = "N",
@@ -400,28 +399,30 @@ pub struct SceneArgs {
 /// without `--partition clipmap`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct ClipmapArgs {
-    /// The LOD bias b: the chosen level's texel is at most 2^b pixels (default: Unreal's -0.5).
+    /// With --partition clipmap: the LOD bias b, the chosen level's texel being at most 2^b
+    /// pixels (default: Unreal's -0.5).
     #[arg(long = "lod-bias", value_name = "B", allow_hyphen_values = true)]
     pub lod_bias: Option<f64>,
-    /// The finest and coarsest levels, level i covering radius 2^(i+1) units (default: Unreal's
-    /// 6,22).
+    /// With --partition clipmap: the finest and coarsest levels, level i covering radius
+    /// 2^(i+1) units (default: Unreal's 6,22).
     #[arg(long, value_name = "FIRST,LAST", allow_hyphen_values = true, value_parser = parse_list)]
     pub levels: Option<NumList>,
-    /// The world length of a level unit (default 0.01: metres, Unreal's levels being in
-    /// centimetres).
+    /// With --partition clipmap: the world length of a level unit (default 0.01: metres,
+    /// Unreal's levels being in centimetres).
     #[arg(long = "level-unit", value_name = "U", allow_hyphen_values = true)]
     pub level_unit: Option<f64>,
-    /// Texels per page side (default: Unreal's 128).
+    /// With --partition clipmap: texels per page side (default: Unreal's 128).
     #[arg(long = "page-texels", value_name = "P", allow_hyphen_values = true)]
     pub page_texels: Option<i64>,
-    /// Texels per level side (default: Unreal's 16384).
+    /// With --partition clipmap: texels per level side (default: Unreal's 16384).
     #[arg(
         long = "virtual-resolution",
         value_name = "R",
         allow_hyphen_values = true
     )]
     pub virtual_resolution: Option<i64>,
-    /// The image's height in pixels that the levels are chosen for (default 1080).
+    /// With --partition clipmap: the image's height in pixels that the levels are chosen for
+    /// (default 1080).
     #[arg(long = "image-height", value_name = "H", allow_hyphen_values = true)]
     pub image_height: Option<i64>,
 }
