@@ -3,6 +3,13 @@
 //! Filament's light frame once |cos γ| ≥ 0.9997. Expected values are the engines' formulas by
 //! hand and properties of a perspective map, not the builders' arithmetic.
 
+#[allow(dead_code)]
+#[path = "../benches/reference/bevy_cascade.rs"]
+mod bevy_cascade;
+#[allow(dead_code)]
+#[path = "../benches/reference/threejs_csm.rs"]
+mod threejs_csm;
+
 use glam::DVec3;
 use shadow_aliasing::maps::{light_space, n_prime_for, warp, WarpRule};
 use shadow_aliasing::measure::frustum_max;
@@ -340,4 +347,150 @@ fn filaments_centre_texel_size_is_not_the_texel_size_over_b() {
             }
         }
     }
+}
+
+/// docs/planning.md's engines' table measures each engine's own matrices (the ports), not the
+/// crate's model of them (examples/engine_defaults.rs). Its scene: a camera 1.8 m above the
+/// ground looking at (0, 0, −60) (pitch φ = atan(1.8/60)), 45° vertical field of view (t =
+/// tan 22.5°), 16:9 (a), near 0.1, far 1000, 1080 pixels; B = the ground box ∩ the frustum,
+/// whose nearest view depth is where the frustum's bottom plane meets the ground,
+/// z₀ = 1.8/(sin φ + t cos φ) = 4.0539. An orthographic square of side w over N texels has the
+/// error (w/N) · 1080/(2 z t) at view depth z, largest at the slice's nearest point of B. By hand:
+///
+/// - Bevy (cascades ending at 10 · 15^{i/3}, the next starting at 0.8 of the previous end): the
+///   second cascade, [8, 24.662], has `calculate_cascade`'s square ⌈2 · 24.662 t √(1 + a²)⌉ = 42
+///   (the far-plane diagonal 41.67, rounded up), so (42/2048) · 1080/(2 · 8 t) = 3.342 px; the
+///   others give 2.67, 3.32, 3.32. The crate's model (a bounding sphere plus a texel) gave 3.319.
+/// - three.js (3 practical cascades): the first ends at 0.1 + 999.9 b₁,
+///   b₁ = ((0.1 + 999.9/3)/1000 + 0.1 · 10⁴ᐟ³/1000)/2, and holds all of B (the ground ends at
+///   145); its square is its far-plane diagonal 2 D₁ t √(1 + a²) = 283.6, unrounded, so
+///   (283.6/2048) · 1080/(2 z₀ t) = 44.54 px. The crate's model gave 45.21.
+///
+/// The errors are measured from the ports' matrices with the crate's kernel
+/// (`measure::vertex::vertex_max`) over the crate's B of each slice, as the example does.
+#[test]
+fn engine_defaults_are_the_engines_own_squares() {
+    use shadow_aliasing::frame::{
+        frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme,
+    };
+    use shadow_aliasing::measure::vertex::vertex_max;
+    let eye = DVec3::new(0.0, 1.8, 0.0);
+    let view = glam::dcamera::rh::view::look_at_mat4(eye, DVec3::new(0.0, 0.0, -60.0), DVec3::Y);
+    let (t, a) = (22.5f64.to_radians().tan(), 16.0 / 9.0);
+    let camera = Camera::new(view, 0.1, 1000.0, 22.5f64.to_radians(), a).unwrap();
+    let ground = Aabb::new(
+        DVec3::new(-150.0, -1.0, -145.0),
+        DVec3::new(150.0, 0.0, 5.0),
+    )
+    .unwrap();
+    // The example's sun at 45°, 30° to the side (an orthographic square's error does not depend
+    // on the light).
+    let (e, s) = (45f64.to_radians(), 30f64.to_radians());
+    let light = DVec3::new(-s.sin() * e.cos(), -e.sin(), s.cos() * e.cos());
+    let input = FrameInput::new(camera, light, 2048, 1080)
+        .receivers(Bound::Boxes(std::slice::from_ref(&ground)))
+        .casters(Bound::Boxes(std::slice::from_ref(&ground)));
+    let l_eye = view.transform_vector3(light).normalize();
+    let measure = |world_to_clip: glam::DMat4, body: &[DVec3]| {
+        let m = world_to_clip * view.inverse();
+        let e = vertex_max(&m, l_eye, t, body).unwrap();
+        e.max_mx.max(e.max_mz) * 1080.0 / 2048.0
+    };
+    let phi = (1.8f64 / 60.0).atan();
+    let z0 = 1.8 / (phi.sin() + t * phi.cos());
+    assert!((z0 - 4.0539).abs() < 1e-4, "{z0}");
+
+    // Bevy.
+    let bounds = bevy_cascade::calculate_cascade_bounds(4, 10.0, 150.0);
+    let model = frame(&input.scheme(FrameScheme::Stable(CascadeSplits::Bevy {
+        k: 4,
+        minimum_distance: 0.1,
+        maximum_distance: 150.0,
+        first_far_bound: 10.0,
+        overlap_proportion: 0.2,
+    })))
+    .unwrap();
+    let mut cascades = [bevy_cascade::Cascade::default(); 4];
+    bevy_cascade::build_directional_light_cascades(
+        bevy_cascade::light_rotation_looking_to(light.as_vec3()),
+        view.inverse().as_mat4(),
+        &bevy_cascade::PerspectiveProjection {
+            fov: 45f32.to_radians(),
+            aspect_ratio: a as f32,
+        },
+        &bevy_cascade::CascadeShadowConfig {
+            bounds,
+            count: 4,
+            overlap_proportion: 0.2,
+            minimum_distance: 0.1,
+        },
+        2048,
+        &mut cascades,
+    );
+    assert_eq!(model.len(), 4);
+    let diameter = (2.0 * f64::from(bounds[1]) * t * (1.0 + a * a).sqrt()).ceil();
+    assert_eq!(diameter, 42.0);
+    let hand = diameter / 2048.0 * 1080.0 / (2.0 * 8.0 * t);
+    assert!((hand - 3.342).abs() < 5e-4, "{hand}");
+    let bevy = model
+        .maps()
+        .iter()
+        .zip(&cascades)
+        .map(|(m, c)| measure(c.clip_from_world.as_dmat4(), m.body()))
+        .fold(0.0, f64::max);
+    assert!((bevy - hand).abs() < 1e-5 * hand, "Bevy {bevy} vs {hand}");
+    assert!(
+        (model_error(&model) - bevy).abs() > 0.01,
+        "the model is not the engine"
+    );
+
+    // three.js.
+    use threejs_csm as tj;
+    let mut csm = [tj::Cascade::default(); tj::MAX_CASCADES];
+    tj::update(
+        &tj::PerspectiveCamera {
+            fov: 45.0,
+            aspect: a,
+            near: 0.1,
+            far: 1000.0,
+            matrix_world: view.inverse(),
+        },
+        light,
+        &tj::CsmOptions::default(),
+        &mut csm,
+    );
+    let b1 = 0.5 * ((0.1 + 999.9 / 3.0) / 1000.0 + 0.1 * 1e4f64.powf(1.0 / 3.0) / 1000.0);
+    let d1 = 0.1 + 999.9 * b1;
+    let width = 2.0 * d1 * t * (1.0 + a * a).sqrt();
+    assert!(
+        (csm[0].width - width).abs() < 1e-9 * width,
+        "{} vs {width}",
+        csm[0].width
+    );
+    let hand = width / 2048.0 * 1080.0 / (2.0 * z0 * t);
+    assert!((hand - 44.54).abs() < 5e-3, "{hand}");
+    let planes = [0.1, d1, csm[1].depths.1, csm[2].depths.1];
+    let model = frame(&input.scheme(FrameScheme::Stable(CascadeSplits::Distances {
+        planes: &planes,
+        overlap: 0.0,
+    })))
+    .unwrap();
+    assert_eq!(model.len(), 1, "B lies in the first cascade");
+    let three = measure(csm[0].clip_from_world, model.maps()[0].body());
+    assert!(
+        (three - hand).abs() < 1e-6 * hand,
+        "three.js {three} vs {hand}"
+    );
+    assert!(
+        (model_error(&model) - three).abs() > 0.5,
+        "the model is not the engine"
+    );
+}
+
+/// The largest error of a frame's maps (the crate's model of an engine).
+fn model_error(f: &shadow_aliasing::frame::Frame) -> f64 {
+    f.maps()
+        .iter()
+        .map(|m| m.max_error_pixels)
+        .fold(0.0, f64::max)
 }
