@@ -178,8 +178,9 @@ proptest! {
     }
 }
 
-/// About log₂(f/n) + 1 levels: ⌊log₂(f/n)⌋ + 1 or ⌈log₂(f/n)⌉ + 1 (the depth range's ends fall
-/// anywhere within their levels), each interior level covering a depth ratio of exactly 2.
+/// About log₂(f/n) + 1 levels: exactly ⌊log₂ f + L⌋ − ⌊log₂ n + L⌋ + 1 with L by hand
+/// ([`offset_by_hand_at`]), which is ⌊log₂(f/n)⌋ + 1 or ⌈log₂(f/n)⌉ + 1 as the depth range's ends
+/// fall within their levels; each interior level covers a depth ratio of exactly 2.
 #[test]
 fn levels_needed() {
     for alpha in [3.0, 10.0, 64.0, 100.0, 1000.0, 5000.0] {
@@ -187,11 +188,11 @@ fn levels_needed() {
             let input = overhead(alpha, 0.7, 1.5, 16384, 1080);
             let p = plan_clipmap(&input, &open(b, 128)).unwrap();
             let n = p.levels().count() as f64;
+            let (l, _) = offset_by_hand_at(b, 0.7, 1.5);
+            let hand = (alpha.log2() + l).floor() - l.floor() + 1.0;
+            assert_eq!(n, hand, "α {alpha}, b {b}");
             let d = f64::log2(alpha);
-            assert!(
-                n == d.floor() + 1.0 || n == d.ceil() + 1.0,
-                "α {alpha}: {n} levels"
-            );
+            assert!(n == d.floor() + 1.0 || n == d.ceil() + 1.0);
             let (first, last) = p.level_range();
             assert_eq!(f64::from(last - first + 1), n);
             let levels: Vec<_> = p.levels().collect();
@@ -296,14 +297,21 @@ proptest! {
 
 /// Pages per level do not depend on the level: with the camera at the origin the levels are
 /// self-similar (footprint and pages both double), so every level whose depths are a whole
-/// ratio of 2 needs the same pages.
+/// ratio of 2 needs the same pages: 114 and 168 (docs/planning.md), as counted by hand
+/// ([`level_pages_by_hand`]).
 #[test]
 fn pages_per_level_do_not_depend_on_the_level() {
-    for (alpha, tan) in [(1000.0, 0.577), (1e4, 0.4)] {
+    for (alpha, tan, whole) in [(1000.0, 0.577, 114), (1e4, 0.4, 168)] {
         let p = plan_clipmap(&overhead(alpha, tan, 1.0, 16384, 1080), &open(0.0, 128)).unwrap();
         let levels: Vec<_> = p.levels().collect();
         let inner = &levels[1..levels.len() - 1];
-        assert!(inner.iter().all(|l| l.pages == inner[0].pages), "{inner:?}");
+        assert!(inner.len() >= 8);
+        let (l, _) = offset_by_hand(0.0, tan);
+        for lv in inner {
+            assert_eq!(lv.pages, whole, "level {}", lv.level);
+            let hand = level_pages_by_hand(lv.level, l, (1.0, alpha), tan, 128);
+            assert_eq!(u64::from(lv.pages), hand, "level {}", lv.level);
+        }
     }
 }
 
@@ -332,7 +340,16 @@ fn storage_against_lloyd() {
     let e = p.max_error_pixels();
     let optimal = alpha.ln() / (2.0 * tan);
     let ratio = texels * e * e / (1080.0 * 1080.0) / optimal;
-    assert!((ratio - 1.5 / 2f64.ln()).abs() < 0.1, "{ratio}");
+    // The pages counted by hand from the frustum's geometry, E = 2^0: the same ratio to 0.3 %
+    // (4-texel pages: rows the trapezoid's edges only graze), 1.5/ln 2 + 1 % (whole pages).
+    let hand: u64 = pages_by_hand(alpha, tan, 0.0, 4).iter().sum();
+    let hand = hand as f64 * 16.0 / (1080.0 * 1080.0) / optimal;
+    assert!((e - 1.0).abs() < 1e-12);
+    assert!((ratio - hand).abs() <= 3e-3 * hand, "{ratio} vs {hand}");
+    assert!(
+        ratio > 1.5 / 2f64.ln() && ratio < 1.01 * 1.5 / 2f64.ln(),
+        "{ratio}"
+    );
     // Z-partitions at ratio 2: k = 10.
     for (rule, hand) in [(WarpRule::Uniform, 2.0), (WarpRule::Lispsm, 1.0)] {
         let f = frame(&input.scheme(FrameScheme::Cascades {
@@ -502,4 +519,149 @@ fn bad_input_names_the_argument() {
     let deep = overhead(1e6, 0.577, 1.0, 16384, 1080);
     let e = frame(&deep.scheme(FrameScheme::Clipmap(o))).unwrap_err();
     assert_eq!(arg_name(e), "depth_range");
+}
+
+/// docs/planning.md's set-up ("The claims, measured"): camera at the origin, light
+/// straight down, aspect 1, levels of 16 384 texels, an image 1080 pixels high, unit 1, levels
+/// −40 to 40.
+const DOC_SETUPS: [(f64, f64); 3] = [(1000.0, 0.577), (100.0, 1.0), (1e4, 0.4)];
+
+/// The offset L in effect by hand (docs/planning.md): L = b + log₂(tan θ · R / (4 · unit · H)),
+/// raised to log₂(k / unit), k = √(1 + tan²θ (1 + aspect²)); aspect 1, R = 16 384, H = 1080,
+/// unit 1. Returns (L, the bias in effect L − log₂(tan θ R / (4 H))).
+fn offset_by_hand(b: f64, tan: f64) -> (f64, f64) {
+    offset_by_hand_at(b, tan, 1.0)
+}
+
+/// [`offset_by_hand`] for any aspect.
+fn offset_by_hand_at(b: f64, tan: f64, aspect: f64) -> (f64, f64) {
+    let matched = (tan * 16384.0 / (4.0 * 1080.0)).log2();
+    let cover = (1.0 + tan * tan * (1.0 + aspect * aspect)).sqrt().log2();
+    let l = (b + matched).max(cover);
+    (l, l - matched)
+}
+
+/// The pages of level `i` by hand, from the frustum's geometry alone: with the light straight
+/// down the footprint of the depths [a, b] is the trapezoid |x| ≤ z tan θ, z ∈ [a, b] (aspect
+/// 1), and the page grid, fixed in the world, has a corner at the camera. In pages of
+/// `page · 2^{i+3} / 16 384` world units, each row of pages [r, r + 1] that the depths meet
+/// holds the cells that meet |x| < X, X the half-width at the row's far end: 2⌈X⌉ of them.
+fn level_pages_by_hand(i: i32, l: f64, (zn, zf): (f64, f64), tan: f64, page: u32) -> u64 {
+    let a = zn.max((f64::from(i) - l).exp2());
+    let b = zf.min((f64::from(i) + 1.0 - l).exp2());
+    if a >= b {
+        return 0;
+    }
+    let pw = f64::from(page) * f64::from(i + 3).exp2() / 16384.0;
+    let (a, b) = (a / pw, b / pw);
+    let mut pages = 0;
+    let mut r = a.floor();
+    while r < b {
+        let x = (r + 1.0).min(b) * tan;
+        pages += 2 * x.ceil() as u64;
+        r += 1.0;
+    }
+    pages
+}
+
+/// Every level's pages by hand for the bias `b`: the levels from ⌊log₂ n + L⌋ to ⌊log₂ f + L⌋.
+fn pages_by_hand(alpha: f64, tan: f64, b: f64, page: u32) -> Vec<u64> {
+    let (l, _) = offset_by_hand(b, tan);
+    let (first, last) = (l.floor() as i32, (alpha.log2() + l).floor() as i32);
+    (first..=last)
+        .map(|i| level_pages_by_hand(i, l, (1.0, alpha), tan, page))
+        .collect()
+}
+
+/// docs/planning.md's figures, each recomputed by hand from the frustum's geometry
+/// ([`offset_by_hand`], [`pages_by_hand`]) and asserted against the crate and against the
+/// figure as the docs print it.
+#[test]
+fn the_docs_clipmap_figures() {
+    let round = |v: f64, digits: i32| (v * 10f64.powi(digits)).round() / 10f64.powi(digits);
+    // Levels 11, 8, 14 and the pages of every whole level 114, 70, 168 (128-texel pages).
+    for ((alpha, tan), (levels, whole)) in
+        DOC_SETUPS.into_iter().zip([(11, 114), (8, 70), (14, 168)])
+    {
+        let (l, _) = offset_by_hand(0.0, tan);
+        let hand_levels = (alpha.log2() + l).floor() - l.floor() + 1.0;
+        assert_eq!(hand_levels, levels as f64);
+        let p = plan_clipmap(&overhead(alpha, tan, 1.0, 16384, 1080), &open(0.0, 128)).unwrap();
+        assert_eq!(p.levels().count(), levels);
+        let got: Vec<u64> = p.levels().map(|l| u64::from(l.pages)).collect();
+        let hand = pages_by_hand(alpha, tan, 0.0, 128);
+        assert_eq!(got, hand, "α {alpha}");
+        assert!(
+            got[1..levels - 1].iter().all(|&n| n == whole),
+            "α {alpha}: {got:?}"
+        );
+        // The storage ratios S̄ / S̄_optimal, E = 2^0 = 1: 128-, 16- and 4-texel pages.
+        let optimal = alpha.ln() / (2.0 * tan);
+        let ratio = |pages: u64, page: u32, e: f64| {
+            pages as f64 * f64::from(page * page) * e * e / (1080.0 * 1080.0) / optimal
+        };
+        let docs = match levels {
+            11 => [2.68, 2.22, 2.18],
+            8 => [2.89, 2.23, 2.13],
+            _ => [2.74, 2.22, 2.19],
+        };
+        for (page, doc) in [128u32, 16, 4].into_iter().zip(docs) {
+            let p =
+                plan_clipmap(&overhead(alpha, tan, 1.0, 16384, 1080), &open(0.0, page)).unwrap();
+            assert!((p.max_error_pixels() - 1.0).abs() < 1e-12);
+            let hand: u64 = pages_by_hand(alpha, tan, 0.0, page).iter().sum();
+            let r = ratio(p.pages(), page, p.max_error_pixels());
+            let r_hand = ratio(hand, page, 1.0);
+            // 4-texel pages: the hand count and the crate's differ by up to 0.3 % (rows of
+            // pages that the trapezoid's slanted edges only graze).
+            let tol = if page == 4 { 3e-3 } else { 1e-12 };
+            assert!(
+                (r - r_hand).abs() <= tol * r_hand,
+                "α {alpha} page {page}: {r} vs {r_hand}"
+            );
+            assert_eq!(round(r, 2), doc, "α {alpha} page {page}: {r}");
+        }
+    }
+    // The error at α = 1000, tan θ = 0.577: 2^b in effect, b = −1 raised to −0.76.
+    for (b, doc, digits) in [
+        (-1.0, 0.59, 2),
+        (-0.5, 0.707, 3),
+        (0.0, 1.0, 0),
+        (0.5, 1.414, 3),
+        (1.0, 2.0, 0),
+    ] {
+        let (_, in_effect) = offset_by_hand(b, 0.577);
+        let p = plan_clipmap(&overhead(1000.0, 0.577, 1.0, 16384, 1080), &open(b, 128)).unwrap();
+        let e = p.max_error_pixels();
+        assert!((e - in_effect.exp2()).abs() <= 1e-12, "b {b}: {e}");
+        assert_eq!(round(e, digits), doc, "b {b}: {e}");
+    }
+    assert_eq!(round(offset_by_hand(-1.0, 0.577).1, 2), -0.76);
+    // Pages against the bias at f/n = 100: they rise 515 times, by up to 24 pages, over the
+    // 2 001 biases −1, −0.999, …, 1 (a level's boundary crossing rows of pages). At b = 0.271
+    // the clipmap needs 300 pages (by hand too), and the pool's search finds a bias no coarser
+    // than 0.271.
+    let input = overhead(100.0, 1.0, 1.0, 16384, 1080);
+    let pages: Vec<u64> = (0..=2000)
+        .map(|j| {
+            plan_clipmap(&input, &open(-1.0 + f64::from(j) / 1000.0, 128))
+                .unwrap()
+                .pages()
+        })
+        .collect();
+    let rises: Vec<u64> = pages
+        .windows(2)
+        .filter(|w| w[1] > w[0])
+        .map(|w| w[1] - w[0])
+        .collect();
+    assert_eq!((rises.len(), rises.iter().max()), (515, Some(&24)));
+    let at = |b: f64| plan_clipmap(&input, &open(b, 128)).unwrap().pages();
+    let by_hand = |b: f64| pages_by_hand(100.0, 1.0, b, 128).iter().sum::<u64>();
+    assert_eq!((at(0.271), by_hand(0.271)), (300, 300));
+    let fit = clipmap_for_pool(&input, &open(0.0, 128), 300).unwrap();
+    assert!(
+        fit.pages() <= 300 && fit.choice.bias <= 0.271 + 1e-6,
+        "{}",
+        fit.choice.bias
+    );
 }

@@ -829,12 +829,21 @@ mod checks {
             let r = w[1] / w[0];
             assert!((r - 10f64.sqrt()).abs() < 0.1, "{s:?}");
         }
+        // The ratios per decade rise towards √10 = 3.162 (δ^(−1/2) is only the limit): the
+        // page quotes the first three, each below √10.
+        let ratios: Vec<f64> = s.windows(2).map(|w| w[1] / w[0]).collect();
+        assert!(ratios[..3].windows(2).all(|w| w[0] < w[1]), "{ratios:?}");
+        assert!(ratios.iter().all(|r| *r < 10f64.sqrt()), "{ratios:?}");
         e.has(format!(
-            "it is {} at δ = 10⁻⁴°, {} at 10⁻⁵°, {} at 10⁻⁶°, {} at 10⁻⁷° (√10 per decade)",
+            "it is {} at δ = 10⁻⁴°, {} at 10⁻⁵°, {} at 10⁻⁶°, {} at 10⁻⁷° (ratios {}, {} and {} per \
+             decade, rising towards √10 = 3.16, the limit of δ^(−1/2))",
             d(s[0], 0),
             d(s[1], 0),
             d(s[2], 0),
-            d(s[3], 0)
+            d(s[3], 0),
+            d(ratios[0], 2),
+            d(ratios[1], 2),
+            d(ratios[2], 2)
         ));
         // Where EDGE_ON skips the face: the largest δ at which one of `seen` is gone.
         let (mut lo, mut hi) = (1e-8f64, 1e-3f64);
