@@ -182,7 +182,7 @@ fn parenthesised_citations(text: &str) -> Vec<Citation> {
     while let Some(open) = rest.find('(') {
         let before = &prose[..consumed + open];
         let after = &rest[open + 1..];
-        let Some(close) = after.find(|c| c == ')' || c == '(') else {
+        let Some(close) = after.find([')', '(']) else {
             break;
         };
         let inside = &after[..close];
@@ -203,10 +203,7 @@ fn parenthesised_citations(text: &str) -> Vec<Citation> {
             .collect();
         // Backward from the parenthesis: `a`, `b` and `c` (tests/x.rs).
         let mut b = before.trim_end();
-        loop {
-            let Some(end) = b.strip_suffix('`') else {
-                break;
-            };
+        while let Some(end) = b.strip_suffix('`') {
             let Some(start) = end.rfind('`') else {
                 break;
             };
