@@ -172,11 +172,10 @@ pub fn buffer(len: usize, shape: &[usize]) -> PyResult<Vec<f64>> {
 }
 
 /// The values of an array argument in C order, copied into a [`buffer`].
+/// Ctrl-C is seen during the copy ([`crate::interrupt::copy_checked`]).
 pub fn values_of(a: &PyArrayLikeDyn<'_, f64, AllowTypeChange>) -> PyResult<Vec<f64>> {
     let view = a.as_array();
-    let mut v = buffer(view.len(), view.shape())?;
-    v.extend(view.iter().copied());
-    Ok(v)
+    crate::interrupt::copy_checked(a.py(), view.iter().copied(), view.len(), view.shape())
 }
 
 /// A shape as Python prints it: `()`, `(3,)`, `(2, 3)`.
@@ -433,9 +432,12 @@ where
                     let b = view.broadcast(IxDyn(&shape)).ok_or_else(|| {
                         PyValueError::new_err("internal error: broadcast of a checked shape")
                     })?;
-                    let mut copy = buffer(n, &shape)?;
-                    copy.extend(b.iter().copied());
-                    Some(copy)
+                    Some(crate::interrupt::copy_checked(
+                        py,
+                        b.iter().copied(),
+                        n,
+                        &shape,
+                    )?)
                 }
             }
         });
@@ -460,7 +462,7 @@ where
     }
     // The fast kernel writes one number per element.
     let g = g.filter(|_| width == 1);
-    let failure = py.detach(|| run(&data, into, width, spec, &f, g.as_ref()));
+    let failure = run(py, &data, into, width, spec, &f, g.as_ref())?;
     if let Some((i, e)) = failure {
         let msg = e.to_string();
         return Err(PyValueError::new_err(if shape.is_empty() {
@@ -501,10 +503,46 @@ where
     )
 }
 
-/// The computation proper, without the GIL: the first failing element (lowest index), if any.
+/// Elements of the first block of [`run`] (a millisecond or two for most forms); the next
+/// blocks are sized by [`crate::interrupt::in_blocks`] to take about 20 ms.
+const FIRST_BLOCK: usize = 16 * CHUNK;
+
+/// The computation proper, in blocks without the GIL with a check for Ctrl-C between them
+/// (`KeyboardInterrupt`): the first failing element (lowest index), if any.
 fn run<const N: usize, F, G>(
+    py: Python<'_>,
     data: &[Data<'_>],
     out: &mut [f64],
+    width: usize,
+    spec: OutSpec,
+    f: &F,
+    g: Option<&Fast<G>>,
+) -> PyResult<Option<(usize, Error)>>
+where
+    F: Fn(&[f64; N], &mut [f64]) -> Result<(), Error> + Sync,
+    G: Fn(&[f64; N], f64) -> (f64, bool) + Sync,
+{
+    let w = width.max(1);
+    let elements = out.len() / w;
+    crate::interrupt::in_blocks(py, elements, FIRST_BLOCK, |r| {
+        run_range(
+            data,
+            &mut out[r.start * w..r.end * w],
+            r.start,
+            width,
+            spec,
+            f,
+            g,
+        )
+    })
+}
+
+/// Elements `start ..` (as many as `out` holds) over all cores: the first failing element
+/// (lowest index), if any.
+fn run_range<const N: usize, F, G>(
+    data: &[Data<'_>],
+    out: &mut [f64],
+    start: usize,
     width: usize,
     spec: OutSpec,
     f: &F,
@@ -576,11 +614,11 @@ where
     };
     let elements = out.len() / width.max(1);
     if elements < 2 * CHUNK {
-        return chunk(0, out);
+        return chunk(start, out);
     }
     out.par_chunks_mut(CHUNK * width)
         .enumerate()
-        .filter_map(|(c, o)| chunk(c * CHUNK, o))
+        .filter_map(|(c, o)| chunk(start + c * CHUNK, o))
         .min_by_key(|(i, _)| *i)
 }
 

@@ -451,8 +451,11 @@ pub fn allocate_texels<'py>(
     }
     let mut out = crate::broadcast::buffer(values.len(), &[values.len()])?;
     out.resize(values.len(), 0.0);
-    subdivided::allocate_texels(&values, total, &mut out)
-        .map_err(|e| crate::broadcast::value_error(&e))?;
+    // On a thread of its own, Ctrl-C seen while it runs (a billion errors take seconds).
+    let out = crate::interrupt::off_thread(py, move || {
+        subdivided::allocate_texels(&values, total, &mut out).map(|()| out)
+    })?
+    .map_err(|e| crate::broadcast::value_error(&e))?;
     drop(e);
     target.deliver(py, vec![out.len()], out)
 }

@@ -8,25 +8,24 @@
 //! texel (`Footprint::error`).
 
 use crate::args;
-use crate::broadcast::{fmt_index, fmt_shape, values_of, FloatArg};
+use crate::broadcast::{buffer, elements, fmt_index, fmt_shape, values_of, FloatArg};
 use crate::builders::from_rows;
 use crate::closed::choice;
+use crate::interrupt::in_blocks;
 use crate::out::Out;
 use glam::{DMat4, DVec3, DVec4};
 use numpy::PyUntypedArrayMethods;
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyMemoryError, PyValueError};
 use pyo3::prelude::*;
 use rayon::prelude::*;
 use shadow_aliasing::measure::{surface_footprint, Grids};
 use shadow_aliasing::Error;
+use std::ops::Range;
 
 type Any<'py> = Bound<'py, PyAny>;
 
 /// One pixel's answer: the error and J's four entries (row-major).
 type Pixel = [f64; 5];
-
-/// The first pixel (index, argument to blame, reason) the crate refuses.
-type Failure = (usize, &'static str, String);
 
 /// An array argument's shape and values (C order); a number is refused, naming the argument.
 fn array(name: &str, ob: &Any<'_>) -> PyResult<(Vec<usize>, Vec<f64>)> {
@@ -130,7 +129,14 @@ pub fn error_image<'py>(
     let (ms, mv) = array("shadow_matrix", shadow_matrix)?;
     let maps: Vec<DMat4> = match ms[..] {
         [4, 4] => vec![from_rows(&mv)],
-        [m, 4, 4] if m > 0 => mv.chunks_exact(16).map(from_rows).collect(),
+        [m, 4, 4] if m > 0 => {
+            let mut maps = Vec::new();
+            maps.try_reserve_exact(m).map_err(|_| {
+                PyMemoryError::new_err(format!("shadow_matrix: {m} matrices do not fit in memory"))
+            })?;
+            maps.extend(mv.chunks_exact(16).map(from_rows));
+            maps
+        }
         _ => {
             return Err(PyValueError::new_err(format!(
                 "shadow_matrix must have shape (4, 4) or (m, 4, 4) with m ≥ 1 (got {})",
@@ -141,6 +147,26 @@ pub fn error_image<'py>(
     if let Some(i) = maps.iter().position(|m| !m.is_finite()) {
         return Err(PyValueError::new_err(format!(
             "shadow_matrix must have finite entries (not so at map {i})"
+        )));
+    }
+    // A singular matrix (all zeros, a zero row) is no light's projection: it maps every point
+    // behind the light or onto one line, and the image would be `fill` or ∞ throughout.
+    if let Some((i, det)) = maps
+        .iter()
+        .map(|m| (m.determinant(), m.inverse()))
+        .enumerate()
+        .find_map(|(i, (det, inv))| {
+            (!det.is_finite() || det == 0.0 || !inv.is_finite()).then_some((i, det))
+        })
+    {
+        let at = if ms.len() == 3 {
+            format!(" at map {i}")
+        } else {
+            String::new()
+        };
+        return Err(PyValueError::new_err(format!(
+            "shadow_matrix must be invertible (its determinant is {det}{at}): pass the light's \
+             world → clip matrix, e.g. frame(...)[\"world_to_clip\"]"
         )));
     }
     let reversed = match choice(
@@ -195,109 +221,230 @@ pub fn error_image<'py>(
     let target = Out::new(out, &[h, w], false)?;
     let camera = proj * view_m;
     let eye = inv_view.transform_point3(DVec3::ZERO);
+    // Room for the results before any work: an image larger than memory is a `MemoryError`
+    // here, never an abort halfway. The points are kept for a band of rows at a time.
     let n = h * w;
-    let image: Result<Vec<Pixel>, Failure> = py.detach(|| {
-        // Pass 1: each pixel's world point (NaN where there is none).
-        let mut points = vec![DVec3::NAN; n];
-        points.par_chunks_mut(w).enumerate().for_each(|(y, row)| {
-            for (x, p) in row.iter_mut().enumerate() {
-                let z = d[y * w + x];
-                if z == background {
-                    continue;
-                }
-                let z_ndc = if reversed == Some(false) {
-                    2.0 * z - 1.0
-                } else {
-                    z
-                };
-                let ndc = DVec4::new(
-                    2.0 * (x as f64 + 0.5) / w as f64 - 1.0,
-                    1.0 - 2.0 * (y as f64 + 0.5) / h as f64,
-                    z_ndc,
-                    1.0,
-                );
-                let e = inv_proj * ndc;
-                if e.w != 0.0 {
-                    let q = inv_view.transform_point3(e.truncate() / e.w);
-                    if q.is_finite() {
-                        *p = q;
-                    }
-                }
-            }
-        });
-        // Pass 2: normal, map and footprint.
-        let none = [fill, f64::NAN, f64::NAN, f64::NAN, f64::NAN];
-        let result: Vec<Result<Pixel, Failure>> = (0..n)
-            .into_par_iter()
-            .map(|i| {
-                let p = points[i];
-                if !p.is_finite() {
-                    return Ok(none);
-                }
-                let nrm = match &normals {
-                    Some(nv) => {
-                        let v = DVec3::new(nv[3 * i], nv[3 * i + 1], nv[3 * i + 2]);
-                        if !v.is_finite() || v.length_squared() == 0.0 {
-                            return Err((i, "normals", format!("is {v}")));
-                        }
-                        v
-                    }
-                    None => match normal_from_depth(&points, d.as_slice(), w, h, i, eye) {
-                        Some(v) => v,
-                        None => return Ok(none),
-                    },
-                };
-                let k = match &index {
-                    Some(ix) => match ix[i] {
-                        k if k < 0 => return Ok(none),
-                        k => k as usize,
-                    },
-                    None => match maps.iter().position(|m| covers(m, p)) {
-                        Some(k) => k,
-                        None => return Ok(none),
-                    },
-                };
-                match surface_footprint(&camera, &maps[k], grids, p, nrm) {
-                    // Only a singular J (edge-on to the light) has no finite error.
-                    Ok(fp) => {
-                        let j = fp.jacobian;
-                        Ok([
-                            fp.error().unwrap_or(f64::INFINITY),
-                            j.x_axis.x,
-                            j.y_axis.x,
-                            j.x_axis.y,
-                            j.y_axis.y,
-                        ])
-                    }
-                    Err(Error::Degenerate(_)) => Ok(none),
-                    Err(e) => {
-                        let name = match &e {
-                            Error::InvalidArgument { name: "camera", .. } => "projection",
-                            Error::InvalidArgument { name: "light", .. } => "shadow_matrix",
-                            Error::InvalidArgument { name: "normal", .. } => "normals",
-                            _ => "depth",
-                        };
-                        Err((i, name, e.to_string()))
-                    }
-                }
-            })
-            .collect();
-        result.into_iter().collect()
-    });
-    match image {
-        Ok(px) => {
-            let error = target.deliver(py, vec![h, w], px.iter().map(|p| p[0]).collect())?;
+    let mut error = buffer(n, &[h, w])?;
+    error.resize(n, 0.0);
+    let mut jacobian = Vec::new();
+    if return_jacobian {
+        let shape = [h, w, 2, 2];
+        jacobian = buffer(elements(&shape)?, &shape)?;
+        jacobian.resize(4 * n, 0.0);
+    }
+    let ctx = Context {
+        d: &d,
+        w,
+        h,
+        reversed,
+        background,
+        fill,
+        inv_proj,
+        inv_view,
+        camera,
+        eye,
+        normals: normals.as_deref(),
+        index: index.as_deref(),
+        maps: &maps,
+        grids,
+    };
+    let mut points = Vec::new();
+    // Bands of rows, each taking about 20 ms (the first about 16 384 pixels), Ctrl-C seen
+    // between them; the first failing pixel in C order stops the image.
+    let stop = in_blocks(py, h, (16 * 1024 / w).max(1), |rows| {
+        ctx.band(rows, &mut points, &mut error, &mut jacobian)
+    })?;
+    match stop {
+        None => {
+            let error = target.deliver(py, vec![h, w], error)?;
             if !return_jacobian {
                 return Ok(error);
             }
-            let j: Vec<f64> = px.iter().flat_map(|p| [p[1], p[2], p[3], p[4]]).collect();
-            let j = crate::broadcast::to_python(py, vec![h, w, 2, 2], j)?;
+            let j = crate::broadcast::to_python(py, vec![h, w, 2, 2], jacobian)?;
             Ok(pyo3::types::PyTuple::new(py, [error, j])?.into_any())
         }
-        Err((i, name, why)) => Err(PyValueError::new_err(format!(
+        Some(Stop::Memory(rows)) => Err(PyMemoryError::new_err(format!(
+            "the points of {rows} rows of {w} pixels do not fit in memory"
+        ))),
+        Some(Stop::Pixel(i, name, why)) => Err(PyValueError::new_err(format!(
             "{name} at pixel {}: {why}",
             fmt_index(i, &[h, w])
         ))),
+    }
+}
+
+/// Why a band of rows stopped the image.
+enum Stop {
+    /// The band's points found no room (its number of rows).
+    Memory(usize),
+    /// The first pixel (index, argument to blame, reason) the crate refuses.
+    Pixel(usize, &'static str, String),
+}
+
+/// Everything a pixel's prediction reads.
+struct Context<'a> {
+    d: &'a [f64],
+    w: usize,
+    h: usize,
+    reversed: Option<bool>,
+    background: f64,
+    fill: f64,
+    inv_proj: DMat4,
+    inv_view: DMat4,
+    camera: DMat4,
+    eye: DVec3,
+    normals: Option<&'a [f64]>,
+    index: Option<&'a [i64]>,
+    maps: &'a [DMat4],
+    grids: Grids,
+}
+
+impl Context<'_> {
+    /// The world point of pixel `i` (NaN where there is none): unprojected from its depth at
+    /// the pixel's centre.
+    fn point(&self, i: usize) -> DVec3 {
+        let (x, y, w, h) = (i % self.w, i / self.w, self.w, self.h);
+        let z = self.d[i];
+        if z == self.background {
+            return DVec3::NAN;
+        }
+        let z_ndc = if self.reversed == Some(false) {
+            2.0 * z - 1.0
+        } else {
+            z
+        };
+        let ndc = DVec4::new(
+            2.0 * (x as f64 + 0.5) / w as f64 - 1.0,
+            1.0 - 2.0 * (y as f64 + 0.5) / h as f64,
+            z_ndc,
+            1.0,
+        );
+        let e = self.inv_proj * ndc;
+        if e.w != 0.0 {
+            let q = self.inv_view.transform_point3(e.truncate() / e.w);
+            if q.is_finite() {
+                return q;
+            }
+        }
+        DVec3::NAN
+    }
+
+    /// Rows `rows` of the image into `error` (and `jacobian`, if it has room for the image):
+    /// first the points of those rows and one row either side into `points` (pixel `i` at
+    /// `points[i - base]`), then each pixel's normal, map and footprint, over all cores.
+    fn band(
+        &self,
+        rows: Range<usize>,
+        points: &mut Vec<DVec3>,
+        error: &mut [f64],
+        jacobian: &mut [f64],
+    ) -> Option<Stop> {
+        let w = self.w;
+        let (p0, p1) = (rows.start.saturating_sub(1), (rows.end + 1).min(self.h));
+        let len = (p1 - p0) * w;
+        points.clear();
+        if points.try_reserve_exact(len).is_err() {
+            return Some(Stop::Memory(p1 - p0));
+        }
+        points.resize(len, DVec3::NAN);
+        let base = p0 * w;
+        points.par_chunks_mut(w).enumerate().for_each(|(r, row)| {
+            for (x, p) in row.iter_mut().enumerate() {
+                *p = self.point(base + r * w + x);
+            }
+        });
+        let points = &points[..];
+        let pixel = |i: usize| self.pixel(points, base, i);
+        let error = &mut error[rows.start * w..rows.end * w];
+        let failure = |y: usize, e: &mut [f64], j: Option<&mut [f64]>| -> Option<Stop> {
+            let mut j = j;
+            for (x, out) in e.iter_mut().enumerate() {
+                let i = y * w + x;
+                match pixel(i) {
+                    Ok(px) => {
+                        *out = px[0];
+                        if let Some(j) = j.as_deref_mut() {
+                            j[4 * x..4 * x + 4].copy_from_slice(&px[1..]);
+                        }
+                    }
+                    Err((name, why)) => return Some(Stop::Pixel(i, name, why)),
+                }
+            }
+            None
+        };
+        if jacobian.is_empty() {
+            error
+                .par_chunks_mut(w)
+                .enumerate()
+                .find_map_first(|(r, e)| failure(rows.start + r, e, None))
+        } else {
+            let jacobian = &mut jacobian[4 * rows.start * w..4 * rows.end * w];
+            error
+                .par_chunks_mut(w)
+                .zip(jacobian.par_chunks_mut(4 * w))
+                .enumerate()
+                .find_map_first(|(r, (e, j))| failure(rows.start + r, e, Some(j)))
+        }
+    }
+
+    /// Pixel `i`'s error and J's four entries (row-major), or the argument to blame and why.
+    fn pixel(
+        &self,
+        points: &[DVec3],
+        base: usize,
+        i: usize,
+    ) -> Result<Pixel, (&'static str, String)> {
+        let none = [self.fill, f64::NAN, f64::NAN, f64::NAN, f64::NAN];
+        let p = points[i - base];
+        if !p.is_finite() {
+            return Ok(none);
+        }
+        let nrm = match self.normals {
+            Some(nv) => {
+                let v = DVec3::new(nv[3 * i], nv[3 * i + 1], nv[3 * i + 2]);
+                if !v.is_finite() || v.length_squared() == 0.0 {
+                    return Err(("normals", format!("is {v}")));
+                }
+                v
+            }
+            None => match normal_from_depth(points, base, self.d, self.w, self.h, i, self.eye) {
+                Some(v) => v,
+                None => return Ok(none),
+            },
+        };
+        let k = match self.index {
+            Some(ix) => match ix[i] {
+                k if k < 0 => return Ok(none),
+                k => k as usize,
+            },
+            None => match self.maps.iter().position(|m| covers(m, p)) {
+                Some(k) => k,
+                None => return Ok(none),
+            },
+        };
+        match surface_footprint(&self.camera, &self.maps[k], self.grids, p, nrm) {
+            // Only a singular J (edge-on to the light) has no finite error.
+            Ok(fp) => {
+                let j = fp.jacobian;
+                Ok([
+                    fp.error().unwrap_or(f64::INFINITY),
+                    j.x_axis.x,
+                    j.y_axis.x,
+                    j.x_axis.y,
+                    j.y_axis.y,
+                ])
+            }
+            Err(Error::Degenerate(_)) => Ok(none),
+            Err(e) => {
+                let name = match &e {
+                    Error::InvalidArgument { name: "camera", .. } => "projection",
+                    Error::InvalidArgument { name: "light", .. } => "shadow_matrix",
+                    Error::InvalidArgument { name: "normal", .. } => "normals",
+                    _ => "depth",
+                };
+                Err((name, e.to_string()))
+            }
+        }
     }
 }
 
@@ -309,9 +456,10 @@ fn covers(m: &DMat4, p: DVec3) -> bool {
 
 /// The surface normal at pixel `i` from its neighbours' points: along the row and along the
 /// column the step to the neighbour whose depth differs less (either side), crossed, and turned
-/// toward the camera at `eye`. `None` when a direction has no neighbour with a point.
+/// toward the camera at `eye`. Pixel `j`'s point is `points[j - base]`. `None` when a direction has no neighbour with a point.
 fn normal_from_depth(
     points: &[DVec3],
+    base: usize,
     depth: &[f64],
     w: usize,
     h: usize,
@@ -319,19 +467,20 @@ fn normal_from_depth(
     eye: DVec3,
 ) -> Option<DVec3> {
     let (x, y) = (i % w, i / w);
-    let p = points[i];
+    let point = |j: usize| points[j - base];
+    let p = point(i);
     let step = |before: Option<usize>, after: Option<usize>| -> Option<DVec3> {
-        let ok = |j: Option<usize>| j.filter(|&j| points[j].is_finite());
+        let ok = |j: Option<usize>| j.filter(|&j| point(j).is_finite());
         match (ok(before), ok(after)) {
             (Some(a), Some(b)) => Some(
                 if (depth[b] - depth[i]).abs() <= (depth[i] - depth[a]).abs() {
-                    points[b] - p
+                    point(b) - p
                 } else {
-                    p - points[a]
+                    p - point(a)
                 },
             ),
-            (None, Some(b)) => Some(points[b] - p),
-            (Some(a), None) => Some(p - points[a]),
+            (None, Some(b)) => Some(point(b) - p),
+            (Some(a), None) => Some(p - point(a)),
             (None, None) => None,
         }
     };
@@ -354,7 +503,13 @@ fn map_indices(ob: &Any<'_>, h: usize, w: usize, m: usize) -> PyResult<Vec<i64>>
             fmt_shape(&s)
         )));
     }
-    let mut out = Vec::with_capacity(v.len());
+    let mut out = Vec::new();
+    out.try_reserve_exact(v.len()).map_err(|_| {
+        PyMemoryError::new_err(format!(
+            "map_index: an array of shape {} does not fit in memory",
+            fmt_shape(&s)
+        ))
+    })?;
     for (i, &k) in v.iter().enumerate() {
         if k.fract() != 0.0 || k < -1.0 || k >= m as f64 {
             return Err(PyValueError::new_err(format!(

@@ -483,16 +483,65 @@ pub fn frame<'py>(
             }
         }
     };
-    let input = FrameInput::new(camera, light, map_resolution, image_height)
-        .scheme(fs)
-        .depth_clamp(depth_clamp)
-        .measure(measure)
-        .centre(centre);
-    let input = with_scene(input, receivers.as_deref(), casters.as_deref(), depth_range);
-    let f = py
-        .detach(|| build_frame(&input))
-        .map_err(|e| frame_err(e, bevy_given))?;
+    // Built on a thread of its own, Ctrl-C seen while it runs (a frame over a million caster
+    // boxes takes seconds); the thread owns copies of the split planes the scheme reads.
+    let fs = rebind(fs, &[], &[]);
+    let planes = splits.clone().unwrap_or_default();
+    let fractions = fractions.clone().unwrap_or_default();
+    let f = crate::interrupt::off_thread(py, move || {
+        let input = FrameInput::new(camera, light, map_resolution, image_height)
+            .scheme(rebind(fs, &planes, &fractions))
+            .depth_clamp(depth_clamp)
+            .measure(measure)
+            .centre(centre);
+        let input = with_scene(input, receivers.as_deref(), casters.as_deref(), depth_range);
+        build_frame(&input)
+    })?
+    .map_err(|e| frame_err(e, bevy_given))?;
     result(py, &f, depth, f32_out, pcf_radius)
+}
+
+/// `s` reading its split planes from `planes` and its fractions from `fractions` (a copy of the
+/// values it read before, or none while it only travels to the thread that builds the frame).
+fn rebind<'b>(s: FrameScheme<'_>, planes: &'b [f64], fractions: &'b [f64]) -> FrameScheme<'b> {
+    let splits = |c: CascadeSplits<'_>| -> CascadeSplits<'b> {
+        match c {
+            CascadeSplits::Distances { overlap, .. } => {
+                CascadeSplits::Distances { planes, overlap }
+            }
+            CascadeSplits::Fractions { overlap, .. } => {
+                CascadeSplits::Fractions { fractions, overlap }
+            }
+            CascadeSplits::Scheme { scheme, k, overlap } => {
+                CascadeSplits::Scheme { scheme, k, overlap }
+            }
+            CascadeSplits::Bevy {
+                k,
+                minimum_distance,
+                maximum_distance,
+                first_far_bound,
+                overlap_proportion,
+            } => CascadeSplits::Bevy {
+                k,
+                minimum_distance,
+                maximum_distance,
+                first_far_bound,
+                overlap_proportion,
+            },
+            CascadeSplits::EqualError { k } => CascadeSplits::EqualError { k },
+        }
+    };
+    match s {
+        FrameScheme::Single(r) => FrameScheme::Single(r),
+        FrameScheme::Cascades { splits: c, rule } => FrameScheme::Cascades {
+            splits: splits(c),
+            rule,
+        },
+        FrameScheme::Stable(c) => FrameScheme::Stable(splits(c)),
+        FrameScheme::Tsm(o) => FrameScheme::Tsm(o),
+        FrameScheme::Faces { rule, k } => FrameScheme::Faces { rule, k },
+        FrameScheme::Clipmap(o) => FrameScheme::Clipmap(o),
+    }
 }
 
 /// `input` with the scene's receivers' and casters' boxes and depth range, where given.

@@ -12,6 +12,7 @@ mod builders;
 mod closed;
 mod error_image;
 mod frame;
+mod interrupt;
 mod measure;
 mod out;
 mod plan;

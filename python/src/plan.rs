@@ -207,12 +207,15 @@ pub fn plan<'py>(
         }
     };
     let rounding = self::rounding(rounding)?;
-    let input =
-        FrameInput::new(camera, light, map_resolution, image_height).depth_clamp(depth_clamp);
-    let input = with_scene(input, receivers.as_deref(), casters.as_deref(), depth_range);
-    let p = py
-        .detach(|| plan_frame(&input, goal, rounding))
-        .map_err(|e| frame_err(e, false))?;
+    // On a thread of its own, Ctrl-C seen while it runs (a plan over thousands of caster boxes
+    // takes seconds).
+    let p = crate::interrupt::off_thread(py, move || {
+        let input =
+            FrameInput::new(camera, light, map_resolution, image_height).depth_clamp(depth_clamp);
+        let input = with_scene(input, receivers.as_deref(), casters.as_deref(), depth_range);
+        plan_frame(&input, goal, rounding)
+    })?
+    .map_err(|e| frame_err(e, false))?;
     result(py, &p, image_height)
 }
 
@@ -315,16 +318,18 @@ pub fn plan_clipmap<'py>(
              page pool or a target error): give one",
         ));
     }
-    let input =
-        FrameInput::new(camera, light, map_resolution, image_height).depth_clamp(depth_clamp);
-    let input = with_scene(input, receivers.as_deref(), casters.as_deref(), depth_range);
-    let p = py
-        .detach(|| match (pool, max_error) {
+    // On a thread of its own, Ctrl-C seen while it runs.
+    let p = crate::interrupt::off_thread(py, move || {
+        let input =
+            FrameInput::new(camera, light, map_resolution, image_height).depth_clamp(depth_clamp);
+        let input = with_scene(input, receivers.as_deref(), casters.as_deref(), depth_range);
+        match (pool, max_error) {
             (Some(n), _) => clipmap_for_pool(&input, &opts, n),
             (_, Some(e)) => clipmap_for_error(&input, &opts, e),
             _ => plan_levels(&input, &opts),
-        })
-        .map_err(|e| frame_err(e, false))?;
+        }
+    })?
+    .map_err(|e| frame_err(e, false))?;
     clipmap_result(py, &p, map_resolution)
 }
 

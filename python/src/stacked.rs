@@ -119,21 +119,29 @@ where
         let c = ops[k].core.max(1);
         &ops[k].values[at * c..at * c + c]
     };
+    // Items per parallel task: at most PART, fewer in a small block so that every core gets
+    // some. The first block is a few items per thread (one item can take milliseconds: an
+    // iterative TSM search, 16 cascades), the next ones sized to take about 20 ms.
     const PART: usize = 256;
-    let failed: Option<(usize, Error)> = py.detach(|| {
-        out.par_chunks_mut(width.max(1) * PART)
-            .enumerate()
-            .find_map_first(|(part, o)| {
-                for (j, oo) in o.chunks_exact_mut(width.max(1)).enumerate() {
-                    let i = part * PART + j;
-                    let x: [&[f64]; N] = std::array::from_fn(|k| item(i, k));
-                    if let Err(e) = f(x, oo) {
-                        return Some((i, e));
+    let threads = rayon::current_num_threads().max(1);
+    let w = width.max(1);
+    let failed: Option<(usize, Error)> =
+        crate::interrupt::in_blocks(py, n, 4 * threads, |r: std::ops::Range<usize>| {
+            let part = r.len().div_ceil(threads).clamp(1, PART);
+            out[r.start * w..r.end * w]
+                .par_chunks_mut(w * part)
+                .enumerate()
+                .find_map_first(|(c, o)| {
+                    for (j, oo) in o.chunks_exact_mut(w).enumerate() {
+                        let i = r.start + c * part + j;
+                        let x: [&[f64]; N] = std::array::from_fn(|k| item(i, k));
+                        if let Err(e) = f(x, oo) {
+                            return Some((i, e));
+                        }
                     }
-                }
-                None
-            })
-    });
+                    None
+                })
+        })?;
     match failed {
         Some((i, e)) if lead.is_empty() => {
             let _ = i;

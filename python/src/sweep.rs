@@ -85,7 +85,8 @@ impl Blocks<'_> {
 fn sweep_in_blocks(py: Python<'_>, b: &Blocks<'_>) -> PyResult<Vec<f64>> {
     let (e, a) = (b.grid.elevations(), b.grid.azimuths());
     let threads = rayon::current_num_threads().max(1);
-    let mut out = vec![0.0; b.grid.len()];
+    let mut out = crate::broadcast::buffer(b.grid.len(), &[e, a])?;
+    out.resize(b.grid.len(), 0.0);
     let mut tile = Vec::new();
     let mut budget = FIRST_BLOCK_PER_THREAD * threads;
     let mut r0 = 0;
