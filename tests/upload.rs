@@ -225,6 +225,17 @@ fn record_and_arrays_carry_the_maps_values() {
                 assert_eq!(g.bias_radius, 0.0);
                 assert_eq!(g2.bias_radius, 2.0);
                 assert_eq!(f32::from_bits(word(&g2.to_bytes(), 124)), 2.0);
+                // Camera-relative with PCF: gpu_relative's matrix, gpu_with_pcf's bias values.
+                let o = DVec3::new(3.0, -2.0, 7.5);
+                let g3 = m.gpu_relative_with_pcf(o, depth, 2.0).unwrap();
+                assert_eq!(
+                    g3,
+                    GpuShadowMap {
+                        world_to_clip: m.gpu_relative(o, depth).world_to_clip,
+                        ..g2
+                    }
+                );
+                assert!(m.gpu_relative_with_pcf(o, depth, -1.0).is_err());
                 // Bias values ∝ r + ½ (docs/renderer.md): the record for r = 2 is the r = 0
                 // record times 5 = (2r + 1)/(2·0 + 1), the factor `sa_kernel_scale(m, 2)` applies
                 // to an r = 0 record and that it does not apply again to an r = 2 record.

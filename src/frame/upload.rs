@@ -277,6 +277,22 @@ impl FrameMap {
         self.record(self.world_to_clip_relative_cols(origin, depth), depth, 0.0)
     }
 
+    /// [`FrameMap::gpu_relative`] with the bias values for a PCF kernel of radius `r` texels:
+    /// the record a renderer with camera-relative positions and PCF uploads.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`](crate::Error::InvalidArgument) naming `r` when it is negative
+    /// or not finite.
+    pub fn gpu_relative_with_pcf(
+        &self,
+        origin: impl Into<DVec3>,
+        depth: ClipDepth,
+        r: f64,
+    ) -> crate::Result<GpuShadowMap> {
+        self.bias(r, depth)?;
+        Ok(self.record(self.world_to_clip_relative_cols(origin, depth), depth, r))
+    }
+
     fn record(&self, world_to_clip: [[f32; 4]; 4], depth: ClipDepth, r: f64) -> GpuShadowMap {
         let pair = |p: (f64, f64)| [p.0 as f32, p.1 as f32];
         let bias = self.bias_unchecked(r, depth);
