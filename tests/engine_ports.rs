@@ -474,6 +474,10 @@ fn filament_current_revision_keeps_the_light_view_at_the_origin() {
 ///   one texel 2/2046: (1.145233·10⁻³, 1.188888·10⁻³).
 /// - Orthographic (`lispsm` false): u = X/2, v = (Y − 15)/5: (4/2046, 10/2046).
 ///
+/// With LiSPSM the world origin (the camera) lies at clip v = A − |B|/√200 = −5.83, A =
+/// (2 n_opt + d)/d: outside the map, where Filament's comment says "in the middle of the
+/// shadowmap" (docs/errata.md, Filament 2).
+///
 /// Recomputed independently with NumPy (the matrices Mv, L, Mp, W, F written out from the
 /// derivation above, inverse(S) differentiated by central differences at the origin's NDC):
 /// 1.1452325·10⁻³, 1.1888882·10⁻³ and 1.9550342·10⁻³, 4.8875855·10⁻³. The earlier revision's
@@ -482,10 +486,21 @@ fn filament_current_revision_keeps_the_light_view_at_the_origin() {
 /// units over 1/shadowDimension) for the orthographic map.
 #[test]
 fn filament_texel_size_is_both_edges_at_the_world_origin() {
-    let lispsm = filament_down_on_box((-2.0, 0.0), true).texel_size_at_one_meter_ws;
+    let map = filament_down_on_box((-2.0, 0.0), true);
+    let lispsm = map.texel_size_at_one_meter_ws;
     let n_opt = 10f64 + 200f64.sqrt();
     let yp = 200f64.sqrt();
     let b = 2.0 * n_opt * (n_opt + 10.0) / 10.0;
+    // The world origin (the camera) is not in the map: v = A + B/Y′ with A = (2 n_opt + d)/d,
+    // B = −b: −5.8284 (docs/errata.md, Filament 2).
+    let v = (2.0 * n_opt + 10.0) / 10.0 - b / yp;
+    assert!((v - -5.828_427).abs() < 1e-6, "{v}");
+    let o = map.s * glam::Vec4::W;
+    assert!(
+        (f64::from(o.y / o.w) - v).abs() < 1e-4 * v.abs(),
+        "{} vs {v}",
+        o.y / o.w
+    );
     let texel = 2.0 / 2046.0;
     let hand = [
         2.0 * yp / n_opt * texel,
