@@ -16,8 +16,11 @@ Builders (4×4 float64 matrices, eye space → light clip space, ``clip = M @ (x
 ``warp``, ``n_prime_for``, ``cascades``, ``faces``, ``tsm``. World-space frame API (the renderer's path: a view matrix,
 scene boxes, every scheme; dict of arrays): ``frame``; the cheapest scheme for a target error or
 a texel budget: ``plan``; a clipmap's levels, pages and LOD bias: ``plan_clipmap``. Measurement: ``frustum_max``,
-``point_error``; a captured frame's per-pixel error: ``error_image``. Hemisphere sweep: ``sweep`` (all cores; Ctrl-C interrupts it),
+``point_error``; a captured frame's per-pixel error: ``error_image``. Hemisphere sweep: ``sweep`` (all cores),
 ``sweep_angles``.
+
+Ctrl-C raises ``KeyboardInterrupt`` within a fraction of a second in every call that can run
+long; a result larger than memory raises ``MemoryError`` before any work (docs/python.md).
 """
 
 from ._native import (
