@@ -2,8 +2,11 @@
 //! against the engines' documented properties, not against their own arithmetic: Bevy's cascade
 //! holds its whole frustum slice in its clip volume (reversed depth), its size is the slice's
 //! larger diagonal rounded up, its centre lies on whole texels; Filament's frustum–box
-//! intersection yields the hull's vertices, its LiSPSM n_opt is (z₀ + √(z₀ z₁))/sin γ, and its
-//! focused map holds every visible receiver point.
+//! intersection yields the hull's vertices, its LiSPSM n_opt is (z₀ + √(z₀ z₁))/sin γ, its
+//! focused map holds every visible receiver point, and the current revision's light view, depth
+//! range and two-edge texel size match hand values the earlier revision does not; three.js's
+//! CSM splits its frustum where its breaks say (as lerp factors), its squares are the slices'
+//! larger diagonals, unrounded, and they hold their slices on a world-anchored texel grid.
 
 #[allow(dead_code)]
 #[path = "../benches/reference/bevy_cascade.rs"]
