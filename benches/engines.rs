@@ -18,6 +18,8 @@
 //! cargo bench --bench reference --bench engines -- --warm-up-time 1 --measurement-time 3
 //! ```
 
+// The ports also serve examples/engine_defaults.rs and the tests: not every item is benched.
+#[allow(dead_code)]
 #[path = "reference/bevy_cascade.rs"]
 mod bevy_cascade;
 #[path = "reference/filament_directional.rs"]
