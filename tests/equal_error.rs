@@ -348,8 +348,9 @@ fn error_floor_at_the_target_regressions() {
     }
 }
 
-/// Warped rules and stable cascades on fixed scenes: equal errors to 10⁻⁹, and no practical λ of
-/// the grid better (LiSPSM's n′ and the stable square both grow with the slice here).
+/// Warped rules and stable cascades on fixed scenes: equal errors to 10⁻⁹ (stable cascades: to
+/// their planes' grid), and no practical λ of the grid better (LiSPSM's n′ and the stable square
+/// both grow with the slice here).
 #[test]
 fn warped_and_stable_cascades_on_a_ground_plane() {
     let view = glam::dcamera::rh::view::look_at_mat4(
@@ -377,7 +378,15 @@ fn warped_and_stable_cascades_on_a_ground_plane() {
                 let errs: Vec<f64> = f.maps().iter().map(|m| m.max_error_pixels).collect();
                 let hi = max_error(&f);
                 let lo = errs.iter().copied().fold(f64::INFINITY, f64::min);
-                assert!(hi - lo <= 1e-9 * hi, "{name} {light} k={k}: {errs:?}");
+                // Stable planes sit on a grid of 2^(1/64) in depth (docs/renderer.md, "Skipping
+                // maps that did not change"): the first cascade's error is lower by B's near
+                // depth over its grid depth, less than 2^(1/64).
+                let tol = if name == "stable" {
+                    1.0 - 2f64.powf(-1.0 / 64.0)
+                } else {
+                    1e-9
+                };
+                assert!(hi - lo <= tol * hi, "{name} {light} k={k}: {errs:?}");
                 if name == "lispsm" {
                     let best = best_practical(&input, k, WarpRule::Lispsm).unwrap();
                     assert!(hi <= best * (1.0 + 1e-9), "{name} k={k}: {hi} > {best}");

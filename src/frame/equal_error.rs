@@ -40,6 +40,10 @@
 //! Every search is bounded ([`MAX_ITERATIONS`] evaluations per root); a split's root search that
 //! does not converge (a NaN error) is [`Error::NoSolution`]. The result is never worse than the
 //! logarithmic splits. No heap allocation on success.
+//!
+//! Stable cascades ([`SliceMap::Stable`]) are not searched: their equal-error planes are the
+//! logarithmic splits of B's range in closed form, its ends on a grid that keeps them fixed
+//! under small camera moves ([`super::stable_splits`]).
 
 use super::{Built, Ctx, Slice};
 use crate::analytic::partition::{z_splits, SplitScheme, MAX_PARTITIONS};
@@ -88,17 +92,14 @@ enum Sweep {
 impl Ctx<'_, '_> {
     /// The measured maximum error max(M_x, M_z) of the slice `[a, b]`'s map (unit resolutions
     /// aside: the frame's), 0 where no map is needed.
-    fn slice_error(&self, a: f64, b: f64, how: SliceMap) -> Result<f64> {
+    fn slice_error(&self, a: f64, b: f64, rule: WarpRule) -> Result<f64> {
         let s = Slice {
             cover: (a, b),
             split: (a, b),
             blend: (b, b),
         };
         let mut map = None;
-        let built = match how {
-            SliceMap::Rule(rule) => self.map(&s, rule, &mut map)?,
-            SliceMap::Stable => self.stable_map(&s, &mut map)?,
-        };
+        let built = self.map(&s, rule, &mut map)?;
         Ok(match (built, map) {
             (Built::Map, Some(m)) => m.max_mx.max(m.max_mz),
             _ => 0.0,
@@ -117,7 +118,7 @@ impl Ctx<'_, '_> {
         e: f64,
         k: usize,
         (lo, hi): (f64, f64),
-        how: SliceMap,
+        rule: WarpRule,
         planes: &mut [f64; MAX_PARTITIONS + 1],
     ) -> Result<Sweep> {
         let ln_e = e.ln();
@@ -129,7 +130,7 @@ impl Ctx<'_, '_> {
             if b_min >= hi {
                 return Ok(Sweep::TooSmall);
             }
-            let g = |u: f64| Ok(self.slice_error(a, u.exp(), how)?.ln() - ln_e);
+            let g = |u: f64| Ok(self.slice_error(a, u.exp(), rule)?.ln() - ln_e);
             // The previous sweep's plane (the logarithmic one at first) is the first guess.
             let found = bracket(g, planes[i + 1].ln(), (b_min.ln(), hi.ln()))?;
             let (lo_pt, hi_pt) = match found {
@@ -143,7 +144,7 @@ impl Ctx<'_, '_> {
                     }
                     let mut tail = 0.0f64;
                     for j in i..k {
-                        tail = tail.max(self.slice_error(planes[j], planes[j + 1], how)?);
+                        tail = tail.max(self.slice_error(planes[j], planes[j + 1], rule)?);
                     }
                     return Ok(Sweep::TooLarge(tail));
                 }
@@ -153,7 +154,7 @@ impl Ctx<'_, '_> {
             a = ln_b.exp().clamp(b_min, hi);
             planes[i + 1] = a;
         }
-        Ok(Sweep::Last(self.slice_error(a, hi, how)?))
+        Ok(Sweep::Last(self.slice_error(a, hi, rule)?))
     }
 
     /// h(E) of the module docs for ln E = `v`; a complete sweep's planes replace `best`'s when
@@ -163,12 +164,12 @@ impl Ctx<'_, '_> {
         v: f64,
         k: usize,
         range: (f64, f64),
-        how: SliceMap,
+        rule: WarpRule,
         planes: &mut [f64; MAX_PARTITIONS + 1],
         best: &mut Best,
     ) -> Result<f64> {
         let e = v.exp();
-        let (h, largest) = match self.sweep(e, k, range, how, planes)? {
+        let (h, largest) = match self.sweep(e, k, range, rule, planes)? {
             Sweep::TooSmall => return Ok(f64::INFINITY),
             Sweep::TooLarge(tail) => (f64::NEG_INFINITY, tail.max(e)),
             Sweep::Last(last) => (last.ln() - v, last.max(e)),
@@ -180,7 +181,8 @@ impl Ctx<'_, '_> {
         Ok(h)
     }
 
-    /// The equal-error slices of the visible range `[zn, zf]` (module docs); returns k.
+    /// The equal-error slices of the visible range `[zn, zf]` (module docs; for stable cascades
+    /// the closed form of [`super::stable_splits`]); returns k.
     pub(super) fn equal_error_slices(
         &self,
         k: usize,
@@ -200,12 +202,19 @@ impl Ctx<'_, '_> {
             // B has no depth to split (or is empty): the visible range's logarithmic splits.
             (lo, hi) = (zn, zf);
         }
-        // The logarithmic splits: the answer where no map is needed anywhere.
-        let log = z_splits(lo, hi, k, SplitScheme::SelfSimilar)?;
         let mut planes = [0.0; MAX_PARTITIONS + 1];
-        planes[..=k].copy_from_slice(log.planes());
-        if k > 1 && deep {
-            self.equalise(k, (lo, hi), how, &mut planes)?;
+        match how {
+            SliceMap::Stable if deep => {
+                super::stable_splits::stable_planes((zn, zf), (lo, hi), k, &mut planes)?;
+            }
+            _ => {
+                // The logarithmic splits: the answer where no map is needed anywhere.
+                let log = z_splits(lo, hi, k, SplitScheme::SelfSimilar)?;
+                planes[..=k].copy_from_slice(log.planes());
+                if let (SliceMap::Rule(rule), true) = (how, k > 1 && deep) {
+                    self.equalise(k, (lo, hi), rule, &mut planes)?;
+                }
+            }
         }
         // Each map covers its measured slice of B's range; the shader's selection ranges reach
         // the visible range's ends.
@@ -229,7 +238,7 @@ impl Ctx<'_, '_> {
         &self,
         k: usize,
         (lo, hi): (f64, f64),
-        how: SliceMap,
+        rule: WarpRule,
         planes: &mut [f64; MAX_PARTITIONS + 1],
     ) -> Result<()> {
         // The bracket: the least and largest cascade errors of the logarithmic splits of B's range.
@@ -238,11 +247,11 @@ impl Ctx<'_, '_> {
         let log_planes = *planes;
         for i in 0..k {
             let (a, b) = log.range(i);
-            let e = self.slice_error(a, b, how)?;
+            let e = self.slice_error(a, b, rule)?;
             e_lo = e_lo.min(e);
             e_hi = e_hi.max(e);
         }
-        let whole = self.slice_error(lo, hi, how)?;
+        let whole = self.slice_error(lo, hi, rule)?;
         if !(whole > 0.0 && whole.is_finite()) {
             // No map is needed anywhere (or none can be measured): any splits do.
             return Ok(());
@@ -255,7 +264,7 @@ impl Ctx<'_, '_> {
         };
         e_hi = e_hi.clamp(e_lo, whole);
         let mut h = |v: f64, planes: &mut [f64; MAX_PARTITIONS + 1]| {
-            self.imbalance(v, k, (lo, hi), how, planes, &mut best)
+            self.imbalance(v, k, (lo, hi), rule, planes, &mut best)
         };
         // v0: E too small (h > 0); v1: E large enough (h ≤ 0).
         let (mut v0, mut v1) = (e_lo.ln(), e_hi.ln());
