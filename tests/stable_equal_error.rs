@@ -157,10 +157,10 @@ fn count_after_first(a: &FrameInput<'_>, b: &FrameInput<'_>) -> Option<(usize, u
     Some((built, same))
 }
 
-/// 100 seeded random ground scenes ([`draw_ground`]), each camera moved by 10⁻³ of the finest texel of its equal-error
-/// frame in a random direction: at least 95 % of the cascades after the first keep their
-/// matrices bit for bit, for equal-error splits (k = 2…5) as for practical splits, Bevy's splits
-/// and clipmap levels.
+/// 100 seeded random ground scenes ([`draw_ground`]), each camera moved by 10⁻³ of the finest
+/// texel of its equal-error frame in a random direction: at least 95 % of the cascades after the
+/// first keep their matrices bit for bit, for equal-error splits (k = 2…5) as for practical
+/// splits, Bevy's splits and clipmap levels (each scheme with at least 100 such cascades).
 #[test]
 fn sub_texel_moves_keep_stable_cascades_of_every_split_scheme() {
     let mut g = Lcg(31);

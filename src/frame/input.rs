@@ -217,9 +217,13 @@ pub enum CascadeSplits<'a> {
     },
     /// k cascades whose measured maximum errors over their focus bodies are equal (issue 24):
     /// the k − 1 planes found by a bounded root search on the measured error, over B's depth
-    /// range within the visible one (SDSM), for the frame's rule (or the stable cascade) and
-    /// light. With monotone errors no other splits of k cascades have a smaller largest error;
-    /// for a frustum-only body they are the logarithmic splits (Lloyd 2006 Eq 15–16). No overlap
+    /// range within the visible one (SDSM), for the frame's rule and light. Stable cascades get
+    /// them in closed form, B's range split logarithmically (which equalises a stable cascade's
+    /// errors) with its ends moved outward onto a grid that keeps the planes under small camera
+    /// moves, at a bounded cost in error (`frame/stable_splits.rs`, docs/renderer.md). With
+    /// monotone errors no other splits of k cascades have a smaller largest error (stable
+    /// cascades: but for the grid's cost); for a frustum-only body they are the logarithmic
+    /// splits (Lloyd 2006 Eq 15–16). No overlap
     /// (no blend band): each map covers its selection range's part of B's depth range. The
     /// search: `frame/equal_error.rs` and docs/planning.md.
     EqualError {

@@ -9,10 +9,11 @@
 //! A stable cascade of the slice `[a, b]` is an orthographic map (world-fixed light space, fixed
 //! light) on a square of half-width `R(a, b) res/(res − 2)`, `R` the radius of the slice's
 //! bounding sphere ([`bounding_sphere`](crate::maps::cascades::bounding_sphere)). For an
-//! orthographic map `h.w = 1` and the gradients `G_s`, `G_t` of [`crate::measure::vertex_max`]
-//! are constant rows proportional to 1/half-width, so its `m_x = |G_t⊥| / (|D| z tan θ)` and
-//! `m_z = 1 / (|G_t⊥| z tan θ)` are the same constants, proportional to the half-width, over `z`,
-//! the vertex's depth: the measured error of the cascade is
+//! orthographic map `h.w = 1` and the gradients `G_s`, `G_t` of
+//! [`vertex_max`](crate::measure::vertex::vertex_max) are constant rows proportional to
+//! 1/half-width, so its `m_x = |G_t⊥| / (|D| z tan θ)` and `m_z = 1 / (|G_t⊥| z tan θ)` are the
+//! same constants, proportional to the half-width, over `z`, the vertex's depth: the measured
+//! error of the cascade is
 //!
 //! ```text
 //! e(a, b) = C R(a, b) / max(a, lo)        (C fixed by the light, the camera's θ and res)
