@@ -156,7 +156,10 @@ fn engines(input: &FrameInput<'_>, view: DMat4, light: DVec3, boxes: &[Aabb]) ->
 
     // Filament: one LiSPSM map of 1024² (1022² inside the border).
     use filament_directional as fl;
-    let filament_model = frame(&input.scheme(FrameScheme::Single(WarpRule::Filament)))?;
+    // The model on Filament's own 1024² map (the caller's input is Bevy's and three.js's 2048²).
+    let mut filament_input = input.scheme(FrameScheme::Single(WarpRule::Filament));
+    filament_input.map_resolution = 1024;
+    let filament_model = frame(&filament_input)?;
     let camera = fl::CameraInfo::perspective(
         view.inverse().as_mat4(),
         FOV_DEG as f32,
