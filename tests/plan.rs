@@ -294,7 +294,9 @@ fn the_candidates_are_the_issues_list() {
     for rule in FACE_RULES {
         assert!(list.contains(&FrameScheme::Faces { rule, k: 1 }));
     }
-    assert_eq!(list.iter().filter(|s| is_searched(s)).count(), 21);
+    // 2 rules × k = 2 … 8 equal-error cascades that follow the camera; stable equal-error
+    // cascades are a closed form (docs/renderer.md), not searched.
+    assert_eq!(list.iter().filter(|s| is_searched(s)).count(), 14);
 }
 
 fn k_of(s: &CascadeSplits<'_>) -> usize {

@@ -134,8 +134,10 @@ pub fn candidates(input: &FrameInput<'_>) -> Vec<FrameScheme<'static>> {
 }
 
 /// Whether the frame places the scheme's splits by a root search on the measured error
-/// (equal-error cascades): such a candidate costs a few hundred slice maps, the others one frame
-/// (docs/planning.md, "Cost"). Filter them out of [`candidates`] for a plan within about 2 ms.
+/// (equal-error cascades that follow the camera): such a candidate costs a few hundred slice
+/// maps, the others one frame (docs/planning.md, "Cost"). Stable equal-error cascades are not
+/// searched (their planes are a closed form on a grid, docs/renderer.md). Filter the searched
+/// ones out of [`candidates`] for a plan within about 2 ms.
 #[must_use]
 pub fn is_searched(s: &FrameScheme<'_>) -> bool {
     matches!(
@@ -143,7 +145,7 @@ pub fn is_searched(s: &FrameScheme<'_>) -> bool {
         FrameScheme::Cascades {
             splits: CascadeSplits::EqualError { .. },
             ..
-        } | FrameScheme::Stable(CascadeSplits::EqualError { .. })
+        }
     )
 }
 
