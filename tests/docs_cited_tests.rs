@@ -188,19 +188,25 @@ fn parenthesised_citations(text: &str) -> Vec<Citation> {
         let inside = &after[..close];
         consumed += open + 1;
         rest = &prose[consumed..];
-        let files: Vec<String> = inside
+        let mut files: Vec<String> = inside
             .split_whitespace()
             .filter_map(test_path)
             .map(str::to_string)
             .collect();
-        if files.is_empty() {
-            continue;
-        }
         let mut names: Vec<String> = inside
             .split_whitespace()
             .filter_map(|w| test_ident(w.trim_end_matches([',', ';', ':', '.'])))
             .map(str::to_string)
             .collect();
+        if files.is_empty() {
+            // The file before the parenthesis: "tests/x.rs (`name`)".
+            match before.split_whitespace().last().and_then(test_path) {
+                Some(file) if !names.is_empty() => files.push(file.to_string()),
+                _ => continue,
+            }
+            out.push(Citation { files, names });
+            continue;
+        }
         // Backward from the parenthesis: `a`, `b` and `c` (tests/x.rs).
         let mut b = before.trim_end();
         while let Some(end) = b.strip_suffix('`') {
@@ -258,10 +264,10 @@ fn defines_test(source: &str, name: &str) -> bool {
 #[test]
 fn citation_parser_reads_the_docs_forms() {
     let c = parenthesised_citations(
-        "the error of `a_b` and `c_d` (tests/x.rs). Also (tests/y.rs, `e_f`) and\n(`tests/z.rs`) and\n`g_h`\n(render-check/tests/r.rs); (not a citation `i_j`).",
+        "the error of `a_b` and `c_d` (tests/x.rs). Also (tests/y.rs, `e_f`) and\n(`tests/z.rs`) and\n`g_h`\n(render-check/tests/r.rs); (not a citation `i_j`). tests/w.rs\n(`k_l`).",
     );
     let files = |c: &Citation| c.files.clone();
-    assert_eq!(c.len(), 4, "{c:?}");
+    assert_eq!(c.len(), 5, "{c:?}");
     assert_eq!(files(&c[0]), ["tests/x.rs"]);
     assert_eq!(c[0].names, ["c_d", "a_b"]);
     assert_eq!(c[1].names, ["e_f"]);
@@ -269,6 +275,8 @@ fn citation_parser_reads_the_docs_forms() {
     assert_eq!(files(&c[2]), ["tests/z.rs"]);
     assert_eq!(c[3].names, ["g_h"]);
     assert_eq!(files(&c[3]), ["render-check/tests/r.rs"]);
+    assert_eq!(files(&c[4]), ["tests/w.rs"]);
+    assert_eq!(c[4].names, ["k_l"]);
 }
 
 #[test]
