@@ -12,6 +12,38 @@ pub const NO_ADAPTER: &str = "no Vulkan adapter found: install a Vulkan driver; 
      Debian's software rasterizer: `apt-get update && apt-get install -y mesa-vulkan-drivers` \
      (scripts/test.sh does this)";
 
+/// The first Vulkan adapter's device and queue (a GPU if there is one, else lavapipe), with
+/// its name, driver and backend: what [`Gpu::new`] draws with, and what a test that runs the
+/// WGSL module in a compute pass asks for.
+///
+/// # Errors
+/// [`NO_ADAPTER`] when none is found; the device's error otherwise.
+pub fn device(label: &str) -> Result<(wgpu::Device, wgpu::Queue, String), String> {
+    let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
+    desc.backends = wgpu::Backends::VULKAN;
+    let instance = wgpu::Instance::new(desc);
+    let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+        power_preference: wgpu::PowerPreference::HighPerformance,
+        force_fallback_adapter: false,
+        compatible_surface: None,
+        ..Default::default()
+    }))
+    .map_err(|e| format!("{NO_ADAPTER} ({e})"))?;
+    let info = adapter.get_info();
+    let name = format!(
+        "{} ({}, {:?}, {:?})",
+        info.name, info.driver_info, info.device_type, info.backend
+    );
+    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+        label: Some(label),
+        required_features: wgpu::Features::empty(),
+        required_limits: adapter.limits(),
+        ..Default::default()
+    }))
+    .map_err(|e| format!("requesting a device of {name}: {e}"))?;
+    Ok((device, queue, name))
+}
+
 /// The device.
 pub struct Gpu {
     device: wgpu::Device,
@@ -162,28 +194,7 @@ impl Gpu {
     /// # Errors
     /// [`NO_ADAPTER`] when none is found; the device's error otherwise.
     pub fn new() -> Result<Self, String> {
-        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
-        desc.backends = wgpu::Backends::VULKAN;
-        let instance = wgpu::Instance::new(desc);
-        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
-            power_preference: wgpu::PowerPreference::HighPerformance,
-            force_fallback_adapter: false,
-            compatible_surface: None,
-            ..Default::default()
-        }))
-        .map_err(|e| format!("{NO_ADAPTER} ({e})"))?;
-        let info = adapter.get_info();
-        let name = format!(
-            "{} ({}, {:?}, {:?})",
-            info.name, info.driver_info, info.device_type, info.backend
-        );
-        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-            label: Some("render-check"),
-            required_features: wgpu::Features::empty(),
-            required_limits: adapter.limits(),
-            ..Default::default()
-        }))
-        .map_err(|e| format!("requesting a device of {name}: {e}"))?;
+        let (device, queue, name) = device("render-check")?;
         // wgpu panics on an uncaptured validation error: every call below is scoped, so that an
         // error is returned instead.
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);

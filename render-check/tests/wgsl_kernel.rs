@@ -33,23 +33,8 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
 
 /// Runs the harness over `records` with the shader radii `radii`: (scale, depth bias, offset).
 fn run(records: &[GpuShadowMap], radii: &[i32]) -> Vec<[f32; 3]> {
-    let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
-    desc.backends = wgpu::Backends::VULKAN;
-    let instance = wgpu::Instance::new(desc);
-    let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
-        power_preference: wgpu::PowerPreference::HighPerformance,
-        force_fallback_adapter: false,
-        compatible_surface: None,
-        ..Default::default()
-    }))
-    .unwrap_or_else(|e| panic!("{} ({e})", render_check::gpu::NO_ADAPTER));
-    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-        label: Some("wgsl_kernel"),
-        required_features: wgpu::Features::empty(),
-        required_limits: adapter.limits(),
-        ..Default::default()
-    }))
-    .expect("a device");
+    let (device, queue, _) =
+        render_check::gpu::device("wgsl_kernel").unwrap_or_else(|e| panic!("{e}"));
     let source = format!("{SHADOW_WGSL}{HARNESS}");
     let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some("harness"),
