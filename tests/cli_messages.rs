@@ -16,10 +16,9 @@ fn refused(args: &[&str]) -> String {
     err
 }
 
-/// `plan` at n = 1, f = 100, θ = 0.5, the light straight down, H = 1080, then `extra`.
-fn plan<'a>(extra: &[&'a str]) -> Vec<&'a str> {
-    let mut v = vec![
-        "plan",
+/// `command` at n = 1, f = 100, θ = 0.5, the light straight down, then `own` and `extra`.
+fn with_camera<'a>(command: &'a str, own: [&'a str; 2], extra: &[&'a str]) -> Vec<&'a str> {
+    let camera = [
         "--near",
         "1",
         "--far",
@@ -28,30 +27,22 @@ fn plan<'a>(extra: &[&'a str]) -> Vec<&'a str> {
         "0.5",
         "--light-dir",
         "0,-1,0",
-        "--image-height",
-        "1080",
     ];
+    let mut v = vec![command];
+    v.extend(camera);
+    v.extend(own);
     v.extend_from_slice(extra);
     v
 }
 
-/// `warp` at n = 1, f = 100, θ = 0.5, the light straight down, unwarped, then `extra`.
+/// `plan` with H = 1080, then `extra`.
+fn plan<'a>(extra: &[&'a str]) -> Vec<&'a str> {
+    with_camera("plan", ["--image-height", "1080"], extra)
+}
+
+/// `warp`, unwarped, then `extra`.
 fn warp<'a>(extra: &[&'a str]) -> Vec<&'a str> {
-    let mut v = vec![
-        "warp",
-        "--near",
-        "1",
-        "--far",
-        "100",
-        "--half-fov",
-        "0.5",
-        "--light-dir",
-        "0,-1,0",
-        "--warp",
-        "uniform",
-    ];
-    v.extend_from_slice(extra);
-    v
+    with_camera("warp", ["--warp", "uniform"], extra)
 }
 
 /// docs/cli.md: numbers in messages are the shortest decimal that round-trips, in exponent form

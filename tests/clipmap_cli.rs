@@ -28,8 +28,13 @@ fn warp_rule(rule: &str, extra: &[&str]) -> (bool, String) {
         "clipmap",
     ];
     args.extend_from_slice(extra);
+    run(&args)
+}
+
+/// The command line with `args`: success, and standard output then standard error.
+fn run<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> (bool, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
-        .args(&args)
+        .args(args)
         .output()
         .unwrap();
     let text =
@@ -132,13 +137,7 @@ fn clipmap(args: &[String]) -> (bool, String) {
     .map(String::from)
     .to_vec();
     all.extend_from_slice(args);
-    let out = Command::new(env!("CARGO_BIN_EXE_shadow-aliasing"))
-        .args(&all)
-        .output()
-        .unwrap();
-    let text =
-        String::from_utf8_lossy(&out.stdout).to_string() + &String::from_utf8_lossy(&out.stderr);
-    (out.status.success(), text)
+    run(&all)
 }
 
 /// The word after `marker` in `text`, without a trailing comma.
