@@ -63,7 +63,7 @@ pub const MAX_RESOLUTION: u64 = 1 << 30;
 
 impl Rounding {
     /// The least allowed resolution ≥ `need` (≥ 1), `None` above [`MAX_RESOLUTION`].
-    fn at_least(self, need: f64) -> Option<u64> {
+    pub(crate) fn at_least(self, need: f64) -> Option<u64> {
         // NaN (a zero error target) and anything above the cap are refused alike.
         if need.is_nan() || need > MAX_RESOLUTION as f64 {
             return None;

@@ -14,6 +14,8 @@
 pub mod allocate;
 pub mod candidates;
 pub mod clipmap;
+pub mod controller;
 pub mod planner;
 
+pub use controller::{Controller, ControllerOptions, Decision};
 pub use planner::{plan, plan_among, Candidate, Goal, Measured, Plan};
