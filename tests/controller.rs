@@ -444,3 +444,63 @@ fn bad_options_are_refused_by_name() {
     );
     assert!(Controller::new(ok).is_ok());
 }
+
+/// The interior planes of a frame's cascades as fractions of the span of their splits.
+fn fractions(f: &shadow_aliasing::frame::Frame) -> Vec<f64> {
+    let s: Vec<(f64, f64)> = f.slots().iter().map(|m| m.unwrap().split).collect();
+    let (z0, zk) = (s[0].0, s[s.len() - 1].1);
+    s[..s.len() - 1]
+        .iter()
+        .map(|p| (p.1 - z0) / (zk - z0))
+        .collect()
+}
+
+/// Equal-error cascades that follow the camera keep the planes of their cut's search, as
+/// fractions of the visible depth range, between cuts (one frame, no search), where a search in
+/// each frame would have moved them; the cut's planes are the search's.
+#[test]
+fn equal_error_cascades_keep_their_planes_between_cuts() {
+    let boxes = scene();
+    let ee = FrameScheme::Cascades {
+        splits: CascadeSplits::EqualError { k: 3 },
+        rule: WarpRule::Uniform,
+    };
+    let mut c = Controller::new(ControllerOptions {
+        candidates: Some(vec![ee]),
+        ..options(30, 0.9)
+    })
+    .unwrap();
+    let searched = |i: usize, res: u32| {
+        let mut inp = input(camera(i), &boxes).scheme(ee);
+        inp.map_resolution = res;
+        fractions(&frame(&inp).unwrap())
+    };
+    let d = c.frame(&input(camera(60), &boxes)).unwrap();
+    assert!(d.cut);
+    let kept = fractions(d.frame);
+    assert_eq!(kept.len(), 2);
+    let first = searched(60, d.resolution);
+    assert!(kept.iter().zip(&first).all(|(a, b)| (a - b).abs() <= 1e-12));
+    let mut moved = 0.0f64;
+    for i in 61..=80 {
+        let d = c.frame(&input(camera(i), &boxes)).unwrap();
+        assert!(!d.cut, "frame {i}");
+        let now = fractions(d.frame);
+        assert!(
+            now.iter().zip(&kept).all(|(a, b)| (a - b).abs() <= 1e-9),
+            "frame {i}: {now:?} against {kept:?}"
+        );
+        let fresh = searched(i, d.resolution);
+        moved = moved.max(
+            fresh
+                .iter()
+                .zip(&kept)
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f64::max),
+        );
+    }
+    assert!(
+        moved > 1e-4,
+        "the search would have moved the planes by {moved}"
+    );
+}

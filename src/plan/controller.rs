@@ -10,10 +10,12 @@
 //! - **Each other frame**: the kept set-up is built at its kept resolution and its error read
 //!   from the frame's own measurement
 //!   ([`FrameMap::max_error_pixels`](crate::frame::FrameMap::max_error_pixels)). Above the
-//!   target, it is resized at once (to meet `margin × target`, so that the next frames have room), or, where
-//!   `max_resolution` does not allow that, searched again as on a cut. At or below it, a smaller
-//!   resolution that would have met `margin × target` in this frame and in each of the last
-//!   `patience` frames is switched to.
+//!   target, it is resized at once (to meet `margin × target`, so that the next frames have
+//!   room), or, where `max_resolution` does not allow that, searched again as on a cut. At or
+//!   below it, a smaller resolution that would have met `margin × target` in this frame and in
+//!   each of the last `patience` frames is switched to. Equal-error cascades that follow the
+//!   camera keep the planes of their last search, as fractions of the visible depth range: one
+//!   frame, no search.
 //!
 //! The scheme changes only on a cut or when the kept scheme cannot meet the target: the
 //! controller does not look at other schemes between cuts (docs/planning.md, "An error budget per
@@ -22,7 +24,7 @@
 use super::allocate::Rounding;
 use super::candidates::candidates;
 use crate::error::{fmt_num, Error, Result};
-use crate::frame::{frame_into, Frame, FrameInput, FrameScheme};
+use crate::frame::{frame_into, CascadeSplits, Frame, FrameInput, FrameScheme};
 use crate::maps::atlas::MAX_ATLAS_ENTRIES;
 
 /// What the controller is asked for and what it may choose from.
@@ -189,6 +191,9 @@ pub struct Controller {
     /// the largest such resolution over them.
     streak: u32,
     down: u32,
+    /// The interior planes of kept equal-error cascades (that follow the camera), as fractions
+    /// of the visible depth range, from the last search of their planes.
+    fractions: Vec<f64>,
 }
 
 impl Controller {
@@ -209,6 +214,7 @@ impl Controller {
             last: None,
             streak: 0,
             down: 0,
+            fractions: Vec::new(),
         })
     }
 
@@ -273,7 +279,7 @@ impl Controller {
     fn steady(&mut self, input: &FrameInput<'_>, kept: Setup) -> Result<(Setup, f64)> {
         let o = &self.options;
         let (target, margin, patience) = (o.max_error, o.margin, o.patience);
-        let Ok(err) = build(input, kept, o.max_maps, &mut self.frame) else {
+        let Ok(err) = self.build_kept(input, kept) else {
             return self.search(input);
         };
         let r = f64::from(kept.resolution);
@@ -302,7 +308,7 @@ impl Controller {
                 resolution: self.down,
                 ..kept
             };
-            if let Ok(e) = build(input, down, self.options.max_maps, &mut self.frame) {
+            if let Ok(e) = self.build_kept(input, down) {
                 if e <= target {
                     return Ok((down, e));
                 }
@@ -310,10 +316,48 @@ impl Controller {
             // The smaller maps missed after all (a stable map's snap): keep the set-up.
             self.streak = 0;
             self.down = 0;
-            let e = build(input, kept, self.options.max_maps, &mut self.frame)?;
+            let e = self.build_kept(input, kept)?;
             return Ok((kept, e));
         }
         Ok((kept, err))
+    }
+
+    /// `setup` built into the controller's frame; its largest measured error. Equal-error
+    /// cascades that follow the camera are built with the planes their last search placed, as
+    /// fractions of the visible depth range (one frame, no search); their planes are searched
+    /// again (and kept) where there are none or the frame refuses them.
+    fn build_kept(&mut self, input: &FrameInput<'_>, setup: Setup) -> Result<f64> {
+        let max_maps = self.options.max_maps;
+        let res = setup.resolution;
+        let FrameScheme::Cascades {
+            splits: CascadeSplits::EqualError { k },
+            rule,
+        } = setup.scheme
+        else {
+            return build(input, setup.scheme, res, max_maps, &mut self.frame);
+        };
+        if self.fractions.len() + 1 == k {
+            let kept = FrameScheme::Cascades {
+                splits: CascadeSplits::Fractions {
+                    fractions: &self.fractions,
+                    overlap: 0.0,
+                },
+                rule,
+            };
+            if let Ok(e) = build(input, kept, res, max_maps, &mut self.frame) {
+                return Ok(e);
+            }
+        }
+        let e = build(input, setup.scheme, res, max_maps, &mut self.frame)?;
+        self.fractions.clear();
+        let slots = self.frame.slots();
+        let planes: Option<Vec<(f64, f64)>> = slots.iter().map(|m| m.map(|m| m.split)).collect();
+        if let Some(p) = planes.filter(|p| p.len() == k) {
+            let (z0, zk) = (p[0].0, p[k - 1].1);
+            self.fractions
+                .extend(p[..k - 1].iter().map(|s| (s.1 - z0) / (zk - z0)));
+        }
+        Ok(e)
     }
 
     /// The least allowed resolution whose error is at most `e` for maps whose largest error
@@ -334,17 +378,17 @@ impl Controller {
         scheme: FrameScheme<'static>,
         mut res: u32,
     ) -> Result<Option<(Setup, f64)>> {
-        let o = &self.options;
+        let target = self.options.max_error;
         for _ in 0..4 {
             let s = Setup {
                 scheme,
                 resolution: res,
             };
-            let err = build(input, s, o.max_maps, &mut self.frame)?;
-            if err <= o.max_error {
+            let err = self.build_kept(input, s)?;
+            if err <= target {
                 return Ok(Some((s, err)));
             }
-            let next = self.resolution_for(err * f64::from(res), o.max_error);
+            let next = self.resolution_for(err * f64::from(res), target);
             let next = next
                 .filter(|&n| n > res)
                 .or_else(|| self.resolution_for(f64::from(res) + 1.0, 1.0));
@@ -368,6 +412,7 @@ impl Controller {
         };
         let cap = self.options.max_resolution;
         let target = self.options.max_error;
+        self.fractions.clear();
         let mut scratch = Frame::default();
         // (texels, error at that resolution, index, resolution) of those that meet the target;
         // (error at the cap, index) of every one built.
@@ -379,7 +424,13 @@ impl Controller {
                 scheme: *s,
                 resolution: cap,
             };
-            let err = match build(input, at_cap, self.options.max_maps, &mut scratch) {
+            let err = match build(
+                input,
+                at_cap.scheme,
+                cap,
+                self.options.max_maps,
+                &mut scratch,
+            ) {
                 Ok(e) => e,
                 Err(e) => {
                     first_err.get_or_insert(e);
@@ -412,15 +463,21 @@ impl Controller {
             scheme: list[i],
             resolution: cap,
         };
-        let err = build(input, s, self.options.max_maps, &mut self.frame)?;
+        let err = self.build_kept(input, s)?;
         Ok((s, err))
     }
 }
 
 /// `setup` built into `out` for `input`; its largest measured error.
-fn build(input: &FrameInput<'_>, setup: Setup, max_maps: usize, out: &mut Frame) -> Result<f64> {
-    let mut one = input.scheme(setup.scheme).measure(true);
-    one.map_resolution = setup.resolution;
+fn build<'a>(
+    input: &FrameInput<'a>,
+    scheme: FrameScheme<'a>,
+    resolution: u32,
+    max_maps: usize,
+    out: &mut Frame,
+) -> Result<f64> {
+    let mut one = input.scheme(scheme).measure(true);
+    one.map_resolution = resolution;
     frame_into(&one, out)?;
     let n = out.maps().len();
     if n == 0 {
