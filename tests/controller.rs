@@ -268,9 +268,9 @@ fn fewest_texels(inp: &FrameInput<'_>) -> u64 {
 
 /// A jump of the camera (past `cut_move` of the far distance) or of the light (past `cut_light`)
 /// is a cut: the choice is the fewest texels the planner finds among the candidates, as on the
-/// first frame; a small step is not a cut. Where no candidate meets the target (the walk's
-/// first frames, the eye low over the ground), the least error at the cap, each candidate's
-/// frame built at the cap.
+/// first frame; a small step is not a cut, and `Controller::cut` makes the next frame one.
+/// Where no candidate meets the target (the walk's first frames, the eye low over the ground),
+/// the least error at the cap, each candidate's frame built at the cap.
 #[test]
 fn a_cut_searches_every_candidate() {
     let boxes = scene();
@@ -308,6 +308,11 @@ fn a_cut_searches_every_candidate() {
     let d = c.frame(&slide).unwrap();
     assert!(d.cut);
     assert_eq!(d.texels, fewest_texels(&slide));
+    // Asked for: the same input again, a cut.
+    c.cut();
+    let d = c.frame(&slide).unwrap();
+    assert!(d.cut && !d.switched);
+    assert!(!c.frame(&slide).unwrap().cut);
     let mut sun = slide;
     sun.light_dir_world = DVec3::new(-0.5, -0.6, -0.2);
     let d = c.frame(&sun).unwrap();

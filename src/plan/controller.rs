@@ -224,6 +224,12 @@ impl Controller {
         &self.options
     }
 
+    /// Makes the next frame a cut (every candidate searched): for what the controller does not
+    /// watch, such as a change of the receivers' or casters' bounds.
+    pub fn cut(&mut self) {
+        self.last = None;
+    }
+
     /// This frame's set-up and maps for `input` (its scheme, map resolution and `measure` are
     /// ignored).
     ///
