@@ -301,7 +301,7 @@ impl Controller {
         }
         match self.resolution_for(err * r, margin * target) {
             Some(d) if d < kept.resolution => {
-                self.streak += 1;
+                self.streak = self.streak.saturating_add(1);
                 self.down = self.down.max(d);
             }
             _ => {
