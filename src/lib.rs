@@ -126,7 +126,8 @@ pub struct ReadmeDoctests;
 #[cfg(doctest)]
 pub struct RendererGuideDoctests;
 
-/// docs/planning.md's examples (equal-error splits, texel allocation), compiled as doc-tests.
+/// docs/planning.md's examples (equal-error splits, texel allocation, the planner, the controller),
+/// compiled as doc-tests.
 #[doc = include_str!("../docs/planning.md")]
 #[cfg(doctest)]
 pub struct PlanningDoctests;
