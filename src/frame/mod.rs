@@ -82,6 +82,7 @@ mod culling;
 mod equal_error;
 mod faces;
 mod input;
+pub mod lens;
 mod output;
 mod rules;
 mod stable_splits;
