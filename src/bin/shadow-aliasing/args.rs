@@ -48,6 +48,25 @@ pub enum Command {
         after_help = "Examples:\n  shadow-aliasing plan --near 1 --far 1000 --half-fov 0.5236 --light-dir 0.3,-0.8,-0.4 --receivers=-50,-5,-100,50,0,0 --image-height 1080 --max-error 1\n  shadow-aliasing plan --near 1 --far 1000 --half-fov 0.5236 --light-dir 0.3,-0.8,-0.4 --image-height 1080 --budget-texels 16777216 --max-maps 4 --json\n\nwarp_args in the JSON are warp's flags for the chosen scheme: `warp` with the same camera and\nscene flags and these reproduces each map's M_x and M_z, and so the error\nmax(M_x H/res_s, M_z H/res_t) at the planned resolutions."
     )]
     Plan(PlanArgs),
+    /// Run the error-budget controller over a camera path file (docs/paths.md).
+    #[command(
+        after_help = "Example:\n  shadow-aliasing replay --path paths/walk.json --max-error 2 --json"
+    )]
+    Replay(ReplayArgs),
+}
+
+/// `replay` arguments.
+#[derive(Debug, clap::Args)]
+pub struct ReplayArgs {
+    /// The camera path file (JSON, docs/paths.md).
+    #[arg(long, value_name = "FILE")]
+    pub path: PathBuf,
+    /// The target: the largest error allowed, pixels per texel.
+    #[arg(long = "max-error", value_name = "PX", allow_hyphen_values = true)]
+    pub max_error: f64,
+    /// Print JSON instead of text.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// `plan` arguments.
@@ -657,7 +676,7 @@ mod tests {
     fn every_numeric_option_takes_a_negative_number() {
         use clap::CommandFactory;
         // Options whose values are names or paths, not numbers.
-        const NOT_NUMBERS: [&str; 4] = ["out", "only", "output", "file"];
+        const NOT_NUMBERS: [&str; 5] = ["out", "only", "output", "file", "path"];
         // Each subcommand's required options, then options that others need beside them.
         let base = |sub: &str| -> Vec<(&'static str, &'static str)> {
             let view = [("near", "1"), ("far", "100"), ("half-fov", "0.5")];
@@ -670,6 +689,10 @@ mod tests {
                     ("image-height", "1080"),
                     ("max-error", "1"),
                 ]),
+                "replay" => {
+                    v.clear();
+                    v.extend([("path", "p.json"), ("max-error", "1")]);
+                }
                 _ => v.clear(),
             }
             v
@@ -733,6 +756,7 @@ mod tests {
             "sweep --threads",
             "plan --max-maps",
             "plan --image-height",
+            "replay --max-error",
         ] {
             assert!(
                 checked.iter().any(|c| c == must),

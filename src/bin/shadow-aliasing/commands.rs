@@ -25,6 +25,10 @@ pub fn run(cli: Cli) -> ExitCode {
             Ok(text) => print(&text),
             Err(e) => fail(e),
         },
+        Command::Replay(a) => match crate::replay::replay(&a) {
+            Ok(text) => print(&text),
+            Err(e) => fail(e),
+        },
     }
 }
 

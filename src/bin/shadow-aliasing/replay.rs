@@ -1,0 +1,182 @@
+//! `replay`: the error-budget controller (`plan::Controller`) over a camera path file
+//! (docs/paths.md): per frame the choice, its measured error, its texels and whether it
+//! switched; in summary the switches, the largest error, the mean texels and the cost.
+
+use crate::args::ReplayArgs;
+use crate::output::sig;
+use crate::path_file;
+use serde_json::{json, Value};
+use shadow_aliasing::frame::{Bound, FrameInput};
+use shadow_aliasing::plan::candidates::label;
+use shadow_aliasing::plan::{Controller, ControllerOptions};
+use std::fmt::Write as _;
+use std::time::Instant;
+
+/// One frame's outcome.
+struct Row {
+    scheme: String,
+    maps: usize,
+    resolution: u32,
+    max_error_pixels: f64,
+    texels: u64,
+    meets_target: bool,
+    switched: bool,
+    cut: bool,
+    ms: f64,
+}
+
+/// The `q` quantile (nearest rank) of sorted values.
+fn quantile(sorted: &[f64], q: f64) -> f64 {
+    let rank = (q * sorted.len() as f64).ceil() as usize;
+    sorted[rank.clamp(1, sorted.len()) - 1]
+}
+
+/// The text or JSON of `replay`.
+pub fn replay(a: &ReplayArgs) -> Result<String, String> {
+    let path = path_file::read(&a.path)?;
+    let mut c = Controller::new(ControllerOptions::new(a.max_error)).map_err(|e| match e {
+        shadow_aliasing::Error::InvalidArgument {
+            name: "max_error",
+            reason,
+        } => format!("--max-error {reason}"),
+        e => e.to_string(),
+    })?;
+    let mut rows = Vec::with_capacity(path.frames.len());
+    for (i, f) in path.frames.iter().enumerate() {
+        let mut input = FrameInput::new(f.camera, f.light, 2048, path.image_height)
+            .receivers(Bound::Boxes(&path.receivers));
+        if !path.casters.is_empty() {
+            input = input.casters(Bound::Boxes(&path.casters));
+        }
+        let t0 = Instant::now();
+        let d = c.frame(&input).map_err(|e| format!("frame {i}: {e}"))?;
+        let ms = t0.elapsed().as_secs_f64() * 1e3;
+        rows.push(Row {
+            scheme: label(&d.scheme),
+            maps: d.frame.maps().len(),
+            resolution: d.resolution,
+            max_error_pixels: d.max_error_pixels,
+            texels: d.texels,
+            meets_target: d.meets_target,
+            switched: d.switched,
+            cut: d.cut,
+            ms,
+        });
+    }
+    Ok(if a.json {
+        json_out(a, &rows)
+    } else {
+        text(a, &rows)
+    })
+}
+
+/// The summary's numbers.
+struct Summary {
+    switches: usize,
+    cuts: usize,
+    missed: usize,
+    max_error: f64,
+    mean_texels: f64,
+    median_ms: f64,
+    p99_ms: f64,
+}
+
+fn summary(rows: &[Row]) -> Summary {
+    let mut ms: Vec<f64> = rows.iter().map(|r| r.ms).collect();
+    ms.sort_by(f64::total_cmp);
+    Summary {
+        switches: rows.iter().filter(|r| r.switched).count(),
+        cuts: rows.iter().filter(|r| r.cut).count(),
+        missed: rows.iter().filter(|r| !r.meets_target).count(),
+        max_error: rows.iter().map(|r| r.max_error_pixels).fold(0.0, f64::max),
+        mean_texels: rows.iter().map(|r| r.texels as f64).sum::<f64>() / rows.len() as f64,
+        median_ms: quantile(&ms, 0.5),
+        p99_ms: quantile(&ms, 0.99),
+    }
+}
+
+/// `replay --json`.
+fn json_out(a: &ReplayArgs, rows: &[Row]) -> String {
+    let frames: Vec<Value> = rows
+        .iter()
+        .enumerate()
+        .map(|(i, r)| {
+            json!({
+                "frame": i,
+                "scheme": r.scheme,
+                "maps": r.maps,
+                "resolution": r.resolution,
+                "max_error_pixels": r.max_error_pixels,
+                "texels": r.texels,
+                "meets_target": r.meets_target,
+                "switched": r.switched,
+                "cut": r.cut,
+                "ms": r.ms,
+            })
+        })
+        .collect();
+    let s = summary(rows);
+    let out = json!({
+        "path": a.path.display().to_string(),
+        "max_error": a.max_error,
+        "frames": frames,
+        "summary": {
+            "frames": rows.len(),
+            "switches": s.switches,
+            "cuts": s.cuts,
+            "missed": s.missed,
+            "max_error_pixels": s.max_error,
+            "mean_texels": s.mean_texels,
+            "median_ms": s.median_ms,
+            "p99_ms": s.p99_ms,
+        },
+    });
+    let mut t = serde_json::to_string_pretty(&out).unwrap_or_default();
+    t.push('\n');
+    t
+}
+
+/// `replay` for people: a line a frame, then the summary.
+fn text(a: &ReplayArgs, rows: &[Row]) -> String {
+    let mut t = String::new();
+    let _ = writeln!(
+        t,
+        "replay {}: at most {} px per texel, {} frames",
+        a.path.display(),
+        sig(a.max_error),
+        rows.len()
+    );
+    for (i, r) in rows.iter().enumerate() {
+        let mark = match (r.cut, r.switched) {
+            (true, true) => "cut, switched",
+            (true, false) => "cut",
+            (false, true) => "switched",
+            (false, false) => "",
+        };
+        let missed = if r.meets_target { "" } else { " (misses)" };
+        let _ = writeln!(
+            t,
+            "frame {i:>4}: {:<34} {:>2} × {:>5}² {:>10} texels {:>9} px{missed} {:.3} ms {mark}",
+            r.scheme,
+            r.maps,
+            r.resolution,
+            r.texels,
+            sig(r.max_error_pixels),
+            r.ms,
+        );
+    }
+    let s = summary(rows);
+    let _ = writeln!(
+        t,
+        "summary: {} switches, {} cuts, {} frames missing the target, largest error {} px, \
+         mean {:.0} texels, cost {:.3} ms median, {:.3} ms p99 a frame",
+        s.switches,
+        s.cuts,
+        s.missed,
+        sig(s.max_error),
+        s.mean_texels,
+        s.median_ms,
+        s.p99_ms
+    );
+    t
+}

@@ -1,0 +1,197 @@
+//! `shadow-aliasing replay` (issue 32 item 3) over a camera path file (docs/paths.md): a line a
+//! frame, the summary's switches equal to the frames marked switched, the JSON keys docs/cli.md
+//! lists, the cut the file holds found, and bad path files refused by name.
+#![cfg(feature = "cli")]
+
+mod common;
+use common::cli::run;
+use serde_json::Value;
+use std::path::PathBuf;
+
+/// `paths/cut.json`'s frames `from .. to`, written to a file of its own (named by `tag`).
+fn excerpt(tag: &str, from: usize, to: usize, edit: impl Fn(&mut Value)) -> PathBuf {
+    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/paths/cut.json"))
+        .expect("paths/cut.json reads");
+    let mut v: Value = serde_json::from_str(&text).expect("paths/cut.json is JSON");
+    let frames = v["frames"].as_array().expect("frames")[from..to].to_vec();
+    v["frames"] = Value::Array(frames);
+    edit(&mut v);
+    let file = std::env::temp_dir().join(format!("cli_path_{tag}_{}.json", std::process::id()));
+    std::fs::write(&file, v.to_string()).expect("the excerpt writes");
+    file
+}
+
+#[test]
+fn replay_prints_a_line_a_frame_and_counts_the_switches() {
+    // Frames 144 .. 156 of the cut path: the jump of 100 units (a third of far = 300, past the
+    // controller's 10 %) is between the excerpt's frames 5 and 6.
+    let file = excerpt("replay", 144, 156, |_| {});
+    let p = file.to_str().expect("a UTF-8 path");
+    let (code, out, err) = run(&["replay", "--path", p, "--max-error", "2", "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).expect("JSON");
+    let frames = v["frames"].as_array().expect("frames");
+    assert_eq!(frames.len(), 12);
+    let switched = frames
+        .iter()
+        .filter(|f| f["switched"].as_bool().expect("switched"))
+        .count();
+    let s = &v["summary"];
+    assert_eq!(s["frames"], 12);
+    assert_eq!(s["switches"].as_u64(), Some(switched as u64));
+    // The cuts: the first frame and the jump, no other.
+    let cuts: Vec<usize> = frames
+        .iter()
+        .enumerate()
+        .filter(|(_, f)| f["cut"].as_bool().expect("cut"))
+        .map(|(i, _)| i)
+        .collect();
+    assert_eq!(cuts, [0, 6]);
+    assert_eq!(s["cuts"], 2);
+    // Never claims the target where the error misses it.
+    for f in frames {
+        let e = f["max_error_pixels"].as_f64().expect("error");
+        assert_eq!(f["meets_target"].as_bool(), Some(e <= 2.0), "{f}");
+        let (maps, res) = (
+            f["maps"].as_u64().unwrap(),
+            f["resolution"].as_u64().unwrap(),
+        );
+        assert_eq!(f["texels"].as_u64(), Some(maps * res * res), "{f}");
+    }
+    // Every key docs/cli.md's replay table names is there.
+    let docs = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/cli.md"))
+        .expect("docs/cli.md reads");
+    let section = docs
+        .split("## `shadow-aliasing replay`")
+        .nth(1)
+        .and_then(|s| s.split("\n## ").next())
+        .expect("docs/cli.md has the replay section");
+    let table: Vec<&str> = section.lines().filter(|l| l.starts_with("| `")).collect();
+    assert_eq!(table.len(), 3, "{table:?}");
+    let keys = |row: &str| -> Vec<String> {
+        row.split('`')
+            .skip(1)
+            .step_by(2)
+            .map(str::to_string)
+            .collect()
+    };
+    for k in keys(table[0]) {
+        assert!(v.get(&k).is_some(), "top-level {k}");
+    }
+    for k in keys(table[1]).iter().skip(1) {
+        assert!(frames[0].get(k).is_some(), "frames[].{k}");
+    }
+    for k in keys(table[2]).iter().skip(1) {
+        assert!(s.get(k).is_some(), "summary.{k}");
+    }
+    // The text: one line a frame.
+    let (code, out, err) = run(&["replay", "--path", p, "--max-error", "2"]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(out.lines().filter(|l| l.starts_with("frame ")).count(), 12);
+    assert!(
+        out.contains(&format!("summary: {switched} switches, 2 cuts")),
+        "{out}"
+    );
+    let _ = std::fs::remove_file(&file);
+}
+
+/// A refused path file: its tag, the edit of a valid excerpt, what the message must hold.
+type Refusal = (
+    &'static str,
+    Box<dyn Fn(&mut Value)>,
+    &'static [&'static str],
+);
+
+#[test]
+fn unknown_keys_and_missing_files_are_refused_by_name() {
+    let cases: [Refusal; 5] = [
+        (
+            "frame_key",
+            Box::new(|v| v["frames"][2]["eyes"] = v["frames"][2]["eye"].clone()),
+            &["unknown key `eyes`", "frames[2]"],
+        ),
+        (
+            "top_key",
+            Box::new(|v| v["lights"] = Value::Null),
+            &["unknown key `lights`", "the top level"],
+        ),
+        (
+            "camera_key",
+            Box::new(|v| v["camera"]["fov"] = 1.into()),
+            &["unknown key `fov`", "camera"],
+        ),
+        (
+            "no_light",
+            Box::new(|v| {
+                v.as_object_mut().unwrap().remove("light_dir");
+            }),
+            &["frames[0].light_dir", "is needed"],
+        ),
+        (
+            "eye_is_target",
+            Box::new(|v| v["frames"][1]["target"] = v["frames"][1]["eye"].clone()),
+            &["frames[1].target", "must differ from the eye"],
+        ),
+    ];
+    for (tag, edit, needles) in cases {
+        let file = excerpt(tag, 0, 3, edit);
+        let p = file.to_str().expect("a UTF-8 path");
+        let (code, out, err) = run(&["replay", "--path", p, "--max-error", "2"]);
+        assert_eq!(code, 1, "{tag}: {out}");
+        assert!(out.is_empty(), "{tag}: {out}");
+        assert!(
+            err.starts_with("error: path file ") && err.contains(p),
+            "{tag}: {err}"
+        );
+        for n in needles {
+            assert!(err.contains(n), "{tag}: {n} not in {err}");
+        }
+        assert_eq!(err.lines().count(), 1, "{tag}: {err}");
+        let _ = std::fs::remove_file(&file);
+    }
+    let missing = std::env::temp_dir().join("cli_path_no_such_file.json");
+    let m = missing.to_str().expect("a UTF-8 path");
+    let (code, _, err) = run(&["replay", "--path", m, "--max-error", "2"]);
+    assert_eq!(code, 1);
+    assert!(
+        err.starts_with("error: cannot read path file ") && err.contains(m),
+        "{err}"
+    );
+    // A bad target is named by its flag.
+    let file = excerpt("target", 0, 2, |_| {});
+    let p = file.to_str().expect("a UTF-8 path");
+    let (code, _, err) = run(&["replay", "--path", p, "--max-error", "0"]);
+    assert_eq!(code, 1);
+    assert!(err.starts_with("error: --max-error must be"), "{err}");
+    let _ = std::fs::remove_file(&file);
+}
+
+/// The five paths of `paths/` parse and have the frames and the kinds docs/paths.md says.
+#[test]
+fn the_paths_in_the_repository_are_well_formed() {
+    for name in ["walk", "flyover", "turn", "sun_sweep", "cut"] {
+        let file = format!("{}/paths/{name}.json", env!("CARGO_MANIFEST_DIR"));
+        let v: Value =
+            serde_json::from_str(&std::fs::read_to_string(&file).expect("reads")).expect("JSON");
+        let frames = v["frames"].as_array().expect("frames");
+        assert_eq!(frames.len(), 300, "{name}");
+        let eye = |i: usize, k: usize| frames[i]["eye"][k].as_f64().unwrap();
+        match name {
+            // Eye height 1.7 throughout.
+            "walk" | "turn" => assert!((0..300).all(|i| eye(i, 1) == 1.7), "{name}"),
+            // From 2 to 200 units.
+            "flyover" => assert_eq!((eye(0, 1), eye(299, 1)), (2.0, 200.0)),
+            // A still camera, a light per frame.
+            "sun_sweep" => {
+                assert!((0..300).all(|i| frames[i]["eye"] == frames[0]["eye"]));
+                assert!(frames.iter().all(|f| f.get("light_dir").is_some()));
+            }
+            // One jump of 100 units between frames 149 and 150, 0.9 a frame elsewhere.
+            _ => {
+                let step = |i: usize| (eye(i + 1, 0) - eye(i, 0)).hypot(eye(i + 1, 2) - eye(i, 2));
+                let jumps: Vec<usize> = (0..299).filter(|&i| step(i) > 10.0).collect();
+                assert_eq!(jumps, [149]);
+            }
+        }
+    }
+}
