@@ -125,6 +125,77 @@ fn sa_local_normal_offset(m: GpuShadowMap, p: vec3<f32>, n: vec3<f32>, l: vec3<f
     return o;
 }
 
+// The error lens (shadow_aliasing::frame::lens; FrameMap::error_lens_at in f64): the size in
+// screen pixels of map m's texel on the surface through p with unit normal n, the light
+// travelling along l: the texel's edges (per texel, in the plane perpendicular to l, from the map
+// matrix's local Jacobian at p) projected along the light onto the surface (the projection
+// factor), then seen by the camera at `eye` looking along the unit `forward`, with
+// focal_pixels = image height / (2 tan(half vertical field of view)) (pixels per unit across the
+// view at unit view depth); the larger singular value of the two pixel vectors. 3.4e38 where the
+// surface is edge-on to the light, -1 where p is not in front of the camera or of the map's
+// centre of projection. eye is in the records' space (the upload origin's offset, 0 for
+// gpu_relative(camera position)).
+fn sa_error_lens(
+    m: GpuShadowMap,
+    p: vec3<f32>,
+    n: vec3<f32>,
+    l: vec3<f32>,
+    eye: vec3<f32>,
+    forward: vec3<f32>,
+    focal_pixels: f32,
+) -> f32 {
+    let d = p - eye;
+    let z = dot(d, forward);
+    let h = m.world_to_clip * vec4<f32>(p, 1.0);
+    if (!(z > 0.0) || !(h.w > 0.0)) {
+        return -1.0;
+    }
+    let nl = dot(n, l);
+    if (nl == 0.0) {
+        return 3.4e38;
+    }
+    let rows = transpose(m.world_to_clip);
+    let r3 = rows[3].xyz;
+    let iw2 = 1.0 / (h.w * h.w);
+    var gs = (rows[0].xyz * h.w - r3 * h.x) * iw2;
+    var gt = (rows[1].xyz * h.w - r3 * h.y) * iw2;
+    gs = gs - dot(gs, l) * l;
+    gt = gt - dot(gt, l) * l;
+    // One texel's edges (2/res of clip s, t) on the plane perpendicular to the light.
+    let texel = 2.0 / (sa_map_resolution() * dot(cross(gs, gt), l));
+    let es = cross(gt, l) * texel;
+    let et = cross(l, gs) * texel;
+    // Along the light onto the surface, then along the view ray onto the plane of constant view
+    // depth, in pixels.
+    let k = focal_pixels / z;
+    let ps = es - (dot(n, es) / nl) * l;
+    let pt = et - (dot(n, et) / nl) * l;
+    let a = k * (ps - (dot(ps, forward) / z) * d);
+    let b = k * (pt - (dot(pt, forward) / z) * d);
+    let aa = dot(a, a);
+    let bb = dot(b, b);
+    let ab = dot(a, b);
+    return sqrt(0.5 * (aa + bb + sqrt((aa - bb) * (aa - bb) + 4.0 * ab * ab)));
+}
+
+// The error lens's colour (shadow_aliasing::frame::lens::lens_colour): viridis's ten colours at
+// 1/16, 1/8, ..., 32 pixels, linear in log2 between them, clamped at both ends; 1 pixel is
+// #26828e; not finite (or 3.4e38 and above) the last colour. sRGB components in [0, 1].
+fn sa_lens_colour(value: f32) -> vec3<f32> {
+    var ramp = array<vec3<f32>, 10>(
+        vec3<f32>(68.0, 1.0, 84.0), vec3<f32>(72.0, 40.0, 120.0), vec3<f32>(62.0, 73.0, 137.0),
+        vec3<f32>(49.0, 104.0, 142.0), vec3<f32>(38.0, 130.0, 142.0), vec3<f32>(31.0, 158.0, 137.0),
+        vec3<f32>(53.0, 183.0, 121.0), vec3<f32>(110.0, 206.0, 88.0), vec3<f32>(181.0, 222.0, 43.0),
+        vec3<f32>(253.0, 231.0, 37.0));
+    var x = 9.0;
+    if (value < 3.4e38) {
+        x = clamp(log2(max(value, 1e-30)) + 4.0, 0.0, 9.0);
+    }
+    let i = min(u32(floor(x)), 8u);
+    let f = x - f32(i);
+    return (ramp[i] + f * (ramp[i + 1u] - ramp[i])) / 255.0;
+}
+
 // The depth bias to add to the receiver's depth (depth-attachment units, signed for the
 // convention) at a surface of unit normal n under light l, for a kernel of radius r:
 // sa_kernel_scale(m, r) (constant_depth + slope_scaled_depth tan a), a the angle between n and the direction

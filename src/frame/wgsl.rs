@@ -14,8 +14,9 @@ const FUNCTIONS: &str = include_str!("shadow.wgsl");
 
 const LEN: usize = GPU_SHADOW_MAP_WGSL.len() + FUNCTIONS.len();
 
-/// `GPU_SHADOW_MAP_WGSL` followed by `FUNCTIONS`, at compile time.
-const BYTES: [u8; LEN] = {
+/// `GPU_SHADOW_MAP_WGSL` followed by `FUNCTIONS`, at compile time (a static: a constant array
+/// over 16 KiB would be copied wherever it is used).
+static BYTES: [u8; LEN] = {
     let mut out = [0u8; LEN];
     let (a, b) = (GPU_SHADOW_MAP_WGSL.as_bytes(), FUNCTIONS.as_bytes());
     let mut i = 0;
@@ -43,7 +44,8 @@ const BYTES: [u8; LEN] = {
 ///
 /// and calls `sa_visibility` (one map: w-divide, clip-depth convention, normal offset and/or
 /// depth bias, PCF of radius r texels), `sa_pick_cascade` / `sa_cascaded_visibility` (selection
-/// by `split`, cross-fade over `blend`) or `sa_pick_face` (face partitions). Every function is
+/// by `split`, cross-fade over `blend`) or `sa_pick_face` (face partitions), and for a heat
+/// overlay `sa_error_lens` / `sa_lens_colour` (the error lens, [`super::lens`]). Every function is
 /// prefixed `sa_` (the record's names excepted); the file's comments document each.
 pub const SHADOW_WGSL: &str = match core::str::from_utf8(&BYTES) {
     Ok(s) => s,
