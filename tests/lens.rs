@@ -251,3 +251,52 @@ fn lens_ramp_by_hand() {
     ];
     assert!(near(lens_colour(2f64.sqrt()), mid));
 }
+
+/// Where the projection factor is 1 the lens is the perspective factor, so its maximum over B is
+/// the frame's `max_error_pixels`: with the light travelling along the view axis f and the
+/// surface facing the camera (n = −f), the surface is the plane ⊥ l and the camera sees it square
+/// on (a one-texel step along s is m_x pixels: measure::footprint's docs). The lens is the larger
+/// singular value of the two texel steps, at least both per-axis factors (m_x the edge along s;
+/// m_z the distance between lines of constant t, at most the edge along t), and equal to the larger
+/// where the texel's edges are orthogonal, as they are for these frames' maps (the light along
+/// the view leaves nothing to warp). So the largest lens over B's vertices is
+/// `max_error_pixels`, to 10⁻⁹ relative, for every map of each scheme.
+#[test]
+fn lens_at_the_worst_vertex_is_the_frames_maximum_where_the_projection_factor_is_one() {
+    let view = glam::dcamera::rh::view::look_at_mat4(
+        DVec3::new(1.0, 3.0, 5.0),
+        DVec3::new(1.0, 3.0, -5.0),
+        DVec3::Y,
+    );
+    let camera = shadow_aliasing::frame::Camera::new(view, 0.5, 200.0, 0.5, 1.5).unwrap();
+    let forward = DVec3::NEG_Z;
+    let boxes =
+        [shadow_aliasing::frame::Aabb::new([-40.0, -1.0, -150.0], [40.0, 8.0, 0.0]).unwrap()];
+    let e2w = view.inverse();
+    let mut checked = 0;
+    for scheme_i in [0, 1, 3, 4] {
+        let input = FrameInput::new(camera, forward, MAP_RES, IMAGE_H)
+            .receivers(Bound::Boxes(&boxes))
+            .casters(Bound::Boxes(&boxes))
+            .scheme(schemes(scheme_i))
+            .measure(true);
+        let f = frame(&input).unwrap();
+        for m in f.maps().iter() {
+            let worst = m
+                .body()
+                .iter()
+                .map(|p| {
+                    m.error_lens_at(e2w.transform_point3(*p), -forward, &camera, IMAGE_H)
+                        .unwrap()
+                })
+                .fold(0.0f64, f64::max);
+            let want = m.max_error_pixels;
+            assert!(
+                (worst - want).abs() <= 1e-9 * want,
+                "scheme {scheme_i}: lens {worst} against max_error_pixels {want}"
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 7, "{checked} maps");
+}
