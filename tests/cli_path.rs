@@ -157,6 +157,28 @@ fn unknown_keys_and_missing_files_are_refused_by_name() {
         err.starts_with("error: cannot read path file ") && err.contains(m),
         "{err}"
     );
+    // Not an object at the top; receivers out of view in every frame (named with the frame).
+    let file = excerpt("top", 0, 2, |v| *v = Value::Array(vec![]));
+    let p = file.to_str().expect("a UTF-8 path");
+    let (code, _, err) = run(&["replay", "--path", p, "--max-error", "2"]);
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("the top level: must be a JSON object"),
+        "{err}"
+    );
+    let _ = std::fs::remove_file(&file);
+    let file = excerpt("away", 0, 2, |v| {
+        v["scene"]["receivers"] =
+            serde_json::json!([[1e4, 1e4, 1e4, 1e4 + 1.0, 1e4 + 1.0, 1e4 + 1.0]]);
+    });
+    let p = file.to_str().expect("a UTF-8 path");
+    let (code, _, err) = run(&["replay", "--path", p, "--max-error", "2"]);
+    assert_eq!(code, 1);
+    assert!(
+        err.starts_with(&format!("error: path file {p}, frame 0: receivers")),
+        "{err}"
+    );
+    let _ = std::fs::remove_file(&file);
     // A bad target is named by its flag.
     let file = excerpt("target", 0, 2, |_| {});
     let p = file.to_str().expect("a UTF-8 path");

@@ -38,18 +38,17 @@ fn object<'v>(
     allowed: &[&str],
     required: &[&str],
 ) -> Result<&'v Map<String, Value>, String> {
+    let place = if at.is_empty() { "the top level" } else { at };
     let o = v
         .as_object()
-        .ok_or_else(|| bad(at, "must be a JSON object"))?;
+        .ok_or_else(|| bad(place, "must be a JSON object"))?;
     if let Some(k) = o.keys().find(|k| !allowed.contains(&k.as_str())) {
-        let place = if at.is_empty() { "the top level" } else { at };
         return Err(format!(
             "unknown key `{k}` in {place} (the keys are {}): remove or rename it",
             allowed.join(", ")
         ));
     }
     if let Some(k) = required.iter().find(|k| !o.contains_key(**k)) {
-        let place = if at.is_empty() { "the top level" } else { at };
         return Err(format!("the key `{k}` is missing in {place}"));
     }
     Ok(o)

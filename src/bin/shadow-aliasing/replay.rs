@@ -49,7 +49,9 @@ pub fn replay(a: &ReplayArgs) -> Result<String, String> {
             input = input.casters(Bound::Boxes(&path.casters));
         }
         let t0 = Instant::now();
-        let d = c.frame(&input).map_err(|e| format!("frame {i}: {e}"))?;
+        let d = c
+            .frame(&input)
+            .map_err(|e| format!("path file {}, frame {i}: {e}", a.path.display()))?;
         let ms = t0.elapsed().as_secs_f64() * 1e3;
         rows.push(Row {
             scheme: label(&d.scheme),
