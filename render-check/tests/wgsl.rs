@@ -58,6 +58,8 @@ fn the_module_validates_with_naga() {
         "sa_face_crossing",
         "sa_pick_face",
         "sa_clipmap_level",
+        "sa_error_lens",
+        "sa_lens_colour",
     ] {
         assert!(
             module
