@@ -88,6 +88,7 @@ fn replay_prints_a_line_a_frame_and_counts_the_switches() {
     let (code, out, err) = run(&["replay", "--path", p, "--max-error", "2"]);
     assert_eq!(code, 0, "{err}");
     assert_eq!(out.lines().filter(|l| l.starts_with("frame ")).count(), 12);
+    assert!(out.lines().all(|l| l == l.trim_end()), "{out}");
     assert!(
         out.contains(&format!("summary: {switched} switches, 2 cuts")),
         "{out}"

@@ -156,8 +156,7 @@ fn text(a: &ReplayArgs, rows: &[Row]) -> String {
             (false, false) => "",
         };
         let missed = if r.meets_target { "" } else { " (misses)" };
-        let _ = writeln!(
-            t,
+        let line = format!(
             "frame {i:>4}: {:<34} {:>2} × {:>5}² {:>10} texels {:>9} px{missed} {:.3} ms {mark}",
             r.scheme,
             r.maps,
@@ -166,6 +165,7 @@ fn text(a: &ReplayArgs, rows: &[Row]) -> String {
             sig(r.max_error_pixels),
             r.ms,
         );
+        let _ = writeln!(t, "{}", line.trim_end());
     }
     let s = summary(rows);
     let _ = writeln!(
