@@ -218,3 +218,111 @@ fn the_paths_in_the_repository_are_well_formed() {
         }
     }
 }
+
+/// Numbers of an SVG attribute `name="…"` in `element`.
+fn attr(element: &str, name: &str) -> String {
+    let start = element
+        .find(&format!(" {name}=\""))
+        .unwrap_or_else(|| panic!("{name} in {element}"))
+        + name.len()
+        + 3;
+    element[start..]
+        .split('"')
+        .next()
+        .expect("closed")
+        .to_string()
+}
+
+#[test]
+fn the_figure_draws_every_frame_against_the_target() {
+    let file = excerpt("figure", 144, 156, |_| {});
+    let p = file.to_str().expect("a UTF-8 path");
+    let svg_file = std::env::temp_dir().join(format!("cli_path_{}.svg", std::process::id()));
+    let s = svg_file.to_str().expect("a UTF-8 path");
+    let (code, out, err) = run(&[
+        "replay",
+        "--path",
+        p,
+        "--max-error",
+        "2",
+        "--json",
+        "--figure",
+        s,
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).expect("JSON");
+    let frames = v["frames"].as_array().expect("frames");
+    let svg = std::fs::read_to_string(&svg_file).expect("the figure is written");
+    let elements: Vec<&str> = svg.split('<').collect();
+    let series: Vec<Vec<(f64, f64)>> = elements
+        .iter()
+        .filter(|e| e.starts_with("polyline class=\"series\""))
+        .map(|e| {
+            attr(e, "points")
+                .split_whitespace()
+                .map(|xy| {
+                    let (x, y) = xy.split_once(',').expect("x,y");
+                    (x.parse().expect("x"), y.parse().expect("y"))
+                })
+                .collect()
+        })
+        .collect();
+    assert_eq!(series.len(), 2, "error and texels");
+    assert!(series.iter().all(|s| s.len() == frames.len()));
+    // A linear axis from 0 at the panel's bottom: each frame's height over the bottom is its
+    // error's fraction of the target line's height.
+    let target = elements
+        .iter()
+        .find(|e| e.starts_with("line class=\"target\""))
+        .expect("the target line");
+    let ty: f64 = attr(target, "y1").parse().expect("y1");
+    let panel = elements
+        .iter()
+        .find(|e| e.starts_with("rect x="))
+        .expect("the error panel");
+    let bottom: f64 = attr(panel, "y").parse::<f64>().expect("y")
+        + attr(panel, "height").parse::<f64>().expect("height");
+    let mut errors = Vec::new();
+    for (f, (_, y)) in frames.iter().zip(&series[0]) {
+        let e = f["max_error_pixels"].as_f64().expect("error");
+        let drawn = (bottom - y) / (bottom - ty) * 2.0;
+        assert!((drawn - e).abs() < 1e-3 * e, "{e} px drawn as {drawn}");
+        errors.push(e);
+    }
+    // The excerpt's errors differ before and after the jump, so that the check can see a
+    // series drawn flat.
+    assert!(
+        errors.iter().any(|e| (e - errors[0]).abs() > 0.01),
+        "{errors:?}"
+    );
+    // A grey line at each cut frame's x, no other.
+    let cuts: Vec<f64> = elements
+        .iter()
+        .filter(|e| e.starts_with("line class=\"cut\""))
+        .map(|e| attr(e, "x1").parse().expect("x1"))
+        .collect();
+    let expected: Vec<f64> = frames
+        .iter()
+        .zip(&series[0])
+        .filter(|(f, _)| f["cut"].as_bool().expect("cut"))
+        .map(|(_, (x, _))| *x)
+        .collect();
+    assert_eq!(cuts, expected);
+    // A figure that cannot be written is named.
+    let (code, _, err) = run(&[
+        "replay",
+        "--path",
+        p,
+        "--max-error",
+        "2",
+        "--figure",
+        "/nonexistent-dir/f.svg",
+    ]);
+    assert_eq!(code, 1);
+    assert!(
+        err.starts_with("error: cannot write /nonexistent-dir/f.svg: "),
+        "{err}"
+    );
+    let _ = std::fs::remove_file(&file);
+    let _ = std::fs::remove_file(&svg_file);
+}

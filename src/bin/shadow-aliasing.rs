@@ -18,6 +18,8 @@ mod path_file;
 mod plan;
 #[path = "shadow-aliasing/replay.rs"]
 mod replay;
+#[path = "shadow-aliasing/replay_figure.rs"]
+mod replay_figure;
 #[path = "shadow-aliasing/scene.rs"]
 mod scene;
 #[path = "shadow-aliasing/scheme.rs"]

@@ -50,7 +50,7 @@ pub enum Command {
     Plan(PlanArgs),
     /// Run the error-budget controller over a camera path file (docs/paths.md).
     #[command(
-        after_help = "Example:\n  shadow-aliasing replay --path paths/walk.json --max-error 2 --json"
+        after_help = "Examples:\n  shadow-aliasing replay --path paths/walk.json --max-error 2 --json\n  shadow-aliasing replay --path paths/cut.json --max-error 1 --figure cut.svg"
     )]
     Replay(ReplayArgs),
 }
@@ -67,6 +67,9 @@ pub struct ReplayArgs {
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,
+    /// Also write a figure (SVG) of each frame's error, against the target, and texels.
+    #[arg(long, value_name = "FILE")]
+    pub figure: Option<PathBuf>,
 }
 
 /// `plan` arguments.
@@ -676,7 +679,7 @@ mod tests {
     fn every_numeric_option_takes_a_negative_number() {
         use clap::CommandFactory;
         // Options whose values are names or paths, not numbers.
-        const NOT_NUMBERS: [&str; 5] = ["out", "only", "output", "file", "path"];
+        const NOT_NUMBERS: [&str; 6] = ["out", "only", "output", "file", "path", "figure"];
         // Each subcommand's required options, then options that others need beside them.
         let base = |sub: &str| -> Vec<(&'static str, &'static str)> {
             let view = [("near", "1"), ("far", "100"), ("half-fov", "0.5")];

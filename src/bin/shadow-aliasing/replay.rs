@@ -5,6 +5,7 @@
 use crate::args::ReplayArgs;
 use crate::output::sig;
 use crate::path_file;
+use crate::replay_figure::{svg, Point};
 use serde_json::{json, Value};
 use shadow_aliasing::frame::{Bound, FrameInput};
 use shadow_aliasing::plan::candidates::label;
@@ -64,6 +65,23 @@ pub fn replay(a: &ReplayArgs) -> Result<String, String> {
             cut: d.cut,
             ms,
         });
+    }
+    if let Some(file) = &a.figure {
+        let points: Vec<Point> = rows
+            .iter()
+            .map(|r| Point {
+                error: r.max_error_pixels,
+                texels: r.texels,
+                cut: r.cut,
+            })
+            .collect();
+        let title = format!(
+            "replay {}: at most {} px per texel",
+            a.path.display(),
+            sig(a.max_error)
+        );
+        std::fs::write(file, svg(&points, a.max_error, &title))
+            .map_err(|e| format!("cannot write {}: {e}", file.display()))?;
     }
     Ok(if a.json {
         json_out(a, &rows)
