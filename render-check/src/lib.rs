@@ -5,6 +5,7 @@
 
 pub mod analysis;
 pub mod blend;
+pub mod compute;
 pub mod faults;
 pub mod gpu;
 pub mod images;

@@ -5,24 +5,18 @@
 //! (`FrameMap::gpu_relative`), and `sa_lens_colour` with `frame::lens::lens_colour` to 10⁻⁵.
 
 use glam::{DMat4, DVec3};
+use render_check::compute;
 use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::frame::lens::lens_colour;
 use shadow_aliasing::frame::{
-    frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme, GpuShadowMap, SHADOW_WGSL,
+    frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme, GpuShadowMap,
 };
 use shadow_aliasing::maps::faces::FaceWarp;
 use shadow_aliasing::maps::{ClipDepth, WarpRule};
 
-/// The includer's four functions (no texture: no lookup is called) and an entry point that
-/// writes, per case, the lens and the colour of a value.
-const HARNESS: &str = "
-@group(0) @binding(0) var<storage, read> records: array<GpuShadowMap>;
-@group(0) @binding(1) var<storage, read> cases: array<f32>;
-@group(0) @binding(2) var<storage, read_write> results: array<f32>;
-fn sa_map(i: u32) -> GpuShadowMap { return records[i]; }
-fn sa_map_count() -> u32 { return arrayLength(&records); }
-fn sa_map_resolution() -> f32 { return 1024.0; }
-fn sa_stored_depth(i: u32, texel: vec2<i32>) -> f32 { return 1.0; }
+/// The entry point after `compute::harness_prelude("f32")`: it writes, per case, the lens and
+/// the colour of a value.
+const MAIN: &str = "
 @compute @workgroup_size(1)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = id.x;
@@ -43,90 +37,24 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
 /// Runs the harness: per case (16 `f32`s: p, n, l, forward, focal pixels, record index, colour
 /// value, unused), (lens, r, g, b).
 fn run(records: &[GpuShadowMap], cases: &[[f32; 16]]) -> Vec<[f32; 4]> {
-    let (device, queue, _) =
-        render_check::gpu::device("lens_kernel").unwrap_or_else(|e| panic!("{e}"));
-    let source = format!("{SHADOW_WGSL}{HARNESS}");
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("lens harness"),
-        source: wgpu::ShaderSource::Wgsl(source.into()),
-    });
-    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some("lens harness"),
-        layout: None,
-        module: &module,
-        entry_point: Some("main"),
-        compilation_options: Default::default(),
-        cache: None,
-    });
-    let storage = |label, bytes: &[u8], usage| {
-        let b = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some(label),
-            size: bytes.len() as u64,
-            usage: usage | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        queue.write_buffer(&b, 0, bytes);
-        b
-    };
-    let record_bytes: Vec<u8> = records.iter().flat_map(|r| r.to_bytes()).collect();
-    let case_bytes: Vec<u8> = cases
+    let harness = format!("{}{MAIN}", compute::harness_prelude("f32"));
+    let bytes: Vec<u8> = cases
         .iter()
         .flatten()
         .flat_map(|x| x.to_le_bytes())
         .collect();
-    let out_size = (cases.len() * 4 * 4) as u64;
-    let recs = storage("records", &record_bytes, wgpu::BufferUsages::STORAGE);
-    let input = storage("cases", &case_bytes, wgpu::BufferUsages::STORAGE);
-    let out = storage(
-        "results",
-        &vec![0u8; out_size as usize],
-        wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-    );
-    let back = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("readback"),
-        size: out_size,
-        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("lens harness"),
-        layout: &pipeline.get_bind_group_layout(0),
-        entries: &[
-            wgpu::BindGroupEntry {
-                binding: 0,
-                resource: recs.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 1,
-                resource: input.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 2,
-                resource: out.as_entire_binding(),
-            },
-        ],
-    });
-    let mut enc = device.create_command_encoder(&Default::default());
-    {
-        let mut pass = enc.begin_compute_pass(&Default::default());
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &bind, &[]);
-        pass.dispatch_workgroups(cases.len() as u32, 1, 1);
-    }
-    enc.copy_buffer_to_buffer(&out, 0, &back, 0, out_size);
-    queue.submit([enc.finish()]);
-    let slice = back.slice(..);
-    slice.map_async(wgpu::MapMode::Read, |_| {});
-    device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .expect("the GPU finishes");
-    let data = slice.get_mapped_range().expect("mapped results");
-    data.chunks_exact(16)
-        .map(|c| {
-            let f = |k: usize| f32::from_le_bytes(c[4 * k..4 * k + 4].try_into().unwrap());
-            [f(0), f(1), f(2), f(3)]
-        })
-        .collect()
+    compute::run(
+        "lens harness",
+        &harness,
+        records,
+        &bytes,
+        cases.len() as u32,
+        cases.len() * 4,
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+    .chunks_exact(4)
+    .map(|c| [c[0], c[1], c[2], c[3]])
+    .collect()
 }
 
 /// Knuth's MMIX LCG: a number in [0, 1).

@@ -5,25 +5,19 @@
 //! bias for the shader's r (`FrameMap::bias`), computed directly, not by scaling.
 
 use glam::DVec3;
-use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, FrameInput, GpuShadowMap, SHADOW_WGSL};
+use render_check::compute;
+use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, FrameInput, GpuShadowMap};
 use shadow_aliasing::maps::ClipDepth;
 
-/// The includer's four functions (no texture: the lookups are not called) and an entry point
-/// that writes, per case, the kernel scale, the depth bias of a surface facing the light
+/// The entry point after `compute::harness_prelude("i32")` (the cases are the shader's radii): it
+/// writes, per case, the kernel scale, the depth bias of a surface facing the light
 /// (tan α = 0: `constant_depth` times the scale) and the normal offset `sa_offset_point` moves by.
-const HARNESS: &str = "
-@group(0) @binding(0) var<storage, read> records: array<GpuShadowMap>;
-@group(0) @binding(1) var<storage, read> radii: array<i32>;
-@group(0) @binding(2) var<storage, read_write> results: array<f32>;
-fn sa_map(i: u32) -> GpuShadowMap { return records[i]; }
-fn sa_map_count() -> u32 { return arrayLength(&records); }
-fn sa_map_resolution() -> f32 { return 1024.0; }
-fn sa_stored_depth(i: u32, texel: vec2<i32>) -> f32 { return 1.0; }
+const MAIN: &str = "
 @compute @workgroup_size(1)
 fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     let i = id.x;
     let m = records[i];
-    let r = radii[i];
+    let r = cases[i];
     let up = vec3<f32>(0.0, 1.0, 0.0);
     results[3u * i] = sa_kernel_scale(m, r);
     results[3u * i + 1u] = sa_depth_bias(m, up, -up, r);
@@ -33,86 +27,20 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
 
 /// Runs the harness over `records` with the shader radii `radii`: (scale, depth bias, offset).
 fn run(records: &[GpuShadowMap], radii: &[i32]) -> Vec<[f32; 3]> {
-    let (device, queue, _) =
-        render_check::gpu::device("wgsl_kernel").unwrap_or_else(|e| panic!("{e}"));
-    let source = format!("{SHADOW_WGSL}{HARNESS}");
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("harness"),
-        source: wgpu::ShaderSource::Wgsl(source.into()),
-    });
-    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some("harness"),
-        layout: None,
-        module: &module,
-        entry_point: Some("main"),
-        compilation_options: Default::default(),
-        cache: None,
-    });
-    let storage = |label, bytes: &[u8], usage| {
-        let b = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some(label),
-            size: bytes.len() as u64,
-            usage: usage | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        queue.write_buffer(&b, 0, bytes);
-        b
-    };
-    let record_bytes: Vec<u8> = records.iter().flat_map(|r| r.to_bytes()).collect();
-    let radius_bytes: Vec<u8> = radii.iter().flat_map(|r| r.to_le_bytes()).collect();
-    let out_size = (records.len() * 3 * 4) as u64;
-    let recs = storage("records", &record_bytes, wgpu::BufferUsages::STORAGE);
-    let rads = storage("radii", &radius_bytes, wgpu::BufferUsages::STORAGE);
-    let out = storage(
-        "results",
-        &vec![0u8; out_size as usize],
-        wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
-    );
-    let back = device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("readback"),
-        size: out_size,
-        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    });
-    let bind = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("harness"),
-        layout: &pipeline.get_bind_group_layout(0),
-        entries: &[
-            wgpu::BindGroupEntry {
-                binding: 0,
-                resource: recs.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 1,
-                resource: rads.as_entire_binding(),
-            },
-            wgpu::BindGroupEntry {
-                binding: 2,
-                resource: out.as_entire_binding(),
-            },
-        ],
-    });
-    let mut enc = device.create_command_encoder(&Default::default());
-    {
-        let mut pass = enc.begin_compute_pass(&Default::default());
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &bind, &[]);
-        pass.dispatch_workgroups(records.len() as u32, 1, 1);
-    }
-    enc.copy_buffer_to_buffer(&out, 0, &back, 0, out_size);
-    queue.submit([enc.finish()]);
-    let slice = back.slice(..);
-    slice.map_async(wgpu::MapMode::Read, |_| {});
-    device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .expect("the GPU finishes");
-    let data = slice.get_mapped_range().expect("mapped results");
-    data.chunks_exact(12)
-        .map(|c| {
-            let f = |k: usize| f32::from_le_bytes(c[4 * k..4 * k + 4].try_into().unwrap());
-            [f(0), f(1), f(2)]
-        })
-        .collect()
+    let harness = format!("{}{MAIN}", compute::harness_prelude("i32"));
+    let bytes: Vec<u8> = radii.iter().flat_map(|r| r.to_le_bytes()).collect();
+    compute::run(
+        "wgsl_kernel",
+        &harness,
+        records,
+        &bytes,
+        radii.len() as u32,
+        radii.len() * 3,
+    )
+    .unwrap_or_else(|e| panic!("{e}"))
+    .chunks_exact(3)
+    .map(|c| [c[0], c[1], c[2]])
+    .collect()
 }
 
 #[test]
