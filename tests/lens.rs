@@ -5,49 +5,18 @@
 
 use glam::{DMat4, DVec3, DVec4};
 use proptest::prelude::*;
-use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::frame::lens::lens_colour;
-use shadow_aliasing::frame::{frame, Bound, CascadeSplits, Frame, FrameInput, FrameScheme};
-use shadow_aliasing::maps::faces::FaceWarp;
-use shadow_aliasing::maps::{ClipDepth, TsmOptions, TsmSearch, WarpRule};
+use shadow_aliasing::frame::{frame, Bound, Frame, FrameInput};
+use shadow_aliasing::maps::ClipDepth;
 use shadow_aliasing::measure::footprint::{surface_footprint, Grids};
 use shadow_aliasing::Error;
 
 mod common;
-use common::scene::{random_scene, scene_params, RandomScene, SceneParams};
+use common::scene::{random_scene, scene_params, schemes, RandomScene, SceneParams};
 use common::Lcg;
 
 const MAP_RES: u32 = 1024;
 const IMAGE_H: u32 = 1080;
-
-fn schemes(i: usize) -> FrameScheme<'static> {
-    match i {
-        0 => FrameScheme::Single(WarpRule::Lispsm),
-        1 => FrameScheme::Single(WarpRule::Uniform),
-        2 => FrameScheme::Single(WarpRule::Minimax),
-        3 => FrameScheme::Cascades {
-            splits: CascadeSplits::Scheme {
-                scheme: SplitScheme::Practical { lambda: 0.8 },
-                k: 3,
-                overlap: 0.1,
-            },
-            rule: WarpRule::Lispsm,
-        },
-        4 => FrameScheme::Stable(CascadeSplits::Scheme {
-            scheme: SplitScheme::Practical { lambda: 0.7 },
-            k: 3,
-            overlap: 0.0,
-        }),
-        5 => FrameScheme::Tsm(TsmOptions {
-            focus: 10.0,
-            search: TsmSearch::EightyPercent,
-        }),
-        _ => FrameScheme::Faces {
-            rule: FaceWarp::Lispsm,
-            k: 2,
-        },
-    }
-}
 
 fn random_frame(params: &SceneParams, scheme_i: usize) -> Option<(RandomScene, Frame)> {
     let sc = random_scene(params)?;

@@ -4,7 +4,10 @@
 
 use glam::{DMat4, DVec3, DVec4};
 use proptest::prelude::*;
-use shadow_aliasing::frame::{Aabb, Camera};
+use shadow_aliasing::analytic::partition::SplitScheme;
+use shadow_aliasing::frame::{Aabb, Camera, CascadeSplits, FrameScheme};
+use shadow_aliasing::maps::faces::FaceWarp;
+use shadow_aliasing::maps::{TsmOptions, TsmSearch, WarpRule};
 use shadow_aliasing::ViewFrustum;
 
 /// The box `[min, max]`.
@@ -180,4 +183,35 @@ pub fn random_scene(p: &SceneParams) -> Option<RandomScene> {
         casters: Aabb::new(cmin, cmin + DVec3::from(p.csize)).unwrap(),
         light,
     })
+}
+
+/// Scheme `i` of the seven the bias and lens tests run on every random scene: single LiSPSM,
+/// uniform and minimax maps, practical LiSPSM cascades, stable cascades, TSM, face partitions.
+pub fn schemes(i: usize) -> FrameScheme<'static> {
+    match i {
+        0 => FrameScheme::Single(WarpRule::Lispsm),
+        1 => FrameScheme::Single(WarpRule::Uniform),
+        2 => FrameScheme::Single(WarpRule::Minimax),
+        3 => FrameScheme::Cascades {
+            splits: CascadeSplits::Scheme {
+                scheme: SplitScheme::Practical { lambda: 0.8 },
+                k: 3,
+                overlap: 0.1,
+            },
+            rule: WarpRule::Lispsm,
+        },
+        4 => FrameScheme::Stable(CascadeSplits::Scheme {
+            scheme: SplitScheme::Practical { lambda: 0.7 },
+            k: 3,
+            overlap: 0.0,
+        }),
+        5 => FrameScheme::Tsm(TsmOptions {
+            focus: 10.0,
+            search: TsmSearch::EightyPercent,
+        }),
+        _ => FrameScheme::Faces {
+            rule: FaceWarp::Lispsm,
+            k: 2,
+        },
+    }
 }
