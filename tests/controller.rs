@@ -12,6 +12,8 @@ use shadow_aliasing::plan::allocate::Rounding;
 use shadow_aliasing::plan::{plan_among, Controller, ControllerOptions, Goal};
 use shadow_aliasing::Error;
 
+mod common;
+
 const H: u32 = 1080;
 const FRAMES: usize = 240;
 const TARGET: f64 = 2.0;
@@ -122,23 +124,10 @@ fn planner_can(inp: &FrameInput<'_>) -> bool {
     })
 }
 
-/// The error of the eye → light clip matrix `m` at the eye-space point `p` (pixels of an image 1
-/// high at unit map resolution), from the matrix alone by central differences over the plane
-/// perpendicular to the light `l` (as tests/plan.rs's audit): max(m_x, m_z).
+/// max(m_x, m_z) of [`common::audit::audit_point`]: the error at `p` from the matrix alone.
 fn audit_point(m: &DMat4, l: DVec3, p: DVec3, tan: f64) -> f64 {
-    let u = l.any_orthonormal_vector();
-    let v = l.cross(u);
-    let st = |q: DVec3| {
-        let h = *m * q.extend(1.0);
-        glam::DVec2::new(0.5 * (h.x / h.w + 1.0), 0.5 * (h.y / h.w + 1.0))
-    };
-    let d = 1e-6 * (1.0 + p.length());
-    let du = (st(p + d * u) - st(p - d * u)) / (2.0 * d);
-    let dv = (st(p + d * v) - st(p - d * v)) / (2.0 * d);
-    let det = (du.x * dv.y - dv.x * du.y).abs();
-    let grad_t = du.y.hypot(dv.y);
-    let pixel = 2.0 * -p.z * tan;
-    (grad_t / det / pixel).max(1.0 / grad_t / pixel)
+    let (mx, mz) = common::audit::audit_point(m, l, p, tan);
+    mx.max(mz)
 }
 
 struct Run {

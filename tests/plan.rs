@@ -11,6 +11,9 @@ use shadow_aliasing::plan::candidates::{
 use shadow_aliasing::plan::{plan, plan_among, Candidate, Goal, Plan};
 use shadow_aliasing::Error;
 
+mod common;
+use common::audit::audit_point;
+
 const H: u32 = 1080;
 
 /// Three scenes: the benchmark's ground with a tower, the frustum alone with the light
@@ -364,28 +367,6 @@ fn bad_input_is_refused_by_name() {
         ..dark
     };
     refused(plan(&dark, Goal::MaxError(1.0), w), "light_dir_world");
-}
-
-/// The per-point error of the eye → light clip matrix `m` at the eye-space point `p`, measured
-/// from the matrix alone by central differences (no gradient formula of the crate): the Jacobian
-/// J of (s, t) = ((x/w + 1)/2, (y/w + 1)/2) over the plane Π perpendicular to the light `l`. A
-/// texel of unit resolution spans |J⁻¹ e_s| = |∇t| / |det J| along s and 1 / |∇t| across the
-/// t-isolines (Lloyd 2006 §3's w_ls, w_lt), a pixel of an image 1 high 2 z tan θ at depth z.
-/// Returns (m_x, m_z) at unit resolutions.
-fn audit_point(m: &DMat4, l: DVec3, p: DVec3, tan: f64) -> (f64, f64) {
-    let u = l.any_orthonormal_vector();
-    let v = l.cross(u);
-    let st = |q: DVec3| {
-        let h = *m * q.extend(1.0);
-        glam::DVec2::new(0.5 * (h.x / h.w + 1.0), 0.5 * (h.y / h.w + 1.0))
-    };
-    let d = 1e-6 * (1.0 + p.length());
-    let du = (st(p + d * u) - st(p - d * u)) / (2.0 * d);
-    let dv = (st(p + d * v) - st(p - d * v)) / (2.0 * d);
-    let det = (du.x * dv.y - dv.x * du.y).abs();
-    let grad_t = du.y.hypot(dv.y);
-    let pixel = 2.0 * -p.z * tan;
-    (grad_t / det / pixel, 1.0 / grad_t / pixel)
 }
 
 /// A map's (M_x, M_z) audited: the per-point error at B's vertices, at the midpoints of every

@@ -4,6 +4,7 @@
 //! `dead_code` is allowed here.
 #![allow(dead_code)]
 
+pub mod audit;
 #[cfg(feature = "cli")]
 pub mod cli;
 pub mod faces;
