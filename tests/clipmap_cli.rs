@@ -10,25 +10,24 @@ fn warp(extra: &[&str]) -> (bool, String) {
     warp_rule("uniform", extra)
 }
 
-/// `warp --partition clipmap` with the warp rule `rule` and `extra` flags: success and output.
+/// `warp --partition clipmap` with the warp rule `rule`, near 0.1 and far 1000, and `extra`
+/// flags: success and output.
 fn warp_rule(rule: &str, extra: &[&str]) -> (bool, String) {
-    let mut args = vec![
-        "warp",
-        "--warp",
-        rule,
-        "--near",
-        "0.1",
-        "--far",
-        "1000",
-        "--half-fov",
-        "0.5",
-        "--light-dir",
-        "0.3,-0.8,-0.4",
-        "--partition",
-        "clipmap",
-    ];
+    let mut args = vec!["--near", "0.1", "--far", "1000"];
     args.extend_from_slice(extra);
-    run(&args)
+    clipmap_with(rule, &args)
+}
+
+/// `warp --partition clipmap` with the warp rule `rule` at half field of view 0.5 with the
+/// light (0.3, −0.8, −0.4), then `args`: success and output.
+fn clipmap_with<S: AsRef<str>>(rule: &str, args: &[S]) -> (bool, String) {
+    let mut all: Vec<String> = ["warp", "--warp", rule, "--half-fov", "0.5"]
+        .into_iter()
+        .chain(["--light-dir", "0.3,-0.8,-0.4", "--partition", "clipmap"])
+        .map(String::from)
+        .collect();
+    all.extend(args.iter().map(|a| a.as_ref().to_string()));
+    run(&all)
 }
 
 /// The command line with `args`: success, and standard output then standard error.
@@ -120,24 +119,9 @@ fn a_warped_clipmap_is_refused() {
     );
 }
 
-/// `warp --partition clipmap` at half field of view 0.5 with the light of [`warp_rule`], then
-/// `args`: success and output.
+/// `warp --partition clipmap` with the uniform rule (the only one a clipmap takes), then `args`.
 fn clipmap(args: &[String]) -> (bool, String) {
-    let mut all: Vec<String> = [
-        "warp",
-        "--warp",
-        "uniform",
-        "--half-fov",
-        "0.5",
-        "--light-dir",
-        "0.3,-0.8,-0.4",
-        "--partition",
-        "clipmap",
-    ]
-    .map(String::from)
-    .to_vec();
-    all.extend_from_slice(args);
-    run(&all)
+    clipmap_with("uniform", args)
 }
 
 /// The word after `marker` in `text`, without a trailing comma.
