@@ -3,7 +3,11 @@
 //!
 //! - **controller**: `plan::Controller` with `ControllerOptions::new(TARGET)` (at most 16 maps,
 //!   one power-of-two resolution shared by the maps, up to 8192², every candidate but the
-//!   clipmap), as `shadow-aliasing replay` runs it;
+//!   clipmap, a neighbour measured every 4 frames), as `shadow-aliasing replay` runs it;
+//! - **without neighbours**: the same with `neighbour_every: 0`;
+//! - **search every frame**: the same controller with a cut on every frame (`Controller::cut`):
+//!   every candidate measured, the fewest texels at one shared power-of-two resolution (the
+//!   planner's answer under the controller's constraint, with no memory);
 //! - **Bevy**: Bevy's defaults as the crate models them (examples/engine_defaults.rs): 4 stable
 //!   cascades, `CascadeSplits::Bevy` (minimum 0.1, first far bound 10, maximum 150, overlap
 //!   0.2), 2048² each, measured over the part of the focus body they cover (nothing beyond 150);
@@ -77,9 +81,16 @@ fn main() -> Result<(), String> {
             .join(format!("{name}.json"));
         let path = path_file::read(&file)?;
         let n = path.frames.len();
-        let mut controller =
-            Controller::new(ControllerOptions::new(TARGET)).map_err(|e| e.to_string())?;
+        let new = |every| {
+            Controller::new(ControllerOptions {
+                neighbour_every: every,
+                ..ControllerOptions::new(TARGET)
+            })
+            .map_err(|e| e.to_string())
+        };
+        let (mut controller, mut lone, mut eager) = (new(4)?, new(0)?, new(4)?);
         let (mut ctl, mut bevy, mut full, mut fixed) = Default::default();
+        let (mut ctl_lone, mut ctl_eager) = (Tally::default(), Tally::default());
         let mut kept: Option<(FrameScheme<'static>, u32)> = None;
         for (i, f) in path.frames.iter().enumerate() {
             let at = |e: shadow_aliasing::Error| format!("{name} frame {i}: {e}");
@@ -94,6 +105,19 @@ fn main() -> Result<(), String> {
             let key = format!("{} {}", label(&d.scheme), d.resolution);
             Tally::add(&mut ctl, key, d.max_error_pixels, d.texels, ms);
             let first = *kept.get_or_insert((d.scheme, d.resolution));
+            for (c, tally, cut) in [
+                (&mut lone, &mut ctl_lone, false),
+                (&mut eager, &mut ctl_eager, true),
+            ] {
+                if cut {
+                    c.cut();
+                }
+                let t = Instant::now();
+                let d = c.frame(&input).map_err(at)?;
+                let ms = t.elapsed().as_secs_f64() * 1e3;
+                let key = format!("{} {}", label(&d.scheme), d.resolution);
+                tally.add(key, d.max_error_pixels, d.texels, ms);
+            }
 
             let t = Instant::now();
             let b = frame(&input.scheme(FrameScheme::Stable(CascadeSplits::Bevy {
@@ -138,6 +162,11 @@ fn main() -> Result<(), String> {
         }
         let first = kept.map_or(String::new(), |(s, r)| format!("fixed: {} {r}²", label(&s)));
         println!("{}", ctl.row(name, "controller", n));
+        println!("{}", ctl_lone.row(name, "controller without neighbours", n));
+        println!(
+            "{}",
+            ctl_eager.row(name, "search every frame (shared resolution)", n)
+        );
         println!("{}", bevy.row(name, "Bevy defaults (4 × 2048²)", n));
         println!("{}", full.row(name, "plan every frame", n));
         println!("{}", fixed.row(name, &first, n));
