@@ -19,7 +19,7 @@
 //!   of the last `patience` frames is switched to (without a target: the cap, where the map
 //!   count changed it).
 //! - **Neighbours**: the kept scheme's neighbours are the allowed schemes with one cascade more
-//!   or fewer, then the cheapest candidates of the last search ([`MAX_NEIGHBOURS`] in all).
+//!   or fewer, then the cheapest candidates of the last search (at most 4).
 //!   Every `neighbour_every` frames one of them, in turn, is built and measured; one that would
 //!   have been cheaper (fewer texels for `margin × target`; without a target or where the
 //!   target is missed, `margin` times less error at its cap) in each of its checks over the
@@ -28,7 +28,7 @@
 //!   measured, and the cheapest that meets it, where cheaper than the kept set-up resized, is
 //!   switched to. Equal-error cascades that follow the camera keep the planes of their last
 //!   search, as fractions of the visible depth range (one frame, no search); their equal-error
-//!   neighbours are measured with those planes resampled ([`neighbours::resampled`]) and
+//!   neighbours are measured with those planes resampled and
 //!   searched only when switched to.
 
 mod neighbours;
