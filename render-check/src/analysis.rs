@@ -9,7 +9,10 @@
 //!    overhead case, against its Eq 7–10;
 //! 5. cascades' cross-fade: in each blend band, the weights the shader applied against the
 //!    frame's `blend` at the pixel's exact depth, and the shaded visibility against the weighted
-//!    pair of both maps' lookups.
+//!    pair of both maps' lookups;
+//! 6. the error lens the GPU drew (the crate's `sa_error_lens`) against the pixels one texel step
+//!    spans by the rendered Jacobian, and its perspective part against the frame's reported
+//!    maximum ([`crate::lens`]).
 
 use crate::blend::{band_at, band_maps, blend_agrees, in_band};
 use crate::gpu::{FrameOutput, Lookup};
@@ -84,6 +87,23 @@ pub struct Measured {
     /// [`BLEND_VALUE_TOLERANCE`](crate::blend::BLEND_VALUE_TOLERANCE); `None` for a frame with no
     /// band.
     pub blend_mismatches: Option<usize>,
+    /// Pixels whose GPU lens was compared with the rendered Jacobian's (every pixel with a
+    /// rendered Jacobian, on a surface at least [`EDGE_ON_LIGHT`] from edge-on to the light).
+    pub lens_pixels_compared: usize,
+    /// Median over those pixels of |lens / rendered lens − 1| (the rendered lens: the larger
+    /// singular value of the inverse rendered Jacobian, [`crate::lens::pixels_per_texel`]).
+    pub lens_median_rel_diff: f64,
+    /// 99th percentile of the same.
+    pub lens_p99_rel_diff: f64,
+    /// The largest GPU lens over the visible pixels on surfaces at least [`EDGE_ON_LIGHT`] from
+    /// edge-on to the light (pixels; the projection factor included).
+    pub max_lens: f64,
+    /// The largest ratio, over maps, of the largest GPU lens with the projection factor 1 over
+    /// the map's visible pixels to the map's reported `max_error_pixels`.
+    pub lens_frame_ratio: f64,
+    /// The smallest such ratio over the maps whose worst body vertex is visible (`None` where no
+    /// map's is).
+    pub lens_frame_ratio_worst_visible: Option<f64>,
 }
 
 /// Per-pixel results (for the heat maps) and the case's numbers.
@@ -94,6 +114,11 @@ pub struct Analysis {
     pub rendered_error: Vec<f64>,
     /// Predicted error per pixel (NaN where not compared).
     pub predicted_error: Vec<f64>,
+    /// The GPU's lens per pixel (pixels; NaN for the sky, +∞ edge-on to the light, NaN where the
+    /// GPU flagged the pixel otherwise).
+    pub lens: Vec<f64>,
+    /// The GPU's lens with the projection factor 1 per pixel (NaN where it has none).
+    pub perspective_lens: Vec<f64>,
 }
 
 /// The exact eye-space point seen through pixel `(x, y)` on the plane `(n, p0)` (eye space), or
@@ -402,6 +427,12 @@ pub fn analyse(
         .iter()
         .any(|m| m.reported.blend.0 < m.reported.blend.1);
     let (mut blend_px, mut blend_mis) = (0usize, 0usize);
+    let mut lens_rels = Vec::new();
+    let mut lens = vec![f64::NAN; n];
+    let mut perspective_lens = vec![f64::NAN; n];
+    let mut max_lens = 0.0f64;
+    // Per map: the largest GPU lens with the projection factor 1.
+    let mut lens_m = vec![0.0f64; nmaps];
     let debug = std::env::var_os("RENDER_CHECK_DEBUG").is_some();
     for (i, q) in px.iter().enumerate() {
         if q.class == Class::Sky {
@@ -471,8 +502,30 @@ pub fn analyse(
             }
             _ => {}
         }
+        // The lens.
+        let jr = rendered_jacobian(out, w, h, i);
+        let off_edge = q.n.dot(view.light_eye).abs() >= EDGE_ON_LIGHT;
+        lens[i] = match out.lens[i][0] {
+            v if v >= 3.0e38 => f64::INFINITY,
+            v if v > 0.0 => f64::from(v),
+            _ => f64::NAN,
+        };
+        if off_edge {
+            if let Some(v) = crate::lens::gpu_lens(out, i) {
+                max_lens = max_lens.max(v);
+            }
+            if let Some(reference) = jr.and_then(crate::lens::pixels_per_texel) {
+                lens_rels.push(crate::lens::rel_diff(out, i, reference));
+            }
+        }
+        if let Some(v) = crate::lens::gpu_perspective_lens(out, i) {
+            perspective_lens[i] = v;
+            if let Some(m) = lens_m.get_mut(q.part) {
+                *m = m.max(v);
+            }
+        }
         // Jacobians.
-        let (Some(fp), Some(jr)) = (q.predicted, rendered_jacobian(out, w, h, i)) else {
+        let (Some(fp), Some(jr)) = (q.predicted, jr) else {
             not_compared += 1;
             continue;
         };
@@ -516,8 +569,13 @@ pub fn analyse(
     if rels.is_empty() {
         return Err("no pixel could be compared (empty frame?)".into());
     }
+    if lens_rels.is_empty() {
+        return Err("no pixel's lens could be compared (empty frame?)".into());
+    }
     rels.sort_by(f64::total_cmp);
+    lens_rels.sort_by(f64::total_cmp);
     let (ratio, worst) = frame_ratios(&px, view, built, &rendered_m, (width, height, res));
+    let (lens_ratio, lens_worst) = lens_ratios(&px, view, built, &lens_m, (width, height));
     if let Some(l) = &lloyd {
         lloyd_diff = lloyd_diff.max(l.maxima_diff(&ground_m, width, height, res));
     }
@@ -546,11 +604,19 @@ pub fn analyse(
         lloyd_rel_diff: lloyd.map(|_| lloyd_diff),
         blend_pixels: blended.then_some(blend_px),
         blend_mismatches: blended.then_some(blend_mis),
+        lens_pixels_compared: lens_rels.len(),
+        lens_median_rel_diff: percentile(&lens_rels, 0.5),
+        lens_p99_rel_diff: percentile(&lens_rels, 0.99),
+        max_lens,
+        lens_frame_ratio: lens_ratio,
+        lens_frame_ratio_worst_visible: lens_worst,
     };
     Ok(Analysis {
         measured,
         rendered_error,
         predicted_error,
+        lens,
+        perspective_lens,
     })
 }
 
@@ -601,6 +667,49 @@ fn frame_ratios(
                 worst = Some(worst.map_or(r, |w| w.min(r)));
             }
         }
+    }
+    (ratio, worst)
+}
+
+/// The GPU's lens with the projection factor 1 against the frame's reported maxima: the largest
+/// ratio of a map's largest such lens over its visible pixels to its `max_error_pixels`, and the
+/// smallest over the maps whose worst body vertex (the one of the largest max(m_x, m_z) under the
+/// map, `vertex_max`) is within [`VISIBLE_PIXELS`] of a visible pixel looked up in the map.
+fn lens_ratios(
+    px: &[Pixel],
+    view: &View,
+    built: &Built,
+    lens_m: &[f64],
+    (width, height): (u32, u32),
+) -> (f64, Option<f64>) {
+    let tan = view.frustum.tan_half_fov();
+    let (mut ratio, mut worst) = (0.0f64, None::<f64>);
+    for (k, map) in built.maps.iter().enumerate() {
+        if lens_m[k] == 0.0 {
+            // No pixel of this map (a clipmap's last level can be off screen).
+            continue;
+        }
+        let r = lens_m[k] / map.reported.max_error_pixels;
+        ratio = ratio.max(r);
+        let body = built.bodies.get(k).map_or(&[][..], Vec::as_slice);
+        let per: Vec<(DVec3, f64)> = body
+            .iter()
+            .filter_map(|&v| {
+                vertex_max(&map.built, view.light_eye, tan, &[v])
+                    .map(|e| (v, e.max_mx.max(e.max_mz)))
+            })
+            .collect();
+        let top = per.iter().map(|e| e.1).fold(0.0f64, f64::max);
+        let seen = per
+            .iter()
+            .any(|e| e.1 >= top * (1.0 - 1e-6) && visible_point(px, view, (width, height), e.0, k));
+        if seen {
+            worst = Some(worst.map_or(r, |w| w.min(r)));
+        }
+    }
+    if lens_m.iter().all(|&m| m == 0.0) {
+        // No lens at all: not a pass.
+        return (f64::NAN, worst);
     }
     (ratio, worst)
 }

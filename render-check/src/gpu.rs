@@ -135,6 +135,14 @@ pub struct FrameOutput {
     /// visibility of the first map alone and of the second alone (`texel`'s last component is
     /// the visibility shaded: cross-faded in a cascade's blend band).
     pub blend: Vec<[f32; 4]>,
+    /// Per pixel: the error lens of the selected map (`sa_error_lens`, pixels), and the same with
+    /// the projection factor 1 (the surface facing the light, seen along the light from the same
+    /// view depth); 0 for the sky, −2 with no map, −1 behind the camera or the map's centre of
+    /// projection, 3.4·10³⁸ edge-on to the light.
+    pub lens: Vec<[f32; 2]>,
+    /// The lens drawn over the scene: `sa_lens_colour` of the lens, 3/4, over the shaded colour,
+    /// 1/4 (the shaded colour alone with no map), RGBA8.
+    pub overlay: Vec<[u8; 4]>,
 }
 
 #[repr(C)]
@@ -194,13 +202,23 @@ impl Gpu {
     /// # Errors
     /// [`NO_ADAPTER`] when none is found; the device's error otherwise.
     pub fn new() -> Result<Self, String> {
+        Self::with_source(&shader_source())
+    }
+
+    /// As [`Gpu::new`], with the shaders' source given: [`shader_source`] changed on purpose
+    /// (render-check/tests/lens.rs breaks the module's `sa_error_lens` to show the lens targets
+    /// catch it).
+    ///
+    /// # Errors
+    /// As [`Gpu::new`]; a source that does not compile.
+    pub fn with_source(source: &str) -> Result<Self, String> {
         let (device, queue, name) = device("render-check")?;
         // wgpu panics on an uncaptured validation error: every call below is scoped, so that an
         // error is returned instead.
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("shaders"),
-            source: wgpu::ShaderSource::Wgsl(shader_source().into()),
+            source: wgpu::ShaderSource::Wgsl(source.into()),
         });
         let shadow_bgl = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("shadow"),
@@ -346,6 +364,8 @@ impl Gpu {
                     Some(wgpu::TextureFormat::Rgba8Unorm.into()),
                     Some(wgpu::TextureFormat::R32Float.into()),
                     Some(wgpu::TextureFormat::Rgba32Float.into()),
+                    Some(wgpu::TextureFormat::Rg32Float.into()),
+                    Some(wgpu::TextureFormat::Rgba8Unorm.into()),
                 ],
             }),
             multiview_mask: None,
@@ -610,7 +630,13 @@ impl Gpu {
             light: vec4(f.light, crate::scene::FACING as f32),
             light_eye: vec4(f.light_eye, f.mode as f32),
             frustum: f.frustum.map(|x| x as f32),
-            misc: [f.res as f32, f.maps.len() as f32, bias_flags(f.lookup), 0.0],
+            misc: [
+                f.res as f32,
+                f.maps.len() as f32,
+                bias_flags(f.lookup),
+                // sa_error_lens's focal_pixels: H / (2 tan θ).
+                (f64::from(f.height) / (2.0 * f.frustum[2])) as f32,
+            ],
             offset: vec4(f.offset, 0.0),
             clipmap: [
                 f.clipmap[0] as f32,
@@ -647,9 +673,13 @@ impl Gpu {
         let t_color = self.target(w, h, wgpu::TextureFormat::Rgba8Unorm);
         let t_light = self.target(w, h, wgpu::TextureFormat::R32Float);
         let t_blend = self.target(w, h, wgpu::TextureFormat::Rgba32Float);
+        let t_lens = self.target(w, h, wgpu::TextureFormat::Rg32Float);
+        let t_overlay = self.target(w, h, wgpu::TextureFormat::Rgba8Unorm);
         let t_depth = self.target(w, h, wgpu::TextureFormat::Depth32Float);
-        let views = [&t_texel, &t_id, &t_color, &t_light, &t_blend, &t_depth]
-            .map(|t| t.create_view(&Default::default()));
+        let views = [
+            &t_texel, &t_id, &t_color, &t_light, &t_blend, &t_lens, &t_overlay, &t_depth,
+        ]
+        .map(|t| t.create_view(&Default::default()));
         {
             let clear = |c: wgpu::Color| wgpu::Operations {
                 load: wgpu::LoadOp::Clear(c),
@@ -693,9 +723,26 @@ impl Gpu {
                         resolve_target: None,
                         ops: clear(wgpu::Color::TRANSPARENT),
                     }),
+                    Some(wgpu::RenderPassColorAttachment {
+                        view: &views[5],
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: clear(wgpu::Color::TRANSPARENT),
+                    }),
+                    Some(wgpu::RenderPassColorAttachment {
+                        view: &views[6],
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: clear(wgpu::Color {
+                            r: 0.55,
+                            g: 0.7,
+                            b: 0.9,
+                            a: 1.0,
+                        }),
+                    }),
                 ],
                 depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &views[5],
+                    view: &views[7],
                     depth_ops: Some(wgpu::Operations {
                         load: wgpu::LoadOp::Clear(1.0),
                         store: wgpu::StoreOp::Store,
@@ -717,18 +764,24 @@ impl Gpu {
         let (b2, r2) = self.copy_out(&mut enc, &t_color, w, h, 1, 4, all);
         let (b3, r3) = self.copy_out(&mut enc, &t_light, w, h, 1, 4, all);
         let (b4, r4) = self.copy_out(&mut enc, &t_blend, w, h, 1, 16, all);
+        let (b5, r5) = self.copy_out(&mut enc, &t_lens, w, h, 1, 8, all);
+        let (b6, r6) = self.copy_out(&mut enc, &t_overlay, w, h, 1, 4, all);
         self.queue.submit([enc.finish()]);
         let texel = self.read(&b0, r0, w, h, 1, 16)?;
         let id = self.read(&b1, r1, w, h, 1, 4)?;
         let color = self.read(&b2, r2, w, h, 1, 4)?;
         let depth = self.read(&b3, r3, w, h, 1, 4)?;
         let blend = self.read(&b4, r4, w, h, 1, 16)?;
+        let lens = self.read(&b5, r5, w, h, 1, 8)?;
+        let overlay = self.read(&b6, r6, w, h, 1, 4)?;
         Ok(FrameOutput {
             texel: bytemuck::cast_slice(&texel).to_vec(),
             id: bytemuck::cast_slice(&id).to_vec(),
             color: bytemuck::cast_slice(&color).to_vec(),
             depth: bytemuck::cast_slice(&depth).to_vec(),
             blend: bytemuck::cast_slice(&blend).to_vec(),
+            lens: bytemuck::cast_slice(&lens).to_vec(),
+            overlay: bytemuck::cast_slice(&overlay).to_vec(),
         })
     }
 }

@@ -1,7 +1,8 @@
 //! PNG output, every image titled with its case: the shaded frame; the rendered error (log scale,
 //! viridis) beside the ratio rendered / predicted (diverging, ±1 %), each with its colour bar and
 //! the "not compared" swatch; and the close-up of a shadow edge (the jaggies beside the predicted
-//! error, as Lloyd 2006 Fig 1). Text is DejaVu Sans (compiled in), rasterized by `ab_glyph`.
+//! error, as Lloyd 2006 Fig 1); the error lens the GPU drew over the scene, with the ramp's
+//! legend. Text is DejaVu Sans (compiled in), rasterized by `ab_glyph`.
 
 use ab_glyph::{point, Font, FontRef, PxScale, ScaleFont};
 use image::{Rgb, RgbImage};
@@ -311,5 +312,91 @@ pub fn close_up(
     let note = "an error of e pixels per texel: one texel covers up to e pixels";
     let nx = (pw as f32 - text_width(14.0, note)).max(0.0) as i32 / 2;
     text(&mut img, nx, (top + ph + 6) as i32, 14.0, note, BLACK);
+    img
+}
+
+/// The height of the lens image's legend row.
+const LENS_LEGEND: u32 = 64;
+
+/// The lens ramp's colour (`shadow_aliasing::frame::lens::lens_colour`, the colours
+/// `sa_lens_colour` draws) of `value` pixels, as 8-bit sRGB.
+pub fn lens_ramp(value: f64) -> Rgb<u8> {
+    let c = shadow_aliasing::frame::lens::lens_colour(value);
+    Rgb(c.map(|x| (x * 255.0).round() as u8))
+}
+
+/// The error lens as the GPU drew it over the scene (`overlay`: `sa_lens_colour` of the lens,
+/// 3/4, over the shaded colour, 1/4), under a title bar and a caption, with the ramp's legend
+/// below: a bar from 1/16 to 32 pixels (log₂, one colour per doubling) and the 1-pixel colour
+/// marked; `note` is written beside the legend.
+pub fn lens_overlay(overlay: &[[u8; 4]], w: u32, h: u32, title: &str, note: &str) -> RgbImage {
+    let top = TITLE + CAPTION;
+    let mut img = RgbImage::from_pixel(w.max(560), top + h + LENS_LEGEND, WHITE);
+    for y in 0..h {
+        for x in 0..w {
+            let c = overlay[(y * w + x) as usize];
+            img.put_pixel(x, y + top, Rgb([c[0], c[1], c[2]]));
+        }
+    }
+    title_bar(&mut img, title);
+    text(
+        &mut img,
+        4,
+        TITLE as i32 + 3,
+        15.0,
+        "error lens: the shadow texel's size on screen, pixels (sa_error_lens)",
+        BLACK,
+    );
+    // The bar: 2⁻⁴ … 2⁵ pixels across `bw` pixels, log₂.
+    let (bx, by, bw) = (12u32, top + h + 8, 360u32);
+    let (lo, hi) = (
+        shadow_aliasing::frame::lens::LENS_RAMP_LOG2_MIN,
+        shadow_aliasing::frame::lens::LENS_RAMP_LOG2_MIN + 9.0,
+    );
+    for dx in 0..bw {
+        let v = (lo + (hi - lo) * f64::from(dx) / f64::from(bw - 1)).exp2();
+        for dy in 0..16 {
+            img.put_pixel(bx + dx, by + dy, lens_ramp(v));
+        }
+    }
+    let labels = [
+        "1/16", "1/8", "1/4", "1/2", "1 px", "2", "4", "8", "16", "32",
+    ];
+    for (k, label) in labels.iter().enumerate() {
+        let tx = bx + (k as u32 * (bw - 1)) / 9;
+        for dy in 16..21 {
+            img.put_pixel(tx, by + dy, BLACK);
+        }
+        let px = if k == 4 { 13.0 } else { 12.0 };
+        let lx = tx as i32 - (text_width(px, label) / 2.0) as i32;
+        text(&mut img, lx.max(0), (by + 22) as i32, px, label, BLACK);
+    }
+    // The 1-pixel colour, boxed.
+    let one = bx + 4 * (bw - 1) / 9;
+    for dx in 0..9 {
+        for dy in [0u32, 17] {
+            img.put_pixel(one + dx - 4, by + dy, BLACK);
+        }
+    }
+    for dy in 0..18 {
+        img.put_pixel(one - 4, by + dy, BLACK);
+        img.put_pixel(one + 4, by + dy, BLACK);
+    }
+    text(
+        &mut img,
+        (bx + bw + 12) as i32,
+        (by - 2) as i32,
+        13.0,
+        "1 px = #26828e; ends clamped",
+        BLACK,
+    );
+    text(
+        &mut img,
+        (bx + bw + 12) as i32,
+        (by + 16) as i32,
+        13.0,
+        note,
+        BLACK,
+    );
     img
 }

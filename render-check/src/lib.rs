@@ -9,6 +9,7 @@ pub mod compute;
 pub mod faults;
 pub mod gpu;
 pub mod images;
+pub mod lens;
 pub mod perspective;
 pub mod run;
 pub mod scene;

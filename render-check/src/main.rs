@@ -1,12 +1,13 @@
-//! `render-check`: renders every set-up × scheme, writes per case `<setup>_<scheme>.png` (shaded)
-//! and `<setup>_<scheme>_error.png` (rendered error beside rendered/predicted), with `--gallery`
+//! `render-check`: renders every set-up × scheme, writes per case `<setup>_<scheme>.png` (shaded),
+//! `<setup>_<scheme>_error.png` (rendered error beside rendered/predicted) and `<setup>_<scheme>_lens.png`
+//! (the error lens the GPU drew over the scene, with its legend), with `--gallery`
 //! also `<setup>_<scheme>_edge.png` (a shadow edge at 512² texels), and `summary.json`.
 //! `--fault NAME` injects one deliberate fault; `--self-test` runs the clean build and every fault.
 //! `render-check --help` lists the options.
 
 use render_check::faults::{self_test, Fault};
 use render_check::gpu::{Gpu, Lookup};
-use render_check::images::{close_up, error_panels, shaded, Crop};
+use render_check::images::{close_up, error_panels, lens_overlay, shaded, Crop};
 use render_check::run::{run_case, run_full, Render, Sizes, Summary};
 use render_check::scene::Scene;
 use render_check::schemes::{setups, Scheme, Setup};
@@ -188,6 +189,16 @@ fn real_main() -> Result<(), String> {
                     &case,
                 ),
                 format!("{stem}_error.png"),
+            )?;
+            save(
+                lens_overlay(
+                    &r.overlay,
+                    sizes.width,
+                    sizes.height,
+                    &case,
+                    &format!("largest: {:.4} px", r.summary.measured.max_lens),
+                ),
+                format!("{stem}_lens.png"),
             )?;
             if gallery {
                 let low = Sizes {

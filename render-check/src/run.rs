@@ -93,6 +93,8 @@ pub struct CaseResult {
     pub analysis: Analysis,
     /// Shaded colour.
     pub color: Vec<[u8; 4]>,
+    /// The error lens drawn over the shaded colour by the GPU.
+    pub overlay: Vec<[u8; 4]>,
     /// Diagnostics: excluded pixels, interior and edge-band sizes.
     pub diagnostics: String,
 }
@@ -249,6 +251,7 @@ pub fn run_case(
             shimmer_points: None,
         },
         color: out.color,
+        overlay: out.overlay,
         analysis: a,
         diagnostics,
     })

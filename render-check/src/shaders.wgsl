@@ -18,7 +18,8 @@ struct Globals {
     // near, far, tan(half fov y), tan(half fov y) * aspect.
     frustum: vec4<f32>,
     // x: map resolution, y: number of maps, z: sa_visibility's bias flags (0: second-depth maps,
-    // SA_NORMAL_OFFSET: first-surface maps with the crate's normal offset).
+    // SA_NORMAL_OFFSET: first-surface maps with the crate's normal offset), w: sa_error_lens's
+    // focal_pixels (image height / (2 tan(half vertical field of view))).
     misc: vec4<f32>,
     // xyz: added to a position before a map's matrix.
     offset: vec4<f32>,
@@ -114,6 +115,13 @@ struct FOut {
     // The second map (sa_pick_cascade's; the first elsewhere), its weight, and the visibility of
     // the first and of the second map alone: the analysis recomputes the cross-fade.
     @location(4) blend: vec4<f32>,
+    // The error lens of the selected map at the pixel (sa_error_lens), and the same with the
+    // projection factor 1 (the surface facing the light, seen along the light from the same view
+    // depth: the texel across the light beam over the pixel across the view beam); -2 with no map.
+    @location(5) lens: vec2<f32>,
+    // The lens drawn over the scene: sa_lens_colour of the lens, 3/4, over the shaded colour,
+    // 1/4 (the shaded colour alone with no map).
+    @location(6) overlay: vec4<f32>,
 };
 
 @fragment
@@ -159,8 +167,22 @@ fn fs_camera(v: VOut) -> FOut {
             }
         }
     }
+    var lens = vec2<f32>(-2.0);
+    if (part < count) {
+        // The camera in the records' space (the upload origin is the camera's position) and its
+        // unit view axis (the eye's -z in world axes: minus the third row of rel_to_eye).
+        let eye = g.offset.xyz;
+        let forward = -normalize(vec3<f32>(g.rel_to_eye[0].z, g.rel_to_eye[1].z, g.rel_to_eye[2].z));
+        let focal = g.misc.w;
+        let z = dot(p - eye, forward);
+        lens = vec2<f32>(
+            sa_error_lens(sa_map(part), p, n, l, eye, forward, focal),
+            sa_error_lens(sa_map(part), p, -l, l, p - z * l, l, focal),
+        );
+    }
     let res = g.misc.x;
     var o: FOut;
+    o.lens = lens;
     o.texel = vec4<f32>(st * res, f32(part), vis);
     o.blend = vec4<f32>(f32(pick.second), pick.weight, v1, v2);
     o.depth = depth;
@@ -175,5 +197,9 @@ fn fs_camera(v: VOut) -> FOut {
     // Tint by partition so the seams are visible.
     let tint = 0.9 + 0.1 * vec3<f32>(f32(part % 2u), f32((part / 2u) % 2u), f32((part / 4u) % 2u));
     o.color = vec4<f32>(base * light * tint, 1.0);
+    o.overlay = o.color;
+    if (part < count) {
+        o.overlay = vec4<f32>(mix(o.color.rgb, sa_lens_colour(lens.x), 0.75), 1.0);
+    }
     return o;
 }

@@ -30,6 +30,28 @@ pub const LLOYD_REL_DIFF: f64 = 0.01;
 /// Stable cascades: at most this fraction of the shadow-edge points' states change between
 /// frames.
 pub const STABLE_SHIMMER: f64 = 0.001;
+/// The error lens the GPU drew (`sa_error_lens`) against the pixels one texel step spans by the
+/// rendered Jacobian ([`crate::lens`]): the median of |lens / rendered − 1|, at most. The issue
+/// asked for 1 %; the reference is exact ([`crate::perspective`]), the GPU's `f32` rounding
+/// leaves medians up to 9.7·10⁻⁵ (measured, 640 × 480), so the target is ten times tighter: a lens 1 % off
+/// fails it.
+pub const LENS_MEDIAN_REL_DIFF: f64 = 1e-3;
+/// The 99th percentile of the same, at most (the issue's 5 %, tightened likewise: measured up
+/// to 7.4·10⁻⁴).
+pub const LENS_P99_REL_DIFF: f64 = 5e-3;
+/// The GPU's lens with the projection factor 1 exceeds a map's reported `max_error_pixels` over
+/// its visible pixels by at most this, relatively. Not `f32` rounding alone: the lens is the
+/// texel's largest extent on screen (the larger singular value of its two edges), the reported
+/// maximum Lloyd's widths along the light-space axes (M_x, M_z), and a texel sheared by a warp
+/// (LiSPSM's, off its axis at the frustum's near corners) is larger than both: 0.44 % above the
+/// reported maximum in `level_overhead`'s LiSPSM cascades (measured; every other case at most
+/// 0.99999 × it). The lens itself, projection factor included, is no bound (docs/rendered.md).
+pub const LENS_FRAME_EXCESS: f64 = 0.01;
+/// Where a map's worst body vertex is visible, its largest lens with the projection factor 1
+/// reaches at least this fraction of its reported `max_error_pixels` (the issue's 5 %).
+pub const LENS_FRAME_REACH: f64 = 0.95;
+/// At least this fraction of the visible pixels has its lens compared.
+pub const MIN_LENS_COMPARED_FRACTION: f64 = 0.5;
 /// The shimmer test follows at least this many shadow-edge points.
 pub const MIN_SHIMMER_POINTS: usize = 100;
 
@@ -58,6 +80,21 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
         "frame_error_ratio − 1 (rendered M_x, M_z over the frame's reported)",
         m.frame_error_ratio - 1.0,
         FRAME_EXCESS,
+    );
+    at_most(
+        "lens_median_rel_diff (the GPU's sa_error_lens against the rendered Jacobian's)",
+        m.lens_median_rel_diff,
+        LENS_MEDIAN_REL_DIFF,
+    );
+    at_most(
+        "lens_p99_rel_diff (the GPU's sa_error_lens against the rendered Jacobian's)",
+        m.lens_p99_rel_diff,
+        LENS_P99_REL_DIFF,
+    );
+    at_most(
+        "lens_frame_ratio − 1 (the lens at projection factor 1 over the reported max_error_pixels)",
+        m.lens_frame_ratio - 1.0,
+        LENS_FRAME_EXCESS,
     );
     if let Some(n) = m.blend_mismatches {
         at_most(
@@ -98,6 +135,18 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
             "shadow_pixels_checked / shadow_pixels",
             m.shadow_pixels_checked as f64 / m.shadow_pixels as f64,
             MIN_SHADOW_CHECKED_FRACTION,
+        );
+    }
+    at_least(
+        "lens_pixels_compared / visible_pixels",
+        m.lens_pixels_compared as f64 / m.visible_pixels.max(1) as f64,
+        MIN_LENS_COMPARED_FRACTION,
+    );
+    if let Some(r) = m.lens_frame_ratio_worst_visible {
+        at_least(
+            "lens_frame_ratio_worst_visible (the lens at projection factor 1 where the worst vertex shows)",
+            r,
+            LENS_FRAME_REACH,
         );
     }
     if let Some(r) = m.frame_error_ratio_worst_visible {

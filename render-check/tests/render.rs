@@ -476,6 +476,12 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
         "lloyd_rel_diff",
         "blend_pixels",
         "blend_mismatches",
+        "lens_pixels_compared",
+        "lens_median_rel_diff",
+        "lens_p99_rel_diff",
+        "max_lens",
+        "lens_frame_ratio",
+        "lens_frame_ratio_worst_visible",
         "shimmer_changed_fraction",
         "shimmer_points",
     ];
@@ -503,6 +509,7 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
         let stem = format!("small_{}", c["scheme"].as_str().unwrap());
         assert!(out.join(format!("{stem}.png")).is_file());
         assert!(out.join(format!("{stem}_error.png")).is_file());
+        assert!(out.join(format!("{stem}_lens.png")).is_file());
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }

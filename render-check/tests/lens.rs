@@ -1,0 +1,123 @@
+//! The error lens as the GPU draws it (the crate's `sa_error_lens`, called by render-check's
+//! camera pass for the map each pixel selected) against render-check's own measurement from the
+//! GPU's texel coordinates: the pixels one texel step spans on the surface, the larger singular
+//! value of the inverse rendered Jacobian (docs/rendered.md, "The error lens"). With no Vulkan
+//! adapter this fails, naming `mesa-vulkan-drivers`; it never skips.
+
+use render_check::gpu::Gpu;
+use render_check::run::{run_case, Render, Sizes};
+use render_check::schemes::{setups, Scheme};
+use render_check::targets::{
+    LENS_FRAME_EXCESS, LENS_FRAME_REACH, LENS_MEDIAN_REL_DIFF, LENS_P99_REL_DIFF,
+};
+
+/// Under a sun 10° above the horizon, across the view (`grazing_10`), every scheme's drawn lens
+/// is the rendered one to the targets (median ≤ 10⁻³, p99 ≤ 5·10⁻³ relatively), on at least half
+/// the visible pixels; its perspective part (the lens with the projection factor 1) exceeds the
+/// map's reported `max_error_pixels` by at most 1 % (`LENS_FRAME_EXCESS`), and reaches 95 % of
+/// it where the worst body vertex shows. The scene's projection factor is far from 1 (the lens differs from its perspective
+/// part by more than 50 % on most compared pixels), so a lens that leaves the projection factor
+/// out fails the comparison: `sa_error_lens` with its projection onto the surface removed
+/// (`ps = es`, `pt = et`) in src/frame/shadow.wgsl, this test failed on its first scheme,
+/// uniform, with a median of 0.78 (and the next test's LiSPSM shows 0.82, p99 0.93).
+#[test]
+fn the_drawn_lens_is_the_pixels_a_texel_step_spans_on_the_surface() {
+    let gpu = Gpu::new().unwrap_or_else(|e| panic!("{e}"));
+    let setup = setups()
+        .into_iter()
+        .find(|s| s.name == "grazing_10")
+        .expect("the built-in set-up grazing_10");
+    let sizes = Sizes {
+        width: 240,
+        height: 180,
+        res: None,
+        frames: 0,
+        shimmer_points: 0,
+        fault: None,
+        render: Render::DEFAULT,
+    };
+    for scheme in Scheme::ALL {
+        let r = run_case(&gpu, &setup.name, &setup.scene, scheme, sizes)
+            .unwrap_or_else(|e| panic!("{}: {e}", scheme.name()));
+        let m = &r.summary.measured;
+        let name = scheme.name();
+        assert!(
+            m.lens_pixels_compared * 2 >= m.visible_pixels,
+            "{name}: {} of {} pixels compared",
+            m.lens_pixels_compared,
+            m.visible_pixels
+        );
+        assert!(
+            m.lens_median_rel_diff <= LENS_MEDIAN_REL_DIFF,
+            "{name}: median {}",
+            m.lens_median_rel_diff
+        );
+        assert!(
+            m.lens_p99_rel_diff <= LENS_P99_REL_DIFF,
+            "{name}: p99 {}",
+            m.lens_p99_rel_diff
+        );
+        assert!(
+            m.lens_frame_ratio <= 1.0 + LENS_FRAME_EXCESS,
+            "{name}: lens at projection factor 1 over the reported maximum {}",
+            m.lens_frame_ratio
+        );
+        if let Some(w) = m.lens_frame_ratio_worst_visible {
+            assert!(
+                w >= LENS_FRAME_REACH,
+                "{name}: worst vertex visible, ratio {w}"
+            );
+        }
+        // The projection factor matters here: the lens and its perspective part differ.
+        let a = &r.analysis;
+        let (mut both, mut apart) = (0usize, 0usize);
+        for (l, p) in a.lens.iter().zip(&a.perspective_lens) {
+            if l.is_finite() && p.is_finite() {
+                both += 1;
+                apart += usize::from((l / p - 1.0).abs() > 0.5);
+            }
+        }
+        assert!(
+            apart * 2 > both,
+            "{name}: the projection factor is far from 1 on {apart} of {both} pixels"
+        );
+    }
+}
+
+/// The lens targets have teeth: with `sa_error_lens`'s projection onto the surface removed from
+/// the module (the texel's edges taken in the plane ⊥ L as they are, `ps = es`, `pt = et`: the
+/// projection factor left out), the drawn lens of LiSPSM under the grazing sun violates
+/// `lens_median_rel_diff` and `lens_p99_rel_diff` (median 0.82, p99 0.93 measured), while the
+/// lens with the projection factor 1, which the projection does not change, still meets the
+/// frame's maximum.
+#[test]
+fn a_lens_without_the_projection_factor_fails_the_targets() {
+    let clean = render_check::gpu::shader_source();
+    let broken = clean
+        .replace("let ps = es - (dot(n, es) / nl) * l;", "let ps = es;")
+        .replace("let pt = et - (dot(n, et) / nl) * l;", "let pt = et;");
+    assert_eq!(
+        clean.len() - broken.len(),
+        2 * " - (dot(n, es) / nl) * l".len(),
+        "sa_error_lens's projection onto the surface is written as this test expects"
+    );
+    let gpu = Gpu::with_source(&broken).unwrap_or_else(|e| panic!("{e}"));
+    let setup = setups()
+        .into_iter()
+        .find(|s| s.name == "grazing_10")
+        .expect("the built-in set-up grazing_10");
+    let sizes = Sizes {
+        width: 240,
+        height: 180,
+        res: None,
+        frames: 0,
+        shimmer_points: 0,
+        fault: None,
+        render: Render::DEFAULT,
+    };
+    let r = run_case(&gpu, &setup.name, &setup.scene, Scheme::Lispsm, sizes).unwrap();
+    let m = &r.summary.measured;
+    assert!(m.lens_median_rel_diff > LENS_MEDIAN_REL_DIFF, "{m:?}");
+    assert!(m.lens_p99_rel_diff > LENS_P99_REL_DIFF, "{m:?}");
+    assert!(m.lens_frame_ratio <= 1.0 + LENS_FRAME_EXCESS, "{m:?}");
+}
