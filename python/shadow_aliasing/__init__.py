@@ -15,7 +15,9 @@ spelled ``lambda_``).
 Builders (4×4 float64 matrices, eye space → light clip space, ``clip = M @ (x, y, z, 1)``):
 ``warp``, ``n_prime_for``, ``cascades``, ``faces``, ``tsm``. World-space frame API (the renderer's path: a view matrix,
 scene boxes, every scheme; dict of arrays): ``frame``; the cheapest scheme for a target error or
-a texel budget: ``plan``; a clipmap's levels, pages and LOD bias: ``plan_clipmap``. Measurement: ``frustum_max``,
+a texel budget: ``plan``; a clipmap's levels, pages and LOD bias: ``plan_clipmap``; the cheapest set-up for an error
+budget in every frame, kept from frame to frame, and its maps' per-point error lens:
+``Controller``. Measurement: ``frustum_max``,
 ``point_error``; a captured frame's per-pixel error: ``error_image``. Hemisphere sweep: ``sweep`` (all cores),
 ``sweep_angles``.
 
@@ -25,6 +27,7 @@ long; a result larger than memory raises ``MemoryError`` before any work (docs/p
 
 from ._native import (
     WARP_RULES,
+    Controller,
     allocate_texels,
     cascades,
     critical_resolution,
@@ -66,6 +69,7 @@ __version__ = "0.1.0"
 
 __all__ = [
     "WARP_RULES",
+    "Controller",
     "allocate_texels",
     "cascades",
     "critical_resolution",

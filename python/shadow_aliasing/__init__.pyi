@@ -1,5 +1,5 @@
 """Type stubs of shadow_aliasing (the closed forms broadcast over every float argument)."""
-from typing import List, Literal, Optional, Sequence, Tuple, TypedDict, Union, overload
+from typing import List, Literal, Optional, Sequence, Tuple, TypedDict, Union, final, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -51,10 +51,56 @@ class FrameResult(TypedDict):
     casters_volume: List[npt.NDArray[np.float64]]
     receivers_volume: List[npt.NDArray[np.float64]]
 
+
+class ControllerFrame(TypedDict):
+    """``Controller.frame``'s decision and maps (m maps)."""
+    scheme: str
+    frame_kwargs: dict[str, object]
+    warp_args: Optional[List[str]]
+    resolution: int
+    max_error_pixels: float
+    texels: int
+    meets_target: bool
+    within_budget: bool
+    switched: bool
+    cut: bool
+    unchanged: npt.NDArray[np.bool_]
+    maps: FrameResult
+
+
+@final
+class Controller:
+    """The error-budget controller: the cheapest set-up (a scheme, one square resolution shared
+    by its maps) whose measured largest error meets ``max_error`` (within ``budget_texels``),
+    else the least error that fits; kept from frame to frame. Options are keywords; the
+    defaults are the crate's ``ControllerOptions::new``."""
+    def __new__(cls, *, max_error: Optional[float] = ..., budget_texels: Optional[int] = ...,
+                 max_maps: Optional[int] = ...,
+                 rounding: Union[Literal["whole", "power_of_two"], int, None] = ...,
+                 max_resolution: Optional[int] = ..., candidates: Optional[Sequence[str]] = ...,
+                 patience: Optional[int] = ..., margin: Optional[float] = ...,
+                 neighbour_every: Optional[int] = ..., retry_every: Optional[int] = ...,
+                 cut_move: Optional[float] = ..., cut_turn: Optional[float] = ...,
+                 cut_light: Optional[float] = ...) -> "Controller": ...
+    def frame(self, view: ArrayLike, near: float, far: float, half_fov: float, light_dir: Vec3, *,
+              image_height: int, aspect: float = ..., receivers: Optional[ArrayLike] = ...,
+              casters: Optional[ArrayLike] = ..., depth_range: Optional[ArrayLike] = ...,
+              depth_clamp: bool = ..., pcf_radius: float = ..., clip_depth: ClipDepth = ...,
+              dtype: DType = ...) -> ControllerFrame:
+        """This frame's set-up and maps; every candidate searched on a cut."""
+    def cut(self) -> None:
+        """Makes the next frame a cut (every candidate searched)."""
+    def error_lens(self, points: ArrayLike, normals: ArrayLike, *,
+                   map_index: Optional[ArrayLike] = ...,
+                   fill: float = ...) -> npt.NDArray[np.float64]:
+        """(...) the last frame's map texel in pixels on the surfaces at world ``points`` (..., 3)
+        with ``normals`` (..., 3), the projection factor included (``FrameMap::error_lens_at``)."""
+
 WARP_RULES: list[str]
 __version__: str
 __all__ = [
     "WARP_RULES",
+    "Controller",
     "allocate_texels",
     "cascades",
     "critical_resolution",

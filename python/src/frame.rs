@@ -616,7 +616,7 @@ pub fn clipmap_options<'py>(
 }
 
 /// The frame as a dict of arrays.
-fn result<'py>(
+pub(crate) fn result<'py>(
     py: Python<'py>,
     f: &shadow_aliasing::frame::Frame,
     depth: ClipDepth,

@@ -10,6 +10,7 @@ mod args;
 mod broadcast;
 mod builders;
 mod closed;
+mod controller;
 mod error_image;
 mod frame;
 mod interrupt;
@@ -78,6 +79,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(plan::plan_clipmap, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep_angles, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
+    m.add_class::<controller::Controller>()?;
     m.add("WARP_RULES", builders::WARP_RULES.to_vec())?;
     Ok(())
 }

@@ -26,7 +26,7 @@ type Any<'py> = Bound<'py, PyAny>;
 const DEFAULT_MAX_MAPS: usize = 8;
 
 /// `rounding`: "whole" (the default), "power_of_two", or a whole number of texels (a tile).
-fn rounding(ob: Option<&Any<'_>>) -> PyResult<Rounding> {
+pub(crate) fn rounding(ob: Option<&Any<'_>>) -> PyResult<Rounding> {
     let Some(ob) = ob.filter(|o| !o.is_none()) else {
         return Ok(Rounding::Whole);
     };
@@ -111,7 +111,11 @@ fn frame_kwargs<'py>(py: Python<'py>, s: &FrameScheme<'_>) -> PyResult<Bound<'py
 }
 
 /// A candidate's or the plan's scheme entries: its label, `sa.frame`'s keywords, `warp`'s flags.
-fn scheme_entries(d: &Bound<'_, PyDict>, s: &FrameScheme<'_>, image_height: u32) -> PyResult<()> {
+pub(crate) fn scheme_entries(
+    d: &Bound<'_, PyDict>,
+    s: &FrameScheme<'_>,
+    image_height: u32,
+) -> PyResult<()> {
     d.set_item("scheme", label(s))?;
     d.set_item("frame_kwargs", frame_kwargs(d.py(), s)?)?;
     d.set_item("warp_args", warp_args(s, image_height))?;

@@ -63,7 +63,13 @@ CALLS = {
                                              [0, 0, -100 / 99, -100 / 99], [0, 0, -1.0, 0]])),
     "sweep_angles": dict(elevations=3, azimuths=4),
     "sweep": dict(VIEW, elevations=3, azimuths=4),
+    # The controller's constructor and its methods (on a controller that has run one frame).
+    "Controller": dict(max_error=2.0),
+    "Controller.frame": dict(VIEW, view=np.eye(4), light_dir=LIGHT, image_height=1080),
+    "Controller.error_lens": dict(points=[[0.0, -1.0, -10.0]], normals=[[0.0, 1.0, 0.0]]),
 }
+# The controller the methods are called on: two schemes, so that a frame takes milliseconds.
+CONTROLLER = dict(max_error=2.0, candidates=["single uniform", "cascades log k=3 uniform"])
 
 BEVY = dict(num_cascades=3, minimum_distance=1.0, maximum_distance=80.0,
             first_cascade_far_bound=5.0, overlap_proportion=0.2)
@@ -84,6 +90,8 @@ CONTEXT = {
                     "light_angle": {"scheme": "adaptive", "light_angle": 1.0, "ratio": 2.0},
                     "ratio": {"scheme": "adaptive", "light_angle": 1.0, "ratio": 2.0}},
     "critical_resolution": {},
+    "Controller.frame": {"casters": {"receivers": [[[-5.0, -2.0, -50.0], [5.0, 0.0, -2.0]]],
+                                     "casters": [[[-1.0, 0.0, -20.0], [1.0, 3.0, -15.0]]]}},
     "plan": {"budget_texels": {"max_error": None, "budget_texels": 1 << 24},
              "max_maps": {"max_error": None, "budget_texels": 1 << 24, "max_maps": 4}},
     "frame": {**_RULE_ARGS,
@@ -108,10 +116,11 @@ CONTEXT = {
 
 # Arguments where NaN is a value: error_image's fill (its default) marks pixels without a
 # prediction. Any value is accepted there.
-NAN_VALID = {("error_image", "fill")}
+NAN_VALID = {("error_image", "fill"), ("Controller.error_lens", "fill")}
 # Whole numbers whose domain reaches 2**40: plan's texel budget (a count of texels, not of maps
 # or cells). Such a value is accepted or refused naming the argument.
-HUGE_INT_VALID = {("plan", "budget_texels"), ("plan_clipmap", "pool")}
+HUGE_INT_VALID = {("plan", "budget_texels"), ("plan_clipmap", "pool"),
+                  ("Controller", "budget_texels")}
 
 RAGGED = [[1.0], [1.0, 2.0]]
 # The crate's errors about a combination of valid values rather than one argument (a frustum
@@ -127,11 +136,32 @@ def _stubs():
         if isinstance(f, ast.FunctionDef):
             args = f.args.args + f.args.kwonlyargs
             out[f.name] = {a.arg: ast.unparse(a.annotation) for a in args}
+        if isinstance(f, ast.ClassDef):
+            # A class's __new__ under the class's name, its methods as "Class.method"; without
+            # cls and self.
+            for m in f.body:
+                if isinstance(m, ast.FunctionDef):
+                    args = m.args.args[1:] + m.args.kwonlyargs
+                    name = f.name if m.name == "__new__" else f"{f.name}.{m.name}"
+                    out[name] = {a.arg: ast.unparse(a.annotation) for a in args if a.annotation}
     return out
 
 
 STUBS = _stubs()
-FUNCTIONS = sorted(n for n in sa.__all__ if callable(getattr(sa, n)))
+METHODS = ["Controller.frame", "Controller.error_lens"]
+FUNCTIONS = sorted([n for n in sa.__all__ if callable(getattr(sa, n))] + METHODS)
+
+
+def _target(fn):
+    """The public function, or the method of a fresh controller (after one frame for its
+    ``error_lens``)."""
+    if fn == "Controller.frame":
+        return sa.Controller(**CONTROLLER).frame
+    if fn == "Controller.error_lens":
+        c = sa.Controller(**CONTROLLER)
+        c.frame(**CALLS["Controller.frame"])
+        return c.error_lens
+    return getattr(sa, fn)
 
 
 def _kind(annotation):
@@ -141,6 +171,8 @@ def _kind(annotation):
         return "out"
     if annotation == "DType":
         return "str"
+    if annotation == "Optional[Sequence[str]]":
+        return "names"
     if annotation in ("bool", "Literal[True]", "Literal[False]"):
         return "bool"
     if "BevySplits" in annotation:
@@ -155,7 +187,7 @@ def _kind(annotation):
 
 
 def _optional(fn, arg):
-    p = inspect.signature(getattr(sa, fn)).parameters[arg]
+    p = inspect.signature(_target(fn)).parameters[arg]
     return p.default is None
 
 
@@ -174,7 +206,7 @@ def _out_cases(fn):
 
 def _cases():
     for fn in FUNCTIONS:
-        for arg in inspect.signature(getattr(sa, fn)).parameters:
+        for arg in inspect.signature(_target(fn)).parameters:
             kind = _kind(STUBS[fn][arg])
             if kind == "out":
                 for label, v, cls in _out_cases(fn):
@@ -182,6 +214,8 @@ def _cases():
                 continue
             wrong = [("a str", "abc"), ("a ragged list", RAGGED)] if kind != "str" else \
                 [("a float", 1.5), ("a list", ["uniform"])]
+            if kind == "names":
+                wrong = [("a str", "abc"), ("a float", 1.5), ("a list of floats", [1.5])]
             if kind in ("bool", "dict"):
                 wrong.append(("a float", 1.5))
             if not _optional(fn, arg):
@@ -201,6 +235,8 @@ def _cases():
                                        id=f"{fn}-{arg}-{key}=abc")
             elif kind == "str":
                 bad = [("unknown", "no-such-choice", True)]
+            elif kind == "names":
+                bad = [("unknown", ["no-such-choice"], True), ("empty", [], True)]
             elif kind == "int":
                 bad = [("-1", -1, True), ("2**40", 2**40, (fn, arg) not in HUGE_INT_VALID),
                        ("2**70", 2**70, True), ("0", 0, False)]
@@ -220,9 +256,9 @@ def _cases():
 def test_tables_cover_every_function_and_the_stubs_match():
     assert sorted(CALLS) == FUNCTIONS
     for fn in FUNCTIONS:
-        params = list(inspect.signature(getattr(sa, fn)).parameters)
+        params = list(inspect.signature(_target(fn)).parameters)
         assert list(STUBS[fn]) == params, fn
-        required = [a for a, p in inspect.signature(getattr(sa, fn)).parameters.items()
+        required = [a for a, p in inspect.signature(_target(fn)).parameters.items()
                     if p.default is inspect.Parameter.empty]
         assert set(required) <= set(CALLS[fn]), fn
         for arg in CONTEXT.get(fn, {}):
@@ -242,7 +278,7 @@ def _named(message, names):
 @pytest.mark.parametrize("fn, arg, value, expected", list(_cases()))
 def test_every_argument_of_every_function(fn, arg, value, expected):
     kwargs = {**CALLS[fn], **CONTEXT.get(fn, {}).get(arg, {})}
-    f = getattr(sa, fn)
+    f = _target(fn)
     f(**kwargs)  # the call is valid before the argument is spoiled
     kwargs[arg] = value
     try:
@@ -264,12 +300,19 @@ def test_every_argument_of_every_function(fn, arg, value, expected):
     assert expected is None, f"{fn}({arg}={value!r}) returned {out!r}, expected {expected}"
     # Accepted: the value lies in the domain, and the answer holds no NaN.
     values = out[0] if fn == "faces" else out
-    if fn in ("frame", "plan", "plan_clipmap"):
+    if fn == "Controller":
+        return  # a controller, no numbers
+    if fn == "Controller.frame":
+        out = {**out, **out.pop("maps")}
+    if fn in ("frame", "plan", "plan_clipmap", "Controller.frame"):
         values = np.concatenate([np.ravel(v).astype(np.float64) for v in out.values()
                                  if isinstance(v, (np.ndarray, float))
                                  and np.asarray(v).dtype.kind in "fiu"])
         if kwargs.get("measure") is False:  # unmeasured errors are +inf, never NaN
             values = values[np.isfinite(values)]
+    if fn == "Controller.error_lens" and not (arg == "fill" and not math.isnan(value)):
+        values = values[~np.isnan(values)]  # fill (default NaN) where there is no lens
+        assert values.size or arg == "map_index", (fn, arg, value, out)
     if fn == "error_image" and not (arg == "fill" and not math.isnan(value)):
         values = values[~np.isnan(values)]  # fill (default NaN) where there is no prediction
         assert values.size or arg in ("map_index", "background"), (fn, arg, value, out)

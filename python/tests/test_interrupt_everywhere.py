@@ -65,6 +65,8 @@ CALLS = {
     # Scenes of n caster boxes.
     "frame": ("lambda n: (lambda b: lambda: sa.frame(np.eye(4), 0.5, 100.0, 0.6, [0.3, -0.8, -0.4], casters=b, receivers=b, scheme='cascades', partition='log', k=4))(boxes(n))", 1 << 12, 5 * 10**6),
     "plan": ("lambda n: (lambda b: lambda: sa.plan(np.eye(4), 0.5, 100.0, 0.6, [0.3, -0.8, -0.4], casters=b, receivers=b, image_height=1080, max_error=2.0))(boxes(n))", 64, 10**6),
+    # A controller's first frame: a cut, every candidate searched.
+    "Controller": ("lambda n: (lambda b: lambda: sa.Controller(max_error=2.0).frame(np.eye(4), 0.5, 100.0, 0.6, [0.3, -0.8, -0.4], casters=b, receivers=b, image_height=1080))(boxes(n))", 64, 10**6),
     "plan_clipmap": ("lambda n: (lambda b: lambda: sa.plan_clipmap(np.eye(4), 0.5, 100.0, 0.6, [0.3, -0.8, -0.4], casters=b, receivers=b, image_height=1080, max_error=2.0))(boxes(n))", 64, 10**6),
     # A hemisphere of n × 64 directions.
     "sweep": ("lambda n: lambda: sa.sweep(1.0, 1000.0, 0.5, 'minimax', 'faces', 16, elevations=n, azimuths=64)", 2, 2**18),
