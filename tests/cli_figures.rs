@@ -272,8 +272,10 @@ fn bare_scale_and_dpi_for_publication() {
         "bare keeps title or caption"
     );
     assert!(svg.contains("M<tspan"), "bare lost the axis labels");
-    // Twice the pixels (the figure is 520 × 900 units, drawn at plot::PNG_ZOOM = 2 pixels per
-    // unit: 1040 × 1800), and 300 dpi = 11 811 pixels per metre.
+    // The figure is 520 × 900 units, drawn at plot::PNG_ZOOM = 2 pixels per unit: 1040 × 1800.
+    // Bare, it is cropped to the rows between its title and caption (tests/figures_bare.rs): a
+    // view box of the full width and fewer rows, which the PNG draws at twice the pixels per unit
+    // (scale 2), and 300 dpi = 11 811 pixels per metre.
     let size = |b: &[u8]| {
         (
             u32::from_be_bytes(b[16..20].try_into().unwrap()),
@@ -281,9 +283,21 @@ fn bare_scale_and_dpi_for_publication() {
         )
     };
     assert_eq!(size(&plain_png), (1040, 1800));
-    assert_eq!(size(&png), (2080, 3600));
+    assert!(plain_svg.contains("viewBox=\"0 0 520 900\""));
+    let head = &svg[..svg.find('>').unwrap()];
+    let vb_at = head.find("viewBox=\"").unwrap() + "viewBox=\"".len();
+    let vb: Vec<u32> = head[vb_at..vb_at + head[vb_at..].find('"').unwrap()]
+        .split(' ')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let rows = vb[3];
+    assert!(
+        vb[0] == 0 && vb[1] > 0 && vb[2] == 520 && rows < 900,
+        "{vb:?}"
+    );
+    assert!(head.starts_with(&format!("<svg width=\"1040\" height=\"{}\"", 2 * rows)));
+    assert_eq!(size(&png), (2080, 4 * rows));
     assert_eq!(phys(&png), Some((11_811, 11_811, 1)));
-    assert!(svg.contains("<svg width=\"1040\" height=\"1800\" viewBox=\"0 0 520 900\""));
     check_png(&dir.join("lloyd2006-fig6.png"));
 
     for (flag, value) in [("--scale", "0"), ("--scale", "9"), ("--dpi", "0")] {

@@ -391,8 +391,14 @@ impl Fig8 {
                 text = text.transform(FontTransform::Rotate270);
             }
             let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
-            // Lines 16 pixels apart, in texels.
-            let step = 16.0 * n / f64::from(chart.plotting_area().dim_in_pixel().1);
+            // Lines 16 units apart, in texels of the axis drawn across them (the axes' ranges,
+            // widened for the equal aspect, not the texture's size).
+            let (pw, ph) = chart.plotting_area().dim_in_pixel();
+            let step = if narrow {
+                16.0 * (xa.max - xa.min) / f64::from(pw)
+            } else {
+                16.0 * (ya.max - ya.min) / f64::from(ph)
+            };
             for (j, line) in lines.iter().enumerate() {
                 let off = (0.5 * (lines.len() - 1) as f64 - j as f64) * step;
                 let at = if narrow {
@@ -551,6 +557,45 @@ mod tests {
             let via = apply(&h, DVec2::new(-x.dot(corner), z.dot(corner)));
             assert!((via - direct).length() < 1e-9, "{via} vs {direct}");
             assert!(direct.abs().max_element() <= 1.0 + 1e-9);
+        }
+    }
+
+    /// The text in each rectangle of (c) keeps its lines 16 units apart whatever the panel's
+    /// shape: on a tall panel the equal aspect widens the t axis and on a wide one the s axis
+    /// beyond the texture (a spacing computed from the texture's size instead of the axis drawn
+    /// printed the lines over each other there).
+    #[test]
+    fn texture_text_lines_are_16_units_apart_on_any_panel() {
+        use crate::plot::chart::read_svg::{attr, draw_svg, texts};
+        let fig = fig8().map_err(|e| e.named("lloyd2005-fig8")).unwrap();
+        for size in [(500, 1200), (1200, 420), (520, 560)] {
+            let svg = draw_svg(size, |area| fig.draw_texture(area).unwrap());
+            let lines = texts(&svg);
+            let rotated = |l: &str| l.contains("transform=\"rotate");
+            // Each rectangle's lines: the one naming it ("R1: right, …") and those that follow.
+            let mut checked = 0;
+            for (i, (line, text, y)) in lines.iter().enumerate() {
+                if !text.contains(": ") || !text.contains(", z ") && !text.contains("near") {
+                    continue;
+                }
+                let n = if rotated(line) { 2 } else { 4 };
+                for (a, b) in lines[i..i + n].iter().zip(&lines[i + 1..i + n]) {
+                    let gap = if rotated(line) {
+                        attr(b.0, "x").unwrap() - attr(a.0, "x").unwrap()
+                    } else {
+                        b.2 - a.2
+                    };
+                    assert!(
+                        (gap - 16.0).abs() <= 1.0,
+                        "{size:?}: {:?} and {:?} are {gap} apart (at y = {y})",
+                        a.1,
+                        b.1
+                    );
+                    checked += 1;
+                }
+            }
+            // Six rectangles of four lines (L, R, T, 1 and 2) and the near face's two.
+            assert_eq!(checked, 6 * 3 + 1, "{size:?}");
         }
     }
 }

@@ -292,7 +292,15 @@ fn emit<F: Figure>(
                     fig.draw(&root).map_err(|e| e.named(name))?;
                     root.present().map_err(|e| Fail::from(e).named(name))?;
                 }
-                let rgb = canvas::downsample(&big, pw, ph, SUPERSAMPLE);
+                let mut rgb = canvas::downsample(&big, pw, ph, SUPERSAMPLE);
+                // A bare page keeps only the rows of its body.
+                let mut ph = ph;
+                if let Some((top, bottom)) = chart::bare_rows() {
+                    let (top, bottom) = (top.min(bottom) * zoom, bottom.min(h) * zoom);
+                    let row = pw as usize * 3;
+                    rgb = rgb[top as usize * row..bottom as usize * row].to_vec();
+                    ph = bottom - top;
+                }
                 let mut png = Vec::new();
                 image::codecs::png::PngEncoder::new(&mut png)
                     .write_image(&rgb, pw, ph, image::ExtendedColorType::Rgb8)

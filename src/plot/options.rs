@@ -8,7 +8,9 @@ use crate::error::fmt_num;
 /// Options of the written files; [`Options::default`] is what [`super::render`] uses.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Options {
-    /// No title and no caption in the figure (for a document that sets its own caption).
+    /// No title and no caption in the figure (for a document that sets its own caption): the
+    /// figure is laid out as the captioned one and cut to the plot area between its title and
+    /// caption (the PNG's rows, the SVG's view box and so the PDF's page).
     pub bare: bool,
     /// The PNG's pixel size is `scale` × [`super::PNG_ZOOM`] times the figure's (lines and text
     /// scale with it); the SVG's `width` and `height` are `scale` times its view box. 1 to

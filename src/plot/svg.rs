@@ -262,11 +262,17 @@ impl DrawingBackend for Svg<'_> {
 
     fn present(&mut self) -> Res {
         let (w, h) = self.size;
-        let (zw, zh) = (w * self.zoom, h * self.zoom);
+        // A bare page keeps only the rows of its body (`chart::bare_rows`): the view box starts
+        // there and the document is as tall as they are.
+        let (top, bottom) = super::chart::bare_rows().unwrap_or((0, h));
+        let bottom = bottom.min(h);
+        let top = top.min(bottom);
+        let rows = bottom - top;
+        let (zw, zh) = (w * self.zoom, rows * self.zoom);
         self.out.clear();
         let _ = write!(
             self.out,
-            "<svg width=\"{zw}\" height=\"{zh}\" viewBox=\"0 0 {w} {h}\" \
+            "<svg width=\"{zw}\" height=\"{zh}\" viewBox=\"0 {top} {w} {rows}\" \
              xmlns=\"http://www.w3.org/2000/svg\">\n{}</svg>\n",
             self.body
         );

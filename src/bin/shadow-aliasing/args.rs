@@ -134,7 +134,8 @@ pub struct FiguresArgs {
         value_parser = clap::builder::PossibleValuesParser::new(shadow_aliasing::plot::FIGURES)
     )]
     pub only: Vec<String>,
-    /// No title and no caption in the figures (for a document that sets its own caption).
+    /// No title and no caption in the figures (for a document that sets its own caption): each is
+    /// laid out as captioned and cut to the plot area between them.
     #[arg(long)]
     pub bare: bool,
     /// Multiply the PNG's pixel size (and the SVG's width and height) by this whole number, 1 to 8.

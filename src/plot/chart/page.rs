@@ -12,29 +12,44 @@ use std::cell::Cell;
 thread_local! {
     /// Whether the figure being drawn on this thread is bare (see [`with_bare`]).
     static BARE: Cell<bool> = const { Cell::new(false) };
+    /// The rows a bare page keeps (see [`bare_rows`]), set by [`frame`].
+    static ROWS: Cell<Option<(u32, u32)>> = const { Cell::new(None) };
 }
+
+/// The space a bare page keeps above the captioned page's body, in units (below it, the body's
+/// own bottom margin is left: the caption starts 4 units under it).
+const BARE_PAD: u32 = 6;
 
 /// Runs `draw` with every page it draws bare (no title, no caption) or not: the page option of
 /// `Options::bare`, set for the one figure being drawn on this thread and restored afterwards.
 pub(crate) fn with_bare<R>(bare: bool, draw: impl FnOnce() -> R) -> R {
     let before = BARE.with(|b| b.replace(bare));
-    let r = draw();
+    let rows = ROWS.with(|r| r.replace(None));
+    let out = draw();
     BARE.with(|b| b.set(before));
-    r
+    ROWS.with(|r| r.set(rows));
+    out
+}
+
+/// The rows `[top, bottom)` of the page, in units, that the figure drawn last on this thread in
+/// [`with_bare`] keeps: for a bare page, the captioned page's body (the area between its title
+/// and its caption) with [`BARE_PAD`] units above it; `None` for a captioned page (all of it is
+/// kept).
+pub(crate) fn bare_rows() -> Option<(u32, u32)> {
+    ROWS.with(Cell::get)
 }
 
 /// Fills the page white, writes the title at the top and the caption (its lines joined into one
-/// paragraph, wrapped to the page width) at the bottom, and returns the area left between them;
-/// a bare page (see [`with_bare`]) has neither and keeps a small margin.
+/// paragraph, wrapped to the page width) at the bottom, and returns the area left between them.
+/// A bare page (see [`with_bare`]) is laid out the same, with the same area returned, but the
+/// title and caption are not drawn, and the rows it keeps ([`bare_rows`]) are that area's.
 pub(crate) fn frame<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     title: &str,
     caption: &[&str],
 ) -> Result<DrawingArea<DB, Shift>, Fail> {
     root.fill(&WHITE)?;
-    if BARE.with(Cell::get) {
-        return Ok(root.margin(10, 10, 6, 6));
-    }
+    let bare = BARE.with(Cell::get);
     let (w, h) = root.dim_in_pixel();
     let width = f64::from(w) - 28.0;
     // The title, wrapped to the page like the caption.
@@ -45,13 +60,6 @@ pub(crate) fn frame<DB: DrawingBackend>(
             .map(|(tw, _)| f64::from(tw))
             .unwrap_or(f64::INFINITY)
     });
-    for (k, line) in title_lines.iter().enumerate() {
-        root.draw(&Text::new(
-            line.clone(),
-            (w as i32 / 2, 8 + 24 * k as i32),
-            title_style.clone(),
-        ))?;
-    }
     let top = 20 + 24 * title_lines.len() as u32;
     let line_h = 18;
     let style = TextStyle::from((FONT, 14).into_font());
@@ -62,6 +70,22 @@ pub(crate) fn frame<DB: DrawingBackend>(
             .unwrap_or(f64::INFINITY)
     });
     let bottom = lines.len() as i32 * line_h + 10;
+    let body = root.margin(top, bottom as u32, 6, 6);
+    if bare {
+        let rows = (
+            top.saturating_sub(BARE_PAD),
+            h.saturating_sub(bottom as u32),
+        );
+        ROWS.with(|r| r.set(Some(rows)));
+        return Ok(body);
+    }
+    for (k, line) in title_lines.iter().enumerate() {
+        root.draw(&Text::new(
+            line.clone(),
+            (w as i32 / 2, 8 + 24 * k as i32),
+            title_style.clone(),
+        ))?;
+    }
     for (k, line) in lines.iter().enumerate() {
         root.draw(&Text::new(
             line.clone(),
@@ -71,7 +95,7 @@ pub(crate) fn frame<DB: DrawingBackend>(
                 .pos(Pos::new(HPos::Left, VPos::Top)),
         ))?;
     }
-    Ok(root.margin(top, bottom as u32, 6, 6))
+    Ok(body)
 }
 
 /// Breaks `text` at spaces into lines no wider than `width` (as measured by `measure`); a single

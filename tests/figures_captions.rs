@@ -1,0 +1,275 @@
+//! Every number a figure's caption prints, recomputed here from the papers' equations.
+//!
+//! Each figure's SVG is rendered, its caption (the grey paragraph at the bottom) read back with
+//! its superscripts and subscripts, and every number in it listed in order. For each figure this
+//! file holds the same list: a number the caption takes as given (a year, a figure, equation or
+//! section number, a parameter of the configuration drawn) with the reason, or a value the caption
+//! states, computed here from the paper's equation (written out in this file, not the crate's
+//! function) and compared to the printed digits. A number added to a caption without its
+//! derivation here, a number typed wrong, or a formula whose value is not the printed one, fails.
+#![cfg(feature = "plot")]
+
+use shadow_aliasing::plot::{render, Format};
+use std::path::{Path, PathBuf};
+
+/// A fresh directory per test and per process.
+fn out_dir(sub: &str) -> PathBuf {
+    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("{sub}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+/// The caption of `name`'s SVG as one line of text: its lines joined by spaces, a superscript
+/// written `^{…}`, a subscript `_{…}`, XML entities decoded.
+fn caption(name: &str) -> String {
+    let dir = out_dir(&format!("captions-{name}"));
+    render(name, &dir, Format::Svg).unwrap();
+    let svg = std::fs::read_to_string(dir.join(format!("{name}.svg"))).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    let mut lines = Vec::new();
+    let mut rest = svg.as_str();
+    while let Some(i) = rest.find("<text ") {
+        let open_end = i + rest[i..].find('>').unwrap();
+        let close = open_end + rest[open_end..].find("</text>").unwrap();
+        if rest[i..open_end].contains("fill=\"#323232\"") {
+            lines.push(read_text(&rest[open_end + 1..close]));
+        }
+        rest = &rest[close..];
+    }
+    assert!(!lines.is_empty(), "{name}: no caption found");
+    lines.join(" ")
+}
+
+/// The content of one `<text>`: `<tspan dy="-…" font-size=…>` is a superscript, a positive `dy`
+/// with a font size a subscript; the `<tspan dy=…>` without a size that follows returns to the
+/// baseline.
+fn read_text(inner: &str) -> String {
+    let mut out = String::new();
+    let mut rest = inner;
+    while let Some(i) = rest.find("<tspan") {
+        out.push_str(&rest[..i]);
+        let tag_end = i + rest[i..].find('>').unwrap();
+        let tag = &rest[i..tag_end];
+        let close = tag_end + rest[tag_end..].find("</tspan>").unwrap();
+        let body = &rest[tag_end + 1..close];
+        if tag.contains("font-size") {
+            let up = tag.contains("dy=\"-");
+            out.push_str(if up { "^{" } else { "_{" });
+            out.push_str(body);
+            out.push('}');
+        } else {
+            out.push_str(body);
+        }
+        rest = &rest[close + "</tspan>".len()..];
+    }
+    out.push_str(rest);
+    out.replace("&apos;", "'")
+        .replace("&quot;", "\"")
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&")
+}
+
+/// The numbers of `text` in order, as printed: an optional minus sign (U+2212 or `-`) directly
+/// before the digits, a decimal part, and a power of ten `×10^{e}` (or a bare `10^{e}`) joined to
+/// its mantissa.
+fn numbers(text: &str) -> Vec<String> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        if !chars[i].is_ascii_digit() {
+            i += 1;
+            continue;
+        }
+        let mut start = i;
+        if i > 0 && (chars[i - 1] == '\u{2212}' || chars[i - 1] == '-') {
+            // A sign only when the minus is not a binary operator between two operands.
+            let before = if i > 1 { chars[i - 2] } else { ' ' };
+            if before == ' ' || before == '(' || before == '{' {
+                start = i - 1;
+            }
+        }
+        while i < chars.len() && chars[i].is_ascii_digit() {
+            i += 1;
+        }
+        if i + 1 < chars.len() && chars[i] == '.' && chars[i + 1].is_ascii_digit() {
+            i += 1;
+            while i < chars.len() && chars[i].is_ascii_digit() {
+                i += 1;
+            }
+        }
+        // ×10^{e} after a mantissa, or ^{e} after a bare 10.
+        let tail: String = chars[i..chars.len().min(i + 12)].iter().collect();
+        let mantissa: String = chars[start..i].iter().collect();
+        let power = if let Some(t) = tail.strip_prefix("×10^{") {
+            Some(("×10^{".chars().count(), t))
+        } else if mantissa == "10" {
+            tail.strip_prefix("^{").map(|t| (2, t))
+        } else {
+            None
+        };
+        if let Some((skip, t)) = power {
+            let digits: String = t
+                .chars()
+                .take_while(|c| c.is_ascii_digit() || *c == '\u{2212}')
+                .collect();
+            if !digits.is_empty() && t[digits.len()..].starts_with('}') {
+                i += skip + digits.chars().count() + 1;
+            }
+        }
+        out.push(chars[start..i].iter().collect());
+    }
+    out
+}
+
+/// The value of a printed number (`numbers`' format).
+fn value(printed: &str) -> f64 {
+    let s = printed.replace('\u{2212}', "-");
+    if let Some((m, e)) = s.split_once("×10^{") {
+        return m.parse::<f64>().unwrap() * 10f64.powf(e.trim_end_matches('}').parse().unwrap());
+    }
+    if let Some(e) = s.strip_prefix("10^{") {
+        return 10f64.powf(e.trim_end_matches('}').parse().unwrap());
+    }
+    s.parse().unwrap()
+}
+
+/// Half a unit in the last printed place of `printed`: the most a correctly rounded number is
+/// off its value.
+fn half_ulp(printed: &str) -> f64 {
+    let s = printed.replace('\u{2212}', "-");
+    let (m, scale) = match s.split_once("×10^{") {
+        Some((m, e)) => (
+            m.to_string(),
+            10f64.powf(e.trim_end_matches('}').parse().unwrap()),
+        ),
+        None => (s.clone(), 1.0),
+    };
+    let decimals = m.split_once('.').map_or(0, |(_, d)| d.len());
+    0.5 * 10f64.powi(-(decimals as i32)) * scale
+}
+
+/// What a caption's number is.
+enum N {
+    /// Taken as given: a reference (year, figure, equation, section) or a parameter of the
+    /// configuration drawn; the text is the reason.
+    Given(&'static str),
+    /// A value the caption states, computed in this file.
+    Value(f64),
+    /// A value the caption prints as `formula = value`: the formula as printed, and its value
+    /// computed in this file from the paper's equation (not from the formula's text).
+    Formula(&'static str, f64),
+}
+
+/// Checks `name`'s caption against `want`: the same numbers in the same order, each `Given` one
+/// printed as listed and each `Value` printed correctly rounded.
+fn check(name: &str, want: &[(&str, N)]) {
+    let text = caption(name);
+    let got = numbers(&text);
+    let listed: Vec<&str> = want.iter().map(|(p, _)| *p).collect();
+    let why: Vec<String> = want
+        .iter()
+        .map(|(p, n)| match n {
+            N::Given(reason) => format!("{p}: {reason}"),
+            N::Value(v) => format!("{p}: computed {v}"),
+            N::Formula(f, v) => format!("{p}: {f} = {v}"),
+        })
+        .collect();
+    assert_eq!(
+        got, listed,
+        "{name}: the caption's numbers differ from this file's list\ncaption: {text}\n\
+         listed: {why:#?}"
+    );
+    for (printed, n) in want {
+        let v = match n {
+            N::Given(_) => continue,
+            N::Value(v) => v,
+            N::Formula(formula, v) => {
+                assert!(
+                    text.contains(&format!("{formula} = {printed}")),
+                    "{name}: the caption does not print {formula} = {printed}\ncaption: {text}"
+                );
+                v
+            }
+        };
+        {
+            let p = value(printed);
+            assert!(
+                (p - v).abs() <= half_ulp(printed) * (1.0 + 1e-9),
+                "{name}: the caption prints {printed}, the equation gives {v}\ncaption: {text}"
+            );
+        }
+    }
+}
+
+/// The reader itself: superscripts join their mantissa, minus signs and operators are told
+/// apart, and a number is compared to its printed precision.
+#[test]
+fn numbers_are_read_as_printed() {
+    assert_eq!(
+        numbers("S = 8.65×10^{5} to 2×10^{6}; 10^{4}, α^{1/k} − 1, (−0.5) and 1.5×"),
+        vec!["8.65×10^{5}", "2×10^{6}", "10^{4}", "1", "1", "−0.5", "1.5"]
+    );
+    assert_eq!(value("8.65×10^{5}"), 865_000.0);
+    assert_eq!(value("10^{4}"), 10_000.0);
+    assert_eq!(half_ulp("2.15"), 0.005);
+    assert_eq!(half_ulp("8.65×10^{5}"), 500.0);
+    assert_eq!(
+        read_text("a<tspan dy=\"-4\" font-size=\"8\">i/k</tspan><tspan dy=\"4\">, z</tspan><tspan dy=\"2\" font-size=\"8\">i</tspan><tspan dy=\"-2\"> &amp;</tspan>"),
+        "a^{i/k}, z_{i} &"
+    );
+}
+
+/// Lloyd 2005 Eq 7 normalised at k = 1: m_max(k)/m_max(1) with a = α^{1/k},
+/// k (a − 1)(1 + |ξ|(√a − 1))/√a over the same at k = 1 (θ and the resolutions cancel).
+fn lloyd2005_eq7_ratio(alpha: f64, k: f64, xi: f64) -> f64 {
+    let m = |k: f64| {
+        let a = alpha.powf(1.0 / k);
+        k * (a - 1.0) * (1.0 + xi.abs() * (a.sqrt() - 1.0)) / a.sqrt()
+    };
+    m(k) / m(1.0)
+}
+
+/// lloyd2005-fig7: the gains at α = 100 from Eq 7, and the ξ = 0 bound as k → ∞: the caption's
+/// formula (α − 1)/(√α ln α), which must be the limit of Eq 7's gain (here at k = 10⁸; the
+/// inverse, √α ln α/(α − 1), is 0.465).
+#[test]
+fn lloyd2005_fig7() {
+    let alpha = 100.0;
+    let gain = |k: f64, xi: f64| 1.0 / lloyd2005_eq7_ratio(alpha, k, xi);
+    let limit = gain(1e8, 0.0);
+    assert!(
+        (limit - (alpha - 1.0) / (alpha.sqrt() * alpha.ln())).abs() < 1e-5,
+        "{limit}"
+    );
+    check(
+        "lloyd2005-fig7",
+        &[
+            ("2005", N::Given("the report's year")),
+            ("7", N::Given("its figure")),
+            ("7", N::Given("its equation")),
+            ("1", N::Given("normalised at k = 1")),
+            ("10", N::Given("the smallest α drawn")),
+            ("10^{4}", N::Given("the largest α drawn")),
+            ("0", N::Given("ξ = 0")),
+            ("1", N::Given("|ξ| = 1")),
+            ("2", N::Given("the paper's \"2 or 3 subdivisions\"")),
+            ("3", N::Given("the paper's \"2 or 3 subdivisions\"")),
+            (
+                "5",
+                N::Given("the report's \"nearly 5 times\" (its Fig. 9)"),
+            ),
+            ("100", N::Given("the α of the report's Fig. 9")),
+            ("9", N::Given("the report's Fig. 9")),
+            ("1", N::Given("|ξ| = 1")),
+            ("5.5", N::Value(gain(2.0, 1.0))),
+            ("2", N::Given("k = 2")),
+            ("0", N::Given("ξ = 0")),
+            ("1.74", N::Value(gain(2.0, 0.0))),
+            ("2", N::Given("k = 2")),
+            ("1", N::Given("the 1 of the formula α − 1")),
+            ("2.15", N::Formula("(α − 1)/(√α ln α)", limit)),
+        ],
+    );
+}
