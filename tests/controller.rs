@@ -344,6 +344,63 @@ fn a_still_camera_keeps_stable_maps_unchanged() {
     assert!(d.frame.maps().iter().all(|m| m.unchanged()));
 }
 
+/// Each map's `unchanged` says whether the map in its slot is bit for bit the last decision's
+/// (matrix and resolution), also in frames where the controller builds more than one set-up
+/// before it chooses (the kept one missing the target at the cap: stable logarithmic cascades
+/// of 3 at 2 px on the walk's first frames), each pose shown twice.
+#[test]
+fn unchanged_compares_with_the_last_decision() {
+    use shadow_aliasing::maps::ClipDepth;
+    let boxes = scene();
+    let stable = FrameScheme::Stable(CascadeSplits::Scheme {
+        scheme: SplitScheme::SelfSimilar,
+        k: 3,
+        overlap: 0.0,
+    });
+    let mut c = Controller::new(ControllerOptions {
+        candidates: Some(vec![stable]),
+        ..options(30, 0.9)
+    })
+    .unwrap();
+    let mut last: Option<(u32, Vec<Option<DMat4>>)> = None;
+    let (mut moved, mut kept, mut missed) = (0, 0, 0);
+    // Each pose twice: the second a still camera, whose maps are unchanged.
+    for i in 0..120 {
+        let d = c.frame(&input(camera(i / 2), &boxes)).unwrap();
+        missed += usize::from(!d.meets_target);
+        let now: Vec<Option<DMat4>> = d
+            .frame
+            .slots()
+            .iter()
+            .map(|m| m.map(|m| m.world_to_clip(ClipDepth::ZeroToOne)))
+            .collect();
+        for (k, m) in d.frame.slots().iter().enumerate() {
+            let Some(m) = m else { continue };
+            let before = last
+                .as_ref()
+                .filter(|(r, _)| *r == d.resolution)
+                .and_then(|(_, p)| p.get(k).copied().flatten());
+            let same = before.is_some_and(|b| {
+                b.to_cols_array()
+                    .iter()
+                    .zip(now[k].unwrap().to_cols_array())
+                    .all(|(x, y)| x.to_bits() == y.to_bits())
+            });
+            assert_eq!(m.unchanged(), same, "frame {i} slot {k}");
+            if same {
+                kept += 1;
+            } else {
+                moved += 1;
+            }
+        }
+        last = Some((d.resolution, now));
+    }
+    assert!(
+        moved > 0 && kept > 0 && missed > 0,
+        "{moved} moved, {kept} kept, {missed} missed"
+    );
+}
+
 fn refused(o: ControllerOptions, name: &str) {
     match Controller::new(o) {
         Err(Error::InvalidArgument { name: n, reason }) => {

@@ -225,15 +225,9 @@ def test_a_still_camera_keeps_stable_maps_unchanged():
         assert len(d["unchanged"]) == len(d["maps"]["slot"]) >= 2
 
 
-MISSED_BUG = ("plan::Controller builds a kept set-up that misses the target twice in one frame "
-              "(at the cap, its last search having found nothing that meets it), and "
-              "FrameMap::unchanged then compares the second build with the first, not with the "
-              "last frame's maps: moved maps are reported unchanged")
-
-
 @pytest.mark.parametrize("target", [
     8.0,
-    pytest.param(TARGET, marks=pytest.mark.xfail(strict=True, reason=MISSED_BUG)),
+    TARGET,
 ], ids=["met", "missed"])
 def test_a_moving_camera_reports_the_maps_that_moved(target):
     c = controller(max_error=target, candidates=["stable log k=3"])

@@ -311,6 +311,33 @@ impl std::ops::Index<usize> for FrameMaps<'_> {
 }
 
 impl Frame {
+    /// Each slot's world → clip matrix (`None` where it holds no map) and the map resolution:
+    /// what [`Frame::mark_unchanged`] compares a later frame with.
+    pub(crate) fn fingerprint(&self, out: &mut Vec<Option<DMat4>>) -> u32 {
+        out.clear();
+        out.extend(
+            self.maps[..self.k]
+                .iter()
+                .map(|m| m.map(|m| m.world_to_clip)),
+        );
+        self.resolution
+    }
+
+    /// Sets every map's [`FrameMap::unchanged`] against `prev` at resolution `prev_res` (a
+    /// [`Frame::fingerprint`]) instead of the frame built before into the same `Frame`: for
+    /// callers that build several frames into one `Frame` before choosing (the controller).
+    pub(crate) fn mark_unchanged(&mut self, prev: &[Option<DMat4>], prev_res: u32) {
+        let same_res = prev_res == self.resolution;
+        for (slot, p) in self.maps[..self.k]
+            .iter_mut()
+            .zip(prev.iter().chain(std::iter::repeat(&None)))
+        {
+            if let Some(m) = slot {
+                m.unchanged = same_res && p.is_some_and(|p| same_bits(&p, &m.world_to_clip));
+            }
+        }
+    }
+
     /// Starts a frame of maps of `resolution` texels: the slots held so far are the previous
     /// frame's, to compare the new maps with.
     pub(super) fn begin(&mut self, resolution: u32) {

@@ -60,6 +60,9 @@ pub struct Decision<'c> {
     /// Every map's resolution, texels a side.
     pub resolution: u32,
     /// Its maps, built at `resolution` (their matrices for the GPU, their measured error).
+    /// Each map's [`FrameMap::unchanged`](crate::frame::FrameMap::unchanged) compares it with
+    /// the map in the same slot of the last decision (the controller may build several set-ups
+    /// in one frame before it chooses).
     pub frame: &'c Frame,
     /// The largest [`FrameMap::max_error_pixels`](crate::frame::FrameMap::max_error_pixels)
     /// over the maps: the frame's own measurement, pixels.
@@ -107,6 +110,11 @@ pub struct Controller {
     ranked: Vec<FrameScheme<'static>>,
     /// The kept scheme's neighbours and, for each, its checks in a row that found it cheaper.
     near: Vec<(FrameScheme<'static>, u32)>,
+    /// The last decision's maps (world → clip by slot) and resolution, for
+    /// [`FrameMap::unchanged`](crate::frame::FrameMap::unchanged): a frame may build several
+    /// set-ups into `frame` before it chooses.
+    shown: Vec<Option<glam::DMat4>>,
+    shown_res: u32,
     /// The neighbour checked next, and the frames since the last check.
     turn: usize,
     since: u32,
@@ -138,6 +146,8 @@ impl Controller {
             allowed: Vec::new(),
             ranked: Vec::new(),
             near: Vec::new(),
+            shown: Vec::new(),
+            shown_res: 0,
             turn: 0,
             since: 0,
         })
@@ -203,6 +213,8 @@ impl Controller {
             self.since = 0;
         }
         self.setup = Some(setup);
+        self.frame.mark_unchanged(&self.shown, self.shown_res);
+        self.shown_res = self.frame.fingerprint(&mut self.shown);
         let texels = self.frame.maps().len() as u64 * u64::from(setup.resolution).pow(2);
         let o = &self.options;
         Ok(Decision {
