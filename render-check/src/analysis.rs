@@ -433,6 +433,9 @@ pub fn analyse(
     let mut max_lens = 0.0f64;
     // Per map: the largest GPU lens with the projection factor 1.
     let mut lens_m = vec![0.0f64; nmaps];
+    // Per map: the largest GPU lens (projection factor included; printed with
+    // RENDER_CHECK_DEBUG).
+    let mut lens_full_m = vec![0.0f64; nmaps];
     let debug = std::env::var_os("RENDER_CHECK_DEBUG").is_some();
     for (i, q) in px.iter().enumerate() {
         if q.class == Class::Sky {
@@ -513,6 +516,9 @@ pub fn analyse(
         if off_edge {
             if let Some(v) = crate::lens::gpu_lens(out, i) {
                 max_lens = max_lens.max(v);
+                if let Some(m) = lens_full_m.get_mut(q.part) {
+                    *m = m.max(v);
+                }
             }
             if let Some(reference) = jr.and_then(crate::lens::pixels_per_texel) {
                 lens_rels.push(crate::lens::rel_diff(out, i, reference));
@@ -576,6 +582,14 @@ pub fn analyse(
     lens_rels.sort_by(f64::total_cmp);
     let (ratio, worst) = frame_ratios(&px, view, built, &rendered_m, (width, height, res));
     let (lens_ratio, lens_worst) = lens_ratios(&px, view, built, &lens_m, (width, height));
+    if debug {
+        for (k, map) in built.maps.iter().enumerate() {
+            eprintln!(
+                "  map {k}: largest lens {:.6} px, with the projection factor 1 {:.6} px, reported max_error_pixels {:.6}",
+                lens_full_m[k], lens_m[k], map.reported.max_error_pixels
+            );
+        }
+    }
     if let Some(l) = &lloyd {
         lloyd_diff = lloyd_diff.max(l.maxima_diff(&ground_m, width, height, res));
     }
