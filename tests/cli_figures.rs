@@ -253,8 +253,9 @@ fn bare_scale_and_dpi_for_publication() {
     ];
     let caption = "Lloyd et al. 2006, Fig. 6";
     assert!(title.iter().all(|t| plain_svg.contains(t)) && plain_svg.contains(caption));
-    // 96 dpi by default: 96 / 0.0254 = 3779.5 → 3780 pixels per metre.
-    assert_eq!(phys(&plain_png), Some((3780, 3780, 1)));
+    // 144 dpi by default (the PNG's 2 pixels per unit over the SVG's 1 unit per point × 72
+    // points per inch): 144 / 0.0254 = 5669.29 → 5669 pixels per metre.
+    assert_eq!(phys(&plain_png), Some((5669, 5669, 1)));
     // Tick labels of the η axis (−1 to 1) use the minus sign U+2212, never the hyphen-minus.
     assert!(plain_svg.contains(">−1</text>"), "no −1 tick");
     assert!(plain_svg.contains(">−0.5</text>"), "no −0.5 tick");
@@ -295,7 +296,7 @@ fn bare_scale_and_dpi_for_publication() {
         vb[0] == 0 && vb[1] > 0 && vb[2] == 520 && rows < 900,
         "{vb:?}"
     );
-    assert!(head.starts_with(&format!("<svg width=\"1040\" height=\"{}\"", 2 * rows)));
+    assert!(head.starts_with(&format!("<svg width=\"1040pt\" height=\"{}pt\"", 2 * rows)));
     assert_eq!(size(&png), (2080, 4 * rows));
     assert_eq!(phys(&png), Some((11_811, 11_811, 1)));
     check_png(&dir.join("lloyd2006-fig6.png"));

@@ -55,10 +55,17 @@ fn view_box(svg: &str) -> ([f64; 4], f64, f64) {
         .split_whitespace()
         .map(|v| v.parse().unwrap())
         .collect();
+    let points = |name: &str| -> f64 {
+        let v = attr_str(head, name).unwrap();
+        v.strip_suffix("pt")
+            .expect("a length in points")
+            .parse()
+            .unwrap()
+    };
     (
         [vb[0], vb[1], vb[2], vb[3]],
-        attr(head, "width").unwrap(),
-        attr(head, "height").unwrap(),
+        points("width"),
+        points("height"),
     )
 }
 

@@ -20,10 +20,12 @@ fn svg(name: &str) -> String {
     text
 }
 
+/// The number of the attribute `name` (a length's unit `pt` dropped).
 fn attr(text: &str, name: &str) -> f64 {
     let key = format!(" {name}=\"");
     let at = text.find(&key).unwrap() + key.len();
     text[at..at + text[at..].find('"').unwrap()]
+        .trim_end_matches("pt")
         .parse()
         .unwrap()
 }

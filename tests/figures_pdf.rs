@@ -50,11 +50,15 @@ fn pdf_has_the_svgs_page_an_embedded_font_and_the_heat_map() {
     assert!(bytes.starts_with(b"%PDF-"), "not a PDF");
     let text = String::from_utf8_lossy(&bytes);
     assert!(text.trim_end().ends_with("%%EOF"));
-    // One page, of the SVG's width and height (one SVG unit = one point).
+    // One page, of the SVG's width and height (in points).
     let attr = |a: &str| -> f64 {
         let key = format!(" {a}=\"");
         let at = svg.find(&key).unwrap() + key.len();
-        svg[at..at + svg[at..].find('"').unwrap()].parse().unwrap()
+        let v = &svg[at..at + svg[at..].find('"').unwrap()];
+        v.strip_suffix("pt")
+            .expect("a length in points")
+            .parse()
+            .unwrap()
     };
     let [x0, y0, x1, y1] = media_box(&text);
     assert_eq!((x0, y0), (0.0, 0.0));

@@ -56,7 +56,7 @@ mod worst;
 mod zhang;
 
 use image::ImageEncoder;
-pub use options::{scale, Options, MAX_SCALE};
+pub use options::{scale, Options, DEFAULT_DPI, MAX_SCALE};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::fmt;

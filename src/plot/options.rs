@@ -1,6 +1,7 @@
 //! How a figure is written for publication: without its title and caption (`bare`), at an
 //! integer multiple of its pixel size (`scale`), and with the PNG's physical size recorded
-//! (`dpi`, as a PNG `pHYs` chunk).
+//! (`dpi`, as a PNG `pHYs` chunk; by default the size the SVG and the PDF give, one unit of the
+//! figure a point).
 
 use super::PlotError;
 use crate::error::fmt_num;
@@ -17,9 +18,16 @@ pub struct Options {
     /// [`MAX_SCALE`].
     pub scale: u32,
     /// Pixels per inch recorded in the PNG (`pHYs`), so that the printed size is the pixel size
-    /// divided by `dpi`. Finite, 1 to 10 000.
+    /// divided by `dpi`. Finite, 1 to 10 000. The default, [`DEFAULT_DPI`], prints the PNG at
+    /// the size of the SVG and the PDF at any `scale`.
     pub dpi: f64,
 }
+
+/// The default [`Options::dpi`]: 72 × [`super::PNG_ZOOM`] = 144 pixels per inch. A figure's unit
+/// is a point (1/72 inch) in the SVG (`width` and `height` in `pt`) and the PDF (its page), and
+/// its PNG has `PNG_ZOOM` × `scale` pixels per unit, so at this density all three have the same
+/// printed size: a 520-unit figure is 7.22 inches wide (times `scale`).
+pub const DEFAULT_DPI: f64 = 72.0 * super::PNG_ZOOM as f64;
 
 /// The largest [`Options::scale`].
 pub const MAX_SCALE: u32 = 8;
@@ -29,7 +37,7 @@ impl Default for Options {
         Self {
             bare: false,
             scale: 1,
-            dpi: 96.0,
+            dpi: DEFAULT_DPI,
         }
     }
 }

@@ -1,7 +1,7 @@
 //! A figure's PDF (feature `pdf`): its SVG converted by svg2pdf, text kept as text in the
 //! compiled-in DejaVu Sans, embedded as a subset. The font database holds only that font (and
 //! its bold), so no system font is looked up and the PDF is the same on every machine. The page
-//! is the SVG's size at 72 units per inch (one unit of the SVG is one point).
+//! is the SVG's size: its `width` and `height` are in points (`pt`).
 
 use std::sync::Arc;
 use svg2pdf::usvg;
@@ -20,7 +20,9 @@ pub(crate) fn from_svg(svg: &str) -> Result<Vec<u8>, String> {
     svg2pdf::to_pdf(
         &tree,
         svg2pdf::ConversionOptions::default(),
-        svg2pdf::PageOptions::default(),
+        // usvg reads the SVG's points as CSS pixels, 96 to the inch; converted at 96 pixels per
+        // inch, the page is the SVG's size in points.
+        svg2pdf::PageOptions { dpi: 96.0 },
     )
     .map_err(|e| format!("converting the SVG to PDF: {e}"))
 }

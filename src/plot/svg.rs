@@ -43,7 +43,8 @@ impl std::error::Error for SvgError {}
 pub(crate) struct Svg<'a> {
     out: &'a mut String,
     size: (u32, u32),
-    /// The document's `width` and `height` are `zoom` times its view box.
+    /// The document's `width` and `height` are `zoom` times its view box, in points (one unit of
+    /// the view box a point at `zoom` 1).
     zoom: u32,
     /// Backend units per unit of the view box.
     k: u32,
@@ -272,7 +273,7 @@ impl DrawingBackend for Svg<'_> {
         self.out.clear();
         let _ = write!(
             self.out,
-            "<svg width=\"{zw}\" height=\"{zh}\" viewBox=\"0 {top} {w} {rows}\" \
+            "<svg width=\"{zw}pt\" height=\"{zh}pt\" viewBox=\"0 {top} {w} {rows}\" \
              xmlns=\"http://www.w3.org/2000/svg\">\n{}</svg>\n",
             self.body
         );

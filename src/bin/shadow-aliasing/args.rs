@@ -148,11 +148,12 @@ pub struct FiguresArgs {
         allow_hyphen_values = true
     )]
     pub scale: i64,
-    /// Pixels per inch recorded in the PNG (its pHYs chunk): printed size = pixels / DPI.
+    /// Pixels per inch recorded in the PNG (its pHYs chunk): printed size = pixels / DPI. The
+    /// default, 144, prints the PNG at the SVG's and the PDF's size (one unit a point).
     #[arg(
         long,
         value_name = "DPI",
-        default_value_t = 96.0,
+        default_value_t = shadow_aliasing::plot::DEFAULT_DPI,
         allow_hyphen_values = true
     )]
     pub dpi: f64,

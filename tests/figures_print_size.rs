@@ -1,0 +1,107 @@
+//! A figure prints at one size whatever its format: the PNG's pixel size over the density of its
+//! `pHYs` chunk, the SVG's `width` and `height` (in points, 72 to the inch) and the PDF's page
+//! (in points) give the same inches, with the default density, captioned and bare, at every
+//! `scale`. (At the former default of 96 pixels per inch a 520-unit figure's 1040-pixel PNG
+//! claimed 10.8 inches against the SVG's and PDF's 7.2.)
+#![cfg(feature = "plot")]
+
+use shadow_aliasing::plot::{render_with, Format, Options};
+use std::path::{Path, PathBuf};
+
+fn out_dir(sub: &str) -> PathBuf {
+    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("{sub}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+/// The PNG's width and height in inches: its IHDR's pixels over its `pHYs` density (pixels per
+/// metre, unit byte 1), read from the chunks here.
+fn png_inches(png: &[u8]) -> (f64, f64) {
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let be = |b: &[u8]| u32::from_be_bytes(b.try_into().unwrap());
+    let (w, h) = (be(&png[16..20]), be(&png[20..24]));
+    let mut at = 8;
+    while at + 12 <= png.len() {
+        let len = be(&png[at..at + 4]) as usize;
+        if &png[at + 4..at + 8] == b"pHYs" {
+            let d = &png[at + 8..at + 8 + len];
+            assert_eq!(d[8], 1, "pHYs unit is not the metre");
+            let (px, py) = (f64::from(be(&d[0..4])), f64::from(be(&d[4..8])));
+            return (f64::from(w) / px / 0.0254, f64::from(h) / py / 0.0254);
+        }
+        at += 12 + len;
+    }
+    panic!("no pHYs chunk");
+}
+
+/// The SVG's `width` and `height` in inches (written in points).
+fn svg_inches(svg: &str) -> (f64, f64) {
+    let head = &svg[..svg.find('>').unwrap()];
+    let get = |name: &str| -> f64 {
+        let key = format!(" {name}=\"");
+        let at = head.find(&key).unwrap() + key.len();
+        let v = &head[at..at + head[at..].find('"').unwrap()];
+        let pt: f64 = v
+            .strip_suffix("pt")
+            .unwrap_or_else(|| panic!("{name}={v:?} is not in points"))
+            .parse()
+            .unwrap();
+        pt / 72.0
+    };
+    (get("width"), get("height"))
+}
+
+/// The PDF's page in inches (its `/MediaBox` in points).
+#[cfg(feature = "pdf")]
+fn pdf_inches(pdf: &[u8]) -> (f64, f64) {
+    let text = String::from_utf8_lossy(pdf);
+    let at = text.find("/MediaBox [").expect("a MediaBox") + "/MediaBox [".len();
+    let v: Vec<f64> = text[at..at + text[at..].find(']').unwrap()]
+        .split_whitespace()
+        .map(|v| v.parse().unwrap())
+        .collect();
+    ((v[2] - v[0]) / 72.0, (v[3] - v[1]) / 72.0)
+}
+
+fn close(a: (f64, f64), b: (f64, f64)) -> bool {
+    // The density is written in whole pixels per metre: 5669 for 144 per inch, 5e-5 off.
+    (a.0 / b.0 - 1.0).abs() < 1e-3 && (a.1 / b.1 - 1.0).abs() < 1e-3
+}
+
+#[test]
+fn png_svg_and_pdf_print_at_one_size() {
+    let dir = out_dir("figures-print-size");
+    let name = "lloyd2005-fig4";
+    for bare in [false, true] {
+        for scale in [1, 3] {
+            let opts = Options {
+                bare,
+                scale,
+                ..Options::default()
+            };
+            let d = dir.join(format!("{bare}-{scale}"));
+            render_with(name, &d, Format::Both, &opts).unwrap();
+            let png = png_inches(&std::fs::read(d.join(format!("{name}.png"))).unwrap());
+            let svg = svg_inches(&std::fs::read_to_string(d.join(format!("{name}.svg"))).unwrap());
+            assert!(
+                close(png, svg),
+                "bare {bare}, scale {scale}: PNG {png:?} in, SVG {svg:?} in"
+            );
+            // The figure is 520 units wide: 520 points, 7.22 inches, times the scale.
+            assert!(
+                (svg.0 - 520.0 / 72.0 * f64::from(scale)).abs() < 1e-9,
+                "{svg:?}"
+            );
+            #[cfg(feature = "pdf")]
+            {
+                render_with(name, &d, Format::Pdf, &opts).unwrap();
+                let pdf = pdf_inches(&std::fs::read(d.join(format!("{name}.pdf"))).unwrap());
+                assert!(
+                    close(pdf, svg),
+                    "bare {bare}, scale {scale}: PDF {pdf:?} in, SVG {svg:?} in"
+                );
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
