@@ -1,0 +1,265 @@
+// Checks of the installed npm package (web/test/pack.mjs runs this in a fresh folder where
+// `shadow-aliasing` is the packed tarball). Every expected value is computed here, in
+// JavaScript, independently of the crate: the papers' equations, finite differences of the
+// returned matrices, the hand-made camera; or it is the crate's literal message text.
+import assert from 'node:assert/strict';
+import {
+  Controller,
+  ShadowAliasingError,
+  closed,
+  errorLens,
+  frame,
+  init,
+  lensColour,
+  version,
+} from 'shadow-aliasing';
+
+await init();
+let passed = 0;
+function test(name, f) {
+  f();
+  passed += 1;
+  console.log(`ok ${name}`);
+}
+const close = (a, b, rel, what) =>
+  assert.ok(Math.abs(a - b) <= rel * Math.max(Math.abs(a), Math.abs(b)), `${what}: ${a} vs ${b} (rel ${rel})`);
+
+// The camera, built here: eye, target, up → world → eye, column-major (three.js's order).
+const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+const unit = (a) => {
+  const l = Math.hypot(...a);
+  return [a[0] / l, a[1] / l, a[2] / l];
+};
+const eye = [0, 10, 20];
+const fwd = unit(sub([0, 0, -20], eye));
+const side = unit(cross(fwd, [0, 1, 0]));
+const up = cross(side, fwd);
+const view = [
+  side[0], up[0], -fwd[0], 0,
+  side[1], up[1], -fwd[1], 0,
+  side[2], up[2], -fwd[2], 0,
+  -dot(side, eye), -dot(up, eye), dot(fwd, eye), 1,
+];
+const toEye = (p) => [dot(side, sub(p, eye)), dot(up, sub(p, eye)), -dot(fwd, sub(p, eye))];
+const toWorld = (q) => [0, 1, 2].map((i) => eye[i] + side[i] * q[0] + up[i] * q[1] - fwd[i] * q[2]);
+const apply = (m, p) => [0, 1, 2, 3].map((i) => m[i] * p[0] + m[4 + i] * p[1] + m[8 + i] * p[2] + m[12 + i]);
+
+const ground = [{ min: [-50, -1, -100], max: [50, 0, 50] }];
+const input = {
+  world_to_eye: view,
+  near: 0.5,
+  far: 200,
+  half_fov: 0.5,
+  aspect: 16 / 9,
+  light_dir_world: [0.3, -1, -0.2],
+  receivers: ground,
+  casters: ground,
+  map_resolution: 1024,
+  image_height: 1080,
+};
+
+test('version', () => assert.equal(version(), '0.1.0'));
+
+test('closed forms equal Lloyd 2006 Eq 7, 8, 11, 12 computed here', () => {
+  const [n, f, th] = [1, 100, 0.5];
+  const npL = n + Math.sqrt(f * n);
+  close(closed.nPrimeLispsm({ near: n, far: f }), npL, 1e-15, 'n′_LSPSM');
+  const z = [1, 2.5, 10, 42, 100];
+  const mx = closed.mx({ near: n, far: f, n_prime: npL, z, res_image: 1000, res_s: 2000 });
+  assert.ok(mx instanceof Float64Array);
+  z.forEach((zi, i) => close(mx[i], (1000 / 2000) * (f * (npL + zi - n)) / (zi * (npL + f - n)), 1e-14, `m_x(${zi})`));
+  const mz = closed.mz({ near: n, far: f, half_fov: th, n_prime: npL, z });
+  z.forEach((zi, i) =>
+    close(mz[i], ((f - n) / (2 * Math.tan(th))) * (npL + zi - n) ** 2 / (zi * npL * (npL + f - n)), 1e-14, `m_z(${zi})`),
+  );
+  close(closed.mx({ near: n, far: f, n_prime: Infinity, z: 4 }), f / 4, 1e-15, 'uniform m_x');
+  const base = (f / n - 1) / (2 * Math.tan(th));
+  close(closed.storageFactor({ near: n, far: f, half_fov: th, n_prime: npL }), base, 1e-14, 'S̄ LiSPSM');
+  close(closed.storageFactor({ near: n, far: f, half_fov: th, n_prime: Infinity }), (base * f) / n, 1e-14, 'S̄ uniform');
+  const np2 = 30; // above n′_LSPSM = 11
+  close(closed.storageFactor({ near: n, far: f, half_fov: th, n_prime: np2 }), (base * np2 ** 2 * f) / (n * (np2 + f - n) ** 2), 1e-14, 'S̄ n′ = 30');
+  const a = f / n;
+  close(closed.nPrimeFromEta({ near: n, far: f, eta: 0.5 }), (n * (Math.sqrt(a) + 1)) / (0.5 * Math.sqrt(a) + 1), 1e-14, 'n′(0.5)');
+  close(closed.nPrimeFromEta({ near: n, far: f, eta: -0.5 }), (n * (Math.sqrt(a) + 1 + 0.5 * (a - 1))) / 0.5, 1e-14, 'n′(−0.5)');
+  close(closed.etaFromNPrime({ near: n, far: f, n_prime: npL }), 0, 1e-12, 'η(n′_LSPSM)');
+  assert.ok(Math.abs(closed.etaFromNPrime({ near: n, far: f, n_prime: npL })) < 1e-12);
+});
+
+test('matrices are column-major world → clip and fit the focus body', () => {
+  for (const scheme of [
+    { kind: 'single', rule: 'uniform' },
+    { kind: 'single', rule: 'lispsm' },
+    { kind: 'cascades', rule: 'lispsm', partition: 'log', k: 3 },
+  ]) {
+    const f = frame({ ...input, scheme, clip_depth: 'zero-to-one' });
+    assert.ok(f.maps.length >= 1);
+    for (const m of f.maps) {
+      assert.ok(m.world_to_clip instanceof Float64Array && m.world_to_clip.length === 16);
+      assert.ok(m.world_to_clip_f32 instanceof Float32Array);
+      m.world_to_clip.forEach((v, i) => assert.equal(m.world_to_clip_f32[i], Math.fround(v)));
+      let [mx, my] = [0, 0];
+      for (let i = 0; i < m.body.length; i += 3) {
+        const c = apply(m.world_to_clip, toWorld([m.body[i], m.body[i + 1], m.body[i + 2]]));
+        const [x, y, d] = [c[0] / c[3], c[1] / c[3], c[2] / c[3]];
+        assert.ok(Math.abs(x) <= 1 + 1e-9 && Math.abs(y) <= 1 + 1e-9, `${scheme.kind}: body vertex at (${x}, ${y})`);
+        assert.ok(d >= -1e-9 && d <= 1 + 1e-9, `depth ${d} outside [0, 1]`);
+        mx = Math.max(mx, Math.abs(x));
+        my = Math.max(my, Math.abs(y));
+      }
+      close(mx, 1, 1e-9, 'the body reaches the map edge in s');
+      close(my, 1, 1e-9, 'the body reaches the map edge in t');
+      assert.ok(m.max_error_pixels > 0 && Number.isFinite(m.max_error_pixels));
+      assert.ok(m.texel_world > 0 && m.bias.normal_offset > 0);
+    }
+  }
+});
+
+// The lens from finite differences of the returned matrix and the camera built here: texel
+// coordinates (s, t) = res/2 · clip xy / w and pixel coordinates = focal · eye xy / depth, both
+// differentiated along the surface; the lens is σ_max of (pixels per texel) = B A⁻¹.
+function lensByDifferences(m, p, res, imageHeight, halfFov) {
+  const focal = imageHeight / (2 * Math.tan(halfFov));
+  const texel = (q) => {
+    const c = apply(m.world_to_clip, q);
+    return [(res / 2) * (c[0] / c[3]), (res / 2) * (c[1] / c[3])];
+  };
+  const pixel = (q) => {
+    const e = toEye(q);
+    return [(focal * e[0]) / -e[2], (focal * e[1]) / -e[2]];
+  };
+  const h = 1e-3;
+  const d = (g, t) => {
+    const a = g([p[0] + h * t[0], p[1] + h * t[1], p[2] + h * t[2]]);
+    const b = g([p[0] - h * t[0], p[1] - h * t[1], p[2] - h * t[2]]);
+    return [(a[0] - b[0]) / (2 * h), (a[1] - b[1]) / (2 * h)];
+  };
+  const [u, v] = [[1, 0, 0], [0, 0, 1]]; // tangents of the ground (normal +y)
+  const [au, av, bu, bv] = [d(texel, u), d(texel, v), d(pixel, u), d(pixel, v)];
+  const det = au[0] * av[1] - av[0] * au[1];
+  // A⁻¹ = [[av1, −av0], [−au1, au0]] / det; P = B A⁻¹.
+  const P = [
+    (bu[0] * av[1] - bv[0] * au[1]) / det,
+    (-bu[0] * av[0] + bv[0] * au[0]) / det,
+    (bu[1] * av[1] - bv[1] * au[1]) / det,
+    (-bu[1] * av[0] + bv[1] * au[0]) / det,
+  ];
+  const s1 = P.reduce((s, x) => s + x * x, 0);
+  const dp = P[0] * P[3] - P[1] * P[2];
+  return Math.sqrt((s1 + Math.sqrt(Math.max(0, s1 * s1 - 4 * dp * dp))) / 2);
+}
+
+test('the error lens equals finite differences of the map and the camera', () => {
+  const points = [];
+  for (const x of [-20, -3, 0, 7, 25]) for (const z of [-150, -60, -10, 5, 12]) points.push(x, 0, z);
+  for (const scheme of [{ kind: 'single', rule: 'uniform' }, { kind: 'single', rule: 'lispsm' }]) {
+    const inp = { ...input, scheme };
+    const m = frame(inp).maps[0];
+    const lens = errorLens(inp, points, [0, 1, 0]);
+    assert.equal(lens.values.length, points.length / 3);
+    let checked = 0;
+    for (let i = 0; i < lens.values.length; i++) {
+      const p = points.slice(3 * i, 3 * i + 3);
+      if (toEye(p)[2] >= -input.near) {
+        assert.equal(lens.valid[i], 0, `point ${p} is behind the camera`);
+        assert.match(lens.reasons[i], /not in front of the camera/);
+        continue;
+      }
+      assert.equal(lens.valid[i], 1);
+      close(lens.values[i], lensByDifferences(m, p, input.map_resolution, input.image_height, input.half_fov), 1e-5, `lens at ${p}`);
+      checked += 1;
+    }
+    assert.ok(checked >= 15, `${checked} points checked`);
+  }
+});
+
+test('the lens colour of 1 px is viridis #26828e', () => {
+  const c = lensColour(1);
+  [0x26, 0x82, 0x8e].forEach((b, i) => close(c[i], b / 255, 1e-12, `channel ${i}`));
+});
+
+test('three.js objects are taken as they are', () => {
+  const v3 = (x, y, z) => ({ isVector3: true, x, y, z });
+  const three = {
+    ...input,
+    world_to_eye: { isMatrix4: true, elements: new Float64Array(view) },
+    light_dir_world: v3(0.3, -1, -0.2),
+    receivers: [{ isBox3: true, min: v3(-50, -1, -100), max: v3(50, 0, 50) }],
+  };
+  const a = frame(three).maps[0].world_to_clip;
+  const b = frame(input).maps[0].world_to_clip;
+  assert.deepEqual(Array.from(a), Array.from(b));
+});
+
+test('every scheme builds finite matrices', () => {
+  const schemes = [
+    ...['uniform', 'psm', 'lispsm', 'lispsm-fixed', 'lispsm-reference', 'barroso', 'barroso-zhang', 'minimax',
+      'minimax-mz', 'filament', 'ogre', 'tsm', 'ogre-ortho'].map((rule) => ({ kind: 'single', rule })),
+    { kind: 'single', rule: { name: 'eta', eta: 0.3 } },
+    { kind: 'cascades', rule: 'uniform', partition: 'practical', lambda: 0.5, k: 4, overlap: 0.1 },
+    { kind: 'cascades', rule: 'minimax', partition: 'equal-error', k: 3 },
+    { kind: 'cascades', rule: 'lispsm', partition: 'adaptive', k: 3 },
+    { kind: 'cascades', rule: 'uniform', splits: [0.5, 10, 50, 200] },
+    { kind: 'cascades', rule: 'uniform', fractions: [0.1, 0.4] },
+    { kind: 'stable', bevy: { num_cascades: 4, minimum_distance: 0.5, maximum_distance: 150, first_cascade_far_bound: 10, overlap_proportion: 0.2 } },
+    { kind: 'tsm' },
+    { kind: 'tsm', iterative: 64 },
+    { kind: 'faces', rule: 'lispsm', k: 1 },
+    { kind: 'clipmap', first_level: 6, last_level: 16 },
+  ];
+  for (const scheme of schemes) {
+    const f = frame({ ...input, scheme });
+    assert.ok(f.maps.length >= 1, JSON.stringify(scheme));
+    for (const m of f.maps) assert.ok(m.world_to_clip.every(Number.isFinite), JSON.stringify(scheme));
+  }
+});
+
+function throwsNaming(f, argument, message) {
+  assert.throws(f, (e) => {
+    assert.ok(e instanceof ShadowAliasingError && e instanceof Error);
+    assert.equal(e.kind, 'InvalidArgument');
+    assert.equal(e.argument, argument);
+    if (message instanceof RegExp) assert.match(e.message, message);
+    else assert.equal(e.message, message);
+    return true;
+  });
+}
+
+test('bad input throws with the argument named and the crate message', () => {
+  throwsNaming(() => frame({ ...input, map_resolution: 2 }), 'map_resolution', 'map_resolution must be at least 3 texels (got 2)');
+  throwsNaming(() => frame({ ...input, light_dir_world: [0, 0, 0] }), 'light_dir_world', 'light_dir_world must be a finite, non-zero vector');
+  throwsNaming(() => frame({ ...input, near: NaN }), 'near', /^near .*NaN/);
+  throwsNaming(() => frame({ ...input, map_res: 4 }), 'input', /unknown key "map_res"/);
+  throwsNaming(() => frame({ ...input, scheme: { kind: 'cascade' } }), 'scheme', /must be one of single, cascades/);
+  throwsNaming(() => frame({ ...input, receivers: [{ min: [0, 0, 0], max: [-1, 1, 1] }] }), 'receivers', /min not above max/);
+  throwsNaming(() => errorLens(input, [0, 0, -10], [0, 0, 0]), 'normals', /non-zero/);
+  throwsNaming(() => closed.mx({ near: 1, far: 100, n_prime: 11, z: 0.5 }), 'z', /^z /);
+  throwsNaming(() => new Controller({}), 'options', /max_error/);
+});
+
+test('the controller meets its target, counts its texels, and its scheme builds the same maps', () => {
+  const c = new Controller({ max_error: 2, max_maps: 4 });
+  for (let frameNo = 0; frameNo < 3; frameNo++) {
+    const d = c.frame(input);
+    const maps = d.frame.maps;
+    assert.equal(d.texels, maps.length * d.resolution * d.resolution);
+    assert.equal(d.max_error_pixels, Math.max(...maps.map((m) => m.max_error_pixels)));
+    assert.ok(d.meets_target && d.max_error_pixels <= 2, `${d.max_error_pixels} px`);
+    if (frameNo === 0) console.log(`  controller: ${JSON.stringify(d.scheme)} at ${d.resolution}², ${d.max_error_pixels.toFixed(3)} px`);
+    const again = frame({ ...input, scheme: d.scheme, map_resolution: d.resolution });
+    assert.equal(again.maps.length, maps.length);
+    // The first frame searches: the same maps bit for bit. Later frames keep equal-error
+    // cascades' planes as fractions of the depth range (docs/planning.md), which the
+    // search places again to within rounding.
+    again.maps.forEach((m, i) => {
+      if (frameNo === 0) assert.deepEqual(Array.from(m.world_to_clip), Array.from(maps[i].world_to_clip));
+      const scale = Math.max(...maps[i].world_to_clip.map(Math.abs));
+      m.world_to_clip.forEach((v, j) => assert.ok(Math.abs(v - maps[i].world_to_clip[j]) <= 1e-12 * scale, `entry ${j}`));
+    });
+  }
+  c.free();
+  throwsNaming(() => c.frame(input), 'id', /names no live controller/);
+});
+
+console.log(`${passed} checks passed`);
