@@ -66,11 +66,18 @@ function replacer(_key, v) {
   return v;
 }
 
-function reviver(_key, v) {
-  if (v === 'NaN') return NaN;
-  if (v === 'Infinity') return Infinity;
-  if (v === '-Infinity') return -Infinity;
-  return v;
+// The module writes non-finite numbers as the strings "NaN", "Infinity", "-Infinity";
+// Number() reads them back. Applied to the numeric fields alone (a JSON.parse reviver would
+// visit every value and cost more than the frame itself).
+const num = (v) => (typeof v === 'number' ? v : v === null ? v : Number(v));
+const f64 = (a) => Float64Array.from(a, num);
+function numbers(o) {
+  for (const k of Object.keys(o)) {
+    const v = o[k];
+    if (typeof v === 'string' && (v === 'NaN' || v === 'Infinity' || v === '-Infinity')) o[k] = Number(v);
+    else if (Array.isArray(v) && v.length > 0 && typeof v[0] !== 'object') o[k] = v.map(num);
+  }
+  return o;
 }
 
 /** One request to the module: its answer, or a ShadowAliasingError. */
@@ -83,7 +90,7 @@ export function call(fn, args = {}) {
   new Uint8Array(wasm.memory.buffer, ptr, bytes.length).set(bytes);
   const status = wasm.saw_call(ptr, bytes.length);
   const out = new Uint8Array(wasm.memory.buffer, wasm.saw_out_ptr() >>> 0, wasm.saw_out_len() >>> 0);
-  const answer = JSON.parse(decoder.decode(out), reviver);
+  const answer = JSON.parse(decoder.decode(out));
   if (status !== 0) {
     const e = answer.error;
     throw new ShadowAliasingError(e.kind, e.name, e.message);
@@ -92,19 +99,22 @@ export function call(fn, args = {}) {
 }
 
 function typedMap(m) {
-  return {
-    ...m,
-    world_to_clip: Float64Array.from(m.world_to_clip),
-    world_to_clip_f32: Float32Array.from(m.world_to_clip_f32),
-    eye_to_clip: Float64Array.from(m.eye_to_clip),
-    body: Float64Array.from(m.body),
-    casters_volume: Float64Array.from(m.casters_volume),
-    receivers_volume: Float64Array.from(m.receivers_volume),
-  };
+  numbers(m);
+  numbers(m.bias);
+  m.world_to_clip = f64(m.world_to_clip);
+  m.world_to_clip_f32 = Float32Array.from(m.world_to_clip_f32, num);
+  m.eye_to_clip = f64(m.eye_to_clip);
+  m.body = f64(m.body);
+  m.casters_volume = f64(m.casters_volume);
+  m.receivers_volume = f64(m.receivers_volume);
+  return m;
 }
 
 function typedFrame(f) {
-  return { ...f, light_dir_eye: Float64Array.from(f.light_dir_eye), maps: f.maps.map(typedMap) };
+  numbers(f);
+  f.light_dir_eye = f64(f.light_dir_eye);
+  f.maps.forEach(typedMap);
+  return f;
 }
 
 /** The frame's maps for one light (the crate's `frame::frame`). */
@@ -122,7 +132,7 @@ export function errorLens(input, points, normals, map = 0) {
   const values = new Float64Array(n);
   const valid = new Uint8Array(n);
   for (let i = 0; i < n; i++) {
-    const v = r.values[i];
+    const v = num(r.values[i]);
     values[i] = v === null ? NaN : v;
     valid[i] = v === null ? 0 : 1;
   }
@@ -161,8 +171,9 @@ export class Controller {
 
   /** The decision for this frame (the input's scheme and map resolution are the controller's). */
   frame(input) {
-    const d = call('controller_frame', { id: this.id, input });
-    return { ...d, frame: typedFrame(d.frame) };
+    const d = numbers(call('controller_frame', { id: this.id, input }));
+    d.frame = typedFrame(d.frame);
+    return d;
   }
 
   /** The next frame searches afresh (a camera cut). */
@@ -182,7 +193,7 @@ export class Controller {
 function closedForm(name) {
   return (args) => {
     const v = call('closed', { name, args });
-    return Array.isArray(v) ? Float64Array.from(v) : v;
+    return Array.isArray(v) ? f64(v) : num(v);
   };
 }
 
