@@ -273,3 +273,163 @@ fn lloyd2005_fig7() {
         ],
     );
 }
+
+/// lloyd2005-fig4: g₀ = 1/√α (Eq 3 at n = 1 + √α on either plane) at α = 10.
+#[test]
+fn lloyd2005_fig4() {
+    let alpha: f64 = 10.0;
+    check(
+        "lloyd2005-fig4",
+        &[
+            ("2005", N::Given("the report's year")),
+            ("4", N::Given("its figure")),
+            ("3", N::Given("Eq 3")),
+            ("4", N::Given("Eq 4")),
+            ("10", N::Given("α, which the report does not print")),
+            ("1", N::Given("ξ = 1")),
+            ("0", N::Given("ξ = 0")),
+            ("1", N::Given("n = 1 + √α")),
+            ("−1", N::Given("ξ = −1 (½ and −½ are not digits)")),
+            ("0", N::Given("g₀")),
+            ("1", N::Given("1/√α")),
+            ("0.316", N::Value(1.0 / alpha.sqrt())),
+            ("0", N::Given("ξ ≤ 0")),
+            ("0", N::Given("ξ > 0")),
+            ("3.2", N::Given("§3.2")),
+        ],
+    );
+}
+
+/// lloyd2006-fig5 prints only its configuration.
+#[test]
+fn lloyd2006_fig5() {
+    check(
+        "lloyd2006-fig5",
+        &[
+            ("2006", N::Given("the paper's year")),
+            ("5", N::Given("its figure")),
+            ("7", N::Given("Eq 7")),
+            ("8", N::Given("Eq 8")),
+            ("1", N::Given("n")),
+            ("20", N::Given("f")),
+            ("2", N::Given("the formula's 2 tan θ")),
+        ],
+    );
+}
+
+/// lloyd2006-fig6 prints only its configuration.
+#[test]
+fn lloyd2006_fig6() {
+    check(
+        "lloyd2006-fig6",
+        &[
+            ("2006", N::Given("the paper's year")),
+            ("6", N::Given("its figure")),
+            ("9", N::Given("Eq 9")),
+            ("12", N::Given("to Eq 12")),
+            ("1", N::Given("n")),
+            ("100", N::Given("f")),
+            ("30", N::Given("θ")),
+            ("0", N::Given("η ≤ 0")),
+            ("0", N::Given("η ≥ 0")),
+            ("4.3", N::Given("§4.3")),
+            ("0", N::Given("η = 0")),
+        ],
+    );
+}
+
+/// lloyd2006-fig10: the optimal logarithmic S̄ = ln(f/n)/(2 tan θ) (App. C) at θ = 30°.
+#[test]
+fn lloyd2006_fig10() {
+    let opt = |r: f64| r.ln() / (2.0 * 30f64.to_radians().tan());
+    check(
+        "lloyd2006-fig10",
+        &[
+            ("2006", N::Given("the paper's year")),
+            ("10", N::Given("its figure")),
+            ("18", N::Given("Eq 18")),
+            ("30", N::Given("θ")),
+            ("1", N::Given("the exponent 1/k")),
+            ("1", N::Given("the formula's − 1")),
+            ("2", N::Given("the formula's 2 tan θ")),
+            ("2", N::Given("the formula's 2 tan θ")),
+            ("1.99", N::Value(opt(10.0))),
+            ("3.99", N::Value(opt(100.0))),
+            ("5.98", N::Value(opt(1000.0))),
+            ("7.98", N::Value(opt(10_000.0))),
+            ("10", N::Given("the smallest f/n drawn")),
+            ("10000", N::Given("the largest f/n drawn")),
+        ],
+    );
+}
+
+/// Lloyd 2006 with the light behind, f/n = `r`: ZP with k maps, k (f/n)^{2/k} (Eq 20), and
+/// FP+ZP+W with k z-partitions per face (4k + 1 maps), four faces of ZP+W at 45° plus the near
+/// face: 4 k((f/n)^{1/k} − 1)/(2 tan 45°) + 1 (Eq 21 with Eq 18).
+fn behind_zp(r: f64, k: f64) -> f64 {
+    k * r.powf(2.0 / k)
+}
+
+fn behind_fp(r: f64, k: f64) -> f64 {
+    4.0 * k * (r.powf(1.0 / k) - 1.0) / (2.0 * 45f64.to_radians().tan()) + 1.0
+}
+
+/// lloyd2006-fig12: the light-behind values at 13 and 17 maps (k = 3 and 4 per face).
+#[test]
+fn lloyd2006_fig12() {
+    let r = 1000.0;
+    check(
+        "lloyd2006-fig12",
+        &[
+            ("2006", N::Given("the paper's year")),
+            ("12", N::Given("its figure")),
+            ("17", N::Given("Eq 17")),
+            ("21", N::Given("to Eq 21")),
+            ("1000", N::Given("f/n")),
+            ("30", N::Given("θ")),
+            ("4", N::Given("4k + 1 maps")),
+            ("1", N::Given("4k + 1 maps")),
+            ("21", N::Given("Eq 21")),
+            ("45", N::Given("each face at 45°")),
+            ("5.3", N::Given("§5.3")),
+            ("13", N::Value(4.0 * 3.0 + 1.0)),
+            ("37.6", N::Value(behind_zp(r, 13.0))),
+            ("55.0", N::Value(behind_fp(r, 3.0))),
+            ("17", N::Value(4.0 * 4.0 + 1.0)),
+            ("37.99", N::Value(behind_fp(r, 4.0))),
+            ("38.32", N::Value(behind_zp(r, 17.0))),
+        ],
+    );
+}
+
+/// lloyd2006-fig13: the f/n where ZP with 17 maps and FP+ZP+W with 4 per face are equal behind,
+/// by bisection on ln(f/n) here.
+#[test]
+fn lloyd2006_fig13() {
+    let diff = |ln_r: f64| behind_zp(ln_r.exp(), 17.0) - behind_fp(ln_r.exp(), 4.0);
+    let (mut a, mut b) = (2f64.ln(), 1e6f64.ln());
+    assert!(diff(a).signum() != diff(b).signum());
+    for _ in 0..100 {
+        let m = 0.5 * (a + b);
+        if diff(m).signum() == diff(a).signum() {
+            a = m;
+        } else {
+            b = m;
+        }
+    }
+    check(
+        "lloyd2006-fig13",
+        &[
+            ("2006", N::Given("the paper's year")),
+            ("13", N::Given("its figure")),
+            ("20", N::Given("Eq 20")),
+            ("21", N::Given("Eq 21")),
+            ("4", N::Given("j = 4k + 1")),
+            ("1", N::Given("j = 4k + 1")),
+            ("17", N::Value(4.0 * 4.0 + 1.0)),
+            ("1050", N::Value(a.exp())),
+            ("12", N::Given("Fig. 12")),
+            ("1000", N::Given("Fig. 12's f/n")),
+        ],
+    );
+}

@@ -50,10 +50,12 @@ pub(super) fn fig4() -> Result<Charts, Fail> {
     Ok(Charts {
         size: (520, 500),
         title: "Error distribution function g for several warp distances n".into(),
-        caption: vec![
-            format!("Lloyd et al. 2005, Fig. 4 (α = {alpha}), from Eq 3 and 4 (analytic::subdivided::distribution_g, n_from_xi). ξ = 1 is PSM (n = 1), ξ = 0 LiSPSM"),
-            format!("(n = 1 + √α), ξ = −1 the uniform map (n = ∞); each curve labelled at the far plane. Dotted: g₀ = 1/√α = {g0:.3}, the least maximum (n = 1 + √α). The maximum of g is on the near plane for ξ ≤ 0 and on the far plane for ξ > 0 (§3.2 prints these swapped)."),
-        ],
+        caption: vec![format!(
+            "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), α = {alpha}: g for the n of ξ = 1 (PSM), ½, 0 \
+             (LiSPSM, n = 1 + √α), −½ and −1 (the uniform map, n = ∞). Dotted: the least maximum \
+             g_0 = 1/√α = {g0:.3}. The maximum of g is on the near plane for ξ ≤ 0 and on the far \
+             plane for ξ > 0 (§3.2 prints these swapped)."
+        )],
         charts: vec![c],
     })
 }

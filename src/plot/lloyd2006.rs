@@ -14,6 +14,9 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+/// The half field of view θ of Fig 6, 10 and 12, in degrees.
+const THETA_DEG: f64 = 30.0;
+
 /// Fig 5: m_x and the distribution term of m_z along the frustum for several n′ (n = 1, f = 20).
 ///
 /// Both are divided by their constant factors, leaving the last terms of Lloyd 2006 Eq 7 and 8,
@@ -67,10 +70,12 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
     Ok(Charts {
         size: (520, 860),
         title: "Error distribution along the view frustum, light overhead".into(),
-        caption: vec![
-            "Lloyd et al. 2006, Fig. 5 (n = 1, f = 20), from Eq 7 and 8 (analytic::overhead::mx, mz): the last term of each, as the paper plots, i.e. m_x divided by f and m_z by (f − n)/(2 tan θ).".into(),
-            "m_x is the largest at z = n; m_z at z = f for n′ ≤ n + √(fn) and at z = n beyond it. Unit image and shadow-map resolutions; the legend of the upper panel holds for both, the lower panel's curves carry the same markers and their n′ at the far plane.".into(),
-        ],
+        caption: vec![format!(
+            "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), n = {n}, f = {f}, unit resolutions: the terms \
+             that vary with z, m_x over f and m_z over (f − n)/(2 tan θ), as the paper plots \
+             them. m_x is largest at z = n; m_z at z = f for n′ ≤ n + √(fn) and at z = n beyond. \
+             The upper legend holds for both panels."
+        )],
         charts: vec![cx, cz],
     })
 }
@@ -80,7 +85,7 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
 /// M_x under M_z for η ≤ 0 and the flat S̄ for η ≥ 0 on the x axis).
 pub(super) fn fig6() -> Result<Charts, Fail> {
     let (n, f) = (1.0, 100.0);
-    let view = ViewFrustum::new(n, f, 30f64.to_radians())?;
+    let view = ViewFrustum::new(n, f, THETA_DEG.to_radians())?;
     let res = Resolutions::default();
     let etas = linspace(-1.0, 1.0, 401);
     let mut m_x = Vec::with_capacity(etas.len());
@@ -138,10 +143,14 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
     Ok(Charts {
         size: (520, 900),
         title: "Maximum error and storage factor against the warp parameter η".into(),
-        caption: vec![
-            "Lloyd et al. 2006, Fig. 6 (n = 1, f = 100), from Eq 9, 10, 11, 12 (analytic::overhead, analytic::eta::n_prime_from_eta).".into(),
-            "θ = 30°, unit resolutions. Unlike the paper, which normalises each curve to fit one linear scale, the values are drawn as they are on a logarithmic axis: for η ≤ 0 M_x and M_z are both proportional to n′/(n′ + f − n) and run parallel; for η ≥ 0 S̄ stays constant while M_x falls and M_z rises (§4.3). (b) M_z alone on a linear axis: the paper's V, falling linearly to its minimum at η = 0 and rising linearly to η = 1.".into(),
-        ],
+        caption: vec![format!(
+            "Lloyd et al. 2006, Fig. 6 (Eq 9–12), n = {n}, f = {f}, θ = {theta}°, unit \
+             resolutions. (a) Unlike the paper, which scales each curve to one linear axis, the \
+             values as they are, logarithmic: for η ≤ 0, M_x and M_z run parallel; for η ≥ 0, S̄ \
+             is constant while M_x falls and M_z rises (§4.3). (b) M_z on a linear axis: the \
+             paper's V, least at η = 0.",
+            theta = THETA_DEG
+        )],
         charts: vec![c, v],
     })
 }
@@ -149,7 +158,7 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
 /// Fig 10: S̄ of ZP+W with the light overhead against the number of z-partitions k, for several
 /// f/n, each with the optimal logarithmic S̄ (App. C) it tends to.
 pub(super) fn fig10() -> Result<Charts, Fail> {
-    let theta = 30f64.to_radians();
+    let theta = THETA_DEG.to_radians();
     let mut c = LineChart::new(
         "(a) S̄, as in the paper; dashed: each optimum",
         Axis::integer("number of z-partitions k", 1.0, 16.0),
@@ -163,7 +172,8 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
     );
     r.legend = SeriesLabelPosition::UpperRight;
     let mut optima = Vec::new();
-    for (i, ratio) in [10.0, 100.0, 1000.0, 10_000.0].into_iter().enumerate() {
+    let ratios = [10.0, 100.0, 1000.0, 10_000.0];
+    for (i, ratio) in ratios.into_iter().enumerate() {
         let view = ViewFrustum::new(1.0, ratio, theta)?;
         let pts = (1..=16usize)
             .map(|k| {
@@ -199,7 +209,7 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
         .reference()
         .direct_at(3.0);
         c.series.push(asymptote);
-        optima.push(format!("{opt:.2} (f/n = {})", fmt_plain(ratio)));
+        optima.push(format!("{opt:.2}"));
     }
     c.series.push(
         Series::line(
@@ -221,11 +231,19 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
     );
     Ok(Charts {
         size: (520, 980),
-        title: "Storage factor of warped z-partitions against the number of partitions, light overhead".into(),
-        caption: vec![
-            "Lloyd et al. 2006, Fig. 10 (θ = 30°), from Eq 18 and App. C (analytic::partition::scheme_storage_factor with Scheme::ZpW and Scheme::Optimal).".into(),
-            format!("S̄ = k((f/n)^{{1/k}} − 1)/(2 tan θ) decreases with k towards the optimal logarithmic parameterisation ln(f/n)/(2 tan θ) (dashed, in each curve's colour, its value written on it): {}. Panel (b), not in the paper, divides each curve by its optimum so that the approach shows on one scale; the paper plots one frustum it does not name, we plot four.", optima.join(", ")),
-        ],
+        title:
+            "Storage factor of warped z-partitions against the number of partitions, light overhead"
+                .into(),
+        caption: vec![format!(
+            "Lloyd et al. 2006, Fig. 10 (Eq 18, App. C), θ = {THETA_DEG}°: S̄ of ZP+W, \
+             k((f/n)^{{1/k}} − 1)/(2 tan θ), falls with k towards the optimal logarithmic S̄, \
+             ln(f/n)/(2 tan θ) (dashed, its value on it): {} for f/n = {} to {}. (b), not in the \
+             paper, divides each curve by its optimum. The paper plots one frustum it does not \
+             name.",
+            optima.join(", "),
+            fmt_plain(ratios[0]),
+            fmt_plain(ratios[ratios.len() - 1])
+        )],
         charts: vec![c, r],
     })
 }
@@ -236,8 +254,22 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
 /// The number of maps of FP+ZP+W is 4k + 1 for both light directions
 /// ([`shadow_map_count`] for the light behind): a scheme keeps its maps whatever the light, which
 /// is how §5.3 counts them ("only one z-partitioning for every four shadow maps", Eq 23).
+/// The depth ratio f/n of Fig 12.
+const FIG12_RATIO: f64 = 1000.0;
+
 pub(super) fn fig12() -> Result<Charts, Fail> {
-    let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians())?;
+    let ratio = FIG12_RATIO;
+    let view = ViewFrustum::new(1.0, ratio, THETA_DEG.to_radians())?;
+    // The light-behind crossover: ZP with as many maps as FP+ZP+W with k = 3 and 4 per face.
+    let behind = |scheme: Scheme, k: usize| -> Result<f64, crate::Error> {
+        scheme_storage_factor(scheme, SchemeLight::Behind, &view, k)
+    };
+    let (j3, j4) = (
+        shadow_map_count(Scheme::FpZpW, SchemeLight::Behind, 3)?,
+        shadow_map_count(Scheme::FpZpW, SchemeLight::Behind, 4)?,
+    );
+    let (zp3, fp3) = (behind(Scheme::Zp, j3)?, behind(Scheme::FpZpW, 3)?);
+    let (zp4, fp4) = (behind(Scheme::Zp, j4)?, behind(Scheme::FpZpW, 4)?);
     let mut c = LineChart::new(
         "",
         Axis::integer("number of shadow maps", 0.0, 40.0),
@@ -344,17 +376,20 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
     }
     zoom.notes.push(Note {
         at: (11.4, 33.0),
-        text: "from 17 maps FP+ZP+W is lower: 37.99 against ZP's 38.32".into(),
+        text: format!("from {j4} maps FP+ZP+W is lower: {fp4:.2} against ZP's {zp4:.2}"),
         colour: PALETTE[6],
     });
     c.title = "(a) overhead (solid) and behind (dashed)".into();
     Ok(Charts {
         size: (520, 980),
         title: "Storage factor against the number of shadow maps".into(),
-        caption: vec![
-            "Lloyd et al. 2006, Fig. 12 (f/n = 1000, θ = 30°), from Eq 17–21 (analytic::partition::scheme_storage_factor). k z-partitions use k maps; FP+ZP+W uses 4k + 1".into(),
-            "(four side faces and the near face), so its values are markers, not joined across the counts between. Behind, ZP+W equals ZP (a square frustum cannot be warped); FP+ZP+W behind is Eq 21 with each face at 45° whatever θ (docs/errata.md). Up to 40 maps, so that the light-behind crossover of §5.3 shows; (b), not in the paper, enlarges it: at 13 maps ZP is lower (37.6 against 55.0), at 17 FP+ZP+W (37.99 against 38.32).".into(),
-        ],
+        caption: vec![format!(
+            "Lloyd et al. 2006, Fig. 12 (Eq 17–21), f/n = {ratio}, θ = {THETA_DEG}°. k \
+             z-partitions use k maps, FP+ZP+W 4k + 1 (the side faces and the near face; markers \
+             only). Behind, ZP+W equals ZP (a square frustum is not warped) and FP+ZP+W is Eq 21 \
+             with each face at 45°. (b), not in the paper, enlarges §5.3's crossover: at {j3} maps \
+             ZP is lower ({zp3:.1} against {fp3:.1}), at {j4} FP+ZP+W ({fp4:.2} against {zp4:.2})."
+        )],
         charts: vec![c, zoom],
     })
 }
@@ -482,13 +517,25 @@ impl Figure for Fig13 {
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        // The crossover at k = 4 (17 maps), Fig 12's.
+        let j4 = shadow_map_count(Scheme::FpZpW, SchemeLight::Behind, 4)? as f64;
+        let (j, at) = self
+            .crossover
+            .iter()
+            .copied()
+            .find(|p| p.0 == j4)
+            .ok_or_else(|| Fail::Draw(format!("Fig 13 has no crossover at {j4} maps")))?;
+        let caption = format!(
+            "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind: z-partitioning (ZP, equal to \
+             ZP+W behind) with j maps against face partitioning with k warped z-partitions per \
+             face, at j = 4k + 1, where both exist: one column per j (the paper draws continuous \
+             regions). FP+ZP+W is lower below the dot (equal S̄), ZP above; at {j} maps the dot \
+             is at f/n = {at:.0}, just above Fig. 12's {FIG12_RATIO}."
+        );
         let body = frame(
             root,
             "Which partitioning has the lowest error, light behind the viewer",
-            &[
-                "Lloyd et al. 2006, Fig. 13, from Eq 20 and 21 (analytic::partition::scheme_storage_factor, light behind): at equal numbers of maps, j = 4k + 1,",
-                "z-partitioning (ZP, or ZP+W: the same behind) with j maps against face partitioning with k warped z-partitions per face. The comparison exists only at j = 4k + 1, so each j is a column: FP+ZP+W is lowest below the dot (where S̄ is equal), ZP above it (the paper draws continuous regions). f/n up to 10⁶ (the dot at 17 maps is just above f/n = 1000, Fig 12's crossover).",
-            ],
+            &[caption.as_str()],
         )?;
         // The key above the chart, where it covers nothing.
         let (key, plot) = body.split_vertically(KEY_HEIGHT);
