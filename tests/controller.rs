@@ -323,20 +323,25 @@ fn a_cut_searches_every_candidate() {
     assert_eq!(d.texels, fewest_texels(&sun));
 }
 
-/// With stable cascades, a still camera keeps every map unchanged (`FrameMap::unchanged`).
-#[test]
-fn a_still_camera_keeps_stable_maps_unchanged() {
-    let boxes = scene();
+/// A controller allowed stable logarithmic cascades of 3 only.
+fn stable_log_3() -> Controller {
     let stable = FrameScheme::Stable(CascadeSplits::Scheme {
         scheme: SplitScheme::SelfSimilar,
         k: 3,
         overlap: 0.0,
     });
-    let mut c = Controller::new(ControllerOptions {
+    Controller::new(ControllerOptions {
         candidates: Some(vec![stable]),
         ..options(30, 0.9)
     })
-    .unwrap();
+    .unwrap()
+}
+
+/// With stable cascades, a still camera keeps every map unchanged (`FrameMap::unchanged`).
+#[test]
+fn a_still_camera_keeps_stable_maps_unchanged() {
+    let boxes = scene();
+    let mut c = stable_log_3();
     let inp = input(camera(10), &boxes);
     c.frame(&inp).unwrap();
     let d = c.frame(&inp).unwrap();
@@ -352,16 +357,7 @@ fn a_still_camera_keeps_stable_maps_unchanged() {
 fn unchanged_compares_with_the_last_decision() {
     use shadow_aliasing::maps::ClipDepth;
     let boxes = scene();
-    let stable = FrameScheme::Stable(CascadeSplits::Scheme {
-        scheme: SplitScheme::SelfSimilar,
-        k: 3,
-        overlap: 0.0,
-    });
-    let mut c = Controller::new(ControllerOptions {
-        candidates: Some(vec![stable]),
-        ..options(30, 0.9)
-    })
-    .unwrap();
+    let mut c = stable_log_3();
     let mut last: Option<(u32, Vec<Option<DMat4>>)> = None;
     let (mut moved, mut kept, mut missed) = (0, 0, 0);
     // Each pose twice: the second a still camera, whose maps are unchanged.

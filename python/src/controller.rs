@@ -8,8 +8,7 @@
 
 use crate::args;
 use crate::broadcast::{fmt_index, fmt_shape, to_python, values_of, FloatArg};
-use crate::builders::{from_rows, vec3};
-use crate::frame::{boxes, depth_clamp_arg, frame_err, pair, with_scene};
+use crate::frame::{depth_clamp_arg, frame_err, with_scene};
 use crate::interrupt::in_blocks;
 use glam::DVec3;
 use numpy::PyUntypedArrayMethods;
@@ -296,13 +295,12 @@ impl Controller {
         #[pyo3(from_py_with = args::clip_depth)] clip_depth: &str,
         dtype: Option<&Any<'py>>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let view_m = from_rows(&crate::builders::values("view", view, &[4, 4])?);
-        let camera =
-            Camera::new(view_m, near, far, half_fov, aspect).map_err(|e| frame_err(e, false))?;
-        let light = vec3("light_dir", light_dir)?;
-        let receivers = boxes("receivers", receivers)?;
-        let casters = boxes("casters", casters)?;
-        let depth_range = pair("depth_range", depth_range)?;
+        let (camera, light, receivers, casters, depth_range) = crate::frame::scene(
+            view,
+            (near, far, half_fov, aspect),
+            light_dir,
+            [receivers, casters, depth_range],
+        )?;
         let depth = crate::builders::clip_depth(clip_depth)?;
         let f32_out = crate::out::dtype(dtype)?;
         // Checked before the frame, which would otherwise be taken and lost with the error.

@@ -84,6 +84,34 @@ fn list(name: &str, ob: Option<&Any<'_>>) -> PyResult<Option<Vec<f64>>> {
 }
 
 /// `depth_range`: two numbers `(z_min, z_max)`, or `None`.
+/// The scene of `frame`, `plan`, `plan_clipmap` and `Controller.frame`: the camera, the
+/// light, the receivers' and casters' boxes, the depth range.
+pub(crate) type Scene = (
+    Camera,
+    DVec3,
+    Option<Vec<Aabb>>,
+    Option<Vec<Aabb>>,
+    Option<(f64, f64)>,
+);
+
+/// [`Scene`] from those functions' Python arguments (`(near, far, half_fov, aspect)`;
+/// receivers, casters, depth range), each refused by its name.
+pub(crate) fn scene<'py>(
+    view: &Any<'py>,
+    (near, far, half_fov, aspect): (f64, f64, f64, f64),
+    light_dir: &Any<'py>,
+    [receivers, casters, depth_range]: [Option<&Any<'py>>; 3],
+) -> PyResult<Scene> {
+    let view_m = from_rows(&crate::builders::values("view", view, &[4, 4])?);
+    Ok((
+        Camera::new(view_m, near, far, half_fov, aspect).map_err(|e| frame_err(e, false))?,
+        vec3("light_dir", light_dir)?,
+        boxes("receivers", receivers)?,
+        boxes("casters", casters)?,
+        pair("depth_range", depth_range)?,
+    ))
+}
+
 pub(crate) fn pair(name: &str, ob: Option<&Any<'_>>) -> PyResult<Option<(f64, f64)>> {
     match list(name, ob)? {
         None => Ok(None),
@@ -275,13 +303,12 @@ pub fn frame<'py>(
     dtype: Option<&Any<'py>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     // Every argument converted and checked before the frame is built.
-    let view_m = from_rows(&crate::builders::values("view", view, &[4, 4])?);
-    let camera =
-        Camera::new(view_m, near, far, half_fov, aspect).map_err(|e| frame_err(e, false))?;
-    let light = vec3("light_dir", light_dir)?;
-    let receivers = boxes("receivers", receivers)?;
-    let casters = boxes("casters", casters)?;
-    let depth_range = pair("depth_range", depth_range)?;
+    let (camera, light, receivers, casters, depth_range) = crate::frame::scene(
+        view,
+        (near, far, half_fov, aspect),
+        light_dir,
+        [receivers, casters, depth_range],
+    )?;
     let rule_name = rule
         .filter(|r| !r.is_none())
         .map(|r| args::rule(r))

@@ -2,14 +2,13 @@
 //! error or the least error for a texel budget, with every candidate's figures.
 
 use crate::args;
-use crate::builders::{from_rows, vec3};
 use crate::closed::choice;
-use crate::frame::{boxes, clipmap_options, depth_clamp_arg, frame_err, pair, with_scene};
+use crate::frame::{clipmap_options, depth_clamp_arg, frame_err, with_scene};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use shadow_aliasing::analytic::partition::SplitScheme;
-use shadow_aliasing::frame::{Camera, CascadeSplits, FrameInput, FrameScheme};
+use shadow_aliasing::frame::{CascadeSplits, FrameInput, FrameScheme};
 use shadow_aliasing::maps::WarpRule;
 use shadow_aliasing::plan::allocate::Rounding;
 use shadow_aliasing::plan::candidates::{
@@ -165,13 +164,12 @@ pub fn plan<'py>(
     #[pyo3(from_py_with = depth_clamp_arg)] depth_clamp: bool,
     #[pyo3(from_py_with = args::map_resolution)] map_resolution: u32,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let view_m = from_rows(&crate::builders::values("view", view, &[4, 4])?);
-    let camera =
-        Camera::new(view_m, near, far, half_fov, aspect).map_err(|e| frame_err(e, false))?;
-    let light = vec3("light_dir", light_dir)?;
-    let receivers = boxes("receivers", receivers)?;
-    let casters = boxes("casters", casters)?;
-    let depth_range = pair("depth_range", depth_range)?;
+    let (camera, light, receivers, casters, depth_range) = crate::frame::scene(
+        view,
+        (near, far, half_fov, aspect),
+        light_dir,
+        [receivers, casters, depth_range],
+    )?;
     let max_error = max_error
         .filter(|v| !v.is_none())
         .map(|v| args::real("max_error", v))
@@ -298,13 +296,12 @@ pub fn plan_clipmap<'py>(
     pool: Option<&Any<'py>>,
     max_error: Option<&Any<'py>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let view_m = from_rows(&crate::builders::values("view", view, &[4, 4])?);
-    let camera =
-        Camera::new(view_m, near, far, half_fov, aspect).map_err(|e| frame_err(e, false))?;
-    let light = vec3("light_dir", light_dir)?;
-    let receivers = boxes("receivers", receivers)?;
-    let casters = boxes("casters", casters)?;
-    let depth_range = pair("depth_range", depth_range)?;
+    let (camera, light, receivers, casters, depth_range) = crate::frame::scene(
+        view,
+        (near, far, half_fov, aspect),
+        light_dir,
+        [receivers, casters, depth_range],
+    )?;
     let bias_given = lod_bias.is_some_and(|v| !v.is_none());
     let opts = clipmap_options(lod_bias, levels, level_unit, page_texels)?.options;
     let pool = pool
