@@ -189,6 +189,18 @@ export function errorLens(
   normals: ArrayLike<number>,
   map?: number,
 ): ErrorLens;
+export interface MapError {
+  max_error_pixels: number;
+  max_mx: number;
+  max_mz: number;
+  storage_factor: number;
+}
+/** The crate's measurement of any world → clip matrix over the view slice `cover` ∩ receivers. */
+export function measureMap(
+  input: FrameInput,
+  cover: readonly [number, number],
+  worldToClip: ArrayLike<number> | { elements: ArrayLike<number>; isMatrix4: true },
+): MapError | null;
 export function lensColour(value: number): [number, number, number];
 export function version(): string;
 

@@ -139,6 +139,16 @@ export function errorLens(input, points, normals, map = 0) {
   return { values, valid, reasons: r.reasons };
 }
 
+/**
+ * The crate's measurement of any world → clip matrix (another engine's cascade) over the view
+ * slice `cover` = [z0, z1] ∩ the receivers: {max_error_pixels, max_mx, max_mz, storage_factor},
+ * or null where the slice holds no receiver.
+ */
+export function measureMap(input, cover, worldToClip) {
+  const r = call('measure_map', { input, cover, world_to_clip: worldToClip });
+  return r === null ? null : numbers(r);
+}
+
 /** The lens ramp's sRGB colour of a lens value (pixels), each channel in [0, 1]. */
 export function lensColour(value) {
   return call('lens_colour', { value });

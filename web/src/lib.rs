@@ -12,6 +12,7 @@ pub mod args;
 pub mod closed;
 pub mod controller;
 pub mod frame;
+pub mod measure;
 pub mod scheme;
 
 use args::{WebError, WebResult};
@@ -21,6 +22,7 @@ use serde_json::Value;
 pub const FUNCTIONS: &[&str] = &[
     "frame",
     "error_lens",
+    "measure_map",
     "lens_colour",
     "closed",
     "controller_new",
@@ -53,6 +55,7 @@ fn answer(request: &str) -> WebResult<Value> {
     match name {
         "frame" => frame::frame(m),
         "error_lens" => frame::error_lens(m),
+        "measure_map" => measure::measure_map(m),
         "lens_colour" => frame::lens_colour(m),
         "closed" => closed::closed(m),
         "controller_new" => controller::new(m),

@@ -11,6 +11,7 @@ import {
   frame,
   init,
   lensColour,
+  measureMap,
   version,
 } from 'shadow-aliasing';
 
@@ -172,6 +173,21 @@ test('the error lens equals finite differences of the map and the camera', () =>
     }
     assert.ok(checked >= 15, `${checked} points checked`);
   }
+});
+
+test("measureMap gives a frame's own error, and half of it with twice the texels", () => {
+  const inp = { ...input, scheme: { kind: 'cascades', rule: 'uniform', partition: 'practical', lambda: 0.7, k: 3 } };
+  for (const m of frame(inp).maps) {
+    const e = measureMap(inp, m.split, m.world_to_clip);
+    close(e.max_error_pixels, m.max_error_pixels, 1e-9, `cascade ${m.slot}`);
+    // Clip x and y doubled: each texel half as wide, so the error halves (S̄ quarters).
+    const twice = Float64Array.from(m.world_to_clip, (v, i) => (i % 4 < 2 ? 2 * v : v));
+    const h = measureMap(inp, m.split, twice);
+    close(h.max_error_pixels, m.max_error_pixels / 2, 1e-9, `cascade ${m.slot} doubled`);
+    close(h.storage_factor, m.storage_factor / 4, 1e-9, `cascade ${m.slot} S̄`);
+  }
+  assert.equal(measureMap(inp, [300, 400], frame(inp).maps[0].world_to_clip), null);
+  throwsNaming(() => measureMap(inp, [5, 1], frame(inp).maps[0].world_to_clip), 'cover', /z0 < z1/);
 });
 
 test('the lens colour of 1 px is viridis #26828e', () => {
