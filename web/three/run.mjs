@@ -1,33 +1,14 @@
 // three.js's own CSMShadowNode against the crate's cascades (CrateCSMShadowNode.js), on the same
 // scene in headless Chromium with WebGPU on SwiftShader: each cascade's error as the crate
 // measures it, and the shadows against a ray cast at sample pixels (bench.js). Serves web/ on
-// 127.0.0.1 only. Needs Debian's chromium and `npm install` here (three, playwright-core).
-import { createServer } from 'node:http';
-import { readFile, writeFile } from 'node:fs/promises';
-import { dirname, extname, join, normalize } from 'node:path';
-import { fileURLToPath } from 'node:url';
+// 127.0.0.1 only (web/serve.mjs). Needs Debian's chromium and `npm install` in web/ (three,
+// playwright-core).
+import { writeFile } from 'node:fs/promises';
+import { join } from 'node:path';
 import { chromium } from 'playwright-core';
+import { serve } from '../serve.mjs';
 
-const root = join(dirname(fileURLToPath(import.meta.url)), '..');
-const types = { '.js': 'text/javascript', '.mjs': 'text/javascript', '.html': 'text/html', '.wasm': 'application/wasm', '.json': 'application/json' };
-const server = createServer(async (req, res) => {
-  const path = normalize(decodeURIComponent(new URL(req.url, 'http://x').pathname));
-  if (path === '/favicon.ico') {
-    res.writeHead(204);
-    res.end();
-    return;
-  }
-  try {
-    const body = await readFile(join(root, path));
-    res.writeHead(200, { 'content-type': types[extname(path)] ?? 'application/octet-stream' });
-    res.end(body);
-  } catch {
-    res.writeHead(404);
-    res.end();
-  }
-});
-await new Promise((ok) => server.listen(0, '127.0.0.1', ok));
-const base = `http://127.0.0.1:${server.address().port}`;
+const { server, base } = await serve();
 const out = [];
 try {
   for (const query of (process.argv[2] ?? 'node=three,node=crate').split(',')) {
