@@ -23,7 +23,9 @@ const bounds = [{ min: [-200, -1, -200], max: [200, 15, 200] }];
 const [W, H] = [640, 360];
 const CELL = 4;
 const eye = [0, 8, 30];
-const fwd = unit(sub([0, 0, -40], eye));
+// Level (no pitch), so that eye space is world space moved by −eye, and the command line
+// (`shadow-aliasing warp`, eye space) can be given the same scene: web/page/test.mjs.
+const fwd = unit(sub([0, 8, -40], eye));
 const side = unit(cross(fwd, [0, 1, 0]));
 const up = cross(side, fwd);
 const view = [side[0], up[0], -fwd[0], 0, side[1], up[1], -fwd[1], 0, side[2], up[2], -fwd[2], 0,

@@ -5,6 +5,7 @@
 // and SCREENSHOTS=DIR writes one image per scheme. Needs Debian's chromium and `npm install` in
 // web/ (playwright-core); web/build.sh first.
 import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
 import { join } from 'node:path';
 import { chromium } from 'playwright-core';
 import { serve } from '../serve.mjs';
@@ -17,6 +18,27 @@ const browser = await chromium.launch({
   args: ['--headless', '--no-sandbox'],
 });
 const apply = (m, p) => [0, 1, 2, 3].map((i) => m[i] * p[0] + m[4 + i] * p[1] + m[8 + i] * p[2] + m[12 + i]);
+
+// `shadow-aliasing warp --json` for the page's input: the page's camera is level, so eye space is
+// world space moved by −eye, and the boxes and the light go to the command line as they are.
+const cli = process.env.SHADOW_ALIASING_BIN ?? join(import.meta.dirname ?? new URL('.', import.meta.url).pathname, '..', '..', 'target', 'debug', 'shadow-aliasing');
+function warpJson(input) {
+  const v = input.world_to_eye;
+  const t = [v[12], v[13], v[14]];
+  assert.deepEqual([v[0], v[1], v[2], v[4], v[5], v[6], v[8], v[9], v[10]].map((x) => x + 0), [1, 0, 0, 0, 1, 0, 0, 0, 1], 'a level camera');
+  const box = (b) => [...b.min.map((x, i) => x + t[i]), ...b.max.map((x, i) => x + t[i])].join(',');
+  const s = input.scheme;
+  const args = ['warp', '--near', input.near, '--far', input.far, '--half-fov', input.half_fov, '--aspect', input.aspect,
+    `--light-dir=${input.light_dir_world.join(',')}`, `--receivers=${box(input.receivers[0])}`, `--casters=${box(input.casters[0])}`, '--json'];
+  if (s.kind === 'single') args.push('--warp', s.rule);
+  else if (s.kind === 'cascades') args.push('--warp', s.rule, '--partition', s.partition, '--k', s.k);
+  else if (s.kind === 'clipmap') {
+    args.push('--warp', 'uniform', '--partition', 'clipmap', '--levels', `${s.first_level},${s.last_level}`,
+      '--virtual-resolution', input.map_resolution, '--image-height', input.image_height);
+  } else return null;
+  return JSON.parse(execFileSync(cli, args.map(String)).toString());
+}
+const rel = (a, b) => Math.abs(a - b) <= 1e-9 * Math.max(Math.abs(a), Math.abs(b));
 
 // The lens by finite differences (as web/test/checks.mjs): σ_max of pixels per texel along the
 // surface, from the map's matrix and the page's camera (world → eye, column-major).
@@ -83,6 +105,23 @@ try {
       ...f.maps.map((m, i) => [`map ${i}`, `z ${m.split[0].toFixed(2)}–${m.split[1].toFixed(2)}: ${m.max_error_pixels.toFixed(3)} px, texel ${m.texel_world.toPrecision(3)}`]),
     ];
     assert.deepEqual(shown.slice(1), expect, `${scheme}: the numbers shown`);
+    // The command line's numbers for the same camera, light and scene.
+    const w = warpJson(s.input);
+    if (w) {
+      assert.equal(w.partitions.length, f.maps.length, `${scheme}: maps`);
+      w.partitions.forEach((p, i) => {
+        const m = s.frame.maps[i];
+        for (const k of ['max_mx', 'max_mz', 'storage_factor']) {
+          assert.ok(rel(p[k], m[k]), `${scheme}: map ${i} ${k}: page ${m[k]}, warp --json ${p[k]}`);
+        }
+        // warp's maps have 2048 texels a side (a clipmap's, --virtual-resolution).
+        const cliRes = s.input.scheme.kind === 'clipmap' ? resolution : 2048;
+        assert.ok(rel(p.texel_world * cliRes, m.texel_world * resolution), `${scheme}: map ${i} texel_world`);
+        assert.ok(rel(p.split[0], m.split[0]) && rel(p.split[1], m.split[1]), `${scheme}: map ${i} split`);
+        const px = (Math.max(p.max_mx, p.max_mz) * s.input.image_height) / resolution;
+        assert.ok(rel(px, m.max_error_pixels), `${scheme}: map ${i}: ${px} px by warp --json, ${m.max_error_pixels} shown`);
+      });
+    }
     // The lens at sample pixels, against finite differences here.
     assert.ok(s.samples.length >= 20, `${scheme}: ${s.samples.length} samples`);
     for (const c of s.samples) {
@@ -91,7 +130,7 @@ try {
       assert.ok(Math.abs(e - c.lens) <= 1e-5 * e, `${scheme}: lens ${c.lens} vs ${e} at ${c.p}`);
     }
     if (process.env.SCREENSHOTS) await page.screenshot({ path: join(process.env.SCREENSHOTS, `page-${scheme}.png`) });
-    console.log(`ok ${scheme}: ${f.maps.length} maps, ${largest.toFixed(3)} px, ${s.samples.length} lens samples`);
+    console.log(`ok ${scheme}: ${f.maps.length} maps, ${largest.toFixed(3)} px, ${s.samples.length} lens samples${w ? ', equal to warp --json' : ''}`);
     checks += 1;
   }
   assert.deepEqual(errors, [], 'console errors');
