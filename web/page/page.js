@@ -32,6 +32,15 @@ const view = [side[0], up[0], -fwd[0], 0, side[1], up[1], -fwd[1], 0, side[2], u
   -dot(side, eye), -dot(up, eye), dot(fwd, eye), 1];
 const camera = { near: 0.5, far: 300, half_fov: Math.PI / 6, aspect: W / H };
 
+/** A scheme as the numbers table names it: "3 cascades, equal-error, lispsm". */
+function describe(scheme) {
+  const parts = Object.entries(scheme)
+    .filter(([key]) => key !== 'kind' && key !== 'k')
+    .map(([, value]) => (typeof value === 'object' ? JSON.stringify(value) : String(value)));
+  const head = scheme.k ? `${scheme.k} ${scheme.kind}` : scheme.kind;
+  return [head, ...parts].join(', ');
+}
+
 const state = { azimuth: 1.3, elevation: 0.45, scheme: 'equal-error', res: 1024, budget: 2 };
 let controller = null;
 
@@ -239,7 +248,7 @@ function update() {
     const d = controller.frame(input);
     f = d.frame;
     resolution = d.resolution;
-    label = `controller: ${JSON.stringify(d.scheme)}`;
+    label = `controller: ${describe(d.scheme)}`;
     input.scheme = d.scheme;
     input.map_resolution = d.resolution;
   } else {
