@@ -9,7 +9,7 @@
 //! derivation here, a number typed wrong, or a formula whose value is not the printed one, fails.
 #![cfg(feature = "plot")]
 
-use shadow_aliasing::plot::{render, Format};
+use shadow_aliasing::plot::{render, Format, FIGURES};
 use std::path::{Path, PathBuf};
 
 /// A fresh directory per test and per process.
@@ -160,6 +160,10 @@ enum N {
     /// A value the caption prints as `formula = value`: the formula as printed, and its value
     /// computed in this file from the paper's equation (not from the formula's text).
     Formula(&'static str, f64),
+    /// A value measured by the figure's own sweep or construction, which this file does not
+    /// repeat: listed as printed (so that a change shows here), the text naming the unit test
+    /// that checks it against an independent computation where one does.
+    Measured(&'static str),
 }
 
 /// Checks `name`'s caption against `want`: the same numbers in the same order, each `Given` one
@@ -174,6 +178,7 @@ fn check(name: &str, want: &[(&str, N)]) {
             N::Given(reason) => format!("{p}: {reason}"),
             N::Value(v) => format!("{p}: computed {v}"),
             N::Formula(f, v) => format!("{p}: {f} = {v}"),
+            N::Measured(how) => format!("{p}: measured, {how}"),
         })
         .collect();
     assert_eq!(
@@ -183,7 +188,7 @@ fn check(name: &str, want: &[(&str, N)]) {
     );
     for (printed, n) in want {
         let v = match n {
-            N::Given(_) => continue,
+            N::Given(_) | N::Measured(_) => continue,
             N::Value(v) => v,
             N::Formula(formula, v) => {
                 assert!(
@@ -432,4 +437,275 @@ fn lloyd2006_fig13() {
             ("1000", N::Given("Fig. 12's f/n")),
         ],
     );
+}
+
+/// barroso-fig5: the self-similar split planes z_i = n (f/n)^{i/k} (Eq 5) and the adaptive ones
+/// of Eq 19, z_{i−1} = λ n (z_i/n)^{(i−1)/i} + (1 − λ) z_i/α from z_k = f down, λ = γ/(π/2),
+/// at n = 1, f = 100, k = 4, γ = 45°, α = 2.
+#[test]
+fn barroso_fig5() {
+    let (n, f, k) = (1.0f64, 100.0f64, 4);
+    let ss: Vec<f64> = (0..=k)
+        .map(|i| n * (f / n).powf(f64::from(i) / 4.0))
+        .collect();
+    let (lambda, alpha) = (45.0 / 90.0, 2.0);
+    let mut ad = vec![f; k as usize + 1];
+    ad[0] = n;
+    for i in (2..=k as usize).rev() {
+        let zi = ad[i];
+        ad[i - 1] =
+            lambda * n * (zi / n).powf((i as f64 - 1.0) / i as f64) + (1.0 - lambda) * zi / alpha;
+    }
+    check(
+        "barroso-fig5",
+        &[
+            ("2007", N::Given("the paper's year")),
+            ("5", N::Given("its figure")),
+            ("4", N::Given("k")),
+            ("1", N::Given("n")),
+            ("100", N::Given("f")),
+            ("30", N::Given("φ")),
+            ("5", N::Given("Eq 5")),
+            ("1", N::Value(ss[0])),
+            ("3.162", N::Value(ss[1])),
+            ("10", N::Value(ss[2])),
+            ("31.62", N::Value(ss[3])),
+            ("100", N::Value(ss[4])),
+            ("19", N::Given("Eq 19")),
+            ("45", N::Given("the light's angle γ to the view direction")),
+            ("2", N::Given("Eq 19's α, the scheme's ADAPTIVE_RATIO")),
+            ("1", N::Value(ad[0])),
+            ("6.041", N::Value(ad[1])),
+            ("16.13", N::Value(ad[2])),
+            ("40.81", N::Value(ad[3])),
+            ("100", N::Value(ad[4])),
+        ],
+    );
+}
+
+/// barroso-fig7 prints only its configuration and the window of (b).
+#[test]
+fn barroso_fig7() {
+    check(
+        "barroso-fig7",
+        &[
+            ("2007", N::Given("the paper's year")),
+            ("7", N::Given("its figure")),
+            ("13", N::Given("Eq 13")),
+            ("18", N::Given("to Eq 18")),
+            ("1", N::Given("n")),
+            ("100", N::Given("f")),
+            ("6", N::Given("φ_y = π/6")),
+            ("13", N::Given("Eq 13")),
+            ("20", N::Given("(b) from γ = 20°")),
+            ("40", N::Given("to 40°")),
+        ],
+    );
+}
+
+/// lloyd2005-fig8 prints only its configuration.
+#[test]
+fn lloyd2005_fig8() {
+    check(
+        "lloyd2005-fig8",
+        &[
+            ("2005", N::Given("the report's year")),
+            ("8", N::Given("its figure")),
+            ("2", N::Given("k")),
+            ("1", N::Given("n")),
+            ("10", N::Given("f")),
+            ("30", N::Given("θ")),
+            ("35", N::Given("the light's elevation")),
+            ("10", N::Given("the light's azimuth from straight behind")),
+            ("1", N::Given("partition 1, near")),
+            ("2", N::Given("partition 2, far")),
+            ("2", N::Given("the partition R2 of panel (b)")),
+            ("6", N::Given("Eq 6")),
+        ],
+    );
+}
+
+/// lloyd2006-fig11: the self-similar planes n (f/n)^{i/k}, f/n = 8, k = 3.
+#[test]
+fn lloyd2006_fig11() {
+    let z = |i: f64| 8f64.powf(i / 3.0);
+    check(
+        "lloyd2006-fig11",
+        &[
+            ("2006", N::Given("the paper's year")),
+            ("11", N::Given("its figure")),
+            ("1", N::Given("n")),
+            ("8", N::Given("f")),
+            ("30", N::Given("θ")),
+            ("3", N::Given("k")),
+            ("1", N::Value(z(0.0))),
+            ("2", N::Value(z(1.0))),
+            ("4", N::Value(z(2.0))),
+            ("8", N::Value(z(3.0))),
+            ("5.3", N::Given("§5.3")),
+            ("2", N::Given("the paper's 2n")),
+            ("2", N::Given("the paper's 2f")),
+            ("45", N::Given("where 2n tan θ = 2n")),
+        ],
+    );
+}
+
+/// lloyd2006-fig4 prints only its configuration.
+#[test]
+fn lloyd2006_fig4() {
+    check(
+        "lloyd2006-fig4",
+        &[
+            ("2006", N::Given("the paper's year")),
+            ("4", N::Given("its figure")),
+            ("1", N::Given("n")),
+            ("10", N::Given("f")),
+            ("30", N::Given("θ")),
+            ("0", N::Given("the plane y = 0")),
+            ("12", N::Given("grid lines across")),
+            ("12", N::Given("grid lines along")),
+        ],
+    );
+}
+
+/// lloyd2006-fig7: overhead, LiSPSM and face partitioning are Eq 12's
+/// (f/n − 1)/(2 tan θ) at f/n = 1000, θ = 30°.
+#[test]
+fn lloyd2006_fig7() {
+    check(
+        "lloyd2006-fig7",
+        &[
+            ("2006", N::Given("the paper's year")),
+            ("7", N::Given("its figure")),
+            ("2", N::Given("the sweep's step in degrees")),
+            ("1", N::Given("n")),
+            ("1000", N::Given("f")),
+            ("30", N::Given("θ")),
+            ("10", N::Given("the base of the log₁₀ colour scale")),
+            ("12", N::Given("Eq 12")),
+            ("865", N::Value(999.0 / (2.0 * 30f64.to_radians().tan()))),
+        ],
+    );
+}
+
+/// lloyd2006-worst-case: the ratios are the hemisphere sweep's (not repeated here).
+#[test]
+fn lloyd2006_worst_case() {
+    check(
+        "lloyd2006-worst-case",
+        &[
+            ("2006", N::Given("the paper's year")),
+            ("5.3", N::Given("§5.3")),
+            ("2", N::Given("the paper's claim, 2–3 times")),
+            ("3", N::Given("the paper's claim, 2–3 times")),
+            ("1000", N::Given("f/n")),
+            ("30", N::Given("θ")),
+            ("2", N::Given("the sweep's step in degrees")),
+            ("7", N::Given("Fig. 7")),
+            ("20", N::Given("Eq 20")),
+            ("21", N::Given("Eq 21")),
+            (
+                "1.998",
+                N::Measured("ZP's worst case over Eq 20's value behind"),
+            ),
+            ("2.024", N::Measured("ZP+W's least worst case over behind")),
+            (
+                "4.735",
+                N::Measured(
+                    "ZP+W at k = 1, Fig. 7's LiSPSM maximum over 10⁶ \
+                     (worst_case_is_fig7s_maximum, src/plot/worst.rs)",
+                ),
+            ),
+            ("1", N::Measured("FP+ZP+W's worst case is its value behind")),
+        ],
+    );
+}
+
+/// martin-tan-fig3: the coverages are the figure's construction, counted independently by
+/// `coverages_match_a_brute_force_count` (src/plot/trapezoid.rs).
+#[test]
+fn martin_tan_fig3() {
+    let counted = "coverages_match_a_brute_force_count (src/plot/trapezoid.rs)";
+    check(
+        "martin-tan-fig3",
+        &[
+            ("2004", N::Given("the paper's year")),
+            ("3", N::Given("Fig. 3")),
+            ("4", N::Given("and Fig. 4")),
+            ("80", N::Given("the 80 % rule")),
+            ("10", N::Given("focus δ")),
+            ("1", N::Given("n")),
+            ("100", N::Given("f")),
+            ("30", N::Given("θ")),
+            ("80", N::Given("the light's elevation")),
+            ("70", N::Given("the light's azimuth")),
+            ("5", N::Given("the paper's §5")),
+            ("67.0", N::Measured(counted)),
+            ("53.2", N::Measured(counted)),
+            ("51.4", N::Measured(counted)),
+            (
+                "29",
+                N::Measured("share of light directions every 2°, by solid angle"),
+            ),
+        ],
+    );
+}
+
+/// martin-tan-fig6 prints only its configuration.
+#[test]
+fn martin_tan_fig6() {
+    check(
+        "martin-tan-fig6",
+        &[
+            ("2004", N::Given("the paper's year")),
+            ("6", N::Given("its figure")),
+            ("80", N::Given("the 80 % rule")),
+            ("1", N::Given("n")),
+            ("100", N::Given("f")),
+            ("30", N::Given("θ")),
+            ("10", N::Given("δ")),
+        ],
+    );
+}
+
+/// zhang-fig3: LiSPSM's λ = (n + √(fn))/sin θ at n = 1, f = 100, θ = 90°, 60°, 30°.
+#[test]
+fn zhang_fig3() {
+    let lambda = |deg: f64| (1.0 + 100f64.sqrt()) / deg.to_radians().sin();
+    check(
+        "zhang-fig3",
+        &[
+            ("2009", N::Given("the paper's year")),
+            ("3", N::Given("its figure")),
+            ("2", N::Given("E_p = 2 m_z")),
+            ("2", N::Given("E_q = 2 m_x")),
+            ("1", N::Given("n")),
+            ("100", N::Given("f")),
+            ("6", N::Given("φ = π/6")),
+            ("90", N::Given("the first row's θ")),
+            ("60", N::Given("the second row's θ")),
+            ("30", N::Given("the third row's θ")),
+            ("11.00", N::Value(lambda(90.0))),
+            ("12.70", N::Value(lambda(60.0))),
+            ("22.00", N::Value(lambda(30.0))),
+            ("80", N::Given("the 80 % rule")),
+            ("10", N::Given("focus δ")),
+            ("5", N::Given("log₅ scale")),
+        ],
+    );
+}
+
+/// Every figure's caption is listed in this file.
+#[test]
+fn every_figure_has_its_caption_listed() {
+    let source: String = include_str!("figures_captions.rs")
+        .chars()
+        .filter(|c| !c.is_whitespace())
+        .collect();
+    for name in FIGURES {
+        assert!(
+            source.contains(&format!("check(\"{name}\",")),
+            "{name}: no caption list"
+        );
+    }
 }

@@ -17,7 +17,8 @@ fn light_at(gamma: f64) -> DVec3 {
 }
 
 pub(super) fn fig7() -> Result<Charts, Fail> {
-    let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6)?;
+    let (n, f) = (1.0, 100.0);
+    let view = ViewFrustum::new(n, f, std::f64::consts::FRAC_PI_6)?;
     let gl = gamma_lim(&view);
     let degrees = linspace(0.0, 90.0, 361);
     let finite = |n: NPrime| n.as_finite();
@@ -83,7 +84,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     c.series
         .push(Series::line("LiSPSM (n + √(fn))/sin γ", lispsm, PALETTE[2]).dashed());
     c.series
-        .push(Series::line("least M_z over the frustum (crate)", minimax, PALETTE[3]).dashed());
+        .push(Series::line("least M_z over the frustum", minimax, PALETTE[3]).dashed());
     c.series
         .push(Series::line("n′₁, Eq 13, γ ≥ φ_y", n1, PALETTE[6]).dotted());
     let mut s2 = Series::line("n′₂, Eq 13, γ < φ_y (> 0)", n2, PALETTE[7]).dotted();
@@ -119,16 +120,20 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         text: format!("φ_y = {phi_deg:.0}° →"),
         colour: grey,
     });
-    let zoom = magnified(&c, (20.0, 40.0), (0.3, 100.0), gl_deg, phi_deg, grey);
+    let window = (20.0, 40.0);
+    let zoom = magnified(&c, window, (0.3, 100.0), gl_deg, phi_deg, grey);
     c.title = "(a) γ from 0° to 90°".into();
     Ok(Charts {
         size: (520, 940),
         title: "Generalised LiSPSM parameter against the light angle".into(),
-        caption: vec![
-            "Barroso & Celes 2007, Fig. 7 (n = 1, f = 100, φ_y = π/6), from analytic::tilted::generalized_n_prime, n_prime_1, n_prime_2, gamma_lim; bold: the paper's curve (Barroso's fall-off), the others for comparison; (b) magnifies γ from 20° to 40°, where the curves separate;".into(),
-            "LiSPSM's 1/sin γ rule and the M_z-minimising n′ (WarpRule::MinimaxMz) from maps::n_prime_for. Logarithmic n′ axis: every rule tends to n′ = ∞ (no warp) as γ → 0. Each branch of Eq 13 is drawn only on its domain.".into(),
-            "The M_z-minimising curve has corners near γ = φ_y: there the frustum corner nearest the warp's centre of projection switches between the near-bottom and the far-bottom one (the switch between Eq 13's branches), so the point where m_z is largest jumps and the minimising n′ follows another formula.".into(),
-        ],
+        caption: vec![format!(
+            "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n = {n}, f = {f}, φ_y = π/6. Bold: the \
+             paper's curve, with Barroso's fall-off r(γ); for comparison Zhang's fall-off, \
+             LiSPSM's rule and the n′ of least M_z over the frustum. Each branch of Eq 13 is drawn \
+             on its own domain. (b) enlarges γ from {}° to {}°, where the curves part; the least-M_z \
+             curve turns near γ = φ_y, where the frustum corner of largest m_z changes.",
+            window.0, window.1
+        )],
         charts: vec![c, zoom],
     })
 }

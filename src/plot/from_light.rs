@@ -188,9 +188,18 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     zoom_c.window = Some(bounds(&eq19.sections[..4]));
     let panels = vec![perpendicular, parallel, eq19, zoom, zoom_b, zoom_c];
     let caption = format!(
-        "Barroso & Celes 2007, Fig. 5: the view frustum seen by the light, with k = 4 z-partitions (n = 1, f = 100, φ = 30°). (a) Light perpendicular to the view direction (overhead) and (b) parallel to it (behind the viewer), with the self-similar partitions of Eq 5, as in the paper: split planes z = {}. (c) Not in the paper's figure: the adaptive partitions of Eq 19 for a light 45° above the view direction (from behind, travelling forward and down; α = {ADAPTIVE_RATIO}): z = {}. (d), (e), (f) Details of (a), (b) and (c) near the eye: the nearest two partitions of (a) and (b) and the nearest three of (c) enlarged. Drawn as the light sees them (horizontal axis −x of light space, to the light's right). Split depths to 4 significant figures. Solid: the frustum's edges and the split planes' cross-sections, each labelled with its depth z right of the panel at the height of its right end; dashed: each partition's orthographic map (its light-space bounding rectangle). Computed from analytic::partition::z_splits; the paper's figure is a sketch.",
+        "Barroso & Celes 2007, Fig. 5: the view frustum seen from the light with k = {k} \
+         z-partitions, n = {n}, f = {f}, φ = {phi:.0}°. (a) Light perpendicular to the view \
+         direction and (b) parallel to it, with Eq 5's self-similar partitions: z = {}. (c), not in \
+         the paper's figure: Eq 19's adaptive partitions for a light {gamma_deg:.0}° from the view \
+         direction (α = {ADAPTIVE_RATIO}): z = {}. (d)–(f) enlarge (a)–(c) near the eye. Dashed: \
+         each partition's map.",
         fmt_planes(ss.planes()),
-        fmt_planes(ad.planes())
+        fmt_planes(ad.planes()),
+        n = view.near(),
+        f = view.far(),
+        phi = view.half_fov().to_degrees(),
+        gamma_deg = gamma.to_degrees(),
     );
     Ok(FromLight {
         title: "The view frustum seen from the light, with z-partitions",
@@ -249,8 +258,16 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
     ];
     p.window = Some((DVec2::new(-sf, -sf - 1.2), DVec2::new(sf, sf)));
     let caption = format!(
-        "Lloyd et al. 2006, Fig. 11: the view frustum seen by the light behind the viewer (n = 1, f = 8, θ = 30°): the near face (side 2n tan θ) inside the far face (2f tan θ), the four side faces as trapezoids between them. With k = 3 self-similar z-partitions (planes {}) each partition's map (dashed) is the square of its far plane, so the maps overlap: the nearer ones lie inside the farther ones, the overlap §5.3 blames for ZP's growth behind. A face partitioning gives each side face its own map (FP+ZP+W). Labelled as the paper's sketch: the near and far planes n and f and the split planes by depth (right of the panel, at the height of each square's top edge), and the faces' sides 2n tan θ and 2f tan θ (the paper writes 2n and 2f, their values at θ = 45°). Unlike the paper, the figure is to scale and f/n = 8, so that the near face shows.",
-        fmt_planes(p.planes.as_slice())
+        "Lloyd et al. 2006, Fig. 11: the view frustum seen from a light behind the viewer, \
+         n = {n}, f = {f}, θ = {theta:.0}°, drawn to scale: the near face inside the far face, the \
+         side faces between them. With k = {k} self-similar z-partitions (planes {}) each map \
+         (dashed) is the square of its far plane, so the nearer maps lie inside the farther ones: \
+         the overlap §5.3 blames for ZP's growth behind. The paper's sketch writes the sides 2n \
+         and 2f, their values at θ = 45°.",
+        fmt_planes(p.planes.as_slice()),
+        n = view.near(),
+        f = view.far(),
+        theta = view.half_fov().to_degrees(),
     );
     Ok(FromLight {
         title: "The view frustum seen from a light behind the viewer",

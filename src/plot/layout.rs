@@ -32,6 +32,10 @@ pub(super) const LIGHT: (f64, f64) = (35.0, 10.0);
 /// the far ones, still show in panel (a).
 const FAR: f64 = 10.0;
 
+/// The eye's near plane and half field of view θ (degrees).
+const NEAR: f64 = 1.0;
+const THETA_DEG: f64 = 30.0;
+
 /// Lines of the map's texel grid drawn in panel (b), per direction.
 const GRID: usize = 9;
 
@@ -72,7 +76,7 @@ fn face_name(r: Region) -> &'static str {
 }
 
 pub(super) fn fig8() -> Result<Fig8, Fail> {
-    let view = ViewFrustum::new(1.0, FAR, 30f64.to_radians())?;
+    let view = ViewFrustum::new(NEAR, FAR, THETA_DEG.to_radians())?;
     let (el, az) = (LIGHT.0.to_radians(), LIGHT.1.to_radians());
     let light = -DVec3::new(el.cos() * az.sin(), el.sin(), el.cos() * az.cos());
     let k = 2;
@@ -166,7 +170,13 @@ impl Figure for Fig8 {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let shown = &self.cells[self.shown];
         let caption = format!(
-            "Lloyd et al. 2005, Fig. 8, computed: face partitioning with k = {} z-partitions per face, LiSPSM-warped (n = 1, f = {FAR}, θ = 30°; light {}° above the horizon, {}° to the right of straight behind, so that the left, right, top and near faces are seen), from scheme::scheme and SchemeResult::atlas. (a) The partitions seen from the light (R: right, L: left, T: top, N: near face; 1 near, 2 far), coloured as in (c). (b) {}: its map's texel grid over it (every eighth of the map, blue; the outermost lines are the map's border): the warp's perspective makes the texels converge. The map is larger than the part: its border is the bounding rectangle of the part's corners in the warped map's (u, v), and the part's edges do not run along u and v there. (a) and (b) are drawn as the light sees them (horizontal axis −x of light space, to the light's right). (c) The {SIZE} × {SIZE} texture by Eq 6: the width is shared among the face pairs (left/right, bottom/top, near) by their largest M_x, each column's height among its partitions by M_z, so that the error after allocation is equal. Each rectangle gives its partition, M_x and M_z (unit resolutions), its share of the texture's width × height and the error after allocation (M_x and M_z over those shares): the z error is equal within each column, and the x error is equal across columns for each column's largest M_x (a column's partition of smaller M_x, here the right face's, is below it). The left and right faces differ in M_z, so their heights differ; the self-similar z-partitions of one face have equal M_z and equal heights. Unlike the paper, whose panels are sketches, (a) and (b) are drawn to scale in the light's view, (b) shows one partition in light space instead of each in a canonical space, and the texture's width, not its height, is shared by M_x (the paper splits its t direction by M_x first, then s by M_z: the same rule with the axes named the other way).",
+            "Lloyd et al. 2005, Fig. 8: face partitioning with k = {} z-partitions per face, \
+             LiSPSM-warped, n = {NEAR}, f = {FAR}, θ = {THETA_DEG}°, light {}° above the horizon \
+             and {}° right of straight behind. (a) The partitions seen from the light (R, L, T, N: \
+             right, left, top, near face; 1 near, 2 far). (b) {} and its map's texel grid. (c) The \
+             texture by Eq 6, widths by M_x, heights by M_z: \"share\" is a partition's part of the \
+             width × height, \"after\" its M_x and M_z over those parts. The paper's panels are \
+             sketches.",
             self.k,
             LIGHT.0,
             LIGHT.1,

@@ -124,10 +124,17 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         // 0.01) is two decades below overhead (0.49) and would be one colour on a linear bar.
         scale: ColourScale::smooth(Axis::log10("share of the map (colour, log scale)", lo, hi)),
         profile,
-        caption: vec![
-            format!("Martin & Tan 2004, Fig. 6, measured: the area the focus region (the eye frustum from n to n + δ, δ = {FOCUS}) covers in the trapezoidal map (maps::tsm::tsm, TsmMap::focus_area),"),
-            "for every light direction above the viewer (top, azimuthal equidistant: overhead at the centre, the horizon at the rim, behind on the left, in front on the right; a logarithmic colour scale over the values found, its ends labelled) and in the vertical plane (bottom, logarithmic, so that the 80 % rule's jump where the light leaves the view's cone shows). n = 1, f = 100, θ = 30°. Unlike the paper, which plots the area as a 3D surface over one angle, this shows the whole hemisphere of light directions and a profile in the vertical plane; the markers at 0° and 180° are the 80 % rule's values exactly behind and in front.".to_string(),
-        ],
+        caption: vec![format!(
+            "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map (80 % rule) covered by \
+             the focus region, the eye frustum from n to n + δ, measured for every light \
+             direction above the viewer (top: overhead at the centre, behind on the left, in \
+             front on the right) and in the vertical plane (bottom); n = {n}, f = {f}, θ = \
+             {theta:.0}°, δ = {FOCUS}. Unlike the paper, which plots one angle as a surface, the \
+             whole hemisphere; the markers are the values exactly behind and in front.",
+            n = view.near(),
+            f = view.far(),
+            theta = view.half_fov().to_degrees(),
+        )],
     })
 }
 

@@ -143,6 +143,9 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
 /// to its right, 180° in front).
 const LIGHT: (f64, f64) = (80.0, 70.0);
 
+/// The eye's frustum: near, far, half field of view θ in degrees.
+const VIEW: (f64, f64, f64) = (1.0, 100.0, 30.0);
+
 /// The share of the hemisphere of light directions (every 2° of elevation and azimuth, weighted
 /// by solid angle) where the 80 % trapezoid's map is covered more by C than the minimum-area
 /// box's, and than the axis-aligned box's.
@@ -169,7 +172,7 @@ pub(super) fn trapezoid_wins() -> Result<(f64, f64), Fail> {
 
 /// The figure's data for a light `el_deg` above the horizon at azimuth `az_deg`.
 pub(super) fn fig3_at(el_deg: f64, az_deg: f64) -> Result<Fig3, Fail> {
-    let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians())?;
+    let view = ViewFrustum::new(VIEW.0, VIEW.1, VIEW.2.to_radians())?;
     let (el, az) = (el_deg.to_radians(), az_deg.to_radians());
     let light = -DVec3::new(el.cos() * az.sin(), el.sin(), el.cos() * az.cos());
     let map = tsm(
@@ -313,14 +316,21 @@ impl Figure for Fig3 {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let wins = self.wins.unwrap_or((f64::NAN, f64::NAN));
         let caption = format!(
-            "Martin & Tan 2004, Figs. 3 and 4, from maps::tsm::tsm (80 % rule, focus δ = {FOCUS}; n = 1, f = 100, θ = 30°; light {}° above the horizon, {}° round from straight behind the viewer towards its right). (a) The eye's frustum E seen from the light, its hull C (filled), the focus region, the trapezoid T and the smallest bounding box B of C, the minimum-area rectangle (one side on an edge of C, as rotating calipers find it); the axis-aligned box of the light's view dotted; E's thin grey lines are its twelve edges: the far face is the quadrilateral at the top, the near face the small one at the apex (the focus region's near face too), the four side edges join them. (b) C in the trapezoidal space N_T: it covers {:.1} % of the map. (c) C in B's space: {:.1} % (the axis-aligned box: {:.1} %). The unused rest is the paper's wastage. Unlike the paper, whose figure is a sketch, the light is ours, chosen where the trapezoid wins clearly, and the paper's smallest bounding box may be rotated (its §5), so B here is the rotated minimum-area one: over the hemisphere of lights (every 2°, by solid angle) the 80 % trapezoid covers more of its map than B for {:.0} % of the directions, more than the axis-aligned box for {:.0} % (docs/errata.md).",
+            "Martin & Tan 2004, Figs. 3 and 4: the 80 % rule's trapezoid T (focus δ = {FOCUS}), \
+             n = {}, f = {}, θ = {}°, light {}° above the horizon, {}° round from behind the \
+             viewer to its right. (a) From the light: the frustum E, its hull C (filled), the \
+             focus region, T and the smallest box B. Unlike the paper, B may be rotated (§5; \
+             dotted: unrotated). C covers {:.1} % of the map in T's space (b), {:.1} % in B's \
+             (c), {:.1} % unrotated; over all lights T beats B for {:.0} % of them.",
+            VIEW.0,
+            VIEW.1,
+            VIEW.2,
             LIGHT.0,
             LIGHT.1,
             100.0 * self.covered_t,
             100.0 * self.covered_o,
             100.0 * self.covered_b,
             100.0 * wins.0,
-            100.0 * wins.1
         );
         let body = frame(
             root,

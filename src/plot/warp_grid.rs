@@ -132,12 +132,21 @@ impl Figure for Fig4 {
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let caption = format!(
+            "Lloyd et al. 2006, Fig. 4, drawn from the warped matrices: n = {n}, f = {f}, θ = \
+             {theta:.0}°, light overhead, the plane y = 0; one column per n′. Top: seen from the \
+             light, the map's {LINES} × {LINES} texel grid (blue) over the view frustum (black), \
+             pressed towards the near plane by the warp. Bottom: in the shadow map, the frustum's \
+             planes of constant depth (orange) and rays from the eye (green). The paper's rows are \
+             sketches.",
+            n = self.view.near(),
+            f = self.view.far(),
+            theta = self.view.half_fov().to_degrees(),
+        );
         let body = frame(
             root,
             "Perspective warping: the shadow map's grid as n′ decreases from ∞ to n, light overhead",
-            &[
-                "Lloyd et al. 2006, Fig. 4 (n = 1, f = 10, θ = 30°), from the crate's built matrices (maps::warp with WarpRule::Eta) on the plane y = 0; one column per n′. Top row: seen from the light (depth z across, eye-space x up), the map's 12 × 12 texel grid (blue) over the view frustum (black); the warp compresses it towards the near plane. Bottom row: in the shadow map (u across, v up), the frustum's own grid (planes of constant depth, orange, and rays from the eye, green) stretched to fill the map. The paper draws the same two rows as sketches.",
-            ],
+            &[caption.as_str()],
         )?;
         // Two rows (the light's view, the map), one column per n′, as in the paper; each column
         // headed by its η and n′ on two lines. The columns share their axes: only the first has

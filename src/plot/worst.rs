@@ -106,16 +106,17 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
     Ok(Charts {
         size: (520, 860),
         title: "Worst case over all light directions against the light-behind closed form".into(),
-        caption: vec![
-            "Lloyd et al. 2006, §5.3 (no figure in the paper; its claim: the worst S̄ over all light directions is within 2–3 times the light-behind value). f/n = 1000, θ = 30°.".into(),
-            format!(
-                "Worst case measured by scheme::sweep on each scheme's own matrices (ZP: unwarped log partitions; ZP+W: LiSPSM-warped; FP+ZP+W: faces, warped) over the {} light directions of lloyd2006-fig7 (every {}° of elevation and {}° of azimuth; ZP+W at k = 1 is Fig 7's LiSPSM panel, with the same maximum); behind from Eq 20, 21. Worst case / behind: {}; a ratio outside the shaded band (2 to 3) disagrees with the paper's claim. Behind, ZP+W equals ZP (one dashed curve) and FP+ZP+W's worst case is its value behind (one curve).",
-                ELEVATIONS * AZIMUTHS,
-                90 / (ELEVATIONS - 1),
-                360 / AZIMUTHS,
-                extremes.join("; ")
-            ),
-        ],
+        caption: vec![format!(
+            "Lloyd et al. 2006, §5.3, which has no figure, claims the worst S̄ over all light \
+             directions within 2–3 times the light-behind S̄. Here f/n = {ratio_fn}, θ = \
+             {theta:.0}°: the worst case measured on each scheme's matrices for light directions \
+             {step}° apart (as in Fig. 7) over S̄ behind (Eq 20, 21): {}. Behind, ZP+W equals ZP, \
+             and FP+ZP+W's worst case is its value behind.",
+            extremes.join("; "),
+            ratio_fn = view.far() / view.near(),
+            theta = view.half_fov().to_degrees(),
+            step = 90 / (ELEVATIONS - 1),
+        )],
         charts: vec![abs, ratio],
     })
 }

@@ -127,26 +127,21 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
             ColourScale::smooth(Axis::log_base(format!("{q} (log₅)"), lo, hi, 5.0))
         })
         .collect();
-    let range_text: Vec<String> = QUANTITIES
+    // LiSPSM's λ (its built matrix's n′) per angle θ, for the caption.
+    let lispsm: Vec<&str> = lambdas_all.iter().map(|ls| ls[1].as_str()).collect();
+    let angles: Vec<&str> = row_angles
         .iter()
-        .zip(ranges)
-        .map(|(q, (lo, hi))| format!("{q} {lo:.3} to {hi:.1}"))
+        .map(|a| a.trim_start_matches("θ = "))
         .collect();
-    // λ per angle θ (rows) and scheme, for the caption.
-    let lambda_text: Vec<String> = row_angles
-        .iter()
-        .zip(&lambdas_all)
-        .map(|(theta, ls)| format!("{theta}: {}", ls.join(", ")))
-        .collect();
-    let caption = vec![
-        "Zhang et al. 2009, Fig. 3, measured: E_p = 2 m_z, E_q = 2 m_x of each scheme's built matrix (maps::warp, measure::point_error) on the frustum's vertical plane x = 0 (z across, y up, to scale). (a)–(c) one block per quantity with its colour bar under it; in each, as in the paper, a column per scheme and a row per light angle θ. Unlike the paper, the scene insets beside each row are omitted.".to_string(),
-        format!(
-            "n = 1, f = 100, φ = π/6; light above and in front of the viewer at angle θ to the view direction. Warp parameter λ (SSM, LiSPSM, TSM) at {}; LiSPSM: λ = (n + √(fn))/sin θ; TSM: 80 % rule, focus δ = {TSM_FOCUS}. Ranges: {}.",
-            lambda_text.join("; "),
-            range_text.join(", ")
-        ),
-        format!("Unlike the paper's single log₅ scale, each quantity has its own colour bar over its range. Each cell is cut to the frustum and sampled at the centroid of what is left; the first column starts at the near plane ({NZ} × {NY} cells per panel)."),
-    ];
+    let caption = vec![format!(
+        "Zhang et al. 2009, Fig. 3: E_p = 2 m_z and E_q = 2 m_x measured on each scheme's matrix \
+         in the frustum's vertical plane, n = {n}, f = {f}, φ = π/6, the light above and in front \
+         of the viewer at angle θ = {} to the view direction. LiSPSM: λ = (n + √(fn))/sin θ = {}; \
+         TSM: the 80 % rule, focus δ = {TSM_FOCUS}. Unlike the paper, each quantity has its own \
+         log₅ colour bar, and the scene insets beside the rows are left out.",
+        angles.join(", "),
+        lispsm.join(", "),
+    )];
     Ok(Fig3 {
         rows,
         row_angles,

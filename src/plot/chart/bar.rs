@@ -1,7 +1,7 @@
 //! Colour bars: a scale's bands as one raster, an outline, and the range's ends labelled.
 
 use super::super::Fail;
-use super::axis::{fmt_times_ten, Axis, Chart2d, Ticked};
+use super::axis::{Axis, Chart2d, Ticked};
 use super::heat::ColourScale;
 use super::raster::Raster;
 use super::FONT;
@@ -18,12 +18,6 @@ fn three_digits(v: f64) -> f64 {
     }
     let p = 10f64.powf(v.abs().log10().floor() - 2.0);
     (v / p).round() * p
-}
-
-/// A value as a colour bar labels its ends: three significant digits, written as
-/// [`fmt_times_ten`] writes them (so that a caption's range agrees with its bar).
-pub(crate) fn fmt_three_digits(v: f64) -> String {
-    fmt_times_ten(three_digits(v))
 }
 
 /// The labelled ticks of a colour bar (axis space) with their labels: both ends of its range,
