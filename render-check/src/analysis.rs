@@ -20,6 +20,7 @@ use crate::perspective::{centred, lloyd2006, one_sided, perspective_error};
 use crate::scene::{ray_occluded, Mesh, Scene, FACING};
 use crate::schemes::{Built, Scheme, View};
 use crate::shadows::{debug_pixel, shadow_decidable, MapGeom};
+use crate::warpfit::WarpFit;
 use glam::{DMat2, DVec2, DVec3};
 use serde::Serialize;
 use shadow_aliasing::measure::vertex::vertex_max;
@@ -104,6 +105,24 @@ pub struct Measured {
     /// The smallest such ratio over the maps whose worst body vertex is visible (`None` where no
     /// map's is).
     pub lens_frame_ratio_worst_visible: Option<f64>,
+    /// The GPU's texel position of each pixel against the exact point's (`f64`) under the map's
+    /// matrix, texels: the 99th percentile over the visible pixels in a map.
+    pub texel_position_p99: f64,
+    /// The largest of the same.
+    pub texel_position_max: f64,
+    /// LiSPSM's maps (`WarpRule::Lispsm`): the largest relative difference, over the maps, of
+    /// w's far/near ratio along the warp axis fitted from the GPU's texel coordinates
+    /// ([`crate::warpfit`]) from `1 + Δ/n′` with n′ from the paper ([`crate::papers`]); `None`
+    /// for the other schemes.
+    pub lispsm_warp_rel_diff: Option<f64>,
+    /// TSM: the fraction of the map, from its top line, up to the focus line, fitted from the
+    /// GPU's texel coordinates (Martin & Tan: 0.8); `None` for the other schemes.
+    pub tsm_focus_fraction: Option<f64>,
+    /// Cascades: visible pixels looked up in another map than the split planes computed from the
+    /// paper ([`crate::papers::practical_planes`], with the requested blend bands) name at the
+    /// pixel's exact depth (pixels within 10⁻⁴ of a plane left out); `None` for the other
+    /// schemes.
+    pub split_mismatches: Option<usize>,
 }
 
 /// Per-pixel results (for the heat maps) and the case's numbers.
@@ -422,10 +441,7 @@ pub fn analyse(
     let mut ground_m = vec![(0.0f64, 0.0f64); nmaps];
     let (mut shadow, mut shadow_checked, mut lit, mut lit_checked) = (0, 0, 0, 0);
     let (mut misses, mut falses, mut band, mut band_mis, mut uncovered) = (0, 0, 0, 0, 0);
-    let blended = built
-        .maps
-        .iter()
-        .any(|m| m.reported.blend.0 < m.reported.blend.1);
+    let blended = !built.bands.is_empty();
     let (mut blend_px, mut blend_mis) = (0usize, 0usize);
     let mut lens_rels = Vec::new();
     let mut lens = vec![f64::NAN; n];
@@ -437,11 +453,45 @@ pub fn analyse(
     // RENDER_CHECK_DEBUG).
     let mut lens_full_m = vec![0.0f64; nmaps];
     let debug = std::env::var_os("RENDER_CHECK_DEBUG").is_some();
+    let mut positions = Vec::new();
+    let mut fits = warp_fits(view, built, scheme);
+    let mut split_mis = 0usize;
     for (i, q) in px.iter().enumerate() {
         if q.class == Class::Sky {
             continue;
         }
         visible += 1;
+        if let Some(m) = built.maps.get(q.part) {
+            let hc = m.gpu * q.p.extend(1.0);
+            if hc.w > 0.0 {
+                let r = f64::from(res);
+                let ds = (hc.x / hc.w + 1.0) * 0.5 * r - f64::from(out.texel[i][0]);
+                let dt = (hc.y / hc.w + 1.0) * 0.5 * r - f64::from(out.texel[i][1]);
+                positions.push(ds.hypot(dt));
+            }
+            if let Some(Some(f)) = fits.get_mut(q.part) {
+                let r = f64::from(res);
+                f.add(
+                    q.p,
+                    f64::from(out.texel[i][0]) / r,
+                    f64::from(out.texel[i][1]) / r,
+                );
+            }
+        }
+        if let Some(expected) = paper_part(built, -q.p.z) {
+            if expected != q.part {
+                split_mis += 1;
+                if debug && split_mis < 6 {
+                    eprintln!(
+                        "  split mismatch ({}, {}) depth {}: map {} where the planes name {expected}",
+                        i % w,
+                        i / w,
+                        -q.p.z,
+                        q.part
+                    );
+                }
+            }
+        }
         if blended && in_band(out, i, q.part, built, -q.p.z) {
             blend_px += 1;
             if !blend_agrees(out, i, q.part, built, -q.p.z) {
@@ -580,6 +630,8 @@ pub fn analyse(
     }
     rels.sort_by(f64::total_cmp);
     lens_rels.sort_by(f64::total_cmp);
+    positions.sort_by(f64::total_cmp);
+    let (lispsm_warp, tsm_focus) = warp_measures(view, built, scheme, &fits, debug);
     let (ratio, worst) = frame_ratios(&px, view, built, &rendered_m, (width, height, res));
     let (lens_ratio, lens_worst) = lens_ratios(&px, view, built, &lens_m, (width, height));
     if debug {
@@ -624,6 +676,11 @@ pub fn analyse(
         max_lens,
         lens_frame_ratio: lens_ratio,
         lens_frame_ratio_worst_visible: lens_worst,
+        texel_position_p99: percentile(&positions, 0.99),
+        texel_position_max: positions.last().copied().unwrap_or(f64::NAN),
+        lispsm_warp_rel_diff: lispsm_warp,
+        tsm_focus_fraction: tsm_focus,
+        split_mismatches: (!built.planes.is_empty()).then_some(split_mis),
     };
     Ok(Analysis {
         measured,
@@ -843,5 +900,129 @@ impl Lloyd {
                 .max((ground[k].1 / ez - 1.0).abs());
         }
         d
+    }
+}
+
+/// How near (relatively) a pixel's depth may lie to a split plane or a band's end and be left
+/// out of the split check: the GPU's view depth is interpolated in `f32`.
+const PLANE_TOLERANCE: f64 = 1e-4;
+
+/// The map the paper's split planes and requested blend bands name at view depth `z`: in a band,
+/// its first map; elsewhere the slice holding `z` (the first and last slices reaching beyond the
+/// planes). `None` for a scheme not selected by depth, or within [`PLANE_TOLERANCE`] of a plane.
+fn paper_part(built: &Built, z: f64) -> Option<usize> {
+    let p = &built.planes;
+    if p.len() < 2 {
+        return None;
+    }
+    let near = |x: f64| (z - x).abs() <= PLANE_TOLERANCE * z;
+    if p.iter().any(|&x| near(x)) || built.bands.iter().any(|&(_, e)| near(e)) {
+        return None;
+    }
+    if let Some(j) = built.bands.iter().position(|&(b, e)| z >= b && z < e) {
+        return Some(j);
+    }
+    let k = p.len() - 1;
+    Some((1..k).take_while(|&i| z >= p[i]).count())
+}
+
+/// Per map, a fit of its warp where the paper's expectation is measured: LiSPSM's maps (the
+/// single map and each cascade's) and TSM's.
+fn warp_fits(view: &View, built: &Built, scheme: Scheme) -> Vec<Option<WarpFit>> {
+    let measured = matches!(
+        scheme,
+        Scheme::Lispsm | Scheme::Cascades | Scheme::BlendedCascades | Scheme::Tsm
+    );
+    let axis = crate::papers::warp_axis(view.light_eye);
+    built
+        .bodies
+        .iter()
+        .map(|body| {
+            let axis = axis.filter(|_| measured && !body.is_empty())?;
+            let c = body.iter().copied().sum::<DVec3>() / body.len() as f64;
+            let r = body.iter().map(|v| (*v - c).length()).fold(0.0, f64::max);
+            Some(WarpFit::new(axis, view.light_eye, c, r))
+        })
+        .collect()
+}
+
+/// Below this many pixels a map's warp is not fitted (a cascade's sliver at the horizon).
+const MIN_FIT_PIXELS: usize = 2000;
+
+/// LiSPSM's w ratio against the paper's n′ (the largest relative difference over the maps), and
+/// TSM's focus fraction, from the fits (docs/rendered.md, "What is measured", 8–9). A scheme
+/// measured with no map fitted gives NaN (no measurement is no pass).
+fn warp_measures(
+    view: &View,
+    built: &Built,
+    scheme: Scheme,
+    fits: &[Option<WarpFit>],
+    debug: bool,
+) -> (Option<f64>, Option<f64>) {
+    let lispsm = matches!(
+        scheme,
+        Scheme::Lispsm | Scheme::Cascades | Scheme::BlendedCascades
+    );
+    let tsm = scheme == Scheme::Tsm;
+    if !(lispsm || tsm) {
+        return (None, None);
+    }
+    let Some(axis) = crate::papers::warp_axis(view.light_eye) else {
+        return (None, None);
+    };
+    let sin_g = crate::papers::sin_gamma(view.light_eye);
+    let (mut worst, mut frac, mut any) = (0.0f64, f64::NAN, false);
+    for (k, fit) in fits.iter().enumerate() {
+        let Some(warp) = fit.as_ref().and_then(WarpFit::solve) else {
+            continue;
+        };
+        if warp.pixels < MIN_FIT_PIXELS {
+            continue;
+        }
+        let body = &built.bodies[k];
+        let a: Vec<f64> = body.iter().map(|v| axis.dot(*v)).collect();
+        let lo = a.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = a.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let n_b = body.iter().map(|v| -v.z).fold(f64::INFINITY, f64::min);
+        let f_b = body.iter().map(|v| -v.z).fold(f64::NEG_INFINITY, f64::max);
+        if lispsm {
+            let np = crate::papers::lispsm_n_prime(n_b, f_b, sin_g);
+            let expected = 1.0 + (hi - lo) / np;
+            let got = warp.w_ratio(body);
+            let d = (got / expected - 1.0).abs();
+            if debug {
+                eprintln!(
+                    "  map {k}: w ratio {got:.6} fitted, 1 + Δ/n′ = {expected:.6} (paper n′ {np:.4}, reported {:.4}, Δ {:.4})",
+                    built.maps[k].reported.n_prime,
+                    hi - lo
+                );
+            }
+            worst = worst.max(if d.is_nan() { f64::INFINITY } else { d });
+            any = true;
+        } else {
+            let fr = &view.frustum;
+            let focus = DVec3::new(0.0, 0.0, -(n_b + 0.25 * (fr.far() - fr.near())));
+            let af = axis.dot(focus);
+            let c = warp.warp_coordinate();
+            let x = |p: DVec3| {
+                let st = warp.st(p);
+                if c == 0 {
+                    st.0
+                } else {
+                    st.1
+                }
+            };
+            let (top, base) = (focus + axis * (lo - af), focus + axis * (hi - af));
+            frac = (x(focus) - x(top)) / (x(base) - x(top));
+            if debug {
+                eprintln!("  map {k}: focus fraction {frac:.6} (coordinate {c})");
+            }
+            any = true;
+        }
+    }
+    if lispsm {
+        (Some(if any { worst } else { f64::NAN }), None)
+    } else {
+        (None, Some(frac))
     }
 }

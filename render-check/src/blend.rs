@@ -1,5 +1,6 @@
-//! Cascades' cross-fade (docs/rendered.md, "What is measured", 6): the frame's blend bands at a
-//! pixel's exact view depth, and whether the shader's cross-fade there is the frame's.
+//! Cascades' cross-fade (docs/rendered.md, "What is measured", 6): the blend bands the requested
+//! overlap makes at a pixel's exact view depth, and whether the shader's cross-fade there is
+//! theirs.
 
 use crate::gpu::FrameOutput;
 use crate::schemes::Built;
@@ -13,12 +14,12 @@ pub const BLEND_WEIGHT_TOLERANCE: f64 = 1e-3;
 pub const BLEND_VALUE_TOLERANCE: f64 = 1e-4;
 
 /// The blend band of `built` holding view depth `z`: its first map j and the weight of map
-/// j + 1, from the frame's own `blend` (`FrameMap::blend`, as reported: a fault does not move
-/// it).
+/// j + 1, from the bands the requested overlap makes (`Built::bands`, computed by render-check
+/// from the paper's split planes and the overlap, not `FrameMap::blend`: a band the frame places
+/// wrongly, or drops, is a mismatch).
 pub(crate) fn band_at(built: &Built, z: f64) -> Option<(usize, f64)> {
     let n = built.maps.len();
-    built.maps.iter().enumerate().find_map(|(j, m)| {
-        let (b, e) = m.reported.blend;
+    built.bands.iter().enumerate().find_map(|(j, &(b, e))| {
         (j + 1 < n && b < e && z >= b && z < e).then(|| (j, (z - b) / (e - b)))
     })
 }

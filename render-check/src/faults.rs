@@ -14,6 +14,7 @@ use crate::schemes::{setups, Map, Scheme, View};
 use crate::targets::violations;
 use glam::{DMat4, DVec3, DVec4};
 use shadow_aliasing::frame::FrameMap;
+use shadow_aliasing::maps::ClipDepth;
 use std::collections::BTreeMap;
 
 /// One deliberate fault.
@@ -48,6 +49,25 @@ pub enum Fault {
     /// The blend band ignored: inside a cascade's band the shader shades with the band's first
     /// map alone (its visibility, not the cross-fade `sa_cascaded_visibility` computes).
     BlendIgnored,
+    /// LiSPSM's n′ without its 1/sin γ (`WarpRule::Lispsm`'s maps: n′ × sin γ, refitted to the
+    /// body as [`Fault::NPrimeDouble`]).
+    LispsmNoSin,
+    /// TSM's focus line sent to ξ = −0.8 instead of Martin & Tan's −0.6 (n′ scaled by the ratio
+    /// of the two η).
+    TsmFocus,
+    /// The blend bands 1.5 × as wide as the overlap makes them (`FrameMap::blend` and the
+    /// records alike, the band's start kept).
+    BlendWide,
+    /// The blended cascades built with no overlap (the request dropped).
+    OverlapDropped,
+    /// The upload origin rounded through `f32` (an API taking the camera as `Vec3`): the records
+    /// relative to the rounded origin, the vertices to the true one.
+    OriginF32,
+    /// Every split but the last ends 3 % past its map's slice (the records' split ranges; the
+    /// maps unchanged).
+    SplitsPast,
+    /// The reversed-depth comparison of the crate's WGSL module made strict (`>` for `>=`).
+    ReversedStrict,
 }
 
 /// How far from the world origin a set-up's camera must be for [`Fault::PlainWorld`] to apply
@@ -60,6 +80,12 @@ const SCALE: f64 = 1.01;
 const LIGHT_DEG: f64 = 0.5;
 /// The depth shift of [`Fault::DepthShift`], in the frame's world-space texel edges.
 const DEPTH_TEXELS: f64 = 2.0;
+/// [`Fault::BlendWide`]'s factor.
+const BLEND_WIDE: f64 = 1.5;
+/// [`Fault::SplitsPast`]'s factor on each split's far end.
+const SPLITS_PAST: f64 = 1.03;
+/// [`Fault::TsmFocus`]'s ξ (Martin & Tan's is −0.6).
+const TSM_XI: f64 = -0.8;
 
 /// OpenGL depth → depth [0, 1] (`ShadowMatrix::with_clip_depth`: row 2 becomes (row 2 + row 3)/2).
 const GL_TO_01: DMat4 = DMat4::from_cols(
@@ -71,7 +97,7 @@ const GL_TO_01: DMat4 = DMat4::from_cols(
 
 impl Fault {
     /// Every fault, in the order of the self-test.
-    pub const ALL: [Fault; 11] = [
+    pub const ALL: [Fault; 18] = [
         Fault::MatrixScale,
         Fault::DepthShift,
         Fault::NPrimeDouble,
@@ -83,6 +109,13 @@ impl Fault {
         Fault::PlainWorld,
         Fault::CullTight,
         Fault::BlendIgnored,
+        Fault::LispsmNoSin,
+        Fault::TsmFocus,
+        Fault::BlendWide,
+        Fault::OverlapDropped,
+        Fault::OriginF32,
+        Fault::SplitsPast,
+        Fault::ReversedStrict,
     ];
 
     /// The name `--fault` takes.
@@ -99,6 +132,13 @@ impl Fault {
             Fault::PlainWorld => "plain-world",
             Fault::CullTight => "cull-tight",
             Fault::BlendIgnored => "blend-ignored",
+            Fault::LispsmNoSin => "lispsm-no-sin",
+            Fault::TsmFocus => "tsm-focus-0.8",
+            Fault::BlendWide => "blend-wide",
+            Fault::OverlapDropped => "overlap-dropped",
+            Fault::OriginF32 => "origin-f32",
+            Fault::SplitsPast => "splits-past",
+            Fault::ReversedStrict => "reversed-strict",
         }
     }
 
@@ -116,6 +156,13 @@ impl Fault {
             Fault::PlainWorld => "the plain f32 world matrix in place of the relative upload path",
             Fault::CullTight => "culling too tight: casters' volume cut to the view slice",
             Fault::BlendIgnored => "the blend band ignored: one map shades the band",
+            Fault::LispsmNoSin => "LiSPSM's n' without its 1/sin gamma",
+            Fault::TsmFocus => "TSM's focus line at xi = -0.8 instead of -0.6",
+            Fault::BlendWide => "blend bands 1.5 x as wide as the overlap makes them",
+            Fault::OverlapDropped => "the blended cascades' overlap dropped (no band)",
+            Fault::OriginF32 => "the upload origin rounded through f32",
+            Fault::SplitsPast => "every split but the last 3 % past its map",
+            Fault::ReversedStrict => "the reversed-depth comparison strict (> for >=)",
         }
     }
 
@@ -143,7 +190,18 @@ impl Fault {
             Fault::CascadeOffByOne => matches!(scheme, Scheme::Cascades | Scheme::StableCascades),
             Fault::Unsnapped => scheme == Scheme::StableCascades,
             Fault::WrongFace => scheme == Scheme::Faces,
-            Fault::BlendIgnored => scheme == Scheme::BlendedCascades,
+            Fault::BlendIgnored | Fault::BlendWide | Fault::OverlapDropped => {
+                scheme == Scheme::BlendedCascades
+            }
+            Fault::LispsmNoSin => matches!(
+                scheme,
+                Scheme::Lispsm | Scheme::Cascades | Scheme::BlendedCascades
+            ),
+            Fault::TsmFocus => scheme == Scheme::Tsm,
+            Fault::SplitsPast => matches!(
+                scheme,
+                Scheme::Cascades | Scheme::StableCascades | Scheme::BlendedCascades
+            ),
             _ => true,
         }
     }
@@ -151,7 +209,58 @@ impl Fault {
     /// Whether the fault can change a case of `scene` at all: the plain world matrix only far
     /// from the world origin ([`FAR_FROM_ORIGIN`]).
     pub fn applies_to_scene(self, scene: &crate::scene::Scene) -> bool {
-        self != Fault::PlainWorld || DVec3::from_array(scene.camera.eye).length() >= FAR_FROM_ORIGIN
+        let eye = DVec3::from_array(scene.camera.eye);
+        match self {
+            Fault::PlainWorld => eye.length() >= FAR_FROM_ORIGIN,
+            // Only a camera f32 cannot hold can tell.
+            Fault::OriginF32 => eye.as_vec3().as_dvec3() != eye,
+            _ => true,
+        }
+    }
+
+    /// Whether the fault can change a case drawn with `clip_depth`: the strict reversed
+    /// comparison only in reversed depth.
+    pub fn applies_to_depth(self, clip_depth: ClipDepth) -> bool {
+        self != Fault::ReversedStrict || clip_depth == ClipDepth::Reversed
+    }
+
+    /// The shaders' source under `fault`: [`crate::gpu::shader_source`], with the crate's
+    /// reversed-depth comparison made strict for [`Fault::ReversedStrict`].
+    ///
+    /// # Errors
+    /// The comparison not found in the crate's module (the fault could not be applied).
+    pub fn shader_source(fault: Option<Fault>) -> Result<String, String> {
+        let src = crate::gpu::shader_source();
+        if fault != Some(Fault::ReversedStrict) {
+            return Ok(src);
+        }
+        const GE: &str = "return d >= stored;";
+        if !src.contains(GE) {
+            return Err(format!(
+                "reversed-strict: the crate's WGSL module has no `{GE}` to make strict"
+            ));
+        }
+        Ok(src.replacen(GE, "return d > stored;", 1))
+    }
+
+    /// The upload origin the records are made relative to: the camera's position, rounded
+    /// through `f32` under [`Fault::OriginF32`].
+    pub fn upload_origin(fault: Option<Fault>, origin: DVec3) -> DVec3 {
+        if fault == Some(Fault::OriginF32) {
+            origin.as_vec3().as_dvec3()
+        } else {
+            origin
+        }
+    }
+
+    /// A map's blend band as the frame reports it and the record carries it: 1.5 × as wide under
+    /// [`Fault::BlendWide`].
+    pub fn blend(fault: Option<Fault>, (b, e): (f64, f64)) -> (f64, f64) {
+        if fault == Some(Fault::BlendWide) && e > b {
+            (b, b + BLEND_WIDE * (e - b))
+        } else {
+            (b, e)
+        }
     }
 
     /// How the maps are culled when `cull` asks for culling.
@@ -190,8 +299,30 @@ impl Fault {
 
     /// The faulted OpenGL-depth matrix of `map` (its frame map `fm`, as built `built`), or
     /// `None` when this fault leaves the matrix alone.
-    pub fn matrix(self, fm: &FrameMap, built: DMat4, view: &View) -> Option<DMat4> {
+    pub fn matrix(self, scheme: Scheme, fm: &FrameMap, built: DMat4, view: &View) -> Option<DMat4> {
+        if !self.applies_to(scheme) {
+            return None;
+        }
         match self {
+            Fault::LispsmNoSin => {
+                n_prime_scaled(built, fm.body(), crate::papers::sin_gamma(view.light_eye))
+            }
+            Fault::TsmFocus => {
+                let axis = crate::papers::warp_axis(view.light_eye)?;
+                let body = fm.body();
+                let a: Vec<f64> = body.iter().map(|v| axis.dot(*v)).collect();
+                let lo = a.iter().copied().fold(f64::INFINITY, f64::min);
+                let hi = a.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+                let n_b = body.iter().map(|v| -v.z).fold(f64::INFINITY, f64::min);
+                let fr = &view.frustum;
+                let focus = DVec3::new(0.0, 0.0, -(n_b + 0.25 * (fr.far() - fr.near())));
+                let (lambda, delta) = (hi - lo, axis.dot(focus) - lo);
+                let k = crate::papers::tsm_eta(lambda, delta, TSM_XI)
+                    / crate::papers::tsm_eta(lambda, delta, -0.6);
+                (k.is_finite() && k > 0.0)
+                    .then(|| n_prime_scaled(built, body, k))
+                    .flatten()
+            }
             Fault::MatrixScale => Some(DMat4::from_scale(DVec3::new(SCALE, SCALE, 1.0)) * built),
             Fault::DepthShift => Some(
                 built * DMat4::from_translation(view.light_eye * (DEPTH_TEXELS * fm.texel_world)),
@@ -240,6 +371,14 @@ impl Fault {
                 }
                 true
             }
+            Some(Fault::SplitsPast) => {
+                let n = maps.len();
+                for i in 0..n.saturating_sub(1) {
+                    maps[i].far *= SPLITS_PAST;
+                    maps[i + 1].near = maps[i].far;
+                }
+                n > 1
+            }
             Some(Fault::WrongFace) => {
                 let mut faces: Vec<i32> = maps.iter().map(|m| m.region).collect();
                 faces.sort_unstable();
@@ -285,7 +424,12 @@ pub struct SelfTestRow {
     pub targets: BTreeMap<String, usize>,
     /// The first counted violation or error, with its case.
     pub example: String,
+    /// The set-ups with a case counted in `failing`.
+    pub setups: std::collections::BTreeSet<String>,
 }
+
+/// A fault counts as caught by the self-test only in at least this many set-ups.
+pub const MIN_SETUPS_CAUGHT: usize = 2;
 
 /// The target a line of [`violations`] names (the text before its value).
 pub fn target_name(violation: &str) -> String {
@@ -317,12 +461,26 @@ pub fn self_test(gpu: &Gpu, log: impl Fn(&str)) -> Result<Vec<SelfTestRow>, Stri
             ..SelfTestRow::default()
         };
         let t = std::time::Instant::now();
-        for setup in &all {
+        // A fault in the shaders' source runs on its own device.
+        let own;
+        let gpu = if fault == Some(Fault::ReversedStrict) {
+            own = Gpu::with_source(&Fault::shader_source(fault)?)?;
+            &own
+        } else {
+            gpu
+        };
+        for (si, setup) in all.iter().enumerate() {
             for scheme in Scheme::ALL {
-                if fault.is_some_and(|f| !f.applies_to(scheme) || !f.applies_to_scene(&setup.scene))
-                {
+                let clip_depth = crate::run::case_clip_depth(si, scheme);
+                if fault.is_some_and(|f| {
+                    !f.applies_to(scheme)
+                        || !f.applies_to_scene(&setup.scene)
+                        || !f.applies_to_depth(clip_depth)
+                }) {
                     continue;
                 }
+                let mut sizes = sizes;
+                sizes.render.clip_depth = clip_depth;
                 row.cases += 1;
                 let case = format!("{}/{}", setup.name, scheme.name());
                 match run_full(gpu, &setup.name, &setup.scene, scheme, sizes) {
@@ -337,6 +495,7 @@ pub fn self_test(gpu: &Gpu, log: impl Fn(&str)) -> Result<Vec<SelfTestRow>, Stri
                         }
                         if !v.is_empty() {
                             row.failing += 1;
+                            row.setups.insert(setup.name.clone());
                             for x in &v {
                                 *row.targets.entry(target_name(x)).or_default() += 1;
                             }

@@ -32,6 +32,8 @@ pub struct CaseSummary {
     pub shimmer_changed_fraction: Option<f64>,
     /// The shadow-edge points the shimmer test followed (cascade schemes).
     pub shimmer_points: Option<usize>,
+    /// The records' clip-depth convention: "zero_to_one" or "reversed".
+    pub clip_depth: &'static str,
 }
 
 /// summary.json.
@@ -197,6 +199,19 @@ impl Upload {
     }
 }
 
+/// The clip-depth convention of the case of set-up number `setup` (in its list) and `scheme` in
+/// a run that does not ask for one: reversed depth where their indices' sum is even, depth
+/// [0, 1] elsewhere, so that every set-up and every scheme is drawn in both conventions at no
+/// extra cost.
+pub fn case_clip_depth(setup: usize, scheme: Scheme) -> ClipDepth {
+    let k = Scheme::ALL.iter().position(|&s| s == scheme).unwrap_or(0);
+    if (setup + k).is_multiple_of(2) {
+        ClipDepth::Reversed
+    } else {
+        ClipDepth::ZeroToOne
+    }
+}
+
 /// Renders and analyses one case.
 ///
 /// # Errors
@@ -249,6 +264,11 @@ pub fn run_case(
             measured: a.measured.clone(),
             shimmer_changed_fraction: None,
             shimmer_points: None,
+            clip_depth: if sizes.render.clip_depth == ClipDepth::Reversed {
+                "reversed"
+            } else {
+                "zero_to_one"
+            },
         },
         color: out.color,
         overlay: out.overlay,

@@ -192,6 +192,13 @@ pub struct Built {
     /// The fault `blend-ignored`: the shader shades a cascade by its first map alone inside the
     /// blend band.
     pub one_map_in_band: bool,
+    /// The cascades' split planes as the paper places them ([`crate::papers::practical_planes`]
+    /// over the camera's near and far, computed here, not by the crate); empty for a scheme not
+    /// selected by depth.
+    pub planes: Vec<f64>,
+    /// The blend bands the requested overlap makes ([`crate::papers::blend_bands`], computed
+    /// here, not `FrameMap::blend`); empty for a scheme that requests none.
+    pub bands: Vec<(f64, f64)>,
 }
 
 /// The camera's frustum and matrices.
@@ -275,8 +282,12 @@ fn face_id(f: Face) -> i32 {
 }
 
 /// The cascades' split scheme (practical, λ = 0.75) and count, for both cascade schemes.
-const CASCADE_SPLIT: SplitScheme = SplitScheme::Practical { lambda: 0.75 };
-const CASCADES: usize = 4;
+const CASCADE_SPLIT: SplitScheme = SplitScheme::Practical {
+    lambda: CASCADE_LAMBDA,
+};
+/// The practical split's λ (the logarithmic part) of both cascade schemes.
+pub const CASCADE_LAMBDA: f64 = 0.75;
+pub const CASCADES: usize = 4;
 /// [`Scheme::BlendedCascades`]: each cascade but the last reaches this fraction of its own depth
 /// into the next (`CascadeSplits::Scheme`'s overlap), the band cross-faded.
 pub const BLEND_OVERLAP: f64 = 0.25;
@@ -311,8 +322,14 @@ fn bounds(scene: &Scene) -> Result<(Vec<Aabb>, Vec<Aabb>), String> {
     Ok((receivers, casters))
 }
 
-/// The frame API's scheme for `scheme_`.
-fn frame_scheme(scheme_: Scheme, view: &ViewFrustum, res: u32) -> FrameScheme<'static> {
+/// The frame API's scheme for `scheme_` (the fault `overlap-dropped` asks the blended cascades
+/// for no overlap).
+fn frame_scheme(
+    scheme_: Scheme,
+    view: &ViewFrustum,
+    res: u32,
+    fault: Option<Fault>,
+) -> FrameScheme<'static> {
     let practical = CascadeSplits::Scheme {
         scheme: CASCADE_SPLIT,
         k: CASCADES,
@@ -339,7 +356,11 @@ fn frame_scheme(scheme_: Scheme, view: &ViewFrustum, res: u32) -> FrameScheme<'s
             splits: CascadeSplits::Scheme {
                 scheme: CASCADE_SPLIT,
                 k: CASCADES,
-                overlap: BLEND_OVERLAP,
+                overlap: if fault == Some(Fault::OverlapDropped) {
+                    0.0
+                } else {
+                    BLEND_OVERLAP
+                },
             },
             rule: WarpRule::Lispsm,
         },
@@ -400,7 +421,7 @@ pub fn build(
         } else {
             Bound::Unbounded
         })
-        .scheme(frame_scheme(scheme_, fr, res));
+        .scheme(frame_scheme(scheme_, fr, res, fault));
     let f = frame(&input).map_err(e)?;
     if f.is_empty() {
         return Err(format!(
@@ -417,9 +438,11 @@ pub fn build(
             let mut record = if plain {
                 m.gpu(clip_depth)
             } else {
-                m.gpu_relative(origin, clip_depth)
+                m.gpu_relative(Fault::upload_origin(fault, origin), clip_depth)
             };
-            let (built, gpu) = match fault.and_then(|x| x.matrix(m, clean, view)) {
+            let blend = Fault::blend(fault, m.blend);
+            record.blend = [blend.0 as f32, blend.1 as f32];
+            let (built, gpu) = match fault.and_then(|x| x.matrix(scheme_, m, clean, view)) {
                 Some(b) => {
                     record.world_to_clip = (clip_depth.convert(&b) * rel_to_eye)
                         .as_mat4()
@@ -443,7 +466,7 @@ pub fn build(
                     max_mz: m.max_mz,
                     n_prime: m.shadow.n_prime().value(),
                     texel_world: m.texel_world,
-                    blend: m.blend,
+                    blend,
                 },
             }
         })
@@ -467,7 +490,19 @@ pub fn build(
         [0.0; 3]
     };
     let bodies = f.maps().iter().map(|m| m.body().to_vec()).collect();
+    let planes = if select == Select::Depth {
+        crate::papers::practical_planes(fr.near(), fr.far(), CASCADES, CASCADE_LAMBDA)
+    } else {
+        Vec::new()
+    };
+    let bands = if scheme_ == Scheme::BlendedCascades {
+        crate::papers::blend_bands(&planes, BLEND_OVERLAP)
+    } else {
+        Vec::new()
+    };
     Ok(Built {
+        planes,
+        bands,
         maps,
         origin,
         offset: if plain { origin } else { DVec3::ZERO },
@@ -593,9 +628,19 @@ pub fn setups() -> Vec<Setup> {
         name: "far_1e5".into(),
         scene: Scene::thin_casters().translated(FAR_OFFSET),
     });
+    let tilted = out[1].scene.translated(FAR_TILTED_OFFSET);
+    out.push(Setup {
+        name: "far_tilted".into(),
+        scene: tilted,
+    });
     out
 }
 
 /// The offset of the set-up `far_1e5` from the thin-caster scene: 10⁵ from the world origin,
-/// horizontally.
-pub const FAR_OFFSET: DVec3 = DVec3::new(6e4, 0.0, -8e4);
+/// horizontally, by amounts `f32` cannot hold (its camera, 60 000.3 and −80 000.7 from the
+/// origin there, is 0.0008 and 0.0031 from the nearest `f32`s).
+pub const FAR_OFFSET: DVec3 = DVec3::new(60_000.3, 0.0, -80_000.7);
+
+/// The offset of the set-up `far_tilted` (`tilted_45`'s camera and light) from the built-in
+/// scene: 1.2·10⁵ from the world origin, horizontally, by amounts `f32` cannot hold.
+pub const FAR_TILTED_OFFSET: DVec3 = DVec3::new(-90_000.37, 0.0, 80_000.61);

@@ -52,6 +52,20 @@ pub const LENS_FRAME_EXCESS: f64 = 0.01;
 pub const LENS_FRAME_REACH: f64 = 0.95;
 /// At least this fraction of the visible pixels has its lens compared.
 pub const MIN_LENS_COMPARED_FRACTION: f64 = 0.5;
+/// At least this fraction of the pixels the ray cast lights is compared with the render (as for
+/// the shadowed ones).
+pub const MIN_LIT_CHECKED_FRACTION: f64 = 0.8;
+/// The 99th percentile of the GPU's texel position against the exact point's under the map's
+/// matrix in `f64`, texels, at most: the GPU's `f32` leaves at most 1.4·10⁻³ (measured over every
+/// built-in case at 320 × 240 and 640 × 480); an upload origin off by 0.003 world units 10⁵ from
+/// the origin moves it by 0.01 to 0.1.
+pub const TEXEL_POSITION_P99: f64 = 5e-3;
+/// LiSPSM's w ratio along the warp axis, fitted from the GPU's texel coordinates, against
+/// `1 + Δ/n′` with the paper's n′, relatively, at most (measured at most 5.5·10⁻⁶).
+pub const LISPSM_WARP_REL_DIFF: f64 = 1e-3;
+/// TSM's focus fraction fitted from the GPU's texel coordinates against Martin & Tan's 0.8,
+/// absolutely, at most (measured within 10⁻⁷).
+pub const TSM_FOCUS_TOLERANCE: f64 = 1e-3;
 /// The shimmer test follows at least this many shadow-edge points.
 pub const MIN_SHIMMER_POINTS: usize = 100;
 
@@ -60,6 +74,12 @@ pub const MIN_SHIMMER_POINTS: usize = 100;
 pub fn violations(case: &CaseSummary) -> Vec<String> {
     let m = &case.measured;
     let mut v = Vec::new();
+    let mut empty = Vec::new();
+    let mut at_least_one = |name: &str, got: usize| {
+        if got == 0 {
+            empty.push(format!("{name} = 0, limit ≥ 1"));
+        }
+    };
     let mut at_most = |name: &str, got: f64, limit: f64| {
         // NaN fails (a measurement that is not a number meets no target).
         if got.is_nan() || got > limit {
@@ -98,9 +118,41 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
     );
     if let Some(n) = m.blend_mismatches {
         at_most(
-            "blend_mismatches (the cross-fade against the frame's blend)",
+            "blend_mismatches (the cross-fade against the band the requested overlap makes)",
             n as f64,
             0.0,
+        );
+    }
+    at_most(
+        "texel_position_p99 (the GPU's texel position against the exact point's, texels)",
+        m.texel_position_p99,
+        TEXEL_POSITION_P99,
+    );
+    if let Some(d) = m.lispsm_warp_rel_diff {
+        at_most(
+            "lispsm_warp_rel_diff (w's ratio fitted from the texels against 1 + Δ/n′ of the paper)",
+            d,
+            LISPSM_WARP_REL_DIFF,
+        );
+    }
+    if let Some(f) = m.tsm_focus_fraction {
+        at_most(
+            "|tsm_focus_fraction − 0.8| (the focus line fitted from the texels, Martin & Tan)",
+            (f - crate::papers::TSM_FOCUS_FRACTION).abs(),
+            TSM_FOCUS_TOLERANCE,
+        );
+    }
+    if let Some(n) = m.split_mismatches {
+        at_most(
+            "split_mismatches (the map picked against the paper's split planes)",
+            n as f64,
+            0.0,
+        );
+    }
+    if case.scheme == crate::schemes::Scheme::BlendedCascades.name() {
+        at_least_one(
+            "blend_pixels (a blended scheme with no pixel in its requested band)",
+            m.blend_pixels.unwrap_or(0),
         );
     }
     if let Some(d) = m.lloyd_rel_diff {
@@ -120,6 +172,7 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
             None => v.push("shimmer_changed_fraction: not measured (stable cascades)".into()),
         }
     }
+    v.append(&mut empty);
     let mut at_least = |name: &str, got: f64, limit: f64| {
         if got.is_nan() || got < limit {
             v.push(format!("{name} = {got:.4}, limit ≥ {limit}"));
@@ -135,6 +188,13 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
             "shadow_pixels_checked / shadow_pixels",
             m.shadow_pixels_checked as f64 / m.shadow_pixels as f64,
             MIN_SHADOW_CHECKED_FRACTION,
+        );
+    }
+    if m.lit_pixels > 0 {
+        at_least(
+            "lit_pixels_checked / lit_pixels",
+            m.lit_pixels_checked as f64 / m.lit_pixels as f64,
+            MIN_LIT_CHECKED_FRACTION,
         );
     }
     at_least(

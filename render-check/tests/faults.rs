@@ -5,7 +5,7 @@
 
 use render_check::faults::{target_name, Fault};
 use render_check::gpu::Gpu;
-use render_check::run::{run_full, Render, Sizes};
+use render_check::run::{case_clip_depth, run_full, Render, Sizes};
 use render_check::schemes::{setups, Scheme};
 use render_check::targets::violations;
 
@@ -20,8 +20,12 @@ const SIZES: Sizes = Sizes {
 };
 
 fn violated(gpu: &Gpu, setup: &str, scheme: Scheme, fault: Option<Fault>) -> Vec<String> {
-    let s = setups().into_iter().find(|s| s.name == setup).unwrap();
-    let sizes = Sizes { fault, ..SIZES };
+    let all = setups();
+    let si = all.iter().position(|s| s.name == setup).unwrap();
+    let s = &all[si];
+    let mut sizes = Sizes { fault, ..SIZES };
+    // Each case in the clip depth the binary draws it in.
+    sizes.render.clip_depth = case_clip_depth(si, scheme);
     let r = run_full(gpu, &s.name, &s.scene, scheme, sizes).unwrap();
     violations(&r.summary)
 }
@@ -30,6 +34,14 @@ fn violated(gpu: &Gpu, setup: &str, scheme: Scheme, fault: Option<Fault>) -> Vec
 fn caught(setup: &str, scheme: Scheme, fault: Fault, target: &str) {
     let gpu = Gpu::new().unwrap_or_else(|e| panic!("{e}"));
     let clean = violated(&gpu, setup, scheme, None);
+    // A fault in the shaders' source runs on its own device.
+    let gpu = match Fault::shader_source(Some(fault)) {
+        Ok(src) if fault == Fault::ReversedStrict => {
+            Gpu::with_source(&src).unwrap_or_else(|e| panic!("{e}"))
+        }
+        Ok(_) => gpu,
+        Err(e) => panic!("{e}"),
+    };
     assert!(
         clean.is_empty(),
         "{setup}/{}: clean {clean:?}",
@@ -126,6 +138,88 @@ fn blend_band_ignored_is_caught() {
         "thin_casters",
         Scheme::BlendedCascades,
         Fault::BlendIgnored,
-        "blend_mismatches (the cross-fade against the frame's blend)",
+        "blend_mismatches (the cross-fade against the band the requested overlap makes)",
+    );
+}
+
+/// LiSPSM's n′ without its 1/sin γ (γ = 5°: n′ 11.5 × too small): the warp fitted from the
+/// GPU's texel coordinates parts from the paper's `1 + Δ/n′`.
+#[test]
+fn lispsm_without_sin_gamma_is_caught() {
+    caught(
+        "behind_5",
+        Scheme::Lispsm,
+        Fault::LispsmNoSin,
+        "lispsm_warp_rel_diff (w's ratio fitted from the texels against 1 + Δ/n′ of the paper)",
+    );
+}
+
+/// TSM's focus line at ξ = −0.8: the focus line fitted from the texels lies 90 % down the map,
+/// not Martin & Tan's 80 %.
+#[test]
+fn tsm_focus_at_minus_0_8_is_caught() {
+    caught(
+        "tilted_45",
+        Scheme::Tsm,
+        Fault::TsmFocus,
+        "|tsm_focus_fraction − 0.8| (the focus line fitted from the texels, Martin & Tan)",
+    );
+}
+
+/// Blend bands 1.5 × as wide as the overlap makes them: the shader's weights part from the
+/// band computed from the request.
+#[test]
+fn blend_band_too_wide_is_caught() {
+    caught(
+        "overhead",
+        Scheme::BlendedCascades,
+        Fault::BlendWide,
+        "blend_mismatches (the cross-fade against the band the requested overlap makes)",
+    );
+}
+
+/// The overlap dropped: no pixel is cross-faded where the request puts a band.
+#[test]
+fn overlap_dropped_is_caught() {
+    caught(
+        "overhead",
+        Scheme::BlendedCascades,
+        Fault::OverlapDropped,
+        "blend_mismatches (the cross-fade against the band the requested overlap makes)",
+    );
+}
+
+/// The upload origin rounded through `f32` (the camera 10⁵ from the origin, off an `f32`): every
+/// texel position moves by the rounding.
+#[test]
+fn upload_origin_through_f32_is_caught() {
+    caught(
+        "far_1e5",
+        Scheme::Uniform,
+        Fault::OriginF32,
+        "texel_position_p99 (the GPU's texel position against the exact point's, texels)",
+    );
+}
+
+/// Every split 3 % past its map: pixels beyond a split plane are looked up in the map before it.
+#[test]
+fn splits_past_their_maps_are_caught() {
+    caught(
+        "tilted_45",
+        Scheme::Cascades,
+        Fault::SplitsPast,
+        "split_mismatches (the map picked against the paper's split planes)",
+    );
+}
+
+/// The reversed-depth comparison strict: under the overhead light the ground's depth equals the
+/// stored one, and it is shadowed by itself.
+#[test]
+fn strict_reversed_comparison_is_caught() {
+    caught(
+        "overhead",
+        Scheme::Uniform,
+        Fault::ReversedStrict,
+        "false_shadows",
     );
 }
