@@ -1,5 +1,6 @@
 //! A window on the test scene (docs/bevy.md): Space cycles the sun's cascades between Bevy's own
-//! and the plugin's replacements; the window title shows the measured error of what is drawn.
+//! and the plugin's replacements and budget mode (1 px, the map size chosen up to 4096²); the
+//! window title shows the measured error of what is drawn.
 //!
 //! ```text
 //! cargo run --release --features window --example toggle
@@ -15,7 +16,7 @@ use bevy::prelude::*;
 use scene::{camera_transform, centre_size, sun_transform, BOXES};
 use shadow_aliasing::maps::WarpRule;
 use shadow_aliasing_bevy::{
-    CascadeErrors, CascadeMode, Fit, Replace, ShadowAliasingPlugin, Splits,
+    Budget, CascadeErrors, CascadeMode, Fit, Replace, ShadowAliasingPlugin, Splits,
 };
 
 /// The modes Space cycles through, with their names.
@@ -41,6 +42,13 @@ fn modes() -> Vec<(&'static str, CascadeMode)> {
         (
             "LiSPSM, equal-error splits",
             replace(Fit::Focused(WarpRule::Lispsm), Splits::EqualError { k: 4 }),
+        ),
+        (
+            "budget: 1 px, map size up to 4096²",
+            CascadeMode::Budget(Budget {
+                max_map_size: Some(4096),
+                ..Budget::new(1.0)
+            }),
         ),
     ]
 }

@@ -35,6 +35,13 @@
 //! - **Replace** ([`CascadeMode::Replace`]): the cascades rewritten with the crate's frame API
 //!   (focused or stable, Bevy's splits, a split scheme or equal-error splits, an optional SDSM
 //!   depth range), then measured like Bevy's.
+//! - **Budget** ([`CascadeMode::Budget`]): one number in, the largest error in pixels; each
+//!   frame the crate's error-budget controller chooses the cascades (count, splits, fit) and,
+//!   where allowed, the shadow map's size among what Bevy can draw ([`bevy_candidates`]),
+//!   published as [`BudgetState`] and diagnostics ([`budget_path`]).
+//!
+//! Replace and budget mode set the light's bias from the crate's ([`AppliedBias`]) unless
+//! [`ShadowAliasingSettings::auto_bias`] is off.
 //!
 //! # System order (`PostUpdate`)
 //!
@@ -47,6 +54,8 @@
 //! `SimulationLightSystems::UpdateLightFrusta`, whose `update_directional_light_frusta` culls
 //! the casters of each cascade with the matrices the plugin left.
 
+mod bias;
+mod budget;
 mod convert;
 mod measure;
 mod replace;
@@ -54,13 +63,17 @@ mod scene;
 mod settings;
 mod view;
 
+pub use bias::{needed_normal_bias, pcf_radius, AppliedBias};
+pub use budget::{
+    bevy_candidates, budget_cascades, budget_path, BudgetChoice, BudgetState, OriginalMapSize,
+};
 pub use measure::{
     bevy_covers, cascade_path, measure_cascade, measure_cascades, CascadeError, CascadeErrors,
     CascadeSource, ViewCascadeErrors, MAX_CASCADES, MAX_ERROR_PIXELS,
 };
 pub use replace::{replace_cascades, restore_cascade_config, to_bevy_cascade, ReplacedCascades};
 pub use scene::{collect_scene_bounds, world_box, SceneBounds};
-pub use settings::{CascadeMode, Fit, Replace, Splits};
+pub use settings::{Budget, CascadeMode, Fit, Replace, Splits};
 pub use shadow_aliasing;
 
 use bevy::camera::visibility::VisibilitySystems;
@@ -78,11 +91,18 @@ pub struct ShadowAliasingSettings {
     /// The image height in pixels the error is counted in while a camera's viewport size is not
     /// known (no render target yet, or no renderer). Default 1080.
     pub image_height: u32,
+    /// Replace and budget mode set the light's `shadow_normal_bias` and `shadow_depth_bias`
+    /// from the crate's bias for the maps they drew ([`AppliedBias`], docs/bevy.md, "Automatic
+    /// bias"); `false` leaves them as the user set them. Default `true`.
+    pub auto_bias: bool,
 }
 
 impl Default for ShadowAliasingSettings {
     fn default() -> Self {
-        Self { image_height: 1080 }
+        Self {
+            image_height: 1080,
+            auto_bias: true,
+        }
     }
 }
 
@@ -94,7 +114,7 @@ pub enum ShadowAliasingSystems {
     Restore,
     /// [`collect_scene_bounds`].
     Collect,
-    /// [`replace_cascades`].
+    /// [`replace_cascades`] and [`budget_cascades`].
     Replace,
     /// [`measure_cascades`].
     Measure,
@@ -128,10 +148,14 @@ impl Plugin for ShadowAliasingPlugin {
                 (
                     restore_cascade_config.in_set(ShadowAliasingSystems::Restore),
                     collect_scene_bounds.in_set(ShadowAliasingSystems::Collect),
-                    replace_cascades.in_set(ShadowAliasingSystems::Replace),
+                    (replace_cascades, budget_cascades)
+                        .chain()
+                        .in_set(ShadowAliasingSystems::Replace),
                     measure_cascades.in_set(ShadowAliasingSystems::Measure),
                 ),
             );
+        app.init_resource::<OriginalMapSize>();
         measure::register_diagnostics(app);
+        budget::register_budget_diagnostics(app);
     }
 }

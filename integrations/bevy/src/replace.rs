@@ -2,6 +2,7 @@
 //! own, and its `CascadeShadowConfig` bounds set to the new cascades' far ends so that the shader
 //! selects them where the crate meant them.
 
+use crate::bias::{needed_normal_bias, pcf_radius, AppliedBias};
 use crate::convert::{dmat4_to_bevy, mat4_from_cols, quat_to_crate};
 use crate::measure::MAX_CASCADES;
 use crate::scene::SceneBounds;
@@ -11,7 +12,10 @@ use crate::ShadowAliasingSettings;
 use bevy::camera::{Camera, Projection};
 use bevy::ecs::entity::EntityHashMap;
 use bevy::light::cascade::Cascade;
-use bevy::light::{CascadeShadowConfig, Cascades, DirectionalLight, DirectionalLightShadowMap};
+use bevy::light::{
+    CascadeShadowConfig, Cascades, DirectionalLight, DirectionalLightShadowMap,
+    ShadowFilteringMethod,
+};
 use bevy::prelude::*;
 use bevy::render::renderer::RenderDevice;
 use bevy::render::settings::WgpuFeatures;
@@ -33,7 +37,14 @@ pub struct ReplacedCascades {
     /// restored when the light goes back to [`CascadeMode::Measure`]. While the light is in
     /// replace mode its configuration holds the replacement's far bounds, and `Splits::Bevy`
     /// reads this one.
-    original: Option<CascadeShadowConfig>,
+    pub(crate) original: Option<CascadeShadowConfig>,
+    /// The bias the plugin set on the light this frame ([`AppliedBias`]), or why it left the
+    /// light's own (`Err`); `None` with the automatic bias off
+    /// (`ShadowAliasingSettings::auto_bias`) or nothing replaced.
+    pub bias: Option<Result<AppliedBias, String>>,
+    /// The light's `(shadow_depth_bias, shadow_normal_bias)` before the plugin first set them:
+    /// restored when the light returns to [`CascadeMode::Measure`].
+    pub(crate) original_bias: Option<(f32, f32)>,
 }
 
 /// A frame map as Bevy's `Cascade` (bevy_light/src/cascade.rs): `clip_from_world` is the map's
@@ -117,18 +128,171 @@ fn build(
         Fit::Focused(rule) => FrameScheme::Cascades { splits, rule },
         Fit::Stable => FrameScheme::Stable(splits),
     };
-    // Casters extend each map's depth range (no depth clamp), so that no map relies on the
-    // device clamping the depth of casters nearer the light: Bevy clamps it natively with
-    // DEPTH_CLIP_CONTROL (right for any map) and otherwise emulates it for orthographic maps only.
-    let mut input = FrameInput::new(v.camera, dir, res, v.image_height)
-        .receivers(Bound::Boxes(&bounds.receivers))
-        .casters(Bound::Boxes(&bounds.casters))
-        .depth_clamp(false)
-        .scheme(scheme);
+    let mut input = frame_input(v, dir, bounds, res).scheme(scheme);
     if let Some((a, b)) = r.depth_range {
         input = input.depth_range(a, b);
     }
     frame(&input).map(Some).map_err(|e| e.to_string())
+}
+
+/// The frame input for one camera and light: the scene's receivers and casters, no depth clamp.
+/// Casters extend each map's depth range, so that no map relies on the device clamping the
+/// depth of casters nearer the light: Bevy clamps it natively with `DEPTH_CLIP_CONTROL` (right
+/// for any map) and otherwise emulates it for orthographic maps only.
+pub(crate) fn frame_input<'a>(
+    v: &View,
+    dir: [f64; 3],
+    bounds: &'a SceneBounds,
+    res: u32,
+) -> FrameInput<'a> {
+    FrameInput::new(v.camera, dir, res, v.image_height)
+        .receivers(Bound::Boxes(&bounds.receivers))
+        .casters(Bound::Boxes(&bounds.casters))
+        .depth_clamp(false)
+}
+
+/// One light's replacement, written camera by camera ([`Installer::install`]) and then into the
+/// light's configuration and bias ([`Installer::finish`]). Shared by replace and budget mode.
+pub(crate) struct Installer {
+    rotation: DQuat,
+    /// The far bounds of the first camera installed: the light's, shared by its cameras.
+    shared: Option<Vec<f32>>,
+    /// The PCF radius for the automatic bias (`None`: off), and per cascade index the normal
+    /// bias needed, or why it could not be derived.
+    radius: Option<f64>,
+    needed: Result<Vec<f32>, String>,
+}
+
+impl Installer {
+    /// For a light with this transform; `auto_bias`: derive the light's bias.
+    pub(crate) fn new(transform: &GlobalTransform, auto_bias: bool) -> Self {
+        Self {
+            rotation: quat_to_crate(transform.rotation()),
+            shared: None,
+            radius: auto_bias.then_some(0.0),
+            needed: Ok(Vec::new()),
+        }
+    }
+
+    /// Writes `maps` as the cascades of `view_entity` (filtered with `filter`, the camera's
+    /// `ShadowFilteringMethod`), unless their far bounds differ from the first camera's (then
+    /// Bevy's are kept and the reason recorded in `state.errors`).
+    pub(crate) fn install(
+        &mut self,
+        view_entity: Entity,
+        maps: &[&FrameMap],
+        filter: Option<&ShadowFilteringMethod>,
+        cascades: &mut Cascades,
+        state: &mut ReplacedCascades,
+    ) {
+        let far: Vec<f32> = maps.iter().map(|m| m.split.1 as f32).collect();
+        match &self.shared {
+            Some(s) if *s != far => {
+                state.errors.insert(
+                    view_entity,
+                    "this camera's splits differ from the first camera's, and the light's far \
+                     bounds are shared: Bevy's cascades kept"
+                        .into(),
+                );
+                return;
+            }
+            _ => self.shared = Some(far),
+        }
+        if self.radius.is_some() {
+            self.need(maps, filter);
+        }
+        let list: Vec<Cascade> = maps
+            .iter()
+            .map(|m| to_bevy_cascade(m, self.rotation))
+            .collect();
+        state
+            .covers
+            .insert(view_entity, maps.iter().map(|m| body_depths(m)).collect());
+        cascades.cascades.insert(view_entity, list);
+    }
+
+    /// Adds one camera's maps to the bias needed per cascade index.
+    fn need(&mut self, maps: &[&FrameMap], filter: Option<&ShadowFilteringMethod>) {
+        let Ok(needed) = &mut self.needed else {
+            return;
+        };
+        let r = match pcf_radius(filter) {
+            Ok(r) => r,
+            Err(e) => {
+                self.needed = Err(e);
+                return;
+            }
+        };
+        for (i, m) in maps.iter().enumerate() {
+            match needed_normal_bias(m, r) {
+                Ok(k) => {
+                    if needed.len() <= i {
+                        needed.resize(i + 1, 0.0);
+                    }
+                    needed[i] = needed[i].max(k);
+                }
+                Err(e) => {
+                    self.needed = Err(e);
+                    return;
+                }
+            }
+        }
+        self.radius = self.radius.map(|x| x.max(r));
+    }
+
+    /// Sets the light's configuration to the installed cascades (their far ends; `overlap` the
+    /// cross-fade proportion) and, with the automatic bias, the light's bias (the user's kept in
+    /// `state` for when the light returns to measure mode).
+    pub(crate) fn finish(
+        self,
+        config: &mut CascadeShadowConfig,
+        original: &CascadeShadowConfig,
+        overlap: f32,
+        light: &mut Mut<'_, DirectionalLight>,
+        state: &mut ReplacedCascades,
+    ) {
+        let Some(far) = self.shared else {
+            return;
+        };
+        config.bounds = far;
+        config.minimum_distance = original.minimum_distance;
+        config.overlap_proportion = overlap;
+        let Some(radius) = self.radius else {
+            // The automatic bias off: the user's own bias back, if the plugin had set it.
+            if let Some((depth, normal)) = state.original_bias.take() {
+                light.shadow_depth_bias = depth;
+                light.shadow_normal_bias = normal;
+            }
+            state.bias = None;
+            return;
+        };
+        match self.needed {
+            Ok(needed) if !needed.is_empty() => {
+                let normal = needed.iter().copied().fold(0.0, f32::max);
+                state
+                    .original_bias
+                    .get_or_insert((light.shadow_depth_bias, light.shadow_normal_bias));
+                if light.shadow_normal_bias != normal || light.shadow_depth_bias != 0.0 {
+                    light.shadow_normal_bias = normal;
+                    light.shadow_depth_bias = 0.0;
+                }
+                state.bias = Some(Ok(AppliedBias {
+                    normal_bias: normal,
+                    depth_bias: 0.0,
+                    pcf_radius: radius,
+                    needed,
+                }));
+            }
+            Ok(_) => state.bias = None,
+            Err(e) => {
+                if let Some((depth, normal)) = state.original_bias.take() {
+                    light.shadow_depth_bias = depth;
+                    light.shadow_normal_bias = normal;
+                }
+                state.bias = Some(Err(e));
+            }
+        }
+    }
 }
 
 /// The view-depth extent of a map's focus body (eye space looks down −Z).
@@ -140,28 +304,45 @@ fn body_depths(map: &FrameMap) -> (f64, f64) {
         })
 }
 
-/// Gives a light that left replace mode its own `CascadeShadowConfig` back (runs in
+/// Gives a light that left replace (or budget) mode its own `CascadeShadowConfig` and bias back,
+/// and clears what those modes recorded (runs in
 /// `PostUpdate` before `build_directional_light_cascades`, so that Bevy's cascades of the same
 /// frame are built from it).
 pub fn restore_cascade_config(
     mut lights: Query<(
         &CascadeMode,
         &mut CascadeShadowConfig,
+        &mut DirectionalLight,
         &mut ReplacedCascades,
     )>,
 ) {
-    for (mode, mut config, mut state) in &mut lights {
+    for (mode, mut config, mut light, mut state) in &mut lights {
         if matches!(mode, CascadeMode::Measure) {
+            state.covers.clear();
+            state.errors.clear();
             if let Some(original) = state.original.take() {
                 *config = original;
             }
+            if let Some((depth, normal)) = state.original_bias.take() {
+                light.shadow_depth_bias = depth;
+                light.shadow_normal_bias = normal;
+            }
+            state.bias = None;
         }
     }
 }
 
-type LightItem<'a> = (
+/// A camera as the plugin reads it: its pose, projection, viewport and shadow filter.
+pub(crate) type CameraItem<'a> = (
     &'a GlobalTransform,
-    &'a DirectionalLight,
+    &'a Projection,
+    &'a Camera,
+    Option<&'a ShadowFilteringMethod>,
+);
+
+pub(crate) type LightItem<'a> = (
+    &'a GlobalTransform,
+    &'a mut DirectionalLight,
     &'a CascadeMode,
     &'a mut CascadeShadowConfig,
     &'a mut Cascades,
@@ -183,36 +364,37 @@ pub fn replace_cascades(
     device: Option<Res<RenderDevice>>,
     shadow_map: Res<DirectionalLightShadowMap>,
     bounds: Res<SceneBounds>,
-    cameras: Query<(&GlobalTransform, &Projection, &Camera)>,
+    cameras: Query<CameraItem<'_>>,
     mut lights: Query<LightItem<'_>>,
 ) {
     let res = u32::try_from(shadow_map.size).unwrap_or(u32::MAX);
     // No renderer (an ECS-only app): nothing is drawn, every map is allowed.
     let clip_control =
         device.is_none_or(|d| d.features().contains(WgpuFeatures::DEPTH_CLIP_CONTROL));
-    for (transform, light, mode, mut config, mut cascades, mut state) in &mut lights {
+    for (transform, mut light, mode, mut config, mut cascades, mut state) in &mut lights {
         let state = state.as_mut();
-        state.covers.clear();
-        state.errors.clear();
         let CascadeMode::Replace(r) = mode else {
             continue;
         };
+        state.covers.clear();
+        state.errors.clear();
         if !light.shadow_maps_enabled {
             continue;
         }
         let original = state.original.get_or_insert_with(|| config.clone()).clone();
         let dir = light_dir(transform);
-        let rotation = quat_to_crate(transform.rotation());
         let mut views: Vec<Entity> = cascades.cascades.keys().copied().collect();
         views.sort();
-        let mut shared: Option<Vec<f32>> = None;
+        let mut installer = Installer::new(transform, settings.auto_bias);
         for view_entity in views {
             let built = cameras
                 .get(view_entity)
                 .map_err(|e| e.to_string())
-                .and_then(|(t, p, c)| view(t, p, c, settings.image_height))
-                .and_then(|v| build(r, clip_control, &v, dir, &bounds, &original, res));
-            let f = match built {
+                .and_then(|(t, p, c, filter)| {
+                    let v = view(t, p, c, settings.image_height)?;
+                    build(r, clip_control, &v, dir, &bounds, &original, res).map(|f| (f, filter))
+                });
+            let (f, filter) = match built {
                 Ok(f) => f,
                 Err(e) => {
                     state.errors.insert(view_entity, e);
@@ -220,34 +402,14 @@ pub fn replace_cascades(
                 }
             };
             let maps: Vec<&FrameMap> = f.as_ref().map_or(Vec::new(), |f| f.maps().iter().collect());
-            let far: Vec<f32> = maps.iter().map(|m| m.split.1 as f32).collect();
-            match &shared {
-                Some(s) if *s != far => {
-                    state.errors.insert(
-                        view_entity,
-                        "this camera's splits differ from the first camera's, and the light's \
-                         far bounds are shared: Bevy's cascades kept"
-                            .into(),
-                    );
-                    continue;
-                }
-                _ => shared = Some(far),
-            }
-            let list: Vec<Cascade> = maps.iter().map(|m| to_bevy_cascade(m, rotation)).collect();
-            state
-                .covers
-                .insert(view_entity, maps.iter().map(|m| body_depths(m)).collect());
-            cascades.cascades.insert(view_entity, list);
+            installer.install(view_entity, &maps, filter, &mut cascades, state);
         }
-        if let Some(far) = shared {
-            config.bounds = far;
-            config.minimum_distance = original.minimum_distance;
-            // Bevy's shader cross-fades cascade i into i + 1 over [(1 − o) far_i, far_i]; only
-            // Bevy's own splits have that band (the crate's `CascadeSplits::Bevy` keeps it).
-            config.overlap_proportion = match r.splits {
-                Splits::Bevy => original.overlap_proportion,
-                _ => 0.0,
-            };
-        }
+        // Bevy's shader cross-fades cascade i into i + 1 over [(1 − o) far_i, far_i]; only
+        // Bevy's own splits have that band (the crate's `CascadeSplits::Bevy` keeps it).
+        let overlap = match r.splits {
+            Splits::Bevy => original.overlap_proportion,
+            _ => 0.0,
+        };
+        installer.finish(&mut config, &original, overlap, &mut light, state);
     }
 }

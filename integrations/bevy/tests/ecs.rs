@@ -11,7 +11,7 @@ use bevy::camera::{Camera, PerspectiveProjection, Projection};
 use bevy::light::cascade::build_directional_light_cascades;
 use bevy::light::{
     CascadeShadowConfig, Cascades, DirectionalLight, DirectionalLightShadowMap, NotShadowCaster,
-    NotShadowReceiver, SimulationLightSystems,
+    NotShadowReceiver, ShadowFilteringMethod, SimulationLightSystems,
 };
 use bevy::mesh::Mesh3d;
 use bevy::prelude::*;
@@ -24,7 +24,7 @@ use shadow_aliasing::maps::{ClipDepth, WarpRule};
 use shadow_aliasing::measure::{frustum_max, ShadowMap};
 use shadow_aliasing_bevy::{
     CascadeErrors, CascadeMode, CascadeSource, Fit, Replace, ReplacedCascades, SceneBounds,
-    ShadowAliasingPlugin, Splits, ViewCascadeErrors,
+    ShadowAliasingPlugin, ShadowAliasingSettings, Splits, ViewCascadeErrors,
 };
 
 const ASPECT: f32 = 16.0 / 9.0;
@@ -394,4 +394,97 @@ fn world_box_of_a_rotated_scaled_mesh() {
     let want_max = DVec3::new(11.0, 4.0, 2.0);
     assert!((w.min - want_min).abs().max_element() < 1e-5, "{}", w.min);
     assert!((w.max - want_max).abs().max_element() < 1e-5, "{}", w.max);
+}
+
+#[test]
+fn automatic_bias_is_the_texel_diagonal_bevy_needs_and_the_user_gets_theirs_back() {
+    // Derived here from the matrices Bevy holds: for an orthographic cascade (w = 1, depth along
+    // the light) a lit plane stays lit for every texel a PCF kernel of radius r reads when the
+    // lookup point is lifted by (r + ½) texel diagonals, the diagonal of the texel's world
+    // edges E_s, E_t in the plane perpendicular to the light (r₀ · E_s = 2/res, r₁ · E_s = 0,
+    // L · E_s = 0, and likewise E_t). Bevy moves the point by shadow_normal_bias · √2 ·
+    // texel_size, so each cascade needs (r + ½) · |diagonal| / (√2 · texel_size).
+    let (mut app, camera, light) = app(None, &BOXES);
+    {
+        let mut l = app.world_mut().get_mut::<DirectionalLight>(light).unwrap();
+        l.shadow_normal_bias = 0.7;
+        l.shadow_depth_bias = 0.05;
+    }
+    let user = |app: &App| {
+        let l = app.world().get::<DirectionalLight>(light).unwrap();
+        (l.shadow_depth_bias, l.shadow_normal_bias)
+    };
+    let mode = CascadeMode::Replace(Replace {
+        fit: Fit::Focused(WarpRule::Uniform),
+        splits: Splits::EqualError { k: 4 },
+        depth_range: None,
+    });
+    // No filter component: Bevy's default, Gaussian (r = 2½); then the 2 × 2 hardware filter.
+    for (filter, r) in [(None, 2.5), (Some(ShadowFilteringMethod::Hardware2x2), 0.5)] {
+        if let Some(f) = filter {
+            app.world_mut().entity_mut(camera).insert(f);
+        }
+        app.world_mut().entity_mut(light).insert(mode.clone());
+        app.update();
+        let w = app.world();
+        let res = w.resource::<DirectionalLightShadowMap>().size as f64;
+        let fwd = w.get::<GlobalTransform>(light).unwrap().forward();
+        let l = DVec3::from_array(fwd.as_dvec3().to_array()).normalize();
+        let mut want = Vec::new();
+        for c in &w.get::<Cascades>(light).unwrap().cascades[&camera] {
+            let m = SaMat4::from_cols_array_2d(&c.clip_from_world.to_cols_array_2d()).as_dmat4();
+            let row = |i: usize| m.row(i).truncate();
+            assert!(
+                row(2).normalize().cross(l).length() < 1e-5,
+                "depth along the light"
+            );
+            assert!(m.row(3).abs_diff_eq(shadow_aliasing::glam::DVec4::W, 1e-12));
+            let es = row(1).cross(l) / row(0).dot(row(1).cross(l));
+            let et = l.cross(row(0)) / row(1).dot(l.cross(row(0)));
+            let diag = (es + et).length().max((es - et).length());
+            let offset = (r + 0.5) * 2.0 / res * diag;
+            want.push(offset / (std::f64::consts::SQRT_2 * f64::from(c.texel_size)));
+        }
+        assert_eq!(want.len(), 4);
+        let state = w.get::<ReplacedCascades>(light).unwrap();
+        let applied = state.bias.clone().unwrap().unwrap();
+        assert_eq!(applied.pcf_radius, r);
+        for (got, want) in applied.needed.iter().zip(&want) {
+            assert!(rel(f64::from(*got), *want) < 1e-4, "{got} {want}");
+        }
+        let most = want.iter().copied().fold(0.0, f64::max);
+        let (depth, normal) = user(&app);
+        assert!(rel(f64::from(normal), most) < 1e-4, "{normal} {most}");
+        assert_eq!(depth, 0.0);
+    }
+    // Opting out gives the user's bias back; so does the return to measure mode.
+    app.world_mut()
+        .resource_mut::<ShadowAliasingSettings>()
+        .auto_bias = false;
+    app.update();
+    assert_eq!(user(&app), (0.05, 0.7));
+    assert!(app
+        .world()
+        .get::<ReplacedCascades>(light)
+        .unwrap()
+        .bias
+        .is_none());
+    app.world_mut()
+        .resource_mut::<ShadowAliasingSettings>()
+        .auto_bias = true;
+    app.update();
+    assert_ne!(user(&app), (0.05, 0.7));
+    *app.world_mut().get_mut::<CascadeMode>(light).unwrap() = CascadeMode::Measure;
+    app.update();
+    assert_eq!(user(&app), (0.05, 0.7));
+    // Temporal filtering: not derived, the user's bias kept, the reason recorded.
+    app.world_mut()
+        .entity_mut(camera)
+        .insert(ShadowFilteringMethod::Temporal);
+    app.world_mut().entity_mut(light).insert(mode);
+    app.update();
+    assert_eq!(user(&app), (0.05, 0.7));
+    let state = app.world().get::<ReplacedCascades>(light).unwrap();
+    let e = state.bias.clone().unwrap().unwrap_err();
+    assert!(e.contains("Temporal"), "{e}");
 }

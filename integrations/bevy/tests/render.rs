@@ -29,7 +29,7 @@ use shadow_aliasing::glam::{DMat4, DVec3, Mat4 as SaMat4};
 use shadow_aliasing::maps::WarpRule;
 use shadow_aliasing_bevy::{
     CascadeErrors, CascadeMode, CascadeSource, Fit, Replace, ReplacedCascades,
-    ShadowAliasingPlugin, Splits, ViewCascadeErrors,
+    ShadowAliasingPlugin, ShadowAliasingSettings, Splits, ViewCascadeErrors,
 };
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
@@ -183,6 +183,7 @@ impl Harness {
                 let errors = world.get::<CascadeErrors>(self.light).unwrap();
                 let cascades = world.get::<Cascades>(self.light).unwrap();
                 let config = world.get::<CascadeShadowConfig>(self.light).unwrap();
+                let light = world.get::<DirectionalLight>(self.light).unwrap();
                 let texels = cascades
                     .cascades
                     .get(&self.camera)
@@ -194,6 +195,8 @@ impl Harness {
                     texels,
                     far: config.bounds.iter().map(|b| f64::from(*b)).collect(),
                     overlap: f64::from(config.overlap_proportion),
+                    normal_bias: f64::from(light.shadow_normal_bias),
+                    depth_bias: f64::from(light.shadow_depth_bias),
                 };
             }
             prev = Some(d);
@@ -208,6 +211,9 @@ struct Capture {
     texels: Vec<f64>,
     far: Vec<f64>,
     overlap: f64,
+    /// The light's `shadow_normal_bias` and `shadow_depth_bias` as drawn.
+    normal_bias: f64,
+    depth_bias: f64,
 }
 
 fn srgb_to_linear(c: u8) -> f64 {
@@ -340,9 +346,10 @@ struct Tally {
 }
 
 /// The render's shadow state at every sampled pixel where the exact state is the same over the
-/// disc of the surface a lookup may reach (Bevy's normal bias 1.8 texels, the 2×2 hardware
-/// filter, one texel of rounding: 5 texels, plus the 0.02 depth bias, each spread by 1/cos of the
-/// light's incidence), compared with the exact ray cast.
+/// disc of the surface a lookup may reach (the light's normal bias times Bevy's √2 in texels, the
+/// 2×2 hardware filter and one texel of rounding, at least 5 texels (Bevy's default 1.8 gives
+/// 4.55), plus the depth bias, each spread by 1/cos of the light's incidence), compared with the
+/// exact ray cast.
 fn compare(cap: &Capture, reference: &Capture, cam: &Eye) -> Tally {
     let to_sun = -DVec3::from_array(sun_dir().as_dvec3().to_array()).normalize();
     let eye = cam.to_world.transform_point3(DVec3::ZERO);
@@ -380,8 +387,11 @@ fn compare(cap: &Capture, reference: &Capture, cam: &Eye) -> Tally {
                 .try_normalize()
                 .unwrap_or(n.any_orthonormal_vector());
             let b = n.cross(a);
-            let reach = 5.0 * texel;
-            let (ra, rb) = ((reach + 0.02) / n.dot(to_sun) + 0.03, reach + 0.03);
+            let reach = (cap.normal_bias * std::f64::consts::SQRT_2 + 2.0).max(5.0) * texel;
+            let (ra, rb) = (
+                (reach + cap.depth_bias) / n.dot(to_sun) + 0.03,
+                reach + 0.03,
+            );
             let decidable = (0..24).all(|k| {
                 let (t, f) = if k < 16 {
                     (std::f64::consts::TAU * f64::from(k) / 16.0, 1.0)
@@ -672,5 +682,119 @@ fn small_maps_show_the_difference_and_both_stay_exact() {
         "equal-error {} px is not below Bevy's {} px at {SMALL}²",
         errors[1],
         errors[0]
+    );
+}
+
+/// How far from a box's footprint a ground pixel counts as near contact (world units).
+const CONTACT: f64 = 2.0;
+
+/// Exactly shadowed ground pixels within [`CONTACT`] of the footprint of a box standing on the
+/// ground (its shadow's contact), and those of them drawn lit (over 0.75 of the reference):
+/// detached shadow.
+fn detached(cap: &Capture, reference: &Capture, cam: &Eye) -> (usize, usize) {
+    let to_sun = -DVec3::from_array(sun_dir().as_dvec3().to_array()).normalize();
+    let (mut near, mut lit) = (0, 0);
+    for y in (0..H).step_by(STEP as usize) {
+        for x in (0..W).step_by(STEP as usize) {
+            let (o, d) = cam.ray(f64::from(x) + 0.5, f64::from(y) + 0.5);
+            let Some(h) = first_hit(o, d) else { continue };
+            // The ground's top face, seen whole by the pixel.
+            if (h.bx, h.axis, h.sign) != (0, 1, 1.0) {
+                continue;
+            }
+            let whole = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)]
+                .iter()
+                .all(|&(a, b)| {
+                    let (o, d) = cam.ray(f64::from(x) + a, f64::from(y) + b);
+                    first_hit(o, d).is_some_and(|g| (g.bx, g.axis, g.sign) == (0, 1, 1.0))
+                });
+            let r = reference.green(x, y);
+            if !whole || r < 0.02 {
+                continue;
+            }
+            let p = o + d * h.t;
+            if !on_face(p, &h) || !occluded(p, DVec3::Y, to_sun) {
+                continue;
+            }
+            let contact = BOXES[1..].iter().any(|b| {
+                let dx = (b.min[0] - p.x).max(p.x - b.max[0]).max(0.0);
+                let dz = (b.min[2] - p.z).max(p.z - b.max[2]).max(0.0);
+                b.min[1] == 0.0 && dx.hypot(dz) < CONTACT
+            });
+            if !contact {
+                continue;
+            }
+            near += 1;
+            if cap.green(x, y) / r > 0.75 {
+                lit += 1;
+            }
+        }
+    }
+    (near, lit)
+}
+
+#[test]
+fn automatic_bias_has_no_acne_and_fewer_detached_shadows_than_bevys_default() {
+    // The plugin's equal-error cascades drawn twice with Bevy's 2 × 2 hardware PCF: with
+    // Bevy's default bias (the automatic bias off) and with the crate's bias for those maps.
+    let mut h = Harness::new(true, RES);
+    let reference = h.render(None);
+    let cam = Eye::new();
+    let mode = CascadeMode::Replace(Replace {
+        fit: Fit::Focused(WarpRule::Uniform),
+        splits: Splits::EqualError { k: 4 },
+        depth_range: None,
+    });
+    let mut rows = Vec::new();
+    for auto in [false, true] {
+        h.app
+            .world_mut()
+            .resource_mut::<ShadowAliasingSettings>()
+            .auto_bias = auto;
+        let cap = h.render(Some(mode.clone()));
+        let tally = compare(&cap, &reference, &cam);
+        let acne = tally.wrong.iter().filter(|w| !w.2).count();
+        let missed = tally.wrong.iter().filter(|w| w.2).count();
+        let (near, lit) = detached(&cap, &reference, &cam);
+        let applied = h
+            .app
+            .world()
+            .get::<ReplacedCascades>(h.light)
+            .unwrap()
+            .bias
+            .clone();
+        println!(
+            "auto bias {auto}: normal bias {:.3}, depth bias {:.3}; compared {}, acne {acne}, \
+             missed {missed}; near contact {near}, drawn lit {lit}; {applied:?}",
+            cap.normal_bias, cap.depth_bias, tally.compared
+        );
+        if auto {
+            let a = applied.expect("the bias was set").expect("derived");
+            assert_eq!(f64::from(a.normal_bias), cap.normal_bias);
+            assert_eq!((a.depth_bias, cap.depth_bias), (0.0, 0.0));
+            assert_eq!(a.pcf_radius, 0.5, "Hardware2x2: one bilinear comparison");
+            assert_eq!(a.needed.len(), 4);
+        } else {
+            assert!(applied.is_none());
+            assert_eq!(
+                (cap.normal_bias as f32, cap.depth_bias as f32),
+                (
+                    DirectionalLight::DEFAULT_SHADOW_NORMAL_BIAS,
+                    DirectionalLight::DEFAULT_SHADOW_DEPTH_BIAS
+                ),
+                "the automatic bias off leaves Bevy's default"
+            );
+        }
+        assert!(tally.compared > 10_000 && near > 200, "{tally:?}, {near}");
+        rows.push((acne, missed, near, lit));
+    }
+    let (bevy, auto) = (rows[0], rows[1]);
+    assert_eq!(auto.0, 0, "acne with the automatic bias");
+    assert_eq!(auto.1, 0, "missed shadows with the automatic bias");
+    assert!(
+        auto.3 < bevy.3,
+        "detached: {} pixels with the automatic bias, {} with Bevy's default",
+        auto.3,
+        bevy.3
     );
 }
