@@ -148,6 +148,7 @@ fn the_figure_list_is_the_issue_list() {
 
 fn check_svg(path: &Path, name: &str) {
     let text = std::fs::read_to_string(path).unwrap();
+    check_text_contrast(&text, name);
     let start = text
         .find("<svg")
         .unwrap_or_else(|| panic!("{name}: no <svg"));
@@ -1348,4 +1349,44 @@ fn lloyd2006_fig4_two_rows_of_four() {
         "{tops:?}"
     );
     assert!(tops.windows(2).all(|w| w[1].0 > w[0].0 + 40.0), "{tops:?}");
+}
+
+/// WCAG 2's contrast of an sRGB colour `#RRGGBB` against white: (1.05)/(L + 0.05), L the
+/// relative luminance 0.2126 R + 0.7152 G + 0.0722 B of the linearised channels.
+fn contrast_on_white(hex: &str) -> f64 {
+    let ch = |i: usize| {
+        let v = f64::from(u8::from_str_radix(&hex[i..i + 2], 16).unwrap()) / 255.0;
+        if v <= 0.04045 {
+            v / 12.92
+        } else {
+            ((v + 0.055) / 1.055).powf(2.4)
+        }
+    };
+    let l = 0.2126 * ch(1) + 0.7152 * ch(3) + 0.0722 * ch(5);
+    1.05 / (l + 0.05)
+}
+
+/// Every text of a figure has at least WCAG AA's 4.5 : 1 against white (issue 35: direct labels
+/// in #E69F00 and #56B4E9 had 2.2–2.3 : 1): its fill, the page's or a label's white box behind it.
+fn check_text_contrast(svg: &str, name: &str) {
+    let mut texts = 0;
+    for tag in svg.split("<text ").skip(1) {
+        let tag = &tag[..tag.find('>').unwrap()];
+        let at = tag.find(" fill=\"#").map(|i| i + " fill=\"".len());
+        let fill = &tag[at.unwrap_or_else(|| panic!("{name}: a text without a fill"))..][..7];
+        let c = contrast_on_white(fill);
+        assert!(c >= 4.5, "{name}: text in {fill} has {c:.2} : 1 on white");
+        texts += 1;
+    }
+    assert!(texts > 0, "{name}: no text");
+}
+
+#[test]
+fn contrast_is_measured_as_wcag_defines_it() {
+    // Black on white is 21 : 1; #767676 is the lightest grey with 4.5 : 1; the review's
+    // #E69F00 and #56B4E9 are 2.2–2.3 : 1.
+    assert!((contrast_on_white("#000000") - 21.0).abs() < 1e-9);
+    assert!((contrast_on_white("#767676") - 4.54).abs() < 0.01);
+    assert!((contrast_on_white("#E69F00") - 2.25).abs() < 0.01);
+    assert!((contrast_on_white("#56B4E9") - 2.31).abs() < 0.01);
 }

@@ -12,7 +12,44 @@ use plotters::style::text_anchor::Pos;
 /// The white margin around a boxed label's text, in pixels.
 pub(crate) const LABEL_PAD: i32 = 2;
 
-/// Writes `text` at the data point `at` of `chart`, anchored by `pos`, in `colour` at `size`
+/// The least contrast of a label's text against white (WCAG 2's level AA for text).
+pub(crate) const MIN_CONTRAST: f64 = 4.5;
+
+/// WCAG 2's relative luminance of an sRGB colour.
+pub(crate) fn luminance(c: RGBColor) -> f64 {
+    let lin = |v: u8| {
+        let v = f64::from(v) / 255.0;
+        if v <= 0.040_45 {
+            v / 12.92
+        } else {
+            ((v + 0.055) / 1.055).powf(2.4)
+        }
+    };
+    0.2126 * lin(c.0) + 0.7152 * lin(c.1) + 0.0722 * lin(c.2)
+}
+
+/// `c` as text on white: itself where it reaches [`MIN_CONTRAST`] against white, otherwise the
+/// same hue darkened (its sRGB channels scaled down together) until it does, so that a direct
+/// label keeps its line's colour and stays readable (#E69F00 and #56B4E9 reach only 2.3 : 1).
+pub(crate) fn legible(c: RGBColor) -> RGBColor {
+    let contrast = |c: RGBColor| 1.05 / (luminance(c) + 0.05);
+    let scaled = |t: f64| {
+        let ch = |v: u8| (f64::from(v) * t).floor() as u8;
+        RGBColor(ch(c.0), ch(c.1), ch(c.2))
+    };
+    if contrast(c) >= MIN_CONTRAST {
+        return c;
+    }
+    // The largest scale in 1/256 steps that reaches the contrast (black always does).
+    (0..=256)
+        .rev()
+        .map(|k| scaled(f64::from(k) / 256.0))
+        .find(|&d| contrast(d) >= MIN_CONTRAST)
+        .unwrap_or(RGBColor(0, 0, 0))
+}
+
+/// Writes `text` at the data point `at` of `chart`, anchored by `pos`, in `colour` (made
+/// [`legible`]) at `size`
 /// pixels, over a white box a little larger than the text (80 % opaque, so that a line under it
 /// still shows faintly).
 pub(crate) fn boxed_text<DB: DrawingBackend>(
@@ -23,8 +60,9 @@ pub(crate) fn boxed_text<DB: DrawingBackend>(
     size: u32,
     colour: RGBColor,
 ) -> Result<(), Fail> {
+    let ink = legible(colour);
     let style = TextStyle::from((FONT, size).into_font())
-        .color(&colour)
+        .color(&ink)
         .pos(pos);
     let (w, h) = chart
         .plotting_area()
@@ -254,7 +292,8 @@ pub(crate) fn place_note(
     }
 }
 
-/// Writes `text` in `colour` at `size` pixels on a white box (as [`boxed_text`]) filling the
+/// Writes `text` in `colour` (made [`legible`]) at `size` pixels on a white box (as
+/// [`boxed_text`]) filling the
 /// box `r` of backend units (a box from [`place_label`]), aligned to the box's left or right
 /// (`h`: a series' label ends at its right, as a label written left of its line's end).
 pub(crate) fn text_in_box<DB: DrawingBackend>(
@@ -275,8 +314,9 @@ pub(crate) fn text_in_box<DB: DrawingBackend>(
         [(x0, y0), (x1, y1)],
         WHITE.mix(0.8).filled(),
     ))?;
+    let ink = legible(colour);
     let style = TextStyle::from((FONT, size).into_font())
-        .color(&colour)
+        .color(&ink)
         .pos(Pos::new(h, VPos::Top));
     let x = if matches!(h, HPos::Right) {
         x1 - p
