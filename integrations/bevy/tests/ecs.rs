@@ -23,8 +23,8 @@ use shadow_aliasing::glam::{DMat4, DVec3, Mat4 as SaMat4};
 use shadow_aliasing::maps::{ClipDepth, WarpRule};
 use shadow_aliasing::measure::{frustum_max, ShadowMap};
 use shadow_aliasing_bevy::{
-    CascadeErrors, CascadeMode, CascadeSource, Fit, Replace, ReplacedCascades, SceneBounds,
-    ShadowAliasingPlugin, ShadowAliasingSettings, Splits, ViewCascadeErrors,
+    Budget, BudgetState, CascadeErrors, CascadeMode, CascadeSource, Fit, Replace, ReplacedCascades,
+    SceneBounds, ShadowAliasingPlugin, ShadowAliasingSettings, Splits, ViewCascadeErrors,
 };
 
 const ASPECT: f32 = 16.0 / 9.0;
@@ -487,4 +487,74 @@ fn automatic_bias_is_the_texel_diagonal_bevy_needs_and_the_user_gets_theirs_back
     let state = app.world().get::<ReplacedCascades>(light).unwrap();
     let e = state.bias.clone().unwrap().unwrap_err();
     assert!(e.contains("Temporal"), "{e}");
+}
+
+#[test]
+fn budget_lights_share_the_largest_map_size_and_the_app_size_comes_back() {
+    let budget = |target| {
+        CascadeMode::Budget(Budget {
+            max_map_size: Some(8192),
+            ..Budget::new(target)
+        })
+    };
+    // The strict light alone: the size it chooses.
+    let (mut alone, _, _) = app(Some(budget(1.0)), &BOXES);
+    alone.update();
+    let strict_size = alone.world().resource::<DirectionalLightShadowMap>().size;
+    // With a lax second light (another sun), which alone would take a smaller map.
+    let (mut lax_alone, _, lax_light) = app(Some(budget(8.0)), &BOXES);
+    let other_sun = Transform::default().looking_to(Vec3::new(-0.4, -0.7, -0.5), Vec3::Y);
+    *lax_alone
+        .world_mut()
+        .get_mut::<Transform>(lax_light)
+        .unwrap() = other_sun;
+    lax_alone.update();
+    lax_alone.update();
+    let lax_size = lax_alone
+        .world()
+        .resource::<DirectionalLightShadowMap>()
+        .size;
+    assert!(lax_size < strict_size, "{lax_size} {strict_size}");
+    let (mut app, camera, strict) = app(Some(budget(1.0)), &BOXES);
+    let lax = app
+        .world_mut()
+        .spawn((
+            DirectionalLight {
+                shadow_maps_enabled: true,
+                ..default()
+            },
+            other_sun,
+            budget(8.0),
+        ))
+        .id();
+    app.update();
+    app.update();
+    let size = app.world().resource::<DirectionalLightShadowMap>().size;
+    assert_eq!(size, strict_size, "the largest chosen");
+    for (light, target) in [(strict, 1.0), (lax, 8.0)] {
+        let s = app.world().get::<BudgetState>(light).unwrap();
+        let c = s.choice.unwrap_or_else(|| panic!("{:?}", s.error));
+        assert_eq!(c.resolution as usize, size);
+        assert_eq!(c.texels, c.cascades as u64 * (size * size) as u64);
+        // The lax light's maps were built again at the shared size: its reported error is the
+        // measurement of what Bevy holds, and within its target.
+        let measured = errors(&app, light, camera).max_error_pixels().unwrap();
+        assert!(rel(measured, c.max_error_pixels) < 1e-3, "{measured} {c:?}");
+        assert!(c.meets_target && measured <= target * (1.0 + 1e-3), "{c:?}");
+    }
+    for light in [strict, lax] {
+        *app.world_mut().get_mut::<CascadeMode>(light).unwrap() = CascadeMode::Measure;
+    }
+    app.update();
+    assert_eq!(
+        app.world().resource::<DirectionalLightShadowMap>().size,
+        DirectionalLightShadowMap::default().size,
+        "the app's size back"
+    );
+    assert!(app
+        .world()
+        .get::<BudgetState>(strict)
+        .unwrap()
+        .choice
+        .is_none());
 }
