@@ -109,11 +109,14 @@ pub struct BudgetState {
 /// The diagnostic path of a budget figure: `shadow_aliasing/budget/{figure}` with `figure` one
 /// of `max_error_pixels`, `cascades`, `resolution`, `texels`, `meets_target` (1 or 0) and
 /// `switches` (the total since entering budget mode); over every light in budget mode, the
-/// largest value.
+/// largest value (`meets_target`: the least, 1 only where every light meets its target).
 #[must_use]
 pub fn budget_path(figure: &str) -> DiagnosticPath {
     DiagnosticPath::new(format!("shadow_aliasing/budget/{figure}"))
 }
+
+/// The index of `meets_target` in [`BUDGET_FIGURES`].
+const MEETS_TARGET: usize = 4;
 
 const BUDGET_FIGURES: [&str; 6] = [
     "max_error_pixels",
@@ -293,6 +296,7 @@ pub fn budget_cascades(
         shadow_map.size = size as usize;
     }
     let mut figures = [f64::NEG_INFINITY; 6];
+    figures[MEETS_TARGET] = f64::INFINITY;
     for p in pending {
         let Ok((_, item, mut budget)) = lights.get_mut(p.light) else {
             continue;
@@ -351,8 +355,13 @@ pub fn budget_cascades(
             f64::from(u8::from(choice.meets_target)),
             budget.switches as f64,
         ];
-        for (m, v) in figures.iter_mut().zip(values) {
-            *m = m.max(v);
+        for (i, (m, v)) in figures.iter_mut().zip(values).enumerate() {
+            // meets_target: 1 only where every budget light meets its target.
+            *m = if i == MEETS_TARGET {
+                m.min(v)
+            } else {
+                m.max(v)
+            };
         }
         budget.choice = Some(choice);
     }

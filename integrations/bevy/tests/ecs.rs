@@ -8,6 +8,7 @@ mod scene;
 
 use bevy::camera::primitives::Aabb;
 use bevy::camera::{Camera, PerspectiveProjection, Projection};
+use bevy::diagnostic::DiagnosticsStore;
 use bevy::light::cascade::build_directional_light_cascades;
 use bevy::light::{
     CascadeShadowConfig, Cascades, DirectionalLight, DirectionalLightShadowMap, NotShadowCaster,
@@ -23,8 +24,9 @@ use shadow_aliasing::glam::{DMat4, DVec3, Mat4 as SaMat4};
 use shadow_aliasing::maps::{ClipDepth, WarpRule};
 use shadow_aliasing::measure::{frustum_max, ShadowMap};
 use shadow_aliasing_bevy::{
-    Budget, BudgetState, CascadeErrors, CascadeMode, CascadeSource, Fit, Replace, ReplacedCascades,
-    SceneBounds, ShadowAliasingPlugin, ShadowAliasingSettings, Splits, ViewCascadeErrors,
+    budget_path, Budget, BudgetState, CascadeErrors, CascadeMode, CascadeSource, Fit, Replace,
+    ReplacedCascades, SceneBounds, ShadowAliasingPlugin, ShadowAliasingSettings, Splits,
+    ViewCascadeErrors,
 };
 
 const ASPECT: f32 = 16.0 / 9.0;
@@ -542,6 +544,32 @@ fn budget_lights_share_the_largest_map_size_and_the_app_size_comes_back() {
         assert!(rel(measured, c.max_error_pixels) < 1e-3, "{measured} {c:?}");
         assert!(c.meets_target && measured <= target * (1.0 + 1e-3), "{c:?}");
     }
+    // The diagnostics: the shared size, and the larger of the two lights' errors.
+    let store = app.world().resource::<DiagnosticsStore>();
+    let value = |f: &str| store.get(&budget_path(f)).and_then(|d| d.value()).unwrap();
+    assert_eq!(value("resolution"), size as f64);
+    let worst = [strict, lax]
+        .map(|l| {
+            let s = app.world().get::<BudgetState>(l).unwrap();
+            s.choice.unwrap().max_error_pixels
+        })
+        .into_iter()
+        .fold(0.0, f64::max);
+    assert_eq!(value("max_error_pixels"), worst);
+    assert_eq!(value("meets_target"), 1.0);
+    let most = [strict, lax]
+        .map(|l| {
+            app.world()
+                .get::<BudgetState>(l)
+                .unwrap()
+                .choice
+                .unwrap()
+                .cascades
+        })
+        .into_iter()
+        .max()
+        .unwrap();
+    assert_eq!(value("cascades"), most as f64);
     for light in [strict, lax] {
         *app.world_mut().get_mut::<CascadeMode>(light).unwrap() = CascadeMode::Measure;
     }
