@@ -586,3 +586,39 @@ fn budget_lights_share_the_largest_map_size_and_the_app_size_comes_back() {
         .choice
         .is_none());
 }
+
+#[test]
+fn a_bad_budget_is_refused_by_name_and_keeps_bevys_cascades() {
+    for (budget, named) in [
+        (Budget::new(-1.0), "max_error"),
+        (Budget::new(f64::NAN), "max_error"),
+        (
+            Budget {
+                margin: 1.5,
+                ..Budget::new(1.0)
+            },
+            "margin",
+        ),
+        (
+            Budget {
+                max_map_size: Some(3000),
+                ..Budget::new(1.0)
+            },
+            "max_map_size",
+        ),
+    ] {
+        let (app, camera, light) = app(Some(CascadeMode::Budget(budget)), &BOXES);
+        let s = app.world().get::<BudgetState>(light).unwrap();
+        let e = s
+            .error
+            .clone()
+            .unwrap_or_else(|| panic!("{budget:?} accepted"));
+        assert!(e.contains(named), "{budget:?}: {e}");
+        assert!(s.choice.is_none());
+        assert_eq!(errors(&app, light, camera).source, CascadeSource::Bevy);
+        assert_eq!(
+            app.world().resource::<DirectionalLightShadowMap>().size,
+            DirectionalLightShadowMap::default().size
+        );
+    }
+}
