@@ -12,15 +12,21 @@
 //!    pair of both maps' lookups;
 //! 6. the error lens the GPU drew (the crate's `sa_error_lens`) against the pixels one texel step
 //!    spans by the rendered Jacobian, and its perspective part against the frame's reported
-//!    maximum ([`crate::lens`]).
+//!    maximum ([`crate::lens`]);
+//! 7. the GPU's texel position of each pixel against the exact point's under the map's matrix in
+//!    `f64`;
+//! 8. LiSPSM's and TSM's warps fitted from the GPU's texel coordinates ([`crate::warpfit`])
+//!    against the papers' n′ and 80 % line ([`crate::papers`]);
+//! 9. each pixel's map against the paper's split planes and the requested blend bands
+//!    ([`crate::blend`]).
 
-use crate::blend::{band_at, band_maps, blend_agrees, in_band};
+use crate::blend::{band_at, band_maps, blend_agrees, in_band, paper_part};
 use crate::gpu::{FrameOutput, Lookup};
 use crate::perspective::{centred, lloyd2006, one_sided, perspective_error};
 use crate::scene::{ray_occluded, Mesh, Scene, FACING};
 use crate::schemes::{Built, Scheme, View};
 use crate::shadows::{debug_pixel, shadow_decidable, MapGeom};
-use crate::warpfit::WarpFit;
+use crate::warpfit::{warp_fits, warp_measures};
 use glam::{DMat2, DVec2, DVec3};
 use serde::Serialize;
 use shadow_aliasing::measure::vertex::vertex_max;
@@ -900,129 +906,5 @@ impl Lloyd {
                 .max((ground[k].1 / ez - 1.0).abs());
         }
         d
-    }
-}
-
-/// How near (relatively) a pixel's depth may lie to a split plane or a band's end and be left
-/// out of the split check: the GPU's view depth is interpolated in `f32`.
-const PLANE_TOLERANCE: f64 = 1e-4;
-
-/// The map the paper's split planes and requested blend bands name at view depth `z`: in a band,
-/// its first map; elsewhere the slice holding `z` (the first and last slices reaching beyond the
-/// planes). `None` for a scheme not selected by depth, or within [`PLANE_TOLERANCE`] of a plane.
-fn paper_part(built: &Built, z: f64) -> Option<usize> {
-    let p = &built.planes;
-    if p.len() < 2 {
-        return None;
-    }
-    let near = |x: f64| (z - x).abs() <= PLANE_TOLERANCE * z;
-    if p.iter().any(|&x| near(x)) || built.bands.iter().any(|&(_, e)| near(e)) {
-        return None;
-    }
-    if let Some(j) = built.bands.iter().position(|&(b, e)| z >= b && z < e) {
-        return Some(j);
-    }
-    let k = p.len() - 1;
-    Some((1..k).take_while(|&i| z >= p[i]).count())
-}
-
-/// Per map, a fit of its warp where the paper's expectation is measured: LiSPSM's maps (the
-/// single map and each cascade's) and TSM's.
-fn warp_fits(view: &View, built: &Built, scheme: Scheme) -> Vec<Option<WarpFit>> {
-    let measured = matches!(
-        scheme,
-        Scheme::Lispsm | Scheme::Cascades | Scheme::BlendedCascades | Scheme::Tsm
-    );
-    let axis = crate::papers::warp_axis(view.light_eye);
-    built
-        .bodies
-        .iter()
-        .map(|body| {
-            let axis = axis.filter(|_| measured && !body.is_empty())?;
-            let c = body.iter().copied().sum::<DVec3>() / body.len() as f64;
-            let r = body.iter().map(|v| (*v - c).length()).fold(0.0, f64::max);
-            Some(WarpFit::new(axis, view.light_eye, c, r))
-        })
-        .collect()
-}
-
-/// Below this many pixels a map's warp is not fitted (a cascade's sliver at the horizon).
-const MIN_FIT_PIXELS: usize = 2000;
-
-/// LiSPSM's w ratio against the paper's n′ (the largest relative difference over the maps), and
-/// TSM's focus fraction, from the fits (docs/rendered.md, "What is measured", 8–9). A scheme
-/// measured with no map fitted gives NaN (no measurement is no pass).
-fn warp_measures(
-    view: &View,
-    built: &Built,
-    scheme: Scheme,
-    fits: &[Option<WarpFit>],
-    debug: bool,
-) -> (Option<f64>, Option<f64>) {
-    let lispsm = matches!(
-        scheme,
-        Scheme::Lispsm | Scheme::Cascades | Scheme::BlendedCascades
-    );
-    let tsm = scheme == Scheme::Tsm;
-    if !(lispsm || tsm) {
-        return (None, None);
-    }
-    let Some(axis) = crate::papers::warp_axis(view.light_eye) else {
-        return (None, None);
-    };
-    let sin_g = crate::papers::sin_gamma(view.light_eye);
-    let (mut worst, mut frac, mut any) = (0.0f64, f64::NAN, false);
-    for (k, fit) in fits.iter().enumerate() {
-        let Some(warp) = fit.as_ref().and_then(WarpFit::solve) else {
-            continue;
-        };
-        if warp.pixels < MIN_FIT_PIXELS {
-            continue;
-        }
-        let body = &built.bodies[k];
-        let a: Vec<f64> = body.iter().map(|v| axis.dot(*v)).collect();
-        let lo = a.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = a.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        let n_b = body.iter().map(|v| -v.z).fold(f64::INFINITY, f64::min);
-        let f_b = body.iter().map(|v| -v.z).fold(f64::NEG_INFINITY, f64::max);
-        if lispsm {
-            let np = crate::papers::lispsm_n_prime(n_b, f_b, sin_g);
-            let expected = 1.0 + (hi - lo) / np;
-            let got = warp.w_ratio(body);
-            let d = (got / expected - 1.0).abs();
-            if debug {
-                eprintln!(
-                    "  map {k}: w ratio {got:.6} fitted, 1 + Δ/n′ = {expected:.6} (paper n′ {np:.4}, reported {:.4}, Δ {:.4})",
-                    built.maps[k].reported.n_prime,
-                    hi - lo
-                );
-            }
-            worst = worst.max(if d.is_nan() { f64::INFINITY } else { d });
-            any = true;
-        } else {
-            let fr = &view.frustum;
-            let focus = DVec3::new(0.0, 0.0, -(n_b + 0.25 * (fr.far() - fr.near())));
-            let af = axis.dot(focus);
-            let c = warp.warp_coordinate();
-            let x = |p: DVec3| {
-                let st = warp.st(p);
-                if c == 0 {
-                    st.0
-                } else {
-                    st.1
-                }
-            };
-            let (top, base) = (focus + axis * (lo - af), focus + axis * (hi - af));
-            frac = (x(focus) - x(top)) / (x(base) - x(top));
-            if debug {
-                eprintln!("  map {k}: focus fraction {frac:.6} (coordinate {c})");
-            }
-            any = true;
-        }
-    }
-    if lispsm {
-        (Some(if any { worst } else { f64::NAN }), None)
-    } else {
-        (None, Some(frac))
     }
 }

@@ -1,6 +1,7 @@
 //! Cascades' cross-fade (docs/rendered.md, "What is measured", 6): the blend bands the requested
 //! overlap makes at a pixel's exact view depth, and whether the shader's cross-fade there is
-//! theirs.
+//! theirs; and the map the paper's split planes and those bands name at a depth (the split
+//! check, "What is measured", 10).
 
 use crate::gpu::FrameOutput;
 use crate::schemes::Built;
@@ -79,4 +80,27 @@ pub(crate) fn in_band(out: &FrameOutput, i: usize, part: usize, built: &Built, z
     let [second, wg, _, _] = out.blend[i];
     band_at(built, z).is_some()
         || (second as usize != part && f64::from(wg.min(1.0 - wg)) > BLEND_WEIGHT_TOLERANCE)
+}
+
+/// How near (relatively) a pixel's depth may lie to a split plane or a band's end and be left
+/// out of the split check: the GPU's view depth is interpolated in `f32`.
+const PLANE_TOLERANCE: f64 = 1e-4;
+
+/// The map the paper's split planes and requested blend bands name at view depth `z`: in a band,
+/// its first map; elsewhere the slice holding `z` (the first and last slices reaching beyond the
+/// planes). `None` for a scheme not selected by depth, or within [`PLANE_TOLERANCE`] of a plane.
+pub(crate) fn paper_part(built: &Built, z: f64) -> Option<usize> {
+    let p = &built.planes;
+    if p.len() < 2 {
+        return None;
+    }
+    let near = |x: f64| (z - x).abs() <= PLANE_TOLERANCE * z;
+    if p.iter().any(|&x| near(x)) || built.bands.iter().any(|&(_, e)| near(e)) {
+        return None;
+    }
+    if let Some(j) = built.bands.iter().position(|&(b, e)| z >= b && z < e) {
+        return Some(j);
+    }
+    let k = p.len() - 1;
+    Some((1..k).take_while(|&i| z >= p[i]).count())
 }

@@ -1,4 +1,4 @@
-//! A map's warp read from the GPU's texel coordinates (docs/rendered.md, "What is measured", 8):
+//! A map's warp read from the GPU's texel coordinates (docs/rendered.md, "What is measured", 9):
 //! over the pixels shaded from one map, the texel coordinates (s, t) as the camera pass read them
 //! back against the pixels' exact surface points in the light's plane, a along the warp axis
 //! ([`crate::papers::warp_axis`]) and b across it. A warp perpendicular to the light is
@@ -13,6 +13,7 @@
 //! `1 + Δ/n′` for a warp whose centre of projection lies n′ before the body's near end and Δ the
 //! body's extent along the axis. Nothing here uses the map's matrix.
 
+use crate::schemes::{Built, Scheme, View};
 use glam::DVec3;
 
 /// Accumulates the normal equations of the fit.
@@ -168,6 +169,107 @@ fn solve7(mut a: [[f64; 7]; 7], mut b: [f64; 7]) -> Option<[f64; 7]> {
         x[r] = s / a[r][r];
     }
     x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// Per map, a fit of its warp where the paper's expectation is measured: LiSPSM's maps (the
+/// single map and each cascade's) and TSM's.
+pub(crate) fn warp_fits(view: &View, built: &Built, scheme: Scheme) -> Vec<Option<WarpFit>> {
+    let measured = matches!(
+        scheme,
+        Scheme::Lispsm | Scheme::Cascades | Scheme::BlendedCascades | Scheme::Tsm
+    );
+    let axis = crate::papers::warp_axis(view.light_eye);
+    built
+        .bodies
+        .iter()
+        .map(|body| {
+            let axis = axis.filter(|_| measured && !body.is_empty())?;
+            let c = body.iter().copied().sum::<DVec3>() / body.len() as f64;
+            let r = body.iter().map(|v| (*v - c).length()).fold(0.0, f64::max);
+            Some(WarpFit::new(axis, view.light_eye, c, r))
+        })
+        .collect()
+}
+
+/// Below this many pixels a map's warp is not fitted (a cascade's sliver at the horizon).
+const MIN_FIT_PIXELS: usize = 2000;
+
+/// LiSPSM's w ratio against the paper's n′ (the largest relative difference over the maps), and
+/// TSM's focus fraction, from the fits (docs/rendered.md, "What is measured", 8–9). A scheme
+/// measured with no map fitted gives NaN (no measurement is no pass).
+pub(crate) fn warp_measures(
+    view: &View,
+    built: &Built,
+    scheme: Scheme,
+    fits: &[Option<WarpFit>],
+    debug: bool,
+) -> (Option<f64>, Option<f64>) {
+    let lispsm = matches!(
+        scheme,
+        Scheme::Lispsm | Scheme::Cascades | Scheme::BlendedCascades
+    );
+    let tsm = scheme == Scheme::Tsm;
+    if !(lispsm || tsm) {
+        return (None, None);
+    }
+    let Some(axis) = crate::papers::warp_axis(view.light_eye) else {
+        return (None, None);
+    };
+    let sin_g = crate::papers::sin_gamma(view.light_eye);
+    let (mut worst, mut frac, mut any) = (0.0f64, f64::NAN, false);
+    for (k, fit) in fits.iter().enumerate() {
+        let Some(warp) = fit.as_ref().and_then(WarpFit::solve) else {
+            continue;
+        };
+        if warp.pixels < MIN_FIT_PIXELS {
+            continue;
+        }
+        let body = &built.bodies[k];
+        let a: Vec<f64> = body.iter().map(|v| axis.dot(*v)).collect();
+        let lo = a.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = a.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let n_b = body.iter().map(|v| -v.z).fold(f64::INFINITY, f64::min);
+        let f_b = body.iter().map(|v| -v.z).fold(f64::NEG_INFINITY, f64::max);
+        if lispsm {
+            let np = crate::papers::lispsm_n_prime(n_b, f_b, sin_g);
+            let expected = 1.0 + (hi - lo) / np;
+            let got = warp.w_ratio(body);
+            let d = (got / expected - 1.0).abs();
+            if debug {
+                eprintln!(
+                    "  map {k}: w ratio {got:.6} fitted, 1 + Δ/n′ = {expected:.6} (paper n′ {np:.4}, reported {:.4}, Δ {:.4})",
+                    built.maps[k].reported.n_prime,
+                    hi - lo
+                );
+            }
+            worst = worst.max(if d.is_nan() { f64::INFINITY } else { d });
+            any = true;
+        } else {
+            let fr = &view.frustum;
+            let focus = DVec3::new(0.0, 0.0, -(n_b + 0.25 * (fr.far() - fr.near())));
+            let af = axis.dot(focus);
+            let c = warp.warp_coordinate();
+            let x = |p: DVec3| {
+                let st = warp.st(p);
+                if c == 0 {
+                    st.0
+                } else {
+                    st.1
+                }
+            };
+            let (top, base) = (focus + axis * (lo - af), focus + axis * (hi - af));
+            frac = (x(focus) - x(top)) / (x(base) - x(top));
+            if debug {
+                eprintln!("  map {k}: focus fraction {frac:.6} (coordinate {c})");
+            }
+            any = true;
+        }
+    }
+    if lispsm {
+        (Some(if any { worst } else { f64::NAN }), None)
+    } else {
+        (None, Some(frac))
+    }
 }
 
 #[cfg(test)]
