@@ -63,6 +63,22 @@ fn crosses(a: (f64, f64), b: (f64, f64), (x0, y0, x1, y1): (f64, f64, f64, f64))
     t0 < t1
 }
 
+/// Whether the text colour `text` (`#RRGGBB`) is the line colour `line` or that colour darkened
+/// (its channels scaled down together, to within rounding), as a direct label's text is where
+/// its line's colour is too light to read on white.
+fn same_hue(line: &str, text: &str) -> bool {
+    let rgb = |h: &str| -> [f64; 3] {
+        [1, 3, 5].map(|i| f64::from(u8::from_str_radix(&h[i..i + 2], 16).unwrap()))
+    };
+    let (l, t) = (rgb(line), rgb(text));
+    let lmax = l.iter().copied().fold(0.0, f64::max);
+    if lmax == 0.0 {
+        return t == l;
+    }
+    let k = t.iter().copied().fold(0.0, f64::max) / lmax;
+    k <= 1.0 && l.iter().zip(&t).all(|(a, b)| (a * k - b).abs() <= 1.5)
+}
+
 #[derive(Debug)]
 enum Shape {
     Line(Vec<(f64, f64)>),
@@ -103,7 +119,7 @@ fn covered(svg: &str) -> Vec<String> {
             .unwrap();
         let inside = |p: &(f64, f64)| p.0 >= b.0 && p.0 <= b.2 && p.1 >= b.1 && p.1 <= b.3;
         for (j, colour, shape) in &series {
-            if *colour == own {
+            if same_hue(colour, own) {
                 continue;
             }
             let pts = match shape {

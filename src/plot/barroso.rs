@@ -124,7 +124,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     let zoom = magnified(&c, window, (0.3, 100.0), gl_deg, phi_deg, grey);
     c.title = "(a) γ from 0° to 90°".into();
     Ok(Charts {
-        size: (520, 940),
+        size: (520, 850),
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![format!(
             "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n = {n}, f = {f}, φ_y = π/6. Bold: the \

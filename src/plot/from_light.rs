@@ -205,7 +205,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         title: "The view frustum seen from the light, with z-partitions",
         caption,
         panels,
-        size: (520, 1120),
+        size: (520, 976),
     })
 }
 
@@ -273,7 +273,7 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
         title: "The view frustum seen from a light behind the viewer",
         caption,
         panels: vec![p],
-        size: (520, 700),
+        size: (520, 610),
     })
 }
 
@@ -320,7 +320,6 @@ impl Figure for FromLight {
         let columns = self.panels.len().min(2);
         let cells = body.split_evenly((self.panels.len().div_ceil(columns), columns));
         let style = ChartStyle {
-            title_size: 15,
             y_label_area: 50,
             ..ChartStyle::default()
         };

@@ -166,7 +166,7 @@ impl Fig7 {
 
 impl Figure for Fig7 {
     fn size(&self) -> (u32, u32) {
-        (520, 1090)
+        (520, 892)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -197,16 +197,11 @@ impl Figure for Fig7 {
         draw_colour_bar(&ratio_bar, &self.ratio_scale)?;
         let style = TextStyle::from((FONT, 13).into_font());
         let lines = [
-            "How many times fewer",
-            "texels face partitioning",
-            "needs than LiSPSM for",
-            "the same error, at each",
-            "light direction: 1",
-            "overhead, most behind,",
-            "in front and near the",
-            "horizon; below 1 (at",
-            "least 0.9) where face",
-            "partitioning is worse.",
+            "How many times the",
+            "texels of face",
+            "partitioning LiSPSM",
+            "needs for the same",
+            "error.",
         ];
         for (i, line) in lines.iter().enumerate() {
             note.draw(&Text::new(*line, (12, 60 + 18 * i as i32), style.clone()))?;

@@ -5,7 +5,7 @@
 //! the face pairs by their largest M_x, each column's height among its members by M_z).
 
 use super::chart::{
-    build_chart_styled, equal_aspect, frame, linspace, Axis, ChartStyle, FONT, PALETTE,
+    build_chart_styled, equal_aspect, frame, linspace, Axis, ChartStyle, FONT, PALETTE, PANEL_TITLE,
 };
 use super::from_light::{seen_from_light, SEEN_X};
 use super::warp_grid::minus;
@@ -164,7 +164,7 @@ fn apply(h: &DMat3, p: DVec2) -> DVec2 {
 
 impl Figure for Fig8 {
     fn size(&self) -> (u32, u32) {
-        (520, 1180)
+        (520, 874)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -191,7 +191,7 @@ impl Figure for Fig8 {
         let (top, bottom) = body.split_vertically(bw / 2);
         let halves = top.split_evenly((1, 2));
         let style = ChartStyle {
-            title_size: 15,
+            title_size: PANEL_TITLE,
             x_label_area: 40,
             y_label_area: 48,
             tick_size: 13,
@@ -348,7 +348,7 @@ impl Fig8 {
     fn draw_texture<DB: DrawingBackend>(&self, body: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let n = f64::from(SIZE);
         let style = ChartStyle {
-            title_size: 15,
+            title_size: PANEL_TITLE,
             ..ChartStyle::default()
         };
         let title = "(c) the texture layout by Eq 6";

@@ -230,7 +230,7 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
         .reference(),
     );
     Ok(Charts {
-        size: (520, 980),
+        size: (520, 926),
         title:
             "Storage factor of warped z-partitions against the number of partitions, light overhead"
                 .into(),
@@ -381,7 +381,7 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
     });
     c.title = "(a) overhead (solid) and behind (dashed)".into();
     Ok(Charts {
-        size: (520, 980),
+        size: (520, 926),
         title: "Storage factor against the number of shadow maps".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 12 (Eq 17–21), f/n = {ratio}, θ = {THETA_DEG}°. k \

@@ -269,7 +269,7 @@ fn fig12_face_partitions_are_unjoined_markers() {
 
 /// Fig 10 (a) labels each curve's optimum (issue 25): drawn into an SVG, the value of
 /// App. C's ln(f/n)/(2 tan 30°) for f/n = 10, 100, 1000, 10⁴ (by hand: 1.99, 3.99, 5.98,
-/// 7.98) is written once in its curve's colour, level with its dashed line (within 20
+/// 7.98) is written once in its curve's text colour, level with its dashed line (within 20
 /// units, the label's box, on the panel's log axis read from its 10⁰ and 10⁴ labels).
 #[test]
 fn fig10_labels_each_optimum() {
@@ -282,8 +282,9 @@ fn fig10_labels_each_optimum() {
     for (i, ratio) in [10f64, 100.0, 1000.0, 10_000.0].into_iter().enumerate() {
         let opt = ratio.ln() / (2.0 * tan);
         let text = format!("{opt:.2}");
+        // Its curve's colour as text: darkened where the line's is too light to read on white.
         let colour = {
-            let c = PALETTE[i];
+            let c = crate::plot::chart::legible(PALETTE[i]);
             format!("fill=\"#{:02X}{:02X}{:02X}\"", c.0, c.1, c.2)
         };
         let found: Vec<f64> = texts

@@ -151,7 +151,7 @@ fn profile_floor(a: &[(f64, f64)], b: &[(f64, f64)]) -> f64 {
 
 impl Figure for Fig6 {
     fn size(&self) -> (u32, u32) {
-        (520, 1000)
+        (520, 928)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {

@@ -310,7 +310,7 @@ fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), 
 
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
-        (520, 1140)
+        (520, 960)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {

@@ -10,7 +10,7 @@
 
 use super::chart::{
     build_chart_styled, clip_polyline, equal_aspect, frame, linspace, Axis, ChartStyle, FONT,
-    PALETTE,
+    PALETTE, PANEL_TITLE,
 };
 use super::{Fail, Figure, UNIT_SQUARE};
 use crate::analytic::eta::n_prime_from_eta;
@@ -179,7 +179,7 @@ impl Figure for Fig4 {
             let cw = pw + if first { label_w } else { 0 };
             let area = body.clone().shrink((x0, 0), (cw, bh));
             let st = ChartStyle {
-                title_size: 13,
+                title_size: PANEL_TITLE,
                 x_label_area: 36,
                 y_label_area: if first { label_w } else { 0 },
                 tick_size: 13,

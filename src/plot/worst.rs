@@ -104,7 +104,7 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
         ..Series::line("the paper's 2–3× (shaded)", Vec::new(), BAND).reference()
     });
     Ok(Charts {
-        size: (520, 860),
+        size: (520, 788),
         title: "Worst case over all light directions against the light-behind closed form".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, §5.3, which has no figure, claims the worst S̄ over all light \

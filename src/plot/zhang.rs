@@ -9,7 +9,7 @@
 
 use super::chart::{
     build_chart_styled, colour_bar_ticks, draw_bar_bands, frame, Axis, ChartStyle, ColourScale,
-    Grid, Ticked, COLOUR_BAR_TICK, FONT,
+    Grid, Ticked, COLOUR_BAR_TICK, FONT, PANEL_TITLE,
 };
 use super::{Fail, Figure};
 use crate::maps::{warp, WarpRule};
@@ -189,7 +189,7 @@ const PANEL_RATIO: f64 = 1.07;
 
 /// The page's size: three blocks of 3 × 3 panels side by side (landscape drawing), the caption
 /// under them.
-pub(super) const SIZE: (u32, u32) = (520, 580);
+pub(super) const SIZE: (u32, u32) = (520, 470);
 
 /// Draws a horizontal colour bar for `scale` into `area`: the bands, an outline, tick marks
 /// under it with the labels of [`colour_bar_ticks`] (its ends and the decades), thinned so that
@@ -321,7 +321,7 @@ impl Figure for Fig3 {
                         .clone()
                         .shrink((x0, grid_top + r as u32 * (ph + GAP)), (cw, ch));
                     let style = ChartStyle {
-                        title_size: 13,
+                        title_size: PANEL_TITLE,
                         x_label_area: if last_row { X_LABELS } else { 0 },
                         y_label_area: if row_label { ROW_LABEL } else { 0 },
                         tick_size: 13,

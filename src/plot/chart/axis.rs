@@ -399,6 +399,9 @@ pub(crate) fn superscript(e: i64) -> String {
     s
 }
 
+/// The size of every panel's title, in pixels (one size in every figure).
+pub(crate) const PANEL_TITLE: u32 = 15;
+
 /// Sizes of a chart's text and label areas, in pixels.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct ChartStyle {
@@ -413,7 +416,7 @@ pub(crate) struct ChartStyle {
 impl Default for ChartStyle {
     fn default() -> Self {
         Self {
-            title_size: 17,
+            title_size: PANEL_TITLE,
             x_label_area: 46,
             y_label_area: 64,
             tick_size: 13,

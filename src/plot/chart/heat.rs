@@ -2,7 +2,7 @@
 
 use super::super::canvas::Fine;
 use super::super::Fail;
-use super::axis::{Axis, Chart2d};
+use super::axis::{Axis, Chart2d, PANEL_TITLE};
 use super::raster::Raster;
 use super::FONT;
 use plotters::coord::Shift;
@@ -343,7 +343,7 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
     area.draw(&Text::new(
         title.to_string(),
         (w as i32 / 2, 4),
-        TextStyle::from((FONT, 16).into_font()).pos(Pos::new(HPos::Center, VPos::Top)),
+        TextStyle::from((FONT, PANEL_TITLE).into_font()).pos(Pos::new(HPos::Center, VPos::Top)),
     ))?;
     let pad = 0.16;
     let span = 2.0 + 2.0 * pad;
