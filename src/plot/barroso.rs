@@ -152,7 +152,12 @@ fn magnified(
     let mut z = LineChart::new(
         format!("(b) magnified: γ from {:.0}° to {:.0}°", x.0, x.1),
         Axis::linear(c.x.label.clone(), x.0, x.1),
-        Axis::log10(c.y.label.clone(), y.0, y.1),
+        // n′ in (a)'s format (powers of ten there), not plain numbers for this range.
+        if c.y.writes_plain() {
+            Axis::log10(c.y.label.clone(), y.0, y.1)
+        } else {
+            Axis::log10(c.y.label.clone(), y.0, y.1).in_powers()
+        },
     );
     // Short legend labels, in the empty lower right (the curves run above n′ = 5 there).
     let short = [

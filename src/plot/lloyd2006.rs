@@ -465,10 +465,11 @@ pub(super) fn fig13() -> Result<Fig13, Fail> {
     })
 }
 
-/// Fig 13's fills: dark blue where z-partitioning is lowest, light orange where face
-/// partitioning is, so that the two read apart in greyscale too.
-const ZP_FILL: RGBColor = RGBColor(62, 122, 178);
-const FP_FILL: RGBColor = RGBColor(246, 214, 170);
+/// Fig 13's fills, in the colours Fig 12 and the worst-case figure give the schemes: ZP in its
+/// blue (PALETTE[0]) where z-partitioning is lowest, FP+ZP+W's green (PALETTE[2]) lightened
+/// where face partitioning is, so that the two also read apart in greyscale (dark and light).
+const ZP_FILL: RGBColor = PALETTE[0];
+const FP_FILL: RGBColor = RGBColor(166, 221, 206);
 
 /// Height of Fig 13's key row, above the chart.
 const KEY_HEIGHT: u32 = 30;

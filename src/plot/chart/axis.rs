@@ -80,6 +80,9 @@ pub(crate) struct Axis {
     pub min: f64,
     pub max: f64,
     pub scale: Scale,
+    /// A base-10 axis writes its decades as powers of ten even where plain numbers would do
+    /// ([`Axis::in_powers`]), so that a quantity keeps one format across panels.
+    pub powers: bool,
 }
 
 impl Axis {
@@ -90,6 +93,7 @@ impl Axis {
             min,
             max,
             scale: Scale::Linear,
+            powers: false,
         }
     }
 
@@ -100,6 +104,7 @@ impl Axis {
             min,
             max,
             scale: Scale::Integer,
+            powers: false,
         }
     }
 
@@ -110,6 +115,7 @@ impl Axis {
             min,
             max,
             scale: Scale::Every { first, step },
+            powers: false,
         }
     }
 
@@ -120,6 +126,7 @@ impl Axis {
             min,
             max,
             scale: Scale::Log(10.0),
+            powers: false,
         }
     }
 
@@ -130,7 +137,20 @@ impl Axis {
             min,
             max,
             scale: Scale::Log(b),
+            powers: false,
         }
+    }
+
+    /// The same axis, its decades written as powers of ten whatever its range.
+    pub fn in_powers(mut self) -> Self {
+        self.powers = true;
+        self
+    }
+
+    /// Whether a base-10 axis writes its decades as plain numbers (1, 10, 100) rather than
+    /// powers of ten.
+    pub fn writes_plain(&self) -> bool {
+        self.plain_decades()
     }
 
     /// Data value → axis space; `None` for values the axis cannot show at all (non-finite, or
@@ -256,10 +276,12 @@ impl Axis {
     /// Whether every labelled decade of a base-10 axis reads well as a plain number (0.01 to
     /// 1000); otherwise all decades are written as powers of ten, never a mix of both.
     fn plain_decades(&self) -> bool {
-        self.ticks()
-            .0
-            .iter()
-            .all(|&a| (-2.0 - 1e-9..=3.0 + 1e-9).contains(&a))
+        !self.powers
+            && self
+                .ticks()
+                .0
+                .iter()
+                .all(|&a| (-2.0 - 1e-9..=3.0 + 1e-9).contains(&a))
             && self.max <= 1000.0 * (1.0 + 1e-9)
     }
 
@@ -521,6 +543,12 @@ mod tests {
         let plain = Axis::log10("S", 0.1, 1000.0);
         assert_eq!(plain.tick_label(-1.0), "0.1");
         assert_eq!(plain.tick_label(3.0), "1000");
+        // A quantity written in powers in one panel keeps them in another (issue 35:
+        // barroso-fig7 (a) 10⁰…10⁴ beside (b) 1, 10, 100).
+        let powers = Axis::log10("n′", 0.3, 100.0).in_powers();
+        assert!(plain.writes_plain() && !powers.writes_plain());
+        assert_eq!(powers.tick_label(0.0), "10⁰");
+        assert_eq!(powers.tick_label(2.0), "10²");
         assert_eq!(Axis::log10("S", 1e-6, 1.0).tick_label(-6.0), "10⁻⁶");
         assert_eq!(a.to_axis(100.0), Some(2.0));
         assert_eq!(a.to_axis(0.0), None);
