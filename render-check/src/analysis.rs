@@ -23,13 +23,13 @@
 use crate::blend::{band_at, band_maps, blend_agrees, in_band, paper_part};
 use crate::gpu::{FrameOutput, Lookup};
 use crate::perspective::{centred, lloyd2006, one_sided, perspective_error};
+use crate::ratios::{frame_ratios, lens_ratios};
 use crate::scene::{ray_occluded, Mesh, Scene, FACING};
 use crate::schemes::{Built, Scheme, View};
 use crate::shadows::{debug_pixel, shadow_decidable, MapGeom};
 use crate::warpfit::{warp_fits, warp_measures};
 use glam::{DMat2, DVec2, DVec3};
 use serde::Serialize;
-use shadow_aliasing::measure::vertex::vertex_max;
 use shadow_aliasing::measure::{surface_footprint, Footprint, Grids};
 
 /// Surfaces nearly edge-on to the light (|n·L| below this) are left out of the perspective-error
@@ -38,7 +38,7 @@ pub const EDGE_ON_LIGHT: f64 = 0.05;
 
 /// A rendered maximum counts as reaching the reported one when the body's worst point is within
 /// this many pixel widths of a visible pixel's surface point.
-const VISIBLE_PIXELS: f64 = 3.0;
+pub(crate) const VISIBLE_PIXELS: f64 = 3.0;
 
 /// A frame's numbers (the fields of summary.json that the analysis measures; docs/rendered.md,
 /// "What is measured").
@@ -171,7 +171,7 @@ pub fn pixel_point(
 
 /// The exact state of a visible pixel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Class {
+pub(crate) enum Class {
     /// Sky.
     Sky,
     /// Facing the light, not occluded.
@@ -184,14 +184,14 @@ enum Class {
 
 /// What the first pass finds at one pixel.
 #[derive(Debug, Clone, Copy)]
-struct Pixel {
-    class: Class,
+pub(crate) struct Pixel {
+    pub(crate) class: Class,
     /// Exact eye-space point.
-    p: DVec3,
+    pub(crate) p: DVec3,
     /// Eye-space unit normal.
     n: DVec3,
     /// The map the shader selected (`usize::MAX` when it named none of the built maps).
-    part: usize,
+    pub(crate) part: usize,
     predicted: Option<Footprint>,
     /// Whether the shadow comparison decides this pixel (outside the texel band; in a blend
     /// band, outside the texel band of both its maps).
@@ -695,134 +695,6 @@ pub fn analyse(
         lens,
         perspective_lens,
     })
-}
-
-/// The frame's reported maxima against the rendered ones: the largest rendered/reported ratio
-/// over maps and over x and z, and the smallest where the body's worst point is visible.
-fn frame_ratios(
-    px: &[Pixel],
-    view: &View,
-    built: &Built,
-    rendered_m: &[(f64, f64)],
-    (width, height, res): (u32, u32, u32),
-) -> (f64, Option<f64>) {
-    let to_pixels = f64::from(height) / f64::from(res);
-    let tan = view.frustum.tan_half_fov();
-    let (mut ratio, mut worst) = (0.0f64, None::<f64>);
-    for (k, map) in built.maps.iter().enumerate() {
-        let reported = (
-            map.reported.max_mx * to_pixels,
-            map.reported.max_mz * to_pixels,
-        );
-        let got = rendered_m[k];
-        ratio = ratio.max(got.0 / reported.0).max(got.1 / reported.1);
-        // Each body vertex's m_x, m_z under the map as rendered; the worst ones, and whether any
-        // of them is a visible surface point.
-        let body = built.bodies.get(k).map_or(&[][..], Vec::as_slice);
-        let per: Vec<(DVec3, f64, f64)> = body
-            .iter()
-            .filter_map(|&v| {
-                vertex_max(&map.built, view.light_eye, tan, &[v]).map(|e| (v, e.max_mx, e.max_mz))
-            })
-            .collect();
-        if got == (0.0, 0.0) {
-            // No rendered error measured in this map (a clipmap's last level can be a sliver at
-            // the horizon, no pixel of it with two neighbours in it): nothing to compare.
-            continue;
-        }
-        for (axis, rep, got) in [(0, reported.0, got.0), (1, reported.1, got.1)] {
-            let top = per
-                .iter()
-                .map(|e| if axis == 0 { e.1 } else { e.2 })
-                .fold(0.0f64, f64::max);
-            let seen = per.iter().any(|e| {
-                let m = if axis == 0 { e.1 } else { e.2 };
-                m >= top * (1.0 - 1e-6) && visible_point(px, view, (width, height), e.0, k)
-            });
-            if seen {
-                let r = got / rep;
-                worst = Some(worst.map_or(r, |w| w.min(r)));
-            }
-        }
-    }
-    (ratio, worst)
-}
-
-/// The GPU's lens with the projection factor 1 against the frame's reported maxima: the largest
-/// ratio of a map's largest such lens over its visible pixels to its `max_error_pixels`, and the
-/// smallest over the maps whose worst body vertex (the one of the largest max(m_x, m_z) under the
-/// map, `vertex_max`) is within [`VISIBLE_PIXELS`] of a visible pixel looked up in the map.
-fn lens_ratios(
-    px: &[Pixel],
-    view: &View,
-    built: &Built,
-    lens_m: &[f64],
-    (width, height): (u32, u32),
-) -> (f64, Option<f64>) {
-    let tan = view.frustum.tan_half_fov();
-    let (mut ratio, mut worst) = (0.0f64, None::<f64>);
-    for (k, map) in built.maps.iter().enumerate() {
-        if lens_m[k] == 0.0 {
-            // No pixel of this map (a clipmap's last level can be off screen).
-            continue;
-        }
-        let r = lens_m[k] / map.reported.max_error_pixels;
-        ratio = ratio.max(r);
-        let body = built.bodies.get(k).map_or(&[][..], Vec::as_slice);
-        let per: Vec<(DVec3, f64)> = body
-            .iter()
-            .filter_map(|&v| {
-                vertex_max(&map.built, view.light_eye, tan, &[v])
-                    .map(|e| (v, e.max_mx.max(e.max_mz)))
-            })
-            .collect();
-        let top = per.iter().map(|e| e.1).fold(0.0f64, f64::max);
-        let seen = per
-            .iter()
-            .any(|e| e.1 >= top * (1.0 - 1e-6) && visible_point(px, view, (width, height), e.0, k));
-        if seen {
-            worst = Some(worst.map_or(r, |w| w.min(r)));
-        }
-    }
-    if lens_m.iter().all(|&m| m == 0.0) {
-        // No lens at all: not a pass.
-        return (f64::NAN, worst);
-    }
-    (ratio, worst)
-}
-
-/// Whether the eye-space point `v` is (within [`VISIBLE_PIXELS`] pixel widths) the surface point
-/// of a visible pixel looked up in map `map` (where it shows only on pixels of another map, the
-/// map's rendered maximum says nothing about it).
-fn visible_point(
-    px: &[Pixel],
-    view: &View,
-    (width, height): (u32, u32),
-    v: DVec3,
-    map: usize,
-) -> bool {
-    let c = view.proj * v.extend(1.0);
-    if c.w <= 0.0 {
-        return false;
-    }
-    let (w, h) = (f64::from(width), f64::from(height));
-    let u = (c.x / c.w + 1.0) * 0.5 * w;
-    let r = (1.0 - c.y / c.w) * 0.5 * h;
-    let reach = VISIBLE_PIXELS * 2.0 * (-v.z) * view.frustum.tan_half_fov() / h;
-    let span = VISIBLE_PIXELS.ceil() as isize;
-    for dy in -span..=span {
-        for dx in -span..=span {
-            let (x, y) = (u.floor() as isize + dx, r.floor() as isize + dy);
-            if x < 0 || y < 0 || x >= width as isize || y >= height as isize {
-                continue;
-            }
-            let q = px[y as usize * width as usize + x as usize];
-            if q.class != Class::Sky && q.part == map && (q.p - v).length() <= reach {
-                return true;
-            }
-        }
-    }
-    false
 }
 
 /// Lloyd 2006's overhead case, where it applies: the camera level, the light straight down

@@ -12,6 +12,7 @@ pub mod images;
 pub mod lens;
 pub mod papers;
 pub mod perspective;
+pub mod ratios;
 pub mod run;
 pub mod scene;
 pub mod schemes;
