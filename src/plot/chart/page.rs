@@ -17,7 +17,7 @@ thread_local! {
 }
 
 /// The space a bare page keeps above the captioned page's body, in units (below it, the body's
-/// own bottom margin is left: the caption starts 4 units under it).
+/// own bottom margin is left: the caption starts 7 units under it).
 const BARE_PAD: u32 = 6;
 
 /// Runs `draw` with every page it draws bare (no title, no caption) or not: the page option of
@@ -89,7 +89,8 @@ pub(crate) fn frame<DB: DrawingBackend>(
     for (k, line) in lines.iter().enumerate() {
         root.draw(&Text::new(
             line.clone(),
-            (14, h as i32 - bottom + 4 + k as i32 * line_h),
+            // 7 units under the body: a bar over the first line's S̄ rises above its text box.
+            (14, h as i32 - bottom + 7 + k as i32 * line_h),
             style
                 .color(&RGBColor(50, 50, 50))
                 .pos(Pos::new(HPos::Left, VPos::Top)),
