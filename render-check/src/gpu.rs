@@ -685,62 +685,28 @@ impl Gpu {
                 load: wgpu::LoadOp::Clear(c),
                 store: wgpu::StoreOp::Store,
             };
+            // Targets 0–6 as above; the colour and the overlay (2, 6) cleared to the sky.
+            let sky = wgpu::Color {
+                r: 0.55,
+                g: 0.7,
+                b: 0.9,
+                a: 1.0,
+            };
+            let colour: [Option<wgpu::RenderPassColorAttachment>; 7] = std::array::from_fn(|i| {
+                Some(wgpu::RenderPassColorAttachment {
+                    view: &views[i],
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: clear(if i == 2 || i == 6 {
+                        sky
+                    } else {
+                        wgpu::Color::TRANSPARENT
+                    }),
+                })
+            });
             let mut pass = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some("camera"),
-                color_attachments: &[
-                    Some(wgpu::RenderPassColorAttachment {
-                        view: &views[0],
-                        depth_slice: None,
-                        resolve_target: None,
-                        ops: clear(wgpu::Color::TRANSPARENT),
-                    }),
-                    Some(wgpu::RenderPassColorAttachment {
-                        view: &views[1],
-                        depth_slice: None,
-                        resolve_target: None,
-                        ops: clear(wgpu::Color::TRANSPARENT),
-                    }),
-                    Some(wgpu::RenderPassColorAttachment {
-                        view: &views[2],
-                        depth_slice: None,
-                        resolve_target: None,
-                        ops: clear(wgpu::Color {
-                            r: 0.55,
-                            g: 0.7,
-                            b: 0.9,
-                            a: 1.0,
-                        }),
-                    }),
-                    Some(wgpu::RenderPassColorAttachment {
-                        view: &views[3],
-                        depth_slice: None,
-                        resolve_target: None,
-                        ops: clear(wgpu::Color::TRANSPARENT),
-                    }),
-                    Some(wgpu::RenderPassColorAttachment {
-                        view: &views[4],
-                        depth_slice: None,
-                        resolve_target: None,
-                        ops: clear(wgpu::Color::TRANSPARENT),
-                    }),
-                    Some(wgpu::RenderPassColorAttachment {
-                        view: &views[5],
-                        depth_slice: None,
-                        resolve_target: None,
-                        ops: clear(wgpu::Color::TRANSPARENT),
-                    }),
-                    Some(wgpu::RenderPassColorAttachment {
-                        view: &views[6],
-                        depth_slice: None,
-                        resolve_target: None,
-                        ops: clear(wgpu::Color {
-                            r: 0.55,
-                            g: 0.7,
-                            b: 0.9,
-                            a: 1.0,
-                        }),
-                    }),
-                ],
+                color_attachments: &colour,
                 depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                     view: &views[7],
                     depth_ops: Some(wgpu::Operations {
