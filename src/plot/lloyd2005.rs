@@ -71,7 +71,8 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     };
     let mut c = LineChart::new(
         "solid: ξ = 0, dashed: |ξ| = 1",
-        Axis::integer("number of face subdivisions k", 1.0, 10.0),
+        // A tick at every k (the paper's k = 1 … 10).
+        Axis::every("number of face subdivisions k", 1.0, 10.0, 1.0, 1.0),
         // Up to 2, so that the top curve's label fits above it (the curves are too close for a
         // label between them).
         Axis::log10("m_{max}(k) / m_{max}(1) (log scale)", 1e-3, 2.0),

@@ -28,6 +28,9 @@ pub(super) const SCHEMES: [(&str, Scheme, WarpRule, Partition); 3] = [
     ("FP+ZP+W", Scheme::FpZpW, WarpRule::Lispsm, Partition::Faces),
 ];
 
+/// The neutral colour of the light-behind curve ZP and ZP+W share.
+const SHARED: RGBColor = RGBColor(90, 90, 90);
+
 /// The grey of the paper's band 2–3 in the ratio panel.
 const BAND: RGBColor = RGBColor(225, 225, 225);
 
@@ -77,10 +80,11 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
             .push(Series::line(worst_label, worst, PALETTE[c]).with_markers());
         let mut b = Series::line(String::new(), behind, PALETTE[c]).dashed();
         b.label = behind_label;
-        if scheme == Scheme::Zp {
-            // Equal to ZP+W's curve behind and drawn as it is (ZP+W's colour, width and
-            // dashes, under it): what shows is what the key "ZP and ZP+W, behind" shows.
-            b.colour = PALETTE[1];
+        if matches!(scheme, Scheme::Zp | Scheme::ZpW) {
+            // One curve for two schemes (ZP+W equals ZP behind): a neutral dashed grey, not
+            // either scheme's colour, drawn twice alike, so that what shows is what the key
+            // "ZP and ZP+W, behind" shows.
+            b.colour = SHARED;
         }
         abs.series.push(b);
         ratio
@@ -230,6 +234,11 @@ mod tests {
             (zp.colour, zp.width, zp.dash),
             (key.colour, key.width, key.dash)
         );
+        // The shared curve is neutral (issue 35): the colour of neither scheme.
+        assert!(SCHEMES
+            .iter()
+            .enumerate()
+            .all(|(c, _)| key.colour != PALETTE[c]));
     }
 
     /// The caption never prints a degenerate range "X to X" (issue 25: "ZP 1.949 to 1.949",
