@@ -42,12 +42,12 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
     let zs = linspace(n, f, 160);
     let z_factor = (f - n) / (2.0 * view.tan_half_fov());
     let mut cx = LineChart::new(
-        "x error: m_x(z) / f",
+        "(a) x error: m_x(z) / f",
         Axis::linear("depth z (eye-space units, n = 1)", n, f),
         Axis::log10("m_x / f = (n′ + z − n)/(z(n′ + f − n))", 0.03, 1.3),
     );
     let mut cz = LineChart::new(
-        "z error: m_z(z) · 2 tan θ / (f − n)",
+        "(b) z error: m_z(z) · 2 tan θ / (f − n)",
         Axis::linear("depth z (eye-space units, n = 1)", n, f),
         Axis::log10("m_z · 2 tan θ / (f − n)", 0.03, 1.3),
     );
@@ -74,7 +74,7 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
             "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), n = {n}, f = {f}, unit resolutions: the terms \
              that vary with z, m_x over f and m_z over (f − n)/(2 tan θ), as the paper plots \
              them. m_x is largest at z = n; m_z at z = f for n′ ≤ n + √(fn) and at z = n beyond. \
-             The upper legend holds for both panels."
+             The legend of (a) holds for both panels."
         )],
         charts: vec![cx, cz],
     })

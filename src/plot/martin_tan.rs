@@ -90,14 +90,14 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         ));
     }
     let mut profile = LineChart::new(
-        "in the view's vertical plane",
+        "(b) in the view's vertical plane",
         Axis::linear(
-            "angle between light and view directions (degrees; 0 behind, 180 in front)",
+            "light to view direction (degrees; 0 behind, 180 in front)",
             0.0,
             180.0,
         ),
         Axis::log10(
-            "focus region area / shadow-map area (log scale)",
+            "share of the map (log scale)",
             profile_floor(&eighty, &iterative),
             1.0,
         ),
@@ -127,8 +127,8 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         caption: vec![format!(
             "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map (80 % rule) covered by \
              the focus region, the eye frustum from n to n + δ, measured for every light \
-             direction above the viewer (top: overhead at the centre, behind on the left, in \
-             front on the right) and in the vertical plane (bottom); n = {n}, f = {f}, θ = \
+             direction above the viewer ((a): overhead at the centre, behind on the left, in \
+             front on the right) and in the vertical plane (b); n = {n}, f = {f}, θ = \
              {theta:.0}°, δ = {FOCUS}. Unlike the paper, which plots one angle as a surface, the \
              whole hemisphere; the markers are the values exactly behind and in front.",
             n = view.near(),
@@ -165,7 +165,7 @@ impl Figure for Fig6 {
         let (left, right) = body.split_vertically(h * 11 / 20);
         let (w, _) = left.dim_in_pixel();
         let (disk, bar) = left.split_horizontally(w.saturating_sub(96));
-        draw_hemisphere(&disk, "over the hemisphere", &self.grid, &self.scale)?;
+        draw_hemisphere(&disk, "(a) over the hemisphere", &self.grid, &self.scale)?;
         draw_colour_bar(&bar, &self.scale)?;
         draw_line_chart(&right, &self.profile)?;
         Ok(())

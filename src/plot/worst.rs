@@ -39,12 +39,12 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
     let grid = SweepGrid::new(ELEVATIONS, AZIMUTHS)?;
     let k_axis = Axis::integer("number of z-partitions k", 1.0, 8.0);
     let mut abs = LineChart::new(
-        "worst case over the hemisphere and light behind",
+        "(a) worst case over the hemisphere and light behind",
         k_axis.clone(),
         Axis::log10("storage factor S̄ (log scale)", 10.0, 1e7),
     );
     let mut ratio = LineChart::new(
-        "worst case / light behind",
+        "(b) worst case / light behind",
         k_axis,
         Axis::log10("ratio (log scale)", 0.8, 6.0),
     );
