@@ -159,8 +159,11 @@ impl Figure for Fig4 {
         let (n, f, t) = (self.view.near(), self.view.far(), self.view.tan_half_fov());
         let depth = Axis::linear("depth z", 0.0, f * 1.05);
         let across = Axis::linear("eye x", -f * t * 1.1, f * t * 1.1);
-        let u = Axis::linear("map u", -1.1, 1.1);
-        let v = Axis::linear("map v", -1.1, 1.1);
+        // The map in the paper's texture coordinates s, t ∈ [0, 1] (the matrices' normalised
+        // u, v ∈ [−1, 1] drawn at s = (u + 1)/2, t = (v + 1)/2).
+        let u = Axis::linear("map s", -0.05, 1.05);
+        let v = Axis::linear("map t", -0.05, 1.05);
+        let st_of = |(a, b): (f64, f64)| (0.5 * (a + 1.0), 0.5 * (b + 1.0));
         // Ticks every 5 eye-space units and every map unit: the panels are narrow.
         let every = |a: Axis, step: f64| Axis::every(a.label, a.min, a.max, 0.0, step);
         let frustum = [
@@ -208,9 +211,12 @@ impl Figure for Fig4 {
             }
             chart.draw_series(LineSeries::new(frustum, BLACK.stroke_width(2)))?;
             let (ux, vy) = equal_aspect(&rows[1], "", &u, &v, &st)?;
-            let (ux, vy) = (every(ux, 1.0), every(vy, 1.0));
+            let (ux, vy) = (every(ux, 0.5), every(vy, 0.5));
             let mut chart = build_chart_styled(&rows[1], "", &ux, &vy, false, &st)?;
-            chart.draw_series(LineSeries::new(UNIT_SQUARE, BLACK.stroke_width(2)))?;
+            chart.draw_series(LineSeries::new(
+                UNIT_SQUARE.map(st_of),
+                BLACK.stroke_width(2),
+            ))?;
             for (i, seg) in col.map.iter().enumerate() {
                 let colour = if i < LINES + 1 {
                     PALETTE[1]
@@ -218,6 +224,7 @@ impl Figure for Fig4 {
                     PALETTE[2]
                 };
                 for piece in clip_polyline(&[Some(seg[0]), Some(seg[1])], (-1.1, 1.1, -1.1, 1.1)) {
+                    let piece: Vec<(f64, f64)> = piece.into_iter().map(st_of).collect();
                     chart.draw_series(LineSeries::new(piece, colour.stroke_width(1)))?;
                 }
             }
