@@ -5,24 +5,14 @@
 //! adapter this fails, naming `mesa-vulkan-drivers`; it never skips.
 
 use render_check::gpu::Gpu;
-use render_check::run::{run_case, Render, Sizes};
+use render_check::run::{run_case, CaseResult, Render, Sizes};
 use render_check::schemes::{setups, Scheme};
 use render_check::targets::{
     LENS_FRAME_EXCESS, LENS_FRAME_REACH, LENS_MEDIAN_REL_DIFF, LENS_P99_REL_DIFF,
 };
 
-/// Under a sun 10° above the horizon, across the view (`grazing_10`), every scheme's drawn lens
-/// is the rendered one to the targets (median ≤ 10⁻³, p99 ≤ 5·10⁻³ relatively), on at least half
-/// the visible pixels; its perspective part (the lens with the projection factor 1) exceeds the
-/// map's reported `max_error_pixels` by at most 1 % (`LENS_FRAME_EXCESS`), and reaches 95 % of
-/// it where the worst body vertex shows. The scene's projection factor is far from 1 (the lens differs from its perspective
-/// part by more than 50 % on most compared pixels), so a lens that leaves the projection factor
-/// out fails the comparison: `sa_error_lens` with its projection onto the surface removed
-/// (`ps = es`, `pt = et`) in src/frame/shadow.wgsl, this test failed on its first scheme,
-/// uniform, with a median of 0.78 (and the next test's LiSPSM shows 0.82, p99 0.93).
-#[test]
-fn the_drawn_lens_is_the_pixels_a_texel_step_spans_on_the_surface() {
-    let gpu = Gpu::new().unwrap_or_else(|e| panic!("{e}"));
+/// `scheme` drawn under the built-in set-up `grazing_10` at 240 × 180, without shimmer frames.
+fn grazing(gpu: &Gpu, scheme: Scheme) -> Result<CaseResult, String> {
     let setup = setups()
         .into_iter()
         .find(|s| s.name == "grazing_10")
@@ -36,9 +26,23 @@ fn the_drawn_lens_is_the_pixels_a_texel_step_spans_on_the_surface() {
         fault: None,
         render: Render::DEFAULT,
     };
+    run_case(gpu, &setup.name, &setup.scene, scheme, sizes)
+}
+
+/// Under a sun 10° above the horizon, across the view (`grazing_10`), every scheme's drawn lens
+/// is the rendered one to the targets (median ≤ 10⁻³, p99 ≤ 5·10⁻³ relatively), on at least half
+/// the visible pixels; its perspective part (the lens with the projection factor 1) exceeds the
+/// map's reported `max_error_pixels` by at most 1 % (`LENS_FRAME_EXCESS`), and reaches 95 % of
+/// it where the worst body vertex shows. The scene's projection factor is far from 1 (the lens differs from its perspective
+/// part by more than 50 % on most compared pixels), so a lens that leaves the projection factor
+/// out fails the comparison: `sa_error_lens` with its projection onto the surface removed
+/// (`ps = es`, `pt = et`) in src/frame/shadow.wgsl, this test failed on its first scheme,
+/// uniform, with a median of 0.78 (and the next test's LiSPSM shows 0.82, p99 0.93).
+#[test]
+fn the_drawn_lens_is_the_pixels_a_texel_step_spans_on_the_surface() {
+    let gpu = Gpu::new().unwrap_or_else(|e| panic!("{e}"));
     for scheme in Scheme::ALL {
-        let r = run_case(&gpu, &setup.name, &setup.scene, scheme, sizes)
-            .unwrap_or_else(|e| panic!("{}: {e}", scheme.name()));
+        let r = grazing(&gpu, scheme).unwrap_or_else(|e| panic!("{}: {e}", scheme.name()));
         let m = &r.summary.measured;
         let name = scheme.name();
         assert!(
@@ -102,20 +106,7 @@ fn a_lens_without_the_projection_factor_fails_the_targets() {
         "sa_error_lens's projection onto the surface is written as this test expects"
     );
     let gpu = Gpu::with_source(&broken).unwrap_or_else(|e| panic!("{e}"));
-    let setup = setups()
-        .into_iter()
-        .find(|s| s.name == "grazing_10")
-        .expect("the built-in set-up grazing_10");
-    let sizes = Sizes {
-        width: 240,
-        height: 180,
-        res: None,
-        frames: 0,
-        shimmer_points: 0,
-        fault: None,
-        render: Render::DEFAULT,
-    };
-    let r = run_case(&gpu, &setup.name, &setup.scene, Scheme::Lispsm, sizes).unwrap();
+    let r = grazing(&gpu, Scheme::Lispsm).unwrap();
     let m = &r.summary.measured;
     assert!(m.lens_median_rel_diff > LENS_MEDIAN_REL_DIFF, "{m:?}");
     assert!(m.lens_p99_rel_diff > LENS_P99_REL_DIFF, "{m:?}");
