@@ -33,6 +33,10 @@ fn rust_offsets() -> Vec<(&'static str, usize)> {
         ("texel_extent", offset_of!(GpuShadowMap, texel_extent)),
         ("constant_depth", offset_of!(GpuShadowMap, constant_depth)),
         ("bias_radius", offset_of!(GpuShadowMap, bias_radius)),
+        ("resolution", offset_of!(GpuShadowMap, resolution)),
+        ("reserved0", offset_of!(GpuShadowMap, reserved0)),
+        ("reserved1", offset_of!(GpuShadowMap, reserved1)),
+        ("reserved2", offset_of!(GpuShadowMap, reserved2)),
     ]
 }
 
@@ -93,7 +97,7 @@ fn record_layout_is_the_wgsl_and_std140_layout() {
     let rust = rust_offsets();
     for std140 in [false, true] {
         let (offsets, size) = struct_layout(std140);
-        assert_eq!(size, 128);
+        assert_eq!(size, 144);
         assert_eq!(size_of::<GpuShadowMap>(), size, "std140 {std140}");
         assert_eq!(GpuShadowMap::SIZE, size);
         assert_eq!(offsets.len(), rust.len(), "every field in the WGSL struct");
@@ -102,7 +106,7 @@ fn record_layout_is_the_wgsl_and_std140_layout() {
         }
     }
     // An array element's stride is its size in both layouts: a multiple of 16.
-    assert_eq!(size_of::<[GpuShadowMap; 3]>(), 3 * 128);
+    assert_eq!(size_of::<[GpuShadowMap; 3]>(), 3 * 144);
     // Every field is made of 4-byte words, so `#[repr(C)]` adds no padding of its own.
     assert_eq!(std::mem::align_of::<GpuShadowMap>(), 4);
 }
@@ -246,7 +250,10 @@ fn record_and_arrays_carry_the_maps_values() {
                 assert_eq!(f32::from_bits(word(&b, 112)), g.texel_extent[0]);
                 assert_eq!(f32::from_bits(word(&b, 116)), g.texel_extent[1]);
                 assert_eq!(f32::from_bits(word(&b, 120)), g.constant_depth);
-                assert_eq!(&b[124..], &[0u8; 4]); // bias_radius 0.0
+                assert_eq!(&b[124..128], &[0u8; 4]); // bias_radius 0.0
+                // The map's resolution (the frame's, here), then three zero words.
+                assert_eq!(word(&b, 128), 2048, "the frame's map_resolution");
+                assert_eq!(&b[132..], &[0u8; 12]);
                 #[cfg(feature = "bytemuck")]
                 if cfg!(target_endian = "little") {
                     assert_eq!(bytemuck::bytes_of(&g), &b[..]);

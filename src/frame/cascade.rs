@@ -80,6 +80,7 @@ fn cascade_slices(
                     cover: (a.max(zn), end.min(zf)),
                     split: (a, b),
                     blend: (b, end),
+                    res: 0, // each slot's, set by the frame
                 };
             }
             Ok(k)
@@ -168,6 +169,7 @@ fn cascade_slices(
                     cover: (a, b),
                     split: (sel_near.max(zn), b),
                     blend: (blend.0.clamp(zn, zf), blend.1.clamp(zn, zf)),
+                    res: 0, // each slot's, set by the frame
                 };
                 n += 1;
             }
@@ -202,7 +204,7 @@ impl Ctx<'_, '_> {
         if body.focus == Focus::Empty || body.n == 0 {
             return Ok(Built::None(Focus::Empty));
         }
-        let res = f64::from(self.input.map_resolution);
+        let res = f64::from(s.res);
         let (c, r) = bounding_sphere(self.view, s.cover.0, s.cover.1)?;
         let half = r * res / (res - 2.0);
         let texel = 2.0 * half / res;
@@ -228,7 +230,7 @@ impl Ctx<'_, '_> {
     ) -> Result<Built> {
         let pts = &body.v[..body.n];
         let cam = &self.input.camera;
-        let res = f64::from(self.input.map_resolution);
+        let res = f64::from(s.res);
         // World-fixed light space (y toward the light, z the world −Z projected).
         let ls_w = light_space_unit(LightDir::from_unit_unchecked(self.lw), DVec3::NEG_Z);
         let texel = 2.0 * half / res;

@@ -228,6 +228,7 @@ impl Ctx<'_, '_> {
         (zn, zf): (f64, f64),
         out: &mut Frame,
     ) -> Result<()> {
+        super::input::check_resolutions(self.input, 0)?;
         let choice = LevelChoice::new(
             self.view,
             self.input.image_height,
@@ -253,6 +254,7 @@ impl Ctx<'_, '_> {
                 cover: (a, b),
                 split: (a, b),
                 blend: (b, b),
+                res: self.input.map_resolution,
             };
             let body = self.body(a, b, &[])?;
             out.push_with(|dst| {

@@ -97,6 +97,7 @@ impl Ctx<'_, '_> {
             cover: (a, b),
             split: (a, b),
             blend: (b, b),
+            res: self.input.map_resolution,
         };
         let mut map = None;
         let built = self.map(&s, rule, &mut map)?;
@@ -228,6 +229,7 @@ impl Ctx<'_, '_> {
                 cover,
                 split,
                 blend: (split.1, split.1),
+                res: self.input.map_resolution,
             };
         }
         Ok(k)

@@ -3,6 +3,7 @@
 
 use super::body::{depth_extent, BodyClip};
 use super::casters::Prism;
+use super::input::check_resolutions;
 use super::output::{Focus, Frame, FrameMap};
 use super::{Built, Ctx, Slice, MAX_BODY_VERTICES, MAX_FACE_BOUND_PLANES, MAX_FACE_K};
 use crate::analytic::partition::{z_splits, SplitScheme, MAX_PARTITIONS};
@@ -68,6 +69,12 @@ impl Ctx<'_, '_> {
             y_lo = y_lo.min(y);
             y_hi = y_hi.max(y);
         }
+        let slots = faces
+            .faces()
+            .iter()
+            .map(|f| if f.is_side() { k } else { 1 })
+            .sum();
+        check_resolutions(self.input, slots)?;
         for &face in faces.faces() {
             let spaces = face_spaces(face, tan, ta, light);
             let count = if face.is_side() { k } else { 1 };
@@ -84,7 +91,10 @@ impl Ctx<'_, '_> {
                     far: zf,
                     spaces: &spaces,
                 };
-                out.push_with(|dst| self.face_part(&part, &receivers, (y_lo, y_hi), rule, dst))?;
+                let res = self.input.resolution_at(out.k);
+                out.push_with(|dst| {
+                    self.face_part(&part, &receivers, (y_lo, y_hi), (rule, res), dst)
+                })?;
             }
         }
         out.settle();
@@ -99,7 +109,7 @@ impl Ctx<'_, '_> {
         part: &FacePart<'_>,
         receivers: &BodyClip,
         (y_lo, y_hi): (f64, f64),
-        rule: FaceWarp,
+        (rule, res): (FaceWarp, u32),
         dst: &mut Option<FrameMap>,
     ) -> Result<Built> {
         let FacePart {
@@ -143,6 +153,7 @@ impl Ctx<'_, '_> {
             cover: (n_b, f_b),
             split: (a, b),
             blend: (b, b),
+            res,
         };
         // The fit measured the map anyway: its figures are reported with measurement off too.
         // `ls` is the casters' volume's light space: the prism of B_i's footprint is its sides.

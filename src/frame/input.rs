@@ -292,8 +292,14 @@ pub struct FrameInput<'a> {
     pub casters: Bound<'a>,
     /// The visible receivers' depth range `[z_min, z_max]` (a depth-buffer min/max reduction).
     pub depth_range: Option<(f64, f64)>,
-    /// The map's texels per side.
+    /// The map's texels per side (every map's, unless `map_resolutions` gives each its own).
     pub map_resolution: u32,
+    /// Each partition's own texels per side, in slot order (cascade i, face part i in
+    /// [`Frame::slots`](super::Frame::slots) order, the single map's slot 0), one entry per
+    /// slot of the scheme; `None` (the default): every map at `map_resolution`. Not with
+    /// equal-error splits, whose planes equalise the errors at one resolution, nor with a
+    /// clipmap, whose levels share one.
+    pub map_resolutions: Option<&'a [u32]>,
     /// The image's height in pixels (the predicted error is in these pixels).
     pub image_height: u32,
     /// The device clamps depth: casters are not needed in the depth range.
@@ -330,6 +336,7 @@ impl<'a> FrameInput<'a> {
             casters: Bound::Unbounded,
             depth_range: None,
             map_resolution,
+            map_resolutions: None,
             image_height,
             depth_clamp: false,
             scheme: FrameScheme::Single(WarpRule::Minimax),
@@ -354,6 +361,20 @@ impl<'a> FrameInput<'a> {
     pub fn depth_range(mut self, z_min: f64, z_max: f64) -> Self {
         self.depth_range = Some((z_min, z_max));
         self
+    }
+    /// Gives each partition its own resolution ([`FrameInput::map_resolutions`]): entry i is
+    /// slot i's texels per side.
+    #[must_use]
+    pub fn map_resolutions(mut self, each: &'a [u32]) -> Self {
+        self.map_resolutions = Some(each);
+        self
+    }
+    /// Slot `slot`'s texels per side: its `map_resolutions` entry, else `map_resolution`. (A
+    /// slot past the entries is refused by the frame before any map is built.)
+    pub(super) fn resolution_at(&self, slot: usize) -> u32 {
+        self.map_resolutions
+            .and_then(|r| r.get(slot).copied())
+            .unwrap_or(self.map_resolution)
     }
     /// Says whether the device clamps depth.
     #[must_use]
@@ -390,6 +411,52 @@ impl<'a> FrameInput<'a> {
                 } | FrameScheme::Stable(CascadeSplits::EqualError { .. })
             )
     }
+}
+
+/// `map_resolutions` against the scheme's `slots` partitions: one entry at least 3 per slot
+/// (face partitions: at least one per slot, as their slot count depends on the faces the light
+/// sees), and a scheme that maps at one resolution refused.
+pub(super) fn check_resolutions(input: &FrameInput<'_>, slots: usize) -> Result<()> {
+    let Some(each) = input.map_resolutions else {
+        return Ok(());
+    };
+    let shared = match input.scheme {
+        FrameScheme::Cascades {
+            splits: CascadeSplits::EqualError { .. },
+            ..
+        }
+        | FrameScheme::Stable(CascadeSplits::EqualError { .. }) => Some(
+            "equal-error splits place their planes so that the maps' errors are equal at one \
+             resolution: give one map_resolution, or the planes of an equal-error frame as \
+             CascadeSplits::Distances with a resolution per map",
+        ),
+        FrameScheme::Clipmap(_) => Some(
+            "a clipmap's levels share one resolution (its knob is the LOD bias): give one \
+             map_resolution",
+        ),
+        _ => None,
+    };
+    if let Some(why) = shared {
+        return Err(Error::invalid("map_resolutions", format!("cannot be used here: {why}")));
+    }
+    if let Some(r) = each.iter().find(|&&r| r < 3) {
+        return Err(Error::invalid(
+            "map_resolutions",
+            format!("must hold resolutions of at least 3 texels each (got {r})"),
+        ));
+    }
+    let faces = matches!(input.scheme, FrameScheme::Faces { .. });
+    if each.len() < slots || (!faces && each.len() != slots) {
+        return Err(Error::invalid(
+            "map_resolutions",
+            format!(
+                "has {} entries, and the scheme has {slots} partitions: give one resolution per \
+                 partition, in slot order",
+                each.len()
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// The frame resolves extents down to 10⁻⁹ of a slice's size (`frame/body.rs`): a frustum

@@ -106,7 +106,7 @@ use crate::maps::WarpRule;
 use body::{receiver_planes, Planes};
 use equal_error::SliceMap;
 use glam::DVec3;
-use input::{check_proportions, validate_casters, visible_range};
+use input::{check_proportions, check_resolutions, validate_casters, visible_range};
 
 /// The largest number of vertices of a focus body (a frustum slice cut by up to 6 planes has at
 /// most 2·12 − 4 = 20; the rest is room for a polytope bound's extra planes).
@@ -130,6 +130,8 @@ struct Slice {
     cover: (f64, f64),
     split: (f64, f64),
     blend: (f64, f64),
+    /// The map's texels per side ([`FrameInput::resolution_at`] of its slot).
+    res: u32,
 }
 
 /// The frame's maps (module docs). No heap allocation on success or for the typed outcomes.
@@ -160,7 +162,7 @@ pub fn frame(input: &FrameInput<'_>) -> Result<Frame> {
 /// # Errors
 /// As [`frame`]. After an error `out` holds no map (and the next call reports every map changed).
 pub fn frame_into(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
-    out.begin(input.map_resolution);
+    out.begin();
     let r = fill(input, out);
     if r.is_err() {
         out.k = 0;
@@ -215,6 +217,7 @@ fn fill(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
         cover: (0.0, 0.0),
         split: (0.0, 0.0),
         blend: (0.0, 0.0),
+        res: input.map_resolution,
     }; MAX_PARTITIONS];
     let (k, rule, _) = match input.scheme {
         FrameScheme::Single(rule) => {
@@ -222,6 +225,7 @@ fn fill(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
                 cover: (zn, zf),
                 split: (zn, zf),
                 blend: (zf, zf),
+                res: input.map_resolution,
             };
             (1, rule, false)
         }
@@ -240,13 +244,19 @@ fn fill(input: &FrameInput<'_>, out: &mut Frame) -> Result<()> {
                 cover: (zn, zf),
                 split: (zn, zf),
                 blend: (zf, zf),
+                res: input.map_resolution,
             };
             (1, WarpRule::Uniform, false)
         }
         FrameScheme::Faces { rule, k } => return ctx.faces_into(rule, k, (zn, zf), out),
         FrameScheme::Clipmap(opts) => return ctx.clipmap_into(opts, (zn, zf), out),
     };
-    for s in &slices[..k] {
+    check_resolutions(input, k)?;
+    for (i, s) in slices[..k].iter().enumerate() {
+        let s = &Slice {
+            res: input.resolution_at(i),
+            ..*s
+        };
         out.push_with(|dst| match input.scheme {
             FrameScheme::Stable(_) => ctx.stable_map(s, dst),
             FrameScheme::Tsm(opts) => ctx.tsm_map(s, opts, dst),

@@ -208,11 +208,8 @@ pub struct Frame {
     pub(super) focus: Focus,
     pub(super) light: LightCase,
     pub(super) light_dir_eye: DVec3,
-    /// The slots of the previous frame that a new map may be compared with (0 after an error
-    /// or a change of resolution).
+    /// The slots of the previous frame that a new map may be compared with (0 after an error).
     prev_k: usize,
-    /// The map resolution of the maps held.
-    resolution: u32,
 }
 
 impl Default for Frame {
@@ -227,7 +224,6 @@ impl Default for Frame {
             light: LightCase::General,
             light_dir_eye: DVec3::NEG_Y,
             prev_k: 0,
-            resolution: 0,
         }
     }
 }
@@ -311,42 +307,36 @@ impl std::ops::Index<usize> for FrameMaps<'_> {
 }
 
 impl Frame {
-    /// Each slot's world → clip matrix (`None` where it holds no map) and the map resolution:
-    /// what [`Frame::mark_unchanged`] compares a later frame with.
-    pub(crate) fn fingerprint(&self, out: &mut Vec<Option<DMat4>>) -> u32 {
+    /// Each slot's world → clip matrix and map resolution (`None` where it holds no map): what
+    /// [`Frame::mark_unchanged`] compares a later frame with.
+    pub(crate) fn fingerprint(&self, out: &mut Vec<Option<(DMat4, u32)>>) {
         out.clear();
         out.extend(
             self.maps[..self.k]
                 .iter()
-                .map(|m| m.map(|m| m.world_to_clip)),
+                .map(|m| m.map(|m| (m.world_to_clip, m.resolution))),
         );
-        self.resolution
     }
 
-    /// Sets every map's [`FrameMap::unchanged`] against `prev` at resolution `prev_res` (a
-    /// [`Frame::fingerprint`]) instead of the frame built before into the same `Frame`: for
-    /// callers that build several frames into one `Frame` before choosing (the controller).
-    pub(crate) fn mark_unchanged(&mut self, prev: &[Option<DMat4>], prev_res: u32) {
-        let same_res = prev_res == self.resolution;
+    /// Sets every map's [`FrameMap::unchanged`] against `prev` (a [`Frame::fingerprint`])
+    /// instead of the frame built before into the same `Frame`: for callers that build several
+    /// frames into one `Frame` before choosing (the controller).
+    pub(crate) fn mark_unchanged(&mut self, prev: &[Option<(DMat4, u32)>]) {
         for (slot, p) in self.maps[..self.k]
             .iter_mut()
             .zip(prev.iter().chain(std::iter::repeat(&None)))
         {
             if let Some(m) = slot {
-                m.unchanged = same_res && p.is_some_and(|p| same_bits(&p, &m.world_to_clip));
+                m.unchanged =
+                    p.is_some_and(|(p, r)| r == m.resolution && same_bits(&p, &m.world_to_clip));
             }
         }
     }
 
-    /// Starts a frame of maps of `resolution` texels: the slots held so far are the previous
-    /// frame's, to compare the new maps with.
-    pub(super) fn begin(&mut self, resolution: u32) {
-        self.prev_k = if resolution == self.resolution {
-            self.k
-        } else {
-            0
-        };
-        self.resolution = resolution;
+    /// Starts a frame: the slots held so far are the previous frame's, to compare the new maps
+    /// with.
+    pub(super) fn begin(&mut self) {
+        self.prev_k = self.k;
     }
 
     /// Builds the next partition's outcome into slot `k` (`build` writes a map into the slot it
@@ -357,14 +347,15 @@ impl Frame {
         build: impl FnOnce(&mut Option<FrameMap>) -> Result<Built>,
     ) -> Result<()> {
         let prev = match &self.maps[self.k] {
-            Some(p) if self.k < self.prev_k => Some(p.world_to_clip),
+            Some(p) if self.k < self.prev_k => Some((p.world_to_clip, p.resolution)),
             _ => None,
         };
         let slot = &mut self.maps[self.k];
         match (build(slot)?, slot) {
             (Built::Map, Some(m)) => {
                 self.len += 1;
-                m.unchanged = prev.is_some_and(|p| same_bits(&p, &m.world_to_clip));
+                m.unchanged = prev
+                    .is_some_and(|(p, r)| r == m.resolution && same_bits(&p, &m.world_to_clip));
             }
             // (A builder that says `Map` has filled the slot: only `None` comes here.)
             (built, slot) => {
@@ -426,7 +417,7 @@ impl Ctx<'_, '_> {
         dst: &'d mut Option<FrameMap>,
     ) -> Result<&'d mut FrameMap> {
         // The largest texel edge over B: clip spans 2 over the map's `res` texels.
-        let res = f64::from(self.input.map_resolution);
+        let res = f64::from(s.res);
         let matrix = shadow.matrix();
         let texel = pts
             .iter()
@@ -476,7 +467,7 @@ impl Ctx<'_, '_> {
             receivers_volume: CullVolume::EMPTY,
             unchanged: false,
             measured: false,
-            resolution: self.input.map_resolution,
+            resolution: s.res,
         });
         m.shadow = shadow;
         m.world_to_clip = world_to_clip;
@@ -503,7 +494,7 @@ impl Ctx<'_, '_> {
         );
         m.unchanged = false;
         m.measured = err.is_some();
-        m.resolution = self.input.map_resolution;
+        m.resolution = s.res;
         Ok(m)
     }
 }

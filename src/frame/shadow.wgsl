@@ -2,14 +2,15 @@
 // shadow_aliasing::frame::SHADOW_WGSL is GPU_SHADOW_MAP_WGSL (the GpuShadowMap record and its
 // clip_depth codes) followed by this text; concatenate it before your own shader.
 //
-// The including shader declares these four functions, over whatever bindings it has:
+// The including shader declares these three functions, over whatever bindings it has:
 //
 //   fn sa_map(i: u32) -> GpuShadowMap          // map i's record (FrameMap::gpu or gpu_relative)
 //   fn sa_map_count() -> u32                   // how many maps (at least 1)
-//   fn sa_map_resolution() -> f32              // texels per side of every map
 //   fn sa_stored_depth(i: u32, texel: vec2<i32>) -> f32
 //       // the depth map i stores at a texel (x from s = 0, y down from t = 1: texture rows),
-//       // as its depth attachment holds it (textureLoad of a texture_depth_2d_array)
+//       // as its depth attachment holds it (textureLoad of a texture_depth_2d_array); texel
+//       // runs over map i's own m.resolution texels a side (a map smaller than its texture
+//       // layer, drawn with a viewport at the layer's origin, reads the layer's texel as it is)
 //
 // Points p are in the space the records' world_to_clip takes (world space, or relative to the
 // upload origin with gpu_relative); n is the surface's unit normal and l the direction the light
@@ -47,9 +48,10 @@ fn sa_on_map(q: vec4<f32>) -> bool {
     return q.w > 0.0 && all(q.xy >= vec2<f32>(0.0)) && all(q.xy < vec2<f32>(1.0));
 }
 
-// The texel holding map position st (texture rows run down from t = 1).
-fn sa_texel(st: vec2<f32>) -> vec2<i32> {
-    let res = sa_map_resolution();
+// The texel of map m holding map position st (texture rows run down from t = 1; m.resolution
+// texels a side).
+fn sa_texel(m: GpuShadowMap, st: vec2<f32>) -> vec2<i32> {
+    let res = f32(m.resolution);
     return vec2<i32>(i32(floor(st.x * res)), i32(floor((1.0 - st.y) * res)));
 }
 
@@ -114,7 +116,7 @@ fn sa_local_normal_offset(m: GpuShadowMap, p: vec3<f32>, n: vec3<f32>, l: vec3<f
     }
     let grad = (rows[2].xyz * h.w - r3 * h.z) * (scale * iw2);
     let k = dot(grad, l);
-    let reach = (f32(max(r, 0)) + 0.5 + SA_TEXEL_SLACK) * 2.0 / sa_map_resolution();
+    let reach = (f32(max(r, 0)) + 0.5 + SA_TEXEL_SLACK) * 2.0 / f32(m.resolution);
     let y = reach * (abs(dot(grad, es) * cos_a + k * dot(n, es))
         + abs(dot(grad, et) * cos_a + k * dot(n, et))) + 9.536743e-7 * cos_a;
     let den = abs(k) - y * dot(r3, n) / h.w;
@@ -162,7 +164,7 @@ fn sa_error_lens(
     gs = gs - dot(gs, l) * l;
     gt = gt - dot(gt, l) * l;
     // One texel's edges (2/res of clip s, t) on the plane perpendicular to the light.
-    let texel = 2.0 / (sa_map_resolution() * dot(cross(gs, gt), l));
+    let texel = 2.0 / (f32(m.resolution) * dot(cross(gs, gt), l));
     let es = cross(gt, l) * texel;
     let et = cross(l, gs) * texel;
     // Along the light onto the surface, then along the view ray onto the plane of constant view
@@ -231,8 +233,8 @@ fn sa_visibility(i: u32, p: vec3<f32>, n: vec3<f32>, l: vec3<f32>, r: i32, bias:
     if ((bias & SA_DEPTH_BIAS) != 0u) {
         depth = depth + sa_depth_bias(m, n, l, r);
     }
-    let centre = sa_texel(pos.xy);
-    let last = vec2<i32>(i32(sa_map_resolution()) - 1);
+    let centre = sa_texel(m, pos.xy);
+    let last = vec2<i32>(i32(m.resolution) - 1);
     let k = max(r, 0);
     var lit = 0.0;
     for (var dy = -k; dy <= k; dy++) {

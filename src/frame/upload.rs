@@ -13,11 +13,11 @@ use crate::maps::matrix::in_clip_depth;
 use crate::maps::ClipDepth;
 use glam::{DMat4, DVec3, Mat4};
 
-/// One map as a GPU uniform or storage-buffer element: `#[repr(C)]`, 128 bytes, every field a
+/// One map as a GPU uniform or storage-buffer element: `#[repr(C)]`, 144 bytes, every field a
 /// 4-byte scalar or an array of them, laid out exactly as the WGSL struct
 /// [`GPU_SHADOW_MAP_WGSL`] in the `uniform` and `storage` address spaces and as the same block in
 /// GLSL's std140 and std430 (tests/upload.rs computes each offset by those rules), so an array of
-/// them has a 128-byte stride in every one of these layouts. Write it with
+/// them has a 144-byte stride in every one of these layouts. Write it with
 /// [`GpuShadowMap::to_bytes`] or, with the `bytemuck` feature, `bytemuck::bytes_of`.
 ///
 /// | field | byte offset | WGSL type |
@@ -36,6 +36,8 @@ use glam::{DMat4, DVec3, Mat4};
 /// | `texel_extent` | 112 | `vec2<f32>` |
 /// | `constant_depth` | 120 | `f32` |
 /// | `bias_radius` | 124 | `f32` |
+/// | `resolution` | 128 | `u32` |
+/// | `reserved0`, `reserved1`, `reserved2` | 132, 136, 140 | `u32` |
 ///
 /// The bias values are [`FrameMap::bias`]'s for a PCF kernel of radius `bias_radius` texels:
 /// 0 (a single lookup) from [`FrameMap::gpu`] and [`FrameMap::gpu_relative`], r from
@@ -84,14 +86,25 @@ pub struct GpuShadowMap {
     /// receiver's depth at any slope.
     pub constant_depth: f32,
     /// The PCF radius r (texels) the bias values were computed for: 0 from [`FrameMap::gpu`],
-    /// r from [`FrameMap::gpu_with_pcf`]. It also brings the record to 128 bytes, a multiple
-    /// of 16, the alignment of `mat4x4<f32>`.
+    /// r from [`FrameMap::gpu_with_pcf`].
     pub bias_radius: f32,
+    /// The map's texels per side (maps of one frame may differ:
+    /// [`FrameInput::map_resolutions`](super::FrameInput::map_resolutions)); the WGSL module's
+    /// texel lookups read it.
+    pub resolution: u32,
+    /// Zero, as `reserved1` and `reserved2`: they bring the record to 144 bytes, a multiple of
+    /// 16, the alignment of `mat4x4<f32>` (three scalars, as a uniform buffer's arrays need a
+    /// stride of 16).
+    pub reserved0: u32,
+    /// Zero.
+    pub reserved1: u32,
+    /// Zero.
+    pub reserved2: u32,
 }
 
 impl GpuShadowMap {
     /// The record's size in bytes.
-    pub const SIZE: usize = 128;
+    pub const SIZE: usize = 144;
 
     /// `face` of a map that is not a face partition's.
     pub const NO_FACE: u32 = u32::MAX;
@@ -136,7 +149,8 @@ impl GpuShadowMap {
             .map(|v| v.to_bits())
             .chain([self.face, self.clip_depth])
             .chain(bias.map(f32::to_bits))
-            .chain([self.bias_radius.to_bits()]);
+            .chain([self.bias_radius.to_bits(), self.resolution])
+            .chain([self.reserved0, self.reserved1, self.reserved2]);
         let mut out = [0u8; Self::SIZE];
         for (chunk, w) in out.chunks_exact_mut(4).zip(words) {
             chunk.copy_from_slice(&w.to_le_bytes());
@@ -149,7 +163,7 @@ impl GpuShadowMap {
 /// concatenate into a shader: bind it as `var<uniform> maps: array<GpuShadowMap, N>` or in a
 /// storage buffer.
 pub const GPU_SHADOW_MAP_WGSL: &str = "\
-// shadow-aliasing's GpuShadowMap (128 bytes; the same offsets in std140 and std430).
+// shadow-aliasing's GpuShadowMap (144 bytes; the same offsets in std140 and std430).
 const CLIP_DEPTH_NEG_ONE_TO_ONE: u32 = 0u;
 const CLIP_DEPTH_ZERO_TO_ONE: u32 = 1u;
 const CLIP_DEPTH_REVERSED: u32 = 2u;
@@ -169,6 +183,10 @@ struct GpuShadowMap {
     texel_extent: vec2<f32>,
     constant_depth: f32,
     bias_radius: f32,
+    resolution: u32,
+    reserved0: u32,
+    reserved1: u32,
+    reserved2: u32,
 }
 ";
 
@@ -312,6 +330,10 @@ impl FrameMap {
             texel_extent: pair(bias.texel_extent),
             constant_depth: bias.constant_depth as f32,
             bias_radius: r as f32,
+            resolution: self.resolution,
+            reserved0: 0,
+            reserved1: 0,
+            reserved2: 0,
         }
     }
 

@@ -33,16 +33,16 @@ static BYTES: [u8; LEN] = {
 
 /// The WGSL shadow-lookup module: [`GPU_SHADOW_MAP_WGSL`] (the record and its `clip_depth` codes)
 /// followed by `src/frame/shadow.wgsl`. Concatenate it before your shader, which declares the
-/// four functions the module reads the maps through:
+/// three functions the module reads the maps through:
 ///
 /// ```wgsl
 /// fn sa_map(i: u32) -> GpuShadowMap         // map i's record (FrameMap::gpu, gpu_relative)
 /// fn sa_map_count() -> u32                  // how many maps (at least 1)
-/// fn sa_map_resolution() -> f32             // texels per side of every map
 /// fn sa_stored_depth(i: u32, texel: vec2<i32>) -> f32 // map i's stored depth at a texel
 /// ```
 ///
-/// and calls `sa_visibility` (one map: w-divide, clip-depth convention, normal offset and/or
+/// (each map's resolution comes from its record, `resolution`; a map smaller than its
+/// texture layer sits at the layer's texel (0, 0), its texel (x, y) the layer's), and calls `sa_visibility` (one map: w-divide, clip-depth convention, normal offset and/or
 /// depth bias, PCF of radius r texels), `sa_pick_cascade` / `sa_cascaded_visibility` (selection
 /// by `split`, cross-fade over `blend`) or `sa_pick_face` (face partitions), and for a heat
 /// overlay `sa_error_lens` / `sa_lens_colour` (the error lens, [`super::lens`]). Every function is

@@ -113,8 +113,7 @@ pub struct Controller {
     /// The last decision's maps (world → clip by slot) and resolution, for
     /// [`FrameMap::unchanged`](crate::frame::FrameMap::unchanged): a frame may build several
     /// set-ups into `frame` before it chooses.
-    shown: Vec<Option<glam::DMat4>>,
-    shown_res: u32,
+    shown: Vec<Option<(glam::DMat4, u32)>>,
     /// The neighbour checked next, and the frames since the last check.
     turn: usize,
     since: u32,
@@ -147,7 +146,6 @@ impl Controller {
             ranked: Vec::new(),
             near: Vec::new(),
             shown: Vec::new(),
-            shown_res: 0,
             turn: 0,
             since: 0,
         })
@@ -213,8 +211,8 @@ impl Controller {
             self.since = 0;
         }
         self.setup = Some(setup);
-        self.frame.mark_unchanged(&self.shown, self.shown_res);
-        self.shown_res = self.frame.fingerprint(&mut self.shown);
+        self.frame.mark_unchanged(&self.shown);
+        self.frame.fingerprint(&mut self.shown);
         let texels = self.frame.maps().len() as u64 * u64::from(setup.resolution).pow(2);
         let o = &self.options;
         Ok(Decision {
