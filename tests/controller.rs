@@ -9,7 +9,7 @@
 
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::SplitScheme;
-use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme};
+use shadow_aliasing::frame::{frame, CascadeSplits, FrameInput, FrameScheme};
 use shadow_aliasing::maps::WarpRule;
 use shadow_aliasing::plan::allocate::Rounding;
 use shadow_aliasing::plan::{plan_among, Controller, ControllerOptions, Goal};
@@ -17,87 +17,11 @@ use shadow_aliasing::Error;
 
 mod common;
 
-const H: u32 = 1080;
-const FRAMES: usize = 240;
+use common::walk::{allowed, camera, input, scene, shifted, FRAMES, H};
+
 const TARGET: f64 = 2.0;
 const CAP: u32 = 4096;
 const ROUNDING: Rounding = Rounding::Multiple(64);
-
-/// A ground 120 × 460 with four boxes on it.
-fn scene() -> Vec<Aabb> {
-    vec![
-        Aabb::new([-60.0, -1.0, -400.0], [60.0, 0.0, 60.0]).unwrap(),
-        Aabb::new([-8.0, 0.0, -40.0], [-2.0, 6.0, -30.0]).unwrap(),
-        Aabb::new([4.0, 0.0, -90.0], [12.0, 15.0, -80.0]).unwrap(),
-        Aabb::new([-20.0, 0.0, -170.0], [-5.0, 4.0, -150.0]).unwrap(),
-        Aabb::new([0.0, 0.0, -260.0], [30.0, 25.0, -240.0]).unwrap(),
-    ]
-}
-
-/// Frame `i` of the walk: forward 1.25 units a frame along −z, the eye rising from 1.7 to 9.7
-/// and back, the view swinging ±30° and looking 10° down.
-fn camera(i: usize) -> Camera {
-    shifted(i, 0.0)
-}
-
-/// Frame `i`'s camera moved `dz` along z.
-fn shifted(i: usize, dz: f64) -> Camera {
-    let t = i as f64 / FRAMES as f64;
-    let eye = DVec3::new(
-        0.0,
-        1.7 + 8.0 * (std::f64::consts::PI * t).sin(),
-        40.0 - 300.0 * t + dz,
-    );
-    let yaw = 30f64.to_radians() * (2.0 * std::f64::consts::PI * t).sin();
-    let pitch = -10f64.to_radians();
-    let dir = DVec3::new(
-        -yaw.sin() * pitch.cos(),
-        pitch.sin(),
-        -yaw.cos() * pitch.cos(),
-    );
-    // Eye → world: x right, y up, −z along the view, then its inverse.
-    let right = dir.cross(DVec3::Y).normalize();
-    let up = right.cross(dir);
-    let view = DMat4::from_cols(
-        right.extend(0.0),
-        up.extend(0.0),
-        (-dir).extend(0.0),
-        eye.extend(1.0),
-    )
-    .inverse();
-    Camera::new(view, 0.5, 200.0, 30f64.to_radians(), 16.0 / 9.0).unwrap()
-}
-
-fn input(cam: Camera, boxes: &[Aabb]) -> FrameInput<'_> {
-    FrameInput::new(cam, DVec3::new(0.3, -0.8, -0.4), 2048, H)
-        .receivers(Bound::Boxes(&boxes[..1]))
-        .casters(Bound::Boxes(boxes))
-}
-
-/// The allowed schemes: orthographic and LiSPSM single maps, practical cascades of 2 to 4,
-/// stable logarithmic cascades of 2 to 4.
-fn allowed() -> Vec<FrameScheme<'static>> {
-    let mut c = vec![
-        FrameScheme::Single(WarpRule::Uniform),
-        FrameScheme::Single(WarpRule::Lispsm),
-    ];
-    for k in 2..=4 {
-        c.push(FrameScheme::Cascades {
-            splits: CascadeSplits::Scheme {
-                scheme: SplitScheme::Practical { lambda: 0.5 },
-                k,
-                overlap: 0.0,
-            },
-            rule: WarpRule::Uniform,
-        });
-        c.push(FrameScheme::Stable(CascadeSplits::Scheme {
-            scheme: SplitScheme::SelfSimilar,
-            k,
-            overlap: 0.0,
-        }));
-    }
-    c
-}
 
 fn options(patience: u32, margin: f64) -> ControllerOptions {
     ControllerOptions {

@@ -152,6 +152,12 @@ impl FrameMap {
     pub fn to_mat4(&self, depth: ClipDepth) -> Mat4 {
         self.world_to_clip(depth).as_mat4()
     }
+    /// The map's texels per side ([`FrameInput::map_resolution`](super::FrameInput::map_resolution),
+    /// or its slot's entry of [`FrameInput::map_resolutions`](super::FrameInput::map_resolutions)).
+    #[must_use]
+    pub fn resolution(&self) -> u32 {
+        self.resolution
+    }
     /// The focus body's vertices, eye space.
     #[must_use]
     pub fn body(&self) -> &[DVec3] {
@@ -354,8 +360,8 @@ impl Frame {
         match (build(slot)?, slot) {
             (Built::Map, Some(m)) => {
                 self.len += 1;
-                m.unchanged = prev
-                    .is_some_and(|(p, r)| r == m.resolution && same_bits(&p, &m.world_to_clip));
+                m.unchanged =
+                    prev.is_some_and(|(p, r)| r == m.resolution && same_bits(&p, &m.world_to_clip));
             }
             // (A builder that says `Map` has filled the slot: only `None` comes here.)
             (built, slot) => {

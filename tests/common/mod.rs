@@ -9,6 +9,7 @@ pub mod audit;
 pub mod cli;
 pub mod faces;
 pub mod scene;
+pub mod walk;
 pub mod zhang_printed;
 
 use glam::DVec3;

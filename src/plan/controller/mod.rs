@@ -33,6 +33,7 @@
 
 mod neighbours;
 mod options;
+mod per_map;
 
 /// The most neighbours measured between cuts: one cascade more and fewer, then the cheapest
 /// candidates of the last search.
@@ -41,6 +42,7 @@ const MAX_NEIGHBOURS: usize = 4;
 pub use options::ControllerOptions;
 
 use super::candidates::candidates;
+use crate::analytic::partition::MAX_PARTITIONS;
 use crate::error::{Error, Result};
 use crate::frame::{frame_into, CascadeSplits, Frame, FrameInput, FrameScheme};
 use neighbours::{count, neighbours, resampled};
@@ -49,7 +51,22 @@ use neighbours::{count, neighbours, resampled};
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Setup {
     scheme: FrameScheme<'static>,
+    /// The largest map's resolution (every map's, with a shared resolution).
     resolution: u32,
+    /// With a resolution per map, each slot's (`Frame::slots` order, the rest 0); all 0 with a
+    /// shared resolution.
+    each: [u32; MAX_PARTITIONS],
+}
+
+impl Setup {
+    /// `scheme` with every map at `resolution`.
+    fn shared(scheme: FrameScheme<'static>, resolution: u32) -> Self {
+        Self {
+            scheme,
+            resolution,
+            each: [0; MAX_PARTITIONS],
+        }
+    }
 }
 
 /// One frame's choice ([`Controller::frame`]).
@@ -57,8 +74,13 @@ struct Setup {
 pub struct Decision<'c> {
     /// The scheme chosen.
     pub scheme: FrameScheme<'static>,
-    /// Every map's resolution, texels a side.
+    /// The largest map's resolution, texels a side (every map's, with
+    /// [`ControllerOptions::shared_resolution`]).
     pub resolution: u32,
+    /// Each slot's resolution, in [`Frame::slots`](crate::frame::Frame::slots) order: what
+    /// [`FrameInput::map_resolutions`](crate::frame::FrameInput::map_resolutions) takes to build
+    /// these maps again (all `resolution` with a shared resolution).
+    pub resolutions: &'c [u32],
     /// Its maps, built at `resolution` (their matrices for the GPU, their measured error).
     /// Each map's [`FrameMap::unchanged`](crate::frame::FrameMap::unchanged) compares it with
     /// the map in the same slot of the last decision (the controller may build several set-ups
@@ -67,7 +89,7 @@ pub struct Decision<'c> {
     /// The largest [`FrameMap::max_error_pixels`](crate::frame::FrameMap::max_error_pixels)
     /// over the maps: the frame's own measurement, pixels.
     pub max_error_pixels: f64,
-    /// `maps × resolution²`.
+    /// The maps' texels together (the sum of each map's resolution²).
     pub texels: u64,
     /// `max_error_pixels ≤ max_error` (`true` without a target). `false` only where no allowed
     /// candidate meets the target within the caps (the set-up then has the least error found).
@@ -114,6 +136,14 @@ pub struct Controller {
     /// [`FrameMap::unchanged`](crate::frame::FrameMap::unchanged): a frame may build several
     /// set-ups into `frame` before it chooses.
     shown: Vec<Option<(glam::DMat4, u32)>>,
+    /// The last decision's resolution per slot ([`Decision::resolutions`]).
+    shown_each: Vec<u32>,
+    /// With a resolution per map: each slot's frames in a row in which a smaller resolution was
+    /// enough by the margin (a target), or frames in a row in which the budget's allocation had
+    /// `margin` times less error (no target; slot 0).
+    down: [u32; MAX_PARTITIONS],
+    /// Each slot's error × resolution of the last build (pixels × texels), scratch.
+    products: Vec<Option<f64>>,
     /// The neighbour checked next, and the frames since the last check.
     turn: usize,
     since: u32,
@@ -146,6 +176,9 @@ impl Controller {
             ranked: Vec::new(),
             near: Vec::new(),
             shown: Vec::new(),
+            shown_each: Vec::new(),
+            down: [0; MAX_PARTITIONS],
+            products: Vec::new(),
             turn: 0,
             since: 0,
         })
@@ -192,10 +225,16 @@ impl Controller {
         };
         self.last = Some(now);
         let before = self.setup;
+        let shared = self.options.shared_resolution;
         let (setup, err) = match (cut, before) {
-            (false, Some(kept)) => self.steady(input, kept)?,
-            _ => self.search(input)?,
+            (false, Some(kept)) if shared => self.steady(input, kept)?,
+            (false, Some(kept)) => self.steady_each(input, kept)?,
+            _ if shared => self.search(input)?,
+            _ => self.search_each(input)?,
         };
+        if cut || before.is_none_or(|b| b.scheme != setup.scheme) {
+            self.down = [0; MAX_PARTITIONS];
+        }
         if cut || Some(setup) != before {
             self.streak = 0;
             self.pending = 0;
@@ -213,11 +252,24 @@ impl Controller {
         self.setup = Some(setup);
         self.frame.mark_unchanged(&self.shown);
         self.frame.fingerprint(&mut self.shown);
-        let texels = self.frame.maps().len() as u64 * u64::from(setup.resolution).pow(2);
+        let slots = self.frame.slots().len();
+        self.shown_each.clear();
+        if shared {
+            self.shown_each.resize(slots, setup.resolution);
+        } else {
+            self.shown_each.extend_from_slice(&setup.each[..slots]);
+        }
+        let texels = self
+            .frame
+            .maps()
+            .iter()
+            .map(|m| u64::from(m.resolution()).pow(2))
+            .sum();
         let o = &self.options;
         Ok(Decision {
             scheme: setup.scheme,
             resolution: setup.resolution,
+            resolutions: &self.shown_each,
             frame: &self.frame,
             max_error_pixels: err,
             texels,
@@ -377,10 +429,7 @@ impl Controller {
         let switched = match (switched, self.options.max_error) {
             (Some(f), _) => Some(f),
             (None, None) => {
-                let s = Setup {
-                    scheme,
-                    resolution: res,
-                };
+                let s = Setup::shared(scheme, res);
                 self.build_kept(input, s).ok().map(|e| (s, e))
             }
             (None, Some(_)) => None,
@@ -539,10 +588,7 @@ impl Controller {
             return Ok(None);
         };
         for _ in 0..4 {
-            let s = Setup {
-                scheme,
-                resolution: res,
-            };
+            let s = Setup::shared(scheme, res);
             let err = self.build_kept(input, s)?;
             let cap = self
                 .options
@@ -645,10 +691,7 @@ impl Controller {
         let Some((_, i, cap)) = least else {
             return Err(first_err.unwrap_or_else(nothing_to_plan));
         };
-        let s = Setup {
-            scheme: list[i],
-            resolution: cap,
-        };
+        let s = Setup::shared(list[i], cap);
         let err = self.build_kept(input, s)?;
         self.least = true;
         Ok((s, err))

@@ -1,7 +1,7 @@
 //! What the controller is asked for ([`ControllerOptions`]) and the checks of it.
 
 use crate::error::{fmt_num, Error, Result};
-use crate::frame::FrameScheme;
+use crate::frame::{CascadeSplits, FrameScheme};
 use crate::maps::atlas::MAX_ATLAS_ENTRIES;
 use crate::plan::allocate::Rounding;
 
@@ -15,13 +15,19 @@ pub struct ControllerOptions {
     /// The target: the largest error, pixels of the image per texel; `None`: the least error
     /// within `max_texels`.
     pub max_error: Option<f64>,
-    /// The texel budget: every map of a set-up together (`maps × resolution²`) at most this;
-    /// `None`: no budget but `max_maps × max_resolution²`.
+    /// The texel budget: every map of a set-up together (the sum of their `resolution²`) at
+    /// most this; `None`: no budget but `max_maps × max_resolution²`.
     pub max_texels: Option<u64>,
     /// The most maps a set-up may have (1 ..= [`MAX_ATLAS_ENTRIES`]).
     pub max_maps: usize,
-    /// The resolutions allowed (every map of a set-up shares one square resolution).
+    /// The resolutions allowed (each map square).
     pub rounding: Rounding,
+    /// Every map of a set-up shares one resolution (`true`, the default: Bevy's and three.js's
+    /// one shadow-map size), or each map has its own ([`FrameInput::map_resolutions`](crate::frame::FrameInput::map_resolutions):
+    /// separate textures or an atlas), chosen by its own error as
+    /// [`allocate`](crate::plan::allocate) does. Equal-error splits are not candidates then
+    /// (their planes equalise the errors at one resolution; a resolution per map does that).
+    pub shared_resolution: bool,
     /// The largest resolution allowed, texels a side (an engine's texture limit); allowed by
     /// `rounding` itself.
     pub max_resolution: u32,
@@ -68,6 +74,7 @@ impl ControllerOptions {
             max_texels: None,
             max_maps: MAX_ATLAS_ENTRIES,
             rounding: Rounding::PowerOfTwo,
+            shared_resolution: true,
             max_resolution: 8192,
             candidates: None,
             patience: 30,
@@ -173,6 +180,14 @@ impl ControllerOptions {
                      of plan::candidates(input)",
                 ));
             }
+            if !self.shared_resolution && list.iter().any(equal_error) {
+                return Err(Error::invalid(
+                    "candidates",
+                    "must not hold equal-error splits with shared_resolution false: their planes \
+                     equalise the errors at one resolution, which a resolution per map does \
+                     already; remove them, or share one resolution",
+                ));
+            }
             if list.iter().any(|s| matches!(s, FrameScheme::Clipmap(_))) {
                 return Err(Error::invalid(
                     "candidates",
@@ -207,4 +222,15 @@ impl ControllerOptions {
         positive("cut_turn", self.cut_turn, std::f64::consts::PI)?;
         positive("cut_light", self.cut_light, std::f64::consts::PI)
     }
+}
+
+/// Whether `s` places its planes by equal errors (at one resolution).
+pub(crate) fn equal_error(s: &FrameScheme<'_>) -> bool {
+    matches!(
+        s,
+        FrameScheme::Cascades {
+            splits: CascadeSplits::EqualError { .. },
+            ..
+        } | FrameScheme::Stable(CascadeSplits::EqualError { .. })
+    )
 }
