@@ -57,6 +57,8 @@
 mod bias;
 mod budget;
 mod convert;
+mod lens;
+mod lens_render;
 mod measure;
 mod replace;
 mod scene;
@@ -67,6 +69,7 @@ pub use bias::{needed_normal_bias, pcf_radius, AppliedBias};
 pub use budget::{
     bevy_candidates, budget_cascades, budget_path, BudgetChoice, BudgetState, OriginalMapSize,
 };
+pub use lens::{prepare_error_lens, ErrorLens, ErrorLensMaps, LENS_MAPS};
 pub use measure::{
     bevy_covers, cascade_path, measure_cascade, measure_cascades, CascadeError, CascadeErrors,
     CascadeSource, ViewCascadeErrors, MAX_CASCADES, MAX_ERROR_PIXELS,
@@ -152,8 +155,10 @@ impl Plugin for ShadowAliasingPlugin {
                         .chain()
                         .in_set(ShadowAliasingSystems::Replace),
                     measure_cascades.in_set(ShadowAliasingSystems::Measure),
+                    prepare_error_lens.after(ShadowAliasingSystems::Measure),
                 ),
             );
+        app.add_plugins(lens_render::ErrorLensRenderPlugin);
         app.init_resource::<OriginalMapSize>();
         measure::register_diagnostics(app);
         budget::register_budget_diagnostics(app);
