@@ -1,6 +1,7 @@
 //! A window on the test scene (docs/bevy.md): Space cycles the sun's cascades between Bevy's own
-//! and the plugin's replacements and budget mode (1 px, the map size chosen up to 4096²); the
-//! window title shows the measured error of what is drawn.
+//! and the plugin's replacements and budget mode (1 px, the map size chosen up to 4096²); L
+//! switches the error lens (the per-pixel error heat map with its legend) on and off; the window
+//! title shows the measured error of what is drawn.
 //!
 //! ```text
 //! cargo run --release --features window --example toggle
@@ -16,7 +17,7 @@ use bevy::prelude::*;
 use scene::{camera_transform, centre_size, sun_transform, BOXES};
 use shadow_aliasing::maps::WarpRule;
 use shadow_aliasing_bevy::{
-    Budget, CascadeErrors, CascadeMode, Fit, Replace, ShadowAliasingPlugin, Splits,
+    Budget, CascadeErrors, CascadeMode, ErrorLens, Fit, Replace, ShadowAliasingPlugin, Splits,
 };
 
 /// The modes Space cycles through, with their names.
@@ -61,7 +62,7 @@ fn main() {
         .add_plugins((DefaultPlugins, ShadowAliasingPlugin))
         .init_resource::<Current>()
         .add_systems(Startup, setup)
-        .add_systems(Update, (toggle, show))
+        .add_systems(Update, (toggle, toggle_lens, show))
         .run();
 }
 
@@ -112,6 +113,23 @@ fn toggle(
     }
 }
 
+/// L: the error lens on the camera, or off.
+fn toggle_lens(
+    mut commands: Commands,
+    keys: Res<ButtonInput<KeyCode>>,
+    cameras: Query<(Entity, Has<ErrorLens>), With<Camera3d>>,
+) {
+    if keys.just_pressed(KeyCode::KeyL) {
+        for (camera, on) in &cameras {
+            if on {
+                commands.entity(camera).remove::<ErrorLens>();
+            } else {
+                commands.entity(camera).insert(ErrorLens::default());
+            }
+        }
+    }
+}
+
 fn show(current: Res<Current>, lights: Query<&CascadeErrors>, mut windows: Query<&mut Window>) {
     let Some(view) = lights.iter().flat_map(|e| e.views.values()).next() else {
         return;
@@ -122,7 +140,7 @@ fn show(current: Res<Current>, lights: Query<&CascadeErrors>, mut windows: Query
         .map(|c| c.map_or("-".into(), |c| format!("{:.2}", c.max_error_pixels)))
         .collect();
     let title = format!(
-        "{} [Space: next]: max error {:.2} px (cascades {}) at {}² texels, {} px high",
+        "{} [Space: next, L: error lens]: max error {:.2} px (cascades {}) at {}² texels, {} px high",
         modes()[current.0].0,
         view.max_error_pixels().unwrap_or(f64::NAN),
         per.join(" / "),

@@ -61,7 +61,7 @@ impl Harness {
         };
         let mut app = App::new();
         app.add_plugins((
-            DefaultPlugins.set(RenderPlugin {
+            scene::headless_plugins().set(RenderPlugin {
                 render_creation: WgpuSettings {
                     disabled_features: Some(disabled),
                     ..default()

@@ -75,3 +75,27 @@ pub fn centre_size(bx: &SceneBox) -> (Vec3, Vec3) {
     );
     (0.5 * (lo + hi), hi - lo)
 }
+
+/// Bevy's `DefaultPlugins` for a headless test. With the feature `window` (CI builds the example
+/// `toggle` in the tests' build, docs/bevy.md "CI") they hold Bevy's window, winit and logger:
+/// here no primary window, and neither winit (its event loop needs a display) nor the logger
+/// (one global logger per process, and the tests build several apps).
+#[cfg(feature = "window")]
+pub fn headless_plugins() -> bevy::app::PluginGroupBuilder {
+    DefaultPlugins
+        .build()
+        .disable::<bevy::winit::WinitPlugin>()
+        .disable::<bevy::log::LogPlugin>()
+        .set(bevy::window::WindowPlugin {
+            primary_window: None,
+            exit_condition: bevy::window::ExitCondition::DontExit,
+            ..default()
+        })
+}
+
+/// Bevy's `DefaultPlugins` for a headless test (without the feature `window`: no window, winit
+/// or logger to leave out).
+#[cfg(not(feature = "window"))]
+pub fn headless_plugins() -> bevy::app::PluginGroupBuilder {
+    DefaultPlugins.build()
+}
