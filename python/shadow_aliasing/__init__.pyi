@@ -44,6 +44,7 @@ class FrameResult(TypedDict):
     constant_depth: npt.NDArray[np.float64]
     texel_extent: npt.NDArray[np.float64]
     slot: npt.NDArray[np.int64]
+    resolution: npt.NDArray[np.int64]
     map_focus: List[str]
     face: List[Optional[str]]
     clipmap_level: List[Optional[int]]
@@ -58,6 +59,7 @@ class ControllerFrame(TypedDict):
     frame_kwargs: dict[str, object]
     warp_args: Optional[List[str]]
     resolution: int
+    resolutions: npt.NDArray[np.int64]
     max_error_pixels: float
     texels: int
     meets_target: bool
@@ -71,14 +73,16 @@ class ControllerFrame(TypedDict):
 @final
 class Controller:
     """The error-budget controller: the cheapest set-up (a scheme, one square resolution shared
-    by its maps) whose measured largest error meets ``max_error`` (within ``budget_texels``),
-    else the least error that fits; kept from frame to frame. Options are keywords; the
-    defaults are the crate's ``ControllerOptions::new``."""
+    by its maps, or each map's own with ``shared_resolution=False``) whose measured largest
+    error meets ``max_error`` (within ``budget_texels``), else the least error that fits; kept
+    from frame to frame. Options are keywords; the defaults are the crate's
+    ``ControllerOptions::new``."""
     def __new__(cls, *, max_error: Optional[float] = ..., budget_texels: Optional[int] = ...,
                  max_maps: Optional[int] = ...,
                  rounding: Union[Literal["whole", "power_of_two"], int, None] = ...,
-                 max_resolution: Optional[int] = ..., candidates: Optional[Sequence[str]] = ...,
-                 patience: Optional[int] = ..., margin: Optional[float] = ...,
+                 max_resolution: Optional[int] = ..., shared_resolution: bool = ...,
+                 candidates: Optional[Sequence[str]] = ..., patience: Optional[int] = ...,
+                 margin: Optional[float] = ...,
                  neighbour_every: Optional[int] = ..., retry_every: Optional[int] = ...,
                  cut_move: Optional[float] = ..., cut_turn: Optional[float] = ...,
                  cut_light: Optional[float] = ...) -> "Controller": ...
@@ -270,7 +274,8 @@ def error_image(depth: ArrayLike, projection: ArrayLike, view: ArrayLike,
 def frame(view: ArrayLike, near: float, far: float, half_fov: float, light_dir: Vec3, *,
           aspect: float = ..., receivers: Optional[ArrayLike] = ..., casters: Optional[ArrayLike] = ...,
           depth_range: Optional[ArrayLike] = ..., depth_clamp: bool = ..., measure: bool = ...,
-          map_resolution: int = ..., image_height: int = ..., pcf_radius: float = ...,
+          map_resolution: int = ..., image_height: int = ...,
+          map_resolutions: Optional[ArrayLike] = ..., pcf_radius: float = ...,
           scheme: Literal["single", "cascades", "stable", "tsm", "faces", "clipmap"] = ...,
           rule: Optional[str] = ..., k: Optional[int] = ...,
           partition: Optional[Literal["self_similar", "log", "uniform", "practical", "adaptive",

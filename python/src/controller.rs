@@ -119,6 +119,11 @@ fn candidate_list(ob: Option<&Any<'_>>) -> PyResult<Option<Vec<FrameScheme<'stat
     Ok(Some(chosen))
 }
 
+/// `shared_resolution`, by [`crate::frame::flag`].
+fn shared_resolution_arg(ob: &Any<'_>) -> PyResult<bool> {
+    crate::frame::flag("shared_resolution", ob)
+}
+
 /// An error of the crate where none is expected.
 fn err_internal(e: Error) -> PyErr {
     PyRuntimeError::new_err(format!("internal error: {e}"))
@@ -133,6 +138,7 @@ fn given<'a, 'py>(ob: Option<&'a Any<'py>>) -> Option<&'a Any<'py>> {
 struct Outcome {
     scheme: FrameScheme<'static>,
     resolution: u32,
+    resolutions: Vec<u32>,
     frame: Box<Frame>,
     max_error_pixels: f64,
     texels: u64,
@@ -151,15 +157,18 @@ struct Last {
 
 /// The error-budget controller (the crate's ``shadow_aliasing::plan::Controller``): one per
 /// light and camera, ``frame(...)`` every frame. It returns the cheapest set-up (a scheme and one
-/// square resolution shared by its maps) whose measured largest error is at most ``max_error``
+/// square resolution shared by its maps, or with ``shared_resolution=False`` each map's own)
+/// whose measured largest error is at most ``max_error``
 /// pixels (within ``budget_texels`` where given), else the least error that fits, and keeps it
 /// from frame to frame so that it does not flicker (docs/planning.md, "An error budget per
 /// frame").
 ///
 /// The goal: ``max_error`` (pixels of the image per texel), ``budget_texels`` (every map
-/// together, ``maps × resolution²``), or both. The engine's constraints: ``max_maps`` (default
-/// 65, the atlas's most), ``rounding`` ("power_of_two", the default, "whole", or a tile of texels),
-/// ``max_resolution`` (default 8192), ``candidates`` (scheme names as ``plan`` names them; None:
+/// together, the sum of the maps' ``resolution²``), or both. The engine's constraints:
+/// ``max_maps`` (default 65, the atlas's most), ``rounding`` ("power_of_two", the default,
+/// "whole", or a tile of texels), ``max_resolution`` (default 8192), ``shared_resolution`` (True,
+/// the default: every map at one resolution, as Bevy and three.js have it; False: each map sized
+/// by its own error), ``candidates`` (scheme names as ``plan`` names them; None:
 /// every candidate but the clipmap). Hysteresis: ``patience`` (frames, default 30), ``margin``
 /// (default 0.9), ``neighbour_every`` (frames between the checks of a neighbouring scheme,
 /// default 4; 0: never), ``retry_every`` (while the last search found nothing that meets
@@ -180,8 +189,9 @@ pub struct Controller {
 impl Controller {
     #[new]
     #[pyo3(signature = (*, max_error=None, budget_texels=None, max_maps=None, rounding=None,
-        max_resolution=None, candidates=None, patience=None, margin=None, neighbour_every=None,
-        retry_every=None, cut_move=None, cut_turn=None, cut_light=None))]
+        max_resolution=None, shared_resolution=true, candidates=None, patience=None,
+        margin=None, neighbour_every=None, retry_every=None, cut_move=None, cut_turn=None,
+        cut_light=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         max_error: Option<&Any<'_>>,
@@ -189,6 +199,7 @@ impl Controller {
         max_maps: Option<&Any<'_>>,
         rounding: Option<&Any<'_>>,
         max_resolution: Option<&Any<'_>>,
+        #[pyo3(from_py_with = shared_resolution_arg)] shared_resolution: bool,
         candidates: Option<&Any<'_>>,
         patience: Option<&Any<'_>>,
         margin: Option<&Any<'_>>,
@@ -232,6 +243,7 @@ impl Controller {
         if let Some(v) = given(max_resolution) {
             o.max_resolution = u32_arg("max_resolution", v)?;
         }
+        o.shared_resolution = shared_resolution;
         o.candidates = candidate_list(candidates)?;
         if let Some(v) = given(patience) {
             o.patience = u32_arg("patience", v)?;
@@ -267,8 +279,14 @@ impl Controller {
     /// ``dtype`` shape the maps as ``frame``'s.
     ///
     /// Returns a dict: ``scheme`` (its name, as ``plan`` names it), ``frame_kwargs``,
-    /// ``warp_args`` (as ``plan``'s), ``resolution`` (every map's, texels a side),
-    /// ``max_error_pixels`` (the largest of the maps' measured errors), ``texels``,
+    /// ``warp_args`` (as ``plan``'s), ``resolution`` (the largest map's, texels a side: every
+    /// map's with a shared resolution), ``resolutions`` ((slots,) int64: each partition slot's
+    /// texels a side in slot order, a slot without a map included: ``sa.frame(...,
+    /// **frame_kwargs, map_resolutions=resolutions)`` builds the same maps bit for bit with
+    /// ``shared_resolution=False``, ``map_resolution=resolution`` with a shared one;
+    /// ``resolutions[maps["slot"]]`` is ``maps["resolution"]``),
+    /// ``max_error_pixels`` (the largest of the maps' measured errors), ``texels`` (the sum of
+    /// the maps' resolution²),
     /// ``meets_target``, ``within_budget``, ``switched``, ``cut``, ``unchanged`` ((m,) bool: each
     /// map bit for bit the one its slot held in the last frame) and ``maps``: ``frame``'s dict
     /// of the maps. The GIL is released while the frame is built; after Ctrl-C the next frame is
@@ -323,6 +341,7 @@ impl Controller {
             let outcome = inner.frame(&input).map(|d| Outcome {
                 scheme: d.scheme,
                 resolution: d.resolution,
+                resolutions: d.resolutions.to_vec(),
                 frame: Box::new(*d.frame),
                 max_error_pixels: d.max_error_pixels,
                 texels: d.texels,
@@ -338,6 +357,8 @@ impl Controller {
         let d = PyDict::new(py);
         crate::plan::scheme_entries(&d, &o.scheme, image_height)?;
         d.set_item("resolution", o.resolution)?;
+        let each: Vec<i64> = o.resolutions.iter().map(|&r| i64::from(r)).collect();
+        d.set_item("resolutions", numpy::PyArray1::from_vec(py, each))?;
         d.set_item("max_error_pixels", o.max_error_pixels)?;
         d.set_item("texels", o.texels)?;
         d.set_item("meets_target", o.meets_target)?;

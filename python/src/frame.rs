@@ -83,6 +83,33 @@ fn list(name: &str, ob: Option<&Any<'_>>) -> PyResult<Option<Vec<f64>>> {
     }
 }
 
+/// `map_resolutions`: a one-dimensional array of whole numbers (each partition's texels a
+/// side, in slot order), or `None`. Refused by [`list`] (a `TypeError` for what is not an
+/// array of numbers, a `ValueError` for a number or an array of another shape) and here (a
+/// `ValueError` for an entry that is not a whole number in `[0, 2**32)`), each naming
+/// `map_resolutions`; the crate checks the count and the least resolution.
+pub(crate) fn map_resolutions(ob: Option<&Any<'_>>) -> PyResult<Option<Vec<u32>>> {
+    let Some(v) = list("map_resolutions", ob)? else {
+        return Ok(None);
+    };
+    v.iter()
+        .enumerate()
+        .map(|(i, &r)| {
+            if r.fract() == 0.0 && (0.0..=f64::from(u32::MAX)).contains(&r) {
+                // Whole, in range: the cast is exact.
+                Ok(r as u32)
+            } else {
+                Err(PyValueError::new_err(format!(
+                    "map_resolutions must hold whole numbers of texels from 0 to {} (got {r} at \
+                     index {i}): one resolution per partition, in slot order",
+                    u32::MAX
+                )))
+            }
+        })
+        .collect::<PyResult<Vec<_>>>()
+        .map(Some)
+}
+
 /// `depth_range`: two numbers `(z_min, z_max)`, or `None`.
 /// The scene of `frame`, `plan`, `plan_clipmap` and `Controller.frame`: the camera, the
 /// light, the receivers' and casters' boxes, the depth range.
@@ -124,7 +151,7 @@ pub(crate) fn pair(name: &str, ob: Option<&Any<'_>>) -> PyResult<Option<(f64, f6
 }
 
 /// A bool (Python's or NumPy's); anything else is a `TypeError`.
-fn flag(name: &str, ob: &Any<'_>) -> PyResult<bool> {
+pub(crate) fn flag(name: &str, ob: &Any<'_>) -> PyResult<bool> {
     let is_numpy_bool = ob.is_instance(&ob.py().import("numpy")?.getattr("bool_")?)?;
     if ob.is_instance_of::<PyBool>() || is_numpy_bool {
         return ob.is_truthy();
@@ -233,7 +260,10 @@ fn unused(name: &str, scheme: &str) -> PyErr {
 /// world direction light travels. ``receivers``, ``casters``: (n, 2, 3) boxes [min, max] (None:
 /// unbounded); ``depth_range``: (z_min, z_max) of the visible receivers; ``depth_clamp``;
 /// ``measure`` (False: no error measurement, errors +inf); ``map_resolution``, ``image_height``;
-/// ``pcf_radius`` (texels, for the bias values).
+/// ``map_resolutions`` (None, or one whole number per partition in slot order: each map's own
+/// texels a side, instead of ``map_resolution`` for all; equal-error splits place their planes
+/// at ``map_resolution``, then build each map at its own; not with a clipmap, whose levels share
+/// one); ``pcf_radius`` (texels, for the bias values).
 ///
 /// scheme: "single" (``rule``, any of WARP_RULES, default "minimax", with its keywords),
 /// "cascades" (``rule`` and ``partition`` with ``k`` — "self_similar"/"log", "uniform",
@@ -249,14 +279,15 @@ fn unused(name: &str, scheme: &str) -> PyErr {
 /// ``eye_to_clip`` (m, 4, 4) in ``clip_depth``'s convention (float64, or float32 with
 /// ``dtype=numpy.float32``), ``n_prime``, ``texel_world``, ``max_mx``, ``max_mz``,
 /// ``storage_factor``, ``max_error_pixels``, ``normal_offset``, ``slope_scaled_depth``,
-/// ``constant_depth`` (m,), ``texel_extent``, ``depth``, ``split``, ``blend`` (m, 2), ``slot``,
-/// ``map_focus``, ``face``, ``clipmap_level`` (None except for a clipmap), ``body`` (eye-space vertices), ``casters_volume`` and
-/// ``receivers_volume`` ((p, 4) world planes, inside where a x + b y + c z + d ≤ 0), and the
+/// ``constant_depth`` (m,), ``resolution`` (m,) int64 (each map's texels a side),
+/// ``texel_extent``, ``depth``, ``split``, ``blend`` (m, 2), ``slot``, ``map_focus``, ``face``,
+/// ``clipmap_level`` (None except for a clipmap), ``body`` (eye-space vertices),
+/// ``casters_volume`` and ``receivers_volume`` ((p, 4) world planes, inside where a x + b y + c z + d ≤ 0), and the
 /// frame's ``focus``, ``light`` and ``light_dir_eye``. The GIL is released while it is built.
 #[pyfunction]
 #[pyo3(signature = (view, near, far, half_fov, light_dir, *, aspect=1.0, receivers=None,
     casters=None, depth_range=None, depth_clamp=false, measure=true, map_resolution=2048,
-    image_height=2048, pcf_radius=0.0,
+    image_height=2048, map_resolutions=None, pcf_radius=0.0,
     scheme="single", rule=None, k=None, partition=None, splits=None, fractions=None, bevy=None,
     lambda_=None, overlap=None, eta=None, focus=None, near_hint=None, far_hint=None,
     shadow_distance=None, xi=None, iterative=None, lod_bias=None, levels=None, level_unit=None,
@@ -277,6 +308,7 @@ pub fn frame<'py>(
     #[pyo3(from_py_with = measure_arg)] measure: bool,
     #[pyo3(from_py_with = args::map_resolution)] map_resolution: u32,
     #[pyo3(from_py_with = args::image_height)] image_height: u32,
+    map_resolutions: Option<&Any<'py>>,
     #[pyo3(from_py_with = args::pcf_radius)] pcf_radius: f64,
     #[pyo3(from_py_with = args::scheme)] scheme: &str,
     rule: Option<&Any<'py>>,
@@ -320,6 +352,7 @@ pub fn frame<'py>(
         .transpose()?;
     let splits = list("splits", splits)?;
     let fractions = list("fractions", fractions)?;
+    let each = self::map_resolutions(map_resolutions)?;
     let bevy = bevy.filter(|b| !b.is_none()).map(bevy_splits).transpose()?;
     let bevy_given = bevy.is_some();
     let depth = crate::builders::clip_depth(clip_depth)?;
@@ -521,6 +554,10 @@ pub fn frame<'py>(
             .depth_clamp(depth_clamp)
             .measure(measure)
             .centre(centre);
+        let input = match each.as_deref() {
+            Some(each) => input.map_resolutions(each),
+            None => input,
+        };
         let input = with_scene(input, receivers.as_deref(), casters.as_deref(), depth_range);
         build_frame(&input)
     })?
@@ -747,6 +784,11 @@ pub(crate) fn result<'py>(
     )?;
     let slot: Vec<i64> = maps.iter().map(|(i, _)| *i as i64).collect();
     d.set_item("slot", numpy::PyArray1::from_vec(py, slot))?;
+    let resolution: Vec<i64> = maps
+        .iter()
+        .map(|(_, x)| i64::from(x.resolution()))
+        .collect();
+    d.set_item("resolution", numpy::PyArray1::from_vec(py, resolution))?;
     d.set_item(
         "map_focus",
         PyList::new(py, maps.iter().map(|(_, x)| x.focus.name()))?,

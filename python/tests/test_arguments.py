@@ -108,6 +108,7 @@ CONTEXT = {
               "casters": {"receivers": [[[-5.0, -2.0, -50.0], [5.0, 0.0, -2.0]]],
                           "casters": [[[-1.0, 0.0, -20.0], [1.0, 3.0, -15.0]]]},
               "depth_range": {"depth_range": [2.0, 50.0]},
+              "map_resolutions": {"map_resolutions": [512]},
               "lod_bias": {"scheme": "clipmap", "lod_bias": -1.0},
               "levels": {"scheme": "clipmap", "levels": [6, 22]},
               "level_unit": {"scheme": "clipmap", "level_unit": 0.01},

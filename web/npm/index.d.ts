@@ -74,6 +74,10 @@ export interface FrameInput {
   measure?: boolean;
   /** Texels per map side (default 2048). */
   map_resolution?: number;
+  /** Each partition's own texels per side, in slot order (cascade i, face part i, the single
+   * map's slot 0), instead of map_resolution for all (not with a clipmap). A Decision's
+   * resolutions. The controller ignores it. */
+  map_resolutions?: ArrayLike<number>;
   /** Image height in pixels (default 2048). */
   image_height?: number;
   /** PCF radius in texels, for the bias values (default 0). */
@@ -115,6 +119,8 @@ export interface FrameMap {
   storage_factor: number;
   /** The largest perspective aliasing error over the focus body, pixels per texel. */
   max_error_pixels: number;
+  /** The map's texels per side. */
+  resolution: number;
   bias: Bias;
   focus: string;
   face: string | null;
@@ -151,6 +157,9 @@ export interface ControllerOptions {
   max_maps?: number;
   rounding?: 'whole' | 'power-of-two' | { multiple: number };
   max_resolution?: number;
+  /** Every map at one resolution (default true); false: each map its own, sized by its own
+   * error. */
+  shared_resolution?: boolean;
   candidates?: Scheme[];
   patience?: number;
   margin?: number;
@@ -164,8 +173,12 @@ export interface ControllerOptions {
 export interface Decision {
   /** The set-up chosen, in the form FrameInput.scheme takes. */
   scheme: Scheme;
+  /** The largest map's texels per side (every map's with a shared resolution). */
   resolution: number;
+  /** Each slot's texels per side, in slot order: FrameInput.map_resolutions for these maps. */
+  resolutions: number[];
   max_error_pixels: number;
+  /** The maps' texels together (the sum of each map's resolution²). */
   texels: number;
   meets_target: boolean;
   within_budget: boolean;

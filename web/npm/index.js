@@ -179,7 +179,8 @@ export class Controller {
     registry?.register(this, this.id, this);
   }
 
-  /** The decision for this frame (the input's scheme and map resolution are the controller's). */
+  /** The decision for this frame (the input's scheme, map_resolution and map_resolutions are the
+   * controller's to choose). */
   frame(input) {
     const d = numbers(call('controller_frame', { id: this.id, input }));
     d.frame = typedFrame(d.frame);

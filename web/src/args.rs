@@ -80,7 +80,7 @@ impl From<Error> for WebError {
 pub type WebResult<T> = Result<T, WebError>;
 
 /// What a JSON value is, for messages.
-fn kind(v: &Value) -> &'static str {
+pub fn kind(v: &Value) -> &'static str {
     match v {
         Value::Null => "null",
         Value::Bool(_) => "a boolean",

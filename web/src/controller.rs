@@ -3,18 +3,23 @@
 //!
 //! `controller_new` takes `options` (the library's `ControllerOptions` fields: `max_error`,
 //! `max_texels` — at least one — `max_maps`, `rounding` (`"whole"`, `"power-of-two"` or
-//! `{multiple: m}`), `max_resolution`, `candidates` (schemes, module `scheme`), `patience`,
-//! `margin`, `neighbour_every`, `retry_every`, `cut_move`, `cut_turn`, `cut_light`) and answers
-//! `{id}`; `controller_frame` takes `id` and a frame `input` (its scheme and map resolution are
-//! the controller's to choose) and answers the decision; `controller_cut` and `controller_free`
+//! `{multiple: m}`), `max_resolution`, `shared_resolution` (true; false: each map its own
+//! resolution), `candidates` (schemes, module `scheme`), `patience`, `margin`,
+//! `neighbour_every`, `retry_every`, `cut_move`, `cut_turn`, `cut_light`) and answers `{id}`;
+//! `controller_frame` takes `id` and a frame `input` (its scheme, `map_resolution` and
+//! `map_resolutions` are the controller's to choose: ignored) and answers the decision, with
+//! `resolutions` (each slot's texels a side, what a frame input's `map_resolutions` takes to
+//! build the same maps); `controller_cut` and `controller_free`
 //! take `id`.
 
 use crate::args::{
-    choice, field, num, object, opt_number, opt_str, opt_u32, opt_whole, WebError, WebResult,
+    choice, field, num, object, opt_bool, opt_number, opt_str, opt_u32, opt_whole, WebError,
+    WebResult,
 };
 use crate::frame::{frame_json, FrameArgs};
 use crate::scheme::{scheme, scheme_json};
 use serde_json::{json, Map, Value};
+use shadow_aliasing::frame::FrameInput;
 use shadow_aliasing::plan::allocate::Rounding;
 use shadow_aliasing::plan::{Controller, ControllerOptions};
 use std::cell::RefCell;
@@ -31,6 +36,7 @@ const OPTION_KEYS: &[&str] = &[
     "max_maps",
     "rounding",
     "max_resolution",
+    "shared_resolution",
     "candidates",
     "patience",
     "margin",
@@ -83,6 +89,9 @@ fn options(v: &Value) -> WebResult<ControllerOptions> {
     }
     if let Some(v) = opt_u32(m, "max_resolution")? {
         o.max_resolution = v;
+    }
+    if let Some(v) = opt_bool(m, "shared_resolution")? {
+        o.shared_resolution = v;
     }
     if let Some(v) = opt_u32(m, "patience")? {
         o.patience = v;
@@ -175,11 +184,17 @@ fn with<T>(
 /// `controller_frame`: the decision for this frame.
 pub fn frame(req: &Map<String, Value>) -> WebResult<Value> {
     let a = FrameArgs::read(req.get("input").unwrap_or(&Value::Null))?;
+    // The resolutions are the controller's to choose: the input's are not read.
+    let input = FrameInput {
+        map_resolutions: None,
+        ..a.input()
+    };
     with(req, |c| {
-        let d = c.frame(&a.input())?;
+        let d = c.frame(&input)?;
         Ok(json!({
             "scheme": scheme_json(&d.scheme),
             "resolution": d.resolution,
+            "resolutions": d.resolutions,
             "max_error_pixels": num(d.max_error_pixels),
             "texels": d.texels,
             "meets_target": d.meets_target,

@@ -6,7 +6,9 @@
 //! `near`, `far`, `half_fov` (radians, vertical), `aspect` (1), `light_dir_world` (the direction
 //! light travels), `receivers`, `casters` (arrays of boxes `{min: [x, y, z], max: [x, y, z]}`;
 //! absent: unbounded), `depth_range` (`[z_min, z_max]`), `depth_clamp` (false), `measure`
-//! (true), `map_resolution` (2048), `image_height` (2048), `pcf_radius` (0, texels, for the bias),
+//! (true), `map_resolution` (2048), `map_resolutions` (each partition's own texels a side, in slot
+//! order; absent: every map at `map_resolution`), `image_height` (2048), `pcf_radius` (0, texels,
+//! for the bias),
 //! `clip_depth` (`"neg-one-to-one"`, `"zero-to-one"`, `"reversed"`), `centre` (`"rule"`, `"eye"`,
 //! `"nearest-vertex"`), `scheme` (module `scheme`; default a single minimax map).
 
@@ -36,6 +38,7 @@ pub const INPUT_KEYS: &[&str] = &[
     "depth_clamp",
     "measure",
     "map_resolution",
+    "map_resolutions",
     "image_height",
     "pcf_radius",
     "clip_depth",
@@ -57,6 +60,8 @@ pub struct FrameArgs {
     measure: bool,
     /// Texels per map side.
     pub map_resolution: u32,
+    /// Each partition's texels per side, in slot order (`FrameInput::map_resolutions`).
+    pub map_resolutions: Option<Vec<u32>>,
     /// Image height, pixels.
     pub image_height: u32,
     /// The PCF radius of the bias values.
@@ -96,6 +101,29 @@ fn boxes(name: &str, v: &Value) -> WebResult<Vec<Aabb>> {
                     ),
                 )
             })
+        })
+        .collect()
+}
+
+/// `map_resolutions`: an array of whole numbers (the library checks their count and least
+/// value, naming `map_resolutions`).
+fn resolutions(v: &Value) -> WebResult<Vec<u32>> {
+    let a = v.as_array().ok_or_else(|| {
+        WebError::invalid(
+            "map_resolutions",
+            format!(
+                "must be an array of whole numbers, one resolution per partition in slot order \
+                 (got {})",
+                crate::args::kind(v)
+            ),
+        )
+    })?;
+    a.iter()
+        .enumerate()
+        .map(|(i, x)| {
+            // At most u32::MAX: the cast is exact.
+            crate::args::whole(&format!("map_resolutions[{i}]"), x, u64::from(u32::MAX))
+                .map(|r| r as u32)
         })
         .collect()
 }
@@ -174,6 +202,7 @@ impl FrameArgs {
             depth_clamp: opt_bool(m, "depth_clamp")?.unwrap_or(false),
             measure: opt_bool(m, "measure")?.unwrap_or(true),
             map_resolution: opt_u32(m, "map_resolution")?.unwrap_or(2048),
+            map_resolutions: field(m, "map_resolutions").map(resolutions).transpose()?,
             image_height: opt_u32(m, "image_height")?.unwrap_or(2048),
             pcf_radius: opt_number(m, "pcf_radius")?.unwrap_or(0.0),
             clip_depth,
@@ -204,6 +233,9 @@ impl FrameArgs {
         .scheme(self.scheme.get());
         if let Some((a, b)) = self.depth_range {
             input = input.depth_range(a, b);
+        }
+        if let Some(each) = &self.map_resolutions {
+            input = input.map_resolutions(each);
         }
         input
     }
@@ -237,6 +269,7 @@ fn map_json(slot: usize, x: &FrameMap, depth: ClipDepth, pcf_radius: f64) -> Web
         "max_mz": num(x.max_mz),
         "storage_factor": num(x.storage_factor),
         "max_error_pixels": num(x.max_error_pixels),
+        "resolution": x.resolution(),
         "bias": {
             "normal_offset": num(b.normal_offset),
             "slope_scaled_depth": num(b.slope_scaled_depth),

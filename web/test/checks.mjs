@@ -278,4 +278,92 @@ test('the controller meets its target, counts its texels, and its scheme builds 
   throwsNaming(() => c.frame(input), 'id', /names no live controller/);
 });
 
+// An orthographic map's texel edge in world units from its world → clip matrix alone
+// (column-major): clip s spans 2 over `res` texels, and a world step moves it by the s row's
+// (x, y, z); the same for t; the larger of the two.
+function orthoTexel(m, res) {
+  const row = (i) => Math.hypot(m[i], m[4 + i], m[8 + i]);
+  return Math.max(2 / (res * row(0)), 2 / (res * row(1)));
+}
+
+const UNIFORM_CASCADES = { kind: 'cascades', rule: 'uniform', partition: 'practical', lambda: 0.5, k: 3 };
+
+test('each map has its own resolution: its texel from the matrix, its error as 1/resolution', () => {
+  const each = [2048, 512, 128];
+  const own = frame({ ...input, scheme: UNIFORM_CASCADES, map_resolutions: each });
+  const one = frame({ ...input, scheme: UNIFORM_CASCADES, map_resolution: 1024 });
+  assert.equal(own.maps.length, 3);
+  own.maps.forEach((m, i) => {
+    assert.equal(m.resolution, each[m.slot]);
+    assert.equal(one.maps[i].resolution, 1024);
+    close(m.texel_world, orthoTexel(m.world_to_clip, each[m.slot]), 1e-9, `map ${i}'s texel`);
+    // The warp and the fit do not depend on the resolution; the error is one texel's size.
+    assert.deepEqual(Array.from(m.world_to_clip), Array.from(one.maps[i].world_to_clip));
+    close(m.max_error_pixels * each[m.slot], one.maps[i].max_error_pixels * 1024, 1e-12, `map ${i}'s error`);
+  });
+  // Stable cascades snap to whole texels of their own resolution: the world origin lands at a
+  // whole number of texels from each map's centre (clip s and t span 2 over its texels).
+  const stable = frame({ ...input, scheme: { kind: 'stable', partition: 'log', k: 3 }, map_resolutions: [300, 1000, 3000] });
+  assert.ok(stable.maps.length >= 2);
+  for (const m of stable.maps) {
+    const r = [300, 1000, 3000][m.slot];
+    assert.equal(m.resolution, r);
+    close(m.texel_world, orthoTexel(m.world_to_clip, r), 1e-9, `stable map ${m.slot}'s texel`);
+    for (const axis of [0, 1]) {
+      const texels = ((m.world_to_clip[12 + axis] / m.world_to_clip[15]) * r) / 2;
+      assert.ok(Math.abs(texels - Math.round(texels)) < 1e-6, `stable map ${m.slot}: origin at ${texels} texels`);
+    }
+  }
+});
+
+test("the controller with a resolution per map: each map's own texel, texels the sum of squares, resolutions rebuild the maps", () => {
+  const candidates = [
+    { kind: 'single', rule: 'uniform' },
+    ...[2, 3, 4].map((k) => ({ ...UNIFORM_CASCADES, k })),
+  ];
+  const each = new Controller({ max_error: 2, max_maps: 4, candidates, shared_resolution: false });
+  const shared = new Controller({ max_error: 2, max_maps: 4, candidates });
+  // The input's map_resolutions are the controller's to choose: given, they change nothing.
+  const ignoring = new Controller({ max_error: 2, max_maps: 4, candidates, shared_resolution: false });
+  for (let frameNo = 0; frameNo < 3; frameNo++) {
+    const inp = { ...input, world_to_eye: view.map((v, i) => (i === 12 ? v - frameNo : v)) };
+    const d = each.frame(inp);
+    const s = shared.frame(inp);
+    const maps = d.frame.maps;
+    assert.ok(d.meets_target && d.max_error_pixels <= 2, `${d.max_error_pixels} px`);
+    assert.ok(Array.isArray(d.resolutions) && d.resolutions.length >= Math.max(...maps.map((m) => m.slot)) + 1);
+    assert.deepEqual(s.resolutions, s.resolutions.map(() => s.resolution));
+    let texels = 0;
+    for (const m of maps) {
+      assert.equal(m.resolution, d.resolutions[m.slot]);
+      assert.ok(m.max_error_pixels <= 2, `map ${m.slot}: ${m.max_error_pixels} px`);
+      close(m.texel_world, orthoTexel(m.world_to_clip, m.resolution), 1e-9, `map ${m.slot}'s texel`);
+      texels += m.resolution ** 2;
+    }
+    assert.equal(d.texels, texels);
+    assert.equal(d.resolution, Math.max(...maps.map((m) => m.resolution)));
+    assert.ok(d.texels <= s.texels, `${d.texels} texels, ${s.texels} shared`);
+    if (frameNo === 0) {
+      console.log(`  each map: ${JSON.stringify(d.scheme)} at ${d.resolutions.join(', ')}: ${d.texels} texels (shared ${s.resolution}²: ${s.texels})`);
+    }
+    const again = frame({ ...inp, scheme: d.scheme, map_resolutions: d.resolutions });
+    assert.deepEqual(again.maps.map((m) => Array.from(m.world_to_clip)), maps.map((m) => Array.from(m.world_to_clip)));
+    assert.deepEqual(again.maps.map((m) => m.max_error_pixels), maps.map((m) => m.max_error_pixels));
+    const g = ignoring.frame({ ...inp, map_resolutions: [7] });
+    assert.deepEqual(g.resolutions, d.resolutions);
+  }
+  [each, shared, ignoring].forEach((c) => c.free());
+});
+
+test('bad resolutions throw naming map_resolutions and shared_resolution', () => {
+  const inp = { ...input, scheme: UNIFORM_CASCADES };
+  throwsNaming(() => frame({ ...inp, map_resolutions: 512 }), 'map_resolutions', /^map_resolutions must be an array of whole numbers/);
+  throwsNaming(() => frame({ ...inp, map_resolutions: [512, 1.5, 512] }), 'map_resolutions[1]', /must be a whole number/);
+  throwsNaming(() => frame({ ...inp, map_resolutions: [512, -1, 512] }), 'map_resolutions[1]', /must be a whole number/);
+  throwsNaming(() => frame({ ...inp, map_resolutions: [512, 512] }), 'map_resolutions', /^map_resolutions has 2 entries, and the scheme has 3 partitions/);
+  throwsNaming(() => frame({ ...inp, map_resolutions: [512, 2, 512] }), 'map_resolutions', 'map_resolutions must hold resolutions of at least 3 texels each (got 2)');
+  throwsNaming(() => frame({ ...input, scheme: { kind: 'clipmap' }, map_resolutions: [512] }), 'map_resolutions', /^map_resolutions cannot be used with a clipmap/);
+  throwsNaming(() => new Controller({ max_error: 2, shared_resolution: 'no' }), 'shared_resolution', /must be a boolean/);
+});
+
 console.log(`${passed} checks passed`);
