@@ -5,6 +5,8 @@
 //!   one power-of-two resolution shared by the maps, up to 8192², every candidate but the
 //!   clipmap, a neighbour measured every 4 frames), as `shadow-aliasing replay` runs it;
 //! - **without neighbours**: the same with `neighbour_every: 0`;
+//! - **a resolution per map**: the same with `shared_resolution: false` (each map its own
+//!   power-of-two square), and the search every frame (below) with it;
 //! - **search every frame**: the same controller with a cut on every frame (`Controller::cut`):
 //!   every candidate measured, the fewest texels at one shared power-of-two resolution (the
 //!   planner's answer under the controller's constraint, with no memory);
@@ -81,16 +83,19 @@ fn main() -> Result<(), String> {
             .join(format!("{name}.json"));
         let path = path_file::read(&file)?;
         let n = path.frames.len();
-        let new = |every| {
+        let new = |every, shared| {
             Controller::new(ControllerOptions {
                 neighbour_every: every,
+                shared_resolution: shared,
                 ..ControllerOptions::new(TARGET)
             })
             .map_err(|e| e.to_string())
         };
-        let (mut controller, mut lone, mut eager) = (new(4)?, new(0)?, new(4)?);
+        let (mut controller, mut lone, mut eager) = (new(4, true)?, new(0, true)?, new(4, true)?);
+        let (mut each, mut each_eager) = (new(4, false)?, new(4, false)?);
         let (mut ctl, mut bevy, mut full, mut fixed) = Default::default();
         let (mut ctl_lone, mut ctl_eager) = (Tally::default(), Tally::default());
+        let (mut ctl_each, mut ctl_each_eager) = (Tally::default(), Tally::default());
         let mut kept: Option<(FrameScheme<'static>, u32)> = None;
         for (i, f) in path.frames.iter().enumerate() {
             let at = |e: shadow_aliasing::Error| format!("{name} frame {i}: {e}");
@@ -108,6 +113,8 @@ fn main() -> Result<(), String> {
             for (c, tally, cut) in [
                 (&mut lone, &mut ctl_lone, false),
                 (&mut eager, &mut ctl_eager, true),
+                (&mut each, &mut ctl_each, false),
+                (&mut each_eager, &mut ctl_each_eager, true),
             ] {
                 if cut {
                     c.cut();
@@ -115,7 +122,7 @@ fn main() -> Result<(), String> {
                 let t = Instant::now();
                 let d = c.frame(&input).map_err(at)?;
                 let ms = t.elapsed().as_secs_f64() * 1e3;
-                let key = format!("{} {}", label(&d.scheme), d.resolution);
+                let key = format!("{} {:?}", label(&d.scheme), d.resolutions);
                 tally.add(key, d.max_error_pixels, d.texels, ms);
             }
 
@@ -166,6 +173,14 @@ fn main() -> Result<(), String> {
         println!(
             "{}",
             ctl_eager.row(name, "search every frame (shared resolution)", n)
+        );
+        println!(
+            "{}",
+            ctl_each.row(name, "controller, a resolution per map", n)
+        );
+        println!(
+            "{}",
+            ctl_each_eager.row(name, "search every frame (a resolution per map)", n)
         );
         println!("{}", bevy.row(name, "Bevy defaults (4 × 2048²)", n));
         println!("{}", full.row(name, "plan every frame", n));

@@ -326,3 +326,74 @@ fn the_figure_draws_every_frame_against_the_target() {
     let _ = std::fs::remove_file(&file);
     let _ = std::fs::remove_file(&svg_file);
 }
+
+/// `replay --budget-texels` keeps every frame within the budget, `--per-map` gives each map its
+/// own resolution (their squares summing to the frame's texels), and a missing or bad goal is
+/// refused naming its flag.
+#[test]
+fn replay_takes_a_budget_and_a_resolution_per_map() {
+    let file = excerpt("goals", 0, 8, |_| {});
+    let p = file.to_str().expect("a UTF-8 path");
+    let json = |extra: &[&str]| -> Value {
+        let mut argv = vec!["replay", "--path", p, "--json"];
+        argv.extend_from_slice(extra);
+        let (code, out, err) = run(&argv);
+        assert_eq!(code, 0, "{extra:?}: {err}");
+        serde_json::from_str(&out).expect("JSON")
+    };
+    let budget = 20_000_000u64;
+    let v = json(&["--budget-texels", "20000000"]);
+    assert_eq!(v["budget_texels"].as_u64(), Some(budget));
+    assert!(v["max_error"].is_null());
+    assert_eq!(v["per_map"], false);
+    for f in v["frames"].as_array().expect("frames") {
+        assert!(f["texels"].as_u64().unwrap() <= budget, "{f}");
+    }
+    let v = json(&["--max-error", "2", "--per-map"]);
+    assert_eq!(v["per_map"], true);
+    let mut summed = 0;
+    for f in v["frames"].as_array().expect("frames") {
+        let each: Vec<u64> = f["resolutions"]
+            .as_array()
+            .expect("resolutions")
+            .iter()
+            .map(|r| r.as_u64().unwrap())
+            .collect();
+        let maps = f["maps"].as_u64().unwrap() as usize;
+        assert!(each.len() >= maps, "{f}");
+        assert_eq!(f["resolution"].as_u64(), each.iter().copied().max(), "{f}");
+        if each.len() == maps {
+            let sum: u64 = each.iter().map(|r| r * r).sum();
+            assert_eq!(f["texels"].as_u64(), Some(sum), "{f}");
+            summed += 1;
+        }
+        let e = f["max_error_pixels"].as_f64().unwrap();
+        assert_eq!(f["meets_target"].as_bool(), Some(e <= 2.0), "{f}");
+    }
+    assert!(summed > 0);
+    let (code, out, _) = run(&["replay", "--path", p, "--max-error", "2", "--per-map"]);
+    assert_eq!(code, 0);
+    assert!(out.contains(", a resolution per map"), "{out}");
+    assert!(
+        out.contains(" maps "),
+        "each line lists the maps' resolutions: {out}"
+    );
+    for (args, want) in [
+        (&[][..], "error: --max-error or --budget-texels is needed"),
+        (
+            &["--budget-texels", "0"][..],
+            "error: --budget-texels must be at least 1 texel",
+        ),
+        (
+            &["--budget-texels", "10"][..],
+            "error: --budget-texels is 10, less than one map",
+        ),
+    ] {
+        let mut argv = vec!["replay", "--path", p];
+        argv.extend_from_slice(args);
+        let (code, _, err) = run(&argv);
+        assert_eq!(code, 1, "{args:?}");
+        assert!(err.starts_with(want), "{args:?}: {err}");
+    }
+    let _ = std::fs::remove_file(&file);
+}

@@ -376,6 +376,24 @@ fn bad_options_are_refused_by_name() {
         },
         "max_resolution",
     );
+    // Under a map's least (3 texels), though the rounding allows it.
+    refused(
+        ControllerOptions {
+            max_resolution: 2,
+            rounding: Rounding::PowerOfTwo,
+            ..ok.clone()
+        },
+        "max_resolution",
+    );
+    // A budget under one map of 3 texels a side (the rounding's 4 × 4 = 16 texels).
+    refused(
+        ControllerOptions {
+            max_texels: Some(10),
+            rounding: Rounding::PowerOfTwo,
+            ..ok.clone()
+        },
+        "max_texels",
+    );
     refused(
         ControllerOptions {
             candidates: Some(Vec::new()),

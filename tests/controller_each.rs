@@ -14,7 +14,6 @@ use shadow_aliasing::maps::ClipDepth;
 use shadow_aliasing::maps::WarpRule;
 use shadow_aliasing::plan::allocate::Rounding;
 use shadow_aliasing::plan::{Controller, ControllerOptions, Decision};
-use shadow_aliasing::Error;
 
 const TARGET: f64 = 2.0;
 const CAP: u32 = 4096;
@@ -259,49 +258,72 @@ fn a_budget_buys_the_least_largest_error_per_map() {
     }
 }
 
+/// Equal-error candidates per map: planes placed at one resolution, each map then sized; the
+/// decision rebuilds bit for bit from its scheme and resolutions; with every candidate allowed
+/// (equal-error ones included) a resolution per map never takes more texels on a cut than one
+/// shared resolution does.
 #[test]
-fn equal_error_candidates_need_a_shared_resolution() {
+fn per_map_is_never_dearer_than_shared_on_a_cut() {
+    let boxes = scene();
+    let all = |shared| {
+        Controller::new(ControllerOptions {
+            candidates: None,
+            ..options(shared)
+        })
+        .unwrap()
+    };
+    let (mut each, mut shared) = (all(false), all(true));
+    for i in (0..FRAMES).step_by(40) {
+        let inp = input(camera(i), &boxes);
+        each.cut();
+        shared.cut();
+        let d = each.frame(&inp).unwrap();
+        check_decision(&d, &inp, i);
+        let s = shared.frame(&inp).unwrap();
+        if s.meets_target {
+            assert!(d.meets_target, "frame {i}");
+            assert!(
+                d.texels <= s.texels,
+                "frame {i}: {} texels per map, {} shared",
+                d.texels,
+                s.texels
+            );
+        }
+        if !matches!(
+            d.scheme,
+            FrameScheme::Cascades {
+                splits: CascadeSplits::EqualError { .. },
+                ..
+            }
+        ) {
+            let again = frame(&inp.scheme(d.scheme).map_resolutions(d.resolutions)).unwrap();
+            let a: Vec<_> = d
+                .frame
+                .maps()
+                .iter()
+                .map(|m| m.world_to_clip(ClipDepth::ZeroToOne))
+                .collect();
+            let b: Vec<_> = again
+                .maps()
+                .iter()
+                .map(|m| m.world_to_clip(ClipDepth::ZeroToOne))
+                .collect();
+            assert_eq!(a, b, "frame {i}");
+        }
+    }
+    // An equal-error candidate alone: its planes equalise the maps' errors at one resolution,
+    // so a resolution per map gives them equal resolutions unless rounding splits them.
     let eq = FrameScheme::Cascades {
         splits: CascadeSplits::EqualError { k: 3 },
         rule: WarpRule::Uniform,
     };
-    match Controller::new(ControllerOptions {
-        candidates: Some(vec![eq]),
-        ..options(false)
-    }) {
-        Err(Error::InvalidArgument { name, reason }) => {
-            assert_eq!(name, "candidates");
-            assert!(reason.contains("shared_resolution"), "{reason}");
-        }
-        other => panic!("{other:?}"),
-    }
-    assert!(Controller::new(ControllerOptions {
-        candidates: Some(vec![eq]),
-        ..options(true)
-    })
-    .is_ok());
-    // The default candidates leave equal-error splits out per map: every decision is rebuilt
-    // from its own resolutions.
-    let boxes = scene();
     let mut c = Controller::new(ControllerOptions {
-        candidates: None,
+        candidates: Some(vec![eq]),
         ..options(false)
     })
     .unwrap();
-    let inp = input(camera(10), &boxes);
+    let inp = input(camera(100), &boxes);
     let d = c.frame(&inp).unwrap();
-    let again = frame(&inp.scheme(d.scheme).map_resolutions(d.resolutions)).unwrap();
-    let (a, b): (Vec<_>, Vec<_>) = (
-        d.frame
-            .maps()
-            .iter()
-            .map(|m| m.world_to_clip(ClipDepth::ZeroToOne))
-            .collect(),
-        again
-            .maps()
-            .iter()
-            .map(|m| m.world_to_clip(ClipDepth::ZeroToOne))
-            .collect(),
-    );
-    assert_eq!(a, b);
+    check_decision(&d, &inp, 100);
+    assert_eq!(d.scheme, eq);
 }

@@ -11,8 +11,8 @@ mod common;
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::frame::{
-    frame, frame_into, Aabb, Bound, Camera, CascadeSplits, ClipmapOptions, Frame,
-    FrameInput, FrameScheme,
+    frame, frame_into, Aabb, Bound, Camera, CascadeSplits, ClipmapOptions, Frame, FrameInput,
+    FrameScheme,
 };
 use shadow_aliasing::maps::faces::FaceWarp;
 use shadow_aliasing::maps::{ClipDepth, WarpRule};
@@ -223,17 +223,12 @@ fn refused(inp: &FrameInput<'_>, words: &str) {
     }
 }
 
+/// Equal-error planes are placed by the maps' errors at one resolution (`map_resolution`), so
+/// they are the same planes whatever each map's own resolution is.
 #[test]
-fn bad_lists_are_refused_by_name() {
+fn equal_error_planes_do_not_depend_on_the_maps_resolutions() {
     let g = ground();
     let cam = camera(DVec3::ZERO);
-    let c = input(cam, &g, cascades(WarpRule::Uniform));
-    refused(&c.map_resolutions(&[1024, 1024]), "3 partitions");
-    refused(&c.map_resolutions(&[1024, 1024, 1024, 1024]), "3 partitions");
-    refused(&c.map_resolutions(&[1024, 2, 1024]), "at least 3 texels");
-    refused(&c.map_resolutions(&[]), "0 entries");
-    let single = input(cam, &g, FrameScheme::Single(WarpRule::Lispsm));
-    refused(&single.map_resolutions(&[512, 512]), "1 partitions");
     for s in [
         FrameScheme::Cascades {
             splits: CascadeSplits::EqualError { k: 3 },
@@ -241,8 +236,37 @@ fn bad_lists_are_refused_by_name() {
         },
         FrameScheme::Stable(CascadeSplits::EqualError { k: 3 }),
     ] {
-        refused(&input(cam, &g, s).map_resolutions(&EACH), "equal-error");
+        let one = frame(&input(cam, &g, s)).unwrap();
+        let each = frame(&input(cam, &g, s).map_resolutions(&EACH)).unwrap();
+        assert_eq!(each.maps().len(), 3);
+        for (i, (a, b)) in one.maps().iter().zip(each.maps().iter()).enumerate() {
+            assert_eq!(a.split, b.split, "{s:?} map {i}");
+            assert_eq!(b.resolution(), EACH[i]);
+        }
+        // The planes equalise the errors at one resolution: at 1024 the three maps' errors agree
+        // (to the search's tolerance; stable cascades to their grid's).
+        let e: Vec<f64> = one.maps().iter().map(|m| m.max_error_pixels).collect();
+        let (lo, hi) = e
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(l, h), &x| (l.min(x), h.max(x)));
+        assert!(hi <= 1.05 * lo, "{s:?}: {e:?}");
     }
+}
+
+#[test]
+fn bad_lists_are_refused_by_name() {
+    let g = ground();
+    let cam = camera(DVec3::ZERO);
+    let c = input(cam, &g, cascades(WarpRule::Uniform));
+    refused(&c.map_resolutions(&[1024, 1024]), "3 partitions");
+    refused(
+        &c.map_resolutions(&[1024, 1024, 1024, 1024]),
+        "3 partitions",
+    );
+    refused(&c.map_resolutions(&[1024, 2, 1024]), "at least 3 texels");
+    refused(&c.map_resolutions(&[]), "0 entries");
+    let single = input(cam, &g, FrameScheme::Single(WarpRule::Lispsm));
+    refused(&single.map_resolutions(&[512, 512]), "1 partitions");
     let clip = FrameScheme::Clipmap(ClipmapOptions::default());
     let clip = FrameInput::new(cam, DVec3::new(0.4, -0.8, -0.3), 16384, H)
         .receivers(Bound::Boxes(&g))

@@ -251,7 +251,7 @@ fn record_and_arrays_carry_the_maps_values() {
                 assert_eq!(f32::from_bits(word(&b, 116)), g.texel_extent[1]);
                 assert_eq!(f32::from_bits(word(&b, 120)), g.constant_depth);
                 assert_eq!(&b[124..128], &[0u8; 4]); // bias_radius 0.0
-                // The map's resolution (the frame's, here), then three zero words.
+                                                     // The map's resolution (the frame's, here), then three zero words.
                 assert_eq!(word(&b, 128), 2048, "the frame's map_resolution");
                 assert_eq!(&b[132..], &[0u8; 12]);
                 #[cfg(feature = "bytemuck")]

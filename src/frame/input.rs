@@ -296,8 +296,9 @@ pub struct FrameInput<'a> {
     pub map_resolution: u32,
     /// Each partition's own texels per side, in slot order (cascade i, face part i in
     /// [`Frame::slots`](super::Frame::slots) order, the single map's slot 0), one entry per
-    /// slot of the scheme; `None` (the default): every map at `map_resolution`. Not with
-    /// equal-error splits, whose planes equalise the errors at one resolution, nor with a
+    /// slot of the scheme; `None` (the default): every map at `map_resolution`. Equal-error
+    /// splits place their planes by the maps' errors at one resolution (`map_resolution`: the
+    /// planes equalise M_x, M_z, whatever it is), then each map is built at its own. Not with a
     /// clipmap, whose levels share one.
     pub map_resolutions: Option<&'a [u32]>,
     /// The image's height in pixels (the predicted error is in these pixels).
@@ -415,29 +416,17 @@ impl<'a> FrameInput<'a> {
 
 /// `map_resolutions` against the scheme's `slots` partitions: one entry at least 3 per slot
 /// (face partitions: at least one per slot, as their slot count depends on the faces the light
-/// sees), and a scheme that maps at one resolution refused.
+/// sees); a clipmap (levels of one resolution) refused.
 pub(super) fn check_resolutions(input: &FrameInput<'_>, slots: usize) -> Result<()> {
     let Some(each) = input.map_resolutions else {
         return Ok(());
     };
-    let shared = match input.scheme {
-        FrameScheme::Cascades {
-            splits: CascadeSplits::EqualError { .. },
-            ..
-        }
-        | FrameScheme::Stable(CascadeSplits::EqualError { .. }) => Some(
-            "equal-error splits place their planes so that the maps' errors are equal at one \
-             resolution: give one map_resolution, or the planes of an equal-error frame as \
-             CascadeSplits::Distances with a resolution per map",
-        ),
-        FrameScheme::Clipmap(_) => Some(
-            "a clipmap's levels share one resolution (its knob is the LOD bias): give one \
-             map_resolution",
-        ),
-        _ => None,
-    };
-    if let Some(why) = shared {
-        return Err(Error::invalid("map_resolutions", format!("cannot be used here: {why}")));
+    if matches!(input.scheme, FrameScheme::Clipmap(_)) {
+        return Err(Error::invalid(
+            "map_resolutions",
+            "cannot be used with a clipmap: its levels share one resolution (its knob is the \
+             LOD bias); give one map_resolution",
+        ));
     }
     if let Some(r) = each.iter().find(|&&r| r < 3) {
         return Err(Error::invalid(

@@ -50,7 +50,7 @@ pub enum Command {
     Plan(PlanArgs),
     /// Run the error-budget controller over a camera path file (docs/paths.md).
     #[command(
-        after_help = "Examples:\n  shadow-aliasing replay --path paths/walk.json --max-error 2 --json\n  shadow-aliasing replay --path paths/cut.json --max-error 1 --figure cut.svg"
+        after_help = "Examples:\n  shadow-aliasing replay --path paths/walk.json --max-error 2 --json\n  shadow-aliasing replay --path paths/cut.json --max-error 1 --figure cut.svg\n  shadow-aliasing replay --path paths/fly.json --budget-texels 16777216 --per-map"
     )]
     Replay(ReplayArgs),
 }
@@ -61,9 +61,17 @@ pub struct ReplayArgs {
     /// The camera path file (JSON, docs/paths.md).
     #[arg(long, value_name = "FILE")]
     pub path: PathBuf,
-    /// The target: the largest error allowed, pixels per texel.
+    /// The target: the largest error allowed, pixels per texel (the fewest texels that meet it).
     #[arg(long = "max-error", value_name = "PX", allow_hyphen_values = true)]
-    pub max_error: f64,
+    pub max_error: Option<f64>,
+    /// The budget: texels of all maps together (with --max-error: the target within it, else
+    /// the least error that fits; alone: the least error within it).
+    #[arg(long = "budget-texels", value_name = "N", allow_hyphen_values = true)]
+    pub budget_texels: Option<i64>,
+    /// Each map its own resolution (separate textures or an atlas); without it every map
+    /// shares one, as in Bevy and three.js.
+    #[arg(long = "per-map")]
+    pub per_map: bool,
     /// Print JSON instead of text.
     #[arg(long)]
     pub json: bool,

@@ -18,6 +18,8 @@ struct Row {
     scheme: String,
     maps: usize,
     resolution: u32,
+    /// Each slot's resolution.
+    resolutions: Vec<u32>,
     max_error_pixels: f64,
     texels: u64,
     meets_target: bool,
@@ -34,12 +36,40 @@ fn quantile(sorted: &[f64], q: f64) -> f64 {
 
 /// The text or JSON of `replay`.
 pub fn replay(a: &ReplayArgs) -> Result<String, String> {
+    let budget = match a.budget_texels {
+        Some(b) if b < 1 => {
+            return Err(format!(
+                "--budget-texels must be at least 1 texel (got {b}): give the texels all maps \
+                 may take together"
+            ))
+        }
+        b => b.map(i64::unsigned_abs),
+    };
+    let mut options = match (a.max_error, budget) {
+        (Some(e), b) => ControllerOptions {
+            max_texels: b,
+            ..ControllerOptions::new(e)
+        },
+        (None, Some(b)) => ControllerOptions::budget(b),
+        (None, None) => {
+            return Err(
+                "--max-error or --budget-texels is needed (or both): --max-error PX for \
+                 the fewest texels within PX, --budget-texels N for the least error within N \
+                 texels"
+                    .into(),
+            )
+        }
+    };
+    options.shared_resolution = !a.per_map;
     let path = path_file::read(&a.path)?;
-    let mut c = Controller::new(ControllerOptions::new(a.max_error)).map_err(|e| match e {
-        shadow_aliasing::Error::InvalidArgument {
-            name: "max_error",
-            reason,
-        } => format!("--max-error {reason}"),
+    let mut c = Controller::new(options).map_err(|e| match e {
+        shadow_aliasing::Error::InvalidArgument { name, reason } => {
+            let flag = match name {
+                "max_texels" => "budget-texels".to_string(),
+                n => n.replace('_', "-"),
+            };
+            format!("--{flag} {reason}")
+        }
         e => e.to_string(),
     })?;
     let mut rows = Vec::with_capacity(path.frames.len());
@@ -58,6 +88,7 @@ pub fn replay(a: &ReplayArgs) -> Result<String, String> {
             scheme: label(&d.scheme),
             maps: d.frame.maps().len(),
             resolution: d.resolution,
+            resolutions: d.resolutions.to_vec(),
             max_error_pixels: d.max_error_pixels,
             texels: d.texels,
             meets_target: d.meets_target,
@@ -75,12 +106,8 @@ pub fn replay(a: &ReplayArgs) -> Result<String, String> {
                 cut: r.cut,
             })
             .collect();
-        let title = format!(
-            "replay {}: at most {} px per texel",
-            a.path.display(),
-            sig(a.max_error)
-        );
-        std::fs::write(file, svg(&points, a.max_error, &title))
+        let title = format!("replay {}: {}", a.path.display(), goal(a));
+        std::fs::write(file, svg(&points, a.max_error, budget, &title))
             .map_err(|e| format!("cannot write {}: {e}", file.display()))?;
     }
     Ok(if a.json {
@@ -126,6 +153,7 @@ fn json_out(a: &ReplayArgs, rows: &[Row]) -> String {
                 "scheme": r.scheme,
                 "maps": r.maps,
                 "resolution": r.resolution,
+                "resolutions": r.resolutions,
                 "max_error_pixels": r.max_error_pixels,
                 "texels": r.texels,
                 "meets_target": r.meets_target,
@@ -139,6 +167,8 @@ fn json_out(a: &ReplayArgs, rows: &[Row]) -> String {
     let out = json!({
         "path": a.path.display().to_string(),
         "max_error": a.max_error,
+        "budget_texels": a.budget_texels,
+        "per_map": a.per_map,
         "frames": frames,
         "summary": {
             "frames": rows.len(),
@@ -161,9 +191,9 @@ fn text(a: &ReplayArgs, rows: &[Row]) -> String {
     let mut t = String::new();
     let _ = writeln!(
         t,
-        "replay {}: at most {} px per texel, {} frames",
+        "replay {}: {}, {} frames",
         a.path.display(),
-        sig(a.max_error),
+        goal(a),
         rows.len()
     );
     for (i, r) in rows.iter().enumerate() {
@@ -174,11 +204,15 @@ fn text(a: &ReplayArgs, rows: &[Row]) -> String {
             (false, false) => "",
         };
         let missed = if r.meets_target { "" } else { " (misses)" };
+        let size = if a.per_map {
+            let each: Vec<String> = r.resolutions.iter().map(u32::to_string).collect();
+            format!("{:>2} maps {}²", r.maps, each.join("/"))
+        } else {
+            format!("{:>2} × {:>5}²", r.maps, r.resolution)
+        };
         let line = format!(
-            "frame {i:>4}: {:<34} {:>2} × {:>5}² {:>10} texels {:>9} px{missed} {:.3} ms {mark}",
+            "frame {i:>4}: {:<34} {size} {:>10} texels {:>9} px{missed} {:.3} ms {mark}",
             r.scheme,
-            r.maps,
-            r.resolution,
             r.texels,
             sig(r.max_error_pixels),
             r.ms,
@@ -199,4 +233,17 @@ fn text(a: &ReplayArgs, rows: &[Row]) -> String {
         s.p99_ms
     );
     t
+}
+
+/// The goal in words: the target, the budget, and whether each map has its own resolution.
+fn goal(a: &ReplayArgs) -> String {
+    let mut g = match (a.max_error, a.budget_texels) {
+        (Some(e), Some(b)) => format!("at most {} px per texel within {b} texels", sig(e)),
+        (Some(e), None) => format!("at most {} px per texel", sig(e)),
+        (None, b) => format!("the least error within {} texels", b.unwrap_or(0)),
+    };
+    if a.per_map {
+        g.push_str(", a resolution per map");
+    }
+    g
 }

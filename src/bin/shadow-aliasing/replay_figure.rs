@@ -58,8 +58,9 @@ fn panel(s: &mut String, values: &[f64], top: f64, y0: f64, label: &str, colour:
     );
 }
 
-/// The figure for `points` (at least one) against `target` pixels.
-pub fn svg(points: &[Point], target: f64, title: &str) -> String {
+/// The figure for `points` (at least one) against `target` pixels and `budget` texels (each
+/// drawn as a dashed line where given).
+pub fn svg(points: &[Point], target: Option<f64>, budget: Option<u64>, title: &str) -> String {
     let n = points.len();
     let h = TOP + 2.0 * PANEL + GAP + 40.0;
     let mut s = String::new();
@@ -76,8 +77,13 @@ pub fn svg(points: &[Point], target: f64, title: &str) -> String {
     );
     let errors: Vec<f64> = points.iter().map(|p| p.error).collect();
     let texels: Vec<f64> = points.iter().map(|p| p.texels as f64 / 1e6).collect();
-    let etop = 1.1 * errors.iter().copied().fold(target, f64::max);
-    let ttop = 1.1 * texels.iter().copied().fold(0.0, f64::max);
+    let etop = 1.1 * errors.iter().copied().fold(target.unwrap_or(0.0), f64::max);
+    let budget_m = budget.map(|b| b as f64 / 1e6);
+    let ttop = 1.1
+        * texels
+            .iter()
+            .copied()
+            .fold(budget_m.unwrap_or(0.0), f64::max);
     let x = |i: usize| LEFT + (W - LEFT - RIGHT) * i as f64 / (n.max(2) - 1) as f64;
     // The cuts, across both panels.
     for (i, _) in points.iter().enumerate().filter(|(_, p)| p.cut) {
@@ -89,19 +95,10 @@ pub fn svg(points: &[Point], target: f64, title: &str) -> String {
         );
     }
     panel(&mut s, &errors, etop, TOP, "error (px)", "#0072b2");
-    let ty = TOP + PANEL * (1.0 - target / etop);
-    let _ = writeln!(
-        s,
-        r##"<line class="target" x1="{LEFT}" x2="{}" y1="{ty:.2}" y2="{ty:.2}" stroke="#d55e00" stroke-dasharray="6 4"/>"##,
-        W - RIGHT
-    );
-    let _ = writeln!(
-        s,
-        r##"<text x="{}" y="{:.1}" text-anchor="end" font-size="12" fill="#d55e00">target {} px</text>"##,
-        W - RIGHT - 4.0,
-        ty - 4.0,
-        sig(target)
-    );
+    if let Some(target) = target {
+        let ty = TOP + PANEL * (1.0 - target / etop);
+        limit(&mut s, "target", ty, &format!("target {} px", sig(target)));
+    }
     panel(
         &mut s,
         &texels,
@@ -110,6 +107,10 @@ pub fn svg(points: &[Point], target: f64, title: &str) -> String {
         "texels (M)",
         "#009e73",
     );
+    if let Some(b) = budget_m {
+        let by = TOP + PANEL + GAP + PANEL * (1.0 - b / ttop);
+        limit(&mut s, "budget", by, &format!("budget {} M texels", sig(b)));
+    }
     let base = TOP + 2.0 * PANEL + GAP;
     for (i, anchor) in [(0, "start"), (n - 1, "end")] {
         let _ = writeln!(
@@ -127,6 +128,22 @@ pub fn svg(points: &[Point], target: f64, title: &str) -> String {
     );
     s.push_str("</svg>\n");
     s
+}
+
+/// A dashed limit line of class `class` across a panel at height `y`, labelled `label`.
+fn limit(s: &mut String, class: &str, y: f64, label: &str) {
+    let _ = writeln!(
+        s,
+        r##"<line class="{class}" x1="{LEFT}" x2="{}" y1="{y:.2}" y2="{y:.2}" stroke="#d55e00" stroke-dasharray="6 4"/>"##,
+        W - RIGHT
+    );
+    let _ = writeln!(
+        s,
+        r##"<text x="{}" y="{:.1}" text-anchor="end" font-size="12" fill="#d55e00">{}</text>"##,
+        W - RIGHT - 4.0,
+        y - 4.0,
+        escape(label)
+    );
 }
 
 fn escape(t: &str) -> String {

@@ -535,6 +535,13 @@ impl Controller {
     fn build_kept(&mut self, input: &FrameInput<'_>, setup: Setup) -> Result<f64> {
         let max_maps = self.options.max_maps;
         let res = setup.resolution;
+        // With a resolution per map, each slot's (the rest of `each` is 0).
+        let n = setup.each.iter().take_while(|&&r| r > 0).count();
+        let each = FrameInput {
+            map_resolutions: (n > 0).then(|| &setup.each[..n]),
+            ..*input
+        };
+        let input = &each;
         let FrameScheme::Cascades {
             splits: CascadeSplits::EqualError { k },
             rule,

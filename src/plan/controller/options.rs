@@ -1,7 +1,7 @@
 //! What the controller is asked for ([`ControllerOptions`]) and the checks of it.
 
 use crate::error::{fmt_num, Error, Result};
-use crate::frame::{CascadeSplits, FrameScheme};
+use crate::frame::FrameScheme;
 use crate::maps::atlas::MAX_ATLAS_ENTRIES;
 use crate::plan::allocate::Rounding;
 
@@ -25,8 +25,8 @@ pub struct ControllerOptions {
     /// Every map of a set-up shares one resolution (`true`, the default: Bevy's and three.js's
     /// one shadow-map size), or each map has its own ([`FrameInput::map_resolutions`](crate::frame::FrameInput::map_resolutions):
     /// separate textures or an atlas), chosen by its own error as
-    /// [`allocate`](crate::plan::allocate) does. Equal-error splits are not candidates then
-    /// (their planes equalise the errors at one resolution; a resolution per map does that).
+    /// [`allocate`](crate::plan::allocate) does (equal-error planes are placed at one
+    /// resolution, then each map sized).
     pub shared_resolution: bool,
     /// The largest resolution allowed, texels a side (an engine's texture limit); allowed by
     /// `rounding` itself.
@@ -112,7 +112,7 @@ impl ControllerOptions {
             Rounding::PowerOfTwo => 1 << most.ilog2(),
             Rounding::Multiple(m) => most / u64::from(m) * u64::from(m),
         };
-        u32::try_from(r).ok().filter(|&r| r > 0)
+        u32::try_from(r).ok().filter(|&r| r >= 3)
     }
 
     pub(crate) fn check(&self) -> Result<()> {
@@ -150,18 +150,19 @@ impl ControllerOptions {
             ));
         }
         let r = self.max_resolution;
-        if r == 0 || self.rounding.at_least(f64::from(r)) != Some(u64::from(r)) {
+        if r < 3 || self.rounding.at_least(f64::from(r)) != Some(u64::from(r)) {
             return Err(Error::invalid(
                 "max_resolution",
                 format!(
-                    "must be a resolution that rounding {:?} allows (got {r})",
+                    "must be a resolution of at least 3 texels (a map's least) that rounding \
+                     {:?} allows (got {r})",
                     self.rounding
                 ),
             ));
         }
         if let Some(b) = self.max_texels {
             if self.cap_for(1).is_none() {
-                let least = self.rounding.at_least(1.0).unwrap_or(1).pow(2);
+                let least = self.rounding.at_least(3.0).unwrap_or(3).pow(2);
                 return Err(Error::invalid(
                     "max_texels",
                     format!(
@@ -178,14 +179,6 @@ impl ControllerOptions {
                     "candidates",
                     "must hold at least one scheme: give None for every candidate, or a part \
                      of plan::candidates(input)",
-                ));
-            }
-            if !self.shared_resolution && list.iter().any(equal_error) {
-                return Err(Error::invalid(
-                    "candidates",
-                    "must not hold equal-error splits with shared_resolution false: their planes \
-                     equalise the errors at one resolution, which a resolution per map does \
-                     already; remove them, or share one resolution",
                 ));
             }
             if list.iter().any(|s| matches!(s, FrameScheme::Clipmap(_))) {
@@ -222,15 +215,4 @@ impl ControllerOptions {
         positive("cut_turn", self.cut_turn, std::f64::consts::PI)?;
         positive("cut_light", self.cut_light, std::f64::consts::PI)
     }
-}
-
-/// Whether `s` places its planes by equal errors (at one resolution).
-pub(crate) fn equal_error(s: &FrameScheme<'_>) -> bool {
-    matches!(
-        s,
-        FrameScheme::Cascades {
-            splits: CascadeSplits::EqualError { .. },
-            ..
-        } | FrameScheme::Stable(CascadeSplits::EqualError { .. })
-    )
 }

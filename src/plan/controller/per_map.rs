@@ -5,8 +5,8 @@
 //! maps that are not snapped to their texels, and changes by a fraction of a texel for stable
 //! cascades: each frame's measurement at the kept resolutions says what every map needs.
 //!
-//! - **On a cut**: every allowed candidate (no equal-error splits) is built once with every map
-//!   at `max_resolution`; for a target `t` each map gets the least allowed resolution that
+//! - **On a cut**: every allowed candidate is built once with every map at `max_resolution`
+//!   (equal-error planes placed there, and kept between cuts as with a shared resolution); for a target `t` each map gets the least allowed resolution that
 //!   meets it, and the set-up is the one with the fewest texels (ties: the least error, then the
 //!   first in the list) whose resolutions are within `max_resolution` and `max_texels`. Where
 //!   none is (or without a target), the least largest error that fits ([`allocate`] within the
@@ -17,10 +17,10 @@
 //!   map counted on its own). Without a target, the budget's allocation is switched to when it
 //!   has had `margin` times less error for `patience` frames.
 //! - **Neighbours** as with a shared resolution (one cascade more or fewer, the last search's
-//!   cheapest): built with every map at `max_resolution`, compared by the texels their own
+//!   cheapest): built with every map at one resolution, compared by the texels their own
 //!   resolutions would take.
 
-use super::options::{equal_error, ControllerOptions};
+use super::options::ControllerOptions;
 use super::{build, nothing_to_plan, over_budget, Controller, Setup, MAX_NEIGHBOURS};
 use crate::analytic::partition::MAX_PARTITIONS;
 use crate::error::Result;
@@ -105,26 +105,6 @@ fn least(
     sized(o, p, e * (1.0 + 1e-12), out)
 }
 
-/// `scheme` built into `out` with slot i at `each[i]`; its largest measured error.
-fn build_each(
-    input: &FrameInput<'_>,
-    scheme: FrameScheme<'static>,
-    each: &[u32],
-    max_maps: usize,
-    out: &mut Frame,
-) -> Result<f64> {
-    let at = FrameInput {
-        map_resolutions: Some(each),
-        ..*input
-    };
-    build(&at, scheme, each[0], max_maps, out)
-}
-
-/// The number of slots `each` gives (its entries before the first 0).
-fn slots(each: &[u32; MAX_PARTITIONS]) -> usize {
-    each.iter().position(|&r| r == 0).unwrap_or(MAX_PARTITIONS)
-}
-
 fn setup(scheme: FrameScheme<'static>, each: [u32; MAX_PARTITIONS]) -> Setup {
     Setup {
         scheme,
@@ -140,7 +120,7 @@ impl Controller {
             Some(l) => l.clone(),
             None => candidates(input)
                 .into_iter()
-                .filter(|s| !matches!(s, FrameScheme::Clipmap(_)) && !equal_error(s))
+                .filter(|s| !matches!(s, FrameScheme::Clipmap(_)))
                 .collect(),
         };
         self.missed = 0;
@@ -205,13 +185,7 @@ impl Controller {
         let Some(&(_, i, each)) = errors.first() else {
             return Err(first_err.unwrap_or_else(nothing_to_plan));
         };
-        let err = build_each(
-            input,
-            list[i],
-            &each[..slots(&each)],
-            self.options.max_maps,
-            &mut self.frame,
-        )?;
+        let err = self.build_kept(input, setup(list[i], each))?;
         self.least = true;
         Ok((setup(list[i], each), err))
     }
@@ -230,14 +204,7 @@ impl Controller {
             return Ok(None);
         };
         for _ in 0..4 {
-            let n = slots(&each);
-            let Ok(err) = build_each(
-                input,
-                scheme,
-                &each[..n],
-                self.options.max_maps,
-                &mut self.frame,
-            ) else {
+            let Ok(err) = self.build_kept(input, setup(scheme, each)) else {
                 return Ok(None);
             };
             if err <= t {
@@ -274,15 +241,7 @@ impl Controller {
         input: &FrameInput<'_>,
         kept: Setup,
     ) -> Result<(Setup, f64)> {
-        let n = slots(&kept.each);
-        let max_maps = self.options.max_maps;
-        let Ok(err) = build_each(
-            input,
-            kept.scheme,
-            &kept.each[..n],
-            max_maps,
-            &mut self.frame,
-        ) else {
+        let Ok(err) = self.build_kept(input, setup(kept.scheme, kept.each)) else {
             return self.search_each(input);
         };
         products(&self.frame, &mut self.products);
@@ -302,7 +261,7 @@ impl Controller {
                 }
                 let up = fits.then(|| texels_of(&self.products, &each));
                 let up = up.filter(|&u| u <= budget(&self.options));
-                if let Some(f) = self.on_miss_each(input, t, up)? {
+                if let Some(f) = self.on_miss_each(input, kept, t, up)? {
                     self.least = false;
                     return Ok(f);
                 }
@@ -316,13 +275,7 @@ impl Controller {
                 if !self.least || self.missed >= self.options.retry_every {
                     return self.search_each(input);
                 }
-                let e = build_each(
-                    input,
-                    kept.scheme,
-                    &kept.each[..n],
-                    max_maps,
-                    &mut self.frame,
-                )?;
+                let e = self.build_kept(input, setup(kept.scheme, kept.each))?;
                 return self.neighbour_each(input, kept, e);
             }
             Some(t) => {
@@ -354,13 +307,7 @@ impl Controller {
                     }
                     // The smaller resolutions missed after all: keep the set-up.
                     self.down = [0; MAX_PARTITIONS];
-                    let e = build_each(
-                        input,
-                        kept.scheme,
-                        &kept.each[..n],
-                        max_maps,
-                        &mut self.frame,
-                    )?;
+                    let e = self.build_kept(input, setup(kept.scheme, kept.each))?;
                     return self.neighbour_each(input, kept, e);
                 }
             }
@@ -372,23 +319,10 @@ impl Controller {
                         self.down[0] = self.down[0].saturating_add(1);
                         if self.down[0] > self.options.patience {
                             self.down[0] = 0;
-                            let m = slots(&each);
-                            if let Ok(e) = build_each(
-                                input,
-                                kept.scheme,
-                                &each[..m],
-                                max_maps,
-                                &mut self.frame,
-                            ) {
+                            if let Ok(e) = self.build_kept(input, setup(kept.scheme, each)) {
                                 return Ok((setup(kept.scheme, each), e));
                             }
-                            let e = build_each(
-                                input,
-                                kept.scheme,
-                                &kept.each[..n],
-                                max_maps,
-                                &mut self.frame,
-                            )?;
+                            let e = self.build_kept(input, setup(kept.scheme, kept.each))?;
                             return Ok((kept, e));
                         }
                     }
@@ -399,18 +333,19 @@ impl Controller {
         self.neighbour_each(input, kept, err)
     }
 
-    /// `scheme` built into the scratch frame with every map at `max_resolution`; the
-    /// resolutions its maps need into `out` and `(texels, error)`: for `margin × max_error`
-    /// (`None` where they do not fit), or without a target the least error within the budget.
+    /// `scheme` built into the scratch frame with every map at one resolution (an equal-error
+    /// one with the kept planes resampled, as with a shared resolution); the resolutions its
+    /// maps need into `out` and `(texels, error)`: for `margin × max_error` (`None` where they
+    /// do not fit), or without a target the least error within the budget.
     fn probe_each(
         &mut self,
         input: &FrameInput<'_>,
         scheme: FrameScheme<'static>,
+        kept: Setup,
         e: Option<f64>,
         out: &mut [u32; MAX_PARTITIONS],
     ) -> Option<(u64, f64)> {
-        let top = self.options.max_resolution;
-        build(input, scheme, top, self.options.max_maps, &mut self.scratch).ok()?;
+        self.probe(input, scheme, kept)?;
         products(&self.scratch, &mut self.products);
         match e {
             Some(e) => sized(&self.options, &self.products, e, out),
@@ -424,6 +359,7 @@ impl Controller {
     fn on_miss_each(
         &mut self,
         input: &FrameInput<'_>,
+        kept: Setup,
         t: f64,
         up: Option<u64>,
     ) -> Result<Option<(Setup, f64)>> {
@@ -435,16 +371,24 @@ impl Controller {
         let mut each = [0; MAX_PARTITIONS];
         for i in 0..self.near.len() {
             let scheme = self.near[i].0;
-            if let Some((texels, _)) = self.probe_each(input, scheme, Some(margin * t), &mut each) {
+            if let Some((texels, _)) =
+                self.probe_each(input, scheme, kept, Some(margin * t), &mut each)
+            {
                 if up.is_none_or(|u| texels < u) && best.is_none_or(|b| texels < b.0) {
                     best = Some((texels, scheme, each));
                 }
             }
         }
-        match best {
-            Some((_, scheme, each)) => self.fit_each(input, scheme, each),
-            None => Ok(None),
+        let Some((_, scheme, each)) = best else {
+            return Ok(None);
+        };
+        // The kept planes are not the neighbour's: its own are searched.
+        let kept_fractions = std::mem::take(&mut self.fractions);
+        let f = self.fit_each(input, scheme, each)?;
+        if f.is_none() {
+            self.fractions = kept_fractions;
         }
+        Ok(f)
     }
 
     /// Every `neighbour_every` frames, one neighbour measured and switched to as the module
@@ -473,7 +417,7 @@ impl Controller {
         let margin = self.options.margin;
         let target = self.options.max_error;
         let mut each = [0; MAX_PARTITIONS];
-        let probe = self.probe_each(input, scheme, target.map(|t| margin * t), &mut each);
+        let probe = self.probe_each(input, scheme, kept, target.map(|t| margin * t), &mut each);
         let (better, now) = match (probe, target) {
             (Some((texels, _)), Some(t)) if !(self.least && err > t) => {
                 (texels < kept_texels, false)
@@ -489,20 +433,13 @@ impl Controller {
             return Ok((kept, err));
         }
         self.near[i].1 = 0;
+        let kept_fractions = std::mem::take(&mut self.fractions);
         let switched = match target {
             Some(_) => self.fit_each(input, scheme, each)?,
-            None => {
-                let m = slots(&each);
-                build_each(
-                    input,
-                    scheme,
-                    &each[..m],
-                    self.options.max_maps,
-                    &mut self.frame,
-                )
+            None => self
+                .build_kept(input, setup(scheme, each))
                 .ok()
-                .map(|e| (setup(scheme, each), e))
-            }
+                .map(|e| (setup(scheme, each), e)),
         };
         if let Some((s, e)) = switched {
             products(&self.frame, &mut self.products);
@@ -517,14 +454,8 @@ impl Controller {
                 return Ok((s, e));
             }
         }
-        let n = slots(&kept.each);
-        let e = build_each(
-            input,
-            kept.scheme,
-            &kept.each[..n],
-            self.options.max_maps,
-            &mut self.frame,
-        )?;
+        self.fractions = kept_fractions;
+        let e = self.build_kept(input, setup(kept.scheme, kept.each))?;
         Ok((kept, e))
     }
 }
