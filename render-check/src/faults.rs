@@ -68,6 +68,15 @@ pub enum Fault {
     SplitsPast,
     /// The reversed-depth comparison of the crate's WGSL module made strict (`>` for `>=`).
     ReversedStrict,
+    /// The records' depth bias (constant and slope-scaled) and normal offset halved.
+    BiasHalved,
+    /// The PCF kernel of the crate's `sa_visibility` reaching 2r texels for a radius r (the taps
+    /// −2r..2r; the bias still for r).
+    PcfRadiusDoubled,
+    /// The normal offset twice too large, in the crate's Rust and WGSL alike: the records'
+    /// `normal_offset` and the per-point offset (`sa_local_normal_offset`, and the `f64`
+    /// `normal_offset_at` render-check models the lookup with) doubled.
+    NormalOffsetDoubled,
 }
 
 /// How far from the world origin a set-up's camera must be for [`Fault::PlainWorld`] to apply
@@ -97,7 +106,7 @@ const GL_TO_01: DMat4 = DMat4::from_cols(
 
 impl Fault {
     /// Every fault, in the order of the self-test.
-    pub const ALL: [Fault; 18] = [
+    pub const ALL: [Fault; 21] = [
         Fault::MatrixScale,
         Fault::DepthShift,
         Fault::NPrimeDouble,
@@ -116,6 +125,9 @@ impl Fault {
         Fault::OriginF32,
         Fault::SplitsPast,
         Fault::ReversedStrict,
+        Fault::BiasHalved,
+        Fault::PcfRadiusDoubled,
+        Fault::NormalOffsetDoubled,
     ];
 
     /// The name `--fault` takes.
@@ -139,6 +151,9 @@ impl Fault {
             Fault::OriginF32 => "origin-f32",
             Fault::SplitsPast => "splits-past",
             Fault::ReversedStrict => "reversed-strict",
+            Fault::BiasHalved => "bias-halved",
+            Fault::PcfRadiusDoubled => "pcf-radius-x2",
+            Fault::NormalOffsetDoubled => "normal-offset-x2",
         }
     }
 
@@ -163,6 +178,9 @@ impl Fault {
             Fault::OriginF32 => "the upload origin rounded through f32",
             Fault::SplitsPast => "every split but the last 3 % past its map",
             Fault::ReversedStrict => "the reversed-depth comparison strict (> for >=)",
+            Fault::BiasHalved => "the records' depth bias and normal offset halved",
+            Fault::PcfRadiusDoubled => "the PCF kernel's taps reaching 2r for a radius r",
+            Fault::NormalOffsetDoubled => "the normal offset (record and per point) doubled",
         }
     }
 
@@ -224,23 +242,73 @@ impl Fault {
         self != Fault::ReversedStrict || clip_depth == ClipDepth::Reversed
     }
 
+    /// Whether the fault changes the crate's WGSL module (a case under it runs on its own
+    /// device, [`Fault::shader_source`]).
+    pub fn changes_shader(self) -> bool {
+        matches!(
+            self,
+            Fault::ReversedStrict | Fault::PcfRadiusDoubled | Fault::NormalOffsetDoubled
+        )
+    }
+
+    /// Whether only the shader-path checks ([`crate::paths`]) use what the fault changes (the
+    /// self-test runs it only on their cases).
+    pub fn paths_only(self) -> bool {
+        matches!(
+            self,
+            Fault::BiasHalved | Fault::PcfRadiusDoubled | Fault::NormalOffsetDoubled
+        )
+    }
+
     /// The shaders' source under `fault`: [`crate::gpu::shader_source`], with the crate's
-    /// reversed-depth comparison made strict for [`Fault::ReversedStrict`].
+    /// reversed-depth comparison made strict for [`Fault::ReversedStrict`], the PCF kernel's
+    /// reach doubled for [`Fault::PcfRadiusDoubled`], the per-point normal offset doubled for
+    /// [`Fault::NormalOffsetDoubled`].
     ///
     /// # Errors
-    /// The comparison not found in the crate's module (the fault could not be applied).
+    /// The text to change not found in the crate's module (the fault could not be applied).
     pub fn shader_source(fault: Option<Fault>) -> Result<String, String> {
-        let src = crate::gpu::shader_source();
-        if fault != Some(Fault::ReversedStrict) {
-            return Ok(src);
-        }
-        const GE: &str = "return d >= stored;";
-        if !src.contains(GE) {
+        let module = shadow_aliasing::frame::SHADOW_WGSL;
+        let (from, to) = match fault {
+            Some(Fault::ReversedStrict) => ("return d >= stored;", "return d > stored;"),
+            Some(Fault::PcfRadiusDoubled) => ("let k = max(r, 0);", "let k = 2 * max(r, 0);"),
+            // sa_local_normal_offset's result (its only `return o;`).
+            Some(Fault::NormalOffsetDoubled) => ("    return o;\n}", "    return 2.0 * o;\n}"),
+            _ => return Ok(crate::gpu::shader_source()),
+        };
+        if module.matches(from).count() != 1 {
             return Err(format!(
-                "reversed-strict: the crate's WGSL module has no `{GE}` to make strict"
+                "{}: the crate's WGSL module has not exactly one `{from}` to change",
+                fault.map_or("", |f| f.name())
             ));
         }
-        Ok(src.replacen(GE, "return d > stored;", 1))
+        Ok(crate::gpu::shader_source_with(
+            &module.replacen(from, to, 1),
+        ))
+    }
+
+    /// The bias values of a record under `fault`: depth bias and normal offset halved
+    /// ([`Fault::BiasHalved`]), the normal offset doubled ([`Fault::NormalOffsetDoubled`]).
+    pub fn record_bias(fault: Option<Fault>, r: &mut shadow_aliasing::frame::GpuShadowMap) {
+        match fault {
+            Some(Fault::BiasHalved) => {
+                r.constant_depth *= 0.5;
+                r.slope_scaled_depth *= 0.5;
+                r.normal_offset *= 0.5;
+            }
+            Some(Fault::NormalOffsetDoubled) => r.normal_offset *= 2.0,
+            _ => {}
+        }
+    }
+
+    /// The factor of the per-point normal offset (`normal_offset_at`, `sa_local_normal_offset`)
+    /// under `fault`: 2 for [`Fault::NormalOffsetDoubled`], else 1.
+    pub fn local_offset_factor(fault: Option<Fault>) -> f64 {
+        if fault == Some(Fault::NormalOffsetDoubled) {
+            2.0
+        } else {
+            1.0
+        }
     }
 
     /// The upload origin the records are made relative to: the camera's position, rounded
@@ -463,7 +531,7 @@ pub fn self_test(gpu: &Gpu, log: impl Fn(&str)) -> Result<Vec<SelfTestRow>, Stri
         let t = std::time::Instant::now();
         // A fault in the shaders' source runs on its own device.
         let own;
-        let gpu = if fault == Some(Fault::ReversedStrict) {
+        let gpu = if fault.is_some_and(Fault::changes_shader) {
             own = Gpu::with_source(&Fault::shader_source(fault)?)?;
             &own
         } else {
@@ -476,6 +544,7 @@ pub fn self_test(gpu: &Gpu, log: impl Fn(&str)) -> Result<Vec<SelfTestRow>, Stri
                     !f.applies_to(scheme)
                         || !f.applies_to_scene(&setup.scene)
                         || !f.applies_to_depth(clip_depth)
+                        || (f.paths_only() && !crate::paths::applies(&setup.name, scheme))
                 }) {
                     continue;
                 }

@@ -119,6 +119,21 @@ impl FrameInput<'_> {
     }
 }
 
+/// One camera pass of [`Gpu::render_paths`] over the same shadow maps.
+#[derive(Clone, Copy)]
+pub struct PathPass<'a> {
+    /// The records looked up (one per map; their matrices the maps were drawn with).
+    pub records: &'a [GpuShadowMap],
+    /// `sa_visibility`'s bias flags (`SA_NORMAL_OFFSET` 1, `SA_DEPTH_BIAS` 2,
+    /// `SA_LOCAL_NORMAL_OFFSET` 4).
+    pub flags: u32,
+    /// The PCF radius r passed to `sa_visibility` ((2r + 1)² taps).
+    pub radius: u32,
+    /// Whether the pass draws the error lens (`FrameOutput::lens`, `overlay`); without it they
+    /// hold the no-map values.
+    pub lens: bool,
+}
+
 /// What the camera pass wrote.
 pub struct FrameOutput {
     /// Per pixel (row-major from the top): s·res, t·res, map (the number of maps: none), the
@@ -170,7 +185,12 @@ struct Vertex {
 /// The shaders' source: the crate's WGSL module ([`SHADOW_WGSL`]) followed by render-check's
 /// own passes (`shaders.wgsl`), which select and look up the maps with the module's functions.
 pub fn shader_source() -> String {
-    format!("{SHADOW_WGSL}\n{}", include_str!("shaders.wgsl"))
+    shader_source_with(SHADOW_WGSL)
+}
+
+/// [`shader_source`] with `module` in place of the crate's module (a fault changes it).
+pub fn shader_source_with(module: &str) -> String {
+    format!("{module}\n{}", include_str!("shaders.wgsl"))
 }
 
 /// Slope-scaled depth bias of the second-depth shadow pass (in units of the depth slope per
@@ -181,10 +201,10 @@ pub const SLOPE_BIAS: f32 = 0.5;
 pub const CONSTANT_BIAS: i32 = 16;
 
 /// The bias flag of `sa_visibility` (the crate's module) for a lookup.
-fn bias_flags(lookup: Lookup) -> f32 {
+fn bias_flags(lookup: Lookup) -> u32 {
     match lookup {
-        Lookup::SecondDepth => 0.0,
-        Lookup::FirstSurface => 4.0, // SA_LOCAL_NORMAL_OFFSET
+        Lookup::SecondDepth => 0,
+        Lookup::FirstSurface => 4, // SA_LOCAL_NORMAL_OFFSET
     }
 }
 
@@ -620,6 +640,77 @@ impl Gpu {
         let vb = self.vertices(f);
         let mut enc = self.device.create_command_encoder(&Default::default());
         let maps = self.shadow_maps(&mut enc, &vb, f);
+        self.queue.submit([enc.finish()]);
+        self.camera_pass(
+            f,
+            &vb,
+            &maps,
+            &PathPass {
+                records: f.maps,
+                flags: bias_flags(f.lookup),
+                radius: 0,
+                lens: true,
+            },
+        )
+    }
+
+    /// The shadow maps once, read back, and one camera pass per entry of `passes`, each with its
+    /// own records, `sa_visibility` flags and PCF radius ([`crate::paths`]).
+    ///
+    /// # Errors
+    /// A GPU error; nothing to render; a pass whose records are not one per map.
+    pub fn render_paths(
+        &self,
+        f: &FrameInput,
+        passes: &[PathPass],
+    ) -> Result<(Vec<f32>, Vec<FrameOutput>), String> {
+        if f.maps.is_empty() || f.positions.is_empty() {
+            return Err("nothing to render (no map or no triangle)".into());
+        }
+        if passes.iter().any(|p| p.records.len() != f.maps.len()) {
+            return Err("a shader-path pass needs one record per map".into());
+        }
+        self.scoped(|| {
+            let vb = self.vertices(f);
+            let mut enc = self.device.create_command_encoder(&Default::default());
+            let maps = self.shadow_maps(&mut enc, &vb, f);
+            let layers = f.maps.len() as u32;
+            let (buf, row) = self.copy_out(
+                &mut enc,
+                &maps,
+                f.res,
+                f.res,
+                layers,
+                4,
+                wgpu::TextureAspect::DepthOnly,
+            );
+            self.queue.submit([enc.finish()]);
+            let bytes = self.read(&buf, row, f.res, f.res, layers, 4)?;
+            let depth: Vec<f32> = bytemuck::cast_slice(&bytes).to_vec();
+            let outs = passes
+                .iter()
+                .map(|p| self.camera_pass(f, &vb, &maps, p))
+                .collect::<Result<Vec<_>, String>>()?;
+            Ok((depth, outs))
+        })
+    }
+
+    /// The camera pass over the rendered `maps` with the pass's records, `sa_visibility` flags and
+    /// PCF radius, read back.
+    fn camera_pass(
+        &self,
+        f: &FrameInput,
+        vb: &wgpu::Buffer,
+        maps: &wgpu::Texture,
+        pass: &PathPass,
+    ) -> Result<FrameOutput, String> {
+        let PathPass {
+            records,
+            flags,
+            radius,
+            lens,
+        } = *pass;
+        let mut enc = self.device.create_command_encoder(&Default::default());
         let maps_view = maps.create_view(&wgpu::TextureViewDescriptor {
             dimension: Some(wgpu::TextureViewDimension::D2Array),
             ..Default::default()
@@ -633,7 +724,7 @@ impl Gpu {
             misc: [
                 f.res as f32,
                 f.maps.len() as f32,
-                bias_flags(f.lookup),
+                flags as f32,
                 // sa_error_lens's focal_pixels: H / (2 tan θ).
                 (f64::from(f.height) / (2.0 * f.frustum[2])) as f32,
             ],
@@ -644,9 +735,14 @@ impl Gpu {
                 f.clipmap[2] as f32,
                 0.0,
             ],
-            faults: [f32::from(u8::from(f.one_map_in_band)), 0.0, 0.0, 0.0],
+            faults: [
+                f32::from(u8::from(f.one_map_in_band)),
+                radius as f32,
+                f32::from(u8::from(!lens)),
+                0.0,
+            ],
         };
-        let records: Vec<u8> = f.maps.iter().flat_map(|m| m.to_bytes()).collect();
+        let records: Vec<u8> = records.iter().flat_map(|m| m.to_bytes()).collect();
         let gb = self.buffer(bytemuck::bytes_of(&globals), wgpu::BufferUsages::UNIFORM);
         let pb = self.buffer(&records, wgpu::BufferUsages::STORAGE);
         let bg = self.device.create_bind_group(&wgpu::BindGroupDescriptor {

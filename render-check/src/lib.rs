@@ -11,6 +11,7 @@ pub mod gpu;
 pub mod images;
 pub mod lens;
 pub mod papers;
+pub mod paths;
 pub mod perspective;
 pub mod ratios;
 pub mod run;

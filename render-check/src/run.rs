@@ -34,6 +34,8 @@ pub struct CaseSummary {
     pub shimmer_points: Option<usize>,
     /// The records' clip-depth convention: "zero_to_one" or "reversed".
     pub clip_depth: &'static str,
+    /// The shader paths checked ([`crate::paths`]; `None` outside [`crate::paths::CASES`]).
+    pub paths: Option<Vec<crate::paths::PathSummary>>,
 }
 
 /// summary.json.
@@ -269,6 +271,7 @@ pub fn run_case(
             } else {
                 "zero_to_one"
             },
+            paths: None,
         },
         color: out.color,
         overlay: out.overlay,
@@ -422,8 +425,9 @@ fn edge_points(
     Ok(out_pts.into_iter().step_by(stride).collect())
 }
 
-/// [`run_case`], and for the cascade schemes the shimmer test ([`shimmer`]) with its result in
-/// the summary: everything `render-check` measures for one case.
+/// [`run_case`], for the cascade schemes the shimmer test ([`shimmer`]), and in the cases of
+/// [`crate::paths::CASES`] the shader paths ([`crate::paths::check`]), with their results in the
+/// summary: everything `render-check` measures for one case.
 ///
 /// # Errors
 /// As [`run_case`] and [`shimmer`].
@@ -440,6 +444,19 @@ pub fn run_full(
             .map_err(|e| format!("{setup}/{}: {e}", scheme.name()))?;
         r.summary.shimmer_changed_fraction = Some(s.changed_fraction);
         r.summary.shimmer_points = Some(s.points);
+    }
+    if crate::paths::applies(setup, scheme) {
+        let t = std::time::Instant::now();
+        let p = crate::paths::check(gpu, scene, scheme, sizes)
+            .map_err(|e| format!("{setup}/{}: {e}", scheme.name()))?;
+        if std::env::var_os("RENDER_CHECK_DEBUG").is_some() {
+            eprintln!(
+                "{setup}/{}: shader paths in {:.2} s",
+                scheme.name(),
+                t.elapsed().as_secs_f64()
+            );
+        }
+        r.summary.paths = Some(p);
     }
     Ok(r)
 }

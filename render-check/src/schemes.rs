@@ -112,6 +112,11 @@ pub struct Map {
     /// convention; its matrix, split and face faulted where a fault changes them): the shader's
     /// map, selected and looked up by the crate's WGSL module.
     pub record: GpuShadowMap,
+    /// The record with the bias values for a PCF kernel of radius 1 (`FrameMap::
+    /// gpu_relative_with_pcf`, or `gpu_with_pcf` on the plain path), its matrix, split, band
+    /// and face the uploaded record's (faults included): the shader-path checks' r = 1 pass
+    /// ([`crate::paths`]).
+    pub record_pcf1: GpuShadowMap,
     /// `FrameMap::casters_volume`: what culling draws into the map.
     pub casters: CullVolume,
     /// `FrameMap::receivers_volume` (the cull-tight fault cuts the casters' volume by it).
@@ -440,6 +445,12 @@ pub fn build(
             } else {
                 m.gpu_relative(Fault::upload_origin(fault, origin), clip_depth)
             };
+            let pcf1 = if plain {
+                m.gpu_with_pcf(clip_depth, 1.0)
+            } else {
+                m.gpu_relative_with_pcf(Fault::upload_origin(fault, origin), clip_depth, 1.0)
+            }
+            .map_err(e)?;
             let blend = Fault::blend(fault, m.blend);
             record.blend = [blend.0 as f32, blend.1 as f32];
             let (built, gpu) = match fault.and_then(|x| x.matrix(scheme_, m, clean, view)) {
@@ -451,10 +462,11 @@ pub fn build(
                 }
                 None => (clean, m.shadow.with_clip_depth(ClipDepth::ZeroToOne)),
             };
-            Map {
+            Ok(Map {
                 built,
                 gpu,
                 record,
+                record_pcf1: pcf1,
                 casters: *m.casters_volume(),
                 receivers: *m.receivers_volume(),
                 region: m.face.map_or(-1, face_id),
@@ -468,15 +480,25 @@ pub fn build(
                     texel_world: m.texel_world,
                     blend,
                 },
-            }
+            })
         })
-        .collect();
+        .collect::<Result<_, String>>()?;
     if Fault::selection(fault, &mut maps) {
         // The shader selects by the record: give it the faulted ranges and faces.
         for m in &mut maps {
             m.record.split = [m.near as f32, m.far as f32];
             m.record.face = u32::try_from(m.region).unwrap_or(GpuShadowMap::NO_FACE);
         }
+    }
+    for m in &mut maps {
+        // The r = 1 record: the uploaded record's matrix, ranges and face, its own bias values.
+        let r = &mut m.record_pcf1;
+        r.world_to_clip = m.record.world_to_clip;
+        r.split = m.record.split;
+        r.blend = m.record.blend;
+        r.face = m.record.face;
+        Fault::record_bias(fault, &mut m.record);
+        Fault::record_bias(fault, r);
     }
     let select = match scheme_ {
         Scheme::Cascades | Scheme::StableCascades | Scheme::BlendedCascades => Select::Depth,

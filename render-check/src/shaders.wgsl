@@ -17,15 +17,18 @@ struct Globals {
     light_eye: vec4<f32>,
     // near, far, tan(half fov y), tan(half fov y) * aspect.
     frustum: vec4<f32>,
-    // x: map resolution, y: number of maps, z: sa_visibility's bias flags (0: second-depth maps,
-    // SA_NORMAL_OFFSET: first-surface maps with the crate's normal offset), w: sa_error_lens's
+    // x: map resolution, y: number of maps, z: sa_visibility's bias flags (0: second-depth maps;
+    // first-surface maps: SA_LOCAL_NORMAL_OFFSET, and in the shader-path passes any of the
+    // module's flags), w: sa_error_lens's
     // focal_pixels (image height / (2 tan(half vertical field of view))).
     misc: vec4<f32>,
     // xyz: added to a position before a map's matrix.
     offset: vec4<f32>,
     // Clipmaps (mode 3): sa_clipmap_level's offset, the first and the last map's level.
     clipmap: vec4<f32>,
-    // x: 1 for the fault blend-ignored (a cascade shaded by its first map alone in the band).
+    // x: 1 for the fault blend-ignored (a cascade shaded by its first map alone in the band);
+    // y: sa_visibility's PCF radius r ((2r + 1)^2 taps); z: 1 to skip the error lens (the
+    // shader-path passes read only the texel target).
     faults: vec4<f32>,
 };
 
@@ -151,24 +154,25 @@ fn fs_camera(v: VOut) -> FOut {
     var v2 = vis;
     var st = vec2<f32>(0.0);
     var depth = -1e30;
+    let r = i32(g.faults.y);
     if (part < count) {
         let q = sa_project(sa_map(part), p);
         st = q.xy;
         depth = select(-1e30, q.z, q.w > 0.0);
         if (vis > 0.0) {
-            v1 = sa_visibility(part, p, n, l, 0, u32(g.misc.z));
+            v1 = sa_visibility(part, p, n, l, r, u32(g.misc.z));
             v2 = v1;
             vis = v1;
             if (mode == 1) {
-                v2 = sa_visibility(pick.second, p, n, l, 0, u32(g.misc.z));
+                v2 = sa_visibility(pick.second, p, n, l, r, u32(g.misc.z));
                 if (g.faults.x < 0.5) {
-                    vis = sa_cascaded_visibility(view_depth, p, n, l, 0, u32(g.misc.z));
+                    vis = sa_cascaded_visibility(view_depth, p, n, l, r, u32(g.misc.z));
                 }
             }
         }
     }
     var lens = vec2<f32>(-2.0);
-    if (part < count) {
+    if (part < count && g.faults.z < 0.5) {
         // The camera in the records' space (the upload origin is the camera's position) and its
         // unit view axis (the eye's -z in world axes: minus the third row of rel_to_eye).
         let eye = g.offset.xyz;

@@ -9,12 +9,22 @@ use glam::{DMat4, DVec3};
 use shadow_aliasing::frame::bias::normal_offset_at;
 use shadow_aliasing::maps::ClipDepth;
 
-/// The contact band, in shadow-map texels: a pixel in a cast shadow is left out of the shadow
-/// comparison when, along the light ray the shader reads, the caster's face lies within this
-/// many texels' depth slope of it (the face's depth change over one texel step along s or t,
-/// the larger; [`crate::gpu::SLOPE_BIAS`] is half of it). There the depth bias lets light leak
-/// onto a receiver behind a caster standing on it.
-pub const CONTACT_TEXELS: f64 = 1.0;
+/// The largest depth bias the second-depth shadow pass can apply to a caster face (depth units):
+/// the rasterizer's `slope_scale · m + constant · r` (Vulkan's depth bias, as wgpu sets it:
+/// [`crate::gpu::SLOPE_BIAS`], [`crate::gpu::CONSTANT_BIAS`]), with m the face's depth slope in
+/// the map's window coordinates (`slope`: its depth steps per texel along s and t, `(|∂z/∂s|,
+/// |∂z/∂t|)`; Vulkan allows max(|∂z/∂x|, |∂z/∂y|) or their hypotenuse, the larger taken) and r
+/// the depth format's resolution at the primitive's largest depth, 2^(e − 23) for `Depth32Float`
+/// (e the exponent of a depth ≤ 1: at most 2⁻²³), plus 8 `f32` ulps at depth 1 for the stored and
+/// the receiver's depths' rounding. A pixel in a cast shadow is left out of the shadow comparison
+/// when, on the light ray the shader reads, the caster face lies within this of it in depth:
+/// there the bias lets light leak onto a receiver behind a caster standing on it (the contact
+/// band).
+pub fn rasterizer_bias(slope: (f64, f64)) -> f64 {
+    let ulp = f64::from(f32::EPSILON);
+    f64::from(crate::gpu::SLOPE_BIAS) * slope.0.hypot(slope.1)
+        + (f64::from(crate::gpu::CONSTANT_BIAS) + 8.0) * ulp
+}
 
 /// A map as the shadow test needs it: world ↔ light clip (depth [0, 1]), and for first-surface
 /// maps the normal offset of the lookup (world units; `None`: second-depth maps).
@@ -51,7 +61,9 @@ const TEXEL_TIE: f64 = 2e-3;
 ///   exact state differs from the pixel's; or
 /// - the point `r` on c's light ray at the pixel's light depth is inside a box other than the
 ///   one the pixel lies on, or its exact state differs from the pixel's, or (in shadow) the
-///   caster face the ray from `r` meets first is within [`CONTACT_TEXELS`] texels' depth slope.
+///   caster face the ray from `r` meets first lies, in depth, within the rasterizer's bias of it
+///   ([`rasterizer_bias`]: the slope term from the face's own depth slope in the map's window
+///   coordinates, and the constant).
 ///
 /// Both points lie within half a texel of the pixel along each map axis: the pixels left out
 /// are those whose texel straddles the exact boundary or a caster's foot (on average an eighth
@@ -168,12 +180,16 @@ pub(crate) fn shadow_decidable(
         // the light than its slope-scaled bias, or the stored depth passes r.
         match first_face(scene, r, light) {
             Some((e, n)) if occluded && map.normal_offset.is_none() => {
-                // One texel's step along s and t at r's light depth (world), and the face's
-                // depth change over it: (Δ·n)/(L·n) along the light.
-                let ds = inv.project_point3(DVec3::new(x + 2.0 / res, y, depth)) - r;
-                let dt = inv.project_point3(DVec3::new(x, y + 2.0 / res, depth)) - r;
-                let slope = ds.dot(n).abs().max(dt.dot(n).abs()) / n.dot(light).abs();
-                e > CONTACT_TEXELS * slope
+                // The face's depth on this texel ray and on the next ones along s and t: its
+                // depth slope per texel (a plane's depth is affine in the map position), and
+                // the depth it lies nearer the light than r.
+                let f = r - light * e;
+                let at = |a: f64, b: f64| plane_depth(wc, inv, res, a, b, f, n);
+                let (Some(d0), Some(ds), Some(dt)) = (at(a, b), at(a + 1.0, b), at(a, b + 1.0))
+                else {
+                    return false;
+                };
+                depth - d0 > rasterizer_bias(((ds - d0).abs(), (dt - d0).abs()))
             }
             _ => true,
         }
@@ -199,6 +215,29 @@ pub(crate) fn shadow_decidable(
                 .all(|&(da, db)| agrees(a + da, b + db))
         })
     })
+}
+
+/// The depth [0, 1] (of `wc`, world → clip; `inv` its inverse) of the plane through `p` with
+/// normal `n` on the texel ray through map position (`a`, `b`) (texels of a map of `res`).
+pub(crate) fn plane_depth(
+    wc: &DMat4,
+    inv: &DMat4,
+    res: f64,
+    a: f64,
+    b: f64,
+    p: DVec3,
+    n: DVec3,
+) -> Option<f64> {
+    let (x, y) = (2.0 * a / res - 1.0, 2.0 * b / res - 1.0);
+    let q0 = inv.project_point3(DVec3::new(x, y, 0.0));
+    let d = inv.project_point3(DVec3::new(x, y, 1.0)) - q0;
+    let den = d.dot(n);
+    if den.abs() <= 1e-300 || den.is_nan() || !q0.is_finite() || !d.is_finite() {
+        return None;
+    }
+    let h = *wc * (q0 + d * ((p - q0).dot(n) / den)).extend(1.0);
+    let z = h.z / h.w;
+    z.is_finite().then_some(z)
 }
 
 /// The first box face the ray from `x` toward the light (against `light`, the direction it
@@ -240,7 +279,7 @@ fn first_face(scene: &Scene, x: DVec3, light: DVec3) -> Option<(f64, DVec3)> {
 }
 
 /// Whether the world point `q` lies in the (possibly rotated) box `b`, boundary included.
-fn box_contains(b: &SceneBox, q: DVec3) -> bool {
+pub(crate) fn box_contains(b: &SceneBox, q: DVec3) -> bool {
     let l = if b.is_rotated() {
         let c = b.centre();
         c + b.rotation().inverse() * (q - c)

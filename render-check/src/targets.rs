@@ -219,5 +219,67 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
     if let Some(n) = case.shimmer_points {
         at_least("shimmer_points", n as f64, MIN_SHIMMER_POINTS as f64);
     }
+    for p in case.paths.iter().flatten() {
+        v.extend(path_violations(p));
+    }
+    v
+}
+
+/// The targets that ask for enough of the frame to be decided (compared, checked, followed):
+/// a case that misses only these is inconclusive (too little decidable), not wrong.
+pub const DECIDABILITY_TARGETS: [&str; 6] = [
+    "pixels_compared / visible_pixels",
+    "shadow_pixels_checked / shadow_pixels",
+    "lit_pixels_checked / lit_pixels",
+    "lens_pixels_compared / visible_pixels",
+    "shimmer_points",
+    "taps_checked / lookups",
+];
+
+/// Whether a line of [`violations`] is one of the [`DECIDABILITY_TARGETS`]: the case is
+/// inconclusive there (too little decidable), where any other line is a wrong pixel or number.
+pub fn is_inconclusive(violation: &str) -> bool {
+    DECIDABILITY_TARGETS
+        .iter()
+        .any(|t| violation.starts_with(&format!("{t} ")))
+}
+
+/// At least this fraction of a shader path's lookups has its taps decided by render-check's
+/// model ([`crate::paths`]).
+pub const MIN_TAPS_CHECKED_FRACTION: f64 = 0.8;
+
+/// The targets one shader path ([`crate::paths::PathSummary`]) violates.
+fn path_violations(p: &crate::paths::PathSummary) -> Vec<String> {
+    let mut v = Vec::new();
+    let name = p.path;
+    if p.tap_mismatches > 0 {
+        v.push(format!(
+            "tap_mismatches in path {name} (the GPU's shaded fraction against the taps \
+             re-evaluated from the read-back maps) = {}, limit ≤ 0",
+            p.tap_mismatches
+        ));
+    }
+    if p.acne > 0 {
+        v.push(format!(
+            "acne in path {name} (lit pixels shaded below 1 on their own lit face) = {}, limit ≤ 0",
+            p.acne
+        ));
+    }
+    let local = crate::paths::PATHS
+        .iter()
+        .any(|q| q.name == name && q.local());
+    if local && p.detached > 0 {
+        v.push(format!(
+            "detached in path {name} (shadowed pixels lit by a lookup lifted beyond the need) = {}, \
+             limit ≤ 0",
+            p.detached
+        ));
+    }
+    let f = p.taps_checked as f64 / p.lookups.max(1) as f64;
+    if f.is_nan() || f < MIN_TAPS_CHECKED_FRACTION {
+        v.push(format!(
+            "taps_checked / lookups in path {name} = {f:.4}, limit ≥ {MIN_TAPS_CHECKED_FRACTION}"
+        ));
+    }
     v
 }

@@ -36,7 +36,7 @@ fn caught(setup: &str, scheme: Scheme, fault: Fault, target: &str) {
     let clean = violated(&gpu, setup, scheme, None);
     // A fault in the shaders' source runs on its own device.
     let gpu = match Fault::shader_source(Some(fault)) {
-        Ok(src) if fault == Fault::ReversedStrict => {
+        Ok(src) if fault.changes_shader() => {
             Gpu::with_source(&src).unwrap_or_else(|e| panic!("{e}"))
         }
         Ok(_) => gpu,
@@ -221,5 +221,45 @@ fn strict_reversed_comparison_is_caught() {
         Scheme::Uniform,
         Fault::ReversedStrict,
         "false_shadows",
+    );
+}
+
+/// The records' depth bias and normal offset halved: on the paths that apply them alone, lit
+/// ground under the 45° light shadows itself at its texels' far corners (acne), which the texels
+/// read prove to hold the ground, lit.
+#[test]
+fn bias_halved_is_caught() {
+    caught(
+        "tilted_45",
+        Scheme::Uniform,
+        Fault::BiasHalved,
+        "acne in path depth_bias (lit pixels shaded below 1 on their own lit face)",
+    );
+}
+
+/// The PCF kernel reaching 2r texels: the GPU's shaded fraction is no longer the (2r + 1)² taps'
+/// that render-check reads back from the depth maps.
+#[test]
+fn pcf_radius_doubled_is_caught() {
+    caught(
+        "tilted_45",
+        Scheme::Uniform,
+        Fault::PcfRadiusDoubled,
+        "tap_mismatches in path pcf1_local_normal_offset (the GPU's shaded fraction against the \
+         taps re-evaluated from the read-back maps)",
+    );
+}
+
+/// The normal offset twice too large (record and per point, in the Rust the lookup is modelled
+/// with and in the WGSL alike): shadowed pixels near the boxes' feet are lit by a lookup lifted
+/// beyond the need (peter-panning).
+#[test]
+fn normal_offset_doubled_detaches_shadows() {
+    caught(
+        "tilted_45",
+        Scheme::Uniform,
+        Fault::NormalOffsetDoubled,
+        "detached in path pcf1_local_normal_offset (shadowed pixels lit by a lookup lifted beyond \
+         the need)",
     );
 }

@@ -504,6 +504,7 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
         "shimmer_changed_fraction",
         "shimmer_points",
         "clip_depth",
+        "paths",
     ];
     expect.sort_unstable();
     assert_eq!(keys, expect);
@@ -512,6 +513,8 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
         assert_eq!(c["shadow_misses"], 0, "{c}");
         assert_eq!(c["false_shadows"], 0, "{c}");
         assert_eq!(c["uncovered_pixels"], 0, "{c}");
+        // The shader paths run only in the built-in cases of render_check::paths::CASES.
+        assert!(c["paths"].is_null(), "{c}");
         // The shimmer test runs for the plain and the stable cascades.
         let cascaded = matches!(
             c["scheme"].as_str().unwrap(),
