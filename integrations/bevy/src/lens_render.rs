@@ -47,6 +47,11 @@ pub(crate) struct ErrorLensRenderPlugin;
 
 impl Plugin for ErrorLensRenderPlugin {
     fn build(&self, app: &mut App) {
+        // Without a renderer there is nothing to extract to (and the extraction's removal hook
+        // needs the render world's sync resource).
+        if app.get_sub_app(RenderApp).is_none() {
+            return;
+        }
         app.add_plugins(ExtractComponentPlugin::<ErrorLensMaps>::default());
         let Some(render_app) = app.get_sub_app_mut(RenderApp) else {
             return;

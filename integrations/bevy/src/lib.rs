@@ -43,6 +43,13 @@
 //! Replace and budget mode set the light's bias from the crate's ([`AppliedBias`]) unless
 //! [`ShadowAliasingSettings::auto_bias`] is off.
 //!
+//! # The error lens
+//!
+//! [`ErrorLens`] on a camera draws the crate's per-pixel error heat map (the WGSL module's
+//! `sa_error_lens`, with its legend) over the camera's image, for whatever cascades Bevy draws: a
+//! full-screen pass after tone mapping that reads Bevy's depth and normal prepass
+//! (docs/bevy.md, "The error lens").
+//!
 //! # System order (`PostUpdate`)
 //!
 //! Bevy computes the meshes' `Aabb`s (`VisibilitySystems::CalculateBounds`), propagates the
@@ -52,7 +59,7 @@
 //! [`ShadowAliasingSystems::Collect`] (the receivers' and casters' world boxes),
 //! [`ShadowAliasingSystems::Replace`] and [`ShadowAliasingSystems::Measure`], all before
 //! `SimulationLightSystems::UpdateLightFrusta`, whose `update_directional_light_frusta` culls
-//! the casters of each cascade with the matrices the plugin left.
+//! the casters of each cascade with the matrices the plugin left; then [`prepare_error_lens`].
 
 mod bias;
 mod budget;

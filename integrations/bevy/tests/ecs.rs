@@ -24,9 +24,9 @@ use shadow_aliasing::glam::{DMat4, DVec3, Mat4 as SaMat4};
 use shadow_aliasing::maps::{ClipDepth, WarpRule};
 use shadow_aliasing::measure::{frustum_max, ShadowMap};
 use shadow_aliasing_bevy::{
-    budget_path, Budget, BudgetState, CascadeErrors, CascadeMode, CascadeSource, Fit, Replace,
-    ReplacedCascades, SceneBounds, ShadowAliasingPlugin, ShadowAliasingSettings, Splits,
-    ViewCascadeErrors,
+    budget_path, Budget, BudgetState, CascadeErrors, CascadeMode, CascadeSource, ErrorLens,
+    ErrorLensMaps, Fit, Replace, ReplacedCascades, SceneBounds, ShadowAliasingPlugin,
+    ShadowAliasingSettings, Splits, ViewCascadeErrors,
 };
 
 const ASPECT: f32 = 16.0 / 9.0;
@@ -620,5 +620,62 @@ fn a_bad_budget_is_refused_by_name_and_keeps_bevys_cascades() {
             app.world().resource::<DirectionalLightShadowMap>().size,
             DirectionalLightShadowMap::default().size
         );
+    }
+}
+
+/// The error lens's records are the cascades Bevy holds, in measure and replace mode: Bevy's
+/// matrices bit for bit, the far bounds Bevy's shader picks by, reversed depth, the map size,
+/// Bevy's texel size and measure mode's figures; the uniform block is laid out by WGSL's uniform
+/// rules (four 144-byte records at a stride of 144, then the light's `vec3` on a multiple of 16,
+/// the count, the opacity and the legend flag, the struct rounded up to 16 bytes); removing the
+/// lens removes the records.
+#[test]
+fn the_error_lens_records_the_cascades_bevy_holds() {
+    let replace = CascadeMode::Replace(Replace {
+        fit: Fit::Focused(WarpRule::Uniform),
+        splits: Splits::EqualError { k: 4 },
+        depth_range: None,
+    });
+    for mode in [None, Some(replace)] {
+        let (mut app, camera, light) = app(mode, &BOXES);
+        app.world_mut()
+            .entity_mut(camera)
+            .insert(ErrorLens::default());
+        app.update();
+        let w = app.world();
+        let maps = w.get::<ErrorLensMaps>(camera).unwrap();
+        let cascades = &w.get::<Cascades>(light).unwrap().cascades[&camera];
+        let config = w.get::<CascadeShadowConfig>(light).unwrap();
+        let size = w.resource::<DirectionalLightShadowMap>().size;
+        let measured = errors(&app, light, camera);
+        assert_eq!(maps.light, Some(light));
+        assert_eq!(maps.maps.len(), 4);
+        assert_eq!(cascades.len(), 4);
+        for (i, m) in maps.maps.iter().enumerate() {
+            assert_eq!(
+                m.world_to_clip,
+                cascades[i].clip_from_world.to_cols_array_2d()
+            );
+            assert_eq!(m.split[1], config.bounds[i]);
+            assert_eq!(m.clip_depth, 2, "reversed depth");
+            assert_eq!(m.resolution as usize, size);
+            assert_eq!(m.texel_world, cascades[i].texel_size);
+            let e = measured.cascades[i].expect("every cascade measured");
+            assert_eq!(m.max_error_pixels, e.max_error_pixels as f32);
+        }
+        let bytes = maps.uniform_bytes();
+        let word = |at: usize| u32::from_le_bytes(bytes[at..at + 4].try_into().unwrap());
+        assert_eq!(bytes.len(), 608);
+        assert_eq!(&bytes[144..208], &maps.maps[1].to_bytes()[..64]);
+        let sun = scene::sun_dir().normalize();
+        for (k, v) in [sun.x, sun.y, sun.z].into_iter().enumerate() {
+            assert!((f32::from_bits(word(576 + 4 * k)) - v).abs() < 1e-6);
+        }
+        assert_eq!(word(588), 4);
+        assert_eq!(f32::from_bits(word(592)), 0.7);
+        assert_eq!(word(596), 1);
+        app.world_mut().entity_mut(camera).remove::<ErrorLens>();
+        app.update();
+        assert!(app.world().get::<ErrorLensMaps>(camera).is_none());
     }
 }

@@ -316,6 +316,8 @@ struct Tally {
     per_cascade: [usize; 4],
     vertical: usize,
     worst: f64,
+    /// The lens by differences at every compared pixel.
+    values: Vec<f64>,
     wrong: Vec<(u32, u32, f64, Option<f64>)>,
 }
 
@@ -371,6 +373,7 @@ fn compare(cap: &Capture) -> Tally {
             let got = decode([cap.pixels[k], cap.pixels[k + 1], cap.pixels[k + 2]]);
             let rel = got.map_or(f64::INFINITY, |g| (g / want - 1.0).abs());
             t.compared += 1;
+            t.values.push(want);
             t.per_cascade[i] += 1;
             if n.y == 0.0 {
                 t.vertical += 1;
@@ -428,6 +431,9 @@ fn the_overlay_draws_the_lens_of_bevys_and_the_budgets_cascades() {
         assert_eq!(cap.maps.maps.len(), cap.cascades.len(), "{name}");
         check_legend(&cap, name);
         let t = compare(&cap);
+        let mut sorted = t.values.clone();
+        sorted.sort_by(f64::total_cmp);
+        let median = sorted.get(sorted.len() / 2).copied().unwrap_or(f64::NAN);
         let measured = cap
             .maps
             .maps
@@ -435,9 +441,12 @@ fn the_overlay_draws_the_lens_of_bevys_and_the_budgets_cascades() {
             .map(|m| m.max_error_pixels)
             .fold(0.0f32, f32::max);
         println!(
-            "{name}: {} cascades, measured max error {measured:.3} px; {} pixels compared (per \
-             cascade {:?}, {} on vertical faces), largest relative difference {:.4}",
+            "{name}: {} cascades, measured max error {measured:.3} px; lens median {:.3}, max \
+             {:.3} px; {} pixels compared (per cascade {:?}, {} on vertical faces), largest \
+             relative difference {:.4}",
             cap.cascades.len(),
+            median,
+            t.values.iter().copied().fold(0.0, f64::max),
             t.compared,
             t.per_cascade,
             t.vertical,
