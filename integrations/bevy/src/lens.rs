@@ -38,7 +38,8 @@ pub const LENS_MAPS: usize = crate::measure::MAX_CASCADES;
 #[require(DepthPrepass, NormalPrepass)]
 pub struct ErrorLens {
     /// How much the heat map covers the scene: 0 the scene alone, 1 the heat map alone (in the
-    /// view's linear colour, after tone mapping). Default 0.7.
+    /// view's linear colour, after tone mapping); a value outside [0, 1] is taken as the nearer
+    /// end, NaN as 0. Default 0.7.
     pub opacity: f32,
     /// Whether to draw the legend (the ramp with its values in pixels). Default `true`.
     pub legend: bool,
@@ -102,12 +103,17 @@ impl ErrorLensMaps {
             }
         }
         let count = self.maps.len().min(LENS_MAPS) as u32;
+        let opacity = if self.opacity.is_nan() {
+            0.0f32
+        } else {
+            self.opacity.clamp(0.0, 1.0)
+        };
         let words = [
             self.light_dir[0].to_bits(),
             self.light_dir[1].to_bits(),
             self.light_dir[2].to_bits(),
             count,
-            self.opacity.clamp(0.0, 1.0).to_bits(),
+            opacity.to_bits(),
             u32::from(self.legend),
             0,
             0,

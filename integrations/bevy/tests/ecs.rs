@@ -678,4 +678,22 @@ fn the_error_lens_records_the_cascades_bevy_holds() {
         app.update();
         assert!(app.world().get::<ErrorLensMaps>(camera).is_none());
     }
+    // An opacity outside [0, 1] is the nearer end, NaN 0 (the scene alone).
+    let opacity = |o: f32| {
+        let b = ErrorLensMaps {
+            opacity: o,
+            ..default()
+        }
+        .uniform_bytes();
+        f32::from_bits(u32::from_le_bytes(b[592..596].try_into().unwrap()))
+    };
+    assert_eq!(
+        [
+            opacity(f32::NAN),
+            opacity(-1.0),
+            opacity(2.0),
+            opacity(0.25)
+        ],
+        [0.0, 0.0, 1.0, 0.25]
+    );
 }
