@@ -322,9 +322,9 @@ struct Tally {
 }
 
 /// The overlay's value against the lens by differences at every sampled pixel whose ray meets a
-/// face that its pixel's corners also meet, lit at more than 3° of incidence (an edge-on surface
-/// is unbounded), inside one cascade's depth range (0.2 % from its far bound) and on its map, the
-/// value within the ramp's range.
+/// face that its pixel's corners also meet, more than 3° from edge-on to the light (where the
+/// lens is unbounded), inside one cascade's depth range (0.2 % from its far bound) and on its map,
+/// the value within the ramp's range.
 fn compare(cap: &Capture) -> Tally {
     let mut t = Tally::default();
     let (eye, forward) = (cap.eye, cap.forward);
