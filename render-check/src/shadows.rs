@@ -170,10 +170,12 @@ pub(crate) fn shadow_decidable(
         if !r.is_finite() {
             return false;
         }
-        if own.is_some_and(|k| box_contains(&scene.boxes[k], r)) {
-            return true;
-        }
-        if inside(r, own) || ray_occluded(scene, r, DVec3::ZERO, light) != occluded {
+        // r inside the pixel's own box (under its face: the texel's ray passes the face's edge
+        // below it) holds no state of its own; the contact band below still applies, for a
+        // caster may rest on the face there (a box on a step: its bottom face, which a
+        // second-depth map stores, lies in the receiver's plane).
+        let in_own = own.is_some_and(|k| box_contains(&scene.boxes[k], r));
+        if !in_own && (inside(r, own) || ray_occluded(scene, r, DVec3::ZERO, light) != occluded) {
             return false;
         }
         // The depth bias: the caster face the ray from r meets first must lie farther toward

@@ -423,6 +423,38 @@ fn every_scene_file_meets_every_target_at_two_sizes() {
     }
 }
 
+/// A staircase of boxes, each resting on the step below (its bottom face, which a second-depth
+/// map stores, lies in the plane of the step's top face), under a light from the front left. The
+/// shadow of each step on the one below reaches the box's foot, where the texel's ray passes
+/// below the receiving face (inside its own box) and the depth bias lets light leak past the
+/// resting face: the contact band must hold those pixels too. When the band was skipped there,
+/// the clipmap compared 9 such pixels at 320 × 240 and found them lit (shadow misses).
+#[test]
+fn a_box_resting_on_a_step_keeps_its_contact_band() {
+    let scene: Scene = serde_json::from_str(
+        r#"{"ground_y": 0.0, "ground_half_extent": 80.0,
+            "boxes": [{"min": [-3, 0, -14], "max": [3, 0.5, -10]},
+                      {"min": [-3, 0.5, -15], "max": [3, 1.0, -11]},
+                      {"min": [-3, 1.0, -16], "max": [3, 1.5, -12]},
+                      {"min": [-3, 1.5, -17], "max": [3, 2.0, -13]}],
+            "camera": {"eye": [0, 4, 0], "target": [0, 0, -20], "up": [0, 1, 0],
+                       "near": 0.5, "far": 60, "fov_y_deg": 55},
+            "light_dir": [0.5, -1.0, 0.6], "map_resolution": 1024}"#,
+    )
+    .unwrap();
+    scene.validate().unwrap();
+    let sizes = Sizes {
+        width: 320,
+        height: 240,
+        ..SIZES
+    };
+    let r = run_case(&gpu(), "stairs", &scene, Scheme::Clipmap, sizes).unwrap();
+    let m = &r.summary.measured;
+    assert!(m.shadow_pixels_checked > 500, "{m:?}");
+    assert_eq!(m.shadow_misses, 0, "{m:?}");
+    assert_eq!(violations(&r.summary), Vec::<String>::new());
+}
+
 fn scene_file_text() -> &'static str {
     r#"{"ground_y": 0.0, "ground_half_extent": 100.0,
         "boxes": [{"min": [-2, 0, -12], "max": [2, 3, -8]}, {"min": [3, 0, -20], "max": [4, 6, -19]}],
