@@ -660,6 +660,7 @@ fn martin_tan_fig6() {
             ("2004", N::Given("the paper's year")),
             ("6", N::Given("its figure")),
             ("80", N::Given("the 80 % rule")),
+            ("1024", N::Given("the iterative variant's map lines")),
             ("1", N::Given("n")),
             ("100", N::Given("f")),
             ("30", N::Given("θ")),

@@ -8,7 +8,7 @@
 //! checked at the PNG's 1.24/1.164 times the SVG's size, the wider of the two.
 #![cfg(feature = "plot")]
 
-use shadow_aliasing::plot::{render_all, Format};
+use shadow_aliasing::plot::{render_all, render_with, Format, Options, FIGURES};
 use std::path::Path;
 
 /// The PNG's text over the SVG's (see the file's header).
@@ -218,5 +218,122 @@ fn no_text_runs_past_the_page() {
         }
     }
     let _ = std::fs::remove_dir_all(&dir);
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}
+
+/// A text's box on the page, (x0, y0, x1, y1): across, its measured width (at the PNG's larger
+/// size) from its anchor; up and down, from DejaVu Sans' cap height (0.73 em) above its baseline
+/// to its descent (0.24 em) below, the baseline placed by the `dy` the SVG writer gives each
+/// vertical anchor (0.76 em below `y` for a top anchor, 0.5 ex = 0.27 em for a centred one,
+/// −0.27 em for a bottom one). A text rotated by 90° or 270° has the box turned about its anchor.
+fn text_boxes(font: &Font, svg: &str) -> Vec<(String, [f64; 4])> {
+    let mut out = Vec::new();
+    let mut rest = svg;
+    while let Some(i) = rest.find("<text ") {
+        let tag_end = i + rest[i..].find('>').unwrap();
+        let close = tag_end + rest[tag_end..].find("</text>").unwrap();
+        let tag = &rest[i..tag_end];
+        let content = &rest[tag_end + 1..close];
+        rest = &rest[close..];
+        let (x, y, fs) = (
+            attr(tag, "x").unwrap(),
+            attr(tag, "y").unwrap(),
+            attr(tag, "font-size").unwrap(),
+        );
+        let w = width(font, content, fs) * PNG_TEXT;
+        let before = match tag
+            .split("text-anchor=\"")
+            .nth(1)
+            .and_then(|t| t.split('"').next())
+        {
+            Some("middle") => 0.5 * w,
+            Some("end") => w,
+            _ => 0.0,
+        };
+        let base = match tag.split("dy=\"").nth(1).and_then(|t| t.split('"').next()) {
+            Some("0.76em") => 0.76 * fs,
+            Some("0.5ex") => 0.27 * fs,
+            Some("-0.5ex") => -0.27 * fs,
+            _ => 0.0,
+        };
+        // Across the text: from `before` left of the anchor; up and down: about the baseline.
+        let (a0, a1) = (-before, w - before);
+        let (b0, b1) = (base - 0.73 * fs, base + 0.24 * fs);
+        let b = if tag.contains("rotate(270") {
+            // Reading upwards: "across" runs to −y, "down" to +x.
+            [x + b0, y - a1, x + b1, y - a0]
+        } else if tag.contains("rotate(90") {
+            [x - b1, y + a0, x - b0, y + a1]
+        } else {
+            [x + a0, y + b0, x + a1, y + b1]
+        };
+        out.push((unescape(content), b));
+    }
+    out
+}
+
+/// The pairs of texts of an SVG whose boxes ([`text_boxes`]) overlap by more than half a unit
+/// both ways.
+fn overlapping(font: &Font, svg: &str) -> Vec<String> {
+    let boxes = text_boxes(font, svg);
+    let mut bad = Vec::new();
+    for (i, (ta, a)) in boxes.iter().enumerate() {
+        for (tb, b) in &boxes[..i] {
+            let across = a[2].min(b[2]) - a[0].max(b[0]);
+            let down = a[3].min(b[3]) - a[1].max(b[1]);
+            if across > 0.5 && down > 0.5 {
+                bad.push(format!(
+                    "{tb:?} and {ta:?} overlap by {across:.1} × {down:.1}"
+                ));
+            }
+        }
+    }
+    bad
+}
+
+/// The overlap measure itself: two texts 10 units high (font size 10) on baselines 8 units
+/// apart overlap; 12 apart, they do not; side by side on one baseline, they overlap only when
+/// the first's measured width reaches past the second's start.
+#[test]
+fn overlapping_texts_are_found() {
+    let font = Font::dejavu();
+    let two = |x2: f64, y2: f64| {
+        format!(
+            "<svg viewBox=\"0 0 200 100\">\n<text x=\"10\" y=\"50\" font-size=\"10\">Mx</text>\n\
+             <text x=\"{x2}\" y=\"{y2}\" font-size=\"10\">Mx</text>\n</svg>"
+        )
+    };
+    assert_eq!(overlapping(&font, &two(10.0, 58.0)).len(), 1);
+    assert!(overlapping(&font, &two(10.0, 62.0)).is_empty());
+    // "Mx" at size 10 is 14.55 wide in the SVG, 15.50 at the PNG's size: from x = 10 it ends
+    // at 25.50.
+    assert_eq!(overlapping(&font, &two(24.0, 50.0)).len(), 1);
+    assert!(overlapping(&font, &two(26.5, 50.0)).is_empty());
+}
+
+/// No two texts of any figure overlap, captioned or bare (issue 35: "no text overlaps in any
+/// output").
+#[test]
+fn no_two_texts_overlap() {
+    let mut bad = Vec::new();
+    let font = Font::dejavu();
+    for bare in [false, true] {
+        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
+            "figures-text-overlap-{bare}-{}",
+            std::process::id()
+        ));
+        let opts = Options {
+            bare,
+            ..Options::default()
+        };
+        for name in FIGURES {
+            let files = render_with(name, &dir, Format::Svg, &opts).unwrap();
+            let svg = std::fs::read_to_string(&files[0]).unwrap();
+            for b in overlapping(&font, &svg) {
+                bad.push(format!("{name} (bare {bare}): {b}"));
+            }
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
     assert!(bad.is_empty(), "{}", bad.join("\n"));
 }

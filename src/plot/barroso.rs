@@ -66,28 +66,24 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     }
     let mut c = LineChart::new(
         "",
-        Axis::linear(
-            "angle γ between light and view directions (degrees)",
-            0.0,
-            90.0,
-        ),
-        Axis::log10("warp parameter n′ (eye-space units, n = 1)", 1.0, 1e4),
+        Axis::linear("light–view angle γ (degrees)", 0.0, 90.0),
+        Axis::log10("warp parameter n′ (n = 1)", 1.0, 1e4),
     );
     // Short legend labels, so that the legend fits above the curves' common tail (γ > 35°).
     c.legend = SeriesLabelPosition::UpperRight;
     // The paper's curve, bold.
-    let mut paper = Series::line("the paper: Barroso r(γ), Eq 16, 18", barroso, PALETTE[0]);
+    let mut paper = Series::line("Barroso, Eq 18 (paper)", barroso, PALETTE[0]);
     paper.width = 4;
     c.series.push(paper);
     c.series
-        .push(Series::line("Zhang r(γ), Eq 16, 17", zhang, PALETTE[1]));
+        .push(Series::line("Zhang, Eq 17", zhang, PALETTE[1]));
     c.series
-        .push(Series::line("LiSPSM (n + √(fn))/sin γ", lispsm, PALETTE[2]).dashed());
+        .push(Series::line("LiSPSM, 1/sin γ", lispsm, PALETTE[2]).dashed());
     c.series
-        .push(Series::line("least M_z over the frustum", minimax, PALETTE[3]).dashed());
+        .push(Series::line("least M_z", minimax, PALETTE[3]).dashed());
     c.series
-        .push(Series::line("n′₁, Eq 13, γ ≥ φ_y", n1, PALETTE[6]).dotted());
-    let mut s2 = Series::line("n′₂, Eq 13, γ < φ_y (> 0)", n2, PALETTE[7]).dotted();
+        .push(Series::line("n′₁, Eq 13", n1, PALETTE[6]).dotted());
+    let mut s2 = Series::line("n′₂, Eq 13", n2, PALETTE[7]).dotted();
     s2.width = 3;
     c.series.push(s2);
     let gl_deg = gl.to_degrees();
@@ -116,15 +112,19 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         colour: PALETTE[6],
     });
     c.notes.push(Note {
-        at: (phi_deg - 15.0, 1.55),
-        text: format!("φ_y = {phi_deg:.0}° →"),
+        at: (phi_deg - 19.0, 1.55),
+        // Its value is written in (b), where there is room.
+        text: "φ_y →".to_string(),
         colour: grey,
     });
     let window = (20.0, 40.0);
     let zoom = magnified(&c, window, (0.3, 100.0), gl_deg, phi_deg, grey);
+    // (b)'s key, in its empty lower right, holds for both panels: in (a) every corner has a
+    // curve.
+    c.show_legend = false;
     c.title = "(a) γ from 0° to 90°".into();
     Ok(Charts {
-        size: (520, 850),
+        size: (520, 540),
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![format!(
             "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n = {n}, f = {f}, φ_y = π/6. Bold: the \
@@ -150,7 +150,7 @@ fn magnified(
     grey: RGBColor,
 ) -> LineChart {
     let mut z = LineChart::new(
-        format!("(b) magnified: γ from {:.0}° to {:.0}°", x.0, x.1),
+        format!("(b) γ from {:.0}° to {:.0}°", x.0, x.1),
         Axis::linear(c.x.label.clone(), x.0, x.1),
         // n′ in (a)'s format (powers of ten there), not plain numbers for this range.
         if c.y.writes_plain() {
@@ -187,7 +187,7 @@ fn magnified(
             colour: PALETTE[6],
         },
         Note {
-            at: (phi_deg - 4.0, 0.6 * y.1),
+            at: (phi_deg - 9.0, 0.6 * y.1),
             text: format!("φ_y = {phi_deg:.0}° →"),
             colour: grey,
         },
@@ -244,7 +244,7 @@ mod tests {
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
         let c = &fig.charts[0];
         let bold = &c.series[0];
-        assert!(bold.label.as_deref().unwrap().starts_with("the paper"));
+        assert!(bold.label.as_deref().unwrap().ends_with("(paper)"));
         assert!(c.series[1..].iter().all(|s| s.width < bold.width));
         let gl = c.notes.iter().find(|n| n.text.contains("lim")).unwrap();
         assert!(gl.text.starts_with('←') && gl.at.0 > 30.5 && gl.at.0 < 32.0);

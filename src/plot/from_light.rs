@@ -205,7 +205,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         title: "The view frustum seen from the light, with z-partitions",
         caption,
         panels,
-        size: (520, 976),
+        size: (520, 640),
     })
 }
 

@@ -1,7 +1,7 @@
 //! Lloyd et al. 2006 Fig 7: the storage factor S̄ over the hemisphere of light directions, from
 //! the crate's measurement of each scheme's own matrices ([`crate::scheme::sweep::sweep`]).
 
-use super::chart::{draw_colour_bar, draw_hemisphere, frame, Axis, ColourScale, PolarGrid, FONT};
+use super::chart::{draw_colour_bar, draw_hemisphere, frame, Axis, ColourScale, PolarGrid};
 use super::{Fail, Figure};
 use crate::maps::WarpRule;
 use crate::scheme::sweep::{sweep, Sweep, SweepGrid};
@@ -68,22 +68,10 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let view = fig7_view()?;
     let grid = SweepGrid::new(ELEVATIONS, AZIMUTHS)?;
     let schemes = [
-        (
-            "(a) no warping, n′ = ∞",
-            WarpRule::Uniform,
-            Partition::Single,
-        ),
-        ("(b) LiSPSM warping", WarpRule::Lispsm, Partition::Single),
-        (
-            "(c) face partitions, warped",
-            WarpRule::Lispsm,
-            Partition::Faces,
-        ),
-        (
-            "(d) the n′ of least S̄",
-            WarpRule::Minimax,
-            Partition::Single,
-        ),
+        ("(a) no warping", WarpRule::Uniform, Partition::Single),
+        ("(b) LiSPSM", WarpRule::Lispsm, Partition::Single),
+        ("(c) face partitions", WarpRule::Lispsm, Partition::Faces),
+        ("(d) n′ of least S̄", WarpRule::Minimax, Partition::Single),
     ];
     let mut panels = Vec::new();
     for (title, rule, partition) in schemes {
@@ -119,7 +107,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         ))
     })?;
     let ratio = Panel {
-        title: "(e) (b) ÷ (c), not in the paper".into(),
+        title: "(e) (b) ÷ (c)".into(),
         grid: PolarGrid {
             values: ratios,
             ..panels[1].grid.clone()
@@ -127,11 +115,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         max: rmax,
         min: rmin,
     };
-    let ratio_scale = ColourScale::smooth(Axis::log10(
-        "S̄ of LiSPSM ÷ S̄ of face partitions",
-        rmin,
-        rmax,
-    ));
+    let ratio_scale = ColourScale::smooth(Axis::log10("(b) ÷ (c), not in the paper", rmin, rmax));
     let lo = panels.iter().map(|p| p.min).fold(f64::INFINITY, f64::min);
     let hi = panels.iter().map(|p| p.max).fold(0.0, f64::max);
     let scale = ColourScale::smooth(Axis::log10("S̄ (texels per image pixel)", lo, hi));
@@ -166,7 +150,7 @@ impl Fig7 {
 
 impl Figure for Fig7 {
     fn size(&self) -> (u32, u32) {
-        (520, 892)
+        (520, 560)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -176,36 +160,23 @@ impl Figure for Fig7 {
             "Storage factor over the hemisphere of light directions",
             &caption,
         )?;
-        let (w, h) = body.dim_in_pixel();
-        let (top, bottom) = body.split_vertically(h * 2 / 3);
-        let (maps, bar) = top.split_horizontally(w.saturating_sub(84));
-        let cells = maps.split_evenly((2, 2));
+        // Three panels a row (issue 35: two a row, the figure was 892 units tall): (a)–(c) on
+        // top; (d), then (e) with its own bar under them; the bar of (a)–(d) right of both rows.
+        let (w, _) = body.dim_in_pixel();
+        let (maps, bar) = body.split_horizontally(w.saturating_sub(84));
+        let cells = maps.split_evenly((2, 3));
         for (cell, p) in cells.iter().zip(&self.panels) {
             draw_hemisphere(cell, &p.title, &p.grid, &self.scale)?;
         }
         draw_colour_bar(&bar, &self.scale)?;
-        // (e) under (a), its own bar beside it, and what it shows in the space left.
-        let half = w.saturating_sub(84) / 2;
-        let (cell, rest) = bottom.split_horizontally(half);
-        let (ratio_bar, note) = rest.split_horizontally(96);
+        let (ratio_bar, _) = cells[5].split_horizontally(96);
         draw_hemisphere(
-            &cell,
+            &cells[4],
             &self.ratio.title,
             &self.ratio.grid,
             &self.ratio_scale,
         )?;
         draw_colour_bar(&ratio_bar, &self.ratio_scale)?;
-        let style = TextStyle::from((FONT, 13).into_font());
-        let lines = [
-            "How many times the",
-            "texels of face",
-            "partitioning LiSPSM",
-            "needs for the same",
-            "error.",
-        ];
-        for (i, line) in lines.iter().enumerate() {
-            note.draw(&Text::new(*line, (12, 60 + 18 * i as i32), style.clone()))?;
-        }
         Ok(())
     }
 }

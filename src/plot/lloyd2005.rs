@@ -117,7 +117,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     let g0_inf = (alpha - 1.0) / (alpha.sqrt() * alpha.ln());
     let (lo, hi) = (alphas[0], alphas[alphas.len() - 1]);
     Ok(Charts {
-        size: (520, 700),
+        size: (520, 620),
         title: "Maximum error against the number of face subdivisions".into(),
         caption: vec![format!(
             "Lloyd et al. 2005, Fig. 7 (Eq 7): the maximum error with k self-similar face \

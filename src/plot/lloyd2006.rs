@@ -29,15 +29,15 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
     let res = Resolutions::default();
     let lispsm = n_prime_lispsm(n, f)?;
     let warps = [
-        (NPrime::finite(1.0)?, "n′ = n = 1 (PSM, η = 1)".to_string()),
+        (NPrime::finite(1.0)?, "n′ = n = 1 (PSM)".to_string()),
         (NPrime::finite(2.0)?, "n′ = 2".to_string()),
         (
             NPrime::finite(lispsm)?,
-            format!("n′ = n + √(fn) ≈ {lispsm:.2} (LiSPSM, η = 0)"),
+            format!("n′ ≈ {lispsm:.2} (LiSPSM)"),
         ),
         (NPrime::finite(20.0)?, "n′ = 20".to_string()),
         (NPrime::finite(100.0)?, "n′ = 100".to_string()),
-        (NPrime::UNWARPED, "n′ = ∞ (uniform, η = −1)".to_string()),
+        (NPrime::UNWARPED, "n′ = ∞ (uniform)".to_string()),
     ];
     let zs = linspace(n, f, 160);
     let z_factor = (f - n) / (2.0 * view.tan_half_fov());
@@ -68,7 +68,7 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
         cz.series.push(Series::line(short, pz, PALETTE[i]).direct());
     }
     Ok(Charts {
-        size: (520, 860),
+        size: (520, 540),
         title: "Error distribution along the view frustum, light overhead".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), n = {n}, f = {f}, unit resolutions: the terms \
@@ -101,11 +101,7 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
     let (top_x, top_z, top_s) = (top(&m_x), top(&m_z), top(&s));
     let mut c = LineChart::new(
         "",
-        Axis::linear(
-            "warp parameter η (−1: n′ = ∞, 0: n′ = n + √(fn), 1: n′ = n)",
-            -1.0,
-            1.0,
-        ),
+        Axis::linear("η (−1: n′ = ∞, 1: n′ = n)", -1.0, 1.0),
         Axis::log10("M_x, M_z (unit resolutions), S̄ (log scale)", 0.5, 2e4),
     );
     c.legend = SeriesLabelPosition::LowerLeft;
@@ -115,13 +111,13 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
         PALETTE[0],
     ));
     c.series.push(Series::line(
-        format!("M_z (maximum {} at θ = 30°)", fmt_plain(top_z)),
+        format!("M_z (maximum {})", fmt_plain(top_z)),
         m_z.clone(),
         PALETTE[1],
     ));
     // (b): M_z on a linear axis, where its V (linear in η on each side of 0, App. B) shows.
     let mut v = LineChart::new(
-        "(b) M_z on a linear axis: the V",
+        "(b) M_z, linear: the V",
         c.x.clone(),
         Axis::linear("M_z (unit resolutions)", 0.0, 1.05 * top_z),
     );
@@ -134,15 +130,15 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
     c.title = "(a) as they are, logarithmic".into();
     c.series.push(
         Series::line(
-            format!("S̄ = M_x M_z (maximum {} at θ = 30°)", fmt_plain(top_s)),
+            format!("S̄ = M_x M_z (max. {})", fmt_plain(top_s)),
             s,
             PALETTE[2],
         )
         .dashed(),
     );
     Ok(Charts {
-        size: (520, 900),
-        title: "Maximum error and storage factor against the warp parameter η".into(),
+        size: (520, 540),
+        title: "Maximum error and storage factor against η".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 6 (Eq 9–12), n = {n}, f = {f}, θ = {theta}°, unit \
              resolutions. (a) Unlike the paper, which scales each curve to one linear axis, the \
@@ -160,13 +156,14 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
 pub(super) fn fig10() -> Result<Charts, Fail> {
     let theta = THETA_DEG.to_radians();
     let mut c = LineChart::new(
-        "(a) S̄, as in the paper; dashed: each optimum",
-        Axis::integer("number of z-partitions k", 1.0, 16.0),
+        "(a) S̄; dashed: its optimum",
+        // To k = 20: right of the curves' ends (k = 16) each optimum carries its value.
+        Axis::integer("number of z-partitions k", 1.0, 20.0),
         Axis::log10("storage factor S̄ (texels per image pixel)", 1.0, 1e4),
     );
     c.legend = SeriesLabelPosition::UpperRight;
     let mut r = LineChart::new(
-        "(b) S̄ over the optimum: every curve tends to 1",
+        "(b) S̄ over its optimum",
         Axis::integer("number of z-partitions k", 1.0, 16.0),
         Axis::log10("S̄ / S̄_{opt}", 0.8, 2000.0),
     );
@@ -184,7 +181,7 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
             })
             .collect::<Result<Vec<_>, crate::Error>>()?;
         let opt = scheme_storage_factor(Scheme::Optimal, SchemeLight::Overhead, &view, 1)?;
-        let label = format!("ZP+W, f/n = {}", fmt_plain(ratio));
+        let label = format!("f/n = {}", fmt_plain(ratio));
         r.series.push(
             Series::line(
                 label.clone(),
@@ -195,11 +192,11 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
         );
         c.series
             .push(Series::line(label, pts, PALETTE[i]).with_markers());
-        // The asymptote, labelled on the line with its value (placed clear of the curves; the
-        // legend's last entry says what the dashed lines are).
+        // The asymptote, labelled with its value right of the curves' ends (k = 16), where
+        // only the dashed lines run; the legend's last entry says what they are.
         let asymptote = Series::line(
             format!("{opt:.2}"),
-            linspace(1.0, 16.0, 61)
+            linspace(1.0, 20.0, 77)
                 .into_iter()
                 .map(|k| (k, opt))
                 .collect(),
@@ -207,18 +204,14 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
         )
         .dashed()
         .reference()
-        .direct_at(3.0);
+        .direct_at(20.0);
         c.series.push(asymptote);
         optima.push(format!("{opt:.2}"));
     }
     c.series.push(
-        Series::line(
-            "optimum ln(f/n)/(2 tan θ)",
-            Vec::new(),
-            RGBColor(90, 90, 90),
-        )
-        .dashed()
-        .reference(),
+        Series::line("optimum", Vec::new(), RGBColor(90, 90, 90))
+            .dashed()
+            .reference(),
     );
     r.series.push(
         Series::line(
@@ -230,10 +223,8 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
         .reference(),
     );
     Ok(Charts {
-        size: (520, 926),
-        title:
-            "Storage factor of warped z-partitions against the number of partitions, light overhead"
-                .into(),
+        size: (520, 560),
+        title: "Storage factor of ZP+W against the number of partitions, light overhead".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 10 (Eq 18, App. C), θ = {THETA_DEG}°: S̄ of ZP+W, \
              k((f/n)^{{1/k}} − 1)/(2 tan θ), falls with k towards the optimal logarithmic S̄, \
@@ -308,12 +299,8 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
                 };
                 Series {
                     width: 3,
-                    ..Series::line(
-                        format!("{name}, light {light_name} (4k + 1 maps only)"),
-                        unjoined(&pts),
-                        colour,
-                    )
-                    .with_markers()
+                    ..Series::line(format!("{name}, {light_name}"), unjoined(&pts), colour)
+                        .with_markers()
                 }
             } else {
                 // Every count: a line, with a few markers along it (not one per count).
@@ -321,7 +308,7 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
                     SchemeLight::Behind => "ZP = ZP+W",
                     SchemeLight::Overhead => name,
                 };
-                Series::line(format!("{name}, light {light_name}"), pts, PALETTE[colour])
+                Series::line(format!("{name}, {light_name}"), pts, PALETTE[colour])
             };
             c.series.push(match light {
                 SchemeLight::Overhead => s,
@@ -331,15 +318,15 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
     }
     // (b): the light-behind crossover enlarged, ZP (equal to ZP+W there) against FP+ZP+W.
     let mut zoom = LineChart::new(
-        "(b) light behind, enlarged around the crossover",
+        "(b) behind, at the crossover",
         // Padded by half a count, so that the markers at 11 and 23 maps are whole.
         Axis::integer("number of shadow maps", 10.5, 23.5),
         Axis::linear("S̄ (texels per image pixel)", 25.0, 65.0),
     );
     zoom.legend = SeriesLabelPosition::UpperRight;
     for (scheme, name, colour) in [
-        (Scheme::Zp, "ZP = ZP+W, light behind", 0),
-        (Scheme::FpZpW, "FP+ZP+W, light behind (4k + 1 maps only)", 7),
+        (Scheme::Zp, "ZP = ZP+W, behind", 0),
+        (Scheme::FpZpW, "FP+ZP+W, behind", 7),
     ] {
         let mut pts = Vec::new();
         for k in 1..=23usize {
@@ -377,12 +364,12 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
     }
     zoom.notes.push(Note {
         at: (11.4, 33.0),
-        text: format!("from {j4} maps FP+ZP+W is lower: {fp4:.2} against ZP's {zp4:.2}"),
+        text: format!("{j4} maps: {fp4:.2} against {zp4:.2}"),
         colour: PALETTE[6],
     });
-    c.title = "(a) overhead (solid) and behind (dashed)".into();
+    c.title = "(a) overhead, behind (dashed)".into();
     Ok(Charts {
-        size: (520, 926),
+        size: (520, 560),
         title: "Storage factor against the number of shadow maps".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 12 (Eq 17–21), f/n = {ratio}, θ = {THETA_DEG}°. k \

@@ -169,7 +169,7 @@ fn fig6_linear_panel_has_no_legend() {
 }
 
 /// Fig 12 (issue 25 review): the coincident behind lines ZP and ZP+W are one legend entry,
-/// "ZP = ZP+W, light behind", drawn at the normal width in (a) (a second entry with a width-5
+/// "ZP = ZP+W, behind", drawn at the normal width in (a) (a second entry with a width-5
 /// line had an oversized marker); in (b) the ZP line carries no marker (at 17 maps it lay
 /// under FP+ZP+W's: 38.32 against 37.99, Eq 20 and 21 by hand in the test above), both
 /// values are written, and the x range is padded so that the edge markers are whole.
@@ -183,7 +183,7 @@ fn fig12_one_entry_for_the_coincident_lines_and_a_visible_crossover() {
             .filter_map(|s| s.label.as_deref())
             .filter(|l| l.starts_with("ZP") && l.contains("behind"))
             .collect();
-        assert_eq!(behind, ["ZP = ZP+W, light behind"], "{}", chart.title);
+        assert_eq!(behind, ["ZP = ZP+W, behind"], "{}", chart.title);
         assert!(chart.series.iter().all(|s| s.width <= 3), "{}", chart.title);
     }
     let zoom = &fig.charts[1];

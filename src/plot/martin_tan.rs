@@ -91,13 +91,9 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
     }
     let mut profile = LineChart::new(
         "(b) in the view's vertical plane",
-        Axis::linear(
-            "light to view direction (degrees; 0 behind, 180 in front)",
-            0.0,
-            180.0,
-        ),
+        Axis::linear("light angle from behind (°)", 0.0, 180.0),
         Axis::log10(
-            "share of the map (log scale)",
+            "share of the map (log)",
             profile_floor(&eighty, &iterative),
             1.0,
         ),
@@ -106,31 +102,28 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
     // The 80 % rule jumps back to the dueling-frusta value exactly behind and in front (0° and
     // 180°, on the plot's border): those two points marked, unjoined and unlabelled.
     let (first, last) = (eighty[0], eighty[eighty.len() - 1]);
-    profile.series.push(Series::line(
-        format!("80 % rule, δ = {FOCUS}"),
-        eighty,
-        PALETTE[0],
-    ));
+    profile
+        .series
+        .push(Series::line("80 % rule", eighty, PALETTE[0]));
     profile.series.push(Series {
         label: None,
         ..Series::line("", vec![first, (90.0, f64::NAN), last], PALETTE[0]).with_markers()
     });
     profile
         .series
-        .push(Series::line("iterative variant, 1024 lines", iterative, PALETTE[1]).dashed());
+        .push(Series::line("iterative", iterative, PALETTE[1]).dashed());
     Ok(Fig6 {
         grid,
         // Logarithmic, as the profile: the dueling-frusta band near the horizon (0.003 to
         // 0.01) is two decades below overhead (0.49) and would be one colour on a linear bar.
-        scale: ColourScale::smooth(Axis::log10("share of the map (colour, log scale)", lo, hi)),
+        scale: ColourScale::smooth(Axis::log10("share of the map (log)", lo, hi)),
         profile,
         caption: vec![format!(
             "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map (80 % rule) covered by \
-             the focus region, the eye frustum from n to n + δ, measured for every light \
-             direction above the viewer ((a): overhead at the centre, behind on the left, in \
-             front on the right) and in the vertical plane (b); n = {n}, f = {f}, θ = \
-             {theta:.0}°, δ = {FOCUS}. Unlike the paper, which plots one angle as a surface, the \
-             whole hemisphere; the markers are the values exactly behind and in front.",
+             the focus region (the eye frustum from n to n + δ) for every light direction above \
+             the viewer (a) and in its vertical plane (b, iterative: the variant over 1024 lines); \
+             n = {n}, f = {f}, θ = {theta:.0}°, δ = {FOCUS}. Unlike the paper, which plots one \
+             angle as a surface, the whole hemisphere; markers: exactly behind and in front.",
             n = view.near(),
             f = view.far(),
             theta = view.half_fov().to_degrees(),
@@ -151,18 +144,20 @@ fn profile_floor(a: &[(f64, f64)], b: &[(f64, f64)]) -> f64 {
 
 impl Figure for Fig6 {
     fn size(&self) -> (u32, u32) {
-        (520, 928)
+        (520, 470)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let caption: Vec<&str> = self.caption.iter().map(String::as_str).collect();
         let body = frame(
             root,
-            "Area of the focus region in the trapezoidal shadow map against the light direction",
+            "Area of the focus region in the trapezoidal map",
             &caption,
         )?;
-        let (_, h) = body.dim_in_pixel();
-        let (left, right) = body.split_vertically(h * 11 / 20);
+        // The hemisphere with its bar on the left, the profile beside it (issue 35: stacked,
+        // the figure was 928 units tall).
+        let (w, _) = body.dim_in_pixel();
+        let (left, right) = body.split_horizontally(w * 27 / 50);
         let (w, _) = left.dim_in_pixel();
         let (disk, bar) = left.split_horizontally(w.saturating_sub(96));
         draw_hemisphere(&disk, "(a) over the hemisphere", &self.grid, &self.scale)?;

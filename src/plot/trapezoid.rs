@@ -265,11 +265,11 @@ impl Fig3 {
     }
 }
 
-/// The legend strip's height: two rows of entries.
-const LEGEND_H: u32 = 44;
+/// The legend strip's height: three rows of entries.
+const LEGEND_H: u32 = 64;
 
-/// The legend, one entry per shape in the colours and strokes of every panel, in two rows of
-/// three under panel (a) (issue 25: drawn inside (a), its box covered part of the drawing).
+/// The legend, one entry per shape in the colours and strokes of every panel, in three rows of
+/// two under panel (a) (issue 25: drawn inside (a), its box covered part of the drawing).
 fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
     let entries: [(&str, RGBColor, Option<Stroke>); 6] = [
         ("frustum E", EDGE, Some(Stroke::Solid)),
@@ -280,19 +280,19 @@ fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), 
         ("axis-aligned box", AXIS_BOX, Some(Stroke::Dotted)),
     ];
     let (w, _) = area.dim_in_pixel();
-    let col_w = (w as i32 - 20) / 3;
+    let col_w = (w as i32 - 10) / 2;
     let style = TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
     for (i, (label, colour, stroke)) in entries.into_iter().enumerate() {
-        let (x, y) = (10 + (i as i32 % 3) * col_w, 11 + (i as i32 / 3) * 20);
+        let (x, y) = (5 + (i as i32 % 2) * col_w, 11 + (i as i32 / 2) * 20);
         let pieces: [(i32, i32); 4] = match stroke {
             None => [(0, 0); 4],
-            Some(Stroke::Solid) => [(0, 22); 4],
-            Some(Stroke::Dashed) => [(0, 8), (13, 22), (13, 22), (13, 22)],
-            Some(Stroke::Dotted) => [(0, 2), (7, 9), (14, 16), (20, 22)],
+            Some(Stroke::Solid) => [(0, 18); 4],
+            Some(Stroke::Dashed) => [(0, 7), (11, 18), (11, 18), (11, 18)],
+            Some(Stroke::Dotted) => [(0, 2), (5, 7), (11, 13), (16, 18)],
         };
         if stroke.is_none() {
             area.draw(&Rectangle::new(
-                [(x, y - 6), (x + 22, y + 6)],
+                [(x, y - 6), (x + 18, y + 6)],
                 HULL.mix(0.45).filled(),
             ))?;
         } else {
@@ -303,14 +303,14 @@ fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), 
                 ))?;
             }
         }
-        area.draw(&Text::new(label, (x + 28, y), style.clone()))?;
+        area.draw(&Text::new(label, (x + 22, y), style.clone()))?;
     }
     Ok(())
 }
 
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
-        (520, 960)
+        (520, 560)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -334,16 +334,16 @@ impl Figure for Fig3 {
         );
         let body = frame(
             root,
-            "Trapezoidal approximation against the smallest bounding box",
+            "The trapezoid against the smallest bounding box",
             &[caption.as_str()],
         )?;
-        // (b) and (c), both square, side by side under (a) (figure review 2: stacked, the
-        // figure was a 1 : 2.8 strip).
+        // (a) on the left, the legend in a strip of its own under it, where it covers nothing;
+        // (b) over (c), both square, on the right (issue 35: (a) over (b) and (c) made the
+        // figure 960 units tall).
         let (bw, bh) = body.dim_in_pixel();
-        let (top, rest) = body.split_vertically(bh - LEGEND_H - bw / 2 - 10);
-        // The legend in a strip of its own under (a), where it covers nothing.
-        let (strip, rest) = rest.split_vertically(LEGEND_H);
-        let panels = rest.split_evenly((1, 2));
+        let (left, right) = body.split_horizontally(bw / 2);
+        let (top, strip) = left.split_vertically(bh - LEGEND_H);
+        let panels = right.split_evenly((2, 1));
         let style = ChartStyle::default();
         // (a) Light space, equal aspect.
         let pts: Vec<DVec2> = self

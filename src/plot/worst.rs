@@ -39,12 +39,12 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
     let grid = SweepGrid::new(ELEVATIONS, AZIMUTHS)?;
     let k_axis = Axis::integer("number of z-partitions k", 1.0, 8.0);
     let mut abs = LineChart::new(
-        "(a) worst case over the hemisphere and light behind",
+        "(a) worst case, and behind",
         k_axis.clone(),
         Axis::log10("storage factor S̄ (log scale)", 10.0, 1e7),
     );
     let mut ratio = LineChart::new(
-        "(b) worst case / light behind",
+        "(b) worst case / behind",
         k_axis,
         Axis::log10("ratio (log scale)", 0.8, 6.0),
     );
@@ -69,12 +69,12 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
         // Behind, ZP+W equals ZP (drawn over it) and FP+ZP+W's worst case is its value
         // behind: one legend entry each for what shows.
         let (worst_label, behind_label) = match scheme {
-            Scheme::Zp => (format!("{name}, worst case (measured)"), None),
+            Scheme::Zp => (format!("{name}, worst (measured)"), None),
             Scheme::ZpW => (
-                format!("{name}, worst case (measured)"),
-                Some("ZP and ZP+W, behind (Eq 20)".to_string()),
+                format!("{name}, worst (measured)"),
+                Some("ZP, ZP+W behind (Eq 20)".to_string()),
             ),
-            _ => (format!("{name}, worst case = behind (Eq 21)"), None),
+            _ => (format!("{name}, worst = behind"), None),
         };
         abs.series
             .push(Series::line(worst_label, worst, PALETTE[c]).with_markers());
@@ -83,7 +83,7 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
         if matches!(scheme, Scheme::Zp | Scheme::ZpW) {
             // One curve for two schemes (ZP+W equals ZP behind): a neutral dashed grey, not
             // either scheme's colour, drawn twice alike, so that what shows is what the key
-            // "ZP and ZP+W, behind" shows.
+            // "ZP, ZP+W behind" shows.
             b.colour = SHARED;
         }
         abs.series.push(b);
@@ -105,11 +105,11 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
     }
     ratio.series.push(Series {
         width: 10,
-        ..Series::line("the paper's 2–3× (shaded)", Vec::new(), BAND).reference()
+        ..Series::line("the paper's 2–3×", Vec::new(), BAND).reference()
     });
     Ok(Charts {
-        size: (520, 788),
-        title: "Worst case over all light directions against the light-behind closed form".into(),
+        size: (520, 540),
+        title: "The worst light direction against the light behind".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, §5.3, which has no figure, claims the worst S̄ over all light \
              directions within 2–3 times the light-behind S̄. Here f/n = {ratio_fn}, θ = \
@@ -212,7 +212,7 @@ mod tests {
         let key = ratio
             .series
             .iter()
-            .find(|s| s.label.as_deref() == Some("the paper's 2–3× (shaded)"))
+            .find(|s| s.label.as_deref() == Some("the paper's 2–3×"))
             .unwrap();
         assert!(key.colour == band && key.width >= 8 && key.points.is_empty());
         let last_data = ratio.series.iter().rposition(|s| !s.reference).unwrap();
@@ -225,7 +225,7 @@ mod tests {
         let key = abs
             .series
             .iter()
-            .find(|s| s.label.as_deref() == Some("ZP and ZP+W, behind (Eq 20)"))
+            .find(|s| s.label.as_deref() == Some("ZP, ZP+W behind (Eq 20)"))
             .unwrap();
         // Series 1 is ZP behind, equal to ZP+W's (the key's) curve: drawn as the key shows
         // (it was a wider blue line under the orange dashes).

@@ -169,6 +169,9 @@ pub(crate) struct LineChart {
     pub y: Axis,
     pub series: Vec<Series>,
     pub legend: SeriesLabelPosition,
+    /// Whether the legend is drawn (a panel whose key another panel of the figure shows has
+    /// none).
+    pub show_legend: bool,
     pub notes: Vec<Note>,
     /// Horizontal bands shaded behind the series: from, to (data units of y), colour.
     pub bands: Vec<(f64, f64, RGBColor)>,
@@ -183,6 +186,7 @@ impl LineChart {
             y,
             series: Vec::new(),
             legend: SeriesLabelPosition::UpperRight,
+            show_legend: true,
             notes: Vec::new(),
             bands: Vec::new(),
         }
@@ -426,7 +430,10 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
             }
         }
     }
-    draw_legend(&plot, &entries, &c.legend, &obstacles)
+    if c.show_legend {
+        draw_legend(&plot, &entries, &c.legend, &obstacles)?;
+    }
+    Ok(())
 }
 
 /// The eight colours the line charts cycle through (colour-blind friendly, Okabe–Ito order).

@@ -139,9 +139,10 @@ impl super::super::Figure for Charts {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let caption: Vec<&str> = self.caption.iter().map(String::as_str).collect();
         let body = frame(root, &self.title, &caption)?;
-        // Side by side where each chart gets at least 380 units of width, stacked otherwise.
+        // Side by side where each chart gets at least 250 units of width (a pair on a
+        // double-column page), stacked otherwise (a single-column page).
         let n = self.charts.len().max(1);
-        let columns = (body.dim_in_pixel().0 as usize / 380).clamp(1, n);
+        let columns = (body.dim_in_pixel().0 as usize / 250).clamp(1, n);
         let panels = body.split_evenly((n.div_ceil(columns), columns));
         for (panel, chart) in panels.iter().zip(&self.charts) {
             draw_line_chart(panel, chart)?;
