@@ -256,6 +256,7 @@ def point_error(matrix: ArrayLike, light_dir: ArrayLike, point: ArrayLike, near:
 @overload
 def error_image(depth: ArrayLike, projection: ArrayLike, view: ArrayLike,
                 shadow_matrix: ArrayLike, *, map_resolution: int = ...,
+                map_resolutions: Optional[ArrayLike] = ...,
                 clip_depth: ClipDepth = ..., normals: Optional[ArrayLike] = ...,
                 map_index: Optional[ArrayLike] = ..., background: Optional[float] = ...,
                 fill: float = ..., return_jacobian: Literal[False] = ...,
@@ -266,6 +267,7 @@ def error_image(depth: ArrayLike, projection: ArrayLike, view: ArrayLike,
 @overload
 def error_image(depth: ArrayLike, projection: ArrayLike, view: ArrayLike,
                 shadow_matrix: ArrayLike, *, map_resolution: int = ...,
+                map_resolutions: Optional[ArrayLike] = ...,
                 clip_depth: ClipDepth = ..., normals: Optional[ArrayLike] = ...,
                 map_index: Optional[ArrayLike] = ..., background: Optional[float] = ...,
                 fill: float = ..., return_jacobian: Literal[True],

@@ -81,7 +81,9 @@ fn matrix(name: &str, ob: &Any<'_>) -> PyResult<(DMat4, DMat4)> {
 /// steps to the neighbouring points along the row and the column, each taken on the side whose
 /// depth differs less (so that an edge between two surfaces does not bend it). The error is the
 /// crate's exact footprint (``measure::surface_footprint``, the Jacobian J of screen pixel →
-/// surface → texel on that plane, for maps of ``map_resolution`` texels a side): 1/σ_min(J),
+/// surface → texel on that plane, for maps of ``map_resolution`` texels a side, or each its own
+/// with ``map_resolutions``, one whole number per matrix: ``frame(...)["resolution"]``):
+/// 1/σ_min(J),
 /// the most pixels one texel step covers: the error lens of the crate's
 /// ``FrameMap::error_lens_at`` (``Controller.error_lens``), the surface's projection factor
 /// included. Returns (H, W) float64 (into ``out`` if given):
@@ -95,7 +97,7 @@ fn matrix(name: &str, ob: &Any<'_>) -> PyResult<(DMat4, DMat4)> {
 /// where the error is ``fill``.
 #[pyfunction]
 #[pyo3(signature = (depth, projection, view, shadow_matrix, *, map_resolution=2048,
-    clip_depth="zero_to_one", normals=None, map_index=None, background=None,
+    map_resolutions=None, clip_depth="zero_to_one", normals=None, map_index=None, background=None,
     fill=f64::NAN, return_jacobian=false, out=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn error_image<'py>(
@@ -105,6 +107,7 @@ pub fn error_image<'py>(
     view: &Any<'py>,
     shadow_matrix: &Any<'py>,
     #[pyo3(from_py_with = args::map_resolution)] map_resolution: u32,
+    map_resolutions: Option<&Any<'py>>,
     #[pyo3(from_py_with = args::clip_depth)] clip_depth: &str,
     normals: Option<&Any<'py>>,
     map_index: Option<&Any<'py>>,
@@ -215,11 +218,37 @@ pub fn error_image<'py>(
         None => None,
         Some(ob) => Some(map_indices(ob, h, w, maps.len())?),
     };
-    let grids = Grids::new(w as u32, h as u32, map_resolution, map_resolution).map_err(|_| {
-        PyValueError::new_err(format!(
-            "map_resolution must be at least 1 (got {map_resolution})"
-        ))
-    })?;
+    let grids = match crate::frame::map_resolutions(map_resolutions)? {
+        None => {
+            let g =
+                Grids::new(w as u32, h as u32, map_resolution, map_resolution).map_err(|_| {
+                    PyValueError::new_err(format!(
+                        "map_resolution must be at least 1 (got {map_resolution})"
+                    ))
+                })?;
+            vec![g; maps.len()]
+        }
+        Some(each) if each.len() != maps.len() => {
+            return Err(PyValueError::new_err(format!(
+                "map_resolutions must hold one resolution per shadow matrix, {} (got {}): \
+                 frame(...)[\"resolution\"] for frame(...)[\"world_to_clip\"]",
+                maps.len(),
+                each.len()
+            )))
+        }
+        Some(each) => each
+            .iter()
+            .enumerate()
+            .map(|(i, &r)| {
+                Grids::new(w as u32, h as u32, r, r).map_err(|_| {
+                    PyValueError::new_err(format!(
+                        "map_resolutions must hold resolutions of at least 1 (got {r} at index \
+                         {i})"
+                    ))
+                })
+            })
+            .collect::<PyResult<Vec<_>>>()?,
+    };
     let target = Out::new(out, &[h, w], false)?;
     let camera = proj * view_m;
     let eye = inv_view.transform_point3(DVec3::ZERO);
@@ -298,7 +327,8 @@ struct Context<'a> {
     normals: Option<&'a [f64]>,
     index: Option<&'a [i64]>,
     maps: &'a [DMat4],
-    grids: Grids,
+    /// Each map's texel grid (its resolution).
+    grids: Vec<Grids>,
 }
 
 impl Context<'_> {
@@ -424,7 +454,7 @@ impl Context<'_> {
                 None => return Ok(none),
             },
         };
-        match surface_footprint(&self.camera, &self.maps[k], self.grids, p, nrm) {
+        match surface_footprint(&self.camera, &self.maps[k], self.grids[k], p, nrm) {
             // Only a singular J (edge-on to the light) has no finite error.
             Ok(fp) => {
                 let j = fp.jacobian;

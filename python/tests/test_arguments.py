@@ -80,6 +80,7 @@ _RULE_ARGS = {"eta": {"rule": "eta", "eta": 0.2}, "focus": {"rule": "tsm", "focu
               "far_hint": {"rule": "filament", "near_hint": 2.0, "far_hint": 50.0},
               "shadow_distance": {"rule": "ogre-ortho", "shadow_distance": 300.0}}
 CONTEXT = {
+    "error_image": {"map_resolutions": {"map_resolutions": [1024]}},
     "warp": _RULE_ARGS,
     "n_prime_for": _RULE_ARGS,
     "cascades": {"eta": _RULE_ARGS["eta"], "focus": {"rule": "tsm", "focus": 1.0},

@@ -183,3 +183,54 @@ def test_numpy_resolutions_are_taken():
 def test_bad_shared_resolution_is_refused_by_name(kw, exc, name):
     with pytest.raises(exc, match="^" + name):
         controller(**kw)
+
+
+def test_error_image_takes_each_maps_resolution():
+    """sa.error_image with ``map_resolutions=frame(...)["resolution"]``: each pixel's error, at
+    the map that covers it, against test_error_image's ray cast and central differences of
+    pixel → texel at that map's own resolution."""
+    from test_error_image import (FAR as FAR_I, H as HI, NEAR as NEAR_I, THETA, W as WI,
+                                  ground_depth, look_at, perspective, pixel_ndc, texel_of_pixel)
+    aspect = WI / HI
+    proj = perspective(NEAR_I, FAR_I, THETA, aspect)
+    view = look_at([0.0, 3.0, 0.0], [0.0, 0.0, -30.0])
+    each = [2048, 512, 128]
+    f = sa.frame(view, NEAR_I, FAR_I, THETA, [0.3, -1.0, 0.2], aspect=aspect, scheme="cascades",
+                 k=3, partition="log", receivers=[[[-300, -1, -300], [300, 0, 300]]],
+                 map_resolutions=each)
+    ms, res = f["world_to_clip"], f["resolution"]
+    assert np.array_equal(res, np.array(each)[f["slot"]])
+    depth, ok = ground_depth(proj, view, HI, WI)
+    err = sa.error_image(depth, proj, view, ms, map_resolutions=res)
+    # The first map whose square holds each pixel's point, found here.
+    xs, ys = pixel_ndc(HI, WI)
+    c = np.stack([xs, ys, depth, np.ones_like(xs)], -1) @ np.linalg.inv(proj @ view).T
+    p = np.concatenate([c[..., :3] / c[..., 3:], np.ones((HI, WI, 1))], -1)
+    lc = np.einsum("mij,hwj->mhwi", ms, p)
+    inside = (lc[..., 3] > 0) & (np.abs(lc[..., 0]) <= lc[..., 3]) & (np.abs(lc[..., 1]) <= lc[..., 3])
+    first = np.where(inside.any(0), inside.argmax(0), -1)
+    used = set()
+    e = 1e-3
+    for y, x in zip(*np.nonzero(ok & (first >= 0))):
+        k = first[y, x]
+        tex = texel_of_pixel(proj, view, ms[k], res[k])
+        u, v = x + 0.5, y + 0.5
+        j = np.column_stack([(tex(u + e, v) - tex(u - e, v)) / (2 * e),
+                             (tex(u, v + e) - tex(u, v - e)) / (2 * e)])
+        assert err[y, x] == pytest.approx(1 / np.linalg.svd(j, compute_uv=False)[-1], rel=1e-5)
+        used.add(int(k))
+    assert len(used) >= 2, used
+
+
+@pytest.mark.parametrize("value, name", [
+    ([1024, 1024], r"map_resolutions must hold one resolution per shadow matrix, 3 \(got 2\)"),
+    ([1024, 0, 1024], r"map_resolutions must hold resolutions of at least 1 \(got 0 at index 1\)"),
+    ([1024, 1.5, 1024], r"map_resolutions must hold whole numbers"),
+    ("1024", r"map_resolutions"),
+])
+def test_error_image_refuses_bad_map_resolutions_by_name(value, name):
+    f = build(walk_view(60), PRACTICAL)
+    exc = TypeError if isinstance(value, str) else ValueError
+    with pytest.raises(exc, match="^" + name):
+        sa.error_image(np.full((4, 4), 0.5), np.eye(4), np.eye(4), f["world_to_clip"],
+                       map_resolutions=value)
