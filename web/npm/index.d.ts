@@ -208,7 +208,8 @@ export interface MapError {
   max_mz: number;
   storage_factor: number;
 }
-/** The crate's measurement of any world → clip matrix over the view slice `cover` ∩ receivers. */
+/** The crate's measurement of any world → clip matrix over the view slice `cover` ∩ receivers, at
+ * the input's map_resolution (its map_resolutions are not read). */
 export function measureMap(
   input: FrameInput,
   cover: readonly [number, number],

@@ -141,8 +141,9 @@ export function errorLens(input, points, normals, map = 0) {
 
 /**
  * The crate's measurement of any world → clip matrix (another engine's cascade) over the view
- * slice `cover` = [z0, z1] ∩ the receivers: {max_error_pixels, max_mx, max_mz, storage_factor},
- * or null where the slice holds no receiver.
+ * slice `cover` = [z0, z1] ∩ the receivers: {max_error_pixels, max_mx, max_mz, storage_factor}
+ * at the input's map_resolution (its map_resolutions are not read), or null where the slice
+ * holds no receiver.
  */
 export function measureMap(input, cover, worldToClip) {
   const r = call('measure_map', { input, cover, world_to_clip: worldToClip });

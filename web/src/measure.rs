@@ -9,12 +9,13 @@
 use crate::args::{field, mat4, num, numbers, WebError, WebResult};
 use crate::frame::FrameArgs;
 use serde_json::{json, Map, Value};
-use shadow_aliasing::frame::{frame as build_frame, FrameScheme};
+use shadow_aliasing::frame::{frame as build_frame, FrameInput, FrameScheme};
 use shadow_aliasing::maps::WarpRule;
 use shadow_aliasing::measure::vertex::vertex_max;
 
-/// `measure_map`: `input` (a frame input: camera, light, receivers, map resolution, image
-/// height), `cover` ([z₀, z₁], view depths) and `world_to_clip` (16 numbers, column-major).
+/// `measure_map`: `input` (a frame input: camera, light, receivers, the matrix's resolution as
+/// `map_resolution` — its `map_resolutions` are not read —, image height), `cover` ([z₀, z₁],
+/// view depths) and `world_to_clip` (16 numbers, column-major).
 /// Answers `{max_error_pixels, max_mx, max_mz, storage_factor}`, or `null` where B is empty (the
 /// slice misses the receivers or the camera's [near, far]).
 pub fn measure_map(req: &Map<String, Value>) -> WebResult<Value> {
@@ -53,11 +54,14 @@ pub fn measure_map(req: &Map<String, Value>) -> WebResult<Value> {
     if z0 >= view.far() || z1 <= view.near() {
         return Ok(Value::Null);
     }
-    let input = a
-        .input()
-        .depth_range(z0, z1)
-        .scheme(FrameScheme::Single(WarpRule::Uniform))
-        .measure(false);
+    // One map, of `map_resolution` texels: the input's resolutions per partition are not read.
+    let input = FrameInput {
+        map_resolutions: None,
+        ..a.input()
+    }
+    .depth_range(z0, z1)
+    .scheme(FrameScheme::Single(WarpRule::Uniform))
+    .measure(false);
     let f = build_frame(&input)?;
     let Some(map) = f.maps().iter().next() else {
         return Ok(Value::Null);

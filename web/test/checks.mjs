@@ -300,6 +300,10 @@ test('each map has its own resolution: its texel from the matrix, its error as 1
     // The warp and the fit do not depend on the resolution; the error is one texel's size.
     assert.deepEqual(Array.from(m.world_to_clip), Array.from(one.maps[i].world_to_clip));
     close(m.max_error_pixels * each[m.slot], one.maps[i].max_error_pixels * 1024, 1e-12, `map ${i}'s error`);
+    // The matrix measured over its slice at its own resolution (the input's map_resolutions
+    // are not read there): the frame's own error.
+    const inp = { ...input, scheme: UNIFORM_CASCADES, map_resolutions: each, map_resolution: each[m.slot] };
+    close(measureMap(inp, m.split, m.world_to_clip).max_error_pixels, m.max_error_pixels, 1e-9, `map ${i} measured`);
   });
   // Stable cascades snap to whole texels of their own resolution: the world origin lands at a
   // whole number of texels from each map's centre (clip s and t span 2 over its texels).
