@@ -182,6 +182,12 @@ fn a_still_camera_keeps_each_map() {
     .unwrap();
     let inp = input(camera(60), &boxes);
     let first: Vec<u32> = c.frame(&inp).unwrap().resolutions.to_vec();
+    // An input's own resolutions are the controller's to choose: ignored, on a cut too.
+    let odd = [7u32];
+    c.cut();
+    let d = c.frame(&inp.map_resolutions(&odd)).unwrap();
+    assert_eq!(d.resolutions, &first[..]);
+    assert!(!d.switched && d.cut);
     for i in 1..60 {
         let d = c.frame(&inp).unwrap();
         assert!(!d.switched && !d.cut, "frame {i}");

@@ -196,14 +196,19 @@ impl Controller {
         self.last = None;
     }
 
-    /// This frame's set-up and maps for `input` (its scheme, map resolution and `measure` are
-    /// ignored).
+    /// This frame's set-up and maps for `input` (its scheme, `map_resolution`,
+    /// `map_resolutions` and `measure` are ignored).
     ///
     /// # Errors
     /// Any error of the frame for the input (its first candidate's, on a cut where none builds);
     /// `receivers` where no candidate builds a map (they are out of view or edge-on to the
     /// light); `max_maps` where every candidate that builds has more maps.
     pub fn frame(&mut self, input: &FrameInput<'_>) -> Result<Decision<'_>> {
+        // The resolutions are the controller's to choose.
+        let input = &FrameInput {
+            map_resolutions: None,
+            ..*input
+        };
         let eye_to_world = input.camera.world_to_eye().inverse();
         let now = (
             eye_to_world.transform_point3(glam::DVec3::ZERO),
