@@ -11,7 +11,7 @@
 mod scene;
 
 use bevy::app::PluginsState;
-use bevy::camera::{PerspectiveProjection, Projection, RenderTarget};
+use bevy::camera::{Hdr, PerspectiveProjection, Projection, RenderTarget};
 use bevy::core_pipeline::tonemapping::{DebandDither, Tonemapping};
 use bevy::image::Image;
 use bevy::light::{
@@ -160,13 +160,19 @@ impl Harness {
         }
     }
 
-    /// Renders with `mode`, `msaa` and the lens at `opacity` until two read-back frames agree.
-    fn render(&mut self, mode: &CascadeMode, msaa: Msaa, opacity: f32) -> Capture {
+    /// Renders with `mode`, `msaa`, an HDR view or not and the lens at `opacity` until two
+    /// read-back frames agree.
+    fn render(&mut self, mode: &CascadeMode, msaa: Msaa, hdr: bool, opacity: f32) -> Capture {
         {
             let world = self.app.world_mut();
             *world.get_mut::<CascadeMode>(self.light).unwrap() = mode.clone();
             world.get_mut::<ErrorLens>(self.camera).unwrap().opacity = opacity;
             *world.get_mut::<Msaa>(self.camera).unwrap() = msaa;
+            if hdr {
+                world.entity_mut(self.camera).insert(Hdr);
+            } else {
+                world.entity_mut(self.camera).remove::<Hdr>();
+            }
         }
         for _ in 0..3 {
             self.app.update();
@@ -419,14 +425,16 @@ fn save(name: &str, cap: &Capture) {
 fn the_overlay_draws_the_lens_of_bevys_and_the_budgets_cascades() {
     let mut h = Harness::new();
     let budget = CascadeMode::Budget(Budget::new(0.75));
-    // The prepass is multisampled under MSAA: the pass reads its first sample.
+    // The prepass is multisampled under MSAA: the pass reads its first sample. An HDR view
+    // (without tone mapping) holds the image in a float texture until Bevy's upscaling pass.
     let modes = [
-        ("bevy", CascadeMode::Measure, Msaa::Off),
-        ("budget", budget.clone(), Msaa::Off),
-        ("budget_msaa4", budget, Msaa::Sample4),
+        ("bevy", CascadeMode::Measure, Msaa::Off, false),
+        ("budget", budget.clone(), Msaa::Off, false),
+        ("budget_msaa4", budget.clone(), Msaa::Sample4, false),
+        ("budget_hdr", budget, Msaa::Off, true),
     ];
-    for (name, mode, msaa) in &modes {
-        let cap = h.render(mode, *msaa, 1.0);
+    for (name, mode, msaa, hdr) in &modes {
+        let cap = h.render(mode, *msaa, *hdr, 1.0);
         assert_eq!(cap.maps.light, Some(h.light), "{name}");
         assert_eq!(cap.maps.maps.len(), cap.cascades.len(), "{name}");
         check_legend(&cap, name);
@@ -468,8 +476,8 @@ fn the_overlay_draws_the_lens_of_bevys_and_the_budgets_cascades() {
             t.per_cascade.iter().filter(|&&c| c > 50).count() >= 2,
             "{name}: {t:?}"
         );
-        if std::env::var_os("SHADOW_ALIASING_BEVY_IMAGES").is_some() && *msaa == Msaa::Off {
-            let shot = h.render(mode, *msaa, ErrorLens::default().opacity);
+        if std::env::var_os("SHADOW_ALIASING_BEVY_IMAGES").is_some() && *msaa == Msaa::Off && !hdr {
+            let shot = h.render(mode, *msaa, *hdr, ErrorLens::default().opacity);
             save(&format!("lens_{name}"), &shot);
         }
     }
