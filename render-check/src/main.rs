@@ -306,7 +306,8 @@ fn run_self_test() -> Result<(), String> {
         let targets: Vec<String> = r
             .targets
             .iter()
-            .map(|(t, n)| format!("{t} ({n})"))
+            // A target's own bars (|x − 0.8|) escaped: the line is a Markdown table row.
+            .map(|(t, n)| format!("{} ({n})", t.replace('|', "\\|")))
             .collect();
         println!(
             "| {name} | {} / {} | {} | {} |",
