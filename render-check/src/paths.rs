@@ -136,7 +136,7 @@ pub const CENTRE_TOLERANCE: f64 = 0.02;
 
 /// The `f32` rounding of two compared depths the need allows (8 ulps at depth 1, as the crate's
 /// bias does).
-const ROUNDING: f64 = 8.0 * f32::EPSILON as f64;
+pub const ROUNDING: f64 = 8.0 * f32::EPSILON as f64;
 
 /// How close (depth units) the lookup's depth and a stored depth must be for the GPU's `f32` to
 /// be taken as possibly on the other side: 5·10⁻⁷ plus the plane's depth change over
