@@ -284,7 +284,7 @@ impl Frame<'_> {
         f64::from(self.depth[part * r * r + iy as usize * r + ix as usize])
     }
 
-    /// The model of `sa_visibility` for the world point `p` with unit normal `n` in map `part`.
+    /// The model of `sa_visibility` for the pixel `e` in its map `m`.
     fn lookup(&self, m: &MapModel, e: &Exact, path: &Path) -> Modelled {
         let (part, p, n, plane) = (e.part, e.p, e.n, &e.plane);
         let res = f64::from(self.res);
@@ -527,6 +527,13 @@ pub fn check(
     s.render.lookup = Lookup::FirstSurface;
     let up = Upload::new(&built, &mesh, s);
     let input = up.input(&view, &mesh, &built, res, s);
+    // The model reads every map at `res` texels a side, as the records say the shader does.
+    if let Some(m) = built.maps.iter().find(|m| m.record.resolution != res) {
+        return Err(format!(
+            "shader paths: a record of {} texels a side in a frame of {res}",
+            m.record.resolution
+        ));
+    }
     let plain: Vec<GpuShadowMap> = built.maps.iter().map(|m| m.record).collect();
     let pcf1: Vec<GpuShadowMap> = built.maps.iter().map(|m| m.record_pcf1).collect();
     let passes: Vec<PathPass> = PATHS
