@@ -32,21 +32,7 @@ fn options(shared: bool) -> ControllerOptions {
 /// A map's largest error over its body at one texel a side, pixels × texels: from its matrix
 /// alone by central differences.
 fn product(m: &FrameMap, inp: &FrameInput<'_>) -> f64 {
-    let l = inp
-        .camera
-        .world_to_eye()
-        .transform_vector3(inp.light_dir_world)
-        .normalize();
-    let tan = inp.camera.view().tan_half_fov();
-    let mat = m.shadow.matrix();
-    m.body()
-        .iter()
-        .map(|p| {
-            let (mx, mz) = common::audit::audit_point(&mat, l, *p, tan);
-            mx.max(mz)
-        })
-        .fold(0.0, f64::max)
-        * f64::from(H)
+    common::audit::body_max(m, inp) * f64::from(H)
 }
 
 /// The least power of two at least `need` and at least 3 (the frame's least map), by hand.

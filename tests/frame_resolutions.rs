@@ -61,22 +61,7 @@ fn input<'a>(cam: Camera, g: &'a [Aabb], s: FrameScheme<'a>) -> FrameInput<'a> {
 
 /// The largest error over the map's body in pixels at `res` texels, from the matrix alone.
 fn audited(m: &shadow_aliasing::frame::FrameMap, inp: &FrameInput<'_>, res: u32) -> f64 {
-    let l = inp
-        .camera
-        .world_to_eye()
-        .transform_vector3(inp.light_dir_world)
-        .normalize();
-    let tan = inp.camera.view().tan_half_fov();
-    let mat = m.shadow.matrix();
-    m.body()
-        .iter()
-        .map(|p| {
-            let (mx, mz) = common::audit::audit_point(&mat, l, *p, tan);
-            mx.max(mz)
-        })
-        .fold(0.0, f64::max)
-        * f64::from(H)
-        / f64::from(res)
+    common::audit::body_max(m, inp) * f64::from(H) / f64::from(res)
 }
 
 /// An orthographic map's texel edges in world units, from its world → clip matrix alone: clip

@@ -25,3 +25,26 @@ pub fn audit_point(m: &DMat4, l: DVec3, p: DVec3, tan: f64) -> (f64, f64) {
     let pixel = 2.0 * -p.z * tan;
     (grad_t / det / pixel, 1.0 / grad_t / pixel)
 }
+
+/// The largest per-point error (max of m_x, m_z at unit resolutions, [`audit_point`]) over a
+/// frame map's focus body, from its eye → light clip matrix alone, for the frame input it was
+/// built from (its light and field of view).
+pub fn body_max(
+    m: &shadow_aliasing::frame::FrameMap,
+    inp: &shadow_aliasing::frame::FrameInput<'_>,
+) -> f64 {
+    let l = inp
+        .camera
+        .world_to_eye()
+        .transform_vector3(inp.light_dir_world)
+        .normalize();
+    let tan = inp.camera.view().tan_half_fov();
+    let mat = m.shadow.matrix();
+    m.body()
+        .iter()
+        .map(|p| {
+            let (mx, mz) = audit_point(&mat, l, *p, tan);
+            mx.max(mz)
+        })
+        .fold(0.0, f64::max)
+}

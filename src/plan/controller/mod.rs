@@ -234,8 +234,7 @@ impl Controller {
         let (setup, err) = match (cut, before) {
             (false, Some(kept)) if shared => self.steady(input, kept)?,
             (false, Some(kept)) => self.steady_each(input, kept)?,
-            _ if shared => self.search(input)?,
-            _ => self.search_each(input)?,
+            _ => self.search(input)?,
         };
         if cut || before.is_none_or(|b| b.scheme != setup.scheme) {
             self.down = [0; MAX_PARTITIONS];
@@ -624,8 +623,10 @@ impl Controller {
         Ok(None)
     }
 
-    /// A cut: every candidate built once at `max_resolution` and measured; the fewest texels
-    /// that meet the target within each one's cap, else the least error at its cap.
+    /// A cut: every allowed candidate built once at `max_resolution` and measured; with a
+    /// shared resolution (`search_in`) the fewest texels that meet the target
+    /// within each one's cap, else the least error at its cap; with a resolution per map, as
+    /// `per_map.rs` says.
     fn search(&mut self, input: &FrameInput<'_>) -> Result<(Setup, f64)> {
         self.allowed = match &self.options.candidates {
             Some(l) => l.clone(),
@@ -636,7 +637,11 @@ impl Controller {
         };
         self.missed = 0;
         let list = std::mem::take(&mut self.allowed);
-        let found = self.search_in(input, &list);
+        let found = if self.options.shared_resolution {
+            self.search_in(input, &list)
+        } else {
+            self.search_each_in(input, &list)
+        };
         self.allowed = list;
         found
     }

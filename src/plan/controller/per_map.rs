@@ -26,7 +26,6 @@ use crate::analytic::partition::MAX_PARTITIONS;
 use crate::error::Result;
 use crate::frame::{Frame, FrameInput, FrameScheme};
 use crate::plan::allocate::{allocate, MapError};
-use crate::plan::candidates::candidates;
 
 /// Each slot's error × resolution (pixels × texels) in `f`; `None` for a slot without a map.
 fn products(f: &Frame, out: &mut Vec<Option<f64>>) {
@@ -114,30 +113,15 @@ fn setup(scheme: FrameScheme<'static>, each: [u32; MAX_PARTITIONS]) -> Setup {
 }
 
 impl Controller {
-    /// A cut with a resolution per map (module docs).
-    pub(super) fn search_each(&mut self, input: &FrameInput<'_>) -> Result<(Setup, f64)> {
-        self.allowed = match &self.options.candidates {
-            Some(l) => l.clone(),
-            None => candidates(input)
-                .into_iter()
-                .filter(|s| !matches!(s, FrameScheme::Clipmap(_)))
-                .collect(),
-        };
-        self.missed = 0;
-        self.fractions.clear();
-        let list = std::mem::take(&mut self.allowed);
-        let found = self.search_each_in(input, &list);
-        self.allowed = list;
-        found
-    }
-
-    fn search_each_in(
+    /// A cut with a resolution per map (module docs), over the allowed `list`.
+    pub(super) fn search_each_in(
         &mut self,
         input: &FrameInput<'_>,
         list: &[FrameScheme<'static>],
     ) -> Result<(Setup, f64)> {
         let top = self.options.max_resolution;
         let target = self.options.max_error;
+        self.fractions.clear();
         // (texels, error, index, resolutions) of those that meet the target; (least error,
         // index, resolutions) of every one built.
         let mut meet = Vec::new();
@@ -242,7 +226,7 @@ impl Controller {
         kept: Setup,
     ) -> Result<(Setup, f64)> {
         let Ok(err) = self.build_kept(input, setup(kept.scheme, kept.each)) else {
-            return self.search_each(input);
+            return self.search(input);
         };
         products(&self.frame, &mut self.products);
         let margin = self.options.margin;
@@ -273,7 +257,7 @@ impl Controller {
                 }
                 self.missed += 1;
                 if !self.least || self.missed >= self.options.retry_every {
-                    return self.search_each(input);
+                    return self.search(input);
                 }
                 let e = self.build_kept(input, setup(kept.scheme, kept.each))?;
                 return self.neighbour_each(input, kept, e);
