@@ -1,7 +1,8 @@
 //! The figures fit a journal page (issue 35): every figure, captioned and bare, is at most
 //! 640 pt tall (a 9-inch text block is 648 pt) at its 520 pt width, and the figures whose two
 //! panels were stacked now have them side by side. Read from the SVGs as written: their `width`
-//! and `height` in points, and the positions of the panels' titles.
+//! and `height` in points, the positions of the panels' titles, and the caption's lines (at most
+//! five).
 #![cfg(feature = "plot")]
 
 use shadow_aliasing::plot::{render_with, Format, Options, FIGURES};
@@ -19,8 +20,11 @@ const OVER: &[(&str, &str)] = &[(
 )];
 
 fn svg(name: &str, bare: bool) -> String {
+    // One folder per call: tests rendering the same figure at once must not share it.
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
-        "figures-page-fit-{name}-{bare}-{}",
+        "figures-page-fit-{name}-{bare}-{}-{call}",
         std::process::id()
     ));
     let opts = Options {
@@ -107,4 +111,20 @@ fn panel_pairs_are_side_by_side() {
         );
         assert!(b.0 - a.0 >= 200.0, "{name}: (a) at {a:?}, (b) at {b:?}");
     }
+}
+
+/// Every caption is at most five lines (issue 35: nine had six, and earlier ones 17 to 20):
+/// the caption's lines are the grey (#323232) texts of the captioned SVG, one `<text>` a line.
+#[test]
+fn every_caption_is_at_most_five_lines() {
+    let mut bad = Vec::new();
+    for &name in FIGURES {
+        let s = svg(name, false);
+        let lines = s.matches("fill=\"#323232\"").count();
+        assert!(lines >= 1, "{name}: no caption");
+        if lines > 5 {
+            bad.push(format!("{name}: {lines} caption lines"));
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
 }

@@ -128,10 +128,10 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![format!(
             "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n = {n}, f = {f}, φ_y = π/6. Bold: the \
-             paper's curve, with Barroso's fall-off r(γ); for comparison Zhang's fall-off, \
-             LiSPSM's rule and the n′ of least M_z over the frustum. Each branch of Eq 13 is drawn \
-             on its own domain. (b) enlarges γ from {}° to {}°, where the curves part; the least-M_z \
-             curve turns near γ = φ_y, where the frustum corner of largest m_z changes.",
+             paper's curve (Barroso's fall-off r(γ)); for comparison Zhang's fall-off, LiSPSM's \
+             rule and the n′ of least M_z over the frustum; Eq 13's branches each on its domain. \
+             (b) enlarges γ from {}° to {}°: the least-M_z curve turns near γ = φ_y, where the \
+             frustum corner of largest m_z changes.",
             window.0, window.1
         )],
         charts: vec![c, zoom],

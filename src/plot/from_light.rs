@@ -188,12 +188,11 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     zoom_c.window = Some(bounds(&eq19.sections[..4]));
     let panels = vec![perpendicular, parallel, eq19, zoom, zoom_b, zoom_c];
     let caption = format!(
-        "Barroso & Celes 2007, Fig. 5: the view frustum seen from the light with k = {k} \
-         z-partitions, n = {n}, f = {f}, φ = {phi:.0}°. (a) Light perpendicular to the view \
-         direction and (b) parallel to it, with Eq 5's self-similar partitions: z = {}. (c), not in \
-         the paper's figure: Eq 19's adaptive partitions for a light {gamma_deg:.0}° from the view \
-         direction (α = {ADAPTIVE_RATIO}): z = {}. (d)–(f) enlarge (a)–(c) near the eye. Dashed: \
-         each partition's map.",
+        "Barroso & Celes 2007, Fig. 5: the frustum seen from the light, k = {k} \
+         z-partitions, n = {n}, f = {f}, φ = {phi:.0}°. (a) Light perpendicular to the view, (b) \
+         parallel: Eq 5's self-similar partitions, z = {}. (c), not in the paper: Eq 19's adaptive \
+         ones for a light {gamma_deg:.0}° from the view (α = {ADAPTIVE_RATIO}), z = {}. (d)–(f) \
+         enlarge (a)–(c) near the eye. Dashed: the maps.",
         fmt_planes(ss.planes()),
         fmt_planes(ad.planes()),
         n = view.near(),
@@ -258,12 +257,11 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
     ];
     p.window = Some((DVec2::new(-sf, -sf - 1.2), DVec2::new(sf, sf)));
     let caption = format!(
-        "Lloyd et al. 2006, Fig. 11: the view frustum seen from a light behind the viewer, \
-         n = {n}, f = {f}, θ = {theta:.0}°, drawn to scale: the near face inside the far face, the \
-         side faces between them. With k = {k} self-similar z-partitions (planes {}) each map \
-         (dashed) is the square of its far plane, so the nearer maps lie inside the farther ones: \
-         the overlap §5.3 blames for ZP's growth behind. The paper's sketch writes the sides 2n \
-         and 2f, their values at θ = 45°.",
+        "Lloyd et al. 2006, Fig. 11: the frustum seen from a light behind the viewer, \
+         n = {n}, f = {f}, θ = {theta:.0}°, to scale. With \
+         k = {k} self-similar z-partitions (planes {}) each map (dashed) is the square of its far \
+         plane, so the nearer maps lie inside the farther ones: the overlap §5.3 blames for ZP's \
+         growth behind. The paper's sketch writes the sides 2n and 2f, their values at θ = 45°.",
         fmt_planes(p.planes.as_slice()),
         n = view.near(),
         f = view.far(),

@@ -170,13 +170,11 @@ impl Figure for Fig8 {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let shown = &self.cells[self.shown];
         let caption = format!(
-            "Lloyd et al. 2005, Fig. 8: face partitioning with k = {} z-partitions per face, \
-             LiSPSM-warped, n = {NEAR}, f = {FAR}, θ = {THETA_DEG}°, light {}° above the horizon \
-             and {}° right of straight behind. (a) The partitions seen from the light (R, L, T, N: \
-             right, left, top, near face; 1 near, 2 far). (b) {} and its map's texel grid. (c) The \
-             texture by Eq 6, widths by M_x, heights by M_z: \"share\" is a partition's part of the \
-             width × height, \"after\" its M_x and M_z over those parts. The paper's panels are \
-             sketches.",
+            "Lloyd et al. 2005, Fig. 8: face partitions with k = {} z-partitions each, \
+             LiSPSM-warped, n = {NEAR}, f = {FAR}, θ = {THETA_DEG}°, light {}° high, {}° right of \
+             behind. (a) From the light (R, L, T, N: right, left, top, near face; 1 near, 2 far). \
+             (b) {} and its map's texel grid. (c) The texture by Eq 6: \"share\" is a partition's \
+             part of its width × height, \"after\" its M_x and M_z over those parts.",
             self.k,
             LIGHT.0,
             LIGHT.1,

@@ -316,12 +316,11 @@ impl Figure for Fig3 {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let wins = self.wins.unwrap_or((f64::NAN, f64::NAN));
         let caption = format!(
-            "Martin & Tan 2004, Figs. 3 and 4: the 80 % rule's trapezoid T (focus δ = {FOCUS}), \
-             n = {}, f = {}, θ = {}°, light {}° above the horizon, {}° round from behind the \
-             viewer to its right. (a) From the light: the frustum E, its hull C (filled), the \
-             focus region, T and the smallest box B. Unlike the paper, B may be rotated (§5; \
-             dotted: unrotated). C covers {:.1} % of the map in T's space (b), {:.1} % in B's \
-             (c), {:.1} % unrotated; over all lights T beats B for {:.0} % of them.",
+            "Martin & Tan 2004, Figs. 3 and 4: the 80 % rule's trapezoid T (δ = {FOCUS}), \
+             n = {}, f = {}, θ = {}°, light {}° high, {}° round from behind to the viewer's right. \
+             (a) From the light: frustum E, hull C, focus region, T and smallest box B. Unlike the paper, B may be rotated (§5; dotted: unrotated). C covers {:.1} % \
+             of the map in T's space (b), {:.1} % in B's (c), {:.1} % unrotated; T wins for {:.0} % \
+             of lights.",
             VIEW.0,
             VIEW.1,
             VIEW.2,

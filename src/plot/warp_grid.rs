@@ -133,12 +133,11 @@ impl Figure for Fig4 {
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let caption = format!(
-            "Lloyd et al. 2006, Fig. 4, drawn from the warped matrices: n = {n}, f = {f}, θ = \
-             {theta:.0}°, light overhead, the plane y = 0; one column per n′. Top: seen from the \
-             light, the map's {LINES} × {LINES} texel grid (blue) over the view frustum (black), \
-             pressed towards the near plane by the warp. Bottom: in the shadow map, the frustum's \
-             planes of constant depth (orange) and rays from the eye (green). The paper's rows are \
-             sketches.",
+            "Lloyd et al. 2006, Fig. 4, from the warped matrices: n = {n}, f = {f}, θ = \
+             {theta:.0}°, light overhead, the plane y = 0; one column per n′. Top: from the light, \
+             the map's {LINES} × {LINES} texel grid (blue) over the frustum (black), pressed to \
+             the near plane by the warp. Bottom: in the map, the frustum's planes of constant depth \
+             (orange) and rays from the eye (green). The paper's rows are sketches.",
             n = self.view.near(),
             f = self.view.far(),
             theta = self.view.half_fov().to_degrees(),

@@ -111,11 +111,10 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
         size: (520, 540),
         title: "The worst light direction against the light behind".into(),
         caption: vec![format!(
-            "Lloyd et al. 2006, §5.3, which has no figure, claims the worst S̄ over all light \
-             directions within 2–3 times the light-behind S̄. Here f/n = {ratio_fn}, θ = \
-             {theta:.0}°: the worst case measured on each scheme's matrices for light directions \
-             {step}° apart (as in Fig. 7) over S̄ behind (Eq 20, 21): {}. Behind, ZP+W equals ZP, \
-             and FP+ZP+W's worst case is its value behind.",
+            "Lloyd et al. 2006, §5.3 (no figure) claims the worst S̄ over all light directions \
+             within 2–3 times the light-behind S̄. f/n = {ratio_fn}, θ = {theta:.0}°: the worst \
+             case measured on each scheme's matrices for lights {step}° apart (as in Fig. 7) over \
+             S̄ behind (Eq 20, 21): {}. Behind, ZP+W equals ZP; FP+ZP+W's worst case is behind.",
             extremes.join("; "),
             ratio_fn = view.far() / view.near(),
             theta = view.half_fov().to_degrees(),

@@ -136,9 +136,8 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     let caption = vec![format!(
         "Zhang et al. 2009, Fig. 3: E_p = 2 m_z and E_q = 2 m_x measured on each scheme's matrix \
          in the frustum's vertical plane, n = {n}, f = {f}, φ = π/6, the light above and in front \
-         of the viewer at angle θ = {} to the view direction. LiSPSM: λ = (n + √(fn))/sin θ = {}; \
-         TSM: the 80 % rule, focus δ = {TSM_FOCUS}. Unlike the paper, each quantity has its own \
-         log₅ colour bar, and the scene insets beside the rows are left out.",
+         at θ = {} to the view. LiSPSM: λ = (n + √(fn))/sin θ = {}; TSM: the 80 % rule, focus \
+         δ = {TSM_FOCUS}. Unlike the paper, a log₅ colour bar per quantity; no scene insets.",
         angles.join(", "),
         lispsm.join(", "),
     )];
