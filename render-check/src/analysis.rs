@@ -26,7 +26,7 @@ use crate::perspective::{centred, lloyd2006, one_sided, perspective_error};
 use crate::ratios::{frame_ratios, lens_ratios};
 use crate::scene::{ray_occluded, Mesh, Scene, FACING};
 use crate::schemes::{Built, Scheme, View};
-use crate::shadows::{debug_pixel, shadow_decidable, MapGeom};
+use crate::shadows::{debug_pixel, shadow_verdict, MapGeom};
 use crate::warpfit::{warp_fits, warp_measures};
 use glam::{DMat2, DVec2, DVec3};
 use serde::Serialize;
@@ -193,9 +193,10 @@ pub(crate) struct Pixel {
     /// The map the shader selected (`usize::MAX` when it named none of the built maps).
     pub(crate) part: usize,
     predicted: Option<Footprint>,
-    /// Whether the shadow comparison decides this pixel (outside the texel band; in a blend
-    /// band, outside the texel band of both its maps).
-    decidable: bool,
+    /// The verdict the lookup must give (in shadow: `true`), where the shadow comparison decides
+    /// this pixel (every texel ray it may read gives one exact verdict; in a blend band, both its
+    /// maps give the same); `None` in the band left out.
+    verdict: Option<bool>,
     /// Whether every map of the pixel's blend band by the frame (`blend::band_maps`) holds its exact
     /// point in its clip volume (true outside a band).
     band_covered: bool,
@@ -207,7 +208,7 @@ const SKY: Pixel = Pixel {
     n: DVec3::ZERO,
     part: usize::MAX,
     predicted: None,
-    decidable: false,
+    verdict: None,
     band_covered: true,
 };
 
@@ -277,24 +278,18 @@ fn first_pass(
             if !used.contains(&part) {
                 used.push(part);
             }
-            let (class, decidable) = if facing {
+            let (class, verdict) = if facing {
                 let occ = ray_occluded(scene, pw, surf.normal, view.light_world);
-                let decidable = used.iter().all(|&k| {
-                    maps.get(k).is_some_and(|m| {
-                        shadow_decidable(
-                            scene,
-                            m,
-                            f64::from(res),
-                            pw,
-                            surf.normal,
-                            view.light_world,
-                            occ,
-                        )
+                let mut verdicts = used.iter().map(|&k| {
+                    maps.get(k).and_then(|m| {
+                        shadow_verdict(scene, m, f64::from(res), pw, surf.normal, view.light_world)
                     })
                 });
-                (if occ { Class::Shadow } else { Class::Lit }, decidable)
+                let first = verdicts.next().flatten();
+                let verdict = first.filter(|&v| verdicts.all(|x| x == Some(v)));
+                (if occ { Class::Shadow } else { Class::Lit }, verdict)
             } else {
-                (Class::Away, false)
+                (Class::Away, None)
             };
             px.push(Pixel {
                 class,
@@ -302,7 +297,7 @@ fn first_pass(
                 n: ne,
                 part,
                 predicted,
-                decidable,
+                verdict,
                 band_covered,
             });
         }
@@ -539,17 +534,20 @@ pub fn analyse(
                 } else {
                     shadow += 1;
                 }
-                if q.decidable {
+                if let Some(in_shadow) = q.verdict {
+                    // Compared with the verdict of the texel rays it reads (the pixel's own
+                    // state where they agree with it, the texel's where the boundary passes
+                    // between the pixel and the texel's centre).
                     if exact_lit {
                         lit_checked += 1;
-                        falses += usize::from(!rendered_lit);
                     } else {
                         shadow_checked += 1;
-                        misses += usize::from(rendered_lit);
                     }
-                    if debug && exact_lit != rendered_lit {
+                    misses += usize::from(in_shadow && rendered_lit);
+                    falses += usize::from(!in_shadow && !rendered_lit);
+                    if debug && in_shadow == rendered_lit {
                         eprintln!(
-                            "  shadow mismatch at ({}, {}) eye {:?}: surface {} exact_lit {exact_lit} part {} texel {:?}",
+                            "  shadow mismatch at ({}, {}) eye {:?}: surface {} exact_lit {exact_lit} verdict in shadow {in_shadow} part {} texel {:?}",
                             i % w, i / w, q.p, out.id[i] - 1, q.part, out.texel[i]
                         );
                         debug_pixel(scene, view, built, res, q.p, q.n, q.part);

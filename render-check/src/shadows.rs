@@ -44,43 +44,6 @@ const CENTRE_TOLERANCE: f64 = 0.02;
 /// about 10⁻⁴ texel of the exact one).
 const TEXEL_TIE: f64 = 2e-3;
 
-/// The texel-band test of one pixel facing the light (docs/rendered.md, "Shadow correctness"):
-/// whether the render's verdict at this pixel must be the exact one.
-///
-/// The shader reads one texel, nearest, and compares the pixel's light depth with the depth
-/// stored there (plus the depth bias): the first caster face turned away from the light along
-/// the light ray through the texel's centre (second-depth maps). Its verdict is the exact one
-/// except where the exact shadow changes between the pixel and that ray, or a caster stands on
-/// the receiver there (the ray then leaves the caster through its bottom, which is not drawn, or
-/// within the depth bias of the receiver). So a pixel is compared unless, for the centre `c` of
-/// the texel its map position falls in (and of the neighbouring texel when that position is
-/// within [`TEXEL_TIE`] of an edge, where the GPU's `f32` may round across), and for `c` moved
-/// [`CENTRE_TOLERANCE`] along either map axis:
-///
-/// - the point `q` where c's light ray meets the pixel's surface plane is inside a box, or its
-///   exact state differs from the pixel's; or
-/// - the point `r` on c's light ray at the pixel's light depth is inside a box other than the
-///   one the pixel lies on, or its exact state differs from the pixel's, or (in shadow) the
-///   caster face the ray from `r` meets first lies, in depth, within the rasterizer's bias of it
-///   ([`rasterizer_bias`]: the slope term from the face's own depth slope in the map's window
-///   coordinates, and the constant).
-///
-/// Both points lie within half a texel of the pixel along each map axis: the pixels left out
-/// are those whose texel straddles the exact boundary or a caster's foot (on average an eighth
-/// of a texel on each side of a boundary). The light rays are the map's own (its matrix, so a
-/// wrong light direction is not excused); the exact states are ray casts toward the true light.
-///
-/// First-surface maps (`map.normal_offset` set) store the surface nearest the light along each
-/// texel's ray, and the shader looks up the point p + o n (o the per-point normal offset,
-/// [`first_surface_offset`]) at its own depth, with no other bias. Their texel is the one holding p + o n, `r` is at p + o n's
-/// light depth, and there is no contact band: the shadow of a caster standing on the receiver is
-/// decided (a caster within the offset of the receiver along the texel's ray is inside a box or
-/// changes an exact state, and is left out by the tests above). `q` must also lie on the pixel's
-/// own face: where the texel's ray passes beyond an edge of a box's face it meets another
-/// surface first (the ground at the box's foot, or where a sunk box's face goes below it), and
-/// the texel straddles that edge. A lit pixel that the lookup
-/// shadows because the offset is too small (acne: `r` below the pixel's own surface, where the ray
-/// cast finds light) is compared, and counts as a false shadow.
 /// The normal offset a first-surface lookup of the map `world_to_clip` (world or camera-relative
 /// positions, as `pw` is given) uses at `pw`: the least that keeps the lookup lit there (the
 /// shader's `sa_local_normal_offset`, `frame::bias::normal_offset_at`), the map's maximum `max`
@@ -96,29 +59,67 @@ pub(crate) fn first_surface_offset(
     normal_offset_at(world_to_clip, ClipDepth::ZeroToOne, res, pw, nw, light, 0.0).unwrap_or(max)
 }
 
+/// The verdict the render must give at one pixel facing the light (docs/rendered.md, "Shadow
+/// correctness"): `Some(true)` in shadow, `Some(false)` lit, `None` where no verdict is certain
+/// (the band left out of the comparison).
+///
+/// The shader reads one texel, nearest, and compares the pixel's light depth with the depth
+/// stored there (plus the depth bias): the first caster face turned away from the light along
+/// the light ray through the texel's centre (second-depth maps). Its right verdict is therefore
+/// the exact state on that ray at the pixel's light depth: the pixel's own state, except where
+/// the exact boundary passes between the pixel and the texel's centre, where it is the texel's
+/// (the nearest-texel lookup's aliasing, not an error). For the centre `c` of the texel the
+/// pixel's map position falls in (and of the neighbouring texel when that position is within
+/// [`TEXEL_TIE`] of an edge, where the GPU's `f32` may round across), and for `c` moved
+/// [`CENTRE_TOLERANCE`] along either map axis, a verdict is made from:
+///
+/// - the point `q` where c's light ray meets the pixel's surface plane, which must not be inside
+///   a box; its exact state is the verdict; and
+/// - the point `r` on c's light ray at the pixel's light depth, which must not be inside a box
+///   other than the one the pixel lies on, and must have `q`'s exact state (no caster between the
+///   plane and the pixel's depth on that ray); in shadow, the caster face the ray from `r` meets
+///   first must lie, in depth, beyond the rasterizer's bias of it ([`rasterizer_bias`]: the slope
+///   term from the face's own depth slope in the map's window coordinates, and the constant).
+///
+/// The pixel is decided when all of them give one verdict: the pixels left out are those whose
+/// texel's centre lies within 0.02 texel of the exact boundary, or at a contact. The light rays
+/// are the map's own (its matrix, so a wrong light direction is not excused); the exact states
+/// are ray casts toward the true light.
+///
+/// First-surface maps (`map.normal_offset` set) store the surface nearest the light along each
+/// texel's ray, and the shader looks up the point p + o n (o the per-point normal offset,
+/// [`first_surface_offset`]) at its own depth, with no other bias. Their texel is the one holding
+/// p + o n, `r` is at p + o n's light depth, and there is no contact band: the shadow of a caster
+/// standing on the receiver is decided (a caster within the offset of the receiver along the
+/// texel's ray is inside a box or parts `q`'s and `r`'s states, and is left out by the tests
+/// above). `q` must also lie on the pixel's
+/// own face: where the texel's ray passes beyond an edge of a box's face it meets another
+/// surface first (the ground at the box's foot, or where a sunk box's face goes below it), and
+/// the texel straddles that edge. A lit pixel that the lookup
+/// shadows because the offset is too small (acne: `r` below the pixel's own surface, where the ray
+/// cast finds light) is compared, and counts as a false shadow.
 #[allow(clippy::too_many_arguments)] // one pixel and its map, each needed once
-pub(crate) fn shadow_decidable(
+pub(crate) fn shadow_verdict(
     scene: &Scene,
     map: &MapGeom,
     res: f64,
     pw: DVec3,
     nw: DVec3,
     light: DVec3,
-    occluded: bool,
-) -> bool {
+) -> Option<bool> {
     let (wc, inv) = (&map.world_to_clip, &map.clip_to_world);
     let offset = map.normal_offset.map_or(0.0, |max| {
         first_surface_offset(wc, res as u32, pw, nw, light, max)
     });
     let h = *wc * (pw + nw * offset).extend(1.0);
     if h.w <= 0.0 {
-        return false;
+        return None;
     }
     let s = (h.x / h.w + 1.0) * 0.5 * res;
     let t = (h.y / h.w + 1.0) * 0.5 * res;
     let depth = h.z / h.w;
     if !(0.0..res).contains(&s) || !(0.0..res).contains(&t) {
-        return false;
+        return None;
     }
     let lift = crate::scene::lift(scene, pw);
     // The box the pixel lies on (its point just inside, against the normal).
@@ -140,20 +141,22 @@ pub(crate) fn shadow_decidable(
         let q1 = inv.project_point3(DVec3::new(x, y, 1.0));
         (q0.is_finite() && q1.is_finite()).then_some((q0, q1))
     };
-    let agrees = |a: f64, b: f64| -> bool {
-        let Some((q0, q1)) = ray(a, b) else {
-            return false;
-        };
+    // The verdict the lookup must give through the texel ray at map position (a, b): whether
+    // a caster lies between the light and the pixel's light depth on that ray, from exact ray
+    // casts; `None` where no verdict is certain.
+    let verdict = |a: f64, b: f64| -> Option<bool> {
+        let (q0, q1) = ray(a, b)?;
         let d = q1 - q0;
         let den = d.dot(nw);
         if den.abs() < 1e-300 {
-            return false;
+            return None;
         }
         // q: on the pixel's plane (lifted off it as the ray cast lifts the pixel).
         let q = q0 + d * ((pw - q0).dot(nw) / den) + nw * lift;
-        if inside(q, None) || ray_occluded(scene, q, DVec3::ZERO, light) != occluded {
-            return false;
+        if inside(q, None) {
+            return None;
         }
+        let on_plane = ray_occluded(scene, q, DVec3::ZERO, light);
         // First-surface maps store whatever surface the ray meets first: the texel's ray must
         // meet the pixel's own face (its box's face; the ground is unbounded), not pass beyond an
         // edge of it to another surface (the ground at a box's foot).
@@ -162,38 +165,37 @@ pub(crate) fn shadow_decidable(
                 !box_contains(&scene.boxes[k], q - nw * (2.0 * lift)) || q.y < scene.ground_y
             })
         {
-            return false;
+            return None;
         }
         // r: at the pixel's light depth.
         let (x, y) = (2.0 * a / res - 1.0, 2.0 * b / res - 1.0);
         let r = inv.project_point3(DVec3::new(x, y, depth));
         if !r.is_finite() {
-            return false;
+            return None;
         }
         // r inside the pixel's own box (under its face: the texel's ray passes the face's edge
-        // below it) holds no state of its own; the contact band below still applies, for a
-        // caster may rest on the face there (a box on a step: its bottom face, which a
-        // second-depth map stores, lies in the receiver's plane).
+        // below it): the ray between r and q crosses the own box alone, so r's verdict is q's;
+        // the contact band below still applies, for a caster may rest on the face there (a box
+        // on a step: its bottom face, which a second-depth map stores, lies in the receiver's
+        // plane). Elsewhere r and q must agree: a caster between the plane and the pixel's
+        // depth on this ray is a contact no verdict decides.
         let in_own = own.is_some_and(|k| box_contains(&scene.boxes[k], r));
-        if !in_own && (inside(r, own) || ray_occluded(scene, r, DVec3::ZERO, light) != occluded) {
-            return false;
+        if !in_own && (inside(r, own) || ray_occluded(scene, r, DVec3::ZERO, light) != on_plane) {
+            return None;
         }
         // The depth bias: the caster face the ray from r meets first must lie farther toward
-        // the light than its slope-scaled bias, or the stored depth passes r.
+        // the light than the bias, or the stored depth passes r.
         match first_face(scene, r, light) {
-            Some((e, n)) if occluded && map.normal_offset.is_none() => {
+            Some((e, n)) if on_plane && map.normal_offset.is_none() => {
                 // The face's depth on this texel ray and on the next ones along s and t: its
                 // depth slope per texel (a plane's depth is affine in the map position), and
                 // the depth it lies nearer the light than r.
                 let f = r - light * e;
                 let at = |a: f64, b: f64| plane_depth(wc, inv, res, a, b, f, n);
-                let (Some(d0), Some(ds), Some(dt)) = (at(a, b), at(a + 1.0, b), at(a, b + 1.0))
-                else {
-                    return false;
-                };
-                depth - d0 > rasterizer_bias(((ds - d0).abs(), (dt - d0).abs()))
+                let (d0, ds, dt) = (at(a, b)?, at(a + 1.0, b)?, at(a, b + 1.0)?);
+                (depth - d0 > rasterizer_bias(((ds - d0).abs(), (dt - d0).abs()))).then_some(true)
             }
-            _ => true,
+            _ => Some(on_plane),
         }
     };
     let centres = |v: f64| -> ([f64; 2], usize) {
@@ -210,13 +212,15 @@ pub(crate) fn shadow_decidable(
     let (cs, ns) = centres(s);
     let (ct, nt) = centres(t);
     let e = CENTRE_TOLERANCE;
-    cs[..ns].iter().all(|&a| {
-        ct[..nt].iter().all(|&b| {
-            [(0.0, 0.0), (e, 0.0), (-e, 0.0), (0.0, e), (0.0, -e)]
-                .iter()
-                .all(|&(da, db)| agrees(a + da, b + db))
+    // Every texel the GPU may read and every sample about its centre must give one verdict.
+    let mut all = cs[..ns].iter().flat_map(|&a| {
+        ct[..nt].iter().flat_map(move |&b| {
+            [(0.0, 0.0), (e, 0.0), (-e, 0.0), (0.0, e), (0.0, -e)].map(|(da, db)| (a + da, b + db))
         })
-    })
+    });
+    let (a0, b0) = all.next()?;
+    let v = verdict(a0, b0)?;
+    all.all(|(a, b)| verdict(a, b) == Some(v)).then_some(v)
 }
 
 /// The depth [0, 1] (of `wc`, world → clip; `inv` its inverse) of the plane through `p` with
