@@ -348,7 +348,9 @@ fn replay_takes_a_budget_and_a_resolution_per_map() {
     assert_eq!(v["per_map"], false);
     for f in v["frames"].as_array().expect("frames") {
         assert!(f["texels"].as_u64().unwrap() <= budget, "{f}");
+        assert_eq!(f["within_budget"], true, "{f}");
     }
+    assert_eq!(v["summary"]["over_budget"], 0);
     let v = json(&["--max-error", "2", "--per-map"]);
     assert_eq!(v["per_map"], true);
     let mut summed = 0;

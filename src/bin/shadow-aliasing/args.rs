@@ -50,7 +50,7 @@ pub enum Command {
     Plan(PlanArgs),
     /// Run the error-budget controller over a camera path file (docs/paths.md).
     #[command(
-        after_help = "Examples:\n  shadow-aliasing replay --path paths/walk.json --max-error 2 --json\n  shadow-aliasing replay --path paths/cut.json --max-error 1 --figure cut.svg\n  shadow-aliasing replay --path paths/fly.json --budget-texels 16777216 --per-map"
+        after_help = "Examples:\n  shadow-aliasing replay --path paths/walk.json --max-error 2 --json\n  shadow-aliasing replay --path paths/cut.json --max-error 1 --figure cut.svg\n  shadow-aliasing replay --path paths/flyover.json --budget-texels 16777216 --per-map"
     )]
     Replay(ReplayArgs),
 }
@@ -156,15 +156,24 @@ pub struct FiguresArgs {
         allow_hyphen_values = true
     )]
     pub scale: i64,
-    /// Pixels per inch recorded in the PNG (its pHYs chunk): printed size = pixels / DPI. The
-    /// default, 144, prints the PNG at the SVG's and the PDF's size (one unit a point).
-    #[arg(
-        long,
-        value_name = "DPI",
-        default_value_t = shadow_aliasing::plot::DEFAULT_DPI,
-        allow_hyphen_values = true
-    )]
-    pub dpi: f64,
+    /// Pixels per inch recorded in the PNG (its pHYs chunk): printed size = pixels / DPI. By
+    /// default the PNG prints at the SVG's and the PDF's size: 144 (one unit a point) for
+    /// --column double, 180 for single.
+    #[arg(long, value_name = "DPI", allow_hyphen_values = true)]
+    pub dpi: Option<f64>,
+    /// Lay the figures out across a page's two columns (double, 7.2 in wide) or in one column
+    /// (single, 3.3 in, text at least 6 pt; the line-chart figures only: give them with --only).
+    #[arg(long, value_enum, default_value_t = ColumnName::Double)]
+    pub column: ColumnName,
+}
+
+/// `figures --column`: the library's [`shadow_aliasing::plot::Column`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ColumnName {
+    /// Across both columns of a page: 520 units, 7.2 in wide.
+    Double,
+    /// One column: 300 units printed 3.3 in (240 pt) wide.
+    Single,
 }
 
 /// Image formats of `figures`.

@@ -20,9 +20,12 @@ struct Row {
     resolution: u32,
     /// Each slot's resolution.
     resolutions: Vec<u32>,
+    /// Each built map's resolution.
+    built: Vec<u32>,
     max_error_pixels: f64,
     texels: u64,
     meets_target: bool,
+    within_budget: bool,
     switched: bool,
     cut: bool,
     ms: f64,
@@ -89,9 +92,11 @@ pub fn replay(a: &ReplayArgs) -> Result<String, String> {
             maps: d.frame.maps().len(),
             resolution: d.resolution,
             resolutions: d.resolutions.to_vec(),
+            built: d.frame.maps().iter().map(|m| m.resolution()).collect(),
             max_error_pixels: d.max_error_pixels,
             texels: d.texels,
             meets_target: d.meets_target,
+            within_budget: d.within_budget,
             switched: d.switched,
             cut: d.cut,
             ms,
@@ -122,6 +127,7 @@ struct Summary {
     switches: usize,
     cuts: usize,
     missed: usize,
+    over_budget: usize,
     max_error: f64,
     mean_texels: f64,
     median_ms: f64,
@@ -135,6 +141,7 @@ fn summary(rows: &[Row]) -> Summary {
         switches: rows.iter().filter(|r| r.switched).count(),
         cuts: rows.iter().filter(|r| r.cut).count(),
         missed: rows.iter().filter(|r| !r.meets_target).count(),
+        over_budget: rows.iter().filter(|r| !r.within_budget).count(),
         max_error: rows.iter().map(|r| r.max_error_pixels).fold(0.0, f64::max),
         mean_texels: rows.iter().map(|r| r.texels as f64).sum::<f64>() / rows.len() as f64,
         median_ms: quantile(&ms, 0.5),
@@ -157,6 +164,7 @@ fn json_out(a: &ReplayArgs, rows: &[Row]) -> String {
                 "max_error_pixels": r.max_error_pixels,
                 "texels": r.texels,
                 "meets_target": r.meets_target,
+                "within_budget": r.within_budget,
                 "switched": r.switched,
                 "cut": r.cut,
                 "ms": r.ms,
@@ -175,6 +183,7 @@ fn json_out(a: &ReplayArgs, rows: &[Row]) -> String {
             "switches": s.switches,
             "cuts": s.cuts,
             "missed": s.missed,
+            "over_budget": s.over_budget,
             "max_error_pixels": s.max_error,
             "mean_texels": s.mean_texels,
             "median_ms": s.median_ms,
@@ -203,9 +212,14 @@ fn text(a: &ReplayArgs, rows: &[Row]) -> String {
             (false, true) => "switched",
             (false, false) => "",
         };
-        let missed = if r.meets_target { "" } else { " (misses)" };
+        let missed = match (r.meets_target, r.within_budget) {
+            (true, true) => "",
+            (false, true) => " (misses)",
+            (true, false) => " (over the budget)",
+            (false, false) => " (misses, over the budget)",
+        };
         let size = if a.per_map {
-            let each: Vec<String> = r.resolutions.iter().map(u32::to_string).collect();
+            let each: Vec<String> = r.built.iter().map(u32::to_string).collect();
             format!("{:>2} maps {}²", r.maps, each.join("/"))
         } else {
             format!("{:>2} × {:>5}²", r.maps, r.resolution)
@@ -222,11 +236,12 @@ fn text(a: &ReplayArgs, rows: &[Row]) -> String {
     let s = summary(rows);
     let _ = writeln!(
         t,
-        "summary: {} switches, {} cuts, {} frames missing the target, largest error {} px, \
-         mean {:.0} texels, cost {:.3} ms median, {:.3} ms p99 a frame",
+        "summary: {} switches, {} cuts, {} frames missing the target, {} over the budget, largest \
+         error {} px, mean {:.0} texels, cost {:.3} ms median, {:.3} ms p99 a frame",
         s.switches,
         s.cuts,
         s.missed,
+        s.over_budget,
         sig(s.max_error),
         s.mean_texels,
         s.median_ms,

@@ -117,6 +117,8 @@ pub struct Controller {
     least: bool,
     /// Frames since the last search while `least`.
     missed: u32,
+    /// The error of the set-up the last search chose (pixels).
+    found: f64,
     /// The eye, the view direction and the light direction of the last frame.
     last: Option<(glam::DVec3, glam::DVec3, glam::DVec3)>,
     /// Frames in a row in which another resolution (`pending`: smaller, for a target; the cap,
@@ -168,6 +170,7 @@ impl Controller {
             setup: None,
             least: false,
             missed: 0,
+            found: f64::INFINITY,
             last: None,
             streak: 0,
             pending: 0,
@@ -306,6 +309,9 @@ impl Controller {
         }
         let margin = self.options.margin;
         let r = f64::from(kept.resolution);
+        if self.options.max_error.is_none() && self.drifted(err) {
+            return self.search(input);
+        }
         let pending = match self.options.max_error {
             Some(t) if err > t => {
                 // Up at once, with the margin's headroom, within the cap; where the cap forbids
@@ -577,6 +583,14 @@ impl Controller {
         Ok(e)
     }
 
+    /// Without a target: whether the kept set-up's error `err` has grown past twice the error
+    /// the last search found, at least `retry_every` frames after it (a scheme that the camera
+    /// has moved away from since, whose neighbours may not reach the better ones).
+    fn drifted(&mut self, err: f64) -> bool {
+        self.missed = self.missed.saturating_add(1);
+        err > 2.0 * self.found && self.missed >= self.options.retry_every
+    }
+
     /// The least allowed resolution whose error is at most `e` for maps whose largest error
     /// times resolution is `err_res` (pixels × texels), `None` above `cap`.
     fn resolution_for(&self, err_res: f64, e: f64, cap: u32) -> Option<u32> {
@@ -642,6 +656,9 @@ impl Controller {
         } else {
             self.search_each_in(input, &list)
         };
+        if let Ok((_, e)) = found {
+            self.found = e;
+        }
         self.allowed = list;
         found
     }

@@ -50,7 +50,9 @@ pub struct ControllerOptions {
     /// While the last search found no allowed set-up that meets `max_error` (the kept one is
     /// the least error found), every allowed candidate is searched again every `retry_every`
     /// frames; 1: every frame that misses the target (the target met in every frame where any
-    /// allowed set-up can meet it, at a cut's cost per such frame).
+    /// allowed set-up can meet it, at a cut's cost per such frame). Without a target, a search
+    /// runs again where the kept set-up's error has grown past twice the last search's, at
+    /// least `retry_every` frames after it.
     pub retry_every: u32,
     /// A cut when the camera's eye moved more than this fraction of its far distance since the
     /// last frame.

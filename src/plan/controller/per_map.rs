@@ -14,8 +14,10 @@
 //! - **Each other frame**: the kept scheme is built at its kept resolutions. A map over the
 //!   target is raised at once (to meet `margin × t`); a map that would have met `margin × t` at
 //!   a smaller resolution in this frame and each of the last `patience` frames is lowered (each
-//!   map counted on its own). Without a target, the budget's allocation is switched to when it
-//!   has had `margin` times less error for `patience` frames.
+//!   map counted on its own); a set-up over the budget (a map has appeared where the cut found
+//!   none) is searched again. Without a target, the budget's allocation is switched to when it
+//!   has had `margin` times less error for `patience` frames, and at once where the kept
+//!   set-up is over the budget or has more than twice the allocation's error.
 //! - **Neighbours** as with a shared resolution (one cascade more or fewer, the last search's
 //!   cheapest): built with every map at one resolution, compared by the texels their own
 //!   resolutions would take.
@@ -262,6 +264,11 @@ impl Controller {
                 let e = self.build_kept(input, setup(kept.scheme, kept.each))?;
                 return self.neighbour_each(input, kept, e);
             }
+            Some(_) if texels_of(&self.products, &kept.each) > budget(&self.options) => {
+                // A map has appeared since at the least resolution and taken the set-up over
+                // the budget: search again.
+                return self.search(input);
+            }
             Some(t) => {
                 self.least = false;
                 let mut lower = false;
@@ -297,11 +304,17 @@ impl Controller {
             }
             None => {
                 // The budget's allocation for this frame's errors, switched to when it has had
-                // `margin` times less error for `patience` frames.
+                // `margin` times less error for `patience` frames, or at once where the kept
+                // set-up is over the budget or has more than twice its error (a map that has
+                // appeared since at the least resolution).
+                if self.drifted(err) {
+                    return self.search(input);
+                }
+                let over = texels_of(&self.products, &kept.each) > budget(&self.options);
                 match least(&self.options, &self.products, &mut each) {
                     Some((_, e)) if each != kept.each && e < margin * err => {
                         self.down[0] = self.down[0].saturating_add(1);
-                        if self.down[0] > self.options.patience {
+                        if over || 2.0 * e < err || self.down[0] > self.options.patience {
                             self.down[0] = 0;
                             if let Ok(e) = self.build_kept(input, setup(kept.scheme, each)) {
                                 return Ok((setup(kept.scheme, each), e));
