@@ -64,7 +64,7 @@ fn main() -> Result<()> {
             println!("frame {n}: scene out of view, no shadow map");
             continue;
         }
-        // 4. The upload: one 128-byte record per map, its matrix relative to the camera's
+        // 4. The upload: one 144-byte record per map, its matrix relative to the camera's
         // position (vertex positions are uploaded as p − eye), reversed depth, the bias for the
         // shader's PCF kernel.
         records.clear();

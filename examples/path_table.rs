@@ -1,7 +1,7 @@
 //! The error-budget controller against three alternatives on every camera path of `paths/`
 //! (issue 32 item 3; the table in docs/planning.md, "An error budget per frame"):
 //!
-//! - **controller**: `plan::Controller` with `ControllerOptions::new(TARGET)` (at most 16 maps,
+//! - **controller**: `plan::Controller` with `ControllerOptions::new(TARGET)` (at most 65 maps,
 //!   one power-of-two resolution shared by the maps, up to 8192², every candidate but the
 //!   clipmap, a neighbour measured every 4 frames), as `shadow-aliasing replay` runs it;
 //! - **without neighbours**: the same with `neighbour_every: 0`;

@@ -252,6 +252,17 @@ fn bad_lists_are_refused_by_name() {
     refused(&c.map_resolutions(&[]), "0 entries");
     let single = input(cam, &g, FrameScheme::Single(WarpRule::Lispsm));
     refused(&single.map_resolutions(&[512, 512]), "1 partitions");
+    // Face partitions with nothing in view check their list all the same.
+    let away = [Aabb::new([1e4, 1e4, 1e4], [1e4 + 1.0, 1e4 + 1.0, 1e4 + 1.0]).unwrap()];
+    let faces = FrameInput::new(cam, DVec3::new(0.4, -0.8, -0.3), 1024, H)
+        .receivers(Bound::Boxes(&away))
+        .scheme(FrameScheme::Faces {
+            rule: FaceWarp::Lispsm,
+            k: 1,
+        });
+    assert!(frame(&faces).unwrap().is_empty());
+    refused(&faces.map_resolutions(&[0]), "at least 3 texels");
+    refused(&faces.map_resolutions(&[1024]), "entries");
     let clip = FrameScheme::Clipmap(ClipmapOptions::default());
     let clip = FrameInput::new(cam, DVec3::new(0.4, -0.8, -0.3), 16384, H)
         .receivers(Bound::Boxes(&g))

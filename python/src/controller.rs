@@ -283,7 +283,9 @@ impl Controller {
     /// map's with a shared resolution), ``resolutions`` ((slots,) int64: each partition slot's
     /// texels a side in slot order, a slot without a map included: ``sa.frame(...,
     /// **frame_kwargs, map_resolutions=resolutions)`` builds the same maps bit for bit with
-    /// ``shared_resolution=False``, ``map_resolution=resolution`` with a shared one;
+    /// ``shared_resolution=False``, ``map_resolution=resolution`` with a shared one, except
+    /// equal-error cascades between cuts, which keep their cut's planes (``maps["split"]``:
+    /// pass them as ``splits=``);
     /// ``resolutions[maps["slot"]]`` is ``maps["resolution"]``),
     /// ``max_error_pixels`` (the largest of the maps' measured errors), ``texels`` (the sum of
     /// the maps' resolution²),

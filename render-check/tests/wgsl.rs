@@ -69,7 +69,7 @@ fn the_module_validates_with_naga() {
             "{name}"
         );
     }
-    // The record as naga lays it out: 128 bytes, the Rust record's size.
+    // The record as naga lays it out: 144 bytes, the Rust record's size.
     let record = module
         .types
         .iter()

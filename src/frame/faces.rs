@@ -56,6 +56,12 @@ impl Ctx<'_, '_> {
                 "no face of the view frustum is seen by the light {l}"
             )));
         }
+        let slots = faces
+            .faces()
+            .iter()
+            .map(|f| if f.is_side() { k } else { 1 })
+            .sum();
+        check_resolutions(self.input, slots)?;
         // B of the whole visible range (its extent along the light is every part's depth range)
         // and its clipper, cut by the receivers once for every part (each part adds its prism).
         let receivers = self.receivers_clip(&view.corners())?;
@@ -69,12 +75,6 @@ impl Ctx<'_, '_> {
             y_lo = y_lo.min(y);
             y_hi = y_hi.max(y);
         }
-        let slots = faces
-            .faces()
-            .iter()
-            .map(|f| if f.is_side() { k } else { 1 })
-            .sum();
-        check_resolutions(self.input, slots)?;
         for &face in faces.faces() {
             let spaces = face_spaces(face, tan, ta, light);
             let count = if face.is_side() { k } else { 1 };

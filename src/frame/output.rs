@@ -102,7 +102,7 @@ pub struct FrameMap {
     /// S̄ = M_x M_z over the body; +∞ where not measured.
     pub storage_factor: f64,
     /// The predicted maximum error in screen pixels, `max(M_x, M_z) · image_height /
-    /// map_resolution`; +∞ where not measured.
+    /// resolution` (the map's own, [`FrameMap::resolution`]); +∞ where not measured.
     pub max_error_pixels: f64,
     /// What the body is (Body, Flat or ZeroDepth for a built map).
     pub focus: Focus,
@@ -136,7 +136,7 @@ pub struct MapError {
     /// S̄ = M_x M_z over the body.
     pub storage_factor: f64,
     /// The predicted maximum error in screen pixels, `max(M_x, M_z) · image_height /
-    /// map_resolution`.
+    /// resolution` (the map's own).
     pub max_error_pixels: f64,
 }
 

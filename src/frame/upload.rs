@@ -88,9 +88,9 @@ pub struct GpuShadowMap {
     /// The PCF radius r (texels) the bias values were computed for: 0 from [`FrameMap::gpu`],
     /// r from [`FrameMap::gpu_with_pcf`].
     pub bias_radius: f32,
-    /// The map's texels per side (maps of one frame may differ:
+    /// The map's texels per side, at least 3 (maps of one frame may differ:
     /// [`FrameInput::map_resolutions`](super::FrameInput::map_resolutions)); the WGSL module's
-    /// texel lookups read it.
+    /// texel lookups read it, so a record built by hand must set it (`Default` leaves 0).
     pub resolution: u32,
     /// Zero, as `reserved1` and `reserved2`: they bring the record to 144 bytes, a multiple of
     /// 16, the alignment of `mat4x4<f32>` (three scalars, as a uniform buffer's arrays need a

@@ -62,6 +62,15 @@ pub enum Rounding {
 pub const MAX_RESOLUTION: u64 = 1 << 30;
 
 impl Rounding {
+    /// The resolutions allowed, in words, for messages: "whole texels", "powers of two",
+    /// "multiples of 64 texels".
+    pub(crate) fn words(self) -> String {
+        match self {
+            Rounding::Whole => "whole texels".into(),
+            Rounding::PowerOfTwo => "powers of two".into(),
+            Rounding::Multiple(m) => format!("multiples of {m} texels"),
+        }
+    }
     /// The least allowed resolution ≥ `need` (≥ 1), `None` above [`MAX_RESOLUTION`].
     pub(crate) fn at_least(self, need: f64) -> Option<u64> {
         // NaN (a zero error target) and anything above the cap are refused alike.

@@ -79,7 +79,10 @@ pub struct Decision<'c> {
     pub resolution: u32,
     /// Each slot's resolution, in [`Frame::slots`](crate::frame::Frame::slots) order: what
     /// [`FrameInput::map_resolutions`](crate::frame::FrameInput::map_resolutions) takes to build
-    /// these maps again (all `resolution` with a shared resolution).
+    /// these maps again with `scheme` (all `resolution` with a shared resolution). Equal-error
+    /// cascades between cuts are the exception: they keep the planes of their cut's search (the
+    /// maps' [`FrameMap::split`](crate::frame::FrameMap::split)s), which the scheme alone would
+    /// search again; give those planes as `CascadeSplits::Distances` to rebuild them.
     pub resolutions: &'c [u32],
     /// Its maps, built at `resolution` (their matrices for the GPU, their measured error).
     /// Each map's [`FrameMap::unchanged`](crate::frame::FrameMap::unchanged) compares it with

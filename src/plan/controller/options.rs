@@ -3,7 +3,7 @@
 use crate::error::{fmt_num, Error, Result};
 use crate::frame::FrameScheme;
 use crate::maps::atlas::MAX_ATLAS_ENTRIES;
-use crate::plan::allocate::Rounding;
+use crate::plan::allocate::{Rounding, MAX_RESOLUTION};
 
 /// What the controller is asked for and what it may choose from.
 ///
@@ -156,9 +156,9 @@ impl ControllerOptions {
             return Err(Error::invalid(
                 "max_resolution",
                 format!(
-                    "must be a resolution of at least 3 texels (a map's least) that rounding \
-                     {:?} allows (got {r})",
-                    self.rounding
+                    "must be a resolution from 3 texels (a map's least) to {MAX_RESOLUTION} that \
+                     the rounding allows ({}) (got {r})",
+                    self.rounding.words()
                 ),
             ));
         }
@@ -168,9 +168,9 @@ impl ControllerOptions {
                 return Err(Error::invalid(
                     "max_texels",
                     format!(
-                        "is {b}, less than one map of the least resolution rounding {:?} \
-                         allows ({least} texels): raise it",
-                        self.rounding
+                        "is {b}, less than one map of the least resolution the rounding allows \
+                         ({}, at least 3 texels a side: {least} texels): raise it",
+                        self.rounding.words()
                     ),
                 ));
             }
