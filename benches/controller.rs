@@ -9,7 +9,9 @@
 //!   cascades' planes given as `CascadeSplits::Distances` (no search): the yardstick of the
 //!   target "median ≤ 1.5 × the chosen maps with fixed splits";
 //! - `controller/PATH/plan`: `plan::plan` (every candidate, `Goal::MaxError(2)`, powers of two)
-//!   on every 30th frame: the yardstick of "a cut ≤ the full plan".
+//!   on every 30th frame: the yardstick of "a cut ≤ the full plan";
+//! - `controller_per_map/PATH/…`: the same with `shared_resolution: false` (each map its own
+//!   resolution; the chosen maps built at their own resolutions).
 //!
 //! ```text
 //! cargo bench --features cli --bench controller -- --warm-up-time 1 --measurement-time 3
@@ -37,12 +39,19 @@ fn quantile(v: &mut [Duration], q: f64) -> f64 {
     v[i].as_secs_f64() * 1e3
 }
 
-/// A frame's chosen set-up with its planes fixed: (scheme, resolution, planes).
-type Chosen = (FrameScheme<'static>, u32, Option<Vec<f64>>);
+/// A frame's chosen set-up with its planes fixed: (scheme, each slot's resolution, planes).
+type Chosen = (FrameScheme<'static>, Vec<u32>, Option<Vec<f64>>);
 
 fn controller(c: &mut Criterion) {
     let mut summary = Vec::new();
-    for name in PATHS {
+    for (shared, name) in [true, false]
+        .into_iter()
+        .flat_map(|s| PATHS.iter().map(move |n| (s, *n)))
+    {
+        let options = ControllerOptions {
+            shared_resolution: shared,
+            ..ControllerOptions::new(TARGET)
+        };
         let file = Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("paths")
             .join(format!("{name}.json"));
@@ -61,7 +70,7 @@ fn controller(c: &mut Criterion) {
             })
             .collect();
         // One replay for the chosen set-ups and their planes.
-        let mut ctl = Controller::new(ControllerOptions::new(TARGET)).unwrap();
+        let mut ctl = Controller::new(options.clone()).unwrap();
         let chosen: Vec<Chosen> = inputs
             .iter()
             .map(|inp| {
@@ -78,18 +87,23 @@ fn controller(c: &mut Criterion) {
                     }
                     _ => None,
                 };
-                (d.scheme, d.resolution, planes)
+                (d.scheme, d.resolutions.to_vec(), planes)
             })
             .collect();
 
-        let mut g = c.benchmark_group(format!("controller/{name}"));
+        let group = if shared {
+            "controller"
+        } else {
+            "controller_per_map"
+        };
+        let mut g = c.benchmark_group(format!("{group}/{name}"));
         g.sample_size(10);
         let (mut steady, mut cuts) = (Vec::new(), Vec::new());
         g.bench_function("replay", |b| {
             b.iter_custom(|iters| {
                 let mut total = Duration::ZERO;
                 for _ in 0..iters {
-                    let mut ctl = Controller::new(ControllerOptions::new(TARGET)).unwrap();
+                    let mut ctl = Controller::new(options.clone()).unwrap();
                     for inp in &inputs {
                         let t = Instant::now();
                         let d = ctl.frame(bb(inp)).unwrap();
@@ -127,7 +141,10 @@ fn controller(c: &mut Criterion) {
                             _ => *scheme,
                         };
                         let mut one = inp.scheme(scheme).measure(true);
-                        one.map_resolution = *res;
+                        one.map_resolution = res.iter().copied().max().unwrap_or(3);
+                        if !shared {
+                            one = one.map_resolutions(res);
+                        }
                         let t = Instant::now();
                         frame_into(bb(&one), &mut out).unwrap();
                         let dt = t.elapsed();
@@ -157,8 +174,9 @@ fn controller(c: &mut Criterion) {
         g.finish();
         let (m, p99) = (quantile(&mut steady, 0.5), quantile(&mut steady, 0.99));
         let f = quantile(&mut fixed, 0.5);
+        let label = if shared { "" } else { ", a resolution per map" };
         summary.push(format!(
-            "| {name} | {m:.4} | {p99:.4} | {f:.4} | {:.2} | {:.1} | {:.1} |",
+            "| {name}{label} | {m:.4} | {p99:.4} | {f:.4} | {:.2} | {:.1} | {:.1} |",
             m / f,
             quantile(&mut cuts, 0.5),
             quantile(&mut plans, 0.5)
