@@ -245,12 +245,8 @@ fn bare_scale_and_dpi_for_publication() {
     assert_eq!(code, 0, "{err}");
     let plain_svg = std::fs::read_to_string(dir.join("lloyd2006-fig6.svg")).unwrap();
     let plain_png = std::fs::read(dir.join("lloyd2006-fig6.png")).unwrap();
-    // The title (wrapped onto two lines to keep its text at least 2 % of the width) and the
-    // caption as src/plot/lloyd2006.rs writes them.
-    let title = [
-        ">Maximum error and storage factor against the warp</text>",
-        ">parameter η</text>",
-    ];
+    // The title and the caption as src/plot/lloyd2006.rs writes them.
+    let title = [">Maximum error and storage factor against η</text>"];
     let caption = "Lloyd et al. 2006, Fig. 6";
     assert!(title.iter().all(|t| plain_svg.contains(t)) && plain_svg.contains(caption));
     // 144 dpi by default (the PNG's 2 pixels per unit over the SVG's 1 unit per point × 72
@@ -273,7 +269,7 @@ fn bare_scale_and_dpi_for_publication() {
         "bare keeps title or caption"
     );
     assert!(svg.contains("M<tspan"), "bare lost the axis labels");
-    // The figure is 520 × 900 units, drawn at plot::PNG_ZOOM = 2 pixels per unit: 1040 × 1800.
+    // The figure is 520 × 540 units, drawn at plot::PNG_ZOOM = 2 pixels per unit: 1040 × 1080.
     // Bare, it is cropped to the rows between its title and caption (tests/figures_bare.rs): a
     // view box of the full width and fewer rows, which the PNG draws at twice the pixels per unit
     // (scale 2), and 300 dpi = 11 811 pixels per metre.
@@ -283,8 +279,8 @@ fn bare_scale_and_dpi_for_publication() {
             u32::from_be_bytes(b[20..24].try_into().unwrap()),
         )
     };
-    assert_eq!(size(&plain_png), (1040, 1800));
-    assert!(plain_svg.contains("viewBox=\"0 0 520 900\""));
+    assert_eq!(size(&plain_png), (1040, 1080));
+    assert!(plain_svg.contains("viewBox=\"0 0 520 540\""));
     let head = &svg[..svg.find('>').unwrap()];
     let vb_at = head.find("viewBox=\"").unwrap() + "viewBox=\"".len();
     let vb: Vec<u32> = head[vb_at..vb_at + head[vb_at..].find('"').unwrap()]
@@ -293,7 +289,7 @@ fn bare_scale_and_dpi_for_publication() {
         .collect();
     let rows = vb[3];
     assert!(
-        vb[0] == 0 && vb[1] > 0 && vb[2] == 520 && rows < 900,
+        vb[0] == 0 && vb[1] > 0 && vb[2] == 520 && rows < 540,
         "{vb:?}"
     );
     assert!(head.starts_with(&format!("<svg width=\"1040pt\" height=\"{}pt\"", 2 * rows)));
@@ -307,4 +303,42 @@ fn bare_scale_and_dpi_for_publication() {
         assert!(err.contains(&flag[2..]), "{flag} {value}: {err}");
     }
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `--column single` (issue 35) lays a figure out 300 units wide and prints it 240 points
+/// (3.3 inches) wide: the SVG's `width`, and the PNG's 600 pixels at 180 per inch (7087 per
+/// metre: 180 / 0.0254 = 7086.6); asked of a figure without a single-column layout, it refuses
+/// in one line naming it and writes nothing.
+#[test]
+fn column_single_is_240_points_wide_or_refused_by_name() {
+    let dir = temp_dir("single");
+    let (code, _, err) = figures(&dir, &["--only", "lloyd2006-fig5", "--column", "single"]);
+    assert_eq!(code, 0, "{err}");
+    let svg = std::fs::read_to_string(dir.join("lloyd2006-fig5.svg")).unwrap();
+    assert!(svg.starts_with("<svg width=\"240pt\""), "{}", &svg[..80]);
+    assert!(svg.contains("viewBox=\"0 0 300 "));
+    let png = std::fs::read(dir.join("lloyd2006-fig5.png")).unwrap();
+    assert_eq!(u32::from_be_bytes(png[16..20].try_into().unwrap()), 600);
+    assert_eq!(phys(&png), Some((7087, 7087, 1)));
+    let other = temp_dir("single-refused");
+    let d = other.to_str().unwrap();
+    let (_, err) = run_failing(
+        &[
+            "figures",
+            "--out",
+            d,
+            "--column",
+            "single",
+            "--only",
+            "zhang-fig3",
+        ],
+        "",
+    );
+    assert!(
+        err.contains("zhang-fig3") && err.contains("single-column") && err.lines().count() == 1,
+        "{err}"
+    );
+    assert!(std::fs::read_dir(&other).map_or(true, |mut r| r.next().is_none()));
+    std::fs::remove_dir_all(&dir).unwrap();
+    let _ = std::fs::remove_dir_all(&other);
 }

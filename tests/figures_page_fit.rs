@@ -5,7 +5,9 @@
 //! five).
 #![cfg(feature = "plot")]
 
-use shadow_aliasing::plot::{render_with, Format, Options, FIGURES};
+use shadow_aliasing::plot::{
+    render_with, Column, Format, Options, PlotError, FIGURES, SINGLE_COLUMN,
+};
 use std::path::Path;
 
 /// The page-height cap, in points.
@@ -127,4 +129,98 @@ fn every_caption_is_at_most_five_lines() {
         }
     }
     assert!(bad.is_empty(), "{}", bad.join("\n"));
+}
+
+/// The size every `<text>` and `<tspan>` of an SVG prints at, in points: its `font-size` (the
+/// text's own where a tspan has none) times the SVG's `width` in points over its view box's
+/// width. Returns the smallest, with its text.
+fn smallest_printed_text(svg: &str) -> (f64, String) {
+    let head = &svg[..svg.find('>').unwrap()];
+    let width_pt = attr(head, "width");
+    let vb = {
+        let at = head.find("viewBox=\"").unwrap() + "viewBox=\"".len();
+        let v: Vec<f64> = head[at..at + head[at..].find('"').unwrap()]
+            .split_whitespace()
+            .map(|x| x.parse().unwrap())
+            .collect();
+        v[2]
+    };
+    let per_unit = width_pt / vb;
+    let mut least = (f64::INFINITY, String::new());
+    let mut rest = svg;
+    while let Some(i) = rest.find("<text ") {
+        let tag_end = i + rest[i..].find('>').unwrap();
+        let close = tag_end + rest[tag_end..].find("</text>").unwrap();
+        let content = &rest[tag_end + 1..close];
+        let mut sizes = vec![attr(&rest[i..tag_end], "font-size")];
+        let mut inner = content;
+        while let Some(j) = inner.find("<tspan") {
+            let end = j + inner[j..].find('>').unwrap();
+            let tag = &inner[j..end];
+            if tag.contains(" font-size=\"") {
+                sizes.push(attr(tag, "font-size"));
+            }
+            inner = &inner[end..];
+        }
+        for s in sizes {
+            if s * per_unit < least.0 {
+                least = (s * per_unit, content.to_string());
+            }
+        }
+        rest = &rest[close..];
+    }
+    least
+}
+
+fn svg_with(name: &str, opts: &Options) -> Result<String, shadow_aliasing::plot::PlotError> {
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
+        "figures-page-fit-single-{name}-{}-{call}",
+        std::process::id()
+    ));
+    let files = render_with(name, &dir, Format::Svg, opts)?;
+    let s = std::fs::read_to_string(&files[0]).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    Ok(s)
+}
+
+/// One column (issue 35): each figure of `SINGLE_COLUMN`, captioned and bare, is 240 pt
+/// (3.3 in) wide and at most 640 pt tall, and every text of it, subscripts and superscripts
+/// included, prints at 6 pt or more at that width; every other figure is refused by name.
+#[test]
+fn single_column_figures_print_text_of_at_least_6_pt() {
+    for &name in FIGURES {
+        for bare in [false, true] {
+            let opts = Options {
+                bare,
+                column: Column::Single,
+                ..Options::default()
+            };
+            let s = match svg_with(name, &opts) {
+                Ok(s) => s,
+                Err(PlotError::InvalidOption(m)) if !SINGLE_COLUMN.contains(&name) => {
+                    assert!(m.contains(name) && m.contains("single"), "{m}");
+                    continue;
+                }
+                Err(e) => panic!("{name}: {e}"),
+            };
+            assert!(SINGLE_COLUMN.contains(&name), "{name} drawn in one column");
+            let head = &s[..s.find('>').unwrap()];
+            let (w, h) = (attr(head, "width"), attr(head, "height"));
+            assert_eq!(w, 240.0, "{name} (bare {bare}): {w} pt wide");
+            assert!(h <= CAP, "{name} (bare {bare}): {h} pt tall");
+            let (pt, text) = smallest_printed_text(&s);
+            assert!(pt >= 6.0, "{name} (bare {bare}): {text:?} at {pt:.2} pt");
+        }
+    }
+}
+
+/// The double-column figures printed at 240 pt wide, shrunk, would not pass: their subscripts
+/// fall to 7.55 × 240/520 = 3.5 pt (the measure finds text under 6 pt there).
+#[test]
+fn double_column_figures_shrunk_to_one_column_would_be_too_small() {
+    let s = svg("lloyd2006-fig5", false);
+    let (pt, _) = smallest_printed_text(&s);
+    assert!(pt * 240.0 / 520.0 < 6.0, "{pt}");
 }

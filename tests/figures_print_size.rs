@@ -5,7 +5,7 @@
 //! claimed 10.8 inches against the SVG's and PDF's 7.2.)
 #![cfg(feature = "plot")]
 
-use shadow_aliasing::plot::{render_with, Format, Options};
+use shadow_aliasing::plot::{render_with, Column, Format, Options};
 use std::path::{Path, PathBuf};
 
 fn out_dir(sub: &str) -> PathBuf {
@@ -101,6 +101,47 @@ fn png_svg_and_pdf_print_at_one_size() {
                     "bare {bare}, scale {scale}: PDF {pdf:?} in, SVG {svg:?} in"
                 );
             }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// One column (issue 35): the figure is laid out 300 units wide and printed 240 points
+/// (3.33 inches) wide, the PNG's 600 pixels (scale 1) at its default density of
+/// 2 × 72 / 0.8 = 180 per inch, captioned and bare; the PDF's page the same.
+#[test]
+fn single_column_prints_240_points_wide_in_every_format() {
+    let dir = out_dir("figures-print-size-single");
+    let name = "lloyd2006-fig5";
+    for bare in [false, true] {
+        let opts = Options {
+            bare,
+            column: Column::Single,
+            ..Options::default()
+        };
+        let d = dir.join(format!("{bare}"));
+        render_with(name, &d, Format::Both, &opts).unwrap();
+        let png_bytes = std::fs::read(d.join(format!("{name}.png"))).unwrap();
+        let png = png_inches(&png_bytes);
+        let svg = svg_inches(&std::fs::read_to_string(d.join(format!("{name}.svg"))).unwrap());
+        assert!(
+            close(png, svg),
+            "bare {bare}: PNG {png:?} in, SVG {svg:?} in"
+        );
+        assert!((svg.0 - 240.0 / 72.0).abs() < 1e-9, "{svg:?}");
+        // 600 pixels across: 300 units at 2 pixels each.
+        assert_eq!(
+            u32::from_be_bytes(png_bytes[16..20].try_into().unwrap()),
+            600
+        );
+        #[cfg(feature = "pdf")]
+        {
+            render_with(name, &d, Format::Pdf, &opts).unwrap();
+            let pdf = pdf_inches(&std::fs::read(d.join(format!("{name}.pdf"))).unwrap());
+            assert!(
+                close(pdf, svg),
+                "bare {bare}: PDF {pdf:?} in, SVG {svg:?} in"
+            );
         }
     }
     let _ = std::fs::remove_dir_all(&dir);

@@ -8,7 +8,9 @@
 //! checked at the PNG's 1.24/1.164 times the SVG's size, the wider of the two.
 #![cfg(feature = "plot")]
 
-use shadow_aliasing::plot::{render_all, render_with, Format, Options, FIGURES};
+use shadow_aliasing::plot::{
+    render_all, render_with, Column, Format, Options, FIGURES, SINGLE_COLUMN,
+};
 use std::path::Path;
 
 /// The PNG's text over the SVG's (see the file's header).
@@ -311,29 +313,38 @@ fn overlapping_texts_are_found() {
     assert!(overlapping(&font, &two(26.5, 50.0)).is_empty());
 }
 
-/// No two texts of any figure overlap, captioned or bare (issue 35: "no text overlaps in any
+/// No two texts of any figure overlap and none runs past the page, captioned or bare, across
+/// two columns and, for the figures that have it, in one (issue 35: "no text overlaps in any
 /// output").
 #[test]
 fn no_two_texts_overlap() {
     let mut bad = Vec::new();
     let font = Font::dejavu();
-    for bare in [false, true] {
-        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
-            "figures-text-overlap-{bare}-{}",
-            std::process::id()
-        ));
-        let opts = Options {
-            bare,
-            ..Options::default()
-        };
-        for name in FIGURES {
-            let files = render_with(name, &dir, Format::Svg, &opts).unwrap();
-            let svg = std::fs::read_to_string(&files[0]).unwrap();
-            for b in overlapping(&font, &svg) {
-                bad.push(format!("{name} (bare {bare}): {b}"));
+    for (column, names) in [(Column::Double, FIGURES), (Column::Single, SINGLE_COLUMN)] {
+        for bare in [false, true] {
+            let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
+                "figures-text-overlap-{column:?}-{bare}-{}",
+                std::process::id()
+            ));
+            let opts = Options {
+                bare,
+                column,
+                ..Options::default()
+            };
+            for name in names {
+                let files = render_with(name, &dir, Format::Svg, &opts).unwrap();
+                let svg = std::fs::read_to_string(&files[0]).unwrap();
+                for b in overlapping(&font, &svg) {
+                    bad.push(format!("{name} ({column:?}, bare {bare}): {b}"));
+                }
+                if column == Column::Single {
+                    for b in overflowing(&font, &svg) {
+                        bad.push(format!("{name} ({column:?}, bare {bare}): {b}"));
+                    }
+                }
             }
+            let _ = std::fs::remove_dir_all(&dir);
         }
-        let _ = std::fs::remove_dir_all(&dir);
     }
     assert!(bad.is_empty(), "{}", bad.join("\n"));
 }

@@ -19,11 +19,7 @@ pub(super) fn fig4() -> Result<Charts, Fail> {
     let zs = linspace(1.0, alpha, 200);
     let mut c = LineChart::new(
         "",
-        Axis::linear(
-            "normalised depth z (near plane at 1, far plane at α)",
-            1.0,
-            alpha,
-        ),
+        Axis::linear("depth z (near plane 1, far plane α)", 1.0, alpha),
         Axis::linear("error distribution g(z)", 0.0, 1.05),
     );
     c.legend = SeriesLabelPosition::UpperMiddle;

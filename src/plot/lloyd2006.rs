@@ -265,7 +265,7 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
         "",
         Axis::integer("number of shadow maps", 0.0, 40.0),
         // To the data: 6.5 (ZP+W at 40 maps) to 10⁶ (ZP behind with one map).
-        Axis::log10("storage factor S̄ (texels per image pixel)", 3.0, 3e6),
+        Axis::log10("S̄ (texels per image pixel)", 3.0, 3e6),
     );
     c.legend = SeriesLabelPosition::UpperRight;
     let schemes = [

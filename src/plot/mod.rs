@@ -56,7 +56,7 @@ mod worst;
 mod zhang;
 
 use image::ImageEncoder;
-pub use options::{scale, Options, DEFAULT_DPI, MAX_SCALE};
+pub use options::{scale, Column, Options, DEFAULT_DPI, MAX_SCALE};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::fmt;
@@ -138,6 +138,17 @@ pub const FIGURES: &[&str] = &[
     "barroso-fig5",
     "lloyd2006-fig11",
     "lloyd2005-fig8",
+];
+
+/// The figures that have a single-column layout ([`Column::Single`]): line charts, their panels
+/// stacked (lloyd2005-fig7's and lloyd2006-fig10's direct labels do not yet find room there). The others are refused in one column with [`PlotError::InvalidOption`].
+pub const SINGLE_COLUMN: &[&str] = &[
+    "lloyd2005-fig4",
+    "lloyd2006-fig5",
+    "lloyd2006-fig6",
+    "lloyd2006-fig12",
+    "barroso-fig7",
+    "lloyd2006-worst-case",
 ];
 
 /// What went wrong while rendering a figure.
@@ -223,8 +234,13 @@ impl Fail {
 
 /// A figure: its data computed once, drawn on any plotters backend.
 pub(crate) trait Figure {
-    /// Pixel size of the PNG (and of the SVG's view box).
+    /// Pixel size of the PNG (and of the SVG's view box), across a page's two columns.
     fn size(&self) -> (u32, u32);
+    /// The same in one column ([`Column::Single`], [`Column::width`] wide), for a figure with
+    /// that layout.
+    fn single_size(&self) -> Option<(u32, u32)> {
+        None
+    }
     /// Draws the whole figure on `root`.
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail>;
 }
@@ -276,8 +292,21 @@ fn emit<F: Figure>(
     let opts = out.options;
     for ext in out.format.extensions() {
         let path = out_dir.join(format!("{name}.{ext}"));
-        let (w, h) = fig.size();
-        let bytes = chart::with_bare(opts.bare, || -> Result<Vec<u8>, PlotError> {
+        let (w, h) = match opts.column {
+            Column::Double => fig.size(),
+            Column::Single => SINGLE_COLUMN
+                .contains(&name)
+                .then(|| fig.single_size())
+                .flatten()
+                .ok_or_else(|| {
+                    PlotError::InvalidOption(format!(
+                    "column single: {name} has no single-column layout; give --column double, or \
+                     one of {}",
+                    SINGLE_COLUMN.join(", ")
+                ))
+                })?,
+        };
+        let bytes = chart::with_page(opts.bare, opts.column, || -> Result<Vec<u8>, PlotError> {
             if *ext == "png" {
                 // Drawn at twice the (scaled) size and box-filtered down: anti-aliased lines
                 // and edges.

@@ -1,10 +1,61 @@
 //! How a figure is written for publication: without its title and caption (`bare`), at an
-//! integer multiple of its pixel size (`scale`), and with the PNG's physical size recorded
-//! (`dpi`, as a PNG `pHYs` chunk; by default the size the SVG and the PDF give, one unit of the
-//! figure a point).
+//! integer multiple of its pixel size (`scale`), with the PNG's physical size recorded (`dpi`,
+//! as a PNG `pHYs` chunk; by default the size the SVG and the PDF give), and for a page's two
+//! columns or one (`column`).
 
 use super::PlotError;
 use crate::error::fmt_num;
+use std::str::FromStr;
+
+/// The width a figure is laid out for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Column {
+    /// Across a page's two columns: 520 units wide, one unit a point (7.2 inches).
+    #[default]
+    Double,
+    /// One column of a two-column page: 300 units wide, printed 240 points (3.3 inches) wide,
+    /// so that a unit is 0.8 points and the smallest text (a subscript, 7.55 units) prints at
+    /// 6.04 points. The panels of a figure are stacked. Only the figures of
+    /// [`super::SINGLE_COLUMN`] have this layout.
+    Single,
+}
+
+impl Column {
+    /// The page's width in units.
+    #[must_use]
+    pub fn width(self) -> u32 {
+        match self {
+            Column::Double => 520,
+            Column::Single => 300,
+        }
+    }
+
+    /// Points per unit when printed: the SVG's `width` and `height` over its view box, the PDF's
+    /// page likewise.
+    #[must_use]
+    pub fn points_per_unit(self) -> f64 {
+        match self {
+            Column::Double => 1.0,
+            Column::Single => 0.8,
+        }
+    }
+}
+
+impl FromStr for Column {
+    type Err = PlotError;
+
+    /// Parses `double` or `single` (case-insensitive).
+    fn from_str(s: &str) -> Result<Self, PlotError> {
+        match s.to_ascii_lowercase().as_str() {
+            "double" => Ok(Column::Double),
+            "single" => Ok(Column::Single),
+            _ => Err(PlotError::InvalidOption(format!(
+                "column {s:?} is neither double nor single: give double (a figure across both \
+                 columns of a page, 7.2 in) or single (one column, 3.3 in)"
+            ))),
+        }
+    }
+}
 
 /// Options of the written files; [`Options::default`] is what [`super::render`] uses.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -18,15 +69,19 @@ pub struct Options {
     /// [`MAX_SCALE`].
     pub scale: u32,
     /// Pixels per inch recorded in the PNG (`pHYs`), so that the printed size is the pixel size
-    /// divided by `dpi`. Finite, 1 to 10 000. The default, [`DEFAULT_DPI`], prints the PNG at
-    /// the size of the SVG and the PDF at any `scale`.
-    pub dpi: f64,
+    /// divided by `dpi`. Finite, 1 to 10 000. `None` (the default) records the density that
+    /// prints the PNG at the size of the SVG and the PDF at any `scale` ([`Options::dpi`]).
+    pub dpi: Option<f64>,
+    /// The width the figure is laid out for.
+    pub column: Column,
 }
 
-/// The default [`Options::dpi`]: 72 × [`super::PNG_ZOOM`] = 144 pixels per inch. A figure's unit
-/// is a point (1/72 inch) in the SVG (`width` and `height` in `pt`) and the PDF (its page), and
-/// its PNG has `PNG_ZOOM` × `scale` pixels per unit, so at this density all three have the same
-/// printed size: a 520-unit figure is 7.22 inches wide (times `scale`).
+/// The density [`Options::dpi`] records for a [`Column::Double`] figure: 72 ×
+/// [`super::PNG_ZOOM`] = 144 pixels per inch. Such a figure's unit is a point (1/72 inch) in
+/// the SVG (`width` and `height` in `pt`) and the PDF (its page), and its PNG has `PNG_ZOOM` ×
+/// `scale` pixels per unit, so at this density all three have the same printed size: a
+/// 520-unit figure is 7.22 inches wide (times `scale`). A [`Column::Single`] figure's unit is
+/// 0.8 points, so its density is 144 / 0.8 = 180.
 pub const DEFAULT_DPI: f64 = 72.0 * super::PNG_ZOOM as f64;
 
 /// The largest [`Options::scale`].
@@ -37,7 +92,8 @@ impl Default for Options {
         Self {
             bare: false,
             scale: 1,
-            dpi: DEFAULT_DPI,
+            dpi: None,
+            column: Column::Double,
         }
     }
 }
@@ -49,19 +105,30 @@ impl Options {
     /// [`PlotError::InvalidOption`] naming the option and its accepted range.
     pub fn validate(&self) -> Result<(), PlotError> {
         scale(i64::from(self.scale))?;
-        if !(self.dpi.is_finite() && (1.0..=10_000.0).contains(&self.dpi)) {
-            return Err(PlotError::InvalidOption(format!(
-                "dpi {} is outside 1..=10000: give the pixels per inch of the printed figure, \
-                 for instance 300",
-                fmt_num(self.dpi)
-            )));
+        if let Some(dpi) = self.dpi {
+            if !(dpi.is_finite() && (1.0..=10_000.0).contains(&dpi)) {
+                return Err(PlotError::InvalidOption(format!(
+                    "dpi {} is outside 1..=10000: give the pixels per inch of the printed \
+                     figure, for instance 300",
+                    fmt_num(dpi)
+                )));
+            }
         }
         Ok(())
     }
 
+    /// The pixels per inch the PNG records: [`Options::dpi`] where given, else the density that
+    /// prints it at the SVG's and the PDF's size ([`DEFAULT_DPI`] for a double-column figure,
+    /// 180 for a single-column one).
+    #[must_use]
+    pub fn dpi(&self) -> f64 {
+        self.dpi
+            .unwrap_or(DEFAULT_DPI / self.column.points_per_unit())
+    }
+
     /// Pixels per metre, as the `pHYs` chunk records them.
     pub(crate) fn pixels_per_metre(&self) -> u32 {
-        (self.dpi / 0.0254).round() as u32
+        (self.dpi() / 0.0254).round() as u32
     }
 }
 
@@ -133,7 +200,7 @@ mod tests {
     #[test]
     fn three_hundred_dpi_is_11811_pixels_per_metre() {
         let o = Options {
-            dpi: 300.0,
+            dpi: Some(300.0),
             ..Options::default()
         };
         assert_eq!(o.pixels_per_metre(), 11_811); // 300 / 0.0254 = 11 811.02
@@ -141,10 +208,33 @@ mod tests {
         for bad in [
             Options { scale: 0, ..o },
             Options { scale: 9, ..o },
-            Options { dpi: f64::NAN, ..o },
-            Options { dpi: 0.5, ..o },
+            Options {
+                dpi: Some(f64::NAN),
+                ..o
+            },
+            Options {
+                dpi: Some(0.5),
+                ..o
+            },
         ] {
             assert!(matches!(bad.validate(), Err(PlotError::InvalidOption(_))));
         }
+    }
+
+    /// The densities that print a PNG (2 pixels per unit) at the SVG's size: 144 per inch for
+    /// a point a unit, 180 for 0.8 points a unit (2 / (0.8 / 72) = 180); the column's names.
+    #[test]
+    fn default_density_follows_the_column() {
+        let single = Options {
+            column: Column::Single,
+            ..Options::default()
+        };
+        assert_eq!(Options::default().dpi(), 144.0);
+        assert!((single.dpi() - 180.0).abs() < 1e-9);
+        assert_eq!("Single".parse::<Column>().unwrap(), Column::Single);
+        assert!(matches!(
+            "triple".parse::<Column>(),
+            Err(PlotError::InvalidOption(m)) if m.contains("triple")
+        ));
     }
 }

@@ -269,7 +269,9 @@ impl DrawingBackend for Svg<'_> {
         let bottom = bottom.min(h);
         let top = top.min(bottom);
         let rows = bottom - top;
-        let (zw, zh) = (w * self.zoom, rows * self.zoom);
+        // In points: `zoom` times the view box at the column's points per unit.
+        let pt = f64::from(self.zoom) * super::chart::column().points_per_unit();
+        let (zw, zh) = (round(f64::from(w) * pt), round(f64::from(rows) * pt));
         self.out.clear();
         let _ = write!(
             self.out,

@@ -1,8 +1,8 @@
 //! What each subcommand does.
 
 use crate::args::{
-    Cli, Command, EvalArgs, FiguresArgs, Format, PartitionName, SweepArgs, SweepFormat, WarpArgs,
-    WarpName,
+    Cli, ColumnName, Command, EvalArgs, FiguresArgs, Format, PartitionName, SweepArgs, SweepFormat,
+    WarpArgs, WarpName,
 };
 use crate::output::{json_n_prime, json_num, sig, sig_n_prime};
 use crate::scheme::{k, partition, partitions, rule, value_name, Lights, PartitionReport};
@@ -267,10 +267,15 @@ fn figures(a: &FiguresArgs) -> ExitCode {
         Ok(s) => s,
         Err(e) => return fail(e),
     };
+    let column = match a.column {
+        ColumnName::Double => plot::Column::Double,
+        ColumnName::Single => plot::Column::Single,
+    };
     let options = plot::Options {
         bare: a.bare,
         scale,
         dpi: a.dpi,
+        column,
     };
     if let Err(e) = options.validate() {
         return fail(e.to_string());
@@ -280,6 +285,24 @@ fn figures(a: &FiguresArgs) -> ExitCode {
         .copied()
         .filter(|n| a.only.is_empty() || a.only.iter().any(|o| o == n))
         .collect();
+    // One column: every figure asked for must have that layout, checked before anything is
+    // written.
+    if column == plot::Column::Single {
+        let without: Vec<&str> = names
+            .iter()
+            .copied()
+            .filter(|n| !plot::SINGLE_COLUMN.contains(n))
+            .collect();
+        if !without.is_empty() {
+            return fail(format!(
+                "--column single: {} {} no single-column layout; give --only with some of {}, \
+                 or --column double",
+                without.join(", "),
+                if without.len() == 1 { "has" } else { "have" },
+                plot::SINGLE_COLUMN.join(", ")
+            ));
+        }
+    }
     let count = names.len();
     let bar = if std::io::stderr().is_terminal() {
         let bar = indicatif::ProgressBar::new(count as u64);

@@ -1,7 +1,7 @@
 //! The page: title on top, the caption naming the paper and figure at the bottom, and the
 //! common page of line charts side by side.
 
-use super::super::Fail;
+use super::super::{Column, Fail};
 use super::line::{draw_line_chart, LineChart};
 use super::FONT;
 use plotters::coord::Shift;
@@ -14,25 +14,35 @@ thread_local! {
     static BARE: Cell<bool> = const { Cell::new(false) };
     /// The rows a bare page keeps (see [`bare_rows`]), set by [`frame`].
     static ROWS: Cell<Option<(u32, u32)>> = const { Cell::new(None) };
+    /// The width the figure being drawn on this thread is laid out for (see [`with_page`]).
+    static COLUMN: Cell<Column> = const { Cell::new(Column::Double) };
 }
 
 /// The space a bare page keeps above the captioned page's body, in units (below it, the body's
 /// own bottom margin is left: the caption starts 7 units under it).
 const BARE_PAD: u32 = 6;
 
-/// Runs `draw` with every page it draws bare (no title, no caption) or not: the page option of
-/// `Options::bare`, set for the one figure being drawn on this thread and restored afterwards.
-pub(crate) fn with_bare<R>(bare: bool, draw: impl FnOnce() -> R) -> R {
+/// Runs `draw` with every page it draws bare (no title, no caption) or not, and laid out for
+/// `column`: the page options of `Options::bare` and `Options::column`, set for the one figure
+/// being drawn on this thread and restored afterwards.
+pub(crate) fn with_page<R>(bare: bool, column: Column, draw: impl FnOnce() -> R) -> R {
     let before = BARE.with(|b| b.replace(bare));
     let rows = ROWS.with(|r| r.replace(None));
+    let col = COLUMN.with(|c| c.replace(column));
     let out = draw();
     BARE.with(|b| b.set(before));
     ROWS.with(|r| r.set(rows));
+    COLUMN.with(|c| c.set(col));
     out
 }
 
+/// The width the figure drawn on this thread is laid out for (see [`with_page`]).
+pub(crate) fn column() -> Column {
+    COLUMN.with(Cell::get)
+}
+
 /// The rows `[top, bottom)` of the page, in units, that the figure drawn last on this thread in
-/// [`with_bare`] keeps: for a bare page, the captioned page's body (the area between its title
+/// [`with_page`] keeps: for a bare page, the captioned page's body (the area between its title
 /// and its caption) with [`BARE_PAD`] units above it; `None` for a captioned page (all of it is
 /// kept).
 pub(crate) fn bare_rows() -> Option<(u32, u32)> {
@@ -41,7 +51,7 @@ pub(crate) fn bare_rows() -> Option<(u32, u32)> {
 
 /// Fills the page white, writes the title at the top and the caption (its lines joined into one
 /// paragraph, wrapped to the page width) at the bottom, and returns the area left between them.
-/// A bare page (see [`with_bare`]) is laid out the same, with the same area returned, but the
+/// A bare page (see [`with_page`]) is laid out the same, with the same area returned, but the
 /// title and caption are not drawn, and the rows it keeps ([`bare_rows`]) are that area's.
 pub(crate) fn frame<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
@@ -134,6 +144,13 @@ pub(crate) struct Charts {
 impl super::super::Figure for Charts {
     fn size(&self) -> (u32, u32) {
         self.size
+    }
+
+    /// One column: the charts stacked, 290 units each, under a title and caption of up to
+    /// 220 units, at most 800 units (640 points) tall.
+    fn single_size(&self) -> Option<(u32, u32)> {
+        let n = self.charts.len().max(1) as u32;
+        Some((Column::Single.width(), (220 + 290 * n).min(800)))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
