@@ -175,10 +175,7 @@ impl Figure for Fig8 {
              behind. (a) From the light (R, L, T, N: right, left, top, near face; 1 near, 2 far). \
              (b) {} and its map's texel grid. (c) The texture by Eq 6: \"share\" is a partition's \
              part of its width × height, \"after\" its M_x and M_z over those parts.",
-            self.k,
-            LIGHT.0,
-            LIGHT.1,
-            shown.tag,
+            self.k, LIGHT.0, LIGHT.1, shown.tag,
         );
         let body = frame(
             root,
