@@ -3,7 +3,7 @@
 
 use super::chart::FONT;
 use super::chart::{
-    build_chart, fmt_plain, frame, linspace, Axis, Charts, LineChart, Note, Series, PALETTE,
+    build_chart, fmt_plain, frame, linspace, Axis, Charts, LineChart, Marker, Note, Series, PALETTE,
 };
 use super::{Fail, Figure};
 use crate::analytic::eta::{n_prime_from_eta, n_prime_lispsm};
@@ -291,16 +291,22 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
                 pts.push((maps as f64, scheme_storage_factor(scheme, light, &view, k)?));
             }
             let s = if scheme == Scheme::FpZpW {
-                // Defined only at 4k + 1 maps: markers, not joined across the counts between
-                // (overhead green triangles, behind olive hexagons).
-                let colour = match light {
-                    SchemeLight::Overhead => PALETTE[colour],
-                    SchemeLight::Behind => PALETTE[7],
+                // Defined only at 4k + 1 maps: markers, not joined across the counts between,
+                // in FP+ZP+W's green of Fig 13 and the worst-case figure for both lights:
+                // triangles overhead, hexagons behind.
+                let shape = match light {
+                    SchemeLight::Overhead => None,
+                    SchemeLight::Behind => Some(Marker::Hexagon),
                 };
                 Series {
                     width: 3,
-                    ..Series::line(format!("{name}, {light_name}"), unjoined(&pts), colour)
-                        .with_markers()
+                    shape,
+                    ..Series::line(
+                        format!("{name}, {light_name}"),
+                        unjoined(&pts),
+                        PALETTE[colour],
+                    )
+                    .with_markers()
                 }
             } else {
                 // Every count: a line, with a few markers along it (not one per count).
@@ -326,7 +332,7 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
     zoom.legend = SeriesLabelPosition::UpperRight;
     for (scheme, name, colour) in [
         (Scheme::Zp, "ZP = ZP+W, behind", 0),
-        (Scheme::FpZpW, "FP+ZP+W, behind", 7),
+        (Scheme::FpZpW, "FP+ZP+W, behind", 2),
     ] {
         let mut pts = Vec::new();
         for k in 1..=23usize {
@@ -347,7 +353,11 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
             let s = Series::line(name, pts, PALETTE[colour])
                 .dashed()
                 .with_markers();
-            zoom.series.push(Series { width: 3, ..s });
+            zoom.series.push(Series {
+                width: 3,
+                shape: Some(Marker::Hexagon),
+                ..s
+            });
         } else {
             // ZP without markers (at 17 maps its marker lay under FP+ZP+W's, 38.32 against
             // 37.99): the line unlabelled, its legend key a line sample; the values are written.

@@ -335,3 +335,26 @@ fn fig5_lower_panel_labels_its_curves() {
         );
     }
 }
+
+/// Fig 12 gives FP+ZP+W the colour the worst-case figure and Fig 13 give it (issue 35: behind,
+/// it was olive): Okabe–Ito's bluish green #009E73 for every FP+ZP+W series of both panels, the
+/// two lights told apart by shape instead (triangles overhead, hexagons behind).
+#[test]
+fn fig12_fp_zp_w_is_green_for_both_lights() {
+    use crate::plot::chart::Marker;
+    let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
+    let mut shapes = Vec::new();
+    for chart in &fig.charts {
+        for s in &chart.series {
+            if s.label.as_deref().is_some_and(|l| l.starts_with("FP+ZP+W")) {
+                assert_eq!(s.colour, RGBColor(0, 158, 115), "{:?}", s.label);
+                shapes.push(s.shape.unwrap_or_else(|| Marker::of(s.colour)));
+            }
+        }
+    }
+    // (a) overhead and behind, (b) behind.
+    assert_eq!(
+        shapes,
+        [Marker::TriangleUp, Marker::Hexagon, Marker::Hexagon]
+    );
+}

@@ -103,6 +103,9 @@ pub(crate) struct Series {
     pub direct: bool,
     /// With `direct`: the label's point is the one at this x instead of the last.
     pub direct_at: Option<f64>,
+    /// The marker's shape where it is not its colour's ([`Marker::of`]): a scheme drawn in one
+    /// colour for two lights keeps its colour and differs by shape.
+    pub shape: Option<Marker>,
 }
 
 impl Series {
@@ -118,6 +121,7 @@ impl Series {
             reference: false,
             direct: false,
             direct_at: None,
+            shape: None,
         }
     }
     /// The same series labelled directly at its point at `x` (its right end if it has none).
@@ -322,7 +326,7 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
         }
         // Markers: at every point of a series that asks for them, and a few along every other
         // labelled line of a chart with more than one colour (greyscale print).
-        let shape = Marker::of(s.colour);
+        let shape = s.shape.unwrap_or_else(|| Marker::of(s.colour));
         let along: Vec<(f64, f64)> = if s.reference {
             Vec::new()
         } else if s.markers {
