@@ -46,7 +46,8 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
     let mut ratio = LineChart::new(
         "(b) worst case / behind",
         k_axis,
-        Axis::log10("ratio (log scale)", 0.8, 6.0),
+        // Labelled at 1 (the light-behind value itself), the band's 2 and 3, and 5.
+        Axis::log10("ratio (log scale)", 0.8, 6.0).labelled_at(&[1.0, 2.0, 3.0, 5.0]),
     );
     abs.legend = SeriesLabelPosition::UpperRight;
     ratio.legend = SeriesLabelPosition::UpperRight;
@@ -191,7 +192,7 @@ mod tests {
     }
 
     /// The review's items (issue 25): the ratio panel's range holds its data without a mostly
-    /// empty decade (0.8 to 6, every ratio inside); the band's key is a swatch (a wide sample in
+    /// empty decade (0.8 to 6, every ratio inside), labelled at 1, 2, 3 and 5; the band's key is a swatch (a wide sample in
     /// the band's own grey) and its edges are drawn after the data in a colour no data line
     /// has; every dashed behind curve of the upper panel is drawn as its one key shows it.
     #[test]
@@ -201,6 +202,16 @@ mod tests {
             .unwrap();
         let (abs, ratio) = (&fig.charts[0], &fig.charts[1]);
         assert!(ratio.y.min >= 0.8 && ratio.y.max <= 6.0, "{:?}", ratio.y);
+        // The ratio axis is labelled 1, 2, 3 and 5 only (issue 35: it wrote 0.8, 0.9, 1, 2, 3,
+        // 4, 5, 6).
+        let labels: Vec<String> = ratio
+            .y
+            .ticks()
+            .0
+            .iter()
+            .map(|&a| ratio.y.tick_label(a))
+            .collect();
+        assert_eq!(labels, ["1", "2", "3", "5"]);
         let data: Vec<&Series> = ratio.series.iter().filter(|s| !s.reference).collect();
         for s in &data {
             for p in &s.points {

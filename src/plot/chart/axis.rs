@@ -83,6 +83,8 @@ pub(crate) struct Axis {
     /// A base-10 axis writes its decades as powers of ten even where plain numbers would do
     /// ([`Axis::in_powers`]), so that a quantity keeps one format across panels.
     pub powers: bool,
+    /// The values labelled, where the automatic choice is not wanted ([`Axis::labelled_at`]).
+    pub labelled: Option<Vec<f64>>,
 }
 
 impl Axis {
@@ -94,6 +96,7 @@ impl Axis {
             max,
             scale: Scale::Linear,
             powers: false,
+            labelled: None,
         }
     }
 
@@ -105,6 +108,7 @@ impl Axis {
             max,
             scale: Scale::Integer,
             powers: false,
+            labelled: None,
         }
     }
 
@@ -116,6 +120,7 @@ impl Axis {
             max,
             scale: Scale::Every { first, step },
             powers: false,
+            labelled: None,
         }
     }
 
@@ -127,6 +132,7 @@ impl Axis {
             max,
             scale: Scale::Log(10.0),
             powers: false,
+            labelled: None,
         }
     }
 
@@ -138,7 +144,15 @@ impl Axis {
             max,
             scale: Scale::Log(b),
             powers: false,
+            labelled: None,
         }
+    }
+
+    /// The same axis labelled at the data values `at` only (those inside its range), each also
+    /// a grid line; its other grid lines stay.
+    pub fn labelled_at(mut self, at: &[f64]) -> Self {
+        self.labelled = Some(at.to_vec());
+        self
     }
 
     /// The same axis, its decades written as powers of ten whatever its range.
@@ -183,6 +197,24 @@ impl Axis {
 
     /// Bold (labelled) and light (grid only) tick positions, in axis space.
     pub fn ticks(&self) -> (Vec<f64>, Vec<f64>) {
+        let (bold, mut light) = self.auto_ticks();
+        let Some(at) = &self.labelled else {
+            return (bold, light);
+        };
+        let (lo, hi) = self.range();
+        let eps = 1e-9 * (hi - lo).abs().max(1e-300);
+        let bold: Vec<f64> = at
+            .iter()
+            .filter_map(|&v| self.to_axis(v))
+            .filter(|&a| a >= lo - eps && a <= hi + eps)
+            .collect();
+        light.extend(bold.iter().copied());
+        light.sort_by(f64::total_cmp);
+        (bold, light)
+    }
+
+    /// The ticks chosen for the axis's scale and range: (labelled, grid lines).
+    fn auto_ticks(&self) -> (Vec<f64>, Vec<f64>) {
         let (lo, hi) = self.range();
         let eps = 1e-9 * (hi - lo).abs().max(1e-300);
         let inside = |v: f64| v >= lo - eps && v <= hi + eps;
