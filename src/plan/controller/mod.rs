@@ -383,20 +383,30 @@ impl Controller {
         self.neighbour(input, kept, err)
     }
 
-    /// Every `neighbour_every` frames, one neighbour of the kept set-up (in `self.frame`, with
-    /// error `err`) measured, and switched to as the module docs say; otherwise the kept one.
-    fn neighbour(&mut self, input: &FrameInput<'_>, kept: Setup, err: f64) -> Result<(Setup, f64)> {
+    /// The neighbour to measure in this frame (one every `neighbour_every` frames, in turn), if
+    /// any.
+    fn next_neighbour(&mut self) -> Option<usize> {
         let every = self.options.neighbour_every;
         if every == 0 || self.near.is_empty() {
-            return Ok((kept, err));
+            return None;
         }
         self.since += 1;
         if self.since < every {
-            return Ok((kept, err));
+            return None;
         }
         self.since = 0;
         let i = self.turn % self.near.len();
         self.turn = i + 1;
+        Some(i)
+    }
+
+    /// Every `neighbour_every` frames, one neighbour of the kept set-up (in `self.frame`, with
+    /// error `err`) measured, and switched to as the module docs say; otherwise the kept one.
+    fn neighbour(&mut self, input: &FrameInput<'_>, kept: Setup, err: f64) -> Result<(Setup, f64)> {
+        let Some(i) = self.next_neighbour() else {
+            return Ok((kept, err));
+        };
+        let every = self.options.neighbour_every;
         let scheme = self.near[i].0;
         let kept_texels = self.frame.maps().len() as u64 * u64::from(kept.resolution).pow(2);
         let Some((n, e_n)) = self.probe(input, scheme, kept) else {

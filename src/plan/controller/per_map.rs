@@ -397,17 +397,10 @@ impl Controller {
         kept: Setup,
         err: f64,
     ) -> Result<(Setup, f64)> {
+        let Some(i) = self.next_neighbour() else {
+            return Ok((kept, err));
+        };
         let every = self.options.neighbour_every;
-        if every == 0 || self.near.is_empty() {
-            return Ok((kept, err));
-        }
-        self.since += 1;
-        if self.since < every {
-            return Ok((kept, err));
-        }
-        self.since = 0;
-        let i = self.turn % self.near.len();
-        self.turn = i + 1;
         let scheme = self.near[i].0;
         products(&self.frame, &mut self.products);
         let kept_texels = texels_of(&self.products, &kept.each);
