@@ -543,12 +543,21 @@ impl Controller {
         let Some((_, scheme, res, cap)) = best else {
             return Ok(None);
         };
-        let kept_fractions = std::mem::take(&mut self.fractions);
-        if let Some(f) = self.fit(input, scheme, res, cap)? {
-            return Ok(Some(f));
+        self.without_kept_planes(|c| c.fit(input, scheme, res, cap))
+    }
+
+    /// `fit` (a neighbour built for real) without the kept equal-error planes, which are not
+    /// the neighbour's (its own are searched); they are given back where it returns `None`.
+    fn without_kept_planes<R>(
+        &mut self,
+        fit: impl FnOnce(&mut Self) -> Result<Option<R>>,
+    ) -> Result<Option<R>> {
+        let kept = std::mem::take(&mut self.fractions);
+        let f = fit(self)?;
+        if f.is_none() {
+            self.fractions = kept;
         }
-        self.fractions = kept_fractions;
-        Ok(None)
+        Ok(f)
     }
 
     /// `setup` built into the controller's frame; its largest measured error. Equal-error

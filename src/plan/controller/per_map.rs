@@ -379,13 +379,7 @@ impl Controller {
         let Some((_, scheme, each)) = best else {
             return Ok(None);
         };
-        // The kept planes are not the neighbour's: its own are searched.
-        let kept_fractions = std::mem::take(&mut self.fractions);
-        let f = self.fit_each(input, scheme, each)?;
-        if f.is_none() {
-            self.fractions = kept_fractions;
-        }
-        Ok(f)
+        self.without_kept_planes(|c| c.fit_each(input, scheme, each))
     }
 
     /// Every `neighbour_every` frames, one neighbour measured and switched to as the module
