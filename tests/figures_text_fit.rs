@@ -133,17 +133,22 @@ fn width(font: &Font, content: &str, size: f64) -> f64 {
     w + run(rest, size)
 }
 
-/// The texts of an SVG that leave its view box: (content, extent, page range).
-fn overflowing(font: &Font, svg: &str) -> Vec<String> {
-    let head = &svg[..svg.find('>').unwrap()];
-    let vb: Vec<f64> = {
-        let at = head.find("viewBox=\"").unwrap() + "viewBox=\"".len();
-        head[at..at + head[at..].find('"').unwrap()]
-            .split_whitespace()
-            .map(|v| v.parse().unwrap())
-            .collect()
-    };
-    let mut bad = Vec::new();
+/// One `<text>` of an SVG: its tag and content, its anchor (x, y) and font size, its measured
+/// width (at the PNG's larger size, [`width`]) and how much of it lies before the anchor (by its
+/// `text-anchor`).
+struct Text<'s> {
+    tag: &'s str,
+    content: &'s str,
+    x: f64,
+    y: f64,
+    fs: f64,
+    w: f64,
+    before: f64,
+}
+
+/// Every `<text>` of `svg`, in order.
+fn texts<'s>(font: &Font, svg: &'s str) -> Vec<Text<'s>> {
+    let mut out = Vec::new();
     let mut rest = svg;
     while let Some(i) = rest.find("<text ") {
         let tag_end = i + rest[i..].find('>').unwrap();
@@ -166,6 +171,40 @@ fn overflowing(font: &Font, svg: &str) -> Vec<String> {
             Some("end") => w,
             _ => 0.0,
         };
+        out.push(Text {
+            tag,
+            content,
+            x,
+            y,
+            fs,
+            w,
+            before,
+        });
+    }
+    out
+}
+
+/// The texts of an SVG that leave its view box: (content, extent, page range).
+fn overflowing(font: &Font, svg: &str) -> Vec<String> {
+    let head = &svg[..svg.find('>').unwrap()];
+    let vb: Vec<f64> = {
+        let at = head.find("viewBox=\"").unwrap() + "viewBox=\"".len();
+        head[at..at + head[at..].find('"').unwrap()]
+            .split_whitespace()
+            .map(|v| v.parse().unwrap())
+            .collect()
+    };
+    let mut bad = Vec::new();
+    for Text {
+        tag,
+        content,
+        x,
+        y,
+        w,
+        before,
+        ..
+    } in texts(font, svg)
+    {
         // Horizontal text runs along x; a text rotated by 90° or 270° about its anchor runs
         // along y (rotate(270) upwards, so its start is below the anchor).
         let (lo, hi, page) = if tag.contains("rotate(270") {
@@ -230,28 +269,16 @@ fn no_text_runs_past_the_page() {
 /// −0.27 em for a bottom one). A text rotated by 90° or 270° has the box turned about its anchor.
 fn text_boxes(font: &Font, svg: &str) -> Vec<(String, [f64; 4])> {
     let mut out = Vec::new();
-    let mut rest = svg;
-    while let Some(i) = rest.find("<text ") {
-        let tag_end = i + rest[i..].find('>').unwrap();
-        let close = tag_end + rest[tag_end..].find("</text>").unwrap();
-        let tag = &rest[i..tag_end];
-        let content = &rest[tag_end + 1..close];
-        rest = &rest[close..];
-        let (x, y, fs) = (
-            attr(tag, "x").unwrap(),
-            attr(tag, "y").unwrap(),
-            attr(tag, "font-size").unwrap(),
-        );
-        let w = width(font, content, fs) * PNG_TEXT;
-        let before = match tag
-            .split("text-anchor=\"")
-            .nth(1)
-            .and_then(|t| t.split('"').next())
-        {
-            Some("middle") => 0.5 * w,
-            Some("end") => w,
-            _ => 0.0,
-        };
+    for Text {
+        tag,
+        content,
+        x,
+        y,
+        fs,
+        w,
+        before,
+    } in texts(font, svg)
+    {
         let base = match tag.split("dy=\"").nth(1).and_then(|t| t.split('"').next()) {
             Some("0.76em") => 0.76 * fs,
             Some("0.5ex") => 0.27 * fs,
