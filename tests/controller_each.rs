@@ -70,6 +70,11 @@ fn check_decision(d: &Decision<'_>, inp: &FrameInput<'_>, i: usize) {
 /// The fewest texels of any allowed candidate whose maps, each at the least power of two that
 /// meets the target by its audited product, all meet it when built so (audited again).
 fn cheapest_by_hand(inp: &FrameInput<'_>) -> Option<u64> {
+    cheapest_within(inp, u64::MAX)
+}
+
+/// [`cheapest_by_hand`] among the set-ups of at most `budget` texels.
+fn cheapest_within(inp: &FrameInput<'_>, budget: u64) -> Option<u64> {
     let mut best: Option<u64> = None;
     for s in allowed() {
         let mut at_cap = inp.scheme(s);
@@ -94,12 +99,14 @@ fn cheapest_by_hand(inp: &FrameInput<'_>) -> Option<u64> {
             .iter()
             .all(|m| product(m, &at_cap) / f64::from(m.resolution()) <= TARGET * (1.0 + 1e-9));
         if meets {
-            let t = g
+            let t: u64 = g
                 .maps()
                 .iter()
                 .map(|m| u64::from(m.resolution()).pow(2))
                 .sum();
-            best = Some(best.map_or(t, |b: u64| b.min(t)));
+            if t <= budget {
+                best = Some(best.map_or(t, |b: u64| b.min(t)));
+            }
         }
     }
     best
@@ -212,6 +219,63 @@ fn least_by_hand(products: &[f64], budget: u64) -> f64 {
             return best;
         }
     }
+}
+
+/// Both goals per map: the target within the budget where a set-up of at most the budget
+/// meets it (then no more texels than the cheapest such by hand), else the least error within
+/// the budget (every power-of-two allocation tried by hand), never over it.
+#[test]
+fn a_target_within_a_budget_per_map() {
+    const BUDGET: u64 = 12 * 1024 * 1024;
+    let boxes = scene();
+    let mut c = Controller::new(ControllerOptions {
+        max_texels: Some(BUDGET),
+        ..options(false)
+    })
+    .unwrap();
+    let (mut met, mut least) = (0, 0);
+    for i in (0..FRAMES).step_by(20) {
+        let inp = input(camera(i), &boxes);
+        c.cut();
+        let d = c.frame(&inp).unwrap();
+        check_decision(&d, &inp, i);
+        assert!(d.within_budget && d.texels <= BUDGET, "frame {i}");
+        match cheapest_within(&inp, BUDGET) {
+            Some(hand) => {
+                assert!(d.meets_target, "frame {i}: {hand} texels meet it by hand");
+                assert!(
+                    d.texels <= hand,
+                    "frame {i}: {} texels, {hand} by hand",
+                    d.texels
+                );
+                met += 1;
+            }
+            None => {
+                assert!(!d.meets_target, "frame {i}");
+                let mut hand = f64::INFINITY;
+                for s in allowed() {
+                    let mut at_cap = inp.scheme(s);
+                    at_cap.map_resolution = CAP;
+                    let Ok(f) = frame(&at_cap) else { continue };
+                    if f.maps().is_empty() || f.maps().len() > 4 {
+                        continue;
+                    }
+                    let p: Vec<f64> = f.maps().iter().map(|m| product(m, &at_cap)).collect();
+                    hand = hand.min(least_by_hand(&p, BUDGET));
+                }
+                assert!(
+                    d.max_error_pixels <= hand * (1.0 + 1e-3),
+                    "frame {i}: {} px, the least within the budget by hand {hand} px",
+                    d.max_error_pixels
+                );
+                least += 1;
+            }
+        }
+    }
+    assert!(
+        met > 0 && least > 0,
+        "both outcomes: {met} met, {least} least"
+    );
 }
 
 #[test]
