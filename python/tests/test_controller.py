@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 import shadow_aliasing as sa
+from views import look
 
 H = 1080
 FRAMES = 240
@@ -39,18 +40,6 @@ for _k in (2, 3, 4):
     ALLOWED[f"cascades practical k={_k} uniform"] = dict(
         scheme="cascades", rule="uniform", partition="practical", k=_k, lambda_=0.5)
     ALLOWED[f"stable log k={_k}"] = dict(scheme="stable", partition="log", k=_k)
-
-
-def look(eye, direction):
-    """The world → eye matrix of a camera at ``eye`` looking along ``direction`` (y up)."""
-    d = np.asarray(direction, float) / np.linalg.norm(direction)
-    right = np.cross(d, [0.0, 1.0, 0.0])
-    right /= np.linalg.norm(right)
-    up = np.cross(right, d)
-    eye_to_world = np.eye(4)
-    eye_to_world[:3, 0], eye_to_world[:3, 1], eye_to_world[:3, 2] = right, up, -d
-    eye_to_world[:3, 3] = eye
-    return np.linalg.inv(eye_to_world)
 
 
 def walk_view(i, dz=0.0):

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import shadow_aliasing as sa
+from views import look_at
 
 NEAR, FAR, THETA = 1.0, 100.0, 0.5
 H, W = 24, 32
@@ -24,20 +25,6 @@ def perspective(near, far, theta, aspect, gl=False):
     else:
         p[2, 2], p[2, 3] = far / (near - far), far * near / (near - far)
     return p
-
-
-def look_at(eye, target, up=(0.0, 1.0, 0.0)):
-    """World → eye, the camera at `eye` looking at `target`."""
-    eye, target, up = map(np.asarray, (eye, target, up))
-    f = target - eye
-    f /= np.linalg.norm(f)
-    r = np.cross(f, up)
-    r /= np.linalg.norm(r)
-    u = np.cross(r, f)
-    v = np.eye(4)
-    v[0, :3], v[1, :3], v[2, :3] = r, u, -f
-    v[:3, 3] = -v[:3, :3] @ eye
-    return v
 
 
 def pixel_ndc(h, w):

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import shadow_aliasing as sa
+from views import look
 
 H, W = 180, 320
 NEAR, FAR, HALF_FOV, ASPECT = 0.5, 200.0, math.radians(30.0), W / H
@@ -21,17 +22,6 @@ BOXES = np.array([
 ])
 SCHEMES = ["single uniform", "single lispsm", "cascades practical k=3 uniform",
            "cascades log k=4 lispsm", "stable log k=3", "faces lispsm k=2"]
-
-
-def look(eye, direction):
-    d = np.asarray(direction, float) / np.linalg.norm(direction)
-    right = np.cross(d, [0.0, 1.0, 0.0])
-    right /= np.linalg.norm(right)
-    up = np.cross(right, d)
-    eye_to_world = np.eye(4)
-    eye_to_world[:3, 0], eye_to_world[:3, 1], eye_to_world[:3, 2] = right, up, -d
-    eye_to_world[:3, 3] = eye
-    return np.linalg.inv(eye_to_world)
 
 
 VIEW = look([1.0, 6.0, 10.0], [0.15, -0.25, -1.0])
