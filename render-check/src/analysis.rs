@@ -22,6 +22,7 @@
 
 use crate::blend::{band_at, band_maps, blend_agrees, in_band, paper_part};
 use crate::gpu::{FrameOutput, Lookup};
+use crate::paper_error::PaperErrors;
 use crate::perspective::{centred, lloyd2006, one_sided, perspective_error};
 use crate::ratios::{frame_ratios, lens_ratios};
 use crate::scene::{ray_occluded, Mesh, Scene, FACING};
@@ -129,6 +130,15 @@ pub struct Measured {
     /// pixel's exact depth (pixels within 10⁻⁴ of a plane left out); `None` for the other
     /// schemes.
     pub split_mismatches: Option<usize>,
+    /// The rendered m_x, m_z against the paper's map at each compared pixel
+    /// ([`crate::paper_error`]): (99th percentile, largest) of the relative difference; `None`
+    /// for a scheme whose maps no paper fixes.
+    pub paper_error_rel_diff: Option<(f64, f64)>,
+    /// The frame's reported M_x, M_z against Lloyd 2006 §4.4's maxima of the paper's maps:
+    /// the largest relative difference over the maps; `None` as above.
+    pub paper_frame_rel_diff: Option<f64>,
+    /// The minimax map: S̄ at its n′ over the least S̄ of the paper's maps (`None` elsewhere).
+    pub minimax_storage_ratio: Option<f64>,
 }
 
 /// Per-pixel results (for the heat maps) and the case's numbers.
@@ -457,6 +467,7 @@ pub fn analyse(
     let mut positions = Vec::new();
     let mut fits = warp_fits(view, built, scheme);
     let mut split_mis = 0usize;
+    let mut paper = PaperErrors::new(view, built, scheme, height, res);
     for (i, q) in px.iter().enumerate() {
         if q.class == Class::Sky {
             continue;
@@ -609,6 +620,7 @@ pub fn analyse(
             if let Some((mx, mz)) = perspective_error(view, width, height, jr, q.p, q.n) {
                 let m = &mut rendered_m[q.part];
                 *m = (m.0.max(mx), m.1.max(mz));
+                paper.add(q.part, q.p, (mx, mz));
                 if let (Some(l), 1) = (&lloyd, out.id[i]) {
                     let d = l.pixel_diff(q.part, -q.p.z, mx, mz, width, height, res);
                     if debug && d > 0.005 {
@@ -685,6 +697,9 @@ pub fn analyse(
         lispsm_warp_rel_diff: lispsm_warp,
         tsm_focus_fraction: tsm_focus,
         split_mismatches: (!built.planes.is_empty()).then_some(split_mis),
+        paper_error_rel_diff: paper.pixel_diffs(),
+        paper_frame_rel_diff: paper.frame_diff(built),
+        minimax_storage_ratio: paper.storage_ratio(),
     };
     Ok(Analysis {
         measured,

@@ -5,12 +5,13 @@
 //! `--fault NAME` injects one deliberate fault; `--self-test` runs the clean build and every fault.
 //! `render-check --help` lists the options.
 
-use render_check::faults::{self_test, Fault, MIN_SETUPS_CAUGHT};
+use render_check::faults::Fault;
 use render_check::gpu::{Gpu, Lookup};
 use render_check::images::{close_up, error_panels, lens_overlay, shaded, Crop};
 use render_check::run::{case_clip_depth, run_case, run_full, Render, Sizes, Summary};
 use render_check::scene::Scene;
 use render_check::schemes::{setups, Scheme, Setup};
+use render_check::self_test::{self_test, MIN_SETUPS_CAUGHT};
 use render_check::targets::{is_inconclusive, violations};
 use shadow_aliasing::maps::ClipDepth;
 use std::path::PathBuf;

@@ -3,10 +3,11 @@
 //! them. `render-check --self-test` runs every fault over every set-up; docs/rendered.md lists
 //! what catches each.
 
-use render_check::faults::{target_name, Fault};
+use render_check::faults::Fault;
 use render_check::gpu::Gpu;
 use render_check::run::{case_clip_depth, run_full, Render, Sizes};
 use render_check::schemes::{setups, Scheme};
+use render_check::self_test::target_name;
 use render_check::targets::violations;
 
 const SIZES: Sizes = Sizes {
