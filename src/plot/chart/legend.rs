@@ -1,6 +1,7 @@
 //! A line chart's legend, drawn by the chart itself (not by plotters) so that its box is known:
-//! it goes to the position inside the plotting area where it covers the fewest lines, markers
-//! and labels, the chart's preferred position first among equals.
+//! it goes inside the plotting area where it covers no line, marker or label (the chart's
+//! preferred position first), and below the plot, in as many columns as fit, where no such
+//! place exists: a legend never covers data.
 
 use super::super::Fail;
 use super::fine::{draw_fine_path, fill_fine_polygon};
@@ -51,15 +52,26 @@ fn sample(e: &Entry) -> (f64, f64) {
     }
 }
 
+/// The clearance kept between a legend inside the plot and every line, marker and label (more
+/// than half the widest line the figures draw).
+const CLEAR: f64 = 3.0;
+
+/// The space between the columns of a legend below its plot.
+const COLUMN_GAP: f64 = 12.0;
+
 /// The legend's size for entries whose texts measure `sizes`, and its row height.
 fn size(sizes: &[(u32, u32)]) -> (f64, f64, f64) {
-    let row = sizes.iter().map(|s| f64::from(s.1)).fold(12.0, f64::max) + 4.0;
+    let row = row_height(sizes);
     let text = sizes.iter().map(|s| f64::from(s.0)).fold(0.0, f64::max);
     (
         2.0 * PAD + SAMPLE + GAP + text,
         2.0 * PAD + row * sizes.len() as f64,
         row,
     )
+}
+
+fn row_height(sizes: &[(u32, u32)]) -> f64 {
+    sizes.iter().map(|s| f64::from(s.1)).fold(12.0, f64::max) + 4.0
 }
 
 /// The box of a `w` × `h` legend at `pos` inside `plot`.
@@ -89,13 +101,27 @@ fn at(pos: &SeriesLabelPosition, plot: &Rect, w: f64, h: f64) -> Rect {
     Rect::anchored((x, y), Pos::new(hp, vp), w, h)
 }
 
-/// Where the legend goes: the position among the nine that touches the fewest lines, markers
-/// and boxes, `preferred` first among equals.
-fn place(preferred: &SeriesLabelPosition, plot: &Rect, w: f64, h: f64, o: &Obstacles) -> Rect {
+/// Where a `w` × `h` legend goes inside `plot`: a box that lies wholly inside the plot (with
+/// [`MARGIN`] to its border) and keeps [`CLEAR`] units from every line, marker and label of
+/// `o`. The nine usual positions are tried first (`preferred` first), then boxes on a grid over
+/// the plot, nearest a corner first. `None` where no such box exists: the legend then goes
+/// below the plot ([`strip_height`]).
+fn clear_inside(
+    preferred: &SeriesLabelPosition,
+    plot: &Rect,
+    w: f64,
+    h: f64,
+    o: &Obstacles,
+) -> Option<Rect> {
     use SeriesLabelPosition as P;
-    let mut best = at(preferred, plot, w, h);
-    let mut fewest = o.hits(&best, None).0;
-    for pos in [
+    let room = (
+        plot.x1 - plot.x0 - 2.0 * MARGIN - w,
+        plot.y1 - plot.y0 - 2.0 * MARGIN - h,
+    );
+    if room.0 < 0.0 || room.1 < 0.0 {
+        return None;
+    }
+    let usual = [
         P::UpperRight,
         P::UpperLeft,
         P::LowerRight,
@@ -105,53 +131,195 @@ fn place(preferred: &SeriesLabelPosition, plot: &Rect, w: f64, h: f64, o: &Obsta
         P::MiddleRight,
         P::MiddleLeft,
         P::MiddleMiddle,
-    ] {
-        let r = at(&pos, plot, w, h);
-        let n = o.hits(&r, None).0;
-        if n < fewest {
-            (best, fewest) = (r, n);
+    ];
+    const STEPS: u32 = 12;
+    let mut grid: Vec<(f64, Rect)> = Vec::new();
+    for i in 0..=STEPS {
+        for j in 0..=STEPS {
+            let (fx, fy) = (
+                f64::from(i) / f64::from(STEPS),
+                f64::from(j) / f64::from(STEPS),
+            );
+            let x0 = plot.x0 + MARGIN + fx * room.0;
+            let y0 = plot.y0 + MARGIN + fy * room.1;
+            let corner = fx.min(1.0 - fx) * room.0 + fy.min(1.0 - fy) * room.1;
+            grid.push((
+                corner,
+                Rect {
+                    x0,
+                    y0,
+                    x1: x0 + w,
+                    y1: y0 + h,
+                },
+            ));
         }
     }
-    best
+    grid.sort_by(|a, b| a.0.total_cmp(&b.0));
+    std::iter::once(at(preferred, plot, w, h))
+        .chain(usual.iter().map(|p| at(p, plot, w, h)))
+        .chain(grid.into_iter().map(|g| g.1))
+        .find(|r| o.hits(&r.grown(CLEAR), None).0 == 0)
+}
+
+/// The texts' sizes of `entries` as `area` measures them.
+fn measure<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    entries: &[Entry],
+) -> Result<Vec<(u32, u32)>, Fail> {
+    let style = text_style();
+    Ok(entries
+        .iter()
+        .map(|e| area.estimate_text_size(&e.label, &style))
+        .collect::<Result<Vec<_>, _>>()?)
+}
+
+fn text_style() -> TextStyle<'static> {
+    TextStyle::from((FONT, TEXT).into_font()).pos(Pos::new(HPos::Left, VPos::Center))
+}
+
+/// A legend below its plot: the entries in `columns` columns (row by row), each column as wide
+/// as its widest entry; the box's size.
+struct Grid {
+    columns: usize,
+    widths: Vec<f64>,
+    row: f64,
+    w: f64,
+    h: f64,
+}
+
+/// The most columns (at most one per entry) whose box is no wider than `width`; one column
+/// where even that is wider.
+fn grid(sizes: &[(u32, u32)], width: f64) -> Grid {
+    let row = row_height(sizes);
+    let n = sizes.len().max(1);
+    let cell = |i: usize| SAMPLE + GAP + f64::from(sizes[i].0);
+    let layout = |columns: usize| {
+        let widths: Vec<f64> = (0..columns)
+            .map(|c| {
+                (c..sizes.len())
+                    .step_by(columns)
+                    .map(cell)
+                    .fold(0.0, f64::max)
+            })
+            .collect();
+        let w = 2.0 * PAD + widths.iter().sum::<f64>() + COLUMN_GAP * (columns - 1) as f64;
+        let h = 2.0 * PAD + row * n.div_ceil(columns) as f64;
+        Grid {
+            columns,
+            widths,
+            row,
+            w,
+            h,
+        }
+    };
+    (1..=n)
+        .rev()
+        .map(layout)
+        .find(|g| g.w <= width)
+        .unwrap_or_else(|| layout(1))
+}
+
+/// The height a legend of `entries` needs below a plot in `area` (its box and the space above
+/// it), were it to go there.
+fn below_height<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    entries: &[Entry],
+) -> Result<u32, Fail> {
+    let width = f64::from(area.dim_in_pixel().0);
+    let g = grid(&measure(area, entries)?, width - 2.0 * MARGIN);
+    Ok((g.h + 2.0 * MARGIN).ceil() as u32)
+}
+
+/// Where a chart's legend went.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Placed {
+    /// Inside the plot, clear of its data (or there is no legend).
+    Inside,
+    /// Below the plot, in a strip of this height: no box inside was clear. Where the chart
+    /// had no such strip, nothing is drawn and the height is what the strip needs.
+    Below(u32),
 }
 
 /// Draws the legend of `entries` on `plot_area` (a chart's plotting area without its
-/// coordinates), at the best position for `obstacles` (see [`place`]).
-pub(crate) fn draw_legend<DB: DrawingBackend>(
+/// coordinates) where it covers none of `obstacles` ([`clear_inside`]); failing that, in
+/// `strip` (an area below the chart, centred under the plot) when there is one. Returns where
+/// it went.
+pub(crate) fn draw_legend_clear<DB: DrawingBackend>(
     plot_area: &DrawingArea<DB, Shift>,
+    strip: Option<&DrawingArea<DB, Shift>>,
     entries: &[Entry],
     preferred: &SeriesLabelPosition,
     obstacles: &Obstacles,
-) -> Result<(), Fail> {
+) -> Result<Placed, Fail> {
     if entries.is_empty() {
-        return Ok(());
+        return Ok(Placed::Inside);
     }
-    let style = TextStyle::from((FONT, TEXT).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
-    let sizes = entries
-        .iter()
-        .map(|e| plot_area.estimate_text_size(&e.label, &style))
-        .collect::<Result<Vec<_>, _>>()?;
+    let sizes = measure(plot_area, entries)?;
     let (w, h, row) = size(&sizes);
-    let (xr, yr) = plot_area.get_pixel_range();
-    let plot = Rect {
+    let plot = pixel_rect(plot_area);
+    if let Some(r) = clear_inside(preferred, &plot, w, h, obstacles) {
+        let g = Grid {
+            columns: 1,
+            widths: vec![w - 2.0 * PAD],
+            row,
+            w,
+            h,
+        };
+        draw_box(plot_area, entries, &r, &g)?;
+        return Ok(Placed::Inside);
+    }
+    let Some(strip) = strip else {
+        return Ok(Placed::Below(below_height(plot_area, entries)?));
+    };
+    let s = pixel_rect(strip);
+    let g = grid(&sizes, s.x1 - s.x0 - 2.0 * MARGIN);
+    // Centred under the plot, kept on the strip.
+    let x0 = (0.5 * (plot.x0 + plot.x1 - g.w))
+        .min(s.x1 - MARGIN - g.w)
+        .max(s.x0 + MARGIN);
+    let y0 = s.y0 + MARGIN;
+    let r = Rect {
+        x0,
+        y0,
+        x1: x0 + g.w,
+        y1: y0 + g.h,
+    };
+    draw_box(strip, entries, &r, &g)?;
+    Ok(Placed::Below((s.y1 - s.y0) as u32))
+}
+
+/// The pixel extent of `area` (backend units).
+fn pixel_rect<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Rect {
+    let (xr, yr) = area.get_pixel_range();
+    Rect {
         x0: f64::from(xr.start),
         y0: f64::from(yr.start),
         x1: f64::from(xr.end),
         y1: f64::from(yr.end),
-    };
-    let r = place(preferred, &plot, w, h, obstacles);
-    let (bx, by) = plot_area.get_base_pixel();
+    }
+}
+
+/// Draws the box `r` (absolute backend units) on `area` with the entries laid out by `g`.
+fn draw_box<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    entries: &[Entry],
+    r: &Rect,
+    g: &Grid,
+) -> Result<(), Fail> {
+    let style = text_style();
+    let (bx, by) = area.get_base_pixel();
     let local = |x: f64, y: f64| ((x.round() as i32) - bx, (y.round() as i32) - by);
     let (a, b) = (local(r.x0, r.y0), local(r.x1, r.y1));
-    plot_area.draw(&Rectangle::new([a, b], WHITE.mix(0.9).filled()))?;
-    plot_area.draw(&Rectangle::new([a, b], RGBColor(120, 120, 120)))?;
+    area.draw(&Rectangle::new([a, b], WHITE.mix(0.9).filled()))?;
+    area.draw(&Rectangle::new([a, b], RGBColor(120, 120, 120)))?;
     for (i, e) in entries.iter().enumerate() {
-        let y = r.y0 + PAD + row * (i as f64 + 0.5);
-        let x = r.x0 + PAD;
+        let (column, line) = (i % g.columns, i / g.columns);
+        let y = r.y0 + PAD + g.row * (line as f64 + 0.5);
+        let x = r.x0 + PAD + g.widths[..column].iter().sum::<f64>() + COLUMN_GAP * column as f64;
         let (start, marker_at) = sample(e);
         if e.line {
             draw_fine_path(
-                plot_area,
+                area,
                 &[(x + start, y), (x + SAMPLE, y)],
                 e.colour,
                 e.width,
@@ -160,9 +328,9 @@ pub(crate) fn draw_legend<DB: DrawingBackend>(
         }
         if let Some(m) = e.marker {
             let outline = m.outline(e.width as i32 + 2);
-            fill_fine_polygon(plot_area, (x + marker_at, y), &outline, e.colour)?;
+            fill_fine_polygon(area, (x + marker_at, y), &outline, e.colour)?;
         }
-        plot_area.draw(&Text::new(
+        area.draw(&Text::new(
             e.label.clone(),
             local(x + SAMPLE + GAP, y),
             style.clone(),

@@ -5,7 +5,8 @@ use super::super::Fail;
 use super::axis::{build_chart, Axis};
 use super::fine::{draw_fine_line, fill_fine_polygon, to_backend};
 use super::label::{place_label, place_note, text_in_box, Obstacles, Rect, LABEL_PAD};
-use super::legend::{draw_legend, Entry};
+use super::legend::{draw_legend_clear, Entry, Placed};
+use super::probe::probe_area;
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -275,11 +276,52 @@ pub(crate) fn clip_polyline(
     out
 }
 
-/// Draws a line chart into `area`.
+/// Draws a line chart into `area`, its legend inside the plot where it covers no data and
+/// below the plot otherwise ([`legend_below`]).
 pub(crate) fn draw_line_chart<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     c: &LineChart,
 ) -> Result<(), Fail> {
+    let below = legend_below(area.dim_in_pixel(), c)?;
+    draw_line_chart_reserving(area, c, below).map(|_| ())
+}
+
+/// The height a chart drawn on an area of `size` units keeps below its plot for its legend:
+/// 0 where the legend finds a place inside the plot that covers no line, marker or label
+/// (the chart is laid out once on a [`super::probe::Probe`] to find out).
+pub(crate) fn legend_below(size: (u32, u32), c: &LineChart) -> Result<u32, Fail> {
+    if !c.show_legend {
+        return Ok(0);
+    }
+    Ok(match draw_chart(&probe_area(size), c, None)? {
+        Placed::Inside => 0,
+        Placed::Below(h) => h,
+    })
+}
+
+/// Draws a line chart into `area` with `below` units under it kept for its legend, which goes
+/// there only where no clear place inside the plot exists (panels side by side keep the same
+/// height below, so that their plots line up). Returns where the legend went.
+pub(crate) fn draw_line_chart_reserving<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    c: &LineChart,
+    below: u32,
+) -> Result<Placed, Fail> {
+    if below == 0 {
+        return draw_chart(area, c, None);
+    }
+    let h = area.dim_in_pixel().1;
+    let (top, strip) = area.split_vertically(h.saturating_sub(below));
+    draw_chart(&top, c, Some(&strip))
+}
+
+/// Draws a line chart into `area`, its legend (if any) where [`draw_legend_clear`] puts it,
+/// in `strip` when it goes below the plot.
+fn draw_chart<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    c: &LineChart,
+    strip: Option<&DrawingArea<DB, Shift>>,
+) -> Result<Placed, Fail> {
     let mut chart = build_chart(area, &c.title, &c.x, &c.y, true)?;
     let (x0, x1) = c.x.range();
     let (y0, y1) = c.y.range();
@@ -435,9 +477,10 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
         }
     }
     if c.show_legend {
-        draw_legend(&plot, &entries, &c.legend, &obstacles)?;
+        draw_legend_clear(&plot, strip, &entries, &c.legend, &obstacles)
+    } else {
+        Ok(Placed::Inside)
     }
-    Ok(())
 }
 
 /// The eight colours the line charts cycle through (colour-blind friendly, Okabe–Ito order).

@@ -17,6 +17,7 @@ mod label;
 mod legend;
 mod line;
 mod page;
+mod probe;
 mod raster;
 #[cfg(test)]
 pub(crate) mod read_svg;

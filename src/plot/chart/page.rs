@@ -2,7 +2,7 @@
 //! common page of line charts side by side.
 
 use super::super::{Column, Fail};
-use super::line::{draw_line_chart, LineChart};
+use super::line::{draw_line_chart_reserving, legend_below, LineChart};
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -161,8 +161,21 @@ impl super::super::Figure for Charts {
         let n = self.charts.len().max(1);
         let columns = (body.dim_in_pixel().0 as usize / 250).clamp(1, n);
         let panels = body.split_evenly((n.div_ceil(columns), columns));
-        for (panel, chart) in panels.iter().zip(&self.charts) {
-            draw_line_chart(panel, chart)?;
+        // A legend that finds no clear place in its plot goes below it; the panels of a row
+        // keep the same height below, so that their plots line up.
+        let below = panels
+            .iter()
+            .zip(&self.charts)
+            .map(|(p, c)| legend_below(p.dim_in_pixel(), c))
+            .collect::<Result<Vec<_>, _>>()?;
+        for (i, (panel, chart)) in panels.iter().zip(&self.charts).enumerate() {
+            let row = i / columns * columns;
+            let keep = below[row..(row + columns).min(below.len())]
+                .iter()
+                .copied()
+                .max()
+                .unwrap_or(0);
+            draw_line_chart_reserving(panel, chart, keep)?;
         }
         Ok(())
     }
