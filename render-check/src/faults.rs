@@ -73,6 +73,10 @@ pub enum Fault {
     /// `normal_offset` and the per-point offset (`sa_local_normal_offset`, and the `f64`
     /// `normal_offset_at` render-check models the lookup with) doubled.
     NormalOffsetDoubled,
+    /// The uniform map 1.2 × as wide as its focus body (its extent along s and t, about the map
+    /// centre), honestly reported: the frame's M_x, M_z, `max_error_pixels` and `texel_world`
+    /// × 1.2 with it, so that only a measurement against the paper can tell.
+    UniformWide,
 }
 
 /// How far from the world origin a set-up's camera must be for [`Fault::PlainWorld`] to apply
@@ -89,6 +93,8 @@ const DEPTH_TEXELS: f64 = 2.0;
 const BLEND_WIDE: f64 = 1.5;
 /// [`Fault::SplitsPast`]'s factor on each split's far end.
 const SPLITS_PAST: f64 = 1.03;
+/// [`Fault::UniformWide`]'s factor on the uniform map's extent.
+const UNIFORM_WIDE: f64 = 1.2;
 /// [`Fault::TsmFocus`]'s ξ (Martin & Tan's is −0.6).
 const TSM_XI: f64 = -0.8;
 
@@ -102,7 +108,7 @@ const GL_TO_01: DMat4 = DMat4::from_cols(
 
 impl Fault {
     /// Every fault, in the order of the self-test.
-    pub const ALL: [Fault; 21] = [
+    pub const ALL: [Fault; 22] = [
         Fault::MatrixScale,
         Fault::DepthShift,
         Fault::NPrimeDouble,
@@ -124,6 +130,7 @@ impl Fault {
         Fault::BiasHalved,
         Fault::PcfRadiusDoubled,
         Fault::NormalOffsetDoubled,
+        Fault::UniformWide,
     ];
 
     /// The name `--fault` takes.
@@ -150,6 +157,7 @@ impl Fault {
             Fault::BiasHalved => "bias-halved",
             Fault::PcfRadiusDoubled => "pcf-radius-x2",
             Fault::NormalOffsetDoubled => "normal-offset-x2",
+            Fault::UniformWide => "uniform-wide",
         }
     }
 
@@ -177,6 +185,7 @@ impl Fault {
             Fault::BiasHalved => "the records' depth bias and normal offset halved",
             Fault::PcfRadiusDoubled => "the PCF kernel's taps reaching 2r for a radius r",
             Fault::NormalOffsetDoubled => "the normal offset (record and per point) doubled",
+            Fault::UniformWide => "the uniform map 1.2 x too wide, its error reported x 1.2",
         }
     }
 
@@ -212,6 +221,7 @@ impl Fault {
                 Scheme::Lispsm | Scheme::Cascades | Scheme::BlendedCascades
             ),
             Fault::TsmFocus => scheme == Scheme::Tsm,
+            Fault::UniformWide => scheme == Scheme::Uniform,
             Fault::SplitsPast => matches!(
                 scheme,
                 Scheme::Cascades | Scheme::StableCascades | Scheme::BlendedCascades
@@ -388,6 +398,9 @@ impl Fault {
                     .flatten()
             }
             Fault::MatrixScale => Some(DMat4::from_scale(DVec3::new(SCALE, SCALE, 1.0)) * built),
+            Fault::UniformWide => Some(
+                DMat4::from_scale(DVec3::new(1.0 / UNIFORM_WIDE, 1.0 / UNIFORM_WIDE, 1.0)) * built,
+            ),
             Fault::DepthShift => Some(
                 built * DMat4::from_translation(view.light_eye * (DEPTH_TEXELS * fm.texel_world)),
             ),
@@ -407,6 +420,15 @@ impl Fault {
                 )
             }
             _ => None,
+        }
+    }
+
+    /// The factor on the frame's reported error (M_x, M_z, `max_error_pixels`, `texel_world`)
+    /// of a map of `scheme`: 1 but where the fault changes the map and reports it honestly.
+    pub fn reported_factor(fault: Option<Fault>, scheme: Scheme) -> f64 {
+        match fault {
+            Some(f @ Fault::UniformWide) if f.applies_to(scheme) => UNIFORM_WIDE,
+            _ => 1.0,
         }
     }
 

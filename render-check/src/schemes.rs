@@ -435,6 +435,8 @@ pub fn build(
             f.focus()
         ));
     }
+    // A fault reported honestly scales the frame's reported error with the map.
+    let honest = Fault::reported_factor(fault, scheme_);
     let mut maps: Vec<Map> = f
         .maps()
         .iter()
@@ -473,11 +475,11 @@ pub fn build(
                 near: m.split.0,
                 far: m.split.1,
                 reported: Reported {
-                    max_error_pixels: m.max_error_pixels,
-                    max_mx: m.max_mx,
-                    max_mz: m.max_mz,
+                    max_error_pixels: m.max_error_pixels * honest,
+                    max_mx: m.max_mx * honest,
+                    max_mz: m.max_mz * honest,
                     n_prime: m.shadow.n_prime().value(),
-                    texel_world: m.texel_world,
+                    texel_world: m.texel_world * honest,
                     blend,
                 },
             })

@@ -66,6 +66,20 @@ pub const LISPSM_WARP_REL_DIFF: f64 = 1e-3;
 /// TSM's focus fraction fitted from the GPU's texel coordinates against Martin & Tan's 0.8,
 /// absolutely, at most (measured within 10⁻⁷).
 pub const TSM_FOCUS_TOLERANCE: f64 = 1e-3;
+/// The rendered m_x, m_z against the paper's map at each compared pixel
+/// ([`crate::paper_error`]): the 99th percentile of the relative difference, at most (measured at
+/// most 3.8·10⁻⁴, `level_overhead`'s uniform map at 320 × 240; a map 1 % too wide or narrow
+/// misses it everywhere).
+pub const PAPER_ERROR_P99: f64 = 2e-3;
+/// The largest of the same, at most (measured at most 1.7·10⁻³: the GPU's `f32` texel
+/// coordinates on the surfaces nearest edge-on to the light that are compared).
+pub const PAPER_ERROR_MAX: f64 = 1e-2;
+/// The frame's reported M_x, M_z against Lloyd 2006 §4.4's maxima of the paper's maps over the
+/// body's vertices, relatively, at most (measured at most 2.4·10⁻¹⁴).
+pub const PAPER_FRAME_REL_DIFF: f64 = 1e-6;
+/// The minimax map's S̄ = M_x M_z over the least S̄ over n′ of the paper's maps, at most
+/// (measured at most 1 + 10⁻⁹).
+pub const MINIMAX_STORAGE_EXCESS: f64 = 1e-3;
 /// The shimmer test follows at least this many shadow-edge points.
 pub const MIN_SHIMMER_POINTS: usize = 100;
 
@@ -140,6 +154,32 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
             "|tsm_focus_fraction − 0.8| (the focus line fitted from the texels, Martin & Tan)",
             (f - crate::papers::TSM_FOCUS_FRACTION).abs(),
             TSM_FOCUS_TOLERANCE,
+        );
+    }
+    if let Some((p99, max)) = m.paper_error_rel_diff {
+        at_most(
+            "paper_error_p99 (rendered m_x, m_z against the paper's map, Lloyd 2006 §4.4)",
+            p99,
+            PAPER_ERROR_P99,
+        );
+        at_most(
+            "paper_error_max (rendered m_x, m_z against the paper's map, Lloyd 2006 §4.4)",
+            max,
+            PAPER_ERROR_MAX,
+        );
+    }
+    if let Some(d) = m.paper_frame_rel_diff {
+        at_most(
+            "paper_frame_rel_diff (reported M_x, M_z against the paper's map's §4.4 maxima)",
+            d,
+            PAPER_FRAME_REL_DIFF,
+        );
+    }
+    if let Some(r) = m.minimax_storage_ratio {
+        at_most(
+            "minimax_storage_ratio − 1 (S̄ at the minimax n′ over the least S̄ of the paper's maps)",
+            r - 1.0,
+            MINIMAX_STORAGE_EXCESS,
         );
     }
     if let Some(n) = m.split_mismatches {

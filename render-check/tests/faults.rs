@@ -31,8 +31,9 @@ fn violated(gpu: &Gpu, setup: &str, scheme: Scheme, fault: Option<Fault>) -> Vec
     violations(&r.summary)
 }
 
-/// The clean case meets every target; with `fault` it violates `target`.
-fn caught(setup: &str, scheme: Scheme, fault: Fault, target: &str) {
+/// The clean case meets every target; with `fault` it violates `target`. Returns the faulted
+/// case's violations.
+fn caught(setup: &str, scheme: Scheme, fault: Fault, target: &str) -> Vec<String> {
     let gpu = Gpu::new().unwrap_or_else(|e| panic!("{e}"));
     let clean = violated(&gpu, setup, scheme, None);
     // A fault in the shaders' source runs on its own device.
@@ -55,6 +56,7 @@ fn caught(setup: &str, scheme: Scheme, fault: Fault, target: &str) {
         scheme.name(),
         fault.name()
     );
+    v
 }
 
 /// The matrix scaled by 1.01 about the map centre: visible ground near the screen's edges falls
@@ -262,5 +264,35 @@ fn normal_offset_doubled_detaches_shadows() {
         Fault::NormalOffsetDoubled,
         "detached in path pcf1_local_normal_offset (shadowed pixels lit by a lookup lifted beyond \
          the need)",
+    );
+}
+
+/// The uniform map 1.2 × as wide as its body, its error reported 1.2 × larger with it: the
+/// frame's own ratios cannot see it (rendered over reported stays 1), the paper's map can (the
+/// rendered m_x, m_z are 1.2 × the paper's at every pixel).
+#[test]
+fn a_uniform_map_too_wide_and_honestly_reported_is_caught() {
+    let v = caught(
+        "behind_5",
+        Scheme::Uniform,
+        Fault::UniformWide,
+        "paper_error_p99 (rendered m_x, m_z against the paper's map, Lloyd 2006 §4.4)",
+    );
+    assert!(
+        !v.iter()
+            .any(|x| x.starts_with("frame_error_ratio") || x.starts_with("lens_frame_ratio")),
+        "{v:?}"
+    );
+}
+
+/// n′ × 2 in the minimax map (whose n′ the warp fit of LiSPSM does not check): the rendered
+/// m_x, m_z part from the paper's map for the n′ the frame reports.
+#[test]
+fn minimax_n_prime_doubled_is_caught_by_the_paper() {
+    caught(
+        "tilted_45",
+        Scheme::Minimax,
+        Fault::NPrimeDouble,
+        "paper_error_p99 (rendered m_x, m_z against the paper's map, Lloyd 2006 §4.4)",
     );
 }
