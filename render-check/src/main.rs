@@ -41,7 +41,7 @@ fn help() -> String {
          --scene FILE     one scene file (docs/rendered.md has the format) instead of the built-in set\n\
          --setup NAME     only this built-in set-up (overhead, tilted_45, behind_5, front_5,\n\
          \x20                grazing_10, parallel_1, level_overhead, thin_casters, far_1e5,\n\
-         \x20                far_tilted)\n\
+         \x20                far_tilted, level_side)\n\
          --width, --height  screen size (default 640 x 480)\n\
          --res N          texels per map side, overriding the scene's\n\
          --frames N       frames of the shimmer test (default 64)\n\

@@ -600,6 +600,10 @@ fn rotate_toward(v: DVec3, u: DVec3, deg: f64) -> DVec3 {
 ///   below a row of pixel centres at 180, 240 and 480 rows), the light straight down; every
 ///   map's focus body then has the frustum's (or its slice's) footprint, and the rendered M_x,
 ///   M_z over the ground are compared with Eq 7–10 (`analysis`);
+/// - `level_side`: `level_overhead`'s camera with the light 45° high from the side (travelling
+///   along +X, perpendicular to the view: γ = 90° again, but not straight down), so that each
+///   map's error depends on the eye depth alone and its worst body point, on the near plane, is
+///   the nearest visible ground (the two-sided `frame_error_ratio_worst_visible`);
 ///
 /// and `thin_casters`, the thin-caster scene ([`Scene::thin_casters`], also
 /// `render-check/scenes/thin_casters.json`) under its own 20° sun, and `far_1e5`, the same scene
@@ -644,6 +648,7 @@ pub fn setups() -> Vec<Setup> {
     level.eye = [0.0, h, 0.0];
     level.target = [0.0, h, -40.0];
     push("level_overhead", level, DVec3::NEG_Y);
+    let level_side = (level, elev(45.0, DVec3::X));
     out.push(Setup {
         name: "thin_casters".into(),
         scene: Scene::thin_casters(),
@@ -656,6 +661,13 @@ pub fn setups() -> Vec<Setup> {
     out.push(Setup {
         name: "far_tilted".into(),
         scene: tilted,
+    });
+    let mut side = base.clone();
+    side.camera = level_side.0;
+    side.light_dir = level_side.1.to_array();
+    out.push(Setup {
+        name: "level_side".into(),
+        scene: side,
     });
     out
 }

@@ -55,9 +55,29 @@ fn meets_every_target(gpu: &Gpu, name: &str, scene: &Scene, sizes: Sizes) -> Vec
                 sizes.height,
                 r.summary
             );
+            if setups().iter().any(|s| s.name == name) {
+                papers_measured(&r.summary);
+            }
             r.summary
         })
         .collect()
+}
+
+/// The schemes whose maps a paper fixes have their rendered error compared with the paper's map
+/// (render_check::paper_error), and only those: no measurement is no pass.
+fn papers_measured(c: &CaseSummary) {
+    let paper = matches!(
+        c.scheme.as_str(),
+        "uniform" | "lispsm" | "minimax" | "tsm" | "cascades4_lispsm" | "cascades4_blend"
+    );
+    let m = &c.measured;
+    assert_eq!(m.paper_error_rel_diff.is_some(), paper, "{c:?}");
+    assert_eq!(m.paper_frame_rel_diff.is_some(), paper, "{c:?}");
+    assert_eq!(
+        m.minimax_storage_ratio.is_some(),
+        c.scheme == "minimax",
+        "{c:?}"
+    );
 }
 
 fn setup(name: &str) -> Scene {
@@ -313,6 +333,24 @@ fn level_overhead_meets_lloyd_2006() {
         // The near end of the ground is visible: the frame's worst point is reached.
         assert!(
             c.measured.frame_error_ratio_worst_visible.is_some(),
+            "{c:?}"
+        );
+    }
+}
+
+/// `level_side`: `level_overhead`'s camera under a light 45° high from the side (γ = 90°, not
+/// straight down): each map's error depends on the eye depth alone, so its worst body point is
+/// on the near plane, where the nearest ground is seen, and the two-sided checks
+/// (`frame_error_ratio_worst_visible`, `lens_frame_ratio_worst_visible` ≥ 0.95) run for every
+/// scheme.
+#[test]
+fn level_side_reaches_every_schemes_worst_point() {
+    let cases = meets_every_target(&gpu(), "level_side", &setup("level_side"), SIZES);
+    assert_eq!(cases.len(), Scheme::ALL.len());
+    for c in &cases {
+        assert!(
+            c.measured.frame_error_ratio_worst_visible.is_some()
+                && c.measured.lens_frame_ratio_worst_visible.is_some(),
             "{c:?}"
         );
     }
