@@ -4,7 +4,8 @@
 //! - LiSPSM's n′ (Wimmer et al. 2004, n_opt = n + √(f n); Lloyd 2006 §4.1 divides it by sin γ,
 //!   γ the angle between the view direction and the light);
 //! - TSM's 80 % line (Martin & Tan 2004 §4.2: the focus point, δ beyond the near plane on the
-//!   view axis, maps to ξ = −0.6 of the trapezoid's [1, −1], 80 % of the map from its top line);
+//!   view axis, maps to ξ = −0.6 of the trapezoid's [1, −1], 80 % of the map from its top line;
+//!   §6.4: for a body shorter than the frustum, δ scaled by the body's depth over the frustum's);
 //! - the practical split planes (Zhang et al. 2006: the logarithmic plane n (f/n)^(i/k) and the
 //!   uniform one n + (f − n) i/k, mixed λ : 1 − λ);
 //! - the blend bands a requested overlap o makes: each split but the last reaches o of its own
@@ -41,6 +42,17 @@ pub fn warp_axis(light_eye: DVec3) -> Option<DVec3> {
 /// Martin & Tan's focus line: the fraction of the map, from its top line, that the trapezoid
 /// gives to the focus region (ξ = −0.6 on [1, −1]: (1 − ξ)/2).
 pub const TSM_FOCUS_FRACTION: f64 = 0.8;
+
+/// Martin & Tan §6.4: where the focus body (eye depths `[n_b, f_b]`) is not the whole frustum
+/// (`[n, f]`), the near and far planes are pushed to bound it and the focus region, δ beyond the
+/// near plane for the frustum (§4.2), lies within `δ f′/f` of the pushed near plane, f′ = f_b − n_b
+/// and f = f − n their distances: the focus point's eye depth, `n_b + δ (f_b − n_b)/(f − n)`.
+pub fn tsm_focus_depth(delta: f64, (n_b, f_b): (f64, f64), (n, f): (f64, f64)) -> f64 {
+    n_b + delta * (f_b - n_b) / (f - n)
+}
+
+/// The focus distance δ render-check asks TSM for: a quarter of the camera's depth range.
+pub const TSM_FOCUS_SHARE: f64 = 0.25;
 
 /// Martin & Tan §4.2: the distance η of the centre of projection before the top line that maps
 /// the focus line, δ′ beyond the top line of a trapezoid of height λ, to ξ (on [1, −1]):
@@ -108,6 +120,14 @@ mod tests {
         let y = |u: f64| a + b / (u + eta);
         assert!((y(0.0) - 1.0).abs() < 1e-12 && (y(lambda) + 1.0).abs() < 1e-12);
         assert!((y(delta) - xi).abs() < 1e-12, "{}", y(delta));
+    }
+
+    /// §6.4 by hand: the frustum [1, 101], δ = 25; a body [11, 61] (half the depth) has its
+    /// focus 12.5 beyond its near end; the whole frustum keeps δ.
+    #[test]
+    fn tsm_focus_scaled_to_the_body() {
+        assert!((tsm_focus_depth(25.0, (11.0, 61.0), (1.0, 101.0)) - 23.5).abs() < 1e-12);
+        assert!((tsm_focus_depth(25.0, (1.0, 101.0), (1.0, 101.0)) - 26.0).abs() < 1e-12);
     }
 
     /// Practical planes by hand: n = 1, f = 16, k = 4, λ = 1 gives 1, 2, 4, 8, 16; λ = 0 the

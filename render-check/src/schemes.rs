@@ -345,7 +345,7 @@ fn frame_scheme(
         Scheme::Lispsm => FrameScheme::Single(WarpRule::Lispsm),
         Scheme::Minimax => FrameScheme::Single(WarpRule::Minimax),
         Scheme::Tsm => FrameScheme::Tsm(TsmOptions {
-            focus: 0.25 * (view.far() - view.near()),
+            focus: crate::papers::TSM_FOCUS_SHARE * (view.far() - view.near()),
             search: TsmSearch::EightyPercent,
         }),
         Scheme::Cascades => FrameScheme::Cascades {

@@ -356,6 +356,35 @@ fn level_side_reaches_every_schemes_worst_point() {
     }
 }
 
+/// Martin & Tan §6.4: where the focus body is shorter than the frustum (steps on a ground that
+/// ends 14 from the camera's foot, the far plane at 60), the focus region is δ f′/f beyond the
+/// body's near end (f′, f the body's and the frustum's depths), as the crate builds it. TSM's
+/// focus line fitted from the GPU's texels is then at 80 % of the map and its error is the
+/// paper's map's; with δ unscaled (render-check's former expectation) the focus fraction was off
+/// by 0.13 and the paper's map by 1.6 at 320 × 240.
+#[test]
+fn tsm_focus_follows_a_body_shorter_than_the_frustum() {
+    let scene: Scene = serde_json::from_str(
+        r#"{"ground_y": 0.0, "ground_half_extent": 14.0,
+            "boxes": [{"min": [-5, 0, -12], "max": [5, 0.6, -9]},
+                      {"min": [-5, 0, -9], "max": [5, 1.2, -6]},
+                      {"min": [-5, 0, -6], "max": [5, 1.8, -3]},
+                      {"min": [2, 0, -20], "max": [3, 4, -19]}],
+            "camera": {"eye": [0, 5, 6], "target": [0, 0, -10], "up": [0, 1, 0],
+                       "near": 0.5, "far": 60, "fov_y_deg": 55},
+            "light_dir": [0.4, -1.0, -0.3], "map_resolution": 1024}"#,
+    )
+    .unwrap();
+    scene.validate().unwrap();
+    let r = run_case(&gpu(), "stairs", &scene, Scheme::Tsm, SIZES).unwrap();
+    let v = violations(&r.summary);
+    assert!(v.is_empty(), "{v:?}");
+    let m = &r.summary.measured;
+    let f = m.tsm_focus_fraction.unwrap();
+    assert!((f - 0.8).abs() <= 1e-3, "{f}");
+    assert!(m.paper_error_rel_diff.is_some(), "{m:?}");
+}
+
 /// The clipmap (issue 24 item 4): the level the shader picks (`sa_clipmap_level` in `f32`) is the
 /// library's (`LevelChoice::level`) at every visible pixel's exact depth, away from a level's
 /// boundary; and where no clamp applies, the level's texel is at most 2^b and more than 2^(b−1)
