@@ -22,6 +22,8 @@ pub struct CaseSummary {
     pub width: u32,
     /// Screen height, pixels.
     pub height: u32,
+    /// Texels along each side of each map.
+    pub map_resolution: u32,
     /// Texels of all the scheme's maps together.
     pub map_texels: u64,
     /// What the analysis measured (flattened into the row).
@@ -262,6 +264,7 @@ pub fn run_case(
             scheme: scheme.name().into(),
             width: sizes.width,
             height: sizes.height,
+            map_resolution: res,
             map_texels: built.maps.len() as u64 * u64::from(res) * u64::from(res),
             measured: a.measured.clone(),
             shimmer_changed_fraction: None,
