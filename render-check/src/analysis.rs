@@ -22,8 +22,9 @@
 
 use crate::blend::{band_at, band_maps, blend_agrees, in_band, paper_part};
 use crate::gpu::{FrameOutput, Lookup};
+use crate::lloyd_level::lloyd_applies;
 use crate::paper_error::PaperErrors;
-use crate::perspective::{centred, lloyd2006, one_sided, perspective_error};
+use crate::perspective::{centred, one_sided, perspective_error};
 use crate::ratios::{frame_ratios, lens_ratios};
 use crate::scene::{ray_occluded, Mesh, Scene, FACING};
 use crate::schemes::{Built, Scheme, View};
@@ -107,11 +108,18 @@ pub struct Measured {
     /// edge-on to the light (pixels; the projection factor included).
     pub max_lens: f64,
     /// The largest ratio, over maps, of the largest GPU lens with the projection factor 1 over
-    /// the map's visible pixels to the map's reported `max_error_pixels`.
+    /// the map's visible pixels to the map's reported `max_error_pixels` times the map's largest
+    /// rendered texel shear (`max_texel_shear`: a sheared texel's extent exceeds both of Lloyd's
+    /// widths).
     pub lens_frame_ratio: f64,
-    /// The smallest such ratio over the maps whose worst body vertex is visible (`None` where no
-    /// map's is).
+    /// The smallest ratio of the same lens to `max_error_pixels` (no shear: the texel's extent is
+    /// at least each of Lloyd's widths) over the maps whose worst body vertex is visible (`None`
+    /// where no map's is).
     pub lens_frame_ratio_worst_visible: Option<f64>,
+    /// The largest texel shear over the maps' compared pixels: the texel's largest extent on Π
+    /// (from the GPU's texel coordinates) over the larger of Lloyd's widths there
+    /// ([`crate::perspective::texel_shear`]).
+    pub max_texel_shear: f64,
     /// The GPU's texel position of each pixel against the exact point's (`f64`) under the map's
     /// matrix, texels: the 99th percentile over the visible pixels in a map.
     pub texel_position_p99: f64,
@@ -460,6 +468,8 @@ pub fn analyse(
     let mut max_lens = 0.0f64;
     // Per map: the largest GPU lens with the projection factor 1.
     let mut lens_m = vec![0.0f64; nmaps];
+    // Per map: the largest rendered texel shear on Π (`perspective::texel_shear`).
+    let mut shear_m = vec![1.0f64; nmaps];
     // Per map: the largest GPU lens (projection factor included; printed with
     // RENDER_CHECK_DEBUG).
     let mut lens_full_m = vec![0.0f64; nmaps];
@@ -617,9 +627,10 @@ pub fn analyse(
         }
         // The perspective error, projection factor divided out.
         if q.n.dot(view.light_eye).abs() >= EDGE_ON_LIGHT {
-            if let Some((mx, mz)) = perspective_error(view, width, height, jr, q.p, q.n) {
+            if let Some((mx, mz, sh)) = perspective_error(view, width, height, jr, q.p, q.n) {
                 let m = &mut rendered_m[q.part];
                 *m = (m.0.max(mx), m.1.max(mz));
+                shear_m[q.part] = shear_m[q.part].max(sh);
                 paper.add(q.part, q.p, (mx, mz));
                 if let (Some(l), 1) = (&lloyd, out.id[i]) {
                     let d = l.pixel_diff(q.part, -q.p.z, mx, mz, width, height, res);
@@ -649,7 +660,8 @@ pub fn analyse(
     positions.sort_by(f64::total_cmp);
     let (lispsm_warp, tsm_focus) = warp_measures(view, built, scheme, &fits, debug);
     let (ratio, worst) = frame_ratios(&px, view, built, &rendered_m, (width, height, res));
-    let (lens_ratio, lens_worst) = lens_ratios(&px, view, built, &lens_m, (width, height));
+    let (lens_ratio, lens_worst) =
+        lens_ratios(&px, view, built, (&lens_m, &shear_m), (width, height));
     if debug {
         for (k, map) in built.maps.iter().enumerate() {
             eprintln!(
@@ -692,6 +704,7 @@ pub fn analyse(
         max_lens,
         lens_frame_ratio: lens_ratio,
         lens_frame_ratio_worst_visible: lens_worst,
+        max_texel_shear: shear_m.iter().copied().fold(1.0, f64::max),
         texel_position_p99: percentile(&positions, 0.99),
         texel_position_max: positions.last().copied().unwrap_or(f64::NAN),
         lispsm_warp_rel_diff: lispsm_warp,
@@ -708,88 +721,4 @@ pub fn analyse(
         lens,
         perspective_lens,
     })
-}
-
-/// Lloyd 2006's overhead case, where it applies: the camera level, the light straight down
-/// (γ = 90°, light-space z along the view), a scheme whose maps are Lloyd's warps (uniform,
-/// LiSPSM, minimax n′, z-partitions of LiSPSM), and every map's focus body with the footprint of
-/// its frustum slice (its depth range `split`, its width z tan θ_x at both ends).
-struct Lloyd {
-    /// Per map: near, far, n′.
-    maps: Vec<(f64, f64, f64)>,
-    tan: f64,
-    near: f64,
-}
-
-fn lloyd_applies(view: &View, built: &Built, scheme: Scheme) -> Option<Lloyd> {
-    if !matches!(
-        scheme,
-        Scheme::Uniform | Scheme::Lispsm | Scheme::Minimax | Scheme::Cascades
-    ) || (view.light_eye - DVec3::NEG_Y).length() > 1e-9
-    {
-        return None;
-    }
-    let tan = view.frustum.tan_half_fov();
-    let tan_x = tan * view.frustum.aspect();
-    let mut maps = Vec::new();
-    for (k, m) in built.maps.iter().enumerate() {
-        let (n, f) = (m.near, m.far);
-        let body = built.bodies.get(k)?;
-        let full = |z: f64| {
-            let wide = body
-                .iter()
-                .filter(|v| (-v.z - z).abs() <= 1e-9 * z)
-                .map(|v| v.x.abs())
-                .fold(0.0f64, f64::max);
-            (wide - z * tan_x).abs() <= 1e-9 * z * tan_x
-        };
-        if !(full(n) && full(f)) {
-            return None;
-        }
-        maps.push((n, f, m.reported.n_prime));
-    }
-    Some(Lloyd {
-        maps,
-        tan,
-        near: view.frustum.near(),
-    })
-}
-
-impl Lloyd {
-    /// The relative difference of a ground pixel's rendered (m_x, m_z) at depth `z` in map `k`
-    /// from Eq 7–8.
-    #[allow(clippy::too_many_arguments)] // one pixel's values and the sizes
-    fn pixel_diff(
-        &self,
-        k: usize,
-        z: f64,
-        mx: f64,
-        mz: f64,
-        width: u32,
-        height: u32,
-        res: u32,
-    ) -> f64 {
-        let (n, f, np) = self.maps[k];
-        let r = f64::from(res);
-        let ex = lloyd2006::m_x(z, n, f, np, f64::from(width), r);
-        let ez = lloyd2006::m_z(z, n, f, np, self.tan, f64::from(height), r);
-        (mx / ex - 1.0).abs().max((mz / ez - 1.0).abs())
-    }
-
-    /// The relative difference of the rendered maxima over the ground from Eq 9–10, for the maps
-    /// whose near end is the camera's near plane (where the level set-up shows the ground).
-    fn maxima_diff(&self, ground: &[(f64, f64)], width: u32, height: u32, res: u32) -> f64 {
-        let mut d = 0.0f64;
-        for (k, &(n, f, np)) in self.maps.iter().enumerate() {
-            if (n - self.near).abs() > 1e-12 * n || ground[k].0 == 0.0 {
-                continue;
-            }
-            let sizes = (f64::from(width), f64::from(height));
-            let (ex, ez) = lloyd2006::maxima(n, f, np, self.tan, sizes, f64::from(res));
-            d = d
-                .max((ground[k].0 / ex - 1.0).abs())
-                .max((ground[k].1 / ez - 1.0).abs());
-        }
-        d
-    }
 }

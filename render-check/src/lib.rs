@@ -10,6 +10,7 @@ pub mod faults;
 pub mod gpu;
 pub mod images;
 pub mod lens;
+pub mod lloyd_level;
 pub mod paper_error;
 pub mod papers;
 pub mod paths;

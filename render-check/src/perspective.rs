@@ -57,10 +57,13 @@ pub fn one_sided(f0: DVec2, f1: DVec2, f2: DVec2, forward: bool) -> DVec2 {
 
 /// The perspective error at the eye-space point `p` of a surface with unit eye-space normal `n`,
 /// from `j`, the Jacobian texel ← pixel there (texels per pixel; column 0 along the pixel
-/// column index, column 1 along the row index from the top): `(m_x, m_z)` in pixels per texel,
-/// the definitions of `shadow_aliasing::measure` (Lloyd 2006 §4.4): the light beam widths
-/// `w_ls = |∇_Π t| / |det A|`, `w_lt = 1/|∇_Π t|` in the plane Π ⊥ L (A: the texel coordinates'
-/// Jacobian on Π) over the image beam width `w_i = 2 z tan θ / H` at depth `z = −p.z`.
+/// column index, column 1 along the row index from the top): `(m_x, m_z, shear)`, m_x and m_z in
+/// pixels per texel, the definitions of `shadow_aliasing::measure` (Lloyd 2006 §4.4): the light
+/// beam widths `w_ls = |∇_Π t| / |det A|`, `w_lt = 1/|∇_Π t|` in the plane Π ⊥ L (A: the texel
+/// coordinates' Jacobian on Π) over the image beam width `w_i = 2 z tan θ / H` at depth
+/// `z = −p.z`; `shear` the texel's largest extent on Π, σ_max(A⁻¹) = 1/σ_min(A), over the larger
+/// of the two widths (≥ 1; 1 for a texel whose edges are perpendicular: w_ls is the s step's
+/// length and w_lt the t lines' spacing, so a t step off perpendicular is longer than w_lt).
 ///
 /// The surface's projection factor is divided out exactly: with `F` the exact Jacobian pixel ←
 /// surface (the camera's, in `f64`), `G = J F` is texel ← surface, and `A = G P⁻¹` with `P` the
@@ -73,7 +76,7 @@ pub fn perspective_error(
     j: DMat2,
     p: DVec3,
     n: DVec3,
-) -> Option<(f64, f64)> {
+) -> Option<(f64, f64, f64)> {
     let f = pixel_jacobian(&view.proj, width, height, p, n)?;
     let (e1, e2) = n.any_orthonormal_pair();
     let l = view.light_eye;
@@ -94,7 +97,25 @@ pub fn perspective_error(
     }
     let wi = 2.0 * z * view.frustum.tan_half_fov() / f64::from(height);
     let (mx, mz) = (gt / det / wi, 1.0 / gt / wi);
-    (mx.is_finite() && mz.is_finite()).then_some((mx, mz))
+    (mx.is_finite() && mz.is_finite()).then_some((mx, mz, texel_shear(a)))
+}
+
+/// A texel's shear on Π from `a`, the texel coordinates' Jacobian there (row 0 ∇s, row 1 ∇t):
+/// its largest extent σ_max(A⁻¹) = 1/σ_min(A) over the larger of Lloyd's widths,
+/// `w_ls = |∇t|/|det A|` (the s step's length) and `w_lt = 1/|∇t|` (the t lines' spacing); at
+/// least 1, +∞ for a singular `a`.
+pub fn texel_shear(a: DMat2) -> f64 {
+    let det = a.determinant().abs();
+    let gt = a.row(1).length();
+    // 1/σ_min(A) = σ_max(A)/|det A|, σ_max² from ‖A‖_F² = σ₁² + σ₂² and |det A| = σ₁ σ₂.
+    let f2 = a.x_axis.length_squared() + a.y_axis.length_squared();
+    let s_max = (0.5 * (f2 + (f2 * f2 - 4.0 * det * det).max(0.0).sqrt())).sqrt();
+    let shear = (s_max / det) / (gt / det).max(1.0 / gt);
+    if shear.is_finite() {
+        shear.max(1.0)
+    } else {
+        f64::INFINITY
+    }
 }
 
 /// `F = ∂(u, v)/∂(e₁, e₂)`: pixels per unit length on the plane through `p` with normal `n`, in
@@ -202,6 +223,21 @@ mod tests {
             let central = (f(u + step) - f(u - step)) / (2.0 * step);
             assert!((central - exact(u)).length() > 1e-3 * exact(u).length());
         }
+    }
+
+    /// A texel with edges a = (2, 0) (the s step) and b = (3, 1) (the t step) on Π: Lloyd's widths
+    /// |a| = 2 and the t lines' spacing det/|a| = 1, its largest extent the larger singular
+    /// value of [a b] (by hand: ‖·‖_F² = 14, det = 2, σ² = 7 ± √45); a square texel has no shear.
+    #[test]
+    fn texel_shear_by_hand() {
+        let edges = DMat2::from_cols(DVec2::new(2.0, 0.0), DVec2::new(3.0, 1.0));
+        let sigma = (7.0 + 45f64.sqrt()).sqrt();
+        let got = texel_shear(edges.inverse());
+        assert!((got - sigma / 2.0).abs() < 1e-12, "{got} {}", sigma / 2.0);
+        assert_eq!(
+            texel_shear(DMat2::from_diagonal(DVec2::new(0.5, 0.25))),
+            1.0
+        );
     }
 
     /// Eq 9–10 are Eq 7–8 at their maximising depths: m_x(z) decreases for n′ > n, and m_z is

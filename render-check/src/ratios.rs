@@ -59,14 +59,17 @@ pub(crate) fn frame_ratios(
 }
 
 /// The GPU's lens with the projection factor 1 against the frame's reported maxima: the largest
-/// ratio of a map's largest such lens over its visible pixels to its `max_error_pixels`, and the
-/// smallest over the maps whose worst body vertex (the one of the largest max(m_x, m_z) under the
-/// map, `vertex_max`) is within [`VISIBLE_PIXELS`] of a visible pixel looked up in the map.
+/// ratio of a map's largest such lens over its visible pixels to its `max_error_pixels` times its
+/// largest rendered texel shear `shear_m` (the lens is the texel's largest extent, at most the
+/// shear times the larger of Lloyd's widths, which the reported maximum bounds), and the smallest
+/// ratio to `max_error_pixels` alone (the extent is at least each width) over the maps whose
+/// worst body vertex (the one of the largest max(m_x, m_z) under the map, `vertex_max`) is
+/// within [`VISIBLE_PIXELS`] of a visible pixel looked up in the map.
 pub(crate) fn lens_ratios(
     px: &[Pixel],
     view: &View,
     built: &Built,
-    lens_m: &[f64],
+    (lens_m, shear_m): (&[f64], &[f64]),
     (width, height): (u32, u32),
 ) -> (f64, Option<f64>) {
     let tan = view.frustum.tan_half_fov();
@@ -77,7 +80,7 @@ pub(crate) fn lens_ratios(
             continue;
         }
         let r = lens_m[k] / map.reported.max_error_pixels;
-        ratio = ratio.max(r);
+        ratio = ratio.max(r / shear_m[k].max(1.0));
         let body = built.bodies.get(k).map_or(&[][..], Vec::as_slice);
         let per: Vec<(DVec3, f64)> = body
             .iter()

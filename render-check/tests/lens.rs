@@ -6,7 +6,9 @@
 
 use render_check::gpu::Gpu;
 use render_check::run::{run_case, CaseResult, Render, Sizes};
+use render_check::scene::{Scene, SceneBox};
 use render_check::schemes::{setups, Scheme};
+use render_check::targets::violations;
 use render_check::targets::{
     LENS_FRAME_EXCESS, LENS_FRAME_REACH, LENS_MEDIAN_REL_DIFF, LENS_P99_REL_DIFF,
 };
@@ -111,4 +113,58 @@ fn a_lens_without_the_projection_factor_fails_the_targets() {
     assert!(m.lens_median_rel_diff > LENS_MEDIAN_REL_DIFF, "{m:?}");
     assert!(m.lens_p99_rel_diff > LENS_P99_REL_DIFF, "{m:?}");
     assert!(m.lens_frame_ratio <= 1.0 + LENS_FRAME_EXCESS, "{m:?}");
+}
+
+/// Twenty slats 0.05 wide under a sun 8° high, drawn with face partitions at 320 × 240: a face
+/// map's perspective warp shears its texels (the t step off perpendicular to the s step far from
+/// the warp's centre line), and the texel's largest extent, the lens with the projection factor
+/// 1, is 1.47 × the reported `max_error_pixels` where the rendered m_x, m_z stay within 1 % of the
+/// reported M_x, M_z: the rendered shear (`max_texel_shear`, from the GPU's texel coordinates)
+/// is 1.62 there. Held to the lens target against the reported maximum times that shear, the case
+/// meets every target; against the reported maximum alone (the former target) it failed with 1.47.
+#[test]
+fn a_sheared_texels_lens_is_bounded_by_its_shear() {
+    let mut scene = Scene::builtin();
+    scene.boxes = (0..20)
+        .map(|i| {
+            let z = -14.0 + 0.4 * f64::from(i);
+            SceneBox::aligned([-6.0, 1.5, z], [6.0, 1.6, z + 0.05])
+        })
+        .collect();
+    scene
+        .boxes
+        .push(SceneBox::aligned([-6.2, 0.0, -14.2], [-6.0, 1.6, -5.8]));
+    scene
+        .boxes
+        .push(SceneBox::aligned([6.0, 0.0, -14.2], [6.2, 1.6, -5.8]));
+    scene.ground_half_extent = 80.0;
+    scene.camera.eye = [0.0, 4.0, 0.0];
+    scene.camera.target = [0.0, 0.0, -20.0];
+    scene.camera.up = [0.0, 1.0, 0.0];
+    scene.camera.near = 0.5;
+    scene.camera.far = 60.0;
+    scene.camera.fov_y_deg = 55.0;
+    scene.light_dir = [0.0, -0.1405, -1.0];
+    scene.map_resolution = 1024;
+    scene.validate().unwrap();
+    let gpu = Gpu::new().unwrap_or_else(|e| panic!("{e}"));
+    let sizes = Sizes {
+        width: 320,
+        height: 240,
+        res: None,
+        frames: 0,
+        shimmer_points: 0,
+        fault: None,
+        render: Render::DEFAULT,
+    };
+    let r = run_case(&gpu, "slats", &scene, Scheme::Faces, sizes).unwrap();
+    let v = violations(&r.summary);
+    assert!(v.is_empty(), "{v:?}");
+    let m = &r.summary.measured;
+    // The texels are sheared, and the lens exceeds the reported maximum by more than the 1 %.
+    assert!(m.max_texel_shear > 1.2, "{m:?}");
+    assert!(
+        m.lens_frame_ratio_worst_visible.unwrap_or(0.0) > 1.0 + LENS_FRAME_EXCESS,
+        "{m:?}"
+    );
 }
