@@ -39,13 +39,14 @@ pub const LENS_MEDIAN_REL_DIFF: f64 = 1e-3;
 /// The 99th percentile of the same, at most (the 5 %, tightened likewise: measured up
 /// to 7.4·10⁻⁴).
 pub const LENS_P99_REL_DIFF: f64 = 5e-3;
-/// The GPU's lens with the projection factor 1 exceeds a map's reported `max_error_pixels` over
-/// its visible pixels by at most this, relatively. Not `f32` rounding alone: the lens is the
-/// texel's largest extent on screen (the larger singular value of its two edges), the reported
-/// maximum Lloyd's widths along the light-space axes (M_x, M_z), and a texel sheared by a warp
-/// (LiSPSM's, off its axis at the frustum's near corners) is larger than both: 0.44 % above the
-/// reported maximum in `level_overhead`'s LiSPSM cascades (measured; every other case at most
-/// 0.99999 × it). The lens itself, projection factor included, is no bound (docs/rendered.md).
+/// The GPU's lens with the projection factor 1 exceeds a map's reported `max_error_pixels` times
+/// the map's largest rendered texel shear over its visible pixels by at most this, relatively
+/// (`f32` rounding and the shear measured on the compared pixels only). The lens is the texel's
+/// largest extent (the larger singular value of its two edges), the reported maximum Lloyd's
+/// widths along the light-space axes (M_x, M_z), and a texel sheared by a warp is larger than
+/// both by up to its shear ([`crate::perspective::texel_shear`]): face partitions under twenty
+/// slats and an 8° sun, 1.47 × the reported maximum with a shear of 1.62 (docs/rendered.md,
+/// "What is measured", 7). The lens itself, projection factor included, is no bound.
 pub const LENS_FRAME_EXCESS: f64 = 0.01;
 /// Where a map's worst body vertex is visible, its largest lens with the projection factor 1
 /// reaches at least this fraction of its reported `max_error_pixels` (the 5 %).

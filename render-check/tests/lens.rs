@@ -34,7 +34,8 @@ fn grazing(gpu: &Gpu, scheme: Scheme) -> Result<CaseResult, String> {
 /// Under a sun 10° above the horizon, across the view (`grazing_10`), every scheme's drawn lens
 /// is the rendered one to the targets (median ≤ 10⁻³, p99 ≤ 5·10⁻³ relatively), on at least half
 /// the visible pixels; its perspective part (the lens with the projection factor 1) exceeds the
-/// map's reported `max_error_pixels` by at most 1 % (`LENS_FRAME_EXCESS`), and reaches 95 % of
+/// map's reported `max_error_pixels` times its rendered texel shear by at most 1 %
+/// (`LENS_FRAME_EXCESS`), and reaches 95 % of
 /// it where the worst body vertex shows. The scene's projection factor is far from 1 (the lens differs from its perspective
 /// part by more than 50 % on most compared pixels), so a lens that leaves the projection factor
 /// out fails the comparison: `sa_error_lens` with its projection onto the surface removed
