@@ -4,11 +4,15 @@
 //! one texture by [`crate::scheme::SchemeResult::atlas`] (Lloyd 2005 Eq 6: the width split among
 //! the face pairs by their largest M_x, each column's height among its members by M_z).
 
+mod hatch;
+
 use super::chart::{
-    build_chart_styled, equal_aspect, frame, linspace, Axis, ChartStyle, FONT, PALETTE, PANEL_TITLE,
+    boxed_text, build_chart_styled, column, equal_aspect, frame, linspace, Axis, Chart2d,
+    ChartStyle, FONT, PALETTE, PANEL_TITLE,
 };
 use super::from_light::{seen_from_light, SEEN_X};
 use super::warp_grid::minus;
+use super::Column;
 use super::{Fail, Figure};
 use crate::maps::atlas::Viewport;
 use crate::maps::faces::Face;
@@ -16,6 +20,7 @@ use crate::maps::{light_space, WarpRule};
 use crate::scheme::{scheme, Partition, Region};
 use crate::ViewFrustum;
 use glam::{DMat3, DMat4, DVec2, DVec3};
+use hatch::HATCHES;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -38,6 +43,12 @@ const THETA_DEG: f64 = 30.0;
 
 /// Lines of the map's texel grid drawn in panel (b), per direction.
 const GRID: usize = 9;
+
+/// The partitions' tags' font size (the least a figure's text may have across two columns).
+const TAG: u32 = 13;
+
+/// The distance between a hatch's lines, in pixels.
+const HATCH_STEP: f64 = 5.0;
 
 /// One partition: where it lies in the texture and seen from the light.
 pub(super) struct Cell {
@@ -164,39 +175,86 @@ fn apply(h: &DMat3, p: DVec2) -> DVec2 {
 
 impl Figure for Fig8 {
     fn size(&self) -> (u32, u32) {
-        (520, 874)
+        (520, 520)
+    }
+
+    /// One column: (a) and (b) side by side, (c) under them, the table under (c).
+    fn single_size(&self) -> Option<(u32, u32)> {
+        Some((Column::Single.width(), 700))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let single = column() == Column::Single;
         let shown = &self.cells[self.shown];
-        let caption = format!(
-            "Lloyd et al. 2005, Fig. 8: face partitions with k = {} z-partitions each, \
-             LiSPSM-warped, n = {NEAR}, f = {FAR}, θ = {THETA_DEG}°, light {}° high, {}° right of \
-             behind. (a) From the light (R, L, T, N: right, left, top, near face; 1 near, 2 far). \
-             (b) {} and its map's texel grid. (c) The texture by Eq 6: \"share\" is a partition's \
-             part of its width × height, \"after\" its M_x and M_z over those parts.",
-            self.k, LIGHT.0, LIGHT.1, shown.tag,
-        );
+        let caption = if single {
+            format!(
+                "Lloyd et al. 2005, Fig. 8: k = {} z-partitions a face, LiSPSM, n = {NEAR}, \
+                 f = {FAR}, θ = {THETA_DEG}°, light {}° up, {}° right of behind. (a) R, L, T, \
+                 N: right, left, top, near face; 1 near, 2 far. (b) {}'s map. (c) Eq 6.",
+                self.k, LIGHT.0, LIGHT.1, shown.tag,
+            )
+        } else {
+            format!(
+                "Lloyd et al. 2005, Fig. 8: face partitions with k = {} z-partitions each, \
+                 LiSPSM-warped, n = {NEAR}, f = {FAR}, θ = {THETA_DEG}°, light {}° high, {}° right \
+                 of behind. (a) From the light (R, L, T, N: right, left, top, near face; 1 near, 2 \
+                 far). (b) {} and its map's texel grid. (c) The texture by Eq 6, (d) each part's \
+                 share of its width and height and its M_x and M_z over them.",
+                self.k, LIGHT.0, LIGHT.1, shown.tag,
+            )
+        };
         let body = frame(
             root,
             "Partitions, warp and texture layout",
             &[caption.as_str()],
         )?;
-        let (bw, _) = body.dim_in_pixel();
-        let (top, bottom) = body.split_vertically(bw / 2);
-        let halves = top.split_evenly((1, 2));
+        let (bw, bh) = body.dim_in_pixel();
         let style = ChartStyle {
             title_size: PANEL_TITLE,
             x_label_area: 40,
-            y_label_area: 48,
+            y_label_area: 44,
             tick_size: 13,
             desc_size: 13,
             margin: 6,
         };
-        self.draw_faces(&halves[0], &style)?;
-        self.draw_warp(&halves[1], &style)?;
-        self.draw_texture(&bottom)
+        // Room for four-digit tick labels beside the texture's t axis.
+        let texture_style = ChartStyle {
+            y_label_area: 58,
+            ..style
+        };
+        let rows = self.cells.len() as u32 + 2;
+        let table_h = TABLE_TOP + rows * table_step(single);
+        if single {
+            let (top, rest) = body.split_vertically(bh.saturating_sub(table_h) / 2);
+            let (a, b) = top.split_horizontally(bw * 57 / 100);
+            let (c, table) = rest.split_vertically(bh.saturating_sub(table_h) / 2);
+            self.draw_faces(&a, &style)?;
+            self.draw_warp(&b, &style)?;
+            let (cw, _) = c.dim_in_pixel();
+            let c = c.margin(0, 0, cw / 8, cw / 8);
+            self.draw_texture(&c, &texture_style)?;
+            self.draw_table(&table, single)
+        } else {
+            let (top, table) = body.split_vertically(bh.saturating_sub(table_h));
+            let (a, rest) = top.split_horizontally(bw * 40 / 100);
+            let (b, c) = rest.split_horizontally(bw * 25 / 100);
+            self.draw_faces(&a, &style)?;
+            self.draw_warp(&b, &style)?;
+            self.draw_texture(&c, &texture_style)?;
+            self.draw_table(&table, single)
+        }
     }
+}
+
+/// The gap above the table's first line, under the panels above it.
+const TABLE_TOP: u32 = 6;
+
+/// The table's font size and line step: 13 units (its subscripts 6 pt printed in one column)
+/// and 18 across two columns, 17 in one.
+const TABLE_FONT: u32 = 13;
+
+fn table_step(single: bool) -> u32 {
+    TABLE_FONT + if single { 4 } else { 5 }
 }
 
 impl Fig8 {
@@ -210,7 +268,34 @@ impl Fig8 {
         (lo - pad, hi + pad)
     }
 
-    /// (a): every partition's face part seen from the light, filled in its colour, with its tag.
+    /// The convex outline `poly` (data units of `chart`, equal aspect: `per_px` data units a
+    /// pixel both ways) filled in partition `i`'s pastel and hatched in its colour
+    /// ([`HATCHES`]), so that partitions whose pastels print as one grey still differ.
+    fn fill_hatched<DB: DrawingBackend>(
+        chart: &mut Chart2d<'_, DB>,
+        poly: &[DVec2],
+        i: usize,
+        per_px: f64,
+    ) -> Result<(), Fail> {
+        let colour = PALETTE[i % PALETTE.len()];
+        let pts: Vec<(f64, f64)> = poly.iter().map(|p| (p.x, p.y)).collect();
+        chart.draw_series(std::iter::once(Polygon::new(
+            pts,
+            colour.mix(0.35).filled(),
+        )))?;
+        for &angle in HATCHES[i % HATCHES.len()].angles() {
+            for (a, b) in hatch::segments(poly, angle, HATCH_STEP * per_px) {
+                chart.draw_series(LineSeries::new(
+                    [(a.x, a.y), (b.x, b.y)],
+                    colour.mix(0.8).stroke_width(1),
+                ))?;
+            }
+        }
+        Ok(())
+    }
+
+    /// (a): every partition's face part seen from the light, filled and hatched in its look,
+    /// with its tag.
     fn draw_faces<DB: DrawingBackend>(
         &self,
         area: &DrawingArea<DB, Shift>,
@@ -218,8 +303,8 @@ impl Fig8 {
     ) -> Result<(), Fail> {
         let (lo, hi) = Self::window(self.cells.iter().flat_map(|c| c.outline.iter().copied()));
         // Room under the drawing for the tags of parts too small to hold them.
-        let lo = lo - DVec2::new(0.0, 0.1 * (hi.y - lo.y));
-        let title = "(a) seen from the light";
+        let lo = lo - DVec2::new(0.0, 0.14 * (hi.y - lo.y));
+        let title = "(a) from the light";
         let (xa, ya) = equal_aspect(
             area,
             title,
@@ -228,24 +313,19 @@ impl Fig8 {
             style,
         )?;
         let mut chart = build_chart_styled(area, title, &xa, &ya, false, style)?;
+        let (pw, _) = chart.plotting_area().dim_in_pixel();
+        let per_px = (xa.max - xa.min) / f64::from(pw);
         for (i, c) in self.cells.iter().enumerate() {
-            let pts: Vec<(f64, f64)> = c.outline.iter().map(|p| (p.x, p.y)).collect();
-            let colour = PALETTE[i % PALETTE.len()];
-            chart.draw_series(std::iter::once(Polygon::new(
-                pts.clone(),
-                colour.mix(0.35).filled(),
-            )))?;
-            let mut closed = pts;
+            Self::fill_hatched(&mut chart, &c.outline, i, per_px)?;
+            let mut closed: Vec<(f64, f64)> = c.outline.iter().map(|p| (p.x, p.y)).collect();
             closed.push(closed[0]);
             chart.draw_series(LineSeries::new(closed, BLACK.stroke_width(1)))?;
         }
-        // Tags at the parts' centres where they fit inside the part (with a margin), last so
-        // that no fill covers them; a part too small for its tag gets it outside the drawing,
-        // away from the drawing's centre, joined to the part by a leader.
+        // Tags at the parts' centres where they fit inside the part (with a margin), on a
+        // white box over the hatch, last so that no fill covers them; a part too small for its
+        // tag gets it outside the drawing, joined to the part by a leader.
         let tag_style =
-            TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Center));
-        let (pw, _) = chart.plotting_area().dim_in_pixel();
-        let per_px = (xa.max - xa.min) / f64::from(pw);
+            TextStyle::from((FONT, TAG).into_font()).pos(Pos::new(HPos::Center, VPos::Center));
         // The row under the drawing for the tags that do not fit.
         let bottom = self
             .cells
@@ -258,30 +338,47 @@ impl Fig8 {
             let (tw, th) = area
                 .estimate_text_size(&c.tag, &tag_style)
                 .map_err(|e| Fail::Draw(e.to_string()))?;
-            let half = DVec2::new(f64::from(tw) + 4.0, f64::from(th) + 2.0) * 0.5 * per_px;
+            let half = DVec2::new(f64::from(tw) + 6.0, f64::from(th) + 4.0) * 0.5 * per_px;
             let fits = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
                 .iter()
                 .all(|&(sx, sy)| inside(&c.outline, mid + DVec2::new(sx * half.x, sy * half.y)));
             if fits {
-                chart.draw_series(std::iter::once(Text::new(
-                    c.tag.clone(),
+                boxed_text(
+                    &mut chart,
                     (mid.x, mid.y),
-                    tag_style.clone(),
-                )))?;
+                    &c.tag,
+                    Pos::new(HPos::Center, VPos::Center),
+                    TAG,
+                    BLACK,
+                )?;
             } else {
                 outside.push((mid, half.x, c.tag.as_str()));
             }
         }
-        // Left to right under the drawing, each at least its width from the one before,
+        // Left to right under the drawing, each at least its width from the one before and
+        // all inside the plot (pushed right from the left, then back from the right edge),
         // joined to its part by a leader.
         outside.sort_by(|a, b| a.0.x.total_cmp(&b.0.x));
-        let y = bottom - 12.0 * per_px;
-        let mut next = f64::NEG_INFINITY;
-        for (mid, hw, tag) in outside {
-            let x = mid.x.max(next + hw);
-            next = x + hw + 6.0 * per_px;
+        let y = bottom - 10.0 * per_px;
+        let gap = 6.0 * per_px;
+        let mut xs: Vec<f64> = Vec::with_capacity(outside.len());
+        for (k, (mid, hw, _)) in outside.iter().enumerate() {
+            let low = match k {
+                0 => xa.min + hw,
+                _ => xs[k - 1] + outside[k - 1].1 + gap + hw,
+            };
+            xs.push(mid.x.max(low));
+        }
+        for k in (0..xs.len()).rev() {
+            let high = match outside.get(k + 1) {
+                Some(next) => xs[k + 1] - next.1 - gap - outside[k].1,
+                None => xa.max - outside[k].1,
+            };
+            xs[k] = xs[k].min(high);
+        }
+        for ((mid, _, tag), x) in outside.into_iter().zip(xs) {
             chart.draw_series(LineSeries::new(
-                [(mid.x, mid.y), (x, y + 6.0 * per_px)],
+                [(mid.x, mid.y), (x, y + 3.0 * per_px)],
                 RGBColor(90, 90, 90).stroke_width(1),
             ))?;
             chart.draw_series(std::iter::once(Text::new(
@@ -307,7 +404,7 @@ impl Fig8 {
             .map(|&(u, v)| apply(&to_light, DVec2::new(u, v)))
             .collect();
         let (lo, hi) = Self::window(cell.outline.iter().chain(&border).copied());
-        let title = format!("(b) the map of {}", cell.tag);
+        let title = format!("(b) map of {}", cell.tag);
         let (xa, ya) = equal_aspect(
             area,
             &title,
@@ -317,6 +414,7 @@ impl Fig8 {
         )?;
         let mut chart = build_chart_styled(area, &title, &xa, &ya, false, style)?;
         let pts: Vec<(f64, f64)> = cell.outline.iter().map(|p| (p.x, p.y)).collect();
+        // The part in its pastel only: the map's grid is the pattern drawn over it here.
         chart.draw_series(std::iter::once(Polygon::new(
             pts.clone(),
             PALETTE[self.shown % PALETTE.len()].mix(0.35).filled(),
@@ -339,79 +437,191 @@ impl Fig8 {
         Ok(())
     }
 
-    /// (c): the texture, square, each partition's rectangle with its numbers.
-    fn draw_texture<DB: DrawingBackend>(&self, body: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+    /// (c): the texture, square, each partition's rectangle in its look with its tag.
+    fn draw_texture<DB: DrawingBackend>(
+        &self,
+        body: &DrawingArea<DB, Shift>,
+        style: &ChartStyle,
+    ) -> Result<(), Fail> {
         let n = f64::from(SIZE);
-        let style = ChartStyle {
-            title_size: PANEL_TITLE,
-            ..ChartStyle::default()
-        };
-        let title = "(c) the texture layout by Eq 6";
+        let title = "(c) texture by Eq 6";
         // Equal aspect: the square texture drawn square.
         let (xa, ya) = equal_aspect(
             body,
             title,
             &Axis::linear("s (texels)", 0.0, n),
             &Axis::linear("t (texels)", 0.0, n),
-            &style,
+            style,
         )?;
-        let mut chart = build_chart_styled(body, title, &xa, &ya, false, &style)?;
+        // Labelled at the texture's ends and middle only: four-digit labels every 500 texels
+        // run together on a narrow panel.
+        let ends = [0.0, 0.5 * n, n];
+        let (xa, ya) = (xa.labelled_at(&ends), ya.labelled_at(&ends));
+        let mut chart = build_chart_styled(body, title, &xa, &ya, false, style)?;
+        let (pw, _) = chart.plotting_area().dim_in_pixel();
+        let per_px = (xa.max - xa.min) / f64::from(pw);
         for (i, c) in self.cells.iter().enumerate() {
             let v = c.viewport;
-            let (mx, mz) = (c.mx, c.mz);
             let (x0, y0) = (f64::from(v.x), f64::from(v.y));
             let (x1, y1) = (x0 + f64::from(v.width), y0 + f64::from(v.height));
-            let colour = PALETTE[i % PALETTE.len()];
-            chart.draw_series([
-                Rectangle::new([(x0, y0), (x1, y1)], colour.mix(0.35).filled()),
-                Rectangle::new([(x0, y0), (x1, y1)], BLACK.stroke_width(1)),
-            ])?;
-            // The error after allocation: each partition's M_x and M_z over its share of the
-            // texture's width and height (Eq 6 makes the first equal across columns and the
-            // second within a column).
-            let (sw, sh) = ((x1 - x0) / n, (y1 - y0) / n);
-            let mut lines = vec![
-                format!("{}: {}", c.tag, c.label),
-                format!("M_x {mx:.2}, M_z {mz:.2}"),
-                format!("share {:.0} % × {:.0} %", 100.0 * sw, 100.0 * sh),
-                format!("after: {:.2} × {:.2}", mx / sw, mz / sh),
+            let rect = [
+                DVec2::new(x0, y0),
+                DVec2::new(x1, y0),
+                DVec2::new(x1, y1),
+                DVec2::new(x0, y1),
             ];
-            // A narrow column's text runs up it, in two lines.
-            let narrow = sw < 0.25;
-            if narrow {
-                lines = vec![
-                    format!("{}: {}, M_x {mx:.2}, M_z {mz:.2}", c.tag, c.label),
-                    format!(
-                        "share {:.0} % × {:.0} %, after: {:.2} × {:.2}",
-                        100.0 * sw,
-                        100.0 * sh,
-                        mx / sw,
-                        mz / sh
-                    ),
-                ];
+            Self::fill_hatched(&mut chart, &rect, i, per_px)?;
+            chart.draw_series(std::iter::once(Rectangle::new(
+                [(x0, y0), (x1, y1)],
+                BLACK.stroke_width(1),
+            )))?;
+        }
+        for c in &self.cells {
+            let v = c.viewport;
+            let at = (
+                f64::from(v.x) + 0.5 * f64::from(v.width),
+                f64::from(v.y) + 0.5 * f64::from(v.height),
+            );
+            boxed_text(
+                &mut chart,
+                at,
+                &c.tag,
+                Pos::new(HPos::Center, VPos::Center),
+                TAG,
+                BLACK,
+            )?;
+        }
+        Ok(())
+    }
+
+    /// The table's rows: per partition its tag, face and depths, M_x, M_z, its share of the
+    /// texture's width w and height h (Eq 6), and its error after the allocation, M_x/w and
+    /// M_z/h (Eq 6 makes the first one value across the texture and the second one within a
+    /// column).
+    pub(super) fn table_rows(&self) -> Vec<[String; 6]> {
+        let n = f64::from(SIZE);
+        self.cells
+            .iter()
+            .map(|c| {
+                let v = c.viewport;
+                let (w, h) = (f64::from(v.width) / n, f64::from(v.height) / n);
+                [
+                    c.tag.clone(),
+                    minus(&c.label),
+                    format!("{:.2}", c.mx),
+                    format!("{:.2}", c.mz),
+                    format!("{:.0} % × {:.0} %", 100.0 * w, 100.0 * h),
+                    format!("{:.2} × {:.2}", c.mx / w, c.mz / h),
+                ]
+            })
+            .collect()
+    }
+
+    /// (d): the table of [`Fig8::table_rows`] under a title that says what its columns are,
+    /// each row led by a swatch of its partition's look. Its lines are [`table_step`] units
+    /// apart whatever the page (one column keeps only the part, its share and the error
+    /// after).
+    fn draw_table<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        single: bool,
+    ) -> Result<(), Fail> {
+        let size = TABLE_FONT;
+        let step = table_step(single) as i32;
+        let text = TextStyle::from((FONT, size).into_font()).pos(Pos::new(HPos::Left, VPos::Top));
+        let head = [
+            "part",
+            "face, depth",
+            "M_x",
+            "M_z",
+            "share w × h",
+            "after: M_x/w × M_z/h",
+        ];
+        let keep: &[usize] = if single {
+            &[0, 4, 5]
+        } else {
+            &[0, 1, 2, 3, 4, 5]
+        };
+        let rows = self.table_rows();
+        let measure = |t: &str| -> Result<i32, Fail> {
+            area.estimate_text_size(t, &text)
+                .map(|(w, _)| w as i32)
+                .map_err(|e| Fail::Draw(e.to_string()))
+        };
+        let swatch = (size as i32 + 4, size as i32 - 1);
+        let mut widths = Vec::new();
+        for &j in keep {
+            let mut w = measure(head[j])?;
+            for r in &rows {
+                w = w.max(measure(&r[j])?);
             }
-            let mut text =
-                TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Center));
-            if narrow {
-                text = text.transform(FontTransform::Rotate270);
+            if j == 0 {
+                w += swatch.0 + 4;
             }
-            let (cx, cy) = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
-            // Lines 16 units apart, in texels of the axis drawn across them (the axes' ranges,
-            // widened for the equal aspect, not the texture's size).
-            let (pw, ph) = chart.plotting_area().dim_in_pixel();
-            let step = if narrow {
-                16.0 * (xa.max - xa.min) / f64::from(pw)
-            } else {
-                16.0 * (ya.max - ya.min) / f64::from(ph)
-            };
-            for (j, line) in lines.iter().enumerate() {
-                let off = (0.5 * (lines.len() - 1) as f64 - j as f64) * step;
-                let at = if narrow {
-                    (cx - off, cy)
-                } else {
-                    (cx, cy + off)
-                };
-                chart.draw_series(std::iter::once(Text::new(minus(line), at, text.clone())))?;
+            widths.push(w);
+        }
+        let (aw, _) = area.dim_in_pixel();
+        let used: i32 = widths.iter().sum();
+        let gap = ((aw as i32 - 8 - used) / (keep.len() as i32 - 1).max(1)).clamp(6, 40);
+        let left = ((aw as i32 - used - gap * (keep.len() as i32 - 1)) / 2).max(2);
+        let mut xs = Vec::new();
+        let mut x = left;
+        for w in &widths {
+            xs.push(x);
+            x += w + gap;
+        }
+        let top = TABLE_TOP as i32;
+        let title = if single {
+            "(d) Eq 6's shares w × h, the error after"
+        } else {
+            "(d) Eq 6's shares w × h of the texture's width and height, and the error after them"
+        };
+        area.draw(&Text::new(title, (left, top), text.clone()))?;
+        let grey = RGBColor(90, 90, 90);
+        for (k, &j) in keep.iter().enumerate() {
+            let at = xs[k] + if j == 0 { swatch.0 + 4 } else { 0 };
+            area.draw(&Text::new(head[j], (at, top + step), text.color(&grey)))?;
+        }
+        let rule = top + 2 * step - 3;
+        area.draw(&PathElement::new(
+            vec![(left, rule), (x - gap, rule)],
+            grey.stroke_width(1),
+        ))?;
+        for (r, row) in rows.iter().enumerate() {
+            let y = top + (r as i32 + 2) * step;
+            // The swatch: the partition's pastel with its hatch.
+            let (sx, sy) = (xs[0], y + 1);
+            let colour = PALETTE[r % PALETTE.len()];
+            area.draw(&Rectangle::new(
+                [(sx, sy), (sx + swatch.0, sy + swatch.1)],
+                colour.mix(0.35).filled(),
+            ))?;
+            let poly = [
+                DVec2::new(f64::from(sx), f64::from(sy)),
+                DVec2::new(f64::from(sx + swatch.0), f64::from(sy)),
+                DVec2::new(f64::from(sx + swatch.0), f64::from(sy + swatch.1)),
+                DVec2::new(f64::from(sx), f64::from(sy + swatch.1)),
+            ];
+            for &angle in HATCHES[r % HATCHES.len()].angles() {
+                // Pixel rows grow downward: the angle mirrored to look as in the panels.
+                for (a, b) in hatch::segments(&poly, -angle, 4.0) {
+                    area.draw(&PathElement::new(
+                        vec![
+                            (a.x.round() as i32, a.y.round() as i32),
+                            (b.x.round() as i32, b.y.round() as i32),
+                        ],
+                        colour.mix(0.8).stroke_width(1),
+                    ))?;
+                }
+            }
+            // Outlined in dark grey: black outlines are the texture's rectangles.
+            area.draw(&Rectangle::new(
+                [(sx, sy), (sx + swatch.0, sy + swatch.1)],
+                RGBColor(60, 60, 60).stroke_width(1),
+            ))?;
+            for (k, &j) in keep.iter().enumerate() {
+                let at = xs[k] + if j == 0 { swatch.0 + 4 } else { 0 };
+                area.draw(&Text::new(row[j].clone(), (at, y), text.clone()))?;
             }
         }
         Ok(())
@@ -565,42 +775,72 @@ mod tests {
         }
     }
 
-    /// The text in each rectangle of (c) keeps its lines 16 units apart whatever the panel's
-    /// shape: on a tall panel the equal aspect widens the t axis and on a wide one the s axis
-    /// beyond the texture (a spacing computed from the texture's size instead of the axis drawn
-    /// printed the lines over each other there).
+    /// The table's lines (d) are one [`table_step`] apart whatever the panel's size and in
+    /// both columns (item 2 of issue 35: the texture's in-rectangle text, spaced by the axis
+    /// range, printed line on line in `--bare`; the table's spacing is in units of the page).
     #[test]
-    fn texture_text_lines_are_16_units_apart_on_any_panel() {
-        use crate::plot::chart::read_svg::{attr, draw_svg, texts};
+    fn table_lines_are_one_step_apart_on_any_panel() {
+        use crate::plot::chart::read_svg::{draw_svg, texts};
         let fig = fig8().map_err(|e| e.named("lloyd2005-fig8")).unwrap();
-        for size in [(500, 1200), (1200, 420), (520, 560)] {
-            let svg = draw_svg(size, |area| fig.draw_texture(area).unwrap());
-            let lines = texts(&svg);
-            let rotated = |l: &str| l.contains("transform=\"rotate");
-            // Each rectangle's lines: the one naming it ("R1: right, …") and those that follow.
-            let mut checked = 0;
-            for (i, (line, text, y)) in lines.iter().enumerate() {
-                if !text.contains(": ") || !text.contains(", z ") && !text.contains("near") {
-                    continue;
-                }
-                let n = if rotated(line) { 2 } else { 4 };
-                for (a, b) in lines[i..i + n].iter().zip(&lines[i + 1..i + n]) {
-                    let gap = if rotated(line) {
-                        attr(b.0, "x").unwrap() - attr(a.0, "x").unwrap()
-                    } else {
-                        b.2 - a.2
-                    };
-                    assert!(
-                        (gap - 16.0).abs() <= 1.0,
-                        "{size:?}: {:?} and {:?} are {gap} apart (at y = {y})",
-                        a.1,
-                        b.1
-                    );
-                    checked += 1;
+        for single in [false, true] {
+            for size in [(520, 170), (300, 320), (900, 420)] {
+                let svg = draw_svg(size, |area| fig.draw_table(area, single).unwrap());
+                let ys: Vec<f64> = texts(&svg)
+                    .iter()
+                    .filter(|(_, t, _)| fig.cells.iter().any(|c| c.tag == *t))
+                    .map(|(_, _, y)| *y)
+                    .collect();
+                assert_eq!(ys.len(), fig.cells.len(), "{size:?}: {ys:?}");
+                let step = if single { 17.0 } else { 18.0 };
+                for w in ys.windows(2) {
+                    assert!((w[1] - w[0] - step).abs() < 0.5, "{size:?}: {ys:?}");
                 }
             }
-            // Six rectangles of four lines (L, R, T, 1 and 2) and the near face's two.
-            assert_eq!(checked, 6 * 3 + 1, "{size:?}");
         }
+    }
+
+    /// What the table prints as "after" is Eq 6's error: Eq 6 gives a column the width share
+    /// w = (its largest M_x) / Σ (each column's largest M_x), so a part's M_x/w is
+    /// M_x · Σ / (its column's largest), computed here without the viewports: Σ = 1.56 + 1.76 +
+    /// 0.98 = 4.30 for the part with its column's largest M_x, less for the others (R1: 4.09);
+    /// and the header names it M_x/w × M_z/h.
+    #[test]
+    fn table_after_is_the_sum_of_the_columns_m_x() {
+        use crate::plot::chart::read_svg::{draw_svg, texts};
+        let fig = fig8().map_err(|e| e.named("lloyd2005-fig8")).unwrap();
+        // The columns by face pair: left and right share one (Eq 6 pairs opposite faces).
+        let pair = |tag: &str| match &tag[..1] {
+            "L" | "R" => "LR",
+            t => {
+                if t == "T" {
+                    "T"
+                } else {
+                    "N"
+                }
+            }
+        };
+        let mut col_max: std::collections::BTreeMap<&str, f64> = Default::default();
+        for c in &fig.cells {
+            let m = col_max.entry(pair(&c.tag)).or_insert(0.0);
+            *m = m.max(c.mx);
+        }
+        assert_eq!(col_max.len(), 3, "{:?}", col_max.keys());
+        let sum: f64 = col_max.values().sum();
+        assert!((sum - 4.30).abs() < 0.005, "{sum}");
+        let rows = fig.table_rows();
+        assert_eq!(rows.len(), 7);
+        for (r, c) in rows.iter().zip(&fig.cells) {
+            let printed: f64 = r[5].split(" × ").next().unwrap().parse().unwrap();
+            let want = c.mx * sum / col_max[pair(&c.tag)];
+            assert!((printed - want).abs() < 0.006, "{r:?} vs {want}");
+        }
+        let svg = draw_svg((520, 170), |area| fig.draw_table(area, false).unwrap());
+        // The header as written (plain SVG: subscripts not typeset).
+        assert!(
+            texts(&svg)
+                .iter()
+                .any(|(_, t, _)| t.replace('_', "") == "after: Mx/w × Mz/h"),
+            "{svg}"
+        );
     }
 }

@@ -149,6 +149,7 @@ pub const SINGLE_COLUMN: &[&str] = &[
     "lloyd2006-fig12",
     "barroso-fig7",
     "lloyd2006-worst-case",
+    "lloyd2005-fig8",
 ];
 
 /// What went wrong while rendering a figure.
