@@ -9,11 +9,12 @@
 //! map (ZP) is the light-space bounding rectangle of its corners, drawn dashed, so that the
 //! overlap of the maps shows.
 
+use super::chart::column;
 use super::chart::{
     boxed_text, build_chart_styled, clip_polyline, equal_aspect, frame, Axis, ChartStyle, FONT,
     PALETTE,
 };
-use super::{Fail, Figure};
+use super::{Column, Fail, Figure};
 use crate::analytic::partition::{z_splits, SplitScheme};
 use crate::maps::light_space;
 use crate::scheme::ADAPTIVE_RATIO;
@@ -44,8 +45,12 @@ pub(super) struct Panel {
 pub(super) struct FromLight {
     pub title: &'static str,
     pub caption: String,
+    /// The caption of the one-column layout (at most five lines 300 units wide).
+    pub single_caption: String,
     pub panels: Vec<Panel>,
     pub size: (u32, u32),
+    /// The size of the one-column layout.
+    pub single_size: (u32, u32),
 }
 
 /// The cross-section of the (square) view frustum at eye depth z, projected along the light.
@@ -200,11 +205,22 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         phi = view.half_fov().to_degrees(),
         gamma_deg = gamma.to_degrees(),
     );
+    let single_caption = format!(
+        "Barroso & Celes 2007, Fig. 5: k = {k} z-partitions, n = {n}, f = {f}, φ = {phi:.0}°. \
+         (a) Light perpendicular, (b) parallel: Eq 5. (c) Eq 19 (not in the paper), light at \
+         {gamma_deg:.0}°, α = {ADAPTIVE_RATIO}. (d)–(f) enlarge (a)–(c). Dashed: maps.",
+        n = view.near(),
+        f = view.far(),
+        phi = view.half_fov().to_degrees(),
+        gamma_deg = gamma.to_degrees(),
+    );
     Ok(FromLight {
         title: "The view frustum seen from the light, with z-partitions",
         caption,
+        single_caption,
         panels,
         size: (520, 640),
+        single_size: (300, 600),
     })
 }
 
@@ -214,12 +230,8 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
     let k = 3;
     let ss = z_splits(view.near(), view.far(), k, SplitScheme::SelfSimilar)?;
     // The light travels along the view direction (−Z): it is behind the viewer.
-    let mut p = panel(
-        &view,
-        DVec3::NEG_Z,
-        ss.planes(),
-        "light behind the viewer".into(),
-    )?;
+    // No panel title: the figure's title says it.
+    let mut p = panel(&view, DVec3::NEG_Z, ss.planes(), String::new())?;
     // The paper's labels: the near and far planes by name, the middle ones by depth, and the
     // near and far faces' sides 2n tan θ and 2f tan θ as dimension lines under them.
     let last = p.planes.len() - 1;
@@ -267,16 +279,38 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
         f = view.far(),
         theta = view.half_fov().to_degrees(),
     );
+    let single_caption = format!(
+        "Lloyd et al. 2006, Fig. 11: from a light behind the viewer, n = {n}, f = {f}, \
+         θ = {theta:.0}°, k = {k} self-similar z-partitions. Each map (dashed) is the square of \
+         its far plane, so the nearer maps lie inside the farther ones.",
+        n = view.near(),
+        f = view.far(),
+        theta = view.half_fov().to_degrees(),
+    );
     Ok(FromLight {
         title: "The view frustum seen from a light behind the viewer",
         caption,
+        single_caption,
         panels: vec![p],
-        size: (520, 610),
+        size: (520, 480),
+        single_size: (300, 450),
     })
+}
+
+/// A panel's title up to its first colon or comma, without the word "light": "(c) Eq 19,
+/// not in the paper" is "(c) Eq 19", "(a) perpendicular light" is "(a) perpendicular".
+fn short_title(t: &str) -> String {
+    let cut = t.find([':', ',']).unwrap_or(t.len());
+    t[..cut].trim_end_matches(" light").to_string()
 }
 
 /// The width of the gutter right of each panel that holds the split planes' labels.
 const GUTTER: u32 = 50;
+
+/// Each partition's map outline: dash and gap lengths in units, by partition (nearest first).
+/// The map colours print as nearly one grey (CIE L* 46, 54, 58, 61 for blue, vermillion, green,
+/// pink), so each map also has its own dash: long, dotted, longest, short.
+pub(super) const DASHES: [(u32, u32); 4] = [(8, 4), (2, 3), (16, 4), (4, 4)];
 
 /// The least vertical distance between two labels in the gutter, in pixels.
 const LABEL_STEP: i32 = 16;
@@ -313,20 +347,57 @@ impl Figure for FromLight {
         self.size
     }
 
+    fn single_size(&self) -> Option<(u32, u32)> {
+        Some(self.single_size)
+    }
+
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
-        let body = frame(root, self.title, &[self.caption.as_str()])?;
+        let single = column() == Column::Single;
+        let caption = if single {
+            &self.single_caption
+        } else {
+            &self.caption
+        };
+        let body = frame(root, self.title, &[caption.as_str()])?;
+        // A single panel is drawn about as wide as it is high, centred.
+        let body = if self.panels.len() == 1 {
+            let (bw, bh) = body.dim_in_pixel();
+            let side = (bh + 40 + GUTTER).min(bw);
+            body.margin(0, 0, (bw - side) / 2, (bw - side) / 2)
+        } else {
+            body
+        };
         let columns = self.panels.len().min(2);
         let cells = body.split_evenly((self.panels.len().div_ceil(columns), columns));
-        let style = ChartStyle {
-            y_label_area: 50,
-            ..ChartStyle::default()
+        // In one column the six-panel figure's panels are 150 units wide: smaller text
+        // (10 units, 8 pt printed) and margins.
+        let small = single && self.panels.len() > 1;
+        let style = if small {
+            ChartStyle {
+                title_size: 12,
+                x_label_area: 34,
+                y_label_area: 36,
+                tick_size: 10,
+                desc_size: 11,
+                margin: 4,
+            }
+        } else {
+            ChartStyle {
+                y_label_area: 50,
+                ..ChartStyle::default()
+            }
+        };
+        let (gutter_w, label_size, label_step) = if small {
+            (36, 10, 12)
+        } else {
+            (GUTTER, 13, LABEL_STEP)
         };
         for (whole, p) in cells.iter().zip(&self.panels) {
             // The split planes' labels go in a gutter right of the plot, where they cover no
             // line (issue 25: at the sections' ends they sat on the frustum's edges and the
             // maps' outlines).
             let (cw, _) = whole.dim_in_pixel();
-            let (cell, gutter) = whole.split_horizontally(cw - GUTTER);
+            let (cell, gutter) = whole.split_horizontally(cw - gutter_w);
             let cell = &cell;
             let (lo, hi) = p.window.unwrap_or_else(|| {
                 p.sections.iter().flatten().fold(
@@ -340,15 +411,22 @@ impl Figure for FromLight {
                 mid - DVec2::splat(span / 2.0),
                 mid + DVec2::splat(span / 2.0),
             );
+            // In one column, the titles cut to their first clause ("(c) Eq 19", "(d) detail of
+            // (a)"): the full ones are wider than the 150-unit panels.
+            let title = if small {
+                short_title(&p.title)
+            } else {
+                p.title.clone()
+            };
             // Equal aspect: a light-space unit as long across as up.
             let (xa, ya) = equal_aspect(
                 cell,
-                &p.title,
+                &title,
                 &Axis::linear(SEEN_X, lo.x, hi.x),
                 &Axis::linear("light z", lo.y, hi.y),
                 &style,
             )?;
-            let mut chart = build_chart_styled(cell, &p.title, &xa, &ya, false, &style)?;
+            let mut chart = build_chart_styled(cell, &title, &xa, &ya, false, &style)?;
             let inside =
                 |q: DVec2| q.x >= xa.min && q.x <= xa.max && q.y >= ya.min && q.y <= ya.max;
             // Everything clipped to the window (plotters would draw points outside it on the
@@ -358,13 +436,15 @@ impl Figure for FromLight {
                 let pts: Vec<Option<(f64, f64)>> = pts.iter().map(|q| Some((q.x, q.y))).collect();
                 clip_polyline(&pts, bounds)
             };
+            // A map's tint only where the whole map is in the window: a map larger than a
+            // detail panel's window would tint its whole background.
             for (i, &(a, b)) in p.maps.iter().enumerate() {
                 let c = PALETTE[i % PALETTE.len()];
                 let (ca, cb) = (
                     a.max(DVec2::new(xa.min, ya.min)),
                     b.min(DVec2::new(xa.max, ya.max)),
                 );
-                if ca.x < cb.x && ca.y < cb.y {
+                if ca == a && cb == b && ca.x < cb.x && ca.y < cb.y {
                     chart.draw_series(std::iter::once(Rectangle::new(
                         [(ca.x, ca.y), (cb.x, cb.y)],
                         c.mix(0.08).filled(),
@@ -389,8 +469,14 @@ impl Figure for FromLight {
             for (i, &(a, b)) in p.maps.iter().enumerate() {
                 let c = PALETTE[i % PALETTE.len()];
                 let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
+                let (dash, gap) = DASHES[i % DASHES.len()];
                 for piece in clip(&corners) {
-                    chart.draw_series(DashedLineSeries::new(piece, 7, 5, c.stroke_width(2)))?;
+                    chart.draw_series(DashedLineSeries::new(
+                        piece,
+                        dash,
+                        gap,
+                        c.stroke_width(2),
+                    ))?;
                 }
             }
             // Each split plane labelled in the gutter at the height of its cross-section's
@@ -427,12 +513,12 @@ impl Figure for FromLight {
             let (_, gh) = gutter.dim_in_pixel();
             let ys = spread(
                 &marks.iter().map(|m| m.0).collect::<Vec<_>>(),
-                LABEL_STEP,
+                label_step,
                 (8, gh as i32 - 8),
                 gy,
             );
-            let style =
-                TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+            let label_style = TextStyle::from((FONT, label_size).into_font())
+                .pos(Pos::new(HPos::Left, VPos::Center));
             let grey = RGBColor(90, 90, 90);
             for ((tick_y, label), y) in marks.iter().zip(ys) {
                 let ty = tick_y - gy;
@@ -447,7 +533,7 @@ impl Figure for FromLight {
                     vec![(0, ty), (5, ty), (11, y - gy)],
                     grey.stroke_width(1),
                 ))?;
-                gutter.draw(&Text::new(label.clone(), (13, y - gy), style.clone()))?;
+                gutter.draw(&Text::new(label.clone(), (13, y - gy), label_style.clone()))?;
             }
             for [from, to] in &p.extensions {
                 chart.draw_series(LineSeries::new(

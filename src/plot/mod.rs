@@ -150,6 +150,8 @@ pub const SINGLE_COLUMN: &[&str] = &[
     "barroso-fig7",
     "lloyd2006-worst-case",
     "lloyd2005-fig8",
+    "barroso-fig5",
+    "lloyd2006-fig11",
 ];
 
 /// What went wrong while rendering a figure.
