@@ -152,6 +152,7 @@ pub const SINGLE_COLUMN: &[&str] = &[
     "lloyd2005-fig8",
     "barroso-fig5",
     "lloyd2006-fig11",
+    "martin-tan-fig3",
 ];
 
 /// What went wrong while rendering a figure.

@@ -4,9 +4,12 @@
 //! trapezoidal space (N_T, the map the trapezoid builds) and in the bounding box's space, with
 //! the share of the map each leaves unused (the paper's *wastage*).
 
-use super::chart::{build_chart_styled, equal_aspect, frame, Axis, ChartStyle, FONT, PALETTE};
+use super::chart::{
+    build_chart_styled, clip_polyline, column, equal_aspect, frame, Axis, ChartStyle, Ticked, FONT,
+    PALETTE,
+};
 use super::from_light::{seen_from_light, SEEN_X};
-use super::{Fail, Figure, UNIT_SQUARE};
+use super::{Column, Fail, Figure, UNIT_SQUARE};
 use crate::maps::tsm::{tsm, TsmOptions, TsmSearch};
 use crate::ViewFrustum;
 use glam::{DMat3, DVec2, DVec3};
@@ -313,37 +316,74 @@ impl Figure for Fig3 {
         (520, 560)
     }
 
+    /// One column: (a) over the legend, (b) and (c) side by side under it.
+    fn single_size(&self) -> Option<(u32, u32)> {
+        Some((Column::Single.width(), 660))
+    }
+
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let single = column() == Column::Single;
         let wins = self.wins.unwrap_or((f64::NAN, f64::NAN));
-        let caption = format!(
-            "Martin & Tan 2004, Figs. 3 and 4: the 80 % rule's trapezoid T (δ = {FOCUS}), \
-             n = {}, f = {}, θ = {}°, light {}° high, {}° round from behind to the viewer's right. \
-             (a) From the light: frustum E, hull C, focus region, T and smallest box B. Unlike the paper, B may be rotated (§5; dotted: unrotated). C covers {:.1} % \
-             of the map in T's space (b), {:.1} % in B's (c), {:.1} % unrotated; T wins for {:.0} % \
-             of lights.",
-            VIEW.0,
-            VIEW.1,
-            VIEW.2,
-            LIGHT.0,
-            LIGHT.1,
-            100.0 * self.covered_t,
-            100.0 * self.covered_o,
-            100.0 * self.covered_b,
-            100.0 * wins.0,
-        );
+        let caption = if single {
+            format!(
+                "Martin & Tan 2004, Figs. 3 and 4: the 80 % rule's trapezoid T (δ = {FOCUS}), \
+                 n = {}, f = {}, θ = {}°, light {}° up. C covers {:.1}\u{a0}% of the map in T's \
+                 space (b), {:.1}\u{a0}% in B's (c), {:.1}\u{a0}% unrotated.",
+                VIEW.0,
+                VIEW.1,
+                VIEW.2,
+                LIGHT.0,
+                100.0 * self.covered_t,
+                100.0 * self.covered_o,
+                100.0 * self.covered_b,
+            )
+        } else {
+            format!(
+                "Martin & Tan 2004, Figs. 3 and 4: the 80 % rule's trapezoid T (δ = {FOCUS}), \
+                 n = {}, f = {}, θ = {}°, light {}° high, {}° round from behind to the viewer's \
+                 right. (a) From the light, inset: the focus region at the apex. Unlike the \
+                 paper, B may be rotated (§5; dotted: unrotated). C covers {:.1}\u{a0}% of the map \
+                 in T's space (b), {:.1}\u{a0}% in B's (c), {:.1}\u{a0}% unrotated; T wins for \
+                 {:.0}\u{a0}% of lights.",
+                VIEW.0,
+                VIEW.1,
+                VIEW.2,
+                LIGHT.0,
+                LIGHT.1,
+                100.0 * self.covered_t,
+                100.0 * self.covered_o,
+                100.0 * self.covered_b,
+                100.0 * wins.0,
+            )
+        };
         let body = frame(
             root,
             "The trapezoid against the smallest bounding box",
             &[caption.as_str()],
         )?;
-        // (a) on the left, the legend in a strip of its own under it, where it covers nothing;
-        // (b) over (c), both square, on the right (issue 35: (a) over (b) and (c) made the
-        // figure 960 units tall).
+        // Across two columns: (a) on the left, the legend in a strip of its own under it,
+        // where it covers nothing; (b) over (c), both square, on the right (issue 35: (a) over
+        // (b) and (c) made the figure 960 units tall). In one: (a), the legend, then (b) and
+        // (c) side by side.
         let (bw, bh) = body.dim_in_pixel();
-        let (left, right) = body.split_horizontally(bw / 2);
-        let (top, strip) = left.split_vertically(bh - LEGEND_H);
-        let panels = right.split_evenly((2, 1));
-        let style = ChartStyle::default();
+        let (top, strip, panels) = if single {
+            let (upper, lower) = body.split_vertically(bh * 62 / 100);
+            let (top, strip) = upper.split_vertically(bh * 62 / 100 - LEGEND_H);
+            (top, strip, lower.split_evenly((1, 2)))
+        } else {
+            let (left, right) = body.split_horizontally(bw / 2);
+            let (top, strip) = left.split_vertically(bh - LEGEND_H);
+            (top, strip, right.split_evenly((2, 1)))
+        };
+        let style = if single {
+            ChartStyle {
+                y_label_area: 52,
+                x_label_area: 40,
+                ..ChartStyle::default()
+            }
+        } else {
+            ChartStyle::default()
+        };
         // (a) Light space, equal aspect.
         let pts: Vec<DVec2> = self
             .eye
@@ -374,20 +414,33 @@ impl Figure for Fig3 {
         let (b0, b1) = self.bbox;
         let axis_box = [b0, DVec2::new(b1.x, b0.y), b1, DVec2::new(b0.x, b1.y)];
         outline(&mut chart, &axis_box, AXIS_BOX, Stroke::Dotted)?;
+        // The inset needs the room under the apex that (a) has across two columns; in one
+        // column (a) is wide and short, and the focus region shows in (b) and (c).
+        if !single {
+            self.draw_inset(&top, &chart)?;
+        }
         draw_legend(&strip)?;
         // (b), (c): the two normalised spaces; the map square in the colour of its shape.
         for (panel, h, title, colour, stroke) in [
             (
                 &panels[0],
                 self.n_t,
-                "(b) trapezoidal space (N_T)",
+                if single {
+                    "(b) T's space"
+                } else {
+                    "(b) trapezoidal space (N_T )"
+                },
                 TRAP,
                 Stroke::Solid,
             ),
             (
                 &panels[1],
                 self.box_map(),
-                "(c) the box B's space",
+                if single {
+                    "(c) B's space"
+                } else {
+                    "(c) the box B's space"
+                },
                 MIN_BOX,
                 Stroke::Dashed,
             ),
@@ -399,6 +452,9 @@ impl Figure for Fig3 {
                 &Axis::linear("map t", -1.1, 1.1),
                 &style,
             )?;
+            // The map's ends and centre only: its square is 1.1 units across the page.
+            let ends = [-1.0, 0.0, 1.0];
+            let (ax, ay) = (ax.labelled_at(&ends), ay.labelled_at(&ends));
             let mut chart = build_chart_styled(panel, title, &ax, &ay, false, &style)?;
             self.draw_contents(&mut chart, |p| through(&h, p))?;
             let square: Vec<DVec2> = UNIT_SQUARE[..4]
@@ -407,6 +463,102 @@ impl Figure for Fig3 {
                 .collect();
             outline(&mut chart, &square, colour, stroke)?;
         }
+        Ok(())
+    }
+}
+
+/// The inset's share of panel (a)'s plot width, and the focus region's share of the inset.
+const INSET_W: f64 = 0.42;
+const INSET_FILL: f64 = 0.6;
+
+impl Fig3 {
+    /// The window (min, max) round the focus region that the inset shows, `aspect` (width over
+    /// height) to its pixels: the focus region's bounding box, centred, filling
+    /// [`INSET_FILL`] of it.
+    pub(super) fn inset_window(&self, aspect: f64) -> (DVec2, DVec2) {
+        let lo = self
+            .focus
+            .iter()
+            .fold(DVec2::splat(f64::INFINITY), |a, &p| a.min(p));
+        let hi = self
+            .focus
+            .iter()
+            .fold(DVec2::splat(f64::NEG_INFINITY), |a, &p| a.max(p));
+        let mid = 0.5 * (lo + hi);
+        let size = (hi - lo) / INSET_FILL;
+        let h = size.y.max(size.x / aspect);
+        let half = DVec2::new(0.5 * h * aspect, 0.5 * h);
+        (mid - half, mid + half)
+    }
+
+    /// The inset of (a): the apex enlarged, in the empty lower right of (a)'s plot (under
+    /// z = 0 and right of the apex, where the frustum seen from this light has nothing), framed,
+    /// with the window it shows outlined in (a).
+    fn draw_inset<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        chart: &super::chart::Chart2d<'_, DB>,
+    ) -> Result<(), Fail> {
+        let plot = chart.plotting_area();
+        let (pw, ph) = plot.dim_in_pixel();
+        let (px, py) = plot.get_base_pixel();
+        let (ax, ay) = area.get_base_pixel();
+        // Below the apex (light z 0) and right of it, inside the plot: the inset's box.
+        let (_, apex_y) = chart.backend_coord(&(0.0, 0.0));
+        let w = (f64::from(pw) * INSET_W) as i32;
+        let room = py + ph as i32 - apex_y - 10;
+        let h = room.min(w).max(20);
+        let x0 = px + pw as i32 - w - 4;
+        let y0 = py + ph as i32 - h - 4;
+        let (lo, hi) = self.inset_window(f64::from(w) / f64::from(h));
+        // The window outlined in (a).
+        let (c0, c1) = (
+            chart.backend_coord(&(lo.x, lo.y)),
+            chart.backend_coord(&(hi.x, hi.y)),
+        );
+        let grey = RGBColor(90, 90, 90);
+        area.draw(&Rectangle::new(
+            [(c0.0 - ax, c1.1 - ay), (c1.0 - ax, c0.1 - ay)],
+            grey.stroke_width(1),
+        ))?;
+        area.draw(&PathElement::new(
+            vec![(c1.0 - ax, c0.1 - ay), (x0 - ax, y0 - ay)],
+            grey.stroke_width(1),
+        ))?;
+        let inset = area
+            .clone()
+            .shrink((x0 - ax, y0 - ay), (w as u32, h as u32));
+        inset.fill(&WHITE)?;
+        let mut zoom = ChartBuilder::on(&inset).build_cartesian_2d(
+            Ticked::new(lo.x, hi.x, Vec::new(), Vec::new()),
+            Ticked::new(lo.y, hi.y, Vec::new(), Vec::new()),
+        )?;
+        let clip = |pts: &[DVec2]| -> Vec<Vec<(f64, f64)>> {
+            let pts: Vec<Option<(f64, f64)>> = pts.iter().map(|q| Some((q.x, q.y))).collect();
+            clip_polyline(&pts, (lo.x, hi.x, lo.y, hi.y))
+        };
+        let hull_pts: Vec<DVec2> = hull(&self.eye);
+        let hull_xy: Vec<(f64, f64)> = hull_pts.iter().map(|p| (p.x, p.y)).collect();
+        zoom.draw_series(std::iter::once(Polygon::new(
+            hull_xy,
+            HULL.mix(0.45).filled(),
+        )))?;
+        for (corners, colour, width) in [(&self.eye, EDGE, 1), (&self.focus, FOCUS_C, 2)] {
+            for (a, b) in EDGES {
+                for piece in clip(&[corners[a], corners[b]]) {
+                    zoom.draw_series(LineSeries::new(piece, colour.stroke_width(width)))?;
+                }
+            }
+        }
+        let mut closed = self.trapezoid.to_vec();
+        closed.push(closed[0]);
+        for piece in clip(&closed) {
+            zoom.draw_series(LineSeries::new(piece, TRAP.stroke_width(2)))?;
+        }
+        inset.draw(&Rectangle::new(
+            [(0, 0), (w - 1, h - 1)],
+            grey.stroke_width(1),
+        ))?;
         Ok(())
     }
 }
