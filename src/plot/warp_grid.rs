@@ -128,15 +128,15 @@ pub(super) fn minus(text: &str) -> String {
 
 impl Figure for Fig4 {
     fn size(&self) -> (u32, u32) {
-        (520, 600)
+        (520, 560)
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let caption = format!(
             "Lloyd et al. 2006, Fig. 4, from the warped matrices: n = {n}, f = {f}, θ = \
-             {theta:.0}°, light overhead, the plane y = 0; one column per n′. Top: from the light, \
+             {theta:.0}°, light overhead, the plane y = 0; one column per n′. (a)–(d): from the light, \
              the map's {LINES} × {LINES} texel grid (blue) over the frustum (black), pressed to \
-             the near plane by the warp. Bottom: in the map, the frustum's planes of constant depth \
+             the near plane by the warp. (e)–(h): in the map, the frustum's planes of constant depth \
              (orange) and rays from the eye (green). The paper's rows are sketches.",
             n = self.view.near(),
             f = self.view.far(),
@@ -144,7 +144,7 @@ impl Figure for Fig4 {
         );
         let body = frame(
             root,
-            "Perspective warping: the shadow map's grid as n′ decreases from ∞ to n, light overhead",
+            "The warped shadow map's grid as n′ goes from ∞ to n",
             &[caption.as_str()],
         )?;
         // Two rows (the light's view, the map), one column per n′, as in the paper; each column
@@ -199,9 +199,12 @@ impl Figure for Fig4 {
             let rest = area.clone().shrink((0, head), (cw, bh - head));
             let rows = rest.split_evenly((2, 1));
             // Equal aspect in both rows: the frustum and the map undistorted.
-            let (dx, dy) = equal_aspect(&rows[0], "", &depth, &across, &st)?;
+            // Every panel lettered: (a)–(d) along the top row, (e)–(h) along the bottom.
+            let letter = |row: u32| format!("({})", char::from(b'a' + (row * count + k) as u8));
+            let (top_letter, bottom_letter) = (letter(0), letter(1));
+            let (dx, dy) = equal_aspect(&rows[0], &top_letter, &depth, &across, &st)?;
             let (dx, dy) = (every(dx, 5.0), every(dy, 5.0));
-            let mut chart = build_chart_styled(&rows[0], "", &dx, &dy, false, &st)?;
+            let mut chart = build_chart_styled(&rows[0], &top_letter, &dx, &dy, false, &st)?;
             let bounds = (0.0, f * 1.05, -f * t * 1.1, f * t * 1.1);
             for seg in &col.light_space {
                 for piece in clip_polyline(&[Some(seg[0]), Some(seg[1])], bounds) {
@@ -209,9 +212,9 @@ impl Figure for Fig4 {
                 }
             }
             chart.draw_series(LineSeries::new(frustum, BLACK.stroke_width(2)))?;
-            let (ux, vy) = equal_aspect(&rows[1], "", &u, &v, &st)?;
+            let (ux, vy) = equal_aspect(&rows[1], &bottom_letter, &u, &v, &st)?;
             let (ux, vy) = (every(ux, 0.5), every(vy, 0.5));
-            let mut chart = build_chart_styled(&rows[1], "", &ux, &vy, false, &st)?;
+            let mut chart = build_chart_styled(&rows[1], &bottom_letter, &ux, &vy, false, &st)?;
             chart.draw_series(LineSeries::new(
                 UNIT_SQUARE.map(st_of),
                 BLACK.stroke_width(2),
