@@ -37,7 +37,8 @@ fn caption(name: &str) -> String {
         rest = &rest[close..];
     }
     assert!(!lines.is_empty(), "{name}: no caption found");
-    lines.join(" ")
+    // A no-break space (inside a formula) reads as a space.
+    lines.join(" ").replace('\u{a0}', " ")
 }
 
 /// The content of one `<text>`: `<tspan dy="-…" font-size=…>` is a superscript, a positive `dy`
@@ -577,11 +578,14 @@ fn lloyd2006_fig7() {
         &[
             ("2006", N::Given("the paper's year")),
             ("7", N::Given("its figure")),
-            ("2", N::Given("the sweep's step in degrees")),
+            ("1", N::Given("the sweep's step in degrees")),
+            ("10", N::Given("a ring's elevation")),
+            ("20", N::Given("a ring's elevation")),
+            ("30", N::Given("a ring's elevation")),
+            ("60", N::Given("a ring's elevation")),
             ("1", N::Given("n")),
             ("1000", N::Given("f")),
             ("30", N::Given("θ")),
-            ("10", N::Given("the base of the log₁₀ colour scale")),
             ("12", N::Given("Eq 12")),
             ("865", N::Value(999.0 / (2.0 * 30f64.to_radians().tan()))),
         ],
@@ -661,10 +665,18 @@ fn martin_tan_fig6() {
             ("6", N::Given("its figure")),
             ("80", N::Given("the 80 % rule")),
             ("1024", N::Given("the iterative variant's map lines")),
+            ("10", N::Given("a ring's elevation")),
+            ("20", N::Given("a ring's elevation")),
+            ("30", N::Given("a ring's elevation")),
+            ("60", N::Given("a ring's elevation")),
             ("1", N::Given("n")),
             ("100", N::Given("f")),
             ("30", N::Given("θ")),
             ("10", N::Given("δ")),
+            // Light exactly behind or in front: the map is the frustum's far face, side
+            // 2 f tan θ, and the focus region is seen as its own far face at n + δ, so its
+            // share is ((n + δ)/f)².
+            ("0.0121", N::Value(((1.0f64 + 10.0) / 100.0).powi(2))),
         ],
     );
 }

@@ -1,8 +1,8 @@
 //! Lloyd et al. 2006 Fig 7: the storage factor S̄ over the hemisphere of light directions, from
 //! the crate's measurement of each scheme's own matrices ([`crate::scheme::sweep::sweep`]).
 
-use super::chart::{draw_colour_bar, draw_hemisphere, frame, Axis, ColourScale, PolarGrid};
-use super::{Fail, Figure};
+use super::chart::{column, draw_colour_bar, draw_hemisphere, frame, Axis, ColourScale, PolarGrid};
+use super::{Column, Fail, Figure};
 use crate::maps::WarpRule;
 use crate::scheme::sweep::{sweep, Sweep, SweepGrid};
 use crate::scheme::Partition;
@@ -15,6 +15,11 @@ use std::f64::consts::{FRAC_PI_2, TAU};
 pub(super) const ELEVATIONS: usize = 46;
 /// Azimuth columns of the sweeps (every 2°).
 pub(super) const AZIMUTHS: usize = 180;
+
+/// Fig 7's own grid, every 1° (at 2° its cells showed as steps along the bands of fast
+/// change near the horizon).
+const FIG7_ELEVATIONS: usize = 91;
+const FIG7_AZIMUTHS: usize = 360;
 
 /// The cells of a sweep: each sample owns the band of elevations and azimuths halfway to its
 /// neighbours (the horizon and zenith rows half bands).
@@ -66,12 +71,12 @@ pub(super) fn fig7_view() -> Result<ViewFrustum, crate::Error> {
 
 pub(super) fn fig7() -> Result<Fig7, Fail> {
     let view = fig7_view()?;
-    let grid = SweepGrid::new(ELEVATIONS, AZIMUTHS)?;
+    let grid = SweepGrid::new(FIG7_ELEVATIONS, FIG7_AZIMUTHS)?;
     let schemes = [
         ("(a) no warping", WarpRule::Uniform, Partition::Single),
         ("(b) LiSPSM", WarpRule::Lispsm, Partition::Single),
         ("(c) face partitions", WarpRule::Lispsm, Partition::Faces),
-        ("(d) n′ of least S̄", WarpRule::Minimax, Partition::Single),
+        ("(d) best n′", WarpRule::Minimax, Partition::Single),
     ];
     let mut panels = Vec::new();
     for (title, rule, partition) in schemes {
@@ -115,20 +120,20 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         max: rmax,
         min: rmin,
     };
-    let ratio_scale = ColourScale::smooth(Axis::log10("(b) ÷ (c), not in the paper", rmin, rmax));
+    let ratio_scale = ColourScale::smooth(Axis::log10("(b) ÷ (c)", rmin, rmax));
     let lo = panels.iter().map(|p| p.min).fold(f64::INFINITY, f64::min);
     let hi = panels.iter().map(|p| p.max).fold(0.0, f64::max);
-    let scale = ColourScale::smooth(Axis::log10("S̄ (texels per image pixel)", lo, hi));
+    let scale = ColourScale::smooth(Axis::log10("S̄ (log scale)", lo, hi));
     // Lloyd 2006 Eq 12 at n′ ≤ n′_LiSPSM: the overhead S̄ of LiSPSM and of face partitioning.
     let (n, f) = (view.near(), view.far());
     let overhead = (f / n - 1.0) / (2.0 * view.tan_half_fov());
     let caption = vec![format!(
-        "Lloyd et al. 2006, Fig. 7: S̄ = M_x M_z measured on each scheme's matrices for light \
-         directions {step}° apart, n = {n}, f = {f}, θ = {theta:.0}°. Overhead at the centre, \
-         light from behind the viewer on the left, from in front on the right; rings of equal \
-         elevation. (a)–(d) share one log₁₀ colour scale, as in the paper; (d) uses the n′ of \
-         least S̄; (e) is (b) over (c). Overhead, (b) and (c) are Eq 12's {overhead:.0}.",
-        step = 90 / (ELEVATIONS - 1),
+        "Lloyd et al. 2006, Fig. 7: S̄ = M_x M_z (texels per image pixel) of each scheme's \
+         matrices for light directions {step}° apart (centre overhead; rings at 10°, 20°, 30°, 60° elevation); \
+         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°. (a)–(d) share \
+         one log scale; (d) at the n′ of least S̄. Overhead, (b) and (c) are Eq 12's \
+         {overhead:.0}.",
+        step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     )];
     Ok(Fig7 {
@@ -153,6 +158,11 @@ impl Figure for Fig7 {
         (520, 560)
     }
 
+    /// One column: two hemispheres a row.
+    fn single_size(&self) -> Option<(u32, u32)> {
+        Some((Column::Single.width(), 740))
+    }
+
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let caption: Vec<&str> = self.caption.iter().map(String::as_str).collect();
         let body = frame(
@@ -160,25 +170,68 @@ impl Figure for Fig7 {
             "Storage factor over the hemisphere of light directions",
             &caption,
         )?;
-        // Three panels a row (issue 35: two a row, the figure was 892 units tall): (a)–(c) on
-        // top; (d), then (e) with its own bar under them; the bar of (a)–(d) right of both rows.
         let (w, _) = body.dim_in_pixel();
-        let (maps, bar) = body.split_horizontally(w.saturating_sub(84));
-        let cells = maps.split_evenly((2, 3));
-        for (cell, p) in cells.iter().zip(&self.panels) {
-            draw_hemisphere(cell, &p.title, &p.grid, &self.scale)?;
+        let (a, b, c, d) = (
+            &self.panels[0],
+            &self.panels[1],
+            &self.panels[2],
+            &self.panels[3],
+        );
+        match column() {
+            Column::Double => {
+                // Three a row (issue 35: two a row, the figure was 892 units tall): (a)–(c) on
+                // top; (d), (e), then the bars of (e) and of (a)–(d) under them.
+                let cells = body.split_evenly((2, 3));
+                for (cell, p) in cells.iter().zip([a, b, c, d]) {
+                    draw_hemisphere(cell, &p.title, &p.grid, &self.scale)?;
+                }
+                let rows = draw_hemisphere(
+                    &cells[4],
+                    &self.ratio.title,
+                    &self.ratio.grid,
+                    &self.ratio_scale,
+                )?;
+                let (cw, _) = cells[5].dim_in_pixel();
+                let (ratio_bar, bar) =
+                    cells[5].split_horizontally(cw.saturating_sub(BAR_WIDTH + 10));
+                draw_bar(&ratio_bar, &self.ratio_scale, rows)?;
+                draw_bar(&bar, &self.scale, rows)?;
+            }
+            Column::Single => {
+                // Two a row; (e) under them with its bar and the bar of (a)–(d).
+                // Rows of square hemispheres under their titles (28 units), 10 units apart.
+                let (top, bottom) = body.split_vertically((w / 2 + 38) * 2);
+                for (cell, p) in top.split_evenly((2, 2)).iter().zip([a, b, c, d]) {
+                    draw_hemisphere(cell, &p.title, &p.grid, &self.scale)?;
+                }
+                let (e, bars) = bottom.split_horizontally(w.saturating_sub(RATIO_BAR + BAR_WIDTH));
+                let rows =
+                    draw_hemisphere(&e, &self.ratio.title, &self.ratio.grid, &self.ratio_scale)?;
+                let (ratio_bar, bar) = bars.split_horizontally(RATIO_BAR);
+                draw_bar(&ratio_bar, &self.ratio_scale, rows)?;
+                draw_bar(&bar, &self.scale, rows)?;
+            }
         }
-        draw_colour_bar(&bar, &self.scale)?;
-        let (ratio_bar, _) = cells[5].split_horizontally(96);
-        draw_hemisphere(
-            &cells[4],
-            &self.ratio.title,
-            &self.ratio.grid,
-            &self.ratio_scale,
-        )?;
-        draw_colour_bar(&ratio_bar, &self.ratio_scale)?;
         Ok(())
     }
+}
+
+/// The width of a colour bar's column: the bar, its tick labels and its name.
+pub(super) const BAR_WIDTH: u32 = 84;
+
+/// The width of (e)'s colour bar in one column: its labels are short (at most "2430").
+const RATIO_BAR: u32 = 76;
+
+/// A colour bar in `area` as tall as the disks whose top and bottom rows (in `area`) are
+/// `rows` (the bar's chart keeps 30 units at each end for its end labels).
+pub(super) fn draw_bar<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    scale: &ColourScale,
+    (top, bottom): (u32, u32),
+) -> Result<(), Fail> {
+    let (_, h) = area.dim_in_pixel();
+    let bar = area.margin(top.saturating_sub(30), h.saturating_sub(bottom + 30), 0, 0);
+    draw_colour_bar(&bar, scale)
 }
 
 /// The minimum and maximum of positive finite values.
@@ -203,7 +256,7 @@ mod tests {
     #[test]
     fn fig7_panels_match_the_closed_forms_at_the_analysed_directions() {
         let fig = fig7().map_err(|e| e.named("lloyd2006-fig7")).unwrap();
-        let (e, a) = (ELEVATIONS, AZIMUTHS);
+        let (e, a) = (FIG7_ELEVATIONS, FIG7_AZIMUTHS);
         let at =
             |panel: usize, i: usize, j: usize| fig.panels[panel].grid.values[i * a + j].unwrap();
         let overhead = 999.0 / (2.0 * 30f64.to_radians().tan());
@@ -256,7 +309,7 @@ mod tests {
         // overhead both are Eq 12's 865.159, so 1.
         let r = &fig.ratio.grid.values;
         assert!((r[0].unwrap() - 1e6 / 1999.0).abs() < 1e-6, "{:?}", r[0]);
-        let top = r[(ELEVATIONS - 1) * AZIMUTHS].unwrap();
+        let top = r[(FIG7_ELEVATIONS - 1) * FIG7_AZIMUTHS].unwrap();
         assert!((top - 1.0).abs() < 1e-9, "{top}");
         assert_eq!(r.len(), fig.panels[1].grid.values.len());
         assert!(fig.ratio.min > 0.9 && fig.ratio.max > 2000.0);

@@ -7,9 +7,11 @@
 //! the map the focus region covers ([`crate::maps::tsm::TsmMap::focus_area`]).
 
 use super::chart::{
-    draw_colour_bar, draw_hemisphere, draw_line_chart, frame, linspace, Axis, ColourScale,
-    LineChart, PolarGrid, Series, PALETTE,
+    column, draw_hemisphere, draw_line_chart, frame, linspace, Axis, ColourScale, LineChart,
+    Marker, PolarGrid, Series, PALETTE,
 };
+use super::hemisphere::{draw_bar, BAR_WIDTH};
+use super::Column;
 use super::{Fail, Figure};
 use crate::maps::tsm::{tsm, TsmOptions, TsmSearch};
 use crate::ViewFrustum;
@@ -21,9 +23,17 @@ use std::f64::consts::{FRAC_PI_2, TAU};
 /// The focus distance δ beyond the near plane (as in Zhang Fig 3).
 const FOCUS: f64 = super::zhang::TSM_FOCUS;
 
-/// Hemisphere grid: elevation rows (both ends) and azimuth columns.
-const ELEVATIONS: usize = 31;
-const AZIMUTHS: usize = 120;
+/// Hemisphere grid: elevation rows (both ends) and azimuth columns, every 1° (at 3° the cells
+/// showed as steps along the dueling-frusta bands).
+const ELEVATIONS: usize = 91;
+const AZIMUTHS: usize = 360;
+
+/// The shape that marks the 80 % rule's values exactly behind and in front (0° and 180°), as
+/// the caption says; no line of the profile carries it ([`Marker::of`] gives the blue line
+/// circles and the vermillion one squares).
+const JUMP_MARKER: Marker = Marker::Diamond;
+/// The same shape in the caption's text.
+const JUMP_GLYPH: &str = "◆";
 
 /// The direction light travels for elevation `el` and azimuth `az` (radians), as in
 /// [`crate::scheme::sweep`]: the source lies towards (cos el · sin az, sin el, cos el · cos az);
@@ -91,7 +101,8 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
     }
     let mut profile = LineChart::new(
         "(b) in the view's vertical plane",
-        Axis::linear("light angle from behind (°)", 0.0, 180.0),
+        // A tick every 45°: behind, overhead and in front are ticks.
+        Axis::every("light angle from behind (°)", 0.0, 180.0, 0.0, 45.0),
         Axis::log10(
             "share of the map (log)",
             profile_floor(&eighty, &iterative),
@@ -100,13 +111,16 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
     );
     profile.legend = SeriesLabelPosition::LowerMiddle;
     // The 80 % rule jumps back to the dueling-frusta value exactly behind and in front (0° and
-    // 180°, on the plot's border): those two points marked, unjoined and unlabelled.
+    // 180°, on the plot's border): those two points marked with a shape of their own (the
+    // lines carry theirs along them), unjoined and unlabelled.
     let (first, last) = (eighty[0], eighty[eighty.len() - 1]);
+    let dueling = first.1;
     profile
         .series
         .push(Series::line("80 % rule", eighty, PALETTE[0]));
     profile.series.push(Series {
         label: None,
+        shape: Some(JUMP_MARKER),
         ..Series::line("", vec![first, (90.0, f64::NAN), last], PALETTE[0]).with_markers()
     });
     profile
@@ -116,14 +130,16 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         grid,
         // Logarithmic, as the profile: the dueling-frusta band near the horizon (0.003 to
         // 0.01) is two decades below overhead (0.49) and would be one colour on a linear bar.
-        scale: ColourScale::smooth(Axis::log10("share of the map (log)", lo, hi)),
+        // Its own short name: the profile's y axis, beside it, names the quantity in full.
+        scale: ColourScale::smooth(Axis::log10("share", lo, hi)),
         profile,
         caption: vec![format!(
-            "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map (80 % rule) covered by \
-             the focus region (the eye frustum from n to n + δ) for every light direction above \
-             the viewer (a) and in its vertical plane (b, iterative: the variant over 1024 lines); \
-             n = {n}, f = {f}, θ = {theta:.0}°, δ = {FOCUS}. Unlike the paper, which plots one \
-             angle as a surface, the whole hemisphere; markers: exactly behind and in front.",
+            "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map (80 % rule; \
+             iterative: over 1024 lines) covered by the focus region, n to n\u{a0}+\u{a0}δ, for \
+             light directions over the hemisphere (a; rings at 10°, 20°, 30°, 60°) and in the \
+             view's vertical plane (b). n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+             θ\u{a0}=\u{a0}{theta:.0}°, δ\u{a0}=\u{a0}{FOCUS}. {JUMP_GLYPH}: light exactly \
+             behind or in front, {dueling:.4}.",
             n = view.near(),
             f = view.far(),
             theta = view.half_fov().to_degrees(),
@@ -147,6 +163,11 @@ impl Figure for Fig6 {
         (520, 470)
     }
 
+    /// One column: the hemisphere with its bar over the profile.
+    fn single_size(&self) -> Option<(u32, u32)> {
+        Some((Column::Single.width(), 760))
+    }
+
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let caption: Vec<&str> = self.caption.iter().map(String::as_str).collect();
         let body = frame(
@@ -154,14 +175,17 @@ impl Figure for Fig6 {
             "Area of the focus region in the trapezoidal map",
             &caption,
         )?;
-        // The hemisphere with its bar on the left, the profile beside it (issue 35: stacked,
-        // the figure was 928 units tall).
-        let (w, _) = body.dim_in_pixel();
-        let (left, right) = body.split_horizontally(w * 27 / 50);
+        let (w, h) = body.dim_in_pixel();
+        // Two columns: the hemisphere with its bar on the left, the profile beside it (issue
+        // 35: stacked, the figure was 928 units tall); one column: the profile under them.
+        let (left, right) = match column() {
+            Column::Double => body.split_horizontally(w * 27 / 50),
+            Column::Single => body.split_vertically(h * 47 / 100),
+        };
         let (w, _) = left.dim_in_pixel();
-        let (disk, bar) = left.split_horizontally(w.saturating_sub(96));
-        draw_hemisphere(&disk, "(a) over the hemisphere", &self.grid, &self.scale)?;
-        draw_colour_bar(&bar, &self.scale)?;
+        let (disk, bar) = left.split_horizontally(w.saturating_sub(BAR_WIDTH));
+        let rows = draw_hemisphere(&disk, "(a) over the hemisphere", &self.grid, &self.scale)?;
+        draw_bar(&bar, &self.scale, rows)?;
         draw_line_chart(&right, &self.profile)?;
         Ok(())
     }
@@ -171,31 +195,76 @@ impl Figure for Fig6 {
 mod tests {
     use super::*;
 
-    /// Light exactly behind or in front: the frustum looks square and the map is its bounding
-    /// rectangle, the far face (side 2 f tan θ); the focus region is seen as its own far face at
-    /// depth n + δ, so its share of the map is ((n + δ)/f)² = (11/100)² = 0.0121 by hand.
-    /// The caption says how the figure differs from the paper (issue 25), and the 80 % rule's
-    /// jumps at exactly 0° and 180° are marked: an unlabelled marker series at those two angles
-    /// with the rule's values there, (11/100)² behind (the dueling-frusta share, by hand).
+    /// The caption's marker claim is what the profile draws (figure review: it said
+    /// "markers: exactly behind and in front" while the lines carry markers all along). Read
+    /// back from the profile's SVG: exactly two polygons are diamonds (four corners, the top
+    /// and bottom on one vertical, the left and right on one horizontal), the shape the
+    /// caption names, at the plot's left and right ends (0° and 180°) and at one height (the
+    /// same share, ((n + δ)/f)² = (11/100)² = 0.0121 by hand, which the caption prints); the
+    /// lines' own markers are other shapes.
     #[test]
-    fn caption_states_the_difference_and_the_jumps_are_marked() {
+    fn the_caption_names_the_marks_exactly_behind_and_in_front() {
+        use super::super::chart::read_svg::draw_svg;
         let fig = fig6().map_err(|e| e.named("martin-tan-fig6")).unwrap();
-        assert!(fig.caption.join(" ").contains("Unlike the paper"));
-        let marks = fig
-            .profile
-            .series
-            .iter()
-            .find(|s| s.markers && s.label.is_none())
-            .expect("a marker series");
-        let finite: Vec<(f64, f64)> = marks
-            .points
-            .iter()
-            .copied()
-            .filter(|p| p.1.is_finite())
+        let caption = fig.caption.join(" ");
+        assert!(
+            caption.contains("◆: light exactly behind or in front, 0.0121."),
+            "{caption}"
+        );
+        let svg = draw_svg((300, 300), |area| {
+            draw_line_chart(area, &fig.profile).unwrap();
+        });
+        let polygons: Vec<Vec<(f64, f64)>> = svg
+            .lines()
+            .filter(|l| l.starts_with("<polygon"))
+            .map(|l| {
+                let at = l.find("points=\"").unwrap() + 8;
+                l[at..at + l[at..].find('"').unwrap()]
+                    .split_whitespace()
+                    .map(|p| {
+                        let (x, y) = p.split_once(',').unwrap();
+                        (x.parse().unwrap(), y.parse().unwrap())
+                    })
+                    .collect()
+            })
             .collect();
-        assert_eq!(finite.len(), 2);
-        assert_eq!((finite[0].0, finite[1].0), (0.0, 180.0));
-        assert!((finite[0].1 - 0.0121).abs() < 1e-9, "{finite:?}");
+        let diamond = |p: &Vec<(f64, f64)>| {
+            p.len() == 4
+                && (p[0].0 - p[2].0).abs() < 0.01
+                && (p[1].1 - p[3].1).abs() < 0.01
+                && (p[0].1 - p[1].1).abs() > 1.0
+        };
+        let diamonds: Vec<(f64, f64)> = polygons
+            .iter()
+            .filter(|p| diamond(p))
+            .map(|p| (p[0].0, p[1].1))
+            .collect();
+        assert_eq!(diamonds.len(), 2, "{diamonds:?}");
+        assert!(polygons.len() > 4, "the lines carry markers of their own");
+        // The plot's ends: the leftmost and rightmost points of the 80 % rule's line (blue,
+        // hundreds of points; the legend's sample has two).
+        let xs: Vec<f64> = svg
+            .lines()
+            .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#0072B2\""))
+            .filter(|l| l.matches(',').count() > 50)
+            .flat_map(|l| {
+                let at = l.find("points=\"").unwrap() + 8;
+                l[at..at + l[at..].find('"').unwrap()]
+                    .split_whitespace()
+                    .map(|p| p.split_once(',').unwrap().0.parse::<f64>().unwrap())
+                    .collect::<Vec<_>>()
+            })
+            .collect();
+        let (left, right) = (
+            xs.iter().copied().fold(f64::INFINITY, f64::min),
+            xs.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+        );
+        let (a, b) = (diamonds[0], diamonds[1]);
+        assert!(
+            (a.0 - left).abs() < 1.0 && (b.0 - right).abs() < 1.0,
+            "{diamonds:?} {left} {right}"
+        );
+        assert!((a.1 - b.1).abs() < 0.01, "{diamonds:?}");
     }
 
     #[test]

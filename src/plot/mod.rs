@@ -153,6 +153,8 @@ pub const SINGLE_COLUMN: &[&str] = &[
     "barroso-fig5",
     "lloyd2006-fig11",
     "martin-tan-fig3",
+    "lloyd2006-fig7",
+    "martin-tan-fig6",
 ];
 
 /// What went wrong while rendering a figure.

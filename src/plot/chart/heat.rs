@@ -308,7 +308,7 @@ pub(crate) fn hemisphere_direction(x: f64, y: f64) -> Option<(f64, f64)> {
 }
 
 /// The elevation rings of a hemisphere panel (degrees): every 10° over the horizon band, then
-/// 60°; the labelled ones (30°, 60°) drawn darker.
+/// 60°; the marked ones (30°, 60°) drawn darker.
 pub(crate) const RINGS: [(f64, bool); 5] = [
     (0.0, false),
     (10.0, false),
@@ -317,23 +317,16 @@ pub(crate) const RINGS: [(f64, bool); 5] = [
     (60.0, true),
 ];
 
-/// Where a ring's label is centred, in disk coordinates: on the ring itself, up and to the left
-/// of the centre (towards behind the viewer and to its left), so that each label sits on its
-/// own ring and nowhere near another.
-pub(crate) fn ring_label_at(elevation_deg: f64) -> (f64, f64) {
-    let r = hemisphere_radius(elevation_deg.to_radians());
-    let a = 112f64.to_radians();
-    (r * a.cos(), r * a.sin())
-}
-
 /// Draws a hemisphere panel: a disk of radius 1 with the field (one raster, transparent outside
-/// the disk), the elevation rings of [`RINGS`], and the directions named.
+/// the disk), the elevation rings of [`RINGS`] (each on a light halo, so that it shows on dark
+/// colours too), and the directions named. Returns the rows of the disk's top and bottom in
+/// `area` (for a colour bar as tall as the disk).
 pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
     grid: &PolarGrid,
     scale: &ColourScale,
-) -> Result<(), Fail> {
+) -> Result<(u32, u32), Fail> {
     let (w, h) = area.dim_in_pixel();
     // Square plotting area centred in the panel.
     let title_h = 28;
@@ -392,12 +385,26 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
             stroke: Some(1),
         })
     };
+    // A light halo under each inner ring, so that the dark ring shows on dark colours too.
+    let halo = |points: Vec<(f64, f64)>| {
+        area.draw(&Fine {
+            points,
+            colour: BackendColor {
+                alpha: 0.4,
+                rgb: (255, 255, 255),
+            },
+            stroke: Some(3),
+        })
+    };
     for (deg, labelled) in RINGS {
         let el = deg.to_radians();
-        let ring = (0..=360)
+        let ring: Vec<(f64, f64)> = (0..=360)
             .map(|k| abs(hemisphere_xy(el, f64::from(k).to_radians())))
             .collect();
-        stroke(ring, if labelled || deg == 0.0 { 1.0 } else { 0.45 })?;
+        if deg > 0.0 {
+            halo(ring.clone())?;
+        }
+        stroke(ring, if labelled || deg == 0.0 { 1.0 } else { 0.75 })?;
     }
     // The vertical plane through the view direction: behind, overhead, in front.
     stroke(vec![abs((-1.0, 0.0)), abs((1.0, 0.0))], 0.5)?;
@@ -413,31 +420,9 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
         (0.0, -1.02),
         Pos::new(HPos::Center, VPos::Top),
     )?;
-    label(
-        "overhead",
-        (0.0, 0.03),
-        Pos::new(HPos::Center, VPos::Bottom),
-    )?;
-    // Ring labels centred on their rings, on a white ground so that they read over any colour.
-    for (deg, labelled) in RINGS {
-        if !labelled {
-            continue;
-        }
-        let text = format!("{deg}°");
-        let (tw, th) = area.estimate_text_size(&text, &style)?;
-        let (cx, cy) = to_px(ring_label_at(deg));
-        let (hw, hh) = (tw as i32 / 2 + 2, th as i32 / 2 + 1);
-        area.draw(&Rectangle::new(
-            [(cx - hw, cy - hh), (cx + hw, cy + hh)],
-            WHITE.mix(0.85).filled(),
-        ))?;
-        area.draw(&Text::new(
-            text,
-            (cx, cy),
-            style.pos(Pos::new(HPos::Center, VPos::Center)),
-        ))?;
-    }
-    Ok(())
+    // No text inside the disk (the field shows whole): the captions say where overhead is
+    // and which elevations the rings mark.
+    Ok((top.max(0) as u32, bottom.max(0) as u32))
 }
 
 #[cfg(test)]
@@ -590,11 +575,14 @@ mod tests {
     /// from its SVG:
     /// - the rings lie where the azimuthal equidistant projection puts them, at (90° − el)/90°
     ///   of the horizon's radius (the orthographic view had the 30° ring at cos 30° = 0.87);
-    /// - each ring label is centred on its own ring;
+    /// - each inner ring lies on a white halo of its own radius, wider than the ring, so that
+    ///   it shows on dark colours (issue 35);
+    /// - no text lies inside the disk (ring labels and "overhead" covered the field, and a ring
+    ///   crossed "overhead"), and the disk's top and bottom rows are returned;
     /// - the heat map is one RGBA image of at least 4 pixels per unit, transparent outside the
     ///   disk (nothing bleeds past the horizon ring) and opaque inside it.
     #[test]
-    fn hemisphere_rings_labels_and_raster_by_the_projection() {
+    fn hemisphere_rings_halos_and_raster_by_the_projection() {
         let n = 12;
         let grid = PolarGrid {
             elev_edges: (0..=n).map(|i| FRAC_PI_2 * i as f64 / n as f64).collect(),
@@ -604,63 +592,71 @@ mod tests {
             values: (0..2 * n * n).map(|k| Some(1.0 + k as f64)).collect(),
         };
         let scale = ColourScale::smooth(Axis::linear("v", 1.0, (2 * n * n) as f64));
+        let mut rows = (0, 0);
         let svg = draw_svg((300, 330), |area| {
-            draw_hemisphere(area, "t", &grid, &scale).unwrap();
+            rows = draw_hemisphere(area, "t", &grid, &scale).unwrap();
         });
         let lines: Vec<&str> = svg.lines().collect();
-        // The rings: closed polylines of many points; centre and radius of each.
-        let mut rings: Vec<((f64, f64), f64)> = lines
-            .iter()
-            .filter(|l| l.starts_with("<polyline"))
-            .filter_map(|l| {
-                let at = l.find("points=\"")? + 8;
-                let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
-                    .split_whitespace()
-                    .filter_map(|p| {
-                        let (x, y) = p.split_once(',')?;
-                        Some((x.parse().ok()?, y.parse().ok()?))
+        // The circles: closed polylines of many points; centre, radius and width of each, the
+        // white halos apart from the dark rings.
+        let circles = |white: bool| -> Vec<((f64, f64), f64, f64)> {
+            let mut v: Vec<((f64, f64), f64, f64)> = lines
+                .iter()
+                .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#FFFFFF\"") == white)
+                .filter_map(|l| {
+                    let at = l.find("points=\"")? + 8;
+                    let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
+                        .split_whitespace()
+                        .filter_map(|p| {
+                            let (x, y) = p.split_once(',')?;
+                            Some((x.parse().ok()?, y.parse().ok()?))
+                        })
+                        .collect();
+                    (pts.len() > 100).then(|| {
+                        let k = pts.len() as f64;
+                        let c = (
+                            pts.iter().map(|p| p.0).sum::<f64>() / k,
+                            pts.iter().map(|p| p.1).sum::<f64>() / k,
+                        );
+                        let r = pts
+                            .iter()
+                            .map(|p| (p.0 - c.0).hypot(p.1 - c.1))
+                            .sum::<f64>()
+                            / k;
+                        (c, r, attr(l, "stroke-width").unwrap_or(1.0))
                     })
-                    .collect();
-                (pts.len() > 100).then(|| {
-                    let k = pts.len() as f64;
-                    let c = (
-                        pts.iter().map(|p| p.0).sum::<f64>() / k,
-                        pts.iter().map(|p| p.1).sum::<f64>() / k,
-                    );
-                    let r = pts
-                        .iter()
-                        .map(|p| (p.0 - c.0).hypot(p.1 - c.1))
-                        .sum::<f64>()
-                        / k;
-                    (c, r)
                 })
-            })
-            .collect();
-        rings.sort_by(|a, b| b.1.total_cmp(&a.1));
+                .collect();
+            v.sort_by(|a, b| b.1.total_cmp(&a.1));
+            v
+        };
+        let rings = circles(false);
         assert_eq!(rings.len(), RINGS.len());
-        let (centre, horizon) = rings[0];
-        for (&(deg, _), &(_, r)) in RINGS.iter().zip(&rings) {
+        let (centre, horizon, _) = rings[0];
+        for (&(deg, _), &(_, r, _)) in RINGS.iter().zip(&rings) {
             let want = horizon * (90.0 - deg) / 90.0;
             assert!((r - want).abs() < 0.6, "{deg}° ring at {r}, want {want}");
         }
-        // The ring labels: centred vertically and horizontally on their ring.
-        for (deg, labelled) in RINGS {
-            let text = format!(">{deg}°</text>");
-            let el = lines
-                .iter()
-                .find(|l| l.starts_with("<text") && visible(l) == visible(&text));
-            assert_eq!(el.is_some(), labelled, "{deg}°");
-            if let Some(el) = el {
-                assert!(el.contains("dy=\"0.5ex\"") && el.contains("text-anchor=\"middle\""));
-                let (x, y) = (attr(el, "x").unwrap(), attr(el, "y").unwrap());
-                let r = (x - centre.0).hypot(y - centre.1);
-                let want = horizon * (90.0 - deg) / 90.0;
-                assert!(
-                    (r - want).abs() < 1.0,
-                    "{deg}° label at {r}, ring at {want}"
-                );
-            }
+        let halos = circles(true);
+        assert_eq!(halos.len(), RINGS.len() - 1, "a halo under each inner ring");
+        for (h, ring) in halos.iter().zip(&rings[1..]) {
+            assert!(
+                (h.1 - ring.1).abs() < 1e-6 && h.2 > ring.2,
+                "{h:?} {ring:?}"
+            );
         }
+        for l in lines.iter().filter(|l| l.starts_with("<text")) {
+            let (x, y) = (attr(l, "x").unwrap(), attr(l, "y").unwrap());
+            let r = (x - centre.0).hypot(y - centre.1);
+            assert!(
+                r > horizon,
+                "{} at {r} inside the disk ({horizon})",
+                visible(l)
+            );
+        }
+        let (top, bottom) = (f64::from(rows.0), f64::from(rows.1));
+        assert!((top - (centre.1 - horizon)).abs() <= 1.0, "{rows:?}");
+        assert!((bottom - (centre.1 + horizon)).abs() <= 1.0, "{rows:?}");
         // The heat map: one RGBA image, dense, clipped to the disk.
         let images = embedded_images(&svg);
         assert_eq!(images.len(), 1);
