@@ -1,8 +1,10 @@
 //! Lloyd, Yoon, Tuft, Manocha 2005, *Subdivided Shadow Maps*: Fig 4 and Fig 7.
 
 use super::chart::{fmt_times_ten, linspace, Axis, Charts, LineChart, Series, PALETTE};
-use super::Fail;
+use super::{Column, Fail, Figure};
 use crate::analytic::subdivided::{distribution_g, g_min, n_from_xi, subdivided_max_error};
+use plotters::coord::Shift;
+use plotters::prelude::{DrawingArea, DrawingBackend};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 
 /// α of Fig 4 (the paper does not print it).
@@ -14,13 +16,14 @@ fn fmt_signed(v: f64) -> String {
 }
 
 /// Fig 4: the error distribution g(z) over z ∈ [1, α] for n chosen by ξ = 1, ½, 0, −½, −1.
-pub(super) fn fig4() -> Result<Charts, Fail> {
+pub(super) fn fig4() -> Result<Tall, Fail> {
     let alpha = FIG4_ALPHA;
     let zs = linspace(1.0, alpha, 200);
     let mut c = LineChart::new(
         "",
         Axis::linear("depth z (near plane 1, far plane α)", 1.0, alpha),
-        Axis::linear("error distribution g(z)", 0.0, 1.05),
+        // A tick every quarter.
+        Axis::every("error distribution g(z)", 0.0, 1.05, 0.0, 0.25),
     );
     c.legend = SeriesLabelPosition::UpperMiddle;
     for (i, xi) in [1.0, 0.5, 0.0, -0.5, -1.0].into_iter().enumerate() {
@@ -43,30 +46,54 @@ pub(super) fn fig4() -> Result<Charts, Fail> {
     s.label = None;
     s.width = 1;
     c.series.push(s);
-    Ok(Charts {
-        size: (520, 500),
-        title: "Error distribution function g for several warp distances n".into(),
-        caption: vec![format!(
-            "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), α = {alpha}: g for the n of ξ = 1 (PSM), ½, 0 \
-             (LiSPSM, n = 1 + √α), −½ and −1 (the uniform map, n = ∞). Dotted: the least maximum \
-             g_0 = 1/√α = {g0:.3}. The maximum of g is on the near plane for ξ ≤ 0 and on the far \
-             plane for ξ > 0 (§3.2 prints these swapped)."
-        )],
-        charts: vec![c],
-    })
+    Ok(Tall(
+        Charts {
+            size: (520, 500),
+            title: "Error distribution function g for several warp distances n".into(),
+            caption: vec![format!(
+                "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), α\u{a0}=\u{a0}{alpha}: g for the n of \
+                 ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM, n\u{a0}=\u{a0}1\u{a0}+\u{a0}√α), −½ and \
+                 −1 (the uniform map, n\u{a0}=\u{a0}∞). Dotted: the least maximum \
+                 g_0\u{a0}=\u{a0}1/√α\u{a0}=\u{a0}{g0:.3}. The maximum of g is on the near \
+                 plane for ξ\u{a0}≤\u{a0}0 and on the far plane for ξ\u{a0}>\u{a0}0."
+            )],
+            charts: vec![c],
+        },
+        640,
+    ))
+}
+
+/// A figure of one chart whose one-column layout is `.1` units tall: about as tall as in two
+/// columns, so that its direct labels keep the room they have there (Fig 4's five and Fig 7's
+/// eight line-end labels covered other lines in a chart 290 units tall).
+pub(super) struct Tall(pub(super) Charts, u32);
+
+impl Figure for Tall {
+    fn size(&self) -> (u32, u32) {
+        self.0.size
+    }
+
+    fn single_size(&self) -> Option<(u32, u32)> {
+        Some((Column::Single.width(), self.1))
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        self.0.draw(root)
+    }
 }
 
 /// Fig 7: the maximum error with k face subdivisions (Eq 7), divided by its value at k = 1, for
 /// several α; ξ = 0 (solid) and |ξ| = 1 (dashed), on a logarithmic axis.
-pub(super) fn fig7() -> Result<Charts, Fail> {
+pub(super) fn fig7() -> Result<Tall, Fail> {
     let ks: Vec<usize> = (1..=10).collect();
     let theta = 30f64.to_radians();
     let ratio = |alpha: f64, k: usize, xi: f64| -> Result<f64, crate::Error> {
         Ok(subdivided_max_error(alpha, k, xi, theta, 1.0, 1.0)?
             / subdivided_max_error(alpha, 1, xi, theta, 1.0, 1.0)?)
     };
+    // No subtitle: the labels and the caption say which line is which ξ.
     let mut c = LineChart::new(
-        "solid: ξ = 0, dashed: |ξ| = 1",
+        "",
         // A tick at every k (the paper's k = 1 … 10).
         Axis::every("number of face subdivisions k", 1.0, 10.0, 1.0, 1.0),
         // Up to 2, so that the top curve's label fits above it (the curves are too close for a
@@ -86,21 +113,9 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
             } else {
                 format!("α = {}, ξ = 0", fmt_times_ten(alpha))
             };
-            // Labelled directly (a legend covered the dashed curves), preferably the solid ones
-            // near k = 10 and the dashed ones near k = 6; each label goes where it covers no
-            // other curve (chart::place_label).
-            // α = 100, ξ = 0 at k = 5 (at k = 10 its box covered its own line and marker) and
-            // α = 10, |ξ| = 1 at k = 7, away from k ≤ 3 where every curve meets (figure review
-            // 2: there its label named no line).
-            let at = match (i, dashed) {
-                (1, false) => 5.0,
-                (0, true) => 7.0,
-                (_, true) => 6.0,
-                (_, false) => 10.0,
-            };
-            let s = Series::line(label, pts, PALETTE[i])
-                .with_markers()
-                .direct_at(at);
+            // Labelled directly at the line's end, k = 10 (a legend covered the dashed
+            // curves; labels along the lines named none where every curve meets).
+            let s = Series::line(label, pts, PALETTE[i]).with_markers().direct();
             c.series.push(if dashed { s.dashed() } else { s });
         }
     }
@@ -111,22 +126,22 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     // The ξ = 0 gain as k → ∞: m(k)/m(1) = k(α^{1/k} − 1)α^{1/2 − 1/(2k)}/(α − 1) (Eq 7) tends to
     // √α ln α/(α − 1), so the gain tends to its inverse.
     let g0_inf = (alpha - 1.0) / (alpha.sqrt() * alpha.ln());
-    let (lo, hi) = (alphas[0], alphas[alphas.len() - 1]);
-    Ok(Charts {
-        size: (520, 620),
-        title: "Maximum error against the number of face subdivisions".into(),
-        caption: vec![format!(
-            "Lloyd et al. 2005, Fig. 7 (Eq 7): the maximum error with k self-similar face \
-                 subdivisions over its value at k = 1, for α = {} to {}; solid: ξ = 0, dashed: \
-                 |ξ| = 1. Most of the reduction comes with 2 or 3 subdivisions. The report's \
-                 \"nearly 5 times\" at α = {alpha} (its Fig. 9) needs |ξ| = 1: {g1_2:.1}× at \
-                 k = 2; with ξ = 0 the gain is {g0_2:.2}× at k = 2 and at most \
-                 (α − 1)/(√α ln α) = {g0_inf:.2}×.",
-            fmt_times_ten(lo),
-            fmt_times_ten(hi)
-        )],
-        charts: vec![c],
-    })
+    Ok(Tall(
+        Charts {
+            size: (520, 620),
+            title: "Maximum error against the number of face subdivisions".into(),
+            caption: vec![format!(
+                "Lloyd et al. 2005, Fig. 7 (Eq 7): the maximum error with k self-similar face \
+             subdivisions over its value at k\u{a0}=\u{a0}1; solid: ξ\u{a0}=\u{a0}0, dashed: \
+             |ξ|\u{a0}=\u{a0}1. The report's \"nearly 5 times\" at α\u{a0}=\u{a0}{alpha} \
+             (its Fig. 9) needs |ξ|\u{a0}=\u{a0}1: {g1_2:.1}× at k\u{a0}=\u{a0}2; \
+             ξ\u{a0}=\u{a0}0 gives {g0_2:.2}×, and at most \
+             (α\u{a0}−\u{a0}1)/(√α\u{a0}ln\u{a0}α)\u{a0}=\u{a0}{g0_inf:.2}×."
+            )],
+            charts: vec![c],
+        },
+        780,
+    ))
 }
 
 #[cfg(test)]
@@ -137,7 +152,7 @@ mod tests {
     /// both by hand from Eq 3.
     #[test]
     fn fig4_curves_by_hand() {
-        let fig = fig4().map_err(|e| e.named("lloyd2005-fig4")).unwrap();
+        let fig = fig4().map_err(|e| e.named("lloyd2005-fig4")).unwrap().0;
         let s = &fig.charts[0].series;
         let g0 = 1.0 / FIG4_ALPHA.sqrt();
         assert!((s[2].points[0].1 - g0).abs() < 1e-12);
@@ -151,7 +166,7 @@ mod tests {
     /// at α = 100, k = 2: 2 · 9 · 10^{1/2}/99 = 0.5750.
     #[test]
     fn fig7_ratio_by_hand() {
-        let fig = fig7().map_err(|e| e.named("lloyd2005-fig7")).unwrap();
+        let fig = fig7().map_err(|e| e.named("lloyd2005-fig7")).unwrap().0;
         let alpha100 = &fig.charts[0].series[2].points;
         let want = 2.0 * 9.0 * 10f64.sqrt() / 99.0;
         assert!((alpha100[1].1 - want).abs() < 1e-12, "{}", alpha100[1].1);
@@ -161,63 +176,85 @@ mod tests {
         let xi1 = &fig.charts[0].series[3].points;
         assert!((xi1[1].1 - 18.0 / 99.0).abs() < 1e-12, "{}", xi1[1].1);
         assert!(fig.charts[0].x.max <= 10.0, "no empty k > 10 area");
-        assert!(
-            fig.caption[0].contains("5.5× at k = 2"),
-            "{}",
-            fig.caption[0]
-        );
-        assert!(
-            fig.caption[0].contains("1.74× at k = 2"),
-            "{}",
-            fig.caption[0]
-        );
+        // Formulas keep their spaces unbroken (no-break spaces): "|ξ| =⏎1" broke a line.
+        let caption = &fig.caption[0];
+        assert!(caption.contains("5.5× at k\u{a0}=\u{a0}2"), "{caption}");
+        assert!(caption.contains("gives 1.74×"), "{caption}");
+        assert!(caption.contains("|ξ|\u{a0}=\u{a0}1"), "{caption}");
     }
 
-    /// Fig 7 labels its eight curves directly (issue 25: the legend covered the dashed curves):
-    /// every label is on its curve, and labels at the same k lie at least 0.2 decade apart
-    /// (the text is about 0.1 decade high), so none covers another.
+    /// Fig 7 labels each of its eight lines at the line's end, k = 10 (issue 35 item 9; the
+    /// labels were spread along the lines, where they named none near k ≤ 3), in both
+    /// layouts: read back from the SVG, every label ends within 12 units of the plot's right
+    /// edge (the largest x of any line), and the labels run top to bottom in the order of the
+    /// lines' values at k = 10 (Eq 7, found here from the series' own last points), so that
+    /// each sits by its own line's end.
     #[test]
-    fn fig7_direct_labels_stay_apart() {
+    fn fig7_labels_sit_at_the_line_ends() {
+        use super::super::chart::read_svg::{attr, draw_svg, visible};
+        use super::super::chart::with_page;
         let fig = fig7().map_err(|e| e.named("lloyd2005-fig7")).unwrap();
-        let mut at: Vec<(f64, f64)> = Vec::new();
-        for s in &fig.charts[0].series {
-            assert!(s.direct && s.label.is_some());
-            let x = s.direct_at.unwrap();
-            let y = s.points.iter().find(|p| p.0 == x).unwrap().1;
-            at.push((x, y.log10()));
-        }
-        for (i, a) in at.iter().enumerate() {
-            for b in &at[..i] {
-                assert!(a.0 != b.0 || (a.1 - b.1).abs() > 0.2, "{a:?} {b:?}");
+        let series = &fig.0.charts[0].series;
+        let mut by_end: Vec<(&str, f64)> = series
+            .iter()
+            .map(|s| (s.label.as_deref().unwrap(), s.points.last().unwrap().1))
+            .collect();
+        by_end.sort_by(|a, b| b.1.total_cmp(&a.1));
+        // As the SVG reads: no spaces, superscript digits as digits.
+        let plain = |t: &str| -> String {
+            t.chars()
+                .filter(|c| *c != ' ')
+                .map(|c| match "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().position(|s| s == c) {
+                    Some(d) => char::from(b'0' + d as u8),
+                    None => c,
+                })
+                .collect()
+        };
+        let want: Vec<String> = by_end.iter().map(|l| plain(l.0)).collect();
+        for (column, size) in [
+            (Column::Double, fig.size()),
+            (Column::Single, fig.single_size().unwrap()),
+        ] {
+            let svg = with_page(false, column, || {
+                draw_svg(size, |area| fig.draw(area).unwrap())
+            });
+            let right = svg
+                .lines()
+                .filter(|l| l.starts_with("<polyline"))
+                .flat_map(|l| {
+                    let at = l.find("points=\"").unwrap() + 8;
+                    l[at..at + l[at..].find('"').unwrap()]
+                        .split_whitespace()
+                        .map(|p| p.split_once(',').unwrap().0.parse::<f64>().unwrap())
+                        .collect::<Vec<_>>()
+                })
+                .fold(f64::NEG_INFINITY, f64::max);
+            let mut labels: Vec<(String, f64, f64)> = svg
+                .lines()
+                .filter(|l| l.starts_with("<text") && visible(l).starts_with("α ="))
+                .map(|l| {
+                    let (x, y) = (attr(l, "x").unwrap(), attr(l, "y").unwrap());
+                    assert!(l.contains("text-anchor=\"end\""), "{l}");
+                    (plain(&visible(l)), x, y)
+                })
+                .collect();
+            assert_eq!(labels.len(), 8, "{column:?}");
+            for (t, x, _) in &labels {
+                assert!(
+                    x <= &right && right - x <= 12.0,
+                    "{column:?}: {t} ends at {x}, line at {right}"
+                );
             }
+            labels.sort_by(|a, b| a.2.total_cmp(&b.2));
+            let got: Vec<String> = labels.into_iter().map(|l| l.0).collect();
+            assert_eq!(got, want, "{column:?}");
         }
     }
 
-    /// Direct labels at the points chosen for them (figure review 2): α = 100, ξ = 0 at k = 5
-    /// (at k = 10 its box covered its own line) and α = 10, |ξ| = 1 at k = 7 (at k = 6 it was
-    /// placed at k ≈ 2, where every curve meets), each with at least 0.19 decade free above its
-    /// line (Eq 7: 0.23 and 0.20; the chart is 700 units tall so that a label fits there); and
     /// Fig 4's PSM curve is "n = 1" (ξ = 1 gives n = 1 exactly, Eq 4), not "n = 1.000".
     #[test]
-    fn labels_name_their_own_lines() {
-        let fig = fig7().map_err(|e| e.named("lloyd2005-fig7")).unwrap();
-        let series = &fig.charts[0].series;
-        let find = |l: &str| {
-            series
-                .iter()
-                .find(|s| s.label.as_deref() == Some(l))
-                .unwrap()
-        };
-        for (label, k) in [("α = 100, ξ = 0", 5.0), ("α = 10, |ξ| = 1", 7.0)] {
-            let s = find(label);
-            assert_eq!(s.direct_at, Some(k), "{label}");
-            let y = s.points.iter().find(|p| p.0 == k).unwrap().1.log10();
-            for o in series.iter().filter(|o| o.label != s.label) {
-                let yo = o.points.iter().find(|p| p.0 == k).unwrap().1.log10();
-                assert!(yo < y || yo > y + 0.19, "{label} near {:?}", o.label);
-            }
-        }
-        let f4 = fig4().map_err(|e| e.named("lloyd2005-fig4")).unwrap();
+    fn fig4_names_the_psm_curve_n_1() {
+        let f4 = fig4().map_err(|e| e.named("lloyd2005-fig4")).unwrap().0;
         let labels: Vec<&str> = f4.charts[0]
             .series
             .iter()

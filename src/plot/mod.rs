@@ -140,8 +140,8 @@ pub const FIGURES: &[&str] = &[
     "lloyd2005-fig8",
 ];
 
-/// The figures that have a single-column layout ([`Column::Single`]): line charts, their panels
-/// stacked (lloyd2005-fig7's and lloyd2006-fig10's direct labels do not yet find room there). The others are refused in one column with [`PlotError::InvalidOption`].
+/// The figures that have a single-column layout ([`Column::Single`]), their panels stacked
+/// (lloyd2006-fig10's direct labels do not yet find room there). The others are refused in one column with [`PlotError::InvalidOption`].
 pub const SINGLE_COLUMN: &[&str] = &[
     "lloyd2005-fig4",
     "lloyd2006-fig5",
@@ -155,6 +155,7 @@ pub const SINGLE_COLUMN: &[&str] = &[
     "martin-tan-fig3",
     "lloyd2006-fig7",
     "martin-tan-fig6",
+    "lloyd2005-fig7",
 ];
 
 /// What went wrong while rendering a figure.
