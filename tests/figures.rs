@@ -969,8 +969,7 @@ fn zhang_fig3_landscape_with_bars_under_blocks() {
         let block = at(&|_, v| {
             v.starts_with(&format!("({}) {q}", ['a', 'b', 'c'][k])) && (k == 2 || !v.contains('×'))
         });
-        // log₅ (the SVG writes its ₅ as a lowered 5: Liberation Sans has no ₅).
-        let bar = at(&|a, v| !a.contains("rotate(") && v == format!("{q} (log5)"));
+        let bar = at(&|a, v| !a.contains("rotate(") && v == format!("{q} (log scale)"));
         assert_eq!((block.len(), bar.len()), (1, 1), "{q}: {block:?} {bar:?}");
         assert!(
             (block[0].0 - bar[0].0).abs() < 40.0 && bar[0].1 > block[0].1,

@@ -156,6 +156,7 @@ pub const SINGLE_COLUMN: &[&str] = &[
     "lloyd2006-fig7",
     "martin-tan-fig6",
     "lloyd2005-fig7",
+    "zhang-fig3",
 ];
 
 /// What went wrong while rendering a figure.

@@ -8,10 +8,10 @@
 //! [0, 1]; unit resolutions).
 
 use super::chart::{
-    build_chart_styled, colour_bar_ticks, draw_bar_bands, frame, Axis, ChartStyle, ColourScale,
+    build_chart_styled, column, draw_bar_bands, fmt_plain, frame, Axis, ChartStyle, ColourScale,
     Grid, Ticked, COLOUR_BAR_TICK, FONT, PANEL_TITLE,
 };
-use super::{Fail, Figure};
+use super::{Column, Fail, Figure};
 use crate::maps::{warp, WarpRule};
 use crate::measure::{point_error, ShadowMap};
 use crate::{NPrime, Resolutions, ViewFrustum};
@@ -124,7 +124,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         .iter()
         .zip(ranges)
         .map(|(q, (lo, hi))| {
-            ColourScale::smooth(Axis::log_base(format!("{q} (log₅)"), lo, hi, 5.0))
+            ColourScale::smooth(Axis::log_base(format!("{q} (log scale)"), lo, hi, 5.0))
         })
         .collect();
     // LiSPSM's λ (its built matrix's n′) per angle θ, for the caption.
@@ -134,10 +134,13 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         .map(|a| a.trim_start_matches("θ = "))
         .collect();
     let caption = vec![format!(
-        "Zhang et al. 2009, Fig. 3: E_p = 2 m_z and E_q = 2 m_x measured on each scheme's matrix \
-         in the frustum's vertical plane, n = {n}, f = {f}, φ = π/6, the light above and in front \
-         at θ = {} to the view. LiSPSM: λ = (n + √(fn))/sin θ = {}; TSM: the 80 % rule, focus \
-         δ = {TSM_FOCUS}. Unlike the paper, a log₅ colour bar per quantity; no scene insets.",
+        "Zhang et al. 2009, Fig. 3: E_p\u{a0}=\u{a0}2\u{a0}m_z and E_q\u{a0}=\u{a0}2\u{a0}m_x \
+         measured in the frustum's vertical plane (z depth, y height); n\u{a0}=\u{a0}{n}, \
+         f\u{a0}=\u{a0}{f}, φ\u{a0}=\u{a0}π/6; light above and in front at \
+         θ\u{a0}=\u{a0}{}. LiSPSM: \
+         λ\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}θ\u{a0}=\u{a0}{}; TSM: 80\u{a0}% rule, \
+         focus δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper, a colour bar per quantity (ticks at \
+         powers of 5) and no scene insets.",
         angles.join(", "),
         lispsm.join(", "),
     )];
@@ -173,8 +176,8 @@ fn fmt_lambda(n: NPrime) -> String {
 /// The layout, in pixels: the row labels' column (θ, left of the first panel), the z labels'
 /// row under the last row of panels, the gaps between panels and between blocks, each block's
 /// title and the schemes' headings, and the horizontal colour bar under each block.
-const ROW_LABEL: u32 = 20;
-const X_LABELS: u32 = 30;
+const ROW_LABEL: u32 = 46;
+const X_LABELS: u32 = 33;
 const GAP: u32 = 4;
 const BLOCK_GAP: u32 = 16;
 const BLOCK_TITLE: u32 = 22;
@@ -182,32 +185,62 @@ const HEADINGS: u32 = 18;
 const BAR: u32 = 52;
 /// The colour bar's margins at its ends (room for the end labels).
 const BAR_MARGIN: u32 = 14;
+/// One column: the width of a vertical colour bar's column, and of its bar alone.
+const VBAR: u32 = 86;
+const VBAR_WIDTH: u32 = 14;
 /// A panel's height over its width: the z range [−5, 105] across and y over ±0.535 of it up
 /// (the frustum's far plane reaches ±57.7).
 const PANEL_RATIO: f64 = 1.07;
 
 /// The page's size: three blocks of 3 × 3 panels side by side (landscape drawing), the caption
 /// under them.
-pub(super) const SIZE: (u32, u32) = (520, 470);
+pub(super) const SIZE: (u32, u32) = (520, 452);
 
-/// Draws a horizontal colour bar for `scale` into `area`: the bands, an outline, tick marks
-/// under it with the labels of [`colour_bar_ticks`] (its ends and the decades), thinned so that
-/// no two labels touch, and the quantity's name under them.
+/// The labelled ticks of a base-5 colour bar (axis space, that is log₅ of the value) with their
+/// labels, all plain numbers: both ends of its range to three significant digits, and every
+/// power of 5 (0.04, 0.2, 1, 5, 25, …) at least 7 % of the bar from either end.
+fn bar_ticks(axis: &Axis) -> Vec<(f64, String)> {
+    let (lo, hi) = axis.range();
+    let clear = 0.07 * (hi - lo);
+    let three = |v: f64| {
+        let p = 10f64.powf(v.log10().floor() - 2.0);
+        fmt_plain((v / p).round() * p)
+    };
+    let mut ticks = vec![(lo, three(axis.min))];
+    let first = lo.ceil() as i32;
+    let last = hi.floor() as i32;
+    for e in first..=last {
+        let a = f64::from(e);
+        if a - lo >= clear && hi - a >= clear {
+            ticks.push((a, fmt_plain(5f64.powi(e))));
+        }
+    }
+    ticks.push((hi, three(axis.max)));
+    ticks
+}
+
+/// Draws a colour bar for `scale` into `area`, horizontal (its labels under it) or
+/// `vertical` (its labels right of it, low values at the bottom): the bands, an outline, tick
+/// marks with the labels of [`bar_ticks`] (its ends and the powers of 5), thinned so that no
+/// two labels touch, and the quantity's name beyond them.
 fn draw_bar<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     scale: &ColourScale,
+    vertical: bool,
 ) -> Result<(), Fail> {
     let (lo, hi) = scale.axis.range();
-    let all = colour_bar_ticks(&scale.axis);
-    let (w, _) = area.dim_in_pixel();
-    let span = f64::from(w - 2 * BAR_MARGIN);
+    let all = bar_ticks(&scale.axis);
+    let (w, h) = area.dim_in_pixel();
+    let span = f64::from(if vertical { h } else { w } - 2 * BAR_MARGIN);
     let px = |a: f64| f64::from(BAR_MARGIN) + (a - lo) / (hi - lo) * span;
     let style = TextStyle::from((FONT, 13).into_font());
+    // Half a label's extent along the bar: its width across a horizontal bar, its height up
+    // a vertical one.
     let half = |t: &str| -> Result<f64, Fail> {
-        let (tw, _) = area
+        let (tw, th) = area
             .estimate_text_size(t, &style)
             .map_err(|e| Fail::Draw(e.to_string()))?;
-        Ok(0.5 * f64::from(tw))
+        Ok(0.5 * f64::from(if vertical { th } else { tw }))
     };
     // The ends first, then each decade that keeps 6 pixels from the labels kept so far.
     let mut kept: Vec<(f64, String, f64)> = Vec::new();
@@ -226,38 +259,64 @@ fn draw_bar<DB: DrawingBackend>(
         .filter(|(a, _)| kept.iter().any(|k| (k.0 - px(*a)).abs() < 1e-9))
         .cloned()
         .collect();
-    let xb: Vec<f64> = ticks.iter().map(|t| t.0).collect();
-    let mut chart = ChartBuilder::on(area)
-        .margin_left(BAR_MARGIN)
-        .margin_right(BAR_MARGIN)
-        .x_label_area_size(BAR - 14)
-        .y_label_area_size(0)
-        .build_cartesian_2d(
-            Ticked::new(lo, hi, xb, vec![]),
-            Ticked::new(0.0, 1.0, vec![], vec![]),
-        )?;
+    let at: Vec<f64> = ticks.iter().map(|t| t.0).collect();
     // The labels of exactly the ticks handed to the axis.
-    let xf = |v: &f64| {
+    let label = |v: &f64| {
         ticks
             .iter()
             .find(|t| (t.0 - v).abs() < 1e-9)
             .map(|t| t.1.clone())
             .unwrap_or_default()
     };
-    chart
-        .configure_mesh()
-        .disable_mesh()
-        .disable_y_axis()
-        .x_desc(scale.axis.label.as_str())
-        .x_label_formatter(&xf)
-        .set_tick_mark_size(LabelAreaPosition::Bottom, COLOUR_BAR_TICK)
+    let mut builder = ChartBuilder::on(area);
+    let mut chart = if vertical {
+        builder
+            .margin_top(BAR_MARGIN)
+            .margin_bottom(BAR_MARGIN)
+            .margin_right(4)
+            .x_label_area_size(0)
+            .y_label_area_size(0)
+            .right_y_label_area_size(w.saturating_sub(VBAR_WIDTH))
+            .build_cartesian_2d(
+                Ticked::new(0.0, 1.0, vec![], vec![]),
+                Ticked::new(lo, hi, at, vec![]),
+            )?
+    } else {
+        builder
+            .margin_left(BAR_MARGIN)
+            .margin_right(BAR_MARGIN)
+            .x_label_area_size(BAR - 14)
+            .y_label_area_size(0)
+            .build_cartesian_2d(
+                Ticked::new(lo, hi, at, vec![]),
+                Ticked::new(0.0, 1.0, vec![], vec![]),
+            )?
+    };
+    let mut mesh = chart.configure_mesh();
+    mesh.disable_mesh()
         .axis_desc_style((FONT, 13))
-        .label_style((FONT, 13))
-        .draw()?;
-    // The bands, left to right, as one raster (no seams).
-    draw_bar_bands(&chart, scale, false)?;
+        .label_style((FONT, 13));
+    if vertical {
+        mesh.disable_x_axis()
+            .y_desc(scale.axis.label.as_str())
+            .y_label_formatter(&label)
+            .set_tick_mark_size(LabelAreaPosition::Right, COLOUR_BAR_TICK);
+    } else {
+        mesh.disable_y_axis()
+            .x_desc(scale.axis.label.as_str())
+            .x_label_formatter(&label)
+            .set_tick_mark_size(LabelAreaPosition::Bottom, COLOUR_BAR_TICK);
+    }
+    mesh.draw()?;
+    // The bands, low to high, as one raster (no seams).
+    draw_bar_bands(&chart, scale, vertical)?;
+    let outline = if vertical {
+        [(0.0, lo), (1.0, hi)]
+    } else {
+        [(lo, 0.0), (hi, 1.0)]
+    };
     chart.draw_series(std::iter::once(Rectangle::new(
-        [(lo, 0.0), (hi, 1.0)],
+        outline,
         RGBColor(60, 60, 60).stroke_width(1),
     )))?;
     Ok(())
@@ -268,6 +327,11 @@ impl Figure for Fig3 {
         SIZE
     }
 
+    /// One column: the three blocks stacked.
+    fn single_size(&self) -> Option<(u32, u32)> {
+        Some((Column::Single.width(), 800))
+    }
+
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let caption: Vec<&str> = self.caption.iter().map(String::as_str).collect();
         let body = frame(
@@ -275,44 +339,65 @@ impl Figure for Fig3 {
             "Side views of the aliasing error inside the view frustum",
             &caption,
         )?;
-        let (w, _) = body.dim_in_pixel();
-        // Three blocks side by side, one per quantity, each with its colour bar under it; in
-        // each block a row per angle θ and a column per scheme (the paper's arrangement),
-        // panels sharing their axes: θ left of each row, z labels under each block's first
-        // column.
-        let pw = (w - ROW_LABEL - 6 * GAP - 2 * BLOCK_GAP) / 9;
+        let (w, h) = body.dim_in_pixel();
+        // Two columns: three blocks side by side, one per quantity, each with its colour bar
+        // under it; one column: the blocks stacked, each bar right of its block, the schemes'
+        // headings over the first block and the z labels under the last only. In each block a
+        // row per angle θ and a column per scheme (the paper's arrangement), panels sharing
+        // their axes: θ and y left of each row, z labels under a block's first column.
+        let single = column() == Column::Single;
+        let pw = if single {
+            let across = (w - ROW_LABEL - 2 * GAP - VBAR) / 3;
+            let fixed = 3 * (BLOCK_TITLE + 2 * GAP) + HEADINGS + X_LABELS + 2 * BLOCK_GAP;
+            let down = f64::from(h.saturating_sub(fixed)) / (9.0 * PANEL_RATIO);
+            across.min(down.floor() as u32)
+        } else {
+            (w - ROW_LABEL - 6 * GAP - 2 * BLOCK_GAP) / 9
+        };
         let ph = (f64::from(pw) * PANEL_RATIO).round() as u32;
         let block_w = 3 * pw + 2 * GAP;
-        // Ticks at 0 and 100 only: "50" and "100" collided under a panel.
-        let z = Axis::every("z (eye depth)", -5.0, 105.0, 0.0, 100.0);
+        let block_h = BLOCK_TITLE + 3 * ph + 2 * GAP + BLOCK_GAP;
+        // Labels at 0 and 50 only: "50" and "100" collided under a panel, and "100", centred
+        // on the panel's right end, ran into the next panel.
+        let z = Axis::every("z (eye depth)", -5.0, 105.0, 0.0, 50.0).labelled_at(&[0.0, 50.0]);
         // No tick inside the range: the first would be at 500.
         let blank = Axis::every("", -5.0, 105.0, 500.0, 1000.0);
         let half = 0.5 * (z.max - z.min) * f64::from(ph) / f64::from(pw);
         let text = |size: u32| TextStyle::from((FONT, size).into_font());
-        let grid_top = BLOCK_TITLE + HEADINGS;
         for (q, scale) in self.scales.iter().enumerate() {
-            let bx = ROW_LABEL + q as u32 * (block_w + BLOCK_GAP);
+            let q32 = q as u32;
+            // The block's left edge and top, and the top of its panels.
+            let (bx, by) = if single {
+                (ROW_LABEL, q32 * block_h + if q > 0 { HEADINGS } else { 0 })
+            } else {
+                (ROW_LABEL + q32 * (block_w + BLOCK_GAP), 0)
+            };
+            let headings = !single || q == 0;
+            let z_labels = !single || q + 1 == self.scales.len();
+            let grid_top = by + BLOCK_TITLE + if headings { HEADINGS } else { 0 };
             body.draw(&Text::new(
                 format!(
                     "({}) {}",
                     ['a', 'b', 'c'][q],
                     ["E_p = 2 m_z", "E_q = 2 m_x", "E_p × E_q"][q]
                 ),
-                ((bx + block_w / 2) as i32, 2),
+                ((bx + block_w / 2) as i32, by as i32 + 2),
                 text(13).pos(Pos::new(HPos::Center, VPos::Top)),
             ))?;
-            for (s, name) in self.scheme_labels.iter().enumerate() {
-                let x = bx + s as u32 * (pw + GAP) + pw / 2;
-                body.draw(&Text::new(
-                    name.clone(),
-                    (x as i32, (grid_top - 2) as i32),
-                    text(13).pos(Pos::new(HPos::Center, VPos::Bottom)),
-                ))?;
+            if headings {
+                for (s, name) in self.scheme_labels.iter().enumerate() {
+                    let x = bx + s as u32 * (pw + GAP) + pw / 2;
+                    body.draw(&Text::new(
+                        name.clone(),
+                        (x as i32, (grid_top - 2) as i32),
+                        text(13).pos(Pos::new(HPos::Center, VPos::Bottom)),
+                    ))?;
+                }
             }
             for (r, row) in self.rows.iter().enumerate() {
                 for (s, scheme) in row.iter().enumerate() {
-                    let row_label = q == 0 && s == 0;
-                    let last_row = r + 1 == self.rows.len();
+                    let row_label = (single || q == 0) && s == 0;
+                    let last_row = z_labels && r + 1 == self.rows.len();
                     let x0 = bx + s as u32 * (pw + GAP) - if row_label { ROW_LABEL } else { 0 };
                     let cw = pw + if row_label { ROW_LABEL } else { 0 };
                     let ch = ph + if last_row { X_LABELS } else { 0 };
@@ -327,20 +412,20 @@ impl Figure for Fig3 {
                         desc_size: 13,
                         margin: 0,
                     };
-                    // θ as the first panel's y description; no y ticks (the frustum's
-                    // height is its depth times tan φ); z labelled under each block's first
-                    // column only.
-                    let y = Axis::every(
-                        if row_label {
-                            self.row_angles[r].as_str()
+                    // θ as the first panel's y description (in one column its value only:
+                    // "θ = 90°" is longer than a row is high), with the height y at −40, 0
+                    // and 40 (one y scale for every row; ±50 of two rows touched); z labelled
+                    // under each block's first column only.
+                    let y = if row_label {
+                        let angle = if single {
+                            self.row_angles[r].trim_start_matches("θ = ")
                         } else {
-                            ""
-                        },
-                        -half,
-                        half,
-                        500.0,
-                        1000.0,
-                    );
+                            self.row_angles[r].as_str()
+                        };
+                        Axis::every(angle, -half, half, -40.0, 40.0)
+                    } else {
+                        Axis::every("", -half, half, 500.0, 1000.0)
+                    };
                     let x = if s == 0 { &z } else { &blank };
                     let mut chart = build_chart_styled(&cell, "", x, &y, false, &style)?;
                     super::chart::draw_grid(&mut chart, &scheme[q].grid, scale)?;
@@ -356,15 +441,23 @@ impl Figure for Fig3 {
                         ],
                         RGBColor(40, 40, 40).stroke_width(1),
                     )))?;
+                    // The frame at the data's extent: depth n to f, height ± f tan φ.
                     chart.draw_series(std::iter::once(Rectangle::new(
-                        [(z.min, -half), (z.max, half)],
+                        [(n, -f * t), (f, f * t)],
                         RGBColor(150, 150, 150).stroke_width(1),
                     )))?;
                 }
             }
-            let bar_top = grid_top + 3 * ph + 2 * GAP + X_LABELS + 6;
-            let bar = body.clone().shrink((bx, bar_top), (block_w, BAR));
-            draw_bar(&bar, scale)?;
+            if single {
+                let bar = body
+                    .clone()
+                    .shrink((bx + block_w + GAP, grid_top), (VBAR, 3 * ph + 2 * GAP));
+                draw_bar(&bar, scale, true)?;
+            } else {
+                let bar_top = grid_top + 3 * ph + 2 * GAP + X_LABELS + 6;
+                let bar = body.clone().shrink((bx, bar_top), (block_w, BAR));
+                draw_bar(&bar, scale, false)?;
+            }
         }
         Ok(())
     }
@@ -386,7 +479,7 @@ mod tests {
         use super::super::chart::read_svg::{draw_svg, embedded_images};
         use super::super::chart::SMOOTH_LEVELS;
         let scale = ColourScale::smooth(Axis::log10("E", 2.0, 16400.0));
-        let svg = draw_svg((160, BAR), |area| draw_bar(area, &scale).unwrap());
+        let svg = draw_svg((160, BAR), |area| draw_bar(area, &scale, false).unwrap());
         assert!(!svg
             .lines()
             .any(|l| l.starts_with("<rect") && !l.contains("fill=\"none\"")));
@@ -402,10 +495,13 @@ mod tests {
         assert_eq!(at(w - 1), scale.level_colour(SMOOTH_LEVELS - 1));
     }
 
-    /// The z ticks under each block's first column are 0 and 100 only ("50" and "100" were
-    /// about a unit apart and collided): each block's z axis is labelled "0", "100" only.
+    /// The z ticks under each block's first column are labelled 0 and 50 only ("50" and
+    /// "100" were about a unit apart and collided, and "100", centred on the panel's right
+    /// end, ran into the next panel): each block's z axis is labelled "0", "50" only; and the
+    /// first column of each row has a y scale, −40, 0, 40 (the frustum's far plane reaches
+    /// ±100 tan 30° = ±57.7).
     #[test]
-    fn z_ticks_are_zero_and_a_hundred() {
+    fn z_ticks_are_zero_and_fifty_and_rows_have_a_y_scale() {
         use super::super::chart::read_svg::{draw_svg, texts};
         let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
         let svg = draw_svg(SIZE, |area| fig.draw(area).unwrap());
@@ -414,12 +510,34 @@ mod tests {
         let mut blocks = 0;
         for (i, t) in labels.iter().enumerate() {
             if t == "z (eye depth)" {
-                assert_eq!(labels[i + 1..i + 3], ["0", "100"], "{labels:?}");
-                assert_ne!(labels[i + 3], "100", "{labels:?}");
+                // Up to the block's colour bar: the z labels, in the first block after the
+                // last row's y labels.
+                let end = i + labels[i..]
+                    .iter()
+                    .position(|t| t.ends_with("(log scale)"))
+                    .unwrap();
+                let axis = &labels[i + 1..end];
+                assert!(axis.windows(2).any(|w| w == ["0", "50"]), "{axis:?}");
                 blocks += 1;
             }
         }
         assert_eq!(blocks, 3);
+        assert!(!labels.iter().any(|t| t == "100"), "{labels:?}");
+        for tick in ["−40", "0", "40"] {
+            let n = labels.iter().filter(|t| *t == tick).count();
+            assert!(n >= 3, "{tick}: {n} in {labels:?}");
+        }
+    }
+
+    /// The colour bars' ticks are plain numbers at powers of 5 (issue 35 item 9: they read
+    /// 5⁰, 5¹, 5²): for E over 0.028 to 128, log₅ runs from −2.22 to 3.01; the powers 5^−1
+    /// to 5² are at least 7 % of the bar (0.37) from its ends, 5^−2 = 0.04 and 5³ = 125 are
+    /// not, and the ends are written to three digits.
+    #[test]
+    fn colour_bar_ticks_are_plain_powers_of_five() {
+        let axis = Axis::log_base("E", 0.028, 128.0, 5.0);
+        let labels: Vec<String> = bar_ticks(&axis).into_iter().map(|t| t.1).collect();
+        assert_eq!(labels, ["0.028", "0.2", "1", "5", "25", "128"]);
     }
 
     #[test]
