@@ -649,7 +649,7 @@ fn martin_tan_fig3() {
     );
 }
 
-/// martin-tan-fig6 prints only its configuration.
+/// martin-tan-fig6: its configuration, and the share light exactly behind or in front gives.
 #[test]
 fn martin_tan_fig6() {
     check(
