@@ -8,41 +8,23 @@
 //! `SHADOW_ALIASING_BEVY_IMAGES=<dir>` also writes the overlay at its default opacity
 //! (`lens_bevy.png`, `lens_budget.png`), the screenshots of docs/bevy.md.
 
+mod harness;
 mod scene;
 
-use bevy::app::PluginsState;
-use bevy::camera::{Hdr, PerspectiveProjection, Projection, RenderTarget};
-use bevy::core_pipeline::tonemapping::{DebandDither, Tonemapping};
-use bevy::image::Image;
-use bevy::light::{
-    CascadeShadowConfig, Cascades, DirectionalLightShadowMap, GlobalAmbientLight,
-    NotShadowReceiver, ShadowFilteringMethod,
-};
+use bevy::camera::Hdr;
+use bevy::light::{CascadeShadowConfig, Cascades, DirectionalLightShadowMap};
 use bevy::prelude::*;
-use bevy::render::gpu_readback::{Readback, ReadbackComplete};
-use bevy::render::render_resource::{TextureFormat, TextureUsages};
 use bevy::render::view::Msaa;
 use bevy::render::RenderPlugin;
-use scene::{camera_transform, centre_size, sun_transform, SceneBox, BOXES, FAR, FOV, NEAR};
+use harness::{ray_box, Harness, H, W};
+use scene::BOXES;
 use shadow_aliasing::frame::lens::LENS_RAMP;
 use shadow_aliasing::glam::{DMat2, DMat4, DVec2, DVec3, DVec4, Mat4 as SaMat4};
-use shadow_aliasing_bevy::{Budget, CascadeMode, ErrorLens, ErrorLensMaps, ShadowAliasingPlugin};
-use std::sync::{Arc, Mutex};
+use shadow_aliasing_bevy::{Budget, CascadeMode, ErrorLens, ErrorLensMaps};
 
-const W: u32 = 640;
-const H: u32 = 360;
 const RES: usize = 2048;
 /// Sampled pixels: every STEP-th in each direction.
 const STEP: u32 = 3;
-
-type Slot = Arc<Mutex<Option<Vec<u8>>>>;
-
-struct Harness {
-    app: App,
-    light: Entity,
-    camera: Entity,
-    slot: Slot,
-}
 
 /// What a render left: the pixels and the cascades Bevy drew them with.
 struct Capture {
@@ -62,174 +44,51 @@ fn to_dmat4(m: &Mat4) -> DMat4 {
     SaMat4::from_cols_array_2d(&m.to_cols_array_2d()).as_dmat4()
 }
 
-impl Harness {
-    fn new() -> Self {
-        let mut app = App::new();
-        app.add_plugins((
-            scene::headless_plugins().set(RenderPlugin {
-                synchronous_pipeline_compilation: true,
-                ..default()
-            }),
-            ShadowAliasingPlugin,
-        ))
-        .insert_resource(DirectionalLightShadowMap { size: RES })
-        .insert_resource(GlobalAmbientLight {
-            brightness: 0.0,
-            ..default()
-        });
-        while app.plugins_state() == PluginsState::Adding {
-            bevy::tasks::tick_global_task_pools_on_main_thread();
-        }
-        app.finish();
-        app.cleanup();
-        let world = app.world_mut();
-        let mut image = Image::new_target_texture(W, H, TextureFormat::Rgba8UnormSrgb, None);
-        image.texture_descriptor.usage |= TextureUsages::COPY_SRC;
-        let target = world.resource_mut::<Assets<Image>>().add(image);
-        let material = world
-            .resource_mut::<Assets<StandardMaterial>>()
-            .add(StandardMaterial {
-                base_color: Color::srgb(0.8, 0.8, 0.8),
-                perceptual_roughness: 1.0,
-                reflectance: 0.0,
-                ..default()
-            });
-        for bx in &BOXES {
-            let (c, size) = centre_size(bx);
-            let mesh = world
-                .resource_mut::<Assets<Mesh>>()
-                .add(Cuboid::from_size(size));
-            let mut e = world.spawn((
-                Mesh3d(mesh),
-                MeshMaterial3d(material.clone()),
-                Transform::from_translation(c),
-            ));
-            if bx.pole {
-                e.insert(NotShadowReceiver);
-            }
-        }
-        let camera = world
-            .spawn((
-                Camera3d::default(),
-                Camera {
-                    clear_color: ClearColorConfig::Custom(Color::BLACK),
-                    ..default()
-                },
-                RenderTarget::Image(target.clone().into()),
-                Projection::Perspective(PerspectiveProjection {
-                    fov: FOV,
-                    aspect_ratio: W as f32 / H as f32,
-                    near: NEAR,
-                    far: FAR,
-                    ..default()
-                }),
-                Msaa::Off,
-                Tonemapping::None,
-                DebandDither::Disabled,
-                ShadowFilteringMethod::Hardware2x2,
-                camera_transform(),
-                ErrorLens {
-                    opacity: 1.0,
-                    ..default()
-                },
-            ))
-            .id();
-        let light = world
-            .spawn((
-                DirectionalLight {
-                    illuminance: 2000.0,
-                    shadow_maps_enabled: true,
-                    ..default()
-                },
-                sun_transform(),
-                CascadeMode::Measure,
-            ))
-            .id();
-        let slot: Slot = Arc::default();
-        let s = slot.clone();
-        world
-            .spawn(Readback::texture(target))
-            .observe(move |ev: On<ReadbackComplete>| {
-                *s.lock().unwrap() = Some(ev.data.clone());
-            });
-        Self {
-            app,
-            light,
-            camera,
-            slot,
-        }
-    }
-
-    /// Renders with `mode`, `msaa`, an HDR view or not and the lens at `opacity` until two
-    /// read-back frames agree.
-    fn render(&mut self, mode: &CascadeMode, msaa: Msaa, hdr: bool, opacity: f32) -> Capture {
-        {
-            let world = self.app.world_mut();
-            *world.get_mut::<CascadeMode>(self.light).unwrap() = mode.clone();
-            world.get_mut::<ErrorLens>(self.camera).unwrap().opacity = opacity;
-            *world.get_mut::<Msaa>(self.camera).unwrap() = msaa;
-            if hdr {
-                world.entity_mut(self.camera).insert(Hdr);
-            } else {
-                world.entity_mut(self.camera).remove::<Hdr>();
-            }
-        }
-        for _ in 0..3 {
-            self.app.update();
-        }
-        *self.slot.lock().unwrap() = None;
-        let mut prev: Option<Vec<u8>> = None;
-        for _ in 0..30 {
-            self.app.update();
-            let Some(d) = self.slot.lock().unwrap().take() else {
-                continue;
-            };
-            assert_eq!(d.len(), (W * H * 4) as usize, "unpadded RGBA8 rows");
-            if prev.as_ref() == Some(&d) {
-                let world = self.app.world();
-                let cascades = &world.get::<Cascades>(self.light).unwrap().cascades[&self.camera];
-                let config = world.get::<CascadeShadowConfig>(self.light).unwrap();
-                let camera = world.get::<Camera>(self.camera).unwrap();
-                let transform = world.get::<GlobalTransform>(self.camera).unwrap();
-                let clip_from_world =
-                    to_dmat4(&camera.clip_from_view()) * to_dmat4(&transform.to_matrix()).inverse();
-                return Capture {
-                    pixels: d,
-                    cascades: cascades
-                        .iter()
-                        .zip(&config.bounds)
-                        .map(|(c, &f)| (to_dmat4(&c.clip_from_world), f64::from(f)))
-                        .collect(),
-                    clip_from_world,
-                    eye: DVec3::from_array(transform.translation().as_dvec3().to_array()),
-                    forward: DVec3::from_array(transform.forward().as_dvec3().to_array()),
-                    resolution: world.resource::<DirectionalLightShadowMap>().size as f64,
-                    maps: world.get::<ErrorLensMaps>(self.camera).unwrap().clone(),
-                };
-            }
-            prev = Some(d);
-        }
-        panic!("no two consecutive read-back frames agreed within 30 frames");
-    }
+/// The test scene with the lens on the camera at `RES`² maps.
+fn harness() -> Harness {
+    let mut h = Harness::new(RenderPlugin::default(), RES);
+    h.app.world_mut().entity_mut(h.camera).insert(ErrorLens {
+        opacity: 1.0,
+        ..default()
+    });
+    h
 }
 
-fn ray_box(o: DVec3, d: DVec3, b: &SceneBox) -> Option<(f64, usize, f64)> {
-    let (mut t0, mut t1, mut axis, mut sign) = (f64::NEG_INFINITY, f64::INFINITY, 0, 0.0);
-    for k in 0..3 {
-        if d[k].abs() < 1e-300 {
-            if o[k] < b.min[k] || o[k] > b.max[k] {
-                return None;
-            }
-            continue;
+/// Renders with `mode`, `msaa`, an HDR view or not and the lens at `opacity` until two
+/// read-back frames agree.
+fn render(h: &mut Harness, mode: &CascadeMode, msaa: Msaa, hdr: bool, opacity: f32) -> Capture {
+    {
+        let world = h.app.world_mut();
+        *world.get_mut::<CascadeMode>(h.light).unwrap() = mode.clone();
+        world.get_mut::<ErrorLens>(h.camera).unwrap().opacity = opacity;
+        *world.get_mut::<Msaa>(h.camera).unwrap() = msaa;
+        if hdr {
+            world.entity_mut(h.camera).insert(Hdr);
+        } else {
+            world.entity_mut(h.camera).remove::<Hdr>();
         }
-        let (a, e) = ((b.min[k] - o[k]) / d[k], (b.max[k] - o[k]) / d[k]);
-        let (lo, hi, s) = if a < e { (a, e, -1.0) } else { (e, a, 1.0) };
-        if lo > t0 {
-            (t0, axis, sign) = (lo, k, s);
-        }
-        t1 = t1.min(hi);
     }
-    (t0 <= t1 && t0 > 0.0).then_some((t0, axis, sign))
+    let pixels = h.settle();
+    let world = h.app.world();
+    let cascades = &world.get::<Cascades>(h.light).unwrap().cascades[&h.camera];
+    let config = world.get::<CascadeShadowConfig>(h.light).unwrap();
+    let camera = world.get::<Camera>(h.camera).unwrap();
+    let transform = world.get::<GlobalTransform>(h.camera).unwrap();
+    let clip_from_world =
+        to_dmat4(&camera.clip_from_view()) * to_dmat4(&transform.to_matrix()).inverse();
+    Capture {
+        pixels,
+        cascades: cascades
+            .iter()
+            .zip(&config.bounds)
+            .map(|(c, &f)| (to_dmat4(&c.clip_from_world), f64::from(f)))
+            .collect(),
+        clip_from_world,
+        eye: DVec3::from_array(transform.translation().as_dvec3().to_array()),
+        forward: DVec3::from_array(transform.forward().as_dvec3().to_array()),
+        resolution: world.resource::<DirectionalLightShadowMap>().size as f64,
+        maps: world.get::<ErrorLensMaps>(h.camera).unwrap().clone(),
+    }
 }
 
 /// The first surface the ray meets: the point, the face's outward normal and a face key.
@@ -423,7 +282,7 @@ fn save(name: &str, cap: &Capture) {
 
 #[test]
 fn the_overlay_draws_the_lens_of_bevys_and_the_budgets_cascades() {
-    let mut h = Harness::new();
+    let mut h = harness();
     let budget = CascadeMode::Budget(Budget::new(0.75));
     // The prepass is multisampled under MSAA: the pass reads its first sample. An HDR view
     // (without tone mapping) holds the image in a float texture until Bevy's upscaling pass.
@@ -434,7 +293,7 @@ fn the_overlay_draws_the_lens_of_bevys_and_the_budgets_cascades() {
         ("budget_hdr", budget, Msaa::Off, true),
     ];
     for (name, mode, msaa, hdr) in &modes {
-        let cap = h.render(mode, *msaa, *hdr, 1.0);
+        let cap = render(&mut h, mode, *msaa, *hdr, 1.0);
         assert_eq!(cap.maps.light, Some(h.light), "{name}");
         assert_eq!(cap.maps.maps.len(), cap.cascades.len(), "{name}");
         check_legend(&cap, name);
@@ -477,7 +336,7 @@ fn the_overlay_draws_the_lens_of_bevys_and_the_budgets_cascades() {
             "{name}: {t:?}"
         );
         if std::env::var_os("SHADOW_ALIASING_BEVY_IMAGES").is_some() && *msaa == Msaa::Off && !hdr {
-            let shot = h.render(mode, *msaa, *hdr, ErrorLens::default().opacity);
+            let shot = render(&mut h, mode, *msaa, *hdr, ErrorLens::default().opacity);
             save(&format!("lens_{name}"), &shot);
         }
     }

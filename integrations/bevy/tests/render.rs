@@ -5,203 +5,80 @@
 //!
 //! `SHADOW_ALIASING_BEVY_IMAGES=<dir>` writes each render there as a PNG.
 
+mod harness;
 mod scene;
 
-use bevy::app::PluginsState;
-use bevy::camera::{PerspectiveProjection, Projection, RenderTarget};
-use bevy::core_pipeline::tonemapping::{DebandDither, Tonemapping};
-use bevy::image::Image;
-use bevy::light::{
-    CascadeShadowConfig, Cascades, DirectionalLightShadowMap, GlobalAmbientLight,
-    NotShadowReceiver, ShadowFilteringMethod,
-};
+use bevy::light::{CascadeShadowConfig, Cascades};
 use bevy::prelude::*;
-use bevy::render::gpu_readback::{Readback, ReadbackComplete};
-use bevy::render::render_resource::{TextureFormat, TextureUsages};
 use bevy::render::settings::{WgpuFeatures, WgpuSettings};
-use bevy::render::view::Msaa;
 use bevy::render::RenderPlugin;
-use scene::{
-    camera_transform, centre_size, sun_dir, sun_transform, SceneBox, BOXES, FAR, FOV, NEAR,
-};
+use harness::{ray_box, Harness, H, W};
+use scene::{camera_transform, sun_dir, BOXES, FOV};
 use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::glam::{DMat4, DVec3, Mat4 as SaMat4};
 use shadow_aliasing::maps::WarpRule;
 use shadow_aliasing_bevy::{
     CascadeErrors, CascadeMode, CascadeSource, Fit, Replace, ReplacedCascades,
-    ShadowAliasingPlugin, ShadowAliasingSettings, Splits, ViewCascadeErrors,
+    ShadowAliasingSettings, Splits, ViewCascadeErrors,
 };
-use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
-const W: u32 = 640;
-const H: u32 = 360;
 /// Bevy's default shadow map size.
 const RES: usize = 2048;
 /// Sampled pixels: every STEP-th in each direction.
 const STEP: u32 = 2;
 
-type Slot = Arc<Mutex<Option<Vec<u8>>>>;
-
-struct Harness {
-    app: App,
-    light: Entity,
-    camera: Entity,
-    slot: Slot,
+/// The scene on Vulkan with `res`² shadow maps; `clip_control: false` disables the device
+/// feature `DEPTH_CLIP_CONTROL`, so that Bevy emulates unclipped depth in the shadow pass.
+fn harness(clip_control: bool, res: usize) -> Harness {
+    let disabled = if clip_control {
+        WgpuFeatures::empty()
+    } else {
+        WgpuFeatures::DEPTH_CLIP_CONTROL
+    };
+    Harness::new(
+        RenderPlugin {
+            render_creation: WgpuSettings {
+                disabled_features: Some(disabled),
+                ..default()
+            }
+            .into(),
+            ..default()
+        },
+        res,
+    )
 }
 
-impl Harness {
-    /// The scene on Vulkan with `res`² shadow maps; `clip_control: false` disables the device
-    /// feature `DEPTH_CLIP_CONTROL`, so that Bevy emulates unclipped depth in the shadow pass.
-    fn new(clip_control: bool, res: usize) -> Self {
-        let disabled = if clip_control {
-            WgpuFeatures::empty()
-        } else {
-            WgpuFeatures::DEPTH_CLIP_CONTROL
-        };
-        let mut app = App::new();
-        app.add_plugins((
-            scene::headless_plugins().set(RenderPlugin {
-                render_creation: WgpuSettings {
-                    disabled_features: Some(disabled),
-                    ..default()
-                }
-                .into(),
-                synchronous_pipeline_compilation: true,
-                ..default()
-            }),
-            ShadowAliasingPlugin,
-        ))
-        .insert_resource(DirectionalLightShadowMap { size: res })
-        .insert_resource(GlobalAmbientLight {
-            brightness: 0.0,
-            ..default()
-        });
-        while app.plugins_state() == PluginsState::Adding {
-            bevy::tasks::tick_global_task_pools_on_main_thread();
-        }
-        app.finish();
-        app.cleanup();
-        let world = app.world_mut();
-        let mut image = Image::new_target_texture(W, H, TextureFormat::Rgba8UnormSrgb, None);
-        image.texture_descriptor.usage |= TextureUsages::COPY_SRC;
-        let target = world.resource_mut::<Assets<Image>>().add(image);
-        let material = world
-            .resource_mut::<Assets<StandardMaterial>>()
-            .add(StandardMaterial {
-                base_color: Color::srgb(0.8, 0.8, 0.8),
-                perceptual_roughness: 1.0,
-                reflectance: 0.0,
-                ..default()
-            });
-        for bx in &BOXES {
-            let (c, size) = centre_size(bx);
-            let mesh = world
-                .resource_mut::<Assets<Mesh>>()
-                .add(Cuboid::from_size(size));
-            let mut e = world.spawn((
-                Mesh3d(mesh),
-                MeshMaterial3d(material.clone()),
-                Transform::from_translation(c),
-            ));
-            if bx.pole {
-                e.insert(NotShadowReceiver);
-            }
-        }
-        let camera = world
-            .spawn((
-                Camera3d::default(),
-                Camera {
-                    clear_color: ClearColorConfig::Custom(Color::BLACK),
-                    ..default()
-                },
-                RenderTarget::Image(target.clone().into()),
-                Projection::Perspective(PerspectiveProjection {
-                    fov: FOV,
-                    aspect_ratio: W as f32 / H as f32,
-                    near: NEAR,
-                    far: FAR,
-                    ..default()
-                }),
-                Msaa::Off,
-                Tonemapping::None,
-                DebandDither::Disabled,
-                ShadowFilteringMethod::Hardware2x2,
-                camera_transform(),
-            ))
-            .id();
-        let light = world
-            .spawn((
-                DirectionalLight {
-                    illuminance: 2000.0,
-                    shadow_maps_enabled: true,
-                    ..default()
-                },
-                sun_transform(),
-                CascadeMode::Measure,
-            ))
-            .id();
-        let slot: Slot = Arc::default();
-        let s = slot.clone();
-        world
-            .spawn(Readback::texture(target))
-            .observe(move |ev: On<ReadbackComplete>| {
-                *s.lock().unwrap() = Some(ev.data.clone());
-            });
-        Self {
-            app,
-            light,
-            camera,
-            slot,
-        }
+/// Renders with `mode` (shadows off with `None`) until two read-back frames agree.
+fn render(h: &mut Harness, mode: Option<CascadeMode>) -> Capture {
+    {
+        let world = h.app.world_mut();
+        let mut light = world.entity_mut(h.light);
+        light
+            .get_mut::<DirectionalLight>()
+            .unwrap()
+            .shadow_maps_enabled = mode.is_some();
+        *light.get_mut::<CascadeMode>().unwrap() = mode.unwrap_or_default();
     }
-
-    /// Renders with `mode` (shadows off with `None`) until two read-back frames agree.
-    fn render(&mut self, mode: Option<CascadeMode>) -> Capture {
-        {
-            let world = self.app.world_mut();
-            let mut light = world.entity_mut(self.light);
-            light
-                .get_mut::<DirectionalLight>()
-                .unwrap()
-                .shadow_maps_enabled = mode.is_some();
-            *light.get_mut::<CascadeMode>().unwrap() = mode.unwrap_or_default();
-        }
-        for _ in 0..3 {
-            self.app.update();
-        }
-        *self.slot.lock().unwrap() = None;
-        let mut prev: Option<Vec<u8>> = None;
-        for _ in 0..30 {
-            self.app.update();
-            let Some(d) = self.slot.lock().unwrap().take() else {
-                continue;
-            };
-            assert_eq!(d.len(), (W * H * 4) as usize, "unpadded RGBA8 rows");
-            if prev.as_ref() == Some(&d) {
-                let world = self.app.world();
-                let errors = world.get::<CascadeErrors>(self.light).unwrap();
-                let cascades = world.get::<Cascades>(self.light).unwrap();
-                let config = world.get::<CascadeShadowConfig>(self.light).unwrap();
-                let light = world.get::<DirectionalLight>(self.light).unwrap();
-                let texels = cascades
-                    .cascades
-                    .get(&self.camera)
-                    .map(|c| c.iter().map(|c| f64::from(c.texel_size)).collect())
-                    .unwrap_or_default();
-                return Capture {
-                    pixels: d,
-                    errors: errors.views.get(&self.camera).cloned(),
-                    texels,
-                    far: config.bounds.iter().map(|b| f64::from(*b)).collect(),
-                    overlap: f64::from(config.overlap_proportion),
-                    normal_bias: f64::from(light.shadow_normal_bias),
-                    depth_bias: f64::from(light.shadow_depth_bias),
-                };
-            }
-            prev = Some(d);
-        }
-        panic!("no two consecutive read-back frames agreed within 30 frames");
+    let pixels = h.settle();
+    let world = h.app.world();
+    let errors = world.get::<CascadeErrors>(h.light).unwrap();
+    let cascades = world.get::<Cascades>(h.light).unwrap();
+    let config = world.get::<CascadeShadowConfig>(h.light).unwrap();
+    let light = world.get::<DirectionalLight>(h.light).unwrap();
+    let texels = cascades
+        .cascades
+        .get(&h.camera)
+        .map(|c| c.iter().map(|c| f64::from(c.texel_size)).collect())
+        .unwrap_or_default();
+    Capture {
+        pixels,
+        errors: errors.views.get(&h.camera).cloned(),
+        texels,
+        far: config.bounds.iter().map(|b| f64::from(*b)).collect(),
+        overlap: f64::from(config.overlap_proportion),
+        normal_bias: f64::from(light.shadow_normal_bias),
+        depth_bias: f64::from(light.shadow_depth_bias),
     }
 }
 
@@ -249,25 +126,6 @@ struct Hit {
     bx: usize,
     axis: usize,
     sign: f64,
-}
-
-fn ray_box(o: DVec3, d: DVec3, b: &SceneBox) -> Option<(f64, usize, f64)> {
-    let (mut t0, mut t1, mut axis, mut sign) = (f64::NEG_INFINITY, f64::INFINITY, 0, 0.0);
-    for k in 0..3 {
-        if d[k].abs() < 1e-300 {
-            if o[k] < b.min[k] || o[k] > b.max[k] {
-                return None;
-            }
-            continue;
-        }
-        let (a, e) = ((b.min[k] - o[k]) / d[k], (b.max[k] - o[k]) / d[k]);
-        let (lo, hi, s) = if a < e { (a, e, -1.0) } else { (e, a, 1.0) };
-        if lo > t0 {
-            (t0, axis, sign) = (lo, k, s);
-        }
-        t1 = t1.min(hi);
-    }
-    (t0 <= t1 && t0 > 0.0).then_some((t0, axis, sign))
 }
 
 fn first_hit(o: DVec3, d: DVec3) -> Option<Hit> {
@@ -461,8 +319,8 @@ fn save_crop(name: &str, cap: &Capture) {
 #[test]
 fn bevy_and_replaced_cascades_render_exact_shadows_and_replacements_measure_lower() {
     let start = Instant::now();
-    let mut h = Harness::new(true, RES);
-    let reference = h.render(None);
+    let mut h = harness(true, RES);
+    let reference = render(&mut h, None);
     save("reference", &reference);
     let cam = Eye::new();
     let configs: [(&str, Option<Replace>); 6] = [
@@ -520,7 +378,7 @@ fn bevy_and_replaced_cascades_render_exact_shadows_and_replacements_measure_lowe
     );
     for (name, replace) in configs {
         let mode = replace.map_or(CascadeMode::Measure, CascadeMode::Replace);
-        let cap = h.render(Some(mode));
+        let cap = render(&mut h, Some(mode));
         save(name, &cap);
         let errors = cap
             .errors
@@ -592,15 +450,18 @@ fn bevy_and_replaced_cascades_render_exact_shadows_and_replacements_measure_lowe
 fn without_depth_clip_control_warped_maps_are_refused_and_orthographic_ones_stay_exact() {
     // Bevy's emulation of unclipped depth writes the undivided clip z: drawn with it, the
     // LiSPSM cascades disagreed with the ray cast at 29923 of 38801 compared pixels.
-    let mut h = Harness::new(false, RES);
-    let reference = h.render(None);
+    let mut h = harness(false, RES);
+    let reference = render(&mut h, None);
     let cam = Eye::new();
-    let bevy = h.render(Some(CascadeMode::Measure));
-    let warped = h.render(Some(CascadeMode::Replace(Replace {
-        fit: Fit::Focused(WarpRule::Lispsm),
-        splits: Splits::EqualError { k: 4 },
-        depth_range: None,
-    })));
+    let bevy = render(&mut h, Some(CascadeMode::Measure));
+    let warped = render(
+        &mut h,
+        Some(CascadeMode::Replace(Replace {
+            fit: Fit::Focused(WarpRule::Lispsm),
+            splits: Splits::EqualError { k: 4 },
+            depth_range: None,
+        })),
+    );
     let state = h.app.world().get::<ReplacedCascades>(h.light).unwrap();
     let e = &state.errors[&h.camera];
     assert!(
@@ -612,11 +473,14 @@ fn without_depth_clip_control_warped_maps_are_refused_and_orthographic_ones_stay
         warped.pixels == bevy.pixels,
         "Bevy's cascades are drawn instead"
     );
-    let ortho = h.render(Some(CascadeMode::Replace(Replace {
-        fit: Fit::Focused(WarpRule::Uniform),
-        splits: Splits::EqualError { k: 4 },
-        depth_range: None,
-    })));
+    let ortho = render(
+        &mut h,
+        Some(CascadeMode::Replace(Replace {
+            fit: Fit::Focused(WarpRule::Uniform),
+            splits: Splits::EqualError { k: 4 },
+            depth_range: None,
+        })),
+    );
     assert_eq!(
         ortho.errors.as_ref().unwrap().source,
         CascadeSource::ShadowAliasing
@@ -636,8 +500,8 @@ fn small_maps_show_the_difference_and_both_stay_exact() {
     // equal-error ones, each checked against the ray cast like the 2048² ones (the band left
     // out scales with the texel). The crops are docs/bevy.md's screenshot pair.
     const SMALL: usize = 512;
-    let mut h = Harness::new(true, SMALL);
-    let reference = h.render(None);
+    let mut h = harness(true, SMALL);
+    let reference = render(&mut h, None);
     let cam = Eye::new();
     let mut errors = Vec::new();
     for (name, mode) in [
@@ -651,7 +515,7 @@ fn small_maps_show_the_difference_and_both_stay_exact() {
             }),
         ),
     ] {
-        let cap = h.render(Some(mode));
+        let cap = render(&mut h, Some(mode));
         save_crop(name, &cap);
         let e = cap
             .errors
@@ -737,8 +601,8 @@ fn detached(cap: &Capture, reference: &Capture, cam: &Eye) -> (usize, usize) {
 fn automatic_bias_has_no_acne_and_fewer_detached_shadows_than_bevys_default() {
     // The plugin's equal-error cascades drawn twice with Bevy's 2 × 2 hardware PCF: with
     // Bevy's default bias (the automatic bias off) and with the crate's bias for those maps.
-    let mut h = Harness::new(true, RES);
-    let reference = h.render(None);
+    let mut h = harness(true, RES);
+    let reference = render(&mut h, None);
     let cam = Eye::new();
     let mode = CascadeMode::Replace(Replace {
         fit: Fit::Focused(WarpRule::Uniform),
@@ -751,7 +615,7 @@ fn automatic_bias_has_no_acne_and_fewer_detached_shadows_than_bevys_default() {
             .world_mut()
             .resource_mut::<ShadowAliasingSettings>()
             .auto_bias = auto;
-        let cap = h.render(Some(mode.clone()));
+        let cap = render(&mut h, Some(mode.clone()));
         let tally = compare(&cap, &reference, &cam);
         let acne = tally.wrong.iter().filter(|w| !w.2).count();
         let missed = tally.wrong.iter().filter(|w| w.2).count();
