@@ -5,6 +5,7 @@
 //! the face pairs by their largest M_x, each column's height among its members by M_z).
 
 mod hatch;
+mod table;
 
 use super::chart::{
     boxed_text, build_chart_styled, column, equal_aspect, frame, linspace, Axis, Chart2d,
@@ -24,6 +25,7 @@ use hatch::HATCHES;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
+use table::{table_step, TABLE_TOP};
 
 /// Texture size in texels.
 pub(super) const SIZE: u32 = 2048;
@@ -244,17 +246,6 @@ impl Figure for Fig8 {
             self.draw_table(&table, single)
         }
     }
-}
-
-/// The gap above the table's first line, under the panels above it.
-const TABLE_TOP: u32 = 6;
-
-/// The table's font size and line step: 13 units (its subscripts 6 pt printed in one column)
-/// and 18 across two columns, 17 in one.
-const TABLE_FONT: u32 = 13;
-
-fn table_step(single: bool) -> u32 {
-    TABLE_FONT + if single { 4 } else { 5 }
 }
 
 impl Fig8 {
@@ -493,139 +484,6 @@ impl Fig8 {
         }
         Ok(())
     }
-
-    /// The table's rows: per partition its tag, face and depths, M_x, M_z, its share of the
-    /// texture's width w and height h (Eq 6), and its error after the allocation, M_x/w and
-    /// M_z/h (Eq 6 makes the first one value across the texture and the second one within a
-    /// column).
-    pub(super) fn table_rows(&self) -> Vec<[String; 6]> {
-        let n = f64::from(SIZE);
-        self.cells
-            .iter()
-            .map(|c| {
-                let v = c.viewport;
-                let (w, h) = (f64::from(v.width) / n, f64::from(v.height) / n);
-                [
-                    c.tag.clone(),
-                    minus(&c.label),
-                    format!("{:.2}", c.mx),
-                    format!("{:.2}", c.mz),
-                    format!("{:.0} % × {:.0} %", 100.0 * w, 100.0 * h),
-                    format!("{:.2} × {:.2}", c.mx / w, c.mz / h),
-                ]
-            })
-            .collect()
-    }
-
-    /// (d): the table of [`Fig8::table_rows`] under a title that says what its columns are,
-    /// each row led by a swatch of its partition's look. Its lines are [`table_step`] units
-    /// apart whatever the page (one column keeps only the part, its share and the error
-    /// after).
-    fn draw_table<DB: DrawingBackend>(
-        &self,
-        area: &DrawingArea<DB, Shift>,
-        single: bool,
-    ) -> Result<(), Fail> {
-        let size = TABLE_FONT;
-        let step = table_step(single) as i32;
-        let text = TextStyle::from((FONT, size).into_font()).pos(Pos::new(HPos::Left, VPos::Top));
-        let head = [
-            "part",
-            "face, depth",
-            "M_x",
-            "M_z",
-            "share w × h",
-            "after: M_x/w × M_z/h",
-        ];
-        let keep: &[usize] = if single {
-            &[0, 4, 5]
-        } else {
-            &[0, 1, 2, 3, 4, 5]
-        };
-        let rows = self.table_rows();
-        let measure = |t: &str| -> Result<i32, Fail> {
-            area.estimate_text_size(t, &text)
-                .map(|(w, _)| w as i32)
-                .map_err(|e| Fail::Draw(e.to_string()))
-        };
-        let swatch = (size as i32 + 4, size as i32 - 1);
-        let mut widths = Vec::new();
-        for &j in keep {
-            let mut w = measure(head[j])?;
-            for r in &rows {
-                w = w.max(measure(&r[j])?);
-            }
-            if j == 0 {
-                w += swatch.0 + 4;
-            }
-            widths.push(w);
-        }
-        let (aw, _) = area.dim_in_pixel();
-        let used: i32 = widths.iter().sum();
-        let gap = ((aw as i32 - 8 - used) / (keep.len() as i32 - 1).max(1)).clamp(6, 40);
-        let left = ((aw as i32 - used - gap * (keep.len() as i32 - 1)) / 2).max(2);
-        let mut xs = Vec::new();
-        let mut x = left;
-        for w in &widths {
-            xs.push(x);
-            x += w + gap;
-        }
-        let top = TABLE_TOP as i32;
-        let title = if single {
-            "(d) Eq 6's shares w × h, the error after"
-        } else {
-            "(d) Eq 6's shares w × h of the texture's width and height, and the error after them"
-        };
-        area.draw(&Text::new(title, (left, top), text.clone()))?;
-        let grey = RGBColor(90, 90, 90);
-        for (k, &j) in keep.iter().enumerate() {
-            let at = xs[k] + if j == 0 { swatch.0 + 4 } else { 0 };
-            area.draw(&Text::new(head[j], (at, top + step), text.color(&grey)))?;
-        }
-        let rule = top + 2 * step - 3;
-        area.draw(&PathElement::new(
-            vec![(left, rule), (x - gap, rule)],
-            grey.stroke_width(1),
-        ))?;
-        for (r, row) in rows.iter().enumerate() {
-            let y = top + (r as i32 + 2) * step;
-            // The swatch: the partition's pastel with its hatch.
-            let (sx, sy) = (xs[0], y + 1);
-            let colour = PALETTE[r % PALETTE.len()];
-            area.draw(&Rectangle::new(
-                [(sx, sy), (sx + swatch.0, sy + swatch.1)],
-                colour.mix(0.35).filled(),
-            ))?;
-            let poly = [
-                DVec2::new(f64::from(sx), f64::from(sy)),
-                DVec2::new(f64::from(sx + swatch.0), f64::from(sy)),
-                DVec2::new(f64::from(sx + swatch.0), f64::from(sy + swatch.1)),
-                DVec2::new(f64::from(sx), f64::from(sy + swatch.1)),
-            ];
-            for &angle in HATCHES[r % HATCHES.len()].angles() {
-                // Pixel rows grow downward: the angle mirrored to look as in the panels.
-                for (a, b) in hatch::segments(&poly, -angle, 4.0) {
-                    area.draw(&PathElement::new(
-                        vec![
-                            (a.x.round() as i32, a.y.round() as i32),
-                            (b.x.round() as i32, b.y.round() as i32),
-                        ],
-                        colour.mix(0.8).stroke_width(1),
-                    ))?;
-                }
-            }
-            // Outlined in dark grey: black outlines are the texture's rectangles.
-            area.draw(&Rectangle::new(
-                [(sx, sy), (sx + swatch.0, sy + swatch.1)],
-                RGBColor(60, 60, 60).stroke_width(1),
-            ))?;
-            for (k, &j) in keep.iter().enumerate() {
-                let at = xs[k] + if j == 0 { swatch.0 + 4 } else { 0 };
-                area.draw(&Text::new(row[j].clone(), (at, y), text.clone()))?;
-            }
-        }
-        Ok(())
-    }
 }
 
 #[cfg(test)]
@@ -773,74 +631,5 @@ mod tests {
             assert!((via - direct).length() < 1e-9, "{via} vs {direct}");
             assert!(direct.abs().max_element() <= 1.0 + 1e-9);
         }
-    }
-
-    /// The table's lines (d) are one [`table_step`] apart whatever the panel's size and in
-    /// both columns (item 2 of issue 35: the texture's in-rectangle text, spaced by the axis
-    /// range, printed line on line in `--bare`; the table's spacing is in units of the page).
-    #[test]
-    fn table_lines_are_one_step_apart_on_any_panel() {
-        use crate::plot::chart::read_svg::{draw_svg, texts};
-        let fig = fig8().map_err(|e| e.named("lloyd2005-fig8")).unwrap();
-        for single in [false, true] {
-            for size in [(520, 170), (300, 320), (900, 420)] {
-                let svg = draw_svg(size, |area| fig.draw_table(area, single).unwrap());
-                let ys: Vec<f64> = texts(&svg)
-                    .iter()
-                    .filter(|(_, t, _)| fig.cells.iter().any(|c| c.tag == *t))
-                    .map(|(_, _, y)| *y)
-                    .collect();
-                assert_eq!(ys.len(), fig.cells.len(), "{size:?}: {ys:?}");
-                let step = if single { 17.0 } else { 18.0 };
-                for w in ys.windows(2) {
-                    assert!((w[1] - w[0] - step).abs() < 0.5, "{size:?}: {ys:?}");
-                }
-            }
-        }
-    }
-
-    /// What the table prints as "after" is Eq 6's error: Eq 6 gives a column the width share
-    /// w = (its largest M_x) / Σ (each column's largest M_x), so a part's M_x/w is
-    /// M_x · Σ / (its column's largest), computed here without the viewports: Σ = 1.56 + 1.76 +
-    /// 0.98 = 4.30 for the part with its column's largest M_x, less for the others (R1: 4.09);
-    /// and the header names it M_x/w × M_z/h.
-    #[test]
-    fn table_after_is_the_sum_of_the_columns_m_x() {
-        use crate::plot::chart::read_svg::{draw_svg, texts};
-        let fig = fig8().map_err(|e| e.named("lloyd2005-fig8")).unwrap();
-        // The columns by face pair: left and right share one (Eq 6 pairs opposite faces).
-        let pair = |tag: &str| match &tag[..1] {
-            "L" | "R" => "LR",
-            t => {
-                if t == "T" {
-                    "T"
-                } else {
-                    "N"
-                }
-            }
-        };
-        let mut col_max: std::collections::BTreeMap<&str, f64> = Default::default();
-        for c in &fig.cells {
-            let m = col_max.entry(pair(&c.tag)).or_insert(0.0);
-            *m = m.max(c.mx);
-        }
-        assert_eq!(col_max.len(), 3, "{:?}", col_max.keys());
-        let sum: f64 = col_max.values().sum();
-        assert!((sum - 4.30).abs() < 0.005, "{sum}");
-        let rows = fig.table_rows();
-        assert_eq!(rows.len(), 7);
-        for (r, c) in rows.iter().zip(&fig.cells) {
-            let printed: f64 = r[5].split(" × ").next().unwrap().parse().unwrap();
-            let want = c.mx * sum / col_max[pair(&c.tag)];
-            assert!((printed - want).abs() < 0.006, "{r:?} vs {want}");
-        }
-        let svg = draw_svg((520, 170), |area| fig.draw_table(area, false).unwrap());
-        // The header as written (plain SVG: subscripts not typeset).
-        assert!(
-            texts(&svg)
-                .iter()
-                .any(|(_, t, _)| t.replace('_', "") == "after: Mx/w × Mz/h"),
-            "{svg}"
-        );
     }
 }
