@@ -104,11 +104,11 @@ fn no_legend_covers_data_or_overflows() {
     let font = Font::dejavu();
     let mut bad = Vec::new();
     let mut found = Vec::new();
-    for (name, layout, svg) in all_svgs("legend") {
-        if !legend_boxes(&svg).is_empty() {
+    for (name, layout, svg) in all_svgs() {
+        if !legend_boxes(svg).is_empty() {
             found.push(format!("{name} {layout}"));
         }
-        for b in legend_faults(&font, &svg) {
+        for b in legend_faults(&font, svg) {
             bad.push(format!("{name} ({layout}): {b}"));
         }
     }

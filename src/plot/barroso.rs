@@ -3,7 +3,7 @@
 //! branches of their Eq 13, LiSPSM's 1/sin γ rule and the crate's n′ that minimises M_z over the
 //! whole frustum (`WarpRule::MinimaxMz`, the frustum-wide version of Barroso's objective).
 
-use super::chart::{linspace, Axis, Charts, LineChart, Note, Series, PALETTE};
+use super::chart::{linspace, Axis, Charts, LineChart, Look, Marker, Note, Series, PALETTE};
 use super::Fail;
 use crate::analytic::tilted::{gamma_lim, generalized_n_prime, n_prime_1, n_prime_2, Falloff};
 use crate::maps::{n_prime_for, WarpRule};
@@ -72,18 +72,21 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     // Short legend labels, so that the legend fits above the curves' common tail (γ > 35°).
     c.legend = SeriesLabelPosition::UpperRight;
     // The paper's curve, bold.
-    let mut paper = Series::line("Barroso, Eq 18 (paper)", barroso, PALETTE[0]);
+    let mut paper = Series::line("Barroso, Eq 18 (paper)", barroso, Look::Barroso.colour());
     paper.width = 4;
     c.series.push(paper);
     c.series
-        .push(Series::line("Zhang, Eq 17", zhang, PALETTE[1]));
+        .push(Series::line("Zhang, Eq 17", zhang, Look::Zhang.colour()));
     c.series
-        .push(Series::line("LiSPSM, 1/sin γ", lispsm, PALETTE[2]).dashed());
+        .push(Series::line("LiSPSM, 1/sin γ", lispsm, Look::Lispsm.colour()).dashed());
     c.series
         .push(Series::line("least M_z", minimax, PALETTE[3]).dashed());
-    c.series
-        .push(Series::line("n′₁, Eq 13", n1, PALETTE[6]).dotted());
-    let mut s2 = Series::line("n′₂, Eq 13", n2, PALETTE[7]).dotted();
+    // n′₁ with a small square (its colour's own marker, a tall bar, read as part of the line).
+    c.series.push(Series {
+        shape: Some(Marker::Square),
+        ..Series::line("n′_{1}, Eq 13", n1, PALETTE[6]).dotted()
+    });
+    let mut s2 = Series::line("n′_{2}, Eq 13", n2, PALETTE[7]).dotted();
     s2.width = 3;
     c.series.push(s2);
     let gl_deg = gl.to_degrees();
@@ -113,8 +116,7 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     });
     c.notes.push(Note {
         at: (phi_deg - 19.0, 1.55),
-        // Its value is written in (b), where there is room.
-        text: "φ_y →".to_string(),
+        text: format!("φ_y = {phi_deg:.0}° →"),
         colour: grey,
     });
     let window = (20.0, 40.0);
@@ -165,8 +167,8 @@ fn magnified(
         "Zhang",
         "LiSPSM",
         "least M_z",
-        "n′₁",
-        "n′₂",
+        "n′_{1}",
+        "n′_{2}",
     ];
     z.legend = SeriesLabelPosition::LowerRight;
     z.series = c

@@ -3,9 +3,10 @@
 
 use super::chart::FONT;
 use super::chart::{
-    build_chart, fmt_plain, frame, linspace, Axis, Charts, LineChart, Marker, Note, Series, PALETTE,
+    build_chart, fmt_plain, frame, linspace, Axis, Charts, LineChart, Look, Marker, Note, Series,
+    PALETTE, SHARED,
 };
-use super::{Fail, Figure};
+use super::{Column, Fail, Figure};
 use crate::analytic::eta::{n_prime_from_eta, n_prime_lispsm};
 use crate::analytic::overhead::{max_mx, max_mz, mx, mz, storage_factor};
 use crate::analytic::partition::{scheme_storage_factor, shadow_map_count, Scheme, SchemeLight};
@@ -28,23 +29,35 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
     let view = ViewFrustum::new(n, f, 45f64.to_radians())?;
     let res = Resolutions::default();
     let lispsm = n_prime_lispsm(n, f)?;
+    // PSM, LiSPSM and the uniform map in their colours of every figure (Look); the other
+    // parameters in the palette's colours no scheme of the figure has.
     let warps = [
-        (NPrime::finite(1.0)?, "n′ = n = 1 (PSM)".to_string()),
-        (NPrime::finite(2.0)?, "n′ = 2".to_string()),
+        (
+            NPrime::finite(1.0)?,
+            "n′ = n = 1 (PSM)".to_string(),
+            Look::Psm.colour(),
+        ),
+        (NPrime::finite(2.0)?, "n′ = 2".to_string(), PALETTE[1]),
         (
             NPrime::finite(lispsm)?,
             format!("n′ ≈ {lispsm:.2} (LiSPSM)"),
+            Look::Lispsm.colour(),
         ),
-        (NPrime::finite(20.0)?, "n′ = 20".to_string()),
-        (NPrime::finite(100.0)?, "n′ = 100".to_string()),
-        (NPrime::UNWARPED, "n′ = ∞ (uniform)".to_string()),
+        (NPrime::finite(20.0)?, "n′ = 20".to_string(), PALETTE[3]),
+        (NPrime::finite(100.0)?, "n′ = 100".to_string(), PALETTE[5]),
+        (
+            NPrime::UNWARPED,
+            "n′ = ∞ (uniform)".to_string(),
+            Look::Uniform.colour(),
+        ),
     ];
     let zs = linspace(n, f, 160);
     let z_factor = (f - n) / (2.0 * view.tan_half_fov());
     let mut cx = LineChart::new(
         "(a) x error: m_x(z) / f",
         Axis::linear("depth z (eye-space units, n = 1)", n, f),
-        Axis::log10("m_x / f = (n′ + z − n)/(z(n′ + f − n))", 0.03, 1.3),
+        // Short enough for a panel shortened by a legend below it (Eq 7's term is in the title).
+        Axis::log10("m_x / f", 0.03, 1.3),
     );
     let mut cz = LineChart::new(
         "(b) z error: m_z(z) · 2 tan θ / (f − n)",
@@ -52,7 +65,7 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
         Axis::log10("m_z · 2 tan θ / (f − n)", 0.03, 1.3),
     );
     cx.legend = SeriesLabelPosition::UpperRight;
-    for (i, (np, label)) in warps.iter().enumerate() {
+    for (np, label, colour) in &warps {
         let px = zs
             .iter()
             .map(|&z| Ok((z, mx(n, f, *np, z, res)? / f)))
@@ -61,11 +74,11 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
             .iter()
             .map(|&z| Ok((z, mz(&view, *np, z, res)? / z_factor)))
             .collect::<Result<Vec<_>, crate::Error>>()?;
-        cx.series.push(Series::line(label.clone(), px, PALETTE[i]));
+        cx.series.push(Series::line(label.clone(), px, *colour));
         // The lower panel's curves labelled directly at the far plane with their n′ (and with
         // the upper panel's markers, so that both read in greyscale).
         let short = label.split(" (").next().unwrap_or(label).to_string();
-        cz.series.push(Series::line(short, pz, PALETTE[i]).direct());
+        cz.series.push(Series::line(short, pz, *colour).direct());
     }
     Ok(Charts {
         size: (520, 540),
@@ -102,7 +115,7 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
     let mut c = LineChart::new(
         "",
         Axis::linear("η (−1: n′ = ∞, 1: n′ = n)", -1.0, 1.0),
-        Axis::log10("M_x, M_z (unit resolutions), S̄ (log scale)", 0.5, 2e4),
+        Axis::log10("M_x, M_z, S̄ (log scale)", 0.5, 2e4),
     );
     c.legend = SeriesLabelPosition::LowerLeft;
     c.series.push(Series::line(
@@ -209,18 +222,14 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
         optima.push(format!("{opt:.2}"));
     }
     c.series.push(
-        Series::line("optimum", Vec::new(), RGBColor(90, 90, 90))
+        Series::line("optimum", Vec::new(), SHARED)
             .dashed()
             .reference(),
     );
     r.series.push(
-        Series::line(
-            "optimum",
-            vec![(1.0, 1.0), (16.0, 1.0)],
-            RGBColor(90, 90, 90),
-        )
-        .dashed()
-        .reference(),
+        Series::line("optimum", vec![(1.0, 1.0), (16.0, 1.0)], SHARED)
+            .dashed()
+            .reference(),
     );
     Ok(Charts {
         size: (520, 560),
@@ -269,9 +278,9 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
     );
     c.legend = SeriesLabelPosition::UpperRight;
     let schemes = [
-        (Scheme::Zp, "ZP", 0),
-        (Scheme::ZpW, "ZP+W", 1),
-        (Scheme::FpZpW, "FP+ZP+W", 2),
+        (Scheme::Zp, "ZP", Look::Zp.colour()),
+        (Scheme::ZpW, "ZP+W", Look::ZpW.colour()),
+        (Scheme::FpZpW, "FP+ZP+W", Look::FpZpW.colour()),
     ];
     for (light, light_name) in [
         (SchemeLight::Overhead, "overhead"),
@@ -301,20 +310,17 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
                 Series {
                     width: 3,
                     shape,
-                    ..Series::line(
-                        format!("{name}, {light_name}"),
-                        unjoined(&pts),
-                        PALETTE[colour],
-                    )
-                    .with_markers()
+                    ..Series::line(format!("{name}, {light_name}"), unjoined(&pts), colour)
+                        .with_markers()
                 }
             } else {
                 // Every count: a line, with a few markers along it (not one per count).
-                let name = match light {
-                    SchemeLight::Behind => "ZP = ZP+W",
-                    SchemeLight::Overhead => name,
+                // Behind, one curve for two schemes: in the neutral colour of shared curves.
+                let (name, colour) = match light {
+                    SchemeLight::Behind => ("ZP = ZP+W", SHARED),
+                    SchemeLight::Overhead => (name, colour),
                 };
-                Series::line(format!("{name}, {light_name}"), pts, PALETTE[colour])
+                Series::line(format!("{name}, {light_name}"), pts, colour)
             };
             c.series.push(match light {
                 SchemeLight::Overhead => s,
@@ -327,12 +333,13 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
         "(b) behind, at the crossover",
         // Padded by half a count, so that the markers at 11 and 23 maps are whole.
         Axis::integer("number of shadow maps", 10.5, 23.5),
-        Axis::linear("S̄ (texels per image pixel)", 25.0, 65.0),
+        // The data's range (30.8 at 21 maps to 55.0 at 13), a little padded.
+        Axis::linear("S̄ (texels per image pixel)", 28.0, 58.0),
     );
     zoom.legend = SeriesLabelPosition::UpperRight;
     for (scheme, name, colour) in [
-        (Scheme::Zp, "ZP = ZP+W, behind", 0),
-        (Scheme::FpZpW, "FP+ZP+W, behind", 2),
+        (Scheme::Zp, "ZP = ZP+W, behind", SHARED),
+        (Scheme::FpZpW, "FP+ZP+W, behind", Look::FpZpW.colour()),
     ] {
         let mut pts = Vec::new();
         for k in 1..=23usize {
@@ -350,9 +357,7 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
             pts
         };
         if scheme == Scheme::FpZpW {
-            let s = Series::line(name, pts, PALETTE[colour])
-                .dashed()
-                .with_markers();
+            let s = Series::line(name, pts, colour).dashed().with_markers();
             zoom.series.push(Series {
                 width: 3,
                 shape: Some(Marker::Hexagon),
@@ -363,18 +368,16 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
             // 37.99): the line unlabelled, its legend key a line sample; the values are written.
             zoom.series.push(Series {
                 label: None,
-                ..Series::line(name, pts, PALETTE[colour]).dashed()
+                ..Series::line(name, pts, colour).dashed()
             });
-            zoom.series.push(
-                Series::line(name, Vec::new(), PALETTE[colour])
-                    .dashed()
-                    .reference(),
-            );
+            zoom.series
+                .push(Series::line(name, Vec::new(), colour).dashed().reference());
         }
     }
     zoom.notes.push(Note {
-        at: (11.4, 33.0),
-        text: format!("{j4} maps: {fp4:.2} against {zp4:.2}"),
+        // Under the 17-map pair it states, inside the plot in both layouts.
+        at: (11.0, 35.0),
+        text: format!("{j4} maps: {fp4:.2} < {zp4:.2}"),
         colour: PALETTE[6],
     });
     c.title = "(a) overhead, behind (dashed)".into();
@@ -453,7 +456,8 @@ pub(super) fn fig13() -> Result<Fig13, Fail> {
     Ok(Fig13 {
         crossover: pts,
         x: Axis::every(
-            "number of shadow maps j = 4k + 1 (k z-partitions per face)",
+            // k, the z-partitions per face, is named in the caption.
+            "shadow maps j = 4k + 1",
             3.0,
             43.0,
             5.0,
@@ -463,49 +467,114 @@ pub(super) fn fig13() -> Result<Fig13, Fail> {
     })
 }
 
-/// Fig 13's fills, in the colours Fig 12 and the worst-case figure give the schemes: ZP in its
-/// blue (PALETTE[0]) where z-partitioning is lowest, FP+ZP+W's green (PALETTE[2]) lightened
-/// where face partitioning is, so that the two also read apart in greyscale (dark and light).
-const ZP_FILL: RGBColor = PALETTE[0];
-const FP_FILL: RGBColor = RGBColor(166, 221, 206);
+/// Fig 13's fills, in the colours every figure gives the schemes ([`Look`]): ZP's where
+/// z-partitioning is lowest, FP+ZP+W's where face partitioning is, the latter hatched in white
+/// ([`HATCH`]) so that the two also read apart in greyscale.
+const ZP_FILL: RGBColor = Look::Zp.colour();
+const FP_FILL: RGBColor = Look::FpZpW.colour();
 
-/// Height of Fig 13's key row, above the chart.
-const KEY_HEIGHT: u32 = 30;
+/// The spacing of the white diagonal hatching over FP+ZP+W's fill, in units.
+const HATCH: i32 = 10;
 
-/// Fig 13's key: a swatch of each fill and the crossover dot, each with its meaning, in one row
-/// (it was two boxes inside the chart, over the fills).
+/// Hatches the pixel rectangle `[x0, x1] × [y0, y1]` of `area` (backend units) with white
+/// lines at 45°, [`HATCH`] units apart.
+fn hatch<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    (x0, y0): (i32, i32),
+    (x1, y1): (i32, i32),
+) -> Result<(), Fail> {
+    let (bx, by) = area.get_base_pixel();
+    let (w, h) = (x1 - x0, y1 - y0);
+    if w <= 0 || h <= 0 {
+        return Ok(());
+    }
+    // Lines x − x0 + (y1 − y) = c for c along the diagonal, each clipped to the rectangle.
+    let mut c = HATCH / 2;
+    while c < w + h {
+        let (a, b) = ((c - h).max(0), c.min(w));
+        let p = (x0 + a - bx, y1 - (c - a) - by);
+        let q = (x0 + b - bx, y1 - (c - b) - by);
+        area.draw(&PathElement::new(vec![p, q], WHITE.stroke_width(2)))?;
+        c += HATCH;
+    }
+    Ok(())
+}
+
+/// Fig 13's key entries: text and fill (none: the crossover dot).
+const FIG13_KEY: [(&str, Option<RGBColor>); 3] = [
+    ("ZP lowest", Some(ZP_FILL)),
+    ("FP+ZP+W lowest", Some(FP_FILL)),
+    ("equal S̄", None),
+];
+
+/// Fig 13's key laid out on a row `width` units wide: the entries' widths and the rows (ranges
+/// of entries), as many on a row as fit.
+fn fig13_key_rows<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    width: i32,
+) -> Result<(Vec<i32>, Vec<std::ops::Range<usize>>), Fail> {
+    let style = TextStyle::from((FONT, 13).into_font());
+    let (swatch, gap, between) = (14, 5, 18);
+    let widths = FIG13_KEY
+        .iter()
+        .map(|(t, _)| {
+            area.estimate_text_size(t, &style)
+                .map(|s| swatch + gap + s.0 as i32)
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut rows = Vec::new();
+    let (mut start, mut used) = (0, 0);
+    for (i, w) in widths.iter().enumerate() {
+        if i > start && used + between + w > width {
+            rows.push(start..i);
+            (start, used) = (i, 0);
+        }
+        used += if i > start { between } else { 0 } + w;
+    }
+    rows.push(start..widths.len());
+    Ok((widths, rows))
+}
+
+/// Height of one row of Fig 13's key.
+const KEY_ROW: u32 = 22;
+
+/// Fig 13's key: a swatch of each fill and the crossover dot, each with its meaning, in as few
+/// rows as fit, centred, above the chart (it was two boxes inside the chart, over the fills).
 fn draw_fig13_key<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
     let style = TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
-    let (w, h) = area.dim_in_pixel();
-    let y = h as i32 / 2;
-    let entries: [(&str, Option<RGBColor>); 3] = [
-        ("ZP / ZP+W lowest", Some(ZP_FILL)),
-        ("FP+ZP+W lowest", Some(FP_FILL)),
-        ("equal S̄", None),
-    ];
-    let widths = entries
-        .iter()
-        .map(|(t, _)| area.estimate_text_size(t, &style).map(|s| s.0 as i32))
-        .collect::<Result<Vec<_>, _>>()?;
+    let (w, _) = area.dim_in_pixel();
+    let (widths, rows) = fig13_key_rows(area, w as i32 - 8)?;
     let (swatch, gap, between) = (14, 5, 18);
-    let total: i32 = widths.iter().map(|t| swatch + gap + t).sum::<i32>() + between * 2;
-    let mut x = (w as i32 - total) / 2;
-    for ((text, fill), tw) in entries.into_iter().zip(widths) {
-        match fill {
-            Some(c) => {
-                area.draw(&Rectangle::new(
-                    [(x, y - swatch / 2), (x + swatch, y + swatch / 2)],
-                    c.filled(),
-                ))?;
-                area.draw(&Rectangle::new(
-                    [(x, y - swatch / 2), (x + swatch, y + swatch / 2)],
-                    RGBColor(120, 120, 120).stroke_width(1),
-                ))?;
+    for (r, row) in rows.into_iter().enumerate() {
+        let y = 4 + (KEY_ROW as i32) * r as i32 + KEY_ROW as i32 / 2;
+        let total: i32 = widths[row.clone()].iter().sum::<i32>() + between * (row.len() as i32 - 1);
+        let mut x = (w as i32 - total) / 2;
+        for i in row {
+            let (text, fill) = FIG13_KEY[i];
+            match fill {
+                Some(c) => {
+                    area.draw(&Rectangle::new(
+                        [(x, y - swatch / 2), (x + swatch, y + swatch / 2)],
+                        c.filled(),
+                    ))?;
+                    if c == FP_FILL {
+                        let (bx, by) = area.get_base_pixel();
+                        hatch(
+                            area,
+                            (x + bx, y - swatch / 2 + by),
+                            (x + swatch + bx, y + swatch / 2 + by),
+                        )?;
+                    }
+                    area.draw(&Rectangle::new(
+                        [(x, y - swatch / 2), (x + swatch, y + swatch / 2)],
+                        RGBColor(120, 120, 120).stroke_width(1),
+                    ))?;
+                }
+                None => area.draw(&Circle::new((x + swatch / 2, y), 4, PALETTE[6].filled()))?,
             }
-            None => area.draw(&Circle::new((x + swatch / 2, y), 4, PALETTE[6].filled()))?,
+            area.draw(&Text::new(text, (x + swatch + gap, y), style.clone()))?;
+            x += widths[i] + between;
         }
-        area.draw(&Text::new(text, (x + swatch + gap, y), style.clone()))?;
-        x += swatch + gap + tw + between;
     }
     Ok(())
 }
@@ -513,6 +582,11 @@ fn draw_fig13_key<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(
 impl Figure for Fig13 {
     fn size(&self) -> (u32, u32) {
         (520, 570)
+    }
+
+    /// One column: the chart under a key of two rows, above a caption of about ten lines.
+    fn single_size(&self) -> Option<(u32, u32)> {
+        Some((Column::Single.width(), 720))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -533,11 +607,14 @@ impl Figure for Fig13 {
         );
         let body = frame(
             root,
-            "Which partitioning has the lowest error, light behind the viewer",
+            "Lowest-error partitioning, light behind",
             &[caption.as_str()],
         )?;
-        // The key above the chart, where it covers nothing.
-        let (key, plot) = body.split_vertically(KEY_HEIGHT);
+        // The key above the chart, where it covers nothing, in as many rows as it needs.
+        let rows = fig13_key_rows(&body, body.dim_in_pixel().0 as i32 - 8)?
+            .1
+            .len() as u32;
+        let (key, plot) = body.split_vertically(KEY_ROW * rows + 8);
         draw_fig13_key(&key)?;
         let mut chart = build_chart(&plot, "", &self.x, &self.y, true)?;
         let (y0, y1) = self.y.range();
@@ -551,6 +628,11 @@ impl Figure for Fig13 {
                 Rectangle::new([(j - half, mid), (j + half, y1)], ZP_FILL.filled()),
                 Rectangle::new([(j - half, y0), (j + half, mid)], FP_FILL.filled()),
             ])?;
+            let (a, b) = (
+                chart.backend_coord(&(j - half, mid)),
+                chart.backend_coord(&(j + half, y0)),
+            );
+            hatch(&chart.plotting_area().strip_coord_spec(), a, b)?;
             if ry <= y1 {
                 chart.draw_series(std::iter::once(Circle::new(
                     (j, ry),

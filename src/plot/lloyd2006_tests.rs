@@ -50,7 +50,7 @@ fn fig13_key_lies_above_the_chart() {
     };
     let top = y_of(&|t| t == "106");
     assert_eq!(top.len(), 1, "{svg}");
-    for key in ["ZP / ZP+W lowest", "FP+ZP+W lowest"] {
+    for key in ["ZP lowest", "FP+ZP+W lowest"] {
         let ys = y_of(&|t| t.contains(key));
         assert_eq!(ys.len(), 1, "{key}");
         assert!(

@@ -157,6 +157,7 @@ pub const SINGLE_COLUMN: &[&str] = &[
     "martin-tan-fig6",
     "lloyd2005-fig7",
     "zhang-fig3",
+    "lloyd2006-fig13",
 ];
 
 /// What went wrong while rendering a figure.

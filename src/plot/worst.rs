@@ -6,7 +6,7 @@
 //! [`crate::scheme::sweep::sweep`] on each scheme's own matrices and sets it against the
 //! closed form behind ([`crate::analytic::partition::scheme_storage_factor`], Eq 20, 21).
 
-use super::chart::{fmt_plain, Axis, Charts, LineChart, Series, PALETTE};
+use super::chart::{fmt_plain, Axis, Charts, LineChart, Look, Series, SHARED};
 use super::Fail;
 use crate::analytic::partition::{scheme_storage_factor, Scheme, SchemeLight};
 use crate::maps::WarpRule;
@@ -28,8 +28,8 @@ pub(super) const SCHEMES: [(&str, Scheme, WarpRule, Partition); 3] = [
     ("FP+ZP+W", Scheme::FpZpW, WarpRule::Lispsm, Partition::Faces),
 ];
 
-/// The neutral colour of the light-behind curve ZP and ZP+W share.
-const SHARED: RGBColor = RGBColor(90, 90, 90);
+/// Each scheme's colour, as every figure draws it.
+const LOOKS: [Look; 3] = [Look::Zp, Look::ZpW, Look::FpZpW];
 
 /// The grey of the paper's band 2–3 in the ratio panel.
 const BAND: RGBColor = RGBColor(225, 225, 225);
@@ -52,7 +52,8 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
     abs.legend = SeriesLabelPosition::UpperRight;
     ratio.legend = SeriesLabelPosition::UpperRight;
     let mut extremes = Vec::new();
-    for (c, (name, scheme, rule, partition)) in SCHEMES.into_iter().enumerate() {
+    for ((name, scheme, rule, partition), look) in SCHEMES.into_iter().zip(LOOKS) {
+        let colour = look.colour();
         let mut worst = Vec::new();
         let mut behind = Vec::new();
         let mut r = Vec::new();
@@ -73,36 +74,40 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
             Scheme::Zp => (format!("{name}, worst (measured)"), None),
             Scheme::ZpW => (
                 format!("{name}, worst (measured)"),
-                Some("ZP, ZP+W behind (Eq 20)".to_string()),
+                Some("ZP = ZP+W, behind (Eq 20)".to_string()),
             ),
             _ => (format!("{name}, worst = behind"), None),
         };
         abs.series
-            .push(Series::line(worst_label, worst, PALETTE[c]).with_markers());
-        let mut b = Series::line(String::new(), behind, PALETTE[c]).dashed();
+            .push(Series::line(worst_label, worst, colour).with_markers());
+        let mut b = Series::line(String::new(), behind, colour).dashed();
         b.label = behind_label;
         if matches!(scheme, Scheme::Zp | Scheme::ZpW) {
-            // One curve for two schemes (ZP+W equals ZP behind): a neutral dashed grey, not
-            // either scheme's colour, drawn twice alike, so that what shows is what the key
-            // "ZP, ZP+W behind" shows.
+            // One curve for two schemes (ZP+W equals ZP behind): the neutral dashed grey of
+            // shared curves, not either scheme's colour, drawn twice alike, so that what shows
+            // is what the key "ZP = ZP+W, behind" shows.
             b.colour = SHARED;
         }
         abs.series.push(b);
         ratio
             .series
-            .push(Series::line(name.to_string(), r, PALETTE[c]).with_markers());
+            .push(Series::line(name.to_string(), r, colour).with_markers());
     }
     ratio.bands.push((2.0, 3.0, BAND));
-    // The band's edges, dotted in black over the data (ZP's ratio, 1.998, lies on the lower
-    // edge), unlabelled; the key is a swatch of the band's grey (a wide line sample).
-    for v in [2.0, 3.0] {
-        ratio.series.push(Series {
-            label: None,
-            width: 1,
-            ..Series::line("", vec![(1.0, v), (8.0, v)], RGBColor(0, 0, 0))
-                .dotted()
-                .reference()
-        });
+    // The band's edges, dotted in black under the data (drawn first: ZP's ratio, 1.998, runs
+    // along the lower edge and is drawn over it), unlabelled; the key is a swatch of the band's
+    // grey (a wide line sample).
+    for v in [3.0, 2.0] {
+        ratio.series.insert(
+            0,
+            Series {
+                label: None,
+                width: 1,
+                ..Series::line("", vec![(1.0, v), (8.0, v)], RGBColor(0, 0, 0))
+                    .dotted()
+                    .reference()
+            },
+        );
     }
     ratio.series.push(Series {
         width: 10,
@@ -193,7 +198,7 @@ mod tests {
 
     /// The review's items (issue 25): the ratio panel's range holds its data without a mostly
     /// empty decade (0.8 to 6, every ratio inside), labelled at 1, 2, 3 and 5; the band's key is a swatch (a wide sample in
-    /// the band's own grey) and its edges are drawn after the data in a colour no data line
+    /// the band's own grey) and its edges are drawn under the data in a colour no data line
     /// has; every dashed behind curve of the upper panel is drawn as its one key shows it.
     #[test]
     fn ratio_panel_fits_and_keys_match_the_drawing() {
@@ -225,17 +230,19 @@ mod tests {
             .find(|s| s.label.as_deref() == Some("the paper's 2–3×"))
             .unwrap();
         assert!(key.colour == band && key.width >= 8 && key.points.is_empty());
-        let last_data = ratio.series.iter().rposition(|s| !s.reference).unwrap();
+        // The band and its edges lie under the data (issue 35): the edges are drawn before
+        // every data series.
+        let first_data = ratio.series.iter().position(|s| !s.reference).unwrap();
         for (i, s) in ratio.series.iter().enumerate() {
             if s.reference && !s.points.is_empty() {
-                assert!(i > last_data && s.label.is_none());
+                assert!(i < first_data && s.label.is_none());
                 assert!(data.iter().all(|d| d.colour != s.colour) && s.colour != band);
             }
         }
         let key = abs
             .series
             .iter()
-            .find(|s| s.label.as_deref() == Some("ZP, ZP+W behind (Eq 20)"))
+            .find(|s| s.label.as_deref() == Some("ZP = ZP+W, behind (Eq 20)"))
             .unwrap();
         // Series 1 is ZP behind, equal to ZP+W's (the key's) curve: drawn as the key shows
         // (it was a wider blue line under the orange dashes).
@@ -245,10 +252,7 @@ mod tests {
             (key.colour, key.width, key.dash)
         );
         // The shared curve is neutral (issue 35): the colour of neither scheme.
-        assert!(SCHEMES
-            .iter()
-            .enumerate()
-            .all(|(c, _)| key.colour != PALETTE[c]));
+        assert!(LOOKS.iter().all(|l| key.colour != l.colour()));
     }
 
     /// The caption never prints a degenerate range "X to X" (issue 25: "ZP 1.949 to 1.949",
@@ -295,7 +299,12 @@ mod tests {
             zpw.1
         );
         assert!((4.6e6..4.8e6).contains(&lispsm), "{lispsm}");
-        let ratio = fig.charts[1].series[1].points[0].1;
+        let zpw_ratio = fig.charts[1]
+            .series
+            .iter()
+            .find(|s| s.label.as_deref() == Some("ZP+W"))
+            .unwrap();
+        let ratio = zpw_ratio.points[0].1;
         assert!((ratio - lispsm / 1e6).abs() < 1e-9, "{ratio}");
     }
 }

@@ -6,6 +6,7 @@
 
 use shadow_aliasing::plot::{render_with, Column, Format, Options, FIGURES, SINGLE_COLUMN};
 use std::path::Path;
+use std::sync::OnceLock;
 
 /// The PNG draws text 1.24/1.164 times the SVG's size (plotters' size s is `font-size` s/1.24
 /// in the SVG and an em of s/1.164 in the bitmap): widths are measured at the PNG's, the wider.
@@ -130,13 +131,14 @@ fn width(font: &Font, content: &str, size: f64) -> f64 {
     w + run(rest, size)
 }
 
-/// A `<text>`: its visible content (tags removed), anchor, font size, and its box on the page
+/// A `<text>`: its tag, visible content (tags removed), anchor, font size, and its box on the page
 /// [x0, y0, x1, y1]: across, its measured width at the PNG's size from its anchor; up and down,
 /// from DejaVu Sans' cap height (0.73 em) above its baseline to its descent (0.24 em) below,
 /// the baseline placed by the `dy` the SVG writer gives each vertical anchor. A text rotated
 /// by 90° or 270° has the box turned about its anchor.
 #[derive(Debug, Clone)]
 pub struct Text {
+    pub tag: String,
     pub content: String,
     pub x: f64,
     pub y: f64,
@@ -173,7 +175,20 @@ pub fn texts(font: &Font, svg: &str) -> Vec<Text> {
             _ => 0.0,
         };
         let (a0, a1) = (-before, w - before);
-        let (b0, b1) = (base - 0.73 * fs, base + 0.24 * fs);
+        // Up and down: each `<tspan>` moves the baseline by its `dy` (cumulative) and has its
+        // own size; a raised superscript reaches above the main text's capitals.
+        let (mut b0, mut b1) = (base - 0.73 * fs, base + 0.24 * fs);
+        let mut shift = 0.0;
+        let mut rest = content;
+        while let Some(i) = rest.find("<tspan") {
+            let tag_end = i + rest[i..].find('>').unwrap();
+            let t = &rest[i..tag_end];
+            shift += attr(t, "dy").unwrap_or(0.0);
+            let f = attr(t, "font-size").unwrap_or(fs);
+            b0 = f64::min(b0, base + shift - 0.73 * f);
+            b1 = f64::max(b1, base + shift + 0.24 * f);
+            rest = &rest[tag_end..];
+        }
         let (rotated, bbox) = if tag.contains("rotate(270") {
             (true, [x + b0, y - a1, x + b1, y - a0])
         } else if tag.contains("rotate(90") {
@@ -192,6 +207,7 @@ pub fn texts(font: &Font, svg: &str) -> Vec<Text> {
             }
         }
         out.push(Text {
+            tag: tag.to_string(),
             content: unescape(&visible),
             x,
             y,
@@ -307,33 +323,52 @@ pub fn within(points: &[(f64, f64)], r: &Box4) -> bool {
 }
 
 /// Every figure's SVG in every layout: (name, layout, svg), captioned across two columns and
-/// in one, and bare across two columns.
-pub fn all_svgs(tag: &str) -> Vec<(String, String, String)> {
-    let mut out = Vec::new();
-    for (column, bare, names) in [
-        (Column::Double, false, FIGURES),
-        (Column::Single, false, SINGLE_COLUMN),
-        (Column::Double, true, FIGURES),
-    ] {
-        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
-            "figures-style-{tag}-{column:?}-{bare}-{}",
-            std::process::id()
-        ));
-        let opts = Options {
-            bare,
-            column,
-            ..Options::default()
-        };
-        for name in names {
-            let files = render_with(name, &dir, Format::Svg, &opts).unwrap();
-            let svg = std::fs::read_to_string(&files[0]).unwrap();
-            out.push((
-                name.to_string(),
-                format!("{column:?}{}", if bare { ", bare" } else { "" }),
-                svg,
+/// in one, and bare across two columns; rendered once per test binary.
+pub fn all_svgs() -> &'static [(String, String, String)] {
+    static ALL: OnceLock<Vec<(String, String, String)>> = OnceLock::new();
+    ALL.get_or_init(|| {
+        let mut out = Vec::new();
+        for (column, bare, names) in [
+            (Column::Double, false, FIGURES),
+            (Column::Single, false, SINGLE_COLUMN),
+            (Column::Double, true, FIGURES),
+        ] {
+            let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
+                "figures-style-{column:?}-{bare}-{}",
+                std::process::id()
             ));
+            let opts = Options {
+                bare,
+                column,
+                ..Options::default()
+            };
+            for name in names {
+                let files = render_with(name, &dir, Format::Svg, &opts).unwrap();
+                let svg = std::fs::read_to_string(&files[0]).unwrap();
+                out.push((
+                    name.to_string(),
+                    format!("{column:?}{}", if bare { ", bare" } else { "" }),
+                    svg,
+                ));
+            }
+            let _ = std::fs::remove_dir_all(&dir);
         }
-        let _ = std::fs::remove_dir_all(&dir);
-    }
-    out
+        out
+    })
+}
+
+/// Points (1/72 in) per unit of `svg`'s view box: its `width="…pt"` over the view box's width.
+pub fn points_per_unit(svg: &str) -> f64 {
+    let head = &svg[..svg.find('>').unwrap()];
+    let w: f64 = attr_str(head, "width")
+        .unwrap()
+        .trim_end_matches("pt")
+        .parse()
+        .unwrap();
+    let vb: Vec<f64> = attr_str(head, "viewBox")
+        .unwrap()
+        .split_whitespace()
+        .map(|v| v.parse().unwrap())
+        .collect();
+    w / vb[2]
 }

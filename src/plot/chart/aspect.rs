@@ -36,7 +36,13 @@ pub(crate) fn equal_aspect<DB: DrawingBackend>(
 ) -> Result<(Axis, Axis), Fail> {
     let widen = |a: &Axis, span: f64| {
         let c = 0.5 * (a.min + a.max);
-        Axis::linear(a.label.clone(), c - 0.5 * span, c + 0.5 * span)
+        // Never narrower than asked: (range / w) · w may round below the range.
+        let half = 0.5 * span;
+        Axis::linear(
+            a.label.clone(),
+            (c - half).min(a.min),
+            (c + half).max(a.max),
+        )
     };
     let (mut xa, mut ya) = (x.clone(), y.clone());
     // The tick labels' widths change with the ranges; two rounds settle them.

@@ -456,6 +456,15 @@ pub(crate) fn superscript(e: i64) -> String {
 /// The size of every panel's title, in pixels (one size in every figure).
 pub(crate) const PANEL_TITLE: u32 = 15;
 
+/// The space kept between a panel title and the top of its plot, in units: the top tick
+/// label rises about 8 units above the plot's edge (half its height and a raised exponent),
+/// and at least 4 pt (5 units in one column) must remain under the title
+/// (`top_tick_labels_keep_clear_of_panel_titles`, tests/figures_style_axes.rs).
+pub(crate) const TITLE_GAP: u32 = 8;
+
+/// The length of a tick mark, in units, in every chart.
+pub(crate) const TICK: u32 = 5;
+
 /// Sizes of a chart's text and label areas, in pixels.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) struct ChartStyle {
@@ -504,15 +513,19 @@ pub(crate) fn build_chart_styled<'a, DB: DrawingBackend>(
     let (y0, y1) = y.range();
     let (xb, xl) = x.ticks();
     let (yb, yl) = y.ticks();
-    let mut builder = ChartBuilder::on(area);
+    // The margins, then the title, then [`TITLE_GAP`] under it, as plotters' own caption
+    // would lay them out without the gap.
+    let m = style.margin;
+    let mut inner = area.margin(m, m, m, 2 * m);
+    if !title.is_empty() {
+        inner = inner
+            .titled(title, (FONT, style.title_size))?
+            .margin(TITLE_GAP, 0, 0, 0);
+    }
+    let mut builder = ChartBuilder::on(&inner);
     builder
-        .margin(style.margin)
-        .margin_right(2 * style.margin)
         .x_label_area_size(style.x_label_area)
         .y_label_area_size(style.y_label_area);
-    if !title.is_empty() {
-        builder.caption(title, (FONT, style.title_size));
-    }
     let mut chart =
         builder.build_cartesian_2d(Ticked::new(x0, x1, xb, xl), Ticked::new(y0, y1, yb, yl))?;
     let xf = |v: &f64| x.tick_label(*v);
@@ -525,7 +538,10 @@ pub(crate) fn build_chart_styled<'a, DB: DrawingBackend>(
         .axis_desc_style((FONT, style.desc_size))
         .label_style((FONT, style.tick_size))
         .bold_line_style(RGBColor(205, 205, 205))
-        .light_line_style(RGBColor(238, 238, 238));
+        .light_line_style(RGBColor(238, 238, 238))
+        // One tick length in every panel (plotters' default is 5 % of the plot's size, which
+        // moves the tick labels, and the axis labels' distance from them, panel by panel).
+        .set_all_tick_mark_size(TICK);
     if !grid_lines {
         mesh.disable_mesh();
     }

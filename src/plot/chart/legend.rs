@@ -59,17 +59,7 @@ const CLEAR: f64 = 3.0;
 /// The space between the columns of a legend below its plot.
 const COLUMN_GAP: f64 = 12.0;
 
-/// The legend's size for entries whose texts measure `sizes`, and its row height.
-fn size(sizes: &[(u32, u32)]) -> (f64, f64, f64) {
-    let row = row_height(sizes);
-    let text = sizes.iter().map(|s| f64::from(s.0)).fold(0.0, f64::max);
-    (
-        2.0 * PAD + SAMPLE + GAP + text,
-        2.0 * PAD + row * sizes.len() as f64,
-        row,
-    )
-}
-
+/// The row height of entries whose texts measure `sizes`.
 fn row_height(sizes: &[(u32, u32)]) -> f64 {
     sizes.iter().map(|s| f64::from(s.1)).fold(12.0, f64::max) + 4.0
 }
@@ -187,47 +177,38 @@ struct Grid {
     h: f64,
 }
 
+/// The legend of entries whose texts measure `sizes` in `columns` columns.
+fn in_columns(sizes: &[(u32, u32)], columns: usize) -> Grid {
+    let row = row_height(sizes);
+    let columns = columns.clamp(1, sizes.len().max(1));
+    let cell = |i: usize| SAMPLE + GAP + f64::from(sizes[i].0);
+    let widths: Vec<f64> = (0..columns)
+        .map(|c| {
+            (c..sizes.len())
+                .step_by(columns)
+                .map(cell)
+                .fold(0.0, f64::max)
+        })
+        .collect();
+    let w = 2.0 * PAD + widths.iter().sum::<f64>() + COLUMN_GAP * (columns - 1) as f64;
+    let h = 2.0 * PAD + row * sizes.len().div_ceil(columns).max(1) as f64;
+    Grid {
+        columns,
+        widths,
+        row,
+        w,
+        h,
+    }
+}
+
 /// The most columns (at most one per entry) whose box is no wider than `width`; one column
 /// where even that is wider.
 fn grid(sizes: &[(u32, u32)], width: f64) -> Grid {
-    let row = row_height(sizes);
-    let n = sizes.len().max(1);
-    let cell = |i: usize| SAMPLE + GAP + f64::from(sizes[i].0);
-    let layout = |columns: usize| {
-        let widths: Vec<f64> = (0..columns)
-            .map(|c| {
-                (c..sizes.len())
-                    .step_by(columns)
-                    .map(cell)
-                    .fold(0.0, f64::max)
-            })
-            .collect();
-        let w = 2.0 * PAD + widths.iter().sum::<f64>() + COLUMN_GAP * (columns - 1) as f64;
-        let h = 2.0 * PAD + row * n.div_ceil(columns) as f64;
-        Grid {
-            columns,
-            widths,
-            row,
-            w,
-            h,
-        }
-    };
-    (1..=n)
+    (1..=sizes.len().max(1))
         .rev()
-        .map(layout)
+        .map(|c| in_columns(sizes, c))
         .find(|g| g.w <= width)
-        .unwrap_or_else(|| layout(1))
-}
-
-/// The height a legend of `entries` needs below a plot in `area` (its box and the space above
-/// it), were it to go there.
-fn below_height<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    entries: &[Entry],
-) -> Result<u32, Fail> {
-    let width = f64::from(area.dim_in_pixel().0);
-    let g = grid(&measure(area, entries)?, width - 2.0 * MARGIN);
-    Ok((g.h + 2.0 * MARGIN).ceil() as u32)
+        .unwrap_or_else(|| in_columns(sizes, 1))
 }
 
 /// Where a chart's legend went.
@@ -242,11 +223,13 @@ pub(crate) enum Placed {
 
 /// Draws the legend of `entries` on `plot_area` (a chart's plotting area without its
 /// coordinates) where it covers none of `obstacles` ([`clear_inside`]); failing that, in
-/// `strip` (an area below the chart, centred under the plot) when there is one. Returns where
-/// it went.
+/// `strip` (an area below the chart; centred under the plot where it is no wider, else in the
+/// strip) when there is one. Returns where it went: without a strip, the height a strip
+/// `below_width` units wide would need.
 pub(crate) fn draw_legend_clear<DB: DrawingBackend>(
     plot_area: &DrawingArea<DB, Shift>,
     strip: Option<&DrawingArea<DB, Shift>>,
+    below_width: f64,
     entries: &[Entry],
     preferred: &SeriesLabelPosition,
     obstacles: &Obstacles,
@@ -255,28 +238,28 @@ pub(crate) fn draw_legend_clear<DB: DrawingBackend>(
         return Ok(Placed::Inside);
     }
     let sizes = measure(plot_area, entries)?;
-    let (w, h, row) = size(&sizes);
     let plot = pixel_rect(plot_area);
-    if let Some(r) = clear_inside(preferred, &plot, w, h, obstacles) {
-        let g = Grid {
-            columns: 1,
-            widths: vec![w - 2.0 * PAD],
-            row,
-            w,
-            h,
-        };
-        draw_box(plot_area, entries, &r, &g)?;
-        return Ok(Placed::Inside);
+    // One column, else two or three (a wide, low box may fit above or below the data).
+    for columns in 1..=sizes.len().min(3) {
+        let g = in_columns(&sizes, columns);
+        if let Some(r) = clear_inside(preferred, &plot, g.w, g.h, obstacles) {
+            draw_box(plot_area, entries, &r, &g)?;
+            return Ok(Placed::Inside);
+        }
     }
     let Some(strip) = strip else {
-        return Ok(Placed::Below(below_height(plot_area, entries)?));
+        let g = grid(&sizes, below_width - 2.0 * MARGIN);
+        return Ok(Placed::Below((g.h + 2.0 * MARGIN).ceil() as u32));
     };
     let s = pixel_rect(strip);
     let g = grid(&sizes, s.x1 - s.x0 - 2.0 * MARGIN);
-    // Centred under the plot, kept on the strip.
-    let x0 = (0.5 * (plot.x0 + plot.x1 - g.w))
-        .min(s.x1 - MARGIN - g.w)
-        .max(s.x0 + MARGIN);
+    let x0 = if g.w <= plot.x1 - plot.x0 {
+        0.5 * (plot.x0 + plot.x1 - g.w)
+    } else {
+        0.5 * (s.x0 + s.x1 - g.w)
+    }
+    .min(s.x1 - MARGIN - g.w)
+    .max(s.x0 + MARGIN);
     let y0 = s.y0 + MARGIN;
     let r = Rect {
         x0,

@@ -282,45 +282,59 @@ pub(crate) fn draw_line_chart<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     c: &LineChart,
 ) -> Result<(), Fail> {
-    let below = legend_below(area.dim_in_pixel(), c)?;
+    let size = area.dim_in_pixel();
+    let below = legend_below(size, c, f64::from(size.0))?;
     draw_line_chart_reserving(area, c, below).map(|_| ())
 }
 
-/// The height a chart drawn on an area of `size` units keeps below its plot for its legend:
-/// 0 where the legend finds a place inside the plot that covers no line, marker or label
-/// (the chart is laid out once on a [`super::probe::Probe`] to find out).
-pub(crate) fn legend_below(size: (u32, u32), c: &LineChart) -> Result<u32, Fail> {
+/// The height of a strip `width` units wide that a chart drawn on an area of `size` units
+/// needs below it for its legend: 0 where the legend finds a place inside the plot that covers
+/// no line, marker or label (the chart is laid out once on a [`super::probe::Probe`] to find
+/// out).
+pub(crate) fn legend_below(size: (u32, u32), c: &LineChart, width: f64) -> Result<u32, Fail> {
     if !c.show_legend {
         return Ok(0);
     }
-    Ok(match draw_chart(&probe_area(size), c, None)? {
+    Ok(match draw_chart(&probe_area(size), c, None, width)? {
         Placed::Inside => 0,
         Placed::Below(h) => h,
     })
 }
 
 /// Draws a line chart into `area` with `below` units under it kept for its legend, which goes
-/// there only where no clear place inside the plot exists (panels side by side keep the same
-/// height below, so that their plots line up). Returns where the legend went.
+/// there only where no clear place inside the plot exists. Returns where the legend went.
 pub(crate) fn draw_line_chart_reserving<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     c: &LineChart,
     below: u32,
 ) -> Result<Placed, Fail> {
     if below == 0 {
-        return draw_chart(area, c, None);
+        return draw_line_chart_over(area, c, None);
     }
     let h = area.dim_in_pixel().1;
     let (top, strip) = area.split_vertically(h.saturating_sub(below));
-    draw_chart(&top, c, Some(&strip))
+    draw_line_chart_over(&top, c, Some(&strip))
+}
+
+/// Draws a line chart into `area`, its legend inside the plot where it covers no data, else in
+/// `strip` (an area below it, such as one under a row of panels). Returns where it went.
+pub(crate) fn draw_line_chart_over<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    c: &LineChart,
+    strip: Option<&DrawingArea<DB, Shift>>,
+) -> Result<Placed, Fail> {
+    let width = f64::from(area.dim_in_pixel().0);
+    draw_chart(area, c, strip, width)
 }
 
 /// Draws a line chart into `area`, its legend (if any) where [`draw_legend_clear`] puts it,
-/// in `strip` when it goes below the plot.
+/// in `strip` when it goes below the plot (without a strip: the height one `below_width` wide
+/// would need).
 fn draw_chart<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     c: &LineChart,
     strip: Option<&DrawingArea<DB, Shift>>,
+    below_width: f64,
 ) -> Result<Placed, Fail> {
     let mut chart = build_chart(area, &c.title, &c.x, &c.y, true)?;
     let (x0, x1) = c.x.range();
@@ -477,7 +491,7 @@ fn draw_chart<DB: DrawingBackend>(
         }
     }
     if c.show_legend {
-        draw_legend_clear(&plot, strip, &entries, &c.legend, &obstacles)
+        draw_legend_clear(&plot, strip, below_width, &entries, &c.legend, &obstacles)
     } else {
         Ok(Placed::Inside)
     }

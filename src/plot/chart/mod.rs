@@ -21,6 +21,7 @@ mod probe;
 mod raster;
 #[cfg(test)]
 pub(crate) mod read_svg;
+mod scheme;
 
 pub(crate) use aspect::*;
 pub(crate) use axis::*;
@@ -30,6 +31,7 @@ pub(crate) use label::*;
 pub(crate) use line::*;
 pub(crate) use page::*;
 pub(crate) use raster::{bitmap_density, fit_to_scale};
+pub(crate) use scheme::{Look, SHARED};
 
 /// The font family every figure uses; registered from the compiled-in DejaVu Sans.
 pub(crate) const FONT: &str = "sans-serif";

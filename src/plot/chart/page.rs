@@ -2,7 +2,7 @@
 //! common page of line charts side by side.
 
 use super::super::{Column, Fail};
-use super::line::{draw_line_chart_reserving, legend_below, LineChart};
+use super::line::{draw_line_chart_over, draw_line_chart_reserving, legend_below, LineChart};
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -160,25 +160,56 @@ impl super::super::Figure for Charts {
         // double-column page), stacked otherwise (a single-column page).
         let n = self.charts.len().max(1);
         let columns = (body.dim_in_pixel().0 as usize / 250).clamp(1, n);
-        let panels = body.split_evenly((n.div_ceil(columns), columns));
-        // A legend that finds no clear place in its plot goes below it; the panels of a row
-        // keep the same height below, so that their plots line up.
-        let below = panels
-            .iter()
-            .zip(&self.charts)
-            .map(|(p, c)| legend_below(p.dim_in_pixel(), c))
-            .collect::<Result<Vec<_>, _>>()?;
-        for (i, (panel, chart)) in panels.iter().zip(&self.charts).enumerate() {
-            let row = i / columns * columns;
-            let keep = below[row..(row + columns).min(below.len())]
-                .iter()
-                .copied()
-                .max()
-                .unwrap_or(0);
-            draw_line_chart_reserving(panel, chart, keep)?;
+        let rows = body.split_evenly((n.div_ceil(columns), 1));
+        for (row, charts) in rows.iter().zip(self.charts.chunks(columns)) {
+            draw_row(row, charts, columns)?;
         }
         Ok(())
     }
+}
+
+/// Draws `charts` side by side in `row`, `columns` wide. A legend that finds no clear place in
+/// its plot goes below: where one chart of the row needs that, a strip under the whole row
+/// holds it (a legend shared by the panels is centred under them all); where several do, each
+/// panel keeps the same height under its own plot, so that the plots line up.
+fn draw_row<DB: DrawingBackend>(
+    row: &DrawingArea<DB, Shift>,
+    charts: &[LineChart],
+    columns: usize,
+) -> Result<(), Fail> {
+    let (w, h) = row.dim_in_pixel();
+    let cell = (w / columns as u32, h);
+    let across = charts
+        .iter()
+        .map(|c| legend_below(cell, c, f64::from(w)))
+        .collect::<Result<Vec<_>, _>>()?;
+    let keep = across.iter().copied().max().unwrap_or(0);
+    // One legend below, and still one once the plots are shorter by the strip.
+    let one = keep > 0 && {
+        let shorter = (cell.0, h.saturating_sub(keep));
+        let mut needing = 0;
+        for c in charts {
+            needing += usize::from(legend_below(shorter, c, f64::from(w))? > 0);
+        }
+        needing == 1
+    };
+    if one {
+        let (top, strip) = row.split_vertically(h.saturating_sub(keep));
+        let panels = top.split_evenly((1, columns));
+        for (panel, chart) in panels.iter().zip(charts) {
+            draw_line_chart_over(panel, chart, Some(&strip))?;
+        }
+        return Ok(());
+    }
+    let own = charts
+        .iter()
+        .map(|c| legend_below(cell, c, f64::from(cell.0)))
+        .collect::<Result<Vec<_>, _>>()?;
+    let keep = own.iter().copied().max().unwrap_or(0);
+    for (panel, chart) in row.split_evenly((1, columns)).iter().zip(charts) {
+        draw_line_chart_reserving(panel, chart, keep)?;
+    }
+    Ok(())
 }
 
 #[cfg(test)]

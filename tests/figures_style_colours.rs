@@ -1,0 +1,165 @@
+//! One colour per scheme in every figure (issue 35 item 6: lloyd2006-fig13's palette differed
+//! from fig12's and worst-case's; the review: the uniform map was orange in one figure and sky
+//! blue in another). Every key entry of every figure, in every layout (a legend's or key's black
+//! text naming a scheme, with its sample or swatch just left of it on its row), gives the
+//! scheme's colour; each scheme must have one colour across all figures.
+#![cfg(feature = "plot")]
+
+mod figures_style_read;
+use figures_style_read::*;
+use std::collections::BTreeMap;
+
+/// The scheme a key text names: FP+ZP+W, ZP+W, ZP, LiSPSM, PSM, uniform, Zhang, Barroso; none
+/// for a text naming two (a curve ZP and ZP+W share) or none.
+fn scheme_of(label: &str) -> Option<&'static str> {
+    let tokens: Vec<&str> = label
+        .split(|c: char| !(c.is_alphanumeric() || c == '+'))
+        .filter(|t| !t.is_empty())
+        .collect();
+    let has = |t: &str| tokens.contains(&t);
+    let named: Vec<&'static str> = [
+        ("FP+ZP+W", has("FP+ZP+W")),
+        ("ZP+W", has("ZP+W")),
+        ("ZP", has("ZP")),
+        ("LiSPSM", has("LiSPSM")),
+        ("PSM", has("PSM")),
+        ("uniform", has("uniform")),
+        ("Zhang", has("Zhang")),
+        ("Barroso", has("Barroso")),
+    ]
+    .into_iter()
+    .filter(|p| p.1)
+    .map(|p| p.0)
+    .collect();
+    match named[..] {
+        [one] => Some(one),
+        _ => None,
+    }
+}
+
+/// A coloured mark of an SVG: its colour and its box.
+fn marks(svg: &str) -> Vec<(String, Box4)> {
+    let mut out = Vec::new();
+    let bbox = |pts: &[(f64, f64)]| -> Box4 {
+        let xs = pts.iter().map(|p| p.0);
+        let ys = pts.iter().map(|p| p.1);
+        [
+            xs.clone().fold(f64::INFINITY, f64::min),
+            ys.clone().fold(f64::INFINITY, f64::min),
+            xs.fold(f64::NEG_INFINITY, f64::max),
+            ys.fold(f64::NEG_INFINITY, f64::max),
+        ]
+    };
+    for s in polylines(svg).into_iter().chain(polygons(svg)) {
+        if !s.points.is_empty() {
+            out.push((s.colour, bbox(&s.points)));
+        }
+    }
+    for l in svg.lines().filter(|l| l.starts_with("<rect")) {
+        let fill = attr_str(l, "fill").unwrap_or("none");
+        if let (Some(x), Some(y), Some(w), Some(h)) = (
+            attr(l, "x"),
+            attr(l, "y"),
+            attr(l, "width"),
+            attr(l, "height"),
+        ) {
+            if fill != "none" && fill != "#FFFFFF" && w < 40.0 && h < 40.0 {
+                out.push((fill.to_string(), [x, y, x + w, y + h]));
+            }
+        }
+    }
+    out
+}
+
+/// Each key entry of `svg` naming one scheme: (scheme, colour of the mark nearest left of its
+/// text on its row, at most 40 units away).
+fn key_colours(font: &Font, svg: &str) -> Vec<(&'static str, String)> {
+    let marks = marks(svg);
+    texts(font, svg)
+        .into_iter()
+        .filter(|t| !t.rotated && t.tag.contains("fill=\"#000000\""))
+        .filter_map(|t| {
+            let scheme = scheme_of(&t.content)?;
+            let left = t.bbox[0];
+            let mid = 0.5 * (t.bbox[1] + t.bbox[3]);
+            marks
+                .iter()
+                .filter(|(_, b)| {
+                    let cy = 0.5 * (b[1] + b[3]);
+                    b[2] <= left + 0.5 && b[2] >= left - 40.0 && (cy - mid).abs() <= 6.0
+                })
+                .max_by(|a, b| a.1[2].total_cmp(&b.1[2]))
+                .map(|(c, _)| (scheme, c.clone()))
+        })
+        .collect()
+}
+
+/// The reading itself: a legend row "ZP+W, overhead" with a vermillion sample left of it and
+/// a row "ZP = ZP+W, behind" (two schemes: not counted); the names are read as whole tokens.
+#[test]
+fn key_entries_are_read_with_their_samples() {
+    assert_eq!(scheme_of("ZP+W, overhead"), Some("ZP+W"));
+    assert_eq!(scheme_of("ZP, worst (measured)"), Some("ZP"));
+    assert_eq!(scheme_of("FP+ZP+W lowest"), Some("FP+ZP+W"));
+    assert_eq!(scheme_of("n′ ≈ 5.47 (LiSPSM)"), Some("LiSPSM"));
+    assert_eq!(scheme_of("n′ = n = 1 (PSM)"), Some("PSM"));
+    assert_eq!(scheme_of("ZP = ZP+W, behind"), None);
+    assert_eq!(scheme_of("n′ = 20"), None);
+    let font = Font::dejavu();
+    let svg = "<svg width=\"200pt\" height=\"100pt\" viewBox=\"0 0 200 100\">\n\
+               <polyline fill=\"none\" stroke=\"#D55E00\" points=\"10,20 34,20\"/>\n\
+               <text x=\"40\" y=\"20\" dy=\"0.5ex\" font-size=\"10\" fill=\"#000000\">ZP+W, overhead</text>\n\
+               <polyline fill=\"none\" stroke=\"#5A5A5A\" points=\"10,40 34,40\"/>\n\
+               <text x=\"40\" y=\"40\" dy=\"0.5ex\" font-size=\"10\" fill=\"#000000\">ZP = ZP+W, behind</text>\n\
+               <rect x=\"10\" y=\"53\" width=\"14\" height=\"14\" fill=\"#009E73\"/>\n\
+               <text x=\"30\" y=\"60\" dy=\"0.5ex\" font-size=\"10\" fill=\"#000000\">FP+ZP+W lowest</text>\n\
+               </svg>";
+    assert_eq!(
+        key_colours(&font, svg),
+        vec![
+            ("ZP+W", "#D55E00".to_string()),
+            ("FP+ZP+W", "#009E73".to_string())
+        ]
+    );
+}
+
+/// Every figure in every layout: each scheme named in a key has one colour everywhere, and
+/// the schemes of lloyd2006-fig12, fig13, worst-case, fig5 and barroso-fig7 are all found
+/// (ZP, ZP+W and FP+ZP+W in at least two figures each).
+#[test]
+fn one_colour_per_scheme_in_every_figure() {
+    let font = Font::dejavu();
+    let mut seen: BTreeMap<&str, BTreeMap<String, Vec<String>>> = BTreeMap::new();
+    for (name, layout, svg) in all_svgs() {
+        for (scheme, colour) in key_colours(&font, svg) {
+            seen.entry(scheme)
+                .or_default()
+                .entry(colour)
+                .or_default()
+                .push(format!("{name} ({layout})"));
+        }
+    }
+    let figures = |s: &str| -> usize {
+        let mut names: Vec<String> = seen
+            .get(s)
+            .into_iter()
+            .flat_map(|m| m.values().flatten())
+            .map(|w| w.split(' ').next().unwrap().to_string())
+            .collect();
+        names.sort();
+        names.dedup();
+        names.len()
+    };
+    for s in ["ZP", "ZP+W", "FP+ZP+W"] {
+        assert!(figures(s) >= 2, "{s} in {} figures: {seen:?}", figures(s));
+    }
+    for s in ["LiSPSM", "PSM", "uniform", "Zhang", "Barroso"] {
+        assert!(figures(s) >= 1, "{s} not found: {seen:?}");
+    }
+    let bad: Vec<String> = seen
+        .iter()
+        .filter(|(_, colours)| colours.len() > 1)
+        .map(|(s, colours)| format!("{s}: {colours:?}"))
+        .collect();
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}
