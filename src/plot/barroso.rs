@@ -108,14 +108,15 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
     phi_line.label = None;
     phi_line.width = 1;
     c.series.push(phi_line);
-    // Each angle labelled near the bottom, beside its line, with an arrow pointing at it.
+    // Each angle labelled beside its line, with an arrow pointing at it: γ_lim near the bottom,
+    // φ_y near the top, clear of n′₂ (which falls to 0 left of φ_y).
     c.notes.push(Note {
         at: (gl_deg + 0.6, 2.6),
         text: format!("← γ_{{lim}} = {gl_deg:.1}° (Eq 15)"),
         colour: PALETTE[6],
     });
     c.notes.push(Note {
-        at: (phi_deg - 19.0, 1.55),
+        at: (phi_deg - 19.0, 2500.0),
         text: format!("φ_y = {phi_deg:.0}° →"),
         colour: grey,
     });

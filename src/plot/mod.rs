@@ -140,8 +140,10 @@ pub const FIGURES: &[&str] = &[
     "lloyd2005-fig8",
 ];
 
-/// The figures that have a single-column layout ([`Column::Single`]), their panels stacked
-/// (lloyd2006-fig10's direct labels do not yet find room there). The others are refused in one column with [`PlotError::InvalidOption`].
+/// The figures that have a single-column layout ([`Column::Single`]), their panels stacked:
+/// all but lloyd2006-fig4 (eight equal-aspect panels need about 990 units of height at 300
+/// wide) and lloyd2006-fig10 (its direct labels do not yet find room there), which are refused
+/// in one column with [`PlotError::InvalidOption`].
 pub const SINGLE_COLUMN: &[&str] = &[
     "lloyd2005-fig4",
     "lloyd2006-fig5",

@@ -15,8 +15,10 @@ use crate::scheme::Partition;
 use crate::ViewFrustum;
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 
-/// Elevation rows and azimuth columns of each sweep: Fig 7's directions (every 2° of elevation
-/// and of azimuth), so that the worst case of a scheme drawn in both is the same number.
+/// Elevation rows and azimuth columns of each sweep: every 2° of elevation and of azimuth, every
+/// second row and column of Fig 7's 1° grid; the worst case of ZP+W at k = 1, Fig 7's LiSPSM
+/// panel, falls on this grid, so both figures print the same number
+/// (`worst_case_is_fig7s_maximum`).
 pub(super) use super::hemisphere::{AZIMUTHS, ELEVATIONS};
 /// The numbers of z-partitions compared.
 pub(super) const KS: [usize; 6] = [1, 2, 3, 4, 6, 8];
