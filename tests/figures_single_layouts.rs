@@ -28,7 +28,10 @@ fn svg(name: &str, column: Column) -> String {
 /// The number in the attribute `name` of `tag`.
 fn attr(tag: &str, name: &str) -> f64 {
     let key = format!(" {name}=\"");
-    let at = tag.find(&key).unwrap_or_else(|| panic!("no {name} in {tag}")) + key.len();
+    let at = tag
+        .find(&key)
+        .unwrap_or_else(|| panic!("no {name} in {tag}"))
+        + key.len();
     tag[at..at + tag[at..].find('"').unwrap()]
         .trim_end_matches("pt")
         .parse()
@@ -109,9 +112,18 @@ fn lloyd2006_fig7_has_two_hemispheres_a_row_in_one_column() {
     let s = svg("lloyd2006-fig7", Column::Single);
     assert_eq!(width(&s), 300.0);
     let [a, b, c, d, e] = ["(a)", "(b)", "(c)", "(d)", "(e)"].map(|l| text_at(&s, l));
-    assert!((a.1 - b.1).abs() <= 1.0 && b.0 - a.0 >= 120.0, "{a:?} {b:?}");
-    assert!((c.1 - d.1).abs() <= 1.0 && d.0 - c.0 >= 120.0, "{c:?} {d:?}");
-    assert!((a.0 - c.0).abs() <= 1.0 && c.1 - a.1 >= 120.0, "{a:?} {c:?}");
+    assert!(
+        (a.1 - b.1).abs() <= 1.0 && b.0 - a.0 >= 120.0,
+        "{a:?} {b:?}"
+    );
+    assert!(
+        (c.1 - d.1).abs() <= 1.0 && d.0 - c.0 >= 120.0,
+        "{c:?} {d:?}"
+    );
+    assert!(
+        (a.0 - c.0).abs() <= 1.0 && c.1 - a.1 >= 120.0,
+        "{a:?} {c:?}"
+    );
     assert!(e.1 - c.1 >= 120.0, "{c:?} {e:?}");
 }
 
@@ -135,10 +147,7 @@ fn hemisphere_colour_bars_are_as_tall_as_their_disks() {
         for column in [Column::Double, Column::Single] {
             let s = svg(name, column);
             let all = images(&s);
-            let disks: Vec<_> = all
-                .iter()
-                .filter(|i| (i.2 - i.3).abs() <= 2.0)
-                .collect();
+            let disks: Vec<_> = all.iter().filter(|i| (i.2 - i.3).abs() <= 2.0).collect();
             let bars: Vec<_> = all.iter().filter(|i| i.3 > 3.0 * i.2).collect();
             assert!(!disks.is_empty() && !bars.is_empty(), "{name} {column:?}");
             for bar in &bars {
