@@ -599,7 +599,6 @@ fn lloyd2006_worst_case() {
             ("1000", N::Given("f/n")),
             ("30", N::Given("θ")),
             ("2", N::Given("the sweep's step in degrees")),
-            ("7", N::Given("Fig. 7")),
             ("20", N::Given("Eq 20")),
             ("21", N::Given("Eq 21")),
             (

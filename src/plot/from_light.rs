@@ -197,7 +197,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
          z-partitions, n = {n}, f = {f}, φ = {phi:.0}°. (a) Light perpendicular to the view, (b) \
          parallel: Eq 5's self-similar partitions, z = {}. (c), not in the paper: Eq 19's adaptive \
          ones for a light {gamma_deg:.0}° from the view (α = {ADAPTIVE_RATIO}), z = {}. (d)–(f) \
-         enlarge (a)–(c) near the eye. Dashed: the maps.",
+         enlarge (a)–(c) near the eye. Dashed and dotted: the maps.",
         fmt_planes(ss.planes()),
         fmt_planes(ad.planes()),
         n = view.near(),
@@ -208,7 +208,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 5: k = {k} z-partitions, n = {n}, f = {f}, φ = {phi:.0}°. \
          (a) Light perpendicular, (b) parallel: Eq 5. (c) Eq 19 (not in the paper), light at \
-         {gamma_deg:.0}°, α = {ADAPTIVE_RATIO}. (d)–(f) enlarge (a)–(c). Dashed: maps.",
+         {gamma_deg:.0}°, α = {ADAPTIVE_RATIO}. (d)–(f) enlarge (a)–(c). Dashed, dotted: maps.",
         n = view.near(),
         f = view.far(),
         phi = view.half_fov().to_degrees(),
