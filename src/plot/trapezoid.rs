@@ -428,7 +428,7 @@ impl Figure for Fig3 {
                 if single {
                     "(b) T's space"
                 } else {
-                    "(b) trapezoidal space (N_T )"
+                    "(b) trapezoidal space (N_{T})"
                 },
                 TRAP,
                 Stroke::Solid,
