@@ -1,7 +1,7 @@
-//! Reading back the figures' SVGs for the style tests (tests/figures_style_*.rs): their texts
-//! measured with DejaVu Sans' own advance widths (read here from the font file's `cmap` and
-//! `hmtx` tables, not from the crate), their polylines, marker polygons and legend boxes, and
-//! the figures rendered in every layout.
+//! Reading back the figures' SVGs for the style and text-fit tests (tests/figures_style_*.rs,
+//! tests/figures_text_fit.rs): their texts measured with DejaVu Sans' own advance widths (read
+//! here from the font file's `cmap` and `hmtx` tables, not from the crate), their polylines,
+//! marker polygons and legend boxes, and the figures rendered in every layout.
 #![allow(dead_code)]
 
 use shadow_aliasing::plot::{render_with, Column, Format, Options, FIGURES, SINGLE_COLUMN};
@@ -116,7 +116,7 @@ pub fn unescape(s: &str) -> String {
 }
 
 /// The width of a `<text>`'s content at font size `size` (each `<tspan>` at its own size).
-fn width(font: &Font, content: &str, size: f64) -> f64 {
+pub fn width(font: &Font, content: &str, size: f64) -> f64 {
     let run = |s: &str, fs: f64| unescape(s).chars().map(|c| font.advance(c)).sum::<f64>() * fs;
     let mut w = 0.0;
     let mut rest = content;
