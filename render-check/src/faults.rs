@@ -390,15 +390,7 @@ impl Fault {
                 let n_b = body.iter().map(|v| -v.z).fold(f64::INFINITY, f64::min);
                 let f_b = body.iter().map(|v| -v.z).fold(f64::NEG_INFINITY, f64::max);
                 let fr = &view.frustum;
-                let focus = DVec3::new(
-                    0.0,
-                    0.0,
-                    -crate::papers::tsm_focus_depth(
-                        crate::papers::TSM_FOCUS_SHARE * (fr.far() - fr.near()),
-                        (n_b, f_b),
-                        (fr.near(), fr.far()),
-                    ),
-                );
+                let focus = crate::papers::tsm_focus_point((n_b, f_b), (fr.near(), fr.far()));
                 let (lambda, delta) = (hi - lo, axis.dot(focus) - lo);
                 let k = crate::papers::tsm_eta(lambda, delta, TSM_XI)
                     / crate::papers::tsm_eta(lambda, delta, -0.6);

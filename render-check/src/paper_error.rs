@@ -125,15 +125,7 @@ pub fn paper_n_prime(scheme: Scheme, view: &View, body: &[DVec3]) -> Option<f64>
         Scheme::Tsm => {
             let axis = crate::papers::warp_axis(light)?;
             let fr = &view.frustum;
-            let focus = DVec3::new(
-                0.0,
-                0.0,
-                -crate::papers::tsm_focus_depth(
-                    crate::papers::TSM_FOCUS_SHARE * (fr.far() - fr.near()),
-                    (n_b, f_b),
-                    (fr.near(), fr.far()),
-                ),
-            );
+            let focus = crate::papers::tsm_focus_point((n_b, f_b), (fr.near(), fr.far()));
             let a = body.iter().map(|v| axis.dot(*v));
             let lo = a.clone().fold(f64::INFINITY, f64::min);
             let hi = a.fold(f64::NEG_INFINITY, f64::max);

@@ -54,6 +54,17 @@ pub fn tsm_focus_depth(delta: f64, (n_b, f_b): (f64, f64), (n, f): (f64, f64)) -
 /// The focus distance δ render-check asks TSM for: a quarter of the camera's depth range.
 pub const TSM_FOCUS_SHARE: f64 = 0.25;
 
+/// The eye-space focus point render-check's TSM is asked for: on the view axis at
+/// [`tsm_focus_depth`], δ being [`TSM_FOCUS_SHARE`] of the camera's depth range `(n, f)` and
+/// `(n_b, f_b)` the focus body's eye depths.
+pub fn tsm_focus_point(body: (f64, f64), (n, f): (f64, f64)) -> DVec3 {
+    DVec3::new(
+        0.0,
+        0.0,
+        -tsm_focus_depth(TSM_FOCUS_SHARE * (f - n), body, (n, f)),
+    )
+}
+
 /// Martin & Tan §4.2: the distance η of the centre of projection before the top line that maps
 /// the focus line, δ′ beyond the top line of a trapezoid of height λ, to ξ (on [1, −1]):
 /// `η = λ δ′ (1 + ξ) / (λ − 2 δ′ − λ ξ)`.

@@ -246,15 +246,7 @@ pub(crate) fn warp_measures(
             any = true;
         } else {
             let fr = &view.frustum;
-            let focus = DVec3::new(
-                0.0,
-                0.0,
-                -crate::papers::tsm_focus_depth(
-                    crate::papers::TSM_FOCUS_SHARE * (fr.far() - fr.near()),
-                    (n_b, f_b),
-                    (fr.near(), fr.far()),
-                ),
-            );
+            let focus = crate::papers::tsm_focus_point((n_b, f_b), (fr.near(), fr.far()));
             let af = axis.dot(focus);
             let c = warp.warp_coordinate();
             let x = |p: DVec3| {
