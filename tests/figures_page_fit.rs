@@ -5,6 +5,8 @@
 //! five).
 #![cfg(feature = "plot")]
 
+mod figures_style_read;
+use figures_style_read::render_svg;
 use shadow_aliasing::plot::{
     render_with, Column, Format, Options, PlotError, FIGURES, SINGLE_COLUMN,
 };
@@ -18,21 +20,13 @@ const CAP: f64 = 640.0;
 const OVER: &[(&str, &str)] = &[];
 
 fn svg(name: &str, bare: bool) -> String {
-    // One folder per call: tests rendering the same figure at once must not share it.
-    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
-        "figures-page-fit-{name}-{bare}-{}-{call}",
-        std::process::id()
-    ));
-    let opts = Options {
-        bare,
-        ..Options::default()
-    };
-    let files = render_with(name, &dir, Format::Svg, &opts).unwrap();
-    let s = std::fs::read_to_string(&files[0]).unwrap();
-    let _ = std::fs::remove_dir_all(&dir);
-    s
+    render_svg(
+        name,
+        &Options {
+            bare,
+            ..Options::default()
+        },
+    )
 }
 
 /// The number of the attribute `name` of `tag` (a unit `pt` dropped).

@@ -5,24 +5,18 @@
 //! panel, taller than the disk, figure review of martin-tan-fig6).
 #![cfg(feature = "plot")]
 
-use shadow_aliasing::plot::{render_with, Column, Format, Options};
-use std::path::Path;
+mod figures_style_read;
+use figures_style_read::render_svg;
+use shadow_aliasing::plot::{Column, Options};
 
 fn svg(name: &str, column: Column) -> String {
-    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
-        "figures-single-layouts-{name}-{}-{call}",
-        std::process::id()
-    ));
-    let opts = Options {
-        column,
-        ..Options::default()
-    };
-    let files = render_with(name, &dir, Format::Svg, &opts).unwrap();
-    let s = std::fs::read_to_string(&files[0]).unwrap();
-    let _ = std::fs::remove_dir_all(&dir);
-    s
+    render_svg(
+        name,
+        &Options {
+            column,
+            ..Options::default()
+        },
+    )
 }
 
 /// The number in the attribute `name` of `tag`.

@@ -6,6 +6,7 @@
 
 use shadow_aliasing::plot::{render_with, Column, Format, Options, FIGURES, SINGLE_COLUMN};
 use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::OnceLock;
 
 /// The PNG draws text 1.24/1.164 times the SVG's size (plotters' size s is `font-size` s/1.24
@@ -322,6 +323,19 @@ pub fn within(points: &[(f64, f64)], r: &Box4) -> bool {
         .all(|p| p.0 >= r[0] && p.0 <= r[2] && p.1 >= r[1] && p.1 <= r[3])
 }
 
+/// The SVG of figure `name` rendered with `opts`, in a folder of its own (one per call: tests
+/// rendering the same figure at once must not share it), removed afterwards.
+pub fn render_svg(name: &str, opts: &Options) -> String {
+    static CALLS: AtomicUsize = AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, Ordering::Relaxed);
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join(format!("figures-svg-{name}-{}-{call}", std::process::id()));
+    let files = render_with(name, &dir, Format::Svg, opts).unwrap();
+    let svg = std::fs::read_to_string(&files[0]).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    svg
+}
+
 /// Every figure's SVG in every layout: (name, layout, svg), captioned across two columns and
 /// in one, and bare across two columns; rendered once per test binary.
 pub fn all_svgs() -> &'static [(String, String, String)] {
@@ -333,25 +347,18 @@ pub fn all_svgs() -> &'static [(String, String, String)] {
             (Column::Single, false, SINGLE_COLUMN),
             (Column::Double, true, FIGURES),
         ] {
-            let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
-                "figures-style-{column:?}-{bare}-{}",
-                std::process::id()
-            ));
             let opts = Options {
                 bare,
                 column,
                 ..Options::default()
             };
             for name in names {
-                let files = render_with(name, &dir, Format::Svg, &opts).unwrap();
-                let svg = std::fs::read_to_string(&files[0]).unwrap();
                 out.push((
                     name.to_string(),
                     format!("{column:?}{}", if bare { ", bare" } else { "" }),
-                    svg,
+                    render_svg(name, &opts),
                 ));
             }
-            let _ = std::fs::remove_dir_all(&dir);
         }
         out
     })
