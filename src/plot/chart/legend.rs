@@ -342,6 +342,11 @@ mod tests {
             Marker::WideBar,
             Marker::TallBar,
             Marker::Hexagon,
+            Marker::Star,
+            Marker::Pentagon,
+            Marker::Cross,
+            Marker::TriangleRight,
+            Marker::TriangleLeft,
         ];
         for dash in [Dash::Dashed, Dash::Dotted] {
             let (on, off) = dash_lengths(dash).unwrap();

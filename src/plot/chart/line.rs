@@ -7,6 +7,7 @@ use super::fine::{draw_fine_line, fill_fine_polygon, to_backend};
 use super::label::{place_label, place_note, text_in_box, Obstacles, Rect, LABEL_PAD};
 use super::legend::{draw_legend_clear, Entry, Placed};
 use super::probe::probe_area;
+use super::scheme::SWEEP;
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -35,6 +36,12 @@ pub(crate) enum Marker {
     WideBar,
     TallBar,
     Hexagon,
+    /// The sweep's shapes ([`SWEEP`]), none of them a palette colour's.
+    Star,
+    Pentagon,
+    Cross,
+    TriangleRight,
+    TriangleLeft,
 }
 
 impl Marker {
@@ -49,9 +56,21 @@ impl Marker {
         Marker::Hexagon,
     ];
 
-    /// The shape of a colour: the `i`-th of [`PALETTE`] gets the `i`-th shape, any other colour
-    /// a circle.
+    /// The shapes of the sweep's colours, in [`SWEEP`]'s order.
+    const SWEEP: [Marker; 5] = [
+        Marker::Star,
+        Marker::Pentagon,
+        Marker::Cross,
+        Marker::TriangleRight,
+        Marker::TriangleLeft,
+    ];
+
+    /// The shape of a colour: the `i`-th of [`PALETTE`] gets the `i`-th shape, the `i`-th of
+    /// [`SWEEP`] the `i`-th sweep shape, any other colour a circle.
     pub fn of(colour: RGBColor) -> Marker {
+        if let Some(i) = SWEEP.iter().position(|&c| c == colour) {
+            return Self::SWEEP[i];
+        }
         PALETTE
             .iter()
             .position(|&c| c == colour)
@@ -81,6 +100,41 @@ impl Marker {
             Marker::WideBar => vec![(-r - 1, -h), (r + 1, -h), (r + 1, h), (-r - 1, h)],
             Marker::TallBar => vec![(-h, -r - 1), (h, -r - 1), (h, r + 1), (-h, r + 1)],
             Marker::Hexagon => ngon(6, std::f64::consts::FRAC_PI_6),
+            Marker::Pentagon => ngon(5, -std::f64::consts::FRAC_PI_2),
+            Marker::Star => (0..10)
+                .map(|k| {
+                    let a =
+                        -std::f64::consts::FRAC_PI_2 + f64::from(k) * std::f64::consts::PI / 5.0;
+                    let rad = if k % 2 == 0 {
+                        f64::from(r + 1)
+                    } else {
+                        0.45 * f64::from(r + 1)
+                    };
+                    (
+                        (rad * a.cos()).round() as i32,
+                        (rad * a.sin()).round() as i32,
+                    )
+                })
+                .collect(),
+            Marker::Cross => {
+                let (o, t) = (r + 1, (r + 1) / 3 + 1);
+                vec![
+                    (-t, -o),
+                    (t, -o),
+                    (t, -t),
+                    (o, -t),
+                    (o, t),
+                    (t, t),
+                    (t, o),
+                    (-t, o),
+                    (-t, t),
+                    (-o, t),
+                    (-o, -t),
+                    (-t, -t),
+                ]
+            }
+            Marker::TriangleRight => vec![(r + 1, 0), (-r, r + 1), (-r, -r - 1)],
+            Marker::TriangleLeft => vec![(-r - 1, 0), (r, -r - 1), (r, r + 1)],
         }
     }
 }
@@ -552,6 +606,52 @@ mod tests {
             2 * (MARKER_AT.len() + 1)
         );
         assert_eq!(polygons(&[PALETTE[0]]), 0);
+    }
+
+    /// Greyscale for sweeps: the five sweep colours get five shapes, by hand the star, pentagon,
+    /// cross, right and left triangles, none of them the shape of a palette colour (a sweep drawn
+    /// beside schemes stays apart by shape), and each outline by hand at r = 4: the cross has 12
+    /// corners at ±5 and ±(5/3 + 1 = 2), the star 10 corners alternating 5 and 0.45·5 from the
+    /// centre, the pentagon 5 corners, its first straight up at (0, −4).
+    #[test]
+    fn sweep_colours_carry_their_own_markers() {
+        let sweep: Vec<Marker> = SWEEP.iter().map(|&c| Marker::of(c)).collect();
+        assert_eq!(
+            sweep,
+            vec![
+                Marker::Star,
+                Marker::Pentagon,
+                Marker::Cross,
+                Marker::TriangleRight,
+                Marker::TriangleLeft
+            ]
+        );
+        let palette: Vec<Vec<(i32, i32)>> =
+            PALETTE.iter().map(|&c| Marker::of(c).outline(4)).collect();
+        let outlines: Vec<Vec<(i32, i32)>> = sweep.iter().map(|m| m.outline(4)).collect();
+        for (i, o) in outlines.iter().enumerate() {
+            assert!(!palette.contains(o), "sweep step {i} has a palette shape");
+            for p in &outlines[..i] {
+                assert_ne!(o, p, "sweep step {i}");
+            }
+        }
+        let cross = &outlines[2];
+        assert_eq!(cross.len(), 12);
+        assert!(cross
+            .iter()
+            .all(|p| [2, 5].contains(&p.0.abs()) && [2, 5].contains(&p.1.abs())));
+        let star = &outlines[0];
+        assert_eq!(star.len(), 10);
+        assert_eq!(star[0], (0, -5));
+        for (k, p) in star.iter().enumerate() {
+            let d = f64::from(p.0).hypot(f64::from(p.1));
+            let want = if k % 2 == 0 { 5.0 } else { 2.25 };
+            assert!((d - want).abs() < 0.75, "star corner {k} at {d}");
+        }
+        assert_eq!(outlines[1].len(), 5);
+        assert_eq!(outlines[1][0], (0, -4));
+        assert_eq!(outlines[3], vec![(5, 0), (-4, 5), (-4, -5)]);
+        assert_eq!(outlines[4], vec![(-5, 0), (4, -5), (4, 5)]);
     }
 
     /// A legend-only reference series (no points: the key for dashed optima drawn in other
