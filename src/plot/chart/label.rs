@@ -140,7 +140,8 @@ pub(crate) struct Obstacles {
 }
 
 impl Obstacles {
-    /// How many lines, markers and boxes of series other than `own` the box touches, and how
+    /// How many lines of series other than `own`, markers (of every series: a label's halo
+    /// hides its own line's markers as much as another's) and boxes the box touches, and how
     /// many segments of `own`.
     pub fn hits(&self, r: &Rect, own: Option<usize>) -> (usize, usize) {
         let mut other = 0;
@@ -154,11 +155,7 @@ impl Obstacles {
                 }
             }
         }
-        other += self
-            .markers
-            .iter()
-            .filter(|(m, s)| Some(*s) != own && r.overlaps(m))
-            .count();
+        other += self.markers.iter().filter(|(m, _)| r.overlaps(m)).count();
         other += self.boxes.iter().filter(|b| r.overlaps(b)).count();
         (other, mine)
     }
@@ -177,18 +174,22 @@ pub(crate) fn place_label(
     obstacles: &Obstacles,
 ) -> Option<Rect> {
     use plotters::style::text_anchor::{HPos, VPos};
-    let gap = 3.0;
     let p0 = *points.get(preferred)?;
-    let corners = [
-        (HPos::Right, VPos::Bottom, (-gap, -gap)),
-        (HPos::Left, VPos::Bottom, (gap, -gap)),
-        (HPos::Right, VPos::Top, (-gap, gap)),
-        (HPos::Left, VPos::Top, (gap, gap)),
-        (HPos::Center, VPos::Bottom, (0.0, -gap)),
-        (HPos::Center, VPos::Top, (0.0, gap)),
-        // On the line itself (covering a piece of its own line only).
-        (HPos::Center, VPos::Center, (0.0, 0.0)),
-    ];
+    // Beside the point 3 units off, or 9 (clear of a marker on it: half a marker is at most
+    // width + 3 = 8 units), the farther costing a little more.
+    let mut corners = Vec::new();
+    for gap in [3.0, 9.0, 15.0] {
+        corners.extend([
+            (HPos::Right, VPos::Bottom, (-gap, -gap)),
+            (HPos::Left, VPos::Bottom, (gap, -gap)),
+            (HPos::Right, VPos::Top, (-gap, gap)),
+            (HPos::Left, VPos::Top, (gap, gap)),
+            (HPos::Center, VPos::Bottom, (0.0, -gap)),
+            (HPos::Center, VPos::Top, (0.0, gap)),
+        ]);
+    }
+    // On the line itself (covering a piece of its own line only).
+    corners.push((HPos::Center, VPos::Center, (0.0, 0.0)));
     // Beside every drawn point, and every 4 units along the line between them.
     let mut along = vec![p0];
     for w2 in points.windows(2) {
@@ -325,4 +326,55 @@ pub(crate) fn text_in_box<DB: DrawingBackend>(
     };
     area.draw(&Text::new(text.to_string(), (x, y0 + p), style))?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A label at the end of a flat line whose points carry markers (half size 5, as for a line
+    /// 2 wide) keeps its box clear of every marker, its own line's included (the review found
+    /// the halos of lloyd2005-fig7's labels over the markers at k = 9): by hand, a 60 × 14 box
+    /// 3 units above the end point (100, 100) would span y 83–97 and x 37–97, over the marker
+    /// box 95–105 × 95–105.
+    #[test]
+    fn a_label_keeps_clear_of_its_own_lines_markers() {
+        let points: Vec<(f64, f64)> = (0..=10).map(|i| (10.0 * f64::from(i), 100.0)).collect();
+        let mut o = Obstacles::default();
+        o.segments
+            .extend(points.windows(2).map(|w| (w[0], w[1], 0)));
+        for &p in &points {
+            o.markers.push((
+                Rect {
+                    x0: p.0 - 5.0,
+                    y0: p.1 - 5.0,
+                    x1: p.0 + 5.0,
+                    y1: p.1 + 5.0,
+                },
+                0,
+            ));
+        }
+        let area = Rect {
+            x0: 0.0,
+            y0: 0.0,
+            x1: 110.0,
+            y1: 200.0,
+        };
+        let r = place_label(&points, 10, (60.0, 14.0), &area, 0, &o).unwrap();
+        for (m, _) in &o.markers {
+            assert!(!r.overlaps(m), "{r:?} over the marker {m:?}");
+        }
+        // By hand: every candidate 3 units off the line reaches into the markers (half size 5);
+        // the cheapest clear one is the box right-aligned 9 units left of and above the end
+        // point, x 100 − 9 − 60 = 31 to 91, y 100 − 9 − 14 = 77 to 91.
+        assert_eq!(
+            r,
+            Rect {
+                x0: 31.0,
+                y0: 77.0,
+                x1: 91.0,
+                y1: 91.0
+            }
+        );
+    }
 }

@@ -62,15 +62,17 @@ pub(crate) fn frame<DB: DrawingBackend>(
     let bare = BARE.with(Cell::get);
     let (w, h) = root.dim_in_pixel();
     let width = f64::from(w) - 28.0;
-    // The title, wrapped to the page like the caption.
+    // The title, wrapped to the page like the caption; one column sets it smaller, so that a
+    // title of up to about 36 characters keeps one line.
+    let (title_size, title_line) = title_size(column());
     let title_style =
-        TextStyle::from((FONT, 20).into_font()).pos(Pos::new(HPos::Center, VPos::Top));
+        TextStyle::from((FONT, title_size).into_font()).pos(Pos::new(HPos::Center, VPos::Top));
     let title_lines = wrap(title, width, |t| {
         root.estimate_text_size(t, &title_style)
             .map(|(tw, _)| f64::from(tw))
             .unwrap_or(f64::INFINITY)
     });
-    let top = 20 + 24 * title_lines.len() as u32;
+    let top = 20 + title_line * title_lines.len() as u32;
     let line_h = 18;
     let style = TextStyle::from((FONT, 14).into_font());
     // The caption is one paragraph, wrapped to the page.
@@ -92,7 +94,7 @@ pub(crate) fn frame<DB: DrawingBackend>(
     for (k, line) in title_lines.iter().enumerate() {
         root.draw(&Text::new(
             line.clone(),
-            (w as i32 / 2, 8 + 24 * k as i32),
+            (w as i32 / 2, 8 + (title_line * k as u32) as i32),
             title_style.clone(),
         ))?;
     }
@@ -107,6 +109,17 @@ pub(crate) fn frame<DB: DrawingBackend>(
         ))?;
     }
     Ok(body)
+}
+
+/// The page title's size (plotters' size: the SVG's `font-size` is s/1.24) and line height, in
+/// units: 20 across two columns (16.1 units, printed 16.1 pt); 16 in one column (12.9 units,
+/// printed 10.3 pt at 0.8 pt a unit: above the panel titles' 9.7 pt and the ticks' 8.4 pt,
+/// where 20 printed 12.9 pt and wrapped every title of the set).
+pub(crate) fn title_size(column: Column) -> (u32, u32) {
+    match column {
+        Column::Double => (20, 24),
+        Column::Single => (16, 19),
+    }
 }
 
 /// Breaks `text` at spaces into lines no wider than `width` (as measured by `measure`); a single
@@ -159,13 +172,47 @@ impl super::super::Figure for Charts {
         // Side by side where each chart gets at least 250 units of width (a pair on a
         // double-column page), stacked otherwise (a single-column page).
         let n = self.charts.len().max(1);
-        let columns = (body.dim_in_pixel().0 as usize / 250).clamp(1, n);
-        let rows = body.split_evenly((n.div_ceil(columns), 1));
-        for (row, charts) in rows.iter().zip(self.charts.chunks(columns)) {
-            draw_row(row, charts, columns)?;
+        let (w, h) = body.dim_in_pixel();
+        let columns = (w as usize / 250).clamp(1, n);
+        let rows: Vec<&[LineChart]> = self.charts.chunks(columns).collect();
+        // Each row is one plot height and the strip its legend needs below it, the plot height
+        // the same for every row: stacked panels of the same kind get equal plots (split evenly,
+        // a row whose legend goes below had a plot shorter by the legend).
+        let even = (w, h / rows.len().max(1) as u32);
+        let strips = rows
+            .iter()
+            .map(|charts| row_strip(even, charts, columns))
+            .collect::<Result<Vec<_>, _>>()?;
+        let plot = h.saturating_sub(strips.iter().sum::<u32>()) / rows.len().max(1) as u32;
+        let mut rest = body;
+        for (charts, strip) in rows.iter().zip(&strips) {
+            let (row, below) = rest.split_vertically(plot + strip);
+            match charts {
+                // One panel a row: its legend's strip as measured at the even height, kept
+                // even where the taller row would let the legend inside (so that the plots
+                // stay equal).
+                [chart] if rows.len() > 1 => {
+                    draw_line_chart_reserving(&row, chart, *strip)?;
+                }
+                _ => draw_row(&row, charts, columns)?,
+            }
+            rest = below;
         }
         Ok(())
     }
+}
+
+/// The height a row of `charts`, `columns` wide, on an area of `size` keeps below its plots for
+/// legends that find no clear place inside (as [`draw_row`] lays it out): 0 where every legend
+/// goes inside.
+fn row_strip(size: (u32, u32), charts: &[LineChart], columns: usize) -> Result<u32, Fail> {
+    let (w, h) = size;
+    let cell = (w / columns as u32, h);
+    let mut keep = 0;
+    for c in charts {
+        keep = keep.max(legend_below(cell, c, f64::from(w))?);
+    }
+    Ok(keep)
 }
 
 /// Draws `charts` side by side in `row`, `columns` wide. A legend that finds no clear place in
@@ -215,6 +262,112 @@ fn draw_row<DB: DrawingBackend>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A page title of 36 characters ("Storage factor against the map count") keeps one line
+    /// on a one-column page (300 units, 272 for the text), at `font-size` 16/1.24 = 12.90 units,
+    /// printed 12.90 · 0.8 = 10.3 pt (≥ 6 pt); at the two-column size (20: 16.13 units, 36
+    /// characters of about 0.55 em = 319 units) it took two lines. Two columns keep 16.13.
+    #[test]
+    fn a_one_column_title_of_36_characters_keeps_one_line() {
+        super::super::super::ensure_font().unwrap();
+        let title = "Storage factor against the map count";
+        let page = |column: Column| {
+            let mut svg = String::new();
+            with_page(false, column, || {
+                let area = super::super::super::svg::Svg::new(&mut svg, (column.width(), 400), 1)
+                    .into_drawing_area();
+                frame(&area, title, &["c"]).unwrap();
+                area.present().unwrap();
+            });
+            svg
+        };
+        let single = page(Column::Single);
+        let line = single
+            .lines()
+            .find(|l| l.ends_with(&format!(">{title}</text>")))
+            .unwrap_or_else(|| panic!("the title wraps: {single}"));
+        let at = line.find("font-size=\"").unwrap() + "font-size=\"".len();
+        let fs: f64 = line[at..at + line[at..].find('"').unwrap()]
+            .parse()
+            .unwrap();
+        assert!((fs - 12.9).abs() < 0.01 && fs * 0.8 >= 6.0, "{fs}");
+        let double = page(Column::Double);
+        assert!(double.contains(&format!(">{title}</text>")), "{double}");
+        assert!(double.contains("font-size=\"16.1"), "{double}");
+    }
+
+    /// Two stacked panels in one column, (a) with a legend that finds no clear place inside
+    /// its plot (ten labelled lines across the whole plot) and so goes below it, (b) with none:
+    /// their y axes (the vertical black spines in the SVG) are equally long, to within 2 units.
+    /// Split evenly, (a)'s plot was shorter by its legend (the review: lloyd2006-fig5(a) 62 pt
+    /// against (b)'s 162 pt).
+    #[test]
+    fn stacked_panels_get_equal_plots_whatever_their_legends() {
+        use super::super::super::Figure;
+        use super::super::{Axis, Series, PALETTE};
+        super::super::super::ensure_font().unwrap();
+        let line = |y: f64| {
+            (0..=20)
+                .map(|i| (f64::from(i) / 20.0, y))
+                .collect::<Vec<_>>()
+        };
+        let mut a = LineChart::new(
+            "(a)",
+            Axis::linear("x", 0.0, 1.0),
+            Axis::linear("y", 0.0, 1.0),
+        );
+        for k in 0..10 {
+            let y = 0.05 + 0.1 * f64::from(k);
+            let colour = PALETTE[k as usize % PALETTE.len()];
+            a.series
+                .push(Series::line(format!("a long legend entry {k}"), line(y), colour).dashed());
+        }
+        let mut b = LineChart::new(
+            "(b)",
+            Axis::linear("x", 0.0, 1.0),
+            Axis::linear("y", 0.0, 1.0),
+        );
+        let mut only = Series::line("", line(0.5), PALETTE[0]);
+        only.label = None;
+        b.series.push(only);
+        let page = Charts {
+            size: (520, 400),
+            title: "t".into(),
+            caption: vec!["c".into()],
+            charts: vec![a, b],
+        };
+        let size = page.single_size().unwrap();
+        let mut svg = String::new();
+        with_page(false, Column::Single, || {
+            let area = super::super::super::svg::Svg::new(&mut svg, size, 1).into_drawing_area();
+            page.draw(&area).unwrap();
+            area.present().unwrap();
+        });
+        let spines: Vec<f64> = svg
+            .lines()
+            .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#000000\""))
+            .filter_map(|l| {
+                let at = l.find("points=\"")? + "points=\"".len();
+                let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
+                    .split_whitespace()
+                    .filter_map(|p| {
+                        let (x, y) = p.split_once(',')?;
+                        Some((x.parse().ok()?, y.parse().ok()?))
+                    })
+                    .collect();
+                match pts[..] {
+                    [(x0, y0), (x1, y1)] if x0 == x1 && (y1 - y0).abs() > 50.0 => {
+                        Some((y1 - y0).abs())
+                    }
+                    _ => None,
+                }
+            })
+            .collect();
+        assert_eq!(spines.len(), 2, "{spines:?}");
+        assert!((spines[0] - spines[1]).abs() <= 2.0, "{spines:?}");
+        // (a)'s legend did go below its plot: a legend box lies under (a)'s spine.
+        assert!(svg.contains("opacity=\"0.9\""), "no legend");
+    }
 
     #[test]
     fn captions_wrap_at_spaces_within_the_width() {
