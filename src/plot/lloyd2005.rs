@@ -1,6 +1,6 @@
 //! Lloyd, Yoon, Tuft, Manocha 2005, *Subdivided Shadow Maps*: Fig 4 and Fig 7.
 
-use super::chart::{fmt_times_ten, linspace, Axis, Charts, LineChart, Series, PALETTE};
+use super::chart::{column, fmt_times_ten, linspace, sweep, Axis, Charts, LineChart, Look, Series};
 use super::{Column, Fail, Figure};
 use crate::analytic::subdivided::{distribution_g, g_min, n_from_xi, subdivided_max_error};
 use plotters::coord::Shift;
@@ -10,9 +10,14 @@ use plotters::prelude::{RGBColor, SeriesLabelPosition};
 /// α of Fig 4 (the paper does not print it).
 pub(super) const FIG4_ALPHA: f64 = 10.0;
 
-/// ξ with the minus sign U+2212.
+/// ξ with the minus sign U+2212, halves as ½ (as the caption writes them).
 fn fmt_signed(v: f64) -> String {
-    format!("{v}").replace('-', "\u{2212}")
+    let s = if v.abs() == 0.5 {
+        format!("{}½", if v < 0.0 { "-" } else { "" })
+    } else {
+        format!("{v}")
+    };
+    s.replace('-', "\u{2212}")
 }
 
 /// Fig 4: the error distribution g(z) over z ∈ [1, α] for n chosen by ξ = 1, ½, 0, −½, −1.
@@ -22,8 +27,8 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
     let mut c = LineChart::new(
         "",
         Axis::linear("depth z (near plane 1, far plane α)", 1.0, alpha),
-        // A tick every quarter.
-        Axis::every("error distribution g(z)", 0.0, 1.05, 0.0, 0.25),
+        // A tick every fifth: 0, 0.2, …, 1 (quarters wrote 1, 0.75, 0.5, 0.25, 0: two formats).
+        Axis::every("error distribution g(z)", 0.0, 1.05, 0.0, 0.2),
     );
     c.legend = SeriesLabelPosition::UpperMiddle;
     for (i, xi) in [1.0, 0.5, 0.0, -0.5, -1.0].into_iter().enumerate() {
@@ -38,7 +43,8 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
             .map(|&z| Ok((z, distribution_g(alpha, n, z)?)))
             .collect::<Result<Vec<_>, crate::Error>>()?;
         // Labelled at the curve's right end (the far plane), where the five are apart.
-        c.series.push(Series::line(label, pts, PALETTE[i]).direct());
+        c.series
+            .push(Series::line(label, pts, fig4_colour(i)).direct());
     }
     let g0 = g_min(alpha)?;
     let grey = RGBColor(90, 90, 90);
@@ -46,39 +52,80 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
     s.label = None;
     s.width = 1;
     c.series.push(s);
-    Ok(Tall(
-        Charts {
+    let head = format!(
+        "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), α\u{a0}=\u{a0}{alpha}: g for the n of \
+         ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM, n\u{a0}=\u{a0}1\u{a0}+\u{a0}√α), −½ and \
+         −1 (the uniform map, n\u{a0}=\u{a0}∞). Dotted: the least maximum \
+         g_0\u{a0}=\u{a0}1/√α\u{a0}=\u{a0}{g0:.3}."
+    );
+    let tail = "The maximum of g is on the near plane for ξ\u{a0}≤\u{a0}0 and on the far plane \
+                for ξ\u{a0}>\u{a0}0.";
+    Ok(Tall {
+        charts: Charts {
             size: (520, 500),
             title: "Error distribution function g for several warp distances n".into(),
-            caption: vec![format!(
-                "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), α\u{a0}=\u{a0}{alpha}: g for the n of \
-                 ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM, n\u{a0}=\u{a0}1\u{a0}+\u{a0}√α), −½ and \
-                 −1 (the uniform map, n\u{a0}=\u{a0}∞). Dotted: the least maximum \
-                 g_0\u{a0}=\u{a0}1/√α\u{a0}=\u{a0}{g0:.3}. The maximum of g is on the near \
-                 plane for ξ\u{a0}≤\u{a0}0 and on the far plane for ξ\u{a0}>\u{a0}0."
-            )],
+            caption: vec![format!("{head} {tail}")],
             charts: vec![c],
         },
-        640,
-    ))
+        single_height: 640,
+        // One column: the legend names the curves, so the caption keeps only what the figure
+        // cannot show.
+        single_caption: vec![format!(
+            "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), α\u{a0}=\u{a0}{alpha}: g for the n of five ξ; \
+             ξ\u{a0}=\u{a0}1: PSM, 0: LiSPSM, −1: uniform. Dotted: the least maximum \
+             g_0\u{a0}=\u{a0}1/√α\u{a0}=\u{a0}{g0:.3}."
+        )],
+        legend_in_single: true,
+    })
 }
 
-/// A figure of one chart whose one-column layout is `.1` units tall: about as tall as in two
-/// columns, so that its direct labels keep the room they have there (Fig 4's five and Fig 7's
-/// eight line-end labels covered other lines in a chart 290 units tall).
-pub(super) struct Tall(pub(super) Charts, u32);
+/// Fig 4's colour of its `i`-th curve (ξ = 1, ½, 0, −½, −1): the schemes' colours for PSM
+/// (ξ = 1), LiSPSM (ξ = 0) and the uniform map (ξ = −1), and the parameter sweep's for the two
+/// between them (each colour has its own marker, [`super::chart::Marker::of`]).
+fn fig4_colour(i: usize) -> RGBColor {
+    match i {
+        0 => Look::Psm.colour(),
+        1 => sweep(0, 2),
+        2 => Look::Lispsm.colour(),
+        3 => sweep(1, 2),
+        _ => Look::Uniform.colour(),
+    }
+}
+
+/// A figure of one chart whose one-column layout is `single_height` units tall: about as tall
+/// as in two columns, so that its direct labels keep the room they have there (Fig 4's five and
+/// Fig 7's eight line-end labels covered other lines in a chart 290 units tall). In one column
+/// it has its own, shorter caption, and with `legend_in_single` its direct labels become one
+/// legend below the chart (Fig 4's labels, 130 units wide, found no place by their own curves
+/// in a plot 200 units wide).
+pub(super) struct Tall {
+    pub(super) charts: Charts,
+    single_height: u32,
+    single_caption: Vec<String>,
+    legend_in_single: bool,
+}
 
 impl Figure for Tall {
     fn size(&self) -> (u32, u32) {
-        self.0.size
+        self.charts.size
     }
 
     fn single_size(&self) -> Option<(u32, u32)> {
-        Some((Column::Single.width(), self.1))
+        Some((Column::Single.width(), self.single_height))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
-        self.0.draw(root)
+        if column() == Column::Double {
+            return self.charts.draw(root);
+        }
+        let mut one = self.charts.clone();
+        one.caption.clone_from(&self.single_caption);
+        if self.legend_in_single {
+            for s in one.charts.iter_mut().flat_map(|c| c.series.iter_mut()) {
+                s.direct = false;
+            }
+        }
+        one.draw(root)
     }
 }
 
@@ -91,33 +138,42 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
         Ok(subdivided_max_error(alpha, k, xi, theta, 1.0, 1.0)?
             / subdivided_max_error(alpha, 1, xi, theta, 1.0, 1.0)?)
     };
-    // No subtitle: the labels and the caption say which line is which ξ.
-    let mut c = LineChart::new(
-        "",
-        // A tick at every k (the paper's k = 1 … 10).
-        Axis::every("number of face subdivisions k", 1.0, 10.0, 1.0, 1.0),
-        // Up to 2, so that the top curve's label fits above it (the curves are too close for a
-        // label between them).
-        Axis::log10("m_{max}(k) / m_{max}(1) (log scale)", 1e-3, 2.0),
-    );
-    c.legend = SeriesLabelPosition::LowerLeft;
+    // One panel per ξ, so that each line's label is its α alone and the four lines of a panel
+    // lie far enough apart for a label beside each end (eight lines in one panel came within
+    // 15 units of each other, too close for a label clear of the markers).
     let alphas = [10.0, 100.0, 1000.0, 10_000.0];
-    for (i, alpha) in alphas.into_iter().enumerate() {
-        for (xi, dashed) in [(0.0, false), (1.0, true)] {
+    let mut charts = Vec::new();
+    // (ξ, panel, the panel's y range: to its lines' least value at k = 10, with room above the
+    // top line's label).
+    for (xi, title, lo) in [(0.0, "(a) ξ = 0", 0.07), (1.0, "(b) |ξ| = 1", 1e-3)] {
+        let mut c = LineChart::new(
+            title,
+            // A tick at every k (the paper's k = 1 … 10).
+            Axis::every("number of face subdivisions k", 1.0, 10.0, 1.0, 1.0),
+            // Decades only, as powers of ten in both panels (one format for the quantity).
+            Axis::log10("m_{max}(k) / m_{max}(1) (log scale)", lo, 1.5)
+                .labelled_at(&[1e-3, 1e-2, 1e-1, 1.0])
+                .in_powers(),
+        );
+        c.legend = SeriesLabelPosition::LowerLeft;
+        for (i, alpha) in alphas.into_iter().enumerate() {
             let pts = ks
                 .iter()
                 .map(|&k| Ok((k as f64, ratio(alpha, k, xi)?)))
                 .collect::<Result<Vec<_>, crate::Error>>()?;
-            let label = if dashed {
-                format!("α = {}, |ξ| = 1", fmt_times_ten(alpha))
-            } else {
-                format!("α = {}, ξ = 0", fmt_times_ten(alpha))
-            };
-            // Labelled directly at the line's end, k = 10 (a legend covered the dashed
-            // curves; labels along the lines named none where every curve meets).
-            let s = Series::line(label, pts, PALETTE[i]).with_markers().direct();
-            c.series.push(if dashed { s.dashed() } else { s });
+            // Labelled directly at the line's end, k = 10; α is a sweep: its colours (and
+            // their markers) are no scheme's.
+            c.series.push(
+                Series::line(
+                    format!("α = {}", fmt_times_ten(alpha)),
+                    pts,
+                    sweep(i, alphas.len()),
+                )
+                .with_markers()
+                .direct(),
+            );
         }
+        charts.push(c);
     }
     // The report's "nearly 5 times" (its Fig 9, α = 100): which ξ gives it.
     let alpha = 100.0_f64;
@@ -126,22 +182,29 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
     // The ξ = 0 gain as k → ∞: m(k)/m(1) = k(α^{1/k} − 1)α^{1/2 − 1/(2k)}/(α − 1) (Eq 7) tends to
     // √α ln α/(α − 1), so the gain tends to its inverse.
     let g0_inf = (alpha - 1.0) / (alpha.sqrt() * alpha.ln());
-    Ok(Tall(
-        Charts {
-            size: (520, 620),
+    Ok(Tall {
+        charts: Charts {
+            size: (520, 500),
             title: "Maximum error against the number of face subdivisions".into(),
             caption: vec![format!(
                 "Lloyd et al. 2005, Fig. 7 (Eq 7): the maximum error with k self-similar face \
-             subdivisions over its value at k\u{a0}=\u{a0}1; solid: ξ\u{a0}=\u{a0}0, dashed: \
-             |ξ|\u{a0}=\u{a0}1. The report's \"nearly 5 times\" at α\u{a0}=\u{a0}{alpha} \
-             (its Fig. 9) needs |ξ|\u{a0}=\u{a0}1: {g1_2:.1}× at k\u{a0}=\u{a0}2; \
-             ξ\u{a0}=\u{a0}0 gives {g0_2:.2}×, and at most \
-             (α\u{a0}−\u{a0}1)/(√α\u{a0}ln\u{a0}α)\u{a0}=\u{a0}{g0_inf:.2}×."
+                 subdivisions over its value at k\u{a0}=\u{a0}1, (a) for ξ\u{a0}=\u{a0}0 and \
+                 (b) for |ξ|\u{a0}=\u{a0}1. The report's \"nearly 5 times\" at \
+                 α\u{a0}=\u{a0}{alpha} (its Fig. 9) needs |ξ|\u{a0}=\u{a0}1: \
+                 {g1_2:.1}× at k\u{a0}=\u{a0}2; ξ\u{a0}=\u{a0}0 gives {g0_2:.2}×, \
+                 and at most (α\u{a0}−\u{a0}1)/(√α\u{a0}ln\u{a0}α)\u{a0}=\u{a0}{g0_inf:.2}×."
             )],
-            charts: vec![c],
+            charts,
         },
-        780,
-    ))
+        single_height: 780,
+        single_caption: vec![format!(
+            "Lloyd et al. 2005, Fig. 7 (Eq 7): the maximum error with k face subdivisions over \
+             its value at k\u{a0}=\u{a0}1. At α\u{a0}=\u{a0}{alpha}, k\u{a0}=\u{a0}2 gains \
+             {g1_2:.1}× with |ξ|\u{a0}=\u{a0}1 (the report's \"nearly 5 times\") and \
+             {g0_2:.2}× with ξ\u{a0}=\u{a0}0."
+        )],
+        legend_in_single: false,
+    })
 }
 
 #[cfg(test)]
@@ -152,7 +215,10 @@ mod tests {
     /// both by hand from Eq 3.
     #[test]
     fn fig4_curves_by_hand() {
-        let fig = fig4().map_err(|e| e.named("lloyd2005-fig4")).unwrap().0;
+        let fig = fig4()
+            .map_err(|e| e.named("lloyd2005-fig4"))
+            .unwrap()
+            .charts;
         let s = &fig.charts[0].series;
         let g0 = 1.0 / FIG4_ALPHA.sqrt();
         assert!((s[2].points[0].1 - g0).abs() < 1e-12);
@@ -166,16 +232,22 @@ mod tests {
     /// at α = 100, k = 2: 2 · 9 · 10^{1/2}/99 = 0.5750.
     #[test]
     fn fig7_ratio_by_hand() {
-        let fig = fig7().map_err(|e| e.named("lloyd2005-fig7")).unwrap().0;
-        let alpha100 = &fig.charts[0].series[2].points;
+        let fig = fig7()
+            .map_err(|e| e.named("lloyd2005-fig7"))
+            .unwrap()
+            .charts;
+        let alpha100 = &fig.charts[0].series[1].points;
         let want = 2.0 * 9.0 * 10f64.sqrt() / 99.0;
         assert!((alpha100[1].1 - want).abs() < 1e-12, "{}", alpha100[1].1);
         assert_eq!(alpha100[0].1, 1.0);
         // |ξ| = 1: m(k)/m(1) = k(α^{1/k} − 1)/(α − 1) by hand from Eq 7; at α = 100, k = 2:
         // 18/99, the 5.5× that matches the report's "nearly 5 times" (ξ = 0 gives 1.74×).
-        let xi1 = &fig.charts[0].series[3].points;
+        let xi1 = &fig.charts[1].series[1].points;
         assert!((xi1[1].1 - 18.0 / 99.0).abs() < 1e-12, "{}", xi1[1].1);
-        assert!(fig.charts[0].x.max <= 10.0, "no empty k > 10 area");
+        assert!(
+            fig.charts.iter().all(|c| c.x.max <= 10.0),
+            "no empty k > 10 area"
+        );
         // Formulas keep their spaces unbroken (no-break spaces): "|ξ| =⏎1" broke a line.
         let caption = &fig.caption[0];
         assert!(caption.contains("5.5× at k\u{a0}=\u{a0}2"), "{caption}");
@@ -183,34 +255,28 @@ mod tests {
         assert!(caption.contains("|ξ|\u{a0}=\u{a0}1"), "{caption}");
     }
 
-    /// Fig 7 labels each of its eight lines at the line's end, k = 10 (issue 35 item 9; the
-    /// labels were spread along the lines, where they named none near k ≤ 3), in both
-    /// layouts: read back from the SVG, every label ends within 12 units of the plot's right
-    /// edge (the largest x of any line), and the labels run top to bottom in the order of the
-    /// lines' values at k = 10 (Eq 7, found here from the series' own last points), so that
-    /// each sits by its own line's end.
+    /// Fig 7 labels each line at its end, k = 10 (issue 35 item 9), and no label's white box
+    /// covers a marker (figure review 2: the halos of the eight labels in one panel clipped
+    /// the markers at k = 9), in both layouts. Read back from the SVG: each label's nearest
+    /// line end (of the polylines of ten points, one a k) lies within 30 units right of the
+    /// label's end and 30 units of its height, is a different line's for each label, and is
+    /// the line the label names (a panel's lines, top to bottom, are α = 10 … 10⁴); and no
+    /// label's box overlaps the bounding box of any marker polygon.
     #[test]
-    fn fig7_labels_sit_at_the_line_ends() {
+    fn fig7_labels_sit_at_the_line_ends_clear_of_the_markers() {
         use super::super::chart::read_svg::{attr, draw_svg, visible};
         use super::super::chart::with_page;
         let fig = fig7().map_err(|e| e.named("lloyd2005-fig7")).unwrap();
-        let series = &fig.0.charts[0].series;
-        let mut by_end: Vec<(&str, f64)> = series
-            .iter()
-            .map(|s| (s.label.as_deref().unwrap(), s.points.last().unwrap().1))
-            .collect();
-        by_end.sort_by(|a, b| b.1.total_cmp(&a.1));
-        // As the SVG reads: no spaces, superscript digits as digits.
-        let plain = |t: &str| -> String {
-            t.chars()
-                .filter(|c| *c != ' ')
-                .map(|c| match "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().position(|s| s == c) {
-                    Some(d) => char::from(b'0' + d as u8),
-                    None => c,
+        let points = |l: &str| -> Vec<(f64, f64)> {
+            let at = l.find("points=\"").unwrap() + 8;
+            l[at..at + l[at..].find('"').unwrap()]
+                .split_whitespace()
+                .map(|p| {
+                    let (x, y) = p.split_once(',').unwrap();
+                    (x.parse().unwrap(), y.parse().unwrap())
                 })
                 .collect()
         };
-        let want: Vec<String> = by_end.iter().map(|l| plain(l.0)).collect();
         for (column, size) in [
             (Column::Double, fig.size()),
             (Column::Single, fig.single_size().unwrap()),
@@ -218,48 +284,168 @@ mod tests {
             let svg = with_page(false, column, || {
                 draw_svg(size, |area| fig.draw(area).unwrap())
             });
-            let right = svg
-                .lines()
+            let lines: Vec<&str> = svg.lines().collect();
+            // The data lines: polylines of ten points (one a k), their ends.
+            let ends: Vec<(f64, f64)> = lines
+                .iter()
                 .filter(|l| l.starts_with("<polyline"))
-                .flat_map(|l| {
-                    let at = l.find("points=\"").unwrap() + 8;
-                    l[at..at + l[at..].find('"').unwrap()]
-                        .split_whitespace()
-                        .map(|p| p.split_once(',').unwrap().0.parse::<f64>().unwrap())
-                        .collect::<Vec<_>>()
-                })
-                .fold(f64::NEG_INFINITY, f64::max);
-            let mut labels: Vec<(String, f64, f64)> = svg
-                .lines()
-                .filter(|l| l.starts_with("<text") && visible(l).starts_with("α ="))
+                .map(|l| points(l))
+                .filter(|p| p.len() == 10)
+                .map(|p| *p.last().unwrap())
+                .collect();
+            assert_eq!(ends.len(), 8, "{column:?}: {ends:?}");
+            let markers: Vec<(f64, f64, f64, f64)> = lines
+                .iter()
+                .filter(|l| l.starts_with("<polygon"))
                 .map(|l| {
-                    let (x, y) = (attr(l, "x").unwrap(), attr(l, "y").unwrap());
-                    assert!(l.contains("text-anchor=\"end\""), "{l}");
-                    (plain(&visible(l)), x, y)
+                    let p = points(l);
+                    let xs = p.iter().map(|q| q.0);
+                    let ys = p.iter().map(|q| q.1);
+                    (
+                        xs.clone().fold(f64::INFINITY, f64::min),
+                        ys.clone().fold(f64::INFINITY, f64::min),
+                        xs.fold(f64::NEG_INFINITY, f64::max),
+                        ys.fold(f64::NEG_INFINITY, f64::max),
+                    )
                 })
                 .collect();
-            assert_eq!(labels.len(), 8, "{column:?}");
-            for (t, x, _) in &labels {
-                assert!(
-                    x <= &right && right - x <= 12.0,
-                    "{column:?}: {t} ends at {x}, line at {right}"
-                );
+            assert!(markers.len() >= 80, "{column:?}: {} markers", markers.len());
+            // Each label: its text's right end and its box (the white rect just before it).
+            let mut labels = Vec::new();
+            for (i, l) in lines.iter().enumerate() {
+                if l.starts_with("<text") && visible(l).starts_with("α =") {
+                    assert!(l.contains("text-anchor=\"end\""), "{l}");
+                    let r = lines[i - 1];
+                    assert!(r.starts_with("<rect"), "{r}");
+                    let (x0, y0) = (attr(r, "x").unwrap(), attr(r, "y").unwrap());
+                    let (w, h) = (attr(r, "width").unwrap(), attr(r, "height").unwrap());
+                    labels.push((visible(l), attr(l, "x").unwrap(), (x0, y0, x0 + w, y0 + h)));
+                }
             }
-            labels.sort_by(|a, b| a.2.total_cmp(&b.2));
-            let got: Vec<String> = labels.into_iter().map(|l| l.0).collect();
-            assert_eq!(got, want, "{column:?}");
+            assert_eq!(labels.len(), 8, "{column:?}");
+            for (t, _, b) in &labels {
+                for m in &markers {
+                    let apart = b.2 <= m.0 || m.2 <= b.0 || b.3 <= m.1 || m.3 <= b.1;
+                    assert!(apart, "{column:?}: {t}'s box {b:?} covers a marker {m:?}");
+                }
+            }
+            // Each label by its own line's end: the nearest end lies within 30 units (two
+            // thirds of a k step) right of the text's end and 30 units of its box's centre height. A panel's lines, top to
+            // bottom, are α = 10, 100, 1000, 10⁴ (Eq 7's ratio falls with α), the panels
+            // side by side in two columns and stacked in one: so a line is the (rank mod 4)-th
+            // α among the ends at its x, sorted by height.
+            let names = ["α = 10", "α = 100", "α = 1000", "α = 104"];
+            let mut taken = Vec::new();
+            for (t, x, b) in &labels {
+                let centre = 0.5 * (b.1 + b.3);
+                let near = *ends
+                    .iter()
+                    .min_by(|p, q| {
+                        let d = |e: &&(f64, f64)| (e.0 - x).hypot(e.1 - centre);
+                        d(p).total_cmp(&d(q))
+                    })
+                    .unwrap();
+                assert!(
+                    near.0 >= *x && near.0 - x <= 30.0,
+                    "{column:?}: {t} ends at {x}, its line at {}",
+                    near.0
+                );
+                assert!(
+                    (near.1 - centre).abs() <= 30.0,
+                    "{column:?}: {t} at height {centre}, its line's end at {}",
+                    near.1
+                );
+                let mut column_ends: Vec<f64> = ends
+                    .iter()
+                    .filter(|e| (e.0 - near.0).abs() < 1.0)
+                    .map(|e| e.1)
+                    .collect();
+                column_ends.sort_by(f64::total_cmp);
+                let rank = column_ends.iter().position(|&y| y == near.1).unwrap();
+                assert_eq!(t.as_str(), names[rank % 4], "{column:?}");
+                assert!(!taken.contains(&near), "{column:?}: two labels by one line");
+                taken.push(near);
+            }
         }
     }
 
     /// Fig 4's PSM curve is "n = 1" (ξ = 1 gives n = 1 exactly, Eq 4), not "n = 1.000".
     #[test]
     fn fig4_names_the_psm_curve_n_1() {
-        let f4 = fig4().map_err(|e| e.named("lloyd2005-fig4")).unwrap().0;
+        let f4 = fig4()
+            .map_err(|e| e.named("lloyd2005-fig4"))
+            .unwrap()
+            .charts;
         let labels: Vec<&str> = f4.charts[0]
             .series
             .iter()
             .filter_map(|s| s.label.as_deref())
             .collect();
         assert!(labels.contains(&"n = 1 (ξ = 1)"), "{labels:?}");
+    }
+
+    /// Fig 4's y axis is labelled every fifth, 0, 0.2, …, 1 (figure review 2: quarters wrote
+    /// "1, 0.75, 0.5, 0.25, 0", two formats on one axis).
+    #[test]
+    fn fig4_y_ticks_are_fifths() {
+        let fig = fig4().map_err(|e| e.named("lloyd2005-fig4")).unwrap();
+        let y = &fig.charts.charts[0].y;
+        let labels: Vec<String> = y.ticks().0.iter().map(|&a| y.tick_label(a)).collect();
+        assert_eq!(labels, ["0", "0.2", "0.4", "0.6", "0.8", "1"]);
+    }
+
+    /// Fig 4's colours (issue 35, rule 4): the scheme colours for the schemes (ξ = 1 PSM blue
+    /// #0072B2, ξ = 0 LiSPSM green #009E73, ξ = −1 uniform orange #E69F00) and the sweep's
+    /// darkest and lightest purples (#3F007D, #9589C0) for ξ = ½ and −½, which are no scheme
+    /// (they were vermillion, ZP+W's colour, and pink), written here by hand.
+    #[test]
+    fn fig4_colours_are_schemes_and_a_sweep() {
+        let fig = fig4().map_err(|e| e.named("lloyd2005-fig4")).unwrap();
+        let hex: Vec<String> = fig.charts.charts[0]
+            .series
+            .iter()
+            .filter(|s| s.label.is_some())
+            .map(|s| format!("#{:02X}{:02X}{:02X}", s.colour.0, s.colour.1, s.colour.2))
+            .collect();
+        assert_eq!(hex, ["#0072B2", "#3F007D", "#009E73", "#9589C0", "#E69F00"]);
+    }
+
+    /// Fig 4 in one column (figure review 2: two of its five line-end labels found room only
+    /// far from their curves, their halos cutting other curves): the five curves are named in
+    /// one legend under the plot, read back from the SVG: each name once, every one below the
+    /// x axis' tick labels; and its caption is at most five lines (it was seven), as Fig 7's.
+    #[test]
+    fn fig4_one_column_has_a_legend_below_and_short_captions() {
+        use super::super::chart::read_svg::{draw_svg, texts};
+        use super::super::chart::with_page;
+        let fig = fig4().map_err(|e| e.named("lloyd2005-fig4")).unwrap();
+        let size = fig.single_size().unwrap();
+        let svg = with_page(false, Column::Single, || {
+            draw_svg(size, |area| fig.draw(area).unwrap())
+        });
+        let all = texts(&svg);
+        let names: Vec<f64> = all
+            .iter()
+            .filter(|(_, t, _)| t.starts_with("n = "))
+            .map(|(_, _, y)| *y)
+            .collect();
+        assert_eq!(names.len(), 5, "{names:?}");
+        let ticks_y = all
+            .iter()
+            .filter(|(_, t, _)| t == "10" || t == "2")
+            .map(|(_, _, y)| *y)
+            .fold(f64::NEG_INFINITY, f64::max);
+        assert!(
+            names.iter().all(|&y| y > ticks_y),
+            "legend at {names:?}, x ticks at {ticks_y}"
+        );
+        for (name, f) in [("fig4", fig), ("fig7", fig7().ok().unwrap())] {
+            let size = f.single_size().unwrap();
+            let svg = with_page(false, Column::Single, || {
+                draw_svg(size, |area| f.draw(area).unwrap())
+            });
+            let lines = svg.matches("fill=\"#323232\"").count();
+            assert!((1..=5).contains(&lines), "{name}: {lines} caption lines");
+        }
     }
 }
