@@ -125,11 +125,11 @@ pub struct Measured {
     pub texel_position_p99: f64,
     /// The largest of the same.
     pub texel_position_max: f64,
-    /// LiSPSM's maps (`WarpRule::Lispsm`): the largest relative difference, over the maps, of
-    /// w's far/near ratio along the warp axis fitted from the GPU's texel coordinates
-    /// ([`crate::warpfit`]) from `1 + Δ/n′` with n′ from the paper ([`crate::papers`]); `None`
-    /// for the other schemes.
-    pub lispsm_warp_rel_diff: Option<f64>,
+    /// LiSPSM's maps (`WarpRule::Lispsm`) and PSM's (`WarpRule::Psm`): the largest relative
+    /// difference, over the maps, of w's far/near ratio along the warp axis fitted from the
+    /// GPU's texel coordinates ([`crate::warpfit`]) from `1 + Δ/n′` with n′ from the paper
+    /// ([`crate::papers`]); `None` for the other schemes.
+    pub warp_rel_diff: Option<f64>,
     /// TSM: the fraction of the map, from its top line, up to the focus line, fitted from the
     /// GPU's texel coordinates (Martin & Tan: 0.8); `None` for the other schemes.
     pub tsm_focus_fraction: Option<f64>,
@@ -658,7 +658,7 @@ pub fn analyse(
     rels.sort_by(f64::total_cmp);
     lens_rels.sort_by(f64::total_cmp);
     positions.sort_by(f64::total_cmp);
-    let (lispsm_warp, tsm_focus) = warp_measures(view, built, scheme, &fits, debug);
+    let (warp_diff, tsm_focus) = warp_measures(view, built, scheme, &fits, debug);
     let (ratio, worst) = frame_ratios(&px, view, built, &rendered_m, (width, height, res));
     let (lens_ratio, lens_worst) =
         lens_ratios(&px, view, built, (&lens_m, &shear_m), (width, height));
@@ -707,7 +707,7 @@ pub fn analyse(
         max_texel_shear: shear_m.iter().copied().fold(1.0, f64::max),
         texel_position_p99: percentile(&positions, 0.99),
         texel_position_max: positions.last().copied().unwrap_or(f64::NAN),
-        lispsm_warp_rel_diff: lispsm_warp,
+        warp_rel_diff: warp_diff,
         tsm_focus_fraction: tsm_focus,
         split_mismatches: (!built.planes.is_empty()).then_some(split_mis),
         paper_error_rel_diff: paper.pixel_diffs(),

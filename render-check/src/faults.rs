@@ -77,6 +77,12 @@ pub enum Fault {
     /// centre), honestly reported: the frame's M_x, M_z, `max_error_pixels` and `texel_world`
     /// × 1.2 with it, so that only a measurement against the paper can tell.
     UniformWide,
+    /// PSM's n′ doubled in the crate's rule (`WarpRule::Psm` giving 2 n for n): the frame built
+    /// by the crate with the n′ of 2 n_B ([`Fault::psm_rule`]), so that everything the frame
+    /// reports (n′, M_x, M_z, `max_error_pixels`, the records' bias) follows the doubled n′ as
+    /// a bug in the rule would make it; only a measurement of the map against PSM's n′ from
+    /// the paper can tell.
+    PsmNPrimeDouble,
 }
 
 /// How far from the world origin a set-up's camera must be for [`Fault::PlainWorld`] to apply
@@ -108,7 +114,7 @@ const GL_TO_01: DMat4 = DMat4::from_cols(
 
 impl Fault {
     /// Every fault, in the order of the self-test.
-    pub const ALL: [Fault; 22] = [
+    pub const ALL: [Fault; 23] = [
         Fault::MatrixScale,
         Fault::DepthShift,
         Fault::NPrimeDouble,
@@ -131,6 +137,7 @@ impl Fault {
         Fault::PcfRadiusDoubled,
         Fault::NormalOffsetDoubled,
         Fault::UniformWide,
+        Fault::PsmNPrimeDouble,
     ];
 
     /// The name `--fault` takes.
@@ -158,6 +165,7 @@ impl Fault {
             Fault::PcfRadiusDoubled => "pcf-radius-x2",
             Fault::NormalOffsetDoubled => "normal-offset-x2",
             Fault::UniformWide => "uniform-wide",
+            Fault::PsmNPrimeDouble => "psm-n-prime-x2",
         }
     }
 
@@ -186,6 +194,7 @@ impl Fault {
             Fault::PcfRadiusDoubled => "the PCF kernel's taps reaching 2r for a radius r",
             Fault::NormalOffsetDoubled => "the normal offset (record and per point) doubled",
             Fault::UniformWide => "the uniform map 1.2 x too wide, its error reported x 1.2",
+            Fault::PsmNPrimeDouble => "PSM's n' x 2 in the crate's rule (reported with it)",
         }
     }
 
@@ -210,7 +219,10 @@ impl Fault {
                 scheme,
                 Scheme::Uniform | Scheme::StableCascades | Scheme::Clipmap
             ),
-            Fault::CascadeOffByOne => matches!(scheme, Scheme::Cascades | Scheme::StableCascades),
+            Fault::CascadeOffByOne => matches!(
+                scheme,
+                Scheme::Cascades | Scheme::StableCascades | Scheme::BlendedCascades
+            ),
             Fault::Unsnapped => scheme == Scheme::StableCascades,
             Fault::WrongFace => scheme == Scheme::Faces,
             Fault::BlendIgnored | Fault::BlendWide | Fault::OverlapDropped => {
@@ -222,6 +234,7 @@ impl Fault {
             ),
             Fault::TsmFocus => scheme == Scheme::Tsm,
             Fault::UniformWide => scheme == Scheme::Uniform,
+            Fault::PsmNPrimeDouble => scheme == Scheme::Psm,
             Fault::SplitsPast => matches!(
                 scheme,
                 Scheme::Cascades | Scheme::StableCascades | Scheme::BlendedCascades
@@ -438,8 +451,42 @@ impl Fault {
         GL_TO_01 * built
     }
 
-    /// Changes how the renderer selects the maps (split ranges, faces); whether it did.
-    pub fn selection(fault: Option<Fault>, maps: &mut [Map]) -> bool {
+    /// The rule the crate's frame is built with again for a map of `scheme` focused on `body`
+    /// (eye space) under `fault`, or `None` to keep the scheme's own: for
+    /// [`Fault::PsmNPrimeDouble`], Lloyd 2006 Eq 11's η whose n′ is 2 n_B for the body's eye
+    /// depths `[n_B, f_B]` (α = f_B/n_B: n(√α + 1)/(η√α + 1) = 2n at η = (√α − 1)/(2√α)), which
+    /// the crate's `WarpRule::Eta` applies to the body's depth range as `WarpRule::Psm` applies
+    /// n′ = n_B to it.
+    ///
+    /// # Errors
+    /// A body without depth (α ≤ 1: no η > 0 gives 2 n_B).
+    pub fn psm_rule(
+        fault: Option<Fault>,
+        scheme: Scheme,
+        body: &[DVec3],
+    ) -> Option<Result<shadow_aliasing::maps::WarpRule, String>> {
+        if fault != Some(Fault::PsmNPrimeDouble) || scheme != Scheme::Psm {
+            return None;
+        }
+        let n_b = body.iter().map(|v| -v.z).fold(f64::INFINITY, f64::min);
+        let f_b = body.iter().map(|v| -v.z).fold(f64::NEG_INFINITY, f64::max);
+        let ra = (f_b / n_b).sqrt();
+        let eta = (ra - 1.0) / (2.0 * ra);
+        Some(if eta > 0.0 && eta <= 1.0 {
+            Ok(shadow_aliasing::maps::WarpRule::Eta(eta))
+        } else {
+            Err(format!(
+                "psm-n-prime-x2: the body's eye depths [{n_b}, {f_b}] give no η for 2 n_B"
+            ))
+        })
+    }
+
+    /// Changes how the renderer selects the maps of `scheme` (split ranges, faces), where the
+    /// fault applies to the scheme ([`Fault::applies_to`]); whether it did.
+    pub fn selection(fault: Option<Fault>, scheme: Scheme, maps: &mut [Map]) -> bool {
+        if !fault.is_some_and(|f| f.applies_to(scheme)) {
+            return false;
+        }
         match fault {
             Some(Fault::CascadeOffByOne) => {
                 // The shader takes the first map whose far exceeds the fragment's depth: each
@@ -666,6 +713,82 @@ mod tests {
             assert_ne!(a.region, b.region);
             assert_eq!(b.record.face, b.region as u32);
         }
+    }
+
+    /// PSM's n′ doubled in the crate's rule: the crate's own frame with twice the n′ of the
+    /// clean one (read back from the matrix as in `n_prime_doubled_on_frame_maps`, and as the
+    /// frame reports it), on the same body, its reported maxima following the map.
+    #[test]
+    fn psm_n_prime_doubled_in_the_rule() {
+        let setup = &crate::schemes::setups()[1];
+        let view = View::new(&setup.scene.camera, setup.scene.light(), 320, 240).unwrap();
+        let zo = shadow_aliasing::maps::ClipDepth::ZeroToOne;
+        let build = |fault| {
+            crate::schemes::build(Scheme::Psm, &view, &setup.scene, 1024, fault, zo).unwrap()
+        };
+        let (clean, f) = (build(None), build(Some(Fault::PsmNPrimeDouble)));
+        assert_eq!(clean.bodies, f.bodies);
+        let body = &clean.bodies[0];
+        let n_b = body.iter().map(|v| -v.z).fold(f64::INFINITY, f64::min);
+        let read = |mat: DMat4| {
+            let w = mat.row(3);
+            let axis = w.truncate().normalize();
+            let (mut zlo, mut zhi, mut wlo, mut whi) =
+                (f64::INFINITY, f64::MIN, f64::INFINITY, 0.0f64);
+            for p in body {
+                let (z, ww) = (axis.dot(*p), w.dot(p.extend(1.0)));
+                (zlo, zhi, wlo, whi) = (zlo.min(z), zhi.max(z), wlo.min(ww), whi.max(ww));
+            }
+            (zhi - zlo) / (whi / wlo - 1.0)
+        };
+        let (a, b) = (&clean.maps[0], &f.maps[0]);
+        assert!(
+            (read(a.built) / n_b - 1.0).abs() < 1e-6,
+            "{} {n_b}",
+            read(a.built)
+        );
+        assert!(
+            (read(b.built) / (2.0 * n_b) - 1.0).abs() < 1e-6,
+            "{}",
+            read(b.built)
+        );
+        assert!((b.reported.n_prime / (2.0 * a.reported.n_prime) - 1.0).abs() < 1e-9);
+        assert!((b.reported.max_mz / a.reported.max_mz - 1.0).abs() > 1e-3);
+        // Only PSM's rule: the other schemes are built as without the fault.
+        let l = |fault| {
+            crate::schemes::build(Scheme::Lispsm, &view, &setup.scene, 1024, fault, zo).unwrap()
+        };
+        assert_eq!(
+            l(None).maps[0].built,
+            l(Some(Fault::PsmNPrimeDouble)).maps[0].built
+        );
+    }
+
+    /// `cascade-off-by-one` changes the cascades' selection only: a single map, the face
+    /// partitions and the clipmap keep their split ranges and records (the whole binary applies
+    /// a fault to every scheme; it gave the uniform map the range (n, ∞), which the level
+    /// set-up's Eq 7–10 then read as the map's depth range: `lloyd_rel_diff` 1.0).
+    #[test]
+    fn cascade_off_by_one_leaves_other_schemes_alone() {
+        let setup = &crate::schemes::setups()[1];
+        let view = View::new(&setup.scene.camera, setup.scene.light(), 320, 240).unwrap();
+        let zo = shadow_aliasing::maps::ClipDepth::ZeroToOne;
+        for scheme in [Scheme::Uniform, Scheme::Psm, Scheme::Faces, Scheme::Clipmap] {
+            let b = |fault| {
+                crate::schemes::build(scheme, &view, &setup.scene, 1024, fault, zo).unwrap()
+            };
+            let (clean, f) = (b(None), b(Some(Fault::CascadeOffByOne)));
+            for (a, c) in clean.maps.iter().zip(&f.maps) {
+                assert_eq!((a.near, a.far, a.region), (c.near, c.far, c.region));
+                assert_eq!(a.record, c.record, "{}", scheme.name());
+            }
+        }
+        let b = |fault| {
+            crate::schemes::build(Scheme::Cascades, &view, &setup.scene, 1024, fault, zo).unwrap()
+        };
+        let (clean, f) = (b(None), b(Some(Fault::CascadeOffByOne)));
+        assert_eq!(f.maps[1].near, clean.maps[0].near);
+        assert_eq!(f.maps[1].far, clean.maps[0].far);
     }
 
     #[test]

@@ -10,7 +10,7 @@ use glam::DVec3;
 
 /// Lloyd 2006's overhead case, where it applies: the camera level, the light straight down
 /// (γ = 90°, light-space z along the view), a scheme whose maps are Lloyd's warps (uniform,
-/// LiSPSM, minimax n′, z-partitions of LiSPSM), and every map's focus body with the footprint of
+/// PSM, LiSPSM, minimax n′, z-partitions of LiSPSM), and every map's focus body with the footprint of
 /// its frustum slice (its depth range `split`, its width z tan θ_x at both ends).
 pub(crate) struct Lloyd {
     /// Per map: near, far, n′.
@@ -22,7 +22,7 @@ pub(crate) struct Lloyd {
 pub(crate) fn lloyd_applies(view: &View, built: &Built, scheme: Scheme) -> Option<Lloyd> {
     if !matches!(
         scheme,
-        Scheme::Uniform | Scheme::Lispsm | Scheme::Minimax | Scheme::Cascades
+        Scheme::Uniform | Scheme::Lispsm | Scheme::Minimax | Scheme::Cascades | Scheme::Psm
     ) || (view.light_eye - DVec3::NEG_Y).length() > 1e-9
     {
         return None;
@@ -75,7 +75,10 @@ impl Lloyd {
     }
 
     /// The relative difference of the rendered maxima over the ground from Eq 9–10, for the maps
-    /// whose near end is the camera's near plane (where the level set-up shows the ground).
+    /// whose near end is the camera's near plane (where the level set-up shows the ground): M_x
+    /// (Eq 9, on the near plane) always, M_z where Eq 10's maximum lies on the near plane too
+    /// (n′ ≥ n′_LSPSM, where m_z(n) ≥ m_z(f)). Below n′_LSPSM (PSM's n′ = n) M_z is m_z(f), on
+    /// the far plane, where the ground reaches the horizon's rows and no pixel is compared.
     pub(crate) fn maxima_diff(
         &self,
         ground: &[(f64, f64)],
@@ -89,10 +92,13 @@ impl Lloyd {
                 continue;
             }
             let sizes = (f64::from(width), f64::from(height));
-            let (ex, ez) = lloyd2006::maxima(n, f, np, self.tan, sizes, f64::from(res));
-            d = d
-                .max((ground[k].0 / ex - 1.0).abs())
-                .max((ground[k].1 / ez - 1.0).abs());
+            let r = f64::from(res);
+            let (ex, ez) = lloyd2006::maxima(n, f, np, self.tan, sizes, r);
+            d = d.max((ground[k].0 / ex - 1.0).abs());
+            let at = |z: f64| lloyd2006::m_z(z, n, f, np, self.tan, sizes.1, r);
+            if at(n) >= at(f) * (1.0 - 1e-9) {
+                d = d.max((ground[k].1 / ez - 1.0).abs());
+            }
         }
         d
     }

@@ -10,7 +10,7 @@ use render_check::gpu::{Gpu, Lookup};
 use render_check::images::{close_up, error_panels, lens_overlay, shaded, Crop};
 use render_check::run::{case_clip_depth, run_case, run_full, Render, Sizes, Summary};
 use render_check::scene::Scene;
-use render_check::schemes::{setups, Scheme, Setup};
+use render_check::schemes::{schemes_for, setups, Setup};
 use render_check::self_test::{self_test, MIN_SETUPS_CAUGHT};
 use render_check::targets::{is_inconclusive, violations};
 use shadow_aliasing::maps::ClipDepth;
@@ -173,7 +173,7 @@ fn real_main() -> Result<(), String> {
         // The set-up's place in the built-in list picks its schemes' clip depths (a scene file
         // counts as the first).
         let si = order.iter().position(|n| n == &setup.name).unwrap_or(0);
-        for scheme in Scheme::ALL {
+        for scheme in schemes_for(&setup.name) {
             let t = Instant::now();
             let mut sizes = sizes;
             if !reversed {

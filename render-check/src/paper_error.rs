@@ -23,7 +23,8 @@
 //! frustum these are Eq 7 and 8 (`each_beam_is_eq_7_and_8_overhead` below). The maxima over the
 //! body's vertices are §4.4's M_x, M_z for any light direction.
 //!
-//! n′ per scheme, from the papers ([`crate::papers`]): the uniform map ∞; LiSPSM (the single map
+//! n′ per scheme, from the papers ([`crate::papers`]): the uniform map ∞; PSM n_B, the body's
+//! nearest eye depth (Lloyd 2006 §4.1's n′ = n); LiSPSM (the single map
 //! and each cascade of both cascade schemes) (n_B + √(f_B n_B)) / sin γ (Wimmer et al. 2004;
 //! Lloyd 2006 §4.1, §4.4), n_B and f_B the body's eye-depth range; TSM Martin & Tan's η, which
 //! sends the focus point (a quarter of the camera's depth range beyond the body's near eye depth)
@@ -119,6 +120,7 @@ pub fn paper_n_prime(scheme: Scheme, view: &View, body: &[DVec3]) -> Option<f64>
     let f_b = body.iter().map(|v| -v.z).fold(f64::NEG_INFINITY, f64::max);
     match scheme {
         Scheme::Uniform => Some(f64::INFINITY),
+        Scheme::Psm => Some(crate::papers::psm_n_prime(n_b)),
         Scheme::Lispsm | Scheme::Cascades | Scheme::BlendedCascades => Some(
             crate::papers::lispsm_n_prime(n_b, f_b, crate::papers::sin_gamma(light)),
         ),
@@ -323,6 +325,35 @@ mod tests {
             let (ex, ez) = lloyd2006::maxima(n, f, np, tan, (w, h), res);
             assert!((mx / ex - 1.0).abs() < 1e-12, "{np}: {mx} {ex}");
             assert!((mz / ez - 1.0).abs() < 1e-12, "{np}: {mz} {ez}");
+        }
+    }
+
+    /// PSM's n′ (Lloyd 2006 §4.1: n′ = n) puts the centre of projection at the eye: with the
+    /// light overhead and the body the frustum, Eq 7 gives m_x = (res_i/res_s) f (n + z − n) /
+    /// (z (n + f − n)) = res_i/res_s at every depth (by hand), and Eq 8 m_z ∝ z. The paper's map
+    /// with `papers::psm_n_prime` has exactly that m_x and an m_z proportional to the depth.
+    #[test]
+    fn psm_n_prime_puts_the_centre_at_the_eye() {
+        let (n, f, tan, aspect) = (0.5, 60.0, 30f64.to_radians().tan(), 4.0 / 3.0);
+        let (h, res) = (480.0, 1024.0);
+        let frustum: Vec<DVec3> = [n, f]
+            .iter()
+            .flat_map(|&d| {
+                [(-1.0, -1.0), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)]
+                    .map(|(sx, sy)| DVec3::new(sx * d * tan * aspect, sy * d * tan, -d))
+            })
+            .collect();
+        let np = crate::papers::psm_n_prime(n);
+        let warp = PaperWarp::new(DVec3::NEG_Y, &frustum, np).expect("a warp");
+        let (_, mz0) = warp.m(DVec3::new(0.0, 0.0, -1.0), tan, h, res);
+        for i in 0..=20 {
+            let z = n * (f / n).powf(f64::from(i) / 20.0);
+            let (mx, mz) = warp.m(DVec3::new(0.2 * z, -0.1 * z, -z), tan, h, res);
+            assert!(
+                (mx / (h * aspect / res) - 1.0).abs() < 1e-12,
+                "z {z}: m_x {mx}"
+            );
+            assert!((mz / (mz0 * z) - 1.0).abs() < 1e-12, "z {z}: m_z {mz}");
         }
     }
 

@@ -3,6 +3,9 @@
 //!
 //! - LiSPSM's n′ (Wimmer et al. 2004, n_opt = n + √(f n); Lloyd 2006 §4.1 divides it by sin γ,
 //!   γ the angle between the view direction and the light);
+//! - PSM's n′ (Lloyd 2006 §4.1: "PSMs use n′ = n", n′ the distance from the centre of
+//!   projection to the near plane, which puts the centre at the eye: Stamminger & Drettakis
+//!   2002's map in the camera's post-perspective space, for the light overhead);
 //! - TSM's 80 % line (Martin & Tan 2004 §4.2: the focus point, δ beyond the near plane on the
 //!   view axis, maps to ξ = −0.6 of the trapezoid's [1, −1], 80 % of the map from its top line;
 //!   §6.4: for a body shorter than the frustum, δ scaled by the body's depth over the frustum's);
@@ -20,6 +23,15 @@ use glam::DVec3;
 /// eye depths `[n, f]`, `sin_gamma` the sine of the angle between view direction and light.
 pub fn lispsm_n_prime(n: f64, f: f64, sin_gamma: f64) -> f64 {
     (n + (f * n).sqrt()) / sin_gamma
+}
+
+/// PSM's n′ for a body whose nearest eye depth is `n` (Lloyd 2006 §4.1: n′ = n, the centre of
+/// projection n before the body's near end, i.e. at the eye when the light is overhead). With a
+/// tilted light Stamminger & Drettakis's own map is no one-point perspective in light space
+/// (Lloyd 2006 §4.4); this is the light-space warp with PSM's parameter, as the paper's Fig 4
+/// and Eq 7–12 use it.
+pub fn psm_n_prime(n: f64) -> f64 {
+    n
 }
 
 /// sin γ between the view direction (−z in eye space) and the light's direction `light_eye`

@@ -41,11 +41,14 @@ pub enum Scheme {
     /// A clipmap ([`ClipmapOptions::UNREAL`]'s levels and LOD bias, the scene's map resolution):
     /// the level picked by the crate's `sa_clipmap_level`.
     Clipmap,
+    /// Perspective shadow maps' parameter (Stamminger & Drettakis 2002; Lloyd 2006 §4.1:
+    /// n′ = n, the body's nearest eye depth): the crate's `WarpRule::Psm`, one map.
+    Psm,
 }
 
 impl Scheme {
     /// All schemes, in the order of the gallery.
-    pub const ALL: [Scheme; 9] = [
+    pub const ALL: [Scheme; 10] = [
         Scheme::Uniform,
         Scheme::Lispsm,
         Scheme::Minimax,
@@ -55,6 +58,7 @@ impl Scheme {
         Scheme::Faces,
         Scheme::BlendedCascades,
         Scheme::Clipmap,
+        Scheme::Psm,
     ];
     /// The name in images' titles.
     pub fn label(self) -> &'static str {
@@ -68,6 +72,7 @@ impl Scheme {
             Scheme::Faces => "face partitions (LiSPSM, k = 1)",
             Scheme::BlendedCascades => "4 cascades, LiSPSM, cross-faded over 25 %",
             Scheme::Clipmap => "clipmap (Unreal's levels)",
+            Scheme::Psm => "PSM, n′ = n",
         }
     }
     /// The name in summary.json.
@@ -82,8 +87,27 @@ impl Scheme {
             Scheme::Faces => "face_partitions",
             Scheme::BlendedCascades => "cascades4_blend",
             Scheme::Clipmap => "clipmap",
+            Scheme::Psm => "psm",
         }
     }
+}
+
+/// The built-in set-ups that do not run [`Scheme::Psm`]: `front_5`, the light from in front
+/// (γ = 175°). Lloyd 2006 §4.4 has PSM revert to the orthographic map with the light in front
+/// of or behind the viewer; the crate's `WarpRule::Psm` keeps n′ = n at every direction, and at
+/// γ = 175° its map's texels far from the camera are so large that, on a correct crate, fewer
+/// than half of the shadowed pixels are decidable and the GPU's `f32` texel coordinates move by
+/// too little over the derivatives' steps for the paper's comparison (12) to hold its 99th
+/// percentile (docs/rendered.md, "Schemes").
+pub const PSM_SKIPPED: [&str; 1] = ["front_5"];
+
+/// The schemes a set-up named `setup` runs: [`Scheme::ALL`], less [`Scheme::Psm`] in the set-ups
+/// of [`PSM_SKIPPED`] (a scene file runs all).
+pub fn schemes_for(setup: &str) -> Vec<Scheme> {
+    Scheme::ALL
+        .into_iter()
+        .filter(|&s| s != Scheme::Psm || !PSM_SKIPPED.contains(&setup))
+        .collect()
 }
 
 /// How the fragment picks its map.
@@ -370,6 +394,7 @@ fn frame_scheme(
             rule: WarpRule::Lispsm,
         },
         Scheme::Clipmap => FrameScheme::Clipmap(clipmap_options(res)),
+        Scheme::Psm => FrameScheme::Single(WarpRule::Psm),
     }
 }
 
@@ -427,7 +452,16 @@ pub fn build(
             Bound::Unbounded
         })
         .scheme(frame_scheme(scheme_, fr, res, fault));
-    let f = frame(&input).map_err(e)?;
+    let mut f = frame(&input).map_err(e)?;
+    // A fault in the crate's rule: the frame built again with the faulted rule's n′.
+    let faulted_rule = f
+        .maps()
+        .iter()
+        .next()
+        .and_then(|m| Fault::psm_rule(fault, scheme_, m.body()));
+    if let Some(rule) = faulted_rule {
+        f = frame(&input.scheme(FrameScheme::Single(rule?))).map_err(e)?;
+    }
     if f.is_empty() {
         return Err(format!(
             "{}: the frame built no map ({:?})",
@@ -485,7 +519,7 @@ pub fn build(
             })
         })
         .collect::<Result<_, String>>()?;
-    if Fault::selection(fault, &mut maps) {
+    if Fault::selection(fault, scheme_, &mut maps) {
         // The shader selects by the record: give it the faulted ranges and faces.
         for m in &mut maps {
             m.record.split = [m.near as f32, m.far as f32];

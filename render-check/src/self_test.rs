@@ -6,7 +6,7 @@
 use crate::faults::Fault;
 use crate::gpu::Gpu;
 use crate::run::{run_full, Render, Sizes};
-use crate::schemes::{setups, Scheme};
+use crate::schemes::{schemes_for, setups};
 use crate::targets::violations;
 use std::collections::BTreeMap;
 
@@ -86,7 +86,7 @@ pub fn self_test(gpu: &Gpu, log: impl Fn(&str)) -> Result<Vec<SelfTestRow>, Stri
             gpu
         };
         for (si, setup) in all.iter().enumerate() {
-            for scheme in Scheme::ALL {
+            for scheme in schemes_for(&setup.name) {
                 let clip_depth = crate::run::case_clip_depth(si, scheme);
                 if fault.is_some_and(|f| {
                     !f.applies_to(scheme)

@@ -172,11 +172,11 @@ fn solve7(mut a: [[f64; 7]; 7], mut b: [f64; 7]) -> Option<[f64; 7]> {
 }
 
 /// Per map, a fit of its warp where the paper's expectation is measured: LiSPSM's maps (the
-/// single map and each cascade's) and TSM's.
+/// single map and each cascade's), PSM's and TSM's.
 pub(crate) fn warp_fits(view: &View, built: &Built, scheme: Scheme) -> Vec<Option<WarpFit>> {
     let measured = matches!(
         scheme,
-        Scheme::Lispsm | Scheme::Cascades | Scheme::BlendedCascades | Scheme::Tsm
+        Scheme::Lispsm | Scheme::Cascades | Scheme::BlendedCascades | Scheme::Tsm | Scheme::Psm
     );
     let axis = crate::papers::warp_axis(view.light_eye);
     built
@@ -194,9 +194,9 @@ pub(crate) fn warp_fits(view: &View, built: &Built, scheme: Scheme) -> Vec<Optio
 /// Below this many pixels a map's warp is not fitted (a cascade's sliver at the horizon).
 const MIN_FIT_PIXELS: usize = 2000;
 
-/// LiSPSM's w ratio against the paper's n′ (the largest relative difference over the maps), and
-/// TSM's focus fraction, from the fits (docs/rendered.md, "What is measured", 8–9). A scheme
-/// measured with no map fitted gives NaN (no measurement is no pass).
+/// LiSPSM's and PSM's w ratio against the paper's n′ (the largest relative difference over the
+/// maps), and TSM's focus fraction, from the fits (docs/rendered.md, "What is measured", 8–9). A
+/// scheme measured with no map fitted gives NaN (no measurement is no pass).
 pub(crate) fn warp_measures(
     view: &View,
     built: &Built,
@@ -208,8 +208,9 @@ pub(crate) fn warp_measures(
         scheme,
         Scheme::Lispsm | Scheme::Cascades | Scheme::BlendedCascades
     );
+    let psm = scheme == Scheme::Psm;
     let tsm = scheme == Scheme::Tsm;
-    if !(lispsm || tsm) {
+    if !(lispsm || psm || tsm) {
         return (None, None);
     }
     let Some(axis) = crate::papers::warp_axis(view.light_eye) else {
@@ -230,8 +231,12 @@ pub(crate) fn warp_measures(
         let hi = a.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         let n_b = body.iter().map(|v| -v.z).fold(f64::INFINITY, f64::min);
         let f_b = body.iter().map(|v| -v.z).fold(f64::NEG_INFINITY, f64::max);
-        if lispsm {
-            let np = crate::papers::lispsm_n_prime(n_b, f_b, sin_g);
+        if lispsm || psm {
+            let np = if psm {
+                crate::papers::psm_n_prime(n_b)
+            } else {
+                crate::papers::lispsm_n_prime(n_b, f_b, sin_g)
+            };
             let expected = 1.0 + (hi - lo) / np;
             let got = warp.w_ratio(body);
             let d = (got / expected - 1.0).abs();
@@ -265,7 +270,7 @@ pub(crate) fn warp_measures(
             any = true;
         }
     }
-    if lispsm {
+    if lispsm || psm {
         (Some(if any { worst } else { f64::NAN }), None)
     } else {
         (None, Some(frac))

@@ -153,7 +153,7 @@ fn lispsm_without_sin_gamma_is_caught() {
         "behind_5",
         Scheme::Lispsm,
         Fault::LispsmNoSin,
-        "lispsm_warp_rel_diff (w's ratio fitted from the texels against 1 + Δ/n′ of the paper)",
+        "warp_rel_diff (w's ratio fitted from the texels against 1 + Δ/n′ of the paper)",
     );
 }
 
@@ -294,5 +294,42 @@ fn minimax_n_prime_doubled_is_caught_by_the_paper() {
         Scheme::Minimax,
         Fault::NPrimeDouble,
         "paper_error_p99 (rendered m_x, m_z against the paper's map, Lloyd 2006 §4.4)",
+    );
+}
+
+/// PSM's n′ doubled in the crate's rule, everything the frame reports following it: the frame's
+/// own ratios cannot see it (rendered over reported stays within 1 %), the warp fitted from the
+/// texels against PSM's n′ = n_B from the paper (9) and the paper's map (12) can.
+#[test]
+fn psm_n_prime_doubled_in_the_rule_is_caught_by_the_paper() {
+    let v = caught(
+        "tilted_45",
+        Scheme::Psm,
+        Fault::PsmNPrimeDouble,
+        "paper_error_p99 (rendered m_x, m_z against the paper's map, Lloyd 2006 §4.4)",
+    );
+    assert!(v.iter().any(|x| x.starts_with("warp_rel_diff")), "{v:?}");
+    assert!(
+        !v.iter()
+            .any(|x| x.starts_with("frame_error_ratio") || x.starts_with("lens_frame_ratio")),
+        "{v:?}"
+    );
+}
+
+/// Cascade selection off by one under the overhead light: every shadow-edge point lies in a
+/// split whose faulted map does not hold it, so the shimmer test follows none; the case still
+/// reports what it measured (the pixels outside their map), where it used to end in an error
+/// that the self-test counted as neither caught nor clean.
+#[test]
+fn cascade_off_by_one_under_the_overhead_light_is_caught() {
+    let v = caught(
+        "overhead",
+        Scheme::Cascades,
+        Fault::CascadeOffByOne,
+        "uncovered_pixels",
+    );
+    assert!(
+        v.iter().any(|x| x.starts_with("shimmer_points = 0")),
+        "{v:?}"
     );
 }

@@ -37,9 +37,9 @@ fn gpu() -> Gpu {
 /// (`case_clip_depth`: reversed depth for about half the schemes of every set-up).
 fn meets_every_target(gpu: &Gpu, name: &str, scene: &Scene, sizes: Sizes) -> Vec<CaseSummary> {
     let si = setups().iter().position(|s| s.name == name).unwrap_or(0);
-    Scheme::ALL
-        .iter()
-        .map(|&scheme| {
+    render_check::schemes::schemes_for(name)
+        .into_iter()
+        .map(|scheme| {
             let mut sizes = sizes;
             if sizes.render == Render::DEFAULT {
                 sizes.render.clip_depth = case_clip_depth(si, scheme);
@@ -677,7 +677,7 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
         "max_texel_shear",
         "texel_position_p99",
         "texel_position_max",
-        "lispsm_warp_rel_diff",
+        "warp_rel_diff",
         "tsm_focus_fraction",
         "split_mismatches",
         "paper_error_rel_diff",
