@@ -4,13 +4,13 @@
 //! as printed on white, sRGB linearised by its standard formula):
 //! - lloyd2005-fig8: the partitions' fills (panels (a) and (c)): two fills that share a piece of
 //!   an edge and are within [`SAME_GREY`] in L* carry different hatches (the directions of the
-//!   thin lines drawn inside them);
-//! - barroso-fig5 and lloyd2006-fig11: the partitions' maps (dashed outlines of width 2): two
-//!   map colours within [`SAME_GREY`] have different dash lengths.
+//!   thin lines drawn inside them).
+//!
+//! barroso-fig5's and lloyd2006-fig11's maps (each its own dash pattern, in every form) are
+//! checked in tests/figures_f_from_light.rs.
 #![cfg(feature = "plot")]
 
 use shadow_aliasing::plot::{render, Format};
-use std::collections::BTreeMap;
 use std::path::Path;
 
 /// Two greys closer than this in CIE L* (0 black … 100 white) count as the same grey.
@@ -207,55 +207,4 @@ fn fig8_touching_fills_differ_by_hatch() {
     }
     assert!(checked >= 8, "only {checked} touching pairs of one grey");
     assert!(bad.is_empty(), "{}", bad.join("\n"));
-}
-
-/// The maps' outlines: per colour (not black, width 2), the median length of its dashes.
-fn dashes(svg: &str) -> BTreeMap<String, f64> {
-    let mut by: BTreeMap<String, Vec<f64>> = BTreeMap::new();
-    for el in svg.split('<').skip(1) {
-        let el = &el[..el.find('>').unwrap_or(el.len())];
-        if !el.starts_with("polyline ") || attr(el, "stroke-width") != Some("2") {
-            continue;
-        }
-        let colour = attr(el, "stroke").unwrap();
-        if colour == "#000000" {
-            continue;
-        }
-        let p = points(el);
-        let len: f64 = p
-            .windows(2)
-            .map(|w| ((w[1].0 - w[0].0).powi(2) + (w[1].1 - w[0].1).powi(2)).sqrt())
-            .sum();
-        by.entry(colour.to_string()).or_default().push(len);
-    }
-    by.into_iter()
-        .map(|(c, mut v)| {
-            v.sort_by(f64::total_cmp);
-            (c, v[v.len() / 2])
-        })
-        .collect()
-}
-
-/// barroso-fig5 and lloyd2006-fig11: map colours of one grey have dashes of different lengths.
-#[test]
-fn maps_of_one_grey_differ_by_dash() {
-    for (name, maps) in [("barroso-fig5", 4), ("lloyd2006-fig11", 3)] {
-        let d = dashes(&svg(name));
-        assert_eq!(d.len(), maps, "{name}: {d:?}");
-        let v: Vec<(&String, &f64)> = d.iter().collect();
-        let mut checked = 0;
-        for (i, (ca, la)) in v.iter().enumerate() {
-            for (cb, lb) in &v[i + 1..] {
-                if (lightness(ca, 1.0) - lightness(cb, 1.0)).abs() >= SAME_GREY {
-                    continue;
-                }
-                checked += 1;
-                assert!(
-                    (*la - *lb).abs() >= 1.5,
-                    "{name}: {ca} and {cb} print as one grey with dashes of {la} and {lb}"
-                );
-            }
-        }
-        assert!(checked >= 2, "{name}: {checked} pairs of one grey");
-    }
 }

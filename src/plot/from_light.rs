@@ -9,20 +9,14 @@
 //! map (ZP) is the light-space bounding rectangle of its corners, drawn dashed, so that the
 //! overlap of the maps shows.
 
-use super::chart::column;
-use super::chart::{
-    boxed_text, build_chart_styled, clip_polyline, equal_aspect, frame, Axis, ChartStyle, FONT,
-    PALETTE,
-};
-use super::{Column, Fail, Figure};
+use super::Fail;
 use crate::analytic::partition::{z_splits, SplitScheme};
 use crate::maps::light_space;
 use crate::scheme::ADAPTIVE_RATIO;
 use crate::ViewFrustum;
 use glam::{DVec2, DVec3};
-use plotters::coord::Shift;
-use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+mod draw;
 
 /// One panel: a light, its split depths and what it shows.
 pub(super) struct Panel {
@@ -84,12 +78,38 @@ fn panel(view: &ViewFrustum, light: DVec3, planes: &[f64], title: String) -> Res
         title,
         sections,
         maps,
-        plane_labels: planes.iter().map(|&z| fmt_planes(&[z])).collect(),
+        plane_labels: plane_labels(planes),
         planes: planes.to_vec(),
         window: None,
         dims: Vec::new(),
         extensions: Vec::new(),
     })
+}
+
+/// Each plane's label as Lloyd et al.'s Fig 11 writes them: the near and far planes by name,
+/// "n = 1" and "f = 100", the split planes by depth, "z = 3.162" ([`fmt_planes`]).
+fn plane_labels(planes: &[f64]) -> Vec<String> {
+    let last = planes.len().saturating_sub(1);
+    planes
+        .iter()
+        .enumerate()
+        .map(|(i, &z)| {
+            let z = fmt_planes(&[z]);
+            match i {
+                0 => format!("n = {z}"),
+                i if i == last => format!("f = {z}"),
+                _ => format!("z = {z}"),
+            }
+        })
+        .collect()
+}
+
+/// Leaves the labels of the planes nearer than the `from`-th unlabelled: an overview panel
+/// labels only its far planes, its detail panel the near ones.
+fn label_from(p: &mut Panel, from: usize) {
+    for l in &mut p.plane_labels[..from] {
+        l.clear();
+    }
 }
 
 /// A light-space point as the light sees it: `(−x, z)`, right and up in the light's view.
@@ -104,7 +124,6 @@ pub(super) fn seen_from_light(l: DVec3) -> DVec2 {
 /// The label of the horizontal axis of a diagram drawn by [`seen_from_light`].
 pub(super) const SEEN_X: &str = "light −x";
 
-/// Depths to 4 significant figures, trailing zeros dropped (31.62, 3.162, 1, 100).
 /// The light-space bounding box (min, max) of some cross-sections.
 fn bounds(sections: &[[DVec2; 4]]) -> (DVec2, DVec2) {
     sections.iter().flatten().fold(
@@ -113,6 +132,7 @@ fn bounds(sections: &[[DVec2; 4]]) -> (DVec2, DVec2) {
     )
 }
 
+/// Depths to 4 significant figures, trailing zeros dropped (31.62, 3.162, 1, 100).
 fn fmt_planes(p: &[f64]) -> String {
     p.iter()
         .map(|&z| {
@@ -152,7 +172,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     let overhead = DVec3::NEG_Y;
     let behind = DVec3::NEG_Z;
     let tilted = DVec3::new(0.0, -gamma.sin(), -gamma.cos());
-    let perpendicular = panel(
+    let mut perpendicular = panel(
         &view,
         overhead,
         ss.planes(),
@@ -167,8 +187,8 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         "(d) detail of (a): z ≤ 10".into(),
     )?;
     zoom.window = Some((lo, hi));
-    let parallel = panel(&view, behind, ss.planes(), "(b) parallel light".into())?;
-    let eq19 = panel(
+    let mut parallel = panel(&view, behind, ss.planes(), "(b) parallel light".into())?;
+    let mut eq19 = panel(
         &view,
         tilted,
         ad.planes(),
@@ -191,13 +211,21 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         format!("(f) detail of (c): z ≤ {}", fmt_planes(&ad.planes()[3..4])),
     )?;
     zoom_c.window = Some(bounds(&eq19.sections[..4]));
+    // The overviews label the planes their details leave out or show small (figure review 3:
+    // labels spread apart with kinked leaders crowded (b)): z ≥ 31.62 in (a) and (b), z ≥ 16.13
+    // in (c).
+    label_from(&mut perpendicular, 3);
+    label_from(&mut parallel, 3);
+    label_from(&mut eq19, 2);
     let panels = vec![perpendicular, parallel, eq19, zoom, zoom_b, zoom_c];
+    // Formulas joined by no-break spaces (U+00A0), so that the caption breaks none of them.
     let caption = format!(
-        "Barroso & Celes 2007, Fig. 5: the frustum seen from the light, k = {k} \
-         z-partitions, n = {n}, f = {f}, φ = {phi:.0}°. (a) Light perpendicular to the view, (b) \
-         parallel: Eq 5's self-similar partitions, z = {}. (c), not in the paper: Eq 19's adaptive \
-         ones for a light {gamma_deg:.0}° from the view (α = {ADAPTIVE_RATIO}), z = {}. (d)–(f) \
-         enlarge (a)–(c) near the eye. Dashed and dotted: the maps.",
+        "Barroso & Celes 2007, Fig. 5: the frustum seen from the light with k\u{a0}=\u{a0}{k} \
+         z-partitions, n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, φ\u{a0}=\u{a0}{phi:.0}°. (a) \
+         Light perpendicular to the view, (b) parallel: Eq\u{a0}5's self-similar splits \
+         z\u{a0}=\u{a0}{}. (c), not in the paper: Eq\u{a0}19's adaptive splits for a light \
+         {gamma_deg:.0}° from the view (α\u{a0}=\u{a0}{ADAPTIVE_RATIO}), z\u{a0}=\u{a0}{}. \
+         (d)–(f) enlarge (a)–(c) near the eye.",
         fmt_planes(ss.planes()),
         fmt_planes(ad.planes()),
         n = view.near(),
@@ -206,9 +234,10 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         gamma_deg = gamma.to_degrees(),
     );
     let single_caption = format!(
-        "Barroso & Celes 2007, Fig. 5: k = {k} z-partitions, n = {n}, f = {f}, φ = {phi:.0}°. \
-         (a) Light perpendicular, (b) parallel: Eq 5. (c) Eq 19 (not in the paper), light at \
-         {gamma_deg:.0}°, α = {ADAPTIVE_RATIO}. (d)–(f) enlarge (a)–(c). Dashed, dotted: maps.",
+        "Barroso & Celes 2007, Fig. 5: k\u{a0}=\u{a0}{k}, n\u{a0}=\u{a0}{n}, \
+         f\u{a0}=\u{a0}{f}, φ\u{a0}=\u{a0}{phi:.0}°. Light (a) perpendicular, (b) parallel: \
+         Eq\u{a0}5; (c) Eq\u{a0}19, light at {gamma_deg:.0}°, α\u{a0}=\u{a0}{ADAPTIVE_RATIO} \
+         (not in the paper); (d)–(f)\u{a0}enlarge\u{a0}(a)–(c).",
         n = view.near(),
         f = view.far(),
         phi = view.half_fov().to_degrees(),
@@ -220,7 +249,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         single_caption,
         panels,
         size: (520, 640),
-        single_size: (300, 600),
+        single_size: (300, 520),
     })
 }
 
@@ -232,25 +261,17 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
     // The light travels along the view direction (−Z): it is behind the viewer.
     // No panel title: the figure's title says it.
     let mut p = panel(&view, DVec3::NEG_Z, ss.planes(), String::new())?;
-    // The paper's labels: the near and far planes by name, the middle ones by depth, and the
-    // near and far faces' sides 2n tan θ and 2f tan θ as dimension lines under them.
-    let last = p.planes.len() - 1;
-    for (i, label) in p.plane_labels.iter_mut().enumerate() {
-        let z = fmt_planes(&[p.planes[i]]);
-        *label = match i {
-            0 => format!("n = {z}"),
-            i if i == last => format!("f = {z}"),
-            _ => format!("z = {z}"),
-        };
-    }
+    // The near and far faces' sides 2n tan θ and 2f tan θ as dimension lines under them.
     let (sn, sf) = (
         view.near() * view.tan_half_fov(),
         view.far() * view.tan_half_fov(),
     );
-    // The near face's dimension line lies in the band between the planes z = 2 and z = 4,
-    // carried there by extension lines from the face's corners, so that its label covers no
-    // line (issue 25: under the face it sat on the frustum's edges and the nearest map).
-    let near_dim = -1.35;
+    // The near face's dimension line lies below the square of z = 4, in the band to the far
+    // face, carried there by extension lines from the face's corners, so that its label covers
+    // no line (issue 25: under the face it sat on the frustum's edges and the nearest map;
+    // figure review 3: between z = 2 and z = 4 its box covered the z = 4 map's edge in one
+    // column).
+    let near_dim = -(4.0 * view.tan_half_fov() + 0.45);
     p.extensions = vec![
         [DVec2::new(-sn, -sn), DVec2::new(-sn, near_dim)],
         [DVec2::new(sn, -sn), DVec2::new(sn, near_dim)],
@@ -267,22 +288,24 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
             "2f tan θ".into(),
         ),
     ];
-    p.window = Some((DVec2::new(-sf, -sf - 1.2), DVec2::new(sf, sf)));
+    p.window = Some((DVec2::new(-sf, -sf - 1.75), DVec2::new(sf, sf)));
     let caption = format!(
         "Lloyd et al. 2006, Fig. 11: the frustum seen from a light behind the viewer, \
-         n = {n}, f = {f}, θ = {theta:.0}°, to scale. With \
-         k = {k} self-similar z-partitions (planes {}) each map (dashed) is the square of its far \
-         plane, so the nearer maps lie inside the farther ones: the overlap §5.3 blames for ZP's \
-         growth behind. The paper's sketch writes the sides 2n and 2f, their values at θ = 45°.",
+         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, to scale. With \
+         k\u{a0}=\u{a0}{k} self-similar z-partitions (z\u{a0}=\u{a0}{}) each map is the \
+         square of its far plane, so the nearer maps lie inside the farther ones: the overlap \
+         §5.3 blames for ZP's growth behind. The paper's sketch writes the sides 2n and 2f, \
+         their values at θ\u{a0}=\u{a0}45°.",
         fmt_planes(p.planes.as_slice()),
         n = view.near(),
         f = view.far(),
         theta = view.half_fov().to_degrees(),
     );
     let single_caption = format!(
-        "Lloyd et al. 2006, Fig. 11: from a light behind the viewer, n = {n}, f = {f}, \
-         θ = {theta:.0}°, k = {k} self-similar z-partitions. Each map (dashed) is the square of \
-         its far plane, so the nearer maps lie inside the farther ones.",
+        "Lloyd et al. 2006, Fig. 11: from a light behind the viewer, n\u{a0}=\u{a0}{n}, \
+         f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, k\u{a0}=\u{a0}{k} self-similar \
+         z-partitions. Each map is the square of its far plane, so the nearer maps lie inside \
+         the farther ones.",
         n = view.near(),
         f = view.far(),
         theta = view.half_fov().to_degrees(),
@@ -293,278 +316,8 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
         single_caption,
         panels: vec![p],
         size: (520, 480),
-        single_size: (300, 450),
+        single_size: (300, 420),
     })
-}
-
-/// A panel's title up to its first colon or comma, without the word "light": "(c) Eq 19,
-/// not in the paper" is "(c) Eq 19", "(a) perpendicular light" is "(a) perpendicular".
-fn short_title(t: &str) -> String {
-    let cut = t.find([':', ',']).unwrap_or(t.len());
-    t[..cut].trim_end_matches(" light").to_string()
-}
-
-/// The width of the gutter right of each panel that holds the split planes' labels.
-const GUTTER: u32 = 50;
-
-/// Each partition's map outline: dash and gap lengths in units, by partition (nearest first).
-/// The map colours print as nearly one grey (CIE L* 46, 54, 58, 61 for blue, vermillion, green,
-/// pink), so each map also has its own dash: long, dotted, longest, short.
-pub(super) const DASHES: [(u32, u32); 4] = [(8, 4), (2, 3), (16, 4), (4, 4)];
-
-/// The least vertical distance between two labels in the gutter, in pixels.
-const LABEL_STEP: i32 = 16;
-
-/// The labels' heights (backend pixels, `wanted`, any order) moved apart so that neighbours are
-/// at least `step` apart, each as close to its wanted height as that allows, all within
-/// `range` (relative to `base`, the gutter's top): the wanted heights are clamped, then pushed
-/// down from the top and back up from the bottom.
-fn spread(wanted: &[i32], step: i32, range: (i32, i32), base: i32) -> Vec<i32> {
-    let mut order: Vec<usize> = (0..wanted.len()).collect();
-    order.sort_by_key(|&i| wanted[i]);
-    let (lo, hi) = (base + range.0, base + range.1);
-    let mut ys: Vec<i32> = order.iter().map(|&i| wanted[i].clamp(lo, hi)).collect();
-    for k in 1..ys.len() {
-        ys[k] = ys[k].max(ys[k - 1] + step);
-    }
-    for k in (0..ys.len()).rev() {
-        let cap = if k + 1 < ys.len() {
-            ys[k + 1] - step
-        } else {
-            hi
-        };
-        ys[k] = ys[k].min(cap);
-    }
-    let mut out = vec![0; wanted.len()];
-    for (k, &i) in order.iter().enumerate() {
-        out[i] = ys[k];
-    }
-    out
-}
-
-impl Figure for FromLight {
-    fn size(&self) -> (u32, u32) {
-        self.size
-    }
-
-    fn single_size(&self) -> Option<(u32, u32)> {
-        Some(self.single_size)
-    }
-
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
-        let single = column() == Column::Single;
-        let caption = if single {
-            &self.single_caption
-        } else {
-            &self.caption
-        };
-        let body = frame(root, self.title, &[caption.as_str()])?;
-        // A single panel is drawn about as wide as it is high, centred.
-        let body = if self.panels.len() == 1 {
-            let (bw, bh) = body.dim_in_pixel();
-            let side = (bh + 40 + GUTTER).min(bw);
-            body.margin(0, 0, (bw - side) / 2, (bw - side) / 2)
-        } else {
-            body
-        };
-        let columns = self.panels.len().min(2);
-        let cells = body.split_evenly((self.panels.len().div_ceil(columns), columns));
-        // In one column the six-panel figure's panels are 150 units wide: smaller text
-        // (10 units, 8 pt printed) and margins.
-        let small = single && self.panels.len() > 1;
-        let style = if small {
-            ChartStyle {
-                title_size: 12,
-                x_label_area: 34,
-                y_label_area: 36,
-                tick_size: 10,
-                desc_size: 11,
-                margin: 4,
-            }
-        } else {
-            ChartStyle {
-                y_label_area: 50,
-                ..ChartStyle::default()
-            }
-        };
-        let (gutter_w, label_size, label_step) = if small {
-            (36, 10, 12)
-        } else {
-            (GUTTER, 13, LABEL_STEP)
-        };
-        for (whole, p) in cells.iter().zip(&self.panels) {
-            // The split planes' labels go in a gutter right of the plot, where they cover no
-            // line (issue 25: at the sections' ends they sat on the frustum's edges and the
-            // maps' outlines).
-            let (cw, _) = whole.dim_in_pixel();
-            let (cell, gutter) = whole.split_horizontally(cw - gutter_w);
-            let cell = &cell;
-            let (lo, hi) = p.window.unwrap_or_else(|| {
-                p.sections.iter().flatten().fold(
-                    (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
-                    |(lo, hi), &q| (lo.min(q), hi.max(q)),
-                )
-            });
-            let span = (hi - lo).max_element() * 1.12;
-            let mid = 0.5 * (lo + hi);
-            let (lo, hi) = (
-                mid - DVec2::splat(span / 2.0),
-                mid + DVec2::splat(span / 2.0),
-            );
-            // In one column, the titles cut to their first clause ("(c) Eq 19", "(d) detail of
-            // (a)"): the full ones are wider than the 150-unit panels.
-            let title = if small {
-                short_title(&p.title)
-            } else {
-                p.title.clone()
-            };
-            // Equal aspect: a light-space unit as long across as up.
-            let (xa, ya) = equal_aspect(
-                cell,
-                &title,
-                &Axis::linear(SEEN_X, lo.x, hi.x),
-                &Axis::linear("light z", lo.y, hi.y),
-                &style,
-            )?;
-            let mut chart = build_chart_styled(cell, &title, &xa, &ya, false, &style)?;
-            let inside =
-                |q: DVec2| q.x >= xa.min && q.x <= xa.max && q.y >= ya.min && q.y <= ya.max;
-            // Everything clipped to the window (plotters would draw points outside it on the
-            // border).
-            let bounds = (xa.min, xa.max, ya.min, ya.max);
-            let clip = |pts: &[DVec2]| {
-                let pts: Vec<Option<(f64, f64)>> = pts.iter().map(|q| Some((q.x, q.y))).collect();
-                clip_polyline(&pts, bounds)
-            };
-            // A map's tint only where the whole map is in the window: a map larger than a
-            // detail panel's window would tint its whole background.
-            for (i, &(a, b)) in p.maps.iter().enumerate() {
-                let c = PALETTE[i % PALETTE.len()];
-                let (ca, cb) = (
-                    a.max(DVec2::new(xa.min, ya.min)),
-                    b.min(DVec2::new(xa.max, ya.max)),
-                );
-                if ca == a && cb == b && ca.x < cb.x && ca.y < cb.y {
-                    chart.draw_series(std::iter::once(Rectangle::new(
-                        [(ca.x, ca.y), (cb.x, cb.y)],
-                        c.mix(0.08).filled(),
-                    )))?;
-                }
-            }
-            let mut solid = |pts: &[DVec2], width: u32| -> Result<(), Fail> {
-                for piece in clip(pts) {
-                    chart.draw_series(LineSeries::new(piece, BLACK.stroke_width(width)))?;
-                }
-                Ok(())
-            };
-            for s in &p.sections {
-                solid(&[s[0], s[1], s[2], s[3], s[0]], 1)?;
-            }
-            let (first, last) = (p.sections[0], p.sections[p.sections.len() - 1]);
-            for i in 0..4 {
-                solid(&[first[i], last[i]], 2)?;
-            }
-            // The maps' outlines on top of the frustum's, so that a map whose edge coincides
-            // with a cross-section (every map of a light behind) still shows.
-            for (i, &(a, b)) in p.maps.iter().enumerate() {
-                let c = PALETTE[i % PALETTE.len()];
-                let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
-                let (dash, gap) = DASHES[i % DASHES.len()];
-                for piece in clip(&corners) {
-                    chart.draw_series(DashedLineSeries::new(
-                        piece,
-                        dash,
-                        gap,
-                        c.stroke_width(2),
-                    ))?;
-                }
-            }
-            // Each split plane labelled in the gutter at the height of its cross-section's
-            // right end (its top-right corner where two ends tie), marked by a tick on the
-            // plot's right edge; labels too close are spread apart, each joined to its tick.
-            let mut marks = Vec::new();
-            for (sec, label) in p.sections.iter().zip(&p.plane_labels) {
-                let right = sec.iter().copied().fold(sec[0], |a, q| {
-                    if q.x > a.x || (q.x == a.x && q.y > a.y) {
-                        q
-                    } else {
-                        a
-                    }
-                });
-                let size = sec
-                    .iter()
-                    .fold(0.0f64, |m, q| m.max((*q - sec[0]).length()));
-                if inside(right) && size > 0.06 * (xa.max - xa.min) {
-                    marks.push((chart.backend_coord(&(xa.max, right.y)).1, label.clone()));
-                }
-            }
-            // Where the drawing ends on the right: a light leader runs from there to each tick,
-            // through empty space.
-            let drawn = p
-                .sections
-                .iter()
-                .flatten()
-                .map(|q| q.x)
-                .chain(p.maps.iter().map(|m| m.1.x))
-                .fold(f64::NEG_INFINITY, f64::max)
-                .min(xa.max);
-            let (gx, gy) = gutter.get_base_pixel();
-            let (wx, wy) = whole.get_base_pixel();
-            let (_, gh) = gutter.dim_in_pixel();
-            let ys = spread(
-                &marks.iter().map(|m| m.0).collect::<Vec<_>>(),
-                label_step,
-                (8, gh as i32 - 8),
-                gy,
-            );
-            let label_style = TextStyle::from((FONT, label_size).into_font())
-                .pos(Pos::new(HPos::Left, VPos::Center));
-            let grey = RGBColor(90, 90, 90);
-            for ((tick_y, label), y) in marks.iter().zip(ys) {
-                let ty = tick_y - gy;
-                let from = chart.backend_coord(&(drawn, ya.min)).0 + 4;
-                if from < gx {
-                    whole.draw(&PathElement::new(
-                        vec![(from - wx, tick_y - wy), (gx - wx, tick_y - wy)],
-                        RGBColor(175, 175, 175).stroke_width(1),
-                    ))?;
-                }
-                gutter.draw(&PathElement::new(
-                    vec![(0, ty), (5, ty), (11, y - gy)],
-                    grey.stroke_width(1),
-                ))?;
-                gutter.draw(&Text::new(label.clone(), (13, y - gy), label_style.clone()))?;
-            }
-            for [from, to] in &p.extensions {
-                chart.draw_series(LineSeries::new(
-                    [(from.x, from.y), (to.x, to.y)],
-                    RGBColor(90, 90, 90).stroke_width(1),
-                ))?;
-            }
-            // Dimension lines: the line with a bar at each end, its label centred below.
-            for (a, b, text) in &p.dims {
-                let bar = 0.12 * (xa.max - xa.min) / 10.0;
-                let n = (*b - *a).perp().normalize_or_zero() * bar;
-                for (from, to) in [(*a, *b), (*a - n, *a + n), (*b - n, *b + n)] {
-                    chart.draw_series(LineSeries::new(
-                        [(from.x, from.y), (to.x, to.y)],
-                        BLACK.stroke_width(1),
-                    ))?;
-                }
-                // The label below the bars' ends, with room for its white margin.
-                let mid = 0.5 * (*a + *b) - 1.6 * n;
-                boxed_text(
-                    &mut chart,
-                    (mid.x, mid.y),
-                    text,
-                    Pos::new(HPos::Center, VPos::Top),
-                    13,
-                    BLACK,
-                )?;
-            }
-        }
-        Ok(())
-    }
 }
 
 #[cfg(test)]
@@ -683,13 +436,23 @@ mod tests {
     #[test]
     fn barroso_split_labels_have_four_significant_figures() {
         let b = barroso_fig5().map_err(|e| e.named("barroso-fig5")).unwrap();
+        // Named as Lloyd's Fig 11 names them (figure review 3: bare depths read as nothing in
+        // `--bare`); an overview labels only its far planes, its detail the near ones.
         assert_eq!(
             b.panels[0].plane_labels,
-            ["1", "3.162", "10", "31.62", "100"]
+            ["", "", "", "z = 31.62", "f = 100"]
         );
         assert_eq!(
             b.panels[2].plane_labels,
-            ["1", "6.041", "16.13", "40.81", "100"]
+            ["", "", "z = 16.13", "z = 40.81", "f = 100"]
+        );
+        assert_eq!(
+            b.panels[3].plane_labels,
+            ["n = 1", "z = 3.162", "z = 10", "z = 31.62", "f = 100"]
+        );
+        assert_eq!(
+            b.panels[5].plane_labels,
+            ["n = 1", "z = 6.041", "z = 16.13", "z = 40.81", "f = 100"]
         );
         assert_eq!(b.panels.len(), 6);
         let t = 30f64.to_radians().tan();

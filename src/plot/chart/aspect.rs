@@ -10,7 +10,7 @@ use plotters::prelude::*;
 
 /// The plotting area's size in pixels of a chart built on `area` with these arguments, measured
 /// by building it on a throw-away SVG of the same size.
-fn plot_size<DB: DrawingBackend>(
+pub(crate) fn plot_size<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
     x: &Axis,

@@ -1,0 +1,629 @@
+//! Drawing the diagrams seen from the light ([`FromLight`]): each panel at equal aspect with its
+//! axes fitted to the drawing (the panel narrowed, not the axes widened, where the drawing is
+//! taller than the panel's shape), each labelled split plane joined by a leader from its
+//! cross-section's right corner to its label in a gutter right of the plot, and one key under
+//! the panels naming the maps' strokes, the frustum's and the split planes'.
+
+use super::super::chart::{
+    boxed_text, build_chart_styled, clip_polyline, column, equal_aspect, frame, plot_size, sweep,
+    Axis, Chart2d, ChartStyle, FONT,
+};
+use super::super::{Column, Fail, Figure};
+use super::{FromLight, Panel, SEEN_X};
+use glam::DVec2;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+/// Each partition's map outline, nearest partition first: its dash pattern (lengths on, off,
+/// on, off… in units, repeated). The maps' colours are steps of one sequential palette, so each
+/// also has its own pattern: short dashes, dots, long dashes, dash-dot.
+pub(in super::super) const PATTERNS: [&[f64]; 4] = [
+    &[6.0, 3.0],
+    &[2.0, 3.0],
+    &[14.0, 4.0],
+    &[12.0, 3.0, 2.0, 3.0],
+];
+
+/// The colour of partition `i`'s map among `n`: the sweep palette's, darkest (nearest) first
+/// (partitions are a parameter sweep, not schemes).
+pub(in super::super) fn map_colour(i: usize, n: usize) -> RGBColor {
+    sweep(i, n)
+}
+
+/// The stroke widths of the frustum's edges (its near and far faces and the side edges) and of
+/// the split planes' cross-sections.
+const FRUSTUM_WIDTH: u32 = 2;
+const PLANE_WIDTH: u32 = 1;
+
+/// The grey of the leaders and their anchor dots.
+const LEADER: RGBColor = RGBColor(150, 150, 150);
+const ANCHOR: RGBColor = RGBColor(90, 90, 90);
+
+/// Sizes of one layout: label and key text, the gutter's width, the least distance between two
+/// labels in the gutter, the gap kept right of the gutter's text (before the next panel).
+struct Sizes {
+    style: ChartStyle,
+    /// The label areas of a panel without the axis's title (its ticks only): the x title is
+    /// written under the bottom row only, the y title left of the left column only.
+    x_ticks_only: u32,
+    y_ticks_only: u32,
+    label: u32,
+    gutter: u32,
+    step: i32,
+    key: u32,
+}
+
+fn sizes(single: bool, panels: usize) -> Sizes {
+    if single && panels > 1 {
+        // One column, two panels a row of 150 units: 10-unit ticks and labels (at least 6 pt
+        // printed).
+        Sizes {
+            style: ChartStyle {
+                title_size: 12,
+                x_label_area: 30,
+                y_label_area: 30,
+                tick_size: 10,
+                desc_size: 10,
+                margin: 2,
+            },
+            x_ticks_only: 18,
+            y_ticks_only: 20,
+            label: 10,
+            gutter: 61,
+            step: 12,
+            key: 10,
+        }
+    } else {
+        Sizes {
+            style: ChartStyle {
+                y_label_area: 46,
+                ..ChartStyle::default()
+            },
+            x_ticks_only: 26,
+            y_ticks_only: 34,
+            label: 13,
+            gutter: 78,
+            step: 16,
+            key: 13,
+        }
+    }
+}
+
+/// A panel's title up to its first colon or comma, without the word "light": "(c) Eq 19,
+/// not in the paper" is "(c) Eq 19", "(a) perpendicular light" is "(a) perpendicular".
+pub(super) fn short_title(t: &str) -> String {
+    let cut = t.find([':', ',']).unwrap_or(t.len());
+    t[..cut].trim_end_matches(" light").to_string()
+}
+
+/// The labels' heights (backend pixels, `wanted`, any order) moved apart so that neighbours are
+/// at least `step` apart, each as close to its wanted height as that allows, all within
+/// `range` (relative to `base`, the gutter's top): the wanted heights are clamped, then pushed
+/// down from the top and back up from the bottom.
+pub(super) fn spread(wanted: &[i32], step: i32, range: (i32, i32), base: i32) -> Vec<i32> {
+    let mut order: Vec<usize> = (0..wanted.len()).collect();
+    order.sort_by_key(|&i| wanted[i]);
+    let (lo, hi) = (base + range.0, base + range.1);
+    let mut ys: Vec<i32> = order.iter().map(|&i| wanted[i].clamp(lo, hi)).collect();
+    for k in 1..ys.len() {
+        ys[k] = ys[k].max(ys[k - 1] + step);
+    }
+    for k in (0..ys.len()).rev() {
+        let cap = if k + 1 < ys.len() {
+            ys[k + 1] - step
+        } else {
+            hi
+        };
+        ys[k] = ys[k].min(cap);
+    }
+    let mut out = vec![0; wanted.len()];
+    for (k, &i) in order.iter().enumerate() {
+        out[i] = ys[k];
+    }
+    out
+}
+
+/// The corners of a cross-section furthest right (within `tol`), top first, without repeats:
+/// one corner, or the two ends of a vertical right edge.
+pub(super) fn right_corners(sec: &[DVec2; 4], tol: f64) -> Vec<DVec2> {
+    let right = sec.iter().map(|q| q.x).fold(f64::NEG_INFINITY, f64::max);
+    let mut out: Vec<DVec2> = sec.iter().copied().filter(|q| q.x >= right - tol).collect();
+    out.sort_by(|a, b| b.y.total_cmp(&a.y));
+    out.dedup_by(|a, b| (a.y - b.y).abs() <= tol);
+    out
+}
+
+/// For each label, which of its candidate heights (backend pixels, top corner first) its
+/// leader starts at: the choice whose spread labels ([`spread`]) move least from their leaders,
+/// a top corner preferred where that ties (each lower corner costs half a pixel). Returns the
+/// chosen index per label.
+pub(super) fn choose_corners(
+    candidates: &[Vec<i32>],
+    step: i32,
+    range: (i32, i32),
+    base: i32,
+) -> Vec<usize> {
+    let count: usize = candidates.iter().map(|c| c.len().max(1)).product();
+    let mut best = (f64::INFINITY, vec![0; candidates.len()]);
+    for code in 0..count.min(1 << 12) {
+        let mut rest = code;
+        let pick: Vec<usize> = candidates
+            .iter()
+            .map(|c| {
+                let n = c.len().max(1);
+                let k = rest % n;
+                rest /= n;
+                k
+            })
+            .collect();
+        let wanted: Vec<i32> = candidates.iter().zip(&pick).map(|(c, &k)| c[k]).collect();
+        let ys = spread(&wanted, step, range, base);
+        let cost = ys
+            .iter()
+            .zip(&wanted)
+            .map(|(y, w)| f64::from((y - w).abs()))
+            .sum::<f64>()
+            + 0.5 * pick.iter().filter(|&&k| k > 0).count() as f64;
+        if cost < best.0 {
+            best = (cost, pick);
+        }
+    }
+    best.1
+}
+
+/// The pieces of a polyline drawn with a dash `pattern` (lengths on, off, … in pixels, at
+/// `per_unit` pixels per data unit), in data units.
+pub(super) fn dashed(
+    points: &[(f64, f64)],
+    pattern: &[f64],
+    per_unit: f64,
+) -> Vec<Vec<(f64, f64)>> {
+    let mut out = Vec::new();
+    let Some(&first) = points.first() else {
+        return out;
+    };
+    let len = |k: usize| pattern[k % pattern.len()] / per_unit;
+    let (mut k, mut left) = (0, len(0));
+    let mut cur = vec![first];
+    for w in points.windows(2) {
+        let (mut a, b) = (w[0], w[1]);
+        loop {
+            let d = (b.0 - a.0).hypot(b.1 - a.1);
+            if d <= left {
+                left -= d;
+                if k % 2 == 0 {
+                    cur.push(b);
+                }
+                break;
+            }
+            let t = left / d;
+            a = (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
+            if k % 2 == 0 {
+                cur.push(a);
+                out.push(std::mem::take(&mut cur));
+            } else {
+                cur = vec![a];
+            }
+            k += 1;
+            left = len(k);
+        }
+    }
+    if k % 2 == 0 && cur.len() >= 2 {
+        out.push(cur);
+    }
+    out
+}
+
+/// The key under the panels: "Maps, nearest first:" with each map's stroke and its
+/// number, then the frustum's stroke and the split planes'. Its items flow in rows, centred;
+/// returns the height it takes (drawing nothing when `draw` is false).
+fn key<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    maps: usize,
+    size: u32,
+    draw: bool,
+) -> Result<u32, Fail> {
+    let style = TextStyle::from((FONT, size).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+    let width = |t: &str| -> Result<f64, Fail> {
+        let (w, _) = area
+            .estimate_text_size(t, &style)
+            .map_err(|e| Fail::Draw(e.to_string()))?;
+        Ok(f64::from(w))
+    };
+    let sample = 2.0 * f64::from(size);
+    let (gap, space) = (0.3 * f64::from(size), f64::from(size));
+    // (stroke: colour, width, pattern; text)
+    let mut items: Vec<(Option<(RGBColor, u32, &[f64])>, String)> =
+        vec![(None, "Maps, nearest first:".into())];
+    for i in 0..maps {
+        items.push((
+            Some((map_colour(i, maps), 2, PATTERNS[i % PATTERNS.len()])),
+            format!("{}", i + 1),
+        ));
+    }
+    items.push((Some((BLACK, FRUSTUM_WIDTH, &[])), "frustum".into()));
+    items.push((Some((BLACK, PLANE_WIDTH, &[])), "split plane".into()));
+    let (w, _) = area.dim_in_pixel();
+    let avail = f64::from(w) - 8.0;
+    let mut rows: Vec<Vec<(f64, usize)>> = vec![Vec::new()];
+    let mut x = 0.0;
+    for (i, (stroke, text)) in items.iter().enumerate() {
+        let wi = if stroke.is_some() { sample + gap } else { 0.0 } + width(text)?;
+        if x > 0.0 && x + wi > avail {
+            rows.push(Vec::new());
+            x = 0.0;
+        }
+        rows.last_mut().expect("one row").push((x, i));
+        x += wi + space;
+    }
+    let row_h = f64::from(size) + 6.0;
+    let height = (row_h * rows.len() as f64 + 6.0).ceil() as u32;
+    if !draw {
+        return Ok(height);
+    }
+    for (r, row) in rows.iter().enumerate() {
+        let &(last_x, last) = row.last().expect("a row has an item");
+        let (stroke, text) = &items[last];
+        let row_w = last_x + if stroke.is_some() { sample + gap } else { 0.0 } + width(text)?;
+        let x0 = 0.5 * (f64::from(w) - row_w);
+        let y = 3.0 + row_h * (r as f64 + 0.5);
+        for &(x, i) in row {
+            let (stroke, text) = &items[i];
+            let mut tx = x0 + x;
+            if let Some((colour, width, pattern)) = stroke {
+                let line = [(tx, y), (tx + sample, y)];
+                let pieces = if pattern.is_empty() {
+                    vec![line.to_vec()]
+                } else {
+                    dashed(&line, pattern, 1.0)
+                };
+                for piece in pieces {
+                    let pts: Vec<(i32, i32)> = piece
+                        .iter()
+                        .map(|p| (p.0.round() as i32, p.1.round() as i32))
+                        .collect();
+                    area.draw(&PathElement::new(pts, colour.stroke_width(*width)))?;
+                }
+                tx += sample + gap;
+            }
+            area.draw(&Text::new(
+                text.clone(),
+                (tx.round() as i32, y.round() as i32),
+                style.clone(),
+            ))?;
+        }
+    }
+    Ok(height)
+}
+
+impl Figure for FromLight {
+    fn size(&self) -> (u32, u32) {
+        self.size
+    }
+
+    fn single_size(&self) -> Option<(u32, u32)> {
+        Some(self.single_size)
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let single = column() == Column::Single;
+        let caption = if single {
+            &self.single_caption
+        } else {
+            &self.caption
+        };
+        let body = frame(root, self.title, &[caption.as_str()])?;
+        let sz = sizes(single, self.panels.len());
+        let maps = self.panels.iter().map(|p| p.maps.len()).max().unwrap_or(0);
+        let key_h = key(&body, maps, sz.key, false)?;
+        let (_, bh) = body.dim_in_pixel();
+        let (body, strip) = body.split_vertically(bh - key_h);
+        key(&strip, maps, sz.key, true)?;
+        let columns = self.panels.len().min(2);
+        let rows = self.panels.len().div_ceil(columns);
+        // The rows above the last have no x title: the last is taller by the title's room, so
+        // that every row's plots have the same height.
+        let (bw, bh) = body.dim_in_pixel();
+        let extra = sz.style.x_label_area - sz.x_ticks_only;
+        let row_h = (bh - if rows > 1 { extra } else { 0 }) / rows as u32;
+        let mut rest = body;
+        for r in 0..rows {
+            let h = if r + 1 == rows {
+                rest.dim_in_pixel().1
+            } else {
+                row_h
+            };
+            let (row, below) = rest.split_vertically(h);
+            let mut cells = row.split_evenly((1, columns)).into_iter();
+            for c in 0..columns {
+                let (Some(p), Some(cell)) = (self.panels.get(r * columns + c), cells.next()) else {
+                    break;
+                };
+                let mut style = sz.style;
+                if r + 1 < rows {
+                    style.x_label_area = sz.x_ticks_only;
+                }
+                if c > 0 {
+                    style.y_label_area = sz.y_ticks_only;
+                }
+                draw_panel(
+                    &cell,
+                    p,
+                    single && self.panels.len() > 1,
+                    &sz,
+                    &style,
+                    (r + 1 == rows, c == 0),
+                )?;
+            }
+            rest = below;
+        }
+        debug_assert!(bw > 0);
+        Ok(())
+    }
+}
+
+/// The window a panel shows (min, max), with a margin of 3 % of its larger side.
+fn window(p: &Panel) -> (DVec2, DVec2) {
+    let (lo, hi) = p.window.unwrap_or_else(|| {
+        p.sections.iter().flatten().fold(
+            (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+            |(lo, hi), &q| (lo.min(q), hi.max(q)),
+        )
+    });
+    let pad = 0.03 * (hi - lo).max_element();
+    (lo - DVec2::splat(pad), hi + DVec2::splat(pad))
+}
+
+/// The axes of a panel over the window `lo`–`hi` (titled where `titles` says), labelled at
+/// `at` (across, up).
+fn axes(lo: DVec2, hi: DVec2, at: &(Vec<f64>, Vec<f64>), titles: (bool, bool)) -> (Axis, Axis) {
+    let name = |t: bool, n: &str| if t { n.to_string() } else { String::new() };
+    (
+        Axis::linear(name(titles.0, SEEN_X), lo.x, hi.x).labelled_at(&at.0),
+        Axis::linear(name(titles.1, "light z"), lo.y, hi.y).labelled_at(&at.1),
+    )
+}
+
+/// The labelled ticks of an axis over `lo`–`hi`, `room` long, with `tick`-size labels each
+/// needing `need(label)` of it: the multiples of the least step of 1, 2 or 5 × 10ⁿ whose labels
+/// fit, or where there are three, the two ends (−50 and 50 where −50, 0, 50 would touch); at
+/// least two.
+fn ticks_fitting(lo: f64, hi: f64, room: f64, need: impl Fn(f64) -> f64) -> Vec<f64> {
+    let span = hi - lo;
+    let mut base = 10f64.powf((span / 20.0).log10().floor());
+    loop {
+        for m in [1.0, 2.0, 5.0] {
+            let s = m * base;
+            let all: Vec<f64> = ((lo / s).ceil() as i64..=(hi / s).floor() as i64)
+                .map(|k| k as f64 * s)
+                .collect();
+            let fits = |v: &[f64]| {
+                v.len() >= 2
+                    && v.windows(2)
+                        .all(|w| w[1] - w[0] >= (need(w[0]) + need(w[1])) * 0.5 * span / room)
+            };
+            if fits(&all) {
+                return all;
+            }
+            let every_other: Vec<f64> = all.iter().copied().step_by(2).collect();
+            if all.len() == 3 && fits(&every_other) {
+                return every_other;
+            }
+        }
+        base *= 10.0;
+        if base > span * 10.0 {
+            return vec![lo, hi];
+        }
+    }
+}
+
+/// The labelled ticks of a panel showing `lo`–`hi` in a `w` × `h` plot with `tick`-size
+/// labels: across, each label as wide as its digits and sign plus a gap; up, 1.8 text heights
+/// apart.
+fn tick_labels(lo: DVec2, hi: DVec2, w: f64, h: f64, tick: f64) -> (Vec<f64>, Vec<f64>) {
+    let wide = |v: f64| {
+        let digits = format!("{}", v.abs()).len() as f64;
+        (digits * 0.64 + if v < 0.0 { 0.84 } else { 0.0 }) * tick + 0.6 * tick
+    };
+    (
+        ticks_fitting(lo.x, hi.x, w, wide),
+        ticks_fitting(lo.y, hi.y, h, |_| 1.8 * tick),
+    )
+}
+
+/// The backend pixel of a data point of `chart`.
+fn px<DB: DrawingBackend>(chart: &Chart2d<'_, DB>, q: DVec2) -> (i32, i32) {
+    chart.backend_coord(&(q.x, q.y))
+}
+
+/// Draws panel `p` in `whole`; `titles`: whether its x and y axes carry their titles.
+fn draw_panel<DB: DrawingBackend>(
+    whole: &DrawingArea<DB, Shift>,
+    p: &Panel,
+    small: bool,
+    sz: &Sizes,
+    style: &ChartStyle,
+    titles: (bool, bool),
+) -> Result<(), Fail> {
+    // In one column, the titles cut to their first clause ("(c) Eq 19", "(d) detail of (a)"):
+    // the full ones are wider than the 150-unit panels.
+    let title = if small {
+        short_title(&p.title)
+    } else {
+        p.title.clone()
+    };
+    let (lo, hi) = window(p);
+    let first = tick_labels(lo, hi, 1e9, 1e9, 1.0);
+    let (x0, y0) = axes(lo, hi, &first, titles);
+    // The panel narrowed (or shortened) about its centre to the drawing's shape, so that equal
+    // aspect leaves no empty axis range: measured on the plot the full cell would have.
+    let (cw, ch) = whole.dim_in_pixel();
+    let (full, _) = whole.split_horizontally(cw - sz.gutter);
+    let (pw, ph) = plot_size(&full, &title, &x0, &y0, style)?;
+    let per_px = ((hi.x - lo.x) / pw).max((hi.y - lo.y) / ph);
+    let (dw, dh) = ((hi.x - lo.x) / per_px, (hi.y - lo.y) / per_px);
+    let at = tick_labels(lo, hi, dw, dh, f64::from(style.tick_size));
+    let (x0, y0) = axes(lo, hi, &at, titles);
+    let spare_w = (pw - dw).max(0.0).floor() as u32;
+    let spare_h = (ph - dh).max(0.0).floor() as u32;
+    let whole = whole.margin(
+        spare_h / 2,
+        spare_h - spare_h / 2,
+        spare_w / 2,
+        spare_w - spare_w / 2,
+    );
+    let (cw, _) = whole.dim_in_pixel();
+    debug_assert!(ch > 0 && cw > sz.gutter);
+    let (cell, gutter) = whole.split_horizontally(cw - sz.gutter);
+    let (xa, ya) = equal_aspect(&cell, &title, &x0, &y0, style)?;
+    // equal_aspect's axes are plain linear ones: the labels chosen above, kept.
+    let (xa, ya) = axes(
+        DVec2::new(xa.min, ya.min),
+        DVec2::new(xa.max, ya.max),
+        &at,
+        titles,
+    );
+    let mut chart = build_chart_styled(&cell, &title, &xa, &ya, false, style)?;
+    let inside = |q: DVec2| q.x >= xa.min && q.x <= xa.max && q.y >= ya.min && q.y <= ya.max;
+    let bounds = (xa.min, xa.max, ya.min, ya.max);
+    let clip = |pts: &[DVec2]| {
+        let pts: Vec<Option<(f64, f64)>> = pts.iter().map(|q| Some((q.x, q.y))).collect();
+        clip_polyline(&pts, bounds)
+    };
+    let per_unit =
+        f64::from(px(&chart, DVec2::new(xa.max, 0.0)).0 - px(&chart, DVec2::new(xa.min, 0.0)).0)
+            / (xa.max - xa.min);
+    let n_maps = p.maps.len();
+    // A map's tint only where the whole map is in the window: a map larger than a detail
+    // panel's window would tint its whole background.
+    for (i, &(a, b)) in p.maps.iter().enumerate() {
+        if inside(a) && inside(b) {
+            chart.draw_series(std::iter::once(Rectangle::new(
+                [(a.x, a.y), (b.x, b.y)],
+                map_colour(i, n_maps).mix(0.08).filled(),
+            )))?;
+        }
+    }
+    // The labelled split planes, each with its leader's candidate corners.
+    let tol = 1e-9 * (xa.max - xa.min);
+    let mut labelled: Vec<(Vec<DVec2>, &String)> = Vec::new();
+    for (sec, label) in p.sections.iter().zip(&p.plane_labels) {
+        let size = sec
+            .iter()
+            .fold(0.0f64, |m, q| m.max((*q - sec[0]).length()));
+        let corners: Vec<DVec2> = right_corners(sec, tol)
+            .into_iter()
+            .filter(|&q| inside(q))
+            .collect();
+        if !label.is_empty() && !corners.is_empty() && size > 0.06 * (xa.max - xa.min) {
+            labelled.push((corners, label));
+        }
+    }
+    let (gx, gy) = gutter.get_base_pixel();
+    let (wx, wy) = whole.get_base_pixel();
+    let (_, gh) = gutter.dim_in_pixel();
+    let range = (8, gh as i32 - 8);
+    let candidates: Vec<Vec<i32>> = labelled
+        .iter()
+        .map(|(c, _)| c.iter().map(|&q| px(&chart, q).1).collect())
+        .collect();
+    let pick = choose_corners(&candidates, sz.step, range, gy);
+    let anchors: Vec<DVec2> = labelled
+        .iter()
+        .zip(&pick)
+        .map(|((c, _), &k)| c[k])
+        .collect();
+    let anchor_px: Vec<(i32, i32)> = anchors.iter().map(|&q| px(&chart, q)).collect();
+    let ys = spread(
+        &anchor_px.iter().map(|a| a.1).collect::<Vec<_>>(),
+        sz.step,
+        range,
+        gy,
+    );
+    // Leaders first, under every line: from the corner to the gutter.
+    for &(ax, ay) in &anchor_px {
+        whole.draw(&PathElement::new(
+            vec![(ax - wx, ay - wy), (gx - wx, ay - wy)],
+            LEADER.stroke_width(1),
+        ))?;
+    }
+    let mut solid = |pts: &[DVec2], width: u32| -> Result<(), Fail> {
+        for piece in clip(pts) {
+            chart.draw_series(LineSeries::new(piece, BLACK.stroke_width(width)))?;
+        }
+        Ok(())
+    };
+    // The split planes thin, the near and far faces (the frustum's) as thick as its side edges.
+    let last = p.sections.len() - 1;
+    for (i, s) in p.sections.iter().enumerate() {
+        let width = if i == 0 || i == last {
+            FRUSTUM_WIDTH
+        } else {
+            PLANE_WIDTH
+        };
+        solid(&[s[0], s[1], s[2], s[3], s[0]], width)?;
+    }
+    let (first, far) = (p.sections[0], p.sections[last]);
+    for i in 0..4 {
+        solid(&[first[i], far[i]], FRUSTUM_WIDTH)?;
+    }
+    // The maps' outlines on top of the frustum's, so that a map whose edge coincides with a
+    // cross-section (every map of a light behind) still shows.
+    for (i, &(a, b)) in p.maps.iter().enumerate() {
+        let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
+        let colour = map_colour(i, n_maps);
+        for piece in clip(&corners) {
+            for dash in dashed(&piece, PATTERNS[i % PATTERNS.len()], per_unit) {
+                chart.draw_series(LineSeries::new(dash, colour.stroke_width(2)))?;
+            }
+        }
+    }
+    // Each leader's anchor, a dot on its corner.
+    for &q in &anchors {
+        chart.draw_series(std::iter::once(Circle::new((q.x, q.y), 2, ANCHOR.filled())))?;
+    }
+    for [from, to] in &p.extensions {
+        chart.draw_series(LineSeries::new(
+            [(from.x, from.y), (to.x, to.y)],
+            ANCHOR.stroke_width(1),
+        ))?;
+    }
+    // Dimension lines: the line with a bar at each end, its label centred below.
+    for (a, b, text) in &p.dims {
+        let bar = 4.0 / per_unit;
+        let n = (*b - *a).perp().normalize_or_zero() * bar;
+        for (from, to) in [(*a, *b), (*a - n, *a + n), (*b - n, *b + n)] {
+            chart.draw_series(LineSeries::new(
+                [(from.x, from.y), (to.x, to.y)],
+                BLACK.stroke_width(1),
+            ))?;
+        }
+        // The label below the bars' ends, with room for its white margin.
+        let mid = 0.5 * (*a + *b) - 1.6 * n;
+        boxed_text(
+            &mut chart,
+            (mid.x, mid.y),
+            text,
+            Pos::new(HPos::Center, VPos::Top),
+            sz.label,
+            BLACK,
+        )?;
+    }
+    // The labels in the gutter, each joined to its leader's end.
+    let label_style =
+        TextStyle::from((FONT, sz.label).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+    for ((&(_, ay), (_, label)), y) in anchor_px.iter().zip(&labelled).zip(ys) {
+        let ty = ay - gy;
+        gutter.draw(&PathElement::new(
+            vec![(0, ty), (5, ty), (11, y - gy)],
+            LEADER.stroke_width(1),
+        ))?;
+        gutter.draw(&Text::new(
+            (*label).clone(),
+            (13, y - gy),
+            label_style.clone(),
+        ))?;
+    }
+    Ok(())
+}
