@@ -3,20 +3,38 @@
 //! branches of their Eq 13, LiSPSM's 1/sin γ rule and the crate's n′ that minimises M_z over the
 //! whole frustum (`WarpRule::MinimaxMz`, the frustum-wide version of Barroso's objective).
 
-use super::chart::{linspace, Axis, Charts, LineChart, Look, Marker, Note, Series, PALETTE};
-use super::Fail;
+use super::chart::{
+    column, draw_line_chart_over, frame, legend_below, linspace, Axis, Charts, LineChart, Look,
+    Marker, Note, Series, FONT, PALETTE,
+};
+use super::{Column, Fail, Figure};
 use crate::analytic::tilted::{gamma_lim, generalized_n_prime, n_prime_1, n_prime_2, Falloff};
 use crate::maps::{n_prime_for, WarpRule};
 use crate::{LightAngle, NPrime, ViewFrustum};
 use glam::DVec3;
-use plotters::prelude::{RGBColor, SeriesLabelPosition};
+use plotters::coord::Shift;
+use plotters::prelude::*;
 
 /// The light travelling at angle γ to the view direction, above and in front of the viewer.
 fn light_at(gamma: f64) -> DVec3 {
     DVec3::new(0.0, -gamma.sin(), gamma.cos())
 }
 
-pub(super) fn fig7() -> Result<Charts, Fail> {
+/// The window (b) enlarges, γ in degrees: where the curves separate, with room right of
+/// γ_lim for its label.
+const WINDOW: (f64, f64) = (20.0, 45.0);
+/// (b)'s n′ range: Eq 13's n′₂ falls to 0 at 27.69°, and the top half decade (above the
+/// largest n′ in the window, LiSPSM's 11/sin 20° = 32.2) holds the two angles' labels.
+const WINDOW_N: (f64, f64) = (0.3, 300.0);
+
+/// Barroso & Celes' Fig 7: panels (a) and (b) with one legend, and the caption for each page
+/// width.
+pub(super) struct Fig7 {
+    pub charts: Charts,
+    single_caption: String,
+}
+
+pub(super) fn fig7() -> Result<Fig7, Fail> {
     let (n, f) = (1.0, 100.0);
     let view = ViewFrustum::new(n, f, std::f64::consts::FRAC_PI_6)?;
     let gl = gamma_lim(&view);
@@ -64,13 +82,13 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
             },
         ));
     }
+    let gamma = "light–view angle γ (°)";
+    let n_axis = "n′ (log scale)";
     let mut c = LineChart::new(
-        "",
-        Axis::linear("light–view angle γ (degrees)", 0.0, 90.0),
-        Axis::log10("warp parameter n′ (n = 1)", 1.0, 1e4),
+        "(a) γ from 0° to 90°",
+        Axis::linear(gamma, 0.0, 90.0),
+        Axis::log10(n_axis, 1.0, 1e4),
     );
-    // Short legend labels, so that the legend fits above the curves' common tail (γ > 35°).
-    c.legend = SeriesLabelPosition::UpperRight;
     // The paper's curve, bold.
     let mut paper = Series::line("Barroso, Eq 18 (paper)", barroso, Look::Barroso.colour());
     paper.width = 4;
@@ -79,79 +97,55 @@ pub(super) fn fig7() -> Result<Charts, Fail> {
         .push(Series::line("Zhang, Eq 17", zhang, Look::Zhang.colour()));
     c.series
         .push(Series::line("LiSPSM, 1/sin γ", lispsm, Look::Lispsm.colour()).dashed());
-    c.series
-        .push(Series::line("least M_z", minimax, PALETTE[3]).dashed());
-    // n′₁ with a small square (its colour's own marker, a tall bar, read as part of the line).
+    // Dotted, not dashed: in greyscale its colour is LiSPSM's grey, and the two meet.
+    let mut least = Series::line("least M_{z}", minimax, PALETTE[3]).dotted();
+    least.width = 3;
+    c.series.push(least);
+    // n′₁ with a small square (its colour's own marker, a tall bar, read as part of the line);
+    // above γ_lim it is Barroso's curve (its fall-off is 1 there), drawn over it.
     c.series.push(Series {
         shape: Some(Marker::Square),
-        ..Series::line("n′_{1}, Eq 13", n1, PALETTE[6]).dotted()
+        ..Series::line("n′_{1}, Eq 13 (= Eq 18 above γ_{lim})", n1, PALETTE[6]).dotted()
     });
     let mut s2 = Series::line("n′_{2}, Eq 13", n2, PALETTE[7]).dotted();
     s2.width = 3;
     c.series.push(s2);
-    let gl_deg = gl.to_degrees();
-    let phi_deg = view.half_fov().to_degrees();
-    // The two angles, 0.5° apart: γ_lim dashed with its label to the right, φ_y dotted with its
-    // label to the left.
-    let grey = RGBColor(110, 110, 110);
-    let mut gl_line = Series::line(
-        String::new(),
-        vec![(gl_deg, 1.0), (gl_deg, 1e4)],
-        PALETTE[6],
-    )
-    .dashed();
-    gl_line.label = None;
-    gl_line.width = 1;
-    c.series.push(gl_line);
-    let mut phi_line =
-        Series::line(String::new(), vec![(phi_deg, 1.0), (phi_deg, 1e4)], grey).dotted();
-    phi_line.label = None;
-    phi_line.width = 1;
-    c.series.push(phi_line);
-    // Each angle labelled beside its line, with an arrow pointing at it: γ_lim near the bottom,
-    // φ_y near the top, clear of n′₂ (which falls to 0 left of φ_y).
-    c.notes.push(Note {
-        at: (gl_deg + 0.6, 2.6),
-        text: format!("← γ_{{lim}} = {gl_deg:.1}° (Eq 15)"),
-        colour: PALETTE[6],
-    });
-    c.notes.push(Note {
-        at: (phi_deg - 19.0, 2500.0),
-        text: format!("φ_y = {phi_deg:.0}° →"),
-        colour: grey,
-    });
-    let window = (20.0, 40.0);
-    let zoom = magnified(&c, window, (0.3, 100.0), gl_deg, phi_deg, grey);
-    // (b)'s key, in its empty lower right, holds for both panels: in (a) every corner has a
-    // curve.
+    // (a) has no angle lines: φ_y = 30° and γ_lim = 30.5° lie under a point apart there and
+    // read as one line; (b) draws them apart. Its key is (b)'s, below the panels.
     c.show_legend = false;
-    c.title = "(a) γ from 0° to 90°".into();
-    Ok(Charts {
+    let zoom = magnified(&c, gl.to_degrees(), view.half_fov().to_degrees());
+    let charts = Charts {
         size: (520, 540),
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![format!(
-            "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n = {n}, f = {f}, φ_y = π/6. Bold: the \
-             paper's curve (Barroso's fall-off r(γ)); for comparison Zhang's fall-off, LiSPSM's \
-             rule and the n′ of least M_z over the frustum; Eq 13's branches each on its domain. \
-             (b) enlarges γ from {}° to {}°: the least-M_z curve turns near γ = φ_y, where the \
-             frustum corner of largest m_z changes.",
-            window.0, window.1
+            "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+             φ_y\u{a0}=\u{a0}π/6. Bold: the paper's curve (Barroso's fall-off r(γ)); for \
+             comparison Zhang's fall-off, LiSPSM's rule and the n′ of least M_z over the \
+             frustum; Eq 13's branches each on its domain. (b) enlarges γ from {}° to {}°: the \
+             least-M_z curve turns near γ\u{a0}=\u{a0}φ_y, where the frustum corner of largest \
+             m_z changes.",
+            WINDOW.0, WINDOW.1
         )],
         charts: vec![c, zoom],
+    };
+    let single_caption = format!(
+        "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+         φ_y\u{a0}=\u{a0}π/6. Bold: the paper's curve; the others for comparison, Eq 13's \
+         branches each on its domain. (b) enlarges γ from {}° to {}°.",
+        WINDOW.0, WINDOW.1
+    );
+    Ok(Fig7 {
+        charts,
+        single_caption,
     })
 }
 
-/// `c` magnified to γ in `x` and n′ in `y`, where the curves separate (issue 25): the same
-/// series (each cut to the window, so that its markers fall inside it) with short legend labels,
-/// and the two angles labelled at the top, where no curve runs.
-fn magnified(
-    c: &LineChart,
-    x: (f64, f64),
-    y: (f64, f64),
-    gl_deg: f64,
-    phi_deg: f64,
-    grey: RGBColor,
-) -> LineChart {
+/// `c` magnified to γ in [`WINDOW`] and n′ in [`WINDOW_N`], where the curves separate (issue
+/// 25): the same series, each cut to the window (so that its markers fall inside it), the
+/// figure's one legend, and the two angles as vertical lines, labelled in the top half decade,
+/// where no curve runs: φ_y's label left of its line, γ_lim's right of its own.
+fn magnified(c: &LineChart, gl_deg: f64, phi_deg: f64) -> LineChart {
+    let (x, y) = (WINDOW, WINDOW_N);
     let mut z = LineChart::new(
         format!("(b) γ from {:.0}° to {:.0}°", x.0, x.1),
         Axis::linear(c.x.label.clone(), x.0, x.1),
@@ -162,41 +156,111 @@ fn magnified(
             Axis::log10(c.y.label.clone(), y.0, y.1).in_powers()
         },
     );
-    // Short legend labels, in the empty lower right (the curves run above n′ = 5 there).
-    let short = [
-        "Barroso (paper)",
-        "Zhang",
-        "LiSPSM",
-        "least M_z",
-        "n′_{1}",
-        "n′_{2}",
-    ];
-    z.legend = SeriesLabelPosition::LowerRight;
     z.series = c
         .series
         .iter()
-        .enumerate()
-        .map(|(k, s)| {
+        .map(|s| {
             let mut s = s.clone();
-            s.label = short.get(k).map(|l| (*l).to_string());
             s.points.retain(|p| p.0 >= x.0 && p.0 <= x.1);
             s
         })
         .collect();
+    let grey = RGBColor(110, 110, 110);
+    for (at, colour, dashed) in [(gl_deg, PALETTE[6], true), (phi_deg, grey, false)] {
+        let line = Series::line(String::new(), vec![(at, y.0), (at, y.1)], colour);
+        let mut line = if dashed { line.dashed() } else { line.dotted() };
+        line.label = None;
+        line.width = 1;
+        line.reference = true;
+        z.series.push(line);
+    }
+    // Both labels at the top band's middle (log scale: √(100 · 300) = 173); φ_y's is moved
+    // to end at its line once the plot's width is known ([`Fig7::labels_placed`]).
+    let top = (y.1 * 100.0f64).sqrt();
     z.notes = vec![
         Note {
-            at: (gl_deg + 0.3, 0.6 * y.1),
+            at: (gl_deg + 0.3, top),
             text: format!("← γ_{{lim}} = {gl_deg:.1}°"),
             colour: PALETTE[6],
         },
         Note {
-            at: (phi_deg - 9.0, 0.6 * y.1),
+            at: (phi_deg, top),
             text: format!("φ_y = {phi_deg:.0}° →"),
             colour: grey,
         },
     ];
+    // The figure's one key, under both panels.
+    z.legend_below = true;
     z
 }
+
+/// The horizontal space a line chart's frame takes from its cell, in units: the margins left
+/// and right of it (8 and 16, `chart::build_chart`) and the y labels' area (64).
+const CHART_FRAME_W: f64 = 8.0 + 16.0 + 64.0;
+
+impl Fig7 {
+    /// The charts with (b)'s φ_y label ending 4 units left of its line, in cells `cell_w` units
+    /// wide (its text's width measured by `measure`): the label's left end is all a note sets.
+    fn labels_placed(&self, cell_w: u32, measure: impl Fn(&str) -> f64) -> Charts {
+        let mut charts = self.charts.clone();
+        let b = &mut charts.charts[1];
+        let per_degree = (f64::from(cell_w) - CHART_FRAME_W) / (b.x.max - b.x.min);
+        let room = b.x.max - b.x.min;
+        let x_min = b.x.min;
+        for note in b.notes.iter_mut().filter(|n| n.text.ends_with('→')) {
+            // Measured as drawn: the subscript's markup is not printed.
+            let width = |t: &str| {
+                let shown: String = t.chars().filter(|c| !"_{}".contains(*c)).collect();
+                (measure(&shown) + 4.0) / per_degree
+            };
+            // Where the value does not fit between the axis and the line, the name alone
+            // (the line stands on the axis's tick at φ_y = 30°).
+            if note.at.0 - width(&note.text) < x_min + 0.02 * room {
+                note.text = "φ_y →".into();
+            }
+            note.at.0 -= width(&note.text);
+        }
+        charts
+    }
+}
+
+impl Figure for Fig7 {
+    fn size(&self) -> (u32, u32) {
+        self.charts.size
+    }
+
+    /// One column: (a) over (b), both plots as tall, the legend under them.
+    fn single_size(&self) -> Option<(u32, u32)> {
+        Some((Column::Single.width(), 760))
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let style = TextStyle::from((FONT, NOTE_SIZE).into_font());
+        let measure = |t: &str| {
+            root.estimate_text_size(t, &style)
+                .map_or(0.0, |(w, _)| f64::from(w))
+        };
+        // The page's body is 6 units in from each side (`chart::frame`).
+        let body_w = root.dim_in_pixel().0.saturating_sub(12);
+        if column() == Column::Double {
+            return self.labels_placed(body_w / 2, measure).draw(root);
+        }
+        let charts = self.labels_placed(body_w, measure);
+        let body = frame(root, &charts.title, &[self.single_caption.as_str()])?;
+        let (w, h) = body.dim_in_pixel();
+        let (a, b) = (&charts.charts[0], &charts.charts[1]);
+        // The legend's strip first (as wide as the page), then two equal cells for the plots.
+        let strip_h = legend_below((w, h / 2), b, f64::from(w))?;
+        let (panels, strip) = body.split_vertically(h.saturating_sub(strip_h));
+        let cells = panels.split_evenly((2, 1));
+        draw_line_chart_over(&cells[0], a, None)?;
+        draw_line_chart_over(&cells[1], b, Some(&strip))?;
+        Ok(())
+    }
+}
+
+/// The size of a note's text (`chart::line`'s notes and labels).
+const NOTE_SIZE: u32 = 13;
 
 #[cfg(test)]
 mod tests {
@@ -207,7 +271,7 @@ mod tests {
     #[test]
     fn fig7_curves_meet_lispsm_overhead() {
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
-        let s = &fig.charts[0].series;
+        let s = &fig.charts.charts[0].series;
         for curve in &s[..4] {
             let (d, v) = *curve.points.last().unwrap();
             assert_eq!(d, 90.0);
@@ -222,7 +286,7 @@ mod tests {
     #[test]
     fn eq13_branches_only_on_their_domains() {
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
-        let s = &fig.charts[0].series;
+        let s = &fig.charts.charts[0].series;
         let finite = |k: usize| -> Vec<f64> {
             s[k].points
                 .iter()
@@ -240,35 +304,100 @@ mod tests {
     }
 
     /// The paper's curve (Barroso's fall-off, Eq 16 with Eq 18) is the bold one (issue 25), and
-    /// each angle's label ends at its line with an arrow pointing at it: γ_lim's starts just
-    /// right of γ_lim = 30.5° with "←", φ_y's ends left of 30° with "→".
+    /// each angle's label ends at its line with an arrow pointing at it, in (b) only: γ_lim's
+    /// starts just right of γ_lim = 30.5° with "←", φ_y's ends left of 30° with "→". (a) draws
+    /// neither line (review: 0.5° apart they fused into one dash-dot line there).
     #[test]
     fn the_papers_curve_is_bold_and_labels_point_at_their_lines() {
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
-        let c = &fig.charts[0];
-        let bold = &c.series[0];
+        let (a, b) = (&fig.charts.charts[0], &fig.charts.charts[1]);
+        let bold = &a.series[0];
         assert!(bold.label.as_deref().unwrap().ends_with("(paper)"));
-        assert!(c.series[1..].iter().all(|s| s.width < bold.width));
-        let gl = c.notes.iter().find(|n| n.text.contains("lim")).unwrap();
+        assert!(a.series[1..].iter().all(|s| s.width < bold.width));
+        assert!(a.notes.is_empty(), "{:?}", a.notes);
+        // (a)'s series are its six curves; no vertical line (two points at one γ).
+        assert_eq!(a.series.len(), 6);
+        assert!(a.series.iter().all(|s| s.points.len() > 2));
+        let gl = b.notes.iter().find(|n| n.text.contains("lim")).unwrap();
         assert!(gl.text.starts_with('←') && gl.at.0 > 30.5 && gl.at.0 < 32.0);
-        let phi = c.notes.iter().find(|n| n.text.contains("φ")).unwrap();
-        assert!(phi.text.ends_with('→') && phi.at.0 < 30.0);
+        // φ_y's label is set to end 4 units left of its line once the cell's width is known:
+        // in a 254-unit cell (two columns; its plot 166 units for 25°, 6.64 a degree), with
+        // every character 7 units wide, "φy = 30° →" (10 shown) is 74 units, 11.1°, so it
+        // would start at 18.9° (left of the axis at 20°): the name alone, "φ_y →" (4 shown,
+        // 32 units: 4.8°), starts at 25.2°; in a 288-unit cell (one column, 8 a degree) the
+        // whole label, 9.25°, starts at 20.75°.
+        let at = |cell: u32| {
+            let placed = fig.labels_placed(cell, |t| 7.0 * t.chars().count() as f64);
+            let n = placed.charts[1]
+                .notes
+                .iter()
+                .find(|n| n.text.contains("φ"))
+                .unwrap()
+                .clone();
+            (n.text, n.at.0)
+        };
+        let (text, x) = at(254);
+        assert_eq!(text, "φ_y →");
+        assert!((x - (30.0 - 32.0 / (166.0 / 25.0))).abs() < 1e-9, "{x}");
+        let (text, x) = at(288);
+        assert_eq!(text, "φ_y = 30° →");
+        assert!((x - (30.0 - 74.0 / 8.0)).abs() < 1e-9, "{x}");
+        let verticals: Vec<f64> = b
+            .series
+            .iter()
+            .filter(|s| s.points.len() == 2 && s.points[0].0 == s.points[1].0)
+            .map(|s| s.points[0].0)
+            .collect();
+        assert_eq!(verticals.len(), 2, "{verticals:?}");
+        // γ_lim (Eq 15, `analytic::tilted`'s value, printed 30.5°) and φ_y = 30°.
+        let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6).unwrap();
+        let gl = gamma_lim(&view).to_degrees();
+        assert!((gl - 30.5).abs() < 0.05 + 1e-9, "{gl}");
+        assert!(
+            verticals[0] == gl && (verticals[1] - 30.0).abs() < 1e-9,
+            "{verticals:?}"
+        );
     }
 
-    /// Issue 25: a second panel magnifies γ from 20° to 40°, where the curves separate: every
-    /// curve of (a) is there, cut to the window (the four rules sampled every 0.25°: 81 points
-    /// each), and the four rules lie within n′ ∈ [1, 100] (the axis reaches down to 0.3 for Eq
-    /// 13's n′₂, which falls to 0 at 27.69°, by hand in `eq13_branches_only_on_their_domains`).
+    /// In greyscale LiSPSM (green) and least M_z (reddish purple) are one grey (review), so
+    /// they differ in dash: LiSPSM dashed, least M_z dotted; and the n′₁ entry says it is
+    /// Barroso's curve (Eq 18) above γ_lim, where it is drawn over it.
     #[test]
-    fn panel_b_magnifies_20_to_40_degrees() {
+    fn lispsm_and_least_mz_differ_in_dash() {
+        use super::super::chart::Dash;
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
-        assert_eq!(fig.charts.len(), 2);
-        let (a, b) = (&fig.charts[0], &fig.charts[1]);
-        assert_eq!((b.x.min, b.x.max), (20.0, 40.0));
-        assert_eq!(a.series.len(), b.series.len());
+        let s = &fig.charts.charts[0].series;
+        let by = |l: &str| {
+            s.iter()
+                .find(|x| x.label.as_deref().unwrap_or("").starts_with(l))
+        };
+        assert_eq!(by("LiSPSM").unwrap().dash, Dash::Dashed);
+        assert_eq!(by("least").unwrap().dash, Dash::Dotted);
+        assert!(by("n′_{1}")
+            .unwrap()
+            .label
+            .as_deref()
+            .unwrap()
+            .contains("= Eq 18 above γ_{lim}"));
+    }
+
+    /// Issue 25: a second panel magnifies γ from 20° to 45°, where the curves separate: every
+    /// curve of (a) is there, cut to the window (the four rules sampled every 0.25°: 101
+    /// points each), and the four rules lie within n′ ∈ [1, 100] (the axis reaches down to 0.3
+    /// for Eq 13's n′₂, which falls to 0 at 27.69°, by hand in
+    /// `eq13_branches_only_on_their_domains`, and up to 300, above every curve, for the angles'
+    /// labels).
+    #[test]
+    fn panel_b_magnifies_20_to_45_degrees() {
+        let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
+        assert_eq!(fig.charts.charts.len(), 2);
+        let (a, b) = (&fig.charts.charts[0], &fig.charts.charts[1]);
+        assert_eq!((b.x.min, b.x.max), (20.0, 45.0));
+        assert_eq!((b.y.min, b.y.max), (0.3, 300.0));
+        assert_eq!(a.series.len() + 2, b.series.len());
         for s in &b.series[..4] {
-            assert_eq!(s.points.len(), 81, "{:?}", s.label);
-            assert!(s.points.iter().all(|p| (20.0..=40.0).contains(&p.0)));
+            assert_eq!(s.points.len(), 101, "{:?}", s.label);
+            assert!(s.points.iter().all(|p| (20.0..=45.0).contains(&p.0)));
             assert!(
                 s.points.iter().all(|p| (1.0..=100.0).contains(&p.1)),
                 "{:?}",

@@ -29,9 +29,17 @@ const ELEVATIONS: usize = 91;
 const AZIMUTHS: usize = 360;
 
 /// The shape that marks the 80 % rule's values exactly behind and in front (0° and 180°), as
-/// the caption says; no line of the profile carries it ([`Marker::of`] gives the blue line
-/// circles and the vermillion one squares).
+/// the caption and the legend say; no line of the profile carries it (the 80 % rule's line
+/// has circles, the iterative one's squares).
 const JUMP_MARKER: Marker = Marker::Diamond;
+/// The profile's colours: neither is a scheme's (both lines are TSM's): the 80 % rule black,
+/// the iterative variant reddish purple (apart in greyscale, and by dash and marker).
+const EIGHTY: RGBColor = PALETTE[6];
+const ITERATIVE: RGBColor = PALETTE[3];
+/// How far (a)'s panel starts below (b)'s, in units, so that their titles stand level: a line
+/// chart's title sits under its 8-unit margin and plotters' own 5 (`chart::build_chart`), a
+/// hemisphere's 4 units from its top (`chart::draw_hemisphere`).
+const TITLE_ALIGN: u32 = 8 + 5 - 4;
 /// The same shape in the caption's text.
 const JUMP_GLYPH: &str = "◆";
 
@@ -62,6 +70,8 @@ pub(super) struct Fig6 {
     scale: ColourScale,
     profile: LineChart,
     caption: Vec<String>,
+    /// The shorter caption of a single column.
+    single_caption: String,
 }
 
 pub(super) fn fig6() -> Result<Fig6, Fail> {
@@ -99,39 +109,48 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
             focus_area(&view, dir, TsmSearch::Iterative { map_lines: 1024 })?,
         ));
     }
+    // One range for the share in both panels, whole decades round every value: the colour
+    // bar and the profile's axis carry the same ticks, 10⁻³ … 10⁰ (review: the bar wrote
+    // 0.491, 0.1, 0.01, 0.00268 beside the axis's powers of ten).
+    let floor = profile_floor(&eighty, &iterative).min(10f64.powf(lo.log10().floor()));
+    let ceil = 10f64.powf(hi.log10().ceil()).max(1.0);
     let mut profile = LineChart::new(
         "(b) in the view's vertical plane",
-        // A tick every 45°: behind, overhead and in front are ticks.
-        Axis::every("light angle from behind (°)", 0.0, 180.0, 0.0, 45.0),
-        Axis::log10(
-            "share of the map (log)",
-            profile_floor(&eighty, &iterative),
-            1.0,
-        ),
+        // A tick every 45°: behind, overhead and in front are ticks; the axis reaches 6° past
+        // both ends, so that the marks at 0° and 180° stand inside the frame, not on it.
+        Axis::every("angle from behind (°)", -6.0, 186.0, 0.0, 45.0),
+        Axis::log10("share of the map (log scale)", floor, ceil).in_powers(),
     );
-    profile.legend = SeriesLabelPosition::LowerMiddle;
+    // The figure's one key, under the profile, the only panel with lines.
+    profile.legend_below = true;
     // The 80 % rule jumps back to the dueling-frusta value exactly behind and in front (0° and
-    // 180°, on the plot's border): those two points marked with a shape of their own (the
-    // lines carry theirs along them), unjoined and unlabelled.
+    // 180°): those two points marked with a shape of their own (the lines carry theirs along
+    // them), unjoined, drawn last (over the lines' markers).
     let (first, last) = (eighty[0], eighty[eighty.len() - 1]);
     let dueling = first.1;
-    profile
-        .series
-        .push(Series::line("80 % rule", eighty, PALETTE[0]));
     profile.series.push(Series {
-        label: None,
-        shape: Some(JUMP_MARKER),
-        ..Series::line("", vec![first, (90.0, f64::NAN), last], PALETTE[0]).with_markers()
+        shape: Some(Marker::Circle),
+        ..Series::line("80 % rule", eighty, EIGHTY)
     });
-    profile
-        .series
-        .push(Series::line("iterative", iterative, PALETTE[1]).dashed());
+    profile.series.push(Series {
+        shape: Some(Marker::Square),
+        ..Series::line("iterative", iterative, ITERATIVE).dashed()
+    });
+    profile.series.push(Series {
+        shape: Some(JUMP_MARKER),
+        ..Series::line(
+            "80 % rule at 0° and 180°",
+            vec![first, (90.0, f64::NAN), last],
+            EIGHTY,
+        )
+        .with_markers()
+    });
+    let (n, f, theta) = (view.near(), view.far(), view.half_fov().to_degrees());
     Ok(Fig6 {
         grid,
         // Logarithmic, as the profile: the dueling-frusta band near the horizon (0.003 to
         // 0.01) is two decades below overhead (0.49) and would be one colour on a linear bar.
-        // Its own short name: the profile's y axis, beside it, names the quantity in full.
-        scale: ColourScale::smooth(Axis::log10("share", lo, hi)),
+        scale: ColourScale::smooth(Axis::log10("share (log scale)", floor, ceil).in_powers()),
         profile,
         caption: vec![format!(
             "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map (80 % rule; \
@@ -140,10 +159,13 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
              view's vertical plane (b). n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
              θ\u{a0}=\u{a0}{theta:.0}°, δ\u{a0}=\u{a0}{FOCUS}. {JUMP_GLYPH}: light exactly \
              behind or in front, {dueling:.4}.",
-            n = view.near(),
-            f = view.far(),
-            theta = view.half_fov().to_degrees(),
         )],
+        single_caption: format!(
+            "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map covered by the focus \
+             region (n to n\u{a0}+\u{a0}δ); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+             θ\u{a0}=\u{a0}{theta:.0}°, δ\u{a0}=\u{a0}{FOCUS}. Rings at 10°, 20°, 30°, 60°; \
+             {JUMP_GLYPH}: {dueling:.4}."
+        ),
     })
 }
 
@@ -169,18 +191,26 @@ impl Figure for Fig6 {
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
-        let caption: Vec<&str> = self.caption.iter().map(String::as_str).collect();
+        let single = column() == Column::Single;
+        let caption: Vec<&str> = if single {
+            vec![self.single_caption.as_str()]
+        } else {
+            self.caption.iter().map(String::as_str).collect()
+        };
         let body = frame(
             root,
             "Area of the focus region in the trapezoidal map",
             &caption,
         )?;
         let (w, h) = body.dim_in_pixel();
-        // Two columns: the hemisphere with its bar on the left, the profile beside it (issue
-        // 35: stacked, the figure was 928 units tall); one column: the profile under them.
-        let (left, right) = match column() {
-            Column::Double => body.split_horizontally(w * 27 / 50),
-            Column::Single => body.split_vertically(h * 47 / 100),
+        // Two columns: the hemisphere with its bar on the left, its title level with the
+        // profile's beside it (issue 35: stacked, the figure was 928 units tall); one column:
+        // the profile under them.
+        let (left, right) = if single {
+            body.split_vertically(h * 43 / 100)
+        } else {
+            let (left, right) = body.split_horizontally(w * 27 / 50);
+            (left.margin(TITLE_ALIGN, 0, 0, 0), right)
         };
         let (w, _) = left.dim_in_pixel();
         let (disk, bar) = left.split_horizontally(w.saturating_sub(BAR_WIDTH));
@@ -196,12 +226,15 @@ mod tests {
     use super::*;
 
     /// The caption's marker claim is what the profile draws (figure review: it said
-    /// "markers: exactly behind and in front" while the lines carry markers all along). Read
-    /// back from the profile's SVG: exactly two polygons are diamonds (four corners, the top
-    /// and bottom on one vertical, the left and right on one horizontal), the shape the
-    /// caption names, at the plot's left and right ends (0° and 180°) and at one height (the
-    /// same share, ((n + δ)/f)² = (11/100)² = 0.0121 by hand, which the caption prints); the
-    /// lines' own markers are other shapes.
+    /// "markers: exactly behind and in front" while the lines carry markers all along), and
+    /// the marks stand inside the frame and in the legend (review: on the frame, and in no
+    /// key). Read back from the profile's SVG: exactly three polygons are diamonds (four
+    /// corners, the top and bottom on one vertical, the left and right on one horizontal), the
+    /// shape the caption names: one in the legend, below the plot, and two at the 80 % rule's
+    /// line's left and right ends (0° and 180°), at one height (the same share, ((n + δ)/f)² =
+    /// (11/100)² = 0.0121 by hand, which the caption prints), each at least 4 units inside the
+    /// plot's left and right axes (their tick marks' ends); the lines' own markers are other
+    /// shapes.
     #[test]
     fn the_caption_names_the_marks_exactly_behind_and_in_front() {
         use super::super::chart::read_svg::draw_svg;
@@ -214,19 +247,20 @@ mod tests {
         let svg = draw_svg((300, 300), |area| {
             draw_line_chart(area, &fig.profile).unwrap();
         });
+        let points = |l: &str| -> Vec<(f64, f64)> {
+            let at = l.find("points=\"").unwrap() + 8;
+            l[at..at + l[at..].find('"').unwrap()]
+                .split_whitespace()
+                .map(|p| {
+                    let (x, y) = p.split_once(',').unwrap();
+                    (x.parse().unwrap(), y.parse().unwrap())
+                })
+                .collect()
+        };
         let polygons: Vec<Vec<(f64, f64)>> = svg
             .lines()
             .filter(|l| l.starts_with("<polygon"))
-            .map(|l| {
-                let at = l.find("points=\"").unwrap() + 8;
-                l[at..at + l[at..].find('"').unwrap()]
-                    .split_whitespace()
-                    .map(|p| {
-                        let (x, y) = p.split_once(',').unwrap();
-                        (x.parse().unwrap(), y.parse().unwrap())
-                    })
-                    .collect()
-            })
+            .map(points)
             .collect();
         let diamond = |p: &Vec<(f64, f64)>| {
             p.len() == 4
@@ -234,37 +268,61 @@ mod tests {
                 && (p[1].1 - p[3].1).abs() < 0.01
                 && (p[0].1 - p[1].1).abs() > 1.0
         };
-        let diamonds: Vec<(f64, f64)> = polygons
+        let mut diamonds: Vec<(f64, f64)> = polygons
             .iter()
             .filter(|p| diamond(p))
             .map(|p| (p[0].0, p[1].1))
             .collect();
-        assert_eq!(diamonds.len(), 2, "{diamonds:?}");
-        assert!(polygons.len() > 4, "the lines carry markers of their own");
-        // The plot's ends: the leftmost and rightmost points of the 80 % rule's line (blue,
-        // hundreds of points; the legend's sample has two).
+        assert_eq!(diamonds.len(), 3, "{diamonds:?}");
+        assert!(polygons.len() > 6, "the lines carry markers of their own");
+        // The lowest is the legend's.
+        diamonds.sort_by(|a, b| a.1.total_cmp(&b.1));
+        let key = diamonds.pop().unwrap();
+        // The ends of the 80 % rule's line (black, hundreds of points; the legend's sample has
+        // two).
         let xs: Vec<f64> = svg
             .lines()
-            .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#0072B2\""))
+            .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#000000\""))
             .filter(|l| l.matches(',').count() > 50)
-            .flat_map(|l| {
-                let at = l.find("points=\"").unwrap() + 8;
-                l[at..at + l[at..].find('"').unwrap()]
-                    .split_whitespace()
-                    .map(|p| p.split_once(',').unwrap().0.parse::<f64>().unwrap())
-                    .collect::<Vec<_>>()
-            })
+            .flat_map(|l| points(l).into_iter().map(|p| p.0).collect::<Vec<_>>())
             .collect();
         let (left, right) = (
             xs.iter().copied().fold(f64::INFINITY, f64::min),
             xs.iter().copied().fold(f64::NEG_INFINITY, f64::max),
         );
+        diamonds.sort_by(|a, b| a.0.total_cmp(&b.0));
         let (a, b) = (diamonds[0], diamonds[1]);
         assert!(
             (a.0 - left).abs() < 1.0 && (b.0 - right).abs() < 1.0,
             "{diamonds:?} {left} {right}"
         );
         assert!((a.1 - b.1).abs() < 0.01, "{diamonds:?}");
+        assert!(
+            key.1 > a.1 + 30.0,
+            "the key's mark {key:?}, the plot's {diamonds:?}"
+        );
+        // The plot's left and right edges: the y axis's tick marks (5 units, horizontal) end
+        // at the left axis; the x axis's (vertical) lie from the first to the last tick, and
+        // the frame runs 6° beyond them: the axis ends are found from the ticks at 0° and 180°
+        // and the axis range, −6° to 186°.
+        let ticks: Vec<Vec<(f64, f64)>> = svg
+            .lines()
+            .filter(|l| l.starts_with("<polyline"))
+            .map(points)
+            .filter(|p| p.len() == 2)
+            .collect();
+        let axis_x = ticks
+            .iter()
+            .filter(|p| p[0].1 == p[1].1 && (p[1].0 - p[0].0).abs() == 5.0)
+            .map(|p| p[0].0.max(p[1].0))
+            .fold(f64::INFINITY, f64::min);
+        assert!(a.0 - axis_x >= 4.0, "{a:?}, the axis at {axis_x}");
+        let per_degree = (right - left) / 180.0;
+        let frame_right = right + 6.0 * per_degree;
+        assert!(
+            frame_right - b.0 >= 4.0,
+            "{b:?}, the frame at {frame_right}"
+        );
     }
 
     #[test]
@@ -287,23 +345,73 @@ mod tests {
     /// The hemisphere's colour bar is logarithmic (issue 25): the dueling-frusta value 0.0121
     /// and the overhead one (about 0.49) lie 1.6 decades apart, and on the bar's log₁₀ axis the
     /// dueling value sits at (log 0.0121 − log lo)/(log hi − log lo) of its height (a linear bar
-    /// would put it in the bottom 3 %, one colour with everything below).
+    /// would put it in the bottom 3 %, one colour with everything below). Its range is the
+    /// whole decades round the values, 10⁻³ to 10⁰ (the smallest share, about 0.0027 near the
+    /// horizon, by `dueling_frusta_area_by_hand`'s neighbours; the largest below 1), the same as
+    /// the profile's axis, and both write their ticks as powers of ten (review: the bar wrote
+    /// 0.491, 0.1, 0.01, 0.00268).
     #[test]
-    fn hemisphere_colour_bar_is_logarithmic() {
+    fn hemisphere_colour_bar_is_logarithmic_and_shares_the_profiles_ticks() {
+        use super::super::chart::colour_bar_ticks;
         let fig = fig6().map_err(|e| e.named("martin-tan-fig6")).unwrap();
         let v: Vec<f64> = fig.grid.values.iter().flatten().copied().collect();
         let (lo, hi) = v
             .iter()
             .fold((f64::INFINITY, 0.0f64), |(a, b), &x| (a.min(x), b.max(x)));
+        assert!(
+            (0.001..0.01).contains(&lo) && (0.1..1.0).contains(&hi),
+            "{lo} {hi}"
+        );
         let axis = &fig.scale.axis;
-        let (a, b) = axis.range();
-        assert!((a - lo.log10()).abs() < 1e-12 && (b - hi.log10()).abs() < 1e-12);
-        let t = (0.0121f64.log10() - lo.log10()) / (hi.log10() - lo.log10());
+        for (a, b) in [axis.range(), fig.profile.y.range()] {
+            assert!((a + 3.0).abs() < 1e-12 && b.abs() < 1e-12, "{a} {b}");
+        }
+        let t = (0.0121f64.log10() + 3.0) / 3.0;
         let level = fig.scale.level(0.0121).unwrap() as f64 / fig.scale.levels as f64;
         assert!(
             (level - t).abs() < 1.5 / fig.scale.levels as f64,
             "{level} vs {t}"
         );
         assert!(t > 0.2, "{t}");
+        let bar: Vec<String> = colour_bar_ticks(axis).into_iter().map(|t| t.1).collect();
+        assert_eq!(bar, ["10⁻³", "10⁻²", "10⁻¹", "10⁰"]);
+        let y = &fig.profile.y;
+        let profile: Vec<String> = y.ticks().0.iter().map(|&a| y.tick_label(a)).collect();
+        assert_eq!(profile, bar);
+    }
+
+    /// The panels' titles stand level in two columns (review: (a)'s was about 10 units above
+    /// (b)'s), and the x axis's name is no wider than its axis (review: it ran past the axis's
+    /// end): read from the figure's SVG, the two titles' y are equal, and the name's width
+    /// (DejaVu Sans measured by the backend at its size) is at most the axis's length, −6° to
+    /// 186° (from the ticks at 0° and 180°).
+    #[test]
+    fn titles_are_level_and_the_x_name_fits_its_axis() {
+        use super::super::chart::read_svg::{draw_svg, texts};
+        let fig = fig6().map_err(|e| e.named("martin-tan-fig6")).unwrap();
+        let mut name_w = 0.0;
+        let svg = draw_svg(fig.size(), |area| {
+            fig.draw(area).unwrap();
+            let style = TextStyle::from((super::super::chart::FONT, 15).into_font());
+            name_w = f64::from(
+                area.estimate_text_size(&fig.profile.x.label, &style)
+                    .unwrap()
+                    .0,
+            );
+        });
+        let all = texts(&svg);
+        let y = |start: &str| all.iter().find(|t| t.1.starts_with(start)).unwrap().2;
+        assert_eq!(y("(a) over"), y("(b) in"));
+        let x = |label: &str| -> f64 {
+            let (line, _, _) = all
+                .iter()
+                .rev()
+                .find(|t| t.1 == label && t.0.contains("text-anchor=\"middle\""))
+                .unwrap();
+            super::super::chart::read_svg::attr(line, "x").unwrap()
+        };
+        // The axis runs 6° past both end ticks: 192° in all.
+        let axis = (x("180") - x("0")) * 192.0 / 180.0;
+        assert!(name_w > 50.0 && name_w <= axis, "{name_w} vs {axis}");
     }
 }

@@ -9,7 +9,7 @@
 
 use super::chart::{
     build_chart_styled, column, draw_bar_bands, fmt_plain, frame, Axis, ChartStyle, ColourScale,
-    Grid, Ticked, COLOUR_BAR_TICK, FONT, PANEL_TITLE,
+    Grid, Ticked, COLOUR_BAR_TICK, FONT, PANEL_TITLE, TICK,
 };
 use super::{Column, Fail, Figure};
 use crate::maps::{warp, WarpRule};
@@ -44,7 +44,9 @@ pub(super) struct Fig3 {
     scheme_labels: Vec<String>,
     /// One scale per quantity (E_p, E_q, E_p × E_q), over its range in all nine panels.
     scales: Vec<ColourScale>,
-    caption: Vec<String>,
+    /// The caption across two columns, and the shorter one of a single column.
+    caption: String,
+    single_caption: String,
     far: f64,
     tan_phi: f64,
 }
@@ -133,23 +135,29 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         .iter()
         .map(|a| a.trim_start_matches("θ = "))
         .collect();
-    let caption = vec![format!(
-        "Zhang et al. 2009, Fig. 3: E_p\u{a0}=\u{a0}2\u{a0}m_z and E_q\u{a0}=\u{a0}2\u{a0}m_x \
-         measured in the frustum's vertical plane (z depth, y height); n\u{a0}=\u{a0}{n}, \
-         f\u{a0}=\u{a0}{f}, φ\u{a0}=\u{a0}π/6; light above and in front at \
-         θ\u{a0}=\u{a0}{}. LiSPSM: \
-         λ\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}θ\u{a0}=\u{a0}{}; TSM: 80\u{a0}% rule, \
-         focus δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper, a colour bar per quantity (ticks at \
-         powers of 5) and no scene insets.",
+    let caption = format!(
+        "Zhang et al. 2009, Fig. 3, measured in the frustum's vertical plane: \
+         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+         φ\u{a0}=\u{a0}π/6, light above and in front at θ\u{a0}=\u{a0}{}. LiSPSM's \
+         λ\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}θ: {}; TSM: 80\u{a0}% rule, \
+         δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper, a colour bar per quantity (ticks at \
+         powers of 5), no scene insets.",
         angles.join(", "),
         lispsm.join(", "),
-    )];
+    );
+    let single_caption = format!(
+        "Zhang et al. 2009, Fig. 3, measured: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+         φ\u{a0}=\u{a0}π/6, light above and in front. LiSPSM: \
+         λ\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}θ; TSM: 80\u{a0}% rule, \
+         δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper, a colour bar per quantity.",
+    );
     Ok(Fig3 {
         rows,
         row_angles,
         scheme_labels,
         scales,
         caption,
+        single_caption,
         far: f,
         tan_phi,
     })
@@ -173,12 +181,15 @@ fn fmt_lambda(n: NPrime) -> String {
     }
 }
 
-/// The layout, in pixels: the row labels' column (θ, left of the first panel), the z labels'
-/// row under the last row of panels, the gaps between panels and between blocks, each block's
+/// The layout, in pixels: the row labels' column (θ and the y ticks, left of the first panel,
+/// the height's name over them), the z labels' row under the last row
+/// of panels, the gaps between panels across and between rows, between blocks, each block's
 /// title and the schemes' headings, and the horizontal colour bar under each block.
 const ROW_LABEL: u32 = 46;
 const X_LABELS: u32 = 33;
 const GAP: u32 = 4;
+/// Rows 10 units apart: at 4 one row's "−40" and the next one's "40" touched.
+const ROW_GAP: u32 = 10;
 const BLOCK_GAP: u32 = 16;
 const BLOCK_TITLE: u32 = 22;
 const HEADINGS: u32 = 18;
@@ -191,74 +202,74 @@ const VBAR_WIDTH: u32 = 14;
 /// A panel's height over its width: the z range [−5, 105] across and y over ±0.535 of it up
 /// (the frustum's far plane reaches ±57.7).
 const PANEL_RATIO: f64 = 1.07;
+/// The size of the figure's text (labels, ticks, headings); θ in one column is smaller, so
+/// that "θ = 90°" fits along a row.
+const TEXT: u32 = 13;
+const THETA_SINGLE: u32 = 11;
 
 /// The page's size: three blocks of 3 × 3 panels side by side (landscape drawing), the caption
-/// under them.
-pub(super) const SIZE: (u32, u32) = (520, 452);
+/// under them; as tall as the blocks, their bars and the caption need.
+pub(super) const SIZE: (u32, u32) = (520, 418);
+
+/// A double-column panel's width: the body (the page less 6 units each side) less the left
+/// strips, the gaps, shared by nine panels.
+const fn double_panel_w() -> u32 {
+    (SIZE.0 - 12 - ROW_LABEL - 6 * GAP - 2 * BLOCK_GAP) / 9
+}
+
+/// The length along a double-column (horizontal) colour bar of its range, in units.
+fn double_bar_span() -> f64 {
+    f64::from(3 * double_panel_w() + 2 * GAP - 2 * BAR_MARGIN)
+}
+
+/// The width of a plain number written at `size`: DejaVu Sans' digits are 0.636 em, its point
+/// 0.318 em.
+fn number_width(t: &str, size: u32) -> f64 {
+    t.chars()
+        .map(|c| if c == '.' { 0.318 } else { 0.636 })
+        .sum::<f64>()
+        * f64::from(size)
+}
 
 /// The labelled ticks of a base-5 colour bar (axis space, that is log₅ of the value) with their
-/// labels, all plain numbers: both ends of its range to three significant digits, and every
-/// power of 5 (0.04, 0.2, 1, 5, 25, …) at least 7 % of the bar from either end.
-fn bar_ticks(axis: &Axis) -> Vec<(f64, String)> {
+/// labels, plain numbers: the powers 5^{ks} in its range (k whole, so that 5⁰ = 1 is one where
+/// it is in range), with the least stride s whose labels keep 6 units apart along the
+/// double-column bar (`span` units long), in both layouts: the same ticks in both.
+fn bar_ticks(axis: &Axis, span: f64) -> Vec<(f64, String)> {
     let (lo, hi) = axis.range();
-    let clear = 0.07 * (hi - lo);
-    let three = |v: f64| {
-        let p = 10f64.powf(v.log10().floor() - 2.0);
-        fmt_plain((v / p).round() * p)
-    };
-    let mut ticks = vec![(lo, three(axis.min))];
+    let per = span / (hi - lo);
     let first = lo.ceil() as i32;
     let last = hi.floor() as i32;
-    for e in first..=last {
-        let a = f64::from(e);
-        if a - lo >= clear && hi - a >= clear {
-            ticks.push((a, fmt_plain(5f64.powi(e))));
+    let at = |stride: i32| -> Vec<(f64, String)> {
+        (first..=last)
+            .filter(|e| e.rem_euclid(stride) == 0)
+            .map(|e| (f64::from(e), fmt_plain(5f64.powi(e))))
+            .collect()
+    };
+    for stride in 1..=(last - first).max(1) {
+        let ticks = at(stride);
+        let apart = ticks.windows(2).all(|w| {
+            let half = 0.5 * (number_width(&w[0].1, TEXT) + number_width(&w[1].1, TEXT));
+            (w[1].0 - w[0].0) * per >= half + 6.0
+        });
+        if apart && !ticks.is_empty() {
+            return ticks;
         }
     }
-    ticks.push((hi, three(axis.max)));
-    ticks
+    at(1).into_iter().take(1).collect()
 }
 
 /// Draws a colour bar for `scale` into `area`, horizontal (its labels under it) or
 /// `vertical` (its labels right of it, low values at the bottom): the bands, an outline, tick
-/// marks with the labels of [`bar_ticks`] (its ends and the powers of 5), thinned so that no
-/// two labels touch, and the quantity's name beyond them.
+/// marks with the labels of [`bar_ticks`] and the quantity's name beyond them.
 fn draw_bar<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     scale: &ColourScale,
     vertical: bool,
 ) -> Result<(), Fail> {
     let (lo, hi) = scale.axis.range();
-    let all = bar_ticks(&scale.axis);
-    let (w, h) = area.dim_in_pixel();
-    let span = f64::from(if vertical { h } else { w } - 2 * BAR_MARGIN);
-    let px = |a: f64| f64::from(BAR_MARGIN) + (a - lo) / (hi - lo) * span;
-    let style = TextStyle::from((FONT, 13).into_font());
-    // Half a label's extent along the bar: its width across a horizontal bar, its height up
-    // a vertical one.
-    let half = |t: &str| -> Result<f64, Fail> {
-        let (tw, th) = area
-            .estimate_text_size(t, &style)
-            .map_err(|e| Fail::Draw(e.to_string()))?;
-        Ok(0.5 * f64::from(if vertical { th } else { tw }))
-    };
-    // The ends first, then each decade that keeps 6 pixels from the labels kept so far.
-    let mut kept: Vec<(f64, String, f64)> = Vec::new();
-    let order = [0, all.len() - 1]
-        .into_iter()
-        .chain(1..all.len().saturating_sub(1));
-    for i in order {
-        let (a, t) = &all[i];
-        let (x, hw) = (px(*a), half(t)?);
-        if kept.iter().all(|k| (k.0 - x).abs() >= k.2 + hw + 6.0) {
-            kept.push((x, t.clone(), hw));
-        }
-    }
-    let ticks: Vec<(f64, String)> = all
-        .iter()
-        .filter(|(a, _)| kept.iter().any(|k| (k.0 - px(*a)).abs() < 1e-9))
-        .cloned()
-        .collect();
+    let ticks = bar_ticks(&scale.axis, double_bar_span());
+    let (w, _) = area.dim_in_pixel();
     let at: Vec<f64> = ticks.iter().map(|t| t.0).collect();
     // The labels of exactly the ticks handed to the axis.
     let label = |v: &f64| {
@@ -294,8 +305,8 @@ fn draw_bar<DB: DrawingBackend>(
     };
     let mut mesh = chart.configure_mesh();
     mesh.disable_mesh()
-        .axis_desc_style((FONT, 13))
-        .label_style((FONT, 13));
+        .axis_desc_style((FONT, TEXT))
+        .label_style((FONT, TEXT));
     if vertical {
         mesh.disable_x_axis()
             .y_desc(scale.axis.label.as_str())
@@ -322,6 +333,40 @@ fn draw_bar<DB: DrawingBackend>(
     Ok(())
 }
 
+/// The depth axis's ticks (0, 50 and 100, the near plane at 1 and the far plane at 100) and
+/// labels under the panel drawn by `chart` in `cell`: "0" centred on its tick, "100" ending at
+/// its tick (centred, it ran under the next panel).
+fn draw_z_labels<DB: DrawingBackend>(
+    cell: &DrawingArea<DB, Shift>,
+    chart: &super::chart::Chart2d<'_, DB>,
+    bottom: f64,
+) -> Result<(), Fail> {
+    let base = cell.get_base_pixel();
+    let ink = RGBColor(0, 0, 0);
+    let style = TextStyle::from((FONT, TEXT).into_font());
+    for (z, text, h) in [
+        (0.0, "0", HPos::Center),
+        (50.0, "", HPos::Center),
+        (100.0, "100", HPos::Right),
+    ] {
+        let (x, y) = chart.backend_coord(&(z, bottom));
+        let (x, y) = (x - base.0, y - base.1);
+        cell.draw(&PathElement::new(
+            vec![(x, y), (x, y + TICK as i32)],
+            ink.stroke_width(1),
+        ))?;
+        if !text.is_empty() {
+            let dx = i32::from(text.len() > 1);
+            cell.draw(&Text::new(
+                text,
+                (x + dx, y + TICK as i32 + 3),
+                style.pos(Pos::new(h, VPos::Top)),
+            ))?;
+        }
+    }
+    Ok(())
+}
+
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
         SIZE
@@ -333,48 +378,53 @@ impl Figure for Fig3 {
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
-        let caption: Vec<&str> = self.caption.iter().map(String::as_str).collect();
+        let single = column() == Column::Single;
+        let caption = if single {
+            self.single_caption.as_str()
+        } else {
+            self.caption.as_str()
+        };
         let body = frame(
             root,
             "Side views of the aliasing error inside the view frustum",
-            &caption,
+            &[caption],
         )?;
         let (w, h) = body.dim_in_pixel();
         // Two columns: three blocks side by side, one per quantity, each with its colour bar
-        // under it; one column: the blocks stacked, each bar right of its block, the schemes'
-        // headings over the first block and the z labels under the last only. In each block a
-        // row per angle θ and a column per scheme (the paper's arrangement), panels sharing
-        // their axes: θ and y left of each row, z labels under a block's first column.
-        let single = column() == Column::Single;
+        // under it; one column: the blocks stacked, each bar right of its block. In each block
+        // a row per angle θ and a column per scheme (the paper's arrangement) under the
+        // schemes' headings, panels sharing their axes: the height y named over its axis, θ
+        // and the y ticks left of each row, z labels under a block's first column (in
+        // one column under the last block only).
+        let left = ROW_LABEL;
         let pw = if single {
-            let across = (w - ROW_LABEL - 2 * GAP - VBAR) / 3;
-            let fixed = 3 * (BLOCK_TITLE + 2 * GAP) + HEADINGS + X_LABELS + 2 * BLOCK_GAP;
+            let across = (w - left - 2 * GAP - VBAR) / 3;
+            let fixed = 3 * (BLOCK_TITLE + HEADINGS + 2 * ROW_GAP) + X_LABELS + 2 * BLOCK_GAP;
             let down = f64::from(h.saturating_sub(fixed)) / (9.0 * PANEL_RATIO);
             across.min(down.floor() as u32)
         } else {
-            (w - ROW_LABEL - 6 * GAP - 2 * BLOCK_GAP) / 9
+            double_panel_w()
         };
         let ph = (f64::from(pw) * PANEL_RATIO).round() as u32;
         let block_w = 3 * pw + 2 * GAP;
-        let block_h = BLOCK_TITLE + 3 * ph + 2 * GAP + BLOCK_GAP;
-        // Labels at 0 and 50 only: "50" and "100" collided under a panel, and "100", centred
-        // on the panel's right end, ran into the next panel.
-        let z = Axis::every("z (eye depth)", -5.0, 105.0, 0.0, 50.0).labelled_at(&[0.0, 50.0]);
-        // No tick inside the range: the first would be at 500.
+        let rows_h = 3 * ph + 2 * ROW_GAP;
+        let block_h = BLOCK_TITLE + HEADINGS + rows_h + BLOCK_GAP;
+        // No tick inside the range: the first would be at 500; the depth's ticks and labels
+        // are drawn by [`draw_z_labels`].
+        let z = Axis::every("z (eye depth)", -5.0, 105.0, 500.0, 1000.0);
         let blank = Axis::every("", -5.0, 105.0, 500.0, 1000.0);
         let half = 0.5 * (z.max - z.min) * f64::from(ph) / f64::from(pw);
         let text = |size: u32| TextStyle::from((FONT, size).into_font());
         for (q, scale) in self.scales.iter().enumerate() {
             let q32 = q as u32;
-            // The block's left edge and top, and the top of its panels.
+            // The block's left edge and top.
             let (bx, by) = if single {
-                (ROW_LABEL, q32 * block_h + if q > 0 { HEADINGS } else { 0 })
+                (left, q32 * block_h)
             } else {
-                (ROW_LABEL + q32 * (block_w + BLOCK_GAP), 0)
+                (left + q32 * (block_w + BLOCK_GAP), 0)
             };
-            let headings = !single || q == 0;
             let z_labels = !single || q + 1 == self.scales.len();
-            let grid_top = by + BLOCK_TITLE + if headings { HEADINGS } else { 0 };
+            let grid_top = by + BLOCK_TITLE + HEADINGS;
             body.draw(&Text::new(
                 format!(
                     "({}) {}",
@@ -382,17 +432,24 @@ impl Figure for Fig3 {
                     ["E_p = 2 m_z", "E_q = 2 m_x", "E_p × E_q"][q]
                 ),
                 ((bx + block_w / 2) as i32, by as i32 + 2),
-                text(13).pos(Pos::new(HPos::Center, VPos::Top)),
+                text(TEXT).pos(Pos::new(HPos::Center, VPos::Top)),
             ))?;
-            if headings {
-                for (s, name) in self.scheme_labels.iter().enumerate() {
-                    let x = bx + s as u32 * (pw + GAP) + pw / 2;
-                    body.draw(&Text::new(
-                        name.clone(),
-                        (x as i32, (grid_top - 2) as i32),
-                        text(13).pos(Pos::new(HPos::Center, VPos::Bottom)),
-                    ))?;
-                }
+            for (s, name) in self.scheme_labels.iter().enumerate() {
+                let x = bx + s as u32 * (pw + GAP) + pw / 2;
+                body.draw(&Text::new(
+                    name.clone(),
+                    (x as i32, (grid_top - 2) as i32),
+                    text(TEXT).pos(Pos::new(HPos::Center, VPos::Bottom)),
+                ))?;
+            }
+            // The height's name over its axis, in the headings' row left of the first
+            // scheme's, of the first block (of every block in one column).
+            if single || q == 0 {
+                body.draw(&Text::new(
+                    "height y",
+                    (bx as i32 - 2, (grid_top - 2) as i32),
+                    text(TEXT).pos(Pos::new(HPos::Right, VPos::Bottom)),
+                ))?;
             }
             for (r, row) in self.rows.iter().enumerate() {
                 for (s, scheme) in row.iter().enumerate() {
@@ -403,30 +460,23 @@ impl Figure for Fig3 {
                     let ch = ph + if last_row { X_LABELS } else { 0 };
                     let cell = body
                         .clone()
-                        .shrink((x0, grid_top + r as u32 * (ph + GAP)), (cw, ch));
+                        .shrink((x0, grid_top + r as u32 * (ph + ROW_GAP)), (cw, ch));
                     let style = ChartStyle {
                         title_size: PANEL_TITLE,
                         x_label_area: if last_row { X_LABELS } else { 0 },
                         y_label_area: if row_label { ROW_LABEL } else { 0 },
-                        tick_size: 13,
-                        desc_size: 13,
+                        tick_size: TEXT,
+                        desc_size: if single { THETA_SINGLE } else { TEXT },
                         margin: 0,
                     };
-                    // θ as the first panel's y description (in one column its value only:
-                    // "θ = 90°" is longer than a row is high), with the height y at −40, 0
-                    // and 40 (one y scale for every row; ±50 of two rows touched); z labelled
-                    // under each block's first column only.
+                    // θ as the first panel's y description, with the height y at −40, 0 and
+                    // 40 (one y scale for every row).
                     let y = if row_label {
-                        let angle = if single {
-                            self.row_angles[r].trim_start_matches("θ = ")
-                        } else {
-                            self.row_angles[r].as_str()
-                        };
-                        Axis::every(angle, -half, half, -40.0, 40.0)
+                        Axis::every(self.row_angles[r].as_str(), -half, half, -40.0, 40.0)
                     } else {
                         Axis::every("", -half, half, 500.0, 1000.0)
                     };
-                    let x = if s == 0 { &z } else { &blank };
+                    let x = if s == 0 && last_row { &z } else { &blank };
                     let mut chart = build_chart_styled(&cell, "", x, &y, false, &style)?;
                     super::chart::draw_grid(&mut chart, &scheme[q].grid, scale)?;
                     // The frustum's outline and the panel's frame.
@@ -446,15 +496,18 @@ impl Figure for Fig3 {
                         [(n, -f * t), (f, f * t)],
                         RGBColor(150, 150, 150).stroke_width(1),
                     )))?;
+                    if s == 0 && last_row {
+                        draw_z_labels(&cell, &chart, -half)?;
+                    }
                 }
             }
             if single {
                 let bar = body
                     .clone()
-                    .shrink((bx + block_w + GAP, grid_top), (VBAR, 3 * ph + 2 * GAP));
+                    .shrink((bx + block_w + GAP, grid_top), (VBAR, rows_h));
                 draw_bar(&bar, scale, true)?;
             } else {
-                let bar_top = grid_top + 3 * ph + 2 * GAP + X_LABELS + 6;
+                let bar_top = grid_top + rows_h + X_LABELS + 6;
                 let bar = body.clone().shrink((bx, bar_top), (block_w, BAR));
                 draw_bar(&bar, scale, false)?;
             }
@@ -495,49 +548,104 @@ mod tests {
         assert_eq!(at(w - 1), scale.level_colour(SMOOTH_LEVELS - 1));
     }
 
-    /// The z ticks under each block's first column are labelled 0 and 50 only ("50" and
-    /// "100" were about a unit apart and collided, and "100", centred on the panel's right
-    /// end, ran into the next panel): each block's z axis is labelled "0", "50" only; and the
-    /// first column of each row has a y scale, −40, 0, 40 (the frustum's far plane reaches
-    /// ±100 tan 30° = ±57.7).
+    /// The depth axis under each block's first column reads 0 and 100 (the far plane f, review:
+    /// "0, 50" left f unreadable), "0" centred on its tick and "100" ending at the panel's right
+    /// edge (centred, it ran under the next panel); the height has its axis title, "height y",
+    /// once; every row's first panel of (a) has a y scale, −40, 0, 40; and rows are apart: a
+    /// row's "−40" and the next row's "40" (13 units tall) keep at least 5 units between them
+    /// (review: about 4 pt, touching).
     #[test]
-    fn z_ticks_are_zero_and_fifty_and_rows_have_a_y_scale() {
-        use super::super::chart::read_svg::{draw_svg, texts};
+    fn depth_reads_0_to_100_the_height_is_named_and_rows_are_apart() {
+        use super::super::chart::read_svg::{attr, draw_svg, texts};
         let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
         let svg = draw_svg(SIZE, |area| fig.draw(area).unwrap());
-        let labels: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
-        // Each block's z axis: its description, then its tick labels.
-        let mut blocks = 0;
-        for (i, t) in labels.iter().enumerate() {
-            if t == "z (eye depth)" {
-                // Up to the block's colour bar: the z labels, in the first block after the
-                // last row's y labels.
-                let end = i + labels[i..]
-                    .iter()
-                    .position(|t| t.ends_with("(log scale)"))
-                    .unwrap();
-                let axis = &labels[i + 1..end];
-                assert!(axis.windows(2).any(|w| w == ["0", "50"]), "{axis:?}");
-                blocks += 1;
-            }
+        let all = texts(&svg);
+        let named = |t: &str| all.iter().filter(|x| x.1 == t).count();
+        assert_eq!(named("z (eye depth)"), 3);
+        assert_eq!(named("height y"), 1);
+        assert_eq!(named("50"), 0);
+        // The panels' grey frames (n to f across): their right edges.
+        let frames: Vec<f64> = svg
+            .lines()
+            .filter(|l| l.starts_with("<rect") && l.contains("stroke=\"#969696\""))
+            .map(|l| attr(l, "x").unwrap() + attr(l, "width").unwrap())
+            .collect();
+        assert_eq!(frames.len(), 27);
+        let hundreds: Vec<&(&str, String, f64)> = all.iter().filter(|x| x.1 == "100").collect();
+        assert_eq!(hundreds.len(), 3, "{hundreds:?}");
+        for (line, _, _) in hundreds {
+            assert!(line.contains("text-anchor=\"end\""), "{line}");
+            let x = attr(line, "x").unwrap();
+            assert!(
+                frames.iter().any(|r| (x - r).abs() <= 2.0),
+                "\"100\" ends at {x}, no frame edge there: {frames:?}"
+            );
         }
-        assert_eq!(blocks, 3);
-        assert!(!labels.iter().any(|t| t == "100"), "{labels:?}");
-        for tick in ["−40", "0", "40"] {
-            let n = labels.iter().filter(|t| *t == tick).count();
-            assert!(n >= 3, "{tick}: {n} in {labels:?}");
+        assert!(named("0") >= 3 + 3);
+        // The y scale: in the first block's rows, by height.
+        let at = |t: &str| -> Vec<f64> {
+            let mut v: Vec<f64> = all.iter().filter(|x| x.1 == t).map(|x| x.2).collect();
+            v.sort_by(f64::total_cmp);
+            v
+        };
+        let (top, bottom) = (at("40"), at("−40"));
+        assert_eq!((top.len(), bottom.len()), (3, 3), "{top:?} {bottom:?}");
+        for r in 0..2 {
+            // Text y is its top (dy 0.76 em is the baseline): the next row's "40" starts at
+            // least 13 + 5 units under this row's "−40".
+            assert!(top[r + 1] - bottom[r] >= 18.0, "{top:?} {bottom:?}");
         }
     }
 
-    /// The colour bars' ticks are plain numbers at powers of 5 (issue 35 item 9: they read
-    /// 5⁰, 5¹, 5²): for E over 0.028 to 128, log₅ runs from −2.22 to 3.01; the powers 5^−1
-    /// to 5² are at least 7 % of the bar (0.37) from its ends, 5^−2 = 0.04 and 5³ = 125 are
-    /// not, and the ends are written to three digits.
+    /// The colour bars' ticks are plain powers of 5 (issue 35 item 9: they read 5⁰, 5¹, 5²),
+    /// every power where the labels keep 6 units apart on the double-column bar, else every
+    /// second or third (5^{ks}, so that 1 = 5⁰ is one), the same ticks in both layouts. By
+    /// hand, on a bar 100 units long (DejaVu digits 8.27 units at 13, the point 4.13): E over
+    /// 0.028 to 128 spans log₅ −2.22 to 3.01, 19.1 units a power: "0.04" (28.9 wide) and "0.2"
+    /// (20.7) need 30.8, so every second power, 0.04, 1, 25 (38.2 apart); E over 2 to 230,
+    /// log₅ 0.43 to 3.38, 33.9 units a power: 5, 25 and 125 fit (25 and 125 need 26.7).
     #[test]
     fn colour_bar_ticks_are_plain_powers_of_five() {
-        let axis = Axis::log_base("E", 0.028, 128.0, 5.0);
-        let labels: Vec<String> = bar_ticks(&axis).into_iter().map(|t| t.1).collect();
-        assert_eq!(labels, ["0.028", "0.2", "1", "5", "25", "128"]);
+        let labels = |lo: f64, hi: f64| -> Vec<String> {
+            bar_ticks(&Axis::log_base("E", lo, hi, 5.0), 100.0)
+                .into_iter()
+                .map(|t| t.1)
+                .collect()
+        };
+        assert_eq!(labels(0.028, 128.0), ["0.04", "1", "25"]);
+        assert_eq!(labels(2.0, 230.0), ["5", "25", "125"]);
+        // 0.06 to 16400: log₅ −1.75 to 6.03, 12.85 units a power: every third puts "125" (24.8)
+        // and "15625" (41.3) 38.6 apart, short of 39.1; every fourth, 1 and 625.
+        assert_eq!(labels(0.06, 16400.0), ["1", "625"]);
+    }
+
+    /// The single column's bars carry the double column's ticks (review: the sets differed):
+    /// read back from both SVGs, the labels of each bar, by quantity, are the same.
+    #[test]
+    fn both_layouts_label_their_bars_alike() {
+        use super::super::chart::read_svg::{draw_svg, texts};
+        use super::super::chart::with_page;
+        let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
+        let numbers = |column: Column, size: (u32, u32)| -> Vec<String> {
+            let svg = with_page(false, column, || {
+                draw_svg(size, |area| fig.draw(area).unwrap())
+            });
+            let mut v: Vec<String> = texts(&svg)
+                .into_iter()
+                .map(|t| t.1)
+                .filter(|t| {
+                    !t.is_empty()
+                        && t.chars().all(|c| c.is_ascii_digit() || c == '.')
+                        && !["0", "40", "100"].contains(&t.as_str())
+                })
+                .collect();
+            v.sort();
+            v
+        };
+        let double = numbers(Column::Double, SIZE);
+        let single = numbers(Column::Single, fig.single_size().unwrap());
+        assert!(double.len() >= 9, "{double:?}");
+        assert_eq!(double, single);
     }
 
     #[test]

@@ -134,10 +134,11 @@ pub(super) fn right_corners(sec: &[DVec2; 4], tol: f64) -> Vec<DVec2> {
     out
 }
 
-/// For each label, which of its candidate heights (backend pixels, top corner first) its
-/// leader starts at: the choice whose spread labels ([`spread`]) move least from their leaders,
-/// a top corner preferred where that ties (each lower corner costs half a pixel). Returns the
-/// chosen index per label.
+/// For each label (nearest plane first), which of its candidate heights (backend pixels, top
+/// corner first) its leader starts at: the choice whose leaders keep the planes' order (the
+/// farthest highest) and whose spread labels ([`spread`]) move least from their leaders, a top
+/// corner preferred where that ties (each lower corner costs half a pixel). Returns the chosen
+/// index per label.
 pub(super) fn choose_corners(
     candidates: &[Vec<i32>],
     step: i32,
@@ -159,12 +160,16 @@ pub(super) fn choose_corners(
             .collect();
         let wanted: Vec<i32> = candidates.iter().zip(&pick).map(|(c, &k)| c[k]).collect();
         let ys = spread(&wanted, step, range, base);
+        // The labels keep the planes' order, the farthest on top: a crossing order costs more
+        // than any spread.
+        let crossed = wanted.windows(2).any(|w| w[1] > w[0]);
         let cost = ys
             .iter()
             .zip(&wanted)
             .map(|(y, w)| f64::from((y - w).abs()))
             .sum::<f64>()
-            + 0.5 * pick.iter().filter(|&&k| k > 0).count() as f64;
+            + 0.5 * pick.iter().filter(|&&k| k > 0).count() as f64
+            + if crossed { 1e6 } else { 0.0 };
         if cost < best.0 {
             best = (cost, pick);
         }
@@ -215,6 +220,9 @@ pub(super) fn dashed(
     out
 }
 
+/// A key item's stroke: colour, width, dash pattern (empty: solid).
+type Stroke = (RGBColor, u32, &'static [f64]);
+
 /// The key under the panels: "Maps, nearest first:" with each map's stroke and its
 /// number, then the frustum's stroke and the split planes'. Its items flow in rows, centred;
 /// returns the height it takes (drawing nothing when `draw` is false).
@@ -233,9 +241,7 @@ fn key<DB: DrawingBackend>(
     };
     let sample = 2.0 * f64::from(size);
     let (gap, space) = (0.3 * f64::from(size), f64::from(size));
-    // (stroke: colour, width, pattern; text)
-    let mut items: Vec<(Option<(RGBColor, u32, &[f64])>, String)> =
-        vec![(None, "Maps, nearest first:".into())];
+    let mut items: Vec<(Option<Stroke>, String)> = vec![(None, "Maps, nearest first:".into())];
     for i in 0..maps {
         items.push((
             Some((map_colour(i, maps), 2, PATTERNS[i % PATTERNS.len()])),
@@ -391,31 +397,33 @@ fn axes(lo: DVec2, hi: DVec2, at: &(Vec<f64>, Vec<f64>), titles: (bool, bool)) -
 /// least two.
 fn ticks_fitting(lo: f64, hi: f64, room: f64, need: impl Fn(f64) -> f64) -> Vec<f64> {
     let span = hi - lo;
+    let fits = |v: &[f64]| {
+        v.len() >= 2
+            && v.windows(2)
+                .all(|w| w[1] - w[0] >= (need(w[0]) + need(w[1])) * 0.5 * span / room)
+    };
+    // The coarsest choice with two labels, should none fit.
+    let mut fallback = Vec::new();
     let mut base = 10f64.powf((span / 20.0).log10().floor());
-    loop {
+    while base <= 10.0 * span {
         for m in [1.0, 2.0, 5.0] {
             let s = m * base;
             let all: Vec<f64> = ((lo / s).ceil() as i64..=(hi / s).floor() as i64)
                 .map(|k| k as f64 * s)
                 .collect();
-            let fits = |v: &[f64]| {
-                v.len() >= 2
-                    && v.windows(2)
-                        .all(|w| w[1] - w[0] >= (need(w[0]) + need(w[1])) * 0.5 * span / room)
-            };
-            if fits(&all) {
-                return all;
-            }
-            let every_other: Vec<f64> = all.iter().copied().step_by(2).collect();
-            if all.len() == 3 && fits(&every_other) {
-                return every_other;
+            let ends: Vec<f64> = all.iter().copied().step_by(2).collect();
+            for v in [all.clone(), ends] {
+                if fits(&v) && (v.len() == all.len() || all.len() == 3) {
+                    return v;
+                }
+                if v.len() >= 2 {
+                    fallback = v;
+                }
             }
         }
         base *= 10.0;
-        if base > span * 10.0 {
-            return vec![lo, hi];
-        }
     }
+    fallback
 }
 
 /// The labelled ticks of a panel showing `lo`–`hi` in a `w` × `h` plot with `tick`-size
@@ -424,7 +432,7 @@ fn ticks_fitting(lo: f64, hi: f64, room: f64, need: impl Fn(f64) -> f64) -> Vec<
 fn tick_labels(lo: DVec2, hi: DVec2, w: f64, h: f64, tick: f64) -> (Vec<f64>, Vec<f64>) {
     let wide = |v: f64| {
         let digits = format!("{}", v.abs()).len() as f64;
-        (digits * 0.64 + if v < 0.0 { 0.84 } else { 0.0 }) * tick + 0.6 * tick
+        (digits * 0.64 + if v < 0.0 { 0.84 } else { 0.0 }) * tick + 0.4 * tick
     };
     (
         ticks_fitting(lo.x, hi.x, w, wide),

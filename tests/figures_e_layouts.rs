@@ -1,0 +1,240 @@
+//! barroso-fig7, martin-tan-fig6, martin-tan-fig3 and zhang-fig3 in every layout (the figure
+//! review of issue 35): captions of at most five lines in one column too, no formula broken
+//! across two of them and no one-word last line, barroso-fig7's two plots equally tall in one
+//! column, martin-tan-fig3's caption without the unshown "wins" share and, in one column, with
+//! the light's azimuth and the inset of the apex, and zhang-fig3's bare figure without dead
+//! space under its colour bars. Read back from the SVGs as written.
+#![cfg(feature = "plot")]
+
+#[path = "figures_style_read/mod.rs"]
+mod read;
+
+use read::{attr, render_svg, texts, Font};
+use shadow_aliasing::plot::{Column, Options};
+
+const MINE: [&str; 4] = [
+    "barroso-fig7",
+    "martin-tan-fig6",
+    "martin-tan-fig3",
+    "zhang-fig3",
+];
+
+fn options(column: Column, bare: bool) -> Options {
+    Options {
+        column,
+        bare,
+        ..Options::default()
+    }
+}
+
+/// The caption's lines (grey #323232 texts, one `<text>` a line), as printed: tags removed,
+/// entities decoded, a no-break space kept as U+00A0.
+fn caption_lines(svg: &str) -> Vec<String> {
+    let font = Font::dejavu();
+    texts(&font, svg)
+        .into_iter()
+        .filter(|t| t.tag.contains("fill=\"#323232\""))
+        .map(|t| t.content)
+        .collect()
+}
+
+/// Every caption of these figures, across two columns and in one, is at most five lines; no
+/// line ends with a formula's "=", "+", "−" or "(" nor starts with "=", "+" or ")" (the
+/// review: "f =" / "100", "θ" / "= 30°", "n =" / "1"), and the last line is more than one
+/// word (no widow).
+#[test]
+fn captions_are_five_lines_with_formulas_whole() {
+    let mut bad = Vec::new();
+    for name in MINE {
+        for column in [Column::Double, Column::Single] {
+            let lines = caption_lines(&render_svg(name, &options(column, false)));
+            if lines.is_empty() || lines.len() > 5 {
+                bad.push(format!("{name} {column:?}: {} lines", lines.len()));
+            }
+            for (k, l) in lines.iter().enumerate() {
+                let t = l.trim();
+                if t.ends_with(['=', '+', '−', '(']) || t.starts_with(['=', '+', ')']) {
+                    bad.push(format!("{name} {column:?}: line {k} {t:?}"));
+                }
+            }
+            if let Some(last) = lines.last() {
+                if !last.trim().contains(' ') {
+                    bad.push(format!("{name} {column:?}: a one-word last line {last:?}"));
+                }
+            }
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}
+
+/// martin-tan-fig3's caption claims nothing the figure does not show (the review: "T wins for
+/// 29 % of lights", a share over the hemisphere drawn nowhere), and in one column it still
+/// gives the light's azimuth (the review: "80° up" alone under-specified it).
+#[test]
+fn martin_tan_fig3_caption_shows_what_it_says() {
+    for column in [Column::Double, Column::Single] {
+        let caption = caption_lines(&render_svg("martin-tan-fig3", &options(column, false)))
+            .join(" ")
+            .replace('\u{a0}', " ");
+        assert!(!caption.contains("wins"), "{column:?}: {caption}");
+        assert!(
+            caption.contains("70° round from behind"),
+            "{column:?}: {caption}"
+        );
+    }
+}
+
+/// In one column barroso-fig7's two plots are as tall as each other (the review: (b) about
+/// 1.5 in against 2.1 in for (a), its legend's strip taken from it alone): each plot's height
+/// is the span of its y axis's tick marks (the 5-unit horizontal lines left of the axis, from
+/// its lowest decade to its highest) over the decades they span (3 for (b), 0.3 to 300 ticked
+/// at 10⁰ … 10²: 2 decades between its outer ticks; 4 for (a), 10⁰ … 10⁴), times the decades
+/// each axis spans (log₁₀ 300/0.3 = 3, and 4): equal within a unit.
+#[test]
+fn barroso_fig7_plots_are_equally_tall_in_one_column() {
+    let svg = render_svg("barroso-fig7", &options(Column::Single, false));
+    // The y axes' labelled tick marks: horizontal, 5 units long, ending at the axis.
+    let mut ticks: Vec<(f64, f64)> = Vec::new();
+    let mut rest = svg.as_str();
+    while let Some(i) = rest.find("<polyline") {
+        let end = i + rest[i..].find("/>").unwrap();
+        let tag = &rest[i..end];
+        rest = &rest[end..];
+        let at = tag.find("points=\"").unwrap() + 8;
+        let pts: Vec<(f64, f64)> = tag[at..at + tag[at..].find('"').unwrap()]
+            .split_whitespace()
+            .map(|p| {
+                let (x, y) = p.split_once(',').unwrap();
+                (x.parse().unwrap(), y.parse().unwrap())
+            })
+            .collect();
+        if pts.len() == 2 && pts[0].1 == pts[1].1 && (pts[1].0 - pts[0].0).abs() == 5.0 {
+            ticks.push((pts[0].0.max(pts[1].0), pts[0].1));
+        }
+    }
+    // The two panels' ticks, split where they jump by more than a panel's decade.
+    ticks.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let gaps: Vec<usize> = (1..ticks.len())
+        .filter(|&k| ticks[k].1 - ticks[k - 1].1 > 60.0)
+        .collect();
+    assert_eq!(gaps.len(), 1, "{ticks:?}");
+    let (a, b) = ticks.split_at(gaps[0]);
+    // (a): 10⁰ … 10⁴, 5 ticks over 4 decades; (b): 10⁰ … 10², 3 ticks over 2 decades of its 3.
+    assert_eq!((a.len(), b.len()), (5, 3), "{a:?} {b:?}");
+    let a_h = (a[4].1 - a[0].1) / 4.0 * 4.0;
+    let b_h = (b[2].1 - b[0].1) / 2.0 * 3.0;
+    assert!((a_h - b_h).abs() <= 1.0, "(a) {a_h} against (b) {b_h}");
+}
+
+/// martin-tan-fig3 keeps its inset in one column (the review: dropped, the focus region a
+/// smudge about 6 pt across), joined to the window it shows by two lines: both layouts have
+/// the window and the inset's frame (unfilled grey #5A5A5A rectangles, the inset's the larger)
+/// and two grey segments, each from a bottom corner of the window to a top corner of the inset.
+#[test]
+fn martin_tan_fig3_inset_in_both_layouts_with_its_connectors() {
+    for column in [Column::Double, Column::Single] {
+        let svg = render_svg("martin-tan-fig3", &options(column, false));
+        let mut rects: Vec<[f64; 4]> = svg
+            .lines()
+            .filter(|l| {
+                l.starts_with("<rect") && l.contains("stroke=\"#5A5A5A\"") && l.contains("none")
+            })
+            .map(|l| {
+                let n = |k: &str| attr(l, k).unwrap();
+                [n("x"), n("y"), n("x") + n("width"), n("y") + n("height")]
+            })
+            .collect();
+        rects.sort_by(|p, q| {
+            ((p[2] - p[0]) * (p[3] - p[1])).total_cmp(&((q[2] - q[0]) * (q[3] - q[1])))
+        });
+        assert_eq!(rects.len(), 2, "{column:?}: {rects:?}");
+        let (window, inset) = (rects[0], rects[1]);
+        assert!(
+            inset[1] > window[3] + 8.0,
+            "{column:?}: {window:?} {inset:?}"
+        );
+        let segments: Vec<[f64; 4]> = svg
+            .lines()
+            .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#5A5A5A\""))
+            .filter_map(|l| {
+                let at = l.find("points=\"")? + 8;
+                let v: Vec<f64> = l[at..at + l[at..].find('"')?]
+                    .split([' ', ','])
+                    .filter_map(|x| x.parse().ok())
+                    .collect();
+                (v.len() == 4).then(|| [v[0], v[1], v[2], v[3]])
+            })
+            .collect();
+        let near = |a: f64, b: f64| (a - b).abs() <= 1.5;
+        for (wx, ix) in [(window[0], inset[0]), (window[2], inset[2])] {
+            assert!(
+                segments.iter().any(|s| near(s[0], wx)
+                    && near(s[1], window[3])
+                    && near(s[2], ix)
+                    && near(s[3], inset[1])),
+                "{column:?}: no connector from ({wx}, {}) to ({ix}, {}) in {segments:?}",
+                window[3],
+                inset[1]
+            );
+        }
+    }
+}
+
+/// zhang-fig3's bare figure ends at its colour bars' names (the review: about 25 pt of dead
+/// white space under them): the lowest text's bottom (its baseline, `dy` 0.76 em under its
+/// top, plus DejaVu's descent, 0.24 em) lies within 12 units of the view box's bottom.
+#[test]
+fn zhang_fig3_bare_has_no_dead_space_below() {
+    let svg = render_svg("zhang-fig3", &options(Column::Double, true));
+    let font = Font::dejavu();
+    let bottom = texts(&font, &svg)
+        .iter()
+        .map(|t| t.bbox[3])
+        .fold(f64::NEG_INFINITY, f64::max);
+    let head = &svg[..svg.find('>').unwrap()];
+    let at = head.find("viewBox=\"").unwrap() + 9;
+    let v: Vec<f64> = head[at..at + head[at..].find('"').unwrap()]
+        .split_whitespace()
+        .map(|x| x.parse().unwrap())
+        .collect();
+    let end = v[1] + v[3];
+    assert!(
+        end - bottom <= 12.0,
+        "{} units under the last text",
+        end - bottom
+    );
+}
+
+/// martin-tan-fig3 has one legend, under all its panels (the review: under (a) only, although
+/// (b) and (c) use it too): in both layouts each of its six entries lies below every panel's
+/// x axis name ("light −x", "map s" twice), and the six are there once each.
+#[test]
+fn martin_tan_fig3_legend_is_under_all_panels() {
+    let font = Font::dejavu();
+    let entries = [
+        "frustum E",
+        "hull C",
+        "focus region",
+        "trapezoid T",
+        "min-area box B",
+        "axis-aligned box",
+    ];
+    for column in [Column::Double, Column::Single] {
+        let all = texts(
+            &font,
+            &render_svg("martin-tan-fig3", &options(column, false)),
+        );
+        let names: Vec<f64> = all
+            .iter()
+            .filter(|t| t.content == "map s" || t.content == "light −x")
+            .map(|t| t.bbox[3])
+            .collect();
+        assert_eq!(names.len(), 3, "{column:?}");
+        let lowest = names.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        for e in entries {
+            let found: Vec<&read::Text> = all.iter().filter(|t| t.content == e).collect();
+            assert_eq!(found.len(), 1, "{column:?}: {e}");
+            assert!(found[0].bbox[1] > lowest, "{column:?}: {e} above {lowest}");
+        }
+    }
+}
