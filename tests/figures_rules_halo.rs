@@ -3,7 +3,8 @@
 //! lloyd2005-fig4's one-column layout). Checked on every figure's SVG in the two-column, bare
 //! and one-column layouts: no label box (a white, translucent `<rect>` that is not a legend's)
 //! overlaps a marker (a small filled `<polygon>`) drawn before it, whichever series the marker
-//! belongs to, its own label's included.
+//! belongs to, its own label's included; and no label's text (the `<text>` after its box,
+//! measured with DejaVu Sans) overlaps a marker drawn before or after it.
 #![cfg(feature = "plot")]
 
 mod figures_style_read;
@@ -57,32 +58,52 @@ fn markers(svg: &str) -> Vec<(usize, String, Box4)> {
         .collect()
 }
 
-/// Each label box of `svg` that overlaps a marker drawn before it, one line each; and how many
-/// label boxes there were.
-fn halo_faults(svg: &str) -> (Vec<String>, usize) {
+/// Whether two boxes overlap by more than [`TOL`] both ways.
+fn overlap(a: &Box4, b: &Box4) -> bool {
+    a[2].min(b[2]) - a[0].max(b[0]) > TOL && a[3].min(b[3]) - a[1].max(b[1]) > TOL
+}
+
+/// Each label box of `svg` that overlaps a marker drawn before it, and each label text that
+/// overlaps any marker, one line each; and how many label boxes there were.
+fn halo_faults(font: &Font, svg: &str) -> (Vec<String>, usize) {
+    let lines: Vec<&str> = svg.lines().collect();
     let boxes = label_boxes(svg);
     let marks = markers(svg);
     let mut bad = Vec::new();
     for (i, b) in &boxes {
-        for (j, colour, m) in marks.iter().filter(|(j, _, _)| j < i) {
-            let across = b[2].min(m[2]) - b[0].max(m[0]);
-            let down = b[3].min(m[3]) - b[1].max(m[1]);
-            if across > TOL && down > TOL {
-                bad.push(format!(
-                    "the label box {b:?} (line {}) covers a {colour} marker {m:?} (line {})",
-                    i + 1,
-                    j + 1
-                ));
-            }
+        for (j, colour, m) in marks.iter().filter(|(j, _, m)| j < i && overlap(b, m)) {
+            bad.push(format!(
+                "the label box {b:?} (line {}) covers a {colour} marker {m:?} (line {})",
+                i + 1,
+                j + 1
+            ));
+        }
+        let Some(text) = lines[i + 1..]
+            .iter()
+            .find(|l| l.starts_with("<text"))
+            .and_then(|l| texts(font, l).pop())
+        else {
+            continue;
+        };
+        for (j, colour, m) in marks.iter().filter(|(_, _, m)| overlap(&text.bbox, m)) {
+            bad.push(format!(
+                "the label {:?} {:?} (line {}) touches a {colour} marker {m:?} (line {})",
+                text.content,
+                text.bbox,
+                i + 2,
+                j + 1
+            ));
         }
     }
     (bad, boxes.len())
 }
 
 /// The reader on a page written by hand: a label box over a marker drawn before it is caught,
-/// one drawn after it (on top) or 1 unit clear is not, and a legend's box is no label box.
+/// one drawn after it (on top) or 1 unit clear is not, and a legend's box is no label box; a
+/// label's text over a marker is caught whichever comes first.
 #[test]
 fn a_box_over_an_earlier_marker_is_caught() {
+    let font = Font::dejavu();
     let page = |marker_y: f64, after: bool| {
         let m = format!(
             "<polygon fill=\"#0072B2\" points=\"50,{y0} 54,{y1} 46,{y1}\"/>",
@@ -99,11 +120,25 @@ fn a_box_over_an_earlier_marker_is_caught() {
         format!("<svg viewBox=\"0 0 200 100\">\n{body}\n{legend}\n</svg>\n")
     };
     // The marker spans y 30–38 against the box's 20–34: 4 units inside.
-    let (bad, n) = halo_faults(&page(30.0, false));
+    let (bad, n) = halo_faults(&font, &page(30.0, false));
     assert_eq!((bad.len(), n), (1, 1), "{bad:?}");
-    assert!(halo_faults(&page(30.0, true)).0.is_empty());
+    assert!(halo_faults(&font, &page(30.0, true)).0.is_empty());
     // Spanning 35–43: 1 unit below the box.
-    assert!(halo_faults(&page(35.0, false)).0.is_empty());
+    assert!(halo_faults(&font, &page(35.0, false)).0.is_empty());
+    // A text "ab" at size 10 from (42, 32) (baseline; capitals up to 32 − 7.3, descent to
+    // 34.4), about 13 units wide: a marker drawn after it at y 30–38 over x 46–54 touches it;
+    // one at y 36–44 clears the descent.
+    let text = |marker_y: f64| {
+        format!(
+            "<svg viewBox=\"0 0 200 100\">\n<rect x=\"40\" y=\"20\" width=\"40\" height=\"16\" fill=\"#FFFFFF\" stroke=\"none\" opacity=\"0.8\"/>\n<text x=\"42\" y=\"32\" font-size=\"10\">ab</text>\n<polygon fill=\"#0072B2\" points=\"50,{} 54,{} 46,{}\"/>\n</svg>\n",
+            marker_y,
+            marker_y + 8.0,
+            marker_y + 8.0
+        )
+    };
+    let (bad, _) = halo_faults(&font, &text(30.0));
+    assert_eq!(bad.len(), 1, "{bad:?}");
+    assert!(halo_faults(&font, &text(36.0)).0.is_empty());
 }
 
 /// No label box of any figure, in any layout, hides a marker.
@@ -111,8 +146,9 @@ fn a_box_over_an_earlier_marker_is_caught() {
 fn label_halos_cover_no_marker() {
     let mut faults = Vec::new();
     let mut checked = 0;
+    let font = Font::dejavu();
     for (name, layout, svg) in all_svgs() {
-        let (bad, n) = halo_faults(svg);
+        let (bad, n) = halo_faults(&font, svg);
         checked += n;
         faults.extend(bad.into_iter().map(|b| format!("{name} ({layout}): {b}")));
     }

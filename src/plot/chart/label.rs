@@ -140,9 +140,10 @@ pub(crate) struct Obstacles {
 }
 
 impl Obstacles {
-    /// How many lines of series other than `own`, markers (of every series: a label's halo
-    /// hides its own line's markers as much as another's) and boxes the box touches, and how
-    /// many segments of `own`.
+    /// How many lines and markers of series other than `own` and boxes the box touches, with
+    /// the markers of `own` that its text (the box less [`LABEL_PAD`]) touches (the line
+    /// charts draw markers over the labels' halos, so a halo may reach under its own line's
+    /// markers but its text may not), and how many segments of `own`.
     pub fn hits(&self, r: &Rect, own: Option<usize>) -> (usize, usize) {
         let mut other = 0;
         let mut mine = 0;
@@ -155,7 +156,18 @@ impl Obstacles {
                 }
             }
         }
-        other += self.markers.iter().filter(|(m, _)| r.overlaps(m)).count();
+        let text = r.grown(-f64::from(LABEL_PAD));
+        other += self
+            .markers
+            .iter()
+            .filter(|(m, s)| {
+                if Some(*s) == own {
+                    text.overlaps(m)
+                } else {
+                    r.overlaps(m)
+                }
+            })
+            .count();
         other += self.boxes.iter().filter(|b| r.overlaps(b)).count();
         (other, mine)
     }
@@ -175,10 +187,11 @@ pub(crate) fn place_label(
 ) -> Option<Rect> {
     use plotters::style::text_anchor::{HPos, VPos};
     let p0 = *points.get(preferred)?;
-    // Beside the point 3 units off, or 9 (clear of a marker on it: half a marker is at most
-    // width + 3 = 8 units), the farther costing a little more.
+    // Beside the point 4 units off (the text, 2 units inside its box, then clears a marker of
+    // a line 2 wide, 5 units about its point, on a flat line), or 9 or 15 (clear of larger
+    // markers and of the lines next to it), the farther costing a little more.
     let mut corners = Vec::new();
-    for gap in [3.0, 9.0, 15.0] {
+    for gap in [4.0, 9.0, 15.0] {
         corners.extend([
             (HPos::Right, VPos::Bottom, (-gap, -gap)),
             (HPos::Left, VPos::Bottom, (gap, -gap)),
@@ -333,10 +346,11 @@ mod tests {
     use super::*;
 
     /// A label at the end of a flat line whose points carry markers (half size 5, as for a line
-    /// 2 wide) keeps its box clear of every marker, its own line's included (the review found
-    /// the halos of lloyd2005-fig7's labels over the markers at k = 9): by hand, a 60 × 14 box
-    /// 3 units above the end point (100, 100) would span y 83–97 and x 37–97, over the marker
-    /// box 95–105 × 95–105.
+    /// 2 wide) keeps its text clear of its own line's markers, and its whole box clear of
+    /// another line's (the review found the halos of lloyd2005-fig7's labels over the markers
+    /// at k = 9; the line charts draw markers over the halos). By hand, a 60 × 14 box 4 units
+    /// above and left of the end point (100, 100) spans x 36–96, y 82–96; its text (less the
+    /// pad of 2) y 84–94 clears the own markers' boxes (y 95–105), so the label stays there.
     #[test]
     fn a_label_keeps_clear_of_its_own_lines_markers() {
         let points: Vec<(f64, f64)> = (0..=10).map(|i| (10.0 * f64::from(i), 100.0)).collect();
@@ -360,21 +374,66 @@ mod tests {
             x1: 110.0,
             y1: 200.0,
         };
+        let box_at = |x0: f64, y0: f64| Rect {
+            x0,
+            y0,
+            x1: x0 + 60.0,
+            y1: y0 + 14.0,
+        };
         let r = place_label(&points, 10, (60.0, 14.0), &area, 0, &o).unwrap();
-        for (m, _) in &o.markers {
-            assert!(!r.overlaps(m), "{r:?} over the marker {m:?}");
-        }
-        // By hand: every candidate 3 units off the line reaches into the markers (half size 5);
-        // the cheapest clear one is the box right-aligned 9 units left of and above the end
-        // point, x 100 − 9 − 60 = 31 to 91, y 100 − 9 − 14 = 77 to 91.
-        assert_eq!(
-            r,
-            Rect {
-                x0: 31.0,
-                y0: 77.0,
-                x1: 91.0,
-                y1: 91.0
+        assert_eq!(r, box_at(36.0, 82.0));
+        let other = |o: &Obstacles, dy: f64| {
+            let mut o2 = Obstacles::default();
+            o2.segments.clone_from(&o.segments);
+            o2.markers.clone_from(&o.markers);
+            for &p in &points {
+                o2.markers.push((
+                    Rect {
+                        x0: p.0 - 5.0,
+                        y0: p.1 - 5.0 + dy,
+                        x1: p.0 + 5.0,
+                        y1: p.1 + 5.0 + dy,
+                    },
+                    1,
+                ));
             }
+            o2
+        };
+        // Another line's markers 10 units below (y 105–115): the box above stays.
+        let below = other(&o, 10.0);
+        assert_eq!(
+            place_label(&points, 10, (60.0, 14.0), &area, 0, &below),
+            Some(box_at(36.0, 82.0))
+        );
+        // 15 units above (y 80–90, under the box): the label goes 4 units below its line,
+        // y 104–118, its text (106–116) clear of its own markers (95–105).
+        let above = other(&o, -15.0);
+        assert_eq!(
+            place_label(&points, 10, (60.0, 14.0), &area, 0, &above),
+            Some(box_at(36.0, 104.0))
+        );
+        // Its own line rising 3 units to its last but one point (90, 97): that marker's box
+        // (y 92–102) reaches the text above (84–94), so the label goes below, 104–118 (the
+        // text there, 106–116, clears the markers at 95–105 and 92–102).
+        let mut rising = points.clone();
+        rising[9].1 = 97.0;
+        let mut o = Obstacles::default();
+        o.segments
+            .extend(rising.windows(2).map(|w| (w[0], w[1], 0)));
+        for &p in &rising {
+            o.markers.push((
+                Rect {
+                    x0: p.0 - 5.0,
+                    y0: p.1 - 5.0,
+                    x1: p.0 + 5.0,
+                    y1: p.1 + 5.0,
+                },
+                0,
+            ));
+        }
+        assert_eq!(
+            place_label(&rising, 10, (60.0, 14.0), &area, 0, &o),
+            Some(box_at(36.0, 104.0))
         );
     }
 }

@@ -419,6 +419,8 @@ fn draw_chart<DB: DrawingBackend>(
     let plot = chart.plotting_area().strip_coord_spec();
     let mut obstacles = Obstacles::default();
     let mut entries = Vec::new();
+    // The markers, drawn after the labels and notes so that no white halo hides one.
+    let mut markers = Vec::new();
     // Each direct label: its series, its drawn points (backend units) and the one asked for.
     let mut direct = Vec::new();
     for (k, s) in c.series.iter().enumerate() {
@@ -459,7 +461,7 @@ fn draw_chart<DB: DrawingBackend>(
             .filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1)
         {
             let p = to(at);
-            fill_fine_polygon(&plot, p, &outline, s.colour)?;
+            markers.push((p, outline.clone(), s.colour));
             let m = Rect::anchored(p, Pos::new(HPos::Center, VPos::Center), 0.0, 0.0);
             obstacles.markers.push((m.grown(f64::from(r + 1)), k));
         }
@@ -543,6 +545,9 @@ fn draw_chart<DB: DrawingBackend>(
                 obstacles.boxes.push(r);
             }
         }
+    }
+    for (p, outline, colour) in &markers {
+        fill_fine_polygon(&plot, *p, outline, *colour)?;
     }
     if c.show_legend {
         draw_legend_clear(&plot, strip, below_width, &entries, &c.legend, &obstacles)
