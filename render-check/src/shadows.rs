@@ -79,10 +79,14 @@ pub(crate) fn first_surface_offset(
 ///   other than the one the pixel lies on, and must have `q`'s exact state (no caster between the
 ///   plane and the pixel's depth on that ray); in shadow, the caster face the ray from `r` meets
 ///   first must lie, in depth, beyond the rasterizer's bias of it ([`rasterizer_bias`]: the slope
-///   term from the face's own depth slope in the map's window coordinates, and the constant).
+///   term from the face's own depth slope in the map's window coordinates, and the constant);
+///   on second-depth maps, the ray from `r` toward the light must not run within
+///   [`CENTRE_TOLERANCE`] texel of a face edge-on to the light (stored as a zero-area sliver
+///   whose depth the rasterizer does not define).
 ///
 /// The pixel is decided when all of them give one verdict: the pixels left out are those whose
-/// texel's centre lies within 0.02 texel of the exact boundary, or at a contact. The light rays
+/// texel's centre lies within 0.02 texel of the exact boundary, at a contact, or along an
+/// edge-on face. The light rays
 /// are the map's own (its matrix, so a wrong light direction is not excused); the exact states
 /// are ray casts toward the true light.
 ///
@@ -127,6 +131,24 @@ pub(crate) fn shadow_verdict(
         .boxes
         .iter()
         .position(|b| box_contains(b, pw - nw * lift));
+    // The faces edge-on to the light (box, axis), on second-depth maps: none for most lights.
+    let edge_on = if map.normal_offset.is_none() {
+        edge_on_faces(scene, light)
+    } else {
+        Vec::new()
+    };
+    // CENTRE_TOLERANCE texel's world length at the pixel's map position and light depth.
+    let edge_tol = if edge_on.is_empty() {
+        0.0
+    } else {
+        let at = |a: f64, b: f64| {
+            inv.project_point3(DVec3::new(2.0 * a / res - 1.0, 2.0 * b / res - 1.0, depth))
+        };
+        let r0 = at(s, t);
+        (at(s + CENTRE_TOLERANCE, t) - r0)
+            .length()
+            .max((at(s, t + CENTRE_TOLERANCE) - r0).length())
+    };
     let inside = |q: DVec3, skip: Option<usize>| {
         scene
             .boxes
@@ -179,6 +201,16 @@ pub(crate) fn shadow_verdict(
         // on a step: its bottom face, which a second-depth map stores, lies in the receiver's
         // plane). Elsewhere r and q must agree: a caster between the plane and the pixel's
         // depth on this ray is a contact no verdict decides.
+        // A face edge-on to the light (|n·L| ≤ FACING, stored by the second-depth pass) that
+        // this texel's ray runs along, within the sampling tolerance: the face projects to a
+        // zero-area sliver whose depth at the texel the rasterizer does not define (a pole's
+        // side under a light with no component across it, the texel's centre on the side's
+        // line: `parallel_1`'s PSM map at 240 × 180 shadowed such a pixel).
+        if !edge_on.is_empty()
+            && (!edge_tol.is_finite() || along_edge_on_face(scene, &edge_on, r, light, edge_tol))
+        {
+            return None;
+        }
         let in_own = own.is_some_and(|k| box_contains(&scene.boxes[k], r));
         if !in_own && (inside(r, own) || ray_occluded(scene, r, DVec3::ZERO, light) != on_plane) {
             return None;
@@ -244,6 +276,65 @@ pub(crate) fn plane_depth(
     let h = *wc * (q0 + d * ((p - q0).dot(n) / den)).extend(1.0);
     let z = h.z / h.w;
     z.is_finite().then_some(z)
+}
+
+/// The box faces edge-on to the light (|n·L| ≤ [`crate::scene::FACING`]: the faces the
+/// second-depth pass stores besides those turned away), as (box, axis) pairs.
+fn edge_on_faces(scene: &Scene, light: DVec3) -> Vec<(usize, usize)> {
+    let mut out = Vec::new();
+    for (i, b) in scene.boxes.iter().enumerate() {
+        let d = if b.is_rotated() {
+            b.rotation().inverse() * -light
+        } else {
+            -light
+        };
+        out.extend(
+            (0..3)
+                .filter(|&k| d[k].abs() <= crate::scene::FACING)
+                .map(|k| (i, k)),
+        );
+    }
+    out
+}
+
+/// Whether the ray from `x` toward the light (against `light`, the direction it travels) runs
+/// within `tol` of one of the `faces` ([`edge_on_faces`]: box, axis), over that face.
+fn along_edge_on_face(
+    scene: &Scene,
+    faces: &[(usize, usize)],
+    x: DVec3,
+    light: DVec3,
+    tol: f64,
+) -> bool {
+    faces.iter().any(|&(i, k)| {
+        let b = &scene.boxes[i];
+        let (o, d) = if b.is_rotated() {
+            let (c, rot) = (b.centre(), b.rotation().inverse());
+            (c + rot * (x - c), rot * -light)
+        } else {
+            (x, -light)
+        };
+        {
+            if (o[k] - b.min[k]).abs() > tol && (o[k] - b.max[k]).abs() > tol {
+                return false;
+            }
+            // The ray, t ≥ 0, over the face's rectangle (the other two axes, widened by tol).
+            let (mut t0, mut t1) = (0.0f64, f64::INFINITY);
+            for j in (0..3).filter(|&j| j != k) {
+                let (lo, hi) = (b.min[j] - tol, b.max[j] + tol);
+                if d[j].abs() < 1e-300 {
+                    if o[j] < lo || o[j] > hi {
+                        return false;
+                    }
+                    continue;
+                }
+                let (p, q) = ((lo - o[j]) / d[j], (hi - o[j]) / d[j]);
+                t0 = t0.max(p.min(q));
+                t1 = t1.min(p.max(q));
+            }
+            t0 <= t1
+        }
+    })
 }
 
 /// The first box face the ray from `x` toward the light (against `light`, the direction it
