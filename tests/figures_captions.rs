@@ -559,6 +559,8 @@ fn lloyd2006_fig4() {
             ("0", N::Given("the plane y = 0")),
             ("12", N::Given("grid lines across")),
             ("12", N::Given("grid lines along")),
+            ("0", N::Given("the map's s, t from 0")),
+            ("1", N::Given("to 1")),
         ],
     );
 }

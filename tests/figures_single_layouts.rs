@@ -164,12 +164,13 @@ fn hemisphere_colour_bars_are_as_tall_as_their_disks() {
     }
 }
 
-/// lloyd2005-fig7 in one column keeps the two-column chart's height for its labels: the
-/// plot's lowest x tick label ("1") lies at least 500 units below the top of the page.
+/// lloyd2005-fig7 in one column stacks its two panels, (a) ξ = 0 over (b) |ξ| = 1, each as
+/// tall as a two-column panel for its labels: (b)'s title lies at least 250 units below (a)'s.
 #[test]
 fn lloyd2005_fig7_keeps_its_height_in_one_column() {
     let s = svg("lloyd2005-fig7", Column::Single);
     assert_eq!(width(&s), 300.0);
-    let (_, y) = text_at(&s, "number of face subdivisions k");
-    assert!(y >= 500.0, "{y}");
+    let (_, a) = text_at(&s, "(a) ξ = 0");
+    let (_, b) = text_at(&s, "(b) |ξ| = 1");
+    assert!(b - a >= 250.0, "(a) at {a}, (b) at {b}");
 }

@@ -9,7 +9,7 @@ mod table;
 
 use super::chart::{
     boxed_text, build_chart_styled, column, equal_aspect, frame, linspace, Axis, Chart2d,
-    ChartStyle, FONT, PALETTE, PANEL_TITLE,
+    ChartStyle, FONT, PALETTE, PANEL_TITLE, SWEEP,
 };
 use super::from_light::{seen_from_light, SEEN_X};
 use super::warp_grid::minus;
@@ -190,18 +190,21 @@ impl Figure for Fig8 {
         let shown = &self.cells[self.shown];
         let caption = if single {
             format!(
-                "Lloyd et al. 2005, Fig. 8: k = {} z-partitions a face, LiSPSM, n = {NEAR}, \
-                 f = {FAR}, θ = {THETA_DEG}°, light {}° up, {}° right of behind. (a) R, L, T, \
-                 N: right, left, top, near face; 1 near, 2 far. (b) {}'s map. (c) Eq 6.",
+                "Lloyd et al. 2005, Fig. 8: k\u{a0}=\u{a0}{} z-partitions a face, LiSPSM, \
+                 n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, θ\u{a0}=\u{a0}{THETA_DEG}°, light \
+                 {}° high, {}° right of behind. (a) R, L, T, N: right, left, top, near face; 1 \
+                 near, 2 far. (b) {}'s map. (c),\u{a0}(d) Eq\u{a0}6.",
                 self.k, LIGHT.0, LIGHT.1, shown.tag,
             )
         } else {
             format!(
-                "Lloyd et al. 2005, Fig. 8: face partitions with k = {} z-partitions each, \
-                 LiSPSM-warped, n = {NEAR}, f = {FAR}, θ = {THETA_DEG}°, light {}° high, {}° right \
-                 of behind. (a) From the light (R, L, T, N: right, left, top, near face; 1 near, 2 \
-                 far). (b) {} and its map's texel grid. (c) The texture by Eq 6, (d) each part's \
-                 share of its width and height and its M_x and M_z over them.",
+                "Lloyd et al. 2005, Fig. 8: face partitions, k\u{a0}=\u{a0}{} z-partitions \
+                 each, LiSPSM, n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, \
+                 θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. (a) From the \
+                 light (R, L, T, N: right, left, top, near face; 1 near, 2 far). (b) {} in its \
+                 map's texels, fitted to a larger frustum (the paper's dashed one). (c) The \
+                 texture by Eq\u{a0}6; (d) a column's width is set by its largest M_x: the other \
+                 parts' M_x/w is lower.",
                 self.k, LIGHT.0, LIGHT.1, shown.tag,
             )
         };
@@ -227,13 +230,14 @@ impl Figure for Fig8 {
         let rows = self.cells.len() as u32 + 2;
         let table_h = TABLE_TOP + rows * table_step(single);
         if single {
-            let (top, rest) = body.split_vertically(bh.saturating_sub(table_h) / 2);
-            let (a, b) = top.split_horizontally(bw * 57 / 100);
-            let (c, table) = rest.split_vertically(bh.saturating_sub(table_h) / 2);
+            // (a) across the column, so that the tags of the parts at the apex find room in
+            // one row under it; (b) and (c) side by side under it; the table last.
+            let panels = bh.saturating_sub(table_h);
+            let (a, rest) = body.split_vertically(panels * 52 / 100);
+            let (bc, table) = rest.split_vertically(panels - panels * 52 / 100);
+            let (b, c) = bc.split_horizontally(bw * 45 / 100);
             self.draw_faces(&a, &style)?;
             self.draw_warp(&b, &style)?;
-            let (cw, _) = c.dim_in_pixel();
-            let c = c.margin(0, 0, cw / 8, cw / 8);
             self.draw_texture(&c, &texture_style)?;
             self.draw_table(&table, single)
         } else {
@@ -354,8 +358,9 @@ impl Fig8 {
         let gap = 6.0 * per_px;
         let mut xs: Vec<f64> = Vec::with_capacity(outside.len());
         for (k, (mid, hw, _)) in outside.iter().enumerate() {
+            // Clear of the frame: a tag at the left end touched the y axis.
             let low = match k {
-                0 => xa.min + hw,
+                0 => xa.min + hw + gap,
                 _ => xs[k - 1] + outside[k - 1].1 + gap + hw,
             };
             xs.push(mid.x.max(low));
@@ -363,7 +368,7 @@ impl Fig8 {
         for k in (0..xs.len()).rev() {
             let high = match outside.get(k + 1) {
                 Some(next) => xs[k + 1] - next.1 - gap - outside[k].1,
-                None => xa.max - outside[k].1,
+                None => xa.max - outside[k].1 - gap,
             };
             xs[k] = xs[k].min(high);
         }
@@ -416,9 +421,10 @@ impl Fig8 {
                     apply(&to_light, DVec2::new(a.0, a.1)),
                     apply(&to_light, DVec2::new(b.0, b.1)),
                 );
+                // A sweep colour: the grid is no scheme (PSM's blue).
                 chart.draw_series(LineSeries::new(
                     [(p.x, p.y), (q.x, q.y)],
-                    PALETTE[0].stroke_width(1),
+                    SWEEP[1].stroke_width(1),
                 ))?;
             }
         }
@@ -630,6 +636,39 @@ mod tests {
             let via = apply(&h, DVec2::new(-x.dot(corner), z.dot(corner)));
             assert!((via - direct).length() < 1e-9, "{via} vs {direct}");
             assert!(direct.abs().max_element() <= 1.0 + 1e-9);
+        }
+    }
+
+    /// Figure review 2: both captions name all four panels, the two-column one saying why
+    /// (b)'s map reaches past R2 and why (d)'s errors after allocation differ within a column;
+    /// read back from the SVGs' caption lines (#323232), at most five in each.
+    #[test]
+    fn captions_explain_b_and_d() {
+        use super::super::chart::read_svg::{draw_svg, visible};
+        use super::super::chart::with_page;
+        let fig = fig8().map_err(|e| e.named("lloyd2005-fig8")).unwrap();
+        for column in [Column::Double, Column::Single] {
+            let size = match column {
+                Column::Double => fig.size(),
+                Column::Single => fig.single_size().unwrap(),
+            };
+            let svg = with_page(false, column, || {
+                draw_svg(size, |area| fig.draw(area).unwrap())
+            });
+            let lines: Vec<String> = svg
+                .lines()
+                .filter(|l| l.contains("fill=\"#323232\""))
+                .map(visible)
+                .collect();
+            assert!((1..=5).contains(&lines.len()), "{column:?}: {lines:?}");
+            let text = lines.join(" ").replace('\u{a0}', " ");
+            for p in ["(a)", "(b)", "(c)", "(d)"] {
+                assert!(text.contains(p), "{column:?}: no {p} in {text}");
+            }
+            if column == Column::Double {
+                assert!(text.contains("larger frustum"), "{text}");
+                assert!(text.contains("largest M"), "{text}");
+            }
         }
     }
 }

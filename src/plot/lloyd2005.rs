@@ -439,7 +439,13 @@ mod tests {
             names.iter().all(|&y| y > ticks_y),
             "legend at {names:?}, x ticks at {ticks_y}"
         );
-        for (name, f) in [("fig4", fig), ("fig7", fig7().ok().unwrap())] {
+        for (name, f) in [
+            ("fig4", fig),
+            (
+                "fig7",
+                fig7().map_err(|e| e.named("lloyd2005-fig7")).unwrap(),
+            ),
+        ] {
             let size = f.single_size().unwrap();
             let svg = with_page(false, Column::Single, || {
                 draw_svg(size, |area| f.draw(area).unwrap())

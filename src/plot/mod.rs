@@ -141,9 +141,9 @@ pub const FIGURES: &[&str] = &[
 ];
 
 /// The figures that have a single-column layout ([`Column::Single`]), their panels stacked:
-/// all but lloyd2006-fig4 (eight equal-aspect panels need about 990 units of height at 300
-/// wide) and lloyd2006-fig10 (its direct labels do not yet find room there), which are refused
-/// in one column with [`PlotError::InvalidOption`].
+/// all but lloyd2006-fig10 (its direct labels do not yet find room there), which is refused in
+/// one column with [`PlotError::InvalidOption`]; lloyd2006-fig4 as four rows of two panels
+/// sharing their axes.
 pub const SINGLE_COLUMN: &[&str] = &[
     "lloyd2005-fig4",
     "lloyd2006-fig5",
@@ -160,6 +160,7 @@ pub const SINGLE_COLUMN: &[&str] = &[
     "lloyd2005-fig7",
     "zhang-fig3",
     "lloyd2006-fig13",
+    "lloyd2006-fig4",
 ];
 
 /// What went wrong while rendering a figure.

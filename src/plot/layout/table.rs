@@ -12,6 +12,9 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+/// The gap between a row's swatch and its tag (7 units: the tag touched a swatch 4 away).
+const SWATCH_GAP: i32 = 7;
+
 /// The gap above the table's first line, under the panels above it.
 pub(super) const TABLE_TOP: u32 = 6;
 
@@ -65,10 +68,11 @@ impl Fig8 {
             "M_x",
             "M_z",
             "share w × h",
-            "after: M_x/w × M_z/h",
+            "error after",
         ];
+        // One column leaves out the face and depths (the tags say them).
         let keep: &[usize] = if single {
-            &[0, 4, 5]
+            &[0, 2, 3, 4, 5]
         } else {
             &[0, 1, 2, 3, 4, 5]
         };
@@ -86,7 +90,7 @@ impl Fig8 {
                 w = w.max(measure(&r[j])?);
             }
             if j == 0 {
-                w += swatch.0 + 4;
+                w += swatch.0 + SWATCH_GAP;
             }
             widths.push(w);
         }
@@ -102,14 +106,14 @@ impl Fig8 {
         }
         let top = TABLE_TOP as i32;
         let title = if single {
-            "(d) Eq 6's shares w × h, the error after"
+            "(d) Eq 6's shares w × h; error after: M_x/w × M_z/h"
         } else {
-            "(d) Eq 6's shares w × h of the texture's width and height, and the error after them"
+            "(d) Eq 6's shares w × h of the texture; error after allocation: M_x/w × M_z/h"
         };
         area.draw(&Text::new(title, (left, top), text.clone()))?;
         let grey = RGBColor(90, 90, 90);
         for (k, &j) in keep.iter().enumerate() {
-            let at = xs[k] + if j == 0 { swatch.0 + 4 } else { 0 };
+            let at = xs[k] + if j == 0 { swatch.0 + SWATCH_GAP } else { 0 };
             area.draw(&Text::new(head[j], (at, top + step), text.color(&grey)))?;
         }
         let rule = top + 2 * step - 3;
@@ -150,7 +154,7 @@ impl Fig8 {
                 RGBColor(60, 60, 60).stroke_width(1),
             ))?;
             for (k, &j) in keep.iter().enumerate() {
-                let at = xs[k] + if j == 0 { swatch.0 + 4 } else { 0 };
+                let at = xs[k] + if j == 0 { swatch.0 + SWATCH_GAP } else { 0 };
                 area.draw(&Text::new(row[j].clone(), (at, y), text.clone()))?;
             }
         }
@@ -226,8 +230,55 @@ mod tests {
         assert!(
             texts(&svg)
                 .iter()
-                .any(|(_, t, _)| t.replace('_', "") == "after: Mx/w × Mz/h"),
+                .any(|(_, t, _)| t.replace('_', "").ends_with("allocation: Mx/w × Mz/h")),
             "{svg}"
         );
+    }
+
+    /// Figure review 2: a row's tag stands at least 6 units right of its swatch (it touched
+    /// it: "▨R1"), in both layouts; and the one-column table keeps M_x and M_z (it dropped
+    /// them), read back from the SVG: the swatch outlines (#3C3C3C) and the tags' x, and the
+    /// printed M_x of R1 (1.48) and M_z of L1 (0.42) found in either table.
+    #[test]
+    fn tags_clear_their_swatches_and_one_column_keeps_m_x_and_m_z() {
+        use crate::plot::chart::read_svg::{attr, draw_svg, texts};
+        let fig = fig8().map_err(|e| e.named("lloyd2005-fig8")).unwrap();
+        for (single, size) in [(false, (520, 170)), (true, (300, 170))] {
+            let svg = draw_svg(size, |area| fig.draw_table(area, single).unwrap());
+            let swatches: Vec<(f64, f64, f64)> = svg
+                .lines()
+                .filter(|l| l.starts_with("<rect") && l.contains("stroke=\"#3C3C3C\""))
+                .map(|l| {
+                    let (x, y) = (attr(l, "x").unwrap(), attr(l, "y").unwrap());
+                    (
+                        x + attr(l, "width").unwrap(),
+                        y,
+                        y + attr(l, "height").unwrap(),
+                    )
+                })
+                .collect();
+            assert_eq!(swatches.len(), fig.cells.len());
+            let all = texts(&svg);
+            for (line, t, y) in &all {
+                if fig.cells.iter().any(|c| c.tag == *t) {
+                    let x = attr(line, "x").unwrap();
+                    let beside = swatches
+                        .iter()
+                        .find(|s| s.1 <= y + 8.0 && *y <= s.2)
+                        .unwrap_or_else(|| panic!("{t} at {y}: no swatch"));
+                    assert!(
+                        x - beside.0 >= 6.0,
+                        "single {single}: {t} at {x}, swatch to {}",
+                        beside.0
+                    );
+                }
+            }
+            for v in ["1.48", "0.42"] {
+                assert!(
+                    all.iter().any(|(_, t, _)| t == v),
+                    "single {single}: no {v}"
+                );
+            }
+        }
     }
 }
