@@ -238,3 +238,78 @@ fn martin_tan_fig3_legend_is_under_all_panels() {
         }
     }
 }
+
+/// In martin-tan-fig3's (a) the boxes are drawn beside T where their sides lie on T's (the
+/// review: B's right side on T's made a blue and pink stripe; the axis-aligned box's top was
+/// hidden under T's): every piece of B's dashes (olive #96961E) and of the axis-aligned box's
+/// dots (grey #5A5A5A, 2 units wide) that runs along a side of T's outline (black, 2 units wide,
+/// closed: five points, the widest such, (b)'s map square being another) keeps at least 2 units
+/// from it, and each box has such pieces.
+#[test]
+fn martin_tan_fig3_boxes_run_beside_the_trapezoid() {
+    let svg = render_svg("martin-tan-fig3", &options(Column::Double, false));
+    let lines = |colour: &str| -> Vec<Vec<(f64, f64)>> {
+        svg.lines()
+            .filter(|l| {
+                l.starts_with("<polyline")
+                    && l.contains(&format!("stroke=\"{colour}\""))
+                    && l.contains("stroke-width=\"2\"")
+            })
+            .map(|l| {
+                let at = l.find("points=\"").unwrap() + 8;
+                l[at..at + l[at..].find('"').unwrap()]
+                    .split_whitespace()
+                    .map(|p| {
+                        let (x, y) = p.split_once(',').unwrap();
+                        (x.parse().unwrap(), y.parse().unwrap())
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    // T's outline in (a): the widest closed black outline ((b)'s map square is one too).
+    let width = |p: &Vec<(f64, f64)>| {
+        let xs = p.iter().map(|q| q.0);
+        xs.clone().fold(f64::NEG_INFINITY, f64::max) - xs.fold(f64::INFINITY, f64::min)
+    };
+    let t = lines("#000000")
+        .into_iter()
+        .filter(|p| p.len() == 5)
+        .max_by(|a, b| width(a).total_cmp(&width(b)))
+        .expect("T's outline");
+    let t = &t;
+    // A piece of a box's stroke running along one of T's sides (within 2° of parallel, its
+    // middle within the side's length): its distance from that side's line.
+    let along = |piece: &[(f64, f64)]| -> Option<f64> {
+        let (p, q) = (piece[0], piece[piece.len() - 1]);
+        let (dx, dy) = (q.0 - p.0, q.1 - p.1);
+        let len = dx.hypot(dy);
+        if len < 1.0 {
+            return None;
+        }
+        let m = (0.5 * (p.0 + q.0), 0.5 * (p.1 + q.1));
+        t.windows(2)
+            .filter_map(|w| {
+                let (a, b) = (w[0], w[1]);
+                let (ex, ey) = (b.0 - a.0, b.1 - a.1);
+                let el = ex.hypot(ey);
+                let sin = (dx * ey - dy * ex).abs() / (len * el);
+                let s = ((m.0 - a.0) * ex + (m.1 - a.1) * ey) / (el * el);
+                (sin < 2f64.to_radians().sin() && (0.0..=1.0).contains(&s))
+                    .then(|| ((m.0 - a.0) * ey - (m.1 - a.1) * ex).abs() / el)
+            })
+            .reduce(f64::min)
+    };
+    for colour in ["#96961E", "#5A5A5A"] {
+        let pieces = lines(colour);
+        assert!(pieces.len() > 10, "{colour}: {} pieces", pieces.len());
+        let beside: Vec<f64> = pieces.iter().filter_map(|p| along(p)).collect();
+        // Both boxes have a side along one of T's: B's right side, the axis box's top.
+        assert!(!beside.is_empty(), "{colour}: no piece along T");
+        let near = beside.iter().copied().fold(f64::INFINITY, f64::min);
+        assert!(
+            near >= 2.0,
+            "{colour}: a piece {near} from T's side along it"
+        );
+    }
+}

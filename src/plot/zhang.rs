@@ -222,12 +222,13 @@ fn double_bar_span() -> f64 {
     f64::from(3 * double_panel_w() + 2 * GAP - 2 * BAR_MARGIN)
 }
 
-/// The width of a plain number written at `size`: DejaVu Sans' digits are 0.636 em, its point
-/// 0.318 em.
+/// The width of a plain number written at `size`: DejaVu Sans' digits advance 1303 of its 2048
+/// units an em (0.636 em), its point 651 (0.318 em).
 fn number_width(t: &str, size: u32) -> f64 {
     t.chars()
-        .map(|c| if c == '.' { 0.318 } else { 0.636 })
+        .map(|c| if c == '.' { 651.0 } else { 1303.0 })
         .sum::<f64>()
+        / 2048.0
         * f64::from(size)
 }
 
@@ -552,7 +553,7 @@ mod tests {
     /// "0, 50" left f unreadable), "0" centred on its tick and "100" ending at the panel's right
     /// edge (centred, it ran under the next panel); the height has its axis title, "height y",
     /// once; every row's first panel of (a) has a y scale, −40, 0, 40; and rows are apart: a
-    /// row's "−40" and the next row's "40" (13 units tall) keep at least 5 units between them
+    /// row's "−40" and the next row's "40" (13 units tall) keep at least 9 units between them
     /// (review: about 4 pt, touching).
     #[test]
     fn depth_reads_0_to_100_the_height_is_named_and_rows_are_apart() {
@@ -591,9 +592,9 @@ mod tests {
         let (top, bottom) = (at("40"), at("−40"));
         assert_eq!((top.len(), bottom.len()), (3, 3), "{top:?} {bottom:?}");
         for r in 0..2 {
-            // Text y is its top (dy 0.76 em is the baseline): the next row's "40" starts at
-            // least 13 + 5 units under this row's "−40".
-            assert!(top[r + 1] - bottom[r] >= 18.0, "{top:?} {bottom:?}");
+            // A tick label's y is its middle: the next row's "40" at least 22 units under this
+            // row's "−40", their 13-unit boxes 9 apart (with rows 4 units apart, 18.7 and 5.7).
+            assert!(top[r + 1] - bottom[r] >= 22.0, "{top:?} {bottom:?}");
         }
     }
 
