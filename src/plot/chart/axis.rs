@@ -80,7 +80,7 @@ pub(crate) struct Axis {
     pub min: f64,
     pub max: f64,
     pub scale: Scale,
-    /// A base-10 axis writes its decades as powers of ten even where plain numbers would do
+    /// A base-10 axis of less than a decade writes its labels as powers of ten (m×10ⁿ) too
     /// ([`Axis::in_powers`]), so that a quantity keeps one format across panels.
     pub powers: bool,
     /// The values labelled, where the automatic choice is not wanted ([`Axis::labelled_at`]).
@@ -155,16 +155,21 @@ impl Axis {
         self
     }
 
-    /// The same axis, its decades written as powers of ten whatever its range.
+    /// The same axis with its labels written as powers of ten (10ⁿ, m×10ⁿ) even where it spans
+    /// less than a decade (which writes plain numbers: 900, 1000, 1200), so that a quantity
+    /// another panel writes in powers keeps that format. An axis of a decade or more writes
+    /// its decades as powers anyway.
     pub fn in_powers(mut self) -> Self {
         self.powers = true;
         self
     }
 
-    /// Whether a base-10 axis writes its decades as plain numbers (1, 10, 100) rather than
-    /// powers of ten.
+    /// Whether a base-10 axis writes its labels as plain numbers (900, 1000, 1200) rather than
+    /// powers of ten: where it spans less than a decade and is not [`Axis::in_powers`].
     pub fn writes_plain(&self) -> bool {
-        self.plain_decades()
+        matches!(self.scale, Scale::Log(b) if (b - 10.0).abs() < 1e-12)
+            && self.labels_mantissas()
+            && !self.powers
     }
 
     /// Data value → axis space; `None` for values the axis cannot show at all (non-finite, or
@@ -272,11 +277,12 @@ impl Axis {
                             }
                         }
                     }
-                    if decades <= 2.0 + 1e-9 {
-                        // Two decades or less: label 2 and 5 as well; less than one decade:
-                        // every mantissa; less than half a decade (a colour bar over one
-                        // panel's own range): 1.2, 1.5 and 2.5 too, so that its upper part has
-                        // labels.
+                    if self.labels_mantissas() || bold.len() < 2 {
+                        // Only the decades are labelled, except on an axis of less than one
+                        // decade: every mantissa; less than half a decade (a colour bar over
+                        // one panel's own range): 1.2, 1.5 and 2.5 too, so that its upper part
+                        // has labels. An axis of a decade or more that holds fewer than two
+                        // decades labels 2 and 5 as well (one label cannot give a scale).
                         let mantissas: &[f64] = if decades < 0.5 - 1e-9 {
                             &[1.2, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]
                         } else if decades < 1.0 - 1e-9 {
@@ -305,22 +311,11 @@ impl Axis {
         }
     }
 
-    /// Whether every labelled decade of a base-10 axis reads well as a plain number (0.01 to
-    /// 1000); otherwise all decades are written as powers of ten, never a mix of both.
-    fn plain_decades(&self) -> bool {
-        !self.powers
-            && self
-                .ticks()
-                .0
-                .iter()
-                .all(|&a| (-2.0 - 1e-9..=3.0 + 1e-9).contains(&a))
-            && self.max <= 1000.0 * (1.0 + 1e-9)
-    }
-
-    /// Whether a base-10 axis labels mantissas between its decades (two decades or less).
+    /// Whether a base-10 axis labels mantissas between its decades: where it spans less than
+    /// one decade.
     fn labels_mantissas(&self) -> bool {
         let (lo, hi) = self.range();
-        hi - lo <= 2.0 + 1e-9
+        hi - lo < 1.0 - 1e-9
     }
 
     /// The label of a tick at axis-space position `a`, negative numbers with the minus sign
@@ -336,23 +331,22 @@ impl Axis {
                 let (lo, hi) = self.range();
                 fmt_linear(a, nice_step((hi - lo) / 8.0))
             }
+            Scale::Log(b) if (b - 10.0).abs() < 1e-12 => {
+                // One rule for every base-10 axis and colour bar: a decade is 10ⁿ, any other
+                // value m×10ⁿ; an axis of less than a decade (its labels mantissas, at most
+                // one decade among them) writes them all as plain numbers (900, 1000, 1200)
+                // unless it is to match a panel in powers ([`Axis::in_powers`]).
+                let v = self.to_data(a);
+                if self.labels_mantissas() && !self.powers {
+                    fmt_times_ten(v)
+                } else {
+                    fmt_power(v)
+                }
+            }
             Scale::Log(b) => {
                 let e = a.round();
-                let ten = (b - 10.0).abs() < 1e-12;
-                if ten && self.labels_mantissas() && !self.plain_decades() {
-                    // Decades and mantissas in one format: 900, 1000, 1200 or 9×10⁵, 10⁶,
-                    // 1.2×10⁶ (never 900 beside 10³).
-                    return fmt_times_ten(self.to_data(a));
-                }
                 if (a - e).abs() < 1e-9 {
-                    let e = e as i64;
-                    if (b - 10.0).abs() < 1e-12 && self.plain_decades() {
-                        fmt_plain(10f64.powi(e as i32))
-                    } else {
-                        format!("{}{}", fmt_plain(b), superscript(e))
-                    }
-                } else if (b - 10.0).abs() < 1e-12 && !self.plain_decades() {
-                    fmt_times_ten(self.to_data(a))
+                    format!("{}{}", fmt_plain(b), superscript(e as i64))
                 } else {
                     fmt_plain(self.to_data(a))
                 }
@@ -425,6 +419,28 @@ pub(crate) fn fmt_times_ten(v: f64) -> String {
     if (-2.0..=3.0).contains(&e) {
         return fmt_plain(v);
     }
+    let m = v / 10f64.powf(e);
+    // Rounding can carry the mantissa to 10.
+    let (m, e) = if (m.abs() * 1000.0).round() >= 10_000.0 {
+        (m / 10.0, e + 1.0)
+    } else {
+        (m, e)
+    };
+    let mant = trim_zeros(&format!("{m:.3}"));
+    if mant == "1" {
+        format!("10{}", superscript(e as i64))
+    } else {
+        format!("{mant}×10{}", superscript(e as i64))
+    }
+}
+
+/// A number as m×10ⁿ with up to four significant digits ("8.652×10⁵", "2.68×10⁻³"), a power of
+/// ten alone as 10ⁿ ("10⁰", "10³"), whatever its size.
+pub(crate) fn fmt_power(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return fmt_plain(v);
+    }
+    let e = v.abs().log10().floor();
     let m = v / 10f64.powf(e);
     // Rounding can carry the mantissa to 10.
     let (m, e) = if (m.abs() * 1000.0).round() >= 10_000.0 {
@@ -559,7 +575,7 @@ mod tests {
         let (bold, light) = a.ticks();
         assert_eq!(bold, vec![0.0, 1.0, 2.0, 3.0, 4.0]);
         assert_eq!(light.len(), 4 * 8 + 5);
-        // One format per axis: 1 … 10⁴ is all powers, 0.1 … 1000 all plain numbers.
+        // One format per axis: 1 … 10⁴ is all powers.
         assert_eq!(a.tick_label(0.0), "10⁰");
         assert_eq!(a.tick_label(3.0), "10³");
         assert_eq!(a.tick_label(4.0), "10⁴");
@@ -588,24 +604,62 @@ mod tests {
         assert_eq!(fmt_times_ten(1999.0), "1999");
         assert_eq!(fmt_times_ten(19990.0), "1.999×10⁴");
         assert_eq!(fmt_times_ten(865.2), "865.2");
+        // A decade or more: its decades only, as powers of ten, however small the numbers
+        // (issue 35: one rule; 0.1 … 1000 used to read 0.1, 1, 10, 100, 1000).
         let plain = Axis::log10("S", 0.1, 1000.0);
-        assert_eq!(plain.tick_label(-1.0), "0.1");
-        assert_eq!(plain.tick_label(3.0), "1000");
-        // A quantity written in powers in one panel keeps them in another (issue 35:
-        // barroso-fig7 (a) 10⁰…10⁴ beside (b) 1, 10, 100).
+        assert_eq!(plain.tick_label(-1.0), "10⁻¹");
+        assert_eq!(plain.tick_label(3.0), "10³");
+        assert!(!plain.writes_plain() && faces.writes_plain());
+        // lloyd2006-fig5's axes, 0.04 to 1.25 (1.49 decades): 10⁻¹ and 10⁰ only (they read
+        // 0.05, 0.1, 0.2, 0.5, 1).
+        let fig5 = Axis::log10("m", 0.04, 1.25);
+        let labels: Vec<String> = fig5.ticks().0.iter().map(|&t| fig5.tick_label(t)).collect();
+        assert_eq!(labels, vec!["10⁻¹", "10⁰"]);
+        // A decade or more holding one decade only (0.3 to 5): 2 and 5 labelled as well, in
+        // powers: 0.5, 1, 2, 5.
+        let one = Axis::log10("m", 0.3, 5.0);
+        let labels: Vec<String> = one.ticks().0.iter().map(|&t| one.tick_label(t)).collect();
+        assert_eq!(labels, vec!["5×10⁻¹", "10⁰", "2×10⁰", "5×10⁰"]);
+        // Less than a decade, chosen labels (lloyd2006-worst-case's ratio, 0.8 to 6): plain.
+        let ratio = Axis::log10("r", 0.8, 6.0).labelled_at(&[1.0, 2.0, 3.0, 5.0]);
+        let labels: Vec<String> = ratio
+            .ticks()
+            .0
+            .iter()
+            .map(|&t| ratio.tick_label(t))
+            .collect();
+        assert_eq!(labels, vec!["1", "2", "3", "5"]);
+        // Less than a decade to match a panel in powers: all in powers.
+        let matched = Axis::log10("S", 865.2, 1999.0).in_powers();
+        let labels: Vec<String> = matched
+            .ticks()
+            .0
+            .iter()
+            .map(|&t| matched.tick_label(t))
+            .collect();
+        assert_eq!(labels, vec!["9×10²", "10³", "1.2×10³", "1.5×10³"]);
+        assert!(!matched.writes_plain());
         let powers = Axis::log10("n′", 0.3, 100.0).in_powers();
-        assert!(plain.writes_plain() && !powers.writes_plain());
         assert_eq!(powers.tick_label(0.0), "10⁰");
         assert_eq!(powers.tick_label(2.0), "10²");
+        // Values off the decades (a colour bar's ends) on an axis of a decade or more: m×10ⁿ
+        // (martin-tan-fig6's bar wrote 0.491 and 0.00268 beside 10⁻¹, 10⁻²).
+        let share = Axis::log10("share", 0.00268, 0.491);
+        assert_eq!(share.tick_label(0.491f64.log10()), "4.91×10⁻¹");
+        assert_eq!(share.tick_label(0.00268f64.log10()), "2.68×10⁻³");
+        assert_eq!(fmt_power(1000.0), "10³");
+        assert_eq!(fmt_power(9.99999e5), "10⁶");
+        assert_eq!(fmt_power(2430.0), "2.43×10³");
         assert_eq!(Axis::log10("S", 1e-6, 1.0).tick_label(-6.0), "10⁻⁶");
         assert_eq!(a.to_axis(100.0), Some(2.0));
         assert_eq!(a.to_axis(0.0), None);
         let five = Axis::log_base("E", 1.0, 625.0, 5.0);
         assert_eq!(five.ticks().0, vec![0.0, 1.0, 2.0, 3.0, 4.0]);
         assert_eq!(five.tick_label(2.0), "5²");
-        // Less than a decade: 2 and 5 are labelled too.
+        // Exactly a decade: its two decades only (2 and 5 were labelled too, up to two
+        // decades).
         let short = Axis::log10("g", 0.1, 1.0);
-        assert_eq!(short.ticks().0.len(), 4);
+        assert_eq!(short.ticks().0, vec![-1.0, 0.0]);
     }
 
     #[test]

@@ -3,6 +3,7 @@
 use super::super::Fail;
 use super::axis::{Axis, Chart2d, Ticked};
 use super::heat::ColourScale;
+use super::page::column;
 use super::raster::Raster;
 use super::FONT;
 use plotters::coord::Shift;
@@ -22,11 +23,11 @@ fn three_digits(v: f64) -> f64 {
 
 /// The labelled ticks of a colour bar (axis space) with their labels: both ends of its range,
 /// written to three significant digits, so that the range can be read off the bar, and the
-/// axis's own ticks (decades on a log scale) that keep clear of the ends (at least 7 % of the
-/// bar from either).
+/// axis's own ticks (decades on a log scale) between them, all in the axis's one format
+/// ([`Axis::tick_label`]). A drawn bar leaves out those too near an end ([`clear_of_ends`]).
 pub(crate) fn colour_bar_ticks(axis: &Axis) -> Vec<(f64, String)> {
     let (lo, hi) = axis.range();
-    let clear = 0.07 * (hi - lo).abs();
+    let eps = 1e-9 * (hi - lo).abs().max(1e-300);
     let end = |a: f64| {
         let v = three_digits(axis.to_data(a));
         (a, axis.tick_label(axis.to_axis(v).unwrap_or(a)))
@@ -36,11 +37,45 @@ pub(crate) fn colour_bar_ticks(axis: &Axis) -> Vec<(f64, String)> {
         axis.ticks()
             .0
             .into_iter()
-            .filter(|&t| (t - lo).abs() >= clear && (t - hi).abs() >= clear)
+            .filter(|&t| (t - lo).abs() > eps && (t - hi).abs() > eps)
             .map(|t| (t, axis.tick_label(t))),
     );
     ticks.push(end(hi));
     ticks
+}
+
+/// The least space between a colour bar's end label and a tick label next to it, in points as
+/// printed (the review found lloyd2006-fig7's "2430" 3 pt from "10³").
+pub(crate) const BAR_END_GAP_PT: f64 = 8.0;
+
+/// The height of a colour bar's tick label, in units: its size 13 is 10.5 units in the SVG,
+/// from the top of a raised exponent to the descent about 1.1 of that.
+const BAR_LABEL_H: f64 = 11.5;
+
+/// `ticks` ([`colour_bar_ticks`]: the two ends first and last) without the inner ones whose
+/// labels come within [`BAR_END_GAP_PT`] of an end's label on a bar `units_per_axis` units long
+/// per unit of axis space (a decade on a log bar), printed `points_per_unit` points a unit.
+pub(crate) fn clear_of_ends(
+    ticks: Vec<(f64, String)>,
+    units_per_axis: f64,
+    points_per_unit: f64,
+) -> Vec<(f64, String)> {
+    let (Some(lo), Some(hi)) = (ticks.first().map(|t| t.0), ticks.last().map(|t| t.0)) else {
+        return ticks;
+    };
+    let least = BAR_LABEL_H + BAR_END_GAP_PT / points_per_unit;
+    let n = ticks.len();
+    ticks
+        .into_iter()
+        .enumerate()
+        .filter(|(i, t)| {
+            *i == 0
+                || *i == n - 1
+                || ((t.0 - lo).abs() * units_per_axis >= least
+                    && (t.0 - hi).abs() * units_per_axis >= least)
+        })
+        .map(|(_, t)| t)
+        .collect()
 }
 
 /// Fills a colour bar with the bands of `scale` as one raster ([`Raster`]): abutting
@@ -84,14 +119,30 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
     scale: &ColourScale,
 ) -> Result<(), Fail> {
     let (lo, hi) = scale.axis.range();
-    let ticks = colour_bar_ticks(&scale.axis);
+    // The bar runs between the chart's margins of 30 units at each end.
+    let length = f64::from(area.dim_in_pixel().1.saturating_sub(60));
+    let ticks = clear_of_ends(
+        colour_bar_ticks(&scale.axis),
+        length / (hi - lo).abs().max(1e-300),
+        column().points_per_unit(),
+    );
     let yb: Vec<f64> = ticks.iter().map(|t| t.0).collect();
+    // The labels' side: tick, gap, the widest label and the name (14 units across, turned),
+    // at least 62 units, leaving the bar at least 8.
+    let label_style = TextStyle::from((FONT, 13).into_font());
+    let mut widest = 0u32;
+    for t in &ticks {
+        widest = widest.max(area.estimate_text_size(&t.1, &label_style)?.0);
+    }
+    let side = (widest + 2 * COLOUR_BAR_TICK as u32 + 26)
+        .max(62)
+        .min(area.dim_in_pixel().0.saturating_sub(14));
     let mut chart = ChartBuilder::on(area)
         .margin_top(30)
         .margin_bottom(30)
         .margin_right(6)
         .y_label_area_size(0)
-        .right_y_label_area_size(62)
+        .right_y_label_area_size(side)
         .build_cartesian_2d(
             Ticked::new(0.0, 1.0, vec![], vec![]),
             Ticked::new(lo, hi, yb.clone(), vec![]),
@@ -171,9 +222,39 @@ mod tests {
 
     /// A colour bar's ends are labelled (issue 25: Fig 7's shared bar, 865 … 4.7·10⁶, had no
     /// tick at its top): the bar of Fig 7's range, read back from its SVG, has the labels
-    /// "865" and "4.74×10⁶" (three significant digits) level with its bottom and top edges, and
-    /// the decades between them that keep clear of the ends (10³ lies 0.06 decades from 865:
-    /// left out; 10⁴, 10⁵, 10⁶ labelled).
+    /// "8.65×10²" and "4.74×10⁶" (three significant digits, in powers as the decades are) level
+    /// with its bottom and top edges, and the decades between them that keep clear of the ends
+    /// (the bar is 440 units over 3.74 decades, 118 a decade: 10³ lies 0.06 decades, 7 units,
+    /// from 865: left out; 10⁴, 10⁵, 10⁶ labelled, 10⁶ 0.68 decades, 79 units, from the top).
+    /// lloyd2006-fig7's ratio bar, 1 to 2430 (3.386 decades): on a bar 132 units long (39.0
+    /// units a decade) 10³ lies log 2.43 = 0.386 decades, 15.0 units, from the end label
+    /// "2.43×10³": under a label's height (11.5) and 8 pt (8 units in two columns, 10 in one),
+    /// so it is left out, as the review asked (it was 3 pt from "2430"); 10¹ and 10², 39 and
+    /// 78 units from the bottom, stay. On a bar 300 units long (88.6 a decade, 34.2 units)
+    /// 10³ stays. The ends are never dropped.
+    #[test]
+    fn a_decade_next_to_an_end_label_is_left_out() {
+        let axis = Axis::log10("(b) ÷ (c)", 1.0, 2430.0);
+        let ticks = colour_bar_ticks(&axis);
+        let labels = |t: &[(f64, String)]| t.iter().map(|t| t.1.clone()).collect::<Vec<_>>();
+        assert_eq!(labels(&ticks), ["10⁰", "10¹", "10²", "10³", "2.43×10³"]);
+        let per = |length: f64| length / 2430f64.log10();
+        for ppu in [1.0, 0.8] {
+            assert_eq!(
+                labels(&clear_of_ends(ticks.clone(), per(132.0), ppu)),
+                ["10⁰", "10¹", "10²", "2.43×10³"]
+            );
+            assert_eq!(
+                labels(&clear_of_ends(ticks.clone(), per(300.0), ppu)),
+                labels(&ticks)
+            );
+        }
+        // 20 units from the end: clear in two columns (19.5 needed), not in one (21.5).
+        let l = 20.0 / 2.43f64.log10();
+        assert_eq!(clear_of_ends(ticks.clone(), l, 1.0).len(), 5);
+        assert_eq!(clear_of_ends(ticks.clone(), l, 0.8).len(), 4);
+    }
+
     #[test]
     fn colour_bar_labels_its_ends() {
         let scale = ColourScale::smooth(Axis::log10("S", 865.159, 4.7354e6));
@@ -193,7 +274,7 @@ mod tests {
                 .and_then(|l| attr(l, "y"))
         };
         let hi = label_y("4.74×10⁶").unwrap_or_else(|| panic!("no label at the top: {svg}"));
-        let lo = label_y("865").expect("a label at the bottom");
+        let lo = label_y("8.65×10²").expect("a label at the bottom");
         assert!(
             (hi - top).abs() <= 1.0 && (lo - bottom).abs() <= 1.0,
             "{hi} {lo}"
