@@ -320,7 +320,12 @@ fn column_single_is_240_points_wide_or_refused_by_name() {
     let png = std::fs::read(dir.join("lloyd2006-fig5.png")).unwrap();
     assert_eq!(u32::from_be_bytes(png[16..20].try_into().unwrap()), 600);
     assert_eq!(phys(&png), Some((7087, 7087, 1)));
-    // lloyd2006-fig4 has one (it was refused): 300 units wide, at most 800 tall (640 pt).
+    // lloyd2006-fig10 has one (it was refused).
+    let (code, _, err) = figures(&dir, &["--only", "lloyd2006-fig10", "--column", "single"]);
+    assert_eq!(code, 0, "{err}");
+    let svg = std::fs::read_to_string(dir.join("lloyd2006-fig10.svg")).unwrap();
+    assert!(svg.contains("viewBox=\"0 0 300 "), "{}", &svg[..80]);
+    // So has lloyd2006-fig4 (it was refused): 300 units wide, at most 800 tall (640 pt).
     let (code, _, err) = figures(&dir, &["--only", "lloyd2006-fig4", "--column", "single"]);
     assert_eq!(code, 0, "{err}");
     let svg = std::fs::read_to_string(dir.join("lloyd2006-fig4.svg")).unwrap();

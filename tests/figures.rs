@@ -277,7 +277,7 @@ fn svg_labels_are_one_text_each_with_tspan_subscripts_and_bars() {
     };
     let mx = find("Mx (maximum 100)");
     assert!(mx.starts_with("M<tspan dy=\""), "{mx}");
-    let s = find("S = Mx Mz (max. 8574)");
+    let s = find("S = Mx Mz (maximum 8574)");
     assert!(
         s.starts_with("<tspan text-decoration=\"overline\">S</tspan>"),
         "{s}"

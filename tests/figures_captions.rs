@@ -391,7 +391,13 @@ fn lloyd2006_fig12() {
             ("1", N::Given("4k + 1 maps")),
             ("21", N::Given("Eq 21")),
             ("45", N::Given("each face at 45°")),
-            ("5.3", N::Given("§5.3")),
+            ("1", N::Given("ZP with one map")),
+            // Unwarped, one map overhead: M_x M_z = (f/n)(f/n − 1)/(2 tan θ).
+            (
+                "8.65×10^{5}",
+                N::Value(r * (r - 1.0) / (2.0 * 30f64.to_radians().tan())),
+            ),
+            ("10^{6}", N::Value(behind_zp(r, 1.0))),
             ("13", N::Value(4.0 * 3.0 + 1.0)),
             ("37.6", N::Value(behind_zp(r, 13.0))),
             ("55.0", N::Value(behind_fp(r, 3.0))),
@@ -417,6 +423,12 @@ fn lloyd2006_fig13() {
             b = m;
         }
     }
+    // The first j = 4k + 1 whose crossover lies above f/n = 10⁶ (the axis's top): where ZP
+    // with j maps and FP+ZP+W with k per face are still unequal at 10⁶, FP+ZP+W being lower.
+    let first_above = (1..=10)
+        .map(|k| (4 * k + 1) as f64)
+        .find(|&j| behind_fp(1e6, (j - 1.0) / 4.0) < behind_zp(1e6, j))
+        .unwrap();
     check(
         "lloyd2006-fig13",
         &[
@@ -430,6 +442,8 @@ fn lloyd2006_fig13() {
             ("1050", N::Value(a.exp())),
             ("12", N::Given("Fig. 12")),
             ("1000", N::Given("Fig. 12's f/n")),
+            ("33", N::Value(first_above)),
+            ("10^{6}", N::Given("the axis's top")),
         ],
     );
 }
@@ -601,6 +615,8 @@ fn lloyd2006_worst_case() {
             ("1000", N::Given("f/n")),
             ("30", N::Given("θ")),
             ("2", N::Given("the sweep's step in degrees")),
+            ("7", N::Given("Fig. 7")),
+            ("1", N::Given("Fig. 7's step in degrees")),
             ("20", N::Given("Eq 20")),
             ("21", N::Given("Eq 21")),
             (

@@ -18,7 +18,7 @@ pub(super) const AZIMUTHS: usize = 180;
 
 /// Fig 7's own grid, every 1° (at 2° its cells showed as steps along the bands of fast
 /// change near the horizon).
-const FIG7_ELEVATIONS: usize = 91;
+pub(super) const FIG7_ELEVATIONS: usize = 91;
 const FIG7_AZIMUTHS: usize = 360;
 
 /// The cells of a sweep: each sample owns the band of elevations and azimuths halfway to its
@@ -62,6 +62,7 @@ pub(super) struct Fig7 {
     ratio: Panel,
     ratio_scale: ColourScale,
     caption: Vec<String>,
+    single_caption: String,
 }
 
 /// The frustum of Fig 7 (the paper does not state it; these are its Fig 12's parameters).
@@ -128,24 +129,39 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let (n, f) = (view.near(), view.far());
     let overhead = (f / n - 1.0) / (2.0 * view.tan_half_fov());
     let caption = vec![format!(
-        "Lloyd et al. 2006, Fig. 7: S̄ = M_x M_z (texels per image pixel) of each scheme's \
-         matrices for light directions {step}° apart (centre overhead; rings at 10°, 20°, 30°, 60° elevation); \
+        "Lloyd et al. 2006, Fig. 7: S̄ = M_x M_z (texels per image pixel), computed from each \
+         scheme's light transform, for light directions {step}° apart (centre overhead; rings at 10°, 20°, 30°, 60° elevation); \
          n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°. (a)–(d) share \
          one log scale; (d) at the n′ of least S̄. Overhead, (b) and (c) are Eq 12's \
          {overhead:.0}.",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     )];
+    // One column: at most five lines.
+    let single_caption = format!(
+        "Lloyd et al. 2006, Fig. 7: S̄ for light directions {step}° apart (centre overhead; \
+         rings at 10°, 20°, 30°, 60°); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+         θ\u{a0}=\u{a0}{theta:.0}°; (d) at the n′ of least S̄.",
+        step = 90 / (FIG7_ELEVATIONS - 1),
+        theta = view.half_fov().to_degrees(),
+    );
     Ok(Fig7 {
         panels,
         scale,
         ratio,
         ratio_scale,
         caption,
+        single_caption,
     })
 }
 
 impl Fig7 {
+    /// The caption, one paragraph.
+    #[cfg(test)]
+    pub(super) fn caption_text(&self) -> String {
+        self.caption.join(" ")
+    }
+
     /// The largest S̄ of panel `k` ((a) 0 … (d) 3).
     #[cfg(test)]
     pub(super) fn panel_max(&self, k: usize) -> f64 {
@@ -164,7 +180,10 @@ impl Figure for Fig7 {
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
-        let caption: Vec<&str> = self.caption.iter().map(String::as_str).collect();
+        let caption: Vec<&str> = match column() {
+            Column::Double => self.caption.iter().map(String::as_str).collect(),
+            Column::Single => vec![self.single_caption.as_str()],
+        };
         let body = frame(
             root,
             "Storage factor over the hemisphere of light directions",

@@ -3,9 +3,10 @@
 
 use super::chart::FONT;
 use super::chart::{
-    build_chart, fmt_plain, frame, linspace, Axis, Charts, LineChart, Look, Marker, Note, Series,
-    PALETTE, SHARED,
+    build_chart, column, fmt_plain, frame, linspace, sweep, Axis, Charts, LineChart, Look, Marker,
+    Note, Series, PALETTE, SHARED,
 };
+use super::keyed::Keyed;
 use super::{Column, Fail, Figure};
 use crate::analytic::eta::{n_prime_from_eta, n_prime_lispsm};
 use crate::analytic::overhead::{max_mx, max_mz, mx, mz, storage_factor};
@@ -24,27 +25,27 @@ const THETA_DEG: f64 = 30.0;
 /// which is what the paper plots: m_x by f (unit resolutions), m_z by (f − n)/(2 tan θ). The
 /// factors are computed from the frustum; m_x and m_z themselves come from
 /// [`crate::analytic::overhead::mx`] and [`crate::analytic::overhead::mz`].
-pub(super) fn fig5() -> Result<Charts, Fail> {
+pub(super) fn fig5() -> Result<Keyed, Fail> {
     let (n, f) = (1.0, 20.0);
     let view = ViewFrustum::new(n, f, 45f64.to_radians())?;
     let res = Resolutions::default();
     let lispsm = n_prime_lispsm(n, f)?;
-    // PSM, LiSPSM and the uniform map in their colours of every figure (Look); the other
-    // parameters in the palette's colours no scheme of the figure has.
+    // PSM, LiSPSM and the uniform map in their colours of every figure (Look); the other n′,
+    // a sweep, in the sweep's colours.
     let warps = [
         (
             NPrime::finite(1.0)?,
             "n′ = n = 1 (PSM)".to_string(),
             Look::Psm.colour(),
         ),
-        (NPrime::finite(2.0)?, "n′ = 2".to_string(), PALETTE[1]),
+        (NPrime::finite(2.0)?, "n′ = 2".to_string(), sweep(0, 3)),
         (
             NPrime::finite(lispsm)?,
             format!("n′ ≈ {lispsm:.2} (LiSPSM)"),
             Look::Lispsm.colour(),
         ),
-        (NPrime::finite(20.0)?, "n′ = 20".to_string(), PALETTE[3]),
-        (NPrime::finite(100.0)?, "n′ = 100".to_string(), PALETTE[5]),
+        (NPrime::finite(20.0)?, "n′ = 20".to_string(), sweep(1, 3)),
+        (NPrime::finite(100.0)?, "n′ = 100".to_string(), sweep(2, 3)),
         (
             NPrime::UNWARPED,
             "n′ = ∞ (uniform)".to_string(),
@@ -53,50 +54,101 @@ pub(super) fn fig5() -> Result<Charts, Fail> {
     ];
     let zs = linspace(n, f, 160);
     let z_factor = (f - n) / (2.0 * view.tan_half_fov());
+    let depth = || Axis::linear("depth z", n, f);
     let mut cx = LineChart::new(
         "(a) x error: m_x(z) / f",
-        Axis::linear("depth z (eye-space units, n = 1)", n, f),
-        // Short enough for a panel shortened by a legend below it (Eq 7's term is in the title).
-        Axis::log10("m_x / f", 0.03, 1.3),
+        depth(),
+        Axis::log10("m_x / f (log scale)", 0.04, 1.25),
     );
     let mut cz = LineChart::new(
         "(b) z error: m_z(z) · 2 tan θ / (f − n)",
-        Axis::linear("depth z (eye-space units, n = 1)", n, f),
-        Axis::log10("m_z · 2 tan θ / (f − n)", 0.03, 1.3),
+        depth(),
+        Axis::log10("m_z · 2 tan θ / (f − n) (log scale)", 0.04, 1.25),
     );
-    cx.legend = SeriesLabelPosition::UpperRight;
-    for (np, label, colour) in &warps {
-        let px = zs
-            .iter()
-            .map(|&z| Ok((z, mx(n, f, *np, z, res)? / f)))
-            .collect::<Result<Vec<_>, crate::Error>>()?;
-        let pz = zs
-            .iter()
-            .map(|&z| Ok((z, mz(&view, *np, z, res)? / z_factor)))
-            .collect::<Result<Vec<_>, crate::Error>>()?;
-        cx.series.push(Series::line(label.clone(), px, *colour));
-        // The lower panel's curves labelled directly at the far plane with their n′ (and with
-        // the upper panel's markers, so that both read in greyscale).
-        let short = label.split(" (").next().unwrap_or(label).to_string();
-        cz.series.push(Series::line(short, pz, *colour).direct());
+    for (i, (np, label, colour)) in warps.iter().enumerate() {
+        let x = |z: f64| Ok((z, mx(n, f, *np, z, res)? / f));
+        let y = |z: f64| Ok((z, mz(&view, *np, z, res)? / z_factor));
+        let line = |g: &dyn Fn(f64) -> Result<(f64, f64), crate::Error>| {
+            zs.iter().map(|&z| g(z)).collect::<Result<Vec<_>, _>>()
+        };
+        // Each curve's shape at three depths of its own (staggered, so that the shapes of
+        // curves that meet do not coincide) and none beyond z = 15, where all of (a) meet.
+        let at: Vec<f64> = FIG5_MARKS.iter().map(|z| z + 0.5 * i as f64).collect();
+        let marks = |g: &dyn Fn(f64) -> Result<(f64, f64), crate::Error>| -> Result<Series, Fail> {
+            let pts = at.iter().map(|&z| g(z)).collect::<Result<Vec<_>, _>>()?;
+            Ok(Series {
+                label: None,
+                ..Series::line("", unjoined(&pts), *colour).with_markers()
+            })
+        };
+        cx.series.push(Series {
+            label: None,
+            ..Series::line("", line(&x)?, *colour)
+        });
+        cx.series.push(marks(&x)?);
+        // The curves labelled once, in (b), at the far plane: the labels name (a)'s curves
+        // of the same colour and shape too. n′ = 100 runs too near n′ = ∞ there for a label
+        // between them: its label goes above it, under n′ = 20, near z = f.
+        let z_line = Series::line(label.clone(), line(&y)?, *colour).reference();
+        if *label == "n′ = 100" {
+            // The note's top left: a little under n′ = 20, which lies at 1.5 times n′ = 100
+            // there (0.1 against 0.066).
+            let own = y(FIG5_NOTE_Z)?.1;
+            cz.notes.push(Note {
+                at: (FIG5_NOTE_Z - 1.5, own * 1.4),
+                text: label.clone(),
+                colour: *colour,
+            });
+            cz.series.push(Series {
+                label: None,
+                ..z_line
+            });
+        } else {
+            cz.series.push(z_line.direct());
+        }
+        cz.series.push(marks(&y)?);
     }
-    Ok(Charts {
-        size: (520, 540),
-        title: "Error distribution along the view frustum, light overhead".into(),
-        caption: vec![format!(
-            "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), n = {n}, f = {f}, unit resolutions: the terms \
-             that vary with z, m_x over f and m_z over (f − n)/(2 tan θ), as the paper plots \
-             them. m_x is largest at z = n; m_z at z = f for n′ ≤ n + √(fn) and at z = n beyond. \
-             The legend of (a) holds for both panels."
-        )],
-        charts: vec![cx, cz],
+    let nb = |t: &str| t.replace(' ', "\u{a0}");
+    Ok(Keyed {
+        page: Charts {
+            size: (520, 540),
+            title: "Error distribution along the view frustum, light overhead".into(),
+            caption: vec![format!(
+                "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), {}, {}: the terms that vary with z, m_x \
+                 over f and m_z over {}, as the paper plots them; the labels in (b) name the \
+                 curves of both panels. m_x is largest at {}; m_z at {} for {} and at {} \
+                 beyond.",
+                nb(&format!("n = {n}")),
+                nb(&format!("f = {f}")),
+                nb("(f − n)/(2 tan θ)"),
+                nb("z = n"),
+                nb("z = f"),
+                nb("n′ ≤ n + √(fn)"),
+                nb("z = n"),
+            )],
+            charts: vec![cx, cz],
+        },
+        key: None,
+        single_caption: Some(format!(
+            "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), {}, {}: the terms of m_x and m_z that vary \
+             with z; the labels in (b) name the curves of (a) too.",
+            nb(&format!("n = {n}")),
+            nb(&format!("f = {f}")),
+        )),
     })
 }
+
+/// The depths of Fig 5 where the first curve carries its marker (each next curve's half a
+/// unit further).
+const FIG5_MARKS: [f64; 3] = [1.8, 4.5, 11.5];
+
+/// The depth near which Fig 5 (b) writes the label of n′ = 100.
+const FIG5_NOTE_Z: f64 = 17.5;
 
 /// Fig 6: M_x, M_z and S̄ against η ∈ [−1, 1] (n = 1, f = 100, θ = 30°, unit resolutions), as
 /// they are, on a logarithmic axis (the paper normalises each to fit one linear scale, which puts
 /// M_x under M_z for η ≤ 0 and the flat S̄ for η ≥ 0 on the x axis).
-pub(super) fn fig6() -> Result<Charts, Fail> {
+pub(super) fn fig6() -> Result<Keyed, Fail> {
     let (n, f) = (1.0, 100.0);
     let view = ViewFrustum::new(n, f, THETA_DEG.to_radians())?;
     let res = Resolutions::default();
@@ -115,72 +167,90 @@ pub(super) fn fig6() -> Result<Charts, Fail> {
     let mut c = LineChart::new(
         "",
         Axis::linear("η (−1: n′ = ∞, 1: n′ = n)", -1.0, 1.0),
-        Axis::log10("M_x, M_z, S̄ (log scale)", 0.5, 2e4),
+        Axis::log10("M_x, M_z, S̄ (log scale)", 0.5, 2e4).in_powers(),
     );
     c.legend = SeriesLabelPosition::LowerLeft;
+    // M_x, M_z and S̄ are quantities of one scheme: a sweep's colours, not schemes'; M_z and S̄
+    // dashed and dotted, so that the lines that meet differ in more than hue.
+    let quantity = |i: usize| sweep(i, 3);
     c.series.push(Series::line(
         format!("M_x (maximum {})", fmt_plain(top_x)),
         m_x,
-        PALETTE[0],
+        quantity(0),
     ));
-    c.series.push(Series::line(
-        format!("M_z (maximum {})", fmt_plain(top_z)),
-        m_z.clone(),
-        PALETTE[1],
-    ));
+    c.series.push(
+        Series::line(
+            format!("M_z (maximum {})", fmt_plain(top_z)),
+            m_z.clone(),
+            quantity(1),
+        )
+        .dashed(),
+    );
     // (b): M_z on a linear axis, where its V (linear in η on each side of 0, App. B) shows.
     let mut v = LineChart::new(
         "(b) M_z, linear: the V",
         c.x.clone(),
-        Axis::linear("M_z (unit resolutions)", 0.0, 1.05 * top_z),
+        Axis::linear("M_z", 0.0, 1.05 * top_z),
     );
     // No legend: the panel's title names its one curve.
     v.series.push(Series {
         label: None,
-        ..Series::line("M_z", m_z, PALETTE[1])
+        ..Series::line("M_z", m_z, quantity(1)).dashed()
     });
     v.legend = SeriesLabelPosition::UpperMiddle;
     c.title = "(a) as they are, logarithmic".into();
     c.series.push(
         Series::line(
-            format!("S̄ = M_x M_z (max. {})", fmt_plain(top_s)),
+            format!("S̄ = M_x M_z (maximum {})", fmt_plain(top_s)),
             s,
-            PALETTE[2],
+            quantity(2),
         )
-        .dashed(),
+        .dotted(),
     );
-    Ok(Charts {
-        size: (520, 540),
-        title: "Maximum error and storage factor against η".into(),
-        caption: vec![format!(
-            "Lloyd et al. 2006, Fig. 6 (Eq 9–12), n = {n}, f = {f}, θ = {theta}°, unit \
-             resolutions. (a) Unlike the paper, which scales each curve to one linear axis, the \
-             values as they are, logarithmic: for η ≤ 0, M_x and M_z run parallel; for η ≥ 0, S̄ \
-             is constant while M_x falls and M_z rises (§4.3). (b) M_z on a linear axis: the \
-             paper's V, least at η = 0.",
-            theta = THETA_DEG
-        )],
-        charts: vec![c, v],
+    let config = format!(
+        "{}, {}, {}°",
+        format!("n = {n}").replace(' ', "\u{a0}"),
+        format!("f = {f}").replace(' ', "\u{a0}"),
+        format!("θ = {THETA_DEG}").replace(' ', "\u{a0}"),
+    );
+    Ok(Keyed {
+        page: Charts {
+            size: (520, 540),
+            title: "Maximum error and storage factor against η".into(),
+            caption: vec![format!(
+                "Lloyd et al. 2006, Fig. 6 (Eq 9–12), {config}, image and shadow map of equal \
+                 resolution. (a) Unlike the paper, which scales each curve to one linear axis, \
+                 the values as they are: for η\u{a0}≤\u{a0}0, M_x and M_z run parallel; for \
+                 η\u{a0}≥\u{a0}0, S̄ is constant while M_x falls and M_z rises (§4.3). (b) M_z \
+                 on a linear axis: the paper's V, least at η\u{a0}=\u{a0}0."
+            )],
+            charts: vec![c, v],
+        },
+        key: Some(0),
+        single_caption: Some(format!(
+            "Lloyd et al. 2006, Fig. 6 (Eq 9–12), {config}: (a) the values as they are (the \
+             paper scales each to one linear axis); (b) M_z, least at η\u{a0}=\u{a0}0."
+        )),
     })
 }
 
 /// Fig 10: S̄ of ZP+W with the light overhead against the number of z-partitions k, for several
-/// f/n, each with the optimal logarithmic S̄ (App. C) it tends to.
-pub(super) fn fig10() -> Result<Charts, Fail> {
+/// f/n (a sweep: [`sweep`]'s colours), each with the optimal logarithmic S̄ (App. C) it tends
+/// to, drawn grey and dashed and given in the key.
+pub(super) fn fig10() -> Result<Keyed, Fail> {
     let theta = THETA_DEG.to_radians();
+    // Both panels over the same k, with the same ticks.
+    let k_axis = || Axis::integer("number of z-partitions k", 1.0, 16.0);
     let mut c = LineChart::new(
-        "(a) S̄; dashed: its optimum",
-        // To k = 20: right of the curves' ends (k = 16) each optimum carries its value.
-        Axis::integer("number of z-partitions k", 1.0, 20.0),
-        Axis::log10("storage factor S̄ (texels per image pixel)", 1.0, 1e4),
+        "(a) S̄, dashed: its optimum",
+        k_axis(),
+        Axis::log10("storage factor S̄ (log scale)", 1.0, 1e4).in_powers(),
     );
-    c.legend = SeriesLabelPosition::UpperRight;
     let mut r = LineChart::new(
         "(b) S̄ over its optimum",
-        Axis::integer("number of z-partitions k", 1.0, 16.0),
-        Axis::log10("S̄ / S̄_{opt}", 0.8, 2000.0),
+        k_axis(),
+        Axis::log10("S̄ / S̄_{opt} (log scale)", 0.8, 2000.0).in_powers(),
     );
-    r.legend = SeriesLabelPosition::UpperRight;
     let mut optima = Vec::new();
     let ratios = [10.0, 100.0, 1000.0, 10_000.0];
     for (i, ratio) in ratios.into_iter().enumerate() {
@@ -194,57 +264,61 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
             })
             .collect::<Result<Vec<_>, crate::Error>>()?;
         let opt = scheme_storage_factor(Scheme::Optimal, SchemeLight::Overhead, &view, 1)?;
-        let label = format!("f/n = {}", fmt_plain(ratio));
-        r.series.push(
-            Series::line(
-                label.clone(),
-                pts.iter().map(|&(k, v)| (k, v / opt)).collect(),
-                PALETTE[i],
-            )
-            .with_markers(),
+        let colour = sweep(i, ratios.len());
+        // A marker on a few k of each line (one on every k ran together into a chain).
+        let label = format!(
+            "f/n\u{a0}=\u{a0}{}, S̄_{{opt}}\u{a0}=\u{a0}{opt:.2}",
+            fmt_plain(ratio)
         );
         c.series
-            .push(Series::line(label, pts, PALETTE[i]).with_markers());
-        // The asymptote, labelled with its value right of the curves' ends (k = 16), where
-        // only the dashed lines run; the legend's last entry says what they are.
-        let asymptote = Series::line(
-            format!("{opt:.2}"),
-            linspace(1.0, 20.0, 77)
-                .into_iter()
-                .map(|k| (k, opt))
-                .collect(),
-            PALETTE[i],
-        )
-        .dashed()
-        .reference()
-        .direct_at(20.0);
-        c.series.push(asymptote);
+            .push(Series::line(label.clone(), pts.clone(), colour));
+        r.series.push(Series::line(
+            label,
+            pts.iter().map(|&(k, v)| (k, v / opt)).collect(),
+            colour,
+        ));
+        // The optimum the curve tends to, grey: its value is in the key.
+        c.series.push(Series {
+            label: None,
+            ..Series::line("", vec![(1.0, opt), (16.0, opt)], SHARED)
+                .dashed()
+                .reference()
+        });
         optima.push(format!("{opt:.2}"));
     }
     c.series.push(
-        Series::line("optimum", Vec::new(), SHARED)
+        Series::line("optimum S̄_{opt}", Vec::new(), SHARED)
             .dashed()
             .reference(),
     );
-    r.series.push(
-        Series::line("optimum", vec![(1.0, 1.0), (16.0, 1.0)], SHARED)
+    r.series.push(Series {
+        label: None,
+        ..Series::line("", vec![(1.0, 1.0), (16.0, 1.0)], SHARED)
             .dashed()
-            .reference(),
-    );
-    Ok(Charts {
-        size: (520, 560),
-        title: "Storage factor of ZP+W against the number of partitions, light overhead".into(),
-        caption: vec![format!(
-            "Lloyd et al. 2006, Fig. 10 (Eq 18, App. C), θ = {THETA_DEG}°: S̄ of ZP+W, \
-             k((f/n)^{{1/k}} − 1)/(2 tan θ), falls with k towards the optimal logarithmic S̄, \
-             ln(f/n)/(2 tan θ) (dashed, its value on it): {} for f/n = {} to {}. (b), not in the \
-             paper, divides each curve by its optimum. The paper plots one frustum it does not \
-             name.",
-            optima.join(", "),
-            fmt_plain(ratios[0]),
-            fmt_plain(ratios[ratios.len() - 1])
-        )],
-        charts: vec![c, r],
+            .reference()
+    });
+    let (lo, hi) = (fmt_plain(ratios[0]), fmt_plain(ratios[ratios.len() - 1]));
+    Ok(Keyed {
+        page: Charts {
+            size: (520, 560),
+            title: "S̄ of ZP+W against the number of z-partitions".into(),
+            caption: vec![format!(
+                "Lloyd et al. 2006, Fig. 10 (Eq 18, App. C), θ\u{a0}=\u{a0}{THETA_DEG}°, light \
+                 overhead: S̄ of ZP+W, k((f/n)^{{1/k}}\u{a0}−\u{a0}1)/(2\u{a0}tan\u{a0}θ), falls \
+                 with k towards the optimal logarithmic S̄_{{opt}}\u{a0}=\u{a0}ln(f/n)/\
+                 (2\u{a0}tan\u{a0}θ) (grey, dashed): {} for f/n\u{a0}=\u{a0}{lo} to {hi}. \
+                 (b), not in the paper, divides each curve by its S̄_{{opt}}. The paper plots \
+                 one frustum it does not name.",
+                optima.join(", "),
+            )],
+            charts: vec![c, r],
+        },
+        key: Some(0),
+        single_caption: Some(format!(
+            "Lloyd et al. 2006, Fig. 10 (Eq 18, App. C), θ\u{a0}=\u{a0}{THETA_DEG}°: S̄ of ZP+W \
+             falls with k towards S̄_{{opt}}\u{a0}=\u{a0}ln(f/n)/(2\u{a0}tan\u{a0}θ) (dashed). \
+             (b), not in the paper: S̄/S̄_{{opt}}."
+        )),
     })
 }
 
@@ -257,7 +331,7 @@ pub(super) fn fig10() -> Result<Charts, Fail> {
 /// The depth ratio f/n of Fig 12.
 const FIG12_RATIO: f64 = 1000.0;
 
-pub(super) fn fig12() -> Result<Charts, Fail> {
+pub(super) fn fig12() -> Result<Keyed, Fail> {
     let ratio = FIG12_RATIO;
     let view = ViewFrustum::new(1.0, ratio, THETA_DEG.to_radians())?;
     // The light-behind crossover: ZP with as many maps as FP+ZP+W with k = 3 and 4 per face.
@@ -270,63 +344,78 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
     );
     let (zp3, fp3) = (behind(Scheme::Zp, j3)?, behind(Scheme::FpZpW, 3)?);
     let (zp4, fp4) = (behind(Scheme::Zp, j4)?, behind(Scheme::FpZpW, 4)?);
-    let mut c = LineChart::new(
-        "",
-        Axis::integer("number of shadow maps", 0.0, 40.0),
-        // To the data: 6.5 (ZP+W at 40 maps) to 10⁶ (ZP behind with one map).
-        Axis::log10("S̄ (texels per image pixel)", 3.0, 3e6),
+    // ZP with one map, far above the rest (10⁶ behind): off the scale, its value written.
+    let zp1 = (
+        scheme_storage_factor(Scheme::Zp, SchemeLight::Overhead, &view, 1)?,
+        behind(Scheme::Zp, 1)?,
     );
-    c.legend = SeriesLabelPosition::UpperRight;
+    let mut c = LineChart::new(
+        "(a) overhead, behind (dashed)",
+        Axis::integer("number of shadow maps", 0.0, 40.0),
+        // To the data from 2 maps on: 6.5 (ZP+W at 40 maps) to 2000 (ZP behind with 2 maps).
+        Axis::log10("S̄ (log scale)", 4.0, 1e4).in_powers(),
+    );
     let schemes = [
         (Scheme::Zp, "ZP", Look::Zp.colour()),
         (Scheme::ZpW, "ZP+W", Look::ZpW.colour()),
         (Scheme::FpZpW, "FP+ZP+W", Look::FpZpW.colour()),
     ];
-    for (light, light_name) in [
-        (SchemeLight::Overhead, "overhead"),
-        (SchemeLight::Behind, "behind"),
-    ] {
-        for (scheme, name, colour) in schemes {
-            if light == SchemeLight::Behind && scheme == Scheme::ZpW {
-                // Equal to ZP behind (a square frustum cannot be warped): one line, one entry.
-                continue;
+    // Behind, ZP+W equals ZP (a square frustum cannot be warped): one line. It comes last, so
+    // that its few markers fall on other counts than ZP overhead's.
+    let series = [
+        (Scheme::Zp, SchemeLight::Overhead),
+        (Scheme::ZpW, SchemeLight::Overhead),
+        (Scheme::FpZpW, SchemeLight::Overhead),
+        (Scheme::FpZpW, SchemeLight::Behind),
+        (Scheme::Zp, SchemeLight::Behind),
+    ];
+    for (scheme, light) in series {
+        let (_, name, colour) = schemes
+            .into_iter()
+            .find(|s| s.0 == scheme)
+            .ok_or_else(|| Fail::Draw(format!("Fig 12 has no {scheme:?}")))?;
+        let light_name = match light {
+            SchemeLight::Behind => "behind",
+            SchemeLight::Overhead => "overhead",
+        };
+        let mut pts = Vec::new();
+        for k in 1..=40usize {
+            let maps = shadow_map_count(scheme, SchemeLight::Behind, k)?;
+            if maps > 40 {
+                break;
             }
-            let mut pts = Vec::new();
-            for k in 1..=40usize {
-                let maps = shadow_map_count(scheme, SchemeLight::Behind, k)?;
-                if maps > 40 {
-                    break;
-                }
-                pts.push((maps as f64, scheme_storage_factor(scheme, light, &view, k)?));
-            }
-            let s = if scheme == Scheme::FpZpW {
-                // Defined only at 4k + 1 maps: markers, not joined across the counts between,
-                // in FP+ZP+W's green of Fig 13 and the worst-case figure for both lights:
-                // triangles overhead, hexagons behind.
-                let shape = match light {
-                    SchemeLight::Overhead => None,
-                    SchemeLight::Behind => Some(Marker::Hexagon),
-                };
-                Series {
-                    width: 3,
-                    shape,
-                    ..Series::line(format!("{name}, {light_name}"), unjoined(&pts), colour)
-                        .with_markers()
-                }
-            } else {
-                // Every count: a line, with a few markers along it (not one per count).
-                // Behind, one curve for two schemes: in the neutral colour of shared curves.
-                let (name, colour) = match light {
-                    SchemeLight::Behind => ("ZP = ZP+W", SHARED),
-                    SchemeLight::Overhead => (name, colour),
-                };
-                Series::line(format!("{name}, {light_name}"), pts, colour)
-            };
-            c.series.push(match light {
-                SchemeLight::Overhead => s,
-                SchemeLight::Behind => s.dashed(),
-            });
+            pts.push((maps as f64, scheme_storage_factor(scheme, light, &view, k)?));
         }
+        let s = if scheme == Scheme::FpZpW {
+            // Defined only at 4k + 1 maps: markers, not joined across the counts between, in
+            // FP+ZP+W's green of Fig 13 and the worst-case figure for both lights: triangles
+            // overhead, hexagons behind.
+            let shape = match light {
+                SchemeLight::Overhead => None,
+                SchemeLight::Behind => Some(Marker::Hexagon),
+            };
+            Series {
+                width: 3,
+                shape,
+                ..Series::line(format!("{name}, {light_name}"), unjoined(&pts), colour)
+                    .with_markers()
+            }
+        } else if light == SchemeLight::Behind {
+            // One curve for two schemes, in the neutral colour of shared curves, dashed and
+            // without markers, as in (b): its key is a line sample.
+            c.series.push(Series {
+                label: None,
+                ..Series::line("", pts, SHARED).dashed()
+            });
+            Series::line("ZP = ZP+W, behind", Vec::new(), SHARED).reference()
+        } else {
+            // Every count: a line, with a few markers along it (not one per count).
+            Series::line(format!("{name}, {light_name}"), pts, colour)
+        };
+        c.series.push(match light {
+            SchemeLight::Overhead => s,
+            SchemeLight::Behind => s.dashed(),
+        });
     }
     // (b): the light-behind crossover enlarged, ZP (equal to ZP+W there) against FP+ZP+W.
     let mut zoom = LineChart::new(
@@ -334,9 +423,8 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
         // Padded by half a count, so that the markers at 11 and 23 maps are whole.
         Axis::integer("number of shadow maps", 10.5, 23.5),
         // The data's range (30.8 at 21 maps to 55.0 at 13), a little padded.
-        Axis::linear("S̄ (texels per image pixel)", 28.0, 58.0),
+        Axis::linear("S̄", 28.0, 58.0),
     );
-    zoom.legend = SeriesLabelPosition::UpperRight;
     for (scheme, name, colour) in [
         (Scheme::Zp, "ZP = ZP+W, behind", SHARED),
         (Scheme::FpZpW, "FP+ZP+W, behind", Look::FpZpW.colour()),
@@ -351,27 +439,22 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
                 ));
             }
         }
-        let pts = if scheme == Scheme::FpZpW {
-            unjoined(&pts)
-        } else {
-            pts
-        };
         if scheme == Scheme::FpZpW {
-            let s = Series::line(name, pts, colour).dashed().with_markers();
+            let s = Series::line(name, unjoined(&pts), colour)
+                .dashed()
+                .with_markers();
             zoom.series.push(Series {
                 width: 3,
                 shape: Some(Marker::Hexagon),
                 ..s
             });
         } else {
-            // ZP without markers (at 17 maps its marker lay under FP+ZP+W's, 38.32 against
-            // 37.99): the line unlabelled, its legend key a line sample; the values are written.
+            // ZP without markers, as in (a) (at 17 maps its marker lay under FP+ZP+W's, 38.32
+            // against 37.99): the values are written.
             zoom.series.push(Series {
                 label: None,
                 ..Series::line(name, pts, colour).dashed()
             });
-            zoom.series
-                .push(Series::line(name, Vec::new(), colour).dashed().reference());
         }
     }
     zoom.notes.push(Note {
@@ -380,19 +463,46 @@ pub(super) fn fig12() -> Result<Charts, Fail> {
         text: format!("{j4} maps: {fp4:.2} < {zp4:.2}"),
         colour: PALETTE[6],
     });
-    c.title = "(a) overhead, behind (dashed)".into();
-    Ok(Charts {
-        size: (520, 560),
-        title: "Storage factor against the number of shadow maps".into(),
-        caption: vec![format!(
-            "Lloyd et al. 2006, Fig. 12 (Eq 17–21), f/n = {ratio}, θ = {THETA_DEG}°. k \
-             z-partitions use k maps, FP+ZP+W 4k + 1 (the side faces and the near face; markers \
-             only). Behind, ZP+W equals ZP (a square frustum is not warped) and FP+ZP+W is Eq 21 \
-             with each face at 45°. (b), not in the paper, enlarges §5.3's crossover: at {j3} maps \
-             ZP is lower ({zp3:.1} against {fp3:.1}), at {j4} FP+ZP+W ({fp4:.2} against {zp4:.2})."
-        )],
-        charts: vec![c, zoom],
+    let nb = |t: &str| t.replace(' ', "\u{a0}");
+    Ok(Keyed {
+        page: Charts {
+            size: (520, 560),
+            title: "Storage factor against the number of shadow maps".into(),
+            caption: vec![format!(
+                "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. k z-partitions use k maps, \
+                 FP+ZP+W {} (markers only). Behind, ZP+W equals ZP (a square frustum is not \
+                 warped); FP+ZP+W is Eq 21, each face at 45°. Off the scale: ZP with 1 map, {} \
+                 ({} behind). (b), not in the paper: at {j3} maps ZP is lower ({zp3:.1} against \
+                 {fp3:.1}), at {j4} FP+ZP+W ({fp4:.2} against {zp4:.2}).",
+                nb(&format!("f/n = {ratio}")),
+                nb(&format!("θ = {THETA_DEG}")),
+                nb("4k + 1"),
+                sci(zp1.0),
+                sci(zp1.1),
+            )],
+            charts: vec![c, zoom],
+        },
+        key: Some(0),
+        single_caption: Some(format!(
+            "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. FP+ZP+W uses {} maps. (b), not in \
+             the paper: at {j4} maps FP+ZP+W is lower ({fp4:.2} against {zp4:.2}).",
+            nb(&format!("f/n = {ratio}")),
+            nb(&format!("θ = {THETA_DEG}")),
+            nb("4k + 1"),
+        )),
     })
+}
+
+/// `v` as a caption prints it: m×10^{e} with three significant digits, or 10^{e} for a power
+/// of ten.
+fn sci(v: f64) -> String {
+    let e = v.log10().floor();
+    let m = v / 10f64.powf(e);
+    if (m - 1.0).abs() < 5e-4 {
+        format!("10^{{{e}}}")
+    } else {
+        format!("{m:.2}×10^{{{e}}}")
+    }
 }
 
 /// Points of a quantity defined only at its own x values (FP+ZP+W at 4k + 1 maps), drawn as
@@ -473,8 +583,10 @@ pub(super) fn fig13() -> Result<Fig13, Fail> {
 const ZP_FILL: RGBColor = Look::Zp.colour();
 const FP_FILL: RGBColor = Look::FpZpW.colour();
 
-/// The spacing of the white diagonal hatching over FP+ZP+W's fill, in units.
-const HATCH: i32 = 10;
+/// The spacing of the white diagonal hatching over FP+ZP+W's fill, in units (coarse, so that
+/// print halftoning keeps it), and its lines' width.
+const HATCH: i32 = 16;
+const HATCH_WIDTH: u32 = 3;
 
 /// Hatches the pixel rectangle `[x0, x1] × [y0, y1]` of `area` (backend units) with white
 /// lines at 45°, [`HATCH`] units apart.
@@ -494,7 +606,10 @@ fn hatch<DB: DrawingBackend>(
         let (a, b) = ((c - h).max(0), c.min(w));
         let p = (x0 + a - bx, y1 - (c - a) - by);
         let q = (x0 + b - bx, y1 - (c - b) - by);
-        area.draw(&PathElement::new(vec![p, q], WHITE.stroke_width(2)))?;
+        area.draw(&PathElement::new(
+            vec![p, q],
+            WHITE.stroke_width(HATCH_WIDTH),
+        ))?;
         c += HATCH;
     }
     Ok(())
@@ -539,7 +654,7 @@ fn fig13_key_rows<DB: DrawingBackend>(
 const KEY_ROW: u32 = 22;
 
 /// Fig 13's key: a swatch of each fill and the crossover dot, each with its meaning, in as few
-/// rows as fit, centred, above the chart (it was two boxes inside the chart, over the fills).
+/// rows as fit, centred, below the chart (it was two boxes inside the chart, over the fills).
 fn draw_fig13_key<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
     let style = TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
     let (w, _) = area.dim_in_pixel();
@@ -598,23 +713,47 @@ impl Figure for Fig13 {
             .copied()
             .find(|p| p.0 == j4)
             .ok_or_else(|| Fail::Draw(format!("Fig 13 has no crossover at {j4} maps")))?;
-        let caption = format!(
-            "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind: z-partitioning (ZP, equal to \
-             ZP+W behind) with j maps against face partitioning with k warped z-partitions per \
-             face, at j = 4k + 1, where both exist: one column per j (the paper draws continuous \
-             regions). FP+ZP+W is lower below the dot (equal S̄), ZP above; at {j} maps the dot \
-             is at f/n = {at:.0}, just above Fig. 12's {FIG12_RATIO}."
-        );
+        // The first j whose crossover lies above the axis (its column is FP+ZP+W's to the top).
+        let above = self
+            .crossover
+            .iter()
+            .find(|p| self.y.to_axis(p.1).is_some_and(|a| a > self.y.range().1))
+            .map(|p| p.0);
+        let beyond = |prefix: &str| match above {
+            Some(j) => format!(
+                "{prefix}from j\u{a0}=\u{a0}{j} on, the dot lies above f/n\u{a0}=\u{a0}{}.",
+                sci(self.y.max)
+            ),
+            None => ".".into(),
+        };
+        let caption = match column() {
+            Column::Double => format!(
+                "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind: z-partitioning (ZP; ZP+W \
+                 equals it behind) with j maps against face partitioning, k warped z-partitions \
+                 per face, at j\u{a0}=\u{a0}4k\u{a0}+\u{a0}1 (one column per j; the paper \
+                 draws regions). FP+ZP+W is lower below the dot (equal S̄), ZP above; at {j} \
+                 maps the dot is at f/n\u{a0}=\u{a0}{at:.0}, just above Fig. 12's \
+                 {FIG12_RATIO}{}",
+                beyond("; ")
+            ),
+            Column::Single => format!(
+                "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind: ZP with j maps against \
+                 FP+ZP+W with j\u{a0}=\u{a0}4k\u{a0}+\u{a0}1, lower below the dot \
+                 ({j} maps: f/n\u{a0}=\u{a0}{at:.0}){}",
+                beyond("; ")
+            ),
+        };
         let body = frame(
             root,
             "Lowest-error partitioning, light behind",
             &[caption.as_str()],
         )?;
-        // The key above the chart, where it covers nothing, in as many rows as it needs.
+        // The key below the chart, where every figure has its key, in as many rows as it needs.
         let rows = fig13_key_rows(&body, body.dim_in_pixel().0 as i32 - 8)?
             .1
             .len() as u32;
-        let (key, plot) = body.split_vertically(KEY_ROW * rows + 8);
+        let h = body.dim_in_pixel().1;
+        let (plot, key) = body.split_vertically(h.saturating_sub(KEY_ROW * rows + 8));
         draw_fig13_key(&key)?;
         let mut chart = build_chart(&plot, "", &self.x, &self.y, true)?;
         let (y0, y1) = self.y.range();

@@ -37,29 +37,78 @@ fn fig13_crossover_equalises_eq20_and_eq21() {
         .all(|w| w[1].1 > w[0].1 && w[1].0 > w[0].0));
 }
 
-/// Fig 13's key covers nothing (issue 25: its two boxes lay over the fills): drawn as the
-/// figure is, into an SVG, every key text lies above the chart's top, the y of its top tick
-/// label 10⁶, and left of nothing drawn in the chart.
+/// Fig 13's key covers nothing (issue 25: its two boxes lay over the fills) and sits below
+/// the chart, where every figure has its key (issue 35 review: it was above): drawn as the
+/// figure is, into an SVG, every key text lies below the x axis's title.
 #[test]
-fn fig13_key_lies_above_the_chart() {
+fn fig13_key_lies_below_the_chart() {
     let fig = fig13().map_err(|e| e.named("lloyd2006-fig13")).unwrap();
     let svg = draw_svg(fig.size(), |area| fig.draw(area).unwrap());
     let texts = texts(&svg);
+    // Not the caption's lines (#323232).
     let y_of = |pred: &dyn Fn(&str) -> bool| -> Vec<f64> {
-        texts.iter().filter(|t| pred(&t.1)).map(|t| t.2).collect()
+        texts
+            .iter()
+            .filter(|t| pred(&t.1) && !t.0.contains("#323232"))
+            .map(|t| t.2)
+            .collect()
     };
-    let top = y_of(&|t| t == "106");
-    assert_eq!(top.len(), 1, "{svg}");
-    for key in ["ZP lowest", "FP+ZP+W lowest"] {
+    let axis = y_of(&|t| t.starts_with("shadow maps j"));
+    assert_eq!(axis.len(), 1, "{svg}");
+    for key in ["ZP lowest", "FP+ZP+W lowest", "equal S"] {
         let ys = y_of(&|t| t.contains(key));
         assert_eq!(ys.len(), 1, "{key}");
         assert!(
-            ys[0] < top[0] - 8.0,
-            "{key} at y {} in the chart (top {})",
+            ys[0] > axis[0] + 8.0,
+            "{key} at y {} above the axis title (y {})",
             ys[0],
-            top[0]
+            axis[0]
         );
     }
+}
+
+/// Fig 13's hatching is coarse enough for print (issue 35 review: lines 10 units apart may
+/// moiré under a halftone): in the SVG, the white 45° lines over the first column (5 maps)
+/// lie at least 14 units apart along x − y (a line x − y = c each) and are 3 units wide.
+#[test]
+fn fig13_hatch_is_coarse() {
+    let fig = fig13().map_err(|e| e.named("lloyd2006-fig13")).unwrap();
+    let svg = draw_svg(fig.size(), |area| fig.draw(area).unwrap());
+    let lines: Vec<(f64, f64, f64)> = svg
+        .lines()
+        .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#FFFFFF\""))
+        .filter_map(|l| {
+            let w = crate::plot::chart::read_svg::attr(l, "stroke-width")?;
+            let at = l.find(" points=\"")? + 9;
+            let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
+                .split(' ')
+                .filter_map(|p| {
+                    let (x, y) = p.split_once(',')?;
+                    Some((x.parse().ok()?, y.parse().ok()?))
+                })
+                .collect();
+            let (a, b) = (pts.first()?, pts.last()?);
+            // 45°: x − y the same at both ends (within a unit's rounding).
+            (((a.0 - a.1) - (b.0 - b.1)).abs() <= 1.5).then_some((a.0.min(b.0), a.0 - a.1, w))
+        })
+        .collect();
+    // The first column of the chart: the lines starting left of its right edge, about 30
+    // units right of the leftmost line.
+    let left = lines.iter().map(|l| l.0).fold(f64::INFINITY, f64::min);
+    let mut c: Vec<f64> = lines
+        .iter()
+        .filter(|l| l.0 < left + 20.0)
+        .map(|l| l.1)
+        .collect();
+    c.sort_by(f64::total_cmp);
+    assert!(c.len() >= 3, "{c:?}");
+    for w in c.windows(2) {
+        assert!(w[1] - w[0] >= 14.0, "hatch lines {} apart", w[1] - w[0]);
+    }
+    assert!(
+        lines.iter().all(|l| l.2 >= 3.0),
+        "a hatch line thinner than 3"
+    );
 }
 
 /// Fig 5 at LiSPSM's n′ = 1 + √20: the z-error term is equal on the near and far planes,
@@ -67,14 +116,15 @@ fn fig13_key_lies_above_the_chart() {
 #[test]
 fn fig5_lispsm_curve_by_hand() {
     let fig = fig5().map_err(|e| e.named("lloyd2006-fig5")).unwrap();
-    let z_curve = &fig.charts[1].series[2].points;
+    // Each n′ has its line and its markers: LiSPSM, the third, is series 4.
+    let z_curve = &fig.page.charts[1].series[4].points;
     let g0 = 1.0 / 20f64.sqrt();
     assert!((z_curve[0].1 - g0).abs() < 1e-12);
     assert!((z_curve.last().unwrap().1 - g0).abs() < 1e-12);
     let np = 1.0 + 20f64.sqrt();
     // The left panel is Eq 7's last term (n′ + z − n)/(z(n′ + f − n)), without the factor f:
     // np/(np + 19) at z = n and 1/20 at z = f for every n′.
-    let x_curve = &fig.charts[0].series[2].points;
+    let x_curve = &fig.page.charts[0].series[4].points;
     assert!((x_curve[0].1 - np / (np + 19.0)).abs() < 1e-12);
     assert!((x_curve.last().unwrap().1 - 0.05).abs() < 1e-12);
 }
@@ -89,13 +139,13 @@ fn fig5_lispsm_curve_by_hand() {
 fn fig6_m_z_is_smallest_at_eta_zero_and_equal_at_both_ends() {
     let fig = fig6().map_err(|e| e.named("lloyd2006-fig6")).unwrap();
     let c = 99.0 / (2.0 * 30f64.to_radians().tan());
-    let m_z = &fig.charts[0].series[1].points;
+    let m_z = &fig.page.charts[0].series[1].points;
     let (first, last) = (m_z[0].1, m_z.last().unwrap().1);
     assert!((first - c).abs() < 1e-9 * c && (last - c).abs() < 1e-9 * c);
-    let m_x = &fig.charts[0].series[0].points;
+    let m_x = &fig.page.charts[0].series[0].points;
     assert!((m_x[0].1 - 100.0).abs() < 1e-9 && m_x[0].1 > first);
     assert!((m_x.last().unwrap().1 - 1.0).abs() < 1e-12);
-    let s = &fig.charts[0].series[2].points;
+    let s = &fig.page.charts[0].series[2].points;
     let mid = s.len() / 2;
     assert!(s[mid].0.abs() < 1e-12);
     assert!((s[mid].1 - s.last().unwrap().1).abs() < 1e-9 * s[mid].1);
@@ -108,7 +158,7 @@ fn fig6_m_z_is_smallest_at_eta_zero_and_equal_at_both_ends() {
     assert!((min.1 - c / 10.0).abs() < 1e-9 * c, "{}", min.1);
     // (b), the V on a linear axis: M_z linear in η on each side of 0 (App. B defines η by
     // that interpolation): at η = ±0.5 halfway between the minimum c/10 and the end value c.
-    let v = &fig.charts[1];
+    let v = &fig.page.charts[1];
     assert_eq!(v.y.scale, Scale::Linear);
     for p in &v.series[0].points {
         if (p.0.abs() - 0.5).abs() < 1e-12 {
@@ -131,7 +181,7 @@ fn fig6_m_z_is_smallest_at_eta_zero_and_equal_at_both_ends() {
 #[test]
 fn fig12_reaches_the_light_behind_crossover() {
     let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
-    let series = &fig.charts[0].series;
+    let series = &fig.page.charts[0].series;
     let at = |s: usize, maps: f64| {
         series[s]
             .points
@@ -143,19 +193,19 @@ fn fig12_reaches_the_light_behind_crossover() {
     let r = 1000f64;
     let zp = |j: f64| j * r.powf(2.0 / j);
     let fp = |k: f64| 4.0 * k * (r.powf(1.0 / k) - 1.0) / 2.0 + 1.0;
-    // Series 3 is ZP (= ZP+W) behind, 4 FP+ZP+W behind.
+    // Series 4 is ZP (= ZP+W) behind, 3 FP+ZP+W behind.
     for (j, k) in [(13.0, 3.0), (17.0, 4.0)] {
-        assert!((at(3, j) - zp(j)).abs() < 1e-9 * zp(j), "ZP at {j}");
-        assert!((at(4, j) - fp(k)).abs() < 1e-9 * fp(k), "FP at {j}");
+        assert!((at(4, j) - zp(j)).abs() < 1e-9 * zp(j), "ZP at {j}");
+        assert!((at(3, j) - fp(k)).abs() < 1e-9 * fp(k), "FP at {j}");
     }
-    assert!(at(3, 13.0) < at(4, 13.0));
-    assert!(at(3, 17.0) > at(4, 17.0));
+    assert!(at(4, 13.0) < at(3, 13.0));
+    assert!(at(4, 17.0) > at(3, 17.0));
     assert!((fp(4.0) - 37.987).abs() < 0.001 && (zp(17.0) - 38.317).abs() < 0.001);
     // Every ZP curve runs to 40 maps, FP+ZP+W to 4 · 9 + 1 = 37.
-    for s in [0, 1, 3] {
+    for s in [0, 1, 4] {
         assert_eq!(series[s].points.last().unwrap().0, 40.0, "series {s}");
     }
-    assert_eq!(series[4].points.last().unwrap().0, 37.0);
+    assert_eq!(series[3].points.last().unwrap().0, 37.0);
 }
 
 /// Fig 6 (b) has no legend (its one entry, "M_z", repeated the panel's title): no series of
@@ -163,7 +213,7 @@ fn fig12_reaches_the_light_behind_crossover() {
 #[test]
 fn fig6_linear_panel_has_no_legend() {
     let fig = fig6().map_err(|e| e.named("lloyd2006-fig6")).unwrap();
-    let b = &fig.charts[1];
+    let b = &fig.page.charts[1];
     assert!(b.title.contains("M_z"));
     assert!(b.series.iter().all(|s| s.label.is_none()), "{:?}", b.series);
 }
@@ -176,17 +226,23 @@ fn fig6_linear_panel_has_no_legend() {
 #[test]
 fn fig12_one_entry_for_the_coincident_lines_and_a_visible_crossover() {
     let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
-    for chart in &fig.charts {
+    // One key for both panels, (a)'s.
+    for (chart, key) in fig
+        .page
+        .charts
+        .iter()
+        .zip([vec!["ZP = ZP+W, behind"], vec![]])
+    {
         let behind: Vec<&str> = chart
             .series
             .iter()
             .filter_map(|s| s.label.as_deref())
             .filter(|l| l.starts_with("ZP") && l.contains("behind"))
             .collect();
-        assert_eq!(behind, ["ZP = ZP+W, behind"], "{}", chart.title);
+        assert_eq!(behind, key, "{}", chart.title);
         assert!(chart.series.iter().all(|s| s.width <= 3), "{}", chart.title);
     }
-    let zoom = &fig.charts[1];
+    let zoom = &fig.page.charts[1];
     for s in &zoom.series {
         let zp_line = s.colour == PALETTE[0] && !s.points.is_empty();
         assert!(!(zp_line && (s.markers || s.label.is_some())), "{s:?}");
@@ -205,7 +261,7 @@ fn fig12_one_entry_for_the_coincident_lines_and_a_visible_crossover() {
 #[test]
 fn fig12_enlarges_the_crossover() {
     let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
-    let zoom = &fig.charts[1];
+    let zoom = &fig.page.charts[1];
     assert!(zoom.x.min <= 13.0 && zoom.x.max >= 17.0);
     let r = 1000f64;
     let at = |s: usize, maps: f64| {
@@ -217,9 +273,9 @@ fn fig12_enlarges_the_crossover() {
             .1
     };
     assert!((at(0, 17.0) - 17.0 * r.powf(2.0 / 17.0)).abs() < 1e-9);
-    // Series 0 is ZP's line, 1 its legend key, 2 FP+ZP+W.
-    assert!((at(2, 17.0) - (8.0 * (r.powf(0.25) - 1.0) + 1.0)).abs() < 1e-9);
-    assert!(at(0, 13.0) < at(2, 13.0) && at(0, 17.0) > at(2, 17.0));
+    // Series 0 is ZP's line, 1 FP+ZP+W.
+    assert!((at(1, 17.0) - (8.0 * (r.powf(0.25) - 1.0) + 1.0)).abs() < 1e-9);
+    assert!(at(0, 13.0) < at(1, 13.0) && at(0, 17.0) > at(1, 17.0));
     for s in &zoom.series {
         for &(_, v) in s.points.iter().filter(|p| p.1.is_finite()) {
             assert!(v > zoom.y.min && v < zoom.y.max, "{v} outside the window");
@@ -235,7 +291,7 @@ fn fig12_enlarges_the_crossover() {
 fn fig12_face_partitions_are_unjoined_markers() {
     let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
     let mut fp = 0;
-    for chart in &fig.charts {
+    for chart in &fig.page.charts {
         for s in &chart.series {
             let label = s.label.as_deref().unwrap_or("");
             let finite: Vec<f64> = s
@@ -267,38 +323,66 @@ fn fig12_face_partitions_are_unjoined_markers() {
     assert_eq!(fp, 3);
 }
 
-/// Fig 10 (a) labels each curve's optimum (issue 25): drawn into an SVG, the value of
-/// App. C's ln(f/n)/(2 tan 30°) for f/n = 10, 100, 1000, 10⁴ (by hand: 1.99, 3.99, 5.98,
-/// 7.98) is written once in its curve's text colour, level with its dashed line (within 20
-/// units, the label's box, on the panel's log axis read from its 10⁰ and 10⁴ labels).
+/// Fig 10 (issue 35 review): one key for both panels, below them (the same five entries were
+/// in each panel); each f/n's entry gives App. C's optimum ln(f/n)/(2 tan 30°) (by hand 1.99,
+/// 3.99, 5.98, 7.98), and the optima are drawn grey (#5A5A5A), as the key's "optimum" entry
+/// shows them (they were dashed in their curves' colours under a grey key).
 #[test]
-fn fig10_labels_each_optimum() {
+fn fig10_one_key_below_with_each_optimum() {
     let fig = fig10().map_err(|e| e.named("lloyd2006-fig10")).unwrap();
     let svg = draw_svg(fig.size(), |area| fig.draw(area).unwrap());
     let texts = texts(&svg);
-    let first_y = |content: &str| texts.iter().find(|t| t.1 == content).unwrap().2;
-    let (y0, y4) = (first_y("100"), first_y("104"));
+    // The x axes' labels: the key lies under both.
+    let axis: Vec<f64> = texts
+        .iter()
+        .filter(|t| t.1 == "number of z-partitions k")
+        .map(|t| t.2)
+        .collect();
+    assert_eq!(axis.len(), 2, "{svg}");
     let tan = 30f64.to_radians().tan();
-    for (i, ratio) in [10f64, 100.0, 1000.0, 10_000.0].into_iter().enumerate() {
-        let opt = ratio.ln() / (2.0 * tan);
-        let text = format!("{opt:.2}");
-        // Its curve's colour as text: darkened where the line's is too light to read on white.
-        let colour = {
-            let c = crate::plot::chart::legible(PALETTE[i]);
-            format!("fill=\"#{:02X}{:02X}{:02X}\"", c.0, c.1, c.2)
-        };
-        let found: Vec<f64> = texts
-            .iter()
-            .filter(|t| t.1 == text && t.0.contains(&colour))
-            .map(|t| t.2)
-            .collect();
-        assert_eq!(found.len(), 1, "{text} in {colour}");
-        let line = y0 + (y4 - y0) * opt.log10() / 4.0;
-        assert!(
-            (found[0] - line).abs() < 20.0,
-            "{text} at {} for a line at {line}",
-            found[0]
+    for ratio in [10f64, 100.0, 1000.0, 10_000.0] {
+        let want = format!(
+            "f/n\u{a0}=\u{a0}{ratio}, Sopt\u{a0}=\u{a0}{:.2}",
+            ratio.ln() / (2.0 * tan)
         );
+        let found: Vec<f64> = texts.iter().filter(|t| t.1 == want).map(|t| t.2).collect();
+        assert_eq!(found.len(), 1, "{want} once in {texts:#?}");
+        assert!(
+            found[0] > axis[0] && found[0] > axis[1],
+            "{want} above an axis"
+        );
+    }
+    // Every dashed line of (a) without a marker is grey: the optima.
+    let a = &fig.page.charts[0];
+    let optima: Vec<_> = a.series.iter().filter(|s| s.reference).collect();
+    assert_eq!(optima.len(), 5);
+    for s in optima {
+        assert_eq!(s.colour, RGBColor(0x5A, 0x5A, 0x5A), "{:?}", s.label);
+    }
+}
+
+/// Fig 10 (issue 35 review): both panels over the same k (1 to 16: (a) ran to 20, (b) to 16)
+/// with the same ticks; the f/n are a sweep, none in a scheme's colour (f/n = 100 was ZP+W's
+/// vermillion), each with its own marker shape, on a few k only (a marker on each of the 16 ran
+/// into a chain).
+#[test]
+fn fig10_panels_share_k_and_the_sweep_marks_few_points() {
+    use crate::plot::chart::Marker;
+    let fig = fig10().map_err(|e| e.named("lloyd2006-fig10")).unwrap();
+    let (a, b) = (&fig.page.charts[0], &fig.page.charts[1]);
+    assert_eq!((a.x.min, a.x.max), (1.0, 16.0));
+    assert_eq!((b.x.min, b.x.max), (1.0, 16.0));
+    assert_eq!(a.x.ticks(), b.x.ticks());
+    let curves: Vec<_> = a.series.iter().filter(|s| !s.reference).collect();
+    assert_eq!(curves.len(), 4);
+    let mut shapes = Vec::new();
+    for s in &curves {
+        assert!(!PALETTE.contains(&s.colour), "{:?}", s.label);
+        assert!(!s.markers, "{:?}: a marker on every k", s.label);
+        shapes.push(Marker::of(s.colour));
+    }
+    for (i, m) in shapes.iter().enumerate() {
+        assert!(!shapes[..i].contains(m), "{shapes:?}");
     }
 }
 
@@ -308,7 +392,7 @@ fn fig10_labels_each_optimum() {
 #[test]
 fn fig10_ratio_panel_tends_to_one() {
     let fig = fig10().map_err(|e| e.named("lloyd2006-fig10")).unwrap();
-    let ratio = &fig.charts[1];
+    let ratio = &fig.page.charts[1];
     let f1000 = &ratio.series[2].points;
     assert!(
         (f1000[0].1 - 999.0 / 1000f64.ln()).abs() < 1e-9,
@@ -320,20 +404,110 @@ fn fig10_ratio_panel_tends_to_one() {
     }
 }
 
-/// Fig 5's lower panel (issue 25: its curves had neither legend nor markers) labels each
-/// curve directly with the n′ of the upper panel's legend entry of the same colour.
+/// The points of every `<polyline>` of an SVG drawn in `stroke` (a colour as `#RRGGBB`).
+fn polylines(svg: &str, stroke: &str) -> Vec<Vec<(f64, f64)>> {
+    svg.lines()
+        .filter(|l| l.starts_with("<polyline") && l.contains(&format!("stroke=\"{stroke}\"")))
+        .map(|l| {
+            let at = l.find(" points=\"").unwrap() + 9;
+            l[at..at + l[at..].find('"').unwrap()]
+                .split(' ')
+                .filter_map(|p| {
+                    let (x, y) = p.split_once(',')?;
+                    Some((x.parse().ok()?, y.parse().ok()?))
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The centres of every `<polygon>` (a marker) of an SVG.
+fn polygon_centres(svg: &str) -> Vec<(f64, f64)> {
+    svg.lines()
+        .filter(|l| l.starts_with("<polygon"))
+        .filter_map(|l| {
+            let at = l.find(" points=\"")? + 9;
+            let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
+                .split(' ')
+                .filter_map(|p| {
+                    let (x, y) = p.split_once(',')?;
+                    Some((x.parse().ok()?, y.parse().ok()?))
+                })
+                .collect();
+            let n = pts.len() as f64;
+            Some((
+                pts.iter().map(|p| p.0).sum::<f64>() / n,
+                pts.iter().map(|p| p.1).sum::<f64>() / n,
+            ))
+        })
+        .collect()
+}
+
+/// Fig 5 (issue 35 review): one set of labels, in (b), names the curves of both panels (a
+/// legend below repeated them): each of the six n′ is written once; and "n′ = 100" lies nearer
+/// its own curve than n′ = ∞'s (it sat under their crossing, nearer the orange curve): the
+/// distance from its text's centre to each curve's drawn points in the SVG.
 #[test]
-fn fig5_lower_panel_labels_its_curves() {
+fn fig5_labels_once_and_n100_by_its_curve() {
     let fig = fig5().map_err(|e| e.named("lloyd2006-fig5")).unwrap();
-    let (upper, lower) = (&fig.charts[0].series, &fig.charts[1].series);
-    assert_eq!(upper.len(), lower.len());
-    for (u, l) in upper.iter().zip(lower) {
-        let (ul, ll) = (u.label.as_deref().unwrap(), l.label.as_deref().unwrap());
-        assert!(
-            l.direct && ul.starts_with(ll) && u.colour == l.colour,
-            "{ul} / {ll}"
-        );
+    let svg = draw_svg(fig.size(), |area| fig.draw(area).unwrap());
+    let texts = texts(&svg);
+    for label in [
+        "n′ = n = 1 (PSM)",
+        "n′ = 2",
+        "n′ ≈ 5.47 (LiSPSM)",
+        "n′ = 20",
+        "n′ = 100",
+        "n′ = ∞ (uniform)",
+    ] {
+        let n = texts.iter().filter(|t| t.1 == label).count();
+        assert_eq!(n, 1, "{label} written {n} times");
     }
+    let t = texts.iter().find(|t| t.1 == "n′ = 100").unwrap();
+    let x = crate::plot::chart::read_svg::attr(t.0, "x").unwrap();
+    // The text's centre: 30 units right of its start (its width is about 60), half its size
+    // under its top (dy 0.76em sets the top at y).
+    let c = (x + 30.0, t.2 + 5.0);
+    let nearest = |stroke: &str| {
+        // The second curve of the colour: panel (b)'s.
+        let lines = polylines(&svg, stroke);
+        assert_eq!(lines.len(), 2, "{stroke}");
+        lines[1]
+            .iter()
+            .map(|p| (p.0 - c.0).hypot(p.1 - c.1))
+            .fold(f64::INFINITY, f64::min)
+    };
+    let own = nearest("#9589C0");
+    let uniform = nearest("#E69F00");
+    assert!(
+        own < uniform,
+        "n′ = 100 at {own} from its curve, {uniform} from n′ = ∞"
+    );
+}
+
+/// Fig 5 (a) (issue 35 review: seven markers piled up at z = 18–19, where all its curves meet
+/// 0.05): no marker lies right of z = 15, read in the SVG from (a)'s tick labels 15 and 20.
+#[test]
+fn fig5_no_markers_where_the_curves_meet() {
+    let fig = fig5().map_err(|e| e.named("lloyd2006-fig5")).unwrap();
+    let svg = draw_svg(fig.size(), |area| fig.draw(area).unwrap());
+    let texts = texts(&svg);
+    let tick_x = |label: &str| {
+        let mut xs: Vec<f64> = texts
+            .iter()
+            .filter(|t| t.1 == label)
+            .map(|t| crate::plot::chart::read_svg::attr(t.0, "x").unwrap())
+            .collect();
+        xs.sort_by(f64::total_cmp);
+        xs[0]
+    };
+    let (x15, x20) = (tick_x("15"), tick_x("20"));
+    let axis_y = texts.iter().find(|t| t.1 == "15").unwrap().2;
+    let late: Vec<_> = polygon_centres(&svg)
+        .into_iter()
+        .filter(|p| p.0 > x15 + 2.0 && p.0 <= x20 + 6.0 && p.1 < axis_y)
+        .collect();
+    assert!(late.is_empty(), "markers right of z = 15 in (a): {late:?}");
 }
 
 /// Fig 12 gives FP+ZP+W the colour the worst-case figure and Fig 13 give it (issue 35: behind,
@@ -344,7 +518,7 @@ fn fig12_fp_zp_w_is_green_for_both_lights() {
     use crate::plot::chart::Marker;
     let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
     let mut shapes = Vec::new();
-    for chart in &fig.charts {
+    for chart in &fig.page.charts {
         for s in &chart.series {
             if s.label.as_deref().is_some_and(|l| l.starts_with("FP+ZP+W")) {
                 assert_eq!(s.colour, RGBColor(0, 158, 115), "{:?}", s.label);
@@ -357,4 +531,67 @@ fn fig12_fp_zp_w_is_green_for_both_lights() {
         shapes,
         [Marker::TriangleUp, Marker::Hexagon, Marker::Hexagon]
     );
+}
+
+/// Fig 12 (issue 35 review): (a)'s y axis spans the data from 2 maps on (it ran to 10⁶ for
+/// ZP's one map and left the informative data in its bottom third): at most 10⁴, above every
+/// point from 2 maps on (ZP behind with 2 maps, Eq 20: 2 · 1000 = 2000, the largest), below
+/// the least (ZP+W overhead at 40 maps, above 6); the key is written once, under both panels,
+/// and the shared behind curve carries no marker in either panel (circles in (a), none in
+/// (b)): no grey marker in the SVG.
+#[test]
+fn fig12_y_range_to_the_data_and_one_key() {
+    let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
+    let a = &fig.page.charts[0];
+    assert!(a.y.max <= 1e4 && a.y.min >= 1.0, "{:?}", a.y);
+    let mut top: f64 = 0.0;
+    for s in &a.series {
+        for &(j, v) in s.points.iter().filter(|p| p.1.is_finite() && p.0 >= 2.0) {
+            assert!(v > a.y.min && v < a.y.max, "{:?}: {v} at {j} maps", s.label);
+            top = top.max(v);
+        }
+    }
+    assert!((top - 2000.0).abs() < 1e-9, "{top}");
+    let svg = draw_svg(fig.size(), |area| fig.draw(area).unwrap());
+    let texts = texts(&svg);
+    let axis: Vec<f64> = texts
+        .iter()
+        .filter(|t| t.1 == "number of shadow maps")
+        .map(|t| t.2)
+        .collect();
+    assert_eq!(axis.len(), 2);
+    for key in ["FP+ZP+W, behind", "ZP = ZP+W, behind", "ZP, overhead"] {
+        let ys: Vec<f64> = texts.iter().filter(|t| t.1 == key).map(|t| t.2).collect();
+        assert_eq!(ys.len(), 1, "{key}");
+        assert!(ys[0] > axis[0] && ys[0] > axis[1], "{key} above an axis");
+    }
+    assert!(!svg.contains("<polygon fill=\"#5A5A5A\""), "a grey marker");
+}
+
+/// Fig 6 (issue 35 review): its key writes every maximum one way ("maximum", it mixed
+/// "maximum 100" and "max. 8574"), by hand M_x's 100 (f at η = −1), M_z's 99/(2 tan 30°) =
+/// 85.74 and S̄'s 8574; (b)'s axis says "M_z" without implementation words ("unit
+/// resolutions"); the three quantities of one scheme are a sweep (M_x, M_z and S̄ were the
+/// blue, vermillion and green of ZP, ZP+W and FP+ZP+W), and differ in dash too.
+#[test]
+fn fig6_key_in_one_form_and_quantities_as_a_sweep() {
+    let fig = fig6().map_err(|e| e.named("lloyd2006-fig6")).unwrap();
+    let a = &fig.page.charts[0];
+    let labels: Vec<&str> = a.series.iter().filter_map(|s| s.label.as_deref()).collect();
+    let c = 99.0 / (2.0 * 30f64.to_radians().tan());
+    assert_eq!(
+        labels,
+        [
+            "M_x (maximum 100)".to_string(),
+            format!("M_z (maximum {c:.2})"),
+            format!("S̄ = M_x M_z (maximum {:.0})", 100.0 * c),
+        ]
+    );
+    assert_eq!(fig.page.charts[1].y.label, "M_z");
+    let mut dashes = Vec::new();
+    for s in &a.series {
+        assert!(!PALETTE.contains(&s.colour), "{:?}", s.label);
+        assert!(!dashes.contains(&s.dash), "{:?}", s.label);
+        dashes.push(s.dash);
+    }
 }

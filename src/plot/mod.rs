@@ -42,6 +42,7 @@ mod canvas;
 mod chart;
 mod from_light;
 mod hemisphere;
+mod keyed;
 mod layout;
 mod lloyd2005;
 mod lloyd2006;
@@ -141,9 +142,8 @@ pub const FIGURES: &[&str] = &[
 ];
 
 /// The figures that have a single-column layout ([`Column::Single`]), their panels stacked:
-/// all but lloyd2006-fig10 (its direct labels do not yet find room there), which is refused in
-/// one column with [`PlotError::InvalidOption`]; lloyd2006-fig4 as four rows of two panels
-/// sharing their axes.
+/// every figure (lloyd2006-fig4 as four rows of two panels sharing their axes). A name missing
+/// here is refused in one column with [`PlotError::InvalidOption`].
 pub const SINGLE_COLUMN: &[&str] = &[
     "lloyd2005-fig4",
     "lloyd2006-fig5",
@@ -160,6 +160,7 @@ pub const SINGLE_COLUMN: &[&str] = &[
     "lloyd2005-fig7",
     "zhang-fig3",
     "lloyd2006-fig13",
+    "lloyd2006-fig10",
     "lloyd2006-fig4",
 ];
 

@@ -7,13 +7,15 @@
 //! closed form behind ([`crate::analytic::partition::scheme_storage_factor`], Eq 20, 21).
 
 use super::chart::{fmt_plain, Axis, Charts, LineChart, Look, Series, SHARED};
+use super::hemisphere::FIG7_ELEVATIONS;
+use super::keyed::Keyed;
 use super::Fail;
 use crate::analytic::partition::{scheme_storage_factor, Scheme, SchemeLight};
 use crate::maps::WarpRule;
 use crate::scheme::sweep::{sweep, SweepGrid};
 use crate::scheme::Partition;
 use crate::ViewFrustum;
-use plotters::prelude::{RGBColor, SeriesLabelPosition};
+use plotters::prelude::RGBColor;
 
 /// Elevation rows and azimuth columns of each sweep: every 2° of elevation and of azimuth, every
 /// second row and column of Fig 7's 1° grid; the worst case of ZP+W at k = 1, Fig 7's LiSPSM
@@ -36,12 +38,12 @@ const LOOKS: [Look; 3] = [Look::Zp, Look::ZpW, Look::FpZpW];
 /// The grey of the paper's band 2–3 in the ratio panel.
 const BAND: RGBColor = RGBColor(225, 225, 225);
 
-pub(super) fn worst_case() -> Result<Charts, Fail> {
+pub(super) fn worst_case() -> Result<Keyed, Fail> {
     let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians())?;
     let grid = SweepGrid::new(ELEVATIONS, AZIMUTHS)?;
     let k_axis = Axis::integer("number of z-partitions k", 1.0, 8.0);
     let mut abs = LineChart::new(
-        "(a) worst case, and behind",
+        "(a) worst case, and behind (dashed)",
         k_axis.clone(),
         Axis::log10("storage factor S̄ (log scale)", 10.0, 1e7),
     );
@@ -51,8 +53,6 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
         // Labelled at 1 (the light-behind value itself), the band's 2 and 3, and 5.
         Axis::log10("ratio (log scale)", 0.8, 6.0).labelled_at(&[1.0, 2.0, 3.0, 5.0]),
     );
-    abs.legend = SeriesLabelPosition::UpperRight;
-    ratio.legend = SeriesLabelPosition::UpperRight;
     let mut extremes = Vec::new();
     for ((name, scheme, rule, partition), look) in SCHEMES.into_iter().zip(LOOKS) {
         let colour = look.colour();
@@ -71,11 +71,15 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
         });
         extremes.push(ratio_range(name, lo, hi));
         // Behind, ZP+W equals ZP (drawn over it) and FP+ZP+W's worst case is its value
-        // behind: one legend entry each for what shows.
+        // behind: one key entry each for what shows. ZP's worst case lies under ZP+W's for
+        // k ≥ 2 (1.998 against 2.02 to 2.2 times the same value behind): its key says so.
         let (worst_label, behind_label) = match scheme {
-            Scheme::Zp => (format!("{name}, worst (measured)"), None),
+            Scheme::Zp => (
+                format!("{name}, worst (≈ ZP+W's for k\u{a0}≥\u{a0}2)"),
+                None,
+            ),
             Scheme::ZpW => (
-                format!("{name}, worst (measured)"),
+                format!("{name}, worst"),
                 Some("ZP = ZP+W, behind (Eq 20)".to_string()),
             ),
             _ => (format!("{name}, worst = behind"), None),
@@ -91,44 +95,54 @@ pub(super) fn worst_case() -> Result<Charts, Fail> {
             b.colour = SHARED;
         }
         abs.series.push(b);
-        ratio
-            .series
-            .push(Series::line(name.to_string(), r, colour).with_markers());
+        // The key of (a) names the schemes' colours and markers for both panels.
+        ratio.series.push(Series {
+            label: None,
+            ..Series::line(name.to_string(), r, colour).with_markers()
+        });
     }
+    // The paper's band, under the data; its edges are the band's own (ZP's ratio, 1.998, runs
+    // along the lower one); the key, below both panels, is a swatch of its grey.
     ratio.bands.push((2.0, 3.0, BAND));
-    // The band's edges, dotted in black under the data (drawn first: ZP's ratio, 1.998, runs
-    // along the lower edge and is drawn over it), unlabelled; the key is a swatch of the band's
-    // grey (a wide line sample).
-    for v in [3.0, 2.0] {
-        ratio.series.insert(
-            0,
-            Series {
-                label: None,
-                width: 1,
-                ..Series::line("", vec![(1.0, v), (8.0, v)], RGBColor(0, 0, 0))
-                    .dotted()
-                    .reference()
-            },
-        );
-    }
-    ratio.series.push(Series {
+    abs.series.push(Series {
         width: 10,
-        ..Series::line("the paper's 2–3×", Vec::new(), BAND).reference()
+        ..Series::line("the paper's 2–3× (in (b))", Vec::new(), BAND).reference()
     });
-    Ok(Charts {
-        size: (520, 540),
-        title: "The worst light direction against the light behind".into(),
-        caption: vec![format!(
-            "Lloyd et al. 2006, §5.3 (no figure) claims the worst S̄ over all light directions \
-             within 2–3 times the light-behind S̄. f/n = {ratio_fn}, θ = {theta:.0}°: the worst \
-             case measured on each scheme's matrices for lights {step}° apart over \
-             S̄ behind (Eq 20, 21): {}. Behind, ZP+W equals ZP; FP+ZP+W's worst case is behind.",
+    let every = (FIG7_ELEVATIONS - 1) / (ELEVATIONS - 1);
+    let caption = format!(
+        "Lloyd et al. 2006, §5.3 (no figure) claims the worst S̄ over all light directions \
+         within 2–3 times the light-behind S̄. f/n\u{a0}=\u{a0}{ratio_fn}, \
+         θ\u{a0}=\u{a0}{theta:.0}°: the worst case, computed from each scheme's light transform \
+         for lights {step}° apart (every {nth} direction of Fig. 7's {fine}° grid), over S̄ \
+         behind (Eq 20, 21): {}.",
+        extremes.join("; "),
+        ratio_fn = view.far() / view.near(),
+        theta = view.half_fov().to_degrees(),
+        step = 90 / (ELEVATIONS - 1),
+        nth = if every == 2 {
+            "second".to_string()
+        } else {
+            format!("{every}th")
+        },
+        fine = 90 / (FIG7_ELEVATIONS - 1),
+    );
+    Ok(Keyed {
+        page: Charts {
+            size: (520, 540),
+            title: "Worst-case S̄ over light directions against S̄ behind".into(),
+            caption: vec![caption],
+            charts: vec![abs, ratio],
+        },
+        key: Some(0),
+        single_caption: Some(format!(
+            "Lloyd et al. 2006, §5.3 claims the worst S̄ over all light directions within 2–3 \
+             times S̄ behind (Eq 20, 21). f/n\u{a0}=\u{a0}{}, θ\u{a0}=\u{a0}{:.0}°, lights \
+             {}° apart: {}.",
+            view.far() / view.near(),
+            view.half_fov().to_degrees(),
+            90 / (ELEVATIONS - 1),
             extremes.join("; "),
-            ratio_fn = view.far() / view.near(),
-            theta = view.half_fov().to_degrees(),
-            step = 90 / (ELEVATIONS - 1),
-        )],
-        charts: vec![abs, ratio],
+        )),
     })
 }
 
@@ -155,7 +169,7 @@ mod tests {
         let fig = worst_case()
             .map_err(|e| e.named("lloyd2006-worst-case"))
             .unwrap();
-        let abs = &fig.charts[0].series;
+        let abs = &fig.page.charts[0].series;
         for (i, &k) in KS.iter().enumerate() {
             let kf = k as f64;
             let zp = kf * 1000f64.powf(2.0 / kf);
@@ -180,7 +194,7 @@ mod tests {
         let fig = worst_case()
             .map_err(|e| e.named("lloyd2006-worst-case"))
             .unwrap();
-        for chart in &fig.charts {
+        for chart in &fig.page.charts {
             let labelled: Vec<_> = chart.series.iter().filter(|s| s.label.is_some()).collect();
             for (i, a) in labelled.iter().enumerate() {
                 for b in &labelled[..i] {
@@ -193,7 +207,7 @@ mod tests {
                 }
             }
         }
-        let band = &fig.charts[1].bands;
+        let band = &fig.page.charts[1].bands;
         assert_eq!(band.len(), 1);
         assert_eq!((band[0].0, band[0].1), (2.0, 3.0));
     }
@@ -207,7 +221,7 @@ mod tests {
         let fig = worst_case()
             .map_err(|e| e.named("lloyd2006-worst-case"))
             .unwrap();
-        let (abs, ratio) = (&fig.charts[0], &fig.charts[1]);
+        let (abs, ratio) = (&fig.page.charts[0], &fig.page.charts[1]);
         assert!(ratio.y.min >= 0.8 && ratio.y.max <= 6.0, "{:?}", ratio.y);
         // The ratio axis is labelled 1, 2, 3 and 5 only (issue 35: it wrote 0.8, 0.9, 1, 2, 3,
         // 4, 5, 6).
@@ -226,10 +240,10 @@ mod tests {
             }
         }
         let band = ratio.bands[0].2;
-        let key = ratio
+        let key = abs
             .series
             .iter()
-            .find(|s| s.label.as_deref() == Some("the paper's 2–3×"))
+            .find(|s| s.label.as_deref() == Some("the paper's 2–3× (in (b))"))
             .unwrap();
         assert!(key.colour == band && key.width >= 8 && key.points.is_empty());
         // The band and its edges lie under the data (issue 35): the edges are drawn before
@@ -264,7 +278,7 @@ mod tests {
         let fig = worst_case()
             .map_err(|e| e.named("lloyd2006-worst-case"))
             .unwrap();
-        let text = fig.caption.join(" ");
+        let text = fig.page.caption.join(" ");
         let words: Vec<&str> = text
             .split(|c: char| c.is_whitespace() || c == ',' || c == ';')
             .filter(|w| !w.is_empty())
@@ -293,7 +307,7 @@ mod tests {
             .map_err(|e| e.named("lloyd2006-fig7"))
             .unwrap();
         let lispsm = fig7.panel_max(1);
-        let zpw = fig.charts[0].series[2].points[0];
+        let zpw = fig.page.charts[0].series[2].points[0];
         assert_eq!(zpw.0, 1.0);
         assert!(
             (zpw.1 - lispsm).abs() <= 1e-9 * lispsm,
@@ -301,12 +315,68 @@ mod tests {
             zpw.1
         );
         assert!((4.6e6..4.8e6).contains(&lispsm), "{lispsm}");
-        let zpw_ratio = fig.charts[1]
-            .series
-            .iter()
-            .find(|s| s.label.as_deref() == Some("ZP+W"))
-            .unwrap();
+        let zpw_ratio = &fig.page.charts[1].series[1];
+        assert_eq!(zpw_ratio.colour, Look::ZpW.colour());
         let ratio = zpw_ratio.points[0].1;
         assert!((ratio - lispsm / 1e6).abs() < 1e-9, "{ratio}");
+    }
+
+    /// The worst-case caption agrees with Fig 7's (issue 35 review: it said "2° apart (as in
+    /// Fig. 7)" while Fig 7 says 1°): the grid it names as Fig 7's has Fig 7's step, read from
+    /// Fig 7's own caption ("N° apart"), and its own step is a whole multiple of it.
+    #[test]
+    fn caption_names_fig7s_grid_as_fig7_does() {
+        let fig = worst_case()
+            .map_err(|e| e.named("lloyd2006-worst-case"))
+            .unwrap();
+        let fig7 = super::super::hemisphere::fig7()
+            .map_err(|e| e.named("lloyd2006-fig7"))
+            .unwrap();
+        let degrees_before = |text: &str, tail: &str| -> f64 {
+            let at = text
+                .find(tail)
+                .unwrap_or_else(|| panic!("no {tail:?} in {text}"));
+            let head = &text[..at];
+            let digits = head
+                .rfind(|c: char| !c.is_ascii_digit())
+                .map_or(head, |i| &head[i + 1..]);
+            digits.parse().unwrap()
+        };
+        let own = fig.page.caption.join(" ");
+        let theirs = fig7.caption_text();
+        let fig7_step = degrees_before(&theirs, "° apart");
+        assert_eq!(degrees_before(&own, "° grid"), fig7_step, "{own}");
+        let step = degrees_before(&own, "° apart");
+        assert!(step > fig7_step && (step / fig7_step).fract() == 0.0);
+        assert!(own.contains("every second direction of Fig. 7's"), "{own}");
+    }
+
+    /// One key for both panels (issue 35 review: each panel had its own), and it says that
+    /// ZP's worst case lies under ZP+W's for k ≥ 2 (the blue line showed only at k = 1), which
+    /// the data bear out: there ZP's worst case is 85 % to 100 % of ZP+W's.
+    #[test]
+    fn one_key_and_the_hidden_zp_line_named() {
+        let fig = worst_case()
+            .map_err(|e| e.named("lloyd2006-worst-case"))
+            .unwrap();
+        let svg = super::super::chart::read_svg::draw_svg(fig.page.size, |area| {
+            super::super::Figure::draw(&fig, area).unwrap()
+        });
+        let texts = super::super::chart::read_svg::texts(&svg);
+        for scheme in ["ZP,", "ZP+W", "FP+ZP+W"] {
+            // Not the caption's lines (#323232), which may start with a scheme's name.
+            let n = texts
+                .iter()
+                .filter(|t| t.1.starts_with(scheme) && !t.0.contains("#323232"))
+                .count();
+            assert_eq!(n, 1, "{scheme}: {n} key entries");
+        }
+        let abs = &fig.page.charts[0].series;
+        let zp = abs[0].label.as_deref().unwrap();
+        assert!(zp.contains("ZP+W") && zp.contains('2'), "{zp}");
+        for (z, w) in abs[0].points.iter().zip(&abs[2].points).skip(1) {
+            let r = z.1 / w.1;
+            assert!((0.85..=1.0).contains(&r), "k = {}: {r}", z.0);
+        }
     }
 }

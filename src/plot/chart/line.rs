@@ -179,12 +179,6 @@ impl Series {
             shape: None,
         }
     }
-    /// The same series labelled directly at its point at `x` (its right end if it has none).
-    pub fn direct_at(mut self, x: f64) -> Self {
-        self.direct = true;
-        self.direct_at = Some(x);
-        self
-    }
     /// The same series labelled directly at its right end instead of in the legend.
     pub fn direct(mut self) -> Self {
         self.direct = true;
@@ -234,6 +228,9 @@ pub(crate) struct LineChart {
     pub notes: Vec<Note>,
     /// Horizontal bands shaded behind the series: from, to (data units of y), colour.
     pub bands: Vec<(f64, f64, RGBColor)>,
+    /// The legend goes below the plot even where a clear place inside exists (a figure's one
+    /// key under all its panels).
+    pub legend_below: bool,
 }
 
 impl LineChart {
@@ -248,6 +245,7 @@ impl LineChart {
             show_legend: true,
             notes: Vec::new(),
             bands: Vec::new(),
+            legend_below: false,
         }
     }
 }
@@ -545,6 +543,10 @@ fn draw_chart<DB: DrawingBackend>(
                 obstacles.boxes.push(r);
             }
         }
+    }
+    if c.legend_below {
+        // No place inside is clear.
+        obstacles.boxes.push(area);
     }
     for (p, outline, colour) in &markers {
         fill_fine_polygon(&plot, *p, outline, *colour)?;
