@@ -534,7 +534,7 @@ mod tests {
             // 13 rays and 13 planes a panel, 4 panels; each ray in at least 5 dashes.
             assert!(rays >= 5 * 52, "{column:?}: {rays} grey pieces");
             assert!(
-                depths >= 4 * 13 && depths < 2 * 52,
+                (4 * 13..2 * 52).contains(&depths),
                 "{column:?}: {depths} depth lines"
             );
             let all: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
