@@ -261,7 +261,8 @@ mod tests {
     /// line end (of the polylines of ten points, one a k) lies within 30 units right of the
     /// label's end and 30 units of its height, is a different line's for each label, and is
     /// the line the label names (a panel's lines, top to bottom, are α = 10 … 10⁴); and no
-    /// label's box overlaps the bounding box of any marker polygon.
+    /// label's text (its box less the pad) overlaps the bounding box of any marker polygon,
+    /// the markers drawn after (over) the labels' halos.
     #[test]
     fn fig7_labels_sit_at_the_line_ends_clear_of_the_markers() {
         use super::super::chart::read_svg::{attr, draw_svg, visible};
@@ -319,14 +320,38 @@ mod tests {
                     assert!(r.starts_with("<rect"), "{r}");
                     let (x0, y0) = (attr(r, "x").unwrap(), attr(r, "y").unwrap());
                     let (w, h) = (attr(r, "width").unwrap(), attr(r, "height").unwrap());
-                    labels.push((visible(l), attr(l, "x").unwrap(), (x0, y0, x0 + w, y0 + h)));
+                    labels.push((
+                        visible(l),
+                        attr(l, "x").unwrap(),
+                        (x0, y0, x0 + w, y0 + h),
+                        i,
+                    ));
                 }
             }
             assert_eq!(labels.len(), 8, "{column:?}");
-            for (t, _, b) in &labels {
-                for m in &markers {
-                    let apart = b.2 <= m.0 || m.2 <= b.0 || b.3 <= m.1 || m.3 <= b.1;
-                    assert!(apart, "{column:?}: {t}'s box {b:?} covers a marker {m:?}");
+            // No label's text (its box less the pad of 2) covers a marker, and every marker its
+            // halo reaches is drawn (again) after the halo, over it.
+            let polygons: Vec<(usize, &str)> = lines
+                .iter()
+                .enumerate()
+                .filter(|(_, l)| l.starts_with("<polygon"))
+                .map(|(i, l)| (i, *l))
+                .collect();
+            let apart = |b: (f64, f64, f64, f64), m: &(f64, f64, f64, f64)| {
+                b.2 <= m.0 || m.2 <= b.0 || b.3 <= m.1 || m.3 <= b.1
+            };
+            for (t, _, b, at) in &labels {
+                let text = (b.0 + 2.0, b.1 + 2.0, b.2 - 2.0, b.3 - 2.0);
+                for (m, (_, poly)) in markers.iter().zip(&polygons) {
+                    assert!(
+                        apart(text, m),
+                        "{column:?}: {t}'s text covers a marker {m:?}"
+                    );
+                    let over = polygons.iter().any(|(i, p)| i > at && p == poly);
+                    assert!(
+                        apart(*b, m) || over,
+                        "{column:?}: {t}'s halo covers a marker {m:?} drawn under it"
+                    );
                 }
             }
             // Each label by its own line's end: the nearest end lies within 30 units (two
@@ -336,7 +361,7 @@ mod tests {
             // α among the ends at its x, sorted by height.
             let names = ["α = 10", "α = 100", "α = 1000", "α = 104"];
             let mut taken = Vec::new();
-            for (t, x, b) in &labels {
+            for (t, x, b, _) in &labels {
                 let centre = 0.5 * (b.1 + b.3);
                 let near = *ends
                     .iter()
