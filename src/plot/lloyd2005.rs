@@ -72,8 +72,8 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
         // cannot show.
         single_caption: vec![format!(
             "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), α\u{a0}=\u{a0}{alpha}: g for the n of five ξ; \
-             ξ\u{a0}=\u{a0}1: PSM, 0: LiSPSM, −1: uniform. Dotted: the least maximum \
-             g_0\u{a0}=\u{a0}1/√α\u{a0}=\u{a0}{g0:.3}."
+             ξ\u{a0}=\u{a0}1: PSM, 0: LiSPSM, −1: uniform. Dotted: \
+             g_0\u{a0}=\u{a0}1/√α\u{a0}=\u{a0}{g0:.3}, the least\u{a0}maximum."
         )],
         legend_in_single: true,
     })

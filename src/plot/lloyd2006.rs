@@ -131,7 +131,7 @@ pub(super) fn fig5() -> Result<Keyed, Fail> {
         key: None,
         single_caption: Some(format!(
             "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), {}, {}: the terms of m_x and m_z that vary \
-             with z; the labels in (b) name the curves of (a) too.",
+             with z; the labels in (b) also name the curves\u{a0}of\u{a0}(a).",
             nb(&format!("n = {n}")),
             nb(&format!("f = {f}")),
         )),

@@ -32,8 +32,7 @@ pub(crate) use line::*;
 pub(crate) use page::*;
 pub(crate) use raster::{bitmap_density, fit_to_scale};
 pub(crate) use scheme::{Look, SHARED};
-// The figures' sweeps take these; until every figure has moved to them, some builds use none.
-#[allow(unused_imports)]
+// The figures' parameter sweeps (α, ξ, f/n, partitions) take their colours from these.
 pub(crate) use scheme::{sweep, SWEEP};
 
 /// The font family every figure uses; registered from the compiled-in DejaVu Sans.

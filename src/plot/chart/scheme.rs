@@ -68,7 +68,6 @@ pub(crate) const SWEEP: [RGBColor; 5] = [
 ///
 /// Where `n` is 0 or more than [`SWEEP`]'s length, or `i` ≥ `n`: a figure's sweep is fixed by
 /// its code, so that is a mistake in the figure (its tests fail), never a user's input.
-#[allow(dead_code)] // Until a figure draws a sweep with it.
 pub(crate) fn sweep(i: usize, n: usize) -> RGBColor {
     assert!(
         (1..=SWEEP.len()).contains(&n) && i < n,
