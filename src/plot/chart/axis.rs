@@ -419,19 +419,7 @@ pub(crate) fn fmt_times_ten(v: f64) -> String {
     if (-2.0..=3.0).contains(&e) {
         return fmt_plain(v);
     }
-    let m = v / 10f64.powf(e);
-    // Rounding can carry the mantissa to 10.
-    let (m, e) = if (m.abs() * 1000.0).round() >= 10_000.0 {
-        (m / 10.0, e + 1.0)
-    } else {
-        (m, e)
-    };
-    let mant = trim_zeros(&format!("{m:.3}"));
-    if mant == "1" {
-        format!("10{}", superscript(e as i64))
-    } else {
-        format!("{mant}×10{}", superscript(e as i64))
-    }
+    fmt_power(v)
 }
 
 /// A number as m×10ⁿ with up to four significant digits ("8.652×10⁵", "2.68×10⁻³"), a power of
