@@ -874,11 +874,12 @@ fn attr_num(attrs: &str, name: &str) -> Option<f64> {
     rest[..rest.find('"')?].parse().ok()
 }
 
-/// The SVG's elements in order, each as (tag, attributes).
+/// The SVG's elements in order, each its tag and attributes; a text's `tspan`s (a superscript's
+/// raised run) are part of the text, not elements after it.
 fn elements(svg: &str) -> Vec<(&str, &str)> {
     svg.split('<')
         .skip(1)
-        .filter(|e| !e.starts_with('/'))
+        .filter(|e| !e.starts_with('/') && !e.starts_with("tspan"))
         .map(|e| {
             let end = e.find(['>', '/']).unwrap_or(e.len());
             let (tag, attrs) = e[..end].split_once(' ').unwrap_or((&e[..end], ""));
@@ -1065,7 +1066,7 @@ fn storage_factor_is_in_texels_per_image_pixel() {
     for (name, svg) in svgs("figures-units", &names) {
         let all: Vec<String> = texts(&svg).iter().map(|(_, c)| visible(c)).collect();
         assert!(
-            all.iter().any(|t| t.contains("texels per image pixel)")),
+            all.iter().any(|t| t.contains("(texels per image pixel")),
             "{name}: no axis in texels per image pixel"
         );
         // A superscript ² is written as a raised plain digit (a `<tspan>`), so the visible
@@ -1079,7 +1080,7 @@ fn storage_factor_is_in_texels_per_image_pixel() {
 }
 
 /// lloyd2005-fig4 labels each curve directly at its right end (issue 25: direct labels instead
-/// of a legend over the curves), right-aligned, with the minus sign U+2212 in ξ = −0.5 and −1.
+/// of a legend over the curves), right-aligned, with the minus sign U+2212 in ξ = −½ and −1.
 #[test]
 fn lloyd2005_fig4_labels_its_curves_directly() {
     let dir = out_dir("figures-direct");
@@ -1088,9 +1089,9 @@ fn lloyd2005_fig4_labels_its_curves_directly() {
     let all = texts(&svg);
     for label in [
         "n = 1 (ξ = 1)",
-        "n = 1.613 (ξ = 0.5)",
+        "n = 1.613 (ξ = ½)",
         "n = 4.162 (ξ = 0)",
-        "n = 17.325 (ξ = \u{2212}0.5)",
+        "n = 17.325 (ξ = \u{2212}½)",
         "n = ∞ (ξ = \u{2212}1)",
     ] {
         let (attrs, _) = all
@@ -1223,7 +1224,16 @@ fn labels_cover_no_line_and_no_label() {
         ),
         (
             "barroso-fig5",
-            &["31.62", "10", "3.162", "40.81", "16.13", "6.041"],
+            &[
+                "z = 31.62",
+                "z = 10",
+                "z = 3.162",
+                "z = 40.81",
+                "z = 16.13",
+                "z = 6.041",
+                "n = 1",
+                "f = 100",
+            ],
         ),
         (
             "martin-tan-fig3",

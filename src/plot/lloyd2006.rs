@@ -244,7 +244,7 @@ pub(super) fn fig10() -> Result<Keyed, Fail> {
     let mut c = LineChart::new(
         "(a) S̄, dashed: its optimum",
         k_axis(),
-        Axis::log10("storage factor S̄ (log scale)", 1.0, 1e4).in_powers(),
+        Axis::log10("S̄ (texels per image pixel, log scale)", 1.0, 1e4).in_powers(),
     );
     let mut r = LineChart::new(
         "(b) S̄ over its optimum",
@@ -353,7 +353,7 @@ pub(super) fn fig12() -> Result<Keyed, Fail> {
         "(a) overhead, behind (dashed)",
         Axis::integer("number of shadow maps", 0.0, 40.0),
         // To the data from 2 maps on: 6.5 (ZP+W at 40 maps) to 2000 (ZP behind with 2 maps).
-        Axis::log10("S̄ (log scale)", 4.0, 1e4).in_powers(),
+        Axis::log10("S̄ (texels per image pixel, log scale)", 4.0, 1e4).in_powers(),
     );
     let schemes = [
         (Scheme::Zp, "ZP", Look::Zp.colour()),
@@ -423,7 +423,7 @@ pub(super) fn fig12() -> Result<Keyed, Fail> {
         // Padded by half a count, so that the markers at 11 and 23 maps are whole.
         Axis::integer("number of shadow maps", 10.5, 23.5),
         // The data's range (30.8 at 21 maps to 55.0 at 13), a little padded.
-        Axis::linear("S̄", 28.0, 58.0),
+        Axis::linear("S̄ (texels per image pixel)", 28.0, 58.0),
     );
     for (scheme, name, colour) in [
         (Scheme::Zp, "ZP = ZP+W, behind", SHARED),
