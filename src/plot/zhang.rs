@@ -209,7 +209,7 @@ const THETA_SINGLE: u32 = 11;
 
 /// The page's size: three blocks of 3 × 3 panels side by side (landscape drawing), the caption
 /// under them; as tall as the blocks, their bars and the caption need.
-pub(super) const SIZE: (u32, u32) = (520, 418);
+pub(super) const SIZE: (u32, u32) = (520, 424);
 
 /// A double-column panel's width: the body (the page less 6 units each side) less the left
 /// strips, the gaps, shared by nine panels.
