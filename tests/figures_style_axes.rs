@@ -53,6 +53,9 @@ fn y_label_offsets(font: &Font, svg: &str) -> Vec<(String, f64)> {
     let ticks: Vec<&Text> = all.iter().filter(|t| is_y_tick(t)).collect();
     all.iter()
         .filter(|t| t.tag.contains("rotate(270"))
+        // An empty text draws nothing: no label (barroso-fig5 names its y axes in its left
+        // column only).
+        .filter(|t| !t.content.trim().is_empty())
         .filter_map(|l| {
             ticks
                 .iter()

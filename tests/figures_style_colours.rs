@@ -124,7 +124,7 @@ fn key_entries_are_read_with_their_samples() {
 }
 
 /// Every figure in every layout: each scheme named in a key has one colour everywhere, and
-/// the schemes of lloyd2006-fig12, fig13, worst-case, fig5 and barroso-fig7 are all found
+/// the schemes of lloyd2006-fig12, fig13, worst-case and barroso-fig7 are all found
 /// (ZP, ZP+W and FP+ZP+W in at least two figures each).
 #[test]
 fn one_colour_per_scheme_in_every_figure() {
@@ -153,7 +153,10 @@ fn one_colour_per_scheme_in_every_figure() {
     for s in ["ZP", "ZP+W", "FP+ZP+W"] {
         assert!(figures(s) >= 2, "{s} in {} figures: {seen:?}", figures(s));
     }
-    for s in ["LiSPSM", "PSM", "uniform", "Zhang", "Barroso"] {
+    // PSM and the uniform map are named by direct labels only (lloyd2006-fig5 has no key
+    // since its labels in (b) name both panels), which this reader of keys does not read;
+    // their colours are Look's (src/plot/chart/scheme.rs, by hand).
+    for s in ["LiSPSM", "Zhang", "Barroso"] {
         assert!(figures(s) >= 1, "{s} not found: {seen:?}");
     }
     let bad: Vec<String> = seen

@@ -196,7 +196,7 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
             )],
             charts,
         },
-        single_height: 780,
+        single_height: 800,
         single_caption: vec![format!(
             "Lloyd et al. 2005, Fig. 7 (Eq 7): the maximum error with k face subdivisions over \
              its value at k\u{a0}=\u{a0}1. At α\u{a0}=\u{a0}{alpha}, k\u{a0}=\u{a0}2 gains \

@@ -353,7 +353,7 @@ impl Fig4 {
         let (head, x_labels) = (24u32, 36u32);
         let count = self.columns.len() as u32;
         let row_h = (bh - x_labels) / count;
-        let (light_label, map_label) = (44u32, 48u32);
+        let (light_label, map_label) = (48u32, 48u32);
         // The two panels' plots equally wide: the light panel's area is wider by its y labels'.
         let left_w = (bw + light_label - map_label) / 2;
         let heading =
