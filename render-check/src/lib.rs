@@ -15,6 +15,7 @@ pub mod paper_error;
 pub mod papers;
 pub mod paths;
 pub mod perspective;
+pub mod pool;
 pub mod ratios;
 pub mod run;
 pub mod scene;

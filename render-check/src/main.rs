@@ -8,13 +8,14 @@
 use render_check::faults::Fault;
 use render_check::gpu::{Gpu, Lookup};
 use render_check::images::{close_up, error_panels, lens_overlay, shaded, Crop};
-use render_check::run::{case_clip_depth, run_case, run_full, Render, Sizes, Summary};
+use render_check::pool::{devices, on_devices};
+use render_check::run::{case_clip_depth, run_case, run_full, CaseSummary, Render, Sizes, Summary};
 use render_check::scene::Scene;
-use render_check::schemes::{schemes_for, setups, Setup};
+use render_check::schemes::{schemes_for, setups, Scheme, Setup};
 use render_check::self_test::{self_test, MIN_SETUPS_CAUGHT};
 use render_check::targets::{is_inconclusive, violations};
 use shadow_aliasing::maps::ClipDepth;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -35,8 +36,8 @@ fn help() -> String {
     let mut s = String::from(
         "render-check [--out DIR] [--scene FILE.json | --setup NAME] [--width W] [--height H]\n\
          \x20            [--res N] [--frames N] [--fault NAME] [--gallery] [--reversed]\n\
-         \x20            [--first-surface] [--no-cull]\n\
-         render-check --self-test\n\n\
+         \x20            [--first-surface] [--no-cull] [--jobs N]\n\
+         render-check --self-test [--jobs N]\n\n\
          --out DIR        where the images and summary.json go (default render-check-out)\n\
          --scene FILE     one scene file (docs/rendered.md has the format) instead of the built-in set\n\
          --setup NAME     only this built-in set-up (overhead, tilted_45, behind_5, front_5,\n\
@@ -45,6 +46,8 @@ fn help() -> String {
          --width, --height  screen size (default 640 x 480)\n\
          --res N          texels per map side, overriding the scene's\n\
          --frames N       frames of the shimmer test (default 64)\n\
+         --jobs N         cases rendered at once, each on a device of its own (default 2, 1 on\n\
+         \x20                one core; also for --self-test)\n\
          --gallery        also write <setup>_<scheme>_edge.png: a shadow edge at 512^2 texels\n\
          --reversed       every map in reversed depth (1 nearest the light), compared\n\
          \x20                greater-equal (default: reversed where the set-up's and the\n\
@@ -71,6 +74,8 @@ fn real_main() -> Result<(), String> {
     let mut gallery = false;
     let mut self_check = false;
     let mut reversed = false;
+    // Two cases at once by default: a case keeps about one core busy.
+    let mut threads = std::thread::available_parallelism().map_or(1, |n| n.get().min(2));
     let mut sizes = Sizes {
         width: 640,
         height: 480,
@@ -98,6 +103,7 @@ fn real_main() -> Result<(), String> {
             "--height" => sizes.height = num(val("--height")?, "--height")?,
             "--res" => sizes.res = Some(num(val("--res")?, "--res")?),
             "--frames" => sizes.frames = num(val("--frames")?, "--frames")? as usize,
+            "--jobs" => threads = num(val("--jobs")?, "--jobs")? as usize,
             "--fault" => sizes.fault = Some(Fault::parse(&val("--fault")?)?),
             "--gallery" => gallery = true,
             "--reversed" => reversed = true,
@@ -114,6 +120,9 @@ fn real_main() -> Result<(), String> {
     if sizes.width < 16 || sizes.height < 16 {
         return Err("--width and --height must be at least 16".into());
     }
+    if !(1..=64).contains(&threads) {
+        return Err(format!("--jobs {threads}: must lie in [1, 64]"));
+    }
     if sizes.frames < 2 {
         return Err("--frames must be at least 2".into());
     }
@@ -126,7 +135,7 @@ fn real_main() -> Result<(), String> {
         return Err("--scene and --setup exclude each other: give one".into());
     }
     if self_check {
-        return run_self_test();
+        return run_self_test(threads);
     }
     if reversed {
         sizes.render.clip_depth = ClipDepth::Reversed;
@@ -152,9 +161,24 @@ fn real_main() -> Result<(), String> {
         }
         (None, None) => setups(),
     };
+    let order: Vec<String> = setups().into_iter().map(|s| s.name).collect();
+    // Every (set-up, scheme) pair, in the order summary.json lists them.
+    let jobs: Vec<(&Setup, usize, Scheme)> = cases
+        .iter()
+        .flat_map(|setup| {
+            // The set-up's place in the built-in list picks its schemes' clip depths (a scene
+            // file counts as the first).
+            let si = order.iter().position(|n| n == &setup.name).unwrap_or(0);
+            schemes_for(&setup.name)
+                .into_iter()
+                .map(move |scheme| (setup, si, scheme))
+        })
+        .collect();
     std::fs::create_dir_all(&out).map_err(|e| format!("{}: {e}", out.display()))?;
     let start = Instant::now();
-    let gpu = Gpu::with_source(&Fault::shader_source(sizes.fault)?)?;
+    // One device per thread (render_check::pool).
+    let gpus = devices(threads.min(jobs.len()), &Fault::shader_source(sizes.fault)?)?;
+    let gpu = &gpus[0];
     eprintln!("device: {}", gpu.name);
     if let Some(f) = sizes.fault {
         eprintln!("fault injected: {} ({})", f.name(), f.describe());
@@ -163,101 +187,23 @@ fn real_main() -> Result<(), String> {
         device: gpu.name.clone(),
         cases: Vec::new(),
     };
-    let save = |img: image::RgbImage, name: String| {
-        let p = out.join(&name);
-        img.save(&p).map_err(|e| format!("{}: {e}", p.display()))
+    let opts = CaseOptions {
+        sizes,
+        reversed,
+        gallery,
+        out: &out,
     };
+    let results = on_devices(&gpus, &jobs, |gpu, &(setup, si, scheme)| {
+        one_case(gpu, setup, si, scheme, &opts)
+    })?;
     let (mut violated, mut inconclusive) = (0usize, 0usize);
-    let order: Vec<String> = setups().into_iter().map(|s| s.name).collect();
-    for setup in &cases {
-        // The set-up's place in the built-in list picks its schemes' clip depths (a scene file
-        // counts as the first).
-        let si = order.iter().position(|n| n == &setup.name).unwrap_or(0);
-        for scheme in schemes_for(&setup.name) {
-            let t = Instant::now();
-            let mut sizes = sizes;
-            if !reversed {
-                sizes.render.clip_depth = case_clip_depth(si, scheme);
-            }
-            let r = run_full(&gpu, &setup.name, &setup.scene, scheme, sizes)?;
-            let stem = format!("{}_{}", setup.name, scheme.name());
-            let res = sizes.res.unwrap_or(setup.scene.map_resolution);
-            let case = format!(
-                "{} / {}: {res}² texels per map, {} × {}{}",
-                setup.name,
-                scheme.label(),
-                sizes.width,
-                sizes.height,
-                sizes
-                    .fault
-                    .map_or(String::new(), |f| format!(", fault {}", f.name()))
-            );
-            save(
-                shaded(&r.color, sizes.width, sizes.height, &case),
-                format!("{stem}.png"),
-            )?;
-            save(
-                error_panels(
-                    &r.analysis.rendered_error,
-                    &r.analysis.predicted_error,
-                    sizes.width,
-                    sizes.height,
-                    &case,
-                ),
-                format!("{stem}_error.png"),
-            )?;
-            save(
-                lens_overlay(
-                    &r.overlay,
-                    sizes.width,
-                    sizes.height,
-                    &case,
-                    &format!("largest: {:.4} px", r.summary.measured.max_lens),
-                ),
-                format!("{stem}_lens.png"),
-            )?;
-            if gallery {
-                let low = Sizes {
-                    res: Some(EDGE_RES),
-                    ..sizes
-                };
-                let e = run_case(&gpu, &setup.name, &setup.scene, scheme, low)?;
-                let crop = edge_crop(&setup.name, sizes.width, sizes.height);
-                let title = format!(
-                    "{} / {}: shadow edge, {EDGE_RES}² texels per map",
-                    setup.name,
-                    scheme.label()
-                );
-                save(
-                    close_up(
-                        &e.color,
-                        &e.analysis.predicted_error,
-                        sizes.width,
-                        crop,
-                        4,
-                        &title,
-                    ),
-                    format!("{stem}_edge.png"),
-                )?;
-            }
-            eprintln!(
-                "{stem}: {} ({:.1} s)",
-                serde_json::to_string(&r.summary).map_err(|e| e.to_string())?,
-                t.elapsed().as_secs_f64()
-            );
-            let v = violations(&r.summary);
-            for line in &v {
-                if is_inconclusive(line) {
-                    eprintln!("  INCONCLUSIVE {stem}: {line}");
-                } else {
-                    eprintln!("  TARGET VIOLATED {stem}: {line}");
-                }
-            }
-            let wrong = v.iter().any(|l| !is_inconclusive(l));
-            violated += usize::from(wrong);
-            inconclusive += usize::from(!wrong && !v.is_empty());
-            summary.cases.push(r.summary);
-        }
+    for r in results {
+        let case = r?;
+        let v = violations(&case);
+        let wrong = v.iter().any(|l| !is_inconclusive(l));
+        violated += usize::from(wrong);
+        inconclusive += usize::from(!wrong && !v.is_empty());
+        summary.cases.push(case);
     }
     let p = out.join("summary.json");
     let json = serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?;
@@ -279,6 +225,109 @@ fn real_main() -> Result<(), String> {
     Ok(())
 }
 
+/// What every case of a run shares.
+struct CaseOptions<'a> {
+    sizes: Sizes,
+    reversed: bool,
+    gallery: bool,
+    out: &'a Path,
+}
+
+/// Renders one case, writes its images and prints its summary line and violations.
+fn one_case(
+    gpu: &Gpu,
+    setup: &Setup,
+    si: usize,
+    scheme: Scheme,
+    o: &CaseOptions,
+) -> Result<CaseSummary, String> {
+    let save = |img: image::RgbImage, name: String| {
+        let p = o.out.join(&name);
+        img.save(&p).map_err(|e| format!("{}: {e}", p.display()))
+    };
+    let t = Instant::now();
+    let mut sizes = o.sizes;
+    if !o.reversed {
+        sizes.render.clip_depth = case_clip_depth(si, scheme);
+    }
+    let r = run_full(gpu, &setup.name, &setup.scene, scheme, sizes)?;
+    let stem = format!("{}_{}", setup.name, scheme.name());
+    let res = sizes.res.unwrap_or(setup.scene.map_resolution);
+    let case = format!(
+        "{} / {}: {res}² texels per map, {} × {}{}",
+        setup.name,
+        scheme.label(),
+        sizes.width,
+        sizes.height,
+        sizes
+            .fault
+            .map_or(String::new(), |f| format!(", fault {}", f.name()))
+    );
+    save(
+        shaded(&r.color, sizes.width, sizes.height, &case),
+        format!("{stem}.png"),
+    )?;
+    save(
+        error_panels(
+            &r.analysis.rendered_error,
+            &r.analysis.predicted_error,
+            sizes.width,
+            sizes.height,
+            &case,
+        ),
+        format!("{stem}_error.png"),
+    )?;
+    save(
+        lens_overlay(
+            &r.overlay,
+            sizes.width,
+            sizes.height,
+            &case,
+            &format!("largest: {:.4} px", r.summary.measured.max_lens),
+        ),
+        format!("{stem}_lens.png"),
+    )?;
+    if o.gallery {
+        let low = Sizes {
+            res: Some(EDGE_RES),
+            ..sizes
+        };
+        let e = run_case(gpu, &setup.name, &setup.scene, scheme, low)?;
+        let crop = edge_crop(&setup.name, sizes.width, sizes.height);
+        let title = format!(
+            "{} / {}: shadow edge, {EDGE_RES}² texels per map",
+            setup.name,
+            scheme.label()
+        );
+        save(
+            close_up(
+                &e.color,
+                &e.analysis.predicted_error,
+                sizes.width,
+                crop,
+                4,
+                &title,
+            ),
+            format!("{stem}_edge.png"),
+        )?;
+    }
+    // One eprintln per case, so that two threads' lines never interleave.
+    let mut msg = format!(
+        "{stem}: {} ({:.1} s)",
+        serde_json::to_string(&r.summary).map_err(|e| e.to_string())?,
+        t.elapsed().as_secs_f64()
+    );
+    for line in violations(&r.summary) {
+        if is_inconclusive(&line) {
+            msg += &format!("\n  INCONCLUSIVE {stem}: {line}");
+        } else {
+            msg += &format!("\n  TARGET VIOLATED {stem}: {line}");
+        }
+    }
+    eprintln!("{msg}");
+    Ok(r.summary)
+}
+
 /// The close-up's rectangle (a quarter of the screen's width and height): for `behind_5` the
 /// tower's shadow edge nearest the camera, else the bottom centre.
 fn edge_crop(setup: &str, w: u32, h: u32) -> Crop {
@@ -294,11 +343,11 @@ fn edge_crop(setup: &str, w: u32, h: u32) -> Crop {
 
 /// `--self-test`: prints one line per fault (cases run, cases caught, the targets that caught
 /// it) and fails unless the clean build passes and every fault is caught.
-fn run_self_test() -> Result<(), String> {
+fn run_self_test(threads: usize) -> Result<(), String> {
     let start = Instant::now();
-    let gpu = Gpu::new()?;
-    eprintln!("device: {}", gpu.name);
-    let rows = self_test(&gpu, |line| eprintln!("{line}"))?;
+    let gpus = devices(threads, &Fault::shader_source(None)?)?;
+    eprintln!("device: {} ({} at once)", gpus[0].name, gpus.len());
+    let rows = self_test(&gpus, |line| eprintln!("{line}"))?;
     println!("| fault | cases caught / run | set-ups caught | targets violated (cases) |");
     println!("|---|---|---|---|");
     let mut ok = true;

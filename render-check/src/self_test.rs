@@ -5,6 +5,7 @@
 
 use crate::faults::Fault;
 use crate::gpu::Gpu;
+use crate::pool::{devices, on_devices};
 use crate::run::{run_full, Render, Sizes};
 use crate::schemes::{schemes_for, setups};
 use crate::targets::violations;
@@ -53,13 +54,15 @@ pub fn target_name(violation: &str) -> String {
     head.split(": ").next().unwrap_or(head).to_string()
 }
 
-/// Runs the clean build and every fault at [`SELF_TEST_SIZES`], calling `log` with one line per
-/// run.
+/// Runs the clean build and every fault at [`SELF_TEST_SIZES`] on every device in `gpus` at once
+/// (a fault in the shaders' source on as many devices of its own), calling `log` with one line
+/// per run.
 ///
 /// # Errors
-/// Only when no built-in set-up exists; a case that fails to run is counted in
+/// When no built-in set-up exists, `gpus` is empty, or a faulted shader's devices cannot be
+/// created; a case that fails to run is counted in
 /// [`SelfTestRow::errors`].
-pub fn self_test(gpu: &Gpu, log: impl Fn(&str)) -> Result<Vec<SelfTestRow>, String> {
+pub fn self_test(gpus: &[Gpu], log: impl Fn(&str)) -> Result<Vec<SelfTestRow>, String> {
     let all = setups();
     if all.is_empty() {
         return Err("no built-in set-up".into());
@@ -77,14 +80,15 @@ pub fn self_test(gpu: &Gpu, log: impl Fn(&str)) -> Result<Vec<SelfTestRow>, Stri
             ..SelfTestRow::default()
         };
         let t = std::time::Instant::now();
-        // A fault in the shaders' source runs on its own device.
+        // A fault in the shaders' source runs on devices of its own.
         let own;
-        let gpu = if fault.is_some_and(Fault::changes_shader) {
-            own = Gpu::with_source(&Fault::shader_source(fault)?)?;
-            &own
+        let gpus = if fault.is_some_and(Fault::changes_shader) {
+            own = devices(gpus.len(), &Fault::shader_source(fault)?)?;
+            &own[..]
         } else {
-            gpu
+            gpus
         };
+        let mut jobs = Vec::new();
         for (si, setup) in all.iter().enumerate() {
             for scheme in schemes_for(&setup.name) {
                 let clip_depth = crate::run::case_clip_depth(si, scheme);
@@ -98,34 +102,41 @@ pub fn self_test(gpu: &Gpu, log: impl Fn(&str)) -> Result<Vec<SelfTestRow>, Stri
                 }
                 let mut sizes = sizes;
                 sizes.render.clip_depth = clip_depth;
-                row.cases += 1;
-                let case = format!("{}/{}", setup.name, scheme.name());
-                match run_full(gpu, &setup.name, &setup.scene, scheme, sizes) {
-                    Ok(r) => {
-                        let before = clean.get(&case).cloned().unwrap_or_default();
-                        let v: Vec<String> = violations(&r.summary)
-                            .into_iter()
-                            .filter(|x| !before.contains(&target_name(x)))
-                            .collect();
-                        if fault.is_none() {
-                            clean.insert(case.clone(), v.iter().map(|x| target_name(x)).collect());
+                jobs.push((setup, scheme, sizes));
+            }
+        }
+        // The cases run on every device at once; their results are read in the jobs' order.
+        let results = on_devices(gpus, &jobs, |gpu, &(setup, scheme, sizes)| {
+            run_full(gpu, &setup.name, &setup.scene, scheme, sizes).map(|r| r.summary)
+        })?;
+        for (&(setup, scheme, _), result) in jobs.iter().zip(results) {
+            row.cases += 1;
+            let case = format!("{}/{}", setup.name, scheme.name());
+            match result {
+                Ok(summary) => {
+                    let before = clean.get(&case).cloned().unwrap_or_default();
+                    let v: Vec<String> = violations(&summary)
+                        .into_iter()
+                        .filter(|x| !before.contains(&target_name(x)))
+                        .collect();
+                    if fault.is_none() {
+                        clean.insert(case.clone(), v.iter().map(|x| target_name(x)).collect());
+                    }
+                    if !v.is_empty() {
+                        row.failing += 1;
+                        row.setups.insert(setup.name.clone());
+                        for x in &v {
+                            *row.targets.entry(target_name(x)).or_default() += 1;
                         }
-                        if !v.is_empty() {
-                            row.failing += 1;
-                            row.setups.insert(setup.name.clone());
-                            for x in &v {
-                                *row.targets.entry(target_name(x)).or_default() += 1;
-                            }
-                            if row.example.is_empty() {
-                                row.example = format!("{case}: {}", v.join("; "));
-                            }
+                        if row.example.is_empty() {
+                            row.example = format!("{case}: {}", v.join("; "));
                         }
                     }
-                    Err(e) => {
-                        row.errors += 1;
-                        if row.example.is_empty() {
-                            row.example = format!("{case}: error {e}");
-                        }
+                }
+                Err(e) => {
+                    row.errors += 1;
+                    if row.example.is_empty() {
+                        row.example = format!("{case}: error {e}");
                     }
                 }
             }

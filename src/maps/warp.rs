@@ -36,7 +36,11 @@ pub enum WarpRule {
     Eta(f64),
     /// PSM's n′ = n (Lloyd 2006 §4.1). This is PSM exactly only with the light overhead; for
     /// other directions a perspective shadow map is not a one-point perspective in light space
-    /// (Lloyd 2006 §4.4), and this rule is the light-space warp with PSM's parameter.
+    /// (Lloyd 2006 §4.4), and this rule is the light-space warp with PSM's parameter. It keeps
+    /// n′ = n at every light direction, where Lloyd 2006 §4.4 has perspective shadow maps revert
+    /// to the orthographic map with the light behind or in front of the viewer: there it only
+    /// stretches the map along the view. A renderer that wants a warp which reverts uses
+    /// [`WarpRule::Lispsm`].
     Psm,
     /// LiSPSM as its authors apply it to every light direction (Wimmer et al. 2004 §5; Lloyd 2006
     /// §4.1, §4.4, the rule behind Lloyd 2006 Fig 7's warped panel): n′ = (n + √(f n))/sin γ.
