@@ -5,6 +5,8 @@
 //! the figure's title and the paper's figure number in the caption.
 #![cfg(feature = "plot")]
 
+mod figures_style_read;
+
 use shadow_aliasing::plot::{render, render_all, Format, PlotError, FIGURES};
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
@@ -819,7 +821,7 @@ fn geometric_diagrams_have_equal_aspect() {
     let svg = std::fs::read_to_string(dir.join("lloyd2006-fig4.svg")).unwrap();
     let mut squares = 0;
     for t in svg.split("<polyline ").skip(1) {
-        let pts = polyline_points(t);
+        let pts = figures_style_read::points(t);
         // The map's outline: a closed axis-aligned rectangle of five points.
         let rect = pts.len() == 5
             && pts[0] == pts[4]
@@ -850,18 +852,6 @@ fn svgs(sub: &str, names: &[&'static str]) -> Vec<(&'static str, String)> {
                 *n,
                 std::fs::read_to_string(dir.join(format!("{n}.svg"))).unwrap(),
             )
-        })
-        .collect()
-}
-
-/// The points of a `<polyline>` from its attributes (`points="x,y x,y …"`).
-fn polyline_points(attrs: &str) -> Vec<(f64, f64)> {
-    let at = attrs.find("points=\"").unwrap() + 8;
-    attrs[at..at + attrs[at..].find('"').unwrap()]
-        .split_whitespace()
-        .map(|p| {
-            let (x, y) = p.split_once(',').unwrap();
-            (x.parse().unwrap(), y.parse().unwrap())
         })
         .collect()
 }
@@ -905,7 +895,7 @@ fn colour_bar_labels_clear_the_bar() {
             if t != "text" || p != "polyline" || !(start || text.contains("text-anchor=\"end\"")) {
                 continue;
             }
-            let pts = polyline_points(line);
+            let pts = figures_style_read::points(line);
             let y = attr_num(text, "y").unwrap();
             // A tick mark: short, horizontal, pointing right, at the label's height, the label's
             // anchor right of it (a left axis's labels are left of their ticks).
@@ -1015,7 +1005,7 @@ fn zhang_fig3_landscape_with_bars_under_blocks() {
         if *t != "polyline" || !a.contains("stroke=\"#282828\"") {
             continue;
         }
-        let pts = polyline_points(a);
+        let pts = figures_style_read::points(a);
         let xs = pts.iter().map(|p| p.0);
         let ys = pts.iter().map(|p| p.1);
         let w = xs.clone().fold(f64::MIN, f64::max) - xs.fold(f64::MAX, f64::min);
@@ -1156,7 +1146,7 @@ fn line_segments(svg: &str) -> Vec<((f64, f64), (f64, f64))> {
     let mut out = Vec::new();
     for (tag, attrs) in elements(svg) {
         if tag == "polyline" {
-            let pts = polyline_points(attrs);
+            let pts = figures_style_read::points(attrs);
             out.extend(pts.windows(2).map(|w| (w[0], w[1])));
         } else if tag == "line" {
             let n = |k: &str| attr_num(attrs, k).unwrap();
@@ -1342,7 +1332,7 @@ fn lloyd2006_fig4_two_rows_of_four() {
     assert!(view[3] <= 1.2 * view[2], "{view:?}");
     let mut tops = Vec::new();
     for t in svg.split("<polyline ").skip(1) {
-        let pts = polyline_points(t);
+        let pts = figures_style_read::points(t);
         let square = pts.len() == 5
             && pts[0] == pts[4]
             && pts[0].1 == pts[1].1

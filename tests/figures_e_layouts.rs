@@ -100,14 +100,7 @@ fn barroso_fig7_plots_are_equally_tall_in_one_column() {
         let end = i + rest[i..].find("/>").unwrap();
         let tag = &rest[i..end];
         rest = &rest[end..];
-        let at = tag.find("points=\"").unwrap() + 8;
-        let pts: Vec<(f64, f64)> = tag[at..at + tag[at..].find('"').unwrap()]
-            .split_whitespace()
-            .map(|p| {
-                let (x, y) = p.split_once(',').unwrap();
-                (x.parse().unwrap(), y.parse().unwrap())
-            })
-            .collect();
+        let pts = read::points(tag);
         if pts.len() == 2 && pts[0].1 == pts[1].1 && (pts[1].0 - pts[0].0).abs() == 5.0 {
             ticks.push((pts[0].0.max(pts[1].0), pts[0].1));
         }
@@ -156,13 +149,9 @@ fn martin_tan_fig3_inset_in_both_layouts_with_its_connectors() {
         let segments: Vec<[f64; 4]> = svg
             .lines()
             .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#5A5A5A\""))
-            .filter_map(|l| {
-                let at = l.find("points=\"")? + 8;
-                let v: Vec<f64> = l[at..at + l[at..].find('"')?]
-                    .split([' ', ','])
-                    .filter_map(|x| x.parse().ok())
-                    .collect();
-                (v.len() == 4).then(|| [v[0], v[1], v[2], v[3]])
+            .filter_map(|l| match read::points(l)[..] {
+                [(x0, y0), (x1, y1)] => Some([x0, y0, x1, y1]),
+                _ => None,
             })
             .collect();
         let near = |a: f64, b: f64| (a - b).abs() <= 1.5;
@@ -207,7 +196,7 @@ fn zhang_fig3_bare_has_no_dead_space_below() {
 
 /// martin-tan-fig3 has one legend, under all its panels (the review: under (a) only, although
 /// (b) and (c) use it too): in both layouts each of its six entries lies below every panel's
-/// x axis name ("light −x", "map s" twice), and the six are there once each.
+/// x axis name ("−x in light space", "map s" twice), and the six are there once each.
 #[test]
 fn martin_tan_fig3_legend_is_under_all_panels() {
     let font = Font::dejavu();
@@ -226,7 +215,7 @@ fn martin_tan_fig3_legend_is_under_all_panels() {
         );
         let names: Vec<f64> = all
             .iter()
-            .filter(|t| t.content == "map s" || t.content == "light −x")
+            .filter(|t| t.content == "map s" || t.content == "−x in light space")
             .map(|t| t.bbox[3])
             .collect();
         assert_eq!(names.len(), 3, "{column:?}");
@@ -255,16 +244,7 @@ fn martin_tan_fig3_boxes_run_beside_the_trapezoid() {
                     && l.contains(&format!("stroke=\"{colour}\""))
                     && l.contains("stroke-width=\"2\"")
             })
-            .map(|l| {
-                let at = l.find("points=\"").unwrap() + 8;
-                l[at..at + l[at..].find('"').unwrap()]
-                    .split_whitespace()
-                    .map(|p| {
-                        let (x, y) = p.split_once(',').unwrap();
-                        (x.parse().unwrap(), y.parse().unwrap())
-                    })
-                    .collect()
-            })
+            .map(read::points)
             .collect()
     };
     // T's outline in (a): the widest closed black outline ((b)'s map square is one too).

@@ -220,8 +220,8 @@ pub fn texts(font: &Font, svg: &str) -> Vec<Text> {
     out
 }
 
-/// The points of a `points="x,y x,y …"` attribute.
-fn points(tag: &str) -> Vec<(f64, f64)> {
+/// The points of a `points="x,y x,y …"` attribute (none where `tag` has no such attribute).
+pub fn points(tag: &str) -> Vec<(f64, f64)> {
     attr_str(tag, "points")
         .unwrap_or("")
         .split_whitespace()
