@@ -1,38 +1,49 @@
 //! A page of line charts that share one key: the panels side by side (two columns) or stacked
 //! (one column), all of the same height, and the key of one panel written once, below them all
-//! (lloyd2006-fig10, fig12 and worst-case, whose panels draw the same series). In one column
-//! the page may carry a shorter caption.
+//! (lloyd2006-fig5, fig6, fig10, fig12 and worst-case, whose panels draw the same series), or
+//! inside its panel where it covers no data. The one-column page may be a page of its own, at
+//! most 525 units (420 pt printed) tall: a shorter caption, fewer panels, labels placed for its
+//! narrower plots.
 
 use super::chart::{column, draw_line_chart_over, frame, legend_below, Charts};
 use super::{Column, Fail, Figure};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-/// Line charts with one key below them all.
+/// Line charts with one key for them all.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Keyed {
     /// The page: size, title, caption and panels.
     pub page: Charts,
     /// The panel whose legend is the figure's key; `None`: no key (the curves are labelled).
     pub key: Option<usize>,
-    /// The caption of the one-column page, where it is shorter than [`Charts::caption`].
-    pub single_caption: Option<String>,
+    /// The key goes inside its panel's plot where a place there covers no data (below the
+    /// panels otherwise); `false`: always below the panels.
+    pub key_inside: bool,
+    /// The one-column page, where it is not `page` laid out in one column: its own size (at
+    /// most [`SINGLE_HEIGHT`] units tall), caption and panels (fewer, or with labels placed
+    /// for its narrower plots).
+    pub single: Option<Box<Keyed>>,
 }
 
-impl Figure for Keyed {
-    fn size(&self) -> (u32, u32) {
-        self.page.size
+/// The tallest one-column page, in units: 420 pt printed at one column's 0.8 scale.
+pub(crate) const SINGLE_HEIGHT: u32 = 525;
+
+impl Keyed {
+    /// A page of `charts` with the key of panel `key`, below the panels, and no one-column
+    /// page of its own.
+    pub fn new(page: Charts, key: Option<usize>) -> Self {
+        Self {
+            page,
+            key,
+            key_inside: false,
+            single: None,
+        }
     }
 
-    fn single_size(&self) -> Option<(u32, u32)> {
-        self.page.single_size()
-    }
-
-    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
-        let caption: Vec<&str> = match (column(), &self.single_caption) {
-            (Column::Single, Some(short)) => vec![short.as_str()],
-            _ => self.page.caption.iter().map(String::as_str).collect(),
-        };
+    /// Draws this page's panels (not its one-column page).
+    fn draw_page<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let caption: Vec<&str> = self.page.caption.iter().map(String::as_str).collect();
         let body = frame(root, &self.page.title, &caption)?;
         let (w, h) = body.dim_in_pixel();
         // Side by side where each panel gets at least 250 units (two columns), else stacked.
@@ -47,7 +58,7 @@ impl Figure for Keyed {
             .map(|(i, c)| {
                 let mut c = c.clone();
                 c.show_legend = self.key == Some(i);
-                c.legend_below = true;
+                c.legend_below = !self.key_inside;
                 c
             })
             .collect();
@@ -63,6 +74,26 @@ impl Figure for Keyed {
             draw_line_chart_over(panel, chart, strip)?;
         }
         Ok(())
+    }
+}
+
+impl Figure for Keyed {
+    fn size(&self) -> (u32, u32) {
+        self.page.size
+    }
+
+    fn single_size(&self) -> Option<(u32, u32)> {
+        match &self.single {
+            Some(s) => Some(s.page.size),
+            None => self.page.single_size(),
+        }
+    }
+
+    fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        match (&self.single, column()) {
+            (Some(single), Column::Single) => single.draw_page(root),
+            _ => self.draw_page(root),
+        }
     }
 }
 
@@ -111,9 +142,14 @@ mod tests {
             let svg = with_page(false, Column::Single, || {
                 draw_svg(size, |area| fig.draw(area).unwrap())
             });
+            // One column keeps fig5's two panels; fig10, fig12 and worst-case keep one.
+            let panels = fig.single.as_ref().map_or(2, |s| s.page.charts.len());
             let axes = y_axes(&svg);
-            assert_eq!(axes.len(), 2, "{name}: {axes:?}");
-            assert!((axes[0] - axes[1]).abs() <= 1.0, "{name}: {axes:?}");
+            assert_eq!(axes.len(), panels, "{name}: {axes:?}");
+            assert!(
+                axes.iter().all(|a| (a - axes[0]).abs() <= 1.0),
+                "{name}: {axes:?}"
+            );
         }
     }
 }

@@ -139,10 +139,11 @@ fn fig5_lispsm_curve_by_hand() {
 fn fig6_m_z_is_smallest_at_eta_zero_and_equal_at_both_ends() {
     let fig = fig6().map_err(|e| e.named("lloyd2006-fig6")).unwrap();
     let c = 99.0 / (2.0 * 30f64.to_radians().tan());
-    let m_z = &fig.page.charts[0].series[1].points;
+    // M_z is series 0, M_x 1, S̄ 2.
+    let m_z = &fig.page.charts[0].series[0].points;
     let (first, last) = (m_z[0].1, m_z.last().unwrap().1);
     assert!((first - c).abs() < 1e-9 * c && (last - c).abs() < 1e-9 * c);
-    let m_x = &fig.page.charts[0].series[0].points;
+    let m_x = &fig.page.charts[0].series[1].points;
     assert!((m_x[0].1 - 100.0).abs() < 1e-9 && m_x[0].1 > first);
     assert!((m_x.last().unwrap().1 - 1.0).abs() < 1e-12);
     let s = &fig.page.charts[0].series[2].points;
@@ -193,19 +194,19 @@ fn fig12_reaches_the_light_behind_crossover() {
     let r = 1000f64;
     let zp = |j: f64| j * r.powf(2.0 / j);
     let fp = |k: f64| 4.0 * k * (r.powf(1.0 / k) - 1.0) / 2.0 + 1.0;
-    // Series 4 is ZP (= ZP+W) behind, 3 FP+ZP+W behind.
+    // Series 1 is ZP (= ZP+W) behind (2 its key), 4 FP+ZP+W behind (the key's order).
     for (j, k) in [(13.0, 3.0), (17.0, 4.0)] {
-        assert!((at(4, j) - zp(j)).abs() < 1e-9 * zp(j), "ZP at {j}");
-        assert!((at(3, j) - fp(k)).abs() < 1e-9 * fp(k), "FP at {j}");
+        assert!((at(1, j) - zp(j)).abs() < 1e-9 * zp(j), "ZP at {j}");
+        assert!((at(4, j) - fp(k)).abs() < 1e-9 * fp(k), "FP at {j}");
     }
-    assert!(at(4, 13.0) < at(3, 13.0));
-    assert!(at(4, 17.0) > at(3, 17.0));
+    assert!(at(1, 13.0) < at(4, 13.0));
+    assert!(at(1, 17.0) > at(4, 17.0));
     assert!((fp(4.0) - 37.987).abs() < 0.001 && (zp(17.0) - 38.317).abs() < 0.001);
     // Every ZP curve runs to 40 maps, FP+ZP+W to 4 · 9 + 1 = 37.
-    for s in [0, 1, 4] {
+    for s in [0, 1, 3] {
         assert_eq!(series[s].points.last().unwrap().0, 40.0, "series {s}");
     }
-    assert_eq!(series[3].points.last().unwrap().0, 37.0);
+    assert_eq!(series[4].points.last().unwrap().0, 37.0);
 }
 
 /// Fig 6 (b) has no legend (its one entry, "M_z", repeated the panel's title): no series of
@@ -323,10 +324,11 @@ fn fig12_face_partitions_are_unjoined_markers() {
     assert_eq!(fp, 3);
 }
 
-/// Fig 10 (issue 35 review): one key for both panels, below them (the same five entries were
+/// Fig 10 (issue 35 reviews): one key for both panels, below them (the same five entries were
 /// in each panel); each f/n's entry gives App. C's optimum ln(f/n)/(2 tan 30°) (by hand 1.99,
-/// 3.99, 5.98, 7.98), and the optima are drawn grey (#5A5A5A), as the key's "optimum" entry
-/// shows them (they were dashed in their curves' colours under a grey key).
+/// 3.99, 5.98, 7.98), and each optimum is drawn dashed in its own curve's colour, at that
+/// value (four identical grey dashes could be told apart only by their order); the key has no
+/// fifth, grey entry (a row of its own, a third of the box empty).
 #[test]
 fn fig10_one_key_below_with_each_optimum() {
     let fig = fig10().map_err(|e| e.named("lloyd2006-fig10")).unwrap();
@@ -340,25 +342,46 @@ fn fig10_one_key_below_with_each_optimum() {
         .collect();
     assert_eq!(axis.len(), 2, "{svg}");
     let tan = 30f64.to_radians().tan();
-    for ratio in [10f64, 100.0, 1000.0, 10_000.0] {
-        let want = format!(
-            "f/n\u{a0}=\u{a0}{ratio}, Sopt\u{a0}=\u{a0}{:.2}",
-            ratio.ln() / (2.0 * tan)
-        );
+    let a = &fig.page.charts[0];
+    let optima: Vec<_> = a.series.iter().filter(|s| s.reference).collect();
+    assert_eq!(optima.len(), 4);
+    for (i, ratio) in [10f64, 100.0, 1000.0, 10_000.0].into_iter().enumerate() {
+        let opt = ratio.ln() / (2.0 * tan);
+        let want = format!("f/n\u{a0}=\u{a0}{ratio}, Sopt\u{a0}=\u{a0}{opt:.2}");
         let found: Vec<f64> = texts.iter().filter(|t| t.1 == want).map(|t| t.2).collect();
         assert_eq!(found.len(), 1, "{want} once in {texts:#?}");
         assert!(
             found[0] > axis[0] && found[0] > axis[1],
             "{want} above an axis"
         );
+        let curve = a
+            .series
+            .iter()
+            .find(|s| {
+                s.label
+                    .as_deref()
+                    .is_some_and(|l| l.starts_with(&format!("f/n\u{a0}=\u{a0}{ratio},")))
+            })
+            .unwrap();
+        let line = optima[i];
+        assert_eq!(line.colour, curve.colour, "f/n = {ratio}");
+        assert_eq!(line.dash, crate::plot::chart::Dash::Dashed);
+        assert!(
+            line.points.iter().all(|p| (p.1 - opt).abs() < 1e-9),
+            "{ratio}"
+        );
     }
-    // Every dashed line of (a) without a marker is grey: the optima.
-    let a = &fig.page.charts[0];
-    let optima: Vec<_> = a.series.iter().filter(|s| s.reference).collect();
-    assert_eq!(optima.len(), 5);
-    for s in optima {
-        assert_eq!(s.colour, RGBColor(0x5A, 0x5A, 0x5A), "{:?}", s.label);
+    let colours: Vec<_> = optima.iter().map(|s| s.colour).collect();
+    for (i, c) in colours.iter().enumerate() {
+        assert!(!colours[..i].contains(c), "{colours:?}");
     }
+    let key: Vec<_> = a.series.iter().filter(|s| s.label.is_some()).collect();
+    assert_eq!(key.len(), 4);
+    let caption = fig.page.caption.join(" ");
+    assert!(
+        caption.contains("The paper does not state the f/n of its curve."),
+        "{caption}"
+    );
 }
 
 /// Fig 10 (issue 35 review): both panels over the same k (1 to 16: (a) ran to 20, (b) to 16)
@@ -455,7 +478,7 @@ fn fig5_labels_once_and_n100_by_its_curve() {
     for label in [
         "n′ = n = 1 (PSM)",
         "n′ = 2",
-        "n′ ≈ 5.47 (LiSPSM)",
+        "LiSPSM",
         "n′ = 20",
         "n′ = 100",
         "n′ = ∞ (uniform)",
@@ -526,10 +549,10 @@ fn fig12_fp_zp_w_is_green_for_both_lights() {
             }
         }
     }
-    // (a) overhead and behind, (b) behind.
+    // (a) behind and overhead (the key's order), (b) behind.
     assert_eq!(
         shapes,
-        [Marker::TriangleUp, Marker::Hexagon, Marker::Hexagon]
+        [Marker::Hexagon, Marker::TriangleUp, Marker::Hexagon]
     );
 }
 
@@ -568,25 +591,27 @@ fn fig12_y_range_to_the_data_and_one_key() {
     assert!(!svg.contains("<polygon fill=\"#5A5A5A\""), "a grey marker");
 }
 
-/// Fig 6 (issue 35 review): its key writes every maximum one way ("maximum", it mixed
-/// "maximum 100" and "max. 8574"), by hand M_x's 100 (f at η = −1), M_z's 99/(2 tan 30°) =
-/// 85.74 and S̄'s 8574; (b)'s axis says "M_z" without implementation words ("unit
-/// resolutions"); the three quantities of one scheme are a sweep (M_x, M_z and S̄ were the
-/// blue, vermillion and green of ZP, ZP+W and FP+ZP+W), and differ in dash too.
+/// Fig 6 (issue 35 reviews): the key names the three quantities only, and the caption gives
+/// each maximum one way, by hand M_x's 100 (f at η = −1), M_z's 99/(2 tan 30°) = 85.74 and
+/// S̄'s 8574 (the key's "(maximum 8574)" made a box too wide for (a)'s empty corner); (b)'s
+/// axis says "M_z" without implementation words ("unit resolutions"); the three quantities
+/// of one scheme are a sweep (M_x, M_z and S̄ were the blue, vermillion and green of ZP, ZP+W
+/// and FP+ZP+W), and differ in dash too.
 #[test]
 fn fig6_key_in_one_form_and_quantities_as_a_sweep() {
     let fig = fig6().map_err(|e| e.named("lloyd2006-fig6")).unwrap();
     let a = &fig.page.charts[0];
     let labels: Vec<&str> = a.series.iter().filter_map(|s| s.label.as_deref()).collect();
     let c = 99.0 / (2.0 * 30f64.to_radians().tan());
-    assert_eq!(
-        labels,
-        [
-            "M_x (maximum 100)".to_string(),
-            format!("M_z (maximum {c:.2})"),
-            format!("S̄ = M_x M_z (maximum {:.0})", 100.0 * c),
-        ]
-    );
+    assert_eq!(labels, ["M_z", "M_x", "S̄ = M_x M_z"]);
+    let caption = fig.page.caption.join(" ").replace('\u{a0}', " ");
+    for max in [
+        "M_x = 100".to_string(),
+        format!("M_z = {c:.2}"),
+        format!("S̄ = {:.0}", 100.0 * c),
+    ] {
+        assert!(caption.contains(&max), "{max} not in {caption}");
+    }
     assert_eq!(fig.page.charts[1].y.label, "M_z");
     let mut dashes = Vec::new();
     for s in &a.series {

@@ -8,8 +8,8 @@
 
 use super::chart::{fmt_plain, Axis, Charts, LineChart, Look, Series, SHARED};
 use super::hemisphere::FIG7_ELEVATIONS;
-use super::keyed::Keyed;
-use super::Fail;
+use super::keyed::{Keyed, SINGLE_HEIGHT};
+use super::{Column, Fail};
 use crate::analytic::partition::{scheme_storage_factor, Scheme, SchemeLight};
 use crate::maps::WarpRule;
 use crate::scheme::sweep::{sweep, SweepGrid};
@@ -23,7 +23,7 @@ use plotters::prelude::RGBColor;
 /// (`worst_case_is_fig7s_maximum`).
 pub(super) use super::hemisphere::{AZIMUTHS, ELEVATIONS};
 /// The numbers of z-partitions compared.
-pub(super) const KS: [usize; 6] = [1, 2, 3, 4, 6, 8];
+pub(super) const KS: [usize; 8] = [1, 2, 3, 4, 5, 6, 7, 8];
 
 /// The schemes of Lloyd 2006 §5.3 and the crate's builders of each.
 pub(super) const SCHEMES: [(&str, Scheme, WarpRule, Partition); 3] = [
@@ -126,15 +126,25 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
         },
         fine = 90 / (FIG7_ELEVATIONS - 1),
     );
-    Ok(Keyed {
-        page: Charts {
-            size: (520, 540),
-            title: "Worst-case S̄ over light directions against S̄ behind".into(),
-            caption: vec![caption],
-            charts: vec![abs, ratio],
-        },
-        key: Some(0),
-        single_caption: Some(format!(
+    // One column: (b) alone, the claim's test, with a key of its own (short names; the band's
+    // swatch), and the ranges in the caption.
+    let mut ratio_single = ratio.clone();
+    ratio_single.title = String::new();
+    for s in ratio_single.series.iter_mut().filter(|s| !s.reference) {
+        s.label = SCHEMES
+            .iter()
+            .zip(LOOKS)
+            .find(|(_, look)| look.colour() == s.colour)
+            .map(|(scheme, _)| scheme.0.to_string());
+    }
+    ratio_single.series.push(Series {
+        width: 10,
+        ..Series::line("the paper's 2–3×", Vec::new(), BAND).reference()
+    });
+    let single = Charts {
+        size: (Column::Single.width(), SINGLE_HEIGHT),
+        title: "Worst-case S̄ over S̄ behind".into(),
+        caption: vec![format!(
             "Lloyd et al. 2006, §5.3 claims the worst S̄ over all light directions within 2–3 \
              times S̄ behind (Eq 20, 21). f/n\u{a0}=\u{a0}{}, θ\u{a0}=\u{a0}{:.0}°, lights \
              {}° apart: {}.",
@@ -142,7 +152,20 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
             view.half_fov().to_degrees(),
             90 / (ELEVATIONS - 1),
             extremes.join("; "),
-        )),
+        )],
+        charts: vec![ratio_single],
+    };
+    Ok(Keyed {
+        single: Some(Box::new(Keyed::new(single, Some(0)))),
+        ..Keyed::new(
+            Charts {
+                size: (520, 540),
+                title: "Worst-case S̄ over light directions against S̄ behind".into(),
+                caption: vec![caption],
+                charts: vec![abs, ratio],
+            },
+            Some(0),
+        )
     })
 }
 
@@ -184,6 +207,32 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// Every k from 1 to 8 is computed (the third review: with k = 5 and 7 missing, the
+    /// segments across them implied values never computed), in both panels, and the one-column
+    /// page keeps (b), the claim's test, with its own key of the three schemes and the band.
+    #[test]
+    fn every_k_computed_and_one_column_keeps_the_ratio() {
+        let fig = worst_case()
+            .map_err(|e| e.named("lloyd2006-worst-case"))
+            .unwrap();
+        let every: Vec<f64> = (1..=8).map(f64::from).collect();
+        for chart in &fig.page.charts {
+            for s in chart.series.iter().filter(|s| !s.points.is_empty()) {
+                let ks: Vec<f64> = s.points.iter().map(|p| p.0).collect();
+                assert_eq!(ks, every, "{:?}", s.label);
+            }
+        }
+        let single = fig.single.as_ref().unwrap();
+        assert_eq!(single.page.charts.len(), 1);
+        let labels: Vec<&str> = single.page.charts[0]
+            .series
+            .iter()
+            .filter_map(|s| s.label.as_deref())
+            .collect();
+        assert_eq!(labels, ["ZP", "ZP+W", "FP+ZP+W", "the paper's 2–3×"]);
+        assert!(single.page.size.1 <= 525);
     }
 
     /// No legend entry for a hidden line (issue 25): two labelled series of a chart never have

@@ -201,10 +201,10 @@ fn in_columns(sizes: &[(u32, u32)], columns: usize) -> Grid {
     }
 }
 
-/// The most columns (at most one per entry) whose box is no wider than `width`; one column
-/// where even that is wider.
-fn grid(sizes: &[(u32, u32)], width: f64) -> Grid {
-    (1..=sizes.len().max(1))
+/// The most columns (at most one per entry, at most `most`) whose box is no wider than
+/// `width`; one column where even that is wider.
+fn grid(sizes: &[(u32, u32)], width: f64, most: Option<usize>) -> Grid {
+    (1..=most.unwrap_or(usize::MAX).min(sizes.len()).max(1))
         .rev()
         .map(|c| in_columns(sizes, c))
         .find(|g| g.w <= width)
@@ -225,12 +225,13 @@ pub(crate) enum Placed {
 /// coordinates) where it covers none of `obstacles` ([`clear_inside`]); failing that, in
 /// `strip` (an area below the chart; centred under the plot where it is no wider, else in the
 /// strip) when there is one. Returns where it went: without a strip, the height a strip
-/// `below_width` units wide would need.
+/// `below_width` units wide would need. `most`: at most this many columns (entries row by row:
+/// a key whose columns group its entries).
 pub(crate) fn draw_legend_clear<DB: DrawingBackend>(
     plot_area: &DrawingArea<DB, Shift>,
     strip: Option<&DrawingArea<DB, Shift>>,
     below_width: f64,
-    entries: &[Entry],
+    (entries, most): (&[Entry], Option<usize>),
     preferred: &SeriesLabelPosition,
     obstacles: &Obstacles,
 ) -> Result<Placed, Fail> {
@@ -240,7 +241,7 @@ pub(crate) fn draw_legend_clear<DB: DrawingBackend>(
     let sizes = measure(plot_area, entries)?;
     let plot = pixel_rect(plot_area);
     // One column, else two or three (a wide, low box may fit above or below the data).
-    for columns in 1..=sizes.len().min(3) {
+    for columns in 1..=sizes.len().min(3).min(most.unwrap_or(3)) {
         let g = in_columns(&sizes, columns);
         if let Some(r) = clear_inside(preferred, &plot, g.w, g.h, obstacles) {
             draw_box(plot_area, entries, &r, &g)?;
@@ -248,11 +249,11 @@ pub(crate) fn draw_legend_clear<DB: DrawingBackend>(
         }
     }
     let Some(strip) = strip else {
-        let g = grid(&sizes, below_width - 2.0 * MARGIN);
+        let g = grid(&sizes, below_width - 2.0 * MARGIN, most);
         return Ok(Placed::Below((g.h + 2.0 * MARGIN).ceil() as u32));
     };
     let s = pixel_rect(strip);
-    let g = grid(&sizes, s.x1 - s.x0 - 2.0 * MARGIN);
+    let g = grid(&sizes, s.x1 - s.x0 - 2.0 * MARGIN, most);
     let x0 = if g.w <= plot.x1 - plot.x0 {
         0.5 * (plot.x0 + plot.x1 - g.w)
     } else {

@@ -161,6 +161,9 @@ pub(crate) struct Series {
     /// The marker's shape where it is not its colour's ([`Marker::of`]): a scheme drawn in one
     /// colour for two lights keeps its colour and differs by shape.
     pub shape: Option<Marker>,
+    /// A key entry only (no points): its sample shows the line and the marker of a line drawn
+    /// elsewhere without a label (its markers a separate series).
+    pub sample: bool,
 }
 
 impl Series {
@@ -177,6 +180,7 @@ impl Series {
             direct: false,
             direct_at: None,
             shape: None,
+            sample: false,
         }
     }
     /// The same series labelled directly at its right end instead of in the legend.
@@ -231,6 +235,8 @@ pub(crate) struct LineChart {
     /// The legend goes below the plot even where a clear place inside exists (a figure's one
     /// key under all its panels).
     pub legend_below: bool,
+    /// The legend's columns where they fit (entries row by row); `None`: as many as fit.
+    pub legend_columns: Option<usize>,
 }
 
 impl LineChart {
@@ -246,6 +252,7 @@ impl LineChart {
             notes: Vec::new(),
             bands: Vec::new(),
             legend_below: false,
+            legend_columns: None,
         }
     }
 }
@@ -494,10 +501,11 @@ fn draw_chart<DB: DrawingBackend>(
                 colour: s.colour,
                 width: s.width,
                 dash: s.dash,
-                marker: (!s.reference && (s.markers || colours > 1)).then_some(shape),
+                marker: (!s.reference && (s.markers || s.sample || colours > 1)).then_some(shape),
                 // A reference line always shows its line (it has no marker; with no points of
                 // its own, a key for lines drawn elsewhere, the sample was empty).
                 line: s.reference
+                    || s.sample
                     || s.points
                         .windows(2)
                         .any(|w| w[0].1.is_finite() && w[1].1.is_finite()),
@@ -552,7 +560,14 @@ fn draw_chart<DB: DrawingBackend>(
         fill_fine_polygon(&plot, *p, outline, *colour)?;
     }
     if c.show_legend {
-        draw_legend_clear(&plot, strip, below_width, &entries, &c.legend, &obstacles)
+        draw_legend_clear(
+            &plot,
+            strip,
+            below_width,
+            (&entries, c.legend_columns),
+            &c.legend,
+            &obstacles,
+        )
     } else {
         Ok(Placed::Inside)
     }

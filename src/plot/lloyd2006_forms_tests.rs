@@ -1,0 +1,265 @@
+//! Tests of the Lloyd et al. 2006 closed-form figures' three forms (the third figure review of
+//! issue 35): labels in their curves' order, keys sized to and placed by their content, the
+//! one-column pages at most 525 units tall, and the captions' computed statements.
+
+use super::*;
+use crate::plot::chart::read_svg::{attr, texts};
+use crate::plot::Figure;
+
+/// The figure `name` as the command writes its SVG, in the form `column`, captioned or `bare`.
+fn svg_of(name: &str, column: Column, bare: bool) -> String {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static CALLS: AtomicUsize = AtomicUsize::new(0);
+    let dir = std::env::temp_dir().join(format!(
+        "lloyd2006-forms-{name}-{}-{}",
+        std::process::id(),
+        CALLS.fetch_add(1, Ordering::Relaxed)
+    ));
+    let opts = crate::plot::Options {
+        bare,
+        column,
+        ..crate::plot::Options::default()
+    };
+    let files = crate::plot::render_with(name, &dir, crate::plot::Format::Svg, &opts).unwrap();
+    let svg = std::fs::read_to_string(&files[0]).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    svg
+}
+
+/// The centre of every `<polygon>` filled in `fill` (a marker), in SVG units.
+fn markers(svg: &str, fill: &str) -> Vec<(f64, f64)> {
+    svg.lines()
+        .filter(|l| l.starts_with("<polygon") && l.contains(&format!("fill=\"{fill}\"")))
+        .filter_map(|l| {
+            let at = l.find(" points=\"")? + 9;
+            let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
+                .split(' ')
+                .filter_map(|p| {
+                    let (x, y) = p.split_once(',')?;
+                    Some((x.parse().ok()?, y.parse().ok()?))
+                })
+                .collect();
+            let n = pts.len() as f64;
+            Some((
+                pts.iter().map(|p| p.0).sum::<f64>() / n,
+                pts.iter().map(|p| p.1).sum::<f64>() / n,
+            ))
+        })
+        .collect()
+}
+
+/// `c` as an SVG writes it.
+fn hex(c: RGBColor) -> String {
+    format!("#{:02X}{:02X}{:02X}", c.0, c.1, c.2)
+}
+
+/// The x and y of the one text of `svg` that reads `label`.
+fn text_at(svg: &str, label: &str) -> (f64, f64) {
+    let t = texts(svg);
+    let found: Vec<_> = t.iter().filter(|t| t.1 == label).collect();
+    assert_eq!(found.len(), 1, "{label:?} written {} times", found.len());
+    (attr(found[0].0, "x").unwrap(), found[0].2)
+}
+
+/// The third review: (b)'s labels lie in the order of their curves at the far plane, top to
+/// bottom (n′ = 100 was above n′ = 20 in one column), and LiSPSM's right of z = 10, off the
+/// crossing of five curves at z ≈ 7 where it covered n′ = ∞ (by hand from Eq 8's last term
+/// (z − n + n′)²/(z (f − n + n′) n′) at z = 20: 1, 0.525, 0.224, 0.098, 0.059, 0.05).
+#[test]
+fn fig5_labels_in_their_curves_order() {
+    let svg = svg_of("lloyd2006-fig5", Column::Double, false);
+    let order = [
+        "n′ = n = 1 (PSM)",
+        "n′ = 2",
+        "LiSPSM",
+        "n′ = 20",
+        "n′ = 100",
+        "n′ = ∞ (uniform)",
+    ];
+    let ys: Vec<f64> = order.iter().map(|l| text_at(&svg, l).1).collect();
+    for (w, l) in ys.windows(2).zip(order.windows(2)) {
+        assert!(
+            w[0] < w[1],
+            "{} at {} not above {} at {}",
+            l[0],
+            w[0],
+            l[1],
+            w[1]
+        );
+    }
+    // (b)'s tick "10": the second of the two panels'.
+    let mut tens: Vec<f64> = texts(&svg)
+        .iter()
+        .filter(|t| t.1 == "10")
+        .map(|t| attr(t.0, "x").unwrap())
+        .collect();
+    tens.sort_by(f64::total_cmp);
+    let (x, _) = text_at(&svg, "LiSPSM");
+    assert!(
+        x > tens[1],
+        "LiSPSM's label at x = {x}, z = 10 at {}",
+        tens[1]
+    );
+}
+
+/// One column (the third review: its labels of n′ = 20 and n′ = 100 stood in the wrong order
+/// between curves too close for a label): a key under both panels names the six curves in
+/// their order, row by row, and (a) needs no note; across two columns (a) says in the figure
+/// that its curves are (b)'s, captioned and bare (it was said in the caption only).
+#[test]
+fn fig5_one_column_key_and_a_names_its_curves() {
+    let svg = svg_of("lloyd2006-fig5", Column::Single, false);
+    let key: Vec<(f64, f64)> = ["PSM", "n′ = 2", "LiSPSM", "n′ = 20", "n′ = 100", "n′ = ∞"]
+        .iter()
+        .map(|l| text_at(&svg, l))
+        .collect();
+    for w in key.windows(2) {
+        let next = (w[1].1 - w[0].1).abs() < 0.5 && w[1].0 > w[0].0 || w[1].1 > w[0].1 + 5.0;
+        assert!(next, "key out of order: {key:?}");
+    }
+    assert!(!svg.contains("curves as in (b)"));
+    for bare in [false, true] {
+        let svg = svg_of("lloyd2006-fig5", Column::Double, bare);
+        text_at(&svg, "curves as in (b)");
+    }
+}
+
+/// Fig 6 (the third review): the key, three entries, sits inside (a)'s plot (between (a)'s y
+/// axis and (b)'s) in one column of three rows (it was a two-column box below, 40 % empty);
+/// where M_z and S̄ meet for η ≥ 0 (both (f − n)/(2 tan θ) = 85.74 at η = 1), their markers
+/// lie at least 12 units apart (✚ and ◀ lay on each other at η ≈ 0.85); the titles name the
+/// scales.
+#[test]
+fn fig6_key_inside_a_and_markers_apart() {
+    let fig = fig6().map_err(|e| e.named("lloyd2006-fig6")).unwrap();
+    assert_eq!(fig.page.charts[0].title, "(a) log scale");
+    assert_eq!(fig.page.charts[1].title, "(b) M_z, linear scale");
+    let svg = svg_of("lloyd2006-fig6", Column::Double, false);
+    let boxes: Vec<(f64, f64, f64)> = svg
+        .lines()
+        .filter(|l| l.starts_with("<rect") && l.contains("stroke=\"#787878\""))
+        .map(|l| {
+            (
+                attr(l, "x").unwrap(),
+                attr(l, "x").unwrap() + attr(l, "width").unwrap(),
+                attr(l, "y").unwrap() + attr(l, "height").unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(boxes.len(), 1, "{boxes:?}");
+    // (b)'s tick label "−1" is right of (a)'s plot; the x axis labels are under both plots.
+    let mut minus: Vec<f64> = texts(&svg)
+        .iter()
+        .filter(|t| t.1 == "−1")
+        .map(|t| attr(t.0, "x").unwrap())
+        .collect();
+    minus.sort_by(f64::total_cmp);
+    let axis_y = texts(&svg).iter().find(|t| t.1 == "−1").unwrap().2;
+    let (x0, x1, bottom) = boxes[0];
+    assert!(
+        x0 > minus[0] && x1 < minus[1] && bottom < axis_y,
+        "{boxes:?} {minus:?} {axis_y}"
+    );
+    let (x, y) = text_at(&svg, "Mx");
+    assert!(x > x0 && x < x1 && y < bottom, "M_x outside the key");
+    let inside = texts(&svg)
+        .iter()
+        .filter(|t| {
+            let x = attr(t.0, "x").unwrap();
+            x > x0 && x < x1 && t.2 > bottom - 70.0 && t.2 < bottom
+        })
+        .count();
+    assert_eq!(inside, 3, "the key's three entries");
+    let (mz, s) = (
+        markers(&svg, &hex(sweep(1, 3))),
+        markers(&svg, &hex(sweep(2, 3))),
+    );
+    let right = |p: &&(f64, f64)| p.0 > minus[0] && p.0 < minus[1];
+    let mut closest = f64::INFINITY;
+    for p in mz.iter().filter(right) {
+        for q in s.iter().filter(right) {
+            closest = closest.min((p.0 - q.0).hypot(p.1 - q.1));
+        }
+    }
+    assert!(closest >= 12.0, "M_z and S̄ markers {closest} apart");
+}
+
+/// Fig 10 in one column: one panel, S̄ from 1 to 10³ (the optima, 1.99 to 7.98, were squeezed
+/// into the bottom of four decades), on a page at most 525 units tall.
+#[test]
+fn fig10_one_column_to_a_thousand() {
+    let fig = fig10().map_err(|e| e.named("lloyd2006-fig10")).unwrap();
+    let single = fig.single.as_ref().unwrap();
+    assert_eq!(single.page.charts.len(), 1);
+    let y = &single.page.charts[0].y;
+    assert_eq!((y.min, y.max), (1.0, 1e3));
+    assert!(fig.single_size().unwrap().1 <= 525);
+}
+
+/// Fig 12 (the third review: "55.0 needs tan θ = 1 while the figure states θ = 30°"): the
+/// caption says that Eq 21's face sub-frusta have tan θ_eff = 1 whatever θ. By hand: from
+/// behind a face's triangle has base 2f tan θ and height f tan θ, so tan θ_eff =
+/// (f tan θ)/(f tan θ) = 1; with it Eq 21 at k = 4, f/n = 1000 gives 8(1000^{1/4} − 1) + 1 =
+/// 37.987, Fig 12's point; with tan 30° it would be 64.4. The key groups its entries by
+/// light: overhead in one column, behind in the other.
+#[test]
+fn fig12_caption_gives_theta_eff_and_key_grouped_by_light() {
+    let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
+    let caption = fig.page.caption.join(" ").replace('\u{a0}', " ");
+    assert!(caption.contains("tan θ_{eff} = 1 (45°)"), "{caption}");
+    let single = fig.single.as_ref().unwrap().page.caption.join(" ");
+    assert!(single.replace('\u{a0}', " ").contains("tan θ_{eff} = 1"));
+    let behind = fig.page.charts[0]
+        .series
+        .iter()
+        .find(|s| s.label.as_deref() == Some("FP+ZP+W, behind"))
+        .unwrap();
+    let at17 = behind.points.iter().find(|p| p.0 == 17.0).unwrap().1;
+    let by_hand = 8.0 * (1000f64.powf(0.25) - 1.0) + 1.0;
+    assert!((at17 - by_hand).abs() < 1e-9, "{at17} vs {by_hand}");
+    let svg = svg_of("lloyd2006-fig12", Column::Double, false);
+    let x = |l: &str| text_at(&svg, l).0;
+    let over = [
+        x("ZP, overhead"),
+        x("ZP+W, overhead"),
+        x("FP+ZP+W, overhead"),
+    ];
+    let back = [x("ZP = ZP+W, behind"), x("FP+ZP+W, behind")];
+    assert!(over.iter().all(|v| (v - over[0]).abs() < 0.5), "{over:?}");
+    assert!(back.iter().all(|v| (v - back[0]).abs() < 0.5), "{back:?}");
+    assert!(back[0] > over[0] + 20.0);
+}
+
+/// Fig 13's caption says why θ does not matter (Eq 20 has none, Eq 21's faces have
+/// tan θ_eff = 1, as by hand in the test above) and how the regions read.
+#[test]
+fn fig13_caption_says_any_theta() {
+    let svg = svg_of("lloyd2006-fig13", Column::Double, false);
+    let caption: String = texts(&svg)
+        .iter()
+        .filter(|t| t.0.contains("#323232"))
+        .map(|t| t.1.clone())
+        .collect::<Vec<_>>()
+        .join(" ")
+        .replace('\u{a0}', " ");
+    assert!(caption.contains("tan θeff = 1"), "{caption}");
+    assert!(caption.contains("FP+ZP+W needs less storage"), "{caption}");
+}
+
+/// Every one of these figures' one-column pages is at most 525 units (420 pt printed) tall
+/// (the third review: 640 pt, a whole column).
+#[test]
+fn one_column_pages_fit_420_pt() {
+    let keyed = [
+        ("fig5", fig5().ok().unwrap()),
+        ("fig6", fig6().ok().unwrap()),
+        ("fig10", fig10().ok().unwrap()),
+        ("fig12", fig12().ok().unwrap()),
+    ];
+    for (name, fig) in &keyed {
+        let (w, h) = fig.single_size().unwrap();
+        assert!(w == 300 && h <= 525, "{name}: {w} × {h}");
+    }
+    let (w, h) = fig13().ok().unwrap().single_size().unwrap();
+    assert!(w == 300 && h <= 525, "fig13: {w} × {h}");
+}
