@@ -13,6 +13,8 @@
 //! - no caption line ends or starts inside a formula ("=" at a line's end or start).
 #![cfg(feature = "plot")]
 
+mod figures_style_read;
+use figures_style_read as read;
 use shadow_aliasing::plot::{render_with, Column, Format, Options};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -231,9 +233,27 @@ fn the_key_and_the_plane_labels_are_in_every_form() {
             for want in ["Maps, nearest first:", "frustum", "split plane"] {
                 assert!(t.iter().any(|x| x == want), "{name} {form}: no {want:?}");
             }
-            assert!(t.iter().any(|x| x.starts_with("n = 1")), "{name} {form}");
-            assert!(t.iter().any(|x| x.starts_with("z = ")), "{name} {form}");
-            assert!(t.iter().any(|x| x.starts_with("f = ")), "{name} {form}");
+            // One column sets a label on two lines, "z =" over "31.62": joined here.
+            let joined: Vec<String> = (0..t.len())
+                .filter(|&i| i == 0 || !t[i - 1].ends_with(" ="))
+                .map(|i| match t.get(i + 1) {
+                    Some(next) if t[i].ends_with(" =") => format!("{} {next}", t[i]),
+                    _ => t[i].clone(),
+                })
+                .collect();
+            let t = joined.clone();
+            assert!(
+                joined.iter().any(|x| x.starts_with("n = 1")),
+                "{name} {form}"
+            );
+            assert!(
+                joined.iter().any(|x| x.starts_with("z = ")),
+                "{name} {form}"
+            );
+            assert!(
+                joined.iter().any(|x| x.starts_with("f = ")),
+                "{name} {form}"
+            );
             // No bare depth: every plane label names its plane.
             assert!(
                 !t.iter()
@@ -347,5 +367,269 @@ fn fig11_labels_keep_the_planes_order() {
         };
         let ys = [y("f = 8"), y("z = 4"), y("z = 2"), y("n = 1")];
         assert!(ys.windows(2).all(|w| w[0] < w[1]), "{form}: {ys:?}");
+    }
+}
+
+/// Figure review 3, X6: the horizontal axis reads "−x in light space" (as "light −x" it read
+/// "light minus x") in every form of both figures.
+#[test]
+fn the_x_axis_cannot_read_as_minus() {
+    for name in FIGS {
+        for (form, opts) in forms() {
+            let t = texts(&svg(name, form, &opts));
+            assert!(!t.iter().any(|x| x == "light −x"), "{name} {form}");
+            assert!(t.iter().any(|x| x == "−x in light space"), "{name} {form}");
+        }
+    }
+}
+
+/// The thin black closed squares of lloyd2006-fig11 (its split planes z = 2 and z = 4): their
+/// corners (min x, min y, max x, max y).
+fn thin_squares(svg: &str) -> Vec<[f64; 4]> {
+    elements(svg, "polyline")
+        .into_iter()
+        .filter(|e| attr(e, "stroke") == Some("#000000") && attr(e, "stroke-width") == Some("1"))
+        .map(points)
+        .filter(|p| p.len() == 5 && p[0] == p[4])
+        .map(|p| {
+            p.iter().fold(
+                [
+                    f64::INFINITY,
+                    f64::INFINITY,
+                    f64::NEG_INFINITY,
+                    f64::NEG_INFINITY,
+                ],
+                |b, q| [b[0].min(q.0), b[1].min(q.1), b[2].max(q.0), b[3].max(q.1)],
+            )
+        })
+        .collect()
+}
+
+/// The maps' dashes (width-2 polylines not black) of an SVG, by colour.
+fn map_pieces(svg: &str) -> BTreeMap<String, Vec<Vec<(f64, f64)>>> {
+    let mut by: BTreeMap<String, Vec<Vec<(f64, f64)>>> = BTreeMap::new();
+    for el in elements(svg, "polyline") {
+        if attr(el, "stroke-width") != Some("2") || attr(el, "stroke") == Some("#000000") {
+            continue;
+        }
+        by.entry(attr(el, "stroke").unwrap().to_string())
+            .or_default()
+            .push(points(el));
+    }
+    by
+}
+
+/// lloyd2006-fig11's maps lie on its split planes (each map is the square of its far plane):
+/// drawn on them, the maps' dashes hid the thin black line in their gaps, so map 1 read as
+/// black and purple dashes and the split plane's key matched nothing (figure review 3). Every
+/// dash now runs beside both split planes' squares: at least 1.5 units from every side
+/// (points on a side's line within its span), and both squares are drawn.
+#[test]
+fn fig11_maps_run_beside_the_split_planes() {
+    for (form, opts) in forms() {
+        let s = svg("lloyd2006-fig11", form, &opts);
+        let squares = thin_squares(&s);
+        assert_eq!(squares.len(), 2, "{form}: {squares:?}");
+        for (colour, pieces) in map_pieces(&s) {
+            for p in pieces.iter().flatten() {
+                for b in &squares {
+                    let on_side = |x: f64, y: f64| -> f64 {
+                        // The distance from p to the square's outline where p lies across
+                        // from a side (between its ends), else infinite.
+                        let mut d = f64::INFINITY;
+                        if p.1 >= b[1] - 1.0 && p.1 <= b[3] + 1.0 {
+                            d = d.min((p.0 - x).abs());
+                        }
+                        if p.0 >= b[0] - 1.0 && p.0 <= b[2] + 1.0 {
+                            d = d.min((p.1 - y).abs());
+                        }
+                        d
+                    };
+                    let d = on_side(b[0], b[1]).min(on_side(b[2], b[3]));
+                    assert!(
+                        d >= 1.5,
+                        "{form}: a dash of {colour} at {p:?} lies on {b:?}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Maps 1 and 3 of lloyd2006-fig11 differ in kind, not only in dash length (figure review 3:
+/// both dashed, they were one in greyscale): map 3 (#674CA0) is dash-dot, its pieces of two
+/// lengths, dots (≤ 3 units) and dashes (≥ 9), while map 1 (#3F007D) has dashes of one length.
+#[test]
+fn fig11_map_three_is_dash_dot() {
+    for (form, opts) in forms() {
+        let d = map_dashes(&svg("lloyd2006-fig11", form, &opts));
+        let count =
+            |lens: &[f64], keep: &dyn Fn(f64) -> bool| lens.iter().filter(|&&l| keep(l)).count();
+        let three = &d["#674CA0"];
+        assert!(count(three, &|l| l <= 3.0) >= 8, "{form}: {three:?}");
+        assert!(count(three, &|l| l >= 9.0) >= 8, "{form}: {three:?}");
+        let one = &d["#3F007D"];
+        // At most the two ends of its closed outline, where the pattern is cut, are short.
+        assert!(count(one, &|l| l <= 3.0) <= 2, "{form}: {one:?}");
+    }
+}
+
+/// lloyd2006-fig11's y axis is as long above the frustum as below (figure review 3: it ran to
+/// −6.5 for the dimension under the far face and ended at 4.9 above): the labelled y ticks are
+/// symmetric about 0 and within the far face's half-side 8 tan 30° = 4.62 (by hand), so no
+/// "−6" labels the margin.
+#[test]
+fn fig11_y_axis_is_centred_on_the_frustum() {
+    for (form, opts) in forms() {
+        let s = svg("lloyd2006-fig11", form, &opts);
+        let mut ys: Vec<f64> = Vec::new();
+        let mut rest = s.as_str();
+        while let Some(i) = rest.find("<text") {
+            let open = i + rest[i..].find('>').unwrap();
+            let close = open + rest[open..].find("</text>").unwrap();
+            let tag = &rest[i..open];
+            // The y ticks: right-aligned numbers.
+            if attr(tag, "text-anchor") == Some("end") {
+                if let Ok(v) = rest[open + 1..close].replace('−', "-").parse::<f64>() {
+                    ys.push(v);
+                }
+            }
+            rest = &rest[close..];
+        }
+        assert!(ys.len() >= 3, "{form}: {ys:?}");
+        for v in &ys {
+            assert!(v.abs() <= 4.62, "{form}: a y tick {v}");
+            assert!(ys.contains(&-v), "{form}: {ys:?} not symmetric");
+        }
+    }
+}
+
+/// The maps' colours stand out from white and from their own 8 % tint: each at least 4:1
+/// against white by WCAG's relative luminance (computed here from the sRGB values), where the
+/// lightest sweep step, #9589C0, is 3.17:1 and was map 4's (figure review 3: "low contrast").
+#[test]
+fn map_colours_have_contrast() {
+    let lum = |hex: &str| {
+        let c: Vec<f64> = (0..3)
+            .map(|k| f64::from(u8::from_str_radix(&hex[1 + 2 * k..3 + 2 * k], 16).unwrap()) / 255.0)
+            .map(|v| {
+                if v <= 0.03928 {
+                    v / 12.92
+                } else {
+                    ((v + 0.055) / 1.055).powf(2.4)
+                }
+            })
+            .collect();
+        0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
+    };
+    assert!((1.05 / (lum("#9589C0") + 0.05) - 3.17).abs() < 0.01);
+    for name in FIGS {
+        for (form, opts) in forms() {
+            for colour in map_dashes(&svg(name, form, &opts)).keys() {
+                let ratio = 1.05 / (lum(colour) + 0.05);
+                assert!(ratio >= 4.0, "{name} {form}: {colour} at {ratio:.2}:1");
+            }
+        }
+    }
+}
+
+/// barroso-fig5's panel titles: on one baseline across each row and from one left edge down
+/// each column, in every form (figure review 3: centred over cells narrowed to their drawings,
+/// "(a) perpendicular" stood 9 units below "(b) parallel", and "(c) Eq 19, not in the paper"
+/// started 3 units from the page's edge, left of (a) and (e)).
+#[test]
+fn barroso_titles_share_baselines_and_left_edges() {
+    let font = read::Font::dejavu();
+    for (form, opts) in forms() {
+        let all = read::texts(&font, &svg("barroso-fig5", form, &opts));
+        let title = |letter: &str| -> (f64, f64) {
+            // Not a caption line (grey #323232) that starts with a panel's letter.
+            let t = all
+                .iter()
+                .find(|t| t.content.starts_with(letter) && !t.tag.contains("#323232"))
+                .unwrap_or_else(|| panic!("{form}: no title {letter}"));
+            (t.bbox[0], t.y)
+        };
+        let [a, b, c, d, e, f] = ["(a)", "(b)", "(c)", "(d)", "(e)", "(f)"].map(title);
+        for (l, r) in [(a, b), (c, d), (e, f)] {
+            assert!((l.1 - r.1).abs() < 0.5, "{form}: baselines {l:?} {r:?}");
+        }
+        for col in [[a, c, e], [b, d, f]] {
+            assert!(
+                col.iter().all(|t| (t.0 - col[0].0).abs() < 0.5),
+                "{form}: left edges {col:?}"
+            );
+        }
+    }
+}
+
+/// No text of either figure comes within 3 units of the page's left or right edge, in any form
+/// (figure review 3: barroso-fig5's "(a) perpendicular" started 0.5 units from it in one
+/// column), each text's box measured with DejaVu Sans' advance widths.
+#[test]
+fn no_text_within_three_units_of_the_edge() {
+    let font = read::Font::dejavu();
+    for name in FIGS {
+        for (form, opts) in forms() {
+            let s = svg(name, form, &opts);
+            let head = &s[..s.find('>').unwrap()];
+            let vb: Vec<f64> = read::attr_str(head, "viewBox")
+                .unwrap()
+                .split_whitespace()
+                .map(|v| v.parse().unwrap())
+                .collect();
+            let (x0, x1) = (vb[0], vb[0] + vb[2]);
+            for t in read::texts(&font, &s) {
+                if t.content.trim().is_empty() {
+                    continue;
+                }
+                assert!(
+                    t.bbox[0] >= x0 + 3.0 && t.bbox[2] <= x1 - 3.0,
+                    "{name} {form}: {:?} spans {:.1}–{:.1} of {x0}–{x1}",
+                    t.content,
+                    t.bbox[0],
+                    t.bbox[2]
+                );
+            }
+        }
+    }
+}
+
+/// barroso-fig5 in one column sets its text as the other one-column figures do (figure review
+/// 3, X9: its ticks and labels were 8.065 units, 6.45 pt printed, against 10.48 units, 8.4 pt,
+/// elsewhere): every text but the page's title and caption is at least 10.48 units, and the
+/// plane labels and ticks are 10.48 (13 / 1.24 = 10.484, plotters' size in the SVG).
+#[test]
+fn barroso_single_type_matches_the_other_single_figures() {
+    let font = read::Font::dejavu();
+    let s = svg("barroso-fig5", "single", &forms()[2].1);
+    let all = read::texts(&font, &s);
+    assert!(!all.is_empty());
+    for t in &all {
+        assert!(t.fs >= 10.48, "{:?} at {}", t.content, t.fs);
+    }
+    for want in ["z =", "31.62", "−50", "Maps, nearest first:"] {
+        let t = all.iter().find(|t| t.content == want).unwrap();
+        assert!((t.fs - 13.0 / 1.24).abs() < 0.01, "{want}: {}", t.fs);
+    }
+}
+
+/// barroso-fig5's caption names Barroso's α as his target ratio (figure review 3, X2: α is f/n
+/// in the Lloyd figures), and names the thick line across (c) and (f), which is the far face's
+/// lower edge seen from a light 45° up, not a split plane; (f) names it in the figure too, so
+/// `--bare` keeps it.
+#[test]
+fn barroso_alpha_is_the_target_ratio_and_the_far_face_is_named() {
+    let s = svg("barroso-fig5", "double", &Options::default());
+    let flat = s.replace('\u{a0}', " ");
+    assert!(
+        flat.contains("target ratio α = 2 (Barroso&apos;s Eq 19)")
+            || flat.contains("target ratio α = 2 (Barroso's Eq 19)"),
+        "no target ratio in the caption"
+    );
+    assert!(flat.contains("far face"));
+    for (form, opts) in forms().into_iter().take(2) {
+        let t = texts(&svg("barroso-fig5", form, &opts));
+        assert!(t.iter().any(|x| x == "far face"), "{form}");
     }
 }

@@ -1,11 +1,11 @@
 //! Barroso & Celes 2007 Fig 7: the generalised LiSPSM parameter n′ against the angle γ between
-//! the light and view directions (n = 1, f = 100, φ_y = π/6), with both fall-offs r(γ), the
+//! the light and view directions (n = 1, f = 100, φ_y = 30°), with both fall-offs r(γ), the
 //! branches of their Eq 13, LiSPSM's 1/sin γ rule and the crate's n′ that minimises M_z over the
 //! whole frustum (`WarpRule::MinimaxMz`, the frustum-wide version of Barroso's objective).
 
 use super::chart::{
-    column, draw_line_chart_over, frame, legend_below, linspace, Axis, Charts, LineChart, Look,
-    Marker, Note, Series, FONT, PALETTE,
+    column, draw_line_chart_over, fmt_power, frame, legend_below, linspace, Axis, Charts,
+    LineChart, Look, Marker, Note, Series, FONT, PALETTE,
 };
 use super::{Column, Fail, Figure};
 use crate::analytic::tilted::{gamma_lim, generalized_n_prime, n_prime_1, n_prime_2, Falloff};
@@ -27,6 +27,24 @@ const WINDOW: (f64, f64) = (20.0, 45.0);
 /// largest n′ in the window, LiSPSM's 11/sin 20° = 32.2) holds the two angles' labels.
 const WINDOW_N: (f64, f64) = (0.3, 300.0);
 
+/// Where (a)'s note on the curves clipped at its top starts (γ in degrees, n′): right of where
+/// they leave the frame (γ < 5°), in the top decade, which no curve crosses right of 10°.
+const CLIPPED_NOTE: (f64, f64) = (7.0, 5000.0);
+
+/// The one-column title: one line at one column's title size (the two-column one took two).
+const SINGLE_TITLE: &str = "Generalised LiSPSM n′ against γ";
+
+/// The key's labels in one column, short enough for two columns of entries under the 288-unit
+/// page (the two-column labels set one entry a row, six rows: 130 units).
+const SINGLE_LABELS: [&str; 6] = [
+    "Barroso (paper)",
+    "Zhang",
+    "LiSPSM",
+    "least M_{z}",
+    "n′_{1}, Eq 13",
+    "n′_{2}, Eq 13",
+];
+
 /// Barroso & Celes' Fig 7: panels (a) and (b) with one legend, and the caption for each page
 /// width.
 pub(super) struct Fig7 {
@@ -36,7 +54,9 @@ pub(super) struct Fig7 {
 
 pub(super) fn fig7() -> Result<Fig7, Fail> {
     let (n, f) = (1.0, 100.0);
-    let view = ViewFrustum::new(n, f, std::f64::consts::FRAC_PI_6)?;
+    let view = ViewFrustum::new(n, f, 30f64.to_radians())?;
+    // In degrees, as every figure gives its angles (figure review 3, X2: "π/6" here only).
+    let phi_deg = view.half_fov().to_degrees();
     let gl = gamma_lim(&view);
     let degrees = linspace(0.0, 90.0, 361);
     let finite = |n: NPrime| n.as_finite();
@@ -113,13 +133,20 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     // (a) has no angle lines: φ_y = 30° and γ_lim = 30.5° lie under a point apart there and
     // read as one line; (b) draws them apart. Its key is (b)'s, below the panels.
     c.show_legend = false;
+    // Three curves run off the top of (a) as γ → 0 (each n′ → ∞ there): the note says so, its
+    // arrow towards them (figure review 3: a marker sat on the frame, nothing said they go on).
+    c.notes.push(Note {
+        at: (CLIPPED_NOTE.0, CLIPPED_NOTE.1),
+        text: format!("← clipped at {}", fmt_power(c.y.max)),
+        colour: RGBColor(90, 90, 90),
+    });
     let zoom = magnified(&c, gl.to_degrees(), view.half_fov().to_degrees());
     let charts = Charts {
         size: (520, 540),
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![format!(
             "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-             φ_y\u{a0}=\u{a0}π/6. Bold: the paper's curve (Barroso's fall-off r(γ)); for \
+             φ_y\u{a0}=\u{a0}{phi_deg:.0}°. Bold: the paper's curve (Barroso's fall-off r(γ)); for \
              comparison Zhang's fall-off, LiSPSM's rule and the n′ of least M_z over the \
              frustum; Eq 13's branches each on its domain. (b) enlarges γ from {}° to {}°: the \
              least-M_z curve turns near γ\u{a0}=\u{a0}φ_y, where the frustum corner of largest \
@@ -128,10 +155,12 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         )],
         charts: vec![c, zoom],
     };
+    // One column keeps the sentence on the turn at φ_y, which (b)'s "φ_y →" marks.
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         φ_y\u{a0}=\u{a0}π/6. Bold: the paper's curve; the others for comparison, Eq 13's \
-         branches each on its domain. (b) enlarges γ from {}° to {}°.",
+         φ_y\u{a0}=\u{a0}{phi_deg:.0}°; bold, the paper's curve. (b) γ from {}° to {}°: \
+         least M_z turns near γ\u{a0}=\u{a0}φ_y, where the frustum corner of largest m_z \
+         changes.",
         WINDOW.0, WINDOW.1
     );
     Ok(Fig7 {
@@ -229,9 +258,10 @@ impl Figure for Fig7 {
         self.charts.size
     }
 
-    /// One column: (a) over (b), both plots as tall, the legend under them.
+    /// One column: (a) over (b), both plots as tall, the legend under them: 525 units, 420 pt
+    /// printed (figure review 3, X1: at 760 units it took 608 pt of a 650-pt column).
     fn single_size(&self) -> Option<(u32, u32)> {
-        Some((Column::Single.width(), 760))
+        Some((Column::Single.width(), 525))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -245,8 +275,13 @@ impl Figure for Fig7 {
         if column() == Column::Double {
             return self.labels_placed(body_w / 2, measure).draw(root);
         }
-        let charts = self.labels_placed(body_w, measure);
-        let body = frame(root, &charts.title, &[self.single_caption.as_str()])?;
+        let mut charts = self.labels_placed(body_w, measure);
+        for c in &mut charts.charts {
+            for (s, short) in c.series.iter_mut().zip(SINGLE_LABELS) {
+                s.label = Some(short.to_string());
+            }
+        }
+        let body = frame(root, SINGLE_TITLE, &[self.single_caption.as_str()])?;
         let (w, h) = body.dim_in_pixel();
         let (a, b) = (&charts.charts[0], &charts.charts[1]);
         // The legend's strip first (as wide as the page), then two equal cells for the plots.
@@ -314,7 +349,9 @@ mod tests {
         let bold = &a.series[0];
         assert!(bold.label.as_deref().unwrap().ends_with("(paper)"));
         assert!(a.series[1..].iter().all(|s| s.width < bold.width));
-        assert!(a.notes.is_empty(), "{:?}", a.notes);
+        // (a)'s one note is on the curves clipped at its top, not an angle's.
+        assert_eq!(a.notes.len(), 1, "{:?}", a.notes);
+        assert!(a.notes[0].text.contains("clipped"), "{:?}", a.notes);
         // (a)'s series are its six curves; no vertical line (two points at one γ).
         assert_eq!(a.series.len(), 6);
         assert!(a.series.iter().all(|s| s.points.len() > 2));
@@ -354,9 +391,54 @@ mod tests {
         let gl = gamma_lim(&view).to_degrees();
         assert!((gl - 30.5).abs() < 0.05 + 1e-9, "{gl}");
         assert!(
-            verticals[0] == gl && (verticals[1] - 30.0).abs() < 1e-9,
+            (verticals[0] - gl).abs() < 1e-9 && (verticals[1] - 30.0).abs() < 1e-9,
             "{verticals:?}"
         );
+    }
+
+    /// (a)'s note on its clipped curves (figure review 3): two curves, Barroso's and least M_z's,
+    /// leave the frame at its top, n′ = 10⁴, as γ → 0 (LiSPSM's n′ = 11/sin γ passes 10⁴ only
+    /// below 11/10⁴ rad = 0.063°, by hand, left of its first sample at 0.25°), and the note
+    /// stands right of where they leave (every curve below 10⁴ from the note's γ on), in the top
+    /// decade, naming the frame's value.
+    #[test]
+    fn panel_a_says_its_curves_are_clipped() {
+        let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
+        let a = &fig.charts.charts[0];
+        let note = &a.notes[0];
+        assert_eq!(note.text, "← clipped at 10⁴");
+        let over: Vec<&str> = a
+            .series
+            .iter()
+            .filter(|s| s.points.iter().any(|p| p.1 > 1e4))
+            .map(|s| s.label.as_deref().unwrap())
+            .collect();
+        assert_eq!(over, ["Barroso, Eq 18 (paper)", "least M_{z}"]);
+        assert!(note.at.1 > 1e3 && note.at.1 < 1e4);
+        for s in &a.series {
+            for p in s
+                .points
+                .iter()
+                .filter(|p| p.0 >= note.at.0 && p.1.is_finite())
+            {
+                assert!(p.1 < 1e4, "{:?} at {p:?}", s.label);
+            }
+        }
+        // LiSPSM by hand: 11/sin(0.25°) = 2521 < 10⁴, and its first plotted γ is 0.25°.
+        let lispsm = &a.series[2].points;
+        assert!((lispsm[0].1 - 11.0 / 0.25f64.to_radians().sin()).abs() < 1e-6);
+    }
+
+    /// Degrees everywhere (figure review 3, X2): both captions give φ_y as "30°", none "π/6".
+    #[test]
+    fn captions_give_phi_in_degrees() {
+        let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
+        for c in [&fig.charts.caption[0], &fig.single_caption] {
+            assert!(c.contains("φ_y\u{a0}=\u{a0}30°"), "{c}");
+            assert!(!c.contains("π"), "{c}");
+        }
+        // One column keeps the sentence on the turn at φ_y that (b)'s marker points at.
+        assert!(fig.single_caption.contains("turns near γ"));
     }
 
     /// In greyscale LiSPSM (green) and least M_z (reddish purple) are one grey (review), so

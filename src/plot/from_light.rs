@@ -34,10 +34,14 @@ pub(super) struct Panel {
     pub dims: Vec<(DVec2, DVec2, String)>,
     /// Extension lines from the measured feature to its dimension line.
     pub extensions: Vec<[DVec2; 2]>,
+    /// Text set just above a point (centred on it), naming a line there.
+    pub notes: Vec<(DVec2, String)>,
 }
 
 pub(super) struct FromLight {
     pub title: &'static str,
+    /// The title of the one-column layout: one line there (about 36 characters).
+    pub single_title: &'static str,
     pub caption: String,
     /// The caption of the one-column layout (at most five lines 300 units wide).
     pub single_caption: String,
@@ -83,6 +87,7 @@ fn panel(view: &ViewFrustum, light: DVec3, planes: &[f64], title: String) -> Res
         window: None,
         dims: Vec::new(),
         extensions: Vec::new(),
+        notes: Vec::new(),
     })
 }
 
@@ -121,8 +126,9 @@ pub(super) fn seen_from_light(l: DVec3) -> DVec2 {
     DVec2::new(-l.x, l.z)
 }
 
-/// The label of the horizontal axis of a diagram drawn by [`seen_from_light`].
-pub(super) const SEEN_X: &str = "light −x";
+/// The label of the horizontal axis of a diagram drawn by [`seen_from_light`]: "−x in light
+/// space", which cannot read as "light minus x" (figure review 4, X6).
+pub(super) const SEEN_X: &str = "−x in light space";
 
 /// The light-space bounding box (min, max) of some cross-sections.
 fn bounds(sections: &[[DVec2; 4]]) -> (DVec2, DVec2) {
@@ -211,6 +217,12 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         format!("(f) detail of (c): z ≤ {}", fmt_planes(&ad.planes()[3..4])),
     )?;
     zoom_c.window = Some(bounds(&eq19.sections[..4]));
+    // (f): the far face's lower edge, seen from a light 45° up as a thick line across the
+    // detail at light z = (f − f tan φ)/√2 = 29.9, named where it could read as a split plane
+    // (figure review 3); its middle lies between the side edges, clear of every line.
+    let far = zoom_c.sections[zoom_c.sections.len() - 1];
+    let low = far.iter().map(|q| q.y).fold(f64::INFINITY, f64::min);
+    zoom_c.notes = vec![(DVec2::new(0.0, low), "far face".into())];
     // The overviews label the planes their details leave out or show small (figure review 3:
     // labels spread apart with kinked leaders crowded (b)): z ≥ 31.62 in (a) and (b), z ≥ 16.13
     // in (c).
@@ -219,13 +231,14 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     label_from(&mut eq19, 2);
     let panels = vec![perpendicular, parallel, eq19, zoom, zoom_b, zoom_c];
     // Formulas joined by no-break spaces (U+00A0), so that the caption breaks none of them.
+    // Barroso's α is his target ratio f_i/n_i, not Lloyd's f/n (figure review 3, X2).
     let caption = format!(
-        "Barroso & Celes 2007, Fig. 5: the frustum seen from the light with k\u{a0}=\u{a0}{k} \
+        "Barroso & Celes 2007, Fig. 5: the frustum seen from the light, k\u{a0}=\u{a0}{k} \
          z-partitions, n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, φ\u{a0}=\u{a0}{phi:.0}°. (a) \
-         Light perpendicular to the view, (b) parallel: Eq\u{a0}5's self-similar splits \
-         z\u{a0}=\u{a0}{}. (c), not in the paper: Eq\u{a0}19's adaptive splits for a light \
-         {gamma_deg:.0}° from the view (α\u{a0}=\u{a0}{ADAPTIVE_RATIO}), z\u{a0}=\u{a0}{}. \
-         (d)–(f) enlarge (a)–(c) near the eye.",
+         Light perpendicular to the view, (b) parallel: Eq\u{a0}5's splits \
+         z\u{a0}=\u{a0}{}. (c), not in the paper: light {gamma_deg:.0}° from the view, target \
+         ratio α\u{a0}=\u{a0}{ADAPTIVE_RATIO} (Barroso's Eq\u{a0}19), z\u{a0}=\u{a0}{}; \
+         the thick line across is the far face's edge. (d)–(f) enlarge (a)–(c).",
         fmt_planes(ss.planes()),
         fmt_planes(ad.planes()),
         n = view.near(),
@@ -235,9 +248,9 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     );
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 5: k\u{a0}=\u{a0}{k}, n\u{a0}=\u{a0}{n}, \
-         f\u{a0}=\u{a0}{f}, φ\u{a0}=\u{a0}{phi:.0}°. Light (a) perpendicular, (b) parallel: \
-         Eq\u{a0}5; (c) Eq\u{a0}19, light at {gamma_deg:.0}°, α\u{a0}=\u{a0}{ADAPTIVE_RATIO} \
-         (not in the paper); (d)–(f)\u{a0}enlarge\u{a0}(a)–(c).",
+         f\u{a0}=\u{a0}{f}, φ\u{a0}=\u{a0}{phi:.0}°, seen from the light. (a), (b): Eq\u{a0}5; \
+         (c): Eq\u{a0}19 (not in the paper), light at {gamma_deg:.0}°, target ratio \
+         α\u{a0}=\u{a0}{ADAPTIVE_RATIO}; (d)–(f)\u{a0}enlarge\u{a0}(a)–(c).",
         n = view.near(),
         f = view.far(),
         phi = view.half_fov().to_degrees(),
@@ -245,11 +258,12 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     );
     Ok(FromLight {
         title: "The view frustum seen from the light, with z-partitions",
+        single_title: "The frustum and z-partitions",
         caption,
         single_caption,
         panels,
         size: (520, 640),
-        single_size: (300, 520),
+        single_size: (300, 525),
     })
 }
 
@@ -288,7 +302,10 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
             "2f tan θ".into(),
         ),
     ];
-    p.window = Some((DVec2::new(-sf, -sf - 1.75), DVec2::new(sf, sf)));
+    // The window as far above the far face as the dimension below it reaches, so that the
+    // frustum is centred in its frame (figure review 3: the axis ran to −6.5 below for the
+    // dimension, with no margin above).
+    p.window = Some((DVec2::new(-sf, -sf - 1.05), DVec2::new(sf, sf + 1.05)));
     let caption = format!(
         "Lloyd et al. 2006, Fig. 11: the frustum seen from a light behind the viewer, \
          n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, to scale. With \
@@ -312,6 +329,7 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
     );
     Ok(FromLight {
         title: "The view frustum seen from a light behind the viewer",
+        single_title: "The frustum from a light behind",
         caption,
         single_caption,
         panels: vec![p],

@@ -5,8 +5,8 @@
 //! the panels naming the maps' strokes, the frustum's and the split planes'.
 
 use super::super::chart::{
-    boxed_text, build_chart_styled, clip_polyline, column, equal_aspect, frame, plot_size, sweep,
-    Axis, Chart2d, ChartStyle, FONT,
+    boxed_text, build_chart_styled, clip_polyline, column, equal_aspect, frame, plot_size, Axis,
+    Chart2d, ChartStyle, FONT, PANEL_TITLE, SWEEP, TITLE_GAP,
 };
 use super::super::{Column, Fail, Figure};
 use super::{FromLight, Panel, SEEN_X};
@@ -17,24 +17,36 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// Each partition's map outline, nearest partition first: its dash pattern (lengths on, off,
 /// on, off… in units, repeated). The maps' colours are steps of one sequential palette, so each
-/// also has its own pattern: short dashes, dots, long dashes, dash-dot.
+/// also has its own pattern: short dashes, dots, dash-dot, long dashes (the third dash-dot, so
+/// that lloyd2006-fig11's maps 1 and 3 differ in kind, not in dash length, in greyscale).
 pub(in super::super) const PATTERNS: [&[f64]; 4] = [
     &[6.0, 3.0],
     &[2.0, 3.0],
-    &[14.0, 4.0],
     &[12.0, 3.0, 2.0, 3.0],
+    &[14.0, 4.0],
 ];
 
-/// The colour of partition `i`'s map among `n`: the sweep palette's, darkest (nearest) first
-/// (partitions are a parameter sweep, not schemes).
-pub(in super::super) fn map_colour(i: usize, n: usize) -> RGBColor {
-    sweep(i, n)
+/// The colour of partition `i`'s map: the sweep palette's steps, darkest (nearest) first
+/// (partitions are a parameter sweep, not schemes), its four darkest only: the lightest,
+/// #9589C0, stands 2.9:1 on its own tint; the fourth, #7B6DB4, 4.1:1.
+pub(in super::super) fn map_colour(i: usize) -> RGBColor {
+    SWEEP[i.min(3)]
 }
+
+/// How far a map's outline is drawn outside its rectangle, in units: a map's edge lies on a
+/// cross-section (every map of a light behind, each map's near and far edges of a light
+/// overhead), and drawn on it the dashes hid the black line in their gaps, so that the map read
+/// as black and purple dashes and the split plane as nothing (figure review 3). Beside it both
+/// read as their keys.
+const MAP_OFFSET: f64 = 2.0;
 
 /// The stroke widths of the frustum's edges (its near and far faces and the side edges) and of
 /// the split planes' cross-sections.
 const FRUSTUM_WIDTH: u32 = 2;
 const PLANE_WIDTH: u32 = 1;
+
+/// A panel title's distance from its cell's left edge, in units.
+const TITLE_INSET: i32 = 2;
 
 /// The grey of the leaders and their anchor dots.
 const LEADER: RGBColor = RGBColor(150, 150, 150);
@@ -56,23 +68,26 @@ struct Sizes {
 
 fn sizes(single: bool, panels: usize) -> Sizes {
     if single && panels > 1 {
-        // One column, two panels a row of 150 units: 10-unit ticks and labels (at least 6 pt
-        // printed).
+        // One column, two panels a row of 144 units: the type of every other one-column figure
+        // (ticks and labels 13, 10.5 units, 8.4 pt printed; titles and axis names 15), each
+        // label on two lines ("z =" over "31.62") so that the gutter takes 46 units, not 67
+        // (figure review 3: at 10 the labels printed 6.45 pt), and no y tick labels: the y
+        // axis's area holds its name only, in the left column.
         Sizes {
             style: ChartStyle {
-                title_size: 12,
-                x_label_area: 30,
-                y_label_area: 30,
-                tick_size: 10,
-                desc_size: 10,
+                title_size: PANEL_TITLE,
+                x_label_area: 42,
+                y_label_area: 20,
+                tick_size: 13,
+                desc_size: 15,
                 margin: 2,
             },
-            x_ticks_only: 18,
-            y_ticks_only: 20,
-            label: 10,
-            gutter: 61,
-            step: 12,
-            key: 10,
+            x_ticks_only: 26,
+            y_ticks_only: 6,
+            label: 13,
+            gutter: 46,
+            step: 26,
+            key: 13,
         }
     } else {
         Sizes {
@@ -244,7 +259,7 @@ fn key<DB: DrawingBackend>(
     let mut items: Vec<(Option<Stroke>, String)> = vec![(None, "Maps, nearest first:".into())];
     for i in 0..maps {
         items.push((
-            Some((map_colour(i, maps), 2, PATTERNS[i % PATTERNS.len()])),
+            Some((map_colour(i), 2, PATTERNS[i % PATTERNS.len()])),
             format!("{}", i + 1),
         ));
     }
@@ -319,7 +334,12 @@ impl Figure for FromLight {
         } else {
             &self.caption
         };
-        let body = frame(root, self.title, &[caption.as_str()])?;
+        let title = if single {
+            self.single_title
+        } else {
+            self.title
+        };
+        let body = frame(root, title, &[caption.as_str()])?;
         let sz = sizes(single, self.panels.len());
         let maps = self.panels.iter().map(|p| p.maps.len()).max().unwrap_or(0);
         let key_h = key(&body, maps, sz.key, false)?;
@@ -461,6 +481,26 @@ fn draw_panel<DB: DrawingBackend>(
     } else {
         p.title.clone()
     };
+    // The title at the cell's top left, before the cell is narrowed to the drawing: one baseline
+    // across a row and one left edge down a column (figure review 3: centred over narrowed
+    // cells, "(a) perpendicular" stood 9 units below "(b) parallel", and "(c) Eq 19, not in the
+    // paper" overhung its panel to 3 units from the page's edge).
+    let head_h = if title.is_empty() {
+        0
+    } else {
+        style.margin + style.title_size + TITLE_GAP
+    };
+    let (head, whole) = whole.split_vertically(head_h);
+    if !title.is_empty() {
+        head.draw(&Text::new(
+            title,
+            (TITLE_INSET, style.margin as i32),
+            TextStyle::from((FONT, style.title_size).into_font())
+                .pos(Pos::new(HPos::Left, VPos::Top)),
+        ))?;
+    }
+    let whole = &whole;
+    let title = String::new();
     let (lo, hi) = window(p);
     let first = tick_labels(lo, hi, 1e9, 1e9, 1.0);
     let (x0, y0) = axes(lo, hi, &first, titles);
@@ -470,17 +510,36 @@ fn draw_panel<DB: DrawingBackend>(
     let (full, _) = whole.split_horizontally(cw - sz.gutter);
     let (pw, ph) = plot_size(&full, &title, &x0, &y0, style)?;
     let per_px = ((hi.x - lo.x) / pw).max((hi.y - lo.y) / ph);
+    // Room for the maps' outlines, drawn [`MAP_OFFSET`] outside their rectangles and 2 wide:
+    // the outermost map's lies outside the drawing (the 3 % margin is 1.4 units in a 46-unit
+    // plot).
+    let grow = DVec2::splat(if p.window.is_none() {
+        (MAP_OFFSET + 2.0) * per_px
+    } else {
+        0.0
+    });
+    let (lo, hi) = (lo - grow, hi + grow);
+    let per_px = ((hi.x - lo.x) / pw).max((hi.y - lo.y) / ph);
     let (dw, dh) = ((hi.x - lo.x) / per_px, (hi.y - lo.y) / per_px);
-    let at = tick_labels(lo, hi, dw, dh, f64::from(style.tick_size));
+    // Labelled ticks only over the drawing (a window larger than it, as lloyd2006-fig11's with
+    // room for a dimension line, labels none beyond it).
+    let (dlo, dhi) = super::bounds(&p.sections);
+    let at = tick_labels(
+        lo.max(dlo),
+        hi.min(dhi),
+        dw * (hi.min(dhi) - lo.max(dlo)).x / (hi - lo).x,
+        dh * (hi.min(dhi) - lo.max(dlo)).y / (hi - lo).y,
+        f64::from(style.tick_size),
+    );
+    // One column labels no y ticks: at the other one-column figures' type their labels took 34
+    // units of a 144-unit cell (and the y title 12 more) from a 46-unit plot; equal aspect
+    // gives the x ticks' scale up the panel too.
+    let at = if small { (at.0, Vec::new()) } else { at };
     let (x0, y0) = axes(lo, hi, &at, titles);
     let spare_w = (pw - dw).max(0.0).floor() as u32;
     let spare_h = (ph - dh).max(0.0).floor() as u32;
-    let whole = whole.margin(
-        spare_h / 2,
-        spare_h - spare_h / 2,
-        spare_w / 2,
-        spare_w - spare_w / 2,
-    );
+    // The spare height under the plot, so that it stays under its title.
+    let whole = whole.margin(0, spare_h, spare_w / 2, spare_w - spare_w / 2);
     let (cw, _) = whole.dim_in_pixel();
     debug_assert!(ch > 0 && cw > sz.gutter);
     let (cell, gutter) = whole.split_horizontally(cw - sz.gutter);
@@ -502,14 +561,13 @@ fn draw_panel<DB: DrawingBackend>(
     let per_unit =
         f64::from(px(&chart, DVec2::new(xa.max, 0.0)).0 - px(&chart, DVec2::new(xa.min, 0.0)).0)
             / (xa.max - xa.min);
-    let n_maps = p.maps.len();
     // A map's tint only where the whole map is in the window: a map larger than a detail
     // panel's window would tint its whole background.
     for (i, &(a, b)) in p.maps.iter().enumerate() {
         if inside(a) && inside(b) {
             chart.draw_series(std::iter::once(Rectangle::new(
                 [(a.x, a.y), (b.x, b.y)],
-                map_colour(i, n_maps).mix(0.08).filled(),
+                map_colour(i).mix(0.08).filled(),
             )))?;
         }
     }
@@ -531,7 +589,9 @@ fn draw_panel<DB: DrawingBackend>(
     let (gx, gy) = gutter.get_base_pixel();
     let (wx, wy) = whole.get_base_pixel();
     let (_, gh) = gutter.dim_in_pixel();
-    let range = (8, gh as i32 - 8);
+    // The labels' half heights kept inside the gutter (two lines in one column).
+    let edge = 8.max(sz.step / 2);
+    let range = (edge, gh as i32 - edge);
     let candidates: Vec<Vec<i32>> = labelled
         .iter()
         .map(|(c, _)| c.iter().map(|&q| px(&chart, q).1).collect())
@@ -576,11 +636,13 @@ fn draw_panel<DB: DrawingBackend>(
     for i in 0..4 {
         solid(&[first[i], far[i]], FRUSTUM_WIDTH)?;
     }
-    // The maps' outlines on top of the frustum's, so that a map whose edge coincides with a
-    // cross-section (every map of a light behind) still shows.
+    // The maps' outlines on top of the frustum's, each [`MAP_OFFSET`] outside its rectangle, so
+    // that a map whose edge lies on a cross-section and the cross-section both show.
+    let off = DVec2::splat(MAP_OFFSET / per_unit);
     for (i, &(a, b)) in p.maps.iter().enumerate() {
+        let (a, b) = (a - off, b + off);
         let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
-        let colour = map_colour(i, n_maps);
+        let colour = map_colour(i);
         for piece in clip(&corners) {
             for dash in dashed(&piece, PATTERNS[i % PATTERNS.len()], per_unit) {
                 chart.draw_series(LineSeries::new(dash, colour.stroke_width(2)))?;
@@ -618,20 +680,41 @@ fn draw_panel<DB: DrawingBackend>(
             BLACK,
         )?;
     }
-    // The labels in the gutter, each joined to its leader's end.
+    // The notes naming a line, just above it, on no box: between lines, covering none (in one
+    // column's 100-unit plots the side edges close in on it: left out there).
+    let note_style =
+        TextStyle::from((FONT, sz.label).into_font()).pos(Pos::new(HPos::Center, VPos::Bottom));
+    for (at, text) in p.notes.iter().filter(|_| !small) {
+        if inside(*at) {
+            let (x, y) = px(&chart, *at);
+            whole.draw(&Text::new(
+                text.clone(),
+                (x - wx, y - wy - 3),
+                note_style.clone(),
+            ))?;
+        }
+    }
+    // The labels in the gutter, each joined to its leader's end; in one column on two lines,
+    // the name over the depth, centred on the leader's end.
     let label_style =
         TextStyle::from((FONT, sz.label).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+    let half = sz.step / 4;
     for ((&(_, ay), (_, label)), y) in anchor_px.iter().zip(&labelled).zip(ys) {
         let ty = ay - gy;
         gutter.draw(&PathElement::new(
             vec![(0, ty), (5, ty), (11, y - gy)],
             LEADER.stroke_width(1),
         ))?;
-        gutter.draw(&Text::new(
-            (*label).clone(),
-            (13, y - gy),
-            label_style.clone(),
-        ))?;
+        let lines: Vec<(String, i32)> = match label.split_once(" = ") {
+            Some((name, value)) if small => vec![
+                (format!("{name} ="), y - gy - half),
+                (value.to_string(), y - gy + half),
+            ],
+            _ => vec![((*label).clone(), y - gy)],
+        };
+        for (text, at) in lines {
+            gutter.draw(&Text::new(text, (13, at), label_style.clone()))?;
+        }
     }
     Ok(())
 }
