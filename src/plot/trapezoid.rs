@@ -5,10 +5,10 @@
 //! the share of the map each leaves unused (the paper's *wastage*).
 
 use super::chart::{
-    build_chart_styled, clip_polyline, column, equal_aspect, frame, Axis, ChartStyle, Ticked, FONT,
-    PALETTE, SHARED,
+    build_chart_styled, clip_polyline, column, equal_aspect, frame, plot_size, Axis, ChartStyle,
+    Ticked, FONT, PALETTE, SHARED,
 };
-use super::from_light::{seen_from_light, SEEN_X};
+use super::from_light::seen_from_light;
 use super::{Column, Fail, Figure, UNIT_SQUARE};
 use crate::maps::tsm::{tsm, TsmOptions, TsmSearch};
 use crate::ViewFrustum;
@@ -195,7 +195,9 @@ pub(super) fn fig3_at(el_deg: f64, az_deg: f64) -> Result<Fig3, Fail> {
 /// region apart by dash where their greys meet.
 const EDGE: RGBColor = RGBColor(120, 120, 120);
 const HULL: RGBColor = PALETTE[5];
-const FOCUS_C: RGBColor = PALETTE[3];
+/// The focus region: dark wine, 2 units wide in every panel, so that in greyscale it stands
+/// out from the light hull C it lies on (review 3: a thin pink line on light blue).
+const FOCUS_C: RGBColor = RGBColor(136, 34, 85);
 const TRAP: RGBColor = PALETTE[6];
 const MIN_BOX: RGBColor = PALETTE[7];
 const AXIS_BOX: RGBColor = SHARED;
@@ -310,9 +312,10 @@ impl Figure for Fig3 {
         (520, 560)
     }
 
-    /// One column: (a), (b) and (c) side by side under it, the legend under them.
+    /// One column: the same layout, narrower: (a) on the left, (b) over (c) on the right, the
+    /// legend under them.
     fn single_size(&self) -> Option<(u32, u32)> {
-        Some((Column::Single.width(), 720))
+        Some((Column::Single.width(), SINGLE_H))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -322,12 +325,14 @@ impl Figure for Fig3 {
             format!(
                 "Martin & Tan 2004, Figs. 3 and 4: T of the 80{nb}% rule (δ{nb}={nb}{FOCUS}), \
                  n{nb}={nb}{}, f{nb}={nb}{}, θ{nb}={nb}{}°, light {}° up, {}° round from behind \
-                 to the right. C covers {} of T's map (b), {} of B's (c).",
+                 to the right; boxes drawn {:.1}{nb}pt outside. C covers {} of T's map (b), {} \
+                 of B's (c).",
                 VIEW.0,
                 VIEW.1,
                 VIEW.2,
                 LIGHT.0,
                 LIGHT.1,
+                OUTSET * Column::Single.points_per_unit(),
                 pct(self.covered_t),
                 pct(self.covered_o),
             )
@@ -354,30 +359,57 @@ impl Figure for Fig3 {
             "The trapezoid against the smallest bounding box",
             &[caption.as_str()],
         )?;
-        // The legend in a strip of its own under all the panels, where it covers nothing.
-        // Across two columns: (a) on the left, (b) over (c), both square, on the right (issue
-        // 35: (a) over (b) and (c) made the figure 960 units tall). In one: (a), then (b) and
-        // (c) side by side.
-        let (bw, bh) = body.dim_in_pixel();
+        // The legend in a strip of its own under all the panels, where it covers nothing; (a)
+        // on the left, (b) over (c) on the right (issue 35: (a) over (b) and (c) made the figure
+        // 960 units tall). Every panel's area is cut to its plot's shape, so that no axis runs
+        // past its data (review 3: (b) and (c) ran from −1.9 to 2 for a map on [−1, 1]).
+        let (_, bh) = body.dim_in_pixel();
         let (columns, rows) = if single { (2, 3) } else { (3, 2) };
         let (upper, strip) = body.split_vertically(bh.saturating_sub(legend_h(rows)));
-        let (top, panels) = if single {
-            let (top, lower) = upper.split_vertically(bh * 55 / 100);
-            (top, lower.split_evenly((1, 2)))
-        } else {
-            let (left, right) = upper.split_horizontally(bw / 2);
-            (left, right.split_evenly((2, 1)))
-        };
         let style = if single {
             ChartStyle {
-                y_label_area: 52,
-                x_label_area: 40,
+                y_label_area: 40,
+                x_label_area: 34,
+                desc_size: 13,
+                margin: 5,
                 ..ChartStyle::default()
             }
         } else {
             ChartStyle::default()
         };
-        // (a) Light space, equal aspect.
+        // (a)'s y labels reach "150" and "−x in light space" is long: a wider label area.
+        let a_style = ChartStyle {
+            y_label_area: style.y_label_area + if single { 6 } else { 0 },
+            ..style
+        };
+        let (uw, uh) = upper.dim_in_pixel();
+        // (b) and (c): equal plots, square; in one column (b) leaves its x labels to (c).
+        let b_style = if single {
+            ChartStyle {
+                x_label_area: 0,
+                ..style
+            }
+        } else {
+            style
+        };
+        let b_h = (uh + b_style.x_label_area - style.x_label_area) / 2;
+        let square = (
+            Axis::linear("map s", -1.1, 1.1),
+            Axis::linear("map t", -1.1, 1.1),
+        );
+        let titles = if single {
+            ["(b) T's space", "(c) B's space"]
+        } else {
+            ["(b) trapezoidal space (N_{T})", "(c) the box B's space"]
+        };
+        let probe = upper.clone().shrink((0, 0), (uw, b_h));
+        let (_, side) = plot_size(&probe, titles[0], &square.0, &square.1, &b_style)?;
+        let right_w = (side as u32 + style.y_label_area + 3 * style.margin + 1).min(uw / 2);
+        let (top, right) = upper.split_horizontally(uw - right_w);
+        let (b_area, c_area) = right.split_vertically(b_h);
+        // (a) Light space, equal aspect: x symmetric about the apex, y from the room the inset
+        // needs under it to the data's top; the axis the area leaves over goes under the apex
+        // (to the inset) or to both sides.
         let pts: Vec<DVec2> = self
             .eye
             .iter()
@@ -391,69 +423,85 @@ impl Figure for Fig3 {
         let hi = pts
             .iter()
             .fold(DVec2::splat(f64::NEG_INFINITY), |a, &p| a.max(p));
-        let pad = 0.04 * (hi - lo).max_element();
-        // Room under the apex for the inset: (a) is tall across two columns, and its equal
-        // aspect leaves it there; in one column (a) is wide, and the room is asked for.
-        let below = if single { 0.45 * (hi.y - lo.y) } else { 0.0 };
         let title = "(a) seen from the light";
-        let (xa, ya) = equal_aspect(
-            &top,
-            title,
-            &Axis::linear(SEEN_X, lo.x - pad, hi.x + pad),
-            &Axis::linear("light z (T's axis)", lo.y - pad - below, hi.y + pad),
-            &style,
-        )?;
-        let mut chart = build_chart_styled(&top, title, &xa, &ya, false, &style)?;
+        // The data's margin: 4 % of its extent, and the boxes' outset (a corner of a tilted
+        // box moves out by up to √2 of it) at the scale of the page.
+        let margin = |per_unit: f64| 0.04 * (hi - lo).max_element() + 1.5 * OUTSET / per_unit;
+        let axes = |half_x: f64, (y_lo, y_hi): (f64, f64)| {
+            (
+                Axis::linear(X_LABEL, -half_x, half_x),
+                Axis::linear("light z (T's axis)", y_lo, y_hi),
+            )
+        };
+        let (mut half_x, mut y_range) = (lo.x.abs().max(hi.x.abs()), (lo.y, hi.y));
+        let mut per_unit = f64::INFINITY;
+        // The scale, the margins and the tick labels' widths depend on each other: a few
+        // rounds settle them.
+        for _ in 0..3 {
+            let pad = margin(per_unit);
+            let y_top = hi.y + pad;
+            let y_least = y_top - (lo.y - pad - INSET_ROOM * (hi.y - lo.y));
+            let need_x = 2.0 * (lo.x.abs().max(hi.x.abs()) + pad);
+            let (xa, ya) = axes(half_x, y_range);
+            let (w, h) = plot_size(&top, title, &xa, &ya, &a_style)?;
+            let y_span = if h / w * need_x >= y_least {
+                half_x = 0.5 * need_x;
+                h / w * need_x
+            } else {
+                half_x = 0.5 * y_least * w / h;
+                y_least
+            };
+            y_range = (y_top - y_span, y_top);
+            per_unit = w / (2.0 * half_x);
+        }
+        // The y axis labelled over the data only: under z = 0 is the inset's.
+        let (xa, ya) = axes(half_x, y_range);
+        let data_ticks: Vec<f64> = ya.ticks().0.into_iter().filter(|&v| v >= 0.0).collect();
+        let ya = ya.labelled_at(&data_ticks);
+        // The x axis likewise labelled over the data (one column's narrow (a) has no room for
+        // "−100" beside "−50").
+        let data_ticks: Vec<f64> = xa
+            .ticks()
+            .0
+            .into_iter()
+            .filter(|&v| (lo.x..=hi.x).contains(&v))
+            .collect();
+        let xa = xa.labelled_at(&data_ticks);
+        let mut chart = build_chart_styled(&top, title, &xa, &ya, false, &a_style)?;
         self.draw_contents(&mut chart, |p| p)?;
         outline(&mut chart, &self.trapezoid, TRAP, Stroke::Solid)?;
         // Units per light-space unit (equal aspect: the same along both axes).
-        let unit =
-            f64::from(chart.backend_coord(&(1.0, 0.0)).0 - chart.backend_coord(&(0.0, 0.0)).0)
-                .abs()
-                .max(1e-9);
+        // Measured across the whole axis: one light-space unit is under one unit of the page in
+        // one column, where whole pixels would round it to 0 or 1.
+        let (x0, x1) = (xa.min, xa.max);
+        let unit = f64::from(chart.backend_coord(&(x1, 0.0)).0 - chart.backend_coord(&(x0, 0.0)).0)
+            .abs()
+            .max(1.0)
+            / (x1 - x0);
         let d = OUTSET / unit;
         outline(&mut chart, &outset(&self.obox, d), MIN_BOX, Stroke::Dashed)?;
         let (b0, b1) = self.bbox;
         let axis_box = [b0, DVec2::new(b1.x, b0.y), b1, DVec2::new(b0.x, b1.y)];
         outline(&mut chart, &outset(&axis_box, d), AXIS_BOX, Stroke::Dotted)?;
-        self.draw_inset(&top, &chart)?;
+        self.draw_inset(&top, &chart, unit)?;
         draw_legend(&strip, columns)?;
         // (b), (c): the two normalised spaces; the map square in the colour of its shape.
-        for (panel, h, title, colour, stroke) in [
+        for (panel, h, title, colour, stroke, st) in [
+            (&b_area, self.n_t, titles[0], TRAP, Stroke::Solid, &b_style),
             (
-                &panels[0],
-                self.n_t,
-                if single {
-                    "(b) T's space"
-                } else {
-                    "(b) trapezoidal space (N_{T})"
-                },
-                TRAP,
-                Stroke::Solid,
-            ),
-            (
-                &panels[1],
+                &c_area,
                 self.box_map(),
-                if single {
-                    "(c) B's space"
-                } else {
-                    "(c) the box B's space"
-                },
+                titles[1],
                 MIN_BOX,
                 Stroke::Dashed,
+                &style,
             ),
         ] {
-            let (ax, ay) = equal_aspect(
-                panel,
-                title,
-                &Axis::linear("map s", -1.1, 1.1),
-                &Axis::linear("map t", -1.1, 1.1),
-                &style,
-            )?;
+            let (ax, ay) = equal_aspect(panel, title, &square.0, &square.1, st)?;
             // The map's ends and centre only: its square is 1.1 units across the page.
             let ends = [-1.0, 0.0, 1.0];
             let (ax, ay) = (ax.labelled_at(&ends), ay.labelled_at(&ends));
-            let mut chart = build_chart_styled(panel, title, &ax, &ay, false, &style)?;
+            let mut chart = build_chart_styled(panel, title, &ax, &ay, false, st)?;
             self.draw_contents(&mut chart, |p| through(&h, p))?;
             let square: Vec<DVec2> = UNIT_SQUARE[..4]
                 .iter()
@@ -465,8 +513,28 @@ impl Figure for Fig3 {
     }
 }
 
-/// The inset's share of panel (a)'s plot width, and the focus region's share of the inset.
-const INSET_W: f64 = 0.42;
+/// The one-column figure's height: at most 525 units (420 points printed 240 wide).
+const SINGLE_H: u32 = 480;
+
+/// The x axis of (a): the light's −x, as the light sees the scene.
+const X_LABEL: &str = "−x in light space";
+
+/// The least room under the apex in (a) for the inset, as a share of the data's height.
+const INSET_ROOM: f64 = 0.3;
+
+/// The label of an inset enlarged `k` times: "×8" (to the nearest whole number; "×2.5" under 3).
+pub(super) fn magnification(k: f64) -> String {
+    if k < 3.0 {
+        format!("×{:.1}", k)
+    } else {
+        format!("×{:.0}", k)
+    }
+}
+
+/// The inset's greatest share of panel (a)'s plot width, its greatest width over its height,
+/// and the focus region's share of the inset.
+const INSET_W: f64 = 0.7;
+const INSET_ASPECT: f64 = 2.0;
 const INSET_FILL: f64 = 0.6;
 /// The least gap between the window outlined in (a) and the inset under it, in units, for its
 /// connecting lines to show.
@@ -492,31 +560,40 @@ impl Fig3 {
         (mid - half, mid + half)
     }
 
-    /// The inset of (a): the apex enlarged, in the empty lower right of (a)'s plot (under
-    /// z = 0 and right of the apex, where the frustum seen from this light has nothing), framed,
-    /// with the window it shows outlined in (a).
+    /// The inset of (a): the apex enlarged, under it in the empty bottom of (a)'s plot (under
+    /// z = 0, where the frustum seen from this light has nothing), framed, labelled with its
+    /// enlargement over (a) ("×4"; `unit` is (a)'s units per light-space unit), with the
+    /// window it shows outlined in (a) and joined to it.
     fn draw_inset<DB: DrawingBackend>(
         &self,
         area: &DrawingArea<DB, Shift>,
         chart: &super::chart::Chart2d<'_, DB>,
+        unit: f64,
     ) -> Result<(), Fail> {
         let plot = chart.plotting_area();
         let (pw, ph) = plot.dim_in_pixel();
         let (px, py) = plot.get_base_pixel();
         let (ax, ay) = area.get_base_pixel();
-        // Below the window round the apex and right of it, inside the plot: the inset's box,
+        // Under the window round the apex, centred on it, inside the plot: the inset's box,
         // its top at least [`INSET_GAP`] under the window's bottom (the window's own height
         // follows the box's aspect: settled in a few rounds).
-        let w = (f64::from(pw) * INSET_W) as i32;
+        let most = (f64::from(pw) * INSET_W) as i32;
         let bottom = py + ph as i32 - 4;
         let (_, apex_y) = chart.backend_coord(&(0.0, 0.0));
-        let mut h = (bottom - apex_y - INSET_GAP).min(w).max(20);
+        let fit = |room: i32| {
+            let h = room.max(20);
+            let w = most.min((f64::from(h) * INSET_ASPECT) as i32);
+            (w, h.min(w))
+        };
+        let (mut w, mut h) = fit(bottom - apex_y - INSET_GAP);
         for _ in 0..4 {
             let (lo, _) = self.inset_window(f64::from(w) / f64::from(h));
             let below = chart.backend_coord(&(lo.x, lo.y)).1;
-            h = (bottom - below - INSET_GAP).min(w).max(20);
+            (w, h) = fit(bottom - below - INSET_GAP);
         }
-        let x0 = px + pw as i32 - w - 4;
+        let (lo, hi) = self.inset_window(f64::from(w) / f64::from(h));
+        let mid = chart.backend_coord(&(0.5 * (lo.x + hi.x), lo.y)).0;
+        let x0 = (mid - w / 2).clamp(px + 4, px + pw as i32 - w - 4);
         let y0 = bottom - h;
         let (lo, hi) = self.inset_window(f64::from(w) / f64::from(h));
         // The window outlined in (a), joined to the inset by its bottom corners.
@@ -569,6 +646,16 @@ impl Fig3 {
             [(0, 0), (w - 1, h - 1)],
             grey.stroke_width(1),
         ))?;
+        // The enlargement in the inset's lower left corner, where the apex leaves it empty: the
+        // inset's units per light-space unit over (a)'s.
+        let zoom_factor = f64::from(w) / (hi.x - lo.x) / unit;
+        inset.draw(&Text::new(
+            magnification(zoom_factor),
+            (4, h - 3),
+            TextStyle::from((FONT, 13).into_font())
+                .color(&grey)
+                .pos(Pos::new(HPos::Left, VPos::Bottom)),
+        ))?;
         Ok(())
     }
 }
@@ -588,12 +675,12 @@ impl Fig3 {
             })
             .collect();
         chart.draw_series(std::iter::once(Polygon::new(poly, HULL.mix(0.45).filled())))?;
-        for (corners, colour) in [(&self.eye, EDGE), (&self.focus, FOCUS_C)] {
+        for (corners, colour, width) in [(&self.eye, EDGE, 1), (&self.focus, FOCUS_C, 2)] {
             for (a, b) in EDGES {
                 let (p, q) = (f(corners[a]), f(corners[b]));
                 chart.draw_series(LineSeries::new(
                     [(p.x, p.y), (q.x, q.y)],
-                    colour.stroke_width(1),
+                    colour.stroke_width(width),
                 ))?;
             }
         }

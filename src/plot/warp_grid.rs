@@ -24,12 +24,23 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 /// Grid lines per direction.
 const LINES: usize = 12;
 
+/// Rays from the eye drawn in the map, less one: every second of [`LINES`], so that where they
+/// converge on the near plane (t = 0, s = ½ for the uniform map) they stay apart.
+const RAYS: usize = LINES / 2;
+
+/// The least distance between neighbouring rays in the map, in its s, t units, where they are
+/// drawn (see [`fig4`]).
+const RAY_GAP: f64 = 0.04;
+
 /// The light travels straight down (−Y): overhead.
 const OVERHEAD: DVec3 = DVec3::NEG_Y;
 
 /// One column of the figure.
 pub(super) struct Column {
-    pub title: String,
+    /// "η = −1", its scheme's name where it has one ("uniform"), and "n′ = ∞".
+    pub eta: String,
+    pub scheme: Option<&'static str>,
+    pub n_prime: String,
     /// Segments in eye space (z, x): the map's lines of constant u (across) and v (depth).
     pub light_space: Vec<[(f64, f64); 2]>,
     /// Segments in the map (u, v): the frustum's planes of constant depth and rays.
@@ -90,21 +101,38 @@ pub(super) fn fig4() -> Result<Fig4, Fail> {
                 map.push([p, q]);
             }
         }
-        for c in linspace(-1.0, 1.0, LINES + 1) {
-            if let (Some(p), Some(q)) = (to_map(n, c * n * t), to_map(f, c * f * t)) {
+        // The rays far end first, so that their dashes start together at the far plane; the
+        // frustum's sides (c = ±1) run to the near plane, the rays between them to the nearest
+        // plane of constant depth where neighbours are still [`RAY_GAP`] apart in the map (in
+        // the uniform map they would otherwise run together into one grey patch round t = 0,
+        // s = ½; in PSM's they are parallel and reach the near plane).
+        let step = 2.0 / RAYS as f64;
+        let apart = |z: f64| match (to_map(z, 0.0), to_map(z, step * z * t)) {
+            (Some(p), Some(q)) => 0.5 * (q.0 - p.0).hypot(q.1 - p.1) >= RAY_GAP,
+            _ => false,
+        };
+        let first = linspace(n, f, LINES + 1)
+            .into_iter()
+            .find(|&z| apart(z))
+            .unwrap_or(f);
+        for c in linspace(-1.0, 1.0, RAYS + 1) {
+            let end = if c.abs() == 1.0 { n } else { first };
+            if let (Some(p), Some(q)) = (to_map(f, c * f * t), to_map(end, c * end * t)) {
                 map.push([p, q]);
             }
         }
         // The column's parameters: η (with its scheme's name) and n′, negative η with the
         // minus sign U+2212.
-        let name = match np.as_finite() {
-            None => "η = −1 (uniform), n′ = ∞".to_string(),
-            Some(v) if eta == 0.0 => format!("η = 0 (LiSPSM), n′ = {v:.2}"),
-            Some(v) if eta == 1.0 => format!("η = 1 (PSM), n′ = n = {v:.0}"),
-            Some(v) => minus(&format!("η = {eta}, n′ = {v:.2}")),
+        let (scheme, n_prime) = match np.as_finite() {
+            None => (Some("uniform"), "n′ = ∞".to_string()),
+            Some(v) if eta == 0.0 => (Some("LiSPSM"), format!("n′ = {v:.2}")),
+            Some(v) if eta == 1.0 => (Some("PSM"), format!("n′ = n = {v:.0}")),
+            Some(v) => (None, format!("n′ = {v:.2}")),
         };
         columns.push(Column {
-            title: name,
+            eta: minus(&format!("η = {eta}")),
+            scheme,
+            n_prime,
             light_space,
             map,
             to_eye: inv,
@@ -127,19 +155,31 @@ pub(super) fn minus(text: &str) -> String {
     out
 }
 
-/// The texel grid of the map (panels (a)–(d)): a sweep colour, no scheme's.
-const GRID_COLOUR: RGBColor = SWEEP[2];
+/// The texel grid of the map (panels (a)–(d)): thin, a light sweep colour, no scheme's.
+const GRID_COLOUR: RGBColor = SWEEP[3];
 
 /// The frustum's planes of constant depth in the map (panels (e)–(h)): solid, the sweep's
-/// darkest.
+/// darkest and twice as thick as the texel grid, so that in greyscale the two differ in weight
+/// and shade, not only in hue.
 const DEPTH_COLOUR: RGBColor = SWEEP[0];
+
+/// The planes' width: 2 units across two columns; 1 in one column's small panels, where 2
+/// would run the crowded planes near t = 1 into one dark block (there they differ from the
+/// texel grid by shade alone: about 32 CIE L* apart).
+fn depth_width(narrow: bool) -> u32 {
+    if narrow {
+        1
+    } else {
+        2
+    }
+}
 
 /// The rays from the eye in the map (panels (e)–(h)): dashed grey, so that in greyscale they
 /// differ from the planes of constant depth by more than their shade.
 const RAY_COLOUR: RGBColor = SHARED;
 
-/// The dash and gap of a ray, in map units (the map is 1.1 units across).
-const RAY_DASH: (f64, f64) = (0.035, 0.025);
+/// The dash and gap of a ray, in units of the page.
+const RAY_DASH: (f64, f64) = (4.0, 3.0);
 
 /// The pieces of the segment `a`–`b` that a dash pattern of `on`, `off` (data units of an
 /// equal-aspect chart) draws, starting with a dash at `a`.
@@ -155,6 +195,21 @@ pub(super) fn dashes(a: (f64, f64), b: (f64, f64), (on, off): (f64, f64)) -> Vec
     out
 }
 
+/// The lines of a panel's heading: its letter and η, then n′, then the scheme's name where
+/// there is one; in two columns' width the scheme's name follows η ("(a) η = −1 (uniform)").
+fn heading(letter: char, col: &Column, narrow: bool) -> Vec<String> {
+    match (col.scheme, narrow) {
+        (Some(s), false) => vec![format!("({letter}) {} ({s})", col.eta), col.n_prime.clone()],
+        (None, false) => vec![format!("({letter}) {}", col.eta), col.n_prime.clone()],
+        // One column: the letter over η, n′ and the scheme's name, each line narrower than
+        // a panel.
+        (s, true) => [format!("({letter})"), col.eta.clone(), col.n_prime.clone()]
+            .into_iter()
+            .chain(s.map(str::to_string))
+            .collect(),
+    }
+}
+
 impl Fig4 {
     fn caption(&self) -> String {
         format!(
@@ -162,8 +217,8 @@ impl Fig4 {
              n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, light \
              overhead, the plane y\u{a0}=\u{a0}0. (a)–(d): from the light, the map's \
              {LINES}\u{a0}×\u{a0}{LINES} texel grid over the view frustum, pressed to the near \
-             plane by the warp. (e)–(h): in the map, s,\u{a0}t\u{a0}∈\u{a0}[0,\u{a0}1], the \
-             frustum's planes of constant depth (solid) and rays from the eye (dashed).",
+             plane by the warp. (e)–(h): the same in the map, s,\u{a0}t\u{a0}∈\u{a0}[0,\u{a0}1]: \
+             the frustum's planes of constant depth and rays from the eye.",
             n = self.view.near(),
             f = self.view.far(),
             theta = self.view.half_fov().to_degrees(),
@@ -183,21 +238,45 @@ impl Fig4 {
         ]
     }
 
+    /// A panel's chart on `area`: the axes `x`, `y` widened to equal aspect and ticked every
+    /// `step` (along x, along y) from 0.
+    fn equal_chart<'a, DB: DrawingBackend>(
+        area: &'a DrawingArea<DB, Shift>,
+        title: &str,
+        (x, y): (&Axis, &Axis),
+        step: (f64, f64),
+        st: &ChartStyle,
+    ) -> Result<super::chart::Chart2d<'a, DB>, Fail> {
+        let (x, y) = equal_aspect(area, title, x, y, st)?;
+        let every = |a: Axis, step: f64| Axis::every(a.label, a.min, a.max, 0.0, step);
+        build_chart_styled(area, title, &every(x, step.0), &every(y, step.1), false, st)
+    }
+
+    /// The x ticks' steps of the light's and the map's panels: in one column's narrow panels
+    /// only the ends (0 and f, 0 and 1), so that one panel's last label and the next one's
+    /// first ("10", "0") do not read as one number.
+    fn x_steps(&self, narrow: bool) -> (f64, f64) {
+        if narrow {
+            (self.view.far(), 1.0)
+        } else {
+            (5.0, 0.5)
+        }
+    }
+
     /// Column `k`'s light-space panel on `area`: the map's texel grid over the frustum, with
-    /// the equal-aspect axes of `x`, `y` ticked every 5 units.
+    /// the equal-aspect axes ticked every 5 units.
     fn draw_light<DB: DrawingBackend>(
         &self,
         area: &DrawingArea<DB, Shift>,
         k: usize,
         title: &str,
         st: &ChartStyle,
+        narrow: bool,
     ) -> Result<(), Fail> {
         let [depth, across, _, _] = self.axes();
         let (n, f, t) = (self.view.near(), self.view.far(), self.view.tan_half_fov());
-        let (dx, dy) = equal_aspect(area, title, &depth, &across, st)?;
-        let every = |a: Axis, step: f64| Axis::every(a.label, a.min, a.max, 0.0, step);
-        let (dx, dy) = (every(dx, 5.0), every(dy, 5.0));
-        let mut chart = build_chart_styled(area, title, &dx, &dy, false, st)?;
+        let step = (self.x_steps(narrow).0, 5.0);
+        let mut chart = Self::equal_chart(area, title, (&depth, &across), step, st)?;
         let bounds = (0.0, f * 1.05, -f * t * 1.1, f * t * 1.1);
         for seg in &self.columns[k].light_space {
             for piece in clip_polyline(&[Some(seg[0]), Some(seg[1])], bounds) {
@@ -223,29 +302,120 @@ impl Fig4 {
         k: usize,
         title: &str,
         st: &ChartStyle,
+        narrow: bool,
     ) -> Result<(), Fail> {
         let [_, _, u, v] = self.axes();
         let st_of = |(a, b): (f64, f64)| (0.5 * (a + 1.0), 0.5 * (b + 1.0));
-        let (ux, vy) = equal_aspect(area, title, &u, &v, st)?;
-        let every = |a: Axis, step: f64| Axis::every(a.label, a.min, a.max, 0.0, step);
-        let (ux, vy) = (every(ux, 0.5), every(vy, 0.5));
-        let mut chart = build_chart_styled(area, title, &ux, &vy, false, st)?;
+        let step = (self.x_steps(narrow).1, 0.5);
+        let mut chart = Self::equal_chart(area, title, (&u, &v), step, st)?;
         chart.draw_series(LineSeries::new(
             UNIT_SQUARE.map(st_of),
             BLACK.stroke_width(2),
         ))?;
+        // The dash pattern in map units: the page's units per map unit, measured.
+        let per_unit = f64::from(
+            (chart.backend_coord(&(1.0, 0.0)).0 - chart.backend_coord(&(0.0, 0.0)).0).abs(),
+        )
+        .max(1e-9);
+        let dash = (RAY_DASH.0 / per_unit, RAY_DASH.1 / per_unit);
         for (i, seg) in self.columns[k].map.iter().enumerate() {
             let ray = i > LINES;
             for piece in clip_polyline(&[Some(seg[0]), Some(seg[1])], (-1.1, 1.1, -1.1, 1.1)) {
                 let (a, b) = (st_of(piece[0]), st_of(piece[piece.len() - 1]));
                 if ray {
-                    for d in dashes(a, b, RAY_DASH) {
+                    for d in dashes(a, b, dash) {
                         chart.draw_series(LineSeries::new(d, RAY_COLOUR.stroke_width(1)))?;
                     }
                 } else {
-                    chart.draw_series(LineSeries::new([a, b], DEPTH_COLOUR.stroke_width(1)))?;
+                    chart.draw_series(LineSeries::new(
+                        [a, b],
+                        DEPTH_COLOUR.stroke_width(depth_width(narrow)),
+                    ))?;
                 }
             }
+        }
+        Ok(())
+    }
+
+    /// The two rows of panels on `body`: a column per n′ headed by its letter, η and n′ (and
+    /// its scheme's name), the light's view (a)–(d) over the map (e)–(h), titled "(e) map of
+    /// (a)" (across two columns) or under the row's label "(e)–(h): (a)–(d) in the map (s, t)"
+    /// (in one). The columns share their axes: only the first has the y labels, and it is that
+    /// much wider, so that every panel of a row has the same scale.
+    fn draw_panels<DB: DrawingBackend>(
+        &self,
+        body: &DrawingArea<DB, Shift>,
+        narrow: bool,
+    ) -> Result<(), Fail> {
+        let (bw, bh) = body.dim_in_pixel();
+        let (label_w, line_h, margin, x_labels) = if narrow {
+            (42u32, 14u32, 4u32, 32u32)
+        } else {
+            (44, 16, 7, 36)
+        };
+        let count = self.columns.len() as u32;
+        let pw = (bw - label_w) / count;
+        let heading_style =
+            TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Top));
+        let lines = self
+            .columns
+            .iter()
+            .zip('a'..)
+            .map(|(c, l)| heading(l, c, narrow).len())
+            .max()
+            .unwrap_or(1) as u32;
+        let head = lines * line_h + 4;
+        let row_label = if narrow { line_h + 4 } else { 0 };
+        let st = |first: bool| ChartStyle {
+            title_size: PANEL_TITLE,
+            x_label_area: x_labels,
+            y_label_area: if first { label_w } else { 0 },
+            tick_size: 13,
+            desc_size: 13,
+            margin,
+        };
+        // The rows' heights, each its equal-aspect plot's with nothing to spare: the light's
+        // panel is 2.2 f tan θ high to 1.05 f deep, the map's square.
+        let t = self.view.tan_half_fov();
+        let plot_w = f64::from(pw - 3 * margin);
+        let light_h = (plot_w * 2.2 * t / 1.05).ceil() as u32 + x_labels + 2 * margin;
+        let map_title = 15 + super::chart::TITLE_GAP + 2;
+        let map_h = plot_w.ceil() as u32 + x_labels + 2 * margin + map_title;
+        let spare = bh.saturating_sub(head + light_h + row_label + map_h);
+        let (y_light, y_map) = (head + spare / 2, head + spare / 2 + light_h + row_label);
+        if narrow {
+            let style =
+                TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Top));
+            body.draw(&Text::new(
+                "(e)–(h): (a)–(d) in the map (s, t)",
+                (bw as i32 / 2, (y_light + light_h + 2) as i32),
+                style,
+            ))?;
+        }
+        for (k, col) in self.columns.iter().enumerate() {
+            let kk = k as u32;
+            let first = kk == 0;
+            let x0 = if first { 0 } else { label_w + kk * pw };
+            let cw = pw + if first { label_w } else { 0 };
+            let x_mid = (cw - pw + pw / 2) as i32;
+            let letter = |row: u32| char::from(b'a' + (row * count + kk) as u8);
+            let column = body.clone().shrink((x0, 0), (cw, bh));
+            for (i, line) in heading(letter(0), col, narrow).into_iter().enumerate() {
+                column.draw(&Text::new(
+                    line,
+                    (x_mid, (spare / 2 + line_h * i as u32) as i32),
+                    heading_style.clone(),
+                ))?;
+            }
+            let light = body.clone().shrink((x0, y_light), (cw, light_h));
+            let map = body.clone().shrink((x0, y_map), (cw, map_h));
+            let title = if narrow {
+                format!("({})", letter(1))
+            } else {
+                format!("({}) map of ({})", letter(1), letter(0))
+            };
+            self.draw_light(&light, k, "", &st(first), narrow)?;
+            self.draw_map(&map, k, &title, &st(first), narrow)?;
         }
         Ok(())
     }
@@ -256,136 +426,41 @@ impl Figure for Fig4 {
         (520, 540)
     }
 
-    /// One column: a row per n′, its light-space panel left of its map panel, the rows sharing
-    /// their x axes (labelled under the last row).
+    /// One column: the same two rows of four, narrower, the headings on three lines.
     fn single_size(&self) -> Option<(u32, u32)> {
         Some((super::Column::Single.width(), SINGLE_H))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
-        if column() == super::Column::Single {
-            return self.draw_single(root);
-        }
-        let caption = self.caption();
-        let body = frame(
-            root,
-            "The warped shadow map's grid as n′ goes from ∞ to n",
-            &[caption.as_str()],
-        )?;
-        let (body, key) = {
-            let (_, bh) = body.dim_in_pixel();
-            body.split_vertically(bh.saturating_sub(KEY_H))
+        let narrow = column() == super::Column::Single;
+        let caption = if narrow {
+            format!(
+                "Lloyd et al. 2006, Fig. 4, from the warped matrices: n\u{a0}=\u{a0}{n}, \
+                 f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, light overhead, plane \
+                 y\u{a0}=\u{a0}0. (a)–(d): the {LINES}\u{a0}×\u{a0}{LINES} texel grid over \
+                 the frustum, from the light; (e)–(h): the frustum in the map.",
+                n = self.view.near(),
+                f = self.view.far(),
+                theta = self.view.half_fov().to_degrees(),
+            )
+        } else {
+            self.caption()
         };
-        // Two rows (the light's view, the map), one column per n′, as in the paper; each column
-        // headed by its letter, η and n′ on two lines. The columns share their axes: only the
-        // first has the y labels, and it is that much wider, so that every panel has the same
-        // scale.
-        let (bw, bh) = body.dim_in_pixel();
-        let head = 36;
-        let label_w = 44;
-        let count = self.columns.len() as u32;
-        let pw = (bw - label_w) / count;
-        let heading =
-            TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Top));
-        for (k, col) in self.columns.iter().enumerate() {
-            let kk = k as u32;
-            let first = kk == 0;
-            let x0 = if first { 0 } else { label_w + kk * pw };
-            let cw = pw + if first { label_w } else { 0 };
-            let area = body.clone().shrink((x0, 0), (cw, bh));
-            let st = ChartStyle {
-                title_size: PANEL_TITLE,
-                x_label_area: 36,
-                y_label_area: if first { label_w } else { 0 },
-                tick_size: 13,
-                desc_size: 13,
-                margin: 7,
-            };
-            let x_mid = (cw - pw + pw / 2) as i32;
-            let letter = |row: u32| format!("({})", char::from(b'a' + (row * count + kk) as u8));
-            // "(a) η = −1 (uniform)" over "n′ = ∞".
-            let (eta, np) = col.title.split_once(", ").unwrap_or((&col.title, ""));
-            for (i, line) in [format!("{} {eta}", letter(0)), np.to_string()]
-                .into_iter()
-                .enumerate()
-            {
-                area.draw(&Text::new(line, (x_mid, 16 * i as i32), heading.clone()))?;
-            }
-            let rest = area.clone().shrink((0, head), (cw, bh - head));
-            // The map row a little taller: it has a title and the light row none.
-            let (_, rh) = rest.dim_in_pixel();
-            let (top, bottom) = rest.split_vertically(rh * 47 / 100);
-            let rows = [top, bottom];
-            // Equal aspect in both rows: the frustum and the map undistorted.
-            self.draw_light(&rows[0], k, "", &st)?;
-            self.draw_map(&rows[1], k, &letter(1), &st)?;
-        }
-        draw_key(&key)
-    }
-}
-
-/// The one-column figure's height: at most 800 units (640 points printed 240 wide).
-const SINGLE_H: u32 = 800;
-
-impl Fig4 {
-    /// The one-column layout: a row per column of the two-column figure, headed by its letters,
-    /// η and n′ on one line, the light-space panel (a)–(d) left of the map panel (e)–(h); the
-    /// rows share their x axes, labelled under the last row only, so every panel of a kind has
-    /// the same scale; the key in two rows under them.
-    fn draw_single<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
-        let caption = format!(
-            "Lloyd et al. 2006, Fig. 4, from the warped matrices: n\u{a0}=\u{a0}{n}, \
-             f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, light overhead, plane \
-             y\u{a0}=\u{a0}0. (a)–(d): the {LINES}\u{a0}×\u{a0}{LINES} texel grid over the \
-             frustum, from the light; (e)–(h): the frustum in the map.",
-            n = self.view.near(),
-            f = self.view.far(),
-            theta = self.view.half_fov().to_degrees(),
-        );
         let body = frame(
             root,
             "The warped shadow map's grid as n′ goes from ∞ to n",
             &[caption.as_str()],
         )?;
         let (_, bh) = body.dim_in_pixel();
-        let (body, key) = body.split_vertically(bh.saturating_sub(2 * KEY_H));
-        let (bw, bh) = body.dim_in_pixel();
-        let (head, x_labels) = (24u32, 36u32);
-        let count = self.columns.len() as u32;
-        let row_h = (bh - x_labels) / count;
-        let (light_label, map_label) = (48u32, 48u32);
-        // The two panels' plots equally wide: the light panel's area is wider by its y labels'.
-        let left_w = (bw + light_label - map_label) / 2;
-        let heading =
-            TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Top));
-        for (k, col) in self.columns.iter().enumerate() {
-            let kk = k as u32;
-            let last = kk + 1 == count;
-            let y0 = kk * row_h;
-            let h = row_h + if last { x_labels } else { 0 };
-            let row = body.clone().shrink((0, y0), (bw, h));
-            let letter = |r: u32| char::from(b'a' + (r * count + kk) as u8);
-            row.draw(&Text::new(
-                format!("({}), ({}): {}", letter(0), letter(1), col.title),
-                (bw as i32 / 2, 5),
-                heading.clone(),
-            ))?;
-            let panels = row.clone().shrink((0, head), (bw, h - head));
-            let (left, right) = panels.split_horizontally(left_w);
-            let st = |y_label_area: u32| ChartStyle {
-                title_size: PANEL_TITLE,
-                x_label_area: if last { x_labels } else { 0 },
-                y_label_area,
-                tick_size: 13,
-                desc_size: 13,
-                margin: 7,
-            };
-            self.draw_light(&left, k, "", &st(light_label))?;
-            self.draw_map(&right, k, "", &st(map_label))?;
-        }
-        draw_key(&key)
+        let key_rows = if narrow { 2 } else { 1 };
+        let (body, key) = body.split_vertically(bh.saturating_sub(key_rows * KEY_H));
+        self.draw_panels(&body, narrow)?;
+        draw_key(&key, narrow)
     }
 }
+
+/// The one-column figure's height: at most 525 units (420 points printed 240 wide).
+const SINGLE_H: u32 = 500;
 
 /// The height of the key under the panels.
 const KEY_H: u32 = 22;
@@ -393,12 +468,12 @@ const KEY_H: u32 = 22;
 /// The key of the four kinds of line under the panels, in as few rows of [`KEY_H`] as fit the
 /// width (one across two columns, two in one), so that a figure without its caption still says
 /// what each line is.
-fn draw_key<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+fn draw_key<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, narrow: bool) -> Result<(), Fail> {
     let style = TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
     let items: [(&str, RGBColor, u32, bool); 4] = [
         ("texel grid", GRID_COLOUR, 1, false),
         ("frustum, map's square", BLACK, 2, false),
-        ("constant depth", DEPTH_COLOUR, 1, false),
+        ("constant depth", DEPTH_COLOUR, depth_width(narrow), false),
         ("ray from the eye", RAY_COLOUR, 1, true),
     ];
     let sample = 22;
@@ -427,7 +502,7 @@ fn draw_key<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), Fai
                 (f64::from(x + sample), f64::from(y)),
             );
             let pieces = if *dashed {
-                dashes(a, b, (4.0, 3.0))
+                dashes(a, b, RAY_DASH)
             } else {
                 vec![[a, b]]
             };
@@ -496,15 +571,17 @@ mod tests {
         assert!((d[1][1].1 - 0.095).abs() < 1e-12);
     }
 
-    /// Figure review 2, in both layouts: the two families of (e)–(h) differ in dash, not only in
-    /// hue (orange and green printed as one grey): every ray (13 a panel, 52 in all) is drawn
-    /// in dashes, so the grey rays' pieces outnumber them several times, while the planes of
-    /// constant depth are whole, solid and darker; the column headings are one with their
-    /// letters ("(a) η = −1 (uniform)", no "(a)" row of its own); the caption says what the
-    /// black square is and calls the paper's figure a sketch; the key names all four lines in
-    /// the bare figure too; and one column has a layout (it was refused) 300 units wide and at
-    /// most 800 tall, its x axes shared (one "depth z" and one "map s"), every panel lettered,
-    /// its caption at most five lines.
+    /// Figure reviews 2 and 3, in both layouts: the two families of (e)–(h) differ in dash, not
+    /// only in hue (orange and green printed as one grey): every ray (7 a panel, 28 in all) is
+    /// drawn in dashes, so the grey rays' pieces outnumber them several times, while the planes
+    /// of constant depth are whole, solid, darker and twice as thick as the texel grid (review
+    /// 3: the two were solid purples of one weight, and the key's swatches likewise); the
+    /// column headings are one with their letters ("(a) η = −1 (uniform)", no "(a)" row of its
+    /// own); the map panels say whose map they are ("(e) map of (a)", or the row's label in one
+    /// column: review 3, the bare form's lower row had no stated relation to the upper); the
+    /// caption calls the paper's figure a sketch; the key names all four lines in the bare
+    /// figure too; and one column has a layout 300 units wide and at most 525 tall, its panels
+    /// in the same two rows of four, every panel lettered, its caption at most five lines.
     #[test]
     fn families_differ_in_dash_headings_merged_and_one_column_exists() {
         use super::super::chart::read_svg::{draw_svg, texts};
@@ -515,12 +592,16 @@ mod tests {
             (Page::Double, false),
             (Page::Double, true),
             (Page::Single, false),
+            (Page::Single, true),
         ] {
             let size = match column {
                 Page::Double => fig.size(),
                 Page::Single => fig.single_size().expect("a one-column layout"),
             };
-            assert!(size.1 <= 800, "{size:?}");
+            assert!(
+                size.1 <= if column == Page::Single { 525 } else { 800 },
+                "{size:?}"
+            );
             let svg = with_page(bare, column, || {
                 draw_svg(size, |area| fig.draw(area).unwrap())
             });
@@ -529,14 +610,29 @@ mod tests {
                     .filter(|l| l.starts_with("<polyline") && l.contains(hex))
                     .count()
             };
+            let width_of = |hex: &str| {
+                let l = svg
+                    .lines()
+                    .find(|l| l.starts_with("<polyline") && l.contains(hex))
+                    .unwrap_or_else(|| panic!("no line in {hex}"));
+                let at = l.find("stroke-width=\"").unwrap() + "stroke-width=\"".len();
+                l[at..at + l[at..].find('"').unwrap()]
+                    .parse::<f64>()
+                    .unwrap()
+            };
             let rays = lines_of("stroke=\"#5A5A5A\"");
             let depths = lines_of("stroke=\"#3F007D\"");
-            // 13 rays and 13 planes a panel, 4 panels; each ray in at least 5 dashes.
-            assert!(rays >= 5 * 52, "{column:?}: {rays} grey pieces");
+            // 7 rays and 13 planes a panel, 4 panels; each ray in at least 5 dashes.
+            assert!(rays >= 5 * 28, "{column:?}: {rays} grey pieces");
             assert!(
                 (4 * 13..2 * 52).contains(&depths),
                 "{column:?}: {depths} depth lines"
             );
+            // The depth planes (and their key swatch) twice the texel grid's width across two
+            // columns; darker (#3F007D against #7B6DB4) in both.
+            let want = if column == Page::Double { 2.0 } else { 1.0 };
+            assert_eq!(width_of("stroke=\"#3F007D\""), want);
+            assert_eq!(width_of("stroke=\"#7B6DB4\""), 1.0);
             let all: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
             for key in [
                 "texel grid",
@@ -562,6 +658,9 @@ mod tests {
             if column == Page::Double {
                 assert!(all.iter().any(|t| t == "(a) η = −1 (uniform)"), "{all:?}");
                 assert!(!all.iter().any(|t| t == "(a)"), "{all:?}");
+                for title in ["(e) map of (a)", "(f) map of (b)", "(h) map of (d)"] {
+                    assert!(all.iter().any(|t| t == title), "{title}: {all:?}");
+                }
                 if !bare {
                     let text: String = svg
                         .lines()
@@ -573,13 +672,23 @@ mod tests {
                 }
             } else {
                 assert_eq!(size.0, 300);
-                assert_eq!(all.iter().filter(|t| *t == "depth z").count(), 1, "{all:?}");
-                assert_eq!(all.iter().filter(|t| *t == "map s").count(), 1, "{all:?}");
-                for letters in ["(a), (e)", "(b), (f)", "(c), (g)", "(d), (h)"] {
-                    assert!(
-                        all.iter().any(|t| t.starts_with(letters)),
-                        "{letters}: {all:?}"
-                    );
+                assert!(
+                    all.iter()
+                        .any(|t| t == "(e)–(h): (a)–(d) in the map (s, t)"),
+                    "{all:?}"
+                );
+                for letter in ["(a)", "(b)", "(c)", "(d)", "(e)", "(f)", "(g)", "(h)"] {
+                    assert!(all.iter().any(|t| t == letter), "{letter}: {all:?}");
+                }
+                for line in [
+                    "η = −1",
+                    "n′ = ∞",
+                    "uniform",
+                    "η = −0.6",
+                    "n′ = 23.91",
+                    "PSM",
+                ] {
+                    assert!(all.iter().any(|t| t == line), "{line}: {all:?}");
                 }
             }
         }
