@@ -5,13 +5,14 @@
 //! the face pairs by their largest M_x, each column's height among its members by M_z).
 
 mod hatch;
+mod leaders;
 mod table;
 
 use super::chart::{
     boxed_text, build_chart_styled, column, equal_aspect, frame, linspace, Axis, Chart2d,
-    ChartStyle, FONT, PALETTE, PANEL_TITLE, SWEEP,
+    ChartStyle, FONT, PANEL_TITLE, SWEEP,
 };
-use super::from_light::{seen_from_light, SEEN_X};
+use super::from_light::seen_from_light;
 use super::warp_grid::minus;
 use super::Column;
 use super::{Fail, Figure};
@@ -22,6 +23,7 @@ use crate::scheme::{scheme, Partition, Region};
 use crate::ViewFrustum;
 use glam::{DMat3, DMat4, DVec2, DVec3};
 use hatch::HATCHES;
+use leaders::leader_order;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -45,6 +47,14 @@ const THETA_DEG: f64 = 30.0;
 
 /// Lines of the map's texel grid drawn in panel (b), per direction.
 const GRID: usize = 9;
+
+/// Panels (a) and (b)'s axes: the light's view, light-space −x to the right and z up (the
+/// third figure review: "light −x" read as "light minus x").
+const X_NAME: &str = "−x in light space";
+const Z_NAME: &str = "z in light space";
+
+/// The one-column page's height, in units (420 pt printed at 0.8 pt a unit).
+const SINGLE_HEIGHT: u32 = 525;
 
 /// The partitions' tags' font size (the least a figure's text may have across two columns).
 const TAG: u32 = 13;
@@ -144,6 +154,20 @@ pub(super) fn fig8() -> Result<Fig8, Fail> {
 }
 
 impl Fig8 {
+    /// Partition `i`'s fill, by its face: the parameter sweep's purples for the right, left
+    /// and top faces (the darkest, middle and lightest) and black (a mid grey once mixed with
+    /// white) for the near face. No scheme's colour: the partitions are no schemes. Each
+    /// partition also has its own hatch ([`HATCHES`]`[i]`), which tells apart the two parts
+    /// of a face and every pair that prints as one grey.
+    pub(super) fn fill(&self, i: usize) -> RGBColor {
+        match self.cells[i].tag.chars().next() {
+            Some('R') => SWEEP[0],
+            Some('L') => SWEEP[2],
+            Some('T') => SWEEP[4],
+            _ => BLACK,
+        }
+    }
+
     /// The map of partition `i` on the light's view: the light's (right, up) = light-space
     /// (−x, z) of [`seen_from_light`] ↦ its map's (u, v), a 2D projective map (the map's u and
     /// v are constant along the light, so any light-space height gives the same one; the eye's,
@@ -162,7 +186,7 @@ impl Fig8 {
 }
 
 /// Whether `p` lies inside the convex polygon `poly` (either orientation).
-fn inside(poly: &[DVec2], p: DVec2) -> bool {
+pub(super) fn inside(poly: &[DVec2], p: DVec2) -> bool {
     let n = poly.len();
     let sides: Vec<f64> = (0..n)
         .map(|i| (poly[(i + 1) % n] - poly[i]).perp_dot(p - poly[i]))
@@ -180,21 +204,22 @@ impl Figure for Fig8 {
         (520, 520)
     }
 
-    /// One column: (a) and (b) side by side, (c) under them, the table under (c).
+    /// One column: (a) and (b) side by side, (c) and a key under them, the table last; 525
+    /// units tall (420 pt printed, the one-column cap; it was 700).
     fn single_size(&self) -> Option<(u32, u32)> {
-        Some((Column::Single.width(), 700))
+        Some((Column::Single.width(), SINGLE_HEIGHT))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let single = column() == Column::Single;
         let shown = &self.cells[self.shown];
         let caption = if single {
+            // The key beside (c) decodes the tags and the table's columns.
             format!(
                 "Lloyd et al. 2005, Fig. 8: k\u{a0}=\u{a0}{} z-partitions a face, LiSPSM, \
                  n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, θ\u{a0}=\u{a0}{THETA_DEG}°, light \
-                 {}° high, {}° right of behind. (a) R, L, T, N: right, left, top, near face; 1 \
-                 near, 2 far. (b) {}'s map. (c),\u{a0}(d) Eq\u{a0}6.",
-                self.k, LIGHT.0, LIGHT.1, shown.tag,
+                 {}° high, {}° right of behind.",
+                self.k, LIGHT.0, LIGHT.1,
             )
         } else {
             format!(
@@ -227,18 +252,20 @@ impl Figure for Fig8 {
             y_label_area: 58,
             ..style
         };
-        let rows = self.cells.len() as u32 + 2;
-        let table_h = TABLE_TOP + rows * table_step(single);
+        let table_h = TABLE_TOP + self.table_lines(single) * table_step(single);
         if single {
-            // (a) across the column, so that the tags of the parts at the apex find room in
-            // one row under it; (b) and (c) side by side under it; the table last.
+            // (a) as wide as its tags under the apex need, the key (what the tags and the
+            // table's columns mean) beside it, where (a)'s data leaves the width unused; (b)
+            // and (c) side by side under them; the table last.
             let panels = bh.saturating_sub(table_h);
-            let (a, rest) = body.split_vertically(panels * 52 / 100);
-            let (bc, table) = rest.split_vertically(panels - panels * 52 / 100);
-            let (b, c) = bc.split_horizontally(bw * 45 / 100);
+            let (top, table) = body.split_vertically(panels);
+            let (row1, row2) = top.split_vertically(panels * 53 / 100);
+            let (a, key) = row1.split_horizontally(bw * 66 / 100);
+            let (b, c) = row2.split_horizontally(bw * 40 / 100);
             self.draw_faces(&a, &style)?;
             self.draw_warp(&b, &style)?;
             self.draw_texture(&c, &texture_style)?;
+            self.draw_key(&key)?;
             self.draw_table(&table, single)
         } else {
             let (top, table) = body.split_vertically(bh.saturating_sub(table_h));
@@ -264,15 +291,16 @@ impl Fig8 {
     }
 
     /// The convex outline `poly` (data units of `chart`, equal aspect: `per_px` data units a
-    /// pixel both ways) filled in partition `i`'s pastel and hatched in its colour
-    /// ([`HATCHES`]), so that partitions whose pastels print as one grey still differ.
+    /// pixel both ways) filled in partition `i`'s pastel ([`Fig8::fill`]) and hatched in its
+    /// colour ([`HATCHES`]), so that partitions whose pastels print as one grey still differ.
     fn fill_hatched<DB: DrawingBackend>(
+        &self,
         chart: &mut Chart2d<'_, DB>,
         poly: &[DVec2],
         i: usize,
         per_px: f64,
     ) -> Result<(), Fail> {
-        let colour = PALETTE[i % PALETTE.len()];
+        let colour = self.fill(i);
         let pts: Vec<(f64, f64)> = poly.iter().map(|p| (p.x, p.y)).collect();
         chart.draw_series(std::iter::once(Polygon::new(
             pts,
@@ -303,15 +331,15 @@ impl Fig8 {
         let (xa, ya) = equal_aspect(
             area,
             title,
-            &Axis::linear(SEEN_X, lo.x, hi.x),
-            &Axis::linear("light z", lo.y, hi.y),
+            &Axis::linear(X_NAME, lo.x, hi.x),
+            &Axis::linear(Z_NAME, lo.y, hi.y),
             style,
         )?;
         let mut chart = build_chart_styled(area, title, &xa, &ya, false, style)?;
         let (pw, _) = chart.plotting_area().dim_in_pixel();
         let per_px = (xa.max - xa.min) / f64::from(pw);
         for (i, c) in self.cells.iter().enumerate() {
-            Self::fill_hatched(&mut chart, &c.outline, i, per_px)?;
+            self.fill_hatched(&mut chart, &c.outline, i, per_px)?;
             let mut closed: Vec<(f64, f64)> = c.outline.iter().map(|p| (p.x, p.y)).collect();
             closed.push(closed[0]);
             chart.draw_series(LineSeries::new(closed, BLACK.stroke_width(1)))?;
@@ -347,31 +375,19 @@ impl Fig8 {
                     BLACK,
                 )?;
             } else {
-                outside.push((mid, half.x, c.tag.as_str()));
+                // Outside, the tag's own half width and 1 unit (no box to fit inside).
+                outside.push((mid, (0.5 * f64::from(tw) + 1.0) * per_px, c.tag.as_str()));
             }
         }
-        // Left to right under the drawing, each at least its width from the one before and
-        // all inside the plot (pushed right from the left, then back from the right edge),
-        // joined to its part by a leader.
-        outside.sort_by(|a, b| a.0.x.total_cmp(&b.0.x));
+        // Under the drawing in the order whose leaders cross neither one another nor other
+        // parts most briefly ([`leader_order`]: left to right by the parts' centres let two
+        // leaders cross over the apex), each at least its width from the one before and all
+        // inside the plot, joined to its part by a leader.
         let y = bottom - 10.0 * per_px;
-        let gap = 6.0 * per_px;
-        let mut xs: Vec<f64> = Vec::with_capacity(outside.len());
-        for (k, (mid, hw, _)) in outside.iter().enumerate() {
-            // Clear of the frame: a tag at the left end touched the y axis.
-            let low = match k {
-                0 => xa.min + hw + gap,
-                _ => xs[k - 1] + outside[k - 1].1 + gap + hw,
-            };
-            xs.push(mid.x.max(low));
-        }
-        for k in (0..xs.len()).rev() {
-            let high = match outside.get(k + 1) {
-                Some(next) => xs[k + 1] - next.1 - gap - outside[k].1,
-                None => xa.max - outside[k].1 - gap,
-            };
-            xs[k] = xs[k].min(high);
-        }
+        let gap = 5.0 * per_px;
+        let outlines: Vec<&[DVec2]> = self.cells.iter().map(|c| c.outline.as_slice()).collect();
+        let (outside, xs) =
+            leader_order(outside, (xa.min, xa.max), gap, y + 3.0 * per_px, &outlines);
         for ((mid, _, tag), x) in outside.into_iter().zip(xs) {
             chart.draw_series(LineSeries::new(
                 [(mid.x, mid.y), (x, y + 3.0 * per_px)],
@@ -400,12 +416,14 @@ impl Fig8 {
             .map(|&(u, v)| apply(&to_light, DVec2::new(u, v)))
             .collect();
         let (lo, hi) = Self::window(cell.outline.iter().chain(&border).copied());
-        let title = format!("(b) map of {}", cell.tag);
+        // The title names the grid (the bare figure has no caption to), the part's tag inside
+        // its thick outline names the part.
+        let title = format!("(b) {}'s texel grid", cell.tag);
         let (xa, ya) = equal_aspect(
             area,
             &title,
-            &Axis::linear(SEEN_X, lo.x, hi.x),
-            &Axis::linear("light z", lo.y, hi.y),
+            &Axis::linear(X_NAME, lo.x, hi.x),
+            &Axis::linear(Z_NAME, lo.y, hi.y),
             style,
         )?;
         let mut chart = build_chart_styled(area, &title, &xa, &ya, false, style)?;
@@ -413,7 +431,7 @@ impl Fig8 {
         // The part in its pastel only: the map's grid is the pattern drawn over it here.
         chart.draw_series(std::iter::once(Polygon::new(
             pts.clone(),
-            PALETTE[self.shown % PALETTE.len()].mix(0.35).filled(),
+            self.fill(self.shown).mix(0.35).filled(),
         )))?;
         for c in linspace(-1.0, 1.0, GRID) {
             for (a, b) in [((c, -1.0), (c, 1.0)), ((-1.0, c), (1.0, c))] {
@@ -431,6 +449,15 @@ impl Fig8 {
         let mut closed = pts;
         closed.push(closed[0]);
         chart.draw_series(LineSeries::new(closed, BLACK.stroke_width(2)))?;
+        let mid = cell.outline.iter().copied().sum::<DVec2>() / cell.outline.len() as f64;
+        boxed_text(
+            &mut chart,
+            (mid.x, mid.y),
+            &cell.tag,
+            Pos::new(HPos::Center, VPos::Center),
+            TAG,
+            BLACK,
+        )?;
         Ok(())
     }
 
@@ -467,7 +494,7 @@ impl Fig8 {
                 DVec2::new(x1, y1),
                 DVec2::new(x0, y1),
             ];
-            Self::fill_hatched(&mut chart, &rect, i, per_px)?;
+            self.fill_hatched(&mut chart, &rect, i, per_px)?;
             chart.draw_series(std::iter::once(Rectangle::new(
                 [(x0, y0), (x1, y1)],
                 BLACK.stroke_width(1),
@@ -639,9 +666,10 @@ mod tests {
         }
     }
 
-    /// Figure review 2: both captions name all four panels, the two-column one saying why
-    /// (b)'s map reaches past R2 and why (d)'s errors after allocation differ within a column;
-    /// read back from the SVGs' caption lines (#323232), at most five in each.
+    /// Figure review 2: the two-column caption names all four panels, saying why (b)'s map
+    /// reaches past R2 and why (d)'s errors after allocation differ within a column (the
+    /// one-column figure says what its panels are in its key); read back from the SVGs'
+    /// caption lines (#323232), at most five in each.
     #[test]
     fn captions_explain_b_and_d() {
         use super::super::chart::read_svg::{draw_svg, visible};
@@ -662,10 +690,11 @@ mod tests {
                 .collect();
             assert!((1..=5).contains(&lines.len()), "{column:?}: {lines:?}");
             let text = lines.join(" ").replace('\u{a0}', " ");
-            for p in ["(a)", "(b)", "(c)", "(d)"] {
-                assert!(text.contains(p), "{column:?}: no {p} in {text}");
-            }
+            // One column names the panels in the figure (its key says what (d) is).
             if column == Column::Double {
+                for p in ["(a)", "(b)", "(c)", "(d)"] {
+                    assert!(text.contains(p), "{column:?}: no {p} in {text}");
+                }
                 assert!(text.contains("larger frustum"), "{text}");
                 assert!(text.contains("largest M"), "{text}");
             }

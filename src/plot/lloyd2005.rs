@@ -20,10 +20,25 @@ fn fmt_signed(v: f64) -> String {
     s.replace('-', "\u{2212}")
 }
 
-/// Fig 4: the error distribution g(z) over z ∈ [1, α] for n chosen by ξ = 1, ½, 0, −½, −1.
-pub(super) fn fig4() -> Result<Tall, Fail> {
+/// Where Fig 4 asks its curves' labels to end: at z = 9.73 (the sample nearest 9.75), so that
+/// a label's text ends about 15 units inside the axis end (a label at the end point itself
+/// ran to the frame) and reads as its curve's by the far plane, where the five are apart.
+const FIG4_LABEL_AT: usize = 193;
+
+/// Where Fig 4's g₀ line asks its label to be: z = 5.57 (the sample nearest the middle of
+/// the axis), above the line, where no curve meets it (the ξ = 0 curve meets it at both
+/// planes).
+const FIG4_G0_AT: usize = 101;
+
+/// Fig 4's samples of z ∈ [1, α].
+const FIG4_SAMPLES: usize = 200;
+
+/// Fig 4's chart. Each curve is labelled directly; across two columns "n = 1.613 (ξ = ½)",
+/// in one column (a plot about 220 units wide, where those labels, up to 121 units long, lay
+/// on their own and other curves) "n = 1.613", the caption giving the ξ.
+fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
     let alpha = FIG4_ALPHA;
-    let zs = linspace(1.0, alpha, 200);
+    let zs = linspace(1.0, alpha, FIG4_SAMPLES);
     let mut c = LineChart::new(
         "",
         Axis::linear("depth z (near plane 1, far plane α)", 1.0, alpha),
@@ -31,27 +46,57 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
         Axis::every("error distribution g(z)", 0.0, 1.05, 0.0, 0.2),
     );
     c.legend = SeriesLabelPosition::UpperMiddle;
-    for (i, xi) in [1.0, 0.5, 0.0, -0.5, -1.0].into_iter().enumerate() {
+    for (i, xi) in FIG4_XI.into_iter().enumerate() {
         let n = n_from_xi(alpha, xi)?;
-        let label = match n.as_finite() {
-            Some(v) if v == v.round() => format!("n = {v} (ξ = {})", fmt_signed(xi)),
-            Some(v) => format!("n = {v:.3} (ξ = {})", fmt_signed(xi)),
-            None => format!("n = ∞ (ξ = {})", fmt_signed(xi)),
+        let name = match n.as_finite() {
+            Some(v) if v == v.round() => format!("n = {v}"),
+            Some(v) => format!("n = {v:.3}"),
+            None => "n = ∞".to_string(),
+        };
+        let label = if single {
+            name
+        } else {
+            format!("{name} (ξ = {})", fmt_signed(xi))
         };
         let pts = zs
             .iter()
             .map(|&z| Ok((z, distribution_g(alpha, n, z)?)))
             .collect::<Result<Vec<_>, crate::Error>>()?;
-        // Labelled at the curve's right end (the far plane), where the five are apart.
-        c.series
-            .push(Series::line(label, pts, fig4_colour(i)).direct());
+        // Labelled by the curve's right end (the far plane), where the five are apart.
+        let mut s = Series::line(label, pts, fig4_colour(i)).direct();
+        s.direct_at = Some(zs[FIG4_LABEL_AT]);
+        c.series.push(s);
     }
+    // The least maximum g₀, a grey dotted reference line named in the figure (the bare form
+    // has no caption to say what it is). Across two columns it is quiet, so that the ξ = 0
+    // curve's label stands above the curve (and this line, which the curve meets on both
+    // planes), its own label by the middle of the axis; in one column, where the plot has
+    // no room between the curves for both there, the ξ = 0 label goes under its curve and
+    // this one above the line by the far plane.
     let g0 = g_min(alpha)?;
-    let grey = RGBColor(90, 90, 90);
-    let mut s = Series::line(String::new(), vec![(1.0, g0), (alpha, g0)], grey).dotted();
-    s.label = None;
+    let mut s = Series::line(
+        "g_0 = 1/√α",
+        zs.iter().map(|&z| (z, g0)).collect(),
+        RGBColor(90, 90, 90),
+    )
+    .dotted()
+    .reference()
+    .direct();
+    s.quiet = !single;
+    s.direct_at = Some(zs[if single { FIG4_LABEL_AT } else { FIG4_G0_AT }]);
     s.width = 1;
     c.series.push(s);
+    Ok(c)
+}
+
+/// Fig 4's ξ: PSM, between, LiSPSM, between, the uniform map.
+const FIG4_XI: [f64; 5] = [1.0, 0.5, 0.0, -0.5, -1.0];
+
+/// Fig 4: the error distribution g(z) over z ∈ [1, α] for n chosen by ξ = 1, ½, 0, −½, −1.
+pub(super) fn fig4() -> Result<Tall, Fail> {
+    let alpha = FIG4_ALPHA;
+    let c = fig4_chart(false)?;
+    let g0 = g_min(alpha)?;
     let head = format!(
         "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), α\u{a0}=\u{a0}{alpha}: g for the n of \
          ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM, n\u{a0}=\u{a0}1\u{a0}+\u{a0}√α), −½ and \
@@ -63,21 +108,27 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
     Ok(Tall {
         charts: Charts {
             size: (520, 500),
-            title: "Error distribution function g for several warp distances n".into(),
+            title: "Error distribution g for several n".into(),
             caption: vec![format!("{head} {tail}")],
             charts: vec![c],
         },
-        single_height: 640,
-        // One column: the legend names the curves, so the caption keeps only what the figure
-        // cannot show.
+        single_height: FIG4_SINGLE_HEIGHT,
+        // One column: the same direct labels; the caption keeps only what the figure cannot
+        // show.
         single_caption: vec![format!(
-            "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), α\u{a0}=\u{a0}{alpha}: g for the n of five ξ; \
-             ξ\u{a0}=\u{a0}1: PSM, 0: LiSPSM, −1: uniform. Dotted: \
-             g_0\u{a0}=\u{a0}1/√α\u{a0}=\u{a0}{g0:.3}, the least\u{a0}maximum."
+            "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), α\u{a0}=\u{a0}{alpha}: g for the n of \
+             ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM), −½ and −1 (uniform), top to bottom at \
+             the far plane. Dotted: the least maximum g_0\u{a0}=\u{a0}{g0:.3}."
         )],
-        legend_in_single: true,
+        single_charts: Some(vec![fig4_chart(true)?]),
     })
 }
+
+/// Fig 4's one-column height, in units: 480 (384 pt printed), for one line chart (it was 640,
+/// a 1 : 2 portrait of one chart; the third figure review asked for about 300 pt, but the
+/// chart's six direct labels need a plot about 270 units tall to keep clear of one another
+/// and of the curves: at 440 units the g₀ label covered the ξ = 0 curve's).
+const FIG4_SINGLE_HEIGHT: u32 = 480;
 
 /// Fig 4's colour of its `i`-th curve (ξ = 1, ½, 0, −½, −1): the schemes' colours for PSM
 /// (ξ = 1), LiSPSM (ξ = 0) and the uniform map (ξ = −1), and the parameter sweep's for the two
@@ -92,17 +143,15 @@ fn fig4_colour(i: usize) -> RGBColor {
     }
 }
 
-/// A figure of one chart whose one-column layout is `single_height` units tall: about as tall
-/// as in two columns, so that its direct labels keep the room they have there (Fig 4's five and
-/// Fig 7's eight line-end labels covered other lines in a chart 290 units tall). In one column
-/// it has its own, shorter caption, and with `legend_in_single` its direct labels become one
-/// legend below the chart (Fig 4's labels, 130 units wide, found no place by their own curves
-/// in a plot 200 units wide).
+/// A figure of line charts with its own one-column height and shorter one-column caption
+/// (Fig 4's single chart and Fig 7's two stacked panels keep their direct labels in one
+/// column, in plots tall enough for the labels to stay apart).
 pub(super) struct Tall {
     pub(super) charts: Charts,
     single_height: u32,
     single_caption: Vec<String>,
-    legend_in_single: bool,
+    /// The charts drawn in one column, where they differ from the two-column ones.
+    single_charts: Option<Vec<LineChart>>,
 }
 
 impl Figure for Tall {
@@ -120,10 +169,8 @@ impl Figure for Tall {
         }
         let mut one = self.charts.clone();
         one.caption.clone_from(&self.single_caption);
-        if self.legend_in_single {
-            for s in one.charts.iter_mut().flat_map(|c| c.series.iter_mut()) {
-                s.direct = false;
-            }
+        if let Some(charts) = &self.single_charts {
+            one.charts.clone_from(charts);
         }
         one.draw(root)
     }
@@ -145,17 +192,28 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
     let mut charts = Vec::new();
     // (ξ, panel, the panel's y range: to its lines' least value at k = 10, with room above the
     // top line's label).
-    for (xi, title, lo) in [(0.0, "(a) ξ = 0", 0.07), (1.0, "(b) |ξ| = 1", 1e-3)] {
+    // (a) spans 1.3 decades: labelled at 2 and 5 between its two decades as well, so that
+    // the caption's values (0.575 at k = 2) can be read off; (b) at its four decades. Both in
+    // powers of ten (one format for the quantity).
+    let panels: [(f64, &str, f64, &[f64]); 2] = [
+        (0.0, "(a) ξ = 0", 0.07, &[0.1, 0.2, 0.5, 1.0]),
+        (1.0, "(b) |ξ| = 1", 1e-3, &[1e-3, 1e-2, 1e-1, 1.0]),
+    ];
+    for (xi, title, lo, at) in panels {
+        // Room under the lowest line's end for its label (the lower limits were 0.07 and
+        // 10⁻³: in one column the α = 10⁴ labels found room only beside other lines' labels).
+        let lo = lo * FIG7_ROOM_BELOW;
         let mut c = LineChart::new(
             title,
             // A tick at every k (the paper's k = 1 … 10).
             Axis::every("number of face subdivisions k", 1.0, 10.0, 1.0, 1.0),
-            // Decades only, as powers of ten in both panels (one format for the quantity).
             Axis::log10("m_{max}(k) / m_{max}(1) (log scale)", lo, 1.5)
-                .labelled_at(&[1e-3, 1e-2, 1e-1, 1.0])
+                .labelled_at(at)
                 .in_powers(),
         );
         c.legend = SeriesLabelPosition::LowerLeft;
+        // Room for "5×10⁻¹" beside the axis' name (the default 64 units let them touch).
+        c.y_label_area = Some(FIG7_Y_LABEL_AREA);
         for (i, alpha) in alphas.into_iter().enumerate() {
             let pts = ks
                 .iter()
@@ -185,7 +243,7 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
     Ok(Tall {
         charts: Charts {
             size: (520, 500),
-            title: "Maximum error against the number of face subdivisions".into(),
+            title: "Maximum error against subdivisions".into(),
             caption: vec![format!(
                 "Lloyd et al. 2005, Fig. 7 (Eq 7): the maximum error with k self-similar face \
                  subdivisions over its value at k\u{a0}=\u{a0}1, (a) for ξ\u{a0}=\u{a0}0 and \
@@ -196,16 +254,26 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
             )],
             charts,
         },
-        single_height: 800,
+        single_height: FIG7_SINGLE_HEIGHT,
         single_caption: vec![format!(
-            "Lloyd et al. 2005, Fig. 7 (Eq 7): the maximum error with k face subdivisions over \
-             its value at k\u{a0}=\u{a0}1. At α\u{a0}=\u{a0}{alpha}, k\u{a0}=\u{a0}2 gains \
-             {g1_2:.1}× with |ξ|\u{a0}=\u{a0}1 (the report's \"nearly 5 times\") and \
-             {g0_2:.2}× with ξ\u{a0}=\u{a0}0."
+            "Lloyd et al. 2005, Fig. 7 (Eq 7). At α\u{a0}=\u{a0}{alpha}, k\u{a0}=\u{a0}2 gains {g1_2:.1}× with \
+             |ξ|\u{a0}=\u{a0}1 (the report's \"nearly 5 times\"), {g0_2:.2}× with \
+             ξ\u{a0}=\u{a0}0."
         )],
-        legend_in_single: false,
+        single_charts: None,
     })
 }
+
+/// The width left of Fig 7's plots for their tick labels and the y axis' name, in units.
+const FIG7_Y_LABEL_AREA: u32 = 70;
+
+/// The factor by which Fig 7's panels reach below their asked lower limits (about a third of
+/// a decade: room for the lowest line's label under its end).
+const FIG7_ROOM_BELOW: f64 = 0.5;
+
+/// Fig 7's one-column height, in units: 525 (420 pt printed, the one-column cap), its two
+/// panels stacked, each plot about 110 units tall (it was 800 units, 640 pt: a whole column).
+const FIG7_SINGLE_HEIGHT: u32 = 525;
 
 #[cfg(test)]
 mod tests {
@@ -429,40 +497,51 @@ mod tests {
         let hex: Vec<String> = fig.charts.charts[0]
             .series
             .iter()
-            .filter(|s| s.label.is_some())
+            // The curves (the g₀ line is a grey reference).
+            .filter(|s| s.label.is_some() && !s.reference)
             .map(|s| format!("#{:02X}{:02X}{:02X}", s.colour.0, s.colour.1, s.colour.2))
             .collect();
         assert_eq!(hex, ["#0072B2", "#3F007D", "#009E73", "#9589C0", "#E69F00"]);
     }
 
-    /// Fig 4 in one column (figure review 2: two of its five line-end labels found room only
-    /// far from their curves, their halos cutting other curves): the five curves are named in
-    /// one legend under the plot, read back from the SVG: each name once, every one below the
-    /// x axis' tick labels; and its caption is at most five lines (it was seven), as Fig 7's.
+    /// Fig 4 in one column keeps the two-column form's direct labels (the third figure review:
+    /// its legend box below repeated them and made the figure 512 pt tall): read back from the
+    /// SVG, each of the five curves' names once, right-aligned at its label's end and above
+    /// the x axis' tick labels (inside the plot, not in a legend below it), with the g₀ line
+    /// named too; and each caption at most five lines, as Fig 7's.
     #[test]
-    fn fig4_one_column_has_a_legend_below_and_short_captions() {
-        use super::super::chart::read_svg::{draw_svg, texts};
+    fn fig4_one_column_labels_its_curves_directly_and_has_short_captions() {
+        use super::super::chart::read_svg::{draw_svg, visible};
         use super::super::chart::with_page;
         let fig = fig4().map_err(|e| e.named("lloyd2005-fig4")).unwrap();
         let size = fig.single_size().unwrap();
         let svg = with_page(false, Column::Single, || {
             draw_svg(size, |area| fig.draw(area).unwrap())
         });
-        let all = texts(&svg);
-        let names: Vec<f64> = all
+        let lines: Vec<&str> = svg.lines().filter(|l| l.starts_with("<text")).collect();
+        let y_of = |l: &str| -> f64 {
+            let at = l.find(" y=\"").unwrap() + 4;
+            l[at..at + l[at..].find('"').unwrap()].parse().unwrap()
+        };
+        let ticks_y = lines
             .iter()
-            .filter(|(_, t, _)| t.starts_with("n = "))
-            .map(|(_, _, y)| *y)
+            .filter(|l| visible(l) == "10")
+            .map(|l| y_of(l))
+            .fold(f64::NEG_INFINITY, f64::max);
+        let names: Vec<&&str> = lines
+            .iter()
+            .filter(|l| visible(l).starts_with("n = "))
             .collect();
         assert_eq!(names.len(), 5, "{names:?}");
-        let ticks_y = all
-            .iter()
-            .filter(|(_, t, _)| t == "10" || t == "2")
-            .map(|(_, _, y)| *y)
-            .fold(f64::NEG_INFINITY, f64::max);
+        for l in &names {
+            assert!(l.contains("text-anchor=\"end\""), "{l}");
+            assert!(y_of(l) < ticks_y, "{l} below the ticks at {ticks_y}");
+        }
         assert!(
-            names.iter().all(|&y| y > ticks_y),
-            "legend at {names:?}, x ticks at {ticks_y}"
+            lines
+                .iter()
+                .any(|l| visible(l).replace('_', "").starts_with("g0 = 1/√α")),
+            "no label on the g₀ line"
         );
         for (name, f) in [
             ("fig4", fig),

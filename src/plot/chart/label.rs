@@ -137,6 +137,8 @@ pub(crate) struct Obstacles {
     pub segments: Vec<Segment>,
     pub markers: Vec<(Rect, usize)>,
     pub boxes: Vec<Rect>,
+    /// Series whose lines no label is read as belonging to (`Series::quiet`).
+    pub quiet: Vec<usize>,
 }
 
 impl Obstacles {
@@ -225,7 +227,7 @@ pub(crate) fn place_label(
                 obstacles
                     .segments
                     .iter()
-                    .filter(|s| (s.2 == own) == mine)
+                    .filter(|s| (s.2 == own) == mine && (mine || !obstacles.quiet.contains(&s.2)))
                     .map(|&(a, b, _)| distance(c, a, b))
                     .fold(f64::INFINITY, f64::min)
             };

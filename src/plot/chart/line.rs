@@ -2,7 +2,7 @@
 //! points outside an axis range on the border, so nothing is handed to it unclipped).
 
 use super::super::Fail;
-use super::axis::{build_chart, Axis};
+use super::axis::{build_chart_styled, Axis, ChartStyle};
 use super::fine::{draw_fine_line, fill_fine_polygon, to_backend};
 use super::label::{place_label, place_note, text_in_box, Obstacles, Rect, LABEL_PAD};
 use super::legend::{draw_legend_clear, Entry, Placed};
@@ -161,6 +161,10 @@ pub(crate) struct Series {
     /// The marker's shape where it is not its colour's ([`Marker::of`]): a scheme drawn in one
     /// colour for two lights keeps its colour and differs by shape.
     pub shape: Option<Marker>,
+    /// A line no other label is read as belonging to (a grey reference line among coloured
+    /// curves): it still keeps labels off itself, but a label nearer it than its own line is
+    /// not taken for its label.
+    pub quiet: bool,
     /// A key entry only (no points): its sample shows the line and the marker of a line drawn
     /// elsewhere without a label (its markers a separate series).
     pub sample: bool,
@@ -180,6 +184,7 @@ impl Series {
             direct: false,
             direct_at: None,
             shape: None,
+            quiet: false,
             sample: false,
         }
     }
@@ -237,6 +242,9 @@ pub(crate) struct LineChart {
     pub legend_below: bool,
     /// The legend's columns where they fit (entries row by row); `None`: as many as fit.
     pub legend_columns: Option<usize>,
+    /// The width kept left of the plot for the y tick labels and the y axis' name, where the
+    /// default's is too narrow (lloyd2005-fig7's m×10ⁿ labels ran into its name).
+    pub y_label_area: Option<u32>,
 }
 
 impl LineChart {
@@ -253,6 +261,7 @@ impl LineChart {
             bands: Vec::new(),
             legend_below: false,
             legend_columns: None,
+            y_label_area: None,
         }
     }
 }
@@ -395,7 +404,11 @@ fn draw_chart<DB: DrawingBackend>(
     strip: Option<&DrawingArea<DB, Shift>>,
     below_width: f64,
 ) -> Result<Placed, Fail> {
-    let mut chart = build_chart(area, &c.title, &c.x, &c.y, true)?;
+    let style = ChartStyle {
+        y_label_area: c.y_label_area.unwrap_or(ChartStyle::default().y_label_area),
+        ..ChartStyle::default()
+    };
+    let mut chart = build_chart_styled(area, &c.title, &c.x, &c.y, true, &style)?;
     let (x0, x1) = c.x.range();
     let (y0, y1) = c.y.range();
     let bounds = (x0, x1, y0, y1);
@@ -429,6 +442,9 @@ fn draw_chart<DB: DrawingBackend>(
     // Each direct label: its series, its drawn points (backend units) and the one asked for.
     let mut direct = Vec::new();
     for (k, s) in c.series.iter().enumerate() {
+        if s.quiet {
+            obstacles.quiet.push(k);
+        }
         let pts: Vec<Option<(f64, f64)>> = s
             .points
             .iter()

@@ -1,10 +1,11 @@
 //! lloyd2005-fig8's table (d): per partition its face and depths, M_x, M_z, its Eq 6 share of
 //! the texture's width and height, and its error after allocation, each row led by a swatch of
-//! the partition's fill and hatch.
+//! the partition's fill and hatch; and the one-column page's key, which says what the tags
+//! and the table's columns mean.
 
 use super::hatch::{self, HATCHES};
 use super::{Fig8, SIZE};
-use crate::plot::chart::{FONT, PALETTE};
+use crate::plot::chart::{wrap, FONT};
 use crate::plot::warp_grid::minus;
 use crate::plot::Fail;
 use glam::DVec2;
@@ -14,6 +15,9 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// The gap between a row's swatch and its tag (7 units: the tag touched a swatch 4 away).
 const SWATCH_GAP: i32 = 7;
+
+/// The key's first line under the top of its area: level with the panels' titles.
+const KEY_TOP: i32 = 8;
 
 /// The gap above the table's first line, under the panels above it.
 pub(super) const TABLE_TOP: u32 = 6;
@@ -50,10 +54,82 @@ impl Fig8 {
             .collect()
     }
 
-    /// (d): the table of [`Fig8::table_rows`] under a title that says what its columns are,
-    /// each row led by a swatch of its partition's look. Its lines are [`table_step`] units
-    /// apart whatever the page (one column keeps only the part, its share and the error
-    /// after).
+    /// The table's rows as drawn, each with the partitions it stands for: one a partition
+    /// across two columns; in one column, the parts of one face whose numbers print alike
+    /// (the self-similar z-partitions of a face have one M_x, M_z and share) share a row, "R1,
+    /// R2", their face and depths written in the key ([`Fig8::draw_key`]).
+    pub(super) fn table_groups(&self, single: bool) -> Vec<(Vec<usize>, [String; 6])> {
+        let mut out: Vec<(Vec<usize>, [String; 6])> = Vec::new();
+        for (i, row) in self.table_rows().into_iter().enumerate() {
+            if single {
+                if let Some((members, last)) = out.last_mut() {
+                    let face = |t: &str| t.chars().next();
+                    if face(&last[0]) == face(&row[0]) && last[2..] == row[2..] {
+                        members.push(i);
+                        last[0] = format!("{}, {}", last[0], row[0]);
+                        continue;
+                    }
+                }
+            }
+            out.push((vec![i], row));
+        }
+        out
+    }
+
+    /// The table's lines, [`table_step`] apart: across two columns its title, header and a
+    /// row a partition; in one column (the title in the key) its header and its rows.
+    pub(super) fn table_lines(&self, single: bool) -> u32 {
+        let rows = self.table_groups(single).len() as u32;
+        if single {
+            rows + 1
+        } else {
+            rows + 2
+        }
+    }
+
+    /// The one-column page's key, beside (c): what the tags say (face and depths) and what
+    /// the table's columns are, wrapped to the area.
+    pub(super) fn draw_key<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+    ) -> Result<(), Fail> {
+        let text =
+            TextStyle::from((FONT, TABLE_FONT).into_font()).pos(Pos::new(HPos::Left, VPos::Top));
+        let depths = |n: char| {
+            self.cells
+                .iter()
+                .find(|c| c.tag.ends_with(n))
+                .map(|c| minus(&c.label))
+                .and_then(|l| l.split_once(", ").map(|(_, d)| d.replace(' ', "\u{a0}")))
+                .unwrap_or_default()
+        };
+        let key = format!(
+            "R, L, T, N: right, left, top, near face; 1:\u{a0}{}, 2:\u{a0}{}. (d) error after allocation: \
+             M_x/w\u{a0}×\u{a0}M_z/h, for Eq\u{a0}6's shares w\u{a0}×\u{a0}h.",
+            depths('1'),
+            depths('2'),
+        );
+        let (aw, _) = area.dim_in_pixel();
+        let lines = wrap(&key, f64::from(aw) - 12.0, |t| {
+            area.estimate_text_size(t, &text)
+                .map(|(w, _)| f64::from(w))
+                .unwrap_or(f64::INFINITY)
+        });
+        let step = table_step(true) as i32;
+        for (k, line) in lines.iter().enumerate() {
+            area.draw(&Text::new(
+                line.clone(),
+                (8, KEY_TOP + k as i32 * step),
+                text.clone(),
+            ))?;
+        }
+        Ok(())
+    }
+
+    /// (d): the table of [`Fig8::table_groups`], each row led by the swatches of its
+    /// partitions' looks: across two columns under a title that says what its columns are
+    /// (one column says it in the key). Its lines are [`table_step`] units apart whatever the
+    /// page.
     pub(super) fn draw_table<DB: DrawingBackend>(
         &self,
         area: &DrawingArea<DB, Shift>,
@@ -63,34 +139,50 @@ impl Fig8 {
         let step = table_step(single) as i32;
         let text = TextStyle::from((FONT, size).into_font()).pos(Pos::new(HPos::Left, VPos::Top));
         let head = [
-            "part",
+            if single { "(d) part" } else { "part" },
             "face, depth",
             "M_x",
             "M_z",
             "share w × h",
             "error after",
         ];
-        // One column leaves out the face and depths (the tags say them).
+        // One column writes the face and depths in its key.
         let keep: &[usize] = if single {
             &[0, 2, 3, 4, 5]
         } else {
             &[0, 1, 2, 3, 4, 5]
         };
-        let rows = self.table_rows();
+        let groups = self.table_groups(single);
         let measure = |t: &str| -> Result<i32, Fail> {
             area.estimate_text_size(t, &text)
                 .map(|(w, _)| w as i32)
                 .map_err(|e| Fail::Draw(e.to_string()))
         };
         let swatch = (size as i32 + 4, size as i32 - 1);
+        // The swatches of a row's partitions, side by side 3 units apart.
+        let swatches = |n: usize| n as i32 * (swatch.0 + 3) - 3;
+        let most = groups.iter().map(|g| g.0.len()).max().unwrap_or(1);
+        // One column leaves out the swatches (the tags name the parts, (c) shows their looks).
+        let lead = if single {
+            0
+        } else {
+            swatches(most) + SWATCH_GAP
+        };
         let mut widths = Vec::new();
         for &j in keep {
-            let mut w = measure(head[j])?;
-            for r in &rows {
+            let mut w = if j == 0 && single {
+                0
+            } else {
+                measure(head[j])?
+            };
+            for (_, r) in &groups {
                 w = w.max(measure(&r[j])?);
             }
             if j == 0 {
-                w += swatch.0 + SWATCH_GAP;
+                w += lead;
+                if single {
+                    w = w.max(measure(head[j])?);
+                }
             }
             widths.push(w);
         }
@@ -105,59 +197,77 @@ impl Fig8 {
             x += w + gap;
         }
         let top = TABLE_TOP as i32;
-        let title = if single {
-            "(d) Eq 6's shares w × h; error after: M_x/w × M_z/h"
+        // The header's line: the second across two columns (under the title), the first in one.
+        let first = if single {
+            top
         } else {
-            "(d) Eq 6's shares w × h of the texture; error after allocation: M_x/w × M_z/h"
+            let title =
+                "(d) Eq 6's shares w × h of the texture; error after allocation: M_x/w × M_z/h";
+            area.draw(&Text::new(title, (left, top), text.clone()))?;
+            top + step
         };
-        area.draw(&Text::new(title, (left, top), text.clone()))?;
         let grey = RGBColor(90, 90, 90);
         for (k, &j) in keep.iter().enumerate() {
-            let at = xs[k] + if j == 0 { swatch.0 + SWATCH_GAP } else { 0 };
-            area.draw(&Text::new(head[j], (at, top + step), text.color(&grey)))?;
+            let at = xs[k] + if j == 0 && !single { lead } else { 0 };
+            area.draw(&Text::new(head[j], (at, first), text.color(&grey)))?;
         }
-        let rule = top + 2 * step - 3;
+        let rule = first + step - 3;
         area.draw(&PathElement::new(
             vec![(left, rule), (x - gap, rule)],
             grey.stroke_width(1),
         ))?;
-        for (r, row) in rows.iter().enumerate() {
-            let y = top + (r as i32 + 2) * step;
-            // The swatch: the partition's pastel with its hatch.
-            let (sx, sy) = (xs[0], y + 1);
-            let colour = PALETTE[r % PALETTE.len()];
-            area.draw(&Rectangle::new(
-                [(sx, sy), (sx + swatch.0, sy + swatch.1)],
-                colour.mix(0.35).filled(),
-            ))?;
-            let poly = [
-                DVec2::new(f64::from(sx), f64::from(sy)),
-                DVec2::new(f64::from(sx + swatch.0), f64::from(sy)),
-                DVec2::new(f64::from(sx + swatch.0), f64::from(sy + swatch.1)),
-                DVec2::new(f64::from(sx), f64::from(sy + swatch.1)),
-            ];
-            for &angle in HATCHES[r % HATCHES.len()].angles() {
-                // Pixel rows grow downward: the angle mirrored to look as in the panels.
-                for (a, b) in hatch::segments(&poly, -angle, 4.0) {
-                    area.draw(&PathElement::new(
-                        vec![
-                            (a.x.round() as i32, a.y.round() as i32),
-                            (b.x.round() as i32, b.y.round() as i32),
-                        ],
-                        colour.mix(0.8).stroke_width(1),
-                    ))?;
+        for (r, (members, row)) in groups.iter().enumerate() {
+            let y = first + (r as i32 + 1) * step;
+            if !single {
+                for (m, &i) in members.iter().enumerate() {
+                    let at = (xs[0] + m as i32 * (swatch.0 + 3), y + 1);
+                    self.draw_swatch(area, i, at, swatch)?;
                 }
             }
-            // Outlined in dark grey: black outlines are the texture's rectangles.
-            area.draw(&Rectangle::new(
-                [(sx, sy), (sx + swatch.0, sy + swatch.1)],
-                RGBColor(60, 60, 60).stroke_width(1),
-            ))?;
             for (k, &j) in keep.iter().enumerate() {
-                let at = xs[k] + if j == 0 { swatch.0 + SWATCH_GAP } else { 0 };
+                let at = xs[k] + if j == 0 { lead } else { 0 };
                 area.draw(&Text::new(row[j].clone(), (at, y), text.clone()))?;
             }
         }
+        Ok(())
+    }
+
+    /// Partition `i`'s swatch: its pastel with its hatch, `size` units at `(sx, sy)`.
+    fn draw_swatch<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        i: usize,
+        (sx, sy): (i32, i32),
+        size: (i32, i32),
+    ) -> Result<(), Fail> {
+        let colour = self.fill(i);
+        area.draw(&Rectangle::new(
+            [(sx, sy), (sx + size.0, sy + size.1)],
+            colour.mix(0.35).filled(),
+        ))?;
+        let poly = [
+            DVec2::new(f64::from(sx), f64::from(sy)),
+            DVec2::new(f64::from(sx + size.0), f64::from(sy)),
+            DVec2::new(f64::from(sx + size.0), f64::from(sy + size.1)),
+            DVec2::new(f64::from(sx), f64::from(sy + size.1)),
+        ];
+        for &angle in HATCHES[i % HATCHES.len()].angles() {
+            // Pixel rows grow downward: the angle mirrored to look as in the panels.
+            for (a, b) in hatch::segments(&poly, -angle, 4.0) {
+                area.draw(&PathElement::new(
+                    vec![
+                        (a.x.round() as i32, a.y.round() as i32),
+                        (b.x.round() as i32, b.y.round() as i32),
+                    ],
+                    colour.mix(0.8).stroke_width(1),
+                ))?;
+            }
+        }
+        // Outlined in dark grey: black outlines are the texture's rectangles.
+        area.draw(&Rectangle::new(
+            [(sx, sy), (sx + size.0, sy + size.1)],
+            RGBColor(60, 60, 60).stroke_width(1),
+        ))?;
         Ok(())
     }
 }
@@ -176,12 +286,19 @@ mod tests {
         for single in [false, true] {
             for size in [(520, 170), (300, 320), (900, 420)] {
                 let svg = draw_svg(size, |area| fig.draw_table(area, single).unwrap());
+                // A row's first cell: a tag, or in one column the tags of a face's parts whose
+                // numbers print alike ("R1, R2").
                 let ys: Vec<f64> = texts(&svg)
                     .iter()
-                    .filter(|(_, t, _)| fig.cells.iter().any(|c| c.tag == *t))
+                    .filter(|(_, t, _)| {
+                        t.split(", ")
+                            .all(|part| fig.cells.iter().any(|c| c.tag == part))
+                    })
                     .map(|(_, _, y)| *y)
                     .collect();
-                assert_eq!(ys.len(), fig.cells.len(), "{size:?}: {ys:?}");
+                // One row a partition; in one column R1, R2 / T1, T2 / L1, L2 / N.
+                let rows = if single { 4 } else { fig.cells.len() };
+                assert_eq!(ys.len(), rows, "{size:?}: {ys:?}");
                 let step = if single { 17.0 } else { 18.0 };
                 for w in ys.windows(2) {
                     assert!((w[1] - w[0] - step).abs() < 0.5, "{size:?}: {ys:?}");
@@ -236,7 +353,7 @@ mod tests {
     }
 
     /// Figure review 2: a row's tag stands at least 6 units right of its swatch (it touched
-    /// it: "▨R1"), in both layouts; and the one-column table keeps M_x and M_z (it dropped
+    /// it: "▨R1"); and the one-column table (no swatches) keeps M_x and M_z (it dropped
     /// them), read back from the SVG: the swatch outlines (#3C3C3C) and the tags' x, and the
     /// printed M_x of R1 (1.48) and M_z of L1 (0.42) found in either table.
     #[test]
@@ -257,10 +374,12 @@ mod tests {
                     )
                 })
                 .collect();
-            assert_eq!(swatches.len(), fig.cells.len());
+            // One column leaves the swatches out (its tags name the parts; (c) shows them).
+            let want = if single { 0 } else { fig.cells.len() };
+            assert_eq!(swatches.len(), want);
             let all = texts(&svg);
             for (line, t, y) in &all {
-                if fig.cells.iter().any(|c| c.tag == *t) {
+                if !single && fig.cells.iter().any(|c| c.tag == *t) {
                     let x = attr(line, "x").unwrap();
                     let beside = swatches
                         .iter()

@@ -1,0 +1,284 @@
+//! The Lloyd et al. 2005 figures (lloyd2005-fig4, fig7, fig8) after the third figure review,
+//! read back from their SVGs in all three forms (two columns, bare, one column): what the
+//! captions said is written in the figures too (fig4's g₀ line, fig8's tags and "error after"),
+//! labels stand where they read as their lines' (fig4), fig7 (a)'s log axis is labelled
+//! between its decades, and fig8's leaders do not cross, its axes say "in light space" and
+//! its partitions are filled in no scheme's colour.
+#![cfg(feature = "plot")]
+
+mod figures_style_read;
+use figures_style_read::{attr, attr_str, points, render_svg, texts, Font, Text};
+use shadow_aliasing::plot::{Column, Options};
+
+/// The three forms: two columns with caption, bare, one column.
+fn forms() -> [(&'static str, Options); 3] {
+    [
+        ("double", Options::default()),
+        (
+            "bare",
+            Options {
+                bare: true,
+                ..Options::default()
+            },
+        ),
+        (
+            "single",
+            Options {
+                column: Column::Single,
+                ..Options::default()
+            },
+        ),
+    ]
+}
+
+fn all_texts(svg: &str) -> Vec<Text> {
+    texts(&Font::dejavu(), svg)
+}
+
+/// The figure's words as one string, no-break spaces read as spaces.
+fn words(svg: &str) -> String {
+    all_texts(svg)
+        .iter()
+        .map(|t| t.content.replace('\u{a0}', " "))
+        .collect::<Vec<_>>()
+        .join(" | ")
+}
+
+/// The third review (bare: B): the dotted line at 1/√α was explained only in the caption. Each
+/// form names it in the figure itself: a text "g0 = 1/√α" (the 0 a subscript).
+#[test]
+fn fig4_names_its_g0_line_in_every_form() {
+    for (form, opts) in forms() {
+        let svg = render_svg("lloyd2005-fig4", &opts);
+        let all = all_texts(&svg);
+        let g0: Vec<&Text> = all
+            .iter()
+            .filter(|t| t.content.starts_with("g0 = 1/√α"))
+            .collect();
+        assert_eq!(g0.len(), 1, "{form}: {}", words(&svg));
+        assert!(
+            g0[0].tag.contains("fill=\"#5A5A5A\""),
+            "{form}: the g0 label is not the line's grey: {}",
+            g0[0].tag
+        );
+    }
+}
+
+/// The y, in SVG units, of the polyline of `colour` at `x` (interpolated; its nearest piece).
+fn curve_y(svg: &str, colour: &str, x: f64) -> f64 {
+    let mut best: Option<f64> = None;
+    for l in svg.lines().filter(|l| l.starts_with("<polyline")) {
+        if attr_str(l, "stroke") != Some(colour) {
+            continue;
+        }
+        for w in points(l).windows(2) {
+            let (a, b) = (w[0], w[1]);
+            if (a.0 - x) * (b.0 - x) <= 0.0 && (b.0 - a.0).abs() > 0.0 {
+                let y = a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0);
+                best = Some(y);
+            }
+        }
+    }
+    best.unwrap_or_else(|| panic!("no {colour} line at x = {x}"))
+}
+
+/// Two columns: the ξ = 0 curve's label stands above its curve (the third review: 4 pt under
+/// it, between two markers), and every curve's label ends at least 10 units inside the x
+/// axis' end (the labels ran to the frame; then ended about 3–6 units inside it).
+#[test]
+fn fig4_labels_sit_above_the_xi_0_curve_and_inside_the_axis() {
+    for (form, opts) in &forms()[..2] {
+        let svg = render_svg("lloyd2005-fig4", opts);
+        let all = all_texts(&svg);
+        let end = all
+            .iter()
+            .find(|t| t.content == "10" && attr_str(&t.tag, "text-anchor") == Some("middle"))
+            .map(|t| t.x)
+            .expect("the x axis' last tick label");
+        let labels: Vec<&Text> = all
+            .iter()
+            .filter(|t| t.content.starts_with("n = "))
+            .collect();
+        assert_eq!(labels.len(), 5, "{form}");
+        for t in &labels {
+            assert!(
+                t.bbox[2] <= end - 10.0,
+                "{form}: {} ends at {:.1}, the axis at {end}",
+                t.content,
+                t.bbox[2]
+            );
+        }
+        let green = labels
+            .iter()
+            .find(|t| t.content.starts_with("n = 4.162"))
+            .unwrap();
+        let mid = 0.5 * (green.bbox[0] + green.bbox[2]);
+        let y = curve_y(&svg, "#009E73", mid);
+        assert!(
+            green.bbox[3] < y,
+            "{form}: the ξ = 0 label's bottom {:.1} is not above its curve at {y:.1}",
+            green.bbox[3]
+        );
+    }
+}
+
+/// The third review: fig7 (a)'s log axis spans about 1.3 decades but carried only 10⁰ and
+/// 10⁻¹, so the caption's 0.575 could not be read off. (a) is labelled at 2×10⁻¹ and 5×10⁻¹
+/// too (powers of ten, as (b)), in every form.
+#[test]
+fn fig7_a_is_labelled_between_its_decades() {
+    for (form, opts) in forms() {
+        let svg = render_svg("lloyd2005-fig7", &opts);
+        let words = words(&svg);
+        for label in ["2×10−1", "5×10−1", "10−1", "100"] {
+            assert!(
+                words.split(" | ").any(|w| w == label),
+                "{form}: no tick label {label}: {words}"
+            );
+        }
+    }
+}
+
+/// X6: "light −x" read as "light minus x"; fig8's axes are "−x in light space" and "z in
+/// light space", in every form, and no text says "light −x" or "light z".
+#[test]
+fn fig8_axes_are_named_in_light_space() {
+    for (form, opts) in forms() {
+        let svg = render_svg("lloyd2005-fig8", &opts);
+        let all = all_texts(&svg);
+        for name in ["−x in light space", "z in light space"] {
+            assert!(
+                all.iter().filter(|t| t.content == name).count() >= 2,
+                "{form}: {name} not on (a) and (b)"
+            );
+        }
+        assert!(
+            !all.iter()
+                .any(|t| t.content == "light −x" || t.content == "light z"),
+            "{form}"
+        );
+    }
+}
+
+/// The third review: panel (b)'s purple grid and thick outline were explained only by the
+/// caption. Its title names the grid ("R2's texel grid") and the tag R2 stands inside the
+/// outline, in every form (the bare one included): one more "R2" than the other panels have.
+#[test]
+fn fig8_b_names_its_texel_grid_and_its_part() {
+    for (form, opts) in forms() {
+        let svg = render_svg("lloyd2005-fig8", &opts);
+        let all = all_texts(&svg);
+        assert!(
+            all.iter().any(|t| t.content == "(b) R2's texel grid"),
+            "{form}: {}",
+            words(&svg)
+        );
+        // R2 in (a), (b), (c), and in the two-column table (the one-column one writes R1, R2).
+        let r2 = all.iter().filter(|t| t.content == "R2").count();
+        let want = if form == "single" { 3 } else { 4 };
+        assert_eq!(r2, want, "{form}");
+    }
+}
+
+/// The leaders under fig8 (a): the grey two-point polylines that run downwards (the table's
+/// rule is level). Each as (top, bottom).
+fn leaders(svg: &str) -> Vec<((f64, f64), (f64, f64))> {
+    svg.lines()
+        .filter(|l| l.starts_with("<polyline") && attr_str(l, "stroke") == Some("#5A5A5A"))
+        .map(points)
+        .filter(|p| p.len() == 2 && (p[1].1 - p[0].1).abs() > 1.0)
+        .map(|p| {
+            if p[0].1 < p[1].1 {
+                (p[0], p[1])
+            } else {
+                (p[1], p[0])
+            }
+        })
+        .collect()
+}
+
+/// The third review: the leaders from the parts at the apex to their tags crossed (the tags
+/// ordered by the parts' centres, T1 before N). In every form there are at least four
+/// leaders, and no two cross.
+#[test]
+fn fig8_leaders_do_not_cross() {
+    let cross = |a: ((f64, f64), (f64, f64)), b: ((f64, f64), (f64, f64))| {
+        let side = |p: (f64, f64), q: (f64, f64), r: (f64, f64)| {
+            (q.0 - p.0) * (r.1 - p.1) - (q.1 - p.1) * (r.0 - p.0)
+        };
+        side(b.0, b.1, a.0) * side(b.0, b.1, a.1) < 0.0
+            && side(a.0, a.1, b.0) * side(a.0, a.1, b.1) < 0.0
+    };
+    for (form, opts) in forms() {
+        let svg = render_svg("lloyd2005-fig8", &opts);
+        let l = leaders(&svg);
+        assert!(l.len() >= 4, "{form}: {l:?}");
+        for (i, a) in l.iter().enumerate() {
+            for b in &l[..i] {
+                assert!(!cross(*a, *b), "{form}: leaders {a:?} and {b:?} cross");
+            }
+        }
+    }
+}
+
+/// Rule 4 of the figures (scheme colours mean schemes only): fig8's partition fills (its
+/// translucent polygons) use none of the scheme colours (Okabe–Ito blue, vermillion, green,
+/// pink, orange, sky blue); they were the palette's, one a partition.
+#[test]
+fn fig8_fills_use_no_scheme_colour() {
+    let schemes = [
+        "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9",
+    ];
+    for (form, opts) in forms() {
+        let svg = render_svg("lloyd2005-fig8", &opts);
+        let fills: Vec<String> = svg
+            .split('<')
+            .filter(|e| e.starts_with("polygon ") || e.starts_with("rect "))
+            .filter(|e| attr(e, "opacity").is_some_and(|o| o < 1.0))
+            .filter_map(|e| attr_str(e, "fill").map(str::to_string))
+            .collect();
+        assert!(fills.len() >= 14, "{form}: {} fills", fills.len());
+        for f in &fills {
+            assert!(!schemes.contains(&f.as_str()), "{form}: a fill in {f}");
+        }
+    }
+}
+
+/// The third review: the one-column table decoded R/L/T/N and 1/2 only in the caption, and
+/// what "error after" means must be in the figure (issue 35). Every form's figure (the bare
+/// ones without their captions) writes the faces' names and the depths of 1 and 2, and says
+/// what the error after allocation is (M_x/w × M_z/h).
+#[test]
+fn fig8_decodes_its_tags_and_the_error_after_in_the_figure() {
+    for (form, opts) in [
+        forms()[1].clone(),
+        (
+            "single bare",
+            Options {
+                bare: true,
+                column: Column::Single,
+                ..Options::default()
+            },
+        ),
+    ] {
+        let svg = render_svg("lloyd2005-fig8", &opts);
+        // The key's lines joined as one text (it wraps to its area).
+        let w = words(&svg).replace(" | ", " ");
+        let has = |s: &str| w.contains(s);
+        assert!(
+            has("error after allocation") && has("Mx/w × Mz/h"),
+            "{form}: {w}"
+        );
+        if form == "single bare" {
+            assert!(
+                has("R, L, T, N: right,") && has("near face;") && has("1: z 1–3.16"),
+                "{form}: {w}"
+            );
+            assert!(has("2: z 3.16–10."), "{form}: {w}");
+        } else {
+            for d in ["right, z 1–3.16", "left, z 3.16–10", "near face"] {
+                assert!(has(d), "{form}: no {d}: {w}");
+            }
+        }
+    }
+}
