@@ -218,3 +218,70 @@ fn panel_a_is_not_mirrored() {
         assert!(q.abs().max_element() <= 1.0 + 1e-9, "{q}");
     }
 }
+
+/// Figure review 3, in all three forms: the inset's label states its enlargement as drawn (the
+/// inset's frame over the width of the window it shows in (a), both read back from the SVG),
+/// the focus region is a 2-unit dark line (not a thin pink one on the light hull), the x axis
+/// reads "−x in light space" (not "light −x"), and one column is at most 525 units tall.
+#[test]
+fn inset_label_is_its_drawn_enlargement_and_one_column_fits() {
+    use super::super::chart::read_svg::{draw_svg, texts};
+    use super::super::chart::with_page;
+    let fig = fig3().map_err(|e| e.named("martin-tan-fig3")).unwrap();
+    for (column, bare) in [
+        (Column::Double, false),
+        (Column::Double, true),
+        (Column::Single, false),
+    ] {
+        let size = match column {
+            Column::Double => fig.size(),
+            Column::Single => fig.single_size().expect("a one-column layout"),
+        };
+        if column == Column::Single {
+            assert!(size.1 <= 525, "{size:?}");
+        }
+        let svg = with_page(bare, column, || {
+            draw_svg(size, |area| fig.draw(area).unwrap())
+        });
+        let num = |tag: &str, name: &str| -> f64 {
+            let at = tag.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
+            tag[at..at + tag[at..].find('"').unwrap()].parse().unwrap()
+        };
+        // The two grey outlines: the window in (a) and the inset's frame.
+        let mut widths: Vec<f64> = svg
+            .lines()
+            .filter(|l| l.starts_with("<rect") && l.contains("stroke=\"#5A5A5A\""))
+            .map(|l| num(l, "width"))
+            .collect();
+        widths.sort_by(f64::total_cmp);
+        assert_eq!(widths.len(), 2, "{column:?}: {widths:?}");
+        let drawn = widths[1] / widths[0];
+        let all: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
+        let label = all
+            .iter()
+            .find_map(|t| t.strip_prefix('×'))
+            .unwrap_or_else(|| panic!("{column:?}: no ×N label: {all:?}"));
+        let said: f64 = label.parse().unwrap();
+        // Whole pixels: each width is within a unit of the exact one.
+        assert!(
+            (said - drawn).abs() <= 0.5 + drawn * 2.0 / widths[0],
+            "{column:?}: labelled ×{said}, drawn {drawn:.2}×"
+        );
+        assert!(said >= 2.0, "{column:?}: ×{said} enlarges too little");
+        assert!(all.iter().any(|t| t == "−x in light space"), "{all:?}");
+        assert!(!all.iter().any(|t| t.contains("light −x")), "{all:?}");
+        let focus: Vec<&str> = svg
+            .lines()
+            .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#882255\""))
+            .collect();
+        assert!(
+            focus.len() >= 3 * 12,
+            "{column:?}: {} focus edges",
+            focus.len()
+        );
+        assert!(
+            focus.iter().all(|l| num(l, "stroke-width") == 2.0),
+            "{column:?}"
+        );
+    }
+}
