@@ -422,8 +422,14 @@ mod tests {
         // Under their faces: below the near face's lower edge (−0.577) and the far face's
         // (−4.619), and inside the window.
         assert!(dims[0].1 < -0.5774 && dims[1].1 < -4.6188);
-        let (lo, _) = p.window.unwrap();
+        let (lo, hi) = p.window.unwrap();
         assert!(lo.y < dims[1].1 - 0.5);
+        // The window as far above the far face as below it (figure review 3: −6.5 to 4.9), so
+        // that the frustum, centred on 0, is centred in its frame.
+        assert!(
+            (lo.y + hi.y).abs() < 1e-12 && (lo.x + hi.x).abs() < 1e-12,
+            "{lo} {hi}"
+        );
     }
 
     /// The light's view is not mirrored (figure review 2): for a light behind, right of and
