@@ -263,7 +263,7 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
         nb(format!("S̄ = {}", fmt_plain(top_s))),
     );
     let double = Charts {
-        size: (520, 520),
+        size: (520, 540),
         title: "Maximum error and storage factor against η".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 6 (Eq 9–12), {config}, image and shadow map of equal \

@@ -227,13 +227,11 @@ impl Figure for Fig13 {
         let tan_eff = 4.0 * k * (FIG12_RATIO.powf(1.0 / k) - 1.0) / (2.0 * (fp - 1.0));
         let caption = match column() {
             Column::Double => format!(
-                "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind: z-partitioning (ZP; ZP+W \
-                 equals it behind) with j maps against face partitioning with k warped \
-                 z-partitions per face, j\u{a0}=\u{a0}4k\u{a0}+\u{a0}1 (the paper draws \
-                 regions). Below the dot (equal S̄) FP+ZP+W needs less storage; above it, ZP. \
-                 With {j} maps the dot is at f/n\u{a0}=\u{a0}{at:.0}, just above Fig. 12's \
-                 {FIG12_RATIO}{} This holds for any θ: Eq 20 has none, and Eq 21's face \
-                 sub-frusta have tan\u{a0}θ_{{eff}}\u{a0}=\u{a0}{}.",
+                "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind: ZP (= ZP+W) with j maps \
+                  against FP+ZP+W with k z-partitions per face, \
+                 j\u{a0}=\u{a0}4k\u{a0}+\u{a0}1. Below the dot FP+ZP+W needs less storage; above it, ZP. With {j} maps the dot is \
+                 at f/n\u{a0}=\u{a0}{at:.0}{} Any θ: Eq 20 \
+                 has none; Eq 21's face sub-frusta have tan\u{a0}θ_{{eff}}\u{a0}=\u{a0}{}.",
                 beyond("; "),
                 fmt_plain(tan_eff),
             ),
