@@ -887,8 +887,10 @@ fn elements(svg: &str) -> Vec<(&str, &str)> {
 /// axis.
 #[test]
 fn colour_bar_labels_clear_the_bar() {
-    // zhang-fig3's bars are horizontal: checked in zhang_fig3_landscape_with_bars_under_blocks.
-    let names = ["lloyd2006-fig7", "martin-tan-fig6"];
+    // zhang-fig3's bars are horizontal: checked in zhang_fig3_landscape_with_bars_under_blocks;
+    // martin-tan-fig6's lies across under its disk in two columns (upright beside the disk its
+    // name read as one with the profile's y name, review X8).
+    let names = ["lloyd2006-fig7"];
     for (name, svg) in svgs("figures-colour-bars", &names) {
         let els = elements(&svg);
         let mut labels = 0;

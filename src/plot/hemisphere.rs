@@ -1,7 +1,10 @@
 //! Lloyd et al. 2006 Fig 7: the storage factor S̄ over the hemisphere of light directions, from
 //! the crate's measurement of each scheme's own matrices ([`crate::scheme::sweep::sweep`]).
 
-use super::chart::{column, draw_colour_bar, draw_hemisphere, frame, Axis, ColourScale, PolarGrid};
+use super::chart::{
+    column, decades, draw_colour_bar, draw_colour_bar_across, draw_hemisphere_keyed, frame, Axis,
+    ColourScale, PolarGrid,
+};
 use super::{Column, Fail, Figure};
 use crate::maps::WarpRule;
 use crate::scheme::sweep::{sweep, Sweep, SweepGrid};
@@ -121,27 +124,32 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         max: rmax,
         min: rmin,
     };
-    let ratio_scale = ColourScale::smooth(Axis::log10("(b) ÷ (c)", rmin, rmax));
+    // (e)'s own scale: diverging, neutral grey where LiSPSM and face partitioning need the
+    // same, red where LiSPSM needs more; over the whole decades round its values.
+    let (r0, r1) = decades(rmin, rmax);
+    let ratio_scale = ColourScale::diverging(Axis::log10("(e) (b) ÷ (c) (log scale)", r0, r1), 1.0);
     let lo = panels.iter().map(|p| p.min).fold(f64::INFINITY, f64::min);
     let hi = panels.iter().map(|p| p.max).fold(0.0, f64::max);
-    let scale = ColourScale::smooth(Axis::log10("S̄ (log scale)", lo, hi));
+    let (lo, hi) = decades(lo, hi);
+    let scale = ColourScale::smooth(Axis::log10("(a)–(d) S̄ (log scale)", lo, hi));
     // Lloyd 2006 Eq 12 at n′ ≤ n′_LiSPSM: the overhead S̄ of LiSPSM and of face partitioning.
     let (n, f) = (view.near(), view.far());
     let overhead = (f / n - 1.0) / (2.0 * view.tan_half_fov());
     let caption = vec![format!(
         "Lloyd et al. 2006, Fig. 7: S̄ = M_x M_z (texels per image pixel), computed from each \
-         scheme's light transform, for light directions {step}° apart (centre overhead; rings at 10°, 20°, 30°, 60° elevation); \
-         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°. (a)–(d) share \
-         one log scale; (d) at the n′ of least S̄. Overhead, (b) and (c) are Eq 12's \
+         scheme's light transform, for light directions {step}° apart (centre overhead; rings at \
+         10°, 20°, 30°, 60° elevation); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+         θ\u{a0}=\u{a0}{theta:.0}°. (a)–(d) share one log scale; (d) at the n′ of least S̄; \
+         (e) is (b)\u{a0}÷\u{a0}(c) on its own scale. Overhead, (b) and (c) are Eq 12's \
          {overhead:.0}.",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     )];
     // One column: at most five lines.
     let single_caption = format!(
-        "Lloyd et al. 2006, Fig. 7: S̄ for light directions {step}° apart (centre overhead; \
-         rings at 10°, 20°, 30°, 60°); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         θ\u{a0}=\u{a0}{theta:.0}°; (d) at the n′ of least S̄.",
+        "Lloyd et al. 2006, Fig. 7: S̄ for light directions {step}° apart; \
+         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°; (d) at the n′ \
+         of least S̄; (e) is (b)\u{a0}÷\u{a0}(c).",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     );
@@ -171,75 +179,88 @@ impl Fig7 {
 
 impl Figure for Fig7 {
     fn size(&self) -> (u32, u32) {
-        (520, 560)
+        (520, 500)
     }
 
-    /// One column: two hemispheres a row.
+    /// One column: three rows of two hemispheres, the bars in the sixth cell.
     fn single_size(&self) -> Option<(u32, u32)> {
-        Some((Column::Single.width(), 740))
+        Some((Column::Single.width(), 520))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
-        let caption: Vec<&str> = match column() {
-            Column::Double => self.caption.iter().map(String::as_str).collect(),
-            Column::Single => vec![self.single_caption.as_str()],
+        let single = column() == Column::Single;
+        let caption: Vec<&str> = if single {
+            vec![self.single_caption.as_str()]
+        } else {
+            self.caption.iter().map(String::as_str).collect()
         };
-        let body = frame(
-            root,
-            "Storage factor over the hemisphere of light directions",
-            &caption,
-        )?;
-        let (w, _) = body.dim_in_pixel();
+        // One column sets a title that keeps one line.
+        let title = if single {
+            "Storage factor over light directions"
+        } else {
+            "Storage factor over the hemisphere of light directions"
+        };
+        let body = frame(root, title, &caption)?;
+        let (w, h) = body.dim_in_pixel();
         let (a, b, c, d) = (
             &self.panels[0],
             &self.panels[1],
             &self.panels[2],
             &self.panels[3],
         );
-        match column() {
-            Column::Double => {
-                // Three a row (issue 35: two a row, the figure was 892 units tall): (a)–(c) on
-                // top; (d), (e), then the bars of (e) and of (a)–(d) under them.
-                let cells = body.split_evenly((2, 3));
-                for (cell, p) in cells.iter().zip([a, b, c, d]) {
-                    draw_hemisphere(cell, &p.title, &p.grid, &self.scale)?;
-                }
-                let rows = draw_hemisphere(
-                    &cells[4],
-                    &self.ratio.title,
-                    &self.ratio.grid,
-                    &self.ratio_scale,
-                )?;
-                let (cw, _) = cells[5].dim_in_pixel();
-                let (ratio_bar, bar) =
-                    cells[5].split_horizontally(cw.saturating_sub(BAR_WIDTH + 10));
-                draw_bar(&ratio_bar, &self.ratio_scale, rows)?;
-                draw_bar(&bar, &self.scale, rows)?;
-            }
-            Column::Single => {
-                // Two a row; (e) under them with its bar and the bar of (a)–(d).
-                // Rows of square hemispheres under their titles (28 units), 10 units apart.
-                let (top, bottom) = body.split_vertically((w / 2 + 38) * 2);
-                for (cell, p) in top.split_evenly((2, 2)).iter().zip([a, b, c, d]) {
-                    draw_hemisphere(cell, &p.title, &p.grid, &self.scale)?;
-                }
-                let (e, bars) = bottom.split_horizontally(w.saturating_sub(RATIO_BAR + BAR_WIDTH));
-                let rows =
-                    draw_hemisphere(&e, &self.ratio.title, &self.ratio.grid, &self.ratio_scale)?;
-                let (ratio_bar, bar) = bars.split_horizontally(RATIO_BAR);
-                draw_bar(&ratio_bar, &self.ratio_scale, rows)?;
-                draw_bar(&bar, &self.scale, rows)?;
-            }
+        let (e, s) = (&self.ratio, &self.scale);
+        // Cells of one size, so that every disk is as large as the others; (a) carries the
+        // key (the rings' elevations, overhead). Two columns: cells as wide as a disk needs
+        // (its square, under a 28-unit title, and 8 units) and leave room for a bar right of
+        // the first row.
+        let (cols, rows) = if single { (2, 3) } else { (3, 2) };
+        let row_gap = if single { 2 * ROW_GAP } else { ROW_GAP };
+        let ch = h / rows;
+        let cw = if single {
+            w / 2
+        } else {
+            (ch.saturating_sub(row_gap + 28) + 8).min(w.saturating_sub(BAR_WIDTH) / 3)
+        };
+        let cell = |k: u32| {
+            body.clone().shrink(
+                ((k % cols) * cw, (k / cols) * ch),
+                (cw, ch.saturating_sub(row_gap)),
+            )
+        };
+        let order = [(a, s), (b, s), (c, s), (d, s), (e, &self.ratio_scale)];
+        let mut disk_rows = Vec::new();
+        for (k, (p, scale)) in order.iter().enumerate() {
+            let r = draw_hemisphere_keyed(&cell(k as u32), &p.title, &p.grid, scale, k == 0)?;
+            disk_rows.push(r);
+        }
+        if single {
+            // The sixth cell, right of (e): (e)'s bar over the bar of (a)–(d), both across,
+            // each named under its ticks.
+            let last = body.clone().shrink((cw, 2 * ch), (w - cw, ch));
+            let (_, lh) = last.dim_in_pixel();
+            let half = (lh.saturating_sub(ROW_GAP)) / 2;
+            let (top, bottom) = last.split_vertically(half);
+            draw_colour_bar_across(&top.margin(ROW_GAP, 0, 4, 4), &self.ratio_scale)?;
+            draw_colour_bar_across(&bottom.margin(ROW_GAP, 0, 4, 4), s)?;
+        } else {
+            // Upright, as tall as the disks: S̄'s right of (c), ending the row of (a)–(c)
+            // with (d) under (a); (e)'s right of (e).
+            let bar = body.clone().shrink((3 * cw, 0), (w - 3 * cw, ch));
+            draw_bar(&bar, s, disk_rows[2])?;
+            let ratio_bar = body.clone().shrink((2 * cw, ch), (BAR_WIDTH, ch));
+            draw_bar(&ratio_bar, &self.ratio_scale, disk_rows[4])?;
         }
         Ok(())
     }
 }
 
+/// The space under each row of hemispheres, in units (twice that in one column, where the
+/// disks are smaller and "viewer's right" reaches lower under its square): a disk's "viewer's
+/// right" and the next row's titles stand apart.
+const ROW_GAP: u32 = 8;
+
 /// The width of a colour bar's column: the bar, its tick labels and its name.
 pub(super) const BAR_WIDTH: u32 = 84;
-
-/// The width of (e)'s colour bar in one column: its labels are short (at most "2430").
-const RATIO_BAR: u32 = 76;
 
 /// A colour bar in `area` as tall as the disks whose top and bottom rows (in `area`) are
 /// `rows` (the bar's chart keeps 30 units at each end for its end labels).
@@ -307,12 +328,16 @@ mod tests {
             .collect();
         let lo = vals.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = vals.iter().copied().fold(0.0, f64::max);
+        // The bar spans the whole decades round them (X3: its ends are round powers of ten,
+        // not the computed 8.65×10² and 4.74×10⁶): log₁₀ 865 = 2.94 → 10², log₁₀ 4.7·10⁶ =
+        // 6.68 → 10⁷.
         let (a, b) = fig.scale.axis.range();
-        assert!((a - lo.log10()).abs() < 1e-12 && (b - hi.log10()).abs() < 1e-12);
+        assert!(
+            (a - 2.0).abs() < 1e-12 && (b - 7.0).abs() < 1e-12,
+            "{a} {b}"
+        );
         assert!((lo - overhead).abs() < 1e-9 * overhead, "{lo}");
         assert!((4.6e6..4.8e6).contains(&hi), "{hi}");
-        assert_eq!(fig.scale.level(lo), Some(0));
-        assert_eq!(fig.scale.level(hi), Some(fig.scale.levels - 1));
         // Face partitioning (865 … 1999) spans far fewer bands than LiSPSM: the paper's point.
         let bands = |k: usize| -> HashSet<usize> {
             fig.panels[k]
@@ -332,11 +357,78 @@ mod tests {
         assert!((top - 1.0).abs() < 1e-9, "{top}");
         assert_eq!(r.len(), fig.panels[1].grid.values.len());
         assert!(fig.ratio.min > 0.9 && fig.ratio.max > 2000.0);
+        // (e)'s scale is its own, diverging and neutral at 1 (the review: on viridis it read
+        // as S̄): 0.907 … 2430 within 10⁻¹ … 10⁴, the centre log₁₀ 1 = 0; a ratio of 1 takes
+        // ColorBrewer's neutral #f7f7f7 (to within the band's width), 10⁻¹ its blue end and 10⁴
+        // its red end.
+        let (r0, r1) = fig.ratio_scale.axis.range();
+        assert!(
+            (r0 + 1.0).abs() < 1e-9 && (r1 - 4.0).abs() < 1e-9,
+            "{r0} {r1}"
+        );
+        assert_eq!(
+            fig.ratio_scale.map,
+            super::super::chart::ColourMap::Diverging { centre: 0.0 }
+        );
+        let colour = |v: f64| {
+            fig.ratio_scale
+                .level_colour(fig.ratio_scale.level(v).unwrap())
+        };
+        let RGBColor(r, g, b) = colour(1.0);
+        assert!(r.min(g).min(b) >= 0xe8, "{r:x} {g:x} {b:x}");
+        let (RGBColor(r0, _, b0), RGBColor(r1, _, b1)) = (colour(0.1), colour(1e4));
+        assert!(b0 > r0 + 60 && r1 > b1 + 60, "{r0} {b0} {r1} {b1}");
+        assert_eq!(fig.scale.map, super::super::chart::ColourMap::Viridis);
         assert!(
             bands(2).len() * 3 < bands(1).len(),
             "{} vs {}",
             bands(2).len(),
             bands(1).len()
         );
+    }
+
+    /// The figure as drawn, in both layouts (review X3, X5, X8 and its Fig 7 items), read back
+    /// from its SVG: every colour-bar label is a whole power of ten (a label of the form
+    /// 10<sup>n</sup>, none with a mantissa such as 9.07×10⁻¹ or 2.43×10³); both bars' names are
+    /// turned 270° (anticlockwise, as a y axis's name) in two columns; the key of the rings
+    /// (10°, 20°, 30°, 60°, "overhead") is written once, in (a); and the caption names (e).
+    #[test]
+    fn fig7_bars_are_round_decades_and_the_rings_are_keyed() {
+        use super::super::chart::read_svg::{draw_svg, texts};
+        use super::super::chart::with_page;
+        let fig = fig7().map_err(|e| e.named("lloyd2006-fig7")).unwrap();
+        assert!(fig.caption_text().contains("(e) is (b)\u{a0}÷\u{a0}(c)"));
+        assert!(fig.single_caption.contains("(e) is (b)\u{a0}÷\u{a0}(c)"));
+        for column in [Column::Double, Column::Single] {
+            let size = match column {
+                Column::Double => fig.size(),
+                Column::Single => fig.single_size().unwrap(),
+            };
+            let svg = with_page(false, column, || {
+                draw_svg(size, |area| fig.draw(area).unwrap())
+            });
+            let all = texts(&svg);
+            let powers: Vec<&str> = all
+                .iter()
+                .filter(|t| t.0.contains(">10<tspan dy=\"-"))
+                .map(|t| t.0)
+                .collect();
+            assert!(powers.len() >= 6, "{column:?}: {powers:?}");
+            assert!(
+                !all.iter().any(|t| t.1.contains("×10")),
+                "{column:?}: a mantissa on a bar"
+            );
+            for key in ["10°", "20°", "30°", "60°", "overhead"] {
+                let n = all.iter().filter(|t| t.1 == key).count();
+                assert_eq!(n, 1, "{column:?}: {key} written {n} times");
+            }
+            if column == Column::Double {
+                // S̄'s bar is written S with an overlined tspan.
+                for name in ["(a)–(d) S (log scale)", "(e) (b) ÷ (c) (log scale)"] {
+                    let line = all.iter().find(|t| t.1 == name).unwrap().0;
+                    assert!(line.contains("rotate(270"), "{line}");
+                }
+            }
+        }
     }
 }

@@ -7,8 +7,8 @@
 //! the map the focus region covers ([`crate::maps::tsm::TsmMap::focus_area`]).
 
 use super::chart::{
-    column, draw_hemisphere, draw_line_chart, frame, linspace, Axis, ColourScale, LineChart,
-    Marker, PolarGrid, Series, PALETTE,
+    column, draw_colour_bar_across, draw_hemisphere_keyed, draw_line_chart, frame, linspace, Axis,
+    ColourScale, LineChart, Marker, PolarGrid, Series, PALETTE,
 };
 use super::hemisphere::{draw_bar, BAR_WIDTH};
 use super::Column;
@@ -150,7 +150,9 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         grid,
         // Logarithmic, as the profile: the dueling-frusta band near the horizon (0.003 to
         // 0.01) is two decades below overhead (0.49) and would be one colour on a linear bar.
-        scale: ColourScale::smooth(Axis::log10("share (log scale)", floor, ceil).in_powers()),
+        scale: ColourScale::smooth(
+            Axis::log10("(a) share of the map (log scale)", floor, ceil).in_powers(),
+        ),
         profile,
         caption: vec![format!(
             "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map (80 % rule; \
@@ -185,9 +187,9 @@ impl Figure for Fig6 {
         (520, 470)
     }
 
-    /// One column: the hemisphere with its bar over the profile.
+    /// One column: the hemisphere with its bar beside it, over the profile.
     fn single_size(&self) -> Option<(u32, u32)> {
-        Some((Column::Single.width(), 760))
+        Some((Column::Single.width(), 520))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -197,29 +199,53 @@ impl Figure for Fig6 {
         } else {
             self.caption.iter().map(String::as_str).collect()
         };
-        let body = frame(
-            root,
-            "Area of the focus region in the trapezoidal map",
-            &caption,
-        )?;
-        let (w, h) = body.dim_in_pixel();
-        // Two columns: the hemisphere with its bar on the left, its title level with the
-        // profile's beside it (issue 35: stacked, the figure was 928 units tall); one column:
-        // the profile under them.
-        let (left, right) = if single {
-            body.split_vertically(h * 43 / 100)
+        // One column sets a title that keeps one line.
+        let title = if single {
+            "Focus region's share of the map"
         } else {
-            let (left, right) = body.split_horizontally(w * 27 / 50);
-            (left.margin(TITLE_ALIGN, 0, 0, 0), right)
+            "Area of the focus region in the trapezoidal map"
         };
-        let (w, _) = left.dim_in_pixel();
-        let (disk, bar) = left.split_horizontally(w.saturating_sub(BAR_WIDTH));
-        let rows = draw_hemisphere(&disk, "(a) over the hemisphere", &self.grid, &self.scale)?;
-        draw_bar(&bar, &self.scale, rows)?;
-        draw_line_chart(&right, &self.profile)?;
+        let body = frame(root, title, &caption)?;
+        let (w, h) = body.dim_in_pixel();
+        if single {
+            // The hemisphere with its bar upright beside it (its name right of its ticks,
+            // nothing beside it); the profile under them, its key in one column.
+            let (top, bottom) = body.split_vertically(h * 38 / 100);
+            let (tw, _) = top.dim_in_pixel();
+            let (disk, bar) = top.split_horizontally(tw.saturating_sub(BAR_WIDTH));
+            let rows = draw_hemisphere_keyed(&disk, PANEL_A, &self.grid, &self.scale, true)?;
+            // The bar's name no taller than the disk.
+            let mut scale = self.scale.clone();
+            scale.axis.label = "(a) share (log scale)".into();
+            draw_bar(&bar, &scale, rows)?;
+            let mut profile = self.profile.clone();
+            profile.legend_columns = Some(1);
+            // The axis's name no longer than the shorter axis.
+            profile.y.label = "share (log scale)".into();
+            draw_line_chart(&bottom, &profile)?;
+        } else {
+            // The hemisphere at the top of its column, its title level with the profile's
+            // beside it, and its bar across under it, named under its ticks (upright beside
+            // the disk, its name stood next to the profile's y name and read as one with it).
+            let (left, right) = body.split_horizontally(w * 27 / 50);
+            let left = left.margin(TITLE_ALIGN, 0, 0, 0);
+            let (lw, lh) = left.dim_in_pixel();
+            let side = lw.min(lh.saturating_sub(28 + BAR_ACROSS));
+            let (disk, rest) = left.split_vertically(28 + side);
+            draw_hemisphere_keyed(&disk, PANEL_A, &self.grid, &self.scale, true)?;
+            let (bar, _) = rest.split_vertically(BAR_ACROSS);
+            draw_colour_bar_across(&bar.margin(4, 0, 16, 16), &self.scale)?;
+            draw_line_chart(&right, &self.profile)?;
+        }
         Ok(())
     }
 }
+
+/// (a)'s title.
+const PANEL_A: &str = "(a) over the hemisphere";
+
+/// The height of a colour bar laid across, with its tick labels and name, in units.
+const BAR_ACROSS: u32 = 58;
 
 #[cfg(test)]
 mod tests {

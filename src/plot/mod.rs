@@ -639,6 +639,7 @@ mod tests {
             let scale = ColourScale {
                 axis: Axis::log_base("E", 1.0, 625.0, 5.0),
                 levels: 40,
+                map: ColourMap::Viridis,
             };
             let (left, bar) = panels[2].split_horizontally(panels[2].dim_in_pixel().0 - 90);
             let mut chart = build_chart(
@@ -666,6 +667,7 @@ mod tests {
             let hs = ColourScale {
                 axis: Axis::log10("S̄", 1.0, 1000.0),
                 levels: 30,
+                map: ColourMap::Viridis,
             };
             draw_hemisphere(&panels[3], "hemisphere", &polar, &hs)?;
             Ok(())

@@ -8,8 +8,8 @@
 //! [0, 1]; unit resolutions).
 
 use super::chart::{
-    build_chart_styled, column, draw_bar_bands, fmt_plain, frame, Axis, ChartStyle, ColourScale,
-    Grid, Ticked, COLOUR_BAR_TICK, FONT, PANEL_TITLE, TICK,
+    build_chart_styled, column, decades, draw_colour_bar, draw_colour_bar_across, frame, Axis,
+    ChartStyle, ColourScale, Grid, FONT, PANEL_TITLE, TICK,
 };
 use super::{Column, Fail, Figure};
 use crate::maps::{warp, WarpRule};
@@ -121,12 +121,15 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         row_angles.push(format!("θ = {theta_deg:.0}°"));
         lambdas_all.push(lambdas);
     }
-    // Each quantity's colour bar spans exactly its measured range over its nine panels.
+    // Each quantity's colour bar spans the whole decades round its measured range over its
+    // nine panels: its ends are round powers of ten and nothing is clipped (SSM's E_p reaches
+    // (f − n)/(n tan φ) = 171 at the apex, Zhang's Eq 9).
     let scales: Vec<ColourScale> = QUANTITIES
         .iter()
         .zip(ranges)
         .map(|(q, (lo, hi))| {
-            ColourScale::smooth(Axis::log_base(format!("{q} (log scale)"), lo, hi, 5.0))
+            let (lo, hi) = decades(lo, hi);
+            ColourScale::smooth(Axis::log10(format!("{q} (log scale)"), lo, hi))
         })
         .collect();
     // LiSPSM's λ (its built matrix's n′) per angle θ, for the caption.
@@ -135,21 +138,23 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         .iter()
         .map(|a| a.trim_start_matches("θ = "))
         .collect();
+    let phi = view.half_fov().to_degrees();
     let caption = format!(
         "Zhang et al. 2009, Fig. 3, measured in the frustum's vertical plane: \
-         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         φ\u{a0}=\u{a0}π/6, light above and in front at θ\u{a0}=\u{a0}{}. LiSPSM's \
+         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of view φ\u{a0}=\u{a0}{phi:.0}°; \
+         light above and in front at θ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). \
+         The factor 2: Zhang's screen and map span [−1,\u{a0}1]. LiSPSM's \
          λ\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}θ: {}; TSM: 80\u{a0}% rule, \
-         δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper, a colour bar per quantity (ticks at \
-         powers of 5), no scene insets.",
+         δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper, a bar per quantity, no scene insets.",
         angles.join(", "),
         lispsm.join(", "),
     );
     let single_caption = format!(
-        "Zhang et al. 2009, Fig. 3, measured: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         φ\u{a0}=\u{a0}π/6, light above and in front. LiSPSM: \
-         λ\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}θ; TSM: 80\u{a0}% rule, \
-         δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper, a colour bar per quantity.",
+        "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
+         view φ\u{a0}=\u{a0}{phi:.0}°; light above and in front at θ\u{a0}=\u{a0}{} from the \
+         view direction. The factor 2: Zhang's screen and map span [−1,\u{a0}1]. TSM: \
+         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}.",
+        angles.join(", "),
     );
     Ok(Fig3 {
         rows,
@@ -181,10 +186,10 @@ fn fmt_lambda(n: NPrime) -> String {
     }
 }
 
-/// The layout, in pixels: the row labels' column (θ and the y ticks, left of the first panel,
-/// the height's name over them), the z labels' row under the last row
-/// of panels, the gaps between panels across and between rows, between blocks, each block's
-/// title and the schemes' headings, and the horizontal colour bar under each block.
+/// The layout, in units: the row labels' column (θ and the y ticks, left of the first panel,
+/// the height's name over them), the z labels' row under the last row of panels, the gaps
+/// between panels across and between rows, between blocks, each block's title and the
+/// schemes' headings, and the colour bar under each block (two columns) or beside it (one).
 const ROW_LABEL: u32 = 46;
 const X_LABELS: u32 = 33;
 const GAP: u32 = 4;
@@ -194,144 +199,29 @@ const BLOCK_GAP: u32 = 16;
 const BLOCK_TITLE: u32 = 22;
 const HEADINGS: u32 = 18;
 const BAR: u32 = 52;
-/// The colour bar's margins at its ends (room for the end labels).
-const BAR_MARGIN: u32 = 14;
-/// One column: the width of a vertical colour bar's column, and of its bar alone.
-const VBAR: u32 = 86;
-const VBAR_WIDTH: u32 = 14;
-/// A panel's height over its width: the z range [−5, 105] across and y over ±0.535 of it up
-/// (the frustum's far plane reaches ±57.7).
+/// One column: the row labels' column (θ turned, the ticks ±40), the gaps between panels
+/// across (room for a column's "100" and the next one's "0") and between rows, a block's
+/// title, the gap between blocks, and the upright colour bar's column.
+const ROW_LABEL_1: u32 = 42;
+const GAP_1: u32 = 10;
+const ROW_GAP_1: u32 = 3;
+const BLOCK_TITLE_1: u32 = 17;
+const BLOCK_GAP_1: u32 = 6;
+const VBAR: u32 = 78;
+/// A double-column panel's height over its width: the z range [−5, 105] across and y over
+/// ±0.535 of it up (the frustum's far plane reaches ±57.7), drawn to scale.
 const PANEL_RATIO: f64 = 1.07;
-/// The size of the figure's text (labels, ticks, headings); θ in one column is smaller, so
-/// that "θ = 90°" fits along a row.
+/// The size of the figure's text (labels, ticks, headings), in both layouts.
 const TEXT: u32 = 13;
-const THETA_SINGLE: u32 = 11;
 
 /// The page's size: three blocks of 3 × 3 panels side by side (landscape drawing), the caption
 /// under them; as tall as the blocks, their bars and the caption need.
-pub(super) const SIZE: (u32, u32) = (520, 424);
+pub(super) const SIZE: (u32, u32) = (520, 440);
 
 /// A double-column panel's width: the body (the page less 6 units each side) less the left
 /// strips, the gaps, shared by nine panels.
 const fn double_panel_w() -> u32 {
     (SIZE.0 - 12 - ROW_LABEL - 6 * GAP - 2 * BLOCK_GAP) / 9
-}
-
-/// The length along a double-column (horizontal) colour bar of its range, in units.
-fn double_bar_span() -> f64 {
-    f64::from(3 * double_panel_w() + 2 * GAP - 2 * BAR_MARGIN)
-}
-
-/// The width of a plain number written at `size`: DejaVu Sans' digits advance 1303 of its 2048
-/// units an em (0.636 em), its point 651 (0.318 em).
-fn number_width(t: &str, size: u32) -> f64 {
-    t.chars()
-        .map(|c| if c == '.' { 651.0 } else { 1303.0 })
-        .sum::<f64>()
-        / 2048.0
-        * f64::from(size)
-}
-
-/// The labelled ticks of a base-5 colour bar (axis space, that is log₅ of the value) with their
-/// labels, plain numbers: the powers 5^{ks} in its range (k whole, so that 5⁰ = 1 is one where
-/// it is in range), with the least stride s whose labels keep 6 units apart along the
-/// double-column bar (`span` units long), in both layouts: the same ticks in both.
-fn bar_ticks(axis: &Axis, span: f64) -> Vec<(f64, String)> {
-    let (lo, hi) = axis.range();
-    let per = span / (hi - lo);
-    let first = lo.ceil() as i32;
-    let last = hi.floor() as i32;
-    let at = |stride: i32| -> Vec<(f64, String)> {
-        (first..=last)
-            .filter(|e| e.rem_euclid(stride) == 0)
-            .map(|e| (f64::from(e), fmt_plain(5f64.powi(e))))
-            .collect()
-    };
-    for stride in 1..=(last - first).max(1) {
-        let ticks = at(stride);
-        let apart = ticks.windows(2).all(|w| {
-            let half = 0.5 * (number_width(&w[0].1, TEXT) + number_width(&w[1].1, TEXT));
-            (w[1].0 - w[0].0) * per >= half + 6.0
-        });
-        if apart && !ticks.is_empty() {
-            return ticks;
-        }
-    }
-    at(1).into_iter().take(1).collect()
-}
-
-/// Draws a colour bar for `scale` into `area`, horizontal (its labels under it) or
-/// `vertical` (its labels right of it, low values at the bottom): the bands, an outline, tick
-/// marks with the labels of [`bar_ticks`] and the quantity's name beyond them.
-fn draw_bar<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    scale: &ColourScale,
-    vertical: bool,
-) -> Result<(), Fail> {
-    let (lo, hi) = scale.axis.range();
-    let ticks = bar_ticks(&scale.axis, double_bar_span());
-    let (w, _) = area.dim_in_pixel();
-    let at: Vec<f64> = ticks.iter().map(|t| t.0).collect();
-    // The labels of exactly the ticks handed to the axis.
-    let label = |v: &f64| {
-        ticks
-            .iter()
-            .find(|t| (t.0 - v).abs() < 1e-9)
-            .map(|t| t.1.clone())
-            .unwrap_or_default()
-    };
-    let mut builder = ChartBuilder::on(area);
-    let mut chart = if vertical {
-        builder
-            .margin_top(BAR_MARGIN)
-            .margin_bottom(BAR_MARGIN)
-            .margin_right(4)
-            .x_label_area_size(0)
-            .y_label_area_size(0)
-            .right_y_label_area_size(w.saturating_sub(VBAR_WIDTH))
-            .build_cartesian_2d(
-                Ticked::new(0.0, 1.0, vec![], vec![]),
-                Ticked::new(lo, hi, at, vec![]),
-            )?
-    } else {
-        builder
-            .margin_left(BAR_MARGIN)
-            .margin_right(BAR_MARGIN)
-            .x_label_area_size(BAR - 14)
-            .y_label_area_size(0)
-            .build_cartesian_2d(
-                Ticked::new(lo, hi, at, vec![]),
-                Ticked::new(0.0, 1.0, vec![], vec![]),
-            )?
-    };
-    let mut mesh = chart.configure_mesh();
-    mesh.disable_mesh()
-        .axis_desc_style((FONT, TEXT))
-        .label_style((FONT, TEXT));
-    if vertical {
-        mesh.disable_x_axis()
-            .y_desc(scale.axis.label.as_str())
-            .y_label_formatter(&label)
-            .set_tick_mark_size(LabelAreaPosition::Right, COLOUR_BAR_TICK);
-    } else {
-        mesh.disable_y_axis()
-            .x_desc(scale.axis.label.as_str())
-            .x_label_formatter(&label)
-            .set_tick_mark_size(LabelAreaPosition::Bottom, COLOUR_BAR_TICK);
-    }
-    mesh.draw()?;
-    // The bands, low to high, as one raster (no seams).
-    draw_bar_bands(&chart, scale, vertical)?;
-    let outline = if vertical {
-        [(0.0, lo), (1.0, hi)]
-    } else {
-        [(lo, 0.0), (hi, 1.0)]
-    };
-    chart.draw_series(std::iter::once(Rectangle::new(
-        outline,
-        RGBColor(60, 60, 60).stroke_width(1),
-    )))?;
-    Ok(())
 }
 
 /// The depth axis's ticks (0, 50 and 100, the near plane at 1 and the far plane at 100) and
@@ -368,6 +258,240 @@ fn draw_z_labels<DB: DrawingBackend>(
     Ok(())
 }
 
+/// Where one block of 3 × 3 panels goes: its left edge and top (the first row's), the panels'
+/// size and the gaps between them.
+#[derive(Debug, Clone, Copy)]
+struct Block {
+    x: u32,
+    top: u32,
+    pw: u32,
+    ph: u32,
+    gap: u32,
+    row_gap: u32,
+}
+
+impl Block {
+    fn width(&self) -> u32 {
+        3 * self.pw + 2 * self.gap
+    }
+
+    fn height(&self) -> u32 {
+        3 * self.ph + 2 * self.row_gap
+    }
+}
+
+impl Fig3 {
+    /// Draws the panels of quantity `q` into `block` on `body`: a row per angle θ, a column
+    /// per scheme, each panel's frustum outline and grey frame at the data's extent; the
+    /// first column's panels carry θ (`row_name` of it) and the y ticks from `y_first` every
+    /// `y_step`; the rows of
+    /// `z_under` columns of the last row the depth's ticks, the `z_named` one its name.
+    #[allow(clippy::too_many_arguments)]
+    fn draw_block<DB: DrawingBackend>(
+        &self,
+        body: &DrawingArea<DB, Shift>,
+        q: usize,
+        b: Block,
+        (row_label, half, y_first, y_step): (u32, f64, f64, f64),
+        row_name: &dyn Fn(&str) -> String,
+        z_under: &[usize],
+        z_named: Option<usize>,
+    ) -> Result<(), Fail> {
+        let z = Axis::every("z (eye depth)", -5.0, 105.0, 500.0, 1000.0);
+        let blank = Axis::every("", -5.0, 105.0, 500.0, 1000.0);
+        for (r, row) in self.rows.iter().enumerate() {
+            for (s, scheme) in row.iter().enumerate() {
+                let labelled = s == 0 && row_label > 0;
+                let last_row = r + 1 == self.rows.len() && z_under.contains(&s);
+                let x0 = b.x + s as u32 * (b.pw + b.gap) - if labelled { row_label } else { 0 };
+                let cw = b.pw + if labelled { row_label } else { 0 };
+                let ch = b.ph + if last_row { X_LABELS } else { 0 };
+                let cell = body
+                    .clone()
+                    .shrink((x0, b.top + r as u32 * (b.ph + b.row_gap)), (cw, ch));
+                let style = ChartStyle {
+                    title_size: PANEL_TITLE,
+                    x_label_area: if last_row { X_LABELS } else { 0 },
+                    y_label_area: if labelled { row_label } else { 0 },
+                    tick_size: TEXT,
+                    desc_size: TEXT,
+                    margin: 0,
+                };
+                // θ as the first panel's y description, with the height y at −40, 0 and 40 in
+                // two columns, at 40 in one (its rows are too low for more): one y scale for
+                // every row.
+                let y = if labelled {
+                    Axis::every(row_name(&self.row_angles[r]), -half, half, y_first, y_step)
+                } else {
+                    Axis::every("", -half, half, 500.0, 1000.0)
+                };
+                let x = if last_row && z_named == Some(s) {
+                    &z
+                } else {
+                    &blank
+                };
+                let mut chart = build_chart_styled(&cell, "", x, &y, false, &style)?;
+                super::chart::draw_grid(&mut chart, &scheme[q].grid, &self.scales[q])?;
+                // The frustum's outline and the panel's frame.
+                let (n, f, t) = (1.0, self.far, self.tan_phi);
+                chart.draw_series(std::iter::once(PathElement::new(
+                    vec![
+                        (n, -n * t),
+                        (f, -f * t),
+                        (f, f * t),
+                        (n, n * t),
+                        (n, -n * t),
+                    ],
+                    RGBColor(40, 40, 40).stroke_width(1),
+                )))?;
+                // The frame at the data's extent: depth n to f, height ± f tan φ.
+                chart.draw_series(std::iter::once(Rectangle::new(
+                    [(n, -f * t), (f, f * t)],
+                    RGBColor(150, 150, 150).stroke_width(1),
+                )))?;
+                if last_row {
+                    draw_z_labels(&cell, &chart, -half)?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The schemes' names over the columns of `b`, their baseline at `y`.
+    fn draw_headings<DB: DrawingBackend>(
+        &self,
+        body: &DrawingArea<DB, Shift>,
+        b: Block,
+        y: u32,
+    ) -> Result<(), Fail> {
+        let style = TextStyle::from((FONT, TEXT).into_font());
+        for (s, name) in self.scheme_labels.iter().enumerate() {
+            let x = b.x + s as u32 * (b.pw + b.gap) + b.pw / 2;
+            body.draw(&Text::new(
+                name.clone(),
+                (x as i32, y as i32),
+                style.pos(Pos::new(HPos::Center, VPos::Bottom)),
+            ))?;
+        }
+        Ok(())
+    }
+
+    /// Two columns: three blocks side by side, one per quantity, each under its title and the
+    /// schemes' headings, with its colour bar across under it; θ and the y ticks left of the
+    /// first block's rows, the height's name over them, z labels under each block's first
+    /// column. Panels to scale.
+    fn draw_double<DB: DrawingBackend>(&self, body: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let pw = double_panel_w();
+        let ph = (f64::from(pw) * PANEL_RATIO).round() as u32;
+        let half = 0.5 * 110.0 * f64::from(ph) / f64::from(pw);
+        let style = TextStyle::from((FONT, TEXT).into_font());
+        for q in 0..self.scales.len() {
+            let b = Block {
+                x: ROW_LABEL + q as u32 * (3 * pw + 2 * GAP + BLOCK_GAP),
+                top: BLOCK_TITLE + HEADINGS,
+                pw,
+                ph,
+                gap: GAP,
+                row_gap: ROW_GAP,
+            };
+            body.draw(&Text::new(
+                BLOCK_NAMES[q],
+                ((b.x + b.width() / 2) as i32, 2),
+                style.pos(Pos::new(HPos::Center, VPos::Top)),
+            ))?;
+            self.draw_headings(body, b, b.top - 2)?;
+            if q == 0 {
+                body.draw(&Text::new(
+                    "height y",
+                    (b.x as i32 - 2, (b.top - 2) as i32),
+                    style.pos(Pos::new(HPos::Right, VPos::Bottom)),
+                ))?;
+            }
+            let row_label = if q == 0 { ROW_LABEL } else { 0 };
+            self.draw_block(
+                body,
+                q,
+                b,
+                (row_label, half, -40.0, 40.0),
+                &|a| a.to_string(),
+                &[0],
+                Some(0),
+            )?;
+            let bar_top = b.top + b.height() + X_LABELS + 6;
+            let bar = body.clone().shrink((b.x, bar_top), (b.width(), BAR));
+            draw_colour_bar_across(&bar, &self.scales[q])?;
+        }
+        Ok(())
+    }
+
+    /// One column: the three blocks stacked under one row of the schemes' headings, each under
+    /// its title with its colour bar upright beside it (its name turned, reading upwards);
+    /// θ (Zhang's light–view angle) turned left of each row with the y tick 40; the depth's
+    /// ticks under every column of the last block, named under the middle one. The panels
+    /// are as wide as the column allows and as high as the page's 420 pt allow, so that
+    /// their heights are drawn at about half the scale of their depths (the y ticks say so).
+    fn draw_single<DB: DrawingBackend>(&self, body: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        let (w, h) = body.dim_in_pixel();
+        let pw = (w.saturating_sub(ROW_LABEL_1 + 2 * GAP_1 + VBAR + 4)) / 3;
+        let fixed = HEADINGS + 3 * (BLOCK_TITLE_1 + 2 * ROW_GAP_1) + 2 * BLOCK_GAP_1 + X_LABELS;
+        let ph = h.saturating_sub(fixed) / 9;
+        // The frustum's height ±57.7 within ±58.85, as in two columns.
+        let half = 0.5 * 110.0 * PANEL_RATIO;
+        let style = TextStyle::from((FONT, TEXT).into_font());
+        let pitch = BLOCK_TITLE_1 + 3 * ph + 2 * ROW_GAP_1 + BLOCK_GAP_1;
+        for q in 0..self.scales.len() {
+            let b = Block {
+                x: ROW_LABEL_1,
+                top: HEADINGS + q as u32 * pitch + BLOCK_TITLE_1,
+                pw,
+                ph,
+                gap: GAP_1,
+                row_gap: ROW_GAP_1,
+            };
+            if q == 0 {
+                self.draw_headings(body, b, HEADINGS - 2)?;
+                // The row labels' column: θ turned, then the height's ticks.
+                for (text, x) in [("θ", 7), ("y", ROW_LABEL_1 as i32 - 12)] {
+                    body.draw(&Text::new(
+                        text,
+                        (x, HEADINGS as i32 - 2),
+                        style.pos(Pos::new(HPos::Center, VPos::Bottom)),
+                    ))?;
+                }
+            }
+            body.draw(&Text::new(
+                BLOCK_NAMES[q],
+                (
+                    (b.x + b.width() / 2) as i32,
+                    (b.top - BLOCK_TITLE_1 + 2) as i32,
+                ),
+                style.pos(Pos::new(HPos::Center, VPos::Top)),
+            ))?;
+            let last = q + 1 == self.scales.len();
+            let under: &[usize] = if last { &[0, 1, 2] } else { &[] };
+            self.draw_block(
+                body,
+                q,
+                b,
+                (ROW_LABEL_1, half, 40.0, 1000.0),
+                &|a| a.trim_start_matches("θ = ").to_string(),
+                under,
+                Some(1),
+            )?;
+            // The bar as tall as the block's rows (its chart keeps 30 units at each end).
+            let bar = body.clone().shrink(
+                (w - VBAR, b.top.saturating_sub(30)),
+                (VBAR, b.height() + 60),
+            );
+            draw_colour_bar(&bar, &self.scales[q])?;
+        }
+        Ok(())
+    }
+}
+
+/// The blocks' titles.
+const BLOCK_NAMES: [&str; 3] = ["(a) E_p = 2 m_z", "(b) E_q = 2 m_x", "(c) E_p × E_q"];
+
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
         SIZE
@@ -375,145 +499,28 @@ impl Figure for Fig3 {
 
     /// One column: the three blocks stacked.
     fn single_size(&self) -> Option<(u32, u32)> {
-        Some((Column::Single.width(), 800))
+        Some((Column::Single.width(), 524))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let single = column() == Column::Single;
-        let caption = if single {
-            self.single_caption.as_str()
+        let (title, caption) = if single {
+            (
+                "Side views of the aliasing error",
+                self.single_caption.as_str(),
+            )
         } else {
-            self.caption.as_str()
+            (
+                "Side views of the aliasing error inside the view frustum",
+                self.caption.as_str(),
+            )
         };
-        let body = frame(
-            root,
-            "Side views of the aliasing error inside the view frustum",
-            &[caption],
-        )?;
-        let (w, h) = body.dim_in_pixel();
-        // Two columns: three blocks side by side, one per quantity, each with its colour bar
-        // under it; one column: the blocks stacked, each bar right of its block. In each block
-        // a row per angle θ and a column per scheme (the paper's arrangement) under the
-        // schemes' headings, panels sharing their axes: the height y named over its axis, θ
-        // and the y ticks left of each row, z labels under a block's first column (in
-        // one column under the last block only).
-        let left = ROW_LABEL;
-        let pw = if single {
-            let across = (w - left - 2 * GAP - VBAR) / 3;
-            let fixed = 3 * (BLOCK_TITLE + HEADINGS + 2 * ROW_GAP) + X_LABELS + 2 * BLOCK_GAP;
-            let down = f64::from(h.saturating_sub(fixed)) / (9.0 * PANEL_RATIO);
-            across.min(down.floor() as u32)
+        let body = frame(root, title, &[caption])?;
+        if single {
+            self.draw_single(&body)
         } else {
-            double_panel_w()
-        };
-        let ph = (f64::from(pw) * PANEL_RATIO).round() as u32;
-        let block_w = 3 * pw + 2 * GAP;
-        let rows_h = 3 * ph + 2 * ROW_GAP;
-        let block_h = BLOCK_TITLE + HEADINGS + rows_h + BLOCK_GAP;
-        // No tick inside the range: the first would be at 500; the depth's ticks and labels
-        // are drawn by [`draw_z_labels`].
-        let z = Axis::every("z (eye depth)", -5.0, 105.0, 500.0, 1000.0);
-        let blank = Axis::every("", -5.0, 105.0, 500.0, 1000.0);
-        let half = 0.5 * (z.max - z.min) * f64::from(ph) / f64::from(pw);
-        let text = |size: u32| TextStyle::from((FONT, size).into_font());
-        for (q, scale) in self.scales.iter().enumerate() {
-            let q32 = q as u32;
-            // The block's left edge and top.
-            let (bx, by) = if single {
-                (left, q32 * block_h)
-            } else {
-                (left + q32 * (block_w + BLOCK_GAP), 0)
-            };
-            let z_labels = !single || q + 1 == self.scales.len();
-            let grid_top = by + BLOCK_TITLE + HEADINGS;
-            body.draw(&Text::new(
-                format!(
-                    "({}) {}",
-                    ['a', 'b', 'c'][q],
-                    ["E_p = 2 m_z", "E_q = 2 m_x", "E_p × E_q"][q]
-                ),
-                ((bx + block_w / 2) as i32, by as i32 + 2),
-                text(TEXT).pos(Pos::new(HPos::Center, VPos::Top)),
-            ))?;
-            for (s, name) in self.scheme_labels.iter().enumerate() {
-                let x = bx + s as u32 * (pw + GAP) + pw / 2;
-                body.draw(&Text::new(
-                    name.clone(),
-                    (x as i32, (grid_top - 2) as i32),
-                    text(TEXT).pos(Pos::new(HPos::Center, VPos::Bottom)),
-                ))?;
-            }
-            // The height's name over its axis, in the headings' row left of the first
-            // scheme's, of the first block (of every block in one column).
-            if single || q == 0 {
-                body.draw(&Text::new(
-                    "height y",
-                    (bx as i32 - 2, (grid_top - 2) as i32),
-                    text(TEXT).pos(Pos::new(HPos::Right, VPos::Bottom)),
-                ))?;
-            }
-            for (r, row) in self.rows.iter().enumerate() {
-                for (s, scheme) in row.iter().enumerate() {
-                    let row_label = (single || q == 0) && s == 0;
-                    let last_row = z_labels && r + 1 == self.rows.len();
-                    let x0 = bx + s as u32 * (pw + GAP) - if row_label { ROW_LABEL } else { 0 };
-                    let cw = pw + if row_label { ROW_LABEL } else { 0 };
-                    let ch = ph + if last_row { X_LABELS } else { 0 };
-                    let cell = body
-                        .clone()
-                        .shrink((x0, grid_top + r as u32 * (ph + ROW_GAP)), (cw, ch));
-                    let style = ChartStyle {
-                        title_size: PANEL_TITLE,
-                        x_label_area: if last_row { X_LABELS } else { 0 },
-                        y_label_area: if row_label { ROW_LABEL } else { 0 },
-                        tick_size: TEXT,
-                        desc_size: if single { THETA_SINGLE } else { TEXT },
-                        margin: 0,
-                    };
-                    // θ as the first panel's y description, with the height y at −40, 0 and
-                    // 40 (one y scale for every row).
-                    let y = if row_label {
-                        Axis::every(self.row_angles[r].as_str(), -half, half, -40.0, 40.0)
-                    } else {
-                        Axis::every("", -half, half, 500.0, 1000.0)
-                    };
-                    let x = if s == 0 && last_row { &z } else { &blank };
-                    let mut chart = build_chart_styled(&cell, "", x, &y, false, &style)?;
-                    super::chart::draw_grid(&mut chart, &scheme[q].grid, scale)?;
-                    // The frustum's outline and the panel's frame.
-                    let (n, f, t) = (1.0, self.far, self.tan_phi);
-                    chart.draw_series(std::iter::once(PathElement::new(
-                        vec![
-                            (n, -n * t),
-                            (f, -f * t),
-                            (f, f * t),
-                            (n, n * t),
-                            (n, -n * t),
-                        ],
-                        RGBColor(40, 40, 40).stroke_width(1),
-                    )))?;
-                    // The frame at the data's extent: depth n to f, height ± f tan φ.
-                    chart.draw_series(std::iter::once(Rectangle::new(
-                        [(n, -f * t), (f, f * t)],
-                        RGBColor(150, 150, 150).stroke_width(1),
-                    )))?;
-                    if s == 0 && last_row {
-                        draw_z_labels(&cell, &chart, -half)?;
-                    }
-                }
-            }
-            if single {
-                let bar = body
-                    .clone()
-                    .shrink((bx + block_w + GAP, grid_top), (VBAR, rows_h));
-                draw_bar(&bar, scale, true)?;
-            } else {
-                let bar_top = grid_top + rows_h + X_LABELS + 6;
-                let bar = body.clone().shrink((bx, bar_top), (block_w, BAR));
-                draw_bar(&bar, scale, false)?;
-            }
+            self.draw_double(&body)
         }
-        Ok(())
     }
 }
 
@@ -533,7 +540,9 @@ mod tests {
         use super::super::chart::read_svg::{draw_svg, embedded_images};
         use super::super::chart::SMOOTH_LEVELS;
         let scale = ColourScale::smooth(Axis::log10("E", 2.0, 16400.0));
-        let svg = draw_svg((160, BAR), |area| draw_bar(area, &scale, false).unwrap());
+        let svg = draw_svg((160, BAR), |area| {
+            draw_colour_bar_across(area, &scale).unwrap()
+        });
         assert!(!svg
             .lines()
             .any(|l| l.starts_with("<rect") && !l.contains("fill=\"none\"")));
@@ -572,7 +581,11 @@ mod tests {
             .map(|l| attr(l, "x").unwrap() + attr(l, "width").unwrap())
             .collect();
         assert_eq!(frames.len(), 27);
-        let hundreds: Vec<&(&str, String, f64)> = all.iter().filter(|x| x.1 == "100").collect();
+        // The depth's "100", not a bar's 10⁰ (read as 100 with its raised 0).
+        let hundreds: Vec<&(&str, String, f64)> = all
+            .iter()
+            .filter(|x| x.1 == "100" && !x.0.contains("<tspan"))
+            .collect();
         assert_eq!(hundreds.len(), 3, "{hundreds:?}");
         for (line, _, _) in hundreds {
             assert!(line.contains("text-anchor=\"end\""), "{line}");
@@ -598,55 +611,88 @@ mod tests {
         }
     }
 
-    /// The colour bars' ticks are plain powers of 5 (issue 35 item 9: they read 5⁰, 5¹, 5²),
-    /// every power where the labels keep 6 units apart on the double-column bar, else every
-    /// second or third (5^{ks}, so that 1 = 5⁰ is one), the same ticks in both layouts. By
-    /// hand, on a bar 100 units long (DejaVu digits 8.27 units at 13, the point 4.13): E over
-    /// 0.028 to 128 spans log₅ −2.22 to 3.01, 19.1 units a power: "0.04" (28.9 wide) and "0.2"
-    /// (20.7) need 30.8, so every second power, 0.04, 1, 25 (38.2 apart); E over 2 to 230,
-    /// log₅ 0.43 to 3.38, 33.9 units a power: 5, 25 and 125 fit (25 and 125 need 26.7).
+    /// The colour bars are ticked at whole powers of ten, in both layouts (review X3: they
+    /// read 0.04, 1, 25 and 1, 125, 15625, powers of 5), and each bar's range holds every
+    /// value of its nine panels, its ends whole decades (review: SSM's E_p at the apex,
+    /// (f − n)/(n tan φ) = 99/tan 30° = 171.5 by Zhang's Eq 9, stood above the top tick of
+    /// (a)'s bar, its end unlabelled): read back from both SVGs, every number written is a
+    /// power of ten 10<sup>n</sup> or one of the axes' 0, 40, −40, 100; E_p's bar reaches 10³ ≥ 171.5.
     #[test]
-    fn colour_bar_ticks_are_plain_powers_of_five() {
-        let labels = |lo: f64, hi: f64| -> Vec<String> {
-            bar_ticks(&Axis::log_base("E", lo, hi, 5.0), 100.0)
-                .into_iter()
-                .map(|t| t.1)
-                .collect()
-        };
-        assert_eq!(labels(0.028, 128.0), ["0.04", "1", "25"]);
-        assert_eq!(labels(2.0, 230.0), ["5", "25", "125"]);
-        // 0.06 to 16400: log₅ −1.75 to 6.03, 12.85 units a power: every third puts "125" (24.8)
-        // and "15625" (41.3) 38.6 apart, short of 39.1; every fourth, 1 and 625.
-        assert_eq!(labels(0.06, 16400.0), ["1", "625"]);
-    }
-
-    /// The single column's bars carry the double column's ticks (review: the sets differed):
-    /// read back from both SVGs, the labels of each bar, by quantity, are the same.
-    #[test]
-    fn both_layouts_label_their_bars_alike() {
+    fn colour_bars_are_ticked_at_powers_of_ten_and_hold_every_value() {
         use super::super::chart::read_svg::{draw_svg, texts};
         use super::super::chart::with_page;
         let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
-        let numbers = |column: Column, size: (u32, u32)| -> Vec<String> {
+        for (q, scale) in fig.scales.iter().enumerate() {
+            let (lo, hi) = scale.axis.range();
+            let whole = |a: f64| (a - a.round()).abs() < 1e-9;
+            assert!(whole(lo) && whole(hi), "{q}: {lo} {hi}");
+            for row in &fig.rows {
+                for scheme in row {
+                    for v in scheme[q].grid.values.iter().flatten() {
+                        let a = v.log10();
+                        assert!(a >= lo - 1e-9 && a <= hi + 1e-9, "{q}: {v} outside");
+                    }
+                }
+            }
+        }
+        let apex = 99.0 / 30f64.to_radians().tan();
+        assert!((apex - 171.47).abs() < 0.01);
+        assert!(10f64.powf(fig.scales[0].axis.range().1) >= apex);
+        for column in [Column::Double, Column::Single] {
+            let size = match column {
+                Column::Double => SIZE,
+                Column::Single => fig.single_size().unwrap(),
+            };
             let svg = with_page(false, column, || {
                 draw_svg(size, |area| fig.draw(area).unwrap())
             });
-            let mut v: Vec<String> = texts(&svg)
-                .into_iter()
-                .map(|t| t.1)
-                .filter(|t| {
-                    !t.is_empty()
-                        && t.chars().all(|c| c.is_ascii_digit() || c == '.')
-                        && !["0", "40", "100"].contains(&t.as_str())
-                })
-                .collect();
-            v.sort();
-            v
-        };
-        let double = numbers(Column::Double, SIZE);
-        let single = numbers(Column::Single, fig.single_size().unwrap());
-        assert!(double.len() >= 9, "{double:?}");
-        assert_eq!(double, single);
+            let mut powers = 0;
+            for (line, text, _) in texts(&svg) {
+                if !text.chars().any(|c| c.is_ascii_digit())
+                    || text.chars().any(|c| c.is_alphabetic() || c == '°')
+                {
+                    continue;
+                }
+                if line.contains(">10<tspan dy=\"-") {
+                    let exp = text.trim_start_matches("10").replace('−', "-");
+                    assert!(exp.parse::<i32>().is_ok(), "{column:?}: {text}");
+                    powers += 1;
+                } else {
+                    assert!(
+                        ["0", "40", "−40", "100"].contains(&text.as_str()),
+                        "{column:?}: {text} is no power of ten"
+                    );
+                }
+            }
+            assert!(powers >= 9, "{column:?}: {powers} powers of ten");
+        }
+    }
+
+    /// One column keeps the text of the other figures' one-column forms (review X9: θ and
+    /// "z (eye depth)" were 8.871 units, 7.1 pt printed, against 10.48, 8.4 pt): read from its
+    /// SVG, no text of the figure is set smaller than 10.48 units but its sub- and
+    /// superscripts; the caption gives θ's values and says what θ and φ are (X2), and both
+    /// captions explain the factor 2 of E_p = 2 m_z.
+    #[test]
+    fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
+        use super::super::chart::read_svg::{attr, draw_svg};
+        use super::super::chart::with_page;
+        let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
+        let svg = with_page(false, Column::Single, || {
+            draw_svg(fig.single_size().unwrap(), |area| fig.draw(area).unwrap())
+        });
+        let smallest = svg
+            .lines()
+            .filter(|l| l.starts_with("<text"))
+            .filter_map(|l| attr(l, "font-size"))
+            .fold(f64::INFINITY, f64::min);
+        assert!(smallest >= 10.48, "{smallest}");
+        for c in [&fig.caption, &fig.single_caption] {
+            assert!(c.contains("90°, 60°, 30° from the view direction"), "{c}");
+            assert!(c.contains("half field of view φ"), "{c}");
+            assert!(c.contains("span [−1,\u{a0}1]"), "{c}");
+            assert!(!c.contains("π/6"), "{c}");
+        }
     }
 
     #[test]

@@ -137,6 +137,7 @@ impl Axis {
     }
 
     /// A logarithmic axis of base `b`.
+    #[cfg(test)]
     pub fn log_base(label: impl Into<String>, min: f64, max: f64, b: f64) -> Self {
         Self {
             label: label.into(),

@@ -3,80 +3,45 @@
 use super::super::Fail;
 use super::axis::{Axis, Chart2d, Ticked};
 use super::heat::ColourScale;
-use super::page::column;
 use super::raster::Raster;
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// The length of a colour bar's tick marks, in pixels; its labels start twice that from the bar.
 pub(crate) const COLOUR_BAR_TICK: i32 = 5;
 
-/// Three significant digits.
-fn three_digits(v: f64) -> f64 {
-    if v == 0.0 || !v.is_finite() {
-        return v;
-    }
-    let p = 10f64.powf(v.abs().log10().floor() - 2.0);
-    (v / p).round() * p
+/// The whole decades round `[lo, hi]` (`0 < lo ≤ hi`): a colour bar over them ends at round
+/// powers of ten, both labelled, and holds every value, none clipped (a bar over the data's own
+/// range ended at computed values such as 9.07×10⁻¹, and one at a round tick short of the
+/// data's top hid the clipped values, the figure review's X3).
+pub(crate) fn decades(lo: f64, hi: f64) -> (f64, f64) {
+    let a = lo.log10().floor() as i32;
+    let b = (hi.log10().ceil() as i32).max(a + 1);
+    // Written and read back, each the double nearest its power of ten, whose log₁₀ is then
+    // the whole number (10f64.powf(−2.0) is 0.010000000000000002, log₁₀ −1.9999999999999996).
+    let power = |e: i32| format!("1e{e}").parse::<f64>().unwrap_or(f64::NAN);
+    (power(a), power(b))
 }
 
-/// The labelled ticks of a colour bar (axis space) with their labels: both ends of its range,
-/// written to three significant digits, so that the range can be read off the bar, and the
-/// axis's own ticks (decades on a log scale) between them, all in the axis's one format
-/// ([`Axis::tick_label`]). A drawn bar leaves out those too near an end ([`clear_of_ends`]).
+/// The labelled ticks of a colour bar (axis space) with their labels: the axis's own ticks
+/// (its decades on a base-10 log scale, which end a bar over [`decades`]), in the axis's one
+/// format ([`Axis::tick_label`]); never a computed end value.
 pub(crate) fn colour_bar_ticks(axis: &Axis) -> Vec<(f64, String)> {
-    let (lo, hi) = axis.range();
-    let eps = 1e-9 * (hi - lo).abs().max(1e-300);
-    let end = |a: f64| {
-        let v = three_digits(axis.to_data(a));
-        (a, axis.tick_label(axis.to_axis(v).unwrap_or(a)))
-    };
-    let mut ticks = vec![end(lo)];
-    ticks.extend(
-        axis.ticks()
-            .0
-            .into_iter()
-            .filter(|&t| (t - lo).abs() > eps && (t - hi).abs() > eps)
-            .map(|t| (t, axis.tick_label(t))),
-    );
-    ticks.push(end(hi));
-    ticks
+    axis.ticks()
+        .0
+        .into_iter()
+        .map(|t| (t, axis.tick_label(t)))
+        .collect()
 }
-
-/// The least space between a colour bar's end label and a tick label next to it, in points as
-/// printed (the review found lloyd2006-fig7's "2430" 3 pt from "10³").
-pub(crate) const BAR_END_GAP_PT: f64 = 8.0;
 
 /// The height of a colour bar's tick label, in units: its size 13 is 10.5 units in the SVG,
 /// from the top of a raised exponent to the descent about 1.1 of that.
 const BAR_LABEL_H: f64 = 11.5;
 
-/// `ticks` ([`colour_bar_ticks`]: the two ends first and last) without the inner ones whose
-/// labels come within [`BAR_END_GAP_PT`] of an end's label on a bar `units_per_axis` units long
-/// per unit of axis space (a decade on a log bar), printed `points_per_unit` points a unit.
-pub(crate) fn clear_of_ends(
-    ticks: Vec<(f64, String)>,
-    units_per_axis: f64,
-    points_per_unit: f64,
-) -> Vec<(f64, String)> {
-    let (Some(lo), Some(hi)) = (ticks.first().map(|t| t.0), ticks.last().map(|t| t.0)) else {
-        return ticks;
-    };
-    let least = BAR_LABEL_H + BAR_END_GAP_PT / points_per_unit;
-    let n = ticks.len();
-    ticks
-        .into_iter()
-        .enumerate()
-        .filter(|(i, t)| {
-            *i == 0
-                || *i == n - 1
-                || ((t.0 - lo).abs() * units_per_axis >= least
-                    && (t.0 - hi).abs() * units_per_axis >= least)
-        })
-        .map(|(_, t)| t)
-        .collect()
-}
+/// The size of a colour bar's name (plotters' size), written along the bar.
+pub(crate) const BAR_NAME: u32 = 14;
 
 /// Fills a colour bar with the bands of `scale` as one raster ([`Raster`]): abutting
 /// rectangles at whole units left anti-aliased hairline seams between the bands (issue 25).
@@ -112,31 +77,39 @@ pub(crate) fn draw_bar_bands<DB: DrawingBackend>(
     Raster::sample(bbox, colour_at).draw(&chart.plotting_area().strip_coord_spec())
 }
 
-/// Draws a vertical colour bar for `scale` into `area`, its ends labelled
-/// ([`colour_bar_ticks`]).
+/// Draws a vertical colour bar for `scale` into `area`: the bands, tick labels right of it
+/// ([`colour_bar_ticks`]) and its name beyond them, turned anticlockwise as a y axis's name is
+/// (reading from the bottom up: the figure review's X8).
 pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     scale: &ColourScale,
 ) -> Result<(), Fail> {
     let (lo, hi) = scale.axis.range();
-    // The bar runs between the chart's margins of 30 units at each end.
-    let length = f64::from(area.dim_in_pixel().1.saturating_sub(60));
-    let ticks = clear_of_ends(
-        colour_bar_ticks(&scale.axis),
-        length / (hi - lo).abs().max(1e-300),
-        column().points_per_unit(),
-    );
-    let yb: Vec<f64> = ticks.iter().map(|t| t.0).collect();
-    // The labels' side: tick, gap, the widest label and the name (14 units across, turned),
-    // at least 62 units, leaving the bar at least 8.
+    let all = colour_bar_ticks(&scale.axis);
+    let yb: Vec<f64> = all.iter().map(|t| t.0).collect();
+    // Every tick labelled where neighbouring labels keep 6 units apart along the bar, else
+    // every second (those of the top end's parity; the others keep their marks).
+    let (_, h) = area.dim_in_pixel();
+    let per = f64::from(h.saturating_sub(60)) / (hi - lo).abs().max(1e-300);
+    let crowded = all.len() > 1 && (all[1].0 - all[0].0).abs() * per < BAR_LABEL_H + 6.0;
+    let n = all.len();
+    let ticks: Vec<(f64, String)> = all
+        .into_iter()
+        .enumerate()
+        .filter(|(i, _)| !crowded || (n - 1 - i) % 2 == 0)
+        .map(|(_, t)| t)
+        .collect();
+    // The labels' side: tick, gap, the widest label, 6 units and the name (14 across,
+    // turned), at least 62 units, leaving the bar at least 8.
     let label_style = TextStyle::from((FONT, 13).into_font());
     let mut widest = 0u32;
     for t in &ticks {
         widest = widest.max(area.estimate_text_size(&t.1, &label_style)?.0);
     }
+    let (w, _) = area.dim_in_pixel();
     let side = (widest + 2 * COLOUR_BAR_TICK as u32 + 26)
         .max(62)
-        .min(area.dim_in_pixel().0.saturating_sub(14));
+        .min(w.saturating_sub(14));
     let mut chart = ChartBuilder::on(area)
         .margin_top(30)
         .margin_bottom(30)
@@ -150,19 +123,17 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
     let yf = |v: &f64| {
         ticks
             .iter()
-            .min_by(|a, b| (a.0 - v).abs().total_cmp(&(b.0 - v).abs()))
+            .find(|t| (t.0 - v).abs() < 1e-9)
             .map_or_else(String::new, |t| t.1.clone())
     };
     chart
         .configure_mesh()
         .disable_mesh()
         .disable_x_axis()
-        .y_desc(scale.axis.label.as_str())
         .y_label_formatter(&yf)
         // Tick marks 5 px long outside the bar, the labels twice that from it (plotters' own
         // default put them about 3 px from the bar's edge).
         .set_tick_mark_size(LabelAreaPosition::Right, COLOUR_BAR_TICK)
-        .axis_desc_style((FONT, 14))
         .label_style((FONT, 13))
         .draw()?;
     draw_bar_bands(&chart, scale, true)?;
@@ -170,6 +141,18 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
         [(0.0, lo), (1.0, hi)],
         RGBColor(60, 60, 60).stroke_width(1),
     )))?;
+    // The name: its middle 6 + 7 units in from the area's right edge, level with the bar's.
+    let base = area.get_base_pixel();
+    let (_, top) = chart.backend_coord(&(0.0, hi));
+    let (_, bottom) = chart.backend_coord(&(0.0, lo));
+    let mid = (top + bottom) / 2 - base.1;
+    area.draw(&Text::new(
+        scale.axis.label.clone(),
+        (w as i32 - 6 - BAR_NAME as i32 / 2, mid.clamp(0, h as i32)),
+        TextStyle::from((FONT, BAR_NAME).into_font())
+            .transform(FontTransform::Rotate270)
+            .pos(Pos::new(HPos::Center, VPos::Center)),
+    ))?;
     // Unlabelled minor ticks (2 … 9 times each decade on a log bar), half as long.
     let (_, light) = scale.axis.ticks();
     chart.draw_series(
@@ -184,6 +167,71 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
                     )
             }),
     )?;
+    Ok(())
+}
+
+/// Draws a colour bar for `scale` across `area`: the bands, tick marks at the axis's ticks,
+/// labels under them, and the name under the labels. Where the labels of neighbouring ticks
+/// would come within 8 units of each other, every second is labelled (those of the top end's
+/// parity), the others keep their marks.
+pub(crate) fn draw_colour_bar_across<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    scale: &ColourScale,
+) -> Result<(), Fail> {
+    let (lo, hi) = scale.axis.range();
+    let ticks = colour_bar_ticks(&scale.axis);
+    let label_style = TextStyle::from((FONT, 13).into_font());
+    let mut widest = 0u32;
+    for t in &ticks {
+        widest = widest.max(area.estimate_text_size(&t.1, &label_style)?.0);
+    }
+    let (w, h) = area.dim_in_pixel();
+    let end = widest / 2 + 1;
+    let length = f64::from(w.saturating_sub(2 * end));
+    let apart = |k: usize| {
+        ticks.len() < 2
+            || (ticks[1].0 - ticks[0].0).abs() * k as f64 * length / (hi - lo).abs().max(1e-300)
+                >= f64::from(widest) + 8.0
+    };
+    let stride = if apart(1) { 1 } else { 2 };
+    let n = ticks.len();
+    let shown: Vec<(f64, String)> = ticks
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| (n - 1 - i) % stride == 0)
+        .map(|(_, t)| t.clone())
+        .collect();
+    let xb: Vec<f64> = ticks.iter().map(|t| t.0).collect();
+    let mut chart = ChartBuilder::on(area)
+        .margin_left(end)
+        .margin_right(end)
+        .x_label_area_size(h.saturating_sub(14).min(40))
+        .y_label_area_size(0)
+        .build_cartesian_2d(
+            Ticked::new(lo, hi, xb, vec![]),
+            Ticked::new(0.0, 1.0, vec![], vec![]),
+        )?;
+    let xf = |v: &f64| {
+        shown
+            .iter()
+            .find(|t| (t.0 - v).abs() < 1e-9)
+            .map_or_else(String::new, |t| t.1.clone())
+    };
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .disable_y_axis()
+        .x_desc(scale.axis.label.as_str())
+        .x_label_formatter(&xf)
+        .set_tick_mark_size(LabelAreaPosition::Bottom, COLOUR_BAR_TICK)
+        .axis_desc_style((FONT, 13))
+        .label_style((FONT, 13))
+        .draw()?;
+    draw_bar_bands(&chart, scale, false)?;
+    chart.draw_series(std::iter::once(Rectangle::new(
+        [(lo, 0.0), (hi, 1.0)],
+        RGBColor(60, 60, 60).stroke_width(1),
+    )))?;
     Ok(())
 }
 
@@ -220,68 +268,48 @@ mod tests {
             .all(|p| p.0[3] == 255 && p.0[..3] != [255, 255, 255]));
     }
 
-    /// A colour bar's ends are labelled (issue 25: Fig 7's shared bar, 865 … 4.7·10⁶, had no
-    /// tick at its top): the bar of Fig 7's range, read back from its SVG, has the labels
-    /// "8.65×10²" and "4.74×10⁶" (three significant digits, in powers as the decades are) level
-    /// with its bottom and top edges, and the decades between them that keep clear of the ends
-    /// (the bar is 440 units over 3.74 decades, 118 a decade: 10³ lies 0.06 decades, 7 units,
-    /// from 865: left out; 10⁴, 10⁵, 10⁶ labelled, 10⁶ 0.68 decades, 79 units, from the top).
-    /// lloyd2006-fig7's ratio bar, 1 to 2430 (3.386 decades): on a bar 132 units long (39.0
-    /// units a decade) 10³ lies log 2.43 = 0.386 decades, 15.0 units, from the end label
-    /// "2.43×10³": under a label's height (11.5) and 8 pt (8 units in two columns, 10 in one),
-    /// so it is left out, as the review asked (it was 3 pt from "2430"); 10¹ and 10², 39 and
-    /// 78 units from the bottom, stay. On a bar 300 units long (88.6 a decade, 34.2 units)
-    /// 10³ stays. The ends are never dropped.
+    /// A colour bar over [`decades`] is ticked at its decades only, its ends included, and
+    /// its name reads from the bottom up (X3, X8): lloyd2006-fig7's S̄, 865.159 to 4.7354×10⁶,
+    /// gets the bar 10² … 10⁷ (log₁₀ 865 = 2.94, log₁₀ 4.74×10⁶ = 6.68, by hand), its labels
+    /// 10², 10³, …, 10⁷, the lowest level with the bar's bottom edge and the highest with its
+    /// top; no label is a computed value such as 8.65×10²; the name is turned 270° (plotters'
+    /// clockwise turn, which is a quarter turn anticlockwise), as a left y axis's name is.
     #[test]
-    fn a_decade_next_to_an_end_label_is_left_out() {
-        let axis = Axis::log10("(b) ÷ (c)", 1.0, 2430.0);
-        let ticks = colour_bar_ticks(&axis);
-        let labels = |t: &[(f64, String)]| t.iter().map(|t| t.1.clone()).collect::<Vec<_>>();
-        assert_eq!(labels(&ticks), ["10⁰", "10¹", "10²", "10³", "2.43×10³"]);
-        let per = |length: f64| length / 2430f64.log10();
-        for ppu in [1.0, 0.8] {
-            assert_eq!(
-                labels(&clear_of_ends(ticks.clone(), per(132.0), ppu)),
-                ["10⁰", "10¹", "10²", "2.43×10³"]
-            );
-            assert_eq!(
-                labels(&clear_of_ends(ticks.clone(), per(300.0), ppu)),
-                labels(&ticks)
-            );
-        }
-        // 20 units from the end: clear in two columns (19.5 needed), not in one (21.5).
-        let l = 20.0 / 2.43f64.log10();
-        assert_eq!(clear_of_ends(ticks.clone(), l, 1.0).len(), 5);
-        assert_eq!(clear_of_ends(ticks.clone(), l, 0.8).len(), 4);
-    }
-
-    #[test]
-    fn colour_bar_labels_its_ends() {
-        let scale = ColourScale::smooth(Axis::log10("S", 865.159, 4.7354e6));
+    fn colour_bar_ticks_round_decades_and_reads_upwards() {
+        let (lo, hi) = decades(865.159, 4.7354e6);
+        assert!(
+            (lo - 100.0).abs() < 1e-9 && (hi - 1e7).abs() < 1e-3,
+            "{lo} {hi}"
+        );
+        assert_eq!(decades(0.907, 2430.0), (0.1, 10_000.0));
+        assert_eq!(decades(0.03, 171.0), (0.01, 1000.0));
+        assert_eq!(0.01f64.log10(), -2.0);
+        assert_eq!(decades(5.0, 5.0), (1.0, 10.0));
+        let scale = ColourScale::smooth(Axis::log10("S", lo, hi));
         let svg = draw_svg((90, 500), |area| draw_colour_bar(area, &scale).unwrap());
-        // The bar's outline: the one unfilled rectangle.
         let outline = svg
             .lines()
             .find(|l| l.starts_with("<rect") && l.contains("fill=\"none\""))
             .unwrap();
         let top = attr(outline, "y").unwrap();
         let bottom = top + attr(outline, "height").unwrap();
-        let label_y = |text: &str| {
-            svg.lines()
-                .find(|l| {
-                    l.starts_with("<text") && visible(l) == visible(&format!(">{text}</text>"))
-                })
-                .and_then(|l| attr(l, "y"))
-        };
-        let hi = label_y("4.74×10⁶").unwrap_or_else(|| panic!("no label at the top: {svg}"));
-        let lo = label_y("8.65×10²").expect("a label at the bottom");
-        assert!(
-            (hi - top).abs() <= 1.0 && (lo - bottom).abs() <= 1.0,
-            "{hi} {lo}"
+        let labels: Vec<(String, f64, &str)> = svg
+            .lines()
+            .filter(|l| l.starts_with("<text"))
+            .map(|l| (visible(l), attr(l, "y").unwrap(), l))
+            .collect();
+        let want: Vec<String> = (2..=7)
+            .map(|e| visible(&format!(">10{}</text>", super::super::superscript(e))))
+            .collect();
+        let ticks: Vec<&(String, f64, &str)> = labels.iter().filter(|t| t.0 != "S").collect();
+        assert_eq!(
+            ticks.iter().map(|t| t.0.clone()).collect::<Vec<_>>(),
+            want,
+            "{svg}"
         );
-        for d in ["10⁴", "10⁵", "10⁶"] {
-            assert!(label_y(d).is_some(), "{d}");
-        }
-        assert!(label_y("10³").is_none());
+        let y = |k: usize| ticks[k].1;
+        assert!((y(5) - top).abs() <= 1.0 && (y(0) - bottom).abs() <= 1.0);
+        let name = labels.iter().find(|t| t.0 == "S").unwrap();
+        assert!(name.2.contains("rotate(270"), "{}", name.2);
     }
 }

@@ -3,7 +3,9 @@
 use super::super::canvas::Fine;
 use super::super::Fail;
 use super::axis::{Axis, Chart2d, PANEL_TITLE};
+use super::colour_map::{diverging_position, rdbu};
 use super::raster::Raster;
+use super::ColourMap;
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -11,12 +13,13 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters_backend::BackendColor;
 
 /// A colour scale: a value range on an axis (linear or logarithmic), quantised into `levels`
-/// bands of the viridis colour map (dark blue low, yellow high: perceptually uniform, and
-/// readable in grey and by colour-blind readers).
+/// bands of a colour map ([`ColourMap`]: viridis, dark blue low, yellow high, for a quantity;
+/// a diverging map for a ratio).
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct ColourScale {
     pub axis: Axis,
     pub levels: usize,
+    pub map: ColourMap,
 }
 
 /// Bands of a smooth colour scale: neighbouring bands of viridis differ by less than the eye
@@ -29,6 +32,17 @@ impl ColourScale {
         Self {
             axis,
             levels: SMOOTH_LEVELS,
+            map: ColourMap::Viridis,
+        }
+    }
+
+    /// A smooth diverging scale over `axis`, neutral at the value `centre` (1 for a ratio).
+    pub fn diverging(axis: Axis, centre: f64) -> Self {
+        let centre = axis.to_axis(centre).unwrap_or(0.0);
+        Self {
+            axis,
+            levels: SMOOTH_LEVELS,
+            map: ColourMap::Diverging { centre },
         }
     }
 
@@ -46,7 +60,19 @@ impl ColourScale {
 
     /// The colour of a band.
     pub fn level_colour(&self, level: usize) -> RGBColor {
-        viridis((level as f64 + 0.5) / self.levels as f64)
+        let t = (level as f64 + 0.5) / self.levels as f64;
+        match self.map {
+            ColourMap::Viridis => viridis(t),
+            ColourMap::Diverging { centre } => {
+                let (lo, hi) = self.axis.range();
+                let c = if hi > lo {
+                    (centre - lo) / (hi - lo)
+                } else {
+                    0.5
+                };
+                rdbu(diverging_position(t, c))
+            }
+        }
     }
 }
 
@@ -321,11 +347,25 @@ pub(crate) const RINGS: [(f64, bool); 5] = [
 /// the disk), the elevation rings of [`RINGS`] (each on a light halo, so that it shows on dark
 /// colours too), and the directions named. Returns the rows of the disk's top and bottom in
 /// `area` (for a colour bar as tall as the disk).
+#[cfg(test)]
 pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
     grid: &PolarGrid,
     scale: &ColourScale,
+) -> Result<(u32, u32), Fail> {
+    draw_hemisphere_keyed(area, title, grid, scale, false)
+}
+
+/// [`draw_hemisphere`], with the rings' elevations and "overhead" written in the disk where
+/// `key` ([`super::hemisphere_key`]): a figure keys one of its panels, so that without its
+/// caption it still says what the rings and the centre are.
+pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    title: &str,
+    grid: &PolarGrid,
+    scale: &ColourScale,
+    key: bool,
 ) -> Result<(u32, u32), Fail> {
     let (w, h) = area.dim_in_pixel();
     // Square plotting area centred in the panel.
@@ -412,16 +452,35 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
     let label = |text: &str, at: (f64, f64), pos: Pos| {
         area.draw(&Text::new(text.to_string(), to_px(at), style.pos(pos)))
     };
-    // In the square's top corners, clear of the rim (at 0.97 they touched it).
-    label("← behind", (-1.0, 1.14), Pos::new(HPos::Left, VPos::Top))?;
-    label("in front →", (1.0, 1.14), Pos::new(HPos::Right, VPos::Top))?;
+    // In the square's top corners, clear of the rim (at 0.97 they touched it); where the
+    // disk is narrower than the two labels and 12 units between them, at the panel's corners.
+    let width = |t: &str| area.estimate_text_size(t, &style).map(|s| s.0 as i32);
+    let (wb, wf) = (width("← behind")?, width("in front →")?);
+    let (_, label_y) = to_px((0.0, 1.14));
+    let (mut lx, mut rx) = (left, right);
+    if wb + wf + 12 > right - left {
+        let spare = (w as i32 - wb - wf - 12).max(0);
+        lx = spare / 2;
+        rx = w as i32 - spare / 2;
+    }
+    area.draw(&Text::new(
+        "← behind",
+        (lx, label_y),
+        style.pos(Pos::new(HPos::Left, VPos::Top)),
+    ))?;
+    area.draw(&Text::new(
+        "in front →",
+        (rx, label_y),
+        style.pos(Pos::new(HPos::Right, VPos::Top)),
+    ))?;
     label(
         "viewer's right",
         (0.0, -1.02),
         Pos::new(HPos::Center, VPos::Top),
     )?;
-    // No text inside the disk (the field shows whole): the captions say where overhead is
-    // and which elevations the rings mark.
+    if key {
+        super::hemisphere_key::draw_ring_key(area, to_px)?;
+    }
     Ok((top.max(0) as u32, bottom.max(0) as u32))
 }
 
@@ -436,6 +495,7 @@ mod tests {
         let s = ColourScale {
             axis: Axis::log10("S", 1.0, 1000.0),
             levels: 30,
+            map: ColourMap::Viridis,
         };
         assert_eq!(s.level(1.0), Some(0));
         assert_eq!(s.level(1000.0), Some(29));

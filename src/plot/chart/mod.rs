@@ -11,8 +11,10 @@
 mod aspect;
 mod axis;
 mod bar;
+mod colour_map;
 mod fine;
 mod heat;
+mod hemisphere_key;
 mod label;
 mod legend;
 mod line;
@@ -26,6 +28,7 @@ mod scheme;
 pub(crate) use aspect::*;
 pub(crate) use axis::*;
 pub(crate) use bar::*;
+pub(crate) use colour_map::ColourMap;
 pub(crate) use heat::*;
 pub(crate) use label::*;
 pub(crate) use line::*;
