@@ -83,6 +83,10 @@ pub enum Fault {
     /// a bug in the rule would make it; only a measurement of the map against PSM's n′ from
     /// the paper can tell.
     PsmNPrimeDouble,
+    /// The receivers left out of the frame (`Bound::Unbounded`): every map's focus body the
+    /// whole view slice instead of its part the receivers' box holds, and everything the frame
+    /// reports following it, as a focus body that lost its clip would make it.
+    ReceiversUnbounded,
 }
 
 /// How far from the world origin a set-up's camera must be for [`Fault::PlainWorld`] to apply
@@ -114,7 +118,7 @@ const GL_TO_01: DMat4 = DMat4::from_cols(
 
 impl Fault {
     /// Every fault, in the order of the self-test.
-    pub const ALL: [Fault; 23] = [
+    pub const ALL: [Fault; 24] = [
         Fault::MatrixScale,
         Fault::DepthShift,
         Fault::NPrimeDouble,
@@ -138,6 +142,7 @@ impl Fault {
         Fault::NormalOffsetDoubled,
         Fault::UniformWide,
         Fault::PsmNPrimeDouble,
+        Fault::ReceiversUnbounded,
     ];
 
     /// The name `--fault` takes.
@@ -166,6 +171,7 @@ impl Fault {
             Fault::NormalOffsetDoubled => "normal-offset-x2",
             Fault::UniformWide => "uniform-wide",
             Fault::PsmNPrimeDouble => "psm-n-prime-x2",
+            Fault::ReceiversUnbounded => "receivers-unbounded",
         }
     }
 
@@ -195,6 +201,9 @@ impl Fault {
             Fault::NormalOffsetDoubled => "the normal offset (record and per point) doubled",
             Fault::UniformWide => "the uniform map 1.2 x too wide, its error reported x 1.2",
             Fault::PsmNPrimeDouble => "PSM's n' x 2 in the crate's rule (reported with it)",
+            Fault::ReceiversUnbounded => {
+                "receivers left out: each focus body the whole view slice (reported with it)"
+            }
         }
     }
 
@@ -363,6 +372,12 @@ impl Fault {
     /// Whether the shader shades a cascade by its first map alone inside the blend band.
     pub fn shades_one_map(fault: Option<Fault>) -> bool {
         fault == Some(Fault::BlendIgnored)
+    }
+
+    /// Whether the frame is built with the scene's receivers (all but
+    /// [`Fault::ReceiversUnbounded`]).
+    pub fn keeps_receivers(fault: Option<Fault>) -> bool {
+        fault != Some(Fault::ReceiversUnbounded)
     }
 
     /// Whether the frame is given the casters.

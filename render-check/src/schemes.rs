@@ -92,6 +92,12 @@ impl Scheme {
     }
 }
 
+/// The built-in set-ups built so that every scheme's worst body point is on screen (the level
+/// camera: each map's error depends on the eye depth alone and is largest on the near plane,
+/// where the ground shows): there `frame_error_ratio_worst_visible` must be measured, and a
+/// null is a violation ([`crate::targets::violations`]), not a check that silently did not run.
+pub const WORST_POINT_ON_SCREEN: [&str; 2] = ["level_overhead", "level_side"];
+
 /// The built-in set-ups that do not run [`Scheme::Psm`]: `front_5`, the light from in front
 /// (γ = 175°). Lloyd 2006 §4.4 has PSM revert to the orthographic map with the light in front
 /// of or behind the viewer; the crate's `WarpRule::Psm` keeps n′ = n at every direction, and at
@@ -445,7 +451,11 @@ pub fn build(
     .map_err(e)?;
     let light = Fault::frame_light(fault, view.light_world);
     let input = FrameInput::new(camera, light, res, view.image_height)
-        .receivers(Bound::Boxes(&receivers))
+        .receivers(if Fault::keeps_receivers(fault) {
+            Bound::Boxes(&receivers)
+        } else {
+            Bound::Unbounded
+        })
         .casters(if Fault::keeps_casters(fault) {
             Bound::Boxes(&boxes)
         } else {

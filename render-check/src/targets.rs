@@ -264,12 +264,21 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
             LENS_FRAME_REACH,
         );
     }
-    if let Some(r) = m.frame_error_ratio_worst_visible {
-        at_least(
+    match m.frame_error_ratio_worst_visible {
+        Some(r) => at_least(
             "frame_error_ratio_worst_visible (rendered over reported where the worst point shows)",
             r,
             FRAME_REACH,
-        );
+        ),
+        // A set-up built to show every scheme's worst point, whose worst point is not on
+        // screen: the frame's body or its reported maximum moved off the visible ground.
+        None if crate::schemes::WORST_POINT_ON_SCREEN.contains(&case.setup.as_str()) => at_least(
+            "frame_error_ratio_worst_visible (null, not measured where the set-up puts every \
+                 scheme's worst body point on screen)",
+            f64::NAN,
+            FRAME_REACH,
+        ),
+        None => {}
     }
     if let Some(n) = case.shimmer_points {
         at_least("shimmer_points", n as f64, MIN_SHIMMER_POINTS as f64);

@@ -333,3 +333,18 @@ fn cascade_off_by_one_under_the_overhead_light_is_caught() {
         "{v:?}"
     );
 }
+
+/// The receivers left out of the frame: every focus body grows to its whole view slice, and the
+/// frame's reported numbers follow it, so the rendered error still agrees with the report; the
+/// level set-up, built so that every scheme's worst body point is on screen, finds that point
+/// off the visible ground, and a two-sided check that did not run is a violation, not a pass.
+#[test]
+fn receivers_left_out_lose_the_worst_point_of_the_level_set_up() {
+    caught(
+        "level_side",
+        Scheme::Lispsm,
+        Fault::ReceiversUnbounded,
+        "frame_error_ratio_worst_visible (null, not measured where the set-up puts every \
+         scheme's worst body point on screen)",
+    );
+}
