@@ -313,6 +313,8 @@ fn lloyd2006_fig5() {
             ("1", N::Given("n")),
             ("20", N::Given("f")),
             ("2", N::Given("the formula's 2 tan θ")),
+            // LiSPSM's n′ = n + √(fn) at n = 1, f = 20.
+            ("5.47", N::Value(1.0 + 20f64.sqrt())),
         ],
     );
 }
@@ -330,8 +332,16 @@ fn lloyd2006_fig6() {
             ("1", N::Given("n")),
             ("100", N::Given("f")),
             ("30", N::Given("θ")),
+            ("−1", N::Given("η = −1, where all three are largest")),
+            // The maxima at η = −1 (n′ = ∞, Eq 9, 10, 12): M_x = f/n, M_z = (f − n)/(2 tan θ),
+            // S̄ their product.
+            ("100", N::Value(100.0)),
+            ("85.74", N::Value(99.0 / (2.0 * 30f64.to_radians().tan()))),
+            (
+                "8574",
+                N::Value(100.0 * 99.0 / (2.0 * 30f64.to_radians().tan())),
+            ),
             ("0", N::Given("η ≤ 0")),
-            ("0", N::Given("η ≥ 0")),
             ("4.3", N::Given("§4.3")),
             ("0", N::Given("η = 0")),
         ],
@@ -389,9 +399,11 @@ fn lloyd2006_fig12() {
             ("30", N::Given("θ")),
             ("4", N::Given("4k + 1 maps")),
             ("1", N::Given("4k + 1 maps")),
+            // Seen from behind, a face's triangle has base 2f tan θ and height f tan θ: its
+            // sub-frustum's tan θ_eff = (f tan θ)/(f tan θ) = 1, 45°, whatever θ.
+            ("1", N::Value(1.0)),
+            ("45", N::Value(1f64.atan().to_degrees())),
             ("21", N::Given("Eq 21")),
-            ("45", N::Given("each face at 45°")),
-            ("1", N::Given("ZP with one map")),
             // Unwarped, one map overhead: M_x M_z = (f/n)(f/n − 1)/(2 tan θ).
             (
                 "8.65×10^{5}",
@@ -440,10 +452,12 @@ fn lloyd2006_fig13() {
             ("1", N::Given("j = 4k + 1")),
             ("17", N::Value(4.0 * 4.0 + 1.0)),
             ("1050", N::Value(a.exp())),
-            ("12", N::Given("Fig. 12")),
-            ("1000", N::Given("Fig. 12's f/n")),
             ("33", N::Value(first_above)),
             ("10^{6}", N::Given("the axis's top")),
+            ("20", N::Given("Eq 20")),
+            ("21", N::Given("Eq 21")),
+            // tan θ_eff of the face sub-frusta, as in lloyd2006_fig12 (by hand: 1).
+            ("1", N::Value(1.0)),
         ],
     );
 }
@@ -480,9 +494,9 @@ fn barroso_fig5() {
             ("10", N::Value(ss[2])),
             ("31.62", N::Value(ss[3])),
             ("100", N::Value(ss[4])),
-            ("19", N::Given("Eq 19")),
             ("45", N::Given("the light's angle γ to the view direction")),
             ("2", N::Given("Eq 19's α, the scheme's ADAPTIVE_RATIO")),
+            ("19", N::Given("Eq 19")),
             ("1", N::Value(ad[0])),
             ("6.041", N::Value(ad[1])),
             ("16.13", N::Value(ad[2])),
@@ -504,7 +518,7 @@ fn barroso_fig7() {
             ("18", N::Given("to Eq 18")),
             ("1", N::Given("n")),
             ("100", N::Given("f")),
-            ("6", N::Given("φ_y = π/6")),
+            ("30", N::Given("φ_y = 30°")),
             ("13", N::Given("Eq 13")),
             ("20", N::Given("(b) from γ = 20°")),
             ("45", N::Given("to 45°")),
