@@ -668,7 +668,7 @@ fn martin_tan_fig3() {
             ("30", N::Given("θ")),
             ("80", N::Given("the light's elevation")),
             ("70", N::Given("the light's azimuth")),
-            ("3", N::Given("the boxes drawn 3 pt outside their outlines")),
+            ("4", N::Given("the boxes drawn 4 pt outside their outlines")),
             ("5", N::Given("the paper's §5")),
             ("67.0", N::Measured(counted)),
             ("53.2", N::Measured(counted)),

@@ -218,7 +218,9 @@ fn martin_tan_fig3_legend_is_under_all_panels() {
             .filter(|t| t.content == "map s" || t.content == "−x in light space")
             .map(|t| t.bbox[3])
             .collect();
-        assert_eq!(names.len(), 3, "{column:?}");
+        // One column's (b) leaves its x axis name to (c) under it: two names there.
+        let want = if column == Column::Double { 3 } else { 2 };
+        assert_eq!(names.len(), want, "{column:?}");
         let lowest = names.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         for e in entries {
             let found: Vec<&read::Text> = all.iter().filter(|t| t.content == e).collect();

@@ -205,7 +205,7 @@ const AXIS_BOX: RGBColor = SHARED;
 /// How far outside their true outlines the two boxes are drawn, in units: where a box's side
 /// lies on T's (both tight on C), the two 2-unit lines run side by side, 1 unit apart,
 /// instead of one over the other (review: a blue and pink stripe read as a third style).
-const OUTSET: f64 = 3.0;
+const OUTSET: f64 = 4.0;
 
 /// The rectangle `r` (corners in order) grown by `d` on every side.
 fn outset(r: &[DVec2; 4], d: f64) -> [DVec2; 4] {
@@ -368,7 +368,7 @@ impl Figure for Fig3 {
         let (upper, strip) = body.split_vertically(bh.saturating_sub(legend_h(rows)));
         let style = if single {
             ChartStyle {
-                y_label_area: 40,
+                y_label_area: 46,
                 x_label_area: 34,
                 desc_size: 13,
                 margin: 5,
@@ -379,7 +379,7 @@ impl Figure for Fig3 {
         };
         // (a)'s y labels reach "150" and "−x in light space" is long: a wider label area.
         let a_style = ChartStyle {
-            y_label_area: style.y_label_area + if single { 6 } else { 0 },
+            y_label_area: style.y_label_area,
             ..style
         };
         let (uw, uh) = upper.dim_in_pixel();
