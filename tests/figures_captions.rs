@@ -719,7 +719,10 @@ fn zhang_fig3() {
             ("60", N::Given("the second row's θ")),
             ("30", N::Given("the third row's θ")),
             ("2", N::Given("the factor 2 of E_p = 2 m_z, E_q = 2 m_x")),
-            ("1", N::Given("Zhang's screen and map span [−1, 1] (read unsigned after the bracket)")),
+            (
+                "1",
+                N::Given("Zhang's screen and map span [−1, 1] (read unsigned after the bracket)"),
+            ),
             ("1", N::Given("Zhang's screen and map span [−1, 1]")),
             ("11.00", N::Value(lambda(90.0))),
             ("12.70", N::Value(lambda(60.0))),

@@ -74,7 +74,8 @@ fn images(svg: &str) -> Vec<(f64, f64, f64, f64)> {
 }
 
 /// zhang-fig3 in one column: the three blocks (a), (b), (c) stacked, their titles centred on
-/// one vertical and each at least 150 units under the one before (three rows of panels); in
+/// one vertical and each at least 100 units under the one before (three rows of panels, within
+/// the 525-unit page of tests/figures_g_single_height.rs); in
 /// two columns they stand in one row, each at least 150 units right of the one before.
 #[test]
 fn zhang_fig3_stacks_its_blocks_in_one_column() {
@@ -86,7 +87,7 @@ fn zhang_fig3_stacks_its_blocks_in_one_column() {
         .collect();
     for w in t.windows(2) {
         assert!((w[0].0 - w[1].0).abs() <= 1.0, "{t:?}");
-        assert!(w[1].1 - w[0].1 >= 150.0, "{t:?}");
+        assert!(w[1].1 - w[0].1 >= 100.0, "{t:?}");
     }
     let d = svg("zhang-fig3", Column::Double);
     let t: Vec<(f64, f64)> = ["(a)", "(b)", "(c)"]
@@ -127,14 +128,15 @@ fn martin_tan_fig6_has_its_profile_under_the_hemisphere_in_one_column() {
     let s = svg("martin-tan-fig6", Column::Single);
     assert_eq!(width(&s), 300.0);
     let (a, b) = (text_at(&s, "(a)"), text_at(&s, "(b)"));
-    assert!(b.1 - a.1 >= 200.0, "{a:?} {b:?}");
+    assert!(b.1 - a.1 >= 150.0, "{a:?} {b:?}");
 }
 
-/// A hemisphere's colour bar is about as tall as its disk, in both layouts: of the embedded
-/// rasters, the disks are square and the bars narrow; each bar starts within 2 units of the
-/// top of the disk beside it and is 85 % to 100 % of its height (its chart keeps 30 units at
-/// each end for the end labels, which the panel's bottom may cut). For lloyd2006-fig7 each
-/// bar is compared with the disk of its own row.
+/// A hemisphere's colour bar is about the size of its disk, in both layouts (it spanned the
+/// whole panel, taller than the disk, figure review of martin-tan-fig6): of the embedded rasters,
+/// the disks are square and the bars narrow. An upright bar starts within 2 units of the top of
+/// the disk nearest it and is 75 % to 100 % of its height (its chart keeps room at each end for
+/// the end labels); a bar lying across (martin-tan-fig6 in two columns, under its disk;
+/// lloyd2006-fig7 in one column, in the sixth cell) is 85 % to 150 % of a disk's diameter long.
 #[test]
 fn hemisphere_colour_bars_are_as_tall_as_their_disks() {
     for name in ["martin-tan-fig6", "lloyd2006-fig7"] {
@@ -142,9 +144,13 @@ fn hemisphere_colour_bars_are_as_tall_as_their_disks() {
             let s = svg(name, column);
             let all = images(&s);
             let disks: Vec<_> = all.iter().filter(|i| (i.2 - i.3).abs() <= 2.0).collect();
-            let bars: Vec<_> = all.iter().filter(|i| i.3 > 3.0 * i.2).collect();
-            assert!(!disks.is_empty() && !bars.is_empty(), "{name} {column:?}");
-            for bar in &bars {
+            let upright: Vec<_> = all.iter().filter(|i| i.3 > 3.0 * i.2).collect();
+            let across: Vec<_> = all.iter().filter(|i| i.2 > 3.0 * i.3).collect();
+            assert!(
+                !disks.is_empty() && upright.len() + across.len() >= 1,
+                "{name} {column:?}: {all:?}"
+            );
+            for bar in &upright {
                 // The disk whose top is nearest the bar's.
                 let disk = disks
                     .iter()
@@ -156,8 +162,16 @@ fn hemisphere_colour_bars_are_as_tall_as_their_disks() {
                 );
                 let ratio = bar.3 / disk.3;
                 assert!(
-                    (0.85..=1.0).contains(&ratio),
+                    (0.75..=1.0).contains(&ratio),
                     "{name} {column:?}: bar {bar:?}, disk {disk:?}"
+                );
+            }
+            for bar in &across {
+                let ratio = bar.2 / disks[0].2;
+                assert!(
+                    (0.85..=1.5).contains(&ratio),
+                    "{name} {column:?}: bar {bar:?}, disk {:?}",
+                    disks[0]
                 );
             }
         }
