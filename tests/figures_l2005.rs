@@ -251,7 +251,7 @@ fn fig8_fills_use_no_scheme_colour() {
 #[test]
 fn fig8_decodes_its_tags_and_the_error_after_in_the_figure() {
     for (form, opts) in [
-        forms()[1].clone(),
+        forms()[1],
         (
             "single bare",
             Options {

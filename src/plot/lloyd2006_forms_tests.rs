@@ -28,24 +28,8 @@ fn svg_of(name: &str, column: Column, bare: bool) -> String {
 
 /// The centre of every `<polygon>` filled in `fill` (a marker), in SVG units.
 fn markers(svg: &str, fill: &str) -> Vec<(f64, f64)> {
-    svg.lines()
-        .filter(|l| l.starts_with("<polygon") && l.contains(&format!("fill=\"{fill}\"")))
-        .filter_map(|l| {
-            let at = l.find(" points=\"")? + 9;
-            let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
-                .split(' ')
-                .filter_map(|p| {
-                    let (x, y) = p.split_once(',')?;
-                    Some((x.parse().ok()?, y.parse().ok()?))
-                })
-                .collect();
-            let n = pts.len() as f64;
-            Some((
-                pts.iter().map(|p| p.0).sum::<f64>() / n,
-                pts.iter().map(|p| p.1).sum::<f64>() / n,
-            ))
-        })
-        .collect()
+    let fill = format!("fill=\"{fill}\"");
+    super::tests::polygon_centres_where(svg, |l| l.contains(&fill))
 }
 
 /// `c` as an SVG writes it.

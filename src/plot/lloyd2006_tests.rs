@@ -446,8 +446,13 @@ fn polylines(svg: &str, stroke: &str) -> Vec<Vec<(f64, f64)>> {
 
 /// The centres of every `<polygon>` (a marker) of an SVG.
 fn polygon_centres(svg: &str) -> Vec<(f64, f64)> {
+    polygon_centres_where(svg, |_| true)
+}
+
+/// The centres of the `<polygon>`s (markers) of an SVG whose line passes `keep`.
+pub(super) fn polygon_centres_where(svg: &str, keep: impl Fn(&str) -> bool) -> Vec<(f64, f64)> {
     svg.lines()
-        .filter(|l| l.starts_with("<polygon"))
+        .filter(|l| l.starts_with("<polygon") && keep(l))
         .filter_map(|l| {
             let at = l.find(" points=\"")? + 9;
             let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]

@@ -385,7 +385,7 @@ impl Fig3 {
         let ph = (f64::from(pw) * PANEL_RATIO).round() as u32;
         let half = 0.5 * 110.0 * f64::from(ph) / f64::from(pw);
         let style = TextStyle::from((FONT, TEXT).into_font());
-        for q in 0..self.scales.len() {
+        for (q, (name, scale)) in BLOCK_NAMES.iter().zip(&self.scales).enumerate() {
             let b = Block {
                 x: ROW_LABEL + q as u32 * (3 * pw + 2 * GAP + BLOCK_GAP),
                 top: BLOCK_TITLE + HEADINGS,
@@ -395,7 +395,7 @@ impl Fig3 {
                 row_gap: ROW_GAP,
             };
             body.draw(&Text::new(
-                BLOCK_NAMES[q],
+                *name,
                 ((b.x + b.width() / 2) as i32, 2),
                 style.pos(Pos::new(HPos::Center, VPos::Top)),
             ))?;
@@ -419,7 +419,7 @@ impl Fig3 {
             )?;
             let bar_top = b.top + b.height() + X_LABELS + 6;
             let bar = body.clone().shrink((b.x, bar_top), (b.width(), BAR));
-            draw_colour_bar_across(&bar, &self.scales[q])?;
+            draw_colour_bar_across(&bar, scale)?;
         }
         Ok(())
     }
@@ -439,7 +439,7 @@ impl Fig3 {
         let half = 0.5 * 110.0 * PANEL_RATIO;
         let style = TextStyle::from((FONT, TEXT).into_font());
         let pitch = BLOCK_TITLE_1 + 3 * ph + 2 * ROW_GAP_1 + BLOCK_GAP_1;
-        for q in 0..self.scales.len() {
+        for (q, (name, scale)) in BLOCK_NAMES.iter().zip(&self.scales).enumerate() {
             let b = Block {
                 x: ROW_LABEL_1,
                 top: HEADINGS + q as u32 * pitch + BLOCK_TITLE_1,
@@ -460,7 +460,7 @@ impl Fig3 {
                 }
             }
             body.draw(&Text::new(
-                BLOCK_NAMES[q],
+                *name,
                 (
                     (b.x + b.width() / 2) as i32,
                     (b.top - BLOCK_TITLE_1 + 2) as i32,
@@ -483,7 +483,7 @@ impl Fig3 {
                 (w - VBAR, b.top.saturating_sub(30)),
                 (VBAR, b.height() + 60),
             );
-            draw_colour_bar(&bar, &self.scales[q])?;
+            draw_colour_bar(&bar, scale)?;
         }
         Ok(())
     }

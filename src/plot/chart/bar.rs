@@ -96,7 +96,7 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
     let ticks: Vec<(f64, String)> = all
         .into_iter()
         .enumerate()
-        .filter(|(i, _)| !crowded || (n - 1 - i) % 2 == 0)
+        .filter(|(i, _)| !crowded || (n - 1 - i).is_multiple_of(2))
         .map(|(_, t)| t)
         .collect();
     // The labels' side: tick, gap, the widest label, 6 units and the name (14 across,
@@ -198,7 +198,7 @@ pub(crate) fn draw_colour_bar_across<DB: DrawingBackend>(
     let shown: Vec<(f64, String)> = ticks
         .iter()
         .enumerate()
-        .filter(|(i, _)| (n - 1 - i) % stride == 0)
+        .filter(|(i, _)| (n - 1 - i).is_multiple_of(stride))
         .map(|(_, t)| t.clone())
         .collect();
     let xb: Vec<f64> = ticks.iter().map(|t| t.0).collect();
