@@ -162,7 +162,7 @@ pub struct FiguresArgs {
     #[arg(long, value_name = "DPI", allow_hyphen_values = true)]
     pub dpi: Option<f64>,
     /// Lay the figures out across a page's two columns (double, 7.2 in wide) or in one column
-    /// (single, 3.3 in, text at least 6 pt; every figure but lloyd2006-fig4 and lloyd2006-fig10).
+    /// (single, 3.3 in, text at least 6 pt, at most 420 pt tall; every figure has both).
     #[arg(long, value_enum, default_value_t = ColumnName::Double)]
     pub column: ColumnName,
 }
