@@ -1083,11 +1083,11 @@ fn lloyd2005_fig4_labels_its_curves_directly() {
     let svg = std::fs::read_to_string(dir.join("lloyd2005-fig4.svg")).unwrap();
     let all = texts(&svg);
     for label in [
-        "n = 1 (ξ = 1)",
-        "n = 1.613 (ξ = ½)",
-        "n = 4.162 (ξ = 0)",
-        "n = 17.325 (ξ = \u{2212}½)",
-        "n = ∞ (ξ = \u{2212}1)",
+        "n′ = 1 (ξ = 1, PSM)",
+        "n′ = 1.613 (ξ = ½)",
+        "n′ = 4.162 (ξ = 0, LiSPSM)",
+        "n′ = 17.325 (ξ = \u{2212}½)",
+        "n′ = ∞ (ξ = \u{2212}1, uniform)",
     ] {
         let (attrs, _) = all
             .iter()

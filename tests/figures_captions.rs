@@ -237,9 +237,9 @@ fn lloyd2005_eq7_ratio(alpha: f64, k: f64, xi: f64) -> f64 {
     m(k) / m(1.0)
 }
 
-/// lloyd2005-fig7: the gains at α = 100 from Eq 7, and the ξ = 0 bound as k → ∞: the caption's
-/// formula (α − 1)/(√α ln α), which must be the limit of Eq 7's gain (here at k = 10⁸; the
-/// inverse, √α ln α/(α − 1), is 0.465).
+/// lloyd2005-fig7: the gains at α = f/n = 100 from Eq 7, and the ξ = 0 bound as k → ∞: the
+/// caption's formula (f/n − 1)/(√(f/n) ln(f/n)), i.e. (α − 1)/(√α ln α), which must be the limit
+/// of Eq 7's gain (here at k = 10⁸; the inverse, √α ln α/(α − 1), is 0.465).
 #[test]
 fn lloyd2005_fig7() {
     let alpha = 100.0;
@@ -262,15 +262,15 @@ fn lloyd2005_fig7() {
                 "5",
                 N::Given("the report's \"nearly 5 times\" (its Fig. 9)"),
             ),
-            ("100", N::Given("the α of the report's Fig. 9")),
+            ("100", N::Given("the f/n (the report's α) of its Fig. 9")),
             ("9", N::Given("the report's Fig. 9")),
             ("1", N::Given("|ξ| = 1")),
             ("5.5", N::Value(gain(2.0, 1.0))),
             ("2", N::Given("k = 2")),
             ("0", N::Given("ξ = 0")),
             ("1.74", N::Value(gain(2.0, 0.0))),
-            ("1", N::Given("the 1 of the formula α − 1")),
-            ("2.15", N::Formula("(α − 1)/(√α ln α)", limit)),
+            ("1", N::Given("the 1 of the formula f/n − 1")),
+            ("2.15", N::Formula("(f/n − 1)/(√(f/n) ln(f/n))", limit)),
         ],
     );
 }
@@ -286,13 +286,13 @@ fn lloyd2005_fig4() {
             ("4", N::Given("its figure")),
             ("3", N::Given("Eq 3")),
             ("4", N::Given("Eq 4")),
-            ("10", N::Given("α, which the report does not print")),
+            ("10", N::Given("f/n (the report's α), which the report does not print")),
             ("1", N::Given("ξ = 1")),
             ("0", N::Given("ξ = 0")),
-            ("1", N::Given("n = 1 + √α")),
+            ("1", N::Given("n′ = 1 + √(f/n)")),
             ("−1", N::Given("ξ = −1 (½ and −½ are not digits)")),
             ("0", N::Given("g₀")),
-            ("1", N::Given("1/√α")),
+            ("1", N::Given("1/√(f/n)")),
             ("0.316", N::Value(1.0 / alpha.sqrt())),
             ("0", N::Given("ξ ≤ 0")),
             ("0", N::Given("ξ > 0")),
@@ -518,7 +518,7 @@ fn barroso_fig7() {
             ("18", N::Given("to Eq 18")),
             ("1", N::Given("n")),
             ("100", N::Given("f")),
-            ("30", N::Given("φ_y = 30°")),
+            ("30", N::Given("θ = 30° (the paper's φ_y)")),
             ("13", N::Given("Eq 13")),
             ("20", N::Given("(b) from γ = 20°")),
             ("45", N::Given("to 45°")),

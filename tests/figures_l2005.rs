@@ -44,8 +44,9 @@ fn words(svg: &str) -> String {
         .join(" | ")
 }
 
-/// The third review (bare: B): the dotted line at 1/√α was explained only in the caption. Each
-/// form names it in the figure itself: a text "g0 = 1/√α" (the 0 a subscript).
+/// The third review (bare: B): the dotted line at 1/√(f/n) was explained only in the caption.
+/// Each form names it in the figure itself: a text "g0 = 1/√(f/n)" (the 0 a subscript; the
+/// report's α is written f/n, as in the Lloyd 2006 figures, since the fourth review).
 #[test]
 fn fig4_names_its_g0_line_in_every_form() {
     for (form, opts) in forms() {
@@ -53,7 +54,7 @@ fn fig4_names_its_g0_line_in_every_form() {
         let all = all_texts(&svg);
         let g0: Vec<&Text> = all
             .iter()
-            .filter(|t| t.content.starts_with("g0 = 1/√α"))
+            .filter(|t| t.content.starts_with("g0 = 1/√(f/n)"))
             .collect();
         assert_eq!(g0.len(), 1, "{form}: {}", words(&svg));
         assert!(

@@ -1,7 +1,7 @@
 //! Barroso & Celes 2007 Fig 7: the generalised LiSPSM parameter n′ against the angle γ between
-//! the light and view directions (n = 1, f = 100, φ_y = 30°), with both fall-offs r(γ), the
-//! branches of their Eq 13, LiSPSM's 1/sin γ rule and the crate's n′ that minimises M_z over the
-//! whole frustum (`WarpRule::MinimaxMz`, the frustum-wide version of Barroso's objective).
+//! the light and view directions (n = 1, f = 100, half field of view θ = 30°, the paper's φ_y,
+//! written θ as in the Lloyd figures), with both fall-offs r(γ), the branches of their Eq 13,
+//! LiSPSM's 1/sin γ rule and the crate's n′ that minimises M_z over the whole frustum (`WarpRule::MinimaxMz`, the frustum-wide version of Barroso's objective).
 
 use super::chart::{
     column, draw_line_chart_over, fmt_power, frame, legend_below, linspace, Axis, Charts,
@@ -37,8 +37,8 @@ const SINGLE_TITLE: &str = "Generalised LiSPSM n′ against γ";
 /// The key's labels in one column, short enough for two columns of entries under the 288-unit
 /// page (the two-column labels set one entry a row, six rows: 130 units).
 const SINGLE_LABELS: [&str; 6] = [
-    "Barroso (paper)",
-    "Zhang",
+    "Eq 18 (paper)",
+    "Eq 17 (Zhang's r)",
     "LiSPSM",
     "least M_{z}",
     "n′_{1}, Eq 13",
@@ -81,8 +81,8 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         if let Some(v) = finite(n_prime_for(&view, light_at(g), WarpRule::MinimaxMz)?) {
             minimax.push((d, v));
         }
-        // Eq 13's branches, each on its own domain (n′₁ for φ_y ≤ γ ≤ π/2, n′₂ for
-        // 0 < γ < φ_y) and where it is positive (the plot is logarithmic).
+        // Eq 13's branches, each on its own domain (n′₁ for θ ≤ γ ≤ π/2, n′₂ for
+        // 0 < γ < θ) and where it is positive (the plot is logarithmic).
         let (a, b) = (n_prime_1(&view, angle), n_prime_2(&view, angle)?);
         let phi = view.half_fov();
         n1.push((
@@ -110,11 +110,18 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         Axis::log10(n_axis, 1.0, 1e4),
     );
     // The paper's curve, bold.
-    let mut paper = Series::line("Barroso, Eq 18 (paper)", barroso, Look::Barroso.colour());
+    let mut paper = Series::line(
+        "Eq 18, Barroso's r(γ) (paper)",
+        barroso,
+        Look::Barroso.colour(),
+    );
     paper.width = 4;
     c.series.push(paper);
-    c.series
-        .push(Series::line("Zhang, Eq 17", zhang, Look::Zhang.colour()));
+    c.series.push(Series::line(
+        "Eq 17, Zhang's r(γ)",
+        zhang,
+        Look::Zhang.colour(),
+    ));
     c.series
         .push(Series::line("LiSPSM, 1/sin γ", lispsm, Look::Lispsm.colour()).dashed());
     // Dotted, not dashed: in greyscale its colour is LiSPSM's grey, and the two meet.
@@ -130,7 +137,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let mut s2 = Series::line("n′_{2}, Eq 13", n2, PALETTE[7]).dotted();
     s2.width = 3;
     c.series.push(s2);
-    // (a) has no angle lines: φ_y = 30° and γ_lim = 30.5° lie under a point apart there and
+    // (a) has no angle lines: θ = 30° and γ_lim = 30.5° lie under a point apart there and
     // read as one line; (b) draws them apart. Its key is (b)'s, below the panels.
     c.show_legend = false;
     // Three curves run off the top of (a) as γ → 0 (each n′ → ∞ there): the note says so, its
@@ -146,20 +153,20 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![format!(
             "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-             φ_y\u{a0}=\u{a0}{phi_deg:.0}°. Bold: the paper's curve (Barroso's fall-off r(γ)); for \
-             comparison Zhang's fall-off, LiSPSM's rule and the n′ of least M_z over the \
-             frustum; Eq 13's branches each on its domain. (b) enlarges γ from {}° to {}°: the \
-             least-M_z curve turns near γ\u{a0}=\u{a0}φ_y, where the frustum corner of largest \
+             θ\u{a0}=\u{a0}{phi_deg:.0}°. Bold: the paper's curve (its fall-off r(γ)); for \
+             comparison the fall-off the paper quotes from Zhang et al., LiSPSM's rule and \
+             the n′ of least M_z over the frustum; Eq 13's branches each on its domain. (b) enlarges γ from {}° to {}°: the \
+             least-M_z curve turns near γ\u{a0}=\u{a0}θ, where the frustum corner of largest \
              m_z changes.",
             WINDOW.0, WINDOW.1
         )],
         charts: vec![c, zoom],
     };
-    // One column keeps the sentence on the turn at φ_y, which (b)'s "φ_y →" marks.
+    // One column keeps the sentence on the turn at θ, which (b)'s "θ →" marks.
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         φ_y\u{a0}=\u{a0}{phi_deg:.0}°; bold, the paper's curve. (b) γ from {}° to {}°: \
-         least M_z turns near γ\u{a0}=\u{a0}φ_y, where the frustum corner of largest m_z \
+         θ\u{a0}=\u{a0}{phi_deg:.0}°; bold, the paper's curve. (b) γ from {}° to {}°: \
+         least M_z turns near γ\u{a0}=\u{a0}θ, where the frustum corner of largest m_z \
          changes.",
         WINDOW.0, WINDOW.1
     );
@@ -172,7 +179,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
 /// `c` magnified to γ in [`WINDOW`] and n′ in [`WINDOW_N`], where the curves separate (issue
 /// 25): the same series, each cut to the window (so that its markers fall inside it), the
 /// figure's one legend, and the two angles as vertical lines, labelled in the top half decade,
-/// where no curve runs: φ_y's label left of its line, γ_lim's right of its own.
+/// where no curve runs: θ's label left of its line, γ_lim's right of its own.
 fn magnified(c: &LineChart, gl_deg: f64, phi_deg: f64) -> LineChart {
     let (x, y) = (WINDOW, WINDOW_N);
     let mut z = LineChart::new(
@@ -203,7 +210,7 @@ fn magnified(c: &LineChart, gl_deg: f64, phi_deg: f64) -> LineChart {
         line.reference = true;
         z.series.push(line);
     }
-    // Both labels at the top band's middle (log scale: √(100 · 300) = 173); φ_y's is moved
+    // Both labels at the top band's middle (log scale: √(100 · 300) = 173); θ's is moved
     // to end at its line once the plot's width is known ([`Fig7::labels_placed`]).
     let top = (y.1 * 100.0f64).sqrt();
     z.notes = vec![
@@ -214,7 +221,7 @@ fn magnified(c: &LineChart, gl_deg: f64, phi_deg: f64) -> LineChart {
         },
         Note {
             at: (phi_deg, top),
-            text: format!("φ_y = {phi_deg:.0}° →"),
+            text: format!("θ = {phi_deg:.0}° →"),
             colour: grey,
         },
     ];
@@ -228,7 +235,7 @@ fn magnified(c: &LineChart, gl_deg: f64, phi_deg: f64) -> LineChart {
 const CHART_FRAME_W: f64 = 8.0 + 16.0 + 64.0;
 
 impl Fig7 {
-    /// The charts with (b)'s φ_y label ending 4 units left of its line, in cells `cell_w` units
+    /// The charts with (b)'s θ label ending 4 units left of its line, in cells `cell_w` units
     /// wide (its text's width measured by `measure`): the label's left end is all a note sets.
     fn labels_placed(&self, cell_w: u32, measure: impl Fn(&str) -> f64) -> Charts {
         let mut charts = self.charts.clone();
@@ -243,9 +250,9 @@ impl Fig7 {
                 (measure(&shown) + 4.0) / per_degree
             };
             // Where the value does not fit between the axis and the line, the name alone
-            // (the line stands on the axis's tick at φ_y = 30°).
+            // (the line stands on the axis's tick at θ = 30°).
             if note.at.0 - width(&note.text) < x_min + 0.02 * room {
-                note.text = "φ_y →".into();
+                note.text = "θ →".into();
             }
             note.at.0 -= width(&note.text);
         }
@@ -315,7 +322,7 @@ mod tests {
         assert!(s[0].points[0].0 > 0.0 && s[1].points[0].0 > 0.0);
     }
 
-    /// Eq 13's branches are drawn only on their domains: n′₁ for φ_y = 30° ≤ γ, n′₂ for γ < 30°
+    /// Eq 13's branches are drawn only on their domains: n′₁ for θ = 30° ≤ γ, n′₂ for γ < 30°
     /// and, being positive only above atan(b/(f + √(fn))) = atan(57.735/110) = 27.69° (by
     /// hand), only between 27.69° and 30°.
     #[test]
@@ -340,7 +347,7 @@ mod tests {
 
     /// The paper's curve (Barroso's fall-off, Eq 16 with Eq 18) is the bold one (issue 25), and
     /// each angle's label ends at its line with an arrow pointing at it, in (b) only: γ_lim's
-    /// starts just right of γ_lim = 30.5° with "←", φ_y's ends left of 30° with "→". (a) draws
+    /// starts just right of γ_lim = 30.5° with "←", θ's ends left of 30° with "→". (a) draws
     /// neither line (review: 0.5° apart they fused into one dash-dot line there).
     #[test]
     fn the_papers_curve_is_bold_and_labels_point_at_their_lines() {
@@ -357,28 +364,28 @@ mod tests {
         assert!(a.series.iter().all(|s| s.points.len() > 2));
         let gl = b.notes.iter().find(|n| n.text.contains("lim")).unwrap();
         assert!(gl.text.starts_with('←') && gl.at.0 > 30.5 && gl.at.0 < 32.0);
-        // φ_y's label is set to end 4 units left of its line once the cell's width is known:
+        // θ's label is set to end 4 units left of its line once the cell's width is known:
         // in a 254-unit cell (two columns; its plot 166 units for 25°, 6.64 a degree), with
-        // every character 7 units wide, "φy = 30° →" (10 shown) is 74 units, 11.1°, so it
-        // would start at 18.9° (left of the axis at 20°): the name alone, "φ_y →" (4 shown,
-        // 32 units: 4.8°), starts at 25.2°; in a 288-unit cell (one column, 8 a degree) the
-        // whole label, 9.25°, starts at 20.75°.
+        // every character 7 units wide, "θ = 30° →" (9 characters) is 67 units, 10.1°, so it
+        // would start at 19.9° (left of the axis at 20°): the name alone, "θ →" (3, 25 units:
+        // 3.8°), starts at 26.2°; in a 288-unit cell (one column, 8 a degree) the whole
+        // label, 8.375°, starts at 21.625°.
         let at = |cell: u32| {
             let placed = fig.labels_placed(cell, |t| 7.0 * t.chars().count() as f64);
             let n = placed.charts[1]
                 .notes
                 .iter()
-                .find(|n| n.text.contains("φ"))
+                .find(|n| n.text.contains("θ"))
                 .unwrap()
                 .clone();
             (n.text, n.at.0)
         };
         let (text, x) = at(254);
-        assert_eq!(text, "φ_y →");
-        assert!((x - (30.0 - 32.0 / (166.0 / 25.0))).abs() < 1e-9, "{x}");
+        assert_eq!(text, "θ →");
+        assert!((x - (30.0 - 25.0 / (166.0 / 25.0))).abs() < 1e-9, "{x}");
         let (text, x) = at(288);
-        assert_eq!(text, "φ_y = 30° →");
-        assert!((x - (30.0 - 74.0 / 8.0)).abs() < 1e-9, "{x}");
+        assert_eq!(text, "θ = 30° →");
+        assert!((x - (30.0 - 67.0 / 8.0)).abs() < 1e-9, "{x}");
         let verticals: Vec<f64> = b
             .series
             .iter()
@@ -386,7 +393,7 @@ mod tests {
             .map(|s| s.points[0].0)
             .collect();
         assert_eq!(verticals.len(), 2, "{verticals:?}");
-        // γ_lim (Eq 15, `analytic::tilted`'s value, printed 30.5°) and φ_y = 30°.
+        // γ_lim (Eq 15, `analytic::tilted`'s value, printed 30.5°) and θ = 30°.
         let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6).unwrap();
         let gl = gamma_lim(&view).to_degrees();
         assert!((gl - 30.5).abs() < 0.05 + 1e-9, "{gl}");
@@ -413,7 +420,7 @@ mod tests {
             .filter(|s| s.points.iter().any(|p| p.1 > 1e4))
             .map(|s| s.label.as_deref().unwrap())
             .collect();
-        assert_eq!(over, ["Barroso, Eq 18 (paper)", "least M_{z}"]);
+        assert_eq!(over, ["Eq 18, Barroso's r(γ) (paper)", "least M_{z}"]);
         assert!(note.at.1 > 1e3 && note.at.1 < 1e4);
         for s in &a.series {
             for p in s
@@ -429,15 +436,18 @@ mod tests {
         assert!((lispsm[0].1 - 11.0 / 0.25f64.to_radians().sin()).abs() < 1e-6);
     }
 
-    /// Degrees everywhere (figure review 3, X2): both captions give φ_y as "30°", none "π/6".
+    /// Degrees everywhere (figure review 3, X2): both captions give the half field of view θ
+    /// (the paper's φ_y, written θ as in the Lloyd figures: the fourth review) as "30°", none
+    /// "π/6".
     #[test]
     fn captions_give_phi_in_degrees() {
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
         for c in [&fig.charts.caption[0], &fig.single_caption] {
-            assert!(c.contains("φ_y\u{a0}=\u{a0}30°"), "{c}");
+            assert!(c.contains("θ\u{a0}=\u{a0}30°"), "{c}");
+            assert!(!c.contains('φ'), "{c}");
             assert!(!c.contains("π"), "{c}");
         }
-        // One column keeps the sentence on the turn at φ_y that (b)'s marker points at.
+        // One column keeps the sentence on the turn at θ that (b)'s marker points at.
         assert!(fig.single_caption.contains("turns near γ"));
     }
 
@@ -461,6 +471,47 @@ mod tests {
             .as_deref()
             .unwrap()
             .contains("= Eq 18 above γ_{lim}"));
+    }
+
+    /// The fall-offs' key entries name the equations by this paper's numbers (the fourth
+    /// review: "Zhang, Eq 17" read as Zhang's own Eq 17, where Eq 17 is Barroso and Celes'
+    /// equation quoting Zhang et al.'s function): each entry starts with its equation, then
+    /// whose r(γ) it is, in both forms; and the curves are those equations. Below γ_lim both
+    /// are n′₁(γ_lim)/r(γ) (Eq 16), so their ratio is the fall-offs' inverse ratio, by hand
+    /// from Eq 17, r = sin(u π/2), and Eq 18, r = (1 + sin((u − 1) π/2))², u = γ/γ_lim: at
+    /// γ = 15°, Zhang's n′ over Barroso's is r₁₈/r₁₇.
+    #[test]
+    fn fall_offs_are_named_by_the_papers_equations() {
+        let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
+        let a = &fig.charts.charts[0];
+        let label = |i: usize| a.series[i].label.clone().unwrap();
+        assert!(label(0).starts_with("Eq 18, Barroso's"), "{}", label(0));
+        assert!(label(1).starts_with("Eq 17, Zhang's"), "{}", label(1));
+        assert!(SINGLE_LABELS[0].starts_with("Eq 18"));
+        assert!(SINGLE_LABELS[1].starts_with("Eq 17 (Zhang's"));
+        for s in a.series.iter().chain(&fig.charts.charts[1].series) {
+            let l = s.label.as_deref().unwrap_or("");
+            assert!(!l.contains("Zhang, Eq"), "{l}");
+        }
+        let at = |i: usize| {
+            a.series[i]
+                .points
+                .iter()
+                .find(|p| (p.0 - 15.0).abs() < 1e-9)
+                .unwrap()
+                .1
+        };
+        let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6).unwrap();
+        let u = 15f64.to_radians() / gamma_lim(&view);
+        let half_pi = std::f64::consts::FRAC_PI_2;
+        let r17 = (u * half_pi).sin();
+        let r18 = (1.0 + ((u - 1.0) * half_pi).sin()).powi(2);
+        let (zhang, barroso) = (at(1), at(0));
+        assert!(
+            (zhang / barroso - r18 / r17).abs() < 1e-9,
+            "{zhang} / {barroso} against {}",
+            r18 / r17
+        );
     }
 
     /// Issue 25: a second panel magnifies γ from 20° to 45°, where the curves separate: every

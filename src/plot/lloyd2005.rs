@@ -7,7 +7,8 @@ use plotters::coord::Shift;
 use plotters::prelude::{DrawingArea, DrawingBackend};
 use plotters::prelude::{RGBColor, SeriesLabelPosition};
 
-/// α of Fig 4 (the paper does not print it).
+/// The depth ratio f/n of Fig 4 (the report's α, which it does not print; written f/n as in
+/// the Lloyd 2006 figures, since barroso-fig5's α is another ratio).
 pub(super) const FIG4_ALPHA: f64 = 10.0;
 
 /// ξ with the minus sign U+2212, halves as ½ (as the caption writes them).
@@ -30,18 +31,29 @@ const FIG4_LABEL_AT: usize = 193;
 /// planes).
 const FIG4_G0_AT: usize = 101;
 
-/// Fig 4's samples of z ∈ [1, α].
+/// Fig 4's samples of z ∈ [n, f] = [1, f/n].
 const FIG4_SAMPLES: usize = 200;
 
-/// Fig 4's chart. Each curve is labelled directly; across two columns "n = 1.613 (ξ = ½)",
-/// in one column (a plot about 220 units wide, where those labels, up to 121 units long, lay
-/// on their own and other curves) "n = 1.613", the caption giving the ξ.
+/// Fig 4's chart. Each curve is labelled directly with its warp parameter n′ (the report's n,
+/// written n′ as in the Lloyd 2006 figures, apart from the near plane n = 1): across two
+/// columns "n′ = 1.613 (ξ = ½)", the schemes named ("n′ = 1 (ξ = 1, PSM)"); in one column (a
+/// plot about 220 units wide, where those labels lay on their own and other curves)
+/// "n′ = 1.613", the caption giving the ξ and the schemes.
 fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
     let alpha = FIG4_ALPHA;
     let zs = linspace(1.0, alpha, FIG4_SAMPLES);
     let mut c = LineChart::new(
         "",
-        Axis::linear("depth z (near plane 1, far plane α)", 1.0, alpha),
+        // One column: the name alone (the page's width holds no more).
+        Axis::linear(
+            if single {
+                "depth z"
+            } else {
+                "depth z (near plane n = 1, far plane f)"
+            },
+            1.0,
+            alpha,
+        ),
         // A tick every fifth: 0, 0.2, …, 1 (quarters wrote 1, 0.75, 0.5, 0.25, 0: two formats).
         Axis::every("error distribution g(z)", 0.0, 1.05, 0.0, 0.2),
     );
@@ -49,14 +61,15 @@ fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
     for (i, xi) in FIG4_XI.into_iter().enumerate() {
         let n = n_from_xi(alpha, xi)?;
         let name = match n.as_finite() {
-            Some(v) if v == v.round() => format!("n = {v}"),
-            Some(v) => format!("n = {v:.3}"),
-            None => "n = ∞".to_string(),
+            Some(v) if v == v.round() => format!("n′ = {v}"),
+            Some(v) => format!("n′ = {v:.3}"),
+            None => "n′ = ∞".to_string(),
         };
-        let label = if single {
-            name
-        } else {
-            format!("{name} (ξ = {})", fmt_signed(xi))
+        let scheme = FIG4_SCHEMES[i];
+        let label = match (single, scheme) {
+            (true, _) => name,
+            (false, None) => format!("{name} (ξ = {})", fmt_signed(xi)),
+            (false, Some(s)) => format!("{name} (ξ = {}, {s})", fmt_signed(xi)),
         };
         let pts = zs
             .iter()
@@ -75,7 +88,7 @@ fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
     // this one above the line by the far plane.
     let g0 = g_min(alpha)?;
     let mut s = Series::line(
-        "g_0 = 1/√α",
+        "g_0 = 1/√(f/n)",
         zs.iter().map(|&z| (z, g0)).collect(),
         RGBColor(90, 90, 90),
     )
@@ -92,23 +105,26 @@ fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
 /// Fig 4's ξ: PSM, between, LiSPSM, between, the uniform map.
 const FIG4_XI: [f64; 5] = [1.0, 0.5, 0.0, -0.5, -1.0];
 
-/// Fig 4: the error distribution g(z) over z ∈ [1, α] for n chosen by ξ = 1, ½, 0, −½, −1.
+/// The schemes Fig 4's ξ give, as its labels name them.
+const FIG4_SCHEMES: [Option<&str>; 5] = [Some("PSM"), None, Some("LiSPSM"), None, Some("uniform")];
+
+/// Fig 4: the error distribution g(z) over z ∈ [1, f/n] for n′ chosen by ξ = 1, ½, 0, −½, −1.
 pub(super) fn fig4() -> Result<Tall, Fail> {
     let alpha = FIG4_ALPHA;
     let c = fig4_chart(false)?;
     let g0 = g_min(alpha)?;
     let head = format!(
-        "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), α\u{a0}=\u{a0}{alpha}: g for the n of \
-         ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM, n\u{a0}=\u{a0}1\u{a0}+\u{a0}√α), −½ and \
-         −1 (the uniform map, n\u{a0}=\u{a0}∞). Dotted: the least maximum \
-         g_0\u{a0}=\u{a0}1/√α\u{a0}=\u{a0}{g0:.3}."
+        "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), f/n\u{a0}=\u{a0}{alpha}: g for the n′ of \
+         ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM, n′\u{a0}=\u{a0}1\u{a0}+\u{a0}√(f/n)), −½ \
+         and −1 (the uniform map, n′\u{a0}=\u{a0}∞). Dotted: the least maximum \
+         g_0\u{a0}=\u{a0}1/√(f/n)\u{a0}=\u{a0}{g0:.3}."
     );
     let tail = "The maximum of g is on the near plane for ξ\u{a0}≤\u{a0}0 and on the far plane \
                 for ξ\u{a0}>\u{a0}0.";
     Ok(Tall {
         charts: Charts {
             size: (520, 500),
-            title: "Error distribution g for several n".into(),
+            title: "Error distribution g for several n′".into(),
             caption: vec![format!("{head} {tail}")],
             charts: vec![c],
         },
@@ -116,7 +132,7 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
         // One column: the same direct labels; the caption keeps only what the figure cannot
         // show.
         single_caption: vec![format!(
-            "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), α\u{a0}=\u{a0}{alpha}: g for the n of \
+            "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), f/n\u{a0}=\u{a0}{alpha}: g for the n′ of \
              ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM), −½ and −1 (uniform), top to bottom at \
              the far plane. Dotted: the least maximum g_0\u{a0}=\u{a0}{g0:.3}."
         )],
@@ -177,7 +193,7 @@ impl Figure for Tall {
 }
 
 /// Fig 7: the maximum error with k face subdivisions (Eq 7), divided by its value at k = 1, for
-/// several α; ξ = 0 (solid) and |ξ| = 1 (dashed), on a logarithmic axis.
+/// several depth ratios f/n (the report's α); ξ = 0 and |ξ| = 1, on a logarithmic axis.
 pub(super) fn fig7() -> Result<Tall, Fail> {
     let ks: Vec<usize> = (1..=10).collect();
     let theta = 30f64.to_radians();
@@ -223,7 +239,7 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
             // their markers) are no scheme's.
             c.series.push(
                 Series::line(
-                    format!("α = {}", fmt_times_ten(alpha)),
+                    format!("f/n = {}", fmt_times_ten(alpha)),
                     pts,
                     sweep(i, alphas.len()),
                 )
@@ -248,15 +264,15 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
                 "Lloyd et al. 2005, Fig. 7 (Eq 7): the maximum error with k self-similar face \
                  subdivisions over its value at k\u{a0}=\u{a0}1, (a) for ξ\u{a0}=\u{a0}0 and \
                  (b) for |ξ|\u{a0}=\u{a0}1. The report's \"nearly 5 times\" at \
-                 α\u{a0}=\u{a0}{alpha} (its Fig. 9) needs |ξ|\u{a0}=\u{a0}1: \
+                 f/n\u{a0}=\u{a0}{alpha} (its Fig. 9) needs |ξ|\u{a0}=\u{a0}1: \
                  {g1_2:.1}× at k\u{a0}=\u{a0}2; ξ\u{a0}=\u{a0}0 gives {g0_2:.2}×, \
-                 and at most (α\u{a0}−\u{a0}1)/(√α\u{a0}ln\u{a0}α)\u{a0}=\u{a0}{g0_inf:.2}×."
+                 and at most (f/n\u{a0}−\u{a0}1)/(√(f/n)\u{a0}ln(f/n))\u{a0}=\u{a0}{g0_inf:.2}×."
             )],
             charts,
         },
         single_height: FIG7_SINGLE_HEIGHT,
         single_caption: vec![format!(
-            "Lloyd et al. 2005, Fig. 7 (Eq 7). At α\u{a0}=\u{a0}{alpha}, k\u{a0}=\u{a0}2 gains {g1_2:.1}× with \
+            "Lloyd et al. 2005, Fig. 7 (Eq 7). At f/n\u{a0}=\u{a0}{alpha}, k\u{a0}=\u{a0}2 gains {g1_2:.1}× with \
              |ξ|\u{a0}=\u{a0}1 (the report's \"nearly 5 times\"), {g0_2:.2}× with \
              ξ\u{a0}=\u{a0}0."
         )],
@@ -382,7 +398,7 @@ mod tests {
             // Each label: its text's right end and its box (the white rect just before it).
             let mut labels = Vec::new();
             for (i, l) in lines.iter().enumerate() {
-                if l.starts_with("<text") && visible(l).starts_with("α =") {
+                if l.starts_with("<text") && visible(l).starts_with("f/n =") {
                     assert!(l.contains("text-anchor=\"end\""), "{l}");
                     let r = lines[i - 1];
                     assert!(r.starts_with("<rect"), "{r}");
@@ -427,7 +443,7 @@ mod tests {
             // bottom, are α = 10, 100, 1000, 10⁴ (Eq 7's ratio falls with α), the panels
             // side by side in two columns and stacked in one: so a line is the (rank mod 4)-th
             // α among the ends at its x, sorted by height.
-            let names = ["α = 10", "α = 100", "α = 1000", "α = 104"];
+            let names = ["f/n = 10", "f/n = 100", "f/n = 1000", "f/n = 104"];
             let mut taken = Vec::new();
             for (t, x, b, _) in &labels {
                 let centre = 0.5 * (b.1 + b.3);
@@ -474,7 +490,7 @@ mod tests {
             .iter()
             .filter_map(|s| s.label.as_deref())
             .collect();
-        assert!(labels.contains(&"n = 1 (ξ = 1)"), "{labels:?}");
+        assert!(labels.contains(&"n′ = 1 (ξ = 1, PSM)"), "{labels:?}");
     }
 
     /// Fig 4's y axis is labelled every fifth, 0, 0.2, …, 1 (figure review 2: quarters wrote
@@ -530,7 +546,7 @@ mod tests {
             .fold(f64::NEG_INFINITY, f64::max);
         let names: Vec<&&str> = lines
             .iter()
-            .filter(|l| visible(l).starts_with("n = "))
+            .filter(|l| visible(l).starts_with("n′ = "))
             .collect();
         assert_eq!(names.len(), 5, "{names:?}");
         for l in &names {
@@ -540,7 +556,7 @@ mod tests {
         assert!(
             lines
                 .iter()
-                .any(|l| visible(l).replace('_', "").starts_with("g0 = 1/√α")),
+                .any(|l| visible(l).replace('_', "").starts_with("g0 = 1/√(f/n)")),
             "no label on the g₀ line"
         );
         for (name, f) in [

@@ -30,13 +30,12 @@ pub(super) fn fig5() -> Result<Keyed, Fail> {
     let lispsm = n_prime_lispsm(n, f)?;
     let (cx, cz) = fig5_panels(n, f, Column::Double)?;
     let double = Charts {
-        size: (520, 540),
+        size: (520, 570),
         title: "Error distribution along the view frustum, light overhead".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), {}, {}: the terms that vary with z, m_x \
-             over f and m_z over {}, as the paper plots them; the labels in (b) name the \
-             curves of both panels. m_x is largest at {}; m_z at {} for {} (LiSPSM's) \
-             and at {} beyond.",
+             over f and m_z over {}, as the paper plots them. m_x is largest at {}; m_z at \
+             {} for {} (LiSPSM's) and at {} beyond.",
             nb(&format!("n = {n}")),
             nb(&format!("f = {f}")),
             nb("(f − n)/(2 tan θ)"),
@@ -63,12 +62,12 @@ pub(super) fn fig5() -> Result<Keyed, Fail> {
     };
     Ok(Keyed {
         single: Some(Box::new(Keyed::new(single, Some(1)))),
-        ..Keyed::new(double, None)
+        ..Keyed::new(double, Some(1))
     })
 }
 
 /// Fig 5's panels (a), m_x / f, and (b), m_z · 2 tan θ / (f − n), for the page `layout`: (b)
-/// labels every curve, (a) says that it has (b)'s curves.
+/// carries the key of both, which the page writes below them.
 fn fig5_panels(n: f64, f: f64, layout: Column) -> Result<(LineChart, LineChart), Fail> {
     let view = ViewFrustum::new(n, f, 45f64.to_radians())?;
     let res = Resolutions::default();
@@ -84,7 +83,7 @@ fn fig5_panels(n: f64, f: f64, layout: Column) -> Result<(LineChart, LineChart),
         (NPrime::finite(2.0)?, "n′ = 2".to_string(), sweep(0, 3)),
         (
             NPrime::finite(lispsm)?,
-            "LiSPSM".to_string(),
+            format!("n′ ≈ {lispsm:.2} (LiSPSM)"),
             Look::Lispsm.colour(),
         ),
         (NPrime::finite(20.0)?, "n′ = 20".to_string(), sweep(1, 3)),
@@ -108,16 +107,10 @@ fn fig5_panels(n: f64, f: f64, layout: Column) -> Result<(LineChart, LineChart),
         depth(),
         Axis::log10("m_z · 2 tan θ / (f − n) (log scale)", 0.04, 1.25),
     );
-    // (a) has no labels of its own: across two columns a note in its empty upper right says
-    // whose curves it has, so that the bare figure reads without the caption (one column has
-    // a key under both panels).
-    if layout == Column::Double {
-        cx.notes.push(Note {
-            at: FIG5_A_NOTE,
-            text: "curves as in (b)".into(),
-            colour: PALETTE[6],
-        });
-    } else {
+    // The key's six entries in two rows of three, in the curves' order at z = f, top to
+    // bottom (PSM, n′ = 2, LiSPSM; n′ = 20, n′ = 100, n′ = ∞).
+    cz.legend_columns = Some(3);
+    if layout == Column::Single {
         // The panels' titles give the quantities; the data's range (0.05 to 1) a little
         // padded.
         cx.y = Axis::log10("x error (log scale)", 0.045, 1.1);
@@ -145,58 +138,31 @@ fn fig5_panels(n: f64, f: f64, layout: Column) -> Result<(LineChart, LineChart),
             ..Series::line("", line(&x)?, *colour)
         });
         cx.series.push(marks(&x)?);
-        // The curves labelled once, in (b), near the far plane: the labels name (a)'s curves
-        // of the same colour and shape too. Where curves run close there (LiSPSM, n′ = 20 and
-        // n′ = 100, from the top), each label is a note in the curves' own order: LiSPSM's
-        // above its curve (n′ = 2 runs far above), n′ = 20's between LiSPSM and n′ = 20,
-        // n′ = 100's between n′ = 20 and n′ = 100.
-        let z_line = Series::line(label.clone(), line(&y)?, *colour).reference();
-        let note = FIG5_NOTES
-            .iter()
-            .position(|&(np, _, _)| np == i)
-            .map(|j| FIG5_NOTES[j]);
-        match (layout, note) {
-            // One column: too little height between the curves near z = f for labels in
-            // their order; a key below both panels names them (short names, the n′ of PSM
-            // and LiSPSM in the caption).
-            (Column::Single, _) => {
-                cz.series.push(Series {
-                    label: None,
-                    ..z_line
-                });
-                keys.push(Series {
-                    sample: true,
-                    ..Series::line(FIG5_SHORT[i], Vec::new(), *colour)
-                });
-            }
-            (Column::Double, Some((_, z, top))) => {
-                cz.notes.push(Note {
-                    at: (z, y(z)?.1 * top),
-                    text: label.clone(),
-                    colour: *colour,
-                });
-                cz.series.push(Series {
-                    label: None,
-                    ..z_line
-                });
-            }
-            (Column::Double, None) => cz.series.push(z_line.direct()),
-        }
+        // One key below both panels names the curves of both, each entry with its curve's
+        // line and marker: near z = f, LiSPSM, n′ = 20, n′ = 100 and n′ = ∞ run too close for
+        // labels by the curves (the fourth review: "n′ = 100" read as n′ = 20's). Across two
+        // columns the entries give PSM's and LiSPSM's n′; one column names them short (their
+        // n′ in the caption).
+        cz.series.push(Series {
+            label: None,
+            ..Series::line("", line(&y)?, *colour).reference()
+        });
+        let name = match layout {
+            Column::Double => label.as_str(),
+            Column::Single => FIG5_SHORT[i],
+        };
+        keys.push(Series {
+            sample: true,
+            ..Series::line(name, Vec::new(), *colour)
+        });
         cz.series.push(marks(&y)?);
     }
     cz.series.extend(keys);
     Ok((cx, cz))
 }
 
-/// Fig 5 (b)'s labels written as notes across two columns: the curve's index, the depth of
-/// the note's left end and its top as a multiple of the curve's value there.
-const FIG5_NOTES: [(usize, f64, f64); 3] = [(2, 14.0, 1.6), (3, 13.5, 1.45), (4, 16.0, 1.4)];
-
 /// Fig 5's curves as the one-column key names them.
 const FIG5_SHORT: [&str; 6] = ["PSM", "n′ = 2", "LiSPSM", "n′ = 20", "n′ = 100", "n′ = ∞"];
-
-/// Where (a)'s note "curves as in (b)" starts: (depth, m_x / f) of its top left.
-const FIG5_A_NOTE: (f64, f64) = (8.5, 1.1);
 
 /// The depths of Fig 5 where the first curve carries its marker (each next curve's half a
 /// unit further).
@@ -302,7 +268,7 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
 /// f/n (a sweep: [`sweep`]'s colours), each with the optimal logarithmic S̄ (App. C) it tends
 /// to, dashed in its curve's colour and given in the key.
 pub(super) fn fig10() -> Result<Keyed, Fail> {
-    let (a, b, optima) = fig10_panels(1e4)?;
+    let (a, b, optima) = fig10_panels()?;
     let ratios = FIG10_RATIOS;
     let (lo, hi) = (fmt_plain(ratios[0]), fmt_plain(ratios[ratios.len() - 1]));
     let double = Charts {
@@ -319,8 +285,9 @@ pub(super) fn fig10() -> Result<Keyed, Fail> {
         )],
         charts: vec![a, b],
     };
-    // One column: (a) alone, to 10³ (only f/n = 10⁴ at k = 1, 8.66×10³, lies above).
-    let (mut a, _, _) = fig10_panels(1e3)?;
+    // One column: (a) alone, on the same axes (the fourth review: cut at 10³, f/n = 10⁴'s
+    // curve left the plot at k = 1, 8.66×10³).
+    let (mut a, _, _) = fig10_panels()?;
     // One panel: no letter.
     a.title = "S̄; dashed: its optimum".into();
     let single = Charts {
@@ -342,16 +309,16 @@ pub(super) fn fig10() -> Result<Keyed, Fail> {
 /// The depth ratios f/n of Fig 10.
 const FIG10_RATIOS: [f64; 4] = [10.0, 100.0, 1000.0, 10_000.0];
 
-/// Fig 10's panels, (a) S̄ (its axis to `top`) and (b) S̄ over its optimum, and the optima as
-/// the key writes them.
-fn fig10_panels(top: f64) -> Result<(LineChart, LineChart, Vec<String>), Fail> {
+/// Fig 10's panels, (a) S̄ and (b) S̄ over its optimum, and the optima as the key writes them.
+fn fig10_panels() -> Result<(LineChart, LineChart, Vec<String>), Fail> {
     let theta = THETA_DEG.to_radians();
     // Both panels over the same k, with the same ticks.
     let k_axis = || Axis::integer("number of z-partitions k", 1.0, 16.0);
     let mut c = LineChart::new(
         "(a) S̄; dashed: its optimum",
         k_axis(),
-        Axis::log10("S̄ (texels per image pixel, log scale)", 1.0, top).in_powers(),
+        // To the data: 1.99 (f/n = 10's optimum) to 8.66×10³ (f/n = 10⁴ at k = 1).
+        Axis::log10("S̄ (texels per image pixel, log scale)", 1.0, 1e4).in_powers(),
     );
     let mut r = LineChart::new(
         "(b) S̄ over its optimum",
@@ -467,7 +434,7 @@ pub(super) fn fig12() -> Result<Keyed, Fail> {
     };
     let (mut a, _) = fig12_panels(&view, Column::Single)?;
     // One panel: no letter.
-    a.title = "overhead, behind (dashed)".into();
+    a.title = "light overhead and behind".into();
     let single = Charts {
         size: (Column::Single.width(), SINGLE_HEIGHT),
         title: "S̄ against the number of maps".into(),
@@ -491,8 +458,11 @@ pub(super) fn fig12() -> Result<Keyed, Fail> {
 /// by light (two columns, overhead and behind, across two page columns; one column, overhead
 /// first, in one), and (b) the light-behind crossover enlarged.
 fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineChart), Fail> {
+    // Both lights in one panel, told apart by the key: overhead solid (FP+ZP+W triangles),
+    // behind the dashed ZP = ZP+W line and FP+ZP+W's hexagons (a title "behind (dashed)" was
+    // wrong for the hexagons, the fourth review).
     let mut c = LineChart::new(
-        "(a) overhead, behind (dashed)",
+        "(a) light overhead and behind",
         Axis::integer("number of shadow maps", 0.0, 40.0),
         // To the data from 2 maps on: 6.5 (ZP+W at 40 maps) to 2000 (ZP behind with 2 maps).
         Axis::log10("S̄ (texels per image pixel, log scale)", 4.0, 1e4).in_powers(),

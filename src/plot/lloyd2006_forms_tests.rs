@@ -45,66 +45,54 @@ fn text_at(svg: &str, label: &str) -> (f64, f64) {
     (attr(found[0].0, "x").unwrap(), found[0].2)
 }
 
-/// The third review: (b)'s labels lie in the order of their curves at the far plane, top to
-/// bottom (n′ = 100 was above n′ = 20 in one column), and LiSPSM's right of z = 10, off the
-/// crossing of five curves at z ≈ 7 where it covered n′ = ∞ (by hand from Eq 8's last term
-/// (z − n + n′)²/(z (f − n + n′) n′) at z = 20: 1, 0.525, 0.224, 0.098, 0.059, 0.05).
+/// Fig 5 (the fourth review: across two columns "n′ = 100" sat against n′ = 20's curve, with
+/// no marker to tell them apart): in both forms one key under both panels names the six
+/// curves, each name once, in their order at z = f top to bottom (by hand from Eq 8's last
+/// term (z − n + n′)²/(z (f − n + n′) n′) at z = 20: PSM 1, n′ = 2 0.525, LiSPSM 0.224,
+/// n′ = 20 0.098, n′ = 100 0.059, n′ = ∞ 0.05), row by row in rows of three, every entry
+/// below both x axes' tick labels (outside the plots); (a) has no note of its own.
 #[test]
-fn fig5_labels_in_their_curves_order() {
-    let svg = svg_of("lloyd2006-fig5", Column::Double, false);
-    let order = [
-        "n′ = n = 1 (PSM)",
-        "n′ = 2",
-        "LiSPSM",
-        "n′ = 20",
-        "n′ = 100",
-        "n′ = ∞ (uniform)",
-    ];
-    let ys: Vec<f64> = order.iter().map(|l| text_at(&svg, l).1).collect();
-    for (w, l) in ys.windows(2).zip(order.windows(2)) {
-        assert!(
-            w[0] < w[1],
-            "{} at {} not above {} at {}",
-            l[0],
-            w[0],
-            l[1],
-            w[1]
-        );
-    }
-    // (b)'s tick "10": the second of the two panels'.
-    let mut tens: Vec<f64> = texts(&svg)
-        .iter()
-        .filter(|t| t.1 == "10")
-        .map(|t| attr(t.0, "x").unwrap())
-        .collect();
-    tens.sort_by(f64::total_cmp);
-    let (x, _) = text_at(&svg, "LiSPSM");
-    assert!(
-        x > tens[1],
-        "LiSPSM's label at x = {x}, z = 10 at {}",
-        tens[1]
-    );
-}
-
-/// One column (the third review: its labels of n′ = 20 and n′ = 100 stood in the wrong order
-/// between curves too close for a label): a key under both panels names the six curves in
-/// their order, row by row, and (a) needs no note; across two columns (a) says in the figure
-/// that its curves are (b)'s, captioned and bare (it was said in the caption only).
-#[test]
-fn fig5_one_column_key_and_a_names_its_curves() {
-    let svg = svg_of("lloyd2006-fig5", Column::Single, false);
-    let key: Vec<(f64, f64)> = ["PSM", "n′ = 2", "LiSPSM", "n′ = 20", "n′ = 100", "n′ = ∞"]
-        .iter()
-        .map(|l| text_at(&svg, l))
-        .collect();
-    for w in key.windows(2) {
-        let next = (w[1].1 - w[0].1).abs() < 0.5 && w[1].0 > w[0].0 || w[1].1 > w[0].1 + 5.0;
-        assert!(next, "key out of order: {key:?}");
-    }
-    assert!(!svg.contains("curves as in (b)"));
-    for bare in [false, true] {
-        let svg = svg_of("lloyd2006-fig5", Column::Double, bare);
-        text_at(&svg, "curves as in (b)");
+fn fig5_one_key_below_both_panels_in_the_curves_order() {
+    for (column, names) in [
+        (
+            Column::Double,
+            [
+                "n′ = n = 1 (PSM)",
+                "n′ = 2",
+                "n′ ≈ 5.47 (LiSPSM)",
+                "n′ = 20",
+                "n′ = 100",
+                "n′ = ∞ (uniform)",
+            ],
+        ),
+        (
+            Column::Single,
+            ["PSM", "n′ = 2", "LiSPSM", "n′ = 20", "n′ = 100", "n′ = ∞"],
+        ),
+    ] {
+        let svg = svg_of("lloyd2006-fig5", column, false);
+        let key: Vec<(f64, f64)> = names.iter().map(|l| text_at(&svg, l)).collect();
+        // Rows of three: each row level and left to right, the second under the first.
+        for row in key.chunks(3) {
+            assert!(
+                row.iter().all(|p| (p.1 - row[0].1).abs() < 0.5),
+                "{column:?}: {key:?}"
+            );
+            assert!(
+                row.windows(2).all(|w| w[1].0 > w[0].0),
+                "{column:?}: {key:?}"
+            );
+        }
+        assert!(key[3].1 > key[0].1 + 5.0, "{column:?}: {key:?}");
+        // Both panels' tick labels "20" (the far plane) lie above the key.
+        let ticks: Vec<f64> = texts(&svg)
+            .iter()
+            .filter(|t| t.1 == "20")
+            .map(|t| t.2)
+            .collect();
+        assert_eq!(ticks.len(), 2, "{column:?}");
+        assert!(ticks.iter().all(|&y| y < key[0].1), "{column:?}: {ticks:?}");
+        assert!(!svg.contains("curves as in (b)"), "{column:?}");
     }
 }
 
@@ -168,16 +156,64 @@ fn fig6_key_inside_a_and_markers_apart() {
     assert!(closest >= 12.0, "M_z and S̄ markers {closest} apart");
 }
 
-/// Fig 10 in one column: one panel, S̄ from 1 to 10³ (the optima, 1.99 to 7.98, were squeezed
-/// into the bottom of four decades), on a page at most 525 units tall.
+/// Fig 10 in one column (the fourth review: its axis ended at 10³, which cut off f/n = 10⁴'s
+/// curve, 8.66×10³ at k = 1): one panel whose y range holds every point of every curve,
+/// S̄ from 1 to 10⁴ as across two columns. By hand, Eq 18 at k = 1 is the unpartitioned
+/// (f/n − 1)/(2 tan θ) = 9999/(2 tan 30°) = 8659.4, the largest value drawn, and the least is
+/// f/n = 10's optimum ln 10/(2 tan 30°) = 1.994; the page is at most 525 units tall.
 #[test]
-fn fig10_one_column_to_a_thousand() {
+fn fig10_one_column_holds_the_data() {
     let fig = fig10().map_err(|e| e.named("lloyd2006-fig10")).unwrap();
     let single = fig.single.as_ref().unwrap();
     assert_eq!(single.page.charts.len(), 1);
-    let y = &single.page.charts[0].y;
-    assert_eq!((y.min, y.max), (1.0, 1e3));
+    let c = &single.page.charts[0];
+    let (lo, hi) = c
+        .series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.1))
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        });
+    let tan = 30f64.to_radians().tan();
+    assert!((hi - 9999.0 / (2.0 * tan)).abs() < 1e-6, "{hi}");
+    assert!((lo - 10f64.ln() / (2.0 * tan)).abs() < 1e-9, "{lo}");
+    assert!(
+        c.y.min <= lo && hi <= c.y.max,
+        "{:?} for {lo} … {hi}",
+        (c.y.min, c.y.max)
+    );
     assert!(fig.single_size().unwrap().1 <= 525);
+}
+
+/// Fig 12 (a)'s title (the fourth review: "(a) overhead, behind (dashed)", but FP+ZP+W behind
+/// is hexagons, no dashed line): it names both lights and claims no line style, the key
+/// telling the series apart. Read from both forms' panels: "light overhead and behind", and
+/// "dashed" only where every series it could mean, each "…, behind" entry, is a joined dashed
+/// line (FP+ZP+W's points have gaps between them: markers, not a line).
+#[test]
+fn fig12_titles_claim_only_what_is_drawn() {
+    let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
+    let single = &fig.single.as_ref().unwrap().page.charts[0];
+    for (c, title) in [
+        (&fig.page.charts[0], "(a) light overhead and behind"),
+        (single, "light overhead and behind"),
+    ] {
+        let behind: Vec<&Series> = c
+            .series
+            .iter()
+            .filter(|s| s.label.as_deref().is_some_and(|l| l.ends_with("behind")))
+            .collect();
+        assert_eq!(behind.len(), 2, "{:?}", c.series);
+        let all_dashed_lines = behind.iter().all(|s| {
+            s.dash == crate::plot::chart::Dash::Dashed && s.points.iter().all(|p| p.1.is_finite())
+        });
+        assert!(
+            !c.title.contains("dashed") || all_dashed_lines,
+            "{}",
+            c.title
+        );
+        assert_eq!(c.title, title);
+    }
 }
 
 /// Fig 12 (the third review: "55.0 needs tan θ = 1 while the figure states θ = 30°"): the

@@ -427,23 +427,6 @@ fn fig10_ratio_panel_tends_to_one() {
     }
 }
 
-/// The points of every `<polyline>` of an SVG drawn in `stroke` (a colour as `#RRGGBB`).
-fn polylines(svg: &str, stroke: &str) -> Vec<Vec<(f64, f64)>> {
-    svg.lines()
-        .filter(|l| l.starts_with("<polyline") && l.contains(&format!("stroke=\"{stroke}\"")))
-        .map(|l| {
-            let at = l.find(" points=\"").unwrap() + 9;
-            l[at..at + l[at..].find('"').unwrap()]
-                .split(' ')
-                .filter_map(|p| {
-                    let (x, y) = p.split_once(',')?;
-                    Some((x.parse().ok()?, y.parse().ok()?))
-                })
-                .collect()
-        })
-        .collect()
-}
-
 /// The centres of every `<polygon>` (a marker) of an SVG.
 fn polygon_centres(svg: &str) -> Vec<(f64, f64)> {
     polygon_centres_where(svg, |_| true)
@@ -469,48 +452,6 @@ pub(super) fn polygon_centres_where(svg: &str, keep: impl Fn(&str) -> bool) -> V
             ))
         })
         .collect()
-}
-
-/// Fig 5 (issue 35 review): one set of labels, in (b), names the curves of both panels (a
-/// legend below repeated them): each of the six n′ is written once; and "n′ = 100" lies nearer
-/// its own curve than n′ = ∞'s (it sat under their crossing, nearer the orange curve): the
-/// distance from its text's centre to each curve's drawn points in the SVG.
-#[test]
-fn fig5_labels_once_and_n100_by_its_curve() {
-    let fig = fig5().map_err(|e| e.named("lloyd2006-fig5")).unwrap();
-    let svg = draw_svg(fig.size(), |area| fig.draw(area).unwrap());
-    let texts = texts(&svg);
-    for label in [
-        "n′ = n = 1 (PSM)",
-        "n′ = 2",
-        "LiSPSM",
-        "n′ = 20",
-        "n′ = 100",
-        "n′ = ∞ (uniform)",
-    ] {
-        let n = texts.iter().filter(|t| t.1 == label).count();
-        assert_eq!(n, 1, "{label} written {n} times");
-    }
-    let t = texts.iter().find(|t| t.1 == "n′ = 100").unwrap();
-    let x = crate::plot::chart::read_svg::attr(t.0, "x").unwrap();
-    // The text's centre: 30 units right of its start (its width is about 60), half its size
-    // under its top (dy 0.76em sets the top at y).
-    let c = (x + 30.0, t.2 + 5.0);
-    let nearest = |stroke: &str| {
-        // The second curve of the colour: panel (b)'s.
-        let lines = polylines(&svg, stroke);
-        assert_eq!(lines.len(), 2, "{stroke}");
-        lines[1]
-            .iter()
-            .map(|p| (p.0 - c.0).hypot(p.1 - c.1))
-            .fold(f64::INFINITY, f64::min)
-    };
-    let own = nearest("#9589C0");
-    let uniform = nearest("#E69F00");
-    assert!(
-        own < uniform,
-        "n′ = 100 at {own} from its curve, {uniform} from n′ = ∞"
-    );
 }
 
 /// Fig 5 (a) (issue 35 review: seven markers piled up at z = 18–19, where all its curves meet

@@ -120,12 +120,7 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
             Ticked::new(0.0, 1.0, vec![], vec![]),
             Ticked::new(lo, hi, yb.clone(), vec![]),
         )?;
-    let yf = |v: &f64| {
-        ticks
-            .iter()
-            .find(|t| (t.0 - v).abs() < 1e-9)
-            .map_or_else(String::new, |t| t.1.clone())
-    };
+    let yf = |v: &f64| tick_text(&ticks, *v);
     chart
         .configure_mesh()
         .disable_mesh()
@@ -170,6 +165,15 @@ pub(crate) fn draw_colour_bar<DB: DrawingBackend>(
     Ok(())
 }
 
+/// The label of the tick at `v` among `ticks` (value, text), empty where `v` has none (a tick
+/// drawn without a label).
+fn tick_text(ticks: &[(f64, String)], v: f64) -> String {
+    ticks
+        .iter()
+        .find(|t| (t.0 - v).abs() < 1e-9)
+        .map_or_else(String::new, |t| t.1.clone())
+}
+
 /// Draws a colour bar for `scale` across `area`: the bands, tick marks at the axis's ticks,
 /// labels under them, and the name under the labels. Where the labels of neighbouring ticks
 /// would come within 8 units of each other, every second is labelled (those of the top end's
@@ -211,12 +215,7 @@ pub(crate) fn draw_colour_bar_across<DB: DrawingBackend>(
             Ticked::new(lo, hi, xb, vec![]),
             Ticked::new(0.0, 1.0, vec![], vec![]),
         )?;
-    let xf = |v: &f64| {
-        shown
-            .iter()
-            .find(|t| (t.0 - v).abs() < 1e-9)
-            .map_or_else(String::new, |t| t.1.clone())
-    };
+    let xf = |v: &f64| tick_text(&shown, *v);
     chart
         .configure_mesh()
         .disable_mesh()
