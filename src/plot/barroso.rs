@@ -287,6 +287,9 @@ impl Figure for Fig7 {
             for (s, short) in c.series.iter_mut().zip(SINGLE_LABELS) {
                 s.label = Some(short.to_string());
             }
+            // The name alone, no longer than plots about 90 units tall (the powers of ten say
+            // that the scale is log).
+            c.y.label = "n′".into();
         }
         let body = frame(root, SINGLE_TITLE, &[self.single_caption.as_str()])?;
         let (w, h) = body.dim_in_pixel();

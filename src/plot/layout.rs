@@ -419,11 +419,18 @@ impl Fig8 {
         // The title names the grid (the bare figure has no caption to), the part's tag inside
         // its thick outline names the part.
         let title = format!("(b) {}'s texel grid", cell.tag);
+        // One column: (b)'s plot is about 73 units tall, shorter than "z in light space"; its
+        // axis is (a)'s z, named in full beside (a) above it.
+        let z_name = if column() == Column::Single {
+            "z"
+        } else {
+            Z_NAME
+        };
         let (xa, ya) = equal_aspect(
             area,
             &title,
             &Axis::linear(X_NAME, lo.x, hi.x),
-            &Axis::linear(Z_NAME, lo.y, hi.y),
+            &Axis::linear(z_name, lo.y, hi.y),
             style,
         )?;
         let mut chart = build_chart_styled(area, &title, &xa, &ya, false, style)?;

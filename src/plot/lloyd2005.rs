@@ -256,6 +256,7 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
     // The ξ = 0 gain as k → ∞: m(k)/m(1) = k(α^{1/k} − 1)α^{1/2 − 1/(2k)}/(α − 1) (Eq 7) tends to
     // √α ln α/(α − 1), so the gain tends to its inverse.
     let g0_inf = (alpha - 1.0) / (alpha.sqrt() * alpha.ln());
+    let charts_double = charts.clone();
     Ok(Tall {
         charts: Charts {
             size: (520, 500),
@@ -276,9 +277,22 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
              |ξ|\u{a0}=\u{a0}1 (the report's \"nearly 5 times\"), {g0_2:.2}× with \
              ξ\u{a0}=\u{a0}0."
         )],
-        single_charts: None,
+        // One column: the y axes' name without "(log scale)" (the powers of ten say it), so
+        // that it is no longer than the plots, each about 110 units tall.
+        single_charts: Some(
+            charts_double
+                .into_iter()
+                .map(|mut c| {
+                    c.y.label = FIG7_SINGLE_Y.into();
+                    c
+                })
+                .collect(),
+        ),
     })
 }
+
+/// Fig 7's y axes' name in one column.
+const FIG7_SINGLE_Y: &str = "m_{max}(k) / m_{max}(1)";
 
 /// The width left of Fig 7's plots for their tick labels and the y axis' name, in units.
 const FIG7_Y_LABEL_AREA: u32 = 70;

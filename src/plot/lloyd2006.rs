@@ -111,10 +111,11 @@ fn fig5_panels(n: f64, f: f64, layout: Column) -> Result<(LineChart, LineChart),
     // bottom (PSM, n′ = 2, LiSPSM; n′ = 20, n′ = 100, n′ = ∞).
     cz.legend_columns = Some(3);
     if layout == Column::Single {
-        // The panels' titles give the quantities; the data's range (0.05 to 1) a little
+        // The panels' titles give the quantities, the axes' names no longer than their plots
+        // (the powers of ten say that the scale is log); the data's range (0.05 to 1) a little
         // padded.
-        cx.y = Axis::log10("x error (log scale)", 0.045, 1.1);
-        cz.y = Axis::log10("z error (log scale)", 0.045, 1.1);
+        cx.y = Axis::log10("x error", 0.045, 1.1);
+        cz.y = Axis::log10("z error", 0.045, 1.1);
     }
     let mut keys = Vec::new();
     for (i, (np, label, colour)) in warps.iter().enumerate() {
@@ -288,6 +289,8 @@ pub(super) fn fig10() -> Result<Keyed, Fail> {
     // One column: (a) alone, on the same axes (the fourth review: cut at 10³, f/n = 10⁴'s
     // curve left the plot at k = 1, 8.66×10³).
     let (mut a, _, _) = fig10_panels()?;
+    // The y axis' name no longer than its plot (the powers of ten say the scale is log).
+    a.y.label = SINGLE_S_AXIS.into();
     // One panel: no letter.
     a.title = "S̄; dashed: its optimum".into();
     let single = Charts {
@@ -305,6 +308,11 @@ pub(super) fn fig10() -> Result<Keyed, Fail> {
         ..Keyed::new(double, Some(0))
     })
 }
+
+/// The S̄ axis' name on the one-column pages of Fig 10 and 12, short enough for their plots
+/// (the two-column name, "… (texels per image pixel, log scale)", ran past the plot's ends;
+/// the powers of ten say that the scale is log).
+const SINGLE_S_AXIS: &str = "S̄ (texels per image pixel)";
 
 /// The depth ratios f/n of Fig 10.
 const FIG10_RATIOS: [f64; 4] = [10.0, 100.0, 1000.0, 10_000.0];
@@ -433,6 +441,7 @@ pub(super) fn fig12() -> Result<Keyed, Fail> {
         charts: vec![a, zoom],
     };
     let (mut a, _) = fig12_panels(&view, Column::Single)?;
+    a.y.label = SINGLE_S_AXIS.into();
     // One panel: no letter.
     a.title = "light overhead and behind".into();
     let single = Charts {
