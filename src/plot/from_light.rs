@@ -246,11 +246,12 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         phi = view.half_fov().to_degrees(),
         gamma_deg = gamma.to_degrees(),
     );
+    // One column: the far face's edge named as in two (figure review 4: it was left out).
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 5: k\u{a0}=\u{a0}{k}, n\u{a0}=\u{a0}{n}, \
-         f\u{a0}=\u{a0}{f}, φ\u{a0}=\u{a0}{phi:.0}°, seen from the light. (a), (b): Eq\u{a0}5; \
-         (c): Eq\u{a0}19 (not in the paper), light at {gamma_deg:.0}°, target ratio \
-         α\u{a0}=\u{a0}{ADAPTIVE_RATIO}; (d)–(f)\u{a0}enlarge\u{a0}(a)–(c).",
+         f\u{a0}=\u{a0}{f}, φ\u{a0}=\u{a0}{phi:.0}°. (a), (b): Eq\u{a0}5; (c): Eq\u{a0}19, \
+         not in the paper, light at {gamma_deg:.0}°, target ratio α\u{a0}=\u{a0}{ADAPTIVE_RATIO}; \
+         the thick line across (c), (f) is the far face's edge. (d)–(f) enlarge (a)–(c).",
         n = view.near(),
         f = view.far(),
         phi = view.half_fov().to_degrees(),
@@ -258,7 +259,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     );
     Ok(FromLight {
         title: "The view frustum seen from the light, with z-partitions",
-        single_title: "The frustum and z-partitions",
+        single_title: "Z-partitions seen from the light",
         caption,
         single_caption,
         panels,
@@ -334,7 +335,7 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
         single_caption,
         panels: vec![p],
         size: (520, 480),
-        single_size: (300, 420),
+        single_size: (300, 460),
     })
 }
 

@@ -266,6 +266,7 @@ fn legend_h(rows: u32) -> u32 {
 fn draw_legend<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     columns: i32,
+    note: &str,
 ) -> Result<(), Fail> {
     let entries: [(&str, RGBColor, Option<Stroke>); 6] = [
         ("frustum E", EDGE, Some(Stroke::Solid)),
@@ -304,7 +305,27 @@ fn draw_legend<DB: DrawingBackend>(
         }
         area.draw(&Text::new(label, (x + 22, y), style.clone()))?;
     }
+    // The note in a row of its own under the entries, from the first column's left edge.
+    let rows = (entries.len() as i32 + columns - 1) / columns;
+    area.draw(&Text::new(note, (5, 11 + rows * LEGEND_ROW), style))?;
     Ok(())
+}
+
+/// The legend's note on the boxes' outset ([`OUTSET`] units, in printed points: 4 across two
+/// columns, 3.2 in one).
+fn outset_note(single: bool) -> String {
+    let column = if single {
+        Column::Single
+    } else {
+        Column::Double
+    };
+    let pt = OUTSET * column.points_per_unit();
+    let pt = if pt.fract() == 0.0 {
+        format!("{pt:.0}")
+    } else {
+        format!("{pt:.1}")
+    };
+    format!("Both boxes drawn {pt}\u{a0}pt outside their outlines.")
 }
 
 impl Figure for Fig3 {
@@ -365,7 +386,9 @@ impl Figure for Fig3 {
         // past its data (review 3: (b) and (c) ran from −1.9 to 2 for a map on [−1, 1]).
         let (_, bh) = body.dim_in_pixel();
         let (columns, rows) = if single { (2, 3) } else { (3, 2) };
-        let (upper, strip) = body.split_vertically(bh.saturating_sub(legend_h(rows)));
+        // One row more under the entries: the note that the boxes are drawn outside, so that the
+        // bare figure says it too (figure review 4: only the caption did).
+        let (upper, strip) = body.split_vertically(bh.saturating_sub(legend_h(rows + 1)));
         let style = if single {
             ChartStyle {
                 y_label_area: 46,
@@ -484,7 +507,7 @@ impl Figure for Fig3 {
         let axis_box = [b0, DVec2::new(b1.x, b0.y), b1, DVec2::new(b0.x, b1.y)];
         outline(&mut chart, &outset(&axis_box, d), AXIS_BOX, Stroke::Dotted)?;
         self.draw_inset(&top, &chart, unit)?;
-        draw_legend(&strip, columns)?;
+        draw_legend(&strip, columns, &outset_note(single))?;
         // (b), (c): the two normalised spaces; the map square in the colour of its shape.
         for (panel, h, title, colour, stroke, st) in [
             (&b_area, self.n_t, titles[0], TRAP, Stroke::Solid, &b_style),

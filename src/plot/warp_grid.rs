@@ -174,6 +174,11 @@ fn depth_width(narrow: bool) -> u32 {
     }
 }
 
+/// The shadow map's square [0, 1]² in panels (e)–(h): black like the frustum of (a)–(d) but half
+/// as wide, so that the key names the two apart (figure review 4: one key entry, "frustum, map's
+/// square", stood for both).
+const SQUARE_WIDTH: u32 = 1;
+
 /// The rays from the eye in the map (panels (e)–(h)): dashed grey, so that in greyscale they
 /// differ from the planes of constant depth by more than their shade.
 const RAY_COLOUR: RGBColor = SHARED;
@@ -201,9 +206,9 @@ fn heading(letter: char, col: &Column, narrow: bool) -> Vec<String> {
     match (col.scheme, narrow) {
         (Some(s), false) => vec![format!("({letter}) {} ({s})", col.eta), col.n_prime.clone()],
         (None, false) => vec![format!("({letter}) {}", col.eta), col.n_prime.clone()],
-        // One column: the letter over η, n′ and the scheme's name, each line narrower than
-        // a panel.
-        (s, true) => [format!("({letter})"), col.eta.clone(), col.n_prime.clone()]
+        // One column: "(a) η = −1" over n′ and the scheme's name, each line narrower than a
+        // panel.
+        (s, true) => [format!("({letter}) {}", col.eta), col.n_prime.clone()]
             .into_iter()
             .chain(s.map(str::to_string))
             .collect(),
@@ -252,15 +257,11 @@ impl Fig4 {
         build_chart_styled(area, title, &every(x, step.0), &every(y, step.1), false, st)
     }
 
-    /// The x ticks' steps of the light's and the map's panels: in one column's narrow panels
-    /// only the ends (0 and f, 0 and 1), so that one panel's last label and the next one's
-    /// first ("10", "0") do not read as one number.
-    fn x_steps(&self, narrow: bool) -> (f64, f64) {
-        if narrow {
-            (self.view.far(), 1.0)
-        } else {
-            (5.0, 0.5)
-        }
+    /// The x ticks' steps of the light's and the map's panels: every 5 units of depth and every
+    /// ½ of the map, in both layouts (one column sets [`GAP`] between its panels, so that one
+    /// panel's "10" and the next one's "0" stand apart).
+    fn x_steps(&self) -> (f64, f64) {
+        (5.0, 0.5)
     }
 
     /// Column `k`'s light-space panel on `area`: the map's texel grid over the frustum, with
@@ -271,11 +272,10 @@ impl Fig4 {
         k: usize,
         title: &str,
         st: &ChartStyle,
-        narrow: bool,
     ) -> Result<(), Fail> {
         let [depth, across, _, _] = self.axes();
         let (n, f, t) = (self.view.near(), self.view.far(), self.view.tan_half_fov());
-        let step = (self.x_steps(narrow).0, 5.0);
+        let step = (self.x_steps().0, 5.0);
         let mut chart = Self::equal_chart(area, title, (&depth, &across), step, st)?;
         let bounds = (0.0, f * 1.05, -f * t * 1.1, f * t * 1.1);
         for seg in &self.columns[k].light_space {
@@ -306,11 +306,11 @@ impl Fig4 {
     ) -> Result<(), Fail> {
         let [_, _, u, v] = self.axes();
         let st_of = |(a, b): (f64, f64)| (0.5 * (a + 1.0), 0.5 * (b + 1.0));
-        let step = (self.x_steps(narrow).1, 0.5);
+        let step = (self.x_steps().1, 0.5);
         let mut chart = Self::equal_chart(area, title, (&u, &v), step, st)?;
         chart.draw_series(LineSeries::new(
             UNIT_SQUARE.map(st_of),
-            BLACK.stroke_width(2),
+            BLACK.stroke_width(SQUARE_WIDTH),
         ))?;
         // The dash pattern in map units: the page's units per map unit, measured.
         let per_unit = f64::from(
@@ -337,31 +337,49 @@ impl Fig4 {
         Ok(())
     }
 
+    /// The columns drawn: all four across two columns; in one, η = −1, 0 and 1 (uniform,
+    /// LiSPSM, PSM), so that each panel is a third of the column, not a quarter (figure review
+    /// 4: at four a row the panels printed about 40 pt wide).
+    fn shown(&self, narrow: bool) -> Vec<usize> {
+        if narrow {
+            self.columns
+                .iter()
+                .enumerate()
+                .filter(|(_, c)| c.scheme.is_some())
+                .map(|(k, _)| k)
+                .collect()
+        } else {
+            (0..self.columns.len()).collect()
+        }
+    }
+
     /// The two rows of panels on `body`: a column per n′ headed by its letter, η and n′ (and
-    /// its scheme's name), the light's view (a)–(d) over the map (e)–(h), titled "(e) map of
-    /// (a)" (across two columns) or under the row's label "(e)–(h): (a)–(d) in the map (s, t)"
-    /// (in one). The columns share their axes: only the first has the y labels, and it is that
-    /// much wider, so that every panel of a row has the same scale.
+    /// its scheme's name), the light's view over the map, titled "(e) map of (a)" (across two
+    /// columns) or under the row's label "(d)–(f): (a)–(c) in the map (s, t)" (in one). The
+    /// columns share their axes: only the first has the y labels, and it is that much wider,
+    /// so that every panel of a row has the same scale; in one column [`GAP`] units lie between
+    /// neighbouring panels, so that one panel's last x tick label and the next one's first do
+    /// not read as one number.
     fn draw_panels<DB: DrawingBackend>(
         &self,
         body: &DrawingArea<DB, Shift>,
         narrow: bool,
     ) -> Result<(), Fail> {
         let (bw, bh) = body.dim_in_pixel();
-        let (label_w, line_h, margin, x_labels) = if narrow {
-            (42u32, 14u32, 4u32, 32u32)
+        let (label_w, line_h, margin, x_labels, gap) = if narrow {
+            (42u32, 14u32, 4u32, 32u32, GAP)
         } else {
-            (44, 16, 7, 36)
+            (44, 16, 7, 36, 0)
         };
-        let count = self.columns.len() as u32;
-        let pw = (bw - label_w) / count;
+        let shown = self.shown(narrow);
+        let count = shown.len() as u32;
+        let pw = (bw - label_w - gap * (count - 1)) / count;
         let heading_style =
             TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Top));
-        let lines = self
-            .columns
+        let lines = shown
             .iter()
             .zip('a'..)
-            .map(|(c, l)| heading(l, c, narrow).len())
+            .map(|(&k, l)| heading(l, &self.columns[k], narrow).len())
             .max()
             .unwrap_or(1) as u32;
         let head = lines * line_h + 4;
@@ -383,50 +401,63 @@ impl Fig4 {
         let map_h = plot_w.ceil() as u32 + x_labels + 2 * margin + map_title;
         let spare = bh.saturating_sub(head + light_h + row_label + map_h);
         let (y_light, y_map) = (head + spare / 2, head + spare / 2 + light_h + row_label);
+        let letter = |row: u32, i: u32| char::from(b'a' + (row * count + i) as u8);
         if narrow {
             let style =
                 TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Top));
+            let label = format!(
+                "({})–({}): ({})–({}) in the map (s, t)",
+                letter(1, 0),
+                letter(1, count - 1),
+                letter(0, 0),
+                letter(0, count - 1)
+            );
             body.draw(&Text::new(
-                "(e)–(h): (a)–(d) in the map (s, t)",
+                label,
                 (bw as i32 / 2, (y_light + light_h + 2) as i32),
                 style,
             ))?;
         }
-        for (k, col) in self.columns.iter().enumerate() {
-            let kk = k as u32;
-            let first = kk == 0;
-            let x0 = if first { 0 } else { label_w + kk * pw };
+        for (i, &k) in shown.iter().enumerate() {
+            let col = &self.columns[k];
+            let ii = i as u32;
+            let first = ii == 0;
+            let x0 = if first { 0 } else { label_w + ii * (pw + gap) };
             let cw = pw + if first { label_w } else { 0 };
             let x_mid = (cw - pw + pw / 2) as i32;
-            let letter = |row: u32| char::from(b'a' + (row * count + kk) as u8);
             let column = body.clone().shrink((x0, 0), (cw, bh));
-            for (i, line) in heading(letter(0), col, narrow).into_iter().enumerate() {
+            for (j, line) in heading(letter(0, ii), col, narrow).into_iter().enumerate() {
                 column.draw(&Text::new(
                     line,
-                    (x_mid, (spare / 2 + line_h * i as u32) as i32),
+                    (x_mid, (spare / 2 + line_h * j as u32) as i32),
                     heading_style.clone(),
                 ))?;
             }
             let light = body.clone().shrink((x0, y_light), (cw, light_h));
             let map = body.clone().shrink((x0, y_map), (cw, map_h));
             let title = if narrow {
-                format!("({})", letter(1))
+                format!("({})", letter(1, ii))
             } else {
-                format!("({}) map of ({})", letter(1), letter(0))
+                format!("({}) map of ({})", letter(1, ii), letter(0, ii))
             };
-            self.draw_light(&light, k, "", &st(first), narrow)?;
+            self.draw_light(&light, k, "", &st(first))?;
             self.draw_map(&map, k, &title, &st(first), narrow)?;
         }
         Ok(())
     }
 }
 
+/// The room between neighbouring panels of a row in one column, in units.
+const GAP: u32 = 16;
+
 impl Figure for Fig4 {
+    /// Two columns: the two rows of four, the key under them in two rows (its five entries are
+    /// wider than the page).
     fn size(&self) -> (u32, u32) {
-        (520, 540)
+        (520, 540 + KEY_H)
     }
 
-    /// One column: the same two rows of four, narrower, the headings on three lines.
+    /// One column: the two rows, three panels each (η = −1, 0, 1), the headings on three lines.
     fn single_size(&self) -> Option<(u32, u32)> {
         Some((super::Column::Single.width(), SINGLE_H))
     }
@@ -437,8 +468,9 @@ impl Figure for Fig4 {
             format!(
                 "Lloyd et al. 2006, Fig. 4, from the warped matrices: n\u{a0}=\u{a0}{n}, \
                  f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, light overhead, plane \
-                 y\u{a0}=\u{a0}0. (a)–(d): the {LINES}\u{a0}×\u{a0}{LINES} texel grid over \
-                 the frustum, from the light; (e)–(h): the frustum in the map.",
+                 y\u{a0}=\u{a0}0. (a)–(c): the {LINES}\u{a0}×\u{a0}{LINES} texel grid over \
+                 the frustum, from the light; (d)–(f): the frustum in the map, s,\u{a0}t\u{a0}∈\
+                 \u{a0}[0,\u{a0}1].",
                 n = self.view.near(),
                 f = self.view.far(),
                 theta = self.view.half_fov().to_degrees(),
@@ -452,32 +484,42 @@ impl Figure for Fig4 {
             &[caption.as_str()],
         )?;
         let (_, bh) = body.dim_in_pixel();
-        let key_rows = if narrow { 2 } else { 1 };
+        let key_rows = draw_key(&body, narrow, false)?;
         let (body, key) = body.split_vertically(bh.saturating_sub(key_rows * KEY_H));
         self.draw_panels(&body, narrow)?;
-        draw_key(&key, narrow)
+        draw_key(&key, narrow, true).map(|_| ())
     }
 }
 
 /// The one-column figure's height: at most 525 units (420 points printed 240 wide).
 const SINGLE_H: u32 = 500;
 
-/// The height of the key under the panels.
+/// The height of a row of the key under the panels.
 const KEY_H: u32 = 22;
 
-/// The key of the four kinds of line under the panels, in as few rows of [`KEY_H`] as fit the
-/// width (one across two columns, two in one), so that a figure without its caption still says
-/// what each line is.
-fn draw_key<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, narrow: bool) -> Result<(), Fail> {
-    let style = TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
-    let items: [(&str, RGBColor, u32, bool); 4] = [
+/// The key's entries: text, colour, width, dashed. One per kind of line drawn: the frustum of
+/// (a)–(d) and the map's square of (e)–(h) each have their own (figure review 4).
+fn key_items(narrow: bool) -> [(&'static str, RGBColor, u32, bool); 5] {
+    [
         ("texel grid", GRID_COLOUR, 1, false),
-        ("frustum, map's square", BLACK, 2, false),
+        ("frustum", BLACK, 2, false),
+        ("map's square", BLACK, SQUARE_WIDTH, false),
         ("constant depth", DEPTH_COLOUR, depth_width(narrow), false),
         ("ray from the eye", RAY_COLOUR, 1, true),
-    ];
-    let sample = 22;
-    let gap = 14;
+    ]
+}
+
+/// The key of the five kinds of line under the panels, in as few rows of [`KEY_H`] as fit the
+/// width, each row centred, so that a figure without its caption still says what each line
+/// is; returns its rows (drawing nothing when `draw` is false).
+fn draw_key<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    narrow: bool,
+    draw: bool,
+) -> Result<u32, Fail> {
+    let style = TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+    let items = key_items(narrow);
+    let (sample, gap) = (20, 12);
     let mut widths = Vec::new();
     for (t, ..) in &items {
         let (w, _) = area
@@ -486,22 +528,46 @@ fn draw_key<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, narrow: bool) -> 
         widths.push(sample + 4 + w as i32);
     }
     let (aw, _) = area.dim_in_pixel();
-    let total = widths.iter().sum::<i32>() + gap * (items.len() as i32 - 1);
-    let per_row = if total <= aw as i32 { items.len() } else { 2 };
-    for (r, (row, ws)) in items
-        .chunks(per_row)
-        .zip(widths.chunks(per_row))
-        .enumerate()
-    {
-        let total = ws.iter().sum::<i32>() + gap * (ws.len() as i32 - 1);
+    // Greedy rows: each item on the current row while the row fits the width.
+    let mut rows: Vec<Vec<usize>> = vec![Vec::new()];
+    let mut used = 0;
+    for (i, w) in widths.iter().enumerate() {
+        let row = rows.last_mut().expect("a row");
+        let need = if row.is_empty() { *w } else { used + gap + w };
+        if !row.is_empty() && need > aw as i32 {
+            rows.push(vec![i]);
+            used = *w;
+        } else {
+            row.push(i);
+            used = need;
+        }
+    }
+    // The same number of rows, balanced (3 and 2, not 4 and 1) where the longer rows fit.
+    let per = items.len().div_ceil(rows.len());
+    let row_w =
+        |r: &[usize]| r.iter().map(|&i| widths[i]).sum::<i32>() + gap * (r.len() as i32 - 1);
+    let even: Vec<Vec<usize>> = (0..items.len())
+        .collect::<Vec<_>>()
+        .chunks(per)
+        .map(<[usize]>::to_vec)
+        .collect();
+    if even.len() == rows.len() && even.iter().all(|r| row_w(r) <= aw as i32) {
+        rows = even;
+    }
+    if !draw {
+        return Ok(rows.len() as u32);
+    }
+    for (r, row) in rows.iter().enumerate() {
+        let total = row_w(row);
         let mut x = (aw as i32 - total).max(0) / 2;
         let y = KEY_H as i32 * r as i32 + KEY_H as i32 / 2;
-        for ((t, colour, width, dashed), w) in row.iter().zip(ws) {
+        for &i in row {
+            let (t, colour, width, dashed) = items[i];
             let (a, b) = (
                 (f64::from(x), f64::from(y)),
                 (f64::from(x + sample), f64::from(y)),
             );
-            let pieces = if *dashed {
+            let pieces = if dashed {
                 dashes(a, b, RAY_DASH)
             } else {
                 vec![[a, b]]
@@ -512,7 +578,7 @@ fn draw_key<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, narrow: bool) -> 
                         (p.0.round() as i32, p.1.round() as i32),
                         (q.0.round() as i32, q.1.round() as i32),
                     ],
-                    colour.stroke_width(*width),
+                    colour.stroke_width(width),
                 ))?;
             }
             area.draw(&Text::new(
@@ -520,10 +586,10 @@ fn draw_key<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, narrow: bool) -> 
                 (x + sample + 4, y),
                 style.clone(),
             ))?;
-            x += w + gap;
+            x += widths[i] + gap;
         }
     }
-    Ok(())
+    Ok(rows.len() as u32)
 }
 
 #[cfg(test)]
@@ -580,8 +646,9 @@ mod tests {
     /// own); the map panels say whose map they are ("(e) map of (a)", or the row's label in one
     /// column: review 3, the bare form's lower row had no stated relation to the upper); the
     /// caption calls the paper's figure a sketch; the key names all four lines in the bare
-    /// figure too; and one column has a layout 300 units wide and at most 525 tall, its panels
-    /// in the same two rows of four, every panel lettered, its caption at most five lines.
+    /// figure too, one entry per kind of line (review 4); and one column has a layout 300 units
+    /// wide and at most 525 tall, its panels in two rows of three (η = −1, 0, 1; review 4: four
+    /// a row printed 40 pt wide), every panel lettered, its caption at most five lines.
     #[test]
     fn families_differ_in_dash_headings_merged_and_one_column_exists() {
         use super::super::chart::read_svg::{draw_svg, texts};
@@ -622,10 +689,12 @@ mod tests {
             };
             let rays = lines_of("stroke=\"#5A5A5A\"");
             let depths = lines_of("stroke=\"#3F007D\"");
-            // 7 rays and 13 planes a panel, 4 panels; each ray in at least 5 dashes.
-            assert!(rays >= 5 * 28, "{column:?}: {rays} grey pieces");
+            // 7 rays and 13 planes a panel, 4 panels (3 in one column); each ray in at least 5
+            // dashes.
+            let panels = if column == Page::Double { 4 } else { 3 };
+            assert!(rays >= 5 * 7 * panels, "{column:?}: {rays} grey pieces");
             assert!(
-                (4 * 13..2 * 52).contains(&depths),
+                (13 * panels..26 * panels).contains(&depths),
                 "{column:?}: {depths} depth lines"
             );
             // The depth planes (and their key swatch) twice the texel grid's width across two
@@ -634,14 +703,17 @@ mod tests {
             assert_eq!(width_of("stroke=\"#3F007D\""), want);
             assert_eq!(width_of("stroke=\"#7B6DB4\""), 1.0);
             let all: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
+            // One key entry per kind of line (figure review 4: "frustum, map's square" was one
+            // entry for two).
             for key in [
                 "texel grid",
-                "frustum, map",
+                "frustum",
+                "map's square",
                 "constant depth",
                 "ray from the eye",
             ] {
                 assert!(
-                    all.iter().any(|t| t.starts_with(key)),
+                    all.iter().any(|t| t.replace("&apos;", "'") == key),
                     "{column:?} {bare}: no key {key}"
                 );
             }
@@ -674,22 +746,25 @@ mod tests {
                 assert_eq!(size.0, 300);
                 assert!(
                     all.iter()
-                        .any(|t| t == "(e)–(h): (a)–(d) in the map (s, t)"),
+                        .any(|t| t == "(d)–(f): (a)–(c) in the map (s, t)"),
                     "{all:?}"
                 );
-                for letter in ["(a)", "(b)", "(c)", "(d)", "(e)", "(f)", "(g)", "(h)"] {
+                for letter in ["(d)", "(e)", "(f)"] {
                     assert!(all.iter().any(|t| t == letter), "{letter}: {all:?}");
                 }
                 for line in [
-                    "η = −1",
+                    "(a) η = −1",
                     "n′ = ∞",
                     "uniform",
-                    "η = −0.6",
-                    "n′ = 23.91",
+                    "(b) η = 0",
+                    "n′ = 4.16",
+                    "LiSPSM",
+                    "(c) η = 1",
                     "PSM",
                 ] {
                     assert!(all.iter().any(|t| t == line), "{line}: {all:?}");
                 }
+                assert!(!all.iter().any(|t| t.contains("−0.6")), "{all:?}");
             }
         }
     }

@@ -45,6 +45,9 @@ const MAP_OFFSET: f64 = 2.0;
 const FRUSTUM_WIDTH: u32 = 2;
 const PLANE_WIDTH: u32 = 1;
 
+/// Half the length of the bar across each end of a dimension line, in units.
+const DIM_BAR: f64 = 4.0;
+
 /// A panel title's distance from its cell's left edge, in units.
 const TITLE_INSET: i32 = 2;
 
@@ -69,24 +72,24 @@ struct Sizes {
 fn sizes(single: bool, panels: usize) -> Sizes {
     if single && panels > 1 {
         // One column, two panels a row of 144 units: the type of every other one-column figure
-        // (ticks and labels 13, 10.5 units, 8.4 pt printed; titles and axis names 15), each
-        // label on two lines ("z =" over "31.62") so that the gutter takes 46 units, not 67
-        // (figure review 3: at 10 the labels printed 6.45 pt), and no y tick labels: the y
-        // axis's area holds its name only, in the left column.
+        // (ticks and labels 13, 10.5 units, 8.4 pt printed; titles and axis names 15), y ticks
+        // on every panel and each plane's label on one line (figure review 4: without y ticks
+        // and with "f =" over "100" the panels graded C): a label is the plane's depth alone
+        // ("31.62"; the key says the labels are z), so that the gutter takes 50 units.
         Sizes {
             style: ChartStyle {
                 title_size: PANEL_TITLE,
                 x_label_area: 42,
-                y_label_area: 20,
+                y_label_area: 46,
                 tick_size: 13,
                 desc_size: 15,
                 margin: 2,
             },
             x_ticks_only: 26,
-            y_ticks_only: 6,
+            y_ticks_only: 30,
             label: 13,
-            gutter: 46,
-            step: 26,
+            gutter: 50,
+            step: 15,
             key: 13,
         }
     } else {
@@ -239,12 +242,14 @@ pub(super) fn dashed(
 type Stroke = (RGBColor, u32, &'static [f64]);
 
 /// The key under the panels: "Maps, nearest first:" with each map's stroke and its
-/// number, then the frustum's stroke and the split planes'. Its items flow in rows, centred;
+/// number, then the frustum's stroke and the split planes' ("split plane (label: z)" where
+/// `bare_depths`: the planes' labels are their depths alone). Its items flow in rows, centred;
 /// returns the height it takes (drawing nothing when `draw` is false).
 fn key<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     maps: usize,
     size: u32,
+    bare_depths: bool,
     draw: bool,
 ) -> Result<u32, Fail> {
     let style = TextStyle::from((FONT, size).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
@@ -264,7 +269,13 @@ fn key<DB: DrawingBackend>(
         ));
     }
     items.push((Some((BLACK, FRUSTUM_WIDTH, &[])), "frustum".into()));
-    items.push((Some((BLACK, PLANE_WIDTH, &[])), "split plane".into()));
+    // Where the planes' labels are their depths alone (one column), the key says so.
+    let plane = if bare_depths {
+        "split plane (label: z)"
+    } else {
+        "split plane"
+    };
+    items.push((Some((BLACK, PLANE_WIDTH, &[])), plane.into()));
     let (w, _) = area.dim_in_pixel();
     let avail = f64::from(w) - 8.0;
     let mut rows: Vec<Vec<(f64, usize)>> = vec![Vec::new()];
@@ -342,10 +353,11 @@ impl Figure for FromLight {
         let body = frame(root, title, &[caption.as_str()])?;
         let sz = sizes(single, self.panels.len());
         let maps = self.panels.iter().map(|p| p.maps.len()).max().unwrap_or(0);
-        let key_h = key(&body, maps, sz.key, false)?;
+        let small = single && self.panels.len() > 1;
+        let key_h = key(&body, maps, sz.key, small, false)?;
         let (_, bh) = body.dim_in_pixel();
         let (body, strip) = body.split_vertically(bh - key_h);
-        key(&strip, maps, sz.key, true)?;
+        key(&strip, maps, sz.key, small, true)?;
         let columns = self.panels.len().min(2);
         let rows = self.panels.len().div_ceil(columns);
         // The rows above the last have no x title: the last is taller by the title's room, so
@@ -361,7 +373,16 @@ impl Figure for FromLight {
                 row_h
             };
             let (row, below) = rest.split_vertically(h);
-            let mut cells = row.split_evenly((1, columns)).into_iter();
+            // Two columns of panels: the left one wider by its y axis's name, so that the two
+            // plots of a row have the same room.
+            let cells: Vec<DrawingArea<DB, Shift>> = if columns == 2 {
+                let left = (bw + sz.style.y_label_area - sz.y_ticks_only) / 2;
+                let (a, b) = row.split_horizontally(left);
+                vec![a, b]
+            } else {
+                row.split_evenly((1, columns))
+            };
+            let mut cells = cells.into_iter();
             for c in 0..columns {
                 let (Some(p), Some(cell)) = (self.panels.get(r * columns + c), cells.next()) else {
                     break;
@@ -518,8 +539,27 @@ fn draw_panel<DB: DrawingBackend>(
     } else {
         0.0
     });
-    let (lo, hi) = (lo - grow, hi + grow);
-    let per_px = ((hi.x - lo.x) / pw).max((hi.y - lo.y) / ph);
+    let (mut lo, mut hi) = (lo - grow, hi + grow);
+    let mut per_px = ((hi.x - lo.x) / pw).max((hi.y - lo.y) / ph);
+    // Room under each dimension line for its label (bars, the label's boxed line and a gap to
+    // the x axis), the window grown alike above, so that the frustum stays centred (figure
+    // review 4: in one column "2f tan θ"'s box covered the x axis). The room is in units of
+    // the page, so its data height grows with the window: a few rounds settle it.
+    let room = DIM_BAR * 1.6 + 1.3 * f64::from(sz.label) + 6.0;
+    for _ in 0..4 {
+        let low = p
+            .dims
+            .iter()
+            .map(|(a, b, _)| a.y.min(b.y) - room * per_px)
+            .fold(lo.y, f64::min);
+        let more = lo.y - low;
+        if more <= 0.0 {
+            break;
+        }
+        lo.y -= more;
+        hi.y += more;
+        per_px = ((hi.x - lo.x) / pw).max((hi.y - lo.y) / ph);
+    }
     let (dw, dh) = ((hi.x - lo.x) / per_px, (hi.y - lo.y) / per_px);
     // Labelled ticks only over the drawing (a window larger than it, as lloyd2006-fig11's with
     // room for a dimension line, labels none beyond it).
@@ -531,10 +571,6 @@ fn draw_panel<DB: DrawingBackend>(
         dh * (hi.min(dhi) - lo.max(dlo)).y / (hi - lo).y,
         f64::from(style.tick_size),
     );
-    // One column labels no y ticks: at the other one-column figures' type their labels took 34
-    // units of a 144-unit cell (and the y title 12 more) from a 46-unit plot; equal aspect
-    // gives the x ticks' scale up the panel too.
-    let at = if small { (at.0, Vec::new()) } else { at };
     let (x0, y0) = axes(lo, hi, &at, titles);
     let spare_w = (pw - dw).max(0.0).floor() as u32;
     let spare_h = (ph - dh).max(0.0).floor() as u32;
@@ -589,7 +625,7 @@ fn draw_panel<DB: DrawingBackend>(
     let (gx, gy) = gutter.get_base_pixel();
     let (wx, wy) = whole.get_base_pixel();
     let (_, gh) = gutter.dim_in_pixel();
-    // The labels' half heights kept inside the gutter (two lines in one column).
+    // The labels' half heights kept inside the gutter.
     let edge = 8.max(sz.step / 2);
     let range = (edge, gh as i32 - edge);
     let candidates: Vec<Vec<i32>> = labelled
@@ -661,7 +697,7 @@ fn draw_panel<DB: DrawingBackend>(
     }
     // Dimension lines: the line with a bar at each end, its label centred below.
     for (a, b, text) in &p.dims {
-        let bar = 4.0 / per_unit;
+        let bar = DIM_BAR / per_unit;
         let n = (*b - *a).perp().normalize_or_zero() * bar;
         for (from, to) in [(*a, *b), (*a - n, *a + n), (*b - n, *b + n)] {
             chart.draw_series(LineSeries::new(
@@ -694,27 +730,27 @@ fn draw_panel<DB: DrawingBackend>(
             ))?;
         }
     }
-    // The labels in the gutter, each joined to its leader's end; in one column on two lines,
-    // the name over the depth, centred on the leader's end.
+    // The labels in the gutter, each joined to its leader's end (in one column's narrow gutter
+    // by a leader 2 units shorter).
+    let shorter = if small { 2 } else { 0 };
     let label_style =
         TextStyle::from((FONT, sz.label).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
-    let half = sz.step / 4;
     for ((&(_, ay), (_, label)), y) in anchor_px.iter().zip(&labelled).zip(ys) {
         let ty = ay - gy;
         gutter.draw(&PathElement::new(
-            vec![(0, ty), (5, ty), (11, y - gy)],
+            vec![(0, ty), (5, ty), (11 - shorter, y - gy)],
             LEADER.stroke_width(1),
         ))?;
-        let lines: Vec<(String, i32)> = match label.split_once(" = ") {
-            Some((name, value)) if small => vec![
-                (format!("{name} ="), y - gy - half),
-                (value.to_string(), y - gy + half),
-            ],
-            _ => vec![((*label).clone(), y - gy)],
+        // One column: the depth alone, on one line.
+        let text = match label.split_once(" = ") {
+            Some((_, value)) if small => value.to_string(),
+            _ => (*label).clone(),
         };
-        for (text, at) in lines {
-            gutter.draw(&Text::new(text, (13, at), label_style.clone()))?;
-        }
+        gutter.draw(&Text::new(
+            text,
+            (13 - shorter, y - gy),
+            label_style.clone(),
+        ))?;
     }
     Ok(())
 }
