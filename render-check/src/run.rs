@@ -36,6 +36,12 @@ pub struct CaseSummary {
     pub shimmer_points: Option<usize>,
     /// The records' clip-depth convention: "zero_to_one" or "reversed".
     pub clip_depth: &'static str,
+    /// Each map's geometry against render-check's own reconstruction ([`crate::geometry`]).
+    #[serde(flatten)]
+    pub geometry: crate::geometry::Geometry,
+    /// The lens overlay the GPU drew against the library's Rust ramp ([`crate::overlay`]).
+    #[serde(flatten)]
+    pub overlay: crate::overlay::OverlayCheck,
     /// The shader paths checked ([`crate::paths`]; `None` outside [`crate::paths::CASES`]).
     pub paths: Option<Vec<crate::paths::PathSummary>>,
 }
@@ -238,6 +244,7 @@ pub fn run_case(
         sizes.fault,
         sizes.render.clip_depth,
     )?;
+    let geometry = crate::geometry::measure(scheme, &view, scene, &built, res);
     let up = Upload::new(&built, &mesh, sizes);
     let out = gpu.render(&up.input(&view, &mesh, &built, res, sizes))?;
     let a = analyse(
@@ -274,6 +281,8 @@ pub fn run_case(
             } else {
                 "zero_to_one"
             },
+            geometry,
+            overlay: crate::overlay::check(&out, built.maps.len()),
             paths: None,
         },
         color: out.color,

@@ -98,6 +98,118 @@ pub const MINIMAX_STORAGE_EXCESS: f64 = 1e-3;
 /// The shimmer test follows at least this many shadow-edge points.
 pub const MIN_SHIMMER_POINTS: usize = 100;
 
+/// `FrameMap::body` against the focus body rebuilt by render-check ([`crate::geometry`]): the
+/// largest distance of a vertex of either outside the other, over B's diameter, at most
+/// (measured at most 1.5·10⁻¹³, `far_tilted`, where eye space is 10⁵ from the world origin;
+/// every built-in case at 320 × 240 and 640 × 480, both clip-depth conventions, as below).
+pub const BODY_REL_DIFF: f64 = 1e-9;
+/// A fitted map's s, t over the rebuilt B reach ±1 on all four sides to within this, clip units
+/// (measured at most 1.6·10⁻¹³); a window 0.1 % too wide or narrow misses it.
+pub const WINDOW_FILL: f64 = 1e-6;
+/// A stable cascade's half-width against the least sphere's radius padded by one texel each
+/// side, relatively (measured at most 2.0·10⁻¹⁵).
+pub const STABLE_HALF_WIDTH_REL_DIFF: f64 = 1e-9;
+/// A stable cascade's centre against the least sphere's, texels along s or t: the snap to whole
+/// texels moves it by at most half a texel (measured at most 0.494).
+pub const STABLE_CENTRE_TEXELS: f64 = 0.5 + 1e-6;
+/// A clipmap's levels against the rule derived from the camera frustum: the uploaded offset L
+/// (log₂ units), the first level, and each level's texel and depth range (relatively) (measured
+/// at most 2.2·10⁻¹⁶).
+pub const CLIPMAP_REL_DIFF: f64 = 1e-9;
+/// The records' normal offset over every sampled need, at least (the record bounds every point
+/// of B: measured at least 1.00001).
+pub const NORMAL_OFFSET_LEAST: f64 = 1.0 - 1e-6;
+/// The records' normal offset over the largest need, at most: √2 (the record takes the texel's
+/// depth step and its diagonal each at its own worst vertex and adds them as a hypotenuse, which
+/// is at most √2 times their largest hypotenuse at one vertex; measured at most 1.225, face
+/// partitions under `parallel_1`).
+pub const NORMAL_OFFSET_MOST: f64 = std::f64::consts::SQRT_2 + 1e-6;
+/// The records' depth bias (constant + slope · tan α) over every sampled need, at least (the
+/// records' `f32` values: measured at least 1 − 6·10⁻⁸).
+pub const DEPTH_BIAS_LEAST: f64 = 1.0 - 1e-6;
+/// Each term of the records' depth bias over its own largest need, at most: the constant over the
+/// need at α = 0, the slope term over the need at α = 89° (measured at most 1.0017 over every
+/// built-in case at 320 × 240 and 640 × 480 in both clip-depth conventions: the grid of normals
+/// comes within 3.75° of the texel's diagonal); a term doubled misses it.
+pub const DEPTH_BIAS_MOST: f64 = 1.01;
+/// The record's `texel_world` against the largest texel edge measured over the rebuilt B,
+/// relatively (the record's `f32`: measured within 5.3·10⁻⁸).
+pub const TEXEL_WORLD_REL_DIFF: f64 = 1e-5;
+
+/// The geometry targets ([`crate::geometry::Geometry`]) `g` violates.
+pub fn geometry_violations(g: &crate::geometry::Geometry) -> Vec<String> {
+    let mut v = Vec::new();
+    let mut at_most = |name: &str, got: f64, limit: f64| {
+        if got.is_nan() || got > limit {
+            v.push(format!("{name} = {got:.4e}, limit ≤ {limit:e}"));
+        }
+    };
+    at_most(
+        "body_rel_diff (FrameMap::body against the focus body rebuilt here)",
+        g.body_rel_diff,
+        BODY_REL_DIFF,
+    );
+    if let Some(w) = g.window_fill {
+        at_most(
+            "window_fill (the rebuilt body's s, t extremes against ±1)",
+            w,
+            WINDOW_FILL,
+        );
+    }
+    if let Some(d) = g.stable_half_width_rel_diff {
+        at_most(
+            "stable_half_width_rel_diff (the window against the least sphere of the slice)",
+            d,
+            STABLE_HALF_WIDTH_REL_DIFF,
+        );
+    }
+    if let Some(d) = g.stable_centre_texels {
+        at_most(
+            "stable_centre_texels (the window's centre against the least sphere's)",
+            d,
+            STABLE_CENTRE_TEXELS,
+        );
+    }
+    if let Some(d) = g.clipmap_rel_diff {
+        at_most(
+            "clipmap_rel_diff (the levels against the rule derived from the frustum)",
+            d,
+            CLIPMAP_REL_DIFF,
+        );
+    }
+    at_most(
+        "normal_offset_ratio[1] (the records' normal offset over the largest need)",
+        g.normal_offset_ratio[1],
+        NORMAL_OFFSET_MOST,
+    );
+    at_most(
+        "depth_bias_ratio[1] (each depth-bias term over its own largest need)",
+        g.depth_bias_ratio[1],
+        DEPTH_BIAS_MOST,
+    );
+    at_most(
+        "|texel_world_ratio − 1| (the record's texel_world against the measured texel)",
+        (g.texel_world_ratio - 1.0).abs(),
+        TEXEL_WORLD_REL_DIFF,
+    );
+    let mut at_least = |name: &str, got: f64, limit: f64| {
+        if got.is_nan() || got < limit {
+            v.push(format!("{name} = {got:.6}, limit ≥ {limit}"));
+        }
+    };
+    at_least(
+        "normal_offset_ratio[0] (the records' normal offset over every need)",
+        g.normal_offset_ratio[0],
+        NORMAL_OFFSET_LEAST,
+    );
+    at_least(
+        "depth_bias_ratio[0] (the records' depth bias over every need)",
+        g.depth_bias_ratio[0],
+        DEPTH_BIAS_LEAST,
+    );
+    v
+}
+
 /// The targets `case` violates, one line each naming the target, the measured value and the
 /// limit; empty when it meets them all.
 pub fn violations(case: &CaseSummary) -> Vec<String> {
@@ -285,6 +397,17 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
     }
     for p in case.paths.iter().flatten() {
         v.extend(path_violations(p));
+    }
+    v.extend(geometry_violations(&case.geometry));
+    if case.overlay.lens_colour_mismatches > 0 {
+        v.push(format!(
+            "lens_colour_mismatches (the GPU's lens overlay against the Rust lens_colour) = {}, \
+             limit ≤ 0",
+            case.overlay.lens_colour_mismatches
+        ));
+    }
+    if case.overlay.lens_colour_pixels == 0 {
+        v.push("lens_colour_pixels (overlay pixels compared) = 0, limit ≥ 1".into());
     }
     v
 }

@@ -688,6 +688,16 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
         "shimmer_changed_fraction",
         "shimmer_points",
         "clip_depth",
+        "body_rel_diff",
+        "window_fill",
+        "stable_half_width_rel_diff",
+        "stable_centre_texels",
+        "clipmap_rel_diff",
+        "normal_offset_ratio",
+        "depth_bias_ratio",
+        "texel_world_ratio",
+        "lens_colour_pixels",
+        "lens_colour_mismatches",
         "paths",
     ];
     expect.sort_unstable();

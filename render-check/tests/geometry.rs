@@ -1,0 +1,205 @@
+//! The geometry measurements ([`render_check::geometry`]): hand-computed values of the reference
+//! constructions, every built-in set-up and scheme meeting the targets (built on the CPU, no
+//! rendering), and each target failing when the crate's output is changed as a faulty crate
+//! would change it.
+
+use glam::{DMat4, DVec3, DVec4};
+use render_check::geometry::{clipmap_offset, least_sphere, measure, vertices, Geometry};
+use render_check::schemes::{build, schemes_for, setups, Built, Scheme, View};
+use render_check::targets::geometry_violations;
+use shadow_aliasing::maps::ClipDepth;
+
+fn case(setup: &str, scheme: Scheme, w: u32, h: u32) -> (View, render_check::scene::Scene, Built) {
+    let s = setups().into_iter().find(|s| s.name == setup).unwrap();
+    let view = View::new(&s.scene.camera, s.scene.light(), w, h).unwrap();
+    let built = build(
+        scheme,
+        &view,
+        &s.scene,
+        s.scene.map_resolution,
+        None,
+        ClipDepth::ZeroToOne,
+    )
+    .unwrap();
+    (view, s.scene, built)
+}
+
+fn geometry(setup: &str, scheme: Scheme, edit: impl Fn(&mut Built)) -> Geometry {
+    let (view, scene, mut built) = case(setup, scheme, 320, 240);
+    edit(&mut built);
+    measure(scheme, &view, &scene, &built, scene.map_resolution)
+}
+
+fn fails(g: &Geometry, target: &str) -> bool {
+    geometry_violations(g).iter().any(|l| l.starts_with(target))
+}
+
+/// Every built-in set-up and scheme at both screen sizes the binary and the self-test use, in
+/// both clip-depth conventions (the bias records' signs differ), meets the geometry targets.
+#[test]
+fn every_builtin_case_meets_the_geometry_targets() {
+    for (w, h) in [(320, 240), (640, 480)] {
+        for depth in [ClipDepth::ZeroToOne, ClipDepth::Reversed] {
+            for s in setups() {
+                for scheme in schemes_for(&s.name) {
+                    let view = View::new(&s.scene.camera, s.scene.light(), w, h).unwrap();
+                    let res = s.scene.map_resolution;
+                    let built = build(scheme, &view, &s.scene, res, None, depth).unwrap();
+                    let g = measure(scheme, &view, &s.scene, &built, res);
+                    let v = geometry_violations(&g);
+                    assert!(v.is_empty(), "{} {} {w}×{h}: {v:?}", s.name, scheme.name());
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn vertices_of_a_box_cut_by_a_plane() {
+    // The unit cube [0, 1]³ cut by x + y ≤ 1: a prism with 6 vertices.
+    let mut planes = vec![
+        DVec4::new(1.0, 0.0, 0.0, -1.0),
+        DVec4::new(-1.0, 0.0, 0.0, 0.0),
+        DVec4::new(0.0, 1.0, 0.0, -1.0),
+        DVec4::new(0.0, -1.0, 0.0, 0.0),
+        DVec4::new(0.0, 0.0, 1.0, -1.0),
+        DVec4::new(0.0, 0.0, -1.0, 0.0),
+    ];
+    assert_eq!(vertices(&planes, 1e-12).len(), 8);
+    let n = DVec3::new(1.0, 1.0, 0.0).normalize();
+    planes.push(n.extend(-n.dot(DVec3::new(1.0, 0.0, 0.0))));
+    let v = vertices(&planes, 1e-12);
+    assert_eq!(v.len(), 6, "{v:?}");
+    assert!(v.iter().all(|p| p.x + p.y <= 1.0 + 1e-12));
+    assert!(v
+        .iter()
+        .any(|p| p.distance(DVec3::new(1.0, 0.0, 1.0)) < 1e-12));
+}
+
+#[test]
+fn least_sphere_hand_values() {
+    // Corner slope k = 0.5 √2 (tan θ = 0.5, square): over [1, 3] the equal-distance centre,
+    // (1 + 3)/2 · (1 + k²) = 3, is the far face's: R = 3 k.
+    let k = 0.5 * 2f64.sqrt();
+    let (c, r) = least_sphere(1.0, 3.0, k);
+    assert!(
+        (c - 3.0).abs() < 1e-6 && (r - 3.0 * k).abs() < 1e-9,
+        "{c} {r}"
+    );
+    // [10, 11]: the equal-distance centre 15.75 lies beyond the slice: the far ring's centre.
+    let (c, r) = least_sphere(10.0, 11.0, k);
+    assert!(
+        (c - 11.0).abs() < 1e-6 && (r - 11.0 * k).abs() < 1e-9,
+        "{c} {r}"
+    );
+    // [1, 100], k = 0.1: c = 50.5 · 1.01 = 51.005, R = hypot(48.995, 10) = hypot(50.005, 0.1).
+    let (c, r) = least_sphere(1.0, 100.0, 0.1);
+    assert!((c - 51.005).abs() < 1e-6, "{c}");
+    assert!((r - 48.995f64.hypot(10.0)).abs() < 1e-6, "{r}");
+}
+
+#[test]
+fn clipmap_rule_hand_values_on_both_branches() {
+    let t = 30f64.to_radians().tan();
+    // 640 × 480, 1024²: matched −0.5 + log₂(t 1024 / (0.04 · 480)) = 4.4445 < log₂(k / 0.01)
+    // with k = √(1 + t² (1 + 16/9)) = 1.38778: the coverage bound binds, L = 7.1166.
+    let l = clipmap_offset(t, 4.0 / 3.0, 480, 1024, 0.01, -0.5);
+    assert!((l - 7.1166).abs() < 1e-4, "{l}");
+    // 80 × 60: matched = −0.5 + log₂(t 1024 / 2.4) = 7.4445 > 7.1166: it does not bind.
+    let l = clipmap_offset(t, 4.0 / 3.0, 60, 1024, 0.01, -0.5);
+    assert!((l - 7.4445).abs() < 1e-4, "{l}");
+}
+
+#[test]
+fn clipmap_levels_match_the_rule_where_the_coverage_bound_does_not_bind() {
+    // An 80 × 60 image: the levels follow the pixel-matching branch alone.
+    for setup in ["overhead", "grazing_10"] {
+        let (view, scene, built) = case(setup, Scheme::Clipmap, 80, 60);
+        let g = measure(Scheme::Clipmap, &view, &scene, &built, 1024);
+        assert!(g.clipmap_rel_diff.unwrap() < 1e-9, "{g:?}");
+        assert!(
+            (built.clipmap[0] - 7.4445).abs() < 1e-4,
+            "{:?}",
+            built.clipmap
+        );
+    }
+}
+
+#[test]
+fn the_geometry_targets_fail_on_faulty_output() {
+    // A clipmap whose coverage bound is k² instead of k (no square root): L moves by log₂ k.
+    let k = (1.0 + 30f64.to_radians().tan().powi(2) * (1.0 + 16.0 / 9.0)).sqrt();
+    let g = geometry("overhead", Scheme::Clipmap, |b| b.clipmap[0] += k.log2());
+    assert!(fails(&g, "clipmap_rel_diff"), "{g:?}");
+    // Face maps fitted to all of B: their bodies the first map's of a single LiSPSM map.
+    let (_, _, whole) = case("tilted_45", Scheme::Lispsm, 320, 240);
+    let g = geometry("tilted_45", Scheme::Faces, |b| {
+        for body in &mut b.bodies {
+            body.clone_from(&whole.bodies[0]);
+        }
+    });
+    assert!(fails(&g, "body_rel_diff"), "{g:?}");
+    // A window 0.5 % too wide (s and t scaled about the centre).
+    let g = geometry("behind_5", Scheme::Lispsm, |b| {
+        b.maps[0].built = DMat4::from_scale(DVec3::new(0.995, 0.995, 1.0)) * b.maps[0].built;
+    });
+    assert!(fails(&g, "window_fill"), "{g:?}");
+    // A stable cascade 5 % wider, and one moved by a texel.
+    let g = geometry("tilted_45", Scheme::StableCascades, |b| {
+        b.maps[1].built =
+            DMat4::from_scale(DVec3::new(1.0 / 1.05, 1.0 / 1.05, 1.0)) * b.maps[1].built;
+    });
+    assert!(fails(&g, "stable_half_width_rel_diff"), "{g:?}");
+    let g = geometry("tilted_45", Scheme::StableCascades, |b| {
+        b.maps[2].built =
+            DMat4::from_translation(DVec3::new(2.0 / 1024.0, 0.0, 0.0)) * b.maps[2].built;
+    });
+    assert!(fails(&g, "stable_centre_texels"), "{g:?}");
+    // Bias records sized for the kernel's width (doubled), and a normal offset 1/√2 too small.
+    let g = geometry("grazing_10", Scheme::Lispsm, |b| {
+        for m in &mut b.maps {
+            for r in [&mut m.record, &mut m.record_pcf1] {
+                r.normal_offset *= 2.0;
+                r.constant_depth *= 2.0;
+                r.slope_scaled_depth *= 2.0;
+            }
+        }
+    });
+    assert!(fails(&g, "normal_offset_ratio[1]"), "{g:?}");
+    assert!(fails(&g, "depth_bias_ratio[1]"), "{g:?}");
+    let g = geometry("grazing_10", Scheme::Uniform, |b| {
+        b.maps[0].record.normal_offset *= std::f32::consts::FRAC_1_SQRT_2;
+    });
+    assert!(fails(&g, "normal_offset_ratio[0]"), "{g:?}");
+    let g = geometry("grazing_10", Scheme::Uniform, |b| {
+        b.maps[0].record_pcf1.slope_scaled_depth *= 0.9;
+    });
+    assert!(fails(&g, "depth_bias_ratio[0]"), "{g:?}");
+    // The receivers left out of the frame (render-check's fault `receivers-unbounded`): every
+    // focus body its whole view slice.
+    let s = setups().into_iter().find(|s| s.name == "overhead").unwrap();
+    let view = View::new(&s.scene.camera, s.scene.light(), 320, 240).unwrap();
+    let fault = Some(render_check::faults::Fault::ReceiversUnbounded);
+    let built = build(
+        Scheme::Lispsm,
+        &view,
+        &s.scene,
+        1024,
+        fault,
+        ClipDepth::ZeroToOne,
+    )
+    .unwrap();
+    let g = measure(Scheme::Lispsm, &view, &s.scene, &built, 1024);
+    assert!(fails(&g, "body_rel_diff"), "{g:?}");
+    // A depth bias whose slope term alone is doubled, in an orthographic map (its constant term
+    // is the rounding alone).
+    let g = geometry("tilted_45", Scheme::Uniform, |b| {
+        b.maps[0].record.slope_scaled_depth *= 2.0;
+    });
+    assert!(fails(&g, "depth_bias_ratio[1]"), "{g:?}");
+    // texel_world halved.
+    let g = geometry("overhead", Scheme::Cascades, |b| {
+        b.maps[3].record.texel_world *= 0.5;
+    });
+    assert!(fails(&g, "|texel_world_ratio − 1|"), "{g:?}");
+}
