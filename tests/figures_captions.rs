@@ -685,12 +685,12 @@ fn martin_tan_fig6() {
         &[
             ("2004", N::Given("the paper's year")),
             ("6", N::Given("its figure")),
-            ("80", N::Given("the 80 % rule")),
-            ("1024", N::Given("the iterative variant's map lines")),
+            ("80", N::Given("(a) the paper's 80 % rule")),
             ("10", N::Given("a ring's elevation")),
             ("20", N::Given("a ring's elevation")),
             ("30", N::Given("a ring's elevation")),
             ("60", N::Given("a ring's elevation")),
+            ("1024", N::Given("the iterative variant's map lines")),
             ("1", N::Given("n")),
             ("100", N::Given("f")),
             ("30", N::Given("θ")),
@@ -703,7 +703,8 @@ fn martin_tan_fig6() {
     );
 }
 
-/// zhang-fig3: LiSPSM's λ = (n + √(fn))/sin θ at n = 1, f = 100, θ = 90°, 60°, 30°.
+/// zhang-fig3: LiSPSM's n′ (Zhang's λ) = (n + √(fn))/sin γ at n = 1, f = 100, γ = 90°, 60°,
+/// 30° (Zhang's θ).
 #[test]
 fn zhang_fig3() {
     let lambda = |deg: f64| (1.0 + 100f64.sqrt()) / deg.to_radians().sin();
@@ -714,10 +715,10 @@ fn zhang_fig3() {
             ("3", N::Given("its figure")),
             ("1", N::Given("n")),
             ("100", N::Given("f")),
-            ("30", N::Given("φ, the half field of view")),
-            ("90", N::Given("the first row's θ")),
-            ("60", N::Given("the second row's θ")),
-            ("30", N::Given("the third row's θ")),
+            ("30", N::Given("θ, the half field of view (Zhang's φ)")),
+            ("90", N::Given("the first row's γ")),
+            ("60", N::Given("the second row's γ")),
+            ("30", N::Given("the third row's γ")),
             ("2", N::Given("the factor 2 of E_p = 2 m_z, E_q = 2 m_x")),
             (
                 "1",

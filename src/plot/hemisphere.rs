@@ -136,20 +136,21 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let (n, f) = (view.near(), view.far());
     let overhead = (f / n - 1.0) / (2.0 * view.tan_half_fov());
     let caption = vec![format!(
-        "Lloyd et al. 2006, Fig. 7: S̄ = M_x M_z (texels per image pixel), computed from each \
-         scheme's light transform, for light directions {step}° apart (centre overhead; rings at \
-         10°, 20°, 30°, 60° elevation); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         θ\u{a0}=\u{a0}{theta:.0}°. (a)–(d) share one log scale; (d) at the n′ of least S̄; \
-         (e) is (b)\u{a0}÷\u{a0}(c) on its own scale. Overhead, (b) and (c) are Eq 12's \
+        "Lloyd et al. 2006, Fig. 7: S̄ = M_x M_z (texels per image pixel), from each scheme's \
+         light transform, for lights {step}° apart seen from above: overhead at the \
+         centre, rings of equal elevation 10°, 20°, 30°, 60° above the horizon (the rim). \
+         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of view \
+         θ\u{a0}=\u{a0}{theta:.0}°. (a)–(d) share one log scale; (d) at the warp parameter n′ \
+         of least S̄; (e) is (b)\u{a0}÷\u{a0}(c). Overhead, (b) and (c) are Eq 12's \
          {overhead:.0}.",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     )];
     // One column: at most five lines.
     let single_caption = format!(
-        "Lloyd et al. 2006, Fig. 7: S̄ for light directions {step}° apart; \
-         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°; (d) at the n′ \
-         of least S̄; (e) is (b)\u{a0}÷\u{a0}(c).",
+        "Lloyd et al. 2006, Fig. 7: S̄ for lights {step}° apart; rings: elevation 10°, 20°, \
+         30°, 60°, overhead at the centre; n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+         θ\u{a0}=\u{a0}{theta:.0}°; (d) at the n′ of least S̄; (e) is (b)\u{a0}÷\u{a0}(c).",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     );
@@ -189,18 +190,16 @@ impl Figure for Fig7 {
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let single = column() == Column::Single;
-        let caption: Vec<&str> = if single {
-            vec![self.single_caption.as_str()]
-        } else {
-            self.caption.iter().map(String::as_str).collect()
-        };
         // One column sets a title that keeps one line.
-        let title = if single {
-            "Storage factor over light directions"
-        } else {
-            "Storage factor over the hemisphere of light directions"
-        };
-        let body = frame(root, title, &caption)?;
+        let body = frame_by_column(
+            root,
+            [
+                "Storage factor over the hemisphere of light directions",
+                "Storage factor over light directions",
+            ],
+            &self.caption,
+            &self.single_caption,
+        )?;
         let (w, h) = body.dim_in_pixel();
         let (a, b, c, d) = (
             &self.panels[0],
@@ -230,18 +229,19 @@ impl Figure for Fig7 {
         let order = [(a, s), (b, s), (c, s), (d, s), (e, &self.ratio_scale)];
         let mut disk_rows = Vec::new();
         for (k, (p, scale)) in order.iter().enumerate() {
-            let r = draw_hemisphere_keyed(&cell(k as u32), &p.title, &p.grid, scale, k == 0)?;
+            let r =
+                draw_hemisphere_keyed(&cell(k as u32), &p.title, &p.grid, scale, k == 0, false)?;
             disk_rows.push(r);
         }
         if single {
-            // The sixth cell, right of (e): (e)'s bar over the bar of (a)–(d), both across,
-            // each named under its ticks.
+            // The sixth cell, right of (e): the bar of (a)–(d) over (e)'s, in the panels'
+            // order, both across, each named under its ticks.
             let last = body.clone().shrink((cw, 2 * ch), (w - cw, ch));
             let (_, lh) = last.dim_in_pixel();
             let half = (lh.saturating_sub(ROW_GAP)) / 2;
             let (top, bottom) = last.split_vertically(half);
-            draw_colour_bar_across(&top.margin(ROW_GAP, 0, 4, 4), &self.ratio_scale)?;
-            draw_colour_bar_across(&bottom.margin(ROW_GAP, 0, 4, 4), s)?;
+            draw_colour_bar_across(&top.margin(ROW_GAP, 0, 4, 4), s)?;
+            draw_colour_bar_across(&bottom.margin(ROW_GAP, 0, 4, 4), &self.ratio_scale)?;
         } else {
             // Upright, as tall as the disks: S̄'s right of (c), ending the row of (a)–(c)
             // with (d) under (a); (e)'s right of (e).
@@ -252,6 +252,37 @@ impl Figure for Fig7 {
         }
         Ok(())
     }
+}
+
+/// The body of a figure framed by its title and caption in the page's column: two columns set
+/// `titles[0]` and `caption`, one column the shorter `titles[1]` (one line) and
+/// `single_caption`.
+pub(super) fn frame_by_column<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    titles: [&str; 2],
+    caption: &[String],
+    single_caption: &str,
+) -> Result<DrawingArea<DB, Shift>, Fail> {
+    if column() == Column::Single {
+        frame(root, titles[1], &[single_caption])
+    } else {
+        let lines: Vec<&str> = caption.iter().map(String::as_str).collect();
+        frame(root, titles[0], &lines)
+    }
+}
+
+/// Draws `fig` into an SVG in `column`'s layout, captioned, and returns the SVG's text.
+#[cfg(test)]
+pub(super) fn svg_in<F: Figure>(fig: &F, column: Column) -> String {
+    use super::chart::read_svg::draw_svg;
+    use super::chart::with_page;
+    let size = match column {
+        Column::Double => fig.size(),
+        Column::Single => fig.single_size().expect("a one-column layout"),
+    };
+    with_page(false, column, || {
+        draw_svg(size, |area| fig.draw(area).expect("the figure draws"))
+    })
 }
 
 /// The space under each row of hemispheres, in units (twice that in one column, where the
@@ -374,10 +405,15 @@ mod tests {
             fig.ratio_scale
                 .level_colour(fig.ratio_scale.level(v).unwrap())
         };
+        // The neutral grey #c6c6c6 at a ratio of 1 (grey: its channels within 4 of each other
+        // and of 0xc6, to within the band's width), bluish at 10⁻¹ and dark red at 10⁴.
         let RGBColor(r, g, b) = colour(1.0);
-        assert!(r.min(g).min(b) >= 0xe8, "{r:x} {g:x} {b:x}");
+        assert!(
+            [r, g, b].iter().all(|c| c.abs_diff(0xc6) <= 4),
+            "{r:x} {g:x} {b:x}"
+        );
         let (RGBColor(r0, _, b0), RGBColor(r1, _, b1)) = (colour(0.1), colour(1e4));
-        assert!(b0 > r0 + 60 && r1 > b1 + 60, "{r0} {b0} {r1} {b1}");
+        assert!(b0 > r0 + 20 && r1 > b1 + 40, "{r0} {b0} {r1} {b1}");
         assert_eq!(fig.scale.map, super::super::chart::ColourMap::Viridis);
         assert!(
             bands(2).len() * 3 < bands(1).len(),
@@ -394,19 +430,12 @@ mod tests {
     /// (10°, 20°, 30°, 60°, "overhead") is written once, in (a); and the caption names (e).
     #[test]
     fn fig7_bars_are_round_decades_and_the_rings_are_keyed() {
-        use super::super::chart::read_svg::{draw_svg, texts};
-        use super::super::chart::with_page;
+        use super::super::chart::read_svg::texts;
         let fig = fig7().map_err(|e| e.named("lloyd2006-fig7")).unwrap();
         assert!(fig.caption_text().contains("(e) is (b)\u{a0}÷\u{a0}(c)"));
         assert!(fig.single_caption.contains("(e) is (b)\u{a0}÷\u{a0}(c)"));
         for column in [Column::Double, Column::Single] {
-            let size = match column {
-                Column::Double => fig.size(),
-                Column::Single => fig.single_size().unwrap(),
-            };
-            let svg = with_page(false, column, || {
-                draw_svg(size, |area| fig.draw(area).unwrap())
-            });
+            let svg = svg_in(&fig, column);
             let all = texts(&svg);
             let powers: Vec<&str> = all
                 .iter()
@@ -418,7 +447,7 @@ mod tests {
                 !all.iter().any(|t| t.1.contains("×10")),
                 "{column:?}: a mantissa on a bar"
             );
-            for key in ["10°", "20°", "30°", "60°", "overhead"] {
+            for key in ["10°", "20°", "30°", "60°", "90°"] {
                 let n = all.iter().filter(|t| t.1 == key).count();
                 assert_eq!(n, 1, "{column:?}: {key} written {n} times");
             }

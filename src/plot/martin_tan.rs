@@ -7,10 +7,10 @@
 //! the map the focus region covers ([`crate::maps::tsm::TsmMap::focus_area`]).
 
 use super::chart::{
-    column, draw_colour_bar_across, draw_hemisphere_keyed, draw_line_chart, frame, linspace, Axis,
+    column, draw_colour_bar_across, draw_hemisphere_keyed, draw_line_chart, linspace, Axis,
     ColourScale, LineChart, Marker, PolarGrid, Series, PALETTE,
 };
-use super::hemisphere::{draw_bar, BAR_WIDTH};
+use super::hemisphere::{draw_bar, frame_by_column, BAR_WIDTH};
 use super::Column;
 use super::{Fail, Figure};
 use crate::maps::tsm::{tsm, TsmOptions, TsmSearch};
@@ -155,18 +155,19 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         ),
         profile,
         caption: vec![format!(
-            "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map (80 % rule; \
-             iterative: over 1024 lines) covered by the focus region, n to n\u{a0}+\u{a0}δ, for \
-             light directions over the hemisphere (a; rings at 10°, 20°, 30°, 60°) and in the \
-             view's vertical plane (b). n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+            "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map covered by the focus \
+             region (depths n to n\u{a0}+\u{a0}δ). (a) The paper's 80\u{a0}% rule over \
+             the hemisphere seen from above (rings: elevation 10°, 20°, 30°, 60°; line: the \
+             view's vertical plane); (b) in that plane, also the iterative variant (best of 1024 \
+             lines). n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of view \
              θ\u{a0}=\u{a0}{theta:.0}°, δ\u{a0}=\u{a0}{FOCUS}. {JUMP_GLYPH}: light exactly \
              behind or in front, {dueling:.4}.",
         )],
         single_caption: format!(
             "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map covered by the focus \
-             region (n to n\u{a0}+\u{a0}δ); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-             θ\u{a0}=\u{a0}{theta:.0}°, δ\u{a0}=\u{a0}{FOCUS}. Rings at 10°, 20°, 30°, 60°; \
-             {JUMP_GLYPH}: {dueling:.4}."
+             region (n to n\u{a0}+\u{a0}δ); (a) the 80\u{a0}% rule; rings: elevation 10°, \
+             20°, 30°, 60°; line: (b)'s plane; n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+             θ\u{a0}=\u{a0}{theta:.0}°, δ\u{a0}=\u{a0}{FOCUS}; {JUMP_GLYPH}: {dueling:.4}."
         ),
     })
 }
@@ -194,18 +195,16 @@ impl Figure for Fig6 {
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let single = column() == Column::Single;
-        let caption: Vec<&str> = if single {
-            vec![self.single_caption.as_str()]
-        } else {
-            self.caption.iter().map(String::as_str).collect()
-        };
         // One column sets a title that keeps one line.
-        let title = if single {
-            "Focus region's share of the map"
-        } else {
-            "Area of the focus region in the trapezoidal map"
-        };
-        let body = frame(root, title, &caption)?;
+        let body = frame_by_column(
+            root,
+            [
+                "Area of the focus region in the trapezoidal map",
+                "Focus region's share of the map",
+            ],
+            &self.caption,
+            &self.single_caption,
+        )?;
         let (w, h) = body.dim_in_pixel();
         if single {
             // The hemisphere with its bar upright beside it (its name right of its ticks,
@@ -213,7 +212,8 @@ impl Figure for Fig6 {
             let (top, bottom) = body.split_vertically(h * 38 / 100);
             let (tw, _) = top.dim_in_pixel();
             let (disk, bar) = top.split_horizontally(tw.saturating_sub(BAR_WIDTH));
-            let rows = draw_hemisphere_keyed(&disk, PANEL_A, &self.grid, &self.scale, true)?;
+            let rows =
+                draw_hemisphere_keyed(&disk, PANEL_A_SINGLE, &self.grid, &self.scale, true, true)?;
             // The bar's name no taller than the disk.
             let mut scale = self.scale.clone();
             scale.axis.label = "(a) share (log scale)".into();
@@ -232,7 +232,7 @@ impl Figure for Fig6 {
             let (lw, lh) = left.dim_in_pixel();
             let side = lw.min(lh.saturating_sub(28 + BAR_ACROSS));
             let (disk, rest) = left.split_vertically(28 + side);
-            draw_hemisphere_keyed(&disk, PANEL_A, &self.grid, &self.scale, true)?;
+            draw_hemisphere_keyed(&disk, PANEL_A, &self.grid, &self.scale, true, true)?;
             let (bar, _) = rest.split_vertically(BAR_ACROSS);
             draw_colour_bar_across(&bar.margin(4, 0, 16, 16), &self.scale)?;
             draw_line_chart(&right, &self.profile)?;
@@ -242,7 +242,9 @@ impl Figure for Fig6 {
 }
 
 /// (a)'s title.
-const PANEL_A: &str = "(a) over the hemisphere";
+const PANEL_A: &str = "(a) 80 % rule over the hemisphere";
+/// (a)'s title in one column, as wide as its disk's panel allows.
+const PANEL_A_SINGLE: &str = "(a) 80 % rule";
 
 /// The height of a colour bar laid across, with its tick labels and name, in units.
 const BAR_ACROSS: u32 = 58;
@@ -427,7 +429,7 @@ mod tests {
         });
         let all = texts(&svg);
         let y = |start: &str| all.iter().find(|t| t.1.starts_with(start)).unwrap().2;
-        assert_eq!(y("(a) over"), y("(b) in"));
+        assert_eq!(y("(a) 80"), y("(b) in the"));
         let x = |label: &str| -> f64 {
             let (line, _, _) = all
                 .iter()

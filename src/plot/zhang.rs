@@ -1,5 +1,6 @@
 //! Zhang, Zhao & Sun 2009 Fig 3: side views of the perspective aliasing E_p, E_q and E_p×E_q
-//! inside the view frustum for SSM, LiSPSM and TSM at light angles θ = 90°, 60°, 30°.
+//! inside the view frustum for SSM, LiSPSM and TSM at light–view angles γ = 90°, 60°, 30°
+//! (Zhang's θ; γ as in the crate's other figures, whose θ is the half field of view).
 //!
 //! Every value is measured: the renderer-facing matrix of each scheme is built by
 //! [`crate::maps::warp`] for a light above and in front of the viewer (Zhang's Fig 2), and
@@ -23,7 +24,7 @@ use std::f64::consts::FRAC_PI_6;
 
 /// TSM's focus distance δ beyond the near plane (the 80 % rule maps the point n + δ on the view
 /// axis to the 80 % line). Zhang does not state his; this one gives λ_TSM < λ_LiSPSM at
-/// θ = 90° and 60°, as his §3.1 says of his.
+/// γ = 90° and 60° (his θ), as his §3.1 says of his.
 pub(super) const TSM_FOCUS: f64 = 10.0;
 
 /// Grid cells along the depth axis (from the near to the far plane) and across it.
@@ -37,9 +38,9 @@ struct Panel {
 
 /// The 3 × 9 panels, their labels and a colour scale per quantity.
 pub(super) struct Fig3 {
-    /// rows[θ][scheme][quantity]
+    /// rows[γ][scheme][quantity]
     rows: Vec<Vec<Vec<Panel>>>,
-    /// "θ = 90°" per row.
+    /// "γ = 90°" per row.
     row_angles: Vec<String>,
     scheme_labels: Vec<String>,
     /// One scale per quantity (E_p, E_q, E_p × E_q), over its range in all nine panels.
@@ -70,7 +71,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     let mut ranges = [(f64::INFINITY, 0.0f64); 3];
     for (r, theta_deg) in [90.0f64, 60.0, 30.0].into_iter().enumerate() {
         let theta = theta_deg.to_radians();
-        // Source above and in front of the viewer: light travels along (0, −sin θ, cos θ).
+        // Source above and in front of the viewer: light travels along (0, −sin γ, cos γ).
         // (TiltSide::InFront of measure::tilted_twin).
         let light = DVec3::new(0.0, -theta.sin(), theta.cos());
         let mut row = Vec::new();
@@ -118,7 +119,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
             row.push(panels);
         }
         rows.push(row);
-        row_angles.push(format!("θ = {theta_deg:.0}°"));
+        row_angles.push(format!("γ = {theta_deg:.0}°"));
         lambdas_all.push(lambdas);
     }
     // Each quantity's colour bar spans the whole decades round its measured range over its
@@ -132,26 +133,27 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
             ColourScale::smooth(Axis::log10(format!("{q} (log scale)"), lo, hi))
         })
         .collect();
-    // LiSPSM's λ (its built matrix's n′) per angle θ, for the caption.
+    // LiSPSM's n′ (Zhang's λ, its built matrix's) per angle γ, for the caption.
     let lispsm: Vec<&str> = lambdas_all.iter().map(|ls| ls[1].as_str()).collect();
     let angles: Vec<&str> = row_angles
         .iter()
-        .map(|a| a.trim_start_matches("θ = "))
+        .map(|a| a.trim_start_matches("γ = "))
         .collect();
     let phi = view.half_fov().to_degrees();
     let caption = format!(
-        "Zhang et al. 2009, Fig. 3, measured in the frustum's vertical plane: \
-         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of view φ\u{a0}=\u{a0}{phi:.0}°; \
-         light above and in front at θ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). \
-         The factor 2: Zhang's screen and map span [−1,\u{a0}1]. LiSPSM's \
-         λ\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}θ: {}; TSM: 80\u{a0}% rule, \
-         δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper, a bar per quantity, no scene insets.",
+        "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
+         view θ\u{a0}=\u{a0}{phi:.0}° (Zhang's φ); light above and in front at \
+         γ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). The factor 2: Zhang's screen \
+         and map span [−1,\u{a0}1]. LiSPSM's warp parameter \
+         n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
+         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper, a bar per quantity, \
+         no scene insets.",
         angles.join(", "),
         lispsm.join(", "),
     );
     let single_caption = format!(
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
-         view φ\u{a0}=\u{a0}{phi:.0}°; light above and in front at θ\u{a0}=\u{a0}{} from the \
+         view θ\u{a0}=\u{a0}{phi:.0}°; light above and in front at γ\u{a0}=\u{a0}{} from the \
          view direction. The factor 2: Zhang's screen and map span [−1,\u{a0}1]. TSM: \
          80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}.",
         angles.join(", "),
@@ -186,7 +188,7 @@ fn fmt_lambda(n: NPrime) -> String {
     }
 }
 
-/// The layout, in units: the row labels' column (θ and the y ticks, left of the first panel,
+/// The layout, in units: the row labels' column (γ and the y ticks, left of the first panel,
 /// the height's name over them), the z labels' row under the last row of panels, the gaps
 /// between panels across and between rows, between blocks, each block's title and the
 /// schemes' headings, and the colour bar under each block (two columns) or beside it (one).
@@ -199,10 +201,10 @@ const BLOCK_GAP: u32 = 16;
 const BLOCK_TITLE: u32 = 22;
 const HEADINGS: u32 = 18;
 const BAR: u32 = 52;
-/// One column: the row labels' column (θ turned, the ticks ±40), the gaps between panels
+/// One column: the row labels' column (γ turned, the ticks ±30), the gaps between panels
 /// across (room for a column's "100" and the next one's "0") and between rows, a block's
 /// title, the gap between blocks, and the upright colour bar's column.
-const ROW_LABEL_1: u32 = 42;
+const ROW_LABEL_1: u32 = 46;
 const GAP_1: u32 = 10;
 const ROW_GAP_1: u32 = 3;
 const BLOCK_TITLE_1: u32 = 17;
@@ -281,9 +283,9 @@ impl Block {
 }
 
 impl Fig3 {
-    /// Draws the panels of quantity `q` into `block` on `body`: a row per angle θ, a column
+    /// Draws the panels of quantity `q` into `block` on `body`: a row per angle γ, a column
     /// per scheme, each panel's frustum outline and grey frame at the data's extent; the
-    /// first column's panels carry θ (`row_name` of it) and the y ticks from `y_first` every
+    /// first column's panels carry γ (`row_name` of it) and the y ticks from `y_first` every
     /// `y_step`; the rows of
     /// `z_under` columns of the last row the depth's ticks, the `z_named` one its name.
     #[allow(clippy::too_many_arguments)]
@@ -317,9 +319,9 @@ impl Fig3 {
                     desc_size: TEXT,
                     margin: 0,
                 };
-                // θ as the first panel's y description, with the height y at −40, 0 and 40 in
-                // two columns, at 40 in one (its rows are too low for more): one y scale for
-                // every row.
+                // γ as the first panel's y description, with the height y at −40, 0 and 40 in
+                // two columns, at −30 and 30 in one (its rows are too low for 0 between them,
+                // and ±40 stood 4 units from the next row's): one y scale for every row.
                 let y = if labelled {
                     Axis::every(row_name(&self.row_angles[r]), -half, half, y_first, y_step)
                 } else {
@@ -377,7 +379,7 @@ impl Fig3 {
     }
 
     /// Two columns: three blocks side by side, one per quantity, each under its title and the
-    /// schemes' headings, with its colour bar across under it; θ and the y ticks left of the
+    /// schemes' headings, with its colour bar across under it; γ and the y ticks left of the
     /// first block's rows, the height's name over them, z labels under each block's first
     /// column. Panels to scale.
     fn draw_double<DB: DrawingBackend>(&self, body: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -426,8 +428,8 @@ impl Fig3 {
 
     /// One column: the three blocks stacked under one row of the schemes' headings, each under
     /// its title with its colour bar upright beside it (its name turned, reading upwards);
-    /// θ (Zhang's light–view angle) turned left of each row with the y tick 40; the depth's
-    /// ticks under every column of the last block, named under the middle one. The panels
+    /// γ (the light–view angle, Zhang's θ) turned left of each row with the y ticks ±30; the
+    /// depth's ticks under every column of the last block, named under the middle one. The panels
     /// are as wide as the column allows and as high as the page's 420 pt allow, so that
     /// their heights are drawn at about half the scale of their depths (the y ticks say so).
     fn draw_single<DB: DrawingBackend>(&self, body: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -450,8 +452,8 @@ impl Fig3 {
             };
             if q == 0 {
                 self.draw_headings(body, b, HEADINGS - 2)?;
-                // The row labels' column: θ turned, then the height's ticks.
-                for (text, x) in [("θ", 7), ("y", ROW_LABEL_1 as i32 - 12)] {
+                // The row labels' column: γ turned, then the height's ticks.
+                for (text, x) in [("γ", 7), ("y", ROW_LABEL_1 as i32 - 12)] {
                     body.draw(&Text::new(
                         text,
                         (x, HEADINGS as i32 - 2),
@@ -473,8 +475,8 @@ impl Fig3 {
                 body,
                 q,
                 b,
-                (ROW_LABEL_1, half, 40.0, 1000.0),
-                &|a| a.trim_start_matches("θ = ").to_string(),
+                (ROW_LABEL_1, half, -30.0, 60.0),
+                &|a| a.trim_start_matches("γ = ").to_string(),
                 under,
                 Some(1),
             )?;
@@ -530,7 +532,7 @@ mod tests {
     use crate::analytic::global::{zhang_ep, zhang_eq};
     use crate::LightAngle;
 
-    /// The measured side view at θ = 90° and 60° (LiSPSM row) equals Zhang's global
+    /// The measured side view at γ = 90° and 60° (LiSPSM row) equals Zhang's global
     /// representation (Eq 13, 14 with the corrected Appendix, `analytic::global`) at every
     /// cell centre inside the frustum; E_p × E_q is their product.
     /// A horizontal colour bar is one embedded image (abutting rectangles left seams, issue
@@ -616,11 +618,11 @@ mod tests {
     /// value of its nine panels, its ends whole decades (review: SSM's E_p at the apex,
     /// (f − n)/(n tan φ) = 99/tan 30° = 171.5 by Zhang's Eq 9, stood above the top tick of
     /// (a)'s bar, its end unlabelled): read back from both SVGs, every number written is a
-    /// power of ten 10<sup>n</sup> or one of the axes' 0, 40, −40, 100; E_p's bar reaches 10³ ≥ 171.5.
+    /// power of ten 10<sup>n</sup> or one of the axes' 0, ±40 (two columns), ±30 (one), 100;
+    /// E_p's bar reaches 10³ ≥ 171.5.
     #[test]
     fn colour_bars_are_ticked_at_powers_of_ten_and_hold_every_value() {
-        use super::super::chart::read_svg::{draw_svg, texts};
-        use super::super::chart::with_page;
+        use super::super::chart::read_svg::texts;
         let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
         for (q, scale) in fig.scales.iter().enumerate() {
             let (lo, hi) = scale.axis.range();
@@ -639,13 +641,7 @@ mod tests {
         assert!((apex - 171.47).abs() < 0.01);
         assert!(10f64.powf(fig.scales[0].axis.range().1) >= apex);
         for column in [Column::Double, Column::Single] {
-            let size = match column {
-                Column::Double => SIZE,
-                Column::Single => fig.single_size().unwrap(),
-            };
-            let svg = with_page(false, column, || {
-                draw_svg(size, |area| fig.draw(area).unwrap())
-            });
+            let svg = super::super::hemisphere::svg_in(&fig, column);
             let mut powers = 0;
             for (line, text, _) in texts(&svg) {
                 if !text.chars().any(|c| c.is_ascii_digit())
@@ -659,7 +655,7 @@ mod tests {
                     powers += 1;
                 } else {
                     assert!(
-                        ["0", "40", "−40", "100"].contains(&text.as_str()),
+                        ["0", "40", "−40", "30", "−30", "100"].contains(&text.as_str()),
                         "{column:?}: {text} is no power of ten"
                     );
                 }
@@ -668,19 +664,18 @@ mod tests {
         }
     }
 
-    /// One column keeps the text of the other figures' one-column forms (review X9: θ and
-    /// "z (eye depth)" were 8.871 units, 7.1 pt printed, against 10.48, 8.4 pt): read from its
-    /// SVG, no text of the figure is set smaller than 10.48 units but its sub- and
-    /// superscripts; the caption gives θ's values and says what θ and φ are (X2), and both
-    /// captions explain the factor 2 of E_p = 2 m_z.
+    /// One column keeps the text of the other figures' one-column forms (review X9: the angle
+    /// and "z (eye depth)" were 8.871 units, 7.1 pt printed, against 10.48, 8.4 pt): read from
+    /// its SVG, no text of the figure is set smaller than 10.48 units but its sub- and
+    /// superscripts; the captions give the light–view angle's values as γ, the crate's symbol
+    /// (the fourth review: Zhang's θ clashed with the other figures' half field of view θ),
+    /// and say what θ is (X2); the two-column one names Zhang's symbols and defines the n′ it
+    /// prints (review: λ undefined), and both explain the factor 2 of E_p = 2 m_z.
     #[test]
     fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
-        use super::super::chart::read_svg::{attr, draw_svg};
-        use super::super::chart::with_page;
+        use super::super::chart::read_svg::attr;
         let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
-        let svg = with_page(false, Column::Single, || {
-            draw_svg(fig.single_size().unwrap(), |area| fig.draw(area).unwrap())
-        });
+        let svg = super::super::hemisphere::svg_in(&fig, Column::Single);
         let smallest = svg
             .lines()
             .filter(|l| l.starts_with("<text"))
@@ -688,11 +683,28 @@ mod tests {
             .fold(f64::INFINITY, f64::min);
         assert!(smallest >= 10.48, "{smallest}");
         for c in [&fig.caption, &fig.single_caption] {
-            assert!(c.contains("90°, 60°, 30° from the view direction"), "{c}");
-            assert!(c.contains("half field of view φ"), "{c}");
+            assert!(
+                c.contains("γ\u{a0}=\u{a0}90°, 60°, 30° from the view direction"),
+                "{c}"
+            );
+            assert!(c.contains("half field of view θ\u{a0}=\u{a0}30°"), "{c}");
             assert!(c.contains("span [−1,\u{a0}1]"), "{c}");
             assert!(!c.contains("π/6"), "{c}");
+            assert_eq!(
+                c.matches('θ').count(),
+                1 + c.matches("Zhang's θ").count(),
+                "{c}"
+            );
         }
+        for symbol in [
+            "(Zhang's φ)",
+            "(Zhang's θ)",
+            "warp parameter n′",
+            "(Zhang's λ)",
+        ] {
+            assert!(fig.caption.contains(symbol), "{symbol}: {}", fig.caption);
+        }
+        assert_eq!(fig.caption.matches('λ').count(), 1, "{}", fig.caption);
     }
 
     #[test]
@@ -701,7 +713,7 @@ mod tests {
         let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
         for (r, theta_deg) in [(0usize, 90.0f64), (1, 60.0)] {
             let theta = LightAngle::new(theta_deg.to_radians()).unwrap();
-            // LiSPSM's λ = (n + √(fn))/sin θ.
+            // LiSPSM's n′ (Zhang's λ) = (n + √(fn))/sin γ.
             let lambda = NPrime::finite(11.0 / theta_deg.to_radians().sin()).unwrap();
             let panels = &fig.rows[r][1];
             let g = &panels[0].grid;

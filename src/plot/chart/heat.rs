@@ -1,16 +1,14 @@
 //! Heat maps: quantised colour scales, rectangular and hemispherical grids, colour bars.
 
-use super::super::canvas::Fine;
 use super::super::Fail;
 use super::axis::{Axis, Chart2d, PANEL_TITLE};
-use super::colour_map::{diverging_position, rdbu};
+use super::colour_map::{diverging, diverging_position};
 use super::raster::Raster;
 use super::ColourMap;
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use plotters_backend::BackendColor;
 
 /// A colour scale: a value range on an axis (linear or logarithmic), quantised into `levels`
 /// bands of a colour map ([`ColourMap`]: viridis, dark blue low, yellow high, for a quantity;
@@ -70,7 +68,7 @@ impl ColourScale {
                 } else {
                     0.5
                 };
-                rdbu(diverging_position(t, c))
+                diverging(diverging_position(t, c))
             }
         }
     }
@@ -333,19 +331,9 @@ pub(crate) fn hemisphere_direction(x: f64, y: f64) -> Option<(f64, f64)> {
     Some((elevation, azimuth))
 }
 
-/// The elevation rings of a hemisphere panel (degrees): every 10° over the horizon band, then
-/// 60°; the marked ones (30°, 60°) drawn darker.
-pub(crate) const RINGS: [(f64, bool); 5] = [
-    (0.0, false),
-    (10.0, false),
-    (20.0, false),
-    (30.0, true),
-    (60.0, true),
-];
-
 /// Draws a hemisphere panel: a disk of radius 1 with the field (one raster, transparent outside
-/// the disk), the elevation rings of [`RINGS`] (each on a light halo, so that it shows on dark
-/// colours too), and the directions named. Returns the rows of the disk's top and bottom in
+/// the disk), the elevation rings ([`super::hemisphere_key::draw_rings`]) and the directions
+/// named. Returns the rows of the disk's top and bottom in
 /// `area` (for a colour bar as tall as the disk).
 #[cfg(test)]
 pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
@@ -354,18 +342,20 @@ pub(crate) fn draw_hemisphere<DB: DrawingBackend>(
     grid: &PolarGrid,
     scale: &ColourScale,
 ) -> Result<(u32, u32), Fail> {
-    draw_hemisphere_keyed(area, title, grid, scale, false)
+    draw_hemisphere_keyed(area, title, grid, scale, false, true)
 }
 
-/// [`draw_hemisphere`], with the rings' elevations and "overhead" written in the disk where
-/// `key` ([`super::hemisphere_key`]): a figure keys one of its panels, so that without its
-/// caption it still says what the rings and the centre are.
+/// [`draw_hemisphere`], with the rings' elevations written in the disk where `key`
+/// ([`super::hemisphere_key`]): a figure keys one of its panels, so that without its caption it
+/// still says what the rings and the centre are; the horizontal diameter (the vertical plane
+/// through the view direction) drawn where `diameter`.
 pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     title: &str,
     grid: &PolarGrid,
     scale: &ColourScale,
     key: bool,
+    diameter: bool,
 ) -> Result<(u32, u32), Fail> {
     let (w, h) = area.dim_in_pixel();
     // Square plotting area centred in the panel.
@@ -415,39 +405,7 @@ pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
         let (u, v) = to_units(p);
         (u + f64::from(base.0), v + f64::from(base.1))
     };
-    let stroke = |points: Vec<(f64, f64)>, alpha: f64| {
-        area.draw(&Fine {
-            points,
-            colour: BackendColor {
-                alpha,
-                rgb: (60, 60, 60),
-            },
-            stroke: Some(1),
-        })
-    };
-    // A light halo under each inner ring, so that the dark ring shows on dark colours too.
-    let halo = |points: Vec<(f64, f64)>| {
-        area.draw(&Fine {
-            points,
-            colour: BackendColor {
-                alpha: 0.4,
-                rgb: (255, 255, 255),
-            },
-            stroke: Some(3),
-        })
-    };
-    for (deg, labelled) in RINGS {
-        let el = deg.to_radians();
-        let ring: Vec<(f64, f64)> = (0..=360)
-            .map(|k| abs(hemisphere_xy(el, f64::from(k).to_radians())))
-            .collect();
-        if deg > 0.0 {
-            halo(ring.clone())?;
-        }
-        stroke(ring, if labelled || deg == 0.0 { 1.0 } else { 0.75 })?;
-    }
-    // The vertical plane through the view direction: behind, overhead, in front.
-    stroke(vec![abs((-1.0, 0.0)), abs((1.0, 0.0))], 0.5)?;
+    super::hemisphere_key::draw_rings(area, &abs, diameter)?;
     let style = TextStyle::from((FONT, 13).into_font());
     let label = |text: &str, at: (f64, f64), pos: Pos| {
         area.draw(&Text::new(text.to_string(), to_px(at), style.pos(pos)))
@@ -457,21 +415,25 @@ pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
     let width = |t: &str| area.estimate_text_size(t, &style).map(|s| s.0 as i32);
     let (wb, wf) = (width("← behind")?, width("in front →")?);
     let (_, label_y) = to_px((0.0, 1.14));
-    let (mut lx, mut rx) = (left, right);
+    let (mut lx, mut rx, mut v) = (left, right, (label_y, VPos::Top));
     if wb + wf + 12 > right - left {
         let spare = (w as i32 - wb - wf - 12).max(0);
         lx = spare / 2;
         rx = w as i32 - spare / 2;
+        // Across the disk's top, ending 2 units above its rim (hanging from 1.14 they reached
+        // into a small disk).
+        let (_, rim) = to_px((0.0, 1.0));
+        v = (rim - 2, VPos::Bottom);
     }
     area.draw(&Text::new(
         "← behind",
-        (lx, label_y),
-        style.pos(Pos::new(HPos::Left, VPos::Top)),
+        (lx, v.0),
+        style.pos(Pos::new(HPos::Left, v.1)),
     ))?;
     area.draw(&Text::new(
         "in front →",
-        (rx, label_y),
-        style.pos(Pos::new(HPos::Right, VPos::Top)),
+        (rx, v.0),
+        style.pos(Pos::new(HPos::Right, v.1)),
     ))?;
     label(
         "viewer's right",
@@ -486,6 +448,7 @@ pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
 
 #[cfg(test)]
 mod tests {
+    use super::super::hemisphere_key::RINGS;
     use super::super::read_svg::{attr, draw_svg, embedded_images, visible, Image};
     use super::*;
     use std::f64::consts::FRAC_PI_2;
@@ -635,8 +598,7 @@ mod tests {
     /// from its SVG:
     /// - the rings lie where the azimuthal equidistant projection puts them, at (90° − el)/90°
     ///   of the horizon's radius (the orthographic view had the 30° ring at cos 30° = 0.87);
-    /// - each inner ring lies on a white halo of its own radius, wider than the ring, so that
-    ///   it shows on dark colours (issue 35);
+    /// - each ring is drawn once, one unit wide, with no halo beside it (issue 35);
     /// - no text lies inside the disk (ring labels and "overhead" covered the field, and a ring
     ///   crossed "overhead"), and the disk's top and bottom rows are returned;
     /// - the heat map is one RGBA image of at least 4 pixels per unit, transparent outside the
@@ -693,17 +655,15 @@ mod tests {
         let rings = circles(false);
         assert_eq!(rings.len(), RINGS.len());
         let (centre, horizon, _) = rings[0];
-        for (&(deg, _), &(_, r, _)) in RINGS.iter().zip(&rings) {
+        for (&deg, &(_, r, _)) in RINGS.iter().zip(&rings) {
             let want = horizon * (90.0 - deg) / 90.0;
             assert!((r - want).abs() < 0.6, "{deg}° ring at {r}, want {want}");
         }
-        let halos = circles(true);
-        assert_eq!(halos.len(), RINGS.len() - 1, "a halo under each inner ring");
-        for (h, ring) in halos.iter().zip(&rings[1..]) {
-            assert!(
-                (h.1 - ring.1).abs() < 1e-6 && h.2 > ring.2,
-                "{h:?} {ring:?}"
-            );
+        // Each ring once, in one style (the fourth review: a light halo beside each dark ring
+        // printed as a double ring): no white circle, every ring one unit wide.
+        assert!(circles(true).is_empty(), "a halo beside a ring");
+        for ring in &rings {
+            assert!((ring.2 - 1.0).abs() < 1e-9, "{ring:?}");
         }
         for l in lines.iter().filter(|l| l.starts_with("<text")) {
             let (x, y) = (attr(l, "x").unwrap(), attr(l, "y").unwrap());

@@ -1,27 +1,75 @@
-//! The key of a hemisphere panel, written inside its disk: each elevation ring's angle on the
-//! ring and "overhead" at the centre, so that a figure without its caption still says what the
-//! rings and the centre are.
+//! The rings of a hemisphere panel and their key, written inside its disk: each elevation
+//! ring's angle on the ring and 90° at the centre (overhead), so that a figure without its
+//! caption still says what the rings and the centre are.
 
+use super::super::canvas::Fine;
 use super::super::Fail;
 use super::heat::hemisphere_xy;
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
+use plotters_backend::BackendColor;
+
+/// The elevation rings of a hemisphere panel (degrees): the horizon, every 10° over the
+/// horizon band, then 60°.
+pub(crate) const RINGS: [f64; 5] = [0.0, 10.0, 20.0, 30.0, 60.0];
+
+/// The one style of every ring and of the diameter: a line one unit wide, near black.
+pub(crate) const RING_INK: (u8, u8, u8) = (30, 30, 30);
+
+/// Draws the rings of [`RINGS`], each once in one style ([`RING_INK`], one unit: a light halo
+/// under each ring printed as a second ring beside it), and where `diameter` the horizontal
+/// diameter, the vertical plane through the view direction (light straight behind, overhead,
+/// straight in front), in the same style; `abs` places a disk point (radius 1) in absolute
+/// backend units, at sub-unit positions, so that the rings are round, not stepped.
+pub(crate) fn draw_rings<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    abs: &dyn Fn((f64, f64)) -> (f64, f64),
+    diameter: bool,
+) -> Result<(), Fail> {
+    let stroke = |points: Vec<(f64, f64)>| {
+        area.draw(&Fine {
+            points,
+            colour: BackendColor {
+                alpha: 1.0,
+                rgb: RING_INK,
+            },
+            stroke: Some(1),
+        })
+    };
+    for deg in RINGS {
+        let el = deg.to_radians();
+        stroke(
+            (0..=360)
+                .map(|k| abs(hemisphere_xy(el, f64::from(k).to_radians())))
+                .collect(),
+        )?;
+    }
+    if diameter {
+        stroke(vec![abs((-1.0, 0.0)), abs((1.0, 0.0))])?;
+    }
+    Ok(())
+}
 
 /// The size of the key's text (plotters' size; 10.5 units in the SVG, the least any figure sets).
 pub(crate) const KEY_TEXT: u32 = 13;
 
+/// The key's text in one column, where a disk is about 38 units across its radius (plotters'
+/// size; 8.1 units, printed 6.5 pt): at [`KEY_TEXT`] the five labels' boxes covered a quarter
+/// of the disk (the fourth figure review: "a third").
+pub(crate) const KEY_TEXT_SINGLE: u32 = 10;
+
 /// The key's labels: the text, the light direction where it is centred (elevation, and the
 /// angle around the disk's centre, degrees anticlockwise from the in-front side), so that
 /// neighbouring labels stand apart on a disk of 40 units' radius: 10°, 20° and 30° fan out on
-/// the viewer's right, 60° on top of its ring, "overhead" at the centre.
+/// the viewer's right, 60° on top of its ring, 90° (overhead) at the centre.
 pub(crate) const KEY: [(&str, f64, f64); 5] = [
     ("10°", 10.0, -120.0),
     ("20°", 20.0, -60.0),
     ("30°", 30.0, -30.0),
     ("60°", 60.0, 90.0),
-    ("overhead", 90.0, 0.0),
+    ("90°", 90.0, 0.0),
 ];
 
 /// Writes [`KEY`] into a hemisphere panel whose disk point `(x, y)` (radius 1) lies at
@@ -31,14 +79,19 @@ pub(crate) fn draw_ring_key<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     to_px: impl Fn((f64, f64)) -> (i32, i32),
 ) -> Result<(), Fail> {
-    let style = TextStyle::from((FONT, KEY_TEXT).into_font());
+    let size = if super::column() == super::super::Column::Single {
+        KEY_TEXT_SINGLE
+    } else {
+        KEY_TEXT
+    };
+    let style = TextStyle::from((FONT, size).into_font());
     for (text, elevation, around) in KEY {
         // hemisphere_xy draws azimuth az at angle az − π around the centre (anticlockwise
         // from +x, in front; the viewer's right, az = π/2, at −y).
         let azimuth = std::f64::consts::PI + around.to_radians();
         let (x, y) = to_px(hemisphere_xy(elevation.to_radians(), azimuth));
         let (w, h) = area.estimate_text_size(text, &style)?;
-        let (hw, hh) = (w as i32 / 2 + 1, h as i32 / 2);
+        let (hw, hh) = ((w as i32 + 1) / 2, h as i32 / 2);
         area.draw(&Rectangle::new(
             [(x - hw, y - hh), (x + hw, y + hh)],
             RGBAColor(255, 255, 255, 0.8).filled(),
@@ -78,7 +131,7 @@ mod tests {
             let mut rows = (0, 0);
             let mut widths = Vec::new();
             let svg = draw_svg((144, 125), |area| {
-                rows = draw_hemisphere_keyed(area, "t", &grid, &scale, key).unwrap();
+                rows = draw_hemisphere_keyed(area, "t", &grid, &scale, key, true).unwrap();
                 let style = TextStyle::from((FONT, KEY_TEXT).into_font());
                 for (t, _, _) in KEY {
                     widths.push(f64::from(area.estimate_text_size(t, &style).unwrap().0));
