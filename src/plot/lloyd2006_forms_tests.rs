@@ -250,6 +250,22 @@ fn fig12_caption_gives_theta_eff_and_key_grouped_by_light() {
     assert!(back[0] > over[0] + 20.0);
 }
 
+/// Fig 12 (b)'s note names the scheme of each value it gives (the bare figure has no caption to
+/// say which of "37.99 < 38.32" was which): in the bare SVG, "17 maps: FP+ZP+W 37.99" over
+/// "ZP = ZP+W 38.32", by hand Eq 21 at k = 4, 8(1000^{1/4} − 1) + 1 = 37.987, and Eq 20 with
+/// 17 maps, 17 · 1000^{2/17} = 38.317.
+#[test]
+fn fig12_note_names_each_value() {
+    let (fp, zp) = (
+        8.0 * (1000f64.powf(0.25) - 1.0) + 1.0,
+        17.0 * 1000f64.powf(2.0 / 17.0),
+    );
+    let svg = svg_of("lloyd2006-fig12", Column::Double, true);
+    let first = text_at(&svg, &format!("17 maps: FP+ZP+W {fp:.2}"));
+    let second = text_at(&svg, &format!("ZP = ZP+W {zp:.2}"));
+    assert!(second.1 > first.1 && (second.0 - first.0).abs() < 0.5);
+}
+
 /// Fig 13's caption says why θ does not matter (Eq 20 has none, Eq 21's faces have
 /// tan θ_eff = 1, as by hand in the test above) and how the regions read.
 #[test]
