@@ -91,9 +91,16 @@ pub(crate) fn draw_ring_key<DB: DrawingBackend>(
         let azimuth = std::f64::consts::PI + around.to_radians();
         let (x, y) = to_px(hemisphere_xy(elevation.to_radians(), azimuth));
         let (w, h) = area.estimate_text_size(text, &style)?;
-        let (hw, hh) = ((w as i32 + 1) / 2, h as i32 / 2);
+        // The box from 0.77 h above the label's centre to 0.32 h below: the digits and ° have
+        // no descent, and centred on the label the box stood a unit (SVG) to 3 units (PNG,
+        // which sets the text higher) below the glyphs; this covers them in both.
+        let hw = (w as i32 + 1) / 2;
+        let (up, down) = (
+            (0.77 * h as f64).round() as i32,
+            (0.32 * h as f64).round() as i32,
+        );
         area.draw(&Rectangle::new(
-            [(x - hw, y - hh), (x + hw, y + hh)],
+            [(x - hw, y - up), (x + hw, y + down)],
             RGBAColor(255, 255, 255, 0.8).filled(),
         ))?;
         area.draw(&Text::new(
