@@ -15,32 +15,12 @@
 
 mod figures_style_read;
 use figures_style_read as read;
-use shadow_aliasing::plot::{render_with, Column, Format, Options};
+use figures_style_read::forms;
+use shadow_aliasing::plot::{render_with, Format, Options};
 use std::collections::BTreeMap;
 use std::path::Path;
 
 const FIGS: [&str; 2] = ["lloyd2006-fig11", "barroso-fig5"];
-
-/// The three forms: (name, options).
-fn forms() -> Vec<(&'static str, Options)> {
-    vec![
-        ("double", Options::default()),
-        (
-            "bare",
-            Options {
-                bare: true,
-                ..Options::default()
-            },
-        ),
-        (
-            "single",
-            Options {
-                column: Column::Single,
-                ..Options::default()
-            },
-        ),
-    ]
-}
 
 fn svg(name: &str, form: &str, opts: &Options) -> String {
     static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);

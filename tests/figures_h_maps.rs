@@ -14,28 +14,8 @@
 
 mod figures_style_read;
 use figures_style_read as read;
+use figures_style_read::forms;
 use shadow_aliasing::plot::{Column, Options};
-
-/// The three forms: (name, options).
-fn forms() -> Vec<(&'static str, Options)> {
-    vec![
-        ("double", Options::default()),
-        (
-            "bare",
-            Options {
-                bare: true,
-                ..Options::default()
-            },
-        ),
-        (
-            "single",
-            Options {
-                column: Column::Single,
-                ..Options::default()
-            },
-        ),
-    ]
-}
 
 fn single() -> Options {
     Options {

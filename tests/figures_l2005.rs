@@ -7,29 +7,8 @@
 #![cfg(feature = "plot")]
 
 mod figures_style_read;
-use figures_style_read::{attr, attr_str, points, render_svg, texts, Font, Text};
+use figures_style_read::{attr, attr_str, forms, points, render_svg, texts, Font, Text};
 use shadow_aliasing::plot::{Column, Options};
-
-/// The three forms: two columns with caption, bare, one column.
-fn forms() -> [(&'static str, Options); 3] {
-    [
-        ("double", Options::default()),
-        (
-            "bare",
-            Options {
-                bare: true,
-                ..Options::default()
-            },
-        ),
-        (
-            "single",
-            Options {
-                column: Column::Single,
-                ..Options::default()
-            },
-        ),
-    ]
-}
 
 fn all_texts(svg: &str) -> Vec<Text> {
     texts(&Font::dejavu(), svg)

@@ -82,3 +82,26 @@ fn lloyd2005_fig4_names_its_curves_n_prime() {
         assert!(old.is_empty(), "{layout}: {old:?}");
     }
 }
+
+/// barroso-fig5 writes the half field of view θ as the charts above do (its α, Barroso's target
+/// ratio, is the paper's own and stays): no φ in any form, and "θ = 30°" in the captioned ones.
+#[test]
+fn barroso_fig5_writes_the_half_field_of_view_theta() {
+    let font = Font::dejavu();
+    let forms = forms_of(&font, "barroso-fig5");
+    assert_eq!(forms.len(), 3, "barroso-fig5: {} forms", forms.len());
+    for (layout, texts) in forms {
+        let words: String = texts
+            .iter()
+            .map(|t| t.content.replace('\u{a0}', " "))
+            .collect::<Vec<_>>()
+            .join(" ");
+        assert!(!words.contains('φ'), "barroso-fig5 ({layout}): {words}");
+        if !layout.ends_with("bare") {
+            assert!(
+                words.contains("θ = 30°"),
+                "barroso-fig5 ({layout}): {words}"
+            );
+        }
+    }
+}

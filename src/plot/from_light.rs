@@ -156,7 +156,7 @@ fn fmt_planes(p: &[f64]) -> String {
 }
 
 /// Barroso & Celes 2007 Fig 5: k = 4 self-similar z-partitions (Eq 5) of n = 1, f = 100,
-/// φ = 30°, seen by (a) a light perpendicular to the view direction (overhead) and (b) one
+/// θ = 30° (half field of view), seen by (a) a light perpendicular to the view direction (overhead) and (b) one
 /// parallel to it (behind the viewer); (c) the adaptive partitions of Eq 19 for a light 45°
 /// above the view direction, which the paper's figure does not have; (d) the near partitions of
 /// (a) enlarged.
@@ -234,7 +234,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     // Barroso's α is his target ratio f_i/n_i, not Lloyd's f/n (figure review 3, X2).
     let caption = format!(
         "Barroso & Celes 2007, Fig. 5: the frustum seen from the light, k\u{a0}=\u{a0}{k} \
-         z-partitions, n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, φ\u{a0}=\u{a0}{phi:.0}°. (a) \
+         z-partitions, n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{phi:.0}°. (a) \
          Light perpendicular to the view, (b) parallel: Eq\u{a0}5's splits \
          z\u{a0}=\u{a0}{}. (c), not in the paper: light {gamma_deg:.0}° from the view, target \
          ratio α\u{a0}=\u{a0}{ADAPTIVE_RATIO} (Barroso's Eq\u{a0}19), z\u{a0}=\u{a0}{}; \
@@ -249,7 +249,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     // One column: the far face's edge named as in two (figure review 4: it was left out).
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 5: k\u{a0}=\u{a0}{k}, n\u{a0}=\u{a0}{n}, \
-         f\u{a0}=\u{a0}{f}, φ\u{a0}=\u{a0}{phi:.0}°. (a), (b): Eq\u{a0}5; (c): Eq\u{a0}19, \
+         f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{phi:.0}°. (a), (b): Eq\u{a0}5; (c): Eq\u{a0}19, \
          not in the paper, light at {gamma_deg:.0}°, target ratio α\u{a0}=\u{a0}{ADAPTIVE_RATIO}; \
          the thick line across (c), (f) is the far face's edge. (d)–(f) enlarge (a)–(c).",
         n = view.near(),

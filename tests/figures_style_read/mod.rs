@@ -364,6 +364,28 @@ pub fn all_svgs() -> &'static [(String, String, String)] {
     })
 }
 
+/// The three forms a figure is written in, named as the figure tests report them: two columns
+/// with title and caption, bare (no title or caption, cropped), one column.
+pub fn forms() -> [(&'static str, Options); 3] {
+    [
+        ("double", Options::default()),
+        (
+            "bare",
+            Options {
+                bare: true,
+                ..Options::default()
+            },
+        ),
+        (
+            "single",
+            Options {
+                column: Column::Single,
+                ..Options::default()
+            },
+        ),
+    ]
+}
+
 /// Points (1/72 in) per unit of `svg`'s view box: its `width="…pt"` over the view box's width.
 pub fn points_per_unit(svg: &str) -> f64 {
     let head = &svg[..svg.find('>').unwrap()];
