@@ -226,8 +226,8 @@ impl Figure for Fig8 {
                 "Lloyd et al. 2005, Fig. 8: face partitions, k\u{a0}=\u{a0}{} z-partitions \
                  each, LiSPSM, n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, \
                  θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. (a) From the \
-                 light (R, L, T, N: right, left, top, near face; 1 near, 2 far). (b) {} in its \
-                 map's texels, fitted to a larger frustum (the paper's dashed one). (c) The \
+                 light (R, L, T, N: right, left, top, near face; 1 near, 2 far). (b) {}: its map's \
+                 texels reach past it, fitted to a larger frustum (dashed in the paper). (c) The \
                  texture by Eq\u{a0}6; (d) a column's width is set by its largest M_x: the other \
                  parts' M_x/w is lower.",
                 self.k, LIGHT.0, LIGHT.1, shown.tag,
