@@ -12,25 +12,6 @@ mod figures_style_read;
 use figures_style_read::*;
 use std::collections::BTreeMap;
 
-/// The scheme a label names (whole tokens: "ZP+W" is not "ZP"), none for a text naming none
-/// or two.
-fn scheme_of(label: &str) -> Option<&'static str> {
-    let tokens: Vec<&str> = label
-        .split(|c: char| !(c.is_alphanumeric() || c == '+'))
-        .filter(|t| !t.is_empty())
-        .collect();
-    let named: Vec<&'static str> = [
-        "FP+ZP+W", "ZP+W", "ZP", "LiSPSM", "PSM", "uniform", "Zhang", "Barroso",
-    ]
-    .into_iter()
-    .filter(|s| tokens.contains(s))
-    .collect();
-    match named[..] {
-        [one] => Some(one),
-        _ => None,
-    }
-}
-
 /// `#RRGGBB` as its three channels.
 fn rgb(hex: &str) -> [f64; 3] {
     let c = |i: usize| f64::from(u8::from_str_radix(&hex[i..i + 2], 16).unwrap());

@@ -9,34 +9,6 @@ mod figures_style_read;
 use figures_style_read::*;
 use std::collections::BTreeMap;
 
-/// The scheme a key text names: FP+ZP+W, ZP+W, ZP, LiSPSM, PSM, uniform, Zhang, Barroso; none
-/// for a text naming two (a curve ZP and ZP+W share) or none.
-fn scheme_of(label: &str) -> Option<&'static str> {
-    let tokens: Vec<&str> = label
-        .split(|c: char| !(c.is_alphanumeric() || c == '+'))
-        .filter(|t| !t.is_empty())
-        .collect();
-    let has = |t: &str| tokens.contains(&t);
-    let named: Vec<&'static str> = [
-        ("FP+ZP+W", has("FP+ZP+W")),
-        ("ZP+W", has("ZP+W")),
-        ("ZP", has("ZP")),
-        ("LiSPSM", has("LiSPSM")),
-        ("PSM", has("PSM")),
-        ("uniform", has("uniform")),
-        ("Zhang", has("Zhang")),
-        ("Barroso", has("Barroso")),
-    ]
-    .into_iter()
-    .filter(|p| p.1)
-    .map(|p| p.0)
-    .collect();
-    match named[..] {
-        [one] => Some(one),
-        _ => None,
-    }
-}
-
 /// A coloured mark of an SVG: its colour and its box.
 fn marks(svg: &str) -> Vec<(String, Box4)> {
     let mut out = Vec::new();

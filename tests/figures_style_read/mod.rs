@@ -364,6 +364,26 @@ pub fn all_svgs() -> &'static [(String, String, String)] {
     })
 }
 
+/// The scheme a label or key text names, by whole tokens ("ZP+W" is not "ZP"): FP+ZP+W, ZP+W,
+/// ZP, LiSPSM, PSM, uniform, Zhang, Barroso; none for a text naming none or two (a curve ZP and
+/// ZP+W share).
+pub fn scheme_of(label: &str) -> Option<&'static str> {
+    let tokens: Vec<&str> = label
+        .split(|c: char| !(c.is_alphanumeric() || c == '+'))
+        .filter(|t| !t.is_empty())
+        .collect();
+    let named: Vec<&'static str> = [
+        "FP+ZP+W", "ZP+W", "ZP", "LiSPSM", "PSM", "uniform", "Zhang", "Barroso",
+    ]
+    .into_iter()
+    .filter(|s| tokens.contains(s))
+    .collect();
+    match named[..] {
+        [one] => Some(one),
+        _ => None,
+    }
+}
+
 /// The three forms a figure is written in, named as the figure tests report them: two columns
 /// with title and caption, bare (no title or caption, cropped), one column.
 pub fn forms() -> [(&'static str, Options); 3] {
