@@ -56,45 +56,6 @@ fn label_colours(font: &Font, svg: &str) -> Vec<(&'static str, String)> {
         .collect()
 }
 
-/// The key entries of `svg` naming one scheme: (scheme, the colour of the sample nearest left
-/// of the entry's black text on its row, at most 40 units away), read as
-/// tests/figures_style_colours.rs reads them.
-fn key_colours(font: &Font, svg: &str) -> Vec<(&'static str, String)> {
-    let bbox = |pts: &[(f64, f64)]| -> Box4 {
-        let xs = pts.iter().map(|p| p.0);
-        let ys = pts.iter().map(|p| p.1);
-        [
-            xs.clone().fold(f64::INFINITY, f64::min),
-            ys.clone().fold(f64::INFINITY, f64::min),
-            xs.fold(f64::NEG_INFINITY, f64::max),
-            ys.fold(f64::NEG_INFINITY, f64::max),
-        ]
-    };
-    let marks: Vec<(String, Box4)> = polylines(svg)
-        .into_iter()
-        .chain(polygons(svg))
-        .filter(|s| !s.points.is_empty())
-        .map(|s| (s.colour.clone(), bbox(&s.points)))
-        .collect();
-    texts(font, svg)
-        .into_iter()
-        .filter(|t| !t.rotated && t.tag.contains("fill=\"#000000\""))
-        .filter_map(|t| {
-            let scheme = scheme_of(&t.content)?;
-            let (left, mid) = (t.bbox[0], 0.5 * (t.bbox[1] + t.bbox[3]));
-            marks
-                .iter()
-                .filter(|(_, b)| {
-                    b[2] <= left + 0.5
-                        && b[2] >= left - 40.0
-                        && (0.5 * (b[1] + b[3]) - mid).abs() <= 6.0
-                })
-                .max_by(|a, b| a.1[2].total_cmp(&b.1[2]))
-                .map(|(c, _)| (scheme, c.clone()))
-        })
-        .collect()
-}
-
 /// The readers themselves, on a page written by hand: a darkened orange label naming the
 /// uniform map, a grey note naming none, a black key entry naming PSM beside its blue sample;
 /// and the hue test: #A77300 is #E69F00 scaled by 0.725, #009E73 is not #0072B2 scaled.

@@ -384,6 +384,64 @@ pub fn scheme_of(label: &str) -> Option<&'static str> {
     }
 }
 
+/// A coloured mark of an SVG: its colour and its box.
+pub fn marks(svg: &str) -> Vec<(String, Box4)> {
+    let mut out = Vec::new();
+    let bbox = |pts: &[(f64, f64)]| -> Box4 {
+        let xs = pts.iter().map(|p| p.0);
+        let ys = pts.iter().map(|p| p.1);
+        [
+            xs.clone().fold(f64::INFINITY, f64::min),
+            ys.clone().fold(f64::INFINITY, f64::min),
+            xs.fold(f64::NEG_INFINITY, f64::max),
+            ys.fold(f64::NEG_INFINITY, f64::max),
+        ]
+    };
+    for s in polylines(svg).into_iter().chain(polygons(svg)) {
+        if !s.points.is_empty() {
+            out.push((s.colour, bbox(&s.points)));
+        }
+    }
+    for l in svg.lines().filter(|l| l.starts_with("<rect")) {
+        let fill = attr_str(l, "fill").unwrap_or("none");
+        if let (Some(x), Some(y), Some(w), Some(h)) = (
+            attr(l, "x"),
+            attr(l, "y"),
+            attr(l, "width"),
+            attr(l, "height"),
+        ) {
+            if fill != "none" && fill != "#FFFFFF" && w < 40.0 && h < 40.0 {
+                out.push((fill.to_string(), [x, y, x + w, y + h]));
+            }
+        }
+    }
+    out
+}
+
+/// Each key entry of `svg` naming one scheme ([`scheme_of`]): (scheme, colour of the mark
+/// nearest left of its black text on its row, at most 40 units away: a line or marker sample or
+/// a swatch).
+pub fn key_colours(font: &Font, svg: &str) -> Vec<(&'static str, String)> {
+    let marks = marks(svg);
+    texts(font, svg)
+        .into_iter()
+        .filter(|t| !t.rotated && t.tag.contains("fill=\"#000000\""))
+        .filter_map(|t| {
+            let scheme = scheme_of(&t.content)?;
+            let left = t.bbox[0];
+            let mid = 0.5 * (t.bbox[1] + t.bbox[3]);
+            marks
+                .iter()
+                .filter(|(_, b)| {
+                    let cy = 0.5 * (b[1] + b[3]);
+                    b[2] <= left + 0.5 && b[2] >= left - 40.0 && (cy - mid).abs() <= 6.0
+                })
+                .max_by(|a, b| a.1[2].total_cmp(&b.1[2]))
+                .map(|(c, _)| (scheme, c.clone()))
+        })
+        .collect()
+}
+
 /// The three forms a figure is written in, named as the figure tests report them: two columns
 /// with title and caption, bare (no title or caption, cropped), one column.
 pub fn forms() -> [(&'static str, Options); 3] {
