@@ -37,8 +37,9 @@ use serde::Serialize;
 #[derive(Debug, Clone, Copy, Serialize, PartialEq)]
 pub struct Geometry {
     /// The largest distance between `FrameMap::body` and the rebuilt B (a vertex of either
-    /// outside the other), over the rebuilt B's diameter. NaN where a map could not be paired
-    /// with a slice, or the rebuilt B is empty.
+    /// outside the other), over the diameter of both. B is rebuilt over the map's slice and every
+    /// depth its record selects it for. [`MISSING`] (1) where a map has no slice, a slice holding
+    /// B has no map, or one of the two bodies is empty and the other not; never NaN.
     pub body_rel_diff: f64,
     /// The fitted maps (every scheme but the stable cascades and the clipmap): the largest
     /// distance, in clip units, of the rebuilt B's extreme s or t from ±1.
@@ -206,15 +207,21 @@ pub fn vertices(planes: &[Plane], tol: f64) -> Vec<DVec3> {
 }
 
 /// The Hausdorff-like distance between the crate's body `got` and the polytope `planes` with
-/// vertices `want`, over `want`'s diameter: the largest of each `got` vertex's distance outside a
-/// plane and each `want` vertex's distance from the nearest `got` vertex.
-fn body_distance(got: &[DVec3], want: &[DVec3], planes: &[Plane]) -> f64 {
-    if want.is_empty() || got.is_empty() {
-        return f64::NAN;
+/// vertices `want`, over the diameter of both: the largest of each `got` vertex's distance
+/// outside a plane and each `want` vertex's distance from the nearest `got` vertex. Finite for
+/// every input: 0 for two empty bodies, [`MISSING`] for one empty and one not, or for two that
+/// differ while both are single points.
+pub fn body_distance(got: &[DVec3], want: &[DVec3], planes: &[Plane]) -> f64 {
+    match (want.is_empty(), got.is_empty()) {
+        (true, true) => return 0.0,
+        (true, false) | (false, true) => return MISSING,
+        (false, false) => {}
     }
+    // The diameter of both together: a rebuilt B that degenerates to a point or a segment (a
+    // slice touching the receivers' box at a corner or an edge) still gives a finite distance.
     let mut diam = 0.0f64;
-    for p in want {
-        for q in want {
+    for p in want.iter().chain(got) {
+        for q in want.iter().chain(got) {
             diam = diam.max(p.distance(*q));
         }
     }
@@ -230,8 +237,19 @@ fn body_distance(got: &[DVec3], want: &[DVec3], planes: &[Plane]) -> f64 {
                 .fold(f64::INFINITY, f64::min)
         })
         .fold(0.0f64, f64::max);
-    outside.max(missing) / diam
+    let d = outside.max(missing);
+    if diam > 0.0 {
+        d / diam
+    } else if d > 0.0 {
+        MISSING
+    } else {
+        0.0
+    }
 }
+
+/// [`Geometry::body_rel_diff`] where a whole body is missing or extra (a slice of B with no map,
+/// a map with no slice, a body where B has none): its own diameter.
+pub const MISSING: f64 = 1.0;
 
 /// The least radius of a sphere centred on the view axis that holds the slice `[a, b]`'s corners
 /// (k = the corner ray's slope, |(tan θ aspect, tan θ)|), and its centre's eye depth: the convex
@@ -485,8 +503,8 @@ pub fn measure(scheme: Scheme, view: &View, scene: &Scene, built: &Built, res: u
         depth_bias_ratio: [f64::INFINITY, 0.0],
         texel_world_ratio: 0.0,
     };
-    // Each map's slice: by order for one map and face maps; for cascades and clipmaps the slice
-    // that starts where the map's split does (an empty slice gives no map), each used once.
+    // Each map's slice: by order for one map and face maps; for cascades and clipmaps the unused
+    // slice whose start lies nearest the map's near end (in ln z; an empty slice gives no map).
     let depth_selected = matches!(
         scheme,
         Scheme::Cascades | Scheme::StableCascades | Scheme::BlendedCascades | Scheme::Clipmap
@@ -498,8 +516,10 @@ pub fn measure(scheme: Scheme, view: &View, scene: &Scene, built: &Built, res: u
         .enumerate()
         .map(|(i, m)| {
             let j = if depth_selected {
-                sl.iter()
-                    .position(|&(a, _)| (m.near - a).abs() <= 1e-9 * a.abs().max(1e-300))?
+                (0..sl.len()).filter(|&j| !used[j]).min_by(|&x, &y| {
+                    let d = |j: usize| (m.near / sl[j].0).ln().abs();
+                    d(x).total_cmp(&d(y))
+                })?
             } else {
                 i
             };
@@ -509,8 +529,7 @@ pub fn measure(scheme: Scheme, view: &View, scene: &Scene, built: &Built, res: u
             })
         })
         .collect();
-    let body_of = |j: usize, region: i32| -> (Vec<Plane>, Vec<DVec3>, bool) {
-        let (a, b) = sl[j];
+    let body_of = |(a, b): (f64, f64), region: i32| -> (Vec<Plane>, Vec<DVec3>, bool) {
         let mut planes = slice_planes(a, b, t, ta);
         planes.extend_from_slice(&receivers);
         let mut ok = true;
@@ -524,26 +543,37 @@ pub fn measure(scheme: Scheme, view: &View, scene: &Scene, built: &Built, res: u
         let body = vertices(&planes, tol);
         (planes, body, ok)
     };
-    // A slice left without a map must hold no volume of B.
+    // A slice left without a map must hold no volume of B: one that does misses a whole body
+    // (1, its own diameter).
     for (j, u) in used.iter().enumerate() {
-        if !u && body_of(j, -1).1.len() >= 4 {
-            g.body_rel_diff = f64::NAN;
+        if !u && body_of(sl[j], -1).1.len() >= 4 {
+            g.body_rel_diff = g.body_rel_diff.max(MISSING);
         }
     }
     let mut texel_ratio_worst = 1.0f64;
     let mut first = true;
     for (i, map) in built.maps.iter().enumerate() {
+        // A map with no slice of its own (more maps than slices) covers no body of the rule's:
+        // a whole body off (1).
         let Some(j) = pair[i] else {
-            g.body_rel_diff = f64::NAN;
+            g.body_rel_diff = g.body_rel_diff.max(MISSING);
             if let Some(c) = &mut g.clipmap_rel_diff {
-                *c = f64::NAN;
+                *c = c.max(MISSING);
             }
             continue;
         };
         let (a, b) = sl[j];
-        let (planes, body, ok) = body_of(j, map.region);
+        // The map must hold B over its slice and over every depth the shader selects it for
+        // (its record's range, within the camera's): a split range that reaches past the slice
+        // reaches past the map's body.
+        let range = if depth_selected {
+            (a.min(map.near.max(fr.near())), b.max(map.far.min(fr.far())))
+        } else {
+            (a, b)
+        };
+        let (planes, body, ok) = body_of(range, map.region);
         if !ok {
-            g.body_rel_diff = f64::NAN;
+            g.body_rel_diff = g.body_rel_diff.max(MISSING);
         }
         g.body_rel_diff = g
             .body_rel_diff

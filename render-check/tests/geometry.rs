@@ -4,7 +4,9 @@
 //! would change it.
 
 use glam::{DMat4, DVec3, DVec4};
-use render_check::geometry::{clipmap_offset, least_sphere, measure, vertices, Geometry};
+use render_check::geometry::{
+    body_distance, clipmap_offset, least_sphere, measure, vertices, Geometry, MISSING,
+};
 use render_check::schemes::{build, schemes_for, setups, Built, Scheme, View};
 use render_check::targets::geometry_violations;
 use shadow_aliasing::maps::ClipDepth;
@@ -202,4 +204,95 @@ fn the_geometry_targets_fail_on_faulty_output() {
         b.maps[3].record.texel_world *= 0.5;
     });
     assert!(fails(&g, "|texel_world_ratio − 1|"), "{g:?}");
+}
+
+/// Cascades whose split ranges end 3 % past their maps (render-check's fault `splits-past`: the
+/// records' selection ranges moved, the maps and bodies unchanged) measure a finite
+/// `body_rel_diff` that fails: each map is selected over `[z_{i−1}, 1.03 z_i]`, and B over that
+/// range reaches 0.03 z_i past the map's body. The blended cascades' bodies reach 25 % into the
+/// next slice (their band), past 1.03 z_i: there the measurement stays finite and passes.
+#[test]
+fn splits_past_their_maps_measure_finite_and_fail() {
+    use render_check::faults::Fault;
+    for setup in ["overhead", "tilted_45", "grazing_10", "front_5"] {
+        for scheme in [
+            Scheme::Cascades,
+            Scheme::StableCascades,
+            Scheme::BlendedCascades,
+        ] {
+            let s = setups().into_iter().find(|s| s.name == setup).unwrap();
+            let view = View::new(&s.scene.camera, s.scene.light(), 320, 240).unwrap();
+            let res = s.scene.map_resolution;
+            let built = build(
+                scheme,
+                &view,
+                &s.scene,
+                res,
+                Some(Fault::SplitsPast),
+                ClipDepth::ZeroToOne,
+            )
+            .unwrap();
+            let g = measure(scheme, &view, &s.scene, &built, res);
+            let all = [
+                g.body_rel_diff,
+                g.window_fill.unwrap_or(0.0),
+                g.stable_half_width_rel_diff.unwrap_or(0.0),
+                g.stable_centre_texels.unwrap_or(0.0),
+                g.normal_offset_ratio[0],
+                g.normal_offset_ratio[1],
+                g.depth_bias_ratio[0],
+                g.depth_bias_ratio[1],
+                g.texel_world_ratio,
+            ];
+            assert!(
+                all.iter().all(|x| !x.is_nan()),
+                "{setup} {}: {g:?}",
+                scheme.name()
+            );
+            assert_eq!(
+                fails(&g, "body_rel_diff"),
+                scheme != Scheme::BlendedCascades,
+                "{setup} {}: {g:?}",
+                scheme.name()
+            );
+        }
+    }
+}
+
+/// A slice whose rebuilt B degenerates (no volume: a face, or one vertex of the receivers' box)
+/// gives a finite `body_rel_diff`, from hand values: the unit cube cut to its corner (1, 1, 1)
+/// by x + y + z ≥ 3 has the one vertex; against itself 0; a body at the origin lies 3 outside the
+/// (unnormalised) cut plane, over the two bodies' diameter √3: 3 / √3 = √3.
+#[test]
+fn degenerate_slices_measure_finite() {
+    let cube = [
+        DVec4::new(1.0, 0.0, 0.0, -1.0),
+        DVec4::new(-1.0, 0.0, 0.0, 0.0),
+        DVec4::new(0.0, 1.0, 0.0, -1.0),
+        DVec4::new(0.0, -1.0, 0.0, 0.0),
+        DVec4::new(0.0, 0.0, 1.0, -1.0),
+        DVec4::new(0.0, 0.0, -1.0, 0.0),
+    ];
+    let mut corner = cube.to_vec();
+    // x + y + z ≥ 3 as −(x + y + z) + 3 ≤ 0, not normalised: the side is 3 at the origin.
+    corner.push(DVec4::new(-1.0, -1.0, -1.0, 3.0));
+    let want = vertices(&corner, 1e-12);
+    assert_eq!(want.len(), 1, "{want:?}");
+    assert!(want[0].distance(DVec3::ONE) < 1e-12);
+    assert_eq!(body_distance(&want, &want, &corner), 0.0);
+    let d = body_distance(&[DVec3::ZERO], &want, &corner);
+    assert!((d - 3f64.sqrt()).abs() < 1e-12, "{d}");
+    // A zero-thickness slab x = 1: the face's 4 vertices, diameter √2. The crate's body the
+    // whole cube: (0, 0, 0) lies 1 outside x ≥ 1, over √3 (both bodies' diameter).
+    let mut face = cube.to_vec();
+    face.push(DVec4::new(-1.0, 0.0, 0.0, 1.0));
+    let want = vertices(&face, 1e-12);
+    assert_eq!(want.len(), 4, "{want:?}");
+    let whole = vertices(&cube, 1e-12);
+    let d = body_distance(&whole, &want, &face);
+    assert!((d - 1.0 / 3f64.sqrt()).abs() < 1e-12, "{d}");
+    // Empty bodies: both empty 0, one empty a whole body (MISSING = 1).
+    assert_eq!(body_distance(&[], &[], &face), 0.0);
+    assert_eq!(body_distance(&whole, &[], &face), MISSING);
+    assert_eq!(body_distance(&[], &want, &face), MISSING);
 }
