@@ -62,6 +62,15 @@ pub struct Geometry {
     pub depth_bias_ratio: [f64; 2],
     /// The record's `texel_world` over the largest texel edge measured over the rebuilt B.
     pub texel_world_ratio: f64,
+    /// `FrameMap::receivers_volume` against the rebuilt B ([`volume_distance`]), over the
+    /// camera frustum's size (far · (1 + tan θ + tan θ · aspect)), largest over the maps.
+    pub receivers_volume_rel_diff: f64,
+    /// With `depth_clamp` ([`crate::schemes::Options`]): the map's depth (\[0, 1\]) over the
+    /// rebuilt B's vertices against 0 and 1 (B alone fills the depth range), the larger
+    /// distance (for stable cascades and clipmap levels, less the one texel their depth snaps
+    /// by), largest over the maps; `None` without it, and for face maps (whose depth covers
+    /// all of B along the light through the face's warp, a range not rebuilt here).
+    pub depth_clamp_fill: Option<f64>,
 }
 
 /// A half-space `n · p + d ≤ 0` (eye space).
@@ -244,6 +253,49 @@ pub fn body_distance(got: &[DVec3], want: &[DVec3], planes: &[Plane]) -> f64 {
         MISSING
     } else {
         0.0
+    }
+}
+
+/// A culling volume `volume` against the polytope `planes` with vertices `body`, over `size`:
+/// the larger of the farthest vertex outside the volume (a volume that cuts B) and, for each
+/// facet of the polytope (a plane holding three of its vertices or more), the distance from the
+/// facet's centroid along its outward normal to where the ray leaves the volume (a volume
+/// without that face, or looser than it). [`MISSING`] for an empty body or volume.
+pub fn volume_distance(volume: &[Plane], body: &[DVec3], planes: &[Plane], size: f64) -> f64 {
+    if body.is_empty() || volume.is_empty() {
+        return MISSING;
+    }
+    let cut = body
+        .iter()
+        .flat_map(|&p| volume.iter().map(move |&pl| side(pl, p)))
+        .fold(0.0f64, f64::max);
+    let tol = 1e-9 * size;
+    let mut loose = 0.0f64;
+    for &pl in planes {
+        let on: Vec<DVec3> = body
+            .iter()
+            .copied()
+            .filter(|&p| side(pl, p).abs() <= tol)
+            .collect();
+        if on.len() < 3 {
+            continue;
+        }
+        let c = on.iter().copied().sum::<DVec3>() / on.len() as f64;
+        let n = pl.truncate().normalize();
+        // The ray c + λ n leaves the half-space of a volume plane q (q·n > 0) at
+        // λ = −side(q, c) / (q·n); it leaves the volume at the least such λ.
+        let exit = volume
+            .iter()
+            .filter(|q| q.truncate().dot(n) > 1e-12)
+            .map(|&q| -side(q, c) / q.truncate().dot(n))
+            .fold(f64::INFINITY, f64::min);
+        loose = loose.max(exit.max(0.0));
+    }
+    let d = cut.max(loose) / size;
+    if d.is_finite() {
+        d
+    } else {
+        MISSING
     }
 }
 
@@ -502,6 +554,8 @@ pub fn measure(scheme: Scheme, view: &View, scene: &Scene, built: &Built, res: u
         normal_offset_ratio: [f64::INFINITY, 0.0],
         depth_bias_ratio: [f64::INFINITY, 0.0],
         texel_world_ratio: 0.0,
+        receivers_volume_rel_diff: 0.0,
+        depth_clamp_fill: (built.depth_clamp && scheme != Scheme::Faces).then_some(0.0),
     };
     // Each map's slice: by order for one map and face maps; for cascades and clipmaps the unused
     // slice whose start lies nearest the map's near end (in ln z; an empty slice gives no map).
@@ -578,32 +632,55 @@ pub fn measure(scheme: Scheme, view: &View, scene: &Scene, built: &Built, res: u
         g.body_rel_diff = g
             .body_rel_diff
             .max(body_distance(&built.bodies[i], &body, &planes));
+        // The receivers' volume, world → eye (a rigid map: planes by the inverse transpose).
+        let to_eye = view.world_to_eye.inverse().transpose();
+        let volume: Vec<Plane> = map.receivers.planes().iter().map(|&p| to_eye * p).collect();
+        let size = fr.far() * (1.0 + t + ta);
+        g.receivers_volume_rel_diff = g
+            .receivers_volume_rel_diff
+            .max(volume_distance(&volume, &body, &planes, size));
         if body.is_empty() {
             continue;
+        }
+        if let Some(c) = &mut g.depth_clamp_fill {
+            let d = body.iter().map(|&p| depth(&map.gpu, p));
+            let lo = d.clone().fold(f64::INFINITY, f64::min);
+            let hi = d.fold(f64::NEG_INFINITY, f64::max);
+            // Stable cascades and clipmap levels snap their depth range outward to whole texels
+            // of a world grid (the crate's docs, `FrameScheme::Stable`): each end may lie up to
+            // a texel (2/(|row 0| res) world units, |row 2| of depth per unit) past B.
+            let snap = if fitted {
+                0.0
+            } else {
+                2.0 / (map.gpu.row(0).truncate().length() * f64::from(map.res))
+                    * map.gpu.row(2).truncate().length()
+            };
+            let gap = lo.abs().max((hi - 1.0).abs());
+            *c = c.max((gap - snap).max(0.0));
         }
         if let Some(w) = &mut g.window_fill {
             *w = w.max(fill(&map.built, &body));
         }
         if scheme == Scheme::StableCascades {
-            stable(map, (a, b), t.hypot(ta), res, &mut g);
+            stable(map, (a, b), t.hypot(ta), map.res, &mut g);
         }
         if scheme == Scheme::Clipmap {
             let (level, _, _) = levels[j];
             let c = g.clipmap_rel_diff.as_mut().expect("clipmap");
-            *c = c.max(clipmap_map(map, levels[j], res));
+            *c = c.max(clipmap_map(map, levels[j], map.res));
             if std::mem::take(&mut first) {
                 *c = c.max((built.clipmap[0] - big_l).abs());
                 *c = c.max((built.clipmap[1] - f64::from(level)).abs());
             }
         }
-        bias(map, &body, l, res, &mut g);
+        bias(map, &body, l, map.res, &mut g);
         // texel_world: the largest texel edge over B.
         let measured = body
             .iter()
             .filter_map(|&p| texel_edges(&map.built, l, p))
             .fold(0.0f64, |m, (es, et)| m.max(es.length()).max(et.length()))
             * 2.0
-            / f64::from(res);
+            / f64::from(map.res);
         let r = f64::from(map.record.texel_world) / measured;
         if (r - 1.0).abs() >= (texel_ratio_worst - 1.0).abs() || r.is_nan() {
             texel_ratio_worst = r;

@@ -12,6 +12,7 @@ pub mod gpu;
 pub mod images;
 pub mod lens;
 pub mod lloyd_level;
+pub mod options;
 pub mod overlay;
 pub mod paper_error;
 pub mod papers;

@@ -186,6 +186,7 @@ fn real_main() -> Result<(), String> {
     let mut summary = Summary {
         device: gpu.name.clone(),
         cases: Vec::new(),
+        options: Vec::new(),
     };
     let opts = CaseOptions {
         sizes,
@@ -205,6 +206,38 @@ fn real_main() -> Result<(), String> {
         inconclusive += usize::from(!wrong && !v.is_empty());
         summary.cases.push(case);
     }
+    // The option cases of the set-ups run (none for a scene file): built and measured on the
+    // CPU alone (render_check::options).
+    let run_setups: Vec<&str> = if scene_file.is_some() {
+        Vec::new()
+    } else {
+        cases.iter().map(|s| s.name.as_str()).collect()
+    };
+    for c in render_check::options::cases()
+        .into_iter()
+        .filter(|c| run_setups.contains(&c.setup))
+    {
+        let o = match render_check::options::measure(&c, sizes.width, sizes.height, sizes.fault) {
+            Ok(o) => o,
+            Err(e) => {
+                eprintln!("  TARGET VIOLATED option {}: {e}", c.name);
+                violated += 1;
+                continue;
+            }
+        };
+        let v = render_check::options::violations(&o);
+        let mut msg = format!(
+            "option {}: {}",
+            c.name,
+            serde_json::to_string(&o).map_err(|e| e.to_string())?
+        );
+        for line in &v {
+            msg += &format!("\n  TARGET VIOLATED option {}: {line}", c.name);
+        }
+        eprintln!("{msg}");
+        violated += usize::from(!v.is_empty());
+        summary.options.push(o);
+    }
     let p = out.join("summary.json");
     let json = serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?;
     std::fs::write(&p, json + "\n").map_err(|e| format!("{}: {e}", p.display()))?;
@@ -216,10 +249,10 @@ fn real_main() -> Result<(), String> {
     );
     if violated + inconclusive > 0 {
         return Err(format!(
-            "{violated} of {} cases violate a target (a wrong pixel or number: the lines TARGET \
-             VIOLATED above) and {inconclusive} more are inconclusive (too little decidable: the \
-             lines INCONCLUSIVE); docs/rendered.md lists the targets",
-            summary.cases.len()
+            "{violated} of {} cases and option cases violate a target (a wrong pixel or number: \
+             the lines TARGET VIOLATED above) and {inconclusive} more are inconclusive (too \
+             little decidable: the lines INCONCLUSIVE); docs/rendered.md lists the targets",
+            summary.cases.len() + summary.options.len()
         ));
     }
     Ok(())

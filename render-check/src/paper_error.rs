@@ -269,8 +269,9 @@ impl PaperErrors {
         self.storage_ratio
     }
 
-    /// The frame's reported M_x, M_z against §4.4's maxima of the paper's maps over each body:
-    /// the largest relative difference over the maps; `None` where no map has a paper's map.
+    /// The frame's reported M_x, M_z and S̄ (`FrameMap::storage_factor`) against §4.4's maxima
+    /// of the paper's maps over each body and their product (§4.2): the largest relative
+    /// difference over the maps; `None` where no map has a paper's map.
     pub(crate) fn frame_diff(&self, built: &Built) -> Option<f64> {
         let to_pixels = self.height / self.res;
         let mut d = None::<f64>;
@@ -278,9 +279,13 @@ impl PaperErrors {
             let Some(w) = w else { continue };
             let (ex, ez) = w.maxima(&built.bodies[k], self.tan, self.height, self.res);
             let rep = &built.maps[k].reported;
+            // S̄ = M_x M_z at unit resolutions (Lloyd 2006 §4.2): the paper's maxima over the
+            // body are in pixels at the map's resolution, to_pixels each.
+            let storage = rep.storage_factor * to_pixels * to_pixels / (ex * ez);
             let dk = (rep.max_mx * to_pixels / ex - 1.0)
                 .abs()
-                .max((rep.max_mz * to_pixels / ez - 1.0).abs());
+                .max((rep.max_mz * to_pixels / ez - 1.0).abs())
+                .max((storage - 1.0).abs());
             let dk = if dk.is_nan() { f64::INFINITY } else { dk };
             d = Some(d.map_or(dk, |x| x.max(dk)));
         }

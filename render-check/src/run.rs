@@ -53,6 +53,8 @@ pub struct Summary {
     pub device: String,
     /// Every case.
     pub cases: Vec<CaseSummary>,
+    /// The option cases of the set-ups run ([`crate::options`]; CPU only).
+    pub options: Vec<crate::options::OptionSummary>,
 }
 
 /// Sizes of a run.

@@ -153,6 +153,9 @@ pub struct Map {
     pub receivers: CullVolume,
     /// −1 for a depth range, else the face (bottom, right, top, left, near, far).
     pub region: i32,
+    /// The texels per side render-check asked the map for: [`Options::resolutions`]' entry for
+    /// its slot, else the case's resolution (not read from the crate).
+    pub res: u32,
     /// Depth range covered.
     pub near: f64,
     /// Depth range covered.
@@ -175,6 +178,8 @@ pub struct Reported {
     pub n_prime: f64,
     /// `FrameMap::texel_world`.
     pub texel_world: f64,
+    /// `FrameMap::storage_factor` (S̄ = M_x M_z, unit resolutions).
+    pub storage_factor: f64,
     /// `FrameMap::blend`.
     pub blend: (f64, f64),
 }
@@ -231,6 +236,8 @@ pub struct Built {
     /// over the camera's near and far, computed here, not by the crate); empty for a scheme not
     /// selected by depth.
     pub planes: Vec<f64>,
+    /// Whether the frame was asked to rely on depth clamp ([`Options::depth_clamp`]).
+    pub depth_clamp: bool,
     /// The blend bands the requested overlap makes ([`crate::papers::blend_bands`], computed
     /// here, not `FrameMap::blend`); empty for a scheme that requests none.
     pub bands: Vec<(f64, f64)>,
@@ -364,9 +371,10 @@ fn frame_scheme(
     view: &ViewFrustum,
     res: u32,
     fault: Option<Fault>,
+    split: SplitScheme,
 ) -> FrameScheme<'static> {
     let practical = CascadeSplits::Scheme {
-        scheme: CASCADE_SPLIT,
+        scheme: split,
         k: CASCADES,
         overlap: 0.0,
     };
@@ -389,7 +397,7 @@ fn frame_scheme(
         },
         Scheme::BlendedCascades => FrameScheme::Cascades {
             splits: CascadeSplits::Scheme {
-                scheme: CASCADE_SPLIT,
+                scheme: split,
                 k: CASCADES,
                 overlap: if fault == Some(Fault::OverlapDropped) {
                     0.0
@@ -418,6 +426,37 @@ pub fn clipmap_options(res: u32) -> ClipmapOptions {
     }
 }
 
+/// Frame options beyond the set-ups' defaults, each exercised by an option case
+/// ([`crate::options`]; docs/rendered.md, "What is measured", 17).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Options {
+    /// The cascades' split λ (`None`: [`CASCADE_LAMBDA`]): 0 asks the crate for
+    /// `SplitScheme::Uniform`, 1 for `SplitScheme::SelfSimilar`, else `Practical { lambda }`;
+    /// render-check places its own planes with the paper's formula for the same λ.
+    pub lambda: Option<f64>,
+    /// Each slot's texels per side (`FrameInput::map_resolutions`); `None`: every map at the
+    /// case's resolution.
+    pub resolutions: Option<Vec<u32>>,
+    /// `FrameInput::depth_clamp`: the map's depth covers B alone.
+    pub depth_clamp: bool,
+}
+
+impl Options {
+    /// The split λ asked for.
+    pub fn lambda(&self) -> f64 {
+        self.lambda.unwrap_or(CASCADE_LAMBDA)
+    }
+
+    /// The crate's split scheme for [`Options::lambda`].
+    fn split(&self) -> SplitScheme {
+        match self.lambda() {
+            0.0 => SplitScheme::Uniform,
+            1.0 => SplitScheme::SelfSimilar,
+            lambda => SplitScheme::Practical { lambda },
+        }
+    }
+}
+
 /// Builds `scheme` for `view`, `res` texels per map side, through the crate's world-space frame
 /// API ([`shadow_aliasing::frame::frame`]): each map is focused on the receivers in view, its
 /// depth range reaches every caster that can shadow them, and the GPU renders with the frame's
@@ -433,6 +472,30 @@ pub fn build(
     res: u32,
     fault: Option<Fault>,
     clip_depth: ClipDepth,
+) -> Result<Built, String> {
+    build_with(
+        scheme_,
+        view,
+        scene,
+        res,
+        fault,
+        clip_depth,
+        &Options::default(),
+    )
+}
+
+/// [`build`] with frame options beyond the defaults ([`Options`]).
+///
+/// # Errors
+/// As [`build`].
+pub fn build_with(
+    scheme_: Scheme,
+    view: &View,
+    scene: &Scene,
+    res: u32,
+    fault: Option<Fault>,
+    clip_depth: ClipDepth,
+    options: &Options,
 ) -> Result<Built, String> {
     let e = |e: shadow_aliasing::Error| format!("{}: {e}", scheme_.name());
     let origin = view.origin;
@@ -461,7 +524,12 @@ pub fn build(
         } else {
             Bound::Unbounded
         })
-        .scheme(frame_scheme(scheme_, fr, res, fault));
+        .depth_clamp(options.depth_clamp)
+        .scheme(frame_scheme(scheme_, fr, res, fault, options.split()));
+    let input = match &options.resolutions {
+        Some(each) => input.map_resolutions(each),
+        None => input,
+    };
     let mut f = frame(&input).map_err(e)?;
     // A fault in the crate's rule: the frame built again with the faulted rule's n′.
     let faulted_rule = f
@@ -481,10 +549,25 @@ pub fn build(
     }
     // A fault reported honestly scales the frame's reported error with the map.
     let honest = Fault::reported_factor(fault, scheme_);
+    // Each built map's slot: its requested resolution.
+    let slot_res: Vec<u32> = f
+        .slots()
+        .iter()
+        .enumerate()
+        .filter(|(_, m)| m.is_some())
+        .map(|(i, _)| {
+            options
+                .resolutions
+                .as_ref()
+                .and_then(|r| r.get(i).copied())
+                .unwrap_or(res)
+        })
+        .collect();
     let mut maps: Vec<Map> = f
         .maps()
         .iter()
-        .map(|m| {
+        .zip(&slot_res)
+        .map(|(m, &map_res)| {
             let clean = m.shadow.matrix();
             let mut record = if plain {
                 m.gpu(clip_depth)
@@ -516,6 +599,7 @@ pub fn build(
                 casters: *m.casters_volume(),
                 receivers: *m.receivers_volume(),
                 region: m.face.map_or(-1, face_id),
+                res: map_res,
                 near: m.split.0,
                 far: m.split.1,
                 reported: Reported {
@@ -524,6 +608,7 @@ pub fn build(
                     max_mz: m.max_mz * honest,
                     n_prime: m.shadow.n_prime().value(),
                     texel_world: m.texel_world * honest,
+                    storage_factor: m.storage_factor * honest * honest,
                     blend,
                 },
             })
@@ -559,7 +644,7 @@ pub fn build(
     };
     let bodies = f.maps().iter().map(|m| m.body().to_vec()).collect();
     let planes = if select == Select::Depth {
-        crate::papers::practical_planes(fr.near(), fr.far(), CASCADES, CASCADE_LAMBDA)
+        crate::papers::practical_planes(fr.near(), fr.far(), CASCADES, options.lambda())
     } else {
         Vec::new()
     };
@@ -569,6 +654,7 @@ pub fn build(
         Vec::new()
     };
     Ok(Built {
+        depth_clamp: options.depth_clamp,
         planes,
         bands,
         maps,

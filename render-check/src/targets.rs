@@ -90,8 +90,12 @@ pub const PAPER_ERROR_P99: f64 = 5e-3;
 /// The largest of the same, at most (measured at most 4.5·10⁻³, the same map).
 pub const PAPER_ERROR_MAX: f64 = 2e-2;
 /// The frame's reported M_x, M_z against Lloyd 2006 §4.4's maxima of the paper's maps over the
-/// body's vertices, relatively, at most (measured at most 2.4·10⁻¹⁴).
+/// body's vertices, and its S̄ against their product (§4.2), relatively, at most (measured at
+/// most 2.4·10⁻¹⁴ before S̄ joined).
 pub const PAPER_FRAME_REL_DIFF: f64 = 1e-6;
+/// The option cases' split ranges against the paper's planes for their λ
+/// ([`crate::options::split_rel_diff`]), relatively, at most.
+pub const SPLIT_REL_DIFF: f64 = 1e-9;
 /// The minimax map's S̄ = M_x M_z over the least S̄ over n′ of the paper's maps, at most
 /// (measured at most 1 + 10⁻⁹).
 pub const MINIMAX_STORAGE_EXCESS: f64 = 1e-3;
@@ -135,6 +139,16 @@ pub const DEPTH_BIAS_MOST: f64 = 1.01;
 /// The record's `texel_world` against the largest texel edge measured over the rebuilt B,
 /// relatively (the record's `f32`: measured within 5.3·10⁻⁸).
 pub const TEXEL_WORLD_REL_DIFF: f64 = 1e-5;
+
+/// `FrameMap::receivers_volume` against the rebuilt B ([`crate::geometry::volume_distance`]),
+/// over the camera frustum's size, at most: the crate pushes each plane 10⁻⁹ of the frustum's
+/// size outward (src/frame/culling.rs) plus its offset's rounding, so every facet's exit lies
+/// there (measured 1.0000–1.0004·10⁻⁹ over every built-in case, `far_tilted` the largest).
+pub const RECEIVERS_VOLUME_REL_DIFF: f64 = 2e-9;
+
+/// Under `depth_clamp` the map's depth over the rebuilt B against 0 and 1, at most (B alone
+/// fills the depth range; measured below).
+pub const DEPTH_CLAMP_FILL: f64 = 1e-6;
 
 /// The geometry targets ([`crate::geometry::Geometry`]) `g` violates.
 pub fn geometry_violations(g: &crate::geometry::Geometry) -> Vec<String> {
@@ -192,6 +206,18 @@ pub fn geometry_violations(g: &crate::geometry::Geometry) -> Vec<String> {
         (g.texel_world_ratio - 1.0).abs(),
         TEXEL_WORLD_REL_DIFF,
     );
+    at_most(
+        "receivers_volume_rel_diff (FrameMap::receivers_volume against the focus body rebuilt here)",
+        g.receivers_volume_rel_diff,
+        RECEIVERS_VOLUME_REL_DIFF,
+    );
+    if let Some(d) = g.depth_clamp_fill {
+        at_most(
+            "depth_clamp_fill (under depth clamp the rebuilt body's depths against 0 and 1)",
+            d,
+            DEPTH_CLAMP_FILL,
+        );
+    }
     let mut at_least = |name: &str, got: f64, limit: f64| {
         if got.is_nan() || got < limit {
             v.push(format!("{name} = {got:.6}, limit ≥ {limit}"));

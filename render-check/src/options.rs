@@ -1,0 +1,245 @@
+//! The option cases (docs/rendered.md, "What is measured", 17): frame options that no built-in
+//! set-up asks for, each built through the crate's frame API for a built-in set-up and held, on
+//! the CPU (no rendering), to the independent measurements that apply to it:
+//!
+//! - **Split rules other than the set-ups' practical λ = 0.75** (`SplitScheme::Uniform`,
+//!   `SplitScheme::SelfSimilar`, `Practical { λ = 0.5 }`): render-check places its own planes by
+//!   the paper's formula for the same λ ([`crate::papers::practical_planes`]; λ = 0 uniform,
+//!   λ = 1 logarithmic), each map's split range against them (`split_rel_diff`) and each map's
+//!   body against B rebuilt over them (`body_rel_diff`, [`crate::geometry`]).
+//! - **Per-map resolutions** (`FrameInput::map_resolutions`): the texel and bias measurements
+//!   of [`crate::geometry`] take each map's resolution from what render-check asked for its slot
+//!   ([`crate::schemes::Map::res`]), so a map built at another resolution fails
+//!   `texel_world_ratio` and the bias ratios.
+//! - **`depth_clamp`**: the map's depth over the rebuilt B must span \[0, 1\] exactly
+//!   (`depth_clamp_fill`): the casters are left to the device's clamp.
+//! - **`receivers_volume`** is measured in every case, built-in ones included
+//!   (`receivers_volume_rel_diff`, [`crate::geometry::volume_distance`]).
+//! - **`storage_factor`**: the reported S̄ against M_x M_z of the paper's map (Lloyd 2006 §4.2,
+//!   §4.4) over each body, with the reported M_x and M_z (`paper_frame_rel_diff`, as measured in
+//!   the rendered cases).
+
+use crate::faults::Fault;
+use crate::geometry::Geometry;
+use crate::paper_error::PaperErrors;
+use crate::schemes::{build_with, setups, Built, Options, Scheme, View};
+use serde::Serialize;
+use shadow_aliasing::maps::ClipDepth;
+
+/// One option case: a built-in set-up and scheme with frame options beyond the defaults.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OptionCase {
+    /// The case's name (what it exercises).
+    pub name: &'static str,
+    /// The built-in set-up.
+    pub setup: &'static str,
+    /// The scheme.
+    pub scheme: Scheme,
+    /// The options.
+    pub options: Options,
+}
+
+/// Every option case the plain run measures.
+pub fn cases() -> Vec<OptionCase> {
+    let case = |name, setup, scheme, options| OptionCase {
+        name,
+        setup,
+        scheme,
+        options,
+    };
+    let lambda = |l: f64| Options {
+        lambda: Some(l),
+        ..Options::default()
+    };
+    let resolutions = |r: &[u32]| Options {
+        resolutions: Some(r.to_vec()),
+        ..Options::default()
+    };
+    let clamp = Options {
+        depth_clamp: true,
+        ..Options::default()
+    };
+    vec![
+        case("splits_uniform", "tilted_45", Scheme::Cascades, lambda(0.0)),
+        case(
+            "splits_logarithmic",
+            "grazing_10",
+            Scheme::Cascades,
+            lambda(1.0),
+        ),
+        case(
+            "splits_practical_0.5",
+            "front_5",
+            Scheme::BlendedCascades,
+            lambda(0.5),
+        ),
+        case(
+            "splits_logarithmic_stable",
+            "overhead",
+            Scheme::StableCascades,
+            lambda(1.0),
+        ),
+        case(
+            "resolutions_cascades",
+            "tilted_45",
+            Scheme::Cascades,
+            resolutions(&[2048, 1024, 512, 256]),
+        ),
+        case(
+            "resolutions_stable",
+            "behind_5",
+            Scheme::StableCascades,
+            resolutions(&[256, 512, 1024, 2048]),
+        ),
+        case(
+            "resolutions_single",
+            "grazing_10",
+            Scheme::Lispsm,
+            resolutions(&[512]),
+        ),
+        case(
+            "depth_clamp_lispsm",
+            "tilted_45",
+            Scheme::Lispsm,
+            clamp.clone(),
+        ),
+        case(
+            "depth_clamp_uniform",
+            "behind_5",
+            Scheme::Uniform,
+            clamp.clone(),
+        ),
+        case(
+            "depth_clamp_tsm",
+            "thin_casters",
+            Scheme::Tsm,
+            clamp.clone(),
+        ),
+        case(
+            "depth_clamp_cascades",
+            "front_5",
+            Scheme::Cascades,
+            clamp.clone(),
+        ),
+        case(
+            "depth_clamp_faces",
+            "tilted_45",
+            Scheme::Faces,
+            clamp.clone(),
+        ),
+        case("depth_clamp_clipmap", "parallel_1", Scheme::Clipmap, clamp),
+    ]
+}
+
+/// What the plain run reports for one option case (summary.json's `options`).
+#[derive(Debug, Clone, Serialize)]
+pub struct OptionSummary {
+    /// [`OptionCase::name`].
+    pub name: String,
+    /// The set-up.
+    pub setup: String,
+    /// The scheme's name.
+    pub scheme: String,
+    /// The geometry measurements ([`crate::geometry`]), each map at its own resolution.
+    #[serde(flatten)]
+    pub geometry: Geometry,
+    /// Cascades: each map's split range against render-check's planes for the case's λ, the
+    /// largest relative difference; `None` for the other schemes.
+    pub split_rel_diff: Option<f64>,
+    /// The reported M_x, M_z and S̄ against the paper's map over each body, the largest relative
+    /// difference; `None` for a scheme no paper fixes.
+    pub paper_frame_rel_diff: Option<f64>,
+}
+
+/// Builds and measures `case` at `width × height` (depth \[0, 1\]) with `fault` injected.
+///
+/// # Errors
+/// An unknown set-up, or the crate's error.
+pub fn measure(
+    case: &OptionCase,
+    width: u32,
+    height: u32,
+    fault: Option<Fault>,
+) -> Result<OptionSummary, String> {
+    let s = setups()
+        .into_iter()
+        .find(|s| s.name == case.setup)
+        .ok_or_else(|| format!("option case {}: no set-up {}", case.name, case.setup))?;
+    let view = View::new(&s.scene.camera, s.scene.light(), width, height)?;
+    let res = s.scene.map_resolution;
+    let built = build_with(
+        case.scheme,
+        &view,
+        &s.scene,
+        res,
+        fault,
+        ClipDepth::ZeroToOne,
+        &case.options,
+    )
+    .map_err(|e| format!("option case {}: {e}", case.name))?;
+    Ok(summarise(case, &view, &s.scene, &built, height, res))
+}
+
+/// The measurements of `built` (the case's frame, perhaps edited as a faulty crate would make
+/// it) for `case`.
+pub fn summarise(
+    case: &OptionCase,
+    view: &View,
+    scene: &crate::scene::Scene,
+    built: &Built,
+    height: u32,
+    res: u32,
+) -> OptionSummary {
+    let geometry = crate::geometry::measure(case.scheme, view, scene, built, res);
+    let paper = PaperErrors::new(view, built, case.scheme, height, res);
+    OptionSummary {
+        name: case.name.to_string(),
+        setup: case.setup.to_string(),
+        scheme: case.scheme.name().to_string(),
+        geometry,
+        split_rel_diff: split_rel_diff(built),
+        paper_frame_rel_diff: paper.frame_diff(built),
+    }
+}
+
+/// Each map's split range `[near, far)` against render-check's planes `z_i, z_{i+1}` (the
+/// slice it is paired with by order), the largest relative difference; `None` where the scheme
+/// has no planes. A map count other than the planes' reads 1.
+pub fn split_rel_diff(built: &Built) -> Option<f64> {
+    if built.planes.is_empty() {
+        return None;
+    }
+    if built.maps.len() + 1 != built.planes.len() {
+        return Some(1.0);
+    }
+    let d = built
+        .maps
+        .iter()
+        .zip(built.planes.windows(2))
+        .map(|(m, w)| (m.near / w[0] - 1.0).abs().max((m.far / w[1] - 1.0).abs()))
+        .fold(0.0f64, |a, x| if x.is_nan() { 1.0 } else { a.max(x) });
+    Some(d)
+}
+
+/// The targets `o` violates: the geometry targets, the split planes and the paper's figures.
+pub fn violations(o: &OptionSummary) -> Vec<String> {
+    let mut v = crate::targets::geometry_violations(&o.geometry);
+    let mut at_most = |name: &str, got: Option<f64>, limit: f64| {
+        if let Some(x) = got {
+            if x.is_nan() || x > limit {
+                v.push(format!("{name} = {x:.4e}, limit ≤ {limit:e}"));
+            }
+        }
+    };
+    at_most(
+        "split_rel_diff (the maps' split ranges against the paper's planes for the case's λ)",
+        o.split_rel_diff,
+        crate::targets::SPLIT_REL_DIFF,
+    );
+    at_most(
+        "paper_frame_rel_diff (reported M_x, M_z against the paper's map's §4.4 maxima)",
+        o.paper_frame_rel_diff,
+        crate::targets::PAPER_FRAME_REL_DIFF,
+    );
+    v
+}

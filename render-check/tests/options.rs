@@ -1,0 +1,153 @@
+//! The option cases ([`render_check::options`]): every case meets its targets on the CPU (both
+//! screen sizes), each option reaches the frame (the maps differ from the defaults' as the option
+//! says), and each measurement fails when the crate's output is changed as a crate that ignored
+//! the option would change it.
+
+use render_check::options::{cases, measure, summarise, violations, OptionCase, OptionSummary};
+use render_check::schemes::{build_with, setups, Built, Options, Scheme, View};
+use shadow_aliasing::maps::ClipDepth;
+
+fn case(name: &str) -> OptionCase {
+    cases().into_iter().find(|c| c.name == name).unwrap()
+}
+
+/// `c` built with `built_options` (what a faulty crate would have built) and measured against
+/// `c`'s own options (what render-check asked for), after `edit`.
+fn measured_as(
+    c: &OptionCase,
+    built_options: &Options,
+    edit: impl Fn(&mut Built),
+) -> OptionSummary {
+    let s = setups().into_iter().find(|s| s.name == c.setup).unwrap();
+    let view = View::new(&s.scene.camera, s.scene.light(), 320, 240).unwrap();
+    let res = s.scene.map_resolution;
+    let mut built = build_with(
+        c.scheme,
+        &view,
+        &s.scene,
+        res,
+        None,
+        ClipDepth::ZeroToOne,
+        built_options,
+    )
+    .unwrap();
+    // render-check's expectation: the planes for the case's λ, the resolutions it asked for, the
+    // depth clamp it asked for.
+    let asked = build_with(
+        c.scheme,
+        &view,
+        &s.scene,
+        res,
+        None,
+        ClipDepth::ZeroToOne,
+        &c.options,
+    )
+    .unwrap();
+    built.planes.clone_from(&asked.planes);
+    built.bands.clone_from(&asked.bands);
+    built.depth_clamp = asked.depth_clamp;
+    if built.maps.len() == asked.maps.len() {
+        for (m, a) in built.maps.iter_mut().zip(&asked.maps) {
+            m.res = a.res;
+        }
+    }
+    edit(&mut built);
+    summarise(c, &view, &s.scene, &built, 240, res)
+}
+
+fn fails(o: &OptionSummary, target: &str) -> bool {
+    violations(o).iter().any(|l| l.starts_with(target))
+}
+
+#[test]
+fn every_option_case_meets_its_targets() {
+    for c in cases() {
+        for (w, h) in [(320, 240), (640, 480)] {
+            let o = measure(&c, w, h, None).unwrap();
+            let v = violations(&o);
+            assert!(v.is_empty(), "{} {w}×{h}: {v:?}", c.name);
+        }
+    }
+}
+
+/// Each option changes the frame: the split planes differ from λ = 0.75's, the maps' texels
+/// follow the requested resolutions (the texel edge of cascade i at 2048 / 2^i texels against the
+/// default's at 1024), and the clamped map's depth range is narrower than the unclamped one's
+/// where casters lie nearer the light than B.
+#[test]
+fn each_option_reaches_the_frame() {
+    let defaults = Options::default();
+    for name in [
+        "splits_uniform",
+        "splits_logarithmic",
+        "splits_practical_0.5",
+    ] {
+        let c = case(name);
+        let o = measured_as(&c, &defaults, |_| {});
+        assert!(
+            o.split_rel_diff.unwrap() > 0.05 && fails(&o, "split_rel_diff"),
+            "{name}: {o:?}"
+        );
+        assert!(fails(&o, "body_rel_diff"), "{name}: {o:?}");
+    }
+    // Per-map resolutions ignored (every map at the scene's 1024): the record's texel is the
+    // one at 1024 texels, measured at the asked resolution r it reads r/1024: 2048/1024 = 2 for
+    // the map asked at 2048 (the farthest from 1 of 2, 1, 1/2, 1/4 over the cascades), 1/2 for
+    // the single map asked at 512.
+    for name in [
+        "resolutions_cascades",
+        "resolutions_stable",
+        "resolutions_single",
+    ] {
+        let c = case(name);
+        let o = measured_as(&c, &defaults, |_| {});
+        assert!(fails(&o, "|texel_world_ratio − 1|"), "{name}: {o:?}");
+        let r = o.geometry.texel_world_ratio;
+        let want = match name {
+            "resolutions_cascades" => 2.0,
+            "resolutions_stable" => 2.0,
+            _ => 0.5,
+        };
+        assert!((r / want - 1.0).abs() < 1e-5, "{name}: {r} against {want}");
+    }
+    // Depth clamp ignored (the depth range reaches the casters nearer the light).
+    for name in [
+        "depth_clamp_lispsm",
+        "depth_clamp_uniform",
+        "depth_clamp_tsm",
+        "depth_clamp_cascades",
+        "depth_clamp_clipmap",
+    ] {
+        let c = case(name);
+        let o = measured_as(&c, &defaults, |_| {});
+        assert!(fails(&o, "depth_clamp_fill"), "{name}: {o:?}");
+    }
+}
+
+#[test]
+fn the_option_targets_fail_on_faulty_output() {
+    // A map's receivers' volume without its receivers' box (the slice's planes alone): the
+    // facets of B on the box leave the volume far away.
+    let c = case("resolutions_cascades");
+    let o = measured_as(&c, &c.options, |b| {
+        let other = b.maps[3].receivers;
+        b.maps[0].receivers = other;
+    });
+    assert!(fails(&o, "receivers_volume_rel_diff"), "{o:?}");
+    // The reported storage factor doubled.
+    let c = case("splits_uniform");
+    let o = measured_as(&c, &c.options, |b| b.maps[1].reported.storage_factor *= 2.0);
+    assert!(fails(&o, "paper_frame_rel_diff"), "{o:?}");
+    // A depth range 1 % longer than B's under depth clamp.
+    let c = case("depth_clamp_uniform");
+    let o = measured_as(&c, &c.options, |b| {
+        let m = &mut b.maps[0];
+        m.gpu = glam::DMat4::from_scale(glam::DVec3::new(1.0, 1.0, 1.0 / 1.01)) * m.gpu;
+    });
+    assert!(fails(&o, "depth_clamp_fill"), "{o:?}");
+    // The stable cascades' splits at λ = 0.75 measured against the logarithmic planes.
+    let c = case("splits_logarithmic_stable");
+    let o = measured_as(&c, &Options::default(), |_| {});
+    assert!(fails(&o, "body_rel_diff"), "{o:?}");
+    assert_eq!(c.scheme, Scheme::StableCascades);
+}
