@@ -633,7 +633,9 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
     let top: Vec<&String> = summary.as_object().unwrap().keys().collect();
-    assert_eq!(top, ["cases", "device"]);
+    assert_eq!(top, ["cases", "device", "options"]);
+    // A scene file has no option cases ("What is measured", 15).
+    assert_eq!(summary["options"].as_array().unwrap().len(), 0);
     let cases = summary["cases"].as_array().unwrap();
     assert_eq!(cases.len(), Scheme::ALL.len());
     let mut keys: Vec<&str> = cases[0]
@@ -696,6 +698,8 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
         "normal_offset_ratio",
         "depth_bias_ratio",
         "texel_world_ratio",
+        "receivers_volume_rel_diff",
+        "depth_clamp_fill",
         "lens_colour_pixels",
         "lens_colour_mismatches",
         "paths",
