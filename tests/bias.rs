@@ -121,18 +121,19 @@ fn check_map(map: &FrameMap, l: DVec3, res: u32, seed: u64) -> (f64, f64) {
                     w <= 1e-9,
                     "depth bias {bias:?}: tap {w} ahead at α = {alpha}, r = {r}, {depth:?}"
                 );
-                // Normal offset alone.
-                // Normal offset alone, where the lookup point p + o n stays where the map's
-                // footprint is B's: its clip w within 5 % of p's (module docs of `frame::bias`:
-                // past the map's centre of projection, w < 0, no offset can help).
+                // Normal offset alone, wherever the lookup point lands short of the map's centre
+                // of projection (w > 0): the record counts the footprint at p + o n (module docs
+                // of `frame::bias`), so no restriction to lookups whose w is near p's.
                 let q = p + n * bias.normal_offset;
-                let (wp, wq) = ((look.m * p.extend(1.0)).w, (look.m * q.extend(1.0)).w);
-                let offset_valid = (wq - wp).abs() <= 0.05 * wp;
+                let wq = (look.m * q.extend(1.0)).w;
+                let offset_valid = bias.normal_offset.is_finite() && wq > 0.0;
                 if offset_valid {
                     let w = look.worst(q, look.project(q).z, p, n, r);
                     assert!(
                         w <= 1e-9,
-                        "normal offset {bias:?}: tap {w} ahead at α = {alpha}, r = {r}, {depth:?}"
+                        "normal offset {bias:?}: tap {w} ahead at α = {alpha}, r = {r}, {depth:?}, w(p) {}, w(q) {}",
+                        (look.m * p.extend(1.0)).w,
+                        (look.m * q.extend(1.0)).w
                     );
                 }
                 // The need: the unbiased deficit per tan α; the least offset (bisection).
@@ -166,8 +167,8 @@ proptest! {
 
     /// Random scenes, every scheme: with the crate's normal offset alone, or its depth bias alone,
     /// no tap of a kernel of radius 0, 1 or 2 shadows a lit plane through a point of B (angles to
-    /// the light up to 85°, every depth convention; the offset where the lookup point stays
-    /// within 5 % of p's clip w).
+    /// the light up to 85°, every depth convention; the offset's lookup point wherever it lands
+    /// short of the map's centre of projection, its own footprint counted).
     #[test]
     fn bias_leaves_every_tap_lit(
         params in scene_params(),
@@ -185,7 +186,8 @@ proptest! {
 
 /// Not wildly larger than needed: on fixed scenes, the largest need found by sampling reaches
 /// half of the crate's normal offset and of its depth bias (constant + slope · tan α), for every
-/// scheme.
+/// scheme (measured 0.55–0.95 and 0.74–0.99; the normal offset bounds the offset point's own
+/// footprint jointly over α and B, module docs of `frame::bias`).
 #[test]
 fn bias_is_within_a_factor_two_of_the_need() {
     use glam::dcamera::rh::view::look_at_mat4;
@@ -347,10 +349,10 @@ fn local_normal_offset_on_a_fixed_scene() {
             let (checked, ratio) = check_local(m, f.light_dir_eye(), 1024, 11);
             println!("scheme {s}: {checked} points, per-point / maximum {ratio:.3}");
             assert!(checked >= 200, "scheme {s}: {checked} of 240");
-            // docs/renderer.md ("Per point"): 0.20–0.39 of the maximum on this scene.
+            // docs/renderer.md ("Per point"): 0.19–0.39 of the maximum on this scene.
             assert!(
-                (0.195..0.395).contains(&ratio),
-                "scheme {s}: per-point / maximum {ratio}, outside docs/renderer.md's 0.20–0.39"
+                (0.185..0.395).contains(&ratio),
+                "scheme {s}: per-point / maximum {ratio}, outside docs/renderer.md's 0.19–0.39"
             );
             range = (range.0.min(ratio), range.1.max(ratio));
             // World space through the FrameMap agrees with the eye-space form.
@@ -385,7 +387,7 @@ fn local_normal_offset_on_a_fixed_scene() {
         (range.0 * 100.0).round() / 100.0,
         (range.1 * 100.0).round() / 100.0,
     );
-    assert_eq!(rounded, (0.20, 0.39), "measured {range:?}");
+    assert_eq!(rounded, (0.19, 0.39), "measured {range:?}");
 }
 
 /// A bad radius is an error naming `r`.

@@ -418,8 +418,9 @@ struct Needs {
 /// and t lies `rho` texels away in both, `rho (2/res) (|g_s| + |g_t|)` nearer the light than p
 /// (g the plane's depth gradient in (s, t), solved from the matrix). The depth-bias need is that
 /// step plus [`ROUNDING`]; the normal-offset need is the o at which p + o n, o / cos α above the
-/// plane along the light, is that step nearer the light at p's rate of depth along the light
-/// (p's footprint held over the offset, as the crate's record is documented to hold it).
+/// plane along the light, is that step nearer the light at its own rate of depth along the light
+/// (the footprint followed to the offset point: the map's w there, `w(p) + o (row₃ · n)`, not
+/// p's; with p's held, PSM's record passed at 0.574 of what its set-ups need).
 fn needs(
     m: &DMat4,
     res: u32,
@@ -465,12 +466,17 @@ fn needs(
                 None => per_alpha.push((alpha, depth_need)),
             }
             // The lookup at q = p + o n reads the taps around q's own projection, where the
-            // plane's depth has the same step (affine in s, t): q lies o / cos α above the plane
-            // along the light (the map's rays are parallel to l), worth |∂d/∂λ| o / cos α of
-            // depth at p's footprint.
+            // plane's depth has the same step (affine in s, t). The footprint is followed along
+            // the normal: the map's w is constant along a light ray, so q lies o / cos α above the plane along the light, worth
+            // |∂d/∂λ(p)| · w(p)/w(q) · o / cos α of depth, with w(q) = w(p) + o (row₃ · n);
+            // equal to the step at o = Y / (|∂d/∂λ(p)| − Y (row₃ · n)/w(p)), Y = step · cos α.
+            // A denominator not above 0 (q at or past the centre of projection): no offset
+            // suffices, an infinite need.
             let cos = n.dot(-l);
-            let o = step * cos / rate_along.abs();
-            if !(o.is_finite() && o >= 0.0) {
+            let y = step * cos;
+            let den = rate_along.abs() - y * m.row(3).truncate().dot(n) / h.w;
+            let o = if den > 0.0 { y / den } else { f64::INFINITY };
+            if o.is_nan() || o < 0.0 {
                 continue;
             }
             out.offset_max = out.offset_max.max(o);

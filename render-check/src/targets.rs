@@ -123,11 +123,16 @@ pub const CLIPMAP_REL_DIFF: f64 = 1e-9;
 /// The records' normal offset over every sampled need, at least (the record bounds every point
 /// of B: measured at least 1.00001).
 pub const NORMAL_OFFSET_LEAST: f64 = 1.0 - 1e-6;
-/// The records' normal offset over the largest need, at most: √2 (the record takes the texel's
-/// depth step and its diagonal each at its own worst vertex and adds them as a hypotenuse, which
-/// is at most √2 times their largest hypotenuse at one vertex; measured at most 1.225, face
-/// partitions under `parallel_1`).
-pub const NORMAL_OFFSET_MOST: f64 = std::f64::consts::SQRT_2 + 1e-6;
+/// The records' normal offset over the largest need (the footprint followed to the offset
+/// point), at most 2. The record takes the texel's depth step and its diagonal each at its own
+/// worst vertex as a hypotenuse (at most √2 over their largest at one vertex), and bounds the
+/// offset point's footprint by B's least w and the largest texel-per-w jointly over α
+/// (`frame/bias.rs`), which a perspective map's worst point does not reach at once: measured at
+/// most 1.811 (PSM, `parallel_1`, r = 1), 1.253 for every other scheme, over every built-in
+/// case at 320 × 240 and 640 × 480 in both clip-depth conventions. The least ratio is at least
+/// 1 − 10⁻⁶ ([`NORMAL_OFFSET_LEAST`]; measured at least 1.0001), so a record doubled reads at
+/// least 2.0002 and fails.
+pub const NORMAL_OFFSET_MOST: f64 = 2.0;
 /// The records' depth bias (constant + slope · tan α) over every sampled need, at least (the
 /// records' `f32` values: measured at least 1 − 6·10⁻⁸).
 pub const DEPTH_BIAS_LEAST: f64 = 1.0 - 1e-6;

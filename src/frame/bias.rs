@@ -41,10 +41,35 @@
 //!   along the light, worth `|∂d/∂λ| · o / cos α` of depth; it suffices when
 //!   `o ≥ ρ · (2/res) · (A cos α + diag · sin α)`, `A = (|c_s| + |c_t|) / |∂d/∂λ|` (the texel's
 //!   depth step as a distance along the light), for every α when
-//!   `o = ρ · (2/res) · hypot(max_B A, max_B diag)`. The offset point leaves B by o, and the bound
-//!   holds where the footprint there is B's: o small against the distance to the map's centre of
-//!   projection (tests/bias.rs checks lookups whose clip w is within 5 % of the surface point's;
-//!   with texels so coarse that p + o n passes the centre, w < 0, no normal offset can help).
+//!   `R = ρ · (2/res) · hypot(max_B A, max_B diag)` with p's footprint held over the offset
+//!   (`A cos α + diag sin α ≤ hypot(A, diag)`). The offset point q = p + o n has its own
+//!   footprint: the map's w is constant along a light ray, so q's depth above the plane is
+//!   `∂d/∂λ(p) · (w(p)/w(q)) · o / cos α` with `w(q) = w(p) + o (row₃ · n)` (as in "Per point"
+//!   below), and the least offset at p is `o(p, n) = o_h / (1 − o_h (row₃ · n)/w(p))`, o_h the
+//!   offset with the footprint held, `o_h ≤ ρ (2/res) (A cos α + diag sin α)`. Since
+//!   `∂d/∂λ = k/w` with `k = row₂ · l` constant (row₃ · l = 0), `A = w · (|c_s| + |c_t|)/|k|` and
+//!   `diag = w · (diag |∂d/∂λ|)/|k|`, so `o_h / w(p) ≤ ρ (2/res) (a cos α + b sin α)` with
+//!   `a = max_B (|c_s| + |c_t|) / |k|`, `b = max_B diag |∂d/∂λ| / |k|` (both maxima at B's
+//!   vertices, as for the depth bias below); and `row₃ · n ≤ |row₃| sin α` (row₃ ⊥ l). Hence over
+//!   B and every lit normal at angle α
+//!
+//!   ```text
+//!   o ≤ ρ (2/res) (max_B A cos α + max_B diag sin α) / (1 − ρ (2/res) |row₃| (a cos α + b sin α) sin α),
+//!   ```
+//!
+//!   and the record is this bound's largest over α ∈ [0, π/2], bounded from above on 256
+//!   sub-intervals (`offset_bound`: numerator and denominator are sinusoids in α whose extremes
+//!   on a sub-interval are known); `+∞` where the denominator reaches 0 (an offset point could
+//!   need to reach the map's centre of projection). An offset larger than a point needs is
+//!   harmless (the point only rises further above its plane) as long as it does not carry the
+//!   point to the map's centre of projection: for a normal toward it at angle α,
+//!   `w(q) = w(p) − o |row₃ · n| > 0`, which holds for every normal where `o |row₃| < w(p)` and
+//!   otherwise for `sin α < w(p) / (o |row₃|)` only; past that angle no single offset serves
+//!   the point (the per-point offset below does). An orthographic
+//!   map has row₃ = (0, 0, 0, 1): the bound is R's form. A perspective map whose centre of
+//!   projection lies near B needs the denominator: with p's footprint held the record of PSM's
+//!   map (n′ = n_B, Lloyd 2006 §4.1) covered only 0.574 of what render-check's set-ups need at
+//!   320 × 240 (docs/rendered.md, "What is measured", 13).
 //! - **Texel extents.** `(2/res) · |E_s|` and `(2/res) · |E_t|`, the texel's two world-space
 //!   edges, for PCF or PCSS radii in world units (anisotropic for warped maps).
 //!
@@ -121,8 +146,11 @@ const DEPTH_ROUNDING: f64 = 8.0 * f32::EPSILON as f64;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Bias {
     /// World units to move the lookup point along the surface's unit normal: with it alone no
-    /// lit surface (angle to the light below 90°) shadows itself (where the offset point's
-    /// footprint is B's: module docs).
+    /// lit surface of B (angle to the light below 90°) shadows itself, the offset point's own
+    /// footprint counted (module docs), wherever the offset point does not pass the map's
+    /// centre of projection (a normal toward it with `sin α ≥ w(p) / (normal_offset · |row₃|)`;
+    /// [`FrameMap::normal_offset_at`] serves such points); `+∞` where no finite offset is
+    /// certified.
     pub normal_offset: f64,
     /// The map's depth units per unit of tan α (α the angle between the surface's normal and the
     /// direction to the light), to add to the receiver's depth: `constant_depth +
@@ -237,8 +265,19 @@ impl FrameMap {
         let diag = chord_max(at, |es, et| es + et).max(chord_max(at, |es, et| es - et));
         // max over B of (|c_s| + |c_t|) / |∂d/∂λ| = (|c_s| + |c_t|) · w / |k|.
         let along = steps_max(&steps[..n]) / k;
+        // The need with the offset point's own footprint, bounded over every α (module docs):
+        // max_B A/w = (|c_s| + |c_t|)/|k| and max_B diag/w = diag |∂d/∂λ| / |k|, each largest
+        // at a vertex.
+        let row3 = m_c.row(3).truncate().length();
+        let g = reach * row3 / k;
+        let bound = offset_bound(
+            (reach * along, reach * diag),
+            (g * across, g * slope),
+            OFFSET_BOUND_PIECES,
+        );
+        let normal_offset = bound;
         Bias {
-            normal_offset: reach * along.hypot(diag),
+            normal_offset,
             slope_scaled_depth: -sign * reach * slope,
             constant_depth: -sign * (reach * across + 8.0 * f64::from(f32::EPSILON)),
             texel_extent: (texel * ext_s, texel * ext_t),
@@ -282,6 +321,46 @@ pub fn normal_offset_at(
     let den = k.abs() - y * m.row(3).truncate().dot(n) / h.w;
     let o = y / den;
     (den > 0.0 && o.is_finite()).then_some(o)
+}
+
+/// The sub-intervals of α ∈ [0, π/2] over which [`offset_bound`] bounds the normal offset.
+const OFFSET_BOUND_PIECES: u32 = 256;
+
+/// An upper bound of `max_α N(α) / D(α)` over α ∈ [0, π/2], `N = a_n cos α + b_n sin α` and
+/// `D = 1 − (a_d cos α + b_d sin α) sin α` (module docs, "Normal offset"; all four ≥ 0), `+∞`
+/// where D reaches 0. On each of `pieces` equal sub-intervals, N's largest value over D's least:
+/// N = hypot(a_n, b_n) cos(α − atan2(b_n, a_n)) and `(a_d cos α + b_d sin α) sin α = b_d/2 +
+/// hypot(a_d, b_d)/2 · sin(2α − atan2(b_d, a_d))` are sinusoids, each largest over a
+/// sub-interval at one of its ends or at its crest (N's at atan2(b_n, a_n), D's term's at
+/// (π/2 + atan2(b_d, a_d))/2) where that lies inside. The bound exceeds the maximum by at most
+/// the variation of N/D over one sub-interval.
+fn offset_bound((a_n, b_n): (f64, f64), (a_d, b_d): (f64, f64), pieces: u32) -> f64 {
+    let n = |x: f64| a_n * x.cos() + b_n * x.sin();
+    let t = |x: f64| (a_d * x.cos() + b_d * x.sin()) * x.sin();
+    let crest_n = b_n.atan2(a_n);
+    let crest_t = 0.5 * (std::f64::consts::FRAC_PI_2 + b_d.atan2(a_d));
+    let step = std::f64::consts::FRAC_PI_2 / f64::from(pieces);
+    let mut best = 0.0f64;
+    for i in 0..pieces {
+        let (lo, hi) = (step * f64::from(i), step * f64::from(i + 1));
+        let inside = |c: f64| (lo..=hi).contains(&c);
+        let n_max = if inside(crest_n) {
+            a_n.hypot(b_n)
+        } else {
+            n(lo).max(n(hi))
+        };
+        let t_max = if inside(crest_t) {
+            0.5 * (b_d + a_d.hypot(b_d))
+        } else {
+            t(lo).max(t(hi))
+        };
+        let d_min = 1.0 - t_max;
+        if d_min <= 0.0 {
+            return f64::INFINITY;
+        }
+        best = best.max(n_max / d_min);
+    }
+    best
 }
 
 /// The largest `(|c_s| + |c_t|) · w` over B from its vertices' `(w, c_s, c_t)`, each affine in
