@@ -22,9 +22,41 @@
 use crate::faults::Fault;
 use crate::geometry::Geometry;
 use crate::paper_error::PaperErrors;
-use crate::schemes::{build_with, setups, Built, Options, Scheme, View};
+use crate::schemes::{build_with, setups, Built, Scheme, View};
 use serde::Serialize;
+use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::maps::ClipDepth;
+
+/// Frame options beyond the set-ups' defaults, each exercised by an option case
+/// (docs/rendered.md, "What is measured", 17).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Options {
+    /// The cascades' split λ (`None`: [`crate::schemes::CASCADE_LAMBDA`]): 0 asks the crate for
+    /// `SplitScheme::Uniform`, 1 for `SplitScheme::SelfSimilar`, else `Practical { lambda }`;
+    /// render-check places its own planes with the paper's formula for the same λ.
+    pub lambda: Option<f64>,
+    /// Each slot's texels per side (`FrameInput::map_resolutions`); `None`: every map at the
+    /// case's resolution.
+    pub resolutions: Option<Vec<u32>>,
+    /// `FrameInput::depth_clamp`: the map's depth covers B alone.
+    pub depth_clamp: bool,
+}
+
+impl Options {
+    /// The split λ asked for.
+    pub fn lambda(&self) -> f64 {
+        self.lambda.unwrap_or(crate::schemes::CASCADE_LAMBDA)
+    }
+
+    /// The crate's split scheme for [`Options::lambda`].
+    pub(crate) fn split(&self) -> SplitScheme {
+        match self.lambda() {
+            0.0 => SplitScheme::Uniform,
+            1.0 => SplitScheme::SelfSimilar,
+            lambda => SplitScheme::Practical { lambda },
+        }
+    }
+}
 
 /// One option case: a built-in set-up and scheme with frame options beyond the defaults.
 #[derive(Debug, Clone, PartialEq)]

@@ -7,6 +7,7 @@
 //! eye-space positions, transformed in `f64`).
 
 use crate::faults::Fault;
+pub use crate::options::Options;
 use crate::scene::{Camera, Scene};
 use glam::{DMat4, DVec3};
 use shadow_aliasing::analytic::partition::{z_splits, SplitScheme};
@@ -426,37 +427,6 @@ pub fn clipmap_options(res: u32) -> ClipmapOptions {
     }
 }
 
-/// Frame options beyond the set-ups' defaults, each exercised by an option case
-/// ([`crate::options`]; docs/rendered.md, "What is measured", 17).
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct Options {
-    /// The cascades' split λ (`None`: [`CASCADE_LAMBDA`]): 0 asks the crate for
-    /// `SplitScheme::Uniform`, 1 for `SplitScheme::SelfSimilar`, else `Practical { lambda }`;
-    /// render-check places its own planes with the paper's formula for the same λ.
-    pub lambda: Option<f64>,
-    /// Each slot's texels per side (`FrameInput::map_resolutions`); `None`: every map at the
-    /// case's resolution.
-    pub resolutions: Option<Vec<u32>>,
-    /// `FrameInput::depth_clamp`: the map's depth covers B alone.
-    pub depth_clamp: bool,
-}
-
-impl Options {
-    /// The split λ asked for.
-    pub fn lambda(&self) -> f64 {
-        self.lambda.unwrap_or(CASCADE_LAMBDA)
-    }
-
-    /// The crate's split scheme for [`Options::lambda`].
-    fn split(&self) -> SplitScheme {
-        match self.lambda() {
-            0.0 => SplitScheme::Uniform,
-            1.0 => SplitScheme::SelfSimilar,
-            lambda => SplitScheme::Practical { lambda },
-        }
-    }
-}
-
 /// Builds `scheme` for `view`, `res` texels per map side, through the crate's world-space frame
 /// API ([`shadow_aliasing::frame::frame`]): each map is focused on the receivers in view, its
 /// depth range reaches every caster that can shadow them, and the GPU renders with the frame's
@@ -484,7 +454,7 @@ pub fn build(
     )
 }
 
-/// [`build`] with frame options beyond the defaults ([`Options`]).
+/// [`build`] with frame options beyond the defaults ([`Options`], [`crate::options`]).
 ///
 /// # Errors
 /// As [`build`].
