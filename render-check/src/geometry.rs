@@ -22,8 +22,8 @@
 //!   and the offset uploaded to the shader.
 //! - **Bias record** ([`Geometry::normal_offset_ratio`], [`Geometry::depth_bias_ratio`]): each body
 //!   vertex's need for a lit plane through it, over a grid of normals, from the depths the
-//!   kernel's taps read on that plane (solved from the matrix; the normal offset at the point's
-//!   own footprint), against the records' values.
+//!   kernel's taps read on that plane (solved from the matrix; the normal offset at the offset
+//!   point's own footprint, the map's w followed along the normal), against the records' values.
 //! - **Texel size** ([`Geometry::texel_world_ratio`]): the largest texel edge over B measured
 //!   from the matrix's derivatives against the record's `texel_world`.
 
