@@ -65,6 +65,8 @@ pub struct Geometry {
     /// `FrameMap::receivers_volume` against the rebuilt B ([`volume_distance`]), over the
     /// camera frustum's size (far · (1 + tan θ + tan θ · aspect)), largest over the maps.
     pub receivers_volume_rel_diff: f64,
+    /// Cascades: split ranges against render-check's planes ([`crate::options::split_rel_diff`]).
+    pub split_rel_diff: Option<f64>,
     /// With `depth_clamp` ([`crate::schemes::Options`]): the map's depth (\[0, 1\]) over the
     /// rebuilt B's vertices against 0 and 1 (B alone fills the depth range), the larger
     /// distance (for stable cascades and clipmap levels, less the one texel their depth snaps
@@ -561,6 +563,7 @@ pub fn measure(scheme: Scheme, view: &View, scene: &Scene, built: &Built, res: u
         depth_bias_ratio: [f64::INFINITY, 0.0],
         texel_world_ratio: 0.0,
         receivers_volume_rel_diff: 0.0,
+        split_rel_diff: crate::options::split_rel_diff(built),
         depth_clamp_fill: (built.depth_clamp && scheme != Scheme::Faces).then_some(0.0),
     };
     // Each map's slice: by order for one map and face maps; for cascades and clipmaps the unused

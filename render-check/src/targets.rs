@@ -93,8 +93,9 @@ pub const PAPER_ERROR_MAX: f64 = 2e-2;
 /// body's vertices, and its S̄ against their product (§4.2), relatively, at most (measured at
 /// most 2.4·10⁻¹⁴ before S̄ joined).
 pub const PAPER_FRAME_REL_DIFF: f64 = 1e-6;
-/// The option cases' split ranges against the paper's planes for their λ
-/// ([`crate::options::split_rel_diff`]), relatively, at most.
+/// Each cascade's split range against the paper's planes for the λ asked
+/// ([`crate::options::split_rel_diff`]), relatively, at most (every case; measured 0 to
+/// rounding).
 pub const SPLIT_REL_DIFF: f64 = 1e-9;
 /// The minimax map's S̄ = M_x M_z over the least S̄ over n′ of the paper's maps, at most
 /// (measured at most 1 + 10⁻⁹).
@@ -216,6 +217,13 @@ pub fn geometry_violations(g: &crate::geometry::Geometry) -> Vec<String> {
         g.receivers_volume_rel_diff,
         RECEIVERS_VOLUME_REL_DIFF,
     );
+    if let Some(d) = g.split_rel_diff {
+        at_most(
+            "split_rel_diff (the maps' split ranges against the paper's planes)",
+            d,
+            SPLIT_REL_DIFF,
+        );
+    }
     if let Some(d) = g.depth_clamp_fill {
         at_most(
             "depth_clamp_fill (under depth clamp the rebuilt body's depths against 0 and 1)",

@@ -210,7 +210,8 @@ fn the_geometry_targets_fail_on_faulty_output() {
 /// records' selection ranges moved, the maps and bodies unchanged) measure a finite
 /// `body_rel_diff` that fails: each map is selected over `[z_{i−1}, 1.03 z_i]`, and B over that
 /// range reaches 0.03 z_i past the map's body. The blended cascades' bodies reach 25 % into the
-/// next slice (their band), past 1.03 z_i: there the measurement stays finite and passes.
+/// next slice (their band), past 1.03 z_i: there the measurement stays finite and passes, and
+/// `split_rel_diff` (each split range against the paper's planes) fails in every scheme.
 #[test]
 fn splits_past_their_maps_measure_finite_and_fail() {
     use render_check::faults::Fault;
@@ -255,6 +256,10 @@ fn splits_past_their_maps_measure_finite_and_fail() {
                 "{setup} {}: {g:?}",
                 scheme.name()
             );
+            // Every scheme's split ranges end 3 % past the paper's planes: 0.03 (to rounding).
+            let d = g.split_rel_diff.unwrap();
+            assert!((d - 0.03).abs() < 1e-9, "{setup} {}: {d}", scheme.name());
+            assert!(fails(&g, "split_rel_diff"), "{setup} {}", scheme.name());
         }
     }
 }

@@ -85,7 +85,7 @@ fn each_option_reaches_the_frame() {
         let c = case(name);
         let o = measured_as(&c, &defaults, |_| {});
         assert!(
-            o.split_rel_diff.unwrap() > 0.05 && fails(&o, "split_rel_diff"),
+            o.geometry.split_rel_diff.unwrap() > 0.05 && fails(&o, "split_rel_diff"),
             "{name}: {o:?}"
         );
         assert!(fails(&o, "body_rel_diff"), "{name}: {o:?}");
