@@ -249,9 +249,9 @@ fn bare_scale_and_dpi_for_publication() {
     let title = [">Maximum error and storage factor against η</text>"];
     let caption = "Lloyd et al. 2006, Fig. 6";
     assert!(title.iter().all(|t| plain_svg.contains(t)) && plain_svg.contains(caption));
-    // 144 dpi by default (the PNG's 2 pixels per unit over the SVG's 1 unit per point × 72
-    // points per inch): 144 / 0.0254 = 5669.29 → 5669 pixels per metre.
-    assert_eq!(phys(&plain_png), Some((5669, 5669, 1)));
+    // 432 dpi by default (the PNG's 6 pixels per unit over the SVG's 1 unit per point × 72
+    // points per inch): 432 / 0.0254 = 17 007.87 → 17 008 pixels per metre.
+    assert_eq!(phys(&plain_png), Some((17_008, 17_008, 1)));
     // Tick labels of the η axis (−1 to 1) use the minus sign U+2212, never the hyphen-minus.
     assert!(plain_svg.contains(">−1</text>"), "no −1 tick");
     assert!(plain_svg.contains(">−0.5</text>"), "no −0.5 tick");
@@ -269,7 +269,7 @@ fn bare_scale_and_dpi_for_publication() {
         "bare keeps title or caption"
     );
     assert!(svg.contains("M<tspan"), "bare lost the axis labels");
-    // The figure is 520 × 540 units, drawn at plot::PNG_ZOOM = 2 pixels per unit: 1040 × 1080.
+    // The figure is 520 × 420 units, drawn at plot::PNG_ZOOM = 6 pixels per unit: 3120 × 2520.
     // Bare, it is cropped to the rows between its title and caption (tests/figures_bare.rs): a
     // view box of the full width and fewer rows, which the PNG draws at twice the pixels per unit
     // (scale 2), and 300 dpi = 11 811 pixels per metre.
@@ -279,8 +279,8 @@ fn bare_scale_and_dpi_for_publication() {
             u32::from_be_bytes(b[20..24].try_into().unwrap()),
         )
     };
-    assert_eq!(size(&plain_png), (1040, 1080));
-    assert!(plain_svg.contains("viewBox=\"0 0 520 540\""));
+    assert_eq!(size(&plain_png), (3120, 2520));
+    assert!(plain_svg.contains("viewBox=\"0 0 520 420\""));
     let head = &svg[..svg.find('>').unwrap()];
     let vb_at = head.find("viewBox=\"").unwrap() + "viewBox=\"".len();
     let vb: Vec<u32> = head[vb_at..vb_at + head[vb_at..].find('"').unwrap()]
@@ -289,11 +289,11 @@ fn bare_scale_and_dpi_for_publication() {
         .collect();
     let rows = vb[3];
     assert!(
-        vb[0] == 0 && vb[1] > 0 && vb[2] == 520 && rows < 540,
+        vb[0] == 0 && vb[1] > 0 && vb[2] == 520 && rows < 420,
         "{vb:?}"
     );
     assert!(head.starts_with(&format!("<svg width=\"1040pt\" height=\"{}pt\"", 2 * rows)));
-    assert_eq!(size(&png), (2080, 4 * rows));
+    assert_eq!(size(&png), (6240, 12 * rows));
     assert_eq!(phys(&png), Some((11_811, 11_811, 1)));
     check_png(&dir.join("lloyd2006-fig6.png"));
 
@@ -306,8 +306,8 @@ fn bare_scale_and_dpi_for_publication() {
 }
 
 /// `--column single` (issue 35) lays a figure out 300 units wide and prints it 240 points
-/// (3.3 inches) wide: the SVG's `width`, and the PNG's 600 pixels at 180 per inch (7087 per
-/// metre: 180 / 0.0254 = 7086.6); asked of a figure without a single-column layout, it refuses
+/// (3.3 inches) wide: the SVG's `width`, and the PNG's 1800 pixels at 540 per inch (21 260 per
+/// metre: 540 / 0.0254 = 21 259.8); asked of a figure without a single-column layout, it refuses
 /// in one line naming it and writes nothing.
 #[test]
 fn column_single_is_240_points_wide_or_refused_by_name() {
@@ -318,8 +318,8 @@ fn column_single_is_240_points_wide_or_refused_by_name() {
     assert!(svg.starts_with("<svg width=\"240pt\""), "{}", &svg[..80]);
     assert!(svg.contains("viewBox=\"0 0 300 "));
     let png = std::fs::read(dir.join("lloyd2006-fig5.png")).unwrap();
-    assert_eq!(u32::from_be_bytes(png[16..20].try_into().unwrap()), 600);
-    assert_eq!(phys(&png), Some((7087, 7087, 1)));
+    assert_eq!(u32::from_be_bytes(png[16..20].try_into().unwrap()), 1800);
+    assert_eq!(phys(&png), Some((21_260, 21_260, 1)));
     // lloyd2006-fig10 has one (it was refused).
     let (code, _, err) = figures(&dir, &["--only", "lloyd2006-fig10", "--column", "single"]);
     assert_eq!(code, 0, "{err}");

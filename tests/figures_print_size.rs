@@ -64,7 +64,7 @@ fn pdf_inches(pdf: &[u8]) -> (f64, f64) {
 }
 
 fn close(a: (f64, f64), b: (f64, f64)) -> bool {
-    // The density is written in whole pixels per metre: 5669 for 144 per inch, 5e-5 off.
+    // The density is written in whole pixels per metre: 17 008 for 432 per inch, 8e-6 off.
     (a.0 / b.0 - 1.0).abs() < 1e-3 && (a.1 / b.1 - 1.0).abs() < 1e-3
 }
 
@@ -81,11 +81,20 @@ fn png_svg_and_pdf_print_at_one_size() {
             };
             let d = dir.join(format!("{bare}-{scale}"));
             render_with(name, &d, Format::Both, &opts).unwrap();
-            let png = png_inches(&std::fs::read(d.join(format!("{name}.png"))).unwrap());
+            let png_bytes = std::fs::read(d.join(format!("{name}.png"))).unwrap();
+            let png = png_inches(&png_bytes);
             let svg = svg_inches(&std::fs::read_to_string(d.join(format!("{name}.svg"))).unwrap());
             assert!(
                 close(png, svg),
                 "bare {bare}, scale {scale}: PNG {png:?} in, SVG {svg:?} in"
+            );
+            // At least 300 pixels per inch of the printed figure (journals' halftone minimum;
+            // the default was 144): the PNG's pixel width over the SVG's inches.
+            let px = u32::from_be_bytes(png_bytes[16..20].try_into().unwrap());
+            assert!(
+                f64::from(px) / svg.0 >= 300.0,
+                "bare {bare}, scale {scale}: {px} px over {} in",
+                svg.0
             );
             // The figure is 520 units wide: 520 points, 7.22 inches, times the scale.
             assert!(
@@ -129,11 +138,10 @@ fn single_column_prints_240_points_wide_in_every_format() {
             "bare {bare}: PNG {png:?} in, SVG {svg:?} in"
         );
         assert!((svg.0 - 240.0 / 72.0).abs() < 1e-9, "{svg:?}");
-        // 600 pixels across: 300 units at 2 pixels each.
-        assert_eq!(
-            u32::from_be_bytes(png_bytes[16..20].try_into().unwrap()),
-            600
-        );
+        // 1800 pixels across: 300 units at 6 pixels each, 540 per inch over 3.33 inches.
+        let px = u32::from_be_bytes(png_bytes[16..20].try_into().unwrap());
+        assert_eq!(px, 1800);
+        assert!(f64::from(px) / svg.0 >= 300.0, "{px} px over {svg:?} in");
         #[cfg(feature = "pdf")]
         {
             render_with(name, &d, Format::Pdf, &opts).unwrap();

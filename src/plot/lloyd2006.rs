@@ -97,16 +97,25 @@ fn fig5_panels(n: f64, f: f64, layout: Column) -> Result<(LineChart, LineChart),
     let zs = linspace(n, f, 160);
     let z_factor = (f - n) / (2.0 * view.tan_half_fov());
     let depth = || Axis::linear("depth z", n, f);
+    // Labelled at 5×10⁻², 10⁻¹, 2×10⁻¹ and 10⁰ (the fifth review: at the decades alone the
+    // 1.3 decades drawn could not be read, PSM's level 0.05 included).
+    let y = |name: &str, lo: f64, hi: f64| {
+        Axis::log10(name, lo, hi)
+            .labelled_at(&FIG5_Y_LABELS)
+            .in_powers()
+    };
     let mut cx = LineChart::new(
         "(a) x error: m_x(z) / f",
         depth(),
-        Axis::log10("m_x / f (log scale)", 0.04, 1.25),
+        y("m_x / f (log scale)", 0.04, 1.25),
     );
     let mut cz = LineChart::new(
         "(b) z error: m_z(z) · 2 tan θ / (f − n)",
         depth(),
-        Axis::log10("m_z · 2 tan θ / (f − n) (log scale)", 0.04, 1.25),
+        y("m_z · 2 tan θ / (f − n) (log scale)", 0.04, 1.25),
     );
+    cx.y_label_area = Some(FIG5_Y_LABEL_AREA);
+    cz.y_label_area = Some(FIG5_Y_LABEL_AREA);
     // The key's six entries in two rows of three, in the curves' order at z = f, top to
     // bottom (PSM, n′ = 2, LiSPSM; n′ = 20, n′ = 100, n′ = ∞).
     cz.legend_columns = Some(3);
@@ -114,8 +123,8 @@ fn fig5_panels(n: f64, f: f64, layout: Column) -> Result<(LineChart, LineChart),
         // The panels' titles give the quantities, the axes' names no longer than their plots
         // (the powers of ten say that the scale is log); the data's range (0.05 to 1) a little
         // padded.
-        cx.y = Axis::log10("x error", 0.045, 1.1);
-        cz.y = Axis::log10("z error", 0.045, 1.1);
+        cx.y = y(FIG5_SINGLE_Y[0], 0.045, 1.1);
+        cz.y = y(FIG5_SINGLE_Y[1], 0.045, 1.1);
     }
     let mut keys = Vec::new();
     for (i, (np, label, colour)) in warps.iter().enumerate() {
@@ -124,39 +133,52 @@ fn fig5_panels(n: f64, f: f64, layout: Column) -> Result<(LineChart, LineChart),
         let line = |g: &dyn Fn(f64) -> Result<(f64, f64), crate::Error>| {
             zs.iter().map(|&z| g(z)).collect::<Result<Vec<_>, _>>()
         };
-        // Each curve's shape at three depths of its own (staggered, so that the shapes of
-        // curves that meet do not coincide) and none beyond z = 15, where all of (a) meet.
-        let at: Vec<f64> = FIG5_MARKS.iter().map(|z| z + 0.5 * i as f64).collect();
-        let marks = |g: &dyn Fn(f64) -> Result<(f64, f64), crate::Error>| -> Result<Series, Fail> {
+        // n′ = 100 (the sweep's lightest) and n′ = ∞ (orange) print as one pale grey: n′ = 100
+        // dashed, with diamonds (it had left-pointing triangles against ∞'s downward ones).
+        let dashed = i == FIG5_DASHED;
+        let style = |s: Series| {
+            let s = if dashed { s.dashed() } else { s };
+            Series {
+                shape: dashed.then_some(Marker::Diamond),
+                ..s
+            }
+        };
+        // Each curve's shape at three depths of its own in each panel ([`FIG5_MARKS`]).
+        let marks = |g: &dyn Fn(f64) -> Result<(f64, f64), crate::Error>,
+                     at: &[f64]|
+         -> Result<Series, Fail> {
             let pts = at.iter().map(|&z| g(z)).collect::<Result<Vec<_>, _>>()?;
             Ok(Series {
                 label: None,
                 ..Series::line("", unjoined(&pts), *colour).with_markers()
             })
         };
-        cx.series.push(Series {
+        let marks = |g: &dyn Fn(f64) -> Result<(f64, f64), crate::Error>, panel: usize| {
+            marks(g, FIG5_MARKS[panel][i]).map(style)
+        };
+        cx.series.push(style(Series {
             label: None,
             ..Series::line("", line(&x)?, *colour)
-        });
-        cx.series.push(marks(&x)?);
+        }));
+        cx.series.push(marks(&x, 0)?);
         // One key below both panels names the curves of both, each entry with its curve's
         // line and marker: near z = f, LiSPSM, n′ = 20, n′ = 100 and n′ = ∞ run too close for
         // labels by the curves (the fourth review: "n′ = 100" read as n′ = 20's). Across two
         // columns the entries give PSM's and LiSPSM's n′; one column names them short (their
         // n′ in the caption).
-        cz.series.push(Series {
+        cz.series.push(style(Series {
             label: None,
             ..Series::line("", line(&y)?, *colour).reference()
-        });
+        }));
         let name = match layout {
             Column::Double => label.as_str(),
             Column::Single => FIG5_SHORT[i],
         };
-        keys.push(Series {
+        keys.push(style(Series {
             sample: true,
             ..Series::line(name, Vec::new(), *colour)
-        });
-        cz.series.push(marks(&y)?);
+        }));
+        cz.series.push(marks(&y, 1)?);
     }
     cz.series.extend(keys);
     Ok((cx, cz))
@@ -165,9 +187,42 @@ fn fig5_panels(n: f64, f: f64, layout: Column) -> Result<(LineChart, LineChart),
 /// Fig 5's curves as the one-column key names them.
 const FIG5_SHORT: [&str; 6] = ["PSM", "n′ = 2", "LiSPSM", "n′ = 20", "n′ = 100", "n′ = ∞"];
 
-/// The depths of Fig 5 where the first curve carries its marker (each next curve's half a
-/// unit further).
-const FIG5_MARKS: [f64; 3] = [1.8, 4.5, 11.5];
+/// The depths of Fig 5's markers, (a) and (b), for each curve (PSM, n′ = 2, LiSPSM, n′ = 20,
+/// n′ = 100, n′ = ∞): one or two where the curves are far apart (z < 3.6), the others at
+/// least 1.5 units of z from any other curve's where the curves run close. None in (b)'s
+/// crossings (z from 4 to 8.5, where the fifth review found five markers on one another), and
+/// none in (a) beyond z = 13, where all of (a) meet 1/f.
+const FIG5_MARKS: [[&[f64]; 6]; 2] = [
+    [
+        &[1.3, 13.0],
+        &[1.75, 4.0],
+        &[2.2, 5.5],
+        &[2.65, 8.5],
+        &[2.0, 7.0],
+        &[3.5, 10.0, 11.5],
+    ],
+    [
+        &[1.3, 8.6, 11.8],
+        &[1.6, 9.05, 12.25],
+        &[2.3, 9.5, 12.7],
+        &[2.65, 13.5, 17.5],
+        &[2.0, 15.0, 18.0],
+        &[3.4, 16.5, 19.5],
+    ],
+];
+
+/// The curve of Fig 5 drawn dashed with diamonds: n′ = 100 (its colour and n′ = ∞'s print as
+/// one grey).
+const FIG5_DASHED: usize = 4;
+
+/// Where Fig 5's log axes are labelled: 5×10⁻² (PSM's level), 10⁻¹, 2×10⁻¹ and 10⁰.
+const FIG5_Y_LABELS: [f64; 4] = [0.05, 0.1, 0.2, 1.0];
+
+/// Room for "5×10⁻²" beside Fig 5's axis names, in units.
+const FIG5_Y_LABEL_AREA: u32 = 76;
+
+/// Fig 5's y names in one column: the normalised quantities, as short as the plots need.
+const FIG5_SINGLE_Y: [&str; 2] = ["m_x / f", "m_z 2 tan θ / (f − n)"];
 
 /// Fig 6: M_x, M_z and S̄ against η ∈ [−1, 1] (n = 1, f = 100, θ = 30°, unit resolutions), as
 /// they are, on a logarithmic axis (the paper normalises each to fit one linear scale, which puts
@@ -189,33 +244,47 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
     let top = |v: &[(f64, f64)]| v.iter().map(|p| p.1).fold(0.0, f64::max);
     let (top_x, top_z, top_s) = (top(&m_x), top(&m_z), top(&s));
     let mut c = LineChart::new(
-        "(a) log scale",
+        "",
         Axis::linear("η (−1: n′ = ∞, 1: n′ = n)", -1.0, 1.0),
         Axis::log10("M_x, M_z, S̄ (log scale)", 0.5, 2e4).in_powers(),
     );
     c.legend = SeriesLabelPosition::LowerLeft;
-    // M_x, M_z and S̄ are quantities of one scheme: a sweep's colours, not schemes'; M_z and S̄
-    // dashed and dotted, so that the lines that meet differ in more than hue. M_z first and S̄
-    // third: a line's markers sit a little further along the more its index (mod 3), so
-    // where M_z and S̄ meet (η ≥ 0.8, both near 86) their markers are 0.14 apart in η.
-    let quantity = |i: usize| sweep(i, 3);
-    c.series
-        .push(Series::line("M_z", m_z.clone(), quantity(1)).dashed());
-    c.series.push(Series::line("M_x", m_x, quantity(0)));
-    c.series
-        .push(Series::line("S̄ = M_x M_z", s, quantity(2)).dotted());
-    // (b): M_z on a linear axis, where its V (linear in η on each side of 0, App. B) shows.
-    let mut v = LineChart::new(
-        "(b) M_z, linear scale",
-        c.x.clone(),
-        Axis::linear("M_z", 0.0, 1.05 * top_z),
-    );
-    // No legend: the panel's title names its one curve.
-    v.series.push(Series {
-        label: None,
-        ..Series::line("M_z", m_z, quantity(1)).dashed()
-    });
-    v.legend = SeriesLabelPosition::UpperMiddle;
+    // Three quantities, three hues (the fifth review: M_x and M_z were two dark purples that
+    // overlap for η ≤ 0, S̄ a pale dotted lilac), none a scheme's ([`FIG6_LOOKS`]); the key in
+    // the axis name's order, M_x, M_z, S̄. Each line carries its markers at η values of its own
+    // ([`FIG6_MARKS`]), so that where two lines meet (M_x and M_z for η ≤ 0, M_z and S̄ for
+    // η ≥ 0.8) their markers do not.
+    let lines = [("M_x", m_x), ("M_z", m_z), ("S̄ = M_x M_z", s)];
+    let mut keys = Vec::new();
+    for (((name, pts), (colour, dash)), marks) in lines.into_iter().zip(FIG6_LOOKS).zip(FIG6_MARKS)
+    {
+        let style = |s: Series| match dash {
+            0 => s,
+            1 => s.dashed(),
+            _ => s.dotted(),
+        };
+        let at: Vec<(f64, f64)> = marks
+            .iter()
+            .filter_map(|&eta| {
+                pts.iter()
+                    .min_by(|a, b| (a.0 - eta).abs().total_cmp(&(b.0 - eta).abs()))
+                    .copied()
+            })
+            .collect();
+        c.series.push(style(Series {
+            label: None,
+            ..Series::line("", pts, colour)
+        }));
+        c.series.push(Series {
+            label: None,
+            ..Series::line("", unjoined(&at), colour).with_markers()
+        });
+        keys.push(style(Series {
+            sample: true,
+            ..Series::line(name, Vec::new(), colour)
+        }));
+    }
+    c.series.extend(keys);
     let nb = |t: String| t.replace(' ', "\u{a0}");
     let config = format!(
         "{}, {}, {}°",
@@ -229,17 +298,20 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
         nb(format!("M_z = {}", fmt_plain(top_z))),
         nb(format!("S̄ = {}", fmt_plain(top_s))),
     );
+    // One panel in both forms (the fifth review: a second panel of M_z on a linear axis took
+    // half the figure to show the V that the log scale shows), no letter; its axis names the
+    // scale.
     let double = Charts {
-        size: (520, 540),
+        size: FIG6_SIZE,
         title: "Maximum error and storage factor against η".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 6 (Eq 9–12), {config}, image and shadow map of equal \
-             resolution. (a) The values as they are (the paper scales each curve to one \
-             linear axis), largest at η\u{a0}=\u{a0}−1: {maxima}. M_x and M_z run \
-             parallel for η\u{a0}≤\u{a0}0; beyond, M_x falls as M_z rises, and S̄ stays \
-             constant (§4.3). (b) M_z is least at η\u{a0}=\u{a0}0."
+             resolution. The values as they are (the paper scales each curve to one linear \
+             axis), largest at η\u{a0}=\u{a0}−1: {maxima}. M_x and M_z run parallel for \
+             η\u{a0}≤\u{a0}0; beyond, M_x falls as M_z rises, and S̄ stays constant (§4.3). \
+             M_z is least at η\u{a0}=\u{a0}0."
         )],
-        charts: vec![c.clone(), v],
+        charts: vec![c.clone()],
     };
     let single = Charts {
         size: (Column::Single.width(), SINGLE_HEIGHT),
@@ -249,11 +321,7 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
              each curve to one linear axis); largest at η\u{a0}=\u{a0}−1: {maxima}; M_z \
              least at η\u{a0}=\u{a0}0."
         )],
-        // One panel: no letter; its axis names the scale.
-        charts: vec![LineChart {
-            title: String::new(),
-            ..c
-        }],
+        charts: vec![c],
     };
     Ok(Keyed {
         key_inside: true,
@@ -265,13 +333,33 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
     })
 }
 
+/// Fig 6's size across two columns: one panel, its plot about 0.6 as tall as wide.
+const FIG6_SIZE: (u32, u32) = (520, 420);
+
+/// Fig 6's lines M_x, M_z and S̄: colour and dash (0 solid, 1 dashed, 2 dotted). M_x the
+/// sweep's darkest purple (L* 18), M_z pink (L* 61, as barroso-fig7's least M_z), S̄ black: three
+/// hues, and where two lines meet (M_x and M_z, M_z and S̄) their greys are 43 and 61 L* apart.
+const FIG6_LOOKS: [(RGBColor, u8); 3] = [
+    (super::chart::SWEEP[0], 0),
+    (PALETTE[3], 1),
+    (PALETTE[6], 2),
+];
+
+/// The η of Fig 6's markers on M_x, M_z and S̄: M_x's and M_z's apart where they run together
+/// (η ≤ 0), M_z's and S̄'s where they meet (η ≥ 0.8).
+const FIG6_MARKS: [[f64; 4]; 3] = [
+    [-0.9, -0.45, 0.3, 0.8],
+    [-0.7, -0.25, 0.45, 0.7],
+    [-0.8, -0.35, 0.15, 0.95],
+];
+
 /// Fig 10: S̄ of ZP+W with the light overhead against the number of z-partitions k, for several
 /// f/n (a sweep: [`sweep`]'s colours), each with the optimal logarithmic S̄ (App. C) it tends
 /// to, dashed in its curve's colour and given in the key.
 pub(super) fn fig10() -> Result<Keyed, Fail> {
     let (a, b, optima) = fig10_panels()?;
     let ratios = FIG10_RATIOS;
-    let (lo, hi) = (fmt_plain(ratios[0]), fmt_plain(ratios[ratios.len() - 1]));
+    let (lo, hi) = (ratio_text(ratios[0]), ratio_text(ratios[ratios.len() - 1]));
     let double = Charts {
         size: (520, 540),
         title: "S̄ of ZP+W against the number of z-partitions".into(),
@@ -280,8 +368,8 @@ pub(super) fn fig10() -> Result<Keyed, Fail> {
              overhead: S̄ of ZP+W, k((f/n)^{{1/k}}\u{a0}−\u{a0}1)/(2\u{a0}tan\u{a0}θ), falls \
              with k towards the optimal S̄_{{opt}}\u{a0}=\u{a0}ln(f/n)/\
              (2\u{a0}tan\u{a0}θ) (dashed, same colour): {} for \
-             f/n\u{a0}=\u{a0}{lo} to {hi}. (b), not in the paper: S̄/S̄_{{opt}}. The paper \
-             does not state the f/n of its curve.",
+             f/n\u{a0}=\u{a0}{lo} to {hi}. (b), not in the paper: S̄/S̄_{{opt}}, dashed at \
+             1. The paper does not state the f/n of its curve.",
             optima.join(", "),
         )],
         charts: vec![a, b],
@@ -349,7 +437,7 @@ fn fig10_panels() -> Result<(LineChart, LineChart, Vec<String>), Fail> {
         let colour = sweep(i, ratios.len());
         let label = format!(
             "f/n\u{a0}=\u{a0}{}, S̄_{{opt}}\u{a0}=\u{a0}{opt:.2}",
-            fmt_plain(ratio)
+            ratio_text(ratio)
         );
         // The optimum the curve tends to, dashed in the curve's colour (its value is in the
         // curve's key entry), under the curve.
@@ -374,7 +462,28 @@ fn fig10_panels() -> Result<(LineChart, LineChart, Vec<String>), Fail> {
             .dashed()
             .reference()
     });
+    // The dashed line named in the plot (the fifth review: it was in no key), in its empty
+    // upper right (under the line the note ran across the x axis).
+    r.notes.push(Note {
+        at: FIG10_NOTE_AT,
+        text: FIG10_NOTE.into(),
+        colour: SHARED,
+    });
     Ok((c, r, optima))
+}
+
+/// The note naming Fig 10 (b)'s dashed line, and where it starts (k, S̄/S̄_opt).
+const FIG10_NOTE: &str = "dashed: S̄\u{a0}=\u{a0}S̄_{opt}";
+const FIG10_NOTE_AT: (f64, f64) = (6.5, 300.0);
+
+/// A depth ratio as the figures write it: plain below 10⁴ (10, 100, 1000), a power of ten from
+/// 10⁴ on (the fifth review: "f/n = 10000" against lloyd2005-fig7's "f/n = 10⁴").
+fn ratio_text(ratio: f64) -> String {
+    if ratio >= 1e4 {
+        super::chart::fmt_power(ratio)
+    } else {
+        fmt_plain(ratio)
+    }
 }
 
 /// The top of Fig 12 (b)'s note on the 17-map pair, in S̄: under ZP's curve (37.56 at its
@@ -438,8 +547,8 @@ pub(super) fn fig12() -> Result<Keyed, Fail> {
         size: (520, 560),
         title: "Storage factor against the number of shadow maps".into(),
         caption: vec![format!(
-            "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. FP+ZP+W uses {} maps (markers \
-             only). Behind, ZP+W equals ZP, and each face's sub-frustum of FP+ZP+W has {eff} \
+            "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. {SCHEME_WORDS} FP+ZP+W uses {} \
+             maps (markers only). Behind, ZP+W equals ZP, and each face's sub-frustum of FP+ZP+W has {eff} \
              whatever θ (Eq 21). ZP with one map lies off the scale: {} overhead, {} behind. \
              (b), not in the paper: with {j3} maps ZP is lower ({zp3:.1} against {fp3:.1}); \
              with {j4}, FP+ZP+W ({fp4:.2} against {zp4:.2}).",
@@ -459,8 +568,8 @@ pub(super) fn fig12() -> Result<Keyed, Fail> {
         size: (Column::Single.width(), SINGLE_HEIGHT),
         title: "S̄ against the number of maps".into(),
         caption: vec![format!(
-            "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. FP+ZP+W uses {} maps; behind, \
-             its faces have {eff} (Eq 21), and with {j4} maps it beats ZP ({fp4:.2} against \
+            "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. {SCHEME_WORDS} FP+ZP+W uses {} \
+             maps; behind, its faces have {eff} (Eq 21), and with {j4} maps it beats ZP ({fp4:.2} against \
              {zp4:.2}).",
             nb(&format!("f/n = {ratio}")),
             nb(&format!("θ = {THETA_DEG}")),
@@ -558,8 +667,31 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
             });
             Series::line("ZP = ZP+W, behind", Vec::new(), SHARED).reference()
         } else {
-            // Every count: a line, with a few markers along it (not one per count).
-            Series::line(format!("{name}, {light_name}"), pts, colour)
+            // Every count: a line, with a few markers along it (not one per count), at counts
+            // 4k + 3 ([`FIG12_ZP_MARKS`]), two counts from every FP+ZP+W triangle at 4k + 1
+            // (the fifth review: ZP's circle at 36 lay under FP+ZP+W's triangle at 37).
+            let counts: &[f64] = if scheme == Scheme::Zp {
+                &FIG12_ZP_MARKS
+            } else {
+                &FIG12_ZP_W_MARKS
+            };
+            let marks: Vec<(f64, f64)> = pts
+                .iter()
+                .copied()
+                .filter(|p| counts.contains(&p.0))
+                .collect();
+            c.series.push(Series {
+                label: None,
+                ..Series::line("", pts, colour)
+            });
+            c.series.push(Series {
+                label: None,
+                ..Series::line("", unjoined(&marks), colour).with_markers()
+            });
+            Series {
+                sample: true,
+                ..Series::line(format!("{name}, {light_name}"), Vec::new(), colour)
+            }
         };
         c.series.push(match light {
             Overhead => s,
@@ -606,6 +738,16 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
     Ok((c, zoom))
 }
 
+/// The counts of maps where Fig 12 (a)'s ZP and ZP+W overhead lines carry their markers:
+/// 4k + 3, two counts from FP+ZP+W's triangles at 4k + 1, ZP's and ZP+W's alternating (and no
+/// ZP marker beyond 11 maps, where its line runs within a marker of FP+ZP+W's triangles).
+const FIG12_ZP_MARKS: [f64; 2] = [3.0, 11.0];
+const FIG12_ZP_W_MARKS: [f64; 3] = [7.0, 15.0, 23.0];
+
+/// The schemes' letters in words, as Fig 12's and 13's captions give them.
+pub(super) const SCHEME_WORDS: &str =
+    "ZP: z-partitioning, FP: face partitioning, W: warping (Lloyd et al. 2006 §5).";
+
 /// `v` as a caption prints it: m×10^{e} with three significant digits, or 10^{e} for a power
 /// of ten.
 fn sci(v: f64) -> String {
@@ -643,3 +785,7 @@ mod tests;
 #[cfg(test)]
 #[path = "lloyd2006_forms_tests.rs"]
 mod forms_tests;
+
+#[cfg(test)]
+#[path = "lloyd2006_review5_tests.rs"]
+mod review5_tests;

@@ -5,7 +5,7 @@
 use super::super::chart::FONT;
 use super::super::chart::{build_chart, column, fmt_plain, frame, Axis, Look, PALETTE};
 use super::super::{Column, Fail, Figure};
-use super::{sci, FIG12_RATIO, SINGLE_HEIGHT, THETA_DEG};
+use super::{sci, FIG12_RATIO, SCHEME_WORDS, SINGLE_HEIGHT, THETA_DEG};
 use crate::analytic::partition::{scheme_storage_factor, shadow_map_count, Scheme, SchemeLight};
 use crate::ViewFrustum;
 use plotters::coord::Shift;
@@ -227,8 +227,8 @@ impl Figure for Fig13 {
         let tan_eff = 4.0 * k * (FIG12_RATIO.powf(1.0 / k) - 1.0) / (2.0 * (fp - 1.0));
         let caption = match column() {
             Column::Double => format!(
-                "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind: ZP (= ZP+W) with j maps \
-                  against FP+ZP+W with k z-partitions per face, \
+                "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind. {SCHEME_WORDS} ZP (= ZP+W) \
+                 with j maps against FP+ZP+W with k z-partitions per face, \
                  j\u{a0}=\u{a0}4k\u{a0}+\u{a0}1. Below the dot FP+ZP+W needs less storage; above it, ZP. With {j} maps the dot is \
                  at f/n\u{a0}=\u{a0}{at:.0}{} Any θ: Eq 20 \
                  has none; Eq 21's face sub-frusta have tan\u{a0}θ_{{eff}}\u{a0}=\u{a0}{}.",
@@ -236,8 +236,9 @@ impl Figure for Fig13 {
                 fmt_plain(tan_eff),
             ),
             Column::Single => format!(
-                "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind, any θ: ZP with j maps \
-                 against FP+ZP+W with j\u{a0}=\u{a0}4k\u{a0}+\u{a0}1. Below the dot \
+                "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind, any θ. {SCHEME_WORDS} \
+                 ZP with j maps against FP+ZP+W with k z-partitions per face, \
+                 j\u{a0}=\u{a0}4k\u{a0}+\u{a0}1. Below the dot \
                  FP+ZP+W needs less storage; above it, ZP ({j} maps: \
                  f/n\u{a0}=\u{a0}{at:.0})."
             ),

@@ -157,8 +157,8 @@ pub struct FiguresArgs {
     )]
     pub scale: i64,
     /// Pixels per inch recorded in the PNG (its pHYs chunk): printed size = pixels / DPI. By
-    /// default the PNG prints at the SVG's and the PDF's size: 144 (one unit a point) for
-    /// --column double, 180 for single.
+    /// default the PNG prints at the SVG's and the PDF's size: 432 (6 pixels a unit, one unit a
+    /// point) for --column double, 540 for single.
     #[arg(long, value_name = "DPI", allow_hyphen_values = true)]
     pub dpi: Option<f64>,
     /// Lay the figures out across a page's two columns (double, 7.2 in wide) or in one column
