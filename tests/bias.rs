@@ -97,8 +97,18 @@ fn check_map(map: &FrameMap, l: DVec3, res: u32, seed: u64) -> (f64, f64) {
     let (mut need_o, mut need_d) = (0.0f64, 0.0f64);
     for depth in ClipDepth::ALL {
         let look = Lookup::new(map, depth, res);
+        // The single-lookup record, as `FrameMap::gpu` uploads it; the shader scales its normal
+        // offset for a kernel of radius r by s (1 − τ)/(1 − s τ), s = 2r + 1 (`sa_offset_scale`,
+        // GpuShadowMap's docs), written out here.
+        let single = map.bias(0.0, depth).unwrap();
         for r in 0..=2 {
             let bias = map.bias(f64::from(r), depth).unwrap();
+            let (s, tau) = (f64::from(2 * r + 1), single.normal_offset_growth);
+            let scaled = if s * tau < 1.0 {
+                single.normal_offset * s * (1.0 - tau) / (1.0 - s * tau)
+            } else {
+                f64::INFINITY
+            };
             let sign = if depth == ClipDepth::Reversed {
                 1.0
             } else {
@@ -134,6 +144,15 @@ fn check_map(map: &FrameMap, l: DVec3, res: u32, seed: u64) -> (f64, f64) {
                         "normal offset {bias:?}: tap {w} ahead at α = {alpha}, r = {r}, {depth:?}, w(p) {}, w(q) {}",
                         (look.m * p.extend(1.0)).w,
                         (look.m * q.extend(1.0)).w
+                    );
+                }
+                // The single lookup's record scaled to this kernel, as the shader scales it.
+                let q = p + n * scaled;
+                if scaled.is_finite() && (look.m * q.extend(1.0)).w > 0.0 {
+                    let w = look.worst(q, look.project(q).z, p, n, r);
+                    assert!(
+                        w <= 1e-9,
+                        "scaled normal offset {scaled} (record {single:?}): tap {w} ahead at α = {alpha}, r = {r}, {depth:?}"
                     );
                 }
                 // The need: the unbiased deficit per tan α; the least offset (bisection).

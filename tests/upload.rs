@@ -34,7 +34,10 @@ fn rust_offsets() -> Vec<(&'static str, usize)> {
         ("constant_depth", offset_of!(GpuShadowMap, constant_depth)),
         ("bias_radius", offset_of!(GpuShadowMap, bias_radius)),
         ("resolution", offset_of!(GpuShadowMap, resolution)),
-        ("reserved0", offset_of!(GpuShadowMap, reserved0)),
+        (
+            "normal_offset_growth",
+            offset_of!(GpuShadowMap, normal_offset_growth),
+        ),
         ("reserved1", offset_of!(GpuShadowMap, reserved1)),
         ("reserved2", offset_of!(GpuShadowMap, reserved2)),
     ]
@@ -261,10 +264,22 @@ fn record_and_arrays_carry_the_maps_values() {
                 assert_eq!(f32::from_bits(word(&b, 112)), g.texel_extent[0]);
                 assert_eq!(f32::from_bits(word(&b, 116)), g.texel_extent[1]);
                 assert_eq!(f32::from_bits(word(&b, 120)), g.constant_depth);
-                assert_eq!(&b[124..128], &[0u8; 4]); // bias_radius 0.0
-                                                     // The map's resolution (the frame's, here), then three zero words.
+                // bias_radius 0.0; the map's resolution (the frame's, here); the normal offset's
+                // growth τ rounded up to f32 (0 for an orthographic map); two zero words.
+                assert_eq!(&b[124..128], &[0u8; 4]);
                 assert_eq!(word(&b, 128), 2048, "the frame's map_resolution");
-                assert_eq!(&b[132..], &[0u8; 12]);
+                let tau = f32::from_bits(word(&b, 132));
+                assert_eq!(tau, g.normal_offset_growth);
+                assert!(f64::from(tau) >= bias.normal_offset_growth, "{tau}");
+                assert_eq!(tau < 1.0, bias.normal_offset.is_finite(), "{tau}");
+                assert!(
+                    f64::from(tau) <= bias.normal_offset_growth * (1.0 + 1e-6),
+                    "{tau}"
+                );
+                if m.shadow.n_prime().value().is_infinite() {
+                    assert_eq!(tau, 0.0, "an orthographic map's offset grows as its reach");
+                }
+                assert_eq!(&b[136..], &[0u8; 8]);
                 #[cfg(feature = "bytemuck")]
                 if cfg!(target_endian = "little") {
                     assert_eq!(bytemuck::bytes_of(&g), &b[..]);

@@ -70,6 +70,13 @@
 //!   projection lies near B needs the denominator: with p's footprint held the record of PSM's
 //!   map (n′ = n_B, Lloyd 2006 §4.1) covered only 0.574 of what render-check's set-ups need at
 //!   320 × 240 (docs/rendered.md, "What is measured", 13).
+//!
+//!   The bound is not proportional to ρ: write it `max_α ρ N₁(α) / (1 − ρ T₁(α))`. For a kernel
+//!   of reach `s ρ`, s ≥ 1, each α's term is `s · ρ N₁/(1 − ρ T₁) · (1 − x)/(1 − s x)` with
+//!   `x = ρ T₁(α) ≤ τ = max_α ρ T₁` ([`Bias::normal_offset_growth`]), and `(1 − x)/(1 − s x)`
+//!   grows with x, so the larger kernel needs at most `s (1 − τ)/(1 − s τ)` times the record
+//!   (`s` times for an orthographic map, τ = 0). The WGSL module scales an uploaded record by
+//!   this factor (`sa_offset_scale`), the depth bias by `s` alone (it is proportional to ρ).
 //! - **Texel extents.** `(2/res) · |E_s|` and `(2/res) · |E_t|`, the texel's two world-space
 //!   edges, for PCF or PCSS radii in world units (anisotropic for warped maps).
 //!
@@ -165,6 +172,13 @@ pub struct Bias {
     pub constant_depth: f64,
     /// The largest world-space extents over B of the texel's two edges, along clip s and t.
     pub texel_extent: (f64, f64),
+    /// τ, how fast the normal offset outgrows the kernel's reach ρ = r + ½ (module docs,
+    /// "Normal offset"): the largest over α of the bound's denominator term
+    /// `ρ (2/res) |row₃| (a cos α + b sin α) sin α`, in [0, 1) where `normal_offset` is finite
+    /// (0 for an orthographic map). A kernel of reach `s ρ` (s ≥ 1) needs at most
+    /// `s (1 − τ)/(1 − s τ) · normal_offset` (none is certified where `s τ ≥ 1`): the WGSL
+    /// module's `sa_offset_scale`, for a record uploaded for a smaller kernel than the shader's.
+    pub normal_offset_growth: f64,
 }
 
 impl FrameMap {
@@ -275,9 +289,9 @@ impl FrameMap {
             (g * across, g * slope),
             OFFSET_BOUND_PIECES,
         );
-        let normal_offset = bound;
         Bias {
-            normal_offset,
+            normal_offset: bound,
+            normal_offset_growth: offset_growth(g * across, g * slope),
             slope_scaled_depth: -sign * reach * slope,
             constant_depth: -sign * (reach * across + 8.0 * f64::from(f32::EPSILON)),
             texel_extent: (texel * ext_s, texel * ext_t),
@@ -361,6 +375,13 @@ fn offset_bound((a_n, b_n): (f64, f64), (a_d, b_d): (f64, f64), pieces: u32) -> 
         best = best.max(n_max / d_min);
     }
     best
+}
+
+/// τ = max over α ∈ [0, π/2] of `(a_d cos α + b_d sin α) sin α` (a_d, b_d ≥ 0), the
+/// denominator term of [`offset_bound`]: `b_d/2 + hypot(a_d, b_d)/2 · sin(2α − atan2(b_d, a_d))`,
+/// whose crest (π/2 + atan2(b_d, a_d))/2 lies in [π/4, π/2].
+fn offset_growth(a_d: f64, b_d: f64) -> f64 {
+    0.5 * (b_d + a_d.hypot(b_d))
 }
 
 /// The largest `(|c_s| + |c_t|) · w` over B from its vertices' `(w, c_s, c_t)`, each affine in

@@ -66,19 +66,34 @@ fn sa_depth_lit(m: GpuShadowMap, depth: f32, stored: f32) -> bool {
     return d <= stored;
 }
 
-// The factor of a record's bias values for a PCF kernel of radius r texels: the record holds them
-// for a kernel of radius m.bias_radius (0: FrameMap::gpu, gpu_relative; r: gpu_with_pcf), and each
-// is proportional to r + 1/2, so a kernel of radius r needs (2r + 1)/(2 bias_radius + 1) times
-// them; never less than the record's own (GpuShadowMap's docs). A record from gpu_with_pcf(r)
-// filtered with the same r is used as it is: the kernel is counted once.
+// The factor of a record's depth bias for a PCF kernel of radius r texels: the record holds it
+// for a kernel of radius m.bias_radius (0: FrameMap::gpu, gpu_relative; r: gpu_with_pcf), and it
+// is proportional to r + 1/2, so a kernel of radius r needs s = (2r + 1)/(2 bias_radius + 1)
+// times it; never less than the record's own (GpuShadowMap's docs). A record from
+// gpu_with_pcf(r) filtered with the same r is used as it is: the kernel is counted once.
 fn sa_kernel_scale(m: GpuShadowMap, r: i32) -> f32 {
     return max(f32(2 * max(r, 0) + 1) / (2.0 * max(m.bias_radius, 0.0) + 1.0), 1.0);
+}
+
+// The factor of a record's normal offset for a PCF kernel of radius r texels: s (1 - t)/(1 - s t),
+// s = sa_kernel_scale(m, r), t = m.normal_offset_growth (shadow_aliasing::frame::bias, "Normal
+// offset": the offset point's own footprint makes a perspective map's offset grow faster than the
+// kernel's reach; t = 0, the factor s, for an orthographic map). Where s t >= 1 no offset is
+// certified: the factor is 1e30, the offset as the record's own +inf.
+fn sa_offset_scale(m: GpuShadowMap, r: i32) -> f32 {
+    let s = sa_kernel_scale(m, r);
+    let t = max(m.normal_offset_growth, 0.0);
+    let d = 1.0 - s * t;
+    if (!(d > 0.0)) {
+        return 1e30;
+    }
+    return s * (1.0 - t) / d;
 }
 
 // The lookup point: p moved along its unit normal n by the record's normal offset (world units)
 // for a kernel of radius r.
 fn sa_offset_point(m: GpuShadowMap, p: vec3<f32>, n: vec3<f32>, r: i32) -> vec3<f32> {
-    return p + n * (m.normal_offset * sa_kernel_scale(m, r));
+    return p + n * (m.normal_offset * sa_offset_scale(m, r));
 }
 
 // The normal offset (world units) the point p with unit normal n needs in map m for a kernel of
@@ -92,7 +107,7 @@ fn sa_local_normal_offset(m: GpuShadowMap, p: vec3<f32>, n: vec3<f32>, l: vec3<f
     if (cos_a <= 0.0) {
         return 0.0;
     }
-    let fallback = m.normal_offset * sa_kernel_scale(m, r);
+    let fallback = m.normal_offset * sa_offset_scale(m, r);
     let h = m.world_to_clip * vec4<f32>(p, 1.0);
     if (!(h.w > 0.0)) {
         return fallback;

@@ -37,15 +37,20 @@ use glam::{DMat4, DVec3, Mat4};
 /// | `constant_depth` | 120 | `f32` |
 /// | `bias_radius` | 124 | `f32` |
 /// | `resolution` | 128 | `u32` |
-/// | `reserved0`, `reserved1`, `reserved2` | 132, 136, 140 | `u32` |
+/// | `normal_offset_growth` | 132 | `f32` |
+/// | `reserved1`, `reserved2` | 136, 140 | `u32` |
 ///
 /// The bias values are [`FrameMap::bias`]'s for a PCF kernel of radius `bias_radius` texels:
 /// 0 (a single lookup) from [`FrameMap::gpu`] and [`FrameMap::gpu_relative`], r from
-/// [`FrameMap::gpu_with_pcf`]. Each value is proportional to r + ½ (but for the constant's 8
-/// `f32` ulps, which enlarging only enlarges), so a shader filtering with radius r scales them by
-/// (2r + 1)/(2 `bias_radius` + 1), and by 1 where that is below 1 (a record built for a larger
-/// kernel is kept, never shrunk): the WGSL module's `sa_kernel_scale(m, r)`. Uploading
-/// `gpu_with_pcf(depth, r)` and filtering with the same r therefore counts the kernel once.
+/// [`FrameMap::gpu_with_pcf`]. The depth bias is proportional to r + ½ (but for the constant's 8
+/// `f32` ulps, which enlarging only enlarges), so a shader filtering with radius r scales it by
+/// s = (2r + 1)/(2 `bias_radius` + 1), and by 1 where that is below 1 (a record built for a larger
+/// kernel is kept, never shrunk): the WGSL module's `sa_kernel_scale(m, r)`. The normal offset
+/// grows faster where the map is perspective (the offset point's own footprint: `frame::bias`):
+/// by s (1 − τ)/(1 − s τ), τ = `normal_offset_growth` (0 for an orthographic map, where this is
+/// s), the WGSL module's `sa_offset_scale(m, r)`. Uploading `gpu_with_pcf(depth, r)` and
+/// filtering with the same r therefore counts the kernel once, and either upload covers a
+/// larger kernel.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 #[cfg_attr(feature = "bytemuck", derive(bytemuck::Pod, bytemuck::Zeroable))]
@@ -92,10 +97,12 @@ pub struct GpuShadowMap {
     /// [`FrameInput::map_resolutions`](super::FrameInput::map_resolutions)); the WGSL module's
     /// texel lookups read it, so a record built by hand must set it (`Default` leaves 0).
     pub resolution: u32,
-    /// Zero, as `reserved1` and `reserved2`: they bring the record to 144 bytes, a multiple of
-    /// 16, the alignment of `mat4x4<f32>` (three scalars, as a uniform buffer's arrays need a
-    /// stride of 16).
-    pub reserved0: u32,
+    /// [`Bias::normal_offset_growth`](super::Bias::normal_offset_growth) τ for `bias_radius`,
+    /// rounded up to `f32`: a kernel s times the record's reach needs s (1 − τ)/(1 − s τ) times
+    /// `normal_offset` (0 for an orthographic map; a record built by hand with 0 claims one).
+    pub normal_offset_growth: f32,
+    /// Zero, as `reserved2`: they bring the record to 144 bytes, a multiple of 16, the
+    /// alignment of `mat4x4<f32>` (as a uniform buffer's arrays need a stride of 16).
     /// Zero.
     pub reserved1: u32,
     /// Zero.
@@ -150,7 +157,8 @@ impl GpuShadowMap {
             .chain([self.face, self.clip_depth])
             .chain(bias.map(f32::to_bits))
             .chain([self.bias_radius.to_bits(), self.resolution])
-            .chain([self.reserved0, self.reserved1, self.reserved2]);
+            .chain([self.normal_offset_growth.to_bits()])
+            .chain([self.reserved1, self.reserved2]);
         let mut out = [0u8; Self::SIZE];
         for (chunk, w) in out.chunks_exact_mut(4).zip(words) {
             chunk.copy_from_slice(&w.to_le_bytes());
@@ -184,7 +192,7 @@ struct GpuShadowMap {
     constant_depth: f32,
     bias_radius: f32,
     resolution: u32,
-    reserved0: u32,
+    normal_offset_growth: f32,
     reserved1: u32,
     reserved2: u32,
 }
@@ -331,7 +339,7 @@ impl FrameMap {
             constant_depth: bias.constant_depth as f32,
             bias_radius: r as f32,
             resolution: self.resolution,
-            reserved0: 0,
+            normal_offset_growth: f32_up(bias.normal_offset_growth),
             reserved1: 0,
             reserved2: 0,
         }
@@ -350,5 +358,16 @@ impl FrameMap {
     #[must_use]
     pub fn world_to_clip_mint(&self, depth: ClipDepth) -> mint::ColumnMatrix4<f64> {
         self.world_to_clip(depth).into()
+    }
+}
+
+/// `x` rounded up to `f32` (x ≥ 0 finite, or +∞): the growth τ must not shrink on upload, since
+/// the factor `s (1 − τ)/(1 − s τ)` grows with it.
+fn f32_up(x: f64) -> f32 {
+    let v = x as f32;
+    if f64::from(v) < x {
+        f32::from_bits(v.to_bits() + 1)
+    } else {
+        v
     }
 }
