@@ -290,9 +290,17 @@ impl Frame<'_> {
         let res = f64::from(self.res);
         let rec = &m.record;
         let r = f64::from(path.radius);
-        // The kernel's factor on the record's values: (2r + 1)/(2 bias_radius + 1), at least 1.
+        // The kernel's factor on the record's depth bias: s = (2r + 1)/(2 bias_radius + 1), at
+        // least 1; on its normal offset s (1 − τ)/(1 − s τ), τ the record's growth (1e30 where
+        // s τ ≥ 1), as `sa_offset_scale` (GpuShadowMap's docs).
         let scale = ((2.0 * r + 1.0) / (2.0 * f64::from(rec.bias_radius).max(0.0) + 1.0)).max(1.0);
-        let record_offset = f64::from(rec.normal_offset) * scale;
+        let tau = f64::from(rec.normal_offset_growth).max(0.0);
+        let offset_scale = if scale * tau < 1.0 {
+            scale * (1.0 - tau) / (1.0 - scale * tau)
+        } else {
+            1e30
+        };
+        let record_offset = f64::from(rec.normal_offset) * offset_scale;
         let (offset, fallback) = if path.flags & SA_LOCAL_NORMAL_OFFSET != 0 {
             match normal_offset_at(&m.wc, ClipDepth::ZeroToOne, self.res, p, n, self.light, r) {
                 Some(o) => (o * self.local_factor, false),

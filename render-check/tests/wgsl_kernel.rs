@@ -1,8 +1,10 @@
 //! The WGSL module's PCF scaling executed on the GPU (wgpu compute on Vulkan; lavapipe without a
 //! GPU): a record's bias values are for the kernel radius it carries (`bias_radius`), and
 //! `sa_kernel_scale(m, r)` rescales them to the shader's r, so a record from `gpu_with_pcf(r)`
-//! filtered with the same r counts the kernel once. The expected values are the library's `f64`
-//! bias for the shader's r (`FrameMap::bias`), computed directly, not by scaling.
+//! filtered with the same r counts the kernel once. The expected depth bias is the library's `f64`
+//! bias for the shader's r (`FrameMap::bias`), computed directly, not by scaling; the normal
+//! offset covers that radius's record and is the record's scaled by s (1 − τ)/(1 − s τ)
+//! (`sa_offset_scale`: a perspective map's offset outgrows the kernel's reach).
 
 use glam::DVec3;
 use render_check::compute;
@@ -58,6 +60,9 @@ fn a_pcf_record_filtered_with_its_own_radius_counts_the_kernel_once() {
     let f = frame(&input).unwrap();
     let m = &f.maps()[0];
     let depth = ClipDepth::ZeroToOne;
+    // The default scheme's warped map: its normal offset outgrows the kernel (τ > 0), so the
+    // scaling below is not the depth bias's.
+    assert!(m.bias(0.0, depth).unwrap().normal_offset_growth > 0.0);
     // (record's radius, shader's radius, the radius whose f64 bias the GPU must give).
     let cases = [
         (0.0, 0, 0.0),
@@ -75,13 +80,24 @@ fn a_pcf_record_filtered_with_its_own_radius_counts_the_kernel_once() {
     for (&(rec, r, want_r), [scale, depth_bias, offset]) in cases.iter().zip(got) {
         let want = m.bias(want_r, depth).unwrap();
         let close = |a: f32, b: f64| (f64::from(a) - b).abs() <= 1e-5 * b.abs();
-        // Each value ∝ r + ½ but the constant's 8 f32 ulps, which scaling only enlarges: the
-        // normal offset is exact to f32; the constant depth is at least the f64 value.
+        // The normal offset: the record's, scaled by s (1 − τ)/(1 − s τ), s the kernel's factor
+        // on the reach, and never under the f64 record for the shader's own radius.
+        let record = m.bias(rec, depth).unwrap();
+        let s = ((2.0 * f64::from(r) + 1.0) / (2.0 * rec + 1.0)).max(1.0);
+        let tau = record.normal_offset_growth;
+        let scaled = record.normal_offset * s * (1.0 - tau) / (1.0 - s * tau);
         assert!(
-            close(offset, want.normal_offset),
-            "record r = {rec}, shader r = {r}: offset {offset} against bias({want_r}) = {}",
+            close(offset, scaled),
+            "record r = {rec}, shader r = {r}: offset {offset} against s (1 − τ)/(1 − s τ) × {} = {scaled}",
+            record.normal_offset
+        );
+        assert!(
+            f64::from(offset) >= want.normal_offset * (1.0 - 1e-5),
+            "record r = {rec}, shader r = {r}: offset {offset} under bias({want_r}) = {}",
             want.normal_offset
         );
+        // The constant depth ∝ r + ½ but its 8 f32 ulps, which scaling only enlarges: at least
+        // the f64 value.
         let (d, w) = (f64::from(depth_bias).abs(), want.constant_depth.abs());
         // The scaled 8 ulps: at most (2r + 1) · 8 · 2⁻²³ over the f64 value (depth in [0, 1]).
         let ulps = (2.0 * want_r + 1.0) * 8.0 * 2f64.powi(-23);
