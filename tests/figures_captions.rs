@@ -371,7 +371,7 @@ fn lloyd2006_fig10() {
             ("5.98", N::Value(opt(1000.0))),
             ("7.98", N::Value(opt(10_000.0))),
             ("10", N::Given("the smallest f/n drawn")),
-            ("10000", N::Given("the largest f/n drawn")),
+            ("10^{4}", N::Given("the largest f/n drawn")),
         ],
     );
 }

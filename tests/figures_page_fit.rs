@@ -86,7 +86,6 @@ fn title_at(svg: &str, label: &str) -> (f64, f64) {
 fn panel_pairs_are_side_by_side() {
     for name in [
         "lloyd2006-fig5",
-        "lloyd2006-fig6",
         "lloyd2006-fig10",
         "lloyd2006-fig12",
         "barroso-fig7",

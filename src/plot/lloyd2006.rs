@@ -221,8 +221,10 @@ const FIG5_Y_LABELS: [f64; 4] = [0.05, 0.1, 0.2, 1.0];
 /// Room for "5×10⁻²" beside Fig 5's axis names, in units.
 const FIG5_Y_LABEL_AREA: u32 = 76;
 
-/// Fig 5's y names in one column: the normalised quantities, as short as the plots need.
-const FIG5_SINGLE_Y: [&str; 2] = ["m_x / f", "m_z 2 tan θ / (f − n)"];
+/// Fig 5's y names in one column, as short as the plots need (the normalised names, "m_x / f"
+/// and "m_z 2 tan θ / (f − n)", are longer than the one-column axes, 89 units; the panels'
+/// titles give them).
+const FIG5_SINGLE_Y: [&str; 2] = ["x error", "z error"];
 
 /// Fig 6: M_x, M_z and S̄ against η ∈ [−1, 1] (n = 1, f = 100, θ = 30°, unit resolutions), as
 /// they are, on a logarithmic axis (the paper normalises each to fit one linear scale, which puts
@@ -368,8 +370,8 @@ pub(super) fn fig10() -> Result<Keyed, Fail> {
              overhead: S̄ of ZP+W, k((f/n)^{{1/k}}\u{a0}−\u{a0}1)/(2\u{a0}tan\u{a0}θ), falls \
              with k towards the optimal S̄_{{opt}}\u{a0}=\u{a0}ln(f/n)/\
              (2\u{a0}tan\u{a0}θ) (dashed, same colour): {} for \
-             f/n\u{a0}=\u{a0}{lo} to {hi}. (b), not in the paper: S̄/S̄_{{opt}}, dashed at \
-             1. The paper does not state the f/n of its curve.",
+             f/n\u{a0}=\u{a0}{lo} to {hi}. (b), not in the paper: S̄/S̄_{{opt}}, and \
+             S̄\u{a0}=\u{a0}S̄_{{opt}} dashed. The paper does not state the f/n of its curve.",
             optima.join(", "),
         )],
         charts: vec![a, b],
@@ -548,9 +550,9 @@ pub(super) fn fig12() -> Result<Keyed, Fail> {
         title: "Storage factor against the number of shadow maps".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. {SCHEME_WORDS} FP+ZP+W uses {} \
-             maps (markers only). Behind, ZP+W equals ZP, and each face's sub-frustum of FP+ZP+W has {eff} \
-             whatever θ (Eq 21). ZP with one map lies off the scale: {} overhead, {} behind. \
-             (b), not in the paper: with {j3} maps ZP is lower ({zp3:.1} against {fp3:.1}); \
+             maps. Behind, ZP+W equals ZP, and FP+ZP+W's face sub-frusta have {eff} \
+             (Eq 21, any θ). ZP with one map, off the scale: {} overhead, {} behind. \
+             (b): with {j3} maps ZP is lower ({zp3:.1} against {fp3:.1}); \
              with {j4}, FP+ZP+W ({fp4:.2} against {zp4:.2}).",
             nb(&format!("f/n = {ratio}")),
             nb(&format!("θ = {THETA_DEG}")),
@@ -745,8 +747,7 @@ const FIG12_ZP_MARKS: [f64; 2] = [3.0, 11.0];
 const FIG12_ZP_W_MARKS: [f64; 3] = [7.0, 15.0, 23.0];
 
 /// The schemes' letters in words, as Fig 12's and 13's captions give them.
-pub(super) const SCHEME_WORDS: &str =
-    "ZP: z-partitioning, FP: face partitioning, W: warping (Lloyd et al. 2006 §5).";
+pub(super) const SCHEME_WORDS: &str = "ZP: z-partitioning, FP: face partitioning, W: warping.";
 
 /// `v` as a caption prints it: m×10^{e} with three significant digits, or 10^{e} for a power
 /// of ten.
