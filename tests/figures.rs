@@ -763,7 +763,7 @@ fn captions_say_where_a_figure_differs_from_the_paper() {
     let dir = out_dir("figures-differ");
     // barroso-fig5 now draws the paper's panels (a) and (b); its panel (c) is marked.
     let says = [
-        ("barroso-fig5", "(c) Eq 19, not in the paper"),
+        ("barroso-fig5", "(e) Eq 19, not in the paper"),
         ("martin-tan-fig3", "may be rotated"),
         ("zhang-fig3", "scene insets"),
     ];
@@ -777,7 +777,7 @@ fn captions_say_where_a_figure_differs_from_the_paper() {
             .collect::<Vec<_>>()
             .join(" ");
         if name == "barroso-fig5" {
-            for panel in ["(a) perpendicular light", "(b) parallel light"] {
+            for panel in ["(a) perpendicular light", "(c) parallel light"] {
                 assert!(caption.contains(panel), "{name}: no {panel:?}");
             }
         } else {
@@ -806,13 +806,40 @@ fn geometric_diagrams_have_equal_aspect() {
         tag[at..at + tag[at..].find('"').unwrap()].parse().unwrap()
     };
     let svg = std::fs::read_to_string(dir.join("lloyd2006-fig11.svg")).unwrap();
-    let maps: Vec<(f64, f64)> = svg
-        .split("<rect ")
-        .skip(2) // the page's background
-        // The maps' fills, not the white boxes under the labels.
-        .filter(|t| !t[..t.find('>').unwrap()].contains("fill=\"#FFFFFF\""))
-        .map(|t| (attr(t, "width"), attr(t, "height")))
-        .collect();
+    // Each map's outline: the box round the dashes of its colour drawn 2 units wide (the key's
+    // samples, under the plot, left out; the maps are untinted since the fifth review).
+    let key_top = svg
+        .find("Maps, nearest first:")
+        .and_then(|i| svg[..i].rfind("<text "))
+        .map(|i| attr(&svg[i..], "y"))
+        .unwrap();
+    let mut boxes: std::collections::BTreeMap<String, [f64; 4]> = Default::default();
+    for line in svg.lines().filter(|l| l.starts_with("<polyline")) {
+        let stroke = line
+            .split("stroke=\"")
+            .nth(1)
+            .map(|r| &r[..7])
+            .unwrap_or("");
+        if !line.contains("stroke-width=\"2\"") || stroke == "#000000" {
+            continue;
+        }
+        let pts = line.split("points=\"").nth(1).unwrap();
+        for p in pts[..pts.find('"').unwrap()].split_whitespace() {
+            let (x, y) = p.split_once(',').unwrap();
+            let (x, y): (f64, f64) = (x.parse().unwrap(), y.parse().unwrap());
+            if y >= key_top - 10.0 {
+                continue;
+            }
+            let b = boxes.entry(stroke.to_string()).or_insert([
+                f64::INFINITY,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::NEG_INFINITY,
+            ]);
+            *b = [b[0].min(x), b[1].min(y), b[2].max(x), b[3].max(y)];
+        }
+    }
+    let maps: Vec<(f64, f64)> = boxes.values().map(|b| (b[2] - b[0], b[3] - b[1])).collect();
     assert_eq!(maps.len(), 3, "three partition maps");
     for (w, h) in maps {
         // Each side is rounded to the unit: a 47-unit square may read 47 × 48.

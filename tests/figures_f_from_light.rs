@@ -133,7 +133,11 @@ fn fig11_leaders_start_at_their_squares_corners() {
 fn map_dashes(svg: &str) -> BTreeMap<String, Vec<f64>> {
     let mut by: BTreeMap<String, Vec<f64>> = BTreeMap::new();
     for el in elements(svg, "polyline") {
-        if attr(el, "stroke-width") != Some("2") || attr(el, "stroke") == Some("#000000") {
+        // Black: the frustum; grey #6E6E6E: the box of the region a detail enlarges
+        // (barroso-fig5's overviews, figure review 5).
+        if attr(el, "stroke-width") != Some("2")
+            || matches!(attr(el, "stroke"), Some("#000000") | Some("#6E6E6E"))
+        {
             continue;
         }
         let p = points(el);
@@ -205,26 +209,24 @@ fn barroso_axes_fit_the_frustum() {
 
 /// The key that names the strokes (maps nearest first, frustum, split plane) is in every form,
 /// so in `--bare` too; the planes read "n = …", "z = …", "f = …" as in Lloyd's Fig 11, except
-/// in barroso-fig5's one column, whose six narrow panels label each plane with its depth alone
-/// on one line (figure review 4: "f =" over "100" read as broken), and whose key says so.
+/// in barroso-fig5's one column, whose six narrow panels set each label close on one line,
+/// "z=31.62" (figure review 4: "f =" over "100" read as broken; review 5: the depth alone read
+/// as a tick value).
 #[test]
 fn the_key_and_the_plane_labels_are_in_every_form() {
     for name in FIGS {
         for (form, opts) in forms() {
             let t = texts(&svg(name, form, &opts));
             let depths = name == "barroso-fig5" && form == "single";
-            let plane = if depths {
-                "split plane (label: z)"
-            } else {
-                "split plane"
-            };
-            for want in ["Maps, nearest first:", "frustum", plane] {
+            for want in ["Maps, nearest first:", "frustum", "split plane"] {
                 assert!(t.iter().any(|x| x == want), "{name} {form}: no {want:?}");
             }
             // No label broken over two lines.
             assert!(!t.iter().any(|x| x.ends_with(" =")), "{name} {form}");
             if depths {
-                for want in ["1", "3.162", "10", "31.62", "100", "40.81", "6.041"] {
+                for want in [
+                    "n=1", "z=3.162", "z=10", "z=31.62", "f=100", "z=40.81", "z=6.041",
+                ] {
                     assert!(t.iter().any(|x| x == want), "{name} {form}: no {want}");
                 }
                 assert!(!t.iter().any(|x| x.starts_with("z = ")), "{name} {form}");
@@ -349,15 +351,15 @@ fn fig11_labels_keep_the_planes_order() {
     }
 }
 
-/// Figure review 3, X6: the horizontal axis reads "−x in light space" (as "light −x" it read
-/// "light minus x") in every form of both figures.
+/// Figure review 3, X6: the horizontal axis cannot read as "light minus x"; since figure review
+/// 5 (X3) it is "light-view x" in every form of both figures.
 #[test]
 fn the_x_axis_cannot_read_as_minus() {
     for name in FIGS {
         for (form, opts) in forms() {
             let t = texts(&svg(name, form, &opts));
             assert!(!t.iter().any(|x| x == "light −x"), "{name} {form}");
-            assert!(t.iter().any(|x| x == "−x in light space"), "{name} {form}");
+            assert!(t.iter().any(|x| x == "light-view x"), "{name} {form}");
         }
     }
 }
@@ -587,7 +589,7 @@ fn barroso_single_type_matches_the_other_single_figures() {
     for t in &all {
         assert!(t.fs >= 10.48, "{:?} at {}", t.content, t.fs);
     }
-    for want in ["31.62", "−50", "Maps, nearest first:"] {
+    for want in ["z=31.62", "−50", "Maps, nearest first:"] {
         let t = all.iter().find(|t| t.content == want).unwrap();
         assert!((t.fs - 13.0 / 1.24).abs() < 0.01, "{want}: {}", t.fs);
     }

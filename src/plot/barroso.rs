@@ -4,8 +4,8 @@
 //! LiSPSM's 1/sin γ rule and the crate's n′ that minimises M_z over the whole frustum (`WarpRule::MinimaxMz`, the frustum-wide version of Barroso's objective).
 
 use super::chart::{
-    column, draw_line_chart_over, fmt_power, frame, legend_below, linspace, Axis, Charts,
-    LineChart, Look, Marker, Note, Series, FONT, PALETTE,
+    column, draw_line_chart_over, fmt_power, frame, legend_below, linspace, Axis, ChartStyle,
+    Charts, LineChart, Look, Marker, Note, Series, FONT, PALETTE,
 };
 use super::{Column, Fail, Figure};
 use crate::analytic::tilted::{gamma_lim, generalized_n_prime, n_prime_1, n_prime_2, Falloff};
@@ -134,7 +134,9 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         shape: Some(Marker::Square),
         ..Series::line("n′_{1}, Eq 13 (= Eq 18 above γ_{lim})", n1, PALETTE[6]).dotted()
     });
-    let mut s2 = Series::line("n′_{2}, Eq 13", n2, PALETTE[7]).dotted();
+    // Dashed: olive prints as least M_z's (pink, dotted) grey and meets it at γ ≈ 28° (figure
+    // review 5, X6); LiSPSM's dashes run an order of magnitude above it there.
+    let mut s2 = Series::line("n′_{2}, Eq 13", n2, PALETTE[7]).dashed();
     s2.width = 3;
     c.series.push(s2);
     // (a) has no angle lines: θ = 30° and γ_lim = 30.5° lie under a point apart there and
@@ -147,28 +149,33 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         text: format!("← clipped at {}", fmt_power(c.y.max)),
         colour: RGBColor(90, 90, 90),
     });
+    // A marker at the top of the range (Barroso's curve at γ ≈ 4°, n′ ≈ 9·10³) is cut at the
+    // frame, not drawn across it (figure review 5).
+    c.clip_markers = true;
     let zoom = magnified(&c, gl.to_degrees(), view.half_fov().to_degrees());
     let charts = Charts {
         size: (520, 540),
         title: "Generalised LiSPSM parameter against the light angle".into(),
         caption: vec![format!(
             "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-             θ\u{a0}=\u{a0}{phi_deg:.0}°. Bold: the paper's curve (its fall-off r(γ)); for \
-             comparison the fall-off the paper quotes from Zhang et al., LiSPSM's rule and \
-             the n′ of least M_z over the frustum; Eq 13's branches each on its domain. (b) enlarges γ from {}° to {}°: the \
-             least-M_z curve turns near γ\u{a0}=\u{a0}θ, where the frustum corner of largest \
-             m_z changes.",
+             θ\u{a0}=\u{a0}{phi_deg:.0}°. n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for \
+             γ\u{a0}≥\u{a0}θ and γ\u{a0}<\u{a0}θ; below γ_{{lim}} (Eq\u{a0}15) \
+             n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r the paper's fall-off (Eq\u{a0}18, bold) \
+             or Zhang et al.'s (Eq\u{a0}17). For comparison LiSPSM's rule and the n′ of least \
+             M_z over the frustum. (b) enlarges γ from {}° to {}°: least M_z turns near \
+             γ\u{a0}=\u{a0}θ, where the frustum corner of largest m_z changes.",
             WINDOW.0, WINDOW.1
         )],
         charts: vec![c, zoom],
     };
-    // One column keeps the sentence on the turn at θ, which (b)'s "θ →" marks.
+    // One column: every symbol the key and (b) use defined (figure review 5, X7), the turn of
+    // least M_z at θ, which (b)'s "θ →" marks, in a clause.
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         θ\u{a0}=\u{a0}{phi_deg:.0}°; bold, the paper's curve. (b) γ from {}° to {}°: \
-         least M_z turns near γ\u{a0}=\u{a0}θ, where the frustum corner of largest m_z \
-         changes.",
-        WINDOW.0, WINDOW.1
+         θ\u{a0}=\u{a0}{phi_deg:.0}°. n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for γ\u{a0}≥\u{a0}θ and \
+         γ\u{a0}<\u{a0}θ; below γ_{{lim}} (Eq\u{a0}15) n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), \
+         r Barroso's fall-off (Eq\u{a0}18, bold: the paper's) or Zhang's (Eq\u{a0}17). \
+         Least M_z turns at γ\u{a0}≈\u{a0}θ."
     );
     Ok(Fig7 {
         charts,
@@ -287,22 +294,49 @@ impl Figure for Fig7 {
             for (s, short) in c.series.iter_mut().zip(SINGLE_LABELS) {
                 s.label = Some(short.to_string());
             }
-            // The name alone, no longer than plots about 90 units tall (the powers of ten say
-            // that the scale is log).
+            // Markers smaller than the spacing of the curves (figure review 5: at 10–12 units
+            // five of them piled up at γ = 20–30°), reference lines none.
+            for s in &mut c.series {
+                s.marker_radius = Some(SINGLE_MARKER_RADIUS);
+            }
+            // The name alone (the powers of ten say that the scale is log); the grid at 2 and
+            // 5 of each decade only (eight lines a decade greyed the small plot).
             c.y.label = "n′".into();
+            c.y = c.y.clone().sparse_grid();
+            c.margin = Some(SINGLE_MARGIN);
         }
+        // (a)'s x axis is (b)'s quantity, named under (b) only: its ticks alone, and the room
+        // its name took given to the plots (figure review 5: 0.75 in each).
+        let a_x_area = SINGLE_TICKS_ONLY;
+        charts.charts[0].x.label = String::new();
+        charts.charts[0].x_label_area = Some(a_x_area);
         let body = frame(root, SINGLE_TITLE, &[self.single_caption.as_str()])?;
         let (w, h) = body.dim_in_pixel();
         let (a, b) = (&charts.charts[0], &charts.charts[1]);
-        // The legend's strip first (as wide as the page), then two equal cells for the plots.
+        // The legend's strip first (as wide as the page), then the two plots' cells, (a)'s
+        // shorter by the x name's room, so that both plots are as tall.
         let strip_h = legend_below((w, h / 2), b, f64::from(w))?;
         let (panels, strip) = body.split_vertically(h.saturating_sub(strip_h));
-        let cells = panels.split_evenly((2, 1));
-        draw_line_chart_over(&cells[0], a, None)?;
-        draw_line_chart_over(&cells[1], b, Some(&strip))?;
+        let (_, ph) = panels.dim_in_pixel();
+        let saved = ChartStyle::default().x_label_area - a_x_area;
+        debug_assert!(saved > 0);
+        let (top, bottom) = panels.split_vertically(ph.saturating_sub(saved) / 2);
+        draw_line_chart_over(&top, a, None)?;
+        draw_line_chart_over(&bottom, b, Some(&strip))?;
         Ok(())
     }
 }
+
+/// The markers' radius in one column: 6 to 8 units across (the line's width + 2, 8 to 12
+/// units, covered the spacing of the curves in its 1.2-in plots).
+const SINGLE_MARKER_RADIUS: i32 = 3;
+
+/// The margin round each plot's cell in one column (the default's 8 units above and below
+/// both panels took 32 units from the plots).
+const SINGLE_MARGIN: u32 = 2;
+
+/// The room under (a) in one column: its tick labels only (13 units and their gap).
+const SINGLE_TICKS_ONLY: u32 = 24;
 
 /// The size of a note's text (`chart::line`'s notes and labels).
 const NOTE_SIZE: u32 = 13;
@@ -451,11 +485,12 @@ mod tests {
             assert!(!c.contains("π"), "{c}");
         }
         // One column keeps the sentence on the turn at θ that (b)'s marker points at.
-        assert!(fig.single_caption.contains("turns near γ"));
+        assert!(fig.single_caption.contains("turns at γ"));
     }
 
     /// In greyscale LiSPSM (green) and least M_z (reddish purple) are one grey (review), so
-    /// they differ in dash: LiSPSM dashed, least M_z dotted; and the n′₁ entry says it is
+    /// they differ in dash: LiSPSM dashed, least M_z dotted, and so do n′₂ and least M_z
+    /// (figure review 5); and the n′₁ entry says it is
     /// Barroso's curve (Eq 18) above γ_lim, where it is drawn over it.
     #[test]
     fn lispsm_and_least_mz_differ_in_dash() {
@@ -468,6 +503,9 @@ mod tests {
         };
         assert_eq!(by("LiSPSM").unwrap().dash, Dash::Dashed);
         assert_eq!(by("least").unwrap().dash, Dash::Dotted);
+        // Figure review 5, X6: n′₂ (olive, L* 60) and least M_z (pink, L* 61) print as one grey
+        // and meet at γ ≈ 28°: they differ in dash.
+        assert_ne!(by("n′_{2}").unwrap().dash, by("least").unwrap().dash);
         assert!(by("n′_{1}")
             .unwrap()
             .label

@@ -34,8 +34,11 @@ pub(super) struct Panel {
     pub dims: Vec<(DVec2, DVec2, String)>,
     /// Extension lines from the measured feature to its dimension line.
     pub extensions: Vec<[DVec2; 2]>,
-    /// Text set just above a point (centred on it), naming a line there.
+    /// A point on a line and the line's name: a label in the gutter, its leader from the point
+    /// (two columns only).
     pub notes: Vec<(DVec2, String)>,
+    /// The region another panel enlarges (min, max), outlined in grey.
+    pub enlarged: Option<(DVec2, DVec2)>,
 }
 
 pub(super) struct FromLight {
@@ -88,6 +91,7 @@ fn panel(view: &ViewFrustum, light: DVec3, planes: &[f64], title: String) -> Res
         dims: Vec::new(),
         extensions: Vec::new(),
         notes: Vec::new(),
+        enlarged: None,
     })
 }
 
@@ -126,9 +130,11 @@ pub(super) fn seen_from_light(l: DVec3) -> DVec2 {
     DVec2::new(-l.x, l.z)
 }
 
-/// The label of the horizontal axis of a diagram drawn by [`seen_from_light`]: "−x in light
-/// space", which cannot read as "light minus x" (figure review 4, X6).
-pub(super) const SEEN_X: &str = "−x in light space";
+/// The labels of the axes of a diagram drawn by [`seen_from_light`]: right and up in the
+/// light's view (figure review 5, X3: "light z" read as the eye depth z that the split planes'
+/// labels give, and "−x in light space" named its partner in another form).
+pub(super) const SEEN_X: &str = "light-view x";
+pub(super) const SEEN_Y: &str = "light-view y";
 
 /// The light-space bounding box (min, max) of some cross-sections.
 fn bounds(sections: &[[DVec2; 4]]) -> (DVec2, DVec2) {
@@ -156,10 +162,10 @@ fn fmt_planes(p: &[f64]) -> String {
 }
 
 /// Barroso & Celes 2007 Fig 5: k = 4 self-similar z-partitions (Eq 5) of n = 1, f = 100,
-/// θ = 30° (half field of view), seen by (a) a light perpendicular to the view direction (overhead) and (b) one
-/// parallel to it (behind the viewer); (c) the adaptive partitions of Eq 19 for a light 45°
-/// above the view direction, which the paper's figure does not have; (d) the near partitions of
-/// (a) enlarged.
+/// θ = 30° (half field of view), seen by (a) a light perpendicular to the view direction
+/// (overhead) and (c) one parallel to it (behind the viewer); (e) the adaptive partitions of
+/// Eq 19 for a light 45° above the view direction, which the paper's figure does not have; (b),
+/// (d), (f) the near partitions of (a), (c), (e) enlarged.
 pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians())?;
     let k = 4;
@@ -178,67 +184,83 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     let overhead = DVec3::NEG_Y;
     let behind = DVec3::NEG_Z;
     let tilted = DVec3::new(0.0, -gamma.sin(), -gamma.cos());
+    // Each overview beside its detail, a row each (figure review 5: (a) over (c) and (d) beside
+    // (c) sent the reader across the page for each detail): (a), (c), (e) the whole frustum,
+    // (b), (d), (f) its near partitions enlarged, the region each enlarges a grey box in its
+    // overview.
     let mut perpendicular = panel(
         &view,
         overhead,
         ss.planes(),
         "(a) perpendicular light".into(),
     )?;
-    // (d): the two nearest partitions of (a), enlarged.
+    // (b): the two nearest partitions of (a), enlarged.
     let (lo, hi) = bounds(&perpendicular.sections[..3]);
     let mut zoom = panel(
         &view,
         overhead,
         ss.planes(),
-        "(d) detail of (a): z ≤ 10".into(),
+        "(b) detail of (a): z ≤ 10".into(),
     )?;
     zoom.window = Some((lo, hi));
-    let mut parallel = panel(&view, behind, ss.planes(), "(b) parallel light".into())?;
+    let mut parallel = panel(&view, behind, ss.planes(), "(c) parallel light".into())?;
     let mut eq19 = panel(
         &view,
         tilted,
         ad.planes(),
-        "(c) Eq 19, not in the paper".into(),
+        "(e) Eq 19, not in the paper".into(),
     )?;
-    // (e), (f): (b) and (c) near the eye, where their inner partitions are sub-pixel or their
+    // (d), (f): (c) and (e) near the eye, where their inner partitions are sub-pixel or their
     // maps overlap in a tangle (figure review 2): the windows round the nearest three and four
     // planes (z ≤ 10 and z ≤ 40.81).
     let mut zoom_b = panel(
         &view,
         behind,
         ss.planes(),
-        "(e) detail of (b): z ≤ 10".into(),
+        "(d) detail of (c): z ≤ 10".into(),
     )?;
     zoom_b.window = Some(bounds(&parallel.sections[..3]));
     let mut zoom_c = panel(
         &view,
         tilted,
         ad.planes(),
-        format!("(f) detail of (c): z ≤ {}", fmt_planes(&ad.planes()[3..4])),
+        format!("(f) detail of (e): z ≤ {}", fmt_planes(&ad.planes()[3..4])),
     )?;
     zoom_c.window = Some(bounds(&eq19.sections[..4]));
+    for (overview, detail) in [
+        (&mut perpendicular, &zoom),
+        (&mut parallel, &zoom_b),
+        (&mut eq19, &zoom_c),
+    ] {
+        overview.enlarged = detail.window;
+    }
     // (f): the far face's lower edge, seen from a light 45° up as a thick line across the
-    // detail at light z = (f − f tan φ)/√2 = 29.9, named where it could read as a split plane
-    // (figure review 3); its middle lies between the side edges, clear of every line.
+    // detail at light-view y = (f − f tan θ)/√2 = 29.9, named where it could read as a split
+    // plane (figure review 3), by a leader (figure review 5); its middle lies between the side
+    // edges, clear of every line.
+    // The note's point is where the line leaves the detail's window on the right, so that its
+    // leader runs to the gutter as the planes' do.
     let far = zoom_c.sections[zoom_c.sections.len() - 1];
     let low = far.iter().map(|q| q.y).fold(f64::INFINITY, f64::min);
-    zoom_c.notes = vec![(DVec2::new(0.0, low), "far face".into())];
+    let right = zoom_c.window.map_or(0.0, |(_, hi)| hi.x);
+    zoom_c.notes = vec![(DVec2::new(right, low), "far face".into())];
     // The overviews label the planes their details leave out or show small (figure review 3:
-    // labels spread apart with kinked leaders crowded (b)): z ≥ 31.62 in (a) and (b), z ≥ 16.13
-    // in (c).
+    // labels spread apart with kinked leaders crowded (b)): z ≥ 31.62 in (a) and (c), z ≥ 16.13
+    // in (e).
     label_from(&mut perpendicular, 3);
     label_from(&mut parallel, 3);
     label_from(&mut eq19, 2);
-    let panels = vec![perpendicular, parallel, eq19, zoom, zoom_b, zoom_c];
+    let panels = vec![perpendicular, zoom, parallel, zoom_b, eq19, zoom_c];
     // Formulas joined by no-break spaces (U+00A0), so that the caption breaks none of them.
     // Barroso's α is his target ratio f_i/n_i, not Lloyd's f/n (figure review 3, X2).
     let caption = format!(
         "Barroso & Celes 2007, Fig. 5: the frustum seen from the light, k\u{a0}=\u{a0}{k} \
          z-partitions, n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{phi:.0}°. (a) \
-         Light perpendicular to the view, (b) parallel: Eq\u{a0}5's splits \
-         z\u{a0}=\u{a0}{}. (c), not in the paper: light {gamma_deg:.0}° from the view, target \
-         ratio α\u{a0}=\u{a0}{ADAPTIVE_RATIO} (Barroso's Eq\u{a0}19), z\u{a0}=\u{a0}{}; \
-         the thick line across is the far face's edge. (d)–(f) enlarge (a)–(c).",
+         Light perpendicular to the view, (c) parallel: Eq\u{a0}5's splits \
+         z\u{a0}=\u{a0}{}. (e), not in the paper: light {gamma_deg:.0}° from the view, \
+         target ratio α\u{a0}=\u{a0}{ADAPTIVE_RATIO} (Barroso's Eq\u{a0}19), \
+         z\u{a0}=\u{a0}{}; the thick line across is the far face's edge. (b), (d), (f) \
+         enlarge the grey boxes.",
         fmt_planes(ss.planes()),
         fmt_planes(ad.planes()),
         n = view.near(),
@@ -249,9 +271,9 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     // One column: the far face's edge named as in two (figure review 4: it was left out).
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 5: k\u{a0}=\u{a0}{k}, n\u{a0}=\u{a0}{n}, \
-         f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{phi:.0}°. (a), (b): Eq\u{a0}5; (c): Eq\u{a0}19, \
-         not in the paper, light at {gamma_deg:.0}°, target ratio α\u{a0}=\u{a0}{ADAPTIVE_RATIO}; \
-         the thick line across (c), (f) is the far face's edge. (d)–(f) enlarge (a)–(c).",
+         f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{phi:.0}°. (a), (c): Eq\u{a0}5; (e): Eq\u{a0}19, \
+         light at {gamma_deg:.0}°, α\u{a0}=\u{a0}{ADAPTIVE_RATIO}; thick line across (e), (f): \
+         the far face's edge. (b), (d), (f) enlarge the grey boxes.",
         n = view.near(),
         f = view.far(),
         phi = view.half_fov().to_degrees(),
@@ -263,7 +285,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         caption,
         single_caption,
         panels,
-        size: (520, 640),
+        size: (520, 600),
         single_size: (300, 525),
     })
 }
@@ -382,18 +404,18 @@ mod tests {
                 "{xs:?} at z = {z}"
             );
         }
-        for (s, &z) in b.panels[1].sections.iter().zip(&b.panels[1].planes) {
+        for (s, &z) in b.panels[2].sections.iter().zip(&b.panels[2].planes) {
             for c in s {
                 assert!((c.x.abs() - z * t).abs() < 1e-9 && (c.y.abs() - z * t).abs() < 1e-9);
             }
         }
-        assert_eq!(b.panels[0].planes, b.panels[1].planes);
-        // (c): the adaptive planes start at n and end at f, and differ from the self-similar
-        // ones; (d) is (a) shown in a window around the three nearest planes (z ≤ 10).
-        let ad = &b.panels[2].planes;
+        assert_eq!(b.panels[0].planes, b.panels[2].planes);
+        // (e): the adaptive planes start at n and end at f, and differ from the self-similar
+        // ones; (b) is (a) shown in a window around the three nearest planes (z ≤ 10).
+        let ad = &b.panels[4].planes;
         assert_eq!((ad[0], ad[4]), (1.0, 100.0));
         assert!((ad[1] - b.panels[0].planes[1]).abs() > 1e-3);
-        let (lo, hi) = b.panels[3].window.unwrap();
+        let (lo, hi) = b.panels[1].window.unwrap();
         assert!(
             (hi.y.abs().max(lo.y.abs()) - 10.0).abs() < 1e-9,
             "{lo} {hi}"
@@ -457,7 +479,7 @@ mod tests {
 
     /// Barroso Fig 5's split depths to 4 significant figures (figure review 2): Eq 5's
     /// 100^{i/4} = 3.162, 10, 31.62 and Eq 19's (the paper's f₁..f₃ by hand: 6.0405, 16.1297,
-    /// 40.8114); and (e), (f) enlarge (b) and (c) near the eye, to z ≤ 10 and z ≤ 40.81.
+    /// 40.8114); and (d), (f) enlarge (c) and (e) near the eye, to z ≤ 10 and z ≤ 40.81.
     #[test]
     fn barroso_split_labels_have_four_significant_figures() {
         let b = barroso_fig5().map_err(|e| e.named("barroso-fig5")).unwrap();
@@ -468,11 +490,11 @@ mod tests {
             ["", "", "", "z = 31.62", "f = 100"]
         );
         assert_eq!(
-            b.panels[2].plane_labels,
+            b.panels[4].plane_labels,
             ["", "", "z = 16.13", "z = 40.81", "f = 100"]
         );
         assert_eq!(
-            b.panels[3].plane_labels,
+            b.panels[1].plane_labels,
             ["n = 1", "z = 3.162", "z = 10", "z = 31.62", "f = 100"]
         );
         assert_eq!(
@@ -481,7 +503,7 @@ mod tests {
         );
         assert_eq!(b.panels.len(), 6);
         let t = 30f64.to_radians().tan();
-        let (lo, hi) = b.panels[4].window.unwrap();
+        let (lo, hi) = b.panels[3].window.unwrap();
         assert!((hi.x - 10.0 * t).abs() < 1e-9 && (lo.y + 10.0 * t).abs() < 1e-9);
         // (f): light z of the corner (z tan θ, z tan θ, −z) at z = 40.8114 is
         // z (1 + tan θ)/√2 = 45.519 (light 45° up: light z = (Y + z)/√2).

@@ -85,6 +85,8 @@ pub(crate) struct Axis {
     pub powers: bool,
     /// The values labelled, where the automatic choice is not wanted ([`Axis::labelled_at`]).
     pub labelled: Option<Vec<f64>>,
+    /// A log axis's grid only at 2 and 5 of each decade ([`Axis::sparse_grid`]).
+    pub sparse: bool,
 }
 
 impl Axis {
@@ -97,6 +99,7 @@ impl Axis {
             scale: Scale::Linear,
             powers: false,
             labelled: None,
+            sparse: false,
         }
     }
 
@@ -109,6 +112,7 @@ impl Axis {
             scale: Scale::Integer,
             powers: false,
             labelled: None,
+            sparse: false,
         }
     }
 
@@ -121,6 +125,7 @@ impl Axis {
             scale: Scale::Every { first, step },
             powers: false,
             labelled: None,
+            sparse: false,
         }
     }
 
@@ -133,6 +138,7 @@ impl Axis {
             scale: Scale::Log(10.0),
             powers: false,
             labelled: None,
+            sparse: false,
         }
     }
 
@@ -146,6 +152,7 @@ impl Axis {
             scale: Scale::Log(b),
             powers: false,
             labelled: None,
+            sparse: false,
         }
     }
 
@@ -153,6 +160,13 @@ impl Axis {
     /// a grid line; its other grid lines stay.
     pub fn labelled_at(mut self, at: &[f64]) -> Self {
         self.labelled = Some(at.to_vec());
+        self
+    }
+
+    /// The same axis with a log scale's grid lines at 2 and 5 of each decade only, not at every
+    /// 2…9: on a small plot the eight lines a decade run together into a grey ground.
+    pub fn sparse_grid(mut self) -> Self {
+        self.sparse = true;
         self
     }
 
@@ -270,9 +284,14 @@ impl Axis {
                 let mut light = Vec::new();
                 if (b - 10.0).abs() < 1e-12 && decades <= 6.0 {
                     let lf = (lo - eps).floor() as i64;
+                    let grid: &[u32] = if self.sparse {
+                        &[2, 5]
+                    } else {
+                        &[2, 3, 4, 5, 6, 7, 8, 9]
+                    };
                     for e in lf..=last {
-                        for m in 2..10 {
-                            let v = e as f64 + (m as f64).log10();
+                        for &m in grid {
+                            let v = e as f64 + f64::from(m).log10();
                             if inside(v) {
                                 light.push(v);
                             }
@@ -557,6 +576,22 @@ pub(crate) fn build_chart_styled<'a, DB: DrawingBackend>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A sparse grid (one-column barroso-fig7): over 1 … 10⁴ the light lines are the decades
+    /// and log₁₀ 2, log₁₀ 5 in each of the four decades, 5 + 8 = 13 lines (the full grid: 37).
+    #[test]
+    fn a_sparse_log_grid_has_2_and_5_only() {
+        let (bold, light) = Axis::log10("n", 1.0, 1e4).sparse_grid().ticks();
+        assert_eq!(bold, vec![0.0, 1.0, 2.0, 3.0, 4.0]);
+        assert_eq!(light.len(), 13);
+        for e in 0..4 {
+            for m in [2f64, 5.0] {
+                let v = f64::from(e) + m.log10();
+                assert!(light.iter().any(|&l| (l - v).abs() < 1e-12), "{v}");
+            }
+        }
+        assert!(!light.iter().any(|&l| (l - 3f64.log10()).abs() < 1e-12));
+    }
 
     #[test]
     fn log_axis_ticks_are_decades_and_labels_read_as_numbers() {

@@ -140,9 +140,84 @@ pub(crate) fn fill_fine_polygon<DB: DrawingBackend>(
     Ok(())
 }
 
+/// Fills the polygon of `points` (backend units), as [`fill_fine_polygon`] does an outline about
+/// a centre; nothing where fewer than three points are left.
+pub(crate) fn fill_fine_points<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    points: Vec<(f64, f64)>,
+    colour: RGBColor,
+) -> Result<(), Fail> {
+    if points.len() < 3 {
+        return Ok(());
+    }
+    area.draw(&Fine {
+        points,
+        colour: colour.to_backend_color(),
+        stroke: None,
+    })?;
+    Ok(())
+}
+
+/// A convex or concave polygon cut to the rectangle `r` (Sutherland–Hodgman: each of the four
+/// edges in turn keeps the part inside it).
+pub(crate) fn clip_to_rect(points: &[(f64, f64)], r: &super::label::Rect) -> Vec<(f64, f64)> {
+    type Edge = (
+        fn(&(f64, f64), f64) -> bool,
+        fn((f64, f64), (f64, f64), f64) -> (f64, f64),
+    );
+    let across_x =
+        |a: (f64, f64), b: (f64, f64), x: f64| (x, a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0));
+    let across_y =
+        |a: (f64, f64), b: (f64, f64), y: f64| (a.0 + (b.0 - a.0) * (y - a.1) / (b.1 - a.1), y);
+    let edges: [(Edge, f64); 4] = [
+        ((|p, v| p.0 >= v, across_x), r.x0),
+        ((|p, v| p.0 <= v, across_x), r.x1),
+        ((|p, v| p.1 >= v, across_y), r.y0),
+        ((|p, v| p.1 <= v, across_y), r.y1),
+    ];
+    let mut out = points.to_vec();
+    for ((keep, cross), v) in edges {
+        let input = std::mem::take(&mut out);
+        for (i, &b) in input.iter().enumerate() {
+            let a = input[(i + input.len() - 1) % input.len()];
+            match (keep(&a, v), keep(&b, v)) {
+                (true, true) => out.push(b),
+                (true, false) => out.push(cross(a, b, v)),
+                (false, true) => {
+                    out.push(cross(a, b, v));
+                    out.push(b);
+                }
+                (false, false) => {}
+            }
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A square of side 4 centred on the rectangle's top edge y = 0 (x from 0 to 10, y from 0
+    /// down to 10) keeps its lower half, by hand: (1, 0), (3, 0), (3, 2), (1, 2); a polygon
+    /// inside is kept whole, one outside is gone.
+    #[test]
+    fn clip_to_rect_keeps_the_part_inside() {
+        let r = super::super::label::Rect {
+            x0: 0.0,
+            y0: 0.0,
+            x1: 10.0,
+            y1: 10.0,
+        };
+        let square = [(1.0, -2.0), (3.0, -2.0), (3.0, 2.0), (1.0, 2.0)];
+        let mut got = clip_to_rect(&square, &r);
+        got.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        got.dedup();
+        assert_eq!(got, vec![(1.0, 0.0), (1.0, 2.0), (3.0, 0.0), (3.0, 2.0)]);
+        let inside = [(4.0, 4.0), (6.0, 4.0), (5.0, 6.0)];
+        assert_eq!(clip_to_rect(&inside, &r).len(), 3);
+        assert!(clip_to_rect(&[(20.0, 20.0), (22.0, 20.0), (21.0, 22.0)], &r).is_empty());
+    }
 
     fn length(p: &[(f64, f64)]) -> f64 {
         p.windows(2)

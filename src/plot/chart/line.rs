@@ -3,7 +3,7 @@
 
 use super::super::Fail;
 use super::axis::{build_chart_styled, Axis, ChartStyle};
-use super::fine::{draw_fine_line, fill_fine_polygon, to_backend};
+use super::fine::{clip_to_rect, draw_fine_line, fill_fine_points, fill_fine_polygon, to_backend};
 use super::label::{place_label, place_note, text_in_box, Obstacles, Rect, LABEL_PAD};
 use super::legend::{draw_legend_clear, Entry, Placed};
 use super::probe::probe_area;
@@ -168,6 +168,9 @@ pub(crate) struct Series {
     /// A key entry only (no points): its sample shows the line and the marker of a line drawn
     /// elsewhere without a label (its markers a separate series).
     pub sample: bool,
+    /// The markers' radius in units where it is not the line's width + 2 (a small one-column
+    /// plot, whose markers would be wider than the spacing of its curves).
+    pub marker_radius: Option<i32>,
 }
 
 impl Series {
@@ -186,6 +189,7 @@ impl Series {
             shape: None,
             quiet: false,
             sample: false,
+            marker_radius: None,
         }
     }
     /// The same series labelled directly at its right end instead of in the legend.
@@ -245,6 +249,15 @@ pub(crate) struct LineChart {
     /// The width kept left of the plot for the y tick labels and the y axis' name, where the
     /// default's is too narrow (lloyd2005-fig7's m×10ⁿ labels ran into its name).
     pub y_label_area: Option<u32>,
+    /// The height kept under the plot for the x tick labels and the x axis' name, where it is
+    /// not the default's (a panel whose x axis is named under another panel: ticks only).
+    pub x_label_area: Option<u32>,
+    /// The margin round the chart in its cell where it is not the default's 8 units (a
+    /// one-column page whose plots need the height).
+    pub margin: Option<u32>,
+    /// Markers cut at the plot's frame, so that none is drawn across it (one at the top of an
+    /// axis range, such as a curve's marker just under n′ = 10⁴).
+    pub clip_markers: bool,
 }
 
 impl LineChart {
@@ -262,6 +275,9 @@ impl LineChart {
             legend_below: false,
             legend_columns: None,
             y_label_area: None,
+            x_label_area: None,
+            margin: None,
+            clip_markers: false,
         }
     }
 }
@@ -406,6 +422,8 @@ fn draw_chart<DB: DrawingBackend>(
 ) -> Result<Placed, Fail> {
     let style = ChartStyle {
         y_label_area: c.y_label_area.unwrap_or(ChartStyle::default().y_label_area),
+        x_label_area: c.x_label_area.unwrap_or(ChartStyle::default().x_label_area),
+        margin: c.margin.unwrap_or(ChartStyle::default().margin),
         ..ChartStyle::default()
     };
     let mut chart = build_chart_styled(area, &c.title, &c.x, &c.y, true, &style)?;
@@ -475,7 +493,7 @@ fn draw_chart<DB: DrawingBackend>(
         } else {
             Vec::new()
         };
-        let r = s.width as i32 + 2;
+        let r = s.marker_radius.unwrap_or(s.width as i32 + 2);
         let outline = shape.outline(r);
         for at in along
             .into_iter()
@@ -573,7 +591,15 @@ fn draw_chart<DB: DrawingBackend>(
         obstacles.boxes.push(area);
     }
     for (p, outline, colour) in &markers {
-        fill_fine_polygon(&plot, *p, outline, *colour)?;
+        if c.clip_markers {
+            let points: Vec<(f64, f64)> = outline
+                .iter()
+                .map(|&(x, y)| (p.0 + f64::from(x), p.1 + f64::from(y)))
+                .collect();
+            fill_fine_points(&plot, clip_to_rect(&points, &area), *colour)?;
+        } else {
+            fill_fine_polygon(&plot, *p, outline, *colour)?;
+        }
     }
     if c.show_legend {
         draw_legend_clear(

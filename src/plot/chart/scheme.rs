@@ -29,11 +29,16 @@ pub(crate) enum Look {
 }
 
 impl Look {
-    /// The scheme's colour (Okabe–Ito, [`PALETTE`]).
+    /// The scheme's colour (Okabe–Ito, [`PALETTE`]; the fall-offs [`SWEEP`] steps).
     pub const fn colour(self) -> RGBColor {
         match self {
-            Look::Psm | Look::Zp | Look::Barroso => PALETTE[0],
-            Look::ZpW | Look::Zhang => PALETTE[1],
+            Look::Psm | Look::Zp => PALETTE[0],
+            Look::ZpW => PALETTE[1],
+            // The two fall-offs r(γ) are one rule's parameter, not schemes: the sweep's darkest
+            // and fourth steps, so that no reader takes them for PSM/ZP blue or ZP+W
+            // vermillion (figure review 5, X5).
+            Look::Barroso => SWEEP[0],
+            Look::Zhang => SWEEP[3],
             Look::Lispsm | Look::FpZpW => PALETTE[2],
             Look::Uniform => PALETTE[4],
         }

@@ -9,7 +9,7 @@ use super::super::chart::{
     Chart2d, ChartStyle, FONT, PANEL_TITLE, SWEEP, TITLE_GAP,
 };
 use super::super::{Column, Fail, Figure};
-use super::{FromLight, Panel, SEEN_X};
+use super::{FromLight, Panel, SEEN_X, SEEN_Y};
 use glam::DVec2;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -51,6 +51,9 @@ const DIM_BAR: f64 = 4.0;
 /// A panel title's distance from its cell's left edge, in units.
 const TITLE_INSET: i32 = 2;
 
+/// The grey of the box marking the region a detail panel enlarges.
+const ENLARGED: RGBColor = RGBColor(110, 110, 110);
+
 /// The grey of the leaders and their anchor dots.
 const LEADER: RGBColor = RGBColor(150, 150, 150);
 const ANCHOR: RGBColor = RGBColor(90, 90, 90);
@@ -74,8 +77,8 @@ fn sizes(single: bool, panels: usize) -> Sizes {
         // One column, two panels a row of 144 units: the type of every other one-column figure
         // (ticks and labels 13, 10.5 units, 8.4 pt printed; titles and axis names 15), y ticks
         // on every panel and each plane's label on one line (figure review 4: without y ticks
-        // and with "f =" over "100" the panels graded C): a label is the plane's depth alone
-        // ("31.62"; the key says the labels are z), so that the gutter takes 50 units.
+        // and with "f =" over "100" the panels graded C): a label is set close, "z=31.62"
+        // (figure review 5: the depth alone read as a tick value), in a gutter of 58 units.
         Sizes {
             style: ChartStyle {
                 title_size: PANEL_TITLE,
@@ -88,7 +91,7 @@ fn sizes(single: bool, panels: usize) -> Sizes {
             x_ticks_only: 26,
             y_ticks_only: 30,
             label: 13,
-            gutter: 50,
+            gutter: 58,
             step: 15,
             key: 13,
         }
@@ -242,14 +245,12 @@ pub(super) fn dashed(
 type Stroke = (RGBColor, u32, &'static [f64]);
 
 /// The key under the panels: "Maps, nearest first:" with each map's stroke and its
-/// number, then the frustum's stroke and the split planes' ("split plane (label: z)" where
-/// `bare_depths`: the planes' labels are their depths alone). Its items flow in rows, centred;
+/// number, then the frustum's stroke and the split planes'. Its items flow in rows, centred;
 /// returns the height it takes (drawing nothing when `draw` is false).
 fn key<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     maps: usize,
     size: u32,
-    bare_depths: bool,
     draw: bool,
 ) -> Result<u32, Fail> {
     let style = TextStyle::from((FONT, size).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
@@ -269,13 +270,7 @@ fn key<DB: DrawingBackend>(
         ));
     }
     items.push((Some((BLACK, FRUSTUM_WIDTH, &[])), "frustum".into()));
-    // Where the planes' labels are their depths alone (one column), the key says so.
-    let plane = if bare_depths {
-        "split plane (label: z)"
-    } else {
-        "split plane"
-    };
-    items.push((Some((BLACK, PLANE_WIDTH, &[])), plane.into()));
+    items.push((Some((BLACK, PLANE_WIDTH, &[])), "split plane".into()));
     let (w, _) = area.dim_in_pixel();
     let avail = f64::from(w) - 8.0;
     let mut rows: Vec<Vec<(f64, usize)>> = vec![Vec::new()];
@@ -353,11 +348,10 @@ impl Figure for FromLight {
         let body = frame(root, title, &[caption.as_str()])?;
         let sz = sizes(single, self.panels.len());
         let maps = self.panels.iter().map(|p| p.maps.len()).max().unwrap_or(0);
-        let small = single && self.panels.len() > 1;
-        let key_h = key(&body, maps, sz.key, small, false)?;
+        let key_h = key(&body, maps, sz.key, false)?;
         let (_, bh) = body.dim_in_pixel();
         let (body, strip) = body.split_vertically(bh - key_h);
-        key(&strip, maps, sz.key, small, true)?;
+        key(&strip, maps, sz.key, true)?;
         let columns = self.panels.len().min(2);
         let rows = self.panels.len().div_ceil(columns);
         // The rows above the last have no x title: the last is taller by the title's room, so
@@ -365,6 +359,10 @@ impl Figure for FromLight {
         let (bw, bh) = body.dim_in_pixel();
         let extra = sz.style.x_label_area - sz.x_ticks_only;
         let row_h = (bh - if rows > 1 { extra } else { 0 }) / rows as u32;
+        // One column's three rows of plots about 75 units tall: the y axis named once, for the
+        // column (figure review 5: "light-view y" is longer than one plot, and on each row it
+        // ran into the titles).
+        let shared_y = single && rows > 2;
         let mut rest = body;
         for r in 0..rows {
             let h = if r + 1 == rows {
@@ -400,14 +398,48 @@ impl Figure for FromLight {
                     single && self.panels.len() > 1,
                     &sz,
                     &style,
-                    (r + 1 == rows, c == 0),
+                    (r + 1 == rows, c == 0 && !shared_y),
                 )?;
+            }
+            // One column's y name, once, centred on the middle row below its title.
+            if shared_y && r == rows / 2 {
+                let (_, rh) = row.dim_in_pixel();
+                let head = sz.style.margin + sz.style.title_size + TITLE_GAP;
+                let centre = (head + rh) / 2;
+                row.draw(&Text::new(
+                    SEEN_Y,
+                    (sz.style.margin as i32, centre as i32),
+                    TextStyle::from((FONT, sz.style.desc_size).into_font())
+                        .transform(FontTransform::Rotate270)
+                        .pos(Pos::new(HPos::Center, VPos::Top)),
+                ))?;
             }
             rest = below;
         }
         debug_assert!(bw > 0);
         Ok(())
     }
+}
+
+/// The two ends of a cross-section seen edge-on (its four corners on one line, within `tol`):
+/// the pair of corners furthest apart; `None` for a section with an area.
+pub(super) fn edge_on(sec: &[DVec2; 4], tol: f64) -> Option<[DVec2; 2]> {
+    let mut ends = [sec[0], sec[0]];
+    let mut far = -1.0;
+    for (i, &a) in sec.iter().enumerate() {
+        for &b in &sec[i + 1..] {
+            let d = (b - a).length();
+            if d > far {
+                far = d;
+                ends = [a, b];
+            }
+        }
+    }
+    let dir = (ends[1] - ends[0]).normalize_or_zero();
+    let flat = sec
+        .iter()
+        .all(|&q| (q - ends[0]).perp_dot(dir).abs() <= tol.max(1e-9 * far));
+    (far > 0.0 && flat).then_some(ends)
 }
 
 /// The window a panel shows (min, max), with a margin of 3 % of its larger side.
@@ -428,7 +460,7 @@ fn axes(lo: DVec2, hi: DVec2, at: &(Vec<f64>, Vec<f64>), titles: (bool, bool)) -
     let name = |t: bool, n: &str| if t { n.to_string() } else { String::new() };
     (
         Axis::linear(name(titles.0, SEEN_X), lo.x, hi.x).labelled_at(&at.0),
-        Axis::linear(name(titles.1, "light z"), lo.y, hi.y).labelled_at(&at.1),
+        Axis::linear(name(titles.1, SEEN_Y), lo.y, hi.y).labelled_at(&at.1),
     )
 }
 
@@ -597,16 +629,8 @@ fn draw_panel<DB: DrawingBackend>(
     let per_unit =
         f64::from(px(&chart, DVec2::new(xa.max, 0.0)).0 - px(&chart, DVec2::new(xa.min, 0.0)).0)
             / (xa.max - xa.min);
-    // A map's tint only where the whole map is in the window: a map larger than a detail
-    // panel's window would tint its whole background.
-    for (i, &(a, b)) in p.maps.iter().enumerate() {
-        if inside(a) && inside(b) {
-            chart.draw_series(std::iter::once(Rectangle::new(
-                [(a.x, a.y), (b.x, b.y)],
-                map_colour(i).mix(0.08).filled(),
-            )))?;
-        }
-    }
+    // No tint inside the maps (figure review 5: the tinted fills were in no key); each map is
+    // its dashed outline.
     // The labelled split planes, each with its leader's candidate corners.
     let tol = 1e-9 * (xa.max - xa.min);
     let mut labelled: Vec<(Vec<DVec2>, &String)> = Vec::new();
@@ -622,6 +646,16 @@ fn draw_panel<DB: DrawingBackend>(
             labelled.push((corners, label));
         }
     }
+    // The notes naming a line (barroso-fig5 (f)'s far face) are labels in the gutter too, each
+    // joined by its leader to its point on the line (figure review 5: set above the line, the
+    // note read as the band's name, not the line's); in one column's 50-unit gutter, none.
+    for (at, text) in p.notes.iter().filter(|_| !small) {
+        if inside(*at) {
+            labelled.push((vec![*at], text));
+        }
+    }
+    // Bottom to top, as the planes are: a note among them in its place.
+    labelled.sort_by(|a, b| a.0[0].y.total_cmp(&b.0[0].y));
     let (gx, gy) = gutter.get_base_pixel();
     let (wx, wy) = whole.get_base_pixel();
     let (_, gh) = gutter.dim_in_pixel();
@@ -666,7 +700,13 @@ fn draw_panel<DB: DrawingBackend>(
         } else {
             PLANE_WIDTH
         };
-        solid(&[s[0], s[1], s[2], s[3], s[0]], width)?;
+        match edge_on(s, tol) {
+            // Seen edge-on (a light perpendicular to the view): one line between its ends, at
+            // its weight (figure review 5: the closed outline of a flat quad was drawn as two
+            // thin slanted lines).
+            Some([a, b]) => solid(&[a, b], width)?,
+            None => solid(&[s[0], s[1], s[2], s[3], s[0]], width)?,
+        }
     }
     let (first, far) = (p.sections[0], p.sections[last]);
     for i in 0..4 {
@@ -683,6 +723,16 @@ fn draw_panel<DB: DrawingBackend>(
             for dash in dashed(&piece, PATTERNS[i % PATTERNS.len()], per_unit) {
                 chart.draw_series(LineSeries::new(dash, colour.stroke_width(2)))?;
             }
+        }
+    }
+    // The region a detail panel enlarges, a grey box on top of the drawing.
+    if let Some((a, b)) = p.enlarged {
+        // Outside the maps' outlines round it (drawn MAP_OFFSET out), so that it shows.
+        let out = DVec2::splat((MAP_OFFSET + 3.0) / per_unit);
+        let (a, b) = (a - out, b + out);
+        let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
+        for piece in clip(&corners) {
+            chart.draw_series(LineSeries::new(piece, ENLARGED.stroke_width(2)))?;
         }
     }
     // Each leader's anchor, a dot on its corner.
@@ -716,20 +766,6 @@ fn draw_panel<DB: DrawingBackend>(
             BLACK,
         )?;
     }
-    // The notes naming a line, just above it, on no box: between lines, covering none (in one
-    // column's 100-unit plots the side edges close in on it: left out there).
-    let note_style =
-        TextStyle::from((FONT, sz.label).into_font()).pos(Pos::new(HPos::Center, VPos::Bottom));
-    for (at, text) in p.notes.iter().filter(|_| !small) {
-        if inside(*at) {
-            let (x, y) = px(&chart, *at);
-            whole.draw(&Text::new(
-                text.clone(),
-                (x - wx, y - wy - 3),
-                note_style.clone(),
-            ))?;
-        }
-    }
     // The labels in the gutter, each joined to its leader's end (in one column's narrow gutter
     // by a leader 2 units shorter).
     let shorter = if small { 2 } else { 0 };
@@ -741,10 +777,12 @@ fn draw_panel<DB: DrawingBackend>(
             vec![(0, ty), (5, ty), (11 - shorter, y - gy)],
             LEADER.stroke_width(1),
         ))?;
-        // One column: the depth alone, on one line.
-        let text = match label.split_once(" = ") {
-            Some((_, value)) if small => value.to_string(),
-            _ => (*label).clone(),
+        // One column: on one line, "=" set close (figure review 5: the depth alone, "31.62",
+        // read as a tick value).
+        let text = if small {
+            label.replace(" = ", "=")
+        } else {
+            (*label).clone()
         };
         gutter.draw(&Text::new(
             text,
