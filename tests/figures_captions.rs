@@ -612,15 +612,25 @@ fn lloyd2006_fig7() {
             ("2006", N::Given("the paper's year")),
             ("7", N::Given("its figure")),
             ("1", N::Given("the sweep's step in degrees")),
-            ("10", N::Given("a ring's elevation")),
-            ("20", N::Given("a ring's elevation")),
-            ("30", N::Given("a ring's elevation")),
-            ("60", N::Given("a ring's elevation")),
             ("1", N::Given("n")),
             ("1000", N::Given("f")),
             ("30", N::Given("θ")),
             ("12", N::Given("Eq 12")),
             ("865", N::Value(999.0 / (2.0 * 30f64.to_radians().tan()))),
+            (
+                "1.999×10^{6}",
+                N::Measured(
+                    "(a)'s largest S̄ (fig7_names_e_and_the_projection_..., src/plot/hemisphere.rs)",
+                ),
+            ),
+            ("2006", N::Given("the name lloyd2006-worst-case")),
+            (
+                "1.224×10^{6}",
+                N::Measured(
+                    "the minimum-area maps' peak, recomputed by a scan of rotations \
+                     (fig7_names_e_and_the_projection_..., src/plot/hemisphere.rs)",
+                ),
+            ),
         ],
     );
 }
@@ -635,13 +645,13 @@ fn lloyd2006_worst_case() {
             ("5.3", N::Given("§5.3")),
             ("2", N::Given("the paper's claim, 2–3 times")),
             ("3", N::Given("the paper's claim, 2–3 times")),
+            ("20", N::Given("Eq 20")),
+            ("21", N::Given("Eq 21")),
             ("1000", N::Given("f/n")),
             ("30", N::Given("θ")),
             ("2", N::Given("the sweep's step in degrees")),
             ("7", N::Given("Fig. 7")),
             ("1", N::Given("Fig. 7's step in degrees")),
-            ("20", N::Given("Eq 20")),
-            ("21", N::Given("Eq 21")),
             (
                 "1.998",
                 N::Measured("ZP's worst case over Eq 20's value behind"),
@@ -655,6 +665,17 @@ fn lloyd2006_worst_case() {
                 ),
             ),
             ("1", N::Measured("FP+ZP+W's worst case is its value behind")),
+            (
+                "1.055",
+                N::Measured(
+                    "ZP's least worst case with minimum-area maps (k = 8), recomputed by a scan \
+                     of rotations (captions_state_the_orientation_rule_..., src/plot/worst.rs)",
+                ),
+            ),
+            (
+                "1.224",
+                N::Measured("the same at k = 1 (the fifth review's independent 1.224)"),
+            ),
         ],
     );
 }
@@ -677,8 +698,10 @@ fn martin_tan_fig3() {
             ("30", N::Given("θ")),
             ("80", N::Given("the light's elevation")),
             ("70", N::Given("the light's azimuth")),
-            ("4", N::Given("the boxes drawn 4 pt outside their outlines")),
+            ("3", N::Given("the paper's §3")),
             ("5", N::Given("the paper's §5")),
+            ("0", N::Given("map coordinates from 0")),
+            ("1", N::Given("to 1")),
             ("67.0", N::Measured(counted)),
             ("53.2", N::Measured(counted)),
             ("51.4", N::Measured(counted)),
@@ -699,6 +722,8 @@ fn martin_tan_fig6() {
             ("20", N::Given("a ring's elevation")),
             ("30", N::Given("a ring's elevation")),
             ("60", N::Given("a ring's elevation")),
+            ("0", N::Given("(b)'s elevation behind")),
+            ("90", N::Given("(b)'s elevation overhead")),
             ("1024", N::Given("the iterative variant's map lines")),
             ("1", N::Given("n")),
             ("100", N::Given("f")),

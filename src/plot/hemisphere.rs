@@ -2,8 +2,8 @@
 //! the crate's measurement of each scheme's own matrices ([`crate::scheme::sweep::sweep`]).
 
 use super::chart::{
-    column, decades, draw_colour_bar, draw_colour_bar_across, draw_hemisphere_keyed, frame, Axis,
-    ColourScale, PolarGrid,
+    column, decades, draw_colour_bar, draw_colour_bar_across, draw_hemisphere_keyed, fmt_times_ten,
+    frame, Axis, ColourScale, PolarGrid,
 };
 use super::{Column, Fail, Figure};
 use crate::maps::WarpRule;
@@ -45,6 +45,13 @@ pub(super) fn polar_grid(s: &Sweep, values: Vec<Option<f64>>) -> PolarGrid {
         values,
     }
 }
+
+/// (e)'s title: what it divides, by name (the fifth review: "(e) (b) ÷ (c)" was cryptic,
+/// above all in the bare form).
+const E_TITLE: &str = "(e) LiSPSM ÷ faces";
+
+/// The title of the two-column form's key disk (rings and centre labelled, no data).
+const KEY_TITLE: &str = "key: elevation";
 
 /// One panel: its title and its field.
 struct Panel {
@@ -116,7 +123,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         ))
     })?;
     let ratio = Panel {
-        title: "(e) (b) ÷ (c)".into(),
+        title: E_TITLE.into(),
         grid: PolarGrid {
             values: ratios,
             ..panels[1].grid.clone()
@@ -132,25 +139,33 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let hi = panels.iter().map(|p| p.max).fold(0.0, f64::max);
     let (lo, hi) = decades(lo, hi);
     let scale = ColourScale::smooth(Axis::log10("(a)–(d) S̄ (log scale)", lo, hi));
+    // (a)'s brightest cells (fifth review, §4.7.5): the unwarped map's rectangle has a side
+    // along the projected view direction; its largest S̄, and that of minimum-area rectangles
+    // over the same grid (lloyd2006-worst-case).
+    let min_area = super::worst::min_area::zp_min_area_worst(&view, 1, grid)?.0;
+    let band = format!(
+        "(a)'s peak, {}, is the orientation rule's (lloyd2006-worst-case); minimum-area \
+         maps peak at {}.",
+        fmt_times_ten(panels[0].max),
+        fmt_times_ten(min_area),
+    );
     // Lloyd 2006 Eq 12 at n′ ≤ n′_LiSPSM: the overhead S̄ of LiSPSM and of face partitioning.
     let (n, f) = (view.near(), view.far());
     let overhead = (f / n - 1.0) / (2.0 * view.tan_half_fov());
     let caption = vec![format!(
-        "Lloyd et al. 2006, Fig. 7: S̄ = M_x M_z (texels per image pixel), from each scheme's \
-         light transform, for lights {step}° apart seen from above: overhead at the \
-         centre, rings of equal elevation 10°, 20°, 30°, 60° above the horizon (the rim). \
-         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of view \
-         θ\u{a0}=\u{a0}{theta:.0}°. (a)–(d) share one log scale; (d) at the warp parameter n′ \
-         of least S̄; (e) is (b)\u{a0}÷\u{a0}(c). Overhead, (b) and (c) are Eq 12's \
-         {overhead:.0}.",
+        "Lloyd et al. 2006, Fig. 7: S̄ = M_x M_z (texels per image pixel), lights {step}° apart, \
+         azimuthal equidistant (overhead at the centre, horizon at the rim); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°; (d) at \
+         the n′ of least S̄; (e): LiSPSM's S̄ over face partitioning's. Overhead, (b) and (c) \
+         are Eq 12's {overhead:.0}. {band}",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     )];
-    // One column: at most five lines.
+    // One column: at most six lines.
     let single_caption = format!(
-        "Lloyd et al. 2006, Fig. 7: S̄ for lights {step}° apart; rings: elevation 10°, 20°, \
-         30°, 60°, overhead at the centre; n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         θ\u{a0}=\u{a0}{theta:.0}°; (d) at the n′ of least S̄; (e) is (b)\u{a0}÷\u{a0}(c).",
+        "Lloyd et al. 2006, Fig. 7: S̄, lights {step}° apart, azimuthal equidistant; rings: \
+         elevation 10°, 20°, 30°, 60°; n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+         θ\u{a0}=\u{a0}{theta:.0}°; (d) at the n′ of least S̄; (a)'s peak: see \
+         lloyd2006-worst-case.",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     );
@@ -180,7 +195,7 @@ impl Fig7 {
 
 impl Figure for Fig7 {
     fn size(&self) -> (u32, u32) {
-        (520, 500)
+        (520, 540)
     }
 
     /// One column: three rows of two hemispheres, the bars in the sixth cell.
@@ -229,8 +244,11 @@ impl Figure for Fig7 {
         let order = [(a, s), (b, s), (c, s), (d, s), (e, &self.ratio_scale)];
         let mut disk_rows = Vec::new();
         for (k, (p, scale)) in order.iter().enumerate() {
-            let r =
-                draw_hemisphere_keyed(&cell(k as u32), &p.title, &p.grid, scale, k == 0, false)?;
+            // One column keys (a): its sixth cell holds both bars. Two columns key an empty
+            // disk in the sixth cell instead (the fifth review: the key's boxes covered (a)'s
+            // data, and the sixth cell was empty).
+            let keyed = single && k == 0;
+            let r = draw_hemisphere_keyed(&cell(k as u32), &p.title, &p.grid, scale, keyed, false)?;
             disk_rows.push(r);
         }
         if single {
@@ -249,6 +267,17 @@ impl Figure for Fig7 {
             draw_bar(&bar, s, disk_rows[2])?;
             let ratio_bar = body.clone().shrink((2 * cw, ch), (BAR_WIDTH, ch));
             draw_bar(&ratio_bar, &self.ratio_scale, disk_rows[4])?;
+            // The key: a disk with no data, right of (e)'s bar, as large as the others.
+            let x = 2 * cw + BAR_WIDTH;
+            let key = body
+                .clone()
+                .shrink((x, ch), (cw.min(w - x), ch.saturating_sub(row_gap)));
+            let empty = PolarGrid {
+                elev_edges: vec![0.0, FRAC_PI_2],
+                az_edges: vec![0.0, TAU],
+                values: vec![None],
+            };
+            draw_hemisphere_keyed(&key, KEY_TITLE, &empty, s, true, false)?;
         }
         Ok(())
     }
@@ -432,8 +461,10 @@ mod tests {
     fn fig7_bars_are_round_decades_and_the_rings_are_keyed() {
         use super::super::chart::read_svg::texts;
         let fig = fig7().map_err(|e| e.named("lloyd2006-fig7")).unwrap();
-        assert!(fig.caption_text().contains("(e) is (b)\u{a0}÷\u{a0}(c)"));
-        assert!(fig.single_caption.contains("(e) is (b)\u{a0}÷\u{a0}(c)"));
+        // (e) named in the caption; in one column its title names it.
+        assert!(fig
+            .caption_text()
+            .contains("(e): LiSPSM's S̄ over face partitioning's"));
         for column in [Column::Double, Column::Single] {
             let svg = svg_in(&fig, column);
             let all = texts(&svg);
@@ -444,7 +475,9 @@ mod tests {
                 .collect();
             assert!(powers.len() >= 6, "{column:?}: {powers:?}");
             assert!(
-                !all.iter().any(|t| t.1.contains("×10")),
+                // Not the caption's lines (#323232), which print (a)'s peak as m×10ⁿ.
+                !all.iter()
+                    .any(|t| t.1.contains("×10") && !t.0.contains("#323232")),
                 "{column:?}: a mantissa on a bar"
             );
             for key in ["10°", "20°", "30°", "60°", "90°"] {
@@ -459,5 +492,75 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The fifth review's items on lloyd2006-fig7, read from the drawn SVG in both forms: (e)'s
+    /// title names what it divides ("LiSPSM ÷ faces", not "(b) ÷ (c)"); the captions name the
+    /// azimuthal equidistant projection; in two columns the ring key is written in a disk of
+    /// its own (every ring label nearer the key's title than any data panel's title), not over
+    /// (a)'s data; and the caption gives (a)'s brightest value (twice S̄ behind, 10⁶, Eq 20) and
+    /// the minimum-area maps' peak over the same grid, here computed by a scan of rotations.
+    #[test]
+    fn fig7_names_e_and_the_projection_and_keys_the_rings_apart_from_the_data() {
+        use super::super::chart::fmt_times_ten;
+        use super::super::chart::read_svg::{attr, texts};
+        use super::super::worst::min_area::tests::zp_by_hand;
+        use crate::scheme::sweep::light_dir_from_angles;
+        let fig = fig7().map_err(|e| e.named("lloyd2006-fig7")).unwrap();
+        for column in [Column::Double, Column::Single] {
+            let svg = svg_in(&fig, column);
+            let all = texts(&svg);
+            assert!(
+                all.iter().any(|t| t.1 == "(e) LiSPSM ÷ faces"),
+                "{column:?}: no (e) title"
+            );
+            assert!(!all.iter().any(|t| t.1 == "(e) (b) ÷ (c)"), "{column:?}");
+            let caption = if column == Column::Double {
+                fig.caption_text()
+            } else {
+                fig.single_caption.clone()
+            };
+            assert!(
+                caption.contains("azimuthal equidistant"),
+                "{column:?}: {caption}"
+            );
+            if column == Column::Double {
+                let at = |t: &(&str, String, f64)| (attr(t.0, "x").unwrap(), t.2);
+                let titles: Vec<(f64, f64)> = all
+                    .iter()
+                    .filter(|t| t.1.starts_with('(') && t.1.len() > 4 && !t.1.contains("log"))
+                    .map(at)
+                    .collect();
+                assert_eq!(titles.len(), 5, "{titles:?}");
+                let key = all.iter().find(|t| t.1 == KEY_TITLE).map(at).unwrap();
+                let d = |p: (f64, f64), q: (f64, f64)| (p.0 - q.0).hypot(p.1 - q.1);
+                for label in ["10°", "20°", "30°", "60°", "90°"] {
+                    let p = all.iter().find(|t| t.1 == label).map(at).unwrap();
+                    for &t in &titles {
+                        assert!(d(p, key) < d(p, t), "{label} at {p:?}: nearer {t:?}");
+                    }
+                }
+            }
+        }
+        // (a)'s brightest cell is twice S̄ behind, (f/n)² = 10⁶: the orientation rule.
+        let peak = fig.panel_max(0);
+        assert!((1.99e6..2.0e6).contains(&peak), "{peak}");
+        let grid = SweepGrid::new(FIG7_ELEVATIONS, FIG7_AZIMUTHS).unwrap();
+        let mut least = 0.0f64;
+        for i in 0..grid.elevations() {
+            for j in 0..grid.azimuths() {
+                let l = light_dir_from_angles(grid.elevation(i), grid.azimuth(j));
+                least = least.max(zp_by_hand(1, l, true));
+            }
+        }
+        let text = fig.caption_text();
+        let want = format!(
+            "(a)'s peak, {}, is the orientation rule's",
+            fmt_times_ten(peak)
+        );
+        assert!(text.contains(&want), "{want:?} in {text}");
+        let want = format!("minimum-area maps peak at {}", fmt_times_ten(least));
+        assert!(text.contains(&want), "{want:?} in {text}");
+        assert!(fig.single_caption.contains("lloyd2006-worst-case"));
     }
 }

@@ -118,7 +118,9 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         "(b) in the view's vertical plane",
         // A tick every 45°: behind, overhead and in front are ticks; the axis reaches 6° past
         // both ends, so that the marks at 0° and 180° stand inside the frame, not on it.
-        Axis::every("angle from behind (°)", -6.0, 186.0, 0.0, 45.0),
+        // The angle is the light's elevation in that plane, from behind on the horizon (fifth
+        // review: "angle from behind" did not say what it measures).
+        Axis::every(X_NAME, -6.0, 186.0, 0.0, 45.0),
         Axis::log10("share of the map (log scale)", floor, ceil).in_powers(),
     );
     // The figure's one key, under the profile, the only panel with lines.
@@ -156,17 +158,17 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         profile,
         caption: vec![format!(
             "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map covered by the focus \
-             region (depths n to n\u{a0}+\u{a0}δ). (a) The paper's 80\u{a0}% rule over \
-             the hemisphere seen from above (rings: elevation 10°, 20°, 30°, 60°; line: the \
-             view's vertical plane); (b) in that plane, also the iterative variant (best of 1024 \
-             lines). n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of view \
+             region (n to n\u{a0}+\u{a0}δ). (a) The 80\u{a0}% rule over the hemisphere \
+             (rings: elevation 10°, 20°, 30°, 60°; line: the view's vertical plane); (b) in that \
+             plane (elevation 0° behind, 90° overhead), also the iterative variant (1024 lines). \
+             n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of view \
              θ\u{a0}=\u{a0}{theta:.0}°, δ\u{a0}=\u{a0}{FOCUS}. {JUMP_GLYPH}: light exactly \
              behind or in front, {dueling:.4}.",
         )],
         single_caption: format!(
-            "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map covered by the focus \
-             region (n to n\u{a0}+\u{a0}δ); (a) the 80\u{a0}% rule; rings: elevation 10°, \
-             20°, 30°, 60°; line: (b)'s plane; n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+            "Martin & Tan 2004, Fig. 6: the focus region's (n to n\u{a0}+\u{a0}δ) share of \
+             the trapezoidal map; (a) the 80\u{a0}% rule; rings: elevation 10°, 20°, 30°, \
+             60°; line: (b)'s plane (90° overhead); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
              θ\u{a0}=\u{a0}{theta:.0}°, δ\u{a0}=\u{a0}{FOCUS}; {JUMP_GLYPH}: {dueling:.4}."
         ),
     })
@@ -209,7 +211,9 @@ impl Figure for Fig6 {
         if single {
             // The hemisphere with its bar upright beside it (its name right of its ticks,
             // nothing beside it); the profile under them, its key in one column.
-            let (top, bottom) = body.split_vertically(h * 38 / 100);
+            // (b) has the larger share (the fifth review: 0.8 in for three decades, its markers
+            // crowded; the disk needs less).
+            let (top, bottom) = body.split_vertically(h * 33 / 100);
             let (tw, _) = top.dim_in_pixel();
             let (disk, bar) = top.split_horizontally(tw.saturating_sub(BAR_WIDTH));
             let rows =
@@ -240,6 +244,10 @@ impl Figure for Fig6 {
         Ok(())
     }
 }
+
+/// (b)'s x axis's name: the light's elevation in the view's vertical plane, 0° behind on the
+/// horizon, 90° overhead, 180° in front (the captions say so).
+const X_NAME: &str = "light's elevation (°)";
 
 /// (a)'s title.
 const PANEL_A: &str = "(a) 80 % rule over the hemisphere";
@@ -441,5 +449,40 @@ mod tests {
         // The axis runs 6° past both end ticks: 192° in all.
         let axis = (x("180") - x("0")) * 192.0 / 180.0;
         assert!(name_w > 50.0 && name_w <= axis, "{name_w} vs {axis}");
+    }
+
+    /// The fifth review on martin-tan-fig6: (b)'s x axis names the angle as the light's
+    /// elevation (it read "angle from behind"), and the captions say where 90° is; in one
+    /// column (b)'s plot is at least 80 units tall (it was 68: three decades in 0.8 in), read
+    /// from the SVG as the distance between its top and bottom y tick labels (the leftmost
+    /// powers of ten; the bar's stand right of the disk).
+    #[test]
+    fn profile_names_the_elevation_and_is_taller_in_one_column() {
+        use super::super::chart::read_svg::{attr, texts};
+        use super::super::hemisphere::svg_in;
+        let fig = fig6().map_err(|e| e.named("martin-tan-fig6")).unwrap();
+        assert!(fig.profile.x.label.contains("elevation"));
+        assert!(fig.caption.join(" ").contains("90° overhead"));
+        assert!(fig.caption.join(" ").contains("elevation 0° behind"));
+        assert!(fig.single_caption.contains("90° overhead"));
+        let svg = svg_in(&fig, Column::Single);
+        let all = texts(&svg);
+        // The name as drawn (the SVG escapes its apostrophe).
+        assert!(all.iter().any(|t| t.1.ends_with("elevation (°)")));
+        let ticks: Vec<(f64, f64)> = all
+            .iter()
+            .filter(|t| t.0.contains(">10<tspan"))
+            .map(|t| (attr(t.0, "x").unwrap(), t.2))
+            .collect();
+        let left = ticks.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
+        let ys: Vec<f64> = ticks
+            .iter()
+            .filter(|p| p.0 < left + 10.0)
+            .map(|p| p.1)
+            .collect();
+        assert_eq!(ys.len(), 4, "{ticks:?}");
+        let span = ys.iter().copied().fold(0.0, f64::max)
+            - ys.iter().copied().fold(f64::INFINITY, f64::min);
+        assert!(span >= 80.0, "(b) spans {span} units");
     }
 }
