@@ -133,8 +133,8 @@ fn barroso_fig5_far_face_is_a_gutter_label() {
         // The last of each: (f) is drawn after (e), whose gutter has a "z = 40.81" too.
         let left = |c: &str| {
             all.iter()
-                .filter(|t| t.content == c)
-                .last()
+                .rev()
+                .find(|t| t.content == c)
                 .unwrap_or_else(|| panic!("{form}: no {c:?}"))
                 .bbox[0]
         };
