@@ -203,7 +203,7 @@ fn zhang_fig3_bare_has_no_dead_space_below() {
 
 /// martin-tan-fig3 has one legend, under all its panels (the review: under (a) only, although
 /// (b) and (c) use it too): in both layouts each of its six entries lies below every panel's
-/// x axis name ("−x in light space", "map s" twice), and the six are there once each.
+/// x axis name ("light-view x", "map s" twice), and the six are there once each.
 #[test]
 fn martin_tan_fig3_legend_is_under_all_panels() {
     let font = Font::dejavu();
@@ -222,7 +222,7 @@ fn martin_tan_fig3_legend_is_under_all_panels() {
         );
         let names: Vec<f64> = all
             .iter()
-            .filter(|t| t.content == "map s" || t.content == "−x in light space")
+            .filter(|t| t.content == "map s" || t.content == "light-view x")
             .map(|t| t.bbox[3])
             .collect();
         // One column's (b) leaves its x axis name to (c) under it: two names there.
@@ -237,16 +237,18 @@ fn martin_tan_fig3_legend_is_under_all_panels() {
     }
 }
 
-/// In martin-tan-fig3's (a) the boxes are drawn beside T where their sides lie on T's (the
-/// review: B's right side on T's made a blue and pink stripe; the axis-aligned box's top was
-/// hidden under T's): every piece of B's dashes (olive #96961E) and of the axis-aligned box's
-/// dots (grey #5A5A5A, 2 units wide) that runs along a side of T's outline (black, 2 units wide,
-/// closed: five points, the widest such, (b)'s map square being another) keeps at least 2 units
-/// from it, and each box has such pieces.
+/// In martin-tan-fig3's (a) the boxes are drawn at their true outlines, whatever the scale
+/// (the fifth review: drawn 4 units outside T's sides, true only at the page's size): every
+/// piece of B's dashes (olive #96961E) and of the axis-aligned box's dots (grey #5A5A5A, 2 units
+/// wide) that runs along a side of T's outline (black, 2 units wide, closed: five points, the
+/// widest such, (b)'s map square being another) lies on that side, within 1 unit, and each box
+/// has such pieces; B's dashes are drawn after T (over it: olive and black alternate where they
+/// meet), the axis-aligned box's dots before (T closes it).
 #[test]
-fn martin_tan_fig3_boxes_run_beside_the_trapezoid() {
+fn martin_tan_fig3_boxes_are_drawn_at_their_true_outlines() {
     let svg = render_svg("martin-tan-fig3", &options(Column::Double, false));
-    let lines = |colour: &str| -> Vec<Vec<(f64, f64)>> {
+    // Each stroke with its line's place in the SVG (the drawing order).
+    let numbered = |colour: &str| -> Vec<(usize, Vec<(f64, f64)>)> {
         svg.lines()
             .filter(|l| {
                 l.starts_with("<polyline")
@@ -256,12 +258,15 @@ fn martin_tan_fig3_boxes_run_beside_the_trapezoid() {
             .map(read::points)
             .collect()
     };
+    let lines = |colour: &str| -> Vec<Vec<(f64, f64)>> {
+        numbered(colour).into_iter().map(|(_, p)| p).collect()
+    };
     // T's outline in (a): the widest closed black outline ((b)'s map square is one too).
     let width = |p: &Vec<(f64, f64)>| {
         let xs = p.iter().map(|q| q.0);
         xs.clone().fold(f64::NEG_INFINITY, f64::max) - xs.fold(f64::INFINITY, f64::min)
     };
-    let t = lines("#000000")
+    let (t_at, t) = numbered("#000000")
         .into_iter()
         .filter(|p| p.len() == 5)
         .max_by(|a, b| width(a).total_cmp(&width(b)))
@@ -289,16 +294,18 @@ fn martin_tan_fig3_boxes_run_beside_the_trapezoid() {
             })
             .reduce(f64::min)
     };
-    for colour in ["#96961E", "#5A5A5A"] {
-        let pieces = lines(colour);
-        assert!(pieces.len() > 10, "{colour}: {} pieces", pieces.len());
-        let beside: Vec<f64> = pieces.iter().filter_map(|p| along(p)).collect();
+    for (colour, after) in [("#96961E", true), ("#5A5A5A", false)] {
+        assert!(lines(colour).len() > 10, "{colour}: {} pieces", lines(colour).len());
+        let on: Vec<(usize, f64)> = numbered(colour)
+            .iter()
+            .filter_map(|(k, p)| along(p).map(|d| (*k, d)))
+            .collect();
         // Both boxes have a side along one of T's: B's right side, the axis box's top.
-        assert!(!beside.is_empty(), "{colour}: no piece along T");
-        let near = beside.iter().copied().fold(f64::INFINITY, f64::min);
-        assert!(
-            near >= 2.0,
-            "{colour}: a piece {near} from T's side along it"
-        );
+        assert!(!on.is_empty(), "{colour}: no piece along T");
+        let far = on.iter().map(|p| p.1).fold(0.0, f64::max);
+        assert!(far <= 1.0, "{colour}: a piece {far} from T's side along it");
+        for (k, _) in on {
+            assert_eq!(k > t_at, after, "{colour}: drawn at {k}, T at {t_at}");
+        }
     }
 }

@@ -261,11 +261,13 @@ fn fig11_far_dimension_label_clears_the_x_axis() {
     }
 }
 
-/// martin-tan-fig3's legend notes the boxes' outset in every form, bare ones included: 4 units
-/// in printed points, read from the SVG's own size (1 pt a unit across two columns: "4 pt";
-/// 240 pt over 300 units in one: 3.2 pt), so the bare figure says it without its caption.
+/// martin-tan-fig3 draws its boxes at their true outlines (the fifth review: drawn 4 units
+/// outside, which stopped being true once the figure was scaled), so no form, bare ones
+/// included, says they are drawn outside (the legend's note and the captions' clause went
+/// with the outset; the outlines are checked by
+/// `martin_tan_fig3_boxes_are_drawn_at_their_true_outlines`, tests/figures_e_layouts.rs).
 #[test]
-fn martin_tan_bare_says_the_boxes_are_drawn_outside() {
+fn martin_tan_says_nothing_of_an_outset() {
     let font = read::Font::dejavu();
     for (form, opts) in forms().into_iter().chain([(
         "single bare",
@@ -276,28 +278,10 @@ fn martin_tan_bare_says_the_boxes_are_drawn_outside() {
         },
     )]) {
         let svg = read::render_svg("martin-tan-fig3", &opts);
-        let pt = 4.0 * read::points_per_unit(&svg);
-        let want = if pt.fract() == 0.0 {
-            format!("{pt:.0}")
-        } else {
-            format!("{pt:.1}")
-        };
-        let note = format!("Both boxes drawn {want}\u{a0}pt outside their outlines.");
         let texts = read::texts(&font, &svg);
-        assert!(
-            texts.iter().any(|t| t.content == note),
-            "{form}: no {note:?}"
-        );
-        // Inside the page, 3 units from its right edge.
-        let head = &svg[..svg.find('>').unwrap()];
-        let page: f64 = read::attr_str(head, "viewBox")
-            .unwrap()
-            .split_whitespace()
-            .nth(2)
-            .unwrap()
-            .parse()
-            .unwrap();
-        let note = texts.iter().find(|t| t.content == note).unwrap();
-        assert!(note.bbox[2] <= page - 3.0, "{form}: {:?}", note.bbox);
+        assert!(texts.len() > 10, "{form}: {} texts", texts.len());
+        for t in &texts {
+            assert!(!t.content.contains("outside"), "{form}: {:?}", t.content);
+        }
     }
 }

@@ -119,36 +119,22 @@ fn fig7_a_is_labelled_between_its_decades() {
     }
 }
 
-/// X6: "light −x" read as "light minus x"; fig8's axes are "−x in light space" and "z in
-/// light space", in every form, and no text says "light −x" or "light z". In one column (b)'s
-/// plot, about 73 units tall, is shorter than "z in light space": its axis is "z", (a)'s z
-/// named in full beside (a) above it (the fourth review: y names no longer than their axes).
+/// X6: "light −x" read as "light minus x"; fig8's axes are named as in every figure (the fifth
+/// review, X3: "z in light space" clashed with the eye depth z, and one column's (b) said "z"):
+/// "light-view x" and "light-view y" on both (a) and (b), in every form, and no text says
+/// "light −x", "light z", "z in light space" or a bare "z".
 #[test]
 fn fig8_axes_are_named_in_light_space() {
     for (form, opts) in forms() {
         let svg = render_svg("lloyd2005-fig8", &opts);
         let all = all_texts(&svg);
         let count = |name: &str| all.iter().filter(|t| t.content == name).count();
-        assert!(
-            count("−x in light space") >= 2,
-            "{form}: −x not on (a) and (b)"
-        );
-        if form == "single" {
-            assert!(
-                count("z in light space") >= 1 && count("z") >= 1,
-                "{form}: z not on (a) and (b)"
-            );
-        } else {
-            assert!(
-                count("z in light space") >= 2,
-                "{form}: z not on (a) and (b)"
-            );
+        for name in ["light-view x", "light-view y"] {
+            assert!(count(name) >= 2, "{form}: {name} not on (a) and (b)");
         }
-        assert!(
-            !all.iter()
-                .any(|t| t.content == "light −x" || t.content == "light z"),
-            "{form}"
-        );
+        for name in ["light −x", "light z", "z in light space", "−x in light space", "z"] {
+            assert_eq!(count(name), 0, "{form}: {name}");
+        }
     }
 }
 

@@ -48,10 +48,10 @@ const THETA_DEG: f64 = 30.0;
 /// Lines of the map's texel grid drawn in panel (b), per direction.
 const GRID: usize = 9;
 
-/// Panels (a) and (b)'s axes: the light's view, light-space −x to the right and z up (the
-/// third figure review: "light −x" read as "light minus x").
-const X_NAME: &str = "−x in light space";
-const Z_NAME: &str = "z in light space";
+/// Panels (a) and (b)'s axes: the light's view, light-space −x to the right and z up, named
+/// as in every figure (the fifth review, X3: "z in light space" clashed with the eye depth z).
+const X_NAME: &str = "light-view x";
+const Z_NAME: &str = "light-view y";
 
 /// The one-column page's height, in units (420 pt printed at 0.8 pt a unit).
 const SINGLE_HEIGHT: u32 = 525;
@@ -218,18 +218,18 @@ impl Figure for Fig8 {
             format!(
                 "Lloyd et al. 2005, Fig. 8: k\u{a0}=\u{a0}{} z-partitions a face, LiSPSM, \
                  n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, θ\u{a0}=\u{a0}{THETA_DEG}°, light \
-                 {}° high, {}° right of behind.",
+                 {}° high, {}° right of behind. M_x, M_z: largest error across the view, in \
+                 depth; s split by M_x, t by M_z (the paper: t by M_x).",
                 self.k, LIGHT.0, LIGHT.1,
             )
         } else {
             format!(
-                "Lloyd et al. 2005, Fig. 8: face partitions, k\u{a0}=\u{a0}{} z-partitions \
-                 each, LiSPSM, n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, \
-                 θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. (a) From the \
-                 light (R, L, T, N: right, left, top, near face; 1 near, 2 far). (b) {}: its map's \
-                 texels reach past it, fitted to a larger frustum (dashed in the paper). (c) The \
-                 texture by Eq\u{a0}6; (d) a column's width is set by its largest M_x: the other \
-                 parts' M_x/w is lower.",
+                "Lloyd et al. 2005, Fig. 8: k\u{a0}=\u{a0}{} z-partitions a face, LiSPSM, n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, \
+                 θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. (a) R, L, T, \
+                 N: right, left, top, near face; 1 near, 2 far. (b) {}'s texels reach past it (a \
+                 larger frustum, dashed in the paper). (c) Eq\u{a0}6: s split by M_x, t by M_z \
+                 (the paper transposes); M_x, M_z: largest error across the view, in \
+                 depth. (d) M_x/w is lower below a column's largest M_x.",
                 self.k, LIGHT.0, LIGHT.1, shown.tag,
             )
         };
@@ -419,13 +419,7 @@ impl Fig8 {
         // The title names the grid (the bare figure has no caption to), the part's tag inside
         // its thick outline names the part.
         let title = format!("(b) {}'s texel grid", cell.tag);
-        // One column: (b)'s plot is about 73 units tall, shorter than "z in light space"; its
-        // axis is (a)'s z, named in full beside (a) above it.
-        let z_name = if column() == Column::Single {
-            "z"
-        } else {
-            Z_NAME
-        };
+        let z_name = Z_NAME;
         let (xa, ya) = equal_aspect(
             area,
             &title,

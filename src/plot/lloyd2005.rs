@@ -1,6 +1,8 @@
 //! Lloyd, Yoon, Tuft, Manocha 2005, *Subdivided Shadow Maps*: Fig 4 and Fig 7.
 
-use super::chart::{column, fmt_times_ten, linspace, sweep, Axis, Charts, LineChart, Look, Series};
+use super::chart::{
+    column, fmt_times_ten, linspace, sweep, Axis, Charts, LineChart, Look, Marker, Series,
+};
 use super::{Column, Fail, Figure};
 use crate::analytic::subdivided::{distribution_g, g_min, n_from_xi, subdivided_max_error};
 use plotters::coord::Shift;
@@ -26,6 +28,9 @@ fn fmt_signed(v: f64) -> String {
 /// ran to the frame) and reads as its curve's by the far plane, where the five are apart.
 const FIG4_LABEL_AT: usize = 193;
 
+/// Where Fig 4's ξ = −½ curve asks its label to end in one column: z = 8.01.
+const FIG4_XI_HALF_LABEL_AT: usize = 155;
+
 /// Where Fig 4's g₀ line asks its label to be: z = 5.57 (the sample nearest the middle of
 /// the axis), above the line, where no curve meets it (the ξ = 0 curve meets it at both
 /// planes).
@@ -45,15 +50,10 @@ fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
     let mut c = LineChart::new(
         "",
         // One column: the name alone (the page's width holds no more).
-        Axis::linear(
-            if single {
-                "depth z"
-            } else {
-                "depth z (near plane n = 1, far plane f)"
-            },
-            1.0,
-            alpha,
-        ),
+        // Labelled at the near plane z = 1 too (the fifth review: the first label was 2), and
+        // named with both planes' values.
+        Axis::linear(format!("depth z (n = 1, f = {alpha})"), 1.0, alpha)
+            .labelled_at(&[1.0, 2.0, 4.0, 6.0, 8.0, 10.0]),
         // A tick every fifth: 0, 0.2, …, 1 (quarters wrote 1, 0.75, 0.5, 0.25, 0: two formats).
         Axis::every("error distribution g(z)", 0.0, 1.05, 0.0, 0.2),
     );
@@ -78,7 +78,24 @@ fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
         // Labelled by the curve's right end (the far plane), where the five are apart.
         let mut s = Series::line(label, pts, fig4_colour(i)).direct();
         s.direct_at = Some(zs[FIG4_LABEL_AT]);
+        // ξ = −½ a diamond, not the sweep's left triangle: the ξ = 0 and −1 curves carry ▲ and
+        // ▼, and three turns of one triangle do not tell the curves apart in greyscale (X6).
+        if i == 3 {
+            s.shape = Some(Marker::Diamond);
+            // One column: its label over its own curve by z = 8, where the lilac curve is
+            // alone under the ξ = 0 one (by the far plane it lay nearer the orange curve).
+            if single {
+                s.direct_at = Some(zs[FIG4_XI_HALF_LABEL_AT]);
+            }
+        }
         c.series.push(s);
+    }
+    // One column: ξ = −½'s label placed before ξ = 0's (labels are placed in the series'
+    // order), so that it takes the room over its own curve by z = 8 and ξ = 0's goes where
+    // room is left (placed first, ξ = 0's took that room and ξ = −½'s went under the orange
+    // curve, nearer it than its own: the fifth review).
+    if single {
+        c.series.swap(2, 3);
     }
     // The least maximum g₀, a grey dotted reference line named in the figure (the bare form
     // has no caption to say what it is). Across two columns it is quiet, so that the ξ = 0
@@ -211,14 +228,15 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
     // (a) spans 1.3 decades: labelled at 2 and 5 between its two decades as well, so that
     // the caption's values (0.575 at k = 2) can be read off; (b) at its four decades. Both in
     // powers of ten (one format for the quantity).
+    // The lower limits: (a) just under its least value, 0.095 (the fifth review: at 0.035 a
+    // third of the plot was empty; its lowest label goes over its line; one column keeps
+    // room under that end for the label, to 0.05); (b) under its least value, 1.5·10⁻³, with room for the lowest line's label
+    // under its end, clear of the x axis (at 5·10⁻⁴ the label's box covered the axis line).
     let panels: [(f64, &str, f64, &[f64]); 2] = [
-        (0.0, "(a) ξ = 0", 0.07, &[0.1, 0.2, 0.5, 1.0]),
-        (1.0, "(b) |ξ| = 1", 1e-3, &[1e-3, 1e-2, 1e-1, 1.0]),
+        (0.0, "(a) ξ = 0", FIG7_A_LOW, &[0.1, 0.2, 0.5, 1.0]),
+        (1.0, "(b) |ξ| = 1", FIG7_B_LOW, &[1e-3, 1e-2, 1e-1, 1.0]),
     ];
     for (xi, title, lo, at) in panels {
-        // Room under the lowest line's end for its label (the lower limits were 0.07 and
-        // 10⁻³: in one column the α = 10⁴ labels found room only beside other lines' labels).
-        let lo = lo * FIG7_ROOM_BELOW;
         let mut c = LineChart::new(
             title,
             // A tick at every k (the paper's k = 1 … 10).
@@ -264,7 +282,9 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
             caption: vec![format!(
                 "Lloyd et al. 2005, Fig. 7 (Eq 7): the maximum error with k self-similar face \
                  subdivisions over its value at k\u{a0}=\u{a0}1, (a) for ξ\u{a0}=\u{a0}0 and \
-                 (b) for |ξ|\u{a0}=\u{a0}1. The report's \"nearly 5 times\" at \
+                 (b) for |ξ|\u{a0}=\u{a0}1 (ξ: Eq 4's warp parameter; 0: LiSPSM, \
+                 1: PSM, −1: the uniform map); (a)'s 1.2 decades \
+                 labelled at 2 and 5 as well, (b)'s four at decades only. The report's \"nearly 5 times\" at \
                  f/n\u{a0}=\u{a0}{alpha} (its Fig. 9) needs |ξ|\u{a0}=\u{a0}1: \
                  {g1_2:.1}× at k\u{a0}=\u{a0}2; ξ\u{a0}=\u{a0}0 gives {g0_2:.2}×, \
                  and at most (f/n\u{a0}−\u{a0}1)/(√(f/n)\u{a0}ln(f/n))\u{a0}=\u{a0}{g0_inf:.2}×."
@@ -273,7 +293,8 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
         },
         single_height: FIG7_SINGLE_HEIGHT,
         single_caption: vec![format!(
-            "Lloyd et al. 2005, Fig. 7 (Eq 7). At f/n\u{a0}=\u{a0}{alpha}, k\u{a0}=\u{a0}2 gains {g1_2:.1}× with \
+            "Lloyd et al. 2005, Fig. 7; ξ: Eq 4's warp (0: LiSPSM, ±1: PSM, uniform). \
+             At f/n\u{a0}=\u{a0}{alpha}, k\u{a0}=\u{a0}2 gains {g1_2:.1}× with \
              |ξ|\u{a0}=\u{a0}1 (the report's \"nearly 5 times\"), {g0_2:.2}× with \
              ξ\u{a0}=\u{a0}0."
         )],
@@ -282,8 +303,14 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
         single_charts: Some(
             charts_double
                 .into_iter()
-                .map(|mut c| {
+                .enumerate()
+                .map(|(i, mut c)| {
                     c.y.label = FIG7_SINGLE_Y.into();
+                    // (a)'s plot, about 110 units tall, has no room between the lines' ends
+                    // for the f/n = 10⁴ label: it keeps room under the lowest end for it.
+                    if i == 0 {
+                        c.y.min = FIG7_A_LOW_SINGLE;
+                    }
                     c
                 })
                 .collect(),
@@ -297,9 +324,12 @@ const FIG7_SINGLE_Y: &str = "m_{max}(k) / m_{max}(1)";
 /// The width left of Fig 7's plots for their tick labels and the y axis' name, in units.
 const FIG7_Y_LABEL_AREA: u32 = 70;
 
-/// The factor by which Fig 7's panels reach below their asked lower limits (about a third of
-/// a decade: room for the lowest line's label under its end).
-const FIG7_ROOM_BELOW: f64 = 0.5;
+/// Fig 7's panels' lower limits: (a) 0.08 under its least value 0.095 (f/n = 10⁴, k = 10)
+/// across two columns, 0.05 in one (room under that end for its label); (b) 4·10⁻⁴, under
+/// its least 1.5·10⁻³ by room for a label clear of the x axis.
+const FIG7_A_LOW: f64 = 0.08;
+const FIG7_A_LOW_SINGLE: f64 = 0.05;
+const FIG7_B_LOW: f64 = 4e-4;
 
 /// Fig 7's one-column height, in units: 525 (420 pt printed, the one-column cap), its two
 /// panels stacked, each plot about 110 units tall (it was 800 units, 640 pt: a whole column).
@@ -589,3 +619,7 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+#[path = "lloyd2005_review_tests.rs"]
+mod review_tests;

@@ -1,8 +1,8 @@
 //! Martin & Tan 2004 Figs 3–4: the trapezoid against the bounding box. The eye's frustum seen
 //! from the light (E, with its convex hull C and the focus region), the trapezoid T of the 80 %
-//! rule ([`crate::maps::tsm::tsm`]) and the smallest axis-aligned bounding box B; then C in the
-//! trapezoidal space (N_T, the map the trapezoid builds) and in the bounding box's space, with
-//! the share of the map each leaves unused (the paper's *wastage*).
+//! rule ([`crate::maps::tsm::tsm`]), the smallest (rotated) bounding box B of the paper's §3 and
+//! the axis-aligned box; then C in the trapezoidal space (N_T, the map the trapezoid builds) and
+//! in B's space, with the share of the map each leaves unused (the paper's *wastage*).
 
 use super::chart::{
     build_chart_styled, clip_polyline, column, equal_aspect, frame, plot_size, Axis, ChartStyle,
@@ -194,25 +194,16 @@ pub(super) fn fig3_at(el_deg: f64, az_deg: f64) -> Result<Fig3, Fail> {
 /// scheme's colour (those mean shadow-map schemes in every figure), T black, B and the focus
 /// region apart by dash where their greys meet.
 const EDGE: RGBColor = RGBColor(120, 120, 120);
-const HULL: RGBColor = PALETTE[5];
+/// The hull C: a sand no scheme has (the fifth review, X5: PALETTE's sky blue was read as
+/// PSM/ZP's blue), filled at [`HULL_MIX`].
+const HULL: RGBColor = RGBColor(200, 170, 110);
+const HULL_MIX: f64 = 0.45;
 /// The focus region: dark wine, 2 units wide in every panel, so that in greyscale it stands
 /// out from the light hull C it lies on (review 3: a thin pink line on light blue).
 const FOCUS_C: RGBColor = RGBColor(136, 34, 85);
 const TRAP: RGBColor = PALETTE[6];
 const MIN_BOX: RGBColor = PALETTE[7];
 const AXIS_BOX: RGBColor = SHARED;
-
-/// How far outside their true outlines the two boxes are drawn, in units: where a box's side
-/// lies on T's (both tight on C), the two 2-unit lines run side by side, 1 unit apart,
-/// instead of one over the other (review: a blue and pink stripe read as a third style).
-const OUTSET: f64 = 4.0;
-
-/// The rectangle `r` (corners in order) grown by `d` on every side.
-fn outset(r: &[DVec2; 4], d: f64) -> [DVec2; 4] {
-    let u = (r[1] - r[0]).normalize_or_zero() * d;
-    let v = (r[3] - r[0]).normalize_or_zero() * d;
-    [r[0] - u - v, r[1] + u - v, r[2] + u + v, r[3] - u + v]
-}
 
 /// How a closed outline is stroked.
 #[derive(Clone, Copy)]
@@ -266,7 +257,6 @@ fn legend_h(rows: u32) -> u32 {
 fn draw_legend<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     columns: i32,
-    note: &str,
 ) -> Result<(), Fail> {
     let entries: [(&str, RGBColor, Option<Stroke>); 6] = [
         ("frustum E", EDGE, Some(Stroke::Solid)),
@@ -293,7 +283,7 @@ fn draw_legend<DB: DrawingBackend>(
         if stroke.is_none() {
             area.draw(&Rectangle::new(
                 [(x, y - 6), (x + 18, y + 6)],
-                HULL.mix(0.45).filled(),
+                HULL.mix(HULL_MIX).filled(),
             ))?;
         } else {
             for (a, b) in pieces {
@@ -305,27 +295,7 @@ fn draw_legend<DB: DrawingBackend>(
         }
         area.draw(&Text::new(label, (x + 22, y), style.clone()))?;
     }
-    // The note in a row of its own under the entries, from the first column's left edge.
-    let rows = (entries.len() as i32 + columns - 1) / columns;
-    area.draw(&Text::new(note, (5, 11 + rows * LEGEND_ROW), style))?;
     Ok(())
-}
-
-/// The legend's note on the boxes' outset ([`OUTSET`] units, in printed points: 4 across two
-/// columns, 3.2 in one).
-fn outset_note(single: bool) -> String {
-    let column = if single {
-        Column::Single
-    } else {
-        Column::Double
-    };
-    let pt = OUTSET * column.points_per_unit();
-    let pt = if pt.fract() == 0.0 {
-        format!("{pt:.0}")
-    } else {
-        format!("{pt:.1}")
-    };
-    format!("Both boxes drawn {pt}\u{a0}pt outside their outlines.")
 }
 
 impl Figure for Fig3 {
@@ -346,14 +316,13 @@ impl Figure for Fig3 {
             format!(
                 "Martin & Tan 2004, Figs. 3 and 4: T of the 80{nb}% rule (δ{nb}={nb}{FOCUS}), \
                  n{nb}={nb}{}, f{nb}={nb}{}, θ{nb}={nb}{}°, light {}° up, {}° round from behind \
-                 to the right; boxes drawn {:.1}{nb}pt outside. C covers {} of T's map (b), {} \
-                 of B's (c).",
+                 to the right; B the smallest (rotated) box, as in the paper. C covers {} of \
+                 T's map (b), {} of B's (c).",
                 VIEW.0,
                 VIEW.1,
                 VIEW.2,
                 LIGHT.0,
                 LIGHT.1,
-                OUTSET * Column::Single.points_per_unit(),
                 pct(self.covered_t),
                 pct(self.covered_o),
             )
@@ -362,9 +331,10 @@ impl Figure for Fig3 {
                 "Martin & Tan 2004, Figs. 3 and 4: the 80{nb}% rule's trapezoid T \
                  (δ{nb}={nb}{FOCUS}), n{nb}={nb}{}, f{nb}={nb}{}, θ{nb}={nb}{}°, light {}° \
                  high, {}° round from behind to the viewer's right; the inset of{nb}(a) \
-                 enlarges the focus region at the apex; boxes drawn {OUTSET} pt outside. Unlike the \
-                 paper, B may be rotated (§5; dotted: unrotated). C covers {} of the map in T's \
-                 space (b), {} in B's (c), {} unrotated.",
+                 enlarges the focus region at the apex. As in the paper (its §3 and §5), B is \
+                 the smallest bounding box, so rotated; dotted: the axis-aligned box, for \
+                 comparison. Map coordinates s, t on [0,{nb}1]. C covers {} of the map in T's \
+                 space (b), {} in B's (c), {} in the axis-aligned box's.",
                 VIEW.0,
                 VIEW.1,
                 VIEW.2,
@@ -386,9 +356,7 @@ impl Figure for Fig3 {
         // past its data (review 3: (b) and (c) ran from −1.9 to 2 for a map on [−1, 1]).
         let (_, bh) = body.dim_in_pixel();
         let (columns, rows) = if single { (2, 3) } else { (3, 2) };
-        // One row more under the entries: the note that the boxes are drawn outside, so that the
-        // bare figure says it too (figure review 4: only the caption did).
-        let (upper, strip) = body.split_vertically(bh.saturating_sub(legend_h(rows + 1)));
+        let (upper, strip) = body.split_vertically(bh.saturating_sub(legend_h(rows)));
         let style = if single {
             ChartStyle {
                 y_label_area: 46,
@@ -416,9 +384,10 @@ impl Figure for Fig3 {
             style
         };
         let b_h = (uh + b_style.x_label_area - style.x_label_area) / 2;
+        // The map on [0, 1]², as in every figure (it was [−1, 1]², the fifth review, X4).
         let square = (
-            Axis::linear("map s", -1.1, 1.1),
-            Axis::linear("map t", -1.1, 1.1),
+            Axis::linear("map s", -0.05, 1.05),
+            Axis::linear("map t", -0.05, 1.05),
         );
         let titles = if single {
             ["(b) T's space", "(c) B's space"]
@@ -447,13 +416,12 @@ impl Figure for Fig3 {
             .iter()
             .fold(DVec2::splat(f64::NEG_INFINITY), |a, &p| a.max(p));
         let title = "(a) seen from the light";
-        // The data's margin: 4 % of its extent, and the boxes' outset (a corner of a tilted
-        // box moves out by up to √2 of it) at the scale of the page.
-        let margin = |per_unit: f64| 0.04 * (hi - lo).max_element() + 1.5 * OUTSET / per_unit;
+        // The data's margin: 4 % of its extent and 3 units of the page (the lines' width).
+        let margin = |per_unit: f64| 0.04 * (hi - lo).max_element() + 3.0 / per_unit;
         let axes = |half_x: f64, (y_lo, y_hi): (f64, f64)| {
             (
                 Axis::linear(X_LABEL, -half_x, half_x),
-                Axis::linear("light z (T's axis)", y_lo, y_hi),
+                Axis::linear("light-view y", y_lo, y_hi),
             )
         };
         let (mut half_x, mut y_range) = (lo.x.abs().max(hi.x.abs()), (lo.y, hi.y));
@@ -492,7 +460,6 @@ impl Figure for Fig3 {
         let xa = xa.labelled_at(&data_ticks);
         let mut chart = build_chart_styled(&top, title, &xa, &ya, false, &a_style)?;
         self.draw_contents(&mut chart, |p| p)?;
-        outline(&mut chart, &self.trapezoid, TRAP, Stroke::Solid)?;
         // Units per light-space unit (equal aspect: the same along both axes).
         // Measured across the whole axis: one light-space unit is under one unit of the page in
         // one column, where whole pixels would round it to 0 or 1.
@@ -501,13 +468,17 @@ impl Figure for Fig3 {
             .abs()
             .max(1.0)
             / (x1 - x0);
-        let d = OUTSET / unit;
-        outline(&mut chart, &outset(&self.obox, d), MIN_BOX, Stroke::Dashed)?;
+        // The boxes at their true outlines, whatever the figure's scale (the fifth review: drawn
+        // 4 units outside, true only at the page's size). The axis-aligned box first, under T,
+        // which closes it where their sides meet; B last, over T: where B's side lies on T's,
+        // its dashes alternate olive with T's black between them.
         let (b0, b1) = self.bbox;
         let axis_box = [b0, DVec2::new(b1.x, b0.y), b1, DVec2::new(b0.x, b1.y)];
-        outline(&mut chart, &outset(&axis_box, d), AXIS_BOX, Stroke::Dotted)?;
+        outline(&mut chart, &axis_box, AXIS_BOX, Stroke::Dotted)?;
+        outline(&mut chart, &self.trapezoid, TRAP, Stroke::Solid)?;
+        outline(&mut chart, &self.obox, MIN_BOX, Stroke::Dashed)?;
         self.draw_inset(&top, &chart, unit)?;
-        draw_legend(&strip, columns, &outset_note(single))?;
+        draw_legend(&strip, columns)?;
         // (b), (c): the two normalised spaces; the map square in the colour of its shape.
         for (panel, h, title, colour, stroke, st) in [
             (&b_area, self.n_t, titles[0], TRAP, Stroke::Solid, &b_style),
@@ -521,26 +492,67 @@ impl Figure for Fig3 {
             ),
         ] {
             let (ax, ay) = equal_aspect(panel, title, &square.0, &square.1, st)?;
-            // The map's ends and centre only: its square is 1.1 units across the page.
-            let ends = [-1.0, 0.0, 1.0];
+            // The map's ends and centre only.
+            let ends = [0.0, 0.5, 1.0];
             let (ax, ay) = (ax.labelled_at(&ends), ay.labelled_at(&ends));
             let mut chart = build_chart_styled(panel, title, &ax, &ay, false, st)?;
+            let h = TO_UNIT * h;
             self.draw_contents(&mut chart, |p| through(&h, p))?;
             let square: Vec<DVec2> = UNIT_SQUARE[..4]
                 .iter()
-                .map(|&(x, y)| DVec2::new(x, y))
+                .map(|&(x, y)| through(&TO_UNIT, DVec2::new(x, y)))
                 .collect();
             outline(&mut chart, &square, colour, stroke)?;
+            if colour == MIN_BOX {
+                self.point_to_focus(&mut chart, &h)?;
+            }
         }
         Ok(())
     }
 }
 
+/// [−1, 1]² onto the map's [0, 1]²: s = (x + 1)/2, t = (y + 1)/2.
+const TO_UNIT: DMat3 = DMat3::from_cols_array(&[0.5, 0.0, 0.0, 0.0, 0.5, 0.0, 0.5, 0.5, 1.0]);
+
+impl Fig3 {
+    /// In (c), where the focus region is a sliver in the map's corner: its name, on a white
+    /// box in the empty corner of the map over it, joined to the sliver's centre by a leader
+    /// (the fifth review: about 4 pixels, unmarked). `h` carries light space into the map.
+    fn point_to_focus<DB: DrawingBackend>(
+        &self,
+        chart: &mut super::chart::Chart2d<'_, DB>,
+        h: &DMat3,
+    ) -> Result<(), Fail> {
+        let focus: Vec<DVec2> = self.focus.iter().map(|&p| through(h, p)).collect();
+        let mid = focus.iter().copied().sum::<DVec2>() / focus.len() as f64;
+        let at = FOCUS_LABEL_AT;
+        chart.draw_series(LineSeries::new(
+            [(mid.x, mid.y), (at.0 + 0.04, at.1 - 0.04)],
+            LEADER.stroke_width(1),
+        ))?;
+        super::chart::boxed_text(
+            chart,
+            at,
+            "focus",
+            Pos::new(HPos::Left, VPos::Bottom),
+            13,
+            FOCUS_C,
+        )
+    }
+}
+
+/// The leader's grey (the inset's frame and connecting lines are drawn in it too).
+const LEADER: RGBColor = RGBColor(90, 90, 90);
+
+/// Where (c) names the focus region: the left end of the word's baseline, in map units.
+const FOCUS_LABEL_AT: (f64, f64) = (0.03, 0.45);
+
 /// The one-column figure's height: at most 525 units (420 points printed 240 wide).
 const SINGLE_H: u32 = 480;
 
-/// The x axis of (a): the light's −x, as the light sees the scene.
-const X_LABEL: &str = "−x in light space";
+/// The x axis of (a): the light's −x, to the right as the light sees the scene (named as in
+/// every figure; its vertical partner is "light-view y").
+const X_LABEL: &str = "light-view x";
 
 /// The least room under the apex in (a) for the inset, as a share of the data's height.
 const INSET_ROOM: f64 = 0.3;
@@ -651,7 +663,7 @@ impl Fig3 {
         let hull_xy: Vec<(f64, f64)> = hull_pts.iter().map(|p| (p.x, p.y)).collect();
         zoom.draw_series(std::iter::once(Polygon::new(
             hull_xy,
-            HULL.mix(0.45).filled(),
+            HULL.mix(HULL_MIX).filled(),
         )))?;
         for (corners, colour, width) in [(&self.eye, EDGE, 1), (&self.focus, FOCUS_C, 2)] {
             for (a, b) in EDGES {
@@ -697,7 +709,10 @@ impl Fig3 {
                 (q.x, q.y)
             })
             .collect();
-        chart.draw_series(std::iter::once(Polygon::new(poly, HULL.mix(0.45).filled())))?;
+        chart.draw_series(std::iter::once(Polygon::new(
+            poly,
+            HULL.mix(HULL_MIX).filled(),
+        )))?;
         for (corners, colour, width) in [(&self.eye, EDGE, 1), (&self.focus, FOCUS_C, 2)] {
             for (a, b) in EDGES {
                 let (p, q) = (f(corners[a]), f(corners[b]));

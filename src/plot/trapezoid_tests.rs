@@ -222,7 +222,7 @@ fn panel_a_is_not_mirrored() {
 /// Figure review 3, in all three forms: the inset's label states its enlargement as drawn (the
 /// inset's frame over the width of the window it shows in (a), both read back from the SVG),
 /// the focus region is a 2-unit dark line (not a thin pink one on the light hull), the x axis
-/// reads "−x in light space" (not "light −x"), and one column is at most 525 units tall.
+/// reads "light-view x" (not "light −x"), and one column is at most 525 units tall.
 #[test]
 fn inset_label_is_its_drawn_enlargement_and_one_column_fits() {
     use super::super::chart::read_svg::{draw_svg, texts};
@@ -268,7 +268,7 @@ fn inset_label_is_its_drawn_enlargement_and_one_column_fits() {
             "{column:?}: labelled ×{said}, drawn {drawn:.2}×"
         );
         assert!(said >= 2.0, "{column:?}: ×{said} enlarges too little");
-        assert!(all.iter().any(|t| t == "−x in light space"), "{all:?}");
+        assert!(all.iter().any(|t| t == "light-view x"), "{all:?}");
         assert!(!all.iter().any(|t| t.contains("light −x")), "{all:?}");
         let focus: Vec<&str> = svg
             .lines()
@@ -283,5 +283,98 @@ fn inset_label_is_its_drawn_enlargement_and_one_column_fits() {
             focus.iter().all(|l| num(l, "stroke-width") == 2.0),
             "{column:?}"
         );
+    }
+}
+
+/// The fifth review, read back from the SVG in both layouts: the maps (b) and (c) run over
+/// s, t ∈ [0, 1] as in every figure (labelled 0, 0.5, 1; they were [−1, 1]); (c) names the
+/// focus region, a sliver in the map's corner, with "focus" joined by a grey leader (#5A5A5A,
+/// 1 unit) whose one end lies on the sliver's drawn edges (the wine #882255, within 4 units of a corner)
+/// and whose other end is within 8 units of the word; and the hull C's fill is no scheme's
+/// blue: its hue at least 90° from PSM/ZP's (#0072B2, hue 201°; the sky blue it was, 202°).
+#[test]
+fn maps_on_the_unit_square_focus_pointed_to_and_hull_not_blue() {
+    use super::super::chart::read_svg::{attr, draw_svg, texts};
+    use super::super::chart::with_page;
+    let hue = |hex: &str| -> f64 {
+        let c: Vec<f64> = (0..3)
+            .map(|i| f64::from(u8::from_str_radix(&hex[1 + 2 * i..3 + 2 * i], 16).unwrap()))
+            .collect();
+        let (mx, mn) = (
+            c.iter().copied().fold(0.0, f64::max),
+            c.iter().copied().fold(255.0, f64::min),
+        );
+        let d = mx - mn;
+        assert!(d > 0.0, "{hex} is grey");
+        let h = if mx == c[0] {
+            ((c[1] - c[2]) / d).rem_euclid(6.0)
+        } else if mx == c[1] {
+            (c[2] - c[0]) / d + 2.0
+        } else {
+            (c[0] - c[1]) / d + 4.0
+        };
+        60.0 * h
+    };
+    assert!((hue("#0072B2") - 201.5).abs() < 0.5);
+    let fig = fig3().map_err(|e| e.named("martin-tan-fig3")).unwrap();
+    for column in [Column::Double, Column::Single] {
+        let size = match column {
+            Column::Double => fig.size(),
+            Column::Single => fig.single_size().unwrap(),
+        };
+        let svg = with_page(false, column, || {
+            draw_svg(size, |area| fig.draw(area).unwrap())
+        });
+        let all = texts(&svg);
+        let has = |t: &str| all.iter().filter(|x| x.1 == t).count();
+        assert!(has("0.5") >= 3, "{column:?}: {} labels 0.5", has("0.5"));
+        assert_eq!(has("−1"), 0, "{column:?}");
+        let points = |l: &str| -> Vec<(f64, f64)> {
+            let at = l.find("points=\"").unwrap() + 8;
+            l[at..at + l[at..].find('"').unwrap()]
+                .split(' ')
+                .filter_map(|p| p.split_once(','))
+                .map(|(x, y)| (x.parse().unwrap(), y.parse().unwrap()))
+                .collect()
+        };
+        let word = all.iter().find(|x| x.1 == "focus").expect("no \"focus\"");
+        let (wx, wy) = (attr(word.0, "x").unwrap(), attr(word.0, "y").unwrap());
+        let wine: Vec<(f64, f64)> = svg
+            .lines()
+            .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#882255\""))
+            .flat_map(points)
+            .collect();
+        let leaders: Vec<Vec<(f64, f64)>> = svg
+            .lines()
+            .filter(|l| {
+                l.starts_with("<polyline")
+                    && l.contains("stroke=\"#5A5A5A\"")
+                    && l.contains("stroke-width=\"1\"")
+            })
+            .map(points)
+            .filter(|p| p.len() == 2)
+            .collect();
+        let near = |p: (f64, f64), q: (f64, f64), d: f64| (p.0 - q.0).hypot(p.1 - q.1) <= d;
+        assert!(
+            leaders.iter().any(|l| {
+                let (a, b) = (l[0], l[1]);
+                wine.iter().any(|&w| near(a, w, 4.0)) && near(b, (wx, wy), 8.0)
+            }),
+            "{column:?}: no leader from the focus region to the word at ({wx}, {wy})"
+        );
+        // The hull: the filled polygons in its colour (panel (a), the inset, (b), (c)).
+        let fills: Vec<&str> = svg
+            .lines()
+            .filter(|l| l.starts_with("<polygon") && l.contains("opacity=\"0.45\""))
+            .filter_map(|l| {
+                let at = l.find("fill=\"").unwrap() + 6;
+                l.get(at..at + 7)
+            })
+            .collect();
+        assert!(fills.len() >= 4, "{column:?}: {fills:?}");
+        for f in fills {
+            let apart = (hue(f) - hue("#0072B2")).abs();
+            assert!(apart.min(360.0 - apart) >= 90.0, "{column:?}: hull {f}");
+        }
     }
 }

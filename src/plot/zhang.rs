@@ -143,7 +143,8 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     let caption = format!(
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
          view θ\u{a0}=\u{a0}{phi:.0}° (Zhang's φ); light above and in front at \
-         γ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). The factor 2: Zhang's screen \
+         γ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). E_p, E_q: the aliasing along \
+         the screen's vertical and horizontal; the factor 2: Zhang's screen \
          and map span [−1,\u{a0}1]. LiSPSM's warp parameter \
          n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
          80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper, a bar per quantity, \
@@ -154,8 +155,9 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     let single_caption = format!(
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
          view θ\u{a0}=\u{a0}{phi:.0}°; light above and in front at γ\u{a0}=\u{a0}{} from the \
-         view direction. The factor 2: Zhang's screen and map span [−1,\u{a0}1]. TSM: \
-         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}.",
+         view direction. E_p, E_q: the aliasing along the screen's vertical and \
+         horizontal (factor 2: Zhang's screen and map span [−1,\u{a0}1]). TSM: 80\u{a0}% rule, \
+         δ\u{a0}=\u{a0}{TSM_FOCUS}. Heights y drawn at half the scale of depths z.",
         angles.join(", "),
     );
     Ok(Fig3 {
@@ -193,6 +195,8 @@ fn fmt_lambda(n: NPrime) -> String {
 /// between panels across and between rows, between blocks, each block's title and the
 /// schemes' headings, and the colour bar under each block (two columns) or beside it (one).
 const ROW_LABEL: u32 = 46;
+/// The turned name of the height's axis, left of the row labels' column, in both layouts.
+const Y_NAME: u32 = 15;
 const X_LABELS: u32 = 33;
 const GAP: u32 = 4;
 /// Rows 10 units apart: at 4 one row's "−40" and the next one's "40" touched.
@@ -218,12 +222,12 @@ const TEXT: u32 = 13;
 
 /// The page's size: three blocks of 3 × 3 panels side by side (landscape drawing), the caption
 /// under them; as tall as the blocks, their bars and the caption need.
-pub(super) const SIZE: (u32, u32) = (520, 440);
+pub(super) const SIZE: (u32, u32) = (520, 462);
 
 /// A double-column panel's width: the body (the page less 6 units each side) less the left
 /// strips, the gaps, shared by nine panels.
 const fn double_panel_w() -> u32 {
-    (SIZE.0 - 12 - ROW_LABEL - 6 * GAP - 2 * BLOCK_GAP) / 9
+    (SIZE.0 - 12 - Y_NAME - ROW_LABEL - 6 * GAP - 2 * BLOCK_GAP) / 9
 }
 
 /// The depth axis's ticks (0, 50 and 100, the near plane at 1 and the far plane at 100) and
@@ -389,7 +393,7 @@ impl Fig3 {
         let style = TextStyle::from((FONT, TEXT).into_font());
         for (q, (name, scale)) in BLOCK_NAMES.iter().zip(&self.scales).enumerate() {
             let b = Block {
-                x: ROW_LABEL + q as u32 * (3 * pw + 2 * GAP + BLOCK_GAP),
+                x: Y_NAME + ROW_LABEL + q as u32 * (3 * pw + 2 * GAP + BLOCK_GAP),
                 top: BLOCK_TITLE + HEADINGS,
                 pw,
                 ph,
@@ -403,11 +407,7 @@ impl Fig3 {
             ))?;
             self.draw_headings(body, b, b.top - 2)?;
             if q == 0 {
-                body.draw(&Text::new(
-                    "height y",
-                    (b.x as i32 - 2, (b.top - 2) as i32),
-                    style.pos(Pos::new(HPos::Right, VPos::Bottom)),
-                ))?;
+                draw_height_name(body, "height y", b)?;
             }
             let row_label = if q == 0 { ROW_LABEL } else { 0 };
             self.draw_block(
@@ -434,16 +434,23 @@ impl Fig3 {
     /// their heights are drawn at about half the scale of their depths (the y ticks say so).
     fn draw_single<DB: DrawingBackend>(&self, body: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
         let (w, h) = body.dim_in_pixel();
-        let pw = (w.saturating_sub(ROW_LABEL_1 + 2 * GAP_1 + VBAR + 4)) / 3;
+        let pw = (w.saturating_sub(Y_NAME + ROW_LABEL_1 + 2 * GAP_1 + VBAR + 4)) / 3;
         let fixed = HEADINGS + 3 * (BLOCK_TITLE_1 + 2 * ROW_GAP_1) + 2 * BLOCK_GAP_1 + X_LABELS;
-        let ph = h.saturating_sub(fixed) / 9;
-        // The frustum's height ±57.7 within ±58.85, as in two columns.
+        // Heights at exactly half the scale of depths (the caption and the axis' name say so;
+        // the fifth review: "about half", unstated): the panel half as high as to scale, or
+        // lower where the page has not the room.
+        let ph = ((f64::from(pw) * PANEL_RATIO * HEIGHT_SCALE).round() as u32)
+            .min(h.saturating_sub(fixed) / 9);
+        // Where the page's height, not the width, sets the panels: as wide as half scale asks.
+        let pw = pw.min((f64::from(ph) / (PANEL_RATIO * HEIGHT_SCALE)).round() as u32);
+        // The frustum's height ±57.7 within ±58.85, as in two columns, over a panel drawn at
+        // ph / (pw · PANEL_RATIO) of the depth's scale.
         let half = 0.5 * 110.0 * PANEL_RATIO;
         let style = TextStyle::from((FONT, TEXT).into_font());
         let pitch = BLOCK_TITLE_1 + 3 * ph + 2 * ROW_GAP_1 + BLOCK_GAP_1;
         for (q, (name, scale)) in BLOCK_NAMES.iter().zip(&self.scales).enumerate() {
             let b = Block {
-                x: ROW_LABEL_1,
+                x: Y_NAME + ROW_LABEL_1,
                 top: HEADINGS + q as u32 * pitch + BLOCK_TITLE_1,
                 pw,
                 ph,
@@ -452,14 +459,12 @@ impl Fig3 {
             };
             if q == 0 {
                 self.draw_headings(body, b, HEADINGS - 2)?;
-                // The row labels' column: γ turned, then the height's ticks.
-                for (text, x) in [("γ", 7), ("y", ROW_LABEL_1 as i32 - 12)] {
-                    body.draw(&Text::new(
-                        text,
-                        (x, HEADINGS as i32 - 2),
-                        style.pos(Pos::new(HPos::Center, VPos::Bottom)),
-                    ))?;
-                }
+                // The row labels' column: γ turned over its values.
+                body.draw(&Text::new(
+                    "γ",
+                    ((Y_NAME + 7) as i32, HEADINGS as i32 - 2),
+                    style.pos(Pos::new(HPos::Center, VPos::Bottom)),
+                ))?;
             }
             body.draw(&Text::new(
                 *name,
@@ -469,6 +474,9 @@ impl Fig3 {
                 ),
                 style.pos(Pos::new(HPos::Center, VPos::Top)),
             ))?;
+            if q == 1 {
+                draw_height_name(body, "height y (½ scale)", b)?;
+            }
             let last = q + 1 == self.scales.len();
             let under: &[usize] = if last { &[0, 1, 2] } else { &[] };
             self.draw_block(
@@ -485,10 +493,40 @@ impl Fig3 {
                 (w - VBAR, b.top.saturating_sub(30)),
                 (VBAR, b.height() + 60),
             );
-            draw_colour_bar(&bar, scale)?;
+            // Named without "(log scale)" (its powers of ten say it): the turned names of the
+            // lower blocks' bars, as long as their rows with heights at half scale, ran together.
+            let mut scale = scale.clone();
+            scale.axis.label = QUANTITIES[q].to_string();
+            draw_colour_bar(&bar, &scale)?;
         }
         Ok(())
     }
+}
+
+/// The one-column page's height, in units (420 pt printed, the cap): the panels' rows at
+/// [`HEIGHT_SCALE`] and the caption's seven lines.
+const SINGLE_H: u32 = 525;
+
+/// The share of the depth's scale at which one column draws heights: one half.
+const HEIGHT_SCALE: f64 = 0.5;
+
+/// The height's axis name `name`, turned (reading upwards), in the [`Y_NAME`] strip at the
+/// page's left, centred on the rows of block `b` (the fifth review: "height y" stood in the
+/// row of scheme names, read as a column heading).
+fn draw_height_name<DB: DrawingBackend>(
+    body: &DrawingArea<DB, Shift>,
+    name: &str,
+    b: Block,
+) -> Result<(), Fail> {
+    let style = TextStyle::from((FONT, TEXT).into_font())
+        .transform(FontTransform::Rotate270)
+        .pos(Pos::new(HPos::Center, VPos::Center));
+    body.draw(&Text::new(
+        name.to_string(),
+        ((Y_NAME / 2) as i32 - 2, (b.top + b.height() / 2) as i32),
+        style,
+    ))?;
+    Ok(())
 }
 
 /// The blocks' titles.
@@ -501,7 +539,7 @@ impl Figure for Fig3 {
 
     /// One column: the three blocks stacked.
     fn single_size(&self) -> Option<(u32, u32)> {
-        Some((Column::Single.width(), 524))
+        Some((Column::Single.width(), SINGLE_H))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
@@ -527,245 +565,5 @@ impl Figure for Fig3 {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::analytic::global::{zhang_ep, zhang_eq};
-    use crate::LightAngle;
-
-    /// The measured side view at γ = 90° and 60° (LiSPSM row) equals Zhang's global
-    /// representation (Eq 13, 14 with the corrected Appendix, `analytic::global`) at every
-    /// cell centre inside the frustum; E_p × E_q is their product.
-    /// A horizontal colour bar is one embedded image (abutting rectangles left seams, issue
-    /// 25), its lowest band at the left and its highest at the right.
-    #[test]
-    fn colour_bar_is_one_seamless_raster() {
-        use super::super::chart::read_svg::{draw_svg, embedded_images};
-        use super::super::chart::SMOOTH_LEVELS;
-        let scale = ColourScale::smooth(Axis::log10("E", 2.0, 16400.0));
-        let svg = draw_svg((160, BAR), |area| {
-            draw_colour_bar_across(area, &scale).unwrap()
-        });
-        assert!(!svg
-            .lines()
-            .any(|l| l.starts_with("<rect") && !l.contains("fill=\"none\"")));
-        let images = embedded_images(&svg);
-        assert_eq!(images.len(), 1);
-        let img = &images[0].rgba;
-        let (w, h) = img.dimensions();
-        let at = |x: u32| {
-            let p = img.get_pixel(x, h / 2).0;
-            RGBColor(p[0], p[1], p[2])
-        };
-        assert_eq!(at(0), scale.level_colour(0));
-        assert_eq!(at(w - 1), scale.level_colour(SMOOTH_LEVELS - 1));
-    }
-
-    /// The depth axis under each block's first column reads 0 and 100 (the far plane f, review:
-    /// "0, 50" left f unreadable), "0" centred on its tick and "100" ending at the panel's right
-    /// edge (centred, it ran under the next panel); the height has its axis title, "height y",
-    /// once; every row's first panel of (a) has a y scale, −40, 0, 40; and rows are apart: a
-    /// row's "−40" and the next row's "40" (13 units tall) keep at least 9 units between them
-    /// (review: about 4 pt, touching).
-    #[test]
-    fn depth_reads_0_to_100_the_height_is_named_and_rows_are_apart() {
-        use super::super::chart::read_svg::{attr, draw_svg, texts};
-        let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
-        let svg = draw_svg(SIZE, |area| fig.draw(area).unwrap());
-        let all = texts(&svg);
-        let named = |t: &str| all.iter().filter(|x| x.1 == t).count();
-        assert_eq!(named("z (eye depth)"), 3);
-        assert_eq!(named("height y"), 1);
-        assert_eq!(named("50"), 0);
-        // The panels' grey frames (n to f across): their right edges.
-        let frames: Vec<f64> = svg
-            .lines()
-            .filter(|l| l.starts_with("<rect") && l.contains("stroke=\"#969696\""))
-            .map(|l| attr(l, "x").unwrap() + attr(l, "width").unwrap())
-            .collect();
-        assert_eq!(frames.len(), 27);
-        // The depth's "100", not a bar's 10⁰ (read as 100 with its raised 0).
-        let hundreds: Vec<&(&str, String, f64)> = all
-            .iter()
-            .filter(|x| x.1 == "100" && !x.0.contains("<tspan"))
-            .collect();
-        assert_eq!(hundreds.len(), 3, "{hundreds:?}");
-        for (line, _, _) in hundreds {
-            assert!(line.contains("text-anchor=\"end\""), "{line}");
-            let x = attr(line, "x").unwrap();
-            assert!(
-                frames.iter().any(|r| (x - r).abs() <= 2.0),
-                "\"100\" ends at {x}, no frame edge there: {frames:?}"
-            );
-        }
-        assert!(named("0") >= 3 + 3);
-        // The y scale: in the first block's rows, by height.
-        let at = |t: &str| -> Vec<f64> {
-            let mut v: Vec<f64> = all.iter().filter(|x| x.1 == t).map(|x| x.2).collect();
-            v.sort_by(f64::total_cmp);
-            v
-        };
-        let (top, bottom) = (at("40"), at("−40"));
-        assert_eq!((top.len(), bottom.len()), (3, 3), "{top:?} {bottom:?}");
-        for r in 0..2 {
-            // A tick label's y is its middle: the next row's "40" at least 22 units under this
-            // row's "−40", their 13-unit boxes 9 apart (with rows 4 units apart, 18.7 and 5.7).
-            assert!(top[r + 1] - bottom[r] >= 22.0, "{top:?} {bottom:?}");
-        }
-    }
-
-    /// The colour bars are ticked at whole powers of ten, in both layouts (review X3: they
-    /// read 0.04, 1, 25 and 1, 125, 15625, powers of 5), and each bar's range holds every
-    /// value of its nine panels, its ends whole decades (review: SSM's E_p at the apex,
-    /// (f − n)/(n tan φ) = 99/tan 30° = 171.5 by Zhang's Eq 9, stood above the top tick of
-    /// (a)'s bar, its end unlabelled): read back from both SVGs, every number written is a
-    /// power of ten 10<sup>n</sup> or one of the axes' 0, ±40 (two columns), ±30 (one), 100;
-    /// E_p's bar reaches 10³ ≥ 171.5.
-    #[test]
-    fn colour_bars_are_ticked_at_powers_of_ten_and_hold_every_value() {
-        use super::super::chart::read_svg::texts;
-        let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
-        for (q, scale) in fig.scales.iter().enumerate() {
-            let (lo, hi) = scale.axis.range();
-            let whole = |a: f64| (a - a.round()).abs() < 1e-9;
-            assert!(whole(lo) && whole(hi), "{q}: {lo} {hi}");
-            for row in &fig.rows {
-                for scheme in row {
-                    for v in scheme[q].grid.values.iter().flatten() {
-                        let a = v.log10();
-                        assert!(a >= lo - 1e-9 && a <= hi + 1e-9, "{q}: {v} outside");
-                    }
-                }
-            }
-        }
-        let apex = 99.0 / 30f64.to_radians().tan();
-        assert!((apex - 171.47).abs() < 0.01);
-        assert!(10f64.powf(fig.scales[0].axis.range().1) >= apex);
-        for column in [Column::Double, Column::Single] {
-            let svg = super::super::hemisphere::svg_in(&fig, column);
-            let mut powers = 0;
-            for (line, text, _) in texts(&svg) {
-                if !text.chars().any(|c| c.is_ascii_digit())
-                    || text.chars().any(|c| c.is_alphabetic() || c == '°')
-                {
-                    continue;
-                }
-                if line.contains(">10<tspan dy=\"-") {
-                    let exp = text.trim_start_matches("10").replace('−', "-");
-                    assert!(exp.parse::<i32>().is_ok(), "{column:?}: {text}");
-                    powers += 1;
-                } else {
-                    assert!(
-                        ["0", "40", "−40", "30", "−30", "100"].contains(&text.as_str()),
-                        "{column:?}: {text} is no power of ten"
-                    );
-                }
-            }
-            assert!(powers >= 9, "{column:?}: {powers} powers of ten");
-        }
-    }
-
-    /// One column keeps the text of the other figures' one-column forms (review X9: the angle
-    /// and "z (eye depth)" were 8.871 units, 7.1 pt printed, against 10.48, 8.4 pt): read from
-    /// its SVG, no text of the figure is set smaller than 10.48 units but its sub- and
-    /// superscripts; the captions give the light–view angle's values as γ, the crate's symbol
-    /// (the fourth review: Zhang's θ clashed with the other figures' half field of view θ),
-    /// and say what θ is (X2); the two-column one names Zhang's symbols and defines the n′ it
-    /// prints (review: λ undefined), and both explain the factor 2 of E_p = 2 m_z.
-    #[test]
-    fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
-        use super::super::chart::read_svg::attr;
-        let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
-        let svg = super::super::hemisphere::svg_in(&fig, Column::Single);
-        let smallest = svg
-            .lines()
-            .filter(|l| l.starts_with("<text"))
-            .filter_map(|l| attr(l, "font-size"))
-            .fold(f64::INFINITY, f64::min);
-        assert!(smallest >= 10.48, "{smallest}");
-        for c in [&fig.caption, &fig.single_caption] {
-            assert!(
-                c.contains("γ\u{a0}=\u{a0}90°, 60°, 30° from the view direction"),
-                "{c}"
-            );
-            assert!(c.contains("half field of view θ\u{a0}=\u{a0}30°"), "{c}");
-            assert!(c.contains("span [−1,\u{a0}1]"), "{c}");
-            assert!(!c.contains("π/6"), "{c}");
-            assert_eq!(
-                c.matches('θ').count(),
-                1 + c.matches("Zhang's θ").count(),
-                "{c}"
-            );
-        }
-        for symbol in [
-            "(Zhang's φ)",
-            "(Zhang's θ)",
-            "warp parameter n′",
-            "(Zhang's λ)",
-        ] {
-            assert!(fig.caption.contains(symbol), "{symbol}: {}", fig.caption);
-        }
-        assert_eq!(fig.caption.matches('λ').count(), 1, "{}", fig.caption);
-    }
-
-    #[test]
-    fn lispsm_cells_equal_zhangs_global_representation() {
-        let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
-        let view = ViewFrustum::new(1.0, 100.0, FRAC_PI_6).unwrap();
-        for (r, theta_deg) in [(0usize, 90.0f64), (1, 60.0)] {
-            let theta = LightAngle::new(theta_deg.to_radians()).unwrap();
-            // LiSPSM's n′ (Zhang's λ) = (n + √(fn))/sin γ.
-            let lambda = NPrime::finite(11.0 / theta_deg.to_radians().sin()).unwrap();
-            let panels = &fig.rows[r][1];
-            let g = &panels[0].grid;
-            let nx = g.x_edges.len() - 1;
-            let mut checked = 0;
-            for (k, v) in g.values.iter().enumerate() {
-                let Some(ep) = *v else { continue };
-                let (z, y) = g.sample_point(k % nx, k / nx).unwrap();
-                let want_p = zhang_ep(&view, lambda, theta, y, z).unwrap();
-                let want_q = zhang_eq(&view, lambda, theta, y, z).unwrap();
-                let eq = panels[1].grid.values[k].unwrap();
-                let epq = panels[2].grid.values[k].unwrap();
-                assert!(
-                    (ep - want_p).abs() < 1e-9 * want_p,
-                    "E_p at ({y}, {z}): {ep} vs {want_p}"
-                );
-                assert!(
-                    (eq - want_q).abs() < 1e-9 * want_q,
-                    "E_q at ({y}, {z}): {eq} vs {want_q}"
-                );
-                assert!((epq - ep * eq).abs() < 1e-12 * epq);
-                checked += 1;
-            }
-            assert!(checked > 1000, "{checked} cells");
-        }
-    }
-
-    /// The side views sample the near plane: the first column of cells is [n, n + 1] (99 cells
-    /// over [1, 100]), its (cut) cells are sampled inside it, where
-    /// the old grid over [0, f] first sampled z = 1.875; the cells along the slanted sides end
-    /// on the frustum's border |y| = z tan φ.
-    #[test]
-    fn side_view_cells_start_at_the_near_plane_and_follow_the_border() {
-        let t = FRAC_PI_6.tan();
-        let g = frustum_grid(1.0, 100.0, t);
-        assert_eq!(g.x_edges[0], 1.0);
-        let nx = g.x_edges.len() - 1;
-        let first: Vec<(f64, f64)> = (0..g.y_edges.len() - 1)
-            .filter_map(|j| g.sample_point(0, j))
-            .collect();
-        assert!(!first.is_empty());
-        for &(z, y) in &first {
-            assert!(z > 1.0 && z < 2.0, "z = {z}");
-            assert!(y.abs() <= z * t);
-        }
-        for j in 0..g.y_edges.len() - 1 {
-            for i in 0..nx {
-                let (poly, _) = g.cell(i, j);
-                for p in poly {
-                    assert!(p.1.abs() <= p.0 * t * (1.0 + 1e-12) + 1e-12, "{p:?}");
-                }
-            }
-        }
-    }
-}
+#[path = "zhang_tests.rs"]
+mod tests;

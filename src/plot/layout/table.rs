@@ -47,8 +47,8 @@ impl Fig8 {
                     minus(&c.label),
                     format!("{:.2}", c.mx),
                     format!("{:.2}", c.mz),
-                    format!("{:.0} % × {:.0} %", 100.0 * w, 100.0 * h),
-                    format!("{:.2} × {:.2}", c.mx / w, c.mz / h),
+                    format!("({:.0} %, {:.0} %)", 100.0 * w, 100.0 * h),
+                    format!("({:.2}, {:.2})", c.mx / w, c.mz / h),
                 ]
             })
             .collect()
@@ -105,7 +105,7 @@ impl Fig8 {
         };
         let key = format!(
             "R, L, T, N: right, left, top, near face; 1:\u{a0}{}, 2:\u{a0}{}. (d) error after allocation: \
-             M_x/w\u{a0}×\u{a0}M_z/h, for Eq\u{a0}6's shares w\u{a0}×\u{a0}h.",
+             (M_x/w,\u{a0}M_z/h), for Eq\u{a0}6's shares (w,\u{a0}h).",
             depths('1'),
             depths('2'),
         );
@@ -143,7 +143,7 @@ impl Fig8 {
             "face, depth",
             "M_x",
             "M_z",
-            "share w × h",
+            "share (w, h)",
             "error after",
         ];
         // One column writes the face and depths in its key.
@@ -202,7 +202,7 @@ impl Fig8 {
             top
         } else {
             let title =
-                "(d) Eq 6's shares w × h of the texture; error after allocation: M_x/w × M_z/h";
+                "(d) Eq 6's shares (w, h) of the texture; error after allocation (M_x/w, M_z/h)";
             area.draw(&Text::new(title, (left, top), text.clone()))?;
             top + step
         };
@@ -311,7 +311,7 @@ mod tests {
     /// w = (its largest M_x) / Σ (each column's largest M_x), so a part's M_x/w is
     /// M_x · Σ / (its column's largest), computed here without the viewports: Σ = 1.56 + 1.76 +
     /// 0.98 = 4.30 for the part with its column's largest M_x, less for the others (R1: 4.09);
-    /// and the header names it M_x/w × M_z/h.
+    /// and the header names it (M_x/w, M_z/h).
     #[test]
     fn table_after_is_the_sum_of_the_columns_m_x() {
         use crate::plot::chart::read_svg::{draw_svg, texts};
@@ -338,7 +338,11 @@ mod tests {
         let rows = fig.table_rows();
         assert_eq!(rows.len(), 7);
         for (r, c) in rows.iter().zip(&fig.cells) {
-            let printed: f64 = r[5].split(" × ").next().unwrap().parse().unwrap();
+            // Printed as a pair "(4.09, 2.40)", not "4.09 × 2.40" (the fifth review: read as a
+            // product).
+            let inner = r[5].strip_prefix('(').and_then(|p| p.strip_suffix(')'));
+            let (first, _) = inner.and_then(|p| p.split_once(", ")).expect(&r[5]);
+            let printed: f64 = first.parse().unwrap();
             let want = c.mx * sum / col_max[pair(&c.tag)];
             assert!((printed - want).abs() < 0.006, "{r:?} vs {want}");
         }
@@ -347,7 +351,7 @@ mod tests {
         assert!(
             texts(&svg)
                 .iter()
-                .any(|(_, t, _)| t.replace('_', "").ends_with("allocation: Mx/w × Mz/h")),
+                .any(|(_, t, _)| t.replace('_', "").ends_with("allocation (Mx/w, Mz/h)")),
             "{svg}"
         );
     }
