@@ -397,7 +397,10 @@ pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
     };
     let (left, top) = to_px((-1.0, 1.0));
     let (right, bottom) = to_px((1.0, -1.0));
-    Raster::sample((left - 1, top - 1, right + 1, bottom + 1), colour_at).draw(area)?;
+    // A key disk has no data: no (blank) raster for it.
+    if grid.values.iter().any(Option::is_some) {
+        Raster::sample((left - 1, top - 1, right + 1, bottom + 1), colour_at).draw(area)?;
+    }
     // Rings and the diameter at sub-unit positions (absolute backend units), so that they are
     // round, not stepped.
     let base = area.get_base_pixel();
