@@ -174,10 +174,11 @@ fn depth_width(narrow: bool) -> u32 {
     }
 }
 
-/// The shadow map's square [0, 1]² in panels (e)–(h): black like the frustum of (a)–(d) but half
-/// as wide, so that the key names the two apart (figure review 4: one key entry, "frustum, map's
-/// square", stood for both).
+/// The shadow map's square [0, 1]² in panels (e)–(h): half as wide as the frustum of (a)–(d), so
+/// that the key names the two apart (figure review 4: one key entry, "frustum, map's square",
+/// stood for both), and dark grey, not the frustum's black (figure review 5).
 const SQUARE_WIDTH: u32 = 1;
+const SQUARE_COLOUR: RGBColor = RGBColor(64, 64, 64);
 
 /// The rays from the eye in the map (panels (e)–(h)): dashed grey, so that in greyscale they
 /// differ from the planes of constant depth by more than their shade.
@@ -310,7 +311,7 @@ impl Fig4 {
         let mut chart = Self::equal_chart(area, title, (&u, &v), step, st)?;
         chart.draw_series(LineSeries::new(
             UNIT_SQUARE.map(st_of),
-            BLACK.stroke_width(SQUARE_WIDTH),
+            SQUARE_COLOUR.stroke_width(SQUARE_WIDTH),
         ))?;
         // The dash pattern in map units: the page's units per map unit, measured.
         let per_unit = f64::from(
@@ -503,7 +504,7 @@ fn key_items(narrow: bool) -> [(&'static str, RGBColor, u32, bool); 5] {
     [
         ("texel grid", GRID_COLOUR, 1, false),
         ("frustum", BLACK, 2, false),
-        ("map's square", BLACK, SQUARE_WIDTH, false),
+        ("map's square", SQUARE_COLOUR, SQUARE_WIDTH, false),
         ("constant depth", DEPTH_COLOUR, depth_width(narrow), false),
         ("ray from the eye", RAY_COLOUR, 1, true),
     ]
@@ -702,6 +703,10 @@ mod tests {
             let want = if column == Page::Double { 2.0 } else { 1.0 };
             assert_eq!(width_of("stroke=\"#3F007D\""), want);
             assert_eq!(width_of("stroke=\"#7B6DB4\""), 1.0);
+            // The map's square dark grey (#404040), not the frustum's black: one in each map
+            // panel and the key's sample (figure review 5).
+            assert_eq!(lines_of("stroke=\"#404040\""), panels + 1, "{column:?}");
+            assert_eq!(width_of("stroke=\"#404040\""), 1.0);
             let all: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
             // One key entry per kind of line (figure review 4: "frustum, map's square" was one
             // entry for two).
