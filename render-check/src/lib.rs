@@ -25,5 +25,6 @@ pub mod scene;
 pub mod schemes;
 pub mod self_test;
 pub mod shadows;
+pub mod snap;
 pub mod targets;
 pub mod warpfit;

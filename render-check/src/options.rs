@@ -40,6 +40,15 @@ pub struct Options {
     pub resolutions: Option<Vec<u32>>,
     /// `FrameInput::depth_clamp`: the map's depth covers B alone.
     pub depth_clamp: bool,
+    /// The camera's far plane moved here (`None`: the set-up's): far beyond the receivers, so
+    /// that B's depth range `[n_B, f_B]` ends well before the slice's far plane and the papers'
+    /// n′ ([`crate::paper_error::paper_n_prime`], at B's own n_B, f_B) differ from the n′ of
+    /// the slice's planes.
+    pub far: Option<f64>,
+    /// The image (width, height) of the case (`None`: the run's): a small image makes the
+    /// clipmap's level follow its LOD rule, not the coverage bound
+    /// ([`crate::geometry::clipmap_offset`]).
+    pub screen: Option<(u32, u32)>,
 }
 
 impl Options {
@@ -71,6 +80,14 @@ pub struct OptionCase {
     pub options: Options,
 }
 
+/// The far plane of the `receivers_inside_*` cases: the built-in scene's receivers (its ground
+/// drawn 260 units about the camera) end well before it.
+pub const RECEIVERS_INSIDE_FAR: f64 = 1000.0;
+
+/// The image of the `clipmap_lod_bound` case (80 × 60): at 1024² texels the clipmap's LOD rule,
+/// not the coverage bound, sets its level offset ([`crate::geometry::clipmap_offset`]).
+pub const LOD_SCREEN: (u32, u32) = (80, 60);
+
 /// Every option case the plain run measures.
 pub fn cases() -> Vec<OptionCase> {
     let case = |name, setup, scheme, options| OptionCase {
@@ -89,6 +106,14 @@ pub fn cases() -> Vec<OptionCase> {
     };
     let clamp = Options {
         depth_clamp: true,
+        ..Options::default()
+    };
+    let far = Options {
+        far: Some(RECEIVERS_INSIDE_FAR),
+        ..Options::default()
+    };
+    let small = Options {
+        screen: Some(LOD_SCREEN),
         ..Options::default()
     };
     vec![
@@ -160,6 +185,19 @@ pub fn cases() -> Vec<OptionCase> {
             clamp.clone(),
         ),
         case("depth_clamp_clipmap", "parallel_1", Scheme::Clipmap, clamp),
+        case(
+            "receivers_inside_lispsm",
+            "tilted_45",
+            Scheme::Lispsm,
+            far.clone(),
+        ),
+        case(
+            "receivers_inside_cascades",
+            "behind_5",
+            Scheme::Cascades,
+            far,
+        ),
+        case("clipmap_lod_bound", "overhead", Scheme::Clipmap, small),
     ]
 }
 
@@ -194,19 +232,24 @@ pub fn measure(
         .into_iter()
         .find(|s| s.name == case.setup)
         .ok_or_else(|| format!("option case {}: no set-up {}", case.name, case.setup))?;
-    let view = View::new(&s.scene.camera, s.scene.light(), width, height)?;
-    let res = s.scene.map_resolution;
+    let mut scene = s.scene;
+    if let Some(far) = case.options.far {
+        scene.camera.far = far;
+    }
+    let (width, height) = case.options.screen.unwrap_or((width, height));
+    let view = View::new(&scene.camera, scene.light(), width, height)?;
+    let res = scene.map_resolution;
     let built = build_with(
         case.scheme,
         &view,
-        &s.scene,
+        &scene,
         res,
         fault,
         ClipDepth::ZeroToOne,
         &case.options,
     )
     .map_err(|e| format!("option case {}: {e}", case.name))?;
-    Ok(summarise(case, &view, &s.scene, &built, height, res))
+    Ok(summarise(case, &view, &scene, &built, height, res))
 }
 
 /// The measurements of `built` (the case's frame, perhaps edited as a faulty crate would make

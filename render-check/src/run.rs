@@ -34,6 +34,9 @@ pub struct CaseSummary {
     pub shimmer_changed_fraction: Option<f64>,
     /// The shadow-edge points the shimmer test followed (cascade schemes).
     pub shimmer_points: Option<usize>,
+    /// How far fixed world points move between shimmer frames in each stable map from a whole
+    /// number of texels, the largest ([`crate::snap`]; stable cascades).
+    pub stable_grid_texels: Option<f64>,
     /// The records' clip-depth convention: "zero_to_one" or "reversed".
     pub clip_depth: &'static str,
     /// Each map's geometry against render-check's own reconstruction ([`crate::geometry`]).
@@ -278,6 +281,7 @@ pub fn run_case(
             measured: a.measured.clone(),
             shimmer_changed_fraction: None,
             shimmer_points: None,
+            stable_grid_texels: None,
             clip_depth: if sizes.render.clip_depth == ClipDepth::Reversed {
                 "reversed"
             } else {
@@ -297,7 +301,7 @@ pub fn run_case(
 /// The camera of shimmer frame `i`: translated by `i` sub-texel steps (0.37 of a texel of the
 /// first stable cascade, along a fixed horizontal direction) and turned by `i` × 0.05° about the
 /// vertical.
-fn moved(scene: &Scene, i: usize, step: f64) -> Scene {
+pub fn moved(scene: &Scene, i: usize, step: f64) -> Scene {
     let mut s = scene.clone();
     let c = &mut s.camera;
     let d = DVec3::new(1.0, 0.0, -0.6).normalize() * step * i as f64;
@@ -310,6 +314,20 @@ fn moved(scene: &Scene, i: usize, step: f64) -> Scene {
     s
 }
 
+/// The shimmer test's camera step ([`moved`]): 0.37 of a texel of the first stable cascade of
+/// `view` at `res` texels, 2 R res/(res − 2) / res for the first split's bounding sphere of
+/// radius R.
+///
+/// # Errors
+/// The splits or the sphere (the crate's error).
+pub fn shimmer_step(view: &View, res: u32) -> Result<f64, String> {
+    let sp = crate::schemes::splits(&view.frustum)?;
+    let (a, b) = sp.range(0);
+    let (_, r) = shadow_aliasing::maps::cascades::bounding_sphere(&view.frustum, a, b)
+        .map_err(|e| e.to_string())?;
+    Ok(0.37 * 2.0 * r / f64::from(res - 2))
+}
+
 /// The shimmer test's result.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Shimmer {
@@ -318,6 +336,10 @@ pub struct Shimmer {
     pub changed_fraction: f64,
     /// The shadow-edge points followed: those looked up in both frames of at least one pair.
     pub points: usize,
+    /// Stable cascades: the moves of the shadow-edge points (fixed world points) between
+    /// consecutive frames in each map, from whole texels, the largest ([`crate::snap`]); NaN
+    /// where no map pairs; `None` for the other schemes.
+    pub grid_texels: Option<f64>,
 }
 
 /// The shimmer test: the fraction of sampled world points on shadow edges whose lit/shadow
@@ -337,13 +359,7 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
     let res = sizes.res.unwrap_or(scene.map_resolution);
     let mesh = Mesh::build(scene);
     let view0 = View::new(&scene.camera, scene.light(), sizes.width, sizes.height)?;
-    // Texel of the first stable cascade: 2 R res/(res − 2) / res.
-    let sp = crate::schemes::splits(&view0.frustum)?;
-    let (a, b) = sp.range(0);
-    let (_, r) = shadow_aliasing::maps::cascades::bounding_sphere(&view0.frustum, a, b)
-        .map_err(|e| e.to_string())?;
-    let texel = 2.0 * r / f64::from(res - 2);
-    let step = 0.37 * texel;
+    let step = shimmer_step(&view0, res)?;
     // Sample points from frame 0.
     let depth_conv = sizes.render.clip_depth;
     let built0 = build(scheme, &view0, scene, res, sizes.fault, depth_conv)?;
@@ -351,6 +367,9 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
     let out0 = gpu.render(&up0.input(&view0, &mesh, &built0, res, sizes))?;
     let points = edge_points(&out0, &view0, scene, &mesh, sizes)?;
     let mut prev: Option<Vec<Option<bool>>> = None;
+    let mut prev_frame: Option<(View, Built)> = None;
+    let mut grid = (scheme == Scheme::StableCascades).then_some(0.0f64);
+    let world: Vec<DVec3> = points.iter().map(|&(p, _)| p).collect();
     let (mut changed, mut counted) = (0usize, 0usize);
     let mut followed = vec![false; points.len()];
     for i in 0..sizes.frames {
@@ -375,8 +394,20 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
             }
         }
         prev = Some(states);
+        if let Some(g) = &mut grid {
+            if let Some((pv, pb)) = &prev_frame {
+                let d = crate::snap::grid_offset_texels((pv, pb), (&view, &built), &world);
+                *g = if g.is_nan() || d.is_nan() {
+                    f64::NAN
+                } else {
+                    g.max(d)
+                };
+            }
+            prev_frame = Some((view, built));
+        }
     }
     Ok(Shimmer {
+        grid_texels: grid,
         // 0/0 is NaN: nothing followed is no pass.
         changed_fraction: changed as f64 / counted as f64,
         points: followed.iter().filter(|&&f| f).count(),
@@ -462,6 +493,7 @@ pub fn run_full(
             .map_err(|e| format!("{setup}/{}: {e}", scheme.name()))?;
         r.summary.shimmer_changed_fraction = Some(s.changed_fraction);
         r.summary.shimmer_points = Some(s.points);
+        r.summary.stable_grid_texels = s.grid_texels;
     }
     if crate::paths::applies(setup, scheme) {
         let t = std::time::Instant::now();

@@ -100,6 +100,11 @@ pub const SPLIT_REL_DIFF: f64 = 1e-9;
 /// The minimax map's S̄ = M_x M_z over the least S̄ over n′ of the paper's maps, at most
 /// (measured at most 1 + 10⁻⁹).
 pub const MINIMAX_STORAGE_EXCESS: f64 = 1e-3;
+/// Stable cascades: a fixed world point's move between shimmer frames in each map, from a whole
+/// number of texels, at most ([`crate::snap`]; measured at most 4.0·10⁻⁹ texel, in the
+/// set-ups 10⁵ from the world origin; a grid step 2/res off its texel moves points by 2·10⁻³ at
+/// 1024²).
+pub const STABLE_GRID_TEXELS: f64 = 1e-6;
 /// The shimmer test follows at least this many shadow-edge points.
 pub const MIN_SHIMMER_POINTS: usize = 100;
 
@@ -369,6 +374,12 @@ pub fn violations(case: &CaseSummary) -> Vec<String> {
         );
     }
     if case.scheme == crate::schemes::Scheme::StableCascades.name() {
+        // Not measured (null) reads NaN: no pass.
+        at_most(
+            "stable_grid_texels (fixed world points' moves between frames off whole texels)",
+            case.stable_grid_texels.unwrap_or(f64::NAN),
+            STABLE_GRID_TEXELS,
+        );
         match case.shimmer_changed_fraction {
             Some(f) => at_most(
                 "shimmer_changed_fraction (stable cascades)",

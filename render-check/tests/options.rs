@@ -3,7 +3,10 @@
 //! says), and each measurement fails when the crate's output is changed as a crate that ignored
 //! the option would change it.
 
+use render_check::geometry::clipmap_offset;
 use render_check::options::{cases, measure, summarise, violations, OptionCase, OptionSummary};
+use render_check::papers::{lispsm_n_prime, sin_gamma};
+use render_check::scene::Scene;
 use render_check::schemes::{build_with, setups, Built, Options, Scheme, View};
 use shadow_aliasing::maps::ClipDepth;
 
@@ -18,13 +21,12 @@ fn measured_as(
     built_options: &Options,
     edit: impl Fn(&mut Built),
 ) -> OptionSummary {
-    let s = setups().into_iter().find(|s| s.name == c.setup).unwrap();
-    let view = View::new(&s.scene.camera, s.scene.light(), 320, 240).unwrap();
-    let res = s.scene.map_resolution;
+    let (view, scene) = view_of(c);
+    let res = scene.map_resolution;
     let mut built = build_with(
         c.scheme,
         &view,
-        &s.scene,
+        &scene,
         res,
         None,
         ClipDepth::ZeroToOne,
@@ -36,7 +38,7 @@ fn measured_as(
     let asked = build_with(
         c.scheme,
         &view,
-        &s.scene,
+        &scene,
         res,
         None,
         ClipDepth::ZeroToOne,
@@ -52,7 +54,23 @@ fn measured_as(
         }
     }
     edit(&mut built);
-    summarise(c, &view, &s.scene, &built, 240, res)
+    summarise(c, &view, &scene, &built, view.image_height, res)
+}
+
+/// The view and scene of `c` at 320 × 240 (or the case's own screen), its far plane moved where
+/// the case asks.
+fn view_of(c: &OptionCase) -> (View, Scene) {
+    let mut scene = setups()
+        .into_iter()
+        .find(|s| s.name == c.setup)
+        .unwrap()
+        .scene;
+    if let Some(far) = c.options.far {
+        scene.camera.far = far;
+    }
+    let (w, h) = c.options.screen.unwrap_or((320, 240));
+    let view = View::new(&scene.camera, scene.light(), w, h).unwrap();
+    (view, scene)
 }
 
 fn fails(o: &OptionSummary, target: &str) -> bool {
@@ -150,4 +168,85 @@ fn the_option_targets_fail_on_faulty_output() {
     let o = measured_as(&c, &Options::default(), |_| {});
     assert!(fails(&o, "body_rel_diff"), "{o:?}");
     assert_eq!(c.scheme, Scheme::StableCascades);
+}
+
+/// The `receivers_inside_*` cases' premise: B (every map's focus body) ends well before the far
+/// plane, so LiSPSM's n′ of the paper at B's own depth range and at the slice's differ by far
+/// more than the tolerance, the crate's n′ being the paper's at B's range; and a reported M_z
+/// 10⁻⁴ off the paper's map (an n′ off the paper's, reported with it, as a crate whose rule is
+/// wrong reports it) fails `paper_frame_rel_diff` there.
+#[test]
+fn receivers_inside_b_ends_before_far_and_a_wrong_n_prime_fails() {
+    for name in ["receivers_inside_lispsm", "receivers_inside_cascades"] {
+        let c = case(name);
+        let (view, _) = view_of(&c);
+        let built = measured_built(&c, &view);
+        let far = view.frustum.far();
+        let f_b = built
+            .bodies
+            .iter()
+            .flatten()
+            .map(|v| -v.z)
+            .fold(f64::NEG_INFINITY, f64::max);
+        assert!(f_b < 0.5 * far, "{name}: f_B {f_b}, far {far}");
+    }
+    let c = case("receivers_inside_lispsm");
+    let (view, _) = view_of(&c);
+    let built = measured_built(&c, &view);
+    let body = &built.bodies[0];
+    let n_b = body.iter().map(|v| -v.z).fold(f64::INFINITY, f64::min);
+    let f_b = body.iter().map(|v| -v.z).fold(f64::NEG_INFINITY, f64::max);
+    let sg = sin_gamma(view.light_eye);
+    let (n, f) = (view.frustum.near(), view.frustum.far());
+    let on_b = lispsm_n_prime(n_b, f_b, sg);
+    let on_slice = lispsm_n_prime(n, f, sg);
+    assert!(on_slice / on_b > 1.1, "{on_b} {on_slice}");
+    // The reported n′ is the paper's at B's range.
+    let rep = built.maps[0].reported.n_prime;
+    assert!((rep / on_b - 1.0).abs() < 1e-9, "{rep} {on_b}");
+    let o = measured_as(&c, &c.options, |_| {});
+    assert!(violations(&o).is_empty(), "{o:?}");
+    let o = measured_as(&c, &c.options, |b| b.maps[0].reported.max_mz *= 1.0 + 1e-4);
+    assert!(fails(&o, "paper_frame_rel_diff"), "{o:?}");
+}
+
+fn measured_built(c: &OptionCase, view: &View) -> Built {
+    let (_, scene) = view_of(c);
+    build_with(
+        c.scheme,
+        view,
+        &scene,
+        scene.map_resolution,
+        None,
+        ClipDepth::ZeroToOne,
+        &c.options,
+    )
+    .unwrap()
+}
+
+/// The `clipmap_lod_bound` case's premise: at its 80 × 60 image the LOD rule's offset (texel ≤
+/// 2^b pixels) exceeds the coverage bound's, computed by hand from the camera (tan 30°, 4/3,
+/// Unreal's unit 0.01 and bias −0.5 at 1024²), so the level the frame picks is the LOD rule's;
+/// a level offset one too coarse (the rule's 4 unit halved) fails `clipmap_rel_diff`.
+#[test]
+fn clipmap_lod_bound_is_set_by_the_lod_rule() {
+    let c = case("clipmap_lod_bound");
+    let (view, _) = view_of(&c);
+    assert_eq!(view.image_height, 60);
+    let t = 30f64.to_radians().tan();
+    let matched = -0.5 + (t * 1024.0 / (4.0 * 0.01 * 60.0)).log2();
+    let coverage = ((t * t * (1.0 + 16.0 / 9.0) + 1.0).sqrt() / 0.01).log2();
+    assert!(matched > coverage + 0.25, "{matched} {coverage}");
+    let l = clipmap_offset(t, 4.0 / 3.0, 60, 1024, 0.01, -0.5);
+    assert!((l - matched).abs() < 1e-12, "{l} {matched}");
+    let built = measured_built(&c, &view);
+    assert!(
+        (built.clipmap[0] - matched).abs() < 1e-9,
+        "{:?}",
+        built.clipmap
+    );
+    let o = measured_as(&c, &c.options, |_| {});
+    assert!(violations(&o).is_empty(), "{o:?}");
+    let o = measured_as(&c, &c.options, |b| b.clipmap[0] += 1.0);
+    assert!(fails(&o, "clipmap_rel_diff"), "{o:?}");
 }

@@ -689,6 +689,7 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
         "minimax_storage_ratio",
         "shimmer_changed_fraction",
         "shimmer_points",
+        "stable_grid_texels",
         "clip_depth",
         "body_rel_diff",
         "window_fill",
