@@ -779,7 +779,7 @@ fn captions_say_where_a_figure_differs_from_the_paper() {
         .join(" ");
     assert!(!caption.contains("Unlike the paper"), "{caption}");
     assert!(
-        caption.contains("As in the paper (its §3 and §5), B is the smallest bounding box"),
+        caption.contains("As in the paper (§3, §5), B is the smallest (rotated) box"),
         "{caption}"
     );
     for (name, phrase) in says {

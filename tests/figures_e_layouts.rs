@@ -241,7 +241,7 @@ fn martin_tan_fig3_legend_is_under_all_panels() {
 /// (the fifth review: drawn 4 units outside T's sides, true only at the page's size): every
 /// piece of B's dashes (olive #96961E) and of the axis-aligned box's dots (grey #5A5A5A, 2 units
 /// wide) that runs along a side of T's outline (black, 2 units wide, closed: five points, the
-/// widest such, (b)'s map square being another) lies on that side, within 1 unit, and each box
+/// widest such, (b)'s map square being another) lies on that side, within 2 units (whole pixels), and each box
 /// has such pieces; B's dashes are drawn after T (over it: olive and black alternate where they
 /// meet), the axis-aligned box's dots before (T closes it).
 #[test]
@@ -296,14 +296,17 @@ fn martin_tan_fig3_boxes_are_drawn_at_their_true_outlines() {
     };
     for (colour, after) in [("#96961E", true), ("#5A5A5A", false)] {
         assert!(lines(colour).len() > 10, "{colour}: {} pieces", lines(colour).len());
+        // The pieces along T: within 3 units of one of its sides (parallel sides farther off,
+        // such as (c)'s map square, are no such pieces; the outset ones were 4 units off).
         let on: Vec<(usize, f64)> = numbered(colour)
             .iter()
             .filter_map(|(k, p)| along(p).map(|d| (*k, d)))
+            .filter(|p| p.1 <= 3.0)
             .collect();
         // Both boxes have a side along one of T's: B's right side, the axis box's top.
         assert!(!on.is_empty(), "{colour}: no piece along T");
         let far = on.iter().map(|p| p.1).fold(0.0, f64::max);
-        assert!(far <= 1.0, "{colour}: a piece {far} from T's side along it");
+        assert!(far <= 2.0, "{colour}: a piece {far} from T's side along it");
         for (k, _) in on {
             assert_eq!(k > t_at, after, "{colour}: drawn at {k}, T at {t_at}");
         }

@@ -225,7 +225,8 @@ fn fig8_fills_use_no_scheme_colour() {
 /// The third review: the one-column table decoded R/L/T/N and 1/2 only in the caption, and
 /// what "error after" means must be in the figure (issue 35). Every form's figure (the bare
 /// ones without their captions) writes the faces' names and the depths of 1 and 2, and says
-/// what the error after allocation is (M_x/w × M_z/h).
+/// what the error after allocation is, the pair (M_x/w, M_z/h) (the fifth review: "M_x/w ×
+/// M_z/h" read as a product).
 #[test]
 fn fig8_decodes_its_tags_and_the_error_after_in_the_figure() {
     for (form, opts) in [
@@ -244,7 +245,7 @@ fn fig8_decodes_its_tags_and_the_error_after_in_the_figure() {
         let w = words(&svg).replace(" | ", " ");
         let has = |s: &str| w.contains(s);
         assert!(
-            has("error after allocation") && has("Mx/w × Mz/h"),
+            has("error after allocation") && has("(Mx/w, Mz/h)"),
             "{form}: {w}"
         );
         if form == "single bare" {

@@ -283,8 +283,7 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
                 "Lloyd et al. 2005, Fig. 7 (Eq 7): the maximum error with k self-similar face \
                  subdivisions over its value at k\u{a0}=\u{a0}1, (a) for ξ\u{a0}=\u{a0}0 and \
                  (b) for |ξ|\u{a0}=\u{a0}1 (ξ: Eq 4's warp parameter; 0: LiSPSM, \
-                 1: PSM, −1: the uniform map); (a)'s 1.2 decades \
-                 labelled at 2 and 5 as well, (b)'s four at decades only. The report's \"nearly 5 times\" at \
+                 1: PSM, −1: the uniform map). The report's \"nearly 5 times\" at \
                  f/n\u{a0}=\u{a0}{alpha} (its Fig. 9) needs |ξ|\u{a0}=\u{a0}1: \
                  {g1_2:.1}× at k\u{a0}=\u{a0}2; ξ\u{a0}=\u{a0}0 gives {g0_2:.2}×, \
                  and at most (f/n\u{a0}−\u{a0}1)/(√(f/n)\u{a0}ln(f/n))\u{a0}=\u{a0}{g0_inf:.2}×."

@@ -316,7 +316,7 @@ impl Figure for Fig3 {
             format!(
                 "Martin & Tan 2004, Figs. 3 and 4: T of the 80{nb}% rule (δ{nb}={nb}{FOCUS}), \
                  n{nb}={nb}{}, f{nb}={nb}{}, θ{nb}={nb}{}°, light {}° up, {}° round from behind \
-                 to the right; B the smallest (rotated) box, as in the paper. C covers {} of \
+                 to the right; B: the paper's smallest box. C covers {} of \
                  T's map (b), {} of B's (c).",
                 VIEW.0,
                 VIEW.1,
@@ -331,9 +331,8 @@ impl Figure for Fig3 {
                 "Martin & Tan 2004, Figs. 3 and 4: the 80{nb}% rule's trapezoid T \
                  (δ{nb}={nb}{FOCUS}), n{nb}={nb}{}, f{nb}={nb}{}, θ{nb}={nb}{}°, light {}° \
                  high, {}° round from behind to the viewer's right; the inset of{nb}(a) \
-                 enlarges the focus region at the apex. As in the paper (its §3 and §5), B is \
-                 the smallest bounding box, so rotated; dotted: the axis-aligned box, for \
-                 comparison. Map coordinates s, t on [0,{nb}1]. C covers {} of the map in T's \
+                 enlarges the focus region at the apex. As in the paper (§3, §5), B is the \
+                 smallest (rotated) box; dotted: the axis-aligned one. C covers {} of the map in T's \
                  space (b), {} in B's (c), {} in the axis-aligned box's.",
                 VIEW.0,
                 VIEW.1,

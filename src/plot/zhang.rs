@@ -147,8 +147,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
          the screen's vertical and horizontal; the factor 2: Zhang's screen \
          and map span [−1,\u{a0}1]. LiSPSM's warp parameter \
          n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
-         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper, a bar per quantity, \
-         no scene insets.",
+         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: one bar a quantity, no scene insets.",
         angles.join(", "),
         lispsm.join(", "),
     );
