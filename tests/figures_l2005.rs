@@ -132,7 +132,13 @@ fn fig8_axes_are_named_in_light_space() {
         for name in ["light-view x", "light-view y"] {
             assert!(count(name) >= 2, "{form}: {name} not on (a) and (b)");
         }
-        for name in ["light −x", "light z", "z in light space", "−x in light space", "z"] {
+        for name in [
+            "light −x",
+            "light z",
+            "z in light space",
+            "−x in light space",
+            "z",
+        ] {
             assert_eq!(count(name), 0, "{form}: {name}");
         }
     }
