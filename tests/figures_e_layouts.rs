@@ -250,12 +250,13 @@ fn martin_tan_fig3_boxes_are_drawn_at_their_true_outlines() {
     // Each stroke with its line's place in the SVG (the drawing order).
     let numbered = |colour: &str| -> Vec<(usize, Vec<(f64, f64)>)> {
         svg.lines()
-            .filter(|l| {
+            .enumerate()
+            .filter(|(_, l)| {
                 l.starts_with("<polyline")
                     && l.contains(&format!("stroke=\"{colour}\""))
                     && l.contains("stroke-width=\"2\"")
             })
-            .map(read::points)
+            .map(|(k, l)| (k, read::points(l)))
             .collect()
     };
     let lines = |colour: &str| -> Vec<Vec<(f64, f64)>> {
@@ -268,8 +269,8 @@ fn martin_tan_fig3_boxes_are_drawn_at_their_true_outlines() {
     };
     let (t_at, t) = numbered("#000000")
         .into_iter()
-        .filter(|p| p.len() == 5)
-        .max_by(|a, b| width(a).total_cmp(&width(b)))
+        .filter(|p| p.1.len() == 5)
+        .max_by(|a, b| width(&a.1).total_cmp(&width(&b.1)))
         .expect("T's outline");
     let t = &t;
     // A piece of a box's stroke running along one of T's sides (within 2° of parallel, its
@@ -295,7 +296,11 @@ fn martin_tan_fig3_boxes_are_drawn_at_their_true_outlines() {
             .reduce(f64::min)
     };
     for (colour, after) in [("#96961E", true), ("#5A5A5A", false)] {
-        assert!(lines(colour).len() > 10, "{colour}: {} pieces", lines(colour).len());
+        assert!(
+            lines(colour).len() > 10,
+            "{colour}: {} pieces",
+            lines(colour).len()
+        );
         // The pieces along T: within 3 units of one of its sides (parallel sides farther off,
         // such as (c)'s map square, are no such pieces; the outset ones were 4 units off).
         let on: Vec<(usize, f64)> = numbered(colour)
