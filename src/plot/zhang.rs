@@ -142,10 +142,9 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     let phi = view.half_fov().to_degrees();
     let caption = format!(
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
-         view θ\u{a0}=\u{a0}{phi:.0}° (Zhang's φ); light above and in front at \
-         γ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). E_p, E_q: the aliasing along \
-         the screen's vertical and horizontal; the factor 2: Zhang's screen \
-         and map span [−1,\u{a0}1]. LiSPSM's warp parameter \
+         view θ\u{a0}=\u{a0}{phi:.0}° (Zhang's φ); light at \
+         γ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). E_p, E_q: aliasing along the \
+         screen's vertical and horizontal (×2: Zhang's span [−1,\u{a0}1]). LiSPSM's warp parameter \
          n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
          80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: one bar a quantity, no scene insets.",
         angles.join(", "),
@@ -153,10 +152,9 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     );
     let single_caption = format!(
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
-         view θ\u{a0}=\u{a0}{phi:.0}°; light above and in front at γ\u{a0}=\u{a0}{} from the \
-         view direction. E_p, E_q: the aliasing along the screen's vertical and \
-         horizontal (factor 2: Zhang's screen and map span [−1,\u{a0}1]). TSM: 80\u{a0}% rule, \
-         δ\u{a0}=\u{a0}{TSM_FOCUS}. Heights y drawn at half the scale of depths z.",
+         view θ\u{a0}=\u{a0}{phi:.0}°, light at γ\u{a0}=\u{a0}{} from the view direction. \
+         E_p, E_q: aliasing along the screen's vertical, horizontal (×2: span \
+         [−1,\u{a0}1]). Heights at ½ depth scale.",
         angles.join(", "),
     );
     Ok(Fig3 {
@@ -211,7 +209,7 @@ const ROW_LABEL_1: u32 = 46;
 const GAP_1: u32 = 10;
 const ROW_GAP_1: u32 = 3;
 const BLOCK_TITLE_1: u32 = 17;
-const BLOCK_GAP_1: u32 = 6;
+const BLOCK_GAP_1: u32 = 12;
 const VBAR: u32 = 78;
 /// A double-column panel's height over its width: the z range [−5, 105] across and y over
 /// ±0.535 of it up (the frustum's far plane reaches ±57.7), drawn to scale.
@@ -221,7 +219,7 @@ const TEXT: u32 = 13;
 
 /// The page's size: three blocks of 3 × 3 panels side by side (landscape drawing), the caption
 /// under them; as tall as the blocks, their bars and the caption need.
-pub(super) const SIZE: (u32, u32) = (520, 462);
+pub(super) const SIZE: (u32, u32) = (520, 444);
 
 /// A double-column panel's width: the body (the page less 6 units each side) less the left
 /// strips, the gaps, shared by nine panels.
@@ -503,8 +501,8 @@ impl Fig3 {
 }
 
 /// The one-column page's height, in units (420 pt printed, the cap): the panels' rows at
-/// [`HEIGHT_SCALE`] and the caption's seven lines.
-const SINGLE_H: u32 = 525;
+/// [`HEIGHT_SCALE`] and the caption's five lines.
+const SINGLE_H: u32 = 495;
 
 /// The share of the depth's scale at which one column draws heights: one half.
 const HEIGHT_SCALE: f64 = 0.5;

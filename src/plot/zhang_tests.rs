@@ -272,13 +272,12 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
         assert_eq!(named.len(), 1, "{column:?}: {name}");
         assert!(named[0].0.contains("rotate(270"), "{}", named[0].0);
     }
-    assert!(fig
-        .single_caption
-        .contains("Heights y drawn at half the scale of depths z"));
+    assert!(fig.single_caption.contains("Heights at ½ depth scale"));
     for c in [&fig.caption, &fig.single_caption] {
         assert!(
-            c.contains("E_p, E_q: the aliasing along the screen's vertical and horizontal"),
+            c.contains("E_p, E_q: aliasing along the screen's vertical"),
             "{c}"
         );
+        assert!(c.contains("horizontal (×2: "), "{c}");
     }
 }
