@@ -259,11 +259,15 @@ impl Figure for Fig8 {
             // and (c) side by side under them; the table last.
             let panels = bh.saturating_sub(table_h);
             let (top, table) = body.split_vertically(panels);
-            let (row1, row2) = top.split_vertically(panels * 53 / 100);
-            let (a, key) = row1.split_horizontally(bw * 66 / 100);
+            // (b)'s plot, height-bound, is as tall as its y axis' name "light-view y" (65
+            // units) only with the rows split 51 : 49 and its margin 3: split 53 : 47 with
+            // margin 6 it was 56 units; (a)'s plot keeps 67, also longer than the name. The
+            // key beside (a), in the lower row, is wider (38 %, was 34 %) to keep its lines in it.
+            let (row1, row2) = top.split_vertically(panels * 51 / 100);
+            let (a, key) = row1.split_horizontally(bw * 62 / 100);
             let (b, c) = row2.split_horizontally(bw * 40 / 100);
             self.draw_faces(&a, &style)?;
-            self.draw_warp(&b, &style)?;
+            self.draw_warp(&b, &ChartStyle { margin: 3, ..style })?;
             self.draw_texture(&c, &texture_style)?;
             self.draw_key(&key)?;
             self.draw_table(&table, single)
