@@ -571,11 +571,12 @@ pub(super) fn fig12() -> Result<Keyed, Fail> {
         title: "S̄ against the number of maps".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. {SCHEME_WORDS} FP+ZP+W uses {} \
-             maps; behind, its faces have {eff} (Eq 21), and with {j4} maps it beats ZP ({fp4:.2} against \
-             {zp4:.2}).",
+             maps, its faces behind {}; at {j4} maps {fp4:.2} to ZP's {zp4:.2}.",
             nb(&format!("f/n = {ratio}")),
             nb(&format!("θ = {THETA_DEG}")),
             nb("4k + 1"),
+            // Without the angle (45°) the two-column caption adds: five lines.
+            nb(&format!("tan θ_{{eff}} = {}", fmt_plain(tan_eff))),
         )],
         charts: vec![a],
     };
