@@ -122,13 +122,28 @@ fn lloyd2006_fig7_has_two_hemispheres_a_row_in_one_column() {
     assert!(e.1 - c.1 >= 120.0, "{c:?} {e:?}");
 }
 
-/// martin-tan-fig6 in one column: the profile (b) under the hemisphere (a).
+/// martin-tan-fig6 in one column: the profile (b) under the hemisphere (a), its title below
+/// the bottom of (a)'s disk (the one square raster) and of (a)'s "viewer's right" under it.
+/// (The fifth review gave (b) the larger share of the height, so (b)'s title no longer lies a
+/// fixed 150 units under (a)'s; the disk's own extent is what (b) must clear.)
 #[test]
 fn martin_tan_fig6_has_its_profile_under_the_hemisphere_in_one_column() {
     let s = svg("martin-tan-fig6", Column::Single);
     assert_eq!(width(&s), 300.0);
     let (a, b) = (text_at(&s, "(a)"), text_at(&s, "(b)"));
-    assert!(b.1 - a.1 >= 150.0, "{a:?} {b:?}");
+    let disks: Vec<_> = images(&s)
+        .into_iter()
+        .filter(|i| (i.2 - i.3).abs() <= 2.0)
+        .collect();
+    assert_eq!(disks.len(), 1, "{disks:?}");
+    let disk = disks[0];
+    assert!(a.1 < disk.1, "(a)'s title {a:?}, the disk {disk:?}");
+    let right = text_at(&s, "viewer");
+    assert!(right.1 > disk.1 + disk.3 - 10.0, "{right:?} {disk:?}");
+    assert!(
+        b.1 > right.1 && b.1 > disk.1 + disk.3,
+        "{a:?} {b:?} {right:?} {disk:?}"
+    );
 }
 
 /// A hemisphere's colour bar is about the size of its disk, in both layouts (it spanned the

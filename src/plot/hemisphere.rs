@@ -153,19 +153,20 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let (n, f) = (view.near(), view.far());
     let overhead = (f / n - 1.0) / (2.0 * view.tan_half_fov());
     let caption = vec![format!(
-        "Lloyd et al. 2006, Fig. 7: S̄ = M_x M_z (texels per image pixel), lights {step}° apart, \
-         azimuthal equidistant (overhead at the centre, horizon at the rim); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°; (d) at \
-         the n′ of least S̄; (e): LiSPSM's S̄ over face partitioning's. Overhead, (b) and (c) \
-         are Eq 12's {overhead:.0}. {band}",
+        "Lloyd et al. 2006, Fig. 7: S̄ (texels per image pixel) for lights {step}° apart, \
+         azimuthal equidistant from overhead, rings of equal elevation 10°, 20°, 30°, \
+         60°; n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+         θ\u{a0}=\u{a0}{theta:.0}°; (d) at the n′ of least S̄; (e): LiSPSM's S̄ over face \
+         partitioning's. Overhead, (b) and (c) are Eq 12's {overhead:.0}. {band}",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     )];
-    // One column: at most six lines.
+    // One column: four lines, so that the disks keep the size at which (a)'s ring key covers
+    // at most a sixth of its disk ((d)'s title says it is at the best n′).
     let single_caption = format!(
         "Lloyd et al. 2006, Fig. 7: S̄, lights {step}° apart, azimuthal equidistant; rings: \
          elevation 10°, 20°, 30°, 60°; n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         θ\u{a0}=\u{a0}{theta:.0}°; (d) at the n′ of least S̄; (a)'s peak: see \
-         lloyd2006-worst-case.",
+         θ\u{a0}=\u{a0}{theta:.0}°; (a)'s peak: see lloyd2006-worst-case.",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     );

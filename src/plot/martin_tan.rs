@@ -158,7 +158,7 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         profile,
         caption: vec![format!(
             "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map covered by the focus \
-             region (n to n\u{a0}+\u{a0}δ). (a) The 80\u{a0}% rule over the hemisphere \
+             region (n to n\u{a0}+\u{a0}δ). (a) The paper's 80\u{a0}% rule \
              (rings: elevation 10°, 20°, 30°, 60°; line: the view's vertical plane); (b) in that \
              plane (elevation 0° behind, 90° overhead), also the iterative variant (1024 lines). \
              n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of view \
@@ -214,13 +214,21 @@ impl Figure for Fig6 {
             // (b) has the larger share (the fifth review: 0.8 in for three decades, its markers
             // crowded; the disk needs less).
             let (top, bottom) = body.split_vertically(h * 33 / 100);
-            let (tw, _) = top.dim_in_pixel();
-            let (disk, bar) = top.split_horizontally(tw.saturating_sub(BAR_WIDTH));
+            let (tw, th) = top.dim_in_pixel();
+            let (disk, _) = top.split_horizontally(tw.saturating_sub(BAR_WIDTH));
             let rows =
                 draw_hemisphere_keyed(&disk, PANEL_A_SINGLE, &self.grid, &self.scale, true, true)?;
             // The bar's name no taller than the disk.
             let mut scale = self.scale.clone();
             scale.axis.label = "(a) share (log scale)".into();
+            // As tall as the disk: the bar's chart keeps 30 units under the disk's bottom for
+            // its end label, more than (a)'s share of the height leaves under a disk that
+            // fills it, so its column reaches into the profile's (empty there: the profile's
+            // title stands lower, its plot right of its y ticks).
+            let bar = body.clone().shrink(
+                (tw.saturating_sub(BAR_WIDTH), 0),
+                (BAR_WIDTH, (th + 30).min(h)),
+            );
             draw_bar(&bar, &scale, rows)?;
             let mut profile = self.profile.clone();
             profile.legend_columns = Some(1);
