@@ -236,11 +236,10 @@ impl Figure for Fig13 {
                 fmt_plain(tan_eff),
             ),
             Column::Single => format!(
-                "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind, any θ. {SCHEME_WORDS} \
-                 ZP with j maps against FP+ZP+W with k z-partitions per face, \
-                 j\u{a0}=\u{a0}4k\u{a0}+\u{a0}1. Below the dot \
-                 FP+ZP+W needs less storage; above it, ZP ({j} maps: \
-                 f/n\u{a0}=\u{a0}{at:.0})."
+                "Lloyd et al. 2006, Fig. 13 (Eq 20, 21). {SCHEME_WORDS} \
+                 ZP with j maps, FP+ZP+W with k z-partitions per face, \
+                 j\u{a0}=\u{a0}4k\u{a0}+\u{a0}1; FP+ZP+W needs less below the dot \
+                 (f/n\u{a0}=\u{a0}{at:.0} at {j})."
             ),
         };
         let body = frame(
