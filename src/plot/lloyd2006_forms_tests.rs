@@ -7,7 +7,7 @@ use crate::plot::chart::read_svg::{attr, texts};
 use crate::plot::Figure;
 
 /// The figure `name` as the command writes its SVG, in the form `column`, captioned or `bare`.
-fn svg_of(name: &str, column: Column, bare: bool) -> String {
+pub(super) fn svg_of(name: &str, column: Column, bare: bool) -> String {
     use std::sync::atomic::{AtomicUsize, Ordering};
     static CALLS: AtomicUsize = AtomicUsize::new(0);
     let dir = std::env::temp_dir().join(format!(

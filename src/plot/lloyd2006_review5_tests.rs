@@ -6,25 +6,7 @@ use super::*;
 use crate::plot::chart::read_svg::{attr, texts};
 use crate::plot::Figure;
 
-/// The figure `name` as the command writes its SVG, in the form `column`, captioned or `bare`.
-fn svg_of(name: &str, column: Column, bare: bool) -> String {
-    use std::sync::atomic::{AtomicUsize, Ordering};
-    static CALLS: AtomicUsize = AtomicUsize::new(0);
-    let dir = std::env::temp_dir().join(format!(
-        "lloyd2006-review5-{name}-{}-{}",
-        std::process::id(),
-        CALLS.fetch_add(1, Ordering::Relaxed)
-    ));
-    let opts = crate::plot::Options {
-        bare,
-        column,
-        ..crate::plot::Options::default()
-    };
-    let files = crate::plot::render_with(name, &dir, crate::plot::Format::Svg, &opts).unwrap();
-    let svg = std::fs::read_to_string(&files[0]).unwrap();
-    let _ = std::fs::remove_dir_all(&dir);
-    svg
-}
+use super::forms_tests::svg_of;
 
 /// `c` as an SVG writes it.
 fn hex(c: RGBColor) -> String {
