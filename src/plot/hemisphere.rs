@@ -14,15 +14,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::f64::consts::{FRAC_PI_2, TAU};
 
-/// Elevation rows of the sweeps (both ends, every 2°).
-pub(super) const ELEVATIONS: usize = 46;
-/// Azimuth columns of the sweeps (every 2°).
-pub(super) const AZIMUTHS: usize = 180;
-
-/// Fig 7's own grid, every 1° (at 2° its cells showed as steps along the bands of fast
-/// change near the horizon).
-pub(super) const FIG7_ELEVATIONS: usize = 91;
-const FIG7_AZIMUTHS: usize = 360;
+use super::grids::{FIG7_AZIMUTHS, FIG7_ELEVATIONS};
 
 /// The cells of a sweep: each sample owns the band of elevations and azimuths halfway to its
 /// neighbours (the horizon and zenith rows half bands).

@@ -41,6 +41,7 @@ mod barroso;
 mod canvas;
 mod chart;
 mod from_light;
+mod grids;
 mod hemisphere;
 mod keyed;
 mod layout;

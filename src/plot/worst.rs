@@ -9,7 +9,7 @@
 pub(super) mod min_area;
 
 use super::chart::{fmt_plain, Axis, Charts, LineChart, Look, Series, SHARED};
-use super::hemisphere::FIG7_ELEVATIONS;
+use super::grids::FIG7_ELEVATIONS;
 use super::keyed::{Keyed, SINGLE_HEIGHT};
 use super::{Column, Fail};
 use crate::analytic::partition::{scheme_storage_factor, Scheme, SchemeLight};
@@ -23,7 +23,7 @@ use plotters::prelude::RGBColor;
 /// second row and column of Fig 7's 1° grid; the worst case of ZP+W at k = 1, Fig 7's LiSPSM
 /// panel, falls on this grid, so both figures print the same number
 /// (`worst_case_is_fig7s_maximum`).
-pub(super) use super::hemisphere::{AZIMUTHS, ELEVATIONS};
+pub(super) use super::grids::{AZIMUTHS, ELEVATIONS};
 /// The numbers of z-partitions compared.
 pub(super) const KS: [usize; 8] = [1, 2, 3, 4, 5, 6, 7, 8];
 
