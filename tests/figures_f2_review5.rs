@@ -47,18 +47,6 @@ fn strokes(svg: &str, colour: &str) -> Vec<(f64, Vec<(f64, f64)>)> {
         .collect()
 }
 
-fn bbox(p: &[(f64, f64)]) -> [f64; 4] {
-    p.iter().fold(
-        [
-            f64::INFINITY,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NEG_INFINITY,
-        ],
-        |b, q| [b[0].min(q.0), b[1].min(q.1), b[2].max(q.0), b[3].max(q.1)],
-    )
-}
-
 /// Figure review 5, §4.12.4: a light perpendicular to the view sees the near and far faces and
 /// the split planes edge-on. Each is one straight line; the old closed outline of the flat quad
 /// (five points, a box less than a unit tall and many units wide) showed as two thin slanted
@@ -69,7 +57,7 @@ fn barroso_fig5_edge_on_faces_are_one_line() {
         let svg = read::render_svg("barroso-fig5", &opts);
         let black = strokes(&svg, "#000000");
         for (w, p) in &black {
-            let b = bbox(p);
+            let b = read::bbox(p);
             assert!(
                 !(p.len() >= 4 && b[3] - b[1] < 1.0 && b[2] - b[0] > 3.0),
                 "{form}: a flat closed outline, width {w}: {p:?}"
@@ -294,7 +282,7 @@ fn barroso_fig7_single_plots_markers_and_grid() {
         .map(|b| b[1])
         .fold(f64::INFINITY, f64::min);
     for p in read::polygons(&svg) {
-        let b = bbox(&p.points);
+        let b = read::bbox(&p.points);
         if b[1] >= legend_top {
             continue;
         }

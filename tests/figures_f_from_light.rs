@@ -35,11 +35,7 @@ fn svg(name: &str, form: &str, opts: &Options) -> String {
     s
 }
 
-fn attr<'a>(el: &'a str, name: &str) -> Option<&'a str> {
-    let key = format!(" {name}=\"");
-    let i = el.find(&key)? + key.len();
-    Some(&el[i..i + el[i..].find('"')?])
-}
+use read::attr_str as attr;
 
 fn num(el: &str, name: &str) -> f64 {
     attr(el, name).unwrap().parse().unwrap()
@@ -53,16 +49,7 @@ fn elements<'a>(svg: &'a str, kind: &str) -> Vec<&'a str> {
         .collect()
 }
 
-fn points(el: &str) -> Vec<(f64, f64)> {
-    attr(el, "points")
-        .unwrap()
-        .split_whitespace()
-        .map(|p| {
-            let (x, y) = p.split_once(',').unwrap();
-            (x.parse().unwrap(), y.parse().unwrap())
-        })
-        .collect()
-}
+use read::points;
 
 /// The texts of an SVG (their content, tags inside dropped).
 fn texts(svg: &str) -> Vec<String> {
@@ -290,17 +277,7 @@ fn thick_faces(svg: &str) -> Vec<[f64; 4]> {
         .filter(|e| attr(e, "stroke") == Some("#000000") && attr(e, "stroke-width") == Some("2"))
         .map(points)
         .filter(|p| p.len() == 5 && p[0] == p[4])
-        .map(|p| {
-            p.iter().fold(
-                [
-                    f64::INFINITY,
-                    f64::INFINITY,
-                    f64::NEG_INFINITY,
-                    f64::NEG_INFINITY,
-                ],
-                |b, q| [b[0].min(q.0), b[1].min(q.1), b[2].max(q.0), b[3].max(q.1)],
-            )
-        })
+        .map(|p| read::bbox(&p))
         .collect()
 }
 
@@ -372,17 +349,7 @@ fn thin_squares(svg: &str) -> Vec<[f64; 4]> {
         .filter(|e| attr(e, "stroke") == Some("#000000") && attr(e, "stroke-width") == Some("1"))
         .map(points)
         .filter(|p| p.len() == 5 && p[0] == p[4])
-        .map(|p| {
-            p.iter().fold(
-                [
-                    f64::INFINITY,
-                    f64::INFINITY,
-                    f64::NEG_INFINITY,
-                    f64::NEG_INFINITY,
-                ],
-                |b, q| [b[0].min(q.0), b[1].min(q.1), b[2].max(q.0), b[3].max(q.1)],
-            )
-        })
+        .map(|p| read::bbox(&p))
         .collect()
 }
 

@@ -109,14 +109,7 @@ mod tests {
         svg.lines()
             .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#000000\""))
             .filter_map(|l| {
-                let at = l.find(" points=\"")? + 9;
-                let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
-                    .split(' ')
-                    .filter_map(|p| {
-                        let (x, y) = p.split_once(',')?;
-                        Some((x.parse().ok()?, y.parse().ok()?))
-                    })
-                    .collect();
+                let pts = crate::plot::chart::read_svg::points(l)?;
                 match pts[..] {
                     [a, b] if a.0 == b.0 && (b.1 - a.1).abs() > 80.0 => Some((b.1 - a.1).abs()),
                     _ => None,

@@ -396,16 +396,7 @@ mod tests {
         use super::super::chart::read_svg::{attr, draw_svg, visible};
         use super::super::chart::with_page;
         let fig = fig7().map_err(|e| e.named("lloyd2005-fig7")).unwrap();
-        let points = |l: &str| -> Vec<(f64, f64)> {
-            let at = l.find("points=\"").unwrap() + 8;
-            l[at..at + l[at..].find('"').unwrap()]
-                .split_whitespace()
-                .map(|p| {
-                    let (x, y) = p.split_once(',').unwrap();
-                    (x.parse().unwrap(), y.parse().unwrap())
-                })
-                .collect()
-        };
+        let points = |l: &str| crate::plot::chart::read_svg::points(l).unwrap();
         for (column, size) in [
             (Column::Double, fig.size()),
             (Column::Single, fig.single_size().unwrap()),

@@ -3,12 +3,7 @@
 use super::*;
 /// The points of a polyline element.
 fn polyline_points(line: &str) -> Vec<(f64, f64)> {
-    let at = line.find("points=\"").unwrap() + 8;
-    line[at..at + line[at..].find('"').unwrap()]
-        .split(' ')
-        .filter_map(|p| p.split_once(','))
-        .map(|(x, y)| (x.parse().unwrap(), y.parse().unwrap()))
-        .collect()
+    crate::plot::chart::read_svg::points(line).unwrap()
 }
 
 /// The least distance from `p` to a polyline's segments.

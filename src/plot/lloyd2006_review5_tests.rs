@@ -20,14 +20,7 @@ fn markers(svg: &str) -> Vec<(String, (f64, f64), usize)> {
         .filter_map(|l| {
             let f = l.find(" fill=\"")? + 7;
             let fill = l[f..f + l[f..].find('"')?].to_string();
-            let at = l.find(" points=\"")? + 9;
-            let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
-                .split(' ')
-                .filter_map(|p| {
-                    let (x, y) = p.split_once(',')?;
-                    Some((x.parse().ok()?, y.parse().ok()?))
-                })
-                .collect();
+            let pts = crate::plot::chart::read_svg::points(l)?;
             let n = pts.len() as f64;
             let c = (
                 pts.iter().map(|p| p.0).sum::<f64>() / n,
@@ -209,10 +202,10 @@ fn fig6_three_hues_key_in_axis_order_one_panel() {
                 .lines()
                 .filter(|l| l.starts_with("<polyline"))
                 .find(|l| {
-                    let p = l.find(" points=\"").unwrap() + 9;
-                    let ys: Vec<f64> = l[p..p + l[p..].find('"').unwrap()]
-                        .split(' ')
-                        .filter_map(|q| q.split_once(',')?.1.parse().ok())
+                    let ys: Vec<f64> = crate::plot::chart::read_svg::points(l)
+                        .unwrap()
+                        .iter()
+                        .map(|p| p.1)
                         .collect();
                     ys.len() >= 2 && ys.iter().all(|v| (v - at).abs() < 3.0)
                 })

@@ -78,14 +78,7 @@ fn fig13_hatch_is_coarse() {
         .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#FFFFFF\""))
         .filter_map(|l| {
             let w = crate::plot::chart::read_svg::attr(l, "stroke-width")?;
-            let at = l.find(" points=\"")? + 9;
-            let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
-                .split(' ')
-                .filter_map(|p| {
-                    let (x, y) = p.split_once(',')?;
-                    Some((x.parse().ok()?, y.parse().ok()?))
-                })
-                .collect();
+            let pts = crate::plot::chart::read_svg::points(l)?;
             let (a, b) = (pts.first()?, pts.last()?);
             // 45°: x − y the same at both ends (within a unit's rounding).
             (((a.0 - a.1) - (b.0 - b.1)).abs() <= 1.5).then_some((a.0.min(b.0), a.0 - a.1, w))
@@ -449,14 +442,7 @@ pub(super) fn polygon_centres_where(svg: &str, keep: impl Fn(&str) -> bool) -> V
     svg.lines()
         .filter(|l| l.starts_with("<polygon") && keep(l))
         .filter_map(|l| {
-            let at = l.find(" points=\"")? + 9;
-            let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
-                .split(' ')
-                .filter_map(|p| {
-                    let (x, y) = p.split_once(',')?;
-                    Some((x.parse().ok()?, y.parse().ok()?))
-                })
-                .collect();
+            let pts = crate::plot::chart::read_svg::points(l)?;
             let n = pts.len() as f64;
             Some((
                 pts.iter().map(|p| p.0).sum::<f64>() / n,

@@ -291,16 +291,7 @@ mod tests {
         let svg = draw_svg((300, 300), |area| {
             draw_line_chart(area, &fig.profile).unwrap();
         });
-        let points = |l: &str| -> Vec<(f64, f64)> {
-            let at = l.find("points=\"").unwrap() + 8;
-            l[at..at + l[at..].find('"').unwrap()]
-                .split_whitespace()
-                .map(|p| {
-                    let (x, y) = p.split_once(',').unwrap();
-                    (x.parse().unwrap(), y.parse().unwrap())
-                })
-                .collect()
-        };
+        let points = |l: &str| crate::plot::chart::read_svg::points(l).unwrap();
         let polygons: Vec<Vec<(f64, f64)>> = svg
             .lines()
             .filter(|l| l.starts_with("<polygon"))

@@ -329,14 +329,7 @@ fn maps_on_the_unit_square_focus_pointed_to_and_hull_not_blue() {
         let has = |t: &str| all.iter().filter(|x| x.1 == t).count();
         assert!(has("0.5") >= 3, "{column:?}: {} labels 0.5", has("0.5"));
         assert_eq!(has("−1"), 0, "{column:?}");
-        let points = |l: &str| -> Vec<(f64, f64)> {
-            let at = l.find("points=\"").unwrap() + 8;
-            l[at..at + l[at..].find('"').unwrap()]
-                .split(' ')
-                .filter_map(|p| p.split_once(','))
-                .map(|(x, y)| (x.parse().unwrap(), y.parse().unwrap()))
-                .collect()
-        };
+        let points = |l: &str| crate::plot::chart::read_svg::points(l).unwrap();
         let word = all.iter().find(|x| x.1 == "focus").expect("no \"focus\"");
         let (wx, wy) = (attr(word.0, "x").unwrap(), attr(word.0, "y").unwrap());
         let wine: Vec<(f64, f64)> = svg

@@ -232,6 +232,19 @@ pub fn points(tag: &str) -> Vec<(f64, f64)> {
         .collect()
 }
 
+/// The bounding box [x min, y min, x max, y max] of some points.
+pub fn bbox(p: &[(f64, f64)]) -> Box4 {
+    p.iter().fold(
+        [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ],
+        |b, q| [b[0].min(q.0), b[1].min(q.1), b[2].max(q.0), b[3].max(q.1)],
+    )
+}
+
 /// A stroked `<polyline>` or a filled `<polygon>`: its colour and points.
 #[derive(Debug, Clone)]
 pub struct Shape {

@@ -255,14 +255,7 @@ mod tests {
             .find(|l| l.starts_with("<polyline") && l.contains("#010203"))
             .unwrap();
         assert!(line.contains("stroke-width=\"2\""), "{line}");
-        let at = line.find("points=\"").unwrap() + 8;
-        let pts: Vec<(f64, f64)> = line[at..at + line[at..].find('"').unwrap()]
-            .split_whitespace()
-            .map(|p| {
-                let (x, y) = p.split_once(',').unwrap();
-                (x.parse().unwrap(), y.parse().unwrap())
-            })
-            .collect();
+        let pts = crate::plot::chart::read_svg::points(line).unwrap();
         assert_eq!(pts.len(), xs.len());
         let (p0, p1) = (pts[0], pts[pts.len() - 1]);
         let mut fractional = 0;

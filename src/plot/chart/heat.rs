@@ -568,13 +568,10 @@ mod tests {
             .lines()
             .filter(|l| l.starts_with("<polyline"))
             .map(|l| {
-                let at = l.find("points=\"").unwrap() + 8;
-                let (mut xs, mut ys) = (Vec::new(), Vec::new());
-                for p in l[at..at + l[at..].find('"').unwrap()].split_whitespace() {
-                    let (x, y) = p.split_once(',').unwrap();
-                    xs.push(x.parse::<f64>().unwrap());
-                    ys.push(y.parse::<f64>().unwrap());
-                }
+                let (xs, ys): (Vec<f64>, Vec<f64>) = crate::plot::chart::read_svg::points(l)
+                    .unwrap()
+                    .into_iter()
+                    .unzip();
                 let c = ((min(&xs) + max(&xs)) / 2.0, (min(&ys) + max(&ys)) / 2.0);
                 (c, (max(&ys) - min(&ys)) / 2.0)
             })
@@ -629,14 +626,7 @@ mod tests {
                 .iter()
                 .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#FFFFFF\"") == white)
                 .filter_map(|l| {
-                    let at = l.find("points=\"")? + 8;
-                    let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
-                        .split_whitespace()
-                        .filter_map(|p| {
-                            let (x, y) = p.split_once(',')?;
-                            Some((x.parse().ok()?, y.parse().ok()?))
-                        })
-                        .collect();
+                    let pts = crate::plot::chart::read_svg::points(l)?;
                     (pts.len() > 100).then(|| {
                         let k = pts.len() as f64;
                         let c = (

@@ -347,14 +347,7 @@ mod tests {
             .lines()
             .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#000000\""))
             .filter_map(|l| {
-                let at = l.find("points=\"")? + "points=\"".len();
-                let pts: Vec<(f64, f64)> = l[at..at + l[at..].find('"')?]
-                    .split_whitespace()
-                    .filter_map(|p| {
-                        let (x, y) = p.split_once(',')?;
-                        Some((x.parse().ok()?, y.parse().ok()?))
-                    })
-                    .collect();
+                let pts = crate::plot::chart::read_svg::points(l)?;
                 match pts[..] {
                     [(x0, y0), (x1, y1)] if x0 == x1 && (y1 - y0).abs() > 50.0 => {
                         Some((y1 - y0).abs())

@@ -25,6 +25,20 @@ pub(crate) fn attr(el: &str, name: &str) -> Option<f64> {
     el[at..at + el[at..].find('"')?].parse().ok()
 }
 
+/// The corners in the attribute `points="x,y x,y …"` of a `<polygon>` or `<polyline>` line.
+pub(crate) fn points(el: &str) -> Option<Vec<(f64, f64)>> {
+    let at = el.find(" points=\"")? + 9;
+    Some(
+        el[at..at + el[at..].find('"')?]
+            .split_whitespace()
+            .filter_map(|p| {
+                let (x, y) = p.split_once(',')?;
+                Some((x.parse().ok()?, y.parse().ok()?))
+            })
+            .collect(),
+    )
+}
+
 /// The visible text of an SVG `<text>` line, tags removed and superscript digits written
 /// as digits (a backend may set them as `<tspan>`s).
 pub(crate) fn visible(line: &str) -> String {
