@@ -548,27 +548,25 @@ impl Fault {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
+
+    /// `scheme` built for the second built-in set-up (`tilted_45`) at 320 × 240, 1024² texels,
+    /// depth \[0, 1\], the default options, with `fault` injected.
+    pub(crate) fn built(scheme: Scheme, fault: Option<Fault>) -> crate::schemes::Built {
+        let setup = &crate::schemes::setups()[1];
+        let view = View::new(&setup.scene.camera, setup.scene.light(), 320, 240).unwrap();
+        let zo = shadow_aliasing::maps::ClipDepth::ZeroToOne;
+        let options = crate::schemes::Options::default();
+        crate::schemes::build(scheme, &view, &setup.scene, 1024, fault, zo, &options).unwrap()
+    }
 
     /// Every map given to the wrong face: no map keeps its face, and the records the shader
     /// selects by carry the wrong faces.
     #[test]
     fn wrong_face_moves_every_map() {
-        let setup = &crate::schemes::setups()[1];
-        let view = View::new(&setup.scene.camera, setup.scene.light(), 320, 240).unwrap();
-        let build = |fault| {
-            crate::schemes::build(
-                Scheme::Faces,
-                &view,
-                &setup.scene,
-                1024,
-                fault,
-                shadow_aliasing::maps::ClipDepth::ZeroToOne,
-            )
-            .unwrap()
-        };
-        let (clean, wrong) = (build(None), build(Some(Fault::WrongFace)));
+        let clean = built(Scheme::Faces, None);
+        let wrong = built(Scheme::Faces, Some(Fault::WrongFace));
         let faces: std::collections::BTreeSet<i32> = clean.maps.iter().map(|m| m.region).collect();
         assert!(faces.len() >= 2, "{faces:?}");
         for (a, b) in clean.maps.iter().zip(&wrong.maps) {
@@ -583,13 +581,8 @@ mod tests {
     /// frame reports it), on the same body, its reported maxima following the map.
     #[test]
     fn psm_n_prime_doubled_in_the_rule() {
-        let setup = &crate::schemes::setups()[1];
-        let view = View::new(&setup.scene.camera, setup.scene.light(), 320, 240).unwrap();
-        let zo = shadow_aliasing::maps::ClipDepth::ZeroToOne;
-        let build = |fault| {
-            crate::schemes::build(Scheme::Psm, &view, &setup.scene, 1024, fault, zo).unwrap()
-        };
-        let (clean, f) = (build(None), build(Some(Fault::PsmNPrimeDouble)));
+        let clean = built(Scheme::Psm, None);
+        let f = built(Scheme::Psm, Some(Fault::PsmNPrimeDouble));
         assert_eq!(clean.bodies, f.bodies);
         let body = &clean.bodies[0];
         let n_b = body.iter().map(|v| -v.z).fold(f64::INFINITY, f64::min);
@@ -618,13 +611,8 @@ mod tests {
         assert!((b.reported.n_prime / (2.0 * a.reported.n_prime) - 1.0).abs() < 1e-9);
         assert!((b.reported.max_mz / a.reported.max_mz - 1.0).abs() > 1e-3);
         // Only PSM's rule: the other schemes are built as without the fault.
-        let l = |fault| {
-            crate::schemes::build(Scheme::Lispsm, &view, &setup.scene, 1024, fault, zo).unwrap()
-        };
-        assert_eq!(
-            l(None).maps[0].built,
-            l(Some(Fault::PsmNPrimeDouble)).maps[0].built
-        );
+        let l = |fault| built(Scheme::Lispsm, fault).maps[0].built;
+        assert_eq!(l(None), l(Some(Fault::PsmNPrimeDouble)));
     }
 
     /// `cascade-off-by-one` changes the cascades' selection only: a single map, the face
@@ -633,23 +621,18 @@ mod tests {
     /// set-up's Eq 7–10 then read as the map's depth range: `lloyd_rel_diff` 1.0).
     #[test]
     fn cascade_off_by_one_leaves_other_schemes_alone() {
-        let setup = &crate::schemes::setups()[1];
-        let view = View::new(&setup.scene.camera, setup.scene.light(), 320, 240).unwrap();
-        let zo = shadow_aliasing::maps::ClipDepth::ZeroToOne;
         for scheme in [Scheme::Uniform, Scheme::Psm, Scheme::Faces, Scheme::Clipmap] {
-            let b = |fault| {
-                crate::schemes::build(scheme, &view, &setup.scene, 1024, fault, zo).unwrap()
-            };
-            let (clean, f) = (b(None), b(Some(Fault::CascadeOffByOne)));
+            let (clean, f) = (
+                built(scheme, None),
+                built(scheme, Some(Fault::CascadeOffByOne)),
+            );
             for (a, c) in clean.maps.iter().zip(&f.maps) {
                 assert_eq!((a.near, a.far, a.region), (c.near, c.far, c.region));
                 assert_eq!(a.record, c.record, "{}", scheme.name());
             }
         }
-        let b = |fault| {
-            crate::schemes::build(Scheme::Cascades, &view, &setup.scene, 1024, fault, zo).unwrap()
-        };
-        let (clean, f) = (b(None), b(Some(Fault::CascadeOffByOne)));
+        let clean = built(Scheme::Cascades, None);
+        let f = built(Scheme::Cascades, Some(Fault::CascadeOffByOne));
         assert_eq!(f.maps[1].near, clean.maps[0].near);
         assert_eq!(f.maps[1].far, clean.maps[0].far);
     }

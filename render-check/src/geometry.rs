@@ -29,6 +29,7 @@
 
 use crate::scene::Scene;
 use crate::schemes::{clipmap_options, Built, Map, Scheme, View};
+use crate::volumes::{casters_volume_distance, volume_distance};
 use glam::{DMat3, DMat4, DVec3, DVec4};
 use serde::Serialize;
 
@@ -65,6 +66,10 @@ pub struct Geometry {
     /// `FrameMap::receivers_volume` against the rebuilt B ([`volume_distance`]), over the
     /// camera frustum's size (far · (1 + tan θ + tan θ · aspect)), largest over the maps.
     pub receivers_volume_rel_diff: f64,
+    /// `FrameMap::casters_volume` against the rebuilt B swept toward the light and cut by the
+    /// map's depth range ([`casters_volume_distance`]), over the frustum's size, largest over
+    /// the maps.
+    pub casters_volume_rel_diff: f64,
     /// Cascades: split ranges against render-check's planes ([`crate::options::split_rel_diff`]).
     pub split_rel_diff: Option<f64>,
     /// With `depth_clamp` ([`crate::schemes::Options`]): the map's depth (\[0, 1\]) over the
@@ -78,7 +83,7 @@ pub struct Geometry {
 /// A half-space `n · p + d ≤ 0` (eye space).
 type Plane = DVec4;
 
-fn side(pl: Plane, p: DVec3) -> f64 {
+pub(crate) fn side(pl: Plane, p: DVec3) -> f64 {
     pl.truncate().dot(p) + pl.w
 }
 
@@ -255,49 +260,6 @@ pub fn body_distance(got: &[DVec3], want: &[DVec3], planes: &[Plane]) -> f64 {
         MISSING
     } else {
         0.0
-    }
-}
-
-/// A culling volume `volume` against the polytope `planes` with vertices `body`, over `size`:
-/// the larger of the farthest vertex outside the volume (a volume that cuts B) and, for each
-/// facet of the polytope (a plane holding three of its vertices or more), the distance from the
-/// facet's centroid along its outward normal to where the ray leaves the volume (a volume
-/// without that face, or looser than it). [`MISSING`] for an empty body or volume.
-pub fn volume_distance(volume: &[Plane], body: &[DVec3], planes: &[Plane], size: f64) -> f64 {
-    if body.is_empty() || volume.is_empty() {
-        return MISSING;
-    }
-    let cut = body
-        .iter()
-        .flat_map(|&p| volume.iter().map(move |&pl| side(pl, p)))
-        .fold(0.0f64, f64::max);
-    let tol = 1e-9 * size;
-    let mut loose = 0.0f64;
-    for &pl in planes {
-        let on: Vec<DVec3> = body
-            .iter()
-            .copied()
-            .filter(|&p| side(pl, p).abs() <= tol)
-            .collect();
-        if on.len() < 3 {
-            continue;
-        }
-        let c = on.iter().copied().sum::<DVec3>() / on.len() as f64;
-        let n = pl.truncate().normalize();
-        // The ray c + λ n leaves the half-space of a volume plane q (q·n > 0) at
-        // λ = −side(q, c) / (q·n); it leaves the volume at the least such λ.
-        let exit = volume
-            .iter()
-            .filter(|q| q.truncate().dot(n) > 1e-12)
-            .map(|&q| -side(q, c) / q.truncate().dot(n))
-            .fold(f64::INFINITY, f64::min);
-        loose = loose.max(exit.max(0.0));
-    }
-    let d = cut.max(loose) / size;
-    if d.is_finite() {
-        d
-    } else {
-        MISSING
     }
 }
 
@@ -563,6 +525,7 @@ pub fn measure(scheme: Scheme, view: &View, scene: &Scene, built: &Built, res: u
         depth_bias_ratio: [f64::INFINITY, 0.0],
         texel_world_ratio: 0.0,
         receivers_volume_rel_diff: 0.0,
+        casters_volume_rel_diff: 0.0,
         split_rel_diff: crate::options::split_rel_diff(built),
         depth_clamp_fill: (built.depth_clamp && scheme != Scheme::Faces).then_some(0.0),
     };
@@ -648,6 +611,10 @@ pub fn measure(scheme: Scheme, view: &View, scene: &Scene, built: &Built, res: u
         g.receivers_volume_rel_diff = g
             .receivers_volume_rel_diff
             .max(volume_distance(&volume, &body, &planes, size));
+        let casters: Vec<Plane> = map.casters.planes().iter().map(|&p| to_eye * p).collect();
+        let range = (&map.built, built.depth_clamp);
+        let d = casters_volume_distance(&casters, (&body, &planes), l, range, size);
+        g.casters_volume_rel_diff = g.casters_volume_rel_diff.max(d);
         if body.is_empty() {
             continue;
         }

@@ -27,4 +27,5 @@ pub mod self_test;
 pub mod shadows;
 pub mod snap;
 pub mod targets;
+pub mod volumes;
 pub mod warpfit;

@@ -14,7 +14,7 @@
 //! - **`depth_clamp`**: the map's depth over the rebuilt B must span \[0, 1\] exactly
 //!   (`depth_clamp_fill`): the casters are left to the device's clamp.
 //! - **`receivers_volume`** is measured in every case, built-in ones included
-//!   (`receivers_volume_rel_diff`, [`crate::geometry::volume_distance`]).
+//!   (`receivers_volume_rel_diff`, [`crate::volumes::volume_distance`]).
 //! - **`storage_factor`**: the reported S̄ against M_x M_z of the paper's map (Lloyd 2006 §4.2,
 //!   §4.4) over each body, with the reported M_x and M_z (`paper_frame_rel_diff`, as measured in
 //!   the rendered cases).
@@ -22,7 +22,7 @@
 use crate::faults::Fault;
 use crate::geometry::Geometry;
 use crate::paper_error::PaperErrors;
-use crate::schemes::{build_with, setups, Built, Scheme, View};
+use crate::schemes::{build, setups, Built, Scheme, View};
 use serde::Serialize;
 use shadow_aliasing::analytic::partition::SplitScheme;
 use shadow_aliasing::maps::ClipDepth;
@@ -239,7 +239,7 @@ pub fn measure(
     let (width, height) = case.options.screen.unwrap_or((width, height));
     let view = View::new(&scene.camera, scene.light(), width, height)?;
     let res = scene.map_resolution;
-    let built = build_with(
+    let built = build(
         case.scheme,
         &view,
         &scene,

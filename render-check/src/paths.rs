@@ -30,7 +30,7 @@ use crate::faults::Fault;
 use crate::gpu::{FrameOutput, Gpu, Lookup, PathPass};
 use crate::run::{Sizes, Upload};
 use crate::scene::{lift, ray_occluded, Mesh, Scene, FACING};
-use crate::schemes::{build, Scheme, View};
+use crate::schemes::{build, Options, Scheme, View};
 use crate::shadows::box_contains;
 use glam::{DMat4, DVec3};
 use serde::Serialize;
@@ -530,6 +530,7 @@ pub fn check(
         res,
         sizes.fault,
         sizes.render.clip_depth,
+        &Options::default(),
     )?;
     let mut s = sizes;
     s.render.lookup = Lookup::FirstSurface;

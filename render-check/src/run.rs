@@ -4,7 +4,7 @@ use crate::analysis::{analyse, pixel_point, Analysis, Measured};
 use crate::faults::Fault;
 use crate::gpu::{FrameInput, Gpu, Lookup};
 use crate::scene::{Mesh, Scene, FACING};
-use crate::schemes::{build, Built, Scheme, Select, View};
+use crate::schemes::{build, Built, Options, Scheme, Select, View};
 use glam::{DMat4, DVec3};
 use serde::Serialize;
 use shadow_aliasing::frame::GpuShadowMap;
@@ -248,6 +248,7 @@ pub fn run_case(
         res,
         sizes.fault,
         sizes.render.clip_depth,
+        &Options::default(),
     )?;
     let geometry = crate::geometry::measure(scheme, &view, scene, &built, res);
     let up = Upload::new(&built, &mesh, sizes);
@@ -362,7 +363,15 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
     let step = shimmer_step(&view0, res)?;
     // Sample points from frame 0.
     let depth_conv = sizes.render.clip_depth;
-    let built0 = build(scheme, &view0, scene, res, sizes.fault, depth_conv)?;
+    let built0 = build(
+        scheme,
+        &view0,
+        scene,
+        res,
+        sizes.fault,
+        depth_conv,
+        &Options::default(),
+    )?;
     let up0 = Upload::new(&built0, &mesh, sizes);
     let out0 = gpu.render(&up0.input(&view0, &mesh, &built0, res, sizes))?;
     let points = edge_points(&out0, &view0, scene, &mesh, sizes)?;
@@ -375,7 +384,15 @@ pub fn shimmer(gpu: &Gpu, scene: &Scene, scheme: Scheme, sizes: Sizes) -> Result
     for i in 0..sizes.frames {
         let s = moved(scene, i, step);
         let view = View::new(&s.camera, s.light(), sizes.width, sizes.height)?;
-        let built = build(scheme, &view, &s, res, sizes.fault, depth_conv)?;
+        let built = build(
+            scheme,
+            &view,
+            &s,
+            res,
+            sizes.fault,
+            depth_conv,
+            &Options::default(),
+        )?;
         let up = Upload::new(&built, &mesh, sizes);
         let depth = gpu.render_maps(&up.input(&view, &mesh, &built, res, sizes))?;
         let states: Vec<Option<bool>> = points

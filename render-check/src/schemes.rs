@@ -431,34 +431,13 @@ pub fn clipmap_options(res: u32) -> ClipmapOptions {
 /// API ([`shadow_aliasing::frame::frame`]): each map is focused on the receivers in view, its
 /// depth range reaches every caster that can shadow them, and the GPU renders with the frame's
 /// own matrix in depth \[0, 1\]. `fault` injects one deliberate fault ([`Fault`], the check that
-/// the targets can fail) into the frame's input, its matrices or the maps' selection.
+/// the targets can fail) into the frame's input, its matrices or the maps' selection; `options`
+/// are the frame options beyond the defaults ([`Options`], [`crate::options`];
+/// `Options::default()` for the built-in set-ups).
 ///
 /// # Errors
 /// The crate's error, as text; a frame with no map (the scene out of view) is an error here.
 pub fn build(
-    scheme_: Scheme,
-    view: &View,
-    scene: &Scene,
-    res: u32,
-    fault: Option<Fault>,
-    clip_depth: ClipDepth,
-) -> Result<Built, String> {
-    build_with(
-        scheme_,
-        view,
-        scene,
-        res,
-        fault,
-        clip_depth,
-        &Options::default(),
-    )
-}
-
-/// [`build`] with frame options beyond the defaults ([`Options`], [`crate::options`]).
-///
-/// # Errors
-/// As [`build`].
-pub fn build_with(
     scheme_: Scheme,
     view: &View,
     scene: &Scene,

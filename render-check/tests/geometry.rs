@@ -4,32 +4,61 @@
 //! would change it.
 
 use glam::{DMat4, DVec3, DVec4};
+use render_check::faults::Fault;
 use render_check::geometry::{
     body_distance, clipmap_offset, least_sphere, measure, vertices, Geometry, MISSING,
 };
-use render_check::schemes::{build, schemes_for, setups, Built, Scheme, View};
-use render_check::targets::geometry_violations;
+use render_check::schemes::{build, schemes_for, setups, Built, Options, Scheme, Setup, View};
+use render_check::targets::{geometry_violations, CASTERS_VOLUME_REL_DIFF};
+use render_check::volumes::{casters_volume_distance, sweep_excess};
 use shadow_aliasing::maps::ClipDepth;
 
 fn case(setup: &str, scheme: Scheme, w: u32, h: u32) -> (View, render_check::scene::Scene, Built) {
     let s = setups().into_iter().find(|s| s.name == setup).unwrap();
+    let (view, built) = built_for(&s, scheme, (w, h), None, ClipDepth::ZeroToOne);
+    (view, s.scene, built)
+}
+
+/// `scheme` built for the set-up `s` at a `w × h` screen, the scene's resolution, in `depth`,
+/// the default options, with `fault` injected.
+fn built_for(
+    s: &Setup,
+    scheme: Scheme,
+    (w, h): (u32, u32),
+    fault: Option<Fault>,
+    depth: ClipDepth,
+) -> (View, Built) {
     let view = View::new(&s.scene.camera, s.scene.light(), w, h).unwrap();
+    let res = s.scene.map_resolution;
     let built = build(
         scheme,
         &view,
         &s.scene,
-        s.scene.map_resolution,
-        None,
-        ClipDepth::ZeroToOne,
+        res,
+        fault,
+        depth,
+        &Options::default(),
     )
     .unwrap();
-    (view, s.scene, built)
+    (view, built)
 }
 
 fn geometry(setup: &str, scheme: Scheme, edit: impl Fn(&mut Built)) -> Geometry {
     let (view, scene, mut built) = case(setup, scheme, 320, 240);
     edit(&mut built);
     measure(scheme, &view, &scene, &built, scene.map_resolution)
+}
+
+/// The unit cube [0, 1]³ as six half-spaces `n · p + d ≤ 0`.
+fn unit_cube() -> Vec<DVec4> {
+    vec![
+        DVec4::new(1.0, 0.0, 0.0, -1.0),
+        DVec4::new(-1.0, 0.0, 0.0, 0.0),
+        DVec4::new(0.0, 1.0, 0.0, -1.0),
+        DVec4::new(0.0, -1.0, 0.0, 0.0),
+        DVec4::new(0.0, 0.0, 1.0, -1.0),
+        DVec4::new(0.0, 0.0, -1.0, 0.0),
+    ]
 }
 
 fn fails(g: &Geometry, target: &str) -> bool {
@@ -44,9 +73,8 @@ fn every_builtin_case_meets_the_geometry_targets() {
         for depth in [ClipDepth::ZeroToOne, ClipDepth::Reversed] {
             for s in setups() {
                 for scheme in schemes_for(&s.name) {
-                    let view = View::new(&s.scene.camera, s.scene.light(), w, h).unwrap();
+                    let (view, built) = built_for(&s, scheme, (w, h), None, depth);
                     let res = s.scene.map_resolution;
-                    let built = build(scheme, &view, &s.scene, res, None, depth).unwrap();
                     let g = measure(scheme, &view, &s.scene, &built, res);
                     let v = geometry_violations(&g);
                     assert!(v.is_empty(), "{} {} {w}×{h}: {v:?}", s.name, scheme.name());
@@ -59,14 +87,7 @@ fn every_builtin_case_meets_the_geometry_targets() {
 #[test]
 fn vertices_of_a_box_cut_by_a_plane() {
     // The unit cube [0, 1]³ cut by x + y ≤ 1: a prism with 6 vertices.
-    let mut planes = vec![
-        DVec4::new(1.0, 0.0, 0.0, -1.0),
-        DVec4::new(-1.0, 0.0, 0.0, 0.0),
-        DVec4::new(0.0, 1.0, 0.0, -1.0),
-        DVec4::new(0.0, -1.0, 0.0, 0.0),
-        DVec4::new(0.0, 0.0, 1.0, -1.0),
-        DVec4::new(0.0, 0.0, -1.0, 0.0),
-    ];
+    let mut planes = unit_cube();
     assert_eq!(vertices(&planes, 1e-12).len(), 8);
     let n = DVec3::new(1.0, 1.0, 0.0).normalize();
     planes.push(n.extend(-n.dot(DVec3::new(1.0, 0.0, 0.0))));
@@ -180,18 +201,16 @@ fn the_geometry_targets_fail_on_faulty_output() {
     // The receivers left out of the frame (render-check's fault `receivers-unbounded`): every
     // focus body its whole view slice.
     let s = setups().into_iter().find(|s| s.name == "overhead").unwrap();
-    let view = View::new(&s.scene.camera, s.scene.light(), 320, 240).unwrap();
-    let fault = Some(render_check::faults::Fault::ReceiversUnbounded);
-    let built = build(
+    let fault = Some(Fault::ReceiversUnbounded);
+    let zo = ClipDepth::ZeroToOne;
+    let (view, built) = built_for(&s, Scheme::Lispsm, (320, 240), fault, zo);
+    let g = measure(
         Scheme::Lispsm,
         &view,
         &s.scene,
-        1024,
-        fault,
-        ClipDepth::ZeroToOne,
-    )
-    .unwrap();
-    let g = measure(Scheme::Lispsm, &view, &s.scene, &built, 1024);
+        &built,
+        s.scene.map_resolution,
+    );
     assert!(fails(&g, "body_rel_diff"), "{g:?}");
     // A depth bias whose slope term alone is doubled, in an orthographic map (its constant term
     // is the rounding alone).
@@ -214,7 +233,6 @@ fn the_geometry_targets_fail_on_faulty_output() {
 /// `split_rel_diff` (each split range against the paper's planes) fails in every scheme.
 #[test]
 fn splits_past_their_maps_measure_finite_and_fail() {
-    use render_check::faults::Fault;
     for setup in ["overhead", "tilted_45", "grazing_10", "front_5"] {
         for scheme in [
             Scheme::Cascades,
@@ -222,17 +240,10 @@ fn splits_past_their_maps_measure_finite_and_fail() {
             Scheme::BlendedCascades,
         ] {
             let s = setups().into_iter().find(|s| s.name == setup).unwrap();
-            let view = View::new(&s.scene.camera, s.scene.light(), 320, 240).unwrap();
+            let fault = Some(Fault::SplitsPast);
+            let zo = ClipDepth::ZeroToOne;
+            let (view, built) = built_for(&s, scheme, (320, 240), fault, zo);
             let res = s.scene.map_resolution;
-            let built = build(
-                scheme,
-                &view,
-                &s.scene,
-                res,
-                Some(Fault::SplitsPast),
-                ClipDepth::ZeroToOne,
-            )
-            .unwrap();
             let g = measure(scheme, &view, &s.scene, &built, res);
             let all = [
                 g.body_rel_diff,
@@ -270,15 +281,8 @@ fn splits_past_their_maps_measure_finite_and_fail() {
 /// (unnormalised) cut plane, over the two bodies' diameter √3: 3 / √3 = √3.
 #[test]
 fn degenerate_slices_measure_finite() {
-    let cube = [
-        DVec4::new(1.0, 0.0, 0.0, -1.0),
-        DVec4::new(-1.0, 0.0, 0.0, 0.0),
-        DVec4::new(0.0, 1.0, 0.0, -1.0),
-        DVec4::new(0.0, -1.0, 0.0, 0.0),
-        DVec4::new(0.0, 0.0, 1.0, -1.0),
-        DVec4::new(0.0, 0.0, -1.0, 0.0),
-    ];
-    let mut corner = cube.to_vec();
+    let cube = unit_cube();
+    let mut corner = cube.clone();
     // x + y + z ≥ 3 as −(x + y + z) + 3 ≤ 0, not normalised: the side is 3 at the origin.
     corner.push(DVec4::new(-1.0, -1.0, -1.0, 3.0));
     let want = vertices(&corner, 1e-12);
@@ -289,7 +293,7 @@ fn degenerate_slices_measure_finite() {
     assert!((d - 3f64.sqrt()).abs() < 1e-12, "{d}");
     // A zero-thickness slab x = 1: the face's 4 vertices, diameter √2. The crate's body the
     // whole cube: (0, 0, 0) lies 1 outside x ≥ 1, over √3 (both bodies' diameter).
-    let mut face = cube.to_vec();
+    let mut face = cube.clone();
     face.push(DVec4::new(-1.0, 0.0, 0.0, 1.0));
     let want = vertices(&face, 1e-12);
     assert_eq!(want.len(), 4, "{want:?}");
@@ -300,4 +304,104 @@ fn degenerate_slices_measure_finite() {
     assert_eq!(body_distance(&[], &[], &face), 0.0);
     assert_eq!(body_distance(&whole, &[], &face), MISSING);
     assert_eq!(body_distance(&[], &want, &face), MISSING);
+}
+
+/// The sweep test by hand: the unit cube swept toward a light straight above it (the light
+/// travels along −y). A point 2 above the cube's top lies in the sweep (p + 2.5 l is the cube's
+/// centre, 0.5 inside every face); a point 0.5 beside it lies 0.5 outside x ≤ 1 whatever the
+/// move; a point 1 below it lies 1 outside y ≥ 0 and moving along the light takes it farther.
+#[test]
+fn sweep_excess_hand_values() {
+    let down = DVec3::NEG_Y;
+    let cube = unit_cube();
+    let above = sweep_excess(&cube, down, DVec3::new(0.5, 3.0, 0.5));
+    assert!((above + 0.5).abs() < 1e-15, "{above}");
+    let beside = sweep_excess(&cube, down, DVec3::new(1.5, 0.5, 0.5));
+    assert!((beside - 0.5).abs() < 1e-15, "{beside}");
+    let below = sweep_excess(&cube, down, DVec3::new(0.5, -1.0, 0.5));
+    assert!((below - 1.0).abs() < 1e-15, "{below}");
+}
+
+/// The casters' volume measurement by hand: B the unit cube, the light straight down, an
+/// orthographic map whose depth runs from y = 5 (clip z = −1, the near plane) to y = 0 (z = 1),
+/// size 1 (so the documented push-out is 10⁻⁹). The true volume is [0, 1] × [0, 5] × [0, 1]; a
+/// volume that is it pushed out by 10⁻⁹ measures 0, one not pushed out 10⁻⁹ (too tight by the
+/// push-out), one whose near plane is at y = 6 lies 1 past the depth range, one without x ≤ 1
+/// reaches the box 1 past the sweep (1 outside x ≤ 1), one cut at x = 0.5 misses B's vertices
+/// by 0.5; under depth clamp (no near plane) a volume that keeps y ≤ 5 misses the sweep capped
+/// 10 past B's top (y = 11) by 6.
+#[test]
+fn casters_volume_distance_hand_values() {
+    let cube = unit_cube();
+    let body = vertices(&cube, 1e-12);
+    let down = DVec3::NEG_Y;
+    let rows = [
+        DVec4::X,
+        DVec4::Z,
+        DVec4::new(0.0, -0.4, 0.0, 1.0),
+        DVec4::W,
+    ];
+    let clip = DMat4::from_cols(rows[0], rows[1], rows[2], rows[3]).transpose();
+    let volume = |push: f64, near: Option<f64>, x_max: Option<f64>| {
+        let mut v = vec![
+            DVec4::new(-1.0, 0.0, 0.0, -push),
+            DVec4::new(0.0, 0.0, 1.0, -1.0 - push),
+            DVec4::new(0.0, 0.0, -1.0, -push),
+            DVec4::new(0.0, -1.0, 0.0, -push),
+        ];
+        if let Some(y) = near {
+            v.push(DVec4::new(0.0, 1.0, 0.0, -y - push));
+        }
+        if let Some(x) = x_max {
+            v.push(DVec4::new(1.0, 0.0, 0.0, -x - push));
+        }
+        v
+    };
+    let d = |v: &[DVec4], clamp: bool| {
+        casters_volume_distance(v, (&body, &cube), down, (&clip, clamp), 1.0)
+    };
+    assert!(d(&volume(1e-9, Some(5.0), Some(1.0)), false) < 1e-15);
+    let unpushed = d(&volume(0.0, Some(5.0), Some(1.0)), false);
+    assert!((unpushed - 1e-9).abs() < 1e-15, "{unpushed}");
+    let far_near = d(&volume(1e-9, Some(6.0), Some(1.0)), false);
+    assert!((far_near - 1.0).abs() < 1e-12, "{far_near}");
+    let open = d(&volume(1e-9, Some(5.0), None), false);
+    assert!((open - 1.0).abs() < 1e-12, "{open}");
+    let cut = d(&volume(1e-9, Some(5.0), Some(0.5)), false);
+    assert!((cut - 0.5).abs() < 1e-12, "{cut}");
+    assert!(d(&volume(1e-9, None, Some(1.0)), true) < 1e-15);
+    let kept = d(&volume(1e-9, Some(5.0), Some(1.0)), true);
+    assert!((kept - 6.0).abs() < 1e-12, "{kept}");
+}
+
+/// Every built-in set-up at 160 × 120 (every scheme) meets `casters_volume_rel_diff`, and fails
+/// it when its first map's casters' volume is the receivers' volume (which cuts the sweep toward
+/// the light), or is pushed out by another 10⁻⁹ of the frustum's size (a volume looser than the
+/// crate's documentation says: every vertex at least that far outside the sweep).
+#[test]
+fn casters_volume_on_every_builtin_setup() {
+    for s in setups() {
+        for scheme in schemes_for(&s.name) {
+            let (view, scene, built) = case(&s.name, scheme, 160, 120);
+            let res = scene.map_resolution;
+            let g = measure(scheme, &view, &scene, &built, res);
+            let at = format!("{} {}: {g:?}", s.name, scheme.name());
+            assert!(g.casters_volume_rel_diff <= CASTERS_VOLUME_REL_DIFF, "{at}");
+            assert!(!fails(&g, "casters_volume_rel_diff"), "{at}");
+            let mut cut = built.clone();
+            cut.maps[0].casters = cut.maps[0].receivers;
+            let g = measure(scheme, &view, &scene, &cut, res);
+            assert!(fails(&g, "casters_volume_rel_diff"), "{at}");
+            let size = view.frustum.far()
+                * (1.0 + view.frustum.tan_half_fov() * (1.0 + view.frustum.aspect()));
+            let mut loose = built.clone();
+            loose.maps[0].casters = loose.maps[0].casters.grown(1e-9 * size).unwrap();
+            let g = measure(scheme, &view, &scene, &loose, res);
+            assert!(fails(&g, "casters_volume_rel_diff"), "{at}");
+            // At least the extra push-out, wherever the sweep's faces meet (measured 1.0000·10⁻⁹
+            // to 9.6·10⁻⁹, the face maps' narrow prisms the most).
+            let d = g.casters_volume_rel_diff;
+            assert!((0.999e-9..1e-7).contains(&d), "{at}");
+        }
+    }
 }

@@ -10,7 +10,7 @@ use render_check::run::{
     case_clip_depth, draws, run_case, run_full, CaseSummary, Render, Sizes, Upload,
 };
 use render_check::scene::{Mesh, Scene};
-use render_check::schemes::{build, clipmap_options, setups, Scheme, View};
+use render_check::schemes::{build, clipmap_options, setups, Built, Options, Scheme, View};
 use render_check::targets::violations;
 use shadow_aliasing::frame::LevelChoice;
 use shadow_aliasing::maps::ClipDepth;
@@ -78,6 +78,15 @@ fn papers_measured(c: &CaseSummary) {
         c.scheme == "minimax",
         "{c:?}"
     );
+}
+
+/// `scheme` built for `scene` at [`SIZES`]' screen, the scene's resolution, depth \[0, 1\], no
+/// fault, the default options.
+fn built_at_sizes(scene: &Scene, scheme: Scheme) -> (View, Built) {
+    let view = View::new(&scene.camera, scene.light(), SIZES.width, SIZES.height).unwrap();
+    let (res, zo) = (scene.map_resolution, ClipDepth::ZeroToOne);
+    let built = build(scheme, &view, scene, res, None, zo, &Options::default()).unwrap();
+    (view, built)
 }
 
 fn setup(name: &str) -> Scene {
@@ -261,9 +270,8 @@ fn culling_by_the_casters_volume_changes_no_pixel() {
         let scene = setup(name);
         let mesh = Mesh::build(&scene);
         for scheme in Scheme::ALL {
-            let view = View::new(&scene.camera, scene.light(), SIZES.width, SIZES.height).unwrap();
+            let (view, built) = built_at_sizes(&scene, scheme);
             let res = scene.map_resolution;
-            let built = build(scheme, &view, &scene, res, None, ClipDepth::ZeroToOne).unwrap();
             let render = |cull: bool| {
                 let sizes = Sizes {
                     render: Render {
@@ -422,17 +430,8 @@ fn clipmap_levels_are_the_level_choice() {
     let gpu = gpu();
     let scene = setup("tilted_45");
     let (w, h) = (SIZES.width, SIZES.height);
-    let view = View::new(&scene.camera, scene.light(), w, h).unwrap();
+    let (view, built) = built_at_sizes(&scene, Scheme::Clipmap);
     let res = scene.map_resolution;
-    let built = build(
-        Scheme::Clipmap,
-        &view,
-        &scene,
-        res,
-        None,
-        ClipDepth::ZeroToOne,
-    )
-    .unwrap();
     let mesh = Mesh::build(&scene);
     let up = Upload::new(&built, &mesh, SIZES);
     let out = gpu

@@ -6,7 +6,7 @@
 
 use glam::{DMat4, DVec3};
 use render_check::run::{moved, shimmer_step};
-use render_check::schemes::{build, setups, Built, Scheme, View};
+use render_check::schemes::{build, setups, Built, Options, Scheme, View};
 use render_check::snap::grid_offset_texels;
 use render_check::targets::STABLE_GRID_TEXELS;
 use shadow_aliasing::maps::ClipDepth;
@@ -26,6 +26,7 @@ fn frame(setup: &str, i: usize) -> (View, Built) {
         res,
         None,
         ClipDepth::ZeroToOne,
+        &Options::default(),
     )
     .unwrap();
     (view, built)

@@ -84,7 +84,7 @@ pub fn n_prime_scaled(built: DMat4, body: &[DVec3], k: f64) -> Option<DMat4> {
 mod tests {
     use super::*;
     use crate::faults::Fault;
-    use crate::schemes::{Scheme, View};
+    use crate::schemes::Scheme;
     use shadow_aliasing::maps::{fit_warp, light_space};
     use shadow_aliasing::{NPrime, ViewFrustum};
 
@@ -121,14 +121,10 @@ mod tests {
     /// axis, the gradient of w) is twice `ShadowMatrix::n_prime`.
     #[test]
     fn n_prime_doubled_on_frame_maps() {
-        let setup = &crate::schemes::setups()[1];
-        let view = View::new(&setup.scene.camera, setup.scene.light(), 320, 240).unwrap();
         let mut checked = 0;
         for scheme in [Scheme::Lispsm, Scheme::Cascades, Scheme::Faces] {
-            let zo = shadow_aliasing::maps::ClipDepth::ZeroToOne;
-            let clean = crate::schemes::build(scheme, &view, &setup.scene, 1024, None, zo).unwrap();
-            let fault = Some(Fault::NPrimeDouble);
-            let f = crate::schemes::build(scheme, &view, &setup.scene, 1024, fault, zo).unwrap();
+            let clean = crate::faults::tests::built(scheme, None);
+            let f = crate::faults::tests::built(scheme, Some(Fault::NPrimeDouble));
             for ((m, mf), body) in clean.maps.iter().zip(&f.maps).zip(&clean.bodies) {
                 let n = m.reported.n_prime;
                 if !n.is_finite() {
