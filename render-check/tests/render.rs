@@ -699,6 +699,7 @@ fn scene_file_run_writes_the_summary_with_exactly_the_fields() {
         "depth_bias_ratio",
         "texel_world_ratio",
         "receivers_volume_rel_diff",
+        "casters_volume_rel_diff",
         "split_rel_diff",
         "depth_clamp_fill",
         "lens_colour_pixels",
