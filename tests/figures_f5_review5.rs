@@ -74,3 +74,77 @@ fn lloyd2006_fig4_depth_planes_do_not_merge() {
         }
     }
 }
+
+/// §4.7.3: the ring key's labels (10°, 20°, 30°, 60°, 90°) stood on white boxes (80 % opaque)
+/// that hid the data of lloyd2006-fig7's (a) in one column (and of martin-tan-fig6's disk). Now
+/// no translucent white box lies over any heat map (the embedded images), so a label hides only
+/// the colour under its glyphs, and the rings are interrupted under each label's glyphs (no
+/// point of a ring's polyline, ink #1E1E1E, inside a label's measured box, digits' ink
+/// height), as a contour label interrupts its contour; five labels per keyed disk.
+#[test]
+fn ring_labels_hide_no_data_under_boxes() {
+    let font = read::Font::dejavu();
+    let single = forms()[2].1;
+    let double = forms()[0].1;
+    for (name, opts) in [
+        ("lloyd2006-fig7", &single),
+        ("martin-tan-fig6", &single),
+        ("lloyd2006-fig7", &double),
+        ("martin-tan-fig6", &double),
+    ] {
+        let svg = read::render_svg(name, opts);
+        let rect = |l: &str| {
+            let (x, y) = (read::attr(l, "x")?, read::attr(l, "y")?);
+            Some([
+                x,
+                y,
+                x + read::attr(l, "width")?,
+                y + read::attr(l, "height")?,
+            ])
+        };
+        let images: Vec<[f64; 4]> = svg
+            .lines()
+            .filter(|l| l.starts_with("<image"))
+            .filter_map(rect)
+            .collect();
+        assert!(!images.is_empty(), "{name}: no heat map");
+        for l in svg.lines().filter(|l| {
+            l.starts_with("<rect") && l.contains("fill=\"#FFFFFF\"") && l.contains(" opacity=\"")
+        }) {
+            let b = rect(l).unwrap();
+            for i in &images {
+                let overlap = (b[2].min(i[2]) - b[0].max(i[0])).max(0.0)
+                    * (b[3].min(i[3]) - b[1].max(i[1])).max(0.0);
+                assert!(
+                    overlap < 1.0,
+                    "{name}: a white box {b:?} over the data {i:?}"
+                );
+            }
+        }
+        let labels: Vec<[f64; 4]> = read::texts(&font, &svg)
+            .into_iter()
+            .filter(|t| ["10°", "20°", "30°", "60°", "90°"].contains(&t.content.as_str()))
+            .map(|t| {
+                // The digits' ink: from the cap height (0.73 em) above the baseline to it; the
+                // labels are set centred (dy 0.5ex: the baseline 0.27 em below y).
+                let base = t.y + 0.27 * t.fs;
+                [t.bbox[0], base - 0.73 * t.fs, t.bbox[2], base]
+            })
+            .collect();
+        assert!(
+            labels.len() == 5 || labels.len() == 10,
+            "{name}: {} ring labels",
+            labels.len()
+        );
+        for (_, p) in strokes(&svg, "#1E1E1E") {
+            for q in &p {
+                for b in &labels {
+                    assert!(
+                        !(q.0 > b[0] && q.0 < b[2] && q.1 > b[1] && q.1 < b[3]),
+                        "{name}: a ring runs through a label at {q:?} (label {b:?})"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -408,7 +408,12 @@ pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
         let (u, v) = to_units(p);
         (u + f64::from(base.0), v + f64::from(base.1))
     };
-    super::hemisphere_key::draw_rings(area, &abs, diameter)?;
+    let gaps = if key {
+        super::hemisphere_key::key_boxes(area, &to_px)?
+    } else {
+        Vec::new()
+    };
+    super::hemisphere_key::draw_rings(area, &abs, diameter, &gaps)?;
     let style = TextStyle::from((FONT, 13).into_font());
     let label = |text: &str, at: (f64, f64), pos: Pos| {
         area.draw(&Text::new(text.to_string(), to_px(at), style.pos(pos)))
@@ -444,7 +449,7 @@ pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
         Pos::new(HPos::Center, VPos::Top),
     )?;
     if key {
-        super::hemisphere_key::draw_ring_key(area, to_px)?;
+        super::hemisphere_key::draw_ring_key(area, &to_px)?;
     }
     Ok((top.max(0) as u32, bottom.max(0) as u32))
 }

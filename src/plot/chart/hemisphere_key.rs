@@ -22,21 +22,32 @@ pub(crate) const RING_INK: (u8, u8, u8) = (30, 30, 30);
 /// under each ring printed as a second ring beside it), and where `diameter` the horizontal
 /// diameter, the vertical plane through the view direction (light straight behind, overhead,
 /// straight in front), in the same style; `abs` places a disk point (radius 1) in absolute
-/// backend units, at sub-unit positions, so that the rings are round, not stepped.
+/// backend units, at sub-unit positions, so that the rings are round, not stepped. Each line
+/// is interrupted where it would run through one of the boxes `gaps` (absolute backend units
+/// [x min, y min, x max, y max]: the ring key's labels, [`key_boxes`]), as a contour label
+/// interrupts its contour.
 pub(crate) fn draw_rings<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     abs: &dyn Fn((f64, f64)) -> (f64, f64),
     diameter: bool,
+    gaps: &[[f64; 4]],
 ) -> Result<(), Fail> {
     let stroke = |points: Vec<(f64, f64)>| {
-        area.draw(&Fine {
-            points,
-            colour: BackendColor {
-                alpha: 1.0,
-                rgb: RING_INK,
-            },
-            stroke: Some(1),
-        })
+        let inside = |p: &(f64, f64)| {
+            gaps.iter()
+                .any(|g| p.0 >= g[0] && p.0 <= g[2] && p.1 >= g[1] && p.1 <= g[3])
+        };
+        for run in points.split(inside).filter(|r| r.len() >= 2) {
+            area.draw(&Fine {
+                points: run.to_vec(),
+                colour: BackendColor {
+                    alpha: 1.0,
+                    rgb: RING_INK,
+                },
+                stroke: Some(1),
+            })?;
+        }
+        Ok::<(), Fail>(())
     };
     for deg in RINGS {
         let el = deg.to_radians();
@@ -47,7 +58,13 @@ pub(crate) fn draw_rings<DB: DrawingBackend>(
         )?;
     }
     if diameter {
-        stroke(vec![abs((-1.0, 0.0)), abs((1.0, 0.0))])?;
+        // In pieces of a fiftieth of the radius where a label may interrupt it.
+        let n = if gaps.is_empty() { 1 } else { 100 };
+        stroke(
+            (0..=n)
+                .map(|k| abs((2.0 * f64::from(k) / f64::from(n) - 1.0, 0.0)))
+                .collect(),
+        )?;
     }
     Ok(())
 }
@@ -72,40 +89,69 @@ pub(crate) const KEY: [(&str, f64, f64); 5] = [
     ("90°", 90.0, 0.0),
 ];
 
-/// Writes [`KEY`] into a hemisphere panel whose disk point `(x, y)` (radius 1) lies at
-/// `to_px((x, y))` of `area`: each label on a light box that interrupts its ring, as a contour
-/// label does.
-pub(crate) fn draw_ring_key<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    to_px: impl Fn((f64, f64)) -> (i32, i32),
-) -> Result<(), Fail> {
+/// The text style of the key's labels: smaller in one column.
+fn key_style() -> TextStyle<'static> {
     let size = if super::column() == super::super::Column::Single {
         KEY_TEXT_SINGLE
     } else {
         KEY_TEXT
     };
-    let style = TextStyle::from((FONT, size).into_font());
+    TextStyle::from((FONT, size).into_font())
+}
+
+/// Each label of [`KEY`] in a hemisphere panel whose disk point `(x, y)` (radius 1) lies at
+/// `to_px((x, y))` of `area`: its text, its centre and the box [x min, y min, x max, y max]
+/// (units of `area`) its glyphs take and a unit round them, from 0.77 h above the centre to
+/// 0.32 h below (the digits and ° have no descent, and the PNG sets the text up to 3 units
+/// higher than the SVG: this covers them in both).
+fn key_labels<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    to_px: impl Fn((f64, f64)) -> (i32, i32),
+) -> Result<Vec<(&'static str, (i32, i32), [i32; 4])>, Fail> {
+    let style = key_style();
+    let mut out = Vec::new();
     for (text, elevation, around) in KEY {
         // hemisphere_xy draws azimuth az at angle az − π around the centre (anticlockwise
         // from +x, in front; the viewer's right, az = π/2, at −y).
         let azimuth = std::f64::consts::PI + around.to_radians();
         let (x, y) = to_px(hemisphere_xy(elevation.to_radians(), azimuth));
         let (w, h) = area.estimate_text_size(text, &style)?;
-        // The box from 0.77 h above the label's centre to 0.32 h below: the digits and ° have
-        // no descent, and centred on the label the box stood a unit (SVG) to 3 units (PNG,
-        // which sets the text higher) below the glyphs; this covers them in both.
-        let hw = (w as i32 + 1) / 2;
+        let hw = (w as i32 + 1) / 2 + 1;
         let (up, down) = (
             (0.77 * h as f64).round() as i32,
             (0.32 * h as f64).round() as i32,
         );
-        area.draw(&Rectangle::new(
-            [(x - hw, y - up), (x + hw, y + down)],
-            RGBAColor(255, 255, 255, 0.8).filled(),
-        ))?;
+        out.push((text, (x, y), [x - hw, y - up, x + hw, y + down]));
+    }
+    Ok(out)
+}
+
+/// The boxes of [`key_labels`] in absolute backend units, for [`draw_rings`]' `gaps`.
+pub(crate) fn key_boxes<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    to_px: impl Fn((f64, f64)) -> (i32, i32),
+) -> Result<Vec<[f64; 4]>, Fail> {
+    let (bx, by) = area.get_base_pixel();
+    Ok(key_labels(area, to_px)?
+        .into_iter()
+        .map(|(_, _, b)| [b[0] + bx, b[1] + by, b[2] + bx, b[3] + by].map(f64::from))
+        .collect())
+}
+
+/// Writes [`KEY`] into a hemisphere panel whose disk point `(x, y)` (radius 1) lies at
+/// `to_px((x, y))` of `area`: each label on its ring, which [`draw_rings`] interrupts there
+/// (with the gaps of [`key_boxes`]), as a contour label does, and with no box under it, so
+/// that the panel's colours show round and between its glyphs (the fifth figure review: the
+/// labels' white boxes hid a noticeable share of (a)'s data in one column).
+pub(crate) fn draw_ring_key<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    to_px: impl Fn((f64, f64)) -> (i32, i32),
+) -> Result<(), Fail> {
+    let style = key_style();
+    for (text, at, _) in key_labels(area, to_px)? {
         area.draw(&Text::new(
             text,
-            (x, y),
+            at,
             style.pos(Pos::new(HPos::Center, VPos::Center)),
         ))?;
     }
