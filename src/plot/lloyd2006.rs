@@ -565,7 +565,7 @@ pub(super) fn fig12() -> Result<Keyed, Fail> {
     let (mut a, _) = fig12_panels(&view, Column::Single)?;
     a.y.label = SINGLE_S_AXIS.into();
     // One panel: no letter.
-    a.title = "light overhead and behind".into();
+    a.title = FIG12_A_TITLE[4..].into();
     let single = Charts {
         size: (Column::Single.width(), SINGLE_HEIGHT),
         title: "S̄ against the number of maps".into(),
@@ -586,15 +586,19 @@ pub(super) fn fig12() -> Result<Keyed, Fail> {
     })
 }
 
+/// Fig 12 (a)'s title: it names each light's line style and FP+ZP+W's marker (the fifth
+/// review: "light overhead and behind" needed the key to tell the two families apart).
+const FIG12_A_TITLE: &str = "(a) overhead ▲ solid, behind ⬢ dashed";
+
 /// Fig 12's panels for the page `layout`: (a) every scheme for both lights, its key grouped
 /// by light (two columns, overhead and behind, across two page columns; one column, overhead
 /// first, in one), and (b) the light-behind crossover enlarged.
 fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineChart), Fail> {
-    // Both lights in one panel, told apart by the key: overhead solid (FP+ZP+W triangles),
-    // behind the dashed ZP = ZP+W line and FP+ZP+W's hexagons (a title "behind (dashed)" was
-    // wrong for the hexagons, the fourth review).
+    // Both lights in one panel, told apart by the title and the key: overhead solid (FP+ZP+W
+    // triangles), behind the dashed ZP = ZP+W line and FP+ZP+W's hexagons (a title "behind
+    // (dashed)" was wrong for the hexagons, the fourth review).
     let mut c = LineChart::new(
-        "(a) light overhead and behind",
+        FIG12_A_TITLE,
         Axis::integer("number of shadow maps", 0.0, 40.0),
         // To the data from 2 maps on: 6.5 (ZP+W at 40 maps) to 2000 (ZP behind with 2 maps).
         Axis::log10("S̄ (texels per image pixel, log scale)", 4.0, 1e4).in_powers(),

@@ -187,33 +187,45 @@ fn fig10_one_column_holds_the_data() {
 }
 
 /// Fig 12 (a)'s title (the fourth review: "(a) overhead, behind (dashed)", but FP+ZP+W behind
-/// is hexagons, no dashed line): it names both lights and claims no line style, the key
-/// telling the series apart. Read from both forms' panels: "light overhead and behind", and
-/// "dashed" only where every series it could mean, each "…, behind" entry, is a joined dashed
-/// line (FP+ZP+W's points have gaps between them: markers, not a line).
+/// is hexagons, no dashed line; the fifth review: "light overhead and behind" left the families
+/// to the key): "overhead ▲ solid, behind ⬢ dashed" in both forms, and what it claims is
+/// drawn: every "…, overhead" entry a solid line or markers in ▲ (TriangleUp), every
+/// "…, behind" entry a joined dashed line or markers in ⬢ (Hexagon), both glyphs in use.
 #[test]
 fn fig12_titles_claim_only_what_is_drawn() {
+    use crate::plot::chart::{Dash, Marker};
     let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
     let single = &fig.single.as_ref().unwrap().page.charts[0];
     for (c, title) in [
-        (&fig.page.charts[0], "(a) light overhead and behind"),
-        (single, "light overhead and behind"),
+        (
+            &fig.page.charts[0],
+            "(a) overhead ▲ solid, behind ⬢ dashed",
+        ),
+        (single, "overhead ▲ solid, behind ⬢ dashed"),
     ] {
-        let behind: Vec<&Series> = c
-            .series
-            .iter()
-            .filter(|s| s.label.as_deref().is_some_and(|l| l.ends_with("behind")))
-            .collect();
-        assert_eq!(behind.len(), 2, "{:?}", c.series);
-        let all_dashed_lines = behind.iter().all(|s| {
-            s.dash == crate::plot::chart::Dash::Dashed && s.points.iter().all(|p| p.1.is_finite())
-        });
-        assert!(
-            !c.title.contains("dashed") || all_dashed_lines,
-            "{}",
-            c.title
-        );
         assert_eq!(c.title, title);
+        for (light, dash, glyph) in [
+            ("overhead", Dash::Solid, Marker::TriangleUp),
+            ("behind", Dash::Dashed, Marker::Hexagon),
+        ] {
+            let family: Vec<&Series> = c
+                .series
+                .iter()
+                .filter(|s| s.label.as_deref().is_some_and(|l| l.ends_with(light)))
+                .collect();
+            assert!(family.len() >= 2, "{light}: {:?}", c.series);
+            let shape = |s: &Series| s.shape.unwrap_or(Marker::of(s.colour));
+            let marked = |s: &&&Series| s.markers && shape(s) == glyph;
+            assert!(family.iter().any(|s| marked(&s)), "{light}: no {glyph:?}");
+            for s in &family {
+                let joined = !s.markers && s.points.iter().all(|p| p.1.is_finite());
+                assert!(
+                    marked(&s) || (s.dash == dash && (joined || s.sample || s.reference)),
+                    "{light}: {:?} is neither {dash:?} nor {glyph:?}",
+                    s.label
+                );
+            }
+        }
     }
 }
 
