@@ -10,10 +10,10 @@ use std::str::FromStr;
 /// The width a figure is laid out for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Column {
-    /// Across a page's two columns: 520 units wide, one unit a point (7.2 inches).
+    /// Across a page's two columns: 520 units wide, one unit a point (7.22 inches).
     #[default]
     Double,
-    /// One column of a two-column page: 300 units wide, printed 240 points (3.3 inches) wide,
+    /// One column of a two-column page: 300 units wide, printed 240 points (3.33 inches) wide,
     /// so that a unit is 0.8 points and the smallest text (a subscript, 7.55 units) prints at
     /// 6.04 points. The panels of a figure are stacked. Only the figures of
     /// [`super::SINGLE_COLUMN`] have this layout.
@@ -51,7 +51,7 @@ impl FromStr for Column {
             "single" => Ok(Column::Single),
             _ => Err(PlotError::InvalidOption(format!(
                 "column {s:?} is neither double nor single: give double (a figure across both \
-                 columns of a page, 7.2 in) or single (one column, 3.3 in)"
+                 columns of a page, 7.22 in) or single (one column, 3.33 in)"
             ))),
         }
     }

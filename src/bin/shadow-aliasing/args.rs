@@ -161,8 +161,8 @@ pub struct FiguresArgs {
     /// point) for --column double, 540 for single.
     #[arg(long, value_name = "DPI", allow_hyphen_values = true)]
     pub dpi: Option<f64>,
-    /// Lay the figures out across a page's two columns (double, 7.2 in wide) or in one column
-    /// (single, 3.3 in, text at least 6 pt, at most 420 pt tall; every figure has both).
+    /// Lay the figures out across a page's two columns (double, 520 pt = 7.22 in wide) or in one column
+    /// (single, 240 pt = 3.33 in, text at least 6 pt, at most 420 pt tall; every figure has both).
     #[arg(long, value_enum, default_value_t = ColumnName::Double)]
     pub column: ColumnName,
 }
@@ -170,9 +170,9 @@ pub struct FiguresArgs {
 /// `figures --column`: the library's [`shadow_aliasing::plot::Column`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ColumnName {
-    /// Across both columns of a page: 520 units, 7.2 in wide.
+    /// Across both columns of a page: 520 units, 7.22 in wide.
     Double,
-    /// One column: 300 units printed 3.3 in (240 pt) wide.
+    /// One column: 300 units printed 3.33 in (240 pt) wide.
     Single,
 }
 
