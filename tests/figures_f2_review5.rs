@@ -2,7 +2,8 @@
 //! §4.13, X3, X5–X7), read back from their SVGs in every form they change in:
 //! - barroso-fig5: each overview beside its detail, the region each detail enlarges a grey box
 //!   in its overview; faces seen edge-on drawn as one line (not a flat closed outline); the far
-//!   face named in the gutter by a leader; one column's labels "z=31.62", never a bare depth
+//!   face named in the gutter by a leader; one column's labels "z = 3.162" (thin spaces,
+//!   figure review 6; "z=31.62" before), never a bare depth
 //!   that reads as a tick value; the page shorter than 640 units;
 //! - both diagrams seen from the light: axes "light-view x" and "light-view y" (no "light z");
 //!   no tinted fill that no key explains;
@@ -131,17 +132,24 @@ fn barroso_fig5_far_face_is_a_gutter_label() {
     }
 }
 
-/// §4.12.5: in one column each plane's label names its plane, set close ("z=31.62", "f=100",
-/// "n=1"), and no label is a bare depth that reads as a tick value.
+/// §4.12.5: in one column each plane's label names its plane ("z = 3.162", "n = 1", with thin
+/// spaces since figure review 6; only the details label planes, R6-barroso-fig5-2), and no
+/// label is a bare depth that reads as a tick value.
 #[test]
 fn barroso_fig5_single_labels_name_their_planes() {
     let font = read::Font::dejavu();
     let all = read::texts(&font, &read::render_svg("barroso-fig5", &single()));
     let has = |c: &str| all.iter().any(|t| t.content == c);
     for want in [
-        "n=1", "z=3.162", "z=10", "z=31.62", "f=100", "z=6.041", "z=16.13", "z=40.81",
+        "n = 1",
+        "z = 3.162",
+        "z = 10",
+        "z = 6.041",
+        "z = 16.13",
+        "z = 40.81",
     ] {
-        assert!(has(want), "no label {want:?}");
+        let want = want.replace(' ', "\u{2009}");
+        assert!(has(&want), "no label {want:?}");
     }
     for bare in ["3.162", "31.62", "6.041", "16.13", "40.81"] {
         assert!(!has(bare), "a bare depth {bare:?}");

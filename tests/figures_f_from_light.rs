@@ -196,9 +196,9 @@ fn barroso_axes_fit_the_frustum() {
 
 /// The key that names the strokes (maps nearest first, frustum, split plane) is in every form,
 /// so in `--bare` too; the planes read "n = …", "z = …", "f = …" as in Lloyd's Fig 11, except
-/// in barroso-fig5's one column, whose six narrow panels set each label close on one line,
-/// "z=31.62" (figure review 4: "f =" over "100" read as broken; review 5: the depth alone read
-/// as a tick value).
+/// in barroso-fig5's one column, whose six narrow panels set each label on one line with thin
+/// spaces, "z = 3.162" (figure review 4: "f =" over "100" read as broken; review 5: the depth
+/// alone read as a tick value; review 6: only the details label their planes).
 #[test]
 fn the_key_and_the_plane_labels_are_in_every_form() {
     for name in FIGS {
@@ -211,10 +211,9 @@ fn the_key_and_the_plane_labels_are_in_every_form() {
             // No label broken over two lines.
             assert!(!t.iter().any(|x| x.ends_with(" =")), "{name} {form}");
             if depths {
-                for want in [
-                    "n=1", "z=3.162", "z=10", "z=31.62", "f=100", "z=40.81", "z=6.041",
-                ] {
-                    assert!(t.iter().any(|x| x == want), "{name} {form}: no {want}");
+                for want in ["n = 1", "z = 3.162", "z = 10", "z = 40.81", "z = 6.041"] {
+                    let want = want.replace(' ', "\u{2009}");
+                    assert!(t.iter().any(|x| *x == want), "{name} {form}: no {want}");
                 }
                 assert!(!t.iter().any(|x| x.starts_with("z = ")), "{name} {form}");
                 continue;
@@ -556,7 +555,7 @@ fn barroso_single_type_matches_the_other_single_figures() {
     for t in &all {
         assert!(t.fs >= 10.48, "{:?} at {}", t.content, t.fs);
     }
-    for want in ["z=31.62", "−50", "Maps, nearest first:"] {
+    for want in ["z\u{2009}=\u{2009}3.162", "−50", "Maps, nearest first:"] {
         let t = all.iter().find(|t| t.content == want).unwrap();
         assert!((t.fs - 13.0 / 1.24).abs() < 0.01, "{want}: {}", t.fs);
     }

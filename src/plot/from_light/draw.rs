@@ -60,6 +60,7 @@ const ANCHOR: RGBColor = RGBColor(90, 90, 90);
 
 /// Sizes of one layout: label and key text, the gutter's width, the least distance between two
 /// labels in the gutter, the gap kept right of the gutter's text (before the next panel).
+#[derive(Clone, Copy)]
 struct Sizes {
     style: ChartStyle,
     /// The label areas of a panel without the axis's title (its ticks only): the x title is
@@ -70,7 +71,17 @@ struct Sizes {
     gutter: u32,
     step: i32,
     key: u32,
+    /// Whether the planes are labelled in the gutter (one column's overviews: not, figure
+    /// review 6: their gutter left the plots 40 units wide; the caption gives the depths).
+    labels: bool,
 }
+
+/// The gutter of one column's overview panels: no labels, a gap before the detail's y ticks.
+const OVERVIEW_GUTTER: u32 = 10;
+
+/// The least width of one column's overview cell: its title, "(a) perpendicular" (103 units at
+/// 15), and a gap to the detail's title.
+const OVERVIEW_LEAST: u32 = 124;
 
 fn sizes(single: bool, panels: usize) -> Sizes {
     if single && panels > 1 {
@@ -91,9 +102,10 @@ fn sizes(single: bool, panels: usize) -> Sizes {
             x_ticks_only: 26,
             y_ticks_only: 30,
             label: 13,
-            gutter: 58,
+            gutter: 66,
             step: 15,
             key: 13,
+            labels: true,
         }
     } else {
         Sizes {
@@ -107,6 +119,7 @@ fn sizes(single: bool, panels: usize) -> Sizes {
             gutter: 78,
             step: 16,
             key: 13,
+            labels: true,
         }
     }
 }
@@ -372,9 +385,20 @@ impl Figure for FromLight {
             };
             let (row, below) = rest.split_vertically(h);
             // Two columns of panels: the left one wider by its y axis's name, so that the two
-            // plots of a row have the same room.
+            // plots of a row have the same room. In one column the overview on the left has no
+            // gutter and is as wide as its plot is tall (its drawing about square), the detail
+            // the rest (figure review 6: each plot was about 40 units wide, 50 narrower than
+            // the row's height allowed, with maps 1 to 3 unreadable).
+            let head = sz.style.margin + sz.style.title_size + TITLE_GAP;
+            let plot_h = row_h.saturating_sub(head + sz.x_ticks_only + 2 * sz.style.margin);
             let cells: Vec<DrawingArea<DB, Shift>> = if columns == 2 {
-                let left = (bw + sz.style.y_label_area - sz.y_ticks_only) / 2;
+                let left = if single {
+                    (sz.style.y_label_area + plot_h + OVERVIEW_GUTTER)
+                        .max(OVERVIEW_LEAST)
+                        .min(bw / 2)
+                } else {
+                    (bw + sz.style.y_label_area - sz.y_ticks_only) / 2
+                };
                 let (a, b) = row.split_horizontally(left);
                 vec![a, b]
             } else {
@@ -392,11 +416,17 @@ impl Figure for FromLight {
                 if c > 0 {
                     style.y_label_area = sz.y_ticks_only;
                 }
+                let overview = single && columns == 2 && c == 0;
+                let panel_sz = Sizes {
+                    gutter: if overview { OVERVIEW_GUTTER } else { sz.gutter },
+                    labels: !overview,
+                    ..sz
+                };
                 draw_panel(
                     &cell,
                     p,
                     single && self.panels.len() > 1,
-                    &sz,
+                    &panel_sz,
                     &style,
                     (r + 1 == rows, c == 0 && !shared_y),
                 )?;
@@ -607,7 +637,10 @@ fn draw_panel<DB: DrawingBackend>(
     let spare_w = (pw - dw).max(0.0).floor() as u32;
     let spare_h = (ph - dh).max(0.0).floor() as u32;
     // The spare height under the plot, so that it stays under its title.
-    let whole = whole.margin(0, spare_h, spare_w / 2, spare_w - spare_w / 2);
+    // One column's plots are as tall as their rows allow (figure review 6): the spare width on
+    // the right, so that the y ticks of a column of panels end at one x.
+    let left = if small { 0 } else { spare_w / 2 };
+    let whole = whole.margin(0, spare_h, left, spare_w - left);
     let (cw, _) = whole.dim_in_pixel();
     debug_assert!(ch > 0 && cw > sz.gutter);
     let (cell, gutter) = whole.split_horizontally(cw - sz.gutter);
@@ -642,7 +675,8 @@ fn draw_panel<DB: DrawingBackend>(
             .into_iter()
             .filter(|&q| inside(q))
             .collect();
-        if !label.is_empty() && !corners.is_empty() && size > 0.06 * (xa.max - xa.min) {
+        if sz.labels && !label.is_empty() && !corners.is_empty() && size > 0.06 * (xa.max - xa.min)
+        {
             labelled.push((corners, label));
         }
     }
@@ -777,10 +811,11 @@ fn draw_panel<DB: DrawingBackend>(
             vec![(0, ty), (5, ty), (11 - shorter, y - gy)],
             LEADER.stroke_width(1),
         ))?;
-        // One column: on one line, "=" set close (figure review 5: the depth alone, "31.62",
-        // read as a tick value).
+        // One column: on one line, "=" between thin spaces (figure review 5: the depth alone,
+        // "31.62", read as a tick value; review 6: set close, "z=31.62", it differed from the
+        // two columns' "z = 31.62").
         let text = if small {
-            label.replace(" = ", "=")
+            label.replace(" = ", "\u{2009}=\u{2009}")
         } else {
             (*label).clone()
         };

@@ -1,0 +1,96 @@
+//! Figures after the sixth figure review (issue 35), F6's half, read back from their SVGs:
+//! - barroso-fig5 in one column: the overviews (a), (c), (e) label no plane (their depths are
+//!   in the caption), so that the detail beside each gets the row's width: each plot about 1.5
+//!   times as wide as before (R6-barroso-fig5-2); the labels "z = 10" with thin spaces, as the
+//!   two columns write them (R6-barroso-fig5-3).
+#![cfg(feature = "plot")]
+
+mod figures_style_read;
+use figures_style_read as read;
+use shadow_aliasing::plot::{Column, Options};
+
+fn single() -> Options {
+    Options {
+        column: Column::Single,
+        ..Options::default()
+    }
+}
+
+/// The horizontal distance between the centres of the first tick labels `a` and `b` that share
+/// a baseline: the page length of their data distance.
+fn tick_span(all: &[read::Text], a: &str, b: &str) -> f64 {
+    let centre = |t: &read::Text| 0.5 * (t.bbox[0] + t.bbox[2]);
+    let ta = all
+        .iter()
+        .find(|t| t.content == a && !t.rotated)
+        .unwrap_or_else(|| panic!("no tick {a:?}"));
+    let tb = all
+        .iter()
+        .find(|t| t.content == b && (t.y - ta.y).abs() < 0.5)
+        .unwrap_or_else(|| panic!("no tick {b:?} beside {a:?}"));
+    centre(tb) - centre(ta)
+}
+
+/// R6-barroso-fig5-2: in one column the overview (a) drew x = −50…50 over 23 units and the
+/// detail (b) x = −5…5 over 36 (each plot about 40 units wide in a 300-unit column, its gutter
+/// of labels as wide as the plot). With the overviews unlabelled and as wide as the row's
+/// height allows, (a)'s −50…50 spans at least 32 units and (b)'s −5…5 at least 45, the (b)
+/// plot (its window ±10 tan 30° = ±5.77) at least 52 units wide.
+#[test]
+fn barroso_fig5_single_plots_take_the_row() {
+    let font = read::Font::dejavu();
+    let all = read::texts(&font, &read::render_svg("barroso-fig5", &single()));
+    let a = tick_span(&all, "−50", "50");
+    let b = tick_span(&all, "−5", "5");
+    assert!(a >= 32.0, "(a) −50…50 over {a:.1} units");
+    assert!(b >= 45.0, "(b) −5…5 over {b:.1} units");
+}
+
+/// R6-barroso-fig5-2/-3: in one column only the details label their planes, each "z = 10"
+/// with thin spaces (U+2009) round "=", never set close ("z=10") nor a bare depth; the
+/// overviews' depths (z = 3.162, 10, 31.62 for Eq 5 and 6.041, 16.13, 40.81 for Eq 19,
+/// recomputed here: 100^(i/4) and the figure's other labels) are in the caption.
+#[test]
+fn barroso_fig5_single_labels_in_the_details_with_thin_spaces() {
+    let font = read::Font::dejavu();
+    let svg = read::render_svg("barroso-fig5", &single());
+    let all = read::texts(&font, &svg);
+    let has = |c: &str| all.iter().any(|t| t.content == c);
+    for want in [
+        "n = 1",
+        "z = 3.162",
+        "z = 10",
+        "z = 6.041",
+        "z = 16.13",
+        "z = 40.81",
+    ] {
+        let thin = want.replace(' ', "\u{2009}");
+        assert!(has(&thin), "no label {thin:?}");
+        assert!(!has(&want.replace(' ', "")), "{want:?} set close");
+    }
+    // The overviews' far planes are not labelled: no "f = 100", no "z = 31.62".
+    for gone in ["f\u{2009}=\u{2009}100", "z\u{2009}=\u{2009}31.62", "31.62"] {
+        assert!(!has(gone), "a label {gone:?}");
+    }
+    let caption: String = all
+        .iter()
+        .filter(|t| t.tag.contains("#323232"))
+        .map(|t| t.content.as_str())
+        .collect::<Vec<_>>()
+        .join(" ")
+        .replace('\u{a0}', " ");
+    let eq5: Vec<String> = (1..4)
+        .map(|i| {
+            let z = 100f64.powf(f64::from(i) / 4.0);
+            let s = format!("{:.*}", 3 - z.log10().floor() as usize, z);
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        })
+        .collect();
+    assert_eq!(eq5, ["3.162", "10", "31.62"]);
+    let want = format!("z = {}", eq5.join(", "));
+    assert!(caption.contains(&want), "{want:?} not in {caption:?}");
+    assert!(
+        caption.contains("z = 6.041, 16.13, 40.81"),
+        "Eq 19's depths not in {caption:?}"
+    );
+}
