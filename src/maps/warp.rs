@@ -47,9 +47,13 @@ pub enum WarpRule {
     /// With the light overhead (γ = π/2) it is the overhead optimum n′_LSPSM = n + √(f n); as the
     /// light turns parallel to the view n′ grows without bound, so the map tends continuously to
     /// the uniform map, which it is at γ = 0 (Lloyd 2006 §4.4: LiSPSM "reverts to" the
-    /// orthographic map with the light behind or in front). It is never worse than
-    /// [`WarpRule::Uniform`] there, and z-partitions warped with it (ZP+W) have the S̄ of Lloyd
-    /// 2006 Eq 20 behind and in front.
+    /// orthographic map with the light behind or in front). It equals [`WarpRule::Uniform`]
+    /// there, and z-partitions warped with it (ZP+W) have the S̄ of Lloyd 2006 Eq 20 behind and
+    /// in front. Near those directions it is worse than the uniform map: with n = 1, f = 1000,
+    /// θ = 30° its S̄ exceeds the uniform map's for γ below about 25° (up to 4.3 × at 12° above
+    /// the view from behind; docs/builders.md, "Where the other rules are worse than no
+    /// warping"), where n′ is still too short for a frustum seen almost end-on.
+    /// [`WarpRule::Minimax`] is never worse than the uniform map.
     Lispsm,
     /// LiSPSM's light-overhead n′ = n + √(f n) held fixed for every light direction. It is LiSPSM
     /// only with the light overhead: behind or in front it keeps the full warp, which there only

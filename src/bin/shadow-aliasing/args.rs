@@ -267,7 +267,8 @@ pub enum WarpName {
     /// Perspective shadow map: n′ = n.
     Psm,
     /// LiSPSM: n′ = (n + √(f n))/sin γ of each (sub)frustum (Wimmer et al. 2004; Lloyd 2006
-    /// §4.1, §4.4): the uniform map with the light behind or in front.
+    /// §4.1, §4.4): the uniform map with the light behind or in front, worse than it for lights
+    /// within about 25° of those directions (docs/builders.md); minimax never is.
     #[value(alias = "lispsm-sin")]
     Lispsm,
     /// LiSPSM's overhead n′ = n + √(f n) held fixed for every light direction (not LiSPSM away
