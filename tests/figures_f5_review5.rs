@@ -148,3 +148,84 @@ fn ring_labels_hide_no_data_under_boxes() {
         }
     }
 }
+
+/// The centre of a marker's points (a closed outline's last point, its first again, left out).
+fn centre(p: &[(f64, f64)]) -> (f64, f64) {
+    let q = if p.len() > 3 && p[0] == p[p.len() - 1] {
+        &p[..p.len() - 1]
+    } else {
+        p
+    };
+    let n = q.len() as f64;
+    (
+        q.iter().map(|a| a.0).sum::<f64>() / n,
+        q.iter().map(|a| a.1).sum::<f64>() / n,
+    )
+}
+
+/// §4.16.3: in lloyd2006-worst-case ZP's worst case (blue, #0072B2) lies under ZP+W's (#D55E00)
+/// for k ≥ 2 and could not be checked. ZP's markers are hollow (closed outlines stroked 2 units
+/// wide, no blue marker filled), at least 8 in a panel and one in the key, and each is drawn
+/// after every ZP+W marker (filled square) within 12 units of it, so it shows over them; the
+/// premise (two columns' (a); one column draws only the ratios): at least 6 of them lie within
+/// 8 units of a ZP+W marker (the two overlap).
+#[test]
+fn worst_case_zp_markers_hollow_over_zp_w() {
+    for (form, opts) in forms() {
+        let svg = read::render_svg("lloyd2006-worst-case", &opts);
+        let lines: Vec<&str> = svg.lines().collect();
+        let small = |p: &[(f64, f64)]| {
+            let b = bounds(p);
+            b[2] - b[0] < 18.0 && b[3] - b[1] < 18.0
+        };
+        let filled = |colour: &str| -> Vec<(usize, (f64, f64))> {
+            lines
+                .iter()
+                .enumerate()
+                .filter(|(_, l)| {
+                    l.starts_with("<polygon") && read::attr_str(l, "fill") == Some(colour)
+                })
+                .map(|(i, l)| (i, read::points(l)))
+                .filter(|(_, p)| small(p))
+                .map(|(i, p)| (i, centre(&p)))
+                .collect()
+        };
+        assert!(filled("#0072B2").is_empty(), "{form}: a filled ZP marker");
+        let squares = filled("#D55E00");
+        let hollow: Vec<(usize, (f64, f64))> = lines
+            .iter()
+            .enumerate()
+            .filter(|(_, l)| {
+                l.starts_with("<polyline") && read::attr_str(l, "stroke") == Some("#0072B2")
+            })
+            .map(|(i, l)| (i, read::points(l)))
+            .filter(|(_, p)| p.len() >= 7 && p[0] == p[p.len() - 1] && small(p))
+            .map(|(i, p)| (i, centre(&p)))
+            .collect();
+        assert!(
+            hollow.len() >= 9,
+            "{form}: {} hollow ZP markers",
+            hollow.len()
+        );
+        let mut on_top = 0;
+        for (i, c) in &hollow {
+            for (j, d) in &squares {
+                let apart = (c.0 - d.0).hypot(c.1 - d.1);
+                if apart < 12.0 {
+                    assert!(
+                        j < i,
+                        "{form}: ZP+W's marker at {d:?} drawn over ZP's at {c:?}"
+                    );
+                }
+                if apart < 8.0 {
+                    on_top += 1;
+                }
+            }
+        }
+        // One column draws only the ratios (b), where the two lines lie apart.
+        assert!(
+            form == "single" || on_top >= 6,
+            "{form}: {on_top} ZP markers on ZP+W's"
+        );
+    }
+}

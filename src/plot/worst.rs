@@ -89,8 +89,13 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
             ),
             _ => (format!("{name}, worst = behind"), None),
         };
-        abs.series
-            .push(Series::line(worst_label, worst, colour).with_markers());
+        // ZP's markers hollow, over ZP+W's (the fifth review: its curve, hidden under ZP+W's
+        // for k ≥ 2, could not be checked), in both panels and the key.
+        let hollow = scheme == Scheme::Zp;
+        abs.series.push(Series {
+            hollow,
+            ..Series::line(worst_label, worst, colour).with_markers()
+        });
         let mut b = Series::line(String::new(), behind, colour).dashed();
         b.label = behind_label;
         if matches!(scheme, Scheme::Zp | Scheme::ZpW) {
@@ -103,6 +108,7 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
         // The key of (a) names the schemes' colours and markers for both panels.
         ratio.series.push(Series {
             label: None,
+            hollow,
             ..Series::line(name.to_string(), r, colour).with_markers()
         });
     }

@@ -140,6 +140,23 @@ pub(crate) fn fill_fine_polygon<DB: DrawingBackend>(
     Ok(())
 }
 
+/// Strokes a marker's `outline` about `centre` (backend units) as a closed line 2 units wide,
+/// inside left empty: a hollow marker, which shows the marker drawn under it.
+pub(crate) fn stroke_fine_outline<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    centre: (f64, f64),
+    outline: &[(i32, i32)],
+    colour: RGBColor,
+) -> Result<(), Fail> {
+    let at = |&(x, y): &(i32, i32)| (centre.0 + f64::from(x), centre.1 + f64::from(y));
+    area.draw(&Fine {
+        points: outline.iter().chain(outline.first()).map(at).collect(),
+        colour: colour.to_backend_color(),
+        stroke: Some(2),
+    })?;
+    Ok(())
+}
+
 /// Fills the polygon of `points` (backend units), as [`fill_fine_polygon`] does an outline about
 /// a centre; nothing where fewer than three points are left.
 pub(crate) fn fill_fine_points<DB: DrawingBackend>(

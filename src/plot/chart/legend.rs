@@ -4,7 +4,7 @@
 //! place exists: a legend never covers data.
 
 use super::super::Fail;
-use super::fine::{draw_fine_path, fill_fine_polygon};
+use super::fine::{draw_fine_path, fill_fine_polygon, stroke_fine_outline};
 use super::label::{Obstacles, Rect};
 use super::line::{Dash, Marker};
 use super::FONT;
@@ -23,6 +23,8 @@ pub(crate) struct Entry {
     /// The series joins its points: the sample shows its line (a series of unjoined points
     /// shows only its marker).
     pub line: bool,
+    /// The marker drawn hollow, as the series draws it ([`super::Series::hollow`]).
+    pub hollow: bool,
 }
 
 /// Distance of the legend from the plotting area's border, its inner padding, the sample's
@@ -312,7 +314,11 @@ fn draw_box<DB: DrawingBackend>(
         }
         if let Some(m) = e.marker {
             let outline = m.outline(e.width as i32 + 2);
-            fill_fine_polygon(area, (x + marker_at, y), &outline, e.colour)?;
+            if e.hollow {
+                stroke_fine_outline(area, (x + marker_at, y), &outline, e.colour)?;
+            } else {
+                fill_fine_polygon(area, (x + marker_at, y), &outline, e.colour)?;
+            }
         }
         area.draw(&Text::new(
             e.label.clone(),
@@ -360,6 +366,7 @@ mod tests {
                         dash,
                         marker: Some(m),
                         line: true,
+                        hollow: false,
                     };
                     let half = m
                         .outline(width as i32 + 2)

@@ -3,7 +3,10 @@
 
 use super::super::Fail;
 use super::axis::{build_chart_styled, Axis, ChartStyle};
-use super::fine::{clip_to_rect, draw_fine_line, fill_fine_points, fill_fine_polygon, to_backend};
+use super::fine::{
+    clip_to_rect, draw_fine_line, fill_fine_points, fill_fine_polygon, stroke_fine_outline,
+    to_backend,
+};
 use super::label::{place_label, place_note, text_in_box, Obstacles, Rect, LABEL_PAD};
 use super::legend::{draw_legend_clear, Entry, Placed};
 use super::probe::probe_area;
@@ -171,6 +174,9 @@ pub(crate) struct Series {
     /// The markers' radius in units where it is not the line's width + 2 (a small one-column
     /// plot, whose markers would be wider than the spacing of its curves).
     pub marker_radius: Option<i32>,
+    /// Hollow markers (outlines 2 units wide), drawn after every filled one: a line that lies
+    /// under another still shows its points.
+    pub hollow: bool,
 }
 
 impl Series {
@@ -190,6 +196,7 @@ impl Series {
             quiet: false,
             sample: false,
             marker_radius: None,
+            hollow: false,
         }
     }
     /// The same series labelled directly at its right end instead of in the legend.
@@ -500,7 +507,7 @@ fn draw_chart<DB: DrawingBackend>(
             .filter(|&(x, y)| x >= x0 && x <= x1 && y >= y0 && y <= y1)
         {
             let p = to(at);
-            markers.push((p, outline.clone(), s.colour));
+            markers.push((p, outline.clone(), s.colour, s.hollow));
             let m = Rect::anchored(p, Pos::new(HPos::Center, VPos::Center), 0.0, 0.0);
             obstacles.markers.push((m.grown(f64::from(r + 1)), k));
         }
@@ -543,6 +550,7 @@ fn draw_chart<DB: DrawingBackend>(
                     || s.points
                         .windows(2)
                         .any(|w| w[0].1.is_finite() && w[1].1.is_finite()),
+                hollow: s.hollow,
             }),
             (None, _) => {}
         }
@@ -590,8 +598,11 @@ fn draw_chart<DB: DrawingBackend>(
         // No place inside is clear.
         obstacles.boxes.push(area);
     }
-    for (p, outline, colour) in &markers {
-        if c.clip_markers {
+    markers.sort_by_key(|m| m.3);
+    for (p, outline, colour, hollow) in &markers {
+        if *hollow {
+            stroke_fine_outline(&plot, *p, outline, *colour)?;
+        } else if c.clip_markers {
             let points: Vec<(f64, f64)> = outline
                 .iter()
                 .map(|&(x, y)| (p.0 + f64::from(x), p.1 + f64::from(y)))
