@@ -144,9 +144,10 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
          view θ\u{a0}=\u{a0}{phi:.0}° (Zhang's φ); light at \
          γ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). E_p, E_q: aliasing along the \
-         screen's vertical and horizontal (×2: Zhang's span [−1,\u{a0}1]). LiSPSM's warp parameter \
-         n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
-         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: one bar a quantity, no scene insets.",
+         screen's vertical and horizontal (×2: Zhang's span [−1,\u{a0}1]); m\u{a0}⊥\u{a0}light \
+         (Lloyd 2006): Barroso's m_z is 1/sin\u{a0}γ larger. LiSPSM's warp \
+         parameter n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
+         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}.",
         angles.join(", "),
         lispsm.join(", "),
     );
@@ -527,7 +528,14 @@ fn draw_height_name<DB: DrawingBackend>(
 }
 
 /// The blocks' titles.
-const BLOCK_NAMES: [&str; 3] = ["(a) E_p = 2 m_z", "(b) E_q = 2 m_x", "(c) E_p × E_q"];
+/// m_z and m_x are measured across the light ("⊥ light"), as Lloyd 2006 §4.4 and
+/// [`crate::measure::point_error`] do (figure review 6: Barroso's m_z, along the view axis, is
+/// 1/sin γ larger, and barroso-fig7 also writes m_z).
+const BLOCK_NAMES: [&str; 3] = [
+    "(a) E_p = 2 m_z (⊥ light)",
+    "(b) E_q = 2 m_x (⊥ light)",
+    "(c) E_p × E_q",
+];
 
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {

@@ -281,3 +281,63 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
         assert!(c.contains("horizontal (×2: "), "{c}");
     }
 }
+
+/// Figure review 6 (R6-zhang-fig3-0): the m_z and m_x of E_p = 2 m_z and E_q = 2 m_x are
+/// measured across the light (Lloyd 2006 §4.4), not along the view axis as Barroso's m_z (Eq 12),
+/// which is 1/sin γ larger; the figure says so. By hand: SSM's map is uniform in the light-space
+/// coordinate a·p along the view direction projected across the light, a = (v − (v·l) l)/|…|,
+/// over the frustum's extent Δ = max − min of a·p at its eight corners, so its t texel is Δ wide
+/// across the light and E_p = 2 Δ/(2 z tan θ) at depth z; at γ = 30° Barroso's would be twice
+/// that. Each SSM cell at γ = 30° has the former (within 10⁻⁹), not the latter; both blocks'
+/// titles say "⊥ light" in both forms, and the two-column caption names Lloyd's convention and
+/// Barroso's factor.
+#[test]
+fn m_is_measured_across_the_light_and_the_figure_says_so() {
+    use super::super::chart::read_svg::texts;
+    let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
+    let g = 30f64.to_radians();
+    let l = DVec3::new(0.0, -g.sin(), g.cos());
+    let v = DVec3::NEG_Z;
+    let a = (v - v.dot(l) * l).normalize();
+    let t = (30f64.to_radians()).tan();
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for z in [1.0, 100.0] {
+        for (sx, sy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+            let d = a.dot(DVec3::new(sx * z * t, sy * z * t, -z));
+            lo = lo.min(d);
+            hi = hi.max(d);
+        }
+    }
+    let delta = hi - lo;
+    let grid = frustum_grid(1.0, 100.0, t);
+    let nx = grid.x_edges.len() - 1;
+    let ssm_ep = &fig.rows[2][0][0].grid.values;
+    let mut checked = 0;
+    for (k, v) in ssm_ep.iter().enumerate() {
+        let (Some(v), Some((z, _))) = (v, grid.sample_point(k % nx, k / nx)) else {
+            continue;
+        };
+        let across = delta / (z * t);
+        assert!(
+            (v / across - 1.0).abs() < 1e-9,
+            "z {z}: {v} against {across}"
+        );
+        assert!((v / (across / g.sin()) - 0.5).abs() < 1e-9);
+        checked += 1;
+    }
+    assert!(checked > 100, "{checked} cells");
+    for column in [Column::Double, Column::Single] {
+        let svg = super::super::hemisphere::svg_in(&fig, column);
+        let marked = texts(&svg)
+            .iter()
+            .filter(|t| t.1.contains("⊥ light"))
+            .count();
+        assert!(marked >= 2, "{column:?}: {marked} texts say ⊥ light");
+    }
+    assert!(
+        fig.caption.contains("m\u{a0}⊥\u{a0}light (Lloyd 2006)")
+            && fig.caption.contains("Barroso's m_z is 1/sin\u{a0}γ larger"),
+        "{}",
+        fig.caption
+    );
+}
