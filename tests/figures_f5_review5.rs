@@ -229,3 +229,34 @@ fn worst_case_zp_markers_hollow_over_zp_w() {
         );
     }
 }
+
+/// The SVG's printed width, `width="…pt"`.
+fn printed_width(svg: &str) -> f64 {
+    let head = &svg[..svg.find('>').unwrap()];
+    read::attr_str(head, "width")
+        .unwrap()
+        .trim_end_matches("pt")
+        .parse()
+        .unwrap()
+}
+
+/// X2: the single-plot figures lloyd2005-fig4 and lloyd2006-fig11 filled the page's 7.2 in
+/// (520 pt) across two columns for one plot; they are 346 pt (4.8 in) wide there, captioned and
+/// bare, with their view box as wide (a unit a point); one column stays 240 pt.
+#[test]
+fn single_plot_figures_are_narrower_than_the_page() {
+    for name in ["lloyd2005-fig4", "lloyd2006-fig11"] {
+        for (form, opts) in forms() {
+            let svg = read::render_svg(name, &opts);
+            let w = printed_width(&svg);
+            let want = if form == "single" { 240.0 } else { 346.0 };
+            assert!((w - want).abs() < 1e-9, "{name} {form}: {w} pt wide");
+            if form != "single" {
+                assert!(
+                    (read::points_per_unit(&svg) - 1.0).abs() < 1e-9,
+                    "{name} {form}"
+                );
+            }
+        }
+    }
+}

@@ -133,6 +133,10 @@ pub(super) fn seen_from_light(l: DVec3) -> DVec2 {
 /// The labels of the axes of a diagram drawn by [`seen_from_light`]: right and up in the
 /// light's view (figure review 5, X3: "light z" read as the eye depth z that the split planes'
 /// labels give, and "−x in light space" named its partner in another form).
+/// lloyd2006-fig11's width in the two-column form: its one diagram covered under half of the
+/// page's 520 units (the fifth review, X2); 346 units, printed 346 pt (4.8 in).
+pub(crate) const FROM_BEHIND_WIDTH: u32 = 346;
+
 pub(super) const SEEN_X: &str = "light-view x";
 pub(super) const SEEN_Y: &str = "light-view y";
 
@@ -334,12 +338,11 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
     // dimension, with no margin above).
     p.window = Some((DVec2::new(-sf, -sf - 1.05), DVec2::new(sf, sf + 1.05)));
     let caption = format!(
-        "Lloyd et al. 2006, Fig. 11: the frustum seen from a light behind the viewer, \
-         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, to scale. With \
-         k\u{a0}=\u{a0}{k} self-similar z-partitions (z\u{a0}=\u{a0}{}) each map is the \
-         square of its far plane, so the nearer maps lie inside the farther ones: the overlap \
-         §5.3 blames for ZP's growth behind. The paper's sketch writes the sides 2n and 2f, \
-         their values at θ\u{a0}=\u{a0}45°.",
+        "Lloyd et al. 2006, Fig. 11, to scale: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+         θ\u{a0}=\u{a0}{theta:.0}°, k\u{a0}=\u{a0}{k} self-similar z-partitions \
+         (z\u{a0}=\u{a0}{}). Each map is the square of its far plane, so nearer maps lie \
+         inside farther ones: §5.3's overlap behind. The paper's sketch writes the sides 2n, \
+         2f (θ\u{a0}=\u{a0}45°).",
         fmt_planes(p.planes.as_slice()),
         n = view.near(),
         f = view.far(),
@@ -360,7 +363,7 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
         caption,
         single_caption,
         panels: vec![p],
-        size: (520, 480),
+        size: (FROM_BEHIND_WIDTH, 480),
         single_size: (300, 460),
     })
 }
