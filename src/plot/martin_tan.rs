@@ -120,7 +120,9 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         // both ends, so that the marks at 0° and 180° stand inside the frame, not on it.
         // The angle is the light's elevation in that plane, from behind on the horizon (fifth
         // review: "angle from behind" did not say what it measures).
-        Axis::every(X_NAME, -6.0, 186.0, 0.0, 45.0),
+        // Labelled 0, 45, 90, 45, 0, behind on the left, in front on the right, as the
+        // captions say (sixth review: 135 and 180 read as elevations, which end at 90).
+        Axis::every(X_NAME, -6.0, 186.0, 0.0, 45.0).folded_at(90.0),
         Axis::log10("share of the map (log scale)", floor, ceil).in_powers(),
     );
     // The figure's one key, under the profile, the only panel with lines.
@@ -141,7 +143,7 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
     profile.series.push(Series {
         shape: Some(JUMP_MARKER),
         ..Series::line(
-            "80 % rule at 0° and 180°",
+            "80 % rule exactly behind, in front",
             vec![first, (90.0, f64::NAN), last],
             EIGHTY,
         )
@@ -160,7 +162,8 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
             "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map covered by the focus \
              region (n to n\u{a0}+\u{a0}δ). (a) The paper's 80\u{a0}% rule \
              (rings: elevation 10°, 20°, 30°, 60°; line: the view's vertical plane); (b) in that \
-             plane (elevation 0° behind, 90° overhead), also the iterative variant (1024 lines). \
+             plane (elevation 0° behind, 90° overhead, 0° in front), also the iterative variant \
+             (1024 lines). \
              n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of view \
              θ\u{a0}=\u{a0}{theta:.0}°, δ\u{a0}=\u{a0}{FOCUS}. {JUMP_GLYPH}: light exactly \
              behind or in front, {dueling:.4}.",
@@ -253,8 +256,8 @@ impl Figure for Fig6 {
     }
 }
 
-/// (b)'s x axis's name: the light's elevation in the view's vertical plane, 0° behind on the
-/// horizon, 90° overhead, 180° in front (the captions say so).
+/// (b)'s x axis's name: the light's elevation in the view's vertical plane, from 0° behind on
+/// the horizon through 90° overhead to 0° in front (the captions say so).
 const X_NAME: &str = "light's elevation (°)";
 
 /// (a)'s title.
@@ -445,8 +448,16 @@ mod tests {
                 .unwrap();
             super::super::chart::read_svg::attr(line, "x").unwrap()
         };
-        // The axis runs 6° past both end ticks: 192° in all.
-        let axis = (x("180") - x("0")) * 192.0 / 180.0;
+        // The axis runs 6° past both end ticks (both labelled "0"): 192° in all.
+        let zeros: Vec<f64> = all
+            .iter()
+            .filter(|t| t.1 == "0" && t.0.contains("text-anchor=\"middle\""))
+            .map(|t| super::super::chart::read_svg::attr(t.0, "x").unwrap())
+            .collect();
+        let ends = zeros.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+            - zeros.iter().copied().fold(f64::INFINITY, f64::min);
+        let axis = ends * 192.0 / 180.0;
+        let _ = x;
         assert!(name_w > 50.0 && name_w <= axis, "{name_w} vs {axis}");
     }
 
@@ -467,7 +478,7 @@ mod tests {
         let svg = svg_in(&fig, Column::Single);
         let all = texts(&svg);
         // The name as drawn (the SVG escapes its apostrophe).
-        assert!(all.iter().any(|t| t.1.ends_with("elevation (°)")));
+        assert!(all.iter().any(|t| t.1.contains("elevation (°)")));
         let ticks: Vec<(f64, f64)> = all
             .iter()
             .filter(|t| t.0.contains(">10<tspan"))
@@ -483,5 +494,54 @@ mod tests {
         let span = ys.iter().copied().fold(0.0, f64::max)
             - ys.iter().copied().fold(f64::INFINITY, f64::min);
         assert!(span >= 80.0, "(b) spans {span} units");
+    }
+
+    /// The sixth review (R6-martin-tan-fig6-1): (b)'s axis ran 0 to 180 under the name
+    /// "elevation", which ends at 90°. Its tick labels, left to right, now read 0, 45, 90, 45,
+    /// 0 (behind to in front: elevations 180 − a past overhead) and no label reads 135 or 180,
+    /// in both forms; the two-column caption says which 0 is behind.
+    #[test]
+    fn profile_elevations_fold_at_overhead() {
+        use super::super::chart::read_svg::{attr, texts};
+        use super::super::hemisphere::svg_in;
+        let fig = fig6().map_err(|e| e.named("martin-tan-fig6")).unwrap();
+        for column in [Column::Double, Column::Single] {
+            let svg = svg_in(&fig, column);
+            let all = texts(&svg);
+            let name = all
+                .iter()
+                .find(|t| t.1.contains("elevation (°)"))
+                .unwrap_or_else(|| panic!("{column:?}: no axis name"));
+            assert!(name.1.ends_with("elevation (°)"), "{column:?}: {}", name.1);
+            // Which 0 is which: the two-column caption says; one column's (a) writes
+            // "← behind" and "in front →" over its disk, above (b).
+            let caption = fig.caption.join(" ");
+            assert!(
+                caption.contains("0° behind, 90° overhead, 0° in front"),
+                "{caption}"
+            );
+            // The x tick labels: centred numbers on the lowest row of numbers under (b).
+            let ticks: Vec<(f64, f64, &str)> = all
+                .iter()
+                .filter(|t| {
+                    t.0.contains("text-anchor=\"middle\"")
+                        && !t.0.contains("<tspan")
+                        && t.1.parse::<f64>().is_ok()
+                })
+                .map(|t| (attr(t.0, "x").unwrap(), t.2, t.1.as_str()))
+                .collect();
+            let base = ticks.iter().map(|t| t.1).fold(f64::NEG_INFINITY, f64::max);
+            let mut row: Vec<(f64, f64, &str)> = ticks
+                .into_iter()
+                .filter(|t| (t.1 - base).abs() < 0.5)
+                .collect();
+            row.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let read: Vec<&str> = row.iter().map(|t| t.2).collect();
+            assert_eq!(read, ["0", "45", "90", "45", "0"], "{column:?}");
+            assert!(
+                !all.iter().any(|t| t.1 == "135" || t.1 == "180"),
+                "{column:?}"
+            );
+        }
     }
 }

@@ -87,6 +87,8 @@ pub(crate) struct Axis {
     pub labelled: Option<Vec<f64>>,
     /// A log axis's grid only at 2 and 5 of each decade ([`Axis::sparse_grid`]).
     pub sparse: bool,
+    /// A linear axis whose labels past this value read back down ([`Axis::folded_at`]).
+    pub fold: Option<f64>,
 }
 
 impl Axis {
@@ -100,6 +102,7 @@ impl Axis {
             powers: false,
             labelled: None,
             sparse: false,
+            fold: None,
         }
     }
 
@@ -113,6 +116,7 @@ impl Axis {
             powers: false,
             labelled: None,
             sparse: false,
+            fold: None,
         }
     }
 
@@ -126,6 +130,7 @@ impl Axis {
             powers: false,
             labelled: None,
             sparse: false,
+            fold: None,
         }
     }
 
@@ -139,6 +144,7 @@ impl Axis {
             powers: false,
             labelled: None,
             sparse: false,
+            fold: None,
         }
     }
 
@@ -153,6 +159,7 @@ impl Axis {
             powers: false,
             labelled: None,
             sparse: false,
+            fold: None,
         }
     }
 
@@ -167,6 +174,14 @@ impl Axis {
     /// 2…9: on a small plot the eight lines a decade run together into a grey ground.
     pub fn sparse_grid(mut self) -> Self {
         self.sparse = true;
+        self
+    }
+
+    /// The same linear axis with each label past `at` reading `2 at − v` (an angle through
+    /// overhead: 0, 45, 90, 45, 0 for an elevation from behind to in front, figure review 6:
+    /// 135 and 180 read as elevations no light has); its positions and ticks unchanged.
+    pub fn folded_at(mut self, at: f64) -> Self {
+        self.fold = Some(at);
         self
     }
 
@@ -345,6 +360,10 @@ impl Axis {
     }
 
     fn tick_text(&self, a: f64) -> String {
+        let a = match self.fold {
+            Some(at) if a > at && !matches!(self.scale, Scale::Log(_)) => 2.0 * at - a,
+            _ => a,
+        };
         match self.scale {
             Scale::Every { step, .. } => fmt_linear(a, step),
             Scale::Linear | Scale::Integer => {
