@@ -6,7 +6,7 @@
 
 use super::super::chart::{
     boxed_text, build_chart_styled, clip_polyline, column, equal_aspect, frame, plot_size, Axis,
-    Chart2d, ChartStyle, FONT, PANEL_TITLE, SWEEP, TITLE_GAP,
+    Chart2d, ChartStyle, FONT, SWEEP, TITLE_GAP,
 };
 use super::super::{Column, Fail, Figure};
 use super::{FromLight, Panel, SEEN_X, SEEN_Y};
@@ -58,71 +58,9 @@ const ENLARGED: RGBColor = RGBColor(110, 110, 110);
 const LEADER: RGBColor = RGBColor(150, 150, 150);
 const ANCHOR: RGBColor = RGBColor(90, 90, 90);
 
-/// Sizes of one layout: label and key text, the gutter's width, the least distance between two
-/// labels in the gutter, the gap kept right of the gutter's text (before the next panel).
-#[derive(Clone, Copy)]
-struct Sizes {
-    style: ChartStyle,
-    /// The label areas of a panel without the axis's title (its ticks only): the x title is
-    /// written under the bottom row only, the y title left of the left column only.
-    x_ticks_only: u32,
-    y_ticks_only: u32,
-    label: u32,
-    gutter: u32,
-    step: i32,
-    key: u32,
-    /// Whether the planes are labelled in the gutter (one column's overviews: not, figure
-    /// review 6: their gutter left the plots 40 units wide; the caption gives the depths).
-    labels: bool,
-}
-
-/// The gutter of one column's overview panels: no labels, a gap before the detail's y ticks.
-const OVERVIEW_GUTTER: u32 = 10;
-
-/// The least width of one column's overview cell: its title, "(a) perpendicular" (103 units at
-/// 15), and a gap to the detail's title.
-const OVERVIEW_LEAST: u32 = 124;
-
-fn sizes(single: bool, panels: usize) -> Sizes {
-    if single && panels > 1 {
-        // One column, two panels a row of 144 units: the type of every other one-column figure
-        // (ticks and labels 13, 10.5 units, 8.4 pt printed; titles and axis names 15), y ticks
-        // on every panel and each plane's label on one line (figure review 4: without y ticks
-        // and with "f =" over "100" the panels graded C): a label is set close, "z=31.62"
-        // (figure review 5: the depth alone read as a tick value), in a gutter of 58 units.
-        Sizes {
-            style: ChartStyle {
-                title_size: PANEL_TITLE,
-                x_label_area: 42,
-                y_label_area: 46,
-                tick_size: 13,
-                desc_size: 15,
-                margin: 2,
-            },
-            x_ticks_only: 26,
-            y_ticks_only: 30,
-            label: 13,
-            gutter: 66,
-            step: 15,
-            key: 13,
-            labels: true,
-        }
-    } else {
-        Sizes {
-            style: ChartStyle {
-                y_label_area: 46,
-                ..ChartStyle::default()
-            },
-            x_ticks_only: 26,
-            y_ticks_only: 34,
-            label: 13,
-            gutter: 78,
-            step: 16,
-            key: 13,
-            labels: true,
-        }
-    }
-}
+#[path = "draw_sizes.rs"]
+mod sizes;
+use sizes::{sizes, Sizes, OVERVIEW_GUTTER, OVERVIEW_LEAST};
 
 /// A panel's title up to its first colon or comma, without the word "light": "(c) Eq 19,
 /// not in the paper" is "(c) Eq 19", "(a) perpendicular light" is "(a) perpendicular".

@@ -1,0 +1,70 @@
+//! The sizes of the diagrams seen from the light in each layout (moved out of draw.rs, which
+//! stays under 800 lines).
+
+use super::super::super::chart::{ChartStyle, PANEL_TITLE};
+
+/// Sizes of one layout: label and key text, the gutter's width, the least distance between two
+/// labels in the gutter, the gap kept right of the gutter's text (before the next panel).
+#[derive(Clone, Copy)]
+pub(super) struct Sizes {
+    pub(super) style: ChartStyle,
+    /// The label areas of a panel without the axis's title (its ticks only): the x title is
+    /// written under the bottom row only, the y title left of the left column only.
+    pub(super) x_ticks_only: u32,
+    pub(super) y_ticks_only: u32,
+    pub(super) label: u32,
+    pub(super) gutter: u32,
+    pub(super) step: i32,
+    pub(super) key: u32,
+    /// Whether the planes are labelled in the gutter (one column's overviews: not, figure
+    /// review 6: their gutter left the plots 40 units wide; the caption gives the depths).
+    pub(super) labels: bool,
+}
+
+/// The gutter of one column's overview panels: no labels, a gap before the detail's y ticks.
+pub(super) const OVERVIEW_GUTTER: u32 = 10;
+
+/// The least width of one column's overview cell: its title, "(a) perpendicular" (103 units at
+/// 15), and a gap to the detail's title.
+pub(super) const OVERVIEW_LEAST: u32 = 124;
+
+pub(super) fn sizes(single: bool, panels: usize) -> Sizes {
+    if single && panels > 1 {
+        // One column, two panels a row of 144 units: the type of every other one-column figure
+        // (ticks and labels 13, 10.5 units, 8.4 pt printed; titles and axis names 15), y ticks
+        // on every panel and each plane's label on one line (figure review 4: without y ticks
+        // and with "f =" over "100" the panels graded C): a label is set close, "z=31.62"
+        // (figure review 5: the depth alone read as a tick value), in a gutter of 58 units.
+        Sizes {
+            style: ChartStyle {
+                title_size: PANEL_TITLE,
+                x_label_area: 42,
+                y_label_area: 46,
+                tick_size: 13,
+                desc_size: 15,
+                margin: 2,
+            },
+            x_ticks_only: 26,
+            y_ticks_only: 30,
+            label: 13,
+            gutter: 66,
+            step: 15,
+            key: 13,
+            labels: true,
+        }
+    } else {
+        Sizes {
+            style: ChartStyle {
+                y_label_area: 46,
+                ..ChartStyle::default()
+            },
+            x_ticks_only: 26,
+            y_ticks_only: 34,
+            label: 13,
+            gutter: 78,
+            step: 16,
+            key: 13,
+            labels: true,
+        }
+    }
+}
