@@ -260,3 +260,36 @@ fn single_plot_figures_are_narrower_than_the_page() {
         }
     }
 }
+
+/// R6-lloyd2005-fig8-2: in one column the tags under (a)'s drawing (L2, L1, T1, N, R1, R2)
+/// were printed across (a)'s x-axis line (glyphs at y 140 to 148, the axis at 143). In every
+/// form no black horizontal line (an axis) runs through a tag's measured box.
+#[test]
+fn lloyd2005_fig8_tags_clear_of_the_axis() {
+    let font = read::Font::dejavu();
+    for (form, opts) in forms() {
+        let svg = read::render_svg("lloyd2005-fig8", &opts);
+        let tags: Vec<[f64; 4]> = read::texts(&font, &svg)
+            .into_iter()
+            .filter(|t| ["L2", "L1", "T1", "N", "R1", "R2"].contains(&t.content.as_str()))
+            .map(|t| t.bbox)
+            .collect();
+        assert!(tags.len() >= 6, "{form}: {} tags", tags.len());
+        for (_, p) in strokes(&svg, "#000000") {
+            for w in p.windows(2) {
+                let (a, b) = (w[0], w[1]);
+                if (a.1 - b.1).abs() > 0.01 {
+                    continue;
+                }
+                for t in &tags {
+                    let across = a.0.min(b.0) < t[2] && a.0.max(b.0) > t[0];
+                    assert!(
+                        !(across && a.1 > t[1] + 0.5 && a.1 < t[3] - 0.5),
+                        "{form}: a line at y {} through a tag {t:?}",
+                        a.1
+                    );
+                }
+            }
+        }
+    }
+}
