@@ -146,7 +146,7 @@ fn map(light: DVec3) -> FrameMap {
         .receivers(Bound::Boxes(&ground))
         .casters(Bound::Boxes(&ground));
     let f = frame(&input).unwrap();
-    f.maps()[0].clone()
+    f.maps()[0]
 }
 
 #[test]
