@@ -131,8 +131,8 @@ pub struct PathPass<'a> {
     pub flags: u32,
     /// The PCF radius r passed to `sa_visibility` ((2r + 1)² taps).
     pub radius: u32,
-    /// Whether the pass draws the error lens (`FrameOutput::lens`, `overlay`); without it they
-    /// hold the no-map values.
+    /// Whether the pass draws the error lens (`FrameOutput::lens`, `overlay`); without it the
+    /// overlay holds the no-map values and `lens` the lookup's normal offset (`FrameOutput::lens`).
     pub lens: bool,
 }
 
@@ -155,7 +155,10 @@ pub struct FrameOutput {
     /// Per pixel: the error lens of the selected map (`sa_error_lens`, pixels), and the same with
     /// the projection factor 1 (the surface facing the light, seen along the light from the same
     /// view depth); 0 for the sky, −2 with no map, −1 behind the camera or the map's centre of
-    /// projection, 3.4·10³⁸ edge-on to the light.
+    /// projection, 3.4·10³⁸ edge-on to the light. In a pass without the lens
+    /// ([`PathPass::lens`] false): the normal offset (world units) `sa_visibility` moves the
+    /// lookup point by in the selected map for the pass's flags and radius (0 with neither offset
+    /// flag), and 0, at pixels facing the light with a map; −2 elsewhere.
     pub lens: Vec<[f32; 2]>,
     /// The lens drawn over the scene: `sa_lens_colour` of the lens, 3/4, over the shaded colour,
     /// 1/4 (the shaded colour alone with no map), RGBA8.

@@ -4,7 +4,8 @@
 //! once per path of [`PATHS`]: the depth bias alone, the record's normal offset (its maximum over
 //! the focus body), the per-point normal offset, PCF with r = 1 on the records built for r = 1
 //! (`FrameMap::gpu_relative_with_pcf`), and PCF with r = 2 on the records built for r = 0 (the
-//! module's `sa_kernel_scale`) with the normal offset and the depth bias together.
+//! module's `sa_kernel_scale`) with the normal offset alone and with the normal offset and the
+//! depth bias together.
 //!
 //! For each path, at every visible pixel facing the light with a map:
 //!
@@ -24,7 +25,12 @@
 //!   pixel sat at or below that tap's stored depth, so it was lifted off the plane by more than
 //!   the need. The per-point offset (`SA_LOCAL_NORMAL_OFFSET`) must not be; the record's maximum
 //!   and the depth bias are maxima over the focus body, larger than the need almost everywhere,
-//!   and are reported (`max_lift_over_need`) without a target.
+//!   and are reported (`max_lift_over_need`) without a target;
+//! - **the offset's lift** (paths with a normal offset): the camera pass writes the offset the
+//!   crate's functions give each lookup, and the lookup point's lift off the pixel's plane is
+//!   measured here against the need at every lookup, lit or not ([`PathSummary::lift_over_need`],
+//!   [`PathSummary::offset_rel_diff`]): the per-point offset must lift by the need exactly, the
+//!   record's by at least the need.
 
 use crate::faults::Fault;
 use crate::gpu::{FrameOutput, Gpu, Lookup, PathPass};
@@ -38,6 +44,9 @@ use shadow_aliasing::frame::bias::normal_offset_at;
 use shadow_aliasing::frame::GpuShadowMap;
 use shadow_aliasing::maps::ClipDepth;
 use std::collections::HashMap;
+
+mod lift;
+use lift::offset_lift;
 
 /// `sa_visibility`'s flag: the lookup point moved by the record's normal offset.
 pub const SA_NORMAL_OFFSET: u32 = 1;
@@ -73,10 +82,16 @@ impl Path {
     pub fn local(&self) -> bool {
         self.flags == SA_LOCAL_NORMAL_OFFSET
     }
+
+    /// Whether the path moves the lookup point by a normal offset (the record's or the per-point
+    /// one): its lift over the need is measured ([`PathSummary::lift_over_need`]).
+    pub fn offset(&self) -> bool {
+        self.flags & (SA_NORMAL_OFFSET | SA_LOCAL_NORMAL_OFFSET) != 0
+    }
 }
 
 /// The paths checked, in the order of the camera passes.
-pub const PATHS: [Path; 5] = [
+pub const PATHS: [Path; 6] = [
     Path {
         name: "depth_bias",
         flags: SA_DEPTH_BIAS,
@@ -102,6 +117,12 @@ pub const PATHS: [Path; 5] = [
         record: Record::Pcf1,
     },
     Path {
+        name: "pcf2_normal_offset",
+        flags: SA_NORMAL_OFFSET,
+        radius: 2,
+        record: Record::Plain,
+    },
+    Path {
         name: "pcf2_normal_offset_depth_bias",
         flags: SA_NORMAL_OFFSET | SA_DEPTH_BIAS,
         radius: 2,
@@ -110,14 +131,17 @@ pub const PATHS: [Path; 5] = [
 ];
 
 /// The cases (set-up, scheme) whose shader paths are checked: an orthographic map under the light
-/// straight down and at 45°, a warped map under a grazing light from behind, and four stable
-/// cascades under a low sun with thin casters (two in reversed depth, two in depth [0, 1], as
-/// [`crate::run::case_clip_depth`] gives them).
-pub const CASES: [(&str, Scheme); 4] = [
+/// straight down and at 45°, a warped map under a grazing light from behind, four stable
+/// cascades under a low sun with thin casters, and PSM's map (n′ = n_B: its centre of projection
+/// near the focus body) under a light 10° high across the view, where the offset point's own
+/// footprint changes the per-point offset by up to a quarter (`max_w_change`); in reversed depth
+/// and in depth [0, 1] as [`crate::run::case_clip_depth`] gives them.
+pub const CASES: [(&str, Scheme); 5] = [
     ("overhead", Scheme::Uniform),
     ("tilted_45", Scheme::Uniform),
     ("behind_5", Scheme::Lispsm),
     ("thin_casters", Scheme::StableCascades),
+    ("grazing_10", Scheme::Psm),
 ];
 
 /// Whether the shader paths are checked in this case.
@@ -150,6 +174,11 @@ pub fn depth_tie(slope: f64) -> f64 {
 pub fn need(r: u32, slope: f64) -> f64 {
     (f64::from(r) + 0.5 + 1.0 / 64.0) * slope + ROUNDING
 }
+
+/// How far (relative) the GPU's lookup point's lift may fall below the need, and, for the
+/// per-point offset, exceed it ([`PathSummary::lift_over_need`]): the `f32` rounding of the
+/// shader's offset.
+pub const LIFT_SLACK: f64 = 1e-3;
 
 /// A detached shadow is a lift beyond this factor of the need (plus twice [`ROUNDING`] and the
 /// depth tie): the `f32` lookup's own rounding.
@@ -190,6 +219,36 @@ pub struct PathSummary {
     /// lookup point less the most lenient tap's stored depth), over the need; `None` when no
     /// shadowed pixel was lit.
     pub max_lift_over_need: Option<f64>,
+    /// Paths with a normal offset: the lookups whose offset point's lift is measured
+    /// ([`PathSummary::lift_over_need`]): every lookup with the GPU's offset finite, less those
+    /// whose offset point lies at or behind the map's centre of projection (a record's offset
+    /// larger than the point can take: `shadow_aliasing::frame::bias`, "Normal offset") and, in a
+    /// per-point path, those that no offset lifts by the need (`offset_unreachable`).
+    pub offset_lookups: usize,
+    /// Per-point paths: the lookups that no offset along the normal lifts by the need (the offset
+    /// point would reach the map's centre of projection first): the shader falls back to the
+    /// record's offset there, which is not measured.
+    pub offset_unreachable: usize,
+    /// The least and the largest lift of the GPU's lookup point over the need: the plane's depth
+    /// at the map position of p + o n, o the normal offset the GPU's functions give the lookup
+    /// (`sa_local_normal_offset`, or the record's `normal_offset` times `sa_offset_scale`), less
+    /// that point's own depth, over [`need`]; all in `f64` from the map's matrix and
+    /// render-check's plane. The per-point offset is built to lift by the need exactly (1 both
+    /// ways); the record's offset is a maximum over the focus body (at least 1). `None` for a
+    /// path with no normal offset or no lookup measured.
+    pub lift_over_need: Option<[f64; 2]>,
+    /// Per-point paths: the largest |w(q) − w(p)| / w(q) over the measured lookups, w the map's
+    /// clip w and q = p + o n with the offset render-check derives for the need: how much the
+    /// offset point's own footprint (the `(row₃ · n)/w` term of the closed form) matters here (an
+    /// offset that held p's footprint would lift by 1/(1 ± this) of the need and less; 0 on an
+    /// orthographic map). `None` outside per-point paths.
+    pub max_w_change: Option<f64>,
+    /// The largest |o − o′| / o′ over the measured lookups, o the GPU's offset and o′ the one it
+    /// is defined to be: per-point paths the offset that lifts by the need exactly (solved here,
+    /// [`PathSummary::max_w_change`]'s), record paths the record's `normal_offset` times
+    /// s (1 − τ)/(1 − s τ) for the path's radius (GpuShadowMap's docs). `None` as
+    /// `lift_over_need`.
+    pub offset_rel_diff: Option<f64>,
 }
 
 /// A map as the model looks it up in one pass.
@@ -199,6 +258,26 @@ struct MapModel {
     inv: DMat4,
     record: GpuShadowMap,
     reversed: bool,
+}
+
+/// The kernel's factor on a record's depth bias for a PCF kernel of radius `r`:
+/// s = (2r + 1)/(2 bias_radius + 1), at least 1 (GpuShadowMap's docs).
+fn kernel_scale(rec: &GpuShadowMap, r: u32) -> f64 {
+    ((2.0 * f64::from(r) + 1.0) / (2.0 * f64::from(rec.bias_radius).max(0.0) + 1.0)).max(1.0)
+}
+
+/// The record's normal offset for a PCF kernel of radius `r` (world units): the record's times
+/// s (1 − τ)/(1 − s τ), s [`kernel_scale`], τ the record's growth, and 1e30 times it where
+/// s τ ≥ 1 (GpuShadowMap's docs; shadow_aliasing::frame::bias, "Normal offset").
+fn record_offset(rec: &GpuShadowMap, r: u32) -> f64 {
+    let scale = kernel_scale(rec, r);
+    let tau = f64::from(rec.normal_offset_growth).max(0.0);
+    let factor = if scale * tau < 1.0 {
+        scale * (1.0 - tau) / (1.0 - scale * tau)
+    } else {
+        1e30
+    };
+    f64::from(rec.normal_offset) * factor
 }
 
 /// A pixel's plane in its map: its depth [0, 1] at its own map position (`s`, `t`, texels) and
@@ -293,14 +372,8 @@ impl Frame<'_> {
         // The kernel's factor on the record's depth bias: s = (2r + 1)/(2 bias_radius + 1), at
         // least 1; on its normal offset s (1 − τ)/(1 − s τ), τ the record's growth (1e30 where
         // s τ ≥ 1), as `sa_offset_scale` (GpuShadowMap's docs).
-        let scale = ((2.0 * r + 1.0) / (2.0 * f64::from(rec.bias_radius).max(0.0) + 1.0)).max(1.0);
-        let tau = f64::from(rec.normal_offset_growth).max(0.0);
-        let offset_scale = if scale * tau < 1.0 {
-            scale * (1.0 - tau) / (1.0 - scale * tau)
-        } else {
-            1e30
-        };
-        let record_offset = f64::from(rec.normal_offset) * offset_scale;
+        let scale = kernel_scale(rec, path.radius);
+        let record_offset = record_offset(rec, path.radius);
         let (offset, fallback) = if path.flags & SA_LOCAL_NORMAL_OFFSET != 0 {
             match normal_offset_at(&m.wc, ClipDepth::ZeroToOne, self.res, p, n, self.light, r) {
                 Some(o) => (o * self.local_factor, false),
@@ -635,6 +708,11 @@ fn measure(
         shadow_lit: 0,
         detached: 0,
         max_lift_over_need: None,
+        offset_lookups: 0,
+        offset_unreachable: 0,
+        lift_over_need: None,
+        max_w_change: None,
+        offset_rel_diff: None,
     };
     let mut memo: HashMap<(usize, u32, i32, i32), bool> = HashMap::new();
     for (i, e) in exact.iter().enumerate() {
@@ -650,6 +728,9 @@ fn measure(
         let look = frame.lookup(m, e, path);
         let gpu = f64::from(out.texel[i][3]);
         sum.lookups += 1;
+        if path.offset() {
+            offset_lift(&mut sum, m, res, e, path, f64::from(out.lens[i][0]));
+        }
         if let Some(f) = look.fraction {
             sum.taps_checked += 1;
             // The GPU's fraction is a count over (2r + 1)² taps in f32: equal to far better than

@@ -172,6 +172,19 @@ fn fs_camera(v: VOut) -> FOut {
         }
     }
     var lens = vec2<f32>(-2.0);
+    if (part < count && g.faults.z >= 0.5 && facing > g.light.w) {
+        // The shader-path passes: the normal offset (world units) sa_visibility moves the lookup
+        // point by in the selected map, from the crate's functions as sa_visibility calls them
+        // (0 with neither offset flag); render-check measures the lookup point's lift with it.
+        let flags = u32(g.misc.z);
+        var offset = 0.0;
+        if ((flags & SA_LOCAL_NORMAL_OFFSET) != 0u) {
+            offset = sa_local_normal_offset(sa_map(part), p, n, l, r);
+        } else if ((flags & SA_NORMAL_OFFSET) != 0u) {
+            offset = sa_map(part).normal_offset * sa_offset_scale(sa_map(part), r);
+        }
+        lens = vec2<f32>(offset, 0.0);
+    }
     if (part < count && g.faults.z < 0.5) {
         // The camera in the records' space (the upload origin is the camera's position) and its
         // unit view axis (the eye's -z in world axes: minus the third row of rel_to_eye).

@@ -516,6 +516,39 @@ fn path_violations(p: &crate::paths::PathSummary) -> Vec<String> {
             p.detached
         ));
     }
+    let path = crate::paths::PATHS.iter().find(|q| q.name == name);
+    if path.is_some_and(|q| q.offset()) {
+        let slack = crate::paths::LIFT_SLACK;
+        match p.lift_over_need {
+            None => v.push(format!(
+                "lift_over_need in path {name} (the GPU's lookup point's lift over the need) \
+                 not measured: no lookup with a finite offset"
+            )),
+            Some([lo, hi]) => {
+                let d = p.offset_rel_diff.unwrap_or(f64::NAN);
+                if d.is_nan() || d > slack {
+                    v.push(format!(
+                        "offset_rel_diff in path {name} (the GPU's normal offset against the one \
+                         it is defined to be) = {d:.6}, limit ≤ {slack:.6}"
+                    ));
+                }
+                if lo.is_nan() || lo < 1.0 - slack {
+                    v.push(format!(
+                        "lift_over_need in path {name} (the least lift of the GPU's lookup point \
+                         over the need) = {lo:.6}, limit ≥ {:.6}",
+                        1.0 - slack
+                    ));
+                }
+                if local && (hi.is_nan() || hi > 1.0 + slack) {
+                    v.push(format!(
+                        "lift_over_need in path {name} (the largest lift of the GPU's lookup \
+                         point over the need) = {hi:.6}, limit ≤ {:.6}",
+                        1.0 + slack
+                    ));
+                }
+            }
+        }
+    }
     let f = p.taps_checked as f64 / p.lookups.max(1) as f64;
     if f.is_nan() || f < MIN_TAPS_CHECKED_FRACTION {
         v.push(format!(
