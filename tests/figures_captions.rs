@@ -631,7 +631,6 @@ fn lloyd2006_fig7() {
                     "(a)'s largest S̄ (fig7_names_e_and_the_projection_..., src/plot/hemisphere.rs)",
                 ),
             ),
-            ("2006", N::Given("the name lloyd2006-worst-case")),
             (
                 "1.224×10^{6}",
                 N::Measured(

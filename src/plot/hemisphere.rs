@@ -136,7 +136,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     // over the same grid (lloyd2006-worst-case).
     let min_area = super::worst::min_area::zp_min_area_worst(&view, 1, grid)?.0;
     let band = format!(
-        "(a)'s peak, {}, is the orientation rule's (lloyd2006-worst-case); minimum-area \
+        "(a)'s peak, {}, is the orientation rule's (see the worst-case figure); minimum-area \
          maps peak at {}.",
         fmt_times_ten(panels[0].max),
         fmt_times_ten(min_area),
@@ -158,7 +158,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let single_caption = format!(
         "Lloyd et al. 2006, Fig. 7: S̄, lights {step}° apart, azimuthal equidistant; rings: \
          elevation 10°, 20°, 30°, 60°; n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         θ\u{a0}=\u{a0}{theta:.0}°; (a)'s peak: see lloyd2006-worst-case.",
+         θ\u{a0}=\u{a0}{theta:.0}°; (a)'s peak: see the worst-case figure.",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     );
@@ -554,6 +554,11 @@ mod tests {
         assert!(text.contains(&want), "{want:?} in {text}");
         let want = format!("minimum-area maps peak at {}", fmt_times_ten(least));
         assert!(text.contains(&want), "{want:?} in {text}");
-        assert!(fig.single_caption.contains("lloyd2006-worst-case"));
+        // A reference a reader can follow, not the crate's file name (the sixth review,
+        // R6-lloyd2006-fig7-1: "(lloyd2006-worst-case)" in a journal caption).
+        for caption in [&text, &fig.single_caption] {
+            assert!(caption.contains("the worst-case figure"), "{caption}");
+            assert!(!caption.contains("lloyd2006-"), "{caption}");
+        }
     }
 }
