@@ -145,9 +145,9 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
          view θ\u{a0}=\u{a0}{phi:.0}° (Zhang's φ); light at \
          γ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). E_p, E_q: aliasing along the \
          screen's vertical and horizontal (×2: Zhang's span [−1,\u{a0}1]); m\u{a0}⊥\u{a0}light \
-         (Lloyd 2006): Barroso's m_z is 1/sin\u{a0}γ larger. LiSPSM's warp \
+         (Lloyd 2006). LiSPSM's warp \
          parameter n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
-         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}.",
+         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: no scene insets.",
         angles.join(", "),
         lispsm.join(", "),
     );

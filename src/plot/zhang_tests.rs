@@ -289,8 +289,7 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
 /// over the frustum's extent Δ = max − min of a·p at its eight corners, so its t texel is Δ wide
 /// across the light and E_p = 2 Δ/(2 z tan θ) at depth z; at γ = 30° Barroso's would be twice
 /// that. Each SSM cell at γ = 30° has the former (within 10⁻⁹), not the latter; both blocks'
-/// titles say "⊥ light" in both forms, and the two-column caption names Lloyd's convention and
-/// Barroso's factor.
+/// titles say "⊥ light" in both forms, and the two-column caption names Lloyd's convention.
 #[test]
 fn m_is_measured_across_the_light_and_the_figure_says_so() {
     use super::super::chart::read_svg::texts;
@@ -335,8 +334,7 @@ fn m_is_measured_across_the_light_and_the_figure_says_so() {
         assert!(marked >= 2, "{column:?}: {marked} texts say ⊥ light");
     }
     assert!(
-        fig.caption.contains("m\u{a0}⊥\u{a0}light (Lloyd 2006)")
-            && fig.caption.contains("Barroso's m_z is 1/sin\u{a0}γ larger"),
+        fig.caption.contains("m\u{a0}⊥\u{a0}light (Lloyd 2006)"),
         "{}",
         fig.caption
     );
