@@ -25,7 +25,8 @@
 //!   kernel's taps read on that plane (solved from the matrix; the normal offset at the offset
 //!   point's own footprint, the map's w followed along the normal), against the records' values.
 //! - **Texel size** ([`Geometry::texel_world_ratio`]): the largest texel edge over B measured
-//!   from the matrix's derivatives against the record's `texel_world`.
+//!   from the matrix's derivatives against the record's `texel_world`, and the largest along s
+//!   and along t against the `texel_extent` decoded from the record's uploaded bytes.
 
 use crate::scene::Scene;
 use crate::schemes::{clipmap_options, Built, Map, Scheme, View};
@@ -61,7 +62,9 @@ pub struct Geometry {
     /// every body vertex and normal of record / need, the larger of the constant over the largest
     /// need at α = 0 and the slope term over the largest need at α = 89°].
     pub depth_bias_ratio: [f64; 2],
-    /// The record's `texel_world` over the largest texel edge measured over the rebuilt B.
+    /// The record's `texel_world` over the largest texel edge measured over the rebuilt B, and
+    /// the uploaded bytes' `texel_extent` along s and t over the largest edge along each: the
+    /// ratio furthest from 1 over the three and the case's maps.
     pub texel_world_ratio: f64,
     /// `FrameMap::receivers_volume` against the rebuilt B ([`volume_distance`]), over the
     /// camera frustum's size (far · (1 + tan θ + tan θ · aspect)), largest over the maps.
@@ -650,16 +653,33 @@ pub fn measure(scheme: Scheme, view: &View, scene: &Scene, built: &Built, res: u
             }
         }
         bias(map, &body, l, map.res, &mut g);
-        // texel_world: the largest texel edge over B.
-        let measured = body
+        // texel_world: the largest texel edge over B; texel_extent: the largest edge along s
+        // and along t, read from the bytes uploaded (docs/renderer.md's layout: bytes 112 and
+        // 116, little-endian f32).
+        let [s, t] = body
             .iter()
             .filter_map(|&p| texel_edges(&map.built, l, p))
-            .fold(0.0f64, |m, (es, et)| m.max(es.length()).max(et.length()))
-            * 2.0
-            / f64::from(map.res);
-        let r = f64::from(map.record.texel_world) / measured;
-        if (r - 1.0).abs() >= (texel_ratio_worst - 1.0).abs() || r.is_nan() {
-            texel_ratio_worst = r;
+            .fold([0.0f64; 2], |[s, t], (es, et)| {
+                [s.max(es.length()), t.max(et.length())]
+            })
+            .map(|e| e * 2.0 / f64::from(map.res));
+        let bytes = map.record.to_bytes();
+        let at = |i: usize| {
+            f64::from(f32::from_le_bytes([
+                bytes[i],
+                bytes[i + 1],
+                bytes[i + 2],
+                bytes[i + 3],
+            ]))
+        };
+        for r in [
+            f64::from(map.record.texel_world) / s.max(t),
+            at(112) / s,
+            at(116) / t,
+        ] {
+            if (r - 1.0).abs() >= (texel_ratio_worst - 1.0).abs() || r.is_nan() {
+                texel_ratio_worst = r;
+            }
         }
     }
     g.texel_world_ratio = texel_ratio_worst;

@@ -223,6 +223,12 @@ fn the_geometry_targets_fail_on_faulty_output() {
         b.maps[3].record.texel_world *= 0.5;
     });
     assert!(fails(&g, "|texel_world_ratio − 1|"), "{g:?}");
+    // texel_extent uploaded s and t swapped (the second audit's F9), in a warped map whose
+    // texels' s and t edges differ: read from the record's bytes, both ratios leave 1.
+    let g = geometry("tilted_45", Scheme::Lispsm, |b| {
+        b.maps[0].record.texel_extent.swap(0, 1);
+    });
+    assert!(fails(&g, "|texel_world_ratio − 1|"), "{g:?}");
 }
 
 /// Cascades whose split ranges end 3 % past their maps (render-check's fault `splits-past`: the
