@@ -246,7 +246,8 @@ fn bare_scale_and_dpi_for_publication() {
     let plain_svg = std::fs::read_to_string(dir.join("lloyd2006-fig6.svg")).unwrap();
     let plain_png = std::fs::read(dir.join("lloyd2006-fig6.png")).unwrap();
     // The title and the caption as src/plot/lloyd2006.rs writes them.
-    let title = [">Maximum error and storage factor against η</text>"];
+    let title =
+        [">Maximum error and <tspan text-decoration=\"overline\">S</tspan> against η</text>"];
     let caption = "Lloyd et al. 2006, Fig. 6";
     assert!(title.iter().all(|t| plain_svg.contains(t)) && plain_svg.contains(caption));
     // 432 dpi by default (the PNG's 6 pixels per unit over the SVG's 1 unit per point × 72

@@ -94,3 +94,31 @@ fn barroso_fig5_single_labels_in_the_details_with_thin_spaces() {
         "Eq 19's depths not in {caption:?}"
     );
 }
+
+/// The page title of a figure: its text of the largest font size.
+fn page_title(all: &[read::Text]) -> String {
+    let top = all.iter().map(|t| t.fs).fold(0.0, f64::max);
+    all.iter()
+        .filter(|t| (t.fs - top).abs() < 1e-6)
+        .map(|t| t.content.clone())
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// R6-lloyd2006-fig6-1: the one-column figure is the two-column one re-laid-out, under the same
+/// title (two columns said "storage factor", one column "S̄", the key's symbol).
+#[test]
+fn lloyd2006_fig6_has_one_title_in_both_forms() {
+    let font = read::Font::dejavu();
+    let double = page_title(&read::texts(
+        &font,
+        &read::render_svg("lloyd2006-fig6", &Options::default()),
+    ));
+    let one = page_title(&read::texts(
+        &font,
+        &read::render_svg("lloyd2006-fig6", &single()),
+    ));
+    assert_eq!(double, one);
+    // S̄ is an overlined S (a tspan the reader flattens to "S").
+    assert_eq!(double, "Maximum error and S against η");
+}

@@ -302,10 +302,10 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
     );
     // One panel in both forms (the fifth review: a second panel of M_z on a linear axis took
     // half the figure to show the V that the log scale shows), no letter; its axis names the
-    // scale.
+    // scale. One title in both forms, S̄ as in the key (sixth review: "storage factor" in one).
     let double = Charts {
         size: FIG6_SIZE,
-        title: "Maximum error and storage factor against η".into(),
+        title: "Maximum error and S̄ against η".into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 6 (Eq 9–12), {config}, image and shadow map of equal \
              resolution. The values as they are (the paper scales each curve to one linear \
