@@ -2,7 +2,8 @@
 //! - barroso-fig5 in one column: the overviews (a), (c), (e) label no plane (their depths are
 //!   in the caption), so that the detail beside each gets the row's width: each plot about 1.5
 //!   times as wide as before (R6-barroso-fig5-2); the labels "z = 10" with thin spaces, as the
-//!   two columns write them (R6-barroso-fig5-3).
+//!   two columns write them (R6-barroso-fig5-3);
+//! - lloyd2006-fig6: one title in both forms (R6-lloyd2006-fig6-1).
 #![cfg(feature = "plot")]
 
 mod figures_style_read;
