@@ -167,8 +167,9 @@ pub struct Bias {
     pub slope_scaled_depth: f64,
     /// The map's depth units to add to the receiver's depth at any slope: the depth's largest
     /// step across the kernel's reach at a constant distance along the light (0 for an
-    /// orthographic map), and the `f32` rounding of the depths compared (8 ulps at depth 1),
-    /// signed as `slope_scaled_depth`.
+    /// orthographic map), and the `f32` rounding of the depths compared (8 ulps at stored depth
+    /// 1: 16 of [`ClipDepth::NegOneToOne`]'s clip depth, which a renderer stores halved), signed
+    /// as `slope_scaled_depth`.
     pub constant_depth: f64,
     /// The largest world-space extents over B of the texel's two edges, along clip s and t.
     pub texel_extent: (f64, f64),
@@ -293,7 +294,9 @@ impl FrameMap {
             normal_offset: bound,
             normal_offset_growth: offset_growth(g * across, g * slope),
             slope_scaled_depth: -sign * reach * slope,
-            constant_depth: -sign * (reach * across + 8.0 * f64::from(f32::EPSILON)),
+            // The rounding is the stored depths' (8 ulps at stored depth 1): OpenGL's [−1, 1]
+            // clip depth is stored halved, so its record holds twice that.
+            constant_depth: -sign * (reach * across + DEPTH_ROUNDING / stored_per_clip(depth)),
             texel_extent: (texel * ext_s, texel * ext_t),
         }
     }
@@ -322,11 +325,7 @@ pub fn normal_offset_at(
     let (es, et) = texel_vectors(m, l, p)?;
     let h = *m * p.extend(1.0);
     // Depth-attachment units: OpenGL's [−1, 1] is stored as its half plus ½.
-    let scale = if depth == ClipDepth::NegOneToOne {
-        0.5
-    } else {
-        1.0
-    };
+    let scale = stored_per_clip(depth);
     let grad = (m.row(2).truncate() * h.w - m.row(3).truncate() * h.z) * (scale / (h.w * h.w));
     let k = grad.dot(l);
     let reach = (r + 0.5 + TEXEL_SLACK) * 2.0 / f64::from(resolution);
@@ -335,6 +334,16 @@ pub fn normal_offset_at(
     let den = k.abs() - y * m.row(3).truncate().dot(n) / h.w;
     let o = y / den;
     (den > 0.0 && o.is_finite()).then_some(o)
+}
+
+/// Depth-attachment units per unit of `depth`'s clip depth: OpenGL's [−1, 1] is stored as its
+/// half plus ½, the other two as they are.
+fn stored_per_clip(depth: ClipDepth) -> f64 {
+    if depth == ClipDepth::NegOneToOne {
+        0.5
+    } else {
+        1.0
+    }
 }
 
 /// The sub-intervals of α ∈ [0, π/2] over which [`offset_bound`] bounds the normal offset.
