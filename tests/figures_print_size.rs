@@ -96,10 +96,9 @@ fn png_svg_and_pdf_print_at_one_size() {
                 "bare {bare}, scale {scale}: {px} px over {} in",
                 svg.0
             );
-            // The figure (one plot: 346 units wide since the fifth review's X2, not the page's
-            // 520) is 346 points, 4.81 inches, times the scale.
+            // The figure is 520 units wide: 520 points, 7.22 inches, times the scale.
             assert!(
-                (svg.0 - 346.0 / 72.0 * f64::from(scale)).abs() < 1e-9,
+                (svg.0 - 520.0 / 72.0 * f64::from(scale)).abs() < 1e-9,
                 "{svg:?}"
             );
             #[cfg(feature = "pdf")]

@@ -49,7 +49,13 @@ fn title_lines(font: &Font, svg: &str, column: Column) -> Vec<String> {
         Column::Double => 20.0,
         Column::Single => 16.0,
     } / 1.24;
-    let centre = f64::from(column.width()) / 2.0;
+    // The page's middle: the view box's (the single-plot figures are narrower than the
+    // column's page across two columns).
+    let head = &svg[..svg.find('>').unwrap_or(0)];
+    let centre = attr_str(head, "viewBox")
+        .and_then(|v| v.split_whitespace().nth(2)?.parse::<f64>().ok())
+        .unwrap_or(f64::from(column.width()))
+        / 2.0;
     texts(font, svg)
         .into_iter()
         .filter(|t| {

@@ -358,7 +358,7 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
         theta = view.half_fov().to_degrees(),
     );
     Ok(FromLight {
-        title: "The view frustum seen from a light behind the viewer",
+        title: "The frustum from a light behind",
         single_title: "The frustum from a light behind",
         caption,
         single_caption,

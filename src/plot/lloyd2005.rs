@@ -28,13 +28,6 @@ fn fmt_signed(v: f64) -> String {
 /// ran to the frame) and reads as its curve's by the far plane, where the five are apart.
 const FIG4_LABEL_AT: usize = 193;
 
-/// The same across two columns, where the page is 346 units wide (the fifth review, X2):
-/// z = 9.28, so that the labels, longer there, end 10 units inside the axis end.
-const FIG4_LABEL_AT_DOUBLE: usize = 183;
-
-/// Where Fig 4's ξ = ½ curve asks its label to end across two columns: z = 7.33.
-const FIG4_XI_PLUS_HALF_AT: usize = 140;
-
 /// Where Fig 4's ξ = −½ curve asks its label to end in one column: z = 8.01.
 const FIG4_XI_HALF_LABEL_AT: usize = 155;
 
@@ -84,18 +77,9 @@ fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
             .collect::<Result<Vec<_>, crate::Error>>()?;
         // Labelled by the curve's right end (the far plane), where the five are apart.
         let mut s = Series::line(label, pts, fig4_colour(i)).direct();
-        s.direct_at = Some(zs[if single {
-            FIG4_LABEL_AT
-        } else {
-            FIG4_LABEL_AT_DOUBLE
-        }]);
+        s.direct_at = Some(zs[FIG4_LABEL_AT]);
         // ξ = −½ a diamond, not the sweep's left triangle: the ξ = 0 and −1 curves carry ▲ and
         // ▼, and three turns of one triangle do not tell the curves apart in greyscale (X6).
-        // Two columns: ξ = ½'s label by z = 7.3, where the 346-unit page leaves it room
-        // between the PSM line and the g₀ label (by the far plane it ran to the frame).
-        if i == 1 && !single {
-            s.direct_at = Some(zs[FIG4_XI_PLUS_HALF_AT]);
-        }
         if i == 3 {
             s.shape = Some(Marker::Diamond);
             // One column: its label over its own curve by z = 8, where the lilac curve is
@@ -149,14 +133,14 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
     let head = format!(
         "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), f/n\u{a0}=\u{a0}{alpha}: g for the n′ of \
          ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM, n′\u{a0}=\u{a0}1\u{a0}+\u{a0}√(f/n)), −½ \
-         and −1 (uniform, n′\u{a0}=\u{a0}∞). Dotted: the least maximum \
+         and −1 (the uniform map, n′\u{a0}=\u{a0}∞). Dotted: the least maximum \
          g_0\u{a0}=\u{a0}1/√(f/n)\u{a0}=\u{a0}{g0:.3}."
     );
-    let tail = "g peaks on the near plane for ξ\u{a0}≤\u{a0}0, the far one for \
-                ξ\u{a0}>\u{a0}0.";
+    let tail = "The maximum of g is on the near plane for ξ\u{a0}≤\u{a0}0 and on the far plane \
+                for ξ\u{a0}>\u{a0}0.";
     Ok(Tall {
         charts: Charts {
-            size: (FIG4_WIDTH, 500),
+            size: (520, 500),
             title: "Error distribution g for several n′".into(),
             caption: vec![format!("{head} {tail}")],
             charts: vec![c],
@@ -178,10 +162,6 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
 /// chart's six direct labels need a plot about 270 units tall to keep clear of one another
 /// and of the curves: at 440 units the g₀ label covered the ξ = 0 curve's).
 const FIG4_SINGLE_HEIGHT: u32 = 480;
-
-/// Fig 4's width in the two-column form: one plot needs no page's width (the fifth review,
-/// X2: 7.2 in for one plot); 346 units, printed 346 pt (4.8 in), a column and a half.
-pub(crate) const FIG4_WIDTH: u32 = 346;
 
 /// Fig 4's colour of its `i`-th curve (ξ = 1, ½, 0, −½, −1): the schemes' colours for PSM
 /// (ξ = 1), LiSPSM (ξ = 0) and the uniform map (ξ = −1), and the parameter sweep's for the two
