@@ -100,7 +100,7 @@ fn disks(svg: &str) -> (Vec<((f64, f64), Vec<f64>)>, Vec<(String, f64)>) {
             }
         }
     }
-    arcs.sort_by(|a, b| b.0.cmp(&a.0));
+    arcs.sort_by_key(|a| std::cmp::Reverse(a.0));
     for (_, fitted, points, stroke, width) in arcs {
         let at = out
             .iter()

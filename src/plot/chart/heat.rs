@@ -409,7 +409,7 @@ pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
         (u + f64::from(base.0), v + f64::from(base.1))
     };
     let gaps = if key {
-        super::hemisphere_key::key_boxes(area, &to_px)?
+        super::hemisphere_key::key_boxes(area, to_px)?
     } else {
         Vec::new()
     };
@@ -449,7 +449,7 @@ pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
         Pos::new(HPos::Center, VPos::Top),
     )?;
     if key {
-        super::hemisphere_key::draw_ring_key(area, &to_px)?;
+        super::hemisphere_key::draw_ring_key(area, to_px)?;
     }
     Ok((top.max(0) as u32, bottom.max(0) as u32))
 }

@@ -99,6 +99,9 @@ fn key_style() -> TextStyle<'static> {
     TextStyle::from((FONT, size).into_font())
 }
 
+/// A ring label: its text, its centre and its box (units of its area).
+type KeyLabel = (&'static str, (i32, i32), [i32; 4]);
+
 /// Each label of [`KEY`] in a hemisphere panel whose disk point `(x, y)` (radius 1) lies at
 /// `to_px((x, y))` of `area`: its text, its centre and the box [x min, y min, x max, y max]
 /// (units of `area`) its glyphs take and a unit round them, from 0.77 h above the centre to
@@ -107,7 +110,7 @@ fn key_style() -> TextStyle<'static> {
 fn key_labels<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     to_px: impl Fn((f64, f64)) -> (i32, i32),
-) -> Result<Vec<(&'static str, (i32, i32), [i32; 4])>, Fail> {
+) -> Result<Vec<KeyLabel>, Fail> {
     let style = key_style();
     let mut out = Vec::new();
     for (text, elevation, around) in KEY {
