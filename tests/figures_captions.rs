@@ -765,7 +765,10 @@ fn zhang_fig3() {
                 N::Given("Zhang's screen and map span [−1, 1] (read unsigned after the bracket)"),
             ),
             ("1", N::Given("Zhang's screen and map span [−1, 1]")),
-            ("2006", N::Given("Lloyd et al.'s year: their m across the light")),
+            (
+                "2006",
+                N::Given("Lloyd et al.'s year: their m across the light"),
+            ),
             ("11.00", N::Value(lambda(90.0))),
             ("12.70", N::Value(lambda(60.0))),
             ("22.00", N::Value(lambda(30.0))),

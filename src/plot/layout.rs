@@ -332,7 +332,11 @@ impl Fig8 {
         // Room under the drawing for the tags of parts too small to hold them: in one
         // column's smaller plot 0.14 of the height was under the tags' row, which the x axis
         // then struck through (the sixth review, R6-lloyd2005-fig8-2).
-        let room = if column() == Column::Single { 0.3 } else { 0.14 };
+        let room = if column() == Column::Single {
+            0.3
+        } else {
+            0.14
+        };
         let lo = lo - DVec2::new(0.0, room * (hi.y - lo.y));
         let title = "(a) from the light";
         let (xa, ya) = equal_aspect(

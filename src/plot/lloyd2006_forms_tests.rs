@@ -197,10 +197,7 @@ fn fig12_titles_claim_only_what_is_drawn() {
     let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
     let single = &fig.single.as_ref().unwrap().page.charts[0];
     for (c, title) in [
-        (
-            &fig.page.charts[0],
-            "(a) overhead ▲ solid, behind ⬢ dashed",
-        ),
+        (&fig.page.charts[0], "(a) overhead ▲ solid, behind ⬢ dashed"),
         (single, "overhead ▲ solid, behind ⬢ dashed"),
     ] {
         assert_eq!(c.title, title);
