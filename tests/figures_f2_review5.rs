@@ -132,30 +132,6 @@ fn barroso_fig5_far_face_is_a_gutter_label() {
     }
 }
 
-/// §4.12.5: in one column each plane's label names its plane ("z = 3.162", "n = 1", with thin
-/// spaces since figure review 6; only the details label planes, R6-barroso-fig5-2), and no
-/// label is a bare depth that reads as a tick value.
-#[test]
-fn barroso_fig5_single_labels_name_their_planes() {
-    let font = read::Font::dejavu();
-    let all = read::texts(&font, &read::render_svg("barroso-fig5", &single()));
-    let has = |c: &str| all.iter().any(|t| t.content == c);
-    for want in [
-        "n = 1",
-        "z = 3.162",
-        "z = 10",
-        "z = 6.041",
-        "z = 16.13",
-        "z = 40.81",
-    ] {
-        let want = want.replace(' ', "\u{2009}");
-        assert!(has(&want), "no label {want:?}");
-    }
-    for bare in ["3.162", "31.62", "6.041", "16.13", "40.81"] {
-        assert!(!has(bare), "a bare depth {bare:?}");
-    }
-}
-
 /// X3: the diagrams seen from the light name their axes "light-view x" (right in the light's
 /// view) and "light-view y" (up), never "light z" (z is the eye depth of the planes' labels) nor
 /// "−x in light space", in every form of both figures.

@@ -47,7 +47,8 @@ fn barroso_fig5_single_plots_take_the_row() {
     assert!(b >= 45.0, "(b) −5…5 over {b:.1} units");
 }
 
-/// R6-barroso-fig5-2/-3: in one column only the details label their planes, each "z = 10"
+/// R6-barroso-fig5-2/-3 (and the fifth review's §4.12.5): in one column only the details label
+/// their planes, each "z = 10"
 /// with thin spaces (U+2009) round "=", never set close ("z=10") nor a bare depth; the
 /// overviews' depths (z = 3.162, 10, 31.62 for Eq 5 and 6.041, 16.13, 40.81 for Eq 19,
 /// recomputed here: 100^(i/4) and the figure's other labels) are in the caption.
@@ -69,9 +70,13 @@ fn barroso_fig5_single_labels_in_the_details_with_thin_spaces() {
         assert!(has(&thin), "no label {thin:?}");
         assert!(!has(&want.replace(' ', "")), "{want:?} set close");
     }
-    // The overviews' far planes are not labelled: no "f = 100", no "z = 31.62".
-    for gone in ["f\u{2009}=\u{2009}100", "z\u{2009}=\u{2009}31.62", "31.62"] {
+    // The overviews' far planes are not labelled: no "f = 100", no "z = 31.62"; and no label
+    // is a bare depth that reads as a tick value (fifth review §4.12.5).
+    for gone in ["f\u{2009}=\u{2009}100", "z\u{2009}=\u{2009}31.62"] {
         assert!(!has(gone), "a label {gone:?}");
+    }
+    for bare in ["3.162", "31.62", "6.041", "16.13", "40.81"] {
+        assert!(!has(bare), "a bare depth {bare:?}");
     }
     let caption: String = all
         .iter()

@@ -15,9 +15,11 @@
 //! module's OpenGL branches (sa_project's 0.5 z + 0.5, the offset's scale, the bias's halving)
 //! breaks it; render-check's plain run uploads no OpenGL record and cannot see them.
 
+mod common;
+
 use glam::{DMat4, DVec3};
 use render_check::compute;
-use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, FrameInput, FrameMap, GpuShadowMap};
+use shadow_aliasing::frame::{frame, FrameMap, GpuShadowMap};
 use shadow_aliasing::maps::ClipDepth;
 
 /// The texels a side of the map (small: the stored depths travel in the cases buffer).
@@ -135,16 +137,8 @@ impl Rng {
 /// The frame's first map: the default scheme's warped (perspective) map of a ground box under an
 /// oblique light, at `RES` texels.
 fn map(light: DVec3) -> FrameMap {
-    let ground = [Aabb::new([-60.0, -1.0, -60.0], [60.0, 0.0, 60.0]).unwrap()];
-    let view = glam::dcamera::rh::view::look_at_mat4(
-        DVec3::new(0.0, 6.0, 20.0),
-        DVec3::new(2.0, 0.0, -10.0),
-        DVec3::Y,
-    );
-    let camera = Camera::new(view, 0.5, 120.0, 0.6, 1.5).unwrap();
-    let input = FrameInput::new(camera, light, RES, 720)
-        .receivers(Bound::Boxes(&ground))
-        .casters(Bound::Boxes(&ground));
+    let ground = common::ground();
+    let input = common::input(&ground, light, RES);
     let f = frame(&input).unwrap();
     f.maps()[0]
 }

@@ -8,8 +8,10 @@
 //! under it, within its rounding. A warped map (the default scheme) has texels of different s and
 //! t edges, so extents written in the wrong order fail.
 
+mod common;
+
 use glam::{DMat2, DMat4, DVec2, DVec3};
-use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, FrameInput, FrameScheme};
+use shadow_aliasing::frame::{frame, FrameScheme};
 use shadow_aliasing::maps::ClipDepth;
 use shadow_aliasing::maps::WarpRule;
 
@@ -44,13 +46,8 @@ fn f32_at(bytes: &[u8], at: usize) -> f64 {
 
 #[test]
 fn the_uploaded_texel_extents_are_the_measured_s_and_t_edges() {
-    let ground = [Aabb::new([-60.0, -1.0, -60.0], [60.0, 0.0, 60.0]).unwrap()];
-    let view = glam::dcamera::rh::view::look_at_mat4(
-        DVec3::new(0.0, 6.0, 20.0),
-        DVec3::new(2.0, 0.0, -10.0),
-        DVec3::Y,
-    );
-    let eye_to_world = view.inverse();
+    let ground = common::ground();
+    let eye_to_world = common::view().inverse();
     let light = DVec3::new(0.3, -0.8, -0.4);
     let l = light.normalize();
     let mut anisotropic = 0;
@@ -58,11 +55,7 @@ fn the_uploaded_texel_extents_are_the_measured_s_and_t_edges() {
         FrameScheme::Single(WarpRule::Lispsm),
         FrameScheme::Single(WarpRule::Uniform),
     ] {
-        let camera = Camera::new(view, 0.5, 120.0, 0.6, 1.5).unwrap();
-        let input = FrameInput::new(camera, light, 1024, 720)
-            .receivers(Bound::Boxes(&ground))
-            .casters(Bound::Boxes(&ground))
-            .scheme(scheme);
+        let input = common::input(&ground, light, 1024).scheme(scheme);
         let f = frame(&input).unwrap();
         for (k, m) in f.maps().iter().enumerate() {
             for depth in [

@@ -6,9 +6,11 @@
 //! offset covers that radius's record and is the record's scaled by s (1 − τ)/(1 − s τ)
 //! (`sa_offset_scale`: a perspective map's offset outgrows the kernel's reach).
 
+mod common;
+
 use glam::DVec3;
 use render_check::compute;
-use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, FrameInput, GpuShadowMap};
+use shadow_aliasing::frame::{frame, GpuShadowMap};
 use shadow_aliasing::maps::ClipDepth;
 
 /// The entry point after `compute::harness_prelude("i32")` (the cases are the shader's radii): it
@@ -47,16 +49,8 @@ fn run(records: &[GpuShadowMap], radii: &[i32]) -> Vec<[f32; 3]> {
 
 #[test]
 fn a_pcf_record_filtered_with_its_own_radius_counts_the_kernel_once() {
-    let ground = [Aabb::new([-60.0, -1.0, -60.0], [60.0, 0.0, 60.0]).unwrap()];
-    let view = glam::dcamera::rh::view::look_at_mat4(
-        DVec3::new(0.0, 6.0, 20.0),
-        DVec3::new(2.0, 0.0, -10.0),
-        DVec3::Y,
-    );
-    let camera = Camera::new(view, 0.5, 120.0, 0.6, 1.5).unwrap();
-    let input = FrameInput::new(camera, DVec3::new(0.3, -0.8, -0.4), 1024, 720)
-        .receivers(Bound::Boxes(&ground))
-        .casters(Bound::Boxes(&ground));
+    let ground = common::ground();
+    let input = common::input(&ground, DVec3::new(0.3, -0.8, -0.4), 1024);
     let f = frame(&input).unwrap();
     let m = &f.maps()[0];
     let depth = ClipDepth::ZeroToOne;

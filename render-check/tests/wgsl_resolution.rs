@@ -6,10 +6,12 @@
 //! an occluder outside the map's own texels, as a smaller map drawn into a larger texture layer
 //! leaves the rest of the layer: a kernel clamped to any other resolution reads it.
 
+mod common;
+
 use glam::{DMat4, DVec3, DVec4};
 use render_check::compute;
 use shadow_aliasing::analytic::partition::SplitScheme;
-use shadow_aliasing::frame::{frame, Aabb, Bound, Camera, CascadeSplits, FrameInput, FrameScheme};
+use shadow_aliasing::frame::{frame, CascadeSplits, FrameScheme};
 use shadow_aliasing::maps::{ClipDepth, WarpRule};
 
 const EACH: [u32; 2] = [16, 64];
@@ -43,16 +45,8 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
 
 #[test]
 fn each_map_is_looked_up_at_its_own_resolution() {
-    let ground = [Aabb::new([-60.0, -1.0, -60.0], [60.0, 0.0, 60.0]).unwrap()];
-    let view = glam::dcamera::rh::view::look_at_mat4(
-        DVec3::new(0.0, 6.0, 20.0),
-        DVec3::new(2.0, 0.0, -10.0),
-        DVec3::Y,
-    );
-    let camera = Camera::new(view, 0.5, 120.0, 0.6, 1.5).unwrap();
-    let input = FrameInput::new(camera, DVec3::new(0.3, -0.8, -0.4), 1024, 720)
-        .receivers(Bound::Boxes(&ground))
-        .casters(Bound::Boxes(&ground))
+    let ground = common::ground();
+    let input = common::input(&ground, DVec3::new(0.3, -0.8, -0.4), 1024)
         .scheme(FrameScheme::Cascades {
             splits: CascadeSplits::Scheme {
                 scheme: SplitScheme::Practical { lambda: 0.5 },
