@@ -201,6 +201,7 @@ fn check(name: &str, dir: &Path) {
             );
         }
     }
+    text_margin_below(name, &bare_svg);
 
     // The PNG: the captioned PNG's rows of the band, pixel for pixel.
     let cap_png = image::load_from_memory(&read(&cap_dir, "png"))
@@ -238,6 +239,45 @@ fn check(name: &str, dir: &Path) {
             .collect();
         assert_eq!(media, vec![0.0, 0.0, vb[2], vb[3]], "{name}: PDF page");
     }
+}
+
+/// The least white under the lowest text of a bare SVG, in units: its glyphs' bottom (DejaVu's
+/// descent) to the view box's bottom. The sixth figure review found 0.3 units under a colour
+/// bar's name (lloyd2006-fig7 in one column, martin-tan-fig6 in two): a crop on the descender.
+const BARE_TEXT_MARGIN: f64 = 1.5;
+
+fn text_margin_below(name: &str, bare_svg: &str) {
+    let (vb, _, _) = view_box(bare_svg);
+    let bottom = vb[1] + vb[3];
+    let lowest = elements(bare_svg)
+        .into_iter()
+        .filter(|e| e.starts_with("text"))
+        .filter_map(extent)
+        .map(|(_, b)| b)
+        .fold(f64::NEG_INFINITY, f64::max);
+    assert!(
+        bottom - lowest >= BARE_TEXT_MARGIN,
+        "{name}: {:.2} units of white under the lowest text (at {lowest:.2}, the crop at {bottom})",
+        bottom - lowest
+    );
+}
+
+/// The one-column bare figures keep white under their lowest text too (SVG only: the checks of
+/// `check` above are the two-column figures').
+#[test]
+fn one_column_bare_figures_keep_white_under_their_text() {
+    let opts = Options {
+        bare: true,
+        column: shadow_aliasing::plot::Column::Single,
+        ..Options::default()
+    };
+    let dir = out_dir("figures-bare-single");
+    for name in FIGURES {
+        render_with(name, &dir, Format::Svg, &opts).unwrap();
+        let svg = std::fs::read_to_string(dir.join(format!("{name}.svg"))).unwrap();
+        text_margin_below(name, &svg);
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// One test per figure, so that they run in parallel and a failure names its figure.

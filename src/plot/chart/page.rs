@@ -18,9 +18,13 @@ thread_local! {
     static COLUMN: Cell<Column> = const { Cell::new(Column::Double) };
 }
 
-/// The space a bare page keeps above the captioned page's body, in units (below it, the body's
-/// own bottom margin is left: the caption starts 7 units under it).
+/// The space a bare page keeps above the captioned page's body, in units.
 const BARE_PAD: u32 = 6;
+
+/// The space a bare page keeps below the captioned page's body, in units: text drawn at the
+/// body's bottom edge (a colour bar's or an axis's name) kept as little as 0.3 units of white
+/// under it (the sixth figure review). The caption's glyphs start about 5 units under the body.
+const BARE_PAD_BELOW: u32 = 2;
 
 /// Runs `draw` with every page it draws bare (no title, no caption) or not, and laid out for
 /// `column`: the page options of `Options::bare` and `Options::column`, set for the one figure
@@ -43,8 +47,8 @@ pub(crate) fn column() -> Column {
 
 /// The rows `[top, bottom)` of the page, in units, that the figure drawn last on this thread in
 /// [`with_page`] keeps: for a bare page, the captioned page's body (the area between its title
-/// and its caption) with [`BARE_PAD`] units above it; `None` for a captioned page (all of it is
-/// kept).
+/// and its caption) with [`BARE_PAD`] units above it and [`BARE_PAD_BELOW`] below; `None` for a
+/// captioned page (all of it is kept).
 pub(crate) fn bare_rows() -> Option<(u32, u32)> {
     ROWS.with(Cell::get)
 }
@@ -86,7 +90,7 @@ pub(crate) fn frame<DB: DrawingBackend>(
     if bare {
         let rows = (
             top.saturating_sub(BARE_PAD),
-            h.saturating_sub(bottom as u32),
+            (h.saturating_sub(bottom as u32) + BARE_PAD_BELOW).min(h),
         );
         ROWS.with(|r| r.set(Some(rows)));
         return Ok(body);
