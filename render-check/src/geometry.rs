@@ -302,9 +302,10 @@ pub fn clipmap_offset(t: f64, aspect: f64, height: u32, res: u32, unit: f64, bia
     matched.max((k / unit).log2())
 }
 
-/// The texel edge vectors of a map (eye → clip `m`) at `p`: the eye-space vectors ⊥ `l` that move
-/// clip s, t by one unit each, from the exact derivatives of (x/w, y/w).
-fn texel_edges(m: &DMat4, l: DVec3, p: DVec3) -> Option<(DVec3, DVec3)> {
+/// The texel edge vectors of a map (eye → clip `m`, or any space → clip) at `p`: the vectors ⊥
+/// `l` in that space that move clip s, t by one unit each, from the exact derivatives of (x/w,
+/// y/w); `None` where they do not exist (the map degenerate at `p`).
+pub fn texel_edges(m: &DMat4, l: DVec3, p: DVec3) -> Option<(DVec3, DVec3)> {
     let h = *m * p.extend(1.0);
     let row = |i: usize| m.row(i).truncate();
     let ds = (row(0) * h.w - row(3) * h.x) / (h.w * h.w);

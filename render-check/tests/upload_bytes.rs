@@ -10,28 +10,15 @@
 
 mod common;
 
-use glam::{DMat2, DMat4, DVec2, DVec3};
+use glam::{DMat4, DVec3};
 use shadow_aliasing::frame::{frame, FrameScheme};
 use shadow_aliasing::maps::ClipDepth;
 use shadow_aliasing::maps::WarpRule;
 
-/// The world-space vectors ⊥ `l` that move clip s and t by one unit each at `p` under `m`.
+/// The world-space vectors ⊥ `l` that move clip s and t by one unit each at `p` under `m`
+/// (render-check's own derivatives, as the plain run measures the texel).
 fn edges(m: &DMat4, l: DVec3, p: DVec3) -> (DVec3, DVec3) {
-    let h = *m * p.extend(1.0);
-    let row = |i: usize| m.row(i).truncate();
-    let ds = (row(0) * h.w - row(3) * h.x) / (h.w * h.w);
-    let dt = (row(1) * h.w - row(3) * h.y) / (h.w * h.w);
-    let u1 = l.any_orthonormal_vector();
-    let u2 = l.cross(u1);
-    let inv = DMat2::from_cols(
-        DVec2::new(ds.dot(u1), dt.dot(u1)),
-        DVec2::new(ds.dot(u2), dt.dot(u2)),
-    )
-    .inverse();
-    (
-        u1 * inv.col(0).x + u2 * inv.col(0).y,
-        u1 * inv.col(1).x + u2 * inv.col(1).y,
-    )
+    render_check::geometry::texel_edges(m, l, p).expect("a map that is not degenerate at p")
 }
 
 /// Little-endian `f32` at byte `at`.
