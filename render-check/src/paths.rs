@@ -260,6 +260,18 @@ struct MapModel {
     reversed: bool,
 }
 
+impl MapModel {
+    /// The light-clip position of `q` and its map position (s, t) in texels of a `res`-texel map.
+    fn texel(&self, res: f64, q: DVec3) -> (glam::DVec4, f64, f64) {
+        let h = self.wc * q.extend(1.0);
+        (
+            h,
+            (h.x / h.w + 1.0) * 0.5 * res,
+            (h.y / h.w + 1.0) * 0.5 * res,
+        )
+    }
+}
+
 /// The kernel's factor on a record's depth bias for a PCF kernel of radius `r`:
 /// s = (2r + 1)/(2 bias_radius + 1), at least 1 (GpuShadowMap's docs).
 fn kernel_scale(rec: &GpuShadowMap, r: u32) -> f64 {
@@ -295,8 +307,7 @@ struct Plane {
 impl Plane {
     /// The plane of `p` with normal `n` in `m`.
     fn new(m: &MapModel, res: f64, p: DVec3, n: DVec3) -> Option<Plane> {
-        let h = m.wc * p.extend(1.0);
-        let (s, t) = ((h.x / h.w + 1.0) * 0.5 * res, (h.y / h.w + 1.0) * 0.5 * res);
+        let (h, s, t) = m.texel(res, p);
         let d = plane_depth(m, res, s, t, p, n)?;
         let gs = plane_depth(m, res, s + 1.0, t, p, n)? - d;
         let gt = plane_depth(m, res, s, t + 1.0, p, n)? - d;
@@ -385,8 +396,7 @@ impl Frame<'_> {
             (0.0, false)
         };
         let q = p + n * offset;
-        let h = m.wc * q.extend(1.0);
-        let (s, t) = ((h.x / h.w + 1.0) * 0.5 * res, (h.y / h.w + 1.0) * 0.5 * res);
+        let (h, s, t) = m.texel(res, q);
         let here = plane.at(s, t);
         let slope = plane.slope();
         let off = |v: f64| !(0.0..res).contains(&v);

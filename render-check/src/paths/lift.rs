@@ -8,8 +8,7 @@ use super::{need, record_offset, Exact, MapModel, Path, PathSummary};
 /// The lift of the lookup point p + `o` n over the plane of `e` (depth [0, 1]: the plane's depth
 /// at the point's map position less the point's own), from the map's matrix in `f64`.
 fn lift_at(m: &MapModel, res: f64, e: &Exact, o: f64) -> Option<f64> {
-    let h = m.wc * (e.p + e.n * o).extend(1.0);
-    let (s, t) = ((h.x / h.w + 1.0) * 0.5 * res, (h.y / h.w + 1.0) * 0.5 * res);
+    let (h, s, t) = m.texel(res, e.p + e.n * o);
     let lift = e.plane.at(s, t) - h.z / h.w;
     (h.w > 0.0 && lift.is_finite()).then_some(lift)
 }
