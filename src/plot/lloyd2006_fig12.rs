@@ -1,0 +1,274 @@
+//! Lloyd et al. 2006 Fig 12: the storage factor S̄ of ZP, ZP+W and FP+ZP+W against the number
+//! of shadow maps, with the light overhead and behind (f/n = 1000, θ = 30°).
+
+use super::super::chart::{
+    fmt_plain, Axis, Charts, LineChart, Look, Marker, Note, Series, PALETTE, SHARED,
+};
+use super::super::keyed::{Keyed, SINGLE_HEIGHT};
+use super::super::{Column, Fail};
+use super::{sci, unjoined, SCHEME_WORDS, SINGLE_S_AXIS, THETA_DEG};
+use crate::analytic::partition::{scheme_storage_factor, shadow_map_count, Scheme, SchemeLight};
+use crate::ViewFrustum;
+
+/// The top of Fig 12 (b)'s note on the 17-map pair, in S̄: under ZP's curve (37.56 at its
+/// least), above FP+ZP+W's 21-map hexagon (30.8).
+const FIG12_NOTE_TOP: f64 = 35.5;
+
+/// The depth ratio f/n of Fig 12.
+pub(in crate::plot) const FIG12_RATIO: f64 = 1000.0;
+
+/// Fig 12: S̄ against the number of shadow maps for ZP, ZP+W and FP+ZP+W, light overhead and
+/// behind (f/n = 1000, θ = 30°).
+///
+/// The number of maps of FP+ZP+W is 4k + 1 for both light directions
+/// ([`shadow_map_count`] for the light behind): a scheme keeps its maps whatever the light, which
+/// is how §5.3 counts them ("only one z-partitioning for every four shadow maps", Eq 23).
+pub(in crate::plot) fn fig12() -> Result<Keyed, Fail> {
+    let ratio = FIG12_RATIO;
+    let view = ViewFrustum::new(1.0, ratio, THETA_DEG.to_radians())?;
+    // The light-behind crossover: ZP with as many maps as FP+ZP+W with k = 3 and 4 per face.
+    let behind = |scheme: Scheme, k: usize| -> Result<f64, crate::Error> {
+        scheme_storage_factor(scheme, SchemeLight::Behind, &view, k)
+    };
+    let (j3, j4) = (
+        shadow_map_count(Scheme::FpZpW, SchemeLight::Behind, 3)?,
+        shadow_map_count(Scheme::FpZpW, SchemeLight::Behind, 4)?,
+    );
+    let (zp3, fp3) = (behind(Scheme::Zp, j3)?, behind(Scheme::FpZpW, 3)?);
+    let (zp4, fp4) = (behind(Scheme::Zp, j4)?, behind(Scheme::FpZpW, 4)?);
+    // ZP with one map, far above the rest (10⁶ behind): off the scale, its value written.
+    let zp1 = (
+        scheme_storage_factor(Scheme::Zp, SchemeLight::Overhead, &view, 1)?,
+        behind(Scheme::Zp, 1)?,
+    );
+    // The half field of view of each face's sub-frustum in Eq 21, read back from FP+ZP+W's S̄
+    // behind: S̄ = 4k((f/n)^{1/k} − 1)/(2 tan θ_eff) + 1 (Eq 21 with the k z-partitions of each
+    // face, Eq 18, and the one map of the near plane), whatever the frustum's θ.
+    let k = 4.0;
+    let tan_eff = 4.0 * k * (ratio.powf(1.0 / k) - 1.0) / (2.0 * (fp4 - 1.0));
+    let eff = format!(
+        "tan\u{a0}θ_{{eff}}\u{a0}=\u{a0}{} ({:.0}°)",
+        fmt_plain(tan_eff),
+        tan_eff.atan().to_degrees()
+    );
+    let nb = |t: &str| t.replace(' ', "\u{a0}");
+    let (a, zoom) = fig12_panels(&view, Column::Double)?;
+    let mut zoom = zoom;
+    // Under the 17-map pair it states, inside the plot, each value with its scheme (the bare
+    // figure has no caption to say which is which): two lines, so that the second ends left
+    // of the 21-map hexagon.
+    for (at, text) in [
+        (FIG12_NOTE_TOP, format!("{j4} maps: FP+ZP+W {fp4:.2}")),
+        (FIG12_NOTE_TOP - 1.9, format!("ZP = ZP+W {zp4:.2}")),
+    ] {
+        zoom.notes.push(Note {
+            at: (11.0, at),
+            text,
+            colour: PALETTE[6],
+        });
+    }
+    let double = Charts {
+        size: (520, 560),
+        title: "Storage factor against the number of shadow maps".into(),
+        caption: vec![format!(
+            "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. {SCHEME_WORDS} FP+ZP+W uses {} \
+             maps. Behind, ZP+W equals ZP, and FP+ZP+W's face sub-frusta have {eff} \
+             (Eq 21, any θ). ZP with one map, off the scale: {} overhead, {} behind. \
+             (b): with {j3} maps ZP is lower ({zp3:.1} against {fp3:.1}); \
+             with {j4}, FP+ZP+W ({fp4:.2} against {zp4:.2}).",
+            nb(&format!("f/n = {ratio}")),
+            nb(&format!("θ = {THETA_DEG}")),
+            nb("4k + 1"),
+            sci(zp1.0),
+            sci(zp1.1),
+        )],
+        charts: vec![a, zoom],
+    };
+    let (mut a, _) = fig12_panels(&view, Column::Single)?;
+    a.y.label = SINGLE_S_AXIS.into();
+    // One panel: no letter.
+    a.title = FIG12_A_TITLE[4..].into();
+    let single = Charts {
+        size: (Column::Single.width(), SINGLE_HEIGHT),
+        title: "S̄ against the number of maps".into(),
+        caption: vec![format!(
+            "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. {SCHEME_WORDS} FP+ZP+W uses {} \
+             maps, its faces behind {}; at {j4} maps {fp4:.2} to ZP's {zp4:.2}.",
+            nb(&format!("f/n = {ratio}")),
+            nb(&format!("θ = {THETA_DEG}")),
+            nb("4k + 1"),
+            // Without the angle (45°) the two-column caption adds: five lines.
+            nb(&format!("tan θ_{{eff}} = {}", fmt_plain(tan_eff))),
+        )],
+        charts: vec![a],
+    };
+    Ok(Keyed {
+        single: Some(Box::new(Keyed::new(single, Some(0)))),
+        ..Keyed::new(double, Some(0))
+    })
+}
+
+/// Fig 12 (a)'s title: it names each light's line style and FP+ZP+W's marker (the fifth
+/// review: "light overhead and behind" needed the key to tell the two families apart).
+const FIG12_A_TITLE: &str = "(a) overhead ▲ solid, behind ⬢ dashed";
+
+/// Fig 12's panels for the page `layout`: (a) every scheme for both lights, its key grouped
+/// by light (two columns, overhead and behind, across two page columns; one column, overhead
+/// first, in one), and (b) the light-behind crossover enlarged.
+fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineChart), Fail> {
+    // Both lights in one panel, told apart by the title and the key: overhead solid (FP+ZP+W
+    // triangles), behind the dashed ZP = ZP+W line and FP+ZP+W's hexagons (a title "behind
+    // (dashed)" was wrong for the hexagons, the fourth review).
+    let mut c = LineChart::new(
+        FIG12_A_TITLE,
+        Axis::integer("number of shadow maps", 0.0, 40.0),
+        // To the data from 2 maps on: 6.5 (ZP+W at 40 maps) to 2000 (ZP behind with 2 maps).
+        Axis::log10("S̄ (texels per image pixel, log scale)", 4.0, 1e4).in_powers(),
+    );
+    let schemes = [
+        (Scheme::Zp, "ZP", Look::Zp.colour()),
+        (Scheme::ZpW, "ZP+W", Look::ZpW.colour()),
+        (Scheme::FpZpW, "FP+ZP+W", Look::FpZpW.colour()),
+    ];
+    // Behind, ZP+W equals ZP (a square frustum cannot be warped): one line. The key's order:
+    // entries row by row, so two columns of overhead | behind, or overhead's three above
+    // behind's two.
+    use SchemeLight::{Behind, Overhead};
+    let series = match layout {
+        Column::Double => {
+            c.legend_columns = Some(2);
+            [
+                (Scheme::Zp, Overhead),
+                (Scheme::Zp, Behind),
+                (Scheme::ZpW, Overhead),
+                (Scheme::FpZpW, Behind),
+                (Scheme::FpZpW, Overhead),
+            ]
+        }
+        Column::Single => {
+            c.legend_columns = Some(1);
+            [
+                (Scheme::Zp, Overhead),
+                (Scheme::ZpW, Overhead),
+                (Scheme::FpZpW, Overhead),
+                (Scheme::Zp, Behind),
+                (Scheme::FpZpW, Behind),
+            ]
+        }
+    };
+    for (scheme, light) in series {
+        let (_, name, colour) = schemes
+            .into_iter()
+            .find(|s| s.0 == scheme)
+            .ok_or_else(|| Fail::Draw(format!("Fig 12 has no {scheme:?}")))?;
+        let light_name = match light {
+            Behind => "behind",
+            Overhead => "overhead",
+        };
+        let mut pts = Vec::new();
+        for k in 1..=40usize {
+            let maps = shadow_map_count(scheme, Behind, k)?;
+            if maps > 40 {
+                break;
+            }
+            pts.push((maps as f64, scheme_storage_factor(scheme, light, view, k)?));
+        }
+        let s = if scheme == Scheme::FpZpW {
+            // Defined only at 4k + 1 maps: markers, not joined across the counts between, in
+            // FP+ZP+W's green of Fig 13 and the worst-case figure for both lights: triangles
+            // overhead, hexagons behind.
+            let shape = match light {
+                Overhead => None,
+                Behind => Some(Marker::Hexagon),
+            };
+            Series {
+                width: 3,
+                shape,
+                ..Series::line(format!("{name}, {light_name}"), unjoined(&pts), colour)
+                    .with_markers()
+            }
+        } else if light == Behind {
+            // One curve for two schemes, in the neutral colour of shared curves, dashed and
+            // without markers, as in (b): its key is a line sample.
+            c.series.push(Series {
+                label: None,
+                ..Series::line("", pts, SHARED).dashed()
+            });
+            Series::line("ZP = ZP+W, behind", Vec::new(), SHARED).reference()
+        } else {
+            // Every count: a line, with a few markers along it (not one per count), at counts
+            // 4k + 3 ([`FIG12_ZP_MARKS`]), two counts from every FP+ZP+W triangle at 4k + 1
+            // (the fifth review: ZP's circle at 36 lay under FP+ZP+W's triangle at 37).
+            let counts: &[f64] = if scheme == Scheme::Zp {
+                &FIG12_ZP_MARKS
+            } else {
+                &FIG12_ZP_W_MARKS
+            };
+            let marks: Vec<(f64, f64)> = pts
+                .iter()
+                .copied()
+                .filter(|p| counts.contains(&p.0))
+                .collect();
+            c.series.push(Series {
+                label: None,
+                ..Series::line("", pts, colour)
+            });
+            c.series.push(Series {
+                label: None,
+                ..Series::line("", unjoined(&marks), colour).with_markers()
+            });
+            Series {
+                sample: true,
+                ..Series::line(format!("{name}, {light_name}"), Vec::new(), colour)
+            }
+        };
+        c.series.push(match light {
+            Overhead => s,
+            Behind => s.dashed(),
+        });
+    }
+    // (b): the light-behind crossover enlarged, ZP (equal to ZP+W there) against FP+ZP+W.
+    let mut zoom = LineChart::new(
+        "(b) behind, at the crossover",
+        // Padded by half a count, so that the markers at 11 and 23 maps are whole.
+        Axis::integer("number of shadow maps", 10.5, 23.5),
+        // The data's range (30.8 at 21 maps to 55.0 at 13), a little padded.
+        Axis::linear("S̄ (texels per image pixel)", 28.0, 58.0),
+    );
+    for (scheme, name, colour) in [
+        (Scheme::Zp, "ZP = ZP+W, behind", SHARED),
+        (Scheme::FpZpW, "FP+ZP+W, behind", Look::FpZpW.colour()),
+    ] {
+        let mut pts = Vec::new();
+        for k in 1..=23usize {
+            let maps = shadow_map_count(scheme, Behind, k)?;
+            if (11..=23).contains(&maps) {
+                pts.push((maps as f64, scheme_storage_factor(scheme, Behind, view, k)?));
+            }
+        }
+        if scheme == Scheme::FpZpW {
+            let s = Series::line(name, unjoined(&pts), colour)
+                .dashed()
+                .with_markers();
+            zoom.series.push(Series {
+                width: 3,
+                shape: Some(Marker::Hexagon),
+                ..s
+            });
+        } else {
+            // ZP without markers, as in (a) (at 17 maps its marker lay under FP+ZP+W's, 38.32
+            // against 37.99): the values are written.
+            zoom.series.push(Series {
+                label: None,
+                ..Series::line(name, pts, colour).dashed()
+            });
+        }
+    }
+    Ok((c, zoom))
+}
+
+/// The counts of maps where Fig 12 (a)'s ZP and ZP+W overhead lines carry their markers:
+/// 4k + 3, two counts from FP+ZP+W's triangles at 4k + 1, ZP's and ZP+W's alternating (and no
+/// ZP marker beyond 11 maps, where its line runs within a marker of FP+ZP+W's triangles).
+const FIG12_ZP_MARKS: [f64; 2] = [3.0, 11.0];
+const FIG12_ZP_W_MARKS: [f64; 3] = [7.0, 15.0, 23.0];
