@@ -4,8 +4,8 @@
 //! LiSPSM's 1/sin γ rule and the crate's n′ that minimises M_z over the whole frustum (`WarpRule::MinimaxMz`, the frustum-wide version of Barroso's objective).
 
 use super::chart::{
-    column, draw_line_chart_over, fmt_power, frame, legend_below, linspace, Axis, ChartStyle,
-    Charts, LineChart, Look, Marker, Note, Series, FONT, PALETTE,
+    column, draw_line_chart_over, fmt_power, frame, legend_below, linspace, Axis, Charts,
+    LineChart, Look, Marker, Note, Series, PALETTE, SHARED,
 };
 use super::{Column, Fail, Figure};
 use crate::analytic::tilted::{gamma_lim, generalized_n_prime, n_prime_1, n_prime_2, Falloff};
@@ -23,27 +23,29 @@ fn light_at(gamma: f64) -> DVec3 {
 /// The window (b) enlarges, γ in degrees: where the curves separate, with room right of
 /// γ_lim for its label.
 const WINDOW: (f64, f64) = (20.0, 45.0);
-/// (b)'s n′ range: Eq 13's n′₂ falls to 0 at 27.69°, and the top half decade (above the
-/// largest n′ in the window, LiSPSM's 11/sin 20° = 32.2) holds the two angles' labels.
-const WINDOW_N: (f64, f64) = (0.3, 300.0);
+/// (b)'s n′ range: Eq 13's n′₂ falls to 0 at 27.69°; the largest n′ in the window is
+/// LiSPSM's 11/sin 20° = 32.2.
+const WINDOW_N: (f64, f64) = (0.3, 100.0);
 
 /// Where (a)'s note on the curves clipped at its top starts (γ in degrees, n′): right of where
 /// they leave the frame (γ < 5°), in the top decade, which no curve crosses right of 10°.
 const CLIPPED_NOTE: (f64, f64) = (7.0, 5000.0);
 
-/// The one-column title: one line at one column's title size (the two-column one took two).
-const SINGLE_TITLE: &str = "Generalised LiSPSM n′ against γ";
-
-/// The key's labels in one column, short enough for two columns of entries under the 288-unit
-/// page (the two-column labels set one entry a row, six rows: 130 units).
-const SINGLE_LABELS: [&str; 6] = [
+/// The key's labels, the same in both layouts, short enough for two columns of entries under
+/// the one-column page: the six curves, then (b)'s two angle lines (the sixth review,
+/// R6-barroso-fig7-4: their labels in (b) pressed against lines 0.5° apart; named in the key).
+/// The lines' labels are written with their values in [`magnified`].
+const LABELS: [&str; 6] = [
     "Eq 18 (paper)",
     "Eq 17 (Zhang's r)",
     "LiSPSM",
-    "least M_{z}",
+    "n′ of least max m_{z}",
     "n′_{1}, Eq 13",
     "n′_{2}, Eq 13",
 ];
+
+/// The figure's title, in both layouts (the sixth review, R6-X-5: one title).
+const TITLE: &str = "Generalised LiSPSM n′ against γ";
 
 /// Barroso & Celes' Fig 7: panels (a) and (b) with one legend, and the caption for each page
 /// width.
@@ -110,33 +112,29 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         Axis::log10(n_axis, 1.0, 1e4),
     );
     // The paper's curve, bold.
-    let mut paper = Series::line(
-        "Eq 18, Barroso's r(γ) (paper)",
-        barroso,
-        Look::Barroso.colour(),
-    );
+    let mut paper = Series::line(LABELS[0], barroso, Look::Barroso.colour());
     paper.width = 4;
     c.series.push(paper);
-    c.series.push(Series::line(
-        "Eq 17, Zhang's r(γ)",
-        zhang,
-        Look::Zhang.colour(),
-    ));
     c.series
-        .push(Series::line("LiSPSM, 1/sin γ", lispsm, Look::Lispsm.colour()).dashed());
+        .push(Series::line(LABELS[1], zhang, Look::Zhang.colour()));
+    c.series
+        .push(Series::line(LABELS[2], lispsm, Look::Lispsm.colour()).dashed());
     // Dotted, not dashed: in greyscale its colour is LiSPSM's grey, and the two meet.
-    let mut least = Series::line("least M_{z}", minimax, PALETTE[3]).dotted();
+    // The n′ that minimises the largest m_z over the frustum (the sixth review,
+    // R6-barroso-fig7-1: "least M_z" did not say which m_z is least).
+    let mut least = Series::line(LABELS[3], minimax, PALETTE[3]).dotted();
     least.width = 3;
     c.series.push(least);
     // n′₁ with a small square (its colour's own marker, a tall bar, read as part of the line);
-    // above γ_lim it is Barroso's curve (its fall-off is 1 there), drawn over it.
+    // above γ_lim it is Barroso's curve (its fall-off is 1 there), drawn over it (the caption
+    // says so).
     c.series.push(Series {
         shape: Some(Marker::Square),
-        ..Series::line("n′_{1}, Eq 13 (= Eq 18 above γ_{lim})", n1, PALETTE[6]).dotted()
+        ..Series::line(LABELS[4], n1, PALETTE[6]).dotted()
     });
     // Dashed: olive prints as least M_z's (pink, dotted) grey and meets it at γ ≈ 28° (figure
     // review 5, X6); LiSPSM's dashes run an order of magnitude above it there.
-    let mut s2 = Series::line("n′_{2}, Eq 13", n2, PALETTE[7]).dashed();
+    let mut s2 = Series::line(LABELS[5], n2, PALETTE[7]).dashed();
     s2.width = 3;
     c.series.push(s2);
     // (a) has no angle lines: θ = 30° and γ_lim = 30.5° lie under a point apart there and
@@ -155,27 +153,28 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let zoom = magnified(&c, gl.to_degrees(), view.half_fov().to_degrees());
     let charts = Charts {
         size: (520, 540),
-        title: "Generalised LiSPSM parameter against the light angle".into(),
+        title: TITLE.into(),
         caption: vec![format!(
             "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
              θ\u{a0}=\u{a0}{phi_deg:.0}°. n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for \
              γ\u{a0}≥\u{a0}θ and γ\u{a0}<\u{a0}θ; below γ_{{lim}} (Eq\u{a0}15) \
              n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r the paper's fall-off (Eq\u{a0}18, bold) \
-             or Zhang et al.'s (Eq\u{a0}17). For comparison LiSPSM's rule and the n′ of least \
-             M_z over the frustum. (b) enlarges γ from {}° to {}°: least M_z turns near \
-             γ\u{a0}=\u{a0}θ, where the frustum corner of largest m_z changes.",
+             or Zhang et al.'s (Eq\u{a0}17); n′_{{1}} is Eq\u{a0}18's curve above γ_{{lim}}. \
+             For comparison LiSPSM's rule and the n′ of least max m_z over the frustum. (b) \
+             enlarges γ from {}° to {}°: that n′ turns near γ\u{a0}=\u{a0}θ.",
             WINDOW.0, WINDOW.1
         )],
         charts: vec![c, zoom],
     };
-    // One column: every symbol the key and (b) use defined (figure review 5, X7), the turn of
-    // least M_z at θ, which (b)'s "θ →" marks, in a clause.
+    // One column: (b) alone, and the caption says so (the sixth review, R6-barroso-fig7-2:
+    // (a)'s four decades in 70 pt merged five curves; the page's 420 pt leave no room for both
+    // panels at 110 pt); every symbol the key and (b) use defined (figure review 5, X7).
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         θ\u{a0}=\u{a0}{phi_deg:.0}°. n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for γ\u{a0}≥\u{a0}θ and \
-         γ\u{a0}<\u{a0}θ; below γ_{{lim}} (Eq\u{a0}15) n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), \
-         r Barroso's fall-off (Eq\u{a0}18, bold: the paper's) or Zhang's (Eq\u{a0}17). \
-         Least M_z turns at γ\u{a0}≈\u{a0}θ."
+         θ\u{a0}=\u{a0}{phi_deg:.0}°; panel (a), γ from 0° to 90°, is left out here. \
+         n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for γ\u{a0}≥\u{a0}θ and γ\u{a0}<\u{a0}θ; below \
+         γ_{{lim}} n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r the paper's fall-off \
+         (Eq\u{a0}18, bold) or Zhang's (Eq\u{a0}17)."
     );
     Ok(Fig7 {
         charts,
@@ -185,8 +184,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
 
 /// `c` magnified to γ in [`WINDOW`] and n′ in [`WINDOW_N`], where the curves separate (issue
 /// 25): the same series, each cut to the window (so that its markers fall inside it), the
-/// figure's one legend, and the two angles as vertical lines, labelled in the top half decade,
-/// where no curve runs: θ's label left of its line, γ_lim's right of its own.
+/// figure's one legend, and the two angles as vertical lines named in it.
 fn magnified(c: &LineChart, gl_deg: f64, phi_deg: f64) -> LineChart {
     let (x, y) = (WINDOW, WINDOW_N);
     let mut z = LineChart::new(
@@ -208,63 +206,26 @@ fn magnified(c: &LineChart, gl_deg: f64, phi_deg: f64) -> LineChart {
             s
         })
         .collect();
-    let grey = RGBColor(110, 110, 110);
-    for (at, colour, dashed) in [(gl_deg, PALETTE[6], true), (phi_deg, grey, false)] {
-        let line = Series::line(String::new(), vec![(at, y.0), (at, y.1)], colour);
+    // The two angles as lines named in the key (the sixth review, R6-barroso-fig7-4: labels
+    // in the plot pressed against lines 0.5° apart).
+    for (at, colour, dashed, label) in [
+        (phi_deg, SHARED, false, format!("θ = {phi_deg:.0}°")),
+        (
+            gl_deg,
+            PALETTE[6],
+            true,
+            format!("γ_{{lim}} = {gl_deg:.1}°"),
+        ),
+    ] {
+        let line = Series::line(label, vec![(at, y.0), (at, y.1)], colour);
         let mut line = if dashed { line.dashed() } else { line.dotted() };
-        line.label = None;
         line.width = 1;
         line.reference = true;
         z.series.push(line);
     }
-    // Both labels at the top band's middle (log scale: √(100 · 300) = 173); θ's is moved
-    // to end at its line once the plot's width is known ([`Fig7::labels_placed`]).
-    let top = (y.1 * 100.0f64).sqrt();
-    z.notes = vec![
-        Note {
-            at: (gl_deg + 0.3, top),
-            text: format!("← γ_{{lim}} = {gl_deg:.1}°"),
-            colour: PALETTE[6],
-        },
-        Note {
-            at: (phi_deg, top),
-            text: format!("θ = {phi_deg:.0}° →"),
-            colour: grey,
-        },
-    ];
     // The figure's one key, under both panels.
     z.legend_below = true;
     z
-}
-
-/// The horizontal space a line chart's frame takes from its cell, in units: the margins left
-/// and right of it (8 and 16, `chart::build_chart`) and the y labels' area (64).
-const CHART_FRAME_W: f64 = 8.0 + 16.0 + 64.0;
-
-impl Fig7 {
-    /// The charts with (b)'s θ label ending 4 units left of its line, in cells `cell_w` units
-    /// wide (its text's width measured by `measure`): the label's left end is all a note sets.
-    fn labels_placed(&self, cell_w: u32, measure: impl Fn(&str) -> f64) -> Charts {
-        let mut charts = self.charts.clone();
-        let b = &mut charts.charts[1];
-        let per_degree = (f64::from(cell_w) - CHART_FRAME_W) / (b.x.max - b.x.min);
-        let room = b.x.max - b.x.min;
-        let x_min = b.x.min;
-        for note in b.notes.iter_mut().filter(|n| n.text.ends_with('→')) {
-            // Measured as drawn: the subscript's markup is not printed.
-            let width = |t: &str| {
-                let shown: String = t.chars().filter(|c| !"_{}".contains(*c)).collect();
-                (measure(&shown) + 4.0) / per_degree
-            };
-            // Where the value does not fit between the axis and the line, the name alone
-            // (the line stands on the axis's tick at θ = 30°).
-            if note.at.0 - width(&note.text) < x_min + 0.02 * room {
-                note.text = "θ →".into();
-            }
-            note.at.0 -= width(&note.text);
-        }
-        charts
-    }
 }
 
 impl Figure for Fig7 {
@@ -272,74 +233,26 @@ impl Figure for Fig7 {
         self.charts.size
     }
 
-    /// One column: (a) over (b), both plots as tall, the legend under them: 525 units, 420 pt
-    /// printed (figure review 3, X1: at 760 units it took 608 pt of a 650-pt column).
+    /// One column: (b) alone, its key under it: 525 units, 420 pt printed.
     fn single_size(&self) -> Option<(u32, u32)> {
         Some((Column::Single.width(), 525))
     }
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
-        let style = TextStyle::from((FONT, NOTE_SIZE).into_font());
-        let measure = |t: &str| {
-            root.estimate_text_size(t, &style)
-                .map_or(0.0, |(w, _)| f64::from(w))
-        };
-        // The page's body is 6 units in from each side (`chart::frame`).
-        let body_w = root.dim_in_pixel().0.saturating_sub(12);
         if column() == Column::Double {
-            return self.labels_placed(body_w / 2, measure).draw(root);
+            return self.charts.draw(root);
         }
-        let mut charts = self.labels_placed(body_w, measure);
-        for c in &mut charts.charts {
-            for (s, short) in c.series.iter_mut().zip(SINGLE_LABELS) {
-                s.label = Some(short.to_string());
-            }
-            // Markers smaller than the spacing of the curves (figure review 5: at 10–12 units
-            // five of them piled up at γ = 20–30°), reference lines none.
-            for s in &mut c.series {
-                s.marker_radius = Some(SINGLE_MARKER_RADIUS);
-            }
-            // The name alone (the powers of ten say that the scale is log); the grid at 2 and
-            // 5 of each decade only (eight lines a decade greyed the small plot).
-            c.y.label = "n′".into();
-            c.y = c.y.clone().sparse_grid();
-            c.margin = Some(SINGLE_MARGIN);
-        }
-        // (a)'s x axis is (b)'s quantity, named under (b) only: its ticks alone, and the room
-        // its name took given to the plots (figure review 5: 0.75 in each).
-        let a_x_area = SINGLE_TICKS_ONLY;
-        charts.charts[0].x.label = String::new();
-        charts.charts[0].x_label_area = Some(a_x_area);
-        let body = frame(root, SINGLE_TITLE, &[self.single_caption.as_str()])?;
+        // One column: (b) alone, its key in a strip as wide as the page (two columns of
+        // entries) under it.
+        let body = frame(root, TITLE, &[self.single_caption.as_str()])?;
         let (w, h) = body.dim_in_pixel();
-        let (a, b) = (&charts.charts[0], &charts.charts[1]);
-        // The legend's strip first (as wide as the page), then the two plots' cells, (a)'s
-        // shorter by the x name's room, so that both plots are as tall.
+        let b = &self.charts.charts[1];
         let strip_h = legend_below((w, h / 2), b, f64::from(w))?;
-        let (panels, strip) = body.split_vertically(h.saturating_sub(strip_h));
-        let (_, ph) = panels.dim_in_pixel();
-        let saved = ChartStyle::default().x_label_area - a_x_area;
-        debug_assert!(saved > 0);
-        let (top, bottom) = panels.split_vertically(ph.saturating_sub(saved) / 2);
-        draw_line_chart_over(&top, a, None)?;
-        draw_line_chart_over(&bottom, b, Some(&strip))?;
+        let (plot, strip) = body.split_vertically(h.saturating_sub(strip_h));
+        draw_line_chart_over(&plot, b, Some(&strip))?;
         Ok(())
     }
 }
-
-/// The markers' radius in one column: 6 to 8 units across (the line's width + 2, 8 to 12
-/// units, covered the spacing of the curves in its 1.2-in plots).
-const SINGLE_MARKER_RADIUS: i32 = 3;
-
-/// The margin round each plot's cell in one column (the default's 8 units above and below
-/// both panels took 32 units from the plots).
-const SINGLE_MARGIN: u32 = 2;
-
-/// The room under (a) in one column: its tick labels only (13 units and their gap).
-const SINGLE_TICKS_ONLY: u32 = 24;
-
-/// The size of a note's text (`chart::line`'s notes and labels).
-const NOTE_SIZE: u32 = 13;
 
 #[cfg(test)]
 mod tests {
@@ -382,62 +295,84 @@ mod tests {
         assert!(n2.iter().all(|&d| d > start && d < 30.0), "{n2:?}");
     }
 
-    /// The paper's curve (Barroso's fall-off, Eq 16 with Eq 18) is the bold one (issue 25), and
-    /// each angle's label ends at its line with an arrow pointing at it, in (b) only: γ_lim's
-    /// starts just right of γ_lim = 30.5° with "←", θ's ends left of 30° with "→". (a) draws
-    /// neither line (review: 0.5° apart they fused into one dash-dot line there).
+    /// The paper's curve (Barroso's fall-off, Eq 16 with Eq 18) is the bold one (issue 25); (a)
+    /// draws no angle lines (review: 0.5° apart they fused into one dash-dot line there), (b)
+    /// draws θ = 30° and γ_lim (Eq 15, 30.5°) as lines named in the key, with no label of its
+    /// own in the plot.
     #[test]
-    fn the_papers_curve_is_bold_and_labels_point_at_their_lines() {
+    fn the_papers_curve_is_bold_and_the_angle_lines_are_in_the_key() {
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
         let (a, b) = (&fig.charts.charts[0], &fig.charts.charts[1]);
         let bold = &a.series[0];
         assert!(bold.label.as_deref().unwrap().ends_with("(paper)"));
         assert!(a.series[1..].iter().all(|s| s.width < bold.width));
-        // (a)'s one note is on the curves clipped at its top, not an angle's.
+        // (a)'s one note is on the curves clipped at its top, not an angle's; (b) has none.
         assert_eq!(a.notes.len(), 1, "{:?}", a.notes);
         assert!(a.notes[0].text.contains("clipped"), "{:?}", a.notes);
+        assert!(b.notes.is_empty(), "{:?}", b.notes);
         // (a)'s series are its six curves; no vertical line (two points at one γ).
         assert_eq!(a.series.len(), 6);
         assert!(a.series.iter().all(|s| s.points.len() > 2));
-        let gl = b.notes.iter().find(|n| n.text.contains("lim")).unwrap();
-        assert!(gl.text.starts_with('←') && gl.at.0 > 30.5 && gl.at.0 < 32.0);
-        // θ's label is set to end 4 units left of its line once the cell's width is known:
-        // in a 254-unit cell (two columns; its plot 166 units for 25°, 6.64 a degree), with
-        // every character 7 units wide, "θ = 30° →" (9 characters) is 67 units, 10.1°, so it
-        // would start at 19.9° (left of the axis at 20°): the name alone, "θ →" (3, 25 units:
-        // 3.8°), starts at 26.2°; in a 288-unit cell (one column, 8 a degree) the whole
-        // label, 8.375°, starts at 21.625°.
-        let at = |cell: u32| {
-            let placed = fig.labels_placed(cell, |t| 7.0 * t.chars().count() as f64);
-            let n = placed.charts[1]
-                .notes
-                .iter()
-                .find(|n| n.text.contains("θ"))
-                .unwrap()
-                .clone();
-            (n.text, n.at.0)
-        };
-        let (text, x) = at(254);
-        assert_eq!(text, "θ →");
-        assert!((x - (30.0 - 25.0 / (166.0 / 25.0))).abs() < 1e-9, "{x}");
-        let (text, x) = at(288);
-        assert_eq!(text, "θ = 30° →");
-        assert!((x - (30.0 - 67.0 / 8.0)).abs() < 1e-9, "{x}");
-        let verticals: Vec<f64> = b
+        let verticals: Vec<(f64, String)> = b
             .series
             .iter()
             .filter(|s| s.points.len() == 2 && s.points[0].0 == s.points[1].0)
-            .map(|s| s.points[0].0)
+            .map(|s| (s.points[0].0, s.label.clone().unwrap()))
             .collect();
         assert_eq!(verticals.len(), 2, "{verticals:?}");
         // γ_lim (Eq 15, `analytic::tilted`'s value, printed 30.5°) and θ = 30°.
         let view = ViewFrustum::new(1.0, 100.0, std::f64::consts::FRAC_PI_6).unwrap();
         let gl = gamma_lim(&view).to_degrees();
         assert!((gl - 30.5).abs() < 0.05 + 1e-9, "{gl}");
-        assert!(
-            (verticals[0] - gl).abs() < 1e-9 && (verticals[1] - 30.0).abs() < 1e-9,
-            "{verticals:?}"
-        );
+        assert!((verticals[0].0 - 30.0).abs() < 1e-9, "{verticals:?}");
+        assert_eq!(verticals[0].1, "θ = 30°");
+        assert!((verticals[1].0 - gl).abs() < 1e-9, "{verticals:?}");
+        assert_eq!(verticals[1].1, "γ_{lim} = 30.5°");
+    }
+
+    /// The sixth review: R6-barroso-fig7-1 ("least M_z" did not say which m_z), -2 (one column
+    /// fitted (a)'s four decades into 70 pt) and -4 (θ's and γ_lim's labels pressed against
+    /// lines 0.5° apart). Read from the drawn SVGs: in both layouts the key names "n′ of least
+    /// max m_z", "θ = 30°" and "γ_lim = 30.5°", and no text points at a line with an arrow but
+    /// (a)'s note on its clipped curves; one column draws (b) alone, its plot (the y axis line)
+    /// at least 110 pt tall (137.5 units at 0.8 pt a unit), under the same title as two columns,
+    /// and its caption says that (a) is left out.
+    #[test]
+    fn key_names_least_max_m_z_and_the_angles_and_one_column_is_b_alone() {
+        use super::super::chart::read_svg::{points, texts};
+        use super::super::hemisphere::svg_in;
+        let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
+        for column in [Column::Double, Column::Single] {
+            let svg = svg_in(&fig, column);
+            let all: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
+            for want in ["n′ of least max mz", "θ = 30°", "γlim = 30.5°", TITLE] {
+                assert!(all.iter().any(|t| t == want), "{column:?}: no {want:?} in {all:?}");
+            }
+            assert!(!all.iter().any(|t| t.contains("least M")), "{column:?}");
+            let arrows: Vec<&String> = all
+                .iter()
+                .filter(|t| t.contains('→') || t.contains('←'))
+                .collect();
+            let clipped = usize::from(column == Column::Double);
+            assert_eq!(arrows.len(), clipped, "{column:?}: {arrows:?}");
+            let spines: Vec<f64> = svg
+                .lines()
+                .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#000000\""))
+                .filter_map(points)
+                .filter(|p| p.len() == 2 && p[0].0 == p[1].0)
+                .map(|p| (p[0].1 - p[1].1).abs())
+                .filter(|&h| h > 40.0)
+                .collect();
+            if column == Column::Single {
+                assert_eq!(spines.len(), 1, "{spines:?}");
+                assert!(spines[0] * 0.8 >= 110.0, "{spines:?}");
+                assert!(!all.iter().any(|t| t.starts_with("(a)")), "{all:?}");
+                let caption = all.join(" ");
+                assert!(caption.contains("panel (a), γ from 0° to 90°, is left"), "{caption}");
+            } else {
+                assert_eq!(spines.len(), 2, "{spines:?}");
+            }
+        }
     }
 
     /// (a)'s note on its clipped curves (figure review 3): two curves, Barroso's and least M_z's,
@@ -457,7 +392,7 @@ mod tests {
             .filter(|s| s.points.iter().any(|p| p.1 > 1e4))
             .map(|s| s.label.as_deref().unwrap())
             .collect();
-        assert_eq!(over, ["Eq 18, Barroso's r(γ) (paper)", "least M_{z}"]);
+        assert_eq!(over, [LABELS[0], LABELS[3]]);
         assert!(note.at.1 > 1e3 && note.at.1 < 1e4);
         for s in &a.series {
             for p in s
@@ -484,14 +419,12 @@ mod tests {
             assert!(!c.contains('φ'), "{c}");
             assert!(!c.contains("π"), "{c}");
         }
-        // One column keeps the sentence on the turn at θ that (b)'s marker points at.
-        assert!(fig.single_caption.contains("turns at γ"));
     }
 
     /// In greyscale LiSPSM (green) and least M_z (reddish purple) are one grey (review), so
     /// they differ in dash: LiSPSM dashed, least M_z dotted, and so do n′₂ and least M_z
-    /// (figure review 5); and the n′₁ entry says it is
-    /// Barroso's curve (Eq 18) above γ_lim, where it is drawn over it.
+    /// (figure review 5); and the caption says n′₁ is Barroso's curve (Eq 18) above γ_lim,
+    /// where it is drawn over it.
     #[test]
     fn lispsm_and_least_mz_differ_in_dash() {
         use super::super::chart::Dash;
@@ -502,16 +435,11 @@ mod tests {
                 .find(|x| x.label.as_deref().unwrap_or("").starts_with(l))
         };
         assert_eq!(by("LiSPSM").unwrap().dash, Dash::Dashed);
-        assert_eq!(by("least").unwrap().dash, Dash::Dotted);
+        assert_eq!(by("n′ of least").unwrap().dash, Dash::Dotted);
         // Figure review 5, X6: n′₂ (olive, L* 60) and least M_z (pink, L* 61) print as one grey
         // and meet at γ ≈ 28°: they differ in dash.
-        assert_ne!(by("n′_{2}").unwrap().dash, by("least").unwrap().dash);
-        assert!(by("n′_{1}")
-            .unwrap()
-            .label
-            .as_deref()
-            .unwrap()
-            .contains("= Eq 18 above γ_{lim}"));
+        assert_ne!(by("n′_{2}").unwrap().dash, by("n′ of least").unwrap().dash);
+        assert!(fig.charts.caption[0].contains("n′_{1} is Eq\u{a0}18's curve above γ_{lim}"));
     }
 
     /// The fall-offs' key entries name the equations by this paper's numbers (the fourth
@@ -526,10 +454,8 @@ mod tests {
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
         let a = &fig.charts.charts[0];
         let label = |i: usize| a.series[i].label.clone().unwrap();
-        assert!(label(0).starts_with("Eq 18, Barroso's"), "{}", label(0));
-        assert!(label(1).starts_with("Eq 17, Zhang's"), "{}", label(1));
-        assert!(SINGLE_LABELS[0].starts_with("Eq 18"));
-        assert!(SINGLE_LABELS[1].starts_with("Eq 17 (Zhang's"));
+        assert!(label(0).starts_with("Eq 18 (paper"), "{}", label(0));
+        assert!(label(1).starts_with("Eq 17 (Zhang's"), "{}", label(1));
         for s in a.series.iter().chain(&fig.charts.charts[1].series) {
             let l = s.label.as_deref().unwrap_or("");
             assert!(!l.contains("Zhang, Eq"), "{l}");
@@ -559,15 +485,14 @@ mod tests {
     /// curve of (a) is there, cut to the window (the four rules sampled every 0.25°: 101
     /// points each), and the four rules lie within n′ ∈ [1, 100] (the axis reaches down to 0.3
     /// for Eq 13's n′₂, which falls to 0 at 27.69°, by hand in
-    /// `eq13_branches_only_on_their_domains`, and up to 300, above every curve, for the angles'
-    /// labels).
+    /// `eq13_branches_only_on_their_domains`, and up to 100, above every curve).
     #[test]
     fn panel_b_magnifies_20_to_45_degrees() {
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
         assert_eq!(fig.charts.charts.len(), 2);
         let (a, b) = (&fig.charts.charts[0], &fig.charts.charts[1]);
         assert_eq!((b.x.min, b.x.max), (20.0, 45.0));
-        assert_eq!((b.y.min, b.y.max), (0.3, 300.0));
+        assert_eq!((b.y.min, b.y.max), (0.3, 100.0));
         assert_eq!(a.series.len() + 2, b.series.len());
         for s in &b.series[..4] {
             assert_eq!(s.points.len(), 101, "{:?}", s.label);
