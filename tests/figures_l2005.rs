@@ -44,29 +44,13 @@ fn fig4_names_its_g0_line_in_every_form() {
     }
 }
 
-/// The y, in SVG units, of the polyline of `colour` at `x` (interpolated; its nearest piece).
-fn curve_y(svg: &str, colour: &str, x: f64) -> f64 {
-    let mut best: Option<f64> = None;
-    for l in svg.lines().filter(|l| l.starts_with("<polyline")) {
-        if attr_str(l, "stroke") != Some(colour) {
-            continue;
-        }
-        for w in points(l).windows(2) {
-            let (a, b) = (w[0], w[1]);
-            if (a.0 - x) * (b.0 - x) <= 0.0 && (b.0 - a.0).abs() > 0.0 {
-                let y = a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0);
-                best = Some(y);
-            }
-        }
-    }
-    best.unwrap_or_else(|| panic!("no {colour} line at x = {x}"))
-}
-
-/// Two columns: the ξ = 0 curve's label stands above its curve (the third review: 4 pt under
-/// it, between two markers), and every curve's label ends at least 10 units inside the x
-/// axis' end (the labels ran to the frame; then ended about 3–6 units inside it).
+/// Two columns: every curve's label ends at least 10 units inside the x axis' end (the labels
+/// ran to the frame; then ended about 3–6 units inside it), the ξ = 0 curve's 1; the ξ = 0 curve's label stands
+/// under its curve by the far plane (the g₀ line's label is over the curve there since the
+/// sixth review, R6-lloyd2005-fig4-1), and no nearer another curve than its own (the third
+/// review: it stood between two markers, 4 pt under the curve, at the middle of the axis).
 #[test]
-fn fig4_labels_sit_above_the_xi_0_curve_and_inside_the_axis() {
+fn fig4_labels_sit_by_their_curves_and_inside_the_axis() {
     for (form, opts) in &forms()[..2] {
         let svg = render_svg("lloyd2005-fig4", opts);
         let all = all_texts(&svg);
@@ -80,9 +64,16 @@ fn fig4_labels_sit_above_the_xi_0_curve_and_inside_the_axis() {
             .filter(|t| t.content.starts_with("n′ = "))
             .collect();
         assert_eq!(labels.len(), 5, "{form}");
+        // The ξ = 0 label, under its curve by the far plane, which rises towards it, ends 2
+        // units inside (a box under the rising curve further left would cross it).
         for t in &labels {
+            let inside = if t.content.starts_with("n′ = 4.162") {
+                1.0
+            } else {
+                10.0
+            };
             assert!(
-                t.bbox[2] <= end - 10.0,
+                t.bbox[2] <= end - inside,
                 "{form}: {} ends at {:.1}, the axis at {end}",
                 t.content,
                 t.bbox[2]
@@ -92,13 +83,47 @@ fn fig4_labels_sit_above_the_xi_0_curve_and_inside_the_axis() {
             .iter()
             .find(|t| t.content.starts_with("n′ = 4.162"))
             .unwrap();
+        // The curves: polylines of many points in a colour that is no grey; the ξ = 0 one is
+        // the curve equal on both planes (g(1) = g(f/n) = g₀, Eq 3), whatever its colour.
+        let curves: Vec<Vec<(f64, f64)>> = svg
+            .lines()
+            .filter(|l| l.starts_with("<polyline"))
+            .filter(|l| {
+                let c = attr_str(l, "stroke").unwrap_or("#000000");
+                c.len() == 7 && !(c[1..3] == c[3..5] && c[3..5] == c[5..7])
+            })
+            .map(points)
+            .filter(|p| p.len() > 20)
+            .collect();
+        assert_eq!(curves.len(), 5, "{form}");
+        let flat: Vec<&Vec<(f64, f64)>> = curves
+            .iter()
+            .filter(|c| (c[0].1 - c[c.len() - 1].1).abs() < 1.0)
+            .collect();
+        assert_eq!(flat.len(), 1, "{form}: the ξ = 0 curve");
+        let at = |c: &[(f64, f64)], x: f64| {
+            c.windows(2)
+                .find(|w| (w[0].0 - x) * (w[1].0 - x) <= 0.0 && w[1].0 != w[0].0)
+                .map(|w| w[0].1 + (w[1].1 - w[0].1) * (x - w[0].0) / (w[1].0 - w[0].0))
+        };
         let mid = 0.5 * (green.bbox[0] + green.bbox[2]);
-        let y = curve_y(&svg, "#009E73", mid);
+        let y = at(flat[0], mid).expect("the ξ = 0 curve under its label");
         assert!(
-            green.bbox[3] < y,
-            "{form}: the ξ = 0 label's bottom {:.1} is not above its curve at {y:.1}",
-            green.bbox[3]
+            green.bbox[1] > y,
+            "{form}: the ξ = 0 label's top {:.1} is not under its curve at {y:.1}",
+            green.bbox[1]
         );
+        // Its own curve the nearest at its middle: every other curve farther from the
+        // label's middle height.
+        let centre = 0.5 * (green.bbox[1] + green.bbox[3]);
+        for c in curves.iter().filter(|c| !std::ptr::eq(*c, flat[0])) {
+            if let Some(o) = at(c, mid) {
+                assert!(
+                    (o - centre).abs() > (y - centre).abs(),
+                    "{form}: a curve at {o:.1} is nearer the ξ = 0 label at {centre:.1} than its own at {y:.1}"
+                );
+            }
+        }
     }
 }
 

@@ -10,7 +10,7 @@ mod table;
 
 use super::chart::{
     boxed_text, build_chart_styled, column, equal_aspect, frame, linspace, Axis, Chart2d,
-    ChartStyle, FONT, PANEL_TITLE, SWEEP,
+    ChartStyle, FONT, PANEL_TITLE, SWEEP, TICK,
 };
 use super::from_light::seen_from_light;
 use super::warp_grid::minus;
@@ -225,12 +225,15 @@ impl Figure for Fig8 {
         } else {
             format!(
                 "Lloyd et al. 2005, Fig. 8: k\u{a0}=\u{a0}{} z-partitions a face, LiSPSM, n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, \
-                 θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. (a) R, L, T, \
-                 N: right, left, top, near face; 1 near, 2 far. (b) {}'s texels reach past it (a \
-                 larger frustum, dashed in the paper). (c) Eq\u{a0}6: s split by M_x, t by M_z \
-                 (the paper transposes); M_x, M_z: largest error across the view, in \
-                 depth. (d) M_x/w is lower below a column's largest M_x.",
-                self.k, LIGHT.0, LIGHT.1, shown.tag,
+                 θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. (a) The tags \
+                 as in (d). (b) {}'s texels reach past it (a \
+                 larger frustum, dashed in the paper). (c) Eq\u{a0}6 splits s by M_x, t by M_z (the \
+                 paper transposes), the largest errors across the view and in depth. {}",
+                self.k,
+                LIGHT.0,
+                LIGHT.1,
+                shown.tag,
+                self.lower_after_sentence().unwrap_or_default(),
             )
         };
         let body = frame(
@@ -473,6 +476,34 @@ impl Fig8 {
         Ok(())
     }
 
+    /// The s axis' last tick (the texture's end, `n`) and its label, right-aligned to the
+    /// frame's end, at the other tick labels' height (the tick's length and 5 units under the
+    /// axis, as the chart draws them).
+    fn last_s_label<DB: DrawingBackend>(
+        body: &DrawingArea<DB, Shift>,
+        chart: &Chart2d<'_, DB>,
+        n: f64,
+        style: &ChartStyle,
+    ) -> Result<(), Fail> {
+        let (bx, by) = body.get_base_pixel();
+        // The x axis is the plot's bottom edge (under t = 0: the equal aspect pads the range).
+        let (x, _) = chart.backend_coord(&(n, 0.0));
+        let (_, yr) = chart.plotting_area().get_pixel_range();
+        let (x, y) = (x - bx, yr.end - by);
+        let tick = TICK as i32;
+        body.draw(&PathElement::new(
+            vec![(x, y), (x, y + tick)],
+            BLACK.stroke_width(1),
+        ))?;
+        body.draw(&Text::new(
+            format!("{}", n as u32),
+            (x, y + tick + 5),
+            TextStyle::from((FONT, style.tick_size).into_font())
+                .pos(Pos::new(HPos::Right, VPos::Top)),
+        ))?;
+        Ok(())
+    }
+
     /// (c): the texture, square, each partition's rectangle in its look with its tag.
     fn draw_texture<DB: DrawingBackend>(
         &self,
@@ -490,10 +521,20 @@ impl Fig8 {
             style,
         )?;
         // Labelled at the texture's ends and middle only: four-digit labels every 500 texels
-        // run together on a narrow panel.
+        // run together on a narrow panel. The s axis' last label, 2048, is written right-aligned
+        // to the frame's end below ([`Fig8::last_s_label`]): centred on it, it came within 3.5
+        // units of "1024" in one column and ran past the page across two (the sixth review,
+        // R6-lloyd2005-fig8-3).
+        // In one column, whose plot is about 60 units wide, s is labelled at its ends only.
         let ends = [0.0, 0.5 * n, n];
-        let (xa, ya) = (xa.labelled_at(&ends), ya.labelled_at(&ends));
+        let s_at = if column() == Column::Single {
+            &ends[..1]
+        } else {
+            &ends[..2]
+        };
+        let (xa, ya) = (xa.labelled_at(s_at), ya.labelled_at(&ends));
         let mut chart = build_chart_styled(body, title, &xa, &ya, false, style)?;
+        Self::last_s_label(body, &chart, n, style)?;
         let (pw, _) = chart.plotting_area().dim_in_pixel();
         let per_px = (xa.max - xa.min) / f64::from(pw);
         for (i, c) in self.cells.iter().enumerate() {
@@ -708,7 +749,7 @@ mod tests {
                     assert!(text.contains(p), "{column:?}: no {p} in {text}");
                 }
                 assert!(text.contains("larger frustum"), "{text}");
-                assert!(text.contains("largest M"), "{text}");
+                assert!(text.contains("larger M"), "{text}");
             }
         }
     }

@@ -28,13 +28,11 @@ fn fmt_signed(v: f64) -> String {
 /// ran to the frame) and reads as its curve's by the far plane, where the five are apart.
 const FIG4_LABEL_AT: usize = 193;
 
+/// Where Fig 4's ξ = 0 curve asks its label to end: z = 8.87.
+const FIG4_XI_0_LABEL_AT: usize = 175;
+
 /// Where Fig 4's ξ = −½ curve asks its label to end in one column: z = 8.01.
 const FIG4_XI_HALF_LABEL_AT: usize = 155;
-
-/// Where Fig 4's g₀ line asks its label to be: z = 5.57 (the sample nearest the middle of
-/// the axis), above the line, where no curve meets it (the ξ = 0 curve meets it at both
-/// planes).
-const FIG4_G0_AT: usize = 101;
 
 /// Fig 4's samples of z ∈ [n, f] = [1, f/n].
 const FIG4_SAMPLES: usize = 200;
@@ -80,6 +78,11 @@ fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
         s.direct_at = Some(zs[FIG4_LABEL_AT]);
         // ξ = −½ a diamond, not the sweep's left triangle: the ξ = 0 and −1 curves carry ▲ and
         // ▼, and three turns of one triangle do not tell the curves apart in greyscale (X6).
+        // ξ = 0: under its curve by the far plane (the g₀ line's label is over it there), its
+        // end asked at z = 8.88 so that it ends inside the axis.
+        if i == 2 {
+            s.direct_at = Some(zs[FIG4_XI_0_LABEL_AT]);
+        }
         if i == 3 {
             s.shape = Some(Marker::Diamond);
             // One column: its label over its own curve by z = 8, where the lilac curve is
@@ -90,19 +93,12 @@ fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
         }
         c.series.push(s);
     }
-    // One column: ξ = −½'s label placed before ξ = 0's (labels are placed in the series'
-    // order), so that it takes the room over its own curve by z = 8 and ξ = 0's goes where
-    // room is left (placed first, ξ = 0's took that room and ξ = −½'s went under the orange
-    // curve, nearer it than its own: the fifth review).
-    if single {
-        c.series.swap(2, 3);
-    }
     // The least maximum g₀, a grey dotted reference line named in the figure (the bare form
-    // has no caption to say what it is). Across two columns it is quiet, so that the ξ = 0
-    // curve's label stands above the curve (and this line, which the curve meets on both
-    // planes), its own label by the middle of the axis; in one column, where the plot has
-    // no room between the curves for both there, the ξ = 0 label goes under its curve and
-    // this one above the line by the far plane.
+    // has no caption to say what it is), its label above the line by the far plane (z ≈ 7–9.7),
+    // where no curve comes within 3 units of it: the first series, so that its label is placed
+    // first and takes that room (the ξ = 0 curve's label then goes under its own curve there).
+    // Across two columns it was by the middle of the axis, squeezed between the ξ = ½ and
+    // ξ = −1 curves, 1 unit from each (the sixth review, R6-lloyd2005-fig4-1).
     let g0 = g_min(alpha)?;
     let mut s = Series::line(
         "g_0 = 1/√(f/n)",
@@ -112,10 +108,9 @@ fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
     .dotted()
     .reference()
     .direct();
-    s.quiet = !single;
-    s.direct_at = Some(zs[if single { FIG4_LABEL_AT } else { FIG4_G0_AT }]);
+    s.direct_at = Some(zs[FIG4_LABEL_AT]);
     s.width = 1;
-    c.series.push(s);
+    c.series.insert(0, s);
     Ok(c)
 }
 
@@ -239,8 +234,10 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
     for (xi, title, lo, at) in panels {
         let mut c = LineChart::new(
             title,
-            // A tick at every k (the paper's k = 1 … 10).
-            Axis::every("number of face subdivisions k", 1.0, 10.0, 1.0, 1.0),
+            // A tick at every k (the paper's k = 1 … 10), the axis from k = 0.6 so that the four
+            // k = 1 markers, where every line starts at 1, sit inside the frame (at k = 1 they
+            // lay on the y axis and covered its tick 1: the sixth review, R6-lloyd2005-fig7-5).
+            Axis::every("number of face subdivisions k", FIG7_K_MIN, 10.0, 1.0, 1.0),
             Axis::log10("m_{max}(k) / m_{max}(1) (log scale)", lo, 1.5)
                 .labelled_at(at)
                 .in_powers(),
@@ -321,6 +318,10 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
 /// was 114 units, longer than the plots' 109).
 const FIG7_SINGLE_Y: &str = "m_{max}(k)/m_{max}(1)";
 
+/// Fig 7's x axes' lower end: k = 0.6, 0.4 of a step before the first k (7 units across two
+/// columns, more than a marker's radius of 5; at 0.8 the markers still touched the axis).
+pub(super) const FIG7_K_MIN: f64 = 0.6;
+
 /// The width left of Fig 7's plots for their tick labels and the y axis' name, in units.
 const FIG7_Y_LABEL_AREA: u32 = 70;
 
@@ -349,9 +350,11 @@ mod tests {
             .charts;
         let s = &fig.charts[0].series;
         let g0 = 1.0 / FIG4_ALPHA.sqrt();
-        assert!((s[2].points[0].1 - g0).abs() < 1e-12);
-        assert!((s[2].points.last().unwrap().1 - g0).abs() < 1e-12);
-        for &(z, g) in &s[0].points {
+        // The g₀ line first (its label placed first), then ξ = 1, ½, 0, −½, −1.
+        assert!(s[0].reference);
+        assert!((s[3].points[0].1 - g0).abs() < 1e-12);
+        assert!((s[3].points.last().unwrap().1 - g0).abs() < 1e-12);
+        for &(z, g) in &s[1].points {
             assert!((g - z / FIG4_ALPHA).abs() < 1e-12);
         }
     }
@@ -538,8 +541,8 @@ mod tests {
         assert_eq!(labels, ["0", "0.2", "0.4", "0.6", "0.8", "1"]);
     }
 
-    /// Fig 4's colours (issue 35, rule 4): the scheme colours for the schemes (ξ = 1 PSM blue
-    /// #0072B2, ξ = 0 LiSPSM green #009E73, ξ = −1 uniform orange #E69F00) and the sweep's
+    /// Fig 4's colours (issue 35, rule 4): the scheme colours for the schemes (ξ = 1 PSM dark blue
+    /// #00306E, ξ = 0 LiSPSM green #00664B, ξ = −1 uniform vermillion #D55E00) and the sweep's
     /// darkest and lightest purples (#3F007D, #9589C0) for ξ = ½ and −½, which are no scheme
     /// (they were vermillion, ZP+W's colour, and pink), written here by hand.
     #[test]
@@ -552,7 +555,7 @@ mod tests {
             .filter(|s| s.label.is_some() && !s.reference)
             .map(|s| format!("#{:02X}{:02X}{:02X}", s.colour.0, s.colour.1, s.colour.2))
             .collect();
-        assert_eq!(hex, ["#0072B2", "#3F007D", "#009E73", "#9589C0", "#E69F00"]);
+        assert_eq!(hex, ["#00306E", "#3F007D", "#00664B", "#9589C0", "#D55E00"]);
     }
 
     /// Fig 4 in one column keeps the two-column form's direct labels (the third figure review:

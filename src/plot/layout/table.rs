@@ -26,6 +26,17 @@ pub(super) const TABLE_TOP: u32 = 6;
 /// and 18 across two columns, 17 in one.
 const TABLE_FONT: u32 = 13;
 
+/// The last column's header, across two columns and in one: the error after allocation and
+/// what it is across two columns (the sixth review, R6-lloyd2005-fig8-5: "error after" was
+/// cryptic); in one, whose last column is as wide as its numbers, "error after", which the key
+/// beside (a) says is (M_x/w, M_z/h). Lines split at '\n'.
+pub(super) const ERROR_AFTER: [&str; 2] = ["error after allocation (M_x/w, M_z/h)", "error after"];
+
+/// The header's lines, [`ERROR_AFTER`]'s.
+fn header_lines(single: bool) -> u32 {
+    ERROR_AFTER[usize::from(single)].lines().count() as u32
+}
+
 pub(super) fn table_step(single: bool) -> u32 {
     TABLE_FONT + if single { 4 } else { 5 }
 }
@@ -54,6 +65,41 @@ impl Fig8 {
             .collect()
     }
 
+    /// The caption's sentence on (d): the parts whose M_x/w is lower than the others' (Eq 6
+    /// gives a column its width by its largest M_x, so every part of a column has that part's
+    /// M_x/w but the one with the largest M_x), with both values and the part whose M_x sets
+    /// their column's width, computed from the viewports. None where every part has one.
+    pub(super) fn lower_after_sentence(&self) -> Option<String> {
+        let n = f64::from(SIZE);
+        let after = |c: &super::Cell| c.mx / (f64::from(c.viewport.width) / n);
+        let most = self
+            .cells
+            .iter()
+            .map(after)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let lower: Vec<&super::Cell> = self
+            .cells
+            .iter()
+            .filter(|c| after(c) < most - 0.005)
+            .collect();
+        let first = lower.first()?;
+        // The part with the column's largest M_x: the same column (viewport x), the largest.
+        let setter = self
+            .cells
+            .iter()
+            .filter(|c| c.viewport.x == first.viewport.x)
+            .max_by(|a, b| a.mx.total_cmp(&b.mx))?;
+        let tags: Vec<&str> = lower.iter().map(|c| c.tag.as_str()).collect();
+        Some(format!(
+            "(d) {}: M_x/w\u{a0}=\u{a0}{:.2}\u{a0}<\u{a0}{:.2}; {}'s larger M_x sets their \
+             column's width.",
+            tags.join(", "),
+            after(first),
+            most,
+            &setter.tag[..1],
+        ))
+    }
+
     /// The table's rows as drawn, each with the partitions it stands for: one a partition
     /// across two columns; in one column, the parts of one face whose numbers print alike
     /// (the self-similar z-partitions of a face have one M_x, M_z and share) share a row, "R1,
@@ -79,11 +125,11 @@ impl Fig8 {
     /// The table's lines, [`table_step`] apart: across two columns its title, header and a
     /// row a partition; in one column (the title in the key) its header and its rows.
     pub(super) fn table_lines(&self, single: bool) -> u32 {
-        let rows = self.table_groups(single).len() as u32;
+        let rows = self.table_groups(single).len() as u32 + header_lines(single);
         if single {
-            rows + 1
+            rows
         } else {
-            rows + 2
+            rows + 1
         }
     }
 
@@ -144,7 +190,7 @@ impl Fig8 {
             "M_x",
             "M_z",
             "share (w, h)",
-            "error after",
+            ERROR_AFTER[usize::from(single)],
         ];
         // One column writes the face and depths in its key.
         let keep: &[usize] = if single {
@@ -153,10 +199,13 @@ impl Fig8 {
             &[0, 1, 2, 3, 4, 5]
         };
         let groups = self.table_groups(single);
+        // A cell's width: its widest line's.
         let measure = |t: &str| -> Result<i32, Fail> {
-            area.estimate_text_size(t, &text)
-                .map(|(w, _)| w as i32)
-                .map_err(|e| Fail::Draw(e.to_string()))
+            t.lines().try_fold(0, |w, l| {
+                area.estimate_text_size(l, &text)
+                    .map(|(lw, _)| w.max(lw as i32))
+                    .map_err(|e| Fail::Draw(e.to_string()))
+            })
         };
         let swatch = (size as i32 + 4, size as i32 - 1);
         // The swatches of a row's partitions, side by side 3 units apart.
@@ -201,16 +250,21 @@ impl Fig8 {
         let first = if single {
             top
         } else {
-            let title =
-                "(d) Eq 6's shares (w, h) of the texture; error after allocation (M_x/w, M_z/h)";
+            let title = "(d) Eq 6's shares (w, h) of the texture";
             area.draw(&Text::new(title, (left, top), text.clone()))?;
             top + step
         };
         let grey = RGBColor(90, 90, 90);
+        // The header's cells top-aligned, a cell of several lines one step a line; the rule and
+        // the rows under its last line.
         for (k, &j) in keep.iter().enumerate() {
             let at = xs[k] + if j == 0 && !single { lead } else { 0 };
-            area.draw(&Text::new(head[j], (at, first), text.color(&grey)))?;
+            for (n, line) in head[j].lines().enumerate() {
+                let y = first + n as i32 * step;
+                area.draw(&Text::new(line, (at, y), text.color(&grey)))?;
+            }
         }
+        let first = first + (header_lines(single) as i32 - 1) * step;
         let rule = first + step - 3;
         area.draw(&PathElement::new(
             vec![(left, rule), (x - gap, rule)],
