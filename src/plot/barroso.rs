@@ -346,7 +346,10 @@ mod tests {
             let svg = svg_in(&fig, column);
             let all: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
             for want in ["n′ of least max mz", "θ = 30°", "γlim = 30.5°", TITLE] {
-                assert!(all.iter().any(|t| t == want), "{column:?}: no {want:?} in {all:?}");
+                assert!(
+                    all.iter().any(|t| t == want),
+                    "{column:?}: no {want:?} in {all:?}"
+                );
             }
             assert!(!all.iter().any(|t| t.contains("least M")), "{column:?}");
             let arrows: Vec<&String> = all
@@ -368,7 +371,10 @@ mod tests {
                 assert!(spines[0] * 0.8 >= 110.0, "{spines:?}");
                 assert!(!all.iter().any(|t| t.starts_with("(a)")), "{all:?}");
                 let caption = all.join(" ");
-                assert!(caption.contains("panel (a), γ from 0° to 90°, is left"), "{caption}");
+                assert!(
+                    caption.contains("panel (a), γ from 0° to 90°, is left"),
+                    "{caption}"
+                );
             } else {
                 assert_eq!(spines.len(), 2, "{spines:?}");
             }

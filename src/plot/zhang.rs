@@ -147,7 +147,8 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
          screen's vertical and horizontal (×2: Zhang's span [−1,\u{a0}1]); m\u{a0}⊥\u{a0}light \
          (Lloyd 2006). LiSPSM's warp \
          parameter n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
-         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: no scene insets.",
+         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: no scene insets; (a), (b) and \
+         (c) each have their own colour scale.",
         angles.join(", "),
         lispsm.join(", "),
     );
@@ -155,7 +156,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
          view θ\u{a0}=\u{a0}{phi:.0}°, light at γ\u{a0}=\u{a0}{} from the view direction. \
          E_p, E_q: aliasing along the screen's vertical, horizontal (×2: span \
-         [−1,\u{a0}1]). Heights at ½ depth scale.",
+         [−1,\u{a0}1]); a colour scale each. Heights at ½ depth scale.",
         angles.join(", "),
     );
     Ok(Fig3 {
@@ -220,7 +221,7 @@ const TEXT: u32 = 13;
 
 /// The page's size: three blocks of 3 × 3 panels side by side (landscape drawing), the caption
 /// under them; as tall as the blocks, their bars and the caption need.
-pub(super) const SIZE: (u32, u32) = (520, 444);
+pub(super) const SIZE: (u32, u32) = (520, 462);
 
 /// A double-column panel's width: the body (the page less 6 units each side) less the left
 /// strips, the gaps, shared by nine panels.
@@ -287,8 +288,8 @@ impl Block {
 impl Fig3 {
     /// Draws the panels of quantity `q` into `block` on `body`: a row per angle γ, a column
     /// per scheme, each panel's frustum outline and grey frame at the data's extent; the
-    /// first column's panels carry γ (`row_name` of it) and the y ticks from `y_first` every
-    /// `y_step`; the rows of
+    /// first column's panels carry γ (`row_name` of it), and those of the rows `ticked` the y
+    /// ticks from `y_first` every `y_step`; the rows of
     /// `z_under` columns of the last row the depth's ticks, the `z_named` one its name.
     #[allow(clippy::too_many_arguments)]
     fn draw_block<DB: DrawingBackend>(
@@ -298,6 +299,7 @@ impl Fig3 {
         b: Block,
         (row_label, half, y_first, y_step): (u32, f64, f64, f64),
         row_name: &dyn Fn(&str) -> String,
+        ticked: &[usize],
         z_under: &[usize],
         z_named: Option<usize>,
     ) -> Result<(), Fail> {
@@ -324,8 +326,10 @@ impl Fig3 {
                 // γ as the first panel's y description, with the height y at −40, 0 and 40 in
                 // two columns, at −30 and 30 in one (its rows are too low for 0 between them,
                 // and ±40 stood 4 units from the next row's): one y scale for every row.
-                let y = if labelled {
+                let y = if labelled && ticked.contains(&r) {
                     Axis::every(row_name(&self.row_angles[r]), -half, half, y_first, y_step)
+                } else if labelled {
+                    Axis::every(row_name(&self.row_angles[r]), -half, half, 500.0, 1000.0)
                 } else {
                     Axis::every("", -half, half, 500.0, 1000.0)
                 };
@@ -405,7 +409,14 @@ impl Fig3 {
             ))?;
             self.draw_headings(body, b, b.top - 2)?;
             if q == 0 {
-                draw_height_name(body, "height y", b)?;
+                // The height's name over its ticks' column, level with the schemes' names (the
+                // sixth review, R6-zhang-fig3-4: turned beside the turned "γ = 60°" it read as
+                // one label "height y γ = 60°").
+                body.draw(&Text::new(
+                    "height y",
+                    ((b.x - 4) as i32, (b.top - 2) as i32),
+                    style.pos(Pos::new(HPos::Right, VPos::Bottom)),
+                ))?;
             }
             let row_label = if q == 0 { ROW_LABEL } else { 0 };
             self.draw_block(
@@ -414,6 +425,7 @@ impl Fig3 {
                 b,
                 (row_label, half, -40.0, 40.0),
                 &|a| a.to_string(),
+                &[0, 1, 2],
                 &[0],
                 Some(0),
             )?;
@@ -483,6 +495,10 @@ impl Fig3 {
                 b,
                 (ROW_LABEL_1, half, -30.0, 60.0),
                 &|a| a.trim_start_matches("γ = ").to_string(),
+                // The y ticks on each block's middle row only (the sixth review,
+                // R6-zhang-fig3-3: ±30 on all nine rows, 2.7 pt apart, read as one column of
+                // numbers).
+                &[1],
                 under,
                 Some(1),
             )?;

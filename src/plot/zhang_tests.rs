@@ -244,8 +244,8 @@ fn side_view_cells_start_at_the_near_plane_and_follow_the_border() {
 /// The panels' aspect, read from the SVGs' grey frames (depth n to f across, 99; height
 /// ±f tan θ up, 115.47): two columns draw them to scale (height over width 1.166), one
 /// column at exactly half the heights' scale (0.583), as its caption and its turned axis
-/// name "height y (½ scale)" say (the fifth review: "about half", stated nowhere); "height
-/// y" is the turned name of the y axis in two columns, not a heading.
+/// name "height y (½ scale)" say (the fifth review: "about half", stated nowhere). (Two
+/// columns' upright "height y": `height_named_upright_single_ticks_on_middle_rows_and_scales_stated`.)
 #[test]
 fn panels_are_to_scale_or_at_half_height_as_stated() {
     use super::super::chart::read_svg::{attr, texts};
@@ -270,7 +270,9 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
         let named: Vec<(&str, String, f64)> =
             texts(&svg).into_iter().filter(|t| t.1 == name).collect();
         assert_eq!(named.len(), 1, "{column:?}: {name}");
-        assert!(named[0].0.contains("rotate(270"), "{}", named[0].0);
+        if column == Column::Single {
+            assert!(named[0].0.contains("rotate(270"), "{}", named[0].0);
+        }
     }
     assert!(fig.single_caption.contains("Heights at ½ depth scale"));
     for c in [&fig.caption, &fig.single_caption] {
@@ -338,4 +340,61 @@ fn m_is_measured_across_the_light_and_the_figure_says_so() {
         "{}",
         fig.caption
     );
+}
+
+/// The sixth review: R6-zhang-fig3-4 (two columns: "height y", turned beside the turned
+/// "γ = 60°", read as one label "height y γ = 60°"), -3 (one column: ±30 on all nine rows,
+/// 2.7 pt apart, read as one column of numbers) and -2 (three colour bars of different ranges,
+/// unstated). Read from the drawn SVGs: in two columns "height y" is set once, upright (no
+/// rotation), over the first row of panels (above every panel frame's top); in one column the
+/// y ticks "30" and "−30" appear once per block (3 each, not 9), on its middle row (between
+/// the block's first and last row frames); both captions say the blocks have their own
+/// colour scales.
+#[test]
+fn height_named_upright_single_ticks_on_middle_rows_and_scales_stated() {
+    use super::super::chart::read_svg::{attr, texts};
+    use super::super::hemisphere::svg_in;
+    let fig = fig3().map_err(|e| e.named("zhang-fig3")).unwrap();
+    let frames = |svg: &str| -> Vec<(f64, f64)> {
+        svg.lines()
+            .filter(|l| l.starts_with("<rect") && l.contains("stroke=\"#969696\""))
+            .map(|l| {
+                let y = attr(l, "y").unwrap();
+                (y, y + attr(l, "height").unwrap())
+            })
+            .collect()
+    };
+    let svg = svg_in(&fig, Column::Double);
+    let all = texts(&svg);
+    let named: Vec<_> = all.iter().filter(|t| t.1 == "height y").collect();
+    assert_eq!(named.len(), 1, "{named:?}");
+    assert!(!named[0].0.contains("rotate("), "{}", named[0].0);
+    let top = frames(&svg)
+        .iter()
+        .map(|f| f.0)
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        named[0].2 <= top,
+        "{} under the panels' top {top}",
+        named[0].2
+    );
+    let svg = svg_in(&fig, Column::Single);
+    let all = texts(&svg);
+    let mut rows: Vec<(f64, f64)> = frames(&svg);
+    rows.sort_by(|a, b| a.0.total_cmp(&b.0));
+    rows.dedup_by(|a, b| (a.0 - b.0).abs() < 0.5);
+    assert_eq!(rows.len(), 9, "{rows:?}");
+    for tick in ["30", "−30"] {
+        let ys: Vec<f64> = all.iter().filter(|t| t.1 == tick).map(|t| t.2).collect();
+        assert_eq!(ys.len(), 3, "{tick}: {ys:?}");
+        for (block, y) in ys.iter().enumerate() {
+            let (first, last) = (rows[3 * block], rows[3 * block + 2]);
+            assert!(
+                *y > first.1 && *y < last.0,
+                "{tick} at {y}: {first:?} {last:?}"
+            );
+        }
+    }
+    assert!(fig.caption.contains("each have their own colour scale"));
+    assert!(fig.single_caption.contains("a colour scale each"));
 }
