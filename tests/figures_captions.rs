@@ -539,7 +539,8 @@ fn barroso_fig7() {
     );
 }
 
-/// lloyd2005-fig8 prints only its configuration.
+/// lloyd2005-fig8 prints its configuration and, for (d), the two errors after allocation M_x/w
+/// (the sixth review, R6-lloyd2005-fig8-5), both from the figure's own layout.
 #[test]
 fn lloyd2005_fig8() {
     check(
@@ -553,10 +554,24 @@ fn lloyd2005_fig8() {
             ("30", N::Given("θ")),
             ("35", N::Given("the light's elevation")),
             ("10", N::Given("the light's azimuth from straight behind")),
-            ("1", N::Given("partition 1, near")),
-            ("2", N::Given("partition 2, far")),
             ("2", N::Given("the partition R2 of panel (b)")),
             ("6", N::Given("Eq 6")),
+            ("1", N::Given("the partition R1 of (d)'s sentence")),
+            ("2", N::Given("the partition R2 of (d)'s sentence")),
+            (
+                "4.09",
+                N::Measured(
+                    "R1's M_x/w; Eq 6's M_x · Σ/(its column's largest M_x) in \
+                     table_after_is_the_sum_of_the_columns_m_x (src/plot/layout/table.rs)",
+                ),
+            ),
+            (
+                "4.30",
+                N::Measured(
+                    "the others' M_x/w, Σ of the columns' largest M_x (1.56 + 1.76 + 0.98) in \
+                     table_after_is_the_sum_of_the_columns_m_x (src/plot/layout/table.rs)",
+                ),
+            ),
         ],
     );
 }
