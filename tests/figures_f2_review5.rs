@@ -192,8 +192,8 @@ fn entry_colour(font: &read::Font, svg: &str, start: &str) -> String {
 }
 
 /// X5: Barroso's and Zhang's fall-offs (key entries "Eq 18…", "Eq 17…") are drawn in neither
-/// of the schemes' colours, by hand the Okabe–Ito PSM/ZP blue #0072B2, ZP+W vermillion #D55E00,
-/// LiSPSM/FP+ZP+W green #009E73 and uniform orange #E69F00, nor in any colour lloyd2006-fig12's
+/// of the warps' and schemes' colours, by hand PSM #00306E, LiSPSM #00664B, uniform #D55E00,
+/// ZP #009CA6, ZP+W #A82E66 and FP+ZP+W #4D2E00 (docs/figures.md's table), nor in any colour lloyd2006-fig12's
 /// key gives a scheme in the same form; and they differ from each other.
 #[test]
 fn barroso_fig7_fall_offs_take_no_scheme_colour() {
@@ -207,7 +207,12 @@ fn barroso_fig7_fall_offs_take_no_scheme_colour() {
         let schemes: Vec<String> = read::key_colours(&font, &fig12)
             .into_iter()
             .map(|(_, c)| c)
-            .chain(["#0072B2", "#D55E00", "#009E73", "#E69F00"].map(String::from))
+            .chain(
+                [
+                    "#00306E", "#00664B", "#D55E00", "#009CA6", "#A82E66", "#4D2E00",
+                ]
+                .map(String::from),
+            )
             .collect();
         assert!(schemes.len() > 4, "{form}: fig12's key not read");
         for c in [&barroso, &zhang] {

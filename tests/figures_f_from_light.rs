@@ -90,7 +90,7 @@ fn fig11_leaders_start_at_their_squares_corners() {
         assert_eq!(dots.len(), 4, "{form}: {dots:?}");
         let leaders: Vec<Vec<(f64, f64)>> = elements(&s, "polyline")
             .into_iter()
-            .filter(|e| attr(e, "stroke") == Some("#969696"))
+            .filter(|e| attr(e, "stroke") == Some("#949494"))
             .map(points)
             .filter(|p| p.len() == 2 && p[0].1 == p[1].1 && p[1].0 - p[0].0 > 20.0)
             .collect();

@@ -81,7 +81,7 @@ fn fig4_ticks_the_near_plane_marks_xi_minus_half_with_diamonds_and_labels_it_by_
                     .map(polyline_points)
                     .unwrap()
             };
-            let (lilac, orange) = (curve("#9589C0"), curve("#E69F00"));
+            let (lilac, orange) = (curve("#9589C0"), curve("#D55E00"));
             let lines: Vec<&str> = svg.lines().collect();
             let k = lines
                 .iter()

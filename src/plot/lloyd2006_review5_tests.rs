@@ -91,8 +91,9 @@ fn fig5_axes_labelled_at_two_and_five() {
 }
 
 /// Fig 5 (§4.5.3, X6: n′ = 100, the sweep's lightest purple, L* 60, and n′ = ∞, orange L* 71,
-/// printed as two pale solid lines with ◄ and ▼): n′ = 100's line is dashed and its markers
-/// are diamonds (4 corners, ∞'s triangles 3), and n′ = ∞'s lines solid.
+/// printed as two pale solid lines with ◄ and ▼; ∞ is now vermillion, L* 54, with squares):
+/// n′ = 100's line is dashed and its markers are diamonds (4 corners, as ∞'s squares: the
+/// shapes are Marker::of's, src/plot/chart/line.rs), and n′ = ∞'s lines solid.
 #[test]
 fn fig5_n100_and_uniform_differ_in_greyscale() {
     let svg = svg_of("lloyd2006-fig5", Column::Double, false);
@@ -119,7 +120,7 @@ fn fig5_n100_and_uniform_differ_in_greyscale() {
         corners(&c100)
     );
     assert!(
-        corners(&cinf).iter().all(|&n| n == 3),
+        corners(&cinf).iter().all(|&n| n == 4),
         "{:?}",
         corners(&cinf)
     );

@@ -344,16 +344,14 @@ mod tests {
             Marker::Circle,
             Marker::Square,
             Marker::TriangleUp,
-            Marker::TriangleDown,
             Marker::Diamond,
-            Marker::WideBar,
             Marker::TallBar,
             Marker::Hexagon,
             Marker::Star,
             Marker::Pentagon,
             Marker::Cross,
-            Marker::TriangleRight,
-            Marker::TriangleLeft,
+            Marker::Saltire,
+            Marker::Bowtie,
         ];
         for dash in [Dash::Dashed, Dash::Dotted] {
             let (on, off) = dash_lengths(dash).unwrap();

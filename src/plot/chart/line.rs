@@ -28,35 +28,40 @@ pub(crate) enum Dash {
 }
 
 /// The marker of a series, so that lines of different colours stay apart in greyscale: the
-/// `i`-th colour of [`PALETTE`] has the `i`-th shape.
+/// `i`-th colour of [`PALETTE`] has the `i`-th shape, the schemes' the shapes of the warps at
+/// the same place in their set (no figure shows a warp beside a scheme). No shape is another's
+/// mirror image or quarter turn (▲/▼, ▶/◀, a wide and a tall bar: the sixth figure review,
+/// X-4, could not tell such pairs apart at print size).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Marker {
     Circle,
     Square,
     TriangleUp,
     Diamond,
-    TriangleDown,
-    WideBar,
     TallBar,
     Hexagon,
     /// The sweep's shapes ([`SWEEP`]), none of them a palette colour's.
     Star,
     Pentagon,
     Cross,
-    TriangleRight,
-    TriangleLeft,
+    /// A cross turned by 45° (×).
+    Saltire,
+    /// Two triangles meeting at a narrow waist, across (⋈).
+    Bowtie,
 }
 
 impl Marker {
-    const ALL: [Marker; 8] = [
+    /// The shapes of [`PALETTE`]'s colours, in its order.
+    const ALL: [Marker; 9] = [
         Marker::Circle,
         Marker::Square,
         Marker::TriangleUp,
         Marker::Diamond,
-        Marker::TriangleDown,
-        Marker::WideBar,
+        Marker::Circle,
+        Marker::Square,
         Marker::TallBar,
         Marker::Hexagon,
+        Marker::TriangleUp,
     ];
 
     /// The shapes of the sweep's colours, in [`SWEEP`]'s order.
@@ -64,8 +69,8 @@ impl Marker {
         Marker::Star,
         Marker::Pentagon,
         Marker::Cross,
-        Marker::TriangleRight,
-        Marker::TriangleLeft,
+        Marker::Saltire,
+        Marker::Bowtie,
     ];
 
     /// The shape of a colour: the `i`-th of [`PALETTE`] gets the `i`-th shape, the `i`-th of
@@ -98,9 +103,7 @@ impl Marker {
             Marker::Circle => ngon(12, 0.0),
             Marker::Square => vec![(-r, -r), (r, -r), (r, r), (-r, r)],
             Marker::TriangleUp => vec![(0, -r - 1), (r + 1, r), (-r - 1, r)],
-            Marker::TriangleDown => vec![(0, r + 1), (r + 1, -r), (-r - 1, -r)],
             Marker::Diamond => vec![(0, -r - 1), (r + 1, 0), (0, r + 1), (-r - 1, 0)],
-            Marker::WideBar => vec![(-r - 1, -h), (r + 1, -h), (r + 1, h), (-r - 1, h)],
             Marker::TallBar => vec![(-h, -r - 1), (h, -r - 1), (h, r + 1), (-h, r + 1)],
             Marker::Hexagon => ngon(6, std::f64::consts::FRAC_PI_6),
             Marker::Pentagon => ngon(5, -std::f64::consts::FRAC_PI_2),
@@ -136,8 +139,35 @@ impl Marker {
                     (-t, -t),
                 ]
             }
-            Marker::TriangleRight => vec![(r + 1, 0), (-r, r + 1), (-r, -r - 1)],
-            Marker::TriangleLeft => vec![(-r - 1, 0), (r, -r - 1), (r, r + 1)],
+            Marker::Saltire => {
+                // The cross's arms along the diagonals: each corner of the cross turned by 45°.
+                let (o, t) = (f64::from(r + 1), f64::from((r + 1) / 3 + 1));
+                let turn = |x: f64, y: f64| {
+                    let s = std::f64::consts::FRAC_1_SQRT_2;
+                    (((x - y) * s).round() as i32, ((x + y) * s).round() as i32)
+                };
+                [
+                    (-t, -o),
+                    (t, -o),
+                    (t, -t),
+                    (o, -t),
+                    (o, t),
+                    (t, t),
+                    (t, o),
+                    (-t, o),
+                    (-t, t),
+                    (-o, t),
+                    (-o, -t),
+                    (-t, -t),
+                ]
+                .into_iter()
+                .map(|(x, y)| turn(x, y))
+                .collect()
+            }
+            Marker::Bowtie => {
+                let (o, w) = (r + 1, (r + 1) / 3);
+                vec![(-o, -o), (0, -w), (o, -o), (o, o), (0, w), (-o, o)]
+            }
         }
     }
 }
@@ -626,35 +656,60 @@ fn draw_chart<DB: DrawingBackend>(
     }
 }
 
-/// The eight colours the line charts cycle through (colour-blind friendly, Okabe–Ito order).
-pub(crate) const PALETTE: [RGBColor; 8] = [
-    RGBColor(0, 114, 178),
+/// The line colours, each at least 3 : 1 against white (WCAG's least for lines; sixth figure
+/// review, X-11): the warps PSM dark blue #00306E, the uniform map vermillion #D55E00 and
+/// LiSPSM green #00664B (CIE L* 21, 54, 38); other quantities' reddish purple #CC79A7 (L* 61);
+/// the schemes ZP teal #009CA6 and ZP+W rose #A82E66 (L* 59, 40); black; olive #96961E (L* 60);
+/// FP+ZP+W brown #4D2E00 (L* 22). [`super::Look::colour`] names the warps' and schemes'.
+pub(crate) const PALETTE: [RGBColor; 9] = [
+    RGBColor(0, 48, 110),
     RGBColor(213, 94, 0),
-    RGBColor(0, 158, 115),
+    RGBColor(0, 102, 75),
     RGBColor(204, 121, 167),
-    RGBColor(230, 159, 0),
-    RGBColor(86, 180, 233),
+    RGBColor(0, 156, 166),
+    RGBColor(168, 46, 102),
     RGBColor(0, 0, 0),
     RGBColor(150, 150, 30),
+    RGBColor(77, 46, 0),
 ];
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// Greyscale (issue 25): each palette colour has its own marker shape, and a chart of two
+    /// Greyscale (issue 25): the colours a figure may set side by side have their own marker
+    /// shapes (the warps with the other colours, and the schemes with the other colours; a
+    /// scheme has the shape of the warp at its place in the other set), and a chart of two
     /// solid lines of different colours draws that many marker polygons along each (counted in
     /// the SVG), and none for a chart of one colour (nor in its legend).
     #[test]
     fn lines_of_different_colours_carry_different_markers() {
+        use super::super::Look;
         super::super::super::ensure_font().unwrap();
-        let shapes: Vec<Vec<(i32, i32)>> =
-            PALETTE.iter().map(|&c| Marker::of(c).outline(4)).collect();
-        for i in 0..shapes.len() {
-            for j in 0..i {
-                assert_ne!(shapes[i], shapes[j], "colours {i} and {j}");
+        let others = [PALETTE[3], PALETTE[6], PALETTE[7]];
+        for set in [
+            [Look::Psm, Look::Lispsm, Look::Uniform],
+            [Look::Zp, Look::ZpW, Look::FpZpW],
+        ] {
+            let colours: Vec<RGBColor> = set
+                .iter()
+                .map(|l| l.colour())
+                .chain(others)
+                .chain(SWEEP)
+                .collect();
+            let shapes: Vec<Vec<(i32, i32)>> =
+                colours.iter().map(|&c| Marker::of(c).outline(4)).collect();
+            for i in 0..shapes.len() {
+                for j in 0..i {
+                    assert_ne!(shapes[i], shapes[j], "{set:?}: colours {i} and {j}");
+                }
             }
         }
+        assert_eq!(
+            Marker::of(Look::Zp.colour()),
+            Marker::of(Look::Psm.colour())
+        );
+        assert_eq!(Marker::of(Look::FpZpW.colour()), Marker::TriangleUp);
         let polygons = |colours: &[RGBColor]| {
             let mut c = LineChart::new(
                 "t",
@@ -684,10 +739,12 @@ mod tests {
     }
 
     /// Greyscale for sweeps: the five sweep colours get five shapes, by hand the star, pentagon,
-    /// cross, right and left triangles, none of them the shape of a palette colour (a sweep drawn
+    /// cross, saltire (×) and bowtie, none of them the shape of a palette colour (a sweep drawn
     /// beside schemes stays apart by shape), and each outline by hand at r = 4: the cross has 12
-    /// corners at ±5 and ±(5/3 + 1 = 2), the star 10 corners alternating 5 and 0.45·5 from the
-    /// centre, the pentagon 5 corners, its first straight up at (0, −4).
+    /// corners at ±5 and ±(5/3 + 1 = 2), the saltire the same turned by 45° (its first corners
+    /// (−2, −5) and (2, −5) to (2.1, −4.9) and (4.9, −2.1), rounded (2, −5) and (5, −2)), the star 10 corners alternating 5 and
+    /// 0.45·5 from the centre, the pentagon 5 corners, its first straight up at (0, −4), the
+    /// bowtie 6 corners, its waist ±5/3 → ±1 high.
     #[test]
     fn sweep_colours_carry_their_own_markers() {
         let sweep: Vec<Marker> = SWEEP.iter().map(|&c| Marker::of(c)).collect();
@@ -697,8 +754,8 @@ mod tests {
                 Marker::Star,
                 Marker::Pentagon,
                 Marker::Cross,
-                Marker::TriangleRight,
-                Marker::TriangleLeft
+                Marker::Saltire,
+                Marker::Bowtie
             ]
         );
         let palette: Vec<Vec<(i32, i32)>> =
@@ -725,8 +782,13 @@ mod tests {
         }
         assert_eq!(outlines[1].len(), 5);
         assert_eq!(outlines[1][0], (0, -4));
-        assert_eq!(outlines[3], vec![(5, 0), (-4, 5), (-4, -5)]);
-        assert_eq!(outlines[4], vec![(-5, 0), (4, -5), (4, 5)]);
+        assert_eq!(outlines[3].len(), 12);
+        assert_eq!(outlines[3][0], (2, -5));
+        assert_eq!(outlines[3][1], (5, -2));
+        assert_eq!(
+            outlines[4],
+            vec![(-5, -5), (0, -1), (5, -5), (5, 5), (0, 1), (-5, 5)]
+        );
     }
 
     /// A legend-only reference series (no points: the key for dashed optima drawn in other

@@ -29,18 +29,26 @@ pub(crate) enum Look {
 }
 
 impl Look {
-    /// The scheme's colour (Okabe–Ito, [`PALETTE`]; the fall-offs [`SWEEP`] steps).
+    /// The scheme's colour, from two sets of three ([`PALETTE`] holds them all): the warps
+    /// (n′ rules) PSM dark blue, LiSPSM green and the uniform map vermillion; the schemes
+    /// (partitionings) ZP teal, ZP+W rose and FP+ZP+W brown, hues none of the warps has, so that
+    /// no colour means a warp in one figure and a scheme in another (sixth figure review, X-3).
+    /// Within each set the CIE L* are at least 15 apart (warps 21, 38, 54; schemes 59, 40, 22),
+    /// so that the three stay apart in greyscale, and every one has at least 3 : 1
+    /// against white. The fall-offs take [`SWEEP`] steps.
     pub const fn colour(self) -> RGBColor {
         match self {
-            Look::Psm | Look::Zp => PALETTE[0],
-            Look::ZpW => PALETTE[1],
+            Look::Psm => PALETTE[0],
+            Look::Uniform => PALETTE[1],
+            Look::Lispsm => PALETTE[2],
+            Look::Zp => PALETTE[4],
+            Look::ZpW => PALETTE[5],
+            Look::FpZpW => PALETTE[8],
             // The two fall-offs r(γ) are one rule's parameter, not schemes: the sweep's darkest
-            // and fourth steps, so that no reader takes them for PSM/ZP blue or ZP+W
-            // vermillion (figure review 5, X5).
+            // and fourth steps, so that no reader takes them for a warp or a scheme (figure
+            // review 5, X5).
             Look::Barroso => SWEEP[0],
             Look::Zhang => SWEEP[3],
-            Look::Lispsm | Look::FpZpW => PALETTE[2],
-            Look::Uniform => PALETTE[4],
         }
     }
 }
@@ -91,27 +99,64 @@ pub(crate) fn sweep(i: usize, n: usize) -> RGBColor {
 mod tests {
     use super::*;
 
-    /// The colours by hand (Okabe–Ito: blue #0072B2, vermillion #D55E00, bluish green #009E73,
-    /// orange #E69F00), and the schemes a figure sets side by side apart: PSM, LiSPSM and the
-    /// uniform map (lloyd2006-fig5, lloyd2005-fig4), ZP, ZP+W and FP+ZP+W (lloyd2006-fig12,
-    /// fig13, worst-case), Barroso, Zhang and LiSPSM (barroso-fig7).
+    /// The CIE L* of a relative luminance (CIE 1976: 116·Y^(1/3) − 16 above (6/29)³).
+    fn lightness(y: f64) -> f64 {
+        if y > 216.0 / 24389.0 {
+            116.0 * y.cbrt() - 16.0
+        } else {
+            y * 24389.0 / 27.0
+        }
+    }
+
+    /// The colour table by hand (docs/figures.md): each colour's hex and its WCAG luminance
+    /// worked out by hand from the sRGB formula (e.g. ZP+W #A82E66: 168/255 →
+    /// ((0.6588 + 0.055)/1.055)^2.4 = 0.3916, 46/255 → 0.0273, 102/255 → 0.1329;
+    /// 0.2126·0.3916 + 0.7152·0.0273 + 0.0722·0.1329 = 0.1124, L* 40.0, 6.47 : 1 on white).
+    /// Every colour has at least 3 : 1 against white (sixth figure review, X-11), the three of
+    /// each set are at least 15 L* apart, the sets share no colour, and none is a
+    /// sweep step or [`SHARED`]; the schemes a figure sets side by side differ (barroso-fig7:
+    /// Barroso, Zhang and LiSPSM).
     #[test]
-    fn schemes_have_their_colours_and_compared_ones_differ() {
+    fn warps_and_schemes_are_two_sets_apart_in_greyscale() {
         let hex = |c: RGBColor| format!("#{:02X}{:02X}{:02X}", c.0, c.1, c.2);
-        assert_eq!(hex(Look::Zp.colour()), "#0072B2");
-        assert_eq!(hex(Look::ZpW.colour()), "#D55E00");
-        assert_eq!(hex(Look::FpZpW.colour()), "#009E73");
-        assert_eq!(hex(Look::Uniform.colour()), "#E69F00");
-        for group in [
-            [Look::Psm, Look::Lispsm, Look::Uniform],
-            [Look::Zp, Look::ZpW, Look::FpZpW],
-            [Look::Barroso, Look::Zhang, Look::Lispsm],
-        ] {
-            for (i, a) in group.iter().enumerate() {
-                for b in &group[..i] {
-                    assert_ne!(a.colour(), b.colour(), "{a:?} and {b:?}");
+        let warps = [
+            (Look::Psm, "#00306E", 0.0324),
+            (Look::Lispsm, "#00664B", 0.1001),
+            (Look::Uniform, "#D55E00", 0.2215),
+        ];
+        let schemes = [
+            (Look::Zp, "#009CA6", 0.2653),
+            (Look::ZpW, "#A82E66", 0.1124),
+            (Look::FpZpW, "#4D2E00", 0.0353),
+        ];
+        for set in [warps, schemes] {
+            for (look, h, y) in set {
+                assert_eq!(hex(look.colour()), h, "{look:?}");
+                let l = super::super::luminance(look.colour());
+                assert!((l - y).abs() < 5e-4, "{look:?}: {l}");
+                assert!(1.05 / (y + 0.05) >= 3.0, "{look:?} below 3 : 1");
+                assert!(!SWEEP.contains(&look.colour()) && look.colour() != SHARED);
+            }
+            for (i, a) in set.iter().enumerate() {
+                for b in &set[..i] {
+                    let d = (lightness(a.2) - lightness(b.2)).abs();
+                    assert!(d >= 15.0, "{:?} and {:?}: {d} L* apart", a.0, b.0);
                 }
-                assert_ne!(a.colour(), SHARED);
+            }
+        }
+        for w in warps {
+            assert!(schemes.iter().all(|s| s.0.colour() != w.0.colour()));
+        }
+        // By hand: the uniform map's L* = 116·0.2215^(1/3) − 16 = 54.2, LiSPSM's
+        // 116·0.1001^(1/3) − 16 = 37.9: 16.3 apart.
+        assert!((lightness(0.2215) - 54.2).abs() < 0.05);
+        assert!((lightness(0.1001) - 37.9).abs() < 0.05);
+        for (i, a) in [Look::Barroso, Look::Zhang, Look::Lispsm]
+            .iter()
+            .enumerate()
+        {
+            for b in &[Look::Barroso, Look::Zhang, Look::Lispsm][..i] {
+                assert_ne!(a.colour(), b.colour(), "{a:?} and {b:?}");
             }
         }
     }

@@ -54,8 +54,8 @@ const TITLE_INSET: i32 = 2;
 /// The grey of the box marking the region a detail panel enlarges.
 const ENLARGED: RGBColor = RGBColor(110, 110, 110);
 
-/// The grey of the leaders and their anchor dots.
-const LEADER: RGBColor = RGBColor(150, 150, 150);
+/// The grey of the leaders and their anchor dots (3.05 : 1 on white, the least for lines).
+const LEADER: RGBColor = RGBColor(148, 148, 148);
 const ANCHOR: RGBColor = RGBColor(90, 90, 90);
 
 #[path = "draw_sizes.rs"]
