@@ -653,6 +653,14 @@ fn lloyd2006_fig7() {
                      (fig7_names_e_and_the_projection_..., src/plot/hemisphere.rs)",
                 ),
             ),
+            (
+                "4.3",
+                N::Measured(
+                    "(b) over (a) near behind, at least 10^(6.63 − 6.01) by the sixth review's \
+                     Python (tests/figures_p2_review6.rs)",
+                ),
+            ),
+            ("4.4", N::Given("§4.4")),
         ],
     );
 }
@@ -754,6 +762,14 @@ fn martin_tan_fig6() {
             // 2 f tan θ, and the focus region is seen as its own far face at n + δ, so its
             // share is ((n + δ)/f)².
             ("0.0121", N::Value(((1.0f64 + 10.0) / 100.0).powi(2))),
+            ("80", N::Given("the 80 % rule")),
+            (
+                "28",
+                N::Measured(
+                    "where the 80 % rule's share rises above 0.0121, bracketed [20, 30) \
+                     by the sixth review's Python (tests/figures_p2_review6.rs)",
+                ),
+            ),
         ],
     );
 }

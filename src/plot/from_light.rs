@@ -30,8 +30,17 @@ pub(super) struct Panel {
     pub window: Option<(DVec2, DVec2)>,
     /// Each split plane's label (its depth z by default).
     pub plane_labels: Vec<String>,
-    /// Dimension lines: from, to, the label (centred under the line).
-    pub dims: Vec<(DVec2, DVec2, String)>,
+    /// Dimension lines: from, to, the label, and whether the label is set in a break of the
+    /// line (centred on it) rather than under it; such a line is given at the edge it
+    /// measures and drawn below it, its label clear of the edge and of a map's outline on it.
+    pub dims: Vec<(DVec2, DVec2, String, bool)>,
+    /// Whether each labelled plane's leader starts at its section's top right corner only
+    /// (lloyd2006-fig11: the sixth review, R6-lloyd2006-fig11-1, read "n = 1"'s leader from
+    /// the near square's lower corner as the dimension's).
+    pub top_leaders: bool,
+    /// Whether the window grows only downward to hold the dimension lines' labels (by default
+    /// it grows alike above, so that the drawing stays centred).
+    pub grow_down: bool,
     /// Extension lines from the measured feature to its dimension line.
     pub extensions: Vec<[DVec2; 2]>,
     /// A point on a line and the line's name: a label in the gutter, its leader from the point
@@ -89,6 +98,8 @@ fn panel(view: &ViewFrustum, light: DVec3, planes: &[f64], title: String) -> Res
         planes: planes.to_vec(),
         window: None,
         dims: Vec::new(),
+        top_leaders: false,
+        grow_down: false,
         extensions: Vec::new(),
         notes: Vec::new(),
         enlarged: None,
@@ -311,32 +322,39 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
         view.near() * view.tan_half_fov(),
         view.far() * view.tan_half_fov(),
     );
-    // The near face's dimension line lies below the square of z = 4, in the band to the far
-    // face, carried there by extension lines from the face's corners, so that its label covers
-    // no line (issue 25: under the face it sat on the frustum's edges and the nearest map;
-    // figure review 3: between z = 2 and z = 4 its box covered the z = 4 map's edge in one
-    // column).
-    let near_dim = -(4.0 * view.tan_half_fov() + 0.45);
+    // The near face's dimension line lies below the square of z = 4 and outside map 2's
+    // outline, carried there by extension lines from the face's corners, so that its label
+    // covers no line (issue 25: under the face it sat on the frustum's edges and the nearest
+    // map; figure review 3: between z = 2 and z = 4 its box covered the z = 4 map's edge in one
+    // column; the sixth review, R6-lloyd2006-fig11-3: its bars ran up to map 2's outline).
+    let near_dim = -(4.0 * view.tan_half_fov() + 0.6);
     p.extensions = vec![
         [DVec2::new(-sn, -sn), DVec2::new(-sn, near_dim)],
         [DVec2::new(sn, -sn), DVec2::new(sn, near_dim)],
     ];
+    // The far face's dimension drawn under the face (given at the face: the drawing sets it
+    // clear of map 3's outline), its label in a break of the line, so that the frame reaches
+    // less far below the far face (the sixth review, R6-lloyd2006-fig11-2: the label under
+    // the line made the frame 13 units tall and 10 wide).
     p.dims = vec![
         (
             DVec2::new(-sn, near_dim),
             DVec2::new(sn, near_dim),
             "2n tan θ".into(),
+            false,
         ),
         (
-            DVec2::new(-sf, -sf - 0.35),
-            DVec2::new(sf, -sf - 0.35),
+            DVec2::new(-sf, -sf),
+            DVec2::new(sf, -sf),
             "2f tan θ".into(),
+            true,
         ),
     ];
-    // The window as far above the far face as the dimension below it reaches, so that the
-    // frustum is centred in its frame (figure review 3: the axis ran to −6.5 below for the
-    // dimension, with no margin above).
-    p.window = Some((DVec2::new(-sf, -sf - 1.05), DVec2::new(sf, sf + 1.05)));
+    p.top_leaders = true;
+    // The window the far face, grown down only for the dimensions (the sixth review,
+    // R6-lloyd2006-fig11-2: the frame ran 2 units above and below the drawing).
+    p.grow_down = true;
+    p.window = Some((DVec2::splat(-sf), DVec2::splat(sf)));
     let caption = format!(
         "Lloyd et al. 2006, Fig. 11, to scale: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
          θ\u{a0}=\u{a0}{theta:.0}°, k\u{a0}=\u{a0}{k} self-similar z-partitions \
@@ -363,8 +381,8 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
         caption,
         single_caption,
         panels: vec![p],
-        size: (FROM_BEHIND_WIDTH, 480),
-        single_size: (300, 460),
+        size: (FROM_BEHIND_WIDTH, 450),
+        single_size: (300, 410),
     })
 }
 
@@ -444,18 +462,18 @@ mod tests {
         let dims: Vec<(f64, f64, &str)> = p
             .dims
             .iter()
-            .map(|(a, b, t)| ((*b - *a).length(), a.y, t.as_str()))
+            .map(|(a, b, t, _)| ((*b - *a).length(), a.y, t.as_str()))
             .collect();
         assert_eq!(dims.len(), 2);
         assert!((dims[0].0 - 1.1547).abs() < 1e-4 && dims[0].2 == "2n tan θ");
         assert!((dims[1].0 - 9.2376).abs() < 1e-4 && dims[1].2 == "2f tan θ");
         // Under their faces: below the near face's lower edge (−0.577) and the far face's
         // (−4.619), and inside the window.
-        assert!(dims[0].1 < -0.5774 && dims[1].1 < -4.6188);
+        assert!(dims[0].1 < -0.5774 && (dims[1].1 + 4.6188).abs() < 1e-4);
         let (lo, hi) = p.window.unwrap();
-        assert!(lo.y < dims[1].1 - 0.5);
-        // The window as far above the far face as below it (figure review 3: −6.5 to 4.9), so
-        // that the frustum, centred on 0, is centred in its frame.
+        assert!(lo.y <= dims[1].1 && p.grow_down);
+        // The window the far face, centred on 0 (the drawing grows it down only, for the
+        // dimensions' labels: the sixth review, R6-lloyd2006-fig11-2).
         assert!(
             (lo.y + hi.y).abs() < 1e-12 && (lo.x + hi.x).abs() < 1e-12,
             "{lo} {hi}"

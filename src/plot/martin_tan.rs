@@ -132,6 +132,10 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
     // them), unjoined, drawn last (over the lines' markers).
     let (first, last) = (eighty[0], eighty[eighty.len() - 1]);
     let dueling = first.1;
+    // Just off behind the 80 % rule collapses the trapezoid: its share falls below the
+    // exact-behind value up to this elevation (the sixth review, R6-martin-tan-fig6-4: the
+    // jump read as a plotting glitch).
+    let collapse = collapse_end(&eighty, dueling);
     profile.series.push(Series {
         shape: Some(Marker::Circle),
         ..Series::line("80 % rule", eighty, EIGHTY)
@@ -159,14 +163,13 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         ),
         profile,
         caption: vec![format!(
-            "Martin & Tan 2004, Fig. 6: the share of the trapezoidal map covered by the focus \
-             region (n to n\u{a0}+\u{a0}δ). (a) The paper's 80\u{a0}% rule \
-             (rings: elevation 10°, 20°, 30°, 60°; line: the view's vertical plane); (b) in that \
-             plane (elevation 0° behind, 90° overhead, 0° in front), also the iterative variant \
-             (1024 lines). \
-             n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of view \
-             θ\u{a0}=\u{a0}{theta:.0}°, δ\u{a0}=\u{a0}{FOCUS}. {JUMP_GLYPH}: light exactly \
-             behind or in front, {dueling:.4}.",
+            "Martin & Tan 2004, Fig. 6: the focus region's (n to n\u{a0}+\u{a0}δ) share of \
+             the trapezoidal map. (a) The paper's 80\u{a0}% rule (rings: elevation 10°, 20°, \
+             30°, 60°; line: (b)'s plane); (b) in the view's vertical plane (0° behind, 90° \
+             overhead, 0° in front), also the iterative variant (1024 lines). \
+             n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, \
+             δ\u{a0}=\u{a0}{FOCUS}. {JUMP_GLYPH}: behind or in front, {dueling:.4}; the \
+             80\u{a0}% rule collapses below {JUMP_GLYPH} up to {collapse:.0}° from behind.",
         )],
         single_caption: format!(
             "Martin & Tan 2004, Fig. 6: the focus region's (n to n\u{a0}+\u{a0}δ) share of \
@@ -175,6 +178,16 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
              θ\u{a0}=\u{a0}{theta:.0}°, δ\u{a0}=\u{a0}{FOCUS}; {JUMP_GLYPH}: {dueling:.4}."
         ),
     })
+}
+
+/// The largest elevation from behind (the profile's angle up to 90°) at which the 80 % rule's
+/// share is below `exact`, its value exactly behind; 0 where none is.
+fn collapse_end(eighty: &[(f64, f64)], exact: f64) -> f64 {
+    eighty
+        .iter()
+        .filter(|&&(a, v)| a > 0.0 && a <= 90.0 && v < exact)
+        .map(|&(a, _)| a)
+        .fold(0.0, f64::max)
 }
 
 /// The bottom of the profile's logarithmic axis: a power of ten below the smallest area.
@@ -288,7 +301,7 @@ mod tests {
         let fig = fig6().map_err(|e| e.named("martin-tan-fig6")).unwrap();
         let caption = fig.caption.join(" ");
         assert!(
-            caption.contains("◆: light exactly behind or in front, 0.0121."),
+            caption.contains("◆: behind or in front, 0.0121;"),
             "{caption}"
         );
         let svg = draw_svg((300, 300), |area| {

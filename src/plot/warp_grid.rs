@@ -10,7 +10,7 @@
 
 use super::chart::{
     build_chart_styled, clip_polyline, column, equal_aspect, frame, linspace, Axis, ChartStyle,
-    FONT, PANEL_TITLE, SHARED, SWEEP,
+    FONT, SHARED, SWEEP,
 };
 use super::{Fail, Figure, UNIT_SQUARE};
 use crate::analytic::eta::n_prime_from_eta;
@@ -375,8 +375,8 @@ impl Fig4 {
     }
 
     /// The two rows of panels on `body`: a column per n′ headed by its letter, η and n′ (and
-    /// its scheme's name), the light's view over the map, titled "(e) map of (a)" (across two
-    /// columns) or under the row's label "(d)–(f): (a)–(c) in the map (s, t)" (in one). The
+    /// its scheme's name), the light's view over the map, titled "(e) map of (a)" (in one
+    /// column "(d) map of (a)"), every title at [`HEADING_SIZE`]. The
     /// columns share their axes: only the first has the y labels, and it is that much wider,
     /// so that every panel of a row has the same scale; in one column [`GAP`] units lie between
     /// neighbouring panels, so that one panel's last x tick label and the next one's first do
@@ -395,8 +395,8 @@ impl Fig4 {
         let shown = self.shown(narrow);
         let count = shown.len() as u32;
         let pw = (bw - label_w - gap * (count - 1)) / count;
-        let heading_style =
-            TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Top));
+        let heading_style = TextStyle::from((FONT, HEADING_SIZE).into_font())
+            .pos(Pos::new(HPos::Center, VPos::Top));
         let lines = shown
             .iter()
             .zip('a'..)
@@ -404,9 +404,10 @@ impl Fig4 {
             .max()
             .unwrap_or(1) as u32;
         let head = lines * line_h + 4;
-        let row_label = if narrow { line_h + 4 } else { 0 };
+        // One size for every panel's title, the headings' (the sixth review,
+        // R6-lloyd2006-fig4-1: the maps' titles were 12.1 units, the headings 10.5).
         let st = |first: bool| ChartStyle {
-            title_size: PANEL_TITLE,
+            title_size: HEADING_SIZE,
             x_label_area: x_labels,
             y_label_area: if first { label_w } else { 0 },
             tick_size: 13,
@@ -418,27 +419,11 @@ impl Fig4 {
         let t = self.view.tan_half_fov();
         let plot_w = f64::from(pw - 3 * margin);
         let light_h = (plot_w * 2.2 * t / 1.05).ceil() as u32 + x_labels + 2 * margin;
-        let map_title = 15 + super::chart::TITLE_GAP + 2;
+        let map_title = HEADING_SIZE + super::chart::TITLE_GAP + 2;
         let map_h = plot_w.ceil() as u32 + x_labels + 2 * margin + map_title;
-        let spare = bh.saturating_sub(head + light_h + row_label + map_h);
-        let (y_light, y_map) = (head + spare / 2, head + spare / 2 + light_h + row_label);
+        let spare = bh.saturating_sub(head + light_h + map_h);
+        let (y_light, y_map) = (head + spare / 2, head + spare / 2 + light_h);
         let letter = |row: u32, i: u32| char::from(b'a' + (row * count + i) as u8);
-        if narrow {
-            let style =
-                TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Top));
-            let label = format!(
-                "({})–({}): ({})–({}) in the map (s, t)",
-                letter(1, 0),
-                letter(1, count - 1),
-                letter(0, 0),
-                letter(0, count - 1)
-            );
-            body.draw(&Text::new(
-                label,
-                (bw as i32 / 2, (y_light + light_h + 2) as i32),
-                style,
-            ))?;
-        }
         for (i, &k) in shown.iter().enumerate() {
             let col = &self.columns[k];
             let ii = i as u32;
@@ -456,17 +441,19 @@ impl Fig4 {
             }
             let light = body.clone().shrink((x0, y_light), (cw, light_h));
             let map = body.clone().shrink((x0, y_map), (cw, map_h));
-            let title = if narrow {
-                format!("({})", letter(1, ii))
-            } else {
-                format!("({}) map of ({})", letter(1, ii), letter(0, ii))
-            };
+            // "(d) map of (a)" in both layouts (the sixth review, R6-lloyd2006-fig4-3: one
+            // column's "(d)" under a row label "(d)–(f): (a)–(c) in the map (s, t)").
+            let title = format!("({}) map of ({})", letter(1, ii), letter(0, ii));
             self.draw_light(&light, k, "", &st(first))?;
             self.draw_map(&map, k, &title, &st(first), narrow)?;
         }
         Ok(())
     }
 }
+
+/// The size of every panel's title: the columns' headings and the maps' titles (plotters'
+/// size; 10.5 units in the SVG).
+const HEADING_SIZE: u32 = 13;
 
 /// The room between neighbouring panels of a row in one column, in units.
 const GAP: u32 = 16;
@@ -664,8 +651,9 @@ mod tests {
     /// of constant depth are whole, solid, darker and twice as thick as the texel grid (review
     /// 3: the two were solid purples of one weight, and the key's swatches likewise); the
     /// column headings are one with their letters ("(a) η = −1 (uniform)", no "(a)" row of its
-    /// own); the map panels say whose map they are ("(e) map of (a)", or the row's label in one
-    /// column: review 3, the bare form's lower row had no stated relation to the upper); the
+    /// own); the map panels say whose map they are ("(e) map of (a)", in one column "(d) map of
+    /// (a)": review 3, the bare form's lower row had no stated relation to the upper; review 6,
+    /// R6-lloyd2006-fig4-3, one column's row label was an in-figure caption); the
     /// caption calls the paper's figure a sketch; the key names all four lines in the bare
     /// figure too, one entry per kind of line (review 4); and one column has a layout 300 units
     /// wide and at most 525 tall, its panels in two rows of three (η = −1, 0, 1; review 4: four
@@ -769,13 +757,8 @@ mod tests {
                 }
             } else {
                 assert_eq!(size.0, 300);
-                assert!(
-                    all.iter()
-                        .any(|t| t == "(d)–(f): (a)–(c) in the map (s, t)"),
-                    "{all:?}"
-                );
-                for letter in ["(d)", "(e)", "(f)"] {
-                    assert!(all.iter().any(|t| t == letter), "{letter}: {all:?}");
+                for title in ["(d) map of (a)", "(e) map of (b)", "(f) map of (c)"] {
+                    assert!(all.iter().any(|t| t == title), "{title}: {all:?}");
                 }
                 for line in [
                     "(a) η = −1",

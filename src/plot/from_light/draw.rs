@@ -48,6 +48,13 @@ const PLANE_WIDTH: u32 = 1;
 /// Half the length of the bar across each end of a dimension line, in units.
 const DIM_BAR: f64 = 4.0;
 
+/// How far below the edge it measures a dimension line with its label in a break is drawn,
+/// in units, for `label`-size text: the label's half height, its box's pad and a gap of 2
+/// below a map's outline drawn [`MAP_OFFSET`] outside the edge, 2 wide.
+fn dim_clear(label: u32) -> f64 {
+    MAP_OFFSET + 2.0 + 2.0 + 0.65 * f64::from(label) + 2.0
+}
+
 /// A panel title's distance from its cell's left edge, in units.
 const TITLE_INSET: i32 = 2;
 
@@ -60,7 +67,7 @@ const ANCHOR: RGBColor = RGBColor(90, 90, 90);
 
 #[path = "draw_sizes.rs"]
 mod sizes;
-use sizes::{sizes, Sizes, OVERVIEW_GUTTER, OVERVIEW_LEAST};
+use sizes::{sizes, tick_labels, Sizes, OVERVIEW_GUTTER, OVERVIEW_LEAST};
 
 /// A panel's title up to its first colon or comma, without the word "light": "(c) Eq 19,
 /// not in the paper" is "(c) Eq 19", "(a) perpendicular light" is "(a) perpendicular".
@@ -432,55 +439,6 @@ fn axes(lo: DVec2, hi: DVec2, at: &(Vec<f64>, Vec<f64>), titles: (bool, bool)) -
     )
 }
 
-/// The labelled ticks of an axis over `lo`–`hi`, `room` long, with `tick`-size labels each
-/// needing `need(label)` of it: the multiples of the least step of 1, 2 or 5 × 10ⁿ whose labels
-/// fit, or where there are three, the two ends (−50 and 50 where −50, 0, 50 would touch); at
-/// least two.
-fn ticks_fitting(lo: f64, hi: f64, room: f64, need: impl Fn(f64) -> f64) -> Vec<f64> {
-    let span = hi - lo;
-    let fits = |v: &[f64]| {
-        v.len() >= 2
-            && v.windows(2)
-                .all(|w| w[1] - w[0] >= (need(w[0]) + need(w[1])) * 0.5 * span / room)
-    };
-    // The coarsest choice with two labels, should none fit.
-    let mut fallback = Vec::new();
-    let mut base = 10f64.powf((span / 20.0).log10().floor());
-    while base <= 10.0 * span {
-        for m in [1.0, 2.0, 5.0] {
-            let s = m * base;
-            let all: Vec<f64> = ((lo / s).ceil() as i64..=(hi / s).floor() as i64)
-                .map(|k| k as f64 * s)
-                .collect();
-            let ends: Vec<f64> = all.iter().copied().step_by(2).collect();
-            for v in [all.clone(), ends] {
-                if fits(&v) && (v.len() == all.len() || all.len() == 3) {
-                    return v;
-                }
-                if v.len() >= 2 {
-                    fallback = v;
-                }
-            }
-        }
-        base *= 10.0;
-    }
-    fallback
-}
-
-/// The labelled ticks of a panel showing `lo`–`hi` in a `w` × `h` plot with `tick`-size
-/// labels: across, each label as wide as its digits and sign plus a gap; up, 1.8 text heights
-/// apart.
-fn tick_labels(lo: DVec2, hi: DVec2, w: f64, h: f64, tick: f64) -> (Vec<f64>, Vec<f64>) {
-    let wide = |v: f64| {
-        let digits = format!("{}", v.abs()).len() as f64;
-        (digits * 0.64 + if v < 0.0 { 0.84 } else { 0.0 }) * tick + 0.4 * tick
-    };
-    (
-        ticks_fitting(lo.x, hi.x, w, wide),
-        ticks_fitting(lo.y, hi.y, h, |_| 1.8 * tick),
-    )
-}
-
 /// The backend pixel of a data point of `chart`.
 fn px<DB: DrawingBackend>(chart: &Chart2d<'_, DB>, q: DVec2) -> (i32, i32) {
     chart.backend_coord(&(q.x, q.y))
@@ -545,19 +503,29 @@ fn draw_panel<DB: DrawingBackend>(
     // the x axis), the window grown alike above, so that the frustum stays centred (figure
     // review 4: in one column "2f tan θ"'s box covered the x axis). The room is in units of
     // the page, so its data height grows with the window: a few rounds settle it.
-    let room = DIM_BAR * 1.6 + 1.3 * f64::from(sz.label) + 6.0;
+    let room = |on_line: bool| {
+        if on_line {
+            dim_clear(sz.label) + 0.65 * f64::from(sz.label) + 3.0
+        } else {
+            DIM_BAR * 1.6 + 1.3 * f64::from(sz.label) + 6.0
+        }
+    };
     for _ in 0..4 {
         let low = p
             .dims
             .iter()
-            .map(|(a, b, _)| a.y.min(b.y) - room * per_px)
+            .map(|(a, b, _, on)| a.y.min(b.y) - room(*on) * per_px)
             .fold(lo.y, f64::min);
         let more = lo.y - low;
         if more <= 0.0 {
             break;
         }
         lo.y -= more;
-        hi.y += more;
+        // lloyd2006-fig11's window grows down only, so that no empty band lies above the
+        // frustum (the sixth review, R6-lloyd2006-fig11-2: 2 units above and below).
+        if !p.grow_down {
+            hi.y += more;
+        }
         per_px = ((hi.x - lo.x) / pw).max((hi.y - lo.y) / ph);
     }
     let (dw, dh) = ((hi.x - lo.x) / per_px, (hi.y - lo.y) / per_px);
@@ -611,6 +579,7 @@ fn draw_panel<DB: DrawingBackend>(
             .fold(0.0f64, |m, q| m.max((*q - sec[0]).length()));
         let corners: Vec<DVec2> = right_corners(sec, tol)
             .into_iter()
+            .take(if p.top_leaders { 1 } else { usize::MAX })
             .filter(|&q| inside(q))
             .collect();
         if sz.labels && !label.is_empty() && !corners.is_empty() && size > 0.06 * (xa.max - xa.min)
@@ -718,22 +687,52 @@ fn draw_panel<DB: DrawingBackend>(
         ))?;
     }
     // Dimension lines: the line with a bar at each end, its label centred below.
-    for (a, b, text) in &p.dims {
+    for (a, b, text, on_line) in &p.dims {
         let bar = DIM_BAR / per_unit;
         let n = (*b - *a).perp().normalize_or_zero() * bar;
-        for (from, to) in [(*a, *b), (*a - n, *a + n), (*b - n, *b + n)] {
+        // The label below the bars' ends, with room for its white margin, or centred on the
+        // line, its box breaking it.
+        let (a, b) = if *on_line {
+            let down = DVec2::new(0.0, dim_clear(sz.label) / per_unit);
+            (&(*a - down), &(*b - down))
+        } else {
+            (a, b)
+        };
+        // A label in a break of its line: the line in two pieces, a gap of 3 units either
+        // side of the label's text.
+        let gap = if *on_line {
+            let style = TextStyle::from((FONT, sz.label).into_font());
+            let (w, _) = chart
+                .plotting_area()
+                .estimate_text_size(text, &style)
+                .map_err(|e| Fail::Draw(e.to_string()))?;
+            (0.5 * f64::from(w) + 3.0) / per_unit
+        } else {
+            0.0
+        };
+        let mid = 0.5 * (*a + *b);
+        let along = (*b - *a).normalize_or_zero() * gap;
+        let line: Vec<(DVec2, DVec2)> = if gap > 0.0 {
+            vec![(*a, mid - along), (mid + along, *b)]
+        } else {
+            vec![(*a, *b)]
+        };
+        for (from, to) in line.into_iter().chain([(*a - n, *a + n), (*b - n, *b + n)]) {
             chart.draw_series(LineSeries::new(
                 [(from.x, from.y), (to.x, to.y)],
                 BLACK.stroke_width(1),
             ))?;
         }
-        // The label below the bars' ends, with room for its white margin.
-        let mid = 0.5 * (*a + *b) - 1.6 * n;
+        let (mid, v) = if *on_line {
+            (0.5 * (*a + *b), VPos::Center)
+        } else {
+            (0.5 * (*a + *b) - 1.2 * n, VPos::Top)
+        };
         boxed_text(
             &mut chart,
             (mid.x, mid.y),
             text,
-            Pos::new(HPos::Center, VPos::Top),
+            Pos::new(HPos::Center, v),
             sz.label,
             BLACK,
         )?;

@@ -1,7 +1,8 @@
-//! The sizes of the diagrams seen from the light in each layout (moved out of draw.rs, which
-//! stays under 800 lines).
+//! The sizes of the diagrams seen from the light in each layout, and their axes' labelled
+//! ticks (moved out of draw.rs, which stays under 800 lines).
 
 use super::super::super::chart::{ChartStyle, PANEL_TITLE};
+use glam::DVec2;
 
 /// Sizes of one layout: label and key text, the gutter's width, the least distance between two
 /// labels in the gutter, the gap kept right of the gutter's text (before the next panel).
@@ -67,4 +68,53 @@ pub(super) fn sizes(single: bool, panels: usize) -> Sizes {
             labels: true,
         }
     }
+}
+
+/// The labelled ticks of an axis over `lo`–`hi`, `room` long, with `tick`-size labels each
+/// needing `need(label)` of it: the multiples of the least step of 1, 2 or 5 × 10ⁿ whose labels
+/// fit, or where there are three, the two ends (−50 and 50 where −50, 0, 50 would touch); at
+/// least two.
+pub(super) fn ticks_fitting(lo: f64, hi: f64, room: f64, need: impl Fn(f64) -> f64) -> Vec<f64> {
+    let span = hi - lo;
+    let fits = |v: &[f64]| {
+        v.len() >= 2
+            && v.windows(2)
+                .all(|w| w[1] - w[0] >= (need(w[0]) + need(w[1])) * 0.5 * span / room)
+    };
+    // The coarsest choice with two labels, should none fit.
+    let mut fallback = Vec::new();
+    let mut base = 10f64.powf((span / 20.0).log10().floor());
+    while base <= 10.0 * span {
+        for m in [1.0, 2.0, 5.0] {
+            let s = m * base;
+            let all: Vec<f64> = ((lo / s).ceil() as i64..=(hi / s).floor() as i64)
+                .map(|k| k as f64 * s)
+                .collect();
+            let ends: Vec<f64> = all.iter().copied().step_by(2).collect();
+            for v in [all.clone(), ends] {
+                if fits(&v) && (v.len() == all.len() || all.len() == 3) {
+                    return v;
+                }
+                if v.len() >= 2 {
+                    fallback = v;
+                }
+            }
+        }
+        base *= 10.0;
+    }
+    fallback
+}
+
+/// The labelled ticks of a panel showing `lo`–`hi` in a `w` × `h` plot with `tick`-size
+/// labels: across, each label as wide as its digits and sign plus a gap; up, 1.8 text heights
+/// apart.
+pub(super) fn tick_labels(lo: DVec2, hi: DVec2, w: f64, h: f64, tick: f64) -> (Vec<f64>, Vec<f64>) {
+    let wide = |v: f64| {
+        let digits = format!("{}", v.abs()).len() as f64;
+        (digits * 0.64 + if v < 0.0 { 0.84 } else { 0.0 }) * tick + 0.4 * tick
+    };
+    (
+        ticks_fitting(lo.x, hi.x, w, wide),
+        ticks_fitting(lo.y, hi.y, h, |_| 1.8 * tick),
+    )
 }
