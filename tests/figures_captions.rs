@@ -680,8 +680,6 @@ fn lloyd2006_worst_case() {
             ("1000", N::Given("f/n")),
             ("30", N::Given("θ")),
             ("2", N::Given("the sweep's step in degrees")),
-            ("7", N::Given("Fig. 7")),
-            ("1", N::Given("Fig. 7's step in degrees")),
             (
                 "1.998",
                 N::Measured("ZP's worst case over Eq 20's value behind"),
@@ -696,6 +694,21 @@ fn lloyd2006_worst_case() {
             ),
             ("1", N::Measured("FP+ZP+W's worst case is its value behind")),
             (
+                "2",
+                N::Measured(
+                    "ZP's worst direction, el = az = 2°, checked by hand \
+                     (captions_say_where_the_worst_cases_lie, src/plot/worst.rs)",
+                ),
+            ),
+            (
+                "45",
+                N::Given("the map's turn against the frustum's square outline"),
+            ),
+            (
+                "1.000",
+                N::Measured("ZP's ratio exactly behind, by hand 1 (captions_say_where_...)"),
+            ),
+            (
                 "1.055",
                 N::Measured(
                     "ZP's least worst case with minimum-area maps (k = 8), recomputed by a scan \
@@ -706,6 +719,16 @@ fn lloyd2006_worst_case() {
                 "1.224",
                 N::Measured("the same at k = 1 (the fifth review's independent 1.224)"),
             ),
+            (
+                "10",
+                N::Given("the elevation above behind where ZP+W is compared"),
+            ),
+            ("1", N::Given("k = 1")),
+            (
+                "4.2",
+                N::Measured("ZP+W's S̄ over ZP's there, from the sweeps (sixth review read 4.3)"),
+            ),
+            ("2", N::Given("k ≥ 2")),
         ],
     );
 }

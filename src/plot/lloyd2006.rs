@@ -536,3 +536,7 @@ mod forms_tests;
 #[cfg(test)]
 #[path = "lloyd2006_review5_tests.rs"]
 mod review5_tests;
+
+#[cfg(test)]
+#[path = "lloyd2006_review6_tests.rs"]
+mod review6_tests;

@@ -1,18 +1,19 @@
 //! Lloyd et al. 2006 Fig 12: the storage factor S̄ of ZP, ZP+W and FP+ZP+W against the number
 //! of shadow maps, with the light overhead and behind (f/n = 1000, θ = 30°).
 
-use super::super::chart::{
-    fmt_plain, Axis, Charts, LineChart, Look, Marker, Note, Series, PALETTE, SHARED,
-};
+use super::super::chart::{fmt_plain, Axis, Charts, LineChart, Look, Note, Series, PALETTE};
 use super::super::keyed::{Keyed, SINGLE_HEIGHT};
 use super::super::{Column, Fail};
-use super::{sci, unjoined, SCHEME_WORDS, SINGLE_S_AXIS, THETA_DEG};
+use super::{sci, unjoined, SCHEME_WORDS, THETA_DEG};
 use crate::analytic::partition::{scheme_storage_factor, shadow_map_count, Scheme, SchemeLight};
 use crate::ViewFrustum;
 
-/// The top of Fig 12 (b)'s note on the 17-map pair, in S̄: under ZP's curve (37.56 at its
-/// least), above FP+ZP+W's 21-map hexagon (30.8).
-const FIG12_NOTE_TOP: f64 = 35.5;
+/// Where Fig 12 (b)'s note on the 17-map pair starts: its left end (maps) and its top (S̄), in
+/// the empty upper right above both curves (ZP's rises to 41.9 at 23 maps), right of
+/// FP+ZP+W's 13-map marker (55.0); and the step between its lines, in S̄.
+const FIG12_NOTE_LEFT: f64 = 15.0;
+const FIG12_NOTE_TOP: f64 = 57.0;
+const FIG12_NOTE_STEP: f64 = 2.2;
 
 /// The depth ratio f/n of Fig 12.
 pub(in crate::plot) const FIG12_RATIO: f64 = 1000.0;
@@ -54,22 +55,31 @@ pub(in crate::plot) fn fig12() -> Result<Keyed, Fail> {
     let nb = |t: &str| t.replace(' ', "\u{a0}");
     let (a, zoom) = fig12_panels(&view, Column::Double)?;
     let mut zoom = zoom;
-    // Under the 17-map pair it states, inside the plot, each value with its scheme (the bare
-    // figure has no caption to say which is which): two lines, so that the second ends left
-    // of the 21-map hexagon.
-    for (at, text) in [
-        (FIG12_NOTE_TOP, format!("{j4} maps: FP+ZP+W {fp4:.2}")),
-        (FIG12_NOTE_TOP - 1.9, format!("ZP = ZP+W {zp4:.2}")),
+    // The 17-map pair's values, inside the plot (the bare figure has no caption to say which
+    // is which), each in its scheme's colour, in the empty upper right (sixth review,
+    // R6-lloyd2006-fig12-3: it sat on the gridlines between the points).
+    for (at, text, colour) in [
+        (FIG12_NOTE_TOP, format!("at {j4} maps:"), PALETTE[6]),
+        (
+            FIG12_NOTE_TOP - FIG12_NOTE_STEP,
+            format!("FP+ZP+W {fp4:.2}"),
+            Look::FpZpW.colour(),
+        ),
+        (
+            FIG12_NOTE_TOP - 2.0 * FIG12_NOTE_STEP,
+            format!("ZP = ZP+W {zp4:.2}"),
+            Look::Zp.colour(),
+        ),
     ] {
         zoom.notes.push(Note {
-            at: (11.0, at),
+            at: (FIG12_NOTE_LEFT, at),
             text,
-            colour: PALETTE[6],
+            colour,
         });
     }
     let double = Charts {
         size: (520, 560),
-        title: "Storage factor against the number of shadow maps".into(),
+        title: FIG12_TITLE.into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. {SCHEME_WORDS} FP+ZP+W uses {} \
              maps. Behind, ZP+W equals ZP, and FP+ZP+W's face sub-frusta have {eff} \
@@ -85,12 +95,11 @@ pub(in crate::plot) fn fig12() -> Result<Keyed, Fail> {
         charts: vec![a, zoom],
     };
     let (mut a, _) = fig12_panels(&view, Column::Single)?;
-    a.y.label = SINGLE_S_AXIS.into();
     // One panel: no letter.
     a.title = FIG12_A_TITLE[4..].into();
     let single = Charts {
         size: (Column::Single.width(), SINGLE_HEIGHT),
-        title: "S̄ against the number of maps".into(),
+        title: FIG12_TITLE.into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. {SCHEME_WORDS} FP+ZP+W uses {} \
              maps, its faces behind {}; at {j4} maps {fp4:.2} to ZP's {zp4:.2}.",
@@ -108,31 +117,36 @@ pub(in crate::plot) fn fig12() -> Result<Keyed, Fail> {
     })
 }
 
-/// Fig 12 (a)'s title: it names each light's line style and FP+ZP+W's marker (the fifth
-/// review: "light overhead and behind" needed the key to tell the two families apart).
-const FIG12_A_TITLE: &str = "(a) overhead ▲ solid, behind ⬢ dashed";
+/// Fig 12's title, one in both forms (sixth review, R6-X-5: the two-column form said "storage
+/// factor", the one-column "S̄").
+const FIG12_TITLE: &str = "S̄ against the number of shadow maps";
+
+/// Fig 12 (a)'s title: each light's drawing (the sixth review, R6-lloyd2006-fig12-1/-2: colour
+/// is the scheme, line and marker fill the light).
+const FIG12_A_TITLE: &str = "(a) overhead solid, behind dashed";
 
 /// Fig 12's panels for the page `layout`: (a) every scheme for both lights, its key grouped
 /// by light (two columns, overhead and behind, across two page columns; one column, overhead
 /// first, in one), and (b) the light-behind crossover enlarged.
+///
+/// One rule in both panels (sixth review, R6-lloyd2006-fig12-1/-2): the colour is the scheme's
+/// ([`Look`]), the light is the line and the markers' fill: overhead solid with filled markers,
+/// behind dashed with open ones. Behind, ZP+W equals ZP (a square frustum cannot be warped):
+/// one curve, in ZP's colour, its key "ZP = ZP+W, behind".
 fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineChart), Fail> {
-    // Both lights in one panel, told apart by the title and the key: overhead solid (FP+ZP+W
-    // triangles), behind the dashed ZP = ZP+W line and FP+ZP+W's hexagons (a title "behind
-    // (dashed)" was wrong for the hexagons, the fourth review).
     let mut c = LineChart::new(
         FIG12_A_TITLE,
         Axis::integer("number of shadow maps", 0.0, 40.0),
         // To the data from 2 maps on: 6.5 (ZP+W at 40 maps) to 2000 (ZP behind with 2 maps).
-        Axis::log10("S̄ (texels per image pixel, log scale)", 4.0, 1e4).in_powers(),
+        Axis::log10(FIG12_S_AXIS, 4.0, 1e4).in_powers(),
     );
     let schemes = [
         (Scheme::Zp, "ZP", Look::Zp.colour()),
         (Scheme::ZpW, "ZP+W", Look::ZpW.colour()),
         (Scheme::FpZpW, "FP+ZP+W", Look::FpZpW.colour()),
     ];
-    // Behind, ZP+W equals ZP (a square frustum cannot be warped): one line. The key's order:
-    // entries row by row, so two columns of overhead | behind, or overhead's three above
-    // behind's two.
+    // The key's order: entries row by row, so two columns of overhead | behind, or overhead's
+    // three above behind's two.
     use SchemeLight::{Behind, Overhead};
     let series = match layout {
         Column::Double => {
@@ -161,9 +175,11 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
             .into_iter()
             .find(|s| s.0 == scheme)
             .ok_or_else(|| Fail::Draw(format!("Fig 12 has no {scheme:?}")))?;
-        let light_name = match light {
-            Behind => "behind",
-            Overhead => "overhead",
+        let hollow = light == Behind;
+        let label = match (scheme, light) {
+            (Scheme::Zp, Behind) => "ZP = ZP+W, behind".to_string(),
+            (_, Behind) => format!("{name}, behind"),
+            (_, Overhead) => format!("{name}, overhead"),
         };
         let mut pts = Vec::new();
         for k in 1..=40usize {
@@ -174,52 +190,41 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
             pts.push((maps as f64, scheme_storage_factor(scheme, light, view, k)?));
         }
         let s = if scheme == Scheme::FpZpW {
-            // Defined only at 4k + 1 maps: markers, not joined across the counts between, in
-            // FP+ZP+W's green of Fig 13 and the worst-case figure for both lights: triangles
-            // overhead, hexagons behind.
-            let shape = match light {
-                Overhead => None,
-                Behind => Some(Marker::Hexagon),
-            };
+            // Defined only at 4k + 1 maps: markers, not joined across the counts between,
+            // filled overhead, open behind.
             Series {
                 width: 3,
-                shape,
-                ..Series::line(format!("{name}, {light_name}"), unjoined(&pts), colour)
-                    .with_markers()
+                hollow,
+                ..Series::line(label, unjoined(&pts), colour).with_markers()
             }
-        } else if light == Behind {
-            // One curve for two schemes, in the neutral colour of shared curves, dashed and
-            // without markers, as in (b): its key is a line sample.
-            c.series.push(Series {
-                label: None,
-                ..Series::line("", pts, SHARED).dashed()
-            });
-            Series::line("ZP = ZP+W, behind", Vec::new(), SHARED).reference()
         } else {
             // Every count: a line, with a few markers along it (not one per count), at counts
-            // 4k + 3 ([`FIG12_ZP_MARKS`]), two counts from every FP+ZP+W triangle at 4k + 1
+            // 4k + 3 ([`FIG12_ZP_MARKS`]), two counts from every FP+ZP+W marker at 4k + 1
             // (the fifth review: ZP's circle at 36 lay under FP+ZP+W's triangle at 37).
-            let counts: &[f64] = if scheme == Scheme::Zp {
-                &FIG12_ZP_MARKS
-            } else {
-                &FIG12_ZP_W_MARKS
+            let counts: &[f64] = match (scheme, light) {
+                (Scheme::Zp, Overhead) => &FIG12_ZP_MARKS,
+                (_, Behind) => &FIG12_BEHIND_MARKS,
+                _ => &FIG12_ZP_W_MARKS,
             };
             let marks: Vec<(f64, f64)> = pts
                 .iter()
                 .copied()
                 .filter(|p| counts.contains(&p.0))
                 .collect();
+            let line = Series::line("", pts, colour);
             c.series.push(Series {
                 label: None,
-                ..Series::line("", pts, colour)
+                ..if hollow { line.dashed() } else { line }
             });
             c.series.push(Series {
                 label: None,
+                hollow,
                 ..Series::line("", unjoined(&marks), colour).with_markers()
             });
             Series {
                 sample: true,
-                ..Series::line(format!("{name}, {light_name}"), Vec::new(), colour)
+                hollow,
+                ..Series::line(label, Vec::new(), colour)
             }
         };
         c.series.push(match light {
@@ -227,16 +232,17 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
             Behind => s.dashed(),
         });
     }
-    // (b): the light-behind crossover enlarged, ZP (equal to ZP+W there) against FP+ZP+W.
+    // (b): the light-behind crossover enlarged, ZP (equal to ZP+W there) against FP+ZP+W, drawn
+    // as in (a).
     let mut zoom = LineChart::new(
         "(b) behind, at the crossover",
         // Padded by half a count, so that the markers at 11 and 23 maps are whole.
         Axis::integer("number of shadow maps", 10.5, 23.5),
         // The data's range (30.8 at 21 maps to 55.0 at 13), a little padded.
-        Axis::linear("S̄ (texels per image pixel)", 28.0, 58.0),
+        Axis::linear(FIG12_S_AXIS, 28.0, 58.0),
     );
     for (scheme, name, colour) in [
-        (Scheme::Zp, "ZP = ZP+W, behind", SHARED),
+        (Scheme::Zp, "ZP = ZP+W, behind", Look::Zp.colour()),
         (Scheme::FpZpW, "FP+ZP+W, behind", Look::FpZpW.colour()),
     ] {
         let mut pts = Vec::new();
@@ -247,25 +253,44 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
             }
         }
         if scheme == Scheme::FpZpW {
-            let s = Series::line(name, unjoined(&pts), colour)
-                .dashed()
-                .with_markers();
             zoom.series.push(Series {
                 width: 3,
-                shape: Some(Marker::Hexagon),
-                ..s
+                hollow: true,
+                ..Series::line(name, unjoined(&pts), colour)
+                    .dashed()
+                    .with_markers()
             });
         } else {
-            // ZP without markers, as in (a) (at 17 maps its marker lay under FP+ZP+W's, 38.32
-            // against 37.99): the values are written.
+            // ZP's open markers at the counts between FP+ZP+W's (at 17 maps one lay under
+            // FP+ZP+W's, 38.32 against 37.99): the values there are written.
+            let marks: Vec<(f64, f64)> = pts
+                .iter()
+                .copied()
+                .filter(|p| FIG12_ZOOM_ZP_MARKS.contains(&p.0))
+                .collect();
             zoom.series.push(Series {
                 label: None,
                 ..Series::line(name, pts, colour).dashed()
+            });
+            zoom.series.push(Series {
+                label: None,
+                hollow: true,
+                ..Series::line("", unjoined(&marks), colour).with_markers()
             });
         }
     }
     Ok((c, zoom))
 }
+
+/// Fig 12's S̄ axis, one name in both panels and both forms.
+const FIG12_S_AXIS: &str = "S̄ (texels per image pixel)";
+
+/// The counts of maps where (a)'s ZP = ZP+W behind line carries its open markers: 4k + 3, away
+/// from ZP's overhead markers and FP+ZP+W's at 4k + 1.
+const FIG12_BEHIND_MARKS: [f64; 3] = [11.0, 23.0, 35.0];
+
+/// The counts where (b)'s ZP = ZP+W line carries its open markers: between FP+ZP+W's.
+const FIG12_ZOOM_ZP_MARKS: [f64; 4] = [11.0, 15.0, 19.0, 23.0];
 
 /// The counts of maps where Fig 12 (a)'s ZP and ZP+W overhead lines carry their markers:
 /// 4k + 3, two counts from FP+ZP+W's triangles at 4k + 1, ZP's and ZP+W's alternating (and no

@@ -314,7 +314,8 @@ fn fig12_zp_markers_clear_of_fp_zp_w() {
             m.iter().filter(|m| m.0 == hex(c)).map(|m| m.1).collect()
         };
         let fp = of(Look::FpZpW.colour());
-        assert!(fp.len() >= 10, "{column:?}: {} FP+ZP+W markers", fp.len());
+        // The filled ones, overhead (nine, 5 to 37 maps; behind they are open, sixth review).
+        assert!(fp.len() >= 9, "{column:?}: {} FP+ZP+W markers", fp.len());
         for p in of(zp).into_iter().chain(of(zpw)) {
             for q in &fp {
                 let d = (p.0 - q.0).hypot(p.1 - q.1);

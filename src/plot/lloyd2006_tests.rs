@@ -178,18 +178,24 @@ fn fig12_reaches_the_light_behind_crossover() {
     let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
     let series = &fig.page.charts[0].series;
     // The drawn lines (the keys are samples without points; the markers separate series).
-    let find = |c: RGBColor, label: Option<&str>| {
+    // Behind drawn dashed in the scheme's colour (sixth review).
+    let find = |c: RGBColor, label: Option<&str>, dash: crate::plot::chart::Dash| {
         series
             .iter()
             .position(|s| {
-                s.colour == c && s.label.as_deref() == label && !s.sample && !s.points.is_empty()
+                s.colour == c
+                    && s.label.as_deref() == label
+                    && !s.sample
+                    && !s.points.is_empty()
+                    && s.dash == dash
             })
             .unwrap()
     };
-    let zo = find(Look::Zp.colour(), None);
-    let zb = find(SHARED, None);
-    let zwo = find(Look::ZpW.colour(), None);
-    let fb = find(Look::FpZpW.colour(), Some("FP+ZP+W, behind"));
+    use crate::plot::chart::Dash::{Dashed, Solid};
+    let zo = find(Look::Zp.colour(), None, Solid);
+    let zb = find(Look::Zp.colour(), None, Dashed);
+    let zwo = find(Look::ZpW.colour(), None, Solid);
+    let fb = find(Look::FpZpW.colour(), Some("FP+ZP+W, behind"), Dashed);
     let at = |s: usize, maps: f64| {
         series[s]
             .points
@@ -239,10 +245,17 @@ fn fig12_one_entry_for_the_coincident_lines_and_a_visible_crossover() {
         assert_eq!(behind, key, "{}", chart.title);
         assert!(chart.series.iter().all(|s| s.width <= 3), "{}", chart.title);
     }
+    // ZP's open markers in (b) only between FP+ZP+W's counts 4k + 1 (sixth review: ZP's
+    // curve behind in its own colour, dashed with open markers).
     let zoom = &fig.page.charts[1];
     for s in &zoom.series {
-        let zp_line = s.colour == PALETTE[0] && !s.points.is_empty();
-        assert!(!(zp_line && (s.markers || s.label.is_some())), "{s:?}");
+        let zp = s.colour == Look::Zp.colour() && !s.points.is_empty();
+        if zp && s.markers {
+            for p in s.points.iter().filter(|p| p.1.is_finite()) {
+                assert_ne!((p.0 as usize) % 4, 1, "ZP marker at {} maps", p.0);
+            }
+        }
+        assert!(!(zp && s.label.is_some()), "{s:?}");
     }
     let notes: String = zoom.notes.iter().map(|n| n.text.as_str()).collect();
     assert!(
@@ -270,9 +283,10 @@ fn fig12_enlarges_the_crossover() {
             .1
     };
     assert!((at(0, 17.0) - 17.0 * r.powf(2.0 / 17.0)).abs() < 1e-9);
-    // Series 0 is ZP's line, 1 FP+ZP+W.
-    assert!((at(1, 17.0) - (8.0 * (r.powf(0.25) - 1.0) + 1.0)).abs() < 1e-9);
-    assert!(at(0, 13.0) < at(1, 13.0) && at(0, 17.0) > at(1, 17.0));
+    // Series 0 is ZP's line (1 its open markers), the last FP+ZP+W.
+    let fp = zoom.series.len() - 1;
+    assert!((at(fp, 17.0) - (8.0 * (r.powf(0.25) - 1.0) + 1.0)).abs() < 1e-9);
+    assert!(at(0, 13.0) < at(fp, 13.0) && at(0, 17.0) > at(fp, 17.0));
     for s in &zoom.series {
         for &(_, v) in s.points.iter().filter(|p| p.1.is_finite()) {
             assert!(v > zoom.y.min && v < zoom.y.max, "{v} outside the window");
@@ -478,26 +492,23 @@ fn fig5_no_markers_where_the_curves_meet() {
 }
 
 /// Fig 12 gives FP+ZP+W the colour the worst-case figure and Fig 13 give it (issue 35: behind,
-/// it was olive): Okabe–Ito's bluish green #009E73 for every FP+ZP+W series of both panels, the
-/// two lights told apart by shape instead (triangles overhead, hexagons behind).
+/// it was olive), [`Look::FpZpW`], for every FP+ZP+W series of both panels, the two lights
+/// told apart by the markers' fill (sixth review: filled overhead, open behind), one shape.
 #[test]
-fn fig12_fp_zp_w_is_green_for_both_lights() {
-    use crate::plot::chart::Marker;
+fn fig12_fp_zp_w_has_its_colour_for_both_lights() {
     let fig = fig12().map_err(|e| e.named("lloyd2006-fig12")).unwrap();
-    let mut shapes = Vec::new();
+    let mut fills = Vec::new();
     for chart in &fig.page.charts {
         for s in &chart.series {
             if s.label.as_deref().is_some_and(|l| l.starts_with("FP+ZP+W")) {
-                assert_eq!(s.colour, RGBColor(0, 158, 115), "{:?}", s.label);
-                shapes.push(s.shape.unwrap_or_else(|| Marker::of(s.colour)));
+                assert_eq!(s.colour, Look::FpZpW.colour(), "{:?}", s.label);
+                assert_eq!(s.shape, None, "{:?}", s.label);
+                fills.push(s.hollow);
             }
         }
     }
     // (a) behind and overhead (the key's order), (b) behind.
-    assert_eq!(
-        shapes,
-        [Marker::Hexagon, Marker::TriangleUp, Marker::Hexagon]
-    );
+    assert_eq!(fills, [true, false, true]);
 }
 
 /// Fig 12 (issue 35 review): (a)'s y axis spans the data from 2 maps on (it ran to 10⁶ for

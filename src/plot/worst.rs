@@ -9,7 +9,7 @@
 pub(super) mod min_area;
 
 use super::chart::{fmt_plain, Axis, Charts, LineChart, Look, Series, SHARED};
-use super::grids::FIG7_ELEVATIONS;
+
 use super::keyed::{Keyed, SINGLE_HEIGHT};
 use super::{Column, Fail};
 use crate::analytic::partition::{scheme_storage_factor, Scheme, SchemeLight};
@@ -43,7 +43,8 @@ const BAND: RGBColor = RGBColor(225, 225, 225);
 pub(super) fn worst_case() -> Result<Keyed, Fail> {
     let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians())?;
     let grid = SweepGrid::new(ELEVATIONS, AZIMUTHS)?;
-    let k_axis = Axis::integer("number of z-partitions k", 1.0, 8.0);
+    // FP+ZP+W's k is per face, 4k + 1 maps (sixth review, R6-lloyd2006-worst-case-6).
+    let k_axis = Axis::integer(K_AXIS, 1.0, 8.0);
     let mut abs = LineChart::new(
         // No line style in the title (the fifth review: "behind (dashed)" was wrong for
         // FP+ZP+W, whose dashed behind curve lies under its solid worst case): the key tells them
@@ -59,13 +60,19 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
         Axis::log10("ratio (log scale)", 0.8, 6.0).labelled_at(&[1.0, 2.0, 3.0, 5.0]),
     );
     let mut extremes = Vec::new();
+    // Each scheme's sweep at k = 1: where the worst case lies, and ZP+W against ZP there.
+    let mut first = Vec::new();
     for ((name, scheme, rule, partition), look) in SCHEMES.into_iter().zip(LOOKS) {
         let colour = look.colour();
         let mut worst = Vec::new();
         let mut behind = Vec::new();
         let mut r = Vec::new();
         for k in KS {
-            let w = sweep(&view, rule, partition, k, grid)?.max();
+            let swept = sweep(&view, rule, partition, k, grid)?;
+            let w = swept.max();
+            if k == 1 {
+                first.push(swept);
+            }
             let b = scheme_storage_factor(scheme, SchemeLight::Behind, &view, k)?;
             worst.push((k as f64, w));
             behind.push((k as f64, b));
@@ -77,12 +84,10 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
         extremes.push(ratio_range(name, lo, hi));
         // Behind, ZP+W equals ZP (drawn over it) and FP+ZP+W's worst case is its value
         // behind: one key entry each for what shows. ZP's worst case lies under ZP+W's for
-        // k ≥ 2 (1.998 against 2.02 to 2.2 times the same value behind): its key says so.
+        // k ≥ 2 (1.998 against 2.02 to 2.2 times the same value behind): the caption says so
+        // (sixth review, R6-lloyd2006-worst-case-3: the key said it).
         let (worst_label, behind_label) = match scheme {
-            Scheme::Zp => (
-                format!("{name}, worst (≈ ZP+W's for k\u{a0}≥\u{a0}2)"),
-                None,
-            ),
+            Scheme::Zp => (format!("{name}, worst"), None),
             Scheme::ZpW => (
                 format!("{name}, worst"),
                 Some("ZP = ZP+W, behind (Eq 20)".to_string()),
@@ -128,23 +133,18 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
         min_area = (min_area.0.min(r), min_area.1.max(r));
     }
     let min_area = ratio_range("ZP", min_area.0, min_area.1);
-    let every = (FIG7_ELEVATIONS - 1) / (ELEVATIONS - 1);
+    let where_ = Worst::of(&first, &view, grid)?;
     let caption = format!(
-        "Lloyd et al. 2006, §5.3 (no figure): worst S̄ over light directions within 2–3× S̄ \
-         behind (Eq 20, 21). ZP: z-partitions, W: warped, FP: face partitions; \
-         f/n\u{a0}=\u{a0}{ratio_fn}, θ\u{a0}=\u{a0}{theta:.0}°, lights {step}° apart (every \
-         {nth} direction of Fig. 7's {fine}° grid): {}. {ORIENTATION}; minimum-area ones: \
-         {min_area}.",
+        "Lloyd et al. 2006, §5.3, not a figure of the paper: worst S̄ over light directions \
+         within 2–3× S̄ behind (Eq 20, 21). f/n\u{a0}=\u{a0}{ratio_fn}, \
+         θ\u{a0}=\u{a0}{theta:.0}°, lights {step}° apart: {}. {} ({min_area} with minimum-area maps). {} For k\u{a0}≥\u{a0}2 \
+         ZP's worst (open) lies under ZP+W's.",
         extremes.join("; "),
+        where_.orientation(),
+        where_.lispsm(),
         ratio_fn = view.far() / view.near(),
         theta = view.half_fov().to_degrees(),
         step = 90 / (ELEVATIONS - 1),
-        nth = if every == 2 {
-            "second".to_string()
-        } else {
-            format!("{every}th")
-        },
-        fine = 90 / (FIG7_ELEVATIONS - 1),
     );
     // One column: (b) alone, the claim's test, with a key of its own (short names; the band's
     // swatch), and the ranges in the caption.
@@ -165,13 +165,16 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
         size: (Column::Single.width(), SINGLE_HEIGHT),
         title: "Worst-case S̄ over S̄ behind".into(),
         caption: vec![format!(
-            "Lloyd et al. 2006, §5.3: worst S̄ ≤ 2–3× S̄ behind (Eq 20). \
-             f/n\u{a0}=\u{a0}{}, θ\u{a0}=\u{a0}{:.0}°, {}° steps: {}. \
-             {ORIENTATION_SHORT}; minimum-area: {min_area}.",
+            "Lloyd et al. 2006, §5.3, not a figure of the paper: worst S̄ over light \
+             directions within 2–3× S̄ behind (Eq 20, 21). f/n\u{a0}=\u{a0}{}, \
+             θ\u{a0}=\u{a0}{:.0}°, lights {}° apart: {}. {} ({min_area} with minimum-area \
+             maps). {}",
             view.far() / view.near(),
             view.half_fov().to_degrees(),
             90 / (ELEVATIONS - 1),
             extremes.join("; "),
+            where_.orientation(),
+            where_.lispsm(),
         )],
         charts: vec![ratio_single],
     };
@@ -190,11 +193,80 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
 }
 
 /// The orientation rule of the unwarped maps, one clause of both captions (fifth review,
-/// §4.16.1): ZP's worst case depends on it (its minimum-area counterpart follows it in the
-/// caption, computed).
-const ORIENTATION: &str = "Unwarped maps have a side along the projected view direction";
-/// [`ORIENTATION`] in the one-column caption.
-const ORIENTATION_SHORT: &str = "View-axis maps";
+/// §4.16.1; sixth review, R6-lloyd2006-worst-case-5: with where it puts ZP's worst case).
+const ORIENTATION: &str = "a map side kept along the projected view direction";
+
+/// The x axis of both panels: FP+ZP+W's k is per face, 4k + 1 maps.
+const K_AXIS: &str = "k (FP+ZP+W: 4k + 1 maps)";
+
+/// Where the worst cases at k = 1 lie (sixth review, R6-lloyd2006-worst-case-1/-5), read from
+/// the sweeps: ZP's largest S̄ and its direction, ZP's ratio exactly behind, and ZP+W's S̄ over
+/// ZP's 10° above behind (in the view's vertical plane).
+pub(super) struct Worst {
+    /// ZP's worst direction, elevation and azimuth in whole degrees (azimuth folded to 0–180).
+    pub zp_at: (f64, f64),
+    /// ZP's S̄ exactly behind over Eq 20's value there.
+    pub zp_behind: f64,
+    /// ZP+W's S̄ over ZP's at elevation [`LISPSM_EL`]°, azimuth 0.
+    pub lispsm_over_zp: f64,
+}
+
+/// The elevation (degrees) above behind where the caption compares ZP+W with ZP.
+pub(super) const LISPSM_EL: f64 = 10.0;
+
+impl Worst {
+    /// From the k = 1 sweeps of ZP and ZP+W (in [`SCHEMES`]' order) on `grid`.
+    fn of(
+        first: &[crate::scheme::sweep::Sweep],
+        view: &ViewFrustum,
+        grid: SweepGrid,
+    ) -> Result<Self, Fail> {
+        let (zp, zpw) = match first {
+            [zp, zpw, ..] => (zp, zpw),
+            _ => return Err(Fail::Draw("the worst-case figure swept no k = 1".into())),
+        };
+        let (mut at, mut top) = ((0.0, 0.0), 0.0);
+        for (el, az, v) in zp.rows() {
+            if v > top {
+                (at, top) = ((el.to_degrees().round(), az.to_degrees().round()), v);
+            }
+        }
+        let az = if at.1 > 180.0 { 360.0 - at.1 } else { at.1 };
+        let behind = scheme_storage_factor(Scheme::Zp, SchemeLight::Behind, view, 1)?;
+        // Row i is elevation 2i° (both ends of [0, 90°]), column 0 azimuth 0: behind.
+        let row = (LISPSM_EL / (90.0 / (grid.elevations() - 1) as f64)).round() as usize;
+        let n = row * grid.azimuths();
+        Ok(Self {
+            zp_at: (at.0, az),
+            zp_behind: zp.storage_factor[0] / behind,
+            lispsm_over_zp: zpw.storage_factor[n] / zp.storage_factor[n],
+        })
+    }
+
+    /// The orientation rule's clause: where ZP's worst case lies and why.
+    fn orientation(&self) -> String {
+        let (el, az) = self.zp_at;
+        let at = if el == az {
+            format!("el\u{a0}=\u{a0}az\u{a0}=\u{a0}{el}°")
+        } else {
+            format!("el\u{a0}{el}°, az\u{a0}{az}°")
+        };
+        format!(
+            "ZP's worst lies at {at}: {ORIENTATION} turns 45° on the frustum; exactly behind \
+             {:.3}",
+            self.zp_behind
+        )
+    }
+
+    /// The LiSPSM clause: why ZP+W's worst at k = 1 exceeds ZP's.
+    fn lispsm(&self) -> String {
+        format!(
+            "LiSPSM's n′ does not revert for γ\u{a0}<\u{a0}θ: {LISPSM_EL:.0}° above behind, \
+             ZP+W's S̄ at k\u{a0}=\u{a0}1 is {:.1}× ZP's.",
+            self.lispsm_over_zp
+        )
+    }
+}
 
 /// A scheme's range of ratios over k as the caption writes it: "ZP+W 1.874 to 4.338", or, where
 /// both ends print the same, "ZP 1.949 at every k" (never a range with equal ends).
@@ -438,7 +510,7 @@ mod tests {
 
     /// The worst-case caption agrees with Fig 7's (issue 35 review: it said "2° apart (as in
     /// Fig. 7)" while Fig 7 says 1°): the grid it names as Fig 7's has Fig 7's step, read from
-    /// Fig 7's own caption ("N° apart"), and its own step is a whole multiple of it.
+    /// Fig 7's own caption ("a N° grid"), and its own step is a whole multiple of it.
     #[test]
     fn caption_names_fig7s_grid_as_fig7_does() {
         let fig = worst_case()
@@ -459,11 +531,9 @@ mod tests {
         };
         let own = fig.page.caption.join(" ");
         let theirs = fig7.caption_text();
-        let fig7_step = degrees_before(&theirs, "° apart");
-        assert_eq!(degrees_before(&own, "° grid"), fig7_step, "{own}");
+        let fig7_step = degrees_before(&theirs, "° grid");
         let step = degrees_before(&own, "° apart");
         assert!(step > fig7_step && (step / fig7_step).fract() == 0.0);
-        assert!(own.contains("every second direction of Fig. 7's"), "{own}");
     }
 
     /// One key for both panels (issue 35 review: each panel had its own), and it says that
@@ -487,8 +557,14 @@ mod tests {
             assert_eq!(n, 1, "{scheme}: {n} key entries");
         }
         let abs = &fig.page.charts[0].series;
-        let zp = abs[0].label.as_deref().unwrap();
-        assert!(zp.contains("ZP+W") && zp.contains('2'), "{zp}");
+        // The key names ZP's worst case alone; the caption says it lies under ZP+W's (sixth
+        // review, R6-lloyd2006-worst-case-3).
+        assert_eq!(abs[0].label.as_deref(), Some("ZP, worst"));
+        let caption = fig.page.caption.join(" ").replace('\u{a0}', " ");
+        assert!(
+            caption.contains("For k ≥ 2 ZP's worst (open) lies under ZP+W's"),
+            "{caption}"
+        );
         for (z, w) in abs[0].points.iter().zip(&abs[2].points).skip(1) {
             let r = z.1 / w.1;
             assert!((0.85..=1.0).contains(&r), "k = {}: {r}", z.0);
@@ -518,7 +594,7 @@ mod tests {
         let want = format!("ZP {} to {}", fmt_plain(lo), fmt_plain(hi));
         for (form, caption, rule) in [
             ("two columns", &text, ORIENTATION),
-            ("one column", &single, ORIENTATION_SHORT),
+            ("one column", &single, ORIENTATION),
         ] {
             assert!(
                 caption.contains(rule),
@@ -528,11 +604,48 @@ mod tests {
                 .find("minimum-area")
                 .unwrap_or_else(|| panic!("{form}: {caption}"));
             assert!(
-                caption[at..].contains(&want),
+                caption[..at].contains(&want),
                 "{form}: want {want:?} in {caption}"
             );
         }
         // The crate's own rule gives 1.998 at every k (the sweep of the figure's data).
         assert!(text.contains("ZP 1.998 at every k"), "{text}");
+    }
+
+    /// Sixth review, R6-lloyd2006-worst-case-1/-5: both captions say where ZP's worst case lies
+    /// and what it is exactly behind, and how much worse ZP+W is 10° above behind at k = 1; the
+    /// numbers are the sweep's, checked here by hand: ZP's view-aligned rectangle at
+    /// el = az = 2° over Eq 20's 10⁶ is the caption's ratio 1.998 (min_area's by-hand map of
+    /// the frustum's corners), and exactly behind it is 1 (the frustum's square outline).
+    #[test]
+    fn captions_say_where_the_worst_cases_lie() {
+        use crate::scheme::sweep::light_dir_from_angles;
+        let fig = worst_case()
+            .map_err(|e| e.named("lloyd2006-worst-case"))
+            .unwrap();
+        let two = 2f64.to_radians();
+        let at = min_area::tests::zp_by_hand(1, light_dir_from_angles(two, two), false) / 1e6;
+        assert!((at - 1.998).abs() < 5e-4, "{at}");
+        let behind = min_area::tests::zp_by_hand(1, light_dir_from_angles(0.0, 0.0), false) / 1e6;
+        assert!((behind - 1.0).abs() < 5e-4, "{behind}");
+        for caption in [
+            fig.page.caption.join(" "),
+            fig.single.as_ref().unwrap().page.caption.join(" "),
+        ] {
+            let c = caption.replace('\u{a0}', " ");
+            assert!(c.contains("ZP's worst lies at el = az = 2°"), "{c}");
+            assert!(c.contains("exactly behind 1.000"), "{c}");
+            assert!(c.contains("not a figure of the paper"), "{c}");
+            assert!(c.contains("(Eq 20, 21)"), "{c}");
+            let tail = c
+                .split("10° above behind, ZP+W's S̄ at k = 1 is ")
+                .nth(1)
+                .unwrap_or_else(|| panic!("{c}"));
+            let x: f64 = tail.split('×').next().unwrap().parse().unwrap();
+            // By Fig. 7's LiSPSM disc (the sixth review read 4.3× off it): between 3 and 5.
+            assert!((3.0..5.0).contains(&x), "{x}");
+        }
+        // The x axis names FP+ZP+W's maps (R6-lloyd2006-worst-case-6).
+        assert!(fig.page.charts[0].x.label.contains("4k + 1 maps"));
     }
 }
