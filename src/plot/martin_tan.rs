@@ -486,7 +486,11 @@ mod tests {
         let fig = fig6().map_err(|e| e.named("martin-tan-fig6")).unwrap();
         assert!(fig.profile.x.label.contains("elevation"));
         assert!(fig.caption.join(" ").contains("90° overhead"));
-        assert!(fig.caption.join(" ").contains("elevation 0° behind"));
+        // The x axis names the elevation; the caption where it is 0 and 90.
+        assert!(fig
+            .caption
+            .join(" ")
+            .contains("(0° behind, 90° overhead, 0° in front)"));
         assert!(fig.single_caption.contains("90° overhead"));
         let svg = svg_in(&fig, Column::Single);
         let all = texts(&svg);
