@@ -195,9 +195,10 @@ pub(super) fn fig3_at(el_deg: f64, az_deg: f64) -> Result<Fig3, Fail> {
 /// region apart by dash where their greys meet.
 const EDGE: RGBColor = RGBColor(120, 120, 120);
 /// The hull C: a sand no scheme has (the fifth review, X5: PALETTE's sky blue was read as
-/// PSM/ZP's blue), filled at [`HULL_MIX`].
-const HULL: RGBColor = RGBColor(200, 170, 110);
-const HULL_MIX: f64 = 0.45;
+/// PSM/ZP's blue), filled opaque at CIE L* 79.8 (the sixth review, R6-martin-tan-fig3-3: at
+/// 45 % over white, L* 88.5 and 1.35 : 1, it nearly vanished in greyscale).
+const HULL: RGBColor = RGBColor(216, 196, 152);
+const HULL_MIX: f64 = 1.0;
 /// The focus region: dark wine, 2 units wide in every panel, so that in greyscale it stands
 /// out from the light hull C it lies on (review 3: a thin pink line on light blue).
 const FOCUS_C: RGBColor = RGBColor(136, 34, 85);

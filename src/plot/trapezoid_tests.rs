@@ -358,7 +358,13 @@ fn maps_on_the_unit_square_focus_pointed_to_and_hull_not_blue() {
         // The hull: the filled polygons in its colour (panel (a), the inset, (b), (c)).
         let fills: Vec<&str> = svg
             .lines()
-            .filter(|l| l.starts_with("<polygon") && l.contains("opacity=\"0.45\""))
+            .filter(|l| {
+                l.starts_with("<polygon")
+                    && l.contains(&format!(
+                        "fill=\"#{:02X}{:02X}{:02X}\"",
+                        HULL.0, HULL.1, HULL.2
+                    ))
+            })
             .filter_map(|l| {
                 let at = l.find("fill=\"").unwrap() + 6;
                 l.get(at..at + 7)
@@ -368,6 +374,55 @@ fn maps_on_the_unit_square_focus_pointed_to_and_hull_not_blue() {
         for f in fills {
             let apart = (hue(f) - hue("#0072B2")).abs();
             assert!(apart.min(360.0 - apart) >= 90.0, "{column:?}: hull {f}");
+        }
+    }
+}
+
+/// The sixth review (R6-martin-tan-fig3-3): the hull C's fill, as printed on white (its
+/// colour mixed with white by its opacity), has CIE L* between 75 and 82 (it was #C8AA6E at
+/// 45 %, L* 88.5: in greyscale it nearly vanished), in (a), its inset, (b) and (c), in both
+/// layouts. L* by the CIE formula from the sRGB value, computed here.
+#[test]
+fn hull_fill_prints_at_l_star_about_80() {
+    use super::super::hemisphere::svg_in;
+    use super::super::Column;
+    let fig = fig3().map_err(|e| e.named("martin-tan-fig3")).unwrap();
+    let lin = |c: f64| {
+        let c = c / 255.0;
+        if c <= 0.04045 {
+            c / 12.92
+        } else {
+            ((c + 0.055) / 1.055).powf(2.4)
+        }
+    };
+    let l_star = |rgb: [f64; 3]| {
+        let y = 0.2126 * lin(rgb[0]) + 0.7152 * lin(rgb[1]) + 0.0722 * lin(rgb[2]);
+        let f = if y > 0.008856 {
+            y.cbrt()
+        } else {
+            7.787 * y + 16.0 / 116.0
+        };
+        116.0 * f - 16.0
+    };
+    for column in [Column::Double, Column::Single] {
+        let svg = svg_in(&fig, column);
+        let fills: Vec<f64> = svg
+            .lines()
+            .filter(|l| l.starts_with("<polygon") && l.contains(" fill=\"#"))
+            .filter_map(|l| {
+                let at = l.find(" fill=\"#")? + 8;
+                let hex = &l[at..at + 6];
+                let ch = |i: usize| f64::from(u8::from_str_radix(&hex[i..i + 2], 16).unwrap());
+                let rgb = [ch(0), ch(2), ch(4)];
+                let a = super::super::chart::read_svg::attr(l, "opacity").unwrap_or(1.0);
+                let on_white = rgb.map(|c| a * c + (1.0 - a) * 255.0);
+                // The sand: red over green over blue, blue over 100 (no scheme or key colour).
+                (rgb[0] > rgb[1] && rgb[1] > rgb[2] && rgb[2] > 100.0).then(|| l_star(on_white))
+            })
+            .collect();
+        assert_eq!(fills.len(), 4, "{column:?}: {fills:?}");
+        for l in fills {
+            assert!((75.0..=82.0).contains(&l), "{column:?}: L* {l}");
         }
     }
 }
