@@ -230,8 +230,9 @@ impl Figure for Fig13 {
                 "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind. {SCHEME_WORDS} ZP (= ZP+W) \
                  with j maps against FP+ZP+W with k z-partitions per face, \
                  j\u{a0}=\u{a0}4k\u{a0}+\u{a0}1. Below the dot FP+ZP+W needs less storage; above it, ZP. With {j} maps the dot is \
-                 at f/n\u{a0}=\u{a0}{at:.0}{} Any θ: Eq 20 \
-                 has none; Eq 21's face sub-frusta have tan\u{a0}θ_{{eff}}\u{a0}=\u{a0}{}.",
+                 at f/n\u{a0}=\u{a0}{at:.0}{} The boundary does not depend on θ: Eq 20 has \
+                 no θ, and Eq 21's face sub-frusta always have \
+                 tan\u{a0}θ_{{eff}}\u{a0}=\u{a0}{}.",
                 beyond("; "),
                 fmt_plain(tan_eff),
             ),

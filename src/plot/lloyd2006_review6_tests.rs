@@ -107,3 +107,22 @@ fn fig12_note_in_the_empty_upper_right() {
     }
     assert!(find("at 17 maps:").2 < fifty);
 }
+
+/// Fig 13's caption (R6-lloyd2006-fig13-2): the telegraphic "Any θ: Eq 20 has none" written
+/// out, read from the rendered SVG's caption lines (#323232).
+#[test]
+fn fig13_caption_says_why_theta_does_not_matter() {
+    let svg = svg_of("lloyd2006-fig13", Column::Double, false);
+    let caption: String = texts(&svg)
+        .iter()
+        .filter(|t| t.0.contains("#323232"))
+        .map(|t| t.1.clone())
+        .collect::<Vec<_>>()
+        .join(" ")
+        .replace('\u{a0}', " ");
+    assert!(
+        caption.contains("The boundary does not depend on θ: Eq 20 has no θ, and Eq 21"),
+        "{caption}"
+    );
+    assert!(!caption.contains("Any θ"), "{caption}");
+}
