@@ -83,8 +83,9 @@ fn fig4_labels_sit_by_their_curves_and_inside_the_axis() {
             .iter()
             .find(|t| t.content.starts_with("n′ = 4.162"))
             .unwrap();
-        // The curves: polylines of many points in a colour that is no grey; the ξ = 0 one is
-        // the curve equal on both planes (g(1) = g(f/n) = g₀, Eq 3), whatever its colour.
+        // The curves: polylines in a colour that is no grey (a dashed curve in many pieces);
+        // the ξ = 0 one is the solid curve (one polyline of many points) equal on both planes
+        // (g(1) = g(f/n) = g₀, Eq 3), whatever its colour.
         let curves: Vec<Vec<(f64, f64)>> = svg
             .lines()
             .filter(|l| l.starts_with("<polyline"))
@@ -93,12 +94,11 @@ fn fig4_labels_sit_by_their_curves_and_inside_the_axis() {
                 c.len() == 7 && !(c[1..3] == c[3..5] && c[3..5] == c[5..7])
             })
             .map(points)
-            .filter(|p| p.len() > 20)
+            .filter(|p| p.len() >= 2)
             .collect();
-        assert_eq!(curves.len(), 5, "{form}");
         let flat: Vec<&Vec<(f64, f64)>> = curves
             .iter()
-            .filter(|c| (c[0].1 - c[c.len() - 1].1).abs() < 1.0)
+            .filter(|c| c.len() > 20 && (c[0].1 - c[c.len() - 1].1).abs() < 1.0)
             .collect();
         assert_eq!(flat.len(), 1, "{form}: the ξ = 0 curve");
         let at = |c: &[(f64, f64)], x: f64| {
