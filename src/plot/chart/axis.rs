@@ -301,10 +301,14 @@ impl Axis {
                 let mut light = Vec::new();
                 if (b - 10.0).abs() < 1e-12 && decades <= 6.0 {
                     let lf = (lo - eps).floor() as i64;
-                    let grid: &[u32] = if self.sparse {
+                    // One rule for every figure's log grid (sixth figure review, X-8): the
+                    // decades, and 2 and 5 of each decade too where the axis spans fewer than
+                    // two decades (docs/figures.md); never every 2…9, whose eight lines a
+                    // decade ran together into a grey ground on small plots.
+                    let grid: &[u32] = if self.sparse || decades < 2.0 - 1e-9 {
                         &[2, 5]
                     } else {
-                        &[2, 3, 4, 5, 6, 7, 8, 9]
+                        &[]
                     };
                     for e in lf..=last {
                         for &m in grid {
@@ -614,12 +618,31 @@ mod tests {
         assert!(!light.iter().any(|&l| (l - 3f64.log10()).abs() < 1e-12));
     }
 
+    /// The grid rule by hand: 0.04 … 1.25 (1.49 decades, lloyd2006-fig5) has lines at 0.05,
+    /// 0.1, 0.2, 0.5, 1 (2 and 5 of each decade and the decades: log₁₀ of those), and no 3…9;
+    /// 1 … 100 (exactly two decades) the three decades only.
+    #[test]
+    fn log_grid_is_decades_with_2_and_5_under_two_decades() {
+        let (_, light) = Axis::log10("m", 0.04, 1.25).ticks();
+        let want = [0.05f64, 0.1, 0.2, 0.5, 1.0];
+        for v in want {
+            assert!(light.iter().any(|&l| (l - v.log10()).abs() < 1e-12), "{v}");
+        }
+        assert!(light
+            .iter()
+            .all(|&l| want.iter().any(|v| (l - v.log10()).abs() < 1e-12)));
+        let (bold, light) = Axis::log10("m", 1.0, 100.0).ticks();
+        assert_eq!(light, bold);
+        assert_eq!(light, vec![0.0, 1.0, 2.0]);
+    }
+
     #[test]
     fn log_axis_ticks_are_decades_and_labels_read_as_numbers() {
         let a = Axis::log10("S", 1.0, 1e4);
         let (bold, light) = a.ticks();
         assert_eq!(bold, vec![0.0, 1.0, 2.0, 3.0, 4.0]);
-        assert_eq!(light.len(), 4 * 8 + 5);
+        // Four decades: the grid is the five decades alone.
+        assert_eq!(light, bold);
         // One format per axis: 1 … 10⁴ is all powers.
         assert_eq!(a.tick_label(0.0), "10⁰");
         assert_eq!(a.tick_label(3.0), "10³");
