@@ -15,14 +15,6 @@
 mod figures_style_read;
 use figures_style_read as read;
 use figures_style_read::forms;
-use shadow_aliasing::plot::{Column, Options};
-
-fn single() -> Options {
-    Options {
-        column: Column::Single,
-        ..Options::default()
-    }
-}
 
 /// The view box's height.
 fn height(svg: &str) -> f64 {
@@ -249,50 +241,6 @@ fn barroso_fig7_caption_defines_its_symbols() {
     }
 }
 
-/// §4.13.1–2 in one column: (a)'s plot is taller (its 10⁰ and 10⁴ tick labels 84 units or more
-/// apart; they were 72), the markers at most 9 units across (they were 10–14), none reaches
-/// above (a)'s top frame (the circle at γ ≈ 4° crossed it), and (a)'s grid has at most two
-/// light lines a decade across (2 and 5; there were eight).
-#[test]
-fn barroso_fig7_single_plots_markers_and_grid() {
-    let font = read::Font::dejavu();
-    let svg = read::render_svg("barroso-fig7", &single());
-    let all = read::texts(&font, &svg);
-    let tick = |c: &str| -> f64 {
-        all.iter()
-            .find(|t| t.content == c && t.tag.contains("text-anchor=\"end\""))
-            .unwrap_or_else(|| panic!("no tick {c}"))
-            .y
-    };
-    let (top, bottom) = (tick("104"), tick("100"));
-    assert!(bottom - top >= 84.0, "(a) {top}–{bottom}");
-    let legend_top = read::legend_boxes(&svg)
-        .iter()
-        .map(|b| b[1])
-        .fold(f64::INFINITY, f64::min);
-    for p in read::polygons(&svg) {
-        let b = read::bbox(&p.points);
-        if b[1] >= legend_top {
-            continue;
-        }
-        assert!(
-            b[2] - b[0] <= 9.0 && b[3] - b[1] <= 9.0,
-            "a marker {b:?} of {}",
-            p.colour
-        );
-        assert!(
-            b[1] >= top - 0.5,
-            "a marker {b:?} above (a)'s frame at {top}"
-        );
-    }
-    let light = strokes(&svg, "#EEEEEE")
-        .into_iter()
-        .filter(|(_, p)| {
-            p.len() == 2
-                && (p[0].1 - p[1].1).abs() < 0.01
-                && p[0].1 > top + 0.5
-                && p[0].1 < bottom - 0.5
-        })
-        .count();
-    assert!(light <= 8, "{light} light horizontal grid lines in (a)");
-}
+// §4.13.1–2 (one column: (a)'s plot taller, smaller markers, a sparse grid): the one column
+// now draws (b) alone, its plot at least 110 pt tall (the sixth review, R6-barroso-fig7-2):
+// `key_names_least_max_m_z_and_the_angles_and_one_column_is_b_alone` (src/plot/barroso.rs).

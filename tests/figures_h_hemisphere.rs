@@ -348,9 +348,10 @@ fn overlap(a: &[f64; 4], b: &[f64; 4]) -> bool {
     a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
 }
 
-/// zhang-fig3 in one column gives each row a scale (review: "one 40 tick per row, too few to
-/// read a scale"): nine rows, each with the heights 30 and −30 written left of its first
-/// panel, 30 above −30; no two of these labels, nor a label and a row's turned angle (90°,
+/// zhang-fig3 in one column gives each block a scale (review: "one 40 tick per row, too few to
+/// read a scale"; the sixth review, R6-zhang-fig3-3: ±30 on all nine rows read as one column
+/// of numbers): each block's middle row has the heights 40 and −40 written left of its first
+/// panel, 40 above −40; no two of these labels, nor a label and a row's turned angle (90°,
 /// 60°, 30°), overlap (their boxes measured in DejaVu Sans); and the angle is γ, in the
 /// heading and the caption (review: Zhang's θ clashed with the other figures' half field of
 /// view θ).
@@ -361,13 +362,13 @@ fn zhang_one_column_rows_have_two_ticks_each() {
     let all = texts(&font, &s);
     let ticks: Vec<&Text> = all
         .iter()
-        .filter(|t| !t.rotated && (t.content == "30" || t.content == "−30"))
+        .filter(|t| !t.rotated && (t.content == "40" || t.content == "−40"))
         .collect();
-    let up = ticks.iter().filter(|t| t.content == "30").count();
-    let down = ticks.iter().filter(|t| t.content == "−30").count();
+    let up = ticks.iter().filter(|t| t.content == "40").count();
+    let down = ticks.iter().filter(|t| t.content == "−40").count();
     assert_eq!(
         (up, down),
-        (9, 9),
+        (3, 3),
         "{:?}",
         ticks.iter().map(|t| &t.content).collect::<Vec<_>>()
     );
@@ -376,7 +377,7 @@ fn zhang_one_column_rows_have_two_ticks_each() {
     for pair in by_height.chunks(2) {
         assert_eq!(
             (pair[0].content.as_str(), pair[1].content.as_str()),
-            ("30", "−30")
+            ("40", "−40")
         );
     }
     let angles: Vec<&Text> = all

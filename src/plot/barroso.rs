@@ -173,7 +173,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
          θ\u{a0}=\u{a0}{phi_deg:.0}°; panel (a), γ from 0° to 90°, is left out here. \
          n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for γ\u{a0}≥\u{a0}θ and γ\u{a0}<\u{a0}θ; below \
-         γ_{{lim}} n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r the paper's fall-off \
+         γ_{{lim}} (Eq\u{a0}15) n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r the paper's fall-off \
          (Eq\u{a0}18, bold) or Zhang's (Eq\u{a0}17)."
     );
     Ok(Fig7 {

@@ -493,9 +493,9 @@ impl Fig3 {
                 body,
                 q,
                 b,
-                (ROW_LABEL_1, half, -30.0, 60.0),
+                (ROW_LABEL_1, half, -40.0, 80.0),
                 &|a| a.trim_start_matches("γ = ").to_string(),
-                // The y ticks on each block's middle row only (the sixth review,
+                // The y ticks, ±40, on each block's middle row only (the sixth review,
                 // R6-zhang-fig3-3: ±30 on all nine rows, 2.7 pt apart, read as one column of
                 // numbers).
                 &[1],

@@ -347,7 +347,7 @@ fn m_is_measured_across_the_light_and_the_figure_says_so() {
 /// 2.7 pt apart, read as one column of numbers) and -2 (three colour bars of different ranges,
 /// unstated). Read from the drawn SVGs: in two columns "height y" is set once, upright (no
 /// rotation), over the first row of panels (above every panel frame's top); in one column the
-/// y ticks "30" and "−30" appear once per block (3 each, not 9), on its middle row (between
+/// y ticks "40" and "−40" appear once per block (3 each, not 9), on its middle row (between
 /// the block's first and last row frames); both captions say the blocks have their own
 /// colour scales.
 #[test]
@@ -384,7 +384,7 @@ fn height_named_upright_single_ticks_on_middle_rows_and_scales_stated() {
     rows.sort_by(|a, b| a.0.total_cmp(&b.0));
     rows.dedup_by(|a, b| (a.0 - b.0).abs() < 0.5);
     assert_eq!(rows.len(), 9, "{rows:?}");
-    for tick in ["30", "−30"] {
+    for tick in ["40", "−40"] {
         let ys: Vec<f64> = all.iter().filter(|t| t.1 == tick).map(|t| t.2).collect();
         assert_eq!(ys.len(), 3, "{tick}: {ys:?}");
         for (block, y) in ys.iter().enumerate() {
