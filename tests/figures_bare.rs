@@ -1,6 +1,7 @@
 //! `--bare` (`Options::bare`) crops: a bare figure is the captioned figure laid out the same, its
-//! title and caption left out, and its page cut to the plot area between them: the PNG's rows,
-//! the SVG's view box and the PDF's page.
+//! title and caption left out, and its page cut to the box of its ink with 2 units of white on
+//! each side (the sixth figure review, R6-X-7): the PNG's pixels, the SVG's view box and the
+//! PDF's page.
 //!
 //! For every figure, the captioned and the bare SVG and PNG (and, with the feature `pdf`, the
 //! bare PDF) are rendered, and:
@@ -9,10 +10,11 @@
 //!   bottom);
 //! - the bare SVG holds exactly the captioned SVG's elements less the title's and the caption's,
 //!   unmoved (the same layout, not stretched);
-//! - its view box is the page's full width and a band of rows inside that plot area, and every
-//!   element's extent lies inside the view box (nothing is cut);
-//! - the bare PNG is the captioned PNG's rows of that band, pixel for pixel, and the bare PDF's
-//!   page is the view box's size.
+//! - its view box is a box inside that plot area holding every shape it draws, and the captioned
+//!   PNG has no ink in the plot area outside it (nothing is cut);
+//! - the bare PNG is the captioned PNG's pixels of that box, pixel for pixel, the white between
+//!   its ink and each of its four edges is 1.5 to 3 units, and the bare PDF's page is the view
+//!   box's size.
 #![cfg(feature = "plot")]
 
 use shadow_aliasing::plot::{render_with, Format, Options, FIGURES, PNG_ZOOM};
@@ -177,15 +179,15 @@ fn check(name: &str, dir: &Path) {
         );
     }
 
-    // Its view box: the page's width, a band inside the plot area holding every element.
+    // Its view box: a box inside the plot area holding every shape drawn (a text's extent is
+    // read from the PNG below: its glyphs' ink, not its font's box).
     let (vb, w, h) = view_box(&bare_svg);
-    let (top, bottom) = (vb[1], vb[1] + vb[3]);
-    assert_eq!((vb[0], vb[2]), (0.0, page_w), "{name}: {vb:?}");
+    let (left, top, right, bottom) = (vb[0], vb[1], vb[0] + vb[2], vb[1] + vb[3]);
     assert_eq!((w, h), (vb[2], vb[3]), "{name}: size and view box differ");
     assert!(
-        top >= title_bottom && bottom <= caption_top,
-        "{name}: the bare view box {top}..{bottom} is not inside the plot area \
-         {title_bottom}..{caption_top}"
+        left >= 0.0 && right <= page_w && top >= title_bottom && bottom <= caption_top,
+        "{name}: the bare view box {vb:?} is not inside the plot area \
+         0..{page_w} x {title_bottom}..{caption_top}"
     );
     let page_background = |e: &str| {
         e.starts_with("rect")
@@ -194,16 +196,15 @@ fn check(name: &str, dir: &Path) {
             && attr(e, "width") == Some(page_w)
     };
     for e in plot.iter().filter(|e| !page_background(e)) {
-        if let Some((a, b)) = extent(e) {
+        if let Some([x0, y0, x1, y1]) = shape_box(e) {
             assert!(
-                a >= top - 1e-9 && b <= bottom + 1e-9,
-                "{name}: {a}..{b} is cut by the view box {top}..{bottom}: <{e}"
+                x0 >= left - 1e-9 && x1 <= right + 1e-9 && y0 >= top - 1e-9 && y1 <= bottom + 1e-9,
+                "{name}: {x0}..{x1} x {y0}..{y1} is cut by the view box {vb:?}: <{e}"
             );
         }
     }
-    text_margin_below(name, &bare_svg);
 
-    // The PNG: the captioned PNG's rows of the band, pixel for pixel.
+    // The PNG: the captioned PNG's pixels of the box, pixel for pixel.
     let cap_png = image::load_from_memory(&read(&cap_dir, "png"))
         .unwrap()
         .to_rgb8();
@@ -213,19 +214,37 @@ fn check(name: &str, dir: &Path) {
     let z = PNG_ZOOM;
     assert_eq!(
         bare_png.dimensions(),
-        (cap_png.width(), vb[3] as u32 * z),
+        (vb[2] as u32 * z, vb[3] as u32 * z),
         "{name}: PNG size"
     );
-    let row = 3 * cap_png.width() as usize;
-    let y0 = vb[1] as usize * z as usize;
-    let band = &cap_png.as_raw()[y0 * row..y0 * row + bare_png.as_raw().len()];
-    if let Some(at) = (0..bare_png.as_raw().len()).find(|&i| bare_png.as_raw()[i] != band[i]) {
-        let (x, y) = ((at % row) / 3, at / row);
-        panic!(
-            "{name}: PNG pixel ({x}, {y}) differs from the captioned figure's ({x}, {})",
+    let (x0, y0) = (vb[0] as u32 * z, vb[1] as u32 * z);
+    for (x, y, p) in bare_png.enumerate_pixels() {
+        assert_eq!(
+            p,
+            cap_png.get_pixel(x + x0, y + y0),
+            "{name}: PNG pixel ({x}, {y}) differs from the captioned figure's ({}, {})",
+            x + x0,
             y + y0
         );
     }
+    // Nothing is cut: the captioned PNG has no ink in the plot area outside the box (less 3
+    // units at either end: the PNG's glyphs of the title and caption, a prime or a superscript,
+    // stand up to 2 units beyond the SVG's font box; the body is 5 units from either).
+    let (band0, band1) = (
+        ((title_bottom + 3.0) * z as f64).ceil() as u32,
+        ((caption_top - 3.0) * z as f64) as u32,
+    );
+    for y in band0..band1.min(cap_png.height()) {
+        for x in 0..cap_png.width() {
+            let inside = (x0..x0 + bare_png.width()).contains(&x)
+                && (y0..y0 + bare_png.height()).contains(&y);
+            assert!(
+                inside || !is_ink(cap_png.get_pixel(x, y)),
+                "{name}: ink at ({x}, {y}) of the captioned PNG is cut by the bare box {vb:?}"
+            );
+        }
+    }
+    white_margins(name, &bare_png, z as f64);
 
     #[cfg(feature = "pdf")]
     {
@@ -241,31 +260,87 @@ fn check(name: &str, dir: &Path) {
     }
 }
 
-/// The least white under the lowest text of a bare SVG, in units: its glyphs' bottom (DejaVu's
-/// descent) to the view box's bottom. The sixth figure review found 0.3 units under a colour
-/// bar's name (lloyd2006-fig7 in one column, martin-tan-fig6 in two): a crop on the descender.
-const BARE_TEXT_MARGIN: f64 = 1.5;
-
-fn text_margin_below(name: &str, bare_svg: &str) {
-    let (vb, _, _) = view_box(bare_svg);
-    let bottom = vb[1] + vb[3];
-    let lowest = elements(bare_svg)
-        .into_iter()
-        .filter(|e| e.starts_with("text"))
-        .filter_map(extent)
-        .map(|(_, b)| b)
-        .fold(f64::NEG_INFINITY, f64::max);
-    assert!(
-        bottom - lowest >= BARE_TEXT_MARGIN,
-        "{name}: {:.2} units of white under the lowest text (at {lowest:.2}, the crop at {bottom})",
-        bottom - lowest
-    );
+/// A PNG pixel that is not white: darker than 250 in a channel.
+fn is_ink(p: &image::Rgb<u8>) -> bool {
+    p.0.iter().any(|&c| c < 250)
 }
 
-/// The one-column bare figures keep white under their lowest text too (SVG only: the checks of
-/// `check` above are the two-column figures').
+/// The least and the most white a bare figure keeps between its ink and each edge, in units
+/// (the sixth figure review, R6-X-7: the crops kept about 14 pt above the panel titles and the
+/// page's full width; and 0.3 units under a colour bar's name, a crop on the descender).
+const BARE_MARGIN: (f64, f64) = (1.5, 3.0);
+
+/// The white between the ink of the bare PNG `png` (at `z` pixels a unit) and each of its four
+/// edges lies within [`BARE_MARGIN`].
+fn white_margins(name: &str, png: &image::RgbImage, z: f64) {
+    let (mut x0, mut y0, mut x1, mut y1) = (u32::MAX, u32::MAX, 0, 0);
+    for (x, y, p) in png.enumerate_pixels() {
+        if is_ink(p) {
+            (x0, y0, x1, y1) = (x0.min(x), y0.min(y), x1.max(x + 1), y1.max(y + 1));
+        }
+    }
+    assert!(x0 < x1, "{name}: no ink");
+    let sides = [
+        ("left", x0),
+        ("top", y0),
+        ("right", png.width() - x1),
+        ("bottom", png.height() - y1),
+    ];
+    for (side, px) in sides {
+        let units = f64::from(px) / z;
+        assert!(
+            (BARE_MARGIN.0..=BARE_MARGIN.1).contains(&units),
+            "{name}: {units:.2} units of white at the {side} (want {:?})",
+            BARE_MARGIN
+        );
+    }
+}
+
+/// The box `[x0, y0, x1, y1]` of a shape of the SVG (not a text, not white), in view-box units.
+fn shape_box(e: &str) -> Option<[f64; 4]> {
+    let paint = |k: &str| attr_str(e, k).unwrap_or("none");
+    let white = |c: &str| c == "none" || c.eq_ignore_ascii_case("#FFFFFF");
+    if !e.starts_with("image") && white(paint("fill")) && white(paint("stroke")) {
+        return None;
+    }
+    let a = |k: &str| attr(e, k);
+    if e.starts_with("rect") || e.starts_with("image") {
+        let (x, y) = (a("x")?, a("y")?);
+        return Some([x, y, x + a("width")?, y + a("height")?]);
+    }
+    if e.starts_with("line") {
+        let (xa, ya, xb, yb) = (a("x1")?, a("y1")?, a("x2")?, a("y2")?);
+        return Some([xa.min(xb), ya.min(yb), xa.max(xb), ya.max(yb)]);
+    }
+    if e.starts_with("circle") {
+        let (x, y, r) = (a("cx")?, a("cy")?, a("r")?);
+        return Some([x - r, y - r, x + r, y + r]);
+    }
+    if e.starts_with("polyline") || e.starts_with("polygon") {
+        let pts: Vec<(f64, f64)> = attr_str(e, "points")?
+            .split_whitespace()
+            .map(|p| {
+                let (x, y) = p.split_once(',').unwrap();
+                (x.parse().unwrap(), y.parse().unwrap())
+            })
+            .collect();
+        let f = |g: fn(&(f64, f64)) -> f64, m: fn(f64, f64) -> f64, i: f64| {
+            pts.iter().map(g).fold(i, m)
+        };
+        return Some([
+            f(|p| p.0, f64::min, f64::INFINITY),
+            f(|p| p.1, f64::min, f64::INFINITY),
+            f(|p| p.0, f64::max, f64::NEG_INFINITY),
+            f(|p| p.1, f64::max, f64::NEG_INFINITY),
+        ]);
+    }
+    None
+}
+
+/// The one-column bare figures keep 1.5 to 3 units of white around their ink too (PNG only:
+/// the checks of `check` above are the two-column figures').
 #[test]
-fn one_column_bare_figures_keep_white_under_their_text() {
+fn one_column_bare_figures_keep_white_around_their_ink() {
     let opts = Options {
         bare: true,
         column: shadow_aliasing::plot::Column::Single,
@@ -273,9 +348,11 @@ fn one_column_bare_figures_keep_white_under_their_text() {
     };
     let dir = out_dir("figures-bare-single");
     for name in FIGURES {
-        render_with(name, &dir, Format::Svg, &opts).unwrap();
-        let svg = std::fs::read_to_string(dir.join(format!("{name}.svg"))).unwrap();
-        text_margin_below(name, &svg);
+        render_with(name, &dir, Format::Png, &opts).unwrap();
+        let png = image::open(dir.join(format!("{name}.png")))
+            .unwrap()
+            .to_rgb8();
+        white_margins(name, &png, PNG_ZOOM as f64);
     }
     let _ = std::fs::remove_dir_all(&dir);
 }

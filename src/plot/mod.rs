@@ -276,6 +276,10 @@ fn ensure_font() -> Result<(), PlotError> {
 /// The PNG is drawn at this many times its size in each direction and averaged down.
 const SUPERSAMPLE: u32 = 2;
 
+/// A bare page's ink is found in a drawing of this many pixels a unit (its box to a quarter of
+/// a unit, then widened to whole units).
+const INK_ZOOM: u32 = 4;
+
 /// A PNG has this many pixels per unit of the figure's size (the SVG's view box) in each
 /// direction, before [`Options::scale`]: 6 pixels a point, 432 pixels per inch for a two-column
 /// figure (a unit a point) and 540 for a one-column one (a unit 0.8 points) at the size the SVG
@@ -305,23 +309,41 @@ fn emit<F: Figure>(
     // for a figure whose drawing fails.
     let mut written = Vec::new();
     let opts = out.options;
-    for ext in out.format.extensions() {
-        let path = out_dir.join(format!("{name}.{ext}"));
-        let (w, h) = match opts.column {
-            Column::Double => fig.size(),
-            Column::Single => SINGLE_COLUMN
-                .contains(&name)
-                .then(|| fig.single_size())
-                .flatten()
-                .ok_or_else(|| {
-                    PlotError::InvalidOption(format!(
+    let (w, h) = match opts.column {
+        Column::Double => fig.size(),
+        Column::Single => SINGLE_COLUMN
+            .contains(&name)
+            .then(|| fig.single_size())
+            .flatten()
+            .ok_or_else(|| {
+                PlotError::InvalidOption(format!(
                     "column single: {name} has no single-column layout; give --column double, or \
                      one of {}",
                     SINGLE_COLUMN.join(", ")
                 ))
-                })?,
-        };
+            })?,
+    };
+    // A bare page keeps its ink's box and a little white around it (`chart::ink_crop`), the
+    // same box for every format: the ink as drawn at INK_ZOOM pixels a unit.
+    let crop = if opts.bare {
+        chart::with_page(true, opts.column, || -> Result<_, PlotError> {
+            let mut big = vec![0u8; (INK_ZOOM * INK_ZOOM) as usize * w as usize * h as usize * 3];
+            {
+                let bitmap = BitMapBackend::with_buffer(&mut big, (INK_ZOOM * w, INK_ZOOM * h));
+                let root =
+                    canvas::Canvas::new(bitmap, INK_ZOOM, canvas::BITMAP_TEXT).into_drawing_area();
+                fig.draw(&root).map_err(|e| e.named(name))?;
+                root.present().map_err(|e| Fail::from(e).named(name))?;
+            }
+            Ok(chart::ink_crop(&big, INK_ZOOM, (w, h)))
+        })?
+    } else {
+        None
+    };
+    for ext in out.format.extensions() {
+        let path = out_dir.join(format!("{name}.{ext}"));
         let bytes = chart::with_page(opts.bare, opts.column, || -> Result<Vec<u8>, PlotError> {
+            chart::set_bare_crop(crop);
             if *ext == "png" {
                 // Drawn at twice the (scaled) size and box-filtered down: anti-aliased lines
                 // and edges.
@@ -337,13 +359,19 @@ fn emit<F: Figure>(
                     root.present().map_err(|e| Fail::from(e).named(name))?;
                 }
                 let mut rgb = canvas::downsample(&big, pw, ph, SUPERSAMPLE);
-                // A bare page keeps only the rows of its body.
-                let mut ph = ph;
-                if let Some((top, bottom)) = chart::bare_rows() {
-                    let (top, bottom) = (top.min(bottom) * zoom, bottom.min(h) * zoom);
+                // A bare page keeps only its box.
+                let (mut pw, mut ph) = (pw, ph);
+                if let Some([l, t, r, b]) = crop {
                     let row = pw as usize * 3;
-                    rgb = rgb[top as usize * row..bottom as usize * row].to_vec();
-                    ph = bottom - top;
+                    let (l, r) = (l as usize * zoom as usize, r as usize * zoom as usize);
+                    let (t, b) = (t * zoom, b * zoom);
+                    rgb = (t..b)
+                        .flat_map(|y| {
+                            let at = y as usize * row;
+                            rgb[at + 3 * l..at + 3 * r].iter().copied()
+                        })
+                        .collect();
+                    (pw, ph) = (u32::try_from(r - l).unwrap_or(pw), b - t);
                 }
                 let mut png = Vec::new();
                 image::codecs::png::PngEncoder::new(&mut png)

@@ -263,19 +263,18 @@ impl DrawingBackend for Svg<'_> {
 
     fn present(&mut self) -> Res {
         let (w, h) = self.size;
-        // A bare page keeps only the rows of its body (`chart::bare_rows`): the view box starts
-        // there and the document is as tall as they are.
-        let (top, bottom) = super::chart::bare_rows().unwrap_or((0, h));
-        let bottom = bottom.min(h);
-        let top = top.min(bottom);
-        let rows = bottom - top;
+        // A bare page keeps only its box (`chart::bare_crop`): the view box is that box.
+        let [left, top, right, bottom] = super::chart::bare_crop().unwrap_or([0, 0, w, h]);
+        let (right, bottom) = (right.min(w), bottom.min(h));
+        let (left, top) = (left.min(right), top.min(bottom));
+        let (cols, rows) = (right - left, bottom - top);
         // In points: `zoom` times the view box at the column's points per unit.
         let pt = f64::from(self.zoom) * super::chart::column().points_per_unit();
-        let (zw, zh) = (round(f64::from(w) * pt), round(f64::from(rows) * pt));
+        let (zw, zh) = (round(f64::from(cols) * pt), round(f64::from(rows) * pt));
         self.out.clear();
         let _ = write!(
             self.out,
-            "<svg width=\"{zw}pt\" height=\"{zh}pt\" viewBox=\"0 {top} {w} {rows}\" \
+            "<svg width=\"{zw}pt\" height=\"{zh}pt\" viewBox=\"{left} {top} {cols} {rows}\" \
              xmlns=\"http://www.w3.org/2000/svg\">\n{}</svg>\n",
             self.body
         );

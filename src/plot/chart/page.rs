@@ -10,32 +10,37 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::cell::Cell;
 
 thread_local! {
-    /// Whether the figure being drawn on this thread is bare (see [`with_bare`]).
+    /// Whether the figure being drawn on this thread is bare (see [`with_page`]).
     static BARE: Cell<bool> = const { Cell::new(false) };
-    /// The rows a bare page keeps (see [`bare_rows`]), set by [`frame`].
-    static ROWS: Cell<Option<(u32, u32)>> = const { Cell::new(None) };
+    /// The box a bare page keeps (see [`bare_crop`]), set by [`set_bare_crop`].
+    static CROP: Cell<Option<Crop>> = const { Cell::new(None) };
     /// The width the figure being drawn on this thread is laid out for (see [`with_page`]).
     static COLUMN: Cell<Column> = const { Cell::new(Column::Double) };
 }
 
-/// The space a bare page keeps above the captioned page's body, in units.
-const BARE_PAD: u32 = 6;
+/// A box of the page `[left, top, right, bottom)`, in units.
+pub(crate) type Crop = [u32; 4];
 
-/// The space a bare page keeps below the captioned page's body, in units: text drawn at the
-/// body's bottom edge (a colour bar's or an axis's name) kept as little as 0.3 units of white
-/// under it (the sixth figure review). The caption's glyphs start about 5 units under the body.
-const BARE_PAD_BELOW: u32 = 2;
+/// The white a bare page keeps around its ink on each of its four sides, in units (at least
+/// this, less than one unit more: the crop is whole units). It was 6 units above the body and
+/// the page's full width (the sixth figure review, R6-X-7: about 14 pt of white above the panel
+/// titles and the full left margin); 2 below since text at the body's bottom edge (a colour bar's
+/// or an axis's name) kept as little as 0.3 units of white under it.
+pub(crate) const BARE_PAD: u32 = 2;
+
+/// A pixel darker than this in any channel is ink (the page is white, 255).
+const INK_BELOW: u8 = 250;
 
 /// Runs `draw` with every page it draws bare (no title, no caption) or not, and laid out for
 /// `column`: the page options of `Options::bare` and `Options::column`, set for the one figure
 /// being drawn on this thread and restored afterwards.
 pub(crate) fn with_page<R>(bare: bool, column: Column, draw: impl FnOnce() -> R) -> R {
     let before = BARE.with(|b| b.replace(bare));
-    let rows = ROWS.with(|r| r.replace(None));
+    let crop = CROP.with(|r| r.replace(None));
     let col = COLUMN.with(|c| c.replace(column));
     let out = draw();
     BARE.with(|b| b.set(before));
-    ROWS.with(|r| r.set(rows));
+    CROP.with(|r| r.set(crop));
     COLUMN.with(|c| c.set(col));
     out
 }
@@ -45,18 +50,53 @@ pub(crate) fn column() -> Column {
     COLUMN.with(Cell::get)
 }
 
-/// The rows `[top, bottom)` of the page, in units, that the figure drawn last on this thread in
-/// [`with_page`] keeps: for a bare page, the captioned page's body (the area between its title
-/// and its caption) with [`BARE_PAD`] units above it and [`BARE_PAD_BELOW`] below; `None` for a
+/// The box of the page that the figure drawn on this thread in [`with_page`] keeps: for a bare
+/// page, its ink with [`BARE_PAD`] units of white on each side (see [`ink_crop`]); `None` for a
 /// captioned page (all of it is kept).
-pub(crate) fn bare_rows() -> Option<(u32, u32)> {
-    ROWS.with(Cell::get)
+pub(crate) fn bare_crop() -> Option<Crop> {
+    CROP.with(Cell::get)
+}
+
+/// Sets the box [`bare_crop`] returns until [`with_page`] returns.
+pub(crate) fn set_bare_crop(crop: Option<Crop>) {
+    CROP.with(|r| r.set(crop));
+}
+
+/// The box a bare page of `page` units keeps, from its drawing `rgb` at `k` pixels a unit (RGB
+/// rows of `k` × the page's width): the bounding box of its ink (pixels darker than white),
+/// widened to whole units and by [`BARE_PAD`] on each side, inside the page; `None` for a page
+/// without ink.
+pub(crate) fn ink_crop(rgb: &[u8], k: u32, (w, h): (u32, u32)) -> Option<Crop> {
+    let pw = (w * k) as usize;
+    let ink = |p: &[u8]| p.iter().any(|&c| c < INK_BELOW);
+    let (mut x0, mut y0, mut x1, mut y1) = (usize::MAX, usize::MAX, 0, 0);
+    for (y, row) in rgb.chunks_exact(pw * 3).enumerate() {
+        for (x, p) in row.chunks_exact(3).enumerate() {
+            if ink(p) {
+                (x0, y0) = (x0.min(x), y0.min(y));
+                (x1, y1) = (x1.max(x + 1), y1.max(y + 1));
+            }
+        }
+    }
+    if x0 == usize::MAX {
+        return None;
+    }
+    let k = k as usize;
+    let unit = |v: usize| u32::try_from(v).unwrap_or(u32::MAX);
+    let (l, t) = (unit(x0 / k), unit(y0 / k));
+    let (r, b) = (unit(x1.div_ceil(k)), unit(y1.div_ceil(k)));
+    Some([
+        l.saturating_sub(BARE_PAD),
+        t.saturating_sub(BARE_PAD),
+        (r + BARE_PAD).min(w),
+        (b + BARE_PAD).min(h),
+    ])
 }
 
 /// Fills the page white, writes the title at the top and the caption (its lines joined into one
 /// paragraph, wrapped to the page width) at the bottom, and returns the area left between them.
 /// A bare page (see [`with_page`]) is laid out the same, with the same area returned, but the
-/// title and caption are not drawn, and the rows it keeps ([`bare_rows`]) are that area's.
+/// title and caption are not drawn (and the page is cropped to its ink, [`bare_crop`]).
 pub(crate) fn frame<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     title: &str,
@@ -88,11 +128,6 @@ pub(crate) fn frame<DB: DrawingBackend>(
     let bottom = lines.len() as i32 * line_h + 10;
     let body = root.margin(top, bottom as u32, 6, 6);
     if bare {
-        let rows = (
-            top.saturating_sub(BARE_PAD),
-            (h.saturating_sub(bottom as u32) + BARE_PAD_BELOW).min(h),
-        );
-        ROWS.with(|r| r.set(Some(rows)));
         return Ok(body);
     }
     for (k, line) in title_lines.iter().enumerate() {
