@@ -5,8 +5,8 @@
 //! in B's space, with the share of the map each leaves unused (the paper's *wastage*).
 
 use super::chart::{
-    build_chart_styled, clip_polyline, column, equal_aspect, frame, plot_size, Axis, ChartStyle,
-    Ticked, FONT, PALETTE, SHARED,
+    build_chart_styled, column, equal_aspect, frame, plot_size, Axis, ChartStyle, FONT, PALETTE,
+    SHARED,
 };
 use super::from_light::seen_from_light;
 use super::{Column, Fail, Figure, UNIT_SQUARE};
@@ -331,8 +331,8 @@ impl Figure for Fig3 {
             format!(
                 "Martin & Tan 2004, Figs. 3 and 4: the 80{nb}% rule's trapezoid T \
                  (δ{nb}={nb}{FOCUS}), n{nb}={nb}{}, f{nb}={nb}{}, θ{nb}={nb}{}°, light {}° \
-                 high, {}° round from behind to the viewer's right; the inset of{nb}(a) \
-                 enlarges the focus region at the apex. As in the paper (§3, §5), B is the \
+                 high, {}° round from behind to the viewer's right; the inset under{nb}(a) \
+                 enlarges its grey box at the apex. As in the paper (§3, §5), B is the \
                  smallest (rotated) box; dotted: the axis-aligned one. C covers {} of the map in T's \
                  space (b), {} in B's (c), {} in the axis-aligned box's.",
                 VIEW.0,
@@ -399,9 +399,9 @@ impl Figure for Fig3 {
         let right_w = (side as u32 + style.y_label_area + 3 * style.margin + 1).min(uw / 2);
         let (top, right) = upper.split_horizontally(uw - right_w);
         let (b_area, c_area) = right.split_vertically(b_h);
-        // (a) Light space, equal aspect: x symmetric about the apex, y from the room the inset
-        // needs under it to the data's top; the axis the area leaves over goes under the apex
-        // (to the inset) or to both sides.
+        // (a) Light space, equal aspect: x symmetric about the apex, y over the data and the
+        // window the inset shows; the axis the area leaves over goes under the apex or to both
+        // sides.
         let pts: Vec<DVec2> = self
             .eye
             .iter()
@@ -409,12 +409,14 @@ impl Figure for Fig3 {
             .chain(&self.obox)
             .copied()
             .collect();
-        let lo = pts
+        let mut lo = pts
             .iter()
             .fold(DVec2::splat(f64::INFINITY), |a, &p| a.min(p));
         let hi = pts
             .iter()
             .fold(DVec2::splat(f64::NEG_INFINITY), |a, &p| a.max(p));
+        // The tallest window the inset shows (its frame at least as wide as tall).
+        lo.y = lo.y.min(self.inset_window(1.0).0.y);
         let title = "(a) seen from the light";
         // The data's margin: 4 % of its extent and 3 units of the page (the lines' width).
         let margin = |per_unit: f64| 0.04 * (hi - lo).max_element() + 3.0 / per_unit;
@@ -425,13 +427,30 @@ impl Figure for Fig3 {
             )
         };
         let (mut half_x, mut y_range) = (lo.x.abs().max(hi.x.abs()), (lo.y, hi.y));
+        // The inset in a strip of its own under (a)'s axes and their names (the sixth review:
+        // inside the axes under y = 0 it read as data): the height (a)'s plot leaves over at
+        // the panel's full width, at least a share of the panel.
+        let (_, th) = top.dim_in_pixel();
+        let (xa, ya) = axes(half_x, y_range);
+        let (w, h) = plot_size(&top, title, &xa, &ya, &a_style)?;
+        let need = |per_unit: f64| {
+            let pad = margin(per_unit);
+            (
+                2.0 * (lo.x.abs().max(hi.x.abs()) + pad),
+                hi.y - lo.y + 2.0 * pad,
+            )
+        };
+        let (need_x, need_y) = need(w / need(f64::INFINITY).0);
+        let least = INSET_STRIP[usize::from(single)] * f64::from(th);
+        let strip_h = (h - w * need_y / need_x).max(least) as u32;
+        let (top, inset_strip) = top.split_vertically(th - strip_h);
         let mut per_unit = f64::INFINITY;
         // The scale, the margins and the tick labels' widths depend on each other: a few
         // rounds settle them.
         for _ in 0..3 {
             let pad = margin(per_unit);
             let y_top = hi.y + pad;
-            let y_least = y_top - (lo.y - pad - INSET_ROOM * (hi.y - lo.y));
+            let y_least = y_top - (lo.y - pad);
             let need_x = 2.0 * (lo.x.abs().max(hi.x.abs()) + pad);
             let (xa, ya) = axes(half_x, y_range);
             let (w, h) = plot_size(&top, title, &xa, &ya, &a_style)?;
@@ -445,7 +464,7 @@ impl Figure for Fig3 {
             y_range = (y_top - y_span, y_top);
             per_unit = w / (2.0 * half_x);
         }
-        // The y axis labelled over the data only: under z = 0 is the inset's.
+        // The y axis labelled over the data only (from 0: under it is the window's margin).
         let (xa, ya) = axes(half_x, y_range);
         let data_ticks: Vec<f64> = ya.ticks().0.into_iter().filter(|&v| v >= 0.0).collect();
         let ya = ya.labelled_at(&data_ticks);
@@ -477,7 +496,7 @@ impl Figure for Fig3 {
         outline(&mut chart, &axis_box, AXIS_BOX, Stroke::Dotted)?;
         outline(&mut chart, &self.trapezoid, TRAP, Stroke::Solid)?;
         outline(&mut chart, &self.obox, MIN_BOX, Stroke::Dashed)?;
-        self.draw_inset(&top, &chart, unit)?;
+        self.draw_inset(&inset_strip, &chart, unit)?;
         draw_legend(&strip, columns)?;
         // (b), (c): the two normalised spaces; the map square in the colour of its shape.
         for (panel, h, title, colour, stroke, st) in [
@@ -547,153 +566,16 @@ const LEADER: RGBColor = RGBColor(90, 90, 90);
 /// Where (c) names the focus region: the left end of the word's baseline, in map units.
 const FOCUS_LABEL_AT: (f64, f64) = (0.03, 0.45);
 
+/// The least height of the strip under (a) that holds its inset, as a share of the panel's
+/// (two columns, one column).
+const INSET_STRIP: [f64; 2] = [0.2, 0.27];
+
 /// The one-column figure's height: at most 525 units (420 points printed 240 wide).
 const SINGLE_H: u32 = 480;
 
 /// The x axis of (a): the light's −x, to the right as the light sees the scene (named as in
 /// every figure; its vertical partner is "light-view y").
 const X_LABEL: &str = "light-view x";
-
-/// The least room under the apex in (a) for the inset, as a share of the data's height.
-const INSET_ROOM: f64 = 0.3;
-
-/// The label of an inset enlarged `k` times: "×8" (to the nearest whole number; "×2.5" under 3).
-pub(super) fn magnification(k: f64) -> String {
-    if k < 3.0 {
-        format!("×{:.1}", k)
-    } else {
-        format!("×{:.0}", k)
-    }
-}
-
-/// The inset's greatest share of panel (a)'s plot width, its greatest width over its height,
-/// and the focus region's share of the inset.
-const INSET_W: f64 = 0.7;
-const INSET_ASPECT: f64 = 2.0;
-const INSET_FILL: f64 = 0.6;
-/// The least gap between the window outlined in (a) and the inset under it, in units, for its
-/// connecting lines to show.
-const INSET_GAP: i32 = 12;
-
-impl Fig3 {
-    /// The window (min, max) round the focus region that the inset shows, `aspect` (width over
-    /// height) to its pixels: the focus region's bounding box, centred, filling
-    /// [`INSET_FILL`] of it.
-    pub(super) fn inset_window(&self, aspect: f64) -> (DVec2, DVec2) {
-        let lo = self
-            .focus
-            .iter()
-            .fold(DVec2::splat(f64::INFINITY), |a, &p| a.min(p));
-        let hi = self
-            .focus
-            .iter()
-            .fold(DVec2::splat(f64::NEG_INFINITY), |a, &p| a.max(p));
-        let mid = 0.5 * (lo + hi);
-        let size = (hi - lo) / INSET_FILL;
-        let h = size.y.max(size.x / aspect);
-        let half = DVec2::new(0.5 * h * aspect, 0.5 * h);
-        (mid - half, mid + half)
-    }
-
-    /// The inset of (a): the apex enlarged, under it in the empty bottom of (a)'s plot (under
-    /// z = 0, where the frustum seen from this light has nothing), framed, labelled with its
-    /// enlargement over (a) ("×4"; `unit` is (a)'s units per light-space unit), with the
-    /// window it shows outlined in (a) and joined to it.
-    fn draw_inset<DB: DrawingBackend>(
-        &self,
-        area: &DrawingArea<DB, Shift>,
-        chart: &super::chart::Chart2d<'_, DB>,
-        unit: f64,
-    ) -> Result<(), Fail> {
-        let plot = chart.plotting_area();
-        let (pw, ph) = plot.dim_in_pixel();
-        let (px, py) = plot.get_base_pixel();
-        let (ax, ay) = area.get_base_pixel();
-        // Under the window round the apex, centred on it, inside the plot: the inset's box,
-        // its top at least [`INSET_GAP`] under the window's bottom (the window's own height
-        // follows the box's aspect: settled in a few rounds).
-        let most = (f64::from(pw) * INSET_W) as i32;
-        let bottom = py + ph as i32 - 4;
-        let (_, apex_y) = chart.backend_coord(&(0.0, 0.0));
-        let fit = |room: i32| {
-            let h = room.max(20);
-            let w = most.min((f64::from(h) * INSET_ASPECT) as i32);
-            (w, h.min(w))
-        };
-        let (mut w, mut h) = fit(bottom - apex_y - INSET_GAP);
-        for _ in 0..4 {
-            let (lo, _) = self.inset_window(f64::from(w) / f64::from(h));
-            let below = chart.backend_coord(&(lo.x, lo.y)).1;
-            (w, h) = fit(bottom - below - INSET_GAP);
-        }
-        let (lo, hi) = self.inset_window(f64::from(w) / f64::from(h));
-        let mid = chart.backend_coord(&(0.5 * (lo.x + hi.x), lo.y)).0;
-        let x0 = (mid - w / 2).clamp(px + 4, px + pw as i32 - w - 4);
-        let y0 = bottom - h;
-        let (lo, hi) = self.inset_window(f64::from(w) / f64::from(h));
-        // The window outlined in (a), joined to the inset by its bottom corners.
-        let (c0, c1) = (
-            chart.backend_coord(&(lo.x, lo.y)),
-            chart.backend_coord(&(hi.x, hi.y)),
-        );
-        let grey = RGBColor(90, 90, 90);
-        area.draw(&Rectangle::new(
-            [(c0.0 - ax, c1.1 - ay), (c1.0 - ax, c0.1 - ay)],
-            grey.stroke_width(1),
-        ))?;
-        for (from, to) in [(c0.0, x0), (c1.0, x0 + w - 1)] {
-            area.draw(&PathElement::new(
-                vec![(from - ax, c0.1 - ay), (to - ax, y0 - ay)],
-                grey.stroke_width(1),
-            ))?;
-        }
-        let inset = area
-            .clone()
-            .shrink((x0 - ax, y0 - ay), (w as u32, h as u32));
-        inset.fill(&WHITE)?;
-        let mut zoom = ChartBuilder::on(&inset).build_cartesian_2d(
-            Ticked::new(lo.x, hi.x, Vec::new(), Vec::new()),
-            Ticked::new(lo.y, hi.y, Vec::new(), Vec::new()),
-        )?;
-        let clip = |pts: &[DVec2]| -> Vec<Vec<(f64, f64)>> {
-            let pts: Vec<Option<(f64, f64)>> = pts.iter().map(|q| Some((q.x, q.y))).collect();
-            clip_polyline(&pts, (lo.x, hi.x, lo.y, hi.y))
-        };
-        let hull_pts: Vec<DVec2> = hull(&self.eye);
-        let hull_xy: Vec<(f64, f64)> = hull_pts.iter().map(|p| (p.x, p.y)).collect();
-        zoom.draw_series(std::iter::once(Polygon::new(
-            hull_xy,
-            HULL.mix(HULL_MIX).filled(),
-        )))?;
-        for (corners, colour, width) in [(&self.eye, EDGE, 1), (&self.focus, FOCUS_C, 2)] {
-            for (a, b) in EDGES {
-                for piece in clip(&[corners[a], corners[b]]) {
-                    zoom.draw_series(LineSeries::new(piece, colour.stroke_width(width)))?;
-                }
-            }
-        }
-        let mut closed = self.trapezoid.to_vec();
-        closed.push(closed[0]);
-        for piece in clip(&closed) {
-            zoom.draw_series(LineSeries::new(piece, TRAP.stroke_width(2)))?;
-        }
-        inset.draw(&Rectangle::new(
-            [(0, 0), (w - 1, h - 1)],
-            grey.stroke_width(1),
-        ))?;
-        // The enlargement in the inset's lower left corner, where the apex leaves it empty: the
-        // inset's units per light-space unit over (a)'s.
-        let zoom_factor = f64::from(w) / (hi.x - lo.x) / unit;
-        inset.draw(&Text::new(
-            magnification(zoom_factor),
-            (4, h - 3),
-            TextStyle::from((FONT, 13).into_font())
-                .color(&grey)
-                .pos(Pos::new(HPos::Left, VPos::Bottom)),
-        ))?;
-        Ok(())
-    }
-}
 
 impl Fig3 {
     /// C filled, E's edges and the focus region's, carried by `f`.
@@ -725,6 +607,18 @@ impl Fig3 {
         Ok(())
     }
 }
+
+/// The label of an inset enlarged `k` times: "×8" (to the nearest whole number; "×2.5" under 3).
+pub(super) fn magnification(k: f64) -> String {
+    if k < 3.0 {
+        format!("×{:.1}", k)
+    } else {
+        format!("×{:.0}", k)
+    }
+}
+
+#[path = "trapezoid_inset.rs"]
+mod inset;
 
 #[cfg(test)]
 #[path = "trapezoid_tests.rs"]

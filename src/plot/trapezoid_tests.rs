@@ -426,3 +426,94 @@ fn hull_fill_prints_at_l_star_about_80() {
         }
     }
 }
+
+/// The sixth review (R6-martin-tan-fig3-1), in all three forms, read back from the SVG: the
+/// inset lies in a frame of its own outside (a)'s axes: its frame (the larger unfilled grey
+/// #5A5A5A rectangle) lies wholly under (a)'s x axis line and under its name "light-view x",
+/// and (a)'s y spine (the leftmost black vertical line) does not reach it (it was drawn inside
+/// (a)'s plot under y = 0, the spine running on beside it).
+#[test]
+fn inset_framed_outside_panel_a_axes() {
+    use super::super::chart::read_svg::{attr, draw_svg, points, texts};
+    use super::super::chart::with_page;
+    let fig = fig3().map_err(|e| e.named("martin-tan-fig3")).unwrap();
+    for (column, bare) in [
+        (Column::Double, false),
+        (Column::Double, true),
+        (Column::Single, false),
+    ] {
+        let size = match column {
+            Column::Double => fig.size(),
+            Column::Single => fig.single_size().expect("a one-column layout"),
+        };
+        let svg = with_page(bare, column, || {
+            draw_svg(size, |area| fig.draw(area).unwrap())
+        });
+        let black: Vec<Vec<(f64, f64)>> = svg
+            .lines()
+            .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#000000\""))
+            .filter_map(points)
+            .filter(|p| p.len() == 2)
+            .collect();
+        // (a)'s y spine: the leftmost long vertical black line.
+        let spine = black
+            .iter()
+            .filter(|p| p[0].0 == p[1].0 && (p[0].1 - p[1].1).abs() > 50.0)
+            .min_by(|p, q| p[0].0.total_cmp(&q[0].0))
+            .unwrap_or_else(|| panic!("{column:?}: no y spine"));
+        let (sx, s_lo, s_hi) = (
+            spine[0].0,
+            spine[0].1.min(spine[1].1),
+            spine[0].1.max(spine[1].1),
+        );
+        // (a)'s x axis: the long horizontal black line starting at the spine, under its bottom.
+        let x_axis = black
+            .iter()
+            .find(|p| {
+                p[0].1 == p[1].1
+                    && (p[0].0.min(p[1].0) - sx).abs() <= 2.0
+                    && (p[0].1 - s_hi).abs() <= 2.0
+                    && (p[0].0 - p[1].0).abs() > 50.0
+            })
+            .unwrap_or_else(|| panic!("{column:?}: no x axis at the spine's foot {sx}, {s_hi}"));
+        let axis_y = x_axis[0].1;
+        let axis_x = (sx, x_axis[0].0.max(x_axis[1].0));
+        let frame = svg
+            .lines()
+            .filter(|l| {
+                l.starts_with("<rect") && l.contains("stroke=\"#5A5A5A\"") && l.contains("none")
+            })
+            .map(|l| {
+                let n = |k: &str| attr(l, k).unwrap();
+                [n("x"), n("y"), n("x") + n("width"), n("y") + n("height")]
+            })
+            .max_by(|p, q| {
+                ((p[2] - p[0]) * (p[3] - p[1])).total_cmp(&((q[2] - q[0]) * (q[3] - q[1])))
+            })
+            .unwrap_or_else(|| panic!("{column:?}: no inset frame"));
+        // Outside (a)'s plot area [spine, axis end] × [spine top, x axis]: wholly under it.
+        assert!(
+            frame[1] > axis_y,
+            "{column:?}: the inset's frame {frame:?} is not under (a)'s x axis at y {axis_y} (plot x {axis_x:?})"
+        );
+        // The y spine does not pass through the frame.
+        let crosses = (frame[0]..=frame[2]).contains(&sx) && s_hi >= frame[1] && s_lo <= frame[3];
+        assert!(
+            !crosses,
+            "{column:?}: the y spine x {sx}, y {s_lo}–{s_hi} runs through {frame:?}"
+        );
+        // Under the axis's name too (no text of (a) in the frame's way).
+        let all = texts(&svg);
+        let name = all
+            .iter()
+            .find(|t| t.1 == "light-view x")
+            .unwrap_or_else(|| panic!("{column:?}: no x axis name"));
+        let size = attr(name.0, "font-size").unwrap();
+        assert!(
+            frame[1] >= name.2 + 0.3 * size,
+            "{column:?}: the frame's top {} over the name at {}",
+            frame[1],
+            name.2
+        );
+    }
+}
