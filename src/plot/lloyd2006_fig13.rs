@@ -5,7 +5,7 @@
 use super::super::chart::FONT;
 use super::super::chart::{build_chart, column, fmt_plain, frame, Axis, Look, PALETTE};
 use super::super::{Column, Fail, Figure};
-use super::{sci, FIG12_RATIO, SCHEME_WORDS, SINGLE_HEIGHT, THETA_DEG};
+use super::{FIG12_RATIO, SCHEME_WORDS, SINGLE_HEIGHT, THETA_DEG};
 use crate::analytic::partition::{scheme_storage_factor, shadow_map_count, Scheme, SchemeLight};
 use crate::ViewFrustum;
 use plotters::coord::Shift;
@@ -206,19 +206,8 @@ impl Figure for Fig13 {
             .copied()
             .find(|p| p.0 == j4)
             .ok_or_else(|| Fail::Draw(format!("Fig 13 has no crossover at {j4} maps")))?;
-        // The first j whose crossover lies above the axis (its column is FP+ZP+W's to the top).
-        let above = self
-            .crossover
-            .iter()
-            .find(|p| self.y.to_axis(p.1).is_some_and(|a| a > self.y.range().1))
-            .map(|p| p.0);
-        let beyond = |prefix: &str| match above {
-            Some(j) => format!(
-                "{prefix}from j\u{a0}=\u{a0}{j} on, it lies above f/n\u{a0}=\u{a0}{}.",
-                sci(self.y.max)
-            ),
-            None => ".".into(),
-        };
+        // From j = 33 on the crossover lies above the axis (its column is FP+ZP+W's to the
+        // top): the plot shows it, docs/figures.md says it (the caption has five lines at most).
         // Eq 21's faces: tan θ_eff of each face's sub-frustum read back from FP+ZP+W's S̄
         // behind for the frustum of Fig 12 (θ = 30°), 4k((f/n)^{1/k} − 1)/(2 tan θ_eff) + 1.
         let view = ViewFrustum::new(1.0, FIG12_RATIO, THETA_DEG.to_radians())?;
@@ -227,13 +216,12 @@ impl Figure for Fig13 {
         let tan_eff = 4.0 * k * (FIG12_RATIO.powf(1.0 / k) - 1.0) / (2.0 * (fp - 1.0));
         let caption = match column() {
             Column::Double => format!(
-                "Lloyd et al. 2006, Fig. 13 (Eq 20, 21), light behind. {SCHEME_WORDS} ZP (= ZP+W) \
+                "Lloyd et al. 2006, Fig. 13 (Eq 20, 21). {SCHEME_WORDS} ZP (= ZP+W) \
                  with j maps against FP+ZP+W with k z-partitions per face, \
                  j\u{a0}=\u{a0}4k\u{a0}+\u{a0}1. Below the dot FP+ZP+W needs less storage; above it, ZP. With {j} maps the dot is \
-                 at f/n\u{a0}=\u{a0}{at:.0}{} The boundary does not depend on θ: Eq 20 has \
+                 at f/n\u{a0}=\u{a0}{at:.0}. The boundary does not depend on θ: Eq 20 has \
                  no θ, and Eq 21's face sub-frusta always have \
                  tan\u{a0}θ_{{eff}}\u{a0}=\u{a0}{}.",
-                beyond("; "),
                 fmt_plain(tan_eff),
             ),
             Column::Single => format!(
