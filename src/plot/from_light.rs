@@ -259,6 +259,22 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     let low = far.iter().map(|q| q.y).fold(f64::INFINITY, f64::min);
     let right = zoom_c.window.map_or(0.0, |(_, hi)| hi.x);
     zoom_c.notes = vec![(DVec2::new(right, low), "far face".into())];
+    // (e) names the same edge (the sixth review, R6-barroso-fig5-4: only (f) did, so that the
+    // caption's "thick line across" had no name in the overview): its leader from the edge's
+    // right end, the far face's lower right corner.
+    let far_e = eq19.sections[eq19.sections.len() - 1];
+    let corner = far_e
+        .iter()
+        .copied()
+        .filter(|q| (q.y - low).abs() <= 1e-9 * (1.0 + low.abs()))
+        .fold(DVec2::new(f64::NEG_INFINITY, low), |a, q| {
+            if q.x > a.x {
+                q
+            } else {
+                a
+            }
+        });
+    eq19.notes = vec![(corner, "far face".into())];
     // The overviews label the planes their details leave out or show small (figure review 3:
     // labels spread apart with kinked leaders crowded (b)): z ≥ 31.62 in (a) and (c), z ≥ 16.13
     // in (e).

@@ -16,6 +16,22 @@ use std::f64::consts::{FRAC_PI_2, TAU};
 
 use super::grids::{FIG7_AZIMUTHS, FIG7_ELEVATIONS};
 
+#[path = "hemisphere_contour.rs"]
+mod contour;
+use contour::{contour, draw_contours, Contour};
+
+/// The levels of (a)'s contour lines (the sixth review, R6-lloyd2006-fig7-2: under the shared
+/// bar (a) was one flat green): 10⁶, S̄ straight behind (Eq 20, k = 1), and 1.5×10⁶, round its
+/// peak.
+pub(super) const A_CONTOURS: [f64; 2] = [1e6, 1.5e6];
+
+/// Where each contour's label is written: its line's point nearest to this disk point (radius
+/// 1; −x behind, −y the viewer's right) where the label fits in the disk: 10⁶ on the valley
+/// along the vertical plane through the view direction, in front between the 30° and 10°
+/// rings; 1.5×10⁶ on the ridge behind, on the viewer's left (the top), clear of one column's
+/// ring key (10°, 20°, 30° on the viewer's right, 60° and 90° on the middle).
+const A_LABELS: [(f64, f64); 2] = [(0.6, 0.0), (-0.45, 0.45)];
+
 /// The cells of a sweep: each sample owns the band of elevations and azimuths halfway to its
 /// neighbours (the horizon and zenith rows half bands).
 pub(super) fn polar_grid(s: &Sweep, values: Vec<Option<f64>>) -> PolarGrid {
@@ -65,6 +81,8 @@ pub(super) struct Fig7 {
     ratio_scale: ColourScale,
     caption: Vec<String>,
     single_caption: String,
+    /// (a)'s contour lines at [`A_CONTOURS`].
+    contours: Vec<Contour>,
 }
 
 /// The frustum of Fig 7 (the paper does not state it; these are its Fig 12's parameters).
@@ -102,6 +120,10 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         });
     }
     // (e): how many times more texels LiSPSM needs than face partitioning, direction by direction.
+    let contours = A_CONTOURS
+        .iter()
+        .map(|&level| contour(&panels[0].grid.values, grid, level))
+        .collect();
     let ratios: Vec<Option<f64>> = panels[1]
         .grid
         .values
@@ -136,8 +158,8 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     // over the same grid (lloyd2006-worst-case).
     let min_area = super::worst::min_area::zp_min_area_worst(&view, 1, grid)?.0;
     let band = format!(
-        "(a)'s peak, {}, is the orientation rule's (the worst-case figure); minimum-area maps \
-         peak at {}.",
+        "(a), dashed contours: peak {}, the orientation rule's (the worst-case figure); \
+         minimum-area maps peak at {}.",
         fmt_times_ten(panels[0].max),
         fmt_times_ten(min_area),
     );
@@ -149,10 +171,10 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let (n, f) = (view.near(), view.far());
     let overhead = (f / n - 1.0) / (2.0 * view.tan_half_fov());
     let caption = vec![format!(
-        "Lloyd et al. 2006, Fig. 7: S̄ (texels per image pixel) on a {step}° grid, azimuthal \
+        "Lloyd et al. 2006, Fig. 7: S̄ (texels per image pixel), {step}° grid, azimuthal \
          equidistant (top: viewer's left); rings: elevation 10°, 20°, 30°, 60°; \
-         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°. Overhead, (b) \
-         and (c) are Eq 12's {overhead:.0}. {band} Near behind (b) is up to {worse:.1}× (a): \
+         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°. (b), (c) \
+         overhead: Eq 12's {overhead:.0}. {band} Near behind (b) is up to {worse:.1}× (a): \
          n′ does not revert for γ\u{a0}<\u{a0}θ (§4.4).",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
@@ -173,6 +195,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         ratio_scale,
         caption,
         single_caption,
+        contours,
     })
 }
 
@@ -256,6 +279,24 @@ impl Figure for Fig7 {
             // data, and the sixth cell was empty).
             let keyed = single && k == 0;
             let r = draw_hemisphere_keyed(&cell(k as u32), &p.title, &p.grid, scale, keyed, false)?;
+            // (a)'s contours in two columns (and bare); one column's disks, about 38 units across
+            // the radius, hold the ring key in (a), and there the contours' labels ran into it.
+            if k == 0 && !single {
+                // Under each label the field's colour at the label's direction.
+                let (ne, na) = (FIG7_ELEVATIONS, FIG7_AZIMUTHS);
+                let fill = |(el, az): (f64, f64)| {
+                    let i = (el / FRAC_PI_2 * (ne - 1) as f64).round() as usize;
+                    let j = (az.rem_euclid(TAU) / TAU * na as f64).round() as usize % na;
+                    let v = p
+                        .grid
+                        .values
+                        .get(i.min(ne - 1) * na + j)
+                        .copied()
+                        .flatten()?;
+                    Some(scale.level_colour(scale.level(v)?))
+                };
+                draw_contours(&cell(0), &self.contours, &A_LABELS, &fill)?;
+            }
             disk_rows.push(r);
         }
         if single {
@@ -466,6 +507,7 @@ mod tests {
     /// (10°, 20°, 30°, 60°, "overhead") is written once, in (a); and the caption names (e).
     #[test]
     fn fig7_bars_are_round_decades_and_the_rings_are_keyed() {
+        use super::super::chart::fmt_power;
         use super::super::chart::read_svg::texts;
         let fig = fig7().map_err(|e| e.named("lloyd2006-fig7")).unwrap();
         for column in [Column::Double, Column::Single] {
@@ -478,9 +520,11 @@ mod tests {
                 .collect();
             assert!(powers.len() >= 6, "{column:?}: {powers:?}");
             assert!(
-                // Not the caption's lines (#323232), which print (a)'s peak as m×10ⁿ.
-                !all.iter()
-                    .any(|t| t.1.contains("×10") && !t.0.contains("#323232")),
+                // Not the caption's lines (#323232), which print (a)'s peak as m×10ⁿ, nor
+                // (a)'s contour label 1.5×10⁶.
+                !all.iter().any(|t| t.1.contains("×10")
+                    && !t.0.contains("#323232")
+                    && t.1 != fmt_power(A_CONTOURS[1])),
                 "{column:?}: a mantissa on a bar"
             );
             for key in ["10°", "20°", "30°", "60°", "90°"] {
@@ -558,7 +602,7 @@ mod tests {
         }
         let text = fig.caption_text();
         let want = format!(
-            "(a)'s peak, {}, is the orientation rule's",
+            "(a), dashed contours: peak {}, the orientation rule's",
             fmt_times_ten(peak)
         );
         assert!(text.contains(&want), "{want:?} in {text}");

@@ -331,6 +331,31 @@ pub(crate) fn hemisphere_direction(x: f64, y: f64) -> Option<(f64, f64)> {
     Some((elevation, azimuth))
 }
 
+/// The square of a hemisphere panel `w` × `h` units (its left, top and side): centred under a
+/// title 28 units tall.
+fn hemisphere_square(w: u32, h: u32) -> (i32, i32, i32) {
+    let title_h = 28;
+    let side = (w.min(h.saturating_sub(title_h))).max(40) as i32;
+    let ox = (w as i32 - side) / 2;
+    let oy = title_h as i32 + (h as i32 - title_h as i32 - side) / 2;
+    (ox, oy, side)
+}
+
+/// The margin round a hemisphere's disk inside its square, in disk radii.
+const DISK_PAD: f64 = 0.16;
+
+/// Where [`draw_hemisphere_keyed`] draws the disk of a panel `w` × `h` units: its centre and
+/// its radius (units of the panel's area), so that a figure can draw over the field (contour
+/// lines) in the disk's coordinates.
+pub(crate) fn hemisphere_disk(w: u32, h: u32) -> ((f64, f64), f64) {
+    let (ox, oy, side) = hemisphere_square(w, h);
+    let half = 0.5 * f64::from(side);
+    (
+        (f64::from(ox) + half, f64::from(oy) + half),
+        f64::from(side) / (2.0 + 2.0 * DISK_PAD),
+    )
+}
+
 /// Draws a hemisphere panel: a disk of radius 1 with the field (one raster, transparent outside
 /// the disk), the elevation rings ([`super::hemisphere_key::draw_rings`]) and the directions
 /// named. Returns the rows of the disk's top and bottom in
@@ -358,17 +383,13 @@ pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
     diameter: bool,
 ) -> Result<(u32, u32), Fail> {
     let (w, h) = area.dim_in_pixel();
-    // Square plotting area centred in the panel.
-    let title_h = 28;
-    let side = (w.min(h.saturating_sub(title_h))).max(40) as i32;
-    let ox = (w as i32 - side) / 2;
-    let oy = title_h as i32 + (h as i32 - title_h as i32 - side) / 2;
+    let (ox, oy, side) = hemisphere_square(w, h);
     area.draw(&Text::new(
         title.to_string(),
         (w as i32 / 2, 4),
         TextStyle::from((FONT, PANEL_TITLE).into_font()).pos(Pos::new(HPos::Center, VPos::Top)),
     ))?;
-    let pad = 0.16;
+    let pad = DISK_PAD;
     let span = 2.0 + 2.0 * pad;
     let to_units = |(x, y): (f64, f64)| -> (f64, f64) {
         (
