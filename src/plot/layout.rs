@@ -4,13 +4,15 @@
 //! one texture by [`crate::scheme::SchemeResult::atlas`] (Lloyd 2005 Eq 6: the width split among
 //! the face pairs by their largest M_x, each column's height among its members by M_z).
 
+mod faces;
 mod hatch;
 mod leaders;
 mod table;
+mod texture;
 
 use super::chart::{
     boxed_text, build_chart_styled, column, equal_aspect, frame, linspace, Axis, Chart2d,
-    ChartStyle, FONT, PANEL_TITLE, SWEEP, TICK,
+    ChartStyle, PANEL_TITLE, SWEEP,
 };
 use super::from_light::seen_from_light;
 use super::warp_grid::minus;
@@ -23,7 +25,6 @@ use crate::scheme::{scheme, Partition, Region};
 use crate::ViewFrustum;
 use glam::{DMat3, DMat4, DVec2, DVec3};
 use hatch::HATCHES;
-use leaders::leader_order;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -55,6 +56,12 @@ const Z_NAME: &str = "light-view y";
 
 /// The one-column page's height, in units (420 pt printed at 0.8 pt a unit).
 const SINGLE_HEIGHT: u32 = 525;
+
+/// The height of the strip under (a) for its inset across two columns, in units.
+const INSET_ROW: u32 = 110;
+
+/// The same in one column.
+const SINGLE_INSET_ROW: u32 = 80;
 
 /// The partitions' tags' font size (the least a figure's text may have across two columns).
 const TAG: u32 = 13;
@@ -200,8 +207,9 @@ fn apply(h: &DMat3, p: DVec2) -> DVec2 {
 }
 
 impl Figure for Fig8 {
+    /// Across two columns 520 units wide and 520 tall with the inset's strip under (a).
     fn size(&self) -> (u32, u32) {
-        (520, 520)
+        (520, 520 + INSET_ROW)
     }
 
     /// One column: (a) and (b) side by side, (c) and a key under them, the table last; 525
@@ -214,19 +222,23 @@ impl Figure for Fig8 {
         let single = column() == Column::Single;
         let shown = &self.cells[self.shown];
         let caption = if single {
-            // The key beside (c) decodes the tags and the table's columns.
+            // What the tags and the table's columns mean, here (a paragraph beside (a) was body
+            // text inside the figure: the sixth review, R6-lloyd2005-fig8-4).
             format!(
-                "Lloyd et al. 2005, Fig. 8: k\u{a0}=\u{a0}{} z-partitions a face, LiSPSM, \
-                 n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, θ\u{a0}=\u{a0}{THETA_DEG}°, light \
-                 {}° high, {}° right of behind. M_x, M_z: largest error across the view, in \
-                 depth; s split by M_x, t by M_z (the paper: t by M_x).",
-                self.k, LIGHT.0, LIGHT.1,
+                "Lloyd et al. 2005, Fig. 8: LiSPSM, n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, \
+                 θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. R, L, T, N: \
+                 right, left, top, near face; parts 1, 2: {}, {}. M_x, M_z: \
+                 largest error across, in depth; s by M_x, t by M_z.",
+                LIGHT.0,
+                LIGHT.1,
+                self.depths('1'),
+                self.depths('2').trim_start_matches("z\u{a0}"),
             )
         } else {
             format!(
                 "Lloyd et al. 2005, Fig. 8: k\u{a0}=\u{a0}{} z-partitions a face, LiSPSM, n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, \
-                 θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. (a) The tags \
-                 as in (d). (b) {}'s texels reach past it (a \
+                 θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. (a) Tags as in \
+                 (d), the apex enlarged. (b) {}'s texels reach past it (a \
                  larger frustum, dashed in the paper). (c) Eq\u{a0}6 splits s by M_x, t by M_z (the \
                  paper transposes), the largest errors across the view and in depth. {}",
                 self.k,
@@ -257,28 +269,30 @@ impl Figure for Fig8 {
         };
         let table_h = TABLE_TOP + self.table_lines(single) * table_step(single);
         if single {
-            // (a) as wide as its tags under the apex need, the key (what the tags and the
-            // table's columns mean) beside it, where (a)'s data leaves the width unused; (b)
-            // and (c) side by side under them; the table last.
+            // (a) with its inset under it on the left (the tags' paragraph that stood beside
+            // (a) is in the caption: R6-lloyd2005-fig8-4), (b) over (c) on the right; the
+            // table last.
             let panels = bh.saturating_sub(table_h);
             let (top, table) = body.split_vertically(panels);
-            // (b)'s plot, height-bound, is as tall as its y axis' name "light-view y" (65
-            // units) only with the rows split 51 : 49 and its margin 3: split 53 : 47 with
-            // margin 6 it was 56 units; (a)'s plot keeps 67, also longer than the name. The
-            // key beside (a), in the lower row, is wider (38 %, was 34 %) to keep its lines in it.
-            let (row1, row2) = top.split_vertically(panels * 51 / 100);
-            let (a, key) = row1.split_horizontally(bw * 62 / 100);
-            let (b, c) = row2.split_horizontally(bw * 40 / 100);
-            self.draw_faces(&a, &style)?;
+            let (a, right) = top.split_horizontally(bw * 50 / 100);
+            let (b, c) = right.split_vertically(panels * 48 / 100);
+            self.draw_faces(&a, &style, SINGLE_INSET_ROW)?;
             self.draw_warp(&b, &ChartStyle { margin: 3, ..style })?;
-            self.draw_texture(&c, &texture_style)?;
-            self.draw_key(&key)?;
+            self.draw_texture(
+                &c,
+                &ChartStyle {
+                    margin: 3,
+                    ..texture_style
+                },
+            )?;
             self.draw_table(&table, single)
         } else {
+            // (a) with the inset's strip under it, (b) and (c) beside (a).
             let (top, table) = body.split_vertically(bh.saturating_sub(table_h));
             let (a, rest) = top.split_horizontally(bw * 40 / 100);
+            let (rest, _) = rest.split_vertically(top.dim_in_pixel().1.saturating_sub(INSET_ROW));
             let (b, c) = rest.split_horizontally(bw * 25 / 100);
-            self.draw_faces(&a, &style)?;
+            self.draw_faces(&a, &style, INSET_ROW)?;
             self.draw_warp(&b, &style)?;
             self.draw_texture(&c, &texture_style)?;
             self.draw_table(&table, single)
@@ -288,7 +302,7 @@ impl Figure for Fig8 {
 
 impl Fig8 {
     /// The bounding box of some light-space points, widened by 6 % on each side.
-    fn window(points: impl Iterator<Item = DVec2>) -> (DVec2, DVec2) {
+    pub(super) fn window(points: impl Iterator<Item = DVec2>) -> (DVec2, DVec2) {
         let (lo, hi) = points.fold(
             (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
             |(lo, hi), p| (lo.min(p), hi.max(p)),
@@ -300,7 +314,7 @@ impl Fig8 {
     /// The convex outline `poly` (data units of `chart`, equal aspect: `per_px` data units a
     /// pixel both ways) filled in partition `i`'s pastel ([`Fig8::fill`]) and hatched in its
     /// colour ([`HATCHES`]), so that partitions whose pastels print as one grey still differ.
-    fn fill_hatched<DB: DrawingBackend>(
+    pub(super) fn fill_hatched<DB: DrawingBackend>(
         &self,
         chart: &mut Chart2d<'_, DB>,
         poly: &[DVec2],
@@ -320,98 +334,6 @@ impl Fig8 {
                     colour.mix(0.8).stroke_width(1),
                 ))?;
             }
-        }
-        Ok(())
-    }
-
-    /// (a): every partition's face part seen from the light, filled and hatched in its look,
-    /// with its tag.
-    fn draw_faces<DB: DrawingBackend>(
-        &self,
-        area: &DrawingArea<DB, Shift>,
-        style: &ChartStyle,
-    ) -> Result<(), Fail> {
-        let (lo, hi) = Self::window(self.cells.iter().flat_map(|c| c.outline.iter().copied()));
-        // Room under the drawing for the tags of parts too small to hold them: in one
-        // column's smaller plot 0.14 of the height was under the tags' row, which the x axis
-        // then struck through (the sixth review, R6-lloyd2005-fig8-2).
-        let room = if column() == Column::Single {
-            0.3
-        } else {
-            0.14
-        };
-        let lo = lo - DVec2::new(0.0, room * (hi.y - lo.y));
-        let title = "(a) from the light";
-        let (xa, ya) = equal_aspect(
-            area,
-            title,
-            &Axis::linear(X_NAME, lo.x, hi.x),
-            &Axis::linear(Z_NAME, lo.y, hi.y),
-            style,
-        )?;
-        let mut chart = build_chart_styled(area, title, &xa, &ya, false, style)?;
-        let (pw, _) = chart.plotting_area().dim_in_pixel();
-        let per_px = (xa.max - xa.min) / f64::from(pw);
-        for (i, c) in self.cells.iter().enumerate() {
-            self.fill_hatched(&mut chart, &c.outline, i, per_px)?;
-            let mut closed: Vec<(f64, f64)> = c.outline.iter().map(|p| (p.x, p.y)).collect();
-            closed.push(closed[0]);
-            chart.draw_series(LineSeries::new(closed, BLACK.stroke_width(1)))?;
-        }
-        // Tags at the parts' centres where they fit inside the part (with a margin), on a
-        // white box over the hatch, last so that no fill covers them; a part too small for its
-        // tag gets it outside the drawing, joined to the part by a leader.
-        let tag_style =
-            TextStyle::from((FONT, TAG).into_font()).pos(Pos::new(HPos::Center, VPos::Center));
-        // The row under the drawing for the tags that do not fit.
-        let bottom = self
-            .cells
-            .iter()
-            .flat_map(|c| c.outline.iter().map(|p| p.y))
-            .fold(f64::INFINITY, f64::min);
-        let mut outside: Vec<(DVec2, f64, &str)> = Vec::new();
-        for c in &self.cells {
-            let mid = c.outline.iter().copied().sum::<DVec2>() / c.outline.len() as f64;
-            let (tw, th) = area
-                .estimate_text_size(&c.tag, &tag_style)
-                .map_err(|e| Fail::Draw(e.to_string()))?;
-            let half = DVec2::new(f64::from(tw) + 6.0, f64::from(th) + 4.0) * 0.5 * per_px;
-            let fits = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
-                .iter()
-                .all(|&(sx, sy)| inside(&c.outline, mid + DVec2::new(sx * half.x, sy * half.y)));
-            if fits {
-                boxed_text(
-                    &mut chart,
-                    (mid.x, mid.y),
-                    &c.tag,
-                    Pos::new(HPos::Center, VPos::Center),
-                    TAG,
-                    BLACK,
-                )?;
-            } else {
-                // Outside, the tag's own half width and 1 unit (no box to fit inside).
-                outside.push((mid, (0.5 * f64::from(tw) + 1.0) * per_px, c.tag.as_str()));
-            }
-        }
-        // Under the drawing in the order whose leaders cross neither one another nor other
-        // parts most briefly ([`leader_order`]: left to right by the parts' centres let two
-        // leaders cross over the apex), each at least its width from the one before and all
-        // inside the plot, joined to its part by a leader.
-        let y = bottom - 10.0 * per_px;
-        let gap = 5.0 * per_px;
-        let outlines: Vec<&[DVec2]> = self.cells.iter().map(|c| c.outline.as_slice()).collect();
-        let (outside, xs) =
-            leader_order(outside, (xa.min, xa.max), gap, y + 3.0 * per_px, &outlines);
-        for ((mid, _, tag), x) in outside.into_iter().zip(xs) {
-            chart.draw_series(LineSeries::new(
-                [(mid.x, mid.y), (x, y + 3.0 * per_px)],
-                RGBColor(90, 90, 90).stroke_width(1),
-            ))?;
-            chart.draw_series(std::iter::once(Text::new(
-                tag.to_string(),
-                (x, y),
-                tag_style.pos(Pos::new(HPos::Center, VPos::Top)),
-            )))?;
         }
         Ok(())
     }
@@ -473,101 +395,6 @@ impl Fig8 {
             TAG,
             BLACK,
         )?;
-        Ok(())
-    }
-
-    /// The s axis' last tick (the texture's end, `n`) and its label, right-aligned to the
-    /// frame's end, at the other tick labels' height (the tick's length and 5 units under the
-    /// axis, as the chart draws them).
-    fn last_s_label<DB: DrawingBackend>(
-        body: &DrawingArea<DB, Shift>,
-        chart: &Chart2d<'_, DB>,
-        n: f64,
-        style: &ChartStyle,
-    ) -> Result<(), Fail> {
-        let (bx, by) = body.get_base_pixel();
-        // The x axis is the plot's bottom edge (under t = 0: the equal aspect pads the range).
-        let (x, _) = chart.backend_coord(&(n, 0.0));
-        let (_, yr) = chart.plotting_area().get_pixel_range();
-        let (x, y) = (x - bx, yr.end - by);
-        let tick = TICK as i32;
-        body.draw(&PathElement::new(
-            vec![(x, y), (x, y + tick)],
-            BLACK.stroke_width(1),
-        ))?;
-        body.draw(&Text::new(
-            format!("{}", n as u32),
-            (x, y + tick + 5),
-            TextStyle::from((FONT, style.tick_size).into_font())
-                .pos(Pos::new(HPos::Right, VPos::Top)),
-        ))?;
-        Ok(())
-    }
-
-    /// (c): the texture, square, each partition's rectangle in its look with its tag.
-    fn draw_texture<DB: DrawingBackend>(
-        &self,
-        body: &DrawingArea<DB, Shift>,
-        style: &ChartStyle,
-    ) -> Result<(), Fail> {
-        let n = f64::from(SIZE);
-        let title = "(c) texture by Eq 6";
-        // Equal aspect: the square texture drawn square.
-        let (xa, ya) = equal_aspect(
-            body,
-            title,
-            &Axis::linear("s (texels)", 0.0, n),
-            &Axis::linear("t (texels)", 0.0, n),
-            style,
-        )?;
-        // Labelled at the texture's ends and middle only: four-digit labels every 500 texels
-        // run together on a narrow panel. The s axis' last label, 2048, is written right-aligned
-        // to the frame's end below ([`Fig8::last_s_label`]): centred on it, it came within 3.5
-        // units of "1024" in one column and ran past the page across two (the sixth review,
-        // R6-lloyd2005-fig8-3).
-        // In one column, whose plot is about 60 units wide, s is labelled at its ends only.
-        let ends = [0.0, 0.5 * n, n];
-        let s_at = if column() == Column::Single {
-            &ends[..1]
-        } else {
-            &ends[..2]
-        };
-        let (xa, ya) = (xa.labelled_at(s_at), ya.labelled_at(&ends));
-        let mut chart = build_chart_styled(body, title, &xa, &ya, false, style)?;
-        Self::last_s_label(body, &chart, n, style)?;
-        let (pw, _) = chart.plotting_area().dim_in_pixel();
-        let per_px = (xa.max - xa.min) / f64::from(pw);
-        for (i, c) in self.cells.iter().enumerate() {
-            let v = c.viewport;
-            let (x0, y0) = (f64::from(v.x), f64::from(v.y));
-            let (x1, y1) = (x0 + f64::from(v.width), y0 + f64::from(v.height));
-            let rect = [
-                DVec2::new(x0, y0),
-                DVec2::new(x1, y0),
-                DVec2::new(x1, y1),
-                DVec2::new(x0, y1),
-            ];
-            self.fill_hatched(&mut chart, &rect, i, per_px)?;
-            chart.draw_series(std::iter::once(Rectangle::new(
-                [(x0, y0), (x1, y1)],
-                BLACK.stroke_width(1),
-            )))?;
-        }
-        for c in &self.cells {
-            let v = c.viewport;
-            let at = (
-                f64::from(v.x) + 0.5 * f64::from(v.width),
-                f64::from(v.y) + 0.5 * f64::from(v.height),
-            );
-            boxed_text(
-                &mut chart,
-                at,
-                &c.tag,
-                Pos::new(HPos::Center, VPos::Center),
-                TAG,
-                BLACK,
-            )?;
-        }
         Ok(())
     }
 }

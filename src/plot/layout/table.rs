@@ -1,11 +1,10 @@
 //! lloyd2005-fig8's table (d): per partition its face and depths, M_x, M_z, its Eq 6 share of
 //! the texture's width and height, and its error after allocation, each row led by a swatch of
-//! the partition's fill and hatch; and the one-column page's key, which says what the tags
-//! and the table's columns mean.
+//! the partition's fill and hatch.
 
 use super::hatch::{self, HATCHES};
 use super::{Fig8, SIZE};
-use crate::plot::chart::{wrap, FONT};
+use crate::plot::chart::FONT;
 use crate::plot::warp_grid::minus;
 use crate::plot::Fail;
 use glam::DVec2;
@@ -16,9 +15,6 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 /// The gap between a row's swatch and its tag (7 units: the tag touched a swatch 4 away).
 const SWATCH_GAP: i32 = 7;
 
-/// The key's first line under the top of its area: level with the panels' titles.
-const KEY_TOP: i32 = 8;
-
 /// The gap above the table's first line, under the panels above it.
 pub(super) const TABLE_TOP: u32 = 6;
 
@@ -28,9 +24,13 @@ const TABLE_FONT: u32 = 13;
 
 /// The last column's header, across two columns and in one: the error after allocation and
 /// what it is across two columns (the sixth review, R6-lloyd2005-fig8-5: "error after" was
-/// cryptic); in one, whose last column is as wide as its numbers, "error after", which the key
-/// beside (a) says is (M_x/w, M_z/h). Lines split at '\n'.
-pub(super) const ERROR_AFTER: [&str; 2] = ["error after allocation (M_x/w, M_z/h)", "error after"];
+/// cryptic); in one, whose last column is as wide as its numbers, the same on two lines (a key
+/// beside (a) said what "error after" was: the sixth review, R6-lloyd2005-fig8-4). Lines split
+/// at '\n'.
+pub(super) const ERROR_AFTER: [&str; 2] = [
+    "error after allocation (M_x/w, M_z/h)",
+    "error after\n(M_x/w, M_z/h)",
+];
 
 /// The header's lines, [`ERROR_AFTER`]'s.
 fn header_lines(single: bool) -> u32 {
@@ -103,7 +103,7 @@ impl Fig8 {
     /// The table's rows as drawn, each with the partitions it stands for: one a partition
     /// across two columns; in one column, the parts of one face whose numbers print alike
     /// (the self-similar z-partitions of a face have one M_x, M_z and share) share a row, "R1,
-    /// R2", their face and depths written in the key ([`Fig8::draw_key`]).
+    /// R2", their face and depths said in the caption.
     pub(super) fn table_groups(&self, single: bool) -> Vec<(Vec<usize>, [String; 6])> {
         let mut out: Vec<(Vec<usize>, [String; 6])> = Vec::new();
         for (i, row) in self.table_rows().into_iter().enumerate() {
@@ -123,7 +123,7 @@ impl Fig8 {
     }
 
     /// The table's lines, [`table_step`] apart: across two columns its title, header and a
-    /// row a partition; in one column (the title in the key) its header and its rows.
+    /// row a partition; in one column (the title in its header's first cell) its header and its rows.
     pub(super) fn table_lines(&self, single: bool) -> u32 {
         let rows = self.table_groups(single).len() as u32 + header_lines(single);
         if single {
@@ -133,43 +133,15 @@ impl Fig8 {
         }
     }
 
-    /// The one-column page's key, beside (c): what the tags say (face and depths) and what
-    /// the table's columns are, wrapped to the area.
-    pub(super) fn draw_key<DB: DrawingBackend>(
-        &self,
-        area: &DrawingArea<DB, Shift>,
-    ) -> Result<(), Fail> {
-        let text =
-            TextStyle::from((FONT, TABLE_FONT).into_font()).pos(Pos::new(HPos::Left, VPos::Top));
-        let depths = |n: char| {
-            self.cells
-                .iter()
-                .find(|c| c.tag.ends_with(n))
-                .map(|c| minus(&c.label))
-                .and_then(|l| l.split_once(", ").map(|(_, d)| d.replace(' ', "\u{a0}")))
-                .unwrap_or_default()
-        };
-        let key = format!(
-            "R, L, T, N: right, left, top, near face; 1:\u{a0}{}, 2:\u{a0}{}. (d) error after allocation: \
-             (M_x/w,\u{a0}M_z/h), for Eq\u{a0}6's shares (w,\u{a0}h).",
-            depths('1'),
-            depths('2'),
-        );
-        let (aw, _) = area.dim_in_pixel();
-        let lines = wrap(&key, f64::from(aw) - 12.0, |t| {
-            area.estimate_text_size(t, &text)
-                .map(|(w, _)| f64::from(w))
-                .unwrap_or(f64::INFINITY)
-        });
-        let step = table_step(true) as i32;
-        for (k, line) in lines.iter().enumerate() {
-            area.draw(&Text::new(
-                line.clone(),
-                (8, KEY_TOP + k as i32 * step),
-                text.clone(),
-            ))?;
-        }
-        Ok(())
+    /// The depths of the parts numbered `n` ('1', '2'), "z\u{a0}1–3.16", from their labels
+    /// (the one-column caption says what the tags' numbers mean).
+    pub(super) fn depths(&self, n: char) -> String {
+        self.cells
+            .iter()
+            .find(|c| c.tag.ends_with(n))
+            .map(|c| minus(&c.label))
+            .and_then(|l| l.split_once(", ").map(|(_, d)| d.replace(' ', "\u{a0}")))
+            .unwrap_or_default()
     }
 
     /// (d): the table of [`Fig8::table_groups`], each row led by the swatches of its
