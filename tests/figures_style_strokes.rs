@@ -222,12 +222,11 @@ const LOOKS: [&str; 6] = [
 
 /// The figures whose sweep curves are still drawn solid beside a warp one grey from them
 /// (lloyd2005-fig4: ξ = ½ #3F007D, L* 18, by PSM's 21, ξ = −½ #9589C0, 60, by the uniform map's
-/// 54, the review's R6-lloyd2005-fig4-2; lloyd2006-fig5: n′ = 2 by PSM and n′ = 20 #674CA0, 39,
-/// by LiSPSM's 38, R6-lloyd2006-fig5-1): no colour keeps a warp 15 L* from all three sweep
-/// steps (18, 39, 60) at once, so their figure code must dash the sweep. Until it
-/// does they are listed here, and the test requires them to still fail, so that the list is
-/// emptied when they are fixed.
-const AWAITING_DASHES: [&str; 2] = ["lloyd2005-fig4", "lloyd2006-fig5"];
+/// 54, the review's R6-lloyd2005-fig4-2): no colour keeps a warp 15 L* from all three sweep
+/// steps (18, 39, 60) at once, so their figure code must dash the sweep (lloyd2006-fig5 does:
+/// n′ = 2, 20, 100 dashed). Until it does they are listed here, and the test requires them to
+/// still fail, so that the list is emptied when they are fixed.
+const AWAITING_DASHES: [&str; 1] = ["lloyd2005-fig4"];
 
 /// The pairs of line colours of `svg` one grey apart (L* within 15), one of them a warp's or
 /// a scheme's, that do not differ both in dash and in marker.

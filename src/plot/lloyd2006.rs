@@ -133,13 +133,15 @@ fn fig5_panels(n: f64, f: f64, layout: Column) -> Result<(LineChart, LineChart),
         let line = |g: &dyn Fn(f64) -> Result<(f64, f64), crate::Error>| {
             zs.iter().map(|&z| g(z)).collect::<Result<Vec<_>, _>>()
         };
-        // n′ = 100 (the sweep's lightest) and n′ = ∞ (orange) print as one pale grey: n′ = 100
-        // dashed, with diamonds (it had left-pointing triangles against ∞'s downward ones).
-        let dashed = i == FIG5_DASHED;
+        // The sweep (n′ = 2, 20, 100) dashed, the warps solid: each sweep step lies within
+        // 15 L* of a warp's colour (n′ = 2 by PSM, 20 by LiSPSM, 100 by the uniform map; sixth
+        // review, X-10, R6-lloyd2006-fig5-1). n′ = 100 with diamonds (it had left-pointing
+        // triangles against ∞'s downward ones).
+        let dashed = FIG5_SWEEP.contains(&i);
         let style = |s: Series| {
             let s = if dashed { s.dashed() } else { s };
             Series {
-                shape: dashed.then_some(Marker::Diamond),
+                shape: (i == FIG5_DIAMONDS).then_some(Marker::Diamond).or(s.shape),
                 ..s
             }
         };
@@ -207,13 +209,15 @@ const FIG5_MARKS: [[&[f64]; 6]; 2] = [
         &[2.3, 9.5, 12.7],
         &[2.65, 13.5, 17.5],
         &[2.0, 15.0, 18.0],
-        &[3.4, 16.5, 19.5],
+        &[3.8, 16.5, 19.5],
     ],
 ];
 
-/// The curve of Fig 5 drawn dashed with diamonds: n′ = 100 (its colour and n′ = ∞'s print as
-/// one grey).
-const FIG5_DASHED: usize = 4;
+/// Fig 5's sweep curves, drawn dashed: n′ = 2, 20 and 100.
+const FIG5_SWEEP: [usize; 3] = [1, 3, 4];
+
+/// The curve of Fig 5 with diamonds: n′ = 100 (its colour and n′ = ∞'s print as one grey).
+const FIG5_DIAMONDS: usize = 4;
 
 /// Where Fig 5's log axes are labelled: 5×10⁻² (PSM's level), 10⁻¹, 2×10⁻¹ and 10⁰.
 const FIG5_Y_LABELS: [f64; 4] = [0.05, 0.1, 0.2, 1.0];
