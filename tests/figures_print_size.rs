@@ -35,6 +35,17 @@ fn png_inches(png: &[u8]) -> (f64, f64) {
 }
 
 /// The SVG's `width` and `height` in inches (written in points).
+/// The width of the view box of the SVG file at `path`, in layout units.
+fn svg_view_width(path: &std::path::Path) -> f64 {
+    let svg = std::fs::read_to_string(path).unwrap();
+    let at = svg.find("viewBox=\"").unwrap() + "viewBox=\"".len();
+    let v: Vec<f64> = svg[at..at + svg[at..].find('"').unwrap()]
+        .split_whitespace()
+        .map(|x| x.parse().unwrap())
+        .collect();
+    v[2]
+}
+
 fn svg_inches(svg: &str) -> (f64, f64) {
     let head = &svg[..svg.find('>').unwrap()];
     let get = |name: &str| -> f64 {
@@ -96,9 +107,16 @@ fn png_svg_and_pdf_print_at_one_size() {
                 "bare {bare}, scale {scale}: {px} px over {} in",
                 svg.0
             );
-            // The figure is 520 units wide: 520 points, 7.22 inches, times the scale.
+            // The figure is 520 units wide: 520 points, 7.22 inches, times the scale; a bare
+            // one is cut to its ink at one point a unit.
+            let units = if bare {
+                svg_view_width(&d.join(format!("{name}.svg")))
+            } else {
+                520.0
+            };
+            assert!(!bare || units < 520.0, "bare: {units} units wide");
             assert!(
-                (svg.0 - 520.0 / 72.0 * f64::from(scale)).abs() < 1e-9,
+                (svg.0 - units / 72.0 * f64::from(scale)).abs() < 1e-9,
                 "{svg:?}"
             );
             #[cfg(feature = "pdf")]
@@ -137,10 +155,17 @@ fn single_column_prints_240_points_wide_in_every_format() {
             close(png, svg),
             "bare {bare}: PNG {png:?} in, SVG {svg:?} in"
         );
-        assert!((svg.0 - 240.0 / 72.0).abs() < 1e-9, "{svg:?}");
-        // 1800 pixels across: 300 units at 6 pixels each, 540 per inch over 3.33 inches.
+        // 300 units (a bare figure: its ink's width) at 0.8 pt each; 6 pixels a unit, 540 per
+        // inch: 1800 pixels over 3.33 inches for the captioned figure.
+        let units = if bare {
+            svg_view_width(&d.join(format!("{name}.svg")))
+        } else {
+            300.0
+        };
+        assert!(!bare || units < 300.0, "bare: {units} units wide");
+        assert!((svg.0 - units * 0.8 / 72.0).abs() < 1e-9, "{svg:?}");
         let px = u32::from_be_bytes(png_bytes[16..20].try_into().unwrap());
-        assert_eq!(px, 1800);
+        assert_eq!(f64::from(px), units * 6.0);
         assert!(f64::from(px) / svg.0 >= 300.0, "{px} px over {svg:?} in");
         #[cfg(feature = "pdf")]
         {
