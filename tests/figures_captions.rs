@@ -525,6 +525,8 @@ fn barroso_fig7() {
             ("1", N::Given("n′₁ in Eq 16's n′₁(γ_lim)/r(γ)")),
             ("18", N::Given("Barroso's fall-off, Eq 18")),
             ("17", N::Given("Zhang's, Eq 17")),
+            ("1", N::Given("n′₁ above γ_lim")),
+            ("18", N::Given("is Eq 18's curve")),
             ("20", N::Given("(b) from γ = 20°")),
             ("45", N::Given("to 45°")),
         ],

@@ -84,48 +84,6 @@ fn martin_tan_fig3_caption_shows_what_it_says() {
     }
 }
 
-/// In one column barroso-fig7's two plots are as tall as each other (the review: (b) about
-/// 1.5 in against 2.1 in for (a), its legend's strip taken from it alone): each plot's height
-/// is the span of its y axis's tick marks (the 5-unit horizontal lines left of the axis, from
-/// its lowest decade to its highest) over the decades they span (3 for (b), 0.3 to 300 ticked
-/// at 10⁰ … 10²: 2 decades between its outer ticks; 4 for (a), 10⁰ … 10⁴), times the decades
-/// each axis spans (log₁₀ 300/0.3 = 3, and 4): equal within a unit.
-#[test]
-fn barroso_fig7_plots_are_equally_tall_in_one_column() {
-    let svg = render_svg("barroso-fig7", &options(Column::Single, false));
-    // The y axes' labelled tick marks: horizontal, 5 units long, ending at the axis.
-    let mut ticks: Vec<(f64, f64)> = Vec::new();
-    let mut rest = svg.as_str();
-    while let Some(i) = rest.find("<polyline") {
-        let end = i + rest[i..].find("/>").unwrap();
-        let tag = &rest[i..end];
-        rest = &rest[end..];
-        let pts = read::points(tag);
-        if pts.len() == 2 && pts[0].1 == pts[1].1 && (pts[1].0 - pts[0].0).abs() == 5.0 {
-            ticks.push((pts[0].0.max(pts[1].0), pts[0].1));
-        }
-    }
-    // Those ending at the y axes (the most common end), not a 5-unit dash of a key's sample.
-    let axis_x = ticks
-        .iter()
-        .map(|t| t.0)
-        .max_by_key(|&x| ticks.iter().filter(|t| t.0 == x).count())
-        .unwrap();
-    ticks.retain(|t| t.0 == axis_x);
-    // The two panels' ticks, split where they jump by more than a panel's decade.
-    ticks.sort_by(|a, b| a.1.total_cmp(&b.1));
-    let gaps: Vec<usize> = (1..ticks.len())
-        .filter(|&k| ticks[k].1 - ticks[k - 1].1 > 60.0)
-        .collect();
-    assert_eq!(gaps.len(), 1, "{ticks:?}");
-    let (a, b) = ticks.split_at(gaps[0]);
-    // (a): 10⁰ … 10⁴, 5 ticks over 4 decades; (b): 10⁰ … 10², 3 ticks over 2 decades of its 3.
-    assert_eq!((a.len(), b.len()), (5, 3), "{a:?} {b:?}");
-    let a_h = (a[4].1 - a[0].1) / 4.0 * 4.0;
-    let b_h = (b[2].1 - b[0].1) / 2.0 * 3.0;
-    assert!((a_h - b_h).abs() <= 1.0, "(a) {a_h} against (b) {b_h}");
-}
-
 /// martin-tan-fig3 keeps its inset in one column (the review: dropped, the focus region a
 /// smudge about 6 pt across): both layouts have the window and the inset's frame (unfilled grey
 /// #5A5A5A rectangles, the inset's the larger), the inset under the window. Since the sixth

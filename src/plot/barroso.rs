@@ -36,7 +36,7 @@ const CLIPPED_NOTE: (f64, f64) = (7.0, 5000.0);
 /// R6-barroso-fig7-4: their labels in (b) pressed against lines 0.5° apart; named in the key).
 /// The lines' labels are written with their values in [`magnified`].
 const LABELS: [&str; 6] = [
-    "Eq 18 (paper)",
+    "Eq 18 (Barroso)",
     "Eq 17 (Zhang's r)",
     "LiSPSM",
     "n′ of least max m_{z}",
@@ -171,9 +171,9 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     // panels at 110 pt); every symbol the key and (b) use defined (figure review 5, X7).
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         θ\u{a0}=\u{a0}{phi_deg:.0}°; panel (a), γ from 0° to 90°, is left out here. \
+         θ\u{a0}=\u{a0}{phi_deg:.0}°; panel (a), γ from 0° to 90°, is left out. \
          n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for γ\u{a0}≥\u{a0}θ and γ\u{a0}<\u{a0}θ; below \
-         γ_{{lim}} (Eq\u{a0}15) n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r the paper's fall-off \
+         γ_{{lim}} (Eq\u{a0}15) n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r the paper's \
          (Eq\u{a0}18, bold) or Zhang's (Eq\u{a0}17)."
     );
     Ok(Fig7 {
@@ -304,7 +304,7 @@ mod tests {
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
         let (a, b) = (&fig.charts.charts[0], &fig.charts.charts[1]);
         let bold = &a.series[0];
-        assert!(bold.label.as_deref().unwrap().ends_with("(paper)"));
+        assert!(bold.label.as_deref().unwrap().ends_with("(Barroso)"));
         assert!(a.series[1..].iter().all(|s| s.width < bold.width));
         // (a)'s one note is on the curves clipped at its top, not an angle's; (b) has none.
         assert_eq!(a.notes.len(), 1, "{:?}", a.notes);
@@ -460,7 +460,7 @@ mod tests {
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
         let a = &fig.charts.charts[0];
         let label = |i: usize| a.series[i].label.clone().unwrap();
-        assert!(label(0).starts_with("Eq 18 (paper"), "{}", label(0));
+        assert!(label(0).starts_with("Eq 18 (Barroso"), "{}", label(0));
         assert!(label(1).starts_with("Eq 17 (Zhang's"), "{}", label(1));
         for s in a.series.iter().chain(&fig.charts.charts[1].series) {
             let l = s.label.as_deref().unwrap_or("");

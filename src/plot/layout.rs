@@ -227,8 +227,8 @@ impl Figure for Fig8 {
             format!(
                 "Lloyd et al. 2005, Fig. 8: LiSPSM, n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, \
                  θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. R, L, T, N: \
-                 right, left, top, near face; parts 1, 2: {}, {}. M_x, M_z: \
-                 largest error across, in depth; s by M_x, t by M_z.",
+                 right, left, top, near face; parts 1, 2: {}, {}. s by M_x, t by M_z: \
+                 largest error across, in depth.",
                 LIGHT.0,
                 LIGHT.1,
                 self.depths('1'),
@@ -275,7 +275,7 @@ impl Figure for Fig8 {
             let panels = bh.saturating_sub(table_h);
             let (top, table) = body.split_vertically(panels);
             let (a, right) = top.split_horizontally(bw * 50 / 100);
-            let (b, c) = right.split_vertically(panels * 48 / 100);
+            let (b, c) = right.split_vertically(panels * 52 / 100);
             self.draw_faces(&a, &style, SINGLE_INSET_ROW)?;
             self.draw_warp(&b, &ChartStyle { margin: 3, ..style })?;
             self.draw_texture(

@@ -144,11 +144,11 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
          view θ\u{a0}=\u{a0}{phi:.0}° (Zhang's φ); light at \
          γ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). E_p, E_q: aliasing along the \
-         screen's vertical and horizontal (×2: Zhang's span [−1,\u{a0}1]); m\u{a0}⊥\u{a0}light \
-         (Lloyd 2006). LiSPSM's warp \
-         parameter n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
-         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: no scene insets; (a), (b) and \
-         (c) each have their own colour scale.",
+         screen's vertical, horizontal (×2: span [−1,\u{a0}1]); m\u{a0}⊥\u{a0}light \
+         (Lloyd 2006). LiSPSM's \
+         n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
+         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: no scene insets; (a)–(c): \
+         a colour scale each.",
         angles.join(", "),
         lispsm.join(", "),
     );
@@ -156,7 +156,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
          view θ\u{a0}=\u{a0}{phi:.0}°, light at γ\u{a0}=\u{a0}{} from the view direction. \
          E_p, E_q: aliasing along the screen's vertical, horizontal (×2: span \
-         [−1,\u{a0}1]); a colour scale each. Heights at ½ depth scale.",
+         [−1,\u{a0}1]); a colour scale each.",
         angles.join(", "),
     );
     Ok(Fig3 {

@@ -171,7 +171,7 @@ fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
     for symbol in [
         "(Zhang's φ)",
         "(Zhang's θ)",
-        "warp parameter n′",
+        "LiSPSM's n′\u{a0}=",
         "(Zhang's λ)",
     ] {
         assert!(fig.caption.contains(symbol), "{symbol}: {}", fig.caption);
@@ -274,7 +274,8 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
             assert!(named[0].0.contains("rotate(270"), "{}", named[0].0);
         }
     }
-    assert!(fig.single_caption.contains("Heights at ½ depth scale"));
+    // The half scale of heights is in the axis name, "height y (½ scale)", not the caption.
+    assert!(!fig.single_caption.contains("depth scale"));
     for c in [&fig.caption, &fig.single_caption] {
         assert!(
             c.contains("E_p, E_q: aliasing along the screen's vertical"),
@@ -395,6 +396,6 @@ fn height_named_upright_single_ticks_on_middle_rows_and_scales_stated() {
             );
         }
     }
-    assert!(fig.caption.contains("each have their own colour scale"));
+    assert!(fig.caption.contains("(a)–(c): a colour scale each"));
     assert!(fig.single_caption.contains("a colour scale each"));
 }
