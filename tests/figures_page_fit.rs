@@ -150,16 +150,7 @@ fn every_caption_is_at_most_five_lines() {
 /// width. Returns the smallest, with its text.
 fn smallest_printed_text(svg: &str) -> (f64, String) {
     let head = &svg[..svg.find('>').unwrap()];
-    let width_pt = attr(head, "width");
-    let vb = {
-        let at = head.find("viewBox=\"").unwrap() + "viewBox=\"".len();
-        let v: Vec<f64> = head[at..at + head[at..].find('"').unwrap()]
-            .split_whitespace()
-            .map(|x| x.parse().unwrap())
-            .collect();
-        v[2]
-    };
-    let per_unit = width_pt / vb;
+    let per_unit = attr(head, "width") / view_width(head);
     let mut least = (f64::INFINITY, String::new());
     let mut rest = svg;
     while let Some(i) = rest.find("<text ") {
