@@ -6,7 +6,8 @@
 use super::super::Fail;
 use super::fine::{draw_fine_path, fill_fine_polygon, stroke_fine_outline};
 use super::label::{Obstacles, Rect};
-use super::line::{Dash, Marker};
+use super::line::Dash;
+use super::marker::Marker;
 use super::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
