@@ -9,7 +9,7 @@
 //! it in a break of the line.
 
 use super::super::canvas::Fine;
-use super::super::chart::{column, fmt_power, hemisphere_disk, hemisphere_xy, FONT};
+use super::super::chart::{column, dash_pattern, fmt_power, hemisphere_disk, hemisphere_xy, FONT};
 use super::super::{Column, Fail};
 use crate::scheme::sweep::SweepGrid;
 use plotters::coord::Shift;
@@ -218,7 +218,7 @@ pub(super) fn draw_contours<DB: DrawingBackend>(
         let gap = |p: &(f64, f64)| (p.0 - at.0).abs() <= hw && (p.1 - at.1).abs() <= hh;
         for line in &lines {
             for run in line.split(gap).filter(|run| run.len() >= 2) {
-                for dash in dashes(run, &DASHES[k % DASHES.len()]) {
+                for dash in dash_pattern(run, &DASHES[k % DASHES.len()], 1.0) {
                     area.draw(&Fine {
                         points: dash
                             .iter()
@@ -259,41 +259,4 @@ type Label = (String, (f64, f64), (f64, f64), Option<RGBColor>);
 
 fn dist(a: (f64, f64), b: (f64, f64)) -> f64 {
     (a.0 - b.0).hypot(a.1 - b.1)
-}
-
-/// A polyline cut into dashes of `pattern` (lengths on, off, … in units).
-fn dashes(points: &[(f64, f64)], pattern: &[f64]) -> Vec<Vec<(f64, f64)>> {
-    let mut out = Vec::new();
-    let Some(&first) = points.first() else {
-        return out;
-    };
-    let (mut k, mut left) = (0, pattern[0]);
-    let mut cur = vec![first];
-    for w in points.windows(2) {
-        let (mut a, b) = (w[0], w[1]);
-        loop {
-            let d = dist(a, b);
-            if d <= left {
-                left -= d;
-                if k % 2 == 0 {
-                    cur.push(b);
-                }
-                break;
-            }
-            let t = left / d;
-            a = (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
-            if k % 2 == 0 {
-                cur.push(a);
-                out.push(std::mem::take(&mut cur));
-            } else {
-                cur = vec![a];
-            }
-            k += 1;
-            left = pattern[k % pattern.len()];
-        }
-    }
-    if k % 2 == 0 && cur.len() >= 2 {
-        out.push(cur);
-    }
-    out
 }

@@ -211,6 +211,49 @@ pub(crate) fn clip_to_rect(points: &[(f64, f64)], r: &super::label::Rect) -> Vec
     out
 }
 
+/// The pieces of a polyline drawn with a dash `pattern` (lengths on, off, … in pixels, at
+/// `per_unit` pixels per data unit), in data units.
+pub(crate) fn dash_pattern(
+    points: &[(f64, f64)],
+    pattern: &[f64],
+    per_unit: f64,
+) -> Vec<Vec<(f64, f64)>> {
+    let mut out = Vec::new();
+    let Some(&first) = points.first() else {
+        return out;
+    };
+    let len = |k: usize| pattern[k % pattern.len()] / per_unit;
+    let (mut k, mut left) = (0, len(0));
+    let mut cur = vec![first];
+    for w in points.windows(2) {
+        let (mut a, b) = (w[0], w[1]);
+        loop {
+            let d = (b.0 - a.0).hypot(b.1 - a.1);
+            if d <= left {
+                left -= d;
+                if k % 2 == 0 {
+                    cur.push(b);
+                }
+                break;
+            }
+            let t = left / d;
+            a = (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
+            if k % 2 == 0 {
+                cur.push(a);
+                out.push(std::mem::take(&mut cur));
+            } else {
+                cur = vec![a];
+            }
+            k += 1;
+            left = len(k);
+        }
+    }
+    if k % 2 == 0 && cur.len() >= 2 {
+        out.push(cur);
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

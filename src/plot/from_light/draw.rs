@@ -5,8 +5,8 @@
 //! the panels naming the maps' strokes, the frustum's and the split planes'.
 
 use super::super::chart::{
-    boxed_text, build_chart_styled, clip_polyline, column, equal_aspect, frame, plot_size, Axis,
-    Chart2d, ChartStyle, FONT, SWEEP, TITLE_GAP,
+    boxed_text, build_chart_styled, clip_polyline, column, dash_pattern, equal_aspect, frame,
+    plot_size, Axis, Chart2d, ChartStyle, FONT, SWEEP, TITLE_GAP,
 };
 use super::super::{Column, Fail, Figure};
 use super::{FromLight, Panel, SEEN_X, SEEN_Y};
@@ -156,49 +156,6 @@ pub(super) fn choose_corners(
     best.1
 }
 
-/// The pieces of a polyline drawn with a dash `pattern` (lengths on, off, … in pixels, at
-/// `per_unit` pixels per data unit), in data units.
-pub(super) fn dashed(
-    points: &[(f64, f64)],
-    pattern: &[f64],
-    per_unit: f64,
-) -> Vec<Vec<(f64, f64)>> {
-    let mut out = Vec::new();
-    let Some(&first) = points.first() else {
-        return out;
-    };
-    let len = |k: usize| pattern[k % pattern.len()] / per_unit;
-    let (mut k, mut left) = (0, len(0));
-    let mut cur = vec![first];
-    for w in points.windows(2) {
-        let (mut a, b) = (w[0], w[1]);
-        loop {
-            let d = (b.0 - a.0).hypot(b.1 - a.1);
-            if d <= left {
-                left -= d;
-                if k % 2 == 0 {
-                    cur.push(b);
-                }
-                break;
-            }
-            let t = left / d;
-            a = (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
-            if k % 2 == 0 {
-                cur.push(a);
-                out.push(std::mem::take(&mut cur));
-            } else {
-                cur = vec![a];
-            }
-            k += 1;
-            left = len(k);
-        }
-    }
-    if k % 2 == 0 && cur.len() >= 2 {
-        out.push(cur);
-    }
-    out
-}
-
 /// A key item's stroke: colour, width, dash pattern (empty: solid).
 type Stroke = (RGBColor, u32, &'static [f64]);
 
@@ -261,7 +218,7 @@ fn key<DB: DrawingBackend>(
                 let pieces = if pattern.is_empty() {
                     vec![line.to_vec()]
                 } else {
-                    dashed(&line, pattern, 1.0)
+                    dash_pattern(&line, pattern, 1.0)
                 };
                 for piece in pieces {
                     let pts: Vec<(i32, i32)> = piece
@@ -661,7 +618,7 @@ fn draw_panel<DB: DrawingBackend>(
         let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
         let colour = map_colour(i);
         for piece in clip(&corners) {
-            for dash in dashed(&piece, PATTERNS[i % PATTERNS.len()], per_unit) {
+            for dash in dash_pattern(&piece, PATTERNS[i % PATTERNS.len()], per_unit) {
                 chart.draw_series(LineSeries::new(dash, colour.stroke_width(2)))?;
             }
         }
