@@ -102,20 +102,7 @@ impl Marker {
                 .collect(),
             Marker::Cross => {
                 let (o, t) = (r + 1, (r + 1) / 3 + 1);
-                vec![
-                    (-t, -o),
-                    (t, -o),
-                    (t, -t),
-                    (o, -t),
-                    (o, t),
-                    (t, t),
-                    (t, o),
-                    (-t, o),
-                    (-t, t),
-                    (-o, t),
-                    (-o, -t),
-                    (-t, -t),
-                ]
+                cross_corners(o, t).to_vec()
             }
             Marker::Saltire => {
                 // The cross's arms along the diagonals: each corner of the cross turned by 45°.
@@ -124,23 +111,10 @@ impl Marker {
                     let s = std::f64::consts::FRAC_1_SQRT_2;
                     (((x - y) * s).round() as i32, ((x + y) * s).round() as i32)
                 };
-                [
-                    (-t, -o),
-                    (t, -o),
-                    (t, -t),
-                    (o, -t),
-                    (o, t),
-                    (t, t),
-                    (t, o),
-                    (-t, o),
-                    (-t, t),
-                    (-o, t),
-                    (-o, -t),
-                    (-t, -t),
-                ]
-                .into_iter()
-                .map(|(x, y)| turn(x, y))
-                .collect()
+                cross_corners(o, t)
+                    .into_iter()
+                    .map(|(x, y)| turn(x, y))
+                    .collect()
             }
             Marker::Bowtie => {
                 let (o, w) = (r + 1, (r + 1) / 3);
@@ -148,4 +122,23 @@ impl Marker {
             }
         }
     }
+}
+
+/// The twelve corners of a plus sign (+) with arms reaching `o` from its centre and `t` wide on
+/// either side of their axis, in order round the outline.
+fn cross_corners<T: Copy + std::ops::Neg<Output = T>>(o: T, t: T) -> [(T, T); 12] {
+    [
+        (-t, -o),
+        (t, -o),
+        (t, -t),
+        (o, -t),
+        (o, t),
+        (t, t),
+        (t, o),
+        (-t, o),
+        (-t, t),
+        (-o, t),
+        (-o, -t),
+        (-t, -t),
+    ]
 }
