@@ -294,14 +294,16 @@ pub(super) fn fig7() -> Result<Tall, Fail> {
              |ξ|\u{a0}=\u{a0}1 (the report's \"nearly 5 times\"), {g0_2:.2}× with \
              ξ\u{a0}=\u{a0}0."
         )],
-        // One column: the y axes' name without "(log scale)" (the powers of ten say it), so
-        // that it is no longer than the plots, each about 110 units tall.
+        // One column: the y axes' name without "(log scale)", so that it is no longer than
+        // the plots, each about 110 units tall; the panel titles say it instead ("(a) ξ = 0,
+        // log scale": every log axis says so in every form, the seventh review's R7-X-1).
         single_charts: Some(
             charts_double
                 .into_iter()
                 .enumerate()
                 .map(|(i, mut c)| {
                     c.y.label = FIG7_SINGLE_Y.into();
+                    c.title = format!("{}, log scale", c.title);
                     // (a)'s plot, about 110 units tall, has no room between the lines' ends
                     // for the f/n = 10⁴ label: it keeps room under the lowest end for it.
                     if i == 0 {

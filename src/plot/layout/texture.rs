@@ -4,7 +4,7 @@
 use super::{Fig8, SIZE, TAG};
 use crate::plot::chart::{
     boxed_text, build_chart_styled, column, equal_aspect, plot_size, Axis, Chart2d, ChartStyle,
-    FONT, TICK,
+    FONT, TICK, TITLE_GAP,
 };
 use crate::plot::{Column, Fail};
 use glam::DVec2;
@@ -41,35 +41,70 @@ impl Fig8 {
         Ok(())
     }
 
-    /// (c): the texture, square, each partition's rectangle in its look with its tag.
+    /// (c): the texture, square, each partition's rectangle in its look with its tag. One
+    /// column draws its t axis right of the texture ([`Fig8::t_axis_right`]) and the tags of
+    /// parts too small for them left of it ([`Fig8::tags_left`]), so that no tag stands by a
+    /// tick label (the seventh review, R7-2005f8-3: "2048 | L2 -" between the t axis and the
+    /// texture).
     pub(super) fn draw_texture<DB: DrawingBackend>(
         &self,
-        body: &DrawingArea<DB, Shift>,
+        outer: &DrawingArea<DB, Shift>,
         style: &ChartStyle,
     ) -> Result<(), Fail> {
         let n = f64::from(SIZE);
         let title = "(c) texture by Eq 6";
-        // One column's tags of parts too low to hold them stand left of the texture
-        // ([`Fig8::tags_left`]): its s axis starts 0.35 of the texture before 0.
-        let s0 = if column() == Column::Single {
-            -0.35 * n
+        let single = column() == Column::Single;
+        let x = Axis::linear("s (texels)", 0.0, n);
+        // One column: no t axis on the left (no name, no ticks), its label area the tags'.
+        let (y, style) = if single {
+            (
+                Axis::linear("", 0.0, n).labelled_at(&[]),
+                ChartStyle {
+                    y_label_area: TAGS_LEFT,
+                    ..*style
+                },
+            )
         } else {
-            0.0
+            (Axis::linear("t (texels)", 0.0, n), *style)
         };
-        let (x, y) = (
-            Axis::linear("s (texels)", s0, n),
-            Axis::linear("t (texels)", 0.0, n),
-        );
-        // A panel wider than the texture at its height is narrowed, centred, so that equal
-        // aspect widens no range (one column's s ran from −5000 to 2048).
-        let (w, h) = plot_size(body, title, &x, &y, style)?;
-        let spare = (w - h * (n - s0) / n).max(0.0) as u32;
-        let (bw, bh) = body.dim_in_pixel();
-        let body = &body
-            .clone()
-            .shrink((spare / 2, 0), (bw - spare.min(bw / 2), bh));
+        let style = &style;
+        let chart_title = if single { "" } else { title };
+        // A panel wider than the texture at its height is narrowed so that equal aspect widens
+        // no range (one column's s ran from −5000 to 2048): centred across two columns. One
+        // column: the tags' room, the texture and the t axis' room right of it centred, the
+        // chart (untitled) exactly the texture's size, its title centred over the texture.
+        let (w, h) = plot_size(outer, title, &x, &y, style)?;
+        let (bw, bh) = outer.dim_in_pixel();
+        let body = if single {
+            let side = (w - T_AXIS_RIGHT).min(h).max(1.0) as u32;
+            let m = style.margin;
+            // The charts' margins: m above and under, m left and 2m right.
+            let chart_w = (3 * m + TAGS_LEFT + side).min(bw);
+            let group = chart_w + T_AXIS_RIGHT as u32;
+            let left = bw.saturating_sub(group) / 2;
+            let chart_h = (side + 2 * m + style.x_label_area).min(bh);
+            let top = bh - chart_h;
+            // The title as the charts set it (plotters' `titled`: its height and half of it, at
+            // most 5, above and below), then the charts' gap under it.
+            let font = TextStyle::from((FONT, style.title_size).into_font())
+                .pos(Pos::new(HPos::Center, VPos::Top));
+            let (_, text_h) = outer
+                .estimate_text_size(title, &font)
+                .map_err(|e| Fail::Draw(e.to_string()))?;
+            let pad = (text_h / 2).min(5);
+            let title_y = (top + m).saturating_sub(TITLE_GAP + text_h + pad);
+            let centre = left + m + TAGS_LEFT + side / 2;
+            outer.draw(&Text::new(title, (centre as i32, title_y as i32), font))?;
+            outer.clone().shrink((left, top), (chart_w, chart_h))
+        } else {
+            let spare = (w - h).max(0.0) as u32;
+            outer
+                .clone()
+                .shrink((spare / 2, 0), (bw - spare.min(bw / 2), bh))
+        };
+        let body = &body;
         // Equal aspect: the square texture drawn square.
-        let (xa, ya) = equal_aspect(body, title, &x, &y, style)?;
+        let (xa, ya) = equal_aspect(body, chart_title, &x, &y, style)?;
         // Labelled at the texture's ends and middle only: four-digit labels every 500 texels
         // run together on a narrow panel. The s axis' last label, 2048, is written right-aligned
         // to the frame's end below ([`Fig8::last_s_label`]): centred on it, it came within 3.5
@@ -77,14 +112,16 @@ impl Fig8 {
         // R6-lloyd2005-fig8-3).
         // In one column, whose plot is about 60 units wide, s is labelled at its ends only.
         let ends = [0.0, 0.5 * n, n];
-        let s_at = if column() == Column::Single {
-            &ends[..1]
+        let (xa, ya) = if single {
+            (xa.labelled_at(&ends[..1]), ya.labelled_at(&[]))
         } else {
-            &ends[..2]
+            (xa.labelled_at(&ends[..2]), ya.labelled_at(&ends))
         };
-        let (xa, ya) = (xa.labelled_at(s_at), ya.labelled_at(&ends));
-        let mut chart = build_chart_styled(body, title, &xa, &ya, false, style)?;
+        let mut chart = build_chart_styled(body, chart_title, &xa, &ya, false, style)?;
         Self::last_s_label(body, &chart, n, style)?;
+        if single {
+            Self::t_axis_right(outer, &chart, &ends, style)?;
+        }
         let (pw, _) = chart.plotting_area().dim_in_pixel();
         let per_px = (xa.max - xa.min) / f64::from(pw);
         for (i, c) in self.cells.iter().enumerate() {
@@ -134,15 +171,61 @@ impl Fig8 {
                 outside.push((at.0, at.1, c.tag.as_str()));
             }
         }
-        self.tags_left(&mut chart, outside, per_px, &tag_style)
+        self.tags_left(outer, &chart, outside, per_px, &tag_style)
+    }
+
+    /// One column's t axis, right of the texture: its line on the texture's right edge, a
+    /// tick outwards at each of `at` with its label left-aligned after it, and its name
+    /// "t (texels)" reading upwards right of the labels, as the charts draw a left axis.
+    fn t_axis_right<DB: DrawingBackend>(
+        outer: &DrawingArea<DB, Shift>,
+        chart: &Chart2d<'_, DB>,
+        at: &[f64],
+        style: &ChartStyle,
+    ) -> Result<(), Fail> {
+        let (bx, by) = outer.get_base_pixel();
+        let n = f64::from(SIZE);
+        let px = |t: f64| {
+            let (x, y) = chart.backend_coord(&(n, t));
+            (x - bx, y - by)
+        };
+        let tick = TICK as i32;
+        let font = TextStyle::from((FONT, style.tick_size).into_font())
+            .pos(Pos::new(HPos::Left, VPos::Center));
+        let mut widest = 0;
+        for &t in at {
+            let (x, y) = px(t);
+            outer.draw(&PathElement::new(
+                vec![(x, y), (x + tick, y)],
+                BLACK.stroke_width(1),
+            ))?;
+            let label = format!("{}", t as u32);
+            let (w, _) = outer
+                .estimate_text_size(&label, &font)
+                .map_err(|e| Fail::Draw(e.to_string()))?;
+            widest = widest.max(w as i32);
+            outer.draw(&Text::new(label, (x + tick + TICK_GAP, y), font.clone()))?;
+        }
+        let ((x, top), (_, bottom)) = (px(n), px(0.0));
+        let name = TextStyle::from((FONT, style.desc_size).into_font())
+            .transform(FontTransform::Rotate270)
+            .pos(Pos::new(HPos::Center, VPos::Top));
+        outer.draw(&Text::new(
+            "t (texels)",
+            (x + tick + TICK_GAP + widest + NAME_GAP, (top + bottom) / 2),
+            name,
+        ))?;
+        Ok(())
     }
 
     /// (c)'s tags `outside` their rectangles ((s, t) of the rectangle's centre, tag) left of
     /// the texture: right-aligned 5 units left of s = 0, at their parts' heights, spread a
-    /// tag's height apart, each joined by a leader to a point a quarter into its part.
+    /// tag's height apart, each joined by a leader to a point a quarter into its part. Drawn
+    /// on the panel's area `outer` (one column's are left of the chart's plot).
     fn tags_left<DB: DrawingBackend>(
         &self,
-        chart: &mut Chart2d<'_, DB>,
+        outer: &DrawingArea<DB, Shift>,
+        chart: &Chart2d<'_, DB>,
         mut outside: Vec<(f64, f64, &str)>,
         per_px: f64,
         style: &TextStyle<'_>,
@@ -158,19 +241,36 @@ impl Fig8 {
                 ts[k] = ts[k - 1] - step;
             }
         }
+        let (bx, by) = outer.get_base_pixel();
+        let px = |s: f64, t: f64| {
+            let (x, y) = chart.backend_coord(&(s, t));
+            (x - bx, y - by)
+        };
         let x = -4.0 * per_px;
         for ((s, t, tag), ty) in outside.into_iter().zip(ts) {
             let into = 0.25 * s;
-            chart.draw_series(LineSeries::new(
-                [(x + 1.0 * per_px, ty), (into, t)],
+            outer.draw(&PathElement::new(
+                vec![px(x + 1.0 * per_px, ty), px(into, t)],
                 RGBColor(90, 90, 90).stroke_width(1),
             ))?;
-            chart.draw_series(std::iter::once(Text::new(
+            outer.draw(&Text::new(
                 tag.to_string(),
-                (x - 1.0 * per_px, ty),
+                px(x - 1.0 * per_px, ty),
                 style.clone(),
-            )))?;
+            ))?;
         }
         Ok(())
     }
 }
+
+/// One column: the width left of (c)'s texture for the tags of parts too small for them, in
+/// units (a tag 13 units wide, its leader and gaps).
+const TAGS_LEFT: u32 = 24;
+
+/// One column: the width kept right of (c)'s texture for its t axis (tick, "2048", its name).
+const T_AXIS_RIGHT: f64 = 46.0;
+
+/// The gap between a tick's end and its label, and between the labels and the axis' name, in
+/// units (as the charts' left axes: 4 and about 6).
+const TICK_GAP: i32 = 4;
+const NAME_GAP: i32 = 6;
