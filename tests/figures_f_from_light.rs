@@ -121,8 +121,9 @@ fn map_dashes(svg: &str) -> BTreeMap<String, Vec<f64>> {
     let mut by: BTreeMap<String, Vec<f64>> = BTreeMap::new();
     for el in elements(svg, "polyline") {
         // Black: the frustum; grey #6E6E6E: the box of the region a detail enlarges
-        // (barroso-fig5's overviews, figure review 5).
-        if attr(el, "stroke-width") != Some("2")
+        // (barroso-fig5's overviews, figure review 5). The maps' outlines are 4 to 9 wide
+        // (the seventh review, R7-X-3: lines under the frustum's, wider than them).
+        if attr(el, "stroke-width").map_or(0.0, |w| w.parse().unwrap()) < 3.0
             || matches!(attr(el, "stroke"), Some("#000000") | Some("#6E6E6E"))
         {
             continue;
@@ -139,24 +140,39 @@ fn map_dashes(svg: &str) -> BTreeMap<String, Vec<f64>> {
     by
 }
 
-/// The partitions' maps are a sweep (the purple palette: #3F007D, #582A92, #674CA0, #7B6DB4,
-/// #9589C0), never a scheme colour (Okabe–Ito blue #0072B2, vermillion #D55E00, green
-/// #009E73, orange #E69F00, pink #CC79A7), one colour per map; and no two maps share a dash
-/// pattern: their sets of dash lengths (rounded to the unit, clipped pieces aside: the two
-/// most frequent lengths) differ.
+/// The sweep's steps (the purple palette: #3F007D, #582A92, #674CA0, #7B6DB4, #9589C0) and
+/// each one's half tint on white (the even maps' light bands, R7-X-3), computed here.
+fn sweep_and_tints() -> Vec<String> {
+    let sweep = ["#3F007D", "#582A92", "#674CA0", "#7B6DB4", "#9589C0"];
+    let tint = |h: &str| -> String {
+        let c: Vec<u8> = (0..3)
+            .map(|k| u8::from_str_radix(&h[1 + 2 * k..3 + 2 * k], 16).unwrap())
+            .map(|v| (0.5 * f64::from(v) + 0.5 * 255.0).round() as u8)
+            .collect();
+        format!("#{:02X}{:02X}{:02X}", c[0], c[1], c[2])
+    };
+    sweep
+        .iter()
+        .map(|h| h.to_string())
+        .chain(sweep.iter().map(|h| tint(h)))
+        .collect()
+}
+
+/// The partitions' maps are a sweep (the purple palette, or its half tints for the light
+/// bands), never a scheme colour (Okabe–Ito blue #0072B2, vermillion #D55E00, green #009E73,
+/// orange #E69F00, pink #CC79A7), one colour per map; and no two maps share a dash pattern:
+/// their sets of dash lengths (rounded to the unit, clipped pieces aside: the two most
+/// frequent lengths) differ.
 #[test]
 fn maps_take_the_sweep_palette_and_each_its_own_dash() {
-    let sweep = ["#3F007D", "#582A92", "#674CA0", "#7B6DB4", "#9589C0"];
+    let sweep = sweep_and_tints();
     for (name, maps) in [("lloyd2006-fig11", 3), ("barroso-fig5", 4)] {
         for (form, opts) in forms() {
             let d = map_dashes(&svg(name, form, &opts));
             assert_eq!(d.len(), maps, "{name} {form}: {:?}", d.keys());
             let mut patterns = Vec::new();
             for (colour, lens) in &d {
-                assert!(
-                    sweep.contains(&colour.as_str()),
-                    "{name} {form}: map colour {colour}"
-                );
+                assert!(sweep.contains(colour), "{name} {form}: map colour {colour}");
                 let mut count: BTreeMap<i64, usize> = BTreeMap::new();
                 for l in lens {
                     *count.entry(l.round() as i64).or_default() += 1;
@@ -340,63 +356,71 @@ fn the_x_axis_cannot_read_as_minus() {
     }
 }
 
-/// The thin black closed squares of lloyd2006-fig11 (its split planes z = 2 and z = 4): their
-/// corners (min x, min y, max x, max y).
-fn thin_squares(svg: &str) -> Vec<[f64; 4]> {
-    elements(svg, "polyline")
-        .into_iter()
-        .filter(|e| attr(e, "stroke") == Some("#000000") && attr(e, "stroke-width") == Some("1"))
-        .map(points)
-        .filter(|p| p.len() == 5 && p[0] == p[4])
-        .map(|p| read::bbox(&p))
-        .collect()
-}
-
-/// The maps' dashes (width-2 polylines not black) of an SVG, by colour.
-fn map_pieces(svg: &str) -> BTreeMap<String, Vec<Vec<(f64, f64)>>> {
-    let mut by: BTreeMap<String, Vec<Vec<(f64, f64)>>> = BTreeMap::new();
-    for el in elements(svg, "polyline") {
-        if attr(el, "stroke-width") != Some("2") || attr(el, "stroke") == Some("#000000") {
-            continue;
-        }
-        by.entry(attr(el, "stroke").unwrap().to_string())
-            .or_default()
-            .push(points(el));
-    }
-    by
-}
-
-/// lloyd2006-fig11's maps lie on its split planes (each map is the square of its far plane):
-/// drawn on them, the maps' dashes hid the thin black line in their gaps, so map 1 read as
-/// black and purple dashes and the split plane's key matched nothing (figure review 3). Every
-/// dash now runs beside both split planes' squares: at least 1.5 units from every side
-/// (points on a side's line within its span), and both squares are drawn.
+/// Where a map's outline lies on a black line both show (figure review 3: dashes drawn over a
+/// split plane hid it in their gaps; the seventh review, R7-X-3: drawn beside it, 2 units out,
+/// the map read as larger than its square): every black line of the panel is drawn after
+/// (over) every map outline, and each outline is at least 2 units wider than the line it lies
+/// on, so it shows at least a unit on either side. lloyd2006-fig11: maps 1 and 2 on the thin
+/// squares z = 2, 4, map 3 on the far face (2 wide); barroso-fig5 (b): where two maps share an
+/// edge (z = 3.162, z = 10) their widths differ by at least 2 and the narrower is drawn over
+/// the wider, so that both show (R7-B5-3: two maps on one line could not be told apart).
 #[test]
-fn fig11_maps_run_beside_the_split_planes() {
+fn maps_show_on_either_side_of_their_lines() {
     for (form, opts) in forms() {
-        let s = svg("lloyd2006-fig11", form, &opts);
-        let squares = thin_squares(&s);
-        assert_eq!(squares.len(), 2, "{form}: {squares:?}");
-        for (colour, pieces) in map_pieces(&s) {
-            for p in pieces.iter().flatten() {
-                for b in &squares {
-                    let on_side = |x: f64, y: f64| -> f64 {
-                        // The distance from p to the square's outline where p lies across
-                        // from a side (between its ends), else infinite.
-                        let mut d = f64::INFINITY;
-                        if p.1 >= b[1] - 1.0 && p.1 <= b[3] + 1.0 {
-                            d = d.min((p.0 - x).abs());
-                        }
-                        if p.0 >= b[0] - 1.0 && p.0 <= b[2] + 1.0 {
-                            d = d.min((p.1 - y).abs());
-                        }
-                        d
-                    };
-                    let d = on_side(b[0], b[1]).min(on_side(b[2], b[3]));
-                    assert!(
-                        d >= 1.5,
-                        "{form}: a dash of {colour} at {p:?} lies on {b:?}"
+        for (name, from, to) in [
+            ("lloyd2006-fig11", "split plane", None),
+            ("barroso-fig5", "(b)", Some("(c)")),
+        ] {
+            let s = svg(name, form, &opts);
+            let lines = lines_between(&s, from, to);
+            let is_map =
+                |l: &Line| l.width >= 3.0 && l.colour != "#000000" && l.colour != "#6E6E6E";
+            let last_map = lines.iter().rposition(is_map).unwrap();
+            let first_black = lines
+                .iter()
+                .enumerate()
+                .skip(lines.iter().position(is_map).unwrap())
+                .find(|(_, l)| l.colour == "#000000")
+                .unwrap()
+                .0;
+            assert!(last_map < first_black, "{name} {form}: a map over a line");
+            let width: BTreeMap<String, f64> = lines
+                .iter()
+                .filter(|l| is_map(l))
+                .map(|l| (l.colour.clone(), l.width))
+                .collect();
+            let thickest = lines[first_black..]
+                .iter()
+                .filter(|l| l.colour == "#000000")
+                .map(|l| l.width)
+                .fold(0.0, f64::max);
+            assert_eq!(thickest, 2.0, "{name} {form}");
+            for (colour, w) in &width {
+                assert!(*w >= thickest + 2.0, "{name} {form}: {colour} {w} wide");
+            }
+            if name == "barroso-fig5" {
+                // Maps by depth in (b): their edges across, nearest (largest y) first.
+                let mut by: Vec<(f64, String)> = Vec::new();
+                for (colour, _) in &width {
+                    let (_, ys) = sides(
+                        &lines
+                            .iter()
+                            .filter(|l| &l.colour == colour)
+                            .map(|l| l.points.clone())
+                            .collect::<Vec<_>>(),
                     );
+                    by.push((ys[ys.len() - 1], colour.clone()));
+                }
+                by.sort_by(|a, b| b.0.total_cmp(&a.0));
+                for w in by.windows(2) {
+                    let (near, far) = (&w[0].1, &w[1].1);
+                    let (wn, wf) = (width[near], width[far]);
+                    assert!((wn - wf).abs() >= 2.0, "{form}: {near} {wn}, {far} {wf}");
+                    let narrow = if wn < wf { near } else { far };
+                    let wide = if wn < wf { far } else { near };
+                    let last_wide = lines.iter().rposition(|l| &l.colour == wide).unwrap();
+                    let first_narrow = lines.iter().position(|l| &l.colour == narrow).unwrap();
+                    assert!(last_wide < first_narrow, "{form}: {wide} over {narrow}");
                 }
             }
         }
@@ -451,9 +475,11 @@ fn fig11_y_axis_is_centred_on_the_frustum() {
     }
 }
 
-/// The maps' colours stand out from white and from their own 8 % tint: each at least 4:1
+/// The maps' lines stand out from white: each narrow one (under 8 units wide) at least 4:1
 /// against white by WCAG's relative luminance (computed here from the sRGB values), where the
-/// lightest sweep step, #9589C0, is 3.17:1 and was map 4's (figure review 3: "low contrast").
+/// lightest sweep step, #9589C0, is 3.17:1 and was map 4's (figure review 3: "low contrast");
+/// the light bands (the even maps, R7-X-3) are at least 8 wide, the width of a band behind
+/// lines (tests/figures_style_strokes.rs), and a half tint of a sweep step.
 #[test]
 fn map_colours_have_contrast() {
     let lum = |hex: &str| {
@@ -470,12 +496,27 @@ fn map_colours_have_contrast() {
         0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
     };
     assert!((1.05 / (lum("#9589C0") + 0.05) - 3.17).abs() < 0.01);
+    let tints = &sweep_and_tints()[5..];
     for name in FIGS {
         for (form, opts) in forms() {
-            for colour in map_dashes(&svg(name, form, &opts)).keys() {
-                let ratio = 1.05 / (lum(colour) + 0.05);
+            let s = svg(name, form, &opts);
+            let (maps, _) = maps_and_frustum(&lines_between(&s, "split plane", None));
+            let mut bands = 0;
+            for (colour, _) in maps {
+                let w = lines_between(&s, "split plane", None)
+                    .iter()
+                    .find(|l| l.colour == colour)
+                    .unwrap()
+                    .width;
+                if w >= 8.0 {
+                    assert!(tints.contains(&colour), "{name} {form}: band {colour}");
+                    bands += 1;
+                    continue;
+                }
+                let ratio = 1.05 / (lum(&colour) + 0.05);
                 assert!(ratio >= 4.0, "{name} {form}: {colour} at {ratio:.2}:1");
             }
+            assert!(bands >= 1, "{name} {form}");
         }
     }
 }
@@ -581,5 +622,263 @@ fn barroso_alpha_is_the_target_ratio_and_the_far_face_is_named() {
     for (form, opts) in forms().into_iter().take(2) {
         let t = texts(&svg("barroso-fig5", form, &opts));
         assert!(t.iter().any(|x| x == "far face"), "{form}");
+    }
+}
+
+/// A `<polyline>` as drawn: its colour, stroke width and points.
+struct Line {
+    colour: String,
+    width: f64,
+    points: Vec<(f64, f64)>,
+}
+
+/// The polylines of `svg` after the first text whose content starts with `from` and before the
+/// next one starting with `to` (a panel's elements, from its title to the next panel's).
+fn lines_between(svg: &str, from: &str, to: Option<&str>) -> Vec<Line> {
+    let start = svg
+        .find(&format!(">{from}"))
+        .unwrap_or_else(|| panic!("no text {from:?}"));
+    let end = to.map_or(svg.len(), |t| {
+        start
+            + svg[start..]
+                .find(&format!(">{t}"))
+                .unwrap_or(svg.len() - start)
+    });
+    svg[start..end]
+        .lines()
+        .filter(|l| l.starts_with("<polyline"))
+        .map(|l| Line {
+            colour: attr(l, "stroke").unwrap_or("").to_uppercase(),
+            width: num(l, "stroke-width"),
+            points: points(l),
+        })
+        .collect()
+}
+
+/// A panel's maps (their dashes by colour) and the frustum's black lines drawn after them:
+/// the maps' outlines are every stroke at least 3 wide that is neither black nor the grey of
+/// the enlarged region's box (#6E6E6E); the axes, drawn before them, are left out.
+fn maps_and_frustum(lines: &[Line]) -> (BTreeMap<String, Vec<Vec<(f64, f64)>>>, Vec<&Line>) {
+    let is_map = |l: &Line| l.width >= 3.0 && l.colour != "#000000" && l.colour != "#6E6E6E";
+    let first = lines.iter().position(is_map).expect("a map outline");
+    let mut maps: BTreeMap<String, Vec<Vec<(f64, f64)>>> = BTreeMap::new();
+    for l in lines.iter().filter(|l| is_map(l)) {
+        maps.entry(l.colour.clone())
+            .or_default()
+            .push(l.points.clone());
+    }
+    let black = lines[first..]
+        .iter()
+        .filter(|l| l.colour == "#000000")
+        .collect();
+    (maps, black)
+}
+
+/// Each dash of a map outline runs along the rectangle, turning at most at its corners: each
+/// of its segments is horizontal or vertical; its fixed coordinate, and whether it is an x (a
+/// vertical segment).
+fn dash_sides(dashes: &[Vec<(f64, f64)>]) -> Vec<(bool, f64)> {
+    dashes
+        .iter()
+        .flat_map(|d| d.windows(2))
+        .filter(|w| w[0] != w[1])
+        .map(|w| {
+            let b = read::bbox(w);
+            if b[2] - b[0] <= 1e-6 {
+                (true, b[0])
+            } else {
+                assert!(b[3] - b[1] <= 1e-6, "a slanted dash {w:?}");
+                (false, b[1])
+            }
+        })
+        .collect()
+}
+
+/// A map outline's sides read from its dashes: the x's of its vertical segments and the y's of
+/// its horizontal ones, each side once (a side's dashes share their coordinate exactly).
+fn sides(dashes: &[Vec<(f64, f64)>]) -> (Vec<f64>, Vec<f64>) {
+    let (mut xs, mut ys) = (Vec::new(), Vec::new());
+    for (vertical, at) in dash_sides(dashes) {
+        let v = if vertical { &mut xs } else { &mut ys };
+        if !v.iter().any(|&u: &f64| (u - at).abs() < 1e-9) {
+            v.push(at);
+        }
+    }
+    xs.sort_by(f64::total_cmp);
+    ys.sort_by(f64::total_cmp);
+    (xs, ys)
+}
+
+/// Whether `half` is `d` tan θ page units (`k` a light-space unit) for one of the depths
+/// `planes`, within `tol`: that depth.
+fn on_square(half: f64, planes: &[f64], t: f64, k: f64, tol: f64) -> Option<f64> {
+    planes
+        .iter()
+        .copied()
+        .find(|d| (half - d * t * k).abs() <= tol + 1e-9)
+}
+
+/// R7-X-3 / R7-2006f11-1 (lloyd2006-fig11): every map outline lies exactly on its far plane's
+/// square, half-side z tan θ for z = 2, 4, 8 (the self-similar splits n (f/n)^{i/3} of n = 1,
+/// f = 8), within 0.1 pt, in every form; the old outlines lay 2 units outside (the review
+/// measured ±1.20, 2.38, 4.73 against ±1.155, 2.309, 4.619). The page's scale is read from the
+/// far face (half-side f tan θ), the centre from the near and far faces, and the thin
+/// split-plane squares are checked at z = 2 and 4 too.
+#[test]
+fn fig11_maps_lie_on_their_far_planes() {
+    let t = 30f64.to_radians().tan();
+    let planes: Vec<f64> = (0..4).map(|i| 8f64.powf(f64::from(i) / 3.0)).collect();
+    for (form, opts) in forms() {
+        let s = svg("lloyd2006-fig11", form, &opts);
+        let tol = 0.1 / read::points_per_unit(&s);
+        let lines = lines_between(&s, "split plane", None);
+        let (maps, black) = maps_and_frustum(&lines);
+        let closed: Vec<([f64; 4], f64)> = black
+            .iter()
+            .filter(|l| l.points.len() == 5 && l.points[0] == l.points[4])
+            .map(|l| (read::bbox(&l.points), l.width))
+            .collect();
+        let half = |b: &[f64; 4]| 0.25 * (b[2] - b[0] + b[3] - b[1]);
+        let centre = |b: &[f64; 4]| (0.5 * (b[0] + b[2]), 0.5 * (b[1] + b[3]));
+        let mut thick: Vec<[f64; 4]> = closed.iter().filter(|c| c.1 == 2.0).map(|c| c.0).collect();
+        thick.sort_by(|a, b| half(a).total_cmp(&half(b)));
+        assert_eq!(thick.len(), 2, "{form}: {thick:?}");
+        let (near, far) = (thick[0], thick[1]);
+        let k = half(&far) / (8.0 * t);
+        let c = centre(&far);
+        assert!((half(&near) - t * k).abs() <= tol, "{form}: near {near:?}");
+        let mut thin: Vec<[f64; 4]> = closed.iter().filter(|c| c.1 == 1.0).map(|c| c.0).collect();
+        thin.sort_by(|a, b| half(a).total_cmp(&half(b)));
+        assert_eq!(thin.len(), 2, "{form}: {thin:?}");
+        for (b, z) in thin.iter().zip(&planes[1..3]) {
+            assert!(
+                (half(b) - z * t * k).abs() <= tol,
+                "{form}: the z = {z} square's half-side {} against {}",
+                half(b),
+                z * t * k
+            );
+        }
+        // Each map's sides: two across, two up, on the square of z = 2, 4 or 8, one each.
+        assert_eq!(maps.len(), 3, "{form}: {:?}", maps.keys());
+        let mut found = Vec::new();
+        for (colour, dashes) in &maps {
+            let (xs, ys) = sides(dashes);
+            assert!(
+                xs.len() == 2 && ys.len() == 2,
+                "{form}: {colour} {xs:?} {ys:?}"
+            );
+            let b = [xs[0], ys[0], xs[1], ys[1]];
+            let z = on_square(half(&b), &planes[1..], t, k, tol).unwrap_or_else(|| {
+                panic!(
+                    "{form}: {colour}'s half-sides {:?} on no far plane's square {:?}",
+                    (0.5 * (b[2] - b[0]), 0.5 * (b[3] - b[1])),
+                    planes[1..].iter().map(|z| z * t * k).collect::<Vec<_>>()
+                )
+            });
+            for h in [0.5 * (b[2] - b[0]), 0.5 * (b[3] - b[1])] {
+                assert!(
+                    (h - z * t * k).abs() <= tol + 1e-9,
+                    "{form}: {colour} {b:?}"
+                );
+            }
+            let m = centre(&b);
+            assert!(
+                (m.0 - c.0).abs() <= tol + 1e-9 && (m.1 - c.1).abs() <= tol + 1e-9,
+                "{form}: {colour} centred at {m:?}, the frustum at {c:?}"
+            );
+            found.push(z);
+        }
+        found.sort_by(f64::total_cmp);
+        assert_eq!(found, planes[1..].to_vec(), "{form}");
+    }
+}
+
+/// R7-X-3 / R7-B5-2 (barroso-fig5 (b), the light overhead, z ≤ 10): the edge-on planes z = 1,
+/// 3.162, 10 lie at Eq 5's depths (100^{i/4}: the z = 3.162 line where the near face and
+/// the z = 10 line put it, within 0.1 pt); every map outline's edge across lies on one of them
+/// and its sides at x = ±z tan θ of its far plane, within 0.1 pt; where two maps share an edge
+/// both are drawn on it: at z = 3.162 maps 1 and 2, at z = 10 maps 2 and 3 (the review read
+/// map 2's top at 10.3 and map 3's bottom at 9.7). (d), the light behind: each map's dashes
+/// lie on its far plane's square (half-side z tan θ), as in lloyd2006-fig11.
+#[test]
+fn barroso_maps_lie_on_their_planes() {
+    let t = 30f64.to_radians().tan();
+    let z: Vec<f64> = (0..5).map(|i| 100f64.powf(f64::from(i) / 4.0)).collect();
+    for (form, opts) in forms() {
+        let s = svg("barroso-fig5", form, &opts);
+        let tol = 0.1 / read::points_per_unit(&s);
+        let lines = lines_between(&s, "(b)", Some("(c)"));
+        let (maps, black) = maps_and_frustum(&lines);
+        // The edge-on planes: black horizontal segments (y, left, right), near face first.
+        let mut flat: Vec<(f64, f64, f64)> = black
+            .iter()
+            .filter(|l| l.points.len() == 2 && l.points[0].1 == l.points[1].1)
+            .map(|l| {
+                let (a, b) = (l.points[0].0, l.points[1].0);
+                (l.points[0].1, a.min(b), a.max(b))
+            })
+            .collect();
+        flat.sort_by(|a, b| b.0.total_cmp(&a.0));
+        assert_eq!(flat.len(), 3, "{form}: {flat:?}");
+        let y = |d: f64| flat[0].0 + (d - z[0]) * (flat[2].0 - flat[0].0) / (z[2] - z[0]);
+        assert!(
+            (flat[1].0 - y(z[1])).abs() <= tol,
+            "{form}: the z = 3.162 plane at {} against {}",
+            flat[1].0,
+            y(z[1])
+        );
+        // Across: the z = 10 plane is 2 · 10 tan θ long, centred on the axis.
+        let k = (flat[2].2 - flat[2].1) / (2.0 * z[2] * t);
+        let cx = 0.5 * (flat[2].1 + flat[2].2);
+        let mut at_plane: BTreeMap<usize, Vec<String>> = BTreeMap::new();
+        for (colour, dashes) in &maps {
+            let (xs, ys) = sides(dashes);
+            for at in ys {
+                let i = (0..3)
+                    .find(|&i| (at - y(z[i])).abs() <= tol + 1e-9)
+                    .unwrap_or_else(|| {
+                        panic!(
+                            "{form}: an edge of {colour} at y {at}, the planes at {:?}",
+                            [y(z[0]), y(z[1]), y(z[2])]
+                        )
+                    });
+                at_plane.entry(i).or_default().push(colour.clone());
+            }
+            if xs.len() == 2 {
+                let h = 0.5 * (xs[1] - xs[0]);
+                assert!(
+                    on_square(h, &z[1..], t, k, tol).is_some(),
+                    "{form}: {colour}'s half-width {h}, no far plane's"
+                );
+                assert!((0.5 * (xs[0] + xs[1]) - cx).abs() <= tol + 1e-9, "{form}");
+            }
+        }
+        for i in [1, 2] {
+            let c = at_plane.get(&i).cloned().unwrap_or_default();
+            assert_eq!(c.len(), 2, "{form}: maps on z = {}: {c:?}", z[i]);
+        }
+        // (d): the light behind, squares; the scale from z = 10's (the largest thin one).
+        let lines = lines_between(&s, "(d)", Some("(e)"));
+        let (maps, black) = maps_and_frustum(&lines);
+        let big = black
+            .iter()
+            .filter(|l| l.width == 1.0 && l.points.len() == 5)
+            .map(|l| read::bbox(&l.points))
+            .max_by(|a, b| (a[2] - a[0]).total_cmp(&(b[2] - b[0])))
+            .unwrap();
+        let k = 0.5 * (big[2] - big[0]) / (z[2] * t);
+        assert!(maps.len() >= 2, "{form}: (d) {:?}", maps.keys());
+        for (colour, dashes) in &maps {
+            let (xs, ys) = sides(dashes);
+            for v in [xs, ys] {
+                if v.len() == 2 {
+                    let h = 0.5 * (v[1] - v[0]);
+                    assert!(
+                        on_square(h, &z[1..], t, k, tol).is_some(),
+                        "{form}: (d) {colour}'s half-side {h}, no far plane's"
+                    );
+                }
+            }
+        }
     }
 }

@@ -118,10 +118,10 @@ fn fig11_frame_has_no_empty_band_above() {
 }
 
 /// lloyd2006-fig11 (R6-lloyd2006-fig11-3): the near face's dimension line (as long as the near
-/// face is wide) lies at least 6 units under map 2's outline (drawn 2 units outside the z = 4
-/// square, the middle thin square), so that its 4-unit bars end clear of it; its label ends
-/// above the far face; the far face's label starts at least 4 units under the far face (map
-/// 3's outline, 2 wide, lies 2 units outside it).
+/// face is wide) lies at least 6 units under map 2's outline (on the z = 4 square, the middle
+/// thin square, reaching half its width under it: the seventh review, R7-X-3), so that its
+/// 4-unit bars end clear of it; its label ends above the far face; the far face's label starts
+/// at least 4 units under map 3's outline (on the far face, reaching half its width under it).
 #[test]
 fn fig11_dimensions_clear_the_maps_outlines() {
     let font = read::Font::dejavu();
@@ -130,6 +130,24 @@ fn fig11_dimensions_clear_the_maps_outlines() {
         let thick = squares(&s, "2");
         let (far, near) = (thick[0], thick[1]);
         let z4 = squares(&s, "1")[0];
+        // Each map outline's reach beyond its square: half its stroke (map 2 the widest).
+        let reach = |colour_not: &[&str], widest: bool| -> f64 {
+            let w = elements(&s, "polyline")
+                .into_iter()
+                .filter(|e| {
+                    let c = read::attr_str(e, "stroke").unwrap_or("");
+                    !colour_not.contains(&c)
+                })
+                .filter_map(|e| read::attr(e, "stroke-width"))
+                .filter(|&w| w >= 3.0);
+            0.5 * if widest {
+                w.fold(0.0, f64::max)
+            } else {
+                w.fold(f64::INFINITY, f64::min)
+            }
+        };
+        let grey = ["#000000", "#949494", "#5A5A5A"];
+        let (wide, narrow) = (reach(&grey, true), reach(&grey, false));
         let near_w = near[2] - near[0];
         let dim = black(&s, "1")
             .into_iter()
@@ -138,10 +156,10 @@ fn fig11_dimensions_clear_the_maps_outlines() {
             })
             .unwrap_or_else(|| panic!("{form}: no line {near_w} long"));
         assert!(
-            dim[0].1 - (z4[3] + 2.0) >= 6.0,
+            dim[0].1 - (z4[3] + wide) >= 6.0,
             "{form}: the dimension at y {} is {} under map 2's outline",
             dim[0].1,
-            dim[0].1 - (z4[3] + 2.0)
+            dim[0].1 - (z4[3] + wide)
         );
         let texts = read::texts(&font, &s);
         let label = |t: &str| texts.iter().find(|x| x.content == t).unwrap().bbox;
@@ -152,8 +170,8 @@ fn fig11_dimensions_clear_the_maps_outlines() {
         );
         let f = label("2f tan θ");
         assert!(
-            f[1] >= far[3] + 4.0,
-            "{form}: 2f tan θ at {f:?}, far face {far:?}"
+            f[1] >= far[3] + narrow + 4.0,
+            "{form}: 2f tan θ at {f:?}, far face {far:?}, map 3 {narrow} under it"
         );
     }
 }

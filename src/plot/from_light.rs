@@ -6,8 +6,8 @@
 //! The frustum's edges and the split planes' cross-sections are projected along the light with
 //! the crate's light space ([`crate::maps::light_space`], the view direction as its axis); the
 //! split depths come from [`crate::analytic::partition::z_splits`]. Each partition's orthographic
-//! map (ZP) is the light-space bounding rectangle of its corners, drawn dashed, so that the
-//! overlap of the maps shows.
+//! map (ZP) is the light-space bounding rectangle of its corners, its outline drawn exactly on
+//! it, dashed, so that the overlap of the maps shows.
 
 use super::Fail;
 use crate::analytic::partition::{z_splits, SplitScheme};
@@ -342,8 +342,9 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
     // outline, carried there by extension lines from the face's corners, so that its label
     // covers no line (issue 25: under the face it sat on the frustum's edges and the nearest
     // map; figure review 3: between z = 2 and z = 4 its box covered the z = 4 map's edge in one
-    // column; the sixth review, R6-lloyd2006-fig11-3: its bars ran up to map 2's outline).
-    let near_dim = -(4.0 * view.tan_half_fov() + 0.6);
+    // column; the sixth review, R6-lloyd2006-fig11-3: its bars ran up to map 2's outline; 0.8
+    // under the square since map 2's outline is a band on it, R7-X-3, 4.5 units under it).
+    let near_dim = -(4.0 * view.tan_half_fov() + 0.8);
     p.extensions = vec![
         [DVec2::new(-sn, -sn), DVec2::new(-sn, near_dim)],
         [DVec2::new(sn, -sn), DVec2::new(sn, near_dim)],

@@ -30,7 +30,7 @@ pub(crate) use aspect::*;
 pub(crate) use axis::*;
 pub(crate) use bar::*;
 pub(crate) use colour_map::ColourMap;
-pub(crate) use fine::dash_pattern;
+pub(crate) use fine::{dash_pattern, draw_fine_line};
 pub(crate) use heat::*;
 pub(crate) use label::*;
 pub(crate) use line::*;

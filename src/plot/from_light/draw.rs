@@ -5,8 +5,8 @@
 //! the panels naming the maps' strokes, the frustum's and the split planes'.
 
 use super::super::chart::{
-    boxed_text, build_chart_styled, clip_polyline, column, dash_pattern, equal_aspect, frame,
-    plot_size, Axis, Chart2d, ChartStyle, FONT, SWEEP, TITLE_GAP,
+    boxed_text, build_chart_styled, clip_polyline, column, dash_pattern, draw_fine_line,
+    equal_aspect, frame, plot_size, Axis, Chart2d, ChartStyle, Dash, FONT, SWEEP, TITLE_GAP,
 };
 use super::super::{Column, Fail, Figure};
 use super::{FromLight, Panel, SEEN_X, SEEN_Y};
@@ -17,11 +17,12 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// Each partition's map outline, nearest partition first: its dash pattern (lengths on, off,
 /// on, off… in units, repeated). The maps' colours are steps of one sequential palette, so each
-/// also has its own pattern: short dashes, dots, dash-dot, long dashes (the third dash-dot, so
-/// that lloyd2006-fig11's maps 1 and 3 differ in kind, not in dash length, in greyscale).
+/// also has its own pattern: short dashes, square dots, dash-dot, long dashes (the third
+/// dash-dot, so that lloyd2006-fig11's maps 1 and 3 differ in kind, not in dash length, in
+/// greyscale).
 pub(in super::super) const PATTERNS: [&[f64]; 4] = [
     &[6.0, 3.0],
-    &[2.0, 3.0],
+    &[4.0, 3.0],
     &[12.0, 3.0, 2.0, 3.0],
     &[14.0, 4.0],
 ];
@@ -33,12 +34,40 @@ pub(in super::super) fn map_colour(i: usize) -> RGBColor {
     SWEEP[i.min(3)]
 }
 
-/// How far a map's outline is drawn outside its rectangle, in units: a map's edge lies on a
-/// cross-section (every map of a light behind, each map's near and far edges of a light
-/// overhead), and drawn on it the dashes hid the black line in their gaps, so that the map read
-/// as black and purple dashes and the split plane as nothing (figure review 3). Beside it both
-/// read as their keys.
-const MAP_OFFSET: f64 = 2.0;
+/// The odd maps' outlines (1, 3): narrow lines of their colour; the even ones' (2, 4): wide
+/// bands of their colour's tint (this share of it on white). Each outline lies exactly on its
+/// rectangle (the seventh review, R7-X-3: drawn 2 units outside it, the maps read as larger
+/// than the squares they equal), under the frustum's black lines and wider than them, so that
+/// where a map's edge lies on a cross-section both show: the black line with the map's dashes
+/// on either side of it (figure review 3: dashes drawn over the line hid it in their gaps).
+/// Where two maps share an edge (a light overhead: map i's far edge is map i + 1's near one),
+/// one is narrow and dark and the other a wide light band under it, both showing; maps 3 and
+/// 4 of barroso-fig5 (f), two lavenders of close luminance, differ so too (R7-B5-3).
+/// Two columns' widths; one column's are a unit narrower, its panels half as wide (a band
+/// stays [`MAP_BAND`] − 1 = 8 wide, the least of a light band behind lines).
+const MAP_NARROW: u32 = 5;
+const MAP_BAND: u32 = 9;
+const MAP_TINT: f64 = 0.5;
+
+/// Map `i`'s outline (0: the nearest): its colour, stroke width and dash pattern.
+fn map_stroke(i: usize) -> (RGBColor, u32, &'static [f64]) {
+    let c = map_colour(i);
+    let pattern = PATTERNS[i % PATTERNS.len()];
+    let less = u32::from(column() == Column::Single);
+    if i.is_multiple_of(2) {
+        (c, MAP_NARROW - less, pattern)
+    } else {
+        let mix = |v: u8| (MAP_TINT * f64::from(v) + (1.0 - MAP_TINT) * 255.0).round() as u8;
+        (
+            RGBColor(mix(c.0), mix(c.1), mix(c.2)),
+            MAP_BAND - less,
+            pattern,
+        )
+    }
+}
+
+/// How far a map's outline reaches outside its rectangle, in units: half the wide outline.
+const MAP_REACH: f64 = MAP_BAND as f64 / 2.0;
 
 /// The stroke widths of the frustum's edges (its near and far faces and the side edges) and of
 /// the split planes' cross-sections.
@@ -50,9 +79,9 @@ const DIM_BAR: f64 = 4.0;
 
 /// How far below the edge it measures a dimension line with its label in a break is drawn,
 /// in units, for `label`-size text: the label's half height, its box's pad and a gap of 2
-/// below a map's outline drawn [`MAP_OFFSET`] outside the edge, 2 wide.
+/// below a map's outline on the edge (reaching [`MAP_REACH`] outside it).
 fn dim_clear(label: u32) -> f64 {
-    MAP_OFFSET + 2.0 + 2.0 + 0.65 * f64::from(label) + 2.0
+    MAP_REACH + 2.0 + 0.65 * f64::from(label) + 2.0 + 2.0
 }
 
 /// A panel title's distance from its cell's left edge, in units.
@@ -179,10 +208,7 @@ fn key<DB: DrawingBackend>(
     let (gap, space) = (0.3 * f64::from(size), f64::from(size));
     let mut items: Vec<(Option<Stroke>, String)> = vec![(None, "Maps, nearest first:".into())];
     for i in 0..maps {
-        items.push((
-            Some((map_colour(i), 2, PATTERNS[i % PATTERNS.len()])),
-            format!("{}", i + 1),
-        ));
+        items.push((Some(map_stroke(i)), format!("{}", i + 1)));
     }
     items.push((Some((BLACK, FRUSTUM_WIDTH, &[])), "frustum".into()));
     items.push((Some((BLACK, PLANE_WIDTH, &[])), "split plane".into()));
@@ -446,11 +472,11 @@ fn draw_panel<DB: DrawingBackend>(
     let (full, _) = whole.split_horizontally(cw - sz.gutter);
     let (pw, ph) = plot_size(&full, &title, &x0, &y0, style)?;
     let per_px = ((hi.x - lo.x) / pw).max((hi.y - lo.y) / ph);
-    // Room for the maps' outlines, drawn [`MAP_OFFSET`] outside their rectangles and 2 wide:
+    // Room for the maps' outlines, reaching [`MAP_REACH`] outside their rectangles:
     // the outermost map's lies outside the drawing (the 3 % margin is 1.4 units in a 46-unit
     // plot).
     let grow = DVec2::splat(if p.window.is_none() {
-        (MAP_OFFSET + 2.0) * per_px
+        (MAP_REACH + 0.5) * per_px
     } else {
         0.0
     });
@@ -584,9 +610,25 @@ fn draw_panel<DB: DrawingBackend>(
             LEADER.stroke_width(1),
         ))?;
     }
-    let mut solid = |pts: &[DVec2], width: u32| -> Result<(), Fail> {
+    // The maps' outlines first, exactly on their rectangles, the wide ones under the narrow
+    // ones (where two maps share an edge, the wide one shows on either side of the narrow), all
+    // under the frustum's black lines ([`MAP_NARROW`]); at a tenth of a unit ([`draw_fine_line`]),
+    // as the black lines, so that an outline and the line it lies on coincide.
+    let mut order: Vec<usize> = (0..p.maps.len()).collect();
+    order.sort_by_key(|&i| std::cmp::Reverse(map_stroke(i).1));
+    for i in order {
+        let (a, b) = p.maps[i];
+        let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
+        let (colour, width, pattern) = map_stroke(i);
+        for piece in clip(&corners) {
+            for dash in dash_pattern(&piece, pattern, per_unit) {
+                draw_fine_line(&chart, &dash, colour, width, Dash::Solid)?;
+            }
+        }
+    }
+    let solid = |pts: &[DVec2], width: u32| -> Result<(), Fail> {
         for piece in clip(pts) {
-            chart.draw_series(LineSeries::new(piece, BLACK.stroke_width(width)))?;
+            draw_fine_line(&chart, &piece, BLACK, width, Dash::Solid)?;
         }
         Ok(())
     };
@@ -610,23 +652,10 @@ fn draw_panel<DB: DrawingBackend>(
     for i in 0..4 {
         solid(&[first[i], far[i]], FRUSTUM_WIDTH)?;
     }
-    // The maps' outlines on top of the frustum's, each [`MAP_OFFSET`] outside its rectangle, so
-    // that a map whose edge lies on a cross-section and the cross-section both show.
-    let off = DVec2::splat(MAP_OFFSET / per_unit);
-    for (i, &(a, b)) in p.maps.iter().enumerate() {
-        let (a, b) = (a - off, b + off);
-        let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
-        let colour = map_colour(i);
-        for piece in clip(&corners) {
-            for dash in dash_pattern(&piece, PATTERNS[i % PATTERNS.len()], per_unit) {
-                chart.draw_series(LineSeries::new(dash, colour.stroke_width(2)))?;
-            }
-        }
-    }
     // The region a detail panel enlarges, a grey box on top of the drawing.
     if let Some((a, b)) = p.enlarged {
-        // Outside the maps' outlines round it (drawn MAP_OFFSET out), so that it shows.
-        let out = DVec2::splat((MAP_OFFSET + 3.0) / per_unit);
+        // Outside the maps' outlines round it (reaching MAP_REACH out), so that it shows.
+        let out = DVec2::splat((MAP_REACH + 2.0) / per_unit);
         let (a, b) = (a - out, b + out);
         let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
         for piece in clip(&corners) {
