@@ -882,3 +882,50 @@ fn barroso_maps_lie_on_their_planes() {
         }
     }
 }
+
+/// R7-2006f11-2 (lloyd2006-fig11): the four plane labels stand at their own corners' heights, so
+/// that every leader runs straight (the review: "n = 1"'s leader bent while the others were
+/// straight, its label spread 5 units below its corner): each label's centre line is within
+/// half a unit of its anchor dot's height across two columns and bare, and within 4 units in one
+/// column, where the corners of n = 1 and z = 2 are 8 units apart (it was 8 below).
+#[test]
+fn fig11_labels_at_their_corners_heights() {
+    for (form, opts) in forms() {
+        let s = svg("lloyd2006-fig11", form, &opts);
+        let mut dots: Vec<f64> = elements(&s, "circle")
+            .into_iter()
+            .filter(|e| attr(e, "fill") == Some("#5A5A5A"))
+            .map(|e| num(e, "cy"))
+            .collect();
+        dots.sort_by(f64::total_cmp);
+        let y = |label: &str| {
+            let i = s.find(&format!(">{label}<")).unwrap();
+            num(&s[s[..i].rfind("<text").unwrap()..i], "y")
+        };
+        // Top to bottom, as the dots.
+        let labels = [y("f = 8"), y("z = 4"), y("z = 2"), y("n = 1")];
+        let most = if form == "single" { 4.0 } else { 0.5 };
+        for (l, d) in labels.iter().zip(&dots) {
+            assert!(
+                (l - d).abs() <= most,
+                "{form}: labels {labels:?}, dots {dots:?}"
+            );
+        }
+    }
+}
+
+/// R7-B5-4 (barroso-fig5, two columns): the details (b), (d), (f) have no y name of their own
+/// and ten times smaller ticks than their overviews; the caption says they share the units.
+#[test]
+fn barroso_caption_says_the_details_share_the_units() {
+    let t = texts(&svg("barroso-fig5", "double", &Options::default()));
+    let caption = t
+        .iter()
+        .skip_while(|x| !x.starts_with("Barroso"))
+        .cloned()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(caption.contains("same units"), "{caption}");
+    // The ticks: (a) reads 100 and (b) 10 up, in the same units.
+    assert!(t.iter().any(|x| x == "100") && t.iter().any(|x| x == "10"));
+}

@@ -290,8 +290,8 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
          Light perpendicular to the view, (c) parallel: Eq\u{a0}5's splits \
          z\u{a0}=\u{a0}{}. (e), not in the paper: light {gamma_deg:.0}° from the view, \
          target ratio α\u{a0}=\u{a0}{ADAPTIVE_RATIO} (Barroso's Eq\u{a0}19), \
-         z\u{a0}=\u{a0}{}; the thick line across is the far face's edge. (b), (d), (f) \
-         enlarge the grey boxes.",
+         z\u{a0}=\u{a0}{}; the thick line is the far face's edge. (b), (d), (f) enlarge \
+         the grey boxes, same units.",
         fmt_planes(ss.planes()),
         fmt_planes(ad.planes()),
         n = view.near(),
