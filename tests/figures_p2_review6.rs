@@ -294,7 +294,8 @@ fn strokes(svg: &str, colour: &str, width: &str) -> Vec<Vec<(f64, f64)>> {
 /// #1E1E1E, left of x = 173 and above y = 270: the first of three disks across 520 units, in
 /// the first of two rows) holds dashed black
 /// contour lines 2 units wide, at least 100 dashes, every point within the disk (half a line
-/// width outside the horizon at most), and none in any other panel; their labels "10⁶" and
+/// width outside the horizon at most), and none in any other panel (the key's level samples of
+/// their styles under the key disk aside); their labels "10⁶" and
 /// "1.5×10⁶" (a `<tspan>` superscript 6, read "106" and "1.5×106") are set at 10.5 units, black,
 /// their centres at most 0.85 of the radius from the disk's centre. The old figure drew no
 /// line 2 units wide and no such label.
@@ -334,8 +335,16 @@ fn fig7_a_has_labelled_contours_inside_its_disk() {
                 );
             }
         }
-        // The other panels' dashes: barroso-style 2-unit black lines are the contours only.
-        assert_eq!(in_a.len(), dashes.len(), "{form}: contours outside (a)");
+        // The other panels' dashes: 2-unit black lines are the contours only, and the key's
+        // samples of their styles (R7-2006f7-1), level, under the key disk in the last third
+        // of the page's width and its second row.
+        for p in dashes.iter().filter(|p| p.iter().any(|q| q.0 >= 173.0)) {
+            assert!(
+                p.iter()
+                    .all(|q| q.0 > 346.0 && q.1 > 270.0 && q.1 == p[0].1),
+                "{form}: a contour outside (a): {p:?}"
+            );
+        }
         let texts = read::texts(&font, &s);
         for want in ["10", "1.5×10"] {
             let t = texts

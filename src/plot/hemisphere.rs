@@ -18,7 +18,7 @@ use super::grids::{FIG7_AZIMUTHS, FIG7_ELEVATIONS};
 
 #[path = "hemisphere_contour.rs"]
 mod contour;
-use contour::{contour, draw_contours, Contour};
+use contour::{contour, draw_contour_key, draw_contours, Contour};
 
 /// The levels of (a)'s contour lines (the sixth review, R6-lloyd2006-fig7-2: under the shared
 /// bar (a) was one flat green): 10⁶, S̄ straight behind (Eq 20, k = 1), and 1.5×10⁶, round its
@@ -157,9 +157,15 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     // along the projected view direction; its largest S̄, and that of minimum-area rectangles
     // over the same grid (lloyd2006-worst-case).
     let min_area = super::worst::min_area::zp_min_area_worst(&view, 1, grid)?.0;
+    // (a)'s peak and the rule that sets it, in words, as the worst-case figure words it (the
+    // seventh review, R7-2006f7-1: "the orientation rule's (the worst-case figure)" named no
+    // rule): the unwarped map keeps a side along the view direction projected into the light's
+    // view, which just off behind and in front (elevation and azimuth 1°) runs along the
+    // diagonal of the frustum's square outline, so that the map stands at 45° to it and
+    // doubles.
     let band = format!(
-        "(a), dashed contours: peak {}, the orientation rule's (the worst-case figure); \
-         minimum-area maps peak at {}.",
+        "(a)'s map keeps a side along the projected view direction, which turns it 45° at \
+         its peak, {} (minimum-area maps: {}).",
         fmt_times_ten(panels[0].max),
         fmt_times_ten(min_area),
     );
@@ -315,11 +321,19 @@ impl Figure for Fig7 {
             draw_bar(&bar, s, disk_rows[2])?;
             let ratio_bar = body.clone().shrink((2 * cw, ch), (BAR_WIDTH, ch));
             draw_bar(&ratio_bar, &self.ratio_scale, disk_rows[4])?;
-            // The key: a disk with no data, right of (e)'s bar, as large as the others.
+            // The key: a disk with no data, right of (e)'s bar, over the key of (a)'s contour
+            // lines ([`CONTOUR_KEY`] units: the seventh review, R7-2006f7-1).
             let x = 2 * cw + BAR_WIDTH;
-            let key = body
-                .clone()
-                .shrink((x, ch), (cw.min(w - x), ch.saturating_sub(row_gap)));
+            let key_h = ch.saturating_sub(row_gap + CONTOUR_KEY);
+            let key = body.clone().shrink((x, ch), (cw.min(w - x), key_h));
+            let lines = body.clone().shrink(
+                (x + CONTOUR_KEY_INDENT, ch + key_h),
+                (
+                    cw.min(w - x).saturating_sub(CONTOUR_KEY_INDENT),
+                    CONTOUR_KEY,
+                ),
+            );
+            draw_contour_key(&lines, &self.contours)?;
             let empty = PolarGrid {
                 elev_edges: vec![0.0, FRAC_PI_2],
                 az_edges: vec![0.0, TAU],
@@ -366,6 +380,11 @@ pub(super) fn svg_in<F: Figure>(fig: &F, column: Column) -> String {
 /// disks are smaller and "viewer's right" reaches lower under its square): a disk's "viewer's
 /// right" and the next row's titles stand apart.
 const ROW_GAP: u32 = 8;
+
+/// Two columns: the height under the key disk for the key of (a)'s contour lines (two rows of
+/// [`draw_contour_key`]), and its indent from the key cell's left.
+const CONTOUR_KEY: u32 = 37;
+const CONTOUR_KEY_INDENT: u32 = 10;
 
 /// The width of a colour bar's column: the bar, its tick labels and its name.
 pub(super) const BAR_WIDTH: u32 = 84;
@@ -521,9 +540,10 @@ mod tests {
             assert!(powers.len() >= 6, "{column:?}: {powers:?}");
             assert!(
                 // Not the caption's lines (#323232), which print (a)'s peak as m×10ⁿ, nor
-                // (a)'s contour label 1.5×10⁶.
+                // (a)'s contour label 1.5×10⁶ and its key "(a) S̄ = 1.5×10⁶".
                 !all.iter().any(|t| t.1.contains("×10")
                     && !t.0.contains("#323232")
+                    && !t.1.starts_with("(a) S")
                     && !t
                         .1
                         .starts_with(fmt_power(A_CONTOURS[1]).trim_end_matches('⁶'))),
@@ -547,8 +567,9 @@ mod tests {
     /// title names what it divides ("LiSPSM ÷ faces", not "(b) ÷ (c)"); the captions name the
     /// azimuthal equidistant projection; in two columns the ring key is written in a disk of
     /// its own (every ring label nearer the key's title than any data panel's title), not over
-    /// (a)'s data; and the caption gives (a)'s brightest value (twice S̄ behind, 10⁶, Eq 20) and
-    /// the minimum-area maps' peak over the same grid, here computed by a scan of rotations.
+    /// (a)'s data; and the caption gives (a)'s brightest value (twice S̄ behind, 10⁶, Eq 20), the
+    /// rule that sets it in words, and the minimum-area maps' peak over the same grid, here
+    /// computed by a scan of rotations.
     #[test]
     fn fig7_names_e_and_the_projection_and_keys_the_rings_apart_from_the_data() {
         use super::super::chart::fmt_times_ten;
@@ -582,6 +603,7 @@ mod tests {
                         t.1.starts_with('(')
                             && t.1.len() > 4
                             && !t.1.contains("log")
+                            && !t.1.contains(" = ")
                             && !t.0.contains("#323232")
                     })
                     .map(at)
@@ -609,16 +631,16 @@ mod tests {
             }
         }
         let text = fig.caption_text();
+        // The rule itself, in the worst-case figure's words, not a reference to it (the
+        // seventh review, R7-2006f7-1: "the orientation rule's (the worst-case figure)").
         let want = format!(
-            "(a), dashed contours: peak {}, the orientation rule's",
-            fmt_times_ten(peak)
+            "(a)'s map keeps a side along the projected view direction, which turns it 45° at \
+             its peak, {} (minimum-area maps: {}).",
+            fmt_times_ten(peak),
+            fmt_times_ten(least)
         );
         assert!(text.contains(&want), "{want:?} in {text}");
-        let want = format!("minimum-area maps peak at {}", fmt_times_ten(least));
-        assert!(text.contains(&want), "{want:?} in {text}");
-        // A reference a reader can follow, not the crate's file name (the sixth review,
-        // R6-lloyd2006-fig7-1: "(lloyd2006-worst-case)" in a journal caption).
-        assert!(text.contains("the worst-case figure"), "{text}");
+        assert!(!text.contains("orientation rule"), "{text}");
         for caption in [&text, &fig.single_caption] {
             assert!(!caption.contains("lloyd2006-"), "{caption}");
         }

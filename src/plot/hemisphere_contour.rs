@@ -254,6 +254,49 @@ pub(super) fn draw_contours<DB: DrawingBackend>(
     Ok(())
 }
 
+/// The key of the contours' line styles (the seventh review, R7-2006f7-1: (a)'s dotted and
+/// dashed lines were named only by the values written on them): one row a contour, from the
+/// top of `area`, a sample of its line, [`KEY_SAMPLE`] units long, dashed as
+/// [`draw_contours`] dashes it, and "(a) S̄ = {level}" after it, at the contour labels' size,
+/// under [`KEY_PAD`] units.
+pub(super) fn draw_contour_key<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    contours: &[Contour],
+) -> Result<(), Fail> {
+    let (bx, by) = area.get_base_pixel();
+    let style =
+        TextStyle::from((FONT, label_size()).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+    let row = label_size() + 3;
+    for (k, c) in contours.iter().enumerate() {
+        let y = KEY_PAD + f64::from(row) * (k as f64 + 0.5);
+        let sample = [(0.0, y), (KEY_SAMPLE, y)];
+        for dash in dash_pattern(&sample, &DASHES[k % DASHES.len()], 1.0) {
+            area.draw(&Fine {
+                points: dash
+                    .iter()
+                    .map(|p| (p.0 + f64::from(bx), p.1 + f64::from(by)))
+                    .collect(),
+                colour: BackendColor {
+                    alpha: 1.0,
+                    rgb: INK,
+                },
+                stroke: Some(2),
+            })?;
+        }
+        area.draw(&Text::new(
+            format!("(a) S̄ = {}", fmt_power(c.level)),
+            ((KEY_SAMPLE + 5.0) as i32, y.round() as i32),
+            style.clone(),
+        ))?;
+    }
+    Ok(())
+}
+
+/// The length of a line sample in [`draw_contour_key`], in units: two of the longer dashes'
+/// periods, and the space over its rows (apart from "viewer's right" over it).
+const KEY_SAMPLE: f64 = 22.0;
+const KEY_PAD: f64 = 5.0;
+
 /// A contour's label: its text, centre, half width and height (units), and the colour under it.
 type Label = (String, (f64, f64), (f64, f64), Option<RGBColor>);
 
