@@ -51,10 +51,11 @@ pub(super) fn fig5() -> Result<Keyed, Fail> {
         size: (Column::Single.width(), SINGLE_HEIGHT),
         title: "Error along the view frustum".into(),
         caption: vec![format!(
-            "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), light overhead, {}, {}; PSM has {}, \
-             LiSPSM {}.",
+            "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), light overhead, {}, {}: m_x over f, m_z \
+             over {}. PSM has {}, LiSPSM {}.",
             nb(&format!("n = {n}")),
             nb(&format!("f = {f}")),
+            nb("(f − n)/(2 tan θ)"),
             nb("n′ = n"),
             nb(&format!("n′ = n + √(fn) ≈ {lispsm:.2}")),
         )],
@@ -120,11 +121,16 @@ fn fig5_panels(n: f64, f: f64, layout: Column) -> Result<(LineChart, LineChart),
     // bottom (PSM, n′ = 2, LiSPSM; n′ = 20, n′ = 100, n′ = ∞).
     cz.legend_columns = Some(3);
     if layout == Column::Single {
-        // The panels' titles give the quantities, the axes' names no longer than their plots
-        // (the powers of ten say that the scale is log); the data's range (0.05 to 1) a little
-        // padded.
+        // The panels' titles give the quantities, the axes' names no longer than their plots,
+        // each with its scale (seventh review, R7-X-1, R7-2006f5-1); the data's range (0.05
+        // to 1) a little padded. The margins are small: the plots' height for the names.
         cx.y = y(FIG5_SINGLE_Y[0], 0.045, 1.1);
         cz.y = y(FIG5_SINGLE_Y[1], 0.045, 1.1);
+        for c in [&mut cx, &mut cz] {
+            c.title.push_str(", log scale");
+        }
+        cx.margin = Some(FIG5_SINGLE_MARGIN);
+        cz.margin = Some(FIG5_SINGLE_MARGIN);
     }
     let mut keys = Vec::new();
     for (i, (np, label, colour)) in warps.iter().enumerate() {
@@ -226,9 +232,14 @@ const FIG5_Y_LABELS: [f64; 4] = [0.05, 0.1, 0.2, 1.0];
 const FIG5_Y_LABEL_AREA: u32 = 76;
 
 /// Fig 5's y names in one column, as short as the plots need (the normalised names, "m_x / f"
-/// and "m_z 2 tan θ / (f − n)", are longer than the one-column axes, 89 units; the panels'
-/// titles give them).
+/// and "m_z 2 tan θ / (f − n)", are longer than the one-column axes; the panels' titles give
+/// them, and the caption what each is divided by); the titles say that the scale is log, where
+/// the names have no room for it (seventh review, R7-X-1, R7-2006f5-1).
 const FIG5_SINGLE_Y: [&str; 2] = ["x error", "z error"];
+
+/// The margin round each of Fig 5's one-column panels, in units (the default's 8 left the
+/// plots shorter than their axes' names).
+const FIG5_SINGLE_MARGIN: u32 = 2;
 
 /// Fig 6: M_x, M_z and S̄ against η ∈ [−1, 1] (n = 1, f = 100, θ = 30°, unit resolutions), as
 /// they are, on a logarithmic axis (the paper normalises each to fit one linear scale, which puts
@@ -252,7 +263,7 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
     let mut c = LineChart::new(
         "",
         Axis::linear("η (−1: n′ = ∞, 1: n′ = n)", -1.0, 1.0),
-        Axis::log10("M_x, M_z, S̄ (log scale)", 0.5, 2e4).in_powers(),
+        Axis::log10(FIG6_Y, 0.5, 2e4).in_powers(),
     );
     c.legend = SeriesLabelPosition::LowerLeft;
     // Three quantities, three hues (the fifth review: M_x and M_z were two dark purples that
@@ -281,12 +292,17 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
             label: None,
             ..Series::line("", pts, colour)
         }));
+        // S̄'s markers squares (seventh review, R7-2006f6-2: its colour's tall bar read as a
+        // tick or an error bar).
+        let shape = (name.starts_with("S̄")).then_some(Marker::Square);
         c.series.push(Series {
             label: None,
+            shape,
             ..Series::line("", unjoined(&at), colour).with_markers()
         });
         keys.push(style(Series {
             sample: true,
+            shape,
             ..Series::line(name, Vec::new(), colour)
         }));
     }
@@ -309,7 +325,7 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
     // scale. One title in both forms, S̄ as in the key (sixth review: "storage factor" in one).
     let double = Charts {
         size: FIG6_SIZE,
-        title: "Maximum error and S̄ against η".into(),
+        title: FIG6_TITLE.into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 6 (Eq 9–12), {config}, image and shadow map of equal \
              resolution. The values as they are (the paper scales each curve to one linear \
@@ -321,7 +337,7 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
     };
     let single = Charts {
         size: (Column::Single.width(), SINGLE_HEIGHT),
-        title: "Maximum error and S̄ against η".into(),
+        title: FIG6_TITLE.into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 6 (Eq 9–12), {config}, on a log scale (the paper scales \
              each curve to one linear axis); largest at η\u{a0}=\u{a0}−1: {maxima}; M_z \
@@ -339,8 +355,16 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
     })
 }
 
-/// Fig 6's size across two columns: one panel, its plot about 0.6 as tall as wide.
-const FIG6_SIZE: (u32, u32) = (520, 420);
+/// Fig 6's size across two columns: one panel, its plot about 0.7 as tall as wide (as tall
+/// as its axis' name).
+const FIG6_SIZE: (u32, u32) = (520, 490);
+
+/// Fig 6's title, one in both forms: S̄ named in words (seventh review, R7-X-4, R7-2006f6-1).
+const FIG6_TITLE: &str = "Maximum error and storage factor S̄ against η";
+
+/// Fig 6's y axis: the errors, and S̄ with its unit as lloyd2006-fig10, -fig12 and
+/// -worst-case give it (R7-2006f6-1), and the scale.
+const FIG6_Y: &str = "M_x, M_z; S̄ (texels per image pixel, log scale)";
 
 /// Fig 6's lines M_x, M_z and S̄: colour and dash (0 solid, 1 dashed, 2 dotted). M_x the
 /// sweep's darkest purple (L* 18), M_z pink (L* 61, as barroso-fig7's least M_z), S̄ black: three
@@ -352,11 +376,12 @@ const FIG6_LOOKS: [(RGBColor, u8); 3] = [
 ];
 
 /// The η of Fig 6's markers on M_x, M_z and S̄: M_x's and M_z's apart where they run together
-/// (η ≤ 0), M_z's and S̄'s where they meet (η ≥ 0.8).
+/// (η ≤ 0), and S̄'s none where it meets M_z (η ≥ 0.8; R7-2006f6-2: at 0.95 its marker lay on
+/// M_z's line), between M_z's.
 const FIG6_MARKS: [[f64; 4]; 3] = [
     [-0.9, -0.45, 0.3, 0.8],
     [-0.7, -0.25, 0.45, 0.7],
-    [-0.8, -0.35, 0.15, 0.95],
+    [-0.8, -0.35, 0.15, 0.6],
 ];
 
 /// Fig 10: S̄ of ZP+W with the light overhead against the number of z-partitions k, for several
@@ -383,10 +408,11 @@ pub(super) fn fig10() -> Result<Keyed, Fail> {
     // One column: (a) alone, on the same axes (the fourth review: cut at 10³, f/n = 10⁴'s
     // curve left the plot at k = 1, 8.66×10³).
     let (mut a, _, _) = fig10_panels()?;
-    // The y axis' name no longer than its plot (the powers of ten say the scale is log).
+    // The y axis' name no longer than its plot; the title says that the scale is log (seventh
+    // review, R7-X-1, R7-2006f10-1: the one-column form did not).
     a.y.label = SINGLE_S_AXIS.into();
     // One panel: no letter.
-    a.title = "S̄; dashed: its optimum".into();
+    a.title = "S̄, log scale; dashed: its optimum".into();
     let single = Charts {
         size: (Column::Single.width(), SINGLE_HEIGHT),
         title: "S̄ of ZP+W against k".into(),
@@ -403,9 +429,9 @@ pub(super) fn fig10() -> Result<Keyed, Fail> {
     })
 }
 
-/// The S̄ axis' name on the one-column pages of Fig 10 and 12, short enough for their plots
-/// (the two-column name, "… (texels per image pixel, log scale)", ran past the plot's ends;
-/// the powers of ten say that the scale is log).
+/// The S̄ axis' name on the one-column page of Fig 10, short enough for its plot (the
+/// two-column name, "… (texels per image pixel, log scale)", ran past the plot's ends; the
+/// panel's title says that the scale is log).
 const SINGLE_S_AXIS: &str = "S̄ (texels per image pixel)";
 
 /// The depth ratios f/n of Fig 10.
@@ -510,7 +536,7 @@ fn sci(v: f64) -> String {
 /// Points of a quantity defined only at its own x values (FP+ZP+W at 4k + 1 maps), drawn as
 /// markers without a line: a gap (a non-finite y, which a line chart never joins across)
 /// between each two.
-fn unjoined(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
+pub(super) fn unjoined(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
     let mut out = Vec::with_capacity(2 * points.len());
     for (i, &p) in points.iter().enumerate() {
         if i > 0 {

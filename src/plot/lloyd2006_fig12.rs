@@ -3,6 +3,7 @@
 
 use super::super::chart::{fmt_plain, Axis, Charts, LineChart, Look, Note, Series, PALETTE};
 use super::super::keyed::{Keyed, SINGLE_HEIGHT};
+use super::super::worst::{scheme_series, ZP_BEHIND};
 use super::super::{Column, Fail};
 use super::{sci, unjoined, SCHEME_WORDS, THETA_DEG};
 use crate::analytic::partition::{scheme_storage_factor, shadow_map_count, Scheme, SchemeLight};
@@ -95,8 +96,10 @@ pub(in crate::plot) fn fig12() -> Result<Keyed, Fail> {
         charts: vec![a, zoom],
     };
     let (mut a, _) = fig12_panels(&view, Column::Single)?;
-    // One panel: no letter.
-    a.title = FIG12_A_TITLE[4..].into();
+    // One panel: no letter; the axis' name has no room for its scale, which the title gives
+    // (seventh review, R7-X-1).
+    a.title = format!("{}; log scale", &FIG12_A_TITLE[4..]);
+    a.y.label = FIG12_S_AXIS.into();
     let single = Charts {
         size: (Column::Single.width(), SINGLE_HEIGHT),
         title: FIG12_TITLE.into(),
@@ -123,7 +126,10 @@ const FIG12_TITLE: &str = "S̄ against the number of shadow maps";
 
 /// Fig 12 (a)'s title: each light's drawing (the sixth review, R6-lloyd2006-fig12-1/-2: colour
 /// is the scheme, line and marker fill the light).
-const FIG12_A_TITLE: &str = "(a) overhead solid, behind dashed";
+const FIG12_A_TITLE: &str = "(a) overhead: solid, filled;\nbehind: dashed, hollow";
+
+/// Fig 12 (b)'s title, two lines as (a)'s, so that the plots' tops align.
+const FIG12_B_TITLE: &str = "(b) behind, at the crossover;\nlinear scale";
 
 /// Fig 12's panels for the page `layout`: (a) every scheme for both lights, its key grouped
 /// by light (two columns, overhead and behind, across two page columns; one column, overhead
@@ -138,12 +144,12 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
         FIG12_A_TITLE,
         Axis::integer("number of shadow maps", 0.0, 40.0),
         // To the data from 2 maps on: 6.5 (ZP+W at 40 maps) to 2000 (ZP behind with 2 maps).
-        Axis::log10(FIG12_S_AXIS, 4.0, 1e4).in_powers(),
+        Axis::log10(FIG12_S_LOG_AXIS, 4.0, 1e4).in_powers(),
     );
     let schemes = [
-        (Scheme::Zp, "ZP", Look::Zp.colour()),
-        (Scheme::ZpW, "ZP+W", Look::ZpW.colour()),
-        (Scheme::FpZpW, "FP+ZP+W", Look::FpZpW.colour()),
+        (Scheme::Zp, "ZP"),
+        (Scheme::ZpW, "ZP+W"),
+        (Scheme::FpZpW, "FP+ZP+W"),
     ];
     // The key's order: entries row by row, so two columns of overhead | behind, or overhead's
     // three above behind's two.
@@ -160,26 +166,31 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
             ]
         }
         Column::Single => {
-            c.legend_columns = Some(1);
+            c.legend_columns = Some(2);
             [
                 (Scheme::Zp, Overhead),
-                (Scheme::ZpW, Overhead),
-                (Scheme::FpZpW, Overhead),
                 (Scheme::Zp, Behind),
+                (Scheme::ZpW, Overhead),
                 (Scheme::FpZpW, Behind),
+                (Scheme::FpZpW, Overhead),
             ]
         }
     };
     for (scheme, light) in series {
-        let (_, name, colour) = schemes
+        let (_, name) = schemes
             .into_iter()
             .find(|s| s.0 == scheme)
             .ok_or_else(|| Fail::Draw(format!("Fig 12 has no {scheme:?}")))?;
-        let hollow = light == Behind;
-        let label = match (scheme, light) {
-            (Scheme::Zp, Behind) => "ZP = ZP+W, behind".to_string(),
-            (_, Behind) => format!("{name}, behind"),
-            (_, Overhead) => format!("{name}, overhead"),
+        let behind = light == Behind;
+        // One column: the scheme alone, the title saying which light each drawing is (the key
+        // in two columns, overhead | behind, as across the page), so that the plot keeps the
+        // height its axis name needs.
+        let label = match (scheme, light, layout) {
+            (Scheme::Zp, Behind, Column::Double) => ZP_BEHIND.to_string(),
+            (Scheme::Zp, Behind, Column::Single) => "ZP = ZP+W".to_string(),
+            (_, _, Column::Single) => name.to_string(),
+            (_, Behind, _) => format!("{name}, behind"),
+            (_, Overhead, _) => format!("{name}, overhead"),
         };
         let mut pts = Vec::new();
         for k in 1..=40usize {
@@ -189,62 +200,45 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
             }
             pts.push((maps as f64, scheme_storage_factor(scheme, light, view, k)?));
         }
-        let s = if scheme == Scheme::FpZpW {
-            // Defined only at 4k + 1 maps: markers, not joined across the counts between,
-            // filled overhead, open behind.
-            Series {
-                width: 3,
-                hollow,
-                ..Series::line(label, unjoined(&pts), colour).with_markers()
-            }
-        } else {
-            // Every count: a line, with a few markers along it (not one per count), at counts
-            // 4k + 3 ([`FIG12_ZP_MARKS`]), two counts from every FP+ZP+W marker at 4k + 1
-            // (the fifth review: ZP's circle at 36 lay under FP+ZP+W's triangle at 37).
-            let counts: &[f64] = match (scheme, light) {
-                (Scheme::Zp, Overhead) => &FIG12_ZP_MARKS,
-                (_, Behind) => &FIG12_BEHIND_MARKS,
-                _ => &FIG12_ZP_W_MARKS,
-            };
-            let marks: Vec<(f64, f64)> = pts
-                .iter()
-                .copied()
-                .filter(|p| counts.contains(&p.0))
-                .collect();
-            let line = Series::line("", pts, colour);
-            c.series.push(Series {
-                label: None,
-                ..if hollow { line.dashed() } else { line }
-            });
-            c.series.push(Series {
-                label: None,
-                hollow,
-                ..Series::line("", unjoined(&marks), colour).with_markers()
-            });
-            Series {
-                sample: true,
-                hollow,
-                ..Series::line(label, Vec::new(), colour)
-            }
+        // Each scheme and light as every figure draws it ([`scheme_series`]): FP+ZP+W,
+        // defined only at 4k + 1 maps, markers only.
+        if scheme == Scheme::FpZpW {
+            c.series
+                .push(scheme_series(scheme, behind, Some(label), pts)?);
+            continue;
+        }
+        // Every count: a line, with a few markers along it (not one per count), at counts
+        // 4k + 3 ([`FIG12_ZP_MARKS`]), two counts from every FP+ZP+W marker at 4k + 1
+        // (the fifth review: ZP's circle at 36 lay under FP+ZP+W's triangle at 37).
+        let counts: &[f64] = match (scheme, light) {
+            (Scheme::Zp, Overhead) => &FIG12_ZP_MARKS,
+            (_, Behind) => &FIG12_BEHIND_MARKS,
+            _ => &FIG12_ZP_W_MARKS,
         };
-        c.series.push(match light {
-            Overhead => s,
-            Behind => s.dashed(),
+        let marks: Vec<(f64, f64)> = pts
+            .iter()
+            .copied()
+            .filter(|p| counts.contains(&p.0))
+            .collect();
+        c.series.push(Series {
+            markers: false,
+            ..scheme_series(scheme, behind, None, pts)?
         });
+        c.series
+            .push(scheme_series(scheme, behind, None, unjoined(&marks))?);
+        c.series
+            .push(scheme_series(scheme, behind, Some(label), Vec::new())?);
     }
     // (b): the light-behind crossover enlarged, ZP (equal to ZP+W there) against FP+ZP+W, drawn
     // as in (a).
     let mut zoom = LineChart::new(
-        "(b) behind, at the crossover",
+        FIG12_B_TITLE,
         // Padded by half a count, so that the markers at 11 and 23 maps are whole.
         Axis::integer("number of shadow maps", 10.5, 23.5),
         // The data's range (30.8 at 21 maps to 55.0 at 13), a little padded.
         Axis::linear(FIG12_S_AXIS, 28.0, 58.0),
     );
-    for (scheme, name, colour) in [
-        (Scheme::Zp, "ZP = ZP+W, behind", Look::Zp.colour()),
-        (Scheme::FpZpW, "FP+ZP+W, behind", Look::FpZpW.colour()),
-    ] {
+    for (scheme, name) in [(Scheme::Zp, ZP_BEHIND), (Scheme::FpZpW, "FP+ZP+W, behind")] {
         let mut pts = Vec::new();
         for k in 1..=23usize {
             let maps = shadow_map_count(scheme, Behind, k)?;
@@ -253,13 +247,8 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
             }
         }
         if scheme == Scheme::FpZpW {
-            zoom.series.push(Series {
-                width: 3,
-                hollow: true,
-                ..Series::line(name, unjoined(&pts), colour)
-                    .dashed()
-                    .with_markers()
-            });
+            zoom.series
+                .push(scheme_series(scheme, true, Some(name.into()), pts)?);
         } else {
             // ZP's open markers at the counts between FP+ZP+W's (at 17 maps one lay under
             // FP+ZP+W's, 38.32 against 37.99): the values there are written.
@@ -269,20 +258,19 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
                 .filter(|p| FIG12_ZOOM_ZP_MARKS.contains(&p.0))
                 .collect();
             zoom.series.push(Series {
-                label: None,
-                ..Series::line(name, pts, colour).dashed()
+                markers: false,
+                ..scheme_series(scheme, true, None, pts)?
             });
-            zoom.series.push(Series {
-                label: None,
-                hollow: true,
-                ..Series::line("", unjoined(&marks), colour).with_markers()
-            });
+            zoom.series
+                .push(scheme_series(scheme, true, None, unjoined(&marks))?);
         }
     }
     Ok((c, zoom))
 }
 
-/// Fig 12's S̄ axis, one name in both panels and both forms.
+/// Fig 12's S̄ axes, one name in both forms: (a)'s logarithmic (seventh review, R7-X-1,
+/// R7-2006f12-1), (b)'s linear.
+const FIG12_S_LOG_AXIS: &str = "S̄ (texels per image pixel, log scale)";
 const FIG12_S_AXIS: &str = "S̄ (texels per image pixel)";
 
 /// The counts of maps where (a)'s ZP = ZP+W behind line carries its open markers: 4k + 3, away

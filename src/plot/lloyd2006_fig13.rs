@@ -66,7 +66,8 @@ pub(in crate::plot) fn fig13() -> Result<Fig13, Fail> {
             5.0,
             4.0,
         ),
-        y: Axis::log10("depth ratio f/n", 1.0, 1e6),
+        // Its scale named, as on every log axis (seventh review, R7-X-1, R7-2006f13-1).
+        y: Axis::log10("depth ratio f/n (log scale)", 1.0, 1e6),
     })
 }
 
@@ -110,7 +111,9 @@ fn hatch<DB: DrawingBackend>(
 
 /// Fig 13's key entries: text and fill (none: the crossover dot).
 const FIG13_KEY: [(&str, Option<RGBColor>); 3] = [
-    ("ZP lowest", Some(ZP_FILL)),
+    // ZP's name as lloyd2006-fig12 and -worst-case key it behind, where ZP+W equals it
+    // (seventh review, R7-X-2).
+    ("ZP = ZP+W lowest", Some(ZP_FILL)),
     ("FP+ZP+W lowest", Some(FP_FILL)),
     ("equal S̄", None),
 ];

@@ -8,7 +8,7 @@
 
 pub(super) mod min_area;
 
-use super::chart::{fmt_plain, Axis, Charts, LineChart, Look, Series, SHARED};
+use super::chart::{fmt_plain, Axis, Charts, LineChart, Look, Series};
 
 use super::keyed::{Keyed, SINGLE_HEIGHT};
 use super::{Column, Fail};
@@ -34,11 +34,53 @@ pub(super) const SCHEMES: [(&str, Scheme, WarpRule, Partition); 3] = [
     ("FP+ZP+W", Scheme::FpZpW, WarpRule::Lispsm, Partition::Faces),
 ];
 
-/// Each scheme's colour, as every figure draws it.
-const LOOKS: [Look; 3] = [Look::Zp, Look::ZpW, Look::FpZpW];
+/// The key of the curve ZP and ZP+W share behind (Eq 20), as lloyd2006-fig12 writes it.
+pub(super) const ZP_BEHIND: &str = "ZP = ZP+W, behind";
 
 /// The grey of the paper's band 2–3 in the ratio panel.
 const BAND: RGBColor = RGBColor(225, 225, 225);
+
+/// How a scheme of Lloyd 2006 §5 is drawn in every figure that shows it (lloyd2006-fig12 and
+/// this one; seventh review, R7-X-2, R7-2006f12-3, R7-2006wc-2): its colour ([`Look`]) and with
+/// it its marker ([`super::chart::Marker::of`]: ZP ●, ZP+W ■, FP+ZP+W ▲); the light the line
+/// and the markers' fill: behind dashed with hollow markers, overhead (or the worst over all
+/// lights) solid with filled ones. FP+ZP+W is defined only at its own counts of maps (4k + 1),
+/// so it is markers only, 3 units wide, in every figure: `points` are drawn unjoined. A marker at
+/// every point; no `points` and a `label`: a key entry for a line drawn elsewhere.
+pub(super) fn scheme_series(
+    scheme: Scheme,
+    behind: bool,
+    label: Option<String>,
+    points: Vec<(f64, f64)>,
+) -> Result<Series, Fail> {
+    let look = match scheme {
+        Scheme::Zp => Look::Zp,
+        Scheme::ZpW => Look::ZpW,
+        Scheme::FpZpW => Look::FpZpW,
+        Scheme::Optimal => {
+            return Err(Fail::Draw(
+                "the optimal parameterisation is a reference line, not a scheme's series".into(),
+            ))
+        }
+    };
+    let sample = points.is_empty() && label.is_some();
+    let mut s = Series {
+        label,
+        sample,
+        hollow: behind,
+        ..Series::line("", points, look.colour()).with_markers()
+    };
+    if behind {
+        s = s.dashed();
+    }
+    if scheme == Scheme::FpZpW {
+        s.points = super::lloyd2006::unjoined(&s.points);
+        s.width = 3;
+        // Its key shows the marker alone, as the figure draws it.
+        s.sample = false;
+    }
+    Ok(s)
+}
 
 pub(super) fn worst_case() -> Result<Keyed, Fail> {
     let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians())?;
@@ -46,9 +88,8 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
     // FP+ZP+W's k is per face, 4k + 1 maps (sixth review, R6-lloyd2006-worst-case-6).
     let k_axis = Axis::integer(K_AXIS, 1.0, 8.0);
     let mut abs = LineChart::new(
-        // No line style in the title (the fifth review: "behind (dashed)" was wrong for
-        // FP+ZP+W, whose dashed behind curve lies under its solid worst case): the key tells them
-        // apart, as in lloyd2006-fig12.
+        // Each scheme as lloyd2006-fig12 draws it ([`scheme_series`]): the key tells the worst
+        // case (solid, filled) from the light behind (dashed, hollow).
         "(a) worst case and light behind",
         k_axis.clone(),
         Axis::log10("S̄ (texels per image pixel, log scale)", 10.0, 1e7),
@@ -62,8 +103,11 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
     let mut extremes = Vec::new();
     // Each scheme's sweep at k = 1: where the worst case lies, and ZP+W against ZP there.
     let mut first = Vec::new();
-    for ((name, scheme, rule, partition), look) in SCHEMES.into_iter().zip(LOOKS) {
-        let colour = look.colour();
+    // (a)'s and (b)'s series, each scheme's worst case, its value behind and its ratio.
+    let mut worsts = Vec::new();
+    let mut behinds = Vec::new();
+    let mut ratios = Vec::new();
+    for (name, scheme, rule, partition) in SCHEMES {
         let mut worst = Vec::new();
         let mut behind = Vec::new();
         let mut r = Vec::new();
@@ -82,40 +126,51 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
             (a.min(p.1), b.max(p.1))
         });
         extremes.push(ratio_range(name, lo, hi));
-        // Behind, ZP+W equals ZP (drawn over it) and FP+ZP+W's worst case is its value
-        // behind: one key entry each for what shows. ZP's worst case lies under ZP+W's for
-        // k ≥ 2 (1.998 against 2.02 to 2.2 times the same value behind): the caption says so
-        // (sixth review, R6-lloyd2006-worst-case-3: the key said it).
-        let (worst_label, behind_label) = match scheme {
-            Scheme::Zp => (format!("{name}, worst"), None),
-            Scheme::ZpW => (
-                format!("{name}, worst"),
-                Some("ZP = ZP+W, behind (Eq 20)".to_string()),
-            ),
-            _ => (format!("{name}, worst = behind"), None),
+        // FP+ZP+W's worst case is its value behind (the light behind is a swept direction):
+        // one series, drawn as behind, its key "FP+ZP+W, worst = behind".
+        let fp = scheme == Scheme::FpZpW;
+        worsts.push((scheme, name, scheme_series(scheme, fp, None, worst)?));
+        behinds.push((scheme, behind));
+        ratios.push((scheme, name, scheme_series(scheme, fp, None, r)?));
+    }
+    // Behind, ZP+W equals ZP (Eq 20): one dashed curve in ZP's colour with hollow circles,
+    // keyed as lloyd2006-fig12 keys it.
+    let zp_behind = behinds
+        .iter()
+        .find(|b| b.0 == Scheme::Zp)
+        .map(|b| b.1.clone())
+        .ok_or_else(|| Fail::Draw("the worst-case figure has no ZP".into()))?;
+    abs.series
+        .push(scheme_series(Scheme::Zp, true, None, zp_behind)?);
+    // ZP's worst case lies within 15 % below ZP+W's for k ≥ 2: ZP's markers over ZP+W's (the
+    // schemes in reverse order), so that both show; in (b) too (at k = 2 and 3 their ratios
+    // are 1.998 and 2.02).
+    for (_, _, s) in worsts.iter().rev() {
+        abs.series.push(s.clone());
+    }
+    for (_, _, s) in ratios.iter().rev() {
+        ratio.series.push(s.clone());
+    }
+    // The key of both panels (one key for two panels, below them), in the schemes' order.
+    for (scheme, name, _) in &worsts {
+        let label = match scheme {
+            Scheme::FpZpW => format!("{name}, worst = behind"),
+            _ => format!("{name}, worst"),
         };
-        // ZP's markers hollow, over ZP+W's (the fifth review: its curve, hidden under ZP+W's
-        // for k ≥ 2, could not be checked), in both panels and the key.
-        let hollow = scheme == Scheme::Zp;
-        abs.series.push(Series {
-            hollow,
-            ..Series::line(worst_label, worst, colour).with_markers()
-        });
-        let mut b = Series::line(String::new(), behind, colour).dashed();
-        b.label = behind_label;
-        if matches!(scheme, Scheme::Zp | Scheme::ZpW) {
-            // One curve for two schemes (ZP+W equals ZP behind): the neutral dashed grey of
-            // shared curves, not either scheme's colour, drawn twice alike, so that what shows
-            // is what the key "ZP = ZP+W, behind" shows.
-            b.colour = SHARED;
+        abs.series.push(scheme_series(
+            *scheme,
+            *scheme == Scheme::FpZpW,
+            Some(label),
+            Vec::new(),
+        )?);
+        if *scheme == Scheme::ZpW {
+            abs.series.push(scheme_series(
+                Scheme::Zp,
+                true,
+                Some(ZP_BEHIND.into()),
+                Vec::new(),
+            )?);
         }
-        abs.series.push(b);
-        // The key of (a) names the schemes' colours and markers for both panels.
-        ratio.series.push(Series {
-            label: None,
-            hollow,
-            ..Series::line(name.to_string(), r, colour).with_markers()
-        });
     }
     // The paper's band, under the data; its edges are the band's own (ZP's ratio, 1.998, runs
     // along the lower one); the key, below both panels, is a swatch of its grey.
@@ -127,12 +182,12 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
     // ZP's worst case with the other orientation rule, minimum-area maps (fifth review,
     // §4.16.1), is 1.055 to 1.224 times S̄ behind: docs/figures.md gives it, the captions have no
     // room (five lines at most; `min_area`'s tests compute it).
-    let where_ = Worst::of(&first, &view, grid)?;
+    let where_ = Worst::of(&first, grid)?;
     let caption = format!(
         "Lloyd et al. 2006, §5.3, not a figure of the paper: worst S̄ within 2–3× S̄ behind \
-         (Eq 20, 21)? f/n\u{a0}=\u{a0}{ratio_fn}, θ\u{a0}=\u{a0}{theta:.0}°, lights {step}° \
-         apart: {}. {}. {}",
-        extremes.join("; "),
+         (Eq 20, 21)? f/n\u{a0}=\u{a0}{ratio_fn}, θ\u{a0}=\u{a0}{theta:.0}°, light \
+         directions sampled every {step}°, over k: {}. {}. {}",
+        extremes.join("; ").replace(" at every k", ""),
         where_.orientation(),
         where_.lispsm(),
         ratio_fn = view.far() / view.near(),
@@ -143,12 +198,13 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
     // swatch), and the ranges in the caption.
     let mut ratio_single = ratio.clone();
     ratio_single.title = String::new();
-    for s in ratio_single.series.iter_mut().filter(|s| !s.reference) {
-        s.label = SCHEMES
-            .iter()
-            .zip(LOOKS)
-            .find(|(_, look)| look.colour() == s.colour)
-            .map(|(scheme, _)| scheme.0.to_string());
+    for (scheme, name, _) in &ratios {
+        ratio_single.series.push(scheme_series(
+            *scheme,
+            *scheme == Scheme::FpZpW,
+            Some(name.to_string()),
+            Vec::new(),
+        )?);
     }
     ratio_single.series.push(Series {
         width: 10,
@@ -160,11 +216,11 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
         // Five lines of a column: the ranges and where ZP's worst lies; the rule's wording and
         // ZP+W's factor 10° above behind are the two-column caption's.
         caption: vec![format!(
-            "Lloyd et al. 2006, §5.3, not a figure of the paper (Eq 20, 21); \
-             f/n\u{a0}=\u{a0}{}, θ\u{a0}=\u{a0}{:.0}°, over\u{a0}k: {}. {}. LiSPSM does not \
-             revert for γ\u{a0}<\u{a0}θ.",
+            "Lloyd et al. 2006, not a figure of the paper; f/n\u{a0}=\u{a0}{}, \
+             θ\u{a0}=\u{a0}{:.0}°, lights every {}°: {}. {}.",
             view.far() / view.near(),
             view.half_fov().to_degrees(),
+            90 / (ELEVATIONS - 1),
             extremes.join("; ").replace(" at every k", ""),
             where_.short(),
         )],
@@ -184,21 +240,22 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
     })
 }
 
-/// The orientation rule of the unwarped maps, one clause of both captions (fifth review,
-/// §4.16.1; sixth review, R6-lloyd2006-worst-case-5: with where it puts ZP's worst case).
-const ORIENTATION: &str = "a map side along the projected view direction";
+/// What the orientation rule of the unwarped maps does at ZP's worst light, one clause of both
+/// captions (fifth review, §4.16.1; seventh review, R7-2006wc-1: what turns against what): the
+/// map's rectangle, a side along the view direction as the light sees it (there along the
+/// diagonal of the frustum's square outline), stands at 45° to that square, with twice its
+/// area (`min_area`).
+const TURN: &str = "turns 45° to the frustum's square outline";
 
 /// The x axis of both panels: FP+ZP+W's k is per face, 4k + 1 maps.
 const K_AXIS: &str = "k (FP+ZP+W: 4k + 1 maps)";
 
 /// Where the worst cases at k = 1 lie (sixth review, R6-lloyd2006-worst-case-1/-5), read from
-/// the sweeps: ZP's largest S̄ and its direction, ZP's ratio exactly behind, and ZP+W's S̄ over
+/// the sweeps: ZP's largest S̄ and its direction, and ZP+W's S̄ over
 /// ZP's 10° above behind (in the view's vertical plane).
 pub(super) struct Worst {
     /// ZP's worst direction, elevation and azimuth in whole degrees (azimuth folded to 0–180).
     pub zp_at: (f64, f64),
-    /// ZP's S̄ exactly behind over Eq 20's value there.
-    pub zp_behind: f64,
     /// ZP+W's S̄ over ZP's at elevation [`LISPSM_EL`]°, azimuth 0.
     pub lispsm_over_zp: f64,
 }
@@ -208,11 +265,7 @@ pub(super) const LISPSM_EL: f64 = 10.0;
 
 impl Worst {
     /// From the k = 1 sweeps of ZP and ZP+W (in [`SCHEMES`]' order) on `grid`.
-    fn of(
-        first: &[crate::scheme::sweep::Sweep],
-        view: &ViewFrustum,
-        grid: SweepGrid,
-    ) -> Result<Self, Fail> {
+    fn of(first: &[crate::scheme::sweep::Sweep], grid: SweepGrid) -> Result<Self, Fail> {
         let (zp, zpw) = match first {
             [zp, zpw, ..] => (zp, zpw),
             _ => return Err(Fail::Draw("the worst-case figure swept no k = 1".into())),
@@ -224,48 +277,39 @@ impl Worst {
             }
         }
         let az = if at.1 > 180.0 { 360.0 - at.1 } else { at.1 };
-        let behind = scheme_storage_factor(Scheme::Zp, SchemeLight::Behind, view, 1)?;
         // Row i is elevation 2i° (both ends of [0, 90°]), column 0 azimuth 0: behind.
         let row = (LISPSM_EL / (90.0 / (grid.elevations() - 1) as f64)).round() as usize;
         let n = row * grid.azimuths();
         Ok(Self {
             zp_at: (at.0, az),
-            zp_behind: zp.storage_factor[0] / behind,
             lispsm_over_zp: zpw.storage_factor[n] / zp.storage_factor[n],
         })
     }
 
     /// The orientation rule's clause: where ZP's worst case lies and why.
     fn orientation(&self) -> String {
-        let (el, az) = self.zp_at;
-        let at = if el == az {
-            format!("el\u{a0}=\u{a0}az\u{a0}=\u{a0}{el}°")
-        } else {
-            format!("el\u{a0}{el}°, az\u{a0}{az}°")
-        };
-        format!(
-            "ZP's worst lies at {at}: {ORIENTATION} turns 45°; exactly behind \
-             {:.3}",
-            self.zp_behind
-        )
+        format!("{}: its map {TURN}", self.at())
     }
 
-    /// Where ZP's worst case lies, without the rule's wording or the ratio exactly behind (one
-    /// column's caption).
+    /// Where ZP's worst light lies, elevation and azimuth written out (seventh review,
+    /// R7-2006wc-1: "el = az" was undefined).
+    fn at(&self) -> String {
+        let (el, az) = self.zp_at;
+        format!("ZP's worst light lies at elevation\u{a0}{el}°, azimuth\u{a0}{az}° from behind")
+    }
+
+    /// Where ZP's worst light lies, without what turns there (one column's caption, five
+    /// lines).
     fn short(&self) -> String {
         let (el, az) = self.zp_at;
-        if el == az {
-            format!("ZP's worst at el\u{a0}=\u{a0}az\u{a0}=\u{a0}{el}°")
-        } else {
-            format!("ZP's worst at el\u{a0}{el}°, az\u{a0}{az}°")
-        }
+        format!("ZP's worst light: elevation\u{a0}{el}°, azimuth\u{a0}{az}° from behind (§5.3)")
     }
 
     /// The LiSPSM clause: why ZP+W's worst at k = 1 exceeds ZP's.
     fn lispsm(&self) -> String {
         format!(
-            "LiSPSM does not revert for γ\u{a0}<\u{a0}θ: {LISPSM_EL:.0}° above behind, \
-             ZP+W's S̄ at k\u{a0}=\u{a0}1 is {:.1}× ZP's.",
+            "{LISPSM_EL:.0}° above behind, ZP+W's S̄ at k\u{a0}=\u{a0}1 is {:.1}× ZP's: \
+             LiSPSM does not revert for γ\u{a0}<\u{a0}θ.",
             self.lispsm_over_zp
         )
     }
@@ -286,6 +330,11 @@ fn ratio_range(name: &str, lo: f64, hi: f64) -> String {
 mod tests {
     use super::*;
 
+    /// A series' points without the gaps of an unjoined one (FP+ZP+W's markers).
+    fn finite(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
+        points.iter().copied().filter(|p| p.1.is_finite()).collect()
+    }
+
     /// The light-behind curves are Eq 20 and 21 by hand (f/n = 1000: ZP k · 1000^{2/k}, FP+ZP+W
     /// 2k(1000^{1/k} − 1) + 1), and the measured worst case is never below the behind value,
     /// which is one of the swept directions (the horizon row, azimuth 0).
@@ -294,60 +343,24 @@ mod tests {
         let fig = worst_case()
             .map_err(|e| e.named("lloyd2006-worst-case"))
             .unwrap();
+        // (a)'s series: ZP behind, then the worst cases FP+ZP+W (= behind), ZP+W and ZP.
         let abs = &fig.page.charts[0].series;
+        let pts = |i: usize| finite(&abs[i].points);
         for (i, &k) in KS.iter().enumerate() {
             let kf = k as f64;
             let zp = kf * 1000f64.powf(2.0 / kf);
             let fp = 2.0 * kf * (1000f64.powf(1.0 / kf) - 1.0) + 1.0;
-            assert!((abs[1].points[i].1 - zp).abs() < 1e-9 * zp);
-            assert!((abs[5].points[i].1 - fp).abs() < 1e-9 * fp);
-            for s in [0, 2, 4] {
-                let (w, b) = (abs[s].points[i].1, abs[s + 1].points[i].1);
+            assert!((pts(0)[i].1 - zp).abs() < 1e-9 * zp);
+            assert!((pts(1)[i].1 - fp).abs() < 1e-9 * fp);
+            // ZP+W's and ZP's worst over their (equal) value behind.
+            for s in [2, 3] {
+                let (w, b) = (pts(s)[i].1, pts(0)[i].1);
                 assert!(
                     w >= b * (1.0 - 1e-9),
-                    "scheme {s}, k = {k}: worst {w} < behind {b}"
+                    "series {s}, k = {k}: worst {w} < behind {b}"
                 );
             }
         }
-    }
-
-    /// (a)'s title claims no line style for the light-behind curves: FP+ZP+W's behind curve,
-    /// dashed, has the same points as its solid worst case (its key says "worst = behind"), so
-    /// what shows of it is solid, and a title "behind (dashed)" would misname it. Read from the
-    /// drawn series: some dashed series coincides with a solid one, and the title then says no
-    /// "dashed".
-    #[test]
-    fn title_claims_no_dashes_where_a_dashed_curve_hides_under_a_solid_one() {
-        use crate::plot::chart::Dash;
-        let fig = worst_case()
-            .map_err(|e| e.named("lloyd2006-worst-case"))
-            .unwrap();
-        let a = &fig.page.charts[0];
-        // The sweep's maximum and the closed form agree to rounding (FP+ZP+W: the worst
-        // direction is the light behind, a swept direction).
-        let coincide = |p: &[(f64, f64)], q: &[(f64, f64)]| {
-            p.len() == q.len()
-                && p.iter()
-                    .zip(q)
-                    .all(|(a, b)| a.0 == b.0 && (a.1 - b.1).abs() <= 1e-9 * b.1.abs())
-        };
-        let hidden = a.series.iter().any(|d| {
-            d.dash == Dash::Dashed
-                && !d.points.is_empty()
-                && a.series
-                    .iter()
-                    .any(|s| s.dash != Dash::Dashed && coincide(&s.points, &d.points))
-        });
-        assert!(
-            hidden,
-            "no dashed curve under a solid one: the test's premise is gone"
-        );
-        assert!(!a.title.contains("dashed"), "{}", a.title);
-        assert!(
-            a.title.contains("worst case") && a.title.contains("behind"),
-            "{}",
-            a.title
-        );
     }
 
     /// Every k from 1 to 8 is computed (the third review: with k = 5 and 7 missing, the
@@ -361,7 +374,7 @@ mod tests {
         let every: Vec<f64> = (1..=8).map(f64::from).collect();
         for chart in &fig.page.charts {
             for s in chart.series.iter().filter(|s| !s.points.is_empty()) {
-                let ks: Vec<f64> = s.points.iter().map(|p| p.0).collect();
+                let ks: Vec<f64> = finite(&s.points).iter().map(|p| p.0).collect();
                 assert_eq!(ks, every, "{:?}", s.label);
             }
         }
@@ -385,7 +398,11 @@ mod tests {
             .map_err(|e| e.named("lloyd2006-worst-case"))
             .unwrap();
         for chart in &fig.page.charts {
-            let labelled: Vec<_> = chart.series.iter().filter(|s| s.label.is_some()).collect();
+            let labelled: Vec<_> = chart
+                .series
+                .iter()
+                .filter(|s| s.label.is_some() && !s.points.is_empty())
+                .collect();
             for (i, a) in labelled.iter().enumerate() {
                 for b in &labelled[..i] {
                     let same = a.points.len() == b.points.len()
@@ -425,7 +442,7 @@ mod tests {
         assert_eq!(labels, ["1", "2", "3", "5"]);
         let data: Vec<&Series> = ratio.series.iter().filter(|s| !s.reference).collect();
         for s in &data {
-            for p in &s.points {
+            for p in finite(&s.points) {
                 assert!(p.1 > ratio.y.min && p.1 < ratio.y.max, "{p:?}");
             }
         }
@@ -448,17 +465,17 @@ mod tests {
         let key = abs
             .series
             .iter()
-            .find(|s| s.label.as_deref() == Some("ZP = ZP+W, behind (Eq 20)"))
+            .find(|s| s.label.as_deref() == Some(ZP_BEHIND))
             .unwrap();
-        // Series 1 is ZP behind, equal to ZP+W's (the key's) curve: drawn as the key shows
-        // (it was a wider blue line under the orange dashes).
-        let zp = &abs.series[1];
+        // Series 0 is ZP behind, equal to ZP+W's: drawn as the key shows it, and as
+        // lloyd2006-fig12 draws it (seventh review, R7-X-2): ZP's teal, dashed, hollow.
+        let zp = &abs.series[0];
         assert_eq!(
-            (zp.colour, zp.width, zp.dash),
-            (key.colour, key.width, key.dash)
+            (zp.colour, zp.width, zp.dash, zp.hollow),
+            (key.colour, key.width, key.dash, key.hollow)
         );
-        // The shared curve is neutral (issue 35): the colour of neither scheme.
-        assert!(LOOKS.iter().all(|l| key.colour != l.colour()));
+        assert_eq!(key.colour, Look::Zp.colour());
+        assert!(key.hollow && key.dash == crate::plot::chart::Dash::Dashed);
     }
 
     /// The caption never prints a degenerate range "X to X" (issue 25: "ZP 1.949 to 1.949",
@@ -535,7 +552,8 @@ mod tests {
         let own = fig.page.caption.join(" ");
         let theirs = fig7.caption_text();
         let fig7_step = degrees_before(&theirs, "° grid");
-        let step = degrees_before(&own, "° apart");
+        let step = degrees_before(&own, "°, over k");
+        assert!(own.contains(&format!("light directions sampled every {step}°")));
         assert!(step > fig7_step && (step / fig7_step).fract() == 0.0);
     }
 
@@ -561,10 +579,12 @@ mod tests {
         }
         let abs = &fig.page.charts[0].series;
         // The key names ZP's worst case alone (sixth review, R6-lloyd2006-worst-case-3);
-        // docs/figures.md says that it lies under ZP+W's for k ≥ 2 (the caption has five
-        // lines at most).
-        assert_eq!(abs[0].label.as_deref(), Some("ZP, worst"));
-        for (z, w) in abs[0].points.iter().zip(&abs[2].points).skip(1) {
+        // docs/figures.md says that it lies close under ZP+W's for k ≥ 2, whose markers it is
+        // drawn over (series 3 over series 2).
+        assert!(abs.iter().any(|s| s.label.as_deref() == Some("ZP, worst")));
+        assert_eq!(abs[3].colour, Look::Zp.colour());
+        assert_eq!(abs[2].colour, Look::ZpW.colour());
+        for (z, w) in abs[3].points.iter().zip(&abs[2].points).skip(1) {
             let r = z.1 / w.1;
             assert!((0.85..=1.0).contains(&r), "k = {}: {r}", z.0);
         }
@@ -583,14 +603,14 @@ mod tests {
         let text = fig.page.caption.join(" ");
         // One column's five lines have room for where the worst lies, not the rule's wording.
         assert!(
-            text.contains(ORIENTATION),
+            text.contains(TURN),
             "two columns: no orientation rule in {text}"
         );
         for (form, caption) in [("two columns", &text), ("one column", &single)] {
             assert!(!caption.contains("minimum-area"), "{form}: {caption}");
         }
         // The crate's own rule gives 1.998 at every k (the sweep of the figure's data).
-        assert!(text.contains("ZP 1.998 at every k"), "{text}");
+        assert!(text.contains("ZP 1.998;"), "{text}");
     }
 
     /// Sixth review, R6-lloyd2006-worst-case-1/-5: both captions say where ZP's worst case lies
@@ -614,21 +634,25 @@ mod tests {
             fig.single.as_ref().unwrap().page.caption.join(" "),
         ] {
             let c = caption.replace('\u{a0}', " ");
+            // Elevation and azimuth written out (seventh review, R7-2006wc-1).
             assert!(
-                c.contains("ZP's worst lies at el = az = 2°")
-                    || c.contains("ZP's worst at el = az = 2°"),
+                c.contains("ZP's worst light lies at elevation 2°, azimuth 2° from behind")
+                    || c.contains("ZP's worst light: elevation 2°, azimuth 2° from behind"),
                 "{c}"
             );
-
+            assert!(!c.contains("el =") && !c.contains("az ="), "{c}");
             assert!(c.contains("not a figure of the paper"), "{c}");
-            assert!(c.contains("(Eq 20, 21)"), "{c}");
-            assert!(c.contains("LiSPSM does not revert for γ < θ"), "{c}");
         }
-        // The ratio exactly behind and ZP+W's factor 10° above behind: the two-column
-        // caption's.
+        // The equations, what turns against what and ZP+W's factor 10° above behind: the
+        // two-column caption's.
         {
             let c = fig.page.caption.join(" ").replace('\u{a0}', " ");
-            assert!(c.contains("exactly behind 1.000"), "{c}");
+            assert!(c.contains("(Eq 20, 21)"), "{c}");
+            assert!(c.contains("LiSPSM does not revert for γ < θ"), "{c}");
+            assert!(
+                c.contains("its map turns 45° to the frustum's square outline"),
+                "{c}"
+            );
             let tail = c
                 .split("10° above behind, ZP+W's S̄ at k = 1 is ")
                 .nth(1)

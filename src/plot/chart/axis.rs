@@ -567,9 +567,12 @@ pub(crate) fn build_chart_styled<'a, DB: DrawingBackend>(
     let m = style.margin;
     let mut inner = area.margin(m, m, m, 2 * m);
     if !title.is_empty() {
-        inner = inner
-            .titled(title, (FONT, style.title_size))?
-            .margin(TITLE_GAP, 0, 0, 0);
+        // A title of several lines ('\n' between them; lloyd2006-fig12's panels), each line
+        // under the one before; a title of one line as before.
+        for line in title.split('\n') {
+            inner = inner.titled(line, (FONT, style.title_size))?;
+        }
+        inner = inner.margin(TITLE_GAP, 0, 0, 0);
     }
     let mut builder = ChartBuilder::on(&inner);
     builder
