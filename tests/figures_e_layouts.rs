@@ -69,7 +69,9 @@ fn captions_are_five_lines_with_formulas_whole() {
 
 /// martin-tan-fig3's caption claims nothing the figure does not show (the review: "T wins for
 /// 29 % of lights", a share over the hemisphere drawn nowhere), and in one column it still
-/// gives the light's azimuth (the review: "80° up" alone under-specified it).
+/// gives the light's azimuth (the review: "80° up" alone under-specified it), in the words of
+/// the other figures, elevation and azimuth (R7-MT3-3: it said "80° high, 70° round from
+/// behind").
 #[test]
 fn martin_tan_fig3_caption_shows_what_it_says() {
     for column in [Column::Double, Column::Single] {
@@ -78,7 +80,7 @@ fn martin_tan_fig3_caption_shows_what_it_says() {
             .replace('\u{a0}', " ");
         assert!(!caption.contains("wins"), "{column:?}: {caption}");
         assert!(
-            caption.contains("70° round from behind"),
+            caption.contains("elevation 80°, azimuth 70° from behind"),
             "{column:?}: {caption}"
         );
     }

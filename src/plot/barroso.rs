@@ -182,6 +182,10 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     })
 }
 
+/// Where (b)'s name of the two angle lines starts: degrees right of the right line, and n′
+/// (the top of the window, [`WINDOW_N`], is 100).
+const ANGLES_NOTE: (f64, f64) = (0.6, 90.0);
+
 /// `c` magnified to γ in [`WINDOW`] and n′ in [`WINDOW_N`], where the curves separate (issue
 /// 25): the same series, each cut to the window (so that its markers fall inside it), the
 /// figure's one legend, and the two angles as vertical lines named in it.
@@ -223,6 +227,13 @@ fn magnified(c: &LineChart, gl_deg: f64, phi_deg: f64) -> LineChart {
         line.reference = true;
         z.series.push(line);
     }
+    // One name for the pair at their top, right of the right one (R7-B7-1: 0.5° apart, two
+    // units on the page, they read as one line; the key tells them apart).
+    z.notes.push(Note {
+        at: (gl_deg.max(phi_deg) + ANGLES_NOTE.0, ANGLES_NOTE.1),
+        text: "θ, γ_{lim}".to_string(),
+        colour: RGBColor(90, 90, 90),
+    });
     // The figure's one key, under both panels.
     z.legend_below = true;
     z
@@ -306,10 +317,12 @@ mod tests {
         let bold = &a.series[0];
         assert!(bold.label.as_deref().unwrap().ends_with("(Barroso)"));
         assert!(a.series[1..].iter().all(|s| s.width < bold.width));
-        // (a)'s one note is on the curves clipped at its top, not an angle's; (b) has none.
+        // (a)'s one note is on the curves clipped at its top, not an angle's; (b)'s one note
+        // names its two angle lines together (R7-B7-1).
         assert_eq!(a.notes.len(), 1, "{:?}", a.notes);
         assert!(a.notes[0].text.contains("clipped"), "{:?}", a.notes);
-        assert!(b.notes.is_empty(), "{:?}", b.notes);
+        assert_eq!(b.notes.len(), 1, "{:?}", b.notes);
+        assert_eq!(b.notes[0].text, "θ, γ_{lim}");
         // (a)'s series are its six curves; no vertical line (two points at one γ).
         assert_eq!(a.series.len(), 6);
         assert!(a.series.iter().all(|s| s.points.len() > 2));
@@ -514,5 +527,57 @@ mod tests {
         let at = |k: usize, g: f64| b.series[k].points.iter().find(|p| p.0 == g).unwrap().1;
         assert!((at(2, 25.0) - 26.028).abs() < 1e-3, "{}", at(2, 25.0));
         assert!(at(2, 25.0) > 3.0 * at(1, 25.0), "{}", at(1, 25.0));
+    }
+
+    /// R7-B7-1, read from the SVG in both layouts: (b)'s θ = 30° and γ_lim = 30.5° lines, two
+    /// units apart, are named once at their top: the text "θ, γ" with the subscript "lim"
+    /// starts right of the right one (γ_lim's dashed vertical) and within 12 units of it, and
+    /// stands in the top fifth of the plots' height.
+    #[test]
+    fn the_angle_lines_are_named_once_at_their_top() {
+        use super::super::chart::read_svg::{attr, points, texts};
+        use super::super::hemisphere::svg_in;
+        let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
+        for column in [Column::Double, Column::Single] {
+            let svg = svg_in(&fig, column);
+            // Vertical pieces: the long ones (spines, grid lines) span the plots' height; the
+            // short ones near the name are the angle lines' dashes and dots.
+            let verticals: Vec<Vec<(f64, f64)>> = svg
+                .lines()
+                .filter(|l| l.starts_with("<polyline"))
+                .filter_map(points)
+                .filter(|p| p.len() == 2 && p[0].0 == p[1].0)
+                .collect();
+            let long = verticals.iter().filter(|p| (p[0].1 - p[1].1).abs() > 100.0);
+            let top = long
+                .clone()
+                .map(|p| p[0].1.min(p[1].1))
+                .fold(f64::INFINITY, f64::min);
+            let bottom = long.map(|p| p[0].1.max(p[1].1)).fold(0.0, f64::max);
+            let all = texts(&svg);
+            let note = all
+                .iter()
+                .find(|t| t.1 == "θ, γlim")
+                .unwrap_or_else(|| panic!("{column:?}: no \"θ, γ_lim\" in (b)"));
+            let x = attr(note.0, "x").unwrap();
+            // The right angle line (γ_lim's dashes): the rightmost short vertical piece near it
+            // in the plots' upper half (the x ticks are short vertical pieces at the bottom).
+            let mid = 0.5 * (top + bottom);
+            let gl = verticals
+                .iter()
+                .filter(|p| (p[0].1 - p[1].1).abs() < 100.0 && (x - p[0].0).abs() < 40.0)
+                .filter(|p| p[0].1.max(p[1].1) < mid)
+                .map(|p| p[0].0)
+                .fold(f64::NEG_INFINITY, f64::max);
+            assert!(
+                x > gl && x - gl <= 12.0,
+                "{column:?}: the name starts at {x}, the γ_lim line at {gl}"
+            );
+            assert!(
+                note.2 - top <= 0.2 * (bottom - top),
+                "{column:?}: the name at y {} in a plot from {top} to {bottom}",
+                note.2
+            );
+        }
     }
 }

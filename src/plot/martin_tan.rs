@@ -203,7 +203,7 @@ fn profile_floor(a: &[(f64, f64)], b: &[(f64, f64)]) -> f64 {
 
 impl Figure for Fig6 {
     fn size(&self) -> (u32, u32) {
-        (520, 470)
+        (520, 470 + BAR_CAPTION_GAP)
     }
 
     /// One column: the hemisphere with its bar beside it, over the profile.
@@ -258,7 +258,7 @@ impl Figure for Fig6 {
             let (left, right) = body.split_horizontally(w * 27 / 50);
             let left = left.margin(TITLE_ALIGN, 0, 0, 0);
             let (lw, lh) = left.dim_in_pixel();
-            let side = lw.min(lh.saturating_sub(28 + BAR_ACROSS));
+            let side = lw.min(lh.saturating_sub(28 + BAR_ACROSS + BAR_CAPTION_GAP));
             let (disk, rest) = left.split_vertically(28 + side);
             draw_hemisphere_keyed(&disk, PANEL_A, &self.grid, &self.scale, true, true)?;
             let (bar, _) = rest.split_vertically(BAR_ACROSS);
@@ -280,6 +280,11 @@ const PANEL_A_SINGLE: &str = "(a) 80 % rule";
 
 /// The height of a colour bar laid across, with its tick labels and name, in units.
 const BAR_ACROSS: u32 = 58;
+
+/// The room left under the bar laid across (two columns), in units: its name "(a) share of the
+/// map (log scale)" stood 5 units over the caption and read as the caption's first line
+/// (R7-MT6-1); the figure is that much taller, the disk as large as before.
+const BAR_CAPTION_GAP: u32 = 12;
 
 #[cfg(test)]
 mod tests {
@@ -560,5 +565,33 @@ mod tests {
                 "{column:?}"
             );
         }
+    }
+
+    /// R7-MT6-1, read from the two-column SVG: the colour bar's name "(a) share of the map (log
+    /// scale)" (anchored at its bottom) stands at least 12 units plus its descent (a quarter of
+    /// its size) over the caption's first line (anchored at its top): it was 7 units, and read
+    /// as the caption's first line.
+    #[test]
+    fn bar_name_stands_clear_of_the_caption() {
+        use super::super::chart::read_svg::{attr, draw_svg, texts};
+        let fig = fig6().map_err(|e| e.named("martin-tan-fig6")).unwrap();
+        let svg = draw_svg(fig.size(), |area| fig.draw(area).unwrap());
+        let all = texts(&svg);
+        let name = all
+            .iter()
+            .find(|t| t.1 == "(a) share of the map (log scale)")
+            .expect("the bar's name");
+        assert!(name.0.contains("dy=\"-0.5ex\""), "{}", name.0);
+        let caption = all
+            .iter()
+            .filter(|t| t.0.contains("fill=\"#323232\""))
+            .map(|t| t.2)
+            .fold(f64::INFINITY, f64::min);
+        let descent = 0.25 * attr(name.0, "font-size").unwrap();
+        assert!(
+            caption - name.2 >= 12.0 + descent,
+            "the bar's name at y {} (bottom), the caption from {caption}",
+            name.2
+        );
     }
 }

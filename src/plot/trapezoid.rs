@@ -246,19 +246,25 @@ impl Fig3 {
     }
 }
 
-/// The legend's row height, and its strip's height for `rows` rows.
+/// The legend's row height, the padding inside its box, and the strip's height it takes: three
+/// rows in a box, [`LEGEND_MARGIN`] over it and under it (so that the box stands apart from
+/// the caption).
 const LEGEND_ROW: i32 = 20;
-fn legend_h(rows: u32) -> u32 {
-    rows * LEGEND_ROW as u32 + 4
+const LEGEND_PAD: i32 = 5;
+const LEGEND_MARGIN: i32 = 8;
+const LEGEND_ROWS: i32 = 3;
+fn legend_h() -> u32 {
+    (2 * LEGEND_MARGIN + 2 * LEGEND_PAD + LEGEND_ROWS * LEGEND_ROW) as u32
 }
 
 /// The figure's one legend, one entry per shape in the colours and strokes of every panel, in
-/// `columns` columns across the strip under all the panels (issue 25: drawn inside (a), its
-/// box covered part of the drawing; the review: under (a) only, while (b) and (c) use it too).
-fn draw_legend<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    columns: i32,
-) -> Result<(), Fail> {
+/// a box of two columns centred under all the panels, each column as wide as its widest entry
+/// (the box narrower than the panels in both layouts), as the line
+/// charts' legends are boxed (issue 25: drawn inside (a), its box covered part of the drawing;
+/// R7-MT3-1: an unboxed 3 × 2 grid spread over the page's width did not group its entries).
+/// The left column names the eye's shapes (E, its hull C, the focus region), the right one
+/// the maps' outlines (T, B, the axis-aligned box).
+fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
     let entries: [(&str, RGBColor, Option<Stroke>); 6] = [
         ("frustum E", EDGE, Some(Stroke::Solid)),
         ("hull C", HULL, None),
@@ -267,13 +273,30 @@ fn draw_legend<DB: DrawingBackend>(
         ("min-area box B", MIN_BOX, Some(Stroke::Dashed)),
         ("axis-aligned box", AXIS_BOX, Some(Stroke::Dotted)),
     ];
-    let (w, _) = area.dim_in_pixel();
-    let col_w = (w as i32 - 10) / columns;
     let style = TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
+    // A column's width: its widest entry's sample (18), gap (4) and text.
+    let mut col_w = [0i32; 2];
+    for (i, (label, ..)) in entries.iter().enumerate() {
+        let (w, _) = area
+            .estimate_text_size(label, &style)
+            .map_err(|e| Fail::Draw(e.to_string()))?;
+        let c = i / LEGEND_ROWS as usize;
+        col_w[c] = col_w[c].max(22 + w as i32);
+    }
+    const COLUMN_GAP: i32 = 16;
+    let (aw, _) = area.dim_in_pixel();
+    let box_w = 2 * LEGEND_PAD + col_w[0] + COLUMN_GAP + col_w[1];
+    let x0 = ((aw as i32 - box_w) / 2).max(0);
+    let y0 = LEGEND_MARGIN;
+    let box_h = 2 * LEGEND_PAD + LEGEND_ROWS * LEGEND_ROW;
+    let corners = [(x0, y0), (x0 + box_w, y0 + box_h)];
+    area.draw(&Rectangle::new(corners, WHITE.filled()))?;
+    area.draw(&Rectangle::new(corners, LEGEND_FRAME))?;
     for (i, (label, colour, stroke)) in entries.into_iter().enumerate() {
+        let (c, r) = (i as i32 / LEGEND_ROWS, i as i32 % LEGEND_ROWS);
         let (x, y) = (
-            5 + (i as i32 % columns) * col_w,
-            11 + (i as i32 / columns) * LEGEND_ROW,
+            x0 + LEGEND_PAD + c * (col_w[0] + COLUMN_GAP),
+            y0 + LEGEND_PAD + r * LEGEND_ROW + LEGEND_ROW / 2,
         );
         let pieces: [(i32, i32); 4] = match stroke {
             None => [(0, 0); 4],
@@ -299,9 +322,12 @@ fn draw_legend<DB: DrawingBackend>(
     Ok(())
 }
 
+/// The legend box's outline: the line charts' legends' grey.
+const LEGEND_FRAME: RGBColor = RGBColor(120, 120, 120);
+
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
-        (520, 560)
+        (520, 590)
     }
 
     /// One column: the same layout, narrower: (a) on the left, (b) over (c) on the right, the
@@ -315,9 +341,9 @@ impl Figure for Fig3 {
         let (pct, nb) = (|v: f64| format!("{:.1}\u{a0}%", 100.0 * v), '\u{a0}');
         let caption = if single {
             format!(
-                "Martin & Tan 2004, Figs. 3 and 4: T of the 80{nb}% rule (δ{nb}={nb}{FOCUS}), \
-                 n{nb}={nb}{}, f{nb}={nb}{}, θ{nb}={nb}{}°, light {}° up, {}° round from behind \
-                 to the right; B: the paper's smallest box. C covers {} of \
+                "Martin & Tan 2004, Figs. 3, 4: T (80{nb}% rule, δ{nb}={nb}{FOCUS}), \
+                 n{nb}={nb}{}, f{nb}={nb}{}, θ{nb}={nb}{}°, light at elevation {}°, azimuth {}° \
+                 from behind to the right; B: the smallest box. C covers {} of \
                  T's map (b), {} of B's (c).",
                 VIEW.0,
                 VIEW.1,
@@ -330,10 +356,10 @@ impl Figure for Fig3 {
         } else {
             format!(
                 "Martin & Tan 2004, Figs. 3 and 4: the 80{nb}% rule's trapezoid T \
-                 (δ{nb}={nb}{FOCUS}), n{nb}={nb}{}, f{nb}={nb}{}, θ{nb}={nb}{}°, light {}° \
-                 high, {}° round from behind to the viewer's right; the inset under{nb}(a) \
-                 enlarges its grey box at the apex. As in the paper (§3, §5), B is the \
-                 smallest (rotated) box; dotted: the axis-aligned one. C covers {} of the map in T's \
+                 (δ{nb}={nb}{FOCUS}), n{nb}={nb}{}, f{nb}={nb}{}, θ{nb}={nb}{}°, light at \
+                 elevation {}°, azimuth {}° from behind towards the viewer's right; the inset \
+                 enlarges (a)'s grey box. As in the paper (§3, §5), B is the smallest (rotated) \
+                 box; dotted: the axis-aligned one. C covers {} of the map in T's \
                  space (b), {} in B's (c), {} in the axis-aligned box's.",
                 VIEW.0,
                 VIEW.1,
@@ -355,8 +381,7 @@ impl Figure for Fig3 {
         // 960 units tall). Every panel's area is cut to its plot's shape, so that no axis runs
         // past its data (review 3: (b) and (c) ran from −1.9 to 2 for a map on [−1, 1]).
         let (_, bh) = body.dim_in_pixel();
-        let (columns, rows) = if single { (2, 3) } else { (3, 2) };
-        let (upper, strip) = body.split_vertically(bh.saturating_sub(legend_h(rows)));
+        let (upper, strip) = body.split_vertically(bh.saturating_sub(legend_h()));
         let style = if single {
             ChartStyle {
                 y_label_area: 46,
@@ -389,11 +414,9 @@ impl Figure for Fig3 {
             Axis::linear("map s", -0.05, 1.05),
             Axis::linear("map t", -0.05, 1.05),
         );
-        let titles = if single {
-            ["(b) T's space", "(c) B's space"]
-        } else {
-            ["(b) trapezoidal space (N_{T})", "(c) the box B's space"]
-        };
+        // The same titles in both layouts (R7-MT3-4: "(b) trapezoidal space (N_T)" ended 4
+        // units from the bare figure's right edge).
+        let titles = ["(b) T's space (N_{T})", "(c) B's space"];
         let probe = upper.clone().shrink((0, 0), (uw, b_h));
         let (_, side) = plot_size(&probe, titles[0], &square.0, &square.1, &b_style)?;
         let right_w = (side as u32 + style.y_label_area + 3 * style.margin + 1).min(uw / 2);
@@ -496,8 +519,7 @@ impl Figure for Fig3 {
         outline(&mut chart, &axis_box, AXIS_BOX, Stroke::Dotted)?;
         outline(&mut chart, &self.trapezoid, TRAP, Stroke::Solid)?;
         outline(&mut chart, &self.obox, MIN_BOX, Stroke::Dashed)?;
-        self.draw_inset(&inset_strip, &chart, unit)?;
-        draw_legend(&strip, columns)?;
+        self.draw_inset(&inset_strip, &chart, unit, (!single).then_some(&upper))?;
         // (b), (c): the two normalised spaces; the map square in the colour of its shape.
         for (panel, h, title, colour, stroke, st) in [
             (&b_area, self.n_t, titles[0], TRAP, Stroke::Solid, &b_style),
@@ -526,7 +548,7 @@ impl Figure for Fig3 {
                 self.point_to_focus(&mut chart, &h)?;
             }
         }
-        Ok(())
+        draw_legend(&strip)
     }
 }
 
@@ -571,7 +593,7 @@ const FOCUS_LABEL_AT: (f64, f64) = (0.03, 0.45);
 const INSET_STRIP: [f64; 2] = [0.2, 0.27];
 
 /// The one-column figure's height: at most 525 units (420 points printed 240 wide).
-const SINGLE_H: u32 = 480;
+const SINGLE_H: u32 = 496;
 
 /// The x axis of (a): the light's −x, to the right as the light sees the scene (named as in
 /// every figure; its vertical partner is "light-view y").

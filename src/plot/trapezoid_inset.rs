@@ -43,13 +43,17 @@ impl Fig3 {
     /// The inset of (a): the apex enlarged in `strip`, the area under (a)'s axes and their
     /// names, framed, centred under the apex as far as the strip allows, labelled with its
     /// enlargement over (a) ("×4"; `unit` is (a)'s units per light-space unit), with the window
-    /// it shows outlined in (a) in the frame's grey. No line joins them: one would cross (a)'s
-    /// x axis, its tick labels and its name.
+    /// it shows outlined in (a) in the frame's grey. With `joined` (an area holding both, across
+    /// two columns) the window's lower corners are joined to the frame's upper ones, as
+    /// lloyd2005-fig8 joins its inset (R7-MT3-2): the lines cross (a)'s x axis between its tick
+    /// labels and pass beside its name. One column joins nothing: its inset, as wide as the
+    /// column, would draw them across (a)'s "−50".
     pub(super) fn draw_inset<DB: DrawingBackend>(
         &self,
         strip: &DrawingArea<DB, Shift>,
         chart: &super::super::chart::Chart2d<'_, DB>,
         unit: f64,
+        joined: Option<&DrawingArea<DB, Shift>>,
     ) -> Result<(), Fail> {
         let (sw, sh) = strip.dim_in_pixel();
         let (sx, _) = strip.get_base_pixel();
@@ -72,6 +76,18 @@ impl Fig3 {
             [(c0.0 - px, c1.1 - py), (c1.0 - px, c0.1 - py)],
             FRAME.stroke_width(1),
         ))?;
+        if let Some(whole) = joined {
+            let (bx, by) = whole.get_base_pixel();
+            let (ix, iy) = strip.get_base_pixel();
+            let (ix, iy) = (ix - bx + x0, iy - by + y0);
+            let joins = [
+                ((c0.0 - bx, c0.1 - by), (ix, iy)),
+                ((c1.0 - bx, c0.1 - by), (ix + w - 1, iy)),
+            ];
+            for (from, to) in joins {
+                whole.draw(&PathElement::new(vec![from, to], FRAME.stroke_width(1)))?;
+            }
+        }
         let inset = strip.clone().shrink((x0, y0), (w as u32, h as u32));
         inset.fill(&WHITE)?;
         let mut zoom = ChartBuilder::on(&inset).build_cartesian_2d(

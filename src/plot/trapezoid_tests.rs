@@ -517,3 +517,222 @@ fn inset_framed_outside_panel_a_axes() {
         );
     }
 }
+
+/// The seventh review, read from the SVG in all three forms. R7-MT3-1: the legend is one box
+/// (an unfilled rectangle in the legends' grey #787878 round all six entries) of two columns,
+/// the eye's shapes left (frustum E, hull C, focus region), the maps' outlines right
+/// (trapezoid T, min-area box B, axis-aligned box), three rows, no wider than 60 % of the page
+/// across two columns (it was an unboxed 3 × 2 grid over the page's width). R7-MT3-4: the maps'
+/// titles are the same in both layouts, "(b) T's space (N_T)" and "(c) B's space" (two
+/// columns' "(b) trapezoidal space (N_T)" ended 4 units from the bare figure's edge).
+/// R7-MT3-3: the captions give the light as "elevation 80°, azimuth 70° from behind", in the
+/// words of the other figures.
+#[test]
+fn legend_boxed_in_two_columns_titles_and_light_words() {
+    use super::super::chart::read_svg::{attr, draw_svg, texts};
+    use super::super::chart::with_page;
+    let fig = fig3().map_err(|e| e.named("martin-tan-fig3")).unwrap();
+    let left = ["frustum E", "hull C", "focus region"];
+    let right = ["trapezoid T", "min-area box B", "axis-aligned box"];
+    for (column, bare) in [
+        (Column::Double, false),
+        (Column::Double, true),
+        (Column::Single, false),
+    ] {
+        let size = match column {
+            Column::Double => fig.size(),
+            Column::Single => fig.single_size().expect("a one-column layout"),
+        };
+        let svg = with_page(bare, column, || {
+            draw_svg(size, |area| fig.draw(area).unwrap())
+        });
+        let all = texts(&svg);
+        let at = |label: &str| -> (f64, f64) {
+            let t = all
+                .iter()
+                .find(|t| t.1 == label)
+                .unwrap_or_else(|| panic!("{column:?}: no {label:?}"));
+            (attr(t.0, "x").unwrap(), t.2)
+        };
+        let (l, r): (Vec<_>, Vec<_>) = (left.map(at).to_vec(), right.map(at).to_vec());
+        for col in [&l, &r] {
+            assert!(
+                col.iter().all(|p| p.0 == col[0].0),
+                "{column:?}: a column's x differ: {col:?}"
+            );
+        }
+        assert!(r[0].0 > l[0].0, "{column:?}: {l:?} {r:?}");
+        for i in 0..3 {
+            assert_eq!(l[i].1, r[i].1, "{column:?}: row {i}");
+            if i > 0 {
+                assert!(l[i].1 > l[i - 1].1, "{column:?}: {l:?}");
+            }
+        }
+        let boxes: Vec<[f64; 4]> = svg
+            .lines()
+            .filter(|el| {
+                el.starts_with("<rect") && el.contains("stroke=\"#787878\"") && el.contains("none")
+            })
+            .map(|el| {
+                let n = |k: &str| attr(el, k).unwrap();
+                [n("x"), n("y"), n("x") + n("width"), n("y") + n("height")]
+            })
+            .filter(|b| {
+                l.iter()
+                    .chain(&r)
+                    .all(|p| (b[0]..=b[2]).contains(&p.0) && (b[1]..=b[3]).contains(&p.1))
+            })
+            .collect();
+        assert_eq!(boxes.len(), 1, "{column:?}: {boxes:?}");
+        let b = boxes[0];
+        let page = f64::from(size.0);
+        if column == Column::Double {
+            assert!(b[2] - b[0] <= 0.6 * page, "{column:?}: {b:?}");
+        } else {
+            assert!(b[0] >= 0.0 && b[2] <= page, "{column:?}: {b:?}");
+        }
+        let plain: Vec<String> = all.iter().map(|t| t.1.replace("&apos;", "'")).collect();
+        for title in ["(b) T's space (NT)", "(c) B's space"] {
+            assert!(
+                plain.iter().any(|t| t == title),
+                "{column:?}: {title}: {plain:?}"
+            );
+        }
+        assert!(!plain.iter().any(|t| t.contains("trapezoidal space")));
+        if !bare {
+            let caption: String = all
+                .iter()
+                .filter(|t| t.0.contains("fill=\"#323232\""))
+                .map(|t| t.1.clone() + " ")
+                .collect();
+            let words = format!(
+                "elevation {:.0}°, azimuth {:.0}° from behind",
+                LIGHT.0, LIGHT.1
+            );
+            assert!(
+                caption.replace('\u{a0}', " ").contains(&words),
+                "{column:?}: {caption}"
+            );
+            assert!(!caption.contains("round from behind"), "{caption}");
+        }
+    }
+}
+
+/// R7-MT3-2, read from the SVG: across two columns (captioned and bare) two grey lines
+/// (#5A5A5A, 1 unit) join the window's lower corners in (a) to the inset frame's upper corners
+/// (each end within 1.5 units of its corner), and pass at least 3 units clear of every text
+/// they run beside (the x tick labels and the name "light-view x": boxes from the texts' anchors
+/// and widths measured by the backend at their size); one column joins nothing (the inset, as
+/// wide as the column, would draw them across "−50").
+#[test]
+fn inset_joined_to_its_window_across_two_columns() {
+    use super::super::chart::read_svg::{attr, draw_svg, points, texts};
+    use super::super::chart::{with_page, FONT};
+    let fig = fig3().map_err(|e| e.named("martin-tan-fig3")).unwrap();
+    for (column, bare) in [
+        (Column::Double, false),
+        (Column::Double, true),
+        (Column::Single, false),
+    ] {
+        let size = match column {
+            Column::Double => fig.size(),
+            Column::Single => fig.single_size().expect("a one-column layout"),
+        };
+        let mut widths: Vec<(String, u32, f64)> = Vec::new();
+        let svg = with_page(bare, column, || {
+            draw_svg(size, |area| {
+                fig.draw(area).unwrap();
+                for label in ["−50", "0", "50", "light-view x", "×3", "×10"] {
+                    for px in [13, 15] {
+                        let style = TextStyle::from((FONT, px).into_font());
+                        let w = area.estimate_text_size(label, &style).unwrap().0;
+                        widths.push((label.to_string(), px, f64::from(w)));
+                    }
+                }
+            })
+        });
+        // The window (smaller) and the frame (larger): the grey unfilled rectangles.
+        let mut rects: Vec<[f64; 4]> = svg
+            .lines()
+            .filter(|l| l.starts_with("<rect") && l.contains("stroke=\"#5A5A5A\""))
+            .map(|l| {
+                let n = |k: &str| attr(l, k).unwrap();
+                [n("x"), n("y"), n("x") + n("width"), n("y") + n("height")]
+            })
+            .collect();
+        rects.sort_by(|a, b| (a[2] - a[0]).total_cmp(&(b[2] - b[0])));
+        let (window, frame) = (rects[0], rects[1]);
+        let near = |p: (f64, f64), q: (f64, f64)| (p.0 - q.0).hypot(p.1 - q.1) <= 1.5;
+        let joins: Vec<Vec<(f64, f64)>> = svg
+            .lines()
+            .filter(|l| {
+                l.starts_with("<polyline")
+                    && l.contains("stroke=\"#5A5A5A\"")
+                    && l.contains("stroke-width=\"1\"")
+            })
+            .filter_map(points)
+            .filter(|p| p.len() == 2)
+            .filter(|p| {
+                [(frame[0], frame[1]), (frame[2] - 1.0, frame[1])]
+                    .iter()
+                    .any(|&c| near(p[1], c) || near(p[0], c))
+            })
+            .collect();
+        if column == Column::Single {
+            assert!(joins.is_empty(), "{column:?}: {joins:?}");
+            continue;
+        }
+        assert_eq!(joins.len(), 2, "{column:?} {bare}: {joins:?}");
+        for (corner, frame_corner) in [
+            ((window[0], window[3]), (frame[0], frame[1])),
+            ((window[2], window[3]), (frame[2] - 1.0, frame[1])),
+        ] {
+            assert!(
+                joins
+                    .iter()
+                    .any(|j| near(j[0], corner) && near(j[1], frame_corner)),
+                "{column:?} {bare}: no line from {corner:?} to {frame_corner:?}: {joins:?}"
+            );
+        }
+        // The texts between the window and the frame, as boxes.
+        for (line, text, y) in texts(&svg) {
+            let Some(&(_, _, w)) = widths.iter().find(|(t, px, _)| {
+                *t == text
+                    && (attr(line, "font-size").unwrap() - f64::from(*px) * 10.484 / 13.0).abs()
+                        < 0.05
+            }) else {
+                continue;
+            };
+            let size = attr(line, "font-size").unwrap();
+            let x = attr(line, "x").unwrap();
+            let (x0, x1) = if line.contains("text-anchor=\"middle\"") {
+                (x - w / 2.0, x + w / 2.0)
+            } else if line.contains("text-anchor=\"end\"") {
+                (x - w, x)
+            } else {
+                (x, x + w)
+            };
+            let (y0, y1) = if line.contains("dy=\"0.76em\"") {
+                (y, y + size)
+            } else if line.contains("dy=\"-0.5ex\"") {
+                (y - size, y)
+            } else {
+                (y - size / 2.0, y + size / 2.0)
+            };
+            if y1 < window[3] || y0 > frame[1] {
+                continue;
+            }
+            for j in &joins {
+                let ((ax, ay), (bx, by)) = (j[0], j[1]);
+                for k in 0..=20 {
+                    let yy = y0 + (y1 - y0) * f64::from(k) / 20.0;
+                    let xx = ax + (bx - ax) * (yy - ay) / (by - ay);
+                    assert!(
+                        xx < x0 - 3.0 || xx > x1 + 3.0,
+                        "{column:?} {bare}: the line {j:?} at y {yy} runs {xx}, within 3 units of {text:?} ({x0}–{x1})"
+                    );
+                }
+            }
+        }
+    }
+}

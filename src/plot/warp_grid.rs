@@ -10,7 +10,7 @@
 
 use super::chart::{
     build_chart_styled, clip_polyline, column, equal_aspect, frame, linspace, Axis, ChartStyle,
-    FONT, SHARED, SWEEP,
+    FONT, PANEL_TITLE, SHARED, SWEEP,
 };
 use super::{Fail, Figure, UNIT_SQUARE};
 use crate::analytic::eta::n_prime_from_eta;
@@ -201,27 +201,24 @@ pub(super) fn dashes(a: (f64, f64), b: (f64, f64), (on, off): (f64, f64)) -> Vec
     out
 }
 
-/// The lines of a panel's heading: its letter and η, then n′, then the scheme's name where
-/// there is one; in two columns' width the scheme's name follows η ("(a) η = −1 (uniform)").
-fn heading(letter: char, col: &Column, narrow: bool) -> Vec<String> {
-    match (col.scheme, narrow) {
-        (Some(s), false) => vec![format!("({letter}) {} ({s})", col.eta), col.n_prime.clone()],
-        (None, false) => vec![format!("({letter}) {}", col.eta), col.n_prime.clone()],
-        // One column: "(a) η = −1" over n′ and the scheme's name, each line narrower than a
-        // panel.
-        (s, true) => [format!("({letter}) {}", col.eta), col.n_prime.clone()]
-            .into_iter()
-            .chain(s.map(str::to_string))
-            .collect(),
-    }
+/// The lines of a panel's heading, in both layouts: its letter and η ("(a) η = −1"), n′, and
+/// the scheme's name where there is one ("uniform"), each line narrower than a panel (R7-X-7:
+/// across two columns at the common title size "(a) η = −1 (uniform)" on one line came within
+/// 9 units of "(b) η = −0.6").
+fn heading(letter: char, col: &Column) -> Vec<String> {
+    [format!("({letter}) {}", col.eta), col.n_prime.clone()]
+        .into_iter()
+        .chain(col.scheme.map(str::to_string))
+        .collect()
 }
 
 impl Fig4 {
     fn caption(&self) -> String {
         format!(
             "Lloyd et al. 2006, Fig. 4 (a schematic sketch there), from the warped matrices: \
-             n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, light \
-             overhead, the plane y\u{a0}=\u{a0}0. (a)–(d): from the light, the map's \
+             n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, the plane \
+             y\u{a0}=\u{a0}0, light overhead (eye x\u{a0}=\u{a0}light-view x). (a)–(d): from \
+             the light, the map's \
              {LINES}\u{a0}×\u{a0}{LINES} texel grid over the view frustum, pressed to the near \
              plane by the warp. (e)–(h): the same in the map, s,\u{a0}t\u{a0}∈\u{a0}[0,\u{a0}1]: \
              the frustum's planes of constant depth and rays from the eye.",
@@ -376,7 +373,7 @@ impl Fig4 {
 
     /// The two rows of panels on `body`: a column per n′ headed by its letter, η and n′ (and
     /// its scheme's name), the light's view over the map, titled "(e) map of (a)" (in one
-    /// column "(d) map of (a)"), every title at [`HEADING_SIZE`]. The
+    /// column "(d) map of (a)"), every title at [`heading_size`]. The
     /// columns share their axes: only the first has the y labels, and it is that much wider,
     /// so that every panel of a row has the same scale; in one column [`GAP`] units lie between
     /// neighbouring panels, so that one panel's last x tick label and the next one's first do
@@ -390,28 +387,28 @@ impl Fig4 {
         let (label_w, line_h, margin, x_labels, gap) = if narrow {
             (42u32, 14u32, 4u32, 32u32, GAP)
         } else {
-            (44, 16, 7, 36, 0)
+            (46, 18, 7, 38, 0)
         };
         let shown = self.shown(narrow);
         let count = shown.len() as u32;
         let pw = (bw - label_w - gap * (count - 1)) / count;
-        let heading_style = TextStyle::from((FONT, HEADING_SIZE).into_font())
+        let heading_style = TextStyle::from((FONT, heading_size(narrow)).into_font())
             .pos(Pos::new(HPos::Center, VPos::Top));
         let lines = shown
             .iter()
             .zip('a'..)
-            .map(|(&k, l)| heading(l, &self.columns[k], narrow).len())
+            .map(|(&k, l)| heading(l, &self.columns[k]).len())
             .max()
             .unwrap_or(1) as u32;
         let head = lines * line_h + 4;
         // One size for every panel's title, the headings' (the sixth review,
         // R6-lloyd2006-fig4-1: the maps' titles were 12.1 units, the headings 10.5).
         let st = |first: bool| ChartStyle {
-            title_size: HEADING_SIZE,
+            title_size: heading_size(narrow),
             x_label_area: x_labels,
             y_label_area: if first { label_w } else { 0 },
             tick_size: 13,
-            desc_size: 13,
+            desc_size: heading_size(narrow),
             margin,
         };
         // The rows' heights, each its equal-aspect plot's with nothing to spare: the light's
@@ -419,7 +416,7 @@ impl Fig4 {
         let t = self.view.tan_half_fov();
         let plot_w = f64::from(pw - 3 * margin);
         let light_h = (plot_w * 2.2 * t / 1.05).ceil() as u32 + x_labels + 2 * margin;
-        let map_title = HEADING_SIZE + super::chart::TITLE_GAP + 2;
+        let map_title = heading_size(narrow) + super::chart::TITLE_GAP + 2;
         let map_h = plot_w.ceil() as u32 + x_labels + 2 * margin + map_title;
         let spare = bh.saturating_sub(head + light_h + map_h);
         let (y_light, y_map) = (head + spare / 2, head + spare / 2 + light_h);
@@ -432,7 +429,7 @@ impl Fig4 {
             let cw = pw + if first { label_w } else { 0 };
             let x_mid = (cw - pw + pw / 2) as i32;
             let column = body.clone().shrink((x0, 0), (cw, bh));
-            for (j, line) in heading(letter(0, ii), col, narrow).into_iter().enumerate() {
+            for (j, line) in heading(letter(0, ii), col).into_iter().enumerate() {
                 column.draw(&Text::new(
                     line,
                     (x_mid, (spare / 2 + line_h * j as u32) as i32),
@@ -451,9 +448,18 @@ impl Fig4 {
     }
 }
 
-/// The size of every panel's title: the columns' headings and the maps' titles (plotters'
-/// size; 10.5 units in the SVG).
-const HEADING_SIZE: u32 = 13;
+/// The size of every panel's title, the columns' headings and the maps' titles, and of the axis
+/// names: across two columns the other figures' panel title size (12.1 units in the SVG;
+/// R7-X-7: they were 10.5 here, 12.1 in fifteen figures); in one column 10.5 units, as the
+/// other one-column figures' axis names, since at 12.1 "(e) map of (b)" is wider than a panel
+/// and its neighbour's title runs into it.
+fn heading_size(narrow: bool) -> u32 {
+    if narrow {
+        13
+    } else {
+        PANEL_TITLE
+    }
+}
 
 /// The room between neighbouring panels of a row in one column, in units.
 const GAP: u32 = 16;
@@ -462,7 +468,7 @@ impl Figure for Fig4 {
     /// Two columns: the two rows of four, the key under them in two rows (its five entries are
     /// wider than the page).
     fn size(&self) -> (u32, u32) {
-        (520, 540 + KEY_H)
+        (520, 566 + KEY_H)
     }
 
     /// One column: the two rows, three panels each (η = −1, 0, 1), the headings on three lines.
@@ -475,10 +481,10 @@ impl Figure for Fig4 {
         let caption = if narrow {
             format!(
                 "Lloyd et al. 2006, Fig. 4, from the warped matrices: n\u{a0}=\u{a0}{n}, \
-                 f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, light overhead, plane \
-                 y\u{a0}=\u{a0}0. (a)–(c): the {LINES}\u{a0}×\u{a0}{LINES} texel grid over \
-                 the frustum, from the light; (d)–(f): the frustum in the map, s,\u{a0}t\u{a0}∈\
-                 \u{a0}[0,\u{a0}1].",
+                 f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°, plane y\u{a0}=\u{a0}0, \
+                 light overhead (eye x\u{a0}=\u{a0}light-view x). (a)–(c): the \
+                 {LINES}\u{a0}×\u{a0}{LINES} texel grid from the light; (d)–(f): the \
+                 frustum in the map, s,\u{a0}t\u{a0}∈\u{a0}[0,\u{a0}1].",
                 n = self.view.near(),
                 f = self.view.far(),
                 theta = self.view.half_fov().to_degrees(),
@@ -601,6 +607,10 @@ fn draw_key<DB: DrawingBackend>(
 }
 
 #[cfg(test)]
+#[path = "warp_grid_tests.rs"]
+mod review7_tests;
+
+#[cfg(test)]
 mod tests {
     use super::*;
 
@@ -650,8 +660,8 @@ mod tests {
     /// drawn in dashes, so the grey rays' pieces outnumber them several times, while the planes
     /// of constant depth are whole, solid, darker and twice as thick as the texel grid (review
     /// 3: the two were solid purples of one weight, and the key's swatches likewise); the
-    /// column headings are one with their letters ("(a) η = −1 (uniform)", no "(a)" row of its
-    /// own); the map panels say whose map they are ("(e) map of (a)", in one column "(d) map of
+    /// column headings are one with their letters ("(a) η = −1" over "n′ = ∞" over "uniform",
+    /// no "(a)" row of its own); the map panels say whose map they are ("(e) map of (a)", in one column "(d) map of
     /// (a)": review 3, the bare form's lower row had no stated relation to the upper; review 6,
     /// R6-lloyd2006-fig4-3, one column's row label was an in-figure caption); the
     /// caption calls the paper's figure a sketch; the key names all four lines in the bare
@@ -741,7 +751,10 @@ mod tests {
                 caption.len()
             );
             if column == Page::Double {
-                assert!(all.iter().any(|t| t == "(a) η = −1 (uniform)"), "{all:?}");
+                // The scheme's name on a line of its own (R7-X-7: at the common title size
+                // "(a) η = −1 (uniform)" on one line came within 9 units of "(b) η = −0.6").
+                assert!(all.iter().any(|t| t == "(a) η = −1"), "{all:?}");
+                assert!(all.iter().any(|t| t == "uniform"), "{all:?}");
                 assert!(!all.iter().any(|t| t == "(a)"), "{all:?}");
                 for title in ["(e) map of (a)", "(f) map of (b)", "(h) map of (d)"] {
                     assert!(all.iter().any(|t| t == title), "{title}: {all:?}");
