@@ -570,3 +570,7 @@ mod review5_tests;
 #[cfg(test)]
 #[path = "lloyd2006_review6_tests.rs"]
 mod review6_tests;
+
+#[cfg(test)]
+#[path = "lloyd2006_review7_tests.rs"]
+mod review7_tests;
