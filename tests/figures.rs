@@ -819,8 +819,9 @@ fn geometric_diagrams_have_equal_aspect() {
         tag[at..at + tag[at..].find('"').unwrap()].parse().unwrap()
     };
     let svg = std::fs::read_to_string(dir.join("lloyd2006-fig11.svg")).unwrap();
-    // Each map's outline: the box round the dashes of its colour drawn 2 units wide (the key's
-    // samples, under the plot, left out; the maps are untinted since the fifth review).
+    // Each map's outline: the box round the dashes of its colour drawn 3 or more units wide (the
+    // key's samples, under the plot, left out; the maps are unfilled since the fifth review, and
+    // lines 5 wide or light bands 9 wide under the frustum's since the seventh, R7-X-3).
     let key_top = svg
         .find("Maps, nearest first:")
         .and_then(|i| svg[..i].rfind("<text "))
@@ -833,7 +834,12 @@ fn geometric_diagrams_have_equal_aspect() {
             .nth(1)
             .map(|r| &r[..7])
             .unwrap_or("");
-        if !line.contains("stroke-width=\"2\"") || stroke == "#000000" {
+        let width: f64 = line
+            .split("stroke-width=\"")
+            .nth(1)
+            .and_then(|r| r[..r.find('"')?].parse().ok())
+            .unwrap_or(0.0);
+        if width < 3.0 || stroke == "#000000" {
             continue;
         }
         let pts = line.split("points=\"").nth(1).unwrap();
