@@ -401,7 +401,7 @@ fn maps_show_on_either_side_of_their_lines() {
             if name == "barroso-fig5" {
                 // Maps by depth in (b): their edges across, nearest (largest y) first.
                 let mut by: Vec<(f64, String)> = Vec::new();
-                for (colour, _) in &width {
+                for colour in width.keys() {
                     let (_, ys) = sides(
                         &lines
                             .iter()
@@ -655,13 +655,16 @@ fn lines_between(svg: &str, from: &str, to: Option<&str>) -> Vec<Line> {
         .collect()
 }
 
+/// Polylines by colour.
+type ByColour = BTreeMap<String, Vec<Vec<(f64, f64)>>>;
+
 /// A panel's maps (their dashes by colour) and the frustum's black lines drawn after them:
 /// the maps' outlines are every stroke at least 3 wide that is neither black nor the grey of
 /// the enlarged region's box (#6E6E6E); the axes, drawn before them, are left out.
-fn maps_and_frustum(lines: &[Line]) -> (BTreeMap<String, Vec<Vec<(f64, f64)>>>, Vec<&Line>) {
+fn maps_and_frustum(lines: &[Line]) -> (ByColour, Vec<&Line>) {
     let is_map = |l: &Line| l.width >= 3.0 && l.colour != "#000000" && l.colour != "#6E6E6E";
     let first = lines.iter().position(is_map).expect("a map outline");
-    let mut maps: BTreeMap<String, Vec<Vec<(f64, f64)>>> = BTreeMap::new();
+    let mut maps: ByColour = BTreeMap::new();
     for l in lines.iter().filter(|l| is_map(l)) {
         maps.entry(l.colour.clone())
             .or_default()
