@@ -247,7 +247,7 @@ fn bare_scale_and_dpi_for_publication() {
     let plain_png = std::fs::read(dir.join("lloyd2006-fig6.png")).unwrap();
     // The title and the caption as src/plot/lloyd2006.rs writes them.
     let title =
-        [">Maximum error and <tspan text-decoration=\"overline\">S</tspan> against η</text>"];
+        [">Maximum error and storage factor <tspan text-decoration=\"overline\">S</tspan> against η</text>"];
     let caption = "Lloyd et al. 2006, Fig. 6";
     assert!(title.iter().all(|t| plain_svg.contains(t)) && plain_svg.contains(caption));
     // 432 dpi by default (the PNG's 6 pixels per unit over the SVG's 1 unit per point × 72
@@ -270,7 +270,7 @@ fn bare_scale_and_dpi_for_publication() {
         "bare keeps title or caption"
     );
     assert!(svg.contains("M<tspan"), "bare lost the axis labels");
-    // The figure is 520 × 420 units, drawn at plot::PNG_ZOOM = 6 pixels per unit: 3120 × 2520.
+    // The figure is 520 × 490 units, drawn at plot::PNG_ZOOM = 6 pixels per unit: 3120 × 2940.
     // Bare, it is cropped to the box of its ink and 2 units around it (tests/figures_bare.rs): a
     // view box narrower and shorter than the page, which the PNG draws at twice the pixels per
     // unit (scale 2), and 300 dpi = 11 811 pixels per metre.
@@ -280,8 +280,8 @@ fn bare_scale_and_dpi_for_publication() {
             u32::from_be_bytes(b[20..24].try_into().unwrap()),
         )
     };
-    assert_eq!(size(&plain_png), (3120, 2520));
-    assert!(plain_svg.contains("viewBox=\"0 0 520 420\""));
+    assert_eq!(size(&plain_png), (3120, 2940));
+    assert!(plain_svg.contains("viewBox=\"0 0 520 490\""));
     let head = &svg[..svg.find('>').unwrap()];
     let vb_at = head.find("viewBox=\"").unwrap() + "viewBox=\"".len();
     let vb: Vec<u32> = head[vb_at..vb_at + head[vb_at..].find('"').unwrap()]
@@ -290,7 +290,7 @@ fn bare_scale_and_dpi_for_publication() {
         .collect();
     let (cols, rows) = (vb[2], vb[3]);
     assert!(
-        vb[0] > 0 && vb[1] > 0 && vb[0] + cols < 520 && vb[1] + rows < 420,
+        vb[0] > 0 && vb[1] > 0 && vb[0] + cols < 520 && vb[1] + rows < 490,
         "{vb:?}"
     );
     assert!(head.starts_with(&format!(

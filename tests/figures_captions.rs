@@ -635,6 +635,13 @@ fn lloyd2006_fig7() {
             ("12", N::Given("Eq 12")),
             ("865", N::Value(999.0 / (2.0 * 30f64.to_radians().tan()))),
             (
+                "45",
+                N::Given(
+                    "the unwarped map's turn at (a)'s peak: just off behind the projected view \
+                     direction runs along the frustum's square outline's diagonal (R7-2006f7-1)",
+                ),
+            ),
+            (
                 "1.999×10^{6}",
                 N::Measured(
                     "(a)'s largest S̄ (fig7_names_e_and_the_projection_..., src/plot/hemisphere.rs)",
@@ -690,17 +697,17 @@ fn lloyd2006_worst_case() {
             (
                 "2",
                 N::Measured(
-                    "ZP's worst direction, el = az = 2°, checked by hand \
+                    "ZP's worst direction, elevation 2°, checked by hand \
                      (captions_say_where_the_worst_cases_lie, src/plot/worst.rs)",
                 ),
             ),
             (
-                "45",
-                N::Given("the map's turn against the frustum's square outline"),
+                "2",
+                N::Measured("ZP's worst direction, azimuth 2° (the same by-hand check)"),
             ),
             (
-                "1.000",
-                N::Measured("ZP's ratio exactly behind, by hand 1 (captions_say_where_...)"),
+                "45",
+                N::Given("the map's turn against the frustum's square outline"),
             ),
             (
                 "10",

@@ -126,5 +126,6 @@ fn lloyd2006_fig6_has_one_title_in_both_forms() {
     ));
     assert_eq!(double, one);
     // S̄ is an overlined S (a tspan the reader flattens to "S").
-    assert_eq!(double, "Maximum error and S against η");
+    // S̄ named in words (seventh review, R7-2006f6-1).
+    assert_eq!(double, "Maximum error and storage factor S against η");
 }

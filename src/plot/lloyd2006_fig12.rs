@@ -79,7 +79,7 @@ pub(in crate::plot) fn fig12() -> Result<Keyed, Fail> {
         });
     }
     let double = Charts {
-        size: (520, 560),
+        size: (520, 575),
         title: FIG12_TITLE.into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. {SCHEME_WORDS} FP+ZP+W uses {} \
