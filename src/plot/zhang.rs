@@ -140,23 +140,27 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         .map(|a| a.trim_start_matches("γ = "))
         .collect();
     let phi = view.half_fov().to_degrees();
+    // What m_z and m_x are, once in each caption (the seventh review, R7-Z3-1: the blocks'
+    // titles' "(⊥ light)" was unexplained notation): Lloyd 2006's errors, a texel's width
+    // measured perpendicular to the light over a pixel's ([`crate::measure::point_error`]),
+    // that is on a surface facing the light.
     let caption = format!(
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
          view θ\u{a0}=\u{a0}{phi:.0}° (Zhang's φ); light at \
          γ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). E_p, E_q: aliasing along the \
-         screen's vertical, horizontal (×2: span [−1,\u{a0}1]); m\u{a0}⊥\u{a0}light \
-         (Lloyd 2006). LiSPSM's \
+         screen's vertical, horizontal (×2: span [−1,\u{a0}1]); m_z, m_x: Lloyd 2006's \
+         errors on a surface facing the light. LiSPSM's \
          n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
-         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: no scene insets; (a)–(c): \
-         a colour scale each.",
+         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. (a)–(c): a colour scale each.",
         angles.join(", "),
         lispsm.join(", "),
     );
+    // One column: the heights at half scale, said on the axis and here (R7-Z3-2); n and f left
+    // to the two columns' caption (the depth axis reads 0 to 100), for five lines.
     let single_caption = format!(
-        "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
-         view θ\u{a0}=\u{a0}{phi:.0}°, light at γ\u{a0}=\u{a0}{} from the view direction. \
-         E_p, E_q: aliasing along the screen's vertical, horizontal (×2: span \
-         [−1,\u{a0}1]); a colour scale each.",
+        "Zhang et al. 2009, Fig. 3: half field of view θ\u{a0}=\u{a0}{phi:.0}°, light at \
+         γ\u{a0}=\u{a0}{} from the view direction; vertical scale halved. E_p, E_q: screen-vertical, horizontal aliasing (×2: span \
+         [−1,\u{a0}1]); m: Lloyd 2006's, facing the light.",
         angles.join(", "),
     );
     Ok(Fig3 {
@@ -339,6 +343,24 @@ impl Fig3 {
                     &blank
                 };
                 let mut chart = build_chart_styled(&cell, "", x, &y, false, &style)?;
+                // The rows not `ticked` get the same tick marks, unlabelled: every row's axis
+                // is ticked (the seventh review, R7-Z3-2: bare axis bars beside the rows
+                // without numbers).
+                if labelled && !ticked.contains(&r) {
+                    let base = cell.get_base_pixel();
+                    let mut v = y_first;
+                    while v <= half {
+                        if v >= -half {
+                            let (px, py) = chart.backend_coord(&(-5.0, v));
+                            let (px, py) = (px - base.0 - 1, py - base.1);
+                            cell.draw(&PathElement::new(
+                                vec![(px - TICK as i32, py), (px, py)],
+                                RGBColor(0, 0, 0).stroke_width(1),
+                            ))?;
+                        }
+                        v += y_step;
+                    }
+                }
                 super::chart::draw_grid(&mut chart, &scheme[q].grid, &self.scales[q])?;
                 // The frustum's outline and the panel's frame.
                 let (n, f, t) = (1.0, self.far, self.tan_phi);
@@ -495,9 +517,9 @@ impl Fig3 {
                 b,
                 (ROW_LABEL_1, half, -40.0, 80.0),
                 &|a| a.trim_start_matches("γ = ").to_string(),
-                // The y ticks, ±40, on each block's middle row only (the sixth review,
+                // The y ticks' numbers, ±40, on each block's middle row only (the sixth review,
                 // R6-zhang-fig3-3: ±30 on all nine rows, 2.7 pt apart, read as one column of
-                // numbers).
+                // numbers); the other rows' ticks unlabelled (R7-Z3-2).
                 &[1],
                 under,
                 Some(1),
@@ -544,14 +566,11 @@ fn draw_height_name<DB: DrawingBackend>(
 }
 
 /// The blocks' titles.
-/// m_z and m_x are measured across the light ("⊥ light"), as Lloyd 2006 §4.4 and
+/// m_z and m_x are measured across the light, as Lloyd 2006 §4.4 and
 /// [`crate::measure::point_error`] do (figure review 6: Barroso's m_z, along the view axis, is
-/// 1/sin γ larger, and barroso-fig7 also writes m_z).
-const BLOCK_NAMES: [&str; 3] = [
-    "(a) E_p = 2 m_z (⊥ light)",
-    "(b) E_q = 2 m_x (⊥ light)",
-    "(c) E_p × E_q",
-];
+/// 1/sin γ larger, and barroso-fig7 also writes m_z); the captions say so (the titles' "(⊥
+/// light)" was unexplained: the seventh review, R7-Z3-1).
+const BLOCK_NAMES: [&str; 3] = ["(a) E_p = 2 m_z", "(b) E_q = 2 m_x", "(c) E_p × E_q"];
 
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {

@@ -274,15 +274,23 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
             assert!(named[0].0.contains("rotate(270"), "{}", named[0].0);
         }
     }
-    // The half scale of heights is in the axis name, "height y (½ scale)", not the caption.
+    // The half scale of heights is in the axis name, "height y (½ scale)", and in the
+    // one-column caption, "vertical scale halved" (the seventh review, R7-Z3-2).
     assert!(!fig.single_caption.contains("depth scale"));
-    for c in [&fig.caption, &fig.single_caption] {
-        assert!(
-            c.contains("E_p, E_q: aliasing along the screen's vertical"),
-            "{c}"
-        );
-        assert!(c.contains("horizontal (×2: "), "{c}");
-    }
+    assert!(fig.single_caption.contains("vertical scale halved"));
+    assert!(!fig.caption.contains("halved"));
+    assert!(
+        fig.caption
+            .contains("E_p, E_q: aliasing along the screen's vertical, horizontal (×2: "),
+        "{}",
+        fig.caption
+    );
+    assert!(
+        fig.single_caption
+            .contains("E_p, E_q: screen-vertical, horizontal aliasing (×2: "),
+        "{}",
+        fig.single_caption
+    );
 }
 
 /// Figure review 6 (R6-zhang-fig3-0): the m_z and m_x of E_p = 2 m_z and E_q = 2 m_x are
@@ -291,8 +299,9 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
 /// coordinate a·p along the view direction projected across the light, a = (v − (v·l) l)/|…|,
 /// over the frustum's extent Δ = max − min of a·p at its eight corners, so its t texel is Δ wide
 /// across the light and E_p = 2 Δ/(2 z tan θ) at depth z; at γ = 30° Barroso's would be twice
-/// that. Each SSM cell at γ = 30° has the former (within 10⁻⁹), not the latter; both blocks'
-/// titles say "⊥ light" in both forms, and the two-column caption names Lloyd's convention.
+/// that. Each SSM cell at γ = 30° has the former (within 10⁻⁹), not the latter; both captions
+/// say so in words ("Lloyd 2006's errors on a surface facing the light": a texel's width
+/// perpendicular to the light), and no title writes "⊥" (R7-Z3-1).
 #[test]
 fn m_is_measured_across_the_light_and_the_figure_says_so() {
     use super::super::chart::read_svg::texts;
@@ -328,18 +337,24 @@ fn m_is_measured_across_the_light_and_the_figure_says_so() {
         checked += 1;
     }
     assert!(checked > 100, "{checked} cells");
+    // The seventh review (R7-Z3-1): "(⊥ light)" in the titles was unexplained notation; the
+    // captions say in words what m is, the titles no longer write "⊥".
     for column in [Column::Double, Column::Single] {
         let svg = super::super::hemisphere::svg_in(&fig, column);
-        let marked = texts(&svg)
-            .iter()
-            .filter(|t| t.1.contains("⊥ light"))
-            .count();
-        assert!(marked >= 2, "{column:?}: {marked} texts say ⊥ light");
+        let marked = texts(&svg).iter().filter(|t| t.1.contains('⊥')).count();
+        assert_eq!(marked, 0, "{column:?}: {marked} texts say ⊥");
     }
     assert!(
-        fig.caption.contains("m\u{a0}⊥\u{a0}light (Lloyd 2006)"),
+        fig.caption
+            .contains("m_z, m_x: Lloyd 2006's errors on a surface facing the light"),
         "{}",
         fig.caption
+    );
+    assert!(
+        fig.single_caption
+            .contains("m: Lloyd 2006's, facing the light"),
+        "{}",
+        fig.single_caption
     );
 }
 
@@ -349,8 +364,8 @@ fn m_is_measured_across_the_light_and_the_figure_says_so() {
 /// unstated). Read from the drawn SVGs: in two columns "height y" is set once, upright (no
 /// rotation), over the first row of panels (above every panel frame's top); in one column the
 /// y ticks "40" and "−40" appear once per block (3 each, not 9), on its middle row (between
-/// the block's first and last row frames); both captions say the blocks have their own
-/// colour scales.
+/// the block's first and last row frames); the two-column caption says the blocks have their
+/// own colour scales (one column's bars stand beside their blocks).
 #[test]
 fn height_named_upright_single_ticks_on_middle_rows_and_scales_stated() {
     use super::super::chart::read_svg::{attr, texts};
@@ -396,6 +411,7 @@ fn height_named_upright_single_ticks_on_middle_rows_and_scales_stated() {
             );
         }
     }
+    // Two columns say it; one column's five lines have no room (R7-Z3-1, -2 took it), and
+    // there each block's bar stands beside it.
     assert!(fig.caption.contains("(a)–(c): a colour scale each"));
-    assert!(fig.single_caption.contains("a colour scale each"));
 }
