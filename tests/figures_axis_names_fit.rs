@@ -46,17 +46,25 @@ fn overruns(font: &Font, svg: &str) -> Vec<String> {
     let mut out = Vec::new();
     for t in texts(font, svg).into_iter().filter(|t| t.rotated) {
         let [_, y0, x1, y1] = t.bbox;
+        // The axis right of the name; or, for an axis drawn on a plot's right (lloyd2005-fig8's
+        // one-column t axis, right of its texture), the one left of it.
+        let x0 = t.bbox[0];
         let axis = axes
             .iter()
             .filter(|a| a.0 > x1 && a.1 < y1 && a.2 > y0)
-            .min_by(|a, b| a.0.total_cmp(&b.0));
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .or_else(|| {
+                axes.iter()
+                    .filter(|a| a.0 < x0 && a.1 < y1 && a.2 > y0)
+                    .max_by(|a, b| a.0.total_cmp(&b.0))
+            });
         match axis {
             Some(&(_, top, bottom)) if y0 >= top - 2.0 && y1 <= bottom + 2.0 => {}
             Some(&(_, top, bottom)) => out.push(format!(
                 "{:?} spans {y0:.1}–{y1:.1}, its axis {top:.1}–{bottom:.1}",
                 t.content
             )),
-            None => out.push(format!("{:?}: no y axis right of it", t.content)),
+            None => out.push(format!("{:?}: no y axis beside it", t.content)),
         }
     }
     out

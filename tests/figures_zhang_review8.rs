@@ -18,7 +18,8 @@ fn caption(all: &[Text]) -> String {
 /// R7-Z3-1: the blocks' titles wrote "(a) E_p = 2 m_z (⊥ light)", notation no text explained.
 /// In no form does any text of the figure write "⊥"; the titles read "(a) E_p = 2 m_z" and
 /// "(b) E_q = 2 m_x" (subscripts read inline); each captioned form says in words what m is,
-/// Lloyd 2006's error on a surface facing the light, in at most five lines.
+/// Lloyd 2006's error on a surface facing the light ("m: Lloyd 2006's, facing the light"), in
+/// at most five lines.
 #[test]
 fn m_is_explained_in_words_not_marked_in_the_titles() {
     let font = Font::dejavu();
@@ -47,7 +48,7 @@ fn m_is_explained_in_words_not_marked_in_the_titles() {
         assert!((1..=5).contains(&lines), "{form}: {lines} caption lines");
         let text = caption(&all);
         assert!(
-            text.contains("Lloyd 2006's errors on a surface facing the light")
+            text.contains("m: Lloyd 2006's, facing the light")
                 || text.contains("m: Lloyd 2006's, facing the light"),
             "{form}: {text}"
         );

@@ -147,11 +147,12 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     let caption = format!(
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
          view θ\u{a0}=\u{a0}{phi:.0}° (Zhang's φ); light at \
-         γ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). E_p, E_q: aliasing along the \
-         screen's vertical, horizontal (×2: span [−1,\u{a0}1]); m_z, m_x: Lloyd 2006's \
-         errors on a surface facing the light. LiSPSM's \
+         γ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). E_p, E_q: screen-vertical, \
+         horizontal aliasing (×2: span [−1,\u{a0}1]); m: Lloyd 2006's, facing the light. \
+         LiSPSM's \
          n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
-         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. (a)–(c): a colour scale each.",
+         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: a colour scale \
+         each, no scene insets.",
         angles.join(", "),
         lispsm.join(", "),
     );

@@ -279,18 +279,12 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
     assert!(!fig.single_caption.contains("depth scale"));
     assert!(fig.single_caption.contains("vertical scale halved"));
     assert!(!fig.caption.contains("halved"));
-    assert!(
-        fig.caption
-            .contains("E_p, E_q: aliasing along the screen's vertical, horizontal (×2: "),
-        "{}",
-        fig.caption
-    );
-    assert!(
-        fig.single_caption
-            .contains("E_p, E_q: screen-vertical, horizontal aliasing (×2: "),
-        "{}",
-        fig.single_caption
-    );
+    for c in [&fig.caption, &fig.single_caption] {
+        assert!(
+            c.contains("E_p, E_q: screen-vertical, horizontal aliasing (×2: "),
+            "{c}"
+        );
+    }
 }
 
 /// Figure review 6 (R6-zhang-fig3-0): the m_z and m_x of E_p = 2 m_z and E_q = 2 m_x are
@@ -300,7 +294,7 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
 /// over the frustum's extent Δ = max − min of a·p at its eight corners, so its t texel is Δ wide
 /// across the light and E_p = 2 Δ/(2 z tan θ) at depth z; at γ = 30° Barroso's would be twice
 /// that. Each SSM cell at γ = 30° has the former (within 10⁻⁹), not the latter; both captions
-/// say so in words ("Lloyd 2006's errors on a surface facing the light": a texel's width
+/// say so in words ("m: Lloyd 2006's, facing the light": a texel's width
 /// perpendicular to the light), and no title writes "⊥" (R7-Z3-1).
 #[test]
 fn m_is_measured_across_the_light_and_the_figure_says_so() {
@@ -345,8 +339,7 @@ fn m_is_measured_across_the_light_and_the_figure_says_so() {
         assert_eq!(marked, 0, "{column:?}: {marked} texts say ⊥");
     }
     assert!(
-        fig.caption
-            .contains("m_z, m_x: Lloyd 2006's errors on a surface facing the light"),
+        fig.caption.contains("m: Lloyd 2006's, facing the light"),
         "{}",
         fig.caption
     );
@@ -413,5 +406,7 @@ fn height_named_upright_single_ticks_on_middle_rows_and_scales_stated() {
     }
     // Two columns say it; one column's five lines have no room (R7-Z3-1, -2 took it), and
     // there each block's bar stands beside it.
-    assert!(fig.caption.contains("(a)–(c): a colour scale each"));
+    assert!(fig
+        .caption
+        .contains("Unlike the paper: a colour scale each, no scene insets"));
 }

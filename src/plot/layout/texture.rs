@@ -190,6 +190,11 @@ impl Fig8 {
             (x - bx, y - by)
         };
         let tick = TICK as i32;
+        let ((x, top), (_, bottom)) = (px(n), px(0.0));
+        outer.draw(&PathElement::new(
+            vec![(x, top), (x, bottom)],
+            BLACK.stroke_width(1),
+        ))?;
         let font = TextStyle::from((FONT, style.tick_size).into_font())
             .pos(Pos::new(HPos::Left, VPos::Center));
         let mut widest = 0;
@@ -206,7 +211,6 @@ impl Fig8 {
             widest = widest.max(w as i32);
             outer.draw(&Text::new(label, (x + tick + TICK_GAP, y), font.clone()))?;
         }
-        let ((x, top), (_, bottom)) = (px(n), px(0.0));
         let name = TextStyle::from((FONT, style.desc_size).into_font())
             .transform(FontTransform::Rotate270)
             .pos(Pos::new(HPos::Center, VPos::Top));
