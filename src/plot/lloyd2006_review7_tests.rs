@@ -49,7 +49,7 @@ fn sample(svg: &str, label: &str) -> Sample {
         if l.starts_with("<polygon") {
             marker = Some((true, p.len()));
         } else if p.len() >= 4 && p.first() == p.last() {
-            marker = Some((false, p.len() - 1));
+            marker = Some((false, corners(&p[1..])));
         } else {
             pieces += 1;
         }
@@ -63,6 +63,19 @@ fn sample(svg: &str, label: &str) -> Sample {
         filled,
         corners,
     }
+}
+
+/// The corners of a closed outline given once round (its first point not repeated): the points
+/// where it turns, so that a point halfway along a side (where a hollow marker's stroke starts
+/// and ends) is not one.
+fn corners(p: &[(f64, f64)]) -> usize {
+    let n = p.len();
+    (0..n)
+        .filter(|&i| {
+            let (a, b, c) = (p[(i + n - 1) % n], p[i], p[(i + 1) % n]);
+            ((b.0 - a.0) * (c.1 - b.1) - (b.1 - a.1) * (c.0 - b.0)).abs() > 0.01
+        })
+        .count()
 }
 
 /// `c` as an SVG writes it.

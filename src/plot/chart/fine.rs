@@ -141,7 +141,10 @@ pub(crate) fn fill_fine_polygon<DB: DrawingBackend>(
 }
 
 /// Strokes a marker's `outline` about `centre` (backend units) as a closed line 2 units wide,
-/// inside left empty: a hollow marker, which shows the marker drawn under it.
+/// inside left empty: a hollow marker, which shows the marker drawn under it. The path starts
+/// and ends halfway along the first side, so that every corner is a join: a path that starts
+/// and ends at a corner meets itself there in two square ends, which leave a notch at a sharp
+/// corner (a triangle's apex).
 pub(crate) fn stroke_fine_outline<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     centre: (f64, f64),
@@ -149,8 +152,18 @@ pub(crate) fn stroke_fine_outline<DB: DrawingBackend>(
     colour: RGBColor,
 ) -> Result<(), Fail> {
     let at = |&(x, y): &(i32, i32)| (centre.0 + f64::from(x), centre.1 + f64::from(y));
+    let corners: Vec<(f64, f64)> = outline.iter().map(at).collect();
+    let (Some(&a), Some(&b)) = (corners.first(), corners.get(1)) else {
+        return Ok(());
+    };
+    let mid = ((a.0 + b.0) / 2.0, (a.1 + b.1) / 2.0);
+    let mut points = Vec::with_capacity(corners.len() + 2);
+    points.push(mid);
+    points.extend(corners.iter().skip(1));
+    points.push(a);
+    points.push(mid);
     area.draw(&Fine {
-        points: outline.iter().chain(outline.first()).map(at).collect(),
+        points,
         colour: colour.to_backend_color(),
         stroke: Some(2),
     })?;
