@@ -46,8 +46,9 @@ pub(super) struct Panel {
     /// A point on a line and the line's name: a label in the gutter, its leader from the point
     /// (two columns only).
     pub notes: Vec<(DVec2, String)>,
-    /// The region another panel enlarges (min, max), outlined in grey.
-    pub enlarged: Option<(DVec2, DVec2)>,
+    /// Whether the panel after this one (beside it, on its right) enlarges a region of it: that
+    /// panel's axis limits, as drawn, outlined in grey here.
+    pub enlarged: bool,
 }
 
 pub(super) struct FromLight {
@@ -102,7 +103,7 @@ fn panel(view: &ViewFrustum, light: DVec3, planes: &[f64], title: String) -> Res
         grow_down: false,
         extensions: Vec::new(),
         notes: Vec::new(),
-        enlarged: None,
+        enlarged: false,
     })
 }
 
@@ -242,12 +243,11 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         format!("(f) detail of (e): z ≤ {}", fmt_planes(&ad.planes()[3..4])),
     )?;
     zoom_c.window = Some(bounds(&eq19.sections[..4]));
-    for (overview, detail) in [
-        (&mut perpendicular, &zoom),
-        (&mut parallel, &zoom_b),
-        (&mut eq19, &zoom_c),
-    ] {
-        overview.enlarged = detail.window;
+    // Each overview outlines, in grey, exactly the range its detail's axes show (the eighth
+    // review, R8-barroso-fig5-1: the box was the detail's window grown by the maps' reach, up to
+    // three times the detail's range).
+    for overview in [&mut perpendicular, &mut parallel, &mut eq19] {
+        overview.enlarged = true;
     }
     // (f): the far face's lower edge, seen from a light 45° up as a thick line across the
     // detail at light-view y = (f − f tan θ)/√2 = 29.9, named where it could read as a split

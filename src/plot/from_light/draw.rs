@@ -100,93 +100,9 @@ const ANCHOR: RGBColor = RGBColor(90, 90, 90);
 #[path = "draw_sizes.rs"]
 mod sizes;
 use sizes::{sizes, tick_labels, Sizes, OVERVIEW_GUTTER, OVERVIEW_LEAST};
-
-/// A panel's title up to its first colon or comma, without the word "light": "(c) Eq 19,
-/// not in the paper" is "(c) Eq 19", "(a) perpendicular light" is "(a) perpendicular".
-pub(super) fn short_title(t: &str) -> String {
-    let cut = t.find([':', ',']).unwrap_or(t.len());
-    t[..cut].trim_end_matches(" light").to_string()
-}
-
-/// The labels' heights (backend pixels, `wanted`, any order) moved apart so that neighbours are
-/// at least `step` apart, each as close to its wanted height as that allows, all within
-/// `range` (relative to `base`, the gutter's top): the wanted heights are clamped, then pushed
-/// down from the top and back up from the bottom.
-pub(super) fn spread(wanted: &[i32], step: i32, range: (i32, i32), base: i32) -> Vec<i32> {
-    let mut order: Vec<usize> = (0..wanted.len()).collect();
-    order.sort_by_key(|&i| wanted[i]);
-    let (lo, hi) = (base + range.0, base + range.1);
-    let mut ys: Vec<i32> = order.iter().map(|&i| wanted[i].clamp(lo, hi)).collect();
-    for k in 1..ys.len() {
-        ys[k] = ys[k].max(ys[k - 1] + step);
-    }
-    for k in (0..ys.len()).rev() {
-        let cap = if k + 1 < ys.len() {
-            ys[k + 1] - step
-        } else {
-            hi
-        };
-        ys[k] = ys[k].min(cap);
-    }
-    let mut out = vec![0; wanted.len()];
-    for (k, &i) in order.iter().enumerate() {
-        out[i] = ys[k];
-    }
-    out
-}
-
-/// The corners of a cross-section furthest right (within `tol`), top first, without repeats:
-/// one corner, or the two ends of a vertical right edge.
-pub(super) fn right_corners(sec: &[DVec2; 4], tol: f64) -> Vec<DVec2> {
-    let right = sec.iter().map(|q| q.x).fold(f64::NEG_INFINITY, f64::max);
-    let mut out: Vec<DVec2> = sec.iter().copied().filter(|q| q.x >= right - tol).collect();
-    out.sort_by(|a, b| b.y.total_cmp(&a.y));
-    out.dedup_by(|a, b| (a.y - b.y).abs() <= tol);
-    out
-}
-
-/// For each label (nearest plane first), which of its candidate heights (backend pixels, top
-/// corner first) its leader starts at: the choice whose leaders keep the planes' order (the
-/// farthest highest) and whose spread labels ([`spread`]) move least from their leaders, a top
-/// corner preferred where that ties (each lower corner costs half a pixel). Returns the chosen
-/// index per label.
-pub(super) fn choose_corners(
-    candidates: &[Vec<i32>],
-    step: i32,
-    range: (i32, i32),
-    base: i32,
-) -> Vec<usize> {
-    let count: usize = candidates.iter().map(|c| c.len().max(1)).product();
-    let mut best = (f64::INFINITY, vec![0; candidates.len()]);
-    for code in 0..count.min(1 << 12) {
-        let mut rest = code;
-        let pick: Vec<usize> = candidates
-            .iter()
-            .map(|c| {
-                let n = c.len().max(1);
-                let k = rest % n;
-                rest /= n;
-                k
-            })
-            .collect();
-        let wanted: Vec<i32> = candidates.iter().zip(&pick).map(|(c, &k)| c[k]).collect();
-        let ys = spread(&wanted, step, range, base);
-        // The labels keep the planes' order, the farthest on top: a crossing order costs more
-        // than any spread.
-        let crossed = wanted.windows(2).any(|w| w[1] > w[0]);
-        let cost = ys
-            .iter()
-            .zip(&wanted)
-            .map(|(y, w)| f64::from((y - w).abs()))
-            .sum::<f64>()
-            + 0.5 * pick.iter().filter(|&&k| k > 0).count() as f64
-            + if crossed { 1e6 } else { 0.0 };
-        if cost < best.0 {
-            best = (cost, pick);
-        }
-    }
-    best.1
-}
+#[path = "draw_labels.rs"]
+mod labels;
+pub(super) use labels::{choose_corners, right_corners, short_title, spread};
 
 /// A key item's stroke: colour, width, dash pattern (empty: solid).
 type Stroke = (RGBColor, u32, &'static [f64]);
@@ -335,11 +251,8 @@ impl Figure for FromLight {
             } else {
                 row.split_evenly((1, columns))
             };
-            let mut cells = cells.into_iter();
-            for c in 0..columns {
-                let (Some(p), Some(cell)) = (self.panels.get(r * columns + c), cells.next()) else {
-                    break;
-                };
+            // Panel c's chart style, sizes and axis titles.
+            let setup = |c: usize| {
                 let mut style = sz.style;
                 if r + 1 < rows {
                     style.x_label_area = sz.x_ticks_only;
@@ -353,14 +266,25 @@ impl Figure for FromLight {
                     labels: !overview,
                     ..sz
                 };
-                draw_panel(
-                    &cell,
-                    p,
-                    single && self.panels.len() > 1,
-                    &panel_sz,
-                    &style,
-                    (r + 1 == rows, c == 0 && !shared_y),
-                )?;
+                (style, panel_sz, (r + 1 == rows, c == 0 && !shared_y))
+            };
+            let small = single && self.panels.len() > 1;
+            for c in 0..columns {
+                let (Some(p), Some(cell)) = (self.panels.get(r * columns + c), cells.get(c)) else {
+                    break;
+                };
+                let (style, panel_sz, titles) = setup(c);
+                // An overview's grey box: the range its detail (the next panel, in the next
+                // cell) shows, laid out as it will be drawn.
+                let detail = (self.panels.get(r * columns + c + 1), cells.get(c + 1));
+                let enlarged = match detail {
+                    (Some(d), Some(d_cell)) if p.enlarged => {
+                        let (d_style, d_sz, d_titles) = setup(c + 1);
+                        Some(shown(d_cell, d, small, &d_sz, &d_style, d_titles)?)
+                    }
+                    _ => None,
+                };
+                draw_panel(cell, p, small, &panel_sz, &style, titles, enlarged)?;
             }
             // One column's y name, once, centred on the middle row below its title.
             if shared_y && r == rows / 2 {
@@ -430,15 +354,15 @@ fn px<DB: DrawingBackend>(chart: &Chart2d<'_, DB>, q: DVec2) -> (i32, i32) {
     chart.backend_coord(&(q.x, q.y))
 }
 
-/// Draws panel `p` in `whole`; `titles`: whether its x and y axes carry their titles.
-fn draw_panel<DB: DrawingBackend>(
+/// Panel `p`'s title (cut to its first clause in one column) and `whole` split into the title's
+/// room and the rest.
+#[allow(clippy::type_complexity)]
+fn split_head<DB: DrawingBackend>(
     whole: &DrawingArea<DB, Shift>,
     p: &Panel,
     small: bool,
-    sz: &Sizes,
     style: &ChartStyle,
-    titles: (bool, bool),
-) -> Result<(), Fail> {
+) -> (String, DrawingArea<DB, Shift>, DrawingArea<DB, Shift>) {
     // In one column, the titles cut to their first clause ("(c) Eq 19", "(d) detail of (a)"):
     // the full ones are wider than the 150-unit panels.
     let title = if small {
@@ -455,16 +379,30 @@ fn draw_panel<DB: DrawingBackend>(
     } else {
         style.margin + style.title_size + TITLE_GAP
     };
-    let (head, whole) = whole.split_vertically(head_h);
-    if !title.is_empty() {
-        head.draw(&Text::new(
-            title,
-            (TITLE_INSET, style.margin as i32),
-            TextStyle::from((FONT, style.title_size).into_font())
-                .pos(Pos::new(HPos::Left, VPos::Top)),
-        ))?;
-    }
-    let whole = &whole;
+    let (head, rest) = whole.split_vertically(head_h);
+    (title, head, rest)
+}
+
+/// A panel laid out: the area it draws in (narrowed to the drawing's shape), its plot's cell,
+/// the gutter for its labels and its axes (their limits the data range the plot shows).
+struct Fit<DB: DrawingBackend> {
+    whole: DrawingArea<DB, Shift>,
+    cell: DrawingArea<DB, Shift>,
+    gutter: DrawingArea<DB, Shift>,
+    xa: Axis,
+    ya: Axis,
+}
+
+/// Lays panel `p` out in `whole` (below its title): the window, grown for the maps' outlines and
+/// the dimension lines, then widened to equal aspect. Draws nothing.
+fn fit<DB: DrawingBackend>(
+    whole: &DrawingArea<DB, Shift>,
+    p: &Panel,
+    small: bool,
+    sz: &Sizes,
+    style: &ChartStyle,
+    titles: (bool, bool),
+) -> Result<Fit<DB>, Fail> {
     let title = String::new();
     let (lo, hi) = window(p);
     let first = tick_labels(lo, hi, 1e9, 1e9, 1.0);
@@ -544,6 +482,64 @@ fn draw_panel<DB: DrawingBackend>(
         &at,
         titles,
     );
+    Ok(Fit {
+        whole,
+        cell,
+        gutter,
+        xa,
+        ya,
+    })
+}
+
+/// The data range (min, max) that panel `p` shows when drawn in `whole` (its title included):
+/// the limits of its axes, for the grey box that marks it in its overview.
+fn shown<DB: DrawingBackend>(
+    whole: &DrawingArea<DB, Shift>,
+    p: &Panel,
+    small: bool,
+    sz: &Sizes,
+    style: &ChartStyle,
+    titles: (bool, bool),
+) -> Result<(DVec2, DVec2), Fail> {
+    let (_, _, rest) = split_head(whole, p, small, style);
+    let f = fit(&rest, p, small, sz, style, titles)?;
+    Ok((
+        DVec2::new(f.xa.min, f.ya.min),
+        DVec2::new(f.xa.max, f.ya.max),
+    ))
+}
+
+/// Draws panel `p` in `whole`; `titles`: whether its x and y axes carry their titles;
+/// `enlarged`: the data range its detail panel shows, outlined in grey.
+#[allow(clippy::too_many_arguments)]
+fn draw_panel<DB: DrawingBackend>(
+    whole: &DrawingArea<DB, Shift>,
+    p: &Panel,
+    small: bool,
+    sz: &Sizes,
+    style: &ChartStyle,
+    titles: (bool, bool),
+    enlarged: Option<(DVec2, DVec2)>,
+) -> Result<(), Fail> {
+    let (title, head, whole) = split_head(whole, p, small, style);
+    if !title.is_empty() {
+        head.draw(&Text::new(
+            title,
+            (TITLE_INSET, style.margin as i32),
+            TextStyle::from((FONT, style.title_size).into_font())
+                .pos(Pos::new(HPos::Left, VPos::Top)),
+        ))?;
+    }
+    let Fit {
+        whole,
+        cell,
+        gutter,
+        xa,
+        ya,
+        ..
+    } = fit(&whole, p, small, sz, style, titles)?;
+    let whole = &whole;
+    let title = String::new();
     let mut chart = build_chart_styled(&cell, &title, &xa, &ya, false, style)?;
     let inside = |q: DVec2| q.x >= xa.min && q.x <= xa.max && q.y >= ya.min && q.y <= ya.max;
     let bounds = (xa.min, xa.max, ya.min, ya.max);
@@ -575,8 +571,10 @@ fn draw_panel<DB: DrawingBackend>(
     }
     // The notes naming a line (barroso-fig5 (f)'s far face) are labels in the gutter too, each
     // joined by its leader to its point on the line (figure review 5: set above the line, the
-    // note read as the band's name, not the line's); in one column's 50-unit gutter, none.
-    for (at, text) in p.notes.iter().filter(|_| !small) {
+    // note read as the band's name, not the line's); in one column in the details' gutters only
+    // (the eighth review, R8-barroso-fig5-2: without (f)'s tag, "thick line: the far face" could
+    // mean any of the frustum's thick edges), as the planes' labels.
+    for (at, text) in p.notes.iter().filter(|_| sz.labels) {
         if inside(*at) {
             labelled.push((vec![*at], text));
         }
@@ -663,14 +661,15 @@ fn draw_panel<DB: DrawingBackend>(
     for i in 0..4 {
         solid(&[first[i], far[i]], FRUSTUM_WIDTH)?;
     }
-    // The region a detail panel enlarges, a grey box on top of the drawing.
-    if let Some((a, b)) = p.enlarged {
-        // Outside the maps' outlines round it (reaching MAP_REACH out), so that it shows.
-        let out = DVec2::splat((MAP_REACH + 2.0) / per_unit);
-        let (a, b) = (a - out, b + out);
+    // The region a detail panel enlarges, a grey box on top of the drawing: exactly the detail's
+    // axis limits (the eighth review, R8-barroso-fig5-1: grown by the maps' reach, (a)'s box was
+    // ±17.3 for (b)'s ±6.1).
+    if let Some((a, b)) = enlarged {
         let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
+        // At a tenth of a unit, as the maps' outlines: the box lies on the detail's limits, not
+        // on the pixels next to them.
         for piece in clip(&corners) {
-            chart.draw_series(LineSeries::new(piece, ENLARGED.stroke_width(2)))?;
+            draw_fine_line(&chart, &piece, ENLARGED, 2, Dash::Solid)?;
         }
     }
     // Each leader's anchor, a dot on its corner.
