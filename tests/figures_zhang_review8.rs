@@ -48,8 +48,7 @@ fn m_is_explained_in_words_not_marked_in_the_titles() {
         assert!((1..=5).contains(&lines), "{form}: {lines} caption lines");
         let text = caption(&all);
         assert!(
-            text.contains("m: Lloyd 2006's, facing the light")
-                || text.contains("m: Lloyd 2006's, facing the light"),
+            text.contains("m: Lloyd 2006's, facing the light"),
             "{form}: {text}"
         );
     }

@@ -96,8 +96,8 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let schemes = [
         ("(a) no warping", WarpRule::Uniform, Partition::Single),
         ("(b) LiSPSM", WarpRule::Lispsm, Partition::Single),
-        ("(c) face partitions", WarpRule::Lispsm, Partition::Faces),
-        ("(d) best n′", WarpRule::Minimax, Partition::Single),
+        ("(c) LiSPSM per face", WarpRule::Lispsm, Partition::Faces),
+        ("(d) n′ of least S̄", WarpRule::Minimax, Partition::Single),
     ];
     let mut panels = Vec::new();
     for (title, rule, partition) in schemes {
@@ -163,9 +163,12 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     // view, which just off behind and in front (elevation and azimuth 1°) runs along the
     // diagonal of the frustum's square outline, so that the map stands at 45° to it and
     // doubles.
+    // Both of (a)'s contours run along the behind–front diameter, where S̄ dips to 8.7·10⁵ in
+    // a valley a few degrees wide, and there they meet in one black line (the eighth review,
+    // R8-lloyd2006-fig7-3): the caption says so.
     let band = format!(
-        "(a)'s map keeps a side along the projected view direction, which turns it 45° at \
-         its peak, {} (minimum-area maps: {}).",
+        "(a) peaks at {} off behind, its map's side along the view direction lying diagonal \
+         (minimum-area maps: {}); both contours follow the behind–front line.",
         fmt_times_ten(panels[0].max),
         fmt_times_ten(min_area),
     );
@@ -173,15 +176,12 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     // the n′ rule used does not revert to an orthogonal map for γ < θ, as Lloyd 2006 §4.4
     // says warping does there. Its largest factor over the grid, printed in the caption.
     let worse = lispsm_over_unwarped(&panels[1].grid, &panels[0].grid);
-    // Lloyd 2006 Eq 12 at n′ ≤ n′_LiSPSM: the overhead S̄ of LiSPSM and of face partitioning.
     let (n, f) = (view.near(), view.far());
-    let overhead = (f / n - 1.0) / (2.0 * view.tan_half_fov());
     let caption = vec![format!(
         "Lloyd et al. 2006, Fig. 7: S̄ (texels per image pixel), {step}° grid, azimuthal \
-         equidistant (top: viewer's left); rings: elevation 10°, 20°, 30°, 60°; \
-         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°. (b), (c) \
-         overhead: Eq 12's {overhead:.0}. {band} Near behind (b) is up to {worse:.1}× (a): \
-         n′ does not revert for γ\u{a0}<\u{a0}θ (§4.4).",
+         equidistant (top: viewer's left; rings: elevation); \
+         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°. {band} Near behind (b) is up to {worse:.1}× (a): \
+         n′ does not revert within θ of the view (§4.4).",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     )];
@@ -190,7 +190,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let single_caption = format!(
         "Lloyd et al. 2006, Fig. 7: S̄, {step}° grid, azimuthal equidistant (top: viewer's \
          left); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°; near \
-         behind (b) is up to {worse:.1}× (a), not reverting for γ\u{a0}<\u{a0}θ (§4.4).",
+         behind (b) is up to {worse:.1}× (a), not reverting (§4.4) for light within θ of the view.",
         step = 90 / (FIG7_ELEVATIONS - 1),
         theta = view.half_fov().to_degrees(),
     );
@@ -631,18 +631,23 @@ mod tests {
             }
         }
         let text = fig.caption_text();
-        // The rule itself, in the worst-case figure's words, not a reference to it (the
-        // seventh review, R7-2006f7-1: "the orientation rule's (the worst-case figure)").
+        // The rule itself, in words, not a reference to the worst-case figure (the seventh
+        // review, R7-2006f7-1: "the orientation rule's (the worst-case figure)"), and the two
+        // contours' meeting along the behind–front line (the eighth, R8-lloyd2006-fig7-3).
         let want = format!(
-            "(a)'s map keeps a side along the projected view direction, which turns it 45° at \
-             its peak, {} (minimum-area maps: {}).",
+            "(a) peaks at {} off behind, its map's side along the view direction lying \
+             diagonal (minimum-area maps: {}); both contours follow the behind–front line.",
             fmt_times_ten(peak),
             fmt_times_ten(least)
         );
         assert!(text.contains(&want), "{want:?} in {text}");
         assert!(!text.contains("orientation rule"), "{text}");
+        // No γ, which no figure of Lloyd 2006 defines (R8-lloyd2006-fig7-1): the caption says
+        // where n′ should revert in words.
         for caption in [&text, &fig.single_caption] {
             assert!(!caption.contains("lloyd2006-"), "{caption}");
+            assert!(!caption.contains('γ'), "{caption}");
+            assert!(caption.contains("within θ of the view"), "{caption}");
         }
     }
 }

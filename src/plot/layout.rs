@@ -227,8 +227,8 @@ impl Figure for Fig8 {
             format!(
                 "Lloyd et al. 2005, Fig. 8: LiSPSM, n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, \
                  θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. R, L, T, N: \
-                 right, left, top, near face; parts 1, 2: {}, {}. s by M_x, t by M_z: \
-                 largest error across, in depth.",
+                 right, left, top, near face; parts 1, 2: {}, {}. M_x, M_z: max error \
+                 across, in depth, at image resolution.",
                 LIGHT.0,
                 LIGHT.1,
                 self.depths('1'),
@@ -238,9 +238,9 @@ impl Figure for Fig8 {
             format!(
                 "Lloyd et al. 2005, Fig. 8: k\u{a0}=\u{a0}{} z-partitions a face, LiSPSM, n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, \
                  θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. (a) Tags as in \
-                 (d), the apex enlarged. (b) {}'s texels reach past it (a \
-                 larger frustum, dashed in the paper). (c) Eq\u{a0}6 splits s by M_x, t by M_z (the \
-                 paper transposes), the largest errors across the view and in depth. {}",
+                 (d). (b) {}'s texels reach past it (a larger frustum). (c) Eq\u{a0}6 splits s \
+                 by M_x, t by M_z (the paper transposes), the largest errors across the view and \
+                 in depth for one map at the image's resolution. {}",
                 self.k,
                 LIGHT.0,
                 LIGHT.1,

@@ -185,8 +185,8 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
     let where_ = Worst::of(&first, grid)?;
     let caption = format!(
         "Lloyd et al. 2006, §5.3, not a figure of the paper: worst S̄ within 2–3× S̄ behind \
-         (Eq 20, 21)? f/n\u{a0}=\u{a0}{ratio_fn}, θ\u{a0}=\u{a0}{theta:.0}°, light \
-         directions sampled every {step}°, over k: {}. {}. {}",
+         (Eq 20, 21)? f/n\u{a0}=\u{a0}{ratio_fn}, θ\u{a0}=\u{a0}{theta:.0}°, lights \
+         every {step}°, over k: {}. {}. {}",
         extremes.join("; ").replace(" at every k", ""),
         where_.orientation(),
         where_.lispsm(),
@@ -245,7 +245,7 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
 /// map's rectangle, a side along the view direction as the light sees it (there along the
 /// diagonal of the frustum's square outline), stands at 45° to that square, with twice its
 /// area (`min_area`).
-const TURN: &str = "turns 45° to the frustum's square outline";
+const TURN: &str = "turns 45° to the frustum's outline";
 
 /// The x axis of both panels: FP+ZP+W's k is per face, 4k + 1 maps.
 const K_AXIS: &str = "k (FP+ZP+W: 4k + 1 maps)";
@@ -309,7 +309,7 @@ impl Worst {
     fn lispsm(&self) -> String {
         format!(
             "{LISPSM_EL:.0}° above behind, ZP+W's S̄ at k\u{a0}=\u{a0}1 is {:.1}× ZP's: \
-             LiSPSM does not revert for γ\u{a0}<\u{a0}θ.",
+             LiSPSM does not revert within θ of the view.",
             self.lispsm_over_zp
         )
     }
@@ -553,7 +553,7 @@ mod tests {
         let theirs = fig7.caption_text();
         let fig7_step = degrees_before(&theirs, "° grid");
         let step = degrees_before(&own, "°, over k");
-        assert!(own.contains(&format!("light directions sampled every {step}°")));
+        assert!(own.contains(&format!("lights every {step}°")));
         assert!(step > fig7_step && (step / fig7_step).fract() == 0.0);
     }
 
@@ -648,9 +648,12 @@ mod tests {
         {
             let c = fig.page.caption.join(" ").replace('\u{a0}', " ");
             assert!(c.contains("(Eq 20, 21)"), "{c}");
-            assert!(c.contains("LiSPSM does not revert for γ < θ"), "{c}");
             assert!(
-                c.contains("its map turns 45° to the frustum's square outline"),
+                c.contains("LiSPSM does not revert within θ of the view"),
+                "{c}"
+            );
+            assert!(
+                c.contains("its map turns 45° to the frustum's outline"),
                 "{c}"
             );
             let tail = c

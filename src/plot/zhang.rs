@@ -156,12 +156,15 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         angles.join(", "),
         lispsm.join(", "),
     );
-    // One column: the heights at half scale, said on the axis and here (R7-Z3-2); n and f left
-    // to the two columns' caption (the depth axis reads 0 to 100), for five lines.
+    // One column: the heights at half scale, said on the axis and here (R7-Z3-2); n, f and
+    // the LiSPSM and TSM columns' rules as in two columns (the eighth review, R8-zhang-fig3-1:
+    // without them the columns were undefined), E_p and E_q left to the blocks' titles.
     let single_caption = format!(
-        "Zhang et al. 2009, Fig. 3: half field of view θ\u{a0}=\u{a0}{phi:.0}°, light at \
-         γ\u{a0}=\u{a0}{} from the view direction; vertical scale halved. E_p, E_q: screen-vertical, horizontal aliasing (×2: span \
-         [−1,\u{a0}1]); m: Lloyd 2006's, facing the light.",
+        "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+         θ\u{a0}=\u{a0}{phi:.0}°, light γ\u{a0}=\u{a0}{} from the \
+         view; vertical scale halved; m: Lloyd 2006's, facing the light. TSM: \
+         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}; LiSPSM: \
+         n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ.",
         angles.join(", "),
     );
     Ok(Fig3 {

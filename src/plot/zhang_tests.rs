@@ -154,13 +154,30 @@ fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
         .filter_map(|l| attr(l, "font-size"))
         .fold(f64::INFINITY, f64::min);
     assert!(smallest >= 10.48, "{smallest}");
-    for c in [&fig.caption, &fig.single_caption] {
+    // One column: the same set-up in fewer words, and the LiSPSM and TSM columns' rules (the
+    // eighth review, R8-zhang-fig3-1).
+    for want in [
+        "n\u{a0}=\u{a0}1, f\u{a0}=\u{a0}100",
+        "θ\u{a0}=\u{a0}30°, light",
+        "γ\u{a0}=\u{a0}90°, 60°, 30° from the view;",
+        "LiSPSM: n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ",
+        "TSM: 80\u{a0}% rule, δ\u{a0}=\u{a0}10",
+    ] {
         assert!(
-            c.contains("γ\u{a0}=\u{a0}90°, 60°, 30° from the view direction"),
-            "{c}"
+            fig.single_caption.contains(want),
+            "{want}: {}",
+            fig.single_caption
         );
-        assert!(c.contains("half field of view θ\u{a0}=\u{a0}30°"), "{c}");
-        assert!(c.contains("span [−1,\u{a0}1]"), "{c}");
+    }
+    for c in [&fig.caption, &fig.single_caption] {
+        if std::ptr::eq(c, &fig.caption) {
+            assert!(
+                c.contains("γ\u{a0}=\u{a0}90°, 60°, 30° from the view direction"),
+                "{c}"
+            );
+            assert!(c.contains("half field of view θ\u{a0}=\u{a0}30°"), "{c}");
+            assert!(c.contains("span [−1,\u{a0}1]"), "{c}");
+        }
         assert!(!c.contains("π/6"), "{c}");
         assert_eq!(
             c.matches('θ').count(),
@@ -279,12 +296,13 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
     assert!(!fig.single_caption.contains("depth scale"));
     assert!(fig.single_caption.contains("vertical scale halved"));
     assert!(!fig.caption.contains("halved"));
-    for c in [&fig.caption, &fig.single_caption] {
-        assert!(
-            c.contains("E_p, E_q: screen-vertical, horizontal aliasing (×2: "),
-            "{c}"
-        );
-    }
+    // E_p and E_q: two columns' caption; one column's blocks' titles ("(a) E_p = 2 m_z").
+    assert!(
+        fig.caption
+            .contains("E_p, E_q: screen-vertical, horizontal aliasing (×2: "),
+        "{}",
+        fig.caption
+    );
 }
 
 /// Figure review 6 (R6-zhang-fig3-0): the m_z and m_x of E_p = 2 m_z and E_q = 2 m_x are
