@@ -242,5 +242,6 @@ fn barroso_fig7_caption_defines_its_symbols() {
 }
 
 // §4.13.1–2 (one column: (a)'s plot taller, smaller markers, a sparse grid): the one column
-// now draws (b) alone, its plot at least 110 pt tall (the sixth review, R6-barroso-fig7-2):
-// `key_names_least_max_m_z_and_the_angles_and_one_column_is_b_alone` (src/plot/barroso.rs).
+// now draws (a) alone, its plot at least 110 pt tall (the sixth review, R6-barroso-fig7-2; the
+// eighth, R8-barroso-fig7-1):
+// `key_names_least_max_m_z_and_the_angles_and_one_column_is_a_alone` (src/plot/barroso.rs).

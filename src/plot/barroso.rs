@@ -166,15 +166,18 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         )],
         charts: vec![c, zoom],
     };
-    // One column: (b) alone, and the caption says so (the sixth review, R6-barroso-fig7-2:
-    // (a)'s four decades in 70 pt merged five curves; the page's 420 pt leave no room for both
-    // panels at 110 pt); every symbol the key and (b) use defined (figure review 5, X7).
+    // One column: the paper's figure, (a), alone and unlettered, and the caption says that
+    // (b) is left out (the sixth review, R6-barroso-fig7-2: (a)'s four decades in 70 pt merged
+    // five curves, and the page's 420 pt leave no room for both panels at 110 pt; the eighth,
+    // R8-barroso-fig7-1: drawing (b) alone dropped the paper's own panel and left an orphan
+    // letter); every symbol the key and the caption use defined (figure review 5, X7).
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         θ\u{a0}=\u{a0}{phi_deg:.0}°; panel (a), γ from 0° to 90°, is left out. \
+         θ\u{a0}=\u{a0}{phi_deg:.0}°; (b), γ {}°–{}° enlarged, left out. \
          n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for γ\u{a0}≥\u{a0}θ and γ\u{a0}<\u{a0}θ; below \
          γ_{{lim}} (Eq\u{a0}15) n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r the paper's \
-         (Eq\u{a0}18, bold) or Zhang's (Eq\u{a0}17)."
+         (Eq\u{a0}18, bold) or Zhang's (Eq\u{a0}17).",
+        WINDOW.0, WINDOW.1
     );
     Ok(Fig7 {
         charts,
@@ -244,7 +247,7 @@ impl Figure for Fig7 {
         self.charts.size
     }
 
-    /// One column: (b) alone, its key under it: 525 units, 420 pt printed.
+    /// One column: (a) alone, its key under it: 525 units, 420 pt printed.
     fn single_size(&self) -> Option<(u32, u32)> {
         Some((Column::Single.width(), 525))
     }
@@ -253,14 +256,18 @@ impl Figure for Fig7 {
         if column() == Column::Double {
             return self.charts.draw(root);
         }
-        // One column: (b) alone, its key in a strip as wide as the page (two columns of
+        // One column: (a) alone, the paper's figure, without its letter, its key (its curves';
+        // (b)'s angle lines are not in it) in a strip as wide as the page (two columns of
         // entries) under it.
         let body = frame(root, TITLE, &[self.single_caption.as_str()])?;
         let (w, h) = body.dim_in_pixel();
-        let b = &self.charts.charts[1];
-        let strip_h = legend_below((w, h / 2), b, f64::from(w))?;
+        let mut a = self.charts.charts[0].clone();
+        a.title = a.title.trim_start_matches("(a) ").to_string();
+        a.show_legend = true;
+        a.legend_below = true;
+        let strip_h = legend_below((w, h / 2), &a, f64::from(w))?;
         let (plot, strip) = body.split_vertically(h.saturating_sub(strip_h));
-        draw_line_chart_over(&plot, b, Some(&strip))?;
+        draw_line_chart_over(&plot, &a, Some(&strip))?;
         Ok(())
     }
 }
@@ -351,14 +358,20 @@ mod tests {
     /// at least 110 pt tall (137.5 units at 0.8 pt a unit), under the same title as two columns,
     /// and its caption says that (a) is left out.
     #[test]
-    fn key_names_least_max_m_z_and_the_angles_and_one_column_is_b_alone() {
+    fn key_names_least_max_m_z_and_the_angles_and_one_column_is_a_alone() {
         use super::super::chart::read_svg::{points, texts};
         use super::super::hemisphere::svg_in;
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
         for column in [Column::Double, Column::Single] {
             let svg = svg_in(&fig, column);
             let all: Vec<String> = texts(&svg).into_iter().map(|t| t.1).collect();
-            for want in ["n′ of least max mz", "θ = 30°", "γlim = 30.5°", TITLE] {
+            // (b)'s angle lines are keyed where (b) is drawn, two columns.
+            let angles: &[&str] = if column == Column::Double {
+                &["θ = 30°", "γlim = 30.5°"]
+            } else {
+                &[]
+            };
+            for want in ["n′ of least max mz", TITLE].iter().chain(angles) {
                 assert!(
                     all.iter().any(|t| t == want),
                     "{column:?}: no {want:?} in {all:?}"
@@ -369,8 +382,8 @@ mod tests {
                 .iter()
                 .filter(|t| t.contains('→') || t.contains('←'))
                 .collect();
-            let clipped = usize::from(column == Column::Double);
-            assert_eq!(arrows.len(), clipped, "{column:?}: {arrows:?}");
+            // (a)'s note on its clipped curves, in both layouts.
+            assert_eq!(arrows.len(), 1, "{column:?}: {arrows:?}");
             let spines: Vec<f64> = svg
                 .lines()
                 .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#000000\""))
@@ -382,10 +395,16 @@ mod tests {
             if column == Column::Single {
                 assert_eq!(spines.len(), 1, "{spines:?}");
                 assert!(spines[0] * 0.8 >= 110.0, "{spines:?}");
-                assert!(!all.iter().any(|t| t.starts_with("(a)")), "{all:?}");
+                // (a), the paper's figure, without an orphan letter (R8-barroso-fig7-1).
+                assert!(
+                    !all.iter()
+                        .any(|t| t.starts_with("(a)") || t.starts_with("(b)")),
+                    "{all:?}"
+                );
+                assert!(all.iter().any(|t| t == "γ from 0° to 90°"), "{all:?}");
                 let caption = all.join(" ");
                 assert!(
-                    caption.contains("panel (a), γ from 0° to 90°, is left"),
+                    caption.contains("(b), γ 20°–45° enlarged, left out"),
                     "{caption}"
                 );
             } else {
@@ -538,7 +557,9 @@ mod tests {
         use super::super::chart::read_svg::{attr, points, texts};
         use super::super::hemisphere::svg_in;
         let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
-        for column in [Column::Double, Column::Single] {
+        // One column draws (a) alone, without the angle lines (R8-barroso-fig7-1).
+        {
+            let column = Column::Double;
             let svg = svg_in(&fig, column);
             // Vertical pieces: the long ones (spines, grid lines) span the plots' height; the
             // short ones near the name are the angle lines' dashes and dots.

@@ -188,10 +188,9 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     // One column: four lines, so that the disks keep the size at which (a)'s ring key covers
     // at most a sixth of its disk ((a)'s peak is left to the two columns' caption).
     let single_caption = format!(
-        "Lloyd et al. 2006, Fig. 7: S̄, {step}° grid, azimuthal equidistant (top: viewer's \
-         left); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°; near \
-         behind (b) is up to {worse:.1}× (a), not reverting (§4.4) for light within θ of the view.",
-        step = 90 / (FIG7_ELEVATIONS - 1),
+        "Lloyd et al. 2006, Fig. 7: S̄, azimuthal equidistant (top: viewer's left); \
+         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°; (b) is up to \
+         {worse:.1}× (a) within θ of the view, not reverting (§4.4).",
         theta = view.half_fov().to_degrees(),
     );
     Ok(Fig7 {
