@@ -3,6 +3,30 @@
 
 use super::*;
 
+/// The three forms the tests read the figure in: two columns, captioned and bare, and one.
+const FORMS: [(Column, bool); 3] = [
+    (Column::Double, false),
+    (Column::Double, true),
+    (Column::Single, false),
+];
+
+/// The figure's page in `column`.
+fn page_size(fig: &Fig3, column: Column) -> (u32, u32) {
+    match column {
+        Column::Double => fig.size(),
+        Column::Single => fig.single_size().expect("a one-column layout"),
+    }
+}
+
+/// The figure drawn on a page of `size` in `column`, captioned or `bare`, as SVG text.
+fn svg_in(fig: &Fig3, column: Column, bare: bool, size: (u32, u32)) -> String {
+    use super::super::chart::read_svg::draw_svg;
+    use super::super::chart::with_page;
+    with_page(bare, column, || {
+        draw_svg(size, |area| fig.draw(area).unwrap())
+    })
+}
+
 /// The share of the hemisphere of light directions (every 2° of elevation and azimuth, weighted
 /// by solid angle) where the 80 % trapezoid's map is covered more by C than the minimum-area
 /// box's, and than the axis-aligned box's.
@@ -225,24 +249,14 @@ fn panel_a_is_not_mirrored() {
 /// reads "light-view x" (not "light −x"), and one column is at most 525 units tall.
 #[test]
 fn inset_label_is_its_drawn_enlargement_and_one_column_fits() {
-    use super::super::chart::read_svg::{draw_svg, texts};
-    use super::super::chart::with_page;
+    use super::super::chart::read_svg::texts;
     let fig = fig3().map_err(|e| e.named("martin-tan-fig3")).unwrap();
-    for (column, bare) in [
-        (Column::Double, false),
-        (Column::Double, true),
-        (Column::Single, false),
-    ] {
-        let size = match column {
-            Column::Double => fig.size(),
-            Column::Single => fig.single_size().expect("a one-column layout"),
-        };
+    for (column, bare) in FORMS {
+        let size = page_size(&fig, column);
         if column == Column::Single {
             assert!(size.1 <= 525, "{size:?}");
         }
-        let svg = with_page(bare, column, || {
-            draw_svg(size, |area| fig.draw(area).unwrap())
-        });
+        let svg = svg_in(&fig, column, bare, size);
         let num = |tag: &str, name: &str| -> f64 {
             let at = tag.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
             tag[at..at + tag[at..].find('"').unwrap()].parse().unwrap()
@@ -434,21 +448,11 @@ fn hull_fill_prints_at_l_star_about_80() {
 /// (a)'s plot under y = 0, the spine running on beside it).
 #[test]
 fn inset_framed_outside_panel_a_axes() {
-    use super::super::chart::read_svg::{attr, draw_svg, points, texts};
-    use super::super::chart::with_page;
+    use super::super::chart::read_svg::{attr, points, texts};
     let fig = fig3().map_err(|e| e.named("martin-tan-fig3")).unwrap();
-    for (column, bare) in [
-        (Column::Double, false),
-        (Column::Double, true),
-        (Column::Single, false),
-    ] {
-        let size = match column {
-            Column::Double => fig.size(),
-            Column::Single => fig.single_size().expect("a one-column layout"),
-        };
-        let svg = with_page(bare, column, || {
-            draw_svg(size, |area| fig.draw(area).unwrap())
-        });
+    for (column, bare) in FORMS {
+        let size = page_size(&fig, column);
+        let svg = svg_in(&fig, column, bare, size);
         let black: Vec<Vec<(f64, f64)>> = svg
             .lines()
             .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#000000\""))
@@ -529,23 +533,13 @@ fn inset_framed_outside_panel_a_axes() {
 /// words of the other figures.
 #[test]
 fn legend_boxed_in_two_columns_titles_and_light_words() {
-    use super::super::chart::read_svg::{attr, draw_svg, texts};
-    use super::super::chart::with_page;
+    use super::super::chart::read_svg::{attr, texts};
     let fig = fig3().map_err(|e| e.named("martin-tan-fig3")).unwrap();
     let left = ["frustum E", "hull C", "focus region"];
     let right = ["trapezoid T", "min-area box B", "axis-aligned box"];
-    for (column, bare) in [
-        (Column::Double, false),
-        (Column::Double, true),
-        (Column::Single, false),
-    ] {
-        let size = match column {
-            Column::Double => fig.size(),
-            Column::Single => fig.single_size().expect("a one-column layout"),
-        };
-        let svg = with_page(bare, column, || {
-            draw_svg(size, |area| fig.draw(area).unwrap())
-        });
+    for (column, bare) in FORMS {
+        let size = page_size(&fig, column);
+        let svg = svg_in(&fig, column, bare, size);
         let all = texts(&svg);
         let at = |label: &str| -> (f64, f64) {
             let t = all
@@ -629,15 +623,8 @@ fn inset_joined_to_its_window_across_two_columns() {
     use super::super::chart::read_svg::{attr, draw_svg, points, texts};
     use super::super::chart::{with_page, FONT};
     let fig = fig3().map_err(|e| e.named("martin-tan-fig3")).unwrap();
-    for (column, bare) in [
-        (Column::Double, false),
-        (Column::Double, true),
-        (Column::Single, false),
-    ] {
-        let size = match column {
-            Column::Double => fig.size(),
-            Column::Single => fig.single_size().expect("a one-column layout"),
-        };
+    for (column, bare) in FORMS {
+        let size = page_size(&fig, column);
         let mut widths: Vec<(String, u32, f64)> = Vec::new();
         let svg = with_page(bare, column, || {
             draw_svg(size, |area| {
