@@ -28,7 +28,7 @@ use hatch::HATCHES;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use table::{table_step, TABLE_TOP};
+use table::{table_step, TABLE_TOP, TITLE_EXTRA};
 
 /// Texture size in texels.
 pub(super) const SIZE: u32 = 2048;
@@ -259,7 +259,11 @@ impl Figure for Fig8 {
             x_label_area: 40,
             y_label_area: 44,
             tick_size: 13,
-            desc_size: 13,
+            // Axis names at the size of the other two-column figures' (eighth review, R8-X-3:
+            // 10.5 pt here against 12.1 in lloyd2006-fig11, martin-tan-fig3 and barroso-fig5);
+            // one column keeps 13, as martin-tan-fig3's and lloyd2006-fig4's do ((b)'s "light-view
+            // y" at 15 ran past its 67-unit axis).
+            desc_size: if single { 13 } else { 15 },
             margin: 6,
         };
         // Room for four-digit tick labels beside the texture's t axis.
@@ -267,7 +271,9 @@ impl Figure for Fig8 {
             y_label_area: 58,
             ..style
         };
-        let table_h = TABLE_TOP + self.table_lines(single) * table_step(single);
+        let table_h = TABLE_TOP
+            + self.table_lines(single) * table_step(single)
+            + if single { 0 } else { TITLE_EXTRA };
         if single {
             // (a) with its inset under it on the left (the tags' paragraph that stood beside
             // (a) is in the caption: R6-lloyd2005-fig8-4), (b) over (c) on the right; the

@@ -419,7 +419,8 @@ pub(super) fn fig10() -> Result<Keyed, Fail> {
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 10 (Eq 18, App. C), θ\u{a0}=\u{a0}{THETA_DEG}°, light \
              overhead: S̄ of ZP+W falls with the number of z-partitions k towards \
-             S̄_{{opt}}\u{a0}=\u{a0}ln(f/n)/(2\u{a0}tan\u{a0}θ) (dashed)."
+             S̄_{{opt}}\u{a0}=\u{a0}ln(f/n)/(2\u{a0}tan\u{a0}θ) (dashed). \
+             (b),\u{a0}S̄/S̄_{{opt}},\u{a0}left\u{a0}out."
         )],
         charts: vec![a],
     };

@@ -218,7 +218,7 @@ const BAR: u32 = 52;
 const ROW_LABEL_1: u32 = 46;
 const GAP_1: u32 = 10;
 const ROW_GAP_1: u32 = 3;
-const BLOCK_TITLE_1: u32 = 17;
+const BLOCK_TITLE_1: u32 = 20;
 const BLOCK_GAP_1: u32 = 12;
 const VBAR: u32 = 78;
 /// A double-column panel's height over its width: the z range [−5, 105] across and y over
@@ -311,7 +311,7 @@ impl Fig3 {
         z_under: &[usize],
         z_named: Option<usize>,
     ) -> Result<(), Fail> {
-        let z = Axis::every("z (eye depth)", -5.0, 105.0, 500.0, 1000.0);
+        let z = Axis::every("depth z", -5.0, 105.0, 500.0, 1000.0);
         let blank = Axis::every("", -5.0, 105.0, 500.0, 1000.0);
         for (r, row) in self.rows.iter().enumerate() {
             for (s, scheme) in row.iter().enumerate() {
@@ -419,6 +419,8 @@ impl Fig3 {
         let ph = (f64::from(pw) * PANEL_RATIO).round() as u32;
         let half = 0.5 * 110.0 * f64::from(ph) / f64::from(pw);
         let style = TextStyle::from((FONT, TEXT).into_font());
+        // The blocks' titles at every figure's panel-title size (eighth review, R8-X-3: 10.5 pt).
+        let title = TextStyle::from((FONT, PANEL_TITLE).into_font());
         for (q, (name, scale)) in BLOCK_NAMES.iter().zip(&self.scales).enumerate() {
             let b = Block {
                 x: Y_NAME + ROW_LABEL + q as u32 * (3 * pw + 2 * GAP + BLOCK_GAP),
@@ -431,7 +433,7 @@ impl Fig3 {
             body.draw(&Text::new(
                 *name,
                 ((b.x + b.width() / 2) as i32, 2),
-                style.pos(Pos::new(HPos::Center, VPos::Top)),
+                title.pos(Pos::new(HPos::Center, VPos::Top)),
             ))?;
             self.draw_headings(body, b, b.top - 2)?;
             if q == 0 {
@@ -483,6 +485,7 @@ impl Fig3 {
         // ph / (pw · PANEL_RATIO) of the depth's scale.
         let half = 0.5 * 110.0 * PANEL_RATIO;
         let style = TextStyle::from((FONT, TEXT).into_font());
+        let title = TextStyle::from((FONT, PANEL_TITLE).into_font());
         let pitch = BLOCK_TITLE_1 + 3 * ph + 2 * ROW_GAP_1 + BLOCK_GAP_1;
         for (q, (name, scale)) in BLOCK_NAMES.iter().zip(&self.scales).enumerate() {
             let b = Block {
@@ -508,7 +511,7 @@ impl Fig3 {
                     (b.x + b.width() / 2) as i32,
                     (b.top - BLOCK_TITLE_1 + 2) as i32,
                 ),
-                style.pos(Pos::new(HPos::Center, VPos::Top)),
+                title.pos(Pos::new(HPos::Center, VPos::Top)),
             ))?;
             if q == 1 {
                 draw_height_name(body, "height y (½ scale)", b)?;

@@ -45,7 +45,7 @@ fn depth_reads_0_to_100_the_height_is_named_and_rows_are_apart() {
     let svg = draw_svg(SIZE, |area| fig.draw(area).unwrap());
     let all = texts(&svg);
     let named = |t: &str| all.iter().filter(|x| x.1 == t).count();
-    assert_eq!(named("z (eye depth)"), 3);
+    assert_eq!(named("depth z"), 3);
     assert_eq!(named("height y"), 1);
     assert_eq!(named("50"), 0);
     // The panels' grey frames (n to f across): their right edges.

@@ -4,7 +4,7 @@
 
 use super::hatch::{self, HATCHES};
 use super::{Fig8, SIZE};
-use crate::plot::chart::FONT;
+use crate::plot::chart::{FONT, PANEL_TITLE};
 use crate::plot::warp_grid::minus;
 use crate::plot::Fail;
 use glam::DVec2;
@@ -17,6 +17,11 @@ const SWATCH_GAP: i32 = 7;
 
 /// The gap above the table's first line, under the panels above it.
 pub(super) const TABLE_TOP: u32 = 6;
+
+/// Two columns: the room the title "(d) …", at every panel title's size, needs beyond one
+/// line step of the table's text (eighth review's check of sizes: it was 10.5 pt, the other
+/// panels' titles 12.1).
+pub(super) const TITLE_EXTRA: u32 = 4;
 
 /// The table's font size and line step: 13 units (its subscripts 6 pt printed in one column)
 /// and 18 across two columns, 17 in one.
@@ -223,8 +228,10 @@ impl Fig8 {
             top
         } else {
             let title = "(d) Eq 6's shares (w, h) of the texture";
-            area.draw(&Text::new(title, (left, top), text.clone()))?;
-            top + step
+            let title_style = TextStyle::from((FONT, PANEL_TITLE).into_font())
+                .pos(Pos::new(HPos::Left, VPos::Top));
+            area.draw(&Text::new(title, (left, top), title_style))?;
+            top + step + TITLE_EXTRA as i32
         };
         let grey = RGBColor(90, 90, 90);
         // The header's cells top-aligned, a cell of several lines one step a line; the rule and
