@@ -5,8 +5,8 @@
 //! in B's space, with the share of the map each leaves unused (the paper's *wastage*).
 
 use super::chart::{
-    build_chart_styled, column, equal_aspect, frame, plot_size, Axis, ChartStyle, FONT, PALETTE,
-    SHARED,
+    build_chart_styled, column, equal_aspect, frame, plot_size, probe_area, Axis, ChartStyle, FONT,
+    PALETTE, SHARED,
 };
 use super::from_light::seen_from_light;
 use super::{Column, Fail, Figure, UNIT_SQUARE};
@@ -336,15 +336,57 @@ impl Figure for Fig3 {
         Some((Column::Single.width(), SINGLE_H))
     }
 
+    /// One column's caption names the inset's enlargement (R9-martin-tan-fig3-2: it has no
+    /// room for the lines joining the inset to its window), which the layout under the caption
+    /// fixes: the page is laid out on a [`probe_area`] first, as often as it takes the
+    /// enlargement the caption names to be the one drawn (the caption's lines, not their
+    /// words, set the layout, so one round settles it).
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), Fail> {
+        if column() == Column::Double {
+            return self.draw_page(root, None).map(|_| ());
+        }
+        let mut named = None;
+        for _ in 0..4 {
+            let drawn = self.draw_page(&probe_area(root.dim_in_pixel()), named)?;
+            if named.is_some_and(|k| magnification(k) == magnification(drawn)) {
+                let drawn = self.draw_page(root, named)?;
+                return match named {
+                    Some(k) if magnification(k) == magnification(drawn) => Ok(()),
+                    _ => Err(Fail::Draw(format!(
+                        "martin-tan-fig3: the caption names the inset {} but it is drawn {}",
+                        named.map_or_else(String::new, magnification),
+                        magnification(drawn)
+                    ))),
+                };
+            }
+            named = Some(drawn);
+        }
+        Err(Fail::Draw(
+            "martin-tan-fig3: the inset's enlargement does not settle with the caption naming it"
+                .into(),
+        ))
+    }
+}
+
+impl Fig3 {
+    /// The page, its caption in one column naming the inset's enlargement `zoom` where given;
+    /// returns the enlargement the inset is drawn at.
+    fn draw_page<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        zoom: Option<f64>,
+    ) -> Result<f64, Fail> {
         let single = column() == Column::Single;
         let (pct, nb) = (|v: f64| format!("{:.1}\u{a0}%", 100.0 * v), '\u{a0}');
         let caption = if single {
+            let inset = zoom.map_or_else(String::new, |k| {
+                format!("; inset: (a)'s grey box{nb}{}", magnification(k))
+            });
             format!(
                 "Martin & Tan 2004, Figs. 3, 4: T (80{nb}% rule, δ{nb}={nb}{FOCUS}), \
                  n{nb}={nb}{}, f{nb}={nb}{}, θ{nb}={nb}{}°, light at elevation {}°, azimuth {}° \
-                 from behind to the right; B: the smallest box. C covers {} of \
-                 T's map (b), {} of B's (c).",
+                 from behind to the right{inset}. C covers {} of T's map (b), {} of \
+                 B's (c).",
                 VIEW.0,
                 VIEW.1,
                 VIEW.2,
@@ -519,7 +561,7 @@ impl Figure for Fig3 {
         outline(&mut chart, &axis_box, AXIS_BOX, Stroke::Dotted)?;
         outline(&mut chart, &self.trapezoid, TRAP, Stroke::Solid)?;
         outline(&mut chart, &self.obox, MIN_BOX, Stroke::Dashed)?;
-        self.draw_inset(&inset_strip, &chart, unit, (!single).then_some(&upper))?;
+        let zoom = self.draw_inset(&inset_strip, &chart, unit, (!single).then_some(&upper))?;
         // (b), (c): the two normalised spaces; the map square in the colour of its shape.
         for (panel, h, title, colour, stroke, st) in [
             (&b_area, self.n_t, titles[0], TRAP, Stroke::Solid, &b_style),
@@ -548,7 +590,8 @@ impl Figure for Fig3 {
                 self.point_to_focus(&mut chart, &h)?;
             }
         }
-        draw_legend(&strip)
+        draw_legend(&strip)?;
+        Ok(zoom)
     }
 }
 

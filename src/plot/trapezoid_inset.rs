@@ -2,7 +2,7 @@
 //! its own under (a)'s axes (the sixth review, R6-martin-tan-fig3-1: drawn inside (a)'s axes
 //! under y = 0, where the y spine ran on, it read as data at negative y).
 
-use super::super::chart::{clip_polyline, Ticked, FONT};
+use super::super::chart::{clip_polyline, clip_to_rect, Rect, Ticked, FONT};
 use super::super::Fail;
 use super::{hull, magnification, Fig3, EDGE, EDGES, FOCUS_C, HULL, HULL_MIX, TRAP};
 use glam::DVec2;
@@ -47,14 +47,15 @@ impl Fig3 {
     /// two columns) the window's lower corners are joined to the frame's upper ones, as
     /// lloyd2005-fig8 joins its inset (R7-MT3-2): the lines cross (a)'s x axis between its tick
     /// labels and pass beside its name. One column joins nothing: its inset, as wide as the
-    /// column, would draw them across (a)'s "−50".
+    /// column, would draw them across (a)'s "−50"; its caption names the window and the
+    /// enlargement instead. Returns the enlargement.
     pub(super) fn draw_inset<DB: DrawingBackend>(
         &self,
         strip: &DrawingArea<DB, Shift>,
         chart: &super::super::chart::Chart2d<'_, DB>,
         unit: f64,
         joined: Option<&DrawingArea<DB, Shift>>,
-    ) -> Result<(), Fail> {
+    ) -> Result<f64, Fail> {
         let (sw, sh) = strip.dim_in_pixel();
         let (sx, _) = strip.get_base_pixel();
         let h = (sh as i32 - INSET_GAP.0 - INSET_GAP.1).max(20);
@@ -98,11 +99,24 @@ impl Fig3 {
             let pts: Vec<Option<(f64, f64)>> = pts.iter().map(|q| Some((q.x, q.y))).collect();
             clip_polyline(&pts, (lo.x, hi.x, lo.y, hi.y))
         };
+        // C cut to the window (the ninth review, R9-martin-tan-fig3-1: handed over whole, its
+        // corners outside the window were pulled onto the frame one coordinate at a time, and
+        // the fill ran from the frame's top corners, far outside T). Lines are cut by `clip`.
         let hull_xy: Vec<(f64, f64)> = hull(&self.eye).iter().map(|p| (p.x, p.y)).collect();
-        zoom.draw_series(std::iter::once(Polygon::new(
-            hull_xy,
-            HULL.mix(HULL_MIX).filled(),
-        )))?;
+        // In light-space units: the cut needs only x0 ≤ x1 and y0 ≤ y1.
+        let window = Rect {
+            x0: lo.x,
+            y0: lo.y,
+            x1: hi.x,
+            y1: hi.y,
+        };
+        let cut = clip_to_rect(&hull_xy, &window);
+        if cut.len() >= 3 {
+            zoom.draw_series(std::iter::once(Polygon::new(
+                cut,
+                HULL.mix(HULL_MIX).filled(),
+            )))?;
+        }
         for (corners, colour, width) in [(&self.eye, EDGE, 1), (&self.focus, FOCUS_C, 2)] {
             for (a, b) in EDGES {
                 for piece in clip(&[corners[a], corners[b]]) {
@@ -129,6 +143,6 @@ impl Fig3 {
                 .color(&FRAME)
                 .pos(Pos::new(HPos::Left, VPos::Bottom)),
         ))?;
-        Ok(())
+        Ok(zoom_factor)
     }
 }

@@ -30,12 +30,13 @@ pub(crate) use aspect::*;
 pub(crate) use axis::*;
 pub(crate) use bar::*;
 pub(crate) use colour_map::ColourMap;
-pub(crate) use fine::{dash_pattern, draw_fine_line};
+pub(crate) use fine::{clip_to_rect, dash_pattern, draw_fine_line};
 pub(crate) use heat::*;
 pub(crate) use label::*;
 pub(crate) use line::*;
 pub(crate) use marker::Marker;
 pub(crate) use page::*;
+pub(crate) use probe::probe_area;
 pub(crate) use raster::{bitmap_density, fit_to_scale};
 pub(crate) use scheme::{Look, SHARED};
 // The figures' parameter sweeps (α, ξ, f/n, partitions) take their colours from these.
