@@ -624,21 +624,14 @@ fn lloyd2006_fig7() {
         &[
             ("2006", N::Given("the paper's year")),
             ("7", N::Given("its figure")),
-            ("1", N::Given("the sweep's step in degrees")),
             ("1", N::Given("n")),
             ("1000", N::Given("f")),
             ("30", N::Given("θ")),
+            ("5.1", N::Given("§5.1, face partitioning")),
             (
                 "1.999×10^{6}",
                 N::Measured(
                     "(a)'s largest S̄ (fig7_names_e_and_the_projection_..., src/plot/hemisphere.rs)",
-                ),
-            ),
-            (
-                "1.224×10^{6}",
-                N::Measured(
-                    "the minimum-area maps' peak, recomputed by a scan of rotations \
-                     (fig7_names_e_and_the_projection_..., src/plot/hemisphere.rs)",
                 ),
             ),
             (

@@ -304,10 +304,11 @@ fn fig7_one_column_bars_follow_the_panels() {
 fn captions_say_rings_are_elevations_and_which_rule() {
     let font = Font::dejavu();
     for (name, column, says) in [
-        // lloyd2006-fig7's key disk writes each ring's elevation (its caption has no room for
-        // them since it defines (a)'s contours and where n′ should revert: the eighth review).
-        ("lloyd2006-fig7", Column::Double, "rings: elevation)"),
-        // One column: (a) writes each ring's elevation on it; the caption keeps four lines.
+        // lloyd2006-fig7's key disk, titled "key: elevation", writes each ring's elevation
+        // (`fig7_names_e_and_the_projection_and_keys_the_rings_apart_from_the_data`); its
+        // caption has no room for them since it defines (a)'s contours, where n′ should revert
+        // (the eighth review) and the panels (c)–(e) (the ninth). One column: (a) writes each
+        // ring's elevation on it; the caption keeps four lines.
         (
             "martin-tan-fig6",
             Column::Double,

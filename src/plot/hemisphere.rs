@@ -97,7 +97,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         ("(a) no warping", WarpRule::Uniform, Partition::Single),
         ("(b) LiSPSM", WarpRule::Lispsm, Partition::Single),
         ("(c) LiSPSM per face", WarpRule::Lispsm, Partition::Faces),
-        ("(d) n′ of least S̄", WarpRule::Minimax, Partition::Single),
+        ("(d) S̄ at the best n′", WarpRule::Minimax, Partition::Single),
     ];
     let mut panels = Vec::new();
     for (title, rule, partition) in schemes {
@@ -154,9 +154,9 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let (lo, hi) = decades(lo, hi);
     let scale = ColourScale::smooth(Axis::log10("(a)–(d) S̄ (log scale)", lo, hi));
     // (a)'s brightest cells (fifth review, §4.7.5): the unwarped map's rectangle has a side
-    // along the projected view direction; its largest S̄, and that of minimum-area rectangles
-    // over the same grid (lloyd2006-worst-case).
-    let min_area = super::worst::min_area::zp_min_area_worst(&view, 1, grid)?.0;
+    // along the projected view direction; its largest S̄ (minimum-area rectangles peak at
+    // 1.224·10⁶ over the same grid: docs/figures.md, `min_area`'s tests; the caption's five
+    // lines went to (c)–(e), the ninth review, R9-lloyd2006-fig7-1).
     // (a)'s peak and the rule that sets it, in words, as the worst-case figure words it (the
     // seventh review, R7-2006f7-1: "the orientation rule's (the worst-case figure)" named no
     // rule): the unwarped map keeps a side along the view direction projected into the light's
@@ -167,10 +167,9 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     // a valley a few degrees wide, and there they meet in one black line (the eighth review,
     // R8-lloyd2006-fig7-3): the caption says so.
     let band = format!(
-        "(a) peaks at {} off behind, its map's side along the view direction lying diagonal \
-         (minimum-area maps: {}); both contours follow the behind–front line.",
+        "(a) peaks at {} off behind, its map's side along the view lying diagonal; both \
+         contours follow the behind–front line.",
         fmt_times_ten(panels[0].max),
-        fmt_times_ten(min_area),
     );
     // Near behind LiSPSM needs more than no warping (the sixth review, R6-lloyd2006-fig7-6):
     // the n′ rule used does not revert to an orthogonal map for γ < θ, as Lloyd 2006 §4.4
@@ -178,19 +177,19 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let worse = lispsm_over_unwarped(&panels[1].grid, &panels[0].grid);
     let (n, f) = (view.near(), view.far());
     let caption = vec![format!(
-        "Lloyd et al. 2006, Fig. 7: S̄ (texels per image pixel), {step}° grid, azimuthal \
-         equidistant (top: viewer's left; rings: elevation); \
-         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°. {band} Near behind (b) is up to {worse:.1}× (a): \
-         n′ does not revert within θ of the view (§4.4).",
-        step = 90 / (FIG7_ELEVATIONS - 1),
+        "Lloyd et al. 2006, Fig. 7: S̄ (texels per image pixel), azimuthal \
+         equidistant (top: viewer's left); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+         θ\u{a0}=\u{a0}{theta:.0}°. (c) LiSPSM per visible face (§5.1), S̄ summed; \
+         (d), (e) not in the paper, (e)\u{a0}=\u{a0}(b)\u{a0}÷\u{a0}(c). {band} Near behind (b) \
+         is up to {worse:.1}× (a): its n′ does not revert (§4.4).",
         theta = view.half_fov().to_degrees(),
     )];
     // One column: four lines, so that the disks keep the size at which (a)'s ring key covers
     // at most a sixth of its disk ((a)'s peak is left to the two columns' caption).
     let single_caption = format!(
         "Lloyd et al. 2006, Fig. 7: S̄, azimuthal equidistant (top: viewer's left); \
-         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°; (b) is up to \
-         {worse:.1}× (a) within θ of the view, not reverting (§4.4).",
+         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°; (c) face \
+         partitioning; near behind (b) is up to {worse:.1}× (a) (§4.4).",
         theta = view.half_fov().to_degrees(),
     );
     Ok(Fig7 {
@@ -566,15 +565,14 @@ mod tests {
     /// title names what it divides ("LiSPSM ÷ faces", not "(b) ÷ (c)"); the captions name the
     /// azimuthal equidistant projection; in two columns the ring key is written in a disk of
     /// its own (every ring label nearer the key's title than any data panel's title), not over
-    /// (a)'s data; and the caption gives (a)'s brightest value (twice S̄ behind, 10⁶, Eq 20), the
-    /// rule that sets it in words, and the minimum-area maps' peak over the same grid, here
-    /// computed by a scan of rotations.
+    /// (a)'s data; and the caption gives (a)'s brightest value (twice S̄ behind, 10⁶, Eq 20) and
+    /// the rule that sets it in words. The ninth review (R9-lloyd2006-fig7-1, -2): the panels
+    /// not in the paper are defined, (c) in both captions and (e) in the two-column one, and
+    /// (d) is titled by what its colour shows, S̄.
     #[test]
     fn fig7_names_e_and_the_projection_and_keys_the_rings_apart_from_the_data() {
         use super::super::chart::fmt_times_ten;
         use super::super::chart::read_svg::{attr, texts};
-        use super::super::worst::min_area::tests::zp_by_hand;
-        use crate::scheme::sweep::light_dir_from_angles;
         let fig = fig7().map_err(|e| e.named("lloyd2006-fig7")).unwrap();
         for column in [Column::Double, Column::Single] {
             let svg = svg_in(&fig, column);
@@ -621,32 +619,46 @@ mod tests {
         // (a)'s brightest cell is twice S̄ behind, (f/n)² = 10⁶: the orientation rule.
         let peak = fig.panel_max(0);
         assert!((1.99e6..2.0e6).contains(&peak), "{peak}");
-        let grid = SweepGrid::new(FIG7_ELEVATIONS, FIG7_AZIMUTHS).unwrap();
-        let mut least = 0.0f64;
-        for i in 0..grid.elevations() {
-            for j in 0..grid.azimuths() {
-                let l = light_dir_from_angles(grid.elevation(i), grid.azimuth(j));
-                least = least.max(zp_by_hand(1, l, true));
-            }
-        }
         let text = fig.caption_text();
         // The rule itself, in words, not a reference to the worst-case figure (the seventh
         // review, R7-2006f7-1: "the orientation rule's (the worst-case figure)"), and the two
         // contours' meeting along the behind–front line (the eighth, R8-lloyd2006-fig7-3).
         let want = format!(
-            "(a) peaks at {} off behind, its map's side along the view direction lying \
-             diagonal (minimum-area maps: {}); both contours follow the behind–front line.",
+            "(a) peaks at {} off behind, its map's side along the view lying diagonal; both \
+             contours follow the behind–front line.",
             fmt_times_ten(peak),
-            fmt_times_ten(least)
         );
         assert!(text.contains(&want), "{want:?} in {text}");
         assert!(!text.contains("orientation rule"), "{text}");
-        // No γ, which no figure of Lloyd 2006 defines (R8-lloyd2006-fig7-1): the caption says
-        // where n′ should revert in words.
+        // The panels the paper does not have, defined (R9-lloyd2006-fig7-1).
+        for clause in [
+            "(c) LiSPSM per visible face (§5.1), S̄ summed",
+            "(d), (e) not in the paper, (e)\u{a0}=\u{a0}(b)\u{a0}÷\u{a0}(c)",
+        ] {
+            assert!(text.contains(clause), "{clause:?} in {text}");
+        }
+        assert!(
+            fig.single_caption.contains("(c) face partitioning"),
+            "{}",
+            fig.single_caption
+        );
+        // (d)'s title names the quantity its colour shows (R9-lloyd2006-fig7-2: "n′ of least
+        // S̄" read as a map of n′).
+        for column in [Column::Double, Column::Single] {
+            let svg = svg_in(&fig, column);
+            let all = texts(&svg);
+            assert!(
+                all.iter()
+                    .any(|t| t.1.starts_with("(d) ") && t.1.ends_with(" at the best n′")),
+                "{column:?}: no (d) title"
+            );
+        }
+        // No γ, which no figure of Lloyd 2006 defines (R8-lloyd2006-fig7-1): the captions say
+        // where n′ should revert in words ("near behind").
         for caption in [&text, &fig.single_caption] {
             assert!(!caption.contains("lloyd2006-"), "{caption}");
             assert!(!caption.contains('γ'), "{caption}");
-            assert!(caption.contains("within θ of the view"), "{caption}");
+            assert!(caption.contains("ear behind (b) is up to"), "{caption}");
         }
     }
 }

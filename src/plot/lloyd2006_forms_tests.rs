@@ -161,7 +161,8 @@ fn fig6_key_inside_and_markers_apart() {
 /// curve, 8.66×10³ at k = 1): one panel whose y range holds every point of every curve,
 /// S̄ from 1 to 10⁴ as across two columns. By hand, Eq 18 at k = 1 is the unpartitioned
 /// (f/n − 1)/(2 tan θ) = 9999/(2 tan 30°) = 8659.4, the largest value drawn, and the least is
-/// f/n = 10's optimum ln 10/(2 tan 30°) = 1.994; the page is at most 525 units tall.
+/// f/n = 10's optimum ln 10/(2 tan 30°) = 1.994; the page is at most 525 units tall; and the
+/// caption says that the two-column form's (b) is left out (the eighth review, R8-X-6).
 #[test]
 fn fig10_one_column_holds_the_data() {
     let fig = fig10().map_err(|e| e.named("lloyd2006-fig10")).unwrap();
@@ -184,6 +185,16 @@ fn fig10_one_column_holds_the_data() {
         (c.y.min, c.y.max)
     );
     assert!(fig.single_size().unwrap().1 <= 525);
+    let caption = single.page.caption.join(" ");
+    assert!(
+        caption.contains("(b),\u{a0}S̄/S̄_{opt},\u{a0}left\u{a0}out."),
+        "{caption}"
+    );
+    assert_eq!(
+        fig.page.charts.len(),
+        2,
+        "the two-column form has a (b) to leave out"
+    );
 }
 
 /// Fig 12 (a)'s title (the fourth review: "(a) overhead, behind (dashed)", but FP+ZP+W behind
