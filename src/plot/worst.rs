@@ -188,8 +188,8 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
     // room (five lines at most; `min_area`'s tests compute it).
     let where_ = Worst::of(&first, grid)?;
     let caption = format!(
-        "Lloyd et al. 2006, §5.3, not a figure of the paper: worst S̄ within 2–3× S̄ behind \
-         (Eq 20, 21)? f/n\u{a0}=\u{a0}{ratio_fn}, θ\u{a0}=\u{a0}{theta:.0}°, lights \
+        "Lloyd et al. 2006, §5.3, puts the worst S̄ within 2–3× S̄ behind (Eq 20, 21); not a \
+         figure of the paper. f/n\u{a0}=\u{a0}{ratio_fn}, θ\u{a0}=\u{a0}{theta:.0}°, lights \
          every {step}°, over k: {}. {}. {}",
         extremes.join("; ").replace(" at every k", ""),
         where_.orientation(),
@@ -560,6 +560,21 @@ mod tests {
         assert!(own.contains(&format!("lights every {step}°")));
         assert!(!own.contains("Fig. 7"), "{own}");
         assert!(step > fig7_step && (step / fig7_step).fract() == 0.0);
+    }
+
+    /// The caption states the claim the figure tests, not a question (the eighth and ninth
+    /// reviews, R8-/R9-lloyd2006-worst-case: "worst S̄ within 2–3× S̄ behind (Eq 20, 21)?").
+    #[test]
+    fn caption_states_the_papers_claim() {
+        let fig = worst_case()
+            .map_err(|e| e.named("lloyd2006-worst-case"))
+            .unwrap();
+        let own = fig.page.caption.join(" ");
+        assert!(!own.contains('?'), "{own}");
+        assert!(
+            own.starts_with("Lloyd et al. 2006, §5.3, puts the worst S̄ within 2–3× S̄ behind"),
+            "{own}"
+        );
     }
 
     /// One key for both panels (issue 35 review: each panel had its own), and it says that
