@@ -5,8 +5,8 @@
 //! in B's space, with the share of the map each leaves unused (the paper's *wastage*).
 
 use super::chart::{
-    build_chart_styled, column, equal_aspect, frame, plot_size, probe_area, Axis, ChartStyle, FONT,
-    PALETTE, SHARED,
+    build_chart_styled, column, dash_pattern, draw_fine_path, equal_aspect, fill_fine_points,
+    frame, plot_size, probe_area, to_backend, Axis, ChartStyle, Dash, FONT, PALETTE, SHARED,
 };
 use super::from_light::seen_from_light;
 use super::{Column, Fail, Figure, UNIT_SQUARE};
@@ -198,7 +198,6 @@ const EDGE: RGBColor = RGBColor(120, 120, 120);
 /// PSM/ZP's blue), filled opaque at CIE L* 79.8 (the sixth review, R6-martin-tan-fig3-3: at
 /// 45 % over white, L* 88.5 and 1.35 : 1, it nearly vanished in greyscale).
 const HULL: RGBColor = RGBColor(216, 196, 152);
-const HULL_MIX: f64 = 1.0;
 /// The focus region: dark wine, 2 units wide in every panel, so that in greyscale it stands
 /// out from the light hull C it lies on (review 3: a thin pink line on light blue).
 const FOCUS_C: RGBColor = RGBColor(136, 34, 85);
@@ -214,20 +213,28 @@ enum Stroke {
     Dotted,
 }
 
+/// Strokes the closed outline of `corners` (light space, or a map's) 2 units wide, placed to a
+/// tenth of a unit (the ninth review, R9-martin-tan-fig3-3: rounded to whole units, (a)'s near
+/// plane shrank to 1-unit stubs at the apex); dashes 9 on, 6 off, dots 2 on, 5 off, along the
+/// outline's length.
 fn outline<DB: DrawingBackend>(
-    chart: &mut super::chart::Chart2d<'_, DB>,
+    chart: &super::chart::Chart2d<'_, DB>,
     corners: &[DVec2],
     colour: RGBColor,
     stroke: Stroke,
 ) -> Result<(), Fail> {
-    let mut pts: Vec<(f64, f64)> = corners.iter().map(|p| (p.x, p.y)).collect();
+    let to = to_backend(chart);
+    let mut pts: Vec<(f64, f64)> = corners.iter().map(|p| to((p.x, p.y))).collect();
     pts.push(pts[0]);
-    let style = colour.stroke_width(2);
-    match stroke {
-        Stroke::Solid => chart.draw_series(LineSeries::new(pts, style))?,
-        Stroke::Dashed => chart.draw_series(DashedLineSeries::new(pts, 9, 6, style))?,
-        Stroke::Dotted => chart.draw_series(DashedLineSeries::new(pts, 2, 5, style))?,
+    let pieces = match stroke {
+        Stroke::Solid => vec![pts],
+        Stroke::Dashed => dash_pattern(&pts, &[9.0, 6.0], 1.0),
+        Stroke::Dotted => dash_pattern(&pts, &[2.0, 5.0], 1.0),
     };
+    let area = chart.plotting_area().strip_coord_spec();
+    for piece in pieces {
+        draw_fine_path(&area, &piece, colour, 2, Dash::Solid)?;
+    }
     Ok(())
 }
 
@@ -307,7 +314,7 @@ fn draw_legend<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>) -> Result<(), 
         if stroke.is_none() {
             area.draw(&Rectangle::new(
                 [(x, y - 6), (x + 18, y + 6)],
-                HULL.mix(HULL_MIX).filled(),
+                HULL.filled(),
             ))?;
         } else {
             for (a, b) in pieces {
@@ -542,8 +549,8 @@ impl Fig3 {
             .filter(|&v| (lo.x..=hi.x).contains(&v))
             .collect();
         let xa = xa.labelled_at(&data_ticks);
-        let mut chart = build_chart_styled(&top, title, &xa, &ya, false, &a_style)?;
-        self.draw_contents(&mut chart, |p| p)?;
+        let chart = build_chart_styled(&top, title, &xa, &ya, false, &a_style)?;
+        self.draw_contents(&chart, |p| p)?;
         // Units per light-space unit (equal aspect: the same along both axes).
         // Measured across the whole axis: one light-space unit is under one unit of the page in
         // one column, where whole pixels would round it to 0 or 1.
@@ -558,9 +565,9 @@ impl Fig3 {
         // its dashes alternate olive with T's black between them.
         let (b0, b1) = self.bbox;
         let axis_box = [b0, DVec2::new(b1.x, b0.y), b1, DVec2::new(b0.x, b1.y)];
-        outline(&mut chart, &axis_box, AXIS_BOX, Stroke::Dotted)?;
-        outline(&mut chart, &self.trapezoid, TRAP, Stroke::Solid)?;
-        outline(&mut chart, &self.obox, MIN_BOX, Stroke::Dashed)?;
+        outline(&chart, &axis_box, AXIS_BOX, Stroke::Dotted)?;
+        outline(&chart, &self.trapezoid, TRAP, Stroke::Solid)?;
+        outline(&chart, &self.obox, MIN_BOX, Stroke::Dashed)?;
         let zoom = self.draw_inset(&inset_strip, &chart, unit, (!single).then_some(&upper))?;
         // (b), (c): the two normalised spaces; the map square in the colour of its shape.
         for (panel, h, title, colour, stroke, st) in [
@@ -580,12 +587,12 @@ impl Fig3 {
             let (ax, ay) = (ax.labelled_at(&ends), ay.labelled_at(&ends));
             let mut chart = build_chart_styled(panel, title, &ax, &ay, false, st)?;
             let h = TO_UNIT * h;
-            self.draw_contents(&mut chart, |p| through(&h, p))?;
+            self.draw_contents(&chart, |p| through(&h, p))?;
             let square: Vec<DVec2> = UNIT_SQUARE[..4]
                 .iter()
                 .map(|&(x, y)| through(&TO_UNIT, DVec2::new(x, y)))
                 .collect();
-            outline(&mut chart, &square, colour, stroke)?;
+            outline(&chart, &square, colour, stroke)?;
             if colour == MIN_BOX {
                 self.point_to_focus(&mut chart, &h)?;
             }
@@ -643,30 +650,24 @@ const SINGLE_H: u32 = 496;
 const X_LABEL: &str = "light-view x";
 
 impl Fig3 {
-    /// C filled, E's edges and the focus region's, carried by `f`.
+    /// C filled, E's edges and the focus region's, carried by `f`, placed to a tenth of a unit
+    /// (R9-martin-tan-fig3-3, as [`outline`]).
     fn draw_contents<DB: DrawingBackend>(
         &self,
-        chart: &mut super::chart::Chart2d<'_, DB>,
+        chart: &super::chart::Chart2d<'_, DB>,
         f: impl Fn(DVec2) -> DVec2,
     ) -> Result<(), Fail> {
-        let poly: Vec<(f64, f64)> = hull(&self.eye)
-            .iter()
-            .map(|&p| {
-                let q = f(p);
-                (q.x, q.y)
-            })
-            .collect();
-        chart.draw_series(std::iter::once(Polygon::new(
-            poly,
-            HULL.mix(HULL_MIX).filled(),
-        )))?;
+        let to = to_backend(chart);
+        let at = |p: DVec2| {
+            let q = f(p);
+            to((q.x, q.y))
+        };
+        let area = chart.plotting_area().strip_coord_spec();
+        fill_fine_points(&area, hull(&self.eye).into_iter().map(at).collect(), HULL)?;
         for (corners, colour, width) in [(&self.eye, EDGE, 1), (&self.focus, FOCUS_C, 2)] {
             for (a, b) in EDGES {
-                let (p, q) = (f(corners[a]), f(corners[b]));
-                chart.draw_series(LineSeries::new(
-                    [(p.x, p.y), (q.x, q.y)],
-                    colour.stroke_width(width),
-                ))?;
+                let line = [at(corners[a]), at(corners[b])];
+                draw_fine_path(&area, &line, colour, width, Dash::Solid)?;
             }
         }
         Ok(())

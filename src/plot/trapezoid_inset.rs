@@ -2,9 +2,12 @@
 //! its own under (a)'s axes (the sixth review, R6-martin-tan-fig3-1: drawn inside (a)'s axes
 //! under y = 0, where the y spine ran on, it read as data at negative y).
 
-use super::super::chart::{clip_polyline, clip_to_rect, Rect, Ticked, FONT};
+use super::super::chart::{
+    clip_polyline, clip_to_rect, draw_fine_path, fill_fine_points, to_backend, Dash, Rect, Ticked,
+    FONT,
+};
 use super::super::Fail;
-use super::{hull, magnification, Fig3, EDGE, EDGES, FOCUS_C, HULL, HULL_MIX, TRAP};
+use super::{hull, magnification, Fig3, EDGE, EDGES, FOCUS_C, HULL, TRAP};
 use glam::DVec2;
 use plotters::coord::Shift;
 use plotters::prelude::*;
@@ -91,7 +94,7 @@ impl Fig3 {
         }
         let inset = strip.clone().shrink((x0, y0), (w as u32, h as u32));
         inset.fill(&WHITE)?;
-        let mut zoom = ChartBuilder::on(&inset).build_cartesian_2d(
+        let zoom = ChartBuilder::on(&inset).build_cartesian_2d(
             Ticked::new(lo.x, hi.x, Vec::new(), Vec::new()),
             Ticked::new(lo.y, hi.y, Vec::new(), Vec::new()),
         )?;
@@ -110,24 +113,23 @@ impl Fig3 {
             x1: hi.x,
             y1: hi.y,
         };
-        let cut = clip_to_rect(&hull_xy, &window);
-        if cut.len() >= 3 {
-            zoom.draw_series(std::iter::once(Polygon::new(
-                cut,
-                HULL.mix(HULL_MIX).filled(),
-            )))?;
-        }
+        // Placed to a tenth of a unit, as in (a) (R9-martin-tan-fig3-3).
+        let to = to_backend(&zoom);
+        let area = zoom.plotting_area().strip_coord_spec();
+        let on_page =
+            |piece: Vec<(f64, f64)>| -> Vec<(f64, f64)> { piece.into_iter().map(&to).collect() };
+        fill_fine_points(&area, on_page(clip_to_rect(&hull_xy, &window)), HULL)?;
         for (corners, colour, width) in [(&self.eye, EDGE, 1), (&self.focus, FOCUS_C, 2)] {
             for (a, b) in EDGES {
                 for piece in clip(&[corners[a], corners[b]]) {
-                    zoom.draw_series(LineSeries::new(piece, colour.stroke_width(width)))?;
+                    draw_fine_path(&area, &on_page(piece), colour, width, Dash::Solid)?;
                 }
             }
         }
         let mut closed = self.trapezoid.to_vec();
         closed.push(closed[0]);
         for piece in clip(&closed) {
-            zoom.draw_series(LineSeries::new(piece, TRAP.stroke_width(2)))?;
+            draw_fine_path(&area, &on_page(piece), TRAP, 2, Dash::Solid)?;
         }
         inset.draw(&Rectangle::new(
             [(0, 0), (w - 1, h - 1)],

@@ -30,7 +30,9 @@ pub(crate) use aspect::*;
 pub(crate) use axis::*;
 pub(crate) use bar::*;
 pub(crate) use colour_map::ColourMap;
-pub(crate) use fine::{clip_to_rect, dash_pattern, draw_fine_line};
+pub(crate) use fine::{
+    clip_to_rect, dash_pattern, draw_fine_line, draw_fine_path, fill_fine_points, to_backend,
+};
 pub(crate) use heat::*;
 pub(crate) use label::*;
 pub(crate) use line::*;
