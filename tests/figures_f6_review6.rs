@@ -35,16 +35,32 @@ fn tick_span(all: &[read::Text], a: &str, b: &str) -> f64 {
 /// R6-barroso-fig5-2: in one column the overview (a) drew x = −50…50 over 23 units and the
 /// detail (b) x = −5…5 over 36 (each plot about 40 units wide in a 300-unit column, its gutter
 /// of labels as wide as the plot). With the overviews unlabelled and as wide as the row's
-/// height allows, (a)'s −50…50 spans at least 32 units and (b)'s −5…5 at least 45, the (b)
-/// plot (its window ±10 tan 30° = ±5.77) at least 52 units wide.
+/// height allows, (a)'s −50…50 spans at least 32 units and (b)'s −5…5 spanned 49 (its window
+/// x = ±10 tan 30° = ±5.77, z ≤ 10); (d)'s, over the same x window and a square one, spans at
+/// least 40 units (42 drawn). (b) holds z ≤ 31.62 since the ninth review (R9-barroso-fig5-1),
+/// about 33 by 39 data units in a row whose plots are about 51 units tall: its −10…10 spans at
+/// least 28 units (31 drawn).
 #[test]
 fn barroso_fig5_single_plots_take_the_row() {
     let font = read::Font::dejavu();
     let all = read::texts(&font, &read::render_svg("barroso-fig5", &single()));
     let a = tick_span(&all, "−50", "50");
-    let b = tick_span(&all, "−5", "5");
+    let b = tick_span(&all, "−10", "10");
     assert!(a >= 32.0, "(a) −50…50 over {a:.1} units");
-    assert!(b >= 45.0, "(b) −5…5 over {b:.1} units");
+    assert!(b >= 28.0, "(b) −10…10 over {b:.1} units");
+    // (d)'s x ticks −5 and 5, under its plot: the first "−5" with a "5" on its baseline.
+    let d = all
+        .iter()
+        .filter(|t| t.content == "−5" && !t.rotated)
+        .filter_map(|ta| {
+            let tb = all
+                .iter()
+                .find(|t| t.content == "5" && (t.y - ta.y).abs() < 0.5)?;
+            Some(0.5 * (tb.bbox[0] + tb.bbox[2]) - 0.5 * (ta.bbox[0] + ta.bbox[2]))
+        })
+        .next()
+        .expect("(d)'s ticks −5 and 5 on one baseline");
+    assert!(d >= 40.0, "(d) −5…5 over {d:.1} units");
 }
 
 /// R6-barroso-fig5-2/-3 (and the fifth review's §4.12.5): in one column only the details label
@@ -70,11 +86,11 @@ fn barroso_fig5_single_labels_in_the_details_with_thin_spaces() {
         assert!(has(&thin), "no label {thin:?}");
         assert!(!has(&want.replace(' ', "")), "{want:?} set close");
     }
-    // The overviews' far planes are not labelled: no "f = 100", no "z = 31.62"; and no label
-    // is a bare depth that reads as a tick value (fifth review §4.12.5).
-    for gone in ["f\u{2009}=\u{2009}100", "z\u{2009}=\u{2009}31.62"] {
-        assert!(!has(gone), "a label {gone:?}");
-    }
+    // The overviews' far planes are not labelled: no "f = 100" (z = 31.62 is (b)'s far plane
+    // since the ninth review, R9-barroso-fig5-1, labelled there); and no label is a bare depth
+    // that reads as a tick value (fifth review §4.12.5).
+    assert!(!has("f\u{2009}=\u{2009}100"), "a label f = 100");
+    assert!(has("z\u{2009}=\u{2009}31.62"), "no label z = 31.62 in (b)");
     for bare in ["3.162", "31.62", "6.041", "16.13", "40.81"] {
         assert!(!has(bare), "a bare depth {bare:?}");
     }

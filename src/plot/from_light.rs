@@ -49,6 +49,10 @@ pub(super) struct Panel {
     /// Whether the panel after this one (beside it, on its right) enlarges a region of it: that
     /// panel's axis limits, as drawn, outlined in grey here.
     pub enlarged: bool,
+    /// Whether the maps' outlines are drawn fine (at most 2 units wide, each side dashed with
+    /// whole periods of at most a quarter of it, or solid) over the frustum's lines
+    /// (barroso-fig5, R9-barroso-fig5-1), rather than wide, under them (lloyd2006-fig11).
+    pub fine: bool,
 }
 
 pub(super) struct FromLight {
@@ -104,6 +108,7 @@ fn panel(view: &ViewFrustum, light: DVec3, planes: &[f64], title: String) -> Res
         extensions: Vec::new(),
         notes: Vec::new(),
         enlarged: false,
+        fine: false,
     })
 }
 
@@ -181,7 +186,8 @@ fn fmt_planes(p: &[f64]) -> String {
 /// θ = 30° (half field of view), seen by (a) a light perpendicular to the view direction
 /// (overhead) and (c) one parallel to it (behind the viewer); (e) the adaptive partitions of
 /// Eq 19 for a light 45° above the view direction, which the paper's figure does not have; (b),
-/// (d), (f) the near partitions of (a), (c), (e) enlarged.
+/// (d), (f) the near partitions of (a), (c), (e) enlarged: (b) maps 1 to 3 (z ≤ 31.62), (d)
+/// maps 1 and 2 (z ≤ 10), (f) maps 1 to 3 (z ≤ 40.81).
 pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     let view = ViewFrustum::new(1.0, 100.0, 30f64.to_radians())?;
     let k = 4;
@@ -210,13 +216,14 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         ss.planes(),
         "(a) perpendicular light".into(),
     )?;
-    // (b): the two nearest partitions of (a), enlarged.
-    let (lo, hi) = bounds(&perpendicular.sections[..3]);
+    // (b): the three nearest partitions of (a), enlarged (the ninth review, R9-barroso-fig5-1:
+    // out to z = 10 only, no panel showed map 3, z = 10–31.62, larger than (a)'s 20 × 12 units).
+    let (lo, hi) = bounds(&perpendicular.sections[..4]);
     let mut zoom = panel(
         &view,
         overhead,
         ss.planes(),
-        "(b) detail of (a): z ≤ 10".into(),
+        format!("(b) detail of (a): z ≤ {}", fmt_planes(&ss.planes()[3..4])),
     )?;
     zoom.window = Some((lo, hi));
     let mut parallel = panel(&view, behind, ss.planes(), "(c) parallel light".into())?;
@@ -281,7 +288,12 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     label_from(&mut perpendicular, 3);
     label_from(&mut parallel, 3);
     label_from(&mut eq19, 2);
-    let panels = vec![perpendicular, zoom, parallel, zoom_b, eq19, zoom_c];
+    let mut panels = vec![perpendicular, zoom, parallel, zoom_b, eq19, zoom_c];
+    // Every panel's maps fine (R9-barroso-fig5-1: in the overviews the wide outlines and their
+    // dashes were larger than maps 1 to 3), so that the key's strokes are each panel's.
+    for p in &mut panels {
+        p.fine = true;
+    }
     // Formulas joined by no-break spaces (U+00A0), so that the caption breaks none of them.
     // Barroso's α is his target ratio f_i/n_i, not Lloyd's f/n (figure review 3, X2).
     let caption = format!(
@@ -453,16 +465,18 @@ mod tests {
         }
         assert_eq!(b.panels[0].planes, b.panels[2].planes);
         // (e): the adaptive planes start at n and end at f, and differ from the self-similar
-        // ones; (b) is (a) shown in a window around the three nearest planes (z ≤ 10).
+        // ones; (b) is (a) shown in a window around the four nearest planes, z ≤ 100^{3/4} =
+        // 31.623 (R9-barroso-fig5-1: map 3 in it), x to ±31.623 tan 30° = ±18.257.
         let ad = &b.panels[4].planes;
         assert_eq!((ad[0], ad[4]), (1.0, 100.0));
         assert!((ad[1] - b.panels[0].planes[1]).abs() > 1e-3);
         let (lo, hi) = b.panels[1].window.unwrap();
         assert!(
-            (hi.y.abs().max(lo.y.abs()) - 10.0).abs() < 1e-9,
+            (hi.y.abs().max(lo.y.abs()) - 31.6228).abs() < 1e-4,
             "{lo} {hi}"
         );
-        assert!((hi.x - 10.0 * t).abs() < 1e-9);
+        assert!((hi.x - 18.2574).abs() < 1e-4 && (lo.x + 18.2574).abs() < 1e-4);
+        assert_eq!(b.panels[1].title, "(b) detail of (a): z ≤ 31.62");
     }
 
     /// Lloyd Fig 11's labels (issue 25): the near and far planes by name and the middle split

@@ -4,6 +4,7 @@
 //! cross-section's right corner to its label in a gutter right of the plot, and one key under
 //! the panels naming the maps' strokes, the frustum's and the split planes'.
 
+use super::super::canvas::Fine;
 use super::super::chart::{
     boxed_text, build_chart_styled, clip_polyline, column, dash_pattern, draw_fine_line,
     equal_aspect, frame, plot_size, Axis, Chart2d, ChartStyle, Dash, FONT, SWEEP, TITLE_GAP,
@@ -102,7 +103,10 @@ mod sizes;
 use sizes::{sizes, tick_labels, Sizes, OVERVIEW_GUTTER, OVERVIEW_LEAST};
 #[path = "draw_labels.rs"]
 mod labels;
+#[path = "draw_maps.rs"]
+mod maps;
 pub(super) use labels::{choose_corners, right_corners, short_title, spread};
+use maps::{fine_maps, fine_stroke, side_dashes};
 
 /// A key item's stroke: colour, width, dash pattern (empty: solid).
 type Stroke = (RGBColor, u32, &'static [f64]);
@@ -113,6 +117,7 @@ type Stroke = (RGBColor, u32, &'static [f64]);
 fn key<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     maps: usize,
+    fine: bool,
     size: u32,
     draw: bool,
 ) -> Result<u32, Fail> {
@@ -127,7 +132,8 @@ fn key<DB: DrawingBackend>(
     let (gap, space) = (0.3 * f64::from(size), f64::from(size));
     let mut items: Vec<(Option<Stroke>, String)> = vec![(None, "Maps, nearest first:".into())];
     for i in 0..maps {
-        items.push((Some(map_stroke(i)), format!("{}", i + 1)));
+        let stroke = if fine { fine_stroke(i) } else { map_stroke(i) };
+        items.push((Some(stroke), format!("{}", i + 1)));
     }
     items.push((Some((BLACK, FRUSTUM_WIDTH, &[])), "frustum".into()));
     items.push((Some((BLACK, PLANE_WIDTH, &[])), "split plane".into()));
@@ -162,10 +168,31 @@ fn key<DB: DrawingBackend>(
                 let line = [(tx, y), (tx + sample, y)];
                 let pieces = if pattern.is_empty() {
                     vec![line.to_vec()]
+                } else if fine {
+                    // A fine map's sample as its outline's sides: whole periods, ending on a
+                    // dash.
+                    side_dashes(sample, pattern, 1.0)
+                        .into_iter()
+                        .map(|(a, b)| vec![(tx + a, y), (tx + b, y)])
+                        .collect()
                 } else {
                     dash_pattern(&line, pattern, 1.0)
                 };
+                let (bx, by) = area.get_base_pixel();
                 for piece in pieces {
+                    if fine {
+                        // At a tenth of a unit, as in the panels: dashes of 1.2 units rounded
+                        // to whole ones were 1 or 2 long.
+                        area.draw(&Fine {
+                            points: piece
+                                .iter()
+                                .map(|p| (p.0 + f64::from(bx), p.1 + f64::from(by)))
+                                .collect(),
+                            colour: colour.to_backend_color(),
+                            stroke: Some(*width),
+                        })?;
+                        continue;
+                    }
                     let pts: Vec<(i32, i32)> = piece
                         .iter()
                         .map(|p| (p.0.round() as i32, p.1.round() as i32))
@@ -208,10 +235,11 @@ impl Figure for FromLight {
         let body = frame(root, title, &[caption.as_str()])?;
         let sz = sizes(single, self.panels.len());
         let maps = self.panels.iter().map(|p| p.maps.len()).max().unwrap_or(0);
-        let key_h = key(&body, maps, sz.key, false)?;
+        let fine = self.panels.iter().any(|p| p.fine);
+        let key_h = key(&body, maps, fine, sz.key, false)?;
         let (_, bh) = body.dim_in_pixel();
         let (body, strip) = body.split_vertically(bh - key_h);
-        key(&strip, maps, sz.key, true)?;
+        key(&strip, maps, fine, sz.key, true)?;
         let columns = self.panels.len().min(2);
         let rows = self.panels.len().div_ceil(columns);
         // The rows above the last have no x title: the last is taller by the title's room, so
@@ -416,8 +444,13 @@ fn fit<DB: DrawingBackend>(
     // Room for the maps' outlines, reaching [`MAP_REACH`] outside their rectangles:
     // the outermost map's lies outside the drawing (the 3 % margin is 1.4 units in a 46-unit
     // plot).
+    let reach = if p.fine {
+        0.5 * f64::from(fine_stroke(1).1)
+    } else {
+        MAP_REACH
+    };
     let grow = DVec2::splat(if p.window.is_none() {
-        (MAP_REACH + 0.5) * per_px
+        (reach + 0.5) * per_px
     } else {
         0.0
     });
@@ -625,7 +658,7 @@ fn draw_panel<DB: DrawingBackend>(
     // as the black lines, so that an outline and the line it lies on coincide.
     let mut order: Vec<usize> = (0..p.maps.len()).collect();
     order.sort_by_key(|&i| std::cmp::Reverse(map_stroke(i).1));
-    for i in order {
+    for i in order.into_iter().filter(|_| !p.fine) {
         let (a, b) = p.maps[i];
         let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
         let (colour, width, pattern) = map_stroke(i);
@@ -671,6 +704,11 @@ fn draw_panel<DB: DrawingBackend>(
         for piece in clip(&corners) {
             draw_fine_line(&chart, &piece, ENLARGED, 2, Dash::Solid)?;
         }
+    }
+    // Fine maps over the lines and the grey box (R9-barroso-fig5-1: (a)'s box, (b)'s limits,
+    // lies within a unit of map 3's outline, which drawn under it did not show).
+    if p.fine {
+        fine_maps(&chart, p, bounds, per_unit)?;
     }
     // Each leader's anchor, a dot on its corner.
     for &q in &anchors {

@@ -1,0 +1,248 @@
+//! The maps' outlines drawn fine (barroso-fig5; the ninth review, R9-barroso-fig5-1: in the
+//! overview (a) map 3's outline, about 35 × 20 units, was drawn 5 units wide with a dash-dot of
+//! 20 units, longer than its sides, and printed as scattered purple blobs). A fine outline is
+//! at most 2 units wide (2 pt in two columns, 1.6 pt in one) and dashed along each side with
+//! its map's pattern fitted to the side: a whole number of periods, at least
+//! [`LEAST_PERIODS`], so that a period is at most a quarter of the side, the side starting and
+//! ending on a dash (so that the corners are drawn); a side too short for that is solid.
+//! lloyd2006-fig11 keeps the wide outlines of [`super::map_stroke`].
+
+use super::super::super::chart::{draw_fine_line, Chart2d, Dash, SWEEP};
+use super::super::super::Fail;
+use super::super::Panel;
+use glam::DVec2;
+use plotters::prelude::*;
+
+/// Each fine map's dash pattern (lengths on, off, … in units, nearest map first): short
+/// dashes, square dots (2 × 2 at map 2's width), dash-dot, long dashes, the kinds of the wide
+/// outlines' [`super::PATTERNS`] at about a third of their length.
+const FINE_PATTERNS: [&[f64]; 4] = [&[3.0, 1.2], &[2.0, 1.2], &[4.8, 1.2, 1.2, 1.2], &[6.0, 1.6]];
+
+/// The odd maps' (1, 3) fine outlines: narrow, in their dark sweep step; the even maps' (2, 4):
+/// twice as wide in their own step, lighter than the odd maps' before them (the wide outlines'
+/// light bands, half tints of 2.7 : 1 and 1.9 : 1 on white, would fall under the 3 : 1 of a
+/// line at this width). Where two maps share an edge (a light overhead), the narrow one is
+/// drawn over the wide one, which shows half a unit on either side of it.
+const FINE_NARROW: u32 = 1;
+const FINE_WIDE: u32 = 2;
+
+/// The least number of whole periods a side is dashed with: fewer, and it is solid.
+pub(super) const LEAST_PERIODS: f64 = 4.0;
+
+/// Map `i`'s fine outline (0: the nearest): its colour, stroke width and dash pattern.
+pub(super) fn fine_stroke(i: usize) -> (RGBColor, u32, &'static [f64]) {
+    let width = if i.is_multiple_of(2) {
+        FINE_NARROW
+    } else {
+        FINE_WIDE
+    };
+    (
+        SWEEP[i.min(3)],
+        width,
+        FINE_PATTERNS[i % FINE_PATTERNS.len()],
+    )
+}
+
+/// The dashes along a side `len` units long: intervals (from, to) along it, the first from 0
+/// and the last to `len`, the pattern stretched or shrunk to a whole number `k` of periods and
+/// a last dash, `k` ≥ `least`; the whole side where fewer fit (or the pattern is empty).
+pub(super) fn side_dashes(len: f64, pattern: &[f64], least: f64) -> Vec<(f64, f64)> {
+    let period: f64 = pattern.iter().sum();
+    let first = pattern.first().copied().unwrap_or(0.0);
+    if pattern.len() < 2 || period <= 0.0 || len <= 0.0 {
+        return vec![(0.0, len.max(0.0))];
+    }
+    let k = ((len - first) / period).round();
+    if k < least.max(1.0) {
+        return vec![(0.0, len)];
+    }
+    let scale = len / (k * period + first);
+    let mut out = Vec::new();
+    let mut s = 0.0;
+    for _ in 0..k as usize {
+        for pair in pattern.chunks(2) {
+            out.push((s, s + scale * pair[0]));
+            s += scale * pair.iter().sum::<f64>();
+        }
+    }
+    out.push((s, len));
+    out
+}
+
+/// The pieces of a rectangle's outline (corners in order, in units, `draw[i]` whether the side
+/// from corner i to corner i + 1 is drawn: a side outside the panel is not), each side dashed
+/// by [`side_dashes`]; the dashes that meet at a corner are one piece through it, so that the
+/// corner is joined. An outline solid all round is one closed line starting and ending halfway
+/// along its first side (a line closed at a corner meets itself in two square ends).
+pub(super) fn outline_pieces(
+    corners: [(f64, f64); 4],
+    draw: [bool; 4],
+    pattern: &[f64],
+    least: f64,
+) -> Vec<Vec<(f64, f64)>> {
+    let at = |i: usize| corners[i % 4];
+    let side = |i: usize| {
+        let (a, b) = (at(i), at(i + 1));
+        (b.0 - a.0).hypot(b.1 - a.1)
+    };
+    let total: f64 = (0..4).map(side).sum();
+    let start: Vec<f64> = (0..4)
+        .scan(0.0, |s, i| {
+            let v = *s;
+            *s += side(i);
+            Some(v)
+        })
+        .collect();
+    // The dashes as intervals of the distance along the outline from corner 0, joined where
+    // one ends where the next begins (at a corner).
+    let mut runs: Vec<(f64, f64)> = Vec::new();
+    for i in (0..4).filter(|&i| draw[i] && side(i) > 0.0) {
+        for (a, b) in side_dashes(side(i), pattern, least) {
+            let (a, b) = (start[i] + a, start[i] + b);
+            match runs.last_mut() {
+                Some(last) if (last.1 - a).abs() <= 1e-9 * total => last.1 = b,
+                _ => runs.push((a, b)),
+            }
+        }
+    }
+    if runs.len() > 1 {
+        let (first, last) = (runs[0], runs[runs.len() - 1]);
+        if first.0.abs() <= 1e-9 * total && (last.1 - total).abs() <= 1e-9 * total {
+            runs.pop();
+            runs[0] = (last.0 - total, first.1);
+        }
+    }
+    // The point at distance s along the outline (s may run past 0 or the total).
+    let point = |s: f64| {
+        let s = s.rem_euclid(total);
+        let i = (0..4).rev().find(|&i| start[i] <= s).unwrap_or(0);
+        let (a, b) = (at(i), at(i + 1));
+        let t = if side(i) > 0.0 {
+            (s - start[i]) / side(i)
+        } else {
+            0.0
+        };
+        (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
+    };
+    let whole = runs.len() == 1 && runs[0].1 - runs[0].0 >= total * (1.0 - 1e-9);
+    if whole {
+        let mid = 0.5 * side(0);
+        let mut pts = vec![point(mid)];
+        pts.extend((1..4).map(at));
+        pts.push(at(0));
+        pts.push(point(mid));
+        return vec![pts];
+    }
+    runs.iter()
+        .map(|&(a, b)| {
+            let mut pts = vec![point(a)];
+            // The corners strictly inside the run, the outline's and its next lap's.
+            for c in (0..12).map(|k| start[k % 4] + total * ((k / 4) as f64 - 1.0)) {
+                if c > a + 1e-9 * total && c < b - 1e-9 * total {
+                    pts.push(point(c));
+                }
+            }
+            pts.push(point(b));
+            pts
+        })
+        .collect()
+}
+
+/// Panel `p`'s maps drawn fine ([`fine_stroke`]) over the frustum's lines, the wide ones first,
+/// each clipped to the plot (`bounds`: x and y ranges; a side outside it is not drawn) and
+/// each drawn side dashed with whole periods of at most a quarter of its length on the page
+/// ([`outline_pieces`]), `per_unit` page units a data unit. Over the lines: a fine outline is
+/// no wider than the frustum's edges, and under them it would not show where it lies on one.
+pub(super) fn fine_maps<DB: DrawingBackend>(
+    chart: &Chart2d<'_, DB>,
+    p: &Panel,
+    (x0, x1, y0, y1): (f64, f64, f64, f64),
+    per_unit: f64,
+) -> Result<(), Fail> {
+    let mut order: Vec<usize> = (0..p.maps.len()).collect();
+    order.sort_by_key(|&i| std::cmp::Reverse(fine_stroke(i).1));
+    for i in order {
+        let (a, b) = p.maps[i];
+        let (lo, hi) = (a.max(DVec2::new(x0, y0)), b.min(DVec2::new(x1, y1)));
+        if lo.x > hi.x || lo.y > hi.y {
+            continue;
+        }
+        // Bottom, right, top, left: each drawn where the map's own side is inside the plot.
+        let draw = [a.y >= y0, b.x <= x1, b.y <= y1, a.x >= x0];
+        let page = |q: DVec2| (q.x * per_unit, q.y * per_unit);
+        let corners = [
+            page(lo),
+            page(DVec2::new(hi.x, lo.y)),
+            page(hi),
+            page(DVec2::new(lo.x, hi.y)),
+        ];
+        let (colour, width, pattern) = fine_stroke(i);
+        for piece in outline_pieces(corners, draw, pattern, LEAST_PERIODS) {
+            let data: Vec<(f64, f64)> = piece
+                .iter()
+                .map(|&(x, y)| (x / per_unit, y / per_unit))
+                .collect();
+            draw_fine_line(chart, &data, colour, width, Dash::Solid)?;
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A side of 40 units with the pattern (3, 1.2): k = round((40 − 3)/4.2) = round(8.81) = 9
+    /// periods and a last dash, stretched by 40/(9·4.2 + 3) = 0.98039 (by hand): ten dashes,
+    /// the first from 0, the last to 40, starts 4.1176 apart; a side of 15 units (k =
+    /// round(2.86) = 3 < 4) is solid.
+    #[test]
+    fn a_side_holds_whole_periods_or_is_solid() {
+        let d = side_dashes(40.0, &[3.0, 1.2], 4.0);
+        assert_eq!(d.len(), 10);
+        assert_eq!(d[0].0, 0.0);
+        assert!((d[9].1 - 40.0).abs() < 1e-12);
+        assert!((d[1].0 - d[0].0 - 4.1176).abs() < 1e-4, "{d:?}");
+        assert!((d[0].1 - 2.9412).abs() < 1e-4, "{d:?}");
+        assert_eq!(side_dashes(15.0, &[3.0, 1.2], 4.0), vec![(0.0, 15.0)]);
+    }
+
+    /// A 10 × 4 rectangle, solid all round: one closed line from the middle of its first side,
+    /// (5, 0), round the corners (10, 0), (10, 4), (0, 4), (0, 0) and back.
+    #[test]
+    fn a_solid_outline_is_closed_mid_side() {
+        let c = [(0.0, 0.0), (10.0, 0.0), (10.0, 4.0), (0.0, 4.0)];
+        let p = outline_pieces(c, [true; 4], &[3.0, 1.2], 4.0);
+        assert_eq!(
+            p,
+            vec![vec![
+                (5.0, 0.0),
+                (10.0, 0.0),
+                (10.0, 4.0),
+                (0.0, 4.0),
+                (0.0, 0.0),
+                (5.0, 0.0)
+            ]]
+        );
+    }
+
+    /// A 40 × 10 rectangle: its long sides dashed (ten dashes each), its short ones solid; the
+    /// solid sides and the dashes at their ends are one piece through the corner, so that the
+    /// pieces are 2 × 8 inner dashes and 2 corner pieces, 18 in all; without the bottom side
+    /// drawn, the pieces at its ends stop at the corners.
+    #[test]
+    fn dashes_join_at_the_corners() {
+        let c = [(0.0, 0.0), (40.0, 0.0), (40.0, 10.0), (0.0, 10.0)];
+        let p = outline_pieces(c, [true; 4], &[3.0, 1.2], 4.0);
+        assert_eq!(p.len(), 18, "{p:?}");
+        let right = p
+            .iter()
+            .find(|q| q.contains(&(40.0, 0.0)))
+            .expect("a piece round the corner (40, 0)");
+        assert!(right.contains(&(40.0, 10.0)), "{right:?}");
+        let p = outline_pieces(c, [false, true, true, true], &[3.0, 1.2], 4.0);
+        assert_eq!(p.len(), 10, "{p:?}");
+        assert!(p.iter().any(|q| q[0] == (40.0, 0.0)));
+        assert!(p.iter().any(|q| q[q.len() - 1] == (0.0, 0.0)));
+    }
+}
