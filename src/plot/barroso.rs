@@ -108,7 +108,9 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let n_axis = "n′ (log scale)";
     let mut c = LineChart::new(
         "(a) γ from 0° to 90°",
-        Axis::linear(gamma, 0.0, 90.0),
+        // Ticks every 15° to 90° (the ninth review, R9-barroso-fig7-3: 0, 20 … 80 left 90°,
+        // the axis' end and the light overhead, unlabelled; 30° is θ).
+        Axis::every(gamma, 0.0, 90.0, 0.0, 15.0),
         Axis::log10(n_axis, 1.0, 1e4),
     );
     // The paper's curve, bold.
@@ -546,6 +548,10 @@ mod tests {
         let at = |k: usize, g: f64| b.series[k].points.iter().find(|p| p.0 == g).unwrap().1;
         assert!((at(2, 25.0) - 26.028).abs() < 1e-3, "{}", at(2, 25.0));
         assert!(at(2, 25.0) > 3.0 * at(1, 25.0), "{}", at(1, 25.0));
+        // (a)'s γ axis is labelled at its end, 90° (overhead), and at θ = 30° (the ninth
+        // review, R9-barroso-fig7-3: 0, 20 … 80 left 90° unlabelled).
+        let labels: Vec<String> = a.x.ticks().0.iter().map(|&t| a.x.tick_label(t)).collect();
+        assert_eq!(labels, ["0", "15", "30", "45", "60", "75", "90"]);
     }
 
     /// R7-B7-1, read from the SVG in both layouts: (b)'s θ = 30° and γ_lim = 30.5° lines, two
