@@ -151,7 +151,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
          horizontal aliasing (×2: span [−1,\u{a0}1]); m: Lloyd 2006's, facing the light. \
          LiSPSM's \
          n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
-         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: a colour scale \
+         80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: a colour scale \
          each, no scene insets.",
         angles.join(", "),
         lispsm.join(", "),
@@ -163,7 +163,7 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
          θ\u{a0}=\u{a0}{phi:.0}°, light γ\u{a0}=\u{a0}{} from the \
          view; vertical scale halved; m: Lloyd 2006's, facing the light. TSM: \
-         80\u{a0}% rule, δ\u{a0}=\u{a0}{TSM_FOCUS}; LiSPSM: \
+         80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}{TSM_FOCUS}; LiSPSM: \
          n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ.",
         angles.join(", "),
     );

@@ -161,7 +161,7 @@ fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
         "θ\u{a0}=\u{a0}30°, light",
         "γ\u{a0}=\u{a0}90°, 60°, 30° from the view;",
         "LiSPSM: n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ",
-        "TSM: 80\u{a0}% rule, δ\u{a0}=\u{a0}10",
+        "TSM: 80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}10",
     ] {
         assert!(
             fig.single_caption.contains(want),
@@ -179,6 +179,8 @@ fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
             assert!(c.contains("span [−1,\u{a0}1]"), "{c}");
         }
         assert!(!c.contains("π/6"), "{c}");
+        // δ is named (the ninth review, R9-zhang-fig3-1: Martin & Tan's focus depth, undefined).
+        assert!(c.contains("focus depth δ\u{a0}=\u{a0}10"), "{c}");
         assert_eq!(
             c.matches('θ').count(),
             1 + c.matches("Zhang's θ").count(),
