@@ -10,10 +10,13 @@ use crate::analytic::partition::{scheme_storage_factor, shadow_map_count, Scheme
 use crate::ViewFrustum;
 
 /// Where Fig 12 (b)'s note on the 17-map pair starts: its left end (maps) and its top (S̄), in
-/// the empty upper right above both curves (ZP's rises to 41.9 at 23 maps), right of
-/// FP+ZP+W's 13-map marker (55.0); and the step between its lines, in S̄.
-const FIG12_NOTE_LEFT: f64 = 15.0;
-const FIG12_NOTE_TOP: f64 = 57.0;
+/// the empty band between S̄ = 50 and ZP's curve (which rises to 41.9 at 23 maps), under
+/// FP+ZP+W's 13-map marker (55.0) and right of it: level with the marker and two maps right of
+/// it, the marker read as the note's key symbol (the ninth review, R9-lloyd2006-fig12-1; the
+/// lower left put its last line beside the 21-map marker instead); and the step between its
+/// lines, in S̄.
+const FIG12_NOTE_LEFT: f64 = 15.3;
+const FIG12_NOTE_TOP: f64 = 49.6;
 const FIG12_NOTE_STEP: f64 = 2.2;
 
 /// The depth ratio f/n of Fig 12.

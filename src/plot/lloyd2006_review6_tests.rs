@@ -73,12 +73,14 @@ fn fig12_colour_is_the_scheme_fill_is_the_light() {
     }
 }
 
-/// Fig 12 (b)'s note (R6-lloyd2006-fig12-3): off the curves and gridlines' crowd, above every
-/// point of (b) (by hand the highest, FP+ZP+W at 13 maps, 8(1000^{1/3} − 1) + 1 = 55.0, is
-/// left of it): in the bare SVG the note's three lines lie above the text "50" of the y axis
-/// (S̄ 50) and right of the 13-map marker, each value in its scheme's colour.
+/// Fig 12 (b)'s note (R6-lloyd2006-fig12-3): off the curves and gridlines' crowd, in the empty
+/// band between S̄ = 50 and the points below (by hand the highest of them, ZP at 23 maps,
+/// 23 · 1000^{2/23} = 41.9) and right of and below FP+ZP+W's 13-map marker (8(1000^{1/3} − 1)
+/// + 1 = 55.0), which beside the note read as its key symbol (the ninth review,
+/// R9-lloyd2006-fig12-1): in the bare SVG the note's three lines lie between the y axis' texts
+/// "50" and "40" and start right of "14", each value in its scheme's colour.
 #[test]
-fn fig12_note_in_the_empty_upper_right() {
+fn fig12_note_in_the_empty_band() {
     let (fp, zp) = (
         8.0 * (1000f64.powf(0.25) - 1.0) + 1.0,
         17.0 * 1000f64.powf(2.0 / 17.0),
@@ -90,22 +92,31 @@ fn fig12_note_in_the_empty_upper_right() {
             .find(|x| x.1 == label)
             .unwrap_or_else(|| panic!("no {label:?}"))
     };
-    let fifty = t
-        .iter()
-        .filter(|x| x.1 == "50")
-        .map(|x| x.2)
-        .next()
-        .unwrap();
+    let tick = |label: &str| {
+        t.iter()
+            .filter(|x| x.1 == label)
+            .map(|x| x.2)
+            .next()
+            .unwrap()
+    };
+    let (fifty, forty) = (tick("50"), tick("40"));
     for (label, colour) in [
         (format!("FP+ZP+W {fp:.2}"), Look::FpZpW.colour()),
         (format!("ZP = ZP+W {zp:.2}"), Look::Zp.colour()),
     ] {
         let (tag, _, y) = find(&label);
-        assert!(*y < fifty, "{label} at {y}, below S̄ = 50 ({fifty})");
+        assert!(
+            fifty < *y && *y < forty,
+            "{label} at {y}, not between S̄ = 50 ({fifty}) and 40 ({forty})"
+        );
+        let x = |t: &str| crate::plot::chart::read_svg::attr(t, "x").unwrap();
+        assert!(tag.contains("text-anchor=\"start\""), "{tag}");
+        assert!(x(tag) > x(find("14").0), "{label} at {}", x(tag));
         let ink = super::super::chart::legible(colour);
         assert!(tag.contains(&hex(ink)), "{label}: {tag}");
     }
-    assert!(find("at 17 maps:").2 < fifty);
+    let at = find("at 17 maps:").2;
+    assert!(fifty < at && at < forty, "{at}");
 }
 
 /// Fig 13's caption (R6-lloyd2006-fig13-2): the telegraphic "Any θ: Eq 20 has none" written
