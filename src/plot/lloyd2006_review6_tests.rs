@@ -75,8 +75,8 @@ fn fig12_colour_is_the_scheme_fill_is_the_light() {
 
 /// Fig 12 (b)'s note (R6-lloyd2006-fig12-3): off the curves and gridlines' crowd, in the empty
 /// band between S̄ = 50 and the points below (by hand the highest of them, ZP at 23 maps,
-/// 23 · 1000^{2/23} = 41.9) and right of and below FP+ZP+W's 13-map marker (8(1000^{1/3} − 1)
-/// + 1 = 55.0), which beside the note read as its key symbol (the ninth review,
+/// 23 · 1000^{2/23} = 41.9) and right of and below FP+ZP+W's 13-map marker
+/// (8(1000^{1/3} − 1) + 1 = 55.0), which beside the note read as its key symbol (the ninth review,
 /// R9-lloyd2006-fig12-1): in the bare SVG the note's three lines lie between the y axis' texts
 /// "50" and "40" and start right of "14", each value in its scheme's colour.
 #[test]
