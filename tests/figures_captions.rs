@@ -635,6 +635,15 @@ fn lloyd2006_fig7() {
                 ),
             ),
             (
+                "45",
+                N::Given("the turn of the map's side, along the square's diagonal"),
+            ),
+            ("10^{6}", N::Value(1000.0 * 1000.0)),
+            (
+                "1.5×10^{6}",
+                N::Given("the other contour's level, round (a)'s peak"),
+            ),
+            (
                 "4.3",
                 N::Measured(
                     "(b) over (a) near behind, at least 10^(6.63 − 6.01) by the sixth review's \

@@ -2,8 +2,8 @@
 //! the crate's measurement of each scheme's own matrices ([`crate::scheme::sweep::sweep`]).
 
 use super::chart::{
-    column, decades, draw_colour_bar, draw_colour_bar_across, draw_hemisphere_keyed, fmt_times_ten,
-    frame, Axis, ColourScale, PolarGrid,
+    column, decades, draw_colour_bar, draw_colour_bar_across, draw_hemisphere_keyed, fmt_power,
+    fmt_times_ten, frame, Axis, ColourScale, PolarGrid,
 };
 use super::{Column, Fail, Figure};
 use crate::maps::WarpRule;
@@ -167,9 +167,11 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     // a valley a few degrees wide, and there they meet in one black line (the eighth review,
     // R8-lloyd2006-fig7-3): the caption says so.
     let band = format!(
-        "(a) peaks at {} off behind, its map's side along the view lying diagonal; both \
-         contours follow the behind–front line.",
+        "(a) peaks at {} just off behind, with its map turned 45° to the frustum; its contours \
+         {} and {} run along the behind–front line.",
         fmt_times_ten(panels[0].max),
+        fmt_power(A_CONTOURS[0]),
+        fmt_power(A_CONTOURS[1]),
     );
     // Near behind LiSPSM needs more than no warping (the sixth review, R6-lloyd2006-fig7-6):
     // the n′ rule used does not revert to an orthogonal map for γ < θ, as Lloyd 2006 §4.4
@@ -179,9 +181,9 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let caption = vec![format!(
         "Lloyd et al. 2006, Fig. 7: S̄ (texels per image pixel), azimuthal \
          equidistant (top: viewer's left); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         θ\u{a0}=\u{a0}{theta:.0}°. (c) LiSPSM per visible face (§5.1), S̄ summed; \
-         (d), (e) not in the paper, (e)\u{a0}=\u{a0}(b)\u{a0}÷\u{a0}(c). {band} Near behind (b) \
-         is up to {worse:.1}× (a): its n′ does not revert (§4.4).",
+         θ\u{a0}=\u{a0}{theta:.0}°. (c) LiSPSM per face (§5.1), S̄ summed; \
+         (d) and (e), (b)\u{a0}÷\u{a0}(c), not in the paper. {band} Near behind (b) \
+         is up to {worse:.1}× (a): n′ does not revert (§4.4).",
         theta = view.half_fov().to_degrees(),
     )];
     // One column: four lines, so that the disks keep the size at which (a)'s ring key covers
@@ -624,16 +626,16 @@ mod tests {
         // review, R7-2006f7-1: "the orientation rule's (the worst-case figure)"), and the two
         // contours' meeting along the behind–front line (the eighth, R8-lloyd2006-fig7-3).
         let want = format!(
-            "(a) peaks at {} off behind, its map's side along the view lying diagonal; both \
-             contours follow the behind–front line.",
+            "(a) peaks at {} just off behind, with its map turned 45° to the frustum; its \
+             contours 10⁶ and 1.5×10⁶ run along the behind–front line.",
             fmt_times_ten(peak),
         );
         assert!(text.contains(&want), "{want:?} in {text}");
         assert!(!text.contains("orientation rule"), "{text}");
         // The panels the paper does not have, defined (R9-lloyd2006-fig7-1).
         for clause in [
-            "(c) LiSPSM per visible face (§5.1), S̄ summed",
-            "(d), (e) not in the paper, (e)\u{a0}=\u{a0}(b)\u{a0}÷\u{a0}(c)",
+            "(c) LiSPSM per face (§5.1), S̄ summed",
+            "(d) and (e), (b)\u{a0}÷\u{a0}(c), not in the paper",
         ] {
             assert!(text.contains(clause), "{clause:?} in {text}");
         }
