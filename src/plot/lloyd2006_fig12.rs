@@ -168,14 +168,17 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
                 (Scheme::FpZpW, Overhead),
             ]
         }
+        // One column: one entry a row, each naming its light (the tenth review,
+        // R10-lloyd2006-fig12-1: the scheme alone gave two "FP+ZP+W" and a "ZP = ZP+W" that is
+        // false overhead), overhead's three over behind's two.
         Column::Single => {
-            c.legend_columns = Some(2);
+            c.legend_columns = Some(1);
             [
                 (Scheme::Zp, Overhead),
-                (Scheme::Zp, Behind),
                 (Scheme::ZpW, Overhead),
-                (Scheme::FpZpW, Behind),
                 (Scheme::FpZpW, Overhead),
+                (Scheme::Zp, Behind),
+                (Scheme::FpZpW, Behind),
             ]
         }
     };
@@ -185,15 +188,10 @@ fn fig12_panels(view: &ViewFrustum, layout: Column) -> Result<(LineChart, LineCh
             .find(|s| s.0 == scheme)
             .ok_or_else(|| Fail::Draw(format!("Fig 12 has no {scheme:?}")))?;
         let behind = light == Behind;
-        // One column: the scheme alone, the title saying which light each drawing is (the key
-        // in two columns, overhead | behind, as across the page), so that the plot keeps the
-        // height its axis name needs.
-        let label = match (scheme, light, layout) {
-            (Scheme::Zp, Behind, Column::Double) => ZP_BEHIND.to_string(),
-            (Scheme::Zp, Behind, Column::Single) => "ZP = ZP+W".to_string(),
-            (_, _, Column::Single) => name.to_string(),
-            (_, Behind, _) => format!("{name}, behind"),
-            (_, Overhead, _) => format!("{name}, overhead"),
+        let label = match (scheme, light) {
+            (Scheme::Zp, Behind) => ZP_BEHIND.to_string(),
+            (_, Behind) => format!("{name}, behind"),
+            (_, Overhead) => format!("{name}, overhead"),
         };
         let mut pts = Vec::new();
         for k in 1..=40usize {

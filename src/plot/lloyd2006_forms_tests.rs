@@ -218,9 +218,14 @@ fn fig12_titles_claim_only_what_is_drawn() {
         ),
     ] {
         assert_eq!(c.title, title);
-        // One column's key names the schemes alone (its title the lights).
-        if std::ptr::eq(c, single) {
-            continue;
+        // Every key entry names its light, in both forms, and no two entries read alike (the
+        // tenth review, R10-lloyd2006-fig12-1: one column's key gave the scheme alone, two
+        // "FP+ZP+W" and a "ZP = ZP+W" that is false overhead).
+        let labels: Vec<&str> = c.series.iter().filter_map(|s| s.label.as_deref()).collect();
+        assert_eq!(labels.len(), 5, "{labels:?}");
+        for (i, l) in labels.iter().enumerate() {
+            assert!(l.ends_with(", overhead") || l.ends_with(", behind"), "{l}");
+            assert!(!labels[..i].contains(l), "{l} twice");
         }
         for (light, dash, open) in [
             ("overhead", Dash::Solid, false),
