@@ -527,6 +527,8 @@ fn barroso_fig7() {
             ("17", N::Given("Zhang's, Eq 17")),
             ("1", N::Given("n′₁ above γ_lim")),
             ("18", N::Given("is Eq 18's curve")),
+            ("1", N::Given("n′₁, least max m_z along the view axis")),
+            ("12", N::Given("Barroso's Eq 12, m_z along the view axis")),
             ("20", N::Given("(b) from γ = 20°")),
             ("45", N::Given("to 45°")),
         ],

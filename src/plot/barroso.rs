@@ -160,10 +160,11 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
             "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
              θ\u{a0}=\u{a0}{phi_deg:.0}°. n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for \
              γ\u{a0}≥\u{a0}θ and γ\u{a0}<\u{a0}θ; below γ_{{lim}} (Eq\u{a0}15) \
-             n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r the paper's fall-off (Eq\u{a0}18, bold) \
+             n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r the paper's (Eq\u{a0}18, bold) \
              or Zhang et al.'s (Eq\u{a0}17); n′_{{1}} is Eq\u{a0}18's curve above γ_{{lim}}. \
-             For comparison LiSPSM's rule and the n′ of least max m_z over the frustum. (b) \
-             enlarges γ from {}° to {}°: that n′ turns near γ\u{a0}=\u{a0}θ.",
+             Also LiSPSM's rule and the n′ of least max m_z over the whole frustum, not only \
+             along the view axis as n′_{{1}} (Eq\u{a0}12). (b) enlarges γ from {}° to {}°: \
+             that n′ turns near γ\u{a0}=\u{a0}θ.",
             WINDOW.0, WINDOW.1
         )],
         charts: vec![c, zoom],
@@ -176,9 +177,9 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
          θ\u{a0}=\u{a0}{phi_deg:.0}°; (b), γ {}°–{}° enlarged, left out. \
-         n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for γ\u{a0}≥\u{a0}θ and γ\u{a0}<\u{a0}θ; below \
-         γ_{{lim}} (Eq\u{a0}15) n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r the paper's \
-         (Eq\u{a0}18, bold) or Zhang's (Eq\u{a0}17).",
+         n′_{{1}}, n′_{{2}}: Eq\u{a0}13 for γ\u{a0}≥\u{a0}θ, γ\u{a0}<\u{a0}θ; below \
+         γ_{{lim}} (Eq\u{a0}15) n′_{{1}}(γ_{{lim}})/r(γ), r by Eq\u{a0}18 (bold) or Zhang's \
+         Eq\u{a0}17. Least max m_z: over all the frustum.",
         WINDOW.0, WINDOW.1
     );
     Ok(Fig7 {
@@ -290,6 +291,48 @@ mod tests {
             assert!((v - 11.0).abs() < 1e-6, "{v}");
         }
         assert!(s[0].points[0].0 > 0.0 && s[1].points[0].0 > 0.0);
+    }
+
+    /// The n′ of least max m_z is defined in both captions as taken over the whole frustum
+    /// (the tenth review, R10-barroso-fig7-1: "over the frustum" left it undefined, and as
+    /// drawn it lies above Eq 13's n′₁, which minimises m_z along the view axis only); and
+    /// so it does: above γ_lim it is at least n′₁ everywhere, 1.5 × at 45° (the review read
+    /// 11.4 against 7.37 off the SVG).
+    #[test]
+    fn least_max_m_z_is_over_the_whole_frustum_and_lies_above_n1() {
+        let fig = fig7().map_err(|e| e.named("barroso-fig7")).unwrap();
+        assert!(
+            fig.charts.caption[0].contains("over the whole frustum, not only along the view axis"),
+            "{}",
+            fig.charts.caption[0]
+        );
+        assert!(
+            fig.single_caption
+                .contains("Least max m_z: over all the frustum"),
+            "{}",
+            fig.single_caption
+        );
+        let s = &fig.charts.charts[0].series;
+        let (least, n1) = (&s[3], &s[4]);
+        assert_eq!(least.label.as_deref(), Some(LABELS[3]));
+        assert_eq!(n1.label.as_deref(), Some(LABELS[4]));
+        let at = |c: &Series, g: f64| {
+            c.points
+                .iter()
+                .find(|p| (p.0 - g).abs() < 1e-9)
+                .map(|p| p.1)
+        };
+        let mut compared = 0;
+        // n′₁'s drawn points (its gaps, γ < θ, are NaN).
+        for p in n1.points.iter().filter(|p| p.1.is_finite()) {
+            if let Some(v) = at(least, p.0) {
+                assert!(v >= p.1 - 1e-6, "γ = {}: {v} under n′₁ = {}", p.0, p.1);
+                compared += 1;
+            }
+        }
+        assert!(compared >= 10, "{compared} angles compared");
+        let (l45, n45) = (at(least, 45.0).unwrap(), at(n1, 45.0).unwrap());
+        assert!(l45 > 1.4 * n45, "{l45} against {n45}");
     }
 
     /// Eq 13's branches are drawn only on their domains: n′₁ for θ = 30° ≤ γ, n′₂ for γ < 30°
