@@ -28,8 +28,13 @@ fn fmt_signed(v: f64) -> String {
 /// ran to the frame) and reads as its curve's by the far plane, where the five are apart.
 const FIG4_LABEL_AT: usize = 193;
 
-/// Where Fig 4's ξ = 0 curve asks its label to end: z = 8.87.
-const FIG4_XI_0_LABEL_AT: usize = 175;
+/// Where Fig 4's ξ = 0 curve asks its label to end: z = 7.78. Asked at z = 8.87, the label
+/// went under the curve by the far plane, its left end under the ▲ at z ≈ 7.1, its text 1.3
+/// units from the marker's base (the tenth review, R10-lloyd2005-fig4-1: the prime of "n′"
+/// merged with it); asked here, it stands under the curve from z ≈ 6.2 to 9.4 in two columns
+/// (6.6 to 9.2 in one), the ▲ at z ≈ 7.1 over its middle, its text at least 3 units from every
+/// marker and curve in every form.
+const FIG4_XI_0_LABEL_AT: usize = 150;
 
 /// Where Fig 4's ξ = −½ curve asks its label to end in one column: z = 8.01.
 const FIG4_XI_HALF_LABEL_AT: usize = 155;
@@ -78,8 +83,8 @@ fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
         s.direct_at = Some(zs[FIG4_LABEL_AT]);
         // ξ = −½ a diamond, not the sweep's left triangle: the ξ = 0 and −1 curves carry ▲ and
         // ▼, and three turns of one triangle do not tell the curves apart in greyscale (X6).
-        // ξ = 0: under its curve by the far plane (the g₀ line's label is over it there), its
-        // end asked at z = 8.88 so that it ends inside the axis.
+        // ξ = 0: under its curve (the g₀ line's label is over it by the far plane), its end
+        // asked at z = 7.78, so that it keeps clear of the curve's markers.
         if i == 2 {
             s.direct_at = Some(zs[FIG4_XI_0_LABEL_AT]);
         }
