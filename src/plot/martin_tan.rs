@@ -125,6 +125,9 @@ pub(super) fn fig6() -> Result<Fig6, Fail> {
         Axis::every(X_NAME, -6.0, 186.0, 0.0, 45.0).folded_at(90.0),
         Axis::log10("share of the map (log scale)", floor, ceil).in_powers(),
     );
+    // Which 0 is which, in every form (the tenth review, R10-martin-tan-fig6-1: only the
+    // two-column caption said so): "behind" under the first 0, "in front" under the last.
+    profile.x_ends = Some([(0.0, "behind".into()), (180.0, "in front".into())]);
     // The figure's one key, under the profile, the only panel with lines.
     profile.legend_below = true;
     // The 80 % rule jumps back to the dueling-frusta value exactly behind and in front (0° and

@@ -2,7 +2,7 @@
 //! points outside an axis range on the border, so nothing is handed to it unclipped).
 
 use super::super::Fail;
-use super::axis::{build_chart_styled, Axis, ChartStyle};
+use super::axis::{build_chart_styled, Axis, ChartStyle, TICK};
 use super::fine::{
     clip_to_rect, draw_fine_line, fill_fine_points, fill_fine_polygon, stroke_fine_outline,
     to_backend,
@@ -150,6 +150,11 @@ pub(crate) struct LineChart {
     /// Markers cut at the plot's frame, so that none is drawn across it (one at the top of an
     /// axis range, such as a curve's marker just under n′ = 10⁴).
     pub clip_markers: bool,
+    /// Words written under two x values' tick labels, on a row of their own over the x axis'
+    /// name (the x label area grows by it), where the tick labels alone do not say which end
+    /// is which (martin-tan-fig6 (b) reads 0, 45, 90, 45, 0: "behind" under the first 0, "in
+    /// front" under the last).
+    pub x_ends: Option<[(f64, String); 2]>,
 }
 
 impl LineChart {
@@ -170,6 +175,7 @@ impl LineChart {
             x_label_area: None,
             margin: None,
             clip_markers: false,
+            x_ends: None,
         }
     }
 }
@@ -312,13 +318,26 @@ fn draw_chart<DB: DrawingBackend>(
     strip: Option<&DrawingArea<DB, Shift>>,
     below_width: f64,
 ) -> Result<Placed, Fail> {
+    let tick_font = TextStyle::from((FONT, ChartStyle::default().tick_size).into_font());
+    // The row of `x_ends`: their height less 2 units of the room the x label area leaves
+    // between the tick labels and the axis' name.
+    let ends_row = match &c.x_ends {
+        Some(_) => area
+            .estimate_text_size("0", &tick_font)?
+            .1
+            .saturating_sub(2),
+        None => 0,
+    };
     let style = ChartStyle {
         y_label_area: c.y_label_area.unwrap_or(ChartStyle::default().y_label_area),
-        x_label_area: c.x_label_area.unwrap_or(ChartStyle::default().x_label_area),
+        x_label_area: c.x_label_area.unwrap_or(ChartStyle::default().x_label_area) + ends_row,
         margin: c.margin.unwrap_or(ChartStyle::default().margin),
         ..ChartStyle::default()
     };
     let mut chart = build_chart_styled(area, &c.title, &c.x, &c.y, true, &style)?;
+    if let Some(ends) = &c.x_ends {
+        draw_x_ends(area, &chart, &c.x, ends, &tick_font)?;
+    }
     let (x0, x1) = c.x.range();
     let (y0, y1) = c.y.range();
     let bounds = (x0, x1, y0, y1);
@@ -509,6 +528,33 @@ fn draw_chart<DB: DrawingBackend>(
     } else {
         Ok(Placed::Inside)
     }
+}
+
+/// Writes `ends` (x values and their words) centred under the x values' tick labels (which
+/// stand [`TICK`] + 5 units under the plot, as tall as a "0"), 4 units under them.
+fn draw_x_ends<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    chart: &super::axis::Chart2d<'_, DB>,
+    x: &Axis,
+    ends: &[(f64, String); 2],
+    font: &TextStyle<'_>,
+) -> Result<(), Fail> {
+    let to = to_backend(chart);
+    let y_axis = chart.y_range().start;
+    let tick_h = area.estimate_text_size("0", font)?.1;
+    let (bx, by) = area.get_base_pixel();
+    let style = font.pos(Pos::new(HPos::Center, VPos::Top));
+    for (v, word) in ends {
+        let Some(a) = x.to_axis(*v) else { continue };
+        let (px, bottom) = to((a, y_axis));
+        let top = bottom.round() as i32 + TICK as i32 + 5 + tick_h as i32 + 4;
+        area.draw(&Text::new(
+            word.clone(),
+            (px.round() as i32 - bx, top - by),
+            style.clone(),
+        ))?;
+    }
+    Ok(())
 }
 
 /// The line colours, each at least 3 : 1 against white (WCAG's least for lines; sixth figure
