@@ -97,7 +97,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         ("(a) no warping", WarpRule::Uniform, Partition::Single),
         ("(b) LiSPSM", WarpRule::Lispsm, Partition::Single),
         ("(c) LiSPSM per face", WarpRule::Lispsm, Partition::Faces),
-        ("(d) S̄ at the best n′", WarpRule::Minimax, Partition::Single),
+        ("(d) least S̄ over n′", WarpRule::Minimax, Partition::Single),
     ];
     let mut panels = Vec::new();
     for (title, rule, partition) in schemes {
@@ -182,7 +182,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         "Lloyd et al. 2006, Fig. 7: S̄ (texels per image pixel), azimuthal \
          equidistant (top: viewer's left); n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
          θ\u{a0}=\u{a0}{theta:.0}°. (c) LiSPSM per face (§5.1), S̄ summed; \
-         (d) and (e), (b)\u{a0}÷\u{a0}(c), not in the paper. {band} Near behind (b) \
+         (e)\u{a0}=\u{a0}(b)\u{a0}÷\u{a0}(c); (d), (e) not in the paper. {band} Near behind (b) \
          is up to {worse:.1}× (a): n′ does not revert (§4.4).",
         theta = view.half_fov().to_degrees(),
     )];
@@ -635,7 +635,7 @@ mod tests {
         // The panels the paper does not have, defined (R9-lloyd2006-fig7-1).
         for clause in [
             "(c) LiSPSM per face (§5.1), S̄ summed",
-            "(d) and (e), (b)\u{a0}÷\u{a0}(c), not in the paper",
+            "(e)\u{a0}=\u{a0}(b)\u{a0}÷\u{a0}(c); (d), (e) not in the paper",
         ] {
             assert!(text.contains(clause), "{clause:?} in {text}");
         }
@@ -644,14 +644,15 @@ mod tests {
             "{}",
             fig.single_caption
         );
-        // (d)'s title names the quantity its colour shows (R9-lloyd2006-fig7-2: "n′ of least
-        // S̄" read as a map of n′).
+        // (d)'s title names the quantity its colour shows and how it is chosen
+        // (R9-lloyd2006-fig7-2: "n′ of least S̄" read as a map of n′; R11-lloyd2006-fig7-2: "S̄
+        // at the best n′" left "best" undefined).
         for column in [Column::Double, Column::Single] {
             let svg = svg_in(&fig, column);
             let all = texts(&svg);
             assert!(
                 all.iter()
-                    .any(|t| t.1.starts_with("(d) ") && t.1.ends_with(" at the best n′")),
+                    .any(|t| t.1.starts_with("(d) least ") && t.1.ends_with(" over n′")),
                 "{column:?}: no (d) title"
             );
         }

@@ -33,7 +33,8 @@ pub(super) fn fig5() -> Result<Keyed, Fail> {
         size: (520, 570),
         title: "Error distribution along the view frustum, light overhead".into(),
         caption: vec![format!(
-            "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), {}, {}: the terms that vary with z, m_x \
+            "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), {}, {}, image and shadow map of equal \
+             resolution: the terms that vary with z, m_x \
              over f and m_z over {}, as the paper plots them. m_x is largest at {}; m_z at \
              {} for {} (LiSPSM's) and at {} beyond.",
             nb(&format!("n = {n}")),
@@ -51,7 +52,8 @@ pub(super) fn fig5() -> Result<Keyed, Fail> {
         size: (Column::Single.width(), SINGLE_HEIGHT),
         title: "Error along the view frustum".into(),
         caption: vec![format!(
-            "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), light overhead, {}, {}: m_x over f, m_z \
+            "Lloyd et al. 2006, Fig. 5 (Eq 7, 8), light overhead, {}, {}, image and map of \
+             equal resolution: m_x over f, m_z \
              over {}. PSM has {}, LiSPSM {}.",
             nb(&format!("n = {n}")),
             nb(&format!("f = {f}")),

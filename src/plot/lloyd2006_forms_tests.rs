@@ -333,3 +333,22 @@ fn one_column_pages_fit_420_pt() {
     let (w, h) = fig13().ok().unwrap().single_size().unwrap();
     assert!(w == 300 && h <= 525, "fig13: {w} × {h}");
 }
+
+/// Fig 5's captions say that the image and the shadow map have equal resolution (the eleventh
+/// review, R11-lloyd2006-fig5-1): Eq 7, 8 carry res_i/res_s and res_i/res_t, which the plotted
+/// m_x/f and m_z·2 tan θ/(f − n) leave out, so without it the values are ambiguous.
+#[test]
+fn fig5_captions_state_equal_resolution() {
+    let fig = fig5().map_err(|e| e.named("lloyd2006-fig5")).unwrap();
+    let single = fig.single.as_ref().unwrap();
+    for (caption, want) in [
+        (
+            &fig.page.caption,
+            "image and shadow map of equal resolution",
+        ),
+        (&single.page.caption, "image and map of equal resolution"),
+    ] {
+        let text = caption.join(" ");
+        assert!(text.contains(want), "{want:?} in {text}");
+    }
+}
