@@ -793,16 +793,18 @@ fn zhang_fig3() {
             ("90", N::Given("the first row's γ")),
             ("60", N::Given("the second row's γ")),
             ("30", N::Given("the third row's γ")),
+            (
+                "2006",
+                N::Given("Lloyd et al.'s year: their m across the light"),
+            ),
+            ("7", N::Given("Lloyd 2006's Eq 7, m_x")),
+            ("8", N::Given("Lloyd 2006's Eq 8, m_z")),
             ("2", N::Given("the factor 2 of E_p = 2 m_z, E_q = 2 m_x")),
             (
                 "1",
                 N::Given("Zhang's screen and map span [−1, 1] (read unsigned after the bracket)"),
             ),
             ("1", N::Given("Zhang's screen and map span [−1, 1]")),
-            (
-                "2006",
-                N::Given("Lloyd et al.'s year: their m across the light"),
-            ),
             ("11.00", N::Value(lambda(90.0))),
             ("12.70", N::Value(lambda(60.0))),
             ("22.00", N::Value(lambda(30.0))),

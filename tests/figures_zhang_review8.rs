@@ -18,8 +18,9 @@ fn caption(all: &[Text]) -> String {
 /// R7-Z3-1: the blocks' titles wrote "(a) E_p = 2 m_z (⊥ light)", notation no text explained.
 /// In no form does any text of the figure write "⊥"; the titles read "(a) E_p = 2 m_z" and
 /// "(b) E_q = 2 m_x" (subscripts read inline); each captioned form says in words what m is,
-/// Lloyd 2006's error on a surface facing the light ("m: Lloyd 2006's, facing the light"), in
-/// at most five lines.
+/// Lloyd 2006's error on a surface facing the light ("m: Lloyd 2006's error (Eq 7, 8) … facing
+/// the light", written out since the eleventh review, R11-zhang-fig3-1), and the factor 2 ("×2
+/// for Zhang's span [−1, 1]"), in at most five lines.
 #[test]
 fn m_is_explained_in_words_not_marked_in_the_titles() {
     let font = Font::dejavu();
@@ -47,19 +48,22 @@ fn m_is_explained_in_words_not_marked_in_the_titles() {
             .count();
         assert!((1..=5).contains(&lines), "{form}: {lines} caption lines");
         let text = caption(&all);
-        assert!(
-            text.contains("m: Lloyd 2006's, facing the light"),
-            "{form}: {text}"
-        );
+        for want in [
+            "m: Lloyd 2006's error (Eq 7, 8)",
+            "facing the light",
+            "×2 for Zhang's span [−1, 1]",
+        ] {
+            assert!(text.contains(want), "{form}: no {want:?} in {text}");
+        }
     }
 }
 
-/// R7-Z3-2 (the decision: every row ticked, "(½ scale)" kept on the axis, and "vertical scale
-/// halved" in the caption). One column draws its nine rows of panels at half the heights'
+/// R7-Z3-2 (the decision: every row ticked, "(½ scale)" kept on the axis; the caption's
+/// "vertical scale halved" gave its room to m written out, R11-zhang-fig3-1 and -3). One column draws its nine rows of panels at half the heights'
 /// scale: the first column's frames (grey, #969696, the leftmost of each row) each have two
 /// tick marks left of them, 5 units long and level, at the same heights in the row as the
 /// labelled middle rows' ±40 (within 0.6 units), symmetric about the row's middle; the caption
-/// says "vertical scale halved" and the turned axis name "height y (½ scale)".
+/// the turned axis name says "height y (½ scale)".
 #[test]
 fn one_column_ticks_every_row_and_says_the_half_scale() {
     let opts = &forms()[2].1;
@@ -118,8 +122,6 @@ fn one_column_ticks_every_row_and_says_the_half_scale() {
         }
         assert!((o[0] + o[1]).abs() <= 1.0, "row {row}: {o:?} not symmetric");
     }
-    let text = caption(&all);
-    assert!(text.contains("vertical scale halved"), "{text}");
     assert!(
         all.iter()
             .any(|t| t.rotated && t.content == "height y (½ scale)"),

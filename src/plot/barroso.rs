@@ -169,18 +169,20 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         )],
         charts: vec![c, zoom],
     };
-    // One column: the paper's figure, (a), alone and unlettered, and the caption says that
-    // (b) is left out (the sixth review, R6-barroso-fig7-2: (a)'s four decades in 70 pt merged
-    // five curves, and the page's 420 pt leave no room for both panels at 110 pt; the eighth,
-    // R8-barroso-fig7-1: drawing (b) alone dropped the paper's own panel and left an orphan
-    // letter); every symbol the key and the caption use defined (figure review 5, X7).
+    // One column: the paper's figure, (a), alone and unlettered (the sixth review,
+    // R6-barroso-fig7-2: (a)'s four decades in 70 pt merged five curves, and the page's 420 pt
+    // leave no room for both panels at 110 pt; the eighth, R8-barroso-fig7-1: drawing (b) alone
+    // dropped the paper's own panel and left an orphan letter); its caption describes only what
+    // it draws (the eleventh, R11-barroso-fig7-1, R11-X-3: no "(b) … left out"), and gives
+    // γ_lim's value, which two columns key in (b); every symbol the key and the caption use
+    // defined (figure review 5, X7).
     let single_caption = format!(
         "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         θ\u{a0}=\u{a0}{phi_deg:.0}°; (b), γ {}°–{}° enlarged, left out. \
+         θ\u{a0}=\u{a0}{phi_deg:.0}°. \
          n′_{{1}}, n′_{{2}}: Eq\u{a0}13 for γ\u{a0}≥\u{a0}θ, γ\u{a0}<\u{a0}θ; below \
-         γ_{{lim}} (Eq\u{a0}15) n′_{{1}}(γ_{{lim}})/r(γ), r by Eq\u{a0}18 (bold) or Zhang's \
-         Eq\u{a0}17. Least max m_z: over all the frustum.",
-        WINDOW.0, WINDOW.1
+         γ_{{lim}}\u{a0}=\u{a0}{:.1}° (Eq\u{a0}15) n′_{{1}}(γ_{{lim}})/r(γ), r by \
+         Eq\u{a0}18 (bold) or Zhang's Eq\u{a0}17. Least max m_z: over all the frustum.",
+        gl.to_degrees()
     );
     Ok(Fig7 {
         charts,
@@ -401,7 +403,7 @@ mod tests {
     /// max m_z", "θ = 30°" and "γ_lim = 30.5°", and no text points at a line with an arrow but
     /// (a)'s note on its clipped curves; one column draws (b) alone, its plot (the y axis line)
     /// at least 110 pt tall (137.5 units at 0.8 pt a unit), under the same title as two columns,
-    /// and its caption says that (a) is left out.
+    /// and its caption names no panel it does not draw (R11-barroso-fig7-1).
     #[test]
     fn key_names_least_max_m_z_and_the_angles_and_one_column_is_a_alone() {
         use super::super::chart::read_svg::{points, texts};
@@ -447,9 +449,13 @@ mod tests {
                     "{all:?}"
                 );
                 assert!(all.iter().any(|t| t == "γ from 0° to 90°"), "{all:?}");
+                // The caption describes only what one column draws (R11-barroso-fig7-1), and
+                // gives γ_lim, by hand arctan((a + b)/(f − n)) = 30.499° (R11's Python).
                 let caption = all.join(" ");
+                assert!(!caption.contains("(b)"), "{caption}");
+                assert!(!caption.contains("left out"), "{caption}");
                 assert!(
-                    caption.contains("(b), γ 20°–45° enlarged, left out"),
+                    caption.contains("γlim\u{a0}=\u{a0}30.5° (Eq\u{a0}15)"),
                     "{caption}"
                 );
             } else {

@@ -408,7 +408,8 @@ pub(super) fn fig10() -> Result<Keyed, Fail> {
         charts: vec![a, b],
     };
     // One column: (a) alone, on the same axes (the fourth review: cut at 10³, f/n = 10⁴'s
-    // curve left the plot at k = 1, 8.66×10³).
+    // curve left the plot at k = 1, 8.66×10³); its caption describes only what it draws (the
+    // eleventh review, R11-lloyd2006-fig10-1, R11-X-3: no "(b) … left out").
     let (mut a, _, _) = fig10_panels()?;
     // The y axis' name no longer than its plot; the title says that the scale is log (seventh
     // review, R7-X-1, R7-2006f10-1: the one-column form did not).
@@ -421,8 +422,7 @@ pub(super) fn fig10() -> Result<Keyed, Fail> {
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 10 (Eq 18, App. C), θ\u{a0}=\u{a0}{THETA_DEG}°, light \
              overhead: S̄ of ZP+W falls with the number of z-partitions k towards \
-             S̄_{{opt}}\u{a0}=\u{a0}ln(f/n)/(2\u{a0}tan\u{a0}θ) (dashed). \
-             (b),\u{a0}S̄/S̄_{{opt}},\u{a0}left\u{a0}out."
+             S̄_{{opt}}\u{a0}=\u{a0}ln(f/n)/(2\u{a0}tan\u{a0}θ) (dashed)."
         )],
         charts: vec![a],
     };

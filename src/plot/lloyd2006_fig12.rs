@@ -108,7 +108,7 @@ pub(in crate::plot) fn fig12() -> Result<Keyed, Fail> {
         title: FIG12_TITLE.into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 12 (Eq 17–21), {}, {}°. {SCHEME_WORDS} FP+ZP+W uses {} \
-             maps, its faces behind {}; at {j4} maps {fp4:.2} to ZP's {zp4:.2}.",
+             maps, its faces behind {}.",
             nb(&format!("f/n = {ratio}")),
             nb(&format!("θ = {THETA_DEG}")),
             nb("4k + 1"),

@@ -141,31 +141,33 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         .collect();
     let phi = view.half_fov().to_degrees();
     // What m_z and m_x are, once in each caption (the seventh review, R7-Z3-1: the blocks'
-    // titles' "(⊥ light)" was unexplained notation): Lloyd 2006's errors, a texel's width
-    // measured perpendicular to the light over a pixel's ([`crate::measure::point_error`]),
-    // that is on a surface facing the light.
+    // titles' "(⊥ light)" was unexplained notation; the eleventh, R11-zhang-fig3-1: written out,
+    // not "m: Lloyd 2006's"): Lloyd 2006's errors (Eq 7, 8), a texel's width measured
+    // perpendicular to the light over a pixel's ([`crate::measure::point_error`]), that is on a
+    // surface facing the light; ×2 because Zhang's screen and map span [−1, 1].
     let caption = format!(
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
          view θ\u{a0}=\u{a0}{phi:.0}° (Zhang's φ); light at \
-         γ\u{a0}=\u{a0}{} from the view direction (Zhang's θ). E_p, E_q: screen-vertical, \
-         horizontal aliasing (×2: span [−1,\u{a0}1]); m: Lloyd 2006's, facing the light. \
-         LiSPSM's \
+         γ\u{a0}=\u{a0}{} from the view (Zhang's θ). E_p, E_q: aliasing along \
+         screen y, x; m: Lloyd 2006's error (Eq 7, 8) on a surface facing the \
+         light; ×2 for Zhang's span \
+         [−1,\u{a0}1]. LiSPSM's \
          n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
-         80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: a colour scale \
-         each, no scene insets.",
+         80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: no scene \
+         insets.",
         angles.join(", "),
         lispsm.join(", "),
     );
-    // One column: the heights at half scale, said on the axis and here (R7-Z3-2); n, f and
-    // the LiSPSM and TSM columns' rules as in two columns (the eighth review, R8-zhang-fig3-1:
-    // without them the columns were undefined), E_p and E_q left to the blocks' titles.
+    // One column: n, f and the LiSPSM and TSM columns' rules as in two columns (the eighth
+    // review, R8-zhang-fig3-1: without them the columns were undefined); γ's values and E_p,
+    // E_q = 2 m left to the rows' and blocks' labels, the half scale to the axis' name
+    // ("height y (½ scale)", R11-zhang-fig3-3); m and the factor 2 written out (R11-zhang-fig3-1).
     let single_caption = format!(
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-         θ\u{a0}=\u{a0}{phi:.0}°, light γ\u{a0}=\u{a0}{} from the \
-         view; vertical scale halved; m: Lloyd 2006's, facing the light. TSM: \
+         θ\u{a0}=\u{a0}{phi:.0}°, light at γ from the view. m: Lloyd 2006's error \
+         (Eq 7, 8) facing the light, ×2 for Zhang's span [−1,\u{a0}1]. TSM: \
          80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}{TSM_FOCUS}; LiSPSM: \
-         n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ.",
-        angles.join(", "),
+         n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ."
     );
     Ok(Fig3 {
         rows,

@@ -158,8 +158,7 @@ fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
     // eighth review, R8-zhang-fig3-1).
     for want in [
         "n\u{a0}=\u{a0}1, f\u{a0}=\u{a0}100",
-        "θ\u{a0}=\u{a0}30°, light",
-        "γ\u{a0}=\u{a0}90°, 60°, 30° from the view;",
+        "θ\u{a0}=\u{a0}30°, light at γ from the view.",
         "LiSPSM: n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ",
         "TSM: 80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}10",
     ] {
@@ -172,12 +171,14 @@ fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
     for c in [&fig.caption, &fig.single_caption] {
         if std::ptr::eq(c, &fig.caption) {
             assert!(
-                c.contains("γ\u{a0}=\u{a0}90°, 60°, 30° from the view direction"),
+                c.contains("γ\u{a0}=\u{a0}90°, 60°, 30° from the view (Zhang's θ)"),
                 "{c}"
             );
             assert!(c.contains("half field of view θ\u{a0}=\u{a0}30°"), "{c}");
-            assert!(c.contains("span [−1,\u{a0}1]"), "{c}");
         }
+        // The factor 2 written out (the eleventh review, R11-zhang-fig3-1: "(×2: span [−1, 1])"
+        // was shorthand).
+        assert!(c.contains("×2 for Zhang's span [−1,\u{a0}1]"), "{c}");
         assert!(!c.contains("π/6"), "{c}");
         // δ is named (the ninth review, R9-zhang-fig3-1: Martin & Tan's focus depth, undefined).
         assert!(c.contains("focus depth δ\u{a0}=\u{a0}10"), "{c}");
@@ -293,15 +294,16 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
             assert!(named[0].0.contains("rotate(270"), "{}", named[0].0);
         }
     }
-    // The half scale of heights is in the axis name, "height y (½ scale)", and in the
-    // one-column caption, "vertical scale halved" (the seventh review, R7-Z3-2).
+    // The half scale of heights is in the axis name, "height y (½ scale)" (the seventh review,
+    // R7-Z3-2), no longer also in the one-column caption, which needed the room to write m out
+    // (the eleventh, R11-zhang-fig3-1 and -3: the axis' name is enough); no caption says it.
     assert!(!fig.single_caption.contains("depth scale"));
-    assert!(fig.single_caption.contains("vertical scale halved"));
+    assert!(!fig.single_caption.contains("halved"));
     assert!(!fig.caption.contains("halved"));
     // E_p and E_q: two columns' caption; one column's blocks' titles ("(a) E_p = 2 m_z").
     assert!(
         fig.caption
-            .contains("E_p, E_q: screen-vertical, horizontal aliasing (×2: "),
+            .contains("E_p, E_q: aliasing along screen y, x; m: "),
         "{}",
         fig.caption
     );
@@ -314,8 +316,8 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
 /// over the frustum's extent Δ = max − min of a·p at its eight corners, so its t texel is Δ wide
 /// across the light and E_p = 2 Δ/(2 z tan θ) at depth z; at γ = 30° Barroso's would be twice
 /// that. Each SSM cell at γ = 30° has the former (within 10⁻⁹), not the latter; both captions
-/// say so in words ("m: Lloyd 2006's, facing the light": a texel's width
-/// perpendicular to the light), and no title writes "⊥" (R7-Z3-1).
+/// say so in words ("m: Lloyd 2006's error (Eq 7, 8) … facing the light": a texel's width
+/// perpendicular to the light, R11-zhang-fig3-1), and no title writes "⊥" (R7-Z3-1).
 #[test]
 fn m_is_measured_across_the_light_and_the_figure_says_so() {
     use super::super::chart::read_svg::texts;
@@ -359,13 +361,14 @@ fn m_is_measured_across_the_light_and_the_figure_says_so() {
         assert_eq!(marked, 0, "{column:?}: {marked} texts say ⊥");
     }
     assert!(
-        fig.caption.contains("m: Lloyd 2006's, facing the light"),
+        fig.caption
+            .contains("m: Lloyd 2006's error (Eq 7, 8) on a surface facing the light"),
         "{}",
         fig.caption
     );
     assert!(
         fig.single_caption
-            .contains("m: Lloyd 2006's, facing the light"),
+            .contains("m: Lloyd 2006's error (Eq 7, 8) facing the light"),
         "{}",
         fig.single_caption
     );
@@ -424,9 +427,7 @@ fn height_named_upright_single_ticks_on_middle_rows_and_scales_stated() {
             );
         }
     }
-    // Two columns say it; one column's five lines have no room (R7-Z3-1, -2 took it), and
-    // there each block's bar stands beside it.
-    assert!(fig
-        .caption
-        .contains("Unlike the paper: a colour scale each, no scene insets"));
+    // Two columns say where the figure departs from the paper (issue 25); the colour scale per
+    // block, drawn beside each block, is no longer also written (R11-zhang-fig3-1 took the room).
+    assert!(fig.caption.contains("Unlike the paper: no scene insets."));
 }
