@@ -1,5 +1,5 @@
 //! `--bare` (`Options::bare`) crops: a bare figure is the captioned figure laid out the same, its
-//! title and caption left out, and its page cut to the box of its ink with 2 units of white on
+//! title and caption left out, and its page cut to the box of its ink with 3 units of white on
 //! each side (the sixth figure review, R6-X-7): the PNG's pixels, the SVG's view box and the
 //! PDF's page.
 //!
@@ -13,7 +13,7 @@
 //! - its view box is a box inside that plot area holding every shape it draws, and the captioned
 //!   PNG has no ink in the plot area outside it (nothing is cut);
 //! - the bare PNG is the captioned PNG's pixels of that box, pixel for pixel, the white between
-//!   its ink and each of its four edges is 1.5 to 3 units, and the bare PDF's page is the view
+//!   its ink and each of its four edges is 2.5 to 4 units, and the bare PDF's page is the view
 //!   box's size.
 #![cfg(feature = "plot")]
 
@@ -267,8 +267,10 @@ fn is_ink(p: &image::Rgb<u8>) -> bool {
 
 /// The least and the most white a bare figure keeps between its ink and each edge, in units
 /// (the sixth figure review, R6-X-7: the crops kept about 14 pt above the panel titles and the
-/// page's full width; and 0.3 units under a colour bar's name, a crop on the descender).
-const BARE_MARGIN: (f64, f64) = (1.5, 3.0);
+/// page's full width; and 0.3 units under a colour bar's name, a crop on the descender; the ninth
+/// and eleventh, R9-X-5 and R11-X-6: 1.5 to 3 units left a text's box 1 pt or less from the
+/// crop).
+const BARE_MARGIN: (f64, f64) = (2.5, 4.0);
 
 /// The white between the ink of the bare PNG `png` (at `z` pixels a unit) and each of its four
 /// edges lies within [`BARE_MARGIN`].
@@ -337,7 +339,7 @@ fn shape_box(e: &str) -> Option<[f64; 4]> {
     None
 }
 
-/// The one-column bare figures keep 1.5 to 3 units of white around their ink too (PNG only:
+/// The one-column bare figures keep 2.5 to 4 units of white around their ink too (PNG only:
 /// the checks of `check` above are the two-column figures').
 #[test]
 fn one_column_bare_figures_keep_white_around_their_ink() {

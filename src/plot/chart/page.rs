@@ -25,8 +25,10 @@ pub(crate) type Crop = [u32; 4];
 /// this, less than one unit more: the crop is whole units). It was 6 units above the body and
 /// the page's full width (the sixth figure review, R6-X-7: about 14 pt of white above the panel
 /// titles and the full left margin); 2 below since text at the body's bottom edge (a colour bar's
-/// or an axis's name) kept as little as 0.3 units of white under it.
-pub(crate) const BARE_PAD: u32 = 2;
+/// or an axis's name) kept as little as 0.3 units of white under it; 3 since the ninth and
+/// eleventh reviews (R9-X-5, R11-X-6: a text's box, ascenders included, lay 1 pt or less from
+/// the crop, too tight for typesetting).
+pub(crate) const BARE_PAD: u32 = 3;
 
 /// A pixel darker than this in any channel is ink (the page is white, 255).
 const INK_BELOW: u8 = 250;
