@@ -90,7 +90,9 @@ pub(super) fn worst_case() -> Result<Keyed, Fail> {
     let view = ViewFrustum::new(1.0, 1000.0, 30f64.to_radians())?;
     let grid = SweepGrid::new(ELEVATIONS, AZIMUTHS)?;
     // FP+ZP+W's k is per face, 4k + 1 maps (sixth review, R6-lloyd2006-worst-case-6).
-    let k_axis = Axis::integer(K_AXIS, 1.0, 8.0);
+    // Padded by 0.2 either side, so that no marker at k = 1 or 8 lies on a spine (the eleventh
+    // review, R11-lloyd2006-worst-case-2: (b)'s hollow triangle at k = 1 sat on the y axis).
+    let k_axis = Axis::integer(K_AXIS, 0.8, 8.2);
     let mut abs = LineChart::new(
         // Each scheme as lloyd2006-fig12 draws it ([`scheme_series`]): the key tells the worst
         // case (solid, filled) from the light behind (dashed, hollow).
