@@ -145,39 +145,40 @@ fn map_dashes(svg: &str) -> BTreeMap<String, Vec<f64>> {
     by
 }
 
-/// The sweep's steps (the purple palette: #3F007D, #582A92, #674CA0, #7B6DB4, #9589C0) and
-/// each one's half tint on white (the even maps' light bands, R7-X-3), computed here.
-fn sweep_and_tints() -> Vec<String> {
-    let sweep = ["#3F007D", "#582A92", "#674CA0", "#7B6DB4", "#9589C0"];
-    let tint = |h: &str| -> String {
-        let c: Vec<u8> = (0..3)
-            .map(|k| u8::from_str_radix(&h[1 + 2 * k..3 + 2 * k], 16).unwrap())
-            .map(|v| (0.5 * f64::from(v) + 0.5 * 255.0).round() as u8)
-            .collect();
-        format!("#{:02X}{:02X}{:02X}", c[0], c[1], c[2])
-    };
-    sweep
+/// The maps' colours (R11-barroso-fig5-1, R11-X-1): the sweep's steps (the purple palette:
+/// #3F007D, #582A92, #674CA0, #7B6DB4, #9589C0) and ochre #9A6A00, the third map's, a hue no
+/// scheme has (Okabe–Ito's orange #E69F00 with each channel × 0.67, computed here).
+fn map_palette() -> Vec<String> {
+    let ochre: Vec<u8> = [0xE6u8, 0x9F, 0x00]
+        .iter()
+        .map(|&v| (0.67 * f64::from(v)) as u8)
+        .collect();
+    ["#3F007D", "#582A92", "#674CA0", "#7B6DB4", "#9589C0"]
         .iter()
         .map(|h| h.to_string())
-        .chain(sweep.iter().map(|h| tint(h)))
+        .chain([format!("#{:02X}{:02X}{:02X}", ochre[0], ochre[1], ochre[2])])
         .collect()
 }
 
-/// The partitions' maps are a sweep (the purple palette, or its half tints for the light
-/// bands), never a scheme colour (Okabe–Ito blue #0072B2, vermillion #D55E00, green #009E73,
-/// orange #E69F00, pink #CC79A7), one colour per map; and no two maps share a dash pattern:
-/// their sets of dash lengths (rounded to the unit, clipped pieces aside: the two most
-/// frequent lengths) differ.
+/// The partitions' maps take the maps' palette (the purple sweep and the third map's ochre),
+/// never a scheme colour (Okabe–Ito blue #0072B2, vermillion #D55E00, green #009E73, orange
+/// #E69F00, pink #CC79A7), one colour per map; and no two maps share a dash pattern: their
+/// sets of dash lengths (rounded to the unit, clipped pieces aside: the two most frequent
+/// lengths) differ.
 #[test]
 fn maps_take_the_sweep_palette_and_each_its_own_dash() {
-    let sweep = sweep_and_tints();
+    let palette = map_palette();
+    assert_eq!(palette[5], "#9A6A00");
     for (name, maps) in [("lloyd2006-fig11", 3), ("barroso-fig5", 4)] {
         for (form, opts) in forms() {
             let d = map_dashes(&svg(name, form, &opts));
             assert_eq!(d.len(), maps, "{name} {form}: {:?}", d.keys());
             let mut patterns = Vec::new();
             for (colour, lens) in &d {
-                assert!(sweep.contains(colour), "{name} {form}: map colour {colour}");
+                assert!(
+                    palette.contains(colour),
+                    "{name} {form}: map colour {colour}"
+                );
                 let mut count: BTreeMap<i64, usize> = BTreeMap::new();
                 for l in lens {
                     *count.entry(l.round() as i64).or_default() += 1;
@@ -368,10 +369,10 @@ fn the_x_axis_cannot_read_as_minus() {
 /// line it lies on, so it shows at least a unit on either side (maps 1 and 2 on the thin
 /// squares z = 2, 4, map 3 on the far face, 2 wide). barroso-fig5 (b), whose fine outlines are
 /// no wider than the frustum's edges (R9-barroso-fig5-1): every map is drawn after (over) every
-/// black line, dashed where a side holds four periods, so that the line shows in its gaps;
-/// where two maps share an edge (z = 3.162, 10, 31.62) their widths differ (R7-B5-3: two maps
-/// on one line could not be told apart) and the narrower is drawn over the wider, which shows
-/// on either side of it.
+/// black line, dashed where a side holds whole periods, so that the line shows in its gaps;
+/// every outline 1.5 to 2 pt wide (R11-barroso-fig5-1: 1 pt outlines of near purples could not
+/// be told apart); where two maps share an edge (z = 3.162, 10, 31.62) the nearer is drawn
+/// over the farther, whose colour (another hue or 20 L* apart) shows in its gaps.
 #[test]
 fn maps_show_on_either_side_of_their_lines() {
     for (form, opts) in forms() {
@@ -413,6 +414,15 @@ fn maps_show_on_either_side_of_their_lines() {
             .map(|l| (l.colour.clone(), l.width))
             .collect();
         assert_eq!(width.len(), 4, "{form}: (b) maps {width:?}");
+        // Every outline 1.5 to 2 pt wide (R11-barroso-fig5-1, R9-barroso-fig5-1).
+        let pt = read::points_per_unit(&s);
+        for (colour, w) in &width {
+            assert!(
+                (1.5..=2.0 + 1e-9).contains(&(w * pt)),
+                "{form}: (b) {colour} {} pt wide",
+                w * pt
+            );
+        }
         // Maps by depth in (b): the lower of their edges across, nearest (largest SVG y) first.
         let mut by: Vec<(f64, String)> = Vec::new();
         for colour in width.keys() {
@@ -426,29 +436,28 @@ fn maps_show_on_either_side_of_their_lines() {
             by.push((ys[ys.len() - 1], colour.clone()));
         }
         by.sort_by(|a, b| b.0.total_cmp(&a.0));
+        // Where two maps share an edge the nearer is drawn over the farther, whose colour
+        // shows in its gaps.
         for w in by.windows(2) {
             let (near, far) = (&w[0].1, &w[1].1);
-            let (wn, wf) = (width[near], width[far]);
-            assert!((wn - wf).abs() >= 1.0, "{form}: {near} {wn}, {far} {wf}");
-            let narrow = if wn < wf { near } else { far };
-            let wide = if wn < wf { far } else { near };
-            let last_wide = lines.iter().rposition(|l| &l.colour == wide).unwrap();
-            let first_narrow = lines.iter().position(|l| &l.colour == narrow).unwrap();
-            assert!(last_wide < first_narrow, "{form}: {wide} over {narrow}");
+            let last_far = lines.iter().rposition(|l| &l.colour == far).unwrap();
+            let first_near = lines.iter().position(|l| &l.colour == near).unwrap();
+            assert!(last_far < first_near, "{form}: {far} over {near}");
         }
     }
 }
 
 /// Maps 1 and 3 of lloyd2006-fig11 differ in kind, not only in dash length (figure review 3:
-/// both dashed, they were one in greyscale): map 3 (#674CA0) is dash-dot, its pieces of two
-/// lengths, dots (≤ 3 units) and dashes (≥ 9), while map 1 (#3F007D) has dashes of one length.
+/// both dashed, they were one in greyscale): map 3 (ochre #9A6A00 since R11-X-1) is dash-dot,
+/// its pieces of two lengths, dots (≤ 3 units) and dashes (≥ 9), while map 1 (#3F007D) has
+/// dashes of one length.
 #[test]
 fn fig11_map_three_is_dash_dot() {
     for (form, opts) in forms() {
         let d = map_dashes(&svg("lloyd2006-fig11", form, &opts));
         let count =
             |lens: &[f64], keep: &dyn Fn(f64) -> bool| lens.iter().filter(|&&l| keep(l)).count();
-        let three = &d["#674CA0"];
+        let three = &d["#9A6A00"];
         assert!(count(three, &|l| l <= 3.0) >= 8, "{form}: {three:?}");
         assert!(count(three, &|l| l >= 9.0) >= 8, "{form}: {three:?}");
         let one = &d["#3F007D"];
@@ -487,13 +496,13 @@ fn fig11_y_axis_is_centred_on_the_frustum() {
     }
 }
 
-/// The maps' lines stand out from white: each narrow one (under 8 units wide) at least 4:1
-/// against white by WCAG's relative luminance (computed here from the sRGB values), where the
-/// lightest sweep step, #9589C0, is 3.17:1 and was map 4's (figure review 3: "low contrast");
-/// the light bands (lloyd2006-fig11's even maps, R7-X-3) are at least 8 wide, the width of a
-/// band behind lines (tests/figures_style_strokes.rs), and a half tint of a sweep step.
-/// barroso-fig5's outlines, at most 2 wide since R9-barroso-fig5-1, have no bands: each is at
-/// least 4:1.
+/// The maps' lines stand out from white: each at least 3:1 against white by WCAG's relative
+/// luminance (computed here from the sRGB values; the lightest sweep step, #9589C0, map 2's
+/// since R11-X-1, is 3.17:1, and the half tints of lloyd2006-fig11's old light bands, 2.7:1
+/// and lighter, fail), and each narrow one (under 8 units wide) but map 2's at least 4:1
+/// (figure review 3: "low contrast"); lloyd2006-fig11's even maps are bands at least 8 wide,
+/// the width of a band behind lines (tests/figures_style_strokes.rs); barroso-fig5's outlines,
+/// at most 2 wide since R9-barroso-fig5-1, have no bands.
 #[test]
 fn map_colours_have_contrast() {
     let lum = |hex: &str| {
@@ -509,8 +518,10 @@ fn map_colours_have_contrast() {
             .collect();
         0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
     };
-    assert!((1.05 / (lum("#9589C0") + 0.05) - 3.17).abs() < 0.01);
-    let tints = &sweep_and_tints()[5..];
+    let ratio = |hex: &str| 1.05 / (lum(hex) + 0.05);
+    assert!((ratio("#9589C0") - 3.17).abs() < 0.01);
+    // The old band of map 2, #582A92's half tint #AC95C9.
+    assert!(ratio("#AC95C9") < 3.0);
     for name in FIGS {
         for (form, opts) in forms() {
             let s = svg(name, form, &opts);
@@ -522,13 +533,13 @@ fn map_colours_have_contrast() {
                     .find(|l| l.colour == colour)
                     .unwrap()
                     .width;
+                let r = ratio(&colour);
+                assert!(r >= 3.0, "{name} {form}: {colour} at {r:.2}:1");
                 if w >= 8.0 {
-                    assert!(tints.contains(&colour), "{name} {form}: band {colour}");
                     bands += 1;
-                    continue;
+                } else if colour != "#9589C0" {
+                    assert!(r >= 4.0, "{name} {form}: {colour} at {r:.2}:1");
                 }
-                let ratio = 1.05 / (lum(&colour) + 0.05);
-                assert!(ratio >= 4.0, "{name} {form}: {colour} at {ratio:.2}:1");
             }
             if name == "lloyd2006-fig11" {
                 assert!(bands >= 1, "{name} {form}");
@@ -1305,9 +1316,10 @@ fn barroso_overview_outlines_are_fine_and_their_dashes_fit_their_sides() {
 /// light overhead sees the plane at depth z edge-on at light-view y = z, x from −z tan 30° to
 /// z tan 30°, so map 3 is the rectangle x = ±31.623 · 0.57735 = ±18.257, y = 10 … 31.623.
 /// In every form (b)'s axis limits, read from its tick labels, hold that rectangle (by more
-/// than the reading can be off); and map 3's outline (the third sweep step, #674CA0) read in
+/// than the reading can be off); and map 3's outline (ochre, #9A6A00) read in
 /// (b) through (b)'s ticks, and in (a) through (a)'s, is that rectangle, drawn on all four
 /// sides, within the reading's error and 0.1 pt. The old (b) showed z ≤ 10 (y up to 10.3).
+/// (Map 3 was the third sweep step, #674CA0, until the eleventh review, R11-barroso-fig5-1.)
 #[test]
 fn barroso_b_holds_the_perpendicular_lights_map_three() {
     let t = 30f64.to_radians().tan();
@@ -1341,7 +1353,7 @@ fn barroso_b_holds_the_perpendicular_lights_map_three() {
             let p = &panels[k];
             let pieces: Vec<Vec<(f64, f64)>> = lines_between(&s, from, Some(to))
                 .into_iter()
-                .filter(|l| l.colour == "#674CA0")
+                .filter(|l| l.colour == "#9A6A00")
                 .map(|l| l.points)
                 .collect();
             let (bb, sides) = outline_sides(&pieces);

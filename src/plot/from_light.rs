@@ -53,6 +53,9 @@ pub(super) struct Panel {
     /// whole periods of at most a quarter of it, or solid) over the frustum's lines
     /// (barroso-fig5, R9-barroso-fig5-1), rather than wide, under them (lloyd2006-fig11).
     pub fine: bool,
+    /// Whether each map is numbered, "1" to "4", at a corner of its rectangle (barroso-fig5's
+    /// details (b), (d), (f); the eleventh review, R11-barroso-fig5-1).
+    pub numbered: bool,
 }
 
 pub(super) struct FromLight {
@@ -109,6 +112,7 @@ fn panel(view: &ViewFrustum, light: DVec3, planes: &[f64], title: String) -> Res
         notes: Vec::new(),
         enlarged: false,
         fine: false,
+        numbered: false,
     })
 }
 
@@ -288,6 +292,11 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     label_from(&mut perpendicular, 3);
     label_from(&mut parallel, 3);
     label_from(&mut eq19, 2);
+    // The details number their maps at a corner (R11-barroso-fig5-1: which rectangle is which
+    // partition's could not be read from the maps' purples).
+    for detail in [&mut zoom, &mut zoom_b, &mut zoom_c] {
+        detail.numbered = true;
+    }
     let mut panels = vec![perpendicular, zoom, parallel, zoom_b, eq19, zoom_c];
     // Every panel's maps fine (R9-barroso-fig5-1: in the overviews the wide outlines and their
     // dashes were larger than maps 1 to 3), so that the key's strokes are each panel's.

@@ -45,6 +45,8 @@ pub(crate) use scheme::{Look, SHARED};
 pub(crate) use scheme::{sweep, SWEEP};
 
 /// The font family every figure uses; registered from the compiled-in DejaVu Sans.
+// The third z-partition map: a hue apart from the sweep's (R11-barroso-fig5-1).
+pub(crate) use scheme::OCHRE;
 pub(crate) const FONT: &str = "sans-serif";
 
 /// Evenly spaced samples of `[a, b]`, both ends included.

@@ -72,6 +72,13 @@ pub(crate) const SWEEP: [RGBColor; 5] = [
     RGBColor(149, 137, 192),
 ];
 
+/// Ochre, Okabe and Ito's orange #E69F00 darkened (each channel × 0.67; L* 49, 4.7 : 1 on
+/// white): a hue no scheme, warp or sweep step has, for the one item of a sweep that its
+/// purple steps cannot set apart: the third z-partition map of barroso-fig5 and
+/// lloyd2006-fig11 (the sweep has only three steps 20 L* apart above 3 : 1 on white; the
+/// eleventh review, R11-barroso-fig5-1).
+pub(crate) const OCHRE: RGBColor = RGBColor(154, 106, 0);
+
 /// The colour of the `i`-th of `n` values of a swept parameter (`i` from 0, darkest first):
 /// the `n` values spread over [`SWEEP`] as evenly as its steps allow, the first the darkest and
 /// (for `n` ≥ 2) the last the lightest, so that a sweep of two or three values keeps the

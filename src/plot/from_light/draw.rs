@@ -4,10 +4,9 @@
 //! cross-section's right corner to its label in a gutter right of the plot, and one key under
 //! the panels naming the maps' strokes, the frustum's and the split planes'.
 
-use super::super::canvas::Fine;
 use super::super::chart::{
     boxed_text, build_chart_styled, clip_polyline, column, dash_pattern, draw_fine_line,
-    equal_aspect, frame, plot_size, Axis, Chart2d, ChartStyle, Dash, FONT, SWEEP, TITLE_GAP,
+    equal_aspect, frame, plot_size, Axis, Chart2d, ChartStyle, Dash, FONT, OCHRE, SWEEP, TITLE_GAP,
 };
 use super::super::{Column, Fail, Figure};
 use super::{FromLight, Panel, SEEN_X, SEEN_Y};
@@ -17,10 +16,11 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// Each partition's map outline, nearest partition first: its dash pattern (lengths on, off,
-/// on, off… in units, repeated). The maps' colours are steps of one sequential palette, so each
-/// also has its own pattern: short dashes, square dots, dash-dot, long dashes (the third
-/// dash-dot, so that lloyd2006-fig11's maps 1 and 3 differ in kind, not in dash length, in
-/// greyscale).
+/// on, off… in units, repeated), one kind per map: dashes, square dots, dash-dot, long dashes.
+/// Map i has this kind and [`map_colour`]'s colour in both figures that draw maps
+/// (lloyd2006-fig11's wide outlines, barroso-fig5's fine ones, [`maps::FINE_PATTERNS`], these
+/// scaled by [`maps::FINE_SCALE`]), so that the key "Maps, nearest first" means one thing in
+/// both (the eleventh review, R11-X-1).
 pub(in super::super) const PATTERNS: [&[f64]; 4] = [
     &[6.0, 3.0],
     &[4.0, 3.0],
@@ -28,27 +28,28 @@ pub(in super::super) const PATTERNS: [&[f64]; 4] = [
     &[14.0, 4.0],
 ];
 
-/// The colour of partition `i`'s map: the sweep palette's steps, darkest (nearest) first
-/// (partitions are a parameter sweep, not schemes), its four darkest only: the lightest,
-/// #9589C0, stands 2.9:1 on its own tint; the fourth, #7B6DB4, 4.1:1.
+/// The colour of partition `i`'s map, the same in both figures (R11-X-1): maps 1, 2 and 4
+/// the sweep's darkest (L* 18), lightest (L* 60) and middle (L* 39) steps, each pair at least
+/// 20 L* apart, so that they stay apart in grey; map 3 ochre ([`OCHRE`], L* 49, ΔE at least 80
+/// from the three purples), as no fourth purple step lies 20 L* from three others above 3 : 1
+/// on white (the eleventh review, R11-barroso-fig5-1: maps 1 and 3, #582A92 and #674CA0, 10 L*
+/// apart and one hue, could not be told apart; map 3 now differs from map 1 in hue, as from
+/// every map it is drawn with in (b), (f)). Every one is at least 3 : 1 on white.
 pub(in super::super) fn map_colour(i: usize) -> RGBColor {
-    SWEEP[i.min(3)]
+    [SWEEP[0], SWEEP[4], OCHRE, SWEEP[2]][i.min(3)]
 }
 
 /// The odd maps' outlines (1, 3): narrow lines of their colour; the even ones' (2, 4): wide
-/// bands of their colour's tint (this share of it on white). Each outline lies exactly on its
-/// rectangle (the seventh review, R7-X-3: drawn 2 units outside it, the maps read as larger
-/// than the squares they equal), under the frustum's black lines and wider than them, so that
-/// where a map's edge lies on a cross-section both show: the black line with the map's dashes
-/// on either side of it (figure review 3: dashes drawn over the line hid it in their gaps).
-/// Where two maps share an edge (a light overhead: map i's far edge is map i + 1's near one),
-/// one is narrow and dark and the other a wide light band under it, both showing; maps 3 and
-/// 4 of barroso-fig5 (f), two lavenders of close luminance, differ so too (R7-B5-3).
+/// bands of their colour. Each outline lies exactly on its rectangle (the seventh review,
+/// R7-X-3: drawn 2 units outside it, the maps read as larger than the squares they equal),
+/// under the frustum's black lines and wider than them, so that where a map's edge lies on a
+/// cross-section both show: the black line with the map's dashes on either side of it (figure
+/// review 3: dashes drawn over the line hid it in their gaps). lloyd2006-fig11 draws these;
+/// barroso-fig5 draws its maps fine ([`maps`]).
 /// Two columns' widths; one column's are a unit narrower, its panels half as wide (a band
 /// stays [`MAP_BAND`] − 1 = 8 wide, the least of a light band behind lines).
 const MAP_NARROW: u32 = 5;
 const MAP_BAND: u32 = 9;
-const MAP_TINT: f64 = 0.5;
 
 /// Map `i`'s outline (0: the nearest): its colour, stroke width and dash pattern.
 fn map_stroke(i: usize) -> (RGBColor, u32, &'static [f64]) {
@@ -58,12 +59,7 @@ fn map_stroke(i: usize) -> (RGBColor, u32, &'static [f64]) {
     if i.is_multiple_of(2) {
         (c, MAP_NARROW - less, pattern)
     } else {
-        let mix = |v: u8| (MAP_TINT * f64::from(v) + (1.0 - MAP_TINT) * 255.0).round() as u8;
-        (
-            RGBColor(mix(c.0), mix(c.1), mix(c.2)),
-            MAP_BAND - less,
-            pattern,
-        )
+        (c, MAP_BAND - less, pattern)
     }
 }
 
@@ -106,110 +102,13 @@ mod labels;
 #[path = "draw_maps.rs"]
 mod maps;
 pub(super) use labels::{choose_corners, right_corners, short_title, spread};
-use maps::{fine_maps, fine_stroke, side_dashes};
+use maps::{fine_maps, fine_stroke};
 
-/// A key item's stroke: colour, width, dash pattern (empty: solid).
-type Stroke = (RGBColor, u32, &'static [f64]);
-
-/// The key under the panels: "Maps, nearest first:" with each map's stroke and its
-/// number, then the frustum's stroke and the split planes'. Its items flow in rows, centred;
-/// returns the height it takes (drawing nothing when `draw` is false).
-fn key<DB: DrawingBackend>(
-    area: &DrawingArea<DB, Shift>,
-    maps: usize,
-    fine: bool,
-    size: u32,
-    draw: bool,
-) -> Result<u32, Fail> {
-    let style = TextStyle::from((FONT, size).into_font()).pos(Pos::new(HPos::Left, VPos::Center));
-    let width = |t: &str| -> Result<f64, Fail> {
-        let (w, _) = area
-            .estimate_text_size(t, &style)
-            .map_err(|e| Fail::Draw(e.to_string()))?;
-        Ok(f64::from(w))
-    };
-    let sample = 2.0 * f64::from(size);
-    let (gap, space) = (0.3 * f64::from(size), f64::from(size));
-    let mut items: Vec<(Option<Stroke>, String)> = vec![(None, "Maps, nearest first:".into())];
-    for i in 0..maps {
-        let stroke = if fine { fine_stroke(i) } else { map_stroke(i) };
-        items.push((Some(stroke), format!("{}", i + 1)));
-    }
-    items.push((Some((BLACK, FRUSTUM_WIDTH, &[])), "frustum".into()));
-    items.push((Some((BLACK, PLANE_WIDTH, &[])), "split plane".into()));
-    let (w, _) = area.dim_in_pixel();
-    let avail = f64::from(w) - 8.0;
-    let mut rows: Vec<Vec<(f64, usize)>> = vec![Vec::new()];
-    let mut x = 0.0;
-    for (i, (stroke, text)) in items.iter().enumerate() {
-        let wi = if stroke.is_some() { sample + gap } else { 0.0 } + width(text)?;
-        if x > 0.0 && x + wi > avail {
-            rows.push(Vec::new());
-            x = 0.0;
-        }
-        rows.last_mut().expect("one row").push((x, i));
-        x += wi + space;
-    }
-    let row_h = f64::from(size) + 6.0;
-    let height = (row_h * rows.len() as f64 + 6.0).ceil() as u32;
-    if !draw {
-        return Ok(height);
-    }
-    for (r, row) in rows.iter().enumerate() {
-        let &(last_x, last) = row.last().expect("a row has an item");
-        let (stroke, text) = &items[last];
-        let row_w = last_x + if stroke.is_some() { sample + gap } else { 0.0 } + width(text)?;
-        let x0 = 0.5 * (f64::from(w) - row_w);
-        let y = 3.0 + row_h * (r as f64 + 0.5);
-        for &(x, i) in row {
-            let (stroke, text) = &items[i];
-            let mut tx = x0 + x;
-            if let Some((colour, width, pattern)) = stroke {
-                let line = [(tx, y), (tx + sample, y)];
-                let pieces = if pattern.is_empty() {
-                    vec![line.to_vec()]
-                } else if fine {
-                    // A fine map's sample as its outline's sides: whole periods, ending on a
-                    // dash.
-                    side_dashes(sample, pattern, 1.0)
-                        .into_iter()
-                        .map(|(a, b)| vec![(tx + a, y), (tx + b, y)])
-                        .collect()
-                } else {
-                    dash_pattern(&line, pattern, 1.0)
-                };
-                let (bx, by) = area.get_base_pixel();
-                for piece in pieces {
-                    if fine {
-                        // At a tenth of a unit, as in the panels: dashes of 1.2 units rounded
-                        // to whole ones were 1 or 2 long.
-                        area.draw(&Fine {
-                            points: piece
-                                .iter()
-                                .map(|p| (p.0 + f64::from(bx), p.1 + f64::from(by)))
-                                .collect(),
-                            colour: colour.to_backend_color(),
-                            stroke: Some(*width),
-                        })?;
-                        continue;
-                    }
-                    let pts: Vec<(i32, i32)> = piece
-                        .iter()
-                        .map(|p| (p.0.round() as i32, p.1.round() as i32))
-                        .collect();
-                    area.draw(&PathElement::new(pts, colour.stroke_width(*width)))?;
-                }
-                tx += sample + gap;
-            }
-            area.draw(&Text::new(
-                text.clone(),
-                (tx.round() as i32, y.round() as i32),
-                style.clone(),
-            ))?;
-        }
-    }
-    Ok(height)
-}
+#[path = "draw_key.rs"]
+mod key_strip;
+use key_strip::key;
+#[path = "draw_numbers.rs"]
+mod numbers;
 
 impl Figure for FromLight {
     fn size(&self) -> (u32, u32) {
@@ -713,6 +612,14 @@ fn draw_panel<DB: DrawingBackend>(
     // Each leader's anchor, a dot on its corner.
     for &q in &anchors {
         chart.draw_series(std::iter::once(Circle::new((q.x, q.y), 2, ANCHOR.filled())))?;
+    }
+    // The maps' numbers at their corners (R11-barroso-fig5-1), clear of every line.
+    if p.numbered {
+        let leaders: Vec<numbers::Leader> = anchor_px
+            .iter()
+            .map(|&(ax, ay)| ((ax, ay), (gx, ay)))
+            .collect();
+        numbers::numbers(&chart, whole, p, sz.label, &leaders)?;
     }
     for [from, to] in &p.extensions {
         chart.draw_series(LineSeries::new(

@@ -7,39 +7,66 @@
 //! ending on a dash (so that the corners are drawn); a side too short for that is solid.
 //! lloyd2006-fig11 keeps the wide outlines of [`super::map_stroke`].
 
-use super::super::super::chart::{draw_fine_line, Chart2d, Dash, SWEEP};
+use super::super::super::chart::{column, draw_fine_line, Chart2d, Dash};
+use super::super::super::Column;
 use super::super::super::Fail;
 use super::super::Panel;
+use super::map_colour;
 use glam::DVec2;
 use plotters::prelude::*;
 
-/// Each fine map's dash pattern (lengths on, off, … in units, nearest map first): short
-/// dashes, square dots (2 × 2 at map 2's width), dash-dot, long dashes, the kinds of the wide
-/// outlines' [`super::PATTERNS`] at about a third of their length.
-const FINE_PATTERNS: [&[f64]; 4] = [&[3.0, 1.2], &[2.0, 1.2], &[4.8, 1.2, 1.2, 1.2], &[6.0, 1.6]];
+/// The fine outlines' dash lengths against the wide outlines' [`super::PATTERNS`], in two
+/// columns and in one (units print 1 pt and 0.8 pt), for maps 1 and 2 and for maps 3 and 4:
+/// two thirds and five sixths, and a half in both, so that the shortest dash (map 1's) is 4 pt
+/// in either (the eleventh review's least, R11-barroso-fig5-1), the long ones 6 and 7 units
+/// (at least 4.8 pt), and the overviews' far maps keep four whole periods on their long sides
+/// (R9-barroso-fig5-1). Each map's pattern is the wide one's kind, its lengths in the same
+/// ratios (R11-X-1: map i has one dash kind in both figures).
+pub(super) const FINE_SCALE: [[f64; 2]; 2] = [[2.0 / 3.0, 0.5], [5.0 / 6.0, 0.5]];
 
-/// The odd maps' (1, 3) fine outlines: narrow, in their dark sweep step; the even maps' (2, 4):
-/// twice as wide in their own step, lighter than the odd maps' before them (the wide outlines'
-/// light bands, half tints of 2.7 : 1 and 1.9 : 1 on white, would fall under the 3 : 1 of a
-/// line at this width). Where two maps share an edge (a light overhead), the narrow one is
-/// drawn over the wide one, which shows half a unit on either side of it.
-const FINE_NARROW: u32 = 1;
-const FINE_WIDE: u32 = 2;
+/// [`super::PATTERNS`], maps 1 and 2 times `a`, 3 and 4 times `b`.
+macro_rules! scaled {
+    ($a:expr, $b:expr) => {
+        [
+            &[6.0 * $a, 3.0 * $a],
+            &[4.0 * $a, 3.0 * $a],
+            &[12.0 * $b, 3.0 * $b, 2.0 * $b, 3.0 * $b],
+            &[14.0 * $b, 4.0 * $b],
+        ]
+    };
+}
+
+/// Each fine map's dash pattern (lengths on, off, … in units, nearest map first), in two
+/// columns and in one: dashes, square dots, dash-dot, long dashes, [`super::PATTERNS`] scaled
+/// by [`FINE_SCALE`].
+pub(super) const FINE_PATTERNS: [[&[f64]; 4]; 2] = [
+    scaled!(FINE_SCALE[0][0], FINE_SCALE[0][1]),
+    scaled!(FINE_SCALE[1][0], FINE_SCALE[1][1]),
+];
+
+/// The least number of whole periods a side of a detail's map ((b), (d), (f)) is dashed with:
+/// two (a dash, a gap, a dash, a gap, a dash at least), so that the dash kinds show on the
+/// details' maps, whose sides are 20 to 130 units; the overviews keep [`LEAST_PERIODS`]
+/// (R9-barroso-fig5-1).
+pub(super) const DETAIL_LEAST_PERIODS: f64 = 2.0;
+
+/// Every fine outline's width: 2 units (2 pt in two columns, 1.6 pt in one), the eleventh
+/// review's least of 1.5 pt (R11-barroso-fig5-1: maps 1 and 3 were 1 unit wide) and the ninth
+/// review's most of 2 pt (R9-barroso-fig5-1). Where two maps share an edge (a light overhead),
+/// the nearer is drawn over the farther, whose colour shows in its gaps; the numbers at the
+/// maps' corners ([`super::numbers`]) say which rectangle is which.
+const FINE_WIDTH: u32 = 2;
 
 /// The least number of whole periods a side is dashed with: fewer, and it is solid.
 pub(super) const LEAST_PERIODS: f64 = 4.0;
 
-/// Map `i`'s fine outline (0: the nearest): its colour, stroke width and dash pattern.
+/// Map `i`'s fine outline (0: the nearest): its colour ([`map_colour`]), stroke width and
+/// dash pattern.
 pub(super) fn fine_stroke(i: usize) -> (RGBColor, u32, &'static [f64]) {
-    let width = if i.is_multiple_of(2) {
-        FINE_NARROW
-    } else {
-        FINE_WIDE
-    };
     (
-        SWEEP[i.min(3)],
-        width,
-        FINE_PATTERNS[i % FINE_PATTERNS.len()],
+        map_colour(i),
+        FINE_WIDTH,
+        FINE_PATTERNS[usize::from(column() == Column::Single)][i % 4],
     )
 }
 
@@ -148,7 +175,7 @@ pub(super) fn outline_pieces(
         .collect()
 }
 
-/// Panel `p`'s maps drawn fine ([`fine_stroke`]) over the frustum's lines, the wide ones first,
+/// Panel `p`'s maps drawn fine ([`fine_stroke`]) over the frustum's lines, the farthest first,
 /// each clipped to the plot (`bounds`: x and y ranges; a side outside it is not drawn) and
 /// each drawn side dashed with whole periods of at most a quarter of its length on the page
 /// ([`outline_pieces`]), `per_unit` page units a data unit. Over the lines: a fine outline is
@@ -159,9 +186,8 @@ pub(super) fn fine_maps<DB: DrawingBackend>(
     (x0, x1, y0, y1): (f64, f64, f64, f64),
     per_unit: f64,
 ) -> Result<(), Fail> {
-    let mut order: Vec<usize> = (0..p.maps.len()).collect();
-    order.sort_by_key(|&i| std::cmp::Reverse(fine_stroke(i).1));
-    for i in order {
+    // The farthest first: where two maps share an edge the nearer is on top.
+    for i in (0..p.maps.len()).rev() {
         let (a, b) = p.maps[i];
         let (lo, hi) = (a.max(DVec2::new(x0, y0)), b.min(DVec2::new(x1, y1)));
         if lo.x > hi.x || lo.y > hi.y {
@@ -177,7 +203,12 @@ pub(super) fn fine_maps<DB: DrawingBackend>(
             page(DVec2::new(lo.x, hi.y)),
         ];
         let (colour, width, pattern) = fine_stroke(i);
-        for piece in outline_pieces(corners, draw, pattern, LEAST_PERIODS) {
+        let least = if p.window.is_some() {
+            DETAIL_LEAST_PERIODS
+        } else {
+            LEAST_PERIODS
+        };
+        for piece in outline_pieces(corners, draw, pattern, least) {
             let data: Vec<(f64, f64)> = piece
                 .iter()
                 .map(|&(x, y)| (x / per_unit, y / per_unit))
@@ -191,6 +222,27 @@ pub(super) fn fine_maps<DB: DrawingBackend>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Each fine pattern is its wide one (lloyd2006-fig11's) times one factor, so that map i
+    /// has one dash kind in both figures (R11-X-1); its first dash, but map 2's dots, is at
+    /// least 4 pt (4 units in two columns, 5 units of 0.8 pt in one; R11-barroso-fig5-1): by
+    /// hand, map 1's are 6 · 2/3 = 4 and 6 · 5/6 = 5 units.
+    #[test]
+    fn fine_patterns_are_the_wide_ones_scaled() {
+        for (col, least) in [(0, 4.0), (1, 5.0)] {
+            for (i, fine) in FINE_PATTERNS[col].iter().enumerate() {
+                let wide = super::super::PATTERNS[i];
+                assert_eq!(fine.len(), wide.len());
+                let k = fine[0] / wide[0];
+                for (f, w) in fine.iter().zip(wide) {
+                    assert!((f - k * w).abs() < 1e-12, "map {} {fine:?} {wide:?}", i + 1);
+                }
+                assert!(i == 1 || fine[0] >= least - 1e-12, "map {} {fine:?}", i + 1);
+            }
+        }
+        assert!((FINE_PATTERNS[0][0][0] - 4.0).abs() < 1e-12);
+        assert!((FINE_PATTERNS[1][0][0] - 5.0).abs() < 1e-12);
+    }
 
     /// A side of 40 units with the pattern (3, 1.2): k = round((40 − 3)/4.2) = round(8.81) = 9
     /// periods and a last dash, stretched by 40/(9·4.2 + 3) = 0.98039 (by hand): ten dashes,

@@ -1,0 +1,349 @@
+//! The z-partitions' maps told apart (the eleventh review, R11-barroso-fig5-1 and R11-X-1), read
+//! back from the SVGs of barroso-fig5 and lloyd2006-fig11 in all three forms:
+//! - each pair of barroso-fig5's four maps differs in CIE L* by at least 20 or in colour by a
+//!   CIE76 ΔE of at least 25 (R11: maps 1 and 3, #582A92 and #674CA0, were 10.8 L* and 17.4 ΔE
+//!   apart), and in dash pattern; every map stroke is at least 3 : 1 on white;
+//! - map i has one colour and one dash kind in both figures (R11-X-1: fig11's map 1 was thick
+//!   dark dashed, barroso-fig5's thin dashed; map 3 dash-dot in both but of other purples);
+//! - in barroso-fig5's details (b), (d), (f) each map large enough is numbered, "1" to "4" in its
+//!   map's colour (or that colour darkened to 4.5 : 1), at a corner of its own rectangle: the
+//!   corner of a map's outline nearest the number is its own map's.
+//!
+//! Map i's colour is read from the key ("Maps, nearest first:", each sample before its number);
+//! a dash kind from the outlines' straight pieces: each piece's length over the distance from
+//! its start to the next collinear piece's start (its share of the period), clustered: dashes
+//! 6 : 3 give 0.67, dots 4 : 3 give 0.57, dash-dot 12 : 3 : 2 : 3 gives 0.8 and 0.4, long dashes
+//! 14 : 4 give 0.78 (the kinds are those ratios at any scale).
+#![cfg(feature = "plot")]
+
+mod figures_style_read;
+use figures_style_read as read;
+use figures_style_read::{attr_str, forms, points, Font};
+use shadow_aliasing::plot::{render_with, Format, Options};
+use std::path::Path;
+
+fn svg(name: &str, form: &str, opts: &Options) -> String {
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
+        "figures-b-{name}-{form}-{}-{call}",
+        std::process::id()
+    ));
+    let files = render_with(name, &dir, Format::Svg, opts).unwrap();
+    let s = std::fs::read_to_string(&files[0]).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    s
+}
+
+/// `#RRGGBB` as its channels.
+fn rgb(hex: &str) -> [f64; 3] {
+    let c = |i: usize| f64::from(u8::from_str_radix(&hex[i..i + 2], 16).unwrap());
+    [c(1), c(3), c(5)]
+}
+
+/// sRGB to CIE L*a*b* (D65), and the relative luminance Y.
+fn lab(hex: &str) -> ([f64; 3], f64) {
+    let lin = |v: f64| {
+        let v = v / 255.0;
+        if v <= 0.04045 {
+            v / 12.92
+        } else {
+            ((v + 0.055) / 1.055).powf(2.4)
+        }
+    };
+    let [r, g, b] = rgb(hex).map(lin);
+    let x = 0.4124 * r + 0.3576 * g + 0.1805 * b;
+    let y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+    let z = 0.0193 * r + 0.1192 * g + 0.9505 * b;
+    let f = |t: f64| {
+        if t > 216.0 / 24389.0 {
+            t.cbrt()
+        } else {
+            (24389.0 / 27.0 * t + 16.0) / 116.0
+        }
+    };
+    let (fx, fy, fz) = (f(x / 0.95047), f(y), f(z / 1.08883));
+    ([116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)], y)
+}
+
+fn delta_e(a: &str, b: &str) -> f64 {
+    let (p, _) = lab(a);
+    let (q, _) = lab(b);
+    ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+}
+
+/// WCAG 2's contrast against white.
+fn contrast(hex: &str) -> f64 {
+    1.05 / (lab(hex).1 + 0.05)
+}
+
+/// The maps' colours in the key's order (map 1 first): the stroke of the last sample drawn
+/// before each number after "Maps, nearest first:".
+fn key_colours(svg: &str) -> Vec<String> {
+    let start = svg.find(">Maps, nearest first:").expect("the key");
+    let mut out = Vec::new();
+    let mut last: Option<String> = None;
+    for l in svg[start..].lines() {
+        if l.starts_with("<polyline") {
+            last = attr_str(l, "stroke").map(str::to_uppercase);
+        } else if l.starts_with("<text") {
+            let content = &l[l.find('>').unwrap() + 1..l.rfind("</text>").unwrap_or(l.len())];
+            if content == "frustum" {
+                break;
+            }
+            if content.parse::<usize>() == Ok(out.len() + 1) {
+                out.push(last.clone().expect("a sample before its number"));
+            }
+        }
+    }
+    out
+}
+
+/// The straight pieces (two points) of every polyline of `colour`, in the SVG's order.
+fn pieces(svg: &str, colour: &str) -> Vec<[(f64, f64); 2]> {
+    svg.lines()
+        .filter(|l| l.starts_with("<polyline"))
+        .filter(|l| attr_str(l, "stroke").is_some_and(|c| c.eq_ignore_ascii_case(colour)))
+        .map(points)
+        .filter(|p| p.len() == 2 && p[0] != p[1])
+        .map(|p| [p[0], p[1]])
+        .collect()
+}
+
+/// Each dash's share of its period (see the module's notes): for each piece followed by a
+/// collinear one further along its direction, the piece's length over the distance between the
+/// two starts.
+fn shares(pieces: &[[(f64, f64); 2]]) -> Vec<f64> {
+    let mut out = Vec::new();
+    for w in pieces.windows(2) {
+        let ([a, b], [c, _]) = (w[0], w[1]);
+        let len = (b.0 - a.0).hypot(b.1 - a.1);
+        let dir = ((b.0 - a.0) / len, (b.1 - a.1) / len);
+        let (ux, uy) = (c.0 - a.0, c.1 - a.1);
+        let along = ux * dir.0 + uy * dir.1;
+        let off = (ux * dir.1 - uy * dir.0).abs();
+        if off <= 0.05 && along > len {
+            out.push(len / along);
+        }
+    }
+    out
+}
+
+/// A dash kind: the medians of the clusters of `shares` (sorted, split where two neighbours
+/// are more than 0.08 apart), each cluster holding at least a sixth of them.
+fn kind(shares: &[f64]) -> Vec<f64> {
+    let mut s = shares.to_vec();
+    s.sort_by(f64::total_cmp);
+    let mut clusters: Vec<Vec<f64>> = Vec::new();
+    for v in s {
+        match clusters.last_mut() {
+            Some(c) if v - c[c.len() - 1] <= 0.08 => c.push(v),
+            _ => clusters.push(vec![v]),
+        }
+    }
+    let n = shares.len();
+    clusters
+        .into_iter()
+        .filter(|c| c.len() * 6 >= n && c.len() >= 2)
+        .map(|c| c[c.len() / 2])
+        .collect()
+}
+
+fn same_kind(a: &[f64], b: &[f64]) -> bool {
+    a.len() == b.len() && a.iter().zip(b).all(|(x, y)| (x - y).abs() <= 0.05)
+}
+
+/// The kinds of `shares` by hand: 6 : 3 dashes are 2/3, a dash-dot 12 : 3 : 2 : 3 is 0.4 and
+/// 0.8, and two kinds 0.1 apart differ.
+#[test]
+fn dash_kinds_are_read_by_hand() {
+    let dashes: Vec<[(f64, f64); 2]> = (0..5)
+        .map(|k| {
+            let x = 9.0 * f64::from(k);
+            [(x, 1.0), (x + 6.0, 1.0)]
+        })
+        .collect();
+    let k = kind(&shares(&dashes));
+    assert_eq!(k.len(), 1);
+    assert!((k[0] - 2.0 / 3.0).abs() < 1e-9, "{k:?}");
+    let mut dash_dot = Vec::new();
+    for p in 0..4 {
+        let x = 20.0 * f64::from(p);
+        dash_dot.push([(x, 0.0), (x + 12.0, 0.0)]);
+        dash_dot.push([(x + 15.0, 0.0), (x + 17.0, 0.0)]);
+    }
+    let k = kind(&shares(&dash_dot));
+    assert!(same_kind(&k, &[0.4, 0.8]), "{k:?}");
+    assert!(!same_kind(&[0.67], &[0.78]) && !same_kind(&[0.8], &[0.4, 0.8]));
+}
+
+/// Each pair of barroso-fig5's maps: L* at least 20 apart or ΔE at least 25, and dash kinds
+/// that differ; lloyd2006-fig11's three maps alike; every map at least 3 : 1 on white.
+#[test]
+fn each_pair_of_maps_differs_in_colour_and_dash() {
+    // The old colours fail (R11: #582A92 against #674CA0).
+    let (old1, old3) = ("#582A92", "#674CA0");
+    assert!((lab(old1).0[0] - lab(old3).0[0]).abs() < 20.0 && delta_e(old1, old3) < 25.0);
+    for (name, n) in [("barroso-fig5", 4), ("lloyd2006-fig11", 3)] {
+        for (form, opts) in forms() {
+            let s = svg(name, form, &opts);
+            let colours = key_colours(&s);
+            assert_eq!(colours.len(), n, "{name} {form}: {colours:?}");
+            let kinds: Vec<Vec<f64>> = colours
+                .iter()
+                .map(|c| kind(&shares(&pieces(&s, c))))
+                .collect();
+            for (i, c) in colours.iter().enumerate() {
+                assert!(contrast(c) >= 3.0, "{name} {form}: map {} {c}", i + 1);
+                assert!(
+                    !kinds[i].is_empty(),
+                    "{name} {form}: map {} no dashes",
+                    i + 1
+                );
+                for j in i + 1..n {
+                    let d = &colours[j];
+                    let dl = (lab(c).0[0] - lab(d).0[0]).abs();
+                    let de = delta_e(c, d);
+                    assert!(
+                        dl >= 20.0 || de >= 25.0,
+                        "{name} {form}: maps {} {c} and {} {d}: ΔL* {dl:.1}, ΔE {de:.1}",
+                        i + 1,
+                        j + 1
+                    );
+                    assert!(
+                        !same_kind(&kinds[i], &kinds[j]),
+                        "{name} {form}: maps {} and {} both dashed {:?}, {:?}",
+                        i + 1,
+                        j + 1,
+                        kinds[i],
+                        kinds[j]
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Map i's colour and dash kind are the same in barroso-fig5 and lloyd2006-fig11 (R11-X-1), in
+/// each form.
+#[test]
+fn map_i_looks_the_same_in_both_figures() {
+    for (form, opts) in forms() {
+        let b = svg("barroso-fig5", form, &opts);
+        let f = svg("lloyd2006-fig11", form, &opts);
+        let (cb, cf) = (key_colours(&b), key_colours(&f));
+        assert_eq!(cf.len(), 3, "{form}");
+        for (i, c) in cf.iter().enumerate() {
+            assert_eq!(c, &cb[i], "{form}: map {}", i + 1);
+            let (kb, kf) = (kind(&shares(&pieces(&b, c))), kind(&shares(&pieces(&f, c))));
+            assert!(
+                same_kind(&kb, &kf),
+                "{form}: map {} dashed {kb:?} in barroso-fig5, {kf:?} in lloyd2006-fig11",
+                i + 1
+            );
+        }
+    }
+}
+
+/// The distance from the box `r` to the point `c`.
+fn distance(r: &[f64; 4], c: (f64, f64)) -> f64 {
+    let dx = (r[0] - c.0).max(c.0 - r[2]).max(0.0);
+    let dy = (r[1] - c.1).max(c.1 - r[3]).max(0.0);
+    dx.hypot(dy)
+}
+
+/// Whether `ink` is `colour` or `colour` darkened (each channel scaled by one factor, within
+/// rounding).
+fn darkened(ink: &str, colour: &str) -> bool {
+    let (a, b) = (rgb(ink), rgb(colour));
+    let k = a.iter().sum::<f64>() / b.iter().sum::<f64>();
+    k <= 1.0 + 1e-9 && a.iter().zip(&b).all(|(x, y)| (x - k * y).abs() <= 1.5)
+}
+
+/// In barroso-fig5's details each map whose rectangle the detail shows whole and large enough
+/// for a digit is numbered: (b) (z ≤ 31.62) maps 2 and 3, (d) (z ≤ 10) maps 1 and 2, (f)
+/// (z ≤ 40.81) maps 2 and 3 (map 1 is 3.7 × 2.2 light-space units in (b) and (f), a few units
+/// on the page). Each number is in its map's colour or that darkened, at least 4.5 : 1 on
+/// white, and sits at a corner of its own map's rectangle: within 25 units of it, outside the
+/// number's box, and no other map's corner is nearer.
+#[test]
+fn numbers_sit_at_their_own_maps_corners() {
+    let font = Font::dejavu();
+    for (form, opts) in forms() {
+        let s = svg("barroso-fig5", form, &opts);
+        let colours = key_colours(&s);
+        for (from, to, want) in [
+            ("(b)", Some("(c)"), [2, 3]),
+            ("(d)", Some("(e)"), [1, 2]),
+            // The last panel drawn (the key is drawn first).
+            ("(f)", None, [2, 3]),
+        ] {
+            let a = s.find(&format!(">{from}")).unwrap();
+            // Up to the next title's element.
+            let b = to.map_or(s.len(), |to| {
+                let b = a + s[a..].find(&format!(">{to}")).unwrap();
+                s[..b].rfind("<text").unwrap()
+            });
+            let part = &s[a..b];
+            // Each map's rectangle in this panel: the bounding box of its outline.
+            let rects: Vec<Option<[f64; 4]>> = colours
+                .iter()
+                .map(|c| {
+                    let pts: Vec<(f64, f64)> = part
+                        .lines()
+                        .filter(|l| l.starts_with("<polyline"))
+                        .filter(|l| {
+                            attr_str(l, "stroke").is_some_and(|x| x.eq_ignore_ascii_case(c))
+                        })
+                        .flat_map(points)
+                        .collect();
+                    (!pts.is_empty()).then(|| read::bbox(&pts))
+                })
+                .collect();
+            let corners = |r: &[f64; 4]| [(r[0], r[1]), (r[2], r[1]), (r[2], r[3]), (r[0], r[3])];
+            let mut seen = Vec::new();
+            for t in read::texts(&font, part) {
+                let Ok(i) = t.content.parse::<usize>() else {
+                    continue;
+                };
+                if !(1..=4).contains(&i) {
+                    continue;
+                }
+                let ink = attr_str(&t.tag, "fill").unwrap().to_uppercase();
+                let own = &colours[i - 1];
+                assert!(
+                    darkened(&ink, own) && contrast(&ink) >= 4.5,
+                    "{form} {from}: \"{i}\" in {ink}, map {i} is {own}"
+                );
+                let rect =
+                    rects[i - 1].unwrap_or_else(|| panic!("{form} {from}: map {i} not drawn"));
+                let (near, d) = corners(&rect)
+                    .into_iter()
+                    .map(|c| (c, distance(&t.bbox, c)))
+                    .min_by(|x, y| x.1.total_cmp(&y.1))
+                    .unwrap();
+                assert!(
+                    d > 0.0 && d <= 25.0,
+                    "{form} {from}: \"{i}\" {:?} is {d:.1} from map {i}'s corner {near:?}",
+                    t.bbox
+                );
+                for (j, r) in rects.iter().enumerate().filter(|(j, _)| *j != i - 1) {
+                    for c in r.iter().flat_map(corners) {
+                        assert!(
+                            distance(&t.bbox, c) >= d,
+                            "{form} {from}: \"{i}\" nearer map {}'s corner {c:?} than its own",
+                            j + 1
+                        );
+                    }
+                }
+                seen.push(i);
+            }
+            for i in want {
+                assert!(
+                    seen.contains(&i),
+                    "{form} {from}: map {i} not numbered ({seen:?})"
+                );
+            }
+        }
+    }
+}
