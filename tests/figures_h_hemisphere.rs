@@ -85,8 +85,14 @@ fn disks(svg: &str) -> (Vec<((f64, f64), Vec<f64>)>, Vec<(String, f64)>) {
             _ => continue,
         };
         if l.points.len() > 100 && (first.0 - last.0).hypot(first.1 - last.1) <= 0.5 {
-            let (c, _) = circle(&l.points);
-            arcs.push((usize::MAX, c, l.points, l.stroke, l.width));
+            // A circle, not another closed line (lloyd2006-fig7's contours in (a)).
+            let (c, r) = circle(&l.points);
+            if l.points
+                .iter()
+                .all(|p| ((p.0 - c.0).hypot(p.1 - c.1) - r).abs() < 1.0)
+            {
+                arcs.push((usize::MAX, c, l.points, l.stroke, l.width));
+            }
         } else if l.points.len() > 10 {
             let mid = l.points[l.points.len() / 2];
             if let Some((c, r)) = circle3(first, mid, last) {
@@ -128,18 +134,23 @@ fn disks(svg: &str) -> (Vec<((f64, f64), Vec<f64>)>, Vec<(String, f64)>) {
 
 /// The figures with hemispheres and their disks in two columns and in one: lloyd2006-fig7's
 /// five panels, and in two columns a sixth disk, the ring key with no data in the sixth cell
-/// (fifth review: the key's labels covered (a)'s data); one column keys (a) itself.
-const HEMISPHERES: [(&str, usize, usize); 2] =
-    [("lloyd2006-fig7", 6, 5), ("martin-tan-fig6", 1, 1)];
+/// (fifth review: the key's labels covered (a)'s data); one column keys (a) itself. Last, the
+/// width of the rings: lloyd2006-fig7's half a unit (grey, under (a)'s contours: the eleventh
+/// review, R11-lloyd2006-fig7-1), martin-tan-fig6's one unit.
+const HEMISPHERES: [(&str, usize, usize, f64); 2] = [
+    ("lloyd2006-fig7", 6, 5, 0.5),
+    ("martin-tan-fig6", 1, 1, 1.0),
+];
 
 /// Each ring once, in one style (review: "rings print as double rings"): in both figures and
-/// both layouts every disk, lloyd2006-fig7's key disk included, has exactly five circles, at (90° − el)/90° of the horizon's radius
-/// for el = 0°, 10°, 20°, 30°, 60° (the azimuthal equidistant projection, by hand), and every
-/// circle of the figure has one stroke colour and a width of one unit; none is white (the old
-/// halo under each inner ring was a white circle three units wide beside the dark one).
+/// both layouts every disk, lloyd2006-fig7's key disk included, has exactly five circles, at
+/// (90° − el)/90° of the horizon's radius for el = 0°, 10°, 20°, 30°, 60° (the azimuthal
+/// equidistant projection, by hand), and every circle of the figure has one stroke colour and
+/// one width (the figure's: [`HEMISPHERES`]); none is white (the old halo under each inner
+/// ring was a white circle three units wide beside the dark one).
 #[test]
 fn each_ring_is_drawn_once_in_one_style() {
-    for (name, double, single) in HEMISPHERES {
+    for (name, double, single, width) in HEMISPHERES {
         for (column, n) in [(Column::Double, double), (Column::Single, single)] {
             let s = svg(name, column, false);
             let (found, styles) = disks(&s);
@@ -156,7 +167,10 @@ fn each_ring_is_drawn_once_in_one_style() {
             assert_ne!(stroke, "#FFFFFF", "{name} {column:?}");
             for (s, w) in &styles {
                 assert_eq!(s, stroke, "{name} {column:?}: rings in two colours");
-                assert!((w - 1.0).abs() < 1e-9, "{name} {column:?}: a ring {w} wide");
+                assert!(
+                    (w - width).abs() < 1e-9,
+                    "{name} {column:?}: a ring {w} wide"
+                );
             }
         }
     }
@@ -234,7 +248,7 @@ fn the_line_across_a_disk_is_explained_or_absent() {
 #[test]
 fn the_key_covers_little_of_its_disk_in_one_column() {
     let font = Font::dejavu();
-    for (name, _, _) in HEMISPHERES {
+    for (name, _, _, _) in HEMISPHERES {
         let s = svg(name, Column::Single, false);
         let (found, _) = disks(&s);
         let boxes: Vec<[f64; 4]> = texts(&font, &s)

@@ -16,12 +16,13 @@ fn length(p: &[(f64, f64)]) -> f64 {
         .sum()
 }
 
-/// The 2-unit black lines of `svg` (the contours' dashes and the key's samples).
+/// The 1.5-unit black lines of `svg` (the contours' dashes and the key's samples, since the
+/// eleventh review on white lines: R11-lloyd2006-fig7-1).
 fn dashes(svg: &str) -> Vec<Vec<(f64, f64)>> {
     svg.lines()
         .filter(|l| l.starts_with("<polyline"))
         .filter(|l| {
-            attr_str(l, "stroke-width") == Some("2") && attr_str(l, "stroke") == Some("#000000")
+            attr_str(l, "stroke-width") == Some("1.5") && attr_str(l, "stroke") == Some("#000000")
         })
         .map(points)
         .collect()
@@ -48,12 +49,12 @@ fn centre(t: &Text) -> (f64, f64) {
     (0.5 * (t.bbox[0] + t.bbox[2]), 0.5 * (t.bbox[1] + t.bbox[3]))
 }
 
-/// (a)'s disk: its centre and radius, from its horizon (the largest ring, #1E1E1E, left of
-/// [`A_RIGHT`] and in the first row, above y = 270).
+/// (a)'s disk: its centre and radius, from its horizon (the largest ring, grey #808080 since
+/// the eleventh review, left of [`A_RIGHT`] and in the first row, above y = 270).
 fn a_disk(svg: &str) -> ((f64, f64), f64) {
     let horizon = svg
         .lines()
-        .filter(|l| l.starts_with("<polyline") && attr_str(l, "stroke") == Some("#1E1E1E"))
+        .filter(|l| l.starts_with("<polyline") && attr_str(l, "stroke") == Some("#808080"))
         .map(points)
         .filter(|p| p.iter().all(|q| q.0 < A_RIGHT && q.1 < 270.0))
         .max_by(|a, b| span(a).total_cmp(&span(b)))
@@ -77,7 +78,7 @@ fn span(p: &[(f64, f64)]) -> f64 {
 
 /// R7-2006f7-1: (a) drew dotted and dashed black lines over its field, each labelled only with
 /// a number ("10⁶", "1.5×10⁶"); what they were was in neither the figure nor (bare) anywhere.
-/// Now a key row stands for each: a level sample of 2-unit black dashes with the text
+/// Now a key row stands for each: a level sample of black dashes (1.5 units) with the text
 /// "(a) S̄ = <its level>" right of it, on its row, dashed as (a)'s contour at that level.
 /// Which of (a)'s two dash styles is 10⁶ is read from the data's shape, not from the code:
 /// with the light in the vertical plane through the view direction (the disk's horizontal

@@ -294,20 +294,20 @@ fn strokes(svg: &str, colour: &str, width: &str) -> Vec<Vec<(f64, f64)>> {
 }
 
 /// lloyd2006-fig7 (R6-lloyd2006-fig7-2), two columns and bare: (a)'s disk (the largest ring,
-/// #1E1E1E, left of x = 173 and above y = 270: the first of three disks across 520 units, in
-/// the first of two rows) holds dashed black
-/// contour lines 2 units wide, at least 100 dashes, every point within the disk (half a line
-/// width outside the horizon at most), and none in any other panel (the key's level samples of
-/// their styles under the key disk aside); their labels "10⁶" and
+/// grey #808080 half a unit wide since the eleventh review, left of x = 173 and above y = 270:
+/// the first of three disks across 520 units, in the first of two rows) holds dashed black
+/// contour lines (1.5 units wide since the eleventh review), at least 100 dashes, every point
+/// within the disk (half a line width outside the horizon at most), and none in any other panel
+/// (the key's level samples of their styles under the key disk aside); their labels "10⁶" and
 /// "1.5×10⁶" (a `<tspan>` superscript 6, read "106" and "1.5×106") are set at 10.5 units, black,
-/// their centres at most 0.85 of the radius from the disk's centre. The old figure drew no
-/// line 2 units wide and no such label.
+/// their centres at most 0.85 of the radius from the disk's centre. The sixth review's figure
+/// drew no contour and no such label.
 #[test]
 fn fig7_a_has_labelled_contours_inside_its_disk() {
     let font = read::Font::dejavu();
     for (form, opts) in forms().into_iter().take(2) {
         let s = svg("lloyd2006-fig7", form, &opts);
-        let rings: Vec<[f64; 4]> = strokes(&s, "#1E1E1E", "1")
+        let rings: Vec<[f64; 4]> = strokes(&s, "#808080", "0.5")
             .iter()
             .map(|p| read::bbox(p))
             .filter(|b| b[2] < 173.0 && b[3] < 270.0)
@@ -323,7 +323,7 @@ fn fig7_a_has_labelled_contours_inside_its_disk() {
         );
         let r = 0.5 * (horizon[2] - horizon[0]);
         assert!(r > 40.0, "{form}: (a)'s radius {r}");
-        let dashes = strokes(&s, "#000000", "2");
+        let dashes = strokes(&s, "#000000", "1.5");
         let in_a: Vec<&Vec<(f64, f64)>> = dashes
             .iter()
             .filter(|p| p.iter().all(|q| q.0 < 173.0))
@@ -338,7 +338,7 @@ fn fig7_a_has_labelled_contours_inside_its_disk() {
                 );
             }
         }
-        // The other panels' dashes: 2-unit black lines are the contours only, and the key's
+        // The other panels' dashes: 1.5-unit black lines are the contours only, and the key's
         // samples of their styles (R7-2006f7-1), level, under the key disk in the last third
         // of the page's width and its second row.
         for p in dashes.iter().filter(|p| p.iter().any(|q| q.0 >= 173.0)) {

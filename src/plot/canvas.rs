@@ -203,6 +203,8 @@ thread_local! {
     static FINE: Cell<bool> = const { Cell::new(false) };
     /// Set by a [`Canvas`] that answers [`Fine`]'s probe.
     static FINE_OK: Cell<bool> = const { Cell::new(false) };
+    /// Set while a [`FineWidth`] line is drawn: its width in 1/[`SUBUNIT`] figure units.
+    static WIDTH: Cell<Option<u32>> = const { Cell::new(None) };
 }
 
 /// The pixel [`Fine`] probes its backend with: a [`Canvas`] answers it and draws nothing.
@@ -247,9 +249,16 @@ impl<B: DrawingBackend> Canvas<B> {
     }
 
     fn stroke<S: BackendStyle>(&self, style: &S) -> Stroke {
+        // A [`FineWidth`] line: its width to 1/SUBUNIT of a unit, at least one inner unit.
+        let width = match WIDTH.get() {
+            Some(w) if FINE.get() => {
+                ((w as i32 * self.scale + SUBUNIT / 2) / SUBUNIT).max(1) as u32
+            }
+            _ => style.stroke_width() * self.scale as u32,
+        };
         Stroke {
             color: style.color(),
-            width: style.stroke_width() * self.scale as u32,
+            width,
         }
     }
 }
@@ -558,6 +567,43 @@ impl<DB: DrawingBackend> Drawable<DB> for Fine {
             None => backend.fill_polygon(pts, &self.colour),
         };
         FINE.set(false);
+        done
+    }
+}
+
+/// A [`Fine`] polyline whose width is given to 1/[`SUBUNIT`] of a unit (`width` in those
+/// steps: 5 is half a unit), for lines narrower than plotters' whole-unit widths allow. On a
+/// [`Canvas`] the width is kept to its inner units (at least one); any other backend gets it
+/// rounded to whole units, at least one.
+pub(crate) struct FineWidth {
+    pub points: Vec<(f64, f64)>,
+    pub colour: BackendColor,
+    pub width: u32,
+}
+
+impl<'a> PointCollection<'a, BackendCoord> for &'a FineWidth {
+    type Point = &'a BackendCoord;
+    type IntoIter = [&'a BackendCoord; 0];
+    fn point_iter(self) -> Self::IntoIter {
+        []
+    }
+}
+
+impl<DB: DrawingBackend> Drawable<DB> for FineWidth {
+    fn draw<I: Iterator<Item = BackendCoord>>(
+        &self,
+        _: I,
+        backend: &mut DB,
+        parent: (u32, u32),
+    ) -> Result<(), DrawingErrorKind<DB::ErrorType>> {
+        let line = Fine {
+            points: self.points.clone(),
+            colour: self.colour,
+            stroke: Some(((self.width + SUBUNIT as u32 / 2) / SUBUNIT as u32).max(1)),
+        };
+        WIDTH.set(Some(self.width));
+        let done = line.draw(std::iter::empty(), backend, parent);
+        WIDTH.set(None);
         done
     }
 }

@@ -2,8 +2,8 @@
 //! the crate's measurement of each scheme's own matrices ([`crate::scheme::sweep::sweep`]).
 
 use super::chart::{
-    column, decades, draw_colour_bar, draw_colour_bar_across, draw_hemisphere_keyed, fmt_power,
-    fmt_times_ten, frame, Axis, ColourScale, PolarGrid,
+    column, decades, draw_colour_bar, draw_colour_bar_across, draw_hemisphere_ringed, fmt_power,
+    fmt_times_ten, frame, Axis, ColourScale, PolarGrid, RINGS_GREY,
 };
 use super::{Column, Fail, Figure};
 use crate::maps::WarpRule;
@@ -26,11 +26,11 @@ use contour::{contour, draw_contour_key, draw_contours, Contour};
 pub(super) const A_CONTOURS: [f64; 2] = [1e6, 1.5e6];
 
 /// Where each contour's label is written: its line's point nearest to this disk point (radius
-/// 1; −x behind, −y the viewer's right) where the label fits in the disk: 10⁶ on the valley
-/// along the vertical plane through the view direction, in front between the 30° and 10°
-/// rings; 1.5×10⁶ on the ridge behind, on the viewer's left (the top), clear of one column's
-/// ring key (10°, 20°, 30° on the viewer's right, 60° and 90° on the middle).
-const A_LABELS: [(f64, f64); 2] = [(0.6, 0.0), (-0.45, 0.45)];
+/// 1; −x behind, −y the viewer's right) where the label fits in the disk clear of the other
+/// contour: 10⁶ on the valley along the vertical plane through the view direction, in front
+/// inside the 30° ring; 1.5×10⁶ on the inner end of the lobe behind on the viewer's left (the
+/// top), round the ridge there.
+const A_LABELS: [(f64, f64); 2] = [(0.45, 0.0), (-0.3, 0.5)];
 
 /// The cells of a sweep: each sample owns the band of elevations and azimuths halfway to its
 /// neighbours (the horizon and zenith rows half bands).
@@ -284,24 +284,21 @@ impl Figure for Fig7 {
             // disk in the sixth cell instead (the fifth review: the key's boxes covered (a)'s
             // data, and the sixth cell was empty).
             let keyed = single && k == 0;
-            let r = draw_hemisphere_keyed(&cell(k as u32), &p.title, &p.grid, scale, keyed, false)?;
+            // Every disk's rings thin and grey, (a)'s under its contours (R11-lloyd2006-fig7-1),
+            // the others' alike: one ring style in the figure.
+            let r = draw_hemisphere_ringed(
+                &cell(k as u32),
+                &p.title,
+                &p.grid,
+                scale,
+                keyed,
+                false,
+                RINGS_GREY,
+            )?;
             // (a)'s contours in two columns (and bare); one column's disks, about 38 units across
             // the radius, hold the ring key in (a), and there the contours' labels ran into it.
             if k == 0 && !single {
-                // Under each label the field's colour at the label's direction.
-                let (ne, na) = (FIG7_ELEVATIONS, FIG7_AZIMUTHS);
-                let fill = |(el, az): (f64, f64)| {
-                    let i = (el / FRAC_PI_2 * (ne - 1) as f64).round() as usize;
-                    let j = (az.rem_euclid(TAU) / TAU * na as f64).round() as usize % na;
-                    let v = p
-                        .grid
-                        .values
-                        .get(i.min(ne - 1) * na + j)
-                        .copied()
-                        .flatten()?;
-                    Some(scale.level_colour(scale.level(v)?))
-                };
-                draw_contours(&cell(0), &self.contours, &A_LABELS, &fill)?;
+                draw_contours(&cell(0), &self.contours, &A_LABELS)?;
             }
             disk_rows.push(r);
         }
@@ -339,7 +336,7 @@ impl Figure for Fig7 {
                 az_edges: vec![0.0, TAU],
                 values: vec![None],
             };
-            draw_hemisphere_keyed(&key, KEY_TITLE, &empty, s, true, false)?;
+            draw_hemisphere_ringed(&key, KEY_TITLE, &empty, s, true, false, RINGS_GREY)?;
         }
         Ok(())
     }
@@ -517,6 +514,43 @@ mod tests {
             bands(2).len(),
             bands(1).len()
         );
+    }
+
+    /// The rings' grey (R11-lloyd2006-fig7-1: thin grey rings under (a)'s contours; the first
+    /// review: rings must show on the dark colours) against the darkest and the lightest
+    /// colour of every panel (the colours of its least and largest value, on its own scale),
+    /// by WCAG's contrast ratio computed here: at least 1.9 : 1 on each, and at least 3 : 1 on
+    /// the white of the key disk, as every line on white. No one grey does better than 1.98 : 1
+    /// on both (a)'s darkest green (8.65×10⁵, relative luminance 0.49) and (c)'s lightest blue
+    /// (1999, 0.09): #808080 has 2.0 and 1.93 : 1 there. The old near-black rings had 1.77 : 1
+    /// on (b)'s darkest navy.
+    #[test]
+    fn fig7_rings_show_on_every_panels_darkest_and_lightest_colour() {
+        use super::super::chart::RINGS_GREY;
+        let fig = fig7().map_err(|e| e.named("lloyd2006-fig7")).unwrap();
+        let lum = |RGBColor(r, g, b): RGBColor| {
+            let lin = |u: u8| {
+                let v = f64::from(u) / 255.0;
+                if v <= 0.04045 {
+                    v / 12.92
+                } else {
+                    ((v + 0.055) / 1.055).powf(2.4)
+                }
+            };
+            0.2126 * lin(r) + 0.7152 * lin(g) + 0.0722 * lin(b)
+        };
+        let (r, g, b) = RINGS_GREY.rgb;
+        let ring = lum(RGBColor(r, g, b));
+        let contrast = |l: f64| (ring.max(l) + 0.05) / (ring.min(l) + 0.05);
+        assert!(contrast(1.0) >= 3.0, "{} on white", contrast(1.0));
+        let panels = fig.panels.iter().map(|p| (p, &fig.scale));
+        for (p, scale) in panels.chain([(&fig.ratio, &fig.ratio_scale)]) {
+            for v in [p.min, p.max] {
+                let colour = scale.level_colour(scale.level(v).unwrap());
+                let c = contrast(lum(colour));
+                assert!(c >= 1.9, "{}: {v} in {colour:?}, {c:.2} : 1", p.title);
+            }
+        }
     }
 
     /// The figure as drawn, in both layouts (review X3, X5, X8 and its Fig 7 items), read back

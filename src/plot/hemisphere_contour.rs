@@ -5,10 +5,10 @@
 //!
 //! A contour is traced by marching squares over the sweep's samples (elevation rows, azimuth
 //! columns that wrap round), interpolated linearly in log₁₀ of the field, and drawn in the
-//! disk's azimuthal equidistant projection ([`hemisphere_xy`]), dashed, with its value written on
-//! it in a break of the line.
+//! disk's azimuthal equidistant projection ([`hemisphere_xy`]), black dashes on a white line,
+//! with its value written on it, over the line's white.
 
-use super::super::canvas::Fine;
+use super::super::canvas::FineWidth;
 use super::super::chart::{column, dash_pattern, fmt_power, hemisphere_disk, hemisphere_xy, FONT};
 use super::super::{Column, Fail};
 use crate::scheme::sweep::SweepGrid;
@@ -144,11 +144,22 @@ fn join(segments: &[(Edge, Edge)]) -> Vec<Vec<Edge>> {
     runs
 }
 
-/// The contours' ink: black, 2 units wide, dashed, so that they stand apart from the rings
-/// (near black, solid, 1 unit): the first level in short dashes (3 on, 2 off), the next in long
-/// ones (8 on, 3 off).
+/// The contours' ink: black dashes 1.5 units wide ([`CORE`] tenths) along a white line under
+/// each contour ([`HALO`] tenths: half a unit each side of the dashes), so that they stand apart
+/// from the rings (grey, half a unit: [`super::super::chart::RINGS_GREY`]) and show where they
+/// run along the disk's rim or along each other (the eleventh review, R11-lloyd2006-fig7-1:
+/// black contours 2 units wide over black rings a unit wide could not be told from the rim);
+/// the first level in short dashes (3 on, 2 off), the next in long ones (8 on, 3 off).
 const INK: (u8, u8, u8) = (0, 0, 0);
+const HALO_INK: (u8, u8, u8) = (255, 255, 255);
+pub(super) const CORE: u32 = 15;
+pub(super) const HALO: u32 = 25;
 pub(super) const DASHES: [[f64; 2]; 2] = [[3.0, 2.0], [8.0, 3.0]];
+
+/// How far (units) every other contour keeps from a label's box: a label names the one line
+/// that runs through it, never one of two between which it stands (R11-lloyd2006-fig7-1:
+/// "1.5×10⁶" stood between two lobes).
+const CLEAR: f64 = 3.0;
 
 /// The size of a contour's label: the ring key's (plotters' size 13, 10.5 units in the SVG;
 /// in one column, where a disk's radius is about 38 units, 10, printed 6.5 pt).
@@ -160,91 +171,139 @@ fn label_size() -> u32 {
     }
 }
 
+/// Draws `lines` (absolute units) as a contour's white line ([`HALO`]) where `halo`, else as
+/// its black dashes ([`CORE`], `dashes` on and off) leaving out the points inside any of
+/// `gaps` ([x min, y min, x max, y max], absolute units: its label's glyphs).
+fn draw_line<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    lines: &[Vec<(f64, f64)>],
+    dashes: &[f64; 2],
+    halo: bool,
+    gaps: &[[f64; 4]],
+) -> Result<(), Fail> {
+    let colour = |rgb| BackendColor { alpha: 1.0, rgb };
+    for line in lines {
+        if halo {
+            area.draw(&FineWidth {
+                points: line.clone(),
+                colour: colour(HALO_INK),
+                width: HALO,
+            })?;
+            continue;
+        }
+        let inside = |p: &(f64, f64)| {
+            gaps.iter()
+                .any(|g| p.0 >= g[0] && p.0 <= g[2] && p.1 >= g[1] && p.1 <= g[3])
+        };
+        for dash in dash_pattern(line, dashes, 1.0) {
+            for run in dash.split(inside).filter(|r| r.len() >= 2) {
+                area.draw(&FineWidth {
+                    points: run.to_vec(),
+                    colour: colour(INK),
+                    width: CORE,
+                })?;
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Draws `contours` over the hemisphere panel `area` (as [`draw_hemisphere_keyed`] lays it
-/// out: [`hemisphere_disk`]), each dashed, its value ([`fmt_power`]) written once on it at the
-/// point of its lines nearest to the disk point `label_at[k]` (radius 1), on a box of the
-/// field's own colour there (`fill`, given the light direction), which breaks the line and the
-/// rings under the label, as a contour label does, without a white patch on the data.
+/// out: [`hemisphere_disk`]): each a white line with black dashes on it (the white lines of all
+/// first, so that where two contours run side by side both show), and its value
+/// ([`fmt_power`]) written once, centred on a point of its own line, with no box: the point
+/// nearest to the disk point `label_at[k]` (radius 1) where the label's box lies inside the
+/// disk, clear of the labels set before and [`CLEAR`] units clear of every other contour. Under
+/// the label's glyphs the line keeps its white and leaves out its dashes, so that it runs on
+/// through its label, as the rings run through the ring key's.
 ///
 /// [`draw_hemisphere_keyed`]: super::super::chart::draw_hemisphere_keyed
 pub(super) fn draw_contours<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     contours: &[Contour],
     label_at: &[(f64, f64)],
-    fill: &dyn Fn((f64, f64)) -> Option<RGBColor>,
 ) -> Result<(), Fail> {
     let (w, h) = area.dim_in_pixel();
     let ((cx, cy), r) = hemisphere_disk(w, h);
     let (bx, by) = area.get_base_pixel();
+    let (bx, by) = (f64::from(bx), f64::from(by));
     let to_units = |(el, az): (f64, f64)| {
         let (x, y) = hemisphere_xy(el, az);
         (cx + r * x, cy - r * y)
     };
     let style = TextStyle::from((FONT, label_size()).into_font());
+    // Each contour's lines in units of `area`.
+    let lines: Vec<Vec<Vec<(f64, f64)>>> = contours
+        .iter()
+        .map(|c| {
+            c.lines
+                .iter()
+                .map(|l| l.iter().map(|&p| to_units(p)).collect())
+                .collect()
+        })
+        .collect();
     let mut labels: Vec<Label> = Vec::new();
     for (k, (c, &want)) in contours.iter().zip(label_at).enumerate() {
         let text = fmt_power(c.level);
         let (tw, th) = area.estimate_text_size(&text, &style)?;
-        let lines: Vec<Vec<(f64, f64)>> = c
-            .lines
-            .iter()
-            .map(|l| l.iter().map(|&p| to_units(p)).collect())
-            .collect();
         let want = (cx + r * want.0, cy - r * want.1);
-        // The label's box, a unit round its glyphs: the line is broken there.
-        let (hw, hh) = (0.5 * f64::from(tw) + 1.5, 0.5 * f64::from(th) + 1.0);
+        // The label's box, a unit round its glyphs.
+        let (hw, hh) = (0.5 * f64::from(tw) + 1.0, 0.5 * f64::from(th));
         // Its point: the nearest to `want` whose box lies inside the disk (2 units in from the
-        // rim) and clear of the labels set before.
+        // rim), clear of the labels set before and of the other contours.
         let fits = |p: &(f64, f64)| {
             let inside = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
                 .iter()
                 .all(|(sx, sy)| dist((p.0 + sx * hw, p.1 + sy * hh), (cx, cy)) <= r - 2.0);
-            let clear = labels.iter().all(|(_, q, (qw, qh), _): &Label| {
+            let clear = labels.iter().all(|(_, q, (qw, qh))| {
                 (p.0 - q.0).abs() >= hw + qw || (p.1 - q.1).abs() >= hh + qh
             });
-            inside && clear
+            let alone = lines
+                .iter()
+                .enumerate()
+                .filter(|(m, _)| *m != k)
+                .flat_map(|(_, l)| l.iter().flatten())
+                .all(|q| (q.0 - p.0).abs() > hw + CLEAR || (q.1 - p.1).abs() > hh + CLEAR);
+            inside && clear && alone
         };
-        let Some((&at, &dir)) = lines
-            .iter()
-            .flatten()
-            .zip(c.lines.iter().flatten())
-            .filter(|(p, _)| fits(p))
-            .min_by(|a, b| dist(*a.0, want).total_cmp(&dist(*b.0, want)))
+        // Where the line runs across the label (within 25° of the horizontal from the points
+        // two before to two after), so that it enters at one side and leaves at the other.
+        let across = lines[k].iter().flat_map(|l| {
+            (2..l.len().saturating_sub(2)).filter_map(move |i| {
+                let (a, b) = (l[i - 2], l[i + 2]);
+                let level = (b.1 - a.1).abs() <= (b.0 - a.0).abs() * 25f64.to_radians().tan();
+                level.then_some(l[i])
+            })
+        });
+        let Some(at) = across
+            .filter(|p| fits(p))
+            .min_by(|a, b| dist(*a, want).total_cmp(&dist(*b, want)))
         else {
             return Err(Fail::Draw(format!(
-                "the contour at {text} has no point for its label inside the disk"
+                "the contour at {text} has no point for its label inside the disk, clear of \
+                 the other contours"
             )));
         };
-        let gap = |p: &(f64, f64)| (p.0 - at.0).abs() <= hw && (p.1 - at.1).abs() <= hh;
-        for line in &lines {
-            for run in line.split(gap).filter(|run| run.len() >= 2) {
-                for dash in dash_pattern(run, &DASHES[k % DASHES.len()], 1.0) {
-                    area.draw(&Fine {
-                        points: dash
-                            .iter()
-                            .map(|p| (p.0 + f64::from(bx), p.1 + f64::from(by)))
-                            .collect(),
-                        colour: BackendColor {
-                            alpha: 1.0,
-                            rgb: INK,
-                        },
-                        stroke: Some(2),
-                    })?;
-                }
-            }
+        labels.push((text, at, (hw, hh)));
+    }
+    let absolute = |l: &Vec<(f64, f64)>| -> Vec<(f64, f64)> {
+        l.iter().map(|p| (p.0 + bx, p.1 + by)).collect()
+    };
+    for halo in [true, false] {
+        for (k, (l, label)) in lines.iter().zip(&labels).enumerate() {
+            let l: Vec<Vec<(f64, f64)>> = l.iter().map(absolute).collect();
+            let (_, at, (hw, hh)) = label;
+            let gap = [
+                at.0 - hw + bx,
+                at.1 - hh + by,
+                at.0 + hw + bx,
+                at.1 + hh + by,
+            ];
+            draw_line(area, &l, &DASHES[k % DASHES.len()], halo, &[gap])?;
         }
-        labels.push((text, at, (hw, hh), fill(dir)));
     }
     // The labels last, over every contour's line.
-    for (text, at, (hw, hh), colour) in labels {
-        if let Some(colour) = colour {
-            let (x, y) = (at.0.round() as i32, at.1.round() as i32);
-            let (hw, hh) = (hw.round() as i32, hh.round() as i32);
-            area.draw(&Rectangle::new(
-                [(x - hw, y - hh), (x + hw, y + hh)],
-                colour.filled(),
-            ))?;
-        }
+    for (text, at, _) in labels {
         area.draw(&Text::new(
             text,
             (at.0.round() as i32, at.1.round() as i32),
@@ -269,19 +328,18 @@ pub(super) fn draw_contour_key<DB: DrawingBackend>(
     let row = label_size() + 3;
     for (k, c) in contours.iter().enumerate() {
         let y = KEY_PAD + f64::from(row) * (k as f64 + 0.5);
-        let sample = [(0.0, y), (KEY_SAMPLE, y)];
-        for dash in dash_pattern(&sample, &DASHES[k % DASHES.len()], 1.0) {
-            area.draw(&Fine {
-                points: dash
-                    .iter()
-                    .map(|p| (p.0 + f64::from(bx), p.1 + f64::from(by)))
-                    .collect(),
-                colour: BackendColor {
-                    alpha: 1.0,
-                    rgb: INK,
-                },
-                stroke: Some(2),
-            })?;
+        let sample = vec![
+            (f64::from(bx), y + f64::from(by)),
+            (KEY_SAMPLE + f64::from(bx), y + f64::from(by)),
+        ];
+        for halo in [true, false] {
+            draw_line(
+                area,
+                std::slice::from_ref(&sample),
+                &DASHES[k % DASHES.len()],
+                halo,
+                &[],
+            )?;
         }
         area.draw(&Text::new(
             format!("(a) S̄ = {}", fmt_power(c.level)),
@@ -297,8 +355,8 @@ pub(super) fn draw_contour_key<DB: DrawingBackend>(
 const KEY_SAMPLE: f64 = 22.0;
 const KEY_PAD: f64 = 5.0;
 
-/// A contour's label: its text, centre, half width and height (units), and the colour under it.
-type Label = (String, (f64, f64), (f64, f64), Option<RGBColor>);
+/// A contour's label: its text, centre, and half width and height (units).
+type Label = (String, (f64, f64), (f64, f64));
 
 fn dist(a: (f64, f64), b: (f64, f64)) -> f64 {
     (a.0 - b.0).hypot(a.1 - b.1)

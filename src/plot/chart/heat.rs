@@ -382,6 +382,20 @@ pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
     key: bool,
     diameter: bool,
 ) -> Result<(u32, u32), Fail> {
+    let dark = super::hemisphere_key::RINGS_DARK;
+    draw_hemisphere_ringed(area, title, grid, scale, key, diameter, dark)
+}
+
+/// [`draw_hemisphere_keyed`] with its rings and diameter drawn in `rings`.
+pub(crate) fn draw_hemisphere_ringed<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    title: &str,
+    grid: &PolarGrid,
+    scale: &ColourScale,
+    key: bool,
+    diameter: bool,
+    rings: super::hemisphere_key::RingStyle,
+) -> Result<(u32, u32), Fail> {
     let (w, h) = area.dim_in_pixel();
     let (ox, oy, side) = hemisphere_square(w, h);
     area.draw(&Text::new(
@@ -434,7 +448,7 @@ pub(crate) fn draw_hemisphere_keyed<DB: DrawingBackend>(
     } else {
         Vec::new()
     };
-    super::hemisphere_key::draw_rings(area, &abs, diameter, &gaps)?;
+    super::hemisphere_key::draw_rings(area, &abs, diameter, &gaps, rings)?;
     let style = TextStyle::from((FONT, 13).into_font());
     let label = |text: &str, at: (f64, f64), pos: Pos| {
         area.draw(&Text::new(text.to_string(), to_px(at), style.pos(pos)))

@@ -2,7 +2,7 @@
 //! ring's angle on the ring and 90° at the centre (overhead), so that a figure without its
 //! caption still says what the rings and the centre are.
 
-use super::super::canvas::Fine;
+use super::super::canvas::FineWidth;
 use super::super::Fail;
 use super::heat::hemisphere_xy;
 use super::FONT;
@@ -18,8 +18,33 @@ pub(crate) const RINGS: [f64; 5] = [0.0, 10.0, 20.0, 30.0, 60.0];
 /// The one style of every ring and of the diameter: a line one unit wide, near black.
 pub(crate) const RING_INK: (u8, u8, u8) = (30, 30, 30);
 
-/// Draws the rings of [`RINGS`], each once in one style ([`RING_INK`], one unit: a light halo
-/// under each ring printed as a second ring beside it), and where `diameter` the horizontal
+/// The style of a figure's rings and diameter: their colour and width (tenths of a unit).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct RingStyle {
+    pub rgb: (u8, u8, u8),
+    pub tenths: u32,
+}
+
+/// The rings' usual style: [`RING_INK`], one unit wide.
+pub(crate) const RINGS_DARK: RingStyle = RingStyle {
+    rgb: RING_INK,
+    tenths: 10,
+};
+
+/// Thin grey rings, half a unit wide, for a figure that draws its own lines over a panel
+/// (lloyd2006-fig7's contours: the eleventh review, R11-lloyd2006-fig7-1, found them hard to
+/// tell from black rings of their weight). The grey, #808080 (relative luminance 0.216), stands
+/// 3.1 : 1 against viridis' lightest yellow (#FDE725), 3.9 : 1 against its darkest purple
+/// (#440154) and 3.9 : 1 against white, so that a ring shows at either end of a map (the first
+/// figure review: rings vanished on the dark colours); on mid-tones, where any one grey must
+/// fade, it keeps about 2 : 1 (lloyd2006-fig7's (a) green and (c) blue).
+pub(crate) const RINGS_GREY: RingStyle = RingStyle {
+    rgb: (128, 128, 128),
+    tenths: 5,
+};
+
+/// Draws the rings of [`RINGS`], each once in one style (`style`: no light halo, which
+/// printed as a second ring beside each ring), and where `diameter` the horizontal
 /// diameter, the vertical plane through the view direction (light straight behind, overhead,
 /// straight in front), in the same style; `abs` places a disk point (radius 1) in absolute
 /// backend units, at sub-unit positions, so that the rings are round, not stepped. Each line
@@ -31,6 +56,7 @@ pub(crate) fn draw_rings<DB: DrawingBackend>(
     abs: &dyn Fn((f64, f64)) -> (f64, f64),
     diameter: bool,
     gaps: &[[f64; 4]],
+    style: RingStyle,
 ) -> Result<(), Fail> {
     let stroke = |points: Vec<(f64, f64)>| {
         let inside = |p: &(f64, f64)| {
@@ -38,13 +64,13 @@ pub(crate) fn draw_rings<DB: DrawingBackend>(
                 .any(|g| p.0 >= g[0] && p.0 <= g[2] && p.1 >= g[1] && p.1 <= g[3])
         };
         for run in points.split(inside).filter(|r| r.len() >= 2) {
-            area.draw(&Fine {
+            area.draw(&FineWidth {
                 points: run.to_vec(),
                 colour: BackendColor {
                     alpha: 1.0,
-                    rgb: RING_INK,
+                    rgb: style.rgb,
                 },
-                stroke: Some(1),
+                width: style.tenths,
             })?;
         }
         Ok::<(), Fail>(())

@@ -34,6 +34,8 @@ pub(crate) use fine::{
     clip_to_rect, dash_pattern, draw_fine_line, draw_fine_path, fill_fine_points, to_backend,
 };
 pub(crate) use heat::*;
+// lloyd2006-fig7's thin grey rings under its contours (R11-lloyd2006-fig7-1).
+pub(crate) use hemisphere_key::RINGS_GREY;
 pub(crate) use label::*;
 pub(crate) use line::*;
 pub(crate) use marker::Marker;
