@@ -1376,3 +1376,29 @@ fn barroso_b_holds_the_perpendicular_lights_map_three() {
         }
     }
 }
+
+/// The eleventh review, R11-barroso-fig5-2: (b)'s x ticks read −10 and 10 without 0, unlike
+/// (d) and (f). The tick labels are now measured as DejaVu sets them (a digit 0.636 em, the
+/// minus 0.838 em, an em 0.86 of the size in the PNG), no longer 1.24 times wider: in two
+/// columns and bare, (b)'s 74-unit plot holds −10, 0 and 10 (a 10-unit step is about 20 units,
+/// the labels' half widths and gap 19.3), and in every form (d) and (f) label 0 with their
+/// ends. (One column's (b), 16 units a step, still holds −10 and 10 only.)
+#[test]
+fn barroso_details_label_zero_across() {
+    for (form, opts) in forms() {
+        let s = svg("barroso-fig5", form, &opts);
+        let panels = panel_axes(&s);
+        assert_eq!(panels.len(), 6, "{form}");
+        let has = |k: usize, v: f64| panels[k].ticks.0.iter().any(|t| (t - v).abs() < 1e-9);
+        if form != "single" {
+            for v in [-10.0, 0.0, 10.0] {
+                assert!(has(1, v), "{form} (b): {:?}", panels[1].ticks.0);
+            }
+        }
+        for (k, end) in [(3, 5.0), (5, 20.0)] {
+            for v in [-end, 0.0, end] {
+                assert!(has(k, v), "{form} panel {k}: {:?}", panels[k].ticks.0);
+            }
+        }
+    }
+}
