@@ -45,10 +45,10 @@ pub(crate) use raster::{bitmap_density, fit_to_scale};
 pub(crate) use scheme::{Look, SHARED};
 // The figures' parameter sweeps (α, ξ, f/n, partitions) take their colours from these.
 pub(crate) use scheme::{sweep, SWEEP};
-
-/// The font family every figure uses; registered from the compiled-in DejaVu Sans.
 // The third z-partition map: a hue apart from the sweep's (R11-barroso-fig5-1).
 pub(crate) use scheme::OCHRE;
+
+/// The font family every figure uses; registered from the compiled-in DejaVu Sans.
 pub(crate) const FONT: &str = "sans-serif";
 
 /// Evenly spaced samples of `[a, b]`, both ends included.
