@@ -264,10 +264,13 @@ fn darkened(ink: &str, colour: &str) -> bool {
 /// for a digit is numbered: (b) (z ≤ 31.62) maps 2 and 3, (d) (z ≤ 10) maps 1 and 2, (f)
 /// (z ≤ 40.81) maps 2 and 3 (map 1 is 3.7 × 2.2 light-space units in (b) and (f), a few units
 /// on the page). Each number is in its map's colour or that darkened, at least 4.5 : 1 on
-/// white, and sits at a corner of its own map's rectangle: within 25 units of it, outside the
-/// number's box, and no other map's corner is nearer.
+/// white, and sits by its own map's rectangle: within 25 units of one of its corners, and no
+/// other map's corner nearer, or every other map's outline farther from its text box than
+/// its own map's by half a unit or more (the digit's ink, which the code places, by two; read
+/// by the nearest corner alone, no place in (d) was clear of the frustum's
+/// diagonals: the number stood on a white box across one).
 #[test]
-fn numbers_sit_at_their_own_maps_corners() {
+fn numbers_sit_by_their_own_maps() {
     let font = Font::dejavu();
     for (form, opts) in forms() {
         let s = svg("barroso-fig5", form, &opts);
@@ -327,12 +330,57 @@ fn numbers_sit_at_their_own_maps_corners() {
                     "{form} {from}: \"{i}\" {:?} is {d:.1} from map {i}'s corner {near:?}",
                     t.bbox
                 );
-                for (j, r) in rects.iter().enumerate().filter(|(j, _)| *j != i - 1) {
-                    for c in r.iter().flat_map(corners) {
+                // The nearest outline is its own map's, every other at least 2 units farther.
+                let outline = |r: &[f64; 4]| {
+                    let sides = [
+                        [r[0], r[1], r[2], r[1]],
+                        [r[2], r[1], r[2], r[3]],
+                        [r[0], r[3], r[2], r[3]],
+                        [r[0], r[1], r[0], r[3]],
+                    ];
+                    sides
+                        .iter()
+                        .map(|e| {
+                            let b = &t.bbox;
+                            let dx = (e[0] - b[2]).max(b[0] - e[2]).max(0.0);
+                            let dy = (e[1] - b[3]).max(b[1] - e[3]).max(0.0);
+                            dx.hypot(dy)
+                        })
+                        .fold(f64::INFINITY, f64::min)
+                };
+                let mine = outline(&rect);
+                let others = || {
+                    rects
+                        .iter()
+                        .enumerate()
+                        .filter(move |(j, _)| *j != i - 1)
+                        .filter_map(|(j, r)| r.map(|r| (j, r)))
+                };
+                let by_corner = others()
+                    .all(|(_, r)| corners(&r).into_iter().all(|c| distance(&t.bbox, c) >= d));
+                for (j, r) in others() {
+                    if !by_corner {
                         assert!(
-                            distance(&t.bbox, c) >= d,
-                            "{form} {from}: \"{i}\" nearer map {}'s corner {c:?} than its own",
+                            outline(&r) >= mine + 0.5,
+                            "{form} {from}: \"{i}\" {:.1} from map {}'s outline, {mine:.1} from \
+                             its own",
+                            outline(&r),
                             j + 1
+                        );
+                    }
+                }
+                // No black line (the frustum's) runs under the number (it stood on a white box
+                // cutting a diagonal in (d)).
+                for l in part.lines().filter(|l| {
+                    l.starts_with("<polyline") && attr_str(l, "stroke") == Some("#000000")
+                }) {
+                    let pts = points(l);
+                    for w in pts.windows(2) {
+                        assert!(
+                            !read::segment_enters(w[0], w[1], &t.bbox, 0.0),
+                            "{form} {from}: \"{i}\" {:?} over a black line {:?}",
+                            t.bbox,
+                            (w[0], w[1])
                         );
                     }
                 }

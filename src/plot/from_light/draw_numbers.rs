@@ -3,7 +3,8 @@
 //! map i's number, "1" to "4" in its map's colour (made [`legible`]), at a corner of its
 //! rectangle, diagonally off the corner by [`GAP`], inside the rectangle where that is clear and
 //! else outside, or slid along a side inside it, wherever it covers no line (the frustum's, a
-//! map's outline, a leader), no other number, and stays inside the plot; where no such place
+//! map's outline, a leader), no other number, stays inside the plot, and reads as its own map's
+//! (no other map's corner nearer, or every other map's outline two units farther); where no such place
 //! is clear of the frustum's black lines, the first clear of the others, on an opaque white box
 //! that cuts the black line under it. A map none of whose corners has such room (map 1 in (b),
 //! 7 × 4 units) is not numbered.
@@ -122,8 +123,9 @@ fn lines<DB: DrawingBackend>(
 
 /// How far a number may slide along a side of its map from the corner, in steps of
 /// [`SLIDE_STEP`] units, where the corner itself has no room (a frustum's edge runs through
-/// every corner of (d)'s squares, diagonally into them).
-const SLIDES: usize = 6;
+/// every corner of (d)'s squares, diagonally into them): as far as 120 units, past any side a
+/// detail draws (the candidates stop where the box would leave the rectangle).
+const SLIDES: usize = 40;
 const SLIDE_STEP: f64 = 3.0;
 
 /// The candidate boxes (`w` × `h` pixels) for a number at the corners of the rectangle `lo`–`hi`
@@ -240,10 +242,32 @@ pub(super) fn numbers<DB: DrawingBackend>(
                     !(over_black && black) && meets([r[0] - m, r[1] - m, r[2] + m, r[3] + m], s, e)
                 })
         };
-        // No other map's corner nearer the box than its own map's nearest corner, so that the
-        // number reads as its own map's (a number slid along map 2's side in (d) sat by map 1's
-        // corner).
-        let near = |r: &PxBox, q: (DVec2, DVec2)| {
+        // Every other map's outline at least two units farther from the box than its own map's,
+        // so that the number reads
+        // as its own map's (a number slid along map 2's side in (d) sat by map 1's corner; one
+        // judged by the nearest corner instead found no place off the frustum's diagonals in
+        // (d) and stood on a white box across one).
+        let outline = |r: &PxBox, q: (DVec2, DVec2)| {
+            let (lo, hi) = (to(q.0), to(q.1));
+            let (x0, x1) = (lo.0.min(hi.0), lo.0.max(hi.0));
+            let (y0, y1) = (lo.1.min(hi.1), lo.1.max(hi.1));
+            [
+                [x0, y0, x1, y0],
+                [x1, y0, x1, y1],
+                [x0, y1, x1, y1],
+                [x0, y0, x0, y1],
+            ]
+            .into_iter()
+            .map(|e| {
+                let dx = (e[0] - r[2]).max(r[0] - e[2]).max(0.0);
+                let dy = (e[1] - r[3]).max(r[1] - e[3]).max(0.0);
+                dx.hypot(dy)
+            })
+            .fold(f64::INFINITY, f64::min)
+        };
+        // Or no other map's corner nearer than its own map's nearest (maps sharing an edge, as
+        // in (b), are equally near a box beside it).
+        let corner = |r: &PxBox, q: (DVec2, DVec2)| {
             let (lo, hi) = (to(q.0), to(q.1));
             [(lo.0, lo.1), (hi.0, lo.1), (hi.0, hi.1), (lo.0, hi.1)]
                 .into_iter()
@@ -251,11 +275,10 @@ pub(super) fn numbers<DB: DrawingBackend>(
                 .fold(f64::INFINITY, f64::min)
         };
         let own = |r: &PxBox| {
-            let d = near(r, (a, b));
-            p.maps
-                .iter()
-                .enumerate()
-                .all(|(j, &q)| j == i || near(r, q) >= d)
+            let (d, e) = (outline(r, (a, b)), corner(r, (a, b)));
+            let others = || p.maps.iter().enumerate().filter(|&(j, _)| j != i);
+            others().all(|(_, &q)| outline(r, q) >= d + CLEAR + 1.0)
+                || others().all(|(_, &q)| corner(r, q) >= e)
         };
         let boxes: Vec<PxBox> = candidates(to(a), to(b), w, h, plot)
             .into_iter()
@@ -305,16 +328,16 @@ mod tests {
     /// The candidates of a 100 × 50 rectangle from (0, 0) to (100, 50), a 6 × 8 box (by
     /// hand): the top left corner's inside box first, 3 right of and below (0, 0), then the
     /// other corners' inside boxes (the bottom right one ends 3 left of and above (100, 50)),
-    /// then three outside boxes per corner, then two slid boxes per corner and step, the first
-    /// 6 right of the top left corner; 4 + 12 + 6 · 8 = 64 in all. Two corners outside the plot
-    /// have none: 2 + 6 + 6 · 4 = 32. A box slides only as far as it stays inside: in a 20 × 50
-    /// rectangle across by 3 + 3k + 6 + 3 ≤ 20 (k ≤ 2), up by 3 + 3k + 8 + 3 ≤ 50 (all six):
-    /// 16 + 4 · (2 + 6) = 48.
+    /// then three outside boxes per corner, then the slid boxes per corner and step, the first
+    /// 6 right of the top left corner: across while 3 + 3k + 6 + 3 ≤ 100 (k ≤ 29), up while
+    /// 3 + 3k + 8 + 3 ≤ 50 (k ≤ 12); 4 + 12 + 4 · (29 + 12) = 180 in all. Two corners outside
+    /// the plot have none: 2 + 6 + 2 · (29 + 12) = 90. In a 20 × 50 rectangle across
+    /// 3 + 3k + 6 + 3 ≤ 20 (k ≤ 2), up k ≤ 12: 16 + 4 · (2 + 12) = 72.
     #[test]
     fn candidates_start_inside_the_corners() {
         let plot = [-50.0, -50.0, 200.0, 200.0];
         let c = candidates((0.0, 0.0), (100.0, 50.0), 6.0, 8.0, plot);
-        assert_eq!(c.len(), 64);
+        assert_eq!(c.len(), 180);
         assert_eq!(c[0], [3.0, 3.0, 9.0, 11.0]);
         assert_eq!(c[2], [91.0, 39.0, 97.0, 47.0]);
         assert_eq!(c[4], [-9.0, 3.0, -3.0, 11.0]);
@@ -326,8 +349,8 @@ mod tests {
             8.0,
             [-50.0, -50.0, 90.0, 200.0],
         );
-        assert_eq!(c.len(), 32);
+        assert_eq!(c.len(), 90);
         let c = candidates((0.0, 0.0), (20.0, 50.0), 6.0, 8.0, plot);
-        assert_eq!(c.len(), 48);
+        assert_eq!(c.len(), 72);
     }
 }
