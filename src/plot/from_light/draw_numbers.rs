@@ -9,7 +9,7 @@
 //! that cuts the black line under it. A map none of whose corners has such room (map 1 in (b),
 //! 7 × 4 units) is not numbered.
 
-use super::super::super::chart::{legible, Chart2d, FONT};
+use super::super::super::chart::{clip_segment, legible, Chart2d, FONT};
 use super::super::super::Fail;
 use super::super::Panel;
 use super::{edge_on, map_colour, maps::fine_stroke, FRUSTUM_WIDTH, PLANE_WIDTH};
@@ -48,31 +48,7 @@ fn distance(r: &PxBox, c: (f64, f64)) -> f64 {
 
 /// Whether the segment `a`–`b` meets the box `r` (Liang–Barsky clipping).
 fn meets(r: PxBox, a: (f64, f64), b: (f64, f64)) -> bool {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (p, q) in [
-        (-dx, a.0 - r[0]),
-        (dx, r[2] - a.0),
-        (-dy, a.1 - r[1]),
-        (dy, r[3] - a.1),
-    ] {
-        if p == 0.0 {
-            if q < 0.0 {
-                return false;
-            }
-        } else {
-            let t = q / p;
-            if p < 0.0 {
-                t0 = t0.max(t);
-            } else {
-                t1 = t1.min(t);
-            }
-            if t0 > t1 {
-                return false;
-            }
-        }
-    }
-    true
+    clip_segment(a, b, (r[0], r[2], r[1], r[3])).is_some()
 }
 
 /// The lines of panel `p` in backend pixels: the frustum's edges and faces, the split planes,
