@@ -90,6 +90,10 @@ const TITLE_INSET: i32 = 2;
 /// The grey of the box marking the region a detail panel enlarges.
 const ENLARGED: RGBColor = RGBColor(110, 110, 110);
 
+/// How far outside the detail's limits its grey box runs, in units (1 pt across two columns):
+/// the box's half width, a unit of white and the half width of a map's outline on the limit.
+const ENLARGED_OUT: f64 = 3.0;
+
 /// The grey of the leaders and their anchor dots (3.05 : 1 on white, the least for lines).
 const LEADER: RGBColor = RGBColor(148, 148, 148);
 const ANCHOR: RGBColor = RGBColor(90, 90, 90);
@@ -593,10 +597,14 @@ fn draw_panel<DB: DrawingBackend>(
     for i in 0..4 {
         solid(&[first[i], far[i]], FRUSTUM_WIDTH)?;
     }
-    // The region a detail panel enlarges, a grey box on top of the drawing: exactly the detail's
-    // axis limits (the eighth review, R8-barroso-fig5-1: grown by the maps' reach, (a)'s box was
-    // ±17.3 for (b)'s ±6.1).
+    // The region a detail panel enlarges, a grey box on top of the drawing: the detail's axis
+    // limits (the eighth review, R8-barroso-fig5-1: grown by the maps' reach, (a)'s box was
+    // ±17.3 for (b)'s ±6.1), drawn [`ENLARGED_OUT`] units outside them, so that a map's outline
+    // on a limit does not hide it (the twelfth review, R12-barroso-fig5-1: (c)'s box lay under
+    // map 2's outline, (a)'s and (e)'s shared three sides with map 3's).
     if let Some((a, b)) = enlarged {
+        let out = DVec2::splat(ENLARGED_OUT / per_unit);
+        let (a, b) = (a - out, b + out);
         let corners = [a, DVec2::new(b.x, a.y), b, DVec2::new(a.x, b.y), a];
         // At a tenth of a unit, as the maps' outlines: the box lies on the detail's limits, not
         // on the pixels next to them.
