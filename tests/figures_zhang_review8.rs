@@ -18,9 +18,9 @@ fn caption(all: &[Text]) -> String {
 /// R7-Z3-1: the blocks' titles wrote "(a) E_p = 2 m_z (⊥ light)", notation no text explained.
 /// In no form does any text of the figure write "⊥"; the titles read "(a) E_p = 2 m_z" and
 /// "(b) E_q = 2 m_x" (subscripts read inline); each captioned form says in words what m is,
-/// Lloyd 2006's error on a surface facing the light ("m: Lloyd 2006's error (Eq 7, 8) … facing
-/// the light", written out since the eleventh review, R11-zhang-fig3-1), and the factor 2 ("×2
-/// for Zhang's span [−1, 1]"), in at most five lines.
+/// Lloyd 2006's error on a surface facing the light ("m: Lloyd 2006's error … facing the light",
+/// written out since the eleventh review, R11-zhang-fig3-1), and the factor 2 ("×2 for Zhang's …
+/// [−1, 1]"), in at most five lines.
 #[test]
 fn m_is_explained_in_words_not_marked_in_the_titles() {
     let font = Font::dejavu();
@@ -48,10 +48,13 @@ fn m_is_explained_in_words_not_marked_in_the_titles() {
             .count();
         assert!((1..=5).contains(&lines), "{form}: {lines} caption lines");
         let text = caption(&all);
+        // Two columns cite Lloyd 2006's Eq 7, 8; one column has no room (R13-zhang-fig3-1 took it
+        // for SSM's n′).
         for want in [
-            "m: Lloyd 2006's error (Eq 7, 8)",
+            "m: Lloyd 2006's error",
             "facing the light",
-            "×2 for Zhang's span [−1, 1]",
+            "×2 for Zhang's",
+            "[−1, 1]",
         ] {
             assert!(text.contains(want), "{form}: no {want:?} in {text}");
         }
@@ -63,7 +66,7 @@ fn m_is_explained_in_words_not_marked_in_the_titles() {
 /// scale: the first column's frames (grey, #969696, the leftmost of each row) each have two
 /// tick marks left of them, 5 units long and level, at the same heights in the row as the
 /// labelled middle rows' ±40 (within 0.6 units), symmetric about the row's middle; the caption
-/// the turned axis name says "height y (½ scale)".
+/// the turned axis name says "height y (drawn at ½ the scale of z)".
 #[test]
 fn one_column_ticks_every_row_and_says_the_half_scale() {
     let opts = &forms()[2].1;
@@ -124,7 +127,7 @@ fn one_column_ticks_every_row_and_says_the_half_scale() {
     }
     assert!(
         all.iter()
-            .any(|t| t.rotated && t.content == "height y (½ scale)"),
-        "no turned \"height y (½ scale)\""
+            .any(|t| t.rotated && t.content == "height y (drawn at ½ the scale of z)"),
+        "no turned \"height y (drawn at ½ the scale of z)\""
     );
 }

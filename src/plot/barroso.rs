@@ -160,11 +160,12 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
             "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
              θ\u{a0}=\u{a0}{phi_deg:.0}°. n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for \
              γ\u{a0}≥\u{a0}θ and γ\u{a0}<\u{a0}θ; below γ_{{lim}} (Eq\u{a0}15) \
-             n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r the paper's (Eq\u{a0}18, bold) \
-             or Zhang et al.'s (Eq\u{a0}17); n′_{{1}} is Eq\u{a0}18's curve above γ_{{lim}}. \
-             Also LiSPSM's rule and the n′ of least max m_z over the whole frustum, not only \
-             along the view axis as n′_{{1}} (Eq\u{a0}12). (b) enlarges γ from {}° to {}°: \
-             that n′ turns near γ\u{a0}=\u{a0}θ.",
+             n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r by Eq\u{a0}18 (bold) \
+             or Zhang et al.'s Eq\u{a0}17; n′_{{1}} is Eq\u{a0}18's curve above γ_{{lim}}. \
+             Also LiSPSM's n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ and the n′ of \
+             least max m_z over the whole frustum, not only \
+             along the view axis as n′_{{1}} (Eq\u{a0}12). (b) enlarges γ {}°–{}°: \
+             n′ turns near γ\u{a0}=\u{a0}θ.",
             WINDOW.0, WINDOW.1
         )],
         charts: vec![c, zoom],
@@ -180,8 +181,9 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
          θ\u{a0}=\u{a0}{phi_deg:.0}°. \
          n′_{{1}}, n′_{{2}}: Eq\u{a0}13 for γ\u{a0}≥\u{a0}θ, γ\u{a0}<\u{a0}θ; below \
-         γ_{{lim}}\u{a0}=\u{a0}{:.1}° (Eq\u{a0}15) n′_{{1}}(γ_{{lim}})/r(γ), r by \
-         Eq\u{a0}18 (bold) or Zhang's Eq\u{a0}17. Least max m_z: over all the frustum.",
+         γ_{{lim}}\u{a0}=\u{a0}{:.1}°, n′_{{1}}(γ_{{lim}})/r(γ), r: \
+         Eq\u{a0}18 (bold), Zhang's Eq\u{a0}17; LiSPSM: \
+         n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ. Least max m_z: whole frustum.",
         gl.to_degrees()
     );
     Ok(Fig7 {
@@ -309,11 +311,18 @@ mod tests {
             fig.charts.caption[0]
         );
         assert!(
-            fig.single_caption
-                .contains("Least max m_z: over all the frustum"),
+            fig.single_caption.contains("Least max m_z: whole frustum"),
             "{}",
             fig.single_caption
         );
+        // LiSPSM's curve is defined in both captions (the thirteenth review, R13-barroso-fig7-1).
+        for c in [&fig.charts.caption[0], &fig.single_caption] {
+            assert!(
+                c.contains("LiSPSM")
+                    && c.contains("n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ"),
+                "{c}"
+            );
+        }
         let s = &fig.charts.charts[0].series;
         let (least, n1) = (&s[3], &s[4]);
         assert_eq!(least.label.as_deref(), Some(LABELS[3]));
@@ -454,10 +463,7 @@ mod tests {
                 let caption = all.join(" ");
                 assert!(!caption.contains("(b)"), "{caption}");
                 assert!(!caption.contains("left out"), "{caption}");
-                assert!(
-                    caption.contains("γlim\u{a0}=\u{a0}30.5° (Eq\u{a0}15)"),
-                    "{caption}"
-                );
+                assert!(caption.contains("γlim\u{a0}=\u{a0}30.5°,"), "{caption}");
             } else {
                 assert_eq!(spines.len(), 2, "{spines:?}");
             }

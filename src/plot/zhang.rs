@@ -149,9 +149,9 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, half field of \
          view θ\u{a0}=\u{a0}{phi:.0}° (Zhang's φ); light at \
          γ\u{a0}=\u{a0}{} from the view (Zhang's θ). E_p, E_q: aliasing along \
-         screen y, x; m: Lloyd 2006's error (Eq 7, 8) on a surface facing the \
-         light; ×2 for Zhang's span \
-         [−1,\u{a0}1]. LiSPSM's \
+         screen y, x; m: Lloyd 2006's error (Eq 7, 8) facing the light; \
+         ×2 for Zhang's span \
+         [−1,\u{a0}1]. SSM: n′\u{a0}=\u{a0}∞; LiSPSM's \
          n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ (Zhang's λ): {}; TSM: \
          80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}{TSM_FOCUS}. Unlike the paper: no scene \
          insets.",
@@ -161,13 +161,13 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     // One column: n, f and the LiSPSM and TSM columns' rules as in two columns (the eighth
     // review, R8-zhang-fig3-1: without them the columns were undefined); γ's values and E_p,
     // E_q = 2 m left to the rows' and blocks' labels, the half scale to the axis' name
-    // ("height y (½ scale)", R11-zhang-fig3-3); m and the factor 2 written out (R11-zhang-fig3-1).
+    // ("height y (drawn at ½ the scale of z)", R11-zhang-fig3-3); m and the factor 2 written out (R11-zhang-fig3-1).
     let single_caption = format!(
         "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
          θ\u{a0}=\u{a0}{phi:.0}°, light at γ from the view. m: Lloyd 2006's error \
-         (Eq 7, 8) facing the light, ×2 for Zhang's span [−1,\u{a0}1]. TSM: \
-         80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}{TSM_FOCUS}; LiSPSM: \
-         n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ."
+         facing the light, ×2 for Zhang's [−1,\u{a0}1]. n′: SSM ∞, LiSPSM \
+         (n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ; TSM: \
+         80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}{TSM_FOCUS}."
     );
     Ok(Fig3 {
         rows,
@@ -516,7 +516,7 @@ impl Fig3 {
                 title.pos(Pos::new(HPos::Center, VPos::Top)),
             ))?;
             if q == 1 {
-                draw_height_name(body, "height y (½ scale)", b)?;
+                draw_height_name(body, "height y (drawn at ½ the scale of z)", b)?;
             }
             let last = q + 1 == self.scales.len();
             let under: &[usize] = if last { &[0, 1, 2] } else { &[] };

@@ -159,7 +159,8 @@ fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
     for want in [
         "n\u{a0}=\u{a0}1, f\u{a0}=\u{a0}100",
         "θ\u{a0}=\u{a0}30°, light at γ from the view.",
-        "LiSPSM: n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ",
+        // SSM defined by its n′ (the thirteenth review, R13-zhang-fig3-1).
+        "n′: SSM ∞, LiSPSM (n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ",
         "TSM: 80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}10",
     ] {
         assert!(
@@ -178,7 +179,8 @@ fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
         }
         // The factor 2 written out (the eleventh review, R11-zhang-fig3-1: "(×2: span [−1, 1])"
         // was shorthand).
-        assert!(c.contains("×2 for Zhang's span [−1,\u{a0}1]"), "{c}");
+        assert!(c.contains("×2 for Zhang's"), "{c}");
+        assert!(c.contains("[−1,\u{a0}1]"), "{c}");
         assert!(!c.contains("π/6"), "{c}");
         // δ is named (the ninth review, R9-zhang-fig3-1: Martin & Tan's focus depth, undefined).
         assert!(c.contains("focus depth δ\u{a0}=\u{a0}10"), "{c}");
@@ -193,6 +195,7 @@ fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
         "(Zhang's θ)",
         "LiSPSM's n′\u{a0}=",
         "(Zhang's λ)",
+        "SSM: n′\u{a0}=\u{a0}∞",
     ] {
         assert!(fig.caption.contains(symbol), "{symbol}: {}", fig.caption);
     }
@@ -264,7 +267,7 @@ fn side_view_cells_start_at_the_near_plane_and_follow_the_border() {
 /// The panels' aspect, read from the SVGs' grey frames (depth n to f across, 99; height
 /// ±f tan θ up, 115.47): two columns draw them to scale (height over width 1.166), one
 /// column at exactly half the heights' scale (0.583), as its caption and its turned axis
-/// name "height y (½ scale)" say (the fifth review: "about half", stated nowhere). (Two
+/// name "height y (drawn at ½ the scale of z)" say (the fifth review: "about half", stated nowhere). (Two
 /// columns' upright "height y": `height_named_upright_single_ticks_on_middle_rows_and_scales_stated`.)
 #[test]
 fn panels_are_to_scale_or_at_half_height_as_stated() {
@@ -274,7 +277,7 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
     assert!((true_ratio - 1.1664).abs() < 1e-3);
     for (column, scale, name) in [
         (Column::Double, 1.0, "height y"),
-        (Column::Single, 0.5, "height y (½ scale)"),
+        (Column::Single, 0.5, "height y (drawn at ½ the scale of z)"),
     ] {
         let svg = super::super::hemisphere::svg_in(&fig, column);
         let frames: Vec<(f64, f64)> = svg
@@ -294,7 +297,7 @@ fn panels_are_to_scale_or_at_half_height_as_stated() {
             assert!(named[0].0.contains("rotate(270"), "{}", named[0].0);
         }
     }
-    // The half scale of heights is in the axis name, "height y (½ scale)" (the seventh review,
+    // The half scale of heights is in the axis name, "height y (drawn at ½ the scale of z)" (the seventh review,
     // R7-Z3-2), no longer also in the one-column caption, which needed the room to write m out
     // (the eleventh, R11-zhang-fig3-1 and -3: the axis' name is enough); no caption says it.
     assert!(!fig.single_caption.contains("depth scale"));
@@ -362,13 +365,13 @@ fn m_is_measured_across_the_light_and_the_figure_says_so() {
     }
     assert!(
         fig.caption
-            .contains("m: Lloyd 2006's error (Eq 7, 8) on a surface facing the light"),
+            .contains("m: Lloyd 2006's error (Eq 7, 8) facing the light"),
         "{}",
         fig.caption
     );
     assert!(
         fig.single_caption
-            .contains("m: Lloyd 2006's error (Eq 7, 8) facing the light"),
+            .contains("m: Lloyd 2006's error facing the light"),
         "{}",
         fig.single_caption
     );
