@@ -585,7 +585,7 @@ impl Fig3 {
             // The map's ends and centre only.
             let ends = [0.0, 0.5, 1.0];
             let (ax, ay) = (ax.labelled_at(&ends), ay.labelled_at(&ends));
-            let mut chart = build_chart_styled(panel, title, &ax, &ay, false, st)?;
+            let chart = build_chart_styled(panel, title, &ax, &ay, false, st)?;
             let h = TO_UNIT * h;
             self.draw_contents(&chart, |p| through(&h, p))?;
             let square: Vec<DVec2> = UNIT_SQUARE[..4]
@@ -594,7 +594,7 @@ impl Fig3 {
                 .collect();
             outline(&chart, &square, colour, stroke)?;
             if colour == MIN_BOX {
-                self.point_to_focus(&mut chart, &h)?;
+                self.point_to_focus(panel, &chart, &h)?;
             }
         }
         draw_legend(&strip)?;
@@ -606,37 +606,91 @@ impl Fig3 {
 const TO_UNIT: DMat3 = DMat3::from_cols_array(&[0.5, 0.0, 0.0, 0.0, 0.5, 0.0, 0.5, 0.5, 1.0]);
 
 impl Fig3 {
-    /// In (c), where the focus region is a sliver in the map's corner: its name, on a white
-    /// box in the empty corner of the map over it, joined to the sliver's centre by a leader
-    /// (the fifth review: about 4 pixels, unmarked). `h` carries light space into the map.
+    /// In (c), where the focus region is a sliver in the map's corner: its name outside the
+    /// map, under and left of the axes' corner, on no box, joined by a grey leader that passes
+    /// between the two spines' ends to the middle of the focus region's outline edge facing
+    /// the corner (R13-martin-tan-fig3-1: on a white box inside the map square it covered part
+    /// of a frustum edge and touched B's dashed side). `h` carries light space into the map.
     fn point_to_focus<DB: DrawingBackend>(
         &self,
-        chart: &mut super::chart::Chart2d<'_, DB>,
+        panel: &DrawingArea<DB, Shift>,
+        chart: &super::chart::Chart2d<'_, DB>,
         h: &DMat3,
     ) -> Result<(), Fail> {
-        let focus: Vec<DVec2> = self.focus.iter().map(|&p| through(h, p)).collect();
-        let mid = focus.iter().copied().sum::<DVec2>() / focus.len() as f64;
-        let at = FOCUS_LABEL_AT;
-        chart.draw_series(LineSeries::new(
-            [(mid.x, mid.y), (at.0 + 0.04, at.1 - 0.04)],
-            LEADER.stroke_width(1),
-        ))?;
-        super::chart::boxed_text(
-            chart,
-            at,
-            "focus",
-            Pos::new(HPos::Left, VPos::Bottom),
-            13,
-            FOCUS_C,
-        )
+        let to = to_backend(chart);
+        let page = |p: DVec2| DVec2::from(to((p.x, p.y)));
+        let focus = hull(
+            &self
+                .focus
+                .iter()
+                .map(|&p| page(through(h, p)))
+                .collect::<Vec<_>>(),
+        );
+        let centre = focus.iter().copied().sum::<DVec2>() / focus.len() as f64;
+        // The spines' corner: plotters draws the y axis 1 unit left of the plotting area and
+        // the x axis 1 unit under it, so that they do not meet there.
+        let (xr, yr) = (chart.x_range(), chart.y_range());
+        let corner = page(DVec2::new(xr.start, yr.start)) + DVec2::new(-1.0, 1.0);
+        // The map square's sides: an edge along one of them would read as B's.
+        let (s0, s1) = (page(DVec2::ZERO), page(DVec2::ONE));
+        let along_side = |a: DVec2, b: DVec2| {
+            [s0.x, s1.x]
+                .iter()
+                .any(|&x| (a.x - x).abs() < 1.0 && (b.x - x).abs() < 1.0)
+                || [s0.y, s1.y]
+                    .iter()
+                    .any(|&y| (a.y - y).abs() < 1.0 && (b.y - y).abs() < 1.0)
+        };
+        let mids = (0..focus.len()).filter_map(|i| {
+            let (a, b) = (focus[i], focus[(i + 1) % focus.len()]);
+            let mid = 0.5 * (a + b);
+            // The edge's normal away from the region's centre faces the corner.
+            let normal = (b - a).perp();
+            let out = if normal.dot(mid - centre) < 0.0 {
+                -normal
+            } else {
+                normal
+            };
+            (!along_side(a, b) && out.dot(corner - mid) > 0.0).then_some(mid)
+        });
+        let end = mids
+            .min_by(|p, q| p.distance(corner).total_cmp(&q.distance(corner)))
+            .ok_or_else(|| {
+                Fail::Draw("(c): no edge of the focus region faces the axes' corner".into())
+            })?;
+        // On beyond the corner, at least 4 units across and 3 down from it, so that the word
+        // (1 unit further) stands clear of both spines and of the tick labels 0 by them.
+        let u = (corner - end).normalize();
+        let d = (4.0 / u.x.abs().max(0.1)).max(3.0 / u.y.max(0.1));
+        let start = corner + d * u;
+        draw_fine_path(
+            &chart.plotting_area().strip_coord_spec(),
+            &[(end.x, end.y), (start.x, start.y)],
+            LEADER,
+            1,
+            Dash::Solid,
+        )?;
+        // The word's top right corner 1 unit across and down from the leader's start, drawn
+        // on the panel (the plotting area would pull it inside itself).
+        let (bx, by) = panel.get_base_pixel();
+        let at = (
+            (start.x - 1.0).round() as i32 - bx,
+            (start.y + 1.0).round() as i32 - by,
+        );
+        let ink = super::chart::legible(FOCUS_C);
+        let style = TextStyle::from((FONT, FOCUS_SIZE).into_font())
+            .color(&ink)
+            .pos(Pos::new(HPos::Right, VPos::Top));
+        panel.draw(&Text::new("focus", at, style))?;
+        Ok(())
     }
 }
 
 /// The leader's grey (the inset's frame and connecting lines are drawn in it too).
 const LEADER: RGBColor = RGBColor(90, 90, 90);
 
-/// Where (c) names the focus region: the left end of the word's baseline, in map units.
-const FOCUS_LABEL_AT: (f64, f64) = (0.03, 0.45);
+/// The size (c) names the focus region at: the tick labels'.
+const FOCUS_SIZE: u32 = 13;
 
 /// The least height of the strip under (a) that holds its inset, as a share of the panel's
 /// (two columns, one column).

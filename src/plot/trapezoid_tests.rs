@@ -303,8 +303,8 @@ fn inset_label_is_its_drawn_enlargement_and_one_column_fits() {
 /// The fifth review, read back from the SVG in both layouts: the maps (b) and (c) run over
 /// s, t ∈ [0, 1] as in every figure (labelled 0, 0.5, 1; they were [−1, 1]); (c) names the
 /// focus region, a sliver in the map's corner, with "focus" joined by a grey leader (#5A5A5A,
-/// 1 unit) whose one end lies on the sliver's drawn edges (the wine #882255, within 4 units of a corner)
-/// and whose other end is within 8 units of the word; and the hull C's fill is no scheme's
+/// 1 unit) whose one end lies on the sliver's drawn edges (the wine #882255, within 2 units of
+/// one) and whose other end is within 8 units of the word; and the hull C's fill is no scheme's
 /// blue: its hue at least 90° from PSM/ZP's (#0072B2, hue 201°; the sky blue it was, 202°).
 #[test]
 fn maps_on_the_unit_square_focus_pointed_to_and_hull_not_blue() {
@@ -346,11 +346,26 @@ fn maps_on_the_unit_square_focus_pointed_to_and_hull_not_blue() {
         let points = |l: &str| crate::plot::chart::read_svg::points(l).unwrap();
         let word = all.iter().find(|x| x.1 == "focus").expect("no \"focus\"");
         let (wx, wy) = (attr(word.0, "x").unwrap(), attr(word.0, "y").unwrap());
-        let wine: Vec<(f64, f64)> = svg
+        let wine: Vec<Vec<(f64, f64)>> = svg
             .lines()
             .filter(|l| l.starts_with("<polyline") && l.contains("stroke=\"#882255\""))
-            .flat_map(points)
+            .map(points)
             .collect();
+        // The distance from p to the segment a–b.
+        let to_segment = |p: (f64, f64), a: (f64, f64), b: (f64, f64)| {
+            let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+            let len2 = dx * dx + dy * dy;
+            let t = if len2 == 0.0 {
+                0.0
+            } else {
+                (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / len2).clamp(0.0, 1.0)
+            };
+            (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+        };
+        let on_wine = |p: (f64, f64)| {
+            wine.iter()
+                .any(|w| w.windows(2).any(|s| to_segment(p, s[0], s[1]) <= 2.0))
+        };
         let leaders: Vec<Vec<(f64, f64)>> = svg
             .lines()
             .filter(|l| {
@@ -365,7 +380,7 @@ fn maps_on_the_unit_square_focus_pointed_to_and_hull_not_blue() {
         assert!(
             leaders.iter().any(|l| {
                 let (a, b) = (l[0], l[1]);
-                wine.iter().any(|&w| near(a, w, 4.0)) && near(b, (wx, wy), 8.0)
+                on_wine(a) && near(b, (wx, wy), 8.0)
             }),
             "{column:?}: no leader from the focus region to the word at ({wx}, {wy})"
         );
