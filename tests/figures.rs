@@ -790,7 +790,7 @@ fn captions_say_where_a_figure_differs_from_the_paper() {
             .collect::<Vec<_>>()
             .join(" ");
         if name == "barroso-fig5" {
-            for panel in ["(a) perpendicular light", "(c) parallel light"] {
+            for panel in ["(a) light ⊥ view", "(c) light ∥ view"] {
                 assert!(caption.contains(panel), "{name}: no {panel:?}");
             }
         } else {

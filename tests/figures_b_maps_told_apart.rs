@@ -395,3 +395,125 @@ fn numbers_sit_by_their_own_maps() {
         }
     }
 }
+
+/// Each dash's share of its dash and the gap after it, by map (nearest first), by hand from
+/// the key's patterns: dashes 6 : 3, dots 4 : 3, dash-dot 12 : 3 : 2 : 3, long dashes 14 : 4.
+const SHARES: [&[f64]; 4] = [&[6.0 / 9.0], &[4.0 / 7.0], &[0.8, 0.4], &[14.0 / 18.0]];
+
+/// Map i's shortest period of its kind that prints and its first dash, in pt: each dash at
+/// least 1 pt and each gap 0.8 pt, in the shares of [`SHARES`]; by hand: dashes 1.6 + 0.8,
+/// dots 16/15 + 0.8, dash-dot 3.2 + 0.8 + 1 + 1.5, long dashes 2.8 + 0.8.
+const LEAST_PERIOD_PT: [(f64, f64); 4] = [
+    (2.4, 1.6),
+    (28.0 / 15.0, 16.0 / 15.0),
+    (6.5, 3.2),
+    (3.6, 2.8),
+];
+
+/// The thirteenth review, R13-barroso-fig5-1: in the overviews (a), (c), (e) map 3's outline was
+/// solid while the key gives it dash-dot. In every form, each side of each map's outline in the
+/// overviews, read from the SVG (the pieces of the map's colour lying on the side of their
+/// bounding box, corner pieces included), is dashed in its map's kind wherever one period of
+/// the kind at its shortest that prints fits ([`LEAST_PERIOD_PT`]): every dash's share of its
+/// period as [`SHARES`] gives it (within 0.05), whole periods (a side starts and ends on a
+/// dash), at least 4 of them or as many as fit at the shortest, every dash at least 1 pt and
+/// every gap 0.8 pt long printed; and map 3 shows dash-dot in each overview.
+#[test]
+fn overview_outlines_show_their_keyed_dash_kinds() {
+    for (form, opts) in forms() {
+        let s = svg("barroso-fig5", form, &opts);
+        let pt = read::points_per_unit(&s);
+        let colours = key_colours(&s);
+        assert_eq!(colours.len(), 4, "{form}");
+        for (from, to) in [("(a)", "(b)"), ("(c)", "(d)"), ("(e)", "(f)")] {
+            let a = s.find(&format!(">{from}")).unwrap();
+            let b = a + s[a..].find(&format!(">{to}")).unwrap();
+            let part = &s[a..s[..b].rfind("<text").unwrap()];
+            let mut dash_dot_sides = 0;
+            for (m, c) in colours.iter().enumerate() {
+                let segs: Vec<((f64, f64), (f64, f64))> = part
+                    .lines()
+                    .filter(|l| l.starts_with("<polyline"))
+                    .filter(|l| attr_str(l, "stroke").is_some_and(|x| x.eq_ignore_ascii_case(c)))
+                    .flat_map(|l| {
+                        let p = points(l);
+                        p.windows(2).map(|w| (w[0], w[1])).collect::<Vec<_>>()
+                    })
+                    .filter(|(p, q)| p != q)
+                    .collect();
+                if segs.is_empty() {
+                    continue;
+                }
+                let all: Vec<(f64, f64)> = segs.iter().flat_map(|&(p, q)| [p, q]).collect();
+                let r = read::bbox(&all);
+                // Bottom and top (along x), left and right (along y): the line's fixed
+                // coordinate, the side's extent.
+                for (horizontal, at, lo, hi) in [
+                    (true, r[1], r[0], r[2]),
+                    (true, r[3], r[0], r[2]),
+                    (false, r[0], r[1], r[3]),
+                    (false, r[2], r[1], r[3]),
+                ] {
+                    let on =
+                        |p: (f64, f64)| (if horizontal { p.1 } else { p.0 } - at).abs() <= 0.05;
+                    let along = |p: (f64, f64)| if horizontal { p.0 } else { p.1 };
+                    let mut iv: Vec<(f64, f64)> = segs
+                        .iter()
+                        .filter(|&&(p, q)| on(p) && on(q))
+                        .map(|&(p, q)| (along(p).min(along(q)), along(p).max(along(q))))
+                        .collect();
+                    if iv.is_empty() {
+                        continue; // a side outside the plot, not drawn
+                    }
+                    iv.sort_by(|x, y| x.0.total_cmp(&y.0));
+                    let len = hi - lo;
+                    let (period, first) = LEAST_PERIOD_PT[m];
+                    let fit = ((len * pt - first) / period + 1e-6).floor();
+                    let what = format!(
+                        "{form} {from}: map {} side {len:.1} units at {at:.1}",
+                        m + 1
+                    );
+                    assert!(
+                        (iv[0].0 - lo).abs() <= 0.05 && (iv[iv.len() - 1].1 - hi).abs() <= 0.05,
+                        "{what}: {iv:?}"
+                    );
+                    if fit < 1.0 {
+                        continue;
+                    }
+                    let kind = SHARES[m];
+                    let periods = (iv.len() - 1) as f64 / kind.len() as f64;
+                    assert!(
+                        iv.len() > 1 && periods.fract() == 0.0 && periods >= fit.min(4.0),
+                        "{what}: {} dashes, {fit} periods fit: {iv:?}",
+                        iv.len()
+                    );
+                    // The side runs either way round the outline: its dashes read from one end.
+                    let reads = |iv: &[(f64, f64)]| {
+                        iv.windows(2).enumerate().all(|(j, w)| {
+                            let (dash, gap) = (w[0].1 - w[0].0, w[1].0 - w[0].1);
+                            (dash / (dash + gap) - kind[j % kind.len()]).abs() <= 0.05
+                        })
+                    };
+                    let back: Vec<(f64, f64)> = iv.iter().rev().map(|&(x, y)| (-y, -x)).collect();
+                    assert!(reads(&iv) || reads(&back), "{what}: not {kind:?}: {iv:?}");
+                    for w in iv.windows(2) {
+                        let (dash, gap) = (w[0].1 - w[0].0, w[1].0 - w[0].1);
+                        assert!(
+                            dash * pt >= 1.0 - 0.01 && gap * pt >= 0.8 - 0.01,
+                            "{what}: dash {dash:.2} gap {gap:.2}: {iv:?}"
+                        );
+                    }
+                    let last = iv[iv.len() - 1];
+                    assert!((last.1 - last.0) * pt >= 1.0 - 0.01, "{what}: {iv:?}");
+                    if m == 2 {
+                        dash_dot_sides += 1;
+                    }
+                }
+            }
+            assert!(
+                dash_dot_sides > 0,
+                "{form} {from}: map 3 not dash-dot on any side"
+            );
+        }
+    }
+}

@@ -1264,9 +1264,13 @@ fn dash_period(dashes: &[(f64, f64)]) -> Option<f64> {
 }
 
 /// The ninth review, R9-barroso-fig5-1: in the overviews (a), (c), (e) every map's outline is
-/// drawn at most 2 pt wide, and along each of its four sides either in one piece (solid: the
-/// side too short for four periods) or dashed with a period of at most a quarter of the side
-/// (read from the dashes' starts: from a dash to the next of its length), in every form. The old
+/// drawn at most 2 pt wide, from corner to corner along each of its four sides, and a side at
+/// least 29.2 pt long is dashed with a period of at most a quarter of the side (read from the
+/// dashes' starts: from a dash to the next of its length), in every form: 29.2 pt holds four
+/// periods and a dash of every map's kind at its shortest that prints (the dash-dot's 3.2 +
+/// 0.8 + 1 + 1.5 pt, four times, and 3.2: `overview_outlines_show_their_keyed_dash_kinds`,
+/// tests/figures_b_maps_told_apart.rs, reads the shorter sides, which since the thirteenth
+/// review, R13-barroso-fig5-1, take fewer, longer periods rather than be solid). The old
 /// outlines were 4 to 9 units wide, and (a)'s map 3, 19 × 11 units, was dash-dotted with a
 /// period of 20.
 #[test]
@@ -1306,6 +1310,9 @@ fn barroso_overview_outlines_are_fine_and_their_dashes_fit_their_sides() {
                     );
                     if let Some(p) = dash_period(side) {
                         dashed += 1;
+                        if length * pt < 29.2 {
+                            continue;
+                        }
                         assert!(
                             p <= 0.25 * length + 1e-6,
                             "{form} {from}: {colour}'s dash period {p:.2} on a side {length:.2} long"
@@ -1406,6 +1413,48 @@ fn barroso_details_label_zero_across() {
             for v in [-end, 0.0, end] {
                 assert!(has(k, v), "{form} panel {k}: {:?}", panels[k].ticks.0);
             }
+        }
+    }
+}
+
+/// The thirteenth review, R13-barroso-fig5-2: the titles "(a) perpendicular" and "(c) parallel
+/// light" did not say to what ("parallel light" reads as a directional light). In every form
+/// the panel titles say the light is across or along the view, "(a) light ⊥ view" and
+/// "(c) light ∥ view", read from the SVG's texts, and no text says "perpendicular" or
+/// "parallel" in a title; the symbols are in DejaVu Sans: its cmap and hmtx read by hand (a
+/// script over the font file) map ⊥ (U+22A5) to glyph 3376, 0.871 em wide, and ∥ (U+2225) to
+/// glyph 3248, 0.5 em, and ⟂ (U+27C2) to none (the .notdef box, 0.600 em), which the titles
+/// therefore do not use.
+#[test]
+fn barroso_titles_say_what_the_light_is_perpendicular_or_parallel_to() {
+    let font = read::Font::dejavu();
+    for c in ['⊥', '∥'] {
+        assert!(
+            font.advance(c) > font.advance(' '),
+            "{c}: {}",
+            font.advance(c)
+        );
+    }
+    for (form, opts) in forms() {
+        let s = svg("barroso-fig5", form, &opts);
+        let texts: Vec<String> = read::texts(&font, &s)
+            .into_iter()
+            .map(|t| t.content)
+            .collect();
+        for title in ["(a) light ⊥ view", "(c) light ∥ view"] {
+            assert!(
+                texts.iter().any(|t| t == title),
+                "{form}: no {title:?} in {texts:?}"
+            );
+        }
+        for t in texts
+            .iter()
+            .filter(|t| t.starts_with("(a)") || t.starts_with("(c)"))
+        {
+            assert!(
+                !t.contains("perpendicular") && !t.contains("parallel"),
+                "{form}: {t:?}"
+            );
         }
     }
 }

@@ -214,12 +214,10 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     // (c) sent the reader across the page for each detail): (a), (c), (e) the whole frustum,
     // (b), (d), (f) its near partitions enlarged, the region each enlarges a grey box in its
     // overview.
-    let mut perpendicular = panel(
-        &view,
-        overhead,
-        ss.planes(),
-        "(a) perpendicular light".into(),
-    )?;
+    // The titles say to what the light is perpendicular or parallel (the thirteenth review,
+    // R13-barroso-fig5-2: "(c) parallel light" read as a directional light); ⊥ (U+22A5), as
+    // DejaVu Sans has no ⟂ (U+27C2).
+    let mut perpendicular = panel(&view, overhead, ss.planes(), "(a) light ⊥ view".into())?;
     // (b): the three nearest partitions of (a), enlarged (the ninth review, R9-barroso-fig5-1:
     // out to z = 10 only, no panel showed map 3, z = 10–31.62, larger than (a)'s 20 × 12 units).
     let (lo, hi) = bounds(&perpendicular.sections[..4]);
@@ -230,7 +228,7 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
         format!("(b) detail of (a): z ≤ {}", fmt_planes(&ss.planes()[3..4])),
     )?;
     zoom.window = Some((lo, hi));
-    let mut parallel = panel(&view, behind, ss.planes(), "(c) parallel light".into())?;
+    let mut parallel = panel(&view, behind, ss.planes(), "(c) light ∥ view".into())?;
     let mut eq19 = panel(
         &view,
         tilted,

@@ -4,8 +4,8 @@
 
 use glam::DVec2;
 
-/// A panel's title up to its first colon or comma, without the word "light": "(c) Eq 19,
-/// not in the paper" is "(c) Eq 19", "(a) perpendicular light" is "(a) perpendicular".
+/// A panel's title up to its first colon or comma, without a last word "light": "(c) Eq 19,
+/// not in the paper" is "(c) Eq 19", "(a) light ⊥ view" is itself.
 pub(in super::super) fn short_title(t: &str) -> String {
     let cut = t.find([':', ',']).unwrap_or(t.len());
     t[..cut].trim_end_matches(" light").to_string()

@@ -2,9 +2,14 @@
 //! overview (a) map 3's outline, about 35 × 20 units, was drawn 5 units wide with a dash-dot of
 //! 20 units, longer than its sides, and printed as scattered purple blobs). A fine outline is
 //! at most 2 units wide (2 pt in two columns, 1.6 pt in one) and dashed along each side with
-//! its map's pattern fitted to the side: a whole number of periods, at least
-//! [`LEAST_PERIODS`], so that a period is at most a quarter of the side, the side starting and
-//! ending on a dash (so that the corners are drawn); a side too short for that is solid.
+//! its map's pattern fitted to the side: a whole number of periods, the side starting and
+//! ending on a dash (so that the corners are drawn). A detail's side takes at least
+//! [`DETAIL_LEAST_PERIODS`] periods of the pattern, else it is solid; an overview's side
+//! ([`overview_dashes`]) takes the most periods, up to [`LEAST_PERIODS`], that print (dashes at
+//! least [`LEAST_DASH_PT`], gaps [`LEAST_GAP_PT`]), of the pattern scaled down or, shorter
+//! still, of its kind at its shortest ([`least_pattern`]), and is solid only where not even one
+//! period prints (the thirteenth review, R13-barroso-fig5-1: map 3's sides in the overviews,
+//! 10 to 24 units, were solid, and map 3 did not read as the key's dash-dot).
 //! lloyd2006-fig11 keeps the wide outlines of [`super::map_stroke`].
 
 use super::super::super::chart::{column, draw_fine_line, Chart2d, Dash};
@@ -57,8 +62,91 @@ pub(super) const DETAIL_LEAST_PERIODS: f64 = 2.0;
 /// maps' corners ([`super::numbers`]) say which rectangle is which.
 const FINE_WIDTH: u32 = 2;
 
-/// The least number of whole periods a side is dashed with: fewer, and it is solid.
+/// The number of whole periods an overview's side is dashed with where they print: fewer
+/// only where a side is too short for them ([`overview_dashes`]).
 pub(super) const LEAST_PERIODS: f64 = 4.0;
+
+/// The shortest dash that prints, in pt (a dot of a 2 pt wide line is at least 1 pt long).
+pub(super) const LEAST_DASH_PT: f64 = 1.0;
+
+/// The shortest gap that prints, in pt.
+pub(super) const LEAST_GAP_PT: f64 = 0.8;
+
+/// Page units per pt: 1 in two columns, 1.25 in one (a unit prints 0.8 pt).
+fn units_per_pt() -> f64 {
+    if column() == Column::Single {
+        1.25
+    } else {
+        1.0
+    }
+}
+
+/// `pattern`'s kind at its shortest (lengths in pt): each dash with the gap after it keeps its
+/// share of the two (the kind), the dash at least [`LEAST_DASH_PT`] and the gap at least
+/// [`LEAST_GAP_PT`], each pair as short as that allows. By hand: dashes 6 : 3 (share 2/3) are
+/// 1.6, 0.8; a dash-dot 12 : 3 : 2 : 3 (shares 0.8, 0.4) is 3.2, 0.8, 1, 1.5.
+pub(super) fn least_pattern(pattern: &[f64]) -> Vec<f64> {
+    pattern
+        .chunks(2)
+        .flat_map(|pair| match *pair {
+            [a, b] if a > 0.0 && b > 0.0 => {
+                let share = a / (a + b);
+                let dash = LEAST_DASH_PT.max(LEAST_GAP_PT * share / (1.0 - share));
+                vec![dash, dash * (1.0 - share) / share]
+            }
+            _ => pair.to_vec(),
+        })
+        .collect()
+}
+
+/// An overview's side `len` units long dashed with `pattern` (units): where the pattern fits at
+/// least [`LEAST_PERIODS`] whole periods, as [`side_dashes`] fits them; else the most periods
+/// k, from [`LEAST_PERIODS`] down to 1, for which the pattern scaled to k periods and a last
+/// dash prints (every dash at least [`LEAST_DASH_PT`], every gap [`LEAST_GAP_PT`]), or else
+/// its kind at its shortest ([`least_pattern`]) stretched to k periods does; the whole side
+/// where not even one period prints.
+pub(super) fn overview_dashes(len: f64, pattern: &[f64]) -> Vec<(f64, f64)> {
+    let per_pt = units_per_pt();
+    let dashes = side_dashes(len, pattern, LEAST_PERIODS);
+    if dashes.len() > 1 || pattern.len() < 2 || len <= 0.0 {
+        return dashes;
+    }
+    let prints = |p: &[f64], scale: f64| {
+        p.iter().enumerate().all(|(j, &v)| {
+            let least = if j % 2 == 0 {
+                LEAST_DASH_PT
+            } else {
+                LEAST_GAP_PT
+            };
+            scale * v >= least * per_pt - 1e-9
+        })
+    };
+    let least: Vec<f64> = least_pattern(pattern).iter().map(|v| v * per_pt).collect();
+    for k in (1..=LEAST_PERIODS as usize).rev() {
+        for p in [pattern, &least[..]] {
+            let (period, first): (f64, f64) = (p.iter().sum(), p[0]);
+            let scale = len / (k as f64 * period + first);
+            if prints(p, scale) {
+                return fitted(len, p, k, scale);
+            }
+        }
+    }
+    vec![(0.0, len)]
+}
+
+/// `k` periods of `pattern` times `scale` and a last dash, from 0, the last dash ending at `len`.
+fn fitted(len: f64, pattern: &[f64], k: usize, scale: f64) -> Vec<(f64, f64)> {
+    let mut out = Vec::new();
+    let mut s = 0.0;
+    for _ in 0..k {
+        for pair in pattern.chunks(2) {
+            out.push((s, s + scale * pair[0]));
+            s += scale * pair.iter().sum::<f64>();
+        }
+    }
+    out.push((s, len));
+    out
+}
 
 /// Map `i`'s fine outline (0: the nearest): its colour ([`map_colour`]), stroke width and
 /// dash pattern.
@@ -83,29 +171,18 @@ pub(super) fn side_dashes(len: f64, pattern: &[f64], least: f64) -> Vec<(f64, f6
     if k < least.max(1.0) {
         return vec![(0.0, len)];
     }
-    let scale = len / (k * period + first);
-    let mut out = Vec::new();
-    let mut s = 0.0;
-    for _ in 0..k as usize {
-        for pair in pattern.chunks(2) {
-            out.push((s, s + scale * pair[0]));
-            s += scale * pair.iter().sum::<f64>();
-        }
-    }
-    out.push((s, len));
-    out
+    fitted(len, pattern, k as usize, len / (k * period + first))
 }
 
 /// The pieces of a rectangle's outline (corners in order, in units, `draw[i]` whether the side
 /// from corner i to corner i + 1 is drawn: a side outside the panel is not), each side dashed
-/// by [`side_dashes`]; the dashes that meet at a corner are one piece through it, so that the
+/// by `dashes` (its length to its dashes, as [`side_dashes`]); the dashes that meet at a corner are one piece through it, so that the
 /// corner is joined. An outline solid all round is one closed line starting and ending halfway
 /// along its first side (a line closed at a corner meets itself in two square ends).
 pub(super) fn outline_pieces(
     corners: [(f64, f64); 4],
     draw: [bool; 4],
-    pattern: &[f64],
-    least: f64,
+    dashes: impl Fn(f64) -> Vec<(f64, f64)>,
 ) -> Vec<Vec<(f64, f64)>> {
     let at = |i: usize| corners[i % 4];
     let side = |i: usize| {
@@ -124,7 +201,7 @@ pub(super) fn outline_pieces(
     // one ends where the next begins (at a corner).
     let mut runs: Vec<(f64, f64)> = Vec::new();
     for i in (0..4).filter(|&i| draw[i] && side(i) > 0.0) {
-        for (a, b) in side_dashes(side(i), pattern, least) {
+        for (a, b) in dashes(side(i)) {
             let (a, b) = (start[i] + a, start[i] + b);
             match runs.last_mut() {
                 Some(last) if (last.1 - a).abs() <= 1e-9 * total => last.1 = b,
@@ -177,8 +254,9 @@ pub(super) fn outline_pieces(
 
 /// Panel `p`'s maps drawn fine ([`fine_stroke`]) over the frustum's lines, the farthest first,
 /// each clipped to the plot (`bounds`: x and y ranges; a side outside it is not drawn) and
-/// each drawn side dashed with whole periods of at most a quarter of its length on the page
-/// ([`outline_pieces`]), `per_unit` page units a data unit. Over the lines: a fine outline is
+/// each drawn side dashed with whole periods ([`outline_pieces`]): in a detail at least
+/// [`DETAIL_LEAST_PERIODS`] of the map's pattern, in an overview by [`overview_dashes`];
+/// `per_unit` page units a data unit. Over the lines: a fine outline is
 /// no wider than the frustum's edges, and under them it would not show where it lies on one.
 pub(super) fn fine_maps<DB: DrawingBackend>(
     chart: &Chart2d<'_, DB>,
@@ -203,12 +281,15 @@ pub(super) fn fine_maps<DB: DrawingBackend>(
             page(DVec2::new(lo.x, hi.y)),
         ];
         let (colour, width, pattern) = fine_stroke(i);
-        let least = if p.window.is_some() {
-            DETAIL_LEAST_PERIODS
-        } else {
-            LEAST_PERIODS
+        let detail = p.window.is_some();
+        let dashes = |len: f64| {
+            if detail {
+                side_dashes(len, pattern, DETAIL_LEAST_PERIODS)
+            } else {
+                overview_dashes(len, pattern)
+            }
         };
-        for piece in outline_pieces(corners, draw, pattern, least) {
+        for piece in outline_pieces(corners, draw, dashes) {
             let data: Vec<(f64, f64)> = piece
                 .iter()
                 .map(|&(x, y)| (x / per_unit, y / per_unit))
@@ -264,7 +345,7 @@ mod tests {
     #[test]
     fn a_solid_outline_is_closed_mid_side() {
         let c = [(0.0, 0.0), (10.0, 0.0), (10.0, 4.0), (0.0, 4.0)];
-        let p = outline_pieces(c, [true; 4], &[3.0, 1.2], 4.0);
+        let p = outline_pieces(c, [true; 4], |l| side_dashes(l, &[3.0, 1.2], 4.0));
         assert_eq!(
             p,
             vec![vec![
@@ -285,16 +366,44 @@ mod tests {
     #[test]
     fn dashes_join_at_the_corners() {
         let c = [(0.0, 0.0), (40.0, 0.0), (40.0, 10.0), (0.0, 10.0)];
-        let p = outline_pieces(c, [true; 4], &[3.0, 1.2], 4.0);
+        let p = outline_pieces(c, [true; 4], |l| side_dashes(l, &[3.0, 1.2], 4.0));
         assert_eq!(p.len(), 18, "{p:?}");
         let right = p
             .iter()
             .find(|q| q.contains(&(40.0, 0.0)))
             .expect("a piece round the corner (40, 0)");
         assert!(right.contains(&(40.0, 10.0)), "{right:?}");
-        let p = outline_pieces(c, [false, true, true, true], &[3.0, 1.2], 4.0);
+        let p = outline_pieces(c, [false, true, true, true], |l| {
+            side_dashes(l, &[3.0, 1.2], 4.0)
+        });
         assert_eq!(p.len(), 10, "{p:?}");
         assert!(p.iter().any(|q| q[0] == (40.0, 0.0)));
         assert!(p.iter().any(|q| q[q.len() - 1] == (0.0, 0.0)));
+    }
+
+    /// By hand: a dash-dot 12 : 3 : 2 : 3 at its shortest is 3.2, 0.8, 1, 1.5 pt (shares 0.8
+    /// and 0.4, gap 0.8 and dot 1 the least), dashes 6 : 3 are 1.6, 0.8. A side 20.8 units long
+    /// (two columns, 1 pt a unit) with the dash-dot 10 : 2.5 : 5/3 : 2.5: four periods scaled
+    /// (20.8/76.67 = 0.27: a 0.45 pt dot) or of the shortest (20.8/29.2 < 1) do not print, nor
+    /// three; two of the shortest do, stretched 20.8/16.2 = 1.284: dashes at 0 and 5.136,
+    /// 4.109 long, a dot 1.284 long at 4.109 + 1.027 = 5.136 … five dashes in all; a side of
+    /// 9 units (one period needs 9.7) is solid.
+    #[test]
+    fn an_overview_side_takes_the_most_periods_that_print() {
+        let least = least_pattern(&[12.0, 3.0, 2.0, 3.0]);
+        for (v, w) in least.iter().zip([3.2, 0.8, 1.0, 1.5]) {
+            assert!((v - w).abs() < 1e-12, "{least:?}");
+        }
+        let least = least_pattern(&[6.0, 3.0]);
+        assert!((least[0] - 1.6).abs() < 1e-12 && (least[1] - 0.8).abs() < 1e-12);
+        let d = overview_dashes(20.8, &[10.0, 2.5, 5.0 / 3.0, 2.5]);
+        assert_eq!(d.len(), 5, "{d:?}");
+        assert!(d[0].0 == 0.0 && (d[0].1 - 4.1086).abs() < 1e-3, "{d:?}");
+        assert!((d[1].0 - 5.1358).abs() < 1e-3 && (d[1].1 - d[1].0 - 1.2840).abs() < 1e-3);
+        assert!((d[4].1 - 20.8).abs() < 1e-12);
+        assert_eq!(
+            overview_dashes(9.0, &[10.0, 2.5, 5.0 / 3.0, 2.5]),
+            vec![(0.0, 9.0)]
+        );
     }
 }

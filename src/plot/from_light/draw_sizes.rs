@@ -25,8 +25,8 @@ pub(super) struct Sizes {
 /// The gutter of one column's overview panels: no labels, a gap before the detail's y ticks.
 pub(super) const OVERVIEW_GUTTER: u32 = 10;
 
-/// The least width of one column's overview cell: its title, "(a) perpendicular" (103 units at
-/// 15), and a gap to the detail's title.
+/// The least width of one column's overview cell: its title, "(a) light ⊥ view" (94 units at
+/// the titles' 12.1; "(a) perpendicular", 105, set it), and a gap to the detail's title.
 pub(super) const OVERVIEW_LEAST: u32 = 124;
 
 pub(super) fn sizes(single: bool, panels: usize) -> Sizes {
