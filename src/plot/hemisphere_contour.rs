@@ -296,7 +296,7 @@ pub(super) fn draw_contours<DB: DrawingBackend>(
             }
             if let Some(off) = gap_chords(&lines[k], b, p) {
                 let score = off + 0.02 * dist(p, want);
-                if off <= CHORD && best.map_or(true, |(s, _)| score < s) {
+                if off <= CHORD && best.is_none_or(|(s, _)| score < s) {
                     best = Some((score, p));
                 }
             }
