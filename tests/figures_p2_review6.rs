@@ -299,9 +299,7 @@ fn strokes(svg: &str, colour: &str, width: &str) -> Vec<Vec<(f64, f64)>> {
 /// contour lines (1.5 units wide since the eleventh review), at least 100 dashes, every point
 /// within the disk (half a line width outside the horizon at most), and none in any other panel
 /// (the key's level samples of their styles under the key disk aside); their labels "10⁶" and
-/// "1.5×10⁶" (a `<tspan>` superscript 6, read "106" and "1.5×106") are set at 8.9 units (10.5
-/// until the twelfth review, whose gaps in the contours under the labels "1.5×10⁶" fits only at
-/// the smaller size), black,
+/// "1.5×10⁶" (a `<tspan>` superscript 6, read "106" and "1.5×106") are set at 10.5 units, black,
 /// their centres at most 0.85 of the radius from the disk's centre. The sixth review's figure
 /// drew no contour and no such label.
 #[test]
@@ -357,7 +355,7 @@ fn fig7_a_has_labelled_contours_inside_its_disk() {
                 .find(|t| t.content == format!("{want}6") && t.x < 173.0)
                 .unwrap_or_else(|| panic!("{form}: no contour label {want}⁶ in (a)"));
             assert!(
-                (t.fs - 11.0 / 1.24).abs() < 0.01,
+                (t.fs - 13.0 / 1.24).abs() < 0.01,
                 "{form}: {want}⁶ at {}",
                 t.fs
             );

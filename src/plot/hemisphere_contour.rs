@@ -6,7 +6,7 @@
 //! A contour is traced by marching squares over the sweep's samples (elevation rows, azimuth
 //! columns that wrap round), interpolated linearly in log₁₀ of the field, and drawn in the
 //! disk's azimuthal equidistant projection ([`hemisphere_xy`]), black dashes on a white line,
-//! with its value written in a gap of it.
+//! with its value written on it, over the line's white.
 
 use super::super::canvas::FineWidth;
 use super::super::chart::{column, dash_pattern, fmt_power, hemisphere_disk, hemisphere_xy, FONT};
@@ -157,28 +157,11 @@ pub(super) const HALO: u32 = 25;
 pub(super) const DASHES: [[f64; 2]; 2] = [[3.0, 2.0], [8.0, 3.0]];
 
 /// How far (units) every other contour keeps from a label's box: a label names the one line
-/// whose gap it sits in, never one of two between which it stands (R11-lloyd2006-fig7-1:
+/// that runs through it, never one of two between which it stands (R11-lloyd2006-fig7-1:
 /// "1.5×10⁶" stood between two lobes).
-const CLEAR: f64 = 2.0;
+const CLEAR: f64 = 3.0;
 
-/// The gap in a contour under its label (units): the line, white and dashes, stops this far
-/// from the label's box on each side (the twelfth and thirteenth reviews, R12/R13-lloyd2006-
-/// fig7-1: a line through its label hid both), as matplotlib's `clabel(inline=True)` does.
-const GAP: f64 = 2.0;
-
-/// How far (units) a label's centre may lie from the straight line joining its contour's two
-/// pieces at the gap: the label stands on the contour's path.
-const CHORD: f64 = 3.0;
-
-/// How far (units) a label's box's centre lies above its text's centre: the superscript
-/// reaches higher over the digits than their descent below.
-const RAISE: f64 = 0.55;
-
-/// The PNG draws text 1.24/1.164 times the SVG's size (plotters' size s is `font-size` s/1.24
-/// in the SVG and an em of s/1.164 in the bitmap): a label's box is the wider.
-const PNG_TEXT: f64 = 1.24 / 1.164;
-
-/// The size of the contour key's text: the ring key's (plotters' size 13, 10.5 units in the SVG;
+/// The size of a contour's label: the ring key's (plotters' size 13, 10.5 units in the SVG;
 /// in one column, where a disk's radius is about 38 units, 10, printed 6.5 pt).
 fn label_size() -> u32 {
     if column() == Column::Single {
@@ -188,18 +171,15 @@ fn label_size() -> u32 {
     }
 }
 
-/// The size of a contour's label on the disk (plotters' size 11, 8.9 units in the SVG): two
-/// sizes under the key's ([`label_size`]), so that "1.5×10⁶" finds a gap in a lobe of its
-/// contour clear of the rest of the lobe.
-const ON_DISK: u32 = 11;
-
 /// Draws `lines` (absolute units) as a contour's white line ([`HALO`]) where `halo`, else as
-/// its black dashes ([`CORE`], `dashes` on and off).
+/// its black dashes ([`CORE`], `dashes` on and off) leaving out the points inside any of
+/// `gaps` ([x min, y min, x max, y max], absolute units: its label's glyphs).
 fn draw_line<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     lines: &[Vec<(f64, f64)>],
     dashes: &[f64; 2],
     halo: bool,
+    gaps: &[[f64; 4]],
 ) -> Result<(), Fail> {
     let colour = |rgb| BackendColor { alpha: 1.0, rgb };
     for line in lines {
@@ -211,12 +191,18 @@ fn draw_line<DB: DrawingBackend>(
             })?;
             continue;
         }
+        let inside = |p: &(f64, f64)| {
+            gaps.iter()
+                .any(|g| p.0 >= g[0] && p.0 <= g[2] && p.1 >= g[1] && p.1 <= g[3])
+        };
         for dash in dash_pattern(line, dashes, 1.0) {
-            area.draw(&FineWidth {
-                points: dash,
-                colour: colour(INK),
-                width: CORE,
-            })?;
+            for run in dash.split(inside).filter(|r| r.len() >= 2) {
+                area.draw(&FineWidth {
+                    points: run.to_vec(),
+                    colour: colour(INK),
+                    width: CORE,
+                })?;
+            }
         }
     }
     Ok(())
@@ -225,13 +211,11 @@ fn draw_line<DB: DrawingBackend>(
 /// Draws `contours` over the hemisphere panel `area` (as [`draw_hemisphere_keyed`] lays it
 /// out: [`hemisphere_disk`]): each a white line with black dashes on it (the white lines of all
 /// first, so that where two contours run side by side both show), and its value
-/// ([`fmt_power`]) written once in a gap of its own line, with no box, as matplotlib's
-/// `clabel(inline=True)` writes it: the line, white and dashes, leaves out its points within
-/// [`GAP`] units of the label's box, and the label's centre lies within [`CHORD`] units of the
-/// straight line joining the line's pieces at the gap; of the disk's points half a unit apart
-/// where the box lies inside the disk, clear of the labels set before and [`CLEAR`] units clear
-/// of every other contour, the one nearest its own path, then to the disk point `label_at[k]`
-/// (radius 1). A contour with no such point is an error.
+/// ([`fmt_power`]) written once, centred on a point of its own line, with no box: the point
+/// nearest to the disk point `label_at[k]` (radius 1) where the label's box lies inside the
+/// disk, clear of the labels set before and [`CLEAR`] units clear of every other contour. Under
+/// the label's glyphs the line keeps its white and leaves out its dashes, so that it runs on
+/// through its label, as the rings run through the ring key's.
 ///
 /// [`draw_hemisphere_keyed`]: super::super::chart::draw_hemisphere_keyed
 pub(super) fn draw_contours<DB: DrawingBackend>(
@@ -247,7 +231,7 @@ pub(super) fn draw_contours<DB: DrawingBackend>(
         let (x, y) = hemisphere_xy(el, az);
         (cx + r * x, cy - r * y)
     };
-    let style = TextStyle::from((FONT, ON_DISK).into_font());
+    let style = TextStyle::from((FONT, label_size()).into_font());
     // Each contour's lines in units of `area`.
     let lines: Vec<Vec<Vec<(f64, f64)>>> = contours
         .iter()
@@ -263,77 +247,66 @@ pub(super) fn draw_contours<DB: DrawingBackend>(
         let text = fmt_power(c.level);
         let (tw, th) = area.estimate_text_size(&text, &style)?;
         let want = (cx + r * want.0, cy - r * want.1);
-        // The label's box: its glyphs as the PNG draws them (text 1.24/1.164 times the SVG's,
-        // the wider), a quarter unit round across; up and down, from its superscript's top to
-        // its descent, centred [`RAISE`] units over the text's centre.
-        let (hw, hh) = (
-            0.5 * f64::from(tw) * PNG_TEXT + 0.25,
-            0.5 * f64::from(th) + 0.95,
-        );
-        let mut best: Option<(f64, (f64, f64))> = None;
-        // Every point of the disk half a unit apart.
-        let steps = (4.0 * r).ceil() as i32;
-        for (i, j) in (0..=steps).flat_map(|i| (0..=steps).map(move |j| (i, j))) {
-            let p = (cx - r + 0.5 * f64::from(i), cy - r + 0.5 * f64::from(j));
-            let corners_in = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+        // The label's box, a unit round its glyphs.
+        let (hw, hh) = (0.5 * f64::from(tw) + 1.0, 0.5 * f64::from(th));
+        // Its point: the nearest to `want` whose box lies inside the disk (2 units in from the
+        // rim), clear of the labels set before and of the other contours.
+        let fits = |p: &(f64, f64)| {
+            let inside = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
                 .iter()
                 .all(|(sx, sy)| dist((p.0 + sx * hw, p.1 + sy * hh), (cx, cy)) <= r - 2.0);
-            if !corners_in {
-                continue;
-            }
-            let b = [p.0 - hw, p.1 - hh, p.0 + hw, p.1 + hh];
             let clear = labels.iter().all(|(_, q, (qw, qh))| {
-                (p.0 - q.0).abs() >= hw + qw + GAP || (p.1 - q.1).abs() >= hh + qh + GAP
+                (p.0 - q.0).abs() >= hw + qw || (p.1 - q.1).abs() >= hh + qh
             });
             let alone = lines
                 .iter()
                 .enumerate()
                 .filter(|(m, _)| *m != k)
                 .flat_map(|(_, l)| l.iter().flatten())
-                .all(|q| box_dist(*q, b) > CLEAR);
-            if !(clear && alone) {
-                continue;
-            }
-            if let Some(off) = gap_chords(&lines[k], b, p) {
-                let score = off + 0.02 * dist(p, want);
-                if off <= CHORD && best.is_none_or(|(s, _)| score < s) {
-                    best = Some((score, p));
-                }
-            }
-        }
-        let Some((_, at)) = best else {
+                .all(|q| (q.0 - p.0).abs() > hw + CLEAR || (q.1 - p.1).abs() > hh + CLEAR);
+            inside && clear && alone
+        };
+        // Where the line runs across the label (within 25° of the horizontal from the points
+        // two before to two after), so that it enters at one side and leaves at the other.
+        let across = lines[k].iter().flat_map(|l| {
+            (2..l.len().saturating_sub(2)).filter_map(move |i| {
+                let (a, b) = (l[i - 2], l[i + 2]);
+                let level = (b.1 - a.1).abs() <= (b.0 - a.0).abs() * 25f64.to_radians().tan();
+                level.then_some(l[i])
+            })
+        });
+        let Some(at) = across
+            .filter(|p| fits(p))
+            .min_by(|a, b| dist(*a, want).total_cmp(&dist(*b, want)))
+        else {
             return Err(Fail::Draw(format!(
-                "the contour at {text} has no gap for its label inside the disk, clear of \
+                "the contour at {text} has no point for its label inside the disk, clear of \
                  the other contours"
             )));
         };
         labels.push((text, at, (hw, hh)));
     }
-    let absolute =
-        |l: &[(f64, f64)]| -> Vec<(f64, f64)> { l.iter().map(|p| (p.0 + bx, p.1 + by)).collect() };
+    let absolute = |l: &Vec<(f64, f64)>| -> Vec<(f64, f64)> {
+        l.iter().map(|p| (p.0 + bx, p.1 + by)).collect()
+    };
     for halo in [true, false] {
         for (k, (l, label)) in lines.iter().zip(&labels).enumerate() {
+            let l: Vec<Vec<(f64, f64)>> = l.iter().map(absolute).collect();
             let (_, at, (hw, hh)) = label;
-            let b = [at.0 - hw, at.1 - hh, at.0 + hw, at.1 + hh];
-            // The line's pieces outside the gap: its points [`GAP`] units or more from the
-            // label's box.
-            let pieces: Vec<Vec<(f64, f64)>> = l
-                .iter()
-                .flat_map(|line| {
-                    line.split(|q| box_dist(*q, b) < GAP)
-                        .filter(|run| run.len() >= 2)
-                        .map(absolute)
-                        .collect::<Vec<_>>()
-                })
-                .collect();
-            draw_line(area, &pieces, &DASHES[k % DASHES.len()], halo)?;
+            let gap = [
+                at.0 - hw + bx,
+                at.1 - hh + by,
+                at.0 + hw + bx,
+                at.1 + hh + by,
+            ];
+            draw_line(area, &l, &DASHES[k % DASHES.len()], halo, &[gap])?;
         }
     }
     // The labels last, over every contour's line.
     for (text, at, _) in labels {
         area.draw(&Text::new(
             text,
-            (at.0.round() as i32, (at.1 + RAISE).round() as i32),
+            (at.0.round() as i32, at.1.round() as i32),
             style.pos(Pos::new(HPos::Center, VPos::Center)),
         ))?;
     }
@@ -365,6 +338,7 @@ pub(super) fn draw_contour_key<DB: DrawingBackend>(
                 std::slice::from_ref(&sample),
                 &DASHES[k % DASHES.len()],
                 halo,
+                &[],
             )?;
         }
         area.draw(&Text::new(
@@ -383,66 +357,6 @@ const KEY_PAD: f64 = 5.0;
 
 /// A contour's label: its text, centre, and half width and height (units).
 type Label = (String, (f64, f64), (f64, f64));
-
-/// How far (units) `q` lies from the box `b` ([x min, y min, x max, y max]); 0 inside it.
-fn box_dist(q: (f64, f64), b: [f64; 4]) -> f64 {
-    let dx = (b[0] - q.0).max(q.0 - b[2]).max(0.0);
-    let dy = (b[1] - q.1).max(q.1 - b[3]).max(0.0);
-    dx.hypot(dy)
-}
-
-/// Whether a label with box `b` and centre `p` sits in a gap of the contour `lines` (units),
-/// and how far off its path: the contour's points within [`GAP`] units of the box are left
-/// out, and each run of them left out joins the two points it lies between; the answer is the
-/// farthest of those chords from `p`, or `None` where the contour has no such run, or runs
-/// on into the gap at an open line's end or all round a closed line.
-fn gap_chords(lines: &[Vec<(f64, f64)>], b: [f64; 4], p: (f64, f64)) -> Option<f64> {
-    let mut off: Option<f64> = None;
-    for line in lines {
-        let near: Vec<bool> = line.iter().map(|q| box_dist(*q, b) < GAP).collect();
-        if !near.contains(&true) {
-            continue;
-        }
-        let n = line.len();
-        let closed = n > 2 && dist(line[0], line[n - 1]) < 1e-6;
-        // The line's points in order, from one outside the gap (a closed line turned round to
-        // start there).
-        let order: Vec<usize> = if closed {
-            let k0 = near.iter().position(|x| !x)?;
-            (k0..n).chain(1..=k0).collect()
-        } else {
-            (0..n).collect()
-        };
-        let (first, last) = (order[0], order[order.len() - 1]);
-        if near[first] || near[last] {
-            return None;
-        }
-        let mut start = first;
-        for w in order.windows(2) {
-            match (near[w[0]], near[w[1]]) {
-                (false, true) => start = w[0],
-                (true, false) => {
-                    let d = segment_dist(p, line[start], line[w[1]]);
-                    off = Some(off.map_or(d, |o: f64| o.max(d)));
-                }
-                _ => {}
-            }
-        }
-    }
-    off
-}
-
-/// How far `p` lies from the segment `a`–`b`.
-fn segment_dist(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let n = dx * dx + dy * dy;
-    let t = if n > 0.0 {
-        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / n).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    dist(p, (a.0 + t * dx, a.1 + t * dy))
-}
 
 fn dist(a: (f64, f64), b: (f64, f64)) -> f64 {
     (a.0 - b.0).hypot(a.1 - b.1)
