@@ -112,9 +112,10 @@ fn fig7_keys_both_contour_styles() {
         );
         // The labels as read: the superscript 6 joins the text ("106", "1.5×106").
         for (level, want) in [("106", valley), ("1.5×106", other)] {
+            // Named by the key only, not on their lines (R12-, R13-lloyd2006-fig7-1).
             assert!(
-                all.iter().any(|t| t.content == level && t.x < A_RIGHT),
-                "{form}: no contour label {level} in (a)"
+                !all.iter().any(|t| t.content == level && t.x < A_RIGHT),
+                "{form}: a contour label {level} in (a)"
             );
             let key = all
                 .iter()

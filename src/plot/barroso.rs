@@ -181,9 +181,9 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
          θ\u{a0}=\u{a0}{phi_deg:.0}°. \
          n′_{{1}}, n′_{{2}}: Eq\u{a0}13 for γ\u{a0}≥\u{a0}θ, γ\u{a0}<\u{a0}θ; below \
-         γ_{{lim}}\u{a0}=\u{a0}{:.1}°, n′_{{1}}(γ_{{lim}})/r(γ), r: \
-         Eq\u{a0}18 (bold), Zhang's Eq\u{a0}17; LiSPSM: \
-         n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ. Least max m_z: whole frustum.",
+         γ_{{lim}}\u{a0}=\u{a0}{:.1}° (Eq\u{a0}15), n′_{{1}}(γ_{{lim}})/r(γ), r: \
+         Eq\u{a0}18 (bold), Zhang's Eq\u{a0}17. Least max m_z: whole frustum; LiSPSM: \
+         n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ.",
         gl.to_degrees()
     );
     Ok(Fig7 {
@@ -463,7 +463,10 @@ mod tests {
                 let caption = all.join(" ");
                 assert!(!caption.contains("(b)"), "{caption}");
                 assert!(!caption.contains("left out"), "{caption}");
-                assert!(caption.contains("γlim\u{a0}=\u{a0}30.5°,"), "{caption}");
+                assert!(
+                    caption.contains("γlim\u{a0}=\u{a0}30.5° (Eq\u{a0}15),"),
+                    "{caption}"
+                );
             } else {
                 assert_eq!(spines.len(), 2, "{spines:?}");
             }

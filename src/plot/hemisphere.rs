@@ -25,13 +25,6 @@ use contour::{contour, draw_contour_key, draw_contours, Contour};
 /// peak.
 pub(super) const A_CONTOURS: [f64; 2] = [1e6, 1.5e6];
 
-/// Where each contour's label is written: its line's point nearest to this disk point (radius
-/// 1; −x behind, −y the viewer's right) where the label fits in the disk clear of the other
-/// contour: 10⁶ on the valley along the vertical plane through the view direction, in front
-/// inside the 30° ring; 1.5×10⁶ on the inner end of the lobe behind on the viewer's left (the
-/// top), round the ridge there.
-const A_LABELS: [(f64, f64); 2] = [(0.45, 0.0), (-0.3, 0.5)];
-
 /// The cells of a sweep: each sample owns the band of elevations and azimuths halfway to its
 /// neighbours (the horizon and zenith rows half bands).
 pub(super) fn polar_grid(s: &Sweep, values: Vec<Option<f64>>) -> PolarGrid {
@@ -298,7 +291,7 @@ impl Figure for Fig7 {
             // (a)'s contours in two columns (and bare); one column's disks, about 38 units across
             // the radius, hold the ring key in (a), and there the contours' labels ran into it.
             if k == 0 && !single {
-                draw_contours(&cell(0), &self.contours, &A_LABELS)?;
+                draw_contours(&cell(0), &self.contours)?;
             }
             disk_rows.push(r);
         }

@@ -1,12 +1,12 @@
 //! Contour lines over a hemisphere panel: lloyd2006-fig7's (a) (no warping) spans 8.65×10⁵ to
 //! 2.0×10⁶, 0.36 of a decade, one flat green under the shared 10²–10⁷ bar (the sixth review,
-//! R6-lloyd2006-fig7-2), so its structure is drawn as labelled contour lines at 10⁶ and
-//! 1.5×10⁶.
+//! R6-lloyd2006-fig7-2), so its structure is drawn as contour lines at 10⁶ and 1.5×10⁶, named
+//! by their line styles in a key.
 //!
 //! A contour is traced by marching squares over the sweep's samples (elevation rows, azimuth
 //! columns that wrap round), interpolated linearly in log₁₀ of the field, and drawn in the
-//! disk's azimuthal equidistant projection ([`hemisphere_xy`]), black dashes on a white line,
-//! with its value written on it, over the line's white.
+//! disk's azimuthal equidistant projection ([`hemisphere_xy`]), black dashes on a white line;
+//! [`draw_contour_key`] writes each level beside a sample of its line.
 
 use super::super::canvas::FineWidth;
 use super::super::chart::{column, dash_pattern, fmt_power, hemisphere_disk, hemisphere_xy, FONT};
@@ -156,12 +156,7 @@ pub(super) const CORE: u32 = 15;
 pub(super) const HALO: u32 = 25;
 pub(super) const DASHES: [[f64; 2]; 2] = [[3.0, 2.0], [8.0, 3.0]];
 
-/// How far (units) every other contour keeps from a label's box: a label names the one line
-/// that runs through it, never one of two between which it stands (R11-lloyd2006-fig7-1:
-/// "1.5×10⁶" stood between two lobes).
-const CLEAR: f64 = 3.0;
-
-/// The size of a contour's label: the ring key's (plotters' size 13, 10.5 units in the SVG;
+/// The size of the contours' key text: the ring key's (plotters' size 13, 10.5 units in the SVG;
 /// in one column, where a disk's radius is about 38 units, 10, printed 6.5 pt).
 fn label_size() -> u32 {
     if column() == Column::Single {
@@ -172,14 +167,12 @@ fn label_size() -> u32 {
 }
 
 /// Draws `lines` (absolute units) as a contour's white line ([`HALO`]) where `halo`, else as
-/// its black dashes ([`CORE`], `dashes` on and off) leaving out the points inside any of
-/// `gaps` ([x min, y min, x max, y max], absolute units: its label's glyphs).
+/// its black dashes ([`CORE`], `dashes` on and off).
 fn draw_line<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     lines: &[Vec<(f64, f64)>],
     dashes: &[f64; 2],
     halo: bool,
-    gaps: &[[f64; 4]],
 ) -> Result<(), Fail> {
     let colour = |rgb| BackendColor { alpha: 1.0, rgb };
     for line in lines {
@@ -191,18 +184,12 @@ fn draw_line<DB: DrawingBackend>(
             })?;
             continue;
         }
-        let inside = |p: &(f64, f64)| {
-            gaps.iter()
-                .any(|g| p.0 >= g[0] && p.0 <= g[2] && p.1 >= g[1] && p.1 <= g[3])
-        };
         for dash in dash_pattern(line, dashes, 1.0) {
-            for run in dash.split(inside).filter(|r| r.len() >= 2) {
-                area.draw(&FineWidth {
-                    points: run.to_vec(),
-                    colour: colour(INK),
-                    width: CORE,
-                })?;
-            }
+            area.draw(&FineWidth {
+                points: dash,
+                colour: colour(INK),
+                width: CORE,
+            })?;
         }
     }
     Ok(())
@@ -210,29 +197,26 @@ fn draw_line<DB: DrawingBackend>(
 
 /// Draws `contours` over the hemisphere panel `area` (as [`draw_hemisphere_keyed`] lays it
 /// out: [`hemisphere_disk`]): each a white line with black dashes on it (the white lines of all
-/// first, so that where two contours run side by side both show), and its value
-/// ([`fmt_power`]) written once, centred on a point of its own line, with no box: the point
-/// nearest to the disk point `label_at[k]` (radius 1) where the label's box lies inside the
-/// disk, clear of the labels set before and [`CLEAR`] units clear of every other contour. Under
-/// the label's glyphs the line keeps its white and leaves out its dashes, so that it runs on
-/// through its label, as the rings run through the ring key's.
+/// first, so that where two contours run side by side both show). No label is written in the
+/// disk: [`draw_contour_key`] names each contour by its line's style (the twelfth and
+/// thirteenth reviews, R12-lloyd2006-fig7-1, R13-lloyd2006-fig7-1: a label on its own contour
+/// had the line through its glyphs; a gap in the line fits "10⁶" but no lobe holds a gap for
+/// "1.5×10⁶" at the figures' least text size, 2 % of the page's width).
 ///
 /// [`draw_hemisphere_keyed`]: super::super::chart::draw_hemisphere_keyed
 pub(super) fn draw_contours<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     contours: &[Contour],
-    label_at: &[(f64, f64)],
 ) -> Result<(), Fail> {
     let (w, h) = area.dim_in_pixel();
     let ((cx, cy), r) = hemisphere_disk(w, h);
     let (bx, by) = area.get_base_pixel();
     let (bx, by) = (f64::from(bx), f64::from(by));
+    // Each contour's lines in absolute units.
     let to_units = |(el, az): (f64, f64)| {
         let (x, y) = hemisphere_xy(el, az);
-        (cx + r * x, cy - r * y)
+        (cx + r * x + bx, cy - r * y + by)
     };
-    let style = TextStyle::from((FONT, label_size()).into_font());
-    // Each contour's lines in units of `area`.
     let lines: Vec<Vec<Vec<(f64, f64)>>> = contours
         .iter()
         .map(|c| {
@@ -242,73 +226,10 @@ pub(super) fn draw_contours<DB: DrawingBackend>(
                 .collect()
         })
         .collect();
-    let mut labels: Vec<Label> = Vec::new();
-    for (k, (c, &want)) in contours.iter().zip(label_at).enumerate() {
-        let text = fmt_power(c.level);
-        let (tw, th) = area.estimate_text_size(&text, &style)?;
-        let want = (cx + r * want.0, cy - r * want.1);
-        // The label's box, a unit round its glyphs.
-        let (hw, hh) = (0.5 * f64::from(tw) + 1.0, 0.5 * f64::from(th));
-        // Its point: the nearest to `want` whose box lies inside the disk (2 units in from the
-        // rim), clear of the labels set before and of the other contours.
-        let fits = |p: &(f64, f64)| {
-            let inside = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
-                .iter()
-                .all(|(sx, sy)| dist((p.0 + sx * hw, p.1 + sy * hh), (cx, cy)) <= r - 2.0);
-            let clear = labels.iter().all(|(_, q, (qw, qh))| {
-                (p.0 - q.0).abs() >= hw + qw || (p.1 - q.1).abs() >= hh + qh
-            });
-            let alone = lines
-                .iter()
-                .enumerate()
-                .filter(|(m, _)| *m != k)
-                .flat_map(|(_, l)| l.iter().flatten())
-                .all(|q| (q.0 - p.0).abs() > hw + CLEAR || (q.1 - p.1).abs() > hh + CLEAR);
-            inside && clear && alone
-        };
-        // Where the line runs across the label (within 25° of the horizontal from the points
-        // two before to two after), so that it enters at one side and leaves at the other.
-        let across = lines[k].iter().flat_map(|l| {
-            (2..l.len().saturating_sub(2)).filter_map(move |i| {
-                let (a, b) = (l[i - 2], l[i + 2]);
-                let level = (b.1 - a.1).abs() <= (b.0 - a.0).abs() * 25f64.to_radians().tan();
-                level.then_some(l[i])
-            })
-        });
-        let Some(at) = across
-            .filter(|p| fits(p))
-            .min_by(|a, b| dist(*a, want).total_cmp(&dist(*b, want)))
-        else {
-            return Err(Fail::Draw(format!(
-                "the contour at {text} has no point for its label inside the disk, clear of \
-                 the other contours"
-            )));
-        };
-        labels.push((text, at, (hw, hh)));
-    }
-    let absolute = |l: &Vec<(f64, f64)>| -> Vec<(f64, f64)> {
-        l.iter().map(|p| (p.0 + bx, p.1 + by)).collect()
-    };
     for halo in [true, false] {
-        for (k, (l, label)) in lines.iter().zip(&labels).enumerate() {
-            let l: Vec<Vec<(f64, f64)>> = l.iter().map(absolute).collect();
-            let (_, at, (hw, hh)) = label;
-            let gap = [
-                at.0 - hw + bx,
-                at.1 - hh + by,
-                at.0 + hw + bx,
-                at.1 + hh + by,
-            ];
-            draw_line(area, &l, &DASHES[k % DASHES.len()], halo, &[gap])?;
+        for (k, l) in lines.iter().enumerate() {
+            draw_line(area, l, &DASHES[k % DASHES.len()], halo)?;
         }
-    }
-    // The labels last, over every contour's line.
-    for (text, at, _) in labels {
-        area.draw(&Text::new(
-            text,
-            (at.0.round() as i32, at.1.round() as i32),
-            style.pos(Pos::new(HPos::Center, VPos::Center)),
-        ))?;
     }
     Ok(())
 }
@@ -316,7 +237,7 @@ pub(super) fn draw_contours<DB: DrawingBackend>(
 /// The key of the contours' line styles (the seventh review, R7-2006f7-1: (a)'s dotted and
 /// dashed lines were named only by the values written on them): one row a contour, from the
 /// top of `area`, a sample of its line, [`KEY_SAMPLE`] units long, dashed as
-/// [`draw_contours`] dashes it, and "(a) S̄ = {level}" after it, at the contour labels' size,
+/// [`draw_contours`] dashes it, and "(a) S̄ = {level}" after it, at the ring key's size,
 /// under [`KEY_PAD`] units.
 pub(super) fn draw_contour_key<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
@@ -338,7 +259,6 @@ pub(super) fn draw_contour_key<DB: DrawingBackend>(
                 std::slice::from_ref(&sample),
                 &DASHES[k % DASHES.len()],
                 halo,
-                &[],
             )?;
         }
         area.draw(&Text::new(
@@ -354,10 +274,3 @@ pub(super) fn draw_contour_key<DB: DrawingBackend>(
 /// periods, and the space over its rows (apart from "viewer's right" over it).
 const KEY_SAMPLE: f64 = 22.0;
 const KEY_PAD: f64 = 5.0;
-
-/// A contour's label: its text, centre, and half width and height (units).
-type Label = (String, (f64, f64), (f64, f64));
-
-fn dist(a: (f64, f64), b: (f64, f64)) -> f64 {
-    (a.0 - b.0).hypot(a.1 - b.1)
-}
