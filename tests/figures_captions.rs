@@ -545,8 +545,10 @@ fn lloyd2005_fig8() {
             ("2005", N::Given("the report's year")),
             ("8", N::Given("its figure")),
             ("2", N::Given("k")),
-            ("1", N::Given("n")),
-            ("10", N::Given("f")),
+            (
+                "10",
+                N::Given("f/n, the report's α (its n is the warp's, n′ here)"),
+            ),
             ("30", N::Given("θ")),
             ("35", N::Given("the light's elevation")),
             ("10", N::Given("the light's azimuth from straight behind")),

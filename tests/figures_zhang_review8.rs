@@ -33,7 +33,16 @@ fn m_is_explained_in_words_not_marked_in_the_titles() {
             .map(|t| t.content.as_str())
             .collect();
         assert!(marked.is_empty(), "{form}: {marked:?}");
-        for title in ["(a) Ep = 2 mz", "(b) Eq = 2 mx"] {
+        // One column's titles also say what E_p and E_q are (R14-Z3-1).
+        let titles: [&str; 2] = if form == "single" {
+            [
+                "(a) Ep = 2 mz, along screen y",
+                "(b) Eq = 2 mx, along screen x",
+            ]
+        } else {
+            ["(a) Ep = 2 mz", "(b) Eq = 2 mx"]
+        };
+        for title in titles {
             assert!(
                 all.iter().any(|t| t.content == title),
                 "{form}: no title {title:?}"

@@ -225,10 +225,11 @@ impl Figure for Fig8 {
             // What the tags and the table's columns mean, here (a paragraph beside (a) was body
             // text inside the figure: the sixth review, R6-lloyd2005-fig8-4).
             format!(
-                "Lloyd et al. 2005, Fig. 8: LiSPSM, n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, \
+                "Lloyd et al. 2005, Fig. 8: LiSPSM, f/n\u{a0}=\u{a0}{}, \
                  θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. R, L, T, N: \
                  right, left, top, near face; parts 1, 2: {}, {}. M_x, M_z: max error \
                  across, in depth, at image resolution.",
+                FAR / NEAR,
                 LIGHT.0,
                 LIGHT.1,
                 self.depths('1'),
@@ -236,12 +237,13 @@ impl Figure for Fig8 {
             )
         } else {
             format!(
-                "Lloyd et al. 2005, Fig. 8: k\u{a0}=\u{a0}{} z-partitions a face, LiSPSM, n\u{a0}=\u{a0}{NEAR}, f\u{a0}=\u{a0}{FAR}, \
+                "Lloyd et al. 2005, Fig. 8: k\u{a0}=\u{a0}{} z-partitions a face, LiSPSM, f/n\u{a0}=\u{a0}{}, \
                  θ\u{a0}=\u{a0}{THETA_DEG}°, light {}° high, {}° right of behind. (a) Tags as in \
                  (d). (b) {}'s texels reach past it (a larger frustum). (c) Eq\u{a0}6 splits s \
-                 by M_x, t by M_z (the paper transposes), the largest errors across the view and \
-                 in depth for one map at the image's resolution. {}",
+                 by M_x, t by M_z (the paper transposes), the largest errors across and in depth, \
+                 one map at image resolution. {}",
                 self.k,
+                FAR / NEAR,
                 LIGHT.0,
                 LIGHT.1,
                 shown.tag,

@@ -133,7 +133,8 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
     let head = format!(
         "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), f/n\u{a0}=\u{a0}{alpha}: g for the n′ of \
          ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM, n′\u{a0}=\u{a0}1\u{a0}+\u{a0}√(f/n)), −½ \
-         and −1 (the uniform map, n′\u{a0}=\u{a0}∞). Dotted: the least maximum \
+         and −1 (uniform, n′\u{a0}=\u{a0}∞); n′: the paper's n, f/n: its α. Dotted: the \
+         least maximum \
          g_0\u{a0}=\u{a0}1/√(f/n)\u{a0}=\u{a0}{g0:.3}."
     );
     let tail = "The maximum of g is on the near plane for ξ\u{a0}≤\u{a0}0 and on the far plane \
@@ -149,9 +150,10 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
         // One column: the same direct labels; the caption keeps only what the figure cannot
         // show.
         single_caption: vec![format!(
-            "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), f/n\u{a0}=\u{a0}{alpha}: g for the n′ of \
-             ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM), −½ and −1 (uniform), top to bottom at \
-             the far plane. Dotted: the least maximum g_0\u{a0}=\u{a0}{g0:.3}."
+            "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), f/n\u{a0}=\u{a0}{alpha} (the paper's α): g \
+             for the n′ (its n) of ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM), −½ and −1 \
+             (uniform), top to bottom at the far plane. Dotted: least max \
+             g_0\u{a0}=\u{a0}{g0:.3}."
         )],
         single_charts: Some(vec![fig4_chart(true)?]),
     })

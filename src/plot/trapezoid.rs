@@ -465,7 +465,9 @@ impl Fig3 {
         );
         // The same titles in both layouts (R7-MT3-4: "(b) trapezoidal space (N_T)" ended 4
         // units from the bare figure's right edge).
-        let titles = ["(b) T's space (N_{T})", "(c) B's space"];
+        // "(N_T)" named the paper's map nowhere defined in the figure (the fourteenth review,
+        // R14-MT3-1); "T's space" is the caption's.
+        let titles = ["(b) T's space", "(c) B's space"];
         let probe = upper.clone().shrink((0, 0), (uw, b_h));
         let (_, side) = plot_size(&probe, titles[0], &square.0, &square.1, &b_style)?;
         let right_w = (side as u32 + style.y_label_area + 3 * style.margin + 1).min(uw / 2);

@@ -542,7 +542,7 @@ fn inset_framed_outside_panel_a_axes() {
 /// the eye's shapes left (frustum E, hull C, focus region), the maps' outlines right
 /// (trapezoid T, min-area box B, axis-aligned box), three rows, no wider than 60 % of the page
 /// across two columns (it was an unboxed 3 × 2 grid over the page's width). R7-MT3-4: the maps'
-/// titles are the same in both layouts, "(b) T's space (N_T)" and "(c) B's space" (two
+/// titles are the same in both layouts, "(b) T's space" (its "(N_T)" undefined: R14-MT3-1) and "(c) B's space" (two
 /// columns' "(b) trapezoidal space (N_T)" ended 4 units from the bare figure's edge).
 /// R7-MT3-3: the captions give the light as "elevation 80°, azimuth 70° from behind", in the
 /// words of the other figures.
@@ -601,7 +601,7 @@ fn legend_boxed_in_two_columns_titles_and_light_words() {
             assert!(b[0] >= 0.0 && b[2] <= page, "{column:?}: {b:?}");
         }
         let plain: Vec<String> = all.iter().map(|t| t.1.replace("&apos;", "'")).collect();
-        for title in ["(b) T's space (NT)", "(c) B's space"] {
+        for title in ["(b) T's space", "(c) B's space"] {
             assert!(
                 plain.iter().any(|t| t == title),
                 "{column:?}: {title}: {plain:?}"

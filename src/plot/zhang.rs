@@ -489,7 +489,7 @@ impl Fig3 {
         let style = TextStyle::from((FONT, TEXT).into_font());
         let title = TextStyle::from((FONT, PANEL_TITLE).into_font());
         let pitch = BLOCK_TITLE_1 + 3 * ph + 2 * ROW_GAP_1 + BLOCK_GAP_1;
-        for (q, (name, scale)) in BLOCK_NAMES.iter().zip(&self.scales).enumerate() {
+        for (q, (name, scale)) in SINGLE_BLOCK_NAMES.iter().zip(&self.scales).enumerate() {
             let b = Block {
                 x: Y_NAME + ROW_LABEL_1,
                 top: HEADINGS + q as u32 * pitch + BLOCK_TITLE_1,
@@ -580,6 +580,14 @@ fn draw_height_name<DB: DrawingBackend>(
 /// 1/sin γ larger, and barroso-fig7 also writes m_z); the captions say so (the titles' "(⊥
 /// light)" was unexplained: the seventh review, R7-Z3-1).
 const BLOCK_NAMES: [&str; 3] = ["(a) E_p = 2 m_z", "(b) E_q = 2 m_x", "(c) E_p × E_q"];
+
+/// One column's: the caption's five lines have no room to say what E_p and E_q are, which the
+/// two-column caption says, so the titles do (the fourteenth review, R14-Z3-1).
+const SINGLE_BLOCK_NAMES: [&str; 3] = [
+    "(a) E_p = 2 m_z, along screen y",
+    "(b) E_q = 2 m_x, along screen x",
+    "(c) E_p × E_q",
+];
 
 impl Figure for Fig3 {
     fn size(&self) -> (u32, u32) {
