@@ -95,3 +95,64 @@ fn captions_name_only_panels_their_figure_draws() {
     // Every figure, across two columns and in one.
     assert_eq!(captions, 2 * 17, "{captions} captions read");
 }
+
+/// What two columns attribute, one column attributes too (the sixteenth review, R16-X-1:
+/// lloyd2006-fig7's and barroso-fig5's one-column forms dropped "not in the paper", crediting
+/// panels the paper does not have to it): wherever two columns' texts (caption and titles) say
+/// that a panel is "not in the paper" ("(e), not in the paper", "(d), (e) not in the paper",
+/// the letters in the 30 characters before it) and one column draws that panel, one column
+/// says "not in the paper" too.
+#[test]
+fn one_column_keeps_what_is_not_in_the_paper() {
+    const PHRASE: &str = "not in the paper";
+    let font = Font::dejavu();
+    let joined = |svg: &str| -> String {
+        texts(&font, svg)
+            .iter()
+            .map(|t| t.content.replace('\u{a0}', " "))
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    let drawn = |svg: &str| -> Vec<char> {
+        texts(&font, svg)
+            .iter()
+            .filter(|t| attr_str(&t.tag, "fill") != Some("#323232"))
+            .filter_map(|t| {
+                let c: Vec<char> = t.content.chars().take(3).collect();
+                (c.len() == 3 && c[0] == '(' && c[1].is_ascii_lowercase() && c[2] == ')')
+                    .then(|| c[1])
+            })
+            .collect()
+    };
+    let all = all_svgs();
+    let mut checked = 0;
+    for (name, _, svg) in all.iter().filter(|(_, l, _)| l == "Double") {
+        let text = joined(svg);
+        let mut attributed = Vec::new();
+        for (at, _) in text.match_indices(PHRASE) {
+            let before: String = text[..at]
+                .chars()
+                .rev()
+                .take(30)
+                .collect::<Vec<_>>()
+                .into_iter()
+                .rev()
+                .collect();
+            attributed.extend(letters(&before));
+        }
+        let single = all
+            .iter()
+            .find(|(n, l, _)| n == name && l == "Single")
+            .unwrap_or_else(|| panic!("{name}: no one-column form"));
+        let shown = drawn(&single.2);
+        if attributed.iter().any(|l| shown.contains(l)) {
+            checked += 1;
+            assert!(
+                joined(&single.2).contains(PHRASE),
+                "{name}: one column draws {attributed:?} but does not say they are {PHRASE}"
+            );
+        }
+    }
+    // lloyd2006-fig7 ((d), (e)) and barroso-fig5 ((e)) at least.
+    assert!(checked >= 2, "{checked} figures checked");
+}

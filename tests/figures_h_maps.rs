@@ -225,7 +225,12 @@ fn barroso_single_has_y_ticks_one_line_labels_and_the_far_face() {
         .filter(|t| t.tag.contains("fill=\"#323232\""))
         .map(|t| t.content.replace('\u{a0}', " ") + " ")
         .collect();
-    assert!(caption.contains("thick line: the far face."), "{caption}");
+    // Shorter since (e) is also said not to be the paper's (R16-barroso-fig5-1).
+    assert!(caption.contains("thick: far face."), "{caption}");
+    assert!(
+        caption.contains("(e), not in the paper: Eq 19"),
+        "{caption}"
+    );
 }
 
 /// lloyd2006-fig11 in every form: the white box under "2f tan θ" (and its text) lies above the

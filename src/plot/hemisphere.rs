@@ -180,11 +180,14 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         theta = view.half_fov().to_degrees(),
     )];
     // One column: four lines, so that the disks keep the size at which (a)'s ring key covers
-    // at most a sixth of its disk ((a)'s peak is left to the two columns' caption).
+    // at most a sixth of its disk ((a)'s peak is left to the two columns' caption); it says
+    // which panels the paper does not have, as two columns do (the sixteenth review,
+    // R16-lloyd2006-fig7-1).
     let single_caption = format!(
         "Lloyd et al. 2006, Fig. 7: S̄, azimuthal equidistant (top: viewer's left); \
-         n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{theta:.0}°; (c) face \
-         partitioning; near behind (b) is up to {worse:.1}× (a) (§4.4).",
+         f/n\u{a0}=\u{a0}{ratio}, θ\u{a0}=\u{a0}{theta:.0}°; (c) face partitioning; (d), \
+         (e) not in the paper; near behind (b) up to {worse:.1}× (a).",
+        ratio = f / n,
         theta = view.half_fov().to_degrees(),
     );
     Ok(Fig7 {
@@ -688,7 +691,8 @@ mod tests {
         for caption in [&text, &fig.single_caption] {
             assert!(!caption.contains("lloyd2006-"), "{caption}");
             assert!(!caption.contains('γ'), "{caption}");
-            assert!(caption.contains("ear behind (b) is up to"), "{caption}");
+            assert!(caption.contains("ear behind (b)"), "{caption}");
+            assert!(caption.contains("up to 4.3× (a)"), "{caption}");
         }
     }
 }
