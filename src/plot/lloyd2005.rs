@@ -133,7 +133,7 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
     let head = format!(
         "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), f/n\u{a0}=\u{a0}{alpha}: g for the n′ of \
          ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM, n′\u{a0}=\u{a0}1\u{a0}+\u{a0}√(f/n)), −½ \
-         and −1 (uniform, n′\u{a0}=\u{a0}∞); n′: the paper's n, f/n: its α. Dotted: the \
+         and −1 (uniform, n′\u{a0}=\u{a0}∞); n′: the paper's n, its warp. Dotted: the \
          least maximum \
          g_0\u{a0}=\u{a0}1/√(f/n)\u{a0}=\u{a0}{g0:.3}."
     );
@@ -150,7 +150,7 @@ pub(super) fn fig4() -> Result<Tall, Fail> {
         // One column: the same direct labels; the caption keeps only what the figure cannot
         // show.
         single_caption: vec![format!(
-            "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), f/n\u{a0}=\u{a0}{alpha} (the paper's α): g \
+            "Lloyd et al. 2005, Fig. 4 (Eq 3, 4), f/n\u{a0}=\u{a0}{alpha}: g \
              for the n′ (its n) of ξ\u{a0}=\u{a0}1 (PSM), ½, 0 (LiSPSM), −½ and −1 \
              (uniform), top to bottom at the far plane. Dotted: least max \
              g_0\u{a0}=\u{a0}{g0:.3}."
