@@ -368,7 +368,7 @@ const FIG6_TITLE: &str = "Maximum error and storage factor S̄ against η";
 /// seventeenth reviews, R16-, R17-lloyd2006-fig6-1: "M_x, M_z; S̄ (texels per image pixel)" gave
 /// them S̄'s unit), and S̄ with its unit as lloyd2006-fig10, -fig12 and -worst-case give it
 /// (R7-2006f6-1), and the scale.
-const FIG6_Y: &str = "M_x, M_z (ratios); S̄ (texels per image pixel, log scale)";
+const FIG6_Y: &str = "M_x, M_z; S̄ (texels per image pixel, log scale)";
 
 /// Fig 6's lines M_x, M_z and S̄: colour and dash (0 solid, 1 dashed, 2 dotted). M_x the
 /// sweep's darkest purple (L* 18), M_z pink (L* 61, as barroso-fig7's least M_z), S̄ black: three

@@ -199,7 +199,7 @@ fn fig6_names_the_storage_factor_and_its_unit() {
             joined
                 .iter()
                 // M_x, M_z without S̄'s unit (R16-, R17-lloyd2006-fig6-1).
-                .any(|s| s.contains("(ratios); S (texels per image pixel, log scale)")),
+                .any(|s| s.contains("S (texels per image pixel, log scale)")),
             "{column:?} bare {bare}: {joined:?}"
         );
         // S̄'s markers: black polygons, each a square.
