@@ -271,7 +271,7 @@ fn bare_scale_and_dpi_for_publication() {
     );
     assert!(svg.contains("M<tspan"), "bare lost the axis labels");
     // The figure is 520 × 490 units, drawn at plot::PNG_ZOOM = 6 pixels per unit: 3120 × 2940.
-    // Bare, it is cropped to the box of its ink and 2 units around it (tests/figures_bare.rs): a
+    // Bare, it is cropped to the box of its ink and 3 units around it (tests/figures_bare.rs): a
     // view box narrower and shorter than the page, which the PNG draws at twice the pixels per
     // unit (scale 2), and 300 dpi = 11 811 pixels per metre.
     let size = |b: &[u8]| {

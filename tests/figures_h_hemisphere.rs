@@ -9,7 +9,9 @@
 #![cfg(feature = "plot")]
 
 mod figures_style_read;
-use figures_style_read::{attr, attr_str, render_svg, texts, Font, Text};
+use figures_style_read::{
+    attr, attr_str, render_svg, strokes as lines, texts, Font, Stroke as Line, Text,
+};
 use shadow_aliasing::plot::{Column, Options};
 
 fn svg(name: &str, column: Column, bare: bool) -> String {
@@ -21,24 +23,6 @@ fn svg(name: &str, column: Column, bare: bool) -> String {
             ..Options::default()
         },
     )
-}
-
-/// A polyline of the SVG: its stroke, its stroke width and its points.
-struct Line {
-    stroke: String,
-    width: f64,
-    points: Vec<(f64, f64)>,
-}
-
-fn lines(svg: &str) -> Vec<Line> {
-    svg.lines()
-        .filter(|l| l.starts_with("<polyline"))
-        .map(|l| Line {
-            stroke: attr_str(l, "stroke").unwrap_or("").to_string(),
-            width: attr(l, "stroke-width").unwrap_or(1.0),
-            points: figures_style_read::points(l),
-        })
-        .collect()
 }
 
 /// A circle fitted to a closed polyline of many points: centre and mean radius.

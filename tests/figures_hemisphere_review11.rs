@@ -5,55 +5,17 @@
 #![cfg(feature = "plot")]
 
 mod figures_style_read;
-use figures_style_read::{attr, attr_str, forms, points, render_svg, texts, Font, Text};
+use figures_style_read::{
+    forms, render_svg, strokes as lines, texts, to_polyline as distance, Font, Stroke as Line, Text,
+};
 
 /// (a)'s disk lies left of this x and above this y (the first of three cells across 520 units,
 /// in the first of two rows).
 const A_RIGHT: f64 = 173.0;
 const A_BOTTOM: f64 = 270.0;
 
-/// A polyline of the SVG: its stroke, its stroke width and its points.
-struct Line {
-    stroke: String,
-    width: f64,
-    points: Vec<(f64, f64)>,
-}
-
-fn lines(svg: &str) -> Vec<Line> {
-    svg.lines()
-        .filter(|l| l.starts_with("<polyline"))
-        .map(|l| Line {
-            stroke: attr_str(l, "stroke").unwrap_or("").to_string(),
-            width: attr(l, "stroke-width").unwrap_or(1.0),
-            points: points(l),
-        })
-        .collect()
-}
-
 fn in_a(l: &Line) -> bool {
     l.points.iter().all(|q| q.0 < A_RIGHT && q.1 < A_BOTTOM)
-}
-
-/// The distance from `p` to the polyline `line`.
-fn distance(p: (f64, f64), line: &[(f64, f64)]) -> f64 {
-    let seg = |a: (f64, f64), b: (f64, f64)| {
-        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-        let n = dx * dx + dy * dy;
-        let t = if n > 0.0 {
-            (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / n).clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
-        (a.0 + t * dx - p.0).hypot(a.1 + t * dy - p.1)
-    };
-    match line {
-        [] => f64::INFINITY,
-        [a] => seg(*a, *a),
-        _ => line
-            .windows(2)
-            .map(|w| seg(w[0], w[1]))
-            .fold(f64::INFINITY, f64::min),
-    }
 }
 
 fn length(p: &[(f64, f64)]) -> f64 {

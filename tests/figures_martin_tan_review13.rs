@@ -5,20 +5,9 @@
 
 mod figures_style_read;
 use figures_style_read::{
-    attr, attr_str, forms, polygons, polylines, render_svg, segment_enters, texts, Box4, Font, Text,
+    attr, attr_str, forms, polygons, polylines, render_svg, segment_enters, texts, to_segment,
+    Box4, Font, Text,
 };
-
-/// The distance from p to the segment a–b.
-fn to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let len2 = dx * dx + dy * dy;
-    let t = if len2 == 0.0 {
-        0.0
-    } else {
-        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / len2).clamp(0.0, 1.0)
-    };
-    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
-}
 
 /// The distance from p to box r (0 inside it).
 fn to_box(p: (f64, f64), r: &Box4) -> f64 {

@@ -330,8 +330,8 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
         title: FIG6_TITLE.into(),
         caption: vec![format!(
             "Lloyd et al. 2006, Fig. 6 (Eq 9–12), {config}, image and shadow map of equal \
-             resolution. The values as they are (the paper scales each curve to one linear \
-             axis), largest at η\u{a0}=\u{a0}−1: {maxima}. M_x and M_z run parallel for \
+             resolution, on a log scale (the paper scales each curve to one linear axis); \
+             largest at η\u{a0}=\u{a0}−1: {maxima}. M_x and M_z run parallel for \
              η\u{a0}≤\u{a0}0; beyond, M_x falls as M_z rises, and S̄ stays constant (§4.3). \
              M_z is least at η\u{a0}=\u{a0}0."
         )],
@@ -364,11 +364,13 @@ const FIG6_SIZE: (u32, u32) = (520, 490);
 /// Fig 6's title, one in both forms: S̄ named in words (seventh review, R7-X-4, R7-2006f6-1).
 const FIG6_TITLE: &str = "Maximum error and storage factor S̄ against η";
 
-/// Fig 6's y axis: the errors, per-axis size ratios without a unit (the sixteenth and
-/// seventeenth reviews, R16-, R17-lloyd2006-fig6-1: "M_x, M_z; S̄ (texels per image pixel)" gave
-/// them S̄'s unit), and S̄ with its unit as lloyd2006-fig10, -fig12 and -worst-case give it
-/// (R7-2006f6-1), and the scale.
-const FIG6_Y: &str = "M_x, M_z; S̄ (texels per image pixel, log scale)";
+/// Fig 6's y axis, one in both forms: the errors, per-axis size ratios without a unit (the
+/// sixteenth and seventeenth reviews, R16-, R17-lloyd2006-fig6-1: "M_x, M_z; S̄ (texels per
+/// image pixel, log scale)" gave them S̄'s unit), and S̄ with its unit as lloyd2006-fig10,
+/// -fig12 and -worst-case give it (R7-2006f6-1). The scale, for which the name has no room
+/// beside "(ratios)" (it ran past the axis' ends), is in the powers of ten and in the caption,
+/// "on a log scale" (R7-X-1).
+const FIG6_Y: &str = "M_x, M_z (ratios); S̄ (texels per image pixel)";
 
 /// Fig 6's lines M_x, M_z and S̄: colour and dash (0 solid, 1 dashed, 2 dotted). M_x the
 /// sweep's darkest purple (L* 18), M_z pink (L* 61, as barroso-fig7's least M_z), S̄ black: three

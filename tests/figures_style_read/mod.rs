@@ -492,3 +492,48 @@ pub fn points_per_unit(svg: &str) -> f64 {
         .collect();
     w / vb[2]
 }
+
+/// A `<polyline>` with its stroke width: its stroke colour, width (1 where the tag gives
+/// none) and points.
+#[derive(Debug, Clone)]
+pub struct Stroke {
+    pub stroke: String,
+    pub width: f64,
+    pub points: Vec<(f64, f64)>,
+}
+
+/// Every `<polyline>` of `svg` with its stroke width (rings, contour dashes and their halos).
+pub fn strokes(svg: &str) -> Vec<Stroke> {
+    svg.lines()
+        .filter(|l| l.starts_with("<polyline"))
+        .map(|l| Stroke {
+            stroke: attr_str(l, "stroke").unwrap_or("").to_string(),
+            width: attr(l, "stroke-width").unwrap_or(1.0),
+            points: points(l),
+        })
+        .collect()
+}
+
+/// The distance from `p` to the segment a–b.
+pub fn to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 > 0.0 {
+        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+}
+
+/// The distance from `p` to the polyline `line` (infinite for no points).
+pub fn to_polyline(p: (f64, f64), line: &[(f64, f64)]) -> f64 {
+    match line {
+        [] => f64::INFINITY,
+        [a] => to_segment(p, *a, *a),
+        _ => line
+            .windows(2)
+            .map(|w| to_segment(p, w[0], w[1]))
+            .fold(f64::INFINITY, f64::min),
+    }
+}
