@@ -9,9 +9,7 @@
 #![cfg(feature = "plot")]
 
 mod figures_style_read;
-use figures_style_read::{
-    attr, attr_str, render_svg, strokes as lines, texts, Font, Stroke as Line, Text,
-};
+use figures_style_read::{render_svg, strokes as lines, texts, Font, Stroke as Line, Text};
 use shadow_aliasing::plot::{Column, Options};
 
 fn svg(name: &str, column: Column, bare: bool) -> String {

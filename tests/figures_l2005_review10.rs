@@ -5,7 +5,8 @@
 
 mod figures_style_read;
 use figures_style_read::{
-    attr, attr_str, forms, points, polygons, render_svg, texts, Box4, Font, Text,
+    attr, attr_str, forms, points, polygons, render_svg, texts, to_box, to_segment, Box4, Font,
+    Text,
 };
 
 /// The white a curve label must keep from every marker and every curve, in units.
@@ -18,25 +19,6 @@ fn curve_labels(all: &[Text]) -> Vec<&Text> {
         .filter(|t| !t.rotated)
         .filter(|t| !t.tag.contains("fill=\"#000000\"") && !t.tag.contains("fill=\"#323232\""))
         .collect()
-}
-
-/// The distance from point `p` to the segment `a`–`b`.
-fn to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let len2 = dx * dx + dy * dy;
-    let t = if len2 > 0.0 {
-        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
-}
-
-/// The distance from point `p` to the box `r` (0 inside it).
-fn to_box(p: (f64, f64), r: &Box4) -> f64 {
-    let dx = (r[0] - p.0).max(p.0 - r[2]).max(0.0);
-    let dy = (r[1] - p.1).max(p.1 - r[3]).max(0.0);
-    dx.hypot(dy)
 }
 
 /// Whether the segment `a`–`b` meets the box `r` (sampled every 0.1 unit: the segments here are

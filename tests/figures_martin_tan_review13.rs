@@ -5,16 +5,9 @@
 
 mod figures_style_read;
 use figures_style_read::{
-    attr, attr_str, forms, polygons, polylines, render_svg, segment_enters, texts, to_segment,
-    Box4, Font, Text,
+    attr, attr_str, forms, polygons, polylines, render_svg, segment_enters, texts, to_box,
+    to_segment, Box4, Font, Text,
 };
-
-/// The distance from p to box r (0 inside it).
-fn to_box(p: (f64, f64), r: &Box4) -> f64 {
-    let dx = (r[0] - p.0).max(p.0 - r[2]).max(0.0);
-    let dy = (r[1] - p.1).max(p.1 - r[3]).max(0.0);
-    dx.hypot(dy)
-}
 
 /// Whether two boxes [x0, y0, x1, y1] overlap.
 fn overlap(a: &Box4, b: &Box4) -> bool {

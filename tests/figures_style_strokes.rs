@@ -56,20 +56,13 @@ enum Dash {
     Dotted,
 }
 
-/// A `<polyline>` with its colour, width and points.
-struct Stroke {
-    colour: String,
-    width: f64,
-    points: Vec<(f64, f64)>,
-}
-
-fn strokes(svg: &str) -> Vec<Stroke> {
-    svg.lines()
-        .filter(|l| l.starts_with("<polyline"))
-        .map(|l| Stroke {
-            colour: attr_str(l, "stroke").unwrap_or("").to_uppercase(),
-            width: attr(l, "stroke-width").unwrap_or(1.0),
-            points: points(l),
+/// Every `<polyline>` of `svg` with its stroke width, the colour in capitals.
+fn upper_strokes(svg: &str) -> Vec<Stroke> {
+    strokes(svg)
+        .into_iter()
+        .map(|s| Stroke {
+            stroke: s.stroke.to_uppercase(),
+            ..s
         })
         .collect()
 }
@@ -137,9 +130,9 @@ fn markers(svg: &str) -> BTreeMap<String, BTreeSet<Outline>> {
             out.entry(p.colour.to_uppercase()).or_default().insert(o);
         }
     }
-    for s in strokes(svg).into_iter().filter(|s| closed(&s.points)) {
+    for s in upper_strokes(svg).into_iter().filter(|s| closed(&s.points)) {
         if let Some(o) = outline(&s.points[1..]) {
-            out.entry(s.colour).or_default().insert(o);
+            out.entry(s.stroke).or_default().insert(o);
         }
     }
     out
@@ -190,16 +183,16 @@ fn every_line_has_three_to_one_on_white() {
     for (name, layout, svg) in all_svgs() {
         // White strokes are the separators drawn over fills (lloyd2006-fig13's bars), not lines
         // on white.
-        for s in strokes(svg)
+        for s in upper_strokes(svg)
             .into_iter()
-            .filter(|s| s.width < BAND && s.colour != "#FFFFFF")
+            .filter(|s| s.width < BAND && s.stroke != "#FFFFFF")
         {
-            seen.insert(s.colour.clone());
-            if contrast(&s.colour) < 3.0 {
+            seen.insert(s.stroke.clone());
+            if contrast(&s.stroke) < 3.0 {
                 bad.insert(format!(
                     "{name} ({layout}): {} at {:.2} : 1",
-                    s.colour,
-                    contrast(&s.colour)
+                    s.stroke,
+                    contrast(&s.stroke)
                 ));
             }
         }
@@ -238,7 +231,7 @@ fn greys_alike(svg: &str) -> Vec<String> {
             continue;
         }
         pieces
-            .entry(s.colour.clone())
+            .entry(s.stroke.clone())
             .or_default()
             .push(length(&s.points));
     }
@@ -325,11 +318,11 @@ fn hollow_markers_start_on_a_side() {
     let mut bad = Vec::new();
     let mut count = 0;
     for (name, layout, svg) in all_svgs() {
-        for s in strokes(svg).into_iter().filter(|s| closed(&s.points)) {
+        for s in upper_strokes(svg).into_iter().filter(|s| closed(&s.points)) {
             let p = &s.points;
-            let grey = s.colour.len() == 7
-                && s.colour[1..3] == s.colour[3..5]
-                && s.colour[3..5] == s.colour[5..7];
+            let grey = s.stroke.len() == 7
+                && s.stroke[1..3] == s.stroke[3..5]
+                && s.stroke[3..5] == s.stroke[5..7];
             if grey || outline(&p[1..]).is_none() {
                 continue;
             }
@@ -340,7 +333,7 @@ fn hollow_markers_start_on_a_side() {
             if off > 0.15 {
                 bad.push(format!(
                     "{name} ({layout}): {} starts at a corner ({off:.2} off)",
-                    s.colour
+                    s.stroke
                 ));
             }
         }

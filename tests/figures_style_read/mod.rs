@@ -537,3 +537,10 @@ pub fn to_polyline(p: (f64, f64), line: &[(f64, f64)]) -> f64 {
             .fold(f64::INFINITY, f64::min),
     }
 }
+
+/// The distance from `p` to the box `r` (0 inside it).
+pub fn to_box(p: (f64, f64), r: &Box4) -> f64 {
+    let dx = (r[0] - p.0).max(p.0 - r[2]).max(0.0);
+    let dy = (r[1] - p.1).max(p.1 - r[3]).max(0.0);
+    dx.hypot(dy)
+}
