@@ -122,11 +122,12 @@ fn fig8_table_header_says_error_after_allocation() {
 }
 
 /// R6-lloyd2005-fig8-3: (c)'s s tick labels "1024" and "2048" were centred on their ticks,
-/// 3.5 units apart in one column and "2048" past the frame across two. In every form the s
-/// axis' "2048" is right-aligned (text-anchor end) to its tick (a black vertical line down from
-/// the axis line above it), and the s labels on its row keep at least 6 units apart.
+/// 3.5 units apart in one column (which now labels s at its ends only). In every form the s
+/// axis' "2048" is centred (text-anchor middle) on its tick (a black vertical line down from the
+/// axis line above it; R19-lloyd2005-fig8-1: right-aligned to it, it read as a label of
+/// s ≈ 1730), inside the page, and the s labels on its row keep at least 6 units apart.
 #[test]
-fn fig8_texture_s_labels_end_at_the_frame_and_stand_apart() {
+fn fig8_texture_s_labels_centred_on_their_ticks_and_apart() {
     for (form, opts) in forms() {
         let svg = render_svg("lloyd2005-fig8", &opts);
         let all = all_texts(&svg);
@@ -149,7 +150,7 @@ fn fig8_texture_s_labels_end_at_the_frame_and_stand_apart() {
             .unwrap_or_else(|| panic!("{form}: no 2048 under an axis"));
         assert_eq!(
             attr_str(&last.tag, "text-anchor"),
-            Some("end"),
+            Some("middle"),
             "{form}: {}",
             last.tag
         );
@@ -158,7 +159,7 @@ fn fig8_texture_s_labels_end_at_the_frame_and_stand_apart() {
             .filter(|a| last.bbox[1] > a.2 && a.0 <= last.x && last.x <= a.1 + 0.5)
             .min_by(|a, b| (last.bbox[1] - a.2).total_cmp(&(last.bbox[1] - b.2)))
             .unwrap();
-        // Its tick: a vertical black line down from the axis at the label's end (the
+        // Its tick: a vertical black line down from the axis at the label's centre (the
         // texture's end; the equal aspect may draw the axis further).
         let tick = svg
             .lines()
@@ -170,8 +171,19 @@ fn fig8_texture_s_labels_end_at_the_frame_and_stand_apart() {
                     && (p[0].0 - last.x).abs() <= 0.5
                     && (p[0].1.min(p[1].1) - axis.2).abs() <= 0.5
             });
-        assert!(tick, "{form}: no tick at 2048's end {}", last.x);
-        assert!(last.bbox[2] <= last.x + 0.5, "{form}: {:?}", last.bbox);
+        assert!(tick, "{form}: no tick at 2048's centre {}", last.x);
+        // The page's right edge in its units: the view box's x and width (bare: the crop).
+        let view_box: Vec<f64> = attr_str(svg.lines().next().unwrap(), "viewBox")
+            .unwrap()
+            .split(' ')
+            .map(|v| v.parse().unwrap())
+            .collect();
+        let right = view_box[0] + view_box[2];
+        assert!(
+            last.bbox[2] <= right,
+            "{form}: {:?} past {right}",
+            last.bbox
+        );
         let mut row: Vec<&Text> = all
             .iter()
             .filter(|t| {

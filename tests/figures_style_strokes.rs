@@ -213,14 +213,6 @@ const LOOKS: [&str; 6] = [
     "#00306E", "#00664B", "#D55E00", "#009CA6", "#A82E66", "#4D2E00",
 ];
 
-/// The figures whose sweep curves are still drawn solid beside a warp one grey from them
-/// (lloyd2005-fig4: ξ = ½ #3F007D, L* 18, by PSM's 21, ξ = −½ #9589C0, 60, by the uniform map's
-/// 54, the review's R6-lloyd2005-fig4-2): no colour keeps a warp 15 L* from all three sweep
-/// steps (18, 39, 60) at once, so their figure code must dash the sweep (lloyd2006-fig5 does:
-/// n′ = 2, 20, 100 dashed). Until it does they are listed here, and the test requires them to
-/// still fail, so that the list is emptied when they are fixed.
-const AWAITING_DASHES: [&str; 1] = ["lloyd2005-fig4"];
-
 /// The pairs of line colours of `svg` one grey apart (L* within 15), one of them a warp's or
 /// a scheme's, that do not differ both in dash and in marker.
 fn greys_alike(svg: &str) -> Vec<String> {
@@ -267,19 +259,15 @@ fn greys_alike(svg: &str) -> Vec<String> {
 /// grey apart (L* within 15) differ both in dash and in marker, so that they stay apart in
 /// greyscale (sixth figure review, X-10: lloyd2005-fig4, lloyd2006-fig5, barroso-fig7 mix the
 /// warps with the purple sweep; lloyd2006-worst-case sets the schemes beside the grey of ZP =
-/// ZP+W behind).
+/// ZP+W behind). No colour keeps a warp 15 L* from all three sweep steps (18, 39, 60) at once,
+/// so a sweep beside warps is dashed: lloyd2006-fig5's n′ = 2, 20, 100, and lloyd2005-fig4's
+/// ξ = ±½ (ξ = ½ #3F007D, L* 18, by PSM's 21; ξ = −½ #9589C0, 60, by the uniform map's 54; solid
+/// until the nineteenth review, R19-lloyd2005-fig4-1).
 #[test]
 fn colours_one_grey_apart_differ_in_dash_and_marker() {
     let mut bad = Vec::new();
     for (name, layout, svg) in all_svgs() {
         let alike = greys_alike(svg);
-        if AWAITING_DASHES.contains(&name.as_str()) {
-            assert!(
-                !alike.is_empty(),
-                "{name} ({layout}) passes now: remove it from AWAITING_DASHES"
-            );
-            continue;
-        }
         bad.extend(alike.into_iter().map(|a| format!("{name} ({layout}): {a}")));
     }
     assert!(bad.is_empty(), "{}", bad.join("\n"));

@@ -3,7 +3,7 @@
 
 use super::chart::{
     column, decades, draw_colour_bar, draw_colour_bar_across, draw_hemisphere_ringed, fmt_power,
-    fmt_times_ten, frame, Axis, ColourScale, PolarGrid, RINGS_GREY,
+    fmt_times_ten, frame, Axis, ColourScale, PolarGrid, FONT, RINGS_GREY,
 };
 use super::{Column, Fail, Figure};
 use crate::maps::WarpRule;
@@ -12,6 +12,7 @@ use crate::scheme::Partition;
 use crate::ViewFrustum;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
 use super::grids::{FIG7_AZIMUTHS, FIG7_ELEVATIONS};
@@ -145,7 +146,7 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     let lo = panels.iter().map(|p| p.min).fold(f64::INFINITY, f64::min);
     let hi = panels.iter().map(|p| p.max).fold(0.0, f64::max);
     let (lo, hi) = decades(lo, hi);
-    let scale = ColourScale::smooth(Axis::log10("(a)–(d) S̄ (log scale)", lo, hi));
+    let scale = ColourScale::smooth(Axis::log10(FIG7_S_BAR, lo, hi));
     // (a)'s brightest cells (fifth review, §4.7.5): the unwarped map's rectangle has a side
     // along the projected view direction; its largest S̄ (minimum-area rectangles peak at
     // 1.224·10⁶ over the same grid: docs/figures.md, `min_area`'s tests; the caption's five
@@ -305,7 +306,17 @@ impl Figure for Fig7 {
             let (_, lh) = last.dim_in_pixel();
             let half = (lh.saturating_sub(ROW_GAP)) / 2;
             let (top, bottom) = last.split_vertically(half);
-            draw_colour_bar_across(&top.margin(ROW_GAP, 0, 4, 4), s)?;
+            // The across bar's name under it has no room for S̄'s unit: the unit over the bar,
+            // as a bar's title (the eighteenth review, R18-lloyd2006-fig7-1).
+            let mut across = s.clone();
+            across.axis.label = FIG7_S_BAR_ACROSS.into();
+            draw_colour_bar_across(&top.margin(ROW_GAP, 0, 4, 4), &across)?;
+            let (tw, _) = top.dim_in_pixel();
+            top.draw(&Text::new(
+                S_UNIT,
+                ((tw / 2) as i32, ROW_GAP as i32 - 2),
+                TextStyle::from((FONT, 13).into_font()).pos(Pos::new(HPos::Center, VPos::Bottom)),
+            ))?;
             draw_colour_bar_across(&bottom.margin(ROW_GAP, 0, 4, 4), &self.ratio_scale)?;
         } else {
             // Upright, as tall as the disks: S̄'s right of (c), ending the row of (a)–(c)
@@ -373,6 +384,19 @@ pub(super) fn svg_in<F: Figure>(fig: &F, column: Column) -> String {
 /// disks are smaller and "viewer's right" reaches lower under its square): a disk's "viewer's
 /// right" and the next row's titles stand apart.
 const ROW_GAP: u32 = 8;
+
+/// S̄'s unit (res_t = 1: Lloyd 2006 §4.2).
+const S_UNIT: &str = "texels per image pixel";
+
+/// The name of the upright bar of (a)–(d) (two columns and bare), with S̄'s unit as the other
+/// figures' S̄ axes give it (the eighteenth review, R18-lloyd2006-fig7-1: "(a)–(d) S̄ (log
+/// scale)" gave none); longer than the bar, it runs into the bar's chart's ends, where nothing
+/// else is. Its powers of ten say the scale.
+const FIG7_S_BAR: &str = "(a)–(d) S̄ (texels per image pixel)";
+
+/// The name under one column's bar of (a)–(d), across a cell too narrow for the unit, which
+/// stands over the bar ([`S_UNIT`]).
+const FIG7_S_BAR_ACROSS: &str = "(a)–(d) S̄ (log scale)";
 
 /// Two columns: the height under the key disk for the key of (a)'s contour lines (two rows of
 /// [`draw_contour_key`]), and its indent from the key cell's left.
@@ -585,7 +609,10 @@ mod tests {
             }
             if column == Column::Double {
                 // S̄'s bar is written S with an overlined tspan.
-                for name in ["(a)–(d) S (log scale)", "(e) (b) ÷ (c) (log scale)"] {
+                for name in [
+                    "(a)–(d) S (texels per image pixel)",
+                    "(e) (b) ÷ (c) (log scale)",
+                ] {
                     let line = all.iter().find(|t| t.1 == name).unwrap().0;
                     assert!(line.contains("rotate(270"), "{line}");
                 }
@@ -632,6 +659,7 @@ mod tests {
                         t.1.starts_with('(')
                             && t.1.len() > 4
                             && !t.1.contains("log")
+                            && !t.1.contains("texels")
                             && !t.1.contains(" = ")
                             && !t.0.contains("#323232")
                     })

@@ -88,6 +88,12 @@ fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
         if i == 2 {
             s.direct_at = Some(zs[FIG4_XI_0_LABEL_AT]);
         }
+        // ξ = ±½, the sweep's two, dashed: each runs by a warp one grey from it, ξ = ½ by PSM
+        // (L* 18 and 21) and ξ = −½ by the uniform map (60 and 54), and where ξ = ½ crosses
+        // PSM its ★ sat on the crossing (the nineteenth review, R19-lloyd2005-fig4-1).
+        if i == 1 || i == 3 {
+            s = s.dashed();
+        }
         if i == 3 {
             s.shape = Some(Marker::Diamond);
             // One column: its label over its own curve by z = 8, where the lilac curve is

@@ -73,13 +73,17 @@ fn fig4_ticks_the_near_plane_marks_xi_minus_half_with_diamonds_and_labels_it_by_
             assert_eq!(on_axes, 4, "{column:?}: {d:?} is no diamond");
         }
         if column == Column::Single {
-            let curve = |colour: &str| {
-                svg.lines()
-                    .find(|l| {
+            // A curve's path: its pieces joined in the order drawn (ξ = −½ is dashed since the
+            // nineteenth review, R19-lloyd2005-fig4-1; the eye follows a dashed curve across
+            // its gaps).
+            let curve = |colour: &str| -> Vec<Vec<(f64, f64)>> {
+                vec![svg
+                    .lines()
+                    .filter(|l| {
                         l.starts_with("<polyline") && l.contains(&format!("stroke=\"{colour}\""))
                     })
-                    .map(polyline_points)
-                    .unwrap()
+                    .flat_map(polyline_points)
+                    .collect()]
             };
             let (lilac, orange) = (curve("#9589C0"), curve("#D55E00"));
             let lines: Vec<&str> = svg.lines().collect();
@@ -96,7 +100,13 @@ fn fig4_ticks_the_near_plane_marks_xi_minus_half_with_diamonds_and_labels_it_by_
             let (x, y) = (attr(rect, "x").unwrap(), attr(rect, "y").unwrap());
             let (w, h) = (attr(rect, "width").unwrap(), attr(rect, "height").unwrap());
             let c = (x + 0.5 * w, y + 0.5 * h);
-            let (own, other) = (distance_to(c, &lilac), distance_to(c, &orange));
+            let near = |pieces: &[Vec<(f64, f64)>]| {
+                pieces
+                    .iter()
+                    .map(|p| distance_to(c, p))
+                    .fold(f64::INFINITY, f64::min)
+            };
+            let (own, other) = (near(&lilac), near(&orange));
             assert!(
                 own < other,
                 "n′ = 17.325 at {c:?}: {own} from its curve, {other} from n′ = ∞'s"

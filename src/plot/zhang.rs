@@ -239,34 +239,32 @@ const fn double_panel_w() -> u32 {
     (SIZE.0 - 12 - Y_NAME - ROW_LABEL - 6 * GAP - 2 * BLOCK_GAP) / 9
 }
 
-/// The depth axis's ticks (0, 50 and 100, the near plane at 1 and the far plane at 100) and
-/// labels under the panel drawn by `chart` in `cell`: "0" centred on its tick, "100" ending at
-/// its tick (centred, it ran under the next panel).
+/// The depth axis's ticks (0, 50 and 100, the near plane at 1 and the far plane at 100) under
+/// the panel drawn by `chart` in `cell`, and where `numbered` their labels "0" and "100", each
+/// centred on its tick (the nineteenth review, R19-zhang-fig3-1: "100" ending at its tick
+/// stood under the unlabelled 50; it was so since it ran under the next panel centred, which
+/// is white there, the depth being numbered under one panel of a row only).
 fn draw_z_labels<DB: DrawingBackend>(
     cell: &DrawingArea<DB, Shift>,
     chart: &super::chart::Chart2d<'_, DB>,
     bottom: f64,
+    numbered: bool,
 ) -> Result<(), Fail> {
     let base = cell.get_base_pixel();
     let ink = RGBColor(0, 0, 0);
     let style = TextStyle::from((FONT, TEXT).into_font());
-    for (z, text, h) in [
-        (0.0, "0", HPos::Center),
-        (50.0, "", HPos::Center),
-        (100.0, "100", HPos::Right),
-    ] {
+    for (z, text) in [(0.0, "0"), (50.0, ""), (100.0, "100")] {
         let (x, y) = chart.backend_coord(&(z, bottom));
         let (x, y) = (x - base.0, y - base.1);
         cell.draw(&PathElement::new(
             vec![(x, y), (x, y + TICK as i32)],
             ink.stroke_width(1),
         ))?;
-        if !text.is_empty() {
-            let dx = i32::from(text.len() > 1);
+        if numbered && !text.is_empty() {
             cell.draw(&Text::new(
                 text,
-                (x + dx, y + TICK as i32 + 3),
-                style.pos(Pos::new(h, VPos::Top)),
+                (x, y + TICK as i32 + 3),
+                style.pos(Pos::new(HPos::Center, VPos::Top)),
             ))?;
         }
     }
@@ -299,8 +297,8 @@ impl Fig3 {
     /// Draws the panels of quantity `q` into `block` on `body`: a row per angle γ, a column
     /// per scheme, each panel's frustum outline and grey frame at the data's extent; the
     /// first column's panels carry γ (`row_name` of it), and those of the rows `ticked` the y
-    /// ticks from `y_first` every `y_step`; the rows of
-    /// `z_under` columns of the last row the depth's ticks, the `z_named` one its name.
+    /// ticks from `y_first` every `y_step`; the panels of the `z_under` columns of the last
+    /// row the depth's ticks, the first of them its numbers and the `z_named` one its name.
     #[allow(clippy::too_many_arguments)]
     fn draw_block<DB: DrawingBackend>(
         &self,
@@ -386,7 +384,7 @@ impl Fig3 {
                     RGBColor(150, 150, 150).stroke_width(1),
                 )))?;
                 if last_row {
-                    draw_z_labels(&cell, &chart, -half)?;
+                    draw_z_labels(&cell, &chart, -half, z_under.first() == Some(&s))?;
                 }
             }
         }

@@ -33,8 +33,9 @@ fn colour_bar_is_one_seamless_raster() {
 }
 
 /// The depth axis under each block's first column reads 0 and 100 (the far plane f, review:
-/// "0, 50" left f unreadable), "0" centred on its tick and "100" ending at the panel's right
-/// edge (centred, it ran under the next panel); the height has its axis title, "height y",
+/// "0, 50" left f unreadable), "0" and "100" centred on their ticks, "100" on the panel's
+/// right edge (the nineteenth review, R19-zhang-fig3-1: ending there, it stood under the
+/// unlabelled 50); the height has its axis title, "height y",
 /// once; every row's first panel of (a) has a y scale, −40, 0, 40; and rows are apart: a
 /// row's "−40" and the next row's "40" (13 units tall) keep at least 9 units between them
 /// (review: about 4 pt, touching).
@@ -62,11 +63,11 @@ fn depth_reads_0_to_100_the_height_is_named_and_rows_are_apart() {
         .collect();
     assert_eq!(hundreds.len(), 3, "{hundreds:?}");
     for (line, _, _) in hundreds {
-        assert!(line.contains("text-anchor=\"end\""), "{line}");
+        assert!(line.contains("text-anchor=\"middle\""), "{line}");
         let x = attr(line, "x").unwrap();
         assert!(
-            frames.iter().any(|r| (x - r).abs() <= 2.0),
-            "\"100\" ends at {x}, no frame edge there: {frames:?}"
+            frames.iter().any(|r| (x - r).abs() <= 1.0),
+            "\"100\" centred at {x}, no frame edge there: {frames:?}"
         );
     }
     assert!(named("0") >= 3 + 3);

@@ -60,6 +60,22 @@ pub(crate) fn boxed_text<DB: DrawingBackend>(
     size: u32,
     colour: RGBColor,
 ) -> Result<(), Fail> {
+    boxed_text_within(chart, at, text, pos, size, colour, None)
+}
+
+/// [`boxed_text`], its white box cut to the data rectangle `within` ([x0, y0], [x1, y1]) less
+/// a unit at each side, so that it leaves the rectangle's outline (a unit wide, centred on
+/// its edges) uncovered (lloyd2005-fig8's one-column "N" in a column narrower than its box:
+/// the nineteenth review, R19-lloyd2005-fig8-2).
+pub(crate) fn boxed_text_within<DB: DrawingBackend>(
+    chart: &mut Chart2d<'_, DB>,
+    at: (f64, f64),
+    text: &str,
+    pos: Pos,
+    size: u32,
+    colour: RGBColor,
+    within: Option<[(f64, f64); 2]>,
+) -> Result<(), Fail> {
     let ink = legible(colour);
     let style = TextStyle::from((FONT, size).into_font())
         .color(&ink)
@@ -71,12 +87,19 @@ pub(crate) fn boxed_text<DB: DrawingBackend>(
     let (dx, dy) = anchor_offset(pos, f64::from(w), f64::from(h));
     let (x0, y0, w, h) = (dx.round() as i32, dy.round() as i32, w as i32, h as i32);
     let p = LABEL_PAD;
+    let (mut a, mut b) = ((x0 - p, y0 - p), (x0 + w + p, y0 + h + p));
+    if let Some([c0, c1]) = within {
+        // The rectangle's corners in pixels from `at`, whichever way the axes run.
+        let o = chart.backend_coord(&at);
+        let (q0, q1) = (chart.backend_coord(&c0), chart.backend_coord(&c1));
+        let (l, r) = (q0.0.min(q1.0) - o.0 + 1, q0.0.max(q1.0) - o.0 - 1);
+        let (t, u) = (q0.1.min(q1.1) - o.1 + 1, q0.1.max(q1.1) - o.1 - 1);
+        a = (a.0.max(l), a.1.max(t));
+        b = (b.0.min(r), b.1.min(u));
+    }
     chart.draw_series(std::iter::once(
         EmptyElement::at(at)
-            + Rectangle::new(
-                [(x0 - p, y0 - p), (x0 + w + p, y0 + h + p)],
-                WHITE.mix(0.8).filled(),
-            )
+            + Rectangle::new([a, b], WHITE.mix(0.8).filled())
             + Text::new(text.to_string(), (0, 0), style.clone()),
     ))?;
     Ok(())
@@ -231,7 +254,10 @@ pub(crate) fn place_label(
                     .map(|&(a, b, _)| distance(c, a, b))
                     .fold(f64::INFINITY, f64::min)
             };
-            let ambiguous = if nearest(false) < nearest(true) {
+            // Equally near both reads as either (lloyd2006-fig4's ξ = −½ label stood 24.0
+            // units from its curve and 24.1 from the uniform map's: the eighteenth and
+            // nineteenth reviews): its own line at least 3 units nearer.
+            let ambiguous = if nearest(false) < nearest(true) + AMBIGUOUS {
                 1e3
             } else {
                 0.0
@@ -241,6 +267,9 @@ pub(crate) fn place_label(
     }
     best_box(candidates, area, Some(own), obstacles)
 }
+
+/// How much nearer its own line than any other a direct label's centre must be, in units.
+const AMBIGUOUS: f64 = 3.0;
 
 /// The distance from `p` to the segment `a`–`b`.
 fn distance(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {

@@ -3,8 +3,8 @@
 
 use super::{Fig8, SIZE, TAG};
 use crate::plot::chart::{
-    boxed_text, build_chart_styled, column, equal_aspect, plot_size, Axis, Chart2d, ChartStyle,
-    FONT, TICK, TITLE_GAP,
+    boxed_text_within, build_chart_styled, column, equal_aspect, plot_size, Axis, Chart2d,
+    ChartStyle, FONT, TICK, TITLE_GAP,
 };
 use crate::plot::{Column, Fail};
 use glam::DVec2;
@@ -13,8 +13,9 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 impl Fig8 {
-    /// The s axis' last tick (the texture's end, `n`) and its label, right-aligned to the
-    /// frame's end, at the other tick labels' height (the tick's length and 5 units under the
+    /// The s axis' last tick (the texture's end, `n`) and its label, centred on it as the
+    /// other tick labels are (the nineteenth review, R19-lloyd2005-fig8-1: right-aligned to
+    /// the frame's end, "2048" read as a label of s ≈ 1730), at the other tick labels' height (the tick's length and 5 units under the
     /// axis, as the chart draws them).
     fn last_s_label<DB: DrawingBackend>(
         body: &DrawingArea<DB, Shift>,
@@ -36,7 +37,7 @@ impl Fig8 {
             format!("{}", n as u32),
             (x, y + tick + 5),
             TextStyle::from((FONT, style.tick_size).into_font())
-                .pos(Pos::new(HPos::Right, VPos::Top)),
+                .pos(Pos::new(HPos::Center, VPos::Top)),
         ))?;
         Ok(())
     }
@@ -106,11 +107,10 @@ impl Fig8 {
         // Equal aspect: the square texture drawn square.
         let (xa, ya) = equal_aspect(body, chart_title, &x, &y, style)?;
         // Labelled at the texture's ends and middle only: four-digit labels every 500 texels
-        // run together on a narrow panel. The s axis' last label, 2048, is written right-aligned
-        // to the frame's end below ([`Fig8::last_s_label`]): centred on it, it came within 3.5
-        // units of "1024" in one column and ran past the page across two (the sixth review,
-        // R6-lloyd2005-fig8-3).
-        // In one column, whose plot is about 60 units wide, s is labelled at its ends only.
+        // run together on a narrow panel. The s axis' last label, 2048, is written at the
+        // frame's end below ([`Fig8::last_s_label`]; the equal aspect may draw the axis on).
+        // In one column, whose plot is about 60 units wide, s is labelled at its ends only (the
+        // sixth review, R6-lloyd2005-fig8-3: "1024" and "2048" came within 3.5 units).
         let ends = [0.0, 0.5 * n, n];
         let (xa, ya) = if single {
             (xa.labelled_at(&ends[..1]), ya.labelled_at(&[]))
@@ -159,13 +159,21 @@ impl Fig8 {
             let fits = f64::from(tw) + 2.0 <= f64::from(v.width) / per_px
                 && f64::from(th) + 2.0 <= f64::from(v.height) / per_px;
             if fits {
-                boxed_text(
+                // The white box within the part, clear of its outline.
+                boxed_text_within(
                     &mut chart,
                     at,
                     &c.tag,
                     Pos::new(HPos::Center, VPos::Center),
                     TAG,
                     BLACK,
+                    Some([
+                        (f64::from(v.x), f64::from(v.y)),
+                        (
+                            f64::from(v.x) + f64::from(v.width),
+                            f64::from(v.y) + f64::from(v.height),
+                        ),
+                    ]),
                 )?;
             } else {
                 outside.push((at.0, at.1, c.tag.as_str()));
