@@ -202,11 +202,9 @@ fn fig6_names_the_storage_factor_and_its_unit() {
             );
         }
         assert!(
-            joined
-                .iter()
-                // M_x, M_z ratios, without S̄'s unit (R16-, R17-lloyd2006-fig6-1: "M_x, M_z;
-                // S̄ (texels per image pixel, …)" read as the unit of all three).
-                .any(|s| *s == "Mx, Mz (ratios); S (texels per image pixel)"),
+            // M_x, M_z ratios, without S̄'s unit (R16-, R17-lloyd2006-fig6-1: "M_x, M_z;
+            // S̄ (texels per image pixel, …)" read as the unit of all three).
+            joined.contains(&"Mx, Mz (ratios); S (texels per image pixel)"),
             "{column:?} bare {bare}: {joined:?}"
         );
         // S̄'s markers: black polygons, each a square.
