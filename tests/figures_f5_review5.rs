@@ -238,18 +238,23 @@ fn printed_width(svg: &str) -> f64 {
         .unwrap()
 }
 
-/// X2: the single-plot figure lloyd2006-fig11 filled the page's 7.2 in (520 pt) across two
-/// columns for one diagram covering under half of it; it is 346 pt (4.8 in) wide there,
-/// captioned and bare, with its view box as wide (a unit a point); one column stays 240 pt.
-/// (lloyd2005-fig4 stays 520 pt: at 346 its five direct labels ran over its markers.)
+/// X2, reversed by the eighteenth review (R18-lloyd2006-fig11-1): the single-plot figure
+/// lloyd2006-fig11 was narrowed to 346 pt (4.8 in) across two columns for one diagram covering
+/// under half of the page's 520; printed at 520 pt like the other figures it was scaled 1.5×
+/// (its text 15.8 pt, its page 676 pt tall). Across two columns it is the page's 520 pt wide,
+/// captioned, with its view box as wide (a unit a point), and no taller than 640; its diagram
+/// keeps the size it had at 346 (the x and the y tick labels −4 and 4 142 units apart, ±1) and
+/// its ink (the y axis's name to the split planes' labels, as this reader boxes text) is
+/// centred on the page within 6 units, about 1 % of its width (it reads 264.5). Bare it is cut
+/// to its ink (tests/figures_bare.rs), narrower; one column stays 240 pt.
 #[test]
-fn single_plot_figures_are_narrower_than_the_page() {
+fn single_plot_figure_is_as_wide_as_the_page() {
+    let font = read::Font::dejavu();
     for name in ["lloyd2006-fig11"] {
         for (form, opts) in forms() {
             let svg = read::render_svg(name, &opts);
             let w = printed_width(&svg);
-            // Bare, the page is cut to its ink (tests/figures_bare.rs): narrower still.
-            let want = if form == "single" { 240.0 } else { 346.0 };
+            let want = if form == "single" { 240.0 } else { 520.0 };
             if form == "bare" {
                 assert!(w > 200.0 && w < want, "{name} {form}: {w} pt wide");
             } else {
@@ -261,6 +266,53 @@ fn single_plot_figures_are_narrower_than_the_page() {
                     "{name} {form}"
                 );
             }
+            if form != "double" {
+                continue;
+            }
+            let head = &svg[..svg.find('>').unwrap()];
+            let h: f64 = read::attr_str(head, "height")
+                .unwrap()
+                .trim_end_matches("pt")
+                .parse()
+                .unwrap();
+            assert!(h <= 640.0, "{name}: {h} pt tall");
+            let texts = read::texts(&font, &svg);
+            let find = |content: &str, rotated: bool| {
+                texts
+                    .iter()
+                    .filter(|t| t.content == content && t.rotated == rotated)
+                    .collect::<Vec<_>>()
+            };
+            // The tick labels −4 and 4: the x axis's on one baseline, the y axis's at one x.
+            let (lo, hi) = (find("\u{2212}4", false), find("4", false));
+            assert!(lo.len() == 2 && hi.len() == 2, "{name}: {lo:?} {hi:?}");
+            fn x_axis<'a>(v: &[&'a read::Text]) -> &'a read::Text {
+                v.iter().max_by(|a, b| a.y.total_cmp(&b.y)).unwrap()
+            }
+            fn y_axis<'a>(v: &[&'a read::Text]) -> &'a read::Text {
+                v.iter().min_by(|a, b| a.x.total_cmp(&b.x)).unwrap()
+            }
+            let (xl, xh) = (x_axis(&lo), x_axis(&hi));
+            let (yl, yh) = (y_axis(&lo), y_axis(&hi));
+            assert!((xl.y - xh.y).abs() < 1e-9 && (yl.x - yh.x).abs() < 1e-9);
+            for (d, what) in [(xh.x - xl.x, "x"), (yl.y - yh.y, "y")] {
+                assert!(
+                    (d - 142.0).abs() <= 1.0,
+                    "{name}: {what} ticks −4 to 4 {d} apart"
+                );
+            }
+            let y_name = find("light-view y", true);
+            assert_eq!(y_name.len(), 1, "{name}");
+            let right = ["n = 1", "z = 2", "z = 4", "f = 8"]
+                .iter()
+                .map(|l| find(l, false)[0].bbox[2])
+                .fold(f64::MIN, f64::max);
+            let centre = 0.5 * (y_name[0].bbox[0] + right);
+            assert!(
+                (centre - 260.0).abs() <= 6.0,
+                "{name}: the diagram's ink {} to {right}, centred at {centre}",
+                y_name[0].bbox[0]
+            );
         }
     }
 }

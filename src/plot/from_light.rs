@@ -154,12 +154,19 @@ pub(super) fn seen_from_light(l: DVec3) -> DVec2 {
 /// The labels of the axes of a diagram drawn by [`seen_from_light`]: right and up in the
 /// light's view (figure review 5, X3: "light z" read as the eye depth z that the split planes'
 /// labels give, and "−x in light space" named its partner in another form).
-/// lloyd2006-fig11's width in the two-column form: its one diagram covered under half of the
-/// page's 520 units (the fifth review, X2); 346 units, printed 346 pt (4.8 in).
-pub(crate) const FROM_BEHIND_WIDTH: u32 = 346;
-
 pub(super) const SEEN_X: &str = "light-view x";
 pub(super) const SEEN_Y: &str = "light-view y";
+
+/// lloyd2006-fig11's width in the two-column form: the page's 520 units, printed 520 pt, as
+/// every two-column figure (the eighteenth review, R18-lloyd2006-fig11-1: at 346, the fifth
+/// review's narrowing for X2, it was printed scaled 1.5× at 520 pt, its text 15.8 pt and its
+/// page 676 pt tall). The diagram keeps the size it had on the 346-unit page, centred.
+pub(crate) const FROM_BEHIND_WIDTH: u32 = 520;
+
+/// lloyd2006-fig11's height in the two-column form: the 346-unit page's 450 less the rows that
+/// the wider page saves, one of the key's two (19 units) and one of the caption's five (18),
+/// so that the diagram's plot is as tall, and as large, as on that page.
+pub(crate) const FROM_BEHIND_HEIGHT: u32 = 450 - 19 - 18;
 
 /// The light-space bounding box (min, max) of some cross-sections.
 fn bounds(sections: &[[DVec2; 4]]) -> (DVec2, DVec2) {
@@ -419,7 +426,7 @@ pub(super) fn lloyd2006_fig11() -> Result<FromLight, Fail> {
         caption,
         single_caption,
         panels: vec![p],
-        size: (FROM_BEHIND_WIDTH, 450),
+        size: (FROM_BEHIND_WIDTH, FROM_BEHIND_HEIGHT),
         single_size: (300, 410),
     })
 }

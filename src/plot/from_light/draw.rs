@@ -84,6 +84,9 @@ fn dim_clear(label: u32) -> f64 {
 /// The least distance between two plane labels of lloyd2006-fig11, in units.
 const FIG11_STEP: i32 = 11;
 
+/// A gutter label's distance from the gutter's left edge, in units.
+const LABEL_AT: i32 = 13;
+
 /// A panel title's distance from its cell's left edge, in units.
 const TITLE_INSET: i32 = 2;
 
@@ -143,6 +146,25 @@ impl Figure for FromLight {
         let (_, bh) = body.dim_in_pixel();
         let (body, strip) = body.split_vertically(bh - key_h);
         key(&strip, maps, fine, sz.key, true)?;
+        // One panel across two columns (lloyd2006-fig11) on the page's full 520 units (the
+        // eighteenth review, R18-lloyd2006-fig11-1): its drawing, narrower than the page, is
+        // centred in the body by [`fit`]; as much as its gutter keeps blank right of the widest
+        // label is taken off the body's left, so that the ink (the y axis's name to the labels'
+        // ends), not the drawing's cell with that blank, is centred on the page.
+        let body = if !single && self.panels.len() == 1 {
+            let label = TextStyle::from((FONT, sz.label).into_font());
+            let mut widest = 0;
+            for l in &self.panels[0].plane_labels {
+                let (w, _) = body
+                    .estimate_text_size(l, &label)
+                    .map_err(|e| Fail::Draw(e.to_string()))?;
+                widest = widest.max(w);
+            }
+            let unused = sz.gutter.saturating_sub(LABEL_AT as u32 + widest);
+            body.margin(0, 0, unused, 0)
+        } else {
+            body
+        };
         let columns = self.panels.len().min(2);
         let rows = self.panels.len().div_ceil(columns);
         // The rows above the last have no x title: the last is taller by the title's room, so
@@ -707,7 +729,7 @@ fn draw_panel<DB: DrawingBackend>(
         };
         gutter.draw(&Text::new(
             text,
-            (13 - shorter, y - gy),
+            (LABEL_AT - shorter, y - gy),
             label_style.clone(),
         ))?;
     }
