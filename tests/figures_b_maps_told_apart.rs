@@ -517,3 +517,95 @@ fn overview_outlines_show_their_keyed_dash_kinds() {
         }
     }
 }
+
+/// The eighteenth review, R18-barroso-fig5-1: in one column (d)'s map 1, a square 15.6 units on
+/// a side, was one solid polyline (its pattern, 5 : 2.5, fits one period on a side, fewer than a
+/// detail's two), while two columns dashed the same square (18.8 units) and the key dashes the
+/// map. In every form, each map-1 outline in the details (b), (d), (f) at least 12 units on a
+/// side (read as the bounding box of its pieces; (d)'s in every form, (b)'s and (f)'s are a few
+/// units and skipped) is drawn as dashes: at least four pieces, and along each side at least two
+/// dashes, starting and ending at its corners, each dash's share of its period map 1's 2/3
+/// (within 0.05), every dash at least 1 pt and every gap 0.8 pt long.
+#[test]
+fn detail_map_1_squares_are_dashed() {
+    const LEAST_SIDE: f64 = 12.0;
+    for (form, opts) in forms() {
+        let s = svg("barroso-fig5", form, &opts);
+        let pt = read::points_per_unit(&s);
+        let colours = key_colours(&s);
+        let c = &colours[0];
+        let mut checked = Vec::new();
+        for (from, to) in [("(b)", Some("(c)")), ("(d)", Some("(e)")), ("(f)", None)] {
+            let a = s.find(&format!(">{from}")).unwrap();
+            let b = to.map_or(s.len(), |to| {
+                let b = a + s[a..].find(&format!(">{to}")).unwrap();
+                s[..b].rfind("<text").unwrap()
+            });
+            let lines: Vec<Vec<(f64, f64)>> = s[a..b]
+                .lines()
+                .filter(|l| l.starts_with("<polyline"))
+                .filter(|l| attr_str(l, "stroke").is_some_and(|x| x.eq_ignore_ascii_case(c)))
+                .map(points)
+                .collect();
+            let all: Vec<(f64, f64)> = lines.iter().flatten().copied().collect();
+            if all.is_empty() {
+                continue;
+            }
+            let r = read::bbox(&all);
+            let (w, h) = (r[2] - r[0], r[3] - r[1]);
+            if w.min(h) < LEAST_SIDE {
+                continue;
+            }
+            let what = format!("{form} {from}: map 1, {w:.1} × {h:.1} units");
+            assert!(lines.len() >= 4, "{what}: {} polylines", lines.len());
+            let segs: Vec<((f64, f64), (f64, f64))> = lines
+                .iter()
+                .flat_map(|p| p.windows(2).map(|w| (w[0], w[1])).collect::<Vec<_>>())
+                .filter(|(p, q)| p != q)
+                .collect();
+            for (horizontal, at, lo, hi) in [
+                (true, r[1], r[0], r[2]),
+                (true, r[3], r[0], r[2]),
+                (false, r[0], r[1], r[3]),
+                (false, r[2], r[1], r[3]),
+            ] {
+                let on = |p: (f64, f64)| (if horizontal { p.1 } else { p.0 } - at).abs() <= 0.05;
+                let along = |p: (f64, f64)| if horizontal { p.0 } else { p.1 };
+                let mut iv: Vec<(f64, f64)> = segs
+                    .iter()
+                    .filter(|&&(p, q)| on(p) && on(q))
+                    .map(|&(p, q)| (along(p).min(along(q)), along(p).max(along(q))))
+                    .collect();
+                iv.sort_by(|x, y| x.0.total_cmp(&y.0));
+                // Pieces that meet (a polyline's points along one side) are one dash.
+                let mut dashes: Vec<(f64, f64)> = Vec::new();
+                for (x, y) in iv {
+                    match dashes.last_mut() {
+                        Some(d) if x <= d.1 + 0.05 => d.1 = d.1.max(y),
+                        _ => dashes.push((x, y)),
+                    }
+                }
+                let side = format!("{what}, side at {at:.1}");
+                assert!(dashes.len() >= 2, "{side}: solid: {dashes:?}");
+                assert!(
+                    (dashes[0].0 - lo).abs() <= 0.05
+                        && (dashes[dashes.len() - 1].1 - hi).abs() <= 0.05,
+                    "{side}: {dashes:?}"
+                );
+                for w in dashes.windows(2) {
+                    let (dash, gap) = (w[0].1 - w[0].0, w[1].0 - w[0].1);
+                    assert!(
+                        (dash / (dash + gap) - SHARES[0][0]).abs() <= 0.05,
+                        "{side}: dash {dash:.2} gap {gap:.2}: {dashes:?}"
+                    );
+                    assert!(
+                        dash * pt >= 1.0 - 0.01 && gap * pt >= 0.8 - 0.01,
+                        "{side}: dash {dash:.2} gap {gap:.2}: {dashes:?}"
+                    );
+                }
+            }
+            checked.push(from);
+        }
+        assert!(checked.contains(&"(d)"), "{form}: (d)'s map 1 not read");
+    }
+}

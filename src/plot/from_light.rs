@@ -50,8 +50,9 @@ pub(super) struct Panel {
     /// panel's axis limits, as drawn, outlined in grey here.
     pub enlarged: bool,
     /// Whether the maps' outlines are drawn fine (at most 2 units wide, each side dashed with
-    /// whole periods of at most a quarter of it, or solid) over the frustum's lines
-    /// (barroso-fig5, R9-barroso-fig5-1), rather than wide, under them (lloyd2006-fig11).
+    /// whole periods of its map's pattern as they fit and print, or solid: `draw_maps.rs`) over
+    /// the frustum's lines (barroso-fig5, R9-barroso-fig5-1), rather than wide, under them
+    /// (lloyd2006-fig11).
     pub fine: bool,
     /// Whether each map is numbered, "1" to "4", at a corner of its rectangle (barroso-fig5's
     /// details (b), (d), (f); the eleventh review, R11-barroso-fig5-1).

@@ -3,8 +3,11 @@
 //! 20 units, longer than its sides, and printed as scattered purple blobs). A fine outline is
 //! at most 2 units wide (2 pt in two columns, 1.6 pt in one) and dashed along each side with
 //! its map's pattern fitted to the side: a whole number of periods, the side starting and
-//! ending on a dash (so that the corners are drawn). A detail's side takes at least
-//! [`DETAIL_LEAST_PERIODS`] periods of the pattern, else it is solid; an overview's side
+//! ending on a dash (so that the corners are drawn). A detail's side ([`detail_dashes`]) takes
+//! at least [`DETAIL_LEAST_PERIODS`] periods of the pattern where they fit, else two of the
+//! pattern scaled down to no less than [`DETAIL_LEAST_SCALE`] where they print, else it is
+//! solid (the eighteenth review, R18-barroso-fig5-1: one column's 15.6-unit map 1 in (d) was
+//! solid); an overview's side
 //! ([`overview_dashes`]) takes the most periods, up to [`LEAST_PERIODS`], that print (dashes at
 //! least [`LEAST_DASH_PT`], gaps [`LEAST_GAP_PT`]), of the pattern scaled down or, shorter
 //! still, of its kind at its shortest ([`least_pattern`]), and is solid only where not even one
@@ -49,10 +52,11 @@ pub(super) const FINE_PATTERNS: [[&[f64]; 4]; 2] = [
     scaled!(FINE_SCALE[1][0], FINE_SCALE[1][1]),
 ];
 
-/// The least number of whole periods a side of a detail's map ((b), (d), (f)) is dashed with:
-/// two (a dash, a gap, a dash, a gap, a dash at least), so that the dash kinds show on the
-/// details' maps, whose sides are 20 to 130 units; the overviews keep [`LEAST_PERIODS`]
-/// (R9-barroso-fig5-1).
+/// The least number of whole periods a side of a detail's map ((b), (d), (f)) is dashed with
+/// where they fit: two (a dash, a gap, a dash, a gap, a dash at least), so that the dash kinds
+/// show on the details' maps, whose sides are 15 to 130 units; the overviews keep
+/// [`LEAST_PERIODS`] (R9-barroso-fig5-1). A shorter side takes two of the pattern scaled down,
+/// to no less than [`DETAIL_LEAST_SCALE`], else is solid ([`detail_dashes`]).
 pub(super) const DETAIL_LEAST_PERIODS: f64 = 2.0;
 
 /// Every fine outline's width: 2 units (2 pt in two columns, 1.6 pt in one), the eleventh
@@ -99,6 +103,20 @@ pub(super) fn least_pattern(pattern: &[f64]) -> Vec<f64> {
         .collect()
 }
 
+/// Whether `pattern` (units) times `scale` prints: every dash at least [`LEAST_DASH_PT`], every
+/// gap [`LEAST_GAP_PT`].
+fn prints(pattern: &[f64], scale: f64) -> bool {
+    let per_pt = units_per_pt();
+    pattern.iter().enumerate().all(|(j, &v)| {
+        let least = if j % 2 == 0 {
+            LEAST_DASH_PT
+        } else {
+            LEAST_GAP_PT
+        };
+        scale * v >= least * per_pt - 1e-9
+    })
+}
+
 /// An overview's side `len` units long dashed with `pattern` (units): where the pattern fits at
 /// least [`LEAST_PERIODS`] whole periods, as [`side_dashes`] fits them; else the most periods
 /// k, from [`LEAST_PERIODS`] down to 1, for which the pattern scaled to k periods and a last
@@ -106,21 +124,11 @@ pub(super) fn least_pattern(pattern: &[f64]) -> Vec<f64> {
 /// its kind at its shortest ([`least_pattern`]) stretched to k periods does; the whole side
 /// where not even one period prints.
 pub(super) fn overview_dashes(len: f64, pattern: &[f64]) -> Vec<(f64, f64)> {
-    let per_pt = units_per_pt();
     let dashes = side_dashes(len, pattern, LEAST_PERIODS);
     if dashes.len() > 1 || pattern.len() < 2 || len <= 0.0 {
         return dashes;
     }
-    let prints = |p: &[f64], scale: f64| {
-        p.iter().enumerate().all(|(j, &v)| {
-            let least = if j % 2 == 0 {
-                LEAST_DASH_PT
-            } else {
-                LEAST_GAP_PT
-            };
-            scale * v >= least * per_pt - 1e-9
-        })
-    };
+    let per_pt = units_per_pt();
     let least: Vec<f64> = least_pattern(pattern).iter().map(|v| v * per_pt).collect();
     for k in (1..=LEAST_PERIODS as usize).rev() {
         for p in [pattern, &least[..]] {
@@ -132,6 +140,37 @@ pub(super) fn overview_dashes(len: f64, pattern: &[f64]) -> Vec<(f64, f64)> {
         }
     }
     vec![(0.0, len)]
+}
+
+/// The most a detail's pattern is scaled down on a short side ([`detail_dashes`]): to three
+/// fifths, so that map 1's dashes stay at least 2.4 pt (4 pt × 3/5, 1.2 times the line's width
+/// and longer than its gaps) and read as the key's dashes, not as dots; two periods and a last
+/// dash of map 1's pattern thus fit a side of 16 × 3/5 = 9.6 units in two columns and
+/// 20 × 3/5 = 12 units in one (9.6 pt either way).
+pub(super) const DETAIL_LEAST_SCALE: f64 = 0.6;
+
+/// A detail's side `len` units long dashed with `pattern` (units): where the pattern fits at
+/// least [`DETAIL_LEAST_PERIODS`] whole periods, as [`side_dashes`] fits them; else that many
+/// periods and a last dash of the pattern scaled down to the side, where the scale is at least
+/// [`DETAIL_LEAST_SCALE`] and the scaled pattern prints ([`prints`]); else the whole side. The
+/// eighteenth review, R18-barroso-fig5-1: in one column map 1's pattern (5, 2.5) fits
+/// round((15.6 − 5)/7.5) = 1 period on the 15.6-unit sides of (d)'s square, fewer than two, and
+/// the square was drawn solid (in two columns (4, 2) fits 2 on its 18.8-unit sides, dashed);
+/// now two periods scaled by 15.6/20 = 0.78 (dashes 3.9 units, 3.1 pt; gaps 1.95 units,
+/// 1.56 pt). The maps a few units across in (b) and (f) stay solid (map 1's 7 units in two
+/// columns would take a scale of 0.44, its dashes 1.75 pt: dots).
+pub(super) fn detail_dashes(len: f64, pattern: &[f64]) -> Vec<(f64, f64)> {
+    let dashes = side_dashes(len, pattern, DETAIL_LEAST_PERIODS);
+    if dashes.len() > 1 || pattern.len() < 2 || len <= 0.0 {
+        return dashes;
+    }
+    let (period, first): (f64, f64) = (pattern.iter().sum(), pattern[0]);
+    let k = DETAIL_LEAST_PERIODS as usize;
+    let scale = len / (k as f64 * period + first);
+    if (DETAIL_LEAST_SCALE - 1e-12..1.0).contains(&scale) && prints(pattern, scale) {
+        return fitted(len, pattern, k, scale);
+    }
+    dashes
 }
 
 /// `k` periods of `pattern` times `scale` and a last dash, from 0, the last dash ending at `len`.
@@ -254,8 +293,8 @@ pub(super) fn outline_pieces(
 
 /// Panel `p`'s maps drawn fine ([`fine_stroke`]) over the frustum's lines, the farthest first,
 /// each clipped to the plot (`bounds`: x and y ranges; a side outside it is not drawn) and
-/// each drawn side dashed with whole periods ([`outline_pieces`]): in a detail at least
-/// [`DETAIL_LEAST_PERIODS`] of the map's pattern, in an overview by [`overview_dashes`];
+/// each drawn side dashed with whole periods ([`outline_pieces`]): in a detail by
+/// [`detail_dashes`], in an overview by [`overview_dashes`];
 /// `per_unit` page units a data unit. Over the lines: a fine outline is
 /// no wider than the frustum's edges, and under them it would not show where it lies on one.
 pub(super) fn fine_maps<DB: DrawingBackend>(
@@ -284,7 +323,7 @@ pub(super) fn fine_maps<DB: DrawingBackend>(
         let detail = p.window.is_some();
         let dashes = |len: f64| {
             if detail {
-                side_dashes(len, pattern, DETAIL_LEAST_PERIODS)
+                detail_dashes(len, pattern)
             } else {
                 overview_dashes(len, pattern)
             }
@@ -338,6 +377,34 @@ mod tests {
         assert!((d[1].0 - d[0].0 - 4.1176).abs() < 1e-4, "{d:?}");
         assert!((d[0].1 - 2.9412).abs() < 1e-4, "{d:?}");
         assert_eq!(side_dashes(15.0, &[3.0, 1.2], 4.0), vec![(0.0, 15.0)]);
+    }
+
+    /// R18-barroso-fig5-1, by hand: one column's map 1 pattern (5, 2.5) on (d)'s 15.6-unit side
+    /// fits round(10.6/7.5) = 1 period, fewer than two: [`side_dashes`] leaves it solid, while
+    /// [`detail_dashes`] scales the pattern by 15.6/20 = 0.78 to two periods and a last dash:
+    /// three dashes 3.9 long, 5.85 apart, the last ending at 15.6. A side of 40 keeps
+    /// [`side_dashes`]'s periods; two columns' (4, 2) on (b)'s 7-unit map 1 would be scaled by
+    /// 7/16 = 0.44 < 3/5 and stays solid, on 9.6 units by 3/5 is dashed.
+    #[test]
+    fn a_short_detail_side_is_dashed_scaled_down() {
+        let p = [5.0, 2.5];
+        assert_eq!(
+            side_dashes(15.6, &p, DETAIL_LEAST_PERIODS),
+            vec![(0.0, 15.6)]
+        );
+        let d = detail_dashes(15.6, &p);
+        assert_eq!(d.len(), 3, "{d:?}");
+        for (j, &(a, b)) in d.iter().enumerate() {
+            assert!((a - 5.85 * j as f64).abs() < 1e-9, "{d:?}");
+            assert!((b - a - 3.9).abs() < 1e-9, "{d:?}");
+        }
+        assert!((d[2].1 - 15.6).abs() < 1e-9);
+        assert_eq!(detail_dashes(7.0, &[4.0, 2.0]), vec![(0.0, 7.0)]);
+        assert_eq!(detail_dashes(9.6, &[4.0, 2.0]).len(), 3);
+        assert_eq!(
+            detail_dashes(40.0, &p),
+            side_dashes(40.0, &p, DETAIL_LEAST_PERIODS)
+        );
     }
 
     /// A 10 × 4 rectangle, solid all round: one closed line from the middle of its first side,
