@@ -281,10 +281,10 @@ fn numbers_sit_by_their_own_maps() {
             // The last panel drawn (the key is drawn first).
             ("(f)", None, [2, 3]),
         ] {
-            let a = s.find(&format!(">{from}")).unwrap();
+            let a = read::title_at(&s, 0, from).unwrap();
             // Up to the next title's element.
             let b = to.map_or(s.len(), |to| {
-                let b = a + s[a..].find(&format!(">{to}")).unwrap();
+                let b = read::title_at(&s, a + 1, to).unwrap();
                 s[..b].rfind("<text").unwrap()
             });
             let part = &s[a..b];
@@ -426,8 +426,8 @@ fn overview_outlines_show_their_keyed_dash_kinds() {
         let colours = key_colours(&s);
         assert_eq!(colours.len(), 4, "{form}");
         for (from, to) in [("(a)", "(b)"), ("(c)", "(d)"), ("(e)", "(f)")] {
-            let a = s.find(&format!(">{from}")).unwrap();
-            let b = a + s[a..].find(&format!(">{to}")).unwrap();
+            let a = read::title_at(&s, 0, from).unwrap();
+            let b = read::title_at(&s, a + 1, to).unwrap();
             let part = &s[a..s[..b].rfind("<text").unwrap()];
             let mut dash_dot_sides = 0;
             for (m, c) in colours.iter().enumerate() {
@@ -536,9 +536,9 @@ fn detail_map_1_squares_are_dashed() {
         let c = &colours[0];
         let mut checked = Vec::new();
         for (from, to) in [("(b)", Some("(c)")), ("(d)", Some("(e)")), ("(f)", None)] {
-            let a = s.find(&format!(">{from}")).unwrap();
+            let a = read::title_at(&s, 0, from).unwrap();
             let b = to.map_or(s.len(), |to| {
-                let b = a + s[a..].find(&format!(">{to}")).unwrap();
+                let b = read::title_at(&s, a + 1, to).unwrap();
                 s[..b].rfind("<text").unwrap()
             });
             let lines: Vec<Vec<(f64, f64)>> = s[a..b]

@@ -234,9 +234,18 @@ fn barroso_fig7_caption_defines_its_symbols() {
         let (eq13, fall_off) = if form == "single" {
             ("Eq 13 for γ ≥ θ, γ < θ", "n′1(γlim)/r(γ)")
         } else {
-            ("Eq 13's n′ for γ ≥ θ and γ < θ", "n′ = n′1(γlim)/r(γ)")
+            ("Eq 13's n′ for γ ≥ θ, γ < θ", "n′ = n′1(γlim)/r(γ)")
         };
-        for want in ["n′1", "n′2", eq13, "Eq 15", fall_off] {
+        // θ defined (R21-barroso-fig7-1: in Zhang's paper, whose r(γ) it draws, θ is the
+        // light's angle).
+        for want in [
+            "n′1",
+            "n′2",
+            eq13,
+            "Eq 15",
+            fall_off,
+            "half field of view θ = 30°",
+        ] {
             assert!(c.contains(want), "{form}: no {want:?} in {c}");
         }
     }

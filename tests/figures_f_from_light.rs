@@ -693,14 +693,9 @@ struct Line {
 /// The polylines of `svg` after the first text whose content starts with `from` and before the
 /// next one starting with `to` (a panel's elements, from its title to the next panel's).
 fn lines_between(svg: &str, from: &str, to: Option<&str>) -> Vec<Line> {
-    let start = svg
-        .find(&format!(">{from}"))
-        .unwrap_or_else(|| panic!("no text {from:?}"));
+    let start = read::title_at(svg, 0, from).unwrap_or_else(|| panic!("no text {from:?}"));
     let end = to.map_or(svg.len(), |t| {
-        start
-            + svg[start..]
-                .find(&format!(">{t}"))
-                .unwrap_or(svg.len() - start)
+        read::title_at(svg, start + 1, t).unwrap_or(svg.len())
     });
     svg[start..end]
         .lines()

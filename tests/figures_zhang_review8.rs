@@ -59,11 +59,18 @@ fn m_is_explained_in_words_not_marked_in_the_titles() {
         let text = caption(&all);
         // Two columns cite Lloyd 2006's Eq 7, 8; one column has no room (R13-zhang-fig3-1 took it
         // for SSM's n′).
+        // Two columns name the span Zhang's; one column, whose caption starts with Zhang's
+        // figure, gave those words to θ's definition (R21-zhang-fig3-1).
+        let factor = if form == "single" {
+            "×2 for [−1, 1]"
+        } else {
+            "×2 for Zhang's span [−1, 1]"
+        };
         for want in [
             "m: Lloyd 2006's error",
             "facing the light",
-            "×2 for Zhang's",
-            "[−1, 1]",
+            factor,
+            "half field of view θ",
         ] {
             assert!(text.contains(want), "{form}: no {want:?} in {text}");
         }

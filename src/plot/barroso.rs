@@ -158,13 +158,13 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
         title: TITLE.into(),
         caption: vec![format!(
             "Barroso & Celes 2007, Fig. 7 (Eq 13–18), n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
-             θ\u{a0}=\u{a0}{phi_deg:.0}°. n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for \
-             γ\u{a0}≥\u{a0}θ and γ\u{a0}<\u{a0}θ; below γ_{{lim}} (Eq\u{a0}15) \
-             n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r by Eq\u{a0}18 (bold) \
-             or Zhang et al.'s Eq\u{a0}17; n′_{{1}} is Eq\u{a0}18's curve above γ_{{lim}}. \
-             Also LiSPSM's n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ and the n′ of \
+             half field of view θ\u{a0}=\u{a0}{phi_deg:.0}°. n′_{{1}}, n′_{{2}}: Eq\u{a0}13's n′ for \
+             γ\u{a0}≥\u{a0}θ, γ\u{a0}<\u{a0}θ; below γ_{{lim}} (Eq\u{a0}15) \
+             n′\u{a0}=\u{a0}n′_{{1}}(γ_{{lim}})/r(γ), r: Eq\u{a0}18 (bold) \
+             or Zhang's Eq\u{a0}17; n′_{{1}} is Eq\u{a0}18's curve above γ_{{lim}}. \
+             LiSPSM's n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ and the n′ of \
              least max m_z over the whole frustum, not only \
-             along the view axis as n′_{{1}} (Eq\u{a0}12). (b) enlarges γ {}°–{}°: \
+             along the view axis as n′_{{1}} (Eq\u{a0}12). (b): γ {}°–{}°, \
              n′ turns near γ\u{a0}=\u{a0}θ.",
             WINDOW.0, WINDOW.1
         )],
@@ -178,11 +178,11 @@ pub(super) fn fig7() -> Result<Fig7, Fail> {
     // γ_lim's value, which two columns key in (b); every symbol the key and the caption use
     // defined (figure review 5, X7).
     let single_caption = format!(
-        "Barroso & Celes 2007, Fig. 7: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+        "Barroso & Celes 2007, Fig. 7: f/n\u{a0}=\u{a0}{f}, half field of view \
          θ\u{a0}=\u{a0}{phi_deg:.0}°. \
          n′_{{1}}, n′_{{2}}: Eq\u{a0}13 for γ\u{a0}≥\u{a0}θ, γ\u{a0}<\u{a0}θ; below \
-         γ_{{lim}}\u{a0}=\u{a0}{:.1}° (Eq\u{a0}15), n′_{{1}}(γ_{{lim}})/r(γ), r: \
-         Eq\u{a0}18 (bold), Zhang's Eq\u{a0}17. Least max m_z: whole frustum; LiSPSM: \
+         γ_{{lim}}\u{a0}=\u{a0}{:.1}° (Eq\u{a0}15), n′_{{1}}(γ_{{lim}})/r(γ), r as \
+         keyed. Least max m_z: whole frustum; LiSPSM: \
          n′\u{a0}=\u{a0}(n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ.",
         gl.to_degrees()
     );

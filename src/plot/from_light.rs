@@ -331,14 +331,13 @@ pub(super) fn barroso_fig5() -> Result<FromLight, Fail> {
     // split depths here, as the overviews label no plane (figure review 6: their gutter left
     // every plot about 40 units wide).
     let single_caption = format!(
-        "Barroso & Celes 2007, Fig. 5: k\u{a0}=\u{a0}{k}, n\u{a0}=\u{a0}{n}, \
-         f\u{a0}=\u{a0}{f}, θ\u{a0}=\u{a0}{phi:.0}°. (a), (c): Eq\u{a0}5, z\u{a0}=\u{a0}{}; \
-         (e), not in the paper: Eq\u{a0}19, light {gamma_deg:.0}°, \
+        "Barroso & Celes 2007, Fig. 5: f/n\u{a0}=\u{a0}{f}, \
+         θ\u{a0}=\u{a0}{phi:.0}°. (a), (c): Eq\u{a0}5, z\u{a0}=\u{a0}{}; \
+         (e), not in the paper: Eq\u{a0}19, light {gamma_deg:.0}°, target ratio \
          α\u{a0}=\u{a0}{ADAPTIVE_RATIO}, z\u{a0}=\u{a0}{}; thick: far face. (b), (d), \
          (f) enlarge grey boxes.",
         fmt_planes(&ss.planes()[1..k]),
         fmt_planes(&ad.planes()[1..k]),
-        n = view.near(),
         f = view.far(),
         phi = view.half_fov().to_degrees(),
         gamma_deg = gamma.to_degrees(),

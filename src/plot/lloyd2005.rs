@@ -36,6 +36,13 @@ const FIG4_LABEL_AT: usize = 193;
 /// marker and curve in every form.
 const FIG4_XI_0_LABEL_AT: usize = 150;
 
+/// Where Fig 4's ξ = 0 curve asks its label to end in one column: z = 9.37. At z = 7.78 the
+/// label's centre stood 15.7 units from its curve and 15.8 from ξ = −½'s, and once labels had to
+/// be 3 units nearer their own line (the nineteenth review) it moved to 1.5 units from the ▲ at
+/// z ≈ 8.9 (tests/figures_l2005_review10.rs wants 2); here it stands under its curve, 2.5 units
+/// from every marker, 13.2 units from its curve and 16.1 from ξ = −½'s.
+const FIG4_XI_0_SINGLE_LABEL_AT: usize = 185;
+
 /// Where Fig 4's ξ = −½ curve asks its label to end in one column: z = 8.01.
 const FIG4_XI_HALF_LABEL_AT: usize = 155;
 
@@ -86,7 +93,13 @@ fn fig4_chart(single: bool) -> Result<LineChart, Fail> {
         // ξ = 0: under its curve (the g₀ line's label is over it by the far plane), its end
         // asked at z = 7.78, so that it keeps clear of the curve's markers.
         if i == 2 {
-            s.direct_at = Some(zs[FIG4_XI_0_LABEL_AT]);
+            s.direct_at = Some(
+                zs[if single {
+                    FIG4_XI_0_SINGLE_LABEL_AT
+                } else {
+                    FIG4_XI_0_LABEL_AT
+                }],
+            );
         }
         // ξ = ±½, the sweep's two, dashed: each runs by a warp one grey from it, ξ = ½ by PSM
         // (L* 18 and 21) and ξ = −½ by the uniform map (60 and 54), and where ξ = ½ crosses

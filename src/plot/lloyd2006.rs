@@ -341,8 +341,8 @@ pub(super) fn fig6() -> Result<Keyed, Fail> {
         size: (Column::Single.width(), SINGLE_HEIGHT),
         title: FIG6_TITLE.into(),
         caption: vec![format!(
-            "Lloyd et al. 2006, Fig. 6 (Eq 9–12), {config}, on a log scale (the paper scales \
-             each curve to one linear axis); largest at η\u{a0}=\u{a0}−1: {maxima}; M_z \
+            "Lloyd et al. 2006, Fig. 6 (Eq 9–12), {config}, equal resolutions, on a log scale \
+             (the paper scales each to one linear axis); largest at η\u{a0}=\u{a0}−1: {maxima}; M_z \
              least at η\u{a0}=\u{a0}0."
         )],
         charts: vec![c],

@@ -163,9 +163,9 @@ pub(super) fn fig3() -> Result<Fig3, Fail> {
     // E_q = 2 m left to the rows' and blocks' labels, the half scale to the axis' name
     // ("height y (drawn at ½ the scale of z)", R11-zhang-fig3-3); m and the factor 2 written out (R11-zhang-fig3-1).
     let single_caption = format!(
-        "Zhang et al. 2009, Fig. 3: n\u{a0}=\u{a0}{n}, f\u{a0}=\u{a0}{f}, \
+        "Zhang et al. 2009, Fig. 3: f/n\u{a0}=\u{a0}{f}, half field of view \
          θ\u{a0}=\u{a0}{phi:.0}°, light at γ from the view. m: Lloyd 2006's error \
-         facing the light, ×2 for Zhang's [−1,\u{a0}1]. n′: SSM ∞, LiSPSM \
+         facing the light, ×2 for [−1,\u{a0}1]. n′: SSM ∞, LiSPSM \
          (n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ; TSM: \
          80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}{TSM_FOCUS}."
     );

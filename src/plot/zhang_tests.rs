@@ -158,8 +158,9 @@ fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
     // One column: the same set-up in fewer words, and the LiSPSM and TSM columns' rules (the
     // eighth review, R8-zhang-fig3-1).
     for want in [
-        "n\u{a0}=\u{a0}1, f\u{a0}=\u{a0}100",
-        "θ\u{a0}=\u{a0}30°, light at γ from the view.",
+        "f/n\u{a0}=\u{a0}100",
+        // θ defined (the twenty-first review, R21-zhang-fig3-1).
+        "half field of view θ\u{a0}=\u{a0}30°, light at γ from the view.",
         // SSM defined by its n′ (the thirteenth review, R13-zhang-fig3-1).
         "n′: SSM ∞, LiSPSM (n\u{a0}+\u{a0}√(fn))/sin\u{a0}γ",
         "TSM: 80\u{a0}% rule, focus depth δ\u{a0}=\u{a0}10",
@@ -179,8 +180,9 @@ fn one_column_text_is_full_size_and_the_caption_defines_its_symbols() {
             assert!(c.contains("half field of view θ\u{a0}=\u{a0}30°"), "{c}");
         }
         // The factor 2 written out (the eleventh review, R11-zhang-fig3-1: "(×2: span [−1, 1])"
-        // was shorthand).
-        assert!(c.contains("×2 for Zhang's"), "{c}");
+        // was shorthand); one column, whose caption starts with Zhang's figure, gave "Zhang's"
+        // to θ's definition (the twenty-first review, R21-zhang-fig3-1).
+        assert!(c.contains("×2 for "), "{c}");
         assert!(c.contains("[−1,\u{a0}1]"), "{c}");
         assert!(!c.contains("π/6"), "{c}");
         // δ is named (the ninth review, R9-zhang-fig3-1: Martin & Tan's focus depth, undefined).

@@ -544,3 +544,23 @@ pub fn to_box(p: (f64, f64), r: &Box4) -> f64 {
     let dy = (r[1] - p.1).max(p.1 - r[3]).max(0.0);
     dx.hypot(dy)
 }
+
+/// The byte offset in `svg`, at or after `from`, of ">`title`" in the first `<text>` line that
+/// is no caption's (their grey, #323232) and whose text starts with `title` (a panel's title,
+/// "(e)": a caption line may start with "(e)" too, and captions are written first).
+pub fn title_at(svg: &str, from: usize, title: &str) -> Option<usize> {
+    let key = format!(">{title}");
+    let mut at = 0;
+    for line in svg.split_inclusive('\n') {
+        let start = at;
+        at += line.len();
+        if line.starts_with("<text") && !line.contains("fill=\"#323232\"") {
+            if let Some(i) = line.find(&key) {
+                if start + i >= from {
+                    return Some(start + i);
+                }
+            }
+        }
+    }
+    None
+}
