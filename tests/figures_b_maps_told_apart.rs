@@ -155,6 +155,32 @@ fn same_kind(a: &[f64], b: &[f64]) -> bool {
 
 /// The kinds of `shares` by hand: 6 : 3 dashes are 2/3, a dash-dot 12 : 3 : 2 : 3 is 0.4 and
 /// 0.8, and two kinds 0.1 apart differ.
+/// The four sides of the axis-aligned box `r` (bottom and top, then left and right) as
+/// (the side's fixed coordinate, its extent from, to, the pieces of `segs` lying on it as
+/// intervals along it, sorted by their start).
+#[allow(clippy::type_complexity)]
+fn sides(segs: &[((f64, f64), (f64, f64))], r: &[f64; 4]) -> Vec<(f64, f64, f64, Vec<(f64, f64)>)> {
+    [
+        (true, r[1], r[0], r[2]),
+        (true, r[3], r[0], r[2]),
+        (false, r[0], r[1], r[3]),
+        (false, r[2], r[1], r[3]),
+    ]
+    .into_iter()
+    .map(|(horizontal, at, lo, hi)| {
+        let on = |p: (f64, f64)| (if horizontal { p.1 } else { p.0 } - at).abs() <= 0.05;
+        let along = |p: (f64, f64)| if horizontal { p.0 } else { p.1 };
+        let mut iv: Vec<(f64, f64)> = segs
+            .iter()
+            .filter(|&&(p, q)| on(p) && on(q))
+            .map(|&(p, q)| (along(p).min(along(q)), along(p).max(along(q))))
+            .collect();
+        iv.sort_by(|x, y| x.0.total_cmp(&y.0));
+        (at, lo, hi, iv)
+    })
+    .collect()
+}
+
 #[test]
 fn dash_kinds_are_read_by_hand() {
     let dashes: Vec<[(f64, f64); 2]> = (0..5)
@@ -448,24 +474,10 @@ fn overview_outlines_show_their_keyed_dash_kinds() {
                 let r = read::bbox(&all);
                 // Bottom and top (along x), left and right (along y): the line's fixed
                 // coordinate, the side's extent.
-                for (horizontal, at, lo, hi) in [
-                    (true, r[1], r[0], r[2]),
-                    (true, r[3], r[0], r[2]),
-                    (false, r[0], r[1], r[3]),
-                    (false, r[2], r[1], r[3]),
-                ] {
-                    let on =
-                        |p: (f64, f64)| (if horizontal { p.1 } else { p.0 } - at).abs() <= 0.05;
-                    let along = |p: (f64, f64)| if horizontal { p.0 } else { p.1 };
-                    let mut iv: Vec<(f64, f64)> = segs
-                        .iter()
-                        .filter(|&&(p, q)| on(p) && on(q))
-                        .map(|&(p, q)| (along(p).min(along(q)), along(p).max(along(q))))
-                        .collect();
+                for (at, lo, hi, iv) in sides(&segs, &r) {
                     if iv.is_empty() {
                         continue; // a side outside the plot, not drawn
                     }
-                    iv.sort_by(|x, y| x.0.total_cmp(&y.0));
                     let len = hi - lo;
                     let (period, first) = LEAST_PERIOD_PT[m];
                     let fit = ((len * pt - first) / period + 1e-6).floor();
@@ -563,20 +575,7 @@ fn detail_map_1_squares_are_dashed() {
                 .flat_map(|p| p.windows(2).map(|w| (w[0], w[1])).collect::<Vec<_>>())
                 .filter(|(p, q)| p != q)
                 .collect();
-            for (horizontal, at, lo, hi) in [
-                (true, r[1], r[0], r[2]),
-                (true, r[3], r[0], r[2]),
-                (false, r[0], r[1], r[3]),
-                (false, r[2], r[1], r[3]),
-            ] {
-                let on = |p: (f64, f64)| (if horizontal { p.1 } else { p.0 } - at).abs() <= 0.05;
-                let along = |p: (f64, f64)| if horizontal { p.0 } else { p.1 };
-                let mut iv: Vec<(f64, f64)> = segs
-                    .iter()
-                    .filter(|&&(p, q)| on(p) && on(q))
-                    .map(|&(p, q)| (along(p).min(along(q)), along(p).max(along(q))))
-                    .collect();
-                iv.sort_by(|x, y| x.0.total_cmp(&y.0));
+            for (at, lo, hi, iv) in sides(&segs, &r) {
                 // Pieces that meet (a polyline's points along one side) are one dash.
                 let mut dashes: Vec<(f64, f64)> = Vec::new();
                 for (x, y) in iv {

@@ -10,7 +10,7 @@
 #![cfg(feature = "plot")]
 
 mod figures_style_read;
-use figures_style_read::{all_svgs, attr, attr_str, forms, points, render_svg, texts, Font};
+use figures_style_read::{all_svgs, attr, attr_str, forms, points, render_svg, texts, Font, Text};
 
 /// The short vertical black lines of `svg` (tick marks, at most 8 units long): (x, top, bottom).
 fn ticks(svg: &str) -> Vec<(f64, f64, f64)> {
@@ -27,6 +27,14 @@ fn ticks(svg: &str) -> Vec<(f64, f64, f64)> {
         .collect()
 }
 
+/// Whether the text `t` hangs under one of the tick marks `marks`: anchored within a unit of
+/// its x, its top from half a unit over the mark's lower end to 12 units under it.
+fn under_a_tick(marks: &[(f64, f64, f64)], t: &Text) -> bool {
+    marks
+        .iter()
+        .any(|m| (m.0 - t.x).abs() <= 1.0 && t.bbox[1] >= m.2 - 0.5 && t.bbox[1] - m.2 <= 12.0)
+}
+
 /// R19-X-1: no upright text hanging under a tick mark (its top within 12 units under the
 /// mark's lower end) ends or starts at the tick's x: it is centred there. The old figures had
 /// four such labels a form (lloyd2005-fig8's "2048", zhang-fig3's three "100"), which this test
@@ -39,10 +47,7 @@ fn labels_under_ticks_are_centred_on_them() {
     for (name, layout, svg) in all_svgs() {
         let marks = ticks(svg);
         for t in texts(&font, svg).iter().filter(|t| !t.rotated) {
-            let under = marks.iter().find(|m| {
-                (m.0 - t.x).abs() <= 1.0 && t.bbox[1] >= m.2 - 0.5 && t.bbox[1] - m.2 <= 12.0
-            });
-            if under.is_none() {
+            if !under_a_tick(&marks, t) {
                 continue;
             }
             match attr_str(&t.tag, "text-anchor") {
@@ -80,11 +85,7 @@ fn zhang_depth_labels_stand_on_their_ticks_apart() {
             .iter()
             .filter(|t| !t.rotated && !raised.contains(&t.tag.as_str()))
             .filter(|t| ["0", "100"].contains(&t.content.as_str()))
-            .filter(|t| {
-                marks.iter().any(|m| {
-                    (m.0 - t.x).abs() <= 1.0 && t.bbox[1] >= m.2 - 0.5 && t.bbox[1] - m.2 <= 12.0
-                })
-            })
+            .filter(|t| under_a_tick(&marks, t))
             .collect();
         // A numbered panel under each block across two columns; under the last block only in
         // one column, whose blocks stand one over another.
